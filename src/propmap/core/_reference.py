@@ -1,0 +1,95 @@
+"""Straightforward vectorised NumPy implementation of the same solver.
+
+It exists for two reasons: it is the baseline that benchmarks/ times beside the
+compiled kernel (the brief's "straightforward vectorised NumPy implementation"), and it
+is an independent check of the kernel's control flow in the tests (same element
+physics from ``_physics.py``, same root-selection rule, but array masks instead of
+scalar loops). Not part of the public API.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _kernel as K
+from ._physics import element, momentum_scale, momentum_thrust
+
+
+def solve_reference(om, Vs, Vc, nodes, p):
+    """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,))."""
+    om = np.asarray(om, float)[:, None, None]
+    Vs3 = np.asarray(Vs, float)[:, None, None]
+    Vc3 = np.asarray(Vc, float)[:, None, None]
+    y = nodes.y[None, :, None]
+    sinpsi = nodes.sinpsi[None, None, :]
+    UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
+    geo = (nodes.theta[None, :, None], nodes.sin_th[None, :, None], nodes.cos_th[None, :, None],
+           nodes.kre[None, :, None])
+    pars = (p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, p.lift_model == "sincos")
+    cfac = nodes.cfac[None, :]
+    mfac = nodes.mfac[None, :]
+    Vs2 = np.asarray(Vs, float)[:, None]
+    Vc2 = np.asarray(Vc, float)[:, None]
+
+    def F(v):  # v shape (n, nr)
+        qT, _ = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
+        return cfac * qT.mean(axis=2) - momentum_thrust(v, mfac, Vs2, Vc2)
+
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        F0 = F(np.zeros_like(cfac * Vs2))
+        s = np.where(F0 >= 0, 1.0, -1.0)
+        h = momentum_scale(F0, mfac, Vs2, Vc2) / K.MARCH_STEPS
+        a = np.zeros_like(F0)
+        fa = F0.copy()
+        b = a.copy()
+        fb = F0.copy()
+        done = F0 == 0.0
+        for k in range(1, K.MAX_MARCH + 1):
+            trial = np.where(done, b, s * k * h)
+            ft = F(trial)
+            hit = ~done & (ft * s <= 0)
+            move = ~done & ~hit
+            a = np.where(move, trial, a)
+            fa = np.where(move, ft, fa)
+            b = np.where(~done, trial, b)
+            fb = np.where(~done, ft, fb)
+            done |= hit
+            if done.all():
+                break
+        for _ in range(K.MAX_DOUBLING):
+            if done.all():
+                break
+            trial = np.where(done, b, 2 * b)
+            ft = F(trial)
+            hit = ~done & (ft * s <= 0)
+            move = ~done & ~hit
+            a = np.where(move, trial, a)
+            fa = np.where(move, ft, fa)
+            b = np.where(~done, trial, b)
+            fb = np.where(~done, ft, fb)
+            done |= hit
+        converged = done.copy()
+        xtol = K.XTOL * h * K.MARCH_STEPS
+        ftol = K.FTOL * np.abs(F0)
+        fin = ~done | (fb == 0) | (F0 == 0)
+        for _ in range(K.MAX_REFINE):
+            if fin.all():
+                break
+            c = np.where(fin, b, (a * fb - b * fa) / (fb - fa))
+            fc = F(c)
+            swap = ~fin & (fc * fb < 0)
+            half = ~fin & ~swap
+            a = np.where(swap, b, a)
+            fa = np.where(swap, fb, np.where(half, 0.5 * fa, fa))
+            b = np.where(fin, b, c)
+            fb = np.where(fin, fb, fc)
+            fin |= (np.abs(fb) <= ftol) | (np.abs(b - a) <= xtol)
+        converged &= fin
+        v = np.where(F0 == 0, 0.0, b)
+        qT, qH = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
+    axial = (np.asarray(Vs) == 0)[:, None]
+    dT = cfac * qT.mean(axis=2)
+    dD = np.where(axial, 0.0, cfac * (qH * sinpsi).mean(axis=2))
+    dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
+    w = nodes.w
+    return dT @ w, dD @ w, dQ @ w, v, converged.all(axis=1)

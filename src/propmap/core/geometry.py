@@ -1,0 +1,142 @@
+"""Propeller geometry: tip radius, blade count, chord c(r) and blade angle theta(r).
+
+The paper (Section II) takes c and theta as spline interpolants of measured blade
+stations. We use PCHIP (piecewise cubic Hermite) interpolation: C1-smooth and
+shape-preserving, so a monotone run of stations gives a monotone curve and no
+overshoot creates a negative chord between stations.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.interpolate import PchipInterpolator
+
+__all__ = ["Propeller"]
+
+INCH = 0.0254  # [m]
+
+
+@dataclass(frozen=True, eq=False)
+class Propeller:
+    """A fixed-pitch propeller.
+
+    Parameters
+    ----------
+    name : str
+        Identifier, e.g. a catalogue name such as ``"apce_8x6"``.
+    radius : float
+        Tip radius R [m], > 0.
+    n_blades : int
+        Blade count N_b, >= 1.
+    r : array_like, shape (k,)
+        Radii of the measured blade stations [m], strictly increasing, k >= 2,
+        within (0, radius]. The blade is taken to start at ``r[0]`` (the paper's
+        integral over [0, R] is replaced by [r_hub, R], NUMERICS.md item 5).
+    chord : array_like, shape (k,)
+        Chord c at the stations [m], >= 0.
+    theta : array_like, shape (k,)
+        Blade angle theta at the stations [rad], in [-pi/2, pi/2], measured from
+        the disk plane.
+    pitch : float, optional
+        Nominal pitch [m] (catalogue information only).
+    source : str, optional
+        Where the geometry came from (citation).
+
+    Raises
+    ------
+    ValueError
+        Naming the argument: non-finite values, ``radius <= 0``, ``n_blades < 1``,
+        arrays of different length or fewer than 2 stations, radii not strictly
+        increasing or outside (0, radius], negative chord, blade angle outside
+        [-90, 90] deg.
+
+    Notes
+    -----
+    The records are immutable and the input arrays are copied, never modified.
+    """
+
+    name: str
+    radius: float
+    n_blades: int
+    r: np.ndarray
+    chord: np.ndarray
+    theta: np.ndarray
+    pitch: float | None = None
+    source: str = ""
+    _chord_spline: PchipInterpolator = field(init=False, repr=False)
+    _theta_spline: PchipInterpolator = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        radius = float(self.radius)
+        if not (math.isfinite(radius) and radius > 0):
+            raise ValueError(f"radius must be finite and > 0 m, got {self.radius!r}")
+        if int(self.n_blades) != self.n_blades or self.n_blades < 1:
+            raise ValueError(f"n_blades must be an integer >= 1, got {self.n_blades!r}")
+        arrays = {}
+        for key in ("r", "chord", "theta"):
+            a = np.array(getattr(self, key), dtype=float, copy=True).reshape(-1)
+            if not np.all(np.isfinite(a)):
+                raise ValueError(f"{key} must be finite at every blade station")
+            a.setflags(write=False)
+            arrays[key] = a
+        r, chord, theta = arrays["r"], arrays["chord"], arrays["theta"]
+        if not (len(r) == len(chord) == len(theta)):
+            raise ValueError(
+                f"r, chord and theta must have equal lengths, got {len(r)}, {len(chord)}, {len(theta)}"
+            )
+        if len(r) < 2:
+            raise ValueError(f"at least 2 blade stations are needed, got {len(r)}")
+        if np.any(np.diff(r) <= 0):
+            i = int(np.argmax(np.diff(r) <= 0))
+            raise ValueError(
+                f"r must be strictly increasing; station {i + 1} ({r[i + 1]:.6g} m) "
+                f"does not exceed station {i} ({r[i]:.6g} m)"
+            )
+        if r[0] <= 0 or r[-1] > radius * (1 + 1e-9):
+            raise ValueError(f"r must lie in (0, radius={radius:.6g}] m, got [{r[0]:.6g}, {r[-1]:.6g}]")
+        if np.any(chord < 0):
+            raise ValueError("chord must be >= 0 m at every station")
+        if np.any(np.abs(theta) > math.pi / 2 + 1e-12):
+            raise ValueError("theta must be in [-90, 90] deg at every station")
+        object.__setattr__(self, "radius", radius)
+        object.__setattr__(self, "n_blades", int(self.n_blades))
+        for key, a in arrays.items():
+            object.__setattr__(self, key, a)
+        object.__setattr__(self, "_chord_spline", PchipInterpolator(r, chord, extrapolate=True))
+        object.__setattr__(self, "_theta_spline", PchipInterpolator(r, theta, extrapolate=True))
+
+    @property
+    def diameter(self) -> float:
+        """Diameter D = 2R [m]."""
+        return 2.0 * self.radius
+
+    @property
+    def r_hub(self) -> float:
+        """Radius where the blade starts [m] (the first station)."""
+        return float(self.r[0])
+
+    def chord_at(self, y) -> np.ndarray:
+        """Chord c(y) [m] at radii ``y`` [m] (PCHIP through the stations).
+
+        Between the last station and the tip, the last station's value is
+        extended linearly by PCHIP; clipped at 0. Any shape; returns the same shape.
+        """
+        return np.maximum(self._chord_spline(np.asarray(y, dtype=float)), 0.0)
+
+    def theta_at(self, y) -> np.ndarray:
+        """Blade angle theta(y) [rad] at radii ``y`` [m] (PCHIP through the stations)."""
+        return self._theta_spline(np.asarray(y, dtype=float))
+
+    def solidity(self) -> float:
+        """Rotor solidity sigma = N_b * (blade area) / (pi R^2) [-]."""
+        from scipy.integrate import quad
+
+        area, _ = quad(lambda y: float(self.chord_at(y)), self.r_hub, self.radius, limit=200)
+        return self.n_blades * area / (math.pi * self.radius**2)
+
+    def __repr__(self) -> str:
+        return (f"Propeller(name={self.name!r}, radius={self.radius:.4g} m, n_blades={self.n_blades}, "
+                f"stations={len(self.r)}, r_hub={self.r_hub / self.radius:.3f} R)")

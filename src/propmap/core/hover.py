@@ -1,0 +1,76 @@
+"""The hover (static) model used by most multirotor work: T = k_T Omega^2, Q = k_Q Omega^2, D = 0.
+
+Gill & D'Andrea (2017), Section IV compares it with the full model ("hover
+approximation"); propmap keeps it for the same comparison.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .airfoil import Air, AirfoilParams
+from .geometry import Propeller
+from .solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+
+__all__ = ["HoverModel"]
+
+
+@dataclass(frozen=True)
+class HoverModel:
+    """T = k_T Omega^2, Q = k_Q Omega^2, D = 0, whatever the airspeed and incidence.
+
+    Parameters
+    ----------
+    k_T : float
+        Thrust constant [N s^2/rad^2], finite.
+    k_Q : float
+        Torque constant [N m s^2/rad^2], finite.
+    """
+
+    k_T: float
+    k_Q: float
+
+    def __post_init__(self) -> None:
+        for name in ("k_T", "k_Q"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+
+    @classmethod
+    def from_model(cls, propeller: Propeller, params: AirfoilParams, omega: float, *,
+                   air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION) -> "HoverModel":
+        """Calibrate on the full model at V = 0 and rotation rate ``omega`` [rad/s].
+
+        Then ``HoverModel.thrust(omega)`` equals the full model's T at V = 0 exactly at
+        that ``omega`` (and within the Reynolds-number dependence elsewhere).
+        """
+        r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
+        return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2)
+
+    @classmethod
+    def from_coefficients(cls, CT: float, CP: float, diameter: float, *, air: Air = Air()) -> "HoverModel":
+        """From static propeller-convention coefficients (e.g. a measured static run).
+
+        k_T = CT rho D^4 / (2 pi)^2 and k_Q = CP rho D^5 / (2 pi)^3, since
+        T = CT rho n^2 D^4, Q = P/Omega = CP rho n^2 D^5 / (2 pi), n = Omega/(2 pi).
+        """
+        return cls(CT * air.rho * diameter**4 / (2 * math.pi) ** 2,
+                   CP * air.rho * diameter**5 / (2 * math.pi) ** 3)
+
+    def thrust(self, omega) -> np.ndarray:
+        """T [N] at Omega [rad/s] (any shape)."""
+        return self.k_T * np.asarray(omega, float) ** 2
+
+    def torque(self, omega) -> np.ndarray:
+        """Q [N m] at Omega [rad/s] (any shape)."""
+        return self.k_Q * np.asarray(omega, float) ** 2
+
+    def CT(self, diameter: float, *, air: Air = Air()) -> float:
+        """The (constant) thrust coefficient of this model for a rotor of ``diameter`` [m]."""
+        return self.k_T * (2 * math.pi) ** 2 / (air.rho * diameter**4)
+
+    def CP(self, diameter: float, *, air: Air = Air()) -> float:
+        """The (constant) power coefficient of this model for a rotor of ``diameter`` [m]."""
+        return self.k_Q * (2 * math.pi) ** 3 / (air.rho * diameter**5)

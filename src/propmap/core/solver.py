@@ -1,0 +1,321 @@
+"""Rotor loads T, D, Q from hybrid blade-element momentum theory in forward flight.
+
+Gill & D'Andrea (2017), Section II: eqs (1)-(7) blade elements, (10) Glauert momentum,
+(11) per-annulus inflow, (13)-(15) integration. Conventions follow
+``shared/reference/NUMERICS.md`` and are listed in docs/conventions.md.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _kernel
+from .airfoil import Air, AirfoilParams
+from .geometry import Propeller
+
+__all__ = [
+    "Discretization",
+    "RotorLoads",
+    "SolverError",
+    "rotor_loads",
+    "DEFAULT_DISCRETIZATION",
+]
+
+
+class SolverError(RuntimeError):
+    """The inflow root solve failed; the message names the operating point and radius."""
+
+
+@dataclass(frozen=True)
+class Discretization:
+    """Quadrature used by the solver.
+
+    Parameters
+    ----------
+    n_radial : int
+        Gauss-Legendre nodes on [r_hub, R], in [2, 10000].
+    n_azimuth : int
+        Midpoint nodes on psi in [-pi/2, pi/2], in [1, 1000]. Every integrand depends on
+        psi only through sin(psi), so n midpoints there equal a 2n-point periodic
+        trapezoid rule on [0, 2 pi) (spectral convergence, NUMERICS.md).
+
+    Raises
+    ------
+    ValueError
+        If a count is outside its range.
+    """
+
+    n_radial: int = 48
+    n_azimuth: int = 8
+
+    def __post_init__(self) -> None:
+        if int(self.n_radial) != self.n_radial or not 2 <= self.n_radial <= 10000:
+            raise ValueError(f"n_radial must be an integer in [2, 10000], got {self.n_radial!r}")
+        if int(self.n_azimuth) != self.n_azimuth or not 1 <= self.n_azimuth <= 1000:
+            raise ValueError(f"n_azimuth must be an integer in [1, 1000], got {self.n_azimuth!r}")
+
+
+DEFAULT_DISCRETIZATION = Discretization()
+
+
+@dataclass(frozen=True)
+class _Nodes:
+    y: np.ndarray
+    w: np.ndarray
+    theta: np.ndarray
+    sin_th: np.ndarray
+    cos_th: np.ndarray
+    kre: np.ndarray
+    cfac: np.ndarray
+    mfac: np.ndarray
+    sinpsi: np.ndarray
+
+
+@functools.lru_cache(maxsize=64)
+def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, cp_blasius: float) -> _Nodes:
+    x, wx = np.polynomial.legendre.leggauss(n_radial)
+    half = 0.5 * (prop.radius - prop.r_hub)
+    y = prop.r_hub + half * (x + 1.0)
+    w = half * wx
+    c = prop.chord_at(y)
+    th = prop.theta_at(y)
+    with np.errstate(divide="ignore"):
+        kre = np.where(c > 0, 2.0 * 1.02 * cp_blasius * np.sqrt(air.mu / (air.rho * np.maximum(c, 1e-300))), 0.0)
+    psi = -0.5 * np.pi + (np.arange(n_azimuth) + 0.5) * np.pi / n_azimuth
+    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), kre=kre,
+                 cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y,
+                 sinpsi=np.sin(psi))
+    for a in vars(out).values():
+        a.setflags(write=False)
+    return out
+
+
+@dataclass(frozen=True)
+class RotorLoads:
+    """Loads of one propeller at a batch of operating points.
+
+    Array attributes have the broadcast shape ``S`` of the inputs; per-annulus fields
+    have shape ``S + (n_radial,)`` with the radial axis last.
+
+    Attributes
+    ----------
+    omega, airspeed, incidence : ndarray, shape S
+        The operating points: Omega [rad/s], V [m/s], incidence beta [rad].
+    thrust : ndarray
+        T [N] along the rotor axis (eq 13).
+    drag : ndarray
+        Rotor drag D [N] in the disk plane, against the in-plane velocity (eq 14);
+        0 exactly in axial flow and at V = 0.
+    torque : ndarray
+        Q [N m] opposing the rotation (what the motor supplies) (eq 15).
+    power : ndarray
+        P = Q Omega [W].
+    CT, CP, CQ : ndarray
+        Propeller-convention coefficients T/(rho n^2 D^4), P/(rho n^3 D^5),
+        Q/(rho n^2 D^5), n = Omega/(2 pi) [rev/s], D the diameter.
+    J : ndarray
+        Advance ratio V/(n D) [-] (total airspeed).
+    r : ndarray, shape (n_radial,)
+        Radial nodes [m].
+    v_i : ndarray, shape S + (n_radial,)
+        Induced inflow v_i(r) [m/s] along the rotor axis, positive with the thrust
+        (through the disk in the thrust-opposite direction, i.e. into the slipstream).
+    dT_dr, dD_dr, dQ_dr : ndarray, shape S + (n_radial,)
+        Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7).
+    converged : ndarray of bool
+        Every annulus root converged.
+    vortex_ring : ndarray of bool
+        Some annulus is in vortex-ring state (V cos b < 0 < V cos b + v_i):
+        momentum theory is not predictive there.
+    multiple_roots : ndarray of bool
+        Some annulus has a further root of eq (11) near the selected one.
+    reverse_flow : ndarray of bool
+        Part of the blade sees reverse flow (U_T < 0) on the retreating side.
+    reverse_flow_radius : ndarray
+        V sin(beta) / Omega [m]: radius inside which the retreating blade sees reverse flow.
+    n_evaluations : ndarray of int
+        Residual evaluations (each n_azimuth element evaluations) spent on the point.
+    rho : float
+        Air density used [kg/m^3].
+    diameter : float
+        Propeller diameter [m].
+    """
+
+    omega: np.ndarray
+    airspeed: np.ndarray
+    incidence: np.ndarray
+    thrust: np.ndarray
+    drag: np.ndarray
+    torque: np.ndarray
+    r: np.ndarray
+    v_i: np.ndarray
+    dT_dr: np.ndarray
+    dD_dr: np.ndarray
+    dQ_dr: np.ndarray
+    converged: np.ndarray
+    vortex_ring: np.ndarray
+    multiple_roots: np.ndarray
+    reverse_flow: np.ndarray
+    reverse_flow_radius: np.ndarray
+    n_evaluations: np.ndarray
+    rho: float
+    diameter: float
+
+    @property
+    def power(self) -> np.ndarray:
+        return self.torque * self.omega
+
+    @property
+    def _n(self) -> np.ndarray:
+        return self.omega / (2.0 * np.pi)
+
+    @property
+    def CT(self) -> np.ndarray:
+        return self.thrust / (self.rho * self._n**2 * self.diameter**4)
+
+    @property
+    def CQ(self) -> np.ndarray:
+        return self.torque / (self.rho * self._n**2 * self.diameter**5)
+
+    @property
+    def CP(self) -> np.ndarray:
+        return self.power / (self.rho * self._n**3 * self.diameter**5)
+
+    @property
+    def J(self) -> np.ndarray:
+        return self.airspeed / (self._n * self.diameter)
+
+    def flags(self, index=()) -> list[str]:
+        """Names of the raised status flags at one point (``index`` into shape S)."""
+        names = []
+        if not bool(np.asarray(self.converged)[index]):
+            names.append("not_converged")
+        for key in ("vortex_ring", "multiple_roots", "reverse_flow"):
+            if bool(np.asarray(getattr(self, key))[index]):
+                names.append(key)
+        return names
+
+
+def _as_array(name: str, value, low: float, high: float, *, low_open: bool, unit: str) -> np.ndarray:
+    a = np.asarray(value, dtype=float)
+    bad = ~np.isfinite(a) | (a < low) | (a > high) | ((a == low) if low_open else False)
+    if np.any(bad):
+        first = a.reshape(-1)[int(np.argmax(bad.reshape(-1)))]
+        lo = "(" if low_open else "["
+        raise ValueError(f"{name} must be finite and in {lo}{low:g}, {high:g}] {unit}; got {first!r}")
+    return a
+
+
+def rotor_loads(
+    propeller: Propeller,
+    params: AirfoilParams,
+    omega,
+    airspeed,
+    incidence,
+    *,
+    air: Air = Air(),
+    discretization: Discretization = DEFAULT_DISCRETIZATION,
+    on_failure: str = "raise",
+) -> RotorLoads:
+    """Thrust, rotor drag and torque of a propeller at any operating point.
+
+    Hybrid BET/BEMT of Gill & D'Andrea (2017), Section II: for every radial node the
+    induced inflow v_i solves dT_BET = dT_BEMT (eq 11, Glauert mass flow eq 10,
+    root-selection rule in docs/solver.md), then eqs (13)-(15) are integrated over the
+    blade [r_hub, R] with Gauss-Legendre in r and midpoints in azimuth.
+
+    Parameters
+    ----------
+    propeller : Propeller
+    params : AirfoilParams
+    omega : float or array_like
+        Rotation rate Omega [rad/s], finite, in (0, 1e5].
+    airspeed : float or array_like
+        Speed V of the disk relative to the air [m/s], finite, in [0, 500].
+    incidence : float or array_like
+        beta [rad] in [0, pi]: the angle between the freestream seen by the disk
+        and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
+        NUMERICS.md item 1. Irrelevant when V = 0.
+    air : Air, optional
+        Density and viscosity; footnote 2 values by default.
+    discretization : Discretization, optional
+    on_failure : {"raise", "flag"}
+        ``"raise"`` (default): raise SolverError if any annulus fails. ``"flag"``:
+        return, with ``converged`` False and NaN loads at the failed points.
+
+    Returns
+    -------
+    RotorLoads
+        Arrays of the broadcast shape of ``omega, airspeed, incidence``.
+
+    Raises
+    ------
+    ValueError
+        An input outside its range (the message names it and the range).
+    SolverError
+        A root solve failed and ``on_failure="raise"``; the message names the point,
+        the radius and the reason.
+    """
+    if on_failure not in ("raise", "flag"):
+        raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
+    om = _as_array("omega", omega, 0.0, 1e5, low_open=True, unit="rad/s")
+    V = _as_array("airspeed", airspeed, 0.0, 500.0, low_open=False, unit="m/s")
+    b = _as_array("incidence", incidence, 0.0, math.pi, low_open=False, unit="rad")
+    om, V, b = np.broadcast_arrays(om, V, b)
+    shape = om.shape
+    om1 = np.ascontiguousarray(om.reshape(-1))
+    V1 = V.reshape(-1)
+    b1 = b.reshape(-1)
+    Vs = np.ascontiguousarray(V1 * np.sin(b1))
+    Vc = np.ascontiguousarray(V1 * np.cos(b1))
+    Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
+
+    nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params.cp_blasius)
+    n, nr = om1.size, nd.y.size
+    T = np.empty(n)
+    D = np.empty(n)
+    Q = np.empty(n)
+    vi = np.empty((n, nr))
+    dT = np.empty((n, nr))
+    dD = np.empty((n, nr))
+    dQ = np.empty((n, nr))
+    status = np.empty(n, dtype=np.int64)
+    nmulti = np.empty(n, dtype=np.int64)
+    nvrs = np.empty(n, dtype=np.int64)
+    nev = np.empty(n, dtype=np.int64)
+    p = params
+    _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.kre,
+                        nd.cfac, nd.mfac, nd.sinpsi,
+                        p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, p.lift_model == "sincos",
+                        T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
+    converged = status == 0
+    if on_failure == "raise" and not converged.all():
+        i = int(np.argmax(~converged))
+        code = int(status[i]) - 1
+        j, reason = divmod(code, 4)
+        why = {1: "no sign change of F found (no bracket)", 2: "Illinois refinement did not converge"}[reason]
+        raise SolverError(
+            f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
+            f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
+            f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
+        )
+    rfr = Vs / om1
+
+    def s(a):
+        return a.reshape(shape)
+
+    def s2(a):
+        return a.reshape(shape + (nr,))
+
+    return RotorLoads(
+        omega=s(om1), airspeed=s(V1.copy()), incidence=s(b1.copy()),
+        thrust=s(T), drag=s(D), torque=s(Q), r=nd.y,
+        v_i=s2(vi), dT_dr=s2(dT), dD_dr=s2(dD), dQ_dr=s2(dQ),
+        converged=s(converged), vortex_ring=s(nvrs > 0), multiple_roots=s(nmulti > 0),
+        reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), n_evaluations=s(nev),
+        rho=air.rho, diameter=propeller.diameter,
+    )

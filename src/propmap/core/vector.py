@@ -1,0 +1,120 @@
+"""Vector form: force and torque vectors of a rotor at any orientation.
+
+From the disk velocity vector V (velocity of the rotor hub relative to the air), the
+rotor axis z (the thrust direction) and the spin, Gill & D'Andrea (2017) Section II
+gives beta = arccos(<V, z>/|V|) (NUMERICS.md item 1), thrust along z and rotor drag
+in the disk plane along the projection of V, against the motion (Fig. 1).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .airfoil import Air, AirfoilParams
+from .geometry import Propeller
+from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
+
+__all__ = ["RotorWrench", "rotor_wrench"]
+
+
+@dataclass(frozen=True)
+class RotorWrench:
+    """Force and torque vectors of a rotor, in the frame the inputs were given in.
+
+    Attributes
+    ----------
+    force : ndarray, shape S + (3,)
+        T z_hat - D e_ip [N], e_ip the unit in-plane velocity direction.
+    torque : ndarray, shape S + (3,)
+        Aerodynamic torque about the hub, -spin Q z_hat [N m] (opposes rotation; at
+        constant speed this is the reaction the motor passes to the airframe).
+    loads : RotorLoads
+        The scalar loads and flags behind them, shape S.
+    """
+
+    force: np.ndarray
+    torque: np.ndarray
+    loads: RotorLoads
+
+
+def _spin_sign(spin) -> np.ndarray:
+    if isinstance(spin, str):
+        table = {"ccw": 1.0, "cw": -1.0}
+        if spin.lower() not in table:
+            raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1, got {spin!r}")
+        return np.asarray(table[spin.lower()])
+    s = np.asarray(spin, float)
+    if not np.all(np.isin(s, (-1.0, 1.0))):
+        raise ValueError("spin must be 'ccw', 'cw', +1 or -1")
+    return s
+
+
+def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, omega, spin="ccw", *,
+                 air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION,
+                 on_failure: str = "raise") -> RotorWrench:
+    """Force and torque vectors of a rotor from its velocity, axis and rotation rate.
+
+    Parameters
+    ----------
+    propeller : Propeller
+    params : AirfoilParams
+    velocity : array_like, shape S + (3,)
+        Hub velocity relative to the air [m/s] (the negative of the wind seen by the
+        rotor). V = 0 is allowed (beta is then irrelevant; D = 0).
+    axis : array_like, shape S + (3,)
+        Rotor axis, the thrust direction; normalised here; must be non-zero.
+    omega : float or array_like, shape S
+        Rotation rate magnitude Omega [rad/s], > 0.
+    spin : {"ccw", "cw"} or +1/-1 (array_like, shape S)
+        Rotation sense about ``axis`` by the right-hand rule: "ccw" (+1) spins about
+        +axis (counter-clockwise seen from the tip of the axis looking back at the disk).
+    air, discretization, on_failure
+        As for :func:`rotor_loads`.
+
+    Returns
+    -------
+    RotorWrench
+
+    Raises
+    ------
+    ValueError
+        Shapes not ending in 3, zero or non-finite axis, non-finite velocity, bad spin,
+        or the ranges of :func:`rotor_loads`.
+    SolverError
+        As :func:`rotor_loads`.
+
+    Notes
+    -----
+    The rotor model is azimuth-averaged (paper Section II), so it has no side force and
+    no hub moments other than the shaft torque; spin changes only the torque sign.
+    """
+    V = np.asarray(velocity, float)
+    z = np.asarray(axis, float)
+    if V.shape[-1:] != (3,) or z.shape[-1:] != (3,):
+        raise ValueError(f"velocity and axis must have a last axis of length 3, got {V.shape} and {z.shape}")
+    if not np.all(np.isfinite(V)):
+        raise ValueError("velocity must be finite")
+    zn = np.linalg.norm(z, axis=-1, keepdims=True)
+    if not np.all(np.isfinite(z)) or np.any(zn == 0):
+        raise ValueError("axis must be finite and non-zero")
+    z = z / zn
+    s = _spin_sign(spin)
+    V, z = np.broadcast_arrays(V, z)
+    speed = np.linalg.norm(V, axis=-1)
+    axial = np.einsum("...i,...i->...", V, z)
+    safe = np.where(speed > 0, speed, 1.0)
+    beta = np.where(speed > 0, np.arccos(np.clip(axial / safe, -1.0, 1.0)), 0.0)
+    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
+                        on_failure=on_failure)
+    shape = loads.thrust.shape
+    z = np.broadcast_to(z, shape + (3,))
+    V = np.broadcast_to(V, shape + (3,))
+    v_ip = V - np.einsum("...i,...i->...", V, z)[..., None] * z
+    n_ip = np.linalg.norm(v_ip, axis=-1, keepdims=True)
+    e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(V, axis=-1, keepdims=True), 1e-300),
+                    v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
+    force = loads.thrust[..., None] * z - loads.drag[..., None] * e_ip
+    torque = -(np.broadcast_to(s, shape) * loads.torque)[..., None] * z
+    return RotorWrench(force=force, torque=torque, loads=loads)
