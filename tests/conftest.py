@@ -1,0 +1,39 @@
+"""Shared bank of named propellers, parameters and operating points for the tests."""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import propmap as pm
+
+SHARED = Path(__file__).resolve().parents[2] / "shared" / "data"
+RPM = 2 * math.pi / 60  # rad/s per rpm
+
+
+@pytest.fixture(scope="session")
+def shared_data() -> Path:
+    if not SHARED.is_dir():
+        pytest.skip("../shared/data is not beside the checkout")
+    return SHARED
+
+
+@pytest.fixture(scope="session")
+def apc8x6():
+    """APC 8x6 Thin Electric, APC PE0 geometry (the paper's wind-tunnel propeller)."""
+    return pm.load_propeller("apce_8x6")
+
+
+@pytest.fixture(scope="session")
+def apc_params():
+    """Gill & D'Andrea (2017) Table I, APC column."""
+    return pm.preset("gill2017-apc")
+
+
+@pytest.fixture(scope="session")
+def envelope_points():
+    """200 random points over rpm 3000-12000, V 0-25 m/s, incidence 0-180 deg (seeded)."""
+    rng = np.random.default_rng(2017)
+    n = 200
+    return (rng.uniform(3000, 12000, n) * RPM, rng.uniform(0, 25, n), np.radians(rng.uniform(0, 180, n)))
