@@ -1,0 +1,138 @@
+"""The command line, called through main([...]); every bad input exits 2 with one line."""
+
+import csv
+import json
+import math
+
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_props_json(capsys):
+    code, out, _ = run(capsys, "props", "--json")
+    rows = json.loads(out)
+    assert code == 0 and len(rows) == 108
+    row = next(r for r in rows if r["name"] == "apce_8x6")
+    assert row["diameter_in"] == 8 and row["pitch_in"] == 6 and row["sweeps"] == 7 and row["geometry"] == "APC PE0"
+
+
+def test_props_table(capsys):
+    code, out, _ = run(capsys, "props")
+    assert code == 0 and "apce_8x6" in out and "108 propellers" in out
+
+
+def test_loads_single_point_json_matches_api(capsys):
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--rpm", "8000", "--airspeed", "10", "--incidence-deg", "60",
+                       "--json")
+    d = json.loads(out)
+    assert code == 0
+    assert set(d) >= {"thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags"}
+    r = pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc"), 8000 * math.pi / 30, 10.0,
+                       math.radians(60))
+    assert d["thrust"] == pytest.approx(float(r.thrust), rel=1e-12)
+    assert d["drag"] == pytest.approx(float(r.drag), rel=1e-12)
+    assert d["converged"] is True and d["flags"] == []
+
+
+def test_loads_with_params_file_and_geometry_file(capsys, tmp_path, shared_data):
+    f = tmp_path / "p.toml"
+    pm.write_params(f, pm.preset("gill2017-stiff"))
+    code, out, _ = run(capsys, "loads", str(shared_data / "uiuc_propdb/v1/apce_9x6_geom.txt"), "--rpm", "6000",
+                       "--params", str(f), "--json")
+    assert code == 0 and json.loads(out)["thrust"] > 0
+
+
+def test_loads_points_csv(capsys, tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n8000,0,0\n8000,10,90\n6000,5,180\n")
+    dst = tmp_path / "out.csv"
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
+    assert code == 0, err
+    rows = list(csv.DictReader(dst.open()))
+    assert len(rows) == 3
+    assert list(rows[0])[:3] == ["rpm", "airspeed", "incidence_deg"]
+    assert float(rows[0]["drag"]) == 0.0 and float(rows[1]["drag"]) > 0
+    assert rows[1]["converged"] == "true"
+    assert rows[2]["flags"] == "vortex_ring"  # axial descent at 5 m/s, 6000 rpm
+
+
+def test_validate_json_and_figure(capsys, tmp_path):
+    fig = tmp_path / "v.png"
+    code, out, _ = run(capsys, "validate", "apce_8x6", "--json", "--figure", str(fig))
+    d = json.loads(out)
+    assert code == 0 and fig.stat().st_size > 10_000
+    assert {"ct_rmse", "cp_rmse"} <= set(d["model"]) and {"ct_rmse", "cp_rmse"} <= set(d["hover_model"])
+    assert len(d["sweeps"]) == 8
+
+
+def test_demo_writes_figures(capsys, tmp_path):
+    code, out, _ = run(capsys, "demo", "--out-dir", str(tmp_path / "d"))
+    assert code == 0
+    for name in ("envelope.csv", "envelope.png", "validation.png"):
+        assert (tmp_path / "d" / name).is_file()
+    assert "Table I" in out and "hover" in out
+
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["loads", "apce_8x6", "--rpm", "-100"], "rpm"),
+        (["loads", "apce_8x6", "--rpm", "nan"], "rpm"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--airspeed", "-1"], "airspeed"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--airspeed", "inf"], "airspeed"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "190"], "incidence_deg"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "-5"], "incidence_deg"),
+        (["loads", "nosuchprop", "--rpm", "8000"], "unknown propeller"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--params", "nope"], "--params"),
+        (["loads", "apce_8x6"], "--rpm"),
+        (["loads", "apce_8x6", "--rpm", "abc"], "abc"),
+        (["validate", "nosuchprop"], "unknown propeller"),
+        (["frobnicate"], "frobnicate"),
+    ],
+)
+def test_bad_input_exits_2_with_one_line(capsys, argv, match):
+    code, out, err = run(capsys, *argv)
+    assert code == 2
+    assert match in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("r/R c/R\n0.2 0.1\n0.5 0.1\n", "expected columns"),
+        ("r/R c/R beta\n0.5 0.1 30\n0.2 0.1 20\n", "strictly increasing"),
+    ],
+)
+def test_bad_geometry_file_exits_2(capsys, tmp_path, text, match):
+    f = tmp_path / "bad_9x6_geom.txt"
+    f.write_text(text)
+    code, _, err = run(capsys, "loads", str(f), "--rpm", "8000")
+    assert code == 2 and match in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("rpm,airspeed\n8000,0\n", "incidence_deg"),
+        ("rpm,airspeed,incidence_deg\n8000,0,0\n8000,x,0\n", "line 3"),
+        ("rpm,airspeed,incidence_deg\n8000,0,0\n8000,1\n", "line 3"),
+        ("rpm,airspeed,incidence_deg\n8000,0,0\n-8000,1,0\n", "line 3: rpm"),
+        ("rpm,airspeed,incidence_deg\n8000,0,200\n", "line 2: incidence_deg"),
+        ("rpm,airspeed,incidence_deg\n", "no data rows"),
+    ],
+)
+def test_malformed_points_csv_names_the_line_and_writes_nothing(capsys, tmp_path, text, match):
+    src = tmp_path / "in.csv"
+    src.write_text(text)
+    dst = tmp_path / "out.csv"
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
+    assert code == 2 and match in err and err.count("\n") == 1
+    assert not dst.exists() and list(tmp_path.iterdir()) == [src]
