@@ -47,7 +47,7 @@ def test_every_annulus_of_a_dense_grid_converges_including_descent(apc8x6, apc_p
 def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_params):
     om, V, B = _grid()
     r = pm.rotor_loads(apc8x6, apc_params, om, V, B)
-    nd = _nodes(apc8x6, 48, 8, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params.cp_blasius)
     misses, total, multi_scan = 0, 0, np.zeros(om.size, bool)
     for i in range(om.size):
         for j in range(nd.y.size):
@@ -97,7 +97,7 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
 def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points):
     om, V, b = envelope_points
     r = pm.rotor_loads(apc8x6, apc_params, om, V, b)
-    nd = _nodes(apc8x6, 48, 8, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params.cp_blasius)
     Vs, Vc = V * np.sin(b), V * np.cos(b)
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0
     T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, apc_params)

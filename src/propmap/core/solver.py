@@ -50,7 +50,7 @@ class Discretization:
     """
 
     n_radial: int = 48
-    n_azimuth: int = 8
+    n_azimuth: int = 16
 
     def __post_init__(self) -> None:
         if int(self.n_radial) != self.n_radial or not 2 <= self.n_radial <= 10000:

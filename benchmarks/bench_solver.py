@@ -1,0 +1,133 @@
+"""Solver benchmark: accuracy of the default discretization and speed (issue: core model).
+
+Run:  make bench        (or .venv/bin/python benchmarks/bench_solver.py [--quick])
+
+Propeller apce_8x6 (APC PE0 geometry), parameters gill2017-apc (Gill & D'Andrea 2017
+Table I). Prints a report and writes benchmarks/results/solver.json atomically.
+
+* Accuracy: default Discretization vs a converged reference (1024 radial x 32 azimuth
+  nodes) on random points over rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg; descent
+  (90-180 deg) reported separately. T and Q: relative error, and error relative to the
+  hover value at the same rpm (the pure relative error is meaningless where T or Q
+  cross zero in windmilling). D: relative to the largest D in the set.
+* Speed: batch of 10,000 points (numba, all cores) and one point after warm-up, beside
+  the straightforward vectorised NumPy implementation (src/propmap/core/_reference.py)
+  timed in the same run; the paper's ~3 s per call for scale.
+* JIT cache: wall time of a first call in two fresh processes (the second reads the
+  compiled kernel from the on-disk cache).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numba
+import numpy as np
+
+import propmap as pm
+from propmap.core._reference import solve_reference
+from propmap.core.solver import _nodes
+from propmap.io.atomic import atomic_write
+
+RPM = 2 * math.pi / 60
+PAPER_S_PER_CALL = 3.0  # Gill & D'Andrea 2017, Section IV
+
+
+def points(n, inc_lo, inc_hi, seed):
+    rng = np.random.default_rng(seed)
+    return rng.uniform(3000, 12000, n) * RPM, rng.uniform(0, 25, n), np.radians(rng.uniform(inc_lo, inc_hi, n))
+
+
+def accuracy(prop, params, n, inc_lo, inc_hi, seed):
+    om, V, b = points(n, inc_lo, inc_hi, seed)
+    ref_disc = pm.Discretization(1024, 32)
+    ref = pm.rotor_loads(prop, params, om, V, b, discretization=ref_disc, on_failure="flag")
+    r = pm.rotor_loads(prop, params, om, V, b, on_failure="flag")
+    hover = pm.rotor_loads(prop, params, om, 0.0, 0.0, discretization=ref_disc)
+    ok = ref.converged & r.converged
+    eT, eQ = np.abs(r.thrust - ref.thrust)[ok], np.abs(r.torque - ref.torque)[ok]
+    big_T = np.abs(ref.thrust[ok]) >= 0.1 * hover.thrust[ok]
+    big_Q = np.abs(ref.torque[ok]) >= 0.1 * hover.torque[ok]
+    return {
+        "n_points": int(n), "incidence_deg": [inc_lo, inc_hi], "not_converged": int((~ok).sum()),
+        "T_max_rel_err_all": float(np.max(eT / np.abs(ref.thrust[ok]))),
+        "T_max_rel_err_where_abs_T_ge_10pct_hover": float(np.max(eT[big_T] / np.abs(ref.thrust[ok][big_T]))),
+        "T_max_err_over_hover_T": float(np.max(eT / hover.thrust[ok])),
+        "Q_max_rel_err_all": float(np.max(eQ / np.abs(ref.torque[ok]))),
+        "Q_max_rel_err_where_abs_Q_ge_10pct_hover": float(np.max(eQ[big_Q] / np.abs(ref.torque[ok][big_Q]))),
+        "Q_max_err_over_hover_Q": float(np.max(eQ / hover.torque[ok])),
+        "D_max_err_over_max_D": float(np.max(np.abs(r.drag - ref.drag)[ok]) / np.max(np.abs(ref.drag[ok]))),
+    }
+
+
+def best_of(f, repeat):
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - t)
+    return min(times)
+
+
+def speed(prop, params, n_batch):
+    om, V, b = points(n_batch, 0, 90, 7)
+    pm.rotor_loads(prop, params, om[:10], V[:10], b[:10])  # warm-up (JIT or cache load)
+    t_batch = best_of(lambda: pm.rotor_loads(prop, params, om, V, b), 3)
+    single = [best_of(lambda i=i: pm.rotor_loads(prop, params, om[i], V[i], b[i]), 5) for i in range(200)]
+    d = pm.DEFAULT_DISCRETIZATION
+    nd = _nodes(prop, d.n_radial, d.n_azimuth, pm.Air(), params.cp_blasius)
+    Vs, Vc = V * np.sin(b), V * np.cos(b)
+    n_np = min(n_batch, 2000)
+    t_np = best_of(lambda: solve_reference(om[:n_np], Vs[:n_np], Vc[:n_np], nd, params), 1)
+    return {
+        "threads": numba.get_num_threads(),
+        "batch_points": n_batch,
+        "numba_batch_us_per_point": 1e6 * t_batch / n_batch,
+        "numba_single_point_us_median": 1e6 * float(np.median(single)),
+        "numba_single_point_us_p90": 1e6 * float(np.percentile(single, 90)),
+        "numpy_reference_points": n_np,
+        "numpy_reference_us_per_point": 1e6 * t_np / n_np,
+        "speedup_numba_batch_vs_numpy": (t_np / n_np) / (t_batch / n_batch),
+        "speedup_vs_paper_3s_per_call": PAPER_S_PER_CALL / (t_batch / n_batch),
+    }
+
+
+def jit_cache():
+    code = ("import time; t=time.perf_counter(); import propmap as pm; "
+            "pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
+            "print(time.perf_counter()-t)")
+    return [float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout)
+            for _ in range(2)]
+
+
+def main() -> None:
+    quick = "--quick" in sys.argv
+    prop, params = pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc")
+    d = pm.DEFAULT_DISCRETIZATION
+    res = {
+        "propeller": "apce_8x6 (APC PE0 geometry)", "params": "gill2017-apc (Gill & D'Andrea 2017 Table I)",
+        "default_discretization": {"n_radial": d.n_radial, "n_azimuth": d.n_azimuth},
+        "reference_discretization": {"n_radial": 1024, "n_azimuth": 32},
+        "accuracy_climb_to_edgewise": accuracy(prop, params, 100 if quick else 500, 0, 90, 11),
+        "accuracy_descent": accuracy(prop, params, 100 if quick else 300, 90, 180, 12),
+        "speed": speed(prop, params, 2000 if quick else 10000),
+        "first_call_s_in_fresh_process": jit_cache(),
+    }
+    out = Path(__file__).parent / "results" / "solver.json"
+    with atomic_write(out) as fh:
+        json.dump(res, fh, indent=2)
+    print(json.dumps(res, indent=2))
+    s = res["speed"]
+    print(f"\nbatch {s['numba_batch_us_per_point']:.1f} us/pt ({s['threads']} threads) vs NumPy "
+          f"{s['numpy_reference_us_per_point']:.0f} us/pt: x{s['speedup_numba_batch_vs_numpy']:.1f}; "
+          f"single point {s['numba_single_point_us_median']:.0f} us; paper 3 s/call: "
+          f"x{s['speedup_vs_paper_3s_per_call']:.0f}")
+
+
+if __name__ == "__main__":
+    main()
