@@ -44,8 +44,10 @@ def solve_reference(om, Vs, Vc, nodes, p):
         b = a.copy()
         fb = F0.copy()
         done = F0 == 0.0
-        for k in range(1, K.MAX_MARCH + 1):
-            trial = np.where(done, b, s * k * h)
+
+        def advance(trial):
+            """Evaluate F at ``trial`` where not done; keep the last point before a sign change."""
+            nonlocal a, fa, b, fb, done
             ft = F(trial)
             hit = ~done & (ft * s <= 0)
             move = ~done & ~hit
@@ -53,21 +55,16 @@ def solve_reference(om, Vs, Vc, nodes, p):
             fa = np.where(move, ft, fa)
             b = np.where(~done, trial, b)
             fb = np.where(~done, ft, fb)
-            done |= hit
+            done = done | hit
+
+        for k in range(1, K.MAX_MARCH + 1):  # the march of step h
+            advance(np.where(done, b, s * k * h))
             if done.all():
                 break
-        for _ in range(K.MAX_DOUBLING):
+        for _ in range(K.MAX_DOUBLING):  # then doubling
             if done.all():
                 break
-            trial = np.where(done, b, 2 * b)
-            ft = F(trial)
-            hit = ~done & (ft * s <= 0)
-            move = ~done & ~hit
-            a = np.where(move, trial, a)
-            fa = np.where(move, ft, fa)
-            b = np.where(~done, trial, b)
-            fb = np.where(~done, ft, fb)
-            done |= hit
+            advance(np.where(done, b, 2 * b))
         converged = done.copy()
         xtol = K.XTOL * h * K.MARCH_STEPS
         ftol = K.FTOL * np.abs(F0)
