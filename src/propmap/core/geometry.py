@@ -121,8 +121,8 @@ class Propeller:
     def chord_at(self, y) -> np.ndarray:
         """Chord c(y) [m] at radii ``y`` [m] (PCHIP through the stations).
 
-        Between the last station and the tip, the last station's value is
-        extended linearly by PCHIP; clipped at 0. Any shape; returns the same shape.
+        Outside the stations PCHIP extrapolates its end polynomial (the solver only
+        evaluates [r_hub, R]); clipped at 0. Any shape; returns the same shape.
         """
         return np.maximum(self._chord_spline(np.asarray(y, dtype=float)), 0.0)
 

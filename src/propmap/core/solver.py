@@ -167,26 +167,32 @@ class RotorLoads:
 
     @property
     def power(self) -> np.ndarray:
+        """P = Q Omega [W], shape S."""
         return self.torque * self.omega
 
     @property
     def _n(self) -> np.ndarray:
+        """n = Omega / (2 pi) [rev/s], shape S."""
         return self.omega / (2.0 * np.pi)
 
     @property
     def CT(self) -> np.ndarray:
+        """T / (rho n^2 D^4) [-], propeller convention, shape S."""
         return self.thrust / (self.rho * self._n**2 * self.diameter**4)
 
     @property
     def CQ(self) -> np.ndarray:
+        """Q / (rho n^2 D^5) [-], propeller convention, shape S."""
         return self.torque / (self.rho * self._n**2 * self.diameter**5)
 
     @property
     def CP(self) -> np.ndarray:
+        """P / (rho n^3 D^5) [-], propeller convention, shape S."""
         return self.power / (self.rho * self._n**3 * self.diameter**5)
 
     @property
     def J(self) -> np.ndarray:
+        """V / (n D) [-], total airspeed, shape S."""
         return self.airspeed / (self._n * self.diameter)
 
     def flags(self, index=()) -> list[str]:
