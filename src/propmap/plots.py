@@ -83,3 +83,91 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     axes[0].legend(fontsize=7)
     fig.suptitle(title, fontsize=9)
     return _save(fig, path)
+
+
+def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: str = "") -> Path:
+    """Like Fig. 6 of Gill & D'Andrea (2017): model (BET+BEMT) vs hover model against speed.
+
+    Panels: collective thrust, collective drag, sum of |torque|, vertical-force error
+    (eq 17; the ground truth is 0), pitch. ``forces`` is the dict of
+    ``level_flight_forces``; ``hover_vertical`` the hover model's vertical force [N].
+    """
+    plt = _pyplot()
+    V = data.airspeed
+    o = np.argsort(V)
+    fig, axes = plt.subplots(1, 5, figsize=(17, 3.6), constrained_layout=True)
+    T_h = hover_vertical  # hover thrust is vertical-only in level flight up to the tilt
+    axes[0].plot(V[o], forces["thrust"].sum(1)[o], "o-", ms=3, label="BET+BEMT")
+    axes[0].set_ylabel("collective thrust [N]")
+    axes[1].plot(V[o], forces["drag"].sum(1)[o], "o-", ms=3)
+    axes[1].axhline(0, color="k", ls="--", lw=1)
+    axes[1].set_ylabel("collective rotor drag [N] (hover: 0)")
+    axes[2].plot(V[o], np.abs(forces["torque"]).sum(1)[o], "o-", ms=3)
+    axes[2].set_ylabel("sum |torque| [N m]")
+    axes[3].plot(V[o], (forces["vertical"] - weight)[o], "o-", ms=3, label="BET+BEMT")
+    axes[3].plot(V[o], (T_h - weight)[o], "s--", ms=3, label="hover model")
+    axes[3].axhline(0, color="r", lw=1, label="ground truth")
+    axes[3].set_ylabel("vertical force error (eq 17) [N]")
+    axes[3].legend(fontsize=7)
+    axes[4].plot(V[o], np.degrees(data.pitch)[o], "o-", ms=3)
+    axes[4].set_ylabel("pitch [deg]")
+    for ax in axes:
+        ax.set_xlabel("V [m/s]")
+        ax.grid(alpha=0.3)
+    fig.suptitle(title, fontsize=9)
+    return _save(fig, path)
+
+
+def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "", baseline_label: str = "Table I") -> Path:
+    """Like Fig. 7 of Gill & D'Andrea (2017) for a load fit: CT and CP vs J, measured
+    (filled: used in the fit, open: held out), fitted model (solid), baseline parameters
+    (dotted) and the hover model (dashed). Runs are :class:`SweepComparison` lists of the
+    same measurements evaluated with the fitted and baseline parameters.
+    """
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for k, (rf, rb) in enumerate(zip(runs_fitted, runs_baseline)):
+        c = colors[k % len(colors)]
+        held = rf.run_id in holdout
+        o = np.argsort(rf.J)
+        for ax, meas, fit, bl in ((axes[0], rf.CT, rf.CT_model, rb.CT_model), (axes[1], rf.CP, rf.CP_model, rb.CP_model)):
+            ax.plot(rf.J, meas, "o", color=c, ms=4, mfc="none" if held else c,
+                    label=f"{rf.label}{' (held out)' if held else ''}")
+            style = "x" if rf.kind == "static" else "-"
+            ax.plot(rf.J[o], fit[o], style, color=c, lw=1.3)
+            ax.plot(rf.J[o], bl[o], ":" if rf.kind != "static" else "+", color=c, lw=1)
+    for ax, h, name in ((axes[0], runs_fitted[0].CT_hover[0], "CT"), (axes[1], runs_fitted[0].CP_hover[0], "CP")):
+        ax.axhline(h, color="k", ls="--", lw=1, label="hover model")
+        ax.plot([], [], "-", color="gray", label="fitted model")
+        ax.plot([], [], ":", color="gray", label=f"{baseline_label} parameters")
+        ax.set_xlabel("J = V/(n D)")
+        ax.set_ylabel(name)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=6.5, loc="lower left")
+    fig.suptitle(title, fontsize=9)
+    return _save(fig, path)
+
+
+def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> Path:
+    """Measured vs modelled loads, one panel per measured quantity (open markers: held out).
+
+    ``model`` maps a label (e.g. "fitted", "gill2017-apc") to a dict of model arrays.
+    """
+    plt = _pyplot()
+    keys = list(data.measured)
+    fig, axes = plt.subplots(1, len(keys), figsize=(4.5 * len(keys), 4), constrained_layout=True, squeeze=False)
+    units = {"thrust": "N", "drag": "N", "torque": "N m"}
+    for ax, k in zip(axes[0], keys):
+        meas = data.measured[k]
+        for label, m in model.items():
+            line, = ax.plot(meas[~held_mask], m[k][~held_mask], "o", ms=4, label=label)
+            ax.plot(meas[held_mask], m[k][held_mask], "o", ms=4, mfc="none", color=line.get_color())
+        lim = [min(meas.min(), 0), meas.max() * 1.05]
+        ax.plot(lim, lim, "k-", lw=0.8)
+        ax.set_xlabel(f"measured {k} [{units[k]}]")
+        ax.set_ylabel(f"model {k} [{units[k]}]")
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle(title + " (open markers: held out)", fontsize=9)
+    return _save(fig, path)

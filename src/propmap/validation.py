@@ -160,3 +160,30 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: AirfoilParams,
     return Validation(entry.name, runs, CT_h, CP_h, entry.citation,
                       params={"cl1": params.cl1, "cl2": params.cl2, "cd": params.cd,
                               "alpha0_deg": math.degrees(params.alpha0)})
+
+
+def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: AirfoilParams, baseline: AirfoilParams,
+                       holdout, *, air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """Held-out CT and CP errors of a fitted model, a baseline parameter set and the hover model.
+
+    The hover model uses the measured static CT and CP. ``holdout`` names UIUC run ids.
+
+    Returns
+    -------
+    dict
+        ``{"holdout": [...], "fitted": {...}, "baseline": {...}, "hover_model": {...}}``, each
+        error dict as :meth:`SweepComparison.errors` pooled over the held-out points, plus
+        ``"validation_fitted"`` and ``"validation_baseline"`` (:class:`Validation`) for figures.
+    """
+    vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
+    vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
+    held = set(holdout)
+
+    def pooled(v, which):
+        runs = [r for r in v.runs if r.run_id in held]
+        ct = np.concatenate([(r.CT_model if which == "model" else r.CT_hover) - r.CT for r in runs])
+        cp = np.concatenate([(r.CP_model if which == "model" else r.CP_hover) - r.CP for r in runs])
+        return {**_errors(ct, cp), "n_points": int(ct.size)}
+
+    return {"holdout": sorted(held), "fitted": pooled(vf, "model"), "baseline": pooled(vb, "model"),
+            "hover_model": pooled(vf, "hover"), "validation_fitted": vf, "validation_baseline": vb}

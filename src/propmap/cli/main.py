@@ -8,6 +8,7 @@ import click
 
 from .. import __version__
 from .demo import demo
+from .fit import fit
 from .loads import loads
 from .props import props
 from .validate import validate
@@ -19,7 +20,7 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, validate, demo):
+for _cmd in (props, loads, validate, fit, demo):
     cli.add_command(_cmd)
 
 
