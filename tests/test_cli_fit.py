@@ -1,0 +1,97 @@
+"""``propmap fit`` through main([...]): outputs, round trip, bad data exits 2 with one line."""
+
+import json
+from importlib import resources
+
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+
+EXAMPLES = resources.files("propmap") / "data" / "examples"
+VEHICLE = str(EXAMPLES / "quadrotor.toml")
+FLIGHT = str(EXAMPLES / "level_flight_synthetic.csv")
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_fit_level_flight_writes_params_report_and_figure(capsys, tmp_path):
+    out = tmp_path / "p.toml"
+    code, stdout, err = run(capsys, "fit", "level-flight", FLIGHT, "--vehicle", VEHICLE, "--out", str(out),
+                            "--M", "30", "--json")
+    assert code == 0, err
+    rep = json.loads(stdout)
+    assert set(rep["fitted"]) == {"cl1", "cl2", "cd", "alpha0"}
+    idf = rep["identifiability"]
+    assert "cd" in idf["poorly_determined"]  # noisy synthetic data: cd poorly determined,
+    assert any("cl2" in w for w in idf["warnings"])  # cl2 named (here via its -1.00 correlation with alpha0)
+    assert len(rep["residuals"]) == 20
+    for name in ("p.toml", "p.report.json", "p.report.txt", "p.png"):
+        assert (tmp_path / name).stat().st_size > 100
+    params, _ = pm.read_params(out)
+    assert params.M == 30.0 and params.cl1 == pytest.approx(rep["fitted"]["cl1"])
+    # the fitted file is accepted back by loads and validate
+    assert run(capsys, "loads", "apce_8x6", "--rpm", "6000", "--params", str(out))[0] == 0
+    assert run(capsys, "validate", "apce_8x6", "--params", str(out), "--figure", str(tmp_path / "v.png"))[0] == 0
+
+
+def test_fit_loads_catalogue_with_holdout(capsys, tmp_path):
+    out = tmp_path / "f.toml"
+    code, stdout, err = run(capsys, "fit", "loads", "apce_8x6", "--holdout", "2801rd,2802rd", "--out", str(out))
+    assert code == 0, err
+    assert "held-out (2801rd, 2802rd) CT rmse: fitted 0.03" in stdout
+    rep = json.loads((tmp_path / "f.report.json").read_text())
+    assert rep["holdout"]["fitted"]["ct_rmse"] < rep["holdout"]["baseline"]["ct_rmse"]
+
+
+def _flight(tmp_path, text):
+    p = tmp_path / "d.csv"
+    p.write_text(text)
+    return str(p)
+
+
+H = "airspeed,pitch_deg,rpm_1,rpm_2,rpm_3,rpm_4\n"
+ROWS = "".join(f"{k},{-k},5000,5000,5000,5000\n" for k in range(8))
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("airspeed,rpm_1,rpm_2,rpm_3,rpm_4\n" + "1,5000,5000,5000,5000\n" * 8, "lacks column(s) pitch_deg"),
+        (H + ROWS + "9,nan,5000,5000,5000,5000\n", "line 10"),
+        (H + "".join(ROWS.splitlines(keepends=True)[:3]), "at least 6"),
+        (H + "1,-1,5000,5000,5000,5000\n" * 8, "identical"),
+        ("airspeed,pitch_deg,rpm_1,rpm_2\n" + "1,-1,5000,5000\n" * 8, "4 rotors"),
+    ],
+)
+def test_fit_level_flight_bad_data_exits_2(capsys, tmp_path, text, match):
+    code, _, err = run(capsys, "fit", "level-flight", _flight(tmp_path, text), "--vehicle", VEHICLE,
+                       "--out", str(tmp_path / "p.toml"))
+    assert code == 2 and match in err and err.count("\n") == 1
+    assert not (tmp_path / "p.toml").exists()
+
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["fit", "loads", "apce_8x6", "--holdout", "nope"], "unknown run"),
+        (["fit", "loads", "apce_8x6", "--holdout", "static_2797rd"], "static run"),
+        (["fit", "loads", "nosuch.csv"], "neither a catalogue propeller nor a file"),
+        (["fit", "loads", "apce_8x6", "--M", "-3"], "--M"),
+        (["fit", "level-flight", FLIGHT, "--vehicle", "missing.toml"], "--vehicle"),
+    ],
+)
+def test_fit_bad_arguments_exit_2(capsys, tmp_path, argv, match):
+    code, _, err = run(capsys, *argv, "--out", str(tmp_path / "p.toml"))
+    assert code == 2 and match in err and err.count("\n") == 1
+
+
+def test_fit_loads_csv_needs_prop(capsys, tmp_path):
+    p = tmp_path / "l.csv"
+    p.write_text("rpm,airspeed,incidence_deg,thrust\n" + "".join(f"{5000 + 100 * k},1,0,2\n" for k in range(8)))
+    code, _, err = run(capsys, "fit", "loads", str(p), "--out", str(tmp_path / "p.toml"))
+    assert code == 2 and "--prop" in err
