@@ -196,6 +196,11 @@ class FitResult:
         lines.append("scaled Jacobian singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
         lines.append(f"rms residual {np.sqrt(np.mean(self.residuals ** 2)):.4g}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
+        eff = self.extra.get("M_effect")
+        if eff:
+            lines.append(f"stall-blend smoothing: fitted with M = {eff['M_fit']:g}; the same parameters give rms "
+                         f"residual {eff['rms_residual_at_M_fit']:.4g} at M = {eff['M_fit']:g} and "
+                         f"{eff['rms_residual_at_M_base']:.4g} at M = {eff['M_base']:g} (the base value)")
         lines.extend(f"WARNING: {w}" for w in idf.warnings)
         return "\n".join(lines)
 
@@ -247,6 +252,18 @@ def _x0(names, options: FitOptions):
     full = dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
     full.update(zip(("cl1_body", "cl2_body", "alpha0_body"), BODY_X0))
     return np.array([full[n] for n in names], float)
+
+
+def _m_effect(residual, best, base: AirfoilParams, options: FitOptions) -> dict:
+    """When the fit used a smoother M than the base parameters, report what that did:
+    the rms residual of the fitted parameters under the fit's M and under the base M."""
+    if options.M is None or options.M == base.M:
+        return {"M_used": base.M if options.M is None else options.M}
+    r_base = residual(best.x, replace(options, M=base.M))
+    return {"M_used": options.M, "M_effect": {
+        "M_fit": options.M, "M_base": base.M,
+        "rms_residual_at_M_fit": float(np.sqrt(np.mean(best.fun**2))),
+        "rms_residual_at_M_base": float(np.sqrt(np.mean(r_base**2)))}}
 
 
 def _jacobian(residual, x, lb, ub):
@@ -401,18 +418,19 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: AirfoilPa
     M_used = options.M if options.M is not None else base.M
     n_rot = len(vehicle.rotors)
 
-    def residual(x):
-        p = _params_from(x, names, base, options)
-        f = level_flight_forces(p, data, vehicle, air=air, discretization=options.discretization)
+    def residual(x, opts=options):
+        p = _params_from(x, names, base, opts)
+        f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization)
         r = f["vertical"] - vehicle.weight
-        if options.body_lift:
-            r = r + body_lift(x[-3:], data, vehicle, M_used, air)
+        if opts.body_lift:
+            r = r + body_lift(x[-3:], data, vehicle, p.M, air)
         return r
 
     best, log, nfev, elapsed = _solve(residual, names, options, "fit level-flight")
     params = _params_from(best.x, names, base, options)
     idf = _identifiability(names, best.x, best.jac, best.fun)
-    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight}
+    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight,
+             **_m_effect(residual, best, base, options)}
     if options.body_lift:
         L = body_lift(best.x[-3:], data, vehicle, M_used, air)
         without = fit_level_flight(data, vehicle, base=base, air=air,
@@ -493,16 +511,17 @@ def fit_loads(data: LoadData, propeller, *, base: AirfoilParams | None = None, a
     if data.n * len(keys) <= len(names):
         raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
 
-    def residual(x):
-        p = _params_from(x, names, base, options)
+    def residual(x, opts=options):
+        p = _params_from(x, names, base, opts)
         r = rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
-                        discretization=options.discretization)
+                        discretization=opts.discretization)
         model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
         return np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
 
     best, log, nfev, elapsed = _solve(residual, names, options, "fit loads")
     params = _params_from(best.x, names, base, options)
     idf = _identifiability(names, best.x, best.jac, best.fun)
-    extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales}
+    extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales,
+             **_m_effect(residual, best, base, options)}
     return FitResult(params, air, names, best.x, best.fun, float(best.cost), nfev, nfev * data.n, elapsed,
                      bool(best.success), str(best.message), log, idf, extra)
