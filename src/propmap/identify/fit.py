@@ -194,6 +194,8 @@ class FitResult:
             f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
             for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
         lines.append("scaled Jacobian singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
+        unit = " N" if self.extra.get("kind") == "level_flight" else " (scaled)"
+        lines.append(f"residual per condition{unit}: " + ", ".join(f"{r:+.3g}" for r in self.residuals))
         lines.append(f"rms residual {np.sqrt(np.mean(self.residuals ** 2)):.4g}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
         eff = self.extra.get("M_effect")
