@@ -19,7 +19,6 @@ def solve_reference(om, Vs, Vc, nodes, p):
     """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,))."""
     om = np.asarray(om, float)[:, None, None]
     Vs3 = np.asarray(Vs, float)[:, None, None]
-    Vc3 = np.asarray(Vc, float)[:, None, None]
     y = nodes.y[None, :, None]
     sinpsi = nodes.sinpsi[None, None, :]
     UT = om * y + Vs3 * sinpsi  # (n, nr, naz)

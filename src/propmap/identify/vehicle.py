@@ -16,7 +16,6 @@ TOML format (body frame: x forward, y left, z up; SI units)::
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -24,6 +23,7 @@ import numpy as np
 
 from ..core.geometry import Propeller
 from ..io.catalogue import resolve_propeller
+from ..io.toml_file import load_toml
 
 __all__ = ["Rotor", "Vehicle", "VehicleFileError", "read_vehicle"]
 
@@ -77,12 +77,7 @@ def read_vehicle(path) -> Vehicle:
         a bad position/axis/spin, or an unknown propeller.
     """
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise VehicleFileError(f"{path}: cannot read ({exc.strerror})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise VehicleFileError(f"{path}: not valid TOML ({exc})") from None
+    data = load_toml(path, VehicleFileError)
     for key in ("mass", "rotors"):
         if key not in data:
             raise VehicleFileError(f"{path}: missing key {key!r}")

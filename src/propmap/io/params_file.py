@@ -18,13 +18,13 @@ Format (SI except the stall angle, which carries its unit in the key)::
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 
 import tomli_w
 
 from ..core.airfoil import PRESETS, Air, AirfoilParams
 from .atomic import atomic_write
+from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "read_params", "write_params", "resolve_params"]
 
@@ -49,12 +49,7 @@ def read_params(path) -> tuple[AirfoilParams, Air]:
         Unreadable TOML, a missing required key, an unknown key or an invalid value.
     """
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ParamsFileError(f"{path}: cannot read ({exc.strerror})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ParamsFileError(f"{path}: not valid TOML ({exc})") from None
+    data = load_toml(path, ParamsFileError)
     missing = [k for k in REQUIRED if k not in data]
     if missing:
         raise ParamsFileError(f"{path}: missing key(s) {', '.join(missing)} (required: {', '.join(REQUIRED)})")
