@@ -95,3 +95,19 @@ def test_fit_loads_csv_needs_prop(capsys, tmp_path):
     p.write_text("rpm,airspeed,incidence_deg,thrust\n" + "".join(f"{5000 + 100 * k},1,0,2\n" for k in range(8)))
     code, _, err = run(capsys, "fit", "loads", str(p), "--out", str(tmp_path / "p.toml"))
     assert code == 2 and "--prop" in err
+
+
+def test_fit_loads_csv_with_prop_and_holdout(capsys, tmp_path):
+    from .test_identify import TRUE_X, _loads_csv
+
+    src = _loads_csv(tmp_path, pm.load_propeller("apce_8x6"))  # T, D, Q made with gill2017-apc at M = 30
+    out = tmp_path / "c.toml"
+    code, stdout, err = run(capsys, "fit", "loads", str(src), "--prop", "apce_8x6", "--holdout", "g2", "--M", "30",
+                            "--out", str(out), "--json")
+    assert code == 0, err
+    rep = json.loads(stdout)
+    assert rep["holdout"]["holdout"] == ["g2"]
+    assert rep["holdout"]["fitted"]["thrust_rmse"] < 1e-6  # the CSV is consistent with the model
+    params, _ = pm.read_params(out)
+    assert params.cl1 == pytest.approx(TRUE_X[0], rel=1e-5)
+    assert (tmp_path / "c.png").stat().st_size > 10_000
