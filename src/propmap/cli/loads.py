@@ -60,7 +60,8 @@ def _solve(prop, params, air, pts: np.ndarray, progress: bool):
     out = {k: np.empty(n) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
     conv = np.empty(n, bool)
     flags = [""] * n
-    with tqdm(total=n, unit="pt", disable=not progress or n <= CHUNK, leave=False) as bar:
+    # disable=None: shown only on a terminal, and only for batches longer than one chunk
+    with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
         for s in range(0, n, CHUNK):
             p = pts[s:s + CHUNK]
             r = rotor_loads(prop, params, p[:, 0] * 2 * math.pi / 60, p[:, 1], np.radians(p[:, 2]), air=air,
