@@ -56,6 +56,7 @@ class SweepComparison:
 
     @property
     def label(self) -> str:
+        """Display name: 'static <run>' or '<run> @ <rpm> rpm'."""
         if self.kind == "static":
             return f"static {self.run_id}"
         return f"{self.run_id} @ {np.median(self.rpm):.0f} rpm"

@@ -28,6 +28,7 @@ fit_options = [
 
 
 def with_fit_options(f):
+    """Decorate a fit command with the options shared by both fits."""
     for opt in reversed(fit_options):
         f = opt(f)
     return f

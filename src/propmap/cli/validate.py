@@ -13,6 +13,7 @@ from ._common import InputError, echo_json, load_params
 
 
 def print_table(v) -> None:
+    """Print the per-run CT/CP RMSE table of a Validation, model beside hover model."""
     click.echo(f"{'run':<24}{'n':>4}  {'CT rmse':>8}{'CP rmse':>8}  |  hover: {'CT rmse':>8}{'CP rmse':>8}")
     for r in v.runs:
         m, h = r.errors("model"), r.errors("hover_model")

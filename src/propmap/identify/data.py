@@ -49,6 +49,7 @@ class LevelFlightData:
 
     @property
     def n(self) -> int:
+        """Number of conditions N."""
         return self.airspeed.size
 
 
@@ -170,6 +171,7 @@ class LoadData:
 
     @property
     def n(self) -> int:
+        """Number of points N."""
         return self.omega.size
 
     def subset(self, mask) -> "LoadData":

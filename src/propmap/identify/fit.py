@@ -106,6 +106,7 @@ class Identifiability:
     warnings: tuple[str, ...]
 
     def to_dict(self) -> dict:
+        """JSON-ready form (alpha0 entries in rad)."""
         return {
             "std_error": dict(zip(self.names, map(float, self.std_error))),
             "ci95": {n: [float(a), float(b)] for n, (a, b) in zip(self.names, self.ci95)},
@@ -163,6 +164,7 @@ class FitResult:
     extra: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
+        """The JSON report (angles in degrees, as labelled in ``units``)."""
         p = self.params
         return {
             "params": {"cl1": p.cl1, "cl2": p.cl2, "cd": p.cd, "alpha0_deg": math.degrees(p.alpha0), "M": p.M,

@@ -56,6 +56,7 @@ class CatalogueEntry:
 
     @property
     def citation(self) -> str:
+        """Sources of the geometry and the measurements, for figures and reports."""
         geo = UIUC_CITATION if self.geometry_format == "uiuc" else APC_CITATION
         return f"geometry: {geo}; measurements: {UIUC_CITATION}"
 
