@@ -90,10 +90,14 @@ class Validation:
     citation: str
     params: dict = field(default_factory=dict)
 
-    def summary(self, which: str) -> dict:
-        """Errors pooled over every measured point, for "model" or "hover_model"."""
-        ct = np.concatenate([(r.CT_model if which == "model" else r.CT_hover) - r.CT for r in self.runs])
-        cp = np.concatenate([(r.CP_model if which == "model" else r.CP_hover) - r.CP for r in self.runs])
+    def summary(self, which: str, run_ids=None) -> dict:
+        """Errors pooled over the measured points, for "model" or "hover_model".
+
+        ``run_ids`` (optional): pool only the runs with these ids (e.g. held-out sweeps).
+        """
+        runs = [r for r in self.runs if run_ids is None or r.run_id in set(run_ids)]
+        ct = np.concatenate([(r.CT_model if which == "model" else r.CT_hover) - r.CT for r in runs])
+        cp = np.concatenate([(r.CP_model if which == "model" else r.CP_hover) - r.CP for r in runs])
         out = _errors(ct, cp)
         out["n_points"] = int(ct.size)
         return out
@@ -173,18 +177,11 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Airf
     -------
     dict
         ``{"holdout": [...], "fitted": {...}, "baseline": {...}, "hover_model": {...}}``, each
-        error dict as :meth:`SweepComparison.errors` pooled over the held-out points, plus
+        error dict as :meth:`Validation.summary` pooled over the held-out runs, plus
         ``"validation_fitted"`` and ``"validation_baseline"`` (:class:`Validation`) for figures.
     """
     vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
     vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
-    held = set(holdout)
-
-    def pooled(v, which):
-        runs = [r for r in v.runs if r.run_id in held]
-        ct = np.concatenate([(r.CT_model if which == "model" else r.CT_hover) - r.CT for r in runs])
-        cp = np.concatenate([(r.CP_model if which == "model" else r.CP_hover) - r.CP for r in runs])
-        return {**_errors(ct, cp), "n_points": int(ct.size)}
-
-    return {"holdout": sorted(held), "fitted": pooled(vf, "model"), "baseline": pooled(vb, "model"),
-            "hover_model": pooled(vf, "hover"), "validation_fitted": vf, "validation_baseline": vb}
+    held = sorted(set(holdout))
+    return {"holdout": held, "fitted": vf.summary("model", held), "baseline": vb.summary("model", held),
+            "hover_model": vf.summary("hover_model", held), "validation_fitted": vf, "validation_baseline": vb}

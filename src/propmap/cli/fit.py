@@ -46,9 +46,6 @@ def _options(M, lift_model, multistart):
 
 def _write_outputs(result, out: Path, base_spec: str, as_json: bool, extra_text: str = "") -> dict:
     report = {**result.to_dict(), "base": base_spec, "params_file": str(out)}
-    for k in list(report):
-        if k.startswith("validation_"):
-            report.pop(k)
     write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})")
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:

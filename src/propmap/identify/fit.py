@@ -21,7 +21,7 @@ from ..core.airfoil import Air, AirfoilParams, sigmoid_blend
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from ..core.vector import rotor_wrench
-from .data import LevelFlightData, LoadData, rotor_kinematics
+from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from .vehicle import Vehicle
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
@@ -373,8 +373,7 @@ def level_flight_forces(params: AirfoilParams, data: LevelFlightData, vehicle: V
 def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -> np.ndarray:
     """Body lift of Sec. III-A [N]: 0.5 rho V^2 C_L^body(beta_body - pi/2) S_body, eq 3 form."""
     cl1b, cl2b, a0b = xb
-    R, _ = rotor_kinematics(data, vehicle)
-    z_world = R[:, :, 2]  # body z in world
+    z_world = body_to_world(data.pitch, data.roll)[:, :, 2]  # body z in world
     beta_body = np.arccos(np.clip(z_world[:, 0], -1, 1))  # angle between velocity (world x) and body z
     a = beta_body - math.pi / 2
     s = sigmoid_blend(a, a0b, M)
@@ -460,7 +459,7 @@ def hover_vertical_force(params: AirfoilParams, data: LevelFlightData, vehicle: 
     k_T of each propeller from the model at V = 0 at the mean rotor speed of the
     slowest condition (the hover point of the data set).
     """
-    R, _ = rotor_kinematics(data, vehicle)
+    R = body_to_world(data.pitch, data.roll)
     j0 = int(np.argmin(data.airspeed))
     out = np.zeros(data.n)
     for i, rotor in enumerate(vehicle.rotors):
