@@ -64,7 +64,8 @@ class FitOptions:
         two best are polished to convergence.
     body_lift : bool
         Level flight only: append the body-lift term of Sec. III-A (needs the vehicle's
-        ``body_area``).
+        ``body_area``). The model without body lift is fitted first and the full fit
+        starts from its optimum with zero body lift, so the residual can only shrink.
     max_nfev : int
         Residual evaluations allowed per start.
     seed : int
@@ -271,7 +272,12 @@ def _m_effect(residual, best, base: AirfoilParams, options: FitOptions) -> dict:
 
 
 def _jacobian(residual, x, lb, ub):
-    """Central-difference Jacobian at x (one-sided at a bound), step 1e-4 max(|x|, 0.1)."""
+    """Central-difference Jacobian at x (one-sided at a bound), step 1e-4 max(|x_k|, 0.1).
+
+    The floor 0.1 matters: a purely relative step (SciPy's ``diff_step``) is 1e-14 at
+    the paper's start c_d = 0, far below the root solve's tolerance, and gives a
+    derivative that is pure round-off.
+    """
     cols = []
     for k in range(x.size):
         h = 1e-4 * max(abs(x[k]), 0.1)
@@ -290,12 +296,13 @@ def _params_from(x, names, base: AirfoilParams, options: FitOptions) -> AirfoilP
     return base.replace(**kw)
 
 
-def _solve(residual, names, options: FitOptions, label: str):
-    """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins."""
+def _solve(residual, names, options: FitOptions, label: str, x0=None):
+    """Bounded least squares from x0 (default ``options.x0``) and ``options.multistart``
+    Sobol starts; best cost wins."""
     from tqdm import tqdm
 
     lb, ub = _bounds(names, options)
-    x0 = np.clip(_x0(names, options), lb, ub)
+    x0 = np.clip(_x0(names, options) if x0 is None else np.asarray(x0, float), lb, ub)
     starts = [x0]
     if options.multistart > 0:
         sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random(options.multistart)
@@ -308,8 +315,11 @@ def _solve(residual, names, options: FitOptions, label: str):
         bar.update(1)
         return residual(x)
 
+    def jac(x):
+        return _jacobian(fun, np.array(x, float), lb, ub)
+
     def run(x_start, max_nfev):
-        r = optimize.least_squares(fun, x_start, bounds=(lb, ub), method="trf", x_scale="jac", diff_step=1e-4,
+        r = optimize.least_squares(fun, x_start, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
                                    max_nfev=max_nfev, xtol=1e-10, ftol=1e-10, gtol=1e-10)
         log.append({"x0": np.array(x_start), "x": r.x.copy(), "cost": float(r.cost), "nfev": int(r.nfev),
                     "stage": "polish" if max_nfev == options.max_nfev else "screen"})
@@ -429,15 +439,20 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: AirfoilPa
             r = r + body_lift(x[-3:], data, vehicle, p.M, air)
         return r
 
-    best, log, nfev, elapsed = _solve(residual, names, options, "fit level-flight")
+    x0 = None
+    if options.body_lift:
+        # the model without body lift first; the full fit starts from its optimum with
+        # zero body lift (BODY_X0), so that it can only improve on it (nested models)
+        without = fit_level_flight(data, vehicle, base=base, air=air,
+                                   options=replace(options, body_lift=False, progress=False))
+        x0 = np.concatenate([without.x, BODY_X0])
+    best, log, nfev, elapsed = _solve(residual, names, options, "fit level-flight", x0)
     params = _params_from(best.x, names, base, options)
     idf = _identifiability(names, best.x, best.jac, best.fun)
     extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight,
              **_m_effect(residual, best, base, options)}
     if options.body_lift:
         L = body_lift(best.x[-3:], data, vehicle, M_used, air)
-        without = fit_level_flight(data, vehicle, base=base, air=air,
-                                   options=replace(options, body_lift=False, progress=False))
         # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
         # fitting noise would? (the paper's Sec. III-A check, made quantitative)
         rss1, rss0 = float(best.fun @ best.fun), float(without.residuals @ without.residuals)
