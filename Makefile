@@ -17,7 +17,12 @@ env: $(STAMP)
 demo: $(STAMP)
 	$(BIN)/propmap demo
 
+# numba keys its disk cache on _kernel.py alone; drop it so that edits to the physics it
+# inlines (_physics.py, _fastmath.py) are always compiled into what the tests run
+NUMBA_CACHE := find src -name '*.nbi' -o -name '*.nbc'
+
 test: $(STAMP)
+	$(NUMBA_CACHE) | xargs rm -f
 	$(BIN)/python -m pytest -q
 
 bench: $(STAMP)
@@ -25,4 +30,5 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_fit.py
 
 clean:
+	$(NUMBA_CACHE) | xargs rm -f
 	rm -rf $(VENV) propmap-demo

@@ -26,10 +26,13 @@ import sys
 import time
 from pathlib import Path
 
+import re
+
 import numba
 import numpy as np
 
 import propmap as pm
+from propmap.core import _kernel
 from propmap.core._reference import solve_reference
 from propmap.core.solver import _nodes
 from propmap.io.atomic import atomic_write
@@ -78,6 +81,7 @@ def speed(prop, params, n_batch):
     om, V, b = points(n_batch, 0, 90, 7)
     pm.rotor_loads(prop, params, om[:10], V[:10], b[:10])  # warm-up (JIT or cache load)
     t_batch = best_of(lambda: pm.rotor_loads(prop, params, om, V, b), 3)
+    n_eval = pm.rotor_loads(prop, params, om, V, b).n_evaluations
     single = [best_of(lambda i=i: pm.rotor_loads(prop, params, om[i], V[i], b[i]), 5) for i in range(200)]
     d = pm.DEFAULT_DISCRETIZATION
     nd = _nodes(prop, d.n_radial, d.n_azimuth, pm.Air(), params.cp_blasius)
@@ -86,6 +90,8 @@ def speed(prop, params, n_batch):
     t_np = best_of(lambda: solve_reference(om[:n_np], Vs[:n_np], Vc[:n_np], nd, params), 1)
     return {
         "threads": numba.get_num_threads(),
+        "residual_evaluations_per_annulus": float(n_eval.mean() / pm.DEFAULT_DISCRETIZATION.n_radial),
+        "simd_widths_in_residual_loop": simd_widths(),
         "batch_points": n_batch,
         "numba_batch_us_per_point": 1e6 * t_batch / n_batch,
         "numba_single_point_us_median": 1e6 * float(np.median(single)),
@@ -95,6 +101,15 @@ def speed(prop, params, n_batch):
         "speedup_numba_batch_vs_numpy": (t_np / n_np) / (t_batch / n_batch),
         "speedup_vs_paper_3s_per_call": PAPER_S_PER_CALL / (t_batch / n_batch),
     }
+
+
+def simd_widths():
+    """Vector widths (doubles) LLVM used in the compiled residual (eq 11) loop."""
+    fresh = numba.njit(error_model="numpy", fastmath=_kernel._FM)(_kernel._residual.py_func)
+    # the dispatcher loaded from the disk cache holds no IR: compile a copy for one call
+    fresh(1.0, *([0.1] * 10), np.linspace(-1.0, 1.0, 16), 16, *([0.5] * 6), False)
+    ir = "".join(fresh.inspect_llvm().values())
+    return sorted({int(w) for w in re.findall(r"<(\d+) x double>", ir)})
 
 
 def jit_cache():
@@ -125,7 +140,8 @@ def main() -> None:
     s = res["speed"]
     print(f"\nbatch {s['numba_batch_us_per_point']:.1f} us/pt ({s['threads']} threads) vs NumPy "
           f"{s['numpy_reference_us_per_point']:.0f} us/pt: x{s['speedup_numba_batch_vs_numpy']:.1f}; "
-          f"single point {s['numba_single_point_us_median']:.0f} us; paper 3 s/call: "
+          f"single point {s['numba_single_point_us_median']:.0f} us; SIMD widths {s['simd_widths_in_residual_loop']}; "
+          f"paper 3 s/call: "
           f"x{s['speedup_vs_paper_3s_per_call']:.0f}")
 
 

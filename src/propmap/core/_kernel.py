@@ -24,7 +24,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._physics import element, momentum_scale, momentum_thrust
+from ._fastmath import atan2_poly, exp_sat
+from ._physics import make_element, momentum_scale, momentum_thrust
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -40,9 +41,13 @@ NO_BRACKET = 1
 NO_CONVERGENCE = 2
 
 _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
-_element = numba.njit(inline="always", error_model="numpy", fastmath=_FM)(element)
-_momentum_thrust = numba.njit(inline="always", error_model="numpy", fastmath=_FM)(momentum_thrust)
-_momentum_scale = numba.njit(inline="always", error_model="numpy", fastmath=_FM)(momentum_scale)
+_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+# polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
+_atan2 = _jit_inline(atan2_poly)
+_exp_sat = _jit_inline(exp_sat)
+_element = _jit_inline(make_element(_atan2, _exp_sat))
+_momentum_thrust = _jit_inline(momentum_thrust)
+_momentum_scale = _jit_inline(momentum_scale)
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=_FM)
