@@ -50,7 +50,7 @@ _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
 
 
-@numba.njit(cache=True, error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _residual(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
               cl1, cl2, cd, a0, M, cd0, sincos):
     """F(v) = dT_BET/dy - dT_BEMT/dy [N/m] on one annulus (eq 11)."""
@@ -70,8 +70,7 @@ def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
 
     Returns (v_i [m/s], status, n_evaluations, multiple_roots).
     """
-    args = (y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-    F0 = _residual(0.0, *args)
+    F0 = _residual(0.0, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
     nev = 1
     if F0 == 0.0:
         return 0.0, OK, nev, False
@@ -86,7 +85,7 @@ def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     kb = 0
     for k in range(1, MAX_MARCH + 1):
         b = s * k * h
-        fb = _residual(b, *args)
+        fb = _residual(b, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
         nev += 1
         if fb * s <= 0.0:
             found = True
@@ -97,7 +96,7 @@ def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     if not found:
         for _ in range(MAX_DOUBLING):
             b = 2.0 * b
-            fb = _residual(b, *args)
+            fb = _residual(b, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
             nev += 1
             if fb * s <= 0.0:
                 found = True
@@ -109,7 +108,7 @@ def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     multiple = False
     if kb > 0:
         for m in range(1, EXTRA_SCAN + 1):
-            fm = _residual(s * (kb + m) * h, *args)
+            fm = _residual(s * (kb + m) * h, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
             nev += 1
             if fm * s > 0.0:
                 multiple = True
@@ -121,7 +120,7 @@ def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     ftol = FTOL * abs(F0)
     for _ in range(MAX_REFINE):
         c = (a * fb - b * fa) / (fb - fa)
-        fc = _residual(c, *args)
+        fc = _residual(c, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
         nev += 1
         if fc * fb < 0.0:
             a = b
