@@ -17,6 +17,11 @@ stable root (F crosses zero downward in that direction). Concretely:
    |F| <= FTOL * |F(0)|.
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
    march steps beyond the bracket.
+
+``solve_annuli`` runs these steps for all annuli of an operating point in lockstep (one
+residual sweep over the active annuli, then one state-machine step each), which gives
+the same iterates as a per-annulus loop (tested against the NumPy reference) but lets
+the CPU overlap the independent evaluations.
 """
 
 from __future__ import annotations
@@ -63,75 +68,153 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     return cfac * acc / naz - _momentum_thrust(v, mfac, Vs, Vc)
 
 
-@numba.njit(cache=True, error_model="numpy", fastmath=_FM)
-def solve_annulus(y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
-                  cl1, cl2, cd, a0, M, cd0, sincos):
-    """Root of eq (11) on one annulus by the rule in the module docstring.
+# phases of one annulus' root solve (solve_annuli)
+_INIT = 0
+_MARCH = 1
+_DOUBLE = 2
+_SCAN = 3
+_REFINE = 4
 
-    Returns (v_i [m/s], status, n_evaluations, multiple_roots).
+
+@numba.njit(cache=True, error_model="numpy", fastmath=_FM)
+def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
+                 cl1, cl2, cd, a0, M, cd0, sincos, v, code, nev, multiple):
+    """Roots of eq (11) on every annulus of one operating point, by the module's rule.
+
+    The annuli are independent, so they are solved in lockstep: each sweep evaluates
+    F at the trial inflow of every annulus still active, then advances each annulus'
+    state machine (march, doubling, extra scan, Illinois) by one step. Step for step
+    this is the scalar algorithm of the module docstring, but the evaluations of one
+    sweep do not wait on each other, so the CPU overlaps them (one F(v) at a time is
+    latency-bound). Outputs, shape (nr,): v [m/s], code (OK, NO_BRACKET,
+    NO_CONVERGENCE), nev (residual evaluations) and multiple (more roots seen).
     """
-    F0 = _residual(0.0, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-    nev = 1
-    if F0 == 0.0:
-        return 0.0, OK, nev, False
-    s = 1.0 if F0 > 0.0 else -1.0
-    vm = _momentum_scale(F0, mfac, Vs, Vc)
-    h = vm / MARCH_STEPS
-    a = 0.0
-    fa = F0
-    b = 0.0
-    fb = F0
-    found = False
-    kb = 0
-    for k in range(1, MAX_MARCH + 1):
-        b = s * k * h
-        fb = _residual(b, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-        nev += 1
-        if fb * s <= 0.0:
-            found = True
-            kb = k
-            break
-        a = b
-        fa = fb
-    if not found:
-        for _ in range(MAX_DOUBLING):
-            b = 2.0 * b
-            fb = _residual(b, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-            nev += 1
-            if fb * s <= 0.0:
-                found = True
-                break
-            a = b
-            fa = fb
-    if not found:
-        return np.nan, NO_BRACKET, nev, False
-    multiple = False
-    if kb > 0:
-        for m in range(1, EXTRA_SCAN + 1):
-            fm = _residual(s * (kb + m) * h, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-            nev += 1
-            if fm * s > 0.0:
-                multiple = True
-                break
-    if fb == 0.0:
-        return b, OK, nev, multiple
-    # Illinois refinement on [a, b], fa * fb < 0
-    xtol = XTOL * vm
-    ftol = FTOL * abs(F0)
-    for _ in range(MAX_REFINE):
-        c = (a * fb - b * fa) / (fb - fa)
-        fc = _residual(c, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-        nev += 1
-        if fc * fb < 0.0:
-            a = b
-            fa = fb
-        else:
-            fa = 0.5 * fa
-        b = c
-        fb = fc
-        if abs(fb) <= ftol or abs(b - a) <= xtol:
-            return b, OK, nev, multiple
-    return b, NO_CONVERGENCE, nev, multiple
+    nr = y.shape[0]
+    trial = np.zeros(nr)
+    f = np.empty(nr)
+    a = np.zeros(nr)
+    fa = np.empty(nr)
+    b = np.zeros(nr)
+    fb = np.empty(nr)
+    sgn = np.empty(nr)
+    h = np.empty(nr)
+    xtol = np.empty(nr)
+    ftol = np.empty(nr)
+    phase = np.zeros(nr, dtype=np.int64)
+    k = np.zeros(nr, dtype=np.int64)
+    kb = np.zeros(nr, dtype=np.int64)
+    cnt = np.zeros(nr, dtype=np.int64)
+    active = np.arange(nr)
+    for j in range(nr):
+        nev[j] = 0
+        multiple[j] = False
+        code[j] = OK
+    n_active = nr
+    while n_active > 0:
+        for q in range(n_active):  # independent evaluations
+            j = active[q]
+            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], kre[j], cfac[j], mfac[j],
+                             sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
+            nev[j] += 1
+        m = 0
+        for q in range(n_active):
+            j = active[q]
+            fj = f[j]
+            ph = phase[j]
+            refine = False
+            done = False
+            if ph == _INIT:
+                if fj == 0.0:
+                    v[j] = 0.0
+                    done = True
+                else:
+                    sgn[j] = 1.0 if fj > 0.0 else -1.0
+                    vm = _momentum_scale(fj, mfac[j], Vs, Vc)
+                    h[j] = vm / MARCH_STEPS
+                    xtol[j] = XTOL * vm
+                    ftol[j] = FTOL * abs(fj)
+                    fa[j] = fj
+                    fb[j] = fj
+                    k[j] = 1
+                    phase[j] = _MARCH
+                    trial[j] = sgn[j] * h[j]
+            elif ph == _MARCH:
+                b[j] = trial[j]
+                fb[j] = fj
+                if fj * sgn[j] <= 0.0:
+                    kb[j] = k[j]
+                    if EXTRA_SCAN > 0:
+                        phase[j] = _SCAN
+                        cnt[j] = 1
+                        trial[j] = sgn[j] * (kb[j] + 1) * h[j]
+                    else:
+                        refine = True
+                else:
+                    a[j] = b[j]
+                    fa[j] = fj
+                    k[j] += 1
+                    if k[j] > MAX_MARCH:
+                        phase[j] = _DOUBLE
+                        cnt[j] = 0
+                        trial[j] = 2.0 * b[j]
+                    else:
+                        trial[j] = sgn[j] * k[j] * h[j]
+            elif ph == _DOUBLE:
+                b[j] = trial[j]
+                fb[j] = fj
+                if fj * sgn[j] <= 0.0:
+                    refine = True
+                else:
+                    a[j] = b[j]
+                    fa[j] = fj
+                    cnt[j] += 1
+                    if cnt[j] >= MAX_DOUBLING:
+                        v[j] = np.nan
+                        code[j] = NO_BRACKET
+                        done = True
+                    else:
+                        trial[j] = 2.0 * b[j]
+            elif ph == _SCAN:
+                if fj * sgn[j] > 0.0:
+                    multiple[j] = True
+                    refine = True
+                else:
+                    cnt[j] += 1
+                    if cnt[j] > EXTRA_SCAN:
+                        refine = True
+                    else:
+                        trial[j] = sgn[j] * (kb[j] + cnt[j]) * h[j]
+            else:  # _REFINE: Illinois on [a, b], fa * fb < 0
+                if fj * fb[j] < 0.0:
+                    a[j] = b[j]
+                    fa[j] = fb[j]
+                else:
+                    fa[j] = 0.5 * fa[j]
+                b[j] = trial[j]
+                fb[j] = fj
+                if abs(fj) <= ftol[j] or abs(b[j] - a[j]) <= xtol[j]:
+                    v[j] = b[j]
+                    done = True
+                else:
+                    cnt[j] += 1
+                    if cnt[j] >= MAX_REFINE:
+                        v[j] = b[j]
+                        code[j] = NO_CONVERGENCE
+                        done = True
+                    else:
+                        trial[j] = (a[j] * fb[j] - b[j] * fa[j]) / (fb[j] - fa[j])
+            if refine:
+                if fb[j] == 0.0:
+                    v[j] = b[j]
+                    done = True
+                else:
+                    phase[j] = _REFINE
+                    cnt[j] = 0
+                    trial[j] = (a[j] * fb[j] - b[j] * fa[j]) / (fb[j] - fa[j])
+            if not done:
+                active[m] = j
+                m += 1
+        n_active = m
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=_FM)
@@ -169,6 +252,12 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
     for i in numba.prange(n):
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_full  # the integrand is independent of psi
+        v = np.empty(nr)
+        code = np.empty(nr, dtype=np.int64)
+        nev = np.empty(nr, dtype=np.int64)
+        multiple = np.empty(nr, dtype=np.bool_)
+        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
+                     cl1, cl2, cd, a0, M, cd0, sincos, v, code, nev, multiple)
         Ti = 0.0
         Di = 0.0
         Qi = 0.0
@@ -177,25 +266,21 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
         nv = 0
         ne = 0
         for j in range(nr):
-            v, code, nev, multiple = solve_annulus(
-                y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], kre[j], cfac[j], mfac[j],
-                sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
-            ne += nev
-            if multiple:
+            ne += nev[j]
+            if multiple[j]:
                 nm += 1
-            if code != OK:
+            vi[i, j] = v[j]
+            if code[j] != OK:
                 if st == 0:
-                    st = 1 + j * 4 + code
-                vi[i, j] = v
+                    st = 1 + j * 4 + code[j]
                 dT[i, j] = np.nan
                 dD[i, j] = np.nan
                 dQ[i, j] = np.nan
                 continue
-            if Vc[i] < 0.0 and Vc[i] + v > 0.0:
+            if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q = annulus_loads(v, y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], kre[j],
+            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], kre[j],
                                     cfac[j], sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos, axial)
-            vi[i, j] = v
             dT[i, j] = t
             dD[i, j] = d
             dQ[i, j] = q
