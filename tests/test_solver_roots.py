@@ -102,9 +102,11 @@ def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, env
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0
     T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, apc_params)
     assert conv.all()
-    T0 = float(pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0).thrust)
+    static = pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0)
+    T0, Q0 = float(static.thrust), float(static.torque)
     np.testing.assert_allclose(r.thrust, T, rtol=0, atol=1e-7 * T0)
     np.testing.assert_allclose(r.drag, D, rtol=0, atol=1e-7 * T0)
+    np.testing.assert_allclose(r.torque, Q, rtol=0, atol=1e-7 * Q0)
     np.testing.assert_allclose(r.v_i, vi, rtol=1e-6, atol=1e-6)
 
 
