@@ -6,6 +6,8 @@ dense scan of F and against the independent NumPy implementation.
 """
 
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -137,3 +139,14 @@ def _fail_everything(*args):
     status[:] = 1 + 3 * 4 + 1  # annulus 3, no bracket
     for a in args[22:26] + args[27:]:
         a[...] = 0
+
+
+def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, apc_params):
+    """Issue: compiled kernels are cached on disk, so a new process pays no JIT time."""
+    pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0)  # this process compiled or loaded it
+    code = ("import propmap as pm; from propmap.core import _kernel as K; "
+            "pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
+            "s = K.solve_batch.stats; print(sum(s.cache_hits.values()), sum(s.cache_misses.values()))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    hits, misses = map(int, out.split())
+    assert (hits, misses) == (1, 0)
