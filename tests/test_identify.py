@@ -113,8 +113,9 @@ def test_fit_on_uiuc_apce_8x6_beats_table_i_and_hover_on_held_out_sweeps(apc8x6,
     cmp = holdout_comparison(entry, apc8x6, r.params, apc_params, held)
     assert cmp["fitted"]["n_points"] == 33
     assert cmp["fitted"]["ct_rmse"] < cmp["baseline"]["ct_rmse"] < cmp["hover_model"]["ct_rmse"]
-    # regression values (measured 2026-11-21): fitted 0.0312, Table I 0.0336, hover 0.0553
-    assert cmp["fitted"]["ct_rmse"] == pytest.approx(0.0312, abs=0.002)
+    # regression values (measured 2026-11-21, central-difference Jacobian): fitted 0.0322,
+    # Table I 0.0336, hover 0.0553
+    assert cmp["fitted"]["ct_rmse"] == pytest.approx(0.0322, abs=0.001)
 
 
 def test_round_trip_fit_params_file_loads(tmp_path, capsys, apc8x6):
