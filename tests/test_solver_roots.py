@@ -70,6 +70,10 @@ def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_para
     # no false alarms: every point flagged multiple_roots has several roots on the scan
     assert not np.any(r.multiple_roots & ~multi_scan)
     assert r.multiple_roots.any()
+    # climb to edgewise: every point with several roots on the scan is flagged (measured 2
+    # of 2); in descent the flag sees only folds within one march step (measured 4 of 12)
+    ascent = B <= math.pi / 2 + 1e-9
+    assert np.all(r.multiple_roots[multi_scan & ascent]) and np.any(multi_scan & ascent)
 
 
 def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
