@@ -68,6 +68,12 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     return cfac * acc / naz - _momentum_thrust(v, mfac, Vs, Vc)
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _false_position(a, fa, b, fb):
+    """Zero of the secant through (a, fa), (b, fb); fa * fb < 0."""
+    return (a * fb - b * fa) / (fb - fa)
+
+
 # phases of one annulus' root solve (solve_annuli)
 _INIT = 0
 _MARCH = 1
@@ -202,7 +208,7 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
                         code[j] = NO_CONVERGENCE
                         done = True
                     else:
-                        trial[j] = (a[j] * fb[j] - b[j] * fa[j]) / (fb[j] - fa[j])
+                        trial[j] = _false_position(a[j], fa[j], b[j], fb[j])
             if refine:
                 if fb[j] == 0.0:
                     v[j] = b[j]
@@ -210,7 +216,7 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
                 else:
                     phase[j] = _REFINE
                     cnt[j] = 0
-                    trial[j] = (a[j] * fb[j] - b[j] * fa[j]) / (fb[j] - fa[j])
+                    trial[j] = _false_position(a[j], fa[j], b[j], fb[j])
             if not done:
                 active[m] = j
                 m += 1
