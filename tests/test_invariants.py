@@ -175,3 +175,13 @@ def test_simplified_lift_model_runs_and_differs(apc8x6, apc_params):
     a = pm.rotor_loads(apc8x6, simple, 8000 * RPM, 5.0, 1.0)
     b = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 5.0, 1.0)
     assert a.converged and a.thrust > 0 and a.thrust != b.thrust
+
+
+@pytest.mark.parametrize("nr, naz, match", [(1, 16, "n_radial must be an integer in \\[2, 10000\\]"),
+                                            (48.5, 16, "n_radial"),
+                                            (48, 1, "n_azimuth must be an integer in \\[2, 1000\\]"),
+                                            (48, 1001, "n_azimuth")])
+def test_discretization_rejects_counts_outside_their_range(nr, naz, match):
+    # one azimuth node (psi = 0) would silently give D = 0 in edgewise flight
+    with pytest.raises(ValueError, match=match):
+        pm.Discretization(nr, naz)

@@ -39,9 +39,11 @@ class Discretization:
     n_radial : int
         Gauss-Legendre nodes on [r_hub, R], in [2, 10000].
     n_azimuth : int
-        Midpoint nodes on psi in [-pi/2, pi/2], in [1, 1000]. Every integrand depends on
+        Midpoint nodes on psi in [-pi/2, pi/2], in [2, 1000]. Every integrand depends on
         psi only through sin(psi), so n midpoints there equal a 2n-point periodic
-        trapezoid rule on [0, 2 pi) (spectral convergence, NUMERICS.md).
+        trapezoid rule on [0, 2 pi) (spectral convergence, NUMERICS.md). One node
+        (psi = 0) would see no in-plane flow at all, hence the minimum 2. Multiples
+        of 8 run fastest (SIMD lanes; benchmarks/README.md).
 
     Raises
     ------
@@ -55,8 +57,8 @@ class Discretization:
     def __post_init__(self) -> None:
         if int(self.n_radial) != self.n_radial or not 2 <= self.n_radial <= 10000:
             raise ValueError(f"n_radial must be an integer in [2, 10000], got {self.n_radial!r}")
-        if int(self.n_azimuth) != self.n_azimuth or not 1 <= self.n_azimuth <= 1000:
-            raise ValueError(f"n_azimuth must be an integer in [1, 1000], got {self.n_azimuth!r}")
+        if int(self.n_azimuth) != self.n_azimuth or not 2 <= self.n_azimuth <= 1000:
+            raise ValueError(f"n_azimuth must be an integer in [2, 1000], got {self.n_azimuth!r}")
 
 
 DEFAULT_DISCRETIZATION = Discretization()
