@@ -1,8 +1,9 @@
 """The blade-element integrand, written once for both back ends.
 
-Only arithmetic and NumPy ufuncs are used, so the same function runs elementwise on
-NumPy arrays (the vectorised reference in ``_reference.py``) and on scalars inside
-numba-compiled loops (``_kernel.py``). Every other piece of physics is built on it.
+Only arithmetic, NumPy ufuncs and the injected atan2/exp are used, so the same function
+runs elementwise on NumPy arrays (the vectorised reference in ``_reference.py``) and on
+scalars inside numba-compiled loops (``_kernel.py``). Every other piece of physics is
+built on it.
 
 Gill & D'Andrea (2017), eqs (1)-(7). With phi = atan2(U_P, U_T) (NUMERICS.md item 4:
 the four-quadrant angle is the physical choice in reverse flow) we have exactly
@@ -23,8 +24,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._fastmath import EXP_CLIP  # |exponent| beyond which the stall blend equals its limit
+
 TWO_PI = 2.0 * np.pi
-EXP_CLIP = 40.0  # |exponent| beyond which the stall blend equals its limit in double
 
 
 def exp_sat_numpy(z):
