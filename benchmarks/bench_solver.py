@@ -21,12 +21,11 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import subprocess
 import sys
 import time
 from pathlib import Path
-
-import re
 
 import numba
 import numpy as np

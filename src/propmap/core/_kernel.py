@@ -62,8 +62,8 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     acc = 0.0
     UP = Vc + v
     for k in range(naz):
-        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, kre,
-                          cl1, cl2, cd, a0, M, cd0, sincos)
+        qT, _ = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, kre,
+                         cl1, cl2, cd, a0, M, cd0, sincos)
         acc += qT
     return cfac * acc / naz - _momentum_thrust(v, mfac, Vs, Vc)
 
