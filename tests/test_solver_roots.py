@@ -154,3 +154,39 @@ def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, 
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     hits, misses = map(int, out.split())
     assert (hits, misses) == (1, 0)
+
+
+def _solve_annuli_python(nd, p, om, V, b):
+    """The kernel's lockstep root solve run as plain Python (reads _kernel's constants now)."""
+    from propmap.core import _kernel
+
+    nr = nd.y.size
+    v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
+    _kernel.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, nd.theta, nd.sin_th, nd.cos_th,
+                                 nd.kre, nd.cfac, nd.mfac, nd.sinpsi, nd.sinpsi.size,
+                                 p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, False, v, code, nev, mult)
+    return v, code, nev
+
+
+def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monkeypatch):
+    """The give-up paths (no bracket, no convergence) that feed SolverError's message."""
+    from propmap.core import _kernel
+
+    nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params.cp_blasius)
+    om, V, b = 800.0, 10.0, 1.0
+    v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
+    r = pm.rotor_loads(apc8x6, apc_params, om, V, b, discretization=pm.Discretization(6, 8))
+    assert np.all(code == _kernel.OK)
+    np.testing.assert_allclose(v, r.v_i, rtol=1e-12)  # same iterates as the compiled kernel
+    assert nev.sum() == r.n_evaluations
+
+    monkeypatch.setattr(_kernel, "MAX_MARCH", 1)  # the root lies ~3 march steps out
+    monkeypatch.setattr(_kernel, "MAX_DOUBLING", 0)
+    v, code, _ = _solve_annuli_python(nd, apc_params, om, V, b)
+    assert np.all(code == _kernel.NO_BRACKET) and np.all(np.isnan(v))
+
+    monkeypatch.setattr(_kernel, "MAX_MARCH", 64)
+    monkeypatch.setattr(_kernel, "MAX_DOUBLING", 80)
+    monkeypatch.setattr(_kernel, "MAX_REFINE", 1)
+    v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
+    assert np.all(code == _kernel.NO_CONVERGENCE) and np.all(np.isfinite(v))
