@@ -223,7 +223,7 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
         n_active = m
 
 
-@numba.njit(cache=True, error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, sinpsi, naz,
                   cl1, cl2, cd, a0, M, cd0, sincos, axial):
     """dT/dy, dD/dy, dQ/dy [N/m, N/m, N] at inflow v (eqs 5-7, azimuth-averaged)."""
@@ -258,7 +258,7 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
     for i in numba.prange(n):
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_full  # the integrand is independent of psi
-        v = np.empty(nr)
+        v = vi[i]  # the roots are written straight into the output row
         code = np.empty(nr, dtype=np.int64)
         nev = np.empty(nr, dtype=np.int64)
         multiple = np.empty(nr, dtype=np.bool_)
@@ -275,7 +275,6 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
             ne += nev[j]
             if multiple[j]:
                 nm += 1
-            vi[i, j] = v[j]
             if code[j] != OK:
                 if st == 0:
                     st = 1 + j * 4 + code[j]
