@@ -336,7 +336,8 @@ def _solve(residual, names, options: FitOptions, label: str, x0=None):
             screened = sorted((run(s, SCREEN_NFEV) for s in starts), key=lambda r: r.cost)
             polished = [run(r.x, options.max_nfev) for r in screened[:2]]
             best = min(polished, key=lambda r: r.cost)
-        best.jac = _jacobian(fun, best.x, lb, ub)
+        # best.jac is _jacobian at best.x: least_squares evaluates jac after every
+        # accepted step and returns it unchanged for the default linear loss
     finally:
         bar.close()
     return best, log, counter["n"], time.perf_counter() - t0
