@@ -83,7 +83,7 @@ def speed(prop, params, n_batch):
     n_eval = pm.rotor_loads(prop, params, om, V, b).n_evaluations
     single = [best_of(lambda i=i: pm.rotor_loads(prop, params, om[i], V[i], b[i]), 5) for i in range(200)]
     d = pm.DEFAULT_DISCRETIZATION
-    nd = _nodes(prop, d.n_radial, d.n_azimuth, pm.Air(), params.cp_blasius)
+    nd = _nodes(prop, d.n_radial, d.n_azimuth, pm.Air(), params)
     Vs, Vc = V * np.sin(b), V * np.cos(b)
     n_np = min(n_batch, 2000)
     t_np = best_of(lambda: solve_reference(om[:n_np], Vs[:n_np], Vc[:n_np], nd, params), 1)

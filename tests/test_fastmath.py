@@ -10,7 +10,9 @@ import numpy as np
 import pytest
 
 from propmap.core import _fastmath, _kernel
-from propmap.core._physics import element
+import propmap as pm
+from propmap.core._physics import element, loss_factor_numpy
+from propmap.core.solver import _model_constants
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -28,10 +30,16 @@ def _exp_all(z, out):
 
 
 @numba.njit
-def _element_all(UT, UP, th, kre, cl1, cl2, cd, a0, M, cd0, sincos, qT, qH):
+def _element_all(UT, UP, th, s0, s1, model, pk, qT, qH):
     for i in range(UT.size):
-        qT[i], qH[i] = _kernel._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), kre[i],
-                                        cl1, cl2, cd, a0, M, cd0, sincos)
+        qT[i], qH[i] = _kernel._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i],
+                                        model, pk)
+
+
+@numba.njit
+def _loss_all(UP, wy, ct, ch, out):
+    for i in range(UP.size):
+        out[i] = _kernel._loss_factor(UP[i], wy[i], ct[i], ch[i])
 
 
 def atan2_poly(y, x):
@@ -75,19 +83,47 @@ def test_exp_sat_is_exp_of_the_clipped_argument():
     assert out[-3] == pytest.approx(1.0, rel=1e-13)
 
 
-@pytest.mark.parametrize("sincos", [False, True])
-def test_compiled_element_matches_numpy_element_in_every_flow_quadrant(sincos):
+@pytest.mark.parametrize("params", [pm.preset("gill2017-apc").replace(M=50.0),
+                                    pm.preset("gill2017-apc").replace(lift_model="sincos"),
+                                    pm.CamberedParams()], ids=["gill2017", "sincos", "cambered"])
+def test_compiled_element_matches_numpy_element_in_every_flow_quadrant(params):
     """Forward, reverse (U_T < 0) and up-through (U_P < 0) flow, stall and pre-stall."""
     rng = np.random.default_rng(3)
     n = 200_000
     UT = rng.uniform(-40, 120, n)
     UP = rng.uniform(-40, 40, n)
     th = rng.uniform(0.05, 0.8, n)
-    kre = rng.uniform(0.0, 0.02, n)
-    pars = (2 * np.pi, 1.7, 1.8, math.radians(20.6), 50.0, 0.01, sincos)
+    s0 = rng.uniform(0.0, 0.02, n) if params.section_model == "gill2017" else rng.uniform(3.0, 7.0, n)
+    s1 = rng.uniform(0.5, 2.0, n)
+    model, pk = _model_constants(params)
     qT, qH = np.empty(n), np.empty(n)
-    _element_all(UT, UP, th, kre, *pars, qT, qH)
-    rT, rH = element(UT, UP, th, np.sin(th), np.cos(th), kre, *pars)
+    _element_all(UT, UP, th, s0, s1, model, pk, qT, qH)
+    rT, rH = element(UT, UP, th, np.sin(th), np.cos(th), s0, s1, model, pk)
     scale = UT**2 + UP**2
     assert np.max(np.abs(qT - rT) / scale) < 1e-12
     assert np.max(np.abs(qH - rH) / scale) < 1e-12
+
+
+def test_compiled_loss_factor_matches_numpy_and_its_limits():
+    """Prandtl's F: compiled vs NumPy; F -> 1 far from the tip, -> 0 at the tip."""
+    rng = np.random.default_rng(5)
+    n = 100_000
+    UP = rng.uniform(-30, 30, n)
+    wy = rng.uniform(1, 200, n)
+    ct = rng.uniform(-1, 20, n)
+    ch = rng.uniform(-1, 5, n)
+    out = np.empty(n)
+    _loss_all(UP, wy, ct, ch, out)
+    # acos(x) has slope -1/sqrt(1 - x^2): near the tip (x -> 1) it amplifies exp_sat's
+    # 5e-13 relative error, so agreement is ~5e-12 there and ~1e-16 elsewhere
+    np.testing.assert_allclose(out, loss_factor_numpy(UP, wy, ct, ch), rtol=0, atol=2e-11)
+    assert np.all((out >= 0) & (out <= 1))
+    # limits: c = (N_b/2)(R - y)/y -> 0 at the tip gives F -> 0; far inboard F = 1 to double precision
+    up, w = np.full(4, 5.0), np.full(4, 100.0)
+    F = loss_factor_numpy(up, w, np.array([0.0, 1e-6, 0.2, 50.0]), -1.0)  # f = 0, 2e-5, 4, 1000
+    assert F[0] == 0.0 and F[1] < 0.01 and 0.0 < F[2] < 1.0 and F[3] == 1.0
+    # closed form (2/pi) acos(exp(-f)), f = c |U_P|^-1 sqrt(U_P^2 + (Omega y)^2)
+    f = 0.3 * np.hypot(5.0, 100.0) / 5.0
+    assert loss_factor_numpy(5.0, 100.0, 0.3, -1.0) == pytest.approx(2 / np.pi * np.arccos(np.exp(-f)), rel=1e-13)
+    # no axial flow through the disk (U_P = 0): no loss
+    assert loss_factor_numpy(0.0, 100.0, 0.3, 0.3) == 1.0

@@ -47,7 +47,7 @@ def test_momentum_consistency_sum_dT_BEMT_equals_T(apc8x6, apc_params, envelope_
     """Sum over annuli of eq (10) at the solved v_i equals T from eq (13)."""
     om, V, b = envelope_points
     r = pm.rotor_loads(apc8x6, apc_params, om, V, b)
-    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params)
     Vs = (V * np.sin(b))[:, None]
     Vc = (V * np.cos(b))[:, None]
     dT_bemt = nd.mfac * r.v_i * np.sqrt(Vs**2 + (Vc + r.v_i) ** 2)

@@ -15,7 +15,7 @@ import pytest
 import propmap as pm
 from propmap.core._physics import element, momentum_thrust
 from propmap.core._reference import solve_reference
-from propmap.core.solver import _nodes
+from propmap.core.solver import _model_constants, _nodes
 
 from .conftest import RPM
 
@@ -32,8 +32,8 @@ def _residual(nd, p, om, V, b, j, v):
         Vs = 0.0
     UT = om * nd.y[j] + Vs * nd.sinpsi[None, :]
     with np.errstate(all="ignore"):
-        qT, _ = element(UT, (Vc + v)[:, None], nd.theta[j], nd.sin_th[j], nd.cos_th[j], nd.kre[j],
-                        p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, False)
+        qT, _ = element(UT, (Vc + v)[:, None], nd.theta[j], nd.sin_th[j], nd.cos_th[j], nd.sc[j], 0.0,
+                        *_model_constants(p))
     return nd.cfac[j] * qT.mean(axis=1) - momentum_thrust(v, nd.mfac[j], Vs, Vc)
 
 
@@ -49,7 +49,7 @@ def test_every_annulus_of_a_dense_grid_converges_including_descent(apc8x6, apc_p
 def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_params):
     om, V, B = _grid()
     r = pm.rotor_loads(apc8x6, apc_params, om, V, B)
-    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params)
     misses, total, multi_scan = 0, 0, np.zeros(om.size, bool)
     for i in range(om.size):
         for j in range(nd.y.size):
@@ -84,7 +84,7 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
     assert r48.r[jump] / apc8x6.radius == pytest.approx(0.345, abs=0.01)
     assert r48.v_i[jump] == pytest.approx(5.35, abs=0.1) and r48.v_i[jump + 1] == pytest.approx(8.4, abs=0.3)
     disc = pm.Discretization(200, 8)
-    nd = _nodes(apc8x6, 200, 8, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 200, 8, pm.Air(), apc_params)
     r = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0, discretization=disc)
     assert r.multiple_roots
     folds = 0
@@ -100,15 +100,17 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
     # the point-level flag is computed per annulus: the 200-node run sees the fold
 
 
-def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points):
+@pytest.mark.parametrize("which", ["gill2017", "cambered_tip_hub"])
+def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points, which):
+    params = apc_params if which == "gill2017" else pm.CamberedParams(tip_loss=True, hub_loss=True)
     om, V, b = envelope_points
-    r = pm.rotor_loads(apc8x6, apc_params, om, V, b)
-    nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params.cp_blasius)
+    r = pm.rotor_loads(apc8x6, params, om, V, b)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), params)
     Vs, Vc = V * np.sin(b), V * np.cos(b)
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0
-    T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, apc_params)
+    T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, params)
     assert conv.all()
-    static = pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0)
+    static = pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0)
     T0, Q0 = float(static.thrust), float(static.torque)
     np.testing.assert_allclose(r.thrust, T, rtol=0, atol=1e-7 * T0)
     np.testing.assert_allclose(r.drag, D, rtol=0, atol=1e-7 * T0)
@@ -138,10 +140,11 @@ def test_failed_solve_raises_or_flags_never_silent(apc8x6, apc_params, monkeypat
 
 
 def _fail_everything(*args):
-    T, D, Q, status = args[19], args[20], args[21], args[26]
+    # the last 11 arguments are the outputs T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals
+    T, D, Q, status = args[-11], args[-10], args[-9], args[-4]
     T[:] = D[:] = Q[:] = np.nan
     status[:] = 1 + 3 * 4 + 1  # annulus 3, no bracket
-    for a in args[22:26] + args[27:]:
+    for a in args[-8:-4] + args[-3:]:
         a[...] = 0
 
 
@@ -163,8 +166,8 @@ def _solve_annuli_python(nd, p, om, V, b):
     nr = nd.y.size
     v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
     _kernel.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, nd.theta, nd.sin_th, nd.cos_th,
-                                 nd.kre, nd.cfac, nd.mfac, nd.sinpsi, nd.sinpsi.size,
-                                 p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, False, v, code, nev, mult)
+                                 nd.sc, np.zeros(nr), nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.sinpsi.size,
+                                 *_model_constants(p), v, code, nev, mult)
     return v, code, nev
 
 
@@ -172,7 +175,7 @@ def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monke
     """The give-up paths (no bracket, no convergence) that feed SolverError's message."""
     from propmap.core import _kernel
 
-    nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params.cp_blasius)
+    nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params)
     om, V, b = 800.0, 10.0, 1.0
     v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
     r = pm.rotor_loads(apc8x6, apc_params, om, V, b, discretization=pm.Discretization(6, 8))

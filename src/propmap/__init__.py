@@ -4,7 +4,7 @@ Implements Gill & D'Andrea, "Propeller Thrust and Drag in Forward Flight", IEEE 
 (doi:10.1109/CCTA.2017.8062440). Units are SI throughout (rad, rad/s, m/s, N, N m).
 """
 
-from .core import (DEFAULT_DISCRETIZATION, PRESETS, Air, AirfoilParams, Discretization, HoverModel, Propeller,
+from .core import (DEFAULT_DISCRETIZATION, PRESETS, Air, AirfoilParams, CamberedParams, Discretization, HoverModel, Propeller,
                    RotorLoads, RotorWrench, SolverError, drag_coefficient, lift_coefficient, preset, rotor_loads,
                    rotor_wrench)
 from .io import catalogue, load_propeller, read_geometry, read_params, resolve_params, write_params
@@ -12,7 +12,7 @@ from .io import catalogue, load_propeller, read_geometry, read_params, resolve_p
 __version__ = "0.1.0"
 
 __all__ = [
-    "Air", "AirfoilParams", "PRESETS", "preset", "lift_coefficient", "drag_coefficient", "Propeller",
+    "Air", "AirfoilParams", "CamberedParams", "PRESETS", "preset", "lift_coefficient", "drag_coefficient", "Propeller",
     "HoverModel", "Discretization", "DEFAULT_DISCRETIZATION", "RotorLoads", "SolverError", "rotor_loads",
     "RotorWrench", "rotor_wrench", "catalogue", "load_propeller", "read_geometry", "read_params",
     "resolve_params", "write_params", "__version__",

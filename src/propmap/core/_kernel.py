@@ -7,7 +7,8 @@ moves from 0 in the direction of sign F(0): the equilibrium that a dynamic-inflo
 relaxation m dv/dt = F(v), started from rest, settles on. It is therefore always a
 stable root (F crosses zero downward in that direction). Concretely:
 
-1. v_m = momentum_scale(F(0)); step h = v_m / MARCH_STEPS.
+1. v_m = momentum_scale(F(0)) (with tip/hub loss, of F(0) / F_loss(v_m0) where v_m0 is
+   the loss-free scale); step h = v_m / MARCH_STEPS.
 2. March v_k = s k h, k = 1..MAX_MARCH, s = sign F(0), until F changes sign.
    (A fold narrower than h can be stepped over; the rule is thus "first sign change
    on this march", which is deterministic and reproducible by the NumPy reference.)
@@ -30,7 +31,8 @@ import numba
 import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
-from ._physics import make_element, momentum_scale, momentum_thrust
+from ._physics import (CAMBERED, GILL_SINCOS, cambered_annulus, inverse_sin_phi, make_cambered_element, make_element,
+                       make_loss_factor, make_prandtl, momentum_scale, momentum_thrust)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -50,22 +52,43 @@ _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 # polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
 _atan2 = _jit_inline(atan2_poly)
 _exp_sat = _jit_inline(exp_sat)
-_element = _jit_inline(make_element(_atan2, _exp_sat))
+_element_gill = _jit_inline(make_element(_atan2, _exp_sat))
+_element_cambered = _jit_inline(make_cambered_element(_atan2, _exp_sat))
+_prandtl = _jit_inline(make_prandtl(_atan2, _exp_sat))
+_loss_factor = _jit_inline(make_loss_factor(_prandtl))
+_inverse_sin_phi = _jit_inline(inverse_sin_phi)
 _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
+_cambered_annulus = _jit_inline(cambered_annulus)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
-              cl1, cl2, cd, a0, M, cd0, sincos):
-    """F(v) = dT_BET/dy - dT_BEMT/dy [N/m] on one annulus (eq 11)."""
+def _element(UT, UP, th, sth, cth, s0, s1, model, pk):
+    """Either model's element (scalar; tests). The kernel loops branch outside the element."""
+    if model == CAMBERED:
+        return _element_cambered(UT, UP, th, sth, cth, s0, s1, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5],
+                                 pk[6], pk[7])
+    return _element_gill(UT, UP, th, sth, cth, s0, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, mfac, floss, sinpsi, naz, model, pk):
+    """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v)."""
     acc = 0.0
     UP = Vc + v
-    for k in range(naz):
-        qT, _ = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, kre,
-                         cl1, cl2, cd, a0, M, cd0, sincos)
-        acc += qT
-    return cfac * acc / naz - _momentum_thrust(v, mfac, Vs, Vc)
+    # one loop per section model, so that each compiles to straight-line SIMD code
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for k in range(naz):
+            qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1,
+                                      a0, a1, a2, a3, a4, a5, a6, a7)
+            acc += qT
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for k in range(naz):
+            qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
+            acc += qT
+    return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vs, Vc)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -83,8 +106,8 @@ _REFINE = 4
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=_FM)
-def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
-                 cl1, cl2, cd, a0, M, cd0, sincos, v, code, nev, multiple):
+def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
+                 v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
     The annuli are independent, so they are solved in lockstep: each sweep evaluates
@@ -110,6 +133,10 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
     k = np.zeros(nr, dtype=np.int64)
     kb = np.zeros(nr, dtype=np.int64)
     cnt = np.zeros(nr, dtype=np.int64)
+    floss = np.ones(nr)
+    inv_sin = np.empty(nr)
+    tip = ct[0] >= 0.0  # the switches hold for all annuli
+    hub = ch[0] >= 0.0
     active = np.arange(nr)
     for j in range(nr):
         nev[j] = 0
@@ -117,10 +144,22 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
         code[j] = OK
     n_active = nr
     while n_active > 0:
+        if tip or hub:
+            # the loss factor at every trial first, in branch-free loops of their own over all
+            # annuli (contiguous, so they vectorise; inside each residual it is a long scalar
+            # chain). Annuli already solved are recomputed harmlessly.
+            for j in range(nr):
+                inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j])
+            if tip:
+                for j in range(nr):
+                    floss[j] = _prandtl(ct[j], inv_sin[j])
+            if hub:
+                for j in range(nr):
+                    floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
         for q in range(n_active):  # independent evaluations
             j = active[q]
-            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], kre[j], cfac[j], mfac[j],
-                             sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos)
+            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], cfac[j], mfac[j],
+                             floss[j], sinpsi, naz, model, pk)
             nev[j] += 1
         m = 0
         for q in range(n_active):
@@ -136,6 +175,11 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
                 else:
                     sgn[j] = 1.0 if fj > 0.0 else -1.0
                     vm = _momentum_scale(fj, mfac[j], Vs, Vc)
+                    if ct[j] >= 0.0 or ch[j] >= 0.0:
+                        # the loss factor F scales the momentum side: size the march with F at
+                        # the loss-free estimate (F falls with v, so this still undershoots)
+                        vm = _momentum_scale(fj, mfac[j] * _loss_factor(Vc + sgn[j] * vm, Om * y[j], ct[j], ch[j]),
+                                             Vs, Vc)
                     h[j] = vm / MARCH_STEPS
                     xtol[j] = XTOL * vm
                     ftol[j] = FTOL * abs(fj)
@@ -224,16 +268,14 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, sinpsi, naz,
-                  cl1, cl2, cd, a0, M, cd0, sincos, axial):
+def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, sinpsi, naz, model, pk, axial):
     """dT/dy, dD/dy, dQ/dy [N/m, N/m, N] at inflow v (eqs 5-7, azimuth-averaged)."""
     aT = 0.0
     aD = 0.0
     aQ = 0.0
     UP = Vc + v
-    for k in range(naz):
-        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, kre,
-                          cl1, cl2, cd, a0, M, cd0, sincos)
+    for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
+        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, model, pk)
         aT += qT
         aD += qH * sinpsi[k]
         aQ += qH
@@ -242,15 +284,18 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, kre, cfac, sinpsi, naz,
 
 
 @numba.njit(parallel=True, cache=True, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
-                cl1, cl2, cd, a0, M, cd0, sincos,
+def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cfac, mfac, ct, ch, sinpsi, model, pk, cam,
                 T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
     """Solve every operating point; results are written into the output arrays.
 
-    Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, kre, cfac, mfac shape (nr,);
-    sinpsi shape (naz,). Outputs T, D, Q, nmulti, nvrs, nevals, status shape (n,);
-    vi, dT, dD, dQ shape (n, nr). ``status[i]`` is 0 when every annulus converged,
-    else 1 + (first failing annulus index) * 4 + (annulus status code).
+    Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
+    (nr,); sinpsi shape (naz,). ``sc`` is the per-annulus section constant (gill2017: the
+    Blasius factor; cambered: ln(rho c / (mu Re_ref))); ``ct``, ``ch`` the tip- and
+    hub-loss constants (negative: off). ``model``, ``pk``: section model and constants
+    (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2) of the
+    cambered model. Outputs T, D, Q, nmulti, nvrs, nevals, status shape (n,); vi, dT,
+    dD, dQ shape (n, nr). ``status[i]`` is 0 when every annulus converged, else
+    1 + (first failing annulus index) * 4 + (annulus status code).
     """
     n = Om.shape[0]
     nr = y.shape[0]
@@ -262,8 +307,20 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
         code = np.empty(nr, dtype=np.int64)
         nev = np.empty(nr, dtype=np.int64)
         multiple = np.empty(nr, dtype=np.bool_)
-        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, kre, cfac, mfac, sinpsi, naz,
-                     cl1, cl2, cd, a0, M, cd0, sincos, v, code, nev, multiple)
+        s0 = np.empty(nr)
+        s1 = np.empty(nr)
+        if model == CAMBERED:
+            # Reynolds and Mach corrections, once per point and annulus
+            w2 = 0.5 * Vs[i] * Vs[i] + Vc[i] * Vc[i]
+            for j in range(nr):
+                s0[j], s1[j] = _cambered_annulus((Om[i] * y[j]) ** 2 + w2, sc[j], cam[4], cam[0], cam[1], cam[2],
+                                                 cam[3] != 0.0)
+        else:
+            for j in range(nr):
+                s0[j] = sc[j]
+                s1[j] = 0.0
+        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
+                     v, code, nev, multiple)
         Ti = 0.0
         Di = 0.0
         Qi = 0.0
@@ -284,8 +341,8 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, kre, cfac, mfac, sinpsi,
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], kre[j],
-                                    cfac[j], sinpsi, naz, cl1, cl2, cd, a0, M, cd0, sincos, axial)
+            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
+                                    cfac[j], sinpsi, naz, model, pk, axial)
             dT[i, j] = t
             dD[i, j] = d
             dQ[i, j] = q

@@ -12,32 +12,57 @@ from __future__ import annotations
 import numpy as np
 
 from . import _kernel as K
-from ._physics import element, momentum_scale, momentum_thrust
+from ._physics import (CAMBERED, cambered_annulus, element, loss_factor_numpy, momentum_scale,
+                       momentum_thrust)
 
 
-def solve_reference(om, Vs, Vc, nodes, p):
-    """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,))."""
-    om = np.asarray(om, float)[:, None, None]
+def solve_reference(om, Vs, Vc, nodes, p, air=None):
+    """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,)).
+
+    ``nodes`` from ``solver._nodes`` for the same parameters ``p`` and ``air``.
+    """
+    from .airfoil import Air
+    from .solver import _cambered_args, _model_constants
+
+    air = air or Air()
+    model, pk = _model_constants(p)
+    om1 = np.asarray(om, float)
+    om = om1[:, None, None]
     Vs3 = np.asarray(Vs, float)[:, None, None]
     y = nodes.y[None, :, None]
     sinpsi = nodes.sinpsi[None, None, :]
     UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
-    geo = (nodes.theta[None, :, None], nodes.sin_th[None, :, None], nodes.cos_th[None, :, None],
-           nodes.kre[None, :, None])
-    pars = (p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, p.lift_model == "sincos")
     cfac = nodes.cfac[None, :]
     mfac = nodes.mfac[None, :]
     Vs2 = np.asarray(Vs, float)[:, None]
     Vc2 = np.asarray(Vc, float)[:, None]
+    if model == CAMBERED:
+        cam = _cambered_args(p, air)
+        U2 = (om1[:, None] * nodes.y[None, :]) ** 2 + 0.5 * Vs2**2 + Vc2**2
+        s0, s1 = cambered_annulus(U2, nodes.sc[None, :], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0)
+    else:
+        s0, s1 = nodes.sc[None, :], 0.0 * nodes.sc[None, :]
+    geo = (nodes.theta[None, :, None], nodes.sin_th[None, :, None], nodes.cos_th[None, :, None],
+           s0[..., None], s1[..., None])
+    pars = (model, pk)
+    wy = om1[:, None] * nodes.y[None, :]
+    lossy = bool(np.any(nodes.ct >= 0) or np.any(nodes.ch >= 0))
 
     def F(v):  # v shape (n, nr)
         qT, _ = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
-        return cfac * qT.mean(axis=2) - momentum_thrust(v, mfac, Vs2, Vc2)
+        mom = momentum_thrust(v, mfac, Vs2, Vc2)
+        if lossy:
+            mom = mom * loss_factor_numpy(Vc2 + v, wy, nodes.ct[None, :], nodes.ch[None, :])
+        return cfac * qT.mean(axis=2) - mom
 
     with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
         F0 = F(np.zeros_like(cfac * Vs2))
         s = np.where(F0 >= 0, 1.0, -1.0)
-        h = momentum_scale(F0, mfac, Vs2, Vc2) / K.MARCH_STEPS
+        h = momentum_scale(F0, mfac, Vs2, Vc2)
+        if lossy:  # the kernel's march sizing with the loss factor at the loss-free scale
+            h = momentum_scale(F0, mfac * loss_factor_numpy(Vc2 + s * h, wy, nodes.ct[None, :], nodes.ch[None, :]),
+                               Vs2, Vc2)
+        h = h / K.MARCH_STEPS
         a = np.zeros_like(F0)
         fa = F0.copy()
         b = a.copy()

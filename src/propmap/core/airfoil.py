@@ -1,21 +1,35 @@
-"""Blade-section aerodynamics: the lift and drag polars of Gill & D'Andrea (2017).
+"""Blade-section aerodynamics: the polars of Gill & D'Andrea (2017) and a cambered polar.
 
-Reference
----------
-R. Gill and R. D'Andrea, "Propeller Thrust and Drag in Forward Flight",
-IEEE Conference on Control Technology and Applications (CCTA), 2017,
-doi:10.1109/CCTA.2017.8062440. Equations (3), (4), footnotes 1 and 2, Table I.
+Two section models, selected by the parameter record (``section_model``):
+
+* ``"gill2017"`` (:class:`AirfoilParams`): eqs (3) and (4) of R. Gill and R. D'Andrea,
+  "Propeller Thrust and Drag in Forward Flight", IEEE CCTA 2017,
+  doi:10.1109/CCTA.2017.8062440 (footnotes 1 and 2, Table I). Exactly the paper's model.
+* ``"cambered"`` (:class:`CamberedParams`): the lift and drag polar of Drela's XROTOR and
+  QPROP (linear lift from a zero-lift angle, a drag polar quadratic in C_L about the
+  minimum-drag lift coefficient, Reynolds scaling of drag (Re/Re_ref)^f), with lift and
+  CL_max also Reynolds-scaled, optional Prandtl-Glauert compressibility, and eq (3)'s
+  sigmoid blend into flat-plate post-stall behaviour (C_L = C_D90 sin a cos a,
+  C_D = C_D90 sin^2 a; Hoerner, Fluid-Dynamic Drag, 1965, ch. 3) so that 90 deg and
+  reverse flow stay physical. Sources: M. Drela, "QPROP Formulation", MIT, 2006;
+  M. Drela, XROTOR User Guide, 2003.
+
+Both records also carry the switches of Prandtl's tip and hub loss (``tip_loss``,
+``hub_loss``; ``_physics.loss_factor``).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, replace
+import numbers
+from dataclasses import asdict, dataclass, fields, replace
 
 import numpy as np
 
 __all__ = [
     "AirfoilParams",
+    "CamberedParams",
+    "SectionParams",
     "Air",
     "PRESETS",
     "preset",
@@ -28,11 +42,17 @@ LIFT_MODELS = ("sigmoid", "sincos")
 
 def _check_finite(name: str, value: float, *, low: float | None = None,
                   high: float | None = None, low_open: bool = False) -> float:
-    """Return ``float(value)`` or raise ValueError naming ``name`` and the valid range."""
+    """Return ``float(value)`` or raise ValueError naming ``name`` and the valid range.
+
+    Only real numbers are accepted: a bool or a string (``True``, ``"5.3"``) is an error,
+    not silently converted.
+    """
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} must be a number, got {value!r}")
     try:
         x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, got {value!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(f"{name} must be a finite number, got {value!r}") from None
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {x!r}")
     if low is not None and (x < low or (low_open and x == low)):
@@ -55,6 +75,9 @@ class Air:
         Density [kg/m^3], > 0. Default 1.225.
     mu : float
         Dynamic viscosity [Pa s], > 0. Default 1.983e-5.
+    speed_of_sound : float
+        [m/s], > 0; used by the cambered section's compressibility correction. Default
+        340.3 (ISA sea level).
 
     Raises
     ------
@@ -64,10 +87,11 @@ class Air:
 
     rho: float = 1.225
     mu: float = 1.983e-5
+    speed_of_sound: float = 340.3
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "rho", _check_finite("rho", self.rho, low=0.0, low_open=True))
-        object.__setattr__(self, "mu", _check_finite("mu", self.mu, low=0.0, low_open=True))
+        for name in ("rho", "mu", "speed_of_sound"):
+            object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0, low_open=True))
 
 
 @dataclass(frozen=True)
@@ -95,6 +119,9 @@ class AirfoilParams:
     lift_model : {"sigmoid", "sincos"}
         ``"sigmoid"``: eq (3). ``"sincos"``: footnote 1, ``C_L = cl2 sin a cos a``
         (``cl1``, ``alpha0`` and ``M`` are then unused).
+    tip_loss, hub_loss : bool
+        Prandtl's tip / hub loss factor in the momentum balance (not in the paper;
+        default False, so that the model is exactly the paper's).
 
     Raises
     ------
@@ -114,8 +141,13 @@ class AirfoilParams:
     cd0: float = 0.01
     cp_blasius: float = 1.328
     lift_model: str = "sigmoid"
+    tip_loss: bool = False
+    hub_loss: bool = False
+
+    section_model = "gill2017"
 
     def __post_init__(self) -> None:
+        _check_flags(self)
         for name in ("cl1", "cl2", "cd", "cd0", "cp_blasius"):
             object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0))
         object.__setattr__(self, "M", _check_finite("M", self.M, low=0.0, low_open=True))
@@ -133,6 +165,114 @@ class AirfoilParams:
     def as_dict(self) -> dict:
         """Return the fields as a plain dict (SI units, alpha0 in rad)."""
         return asdict(self)
+
+
+def _check_flags(p) -> None:
+    for f in fields(p):
+        if f.type in ("bool", bool) and not isinstance(getattr(p, f.name), (bool, np.bool_)):
+            raise ValueError(f"{f.name} must be true or false, got {getattr(p, f.name)!r}")
+        if f.type in ("bool", bool):
+            object.__setattr__(p, f.name, bool(getattr(p, f.name)))
+
+
+@dataclass(frozen=True)
+class CamberedParams:
+    """Parameters of the cambered section polar (``section_model = "cambered"``).
+
+    Attached flow (XROTOR / QPROP form, M. Drela):
+    ``C_L = a (alpha - alpha_L0)`` and
+    ``C_D = (cd_min + cd2 (C_L - cl_cdmin)^2) (Re / re_ref)^re_exp``,
+    with ``a = cl_alpha (Re / re_ref)^re_exp_lift`` (divided by sqrt(1 - Ma^2) when
+    ``compressibility``). Stall: eq (3)'s sigmoid of sharpness ``M`` switches, at the
+    angles ``cl_max / cl_alpha`` above and ``cl_min / cl_alpha`` below the zero-lift
+    line, to the flat plate ``C_L = cd90 sin a cos a``, ``C_D = cd90 sin^2 a`` (plus the
+    profile drag), which holds at 90 deg and in reverse flow.
+
+    Parameters
+    ----------
+    cl_alpha : float
+        Lift-curve slope at ``re_ref`` [1/rad], in (0, 20].
+    alpha_L0 : float
+        Zero-lift angle from the blade-angle datum [rad], in [-20, 10] deg (negative for
+        positive camber).
+    cl_max, cl_min : float
+        Stall limits of the attached lift line at ``re_ref`` [-]; cl_max in (0, 4],
+        cl_min in [-4, 0).
+    cd_min : float
+        Minimum profile drag at ``re_ref`` [-], in [0, 1].
+    cd2 : float
+        Curvature of the drag polar dC_D/dC_L^2 [-], in [0, 10].
+    cl_cdmin : float
+        C_L of minimum drag [-], in [-2, 3].
+    cd90 : float
+        Flat-plate drag at 90 deg [-], in (0, 4] (about 2 for a plate of infinite span).
+    re_ref : float
+        Reference chord Reynolds number [-], > 0.
+    re_exp : float
+        Reynolds exponent of the profile drag [-], in [-2, 1] (-0.5 laminar, -0.2
+        turbulent; QPROP's REexp).
+    re_exp_lift : float
+        Reynolds exponent of the lift slope and CL_max [-], in [-1, 1].
+    M : float
+        Stall-blend sharpness [1/rad], > 0.
+    compressibility : bool
+        Prandtl-Glauert factor on the lift.
+    tip_loss, hub_loss : bool
+        Prandtl's tip / hub loss factor in the momentum balance.
+
+    Raises
+    ------
+    ValueError
+        A value non-finite, of the wrong type or outside the range above (the message
+        names it and the range).
+    """
+
+    cl_alpha: float = 5.7
+    alpha_L0: float = math.radians(-4.0)
+    cl_max: float = 1.2
+    cl_min: float = -0.5
+    cd_min: float = 0.02
+    cd2: float = 0.05
+    cl_cdmin: float = 0.5
+    cd90: float = 1.98
+    re_ref: float = 1.0e5
+    re_exp: float = -0.5
+    re_exp_lift: float = 0.0
+    M: float = 20.0
+    compressibility: bool = True
+    tip_loss: bool = True
+    hub_loss: bool = False
+
+    section_model = "cambered"
+
+    #: valid range of every float field (low, high), SI units
+    RANGES = {
+        "cl_alpha": (0.0, 20.0), "alpha_L0": (math.radians(-20.0), math.radians(10.0)),
+        "cl_max": (0.0, 4.0), "cl_min": (-4.0, 0.0), "cd_min": (0.0, 1.0), "cd2": (0.0, 10.0),
+        "cl_cdmin": (-2.0, 3.0), "cd90": (0.0, 4.0), "re_ref": (0.0, 1e9), "re_exp": (-2.0, 1.0),
+        "re_exp_lift": (-1.0, 1.0), "M": (0.0, 1000.0),
+    }
+    _OPEN_LOW = ("cl_alpha", "cl_max", "cd90", "re_ref", "M")
+
+    def __post_init__(self) -> None:
+        _check_flags(self)
+        for name, (lo, hi) in self.RANGES.items():
+            x = _check_finite(name, getattr(self, name), low=lo, high=hi, low_open=name in self._OPEN_LOW)
+            object.__setattr__(self, name, x)
+        if self.cl_min == 0.0:
+            raise ValueError("cl_min must be in [-4, 0), got 0.0")
+
+    def replace(self, **changes) -> "CamberedParams":
+        """Return a copy with ``changes`` applied (validated again)."""
+        return replace(self, **changes)
+
+    def as_dict(self) -> dict:
+        """Return the fields as a plain dict (SI units, alpha_L0 in rad)."""
+        return asdict(self)
+
+
+#: either section model's parameter record
+SectionParams = AirfoilParams | CamberedParams
 
 
 #: Table I of Gill & D'Andrea (2017); constants from footnote 2.
@@ -189,32 +329,68 @@ def sigmoid_blend(alpha, alpha0: float, M: float):
     return 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
 
 
-def lift_coefficient(alpha, params: AirfoilParams):
-    """Section lift coefficient C_L(alpha), eq (3) or footnote 1.
+def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
+    """C_L, C_D of ``params`` at angle of attack ``alpha`` through the solver's own element.
+
+    With U_T = 1, U_P = 0 the element's outputs are exactly C_L and C_D (theta = alpha).
+    """
+    from . import _physics as ph
+    from .solver import _model_constants
+
+    alpha, reynolds, mach = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (alpha, reynolds, mach)))
+    model, pk = _model_constants(params)
+    if model == ph.CAMBERED:
+        ln_re = np.log(reynolds / params.re_ref)
+        s0 = params.cl_alpha * np.exp(params.re_exp_lift * ln_re)
+        if params.compressibility:
+            s0 = s0 / np.sqrt(1.0 - np.minimum(mach * mach, 0.81))
+        s1 = np.exp(params.re_exp * ln_re)
+    else:
+        # eq (4)'s Blasius term 2 * 1.02 c_p / sqrt(Re) = s0 / sqrt(U) with U = 1
+        s0, s1 = 2.0 * 1.02 * params.cp_blasius / np.sqrt(reynolds), 0.0
+    CL, CD = ph.element(1.0, 0.0, alpha, np.sin(alpha), np.cos(alpha), s0, s1, model, pk)
+    return CL, CD
+
+
+def _check_reynolds(reynolds) -> None:
+    if np.any(~(np.asarray(reynolds, dtype=float) > 0)):
+        raise ValueError("reynolds must be > 0 everywhere")
+
+
+def lift_coefficient(alpha, params: SectionParams, reynolds=None, mach=0.0):
+    """Section lift coefficient C_L(alpha): eq (3) / footnote 1, or the cambered polar.
 
     Parameters
     ----------
     alpha : float or array_like
-        Angle of attack [rad]; any shape.
-    params : AirfoilParams
+        Angle of attack from the blade-angle datum [rad]; any shape.
+    params : AirfoilParams or CamberedParams
+    reynolds : float or array_like, optional
+        Chord Reynolds number [-], > 0 (cambered only; default its ``re_ref``; eq 3 has
+        no Reynolds dependence).
+    mach : float or array_like
+        Section Mach number [-] (cambered with compressibility only).
 
     Returns
     -------
     ndarray
-        C_L [-], same shape as ``alpha``.
+        C_L [-], the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        If a Reynolds number is not positive.
     """
-    alpha = np.asarray(alpha, dtype=float)
-    post = params.cl2 * np.sin(alpha) * np.cos(alpha)
-    if params.lift_model == "sincos":
-        return post
-    s = sigmoid_blend(alpha, params.alpha0, params.M)
-    return (1.0 - s) * params.cl1 * alpha + s * post
+    if reynolds is None:
+        reynolds = getattr(params, "re_ref", 1e5)
+    _check_reynolds(reynolds)
+    return _section_cd_cl(alpha, reynolds, mach, params)[0]
 
 
-def drag_coefficient(alpha, reynolds, params: AirfoilParams):
-    """Section drag coefficient C_D(alpha, Re), eq (4).
+def drag_coefficient(alpha, reynolds, params: SectionParams, mach=0.0):
+    """Section drag coefficient C_D(alpha, Re): eq (4), or the cambered polar.
 
-    ``C_D = c_d sin^2(alpha) + 2 * 1.02 c_p / sqrt(Re) + c_d0``.
+    eq (4): ``C_D = c_d sin^2(alpha) + 2 * 1.02 c_p / sqrt(Re) + c_d0``.
 
     Parameters
     ----------
@@ -222,7 +398,10 @@ def drag_coefficient(alpha, reynolds, params: AirfoilParams):
         Angle of attack [rad].
     reynolds : float or array_like
         Chord Reynolds number rho U c / mu [-], > 0; broadcasts with ``alpha``.
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
+    mach : float or array_like
+        Section Mach number [-] (cambered with compressibility only: it changes C_L and
+        thereby the polar's C_D).
 
     Returns
     -------
@@ -234,8 +413,5 @@ def drag_coefficient(alpha, reynolds, params: AirfoilParams):
     ValueError
         If any Reynolds number is not positive.
     """
-    alpha = np.asarray(alpha, dtype=float)
-    reynolds = np.asarray(reynolds, dtype=float)
-    if np.any(~(reynolds > 0)):
-        raise ValueError("reynolds must be > 0 everywhere")
-    return params.cd * np.sin(alpha) ** 2 + 2.0 * 1.02 * params.cp_blasius / np.sqrt(reynolds) + params.cd0
+    _check_reynolds(reynolds)
+    return _section_cd_cl(alpha, reynolds, mach, params)[1]

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _kernel
-from .airfoil import Air, AirfoilParams
+from . import _physics as ph
+from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .geometry import Propeller
 
 __all__ = [
@@ -66,34 +67,70 @@ DEFAULT_DISCRETIZATION = Discretization()
 
 @dataclass(frozen=True)
 class _Nodes:
+    """Quadrature nodes and every per-annulus constant the kernel needs (read-only arrays).
+
+    ``sc``: section constant (gill2017: Blasius factor 2 * 1.02 c_p sqrt(mu/(rho c));
+    cambered: ln(rho c / (mu Re_ref))). ``ct``, ``ch``: tip- and hub-loss constants
+    (N_b/2)(R - y)/y and (N_b/2)(y - r_hub)/r_hub, -1 where that loss is off.
+    """
+
     y: np.ndarray
     w: np.ndarray
     theta: np.ndarray
     sin_th: np.ndarray
     cos_th: np.ndarray
-    kre: np.ndarray
+    sc: np.ndarray
     cfac: np.ndarray
     mfac: np.ndarray
+    ct: np.ndarray
+    ch: np.ndarray
     sinpsi: np.ndarray
 
 
+def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
+    """Section-model code and constant vector ``pk`` of the element (layout in _physics)."""
+    pk = np.zeros(ph.N_PK)
+    if isinstance(params, CamberedParams):
+        p = params
+        pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,
+                  p.cl_min / p.cl_alpha)
+        return ph.CAMBERED, pk
+    p = params
+    pk[:6] = (p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0)
+    return (ph.GILL_SINCOS if p.lift_model == "sincos" else ph.GILL_SIGMOID), pk
+
+
 @functools.lru_cache(maxsize=64)
-def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, cp_blasius: float) -> _Nodes:
+def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: SectionParams) -> _Nodes:
     x, wx = np.polynomial.legendre.leggauss(n_radial)
     half = 0.5 * (prop.radius - prop.r_hub)
     y = prop.r_hub + half * (x + 1.0)
     w = half * wx
     c = prop.chord_at(y)
     th = prop.theta_at(y)
-    with np.errstate(divide="ignore"):
-        kre = np.where(c > 0, 2.0 * 1.02 * cp_blasius * np.sqrt(air.mu / (air.rho * np.maximum(c, 1e-300))), 0.0)
+    cpos = np.maximum(c, 1e-300)
+    if isinstance(params, CamberedParams):
+        sc = np.log(air.rho * cpos / (air.mu * params.re_ref))
+    else:
+        sc = np.where(c > 0, 2.0 * 1.02 * params.cp_blasius * np.sqrt(air.mu / (air.rho * cpos)), 0.0)
+    half_b = 0.5 * prop.n_blades
+    ct = half_b * (prop.radius - y) / y if params.tip_loss else np.full(n_radial, -1.0)
+    ch = half_b * (y - prop.r_hub) / prop.r_hub if params.hub_loss else np.full(n_radial, -1.0)
     psi = -0.5 * np.pi + (np.arange(n_azimuth) + 0.5) * np.pi / n_azimuth
-    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), kre=kre,
-                 cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y,
+    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), sc=sc,
+                 cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y, ct=ct, ch=ch,
                  sinpsi=np.sin(psi))
     for a in vars(out).values():
         a.setflags(write=False)
     return out
+
+
+def _cambered_args(params: SectionParams, air: Air) -> np.ndarray:
+    """``cam`` argument of the kernel: (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2)."""
+    if not isinstance(params, CamberedParams):
+        return np.zeros(5)
+    return np.array([params.cl_alpha, params.re_exp, params.re_exp_lift, float(params.compressibility),
+                     1.0 / air.speed_of_sound**2])
 
 
 @dataclass(frozen=True)
@@ -220,7 +257,7 @@ def _as_array(name: str, value, low: float, high: float, *, low_open: bool, unit
 
 def rotor_loads(
     propeller: Propeller,
-    params: AirfoilParams,
+    params: SectionParams,
     omega,
     airspeed,
     incidence,
@@ -234,12 +271,15 @@ def rotor_loads(
     Hybrid BET/BEMT of Gill & D'Andrea (2017), Section II: for every radial node the
     induced inflow v_i solves dT_BET = dT_BEMT (eq 11, Glauert mass flow eq 10,
     root-selection rule in docs/solver.md), then eqs (13)-(15) are integrated over the
-    blade [r_hub, R] with Gauss-Legendre in r and midpoints in azimuth.
+    blade [r_hub, R] with Gauss-Legendre in r and midpoints in azimuth. The section
+    model is the paper's (eqs 3-4, :class:`AirfoilParams`) or the cambered polar
+    (:class:`CamberedParams`); with ``tip_loss``/``hub_loss`` Prandtl's factor F
+    multiplies the momentum side of eq (11), dT_BEMT = F 4 pi rho y v_i W.
 
     Parameters
     ----------
     propeller : Propeller
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
     omega : float or array_like
         Rotation rate Omega [rad/s], finite, in (0, 1e5].
     airspeed : float or array_like
@@ -282,7 +322,7 @@ def rotor_loads(
     Vc = np.ascontiguousarray(V1 * np.cos(b1))
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
 
-    nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params.cp_blasius)
+    nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
     n, nr = om1.size, nd.y.size
     T = np.empty(n)
     D = np.empty(n)
@@ -295,10 +335,9 @@ def rotor_loads(
     nmulti = np.empty(n, dtype=np.int64)
     nvrs = np.empty(n, dtype=np.int64)
     nev = np.empty(n, dtype=np.int64)
-    p = params
-    _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.kre,
-                        nd.cfac, nd.mfac, nd.sinpsi,
-                        p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0, p.lift_model == "sincos",
+    model, pk = _model_constants(params)
+    _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc,
+                        nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk, _cambered_args(params, air),
                         T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
