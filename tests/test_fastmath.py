@@ -30,10 +30,10 @@ def _exp_all(z, out):
 
 
 @numba.njit
-def _element_all(UT, UP, th, s0, s1, model, pk, qT, qH):
+def _element_all(UT, UP, th, s0, s1, s2, s3, model, pk, qT, qH):
     for i in range(UT.size):
-        qT[i], qH[i] = _kernel._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i],
-                                        model, pk)
+        qT[i], qH[i] = _kernel._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i], s2[i],
+                                        s3[i], model, pk)
 
 
 @numba.njit
@@ -95,10 +95,12 @@ def test_compiled_element_matches_numpy_element_in_every_flow_quadrant(params):
     th = rng.uniform(0.05, 0.8, n)
     s0 = rng.uniform(0.0, 0.02, n) if params.section_model == "gill2017" else rng.uniform(3.0, 7.0, n)
     s1 = rng.uniform(0.5, 2.0, n)
+    s2 = rng.uniform(0.5, 2.0, n)
+    s3 = rng.uniform(-0.05, 0.05, n)
     model, pk = _model_constants(params)
     qT, qH = np.empty(n), np.empty(n)
-    _element_all(UT, UP, th, s0, s1, model, pk, qT, qH)
-    rT, rH = element(UT, UP, th, np.sin(th), np.cos(th), s0, s1, model, pk)
+    _element_all(UT, UP, th, s0, s1, s2, s3, model, pk, qT, qH)
+    rT, rH = element(UT, UP, th, np.sin(th), np.cos(th), s0, s1, s2, s3, model, pk)
     scale = UT**2 + UP**2
     assert np.max(np.abs(qT - rT) / scale) < 1e-12
     assert np.max(np.abs(qH - rH) / scale) < 1e-12

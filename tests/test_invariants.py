@@ -38,7 +38,7 @@ def test_thrust_and_torque_continuous_in_incidence(apc8x6, apc_params):
     assert ok[: 360].all()
     assert np.max(dT[ok]) < 0.005 * T0
     assert np.max(dQ[ok]) < 0.005 * Q0
-    # in the vortex-ring state momentum theory is not predictive (NUMERICS.md); T may jump
+    # in the vortex-ring state momentum theory is not predictive (docs/numerics.md); T may jump
     # between root branches there but stays bounded
     assert np.max(dT) < 0.03 * T0
 

@@ -33,7 +33,7 @@ def _residual(nd, p, om, V, b, j, v):
     UT = om * nd.y[j] + Vs * nd.sinpsi[None, :]
     with np.errstate(all="ignore"):
         qT, _ = element(UT, (Vc + v)[:, None], nd.theta[j], nd.sin_th[j], nd.cos_th[j], nd.sc[j], 0.0,
-                        *_model_constants(p))
+                        0.0, 0.0, *_model_constants(p))
     return nd.cfac[j] * qT.mean(axis=1) - momentum_thrust(v, nd.mfac[j], Vs, Vc)
 
 
@@ -77,7 +77,7 @@ def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_para
 
 
 def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
-    """NUMERICS.md: with M = 50, hover at 8000 rpm has a fold near r/R = 0.345 (v_i 5.35 -> 8.19 m/s)."""
+    """docs/numerics.md: with M = 50, hover at 8000 rpm has a fold near r/R = 0.345 (v_i 5.35 -> 8.19 m/s)."""
     om = 8000 * RPM
     r48 = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0)
     jump = np.argmax(np.abs(np.diff(r48.v_i)))
@@ -166,7 +166,8 @@ def _solve_annuli_python(nd, p, om, V, b):
     nr = nd.y.size
     v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
     _kernel.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, nd.theta, nd.sin_th, nd.cos_th,
-                                 nd.sc, np.zeros(nr), nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.sinpsi.size,
+                                 nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi,
+                                 nd.sinpsi.size,
                                  *_model_constants(p), v, code, nev, mult)
     return v, code, nev
 

@@ -13,7 +13,7 @@ stable root (F crosses zero downward in that direction). Concretely:
    (A fold narrower than h can be stepped over; the rule is thus "first sign change
    on this march", which is deterministic and reproducible by the NumPy reference.)
 3. If no sign change after MAX_MARCH steps: double v until one appears (a root always
-   exists, NUMERICS.md "Root solve").
+   exists, docs/numerics.md "Root solve").
 4. Refine the bracket with the Illinois method to |dv| <= XTOL * v_m or
    |F| <= FTOL * |F(0)|.
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
@@ -63,16 +63,16 @@ _cambered_annulus = _jit_inline(cambered_annulus)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _element(UT, UP, th, sth, cth, s0, s1, model, pk):
+def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
     """Either model's element (scalar; tests). The kernel loops branch outside the element."""
     if model == CAMBERED:
-        return _element_cambered(UT, UP, th, sth, cth, s0, s1, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5],
+        return _element_cambered(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5],
                                  pk[6], pk[7])
     return _element_gill(UT, UP, th, sth, cth, s0, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, mfac, floss, sinpsi, naz, model, pk):
+def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, naz, model, pk):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v)."""
     acc = 0.0
     UP = Vc + v
@@ -80,7 +80,7 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, mfac, floss, sinpsi,
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
-            qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1,
+            qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
                                       a0, a1, a2, a3, a4, a5, a6, a7)
             acc += qT
     else:
@@ -106,7 +106,7 @@ _REFINE = 4
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=_FM)
-def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
+def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
                  v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
@@ -158,7 +158,8 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi
                     floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
         for q in range(n_active):  # independent evaluations
             j = active[q]
-            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], cfac[j], mfac[j],
+            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], cfac[j],
+                             mfac[j],
                              floss[j], sinpsi, naz, model, pk)
             nev[j] += 1
         m = 0
@@ -268,14 +269,14 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, sinpsi, naz, model, pk, axial):
+def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk, axial):
     """dT/dy, dD/dy, dQ/dy [N/m, N/m, N] at inflow v (eqs 5-7, azimuth-averaged)."""
     aT = 0.0
     aD = 0.0
     aQ = 0.0
     UP = Vc + v
     for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
-        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, model, pk)
+        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
         aT += qT
         aD += qH * sinpsi[k]
         aQ += qH
@@ -284,16 +285,16 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, cfac, sinpsi, naz, mod
 
 
 @numba.njit(parallel=True, cache=True, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cfac, mfac, ct, ch, sinpsi, model, pk, cam,
+def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam,
                 T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
     (nr,); sinpsi shape (naz,). ``sc`` is the per-annulus section constant (gill2017: the
-    Blasius factor; cambered: ln(rho c / (mu Re_ref))); ``ct``, ``ch`` the tip- and
-    hub-loss constants (negative: off). ``model``, ``pk``: section model and constants
-    (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2) of the
-    cambered model. Outputs T, D, Q, nmulti, nvrs, nevals, status shape (n,); vi, dT,
+    Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
+    the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
+    constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
+    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs T, D, Q, nmulti, nvrs, nevals, status shape (n,); vi, dT,
     dD, dQ shape (n, nr). ``status[i]`` is 0 when every annulus converged, else
     1 + (first failing annulus index) * 4 + (annulus status code).
     """
@@ -309,17 +310,22 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cfac, mfac, ct, ch, sinpsi, 
         multiple = np.empty(nr, dtype=np.bool_)
         s0 = np.empty(nr)
         s1 = np.empty(nr)
+        s2 = np.empty(nr)
+        s3 = np.empty(nr)
         if model == CAMBERED:
-            # Reynolds and Mach corrections, once per point and annulus
+            # Reynolds, Mach and rotation corrections, once per point and annulus
             w2 = 0.5 * Vs[i] * Vs[i] + Vc[i] * Vc[i]
             for j in range(nr):
-                s0[j], s1[j] = _cambered_annulus((Om[i] * y[j]) ** 2 + w2, sc[j], cam[4], cam[0], cam[1], cam[2],
-                                                 cam[3] != 0.0)
+                s0[j], s1[j], s2[j], s3[j] = _cambered_annulus((Om[i] * y[j]) ** 2 + w2, sc[j], cy2[j], cam[4],
+                                                               cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5], cam[6],
+                                                               cam[7])
         else:
             for j in range(nr):
                 s0[j] = sc[j]
                 s1[j] = 0.0
-        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
+                s2[j] = 0.0
+                s3[j] = 0.0
+        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
                      v, code, nev, multiple)
         Ti = 0.0
         Di = 0.0
@@ -341,8 +347,8 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cfac, mfac, ct, ch, sinpsi, 
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
-                                    cfac[j], sinpsi, naz, model, pk, axial)
+            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
+                                    s3[j], cfac[j], sinpsi, naz, model, pk, axial)
             dT[i, j] = t
             dD[i, j] = d
             dQ[i, j] = q

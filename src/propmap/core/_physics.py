@@ -109,7 +109,7 @@ def make_element(atan2, exp_sat):
 def make_cambered_element(atan2, exp_sat):
     """Return the cambered-polar element using the given arctangent and saturated exp."""
 
-    def element_cambered(UT, UP, theta, sin_th, cos_th, a, cdf, alpha_L0, cd90, cd_min, cd2, cl_cdmin, M,
+    def element_cambered(UT, UP, theta, sin_th, cos_th, a, cdf, g, dal0, alpha_L0, cd90, cd_min, cd2, cl_cdmin, M,
                          a_stall_pos, a_stall_neg):
         """Per-unit-span section loads of the cambered polar, without the factor 0.5 rho c.
 
@@ -121,6 +121,11 @@ def make_cambered_element(atan2, exp_sat):
             Lift slope of the annulus (Reynolds/Mach-corrected) [1/rad].
         cdf : float or ndarray
             Reynolds factor of the profile drag [-].
+        g : float or ndarray
+            Factor on the stall angles of the annulus (Reynolds number, rotational stall
+            delay) [-].
+        dal0 : float or ndarray
+            Reynolds shift of the zero-lift angle of the annulus [rad].
         alpha_L0, cd90, cd_min, cd2, cl_cdmin, M : float
             airfoil.CamberedParams.
         a_stall_pos, a_stall_neg : float
@@ -133,13 +138,13 @@ def make_cambered_element(atan2, exp_sat):
         """
         U = np.sqrt(UT * UT + UP * UP + 1e-300)
         # angle from the zero-lift line, wrapped to (-pi, pi]
-        ae = theta - alpha_L0 - atan2(UP, UT)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
         ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
         sin_a = (sin_th * UT - cos_th * UP) / U
         cos_a = (cos_th * UT + sin_th * UP) / U
         # eq (3)'s blend, with separate positive and negative stall angles
-        p = exp_sat(M * (ae - a_stall_pos))
-        q = exp_sat(-M * (ae - a_stall_neg))
+        p = exp_sat(M * (ae - g * a_stall_pos))
+        q = exp_sat(-M * (ae - g * a_stall_neg))
         s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
         cl_att = a * ae
         dcl = cl_att - cl_cdmin
@@ -155,15 +160,16 @@ element_gill = make_element(np.arctan2, exp_sat_numpy)
 element_cambered = make_cambered_element(np.arctan2, exp_sat_numpy)
 
 
-def element(UT, UP, theta, sin_th, cos_th, s0, s1, model, pk):
-    """Either model's element (NumPy): ``s0, s1`` per-annulus values, ``pk`` constants.
+def element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk):
+    """Either model's element (NumPy): ``s0, s1, s2`` per-annulus values, ``pk`` constants.
 
-    gill2017: s0 = the Blasius factor kre, s1 unused, pk = (cl1, cl2, cd, alpha0, M, cd0).
-    cambered: s0 = lift slope, s1 = drag factor, pk = (alpha_L0, cd90, cd_min, cd2,
-    cl_cdmin, M, stall angle +, stall angle -). Returns (qT, qH) [m^2/s^2].
+    gill2017: s0 = the Blasius factor kre, s1, s2 unused, pk = (cl1, cl2, cd, alpha0, M,
+    cd0). cambered: s0 = lift slope, s1 = drag factor, s2 = stall-angle factor, s3 =
+    zero-lift shift, pk = (alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, stall angle +, stall angle -).
+    Returns (qT, qH) [m^2/s^2].
     """
     if model == CAMBERED:
-        return element_cambered(UT, UP, theta, sin_th, cos_th, s0, s1, *pk[:8])
+        return element_cambered(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, *pk[:8])
     return element_gill(UT, UP, theta, sin_th, cos_th, s0, *pk[:6], model == GILL_SINCOS)
 
 
@@ -256,8 +262,9 @@ def momentum_scale(B0, mom_fac, Vs, Vc):
     return np.maximum(k / np.sqrt(Vs * Vs + Vc * Vc + k + 1e-300), 1e-6)
 
 
-def cambered_annulus(U2, ln_re_c, mach2_c, cl_alpha, re_exp, re_exp_lift, compressible):
-    """Per-annulus Reynolds- and Mach-corrected lift slope and drag factor of the cambered section.
+def cambered_annulus(U2, ln_re_c, cy2, mach2_c, cl_alpha, re_exp, re_exp_lift, compressible, re_exp_stall,
+                     stall_delay, alpha_L0_re):
+    """Per-annulus Reynolds-, Mach- and rotation-corrected constants of the cambered section.
 
     The Reynolds number of an annulus is rho U c / mu with U^2 = (Omega y)^2 +
     (V sin beta)^2 / 2 + (V cos beta)^2, the azimuth mean of the section's U^2 without
@@ -270,22 +277,26 @@ def cambered_annulus(U2, ln_re_c, mach2_c, cl_alpha, re_exp, re_exp_lift, compre
         Mean square section speed [m^2/s^2].
     ln_re_c : float or ndarray
         ln(rho c / (mu Re_ref)) [ln(s/m)], so that ln(Re / Re_ref) = ln_re_c + ln U.
+    cy2 : float or ndarray
+        (c / y)^2 of the annulus [-].
     mach2_c : float
         1 / a^2 [s^2/m^2] (a the speed of sound).
-    cl_alpha, re_exp, re_exp_lift : float
+    cl_alpha, re_exp, re_exp_lift, re_exp_stall, stall_delay, alpha_L0_re : float
         Section parameters (airfoil.CamberedParams).
     compressible : bool
         Apply the Prandtl-Glauert factor 1/sqrt(1 - Ma^2) to the lift (Ma capped at 0.9).
 
     Returns
     -------
-    a, cdf
-        Lift slope cl_alpha (Re/Re_ref)^re_exp_lift / sqrt(1 - Ma^2) [1/rad] and drag
-        factor (Re/Re_ref)^re_exp [-]. The stall angles cl_max / cl_alpha and
-        cl_min / cl_alpha stay fixed, so CL_max scales with the lift slope.
+    a, cdf, g, dal0
+        Lift slope cl_alpha (Re/Re_ref)^re_exp_lift / sqrt(1 - Ma^2) [1/rad], drag factor
+        (Re/Re_ref)^re_exp [-], stall-angle factor
+        (Re/Re_ref)^re_exp_stall (1 + stall_delay (c/y)^2) [-] and zero-lift shift
+        alpha_L0_re ln(Re/Re_ref) [rad].
     """
     ln_re = ln_re_c + 0.5 * np.log(U2 + 1e-300)
     a = cl_alpha * np.exp(re_exp_lift * ln_re)
     if compressible:
         a = a / np.sqrt(1.0 - np.minimum(U2 * mach2_c, 0.81))
-    return a, np.exp(re_exp * ln_re)
+    return (a, np.exp(re_exp * ln_re), np.exp(re_exp_stall * ln_re) * (1.0 + stall_delay * cy2),
+            alpha_L0_re * ln_re)

@@ -39,11 +39,13 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     if model == CAMBERED:
         cam = _cambered_args(p, air)
         U2 = (om1[:, None] * nodes.y[None, :]) ** 2 + 0.5 * Vs2**2 + Vc2**2
-        s0, s1 = cambered_annulus(U2, nodes.sc[None, :], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0)
+        s0, s1, s2, s3 = cambered_annulus(U2, nodes.sc[None, :], nodes.cy2[None, :], cam[4], cam[0], cam[1],
+                                          cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
     else:
-        s0, s1 = nodes.sc[None, :], 0.0 * nodes.sc[None, :]
+        s0 = nodes.sc[None, :]
+        s1 = s2 = s3 = 0.0 * s0
     geo = (nodes.theta[None, :, None], nodes.sin_th[None, :, None], nodes.cos_th[None, :, None],
-           s0[..., None], s1[..., None])
+           s0[..., None], s1[..., None], s2[..., None], s3[..., None])
     pars = (model, pk)
     wy = om1[:, None] * nodes.y[None, :]
     lossy = bool(np.any(nodes.ct >= 0) or np.any(nodes.ch >= 0))

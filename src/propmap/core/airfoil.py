@@ -213,6 +213,14 @@ class CamberedParams:
         turbulent; QPROP's REexp).
     re_exp_lift : float
         Reynolds exponent of the lift slope and CL_max [-], in [-1, 1].
+    re_exp_stall : float
+        Reynolds exponent of the stall angles [-], in [-1, 1].
+    stall_delay : float
+        Rotational stall delay: the stall angles grow by the factor
+        1 + stall_delay (c/r)^2 [-], in [0, 20].
+    alpha_L0_re : float
+        Reynolds dependence of the zero-lift angle d alpha_L0 / d ln(Re) [rad], in
+        [-5, 5] deg (positive: less effective camber at low Re).
     M : float
         Stall-blend sharpness [1/rad], > 0.
     compressibility : bool
@@ -238,6 +246,9 @@ class CamberedParams:
     re_ref: float = 1.0e5
     re_exp: float = -0.5
     re_exp_lift: float = 0.0
+    re_exp_stall: float = 0.0
+    stall_delay: float = 0.0
+    alpha_L0_re: float = 0.0
     M: float = 20.0
     compressibility: bool = True
     tip_loss: bool = True
@@ -250,7 +261,8 @@ class CamberedParams:
         "cl_alpha": (0.0, 20.0), "alpha_L0": (math.radians(-20.0), math.radians(10.0)),
         "cl_max": (0.0, 4.0), "cl_min": (-4.0, 0.0), "cd_min": (0.0, 1.0), "cd2": (0.0, 10.0),
         "cl_cdmin": (-2.0, 3.0), "cd90": (0.0, 4.0), "re_ref": (0.0, 1e9), "re_exp": (-2.0, 1.0),
-        "re_exp_lift": (-1.0, 1.0), "M": (0.0, 1000.0),
+        "re_exp_lift": (-1.0, 1.0), "re_exp_stall": (-1.0, 1.0), "stall_delay": (0.0, 20.0),
+        "alpha_L0_re": (math.radians(-5.0), math.radians(5.0)), "M": (0.0, 1000.0),
     }
     _OPEN_LOW = ("cl_alpha", "cl_max", "cd90", "re_ref", "M")
 
@@ -345,10 +357,12 @@ def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
         if params.compressibility:
             s0 = s0 / np.sqrt(1.0 - np.minimum(mach * mach, 0.81))
         s1 = np.exp(params.re_exp * ln_re)
+        s2 = np.exp(params.re_exp_stall * ln_re)
+        s3 = params.alpha_L0_re * ln_re
     else:
         # eq (4)'s Blasius term 2 * 1.02 c_p / sqrt(Re) = s0 / sqrt(U) with U = 1
-        s0, s1 = 2.0 * 1.02 * params.cp_blasius / np.sqrt(reynolds), 0.0
-    CL, CD = ph.element(1.0, 0.0, alpha, np.sin(alpha), np.cos(alpha), s0, s1, model, pk)
+        s0, s1, s2, s3 = 2.0 * 1.02 * params.cp_blasius / np.sqrt(reynolds), 0.0, 0.0, 0.0
+    CL, CD = ph.element(1.0, 0.0, alpha, np.sin(alpha), np.cos(alpha), s0, s1, s2, s3, model, pk)
     return CL, CD
 
 

@@ -34,7 +34,7 @@ class Propeller:
     r : array_like, shape (k,)
         Radii of the measured blade stations [m], strictly increasing, k >= 2,
         within (0, radius]. The blade is taken to start at ``r[0]`` (the paper's
-        integral over [0, R] is replaced by [r_hub, R], NUMERICS.md item 5).
+        integral over [0, R] is replaced by [r_hub, R], docs/numerics.md item 5).
     chord : array_like, shape (k,)
         Chord c at the stations [m], >= 0.
     theta : array_like, shape (k,)

@@ -2,7 +2,7 @@
 
 Gill & D'Andrea (2017), Section II: eqs (1)-(7) blade elements, (10) Glauert momentum,
 (11) per-annulus inflow, (13)-(15) integration. Conventions follow
-``shared/reference/NUMERICS.md`` and are listed in docs/conventions.md.
+docs/numerics.md and are listed in docs/conventions.md.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ import functools
 import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from . import _kernel
@@ -42,7 +43,7 @@ class Discretization:
     n_azimuth : int
         Midpoint nodes on psi in [-pi/2, pi/2], in [2, 1000]. Every integrand depends on
         psi only through sin(psi), so n midpoints there equal a 2n-point periodic
-        trapezoid rule on [0, 2 pi) (spectral convergence, NUMERICS.md). One node
+        trapezoid rule on [0, 2 pi) (spectral convergence, docs/numerics.md). One node
         (psi = 0) would see no in-plane flow at all, hence the minimum 2. Multiples
         of 8 run fastest (SIMD lanes; benchmarks/README.md).
 
@@ -64,13 +65,17 @@ class Discretization:
 
 DEFAULT_DISCRETIZATION = Discretization()
 
+#: batches smaller than this run on one thread: starting the parallel region costs more
+#: than it saves for them on a loaded machine (benchmarks/README.md)
+PARALLEL_MIN_POINTS = 32
+
 
 @dataclass(frozen=True)
 class _Nodes:
     """Quadrature nodes and every per-annulus constant the kernel needs (read-only arrays).
 
     ``sc``: section constant (gill2017: Blasius factor 2 * 1.02 c_p sqrt(mu/(rho c));
-    cambered: ln(rho c / (mu Re_ref))). ``ct``, ``ch``: tip- and hub-loss constants
+    cambered: ln(rho c / (mu Re_ref))); ``cy2`` = (c/y)^2. ``ct``, ``ch``: tip- and hub-loss constants
     (N_b/2)(R - y)/y and (N_b/2)(y - r_hub)/r_hub, -1 where that loss is off.
     """
 
@@ -80,6 +85,7 @@ class _Nodes:
     sin_th: np.ndarray
     cos_th: np.ndarray
     sc: np.ndarray
+    cy2: np.ndarray
     cfac: np.ndarray
     mfac: np.ndarray
     ct: np.ndarray
@@ -117,7 +123,7 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     ct = half_b * (prop.radius - y) / y if params.tip_loss else np.full(n_radial, -1.0)
     ch = half_b * (y - prop.r_hub) / prop.r_hub if params.hub_loss else np.full(n_radial, -1.0)
     psi = -0.5 * np.pi + (np.arange(n_azimuth) + 0.5) * np.pi / n_azimuth
-    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), sc=sc,
+    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), sc=sc, cy2=(c / y) ** 2,
                  cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y, ct=ct, ch=ch,
                  sinpsi=np.sin(psi))
     for a in vars(out).values():
@@ -126,11 +132,12 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
 
 
 def _cambered_args(params: SectionParams, air: Air) -> np.ndarray:
-    """``cam`` argument of the kernel: (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2)."""
+    """``cam`` argument of the kernel: (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
+    re_exp_stall, stall_delay, alpha_L0_re)."""
     if not isinstance(params, CamberedParams):
-        return np.zeros(5)
+        return np.zeros(8)
     return np.array([params.cl_alpha, params.re_exp, params.re_exp_lift, float(params.compressibility),
-                     1.0 / air.speed_of_sound**2])
+                     1.0 / air.speed_of_sound**2, params.re_exp_stall, params.stall_delay, params.alpha_L0_re])
 
 
 @dataclass(frozen=True)
@@ -287,7 +294,7 @@ def rotor_loads(
     incidence : float or array_like
         beta [rad] in [0, pi]: the angle between the freestream seen by the disk
         and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
-        NUMERICS.md item 1. Irrelevant when V = 0.
+        docs/numerics.md item 1. Irrelevant when V = 0.
     air : Air, optional
         Density and viscosity; footnote 2 values by default.
     discretization : Discretization, optional
@@ -336,9 +343,16 @@ def rotor_loads(
     nvrs = np.empty(n, dtype=np.int64)
     nev = np.empty(n, dtype=np.int64)
     model, pk = _model_constants(params)
-    _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc,
-                        nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk, _cambered_args(params, air),
-                        T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
+    threads = numba.get_num_threads()
+    if n < PARALLEL_MIN_POINTS and threads > 1:
+        numba.set_num_threads(1)  # per calling thread; restored below
+    try:
+        _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2,
+                            nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk, _cambered_args(params, air),
+                            T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
+    finally:
+        if numba.get_num_threads() != threads:
+            numba.set_num_threads(threads)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
         i = int(np.argmax(~converged))
