@@ -29,6 +29,7 @@ __all__ = [
     "read_uiuc_sweep",
     "StaticRun",
     "Sweep",
+    "looks_like_uiuc",
 ]
 
 
@@ -40,32 +41,62 @@ class MeasurementFileError(ValueError):
     """A measurement file is malformed; the message names the file and the problem."""
 
 
-def _read_table(path: Path, expected: list[str], error) -> np.ndarray:
+_META_RE = re.compile(r"^\s*([A-Za-z][A-Za-z0-9 _./()-]*?)\s*[=:]\s*([-+0-9.eE]+)\s*$")
+
+
+def _read_table(path: Path, expected: list[str], error, *, with_meta: bool = False):
+    """Numeric rows of a whitespace table whose header starts with ``expected``.
+
+    Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
+    ``RPM average = 4042``) are metadata, returned with ``with_meta``; any other line
+    that is not numeric is an error naming the file and the line.
+    """
     try:
-        lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
+        raw = path.read_bytes()
     except OSError as exc:
         raise error(f"{path}: cannot read ({exc.strerror})") from None
-    lines = [ln for ln in lines if ln.strip()]
-    if not lines:
-        raise error(f"{path}: empty file")
-    header = lines[0].split()
-    if [h.lower() for h in header[: len(expected)]] != [e.lower() for e in expected]:
-        raise error(f"{path}: expected columns {' '.join(expected)}, found header {' '.join(header)!r}")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = raw.decode("latin-1")
+    lines = text.splitlines()
+    meta: dict[str, float] = {}
+    want = [e.lower() for e in expected]
+    start = None
+    for k, ln in enumerate(lines):
+        m = _META_RE.match(ln)
+        if m:
+            meta[m.group(1).strip()] = float(m.group(2))
+            continue
+        if [h.lower() for h in ln.split()[: len(expected)]] == want:
+            start = k
+            break
+    if start is None:
+        first = next((ln.strip() for ln in lines if ln.strip()), "")
+        if not first:
+            raise error(f"{path}: empty file")
+        raise error(f"{path}: expected columns {' '.join(expected)}, found header {first!r}")
     rows = []
-    for k, ln in enumerate(lines[1:], start=2):
+    for k, ln in enumerate(lines[start + 1:], start=start + 2):
+        if not ln.strip():
+            continue
+        m = _META_RE.match(ln)
+        if m:
+            meta[m.group(1).strip()] = float(m.group(2))
+            continue
         parts = ln.split()
         if len(parts) < len(expected):
             raise error(f"{path}, line {k}: expected {len(expected)} columns, found {len(parts)}")
         try:
             rows.append([float(x) for x in parts[: len(expected)]])
         except ValueError:
-            raise error(f"{path}, line {k}: non-numeric value in {ln.strip()!r}") from None
+            raise error(f"{path}, line {k}: non-numeric value in {ln.strip()[:80]!r}") from None
     if not rows:
         raise error(f"{path}: no data rows")
     data = np.array(rows)
     if not np.all(np.isfinite(data)):
         raise error(f"{path}: non-finite value")
-    return data
+    return (data, meta) if with_meta else data
 
 
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)")
@@ -249,18 +280,43 @@ def read_uiuc_static(path) -> StaticRun:
 def read_uiuc_sweep(path) -> Sweep:
     """Read a UIUC wind-tunnel file ``<fam>_<D>x<P>_<run>_<RPM>.txt`` (``J CT CP eta``).
 
+    The rotation rate is a ``RPM average = N`` line of the file when it has one (the
+    measured mean), else the nominal rpm at the end of the file name. Other header and
+    ``key = value`` lines are ignored.
+
     Raises
     ------
     MeasurementFileError
-        Bad columns or no nominal rpm in the name.
+        Bad columns, or no rpm in the file or at the end of its name.
     """
     path = Path(path)
-    d = _read_table(path, ["J", "CT", "CP", "eta"], MeasurementFileError)
+    d, meta = _read_table(path, ["J", "CT", "CP", "eta"], MeasurementFileError, with_meta=True)
     parts = path.stem.split("_")
-    try:
-        rpm = float(parts[-1])
-    except (ValueError, IndexError):
-        raise MeasurementFileError(f"{path}: no nominal rpm at the end of the file name") from None
+    rpm = next((v for k, v in meta.items() if k.lower().replace(" ", "") in ("rpmaverage", "averagerpm", "rpm")), None)
+    if rpm is None:
+        try:
+            rpm = float(parts[-1])
+        except (ValueError, IndexError):
+            raise MeasurementFileError(f"{path}: no rpm: neither an 'RPM average = N' line nor a nominal rpm at "
+                                       "the end of the file name (<fam>_<D>x<P>_<run>_<RPM>.txt)") from None
     if not (math.isfinite(rpm) and rpm > 0):
-        raise MeasurementFileError(f"{path}: nominal rpm must be > 0")
-    return Sweep(parts[-2], rpm, d[:, 0], d[:, 1], d[:, 2], d[:, 3], f"UIUC Propeller Data Site, {path.name}")
+        raise MeasurementFileError(f"{path}: rpm must be > 0, got {rpm!r}")
+    run = parts[-2] if len(parts) >= 2 else path.stem
+    return Sweep(run, rpm, d[:, 0], d[:, 1], d[:, 2], d[:, 3], f"UIUC Propeller Data Site, {path.name}")
+
+
+def looks_like_uiuc(path) -> bool:
+    """Whether ``path`` is a UIUC-format static (``RPM CT CP``) or wind-tunnel (``J CT CP eta``) file.
+
+    Reads at most the first 64 KiB; False for anything unreadable.
+    """
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(65536).decode("latin-1")
+    except OSError:
+        return False
+    for ln in head.splitlines()[:50]:
+        words = [w.lower() for w in ln.split()]
+        if words[:3] == ["rpm", "ct", "cp"] or words[:4] == ["j", "ct", "cp", "eta"]:
+            return True
+    return False

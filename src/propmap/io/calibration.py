@@ -1,0 +1,190 @@
+"""The shipped calibration: the generic cambered parameter set and per-propeller sets.
+
+``data/calibration.json`` is written by ``tools/calibrate_catalogue.py`` from the bundled
+UIUC measurements (Brandt & Selig, AIAA 2011-1255; see data/CITATION.md):
+
+* ``generic``: one cambered parameter set fitted jointly to every catalogue propeller
+  (:func:`propmap.identify.fit_loads_joint`). The default for geometry files and for
+  propellers without measurements (blind prediction).
+* ``generic_folds``: the same joint fit on each half of the catalogue, so that a
+  propeller can be predicted by a generic set that never saw its data (validation).
+* ``population``: the covariance of the parameters fitted to each catalogue propeller
+  and their median rms residual: the fits' population prior (identify.FitOptions), also
+  per half of the catalogue.
+* ``propellers``: for every catalogue propeller with measurements, the parameters fitted
+  to all its bundled data, starting from ``generic``, with the fit's rms errors. The
+  default for that propeller.
+
+Each set is stored as its record's fields in SI units (:func:`params_to_si`, angles in
+radians, ``section_model`` added), so that it reloads to the identical record (a
+degree-radian round trip would change the last bit of an angle).
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+from dataclasses import dataclass
+from importlib import resources
+
+from dataclasses import asdict
+
+from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
+
+__all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
+           "population", "params_to_si", "params_from_si", "GENERIC"]
+
+#: name of the generic set (``--params generic``)
+GENERIC = "generic"
+
+
+@dataclass(frozen=True)
+class Calibration:
+    """One shipped parameter set.
+
+    Attributes
+    ----------
+    params : SectionParams
+    air : Air
+    name : str
+        ``"generic"`` or the propeller's catalogue name.
+    rms_ct, rms_cp : float
+        The fit's rms |dCT| / static CT and |dCP| / static CP over the data it was
+        fitted to [-] (in-sample).
+    n_points : int
+        Measured points it was fitted to.
+    source : str
+        What it was fitted to (data and command).
+    """
+
+    params: SectionParams
+    air: Air
+    name: str
+    rms_ct: float
+    rms_cp: float
+    n_points: int
+    source: str
+
+
+def params_to_si(params: SectionParams) -> dict:
+    """The record's fields (SI, angles in rad) plus ``section_model``: exact in JSON."""
+    return {"section_model": params.section_model, **asdict(params)}
+
+
+def params_from_si(d: dict) -> SectionParams:
+    """Inverse of :func:`params_to_si`.
+
+    Raises
+    ------
+    ValueError
+        Unknown section model or invalid fields.
+    """
+    d = dict(d)
+    model = d.pop("section_model", "gill2017")
+    record = {"gill2017": AirfoilParams, "cambered": CamberedParams}.get(model)
+    if record is None:
+        raise ValueError(f"unknown section_model {model!r}")
+    return record(**d)
+
+
+def _entry(name: str, d: dict, source: str) -> Calibration:
+    try:
+        params = params_from_si(d["params"])
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"calibration.json [{name}]: {exc}") from None
+    return Calibration(params, Air(), name, float(d["rms_ct"]), float(d["rms_cp"]), int(d["n_points"]), source)
+
+
+@functools.lru_cache(maxsize=1)
+def calibration() -> dict:
+    """The shipped calibration: ``{"generic": Calibration, "propellers": {name: Calibration}, ...}``.
+
+    Raises
+    ------
+    ValueError
+        The packaged file is malformed (an installation problem).
+    """
+    raw = json.loads((resources.files("propmap") / "data" / "calibration.json").read_text(encoding="utf-8"))
+    return {
+        "generic": _entry(GENERIC, raw["generic"], raw["generic"]["source"]),
+        "generic_folds": [(_entry(f"generic fold {k}", d, raw["generic"]["source"]), frozenset(d["propellers"]),
+                           d.get("population"))
+                          for k, d in enumerate(raw.get("generic_folds", []))],
+        "population": raw.get("population"),
+        "propellers": {n: _entry(n, d, raw["propeller_source"]) for n, d in raw["propellers"].items()},
+        "citation": raw["citation"],
+        "created_by": raw["created_by"],
+    }
+
+
+def generic_params() -> SectionParams:
+    """The generic cambered set fitted jointly to the catalogue (blind-prediction default)."""
+    return calibration()["generic"].params
+
+
+def generic_without(name: str) -> tuple[SectionParams, str]:
+    """A generic set fitted without propeller ``name``'s data, and its label.
+
+    The fold of ``generic_folds`` that does not contain ``name``; for a propeller outside
+    the catalogue, the full generic set (which never saw it either).
+    """
+    for entry, members, _ in calibration()["generic_folds"]:
+        if name not in members:
+            return entry.params, entry.name
+    return generic_params(), GENERIC
+
+
+def population(without: str | None = None) -> dict:
+    """Statistics of the per-propeller fits: the fits' population prior.
+
+    Parameters
+    ----------
+    without : str, optional
+        A catalogue propeller: the statistics of the catalogue half that excludes it.
+
+    Returns
+    -------
+    dict
+        ``names`` (the parameters), ``covariance`` (ndarray, SI units, angles in rad),
+        ``sigma_data`` (median rms residual of the per-propeller fits, in fit_loads'
+        normalisation), ``source``.
+
+    Raises
+    ------
+    ValueError
+        The shipped calibration has no population statistics.
+    """
+    import numpy as np
+
+    cal = calibration()
+    raw = cal["population"]
+    if without is not None:
+        for _, members, pop in cal["generic_folds"]:
+            if without not in members and pop is not None:
+                raw = pop
+                break
+    if raw is None:
+        raise ValueError("the shipped calibration has no population statistics (run tools/calibrate_catalogue.py)")
+    return {"names": list(raw["names"]), "covariance": np.asarray(raw["covariance"], float),
+            "sigma_data": float(raw["sigma_data"]), "source": raw["source"]}
+
+
+def calibrated(name: str) -> Calibration | None:
+    """The calibrated set of catalogue propeller ``name``, or None if it has none."""
+    return calibration()["propellers"].get(name)
+
+
+def default_params(name: str) -> tuple[SectionParams, Air, str]:
+    """The parameters propmap uses for a propeller when none are given.
+
+    Returns
+    -------
+    (params, air, label)
+        The propeller's calibrated set if the catalogue has one (label
+        ``"calibrated:<name>"``), else the generic set (label ``"generic"``).
+    """
+    c = calibrated(name)
+    if c is not None:
+        return c.params, c.air, f"calibrated:{name}"
+    g = calibration()["generic"]
+    return g.params, g.air, GENERIC
