@@ -16,7 +16,7 @@ from ..io.catalogue import CatalogueEntry
 from .vehicle import Vehicle
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
-           "body_to_world", "rotor_kinematics"]
+           "loads_from_uiuc_files", "body_to_world", "rotor_kinematics"]
 
 RPM = 2 * math.pi / 60
 
@@ -185,8 +185,11 @@ LOAD_KEYS = ("thrust", "drag", "torque")
 
 
 def read_loads(path, *, min_points: int = 6) -> LoadData:
-    """Read load measurements: columns ``rpm, airspeed, incidence_deg`` and at least one of
-    ``thrust`` [N], ``drag`` [N], ``torque`` [N m]; optional ``group`` (run label).
+    """Read load measurements: a wind-tunnel or a thrust-stand CSV.
+
+    Columns ``rpm`` and at least one of ``thrust`` [N], ``drag`` [N], ``torque`` [N m];
+    ``airspeed`` [m/s] and ``incidence_deg`` (both default 0: a static thrust stand);
+    optional ``group`` (run label).
 
     Raises
     ------
@@ -196,9 +199,13 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
     """
     what = "load data"
     df = _frame(path, what)
-    missing = [c for c in ("rpm", "airspeed", "incidence_deg") if c not in df.columns]
-    if missing:
-        raise DataError(f"{what}: {path} lacks column(s) {', '.join(missing)}")
+    if "rpm" not in df.columns:
+        raise DataError(f"{what}: {path} lacks column rpm")
+    if ("incidence_deg" in df.columns) and ("airspeed" not in df.columns):
+        raise DataError(f"{what}: {path} has incidence_deg but lacks column airspeed")
+    for c in ("airspeed", "incidence_deg"):
+        if c not in df.columns:
+            df[c] = 0.0  # a static thrust stand
     keys = [k for k in LOAD_KEYS if k in df.columns]
     if not keys:
         raise DataError(f"{what}: {path} has none of the load columns {', '.join(LOAD_KEYS)}")
@@ -219,19 +226,72 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
 
     T = CT rho n^2 D^4, Q = CP rho n^2 D^5 / (2 pi), V = J n D, incidence 0; groups are
     the UIUC run ids (e.g. ``"2801rd"``; static runs ``"static_<id>"``).
+
+    Raises
+    ------
+    DataError
+        The entry has no bundled measurements.
     """
+    return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
+                            f"{entry.name}: {entry.citation}")
+
+
+def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadData:
+    """UIUC-format static (``RPM CT CP``) and wind-tunnel (``J CT CP eta``) files as thrust and torque.
+
+    Each file's kind is recognised from its header; extra header and ``key = value``
+    lines (``RPM average = 4042``) are accepted (io.readers). Conversion as
+    :func:`loads_from_catalogue`.
+
+    Parameters
+    ----------
+    paths : sequence of str or Path
+    diameter : float
+        Propeller diameter [m] (the coefficients' reference length).
+
+    Raises
+    ------
+    DataError
+        A file that is neither kind, or malformed (the message names it).
+    """
+    from pathlib import Path
+
+    from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
+
+    statics, sweeps = [], []
+    for p in paths:
+        p = Path(p)
+        try:
+            try:
+                statics.append(read_uiuc_static(p))
+            except MeasurementFileError as static_exc:
+                try:
+                    sweeps.append(read_uiuc_sweep(p))
+                except MeasurementFileError as sweep_exc:
+                    if "expected columns" in str(sweep_exc) and "expected columns" not in str(static_exc):
+                        raise static_exc from None
+                    if "expected columns" in str(sweep_exc):
+                        raise DataError(f"{p}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) "
+                                        "file") from None
+                    raise
+        except MeasurementFileError as exc:
+            raise DataError(str(exc)) from None
+    return _loads_from_runs(statics, sweeps, diameter, air, "UIUC files",
+                            "UIUC-format files " + ", ".join(Path(p).name for p in paths))
+
+
+def _loads_from_runs(statics, sweeps, diameter, air, name, source) -> LoadData:
     om, V, T, Q, grp = [], [], [], [], []
-    for s in entry.static_runs():
+    for s in statics:
         n = s.rpm / 60
         om.append(2 * math.pi * n), V.append(0 * n), grp.append(np.full(n.size, f"static_{s.run_id}"))
         T.append(s.CT * air.rho * n**2 * diameter**4), Q.append(s.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
-    for w in entry.sweeps():
+    for w in sweeps:
         n = np.full(w.J.size, w.rpm / 60)
         om.append(2 * math.pi * n), V.append(w.J * n * diameter), grp.append(np.full(n.size, w.run_id))
         T.append(w.CT * air.rho * n**2 * diameter**4), Q.append(w.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
     if not om:
-        raise DataError(f"{entry.name} has no bundled measurements")
+        raise DataError(f"{name} has no measurements")
     omega = np.concatenate(om)
     return LoadData(omega, np.concatenate(V), np.zeros(omega.size),
-                    {"thrust": np.concatenate(T), "torque": np.concatenate(Q)}, np.concatenate(grp),
-                    f"{entry.name}: {entry.citation}")
+                    {"thrust": np.concatenate(T), "torque": np.concatenate(Q)}, np.concatenate(grp), source)

@@ -1,10 +1,15 @@
 """Parameter identification, Gill & D'Andrea (2017) Section III, with the robustness the
-paper lacked (NUMERICS.md, "Fitting"): bounds, an optional smoother stall blend (M),
-a multistart stage and an identifiability report.
+paper lacked (docs/identification.md): bounds, continuation in the stall-blend sharpness M,
+a multistart stage and an identifiability report that says what the data do not determine.
+
+Either section model can be identified: the paper's (c_l1, c_l2, c_d, alpha_0), started
+from the paper's x0, or a subset of the cambered polar's parameters, started from the
+base set (normally the catalogue-fitted ``generic`` set).
 
 * Level flight (eqs 16-18): residual_j = vertical component of the summed rotor forces
   (+ optional body lift, Sec. III-A) - m g, per steady condition j.
-* Loads: residuals (model - measured) / RMS(measured) for each measured quantity.
+* Loads: residuals (model - measured) / RMS(measured) for each measured quantity; several
+  propellers can be fitted jointly (:func:`fit_loads_joint`), each weighted alike.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ import numpy as np
 from scipy import optimize, stats
 from scipy.stats import qmc
 
-from ..core.airfoil import Air, AirfoilParams, sigmoid_blend
+from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from ..core.vector import rotor_wrench
@@ -25,21 +30,59 @@ from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from .vehicle import Vehicle
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
-           "level_flight_forces", "param_names"]
+           "fit_loads_joint", "level_flight_forces", "param_names", "CAMBERED_FIT", "CAMBERED_FIT_STATIC",
+           "CAMBERED_FIT_RE"]
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
 X0_PAPER = (2 * math.pi, 2.0, 0.0, 0.47)
 #: default bounds for (cl1, cl2, cd, alpha0 [rad]); wide but physical
 BOUNDS = {"cl1": (0.5, 15.0), "cl2": (0.0, 6.0), "cd": (0.0, 10.0), "alpha0": (math.radians(3), math.radians(60))}
+#: default bounds of the cambered polar's parameters (SI, angles in rad): the range of
+#: low-Reynolds-number propeller sections, wide enough that the catalogue fits end inside
+CAMBERED_BOUNDS = {
+    "cl_alpha": (2.0, 9.0), "alpha_L0": (math.radians(-15), math.radians(5)), "cl_max": (0.4, 2.5),
+    "cl_min": (-1.5, -0.05), "cd_min": (0.002, 0.2), "cd2": (0.0, 2.0), "cl_cdmin": (-0.5, 1.5),
+    "cd90": (0.5, 3.0), "re_exp": (-1.5, 0.5), "re_exp_lift": (-0.3, 0.8), "re_exp_stall": (-0.5, 1.0),
+    "stall_delay": (0.0, 15.0), "alpha_L0_re": (math.radians(-4), math.radians(4)), "M": (5.0, 100.0),
+}
+#: natural size of each cambered parameter: a standard error above POOR_REL_STD of
+#: max(|estimate|, this) is "poorly determined" (parameters whose value may be ~0)
+CAMBERED_SCALE = {"alpha_L0": math.radians(2), "cl_cdmin": 0.3, "re_exp": 0.3, "re_exp_lift": 0.1,
+                  "re_exp_stall": 0.1, "stall_delay": 1.0, "alpha_L0_re": math.radians(1), "cd2": 0.05}
+#: cambered parameters fitted by default from data with advance-ratio sweeps / static only /
+#: sweeps at several Reynolds numbers (docs/identification.md has the measured choice)
+CAMBERED_FIT = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2")
+CAMBERED_FIT_RE = CAMBERED_FIT + ("re_exp_lift", "re_exp", "alpha_L0_re")
+#: sweeps at this many distinct rotation rates (or more) let the fit estimate the
+#: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
+MIN_RATES_FOR_RE = 3
 BODY_BOUNDS = {"cl1_body": (0.0, 10.0), "cl2_body": (0.0, 5.0), "alpha0_body": (math.radians(3), math.radians(60))}
 BODY_X0 = (0.0, 0.0, 0.47)
+#: parameters that are angles [rad], reported in degrees
+ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re")
 POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined
 SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
+M_SMOOTH = 30.0  # first stage of the continuation in M (eq 3's blend has no root folds at 30)
+SAME_COST_RTOL = 0.01  # multistart optima within 1% in cost ...
+DIFFERENT_X_RTOL = 0.05  # ... but 5% apart in a parameter: the data do not determine it
 
 
 def param_names(lift_model: str) -> tuple[str, ...]:
-    """Fitted airfoil parameters: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift."""
+    """Fitted parameters of the paper's model: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift."""
     return ("cl1", "cl2", "cd", "alpha0") if lift_model == "sigmoid" else ("cl2", "cd")
+
+
+def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
+    """The parameters fitted by default; ``data_kind`` "static", "few_rates" or "rates"."""
+    if options.names is not None:
+        return tuple(options.names)
+    if isinstance(base, CamberedParams):
+        return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
+    return param_names(options.lift_model)
+
+
+def _is_angle(name: str) -> bool:
+    return name in ANGLES
 
 
 @dataclass(frozen=True)
@@ -49,14 +92,33 @@ class FitOptions:
     Parameters
     ----------
     x0 : tuple
-        Start (cl1, cl2, cd, alpha0 [rad]); the paper's (2 pi, 2, 0, 0.47) by default.
-        For ``lift_model="sincos"`` only cl2 and cd are used.
+        Paper's model: start (cl1, cl2, cd, alpha0 [rad]); the paper's (2 pi, 2, 0, 0.47)
+        by default. For ``lift_model="sincos"`` only cl2 and cd are used. The cambered
+        model starts from the base parameters instead.
     bounds : dict, optional
-        name -> (low, high); defaults :data:`BOUNDS`.
+        name -> (low, high); defaults :data:`BOUNDS` / :data:`CAMBERED_BOUNDS`.
     M : float, optional
-        Sigmoid sharpness used while fitting (None: that of the base parameters, 50 by
-        default). M = 30 removes the root-branch jumps that make the objective
-        discontinuous at M = 50 (NUMERICS.md).
+        Sigmoid sharpness used while fitting (None: that of the base parameters). Paper's
+        model, None: when the base M exceeds M_SMOOTH (30), the fit runs at M = 30 first
+        (no root-branch jumps, a smooth objective) and then continues at the base M from
+        that optimum (continuation in M).
+    names : tuple of str, optional
+        Parameters to fit. Default: :func:`param_names` for the paper's model; for the
+        cambered model :data:`CAMBERED_FIT_RE` when the data are static only or contain
+        sweeps at three or more rotation rates, else :data:`CAMBERED_FIT` (Reynolds terms
+        kept at the base values; docs/identification.md gives the measurements behind
+        this rule).
+    prior : bool
+        Cambered model: add the population prior, pseudo-residuals
+        sigma_d L^-1 (x - x_base) with L L^T the covariance of the parameters fitted to
+        each catalogue propeller and sigma_d their median rms residual
+        (io.calibration.population). The fit then moves a parameter away from the base
+        only as far as the data warrant (a maximum a posteriori estimate), so that
+        sparse data (a static run) cannot do worse than the base set.
+    population : dict, optional
+        The prior's statistics (``names``, ``covariance``, ``sigma_data``, ``source``);
+        default the shipped ones (io.calibration.population). Validation passes the
+        statistics of the catalogue half that excludes the propeller it predicts.
     lift_model : {"sigmoid", "sincos"}
     multistart : int
         Extra starts from a scrambled Sobol sequence inside the bounds (0: x0 only). With
@@ -77,6 +139,9 @@ class FitOptions:
     x0: tuple = X0_PAPER
     bounds: dict | None = None
     M: float | None = None
+    names: tuple | None = None
+    prior: bool = True
+    population: dict | None = None
     lift_model: str = "sigmoid"
     multistart: int = 0
     body_lift: bool = False
@@ -93,9 +158,11 @@ class Identifiability:
     J is a central-difference Jacobian at the optimum. Covariance s^2 (J^T J)^-1 (from the
     SVD of J, no cut-off) with s^2 = |r|^2 / (N - p); 95% intervals use Student's t with
     N - p degrees of freedom. A parameter is "poorly determined" when its std error
-    exceeds POOR_REL_STD (10%) of its estimate, i.e. its 95% interval is wider than about
-    +-20%. ``singular_values`` are those of J diag(max(|x|, 0.1)),
-    i.e. of the Jacobian with respect to relative parameter changes.
+    exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
+    for cambered parameters whose value may be near zero: CAMBERED_SCALE), i.e. its 95%
+    interval is wider than about +-20%; "not determined" when the std error is not finite.
+    ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
+    respect to relative parameter changes.
     """
 
     names: tuple[str, ...]
@@ -107,10 +174,13 @@ class Identifiability:
     warnings: tuple[str, ...]
 
     def to_dict(self) -> dict:
-        """JSON-ready form (alpha0 entries in rad)."""
+        """JSON-ready form (angles in rad; a non-finite std error is null)."""
+        def num(v):
+            return float(v) if np.isfinite(v) else None
+
         return {
-            "std_error": dict(zip(self.names, map(float, self.std_error))),
-            "ci95": {n: [float(a), float(b)] for n, (a, b) in zip(self.names, self.ci95)},
+            "std_error": {n: num(v) for n, v in zip(self.names, self.std_error)},
+            "ci95": {n: [num(a), num(b)] for n, (a, b) in zip(self.names, self.ci95)},
             "correlation": [[float(c) for c in row] for row in self.correlation],
             "singular_values": [float(s) for s in self.singular_values],
             "poorly_determined": list(self.poorly_determined),
@@ -120,15 +190,15 @@ class Identifiability:
 
 @dataclass(frozen=True)
 class FitResult:
-    """Result of :func:`fit_level_flight` or :func:`fit_loads`.
+    """Result of :func:`fit_level_flight`, :func:`fit_loads` or :func:`fit_loads_joint`.
 
     Attributes
     ----------
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
         The fitted parameters (with the M and lift model used in the fit).
     air : Air
     names : tuple of str
-        Fitted parameter names (``alpha0`` in rad); body-lift names appended if used.
+        Fitted parameter names (angles in rad); body-lift names appended if used.
     x : ndarray
         Fitted values, in ``names`` order.
     residuals : ndarray
@@ -145,11 +215,19 @@ class FitResult:
     starts : list of dict
         Every start: x0, final x, cost, nfev.
     identifiability : Identifiability
+    at_bound : tuple of str
+        Fitted parameters that ended on (within 1e-6 of the range of) a bound: the data
+        pull them outside the bounds, and their value is the bound's, not the data's.
+    hit_max_nfev : bool
+        The best start stopped at its evaluation limit, not at convergence.
+    warnings : tuple of str
+        Everything the report must say about the fit itself (bounds, evaluation limit,
+        multistart optima that disagree), beside the identifiability warnings.
     extra : dict
         Problem-specific information (body-lift verdict, held-out errors, ...).
     """
 
-    params: AirfoilParams
+    params: SectionParams
     air: Air
     names: tuple[str, ...]
     x: np.ndarray
@@ -162,52 +240,74 @@ class FitResult:
     message: str
     starts: list
     identifiability: Identifiability
+    at_bound: tuple = ()
+    hit_max_nfev: bool = False
+    warnings: tuple = ()
     extra: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
         """The JSON report (angles in degrees, as labelled in ``units``)."""
-        p = self.params
+        from ..io.params_file import params_to_dict
+
         return {
-            "params": {"cl1": p.cl1, "cl2": p.cl2, "cd": p.cd, "alpha0_deg": math.degrees(p.alpha0), "M": p.M,
-                       "cd0": p.cd0, "cp_blasius": p.cp_blasius, "lift_model": p.lift_model,
-                       "rho": self.air.rho, "mu": self.air.mu},
-            "fitted": {n: (math.degrees(v) if n.startswith("alpha0") else float(v)) for n, v in zip(self.names, self.x)},
-            "units": {"alpha0": "deg", "alpha0_body": "deg"},
+            "params": params_to_dict(self.params, self.air),
+            "fitted": {n: (math.degrees(v) if _is_angle(n) else float(v)) for n, v in zip(self.names, self.x)},
+            "units": {n: "deg" for n in self.names if _is_angle(n)},
             "cost": self.cost, "rms_residual": float(np.sqrt(np.mean(self.residuals**2))),
             "residuals": [float(r) for r in self.residuals],
             "nfev": self.nfev, "n_model_points": self.n_model_points, "elapsed_s": self.elapsed_s,
             "success": self.success, "message": self.message,
+            "at_bound": list(self.at_bound), "hit_max_nfev": self.hit_max_nfev, "warnings": list(self.warnings),
             "starts": [{k: ([float(a) for a in v] if isinstance(v, np.ndarray) else v) for k, v in s.items()}
                        for s in self.starts],
             "identifiability": self.identifiability.to_dict(),
             **self.extra,
         }
 
-    def report_text(self) -> str:
-        """Plain-text report: estimates, 95% intervals, correlations, warnings."""
+    def report_text(self, *, max_residuals: int = 20) -> str:
+        """Plain-text report: estimates, 95% intervals, correlations, warnings.
+
+        At most ``max_residuals`` residuals are listed (the largest in magnitude), with
+        their count; the JSON report has them all.
+        """
         idf = self.identifiability
-        lines = [f"{'parameter':<13}{'estimate':>10}{'std err':>10}{'95% interval':>24}"]
+        lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"]
         for k, n in enumerate(self.names):
-            deg = n.startswith("alpha0")
+            deg = _is_angle(n)
             f = math.degrees if deg else float
             lo, hi = idf.ci95[k]
-            lines.append(f"{n + (' [deg]' if deg else ''):<13}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
-                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}")
-        lines.append("correlation: " + "; ".join(
-            f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
-            for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
+            flag = " (at bound)" if n in self.at_bound else ""
+            lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
+                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{flag}")
+        if len(self.names) > 1:
+            lines.append("correlation: " + "; ".join(
+                f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
+                for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
         lines.append("scaled Jacobian singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
-        unit = " N" if self.extra.get("kind") == "level_flight" else " (scaled)"
-        lines.append(f"residual per condition{unit}: " + ", ".join(f"{r:+.3g}" for r in self.residuals))
-        lines.append(f"rms residual {np.sqrt(np.mean(self.residuals ** 2)):.4g}; {self.nfev} evaluations "
+        level = self.extra.get("kind") == "level_flight"
+        unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
+        r = self.residuals
+        order = np.argsort(-np.abs(r))[:max_residuals]
+        shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
+        lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in sorted(order)))
+        lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{' N' if level else ''}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
         eff = self.extra.get("M_effect")
         if eff:
             lines.append(f"stall-blend smoothing: fitted with M = {eff['M_fit']:g}; the same parameters give rms "
                          f"residual {eff['rms_residual_at_M_fit']:.4g} at M = {eff['M_fit']:g} and "
                          f"{eff['rms_residual_at_M_base']:.4g} at M = {eff['M_base']:g} (the base value)")
+        cont = self.extra.get("M_continuation")
+        if cont:
+            lines.append(f"continuation in M: fitted at M = {cont['M_first']:g} (rms residual "
+                         f"{cont['rms_residual_first']:.4g}), then at M = {cont['M_final']:g} from there")
+        lines.extend(f"WARNING: {w}" for w in self.warnings)
         lines.extend(f"WARNING: {w}" for w in idf.warnings)
         return "\n".join(lines)
+
+
+def _scale_of(name: str) -> float:
+    return CAMBERED_SCALE.get(name, 0.0)
 
 
 def _identifiability(names, x, jac, residuals) -> Identifiability:
@@ -217,13 +317,15 @@ def _identifiability(names, x, jac, residuals) -> Identifiability:
     # covariance from the SVD of J with no cut-off: a weak direction gets a large
     # variance (a pseudo-inverse with a cut-off would report it as perfectly known)
     _, sig, Vt = np.linalg.svd(jac, full_matrices=False)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_sig2 = np.where(sig > 0, 1.0 / sig**2, np.inf)
-    cov = s2 * (Vt.T * inv_sig2) @ Vt
-    std = np.sqrt(np.clip(np.diag(cov), 0, None))
-    t = stats.t.ppf(0.975, dof)
-    ci = np.column_stack([x - t * std, x + t * std])
-    with np.errstate(invalid="ignore", divide="ignore"):
+        cov = s2 * (Vt.T * inv_sig2) @ Vt
+        std = np.sqrt(np.clip(np.diag(cov), 0, None))
+        if sig.size < p:  # fewer residuals than parameters: the missing directions are free
+            std = np.full(p, np.inf)
+        std = np.where(np.isnan(std), np.inf, std)
+        t = stats.t.ppf(0.975, dof)
+        ci = np.column_stack([x - t * std, x + t * std])
         corr = cov / np.outer(std, std)
     corr = np.where(np.isfinite(corr), corr, 0.0)
     np.fill_diagonal(corr, 1.0)
@@ -231,11 +333,17 @@ def _identifiability(names, x, jac, residuals) -> Identifiability:
     sv = np.linalg.svd(jac * scale, compute_uv=False)
     poor, warns = [], []
     for k, n in enumerate(names):
-        rel = std[k] / max(abs(x[k]), 1e-12)
+        if not np.isfinite(std[k]):
+            poor.append(n)
+            warns.append(f"{n} is not determined by the data: its std error is not finite (no residual "
+                         "changes with it at the optimum)")
+            continue
+        rel = std[k] / max(abs(x[k]), _scale_of(n), 1e-12)
         if rel > POOR_REL_STD:
             poor.append(n)
-            shown = f"{math.degrees(std[k]):.3g} deg" if n.startswith("alpha0") else f"{std[k]:.3g}"
-            warns.append(f"{n} is poorly determined: std error {shown} is {100 * rel:.0f}% of its estimate")
+            shown = f"{math.degrees(std[k]):.3g} deg" if _is_angle(n) else f"{std[k]:.3g}"
+            warns.append(f"{n} is poorly determined: std error {shown} is {100 * rel:.0f}% of its "
+                         f"{'estimate' if abs(x[k]) >= _scale_of(n) else 'natural scale'}")
     for i in range(p):
         for j in range(i + 1, p):
             if abs(corr[i, j]) > 0.95:
@@ -247,19 +355,26 @@ def _identifiability(names, x, jac, residuals) -> Identifiability:
 
 
 def _bounds(names, options: FitOptions):
-    table = {**BOUNDS, **BODY_BOUNDS, **(options.bounds or {})}
+    table = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **(options.bounds or {})}
+    unknown = [n for n in names if n not in table]
+    if unknown:
+        raise ValueError(f"cannot fit {', '.join(unknown)}: valid names are {', '.join(table)}")
     lb = np.array([table[n][0] for n in names], float)
     ub = np.array([table[n][1] for n in names], float)
     return lb, ub
 
 
-def _x0(names, options: FitOptions):
-    full = dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
+def _x0(names, options: FitOptions, base: SectionParams):
+    """Paper's model: options.x0 (the paper's start); cambered: the base parameters."""
+    if isinstance(base, CamberedParams):
+        full = {n: getattr(base, n) for n in names if hasattr(base, n)}
+    else:
+        full = dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
     full.update(zip(("cl1_body", "cl2_body", "alpha0_body"), BODY_X0))
     return np.array([full[n] for n in names], float)
 
 
-def _m_effect(residual, best, base: AirfoilParams, options: FitOptions) -> dict:
+def _m_effect(residual, best, base: SectionParams, options: FitOptions) -> dict:
     """When the fit used a smoother M than the base parameters, report what that did:
     the rms residual of the fitted parameters under the fit's M and under the base M."""
     if options.M is None or options.M == base.M:
@@ -288,24 +403,29 @@ def _jacobian(residual, x, lb, ub):
     return np.column_stack(cols)
 
 
-def _params_from(x, names, base: AirfoilParams, options: FitOptions) -> AirfoilParams:
+def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionParams:
     kw = {n: float(v) for n, v in zip(names, x) if not n.endswith("_body")}
-    kw["lift_model"] = options.lift_model
+    if isinstance(base, AirfoilParams):
+        kw["lift_model"] = options.lift_model
     if options.M is not None:
         kw["M"] = float(options.M)
     return base.replace(**kw)
 
 
-def _solve(residual, names, options: FitOptions, label: str, x0=None):
-    """Bounded least squares from x0 (default ``options.x0``) and ``options.multistart``
-    Sobol starts; best cost wins."""
+def _solve(residual, names, options: FitOptions, label: str, x0):
+    """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins.
+
+    Returns (best, log, nfev, elapsed, warnings): ``warnings`` names multistart optima
+    that reach the same cost with different parameters.
+    """
     from tqdm import tqdm
 
     lb, ub = _bounds(names, options)
-    x0 = np.clip(_x0(names, options) if x0 is None else np.asarray(x0, float), lb, ub)
+    x0 = np.clip(np.asarray(x0, float), lb, ub)
     starts = [x0]
     if options.multistart > 0:
-        sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random(options.multistart)
+        m = max(0, math.ceil(math.log2(options.multistart)))  # Sobol' points come in powers of 2
+        sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random_base2(m)[: options.multistart]
         starts += list(lb + sob * (ub - lb))
     counter = {"n": 0}
     bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)  # None: off unless a terminal
@@ -322,11 +442,12 @@ def _solve(residual, names, options: FitOptions, label: str, x0=None):
         r = optimize.least_squares(fun, x_start, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
                                    max_nfev=max_nfev, xtol=1e-10, ftol=1e-10, gtol=1e-10)
         log.append({"x0": np.array(x_start), "x": r.x.copy(), "cost": float(r.cost), "nfev": int(r.nfev),
-                    "stage": "polish" if max_nfev == options.max_nfev else "screen"})
+                    "status": int(r.status), "stage": "polish" if max_nfev == options.max_nfev else "screen"})
         bar.set_postfix(best_cost=f"{min(e['cost'] for e in log):.3g}")
         return r
 
     log = []
+    warns = []
     t0 = time.perf_counter()
     try:
         if len(starts) == 1:
@@ -334,13 +455,48 @@ def _solve(residual, names, options: FitOptions, label: str, x0=None):
         else:
             # global stage: short runs from every start, then polish the two best to convergence
             screened = sorted((run(s, SCREEN_NFEV) for s in starts), key=lambda r: r.cost)
-            polished = [run(r.x, options.max_nfev) for r in screened[:2]]
-            best = min(polished, key=lambda r: r.cost)
+            polished = sorted((run(r.x, options.max_nfev) for r in screened[:2]), key=lambda r: r.cost)
+            best = polished[0]
+            other = polished[1]
+            # same cost: within 1%, or both at round-off level (a perfect fit)
+            if other.cost <= best.cost * (1 + SAME_COST_RTOL) + 1e-12 * best.fun.size:
+                span = np.maximum(np.abs(best.x), [max(_scale_of(n), 1e-12) for n in names])
+                differ = [n for n, a, b, sc in zip(names, best.x, other.x, span) if abs(a - b) > DIFFERENT_X_RTOL * sc]
+                if differ:
+                    warns.append(f"two multistart optima reach the same residual (costs {best.cost:.4g} and "
+                                 f"{other.cost:.4g}) with different {', '.join(differ)}: the data do not "
+                                 "determine them")
         # best.jac is _jacobian at best.x: least_squares evaluates jac after every
         # accepted step and returns it unchanged for the default linear loss
     finally:
         bar.close()
-    return best, log, counter["n"], time.perf_counter() - t0
+    return best, log, counter["n"], time.perf_counter() - t0, warns
+
+
+def _finish(residual, names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
+    """Assemble the FitResult: identifiability, parameters at a bound, evaluation limit."""
+    lb, ub = _bounds(names, options)
+    params = _params_from(best.x, names, base, options)
+    idf = _identifiability(names, best.x, best.jac, best.fun)
+    residuals = best.fun
+    if "prior" in extra:  # the prior's pseudo-residuals are reported apart from the data's
+        k = len(extra["prior"]["names"])
+        residuals = best.fun[:-k]
+        extra["prior"]["pseudo_residuals"] = [float(v) for v in best.fun[-k:]]
+    tol = 1e-6 * (ub - lb)
+    at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
+    warns = list(warns)
+    for n, v, lo, hi in zip(names, best.x, lb, ub):
+        if n in at_bound:
+            side, b = ("lower", lo) if abs(v - lo) <= abs(v - hi) else ("upper", hi)
+            shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
+            warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
+                         "its value is the bound's; suspect the data, the geometry or the model")
+    hit = int(best.status) == 0
+    if hit:
+        warns.append(f"the fit stopped at its evaluation limit ({options.max_nfev}) before converging")
+    return FitResult(params, air, names, best.x, residuals, float(best.cost), nfev, n_points, elapsed,
+                     bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
 
 
 # ---------------------------------------------------------------- level flight (eqs 16-18)
@@ -392,81 +548,178 @@ def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -
     return 0.5 * air.rho * data.airspeed**2 * CL * vehicle.body_area
 
 
-def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: AirfoilParams | None = None,
+def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
+    """Stages 2 and 3 of the continuation in M, at the base M (docs/identification.md).
+
+    2. Trust-region least squares on the EXACT residual at the base M, with the Jacobian
+       of the smooth M_SMOOTH model: at M = 50 the stall folds make the residual jump by
+       small amounts as parameters move (root-branch switches), so finite differences at
+       M = 50 are dominated by the jumps, while the smooth Jacobian still points downhill.
+    3. Nelder-Mead on the exact cost from there: it needs no derivatives, so the jumps do
+       not stall it where the smooth Jacobian stops being a good model (measured: the
+       paper's case generated at M = 50 is then recovered to 2e-13).
+
+    Returns an OptimizeResult-like object (x, fun, jac, cost, status, success, message,
+    nfev) whose ``jac`` is the smooth model's Jacobian at the optimum (used for the
+    identifiability report) and the number of residual evaluations spent.
+    """
+    lb, ub = _bounds(names, options)
+    exact = make_residual(replace(options, M=base_M))
+    smooth = make_residual(replace(options, M=M_SMOOTH))
+    count = {"n": 0}
+
+    def f(x):
+        count["n"] += 1
+        return exact(x)
+
+    def jac(x):
+        count["n"] += 2 * len(x)
+        return _jacobian(smooth, np.array(x, float), lb, ub)
+
+    r2 = optimize.least_squares(f, x_smooth, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
+                                max_nfev=options.max_nfev, xtol=1e-12, ftol=1e-12, gtol=1e-12)
+    scale = np.maximum(np.abs(r2.x), 0.1)
+    z0 = r2.x / scale
+    simplex = np.vstack([z0, z0 + 0.02 * np.eye(z0.size)])
+    simplex = np.clip(simplex, lb / scale, ub / scale)
+    max_fev = 200 * len(names)
+    nm = optimize.minimize(lambda z: 0.5 * float(np.sum(f(z * scale) ** 2)), z0, method="Nelder-Mead",
+                           bounds=list(zip(lb / scale, ub / scale)),
+                           options={"xatol": 1e-12, "fatol": 1e-30, "maxfev": max_fev, "adaptive": True,
+                                    "initial_simplex": simplex})
+    x = np.clip(nm.x * scale, lb, ub) if nm.fun <= r2.cost else r2.x
+    fun = exact(x)
+    stopped = nm.nfev >= max_fev and nm.fun < r2.cost
+    result = optimize.OptimizeResult(
+        x=x, fun=fun, jac=_jacobian(smooth, x, lb, ub), cost=0.5 * float(fun @ fun),
+        status=0 if stopped else 2, success=not stopped, nfev=r2.nfev + nm.nfev,
+        message=("Nelder-Mead stopped at its evaluation limit" if stopped else
+                 f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then Nelder-Mead at M = {base_M:g}"))
+    return result, count["n"] + len(names) * 2 + 1
+
+
+def _fit_with_continuation(make_residual, names, base, options, label, x0):
+    """Solve; for the paper's model with a base M above M_SMOOTH and no M given, continue in M.
+
+    Stage 1 fits at M_SMOOTH (no root folds: a smooth objective), then
+    :func:`_polish_at_base_M` fits at the base M from that optimum.
+
+    Returns (best, log, nfev, elapsed, warnings, extra).
+    """
+    if isinstance(base, AirfoilParams) and options.M is None and base.M > M_SMOOTH and options.lift_model == "sigmoid":
+        smooth = replace(options, M=M_SMOOTH)
+        b1, log, n1, t1, w1 = _solve(make_residual(smooth), names, smooth, label, x0)
+        t0 = time.perf_counter()
+        best, n2 = _polish_at_base_M(make_residual, names, options, base.M, b1.x, label)
+        elapsed = t1 + time.perf_counter() - t0
+        log.append({"x0": b1.x.copy(), "x": best.x.copy(), "cost": best.cost, "nfev": n2, "status": best.status,
+                    "stage": f"continuation to M = {base.M:g}"})
+        extra = {"M_continuation": {"M_first": M_SMOOTH, "M_final": base.M,
+                                    "rms_residual_first": float(np.sqrt(np.mean(b1.fun ** 2))),
+                                    "x_first": [float(v) for v in b1.x],
+                                    "jacobian": f"identifiability from the M = {M_SMOOTH:g} model's Jacobian"}}
+        return best, log, n1 + n2, elapsed, w1, extra
+    best, log, nfev, elapsed, warns = _solve(make_residual(options), names, options, label, x0)
+    return best, log, nfev, elapsed, warns, {}
+
+
+def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionParams | None = None,
                      air: Air = Air(), options: FitOptions = FitOptions()) -> FitResult:
-    """Identify (c_l1, c_l2, c_d, alpha_0) from steady level flight, eqs (16)-(18).
+    """Identify section parameters from steady level flight, eqs (16)-(18).
 
     Parameters
     ----------
     data : LevelFlightData
     vehicle : Vehicle
-    base : AirfoilParams, optional
-        Supplies the constants (M, c_d0, c_p) not fitted; gill2017-apc's footnote 2
-        values by default.
+    base : AirfoilParams or CamberedParams, optional
+        The model and the constants not fitted; gill2017-apc (the paper's model and
+        footnote 2 values) by default. Paper's model: the fit starts from the paper's x0
+        and, when the base M exceeds 30, continues in M (FitOptions). Cambered: the fit
+        starts from ``base``.
     air : Air
     options : FitOptions
 
     Returns
     -------
     FitResult
-        ``residuals`` is eq 17 per condition [N]; ``extra`` holds the hover-model
-        comparison and, with ``options.body_lift``, the body-lift verdict.
+        ``residuals`` is eq 17 per condition [N]; ``extra`` holds, with
+        ``options.body_lift``, the body-lift verdict. With body lift ``params`` are those
+        of the model the F-test selects: the fit with body lift when it matters
+        (p < 0.05), else the fit without it.
 
     Raises
     ------
     ValueError
-        Fewer conditions than parameters + 1, or body lift requested without body_area.
+        Fewer conditions than parameters + 1, an unknown parameter name, or body lift
+        requested without body_area.
     SolverError
         From the rotor model.
     """
     from ..core.airfoil import preset
 
     base = base or preset("gill2017-apc")
-    names = param_names(options.lift_model)
+    names = _default_names(base, options)
     if options.body_lift:
         if vehicle.body_area <= 0:
             raise ValueError("body_lift needs the vehicle's body_area > 0 m^2")
         names = names + ("cl1_body", "cl2_body", "alpha0_body")
     if data.n <= len(names):
         raise ValueError(f"{data.n} conditions cannot identify {len(names)} parameters; need at least {len(names) + 1}")
-    M_used = options.M if options.M is not None else base.M
     n_rot = len(vehicle.rotors)
 
-    def residual(x, opts=options):
-        p = _params_from(x, names, base, opts)
-        f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization)
-        r = f["vertical"] - vehicle.weight
-        if opts.body_lift:
-            r = r + body_lift(x[-3:], data, vehicle, p.M, air)
-        return r
+    def make_residual(opts):
+        def residual(x, opts=opts):
+            p = _params_from(x, names, base, opts)
+            f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization)
+            r = f["vertical"] - vehicle.weight
+            if opts.body_lift:
+                r = r + body_lift(x[-3:], data, vehicle, p.M, air)
+            return r
+        return residual
 
-    x0 = None
+    make_residual, prior = _with_prior(make_residual, names, base, options)
+    x0 = _x0(names, options, base)
+    without = None
     if options.body_lift:
         # the model without body lift first; the full fit starts from its optimum with
         # zero body lift (BODY_X0), so that it can only improve on it (nested models)
         without = fit_level_flight(data, vehicle, base=base, air=air,
-                                   options=replace(options, body_lift=False, progress=False))
+                                   options=replace(options, body_lift=False, progress=False, names=names[:-3]))
         x0 = np.concatenate([without.x, BODY_X0])
-    best, log, nfev, elapsed = _solve(residual, names, options, "fit level-flight", x0)
-    params = _params_from(best.x, names, base, options)
-    idf = _identifiability(names, best.x, best.jac, best.fun)
-    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight,
-             **_m_effect(residual, best, base, options)}
+        base = without.params  # the continuation in M is done: fit at the M it ended with
+        options = replace(options, M=base.M)
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
+                                                                    "fit level-flight", x0)
+    final_opts = replace(options, M=base.M if options.M is None else options.M)
+    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight, **extra,
+             **_m_effect(make_residual(final_opts), best, base, options)}
+    if prior:
+        extra["prior"] = prior
+    result = _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+                     nfev * data.n * n_rot, air, extra)
     if options.body_lift:
+        M_used = result.params.M
         L = body_lift(best.x[-3:], data, vehicle, M_used, air)
         # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
         # fitting noise would? (the paper's Sec. III-A check, made quantitative)
-        rss1, rss0 = float(best.fun @ best.fun), float(without.residuals @ without.residuals)
+        rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
         dof1 = data.n - len(names)
         F = ((rss0 - rss1) / 3) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
         p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")
-        extra["body_lift"] = {
+        matters = bool(p_value < 0.05)
+        verdict = {
             "max_abs_N": float(np.max(np.abs(L))), "max_abs_over_weight": float(np.max(np.abs(L)) / vehicle.weight),
             "rms_residual_with": float(np.sqrt(rss1 / data.n)), "rms_residual_without": float(np.sqrt(rss0 / data.n)),
-            "F": float(F), "p_value": p_value, "matters": bool(p_value < 0.05),
+            "F": float(F), "p_value": p_value, "matters": matters,
+            "body_terms": {"cl1_body": float(best.x[-3]), "cl2_body": float(best.x[-2]),
+                           "alpha0_body_deg": math.degrees(best.x[-1])},
         }
-    return FitResult(params, air, names, best.x, best.fun, float(best.cost), nfev, nfev * data.n * n_rot, elapsed,
-                     bool(best.success), str(best.message), log, idf, extra)
+        if not matters:
+            # the F-test selects the model without body lift: report and write that one
+            return replace(without, extra={**without.extra, "body_lift": {**verdict, "selected": "without"}},
+                           nfev=without.nfev + nfev, elapsed_s=without.elapsed_s + elapsed)
+        result.extra["body_lift"] = {**verdict, "selected": "with"}
+    return result
 
 
 def hover_vertical_force(params: AirfoilParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air()):
@@ -486,9 +739,79 @@ def hover_vertical_force(params: AirfoilParams, data: LevelFlightData, vehicle: 
 
 # ---------------------------------------------------------------- loads
 
-def fit_loads(data: LoadData, propeller, *, base: AirfoilParams | None = None, air: Air = Air(),
+def _load_norms(data: LoadData, propeller, keys, air: Air):
+    n = data.omega / (2 * math.pi)
+    norm = {k: air.rho * n**2 * propeller.diameter ** (5 if k == "torque" else 4) for k in keys}
+    scales = {k: float(np.sqrt(np.mean((data.measured[k] / norm[k]) ** 2))) for k in keys}
+    for k, s in scales.items():
+        if not (np.isfinite(s) and s > 0):
+            raise ValueError(f"measured {k} is zero everywhere or not finite; cannot scale its residuals")
+    return norm, scales
+
+
+def _load_keys(data: LoadData, quantities) -> list:
+    keys = list(quantities or data.measured)
+    for k in keys:
+        if k not in data.measured:
+            raise ValueError(f"quantity {k!r} is not measured; measured: {', '.join(data.measured)}")
+    return keys
+
+
+def _data_kind(data: LoadData) -> str:
+    """"static" (all airspeeds 0), "few_rates" (moving points at < MIN_RATES_FOR_RE rotation
+    rates, within 3%) or "rates"."""
+    moving = data.airspeed > 0
+    if not moving.any():
+        return "static"
+    rpm = np.sort(data.omega[moving])
+    rates = 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
+    return "rates" if rates >= MIN_RATES_FOR_RE else "few_rates"
+
+
+def _with_prior(make_residual, names, base, options):
+    """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model)."""
+    if not (options.prior and isinstance(base, CamberedParams)):
+        return make_residual, None
+    from ..io.calibration import population
+
+    pop = options.population or population()
+    idx = [pop["names"].index(n) for n in names if n in pop["names"]]
+    if not idx:
+        return make_residual, None
+    sel = [k for k, n in enumerate(names) if n in pop["names"]]
+    cov = np.asarray(pop["covariance"], float)[np.ix_(idx, idx)]
+    Linv = np.linalg.inv(np.linalg.cholesky(cov))
+    mu = np.array([getattr(base, names[k]) for k in sel])
+    weight = float(pop["sigma_data"])
+
+    def make(opts):
+        residual = make_residual(opts)
+        return lambda x, opts=opts: np.concatenate([residual(x), weight * (Linv @ (np.asarray(x)[sel] - mu))])
+
+    info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": weight,
+            "source": pop["source"]}
+    return make, info
+
+
+def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weight: float = 1.0):
+    """x -> stacked (model - measured) coefficient errors / RMS(measured coefficient), times ``weight``."""
+    norm, scales = _load_norms(data, propeller, keys, air)
+
+    def make(opts):
+        def residual(x, opts=opts):
+            p = _params_from(x, names, base, opts)
+            r = rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
+                            discretization=opts.discretization)
+            model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+            return weight * np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
+        return residual
+
+    return make, scales
+
+
+def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, air: Air = Air(),
               quantities: tuple[str, ...] | None = None, options: FitOptions = FitOptions()) -> FitResult:
-    """Identify the airfoil parameters from direct load measurements of one propeller.
+    """Identify section parameters from direct load measurements of one propeller.
 
     Residuals are compared in coefficient form so that every rpm weighs alike: for each
     fitted quantity k, (model_k - measured_k) / (rho n^2 D^m_k) / RMS(measured coefficient),
@@ -497,50 +820,100 @@ def fit_loads(data: LoadData, propeller, *, base: AirfoilParams | None = None, a
     Parameters
     ----------
     data : LoadData
+        Static thrust-stand data (all airspeeds 0), wind-tunnel sweeps, or both.
     propeller : Propeller
-    base : AirfoilParams, optional
-        Constants not fitted; gill2017-apc's (footnote 2) by default.
+    base : AirfoilParams or CamberedParams, optional
+        The model, the start and the constants not fitted; the catalogue-fitted
+        ``generic`` cambered set by default (``gill2017-apc`` for the paper's model).
     air : Air
     quantities : tuple of str, optional
         Which measured quantities to fit (default: all in ``data.measured``).
     options : FitOptions
+        ``names`` default: the paper's four parameters; for the cambered model
+        CAMBERED_FIT, or CAMBERED_FIT_STATIC when every point is static.
 
     Raises
     ------
     ValueError
-        Unknown or unmeasured quantity, fewer residuals than parameters + 1, or a
-        measured quantity that is zero everywhere.
+        Unknown or unmeasured quantity, an unknown parameter name, fewer residuals than
+        parameters + 1, or a measured quantity that is zero everywhere.
     SolverError
         From the rotor model.
     """
-    from ..core.airfoil import preset
+    from ..io.calibration import generic_params
 
-    base = base or preset("gill2017-apc")
-    names = param_names(options.lift_model)
-    keys = list(quantities or data.measured)
-    for k in keys:
-        if k not in data.measured:
-            raise ValueError(f"quantity {k!r} is not measured; measured: {', '.join(data.measured)}")
-    n = data.omega / (2 * math.pi)
-    norm = {k: air.rho * n**2 * propeller.diameter ** (5 if k == "torque" else 4) for k in keys}
-    scales = {k: float(np.sqrt(np.mean((data.measured[k] / norm[k]) ** 2))) for k in keys}
-    for k, s in scales.items():
-        if s == 0:
-            raise ValueError(f"measured {k} is zero everywhere; cannot scale its residuals")
+    base = base or generic_params()
+    names = _default_names(base, options, _data_kind(data))
+    keys = _load_keys(data, quantities)
     if data.n * len(keys) <= len(names):
         raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
+    make_residual, scales = _load_residual(data, propeller, keys, air, names, base)
+    make_residual, prior = _with_prior(make_residual, names, base, options)
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit loads",
+                                                                    _x0(names, options, base))
+    final_opts = replace(options, M=base.M if options.M is None else options.M)
+    extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
+             **_m_effect(make_residual(final_opts), best, base, options)}
+    if prior:
+        extra["prior"] = prior
+    return _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+                   nfev * data.n, air, extra)
 
-    def residual(x, opts=options):
-        p = _params_from(x, names, base, opts)
-        r = rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
-                        discretization=opts.discretization)
-        model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
-        return np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
 
-    best, log, nfev, elapsed = _solve(residual, names, options, "fit loads")
-    params = _params_from(best.x, names, base, options)
-    idf = _identifiability(names, best.x, best.jac, best.fun)
-    extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales,
-             **_m_effect(residual, best, base, options)}
-    return FitResult(params, air, names, best.x, best.fun, float(best.cost), nfev, nfev * data.n, elapsed,
-                     bool(best.success), str(best.message), log, idf, extra)
+def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air = Air(),
+                    options: FitOptions = FitOptions()) -> FitResult:
+    """One parameter set fitted to the load measurements of several propellers at once.
+
+    Each propeller's residuals (as :func:`fit_loads`, all measured quantities) are
+    weighted by 1/sqrt(its number of points), so that every propeller counts alike
+    whatever its number of measurements. This is how the catalogue's ``generic`` set is
+    made (tools/calibrate_catalogue.py).
+
+    Parameters
+    ----------
+    datasets : sequence of (LoadData, Propeller)
+    base, air, options
+        As :func:`fit_loads`.
+
+    Returns
+    -------
+    FitResult
+        ``residuals`` stacked over the propellers in order; ``extra["per_propeller"]``
+        gives each propeller's name, point count and rms (unweighted) residual.
+
+    Raises
+    ------
+    ValueError
+        No datasets, or as :func:`fit_loads`.
+    SolverError
+        From the rotor model.
+    """
+    from ..io.calibration import generic_params
+
+    datasets = list(datasets)
+    if not datasets:
+        raise ValueError("fit_loads_joint needs at least one (data, propeller) pair")
+    base = base or generic_params()
+    names = _default_names(base, options)
+    makers = []
+    for data, prop in datasets:
+        makers.append(_load_residual(data, prop, _load_keys(data, None), air, names, base,
+                                     weight=1.0 / math.sqrt(data.n))[0])
+
+    def make_residual(opts):
+        parts = [m(opts) for m in makers]
+        return lambda x, opts=opts: np.concatenate([f(x) for f in parts])
+
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
+                                                                    "fit loads (joint)", _x0(names, options, base))
+    final_opts = replace(options, M=base.M if options.M is None else options.M)
+    result = _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+                     nfev * sum(d.n for d, _ in datasets), air, {"kind": "loads_joint", **extra})
+    per, k = [], 0
+    for data, prop in datasets:
+        m = data.n * len(data.measured)
+        r = best.fun[k:k + m] * math.sqrt(data.n)
+        per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2)))})
+        k += m
+    result.extra["per_propeller"] = per
+    return result
