@@ -8,7 +8,7 @@ import numpy as np
 
 from .io.atomic import atomic_write
 
-__all__ = ["plot_validation", "plot_envelope"]
+__all__ = ["plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases"]
 
 
 def _pyplot():
@@ -170,4 +170,69 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
         ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7)
     fig.suptitle(title + " (open markers: held out)", fontsize=9)
+    return _save(fig, path)
+
+
+def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
+    """Cumulative distributions over the propellers of the held-out errors of each protocol.
+
+    ``catalogue_result`` as returned by ``cli.validate_all.run_catalogue``. Writes a PNG
+    atomically and returns its path.
+    """
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    rows = catalogue_result["propellers"]
+    for key in catalogue_result["summary"]:
+        for ax, q in zip(axes, ("rms_ct", "rms_cp")):
+            v = np.sort([100 * r[key][q] for r in rows])
+            ax.step(v, np.arange(1, v.size + 1) / v.size, where="post", label=key)
+    for ax, q in zip(axes, ("|dCT| / static CT", "|dCP| / static CP")):
+        ax.set_xlabel(f"rms {q} on held-out data [%]")
+        ax.set_ylabel("fraction of propellers")
+        ax.set_xscale("log")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=8)
+    fig.suptitle(title or f"propmap cross-validation over {len(rows)} catalogue propellers\n"
+                          "Data: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255)", fontsize=9)
+    return _save(fig, path)
+
+
+def _wrap(text: str, width: int = 60) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width))
+
+
+def plot_cases(cases: dict, path) -> Path:
+    """The digitized published cases (cases.run_case results): measured points, model lines."""
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, 4, figsize=(17, 4.2), constrained_layout=True)
+    a = cases.get("apc10x7e")
+    if a is not None:
+        for ax, q in zip(axes[:2], ("CT", "CQ")):
+            ax.plot(a.x, a.measured[q], "ko", ms=4, label="measured")
+            for label, pred in a.predicted.items():
+                ax.plot(a.x, pred[q], "--" if label == "hover model" else "-", label=label)
+            ax.set_xlabel("J")
+            ax.set_ylabel(q)
+            ax.set_title(_wrap(f"APC 10x7E, {a.notes.split(';')[0]}. {a.citation}"), fontsize=7)
+        axes[0].legend(fontsize=7)
+    d = cases.get("dji9443")
+    if d is not None:
+        labels = ["measured", *d.predicted]
+        values = [float(d.measured["CT"][0]), *(float(p["CT"][0]) for p in d.predicted.values())]
+        axes[2].bar(range(len(values)), values, color=["k"] + ["C0", "C1", "C2"][: len(values) - 1])
+        axes[2].errorbar([0], [values[0]], yerr=[0.0018], color="r", capsize=4)
+        axes[2].set_xticks(range(len(values)), labels, fontsize=7, rotation=15)
+        axes[2].set_ylabel("hover CT")
+        axes[2].set_title(_wrap(f"DJI 9443 at 5400 rpm. {d.citation}"), fontsize=7)
+    b = cases.get("beaver")
+    if b is not None:
+        axes[3].plot(b.x, b.measured["CT"], "ko", ms=4, label="measured")
+        for label, pred in b.predicted.items():
+            axes[3].plot(b.x, pred["CT"], "--" if label == "hover model" else "-", label=label)
+        axes[3].set_xlabel("incidence [deg]")
+        axes[3].set_ylabel("CT")
+        axes[3].set_title(_wrap(f"Beaver propeller, {b.notes.split(' (')[0]}. {b.citation}"), fontsize=7)
+        axes[3].legend(fontsize=7)
     return _save(fig, path)

@@ -1,9 +1,15 @@
-"""The model against a catalogue propeller's measurements (UIUC static runs and J-sweeps).
+"""The model against measurements: per run, and cross-validated over the catalogue.
 
-Compares (a) the full model of Gill & D'Andrea (2017) and (b) the hover model
-T = k_T Omega^2 calibrated on the MEASURED static CT and CP (mean over the static runs),
-as in the paper's Fig. 7. Measurements: UIUC Propeller Data Site vol. 1 (Brandt & Selig,
-AIAA 2011-1255).
+* :func:`validate`: the model (either section model) and the hover model
+  T = k_T Omega^2, calibrated on the MEASURED static CT and CP (mean over the static runs),
+  against a catalogue propeller's UIUC static runs and J-sweeps, as in Fig. 7 of Gill &
+  D'Andrea (2017).
+* :func:`cross_validate`: held-out errors of the calibration protocols (leave one sweep
+  out, static-only calibration, static + lowest-rpm sweep, blind prediction with a generic
+  set that never saw the propeller), in the issue's metric rms |dCT| / static CT and
+  |dCP| / static CP.
+
+Measurements: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255).
 """
 
 from __future__ import annotations
@@ -13,12 +19,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .core.airfoil import Air, AirfoilParams
+from .core.airfoil import Air, AirfoilParams, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from .io.catalogue import CatalogueEntry
 
-__all__ = ["SweepComparison", "Validation", "validate"]
+__all__ = ["SweepComparison", "Validation", "validate", "coefficient_errors", "cross_validate", "PROTOCOLS"]
 
 
 @dataclass(frozen=True)
@@ -118,7 +124,7 @@ class Validation:
         }
 
 
-def validate(entry: CatalogueEntry, propeller: Propeller, params: AirfoilParams, *, air: Air = Air(),
+def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams, *, air: Air = Air(),
              discretization: Discretization = DEFAULT_DISCRETIZATION) -> Validation:
     """Compare the model and the hover model with every bundled measurement of ``entry``.
 
@@ -128,7 +134,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: AirfoilParams,
         Gives the measurements (UIUC static runs and J-sweeps).
     propeller : Propeller
         The geometry to use (normally ``load_propeller(entry.name)``).
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
     air : Air
         Density used to convert coefficients; UIUC coefficients are density-normalised,
         so air only enters through the Reynolds term.
@@ -162,12 +168,12 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: AirfoilParams,
         r = rotor_loads(propeller, params, 2 * math.pi * n, w.J * n * D, 0.0, air=air, discretization=discretization)
         runs.append(SweepComparison("sweep", w.run_id, np.full_like(w.J, w.rpm), w.J, w.CT, w.CP,
                                     r.CT, r.CP, np.full_like(w.CT, CT_h), np.full_like(w.CP, CP_h), w.source))
-    return Validation(entry.name, runs, CT_h, CP_h, entry.citation,
-                      params={"cl1": params.cl1, "cl2": params.cl2, "cd": params.cd,
-                              "alpha0_deg": math.degrees(params.alpha0)})
+    from .io.params_file import params_to_dict
+
+    return Validation(entry.name, runs, CT_h, CP_h, entry.citation, params=params_to_dict(params, air))
 
 
-def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: AirfoilParams, baseline: AirfoilParams,
+def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: SectionParams, baseline: SectionParams,
                        holdout, *, air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Held-out CT and CP errors of a fitted model, a baseline parameter set and the hover model.
 
@@ -185,3 +191,153 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Airf
     held = sorted(set(holdout))
     return {"holdout": held, "fitted": vf.summary("model", held), "baseline": vb.summary("model", held),
             "hover_model": vf.summary("hover_model", held), "validation_fitted": vf, "validation_baseline": vb}
+
+
+# ------------------------------------------------------------------ cross-validation
+
+#: the calibration protocols of :func:`cross_validate`
+PROTOCOLS = ("loso", "lowest", "static", "blind")
+PROTOCOL_TEXT = {
+    "loso": "leave one sweep out: fit on the static run and the other sweeps, predict the held-out sweep",
+    "lowest": "fit on the static run and the lowest-rpm sweep, predict the other sweeps",
+    "static": "fit on the static run only, predict the sweeps",
+    "blind": "no fit: the generic set fitted without this propeller, all its data",
+}
+
+
+def _coefficients(data, propeller: Propeller, air: Air):
+    """Measured CT, CP (propeller convention) of load data; NaN where not measured."""
+    n = data.omega / (2 * math.pi)
+    D = propeller.diameter
+    CT = data.measured["thrust"] / (air.rho * n**2 * D**4) if "thrust" in data.measured else np.full(data.n, np.nan)
+    CP = (data.measured["torque"] * 2 * math.pi / (air.rho * n**2 * D**5) if "torque" in data.measured
+          else np.full(data.n, np.nan))
+    return CT, CP
+
+
+def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air = Air(), mask=None,
+                       discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """rms |dCT| / static CT and rms |dCP| / static CP of ``params`` on load data.
+
+    The normalisation is the mean measured CT and CP of the static points (airspeed 0)
+    of ``data`` (all of them, also when ``mask`` selects other points), so that errors of
+    propellers of any size and pitch compare.
+
+    Parameters
+    ----------
+    data : LoadData
+        Must contain static points with thrust and torque.
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    mask : array_like of bool, optional
+        Points to evaluate (default all).
+
+    Returns
+    -------
+    dict
+        ``rms_ct``, ``rms_cp`` [-], ``bias_ct``, ``bias_cp`` [-] (mean signed error over
+        the same normalisation), ``n_points``.
+
+    Raises
+    ------
+    ValueError
+        No static points, or the mask selects none.
+    SolverError
+        From the model.
+    """
+    CT, CP = _coefficients(data, propeller, air)
+    static = data.airspeed == 0
+    if not static.any():
+        raise ValueError("coefficient_errors needs static points (airspeed 0) to normalise by")
+    CT0, CP0 = float(np.nanmean(CT[static])), float(np.nanmean(CP[static]))
+    m = np.ones(data.n, bool) if mask is None else np.asarray(mask, bool)
+    if not m.any():
+        raise ValueError("the mask selects no point")
+    r = rotor_loads(propeller, params, data.omega[m], data.airspeed[m], data.incidence[m], air=air,
+                    discretization=discretization)
+    dct = (r.CT - CT[m]) / CT0
+    dcp = (r.CP - CP[m]) / CP0
+    return {"rms_ct": float(np.sqrt(np.nanmean(dct**2))), "rms_cp": float(np.sqrt(np.nanmean(dcp**2))),
+            "bias_ct": float(np.nanmean(dct)), "bias_cp": float(np.nanmean(dcp)), "n_points": int(m.sum())}
+
+
+def _splits(data, protocol: str):
+    """(train mask, test mask) pairs of a protocol."""
+    static = data.airspeed == 0
+    sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
+    if protocol == "loso":
+        return [(data.group != g, data.group == g) for g in sweeps]
+    if protocol == "lowest":
+        low = min(sweeps, key=lambda g: float(np.mean(data.omega[data.group == g])))
+        train = static | (data.group == low)
+        return [(train, ~train)]
+    if protocol == "static":
+        return [(static, ~static)]
+    return [(None, np.ones(data.n, bool))]
+
+
+def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protocols=PROTOCOLS, air: Air = Air(),
+                   population: dict | None = None,
+                   discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """Held-out errors of the calibration protocols for one propeller's static run and sweeps.
+
+    Every fit uses :func:`propmap.identify.fit_loads` with its defaults for the data it
+    sees (parameters chosen by the data, population prior) and ``generic`` as start,
+    prior mean and constants; the errors are pooled over all held-out points of the
+    protocol (``loso``: every sweep held out in turn).
+
+    Parameters
+    ----------
+    data : LoadData
+        Static points (airspeed 0) and at least two axial sweeps, with thrust and torque;
+        ``group`` labels the runs.
+    propeller : Propeller
+    generic : SectionParams
+        The set used blind and as the fits' base. For honest numbers it must not have
+        been fitted to this propeller's data (the shipped ``generic_folds``).
+    protocols : sequence of str
+        Any of :data:`PROTOCOLS`.
+    population : dict, optional
+        The fits' prior statistics (io.calibration.population); for honest numbers, those
+        of the catalogue half without this propeller (``population(without=name)``).
+
+    Returns
+    -------
+    dict
+        protocol -> ``{"rms_ct", "rms_cp", "bias_ct", "bias_cp", "n_points", "n_fits"}``.
+
+    Raises
+    ------
+    ValueError
+        An unknown protocol, no static points or fewer than two sweeps.
+    SolverError
+        From the model.
+    """
+    from .identify import FitOptions, fit_loads
+
+    bad = [p for p in protocols if p not in PROTOCOLS]
+    if bad:
+        raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
+    static = data.airspeed == 0
+    if not static.any() or len({g for g in data.group[~static]}) < 2:
+        raise ValueError("cross_validate needs static points and at least two sweeps")
+    CT, CP = _coefficients(data, propeller, air)
+    CT0, CP0 = float(np.mean(CT[static])), float(np.mean(CP[static]))
+    out = {}
+    for protocol in protocols:
+        dct, dcp = [], []
+        splits = _splits(data, protocol)
+        for train, test in splits:
+            params = generic
+            if train is not None:
+                params = fit_loads(data.subset(train), propeller, base=generic, air=air,
+                                   options=FitOptions(population=population, discretization=discretization)).params
+            r = rotor_loads(propeller, params, data.omega[test], data.airspeed[test], data.incidence[test], air=air,
+                            discretization=discretization)
+            dct.append((r.CT - CT[test]) / CT0)
+            dcp.append((r.CP - CP[test]) / CP0)
+        dct, dcp = np.concatenate(dct), np.concatenate(dcp)
+        out[protocol] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "rms_cp": float(np.sqrt(np.mean(dcp**2))),
+                         "bias_ct": float(np.mean(dct)), "bias_cp": float(np.mean(dcp)), "n_points": int(dct.size),
+                         "n_fits": sum(t is not None for t, _ in splits)}
+    return out

@@ -1,0 +1,203 @@
+"""Published measurements outside the UIUC catalogue, digitized, as validation cases.
+
+Each case builds its propeller from the bundled geometry and compares any number of
+parameter sets (and the hover model) with the digitized measurements. Sources and the
+digitization (FLOWUnsteady, MIT) are in data/CITATION.md:
+
+* ``apc10x7e``: APC 10x7 Thin Electric, axial wind tunnel, CT and CQ against J (McCrink &
+  Gregory, J. Aircraft 2017), at 9200 rpm; geometry from the UIUC catalogue (apce_10x7).
+* ``dji9443``: DJI 9443 hover CT 0.072 at 5400 rpm (Zawodny & Boyd, AHS Forum 2016).
+* ``beaver``: TU Delft Beaver propeller, CT against the angle of incidence at J = 0.9,
+  V = 40 m/s (Sinnige et al., J. Aircraft 2019): the only incidence data bundled.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from importlib import resources
+
+import numpy as np
+
+from .core.airfoil import Air, SectionParams
+from .core.geometry import Propeller
+from .core.hover import HoverModel
+from .core.solver import rotor_loads
+
+__all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller"]
+
+CASES = ("apc10x7e", "dji9443", "beaver")
+DIGITIZED = "FLOWUnsteady (byuflowlab, MIT), digitized"
+CITATIONS = {
+    "apc10x7e": "McCrink & Gregory, J. Aircraft 54(1), 2017, Figs. 16, 20; " + DIGITIZED,
+    "dji9443": "Zawodny & Boyd, AHS 72nd Forum, 2016 (hover CT 0.072 +- 0.0018 at 5400 rpm); geometry " + DIGITIZED,
+    "beaver": "Sinnige et al., J. Aircraft 56(1), 2019, Fig. 10; " + DIGITIZED,
+}
+
+
+def _rows(name: str) -> list[list[float]]:
+    """Numeric rows of a bundled digitized CSV (comment and header lines skipped)."""
+    text = (resources.files("propmap") / "data" / "digitized" / name).read_text(encoding="utf-8")
+    rows = []
+    for row in csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#")):
+        try:
+            rows.append([float(x) for x in row[:2]])
+        except ValueError:
+            continue  # the header
+    return rows
+
+
+def _properties(name: str) -> dict[str, float]:
+    text = (resources.files("propmap") / "data" / "digitized" / name).read_text(encoding="utf-8")
+    out = {}
+    for row in csv.reader(text.splitlines()[1:]):
+        try:
+            out[row[0].strip()] = float(row[1])
+        except (ValueError, IndexError):
+            continue
+    return out
+
+
+def _from_distributions(name, props_file, chord_file, angle_file, source) -> Propeller:
+    p = _properties(props_file)
+    R, r_hub, B = p["Rtip"], p["Rhub"], int(p["B"])
+    c = np.array(_rows(chord_file))
+    a = np.array(_rows(angle_file))
+    keep = c[:, 0] * R >= r_hub  # stations on the blade
+    x = c[keep, 0]
+    theta = np.interp(x, a[:, 0], a[:, 1])
+    return Propeller(name=name, radius=R, n_blades=B, r=x * R, chord=c[keep, 1] * R, theta=np.radians(theta),
+                     source=source)
+
+
+def beaver_propeller() -> Propeller:
+    """TU Delft Beaver propeller: 4 blades, R = 0.1185 m (Sinnige et al. 2019; FLOWUnsteady database)."""
+    return _from_distributions("beaver", "beaver.csv", "beaver_chorddist.csv", "beaver_twistdist.csv",
+                               "TU Delft Beaver propeller, " + DIGITIZED)
+
+
+def dji9443_propeller() -> Propeller:
+    """DJI 9443: 2 blades, R = 0.12 m (FLOWUnsteady database)."""
+    return _from_distributions("dji9443", "DJI9443.csv", "DJI9443_chorddist.csv", "DJI9443_pitchdist.csv",
+                               "DJI 9443, " + DIGITIZED)
+
+
+@dataclass(frozen=True)
+class CaseResult:
+    """Measured and predicted curves of one case.
+
+    Attributes
+    ----------
+    case : str
+    x_name : str
+        The abscissa: ``"J"``, ``"rpm"`` or ``"incidence_deg"``.
+    x : ndarray
+    measured : dict[str, ndarray]
+        ``"CT"`` and, where digitized, ``"CQ"``.
+    predicted : dict[str, dict[str, ndarray]]
+        label -> quantity -> values at ``x`` (one entry per parameter set, plus
+        ``"hover model"``).
+    citation : str
+    notes : str
+    metrics : dict
+        label -> summary numbers (see :func:`run_case`).
+    """
+
+    case: str
+    x_name: str
+    x: np.ndarray
+    measured: dict
+    predicted: dict
+    citation: str
+    notes: str = ""
+    metrics: dict = field(default_factory=dict)
+
+
+def _coeffs(r, n, D, air):
+    return r.thrust / (air.rho * n**2 * D**4), r.torque / (air.rho * n**2 * D**5)
+
+
+def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air()) -> CaseResult:
+    """Predict a published case with each parameter set.
+
+    Parameters
+    ----------
+    case : {"apc10x7e", "dji9443", "beaver"}
+    param_sets : dict
+        label -> parameters (e.g. the paper's Table I, the generic set).
+
+    Returns
+    -------
+    CaseResult
+        ``metrics[label]``: apc10x7e: rms and max |dCT| / CT(first point) and
+        |dCQ| / CQ(first point); dji9443: CT and its error relative to 0.072; beaver:
+        CT(0) and its relative error, CT(alpha)/CT(0) at 10 and 20 deg and their errors
+        against the measured ratio (interpolated).
+
+    Raises
+    ------
+    ValueError
+        Unknown case.
+    SolverError
+        From the model.
+    """
+    from .io.catalogue import load_propeller
+
+    if case == "apc10x7e":
+        prop = load_propeller("apce_10x7")
+        ct, cq = np.array(_rows("apc10x7E_mccrink_gregory2017_CT_vs_J.csv")), np.array(
+            _rows("apc10x7E_mccrink_gregory2017_CQ_vs_J.csv"))
+        J = ct[:, 0]
+        CQm = np.interp(J, cq[:, 0], cq[:, 1])
+        n = 9200 / 60
+        pred, metrics = {}, {}
+        for label, p in param_sets.items():
+            CT, CQ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air), n,
+                             prop.diameter, air)
+            pred[label] = {"CT": CT, "CQ": CQ}
+            dct, dcq = (CT - ct[:, 1]) / ct[0, 1], (CQ - CQm) / CQm[0]
+            metrics[label] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
+                              "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
+        pred["hover model"] = {"CT": np.full(J.size, ct[0, 1]), "CQ": np.full(J.size, CQm[0])}
+        dct, dcq = (ct[0, 1] - ct[:, 1]) / ct[0, 1], (CQm[0] - CQm) / CQm[0]
+        metrics["hover model"] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
+                                  "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
+        return CaseResult(case, "J", J, {"CT": ct[:, 1], "CQ": CQm}, pred, CITATIONS[case],
+                          "9200 rpm; hover model: the measured coefficients at the lowest J", metrics)
+    if case == "dji9443":
+        prop = dji9443_propeller()
+        n = 5400 / 60
+        pred, metrics = {}, {}
+        for label, p in param_sets.items():
+            CT, CQ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air), n, prop.diameter, air)
+            pred[label] = {"CT": np.atleast_1d(CT), "CQ": np.atleast_1d(CQ)}
+            metrics[label] = {"CT": float(CT), "rel_err_ct": float(CT / 0.072 - 1)}
+        return CaseResult(case, "rpm", np.array([5400.0]), {"CT": np.array([0.072])}, pred, CITATIONS[case],
+                          "hover; measured CT 0.072 (standard deviation 0.0018)", metrics)
+    if case == "beaver":
+        prop = beaver_propeller()
+        d = np.array(_rows("sinnige2019_CT_vs_incidence_J0.9.csv"))
+        inc = d[:, 0]
+        V, J = 40.0, 0.9
+        n = V / (J * prop.diameter)
+        pred, metrics = {}, {}
+        ratio_m = {a: float(np.interp(a, inc, d[:, 1]) / np.interp(0.0, inc, d[:, 1])) for a in (10.0, 20.0)}
+        CT0m = float(np.interp(0.0, inc, d[:, 1]))
+        for label, p in param_sets.items():
+            # the model is symmetric in the sign of the incidence: -0.2 deg is 0.2 deg
+            grid = np.concatenate([[0.0, 10.0, 20.0], np.abs(inc)])
+            CT, _ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, V, np.radians(grid), air=air), n, prop.diameter, air)
+            pred[label] = {"CT": CT[3:]}
+            metrics[label] = {"CT0": float(CT[0]), "rel_err_ct0": float(CT[0] / CT0m - 1),
+                              **{f"ratio_{a:g}": float(CT[k + 1] / CT[0]) for k, a in enumerate((10.0, 20.0))},
+                              **{f"ratio_err_{a:g}": float(CT[k + 1] / CT[0] - ratio_m[a])
+                                 for k, a in enumerate((10.0, 20.0))}}
+        metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
+        first = next(iter(param_sets.values()))
+        h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=air)
+        pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=air))}
+        return CaseResult(case, "incidence_deg", inc, {"CT": d[:, 1]}, pred, CITATIONS[case],
+                          f"J = 0.9, V = 40 m/s ({n * 60:.0f} rpm); hover model calibrated on the "
+                          f"{next(iter(param_sets))} model at V = 0", metrics)
+    raise ValueError(f"unknown case {case!r}; valid: {', '.join(CASES)}")
