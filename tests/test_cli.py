@@ -34,9 +34,11 @@ def test_loads_single_point_json_matches_api(capsys):
                        "--json")
     d = json.loads(out)
     assert code == 0
-    assert set(d) >= {"thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags"}
-    r = pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc"), 8000 * math.pi / 30, 10.0,
-                       math.radians(60))
+    assert set(d) >= {"thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags", "params"}
+    # the default for a calibrated catalogue propeller is its own calibrated set, and it says so
+    assert d["params"] == "calibrated:apce_8x6"
+    params, _ = pm.resolve_params("calibrated:apce_8x6")
+    r = pm.rotor_loads(pm.load_propeller("apce_8x6"), params, 8000 * math.pi / 30, 10.0, math.radians(60))
     assert d["thrust"] == pytest.approx(float(r.thrust), rel=1e-12)
     assert d["drag"] == pytest.approx(float(r.drag), rel=1e-12)
     assert d["converged"] is True and d["flags"] == []

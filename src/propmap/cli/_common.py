@@ -27,13 +27,30 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None) -> Prope
         raise InputError(f"PROP: {exc}") from None
 
 
-def load_params(spec: str):
+PARAMS_HELP = ("Parameter set: a parameter TOML file, 'generic' (cambered, fitted to the whole catalogue), "
+               "'calibrated:NAME' (a catalogue propeller's own fit) or the paper's Table I "
+               "(gill2017-soft|gill2017-stiff|gill2017-apc). Default: PROP's calibrated set if it has one, "
+               "else 'generic'.")
+
+
+def load_params(spec: str | None, prop_spec: str | None = None, option: str = "--params"):
+    """(params, air, label) for ``spec``; None: the default for the propeller ``prop_spec``.
+
+    The default is the catalogue propeller's calibrated set, else the generic set (for
+    geometry files and propellers without measurements).
+    """
+    if spec is None:
+        from ..io.calibration import default_params
+        from ..io.catalogue import catalogue
+
+        return default_params(prop_spec if prop_spec in catalogue() else "")
     try:
-        return resolve_params(spec)
+        params, air = resolve_params(spec)
     except KeyError as exc:
-        raise InputError(f"--params: {exc.args[0]}") from None
+        raise InputError(f"{option}: {exc.args[0]}") from None
     except ValueError as exc:
-        raise InputError(f"--params: {exc}") from None
+        raise InputError(f"{option}: {exc}") from None
+    return params, air, spec
 
 
 def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = "") -> None:

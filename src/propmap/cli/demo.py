@@ -1,4 +1,4 @@
-"""``propmap demo``: the APC 8x6E with the paper's APC parameters, on bundled real data."""
+"""``propmap demo``: the APC 8x6E, the paper's model beside the cambered one, on bundled real data."""
 
 from __future__ import annotations
 
@@ -12,12 +12,12 @@ from ..core.airfoil import preset
 from ..core.hover import HoverModel
 from ..core.solver import rotor_loads
 from ..io.atomic import atomic_write
+from ..io.calibration import generic_without
 from ..io.catalogue import get_entry, load_propeller
 from ..validation import validate
-from .validate import print_table
 
 PROP = "apce_8x6"
-PARAMS = "gill2017-apc"
+PAPER = "gill2017-apc"
 HOLDOUT = ("2801rd", "2802rd")
 
 
@@ -40,8 +40,8 @@ def envelope_table(prop, params, rpm: float):
     })
 
 
-def fit_demo(prop, params, out_dir: Path):
-    """Fit to UIUC apce_8x6 with HOLDOUT held out; returns (figure path, text table)."""
+def fit_demo(prop, generic, out_dir: Path):
+    """Both models fitted to UIUC apce_8x6 with HOLDOUT held out; returns (figure path, text table)."""
     from ..identify import FitOptions, fit_loads, loads_from_catalogue
     from ..io.params_file import write_params
     from ..plots import plot_load_fit
@@ -49,23 +49,27 @@ def fit_demo(prop, params, out_dir: Path):
 
     entry = get_entry(PROP)
     data = loads_from_catalogue(entry, prop.diameter)
-    res = fit_loads(data.subset(~np.isin(data.group, HOLDOUT)), prop, base=params, options=FitOptions())
-    write_params(out_dir / "fitted_params.toml", res.params, res.air, comment=f"propmap demo: fit to UIUC {PROP}")
-    cmp = holdout_comparison(entry, prop, res.params, params, HOLDOUT)
-    p = res.params
-    rows = [f"   {'':<22}{'cl1':>7}{'cl2':>7}{'cd':>7}{'alpha0 [deg]':>14}",
-            f"   {'fitted (UIUC data)':<22}{p.cl1:>7.2f}{p.cl2:>7.2f}{p.cd:>7.2f}{math.degrees(p.alpha0):>14.1f}",
-            f"   {'Table I (APC)':<22}{params.cl1:>7.2f}{params.cl2:>7.2f}{params.cd:>7.2f}"
-            f"{math.degrees(params.alpha0):>14.1f}",
-            f"   held-out {cmp['fitted']['n_points']} points:  CT rmse / CP rmse",
-            f"   {'fitted model':<22}{cmp['fitted']['ct_rmse']:.4f} / {cmp['fitted']['cp_rmse']:.4f}",
-            f"   {'Table I model':<22}{cmp['baseline']['ct_rmse']:.4f} / {cmp['baseline']['cp_rmse']:.4f}",
-            f"   {'hover model':<22}{cmp['hover_model']['ct_rmse']:.4f} / {cmp['hover_model']['cp_rmse']:.4f}",
-            f"   ({res.nfev} model evaluations, {res.elapsed_s:.1f} s; poorly determined: "
-            f"{', '.join(res.identifiability.poorly_determined) or 'none'})"]
-    fig = plot_load_fit(cmp["validation_fitted"].runs, cmp["validation_baseline"].runs, set(HOLDOUT),
-                        out_dir / "fit.png", baseline_label="Table I",
-                        title=f"{PROP}: fitted to UIUC data (open: held out)\nData: {entry.citation}")
+    train = data.subset(~np.isin(data.group, HOLDOUT))
+    cambered = fit_loads(train, prop, base=generic)
+    paper = fit_loads(train, prop, base=preset(PAPER), options=FitOptions())
+    write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
+                 comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
+    cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)
+    cmp_p = holdout_comparison(entry, prop, paper.params, preset(PAPER), HOLDOUT)
+    rows = [f"   held-out {cmp_c['fitted']['n_points']} points, rms error of the coefficients:",
+            f"   {'':<36}{'CT':>8}{'CP':>8}",
+            f"   {'cambered model, fitted':<36}{cmp_c['fitted']['ct_rmse']:>8.4f}{cmp_c['fitted']['cp_rmse']:>8.4f}",
+            f"   {'paper model (eqs 3-4), fitted':<36}{cmp_p['fitted']['ct_rmse']:>8.4f}{cmp_p['fitted']['cp_rmse']:>8.4f}",
+            f"   {'cambered generic set, no fit':<36}{cmp_c['baseline']['ct_rmse']:>8.4f}"
+            f"{cmp_c['baseline']['cp_rmse']:>8.4f}",
+            f"   {'paper Table I, no fit':<36}{cmp_p['baseline']['ct_rmse']:>8.4f}{cmp_p['baseline']['cp_rmse']:>8.4f}",
+            f"   {'hover model (measured static)':<36}{cmp_c['hover_model']['ct_rmse']:>8.4f}"
+            f"{cmp_c['hover_model']['cp_rmse']:>8.4f}",
+            f"   ({cambered.nfev} and {paper.nfev} model evaluations, {cambered.elapsed_s:.1f} s and "
+            f"{paper.elapsed_s:.1f} s)"]
+    fig = plot_load_fit(cmp_c["validation_fitted"].runs, cmp_p["validation_fitted"].runs, set(HOLDOUT),
+                        out_dir / "fit.png", baseline_label="paper model, fitted",
+                        title=f"{PROP}: both models fitted to UIUC data (open: held out)\nData: {entry.citation}")
     return fig, "\n".join(rows)
 
 
@@ -74,25 +78,30 @@ def fit_demo(prop, params, out_dir: Path):
               help="Folder for the figures and tables.")
 @click.option("--rpm", type=float, default=8000.0, show_default=True, help="Rotation rate of the envelope [rpm].")
 def demo(out_dir: Path, rpm: float):
-    """APC 8x6E (APC PE0 geometry) with Gill & D'Andrea's Table I APC parameters.
+    """APC 8x6E (APC PE0 geometry): the cambered model beside the paper's, on UIUC data.
 
     1. Loads over the envelope vs the hover model T = k_T Omega^2, D = 0.
-    2. The model against UIUC's measured apce_8x6 static and J-sweep data.
-    3. The parameters fitted to that data with the 6000 rpm sweeps held out, beside Table I.
+    2. Both models against UIUC's measured apce_8x6 static and J-sweep data, no fitting.
+    3. Both models fitted to that data with the 6000 rpm sweeps held out.
     """
     from ..plots import plot_envelope, plot_validation
+    from ._common import InputError
 
+    if not (math.isfinite(rpm) and 0 < rpm <= 1e6):
+        raise InputError(f"--rpm must be finite and in (0, 1e6], got {rpm!r}")
     prop = load_propeller(PROP)
-    params = preset(PARAMS)
+    generic, generic_label = generic_without(PROP)
+    paper = preset(PAPER)
     click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric, geometry {prop.source})")
-    click.echo(f"parameters {PARAMS} (Gill & D'Andrea 2017, Table I): cl1={params.cl1}, cl2={params.cl2}, "
-               f"cd={params.cd}, alpha0={math.degrees(params.alpha0):.1f} deg\n")
+    click.echo(f"models: the paper's eqs 3-4 with Table I ({PAPER}); the cambered section with Prandtl tip loss "
+               f"and the {generic_label} set (fitted to half of the catalogue, without {PROP})\n")
 
-    table = envelope_table(prop, params, rpm)
+    table = envelope_table(prop, generic, rpm)
     out_dir.mkdir(parents=True, exist_ok=True)
     with atomic_write(out_dir / "envelope.csv", "w", newline="") as fh:
         table.to_csv(fh, index=False, float_format="%.6g")
-    click.echo(f"1. Envelope at {rpm:g} rpm: model vs hover model (T_hover = {table.thrust_hover.iloc[0]:.3f} N, D = 0)")
+    click.echo(f"1. Envelope at {rpm:g} rpm, cambered model vs hover model (T_hover = {table.thrust_hover.iloc[0]:.3f} N,"
+               " D = 0)")
     click.echo("   hover-model thrust error = T_hover - T, in N and in % of the static thrust")
     click.echo(f"   {'V [m/s]':>8}{'incid.':>8}{'T [N]':>9}{'D [N]':>8}{'Q [N m]':>10}{'T_hover - T':>13}")
     for _, row in table[table.airspeed.isin([0.0, 10.0, 20.0])].iterrows():
@@ -100,17 +109,27 @@ def demo(out_dir: Path, rpm: float):
         click.echo(f"   {row['airspeed']:>8.0f}{row['incidence_deg']:>8.0f}{row['thrust']:>9.3f}{row['drag']:>8.3f}"
                    f"{row['torque']:>10.4f}{err:>+9.3f} N {100 * err / row['thrust_hover']:>+4.0f}%  {row['flags']}")
     fig1 = plot_envelope(table, out_dir / "envelope.png",
-                         title=f"{PROP} at {rpm:g} rpm, params {PARAMS}: BET+BEMT vs hover model")
+                         title=f"{PROP} at {rpm:g} rpm, cambered model ({generic_label}) vs hover model")
 
-    click.echo("\n2. Against UIUC measurements of apce_8x6 (no fitting; Table I parameters):")
-    v = validate(get_entry(PROP), prop, params)
-    print_table(v)
-    fig2 = plot_validation(v, out_dir / "validation.png",
-                           title=f"{PROP}, params {PARAMS}: model vs UIUC measured")
-    click.echo("   Known bias with Table I parameters (see docs/validation.md): eq 3 has C_L(0) = 0 (no camber),")
-    click.echo("   so thrust falls too fast with J; the hover model is exact only at J = 0.")
+    entry = get_entry(PROP)
+    click.echo(f"\n2. Against UIUC measurements of {PROP}, no fitting (rms error of CT and CP; {entry.citation}):")
+    v_paper, v_gen = validate(entry, prop, paper), validate(entry, prop, generic)
+    click.echo(f"   {'run':<22}{'paper CT':>10}{'paper CP':>10}{'cambered CT':>13}{'cambered CP':>13}")
+    for rp, rg in zip(v_paper.runs, v_gen.runs):
+        ep, eg = rp.errors("model"), rg.errors("model")
+        click.echo(f"   {rp.label:<22}{ep['ct_rmse']:>10.4f}{ep['cp_rmse']:>10.4f}{eg['ct_rmse']:>13.4f}"
+                   f"{eg['cp_rmse']:>13.4f}")
+    sp, sg = v_paper.summary("model"), v_gen.summary("model")
+    click.echo(f"   {'all ' + str(sp['n_points']) + ' points':<22}{sp['ct_rmse']:>10.4f}{sp['cp_rmse']:>10.4f}"
+               f"{sg['ct_rmse']:>13.4f}{sg['cp_rmse']:>13.4f}")
+    click.echo(f"   bias: paper CT {sp['ct_bias']:+.4f}, CP {sp['cp_bias']:+.4f}; cambered CT {sg['ct_bias']:+.4f}, "
+               f"CP {sg['cp_bias']:+.4f}")
+    fig2 = plot_validation(v_gen, out_dir / "validation.png",
+                           title=f"{PROP}, cambered model ({generic_label}, no fit) vs UIUC measured\n"
+                                 f"Data: {entry.citation}")
+    click.echo("   The paper's eq 3 has C_L(0) = 0 (no camber): its thrust falls too fast with J.")
 
-    click.echo(f"\n3. Fit {PROP} to UIUC's measurements, holding out the 6000 rpm sweeps {', '.join(HOLDOUT)}:")
-    fig3, table3 = fit_demo(prop, params, out_dir)
+    click.echo(f"\n3. Both models fitted to {PROP}'s UIUC data, the 6000 rpm sweeps {', '.join(HOLDOUT)} held out:")
+    fig3, table3 = fit_demo(prop, generic, out_dir)
     click.echo(table3)
     click.echo(f"\nwrote {out_dir / 'envelope.csv'}, {fig1}, {fig2}, {fig3}, {out_dir / 'fitted_params.toml'}")

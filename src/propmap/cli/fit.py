@@ -1,4 +1,4 @@
-"""``propmap fit``: identify airfoil parameters from level-flight data or load measurements."""
+"""``propmap fit``: identify section parameters from level-flight data or load measurements."""
 
 from __future__ import annotations
 
@@ -17,12 +17,15 @@ from ._common import InputError, load_params, load_prop
 fit_options = [
     click.option("--out", type=click.Path(path_type=Path), required=True, help="Parameter TOML to write."),
     click.option("--M", "M", type=float, default=None,
-                 help="Sigmoid sharpness used while fitting (default: that of --base, 50). 30 smooths the objective."),
+                 help="Stall-blend sharpness used while fitting (default: that of --base; the paper's model at "
+                      "M = 50 is fitted at M = 30 first and continued to 50)."),
     click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default="sigmoid", show_default=True,
-                 help="eq 3, or footnote 1's C_L = c_l sin a cos a (fits cl2, cd only)."),
+                 help="Paper's model: eq 3, or footnote 1's C_L = c_l sin a cos a (fits cl2, cd only)."),
+    click.option("--fit-params", "fit_params", default="",
+                 help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; "
+                      "cl_alpha,alpha_L0,cl_max,cd_min,cd2 for the cambered one, alpha_L0,cd_min for static data).")
+    ,
     click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage)."),
-    click.option("--base", "base_spec", default="gill2017-apc", show_default=True,
-                 help="Preset or file giving the constants not fitted (and the baseline for comparison)."),
     click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
 ]
 
@@ -34,18 +37,19 @@ def with_fit_options(f):
     return f
 
 
-def _options(M, lift_model, multistart):
+def _options(M, lift_model, multistart, fit_params):
     from ..identify import FitOptions
 
     if M is not None and not (math.isfinite(M) and M > 0):
         raise InputError(f"--M must be finite and > 0, got {M!r}")
     if multistart < 0:
         raise InputError(f"--multistart must be >= 0, got {multistart}")
-    return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True)
+    names = tuple(n.strip() for n in fit_params.split(",") if n.strip()) or None
+    return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True, names=names)
 
 
-def _write_outputs(result, out: Path, base_spec: str, as_json: bool, extra_text: str = "") -> dict:
-    report = {**result.to_dict(), "base": base_spec, "params_file": str(out)}
+def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "") -> dict:
+    report = {**result.to_dict(), "base": base_label, "params_file": str(out)}
     write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})")
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
@@ -54,25 +58,40 @@ def _write_outputs(result, out: Path, base_spec: str, as_json: bool, extra_text:
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
     click.echo(json.dumps(report, indent=2, default=float) if as_json else text)
+    for w in result.warnings:
+        click.echo(f"propmap: warning: {w}", err=True)
     click.echo(f"wrote {out}, {stem.name}.report.json, {stem.name}.report.txt, {stem.name}.png", err=True)
     return report
 
 
+def _run_fit(fn, *args, **kwargs):
+    try:
+        return fn(*args, **kwargs)
+    except ValueError as exc:
+        raise InputError(str(exc)) from None
+    except SolverError as exc:
+        raise click.ClickException(str(exc)) from None
+
+
 @click.group("fit")
 def fit() -> None:
-    """Identify (cl1, cl2, cd, alpha0) from flight data or load measurements (paper Sec. III)."""
+    """Identify section parameters from flight data or load measurements (paper Sec. III)."""
 
 
 @fit.command("level-flight")
 @click.argument("data", type=click.Path(path_type=Path))
 @click.option("--vehicle", type=click.Path(path_type=Path), required=True, help="Vehicle TOML.")
 @click.option("--body-lift", is_flag=True, help="Append the body-lift term of Sec. III-A and report whether it matters.")
+@click.option("--base", "base_spec", default="gill2017-apc", show_default=True,
+              help="The model and the constants not fitted: the paper's Table I sets (fit from the paper's x0), "
+                   "'generic' or a parameter file (cambered: fit from it).")
 @with_fit_options
-def level_flight(data, vehicle, body_lift, out, M, lift_model, multistart, base_spec, as_json):
+def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, as_json):
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     from dataclasses import replace
 
-    from ..identify import DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight, read_vehicle
+    from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
+                            read_vehicle)
     from ..identify.fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
 
@@ -84,14 +103,9 @@ def level_flight(data, vehicle, body_lift, out, M, lift_model, multistart, base_
         d = read_level_flight(data, veh)
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
-    base, air = load_params(base_spec)
-    opts = replace(_options(M, lift_model, multistart), body_lift=body_lift)
-    try:
-        res = fit_level_flight(d, veh, base=base, air=air, options=opts)
-    except ValueError as exc:
-        raise InputError(str(exc)) from None
-    except SolverError as exc:
-        raise click.ClickException(str(exc)) from None
+    base, air, base_label = load_params(base_spec, option="--base")
+    opts = replace(_options(M, lift_model, multistart, fit_params), body_lift=body_lift)
+    res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
     extra = (f"vertical-force error rms (rotors only): model {np.sqrt(np.mean((forces['vertical'] - veh.weight) ** 2)):.4f} N, "
@@ -101,97 +115,118 @@ def level_flight(data, vehicle, body_lift, out, M, lift_model, multistart, base_
         extra += (f"\nbody lift: max {bl['max_abs_N']:.4f} N ({100 * bl['max_abs_over_weight']:.2f}% of weight); "
                   f"rms residual {bl['rms_residual_with']:.4f} N with, {bl['rms_residual_without']:.4f} N without; "
                   f"F-test p = {bl['p_value']:.3g}: "
-                  f"{'it matters (p < 0.05)' if bl['matters'] else 'not significant: it can be left out (p >= 0.05)'}")
+                  + ("it matters (p < 0.05): the parameters written are those fitted with body lift"
+                     if bl["matters"] else "not significant (p >= 0.05): the parameters written are those fitted "
+                                           "without body lift"))
     stem = out.with_suffix("")
     plot_level_flight_fit(d, forces, hover, veh.weight, stem.with_name(stem.name + ".png"),
                           title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model")
-    _write_outputs(res, out, base_spec, as_json, extra)
+    _write_outputs(res, out, base_label, as_json, extra)
+
+
+def _read_sources(sources, prop_spec, diameter_in, blades, air):
+    """(data, propeller, catalogue entry or None, label) from the SOURCE arguments."""
+    from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
+    from ..io.catalogue import catalogue, get_entry
+    from ..io.readers import looks_like_uiuc
+
+    if len(sources) == 1 and sources[0] in catalogue():
+        if prop_spec is not None and prop_spec != sources[0]:
+            raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller; --prop must be omitted")
+        entry = get_entry(sources[0])
+        prop = load_prop(sources[0], None, None)
+        return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
+    missing = [s for s in sources if not Path(s).is_file()]
+    if missing:
+        raise InputError(f"SOURCE: {missing[0]!r} is neither a catalogue propeller nor a file")
+    if prop_spec is None:
+        raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
+    prop = load_prop(prop_spec, diameter_in, blades)
+    try:
+        if all(looks_like_uiuc(s) for s in sources):
+            return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
+        if len(sources) > 1:
+            raise InputError("SOURCE: several files must all be UIUC-format static (RPM CT CP) or wind-tunnel "
+                             "(J CT CP eta) files; give one CSV at a time")
+        return read_loads(sources[0]), prop, None, Path(sources[0]).name
+    except DataError as exc:
+        raise InputError(f"SOURCE: {exc}") from None
 
 
 @fit.command("loads")
-@click.argument("source")
-@click.option("--holdout", default="", help="Comma-separated run ids (catalogue) or group labels (CSV) to hold out.")
+@click.argument("sources", metavar="SOURCE...", nargs=-1, required=True)
+@click.option("--holdout", default="", help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
+                                            "to hold out.")
 @click.option("--quantities", default="", help="Comma-separated subset of thrust,drag,torque to fit (default: all).")
-@click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of a CSV SOURCE.")
+@click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of file SOURCEs.")
 @click.option("--diameter-in", type=float, default=None, help="Diameter [in] for a geometry file that lacks it.")
 @click.option("--blades", type=int, default=None, help="Blade count for a geometry file.")
+@click.option("--base", "base_spec", default=None,
+              help="The model, start and constants not fitted: default 'generic' (cambered, fitted to the "
+                   "catalogue); a parameter file, 'calibrated:NAME', or a Table I set for the paper's model.")
 @with_fit_options
-def loads(source, holdout, quantities, prop_spec, diameter_in, blades, out, M, lift_model, multistart, base_spec,
-          as_json):
-    """Fit to load measurements: a catalogue propeller's UIUC data, or a CSV with rpm, airspeed,
-    incidence_deg and any of thrust, drag, torque (and optional group)."""
-    from ..identify import DataError, fit_loads, loads_from_catalogue, read_loads
-    from ..io.catalogue import catalogue, get_entry
+def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, out, M, lift_model, fit_params,
+          multistart, as_json):
+    """Fit to load measurements of one propeller.
+
+    SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
+    rpm and any of thrust, drag, torque (airspeed and incidence_deg optional: a static
+    thrust stand; optional group), or UIUC-format static and wind-tunnel files.
+    """
+    from ..identify import fit_loads
     from ..validation import holdout_comparison
 
-    base, air = load_params(base_spec)
+    base, air, base_label = load_params(base_spec or "generic", option="--base")
+    data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
     held = tuple(h.strip() for h in holdout.split(",") if h.strip())
     qty = tuple(q.strip() for q in quantities.split(",") if q.strip()) or None
-    is_cat = source in catalogue()
-    if is_cat:
-        entry = get_entry(source)
-        prop = load_prop(source, None, None)
-        data = loads_from_catalogue(entry, prop.diameter, air=air)
-    else:
-        if not Path(source).is_file():
-            raise InputError(f"SOURCE: {source!r} is neither a catalogue propeller nor a file")
-        if prop_spec is None:
-            raise InputError("--prop: a CSV SOURCE needs the propeller (catalogue name or geometry file)")
-        prop = load_prop(prop_spec, diameter_in, blades)
-        try:
-            data = read_loads(source)
-        except DataError as exc:
-            raise InputError(f"SOURCE: {exc}") from None
     groups = set(data.group)
     unknown = [h for h in held if h not in groups]
     if unknown:
         raise InputError(f"--holdout: unknown run(s) {', '.join(unknown)}; available: {', '.join(sorted(groups))}")
-    if is_cat and any(h.startswith("static") for h in held):
+    if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    try:
-        res = fit_loads(train, prop, base=base, air=air, quantities=qty,
-                        options=_options(M, lift_model, multistart))
-    except ValueError as exc:
-        raise InputError(str(exc)) from None
-    except SolverError as exc:
-        raise click.ClickException(str(exc)) from None
+    res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty,
+                   options=_options(M, lift_model, multistart, fit_params))
     extra = ""
     stem = out.with_suffix("")
-    if is_cat:
+    if entry is not None:
         from ..plots import plot_load_fit
 
         if held:
             cmp = holdout_comparison(entry, prop, res.params, base, held, air=air)
             res.extra["holdout"] = {k: cmp[k] for k in ("holdout", "fitted", "baseline", "hover_model")}
             extra = (f"held-out ({', '.join(held)}) CT rmse: fitted {cmp['fitted']['ct_rmse']:.4f}, "
-                     f"{base_spec} {cmp['baseline']['ct_rmse']:.4f}, hover model {cmp['hover_model']['ct_rmse']:.4f}; "
-                     f"CP rmse: fitted {cmp['fitted']['cp_rmse']:.4f}, {base_spec} {cmp['baseline']['cp_rmse']:.4f}, "
-                     f"hover model {cmp['hover_model']['cp_rmse']:.4f}")
+                     f"{base_label} {cmp['baseline']['ct_rmse']:.4f}, hover model {cmp['hover_model']['ct_rmse']:.4f}; "
+                     f"CP rmse: fitted {cmp['fitted']['cp_rmse']:.4f}, {base_label} {cmp['baseline']['cp_rmse']:.4f}, "
+                     f"hover model {cmp['hover_model']['cp_rmse']:.4f} (coefficients, absolute)")
             vf, vb = cmp["validation_fitted"], cmp["validation_baseline"]
         else:
             from ..validation import validate
 
             vf, vb = validate(entry, prop, res.params, air=air), validate(entry, prop, base, air=air)
-        plot_load_fit(vf.runs, vb.runs, set(held), stem.with_name(stem.name + ".png"), baseline_label=base_spec,
-                      title=f"{source}: load fit vs measured\nData: {entry.citation}")
+        plot_load_fit(vf.runs, vb.runs, set(held), stem.with_name(stem.name + ".png"), baseline_label=base_label,
+                      title=f"{label}: load fit vs measured\nData: {entry.citation}")
     else:
         from ..core.solver import rotor_loads
         from ..plots import plot_load_parity
 
         model = {}
-        for name, p in (("fitted", res.params), (base_spec, base)):
+        for name, p in (("fitted", res.params), (base_label, base)):
             r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag")
             model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
         held_mask = np.isin(data.group, held)
         if held:
+            units = {"thrust": "N", "drag": "N", "torque": "N m"}
             res.extra["holdout"] = {
                 "holdout": list(held),
                 **{name: {f"{k}_rmse": float(np.sqrt(np.mean((m[k] - data.measured[k])[held_mask] ** 2)))
                           for k in data.measured} for name, m in model.items()}}
             extra = "held-out rmse: " + "; ".join(
-                f"{name}: " + ", ".join(f"{k} {v:.4g}" for k, v in res.extra["holdout"][name].items())
+                f"{name}: " + ", ".join(f"{k} {v:.4g} {units[k.removesuffix('_rmse')]}" for k, v in
+                                        res.extra["holdout"][name].items())
                 for name in model)
         plot_load_parity(data, model, held_mask, stem.with_name(stem.name + ".png"),
-                         title=f"load fit of {Path(source).name} ({prop.name})")
-    _write_outputs(res, out, base_spec, as_json, extra)
+                         title=f"load fit of {label} ({prop.name})")
+    _write_outputs(res, out, base_label, as_json, extra)

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..core.solver import SolverError, rotor_loads
 from ..io.atomic import atomic_write
-from ._common import InputError, check_point, echo_json, load_params, load_prop, with_prop_options
+from ._common import PARAMS_HELP, InputError, check_point, echo_json, load_params, load_prop, with_prop_options
 
 OUTPUT_KEYS = ("thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags")
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
@@ -81,8 +81,7 @@ def _solve(prop, params, air, pts: np.ndarray, progress: bool):
 @click.option("--airspeed", type=float, default=0.0, show_default=True, help="Airspeed V [m/s], >= 0.")
 @click.option("--incidence-deg", type=float, default=0.0, show_default=True,
               help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent.")
-@click.option("--params", "params_spec", default="gill2017-apc", show_default=True,
-              help="Preset (gill2017-soft|gill2017-stiff|gill2017-apc) or a parameter TOML file.")
+@click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--points", type=click.Path(path_type=Path), help="CSV with columns rpm, airspeed, incidence_deg.")
 @click.option("--out", type=click.Path(path_type=Path), help="Output CSV (with --points).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
@@ -93,7 +92,7 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     Outputs are SI: N, N m, W; CT and CP in the propeller convention.
     """
     propeller = load_prop(prop, diameter_in, blades)
-    params, air = load_params(params_spec)
+    params, air, params_label = load_params(params_spec, prop)
     if points is not None:
         if out is None:
             raise InputError("--out is required with --points")
@@ -108,7 +107,8 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
                 w.writerow([f"{x:.10g}" for x in pts[i]] + [f"{res[k][i]:.10g}" for k in res]
                            + [str(bool(conv[i])).lower(), flags[i]])
         n_bad = int((~conv).sum())
-        click.echo(f"wrote {len(pts)} points to {out}" + (f"; {n_bad} did not converge (see flags)" if n_bad else ""),
+        click.echo(f"wrote {len(pts)} points to {out} (params {params_label})"
+                   + (f"; {n_bad} did not converge (see flags)" if n_bad else ""),
                    err=True)
         return
     if rpm is None:
@@ -121,12 +121,12 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     result = {k: float(getattr(r, k)) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
     result.update(converged=bool(r.converged), flags=r.flags())
     if as_json:
-        echo_json({**result, "propeller": propeller.name, "rpm": rpm, "airspeed": airspeed,
+        echo_json({**result, "propeller": propeller.name, "params": params_label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg,
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
-               f"(params {params_spec})")
+               f"(params {params_label})")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}  flags: {', '.join(r.flags()) or 'none'}")

@@ -1,7 +1,8 @@
-"""``propmap validate``: the model against a catalogue propeller's bundled measurements."""
+"""``propmap validate``: the model against bundled measurements, one propeller or the whole catalogue."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import click
@@ -9,7 +10,7 @@ import click
 from ..core.solver import SolverError
 from ..io.catalogue import get_entry, load_propeller
 from ..validation import validate as run_validation
-from ._common import InputError, echo_json, load_params
+from ._common import PARAMS_HELP, InputError, echo_json, load_params
 
 
 def print_table(v) -> None:
@@ -25,32 +26,75 @@ def print_table(v) -> None:
     click.echo(f"model bias: CT {m['ct_bias']:+.4f}, CP {m['cp_bias']:+.4f}. Data: {v.citation}")
 
 
+def _check_out_dir(out_dir: Path) -> Path:
+    if out_dir.exists() and not out_dir.is_dir():
+        raise InputError(f"--out-dir: {out_dir} exists and is not a folder")
+    return out_dir
+
+
 @click.command("validate")
-@click.argument("prop")
-@click.option("--params", "params_spec", default="gill2017-apc", show_default=True,
-              help="Preset or parameter TOML file.")
+@click.argument("prop", required=False)
+@click.option("--all", "all_props", is_flag=True,
+              help="Cross-validate every catalogue propeller with measurements (about 6 minutes).")
+@click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
+@click.option("--protocols", default=",".join(("loso", "lowest", "static", "blind")), show_default=True,
+              help="With --all: comma-separated subset of loso, lowest, static, blind.")
+@click.option("--props", "only", default="", help="With --all: comma-separated catalogue names to restrict to.")
+@click.option("--out-dir", type=click.Path(path_type=Path), default=None,
+              help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")
 @click.option("--json", "as_json", is_flag=True, help="Print the errors as JSON.")
 @click.option("--figure", type=click.Path(path_type=Path), default=None,
-              help="PNG to write (default ./<PROP>_validation.png).")
-def validate(prop, params_spec, as_json, figure):
-    """Model and hover model against PROP's bundled UIUC static and J-sweep data."""
+              help="Single propeller: PNG of the model against the measurements (default: none written).")
+def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure):
+    """The model against bundled measurements.
+
+    PROP: the model and the hover model against that catalogue propeller's UIUC static
+    and J-sweep data. --all: held-out errors of every calibration protocol over the
+    catalogue, and the digitized published cases (APC 10x7E, DJI 9443, Beaver propeller
+    at incidence).
+    """
+    if all_props:
+        if prop:
+            raise InputError("give PROP or --all, not both")
+        if params_spec is not None:
+            raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
+        from .validate_all import run_all
+
+        run_all([p.strip() for p in protocols.split(",") if p.strip()],
+                [p.strip() for p in only.split(",") if p.strip()],
+                None if out_dir is None else _check_out_dir(out_dir), as_json)
+        return
+    if not prop:
+        raise InputError("give PROP (a catalogue propeller) or --all")
     try:
         entry = get_entry(prop)
     except KeyError as exc:
         raise InputError(f"PROP: {exc.args[0]} (validate needs a catalogue propeller with measurements)") from None
-    params, air = load_params(params_spec)
+    params, air, label = load_params(params_spec, prop)
     try:
         v = run_validation(entry, load_propeller(prop), params, air=air)
     except ValueError as exc:
         raise InputError(f"PROP: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    from ..plots import plot_validation
+    fig = None
+    if figure is not None:
+        from ..plots import plot_validation
 
-    fig = plot_validation(v, figure or Path(f"{prop}_validation.png"),
-                          title=f"{prop}, params {params_spec}: model vs measured")
+        fig = plot_validation(v, figure, title=f"{prop}, params {label}: model vs measured\nData: {entry.citation}")
     if as_json:
-        echo_json({**v.to_dict(), "figure": str(fig)})
+        echo_json({**v.to_dict(), "params_label": label, "figure": None if fig is None else str(fig)})
     else:
+        click.echo(f"{prop}, params {label}")
         print_table(v)
-        click.echo(f"figure: {fig}")
+        if fig is not None:
+            click.echo(f"figure: {fig}")
+
+
+def write_json(path: Path, obj) -> None:
+    """Write ``obj`` as JSON atomically."""
+    from ..io.atomic import atomic_write
+
+    with atomic_write(path, "w") as fh:
+        json.dump(obj, fh, indent=1, allow_nan=False)
+        fh.write("\n")

@@ -1,0 +1,192 @@
+"""``propmap validate --all``: cross-validation over the catalogue and the published cases."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+import numpy as np
+
+from ..validation import PROTOCOL_TEXT, PROTOCOLS
+from ._common import InputError, echo_json
+
+#: targets of the accuracy issue, rms |dCT| / static CT (docs/validation.md)
+TARGETS = {"loso": {"median": 0.03, "p90": 0.06, "worst": 0.09, "cp_median": 0.05},
+           "static": {"median": 0.05}, "blind": {"median": 0.10}}
+
+
+def summarize(values) -> dict:
+    """Median, 90th percentile and worst of per-propeller errors."""
+    v = np.asarray(values, float)
+    return {"median": float(np.median(v)), "p90": float(np.percentile(v, 90)), "worst": float(np.max(v)),
+            "n_propellers": int(v.size)}
+
+
+def _reference_errors(data, prop, air):
+    """No-fit references on all of a propeller's data: the paper's Table I and the hover model."""
+    from ..core.airfoil import preset
+    from ..validation import coefficient_errors
+
+    paper = coefficient_errors(data, prop, preset("gill2017-apc"), air=air)
+    static = data.airspeed == 0
+    n = data.omega / (2 * math.pi)
+    CT = data.measured["thrust"] / (air.rho * n**2 * prop.diameter**4)
+    CP = data.measured["torque"] * 2 * math.pi / (air.rho * n**2 * prop.diameter**5)
+    CT0, CP0 = CT[static].mean(), CP[static].mean()
+    sweeps = ~static  # the hover model is exact on average at J = 0: judge it on the sweeps
+    hover = {"rms_ct": float(np.sqrt(np.mean(((CT0 - CT[sweeps]) / CT0) ** 2))),
+             "rms_cp": float(np.sqrt(np.mean(((CP0 - CP[sweeps]) / CP0) ** 2)))}
+    return {"paper_table_i": paper, "hover_model": hover}
+
+
+def _one_propeller(name: str, protocols) -> dict:
+    """Cross-validation row of one catalogue propeller (runs in a worker process)."""
+    from ..core.airfoil import Air
+    from ..identify import loads_from_catalogue
+    from ..io.calibration import generic_without, population
+    from ..io.catalogue import catalogue, load_propeller
+    from ..validation import cross_validate
+
+    air = Air()
+    prop = load_propeller(name)
+    data = loads_from_catalogue(catalogue()[name], prop.diameter, air=air)
+    generic, label = generic_without(name)
+    cv = cross_validate(data, prop, generic, protocols=protocols, air=air, population=population(without=name))
+    return {"propeller": name, "generic_used": label, **cv, **_reference_errors(data, prop, air)}
+
+
+def _worker_init() -> None:
+    import numba
+
+    numba.set_num_threads(1)  # the workers share the cores; each runs small batches
+
+
+def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> dict:
+    """Per-propeller held-out errors of ``protocols`` and the no-fit references.
+
+    The propellers are spread over ``jobs`` worker processes (default: the cores),
+    each running the solver single-threaded: the fits evaluate small batches, for which
+    processes use the cores better than threads.
+    """
+    import os
+    from concurrent.futures import ProcessPoolExecutor
+    from multiprocessing import get_context
+
+    from tqdm import tqdm
+
+    from ..io.catalogue import catalogue
+
+    cat = catalogue()
+    names = only or sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2)
+    unknown = [n for n in names if n not in cat]
+    if unknown:
+        raise InputError(f"--props: unknown propeller(s) {', '.join(unknown)}")
+    short = [n for n in names if not (cat[n].static_files and len(cat[n].sweep_files) >= 2)]
+    if short:
+        raise InputError(f"--props: {', '.join(short)} lack(s) a static run and two sweeps")
+    jobs = min(jobs or os.cpu_count() or 1, len(names))
+    bar = tqdm(total=len(names), desc="validate --all", unit="prop", disable=None if progress else True, leave=False)
+    try:
+        if jobs <= 1:
+            rows = []
+            for n in names:
+                rows.append(_one_propeller(n, protocols))
+                bar.update(1)
+        else:
+            with ProcessPoolExecutor(jobs, mp_context=get_context("spawn"), initializer=_worker_init) as pool:
+                futures = [pool.submit(_one_propeller, n, tuple(protocols)) for n in names]
+                rows = []
+                for f in futures:
+                    rows.append(f.result())
+                    bar.update(1)
+    finally:
+        bar.close()
+    return {"propellers": rows,
+            "summary": {k: {"ct": summarize([r[k]["rms_ct"] for r in rows]),
+                            "cp": summarize([r[k]["rms_cp"] for r in rows])}
+                        for k in [*protocols, "paper_table_i", "hover_model"]}}
+
+
+def run_cases() -> dict:
+    """The digitized published cases with the paper's Table I, the generic set and the hover model."""
+    from ..cases import CASES, run_case
+    from ..core.airfoil import preset
+    from ..io.calibration import generic_params
+
+    sets = {"generic (cambered)": generic_params(), "gill2017-apc (paper)": preset("gill2017-apc")}
+    return {c: run_case(c, sets) for c in CASES}
+
+
+def _pct(x: float) -> str:
+    return f"{100 * x:5.1f}%"
+
+
+def print_report(cat: dict, cases: dict) -> None:
+    """The per-propeller and summary tables, then the published cases."""
+    protos = [k for k in PROTOCOLS if k in cat["summary"]]
+    click.echo("rms |dCT| / static CT and |dCP| / static CP on held-out data, per propeller "
+               "(UIUC vol. 1, Brandt & Selig AIAA 2011-1255):")
+    head = "".join(f"{p + ' CT':>11}{p + ' CP':>11}" for p in protos)
+    click.echo(f"{'propeller':<16}{head}{'paper CT':>10}{'hover CT':>10}")
+    for r in cat["propellers"]:
+        cells = "".join(f"{_pct(r[p]['rms_ct']):>11}{_pct(r[p]['rms_cp']):>11}" for p in protos)
+        click.echo(f"{r['propeller']:<16}{cells}{_pct(r['paper_table_i']['rms_ct']):>10}"
+                   f"{_pct(r['hover_model']['rms_ct']):>10}")
+    click.echo("\nsummary over the propellers (median / 90th percentile / worst):")
+    texts = {**PROTOCOL_TEXT, "paper_table_i": "the paper's Table I APC parameters, no fit, all data",
+             "hover_model": "hover model on the measured static CT, CP, judged on the sweeps"}
+    for k, s in cat["summary"].items():
+        text = texts[k]
+        click.echo(f"  {k:<13} CT {_pct(s['ct']['median'])} / {_pct(s['ct']['p90'])} / {_pct(s['ct']['worst'])}   "
+                   f"CP {_pct(s['cp']['median'])} / {_pct(s['cp']['p90'])} / {_pct(s['cp']['worst'])}   ({text})")
+    click.echo("\npublished cases (digitized; data/CITATION.md):")
+    for c, res in cases.items():
+        click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
+        for label, m in res.metrics.items():
+            click.echo(f"    {label:<24}" + ", ".join(f"{k} {v:.4g}" for k, v in m.items()))
+
+
+def _csv(path: Path, cat: dict) -> None:
+    import pandas as pd
+
+    from ..io.atomic import atomic_write
+
+    rows = []
+    for r in cat["propellers"]:
+        row = {"propeller": r["propeller"], "generic_used": r["generic_used"]}
+        for k, v in r.items():
+            if isinstance(v, dict):
+                row.update({f"{k}_{m}": v[m] for m in ("rms_ct", "rms_cp") if m in v})
+        rows.append(row)
+    with atomic_write(path, "w", newline="") as fh:
+        pd.DataFrame(rows).to_csv(fh, index=False, float_format="%.6g")
+
+
+def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
+    """Run the catalogue cross-validation and the published cases; print and write them."""
+    bad = [p for p in protocols if p not in PROTOCOLS]
+    if bad or not protocols:
+        raise InputError(f"--protocols: unknown or empty {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
+    cat = run_catalogue(protocols, only)
+    cases = run_cases()
+    case_json = {c: {"metrics": r.metrics, "citation": r.citation, "notes": r.notes} for c, r in cases.items()}
+    report = {"catalogue": cat, "cases": case_json, "targets": TARGETS,
+              "protocols": {k: PROTOCOL_TEXT[k] for k in protocols},
+              "units": "rms errors as fractions of the propeller's measured static CT / CP"}
+    if out_dir is not None:
+        from ..plots import plot_cases, plot_cv_summary
+        from .validate import write_json
+
+        out_dir.mkdir(parents=True, exist_ok=True)
+        write_json(out_dir / "validation.json", report)
+        _csv(out_dir / "validation_per_propeller.csv", cat)
+        plot_cv_summary(cat, out_dir / "cross_validation.png")
+        plot_cases(cases, out_dir / "published_cases.png")
+    if as_json:
+        echo_json(report)
+    else:
+        print_report(cat, cases)
+        if out_dir is not None:
+            click.echo(f"\nwrote {out_dir / 'validation.json'}, validation_per_propeller.csv, cross_validation.png, "
+                       "published_cases.png")
