@@ -36,7 +36,7 @@ def test_every_bundled_geometry_reads_and_solves(name):
 def test_apc_pe0_8x6e(shared_data):
     p = read_apc_pe0(shared_data / "apc_vendor_data/geometry_PE0/8x6E-PERF.PE0")
     assert p.radius == pytest.approx(0.1016)
-    assert p.r_hub / p.radius == pytest.approx(0.2384, abs=1e-3)  # NUMERICS.md: 0.238 R
+    assert p.r_hub / p.radius == pytest.approx(0.2384, abs=1e-3)  # docs/numerics.md: 0.238 R
     assert math.degrees(p.theta[0]) == pytest.approx(45.04) and math.degrees(p.theta[-1]) == pytest.approx(13.4906)
     assert p.chord.max() == pytest.approx(0.9412 * 0.0254)  # 23.9 mm
     assert p.pitch == pytest.approx(6 * 0.0254)

@@ -1,7 +1,7 @@
 """Verification against measured data: UIUC Propeller Data Site vol. 1, apce_8x6
 (Brandt & Selig, AIAA 2011-1255), APC 8x6E geometry from APC's PE0 file.
 
-Known bias with Table I parameters (Gill & D'Andrea 2017), recorded in NUMERICS.md and
+Known bias with Table I parameters (Gill & D'Andrea 2017), recorded in docs/numerics.md and
 docs/validation.md: eq (3) has C_L(0) = 0 (no camber), so the model overpredicts static
 CT (+8%), underpredicts static CP (-16%) and loses thrust too fast with J. The
 assertions below pin these numbers so that a change in them is noticed.
@@ -34,7 +34,7 @@ def test_j_sweep_known_bias_thrust_falls_too_fast(validation):
     sweep = [r for r in validation.runs if r.kind == "sweep" and r.run_id == "2801rd"][0]
     i = np.argmin(np.abs(sweep.J - 0.503))
     assert sweep.CT[i] == pytest.approx(0.0881)
-    assert sweep.CT_model[i] == pytest.approx(0.052, abs=0.004)  # NUMERICS.md: 0.052 vs 0.089
+    assert sweep.CT_model[i] == pytest.approx(0.052, abs=0.004)  # docs/numerics.md: 0.052 vs 0.089
     # the model still follows the trend: CT decreasing with J, correlated with measurement
     assert np.all(np.diff(sweep.CT_model[np.argsort(sweep.J)]) < 0)
     assert np.corrcoef(sweep.CT, sweep.CT_model)[0, 1] > 0.95
@@ -52,7 +52,7 @@ def test_pooled_errors_regression(validation):
 
 
 def test_model_zero_thrust_advance_ratio(apc8x6, apc_params):
-    # NUMERICS.md: zero thrust at J ~ 0.75 (measured: > 0.95)
+    # docs/numerics.md: zero thrust at J ~ 0.75 (measured: > 0.95)
     n = 6000 / 60
     J = np.linspace(0.6, 0.9, 61)
     r = pm.rotor_loads(apc8x6, apc_params, 2 * math.pi * n, J * n * apc8x6.diameter, 0.0)
