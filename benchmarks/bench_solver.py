@@ -1,9 +1,10 @@
-"""Solver benchmark: accuracy of the default discretization and speed (issue: core model).
+"""Solver benchmark: accuracy of the default discretization and speed, both section models.
 
 Run:  make bench        (or .venv/bin/python benchmarks/bench_solver.py [--quick])
 
-Propeller apce_8x6 (APC PE0 geometry), parameters gill2017-apc (Gill & D'Andrea 2017
-Table I). Prints a report and writes benchmarks/results/solver.json atomically.
+Propeller apce_8x6 (APC PE0 geometry); parameters gill2017-apc (Gill & D'Andrea 2017
+Table I) and the shipped generic cambered set (docs/models.md). Prints a report and writes
+benchmarks/results/solver.json atomically.
 
 * Accuracy: default Discretization vs a converged reference (1024 radial x 32 azimuth
   nodes) on random points over rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg; descent
@@ -13,6 +14,11 @@ Table I). Prints a report and writes benchmarks/results/solver.json atomically.
 * Speed: batch of 10,000 points (numba, all cores) and one point after warm-up, beside
   the straightforward vectorised NumPy implementation (src/propmap/core/_reference.py)
   timed in the same run; the paper's ~3 s per call for scale.
+* Section models: the cambered section (with and without tip loss, with hub loss)
+  against the paper's, timed in turn in one process (batch of 2,000 points, one thread
+  and all threads, 7 rounds), reported as the median of the paired ratios, with residual
+  evaluations per annulus (machine-independent) and the discretization accuracy of the
+  cambered model with tip loss.
 * JIT cache: wall time of a first call in two fresh processes (the second reads the
   compiled kernel from the on-disk cache).
 """
@@ -103,12 +109,43 @@ def speed(prop, params, n_batch):
 
 
 def simd_widths():
-    """Vector widths (doubles) LLVM used in the compiled residual (eq 11) loop."""
+    """Vector widths (doubles) LLVM used in the compiled residual (eq 11) loops of both models."""
     fresh = numba.njit(error_model="numpy", fastmath=_kernel._FM)(_kernel._residual.py_func)
     # the dispatcher loaded from the disk cache holds no IR: compile a copy for one call
-    fresh(1.0, *([0.1] * 10), np.linspace(-1.0, 1.0, 16), 16, *([0.5] * 6), False)
+    fresh(1.0, *([0.1] * 14), np.linspace(-1.0, 1.0, 16), 16, 0, np.full(8, 0.5))
     ir = "".join(fresh.inspect_llvm().values())
     return sorted({int(w) for w in re.findall(r"<(\d+) x double>", ir)})
+
+
+def section_models(prop, paper, n=2000, rounds=7):
+    """Per-point time of each section model against the paper's, paired in one process."""
+    from propmap.io.calibration import generic_params
+
+    g = generic_params()
+    models = {"gill2017-apc (paper)": paper, "cambered, tip loss (default)": g,
+              "cambered, no loss": g.replace(tip_loss=False), "cambered, tip + hub loss": g.replace(hub_loss=True)}
+    om, V, b = points(n, 0, 90, 5)
+    out = {}
+    threads_all = numba.get_num_threads()
+    for threads in (1, threads_all):
+        numba.set_num_threads(threads)
+        times = {k: [] for k in models}
+        for p in models.values():
+            pm.rotor_loads(prop, p, om[:50], V[:50], b[:50])
+        for _ in range(rounds):
+            for k, p in models.items():
+                t = time.perf_counter()
+                pm.rotor_loads(prop, p, om, V, b)
+                times[k].append(time.perf_counter() - t)
+        base = np.array(times["gill2017-apc (paper)"])
+        out[f"{threads}_threads"] = {k: {"us_per_point_median": 1e6 * float(np.median(v)) / n,
+                                         "ratio_to_paper_median_of_pairs": float(np.median(np.array(v) / base))}
+                                     for k, v in times.items()}
+    numba.set_num_threads(threads_all)
+    out["residual_evaluations_per_annulus"] = {
+        k: float(pm.rotor_loads(prop, p, om, V, b).n_evaluations.mean() / pm.DEFAULT_DISCRETIZATION.n_radial)
+        for k, p in models.items()}
+    return out
 
 
 def jit_cache():
@@ -121,15 +158,21 @@ def jit_cache():
 
 def main() -> None:
     quick = "--quick" in sys.argv
+    from propmap.io.calibration import generic_params
+
     prop, params = pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc")
     d = pm.DEFAULT_DISCRETIZATION
     res = {
+        "cpu": cpu_name(),
         "propeller": "apce_8x6 (APC PE0 geometry)", "params": "gill2017-apc (Gill & D'Andrea 2017 Table I)",
         "default_discretization": {"n_radial": d.n_radial, "n_azimuth": d.n_azimuth},
         "reference_discretization": {"n_radial": 1024, "n_azimuth": 32},
         "accuracy_climb_to_edgewise": accuracy(prop, params, 100 if quick else 500, 0, 90, 11),
         "accuracy_descent": accuracy(prop, params, 100 if quick else 300, 90, 180, 12),
         "speed": speed(prop, params, 2000 if quick else 10000),
+        "section_models": section_models(prop, params, n=500 if quick else 2000, rounds=3 if quick else 7),
+        "accuracy_cambered_tip_loss_climb_to_edgewise": accuracy(prop, generic_params(), 100 if quick else 500,
+                                                                 0, 90, 13),
         "first_call_s_in_fresh_process": jit_cache(),
     }
     out = Path(__file__).parent / "results" / "solver.json"
@@ -142,6 +185,22 @@ def main() -> None:
           f"single point {s['numba_single_point_us_median']:.0f} us; SIMD widths {s['simd_widths_in_residual_loop']}; "
           f"paper 3 s/call: "
           f"x{s['speedup_vs_paper_3s_per_call']:.0f}")
+    for k, v in res["section_models"]["1_threads"].items():
+        print(f"  one thread, {k}: {v['us_per_point_median']:.1f} us/pt, x{v['ratio_to_paper_median_of_pairs']:.2f} "
+              "the paper's model")
+
+
+def cpu_name() -> str:
+    """The CPU model (Linux /proc/cpuinfo), for reading absolute times."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    import platform
+
+    return platform.processor() or platform.machine()
 
 
 if __name__ == "__main__":

@@ -92,7 +92,7 @@ def demo(out_dir: Path, rpm: float):
     prop = load_propeller(PROP)
     generic, generic_label = generic_without(PROP)
     paper = preset(PAPER)
-    click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric, geometry {prop.source})")
+    click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric; {prop.source})")
     click.echo(f"models: the paper's eqs 3-4 with Table I ({PAPER}); the cambered section with Prandtl tip loss "
                f"and the {generic_label} set (fitted to half of the catalogue, without {PROP})\n")
 

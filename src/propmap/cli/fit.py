@@ -22,10 +22,11 @@ fit_options = [
     click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default="sigmoid", show_default=True,
                  help="Paper's model: eq 3, or footnote 1's C_L = c_l sin a cos a (fits cl2, cd only)."),
     click.option("--fit-params", "fit_params", default="",
-                 help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; "
-                      "cl_alpha,alpha_L0,cl_max,cd_min,cd2 for the cambered one, alpha_L0,cd_min for static data).")
-    ,
+                 help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; for the "
+                      "cambered one chosen by the data, docs/identification.md)."),
     click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage)."),
+    click.option("--no-prior", "no_prior", is_flag=True,
+                 help="Cambered model: fit without the catalogue population prior (docs/identification.md)."),
     click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
 ]
 
@@ -37,7 +38,7 @@ def with_fit_options(f):
     return f
 
 
-def _options(M, lift_model, multistart, fit_params):
+def _options(M, lift_model, multistart, fit_params, no_prior=False):
     from ..identify import FitOptions
 
     if M is not None and not (math.isfinite(M) and M > 0):
@@ -45,7 +46,8 @@ def _options(M, lift_model, multistart, fit_params):
     if multistart < 0:
         raise InputError(f"--multistart must be >= 0, got {multistart}")
     names = tuple(n.strip() for n in fit_params.split(",") if n.strip()) or None
-    return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True, names=names)
+    return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True, names=names,
+                      prior=not no_prior)
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "") -> dict:
@@ -86,7 +88,7 @@ def fit() -> None:
               help="The model and the constants not fitted: the paper's Table I sets (fit from the paper's x0), "
                    "'generic' or a parameter file (cambered: fit from it).")
 @with_fit_options
-def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, as_json):
+def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, no_prior, as_json):
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     from dataclasses import replace
 
@@ -104,7 +106,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
     base, air, base_label = load_params(base_spec, option="--base")
-    opts = replace(_options(M, lift_model, multistart, fit_params), body_lift=body_lift)
+    opts = replace(_options(M, lift_model, multistart, fit_params, no_prior), body_lift=body_lift)
     res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
@@ -166,7 +168,7 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
                    "catalogue); a parameter file, 'calibrated:NAME', or a Table I set for the paper's model.")
 @with_fit_options
 def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, out, M, lift_model, fit_params,
-          multistart, as_json):
+          multistart, no_prior, as_json):
     """Fit to load measurements of one propeller.
 
     SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
@@ -188,7 +190,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty,
-                   options=_options(M, lift_model, multistart, fit_params))
+                   options=_options(M, lift_model, multistart, fit_params, no_prior))
     extra = ""
     stem = out.with_suffix("")
     if entry is not None:

@@ -298,5 +298,7 @@ def cambered_annulus(U2, ln_re_c, cy2, mach2_c, cl_alpha, re_exp, re_exp_lift, c
     a = cl_alpha * np.exp(re_exp_lift * ln_re)
     if compressible:
         a = a / np.sqrt(1.0 - np.minimum(U2 * mach2_c, 0.81))
-    return (a, np.exp(re_exp * ln_re), np.exp(re_exp_stall * ln_re) * (1.0 + stall_delay * cy2),
-            alpha_L0_re * ln_re)
+    g = 1.0 + stall_delay * cy2
+    if re_exp_stall != 0.0:  # 0 by default: skip an exponential per annulus
+        g = g * np.exp(re_exp_stall * ln_re)
+    return a, np.exp(re_exp * ln_re), g, alpha_L0_re * ln_re

@@ -1,0 +1,35 @@
+"""Validation over the catalogue: the numbers of docs/validation.md, with their run time.
+
+Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 6 minutes on 2 cores)
+
+Same as ``propmap validate --all --out-dir benchmarks/results/validation``: held-out errors
+of every calibration protocol for the 108 catalogue propellers (UIUC Propeller Data Site
+vol. 1, Brandt & Selig, AIAA 2011-1255) and the digitized published cases; adds the wall
+time and the CPU to benchmarks/results/validation/timing.json.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from pathlib import Path
+
+from propmap.cli.validate_all import run_all
+from propmap.io.atomic import atomic_write
+
+
+def main() -> None:
+    out = Path(__file__).parent / "results" / "validation"
+    t0 = time.perf_counter()
+    run_all(["loso", "lowest", "static", "blind"], [], out, as_json=False)
+    wall = time.perf_counter() - t0
+    from bench_solver import cpu_name
+
+    with atomic_write(out / "timing.json") as fh:
+        json.dump({"wall_s": wall, "cpu": cpu_name(), "cores": os.cpu_count()}, fh, indent=1)
+    print(f"validation over the catalogue: {wall:.0f} s on {os.cpu_count()} cores ({cpu_name()})")
+
+
+if __name__ == "__main__":
+    main()
