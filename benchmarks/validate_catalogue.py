@@ -1,6 +1,6 @@
 """Validation over the catalogue: the numbers of docs/validation.md, with their run time.
 
-Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 6 minutes on 2 cores)
+Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 4.5 minutes on 2 cores)
 
 Same as ``propmap validate --all --out-dir benchmarks/results/validation``: held-out errors
 of every calibration protocol for the 108 catalogue propellers (UIUC Propeller Data Site
