@@ -17,12 +17,11 @@ env: $(STAMP)
 demo: $(STAMP)
 	$(BIN)/propmap demo
 
-# numba keys its disk cache on _kernel.py alone; drop it so that edits to the physics it
-# inlines (_physics.py, _fastmath.py) are always compiled into what the tests run
+# the kernel's disk cache is stamped with every module it compiles in (core/_jitcache.py),
+# so it is kept between runs: the first propmap call after make test or make demo is fast
 NUMBA_CACHE := find src -name '*.nbi' -o -name '*.nbc'
 
 test: $(STAMP)
-	$(NUMBA_CACHE) | xargs rm -f
 	$(BIN)/python -m pytest -q
 
 bench: $(STAMP)

@@ -159,3 +159,23 @@ def test_the_cambered_model_costs_about_as_much_as_the_papers(apc8x6, apc_params
     n_paper = pm.rotor_loads(apc8x6, apc_params, om, V, b).n_evaluations.mean() / 48
     n_camb = pm.rotor_loads(apc8x6, CAMBERED, om, V, b).n_evaluations.mean() / 48
     assert n_camb < 1.1 * n_paper
+
+
+def test_zero_chord_stations_stay_finite_at_extreme_reynolds_exponents():
+    """A blade whose tip chord is 0 (cfac = 0 there) with re_exp and re_exp_lift at the
+    edges of their fitting bounds: no NaN, no failed solve."""
+    R = 0.1
+    prop = pm.Propeller("tapered", R, 2, np.linspace(0.2, 1.0, 9) * R, np.linspace(0.02, 0.0, 9),
+                        np.radians(np.linspace(35, 12, 9)))
+    p = CAMBERED.replace(re_exp=-1.5, re_exp_lift=-0.3)
+    r = pm.rotor_loads(prop, p, 900.0, [0.0, 10.0], [0.0, 1.2])
+    assert r.converged.all() and np.all(np.isfinite(r.thrust)) and np.all(np.isfinite(r.torque))
+
+
+def test_reynolds_corrections_are_held_beyond_the_calibrated_range():
+    """Outside Re in [1e4, 5e5] (Re_ref = 1e5) the factors no longer change (docs/models.md)."""
+    p = CAMBERED.replace(re_exp=-0.6, alpha_L0_re=math.radians(-2.0), M=400.0)
+    a = p.alpha_L0 + math.radians(2.0)
+    assert pm.lift_coefficient(a, p, 1e3) == pytest.approx(pm.lift_coefficient(a, p, 1e4), rel=1e-12)
+    assert pm.drag_coefficient(a, 5e6, p) == pytest.approx(pm.drag_coefficient(a, 5e5, p), rel=1e-12)
+    assert pm.drag_coefficient(a, 2e5, p) != pytest.approx(pm.drag_coefficient(a, 1e5, p), rel=1e-3)

@@ -100,9 +100,11 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
     # the point-level flag is computed per annulus: the 200-node run sees the fold
 
 
-@pytest.mark.parametrize("which", ["gill2017", "cambered_tip_hub"])
+@pytest.mark.parametrize("which", ["gill2017", "cambered_tip_hub", "cambered_stall_terms"])
 def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points, which):
-    params = apc_params if which == "gill2017" else pm.CamberedParams(tip_loss=True, hub_loss=True)
+    params = {"gill2017": apc_params, "cambered_tip_hub": pm.CamberedParams(tip_loss=True, hub_loss=True),
+              "cambered_stall_terms": pm.CamberedParams(re_exp_stall=0.2, stall_delay=2.0,
+                                                        alpha_L0_re=math.radians(-1.5))}[which]
     om, V, b = envelope_points
     r = pm.rotor_loads(apc8x6, params, om, V, b)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)

@@ -4,19 +4,38 @@ The rotor model of Gill & D'Andrea, "Propeller Thrust and Drag in Forward Flight
 2017 (doi:10.1109/CCTA.2017.8062440), with the paper's section model or a cambered one
 calibrated on UIUC measurements (docs/models.md). Units are SI throughout (rad, rad/s, m/s,
 N, N m).
+
+The public names are imported on first use (PEP 562), so that ``import propmap`` and the
+command line start without loading numba and SciPy until they are needed.
 """
 
-from .core import (DEFAULT_DISCRETIZATION, PRESETS, Air, AirfoilParams, CamberedParams, Discretization, HoverModel, Propeller,
-                   RotorLoads, RotorWrench, SolverError, drag_coefficient, lift_coefficient, preset, rotor_loads,
-                   rotor_wrench)
-from .io import catalogue, load_propeller, read_geometry, read_params, resolve_params, write_params
-from .io.calibration import default_params, generic_params
+from __future__ import annotations
+
+import importlib
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "Air", "AirfoilParams", "CamberedParams", "PRESETS", "preset", "lift_coefficient", "drag_coefficient", "Propeller",
-    "HoverModel", "Discretization", "DEFAULT_DISCRETIZATION", "RotorLoads", "SolverError", "rotor_loads",
-    "RotorWrench", "rotor_wrench", "catalogue", "load_propeller", "read_geometry", "read_params",
-    "resolve_params", "write_params", "default_params", "generic_params", "__version__",
-]
+_EXPORTS = {
+    "Air": "core.airfoil", "AirfoilParams": "core.airfoil", "CamberedParams": "core.airfoil",
+    "PRESETS": "core.airfoil", "preset": "core.airfoil", "lift_coefficient": "core.airfoil",
+    "drag_coefficient": "core.airfoil", "Propeller": "core.geometry", "HoverModel": "core.hover",
+    "Discretization": "core.solver", "DEFAULT_DISCRETIZATION": "core.solver", "RotorLoads": "core.solver",
+    "SolverError": "core.solver", "rotor_loads": "core.solver", "RotorWrench": "core.vector",
+    "rotor_wrench": "core.vector", "catalogue": "io.catalogue", "load_propeller": "io.catalogue",
+    "read_geometry": "io.readers", "read_params": "io.params_file", "resolve_params": "io.params_file",
+    "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
+}
+
+__all__ = [*_EXPORTS, "__version__"]
+
+
+def __getattr__(name: str):
+    if name in _EXPORTS:
+        value = getattr(importlib.import_module(f".{_EXPORTS[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'propmap' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

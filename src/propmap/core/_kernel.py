@@ -31,6 +31,7 @@ import numba
 import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
+from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import (CAMBERED, GILL_SINCOS, cambered_annulus, inverse_sin_phi, make_cambered_element, make_element,
                        make_loss_factor, make_prandtl, momentum_scale, momentum_thrust)
 
@@ -64,7 +65,8 @@ _cambered_annulus = _jit_inline(cambered_annulus)
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
-    """Either model's element (scalar; tests). The kernel loops branch outside the element."""
+    """Either model's element (scalar): the loads pass and the tests; the residual loops
+    branch outside the element instead (docs/models.md, Cost)."""
     if model == CAMBERED:
         return _element_cambered(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5],
                                  pk[6], pk[7])
@@ -105,7 +107,7 @@ _SCAN = 3
 _REFINE = 4
 
 
-@numba.njit(cache=True, error_model="numpy", fastmath=_FM)
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
                  v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
@@ -284,8 +286,8 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
     return cfac * aT / naz, dD, y * cfac * aQ / naz
 
 
-@numba.njit(parallel=True, cache=True, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam,
+@numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
+def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
                 T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
     """Solve every operating point; results are written into the output arrays.
 
@@ -294,8 +296,9 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sin
     Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
     the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
-    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs T, D, Q, nmulti, nvrs, nevals, status shape (n,); vi, dT,
-    dD, dQ shape (n, nr). ``status[i]`` is 0 when every annulus converged, else
+    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs T, D, Q, nmulti,
+    nvrs, nevals, status shape (n,); vi, dT, dD, dQ shape (n, nr) when ``radial``, else
+    unused (pass (1, nr) arrays). ``status[i]`` is 0 when every annulus converged, else
     1 + (first failing annulus index) * 4 + (annulus status code).
     """
     n = Om.shape[0]
@@ -304,7 +307,8 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sin
     for i in numba.prange(n):
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_full  # the integrand is independent of psi
-        v = vi[i]  # the roots are written straight into the output row
+        # the roots are written straight into the output row, or into scratch
+        v = vi[i] if radial else np.empty(nr)
         code = np.empty(nr, dtype=np.int64)
         nev = np.empty(nr, dtype=np.int64)
         multiple = np.empty(nr, dtype=np.bool_)
@@ -341,17 +345,19 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sin
             if code[j] != OK:
                 if st == 0:
                     st = 1 + j * 4 + code[j]
-                dT[i, j] = np.nan
-                dD[i, j] = np.nan
-                dQ[i, j] = np.nan
+                if radial:
+                    dT[i, j] = np.nan
+                    dD[i, j] = np.nan
+                    dQ[i, j] = np.nan
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
             t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
                                     s3[j], cfac[j], sinpsi, naz, model, pk, axial)
-            dT[i, j] = t
-            dD[i, j] = d
-            dQ[i, j] = q
+            if radial:
+                dT[i, j] = t
+                dD[i, j] = d
+                dQ[i, j] = q
             Ti += w[j] * t
             Di += w[j] * d
             Qi += w[j] * q

@@ -182,7 +182,8 @@ def make_prandtl(atan2, exp_sat):
         acos(x) = atan2(sqrt(1 - x^2), x). Branch-free, so that a loop over annuli
         vectorises.
         """
-        x = exp_sat(-c * inv_sin)
+        # exp_sat may exceed 1 by 6e-14 for arguments near 0: clamp, or sqrt would give NaN
+        x = np.minimum(exp_sat(-c * inv_sin), 1.0)
         return TWO_OVER_PI * atan2(np.sqrt(1.0 - x * x), x)
 
     return prandtl
@@ -262,6 +263,13 @@ def momentum_scale(B0, mom_fac, Vs, Vc):
     return np.maximum(k / np.sqrt(Vs * Vs + Vc * Vc + k + 1e-300), 1e-6)
 
 
+#: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),
+#: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: the calibration data span 16,000-135,000 at
+#: 0.75 R (docs/models.md), and a power or log law is not extrapolated further
+LN_RE_MIN = -2.302585092994046
+LN_RE_MAX = 1.6094379124341003
+
+
 def cambered_annulus(U2, ln_re_c, cy2, mach2_c, cl_alpha, re_exp, re_exp_lift, compressible, re_exp_stall,
                      stall_delay, alpha_L0_re):
     """Per-annulus Reynolds-, Mach- and rotation-corrected constants of the cambered section.
@@ -270,6 +278,8 @@ def cambered_annulus(U2, ln_re_c, cy2, mach2_c, cl_alpha, re_exp, re_exp_lift, c
     (V sin beta)^2 / 2 + (V cos beta)^2, the azimuth mean of the section's U^2 without
     the induced inflow (computing it per element would cost a pow per element
     evaluation; v_i changes the factors by < 0.3% over the outer blade in hover).
+    ln(Re / Re_ref) is clamped to [LN_RE_MIN, LN_RE_MAX]: the corrections are held
+    constant beyond the Reynolds numbers the calibration saw.
 
     Parameters
     ----------
@@ -294,7 +304,7 @@ def cambered_annulus(U2, ln_re_c, cy2, mach2_c, cl_alpha, re_exp, re_exp_lift, c
         (Re/Re_ref)^re_exp_stall (1 + stall_delay (c/y)^2) [-] and zero-lift shift
         alpha_L0_re ln(Re/Re_ref) [rad].
     """
-    ln_re = ln_re_c + 0.5 * np.log(U2 + 1e-300)
+    ln_re = np.minimum(np.maximum(ln_re_c + 0.5 * np.log(U2 + 1e-300), LN_RE_MIN), LN_RE_MAX)
     a = cl_alpha * np.exp(re_exp_lift * ln_re)
     if compressible:
         a = a / np.sqrt(1.0 - np.minimum(U2 * mach2_c, 0.81))

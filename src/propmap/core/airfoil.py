@@ -183,9 +183,11 @@ class CamberedParams:
     ``C_L = a (alpha - alpha_L0)`` and
     ``C_D = (cd_min + cd2 (C_L - cl_cdmin)^2) (Re / re_ref)^re_exp``,
     with ``a = cl_alpha (Re / re_ref)^re_exp_lift`` (divided by sqrt(1 - Ma^2) when
-    ``compressibility``). Stall: eq (3)'s sigmoid of sharpness ``M`` switches, at the
-    angles ``cl_max / cl_alpha`` above and ``cl_min / cl_alpha`` below the zero-lift
-    line, to the flat plate ``C_L = cd90 sin a cos a``, ``C_D = cd90 sin^2 a`` (plus the
+    ``compressibility``); Re / re_ref is held within [0.1, 5]. Stall: eq (3)'s sigmoid of
+    sharpness ``M`` switches, at the angles ``cl_max / cl_alpha`` above and
+    ``cl_min / cl_alpha`` below the zero-lift line (fixed angles, so the stall C_L follows
+    the corrected slope a: Reynolds and Prandtl-Glauert factors included), to the flat
+    plate ``C_L = cd90 sin a cos a``, ``C_D = cd90 sin^2 a`` (plus the
     profile drag), which holds at 90 deg and in reverse flow.
 
     Parameters
@@ -220,7 +222,7 @@ class CamberedParams:
         1 + stall_delay (c/r)^2 [-], in [0, 20].
     alpha_L0_re : float
         Reynolds dependence of the zero-lift angle d alpha_L0 / d ln(Re) [rad], in
-        [-5, 5] deg (positive: less effective camber at low Re).
+        [-5, 5] deg (negative, with alpha_L0 < 0: less effective camber at low Re).
     M : float
         Stall-blend sharpness [1/rad], > 0.
     compressibility : bool
@@ -352,13 +354,10 @@ def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
     alpha, reynolds, mach = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (alpha, reynolds, mach)))
     model, pk = _model_constants(params)
     if model == ph.CAMBERED:
-        ln_re = np.log(reynolds / params.re_ref)
-        s0 = params.cl_alpha * np.exp(params.re_exp_lift * ln_re)
-        if params.compressibility:
-            s0 = s0 / np.sqrt(1.0 - np.minimum(mach * mach, 0.81))
-        s1 = np.exp(params.re_exp * ln_re)
-        s2 = np.exp(params.re_exp_stall * ln_re)
-        s3 = params.alpha_L0_re * ln_re
+        # the solver's per-annulus factors with U = 1: Re / Re_ref = exp(ln_re_c), Ma^2 = mach2_c
+        p = params
+        s0, s1, s2, s3 = ph.cambered_annulus(1.0, np.log(reynolds / p.re_ref), 0.0, mach * mach, p.cl_alpha, p.re_exp,
+                                             p.re_exp_lift, p.compressibility, p.re_exp_stall, 0.0, p.alpha_L0_re)
     else:
         # eq (4)'s Blasius term 2 * 1.02 c_p / sqrt(Re) = s0 / sqrt(U) with U = 1
         s0, s1, s2, s3 = 2.0 * 1.02 * params.cp_blasius / np.sqrt(reynolds), 0.0, 0.0, 0.0

@@ -116,7 +116,9 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     th = prop.theta_at(y)
     cpos = np.maximum(c, 1e-300)
     if isinstance(params, CamberedParams):
-        sc = np.log(air.rho * cpos / (air.mu * params.re_ref))
+        # a zero chord carries no load (cfac = 0); its Reynolds number is set to Re_ref so
+        # that the factors stay finite (ln 0 would overflow them)
+        sc = np.where(c > 0, np.log(air.rho * cpos / (air.mu * params.re_ref)), 0.0)
     else:
         sc = np.where(c > 0, 2.0 * 1.02 * params.cp_blasius * np.sqrt(air.mu / (air.rho * cpos)), 0.0)
     half_b = 0.5 * prop.n_blades
@@ -167,10 +169,11 @@ class RotorLoads:
         Advance ratio V/(n D) [-] (total airspeed).
     r : ndarray, shape (n_radial,)
         Radial nodes [m].
-    v_i : ndarray, shape S + (n_radial,)
+    v_i : ndarray, shape S + (n_radial,), or None
         Induced inflow v_i(r) [m/s] along the rotor axis, positive with the thrust
         (through the disk in the thrust-opposite direction, i.e. into the slipstream).
-    dT_dr, dD_dr, dQ_dr : ndarray, shape S + (n_radial,)
+        None when computed with ``radial=False`` (as the three below).
+    dT_dr, dD_dr, dQ_dr : ndarray, shape S + (n_radial,), or None
         Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7).
     converged : ndarray of bool
         Every annulus root converged.
@@ -198,10 +201,10 @@ class RotorLoads:
     drag: np.ndarray
     torque: np.ndarray
     r: np.ndarray
-    v_i: np.ndarray
-    dT_dr: np.ndarray
-    dD_dr: np.ndarray
-    dQ_dr: np.ndarray
+    v_i: np.ndarray | None
+    dT_dr: np.ndarray | None
+    dD_dr: np.ndarray | None
+    dQ_dr: np.ndarray | None
     converged: np.ndarray
     vortex_ring: np.ndarray
     multiple_roots: np.ndarray
@@ -252,14 +255,49 @@ class RotorLoads:
         return names
 
 
-def _as_array(name: str, value, low: float, high: float, *, low_open: bool, unit: str) -> np.ndarray:
-    a = np.asarray(value, dtype=float)
-    bad = ~np.isfinite(a) | (a < low) | (a > high) | ((a == low) if low_open else False)
-    if np.any(bad):
-        first = a.reshape(-1)[int(np.argmax(bad.reshape(-1)))]
-        lo = "(" if low_open else "["
-        raise ValueError(f"{name} must be finite and in {lo}{low:g}, {high:g}] {unit}; got {first!r}")
+#: the rotation rate's range [rad/s]: below OMEGA_MIN the propeller-convention coefficients,
+#: referred to n^2, overflow (a parked propeller is not modelled)
+OMEGA_MIN = 0.1
+OMEGA_MAX = 1e5
+AIRSPEED_MAX = 500.0
+_RANGES = {"omega": (OMEGA_MIN, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
+           "incidence": (0.0, math.pi, "rad")}
+
+
+def _range_error(name: str, value) -> ValueError:
+    lo, hi, unit = _RANGES[name]
+    why = ""
+    if name == "omega" and isinstance(value, float) and 0 <= value < lo:
+        why = " (a parked propeller is not modelled: the coefficients are referred to the rotation rate)"
+    if name == "incidence" and isinstance(value, float) and -math.pi <= value < 0:
+        why = " (the model is symmetric in the incidence: give its magnitude)"
+    return ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got {value!r}{why}")
+
+
+def _as_array(name: str, value) -> np.ndarray:
+    """``value`` as a float array, checked against ``_RANGES[name]``; strings and bools refused."""
+    lo, hi, _ = _RANGES[name]
+    a = np.asarray(value)
+    if a.dtype.kind not in "fiu":
+        raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
+    a = a.astype(float, copy=False)
+    with np.errstate(invalid="ignore"):
+        bad = ~((a >= lo) & (a <= hi))  # also catches NaN
+    if bad.any():
+        raise _range_error(name, float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))]))
     return a
+
+
+def _scalar(name: str, value) -> float:
+    """Fast path for a Python or NumPy real scalar (no array machinery)."""
+    lo, hi, _ = _RANGES[name]
+    x = float(value)
+    if not lo <= x <= hi:
+        raise _range_error(name, x)
+    return x
+
+
+_REAL_SCALARS = (float, int, np.floating, np.integer)
 
 
 def rotor_loads(
@@ -272,6 +310,7 @@ def rotor_loads(
     air: Air = Air(),
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     on_failure: str = "raise",
+    radial: bool = True,
 ) -> RotorLoads:
     """Thrust, rotor drag and torque of a propeller at any operating point.
 
@@ -288,7 +327,8 @@ def rotor_loads(
     propeller : Propeller
     params : AirfoilParams or CamberedParams
     omega : float or array_like
-        Rotation rate Omega [rad/s], finite, in (0, 1e5].
+        Rotation rate Omega [rad/s], finite, in [0.1, 1e5] (below 0.1 rad/s the
+        coefficients, referred to n^2, overflow: a parked propeller is not modelled).
     airspeed : float or array_like
         Speed V of the disk relative to the air [m/s], finite, in [0, 500].
     incidence : float or array_like
@@ -301,6 +341,10 @@ def rotor_loads(
     on_failure : {"raise", "flag"}
         ``"raise"`` (default): raise SolverError if any annulus fails. ``"flag"``:
         return, with ``converged`` False and NaN loads at the failed points.
+    radial : bool
+        Keep the per-annulus outputs (``v_i``, ``dT_dr``, ``dD_dr``, ``dQ_dr``; 4 n_radial
+        doubles, 1.5 kB per point at the default). False: they are None and large batches
+        need only the per-point outputs.
 
     Returns
     -------
@@ -310,21 +354,32 @@ def rotor_loads(
     Raises
     ------
     ValueError
-        An input outside its range (the message names it and the range).
+        An input that is not a number (a string, a bool), outside its range, or of
+        shapes that do not broadcast (the message names it and the range).
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
     """
     if on_failure not in ("raise", "flag"):
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
-    om = _as_array("omega", omega, 0.0, 1e5, low_open=True, unit="rad/s")
-    V = _as_array("airspeed", airspeed, 0.0, 500.0, low_open=False, unit="m/s")
-    b = _as_array("incidence", incidence, 0.0, math.pi, low_open=False, unit="rad")
-    om, V, b = np.broadcast_arrays(om, V, b)
-    shape = om.shape
-    om1 = np.ascontiguousarray(om.reshape(-1))
-    V1 = V.reshape(-1)
-    b1 = b.reshape(-1)
+    if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
+            and type(incidence) in _REAL_SCALARS):
+        shape = ()
+        om1 = np.array([_scalar("omega", omega)])
+        V1 = np.array([_scalar("airspeed", airspeed)])
+        b1 = np.array([_scalar("incidence", incidence)])
+    else:
+        try:
+            om, V, b = np.broadcast_arrays(_as_array("omega", omega), _as_array("airspeed", airspeed),
+                                           _as_array("incidence", incidence))
+        except ValueError as exc:
+            if "broadcast" in str(exc):
+                raise ValueError(f"omega, airspeed and incidence must broadcast together: {exc}") from None
+            raise
+        shape = om.shape
+        om1 = np.ascontiguousarray(om.reshape(-1))
+        V1 = V.reshape(-1)
+        b1 = b.reshape(-1)
     Vs = np.ascontiguousarray(V1 * np.sin(b1))
     Vc = np.ascontiguousarray(V1 * np.cos(b1))
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
@@ -334,10 +389,11 @@ def rotor_loads(
     T = np.empty(n)
     D = np.empty(n)
     Q = np.empty(n)
-    vi = np.empty((n, nr))
-    dT = np.empty((n, nr))
-    dD = np.empty((n, nr))
-    dQ = np.empty((n, nr))
+    rows = n if radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
+    vi = np.empty((rows, nr))
+    dT = np.empty((rows, nr))
+    dD = np.empty((rows, nr))
+    dQ = np.empty((rows, nr))
     status = np.empty(n, dtype=np.int64)
     nmulti = np.empty(n, dtype=np.int64)
     nvrs = np.empty(n, dtype=np.int64)
@@ -349,7 +405,7 @@ def rotor_loads(
     try:
         _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2,
                             nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk, _cambered_args(params, air),
-                            T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
+                            bool(radial), T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
     finally:
         if numba.get_num_threads() != threads:
             numba.set_num_threads(threads)
@@ -365,17 +421,17 @@ def rotor_loads(
             f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
         )
     rfr = Vs / om1
-
-    def s(a):
-        return a.reshape(shape)
-
-    def s2(a):
-        return a.reshape(shape + (nr,))
-
+    if len(shape) == 1:  # the common case: no reshaping
+        def s(a):
+            return a
+    else:
+        def s(a):
+            return a.reshape(shape)
+    radial_out = ([a.reshape(shape + (nr,)) for a in (vi, dT, dD, dQ)] if radial else [None] * 4)
     return RotorLoads(
-        omega=s(om1), airspeed=s(V1.copy()), incidence=s(b1.copy()),
+        omega=s(om1), airspeed=s(V1), incidence=s(b1),
         thrust=s(T), drag=s(D), torque=s(Q), r=nd.y,
-        v_i=s2(vi), dT_dr=s2(dT), dD_dr=s2(dD), dQ_dr=s2(dQ),
+        v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3],
         converged=s(converged), vortex_ring=s(nvrs > 0), multiple_roots=s(nmulti > 0),
         reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), n_evaluations=s(nev),
         rho=air.rho, diameter=propeller.diameter,

@@ -1,0 +1,65 @@
+"""The compiled kernel's disk cache, keyed on every module it compiles in.
+
+numba stamps a cached function with a hash of the file that defines it only. The kernel
+(``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py``, so an edit
+there would leave numba serving a kernel compiled from the old physics. The locators
+below serve ``_kernel.py`` alone and stamp its cache with a SHA-256 over all three files'
+contents, so that editing any of them recompiles. They are registered ahead of numba's
+own locators (numba.core.caching, an internal API); if that API is not found,
+:data:`CACHE` is False and the kernel is compiled in every process instead of risking a
+stale one.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from pathlib import Path
+
+__all__ = ["CACHE", "KERNEL_SOURCES", "sources_stamp"]
+
+_HERE = Path(__file__).resolve().parent
+#: the files whose code the compiled kernel contains
+KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_physics.py", _HERE / "_fastmath.py")
+
+
+def sources_stamp(paths=KERNEL_SOURCES) -> bytes:
+    """SHA-256 over the contents of ``paths`` (the kernel cache's stamp)."""
+    h = hashlib.sha256()
+    for p in paths:
+        h.update(Path(p).read_bytes())
+    return h.digest()
+
+
+def _install() -> bool:
+    try:
+        from numba.core import caching
+
+        bases = [caching.UserProvidedCacheLocator, caching.InTreeCacheLocator, caching.UserWideCacheLocator]
+        impl = getattr(caching, "CacheImpl", None) or caching._CacheImpl
+        impl._locator_classes  # noqa: B018 (the attribute must exist)
+    except (ImportError, AttributeError):
+        return False
+    kernel = os.path.realpath(KERNEL_SOURCES[0])
+
+    def make(base):
+        class KernelLocator(base):
+            def get_source_stamp(self):
+                return sources_stamp()
+
+            @classmethod
+            def from_function(cls, py_func, py_file):
+                if os.path.realpath(py_file) != kernel:
+                    return None
+                return super().from_function(py_func, py_file)
+
+        KernelLocator.__name__ = f"PropmapKernel{base.__name__}"
+        return KernelLocator
+
+    if not any(getattr(c, "__name__", "").startswith("PropmapKernel") for c in impl._locator_classes):
+        impl._locator_classes[:0] = [make(b) for b in bases]
+    return True
+
+
+#: whether the kernel may use numba's disk cache (only with the stamping locators installed)
+CACHE = _install()
