@@ -8,14 +8,15 @@ The procedure (docs/validation.md explains and measures each choice) is hierarch
 
 1. Every catalogue propeller alone: the 8 cambered parameters CAMBERED_FIT_RE fitted to
    all its static-run and J-sweep data, free (no prior), from START.
-2. Population statistics of those fits: the covariance of the 8 parameters and the
-   median rms residual (the fits' population prior), and the median of each Reynolds
-   term (re_exp_lift, re_exp, alpha_L0_re): the within-propeller Reynolds dependence.
-   Across propellers, size and Reynolds number are confounded, so a joint fit would let
-   the Reynolds terms absorb propeller-to-propeller offsets; medians of single-propeller
-   fits do not (measured: static + lowest-rpm sweep calibration 4.7% -> 3.5% median).
-3. ``generic``: the Reynolds terms at their medians and the 5 level parameters
-   CAMBERED_FIT fitted jointly to all propellers (fit_loads_joint, each weighted alike).
+2. ``generic``: each Reynolds term (re_exp_lift, re_exp, alpha_L0_re) at the median of
+   the single-propeller fits (the within-propeller Reynolds dependence: across
+   propellers, size and Reynolds number are confounded, so a joint fit would let the
+   Reynolds terms absorb propeller-to-propeller offsets; measured, static + lowest-rpm
+   sweep calibration 4.7% -> 3.3% median, docs/identification.md), and the 5 level
+   parameters CAMBERED_FIT fitted jointly to all propellers (fit_loads_joint, each
+   weighted alike).
+3. The fits' population prior: the covariance of the single-propeller fits around the
+   generic set, and their median rms residual.
 4. ``generic_folds``: steps 2-3 on each half of the catalogue (propellers alternately by
    name), so that validation predicts a propeller with a generic set and a prior that
    never saw it.
@@ -48,6 +49,8 @@ RE_TERMS = ("re_exp_lift", "re_exp", "alpha_L0_re")
 #: start of the per-propeller fits (a rounded earlier joint fit; each fit converges from it)
 START = pm.CamberedParams(cl_alpha=5.5, alpha_L0=math.radians(-5.0), cl_max=1.9, cd_min=0.022, cd2=0.065,
                           re_exp=-0.6, re_exp_lift=0.06, alpha_L0_re=math.radians(-2.0))
+#: the joint fits' evaluation limit (they converge in 20-80; a stop at the limit is printed)
+JOINT_MAX_NFEV = 150
 POPULATION_SOURCE = ("covariance and median rms residual of the 8-parameter fits to each catalogue propeller "
                      "(tools/calibrate_catalogue.py)")
 
@@ -57,20 +60,32 @@ def _entry(params, rms_ct, rms_cp, n_points, **more):
             "n_points": int(n_points), **more}
 
 
-def _population(single: dict, names: list) -> dict:
+def _coverage(datasets) -> dict:
+    """What the fitted data covered (io.calibration.coverage): largest J, incidences."""
+    J = [float(np.max(d.airspeed / (d.omega / (2 * math.pi) * p.diameter))) for d, p in datasets]
+    return {"J_max": max(J), "incidence_deg_max": max(float(np.degrees(np.max(d.incidence))) for d, _ in datasets)}
+
+
+def _generic(data: dict, single: dict, names: list):
+    """The generic set of ``names`` and its population statistics (the fits' prior).
+
+    Reynolds terms: medians of the single-propeller fits; level parameters: joint fit; the
+    prior's covariance: the spread of the single-propeller fits around this generic set
+    (its mean), sigma_d: their median rms residual.
+    """
     X = np.array([[getattr(single[n]["params"], k) for k in CAMBERED_FIT_RE] for n in names])
-    return {"names": list(CAMBERED_FIT_RE), "covariance": np.cov(X.T).tolist(),
-            "sigma_data": float(np.median([single[n]["rms_residual"] for n in names])),
-            "re_medians": {k: float(np.median(X[:, CAMBERED_FIT_RE.index(k)])) for k in RE_TERMS},
-            "n_propellers": len(names), "source": POPULATION_SOURCE}
-
-
-def _generic(data: dict, names: list, pop: dict):
-    base = START.replace(**pop["re_medians"])
-    res = fit_loads_joint([data[n] for n in names], base=base,
-                          options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=60))
+    re_medians = {k: float(np.median(X[:, CAMBERED_FIT_RE.index(k)])) for k in RE_TERMS}
+    res = fit_loads_joint([data[n] for n in names], base=START.replace(**re_medians),
+                          options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=JOINT_MAX_NFEV))
+    if res.hit_max_nfev:
+        print(f"WARNING: the joint fit of {len(names)} propellers stopped at its evaluation limit", flush=True)
+    g = np.array([getattr(res.params, k) for k in CAMBERED_FIT_RE])
+    dev = X - g
+    pop = {"names": list(CAMBERED_FIT_RE), "covariance": (dev.T @ dev / (len(names) - 1)).tolist(),
+           "sigma_data": float(np.median([single[n]["rms_residual"] for n in names])),
+           "re_medians": re_medians, "n_propellers": len(names), "source": POPULATION_SOURCE}
     errs = [coefficient_errors(*data[n], res.params) for n in names]
-    return res, float(np.median([e["rms_ct"] for e in errs])), float(np.median([e["rms_cp"] for e in errs]))
+    return res, pop, float(np.median([e["rms_ct"] for e in errs])), float(np.median([e["rms_cp"] for e in errs]))
 
 
 def main() -> None:
@@ -86,15 +101,14 @@ def main() -> None:
         res = fit_loads(*data[n], base=START, options=FitOptions(names=CAMBERED_FIT_RE, prior=False))
         single[n] = {"params": res.params, "rms_residual": float(np.sqrt(np.mean(res.residuals ** 2)))}
         print(f"[1: {i + 1}/{len(names)}] {n}: rms residual {single[n]['rms_residual']:.4f}", flush=True)
-    pop = _population(single, names)
+    generic, pop, gct, gcp = _generic(data, single, names)
     print(f"population: sigma_data {pop['sigma_data']:.4f}, Reynolds medians {pop['re_medians']}", flush=True)
-
-    generic, gct, gcp = _generic(data, names, pop)
     print(f"generic: {generic.nfev} evaluations; median rms dCT/CT0 {gct:.4f}, dCP/CP0 {gcp:.4f}", flush=True)
     out = {
         "citation": UIUC_CITATION,
         "created_by": "tools/calibrate_catalogue.py (propmap " + pm.__version__ + ")",
         "generic": _entry(generic.params, gct, gcp, sum(data[n][0].n for n in names),
+                          coverage=_coverage([data[n] for n in names]),
                           source=f"Reynolds terms: medians of single-propeller fits; {', '.join(CAMBERED_FIT)} "
                                  f"fitted jointly to the bundled UIUC static runs and J-sweeps of all {len(names)} "
                                  "catalogue propellers; rms_ct, rms_cp: medians over the propellers (in-sample)"),
@@ -106,8 +120,7 @@ def main() -> None:
     }
     for k in range(2):
         fold = names[k::2]
-        fpop = _population(single, fold)
-        res, c, p = _generic(data, fold, fpop)
+        res, fpop, c, p = _generic(data, single, fold)
         out["generic_folds"].append(_entry(res.params, c, p, sum(data[n][0].n for n in fold), propellers=fold,
                                            population=fpop))
         print(f"generic fold {k}: median rms dCT/CT0 {c:.4f}, dCP/CP0 {p:.4f}", flush=True)
@@ -116,7 +129,8 @@ def main() -> None:
         d, prop = data[n]
         res = fit_loads(d, prop, base=generic.params, options=FitOptions(population=prior))
         e = coefficient_errors(d, prop, res.params)
-        out["propellers"][n] = _entry(res.params, e["rms_ct"], e["rms_cp"], d.n, fitted=list(res.names))
+        out["propellers"][n] = _entry(res.params, e["rms_ct"], e["rms_cp"], d.n, fitted=list(res.names),
+                                      coverage=_coverage([data[n]]))
         if res.at_bound:
             out["propellers"][n]["at_bound"] = list(res.at_bound)
         print(f"[5: {i + 1}/{len(names)}] {n}: rms dCT/CT0 {e['rms_ct']:.4f}, dCP/CP0 {e['rms_cp']:.4f}"

@@ -53,6 +53,9 @@ CAMBERED_SCALE = {"alpha_L0": math.radians(2), "cl_cdmin": 0.3, "re_exp": 0.3, "
 #: sweeps at several Reynolds numbers (docs/identification.md has the measured choice)
 CAMBERED_FIT = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2")
 CAMBERED_FIT_RE = CAMBERED_FIT + ("re_exp_lift", "re_exp", "alpha_L0_re")
+#: static-only data without the prior: two parameters (a static run has two or three degrees
+#: of freedom; fitted freely, more parameters chase them)
+CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
@@ -77,6 +80,8 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
     if options.names is not None:
         return tuple(options.names)
     if isinstance(base, CamberedParams):
+        if data_kind == "static" and not options.prior:
+            return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
     return param_names(options.lift_model)
 
@@ -106,15 +111,15 @@ class FitOptions:
         Parameters to fit. Default: :func:`param_names` for the paper's model; for the
         cambered model :data:`CAMBERED_FIT_RE` when the data are static only or contain
         sweeps at three or more rotation rates, else :data:`CAMBERED_FIT` (Reynolds terms
-        kept at the base values; docs/identification.md gives the measurements behind
-        this rule).
+        kept at the base values), and :data:`CAMBERED_FIT_STATIC` for static data without
+        the prior (docs/identification.md gives the measurements behind this rule).
     prior : bool
         Cambered model: add the population prior, pseudo-residuals
         sigma_d L^-1 (x - x_base) with L L^T the covariance of the parameters fitted to
         each catalogue propeller and sigma_d their median rms residual
         (io.calibration.population). The fit then moves a parameter away from the base
-        only as far as the data warrant (a maximum a posteriori estimate), so that
-        sparse data (a static run) cannot do worse than the base set.
+        only as far as the data warrant (a maximum a posteriori estimate); on sparse data (a
+        static run) this measured better than a free fit (docs/identification.md).
     population : dict, optional
         The prior's statistics (``names``, ``covariance``, ``sigma_data``, ``source``);
         default the shipped ones (io.calibration.population). Validation passes the
@@ -365,7 +370,7 @@ def _bounds(names, options: FitOptions):
 
 
 def _x0(names, options: FitOptions, base: SectionParams):
-    """Paper's model: options.x0 (the paper's start); cambered: the base parameters."""
+    """Start vector: the paper's x0 for its model, the base parameters for the cambered one."""
     if isinstance(base, CamberedParams):
         full = {n: getattr(base, n) for n in names if hasattr(base, n)}
     else:
@@ -374,15 +379,16 @@ def _x0(names, options: FitOptions, base: SectionParams):
     return np.array([full[n] for n in names], float)
 
 
-def _m_effect(residual, best, base: SectionParams, options: FitOptions) -> dict:
-    """When the fit used a smoother M than the base parameters, report what that did:
-    the rms residual of the fitted parameters under the fit's M and under the base M."""
+def _m_effect(make_data_residual, best, base: SectionParams, options: FitOptions) -> dict:
+    """When the fit used a smoother M than the base parameters, report what that did: the
+    rms data residual of the fitted parameters under the fit's M and under the base M."""
     if options.M is None or options.M == base.M:
         return {"M_used": base.M if options.M is None else options.M}
-    r_base = residual(best.x, replace(options, M=base.M))
+    r_fit = make_data_residual(options)(best.x)
+    r_base = make_data_residual(replace(options, M=base.M))(best.x)
     return {"M_used": options.M, "M_effect": {
         "M_fit": options.M, "M_base": base.M,
-        "rms_residual_at_M_fit": float(np.sqrt(np.mean(best.fun**2))),
+        "rms_residual_at_M_fit": float(np.sqrt(np.mean(r_fit**2))),
         "rms_residual_at_M_base": float(np.sqrt(np.mean(r_base**2)))}}
 
 
@@ -473,16 +479,29 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
     return best, log, counter["n"], time.perf_counter() - t0, warns
 
 
-def _finish(residual, names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
-    """Assemble the FitResult: identifiability, parameters at a bound, evaluation limit."""
+def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
+    """Assemble the FitResult: identifiability, parameters at a bound, evaluation limit.
+
+    With the population prior, ``residuals``, ``cost`` and the identifiability report are
+    the data's alone (the prior's pseudo-residuals and cost go to ``extra["prior"]``), so
+    the report says what the data determine; a parameter they leave free is named, and
+    said to be held near the base by the prior.
+    """
     lb, ub = _bounds(names, options)
     params = _params_from(best.x, names, base, options)
-    idf = _identifiability(names, best.x, best.jac, best.fun)
-    residuals = best.fun
-    if "prior" in extra:  # the prior's pseudo-residuals are reported apart from the data's
+    residuals, jac = best.fun, best.jac
+    if "prior" in extra:
         k = len(extra["prior"]["names"])
-        residuals = best.fun[:-k]
+        residuals, jac = best.fun[:-k], best.jac[:-k]
         extra["prior"]["pseudo_residuals"] = [float(v) for v in best.fun[-k:]]
+        extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
+    idf = _identifiability(names, best.x, jac, residuals)
+    if "prior" in extra:
+        held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
+        if held:
+            idf = replace(idf, warnings=idf.warnings + (
+                f"the population prior holds {', '.join(held)} near the base set's values, which the data alone "
+                "would leave (nearly) free",))
     tol = 1e-6 * (ub - lb)
     at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
     warns = list(warns)
@@ -494,14 +513,16 @@ def _finish(residual, names, base, options, best, log, nfev, elapsed, warns, n_p
                          "its value is the bound's; suspect the data, the geometry or the model")
     hit = int(best.status) == 0
     if hit:
-        warns.append(f"the fit stopped at its evaluation limit ({options.max_nfev}) before converging")
-    return FitResult(params, air, names, best.x, residuals, float(best.cost), nfev, n_points, elapsed,
+        limit = getattr(best, "nfev_limit", options.max_nfev)
+        warns.append(f"the fit stopped at its evaluation limit ({limit}) before converging")
+    cost = 0.5 * float(residuals @ residuals)
+    return FitResult(params, air, names, best.x, residuals, cost, nfev, n_points, elapsed,
                      bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
 
 
 # ---------------------------------------------------------------- level flight (eqs 16-18)
 
-def level_flight_forces(params: AirfoilParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air(),
+def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air(),
                         discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Rotor loads of every rotor at every condition and the net vertical force (eq 16).
 
@@ -513,6 +534,11 @@ def level_flight_forces(params: AirfoilParams, data: LevelFlightData, vehicle: V
     -------
     dict with ``thrust``, ``drag``, ``torque`` (shape (N, n_rotors)) [N, N, N m],
     ``vertical`` (shape (N,)) [N] and ``beta`` (shape (N, n_rotors)) [rad].
+
+    Raises
+    ------
+    SolverError
+        From the rotor model.
     """
     R, vel = rotor_kinematics(data, vehicle)
     n_rot = len(vehicle.rotors)
@@ -538,7 +564,12 @@ def level_flight_forces(params: AirfoilParams, data: LevelFlightData, vehicle: V
 
 
 def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -> np.ndarray:
-    """Body lift of Sec. III-A [N]: 0.5 rho V^2 C_L^body(beta_body - pi/2) S_body, eq 3 form."""
+    """Body lift of Sec. III-A [N], shape (N,): 0.5 rho V^2 C_L^body(beta_body - pi/2) S_body.
+
+    C_L^body has eq 3's form with ``xb`` = (cl1_body, cl2_body, alpha0_body [rad]) and
+    sharpness M [1/rad]; the angle of attack is that of the body's z axis against the
+    flight direction.
+    """
     cl1b, cl2b, a0b = xb
     z_world = body_to_world(data.pitch, data.roll)[:, :, 2]  # body z in world
     beta_body = np.arccos(np.clip(z_world[:, 0], -1, 1))  # angle between velocity (world x) and body z
@@ -591,7 +622,7 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
     fun = exact(x)
     stopped = nm.nfev >= max_fev and nm.fun < r2.cost
     result = optimize.OptimizeResult(
-        x=x, fun=fun, jac=_jacobian(smooth, x, lb, ub), cost=0.5 * float(fun @ fun),
+        x=x, fun=fun, jac=_jacobian(smooth, x, lb, ub), cost=0.5 * float(fun @ fun), nfev_limit=max_fev,
         status=0 if stopped else 2, success=not stopped, nfev=r2.nfev + nm.nfev,
         message=("Nelder-Mead stopped at its evaluation limit" if stopped else
                  f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then Nelder-Mead at M = {base_M:g}"))
@@ -677,7 +708,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             return r
         return residual
 
-    make_residual, prior = _with_prior(make_residual, names, base, options)
+    make_data = make_residual
+    make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
     x0 = _x0(names, options, base)
     without = None
     if options.body_lift:
@@ -686,16 +718,13 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         without = fit_level_flight(data, vehicle, base=base, air=air,
                                    options=replace(options, body_lift=False, progress=False, names=names[:-3]))
         x0 = np.concatenate([without.x, BODY_X0])
-        base = without.params  # the continuation in M is done: fit at the M it ended with
-        options = replace(options, M=base.M)
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                     "fit level-flight", x0)
-    final_opts = replace(options, M=base.M if options.M is None else options.M)
     extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight, **extra,
-             **_m_effect(make_residual(final_opts), best, base, options)}
+             **_m_effect(make_data, best, base, options)}
     if prior:
         extra["prior"] = prior
-    result = _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
                      nfev * data.n * n_rot, air, extra)
     if options.body_lift:
         M_used = result.params.M
@@ -722,11 +751,16 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     return result
 
 
-def hover_vertical_force(params: AirfoilParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air()):
+def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air()):
     """Vertical force of the hover model (T = k_T Omega^2 along each rotor axis, D = 0) [N], shape (N,).
 
     k_T of each propeller from the model at V = 0 at the mean rotor speed of the
     slowest condition (the hover point of the data set).
+
+    Raises
+    ------
+    SolverError
+        From the rotor model.
     """
     R = body_to_world(data.pitch, data.roll)
     j0 = int(np.argmin(data.airspeed))
@@ -768,8 +802,13 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE else "few_rates"
 
 
-def _with_prior(make_residual, names, base, options):
-    """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model)."""
+def _with_prior(make_residual, names, base, options, scale: float = 1.0):
+    """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model).
+
+    ``scale`` converts the prior's dimensionless weight sigma_d (the median rms residual of
+    fit_loads' normalised residuals) into the residuals' unit: 1 for loads, the weight [N]
+    for level flight (whose residuals are forces).
+    """
     if not (options.prior and isinstance(base, CamberedParams)):
         return make_residual, None
     from ..io.calibration import population
@@ -782,14 +821,16 @@ def _with_prior(make_residual, names, base, options):
     cov = np.asarray(pop["covariance"], float)[np.ix_(idx, idx)]
     Linv = np.linalg.inv(np.linalg.cholesky(cov))
     mu = np.array([getattr(base, names[k]) for k in sel])
-    weight = float(pop["sigma_data"])
+    weight = float(pop["sigma_data"]) * scale
 
     def make(opts):
-        residual = make_residual(opts)
-        return lambda x, opts=opts: np.concatenate([residual(x), weight * (Linv @ (np.asarray(x)[sel] - mu))])
+        def residual(x, opts=opts):
+            prior_rows = weight * (Linv @ (np.asarray(x)[sel] - mu))
+            return np.concatenate([make_residual(opts)(x, opts), prior_rows])
+        return residual
 
-    info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": weight,
-            "source": pop["source"]}
+    info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),
+            "scale": scale, "source": pop["source"]}
     return make, info
 
 
@@ -847,16 +888,15 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     keys = _load_keys(data, quantities)
     if data.n * len(keys) <= len(names):
         raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
-    make_residual, scales = _load_residual(data, propeller, keys, air, names, base)
-    make_residual, prior = _with_prior(make_residual, names, base, options)
+    make_data, scales = _load_residual(data, propeller, keys, air, names, base)
+    make_residual, prior = _with_prior(make_data, names, base, options)
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit loads",
                                                                     _x0(names, options, base))
-    final_opts = replace(options, M=base.M if options.M is None else options.M)
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
-             **_m_effect(make_residual(final_opts), best, base, options)}
+             **_m_effect(make_data, best, base, options)}
     if prior:
         extra["prior"] = prior
-    return _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+    return _finish(names, base, options, best, log, nfev, elapsed, warns,
                    nfev * data.n, air, extra)
 
 
@@ -906,8 +946,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air = A
 
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                     "fit loads (joint)", _x0(names, options, base))
-    final_opts = replace(options, M=base.M if options.M is None else options.M)
-    result = _finish(make_residual(final_opts), names, base, options, best, log, nfev, elapsed, warns,
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
                      nfev * sum(d.n for d, _ in datasets), air, {"kind": "loads_joint", **extra})
     per, k = [], 0
     for data, prop in datasets:

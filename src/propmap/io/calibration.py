@@ -32,7 +32,7 @@ from dataclasses import asdict
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 
 __all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
-           "population", "params_to_si", "params_from_si", "GENERIC"]
+           "population", "coverage", "params_to_si", "params_from_si", "GENERIC"]
 
 #: name of the generic set (``--params generic``)
 GENERIC = "generic"
@@ -64,6 +64,35 @@ class Calibration:
     rms_cp: float
     n_points: int
     source: str
+
+
+def coverage(label: str) -> dict | None:
+    """What the data behind a shipped parameter set covered, for warnings.
+
+    Parameters
+    ----------
+    label : str
+        ``"generic"``, ``"generic fold <k>"`` or ``"calibrated:<name>"``.
+
+    Returns
+    -------
+    dict or None
+        ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
+        UIUC data are axial); None for other sets (Table I, files), whose data propmap
+        does not know.
+    """
+    raw = _raw()
+    if label == GENERIC or label.startswith("generic fold"):
+        return raw["generic"].get("coverage")
+    if label.startswith("calibrated:"):
+        entry = raw["propellers"].get(label.split(":", 1)[1])
+        return None if entry is None else entry.get("coverage")
+    return None
+
+
+@functools.lru_cache(maxsize=1)
+def _raw() -> dict:
+    return json.loads((resources.files("propmap") / "data" / "calibration.json").read_text(encoding="utf-8"))
 
 
 def params_to_si(params: SectionParams) -> dict:
@@ -104,7 +133,7 @@ def calibration() -> dict:
     ValueError
         The packaged file is malformed (an installation problem).
     """
-    raw = json.loads((resources.files("propmap") / "data" / "calibration.json").read_text(encoding="utf-8"))
+    raw = _raw()
     return {
         "generic": _entry(GENERIC, raw["generic"], raw["generic"]["source"]),
         "generic_folds": [(_entry(f"generic fold {k}", d, raw["generic"]["source"]), frozenset(d["propellers"]),
@@ -118,7 +147,17 @@ def calibration() -> dict:
 
 
 def generic_params() -> SectionParams:
-    """The generic cambered set fitted jointly to the catalogue (blind-prediction default)."""
+    """The generic cambered set fitted to the catalogue (the default for propellers without data).
+
+    Returns
+    -------
+    CamberedParams
+
+    Raises
+    ------
+    ValueError
+        The packaged calibration file is malformed (an installation problem).
+    """
     return calibration()["generic"].params
 
 
@@ -128,9 +167,11 @@ def generic_without(name: str) -> tuple[SectionParams, str]:
     The fold of ``generic_folds`` that does not contain ``name``; for a propeller outside
     the catalogue, the full generic set (which never saw it either).
     """
-    for entry, members, _ in calibration()["generic_folds"]:
-        if name not in members:
-            return entry.params, entry.name
+    folds = calibration()["generic_folds"]
+    if any(name in members for _, members, _ in folds):
+        for entry, members, _ in folds:
+            if name not in members:
+                return entry.params, entry.name
     return generic_params(), GENERIC
 
 
@@ -170,7 +211,13 @@ def population(without: str | None = None) -> dict:
 
 
 def calibrated(name: str) -> Calibration | None:
-    """The calibrated set of catalogue propeller ``name``, or None if it has none."""
+    """The calibrated set of catalogue propeller ``name``, or None if it has none.
+
+    Raises
+    ------
+    ValueError
+        The packaged calibration file is malformed (an installation problem).
+    """
     return calibration()["propellers"].get(name)
 
 
