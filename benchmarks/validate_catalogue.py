@@ -1,6 +1,6 @@
 """Validation over the catalogue: the numbers of docs/validation.md, with their run time.
 
-Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 4.5 minutes on 2 cores)
+Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 10 minutes on 2 cores)
 
 Same as ``propmap validate --all --out-dir benchmarks/results/validation``: held-out errors
 of every calibration protocol for the 108 catalogue propellers (UIUC Propeller Data Site
@@ -15,14 +15,14 @@ import os
 import time
 from pathlib import Path
 
-from propmap.cli.validate_all import run_all
+from propmap.cli.validate_all import PROTOCOLS, run_all
 from propmap.io.atomic import atomic_write
 
 
 def main() -> None:
     out = Path(__file__).parent / "results" / "validation"
     t0 = time.perf_counter()
-    run_all(["loso", "lowest", "static", "blind"], [], out, as_json=False)
+    run_all(list(PROTOCOLS), [], out, as_json=False)
     wall = time.perf_counter() - t0
     from bench_solver import cpu_name
 

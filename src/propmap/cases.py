@@ -72,13 +72,27 @@ def _from_distributions(name, props_file, chord_file, angle_file, source) -> Pro
 
 
 def beaver_propeller() -> Propeller:
-    """TU Delft Beaver propeller: 4 blades, R = 0.1185 m (Sinnige et al. 2019; FLOWUnsteady database)."""
+    """TU Delft Beaver propeller: 4 blades, R = 0.1185 m (Sinnige et al. 2019; FLOWUnsteady database).
+
+    Returns
+    -------
+    Propeller
+        Chord and blade-angle distributions of the bundled digitized files, on the
+        stations outboard of the hub radius 0.0175 m.
+    """
     return _from_distributions("beaver", "beaver.csv", "beaver_chorddist.csv", "beaver_twistdist.csv",
                                "TU Delft Beaver propeller, " + DIGITIZED)
 
 
 def dji9443_propeller() -> Propeller:
-    """DJI 9443: 2 blades, R = 0.12 m (FLOWUnsteady database)."""
+    """DJI 9443: 2 blades, R = 0.12 m (FLOWUnsteady database).
+
+    Returns
+    -------
+    Propeller
+        Chord and blade-angle distributions of the bundled digitized files, on the
+        stations outboard of the hub radius 0.00624 m.
+    """
     return _from_distributions("dji9443", "DJI9443.csv", "DJI9443_chorddist.csv", "DJI9443_pitchdist.csv",
                                "DJI 9443, " + DIGITIZED)
 
@@ -112,10 +126,6 @@ class CaseResult:
     citation: str
     notes: str = ""
     metrics: dict = field(default_factory=dict)
-
-
-def _coeffs(r, n, D, air):
-    return r.thrust / (air.rho * n**2 * D**4), r.torque / (air.rho * n**2 * D**5)
 
 
 def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air()) -> CaseResult:
@@ -153,8 +163,8 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         n = 9200 / 60
         pred, metrics = {}, {}
         for label, p in param_sets.items():
-            CT, CQ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air), n,
-                             prop.diameter, air)
+            r = rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air, radial=False)
+            CT, CQ = r.CT, r.CQ
             pred[label] = {"CT": CT, "CQ": CQ}
             dct, dcq = (CT - ct[:, 1]) / ct[0, 1], (CQ - CQm) / CQm[0]
             metrics[label] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
@@ -170,7 +180,8 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         n = 5400 / 60
         pred, metrics = {}, {}
         for label, p in param_sets.items():
-            CT, CQ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air), n, prop.diameter, air)
+            r = rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air, radial=False)
+            CT, CQ = r.CT, r.CQ
             pred[label] = {"CT": np.atleast_1d(CT), "CQ": np.atleast_1d(CQ)}
             metrics[label] = {"CT": float(CT), "rel_err_ct": float(CT / 0.072 - 1)}
         return CaseResult(case, "rpm", np.array([5400.0]), {"CT": np.array([0.072])}, pred, CITATIONS[case],
@@ -187,7 +198,7 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         for label, p in param_sets.items():
             # the model is symmetric in the sign of the incidence: -0.2 deg is 0.2 deg
             grid = np.concatenate([[0.0, 10.0, 20.0], np.abs(inc)])
-            CT, _ = _coeffs(rotor_loads(prop, p, 2 * math.pi * n, V, np.radians(grid), air=air), n, prop.diameter, air)
+            CT = rotor_loads(prop, p, 2 * math.pi * n, V, np.radians(grid), air=air, radial=False).CT
             pred[label] = {"CT": CT[3:]}
             metrics[label] = {"CT0": float(CT[0]), "rel_err_ct0": float(CT[0] / CT0m - 1),
                               **{f"ratio_{a:g}": float(CT[k + 1] / CT[0]) for k, a in enumerate((10.0, 20.0))},

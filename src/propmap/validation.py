@@ -185,6 +185,13 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
         ``{"holdout": [...], "fitted": {...}, "baseline": {...}, "hover_model": {...}}``, each
         error dict as :meth:`Validation.summary` pooled over the held-out runs, plus
         ``"validation_fitted"`` and ``"validation_baseline"`` (:class:`Validation`) for figures.
+
+    Raises
+    ------
+    ValueError
+        As :func:`validate`.
+    SolverError
+        From the model.
     """
     vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
     vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
@@ -196,13 +203,16 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
 # ------------------------------------------------------------------ cross-validation
 
 #: the calibration protocols of :func:`cross_validate`
-PROTOCOLS = ("loso", "lowest", "static", "blind")
+PROTOCOLS = ("loso", "loro", "lowest", "static", "blind")
 PROTOCOL_TEXT = {
     "loso": "leave one sweep out: fit on the static run and the other sweeps, predict the held-out sweep",
-    "lowest": "fit on the static run and the lowest-rpm sweep, predict the other sweeps",
+    "loro": "leave one rpm out: fit on the static run and the sweeps at other rpm, predict all sweeps at that rpm",
+    "lowest": "fit on the static run and the lowest-rpm sweeps, predict the sweeps at higher rpm",
     "static": "fit on the static run only, predict the sweeps",
-    "blind": "no fit: the generic set fitted without this propeller, all its data",
+    "blind": "no fit: the generic set fitted without this propeller, predict the sweeps",
 }
+#: sweeps whose mean rotation rates differ by less than this fraction form one rpm group
+SAME_RPM = 0.03
 
 
 def _coefficients(data, propeller: Propeller, air: Air):
@@ -261,19 +271,37 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
             "bias_ct": float(np.nanmean(dct)), "bias_cp": float(np.nanmean(dcp)), "n_points": int(m.sum())}
 
 
-def _splits(data, protocol: str):
-    """(train mask, test mask) pairs of a protocol."""
+def rpm_groups(data) -> list[list[str]]:
+    """The sweeps of load data grouped by rotation rate (within SAME_RPM), lowest first.
+
+    UIUC often measures two sweeps at one rpm that split the advance-ratio range.
+    """
     static = data.airspeed == 0
     sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
+    rate = {g: float(np.mean(data.omega[data.group == g])) for g in sweeps}
+    groups: list[list[str]] = []
+    for g in sorted(sweeps, key=rate.get):
+        if groups and rate[g] <= rate[groups[-1][0]] * (1 + SAME_RPM):
+            groups[-1].append(g)
+        else:
+            groups.append([g])
+    return groups
+
+
+def _splits(data, protocol: str):
+    """(train mask, test mask) pairs of a protocol (every test mask holds sweep points only)."""
+    static = data.airspeed == 0
+    groups = rpm_groups(data)
     if protocol == "loso":
-        return [(data.group != g, data.group == g) for g in sweeps]
+        return [(data.group != g, data.group == g) for grp in groups for g in grp]
+    if protocol == "loro":
+        return [(~np.isin(data.group, grp), np.isin(data.group, grp)) for grp in groups]
     if protocol == "lowest":
-        low = min(sweeps, key=lambda g: float(np.mean(data.omega[data.group == g])))
-        train = static | (data.group == low)
+        train = static | np.isin(data.group, groups[0])
         return [(train, ~train)]
     if protocol == "static":
         return [(static, ~static)]
-    return [(None, np.ones(data.n, bool))]
+    return [(None, ~static)]
 
 
 def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protocols=PROTOCOLS, air: Air = Air(),
@@ -289,8 +317,8 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     Parameters
     ----------
     data : LoadData
-        Static points (airspeed 0) and at least two axial sweeps, with thrust and torque;
-        ``group`` labels the runs.
+        Static points (airspeed 0) and axial sweeps at two rotation rates at least, with
+        thrust and torque; ``group`` labels the runs.
     propeller : Propeller
     generic : SectionParams
         The set used blind and as the fits' base. For honest numbers it must not have
@@ -319,8 +347,8 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     if bad:
         raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
     static = data.airspeed == 0
-    if not static.any() or len({g for g in data.group[~static]}) < 2:
-        raise ValueError("cross_validate needs static points and at least two sweeps")
+    if not static.any() or len(rpm_groups(data)) < 2:
+        raise ValueError("cross_validate needs static points and sweeps at two rotation rates at least")
     CT, CP = _coefficients(data, propeller, air)
     CT0, CP0 = float(np.mean(CT[static])), float(np.mean(CP[static]))
     out = {}

@@ -1,15 +1,23 @@
-"""Helpers shared by the subcommands: input errors as one line and exit code 2."""
+"""Helpers shared by the subcommands: one-line input errors (exit code 2), output checks.
+
+Heavy modules (numba, SciPy, pandas, matplotlib) are imported inside the functions that
+need them, so that ``propmap --help`` and ``propmap props`` start quickly.
+"""
 
 from __future__ import annotations
 
 import json
 import math
+import os
+from pathlib import Path
 
 import click
 
-from ..core.geometry import Propeller
-from ..io.catalogue import resolve_propeller
-from ..io.params_file import resolve_params
+#: the solver's range of the rotation rate, 0 < Omega <= 1e5 rad/s, in rpm; below RPM_MIN
+#: the propeller-convention coefficients (referred to n^2) overflow
+RPM_MAX = 1e5 * 60 / (2 * math.pi)
+RPM_MIN = 1.0
+AIRSPEED_MAX = 500.0
 
 
 class InputError(click.ClickException):
@@ -18,13 +26,45 @@ class InputError(click.ClickException):
     exit_code = 2
 
 
-def load_prop(spec: str, diameter_in: float | None, blades: int | None) -> Propeller:
-    try:
-        return resolve_propeller(spec, diameter_in=diameter_in, n_blades=blades)
-    except KeyError as exc:
-        raise InputError(f"PROP: {exc.args[0]}") from None
-    except ValueError as exc:
-        raise InputError(f"PROP: {exc}") from None
+def warn(message: str) -> None:
+    """A one-line warning on stderr (the run goes on)."""
+    click.echo(f"propmap: warning: {message}", err=True)
+
+
+def load_prop(spec: str, diameter_in: float | None, blades: int | None):
+    """The Propeller named by PROP (catalogue name or geometry file), with the file options.
+
+    Raises
+    ------
+    InputError
+        Unknown name, malformed file, or --diameter-in/--blades given for a catalogue
+        propeller (whose geometry fixes them) or outside their ranges.
+    """
+    import warnings
+
+    from ..io.catalogue import catalogue, resolve_propeller
+
+    if spec in catalogue():
+        given = [o for o, v in (("--diameter-in", diameter_in), ("--blades", blades)) if v is not None]
+        if given:
+            raise InputError(f"{' and '.join(given)}: {spec!r} is a catalogue propeller whose geometry fixes "
+                             "them; they apply to geometry files")
+    if diameter_in is not None and not (math.isfinite(diameter_in) and 0.5 <= diameter_in <= 100):
+        raise InputError(f"--diameter-in must be finite and in [0.5, 100] in, got {diameter_in!r}")
+    if blades is not None and not 1 <= blades <= 20:
+        raise InputError(f"--blades must be an integer in [1, 20], got {blades!r}")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            prop = resolve_propeller(spec, diameter_in=diameter_in, n_blades=blades)
+        except KeyError as exc:
+            raise InputError(f"PROP: {exc.args[0]}") from None
+        except ValueError as exc:
+            raise InputError(f"PROP: {exc}") from None
+    for w in caught:
+        if issubclass(w.category, UserWarning):
+            warn(str(w.message))
+    return prop
 
 
 PARAMS_HELP = ("Parameter set: a parameter TOML file, 'generic' (cambered, fitted to the whole catalogue), "
@@ -38,7 +78,14 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
 
     The default is the catalogue propeller's calibrated set, else the generic set (for
     geometry files and propellers without measurements).
+
+    Raises
+    ------
+    InputError
+        Unknown set, missing or malformed file; the message starts with ``option``.
     """
+    from ..io.params_file import resolve_params
+
     if spec is None:
         from ..io.calibration import default_params
         from ..io.catalogue import catalogue
@@ -54,17 +101,81 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
 
 
 def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = "") -> None:
-    """Raise InputError naming the input and its valid range."""
+    """Raise InputError naming the input and its valid range (the solver's ranges)."""
     pre = f"{where}: " if where else ""
-    if not (math.isfinite(rpm) and 0 < rpm <= 1e6):
-        raise InputError(f"{pre}rpm must be finite and in (0, 1e6], got {rpm!r}")
-    if not (math.isfinite(airspeed) and 0 <= airspeed <= 500):
-        raise InputError(f"{pre}airspeed must be finite and in [0, 500] m/s, got {airspeed!r}")
+    if not (math.isfinite(rpm) and RPM_MIN <= rpm <= RPM_MAX):
+        why = (" (a parked propeller, rpm 0, is outside the model: its coefficients are referred to the "
+               "rotation rate)" if math.isfinite(rpm) and 0 <= rpm < RPM_MIN else "")
+        raise InputError(f"{pre}rpm must be finite and in [{RPM_MIN:g}, {RPM_MAX:.0f}], got {rpm!r}{why}")
+    if not (math.isfinite(airspeed) and 0 <= airspeed <= AIRSPEED_MAX):
+        raise InputError(f"{pre}airspeed must be finite and in [0, {AIRSPEED_MAX:g}] m/s, got {airspeed!r}")
     if not (math.isfinite(incidence_deg) and 0 <= incidence_deg <= 180):
-        raise InputError(f"{pre}incidence_deg must be finite and in [0, 180] deg, got {incidence_deg!r}")
+        why = (" (the model is symmetric: give the magnitude of a negative incidence)"
+               if math.isfinite(incidence_deg) and -180 <= incidence_deg < 0 else "")
+        raise InputError(f"{pre}incidence_deg must be finite and in [0, 180] deg, got {incidence_deg!r}{why}")
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        if os.path.realpath(a) == os.path.realpath(b):
+            return True
+        return a.exists() and b.exists() and os.path.samefile(a, b)  # hard links
+    except OSError:
+        return False
+
+
+def check_outputs(outputs, inputs) -> None:
+    """Refuse, before any work, output paths that would lose data or fail late.
+
+    Parameters
+    ----------
+    outputs : iterable of (str, str or Path)
+        (option, path) of every file a command will write, including files written beside
+        ``--out`` (reports, figures) or inside ``--out-dir``.
+    inputs : iterable of str or Path
+        Every file the command reads (missing ones are ignored).
+
+    Raises
+    ------
+    InputError
+        An empty path, an existing folder, a path below a regular file, a folder that
+        cannot be written, or a path that resolves to an input file (also through ``..``,
+        symbolic links or hard links).
+    """
+    ins = [Path(p) for p in inputs if p is not None and str(p) != "" and Path(p).is_file()]
+    for option, path in outputs:
+        if path is None:
+            continue
+        if str(path) == "":
+            raise InputError(f"{option}: the path is empty")
+        p = Path(path)
+        for inp in ins:
+            if _same_file(p, inp):
+                raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")
+        if p.is_dir():
+            raise InputError(f"{option}: {p} is a folder; give a file name")
+        parent = p.parent
+        while not parent.exists():
+            parent = parent.parent
+        if not parent.is_dir():
+            raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
+        if not os.access(parent, os.W_OK | os.X_OK):
+            raise InputError(f"{option}: cannot write in {parent} (permission denied)")
+
+
+def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
+    """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
+    if str(out_dir) == "":
+        raise InputError(f"{option}: the path is empty")
+    if out_dir.exists() and not out_dir.is_dir():
+        raise InputError(f"{option}: {out_dir} exists and is not a folder")
+    paths = [out_dir / n for n in names]
+    check_outputs([(option, p) for p in paths], inputs)
+    return paths
 
 
 def echo_json(obj) -> None:
+    """Print ``obj`` as JSON; NaN or inf anywhere is a bug, so it raises instead."""
     click.echo(json.dumps(obj, indent=2, allow_nan=False))
 
 
@@ -75,6 +186,7 @@ prop_options = [
 
 
 def with_prop_options(f):
+    """Add --diameter-in and --blades to a command."""
     for opt in reversed(prop_options):
         f = opt(f)
     return f

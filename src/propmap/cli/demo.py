@@ -6,24 +6,23 @@ import math
 from pathlib import Path
 
 import click
-import numpy as np
 
-from ..core.airfoil import preset
-from ..core.hover import HoverModel
-from ..core.solver import rotor_loads
-from ..io.atomic import atomic_write
-from ..io.calibration import generic_without
-from ..io.catalogue import get_entry, load_propeller
-from ..validation import validate
+from ._common import InputError, check_out_dir
 
 PROP = "apce_8x6"
 PAPER = "gill2017-apc"
 HOLDOUT = ("2801rd", "2802rd")
+#: the files ``--out-dir`` receives
+OUTPUT_FILES = ("envelope.csv", "envelope.png", "validation.png", "fit.png", "fitted_params.toml")
 
 
 def envelope_table(prop, params, rpm: float):
     """Loads over airspeed x incidence at one rpm beside the hover model (pandas DataFrame)."""
+    import numpy as np
     import pandas as pd
+
+    from ..core.hover import HoverModel
+    from ..core.solver import rotor_loads
 
     V = np.linspace(0.0, 20.0, 21)
     inc = np.array([0.0, 30.0, 60.0, 90.0])
@@ -42,7 +41,12 @@ def envelope_table(prop, params, rpm: float):
 
 def fit_demo(prop, generic, out_dir: Path):
     """Both models fitted to UIUC apce_8x6 with HOLDOUT held out; returns (figure path, text table)."""
+    import numpy as np
+
+    from ..core.airfoil import preset
     from ..identify import FitOptions, fit_loads, loads_from_catalogue
+    from ..io.calibration import population
+    from ..io.catalogue import get_entry
     from ..io.params_file import write_params
     from ..plots import plot_load_fit
     from ..validation import holdout_comparison
@@ -50,7 +54,8 @@ def fit_demo(prop, generic, out_dir: Path):
     entry = get_entry(PROP)
     data = loads_from_catalogue(entry, prop.diameter)
     train = data.subset(~np.isin(data.group, HOLDOUT))
-    cambered = fit_loads(train, prop, base=generic)
+    # base and prior from the catalogue half without PROP: nothing of the held-out data leaks
+    cambered = fit_loads(train, prop, base=generic, options=FitOptions(population=population(without=PROP)))
     paper = fit_loads(train, prop, base=preset(PAPER), options=FitOptions())
     write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
                  comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
@@ -84,11 +89,18 @@ def demo(out_dir: Path, rpm: float):
     2. Both models against UIUC's measured apce_8x6 static and J-sweep data, no fitting.
     3. Both models fitted to that data with the 6000 rpm sweeps held out.
     """
-    from ..plots import plot_envelope, plot_validation
-    from ._common import InputError
+    from ._common import RPM_MAX, RPM_MIN
 
-    if not (math.isfinite(rpm) and 0 < rpm <= 1e6):
-        raise InputError(f"--rpm must be finite and in (0, 1e6], got {rpm!r}")
+    if not (math.isfinite(rpm) and RPM_MIN <= rpm <= RPM_MAX):
+        raise InputError(f"--rpm must be finite and in [{RPM_MIN:g}, {RPM_MAX:.0f}], got {rpm!r}")
+    check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
+    from ..core.airfoil import preset
+    from ..io.atomic import atomic_write
+    from ..io.calibration import generic_without
+    from ..io.catalogue import get_entry, load_propeller
+    from ..plots import plot_envelope, plot_validation
+    from ..validation import validate
+
     prop = load_propeller(PROP)
     generic, generic_label = generic_without(PROP)
     paper = preset(PAPER)

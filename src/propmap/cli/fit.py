@@ -7,12 +7,8 @@ import math
 from pathlib import Path
 
 import click
-import numpy as np
 
-from ..core.solver import SolverError
-from ..io.atomic import atomic_write
-from ..io.params_file import write_params
-from ._common import InputError, load_params, load_prop
+from ._common import InputError, check_outputs, load_params, load_prop
 
 fit_options = [
     click.option("--out", type=click.Path(path_type=Path), required=True, help="Parameter TOML to write."),
@@ -50,7 +46,17 @@ def _options(M, lift_model, multistart, fit_params, no_prior=False):
                       prior=not no_prior)
 
 
+def _out_files(out: Path) -> list:
+    """(option, path) of every file a fit writes: the parameters and, beside them, reports and figure."""
+    stem = Path(out).with_suffix("")
+    return [("--out", Path(out))] + [("--out (report/figure beside it)", stem.with_name(stem.name + s))
+                                     for s in (".report.json", ".report.txt", ".png")]
+
+
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "") -> dict:
+    from ..io.atomic import atomic_write
+    from ..io.params_file import write_params
+
     report = {**result.to_dict(), "base": base_label, "params_file": str(out)}
     write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})")
     stem = out.with_suffix("")
@@ -66,7 +72,23 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     return report
 
 
+def _vehicle_geometry_files(vehicle: Path) -> list:
+    """The geometry files a vehicle TOML names (its ``[[rotors]] propeller`` entries that are
+    not catalogue names), resolved relative to the vehicle file; best effort (the vehicle
+    reader reports malformed files)."""
+    import tomllib
+
+    try:
+        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
+        specs = [r.get("propeller") for r in rotors if isinstance(r, dict)]
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
+        return []
+    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
+
+
 def _run_fit(fn, *args, **kwargs):
+    from ..core.solver import SolverError
+
     try:
         return fn(*args, **kwargs)
     except ValueError as exc:
@@ -92,15 +114,20 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     from dataclasses import replace
 
+    import numpy as np
+
     from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
                             read_vehicle)
     from ..identify.fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
 
+    check_outputs(_out_files(out), [data, vehicle, base_spec])
     try:
         veh = read_vehicle(vehicle)
     except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
+    # the vehicle's propellers may be geometry files (relative to the vehicle file): inputs too
+    check_outputs(_out_files(out), _vehicle_geometry_files(vehicle))
     try:
         d = read_level_flight(data, veh)
     except DataError as exc:
@@ -175,12 +202,27 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     rpm and any of thrust, drag, torque (airspeed and incidence_deg optional: a static
     thrust stand; optional group), or UIUC-format static and wind-tunnel files.
     """
+    from dataclasses import replace
+
+    import numpy as np
+
     from ..identify import fit_loads
     from ..validation import holdout_comparison
 
+    check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params(base_spec or "generic", option="--base")
     data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
     held = tuple(h.strip() for h in holdout.split(",") if h.strip())
+    population = None
+    if entry is not None and held:
+        # judging held-out runs of a catalogue propeller: the generic set and the prior must
+        # come from the catalogue half that never saw them
+        from ..io.calibration import generic_without
+        from ..io.calibration import population as population_without
+
+        population = population_without(without=entry.name)
+        if base_spec is None:
+            base, base_label = generic_without(entry.name)
     qty = tuple(q.strip() for q in quantities.split(",") if q.strip()) or None
     groups = set(data.group)
     unknown = [h for h in held if h not in groups]
@@ -189,8 +231,8 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty,
-                   options=_options(M, lift_model, multistart, fit_params, no_prior))
+    options = replace(_options(M, lift_model, multistart, fit_params, no_prior), population=population)
+    res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     stem = out.with_suffix("")
     if entry is not None:

@@ -2,88 +2,159 @@
 
 from __future__ import annotations
 
-import csv
 import math
+import sys
 from pathlib import Path
 
 import click
-import numpy as np
 
-from ..core.solver import SolverError, rotor_loads
-from ..io.atomic import atomic_write
-from ._common import PARAMS_HELP, InputError, check_point, echo_json, load_params, load_prop, with_prop_options
+from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_outputs, check_point,
+                      echo_json, load_params, load_prop, warn, with_prop_options)
 
 OUTPUT_KEYS = ("thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags")
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
-CHUNK = 2000
+CHUNK = 20000
+MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused
 
 
-def read_points(path: Path) -> np.ndarray:
-    """Rows (rpm, airspeed, incidence_deg) of a points CSV; InputError names the bad line."""
+def read_points(path: Path):
+    """The points CSV as a pandas DataFrame (all its columns, in order).
+
+    Comma- or semicolon-separated (detected from the header), header names matched
+    case-insensitively after stripping blanks and a UTF-8 BOM; the columns rpm, airspeed,
+    incidence_deg are required and checked row by row (the message names the line).
+
+    Raises
+    ------
+    InputError
+        Unreadable, not a regular file, too large, malformed, or a value out of range.
+    """
+    import numpy as np
+    import pandas as pd
+
+    where = f"--points: {path}"
     try:
-        fh = open(path, newline="", encoding="utf-8")
+        st = path.stat()
     except OSError as exc:
-        raise InputError(f"--points: cannot read {path} ({exc.strerror})") from None
-    with fh:
-        reader = csv.reader(fh)
-        header = next(reader, None)
-        if header is None:
-            raise InputError(f"--points: {path} is empty")
-        header = [h.strip() for h in header]
-        missing = [c for c in INPUT_COLUMNS if c not in header]
-        if missing:
-            raise InputError(f"--points: {path} lacks column(s) {', '.join(missing)} "
-                             f"(needs {', '.join(INPUT_COLUMNS)})")
-        idx = [header.index(c) for c in INPUT_COLUMNS]
-        rows = []
-        for row in reader:
-            line = reader.line_num
-            if not row or all(not x.strip() for x in row):
-                continue
-            if len(row) != len(header):
-                raise InputError(f"--points: {path}, line {line}: expected {len(header)} fields, got {len(row)}")
-            try:
-                vals = [float(row[i]) for i in idx]
-            except ValueError:
-                raise InputError(f"--points: {path}, line {line}: non-numeric value in {','.join(row)!r}") from None
-            check_point(*vals, where=f"--points: {path}, line {line}")
-            rows.append(vals)
-    if not rows:
-        raise InputError(f"--points: {path} has no data rows")
-    return np.array(rows)
+        raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+    if not path.is_file():
+        raise InputError(f"{where}: not a regular file")
+    if st.st_size > MAX_POINTS_FILE_BYTES:
+        raise InputError(f"{where}: {st.st_size} bytes; at most {MAX_POINTS_FILE_BYTES} are read")
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(65536)
+        first = head.split(b"\n", 1)[0].decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(f"{where}: the header is not UTF-8 text") from None
+    except OSError as exc:
+        raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+    sep = ";" if first.count(";") > first.count(",") else ","
+    try:
+        df = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
+                         skip_blank_lines=True)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"{where}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
+    names = [str(c).strip() for c in df.columns]
+    lower = [n.lower() for n in names]
+    dup = sorted({n for n in lower if lower.count(n) > 1})
+    if dup:
+        raise InputError(f"{where}: duplicate column(s) {', '.join(dup)}")
+    missing = [c for c in INPUT_COLUMNS if c not in lower]
+    if missing:
+        raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)})")
+    df.columns = names
+    if len(df) == 0:
+        raise InputError(f"{where}: no data rows")
+    limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0)}
+    for c in INPUT_COLUMNS:
+        name = names[lower.index(c)]
+        v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
+        lo, hi = limits[c]
+        bad = ~np.isfinite(v) | (v < lo) | (v > hi)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise InputError(f"{where}, line {i + 2}: {c} must be a finite number in [{lo:g}, {hi:g}], "
+                             f"got {df[name].iloc[i][:40]!r}")
+        df[name] = v
+    return df
 
 
-def _solve(prop, params, air, pts: np.ndarray, progress: bool):
+def _flag_strings(r):
+    """Per-point ';'-joined flag names, as a pandas Categorical (16 combinations at most)."""
+    import numpy as np
+    import pandas as pd
+
+    keys = ("not_converged", "vortex_ring", "multiple_roots", "reverse_flow")
+    bits = np.stack([~r.converged, r.vortex_ring, r.multiple_roots, r.reverse_flow]).astype(np.int64)
+    code = (bits * (1 << np.arange(4))[:, None]).sum(axis=0)
+    labels = [";".join(k for b, k in enumerate(keys) if m >> b & 1) for m in range(16)]
+    return pd.Categorical.from_codes(code, categories=labels)
+
+
+def solve_points(prop, params, air, df, progress: bool):
+    """Loads at every row of ``df`` (columns rpm, airspeed, incidence_deg), in chunks.
+
+    Per-annulus outputs are not kept (``radial=False``), so memory grows only with the
+    table itself. Returns a DataFrame of the outputs, one row per input row.
+    """
+    import numpy as np
+    import pandas as pd
     from tqdm import tqdm
 
-    n = len(pts)
+    from ..core.solver import rotor_loads
+
+    cols = {c.lower(): c for c in df.columns}
+    rpm = df[cols["rpm"]].to_numpy(float)
+    V = df[cols["airspeed"]].to_numpy(float)
+    inc = np.radians(df[cols["incidence_deg"]].to_numpy(float))
+    n = rpm.size
     out = {k: np.empty(n) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
     conv = np.empty(n, bool)
-    flags = [""] * n
-    # disable=None: shown only on a terminal, and only for batches longer than one chunk
+    flags = []
     with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
         for s in range(0, n, CHUNK):
-            p = pts[s:s + CHUNK]
-            r = rotor_loads(prop, params, p[:, 0] * 2 * math.pi / 60, p[:, 1], np.radians(p[:, 2]), air=air,
-                            on_failure="flag")
+            sl = slice(s, min(s + CHUNK, n))
+            r = rotor_loads(prop, params, rpm[sl] * 2 * math.pi / 60, V[sl], inc[sl], air=air, on_failure="flag",
+                            radial=False)
             for k in out:
-                out[k][s:s + len(p)] = getattr(r, k)
-            conv[s:s + len(p)] = r.converged
-            for i in range(len(p)):
-                flags[s + i] = ";".join(r.flags(i))
-            bar.update(len(p))
-    return out, conv, flags
+                out[k][sl] = getattr(r, k)
+            conv[sl] = r.converged
+            flags.append(_flag_strings(r))
+            bar.update(sl.stop - sl.start)
+    res = pd.DataFrame(out)
+    res["converged"] = np.where(conv, "true", "false")
+    res["flags"] = pd.Categorical(np.concatenate([np.asarray(f) for f in flags])) if flags else []
+    return res
+
+
+def _write_table(df, res, out: str | Path) -> None:
+    """Input columns, then the outputs (an output named like an input column gets '_model')."""
+    import pandas as pd
+
+    from ..io.atomic import atomic_write
+
+    taken = {c.lower() for c in df.columns}
+    res = res.rename(columns={c: (f"{c}_model" if c.lower() in taken else c) for c in res.columns})
+    table = pd.concat([df.reset_index(drop=True), res], axis=1)
+    if str(out) == "-":
+        table.to_csv(sys.stdout, index=False, float_format="%.10g", lineterminator="\n")
+        return
+    with atomic_write(out, "w", newline="") as fh:
+        table.to_csv(fh, index=False, float_format="%.10g", lineterminator="\n")
 
 
 @click.command("loads")
 @click.argument("prop")
-@click.option("--rpm", type=float, help="Rotation rate [rpm], > 0.")
-@click.option("--airspeed", type=float, default=0.0, show_default=True, help="Airspeed V [m/s], >= 0.")
-@click.option("--incidence-deg", type=float, default=0.0, show_default=True,
-              help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent.")
+@click.option("--rpm", type=float, help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}].")
+@click.option("--airspeed", type=float, default=None, help="Airspeed V [m/s], in [0, 500] (default 0).")
+@click.option("--incidence-deg", type=float, default=None,
+              help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent (default 0).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
-@click.option("--points", type=click.Path(path_type=Path), help="CSV with columns rpm, airspeed, incidence_deg.")
-@click.option("--out", type=click.Path(path_type=Path), help="Output CSV (with --points).")
+@click.option("--points", type=click.Path(path_type=Path),
+              help="CSV (',' or ';') with columns rpm, airspeed, incidence_deg (case-insensitive); other "
+                   "columns are kept in the output.")
+@click.option("--out", help="Output CSV of --points ('-': standard output).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options
 def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json, diameter_in, blades):
@@ -91,42 +162,84 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
 
     Outputs are SI: N, N m, W; CT and CP in the propeller convention.
     """
-    propeller = load_prop(prop, diameter_in, blades)
-    params, air, params_label = load_params(params_spec, prop)
     if points is not None:
+        given = [o for o, v in (("--rpm", rpm), ("--airspeed", airspeed), ("--incidence-deg", incidence_deg))
+                 if v is not None]
+        if given:
+            raise InputError(f"{', '.join(given)}: give the operating points either as options (one point) or in "
+                             "--points (many), not both")
         if out is None:
-            raise InputError("--out is required with --points")
-        if rpm is not None:
-            raise InputError("give either --rpm (one point) or --points (many), not both")
-        pts = read_points(points)
-        res, conv, flags = _solve(propeller, params, air, pts, progress=True)
-        with atomic_write(out, "w", newline="") as fh:
-            w = csv.writer(fh)
-            w.writerow(list(INPUT_COLUMNS) + list(OUTPUT_KEYS))
-            for i in range(len(pts)):
-                w.writerow([f"{x:.10g}" for x in pts[i]] + [f"{res[k][i]:.10g}" for k in res]
-                           + [str(bool(conv[i])).lower(), flags[i]])
-        n_bad = int((~conv).sum())
-        click.echo(f"wrote {len(pts)} points to {out} (params {params_label})"
-                   + (f"; {n_bad} did not converge (see flags)" if n_bad else ""),
-                   err=True)
+            raise InputError("--out is required with --points (a file, or '-' for standard output)")
+        if as_json:
+            raise InputError("--json applies to a single point; --points writes a CSV")
+        inputs = [points, prop, params_spec]
+        if out != "-":
+            check_outputs([("--out", out)], inputs)
+        propeller = load_prop(prop, diameter_in, blades)
+        params, air, label = load_params(params_spec, prop)
+        df = read_points(points)
+        _warn_coverage(propeller, params, label, df)
+        res = solve_points(propeller, params, air, df, progress=out != "-")
+        _write_table(df, res, out)
+        n_bad = int((res["converged"] == "false").sum())
+        click.echo(f"wrote {len(df)} points to {'standard output' if out == '-' else out} (params {label})"
+                   + (f"; {n_bad} did not converge (see flags)" if n_bad else ""), err=True)
         return
+    if out is not None:
+        raise InputError("--out applies to --points; a single point is printed")
     if rpm is None:
         raise InputError("give --rpm (one point) or --points IN.csv --out OUT.csv")
+    airspeed = 0.0 if airspeed is None else airspeed
+    incidence_deg = 0.0 if incidence_deg is None else incidence_deg
     check_point(rpm, airspeed, incidence_deg)
+    propeller = load_prop(prop, diameter_in, blades)
+    params, air, label = load_params(params_spec, prop)
+    _warn_coverage(propeller, params, label, None, rpm, airspeed, incidence_deg)
+    from ..core.solver import SolverError, rotor_loads
+
     try:
-        r = rotor_loads(propeller, params, rpm * 2 * math.pi / 60, airspeed, math.radians(incidence_deg), air=air)
+        r = rotor_loads(propeller, params, rpm * 2 * math.pi / 60, airspeed, math.radians(incidence_deg), air=air,
+                        radial=False)
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
     result = {k: float(getattr(r, k)) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
     result.update(converged=bool(r.converged), flags=r.flags())
     if as_json:
-        echo_json({**result, "propeller": propeller.name, "params": params_label, "rpm": rpm, "airspeed": airspeed,
+        echo_json({**result, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg,
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
-               f"(params {params_label})")
+               f"(params {label})")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}  flags: {', '.join(r.flags()) or 'none'}")
+
+
+def _warn_coverage(prop, params, label, df=None, rpm=None, airspeed=None, incidence_deg=None) -> None:
+    """One warning line per risk: tip Mach above 0.7, advance ratio or incidence beyond the
+    data behind the parameters (docs/validation.md)."""
+    import numpy as np
+
+    from ..io.calibration import coverage
+
+    if df is not None:
+        cols = {c.lower(): c for c in df.columns}
+        rpm = df[cols["rpm"]].to_numpy(float)
+        airspeed = df[cols["airspeed"]].to_numpy(float)
+        incidence_deg = df[cols["incidence_deg"]].to_numpy(float)
+    rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
+    n = rpm / 60
+    tip_mach = np.hypot(2 * math.pi * n * prop.radius, airspeed) / 340.3
+    if np.max(tip_mach) > 0.7:
+        warn(f"tip Mach number up to {np.max(tip_mach):.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
+             "is not modelled")
+    cov = coverage(label)
+    if cov is None:
+        return
+    J = airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter)
+    if np.max(J) > cov["J_max"]:
+        warn(f"advance ratio up to {np.max(J):.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
+    if np.max(incidence_deg) > cov["incidence_deg_max"]:
+        warn(f"incidence up to {np.max(incidence_deg):g} deg: {label} was fitted to axial data only; off-axis "
+             "loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)")

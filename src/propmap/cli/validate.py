@@ -7,10 +7,7 @@ from pathlib import Path
 
 import click
 
-from ..core.solver import SolverError
-from ..io.catalogue import get_entry, load_propeller
-from ..validation import validate as run_validation
-from ._common import PARAMS_HELP, InputError, echo_json, load_params
+from ._common import PARAMS_HELP, InputError, check_out_dir, check_outputs, echo_json, load_params
 
 
 def print_table(v) -> None:
@@ -26,16 +23,10 @@ def print_table(v) -> None:
     click.echo(f"model bias: CT {m['ct_bias']:+.4f}, CP {m['cp_bias']:+.4f}. Data: {v.citation}")
 
 
-def _check_out_dir(out_dir: Path) -> Path:
-    if out_dir.exists() and not out_dir.is_dir():
-        raise InputError(f"--out-dir: {out_dir} exists and is not a folder")
-    return out_dir
-
-
 @click.command("validate")
 @click.argument("prop", required=False)
 @click.option("--all", "all_props", is_flag=True,
-              help="Cross-validate every catalogue propeller with measurements (about 4.5 minutes on 2 cores).")
+              help="Cross-validate every catalogue propeller with measurements (about 10 minutes on 2 cores).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
 @click.option("--protocols", default=",".join(("loso", "lowest", "static", "blind")), show_default=True,
               help="With --all: comma-separated subset of loso, lowest, static, blind.")
@@ -58,14 +49,27 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
             raise InputError("give PROP or --all, not both")
         if params_spec is not None:
             raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
-        from .validate_all import run_all
+        from .validate_all import OUTPUT_FILES, run_all
 
+        if figure is not None:
+            raise InputError("--figure applies to a single PROP; --all writes its figures into --out-dir")
+        if out_dir is not None:
+            check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
         run_all([p.strip() for p in protocols.split(",") if p.strip()],
-                [p.strip() for p in only.split(",") if p.strip()],
-                None if out_dir is None else _check_out_dir(out_dir), as_json)
+                [p.strip() for p in only.split(",") if p.strip()], out_dir, as_json)
         return
     if not prop:
         raise InputError("give PROP (a catalogue propeller) or --all")
+    for option, value in (("--protocols", protocols != ",".join(("loso", "lowest", "static", "blind"))),
+                          ("--props", bool(only)), ("--out-dir", out_dir is not None)):
+        if value:
+            raise InputError(f"{option} applies to --all")
+    if figure is not None:
+        check_outputs([("--figure", figure)], [params_spec])
+    from ..core.solver import SolverError
+    from ..io.catalogue import get_entry, load_propeller
+    from ..validation import validate as run_validation
+
     try:
         entry = get_entry(prop)
     except KeyError as exc:
