@@ -17,19 +17,17 @@ CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused
 
 
-def read_points(path: Path):
-    """The points CSV as a pandas DataFrame (all its columns, in order).
+def _points_reader(path: Path, chunksize: int):
+    """(iterator of DataFrame chunks, column names) of the points CSV, all cells as text.
 
     Comma- or semicolon-separated (detected from the header), header names matched
-    case-insensitively after stripping blanks and a UTF-8 BOM; the columns rpm, airspeed,
-    incidence_deg are required and checked row by row (the message names the line).
+    case-insensitively after stripping blanks and a UTF-8 BOM.
 
     Raises
     ------
     InputError
-        Unreadable, not a regular file, too large, malformed, or a value out of range.
+        Unreadable, not a regular file, too large, not text, or lacking the columns.
     """
-    import numpy as np
     import pandas as pd
 
     where = f"--points: {path}"
@@ -43,19 +41,13 @@ def read_points(path: Path):
         raise InputError(f"{where}: {st.st_size} bytes; at most {MAX_POINTS_FILE_BYTES} are read")
     try:
         with open(path, "rb") as fh:
-            head = fh.read(65536)
-        first = head.split(b"\n", 1)[0].decode("utf-8-sig")
+            first = fh.read(65536).split(b"\n", 1)[0].decode("utf-8-sig")
     except UnicodeDecodeError:
         raise InputError(f"{where}: the header is not UTF-8 text") from None
     except OSError as exc:
         raise InputError(f"{where}: cannot read ({exc.strerror})") from None
     sep = ";" if first.count(";") > first.count(",") else ","
-    try:
-        df = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
-                         skip_blank_lines=True)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
-        raise InputError(f"{where}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
-    names = [str(c).strip() for c in df.columns]
+    names = [h.strip() for h in first.rstrip("\r").split(sep)]
     lower = [n.lower() for n in names]
     dup = sorted({n for n in lower if lower.count(n) > 1})
     if dup:
@@ -63,21 +55,60 @@ def read_points(path: Path):
     missing = [c for c in INPUT_COLUMNS if c not in lower]
     if missing:
         raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)})")
-    df.columns = names
-    if len(df) == 0:
-        raise InputError(f"{where}: no data rows")
+    try:
+        reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
+                             skip_blank_lines=True, header=0, names=names, chunksize=chunksize)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"{where}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
+    return reader, names
+
+
+def _chunks(path: Path, chunksize: int):
+    """Chunks of the points CSV with rpm, airspeed, incidence_deg as checked floats.
+
+    Yields (DataFrame, first line number); raises InputError naming the line of the first
+    bad value or the parse error.
+    """
+    import numpy as np
+    import pandas as pd
+
+    reader, names = _points_reader(path, chunksize)
+    lower = [n.lower() for n in names]
+    cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS}
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0)}
-    for c in INPUT_COLUMNS:
-        name = names[lower.index(c)]
-        v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
-        lo, hi = limits[c]
-        bad = ~np.isfinite(v) | (v < lo) | (v > hi)
-        if bad.any():
-            i = int(np.argmax(bad))
-            raise InputError(f"{where}, line {i + 2}: {c} must be a finite number in [{lo:g}, {hi:g}], "
-                             f"got {df[name].iloc[i][:40]!r}")
-        df[name] = v
-    return df
+    line = 2
+    try:
+        for df in reader:
+            if len(df) == 0:
+                continue
+            for c, name in cols.items():
+                v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
+                lo, hi = limits[c]
+                bad = ~((v >= lo) & (v <= hi))
+                if bad.any():
+                    i = int(np.argmax(bad))
+                    raise InputError(f"--points: {path}, line {line + i}: {c} must be a finite number in "
+                                     f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}")
+                df[name] = v
+            yield df, line
+            line += len(df)
+    except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
+    if line == 2:
+        raise InputError(f"--points: {path} has no data rows")
+
+
+def read_points(path: Path):
+    """The whole points CSV as a DataFrame (all columns; the three inputs as checked floats).
+
+    Raises
+    ------
+    InputError
+        As :func:`_chunks`.
+    """
+    import pandas as pd
+
+    return pd.concat([df for df, _ in _chunks(path, CHUNK)], ignore_index=True)
 
 
 def _flag_strings(r):
@@ -92,56 +123,63 @@ def _flag_strings(r):
     return pd.Categorical.from_codes(code, categories=labels)
 
 
-def solve_points(prop, params, air, df, progress: bool):
-    """Loads at every row of ``df`` (columns rpm, airspeed, incidence_deg), in chunks.
+def solve_points(prop, params, air, df):
+    """Loads at every row of ``df`` (columns rpm, airspeed, incidence_deg, any case).
 
-    Per-annulus outputs are not kept (``radial=False``), so memory grows only with the
-    table itself. Returns a DataFrame of the outputs, one row per input row.
+    Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
+    outputs, one row per input row: thrust, drag, torque, power, CT, CP, converged
+    ("true"/"false"), flags.
     """
     import numpy as np
     import pandas as pd
-    from tqdm import tqdm
 
     from ..core.solver import rotor_loads
 
     cols = {c.lower(): c for c in df.columns}
     rpm = df[cols["rpm"]].to_numpy(float)
-    V = df[cols["airspeed"]].to_numpy(float)
-    inc = np.radians(df[cols["incidence_deg"]].to_numpy(float))
-    n = rpm.size
-    out = {k: np.empty(n) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
-    conv = np.empty(n, bool)
-    flags = []
-    with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
-        for s in range(0, n, CHUNK):
-            sl = slice(s, min(s + CHUNK, n))
-            r = rotor_loads(prop, params, rpm[sl] * 2 * math.pi / 60, V[sl], inc[sl], air=air, on_failure="flag",
-                            radial=False)
-            for k in out:
-                out[k][sl] = getattr(r, k)
-            conv[sl] = r.converged
-            flags.append(_flag_strings(r))
-            bar.update(sl.stop - sl.start)
-    res = pd.DataFrame(out)
-    res["converged"] = np.where(conv, "true", "false")
-    res["flags"] = pd.Categorical(np.concatenate([np.asarray(f) for f in flags])) if flags else []
+    r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, df[cols["airspeed"]].to_numpy(float),
+                    np.radians(df[cols["incidence_deg"]].to_numpy(float)), air=air, on_failure="flag", radial=False)
+    res = pd.DataFrame({k: getattr(r, k) for k in ("thrust", "drag", "torque", "power", "CT", "CP")})
+    res["converged"] = np.where(r.converged, "true", "false")
+    res["flags"] = _flag_strings(r)
     return res
 
 
-def _write_table(df, res, out: str | Path) -> None:
-    """Input columns, then the outputs (an output named like an input column gets '_model')."""
-    import pandas as pd
+def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, int]:
+    """Validate the whole points file, then solve and write it chunk by chunk.
+
+    Memory stays bounded by the chunk size whatever the file's length (the output goes to a
+    temporary file renamed at the end, or to standard output). Returns (points, not
+    converged).
+    """
+    from tqdm import tqdm
 
     from ..io.atomic import atomic_write
 
-    taken = {c.lower() for c in df.columns}
-    res = res.rename(columns={c: (f"{c}_model" if c.lower() in taken else c) for c in res.columns})
-    table = pd.concat([df.reset_index(drop=True), res], axis=1)
+    # first pass: every value checked before any work, and the extremes for the warnings
+    n, extremes = _scan(prop, path)
+    _coverage_messages(prop, label, *extremes)
+
+    def write(fh):
+        bad = 0
+        with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
+            for k, (df, _) in enumerate(_chunks(path, CHUNK)):
+                res = solve_points(prop, params, air, df)
+                taken = {c.lower() for c in df.columns}
+                res.columns = [f"{c}_model" if c.lower() in taken else c for c in res.columns]
+                df = df.reset_index(drop=True)
+                for c in res.columns:
+                    df[c] = res[c].to_numpy()
+                df.to_csv(fh, index=False, header=k == 0, float_format="%.10g", lineterminator="\n")
+                bad += int((res.iloc[:, 6] == "false").sum())
+                bar.update(len(df))
+        return bad
+
     if str(out) == "-":
-        table.to_csv(sys.stdout, index=False, float_format="%.10g", lineterminator="\n")
-        return
+        return n, write(sys.stdout)
     with atomic_write(out, "w", newline="") as fh:
-        table.to_csv(fh, index=False, float_format="%.10g", lineterminator="\n")
+        bad = write(fh)
+    return n, bad
 
 
 @click.command("loads")
@@ -177,12 +215,8 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
             check_outputs([("--out", out)], inputs)
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
-        df = read_points(points)
-        _warn_coverage(propeller, params, label, df)
-        res = solve_points(propeller, params, air, df, progress=out != "-")
-        _write_table(df, res, out)
-        n_bad = int((res["converged"] == "false").sum())
-        click.echo(f"wrote {len(df)} points to {'standard output' if out == '-' else out} (params {label})"
+        n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
+        click.echo(f"wrote {n} points to {'standard output' if out == '-' else out} (params {label})"
                    + (f"; {n_bad} did not converge (see flags)" if n_bad else ""), err=True)
         return
     if out is not None:
@@ -194,7 +228,7 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     check_point(rpm, airspeed, incidence_deg)
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
-    _warn_coverage(propeller, params, label, None, rpm, airspeed, incidence_deg)
+    _coverage_messages(propeller, label, *_extremes(propeller, rpm, airspeed, incidence_deg))
     from ..core.solver import SolverError, rotor_loads
 
     try:
@@ -216,30 +250,41 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}  flags: {', '.join(r.flags()) or 'none'}")
 
 
-def _warn_coverage(prop, params, label, df=None, rpm=None, airspeed=None, incidence_deg=None) -> None:
-    """One warning line per risk: tip Mach above 0.7, advance ratio or incidence beyond the
-    data behind the parameters (docs/validation.md)."""
+def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
+    """(largest tip Mach number, advance ratio of the axial flow, incidence [deg])."""
     import numpy as np
 
-    from ..io.calibration import coverage
-
-    if df is not None:
-        cols = {c.lower(): c for c in df.columns}
-        rpm = df[cols["rpm"]].to_numpy(float)
-        airspeed = df[cols["airspeed"]].to_numpy(float)
-        incidence_deg = df[cols["incidence_deg"]].to_numpy(float)
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
     n = rpm / 60
-    tip_mach = np.hypot(2 * math.pi * n * prop.radius, airspeed) / 340.3
-    if np.max(tip_mach) > 0.7:
-        warn(f"tip Mach number up to {np.max(tip_mach):.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
+    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius, airspeed))) / 340.3,
+            float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
+            float(np.max(incidence_deg)))
+
+
+def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
+    """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
+    n, ext = 0, (0.0, 0.0, 0.0)
+    for df, _ in _chunks(path, CHUNK):
+        cols = {c.lower(): c for c in df.columns}
+        e = _extremes(prop, *(df[cols[c]].to_numpy(float) for c in INPUT_COLUMNS))
+        ext = tuple(max(a, b) for a, b in zip(ext, e))
+        n += len(df)
+    return n, ext
+
+
+def _coverage_messages(prop, label, tip_mach, J, incidence_deg) -> None:
+    """One warning line per risk: tip Mach above 0.7, advance ratio or incidence beyond the
+    data behind the parameters (docs/validation.md)."""
+    from ..io.calibration import coverage
+
+    if tip_mach > 0.7:
+        warn(f"tip Mach number up to {tip_mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
              "is not modelled")
     cov = coverage(label)
     if cov is None:
         return
-    J = airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter)
-    if np.max(J) > cov["J_max"]:
-        warn(f"advance ratio up to {np.max(J):.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    if np.max(incidence_deg) > cov["incidence_deg_max"]:
-        warn(f"incidence up to {np.max(incidence_deg):g} deg: {label} was fitted to axial data only; off-axis "
+    if J > cov["J_max"]:
+        warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
+    if incidence_deg > cov["incidence_deg_max"]:
+        warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to axial data only; off-axis "
              "loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)")

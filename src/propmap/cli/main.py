@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import signal
 import sys
+import warnings
 
 import click
 
@@ -24,24 +26,70 @@ for _cmd in (props, loads, validate, fit, demo):
     cli.add_command(_cmd)
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Run the CLI with ``argv``; return the exit code (0 ok, 1 solver failure, 2 bad input).
+_PACKAGE_DIR = __file__.rsplit("/cli/", 1)[0]
 
-    Errors are printed as one line ``propmap: error: ...`` on stderr, never a traceback.
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+def _on_sigterm(signum, frame):  # pragma: no cover (exercised in a subprocess test)
+    raise SystemExit(128 + signum)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the CLI with ``argv``; return the exit code.
+
+    0 ok; 1 a solver failure or an unexpected internal error; 2 bad input or an unusable
+    file; 130 interrupted; 128 + n stopped by signal n. Every error is one line
+    ``propmap: error: ...`` on stderr, never a traceback. propmap's own warnings are printed
+    as ``propmap: warning: ...`` lines; other libraries' warnings (NumPy's and SciPy's
+    numerical RuntimeWarnings, deprecation notices) are not printed (the results carry their
+    own flags). SIGTERM stops the run like an
+    exception, so that no temporary output file is left behind.
     """
     try:
-        cli.main(args=argv, prog_name="propmap", standalone_mode=False)
+        previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    except ValueError:  # not the main thread
+        previous = None
+    caught: list = []
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            cli.main(args=argv, prog_name="propmap", standalone_mode=False)
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except click.exceptions.Abort:
         click.echo("propmap: aborted", err=True)
-        return 1
+        return 130
     except click.UsageError as exc:  # unknown option, bad type, missing argument: exit 2
-        click.echo(f"propmap: error: {exc.format_message()}", err=True)
+        click.echo(f"propmap: error: {_one_line(exc.format_message())}", err=True)
         return 2
     except click.ClickException as exc:
-        click.echo(f"propmap: error: {exc.format_message()}", err=True)
+        click.echo(f"propmap: error: {_one_line(exc.format_message())}", err=True)
         return exc.exit_code
+    except KeyboardInterrupt:
+        click.echo("propmap: interrupted", err=True)
+        return 130
+    except (ValueError, OSError) as exc:  # bad input that reached the library, unusable files
+        click.echo(f"propmap: error: {_one_line(exc)}", err=True)
+        return 2
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else 1
+    except Exception as exc:  # a bug: still one line, and how to report it
+        click.echo(f"propmap: error: internal error ({type(exc).__name__}: {_one_line(exc)}); "
+                   "please report it with the command line", err=True)
+        return 1
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+        seen = set()
+        for w in caught:
+            ours = issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR)
+            if not ours or str(w.message) in seen:
+                continue
+            seen.add(str(w.message))
+            click.echo(f"propmap: warning: {_one_line(w.message)}", err=True)
     return 0
 
 

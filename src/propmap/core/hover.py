@@ -35,8 +35,9 @@ class HoverModel:
 
     def __post_init__(self) -> None:
         for name in ("k_T", "k_Q"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise ValueError(f"{name} must be a finite number, got {v!r}")
 
     @classmethod
     def from_model(cls, propeller: Propeller, params: AirfoilParams, omega: float, *,
@@ -55,9 +56,19 @@ class HoverModel:
 
         k_T = CT rho D^4 / (2 pi)^2 and k_Q = CP rho D^5 / (2 pi)^3, since
         T = CT rho n^2 D^4, Q = P/Omega = CP rho n^2 D^5 / (2 pi), n = Omega/(2 pi).
+
+        Raises
+        ------
+        ValueError
+            CT or CP not a finite number, or the diameter not a finite number > 0 [m].
         """
-        return cls(CT * air.rho * diameter**4 / (2 * math.pi) ** 2,
-                   CP * air.rho * diameter**5 / (2 * math.pi) ** 3)
+        for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise ValueError(f"{name} must be a finite number, got {v!r}")
+        if diameter <= 0:
+            raise ValueError(f"diameter must be > 0 m, got {diameter!r}")
+        return cls(float(CT) * air.rho * diameter**4 / (2 * math.pi) ** 2,
+                   float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3)
 
     def thrust(self, omega) -> np.ndarray:
         """T [N] at Omega [rad/s] (any shape)."""

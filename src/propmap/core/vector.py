@@ -45,10 +45,22 @@ def _spin_sign(spin) -> np.ndarray:
         if spin.lower() not in table:
             raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1, got {spin!r}")
         return np.asarray(table[spin.lower()])
-    s = np.asarray(spin, float)
-    if not np.all(np.isin(s, (-1.0, 1.0))):
-        raise ValueError("spin must be 'ccw', 'cw', +1 or -1")
-    return s
+    s = np.asarray(spin)
+    if s.dtype.kind not in "iuf" or not np.all(np.isin(s, (-1.0, 1.0))):
+        raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1 (not a bool), got {spin!r:.60}")
+    return s.astype(float)
+
+
+def _vectors(name: str, value) -> np.ndarray:
+    a = np.asarray(value)
+    if a.dtype.kind not in "iuf":
+        raise ValueError(f"{name} must be numbers, got {value!r:.60}")
+    a = a.astype(float)
+    if a.shape[-1:] != (3,):
+        raise ValueError(f"{name} must have a last axis of length 3, got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{name} must be finite")
+    return a
 
 
 def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, omega, spin="ccw", *,
@@ -80,8 +92,9 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     Raises
     ------
     ValueError
-        Shapes not ending in 3, zero or non-finite axis, non-finite velocity, bad spin,
-        or the ranges of :func:`rotor_loads`.
+        Non-numeric inputs, shapes not ending in 3, a zero or non-finite axis, a non-finite
+        velocity, a bad spin (a bool included), or the ranges of :func:`rotor_loads`
+        (the speed |velocity| at most 500 m/s).
     SolverError
         As :func:`rotor_loads`.
 
@@ -90,16 +103,15 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     The rotor model is azimuth-averaged (paper Section II), so it has no side force and
     no hub moments other than the shaft torque; spin changes only the torque sign.
     """
-    V = np.asarray(velocity, float)
-    z = np.asarray(axis, float)
-    if V.shape[-1:] != (3,) or z.shape[-1:] != (3,):
-        raise ValueError(f"velocity and axis must have a last axis of length 3, got {V.shape} and {z.shape}")
-    if not np.all(np.isfinite(V)):
-        raise ValueError("velocity must be finite")
-    zn = np.linalg.norm(z, axis=-1, keepdims=True)
-    if not np.all(np.isfinite(z)) or np.any(zn == 0):
-        raise ValueError("axis must be finite and non-zero")
-    z = z / zn
+    V = _vectors("velocity", velocity)
+    z = _vectors("axis", axis)
+    # normalise without overflow: scale by the largest component first (|z| of [0, 1e200,
+    # 1e200] would overflow to inf and make the thrust direction 0)
+    zmax = np.max(np.abs(z), axis=-1, keepdims=True)
+    if np.any(zmax == 0):
+        raise ValueError("axis must be non-zero")
+    z = z / zmax
+    z = z / np.linalg.norm(z, axis=-1, keepdims=True)
     s = _spin_sign(spin)
     V, z = np.broadcast_arrays(V, z)
     speed = np.linalg.norm(V, axis=-1)
