@@ -61,7 +61,7 @@ def fit_demo(prop, generic, out_dir: Path):
                  comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
     cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)
     cmp_p = holdout_comparison(entry, prop, paper.params, preset(PAPER), HOLDOUT)
-    rows = [f"   held-out {cmp_c['fitted']['n_points']} points, rms error of the coefficients:",
+    rows = [f"   held-out {cmp_c['fitted']['n_points']} points, rms error of the coefficients [-]:",
             f"   {'':<36}{'CT':>8}{'CP':>8}",
             f"   {'cambered model, fitted':<36}{cmp_c['fitted']['ct_rmse']:>8.4f}{cmp_c['fitted']['cp_rmse']:>8.4f}",
             f"   {'paper model (eqs 3-4), fitted':<36}{cmp_p['fitted']['ct_rmse']:>8.4f}{cmp_p['fitted']['cp_rmse']:>8.4f}",
@@ -124,7 +124,7 @@ def demo(out_dir: Path, rpm: float):
                          title=f"{PROP} at {rpm:g} rpm, cambered model ({generic_label}) vs hover model")
 
     entry = get_entry(PROP)
-    click.echo(f"\n2. Against UIUC measurements of {PROP}, no fitting (rms error of CT and CP; {entry.citation}):")
+    click.echo(f"\n2. Against UIUC measurements of {PROP}, no fitting (rms error of CT and CP [-]; {entry.citation}):")
     v_paper, v_gen = validate(entry, prop, paper), validate(entry, prop, generic)
     click.echo(f"   {'run':<22}{'paper CT':>10}{'paper CP':>10}{'cambered CT':>13}{'cambered CP':>13}")
     for rp, rg in zip(v_paper.runs, v_gen.runs):

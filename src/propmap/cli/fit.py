@@ -244,7 +244,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
             extra = (f"held-out ({', '.join(held)}) CT rmse: fitted {cmp['fitted']['ct_rmse']:.4f}, "
                      f"{base_label} {cmp['baseline']['ct_rmse']:.4f}, hover model {cmp['hover_model']['ct_rmse']:.4f}; "
                      f"CP rmse: fitted {cmp['fitted']['cp_rmse']:.4f}, {base_label} {cmp['baseline']['cp_rmse']:.4f}, "
-                     f"hover model {cmp['hover_model']['cp_rmse']:.4f} (coefficients, absolute)")
+                     f"hover model {cmp['hover_model']['cp_rmse']:.4f} (coefficients [-], absolute)")
             vf, vb = cmp["validation_fitted"], cmp["validation_baseline"]
         else:
             from ..validation import validate

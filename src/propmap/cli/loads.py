@@ -59,8 +59,15 @@ def _points_reader(path: Path, chunksize: int):
         reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
                              skip_blank_lines=True, header=0, names=names, chunksize=chunksize)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
-        raise InputError(f"{where}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
+        raise _parse_error(path, exc) from None
     return reader, names
+
+
+def _parse_error(path: Path, exc: Exception) -> InputError:
+    if isinstance(exc, UnicodeDecodeError):
+        return InputError(f"--points: {path}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
+                          "save it as UTF-8 CSV")
+    return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 
 def _chunks(path: Path, chunksize: int):
@@ -93,7 +100,7 @@ def _chunks(path: Path, chunksize: int):
             yield df, line
             line += len(df)
     except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as exc:
-        raise InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})") from None
+        raise _parse_error(path, exc) from None
     if line == 2:
         raise InputError(f"--points: {path} has no data rows")
 

@@ -12,6 +12,8 @@ from ._common import PARAMS_HELP, InputError, check_out_dir, check_outputs, echo
 
 def print_table(v) -> None:
     """Print the per-run CT/CP RMSE table of a Validation, model beside hover model."""
+    click.echo("rms errors of the thrust and power coefficients CT, CP [-] (propeller convention, "
+               "T = CT rho n^2 D^4, P = CP rho n^3 D^5)")
     click.echo(f"{'run':<24}{'n':>4}  {'CT rmse':>8}{'CP rmse':>8}  |  hover: {'CT rmse':>8}{'CP rmse':>8}")
     for r in v.runs:
         m, h = r.errors("model"), r.errors("hover_model")

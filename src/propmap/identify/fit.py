@@ -295,7 +295,8 @@ class FitResult:
         order = np.argsort(-np.abs(r))[:max_residuals]
         shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
         lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in sorted(order)))
-        lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{' N' if level else ''}; {self.nfev} evaluations "
+        u = " N" if level else " [-]"
+        lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
         eff = self.extra.get("M_effect")
         if eff:
@@ -305,7 +306,7 @@ class FitResult:
         cont = self.extra.get("M_continuation")
         if cont:
             lines.append(f"continuation in M: fitted at M = {cont['M_first']:g} (rms residual "
-                         f"{cont['rms_residual_first']:.4g}), then at M = {cont['M_final']:g} from there")
+                         f"{cont['rms_residual_first']:.4g}{u}), then at M = {cont['M_final']:g} from there")
         lines.extend(f"WARNING: {w}" for w in self.warnings)
         lines.extend(f"WARNING: {w}" for w in idf.warnings)
         return "\n".join(lines)

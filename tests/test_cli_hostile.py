@@ -1,0 +1,308 @@
+"""The command line under hostile use: no input ever overwritten, no traceback, nothing
+computed for bad input, files written with normal permissions (regression tests of the
+hardening audit: each case below was mishandled before)."""
+
+import csv
+import json
+import os
+import signal
+import stat
+import subprocess
+import sys
+import time
+
+import pytest
+
+from propmap.cli.main import main
+
+POINTS = "rpm,airspeed,incidence_deg\n8000,0,0\n8000,10,90\n"
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_line_error(code, err, match=""):
+    """Exit 2, one stderr line starting 'propmap: error:' that contains ``match``."""
+    lines = err.strip().splitlines()
+    errors = [line for line in lines if line.startswith("propmap: error:")]
+    return code == 2 and len(errors) == 1 and match in errors[0] and "Traceback" not in err
+
+
+@pytest.fixture
+def points(tmp_path):
+    f = tmp_path / "x.csv"
+    f.write_text(POINTS)
+    return f
+
+
+# ---- never lose data: an output that resolves to an input is refused before any work ----
+
+@pytest.mark.parametrize("variant", ["same", "dotdot", "dot", "absolute", "symlink", "hardlink", "symlinked_dir"])
+def test_loads_out_resolving_to_the_points_file_is_refused(capsys, tmp_path, points, monkeypatch, variant):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "sub").mkdir()
+    out = {"same": "x.csv", "dotdot": "sub/../x.csv", "dot": "./x.csv", "absolute": str(points),
+           "symlink": "link.csv", "hardlink": "hard.csv", "symlinked_dir": "d/x.csv"}[variant]
+    if variant == "symlink":
+        os.symlink(points, tmp_path / "link.csv")
+    if variant == "hardlink":
+        os.link(points, tmp_path / "hard.csv")
+    if variant == "symlinked_dir":
+        os.symlink(tmp_path, tmp_path / "d")
+    before = points.read_bytes()
+    code, out_text, err = run(capsys, "loads", "apce_8x6", "--points", "x.csv", "--out", out)
+    assert one_line_error(code, err, "--out"), err
+    assert points.read_bytes() == before
+
+
+def test_loads_out_resolving_to_the_geometry_file_is_refused(capsys, tmp_path, points, shared_data):
+    geom = tmp_path / "apce_9x6_geom.txt"
+    geom.write_bytes((shared_data / "uiuc_propdb/v1/apce_9x6_geom.txt").read_bytes())
+    before = geom.read_bytes()
+    code, _, err = run(capsys, "loads", geom, "--points", points, "--out", geom)
+    assert one_line_error(code, err, "--out") and geom.read_bytes() == before
+
+
+def test_loads_out_resolving_to_the_params_file_is_refused(capsys, tmp_path, points):
+    import propmap as pm
+
+    p = tmp_path / "p.toml"
+    pm.write_params(p, pm.preset("gill2017-apc"))
+    before = p.read_bytes()
+    code, _, err = run(capsys, "loads", "apce_8x6", "--params", p, "--points", points, "--out", p)
+    assert one_line_error(code, err, "--out") and p.read_bytes() == before
+
+
+def test_fit_outputs_beside_out_may_not_be_the_data(capsys, tmp_path):
+    """fit writes <out>, <stem>.report.json, <stem>.report.txt and <stem>.png: none may be an input."""
+    data = tmp_path / "f.png"  # the figure a fit to --out f.toml would write
+    data.write_text("rpm,thrust\n5000,1.0\n6000,1.5\n7000,2.0\n")
+    before = data.read_bytes()
+    code, _, err = run(capsys, "fit", "loads", data, "--prop", "apce_8x6", "--out", tmp_path / "f.toml")
+    assert one_line_error(code, err), err
+    assert data.read_bytes() == before and sorted(p.name for p in tmp_path.iterdir()) == ["f.png"]
+
+
+def test_validate_figure_may_not_be_the_params_file(capsys, tmp_path):
+    import propmap as pm
+
+    p = tmp_path / "p.toml"
+    pm.write_params(p, pm.preset("gill2017-apc"))
+    before = p.read_bytes()
+    code, _, err = run(capsys, "validate", "apce_8x6", "--params", p, "--figure", p)
+    assert one_line_error(code, err, "--figure") and p.read_bytes() == before
+
+
+# ---- unusable output paths: exit 2 at once, nothing written, no stray files ----
+
+@pytest.mark.parametrize("kind", ["directory", "under_a_file", "empty", "unwritable"])
+def test_unusable_out_path_exits_2_before_any_work(capsys, tmp_path, points, kind):
+    (tmp_path / "adir").mkdir()
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    out = {"directory": tmp_path / "adir", "under_a_file": points / "y.csv", "empty": "",
+           "unwritable": locked / "y.csv"}[kind]
+    if kind == "unwritable":
+        if os.geteuid() == 0:
+            pytest.skip("root can write anywhere")
+        locked.chmod(0o500)
+    t0 = time.perf_counter()
+    try:
+        code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", out)
+    finally:
+        locked.chmod(0o700)
+    assert one_line_error(code, err, "--out"), err
+    assert time.perf_counter() - t0 < 30  # refused, not computed (a generous bound, not a benchmark)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["adir", "locked", "x.csv"]
+    assert list((tmp_path / "adir").iterdir()) == [] and list(locked.iterdir()) == []
+
+
+def test_fit_with_an_unusable_out_leaves_no_stray_figure(capsys, tmp_path):
+    (tmp_path / "adir").mkdir()
+    code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / "adir")
+    assert one_line_error(code, err, "--out")
+    assert [p.name for p in tmp_path.iterdir()] == ["adir"] and list((tmp_path / "adir").iterdir()) == []
+
+
+def test_demo_out_dir_that_is_a_file_exits_2(capsys, tmp_path, points):
+    code, _, err = run(capsys, "demo", "--out-dir", points)
+    assert one_line_error(code, err, "--out-dir") and points.read_text() == POINTS
+
+
+def test_validate_writes_no_figure_unless_asked(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, _, _ = run(capsys, "validate", "apce_8x6")
+    assert code == 0 and list(tmp_path.iterdir()) == []
+
+
+# ---- outputs get normal permissions; a stopped run leaves no temporary file ----
+
+def test_new_output_respects_the_umask_and_an_existing_file_keeps_its_mode(capsys, tmp_path, points):
+    old = os.umask(0o022)
+    try:
+        dst = tmp_path / "new.csv"
+        assert run(capsys, "loads", "apce_8x6", "--points", points, "--out", dst)[0] == 0
+        assert stat.S_IMODE(dst.stat().st_mode) == 0o644
+        kept = tmp_path / "kept.csv"
+        kept.write_text("old")
+        kept.chmod(0o664)
+        assert run(capsys, "loads", "apce_8x6", "--points", points, "--out", kept)[0] == 0
+        assert stat.S_IMODE(kept.stat().st_mode) == 0o664 and kept.read_text().startswith("rpm,")
+    finally:
+        os.umask(old)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["kept.csv", "new.csv", "x.csv"]
+
+
+def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
+    src = tmp_path / "many.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n" + "8000,10,45\n" * 400_000)
+    dst = tmp_path / "out.csv"
+    proc = subprocess.Popen([sys.executable, "-m", "propmap", "loads", "apce_8x6", "--points", str(src),
+                             "--out", str(dst)], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    # wait until the output's temporary file exists (the computation has started), then stop it
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        if any(p.name not in ("many.csv",) for p in tmp_path.iterdir()):
+            break
+        time.sleep(0.05)
+    assert proc.poll() is None, "the run ended before it could be stopped"
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 128 + signal.SIGTERM, err
+    assert b"Traceback" not in err
+    assert [p.name for p in tmp_path.iterdir()] == ["many.csv"]
+
+
+# ---- every bad value: exit 2, one line naming the input and its range ----
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["loads", "apce_8x6", "--rpm", "999999"], "[1, 954930]"),
+        (["loads", "apce_8x6", "--rpm", "1e-200"], "rpm must be finite and in [1,"),
+        (["loads", "apce_8x6", "--rpm", "0", "--airspeed", "5"], "parked propeller"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "-30"], "symmetric"),
+        (["demo", "--rpm", "0"], "--rpm"),
+        (["demo", "--rpm", "nan"], "--rpm"),
+        (["demo", "--rpm", "inf"], "--rpm"),
+        (["demo", "--rpm", "-1"], "--rpm"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--blades", "3"], "catalogue propeller"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--diameter-in", "9"], "catalogue propeller"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--out", "y.csv"], "--out"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--base", "x"], "--base"),
+        (["fit", "loads", "apce_8x6", "--out", "f.toml", "--base", "nosuchset"], "--base"),
+    ],
+)
+def test_bad_values_exit_2_naming_the_input(capsys, tmp_path, monkeypatch, argv, match):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, *argv)
+    assert one_line_error(code, err, match), err
+    assert out == "" and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "extra, match",
+    [
+        (["--blades", "1e30"], "--blades"),
+        (["--blades", "1000"], "--blades must be an integer in [1, 20]"),
+        (["--diameter-in", "-9"], "--diameter-in must be finite and in [0.5, 100] in, got -9.0"),
+    ],
+)
+def test_geometry_file_options_are_checked_in_the_units_typed(capsys, shared_data, extra, match):
+    code, _, err = run(capsys, "loads", shared_data / "uiuc_propdb/v1/apce_9x6_geom.txt", "--rpm", "8000", *extra)
+    assert one_line_error(code, err, match), err
+
+
+def test_points_with_single_point_options_is_refused(capsys, tmp_path, points):
+    for extra in (["--airspeed", "5"], ["--incidence-deg", "30"], ["--rpm", "8000"], ["--json"]):
+        code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", tmp_path / "y.csv", *extra)
+        assert one_line_error(code, err, extra[0]), (extra, err)
+    assert not (tmp_path / "y.csv").exists()
+
+
+# ---- hostile points files ----
+
+@pytest.mark.parametrize(
+    "content, match",
+    [
+        (b"rpm,airspeed,incidence_deg\n8000,0,0\n8000,\xff\xfe,0\n", "UTF-8"),
+        (b"\xff\xferpm,airspeed,incidence_deg\n", "UTF-8"),
+        (b"rpm,airspeed,incidence_deg,rpm\n8000,0,0,1\n", "duplicate"),
+        (b"rpm,airspeed,incidence_deg\n8000,\"0,0\n8000,1,0\n", "--points"),
+        (b"rpm,airspeed,incidence_deg\n8000,0," + b"9" * 131_072 + b"\n", "line 2: incidence_deg"),
+        (b"rpm_\xc2\xb2,airspeed,incidence_deg\n8000,0,0\n", "lacks column(s) rpm"),
+        (b"", "--points"),
+    ],
+)
+def test_hostile_points_file_exits_2_and_writes_nothing(capsys, tmp_path, content, match):
+    src = tmp_path / "in.csv"
+    src.write_bytes(content)
+    dst = tmp_path / "out.csv"
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", dst)
+    assert one_line_error(code, err, match), err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv"] and src.read_bytes() == content
+
+
+def test_points_from_dev_zero_is_refused_quickly(capsys, tmp_path):
+    if not os.path.exists("/dev/zero"):
+        pytest.skip("no /dev/zero")
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", "/dev/zero", "--out", tmp_path / "y.csv")
+    assert one_line_error(code, err, "--points")
+
+
+def test_excel_points_file_bom_semicolons_and_case_are_read(capsys, tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_bytes("\ufeffRPM ; Airspeed ; Incidence_Deg ; note\r\n8000;10;90;a\r\n6000;0;0;b\r\n".encode())
+    code, out, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    assert code == 0, err
+    rows = list(csv.DictReader(out.splitlines()))
+    assert [r["note"] for r in rows] == ["a", "b"]  # extra columns kept, in order
+    assert float(rows[0]["drag"]) > 0 and float(rows[1]["drag"]) == 0.0  # D = 0 in axial flow
+
+
+def test_points_output_column_named_like_an_input_gets_a_suffix(capsys, tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("rpm,airspeed,incidence_deg,thrust\n8000,0,0,4.2\n")
+    code, out, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    rows = list(csv.DictReader(out.splitlines()))
+    assert code == 0 and rows[0]["thrust"] == "4.2" and float(rows[0]["thrust_model"]) > 0
+
+
+def test_points_stream_in_chunks_gives_the_same_table(capsys, tmp_path, monkeypatch):
+    """The streamed two-pass writer (chunks of CHUNK rows) gives the table of one pass."""
+    import propmap.cli.loads as cl
+
+    src = tmp_path / "in.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n" + "".join(f"{5000 + 100 * i},{i % 13},{(17 * i) % 181}\n"
+                                                             for i in range(57)))
+    code, whole, _ = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    monkeypatch.setattr(cl, "CHUNK", 10)
+    code2, chunked, _ = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    assert code == code2 == 0 and chunked == whole and len(whole.splitlines()) == 58
+
+
+# ---- only propmap's own warnings reach stderr, each once ----
+
+def test_library_runtime_warnings_do_not_leak(capsys, monkeypatch):
+    import warnings
+
+    import propmap.cli.loads as cl
+
+    real = cl._coverage_messages
+
+    def noisy(*a, **k):
+        warnings.warn("overflow encountered", RuntimeWarning)
+        return real(*a, **k)
+
+    monkeypatch.setattr(cl, "_coverage_messages", noisy)
+    code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "8000")
+    assert code == 0 and "overflow" not in err
+
+
+def test_risky_point_gets_a_one_line_warning(capsys):
+    code, out, err = run(capsys, "loads", "apce_8x6", "--rpm", "40000", "--json")
+    assert code == 0 and json.loads(out)["thrust"] > 0
+    assert err.count("propmap: warning: tip Mach number up to") == 1
