@@ -9,6 +9,7 @@ overshoot creates a negative chord between stations.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -17,6 +18,29 @@ from scipy.interpolate import PchipInterpolator
 __all__ = ["Propeller"]
 
 INCH = 0.0254  # [m]
+
+
+def _real(value) -> float | None:
+    """``float(value)`` for a real number (not a bool, a string or an int too large), else None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        return float(value)
+    except (OverflowError, TypeError, ValueError):
+        return None
+
+
+def _has_bool(value) -> bool:
+    """Whether a (nested) list or tuple holds a bool (NumPy would read it as 0 or 1)."""
+    if isinstance(value, (list, tuple)):
+        return any(_has_bool(v) for v in value)
+    return isinstance(value, (bool, np.bool_))
+
+
+def _short(value) -> str:
+    """``repr(value)`` cut to one short line for an error message."""
+    r = repr(value).replace("\n", " ")
+    return r if len(r) <= 60 else r[:55] + " ..."
 
 
 @dataclass(frozen=True, eq=False)
@@ -48,8 +72,9 @@ class Propeller:
     Raises
     ------
     ValueError
-        Naming the argument: non-finite values, ``radius <= 0``, ``n_blades < 1``,
-        arrays of different length or fewer than 2 stations, radii not strictly
+        Naming the argument: a value of the wrong type (a bool, a string; a
+        non-integer ``n_blades``), non-finite values, ``radius <= 0``, ``n_blades < 1``,
+        a non-finite ``pitch``, arrays of different length or fewer than 2 stations, radii not strictly
         increasing or outside (0, radius], negative chord, blade angle outside
         [-90, 90] deg.
 
@@ -70,14 +95,29 @@ class Propeller:
     _theta_spline: PchipInterpolator = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        radius = float(self.radius)
-        if not (math.isfinite(radius) and radius > 0):
-            raise ValueError(f"radius must be finite and > 0 m, got {self.radius!r}")
-        if int(self.n_blades) != self.n_blades or self.n_blades < 1:
-            raise ValueError(f"n_blades must be an integer >= 1, got {self.n_blades!r}")
+        radius = _real(self.radius)
+        if radius is None or not (math.isfinite(radius) and radius > 0):
+            raise ValueError(f"radius must be finite and > 0 m, got {_short(self.radius)}")
+        nb = self.n_blades
+        if (isinstance(nb, (bool, np.bool_)) or not isinstance(nb, numbers.Real)
+                or not (_real(nb) is not None and math.isfinite(float(nb)) and float(nb).is_integer() and nb >= 1)):
+            raise ValueError(f"n_blades must be an integer >= 1, got {_short(nb)}")
+        if self.pitch is not None:
+            pitch = _real(self.pitch)
+            if pitch is None or not math.isfinite(pitch):
+                raise ValueError(f"pitch must be a finite number [m] or None, got {_short(self.pitch)}")
+            object.__setattr__(self, "pitch", pitch)
         arrays = {}
         for key in ("r", "chord", "theta"):
-            a = np.array(getattr(self, key), dtype=float, copy=True).reshape(-1)
+            value = getattr(self, key)
+            try:
+                # no bools, strings or objects read as numbers
+                numeric = np.asarray(value).dtype.kind in "iuf" and not _has_bool(value)
+                a = np.array(value, dtype=float, copy=True).reshape(-1)
+            except (TypeError, ValueError, OverflowError):
+                numeric = False
+            if not numeric:
+                raise ValueError(f"{key} must be an array of numbers, got {_short(value)}")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"{key} must be finite at every blade station")
             a.setflags(write=False)
@@ -102,7 +142,7 @@ class Propeller:
         if np.any(np.abs(theta) > math.pi / 2 + 1e-12):
             raise ValueError("theta must be in [-90, 90] deg at every station")
         object.__setattr__(self, "radius", radius)
-        object.__setattr__(self, "n_blades", int(self.n_blades))
+        object.__setattr__(self, "n_blades", int(nb))
         for key, a in arrays.items():
             object.__setattr__(self, key, a)
         object.__setattr__(self, "_chord_spline", PchipInterpolator(r, chord, extrapolate=True))

@@ -1,24 +1,70 @@
 """Identification data: level-flight conditions (eqs 16-18) and load measurements.
 
-Readers raise :class:`DataError` (a ValueError) naming the file, line or column.
+Readers raise :class:`DataError` (a ValueError) with a one-line message naming the file,
+the line and the column, and for a value out of range the valid range; no other exception
+escapes for any file content, and no reader modifies its input.
+
+CSV files (:func:`read_level_flight`, :func:`read_loads`): a regular file of at most
+200 MiB and 10,000,000 lines (never a directory, a device or a pipe), UTF-8 with or
+without a byte-order mark
+(as Excel writes it), comma-separated, a header line then one row per point; line ends
+LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in RFC 4180
+(an unterminated quote is an error). Column names are stripped of spaces, at most 255
+characters, each at most once (a duplicated column is an error, never "the first wins");
+unnamed columns and columns not listed are ignored. Numbers are plain ASCII decimals
+(``1e3``; not ``1_000``, not NaN or inf). Valid ranges:
+
+=====================  ======================================================
+rpm, rpm_<k>           (0, 954929] (the solver's limit of 1e5 rad/s)
+airspeed               [0, 500] m/s
+incidence_deg          [0, 180] deg
+thrust, drag           [-1e5, 1e5] N
+torque                 [-1e4, 1e4] N m
+pitch_deg, roll_deg    (-90, 90) deg
+p, q, r                [-100, 100] rad/s
+=====================  ======================================================
 """
 
 from __future__ import annotations
 
+import array
+import csv
+import io
 import math
+import numbers
+import re
 from dataclasses import dataclass
 
 import numpy as np
-import pandas as pd
 
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry
+from ..io.readers import MAX_FILE_BYTES, RPM_MAX, decode_input_text, parse_number, read_input_bytes, show_path
 from .vehicle import Vehicle
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
            "loads_from_uiuc_files", "body_to_world", "rotor_kinematics"]
 
 RPM = 2 * math.pi / 60
+
+#: valid ranges of the CSV columns: (low, high, low open, high open, unit)
+RANGES = {
+    "rpm": (0.0, RPM_MAX, True, False, "rpm"),
+    "airspeed": (0.0, 500.0, False, False, "m/s"),
+    "incidence_deg": (0.0, 180.0, False, False, "deg"),
+    "thrust": (-1e5, 1e5, False, False, "N"),
+    "drag": (-1e5, 1e5, False, False, "N"),
+    "torque": (-1e4, 1e4, False, False, "N m"),
+    "pitch_deg": (-90.0, 90.0, True, True, "deg"),
+    "roll_deg": (-90.0, 90.0, True, True, "deg"),
+    "p": (-100.0, 100.0, False, False, "rad/s"),
+    "q": (-100.0, 100.0, False, False, "rad/s"),
+    "r": (-100.0, 100.0, False, False, "rad/s"),
+}
+#: the longest column name accepted [characters]
+MAX_NAME = 255
+#: the most lines a CSV may have (bounds the time a 200 MiB file of tiny lines takes)
+MAX_LINES = 10_000_000
 
 
 class DataError(ValueError):
@@ -53,65 +99,189 @@ class LevelFlightData:
         return self.airspeed.size
 
 
-def _frame(path, what) -> pd.DataFrame:
-    try:
-        df = pd.read_csv(path, skipinitialspace=True)
-    except FileNotFoundError:
-        raise DataError(f"{what}: no such file {path}") from None
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        raise DataError(f"{what}: cannot parse {path} ({str(exc).splitlines()[0]})") from None
-    df.columns = [str(c).strip() for c in df.columns]
-    return df
+def _short(text: str, n: int = 40) -> str:
+    r = repr(text)
+    return r if len(r) <= n else r[: n - 5] + "...'" + f" ({len(text)} characters)"
 
 
-def _numeric(df: pd.DataFrame, cols, path, what) -> np.ndarray:
-    out = []
-    for c in cols:
-        v = pd.to_numeric(df[c], errors="coerce").to_numpy(float)
-        bad = ~np.isfinite(v)
-        if bad.any():
-            line = int(np.argmax(bad)) + 2  # header is line 1
-            raise DataError(f"{what}: {path}, line {line}: column {c!r} is missing, NaN or non-numeric")
-        out.append(v)
-    return np.column_stack(out)
+def _interval(rng) -> str:
+    lo, hi, lo_open, hi_open, unit = rng
+    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'} {unit}"
+
+
+class _Csv:
+    """A parsed CSV: the header's columns, and numbers or text of the columns asked for.
+
+    Only the columns asked for are converted (to float arrays), so that a large file
+    costs 8 bytes a value; every message names the file, the line and the column.
+    """
+
+    def __init__(self, path, what: str):
+        self.what, self.name = what, show_path(path)
+        try:
+            raw = read_input_bytes(path, DataError, limit=MAX_FILE_BYTES)
+            decode_input_text(raw, path, DataError)  # refuses UTF-16, NUL bytes, non-UTF-8 (naming the line)
+        except DataError as exc:
+            raise DataError(f"{what}: {exc}") from None
+        n_lines = raw.count(b"\n") + raw.count(b"\r") - raw.count(b"\r\n")
+        if n_lines > MAX_LINES:
+            raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
+        self._raw = raw
+        self.header_line = 0
+        self.columns: list[str] = []
+        for line, cells in self._rows():
+            self.header_line = line
+            self.columns = [c.strip() for c in cells]
+            break
+        if not self.header_line:
+            raise self.error("empty file (no header line)")
+        seen: dict[str, int] = {}
+        for j, c in enumerate(self.columns, start=1):
+            if len(c) > MAX_NAME:
+                raise self.error(f"column {j} has a name of {len(c)} characters (at most {MAX_NAME})",
+                                 self.header_line)
+            if c and c in seen:
+                raise self.error(f"column {_short(c)} appears twice (columns {seen[c]} and {j}); remove one",
+                                 self.header_line)
+            seen[c] = j
+        self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
+
+    def error(self, message: str, line: int | None = None) -> DataError:
+        at = f", line {line}" if line else ""
+        return DataError(f"{self.what}: {self.name}{at}: {message}")
+
+    def _rows(self):
+        """(first line number, cells) of every non-blank row, after the header if it is known."""
+        text = io.TextIOWrapper(io.BytesIO(self._raw), encoding="utf-8-sig", newline="")
+        reader = csv.reader(text, strict=True, skipinitialspace=True)
+        last = 0
+        try:
+            for cells in reader:
+                first, last = last + 1, reader.line_num
+                if any(c.strip() for c in cells):
+                    yield first, cells
+        except csv.Error as exc:
+            msg = str(exc)
+            if "field larger than field limit" in msg:
+                msg = f"a field longer than {csv.field_size_limit()} characters"
+            elif "unexpected end of data" in msg:
+                msg = "unterminated quote: a quoted field is never closed"
+            elif "expected after" in msg:
+                msg = "a closing quote must be followed by a comma or the end of the line"
+            raise self.error(msg, last + 1) from None
+
+    def read(self, numeric: list[str], text: tuple[str, ...] = ()) -> tuple[dict, dict, np.ndarray]:
+        """(numbers by column, text by column, line of each row) for the named columns."""
+        n = len(self.columns)
+        cols = [(c, self.index[c]) for c in numeric]
+        nums = {c: array.array("d") for c in numeric}
+        texts = {c: [] for c in text if c in self.index}
+        lines = array.array("q")
+        rows = self._rows()
+        next(rows)  # the header
+        for line, cells in rows:
+            if len(cells) > n and any(c.strip() for c in cells[n:]):
+                raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
+            for c, j in cols:
+                cell = cells[j].strip() if j < len(cells) else ""
+                if not cell:
+                    raise self.error(f"column {_short(c)} is empty (missing value)", line)
+                try:
+                    x = parse_number(cell)
+                except ValueError:
+                    raise self.error(f"column {_short(c)}: {_short(cell)} is not a number", line) from None
+                if not math.isfinite(x):
+                    raise self.error(f"column {_short(c)} is {_short(cell)}, not a finite number", line)
+                nums[c].append(x)
+            for c in texts:
+                j = self.index[c]
+                texts[c].append(cells[j].strip() if j < len(cells) else "")
+            lines.append(line)
+        return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
+                np.frombuffer(lines, dtype=np.int64).copy())
+
+    def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict) -> None:
+        """Refuse the first value outside its column's range, naming the line and the range."""
+        for c, x in values.items():
+            key = "rpm" if (c == "rpm" or _ROTOR_RE.fullmatch(c)) else c
+            if key not in ranges:
+                continue
+            lo, hi, lo_open, hi_open, unit = ranges[key]
+            bad = ((x <= lo) if lo_open else (x < lo)) | ((x >= hi) if hi_open else (x > hi))
+            if bad.any():
+                i = int(np.argmax(bad))
+                if key == "rpm":  # rpm_1 .. rpm_n too
+                    raise self.error(f"rpm must be > 0 and <= {hi:.0f} (the solver's limit of 1e5 rad/s), got "
+                                     f"{c} = {x[i]:g}", int(lines[i]))
+                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {x[i]:g}", int(lines[i]))
+
+
+_ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
+
+
+def _rotor_order(column: str):
+    """Sort key of rotor columns: rpm_1, rpm_2, ..., rpm_10, then any malformed name."""
+    m = _ROTOR_RE.fullmatch(column)
+    return (0, int(m.group(1)), column) if m else (1, 0, column)
 
 
 def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> LevelFlightData:
     """Read level-flight conditions: columns ``airspeed, pitch_deg, rpm_1 .. rpm_n``,
-    optional ``roll_deg`` and body rates ``p, q, r`` [rad/s].
+    optional ``roll_deg`` and body rates ``p, q, r`` [rad/s] (all three or none).
+
+    Format and valid ranges in the module docstring.
+
+    Parameters
+    ----------
+    path : str or Path
+    vehicle : Vehicle
+        Gives the rotor count n.
+    min_conditions : int
+
+    Returns
+    -------
+    LevelFlightData
 
     Raises
     ------
     DataError
-        Missing columns, NaN or non-numeric values (naming the line), a rotor count that
-        does not match the vehicle, fewer than ``min_conditions`` rows, all rows identical,
-        or values out of range (rpm <= 0, airspeed < 0, |pitch| or |roll| >= 90 deg).
+        Not a readable regular file (a directory, a device, over 200 MiB or 10,000,000
+        lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
+        header), a missing, duplicated or over-long column, a rotor count that does not
+        match the vehicle, only some of ``p, q, r``, an empty, non-numeric or non-finite
+        value, a value out of range (rpm outside (0, 954929], airspeed outside [0, 500] m/s, |pitch| or |roll|
+        >= 90 deg, |p|, |q|, |r| > 100 rad/s), fewer than ``min_conditions`` rows, or all
+        rows identical; the message names the file, the line and the column.
     """
     what = "level-flight data"
-    df = _frame(path, what)
-    rpm_cols = sorted((c for c in df.columns if c.startswith("rpm_")), key=lambda c: int(c[4:]) if c[4:].isdigit() else 0)
+    f = _Csv(path, what)
+    p = f.name
+    rpm_cols = sorted((c for c in f.index if c.startswith("rpm_")), key=_rotor_order)
     n_rot = len(vehicle.rotors)
-    if len(rpm_cols) != n_rot or rpm_cols != [f"rpm_{k}" for k in range(1, n_rot + 1)]:
-        raise DataError(f"{what}: {path} has rotor columns {rpm_cols or 'none'}; the vehicle has {n_rot} rotors, "
-                        f"so rpm_1 .. rpm_{n_rot} are needed")
-    missing = [c for c in ("airspeed", "pitch_deg") if c not in df.columns]
+    if rpm_cols != [f"rpm_{k}" for k in range(1, n_rot + 1)]:
+        shown = ", ".join(_short(c) for c in rpm_cols[:8]) + (", ..." if len(rpm_cols) > 8 else "")
+        raise DataError(f"{what}: {p} has rotor columns {'[' + shown + ']' if rpm_cols else 'none'}; the vehicle has "
+                        f"{n_rot} rotors, so rpm_1 .. rpm_{n_rot} are needed")
+    missing = [c for c in ("airspeed", "pitch_deg") if c not in f.index]
     if missing:
-        raise DataError(f"{what}: {path} lacks column(s) {', '.join(missing)}")
-    base = _numeric(df, ["airspeed", "pitch_deg", *rpm_cols], path, what)
-    roll = _numeric(df, ["roll_deg"], path, what)[:, 0] if "roll_deg" in df.columns else np.zeros(len(df))
-    rates = _numeric(df, ["p", "q", "r"], path, what) if {"p", "q", "r"} <= set(df.columns) else np.zeros((len(df), 3))
-    if len(df) < min_conditions:
-        raise DataError(f"{what}: {path} has {len(df)} conditions; at least {min_conditions} are needed")
+        raise DataError(f"{what}: {p} lacks column(s) {', '.join(missing)}")
+    rates_given = [c for c in ("p", "q", "r") if c in f.index]
+    if rates_given and len(rates_given) < 3:
+        raise DataError(f"{what}: {p} has body-rate column(s) {', '.join(rates_given)} but not "
+                        f"{', '.join(c for c in 'pqr' if c not in rates_given)}: give all of p, q, r or none")
+    cols = ["airspeed", "pitch_deg", *rpm_cols, *(["roll_deg"] if "roll_deg" in f.index else []), *rates_given]
+    v, _, lines = f.read(cols)
+    f.check_ranges(v, lines, RANGES)
+    n = lines.size
+    if n < min_conditions:
+        raise DataError(f"{what}: {p} has {n} conditions; at least {min_conditions} are needed")
+    base = np.column_stack([v[c] for c in ["airspeed", "pitch_deg", *rpm_cols]])
     if np.all(np.ptp(base, axis=0) == 0):
-        raise DataError(f"{what}: {path}: all conditions are identical; the parameters cannot be identified")
-    V, pitch_deg, rpm = base[:, 0], base[:, 1], base[:, 2:]
-    if np.any(rpm <= 0):
-        raise DataError(f"{what}: {path}, line {int(np.argmax(np.any(rpm <= 0, axis=1))) + 2}: rpm must be > 0")
-    if np.any(V < 0):
-        raise DataError(f"{what}: {path}, line {int(np.argmax(V < 0)) + 2}: airspeed must be >= 0 m/s")
-    if np.any(np.abs(pitch_deg) >= 90) or np.any(np.abs(roll) >= 90):
-        raise DataError(f"{what}: {path}: pitch_deg and roll_deg must be in (-90, 90)")
-    return LevelFlightData(V, np.radians(pitch_deg), np.radians(roll), rpm * RPM, rates)
+        raise DataError(f"{what}: {p}: all conditions are identical; the parameters cannot be identified")
+    roll = v["roll_deg"] if "roll_deg" in v else np.zeros(n)
+    rates = np.column_stack([v[c] for c in "pqr"]) if rates_given else np.zeros((n, 3))
+    rpm = base[:, 2:]
+    return LevelFlightData(v["airspeed"], np.radians(v["pitch_deg"]), np.radians(roll), rpm * RPM, rates)
 
 
 def body_to_world(pitch, roll) -> np.ndarray:
@@ -189,35 +359,51 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
 
     Columns ``rpm`` and at least one of ``thrust`` [N], ``drag`` [N], ``torque`` [N m];
     ``airspeed`` [m/s] and ``incidence_deg`` (both default 0: a static thrust stand);
-    optional ``group`` (run label).
+    optional ``group`` (run label). Format and valid ranges in the module docstring.
+
+    Parameters
+    ----------
+    path : str or Path
+    min_points : int
+
+    Returns
+    -------
+    LoadData
 
     Raises
     ------
     DataError
-        Missing columns, NaN (naming the line), out-of-range operating points, fewer than
-        ``min_points`` rows, all rows identical.
+        Not a readable regular file (a directory, a device, over 200 MiB or 10,000,000
+        lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
+        header), a missing, duplicated or over-long column, an empty, non-numeric or
+        non-finite value, a value out of range (rpm outside (0, 954929], airspeed outside
+        [0, 500] m/s, incidence_deg outside [0, 180], |thrust| or |drag| > 1e5 N, |torque|
+        > 1e4 N m), fewer than ``min_points`` rows, or all operating points identical; the
+        message names the file, the line and the column.
     """
     what = "load data"
-    df = _frame(path, what)
-    if "rpm" not in df.columns:
-        raise DataError(f"{what}: {path} lacks column rpm")
-    if ("incidence_deg" in df.columns) and ("airspeed" not in df.columns):
-        raise DataError(f"{what}: {path} has incidence_deg but lacks column airspeed")
-    for c in ("airspeed", "incidence_deg"):
-        if c not in df.columns:
-            df[c] = 0.0  # a static thrust stand
-    keys = [k for k in LOAD_KEYS if k in df.columns]
+    f = _Csv(path, what)
+    p = f.name
+    if "rpm" not in f.index:
+        raise DataError(f"{what}: {p} lacks column rpm")
+    if ("incidence_deg" in f.index) and ("airspeed" not in f.index):
+        raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")
+    keys = [k for k in LOAD_KEYS if k in f.index]
     if not keys:
-        raise DataError(f"{what}: {path} has none of the load columns {', '.join(LOAD_KEYS)}")
-    a = _numeric(df, ["rpm", "airspeed", "incidence_deg", *keys], path, what)
-    if len(df) < min_points:
-        raise DataError(f"{what}: {path} has {len(df)} points; at least {min_points} are needed")
-    if np.all(np.ptp(a[:, :3], axis=0) == 0):
-        raise DataError(f"{what}: {path}: all operating points are identical")
-    if np.any(a[:, 0] <= 0) or np.any(a[:, 1] < 0) or np.any((a[:, 2] < 0) | (a[:, 2] > 180)):
-        raise DataError(f"{what}: {path}: need rpm > 0, airspeed >= 0 m/s, incidence_deg in [0, 180]")
-    group = df["group"].astype(str).to_numpy() if "group" in df.columns else np.full(len(df), "all")
-    return LoadData(a[:, 0] * RPM, a[:, 1], np.radians(a[:, 2]), {k: a[:, 3 + i] for i, k in enumerate(keys)},
+        raise DataError(f"{what}: {p} has none of the load columns {', '.join(LOAD_KEYS)}")
+    cols = ["rpm", *(c for c in ("airspeed", "incidence_deg") if c in f.index), *keys]
+    v, texts, lines = f.read(cols, ("group",))
+    f.check_ranges(v, lines, RANGES)
+    n = lines.size
+    for c in ("airspeed", "incidence_deg"):
+        v.setdefault(c, np.zeros(n))  # a static thrust stand
+    if n < min_points:
+        raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
+    ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"]])
+    if np.all(np.ptp(ops, axis=0) == 0):
+        raise DataError(f"{what}: {p}: all operating points are identical")
+    group = np.array(texts["group"], dtype=object) if "group" in texts else np.full(n, "all")
+    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}")
 
 
@@ -247,17 +433,29 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
     ----------
     paths : sequence of str or Path
     diameter : float
-        Propeller diameter [m] (the coefficients' reference length).
+        Propeller diameter [m] (the coefficients' reference length), in (0, 10].
+    air : Air
+
+    Returns
+    -------
+    LoadData
 
     Raises
     ------
     DataError
-        A file that is neither kind, or malformed (the message names it).
+        A file that is neither kind, or malformed (as :func:`propmap.io.readers.read_uiuc_static`
+        and :func:`~propmap.io.readers.read_uiuc_sweep`: not a readable regular file,
+        non-numeric or non-finite values, RPM outside (0, 954929], CT or CP outside
+        [-10, 10], J outside [0, 20]); a ``diameter`` outside (0, 10] m; or converted
+        loads out of the ranges of :func:`read_loads` (|thrust| > 1e5 N, |torque| > 1e4
+        N m, airspeed > 500 m/s). The message names the file.
     """
     from pathlib import Path
 
     from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
+    if isinstance(diameter, bool) or not isinstance(diameter, numbers.Real) or not 0 < diameter <= 10:
+        raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r}")
     statics, sweeps = [], []
     for p in paths:
         p = Path(p)
@@ -271,12 +469,12 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
                     if "expected columns" in str(sweep_exc) and "expected columns" not in str(static_exc):
                         raise static_exc from None
                     if "expected columns" in str(sweep_exc):
-                        raise DataError(f"{p}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) "
+                        raise DataError(f"{show_path(p)}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) "
                                         "file") from None
                     raise
         except MeasurementFileError as exc:
             raise DataError(str(exc)) from None
-    return _loads_from_runs(statics, sweeps, diameter, air, "UIUC files",
+    return _loads_from_runs(statics, sweeps, float(diameter), air, "UIUC files",
                             "UIUC-format files " + ", ".join(Path(p).name for p in paths))
 
 
@@ -292,6 +490,14 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source) -> LoadData:
         T.append(w.CT * air.rho * n**2 * diameter**4), Q.append(w.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
     if not om:
         raise DataError(f"{name} has no measurements")
+    runs = [*statics, *sweeps]
+    for label, arrays in (("thrust", T), ("torque", Q), ("airspeed", V)):
+        lo, hi, _, _, unit = RANGES[label]
+        for run, x in zip(runs, arrays):
+            if np.any((x < lo) | (x > hi)):  # coefficients, rpm and J are bounded: never NaN
+                bad = float(x[np.argmax((x < lo) | (x > hi))])
+                raise DataError(f"{run.source}: {label} {bad:.4g} {unit} (from the coefficients, the rpm and the "
+                                f"diameter {diameter:g} m) is outside [{lo:g}, {hi:g}] {unit}")
     omega = np.concatenate(om)
     return LoadData(omega, np.concatenate(V), np.zeros(omega.size),
                     {"thrust": np.concatenate(T), "torque": np.concatenate(Q)}, np.concatenate(grp), source)

@@ -2,30 +2,53 @@
 
 TOML format (body frame: x forward, y left, z up; SI units)::
 
-    mass = 0.8            # [kg]
-    gravity = 9.81        # [m/s^2], optional
-    body_area = 0.02      # [m^2], optional: S_body of the body-lift option (Sec. III-A)
+    mass = 0.8            # [kg], in (0, 1e4]
+    gravity = 9.81        # [m/s^2], optional, in (0, 100]
+    body_area = 0.02      # [m^2], optional, in [0, 100]: S_body of the body-lift option (Sec. III-A)
 
     [[rotors]]
-    position = [0.08, -0.08, 0.0]   # [m], hub relative to the centre of mass
-    axis = [0.0, 0.0, 1.0]          # thrust direction
+    position = [0.08, -0.08, 0.0]   # [m], hub relative to the centre of mass, each in [-100, 100]
+    axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
     spin = "ccw"                    # about +axis (right-hand rule), or "cw"
-    propeller = "apce_8x6"          # catalogue name or geometry file (relative to this file)
+    propeller = "apce_8x6"          # geometry file or catalogue name
+
+Numbers must be TOML integers or floats (a ``true`` or a quoted ``"0.8"`` is refused).
+Free-text keys ``name``, ``comment`` and ``source`` are allowed at the top level and in a
+rotor; any other unknown key is an error (a typo such as ``gravty`` is never ignored).
+
+``propeller`` is resolved as follows: a relative path is taken from the folder of the
+vehicle file (not from the working directory), an absolute path as it is; if no file (or
+folder) of that name exists there, the value must be a catalogue name. A geometry file is
+read with :func:`propmap.io.readers.read_geometry` (a UIUC file takes its diameter from a
+``<family>_<D>x<P>`` name).
 """
 
 from __future__ import annotations
 
+import difflib
 import math
+import numbers
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from ..core.geometry import Propeller
-from ..io.catalogue import resolve_propeller
+from ..io.readers import show_path
 from ..io.toml_file import load_toml
 
 __all__ = ["Rotor", "Vehicle", "VehicleFileError", "read_vehicle"]
+
+#: valid ranges (low, high, low open) of the vehicle's numbers
+MASS_RANGE = (0.0, 1e4, True)  # [kg]
+GRAVITY_RANGE = (0.0, 100.0, True)  # [m/s^2]
+BODY_AREA_RANGE = (0.0, 100.0, False)  # [m^2]
+POSITION_MAX = 100.0  # [m], each component
+AXIS_LENGTH_RANGE = (1e-6, 1e6)
+TEXT_KEYS = ("name", "comment", "source")
+VEHICLE_KEYS = ("mass", "gravity", "body_area", "rotors", *TEXT_KEYS)
+ROTOR_KEYS = ("position", "axis", "spin", "propeller", *TEXT_KEYS)
 
 
 class VehicleFileError(ValueError):
@@ -57,61 +80,143 @@ class Vehicle:
         return self.mass * self.gravity
 
 
-def _vec3(value, what: str) -> np.ndarray:
+def _short(value, n: int = 60) -> str:
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    r = repr(value)
+    return r if len(r) <= n else r[: n - 4] + " ..."
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
+def _float(value) -> float:
+    """``float(value)`` of a real number; +-inf for an integer too large for a float."""
     try:
-        a = np.array(value, dtype=float)
-    except (TypeError, ValueError):
-        raise VehicleFileError(f"{what} must be 3 numbers, got {value!r}") from None
-    if a.shape != (3,) or not np.all(np.isfinite(a)):
-        raise VehicleFileError(f"{what} must be 3 finite numbers, got {value!r}")
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
+def _number(value, what: str, unit: str, rng) -> float:
+    lo, hi, lo_open = rng
+    interval = f"{'>' if lo_open else '>='} {lo:g} and <= {hi:g} {unit}"
+    if not _is_number(value):
+        raise VehicleFileError(f"{what} must be a number {interval}, got {_short(value)}")
+    x = _float(value)
+    if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and x <= hi):
+        raise VehicleFileError(f"{what} must be {interval}, got {_short(value)}")
+    return x
+
+
+def _vec3(value, what: str) -> np.ndarray:
+    if not (isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)):
+        raise VehicleFileError(f"{what} must be 3 numbers [x, y, z], got {_short(value)}")
+    a = np.array([_float(v) for v in value])
+    if not np.all(np.isfinite(a)):
+        raise VehicleFileError(f"{what} must be 3 finite numbers, got {_short(value)}")
     return a
 
 
+def _unknown(table: dict, allowed, where: str) -> None:
+    extra = sorted(str(k) for k in table if k not in allowed)
+    if extra:
+        shown = ", ".join(k if k.isidentifier() else _short(k, 40) for k in extra[:5])
+        raise VehicleFileError(f"{where}: unknown key(s) {shown} (allowed: {', '.join(allowed)})")
+
+
+def _propeller(spec, folder: Path, where: str) -> Propeller:
+    """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name."""
+    from ..io.catalogue import catalogue, load_propeller
+    from ..io.readers import read_geometry
+
+    if not isinstance(spec, str) or not spec.strip():
+        raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "
+                               f"got {_short(spec)}")
+    local = folder / spec
+    try:
+        exists = "\x00" not in spec and os.path.lexists(local)
+    except (OSError, ValueError):
+        exists = False
+    if exists:
+        try:
+            return read_geometry(local)
+        except ValueError as exc:
+            raise VehicleFileError(f"{where}: propeller: {exc}") from None
+    if spec in catalogue():
+        return load_propeller(spec)
+    near = difflib.get_close_matches(spec, list(catalogue()), n=3)
+    hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
+    shown = show_path(local)
+    shown = shown if len(shown) <= 300 else shown[:290] + "..."
+    raise VehicleFileError(f"{where}: propeller {_short(spec)} is neither a file ({shown}: a relative "
+                           f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
+
+
 def read_vehicle(path) -> Vehicle:
-    """Read a vehicle TOML file (format in the module docstring).
+    """Read a vehicle TOML file (format, ranges and propeller resolution in the module docstring).
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    Vehicle
 
     Raises
     ------
     VehicleFileError
-        Unreadable TOML, missing ``mass`` or ``rotors``, non-positive mass or gravity,
-        a bad position/axis/spin, or an unknown propeller.
+        Not a readable regular file (a directory, a device, over 16 MiB), not UTF-8,
+        invalid TOML, missing ``mass`` or ``rotors``, an unknown key, a value of the wrong
+        type (a bool or a string for a number, a rotor that is not a table), a mass,
+        gravity, body area or position out of range, an axis of zero, non-finite or
+        overflowing length, a bad spin, or a propeller that is neither a readable geometry
+        file nor a catalogue name; the message names the file, the rotor and the key.
+
+    Warns
+    -----
+    UserWarning
+        As :func:`propmap.io.readers.read_uiuc_geometry` for a rotor's geometry file.
     """
     path = Path(path)
+    name = show_path(path)
     data = load_toml(path, VehicleFileError)
     for key in ("mass", "rotors"):
         if key not in data:
-            raise VehicleFileError(f"{path}: missing key {key!r}")
-    try:
-        mass = float(data["mass"])
-        gravity = float(data.get("gravity", 9.81))
-        area = float(data.get("body_area", 0.0))
-    except (TypeError, ValueError):
-        raise VehicleFileError(f"{path}: mass, gravity and body_area must be numbers") from None
-    if not (math.isfinite(mass) and mass > 0):
-        raise VehicleFileError(f"{path}: mass must be > 0 kg, got {mass!r}")
-    if not (math.isfinite(gravity) and gravity > 0):
-        raise VehicleFileError(f"{path}: gravity must be > 0 m/s^2, got {gravity!r}")
-    if not (math.isfinite(area) and area >= 0):
-        raise VehicleFileError(f"{path}: body_area must be >= 0 m^2, got {area!r}")
+            raise VehicleFileError(f"{name}: missing key {key!r}")
+    _unknown(data, VEHICLE_KEYS, name)
+    mass = _number(data["mass"], f"{name}: mass", "kg", MASS_RANGE)
+    gravity = _number(data.get("gravity", 9.81), f"{name}: gravity", "m/s^2", GRAVITY_RANGE)
+    area = _number(data.get("body_area", 0.0), f"{name}: body_area", "m^2", BODY_AREA_RANGE)
     rotors = []
     if not isinstance(data["rotors"], list) or not data["rotors"]:
-        raise VehicleFileError(f"{path}: 'rotors' must be a non-empty array of tables ([[rotors]])")
+        raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
     for k, r in enumerate(data["rotors"], start=1):
-        where = f"{path}: rotor {k}"
+        where = f"{name}: rotor {k}"
+        if not isinstance(r, dict):
+            raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
+                                   f"got {_short(r)}")
         for key in ("position", "axis", "spin", "propeller"):
             if key not in r:
                 raise VehicleFileError(f"{where}: missing key {key!r}")
+        _unknown(r, ROTOR_KEYS, where)
+        position = _vec3(r["position"], f"{where} position")
+        if np.any(np.abs(position) > POSITION_MAX):
+            raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
+                                   f"m, got {_short(r['position'])}")
         axis = _vec3(r["axis"], f"{where} axis")
-        if np.linalg.norm(axis) == 0:
-            raise VehicleFileError(f"{where}: axis must be non-zero")
-        spin = {"ccw": 1.0, "cw": -1.0}.get(str(r["spin"]).lower())
+        lo, hi = AXIS_LENGTH_RANGE
+        scale = float(np.max(np.abs(axis)))
+        length = scale * float(np.linalg.norm(axis / scale)) if scale > 0 else 0.0
+        if not (lo <= length <= hi):
+            raise VehicleFileError(f"{where}: axis must be non-zero with a length in [{lo:g}, {hi:g}] (a direction; "
+                                   f"it is normalised), got {_short(r['axis'])}")
+        spin = r["spin"]
+        spin = {"ccw": 1.0, "cw": -1.0}.get(spin.lower()) if isinstance(spin, str) else None
         if spin is None:
-            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {r['spin']!r}")
-        spec = str(r["propeller"])
-        local = path.parent / spec
-        try:
-            prop = resolve_propeller(str(local) if local.is_file() else spec)
-        except (KeyError, ValueError) as exc:
-            raise VehicleFileError(f"{where}: propeller: {exc.args[0] if exc.args else exc}") from None
-        rotors.append(Rotor(_vec3(r["position"], f"{where} position"), axis / np.linalg.norm(axis), spin, prop))
+            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {_short(r['spin'])}")
+        prop = _propeller(r["propeller"], path.parent, where)
+        rotors.append(Rotor(position, axis / length, spin, prop))
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area)

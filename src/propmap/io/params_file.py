@@ -42,18 +42,28 @@ the ``CamberedParams`` default, so a file normally lists them all (``write_param
 
 Either model also takes ``rho``, ``mu`` and ``speed_of_sound`` (the air) and the free
 text keys ``comment`` and ``source``.
+
+Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
+never converted), finite, and within its range: the cambered keys as ``CamberedParams``
+(angles in degrees here: ``alpha_L0_deg`` in [-20, 10], ``alpha_L0_re_deg`` in [-5, 5]);
+the paper's keys and the air within :data:`FILE_RANGES`, which only refuse absurd values
+(``cl1 = 1e300``): ``cl1``, ``cl2``, ``cd``, ``cp_blasius`` in [0, 100], ``cd0`` in
+[0, 10], ``M`` in (0, 1e6], ``alpha0_deg`` in (0, 90); ``rho`` in (0, 2000] kg/m^3,
+``mu`` in (0, 10] Pa s, ``speed_of_sound`` in (0, 1e4] m/s.
 """
 
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import fields
 from pathlib import Path
 
 import tomli_w
 
-from ..core.airfoil import PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.airfoil import LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
 from .atomic import atomic_write
+from .readers import show_path
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "read_params", "write_params", "resolve_params", "params_to_dict",
@@ -65,6 +75,18 @@ AIR_KEYS = ("rho", "mu", "speed_of_sound")
 TEXT_KEYS = ("comment", "source", "section_model")
 #: keys holding an angle in degrees in files, and the field they set [rad]
 DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re"}
+#: valid ranges of file keys checked here, (low, high, low open, high open, unit); the
+#: records check the rest (CamberedParams.RANGES)
+FILE_RANGES = {
+    "gill2017": {"cl1": (0.0, 100.0, False, False, ""), "cl2": (0.0, 100.0, False, False, ""),
+                 "cd": (0.0, 100.0, False, False, ""), "cd0": (0.0, 10.0, False, False, ""),
+                 "cp_blasius": (0.0, 100.0, False, False, ""), "M": (0.0, 1e6, True, False, "1/rad"),
+                 "alpha0_deg": (0.0, 90.0, True, True, "deg")},
+    "cambered": {"alpha_L0_deg": (-20.0, 10.0, False, False, "deg"),
+                 "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg")},
+    "air": {"rho": (0.0, 2000.0, True, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
+            "speed_of_sound": (0.0, 1e4, True, False, "m/s")},
+}
 
 
 class ParamsFileError(ValueError):
@@ -88,31 +110,43 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
     ------
     ValueError
         Unknown ``section_model``, a missing required key, an unknown key, a value of the
-        wrong type or out of range; the message starts with ``where``.
+        wrong type (a string or a bool for a number), non-finite or out of range (the
+        module docstring gives the ranges); the message starts with ``where`` and names the
+        key and the valid range.
     """
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}: expected a table of keys, got {_short(data)}")
     model = data.get("section_model", "gill2017")
-    if model not in SECTION_MODELS:
-        raise ValueError(f"{where}: section_model must be one of {', '.join(SECTION_MODELS)}, got {model!r}")
+    if not isinstance(model, str) or model not in SECTION_MODELS:
+        raise ValueError(f"{where}: section_model must be one of {', '.join(SECTION_MODELS)}, got {_short(model)}")
     missing = [k for k in REQUIRED[model] if k not in data]
     if missing:
         raise ValueError(f"{where}: missing key(s) {', '.join(missing)} (required for section_model "
                          f"{model!r}: {', '.join(REQUIRED[model])})")
     keys = _file_keys(model)
-    unknown = sorted(set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS))
+    unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS)))
     if unknown:
-        raise ValueError(f"{where}: unknown key(s) {', '.join(unknown)} for section_model {model!r}")
+        shown = ", ".join(_short(k, 40) if not k.isidentifier() else k for k in unknown[:5])
+        more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
+        raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}")
+    types = {f.name: f.type if isinstance(f.type, str) else f.type.__name__ for f in fields(_record(model))}
+    types = {k: types[n] for k, n in keys.items()}  # file key -> "float", "bool" or "str"
+    ranges = {**FILE_RANGES[model], **FILE_RANGES["air"]}
+    for key in sorted(set(data) & (set(keys) | set(AIR_KEYS))):
+        kind = types.get(key, "float")
+        if kind == "float":
+            _check_number(data[key], key, where, ranges.get(key))
+        elif kind == "bool" and not isinstance(data[key], bool):
+            raise ValueError(f"{where}: {key} must be true or false, got {_short(data[key])}")
+        elif key == "lift_model" and data[key] not in LIFT_MODELS:
+            raise ValueError(f"{where}: lift_model must be one of {', '.join(LIFT_MODELS)}, got {_short(data[key])}")
     kw = {}
     for key, name in keys.items():
         if key not in data:
             continue
         value = data[key]
         if key in DEG_KEYS:
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                raise ValueError(f"{where}: {key} must be a number, got {value!r}")
-            try:
-                value = math.radians(value)
-            except OverflowError:
-                raise ValueError(f"{where}: {key} must be a finite number, got {data[key]!r}") from None
+            value = math.radians(value)
         kw[name] = value
     try:
         params = _record(model)(**kw)
@@ -122,11 +156,48 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
     return params, air
 
 
+def _short(value, n: int = 60) -> str:
+    """``repr(value)`` cut to about ``n`` characters, for messages."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    r = repr(value)
+    return r if len(r) <= n else r[: n - 4] + " ..."
+
+
+def _check_number(value, key: str, where: str, rng) -> None:
+    """Refuse a non-number, a non-finite number or one outside ``rng``, naming ``key``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        hint = " (a quoted string: write the number without quotes)" if isinstance(value, str) else ""
+        raise ValueError(f"{where}: {key} must be a number, got {_short(value)}{hint}")
+    try:
+        x = float(value)
+    except OverflowError:
+        x = math.inf if value > 0 else -math.inf
+    if rng is None:
+        if not math.isfinite(x):
+            raise ValueError(f"{where}: {key} must be a finite number, got {_short(value)}")
+        return
+    lo, hi, lo_open, hi_open, unit = rng
+    if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and (x < hi if hi_open else x <= hi)):
+        interval = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{' ' + unit if unit else ''}"
+        raise ValueError(f"{where}: {key} must be a finite number in {interval}, got {_short(value)}")
+
+
 def params_to_dict(params: SectionParams, air: Air = Air()) -> dict:
     """The file form of ``params`` and ``air``: every field, angles in degrees.
 
-    ``params_from_dict(params_to_dict(p, air))`` gives back equal records (angles to
-    the last bit of a degree-radian round trip).
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+    air : Air
+
+    Returns
+    -------
+    dict
+        ``section_model`` and every field under its file key (``alpha0_deg``,
+        ``alpha_L0_deg``, ``alpha_L0_re_deg`` in degrees), and ``rho``, ``mu``,
+        ``speed_of_sound``. ``params_from_dict`` gives back the record with its angles
+        equal to within the degree-radian round trip (relative 2e-16).
     """
     data = {"section_model": params.section_model}
     keys = _file_keys(params.section_model)
@@ -147,14 +218,15 @@ def read_params(path) -> tuple[SectionParams, Air]:
     Raises
     ------
     ParamsFileError
-        Unreadable or invalid TOML, a missing required key, an unknown key, a value of the
-        wrong type (a quoted number, a bool for a number) or out of range; the message
-        names the file.
+        Not a readable regular file (a directory, a device, over 16 MiB), not UTF-8,
+        invalid TOML, a missing required key, an unknown key, a value of the wrong type (a
+        quoted number, a bool for a number), non-finite or out of range (ranges in the
+        module docstring); the message names the file and the key.
     """
     path = Path(path)
     data = load_toml(path, ParamsFileError)
     try:
-        return params_from_dict(data, where=str(path))
+        return params_from_dict(data, where=show_path(path))
     except ValueError as exc:
         raise ParamsFileError(str(exc)) from None
 
@@ -162,7 +234,13 @@ def read_params(path) -> tuple[SectionParams, Air]:
 def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str = "") -> None:
     """Write ``params`` and ``air`` (every field) atomically to ``path``.
 
-    Reading the file back with :func:`read_params` gives equal records.
+    Reading the file back with :func:`read_params` gives the same record, its angles to
+    within the degree-radian round trip (relative 2e-16).
+
+    Raises
+    ------
+    OSError
+        The file cannot be written.
     """
     data = params_to_dict(params, air)
     if comment:
@@ -172,7 +250,12 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
 
 
 def named_sets() -> tuple[str, ...]:
-    """Names :func:`resolve_params` accepts besides files."""
+    """Names :func:`resolve_params` accepts besides files (for messages and help).
+
+    Returns
+    -------
+    tuple of str
+    """
     return (*PRESETS, "generic", "calibrated:<catalogue name>")
 
 

@@ -1,18 +1,50 @@
-"""Reading TOML input files with errors that name the file."""
+"""Reading TOML input files with errors that name the file.
+
+The file is read as :func:`propmap.io.readers.read_input_bytes` reads every input file:
+a regular file only (never a directory, a device or a pipe), at most
+:data:`~propmap.io.readers.MAX_SMALL_FILE_BYTES`, UTF-8 (a byte-order mark is dropped).
+"""
 
 from __future__ import annotations
 
 import tomllib
 from pathlib import Path
 
+from .readers import MAX_SMALL_FILE_BYTES, decode_input_text, read_input_bytes, show_path
+
 __all__ = ["load_toml"]
 
 
 def load_toml(path: Path, error: type[ValueError]) -> dict:
-    """Parse the TOML file ``path``; raise ``error`` naming the file if unreadable or invalid."""
+    """Parse the TOML file ``path``.
+
+    Parameters
+    ----------
+    path : str or Path
+    error : ValueError subclass
+        Raised with a one-line message naming the file.
+
+    Returns
+    -------
+    dict
+        The parsed document (values as :mod:`tomllib` gives them: the caller checks
+        types and ranges).
+
+    Raises
+    ------
+    error
+        Not a readable regular file, larger than 16 MiB, not UTF-8 (the message gives the
+        line), or not valid TOML (the message gives tomllib's line and column; also for
+        arrays nested too deeply and integers of more than 4300 digits).
+    """
+    name = show_path(path)
+    text = decode_input_text(read_input_bytes(path, error, limit=MAX_SMALL_FILE_BYTES), path, error)
     try:
-        return tomllib.loads(Path(path).read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise error(f"{path}: cannot read ({exc.strerror})") from None
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise error(f"{path}: not valid TOML ({exc})") from None
+        raise error(f"{name}: not valid TOML ({' '.join(str(exc).split())})") from None
+    except RecursionError:
+        raise error(f"{name}: not valid TOML (arrays or tables nested too deeply)") from None
+    except ValueError as exc:  # int() of a number of more than sys.get_int_max_str_digits() digits
+        why = "an integer of more than 4300 digits" if "digits" in str(exc) else " ".join(str(exc).split())[:120]
+        raise error(f"{name}: not valid TOML ({why})") from None
