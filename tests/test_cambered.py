@@ -18,27 +18,31 @@ from propmap.core.solver import _nodes
 from .conftest import RPM
 
 CAMBERED = pm.CamberedParams()
+RTOL = 3e-8  # the root-solve tolerance band of the regression values below
 
 
 def test_paper_model_unchanged_regression_values(apc8x6, apc_params):
     """Regression values: gill2017-apc computed by propmap before the cambered model was
-    added (commit e78c5ca); the paper's model must stay exactly as it was."""
+    added (commit e78c5ca); the paper's model must stay as it was. Tolerance: the root
+    solve stops within XTOL = 1e-7 of the inflow scale, and its refinement changed from
+    the Illinois method to Chandrupatla's (same roots, other iterates), which moved these
+    values by at most 9e-9 relative; rtol 3e-8 holds them well inside that tolerance."""
     rpm = np.array([3000.0, 8000.0, 8000.0, 8000.0, 12000.0, 6000.0, 10000.0])
     V = np.array([0.0, 10.0, 15.0, 20.0, 5.0, 12.0, 8.0])
     inc = np.radians([0.0, 0.0, 60.0, 90.0, 150.0, 30.0, 180.0])
     r = pm.rotor_loads(apc8x6, apc_params, rpm * RPM, V, inc)
     np.testing.assert_allclose(r.thrust, [0.6348605267227706, 2.8244569921840195, 3.8689172115781365,
                                           5.61866474648213, 10.813215646113742, 1.1184078276687608,
-                                          7.780118037283021], rtol=1e-12)
+                                          7.780118037283021], rtol=RTOL)
     np.testing.assert_allclose(r.drag, [0.0, 0.0, 0.38957985314118, 0.5010899677077161, 0.10089168540197295,
-                                        0.16526122131665272, 0.0], rtol=1e-12, atol=1e-15)
+                                        0.16526122131665272, 0.0], rtol=RTOL, atol=1e-15)
     np.testing.assert_allclose(r.torque, [0.010659572873177875, 0.059309683457336254, 0.06975130093320218,
                                           0.07851861027906953, 0.1657619935088089, 0.026502507690302202,
-                                          0.11528438724629263], rtol=1e-12)
+                                          0.11528438724629263], rtol=RTOL)
     s = pm.rotor_loads(apc8x6, apc_params.replace(lift_model="sincos"), rpm * RPM, V, inc)
     np.testing.assert_allclose(s.thrust, [0.2515870642903018, 1.0609275431956025, 1.4433165108205466,
                                           2.3954639312020727, 4.36809151536542, 0.40425775683605714,
-                                          3.1651275876546725], rtol=1e-12)
+                                          3.1651275876546725], rtol=RTOL)
 
 
 def test_polar_zero_lift_angle_slope_and_stall():

@@ -124,8 +124,10 @@ def test_shipped_calibration_reloads_exactly_and_reproduces_its_errors():
         c = calibrated(name)
         prop = pm.load_propeller(name)
         e = coefficient_errors(loads_from_catalogue(pm.catalogue()[name], prop.diameter), prop, c.params)
-        assert e["rms_ct"] == pytest.approx(c.rms_ct, rel=1e-9)
-        assert e["rms_cp"] == pytest.approx(c.rms_cp, rel=1e-9)
+        # to the root-solve tolerance (XTOL 1e-7 of the inflow scale): recorded before the
+        # refinement of the root solve changed, which moved them by < 1e-7 relative
+        assert e["rms_ct"] == pytest.approx(c.rms_ct, rel=1e-6)
+        assert e["rms_cp"] == pytest.approx(c.rms_cp, rel=1e-6)
     assert generic_params() == cal["generic"].params
 
 

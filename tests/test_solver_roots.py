@@ -196,3 +196,28 @@ def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monke
     monkeypatch.setattr(_kernel, "MAX_REFINE", 1)
     v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
     assert np.all(code == _kernel.NO_CONVERGENCE) and np.all(np.isfinite(v))
+
+
+def test_refinement_entered_from_doubling_finds_the_same_root(apc8x6, apc_params, monkeypatch):
+    """The bracket found by doubling (no extra-scan point: a secant first step) refines to
+    the root the march finds, within the root tolerance."""
+    from propmap.core import _kernel
+
+    nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params)
+    om, V, b = 800.0, 10.0, 1.0
+    v_march, code, _ = _solve_annuli_python(nd, apc_params, om, V, b)
+    monkeypatch.setattr(_kernel, "MAX_MARCH", 1)  # the root lies ~3 march steps out: doubling brackets it
+    v_double, code2, _ = _solve_annuli_python(nd, apc_params, om, V, b)
+    assert np.all(code == _kernel.OK) and np.all(code2 == _kernel.OK)
+    np.testing.assert_allclose(v_double, v_march, rtol=0, atol=2e-7 * np.max(np.abs(v_march)))
+
+
+def test_residual_evaluations_per_annulus(apc8x6, apc_params, envelope_points):
+    """Machine-independent cost of the root solve on the 200 envelope points (regression
+    values): 10.3 per annulus with the Illinois refinement, 8.6 with Chandrupatla's; the
+    march and the extra scan take ~5.8 of them."""
+    om, V, b = envelope_points
+    for p in (apc_params, pm.CamberedParams()):
+        r = pm.rotor_loads(apc8x6, p, om, V, b)
+        per_annulus = r.n_evaluations.mean() / pm.DEFAULT_DISCRETIZATION.n_radial
+        assert 7.5 < per_annulus < 9.0, per_annulus

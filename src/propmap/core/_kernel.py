@@ -14,8 +14,15 @@ stable root (F crosses zero downward in that direction). Concretely:
    on this march", which is deterministic and reproducible by the NumPy reference.)
 3. If no sign change after MAX_MARCH steps: double v until one appears (a root always
    exists, docs/numerics.md "Root solve").
-4. Refine the bracket with the Illinois method to |dv| <= XTOL * v_m or
-   |F| <= FTOL * |F(0)|.
+4. Refine the bracket with Chandrupatla's method (inverse quadratic interpolation where
+   the three latest points admit it, else bisection; every step stays inside the
+   bracket) until it is narrower than XTOL * v_m or |F| <= FTOL * |F(0)|; the end point
+   with the smaller |F| is returned. Its first step interpolates through the bracket
+   ends and the extra-scan point of step 5 (which lies beyond the bracket with the sign
+   of F at its near end), so that evaluation also speeds the refinement. Every iterate
+   stays in the bracket of step 2, so the root selected is that of the rule whatever
+   the refinement (the NumPy reference refines with the Illinois method and selects
+   the same roots).
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
    march steps beyond the bracket.
 
@@ -99,6 +106,27 @@ def _false_position(a, fa, b, fb):
     return (a * fb - b * fa) / (fb - fa)
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _chandrupatla_t(x1, f1, x2, f2, x3, f3, tol):
+    """Fraction t of the next iterate x1 + t (x2 - x1) in Chandrupatla's method.
+
+    (x1, f1) is the newest point, (x2, f2) the other end of the bracket (f1 f2 < 0) and
+    (x3, f3) the point dropped last (beyond the bracket, f3 of the sign of f1). Inverse
+    quadratic interpolation where the three points admit a monotone one, else bisection;
+    t is kept tol / 2 away from the ends. Chandrupatla, "A new hybrid quadratic/bisection
+    algorithm for finding the zero of a nonlinear function without using derivatives",
+    Adv. Eng. Software 28 (1997) 145-149, Fig. 1 and eq. 1.
+    """
+    xi = (x1 - x2) / (x3 - x2)
+    phi = (f1 - f2) / (f3 - f2)
+    t = 0.5
+    if 1.0 - np.sqrt(1.0 - xi) < phi and phi < np.sqrt(xi):
+        alpha = (x3 - x1) / (x2 - x1)
+        t = f1 / (f1 - f2) * f3 / (f3 - f2) - alpha * f1 / (f3 - f1) * f2 / (f2 - f3)
+    tl = 0.5 * tol / abs(x2 - x1)
+    return min(max(t, tl), 1.0 - tl)
+
+
 # phases of one annulus' root solve (solve_annuli)
 _INIT = 0
 _MARCH = 1
@@ -127,6 +155,8 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
     fa = np.empty(nr)
     b = np.zeros(nr)
     fb = np.empty(nr)
+    c = np.zeros(nr)
+    fc = np.empty(nr)
     sgn = np.empty(nr)
     h = np.empty(nr)
     xtol = np.empty(nr)
@@ -232,21 +262,28 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                     multiple[j] = True
                     refine = True
                 else:
+                    c[j] = trial[j]  # beyond the bracket, F of the sign of F(b): seeds the interpolation
+                    fc[j] = fj
                     cnt[j] += 1
                     if cnt[j] > EXTRA_SCAN:
                         refine = True
                     else:
                         trial[j] = sgn[j] * (kb[j] + cnt[j]) * h[j]
-            else:  # _REFINE: Illinois on [a, b], fa * fb < 0
-                if fj * fb[j] < 0.0:
+            else:  # _REFINE: Chandrupatla on the bracket [a, b], fa * fb < 0, b the newest point
+                # the secant through the two newest points estimates the distance to the root
+                est = abs(fj * (trial[j] - b[j]) / (fj - fb[j]))
+                if fj * fb[j] > 0.0:
+                    c[j] = b[j]
+                    fc[j] = fb[j]
+                else:
+                    c[j] = a[j]
+                    fc[j] = fa[j]
                     a[j] = b[j]
                     fa[j] = fb[j]
-                else:
-                    fa[j] = 0.5 * fa[j]
                 b[j] = trial[j]
                 fb[j] = fj
-                if abs(fj) <= ftol[j] or abs(b[j] - a[j]) <= xtol[j]:
-                    v[j] = b[j]
+                if abs(fj) <= ftol[j] or abs(b[j] - a[j]) <= xtol[j] or est <= xtol[j]:
+                    v[j] = b[j] if abs(fb[j]) <= abs(fa[j]) else a[j]
                     done = True
                 else:
                     cnt[j] += 1
@@ -255,7 +292,8 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                         code[j] = NO_CONVERGENCE
                         done = True
                     else:
-                        trial[j] = _false_position(a[j], fa[j], b[j], fb[j])
+                        trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
+                                                          xtol[j]) * (a[j] - b[j])
             if refine:
                 if fb[j] == 0.0:
                     v[j] = b[j]
@@ -263,7 +301,13 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                 else:
                     phase[j] = _REFINE
                     cnt[j] = 0
-                    trial[j] = _false_position(a[j], fa[j], b[j], fb[j])
+                    if ph == _SCAN and not multiple[j]:
+                        trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
+                                                          xtol[j]) * (a[j] - b[j])
+                    else:  # no third point of the right sign: a secant step first
+                        tl = 0.5 * xtol[j] / abs(a[j] - b[j])
+                        t = min(max(fb[j] / (fb[j] - fa[j]), tl), 1.0 - tl)
+                        trial[j] = b[j] + t * (a[j] - b[j])
             if not done:
                 active[m] = j
                 m += 1
