@@ -496,8 +496,9 @@ def test_long_lines_are_linear_time(tmp_path):
 
 def test_uiuc_files_converted_to_out_of_range_loads(tmp_path):
     p = _write(tmp_path, "s_9x6_static_r1.txt", "RPM CT CP\n900000 9 5\n")
-    with pytest.raises(DataError, match=r"s_9x6_static_r1.txt: thrust .* N .* is outside \[-100000, 100000\] N"):
+    with pytest.raises(DataError, match=r"static_r1.txt: thrust .* N .* is outside \[-100000, 100000\] N") as info:
         loads_from_uiuc_files([p], 2.0)
+    assert str(info.value).startswith(f"{p}: thrust 3.969e+10 N")
     with pytest.raises(DataError, match=r"diameter must be a finite number in \(0, 10\] m"):
         loads_from_uiuc_files([p], float("inf"))
     q = _write(tmp_path, "notes.txt", "hello\n")

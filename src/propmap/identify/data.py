@@ -456,15 +456,17 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
 
     if isinstance(diameter, bool) or not isinstance(diameter, numbers.Real) or not 0 < diameter <= 10:
         raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r}")
-    statics, sweeps = [], []
+    statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:
         p = Path(p)
         try:
             try:
                 statics.append(read_uiuc_static(p))
+                static_files.append(show_path(p))
             except MeasurementFileError as static_exc:
                 try:
                     sweeps.append(read_uiuc_sweep(p))
+                    sweep_files.append(show_path(p))
                 except MeasurementFileError as sweep_exc:
                     if "expected columns" in str(sweep_exc) and "expected columns" not in str(static_exc):
                         raise static_exc from None
@@ -474,11 +476,12 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
                     raise
         except MeasurementFileError as exc:
             raise DataError(str(exc)) from None
-    return _loads_from_runs(statics, sweeps, float(diameter), air, "UIUC files",
-                            "UIUC-format files " + ", ".join(Path(p).name for p in paths))
+    source = "UIUC-format files " + ", ".join(Path(p).name for p in paths)
+    return _loads_from_runs(statics, sweeps, float(diameter), air, "UIUC files", source, [*static_files, *sweep_files])
 
 
-def _loads_from_runs(statics, sweeps, diameter, air, name, source) -> LoadData:
+def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -> LoadData:
+    """Thrust and torque from the runs' coefficients; ``files``: each run's file (statics, then sweeps)."""
     om, V, T, Q, grp = [], [], [], [], []
     for s in statics:
         n = s.rpm / 60
@@ -491,13 +494,14 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source) -> LoadData:
     if not om:
         raise DataError(f"{name} has no measurements")
     runs = [*statics, *sweeps]
+    files = files or [run.source for run in runs]
     for label, arrays in (("thrust", T), ("torque", Q), ("airspeed", V)):
         lo, hi, _, _, unit = RANGES[label]
-        for run, x in zip(runs, arrays):
+        for file, x in zip(files, arrays):
             if np.any((x < lo) | (x > hi)):  # coefficients, rpm and J are bounded: never NaN
                 bad = float(x[np.argmax((x < lo) | (x > hi))])
-                raise DataError(f"{run.source}: {label} {bad:.4g} {unit} (from the coefficients, the rpm and the "
-                                f"diameter {diameter:g} m) is outside [{lo:g}, {hi:g}] {unit}")
+                raise DataError(f"{file}: {label} {bad:.4g} {unit} (from the coefficients, the rpm and the diameter "
+                                f"{diameter:g} m) is outside [{lo:g}, {hi:g}] {unit}")
     omega = np.concatenate(om)
     return LoadData(omega, np.concatenate(V), np.zeros(omega.size),
                     {"thrust": np.concatenate(T), "torque": np.concatenate(Q)}, np.concatenate(grp), source)
