@@ -306,3 +306,19 @@ def test_risky_point_gets_a_one_line_warning(capsys):
     code, out, err = run(capsys, "loads", "apce_8x6", "--rpm", "40000", "--json")
     assert code == 0 and json.loads(out)["thrust"] > 0
     assert err.count("propmap: warning: tip Mach number up to") == 1
+
+
+def test_the_console_entry_point_exits_fast_with_complete_output_and_the_exit_code(tmp_path):
+    """run() ends the process with os._exit after flushing (skipping ~0.3 s of interpreter
+    teardown): the output must still be complete and the exit code kept."""
+    ok = subprocess.run([sys.executable, "-m", "propmap", "loads", "apce_8x6", "--rpm", "8000", "--json"],
+                        capture_output=True, text=True)
+    assert ok.returncode == 0 and json.loads(ok.stdout)["thrust"] > 0
+    bad = subprocess.run([sys.executable, "-m", "propmap", "loads", "apce_8x6", "--rpm", "-1"],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and bad.stdout == ""
+    src = tmp_path / "in.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n" + "8000,5,30\n" * 3000)
+    piped = subprocess.run(f"{sys.executable} -m propmap loads apce_8x6 --points {src} --out - | head -2",
+                           shell=True, capture_output=True, text=True)
+    assert len(piped.stdout.splitlines()) == 2 and "Traceback" not in piped.stderr

@@ -16,7 +16,7 @@ SRC = Path(_kernel.__file__).resolve().parents[1]  # .../propmap
 
 SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K; "
           "r = pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
-          "s = K.solve_batch.stats; print(repr(float(r.torque)), sum(s.cache_hits.values()), "
+          "s = K.solve_batch_serial.stats; print(repr(float(r.torque)), sum(s.cache_hits.values()), "
           "sum(s.cache_misses.values()))")
 
 
@@ -33,7 +33,7 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
 
 
 def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernel(tmp_path):
-    """The issue's case: warm cache, then edit _physics.py (here: eq 4's form drag doubled)."""
+    """A warm cache, then edit _physics.py (here: eq 4's form drag doubled)."""
     pkg = tmp_path / "propmap"
     shutil.copytree(SRC, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc"))
     env = {**os.environ, "PYTHONPATH": str(tmp_path), "NUMBA_CACHE_DIR": ""}

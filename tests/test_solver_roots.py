@@ -135,6 +135,7 @@ def test_failed_solve_raises_or_flags_never_silent(apc8x6, apc_params, monkeypat
     from propmap.core import _kernel
 
     monkeypatch.setattr(_kernel, "solve_batch", _fail_everything)
+    monkeypatch.setattr(_kernel, "solve_batch_serial", _fail_everything)
     with pytest.raises(pm.SolverError, match=r"annulus r/R=0\.\d+: .*bracket"):
         pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2)
     r = pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2, on_failure="flag")
@@ -155,7 +156,7 @@ def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, 
     pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0)  # this process compiled or loaded it
     code = ("import propmap as pm; from propmap.core import _kernel as K; "
             "pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
-            "s = K.solve_batch.stats; print(sum(s.cache_hits.values()), sum(s.cache_misses.values()))")
+            "s = K.solve_batch_serial.stats; print(sum(s.cache_hits.values()), sum(s.cache_misses.values()))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     hits, misses = map(int, out.split())
     assert (hits, misses) == (1, 0)

@@ -1,8 +1,6 @@
 """``python -m propmap``: the command line (same as the ``propmap`` script)."""
 
-import sys
-
-from propmap.cli.main import main
+from propmap.cli.main import run
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run()

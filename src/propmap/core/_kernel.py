@@ -330,8 +330,8 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
     return cfac * aT / naz, dD, y * cfac * aQ / naz
 
 
-@numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
                 T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
     """Solve every operating point; results are written into the output arrays.
 
@@ -412,3 +412,21 @@ def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sin
         nmulti[i] = nm
         nvrs[i] = nv
         nevals[i] = ne
+
+
+@numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
+def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
+                T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
+    """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial, T, D, Q, vi, dT, dD,
+                 dQ, status, nmulti, nvrs, nevals)
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
+def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
+                       T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
+    """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
+    where starting the parallel region would cost more than the work; a process that only
+    solves small batches then never starts the thread pool."""
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial, T, D, Q, vi, dT, dD,
+                 dQ, status, nmulti, nvrs, nevals)

@@ -13,7 +13,8 @@ import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
+
+from ._pchip import Pchip
 
 __all__ = ["Propeller"]
 
@@ -91,8 +92,8 @@ class Propeller:
     theta: np.ndarray
     pitch: float | None = None
     source: str = ""
-    _chord_spline: PchipInterpolator = field(init=False, repr=False)
-    _theta_spline: PchipInterpolator = field(init=False, repr=False)
+    _chord_spline: Pchip = field(init=False, repr=False)
+    _theta_spline: Pchip = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         radius = _real(self.radius)
@@ -145,8 +146,8 @@ class Propeller:
         object.__setattr__(self, "n_blades", int(nb))
         for key, a in arrays.items():
             object.__setattr__(self, key, a)
-        object.__setattr__(self, "_chord_spline", PchipInterpolator(r, chord, extrapolate=True))
-        object.__setattr__(self, "_theta_spline", PchipInterpolator(r, theta, extrapolate=True))
+        object.__setattr__(self, "_chord_spline", Pchip(r, chord))
+        object.__setattr__(self, "_theta_spline", Pchip(r, theta))
 
     @property
     def diameter(self) -> float:

@@ -11,7 +11,6 @@ import functools
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 
 from . import _kernel
@@ -399,16 +398,12 @@ def rotor_loads(
     nvrs = np.empty(n, dtype=np.int64)
     nev = np.empty(n, dtype=np.int64)
     model, pk = _model_constants(params)
-    threads = numba.get_num_threads()
-    if n < PARALLEL_MIN_POINTS and threads > 1:
-        numba.set_num_threads(1)  # per calling thread; restored below
-    try:
-        _kernel.solve_batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2,
-                            nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk, _cambered_args(params, air),
-                            bool(radial), T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nev)
-    finally:
-        if numba.get_num_threads() != threads:
-            numba.set_num_threads(threads)
+    # a small batch runs on the calling thread: starting the parallel region would cost more
+    # than the work (and a single call need not load the thread pool at all)
+    batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
+    batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
+          nd.sinpsi, model, pk, _cambered_args(params, air), bool(radial), T, D, Q, vi, dT, dD, dQ, status, nmulti,
+          nvrs, nev)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
         i = int(np.argmax(~converged))
