@@ -6,7 +6,7 @@
   D'Andrea (2017).
 * :func:`cross_validate`: held-out errors of the calibration protocols (leave one sweep
   out, static-only calibration, static + lowest-rpm sweep, blind prediction with a generic
-  set that never saw the propeller), in the issue's metric rms |dCT| / static CT and
+  set that never saw the propeller), in the metric rms |dCT| / static CT and
   |dCP| / static CP.
 
 Measurements: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255).

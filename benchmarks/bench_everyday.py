@@ -1,0 +1,152 @@
+"""Everyday-path benchmark: CLI start-up, one rotor_loads call, memory per point.
+
+Run:  .venv/bin/python benchmarks/bench_everyday.py [--million]
+
+Writes benchmarks/results/everyday.json atomically and prints it.
+
+* CLI wall time, whole process, median (and min, max) of 10 runs after one warm-up run:
+  ``propmap --help``, ``propmap props``, a single-point ``propmap loads`` (warm kernel
+  cache). Baselines timed in the same run: ``python -c pass`` and ``python -c "import
+  numba; import numba.np.arraymath"`` (what any numba program pays before its first call),
+  so the ratios carry over to other machines.
+* One ``rotor_loads`` call (one operating point, paper's and generic sets), median of
+  2,000 calls, split into the compiled kernel alone (``_kernel.solve_batch_serial`` on
+  prepared arrays) and the Python wrapper around it (input checks, nodes, the result).
+* Memory: bytes per operating point held by a ``RotorLoads`` with and without the
+  per-annulus fields (``radial``), tracemalloc peak over 100,000 points (machine-
+  independent); the peak resident memory of ``propmap loads --points`` on 100,000 points
+  (10^6 with ``--million``; ~1 min on 2 cores).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+import tracemalloc
+from pathlib import Path
+
+import numpy as np
+
+import propmap as pm
+from propmap.core import _kernel
+from propmap.core.solver import _cambered_args, _model_constants, _nodes
+from propmap.io.atomic import atomic_write
+
+BIN = Path(sys.executable).parent
+RUNS = 10
+
+
+def wall(argv, runs=RUNS):
+    """(min, median, max) wall seconds of ``argv`` as a whole process, after one warm-up."""
+    subprocess.run(argv, capture_output=True, check=True)
+    times = []
+    for _ in range(runs):
+        t = time.perf_counter()
+        subprocess.run(argv, capture_output=True, check=True)
+        times.append(time.perf_counter() - t)
+    return {"min_s": min(times), "median_s": float(np.median(times)), "max_s": max(times)}
+
+
+def cli_times():
+    py = [sys.executable]
+    res = {
+        "python_-c_pass": wall(py + ["-c", "pass"]),
+        "import_numba_and_arraymath": wall(py + ["-c", "import numba; import numba.np.arraymath"]),
+        "propmap_--help": wall([str(BIN / "propmap"), "--help"]),
+        "propmap_props": wall([str(BIN / "propmap"), "props"]),
+        "propmap_loads_single_point": wall([str(BIN / "propmap"), "loads", "apce_8x6", "--rpm", "8000",
+                                            "--airspeed", "10", "--incidence-deg", "45"]),
+    }
+    base = res["import_numba_and_arraymath"]["median_s"]
+    res["ratio_single_point_to_numba_import"] = res["propmap_loads_single_point"]["median_s"] / base
+    return res
+
+
+def single_call(params, n=2000):
+    """Median seconds of one rotor_loads call and of the kernel alone on the same point."""
+    prop = pm.load_propeller("apce_8x6")
+    om, V, b = 8000 * math.pi / 30, 10.0, math.radians(45)
+    pm.rotor_loads(prop, params, om, V, b)
+    d = pm.DEFAULT_DISCRETIZATION
+    air = pm.Air()
+    nd = _nodes(prop, d.n_radial, d.n_azimuth, air, params)
+    model, pk = _model_constants(params)
+    nr = nd.y.size
+    args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), nd.y, nd.w, nd.theta,
+            nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, model, pk,
+            _cambered_args(params, air), False, np.empty(1), np.empty(1), np.empty(1), np.empty((1, nr)),
+            np.empty((1, nr)), np.empty((1, nr)), np.empty((1, nr)), np.empty(1, np.int64), np.empty(1, np.int64),
+            np.empty(1, np.int64), np.empty(1, np.int64))
+    total, kernel = [], []
+    for _ in range(n):  # interleaved, so that drift of the machine's speed hits both alike
+        t = time.perf_counter()
+        pm.rotor_loads(prop, params, om, V, b)
+        total.append(time.perf_counter() - t)
+        t = time.perf_counter()
+        _kernel.solve_batch_serial(*args)
+        kernel.append(time.perf_counter() - t)
+    tot, ker = float(np.median(total)), float(np.median(kernel))
+    return {"rotor_loads_us_median": 1e6 * tot, "kernel_us_median": 1e6 * ker, "wrapper_us": 1e6 * (tot - ker)}
+
+
+def bytes_per_point(n=100_000):
+    prop, params = pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc")
+    rng = np.random.default_rng(3)
+    om, V, b = rng.uniform(3000, 12000, n) * math.pi / 30, rng.uniform(0, 25, n), np.radians(rng.uniform(0, 90, n))
+    pm.rotor_loads(prop, params, om[:50], V[:50], b[:50])
+    out = {}
+    for radial in (False, True):
+        tracemalloc.start()
+        r = pm.rotor_loads(prop, params, om, V, b, radial=radial)
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        del r
+        out[f"radial_{radial}"] = peak / n
+    return out
+
+
+def points_file_peak_rss(n):
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / "points.csv"
+        rng = np.random.default_rng(5)
+        rpm, V, inc = rng.uniform(3000, 12000, n), rng.uniform(0, 25, n), rng.uniform(0, 90, n)
+        with src.open("w") as fh:
+            fh.write("rpm,airspeed,incidence_deg\n")
+            np.savetxt(fh, np.column_stack([rpm, V, inc]), fmt="%.6g", delimiter=",")
+        t = time.perf_counter()
+        subprocess.run([str(BIN / "propmap"), "loads", "apce_8x6", "--points", str(src), "--out",
+                        str(Path(tmp) / "out.csv")], capture_output=True, check=True)
+        elapsed = time.perf_counter() - t
+    peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss  # the largest child so far: run first
+    return {"points": n, "peak_rss_MiB": peak_kib / 1024, "wall_s": elapsed}
+
+
+def main() -> None:
+    from propmap.io.calibration import generic_params
+
+    from bench_solver import cpu_name
+
+    # first: ru_maxrss of the children is the largest child so far
+    points = points_file_peak_rss(1_000_000 if "--million" in sys.argv else 100_000)
+    res = {
+        "cpu": cpu_name(),
+        "cli": cli_times(),
+        "single_call_paper": single_call(pm.preset("gill2017-apc")),
+        "single_call_generic": single_call(generic_params()),
+        "bytes_per_point": bytes_per_point(),
+        "loads_points_file": points,
+    }
+    out = Path(__file__).parent / "results" / "everyday.json"
+    with atomic_write(out) as fh:
+        json.dump(res, fh, indent=2)
+    print(json.dumps(res, indent=2))
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(Path(__file__).parent))
+    main()
