@@ -181,7 +181,7 @@ def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
 @pytest.mark.parametrize(
     "argv, match",
     [
-        (["loads", "apce_8x6", "--rpm", "999999"], "[1, 954930]"),
+        (["loads", "apce_8x6", "--rpm", "999999"], "[1, 954929]"),
         (["loads", "apce_8x6", "--rpm", "1e-200"], "rpm must be finite and in [1,"),
         (["loads", "apce_8x6", "--rpm", "0", "--airspeed", "5"], "parked propeller"),
         (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "-30"], "symmetric"),

@@ -13,9 +13,10 @@ from pathlib import Path
 
 import click
 
-#: the solver's range of the rotation rate, 0 < Omega <= 1e5 rad/s, in rpm; below RPM_MIN
-#: the propeller-convention coefficients (referred to n^2) overflow
-RPM_MAX = 1e5 * 60 / (2 * math.pi)
+#: the solver's range of the rotation rate, 0 < Omega <= 1e5 rad/s, in whole rpm (954,929,
+#: so that the bound printed is the bound checked); below RPM_MIN the propeller-convention
+#: coefficients (referred to n^2) overflow
+RPM_MAX = float(math.floor(1e5 * 60 / (2 * math.pi)))
 RPM_MIN = 1.0
 AIRSPEED_MAX = 500.0
 
