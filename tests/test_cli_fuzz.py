@@ -162,3 +162,34 @@ def test_rotor_loads_finite_or_value_error_naming_the_argument(apc8x6, apc_param
     ok = np.asarray(r.converged)
     for k in ("thrust", "drag", "torque", "CT", "CP"):
         assert np.all(np.isfinite(np.asarray(getattr(r, k))[ok])), k
+
+
+FIT_NAMES = ["cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp", "re_exp_lift", "alpha_L0_re", "cl1",
+             "cl2", "cd", "alpha0", "nonsense", "", " "]
+
+
+@settings(derandomize=True, database=None, deadline=None, max_examples=40, print_blob=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(M=st.one_of(st.none(), st.sampled_from(["20", "50"]), NUMBER_TEXT),
+       multistart=st.one_of(st.sampled_from(["0", "1"]), NUMBER_TEXT),
+       fit_params=st.one_of(st.none(), st.lists(st.sampled_from(FIT_NAMES), min_size=1, max_size=3).map(",".join)),
+       quantities=st.one_of(st.none(), st.lists(st.sampled_from(["thrust", "torque", "drag", "lift", ""]),
+                                                min_size=1, max_size=2).map(",".join)),
+       holdout=st.one_of(st.none(), st.sampled_from(["2801rd", "2801rd,2802rd", "nosuchrun", "", ","])),
+       base=st.sampled_from([None, "generic", "gill2017-apc", "nosuchset"]))
+def test_fit_loads_options(capsys, tmp_path_factory, M, multistart, fit_params, quantities, holdout, base):
+    d = tmp_path_factory.mktemp("fit")
+    argv = ["fit", "loads", "apce_8x6", "--out", str(d / "p.toml"), "--multistart", multistart]
+    for opt, v in (("--M", M), ("--fit-params", fit_params), ("--quantities", quantities), ("--holdout", holdout),
+                   ("--base", base)):
+        if v is not None:
+            argv += [opt, v]
+    code = main(argv)
+    out, err = capsys.readouterr()
+    _check(code, out, err)
+    written = sorted(p.name for p in d.iterdir())
+    if code == 0:
+        assert written == ["p.png", "p.report.json", "p.report.txt", "p.toml"]
+        params, _ = pm.read_params(d / "p.toml")  # the parameters written read back
+    else:
+        assert written == []

@@ -14,13 +14,13 @@ fit_options = [
     click.option("--out", type=click.Path(path_type=Path), required=True, help="Parameter TOML to write."),
     click.option("--M", "M", type=float, default=None,
                  help="Stall-blend sharpness used while fitting (default: that of --base; the paper's model at "
-                      "M = 50 is fitted at M = 30 first and continued to 50)."),
+                      "M = 50 is fitted at M = 30 first and continued to 50); in (0, 1e6] 1/rad."),
     click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default="sigmoid", show_default=True,
                  help="Paper's model: eq 3, or footnote 1's C_L = c_l sin a cos a (fits cl2, cd only)."),
     click.option("--fit-params", "fit_params", default="",
                  help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; for the "
                       "cambered one chosen by the data, docs/identification.md)."),
-    click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage)."),
+    click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage), in [0, 256]."),
     click.option("--no-prior", "no_prior", is_flag=True,
                  help="Cambered model: fit without the catalogue population prior (docs/identification.md)."),
     click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
@@ -34,13 +34,20 @@ def with_fit_options(f):
     return f
 
 
+#: the largest stall-blend sharpness accepted (as in parameter files) [1/rad]
+M_MAX = 1e6
+#: the most extra starts (each costs about one local fit)
+MULTISTART_MAX = 256
+
+
 def _options(M, lift_model, multistart, fit_params, no_prior=False):
     from ..identify import FitOptions
 
-    if M is not None and not (math.isfinite(M) and M > 0):
-        raise InputError(f"--M must be finite and > 0, got {M!r}")
-    if multistart < 0:
-        raise InputError(f"--multistart must be >= 0, got {multistart}")
+    if M is not None and not (math.isfinite(M) and 0 < M <= M_MAX):
+        raise InputError(f"--M must be finite and in (0, {M_MAX:g}] 1/rad, got {M!r}")
+    if not 0 <= multistart <= MULTISTART_MAX:
+        raise InputError(f"--multistart must be in [0, {MULTISTART_MAX}] (each start is a whole fit), "
+                         f"got {multistart}")
     names = tuple(n.strip() for n in fit_params.split(",") if n.strip()) or None
     return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True, names=names,
                       prior=not no_prior)
