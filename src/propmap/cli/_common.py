@@ -162,6 +162,20 @@ def check_outputs(outputs, inputs) -> None:
             raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
         if not os.access(parent, os.W_OK | os.X_OK):
             raise InputError(f"{option}: cannot write in {parent} (permission denied)")
+        _probe(option, parent)
+
+
+def _probe(option: str, folder: Path) -> None:
+    """Create and remove a file in ``folder``: what the access bits do not tell (a read-only
+    file system, /proc, root on a folder without write permission)."""
+    import tempfile
+
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".propmap-probe-", dir=folder)
+    except OSError as exc:
+        raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
+    os.close(fd)
+    os.unlink(tmp)
 
 
 def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
