@@ -145,13 +145,16 @@ def test_vector_form_matches_scalar_loads_and_rotates(apc8x6, apc_params):
     beta = math.acos(-5.0 / np.linalg.norm(V))
     s = pm.rotor_loads(apc8x6, apc_params, om, np.linalg.norm(V), beta)
     np.testing.assert_allclose(w.force, [-float(s.drag), 0.0, float(s.thrust)], rtol=1e-12, atol=1e-12)
-    np.testing.assert_allclose(w.torque, [0.0, 0.0, -float(s.torque)], rtol=1e-12)
+    # shaft torque against the ccw spin; the rolling moment along -e_ip (the advancing side,
+    # where the extra thrust acts, is at -z x e_ip = -y here), no pitching moment
+    np.testing.assert_allclose(w.torque, [-float(s.rolling_moment), 0.0, -float(s.torque)], rtol=1e-12)
+    assert float(s.rolling_moment) > 0
     # a rigid rotation of velocity and axis rotates the wrench
     c, sn = math.cos(0.7), math.sin(0.7)
     R = np.array([[c, 0, sn], [0, 1, 0], [-sn, 0, c]]) @ np.array([[c, -sn, 0], [sn, c, 0], [0, 0, 1]])
     w2 = pm.rotor_wrench(apc8x6, apc_params, R @ V, R @ z, om, "cw")
     np.testing.assert_allclose(w2.force, R @ w.force, atol=1e-12)
-    np.testing.assert_allclose(w2.torque, -(R @ w.torque), atol=1e-12)  # cw flips the torque only
+    np.testing.assert_allclose(w2.torque, -(R @ w.torque), atol=1e-12)  # cw mirrors both moments
 
 
 def test_vector_form_at_zero_velocity(apc8x6, apc_params):

@@ -11,7 +11,7 @@ import click
 from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_outputs, check_point,
                       echo_json, load_params, load_prop, warn, with_prop_options)
 
-OUTPUT_KEYS = ("thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags")
+OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "converged", "flags")
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
 CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused
@@ -134,8 +134,8 @@ def solve_points(prop, params, air, df):
     """Loads at every row of ``df`` (columns rpm, airspeed, incidence_deg, any case).
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
-    outputs, one row per input row: thrust, drag, torque, power, CT, CP, converged
-    ("true"/"false"), flags.
+    outputs, one row per input row: thrust, drag, torque, rolling_moment, power, CT, CP,
+    converged ("true"/"false"), flags.
     """
     import numpy as np
     import pandas as pd
@@ -146,7 +146,7 @@ def solve_points(prop, params, air, df):
     rpm = df[cols["rpm"]].to_numpy(float)
     r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, df[cols["airspeed"]].to_numpy(float),
                     np.radians(df[cols["incidence_deg"]].to_numpy(float)), air=air, on_failure="flag", radial=False)
-    res = pd.DataFrame({k: getattr(r, k) for k in ("thrust", "drag", "torque", "power", "CT", "CP")})
+    res = pd.DataFrame({k: getattr(r, k) for k in OUTPUT_KEYS[:-2]})
     res["converged"] = np.where(r.converged, "true", "false")
     res["flags"] = _flag_strings(r)
     return res
@@ -178,7 +178,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                 for c in res.columns:
                     df[c] = res[c].to_numpy()
                 df.to_csv(fh, index=False, header=k == 0, float_format="%.10g", lineterminator="\n")
-                bad += int((res.iloc[:, 6] == "false").sum())
+                bad += int((res.iloc[:, OUTPUT_KEYS.index("converged")] == "false").sum())  # by place: maybe renamed
                 bar.update(len(df))
         return bad
 
@@ -243,17 +243,18 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
                         radial=False)
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    result = {k: float(getattr(r, k)) for k in ("thrust", "drag", "torque", "power", "CT", "CP")}
+    result = {k: float(getattr(r, k)) for k in OUTPUT_KEYS[:-2]}
     result.update(converged=bool(r.converged), flags=r.flags())
     if as_json:
         echo_json({**result, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg,
-                   "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W"}})
+                   "units": {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
+    click.echo(f"  rolling moment M_R = {result['rolling_moment']:.5f} N m")
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}  flags: {', '.join(r.flags()) or 'none'}")
 
 

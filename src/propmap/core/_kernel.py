@@ -316,23 +316,30 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk, axial):
-    """dT/dy, dD/dy, dQ/dy [N/m, N/m, N] at inflow v (eqs 5-7, azimuth-averaged)."""
+    """dT/dy, dD/dy, dQ/dy, dM_R/dy [N/m, N/m, N, N] at inflow v (eqs 5-7, azimuth-averaged).
+
+    dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
+    y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
+    """
     aT = 0.0
     aD = 0.0
     aQ = 0.0
+    aR = 0.0
     UP = Vc + v
     for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
         qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
         aT += qT
         aD += qH * sinpsi[k]
         aQ += qH
+        aR += qT * sinpsi[k]
     dD = 0.0 if axial else cfac * aD / naz  # exactly 0 by symmetry in axial flow
-    return cfac * aT / naz, dD, y * cfac * aQ / naz
+    dR = 0.0 if axial else y * cfac * aR / naz
+    return cfac * aT / naz, dD, y * cfac * aQ / naz, dR
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
+                out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
@@ -340,9 +347,12 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
     Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
     the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
-    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs T, D, Q, nmulti,
-    nvrs, nevals, status shape (n,); vi, dT, dD, dQ shape (n, nr) when ``radial``, else
-    unused (pass (1, nr) arrays). ``status[i]`` is 0 when every annulus converged, else
+    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs (packed, so
+    that the argument list stays short enough for numba's inliner): ``out`` shape (4, n),
+    the rows T, D, Q and the rolling moment M_R; ``rad`` shape (5, n, nr), the rows v_i,
+    dT, dD, dQ, dM_R per annulus when ``radial``, else unused (pass shape (5, 1, nr));
+    ``counts`` shape (4, n) int64, the rows status, annuli with multiple roots, annuli in
+    vortex ring, residual evaluations. ``status`` is 0 when every annulus converged, else
     1 + (first failing annulus index) * 4 + (annulus status code).
     """
     n = Om.shape[0]
@@ -352,7 +362,7 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_full  # the integrand is independent of psi
         # the roots are written straight into the output row, or into scratch
-        v = vi[i] if radial else np.empty(nr)
+        v = rad[0, i] if radial else np.empty(nr)
         code = np.empty(nr, dtype=np.int64)
         nev = np.empty(nr, dtype=np.int64)
         multiple = np.empty(nr, dtype=np.bool_)
@@ -378,6 +388,7 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
         Ti = 0.0
         Di = 0.0
         Qi = 0.0
+        Ri = 0.0
         st = 0
         nm = 0
         nv = 0
@@ -390,43 +401,45 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
                 if st == 0:
                     st = 1 + j * 4 + code[j]
                 if radial:
-                    dT[i, j] = np.nan
-                    dD[i, j] = np.nan
-                    dQ[i, j] = np.nan
+                    for q in range(1, 5):
+                        rad[q, i, j] = np.nan
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
-                                    s3[j], cfac[j], sinpsi, naz, model, pk, axial)
+            t, d, q, rm = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
+                                        s2[j], s3[j], cfac[j], sinpsi, naz, model, pk, axial)
             if radial:
-                dT[i, j] = t
-                dD[i, j] = d
-                dQ[i, j] = q
+                rad[1, i, j] = t
+                rad[2, i, j] = d
+                rad[3, i, j] = q
+                rad[4, i, j] = rm
             Ti += w[j] * t
             Di += w[j] * d
             Qi += w[j] * q
-        T[i] = Ti if st == 0 else np.nan
-        D[i] = Di if st == 0 else np.nan
-        Q[i] = Qi if st == 0 else np.nan
-        status[i] = st
-        nmulti[i] = nm
-        nvrs[i] = nv
-        nevals[i] = ne
+            Ri += w[j] * rm
+        out[0, i] = Ti if st == 0 else np.nan
+        out[1, i] = Di if st == 0 else np.nan
+        out[2, i] = Qi if st == 0 else np.nan
+        out[3, i] = Ri if st == 0 else np.nan
+        counts[0, i] = st
+        counts[1, i] = nm
+        counts[2, i] = nv
+        counts[3, i] = ne
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
+                out, rad, counts):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial, T, D, Q, vi, dT, dD,
-                 dQ, status, nmulti, nvrs, nevals)
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
+                 out, rad, counts)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                       T, D, Q, vi, dT, dD, dQ, status, nmulti, nvrs, nevals):
+                       out, rad, counts):
     """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial, T, D, Q, vi, dT, dD,
-                 dQ, status, nmulti, nvrs, nevals)
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
+                 out, rad, counts)

@@ -159,6 +159,16 @@ class RotorLoads:
         0 exactly in axial flow and at V = 0.
     torque : ndarray
         Q [N m] opposing the rotation (what the motor supplies) (eq 15).
+    rolling_moment : ndarray
+        M_R [N m], the in-plane hub moment from the advancing/retreating asymmetry of the
+        thrust: the moment of the thrust distribution about the in-plane velocity
+        direction, (N_b / 2 pi) int int r dT(r, psi) sin psi dpsi dr, positive when the
+        advancing blade (psi = 90 deg) carries more thrust; 0 exactly in axial flow and
+        at V = 0. Its vector is -spin M_R e_ip (:func:`rotor_wrench`; docs/conventions.md).
+        Computed from the same azimuth nodes as eqs 13-15. Because the inflow v_i(r) does
+        not depend on azimuth (paper Section II), every integrand depends on psi through
+        sin psi only: the side force and the pitching moment (the cos psi moments) are
+        zero by symmetry in this model.
     power : ndarray
         P = Q Omega [W].
     CT, CP, CQ : ndarray
@@ -172,8 +182,9 @@ class RotorLoads:
         Induced inflow v_i(r) [m/s] along the rotor axis, positive with the thrust
         (through the disk in the thrust-opposite direction, i.e. into the slipstream).
         None when computed with ``radial=False`` (as the three below).
-    dT_dr, dD_dr, dQ_dr : ndarray, shape S + (n_radial,), or None
-        Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7).
+    dT_dr, dD_dr, dQ_dr, dMR_dr : ndarray, shape S + (n_radial,), or None
+        Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7) and rolling
+        moment [N].
     converged : ndarray of bool
         Every annulus root converged.
     vortex_ring : ndarray of bool
@@ -199,11 +210,13 @@ class RotorLoads:
     thrust: np.ndarray
     drag: np.ndarray
     torque: np.ndarray
+    rolling_moment: np.ndarray
     r: np.ndarray
     v_i: np.ndarray | None
     dT_dr: np.ndarray | None
     dD_dr: np.ndarray | None
     dQ_dr: np.ndarray | None
+    dMR_dr: np.ndarray | None
     converged: np.ndarray
     vortex_ring: np.ndarray
     multiple_roots: np.ndarray
@@ -385,31 +398,23 @@ def rotor_loads(
 
     nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
     n, nr = om1.size, nd.y.size
-    T = np.empty(n)
-    D = np.empty(n)
-    Q = np.empty(n)
+    out = np.empty((4, n))  # T, D, Q, M_R
     rows = n if radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
-    vi = np.empty((rows, nr))
-    dT = np.empty((rows, nr))
-    dD = np.empty((rows, nr))
-    dQ = np.empty((rows, nr))
-    status = np.empty(n, dtype=np.int64)
-    nmulti = np.empty(n, dtype=np.int64)
-    nvrs = np.empty(n, dtype=np.int64)
-    nev = np.empty(n, dtype=np.int64)
+    rad = np.empty((5, rows, nr))  # v_i, dT, dD, dQ, dM_R
+    counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
+    (T, D, Q, R), (status, nmulti, nvrs, nev) = out, counts
     model, pk = _model_constants(params)
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, model, pk, _cambered_args(params, air), bool(radial), T, D, Q, vi, dT, dD, dQ, status, nmulti,
-          nvrs, nev)
+          nd.sinpsi, model, pk, _cambered_args(params, air), bool(radial), out, rad, counts)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
         i = int(np.argmax(~converged))
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
-        why = {1: "no sign change of F found (no bracket)", 2: "Illinois refinement did not converge"}[reason]
+        why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge"}[reason]
         raise SolverError(
             f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
@@ -422,11 +427,11 @@ def rotor_loads(
     else:
         def s(a):
             return a.reshape(shape)
-    radial_out = ([a.reshape(shape + (nr,)) for a in (vi, dT, dD, dQ)] if radial else [None] * 4)
+    radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * 5)
     return RotorLoads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
-        thrust=s(T), drag=s(D), torque=s(Q), r=nd.y,
-        v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3],
+        thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), r=nd.y,
+        v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3], dMR_dr=radial_out[4],
         converged=s(converged), vortex_ring=s(nvrs > 0), multiple_roots=s(nmulti > 0),
         reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), n_evaluations=s(nev),
         rho=air.rho, diameter=propeller.diameter,

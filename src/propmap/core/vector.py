@@ -28,8 +28,11 @@ class RotorWrench:
     force : ndarray, shape S + (3,)
         T z_hat - D e_ip [N], e_ip the unit in-plane velocity direction.
     torque : ndarray, shape S + (3,)
-        Aerodynamic torque about the hub, -spin Q z_hat [N m] (opposes rotation; at
-        constant speed this is the reaction the motor passes to the airframe).
+        Aerodynamic moment about the hub, -spin (Q z_hat + M_R e_ip) [N m]: the shaft
+        torque opposing the rotation (at constant speed, the reaction the motor passes to
+        the airframe) and the rolling moment M_R of the advancing/retreating asymmetry
+        (:attr:`RotorLoads.rolling_moment`), which for a ccw rotor points along -e_ip: the
+        advancing side, where the extra thrust acts, lies at -z_hat x e_ip.
     loads : RotorLoads
         The scalar loads and flags behind them, shape S.
     """
@@ -100,8 +103,9 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
 
     Notes
     -----
-    The rotor model is azimuth-averaged (paper Section II), so it has no side force and
-    no hub moments other than the shaft torque; spin changes only the torque sign.
+    The inflow does not depend on azimuth (paper Section II), so the side force and the
+    pitching moment (about z_hat x e_ip) are zero by symmetry; spin mirrors the shaft
+    torque and the rolling moment and leaves the force unchanged.
     """
     V = _vectors("velocity", velocity)
     z = _vectors("axis", axis)
@@ -128,5 +132,6 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(V, axis=-1, keepdims=True), 1e-300),
                     v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
     force = loads.thrust[..., None] * z - loads.drag[..., None] * e_ip
-    torque = -(np.broadcast_to(s, shape) * loads.torque)[..., None] * z
+    spin = np.broadcast_to(s, shape)[..., None]
+    torque = -spin * (loads.torque[..., None] * z + loads.rolling_moment[..., None] * e_ip)
     return RotorWrench(force=force, torque=torque, loads=loads)
