@@ -107,6 +107,23 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     pitching moment (about z_hat x e_ip) are zero by symmetry; spin mirrors the shaft
     torque and the rolling moment and leaves the force unchanged.
     """
+    V, z, speed, beta = disk_frame(velocity, axis)
+    s = _spin_sign(spin)
+    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
+                        on_failure=on_failure)
+    force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s)
+    return RotorWrench(force=force, torque=torque, loads=loads)
+
+
+def disk_frame(velocity, axis):
+    """(V, z, speed, beta): the checked velocity and unit axis (broadcast together, shape
+    S + (3,)), the speed |V| [m/s] and the incidence beta [rad] (0 where V = 0).
+
+    Raises
+    ------
+    ValueError
+        As :func:`rotor_wrench` (non-numeric, not ending in 3, non-finite, zero axis).
+    """
     V = _vectors("velocity", velocity)
     z = _vectors("axis", axis)
     # normalise without overflow: scale by the largest component first (|z| of [0, 1e200,
@@ -116,22 +133,27 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         raise ValueError("axis must be non-zero")
     z = z / zmax
     z = z / np.linalg.norm(z, axis=-1, keepdims=True)
-    s = _spin_sign(spin)
     V, z = np.broadcast_arrays(V, z)
     speed = np.linalg.norm(V, axis=-1)
     axial = np.einsum("...i,...i->...", V, z)
     safe = np.where(speed > 0, speed, 1.0)
     beta = np.where(speed > 0, np.arccos(np.clip(axial / safe, -1.0, 1.0)), 0.0)
-    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
-                        on_failure=on_failure)
-    shape = loads.thrust.shape
+    return V, z, speed, beta
+
+
+def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin):
+    """(force, moment) vectors, shape S + (3,), from the scalar loads (shape S), the
+    velocity V and unit axis z (shape S + (3,) or broadcastable) and the spin sign:
+    force T z - D e_ip, moment -spin (Q z + M_R e_ip), e_ip the in-plane unit velocity
+    (0 where the velocity is axial or zero)."""
+    shape = np.shape(thrust)
     z = np.broadcast_to(z, shape + (3,))
     V = np.broadcast_to(V, shape + (3,))
     v_ip = V - np.einsum("...i,...i->...", V, z)[..., None] * z
     n_ip = np.linalg.norm(v_ip, axis=-1, keepdims=True)
     e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(V, axis=-1, keepdims=True), 1e-300),
                     v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
-    force = loads.thrust[..., None] * z - loads.drag[..., None] * e_ip
-    spin = np.broadcast_to(s, shape)[..., None]
-    torque = -spin * (loads.torque[..., None] * z + loads.rolling_moment[..., None] * e_ip)
-    return RotorWrench(force=force, torque=torque, loads=loads)
+    force = np.asarray(thrust)[..., None] * z - np.asarray(drag)[..., None] * e_ip
+    s = np.broadcast_to(spin, shape)[..., None]
+    moment = -s * (np.asarray(torque)[..., None] * z + np.asarray(rolling_moment)[..., None] * e_ip)
+    return force, moment

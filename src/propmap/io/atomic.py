@@ -16,7 +16,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_write", "normal_mode"]
+__all__ = ["atomic_path", "atomic_write", "normal_mode"]
 
 
 def normal_mode(path: Path) -> int:
@@ -57,6 +57,32 @@ def atomic_write(path, mode: str = "w", **kwargs):
     try:
         with os.fdopen(fd, mode, **kwargs) as fh:
             yield fh
+        os.chmod(tmp, perm)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+
+
+@contextlib.contextmanager
+def atomic_path(path):
+    """:func:`atomic_write` for writers that take a file name (netCDF, compilers): yields a
+    temporary path in ``path``'s folder (the file exists, empty); on success it replaces
+    ``path`` with normal permissions, on an exception it is removed.
+
+    Raises
+    ------
+    OSError
+        As :func:`atomic_write`.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    perm = normal_mode(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
         os.chmod(tmp, perm)
         os.replace(tmp, path)
     except BaseException:

@@ -1,0 +1,578 @@
+"""Rotor maps: the model tabulated over (rpm, airspeed, incidence) for real-time use.
+
+The paper ends with "since the computation time is in the order of seconds, a
+look-up-table can be used for real-time purposes" (Gill & D'Andrea 2017, Sec. V). A map is
+an xarray Dataset (written as netCDF) with the loads on a rectilinear grid, the flags of
+every node, what made it (propeller geometry, parameters, model, propmap version, data
+citation) and its measured interpolation error: :func:`build_map` evaluates the full model
+at random off-grid points and stores the rms and largest error of each variable.
+
+:class:`RotorMap` evaluates a map: multilinear interpolation of T/Omega^2, D/Omega^2,
+Q and M_R divided by (Omega R)^2 + V^2 (compiled, core/_interp.py), multiplied back, with
+an explicit out-of-grid policy. docs/simulators.md shows the netCDF, C and coefficient routes.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from . import __version__
+from .core.airfoil import Air, SectionParams
+from .core.geometry import Propeller
+from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+
+__all__ = ["MapLoads", "MapWrench", "RotorMap", "build_map", "default_axes", "check_map", "write_map"]
+
+RPM = 2 * math.pi / 60  # rad/s per rpm
+#: the loads a map interpolates (each divided by (Omega R)^2 + V^2 in the table)
+LOADS = ("thrust", "drag", "torque", "rolling_moment")
+UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W", "CT": "1", "CP": "1"}
+LONG_NAMES = {"thrust": "thrust T along the rotor axis", "drag": "rotor drag D (H-force), against the in-plane velocity",
+              "torque": "shaft torque Q opposing the rotation",
+              "rolling_moment": "rolling moment M_R (advancing/retreating thrust asymmetry)",
+              "power": "shaft power P = Q Omega", "CT": "thrust coefficient T / (rho n^2 D^4)",
+              "CP": "power coefficient P / (rho n^3 D^5)"}
+FLAGS = ("converged", "vortex_ring", "multiple_roots", "reverse_flow")
+POLICIES = ("raise", "clip", "nan")
+#: the model flags that make a cell's interpolation unreliable (reverse flow is not one:
+#: the model is smooth there)
+BAD_FLAGS = ("vortex_ring", "multiple_roots")
+#: static tip speed [m/s] of the default map's highest rpm (tip Mach 0.44 at sea level)
+DEFAULT_TIP_SPEED = 150.0
+
+
+def default_axes(propeller: Propeller):
+    """Default grid (rpm [rpm], airspeed [m/s], incidence [deg]) for ``propeller``.
+
+    rpm from 1/6 of the top value to the rpm of a 150 m/s tip speed, 21 values spaced
+    geometrically (equal relative steps of 9.4%; the UIUC measurements behind the
+    calibration reach tip speeds of 60-130 m/s); airspeed 0-25 m/s in 1 m/s steps (26);
+    incidence 0-180 deg in 2.5 deg steps (73). 39,858 points; with the defaults the
+    interpolation error stays within 1% of static thrust and torque and 2% of the largest
+    drag outside flagged regions (docs/simulators.md gives the measured figures and how
+    they fall with grid density).
+
+    Returns
+    -------
+    (ndarray, ndarray, ndarray)
+        rpm, airspeed, incidence_deg, each strictly increasing.
+    """
+    top = DEFAULT_TIP_SPEED / (math.pi * propeller.diameter) * 60
+    top = float(np.round(top, -2))
+    return np.geomspace(top / 6, top, 21), np.linspace(0.0, 25.0, 26), np.linspace(0.0, 180.0, 73)
+
+
+def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
+    a = np.asarray(a, dtype=float)
+    if a.ndim != 1 or a.size < 2:
+        raise ValueError(f"{name} must be a 1-D axis of at least 2 values, got shape {a.shape}")
+    if not np.all(np.isfinite(a)) or a[0] < lo or a[-1] > hi:
+        raise ValueError(f"{name} must be finite and within [{lo:g}, {hi:g}] {unit}, got [{a[0]:g}, {a[-1]:g}]")
+    if np.any(np.diff(a) <= 0):
+        raise ValueError(f"{name} must be strictly increasing")
+    return a
+
+
+def _solve_block(propeller, params, air, discretization, om, V, b):
+    r = rotor_loads(propeller, params, om, V, b, air=air, discretization=discretization, on_failure="flag",
+                    radial=False)
+    return np.stack([r.thrust, r.drag, r.torque, r.rolling_moment,
+                     *(np.asarray(getattr(r, f), float) for f in FLAGS)])
+
+
+def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, incidence, *, air: Air = Air(),
+              discretization: Discretization = DEFAULT_DISCRETIZATION, params_label: str = "",
+              citation: str = "", chunk_points: int = 20_000, scheduler=None, progress: bool = False,
+              n_check: int = 2000, seed: int = 0):
+    """Tabulate the model on the grid omega x airspeed x incidence, with its error bound.
+
+    Parameters
+    ----------
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    omega, airspeed, incidence : array_like, shape (n0,), (n1,), (n2,)
+        Strictly increasing axes: Omega [rad/s] in [0.1, 1e5], V [m/s] in [0, 500],
+        incidence beta [rad] in [0, pi].
+    air : Air
+    discretization : Discretization
+    params_label : str
+        How the parameters were named (``calibrated:apce_8x6``, a file), kept in the map.
+    citation : str
+        The data behind the parameters and geometry, kept in the map.
+    chunk_points : int
+        Grid points per Dask chunk (each chunk is one batched model call).
+    scheduler : None, str or distributed.Client
+        None: local, one chunk at a time (the model call itself uses every core); a
+        ``dask.distributed`` scheduler address or Client: the chunks run on its workers.
+    progress : bool
+        A progress bar (tqdm) over the chunks.
+    n_check : int
+        Random off-grid points at which the full model checks the interpolation
+        (:func:`check_map`); 0 skips the check.
+    seed : int
+        Seed of the check points.
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions ``rpm`` [rpm], ``airspeed`` [m/s], ``incidence_deg`` [deg] (with the SI
+        coordinates ``omega`` [rad/s] and ``incidence`` [rad]); variables thrust, drag,
+        torque, rolling_moment, power, CT, CP and the node flags converged, vortex_ring,
+        multiple_roots, reverse_flow; attributes as described in docs/simulators.md.
+
+    Raises
+    ------
+    ValueError
+        An axis that is not 1-D, has fewer than 2 values, is not increasing, or leaves
+        the model's range; ``chunk_points`` < 1; ``n_check`` < 0.
+    """
+    import dask
+    import dask.array as da
+    import xarray as xr
+
+    from .io.calibration import params_to_si
+
+    om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
+    V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
+    b = _check_axis("incidence", incidence, 0.0, math.pi, "rad")
+    if int(chunk_points) < 1:
+        raise ValueError(f"chunk_points must be >= 1, got {chunk_points!r}")
+    if int(n_check) < 0:
+        raise ValueError(f"n_check must be >= 0, got {n_check!r}")
+    shape = (om.size, V.size, b.size)
+    O3, V3, B3 = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))
+    chunks = int(chunk_points)
+    O3, V3, B3 = (da.from_array(a, chunks=chunks) for a in (O3, V3, B3))
+    parts = da.map_blocks(_solve_block, propeller, params, air, discretization, O3, V3, B3, new_axis=0,
+                          chunks=((4 + len(FLAGS),), O3.chunks[0]), dtype=float)
+    if scheduler is None:
+        # one chunk at a time: the model call is parallel over the cores already, and two
+        # concurrent numba parallel regions in one process would compete for them
+        if progress:
+            from dask.callbacks import Callback
+            from tqdm import tqdm
+
+            class _Bar(Callback):
+                def _start_state(self, dsk, state):
+                    self.bar = tqdm(total=sum(len(v) for v in state.values() if isinstance(v, (set, list))),
+                                    unit="task", leave=False)
+
+                def _posttask(self, key, result, dsk, state, worker_id):
+                    self.bar.update(1)
+
+                def _finish(self, dsk, state, errored):
+                    self.bar.close()
+
+            with _Bar():
+                result = parts.compute(scheduler="threads", num_workers=1)
+        else:
+            result = parts.compute(scheduler="threads", num_workers=1)
+    else:
+        from distributed import Client
+
+        client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+        try:
+            future = client.compute(parts)
+            if progress:
+                from distributed import progress as dist_progress
+
+                dist_progress(future)
+            result = future.result()
+        finally:
+            if client is not scheduler:
+                client.close()
+    result = np.asarray(result).reshape((4 + len(FLAGS),) + shape)
+    dims = ("rpm", "airspeed", "incidence_deg")
+    n = om[:, None, None] / (2 * math.pi)
+    data = {k: (dims, result[i], {"units": UNITS[k], "long_name": LONG_NAMES[k]}) for i, k in enumerate(LOADS)}
+    data["power"] = (dims, result[2] * om[:, None, None], {"units": "W", "long_name": LONG_NAMES["power"]})
+    data["CT"] = (dims, result[0] / (air.rho * n**2 * propeller.diameter**4), {"units": "1",
+                                                                               "long_name": LONG_NAMES["CT"]})
+    data["CP"] = (dims, data["power"][1] / (air.rho * n**3 * propeller.diameter**5),
+                  {"units": "1", "long_name": LONG_NAMES["CP"]})
+    for i, f in enumerate(FLAGS):
+        data[f] = (dims, result[len(LOADS) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)"})
+    coords = {"rpm": ("rpm", om / RPM, {"units": "rpm", "long_name": "rotation rate"}),
+              "airspeed": ("airspeed", V, {"units": "m/s", "long_name": "speed of the disk relative to the air"}),
+              "incidence_deg": ("incidence_deg", np.degrees(b),
+                                {"units": "degree", "long_name": "incidence beta (0 climb, 90 edgewise, 180 descent)"}),
+              "omega": ("rpm", om, {"units": "rad/s", "long_name": "rotation rate Omega"}),
+              "incidence": ("incidence_deg", b, {"units": "rad", "long_name": "incidence beta"})}
+    attrs = {
+        "title": f"propmap rotor map of {propeller.name}",
+        "propeller": propeller.name, "propeller_source": propeller.source or "",
+        "diameter_m": propeller.diameter, "n_blades": propeller.n_blades,
+        "geometry_r_m": propeller.r, "geometry_chord_m": propeller.chord, "geometry_theta_rad": propeller.theta,
+        "section_model": params.section_model, "params_label": params_label,
+        "params_json": json.dumps(params_to_si(params)),
+        "rho_kg_m3": air.rho, "mu_Pa_s": air.mu, "speed_of_sound_m_s": air.speed_of_sound,
+        "n_radial": discretization.n_radial, "n_azimuth": discretization.n_azimuth,
+        "model": "Gill & D'Andrea, Propeller Thrust and Drag in Forward Flight, IEEE CCTA 2017 "
+                 f"(BET/BEMT), section model {params.section_model} (propmap docs/models.md)",
+        "citation": citation, "propmap_version": __version__,
+        "interpolation": "multilinear in (rpm, airspeed, incidence) of T, D, Q, M_R divided by "
+                         "(Omega R)^2 + V^2, multiplied back by (Omega R)^2 + V^2 of the query",
+        "Conventions": "CF-1.8",
+    }
+    ds = xr.Dataset(data, coords=coords, attrs=attrs)
+    if n_check:
+        ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
+                                  discretization=discretization))
+    return ds
+
+
+def _map_model(ds):
+    """(propeller, params, air, discretization) recorded in a map."""
+    from .io.calibration import params_from_si
+
+    a = ds.attrs
+    prop = Propeller(name=str(a["propeller"]), radius=float(a["diameter_m"]) / 2, n_blades=int(a["n_blades"]),
+                     r=np.asarray(a["geometry_r_m"], float), chord=np.asarray(a["geometry_chord_m"], float),
+                     theta=np.asarray(a["geometry_theta_rad"], float), source=str(a.get("propeller_source", "")))
+    air = Air(rho=float(a["rho_kg_m3"]), mu=float(a["mu_Pa_s"]), speed_of_sound=float(a["speed_of_sound_m_s"]))
+    return (prop, params_from_si(json.loads(a["params_json"])), air,
+            Discretization(int(a["n_radial"]), int(a["n_azimuth"])))
+
+
+def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=None, air=None,
+              discretization=None) -> dict:
+    """Interpolation error of a map against the full model at random off-grid points.
+
+    Points are uniform in the grid's box. Errors are normalised per point: T and P by the
+    static thrust and power at the point's Omega, Q by the static torque, D and M_R by the
+    largest |D| (|M_R|) of the map at the two rpm rows around the point. Points whose cell
+    has a node flagged vortex_ring or multiple_roots, or that the model flags so, or that
+    did not converge, are counted apart ("flagged regions").
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A map from :func:`build_map` (or read back from netCDF).
+    n_check : int
+        Number of points, >= 1.
+    seed : int
+    propeller, params, air, discretization
+        The model; default: the one recorded in the map.
+
+    Returns
+    -------
+    dict
+        ``check_points``, ``check_points_flagged``, ``check_seed``, ``check_normalisation``
+        and, per variable (thrust, drag, torque, rolling_moment, power),
+        ``check_<var>_rms`` and ``check_<var>_max`` outside flagged regions, and
+        ``check_<var>_max_flagged`` inside them (NaN if there are none).
+
+    Raises
+    ------
+    ValueError
+        ``n_check`` < 1.
+    """
+    if int(n_check) < 1:
+        raise ValueError(f"n_check must be >= 1, got {n_check!r}")
+    model = _map_model(ds)
+    prop = propeller or model[0]
+    params = params or model[1]
+    air = air or model[2]
+    disc = discretization or model[3]
+    rm = RotorMap(ds)
+    rng = np.random.default_rng(seed)
+    om = rng.uniform(rm.omega[0], rm.omega[-1], n_check)
+    V = rng.uniform(rm.airspeed[0], rm.airspeed[-1], n_check)
+    b = rng.uniform(rm.incidence[0], rm.incidence[-1], n_check)
+    full = rotor_loads(prop, params, om, V, b, air=air, discretization=disc, on_failure="flag", radial=False)
+    static = rotor_loads(prop, params, om, 0.0, 0.0, air=air, discretization=disc, on_failure="flag", radial=False)
+    got = rm.loads(om, V, b)
+    row = np.clip(np.searchsorted(rm.omega, om, side="right") - 1, 0, rm.omega.size - 2)
+    norm = {"thrust": np.abs(static.thrust), "torque": np.abs(static.torque), "power": np.abs(static.power)}
+    for k in ("drag", "rolling_moment"):
+        peak = np.max(np.abs(ds[k].values), axis=(1, 2))
+        norm[k] = np.maximum(peak[row], peak[row + 1])
+    flagged = got.flagged | ~full.converged | full.vortex_ring | full.multiple_roots
+    out = {"check_points": int(n_check), "check_points_flagged": int(flagged.sum()), "check_seed": int(seed),
+           "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
+                                  "torque, D and M_R by the largest |D|, |M_R| of the map at the rpm rows around it; "
+                                  "flagged: a cell node or the point in vortex ring or with multiple roots"}
+    for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
+        err = np.abs(getattr(got, k) - getattr(full, k)) / np.where(norm[k] > 0, norm[k], np.inf)
+        ok = err[~flagged]
+        out[f"check_{k}_rms"] = float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan
+        out[f"check_{k}_max"] = float(np.max(ok)) if ok.size else math.nan
+        out[f"check_{k}_max_flagged"] = float(np.nanmax(err[flagged])) if flagged.any() else math.nan
+    return out
+
+
+class MapLoads(NamedTuple):
+    """Loads interpolated in a map; arrays of the broadcast shape S of the queries.
+
+    Attributes
+    ----------
+    thrust, drag, torque, rolling_moment : ndarray
+        T [N], D [N], Q [N m], M_R [N m] as in :class:`propmap.RotorLoads`.
+    omega : ndarray
+        The query's Omega [rad/s].
+    inside : ndarray of bool
+        The query lies in the grid (else it was clipped to it or set to NaN).
+    flagged : ndarray of bool
+        The query is outside the grid, or a node of its cell is flagged vortex_ring or
+        multiple_roots or did not converge (the map's error bound does not hold there).
+    """
+
+    thrust: np.ndarray
+    drag: np.ndarray
+    torque: np.ndarray
+    rolling_moment: np.ndarray
+    omega: np.ndarray
+    inside: np.ndarray
+    flagged: np.ndarray
+
+    @property
+    def power(self) -> np.ndarray:
+        """P = Q Omega [W]."""
+        return self.torque * self.omega
+
+
+@dataclass(frozen=True)
+class MapWrench:
+    """Force and moment vectors from a map (as :class:`propmap.RotorWrench`).
+
+    Attributes
+    ----------
+    force, torque : ndarray, shape S + (3,)
+        T z - D e_ip [N] and -spin (Q z + M_R e_ip) [N m].
+    loads : MapLoads
+    """
+
+    force: np.ndarray
+    torque: np.ndarray
+    loads: MapLoads
+
+
+class RotorMap:
+    """A rotor map ready to evaluate: ``RotorMap.open("map.nc").loads(omega, V, beta)``.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A map from :func:`build_map` or read from its netCDF file.
+
+    Attributes
+    ----------
+    omega, airspeed, incidence : ndarray
+        The grid's axes in SI units (rad/s, m/s, rad).
+    attrs : dict
+        The map's metadata (propeller, parameters, model, version, citation, error bound).
+
+    Raises
+    ------
+    ValueError
+        The dataset lacks a variable, a flag or an axis of a map.
+    """
+
+    def __init__(self, dataset) -> None:
+        missing = [k for k in (*LOADS, *FLAGS) if k not in dataset]
+        missing += [k for k in ("rpm", "airspeed", "incidence_deg") if k not in dataset.coords]
+        if missing:
+            raise ValueError(f"not a propmap rotor map: lacks {', '.join(missing)}")
+        ds = dataset.transpose("rpm", "airspeed", "incidence_deg")
+        self.dataset = ds
+        self.attrs = dict(ds.attrs)
+        self.omega = np.ascontiguousarray(ds["rpm"].values, dtype=float) * RPM
+        self.airspeed = np.ascontiguousarray(ds["airspeed"].values, dtype=float)
+        self.incidence = np.ascontiguousarray(np.radians(ds["incidence_deg"].values), dtype=float)
+        self.radius = float(ds.attrs["diameter_m"]) / 2 if "diameter_m" in ds.attrs else None
+        if self.radius is None or not self.radius > 0:
+            raise ValueError("not a propmap rotor map: lacks the attribute diameter_m")
+        ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
+        table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
+        self._table = np.ascontiguousarray(table, dtype=float)
+        bad = ~ds["converged"].values.astype(bool)
+        for f in BAD_FLAGS:
+            bad |= ds[f].values.astype(bool)
+        cell = (bad[:-1, :-1, :-1] | bad[1:, :-1, :-1] | bad[:-1, 1:, :-1] | bad[:-1, :-1, 1:]
+                | bad[1:, 1:, :-1] | bad[1:, :-1, 1:] | bad[:-1, 1:, 1:] | bad[1:, 1:, 1:])
+        self._cellflag = np.ascontiguousarray(cell.astype(np.uint8))
+        # the grid's box as Python floats, for the scalar fast path of loads()
+        self._box = (float(self.omega[0]), float(self.omega[-1]), float(self.airspeed[0]), float(self.airspeed[-1]),
+                     float(self.incidence[0]), float(self.incidence[-1]))
+        self._out1 = np.empty((1, len(LOADS)))
+        self._in1 = np.empty(1, dtype=np.bool_)
+        self._fl1 = np.empty(1, dtype=np.bool_)
+
+    @classmethod
+    def open(cls, path) -> "RotorMap":
+        """Read a map's netCDF file (written by :func:`write_map` or ``propmap map``).
+
+        Raises
+        ------
+        ValueError
+            Not a readable netCDF file, or not a rotor map (the message names the file).
+        """
+        import xarray as xr
+
+        try:
+            with xr.open_dataset(path, engine="netcdf4") as ds:
+                ds.load()
+        except (OSError, ValueError, KeyError) as exc:
+            raise ValueError(f"{path}: not a readable netCDF rotor map ({exc})") from None
+        try:
+            return cls(ds)
+        except ValueError as exc:
+            raise ValueError(f"{path}: {exc}") from None
+
+    def _queries(self, omega, airspeed, incidence, out_of_grid):
+        if out_of_grid not in POLICIES:
+            raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
+        arrays = []
+        for name, v in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence)):
+            a = np.asarray(v)
+            if a.dtype.kind not in "fiu":
+                raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
+            arrays.append(a.astype(float, copy=False))
+        q = np.broadcast_arrays(*arrays)
+        if out_of_grid == "raise":
+            for name, a, ax, unit in (("omega", q[0], self.omega, "rad/s"), ("airspeed", q[1], self.airspeed, "m/s"),
+                                      ("incidence", q[2], self.incidence, "rad")):
+                with np.errstate(invalid="ignore"):
+                    bad = ~((a >= ax[0]) & (a <= ax[-1]))
+                if bad.any():
+                    v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
+                    raise ValueError(f"{name} = {v!r} is outside the map's grid [{ax[0]:g}, {ax[-1]:g}] {unit} "
+                                     "(out_of_grid='clip' or 'nan' to flag instead)")
+        else:
+            for name, a in zip(("omega", "airspeed", "incidence"), q):
+                if np.isnan(a).any():
+                    raise ValueError(f"{name} must not be NaN")
+        return q
+
+    def loads(self, omega, airspeed, incidence, *, out_of_grid: str = "raise") -> MapLoads:
+        """Interpolated loads at Omega [rad/s], V [m/s], incidence beta [rad] (broadcast).
+
+        Parameters
+        ----------
+        omega, airspeed, incidence : float or array_like
+            Broadcast together to a shape S.
+        out_of_grid : {"raise", "clip", "nan"}
+            A query outside the grid raises ValueError ("raise", the default), takes the
+            value at the nearest boundary point ("clip"), or gets NaN ("nan"); the last two
+            set ``inside = False`` and ``flagged = True``. Never silent extrapolation.
+
+        Returns
+        -------
+        MapLoads
+
+        Raises
+        ------
+        ValueError
+            Non-numeric or NaN queries, an unknown policy, or (policy "raise") a query
+            outside the grid, naming the argument and the grid's range.
+        """
+        from .core import _interp
+
+        policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
+        if type(omega) is float and type(airspeed) is float and type(incidence) is float:
+            # the scalar fast path (a simulator's call): no arrays built, no broadcasting
+            o0, o1, v0, v1, b0, b1 = self._box
+            inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
+            if inside or (out_of_grid in ("clip", "nan") and not (math.isnan(omega) or math.isnan(airspeed)
+                                                                  or math.isnan(incidence))):
+                _interp.interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag,
+                                     self.radius, omega, airspeed, incidence, policy, self._out1, self._in1, self._fl1)
+                t, d, q, m = self._out1[0].tolist()
+                return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
+        q = self._queries(omega, airspeed, incidence, out_of_grid)
+        shape = q[0].shape
+        flat = [np.ascontiguousarray(a.reshape(-1)) for a in q]
+        n = flat[0].size
+        out = np.empty((n, len(LOADS)))
+        inside = np.empty(n, dtype=np.bool_)
+        flagged = np.empty(n, dtype=np.bool_)
+        _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius,
+                             *flat, policy, out, inside, flagged)
+        return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=q[0],
+                        inside=inside.reshape(shape), flagged=flagged.reshape(shape))
+
+    def wrench(self, velocity, axis, omega, spin="ccw", *, out_of_grid: str = "raise") -> MapWrench:
+        """Force and moment vectors from the map, as :func:`propmap.rotor_wrench`.
+
+        Parameters
+        ----------
+        velocity, axis : array_like, shape S + (3,)
+            Hub velocity relative to the air [m/s]; rotor axis (thrust direction).
+        omega : float or array_like, shape S
+            Omega [rad/s].
+        spin : {"ccw", "cw"} or +1/-1
+        out_of_grid : {"raise", "clip", "nan"}
+            As :meth:`loads`.
+
+        Returns
+        -------
+        MapWrench
+
+        Raises
+        ------
+        ValueError
+            As :func:`propmap.rotor_wrench` and :meth:`loads`.
+        """
+        from .core.vector import _spin_sign, disk_frame, wrench_vectors
+
+        V, z, speed, beta = disk_frame(velocity, axis)
+        s = _spin_sign(spin)
+        ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
+        force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s)
+        return MapWrench(force=force, torque=moment, loads=ml)
+
+    def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
+        """:func:`check_map` with the model recorded in the map."""
+        return check_map(self.dataset, n_check, seed=seed)
+
+
+def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Path]:
+    """Write a map atomically: netCDF (``fmt="netcdf"``) or a long-form CSV (``"csv"``),
+    plus a JSON sidecar ``<path>.json`` of its metadata and error bound.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+
+    Raises
+    ------
+    ValueError
+        Unknown format.
+    OSError
+        The folder cannot be written.
+    """
+    from .io.atomic import atomic_path, atomic_write
+
+    path = Path(path)
+    if fmt == "netcdf":
+        with atomic_path(path) as tmp:
+            encoding = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
+            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+    elif fmt == "csv":
+        table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
+        for f in FLAGS:
+            table[f] = np.where(table[f].to_numpy(bool), "true", "false")
+        with atomic_write(path, "w", newline="") as fh:
+            table.to_csv(fh, index=False, float_format="%.10g", lineterminator="\n")
+    else:
+        raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
+    written = [path]
+    if sidecar:
+        meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
+                for k, v in ds.attrs.items()}
+        meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
+        meta["axes"] = {d: [float(ds[d].values[0]), float(ds[d].values[-1])] for d in ("rpm", "airspeed",
+                                                                                        "incidence_deg")}
+        meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
+        side = path.with_name(path.name + ".json")
+        with atomic_write(side) as fh:
+            json.dump(meta, fh, indent=2, allow_nan=True)
+        written.append(side)
+    return written

@@ -1,0 +1,124 @@
+"""Rotor maps: values at the nodes, the measured error bound, the netCDF round trip, the
+out-of-grid policies and the vector form (maps.py, core/_interp.py)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.maps import FLAGS, RotorMap, build_map, check_map, default_axes, write_map
+
+from .conftest import RPM
+
+
+@pytest.fixture(scope="module")
+def small_map():
+    """apce_8x6, calibrated parameters, a coarse grid (5 x 6 x 13), 300 check points."""
+    prop = pm.load_propeller("apce_8x6")
+    params, air, label = pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6), np.radians(np.linspace(0, 180, 13)),
+                   air=air, params_label=label, n_check=300)
+    return prop, params, ds
+
+
+def test_map_values_equal_the_model_at_the_nodes(small_map):
+    prop, params, ds = small_map
+    rm = RotorMap(ds)
+    O, V, B = np.meshgrid(rm.omega, rm.airspeed, rm.incidence, indexing="ij")
+    got = rm.loads(O, V, B)
+    full = pm.rotor_loads(prop, params, O, V, B, on_failure="flag", radial=False)
+    for k in ("thrust", "drag", "torque", "rolling_moment"):
+        np.testing.assert_allclose(getattr(got, k), getattr(full, k), rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(ds[k].values, getattr(full, k), rtol=1e-12, atol=1e-15)
+    for f in FLAGS:
+        np.testing.assert_array_equal(ds[f].values, np.asarray(getattr(full, f)))
+    assert np.all(ds["drag"].values[:, 0, :] == 0.0)  # V = 0: D = 0
+
+
+def test_stored_error_bound_holds_on_fresh_points(small_map):
+    _, _, ds = small_map
+    fresh = check_map(ds, 300, seed=99)
+    for k in ("thrust", "torque", "drag"):
+        stored = ds.attrs[f"check_{k}_max"]
+        assert 0 < stored < 1 and math.isfinite(fresh[f"check_{k}_max"])
+        # another random sample of the same size sees errors of the same size
+        assert fresh[f"check_{k}_rms"] < 3 * ds.attrs[f"check_{k}_rms"] + 1e-4
+
+
+def test_netcdf_round_trip_keeps_values_flags_and_attributes(small_map, tmp_path):
+    _, _, ds = small_map
+    files = write_map(ds, tmp_path / "m.nc")
+    assert [f.name for f in files] == ["m.nc", "m.nc.json"]
+    rm = RotorMap.open(tmp_path / "m.nc")
+    for k in ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP"):
+        np.testing.assert_array_equal(rm.dataset[k].values, ds[k].values)
+        assert rm.dataset[k].attrs["units"] == ds[k].attrs["units"]
+    for f in FLAGS:
+        assert rm.dataset[f].dtype == bool
+        np.testing.assert_array_equal(rm.dataset[f].values, ds[f].values)
+    for key, value in ds.attrs.items():
+        np.testing.assert_array_equal(rm.attrs[key], value)
+    assert rm.attrs["propmap_version"] == pm.__version__ and rm.attrs["section_model"] == "cambered"
+    # the model recorded in the file reproduces the map
+    assert rm.check(50, seed=1)["check_points"] == 50
+
+
+def test_out_of_grid_policies(small_map):
+    _, _, ds = small_map
+    rm = RotorMap(ds)
+    with pytest.raises(ValueError, match=r"airspeed = 20.0 is outside the map's grid \[0, 15\] m/s"):
+        rm.loads(6000 * RPM, 20.0, 0.3)
+    with pytest.raises(ValueError, match="omega"):
+        rm.loads(np.array([6000, 10000]) * RPM, 5.0, 0.3)
+    clip = rm.loads(6000 * RPM, 20.0, 0.3, out_of_grid="clip")
+    edge = rm.loads(6000 * RPM, 15.0, 0.3)
+    assert not clip.inside and clip.flagged and edge.inside
+    assert clip.thrust == edge.thrust and clip.drag == edge.drag  # the boundary's value: never extrapolated
+    nan = rm.loads(np.array([6000.0, 6000.0]) * RPM, np.array([5.0, 20.0]), 0.3, out_of_grid="nan")
+    assert np.isfinite(nan.thrust[0]) and np.isnan(nan.thrust[1]) and list(nan.inside) == [True, False]
+    with pytest.raises(ValueError, match="out_of_grid"):
+        rm.loads(6000 * RPM, 5.0, 0.3, out_of_grid="extrapolate")
+    with pytest.raises(ValueError, match="omega"):
+        rm.loads("600", 5.0, 0.3)
+
+
+def test_scalar_and_array_queries_agree(small_map):
+    _, _, ds = small_map
+    rm = RotorMap(ds)
+    a = rm.loads(6100 * RPM, 7.3, 1.1)
+    b = rm.loads(np.array([6100 * RPM]), np.array([7.3]), np.array([1.1]))
+    assert a.thrust == b.thrust[0] and a.rolling_moment == b.rolling_moment[0] and a.flagged == b.flagged[0]
+
+
+@pytest.mark.parametrize("spin", ["ccw", "cw"])
+def test_map_wrench_equals_rotor_wrench_at_nodes(small_map, spin):
+    prop, params, ds = small_map
+    rm = RotorMap(ds)
+    om = float(rm.omega[2])
+    V, beta = float(rm.airspeed[3]), float(rm.incidence[4])
+    velocity = [V * math.sin(beta), 0.0, V * math.cos(beta)]
+    w = rm.wrench(velocity, [0, 0, 1], om, spin)
+    ref = pm.rotor_wrench(prop, params, velocity, [0, 0, 1], om, spin)
+    np.testing.assert_allclose(w.force, ref.force, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(w.torque, ref.torque, rtol=1e-9, atol=1e-12)
+
+
+def test_default_axes_scale_with_the_propeller():
+    small, large = pm.load_propeller("apce_8x6"), pm.load_propeller("apce_11x7")
+    r8, V8, i8 = default_axes(small)
+    r11, _, _ = default_axes(large)
+    assert r8[-1] > r11[-1] and r8[0] == pytest.approx(r8[-1] / 6, rel=1e-3)
+    assert (V8.size, i8.size) == (26, 73) and i8[-1] == 180.0
+    tip = r8[-1] * RPM * small.radius
+    assert 140 < tip < 160  # the default top tip speed, 150 m/s
+
+
+def test_bad_axes_are_refused():
+    prop, params = pm.load_propeller("apce_8x6"), pm.CamberedParams()
+    with pytest.raises(ValueError, match="strictly increasing"):
+        build_map(prop, params, [800.0, 700.0], [0.0, 5.0], [0.0, 1.0], n_check=0)
+    with pytest.raises(ValueError, match="incidence"):
+        build_map(prop, params, [700.0, 800.0], [0.0, 5.0], [0.0, 4.0], n_check=0)
+    with pytest.raises(ValueError, match="at least 2"):
+        build_map(prop, params, [700.0], [0.0, 5.0], [0.0, 1.0], n_check=0)
