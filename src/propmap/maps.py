@@ -426,8 +426,6 @@ class RotorMap:
             raise ValueError(f"{path}: {exc}") from None
 
     def _queries(self, omega, airspeed, incidence, out_of_grid):
-        if out_of_grid not in POLICIES:
-            raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
         arrays = []
         for name, v in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence)):
             a = np.asarray(v)
@@ -474,6 +472,8 @@ class RotorMap:
         """
         from .core import _interp
 
+        if out_of_grid not in POLICIES:
+            raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
         policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
         if type(omega) is float and type(airspeed) is float and type(incidence) is float:
             # the scalar fast path (a simulator's call): no arrays built, no broadcasting
