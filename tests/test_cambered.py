@@ -30,7 +30,7 @@ def test_paper_model_unchanged_regression_values(apc8x6, apc_params):
     rpm = np.array([3000.0, 8000.0, 8000.0, 8000.0, 12000.0, 6000.0, 10000.0])
     V = np.array([0.0, 10.0, 15.0, 20.0, 5.0, 12.0, 8.0])
     inc = np.radians([0.0, 0.0, 60.0, 90.0, 150.0, 30.0, 180.0])
-    r = pm.rotor_loads(apc8x6, apc_params, rpm * RPM, V, inc)
+    r = pm.rotor_loads(apc8x6, apc_params, rpm * RPM, V, inc, radial=True)
     np.testing.assert_allclose(r.thrust, [0.6348605267227706, 2.8244569921840195, 3.8689172115781365,
                                           5.61866474648213, 10.813215646113742, 1.1184078276687608,
                                           7.780118037283021], rtol=RTOL)
@@ -39,7 +39,7 @@ def test_paper_model_unchanged_regression_values(apc8x6, apc_params):
     np.testing.assert_allclose(r.torque, [0.010659572873177875, 0.059309683457336254, 0.06975130093320218,
                                           0.07851861027906953, 0.1657619935088089, 0.026502507690302202,
                                           0.11528438724629263], rtol=RTOL)
-    s = pm.rotor_loads(apc8x6, apc_params.replace(lift_model="sincos"), rpm * RPM, V, inc)
+    s = pm.rotor_loads(apc8x6, apc_params.replace(lift_model="sincos"), rpm * RPM, V, inc, radial=True)
     np.testing.assert_allclose(s.thrust, [0.2515870642903018, 1.0609275431956025, 1.4433165108205466,
                                           2.3954639312020727, 4.36809151536542, 0.40425775683605714,
                                           3.1651275876546725], rtol=RTOL)
@@ -114,30 +114,30 @@ def test_bad_cambered_params(kw, match):
 def test_invariants_with_the_cambered_section_and_losses(apc8x6, params, envelope_points):
     om = 8000 * RPM
     # D = 0 in hover and in axial flow, both ways
-    r = pm.rotor_loads(apc8x6, params, om, [0.0, 10.0, 10.0, 3.0], [1.0, 0.0, math.pi, math.pi])
+    r = pm.rotor_loads(apc8x6, params, om, [0.0, 10.0, 10.0, 3.0], [1.0, 0.0, math.pi, math.pi], radial=True)
     assert np.all(r.drag == 0.0) and r.converged.all()
     # continuity in incidence outside the vortex-ring state (0.25 deg steps)
     b = np.radians(np.linspace(0, 90, 361))
-    c = pm.rotor_loads(apc8x6, params, om, 8.0, b)
-    T0 = float(pm.rotor_loads(apc8x6, params, om, 0.0, 0.0).thrust)
+    c = pm.rotor_loads(apc8x6, params, om, 8.0, b, radial=True)
+    T0 = float(pm.rotor_loads(apc8x6, params, om, 0.0, 0.0, radial=True).thrust)
     assert np.max(np.abs(np.diff(c.thrust))) < 0.005 * T0 and np.max(np.abs(np.diff(c.torque))) < 0.005 * float(
-        pm.rotor_loads(apc8x6, params, om, 0.0, 0.0).torque)
+        pm.rotor_loads(apc8x6, params, om, 0.0, 0.0, radial=True).torque)
     # momentum consistency: sum over annuli of F * eq (10) at the solved v_i equals T (eq 13)
     o, V, b = envelope_points
-    e = pm.rotor_loads(apc8x6, params, o, V, b)
+    e = pm.rotor_loads(apc8x6, params, o, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)
     Vs, Vc = (V * np.sin(b))[:, None], (V * np.cos(b))[:, None]
     F = loss_factor_numpy(Vc + e.v_i, o[:, None] * nd.y[None, :], nd.ct[None, :], nd.ch[None, :])
     T_bemt = (F * nd.mfac * e.v_i * np.sqrt(Vs**2 + (Vc + e.v_i) ** 2)) @ nd.w
-    assert np.max(np.abs(T_bemt - e.thrust)) < 1e-6 * float(pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0).thrust)
+    assert np.max(np.abs(T_bemt - e.thrust)) < 1e-6 * float(pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0, radial=True).thrust)
 
 
 def test_tip_loss_unloads_the_tip_and_fades_inboard(apc8x6):
     """Prandtl's F -> 0 at the tip: the induced inflow rises there and the tip loading
     falls; inboard (F ~ 1) the solution is unchanged."""
     p = CAMBERED.replace(cl_max=2.5)  # no stall, so that only the loss acts
-    on = pm.rotor_loads(apc8x6, p, 8000 * RPM, 0.0, 0.0)
-    off = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 8000 * RPM, 0.0, 0.0)
+    on = pm.rotor_loads(apc8x6, p, 8000 * RPM, 0.0, 0.0, radial=True)
+    off = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 8000 * RPM, 0.0, 0.0, radial=True)
     assert on.v_i[-1] > 3 * off.v_i[-1] and np.all(on.dT_dr[-4:] < 0.9 * off.dT_dr[-4:])
     inboard = on.r < 0.4 * apc8x6.radius
     np.testing.assert_allclose(on.v_i[inboard], off.v_i[inboard], rtol=2e-3)
@@ -150,18 +150,18 @@ def test_tip_loss_unloads_the_tip_and_fades_inboard(apc8x6):
 def test_tip_loss_fades_in_fast_edgewise_flight(apc8x6):
     """With no axial flow through the disk the vortex sheets are not stacked: F -> 1."""
     p = CAMBERED
-    fast = pm.rotor_loads(apc8x6, p, 6000 * RPM, 25.0, math.pi / 2)
-    ref = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 6000 * RPM, 25.0, math.pi / 2)
-    hover = pm.rotor_loads(apc8x6, p, 6000 * RPM, 0.0, 0.0)
-    hover_ref = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 6000 * RPM, 0.0, 0.0)
+    fast = pm.rotor_loads(apc8x6, p, 6000 * RPM, 25.0, math.pi / 2, radial=True)
+    ref = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 6000 * RPM, 25.0, math.pi / 2, radial=True)
+    hover = pm.rotor_loads(apc8x6, p, 6000 * RPM, 0.0, 0.0, radial=True)
+    hover_ref = pm.rotor_loads(apc8x6, p.replace(tip_loss=False), 6000 * RPM, 0.0, 0.0, radial=True)
     assert abs(float(fast.thrust / ref.thrust) - 1) < 0.5 * abs(float(hover.thrust / hover_ref.thrust) - 1)
 
 
 def test_the_cambered_model_costs_about_as_much_as_the_papers(apc8x6, apc_params, envelope_points):
     """A machine-independent count: residual evaluations per annulus (the benchmark times it)."""
     om, V, b = envelope_points
-    n_paper = pm.rotor_loads(apc8x6, apc_params, om, V, b).n_evaluations.mean() / 48
-    n_camb = pm.rotor_loads(apc8x6, CAMBERED, om, V, b).n_evaluations.mean() / 48
+    n_paper = pm.rotor_loads(apc8x6, apc_params, om, V, b, radial=True).n_evaluations.mean() / 48
+    n_camb = pm.rotor_loads(apc8x6, CAMBERED, om, V, b, radial=True).n_evaluations.mean() / 48
     assert n_camb < 1.1 * n_paper
 
 
@@ -172,7 +172,7 @@ def test_zero_chord_stations_stay_finite_at_extreme_reynolds_exponents():
     prop = pm.Propeller("tapered", R, 2, np.linspace(0.2, 1.0, 9) * R, np.linspace(0.02, 0.0, 9),
                         np.radians(np.linspace(35, 12, 9)))
     p = CAMBERED.replace(re_exp=-1.5, re_exp_lift=-0.3)
-    r = pm.rotor_loads(prop, p, 900.0, [0.0, 10.0], [0.0, 1.2])
+    r = pm.rotor_loads(prop, p, 900.0, [0.0, 10.0], [0.0, 1.2], radial=True)
     assert r.converged.all() and np.all(np.isfinite(r.thrust)) and np.all(np.isfinite(r.torque))
 
 

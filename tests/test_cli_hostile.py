@@ -5,6 +5,7 @@ hardening audit: each case below was mishandled before)."""
 import csv
 import json
 import os
+from pathlib import Path
 import signal
 import stat
 import subprocess
@@ -165,7 +166,7 @@ def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
     # wait until the output's temporary file exists (the computation has started), then stop it
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and proc.poll() is None:
-        if any(p.name not in ("many.csv",) for p in tmp_path.iterdir()):
+        if any(p.name.startswith(".out.csv.") for p in tmp_path.iterdir()):
             break
         time.sleep(0.05)
     assert proc.poll() is None, "the run ended before it could be stopped"
@@ -192,7 +193,6 @@ def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
         (["loads", "apce_8x6", "--rpm", "8000", "--blades", "3"], "catalogue propeller"),
         (["loads", "apce_8x6", "--rpm", "8000", "--diameter-in", "9"], "catalogue propeller"),
         (["loads", "apce_8x6", "--rpm", "8000", "--out", "y.csv"], "--out"),
-        (["loads", "apce_8x6", "--rpm", "8000", "--base", "x"], "--base"),
         (["fit", "loads", "apce_8x6", "--out", "f.toml", "--base", "nosuchset"], "--base"),
     ],
 )
@@ -322,3 +322,107 @@ def test_the_console_entry_point_exits_fast_with_complete_output_and_the_exit_co
     piped = subprocess.run(f"{sys.executable} -m propmap loads apce_8x6 --points {src} --out - | head -2",
                            shell=True, capture_output=True, text=True)
     assert len(piped.stdout.splitlines()) == 2 and "Traceback" not in piped.stderr
+
+
+# ---- regression tests of the review of the hardening (each was mishandled) ----
+
+def test_an_existing_device_or_dangling_link_is_never_replaced(capsys, tmp_path, points):
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", "/dev/null")
+    assert one_line_error(code, err, "not a regular file") and not os.path.isfile("/dev/null")
+    os.symlink(tmp_path / "missing" / "x", tmp_path / "dang")
+    for out in (tmp_path / "dang", tmp_path / "dang" / "o.csv"):
+        code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", out)
+        assert one_line_error(code, err, "symbolic link"), err
+    assert os.path.islink(tmp_path / "dang") and not (tmp_path / "missing").exists()
+
+
+def test_the_package_data_is_never_an_output(capsys, tmp_path, points):
+    from importlib import resources
+
+    target = Path(str(resources.files("propmap") / "data" / "calibration.json"))
+    before = target.read_bytes()
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", target)
+    assert one_line_error(code, err, "file of the propmap package") and target.read_bytes() == before
+
+
+def test_two_outputs_of_one_command_may_not_be_the_same_file(capsys, tmp_path):
+    code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / "f.png")
+    assert one_line_error(code, err, "give outputs different names") and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("rpm,airspeed,incidence_deg\n5000,5,0,9\n", "more fields than the header"),
+        ("rpm,airspeed,incidence_deg\n5000,5,0\n6000,5,0,9\n", "--points"),
+        ("rpm,airspeed,incidence_deg\n\n\n5000,5,0\n\n6000,5,-1\n", "line 6: incidence_deg"),
+        ("rpm,airspeed," + "x" * 256 + ",incidence_deg\n5000,5,1,0\n", "a column name of 256 characters"),
+        ("rpm,airspeed,incidence_deg\n5000,5,-30\n", "symmetric"),
+    ],
+)
+def test_points_rows_are_checked_field_by_field_with_true_line_numbers(capsys, tmp_path, text, match):
+    src = tmp_path / "in.csv"
+    src.write_text(text)
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    assert one_line_error(code, err, match), err
+
+
+def test_points_quoted_header_and_input_cells_written_as_read(capsys, tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text('"rpm","airspeed","incidence_deg","thrust","thrust_model"\n5000.000,5.25,0,1.5,MYDATA\n')
+    code, out, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    assert code == 0, err
+    row = list(csv.DictReader(out.splitlines()))[0]
+    assert (row["rpm"], row["airspeed"], row["thrust"], row["thrust_model"]) == ("5000.000", "5.25", "1.5", "MYDATA")
+    assert float(row["thrust_model_model"]) > 0  # the model's thrust, under a free name
+
+
+def test_geometry_options_are_never_silently_ignored(capsys, tmp_path, shared_data):
+    from importlib import resources
+
+    pe0 = next(Path(str(resources.files("propmap") / "data" / "apc_pe0")).glob("*.PE0"))
+    code, _, err = run(capsys, "loads", pe0, "--rpm", "8000", "--diameter-in", "20")
+    assert one_line_error(code, err, "a PE0 file gives its own radius")
+    code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--blades", "3", "--out", tmp_path / "o.toml")
+    assert one_line_error(code, err, "catalogue propeller") and list(tmp_path.iterdir()) == []
+
+
+def test_long_names_are_named_with_their_option(capsys, tmp_path, points):
+    long = "a" * 300
+    cases = [(["loads", long, "--rpm", "8000"], "PROP: "),
+             (["loads", "apce_8x6", "--rpm", "8000", "--params", tmp_path / f"{long}.toml"], "--params: "),
+             (["loads", "apce_8x6", "--points", tmp_path / f"{long}.csv", "--out", tmp_path / "o.csv"], "--points: "),
+             (["loads", "apce_8x6", "--points", points, "--out", tmp_path / f"{long}.csv"], "--out: ")]
+    for argv, prefix in cases:
+        code, _, err = run(capsys, *argv)
+        assert one_line_error(code, err, prefix) and "too long" in err.lower(), err
+
+
+def test_bare_commands_print_their_help(capsys):
+    for argv in ([], ["fit"]):
+        code, out, err = run(capsys, *argv)
+        assert code == 0 and out.startswith("Usage: propmap") and err == ""
+
+
+def test_validate_figure_format_follows_the_extension(capsys, tmp_path):
+    code, _, err = run(capsys, "validate", "apce_8x6", "--figure", tmp_path / "v.xyz")
+    assert one_line_error(code, err, ".png, .pdf or .svg") and list(tmp_path.iterdir()) == []
+    code, _, err = run(capsys, "validate", "apce_8x6", "--figure", tmp_path / "v.pdf")
+    assert code == 0 and (tmp_path / "v.pdf").read_bytes()[:4] == b"%PDF"
+    code, _, err = run(capsys, "validate", "apce_8x6", "--protocols", "loso")
+    assert one_line_error(code, err, "--protocols applies to --all")
+
+
+def test_pe0_chord_beyond_the_radius_is_refused_naming_the_line(capsys, tmp_path):
+    from importlib import resources
+
+    pe0 = Path(str(resources.files("propmap") / "data" / "apc_pe0" / "10x4-PERF.PE0"))
+    lines = pe0.read_text(encoding="latin-1").splitlines(keepends=True)
+    k = next(i for i, ln in enumerate(lines) if "STATION" in ln and "TWIST" in ln) + 3
+    cells = lines[k].split()
+    cells[1] = "1e300"
+    lines[k] = "  ".join(cells) + "\n"
+    bad = tmp_path / "10x4-PERF.PE0"
+    bad.write_text("".join(lines), encoding="latin-1")
+    code, _, err = run(capsys, "loads", bad, "--rpm", "8000")
+    assert one_line_error(code, err, f"line {k + 1}: CHORD = 1e+300 in is outside"), err

@@ -14,13 +14,13 @@ from .conftest import RPM
 
 def test_drag_is_zero_in_hover_and_axial_flow(apc8x6, apc_params):
     om = 8000 * RPM
-    r = pm.rotor_loads(apc8x6, apc_params, om, [0.0, 10.0, 10.0, 3.0], [1.0, 0.0, math.pi, math.pi])
+    r = pm.rotor_loads(apc8x6, apc_params, om, [0.0, 10.0, 10.0, 3.0], [1.0, 0.0, math.pi, math.pi], radial=True)
     assert np.all(r.drag == 0.0)
     assert np.all(r.converged)
 
 
 def test_drag_positive_and_linear_at_low_edgewise_speed(apc8x6, apc_params):
-    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, [0.5, 1.0], math.pi / 2)
+    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, [0.5, 1.0], math.pi / 2, radial=True)
     assert np.all(r.drag > 0)
     # D ~ V for small mu (paper Section IV: "linear relationship with vehicle speed")
     assert r.drag[1] / r.drag[0] == pytest.approx(2.0, rel=0.05)
@@ -28,8 +28,8 @@ def test_drag_positive_and_linear_at_low_edgewise_speed(apc8x6, apc_params):
 
 def test_thrust_and_torque_continuous_in_incidence(apc8x6, apc_params):
     b = np.radians(np.linspace(0, 180, 721))
-    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 8.0, b)
-    h = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 0.0, 0.0)
+    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 8.0, b, radial=True)
+    h = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 0.0, 0.0, radial=True)
     T0, Q0 = float(h.thrust), float(h.torque)
     dT, dQ = np.abs(np.diff(r.thrust)), np.abs(np.diff(r.torque))
     # 0.25 deg steps. Outside the vortex-ring state the only jumps are stall-fold branch
@@ -46,13 +46,13 @@ def test_thrust_and_torque_continuous_in_incidence(apc8x6, apc_params):
 def test_momentum_consistency_sum_dT_BEMT_equals_T(apc8x6, apc_params, envelope_points):
     """Sum over annuli of eq (10) at the solved v_i equals T from eq (13)."""
     om, V, b = envelope_points
-    r = pm.rotor_loads(apc8x6, apc_params, om, V, b)
+    r = pm.rotor_loads(apc8x6, apc_params, om, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params)
     Vs = (V * np.sin(b))[:, None]
     Vc = (V * np.cos(b))[:, None]
     dT_bemt = nd.mfac * r.v_i * np.sqrt(Vs**2 + (Vc + r.v_i) ** 2)
     T_bemt = dT_bemt @ nd.w
-    T0 = float(pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0).thrust)
+    T0 = float(pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0, radial=True).thrust)
     assert np.max(np.abs(T_bemt - r.thrust)) < 1e-6 * T0
     # and the per-annulus BET thrust integrates to T
     np.testing.assert_allclose(r.dT_dr @ nd.w, r.thrust, rtol=1e-12, atol=1e-12)
@@ -61,11 +61,11 @@ def test_momentum_consistency_sum_dT_BEMT_equals_T(apc8x6, apc_params, envelope_
 def test_hover_model_equals_full_model_at_zero_speed(apc8x6, apc_params):
     om = 7000 * RPM
     h = HoverModel.from_model(apc8x6, apc_params, om)
-    r = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0)
+    r = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0, radial=True)
     assert h.thrust(om) == pytest.approx(float(r.thrust), rel=1e-12)
     assert h.torque(om) == pytest.approx(float(r.torque), rel=1e-12)
     # CT is nearly rpm-independent at V = 0 (only the Reynolds term changes it)
-    r2 = pm.rotor_loads(apc8x6, apc_params, 2 * om, 0.0, 0.0)
+    r2 = pm.rotor_loads(apc8x6, apc_params, 2 * om, 0.0, 0.0, radial=True)
     assert float(r2.CT) == pytest.approx(h.CT(apc8x6.diameter), rel=0.03)
 
 
@@ -76,20 +76,20 @@ def test_hover_model_from_coefficients_roundtrip():
 
 
 def test_thrust_scales_with_omega_squared_in_hover(apc8x6, apc_params):
-    r = pm.rotor_loads(apc8x6, apc_params, np.array([5000, 10000]) * RPM, 0.0, 0.0)
+    r = pm.rotor_loads(apc8x6, apc_params, np.array([5000, 10000]) * RPM, 0.0, 0.0, radial=True)
     # only the Reynolds skin-friction term breaks exact Omega^2 scaling
     assert r.thrust[1] / r.thrust[0] == pytest.approx(4.0, rel=0.03)
     assert r.CP[1] < r.CP[0]  # less skin friction at higher Reynolds number
 
 
 def test_axial_climb_reduces_thrust(apc8x6, apc_params):
-    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, [0.0, 5.0], [0.0, 0.0])
+    r = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, [0.0, 5.0], [0.0, 0.0], radial=True)
     assert r.thrust[1] < r.thrust[0]
 
 
 def test_power_and_coefficients_definitions(apc8x6, apc_params):
     om = 6000 * RPM
-    r = pm.rotor_loads(apc8x6, apc_params, om, 5.0, 0.3)
+    r = pm.rotor_loads(apc8x6, apc_params, om, 5.0, 0.3, radial=True)
     n = om / (2 * math.pi)
     D = apc8x6.diameter
     assert float(r.power) == pytest.approx(float(r.torque) * om)
@@ -100,11 +100,11 @@ def test_power_and_coefficients_definitions(apc8x6, apc_params):
 
 
 def test_shapes_scalar_1d_and_broadcast(apc8x6, apc_params):
-    s = pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0)
+    s = pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0, radial=True)
     assert s.thrust.shape == () and s.v_i.shape == (48,)
-    one = pm.rotor_loads(apc8x6, apc_params, [700.0, 800.0, 900.0], 5.0, 1.0)
+    one = pm.rotor_loads(apc8x6, apc_params, [700.0, 800.0, 900.0], 5.0, 1.0, radial=True)
     assert one.thrust.shape == (3,) and one.v_i.shape == (3, 48)
-    grid = pm.rotor_loads(apc8x6, apc_params, np.array([700.0, 800.0])[:, None], np.array([0.0, 5.0, 10.0]), 1.0)
+    grid = pm.rotor_loads(apc8x6, apc_params, np.array([700.0, 800.0])[:, None], np.array([0.0, 5.0, 10.0]), 1.0, radial=True)
     assert grid.thrust.shape == (2, 3) and grid.dD_dr.shape == (2, 3, 48)
     assert grid.thrust[1, 1] == pytest.approx(float(s.thrust), rel=1e-12)
 
@@ -114,7 +114,7 @@ def test_inputs_are_not_modified(apc8x6, apc_params):
     V = np.array([1.0, 2.0])
     b = np.array([0.1, 0.2])
     copies = om.copy(), V.copy(), b.copy()
-    pm.rotor_loads(apc8x6, apc_params, om, V, b)
+    pm.rotor_loads(apc8x6, apc_params, om, V, b, radial=True)
     for a, c in zip((om, V, b), copies):
         np.testing.assert_array_equal(a, c)
 
@@ -134,7 +134,7 @@ def test_inputs_are_not_modified(apc8x6, apc_params):
 def test_bad_operating_points_raise_naming_the_argument(apc8x6, apc_params, kwargs, match):
     args = dict(omega=800.0, airspeed=5.0, incidence=0.5) | kwargs
     with pytest.raises(ValueError, match=match):
-        pm.rotor_loads(apc8x6, apc_params, **args)
+        pm.rotor_loads(apc8x6, apc_params, **args, radial=True)
 
 
 def test_vector_form_matches_scalar_loads_and_rotates(apc8x6, apc_params):
@@ -143,7 +143,7 @@ def test_vector_form_matches_scalar_loads_and_rotates(apc8x6, apc_params):
     z = np.array([0.0, 0.0, 1.0])
     w = pm.rotor_wrench(apc8x6, apc_params, V, z, om, "ccw")
     beta = math.acos(-5.0 / np.linalg.norm(V))
-    s = pm.rotor_loads(apc8x6, apc_params, om, np.linalg.norm(V), beta)
+    s = pm.rotor_loads(apc8x6, apc_params, om, np.linalg.norm(V), beta, radial=True)
     np.testing.assert_allclose(w.force, [-float(s.drag), 0.0, float(s.thrust)], rtol=1e-12, atol=1e-12)
     # shaft torque against the ccw spin; the rolling moment along -e_ip (the advancing side,
     # where the extra thrust acts, is at -z x e_ip = -y here), no pitching moment
@@ -159,7 +159,7 @@ def test_vector_form_matches_scalar_loads_and_rotates(apc8x6, apc_params):
 
 def test_vector_form_at_zero_velocity(apc8x6, apc_params):
     w = pm.rotor_wrench(apc8x6, apc_params, np.zeros((2, 3)), [[0, 0, 1], [1, 0, 0]], 900.0, [1, -1])
-    T = float(pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0).thrust)
+    T = float(pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, radial=True).thrust)
     np.testing.assert_allclose(w.force, [[0, 0, T], [T, 0, 0]], atol=1e-12)
     assert np.all(np.isfinite(w.torque))
 
@@ -175,8 +175,8 @@ def test_vector_form_bad_input(apc8x6, apc_params):
 
 def test_simplified_lift_model_runs_and_differs(apc8x6, apc_params):
     simple = apc_params.replace(lift_model="sincos", cl2=2.0)
-    a = pm.rotor_loads(apc8x6, simple, 8000 * RPM, 5.0, 1.0)
-    b = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 5.0, 1.0)
+    a = pm.rotor_loads(apc8x6, simple, 8000 * RPM, 5.0, 1.0, radial=True)
+    b = pm.rotor_loads(apc8x6, apc_params, 8000 * RPM, 5.0, 1.0, radial=True)
     assert a.converged and a.thrust > 0 and a.thrust != b.thrust
 
 
@@ -188,3 +188,34 @@ def test_discretization_rejects_counts_outside_their_range(nr, naz, match):
     # one azimuth node (psi = 0) would silently give D = 0 in edgewise flight
     with pytest.raises(ValueError, match=match):
         pm.Discretization(nr, naz)
+
+
+def test_api_edge_cases_raise_value_errors_naming_the_argument(apc8x6, apc_params):
+    """Regression tests of the hardening audit: each was a wrong result or another exception."""
+    import warnings
+
+    with pytest.raises(ValueError, match="omega"):
+        pm.rotor_loads(apc8x6, apc_params, 10**400, 5.0, 0.5)  # an int beyond float: not OverflowError
+    with pytest.raises(ValueError, match="omega"):
+        pm.rotor_loads(apc8x6, apc_params, [[800.0, 900.0], [800.0]], 5.0, 0.5)  # ragged
+    for bad in ("800", True):
+        with pytest.raises(ValueError, match="omega"):
+            pm.rotor_loads(apc8x6, apc_params, bad, 5.0, 0.5)
+    with pytest.raises(ValueError, match="spin"):
+        pm.rotor_wrench(apc8x6, apc_params, [5.0, 0, 0], [0, 0, 1], 800.0, spin=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no overflow RuntimeWarning on the way
+        with pytest.raises(ValueError, match=r"airspeed must be finite and in \[0, 500\] m/s; got 1.41"):
+            pm.rotor_wrench(apc8x6, apc_params, [1e200, 1e200, 0.0], [0, 0, 1], 800.0)
+    with pytest.raises(ValueError, match="diameter"):
+        pm.HoverModel.from_coefficients(0.1, 0.05, -0.2)
+    with pytest.raises(ValueError, match="diameter"):
+        pm.HoverModel.from_coefficients(0.1, 0.05, 1e200)
+
+
+def test_huge_axis_keeps_the_thrust_direction_and_spins_by_name(apc8x6, apc_params):
+    w = pm.rotor_wrench(apc8x6, apc_params, [0.0, 0.0, 0.0], [0.0, 1e200, 1e200], 800.0)
+    T = float(pm.rotor_loads(apc8x6, apc_params, 800.0, 0.0, 0.0).thrust)
+    np.testing.assert_allclose(w.force, [0.0, T / math.sqrt(2), T / math.sqrt(2)], rtol=1e-12)
+    two = pm.rotor_wrench(apc8x6, apc_params, [[5.0, 0, 0]] * 2, [0, 0, 1], 800.0, spin=["ccw", "cw"])
+    np.testing.assert_allclose(two.torque[0], -two.torque[1], rtol=1e-12)

@@ -21,7 +21,7 @@ from .conftest import RPM
 def _full_circle_moments(prop, params, omega, V, beta, n_psi=720):
     """(M_R, pitching moment, side force) by a midpoint rule over the whole circle at the
     solver's v_i(r) (Gauss nodes in r as the solver's), for the paper's model."""
-    r = pm.rotor_loads(prop, params, omega, V, beta, discretization=pm.Discretization(48, 16))
+    r = pm.rotor_loads(prop, params, omega, V, beta, discretization=pm.Discretization(48, 16), radial=True)
     nd = _nodes(prop, 48, 16, pm.Air(), params)
     model, pk = _model_constants(params)
     psi = (np.arange(n_psi) + 0.5) * 2 * math.pi / n_psi
@@ -50,18 +50,18 @@ def test_rolling_moment_equals_a_full_circle_quadrature(apc8x6, apc_params, V, b
 
 def test_rolling_moment_is_zero_in_axial_flow_and_hover(apc8x6, apc_params):
     for params in (apc_params, pm.CamberedParams()):
-        r = pm.rotor_loads(apc8x6, params, 8000 * RPM, [0.0, 10.0, 10.0, 5.0], np.radians([0.0, 0.0, 180.0, 180.0]))
+        r = pm.rotor_loads(apc8x6, params, 8000 * RPM, [0.0, 10.0, 10.0, 5.0], np.radians([0.0, 0.0, 180.0, 180.0]), radial=True)
         assert np.all(r.rolling_moment == 0.0)
 
 
 def test_rolling_moment_grows_with_edgewise_speed_and_is_continuous_in_incidence(apc8x6):
     p = pm.CamberedParams()
-    r = pm.rotor_loads(apc8x6, p, 8000 * RPM, np.linspace(1, 20, 20), math.pi / 2)
+    r = pm.rotor_loads(apc8x6, p, 8000 * RPM, np.linspace(1, 20, 20), math.pi / 2, radial=True)
     assert np.all(r.rolling_moment > 0) and np.all(np.diff(r.rolling_moment) > 0)
     # the advancing side's extra thrust: M_R is a fraction of T R
     assert np.all(r.rolling_moment < 0.5 * r.thrust * apc8x6.radius)
     inc = np.radians(np.linspace(0.0, 2.0, 5))
-    near_axial = pm.rotor_loads(apc8x6, p, 8000 * RPM, 10.0, inc).rolling_moment
+    near_axial = pm.rotor_loads(apc8x6, p, 8000 * RPM, 10.0, inc, radial=True).rolling_moment
     steps = np.diff(near_axial)  # linear in the in-plane speed: no jump at the axial switch (beta = 0)
     np.testing.assert_allclose(steps, steps[1], rtol=0.01)
 

@@ -40,7 +40,7 @@ def _residual(nd, p, om, V, b, j, v):
 def test_every_annulus_of_a_dense_grid_converges_including_descent(apc8x6, apc_params):
     rpm, V, B = np.meshgrid(np.linspace(3000, 12000, 4), np.linspace(0, 25, 6), np.radians(np.linspace(0, 180, 13)),
                             indexing="ij")
-    r = pm.rotor_loads(apc8x6, apc_params, rpm * RPM, V, B)
+    r = pm.rotor_loads(apc8x6, apc_params, rpm * RPM, V, B, radial=True)
     assert r.converged.all()  # 312 points x 48 annuli
     assert np.all(np.isfinite(r.v_i)) and np.all(np.isfinite(r.thrust))
     assert r.vortex_ring.any()  # descent cases present in the grid
@@ -48,7 +48,7 @@ def test_every_annulus_of_a_dense_grid_converges_including_descent(apc8x6, apc_p
 
 def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_params):
     om, V, B = _grid()
-    r = pm.rotor_loads(apc8x6, apc_params, om, V, B)
+    r = pm.rotor_loads(apc8x6, apc_params, om, V, B, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params)
     misses, total, multi_scan = 0, 0, np.zeros(om.size, bool)
     for i in range(om.size):
@@ -79,13 +79,13 @@ def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_para
 def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
     """docs/numerics.md: with M = 50, hover at 8000 rpm has a fold near r/R = 0.345 (v_i 5.35 -> 8.19 m/s)."""
     om = 8000 * RPM
-    r48 = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0)
+    r48 = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0, radial=True)
     jump = np.argmax(np.abs(np.diff(r48.v_i)))
     assert r48.r[jump] / apc8x6.radius == pytest.approx(0.345, abs=0.01)
     assert r48.v_i[jump] == pytest.approx(5.35, abs=0.1) and r48.v_i[jump + 1] == pytest.approx(8.4, abs=0.3)
     disc = pm.Discretization(200, 8)
     nd = _nodes(apc8x6, 200, 8, pm.Air(), apc_params)
-    r = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0, discretization=disc)
+    r = pm.rotor_loads(apc8x6, apc_params, om, 0.0, 0.0, discretization=disc, radial=True)
     assert r.multiple_roots
     folds = 0
     for j in range(nd.y.size):
@@ -106,13 +106,13 @@ def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, env
               "cambered_stall_terms": pm.CamberedParams(re_exp_stall=0.2, stall_delay=2.0,
                                                         alpha_L0_re=math.radians(-1.5))}[which]
     om, V, b = envelope_points
-    r = pm.rotor_loads(apc8x6, params, om, V, b)
+    r = pm.rotor_loads(apc8x6, params, om, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)
     Vs, Vc = V * np.sin(b), V * np.cos(b)
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0
     T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, params)
     assert conv.all()
-    static = pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0)
+    static = pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0, radial=True)
     T0, Q0 = float(static.thrust), float(static.torque)
     np.testing.assert_allclose(r.thrust, T, rtol=0, atol=1e-7 * T0)
     np.testing.assert_allclose(r.drag, D, rtol=0, atol=1e-7 * T0)
@@ -122,7 +122,7 @@ def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, env
 
 def test_flags_agree_with_their_definitions(apc8x6, apc_params, envelope_points):
     om, V, b = envelope_points
-    r = pm.rotor_loads(apc8x6, apc_params, om, V, b)
+    r = pm.rotor_loads(apc8x6, apc_params, om, V, b, radial=True)
     Vc = (V * np.cos(b))[:, None]
     np.testing.assert_array_equal(r.vortex_ring, np.any((Vc < 0) & (Vc + r.v_i > 0), axis=1))
     np.testing.assert_allclose(r.reverse_flow_radius, V * np.sin(b) / om, atol=1e-15)
@@ -137,8 +137,8 @@ def test_failed_solve_raises_or_flags_never_silent(apc8x6, apc_params, monkeypat
     monkeypatch.setattr(_kernel, "solve_batch", _fail_everything)
     monkeypatch.setattr(_kernel, "solve_batch_serial", _fail_everything)
     with pytest.raises(pm.SolverError, match=r"annulus r/R=0\.\d+: .*bracket"):
-        pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2)
-    r = pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2, on_failure="flag")
+        pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2, radial=True)
+    r = pm.rotor_loads(apc8x6, apc_params, 800.0, 1.0, 0.2, on_failure="flag", radial=True)
     assert not r.converged and np.isnan(r.thrust) and "not_converged" in r.flags()
 
 
@@ -153,9 +153,9 @@ def _fail_everything(*args):
 
 def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, apc_params):
     """Issue: compiled kernels are cached on disk, so a new process pays no JIT time."""
-    pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0)  # this process compiled or loaded it
+    pm.rotor_loads(apc8x6, apc_params, 800.0, 5.0, 1.0, radial=True)  # this process compiled or loaded it
     code = ("import propmap as pm; from propmap.core import _kernel as K; "
-            "pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
+            "pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0, radial=True); "
             "s = K.solve_batch_serial.stats; print(sum(s.cache_hits.values()), sum(s.cache_misses.values()))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     hits, misses = map(int, out.split())
@@ -182,7 +182,7 @@ def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monke
     nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params)
     om, V, b = 800.0, 10.0, 1.0
     v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
-    r = pm.rotor_loads(apc8x6, apc_params, om, V, b, discretization=pm.Discretization(6, 8))
+    r = pm.rotor_loads(apc8x6, apc_params, om, V, b, discretization=pm.Discretization(6, 8), radial=True)
     assert np.all(code == _kernel.OK)
     np.testing.assert_allclose(v, r.v_i, rtol=1e-12)  # same iterates as the compiled kernel
     assert nev.sum() == r.n_evaluations
@@ -219,6 +219,6 @@ def test_residual_evaluations_per_annulus(apc8x6, apc_params, envelope_points):
     march and the extra scan take ~5.8 of them."""
     om, V, b = envelope_points
     for p in (apc_params, pm.CamberedParams()):
-        r = pm.rotor_loads(apc8x6, p, om, V, b)
+        r = pm.rotor_loads(apc8x6, p, om, V, b, radial=True)
         per_annulus = r.n_evaluations.mean() / pm.DEFAULT_DISCRETIZATION.n_radial
         assert 7.5 < per_annulus < 9.0, per_annulus

@@ -20,10 +20,15 @@ def _pyplot():
     return plt
 
 
+#: figure formats by file extension (anything else is written as PNG)
+FIGURE_FORMATS = ("png", "pdf", "svg")
+
+
 def _save(fig, path) -> Path:
     path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
     with atomic_write(path, "wb") as fh:
-        fig.savefig(fh, format="png", dpi=120)
+        fig.savefig(fh, format=fmt if fmt in FIGURE_FORMATS else "png", dpi=120)
     _pyplot().close(fig)
     return path
 

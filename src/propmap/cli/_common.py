@@ -62,6 +62,8 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
             raise InputError(f"PROP: {exc.args[0]}") from None
         except ValueError as exc:
             raise InputError(f"PROP: {exc}") from None
+        except OSError as exc:
+            raise InputError(f"PROP: {_short(spec)}: {exc.strerror or exc}") from None
     for w in caught:
         if issubclass(w.category, UserWarning):
             warn(str(w.message))
@@ -98,7 +100,15 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
         raise InputError(f"{option}: {exc.args[0]}") from None
     except ValueError as exc:
         raise InputError(f"{option}: {exc}") from None
+    except OSError as exc:
+        raise InputError(f"{option}: {_short(spec)}: {exc.strerror or exc}") from None
     return params, air, spec
+
+
+def _short(text, n: int = 80) -> str:
+    """``text`` cut to ``n`` characters (a name typed by the user, for a one-line message)."""
+    text = str(text)
+    return text if len(text) <= n else text[:n - 3] + "..."
 
 
 def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = "") -> None:
@@ -121,8 +131,20 @@ def _same_file(a: Path, b: Path) -> bool:
         if os.path.realpath(a) == os.path.realpath(b):
             return True
         return a.exists() and b.exists() and os.path.samefile(a, b)  # hard links
-    except OSError:
+    except (OSError, ValueError):
         return False
+
+
+def _is_file(p) -> bool:
+    """Path.is_file() that says False for names the system refuses (too long, NUL)."""
+    try:
+        return Path(p).is_file()
+    except (OSError, ValueError):
+        return False
+
+
+#: the package's own files (catalogue, calibration): never an output
+_PACKAGE_DATA = os.path.realpath(Path(__file__).resolve().parents[1] / "data")
 
 
 def check_outputs(outputs, inputs) -> None:
@@ -139,30 +161,57 @@ def check_outputs(outputs, inputs) -> None:
     Raises
     ------
     InputError
-        An empty path, an existing folder, a path below a regular file, a folder that
-        cannot be written, or a path that resolves to an input file (also through ``..``,
+        An empty path, a name the system refuses (too long), an existing folder or other
+        non-regular file (a device such as /dev/null, a pipe), a symbolic link to nothing,
+        a path below a regular file or a dangling link, a folder that cannot be written,
+        a file of the propmap package (its catalogue and calibration), two outputs that
+        are the same file, or a path that resolves to an input file (also through ``..``,
         symbolic links or hard links).
     """
-    ins = [Path(p) for p in inputs if p is not None and str(p) != "" and Path(p).is_file()]
+    ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
+    seen: dict[str, str] = {}
     for option, path in outputs:
         if path is None:
             continue
         if str(path) == "":
             raise InputError(f"{option}: the path is empty")
         p = Path(path)
-        for inp in ins:
-            if _same_file(p, inp):
-                raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")
-        if p.is_dir():
-            raise InputError(f"{option}: {p} is a folder; give a file name")
-        parent = p.parent
-        while not parent.exists():
-            parent = parent.parent
-        if not parent.is_dir():
-            raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
-        if not os.access(parent, os.W_OK | os.X_OK):
-            raise InputError(f"{option}: cannot write in {parent} (permission denied)")
-        _probe(option, parent)
+        try:
+            _check_output(option, p, ins)
+            real = os.path.realpath(p)
+        except OSError as exc:
+            raise InputError(f"{option}: {exc.strerror or exc} ({str(p)[:80]}{'...' if len(str(p)) > 80 else ''})") \
+                from None
+        if real in seen:
+            raise InputError(f"{option}: {p} is also the file of {seen[real]}; give outputs different names")
+        seen[real] = option
+
+
+def _check_output(option: str, p: Path, ins) -> None:
+    for inp in ins:
+        if _same_file(p, inp):
+            raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")
+    real = os.path.realpath(p)
+    if real == _PACKAGE_DATA or real.startswith(_PACKAGE_DATA + os.sep):
+        raise InputError(f"{option}: {p} is a file of the propmap package (its bundled data); refusing to write it")
+    if p.is_dir():
+        raise InputError(f"{option}: {p} is a folder; give a file name")
+    if os.path.lexists(p):
+        if p.is_symlink() and not p.exists():
+            raise InputError(f"{option}: {p} is a symbolic link to a missing file; give a file name")
+        if not p.is_file():
+            raise InputError(f"{option}: {p} exists and is not a regular file (a device, pipe or socket); "
+                             "give a file name")
+    parent = p.parent
+    while not os.path.lexists(parent):
+        parent = parent.parent
+    if parent.is_symlink() and not parent.exists():
+        raise InputError(f"{option}: {p} lies below {parent}, a symbolic link to a missing folder")
+    if not parent.is_dir():
+        raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise InputError(f"{option}: cannot write in {parent} (permission denied)")
+    _probe(option, parent)
 
 
 def _probe(option: str, folder: Path) -> None:
@@ -174,8 +223,10 @@ def _probe(option: str, folder: Path) -> None:
         fd, tmp = tempfile.mkstemp(prefix=".propmap-probe-", dir=folder)
     except OSError as exc:
         raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
-    os.close(fd)
-    os.unlink(tmp)
+    try:
+        os.close(fd)
+    finally:
+        os.unlink(tmp)
 
 
 def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:

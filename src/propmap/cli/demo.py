@@ -108,8 +108,13 @@ def demo(out_dir: Path, rpm: float):
     click.echo(f"models: the paper's eqs 3-4 with Table I ({PAPER}); the cambered section with Prandtl tip loss "
                f"and the {generic_label} set (fitted to half of the catalogue, without {PROP})\n")
 
-    table = envelope_table(prop, generic, rpm)
+    from ..core.airfoil import Air
+    from .loads import _coverage_messages, _extremes
+
+    # the tip Mach number only: the envelope's incidence and advance ratio are the demo's point
+    _coverage_messages(prop, generic_label, Air(), _extremes(prop, rpm, 20.0, 90.0)[0], 0.0, 0.0)
     out_dir.mkdir(parents=True, exist_ok=True)
+    table = envelope_table(prop, generic, rpm)
     with atomic_write(out_dir / "envelope.csv", "w", newline="") as fh:
         table.to_csv(fh, index=False, float_format="%.6g")
     click.echo(f"1. Envelope at {rpm:g} rpm, cambered model vs hover model (T_hover = {table.thrust_hover.iloc[0]:.3f} N,"

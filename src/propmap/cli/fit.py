@@ -60,7 +60,7 @@ def _out_files(out: Path) -> list:
                                      for s in (".report.json", ".report.txt", ".png")]
 
 
-def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "") -> dict:
+def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None) -> dict:
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
@@ -72,6 +72,8 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     text = result.report_text() + ("\n" + extra_text if extra_text else "")
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
+    if figure is not None:  # last: a stopped run leaves no figure without its parameters
+        figure(stem.with_name(stem.name + ".png"))
     click.echo(json.dumps(report, indent=2, default=float) if as_json else text)
     for w in result.warnings:
         click.echo(f"propmap: warning: {w}", err=True)
@@ -154,10 +156,8 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
                   + ("it matters (p < 0.05): the parameters written are those fitted with body lift"
                      if bl["matters"] else "not significant (p >= 0.05): the parameters written are those fitted "
                                            "without body lift"))
-    stem = out.with_suffix("")
-    plot_level_flight_fit(d, forces, hover, veh.weight, stem.with_name(stem.name + ".png"),
-                          title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model")
-    _write_outputs(res, out, base_label, as_json, extra)
+    _write_outputs(res, out, base_label, as_json, extra, figure=lambda png: plot_level_flight_fit(
+        d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
 def _read_sources(sources, prop_spec, diameter_in, blades, air):
@@ -170,7 +170,7 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
         if prop_spec is not None and prop_spec != sources[0]:
             raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller; --prop must be omitted")
         entry = get_entry(sources[0])
-        prop = load_prop(sources[0], None, None)
+        prop = load_prop(sources[0], diameter_in, blades)  # refuses both: the catalogue geometry fixes them
         return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
     missing = [s for s in sources if not Path(s).is_file()]
     if missing:
@@ -241,7 +241,6 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     options = replace(_options(M, lift_model, multistart, fit_params, no_prior), population=population)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
-    stem = out.with_suffix("")
     if entry is not None:
         from ..plots import plot_load_fit
 
@@ -257,8 +256,9 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
             from ..validation import validate
 
             vf, vb = validate(entry, prop, res.params, air=air), validate(entry, prop, base, air=air)
-        plot_load_fit(vf.runs, vb.runs, set(held), stem.with_name(stem.name + ".png"), baseline_label=base_label,
-                      title=f"{label}: load fit vs measured\nData: {entry.citation}")
+        def figure(png):
+            plot_load_fit(vf.runs, vb.runs, set(held), png, baseline_label=base_label,
+                          title=f"{label}: load fit vs measured\nData: {entry.citation}")
     else:
         from ..core.solver import rotor_loads
         from ..plots import plot_load_parity
@@ -278,6 +278,6 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
                 f"{name}: " + ", ".join(f"{k} {v:.4g} {units[k.removesuffix('_rmse')]}" for k, v in
                                         res.extra["holdout"][name].items())
                 for name in model)
-        plot_load_parity(data, model, held_mask, stem.with_name(stem.name + ".png"),
-                         title=f"load fit of {label} ({prop.name})")
-    _write_outputs(res, out, base_label, as_json, extra)
+        def figure(png):
+            plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
+    _write_outputs(res, out, base_label, as_json, extra, figure=figure)

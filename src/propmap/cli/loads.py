@@ -17,48 +17,72 @@ CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused
 
 
+#: the longest column name accepted in a points file [characters]
+MAX_NAME = 255
+MAX_HEADER_BYTES = 65536
+
+
 def _points_reader(path: Path, chunksize: int):
     """(iterator of DataFrame chunks, column names) of the points CSV, all cells as text.
 
-    Comma- or semicolon-separated (detected from the header), header names matched
-    case-insensitively after stripping blanks and a UTF-8 BOM.
+    Comma- or semicolon-separated (detected from the header), header names (quoted or
+    not) matched case-insensitively after stripping blanks and a UTF-8 BOM. Blank lines
+    are kept as empty rows, so that a row's position gives its line number.
 
     Raises
     ------
     InputError
-        Unreadable, not a regular file, too large, not text, or lacking the columns.
+        Unreadable, not a regular file, too large, not text, a header over 64 KiB,
+        duplicate, empty or over-long column names, or lacking the columns.
     """
+    import csv
+    import warnings
+
     import pandas as pd
 
     where = f"--points: {path}"
     try:
         st = path.stat()
-    except OSError as exc:
-        raise InputError(f"{where}: cannot read ({exc.strerror})") from None
-    if not path.is_file():
+        regular = path.is_file()
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{where}: cannot read ({getattr(exc, 'strerror', None) or exc})") from None
+    if not regular:
         raise InputError(f"{where}: not a regular file")
     if st.st_size > MAX_POINTS_FILE_BYTES:
         raise InputError(f"{where}: {st.st_size} bytes; at most {MAX_POINTS_FILE_BYTES} are read")
     try:
         with open(path, "rb") as fh:
-            first = fh.read(65536).split(b"\n", 1)[0].decode("utf-8-sig")
-    except UnicodeDecodeError:
-        raise InputError(f"{where}: the header is not UTF-8 text") from None
+            head = fh.read(MAX_HEADER_BYTES + 1)
     except OSError as exc:
         raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+    if b"\n" not in head and len(head) > MAX_HEADER_BYTES:
+        raise InputError(f"{where}: the header line is longer than {MAX_HEADER_BYTES} bytes")
+    try:
+        first = head.split(b"\n", 1)[0].decode("utf-8-sig").rstrip("\r")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{where}, line 1: byte 0x{exc.object[exc.start]:02x} is not UTF-8; save the file as "
+                         "UTF-8 CSV") from None
     sep = ";" if first.count(";") > first.count(",") else ","
-    names = [h.strip() for h in first.rstrip("\r").split(sep)]
+    names = [h.strip() for h in next(csv.reader([first], delimiter=sep), [])]
+    if not any(names):
+        raise InputError(f"{where}: the first line is empty; it must name the columns")
+    long = [n for n in names if len(n) > MAX_NAME]
+    if long:
+        raise InputError(f"{where}, line 1: a column name of {len(long[0])} characters (at most {MAX_NAME})")
     lower = [n.lower() for n in names]
     dup = sorted({n for n in lower if lower.count(n) > 1})
     if dup:
-        raise InputError(f"{where}: duplicate column(s) {', '.join(dup)}")
+        raise InputError(f"{where}: duplicate column(s) {', '.join(repr(d) for d in dup)}")
     missing = [c for c in INPUT_COLUMNS if c not in lower]
     if missing:
         raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)})")
     try:
-        reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
-                             skip_blank_lines=True, header=0, names=names, chunksize=chunksize)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, ValueError) as exc:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", pd.errors.ParserWarning)
+            reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
+                                 skip_blank_lines=False, header=0, names=names, index_col=False, chunksize=chunksize)
+    except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
+            ValueError) as exc:
         raise _parse_error(path, exc) from None
     return reader, names
 
@@ -67,15 +91,22 @@ def _parse_error(path: Path, exc: Exception) -> InputError:
     if isinstance(exc, UnicodeDecodeError):
         return InputError(f"--points: {path}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
                           "save it as UTF-8 CSV")
+    if isinstance(exc, Warning):  # pandas' ParserWarning: a row with more fields than the header
+        return InputError(f"--points: {path}: a row has more fields than the header")
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 
 def _chunks(path: Path, chunksize: int):
-    """Chunks of the points CSV with rpm, airspeed, incidence_deg as checked floats.
+    """Chunks of the points CSV: the cells as text, and rpm, airspeed, incidence_deg as
+    checked floats.
 
-    Yields (DataFrame, first line number); raises InputError naming the line of the first
-    bad value or the parse error.
+    Yields (DataFrame of the text as read, first line number, dict of the three float
+    arrays); blank lines are dropped. Raises InputError
+    naming the line of the first bad value (line numbers count blank lines; a quoted field
+    spanning lines shifts them) or the parse error.
     """
+    import warnings
+
     import numpy as np
     import pandas as pd
 
@@ -84,38 +115,36 @@ def _chunks(path: Path, chunksize: int):
     cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS}
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0)}
     line = 2
+    rows = 0
     try:
-        for df in reader:
-            if len(df) == 0:
-                continue
-            for c, name in cols.items():
-                v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
-                lo, hi = limits[c]
-                bad = ~((v >= lo) & (v <= hi))
-                if bad.any():
-                    i = int(np.argmax(bad))
-                    raise InputError(f"--points: {path}, line {line + i}: {c} must be a finite number in "
-                                     f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}")
-                df[name] = v
-            yield df, line
-            line += len(df)
-    except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as exc:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", pd.errors.ParserWarning)
+            for df in reader:
+                lines = line + np.arange(len(df))
+                line += len(df)
+                blank = (df == "").all(axis=1).to_numpy()
+                if blank.any():
+                    df, lines = df[~blank], lines[~blank]
+                if len(df) == 0:
+                    continue
+                values = {}
+                for c, name in cols.items():
+                    v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
+                    lo, hi = limits[c]
+                    bad = ~((v >= lo) & (v <= hi))
+                    if bad.any():
+                        i = int(np.argmax(bad))
+                        why = (" (the model is symmetric: give the magnitude of a negative incidence)"
+                               if c == "incidence_deg" and -180 <= v[i] < 0 else "")
+                        raise InputError(f"--points: {path}, line {lines[i]}: {c} must be a finite number in "
+                                         f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}{why}")
+                    values[c] = v
+                rows += len(df)
+                yield df, int(lines[0]), values
+    except (pd.errors.ParserError, pd.errors.ParserWarning, UnicodeDecodeError, ValueError) as exc:
         raise _parse_error(path, exc) from None
-    if line == 2:
+    if rows == 0:
         raise InputError(f"--points: {path} has no data rows")
-
-
-def read_points(path: Path):
-    """The whole points CSV as a DataFrame (all columns; the three inputs as checked floats).
-
-    Raises
-    ------
-    InputError
-        As :func:`_chunks`.
-    """
-    import pandas as pd
-
-    return pd.concat([df for df, _ in _chunks(path, CHUNK)], ignore_index=True)
 
 
 def _flag_strings(r):
@@ -130,8 +159,8 @@ def _flag_strings(r):
     return pd.Categorical.from_codes(code, categories=labels)
 
 
-def solve_points(prop, params, air, df):
-    """Loads at every row of ``df`` (columns rpm, airspeed, incidence_deg, any case).
+def solve_points(prop, params, air, rpm, airspeed, incidence_deg):
+    """Loads at every point (arrays of rpm, airspeed [m/s], incidence [deg]).
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
     outputs, one row per input row: thrust, drag, torque, rolling_moment, power, CT, CP,
@@ -142,14 +171,26 @@ def solve_points(prop, params, air, df):
 
     from ..core.solver import rotor_loads
 
-    cols = {c.lower(): c for c in df.columns}
-    rpm = df[cols["rpm"]].to_numpy(float)
-    r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, df[cols["airspeed"]].to_numpy(float),
-                    np.radians(df[cols["incidence_deg"]].to_numpy(float)), air=air, on_failure="flag", radial=False)
+    r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, airspeed, np.radians(incidence_deg), air=air,
+                    on_failure="flag", radial=False)
     res = pd.DataFrame({k: getattr(r, k) for k in OUTPUT_KEYS[:-2]})
     res["converged"] = np.where(r.converged, "true", "false")
     res["flags"] = _flag_strings(r)
     return res
+
+
+def _output_names(inputs, outputs) -> list[str]:
+    """Output column names that clash with no input column (any case): ``_model`` is
+    appended, as often as needed."""
+    taken = {c.lower() for c in inputs}
+    names = []
+    for c in outputs:
+        name = c
+        while name.lower() in taken:
+            name += "_model"
+        taken.add(name.lower())
+        names.append(name)
+    return names
 
 
 def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, int]:
@@ -165,15 +206,14 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     # first pass: every value checked before any work, and the extremes for the warnings
     n, extremes = _scan(prop, path)
-    _coverage_messages(prop, label, *extremes)
+    _coverage_messages(prop, label, air, *extremes)
 
     def write(fh):
         bad = 0
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
-            for k, (df, _) in enumerate(_chunks(path, CHUNK)):
-                res = solve_points(prop, params, air, df)
-                taken = {c.lower() for c in df.columns}
-                res.columns = [f"{c}_model" if c.lower() in taken else c for c in res.columns]
+            for k, (df, _, values) in enumerate(_chunks(path, CHUNK)):  # the input cells are written as read
+                res = solve_points(prop, params, air, values["rpm"], values["airspeed"], values["incidence_deg"])
+                res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
                     df[c] = res[c].to_numpy()
@@ -235,7 +275,7 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     check_point(rpm, airspeed, incidence_deg)
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
-    _coverage_messages(propeller, label, *_extremes(propeller, rpm, airspeed, incidence_deg))
+    _coverage_messages(propeller, label, air, *_extremes(propeller, rpm, airspeed, incidence_deg))
     from ..core.solver import SolverError, rotor_loads
 
     try:
@@ -259,12 +299,12 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
 
 
 def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
-    """(largest tip Mach number, advance ratio of the axial flow, incidence [deg])."""
+    """(largest tip speed [m/s], advance ratio of the axial flow, incidence [deg])."""
     import numpy as np
 
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
     n = rpm / 60
-    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius, airspeed))) / 340.3,
+    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius, airspeed))),
             float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
             float(np.max(incidence_deg)))
 
@@ -272,19 +312,20 @@ def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
 def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
     """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
     n, ext = 0, (0.0, 0.0, 0.0)
-    for df, _ in _chunks(path, CHUNK):
-        cols = {c.lower(): c for c in df.columns}
-        e = _extremes(prop, *(df[cols[c]].to_numpy(float) for c in INPUT_COLUMNS))
+    for df, _, values in _chunks(path, CHUNK):
+        e = _extremes(prop, *(values[c] for c in INPUT_COLUMNS))
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         n += len(df)
     return n, ext
 
 
-def _coverage_messages(prop, label, tip_mach, J, incidence_deg) -> None:
-    """One warning line per risk: tip Mach above 0.7, advance ratio or incidence beyond the
-    data behind the parameters (docs/validation.md)."""
+def _coverage_messages(prop, label, air, tip_speed, J, incidence_deg) -> None:
+    """One warning line per risk: tip Mach number (with the parameter set's speed of sound)
+    above 0.7, advance ratio or incidence beyond the data behind the parameters
+    (docs/validation.md)."""
     from ..io.calibration import coverage
 
+    tip_mach = tip_speed / air.speed_of_sound
     if tip_mach > 0.7:
         warn(f"tip Mach number up to {tip_mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
              "is not modelled")

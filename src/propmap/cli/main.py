@@ -65,6 +65,9 @@ def main(argv: list[str] | None = None) -> int:
     except click.exceptions.Abort:
         click.echo("propmap: aborted", err=True)
         return 130
+    except click.exceptions.NoArgsIsHelpError as exc:  # `propmap` or `propmap fit` alone: the help
+        click.echo(exc.ctx.get_help() if exc.ctx else cli.get_help(click.Context(cli)))
+        return 0
     except click.UsageError as exc:  # unknown option, bad type, missing argument: exit 2
         click.echo(f"propmap: error: {_one_line(exc.format_message())}", err=True)
         return 2
@@ -74,7 +77,12 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         click.echo("propmap: interrupted", err=True)
         return 130
-    except (ValueError, OSError) as exc:  # bad input that reached the library, unusable files
+    except OSError as exc:  # an unusable file the commands did not name (the system's reason and the file)
+        name = str(exc.filename or "")
+        name = name if len(name) <= 80 else name[:77] + "..."
+        click.echo(f"propmap: error: {exc.strerror or _one_line(exc)}{': ' + name if name else ''}", err=True)
+        return 2
+    except ValueError as exc:  # bad input that reached the library
         click.echo(f"propmap: error: {_one_line(exc)}", err=True)
         return 2
     except SystemExit as exc:

@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from ._common import PARAMS_HELP, InputError, check_out_dir, check_outputs, echo_json, load_params
+from .validate_all import PROTOCOLS
 
 
 def print_table(v) -> None:
@@ -30,14 +31,15 @@ def print_table(v) -> None:
 @click.option("--all", "all_props", is_flag=True,
               help="Cross-validate every catalogue propeller with measurements (about 10 minutes on 2 cores).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
-@click.option("--protocols", default=",".join(("loso", "lowest", "static", "blind")), show_default=True,
-              help="With --all: comma-separated subset of loso, lowest, static, blind.")
+@click.option("--protocols", default=None,
+              help=f"With --all: comma-separated subset of {', '.join(PROTOCOLS)} (default: all).")
 @click.option("--props", "only", default="", help="With --all: comma-separated catalogue names to restrict to.")
 @click.option("--out-dir", type=click.Path(path_type=Path), default=None,
               help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")
 @click.option("--json", "as_json", is_flag=True, help="Print the errors as JSON.")
 @click.option("--figure", type=click.Path(path_type=Path), default=None,
-              help="Single propeller: PNG of the model against the measurements (default: none written).")
+              help="Single propeller: figure (.png, .pdf or .svg) of the model against the measurements "
+                   "(default: none written).")
 def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure):
     """The model against bundled measurements.
 
@@ -57,16 +59,18 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
             raise InputError("--figure applies to a single PROP; --all writes its figures into --out-dir")
         if out_dir is not None:
             check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
-        run_all([p.strip() for p in protocols.split(",") if p.strip()],
+        run_all([p.strip() for p in (protocols or ",".join(PROTOCOLS)).split(",") if p.strip()],
                 [p.strip() for p in only.split(",") if p.strip()], out_dir, as_json)
         return
     if not prop:
         raise InputError("give PROP (a catalogue propeller) or --all")
-    for option, value in (("--protocols", protocols != ",".join(("loso", "lowest", "static", "blind"))),
+    for option, value in (("--protocols", protocols is not None),
                           ("--props", bool(only)), ("--out-dir", out_dir is not None)):
         if value:
             raise InputError(f"{option} applies to --all")
     if figure is not None:
+        if figure.suffix.lower() not in (".png", ".pdf", ".svg"):
+            raise InputError(f"--figure: {figure}: give a .png, .pdf or .svg file name (the format follows it)")
         check_outputs([("--figure", figure)], [params_spec])
     from ..core.solver import SolverError
     from ..io.catalogue import get_entry, load_propeller

@@ -133,12 +133,23 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> di
                 rows.append(_one_propeller(n, protocols))
                 bar.update(1)
         else:
-            with ProcessPoolExecutor(jobs, mp_context=get_context("spawn"), initializer=_worker_init) as pool:
+            pool = ProcessPoolExecutor(jobs, mp_context=get_context("spawn"), initializer=_worker_init)
+            try:
                 futures = [pool.submit(_one_propeller, n, tuple(protocols)) for n in names]
                 rows = []
                 for f in futures:
                     rows.append(f.result())
                     bar.update(1)
+            except BaseException:
+                # stopped (SIGTERM, Ctrl-C) or failed: drop the queue and end the workers now,
+                # instead of waiting for every queued propeller
+                import multiprocessing
+
+                pool.shutdown(wait=False, cancel_futures=True)
+                for child in multiprocessing.active_children():
+                    child.terminate()
+                raise
+            pool.shutdown(wait=True)
     finally:
         bar.close()
     return {"propellers": rows,

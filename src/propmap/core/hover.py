@@ -60,13 +60,15 @@ class HoverModel:
         Raises
         ------
         ValueError
-            CT or CP not a finite number, or the diameter not a finite number > 0 [m].
+            CT or CP not a finite number in [-1000, 1000], or the diameter not in (0, 1000] m.
         """
         for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")
-        if diameter <= 0:
-            raise ValueError(f"diameter must be > 0 m, got {diameter!r}")
+        if not 0 < diameter <= 1e3:
+            raise ValueError(f"diameter must be in (0, 1000] m, got {diameter!r}")
+        if not (abs(CT) <= 1e3 and abs(CP) <= 1e3):
+            raise ValueError(f"CT and CP must be within [-1000, 1000], got {CT!r}, {CP!r}")
         return cls(float(CT) * air.rho * diameter**4 / (2 * math.pi) ** 2,
                    float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3)
 

@@ -289,7 +289,15 @@ def _range_error(name: str, value) -> ValueError:
 def _as_array(name: str, value) -> np.ndarray:
     """``value`` as a float array, checked against ``_RANGES[name]``; strings and bools refused."""
     lo, hi, _ = _RANGES[name]
-    a = np.asarray(value)
+    try:
+        a = np.asarray(value)
+    except (ValueError, OverflowError) as exc:  # ragged nesting, ints beyond int64
+        raise ValueError(f"{name} must be a number or a rectangular array of numbers ({exc})") from None
+    if a.dtype.kind == "O":
+        try:
+            a = a.astype(float)
+        except (TypeError, ValueError, OverflowError):
+            raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None
     if a.dtype.kind not in "fiu":
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
@@ -303,7 +311,10 @@ def _as_array(name: str, value) -> np.ndarray:
 def _scalar(name: str, value) -> float:
     """Fast path for a Python or NumPy real scalar (no array machinery)."""
     lo, hi, _ = _RANGES[name]
-    x = float(value)
+    try:
+        x = float(value)
+    except OverflowError:  # an int beyond the float range
+        raise _range_error(name, math.inf) from None
     if not lo <= x <= hi:
         raise _range_error(name, x)
     return x
@@ -322,7 +333,7 @@ def rotor_loads(
     air: Air = Air(),
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     on_failure: str = "raise",
-    radial: bool = True,
+    radial: bool = False,
 ) -> RotorLoads:
     """Thrust, rotor drag and torque of a propeller at any operating point.
 
@@ -354,9 +365,9 @@ def rotor_loads(
         ``"raise"`` (default): raise SolverError if any annulus fails. ``"flag"``:
         return, with ``converged`` False and NaN loads at the failed points.
     radial : bool
-        Keep the per-annulus outputs (``v_i``, ``dT_dr``, ``dD_dr``, ``dQ_dr``; 4 n_radial
-        doubles, 1.5 kB per point at the default). False: they are None and large batches
-        need only the per-point outputs.
+        Keep the per-annulus outputs (``v_i``, ``dT_dr``, ``dD_dr``, ``dQ_dr``,
+        ``dMR_dr``; 5 n_radial doubles, 1.9 kB per point at the default). False (the
+        default): they are None, and a point costs 84 bytes.
 
     Returns
     -------

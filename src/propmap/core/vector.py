@@ -43,12 +43,17 @@ class RotorWrench:
 
 
 def _spin_sign(spin) -> np.ndarray:
+    table = {"ccw": 1.0, "cw": -1.0}
     if isinstance(spin, str):
-        table = {"ccw": 1.0, "cw": -1.0}
         if spin.lower() not in table:
             raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1, got {spin!r}")
         return np.asarray(table[spin.lower()])
     s = np.asarray(spin)
+    if s.dtype.kind in "UO" and all(isinstance(x, str) for x in s.reshape(-1)):  # e.g. ["cw", "ccw"]
+        words = [x.lower() for x in s.reshape(-1)]
+        if not all(w in table for w in words):
+            raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1, got {spin!r:.60}")
+        return np.array([table[w] for w in words]).reshape(s.shape)
     if s.dtype.kind not in "iuf" or not np.all(np.isin(s, (-1.0, 1.0))):
         raise ValueError(f"spin must be 'ccw', 'cw', +1 or -1 (not a bool), got {spin!r:.60}")
     return s.astype(float)
@@ -134,7 +139,10 @@ def disk_frame(velocity, axis):
     z = z / zmax
     z = z / np.linalg.norm(z, axis=-1, keepdims=True)
     V, z = np.broadcast_arrays(V, z)
-    speed = np.linalg.norm(V, axis=-1)
+    # |V| without overflow (a speed beyond float range is refused by rotor_loads as such)
+    vmax = np.max(np.abs(V), axis=-1)
+    with np.errstate(over="ignore"):
+        speed = vmax * np.linalg.norm(V / np.where(vmax > 0, vmax, 1.0)[..., None], axis=-1)
     axial = np.einsum("...i,...i->...", V, z)
     safe = np.where(speed > 0, speed, 1.0)
     beta = np.where(speed > 0, np.arccos(np.clip(axial / safe, -1.0, 1.0)), 0.0)

@@ -127,11 +127,14 @@ class _Csv:
         if n_lines > MAX_LINES:
             raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
         self._raw = raw
+        # ',' or ';' (spreadsheets in locales with a decimal comma), from the header line
+        head = raw.lstrip(b"\xef\xbb\xbf\r\n \t").split(b"\n", 1)[0]
+        self.sep = ";" if head.count(b";") > head.count(b",") else ","
         self.header_line = 0
         self.columns: list[str] = []
         for line, cells in self._rows():
             self.header_line = line
-            self.columns = [c.strip() for c in cells]
+            self.columns = [c.strip().lower() for c in cells]  # names match in any case
             break
         if not self.header_line:
             raise self.error("empty file (no header line)")
@@ -153,7 +156,7 @@ class _Csv:
     def _rows(self):
         """(first line number, cells) of every non-blank row, after the header if it is known."""
         text = io.TextIOWrapper(io.BytesIO(self._raw), encoding="utf-8-sig", newline="")
-        reader = csv.reader(text, strict=True, skipinitialspace=True)
+        reader = csv.reader(text, delimiter=getattr(self, "sep", ","), strict=True, skipinitialspace=True)
         last = 0
         try:
             for cells in reader:

@@ -48,7 +48,7 @@ never converted), finite, and within its range: the cambered keys as ``CamberedP
 (angles in degrees here: ``alpha_L0_deg`` in [-20, 10], ``alpha_L0_re_deg`` in [-5, 5]);
 the paper's keys and the air within :data:`FILE_RANGES`, which only refuse absurd values
 (``cl1 = 1e300``): ``cl1``, ``cl2``, ``cd``, ``cp_blasius`` in [0, 100], ``cd0`` in
-[0, 10], ``M`` in (0, 1e6], ``alpha0_deg`` in (0, 90); ``rho`` in (0, 2000] kg/m^3,
+[0, 10], ``M`` in (0, 1e6], ``alpha0_deg`` in (0, 90); ``rho`` in [0.001, 2000] kg/m^3 (Mars' surface air is 0.02),
 ``mu`` in (0, 10] Pa s, ``speed_of_sound`` in (0, 1e4] m/s.
 """
 
@@ -84,7 +84,7 @@ FILE_RANGES = {
                  "alpha0_deg": (0.0, 90.0, True, True, "deg")},
     "cambered": {"alpha_L0_deg": (-20.0, 10.0, False, False, "deg"),
                  "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg")},
-    "air": {"rho": (0.0, 2000.0, True, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
+    "air": {"rho": (1e-3, 2000.0, False, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
             "speed_of_sound": (0.0, 1e4, True, False, "m/s")},
 }
 

@@ -89,6 +89,8 @@ MAX_SMALL_FILE_BYTES = 16 * 1024 * 1024
 #: the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
 RPM_MAX = 954929.0
 #: UIUC families whose file names give the diameter and pitch in millimetres
+_SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the size from a file name "
+              "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and vp families)")
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]
 NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
@@ -419,17 +421,17 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     note = ""
     if diameter_in is None:
         if D_name is None:
-            raise GeometryFileError(f"{where}: diameter unknown; give diameter_in (--diameter-in)")
+            raise GeometryFileError(f"{where}: diameter unknown; {_SIZE_HINT}")
         lo, hi = NAME_DIAMETER_RANGE_IN
         diameter_in = D_name / 25.4 if unit == "mm" else D_name
         if not (lo <= diameter_in <= hi):
             raise GeometryFileError(
                 f"{where}: diameter {D_name:g} {unit} from the file name is not plausible (a diameter from a name "
-                f"must be in [{lo:g}, {hi:g}] in); give diameter_in (--diameter-in)")
+                f"must be in [{lo:g}, {hi:g}] in); {_SIZE_HINT}")
         if unit == "mm":
             note = (f"diameter {D_name:g} mm = {diameter_in:.4g} in from the file name (UIUC family "
                     f"{family!r} gives sizes in millimetres)")
-            warnings.warn(f"{where}: {note}; give diameter_in (--diameter-in) if that is wrong", UserWarning,
+            warnings.warn(f"{where}: {note}; if that is wrong, {_SIZE_HINT}", UserWarning,
                           stacklevel=3)
     else:
         _check_number(diameter_in, "diameter_in", GeometryFileError, where)
@@ -552,6 +554,18 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
     if np.any(np.abs(twist) > 90):
         i = int(np.argmax(np.abs(twist) > 90))
         raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
+    station, chord = data[:, 0], data[:, 1]
+    for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
+                                    ("CHORD", chord, (0.0, radius_in))):
+        bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise GeometryFileError(f"{where}, line {row_lines[i]}: {label} = {values[i]:g} in is outside "
+                                    f"{'(0' if label == 'STATION' else '[0'}, {radius_in:g}] in (RADIUS)")
+    if np.any(np.diff(station) <= 0):
+        i = int(np.argmax(np.diff(station) <= 0)) + 1
+        raise GeometryFileError(f"{where}, line {row_lines[i]}: STATION = {station[i]:g} in does not increase "
+                                f"(previous {station[i - 1]:g} in)")
     R = radius_in * INCH
     pitch = float(np.median(data[:, 2])) * INCH  # QUOTED pitch column [in]
     try:
@@ -578,7 +592,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     ----------
     path : str or Path
     diameter_in : float, optional
-        For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS.
+        For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
+        a different ``diameter_in`` is refused.
     n_blades : int, optional
         Blade count; default 2 (UIUC) or the PE0 file's BLADES.
 
@@ -602,6 +617,10 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     head = text[:4000]
     if "STATION" in head and "TWIST" in head:
         prop = _apc_pe0(path, text, name=None, source="")
+        if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-9):
+            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:g} in, but a PE0 file gives its "
+                                    f"own radius (diameter {prop.diameter / 0.0254:g} in); diameter_in applies to "
+                                    "UIUC files")
         if n_blades is not None and n_blades != prop.n_blades:
             try:
                 prop = Propeller(prop.name, prop.radius, n_blades, prop.r, prop.chord, prop.theta, prop.pitch,
