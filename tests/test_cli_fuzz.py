@@ -217,3 +217,44 @@ def test_fit_loads_options(capsys, tmp_path_factory, M, multistart, fit_params, 
         params, _ = pm.read_params(d / "p.toml")  # the parameters written read back
     else:
         assert written == []
+
+
+@settings(derandomize=True, database=None, deadline=None, max_examples=40, print_blob=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(prop=st.one_of(st.sampled_from(["apce_8x6", "ma_11x4", "apce_8x6 ", "APCE_8X6", "", "../x", "nosuch"]),
+                      st.text(max_size=12)),
+       params=st.one_of(st.none(), st.sampled_from(["generic", "gill2017-apc", "calibrated:nosuch", "x.toml"])),
+       as_json=st.booleans())
+def test_validate_single_propeller(capsys, prop, params, as_json):
+    argv = ["validate", prop] + (["--params", params] if params else []) + (["--json"] if as_json else [])
+    code = main(argv)
+    out, err = capsys.readouterr()
+    _check(code, out, err)
+    if code == 0 and as_json:
+        d = json.loads(out)
+        assert all(math.isfinite(d["model"][k]) for k in ("ct_rmse", "cp_rmse"))
+
+
+@settings(derandomize=True, database=None, deadline=None, max_examples=15, print_blob=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(M=st.one_of(st.none(), st.sampled_from(["30"]), NUMBER_TEXT),
+       base=st.sampled_from([None, "gill2017-apc", "generic", "nosuch"]),
+       fit_params=st.one_of(st.none(), st.sampled_from(["cl2,cd", "cl1", "nonsense", "cl_alpha"])),
+       body_lift=st.booleans())
+def test_fit_level_flight_options(capsys, tmp_path_factory, M, base, fit_params, body_lift):
+    from importlib import resources
+
+    ex = resources.files("propmap") / "data" / "examples"
+    d = tmp_path_factory.mktemp("lf")
+    argv = ["fit", "level-flight", str(ex / "level_flight_synthetic.csv"), "--vehicle", str(ex / "quadrotor.toml"),
+            "--out", str(d / "p.toml")]
+    for opt, v in (("--M", M), ("--base", base), ("--fit-params", fit_params)):
+        if v is not None:
+            argv += [opt, v]
+    if body_lift:
+        argv.append("--body-lift")
+    code = main(argv)
+    out, err = capsys.readouterr()
+    _check(code, out, err)
+    written = sorted(p.name for p in d.iterdir())
+    assert written == (["p.png", "p.report.json", "p.report.txt", "p.toml"] if code == 0 else [])
