@@ -1,0 +1,88 @@
+"""The C export of a map: compiled with the system C compiler and compared with the Python
+evaluator (RotorMap.loads) on random points, inside and outside the grid, for every policy."""
+
+import math
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.export_c import write_c_header
+from propmap.maps import RotorMap, build_map
+
+from .conftest import RPM
+
+CC = shutil.which("cc") or shutil.which("gcc") or shutil.which("clang")
+
+DRIVER = r"""
+#include <stdio.h>
+#include "map.h"
+int main(void)
+{
+    double o, v, b, out[4];
+    int policy, status;
+    while (scanf("%lf %lf %lf %d", &o, &v, &b, &policy) == 4) {
+        out[0] = out[1] = out[2] = out[3] = -12345.0;
+        status = pm_map_loads(o, v, b, policy, out);
+        printf("%d %.17g %.17g %.17g %.17g\n", status, out[0], out[1], out[2], out[3]);
+    }
+    return 0;
+}
+"""
+
+
+@pytest.fixture(scope="module")
+def rotor_map():
+    prop = pm.load_propeller("apce_8x6")
+    params, air, label = pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.geomspace(3000, 9000, 6) * RPM, np.linspace(0, 15, 7),
+                   np.radians(np.linspace(0, 180, 19)), air=air, params_label=label, n_check=200)
+    return RotorMap(ds)
+
+
+def _compile(tmp_path, rm, dtype):
+    write_c_header(rm, tmp_path / "map.h", dtype=dtype)
+    (tmp_path / "driver.c").write_text(DRIVER)
+    exe = tmp_path / "driver"
+    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
+                    str(tmp_path / "driver.c"), "-lm"], check=True, capture_output=True, text=True)
+    return exe
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+@pytest.mark.parametrize("dtype, rtol", [("float", 1e-6), ("double", 1e-12)])
+def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, rotor_map, dtype, rtol):
+    rm = rotor_map
+    exe = _compile(tmp_path, rm, dtype)
+    rng = np.random.default_rng(4)
+    n = 400
+    om = rng.uniform(rm.omega[0] * 0.8, rm.omega[-1] * 1.1, n)  # some outside the grid
+    V = rng.uniform(0, 18, n)
+    b = rng.uniform(0, math.pi, n)
+    policy = rng.integers(0, 3, n)
+    stdin = "".join(f"{float(o)!r} {float(v)!r} {float(x)!r} {int(p)}\n" for o, v, x, p in zip(om, V, b, policy))
+    rows = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
+                                                             check=True).stdout.splitlines()], dtype=float)
+    status, c_out = rows[:, 0].astype(int), rows[:, 1:]
+    for name, code in (("clip", 0), ("nan", 1)):
+        m = policy == code
+        got = rm.loads(om[m], V[m], b[m], out_of_grid=name)
+        py = np.column_stack([got.thrust, got.drag, got.torque, got.rolling_moment])
+        scale = np.max(np.abs(py[np.isfinite(py)]))
+        np.testing.assert_allclose(c_out[m], py, rtol=rtol, atol=rtol * scale)
+        expect = np.where(~got.inside, 2, np.where(got.flagged, 1, 0))
+        np.testing.assert_array_equal(status[m], expect)
+    m = policy == 2  # error policy: -1 outside and the outputs untouched, as "raise" refuses them
+    inside = (om >= rm.omega[0]) & (om <= rm.omega[-1]) & (V <= rm.airspeed[-1])
+    assert np.all(status[m & ~inside] == -1) and np.all(c_out[m & ~inside] == -12345.0)
+    assert np.all(status[m & inside] >= 0)
+
+
+def test_bad_dtype_and_name_are_refused(tmp_path, rotor_map):
+    with pytest.raises(ValueError, match="dtype"):
+        write_c_header(rotor_map, tmp_path / "m.h", dtype="half")
+    with pytest.raises(ValueError, match="C identifier"):
+        write_c_header(rotor_map, tmp_path / "m.h", name="1bad-name")
+    assert list(tmp_path.iterdir()) == []
