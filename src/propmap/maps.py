@@ -27,7 +27,8 @@ from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 
-__all__ = ["MapLoads", "MapWrench", "RotorMap", "build_map", "default_axes", "check_map", "write_map"]
+__all__ = ["MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "write_map",
+           "write_sidecar"]
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
 #: the loads a map interpolates (each divided by (Omega R)^2 + V^2 in the table)
@@ -375,6 +376,8 @@ class RotorMap:
     """
 
     def __init__(self, dataset) -> None:
+        if "prop" in dataset.dims:
+            raise ValueError("a map of several propellers: select one (RotorMap.open(path, prop=NAME))")
         missing = [k for k in (*LOADS, *FLAGS) if k not in dataset]
         missing += [k for k in ("rpm", "airspeed", "incidence_deg") if k not in dataset.coords]
         if missing:
@@ -405,13 +408,21 @@ class RotorMap:
         self._fl1 = np.empty(1, dtype=np.bool_)
 
     @classmethod
-    def open(cls, path) -> "RotorMap":
+    def open(cls, path, prop: str | None = None) -> "RotorMap":
         """Read a map's netCDF file (written by :func:`write_map` or ``propmap map``).
+
+        Parameters
+        ----------
+        path : str or Path
+        prop : str, optional
+            For a map over several propellers (``propmap map --all``, a ``prop``
+            dimension): the propeller to evaluate.
 
         Raises
         ------
         ValueError
-            Not a readable netCDF file, or not a rotor map (the message names the file).
+            Not a readable netCDF file, not a rotor map, or ``prop`` missing or unknown for
+            a map over several propellers (the message names the file).
         """
         import xarray as xr
 
@@ -420,6 +431,15 @@ class RotorMap:
                 ds.load()
         except (OSError, ValueError, KeyError) as exc:
             raise ValueError(f"{path}: not a readable netCDF rotor map ({exc})") from None
+        if "prop" in ds.dims:
+            names = [str(n) for n in ds["prop"].values]
+            if prop not in names:
+                raise ValueError(f"{path}: a map of {len(names)} propellers; give prop= one of them "
+                                 f"(e.g. {', '.join(names[:3])}), got {prop!r}")
+            attrs = json.loads(ds.attrs["per_prop_json"])[prop]
+            ds = ds.sel(prop=prop, drop=True).assign_attrs(attrs)
+        elif prop is not None and prop != ds.attrs.get("propeller"):
+            raise ValueError(f"{path}: a map of {ds.attrs.get('propeller')!r}, not of {prop!r}")
         try:
             return cls(ds)
         except ValueError as exc:
@@ -565,14 +585,27 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
         raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
     written = [path]
     if sidecar:
-        meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
-                for k, v in ds.attrs.items()}
-        meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
-        meta["axes"] = {d: [float(ds[d].values[0]), float(ds[d].values[-1])] for d in ("rpm", "airspeed",
-                                                                                        "incidence_deg")}
-        meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
-        side = path.with_name(path.name + ".json")
-        with atomic_write(side) as fh:
-            json.dump(meta, fh, indent=2, allow_nan=True)
-        written.append(side)
+        written.append(write_sidecar(ds, path.with_name(path.name + ".json")))
     return written
+
+
+def write_sidecar(ds, path) -> Path:
+    """Write a map's metadata and error bound as JSON (atomically): its attributes, sizes,
+    axis ranges and variable units.
+
+    Raises
+    ------
+    OSError
+        The file cannot be written.
+    """
+    from .io.atomic import atomic_write
+
+    meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
+            for k, v in ds.attrs.items()}
+    meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
+    meta["axes"] = {d: [float(ds[d].values[0]), float(ds[d].values[-1])] for d in ("rpm", "airspeed", "incidence_deg")}
+    meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
+    path = Path(path)
+    with atomic_write(path) as fh:
+        json.dump(meta, fh, indent=2, allow_nan=True)
+    return path

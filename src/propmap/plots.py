@@ -241,3 +241,40 @@ def plot_cases(cases: dict, path) -> Path:
         axes[3].set_title(_wrap(f"Beaver propeller, {b.notes.split(' (')[0]}. {b.citation}"), fontsize=7)
         axes[3].legend(fontsize=7)
     return _save(fig, path)
+
+
+def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
+    """Contours of a rotor map at the grid rpm nearest ``rpm``: T, D, Q, and the hover
+    model's thrust error T_hover - T (T_hover: the map's static thrust at that rpm), over
+    (airspeed, incidence), with the flagged nodes (vortex ring, multiple roots) hatched.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A map (propmap.maps.build_map).
+    rpm : float
+        [rpm]; the nearest grid row is drawn.
+    path : str or Path
+        Figure file (format from the extension: png, pdf, svg).
+    """
+    plt = _pyplot()
+    row = ds.sel(rpm=rpm, method="nearest")
+    V = row["airspeed"].values
+    inc = row["incidence_deg"].values
+    t_static = float(row["thrust"].sel(airspeed=0.0, method="nearest").values[0])
+    panels = [("thrust", row["thrust"].values, "thrust T [N]"), ("drag", row["drag"].values, "rotor drag D [N]"),
+              ("torque", row["torque"].values, "torque Q [N m]"),
+              ("hover", t_static - row["thrust"].values, "hover model error T_hover - T [N]")]
+    flagged = (row["vortex_ring"].values | row["multiple_roots"].values | ~row["converged"].values).astype(float)
+    fig, axes = plt.subplots(1, 4, figsize=(18, 4.2), constrained_layout=True)
+    for ax, (key, z, label) in zip(axes, panels):
+        cmap = "RdBu_r" if key == "hover" else "viridis"
+        lim = np.nanmax(np.abs(z)) if key == "hover" else None
+        cs = ax.contourf(inc, V, z, levels=21, cmap=cmap, vmin=-lim if lim else None, vmax=lim)
+        fig.colorbar(cs, ax=ax, label=label)
+        if flagged.any():
+            ax.contourf(inc, V, flagged, levels=[0.5, 1.5], colors="none", hatches=["//"])
+        ax.set_xlabel("incidence [deg] (0 climb, 90 edgewise, 180 descent)")
+        ax.set_ylabel("airspeed V [m/s]")
+    fig.suptitle(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring or multiple roots)", fontsize=9)
+    return _save(fig, path)

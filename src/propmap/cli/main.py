@@ -14,6 +14,7 @@ from .. import __version__
 from .demo import demo
 from .fit import fit
 from .loads import loads
+from .map import map_command
 from .props import props
 from .validate import validate
 
@@ -24,7 +25,7 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, validate, fit, demo):
+for _cmd in (props, loads, map_command, validate, fit, demo):
     cli.add_command(_cmd)
 
 

@@ -1,0 +1,105 @@
+"""``propmap map``: the formats, the check, --all, the contour plots, bad input; and a build
+on a dask.distributed LocalCluster (the --scheduler path) giving the local build's values."""
+
+import csv
+import json
+import math
+
+import numpy as np
+import pytest
+
+from propmap.cli.main import main
+from propmap.maps import RotorMap
+
+SMALL = ["--rpm", "3000:9000:5", "--airspeed", "0:15:4", "--incidence-deg", "0:180:7", "--check-points", "60"]
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_map_netcdf_with_sidecar_check_and_plot(capsys, tmp_path):
+    out = tmp_path / "m.nc"
+    code, text, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", out, "--plot", tmp_path / "plots",
+                          "--plot-rpm", "6000")
+    assert code == 0, err
+    assert "interpolation error against the full model at 60 random points" in text
+    side = json.loads((tmp_path / "m.nc.json").read_text())
+    assert side["propeller"] == "apce_8x6" and side["params_label"] == "calibrated:apce_8x6"
+    assert side["dims"] == {"rpm": 5, "airspeed": 4, "incidence_deg": 7} and side["check_points"] == 60
+    assert "UIUC Propeller Data Site" in side["citation"]
+    rm = RotorMap.open(out)
+    np.testing.assert_allclose(rm.dataset["rpm"].values, np.linspace(3000, 9000, 5))
+    assert [p.name for p in (tmp_path / "plots").iterdir()] == ["map_contours_6000rpm.png"]
+    code, text, err = run(capsys, "map", "--check", out, "--check-points", "40", "--json")
+    d = json.loads(text)
+    assert code == 0 and d["recomputed"]["check_points"] == 40 and d["stored"]["check_points"] == 60
+
+
+def test_map_csv_long_form_and_c_header(capsys, tmp_path):
+    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "m.csv", "--format", "csv")
+    assert code == 0, err
+    rows = list(csv.DictReader((tmp_path / "m.csv").open()))
+    assert len(rows) == 5 * 4 * 7 and {"rpm", "airspeed", "incidence_deg", "thrust", "rolling_moment",
+                                       "vortex_ring"} <= set(rows[0])
+    assert rows[0]["vortex_ring"] in ("true", "false")
+    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "m.h", "--format", "c",
+                       "--c-type", "double")
+    header = (tmp_path / "m.h").read_text()
+    assert code == 0 and "static int pm_m_loads(" in header and "static const double pm_m_table[" in header
+    assert json.loads((tmp_path / "m.h.json").read_text())["propeller"] == "apce_8x6"
+
+
+def test_map_all_has_a_prop_dimension(capsys, tmp_path):
+    out = tmp_path / "all.nc"
+    code, _, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL, "--out", out)
+    assert code == 0, err
+    small, large = RotorMap.open(out, prop="apce_8x6"), RotorMap.open(out, prop="apce_10x7")
+    assert large.loads(700.0, 5.0, 1.0).thrust > 1.5 * small.loads(700.0, 5.0, 1.0).thrust
+    with pytest.raises(ValueError, match="give prop="):
+        RotorMap.open(out)
+
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["map", "apce_8x6", "--out", "m.nc", "--rpm", "3000:9000"], "start:stop:count"),
+        (["map", "apce_8x6", "--out", "m.nc", "--rpm", "9000:3000:5"], "start < stop"),
+        (["map", "apce_8x6", "--out", "m.nc", "--rpm", "0:3000:5:log"], "--rpm"),
+        (["map", "apce_8x6", "--out", "m.nc", "--incidence-deg", "0:200:5"], "--incidence-deg"),
+        (["map", "apce_8x6", "--out", "m.nc", "--airspeed", "0:25:1"], "count"),
+        (["map", "apce_8x6", "--out", "m.csv"], "*.nc"),
+        (["map", "apce_8x6"], "--out"),
+        (["map", "--out", "m.nc"], "PROP"),
+        (["map", "apce_8x6", "--all", "--out", "m.nc"], "not both"),
+        (["map", "apce_8x6", "--out", "m.nc", "--c-type", "double"], "--format c"),
+        (["map", "--check", "nosuch.nc"], "--check"),
+        (["map", "--check", "m.nc", "--out", "x.nc"], "--check takes a map file only"),
+        (["map", "apce_8x6", "--out", "m.nc", "--rpm", "1:954929:2000", "--airspeed", "0:25:2000"], "at most"),
+    ],
+)
+def test_map_bad_input_exits_2_before_any_work(capsys, tmp_path, monkeypatch, argv, match):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, *argv)
+    assert code == 2 and match in err and err.count("\n") == 1, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_build_on_a_local_dask_cluster_equals_the_local_build():
+    from distributed import Client, LocalCluster
+
+    import propmap as pm
+    from propmap.maps import build_map
+
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.CamberedParams()
+    axes = (np.array([400.0, 700.0, 1000.0]), np.array([0.0, 10.0]), np.radians([0.0, 60.0, 120.0]))
+    local = build_map(prop, params, *axes, n_check=0, chunk_points=5)
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            Client(cluster) as client:
+        remote = build_map(prop, params, *axes, n_check=0, chunk_points=5, scheduler=client)
+    for k in ("thrust", "drag", "torque", "rolling_moment", "vortex_ring"):
+        np.testing.assert_allclose(remote[k].values, local[k].values, rtol=1e-12, atol=1e-15)
+    assert math.isclose(float(remote["thrust"].values[1, 1, 1]), float(local["thrust"].values[1, 1, 1]), rel_tol=1e-12)
