@@ -12,6 +12,7 @@ import click
 
 from .. import __version__
 from .demo import demo
+from .export_sim import export_sim_command
 from .fit import fit
 from .loads import loads
 from .map import map_command
@@ -25,7 +26,7 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, map_command, validate, fit, demo):
+for _cmd in (props, loads, map_command, export_sim_command, validate, fit, demo):
     cli.add_command(_cmd)
 
 

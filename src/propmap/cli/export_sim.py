@@ -1,0 +1,96 @@
+"""``propmap export-sim``: coefficients of simulators' simple rotor models, fitted to propmap."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+
+from ._common import PARAMS_HELP, InputError, check_outputs, echo_json, load_params, load_prop, with_prop_options
+
+SUFFIX = {"rotorpy": ".py", "gazebo": ".sdf", "gill2019": ".json"}
+KEYS = {"rpm": "rpm", "airspeed": "airspeed", "incidence_deg": "incidence_deg", "incidence-deg": "incidence_deg"}
+
+
+def parse_envelope(text: str, propeller):
+    """``rpm=A:B,airspeed=A:B,incidence_deg=A:B`` (any subset; the rest default).
+
+    Raises
+    ------
+    InputError
+        Not that form, unknown names, or ranges outside the model's.
+    """
+    from dataclasses import replace
+
+    from ..simexport import default_envelope
+
+    env = default_envelope(propeller)
+    if not text:
+        return env
+    changes = {}
+    for part in text.split(","):
+        if not part.strip():
+            continue
+        name, _, rng = part.partition("=")
+        key = KEYS.get(name.strip().lower())
+        if key is None or rng.count(":") != 1:
+            raise InputError(f"--envelope: {part.strip()!r} is not NAME=LOW:HIGH with NAME rpm, airspeed or "
+                             "incidence_deg")
+        try:
+            lo, hi = (float(x) for x in rng.split(":"))
+        except ValueError:
+            raise InputError(f"--envelope: {part.strip()!r}: LOW and HIGH must be numbers") from None
+        changes[key] = (lo, hi)
+    try:
+        return replace(env, **changes)
+    except ValueError as exc:
+        raise InputError(f"--envelope: {exc}") from None
+
+
+@click.command("export-sim")
+@click.argument("prop")
+@click.option("--target", type=click.Choice(["rotorpy", "gazebo", "gill2019"]), required=True,
+              help="rotorpy (quad_params rotor keys), gazebo (PX4 gazebo_motor_model SDF elements) or gill2019 "
+                   "(multinomial in mu and lambda_c, JSON).")
+@click.option("--out", type=click.Path(path_type=Path), required=True,
+              help="Coefficient file (.py, .sdf or .json by target); a JSON report OUT.json beside it.")
+@click.option("--envelope", default="",
+              help="Fit envelope rpm=A:B,airspeed=A:B,incidence_deg=A:B (default: tip speeds 50-150 m/s, "
+                   "0-15 m/s, 0-180 deg).")
+@click.option("--points", "n_points", type=int, default=4000, show_default=True,
+              help="Random operating points in the envelope.")
+@click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
+@with_prop_options
+def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_json, diameter_in, blades):
+    """Fit a simulator's simple rotor model to propmap and report what it costs.
+
+    The coefficients are fitted by least squares to the full model over the envelope, and
+    each load's error against the full model is reported (docs/simulators.md).
+    """
+    from ..simexport import export_sim, write_export
+
+    if out.suffix.lower() != SUFFIX[target]:
+        raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
+    if not 20 <= n_points <= 1_000_000:
+        raise InputError(f"--points must be in [20, 1000000], got {n_points}")
+    check_outputs([("--out", out), ("--out (report)", out.with_name(out.name + ".json"))], [params_spec, prop])
+    propeller = load_prop(prop, diameter_in, blades)
+    params, air, label = load_params(params_spec, prop)
+    env = parse_envelope(envelope, propeller)
+    res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
+    files = write_export(res, out)
+    if as_json:
+        echo_json({"target": target, "coefficients": res.coefficients,
+                   "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
+                                  if isinstance(v, dict) else v) for k, v in res.errors.items()}})
+    else:
+        click.echo(f"{target} coefficients of {propeller.name} ({label}):")
+        for k, v in res.coefficients.items():
+            click.echo(f"  {k} = {v}")
+        from ..simexport import error_lines
+
+        for line in error_lines(res):
+            click.echo(line[1:])  # the empty comment's space
+    click.echo("wrote " + ", ".join(str(f) for f in files), err=True)

@@ -1,0 +1,346 @@
+"""Simulator coefficients: the simple rotor models of common simulators fitted to propmap.
+
+Each target is a closed-form rotor model that a simulator evaluates; its coefficients are
+fitted by linear least squares to the full model (propmap's BET/BEMT) over an envelope of
+operating points, and its error against the full model over that envelope is reported, so
+that a user sees what the simple model costs. Notation: Omega [rad/s], V [m/s], incidence
+beta, V_ip = V sin(beta) (in-plane), V_z = V cos(beta) (axial, positive in climb), R the tip
+radius. Sources of the model forms:
+
+* ``rotorpy`` -- RotorPy (Folk et al., "RotorPy: a Python-based multirotor simulator with
+  aerodynamics", 2023; its multirotor model): T = k_eta Omega^2 + k_h V_ip^2 - k_z Omega
+  V_z, rotor drag D = k_d Omega V_ip, yaw moment Q = k_m Omega^2, flapping moment
+  -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
+  flapping blades); propmap's rigid-blade, azimuth-uniform-inflow model has none about
+  that axis (docs/conventions.md), so k_flap = 0, and propmap's rolling moment M_R (about
+  e_ip) has no RotorPy term: its error is reported.
+* ``gazebo`` -- the PX4 SITL Gazebo motor model (gazebo_motor_model plugin):
+  T = motorConstant Omega^2 max(0, 1 - |V_z| / 25 m/s) (the plugin's fixed axial scaling),
+  Q = momentConstant T, D = rotorDragCoefficient Omega V_ip, rolling moment
+  M_R = rollingMomentCoefficient Omega V_ip, as the vector -spin M_R e_ip as in propmap.
+* ``gill2019`` -- a multinomial in the rotorcraft advance ratio mu = V_ip / (Omega R) and
+  inflow ratio lambda_c = V_z / (Omega R), the form of Gill & D'Andrea, "Computationally
+  efficient force and moment models for propellers in UAV forward flight applications",
+  Drones 3(4) 77, 2019 (a Taylor expansion of a BEMT model). Coefficients in the
+  rotorcraft normalisation X = rho pi R^2 (Omega R)^2 C_X (R C_X for moments). The term set
+  is propmap's choice from the symmetry of the azimuth-averaged model (not the paper's
+  list, which this repository does not carry): C_T and C_Q even in mu,
+  {1, lambda, lambda^2, mu^2, lambda^3, lambda mu^2}; C_H and C_R odd in mu,
+  mu {1, lambda, lambda^2, mu^2}.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import __version__
+from .core.airfoil import Air
+from .core.solver import rotor_loads
+
+__all__ = ["Envelope", "SimExport", "TARGETS", "default_envelope", "error_lines", "export_sim", "predict",
+           "write_export"]
+
+TARGETS = ("rotorpy", "gazebo", "gill2019")
+GAZEBO_AXIAL_SPEED = 25.0  # [m/s] the PX4 Gazebo motor model's fixed thrust fade with axial speed
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """Operating points to fit over: uniform in rpm, airspeed and incidence.
+
+    Attributes
+    ----------
+    rpm : (float, float)
+        [rpm]
+    airspeed : (float, float)
+        [m/s]
+    incidence_deg : (float, float)
+        [deg], within [0, 180].
+    """
+
+    rpm: tuple
+    airspeed: tuple = (0.0, 25.0)
+    incidence_deg: tuple = (0.0, 180.0)
+
+    def __post_init__(self) -> None:
+        for name, (lo, hi), (a, b) in (("rpm", self.rpm, (1.0, 954929.0)), ("airspeed", self.airspeed, (0.0, 500.0)),
+                                       ("incidence_deg", self.incidence_deg, (0.0, 180.0))):
+            if not (math.isfinite(lo) and math.isfinite(hi) and a <= lo < hi <= b):
+                raise ValueError(f"envelope {name} must satisfy {a:g} <= low < high <= {b:g}, got {lo!r}, {hi!r}")
+
+
+@dataclass
+class SimExport:
+    """Fitted coefficients of one target and their error against the full model.
+
+    Attributes
+    ----------
+    target : str
+    coefficients : dict
+        Name -> value in SI units (as the target's file writes them).
+    errors : dict
+        Per load (thrust, drag, torque, rolling_moment): rms and max of |simple - full|,
+        normalised per point by the static thrust or torque at its Omega (T, Q) or the
+        largest |D| or |M_R| of the envelope's points (D, M_R); over the points outside
+        vortex ring and multiple roots, and apart over those inside.
+    envelope : Envelope
+    n_points : int
+    meta : dict
+        Propeller, parameters, model, propmap version.
+    """
+
+    target: str
+    coefficients: dict
+    errors: dict
+    envelope: Envelope
+    n_points: int
+    meta: dict = field(default_factory=dict)
+
+
+def default_envelope(propeller) -> Envelope:
+    """A multirotor's envelope for ``propeller``: rpm from a third of the rpm of a 150 m/s
+    tip speed to it (tip speeds 50-150 m/s), V 0-15 m/s, incidence 0-180 deg (advance
+    ratios J up to about 1)."""
+    from .maps import default_axes
+
+    rpm, _, _ = default_axes(propeller)
+    return Envelope(rpm=(float(rpm[-1]) / 3, float(rpm[-1])), airspeed=(0.0, 15.0))
+
+
+def _samples(propeller, params, air, envelope: Envelope, n: int, seed: int):
+    rng = np.random.default_rng(seed)
+    om = rng.uniform(*envelope.rpm, n) * math.pi / 30
+    V = rng.uniform(*envelope.airspeed, n)
+    b = np.radians(rng.uniform(*envelope.incidence_deg, n))
+    full = rotor_loads(propeller, params, om, V, b, air=air, on_failure="flag")
+    static = rotor_loads(propeller, params, om, 0.0, 0.0, air=air)
+    ok = full.converged
+    flagged = full.vortex_ring | full.multiple_roots
+    return {"omega": om[ok], "V": V[ok], "beta": b[ok], "flagged": flagged[ok],
+            "thrust": full.thrust[ok], "drag": full.drag[ok], "torque": full.torque[ok],
+            "rolling_moment": full.rolling_moment[ok], "T0": static.thrust[ok], "Q0": static.torque[ok]}
+
+
+def _lstsq(columns, y):
+    A = np.column_stack(columns)
+    scale = np.max(np.abs(A), axis=0)
+    scale[scale == 0] = 1.0
+    x, *_ = np.linalg.lstsq(A / scale, y, rcond=None)
+    return x / scale
+
+
+def _mu_lambda(s, R):
+    tip = s["omega"] * R
+    return s["V"] * np.sin(s["beta"]) / tip, s["V"] * np.cos(s["beta"]) / tip
+
+
+def _fit(target: str, s, R: float, rho: float) -> dict:
+    om, V, b = s["omega"], s["V"], s["beta"]
+    Vip, Vz = V * np.sin(b), V * np.cos(b)
+    # each load is fitted relative to its scale at the point (static value at that Omega), so
+    # that low and high rpm count alike: divide both sides by the scale
+    wT, wQ = 1 / s["T0"], 1 / s["Q0"]
+    wD = 1 / max(float(np.max(np.abs(s["drag"]))), 1e-300)
+    wR = 1 / max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300)
+    if target == "rotorpy":
+        k_eta, k_h, k_z = _lstsq([om**2 * wT, Vip**2 * wT, -om * Vz * wT], s["thrust"] * wT)
+        (k_d,) = _lstsq([om * Vip * wD], s["drag"] * wD)
+        (k_m,) = _lstsq([om**2 * wQ], s["torque"] * wQ)
+        return {"k_eta": k_eta, "k_m": k_m, "k_d": k_d, "k_z": k_z, "k_h": k_h, "k_flap": 0.0, "rotor_radius": R}
+    if target == "gazebo":
+        fade = np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
+        (kT,) = _lstsq([om**2 * fade * wT], s["thrust"] * wT)
+        T_g = kT * om**2 * fade
+        (kQ,) = _lstsq([T_g * wQ], s["torque"] * wQ)
+        (kD,) = _lstsq([om * Vip * wD], s["drag"] * wD)
+        (kR,) = _lstsq([om * Vip * wR], s["rolling_moment"] * wR)
+        return {"motorConstant": kT, "momentConstant": kQ, "rotorDragCoefficient": kD,
+                "rollingMomentCoefficient": kR}
+    if target == "gill2019":
+        mu, lam = _mu_lambda(s, R)
+        q = rho * math.pi * R**2 * (om * R) ** 2  # force scale; moments add R
+        even = [np.ones_like(mu), lam, lam**2, mu**2, lam**3, lam * mu**2]
+        odd = [mu, mu * lam, mu * lam**2, mu**3]
+        out = {"R": R, "rho": rho}
+        for key, terms, y, w, moment in (("CT", even, s["thrust"], wT, False), ("CH", odd, s["drag"], wD, False),
+                                         ("CQ", even, s["torque"], wQ, True), ("CR", odd, s["rolling_moment"], wR, True)):
+            scale = q * (R if moment else 1.0)
+            c = _lstsq([t * scale * w for t in terms], y * w)
+            out[key] = [float(v) for v in c]
+        return out
+    raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
+
+
+def predict(target: str, coefficients: dict, omega, airspeed, incidence):
+    """The simple model's (T, D, Q, M_R) [N, N, N m, N m] at Omega [rad/s], V [m/s], beta [rad].
+
+    The formulas are those of the module docstring (what the target simulator evaluates).
+
+    Raises
+    ------
+    ValueError
+        Unknown target.
+    """
+    om, V, b = (np.asarray(x, float) for x in (omega, airspeed, incidence))
+    Vip, Vz = V * np.sin(b), V * np.cos(b)
+    c = coefficients
+    if target == "rotorpy":
+        T = c["k_eta"] * om**2 + c["k_h"] * Vip**2 - c["k_z"] * om * Vz
+        return T, c["k_d"] * om * Vip, c["k_m"] * om**2, 0.0 * om
+    if target == "gazebo":
+        T = c["motorConstant"] * om**2 * np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
+        return (T, c["rotorDragCoefficient"] * om * Vip, c["momentConstant"] * T,
+                c["rollingMomentCoefficient"] * om * Vip)
+    if target == "gill2019":
+        R, rho = c["R"], c["rho"]
+        mu, lam = Vip / (om * R), Vz / (om * R)
+        q = rho * math.pi * R**2 * (om * R) ** 2
+        even = [np.ones_like(mu), lam, lam**2, mu**2, lam**3, lam * mu**2]
+        odd = [mu, mu * lam, mu * lam**2, mu**3]
+
+        def poly(coef, terms):
+            return sum(k * t for k, t in zip(coef, terms))
+
+        return (q * poly(c["CT"], even), q * poly(c["CH"], odd), q * R * poly(c["CQ"], even),
+                q * R * poly(c["CR"], odd))
+    raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
+
+
+def _errors(target: str, coefficients: dict, s) -> dict:
+    T, D, Q, MR = predict(target, coefficients, s["omega"], s["V"], s["beta"])
+    norm = {"thrust": np.abs(s["T0"]), "torque": np.abs(s["Q0"]),
+            "drag": np.full_like(T, max(float(np.max(np.abs(s["drag"]))), 1e-300)),
+            "rolling_moment": np.full_like(T, max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300))}
+    out = {}
+    for k, pred in (("thrust", T), ("drag", D), ("torque", Q), ("rolling_moment", MR)):
+        e = np.abs(pred - s[k]) / norm[k]
+        ok, bad = e[~s["flagged"]], e[s["flagged"]]
+        out[k] = {"rms": float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan,
+                  "max": float(np.max(ok)) if ok.size else math.nan,
+                  "max_flagged": float(np.max(bad)) if bad.size else math.nan}
+    out["normalisation"] = ("T by the static thrust and Q by the static torque at each point's Omega; D and M_R by "
+                            "the largest |D|, |M_R| over the envelope; 'flagged': points in vortex ring or with "
+                            "multiple roots")
+    out["points_flagged"] = int(np.sum(s["flagged"]))
+    return out
+
+
+def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: Envelope | None = None,
+               n_points: int = 4000, seed: int = 0, params_label: str = "") -> SimExport:
+    """Fit ``target``'s coefficients to the full model over ``envelope`` and measure its error.
+
+    Parameters
+    ----------
+    target : {"rotorpy", "gazebo", "gill2019"}
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    air : Air
+    envelope : Envelope, optional
+        Default: :func:`default_envelope`.
+    n_points : int
+        Random operating points in the envelope (seeded), >= 20.
+    seed : int
+    params_label : str
+        Recorded in the result.
+
+    Returns
+    -------
+    SimExport
+
+    Raises
+    ------
+    ValueError
+        Unknown target, ``n_points`` < 20, an envelope outside the model's range.
+    """
+    if target not in TARGETS:
+        raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
+    if int(n_points) < 20:
+        raise ValueError(f"n_points must be >= 20, got {n_points!r}")
+    if envelope is None:
+        envelope = default_envelope(propeller)
+    s = _samples(propeller, params, air, envelope, int(n_points), seed)
+    coefficients = {k: (float(v) if not isinstance(v, list) else v)
+                    for k, v in _fit(target, s, propeller.radius, air.rho).items()}
+    meta = {"propeller": propeller.name, "params": params_label or params.section_model,
+            "section_model": params.section_model, "propmap_version": __version__,
+            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": seed}
+    return SimExport(target, coefficients, _errors(target, coefficients, s), envelope, int(s["omega"].size), meta)
+
+
+def error_lines(res: SimExport, comment: str = "") -> list[str]:
+    """The error table as text lines, each starting with ``comment`` (and a space)."""
+    e = res.errors
+    lines = [f"{comment} error against the full model over the envelope (rpm {res.envelope.rpm[0]:g}-"
+             f"{res.envelope.rpm[1]:g}, V {res.envelope.airspeed[0]:g}-{res.envelope.airspeed[1]:g} m/s, "
+             f"incidence {res.envelope.incidence_deg[0]:g}-{res.envelope.incidence_deg[1]:g} deg; "
+             f"{res.n_points} points, {e['points_flagged']} flagged):"]
+    for k in ("thrust", "drag", "torque", "rolling_moment"):
+        lines.append(f"{comment}   {k:<15} rms {e[k]['rms']:7.2%}  max {e[k]['max']:7.2%}  "
+                     f"(max in flagged regions {e[k]['max_flagged']:.2%})")
+    lines.append(f"{comment} normalised: {e['normalisation']}")
+    return lines
+
+
+def write_export(res: SimExport, path) -> list[Path]:
+    """Write the coefficients in the target's own format (atomically), and a JSON report
+    ``<path>.json`` with the coefficients, the envelope and the errors.
+
+    rotorpy: a Python file defining ``rotor_params`` (keys of RotorPy's ``quad_params``);
+    gazebo: an SDF fragment of the gazebo_motor_model plugin's coefficient elements;
+    gill2019: JSON.
+
+    Raises
+    ------
+    OSError
+        The files cannot be written.
+    """
+    from .io.atomic import atomic_write
+
+    path = Path(path)
+    head = (f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
+            f"({res.meta.get('params')}), fitted to the full model")
+    if res.target == "rotorpy":
+        c = res.coefficients
+        lines = [f"# {head}", *error_lines(res, "#"),
+                 "# Merge into RotorPy's quad_params. k_flap = 0: the rigid-blade model has no moment about",
+                 "# z x e_ip; its rolling moment about e_ip has no RotorPy term (its error above).",
+                 "rotor_params = {",
+                 f"    'k_eta': {c['k_eta']!r},  # thrust coefficient N/(rad/s)**2",
+                 f"    'k_m': {c['k_m']!r},  # yaw moment coefficient Nm/(rad/s)**2",
+                 f"    'k_d': {c['k_d']!r},  # rotor drag coefficient N/(rad*m/s**2) = kg/rad",
+                 f"    'k_z': {c['k_z']!r},  # induced inflow coefficient N/(rad*m/s**2) = kg/rad",
+                 f"    'k_h': {c['k_h']!r},  # translational lift coefficient N/(m/s)**2",
+                 f"    'k_flap': {c['k_flap']!r},  # flapping moment coefficient Nm/(rad*m/s**2)",
+                 f"    'rotor_radius': {c['rotor_radius']!r},  # m",
+                 "}"]
+        text = "\n".join(lines) + "\n"
+    elif res.target == "gazebo":
+        c = res.coefficients
+        lines = ["<!--", f"  {head}", *(" " + ln for ln in error_lines(res, "")),
+                 "  Thrust fades with axial speed as 1 - |V_z| / 25 m/s in the plugin (not a parameter).",
+                 "  Paste these elements into each rotor's gazebo_motor_model plugin.", "-->",
+                 f"<motorConstant>{c['motorConstant']!r}</motorConstant>",
+                 f"<momentConstant>{c['momentConstant']!r}</momentConstant>",
+                 f"<rotorDragCoefficient>{c['rotorDragCoefficient']!r}</rotorDragCoefficient>",
+                 f"<rollingMomentCoefficient>{c['rollingMomentCoefficient']!r}</rollingMomentCoefficient>"]
+        text = "\n".join(lines) + "\n"
+    else:
+        text = json.dumps({"model": "multinomial in mu = V sin(beta)/(Omega R), lambda_c = V cos(beta)/(Omega R)",
+                           "terms_even": ["1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2"],
+                           "terms_odd": ["mu", "mu lambda", "mu lambda^2", "mu^3"],
+                           "normalisation": "T, H = rho pi R^2 (Omega R)^2 C; Q, M_R = rho pi R^3 (Omega R)^2 C",
+                           **res.coefficients}, indent=2) + "\n"
+    with atomic_write(path) as fh:
+        fh.write(text)
+    report = path.with_name(path.name + ".json")
+    with atomic_write(report) as fh:
+        json.dump({"target": res.target, "coefficients": res.coefficients, "errors": res.errors,
+                   "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
+                                "incidence_deg": list(res.envelope.incidence_deg)},
+                   "n_points": res.n_points, **res.meta}, fh, indent=2, allow_nan=True)
+    return [path, report]

@@ -1,0 +1,106 @@
+"""export-sim: the written coefficients reproduce the error they state (round trip through
+each target's file), the fits reduce to the hover model in hover, bad input is refused."""
+
+import ast
+import json
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.simexport import Envelope, _errors, _samples, export_sim, predict, write_export
+
+
+@pytest.fixture(scope="module")
+def model():
+    prop = pm.load_propeller("apce_8x6")
+    params, air, label = pm.default_params("apce_8x6")
+    return prop, params, air, label
+
+
+def _read(target, path):
+    text = path.read_text()
+    if target == "rotorpy":
+        tree = ast.parse(text)
+        return ast.literal_eval(next(n.value for n in tree.body if isinstance(n, ast.Assign)))
+    if target == "gazebo":
+        root = ET.fromstring(f"<plugin>{text}</plugin>")
+        return {child.tag: float(child.text) for child in root}
+    return json.loads(text)
+
+
+@pytest.mark.parametrize("target", ["rotorpy", "gazebo", "gill2019"])
+def test_written_coefficients_reproduce_their_stated_error(tmp_path, model, target):
+    prop, params, air, label = model
+    env = Envelope(rpm=(4000.0, 9000.0), airspeed=(0.0, 12.0), incidence_deg=(0.0, 120.0))
+    res = export_sim(target, prop, params, air=air, envelope=env, n_points=600, seed=3, params_label=label)
+    files = write_export(res, tmp_path / {"rotorpy": "c.py", "gazebo": "c.sdf", "gill2019": "c.json"}[target])
+    coefficients = _read(target, files[0])
+    report = json.loads(files[1].read_text())
+    assert report["target"] == target and report["propeller"] == "apce_8x6" and report["n_points"] == res.n_points
+    samples = _samples(prop, params, air, env, 600, 3)
+    again = _errors(target, coefficients, samples)
+    for k in ("thrust", "drag", "torque", "rolling_moment"):
+        for stat in ("rms", "max"):
+            assert again[k][stat] == pytest.approx(report["errors"][k][stat], rel=1e-9, abs=1e-15)
+    if target == "rotorpy":
+        assert coefficients["k_flap"] == 0.0 and report["errors"]["rolling_moment"]["max"] > 0.5  # not representable
+    if target == "gazebo":  # the rolling moment is representable: a small error
+        assert report["errors"]["rolling_moment"]["rms"] < 0.1
+
+
+def test_fits_reduce_to_the_hover_model_in_hover(model):
+    prop, params, air, _ = model
+    hover = pm.HoverModel.from_model(prop, params, 800.0, air=air)
+    env = Envelope(rpm=(4000.0, 9000.0), airspeed=(0.0, 1e-3))
+    rp = export_sim("rotorpy", prop, params, air=air, envelope=env, n_points=200)
+    gz = export_sim("gazebo", prop, params, air=air, envelope=env, n_points=200)
+    # static thrust is not exactly k Omega^2 over 4000-9000 rpm (Reynolds effects): within 3%
+    assert rp.coefficients["k_eta"] == pytest.approx(hover.k_T, rel=0.03)
+    assert gz.coefficients["motorConstant"] == pytest.approx(hover.k_T, rel=0.03)
+    assert rp.coefficients["k_m"] == pytest.approx(hover.k_Q, rel=0.03)
+    assert rp.errors["thrust"]["max"] < 0.03 and rp.errors["torque"]["max"] < 0.03
+
+
+def test_gill2019_multinomial_evaluates_like_its_definition(model):
+    prop, params, air, _ = model
+    res = export_sim("gill2019", prop, params, air=air, n_points=300)
+    c = res.coefficients
+    om, V, b = 900.0, 8.0, math.radians(70)
+    R = prop.radius
+    mu, lam = V * math.sin(b) / (om * R), V * math.cos(b) / (om * R)
+    CT = sum(k * t for k, t in zip(c["CT"], [1, lam, lam**2, mu**2, lam**3, lam * mu**2]))
+    T, D, Q, MR = predict("gill2019", c, om, V, b)
+    assert float(T) == pytest.approx(air.rho * math.pi * R**2 * (om * R) ** 2 * CT, rel=1e-12)
+    assert float(predict("gill2019", c, om, V, 0.0)[1]) == 0.0  # D odd in mu: 0 in axial flow
+
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["export-sim", "apce_8x6", "--target", "gazebo", "--out", "c.py"], "*.sdf"),
+        (["export-sim", "apce_8x6", "--target", "rotorpy", "--out", "c.py", "--envelope", "rpm=9000:3000"], "low < high"),
+        (["export-sim", "apce_8x6", "--target", "rotorpy", "--out", "c.py", "--envelope", "speed=0:3"], "NAME=LOW:HIGH"),
+        (["export-sim", "apce_8x6", "--target", "rotorpy", "--out", "c.py", "--points", "5"], "--points"),
+        (["export-sim", "apce_8x6", "--target", "x", "--out", "c.py"], "--target"),
+    ],
+)
+def test_export_sim_bad_input_exits_2(capsys, tmp_path, monkeypatch, argv, match):
+    monkeypatch.chdir(tmp_path)
+    code = main(argv)
+    _, err = capsys.readouterr()
+    assert code == 2 and match in err and err.count("\n") == 1, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):
+    code = main(["export-sim", "apce_8x6", "--target", "gill2019", "--out", str(tmp_path / "g.json"), "--points",
+                 "300", "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    d = json.loads(out)
+    assert set(d["errors"]["thrust"]) >= {"rms", "max"} and len(d["coefficients"]["CT"]) == 6
+    assert np.isfinite(json.loads((tmp_path / "g.json").read_text())["CQ"]).all()
