@@ -28,6 +28,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_solver.py
 	$(BIN)/python benchmarks/bench_fit.py
 	$(BIN)/python benchmarks/bench_everyday.py
+	$(BIN)/python benchmarks/bench_maps.py
 
 clean:
 	$(NUMBA_CACHE) | xargs rm -f

@@ -24,6 +24,7 @@ _EXPORTS = {
     "rotor_wrench": "core.vector", "catalogue": "io.catalogue", "load_propeller": "io.catalogue",
     "read_geometry": "io.readers", "read_params": "io.params_file", "resolve_params": "io.params_file",
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
+    "RotorMap": "maps", "build_map": "maps",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

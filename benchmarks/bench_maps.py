@@ -1,0 +1,162 @@
+"""Rotor-map benchmark: build cost against the solver, lookup speed (Python and C), file
+size, and the interpolation error against grid density.
+
+Run:  .venv/bin/python benchmarks/bench_maps.py [--quick]
+
+Propeller apce_8x6 with its calibrated parameters (UIUC Propeller Data Site vol. 1, APC
+PE0 geometry). Writes benchmarks/results/maps.json atomically and prints it.
+
+* Build: the default map (21 x 26 x 73) and the 21 x 26 x 37 grid of the issue, each
+  timed beside one rotor_loads batch of the same number of points in the same run (ratio);
+  the build includes its error check (2,000 random points, about 10% of the work).
+* Lookups: a batch of 10,000 random points (median of 20), the model on the same points
+  (ratio); one scalar Python call (median of 20,000); the C function, compiled with the
+  system compiler at -O2 (ns per call over 10^6 calls of varying points).
+* Size: the default map's netCDF file (zlib level 4).
+* Density: max and rms interpolation error (T, Q over static values, D over the largest
+  drag) outside flagged cells, on 2,000 fresh points, for grids from coarse to fine.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import propmap as pm
+from propmap.export_c import write_c_header
+from propmap.io.atomic import atomic_write
+from propmap.maps import RotorMap, build_map, check_map, default_axes, write_map
+
+RPM = math.pi / 30
+
+
+def timed(f):
+    t = time.perf_counter()
+    out = f()
+    return time.perf_counter() - t, out
+
+
+def build_vs_solver(prop, params, air, rpm, V, inc):
+    om, b = rpm * RPM, np.radians(inc)
+    n = om.size * V.size * b.size
+    O, VV, B = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))
+    pm.rotor_loads(prop, params, O[:100], VV[:100], B[:100], air=air)
+    t_solver, _ = timed(lambda: pm.rotor_loads(prop, params, O, VV, B, air=air, on_failure="flag"))
+    t_build, ds = timed(lambda: build_map(prop, params, om, V, b, air=air, n_check=2000))
+    t_nocheck, _ = timed(lambda: build_map(prop, params, om, V, b, air=air, n_check=0))
+    return {"grid": [int(om.size), int(V.size), int(b.size)], "points": n, "solver_batch_s": t_solver,
+            "build_s": t_build, "build_without_check_s": t_nocheck, "ratio_build_to_solver": t_build / t_solver,
+            "ratio_build_without_check_to_solver": t_nocheck / t_solver,
+            "build_us_per_point": 1e6 * t_build / n}, ds
+
+
+def lookups(rm: RotorMap, prop, params, air, n=10_000):
+    rng = np.random.default_rng(1)
+    om = rng.uniform(rm.omega[0], rm.omega[-1], n)
+    V = rng.uniform(rm.airspeed[0], rm.airspeed[-1], n)
+    b = rng.uniform(rm.incidence[0], rm.incidence[-1], n)
+    rm.loads(om, V, b)
+    batch = [timed(lambda: rm.loads(om, V, b))[0] for _ in range(20)]
+    t_model, _ = timed(lambda: pm.rotor_loads(prop, params, om, V, b, air=air, on_failure="flag"))
+    rm.loads(800.0, 10.0, 1.0)
+    single = []
+    for i in range(20_000):
+        o, v, x = float(om[i % n]), float(V[i % n]), float(b[i % n])
+        t = time.perf_counter()
+        rm.loads(o, v, x)
+        single.append(time.perf_counter() - t)
+    return {"batch_points": n, "batch_us_per_point_median": 1e6 * float(np.median(batch)) / n,
+            "model_us_per_point": 1e6 * t_model / n, "ratio_model_to_map_batch": t_model / float(np.median(batch)),
+            "single_python_call_us_median": 1e6 * float(np.median(single))}
+
+
+C_BENCH = r"""
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <time.h>
+#include "map.h"
+int main(void)
+{
+    double out[4], acc = 0.0;
+    const int n = 1000000;
+    struct timespec t0, t1;
+    int i;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (i = 0; i < n; i++) {
+        double f = (double)(i % 9973) / 9973.0, g = (double)(i % 7919) / 7919.0, h = (double)(i % 6007) / 6007.0;
+        pm_map_loads(OMIN + f * (OMAX - OMIN), VMAX * g, 3.14159 * h, PM_MAP_CLIP, out);
+        acc += out[0];
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    printf("%.3f %g\n", ((t1.tv_sec - t0.tv_sec) * 1e9 + (t1.tv_nsec - t0.tv_nsec)) / n, acc);
+    return 0;
+}
+"""
+
+
+def c_speed(rm: RotorMap):
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None:
+        return {"c_ns_per_call": None, "note": "no C compiler"}
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        write_c_header(rm, tmp / "map.h")
+        (tmp / "b.c").write_text(C_BENCH.replace("OMIN", repr(float(rm.omega[0]))).replace(
+            "OMAX", repr(float(rm.omega[-1]))).replace("VMAX", repr(float(rm.airspeed[-1]))))
+        subprocess.run([cc, "-std=c99", "-O2", "-o", str(tmp / "b"), str(tmp / "b.c"), "-lm"], check=True)
+        runs = [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
+                for _ in range(5)]
+    return {"c_ns_per_call_median": float(np.median(runs)), "c_ns_per_call_min": min(runs), "compiler": cc}
+
+
+def density(prop, params, air, quick):
+    top = default_axes(prop)[0][-1]
+    grids = [(11, 13, 19), (21, 26, 37), (21, 26, 73), (31, 51, 73)] if not quick else [(11, 13, 19), (21, 26, 37)]
+    out = []
+    for n0, n1, n2 in grids:
+        ds = build_map(prop, params, np.geomspace(top / 6, top, n0) * RPM, np.linspace(0, 25, n1),
+                       np.radians(np.linspace(0, 180, n2)), air=air, n_check=0)
+        c = check_map(ds, 2000, seed=5)
+        out.append({"grid": [n0, n1, n2], "points": n0 * n1 * n2,
+                    **{f"{k}_{s}": c[f"check_{k}_{s}"] for k in ("thrust", "torque", "drag") for s in ("max", "rms")},
+                    "flagged_fraction": c["check_points_flagged"] / c["check_points"]})
+    return out
+
+
+def main() -> None:
+    from bench_solver import cpu_name
+
+    quick = "--quick" in sys.argv
+    prop = pm.load_propeller("apce_8x6")
+    params, air, label = pm.default_params("apce_8x6")
+    rpm, V, inc = default_axes(prop)
+    # warm-up: imports (xarray, dask) and the compiled kernels loaded before anything is timed
+    build_map(prop, params, rpm[:2] * RPM, V[:2], np.radians(inc[:2]), air=air, n_check=20)
+    default_build, ds = build_vs_solver(prop, params, air, rpm, V, inc)
+    issue_build, _ = build_vs_solver(prop, params, air, rpm, V, np.linspace(0, 180, 37))
+    rm = RotorMap(ds)
+    with tempfile.TemporaryDirectory() as tmp:
+        size = write_map(ds, Path(tmp) / "m.nc")[0].stat().st_size
+    res = {"cpu": cpu_name(), "propeller": "apce_8x6", "params": label,
+           "build_default_grid": default_build, "build_21x26x37": issue_build,
+           "lookups": lookups(rm, prop, params, air), "c": c_speed(rm),
+           "default_map_netcdf_bytes": size,
+           "default_map_check": {k: v for k, v in ds.attrs.items() if k.startswith("check_") and k != "check_normalisation"},
+           "density": density(prop, params, air, quick)}
+    out = Path(__file__).parent / "results" / "maps.json"
+    with atomic_write(out) as fh:
+        json.dump(res, fh, indent=2, default=float)
+    print(json.dumps(res, indent=2, default=float))
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(Path(__file__).parent))
+    main()
