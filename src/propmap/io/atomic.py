@@ -43,26 +43,15 @@ def atomic_write(path, mode: str = "w", **kwargs):
         The target; its folder is created if missing.
     mode : {"w", "wb"}
     **kwargs
-        Passed to ``os.fdopen`` (``newline``, ``encoding``).
+        Passed to ``open`` (``newline``, ``encoding``).
 
     Raises
     ------
     OSError
         The folder cannot be created or written, or the rename fails.
     """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    perm = normal_mode(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, mode, **kwargs) as fh:
-            yield fh
-        os.chmod(tmp, perm)
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-        raise
+    with atomic_path(path) as tmp, open(tmp, mode, **kwargs) as fh:
+        yield fh
 
 
 @contextlib.contextmanager
