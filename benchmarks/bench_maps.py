@@ -13,8 +13,10 @@ PE0 geometry). Writes benchmarks/results/maps.json atomically and prints it.
   (ratio); one scalar Python call (median of 20,000); the C function, compiled with the
   system compiler at -O2 (ns per call over 10^6 calls of varying points).
 * Size: the default map's netCDF file (zlib level 4).
+* Lookups with the multilinear interpolation (the C export's), then the cubic (the default).
 * Density: max and rms interpolation error (T, Q over static values, D over the largest
-  drag) outside flagged cells, on 2,000 fresh points, for grids from coarse to fine.
+  drag) outside flagged cells, on 2,000 fresh points, for grids from coarse to fine, for
+  the multilinear and the cubic interpolation.
 """
 
 from __future__ import annotations
@@ -73,7 +75,8 @@ def lookups(rm: RotorMap, prop, params, air, n=10_000):
         t = time.perf_counter()
         rm.loads(o, v, x)
         single.append(time.perf_counter() - t)
-    return {"batch_points": n, "batch_us_per_point_median": 1e6 * float(np.median(batch)) / n,
+    return {"interpolation": rm.interpolation, "batch_points": n,
+            "batch_us_per_point_median": 1e6 * float(np.median(batch)) / n,
             "model_us_per_point": 1e6 * t_model / n, "ratio_model_to_map_batch": t_model / float(np.median(batch)),
             "single_python_call_us_median": 1e6 * float(np.median(single))}
 
@@ -125,9 +128,11 @@ def density(prop, params, air, quick):
         ds = build_map(prop, params, np.geomspace(top / 6, top, n0) * RPM, np.linspace(0, 25, n1),
                        np.radians(np.linspace(0, 180, n2)), air=air, n_check=0)
         c = check_map(ds, 2000, seed=5)
-        out.append({"grid": [n0, n1, n2], "points": n0 * n1 * n2,
-                    **{f"{k}_{s}": c[f"check_{k}_{s}"] for k in ("thrust", "torque", "drag") for s in ("max", "rms")},
-                    "flagged_fraction": c["check_points_flagged"] / c["check_points"]})
+        for method in ("linear", "cubic"):
+            p = f"check_{method}_"
+            out.append({"grid": [n0, n1, n2], "points": n0 * n1 * n2, "interpolation": method,
+                        **{f"{k}_{s}": c[f"{p}{k}_{s}"] for k in ("thrust", "torque", "drag") for s in ("max", "rms")},
+                        "flagged_fraction": c["check_points_flagged"] / c["check_points"]})
     return out
 
 
@@ -142,12 +147,13 @@ def main() -> None:
     build_map(prop, params, rpm[:2] * RPM, V[:2], np.radians(inc[:2]), air=air, n_check=20)
     default_build, ds = build_vs_solver(prop, params, air, rpm, V, inc)
     issue_build, _ = build_vs_solver(prop, params, air, rpm, V, np.linspace(0, 180, 37))
-    rm = RotorMap(ds)
+    rm = RotorMap(ds, "linear")
     with tempfile.TemporaryDirectory() as tmp:
         size = write_map(ds, Path(tmp) / "m.nc")[0].stat().st_size
     res = {"cpu": cpu_name(), "propeller": "apce_8x6", "params": label,
            "build_default_grid": default_build, "build_21x26x37": issue_build,
-           "lookups": lookups(rm, prop, params, air), "c": c_speed(rm),
+           "lookups": lookups(rm, prop, params, air), "lookups_cubic": lookups(RotorMap(ds), prop, params, air),
+           "c": c_speed(rm),
            "default_map_netcdf_bytes": size,
            "default_map_check": {k: v for k, v in ds.attrs.items() if k.startswith("check_") and k != "check_normalisation"},
            "density": density(prop, params, air, quick)}

@@ -49,6 +49,10 @@ def test_map_csv_long_form_and_c_header(capsys, tmp_path):
                        "--c-type", "double")
     header = (tmp_path / "m.h").read_text()
     assert code == 0 and "static int pm_m_loads(" in header and "static const double pm_m_table[" in header
+    assert "; cubic interpolation." in header
+    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "lin.h", "--format", "c",
+                       "--c-interpolation", "linear")
+    assert code == 0 and "; linear interpolation." in (tmp_path / "lin.h").read_text()
     assert json.loads((tmp_path / "m.h.json").read_text())["propeller"] == "apce_8x6"
 
 
@@ -75,6 +79,7 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
         (["map", "--out", "m.nc"], "PROP"),
         (["map", "apce_8x6", "--all", "--out", "m.nc"], "not both"),
         (["map", "apce_8x6", "--out", "m.nc", "--c-type", "double"], "--format c"),
+        (["map", "apce_8x6", "--out", "m.nc", "--c-interpolation", "linear"], "--c-interpolation applies"),
         (["map", "--check", "nosuch.nc"], "--check"),
         (["map", "--check", "m.nc", "--out", "x.nc"], "--check takes a map file only"),
         (["map", "apce_8x6", "--out", "m.nc", "--rpm", "1:954929:2000", "--airspeed", "0:25:2000"], "at most"),

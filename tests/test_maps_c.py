@@ -1,5 +1,6 @@
 """The C export of a map: compiled with the system C compiler and compared with the Python
-evaluator (RotorMap.loads) on random points, inside and outside the grid, for every policy."""
+evaluator (RotorMap.loads) on random points, inside and outside the grid, for every policy
+and both interpolations."""
 
 import math
 import shutil
@@ -52,9 +53,10 @@ def _compile(tmp_path, rm, dtype):
 
 
 @pytest.mark.skipif(CC is None, reason="no C compiler")
+@pytest.mark.parametrize("interpolation", ["cubic", "linear"])
 @pytest.mark.parametrize("dtype, rtol", [("float", 1e-6), ("double", 1e-12)])
-def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, rotor_map, dtype, rtol):
-    rm = rotor_map
+def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, rotor_map, dtype, rtol, interpolation):
+    rm = RotorMap(rotor_map.dataset, interpolation)
     exe = _compile(tmp_path, rm, dtype)
     rng = np.random.default_rng(4)
     n = 400
@@ -78,6 +80,8 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
     inside = (om >= rm.omega[0]) & (om <= rm.omega[-1]) & (V <= rm.airspeed[-1])
     assert np.all(status[m & ~inside] == -1) and np.all(c_out[m & ~inside] == -12345.0)
     assert np.all(status[m & inside] >= 0)
+    header = (tmp_path / "map.h").read_text()
+    assert f"; {interpolation} interpolation." in header and ("_weights(" in header) == (interpolation == "cubic")
 
 
 def test_bad_dtype_and_name_are_refused(tmp_path, rotor_map):

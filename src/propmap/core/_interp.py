@@ -1,11 +1,22 @@
-"""Compiled (numba) multilinear interpolation in a rotor map (maps.RotorMap).
+"""Compiled (numba) interpolation in a rotor map (maps.RotorMap): multilinear or cubic.
 
 The table holds, on a rectilinear grid (Omega, V, beta), the loads divided by the square of
 a reference speed, (Omega R)^2 + V^2: T, D, Q, M_R scale as Omega^2 in hover and as V^2 at
 high advance ratio, so the quotient varies slowly and linear interpolation is far more
 accurate than on the loads themselves (measured: docs/simulators.md); the result is
 multiplied back by the query's (Omega R)^2 + V^2. Each query is located by bisection on
-each axis (the axes need not be uniform) and interpolated from the 8 corners of its cell.
+each axis (the axes need not be uniform) and interpolated from the 8 corners of its cell
+(``order`` 1, multilinear) or from the 4 x 4 x 4 nodes around it (``order`` 3, cubic).
+
+The cubic interpolation is the tensor product of 1-D cubic Hermite interpolation whose
+node slopes are those of the parabola through the node and its two neighbours (the
+three-point derivative on a non-uniform axis; one-sided at the ends). Each 1-D step is a
+fixed linear combination of 4 nodes, so the 3-D result is a weighted sum of 64 nodes; it
+is continuous with a continuous first derivative along each axis, equals the table at the
+nodes and reproduces any polynomial of degree 2 in each axis exactly. This is the
+"Catmull-Rom" spline of computer graphics (Catmull & Rom 1974) written for non-uniform
+spacing (Bessel's slopes, de Boor, A Practical Guide to Splines, 2001, ch. IV). An axis
+of 2 nodes is interpolated linearly.
 
 Out-of-grid policy (``policy``): CLIP (0) moves the query onto the grid's boundary,
 NAN (1) returns NaN; both set ``inside[i] = False``. The raising policy is applied by the
@@ -39,7 +50,47 @@ def _locate(ax, x):
 
 
 @numba.njit(inline="always", **_FLAGS)
-def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, i, inside, flagged):
+def _cubic_weights(ax, x):
+    """(cell index i, weights of the nodes i-1, i, i+1, i+2) of the cubic at x in axis ax.
+
+    A weight whose node lies outside the axis is exactly 0 (the caller skips it).
+    """
+    n = ax.shape[0]
+    i, t = _locate(ax, x)
+    if n == 2:
+        return i, 0.0, 1.0 - t, t, 0.0
+    h = ax[i + 1] - ax[i]
+    t2 = t * t
+    t3 = t2 * t
+    h00 = 2.0 * t3 - 3.0 * t2 + 1.0
+    h01 = 3.0 * t2 - 2.0 * t3
+    h10 = h * (t3 - 2.0 * t2 + t)
+    h11 = h * (t3 - t2)
+    # slope at node i as weights (a0..a3) on the nodes i-1..i+2
+    if i == 0:
+        g0 = ax[1] - ax[0]
+        g1 = ax[2] - ax[1]
+        c = g0 / (g0 + g1)
+        a0, a1, a2, a3 = 0.0, -(1.0 + c) / g0, (1.0 + c) / g0 + c / g1, -c / g1
+    else:
+        gm = ax[i] - ax[i - 1]
+        s = gm + h
+        a0, a1, a2, a3 = -h / (gm * s), (h / gm - gm / h) / s, gm / (h * s), 0.0
+    # slope at node i + 1
+    if i + 1 == n - 1:
+        gm = ax[i] - ax[i - 1]
+        c = h / (gm + h)
+        b0, b1, b2, b3 = c / gm, -(1.0 + c) / h - c / gm, (1.0 + c) / h, 0.0
+    else:
+        gp = ax[i + 2] - ax[i + 1]
+        s = h + gp
+        b0, b1, b2, b3 = 0.0, -gp / (h * s), (gp / h - h / gp) / s, h / (gp * s)
+    return (i, h10 * a0 + h11 * b0, h00 + h10 * a1 + h11 * b1, h01 + h10 * a2 + h11 * b2,
+            h10 * a3 + h11 * b3)
+
+
+@numba.njit(inline="always", **_FLAGS)
+def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, i, inside, flagged):
     nvar = table.shape[3]
     ok = ax0[0] <= q0 <= ax0[-1] and ax1[0] <= q1 <= ax1[-1] and ax2[0] <= q2 <= ax2[-1]
     inside[i] = ok
@@ -52,6 +103,43 @@ def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, i, ins
         q0 = min(max(q0, ax0[0]), ax0[-1])
         q1 = min(max(q1, ax1[0]), ax1[-1])
         q2 = min(max(q2, ax2[0]), ax2[-1])
+    s = q0 * q0 * radius * radius + q1 * q1
+    if order == 3:
+        i0, u0, u1, u2, u3 = _cubic_weights(ax0, q0)
+        i1, v0, v1, v2, v3 = _cubic_weights(ax1, q1)
+        i2, w0, w1, w2, w3 = _cubic_weights(ax2, q2)
+        flagged[i] = (not ok) or cellflag[i0, i1, i2] != 0
+        # nodes outside the axis have weight 0: clamp their index (no branch in the sum)
+        n0 = ax0.shape[0] - 1
+        n1 = ax1.shape[0] - 1
+        n2 = ax2.shape[0] - 1
+        ja = (max(i0 - 1, 0), i0, i0 + 1, min(i0 + 2, n0))
+        jb = (max(i1 - 1, 0), i1, i1 + 1, min(i1 + 2, n1))
+        jc = (max(i2 - 1, 0), i2, i2 + 1, min(i2 + 2, n2))
+        wa = (u0, u1, u2, u3)
+        wb = (v0, v1, v2, v3)
+        wc = (w0, w1, w2, w3)
+        # the table holds 4 variables (T, D, Q, M_R), summed together
+        r0 = 0.0
+        r1 = 0.0
+        r2 = 0.0
+        r3 = 0.0
+        for a in range(4):
+            for b in range(4):
+                wab = wa[a] * wb[b]
+                t = table[ja[a], jb[b]]
+                for c in range(4):
+                    w = wab * wc[c]
+                    row = t[jc[c]]
+                    r0 += w * row[0]
+                    r1 += w * row[1]
+                    r2 += w * row[2]
+                    r3 += w * row[3]
+        out[i, 0] = r0 * s
+        out[i, 1] = r1 * s
+        out[i, 2] = r2 * s
+        out[i, 3] = r3 * s
+        return
     i0, f0 = _locate(ax0, q0)
     i1, f1 = _locate(ax1, q1)
     i2, f2 = _locate(ax2, q2)
@@ -67,7 +155,6 @@ def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, i, ins
     w101 = f0 * g1 * f2
     w110 = f0 * f1 * g2
     w111 = f0 * f1 * f2
-    s = q0 * q0 * radius * radius + q1 * q1
     for k in range(nvar):
         v = (w000 * table[i0, i1, i2, k] + w001 * table[i0, i1, i2 + 1, k]
              + w010 * table[i0, i1 + 1, i2, k] + w011 * table[i0, i1 + 1, i2 + 1, k]
@@ -77,13 +164,16 @@ def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, i, ins
 
 
 @numba.njit(**_FLAGS)
-def interp_batch(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, inside, flagged):
-    """Interpolate every query (q0[i], q1[i], q2[i]); shapes (n,) in, (n, nvar) out."""
+def interp_batch(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, inside, flagged):
+    """Interpolate every query (q0[i], q1[i], q2[i]); shapes (n,) in, (n, nvar) out.
+
+    ``order`` 1: multilinear, 3: cubic; ``cellflag`` must be the one for that order.
+    """
     for i in range(q0.shape[0]):
-        _one(ax0, ax1, ax2, table, cellflag, radius, q0[i], q1[i], q2[i], policy, out, i, inside, flagged)
+        _one(ax0, ax1, ax2, table, cellflag, radius, q0[i], q1[i], q2[i], policy, order, out, i, inside, flagged)
 
 
 @numba.njit(**_FLAGS)
-def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, inside, flagged):
+def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, inside, flagged):
     """One query (scalars q0, q1, q2) into out[0, :], inside[0], flagged[0]."""
-    _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, out, 0, inside, flagged)
+    _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, 0, inside, flagged)
