@@ -48,11 +48,12 @@ def test_map_csv_long_form_and_c_header(capsys, tmp_path):
     code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "m.h", "--format", "c",
                        "--c-type", "double")
     header = (tmp_path / "m.h").read_text()
-    assert code == 0 and "static int pm_m_loads(" in header and "static const double pm_m_table[" in header
-    assert "; cubic interpolation." in header
-    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "lin.h", "--format", "c",
-                       "--c-interpolation", "linear")
-    assert code == 0 and "; linear interpolation." in (tmp_path / "lin.h").read_text()
+    assert code == 0 and "static inline int pm_m_loads(" in header and "static const double pm_m_table[" in header
+    assert "; linear interpolation." in header
+    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "cub.h", "--format", "c",
+                       "--c-interpolation", "cubic", "--c-name", "rotor_front")
+    header = (tmp_path / "cub.h").read_text()
+    assert code == 0 and "; cubic interpolation." in header and "static inline int rotor_front_loads(" in header
     assert json.loads((tmp_path / "m.h.json").read_text())["propeller"] == "apce_8x6"
 
 
@@ -79,7 +80,10 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
         (["map", "--out", "m.nc"], "PROP"),
         (["map", "apce_8x6", "--all", "--out", "m.nc"], "not both"),
         (["map", "apce_8x6", "--out", "m.nc", "--c-type", "double"], "--format c"),
-        (["map", "apce_8x6", "--out", "m.nc", "--c-interpolation", "linear"], "--c-interpolation applies"),
+        (["map", "apce_8x6", "--out", "m.nc", "--c-interpolation", "cubic"], "--c-interpolation applies"),
+        (["map", "apce_8x6", "--out", "m.nc", "--c-name", "pm_x"], "--c-name applies"),
+        (["map", "apce_8x6", "--out", "carte-\u00e9.h", "--format", "c"], "--out: the C name prefix"),
+        (["map", "apce_8x6", "--out", "m.h", "--format", "c", "--c-name", "9x"], "--c-name: the C name prefix"),
         (["map", "--check", "nosuch.nc"], "--check"),
         (["map", "--check", "m.nc", "--out", "x.nc"], "--check takes a map file only"),
         (["map", "apce_8x6", "--out", "m.nc", "--rpm", "1:954929:2000", "--airspeed", "0:25:2000"], "at most"),

@@ -196,3 +196,31 @@ def test_unknown_interpolation_and_the_flagged_neighbourhood(small_map):
     marked["vortex_ring"].values[0, 0, 0] = True
     cells = RotorMap(marked)._cellflag
     assert cells.sum() == 8 and cells[:2, :2, :2].all()
+
+
+def test_power_under_clip_numpy_scalars_and_bad_maps(small_map):
+    _, _, ds = small_map
+    rm = RotorMap(ds)
+    top = float(rm.omega[-1])
+    edge = rm.loads(top, 5.0, 0.5)
+    for q in (2 * top, math.inf):  # the boundary's power, never extrapolated or infinite
+        clip = rm.loads(q, 5.0, 0.5, out_of_grid="clip")
+        assert clip.power == edge.power and clip.omega == top
+        arr = rm.loads(np.array([q, 0.9 * top]), 5.0, 0.5, out_of_grid="clip")
+        assert arr.power[0] == edge.power
+    # NumPy scalars take the scalar path and give Python floats, like Python floats
+    a, b = rm.loads(np.float64(600.0), 5.0, np.radians(30.0)), rm.loads(600.0, 5.0, math.radians(30.0))
+    assert type(a.thrust) is float and a.thrust == b.thrust
+    with pytest.raises(ValueError, match=r"must broadcast together, got shapes \(2,\), \(3,\), \(\)"):
+        rm.loads(np.ones(2) * 600, np.ones(3), 0.5)
+    for policy in ("raise", "clip"):
+        with pytest.raises(ValueError, match="airspeed must not be NaN"):
+            rm.loads(600.0, math.nan, 0.5, out_of_grid=policy)
+    # a repeated, single or reversed axis is refused, naming it
+    for bad in (ds.isel(rpm=[0, 1, 1, 2]), ds.isel(rpm=[1]), ds.isel(airspeed=slice(None, None, -1))):
+        with pytest.raises(ValueError, match="axis (rpm|airspeed) must hold at least 2 finite, strictly increasing"):
+            RotorMap(bad)
+    # a node without finite loads is flagged like a non-converged one
+    holed = ds.copy(deep=True)
+    holed["thrust"].values[2, 3, 6] = np.nan
+    assert RotorMap(holed).loads(float(rm.omega[2]), float(rm.airspeed[3]), float(rm.incidence[6])).flagged

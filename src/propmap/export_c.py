@@ -9,12 +9,13 @@ out-of-grid policies; no allocation, no global state, only <math.h> (for NAN).
 
 from __future__ import annotations
 
+import hashlib
 import re
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["write_c_header"]
+__all__ = ["c_prefix", "write_c_header"]
 
 _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *
@@ -33,7 +34,7 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *   returns 0 inside an unflagged cell, 1 inside a flagged cell (vortex ring or multiple
  *   roots at a node of the cell or of a neighbour cell: the error bound does not hold),
  *   2 outside the grid (clipped or NaN),
- *   -1 outside with {PREFIX}_ERROR or a NaN argument.
+ *   -1 outside with {PREFIX}_ERROR, a NaN argument or an unknown policy.
  */
 #ifndef {GUARD}
 #define {GUARD}
@@ -61,7 +62,7 @@ static const unsigned char {prefix}_cellflag[{ncell}] = {{
 {cells}
 }};
 
-static int {prefix}_locate(const double *ax, int n, double x, double *frac)
+static inline int {prefix}_locate(const double *ax, int n, double x, double *frac)
 {{
     int lo = 0, hi = n - 1;
     while (hi - lo > 1) {{
@@ -72,10 +73,11 @@ static int {prefix}_locate(const double *ax, int n, double x, double *frac)
     return lo;
 }}
 {weights_fn}
-static int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4])
+static inline int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4])
 {{
     const double *a0 = {prefix}_omega, *a1 = {prefix}_airspeed, *a2 = {prefix}_incidence;
 {decl}    if (omega != omega || airspeed != airspeed || incidence != incidence) return -1;
+    if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]
              && a2[0] <= incidence && incidence <= a2[{n2} - 1];
     if (!inside) {{
@@ -122,7 +124,7 @@ _CUBIC_DECL = """    int inside, status, i0, i1, i2, j0[4], j1[4], j2[4], a, b, 
 
 # the cubic Hermite weights of core/_interp.py (_cubic_weights), nodes i-1 .. i+2 clamped
 _CUBIC_WEIGHTS = """
-static int {prefix}_weights(const double *ax, int n, double x, double w[4], int j[4])
+static inline int {prefix}_weights(const double *ax, int n, double x, double w[4], int j[4])
 {{
     double t, h, t2, t3, h00, h01, h10, h11, g, c, q, da[4] = {{0.0, 0.0, 0.0, 0.0}}, db[4] = {{0.0, 0.0, 0.0, 0.0}};
     int i = {prefix}_locate(ax, n, x, &t), m;
@@ -179,6 +181,21 @@ def _numbers(values, fmt: str, per_line: int = 6) -> str:
     return ",\n".join("    " + ", ".join(items[i:i + per_line]) for i in range(0, len(items), per_line))
 
 
+def c_prefix(path, name: str | None = None) -> str:
+    """The C identifier prefix of a header: ``name``, or ``pm_<file stem>`` (lower case).
+
+    Raises
+    ------
+    ValueError
+        The prefix is not a C identifier (ASCII letters, digits, underscores).
+    """
+    prefix = name or "pm_" + re.sub(r"\W", "_", Path(path).stem).lower()
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", prefix):
+        raise ValueError(f"the C name prefix must be a C identifier (ASCII letters, digits, underscores), "
+                         f"got {prefix!r}")
+    return prefix
+
+
 def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> Path:
     """Write ``rotor_map`` as a self-contained C99 header (atomically).
 
@@ -192,7 +209,9 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
         C type of the table (the axes are always double). float: 4 bytes a value, within
         1e-6 relative of the Python evaluator (tests/test_maps_c.py).
     name : str, optional
-        The C identifier prefix; default from the file name (``pm_<stem>``).
+        The C identifier prefix; default from the file name (``pm_<stem>``). The include
+        guard adds a hash of the table, so two different maps with one prefix collide
+        at compile time instead of silently.
 
     Returns
     -------
@@ -201,7 +220,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     Raises
     ------
     ValueError
-        Unknown ``dtype`` or a name that is not a C identifier.
+        Unknown ``dtype`` or a prefix that is not a C identifier.
     OSError
         The file cannot be written.
     """
@@ -210,9 +229,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     if dtype not in ("float", "double"):
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
     path = Path(path)
-    prefix = name or "pm_" + re.sub(r"\W", "_", path.stem).lower()
-    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", prefix):
-        raise ValueError(f"name must be a C identifier, got {prefix!r}")
+    prefix = c_prefix(path, name)
     rm = rotor_map
     a = rm.attrs
     fmt_axis = ".17g"
@@ -224,6 +241,11 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
                 .replace("{body}", _CUBIC_BODY if cubic else _LINEAR_BODY)
                 .replace("{weights_fn}", _CUBIC_WEIGHTS if cubic else ""))
     check = f"check_{rm.interpolation}_"
+    # the include guard carries a hash of the content: two different maps given the same
+    # prefix then fail to compile (redefinitions) instead of one being skipped silently
+    digest = hashlib.sha256(b"".join(np.ascontiguousarray(x).tobytes() for x in (
+        rm.omega, rm.airspeed, rm.incidence, table, rm._cellflag)) + rm.interpolation.encode()).hexdigest()[:12]
+    guard = f"{prefix.upper()}_H_{digest.upper()}"
     text = template.format(
         name=path.stem, propeller=a.get("propeller", ""), version=a.get("propmap_version", ""),
         model=a.get("model", ""), params_label=a.get("params_label", "") or a.get("section_model", ""),
@@ -232,7 +254,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=float(a.get(check + "thrust_max", np.nan)),
         eQ=float(a.get(check + "torque_max", np.nan)), eD=float(a.get(check + "drag_max", np.nan)),
         interpolation=rm.interpolation,
-        npts=int(a.get("check_points", 0)), prefix=prefix, PREFIX=prefix.upper(), GUARD=prefix.upper() + "_H",
+        npts=int(a.get("check_points", 0)), prefix=prefix, PREFIX=prefix.upper(), GUARD=guard,
         radius=float(rm.radius), ax0=", ".join(format(float(x), fmt_axis) for x in rm.omega),
         ax1=", ".join(format(float(x), fmt_axis) for x in rm.airspeed),
         ax2=", ".join(format(float(x), fmt_axis) for x in rm.incidence), ntab=table.size,

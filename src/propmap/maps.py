@@ -339,7 +339,8 @@ class MapLoads(NamedTuple):
     thrust, drag, torque, rolling_moment : ndarray
         T [N], D [N], Q [N m], M_R [N m] as in :class:`propmap.RotorLoads`.
     omega : ndarray
-        The query's Omega [rad/s].
+        Omega [rad/s] at which the loads hold: the query's, or under ``out_of_grid="clip"``
+        its value clipped to the grid (so ``power`` is the boundary point's).
     inside : ndarray of bool
         The query lies in the grid (else it was clipped to it or set to NaN).
     flagged : ndarray of bool
@@ -421,6 +422,11 @@ class RotorMap:
         if missing:
             raise ValueError(f"not a propmap rotor map: lacks {', '.join(missing)}")
         ds = dataset.transpose("rpm", "airspeed", "incidence_deg")
+        for d in ("rpm", "airspeed", "incidence_deg"):
+            ax = np.asarray(ds[d].values, dtype=float)
+            if ax.ndim != 1 or ax.size < 2 or not np.all(np.isfinite(ax)) or np.any(np.diff(ax) <= 0):
+                raise ValueError(f"axis {d} must hold at least 2 finite, strictly increasing values "
+                                 f"(got {ax.size}: {np.array2string(ax[:4], precision=4)}...)")
         self.dataset = ds
         self.attrs = dict(ds.attrs)
         self.omega = np.ascontiguousarray(ds["rpm"].values, dtype=float) * RPM
@@ -432,7 +438,8 @@ class RotorMap:
         ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
         table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
         self._table = np.ascontiguousarray(table, dtype=float)
-        bad = ~ds["converged"].values.astype(bool)
+        # a node whose loads are not finite is as unreliable as a non-converged one
+        bad = ~ds["converged"].values.astype(bool) | ~np.isfinite(table).all(axis=-1)
         for f in BAD_FLAGS:
             bad |= ds[f].values.astype(bool)
         # a cell is flagged when a node of it or of its neighbour cells is: the loads bend
@@ -496,7 +503,14 @@ class RotorMap:
             if a.dtype.kind not in "fiu":
                 raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
             arrays.append(a.astype(float, copy=False))
-        q = np.broadcast_arrays(*arrays)
+        try:
+            q = np.broadcast_arrays(*arrays)
+        except ValueError:
+            raise ValueError("omega, airspeed and incidence must broadcast together, got shapes "
+                             f"{', '.join(str(a.shape) for a in arrays)}") from None
+        for name, a in zip(("omega", "airspeed", "incidence"), q):
+            if np.isnan(a).any():
+                raise ValueError(f"{name} must not be NaN")
         if out_of_grid == "raise":
             for name, a, ax, unit in (("omega", q[0], self.omega, "rad/s"), ("airspeed", q[1], self.airspeed, "m/s"),
                                       ("incidence", q[2], self.incidence, "rad")):
@@ -506,10 +520,6 @@ class RotorMap:
                     v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
                     raise ValueError(f"{name} = {v!r} is outside the map's grid [{ax[0]:g}, {ax[-1]:g}] {unit} "
                                      "(out_of_grid='clip' or 'nan' to flag instead)")
-        else:
-            for name, a in zip(("omega", "airspeed", "incidence"), q):
-                if np.isnan(a).any():
-                    raise ValueError(f"{name} must not be NaN")
         return q
 
     def loads(self, omega, airspeed, incidence, *, out_of_grid: str = "raise") -> MapLoads:
@@ -539,7 +549,7 @@ class RotorMap:
         if out_of_grid not in POLICIES:
             raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
         policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
-        if type(omega) is float and type(airspeed) is float and type(incidence) is float:
+        if isinstance(omega, float) and isinstance(airspeed, float) and isinstance(incidence, float):
             # the scalar fast path (a simulator's call): no arrays built, no broadcasting
             o0, o1, v0, v1, b0, b1 = self._box
             inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
@@ -549,6 +559,9 @@ class RotorMap:
                                      self.radius, omega, airspeed, incidence, policy, self._order, self._out1,
                                      self._in1, self._fl1)
                 t, d, q, m = self._out1[0].tolist()
+                omega = float(omega)
+                if not inside and out_of_grid == "clip":
+                    omega = min(max(omega, o0), o1)
                 return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
         q = self._queries(omega, airspeed, incidence, out_of_grid)
         shape = q[0].shape
@@ -559,7 +572,8 @@ class RotorMap:
         flagged = np.empty(n, dtype=np.bool_)
         _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius,
                              *flat, policy, self._order, out, inside, flagged)
-        return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=q[0],
+        om = np.clip(q[0], self.omega[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
+        return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=om,
                         inside=inside.reshape(shape), flagged=flagged.reshape(shape))
 
     def wrench(self, velocity, axis, omega, spin="ccw", *, out_of_grid: str = "raise") -> MapWrench:

@@ -16,8 +16,12 @@ radius. Sources of the model forms:
   e_ip) has no RotorPy term: its error is reported.
 * ``gazebo`` -- the PX4 SITL Gazebo motor model (gazebo_motor_model plugin):
   T = motorConstant Omega^2 max(0, 1 - |V_z| / 25 m/s) (the plugin's fixed axial scaling),
-  Q = momentConstant T, D = rotorDragCoefficient Omega V_ip, rolling moment
-  M_R = rollingMomentCoefficient Omega V_ip, as the vector -spin M_R e_ip as in propmap.
+  Q = momentConstant motorConstant Omega^2 (the plugin multiplies momentConstant by the
+  thrust before the axial fade), D = rotorDragCoefficient Omega V_ip, rolling moment
+  M_R = rollingMomentCoefficient Omega V_ip. The plugin applies the rolling moment as
+  -|Omega| rollingMomentCoefficient V_perp whatever the turning direction (some forks
+  multiply it by the direction): that is propmap's -spin M_R e_ip for a ccw rotor and the
+  opposite sign for a cw one.
 * ``gill2019`` -- a multinomial in the rotorcraft advance ratio mu = V_ip / (Omega R) and
   inflow ratio lambda_c = V_z / (Omega R), the form of Gill & D'Andrea, "Computationally
   efficient force and moment models for propellers in UAV forward flight applications",
@@ -155,8 +159,7 @@ def _fit(target: str, s, R: float, rho: float) -> dict:
     if target == "gazebo":
         fade = np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
         (kT,) = _lstsq([om**2 * fade * wT], s["thrust"] * wT)
-        T_g = kT * om**2 * fade
-        (kQ,) = _lstsq([T_g * wQ], s["torque"] * wQ)
+        (kQ,) = _lstsq([kT * om**2 * wQ], s["torque"] * wQ)
         (kD,) = _lstsq([om * Vip * wD], s["drag"] * wD)
         (kR,) = _lstsq([om * Vip * wR], s["rolling_moment"] * wR)
         return {"motorConstant": kT, "momentConstant": kQ, "rotorDragCoefficient": kD,
@@ -194,7 +197,7 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
         return T, c["k_d"] * om * Vip, c["k_m"] * om**2, 0.0 * om
     if target == "gazebo":
         T = c["motorConstant"] * om**2 * np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
-        return (T, c["rotorDragCoefficient"] * om * Vip, c["momentConstant"] * T,
+        return (T, c["rotorDragCoefficient"] * om * Vip, c["momentConstant"] * c["motorConstant"] * om**2,
                 c["rollingMomentCoefficient"] * om * Vip)
     if target == "gill2019":
         R, rho = c["R"], c["rho"]
@@ -322,7 +325,9 @@ def write_export(res: SimExport, path) -> list[Path]:
     elif res.target == "gazebo":
         c = res.coefficients
         lines = ["<!--", f"  {head}", *(" " + ln for ln in error_lines(res, "")),
-                 "  Thrust fades with axial speed as 1 - |V_z| / 25 m/s in the plugin (not a parameter).",
+                 "  Thrust fades with axial speed as 1 - |V_z| / 25 m/s in the plugin (not a parameter);",
+                 "  the torque, momentConstant times the unfaded thrust, does not fade.",
+                 "  The plugin's rolling moment has one sign for both turning directions: right for ccw.",
                  "  Paste these elements into each rotor's gazebo_motor_model plugin.", "-->",
                  f"<motorConstant>{c['motorConstant']!r}</motorConstant>",
                  f"<momentConstant>{c['momentConstant']!r}</momentConstant>",
