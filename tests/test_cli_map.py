@@ -36,6 +36,22 @@ def test_map_netcdf_with_sidecar_check_and_plot(capsys, tmp_path):
     code, text, err = run(capsys, "map", "--check", out, "--check-points", "40", "--json")
     d = json.loads(text)
     assert code == 0 and d["recomputed"]["check_points"] == 40 and d["stored"]["check_points"] == 60
+    assert d["recomputed"]["check_seed"] == d["stored"]["check_seed"] + 1  # fresh points
+    # the sidecar is strict JSON: an error with no point to measure it is null, not NaN
+    json.loads((tmp_path / "m.nc.json").read_text(), parse_constant=lambda c: pytest.fail(f"bare {c}"))
+
+
+def test_check_of_a_netcdf_file_that_is_not_a_propmap_map(capsys, tmp_path):
+    import xarray as xr
+
+    out = tmp_path / "m.nc"
+    assert run(capsys, "map", "apce_8x6", *SMALL, "--out", out, "--check-points", "0")[0] == 0
+    with xr.open_dataset(out) as ds:
+        stripped = ds.load()
+    del stripped.attrs["params_json"]
+    stripped.to_netcdf(tmp_path / "other.nc")
+    code, text, err = run(capsys, "map", "--check", tmp_path / "other.nc")
+    assert code == 2 and "does not record the model" in err and err.count("\n") == 1, err
 
 
 def test_map_csv_long_form_and_c_header(capsys, tmp_path):
@@ -62,6 +78,8 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     code, _, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL, "--out", out)
     assert code == 0, err
     small, large = RotorMap.open(out, prop="apce_8x6"), RotorMap.open(out, prop="apce_10x7")
+    assert small.dataset["thrust"].attrs["units"] == "N" and small.dataset["rpm"].attrs["units"] == "rpm"
+    assert json.loads((tmp_path / "all.nc.json").read_text())["variables"]["torque"] == "N m"
     assert large.loads(700.0, 5.0, 1.0).thrust > 1.5 * small.loads(700.0, 5.0, 1.0).thrust
     with pytest.raises(ValueError, match="give prop="):
         RotorMap.open(out)
@@ -80,6 +98,9 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
         (["map", "--out", "m.nc"], "PROP"),
         (["map", "apce_8x6", "--all", "--out", "m.nc"], "not both"),
         (["map", "apce_8x6", "--out", "m.nc", "--c-type", "double"], "--format c"),
+        (["map", "--all", "--props", "apce_8x6,apce_8x6", "--out", "m.nc"], "apce_8x6 given more than once"),
+        (["map", "--all", "--props", " , ", "--out", "m.nc"], "--props: no propeller name"),
+        (["map", "--check", "m.nc", "--check-points", "100000000"], "--check-points must be in [1, 1000000]"),
         (["map", "apce_8x6", "--out", "m.nc", "--c-interpolation", "cubic"], "--c-interpolation applies"),
         (["map", "apce_8x6", "--out", "m.nc", "--c-name", "pm_x"], "--c-name applies"),
         (["map", "apce_8x6", "--out", "carte-\u00e9.h", "--format", "c"], "--out: the C name prefix"),

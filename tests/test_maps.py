@@ -224,3 +224,18 @@ def test_power_under_clip_numpy_scalars_and_bad_maps(small_map):
     holed = ds.copy(deep=True)
     holed["thrust"].values[2, 3, 6] = np.nan
     assert RotorMap(holed).loads(float(rm.omega[2]), float(rm.airspeed[3]), float(rm.incidence[6])).flagged
+
+
+def test_default_grid_meets_the_error_targets_outside_flagged_regions():
+    """The issue's acceptance: on the default grid, max error <= 1% of static thrust on T
+    and Q and <= 2% of the largest D on D, outside flagged regions (apce_8x6, calibrated,
+    2,000 random points). Both interpolations; the cubic with a 5x margin."""
+    prop = pm.load_propeller("apce_8x6")
+    params, air, _ = pm.default_params("apce_8x6")
+    rpm, V, inc = default_axes(prop)
+    ds = build_map(prop, params, rpm * RPM, V, np.radians(inc), air=air, n_check=2000, seed=3)
+    a = ds.attrs
+    assert a["check_points_flagged"] < 0.45 * a["check_points"]
+    for m, limit in (("linear", 1.0), ("cubic", 0.2)):
+        assert a[f"check_{m}_thrust_max"] <= limit / 100 and a[f"check_{m}_torque_max"] <= limit / 100, m
+        assert a[f"check_{m}_drag_max"] <= 2 * limit / 100, m

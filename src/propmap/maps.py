@@ -648,9 +648,21 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     return written
 
 
+def _json_safe(value):
+    """``value`` with every non-finite float replaced by None (JSON null): strict JSON."""
+    if isinstance(value, dict):
+        return {k: _json_safe(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_json_safe(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
 def write_sidecar(ds, path) -> Path:
     """Write a map's metadata and error bound as JSON (atomically): its attributes, sizes,
-    axis ranges and variable units.
+    axis ranges and variable units; a value that is not finite (an error with no point
+    to measure it) is written as null.
 
     Raises
     ------
@@ -666,5 +678,5 @@ def write_sidecar(ds, path) -> Path:
     meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
     path = Path(path)
     with atomic_write(path) as fh:
-        json.dump(meta, fh, indent=2, allow_nan=True)
+        json.dump(_json_safe(meta), fh, indent=2, allow_nan=False)
     return path

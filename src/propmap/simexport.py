@@ -342,10 +342,12 @@ def write_export(res: SimExport, path) -> list[Path]:
                            **res.coefficients}, indent=2) + "\n"
     with atomic_write(path) as fh:
         fh.write(text)
+    from .maps import _json_safe
+
     report = path.with_name(path.name + ".json")
     with atomic_write(report) as fh:
-        json.dump({"target": res.target, "coefficients": res.coefficients, "errors": res.errors,
+        json.dump(_json_safe({"target": res.target, "coefficients": res.coefficients, "errors": res.errors,
                    "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
                                 "incidence_deg": list(res.envelope.incidence_deg)},
-                   "n_points": res.n_points, **res.meta}, fh, indent=2, allow_nan=True)
+                   "n_points": res.n_points, **res.meta}), fh, indent=2, allow_nan=False)
     return [path, report]

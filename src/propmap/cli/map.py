@@ -102,6 +102,12 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out,
         raise InputError("give PROP or --all, not both")
     if only and not all_props:
         raise InputError("--props applies to --all")
+    only_names = [n.strip() for n in only.split(",") if n.strip()]
+    if only and not only_names:
+        raise InputError(f"--props: no propeller name in {only!r}")
+    twice = sorted({n for n in only_names if only_names.count(n) > 1})
+    if twice:
+        raise InputError(f"--props: {', '.join(twice)} given more than once")
     if not all_props and not prop:
         raise InputError("give PROP (catalogue name or geometry file), --all, or --check MAP.nc")
     if out is None:
@@ -137,8 +143,7 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out,
 
     t0 = time.perf_counter()
     if all_props:
-        ds = _build_all(rpm_axis, airspeed_axis, incidence_axis, check_points, scheduler,
-                        [n.strip() for n in only.split(",") if n.strip()])
+        ds = _build_all(rpm_axis, airspeed_axis, incidence_axis, check_points, scheduler, only_names)
     else:
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
@@ -208,8 +213,11 @@ def _build_all(rpm_axis, airspeed_axis, incidence_axis, check_points, scheduler,
         ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
                        citation=catalogue()[name].citation, scheduler=scheduler, n_check=check_points)
         per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
-        maps.append(ds.drop_attrs() if hasattr(ds, "drop_attrs") else ds.assign_attrs({}))
-    out = xr.concat(maps, dim=xr.DataArray(names, dims="prop", name="prop"), combine_attrs="drop")
+        ds = ds.copy()
+        ds.attrs = {}
+        maps.append(ds)
+    # "override": the variables keep their units and long names (those of the first map)
+    out = xr.concat(maps, dim=xr.DataArray(names, dims="prop", name="prop"), combine_attrs="override")
     out.attrs = {"title": "propmap rotor maps of the catalogue", "propmap_version": maps and per_prop[names[0]]
                  ["propmap_version"], "per_prop_json": json.dumps(per_prop, default=float),
                  "note": "RotorMap.open(path, prop=NAME) evaluates one propeller's map"}
@@ -267,20 +275,26 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
 def _check(path: Path, n: int, as_json: bool) -> None:
     from ..maps import RotorMap
 
-    if n < 1:
-        raise InputError(f"--check-points must be >= 1 with --check, got {n}")
+    if not 1 <= n <= 1_000_000:
+        raise InputError(f"--check-points must be in [1, 1000000] with --check, got {n}")
     try:
         rm = RotorMap.open(path)
     except ValueError as exc:
         raise InputError(f"--check: {exc}") from None
-    res = rm.check(n)
+    # fresh points: another seed than the stored check's
+    seed = int(rm.attrs.get("check_seed", 0)) + 1
+    try:
+        res = rm.check(n, seed=seed)
+    except (KeyError, ValueError, TypeError) as exc:
+        raise InputError(f"--check: {path} does not record the model that made it ({type(exc).__name__}: "
+                         f"{exc}); it was not written by propmap map") from None
     stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
     if as_json:
         echo_json({"recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
                    "stored": {k: v for k, v in stored.items() if not (isinstance(v, float) and math.isnan(v))}})
         return
-    click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} points "
-               "(stored values in brackets):")
+    click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
+               f"points (seed {seed}; stored values in brackets):")
     nan = float("nan")
     click.echo(f" {res['check_points_flagged']} of them flagged")
     for method in ("cubic", "linear"):
