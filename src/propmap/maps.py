@@ -41,7 +41,7 @@ LONG_NAMES = {"thrust": "thrust T along the rotor axis", "drag": "rotor drag D (
               "CP": "power coefficient P / (rho n^3 D^5)"}
 FLAGS = ("converged", "vortex_ring", "multiple_roots", "reverse_flow")
 POLICIES = ("raise", "clip", "nan")
-#: interpolation methods of RotorMap (the first is the method of the C export)
+#: interpolation methods of RotorMap and of the C export
 INTERPOLATIONS = ("linear", "cubic")
 #: the model flags that make a cell's interpolation unreliable (reverse flow is not one:
 #: the model is smooth there)
@@ -221,7 +221,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         "citation": citation, "propmap_version": __version__,
         "interpolation": "of T, D, Q, M_R divided by (Omega R)^2 + V^2 in (rpm, airspeed, incidence), "
                          "multiplied back by (Omega R)^2 + V^2 of the query: cubic Hermite with three-point "
-                         "slopes (RotorMap's default) or multilinear (RotorMap(..., 'linear') and the C export)",
+                         "slopes (RotorMap's default) or multilinear (RotorMap(..., 'linear'), the C export's default)",
         "Conventions": "CF-1.8",
     }
     ds = xr.Dataset(data, coords=coords, attrs=attrs)
@@ -391,7 +391,7 @@ class RotorMap:
         (core/_interp.py), continuous with a continuous first derivative along each
         axis; on the default grid its largest error is 5-10x smaller than the
         multilinear one at about the same cost per lookup (docs/simulators.md).
-        ``"linear"``: multilinear in each cell, the method of the C export. The map
+        ``"linear"``: multilinear in each cell, the C export's default. The map
         stores both measured bounds (``check_cubic_*``, ``check_linear_*``). For both,
         a query is flagged when any of the 4 x 4 x 4 nodes around its cell (its cell's
         and its neighbours') is.

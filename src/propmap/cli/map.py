@@ -81,7 +81,8 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
 @with_prop_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out, fmt, c_type, c_interpolation,
-                c_name, check_points, check_file, all_props, only, scheduler, plot_dir, plot_rpm, as_json, diameter_in, blades):
+                c_name, check_points, check_file, all_props, only, scheduler, plot_dir, plot_rpm, as_json, diameter_in,
+                blades):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
     The map stores thrust, drag, torque, rolling moment, power, CT, CP and the flags of
