@@ -62,7 +62,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
               help="Table type of --format c.")
 @click.option("--c-interpolation", type=click.Choice(["linear", "cubic"]), default="linear", show_default=True,
               help="Interpolation of the --format c function (linear: 54 ns a call; cubic, the Python "
-                   "evaluator's default: 167 ns, 5-8x smaller errors; docs/simulators.md).")
+                   "evaluator's default: 167 ns, 3-9x smaller largest errors; docs/simulators.md).")
 @click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>).")
 @click.option("--check-points", type=int, default=2000, show_default=True,
               help="Random off-grid points at which the full model checks the map (0: none).")

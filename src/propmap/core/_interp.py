@@ -53,7 +53,8 @@ def _locate(ax, x):
 def _cubic_weights(ax, x):
     """(cell index i, weights of the nodes i-1, i, i+1, i+2) of the cubic at x in axis ax.
 
-    A weight whose node lies outside the axis is exactly 0 (the caller skips it).
+    A weight whose node lies outside the axis (i-1 < 0 or i+2 > n-1) is exactly 0; the
+    caller clamps that node's index into the axis.
     """
     n = ax.shape[0]
     i, t = _locate(ax, x)
