@@ -30,7 +30,7 @@ def _residual(nd, p, om, V, b, j, v):
     Vs, Vc = V * math.sin(b), V * math.cos(b)
     if abs(Vs) < 1e-12 * max(V, 1e-300):
         Vs = 0.0
-    UT = om * nd.y[j] + Vs * nd.sinpsi[None, :]
+    UT = om * nd.y[j] + Vs * nd.sinpsi[None, : nd.sinpsi.size // 2]  # the half circle (uniform inflow)
     with np.errstate(all="ignore"):
         qT, _ = element(UT, (Vc + v)[:, None], nd.theta[j], nd.sin_th[j], nd.cos_th[j], nd.sc[j], 0.0,
                         0.0, 0.0, *_model_constants(p))
@@ -170,7 +170,7 @@ def _solve_annuli_python(nd, p, om, V, b):
     v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
     _kernel.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, nd.theta, nd.sin_th, nd.cos_th,
                                  nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi,
-                                 nd.sinpsi.size,
+                                 nd.cospsi, np.zeros(nr), np.zeros(nr), nd.sinpsi.size // 2,
                                  *_model_constants(p), v, code, nev, mult)
     return v, code, nev
 

@@ -39,8 +39,9 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, cambered_annulus, inverse_sin_phi, make_cambered_element, make_element,
-                       make_loss_factor, make_prandtl, momentum_scale, momentum_thrust)
+from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, cambered_annulus, inflow_gradients, inverse_sin_phi,
+                       make_cambered_element, make_element, make_loss_factor, make_prandtl, momentum_scale,
+                       momentum_thrust)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -68,6 +69,7 @@ _inverse_sin_phi = _jit_inline(inverse_sin_phi)
 _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
 _cambered_annulus = _jit_inline(cambered_annulus)
+_inflow_gradients = _jit_inline(inflow_gradients)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -81,22 +83,44 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, naz, model, pk):
-    """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v)."""
+def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
+              pk):
+    """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
+
+    ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
+    element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
+    gy = k_y y/R, over the full circle of ``naz`` nodes.
+    """
     acc = 0.0
     UP = Vc + v
-    # one loop per section model, so that each compiles to straight-line SIMD code
-    if model == CAMBERED:
-        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
-        for k in range(naz):
-            qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
-                                      a0, a1, a2, a3, a4, a5, a6, a7)
-            acc += qT
+    # one loop per section model and inflow, so that each compiles to straight-line SIMD code
+    if gx == 0.0 and gy == 0.0:
+        if model == CAMBERED:
+            a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+            for k in range(naz):
+                qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                                          a0, a1, a2, a3, a4, a5, a6, a7)
+                acc += qT
+        else:
+            g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+            for k in range(naz):
+                qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
+                acc += qT
     else:
-        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
-        for k in range(naz):
-            qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
-            acc += qT
+        vx = v * gx
+        vy = v * gy
+        if model == CAMBERED:
+            a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+            for k in range(naz):
+                qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth,
+                                          cth, s0, s1, s2, s3, a0, a1, a2, a3, a4, a5, a6, a7)
+                acc += qT
+        else:
+            g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+            for k in range(naz):
+                qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth,
+                                      s0, g0, g1, g2, g3, g4, g5, sincos)
+                acc += qT
     return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vs, Vc)
 
 
@@ -136,8 +160,8 @@ _REFINE = 4
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
-                 v, code, nev, multiple):
+def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz, model,
+                 pk, v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
     The annuli are independent, so they are solved in lockstep: each sweep evaluates
@@ -191,8 +215,7 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
         for q in range(n_active):  # independent evaluations
             j = active[q]
             f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], cfac[j],
-                             mfac[j],
-                             floss[j], sinpsi, naz, model, pk)
+                             mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk)
             nev[j] += 1
         m = 0
         for q in range(n_active):
@@ -315,52 +338,85 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk, axial):
-    """dT/dy, dD/dy, dQ/dy, dM_R/dy [N/m, N/m, N, N] at inflow v (eqs 5-7, azimuth-averaged).
+def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk,
+                  axial):
+    """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
+    (eqs 5-7, azimuth-averaged; linear inflow as ``_residual``).
 
     dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
     y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
+    dY/dy, the side force toward the advancing side, -<dH(psi) cos psi>, and dM_P/dy,
+    the pitching moment density -y <dT(psi) cos psi> (positive when the upstream half,
+    psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and are only
+    accumulated with a linear one (gx or gy non-zero, full-circle nodes).
     """
     aT = 0.0
     aD = 0.0
     aQ = 0.0
     aR = 0.0
+    aY = 0.0
+    aP = 0.0
     UP = Vc + v
-    for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
-        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
-        aT += qT
-        aD += qH * sinpsi[k]
-        aQ += qH
-        aR += qT * sinpsi[k]
+    if gx == 0.0 and gy == 0.0:
+        for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
+            qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+    else:
+        vx = v * gx
+        vy = v * gy
+        for k in range(naz):
+            qT, qH = _element(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth, s0, s1,
+                              s2, s3, model, pk)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+            aY -= qH * cospsi[k]
+            aP -= qT * cospsi[k]
     dD = 0.0 if axial else cfac * aD / naz  # exactly 0 by symmetry in axial flow
     dR = 0.0 if axial else y * cfac * aR / naz
-    return cfac * aT / naz, dD, y * cfac * aQ / naz, dR
+    return cfac * aT / naz, dD, y * cfac * aQ / naz, dR, cfac * aY / naz, y * cfac * aP / naz
+
+
+#: rows of the packed outputs of _solve_batch: ``out`` (N_OUT, n) and ``rad`` (N_RAD, rows, nr)
+N_OUT = 7  # T, D, Q, M_R, Y, M_P, mean inflow
+N_RAD = 7  # v_i, dT, dD, dQ, dM_R, dY, dM_P
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                out, rad, counts):
+def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
+                 radius, radial, out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
-    (nr,); sinpsi shape (naz,). ``sc`` is the per-annulus section constant (gill2017: the
+    (nr,); sinpsi, cospsi shape (2 naz,): the full circle of azimuth nodes, whose first half
+    covers [-pi/2, pi/2] (enough for the uniform inflow, where every integrand depends on psi
+    through sin psi only). ``sc`` is the per-annulus section constant (gill2017: the
     Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
     the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
-    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. Outputs (packed, so
-    that the argument list stays short enough for numba's inliner): ``out`` shape (4, n),
-    the rows T, D, Q and the rolling moment M_R; ``rad`` shape (5, n, nr), the rows v_i,
-    dT, dD, dQ, dM_R per annulus when ``radial``, else unused (pass shape (5, 1, nr));
-    ``counts`` shape (4, n) int64, the rows status, annuli with multiple roots, annuli in
-    vortex ring, residual evaluations. ``status`` is 0 when every annulus converged, else
-    1 + (first failing annulus index) * 4 + (annulus status code).
+    re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. ``inflow``: the inflow
+    model (_physics.INFLOW_*); with a linear model each point is solved twice: with the
+    uniform inflow, whose mean inflow gives the wake skew angle and the gradients
+    (_physics.inflow_gradients), then with the linear inflow over the full circle.
+    ``radius``: R [m]. Outputs (packed, so that the argument list stays short enough for
+    numba's inliner): ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
+    the side force Y, the pitching moment M_P and the area-weighted mean inflow; ``rad``
+    shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P per annulus when
+    ``radial``, else unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (4, n) int64, the
+    rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations.
+    ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
+    4 + (annulus status code).
     """
     n = Om.shape[0]
     nr = y.shape[0]
-    naz_full = sinpsi.shape[0]
+    naz_half = sinpsi.shape[0] // 2
     for i in numba.prange(n):
         axial = Vs[i] == 0.0
-        naz = 1 if axial else naz_full  # the integrand is independent of psi
+        naz = 1 if axial else naz_half  # the integrand is independent of psi
         # the roots are written straight into the output row, or into scratch
         v = rad[0, i] if radial else np.empty(nr)
         code = np.empty(nr, dtype=np.int64)
@@ -370,6 +426,8 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
         s1 = np.empty(nr)
         s2 = np.empty(nr)
         s3 = np.empty(nr)
+        gx = np.zeros(nr)
+        gy = np.zeros(nr)
         if model == CAMBERED:
             # Reynolds, Mach and rotation corrections, once per point and annulus
             w2 = 0.5 * Vs[i] * Vs[i] + Vc[i] * Vc[i]
@@ -383,44 +441,77 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
                 s1[j] = 0.0
                 s2[j] = 0.0
                 s3[j] = 0.0
-        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk,
-                     v, code, nev, multiple)
+        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy,
+                     naz, model, pk, v, code, nev, multiple)
+        ne = 0
+        for j in range(nr):
+            ne += nev[j]
+        if inflow != INFLOW_UNIFORM and not axial:
+            # the uniform solution's mean inflow sets the wake skew, then the linear inflow
+            # is solved over the full circle (a second, independent root solve per annulus)
+            vsum = 0.0
+            wsum = 0.0
+            for j in range(nr):
+                vsum += w[j] * y[j] * v[j]
+                wsum += w[j] * y[j]
+            OmR = Om[i] * radius
+            kx, ky = _inflow_gradients(Vs[i] / OmR, (Vc[i] + vsum / wsum) / OmR, inflow)
+            for j in range(nr):
+                gx[j] = kx * y[j] / radius
+                gy[j] = ky * y[j] / radius
+            naz = 2 * naz_half
+            solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx,
+                         gy, naz, model, pk, v, code, nev, multiple)
+            for j in range(nr):
+                ne += nev[j]
         Ti = 0.0
         Di = 0.0
         Qi = 0.0
         Ri = 0.0
+        Yi = 0.0
+        Pi = 0.0
+        vsum = 0.0
+        wsum = 0.0
         st = 0
         nm = 0
         nv = 0
-        ne = 0
         for j in range(nr):
-            ne += nev[j]
             if multiple[j]:
                 nm += 1
             if code[j] != OK:
                 if st == 0:
                     st = 1 + j * 4 + code[j]
                 if radial:
-                    for q in range(1, 5):
+                    for q in range(1, N_RAD):
                         rad[q, i, j] = np.nan
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q, rm = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
-                                        s2[j], s3[j], cfac[j], sinpsi, naz, model, pk, axial)
+            t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
+                                                s2[j], s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk,
+                                                axial)
             if radial:
                 rad[1, i, j] = t
                 rad[2, i, j] = d
                 rad[3, i, j] = q
                 rad[4, i, j] = rm
+                rad[5, i, j] = yf
+                rad[6, i, j] = pm
             Ti += w[j] * t
             Di += w[j] * d
             Qi += w[j] * q
             Ri += w[j] * rm
+            Yi += w[j] * yf
+            Pi += w[j] * pm
+            vsum += w[j] * y[j] * v[j]
+            wsum += w[j] * y[j]
         out[0, i] = Ti if st == 0 else np.nan
         out[1, i] = Di if st == 0 else np.nan
         out[2, i] = Qi if st == 0 else np.nan
         out[3, i] = Ri if st == 0 else np.nan
+        out[4, i] = Yi if st == 0 else np.nan
+        out[5, i] = Pi if st == 0 else np.nan
+        out[6, i] = vsum / wsum if st == 0 else np.nan
         counts[0, i] = st
         counts[1, i] = nm
         counts[2, i] = nv
@@ -428,18 +519,18 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                out, rad, counts):
+def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
+                radius, radial, out, rad, counts):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                 out, rad, counts)
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
+                 radius, radial, out, rad, counts)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                       out, rad, counts):
+def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
+                       inflow, radius, radial, out, rad, counts):
     """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, radial,
-                 out, rad, counts)
+    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
+                 radius, radial, out, rad, counts)

@@ -263,6 +263,44 @@ def momentum_scale(B0, mom_fac, Vs, Vc):
     return np.maximum(k / np.sqrt(Vs * Vs + Vc * Vc + k + 1e-300), 1e-6)
 
 
+# inflow models (``inflow`` of the section records): the paper's azimuth-independent inflow,
+# and two linear inflow models v(r, psi) = v0(r) (1 + k_x (r/R) cos psi + k_y (r/R) sin psi)
+INFLOW_UNIFORM = 0
+INFLOW_DREES = 1
+INFLOW_PITT_PETERS = 2
+INFLOW_CODES = {"uniform": INFLOW_UNIFORM, "drees": INFLOW_DREES, "pitt-peters": INFLOW_PITT_PETERS}
+
+
+def inflow_gradients(mu, lam, model):
+    """First-harmonic gradients (k_x, k_y) of a linear inflow model [-].
+
+    v(r, psi) = v0(r) (1 + k_x (r/R) cos psi + k_y (r/R) sin psi), psi = 0 downstream
+    (the blade parallel to the in-plane velocity, trailing), psi = 90 deg the advancing
+    blade; v0(r) is the annulus' mean (the root of eq 11). The wake skew angle is
+    chi = atan2(mu, lambda), lambda = (V cos beta + v_mean) / (Omega R) the inflow ratio
+    through the disk and mu = V sin beta / (Omega R).
+
+    * Drees (1949): k_x = (4/3) (1 - cos chi - 1.8 mu^2) / sin chi, k_y = -2 mu;
+    * Pitt & Peters (1981): k_x = (15 pi / 32) tan(chi / 2), k_y = 0;
+
+    both as tabulated by J. G. Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
+    Cambridge University Press, 2006, Sec. 3.4 (linear inflow models). Both are derived for
+    a wake skewed behind the rotor (chi <= 90 deg, the normal working state); for a wake
+    above the disk (lambda < 0, descent) propmap evaluates them at the mirrored skew angle
+    pi - chi, so that the gradient vanishes again in axial descent (the modification of
+    Coleman's model used by wind-turbine codes for skew beyond 90 deg), an extrapolation
+    that ``RotorLoads.inflow_extrapolated`` flags. k_x is held >= 0 (a wake skewed
+    backwards has the larger inflow at the rear). Scalars only (once per operating point).
+    """
+    if model == INFLOW_UNIFORM or mu <= 0.0:
+        return 0.0, 0.0
+    chi = np.arctan2(mu, abs(lam))  # in [0, pi/2]: the mirrored angle where lam < 0
+    if model == INFLOW_DREES:
+        kx = (4.0 / 3.0) * (1.0 - np.cos(chi) - 1.8 * mu * mu) / max(np.sin(chi), 1e-12)
+        return max(kx, 0.0), -2.0 * mu
+    return (15.0 * np.pi / 32.0) * np.tan(0.5 * chi), 0.0
+
+
 #: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),
 #: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: the calibration data span 16,000-135,000 at
 #: 0.75 R (docs/models.md), and a power or log law is not extrapolated further

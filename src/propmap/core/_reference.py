@@ -19,8 +19,11 @@ from ._physics import (CAMBERED, cambered_annulus, element, loss_factor_numpy, m
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
     """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,)).
 
-    ``nodes`` from ``solver._nodes`` for the same parameters ``p`` and ``air``.
+    ``nodes`` from ``solver._nodes`` for the same parameters ``p`` and ``air``. The paper's
+    uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping).
     """
+    if p.inflow != "uniform" or p.flap_compliance > 0:
+        raise ValueError("the NumPy reference solves the uniform inflow of rigid blades only")
     from .airfoil import Air
     from .solver import _cambered_args, _model_constants
 
@@ -30,7 +33,7 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     om = om1[:, None, None]
     Vs3 = np.asarray(Vs, float)[:, None, None]
     y = nodes.y[None, :, None]
-    sinpsi = nodes.sinpsi[None, None, :]
+    sinpsi = nodes.sinpsi[None, None, : nodes.sinpsi.size // 2]  # the half circle: uniform inflow only
     UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
     cfac = nodes.cfac[None, :]
     mfac = nodes.mfac[None, :]

@@ -15,7 +15,9 @@ Two section models, selected by the parameter record (``section_model``):
   M. Drela, XROTOR User Guide, 2003.
 
 Both records also carry the switches of Prandtl's tip and hub loss (``tip_loss``,
-``hub_loss``; ``_physics.loss_factor``).
+``hub_loss``; ``_physics.loss_factor``) and the rotor-level options of :class:`RotorOptions`
+(inflow model, blade flapping, collective offset; docs/models.md), which default to the
+paper's rigid blades with an azimuth-independent inflow.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from dataclasses import asdict, dataclass, fields, replace
 import numpy as np
 
 __all__ = [
+    "RotorOptions",
     "AirfoilParams",
     "CamberedParams",
     "SectionParams",
@@ -38,6 +41,11 @@ __all__ = [
 ]
 
 LIFT_MODELS = ("sigmoid", "sincos")
+#: inflow models (``RotorOptions.inflow``; _physics.inflow_gradients)
+INFLOW_MODELS = ("uniform", "drees", "pitt-peters")
+#: valid ranges of the rotor options (SI)
+FLAP_COMPLIANCE_MAX = 1e3  # [rad/(N m)]
+COLLECTIVE_MAX = math.radians(30.0)  # [rad]
 
 
 def _check_finite(name: str, value: float, *, low: float | None = None,
@@ -94,8 +102,53 @@ class Air:
             object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0, low_open=True))
 
 
+@dataclass(frozen=True, kw_only=True)
+class RotorOptions:
+    """Rotor-level physics beyond the paper, carried by both section records (keyword-only).
+
+    Parameters
+    ----------
+    inflow : {"uniform", "drees", "pitt-peters"}
+        Induced-inflow model. ``"uniform"`` (default): the paper's v_i(r), independent of
+        azimuth, so that the side force and the pitching moment vanish. The linear models
+        give every annulus v0(r) (1 + k_x (r/R) cos psi + k_y (r/R) sin psi), with the
+        gradients of Drees (1949) or Pitt & Peters (1981) from the wake skew angle
+        (_physics.inflow_gradients; Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
+        2006, Sec. 3.4); v0(r) is still the root of eq 11 (costs two root solves and twice
+        the azimuth nodes per non-axial point).
+    flap_compliance : float
+        1 / K_beta [rad/(N m)], in [0, 1e3], of a blade flapping about the hub against a
+        spring K_beta (the centre-spring equivalent rotor: G. D. Padfield, Helicopter Flight
+        Dynamics, 2nd ed., 2007, Sec. 3.2.1; W. Johnson, Helicopter Theory, 1980, Ch. 5).
+        0 (default): rigid blades, the paper's model. The first-harmonic flapping is solved
+        quasi-statically from the rigid blades' first-harmonic flap moments with the
+        aerodynamic flap damping (solver.flapping); the thrust tilts with the tip-path plane
+        and the hub moment becomes the spring's.
+    collective : float
+        Blade-angle offset added to theta(r) [rad], in [-30, 30] deg (a geometry whose blade
+        angles are uncertain, or a collective setting). Default 0.
+
+    Raises
+    ------
+    ValueError
+        An unknown inflow model or a value outside its range (the message names it).
+    """
+
+    inflow: str = "uniform"
+    flap_compliance: float = 0.0
+    collective: float = 0.0
+
+    def _check_rotor_options(self) -> None:
+        if self.inflow not in INFLOW_MODELS:
+            raise ValueError(f"inflow must be one of {', '.join(INFLOW_MODELS)}, got {self.inflow!r}")
+        object.__setattr__(self, "flap_compliance",
+                           _check_finite("flap_compliance", self.flap_compliance, low=0.0, high=FLAP_COMPLIANCE_MAX))
+        object.__setattr__(self, "collective", _check_finite("collective", self.collective, low=-COLLECTIVE_MAX,
+                                                             high=COLLECTIVE_MAX))
+
+
 @dataclass(frozen=True)
-class AirfoilParams:
+class AirfoilParams(RotorOptions):
     """Parameters of the section polars, eqs (3) and (4) of Gill & D'Andrea (2017).
 
     Parameters
@@ -122,6 +175,8 @@ class AirfoilParams:
     tip_loss, hub_loss : bool
         Prandtl's tip / hub loss factor in the momentum balance (not in the paper;
         default False, so that the model is exactly the paper's).
+    inflow, flap_compliance, collective
+        Keyword-only rotor options (:class:`RotorOptions`); their defaults are the paper's.
 
     Raises
     ------
@@ -148,6 +203,7 @@ class AirfoilParams:
 
     def __post_init__(self) -> None:
         _check_flags(self)
+        self._check_rotor_options()
         for name in ("cl1", "cl2", "cd", "cd0", "cp_blasius"):
             object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0))
         object.__setattr__(self, "M", _check_finite("M", self.M, low=0.0, low_open=True))
@@ -176,7 +232,7 @@ def _check_flags(p) -> None:
 
 
 @dataclass(frozen=True)
-class CamberedParams:
+class CamberedParams(RotorOptions):
     """Parameters of the cambered section polar (``section_model = "cambered"``).
 
     Attached flow (XROTOR / QPROP form, M. Drela):
@@ -229,6 +285,9 @@ class CamberedParams:
         Prandtl-Glauert factor on the lift.
     tip_loss, hub_loss : bool
         Prandtl's tip / hub loss factor in the momentum balance.
+    inflow, flap_compliance, collective
+        Keyword-only rotor options (:class:`RotorOptions`); the defaults are the paper's
+        uniform inflow and rigid blades.
 
     Raises
     ------
@@ -270,6 +329,7 @@ class CamberedParams:
 
     def __post_init__(self) -> None:
         _check_flags(self)
+        self._check_rotor_options()
         for name, (lo, hi) in self.RANGES.items():
             x = _check_finite(name, getattr(self, name), low=lo, high=hi, low_open=name in self._OPEN_LOW)
             object.__setattr__(self, name, x)

@@ -16,6 +16,7 @@ import numpy as np
 from . import _kernel
 from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
+from .flapping import flap_damping, flapping
 from .geometry import Propeller
 
 __all__ = [
@@ -75,7 +76,10 @@ class _Nodes:
 
     ``sc``: section constant (gill2017: Blasius factor 2 * 1.02 c_p sqrt(mu/(rho c));
     cambered: ln(rho c / (mu Re_ref))); ``cy2`` = (c/y)^2. ``ct``, ``ch``: tip- and hub-loss constants
-    (N_b/2)(R - y)/y and (N_b/2)(y - r_hub)/r_hub, -1 where that loss is off.
+    (N_b/2)(R - y)/y and (N_b/2)(y - r_hub)/r_hub, -1 where that loss is off. ``theta``
+    includes the collective offset. ``sinpsi``, ``cospsi``: the full circle of 2 n_azimuth
+    midpoints from -pi/2, whose first half is the half circle the uniform inflow needs.
+    ``chord_r3``: int c r^3 dr over the blade [m^5] (0-d), for the flap damping.
     """
 
     y: np.ndarray
@@ -90,6 +94,8 @@ class _Nodes:
     ct: np.ndarray
     ch: np.ndarray
     sinpsi: np.ndarray
+    cospsi: np.ndarray
+    chord_r3: np.ndarray
 
 
 def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
@@ -112,7 +118,7 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     y = prop.r_hub + half * (x + 1.0)
     w = half * wx
     c = prop.chord_at(y)
-    th = prop.theta_at(y)
+    th = prop.theta_at(y) + params.collective
     cpos = np.maximum(c, 1e-300)
     if isinstance(params, CamberedParams):
         # a zero chord carries no load (cfac = 0); its Reynolds number is set to Re_ref so
@@ -123,13 +129,21 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     half_b = 0.5 * prop.n_blades
     ct = half_b * (prop.radius - y) / y if params.tip_loss else np.full(n_radial, -1.0)
     ch = half_b * (y - prop.r_hub) / prop.r_hub if params.hub_loss else np.full(n_radial, -1.0)
-    psi = -0.5 * np.pi + (np.arange(n_azimuth) + 0.5) * np.pi / n_azimuth
+    psi = -0.5 * np.pi + (np.arange(2 * n_azimuth) + 0.5) * np.pi / n_azimuth
     out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), sc=sc, cy2=(c / y) ** 2,
                  cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y, ct=ct, ch=ch,
-                 sinpsi=np.sin(psi))
+                 sinpsi=np.sin(psi), cospsi=np.cos(psi), chord_r3=np.array(np.sum(w * c * y**3)))
     for a in vars(out).values():
         a.setflags(write=False)
     return out
+
+
+def _lift_slope(params: SectionParams) -> float:
+    """Attached-flow lift slope of the section [1/rad]: cl_alpha (cambered), c_l1 (eq 3) or,
+    for footnote 1's sin-cos lift, c_l2 (its slope at alpha = 0)."""
+    if isinstance(params, CamberedParams):
+        return params.cl_alpha
+    return params.cl2 if params.lift_model == "sincos" else params.cl1
 
 
 def _cambered_args(params: SectionParams, air: Air) -> np.ndarray:
@@ -169,6 +183,22 @@ class RotorLoads:
         not depend on azimuth (paper Section II), every integrand depends on psi through
         sin psi only: the side force and the pitching moment (the cos psi moments) are
         zero by symmetry in this model.
+    side_force : ndarray
+        Y [N], in the disk plane, normal to the in-plane velocity, positive toward the
+        advancing side. 0 exactly with the paper's uniform inflow and rigid blades (every
+        integrand then depends on psi through sin psi only); non-zero with a linear inflow
+        model or with flapping (:class:`~propmap.core.airfoil.RotorOptions`).
+    pitching_moment : ndarray
+        M_P [N m], the moment of the thrust distribution about the disk's lateral axis,
+        -(N_b / 2 pi) int int r dT(r, psi) cos psi dpsi dr, positive when the upstream half
+        (psi = 180 deg) carries more thrust (nose-up for a disk moving forward; the vector
+        is M_P e_ip x z_hat). 0 with the uniform inflow and rigid blades.
+    v_i_mean : ndarray
+        Mean induced inflow over the disk [m/s] (v_i(r) weighted by the annulus area).
+    flap_1c, flap_1s : ndarray
+        First-harmonic flapping beta_1c, beta_1s [rad] (0 for rigid blades): the
+        tip-path-plane normal is z_hat + beta_1c e_ip + spin beta_1s (z_hat x e_ip), so that
+        beta_1c < 0 tilts the disk away from its in-plane motion (core/flapping.py).
     power : ndarray
         P = Q Omega [W].
     CT, CP, CQ : ndarray
@@ -182,9 +212,9 @@ class RotorLoads:
         Induced inflow v_i(r) [m/s] along the rotor axis, positive with the thrust
         (through the disk in the thrust-opposite direction, i.e. into the slipstream).
         None when computed with ``radial=False`` (as the three below).
-    dT_dr, dD_dr, dQ_dr, dMR_dr : ndarray, shape S + (n_radial,), or None
-        Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7) and rolling
-        moment [N].
+    dT_dr, dD_dr, dQ_dr, dMR_dr, dY_dr, dMP_dr : ndarray, shape S + (n_radial,), or None
+        Per-unit-radius thrust [N/m], drag [N/m], torque [N] (eqs 5-7), rolling moment
+        [N], side force [N/m] and pitching moment [N] of the rigid blades.
     converged : ndarray of bool
         Every annulus root converged.
     vortex_ring : ndarray of bool
@@ -196,6 +226,9 @@ class RotorLoads:
         Part of the blade sees reverse flow (U_T < 0) on the retreating side.
     reverse_flow_radius : ndarray
         V sin(beta) / Omega [m]: radius inside which the retreating blade sees reverse flow.
+    inflow_extrapolated : ndarray of bool
+        A linear inflow model was used with the wake above the disk (inflow ratio < 0, the
+        model's mirrored extrapolation; _physics.inflow_gradients).
     n_evaluations : ndarray of int
         Residual evaluations (each n_azimuth element evaluations) spent on the point.
     rho : float
@@ -211,17 +244,25 @@ class RotorLoads:
     drag: np.ndarray
     torque: np.ndarray
     rolling_moment: np.ndarray
+    side_force: np.ndarray
+    pitching_moment: np.ndarray
+    v_i_mean: np.ndarray
+    flap_1c: np.ndarray
+    flap_1s: np.ndarray
     r: np.ndarray
     v_i: np.ndarray | None
     dT_dr: np.ndarray | None
     dD_dr: np.ndarray | None
     dQ_dr: np.ndarray | None
     dMR_dr: np.ndarray | None
+    dY_dr: np.ndarray | None
+    dMP_dr: np.ndarray | None
     converged: np.ndarray
     vortex_ring: np.ndarray
     multiple_roots: np.ndarray
     reverse_flow: np.ndarray
     reverse_flow_radius: np.ndarray
+    inflow_extrapolated: np.ndarray
     n_evaluations: np.ndarray
     rho: float
     diameter: float
@@ -261,7 +302,7 @@ class RotorLoads:
         names = []
         if not bool(np.asarray(self.converged)[index]):
             names.append("not_converged")
-        for key in ("vortex_ring", "multiple_roots", "reverse_flow"):
+        for key in ("vortex_ring", "multiple_roots", "reverse_flow", "inflow_extrapolated"):
             if bool(np.asarray(getattr(self, key))[index]):
                 names.append(key)
         return names
@@ -409,17 +450,19 @@ def rotor_loads(
 
     nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
     n, nr = om1.size, nd.y.size
-    out = np.empty((4, n))  # T, D, Q, M_R
+    out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow
     rows = n if radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
-    rad = np.empty((5, rows, nr))  # v_i, dT, dD, dQ, dM_R
+    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
     counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
-    (T, D, Q, R), (status, nmulti, nvrs, nev) = out, counts
+    (T, D, Q, R, Y, P, vbar), (status, nmulti, nvrs, nev) = out, counts
     model, pk = _model_constants(params)
+    inflow = ph.INFLOW_CODES[params.inflow]
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, model, pk, _cambered_args(params, air), bool(radial), out, rad, counts)
+          nd.sinpsi, nd.cospsi, model, pk, _cambered_args(params, air), inflow, propeller.radius, bool(radial), out,
+          rad, counts)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
         i = int(np.argmax(~converged))
@@ -431,19 +474,28 @@ def rotor_loads(
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
             f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
         )
+    if params.flap_compliance > 0:
+        damping = flap_damping(air.rho, _lift_slope(params), float(nd.chord_r3), om1)
+        D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
+    else:
+        b1c = b1s = np.zeros(n)
     rfr = Vs / om1
+    extrapolated = (Vc + vbar < 0) & (Vs != 0) if inflow != ph.INFLOW_UNIFORM else np.zeros(n, dtype=bool)
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
     else:
         def s(a):
             return a.reshape(shape)
-    radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * 5)
+    radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return RotorLoads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
-        thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), r=nd.y,
+        thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y), pitching_moment=s(P),
+        v_i_mean=s(vbar), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,
         v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3], dMR_dr=radial_out[4],
+        dY_dr=radial_out[5], dMP_dr=radial_out[6],
         converged=s(converged), vortex_ring=s(nvrs > 0), multiple_roots=s(nmulti > 0),
-        reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), n_evaluations=s(nev),
+        reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
+        n_evaluations=s(nev),
         rho=air.rho, diameter=propeller.diameter,
     )

@@ -1,0 +1,162 @@
+"""Rotor options beyond the paper: linear inflow models, blade flapping, collective offset.
+
+Physical limits and invariants: each option vanishes in axial flow and hover, the paper's
+model is recovered exactly at the defaults, the linear-inflow gradients follow their
+published formulas, flapping reproduces its two analytic limits (rigid, articulated) and
+is linear in the advance ratio for small mu.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.core import _physics as ph
+from propmap.core.flapping import flap_damping, flapping
+
+RPM = 2 * math.pi / 60
+
+
+@pytest.fixture(scope="module")
+def prop():
+    return pm.load_propeller("apce_8x6")
+
+
+@pytest.fixture(scope="module")
+def generic():
+    return pm.generic_params()
+
+
+POINTS = (np.full(4, 8000 * RPM), np.array([0.0, 10.0, 10.0, 10.0]), np.radians([0.0, 0.0, 60.0, 90.0]))
+
+
+def test_defaults_are_the_papers_uniform_inflow_and_rigid_blades(prop, generic):
+    """Explicit defaults change nothing, to the last bit."""
+    a = pm.rotor_loads(prop, generic, *POINTS)
+    b = pm.rotor_loads(prop, generic.replace(inflow="uniform", flap_compliance=0.0, collective=0.0), *POINTS)
+    for k in ("thrust", "drag", "torque", "rolling_moment"):
+        np.testing.assert_array_equal(getattr(a, k), getattr(b, k))
+    for k in ("side_force", "pitching_moment", "flap_1c", "flap_1s"):
+        np.testing.assert_array_equal(getattr(a, k), 0.0)
+
+
+@pytest.mark.parametrize("inflow", ["drees", "pitt-peters"])
+def test_linear_inflow_vanishes_in_axial_flow_and_hover(prop, generic, inflow):
+    """mu = 0: no wake skew, no gradient: the uniform solution exactly (points 0 and 1)."""
+    a = pm.rotor_loads(prop, generic, *POINTS)
+    b = pm.rotor_loads(prop, generic.replace(inflow=inflow), *POINTS)
+    for k in ("thrust", "drag", "torque", "side_force", "pitching_moment"):
+        np.testing.assert_array_equal(getattr(a, k)[:2], getattr(b, k)[:2])
+    assert not b.inflow_extrapolated[:2].any()
+
+
+@pytest.mark.parametrize("inflow", ["drees", "pitt-peters"])
+def test_linear_inflow_gives_a_nose_up_pitching_moment_in_forward_flight(prop, generic, inflow):
+    """More inflow at the rear of the disk (k_x > 0): the upstream half carries more thrust,
+    M_P > 0 (blowback); thrust and torque change by a few percent only."""
+    a = pm.rotor_loads(prop, generic, *POINTS)
+    b = pm.rotor_loads(prop, generic.replace(inflow=inflow), *POINTS)
+    assert np.all(b.pitching_moment[2:] > 0.05 * a.rolling_moment[2:])
+    np.testing.assert_allclose(b.thrust[2:], a.thrust[2:], rtol=0.05)
+    np.testing.assert_allclose(b.torque[2:], a.torque[2:], rtol=0.05)
+    # the mean inflow (the root of eq 11) stays close to the uniform one
+    np.testing.assert_allclose(b.v_i_mean, a.v_i_mean, rtol=0.05)
+
+
+def test_inflow_gradients_match_their_published_formulas():
+    """Pitt & Peters: k_x = 15 pi / 32 tan(chi / 2), k_y = 0; Drees: k_x = 4/3 (1 - cos chi -
+    1.8 mu^2) / sin chi, k_y = -2 mu (Leishman 2006, Sec. 3.4); chi = atan(mu / lambda)."""
+    mu, lam = 0.1, 0.05
+    chi = math.atan2(mu, lam)
+    kx, ky = ph.inflow_gradients(mu, lam, ph.INFLOW_PITT_PETERS)
+    assert kx == pytest.approx(15 * math.pi / 32 * math.tan(chi / 2), rel=1e-14) and ky == 0.0
+    kx, ky = ph.inflow_gradients(mu, lam, ph.INFLOW_DREES)
+    assert kx == pytest.approx(4 / 3 * (1 - math.cos(chi) - 1.8 * mu**2) / math.sin(chi), rel=1e-14)
+    assert ky == pytest.approx(-2 * mu)
+    # edgewise (lambda = 0): chi = 90 deg
+    assert ph.inflow_gradients(0.2, 0.0, ph.INFLOW_PITT_PETERS)[0] == pytest.approx(15 * math.pi / 32)
+    # hover and the uniform model: no gradient
+    assert ph.inflow_gradients(0.0, 0.05, ph.INFLOW_DREES) == (0.0, 0.0)
+    assert ph.inflow_gradients(0.1, 0.05, ph.INFLOW_UNIFORM) == (0.0, 0.0)
+    # a wake above the disk: the mirrored angle (continuous through edgewise, 0 in axial descent)
+    assert ph.inflow_gradients(0.1, -0.05, ph.INFLOW_PITT_PETERS) == ph.inflow_gradients(0.1, 0.05,
+                                                                                       ph.INFLOW_PITT_PETERS)
+
+
+def test_linear_inflow_is_continuous_in_incidence(prop, generic):
+    """No jump through edgewise flight (the mirrored skew angle) nor near axial flow."""
+    b = np.radians(np.linspace(0.0, 130.0, 27))
+    r = pm.rotor_loads(prop, generic.replace(inflow="pitt-peters"), 8000 * RPM, 8.0, b)
+    assert r.converged.all()
+    jumps = np.abs(np.diff(r.thrust)) / r.thrust[0]
+    assert jumps.max() < 0.03
+
+
+def test_flapping_vanishes_in_axial_flow_and_hover(prop, generic):
+    a = pm.rotor_loads(prop, generic, *POINTS)
+    f = pm.rotor_loads(prop, generic.replace(flap_compliance=1.0), *POINTS)
+    np.testing.assert_array_equal(f.flap_1c[:2], 0.0)
+    np.testing.assert_array_equal(f.flap_1s[:2], 0.0)
+    np.testing.assert_array_equal(f.drag[:2], a.drag[:2])
+    np.testing.assert_array_equal(f.thrust, a.thrust)  # the thrust magnitude is the rigid blades'
+    np.testing.assert_array_equal(f.torque, a.torque)
+
+
+def test_flapping_tilts_the_disk_back_and_adds_rotor_drag(prop, generic):
+    """Blowback: beta_1c < 0 (tip-path plane tilted away from the in-plane motion), D grows
+    by -T beta_1c, the lateral flapping toward the retreating side lifts the advancing
+    blade (beta_1s > 0)."""
+    a = pm.rotor_loads(prop, generic, *POINTS)
+    f = pm.rotor_loads(prop, generic.replace(flap_compliance=1.0), *POINTS)
+    assert np.all(f.flap_1c[2:] < 0) and np.all(f.flap_1s[2:] > 0)
+    np.testing.assert_allclose(f.drag, a.drag - a.thrust * f.flap_1c, rtol=1e-12)
+    assert np.all(f.drag[2:] > a.drag[2:])
+
+
+def test_flapping_limits_rigid_and_articulated():
+    """Compliance -> 0 gives the rigid moments back; K = 0 (compliance -> inf) the articulated
+    blade, beta_1c = -M_1s / D_beta, beta_1s = M_1c / D_beta, with no hub moment."""
+    T, D, Y, MR, MP, damp, nb = 5.0, 0.3, 0.0, 0.05, 0.01, 0.2, 2
+    r = flapping(T, D, Y, MR, MP, damp, 1e-9, nb)
+    assert r.rolling_moment == pytest.approx(MR, rel=1e-6) and r.pitching_moment == pytest.approx(MP, rel=1e-6)
+    assert r.drag == pytest.approx(D, rel=1e-6)
+    r = flapping(T, D, Y, MR, MP, damp, 1e9, nb)
+    M1s, M1c = 2 * MR / nb, -2 * MP / nb
+    assert r.beta_1c == pytest.approx(-M1s / damp, rel=1e-6)
+    assert r.beta_1s == pytest.approx(M1c / damp, rel=1e-6)
+    assert abs(r.rolling_moment) < 1e-6 and abs(r.pitching_moment) < 1e-6
+
+
+def test_flapping_is_linear_in_the_advance_ratio_for_small_mu(prop, generic):
+    """beta_1c ~ mu for small mu (the rolling moment that drives it is)."""
+    V = np.array([0.25, 0.5, 1.0])
+    f = pm.rotor_loads(prop, generic.replace(flap_compliance=1.0), 8000 * RPM, V, math.pi / 2)
+    ratio = f.flap_1c / V
+    np.testing.assert_allclose(ratio, ratio[0], rtol=0.02)
+
+
+def test_flap_damping_is_the_lock_number_form():
+    """Constant chord c from the hub: int c r^3 dr = c R^4 / 4, D_beta = rho a c R^4 Omega^2 / 8."""
+    rho, a, c, R, om = 1.2, 5.7, 0.02, 0.1, 800.0
+    assert flap_damping(rho, a, c * R**4 / 4, om) == pytest.approx(rho * a * c * R**4 * om**2 / 8)
+
+
+def test_collective_offset_equals_a_geometry_with_higher_blade_angles(prop, generic):
+    d = math.radians(2.0)
+    shifted = pm.Propeller(name="shifted", radius=prop.radius, n_blades=prop.n_blades, r=prop.r, chord=prop.chord,
+                           theta=prop.theta + d)
+    a = pm.rotor_loads(prop, generic.replace(collective=d), *POINTS)
+    b = pm.rotor_loads(shifted, generic, *POINTS)
+    np.testing.assert_allclose(a.thrust, b.thrust, rtol=1e-12)
+    np.testing.assert_allclose(a.torque, b.torque, rtol=1e-12)
+    # more blade angle, more thrust in hover and axial climb (attached flow)
+    assert np.all(a.thrust[:2] > pm.rotor_loads(prop, generic, *POINTS).thrust[:2])
+
+
+@pytest.mark.parametrize("kw, match", [({"inflow": "glauert"}, "inflow must be one of"),
+                                       ({"flap_compliance": -1.0}, "flap_compliance"),
+                                       ({"collective": 1.0}, "collective")])
+def test_rotor_options_out_of_range_are_refused(generic, kw, match):
+    with pytest.raises(ValueError, match=match):
+        generic.replace(**kw)
