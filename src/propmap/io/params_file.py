@@ -40,8 +40,15 @@ the ``CamberedParams`` default, so a file normally lists them all (``write_param
     tip_loss = true
     hub_loss = false
 
-Either model also takes ``rho``, ``mu`` and ``speed_of_sound`` (the air) and the free
-text keys ``comment`` and ``source``.
+Either model also takes the rotor options (``RotorOptions``; docs/models.md), whose defaults
+are the paper's rigid blades in an azimuth-independent inflow::
+
+    inflow = "uniform"        # or "drees", "pitt-peters" (linear inflow models)
+    flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
+    collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
+
+``rho``, ``mu`` and ``speed_of_sound`` (the air) and the free text keys ``comment`` and
+``source``.
 
 Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
 never converted), finite, and within its range: the cambered keys as ``CamberedParams``
@@ -61,7 +68,7 @@ from pathlib import Path
 
 import tomli_w
 
-from ..core.airfoil import LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.airfoil import INFLOW_MODELS, LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
 from .atomic import atomic_write
 from .readers import show_path
 from .toml_file import load_toml
@@ -74,16 +81,20 @@ REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
 AIR_KEYS = ("rho", "mu", "speed_of_sound")
 TEXT_KEYS = ("comment", "source", "section_model")
 #: keys holding an angle in degrees in files, and the field they set [rad]
-DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re"}
+DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re",
+            "collective_deg": "collective"}
+#: the rotor options' file ranges (both section models)
+_ROTOR_RANGES = {"collective_deg": (-30.0, 30.0, False, False, "deg"),
+                 "flap_compliance": (0.0, 1e3, False, False, "rad/(N m)")}
 #: valid ranges of file keys checked here, (low, high, low open, high open, unit); the
 #: records check the rest (CamberedParams.RANGES)
 FILE_RANGES = {
     "gill2017": {"cl1": (0.0, 100.0, False, False, ""), "cl2": (0.0, 100.0, False, False, ""),
                  "cd": (0.0, 100.0, False, False, ""), "cd0": (0.0, 10.0, False, False, ""),
                  "cp_blasius": (0.0, 100.0, False, False, ""), "M": (0.0, 1e6, True, False, "1/rad"),
-                 "alpha0_deg": (0.0, 90.0, True, True, "deg")},
+                 "alpha0_deg": (0.0, 90.0, True, True, "deg"), **_ROTOR_RANGES},
     "cambered": {"alpha_L0_deg": (-20.0, 10.0, False, False, "deg"),
-                 "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg")},
+                 "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg"), **_ROTOR_RANGES},
     "air": {"rho": (1e-3, 2000.0, False, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
             "speed_of_sound": (0.0, 1e4, True, False, "m/s")},
 }
@@ -140,6 +151,8 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
             raise ValueError(f"{where}: {key} must be true or false, got {_short(data[key])}")
         elif key == "lift_model" and data[key] not in LIFT_MODELS:
             raise ValueError(f"{where}: lift_model must be one of {', '.join(LIFT_MODELS)}, got {_short(data[key])}")
+        elif key == "inflow" and data[key] not in INFLOW_MODELS:
+            raise ValueError(f"{where}: inflow must be one of {', '.join(INFLOW_MODELS)}, got {_short(data[key])}")
     kw = {}
     for key, name in keys.items():
         if key not in data:
