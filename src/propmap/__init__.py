@@ -24,7 +24,8 @@ _EXPORTS = {
     "rotor_wrench": "core.vector", "catalogue": "io.catalogue", "load_propeller": "io.catalogue",
     "read_geometry": "io.readers", "read_params": "io.params_file", "resolve_params": "io.params_file",
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
-    "RotorMap": "maps", "build_map": "maps",
+    "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
+    "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

@@ -8,7 +8,8 @@ import numpy as np
 
 from .io.atomic import atomic_write
 
-__all__ = ["plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases"]
+__all__ = ["plot_validation", "plot_envelope", "plot_cv_summary", "plot_cases", "plot_flight_timeseries",
+           "plot_flight_speed"]
 
 
 def _pyplot():
@@ -277,4 +278,73 @@ def plot_map_contours(ds, rpm: float, path, *, title: str = "") -> Path:
         ax.set_xlabel("incidence [deg] (0 climb, 90 edgewise, 180 descent)")
         ax.set_ylabel("airspeed V [m/s]")
     fig.suptitle(f"{title} at {float(row['rpm']):.0f} rpm (hatched: vortex ring or multiple roots)", fontsize=9)
+    return _save(fig, path)
+
+
+def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path, *, title: str = "",
+                           other: dict | None = None) -> Path:
+    """Measured against predicted body force over time, one column per log, one row per axis.
+
+    ``t_by_log``, ``measured``, ``predicted``: log name -> time [s] (N,), force [N] (N, 3);
+    ``other``: optional label -> {log name -> force (N, 3)} drawn thin (baselines, references).
+    """
+    plt = _pyplot()
+    names = list(t_by_log)
+    fig, axes = plt.subplots(3, len(names), figsize=(4.2 * len(names), 7), squeeze=False, constrained_layout=True,
+                             sharey="row")
+    for j, name in enumerate(names):
+        t = t_by_log[name]
+        for k, axis in enumerate("xyz"):
+            ax = axes[k, j]
+            ax.plot(t, measured[name][:, k], color="k", lw=1.0, label="measured m a")
+            ax.plot(t, predicted[name][:, k], color="C0", lw=1.0, label="propmap")
+            for i, (label, forces) in enumerate((other or {}).items()):
+                if name in forces:
+                    ax.plot(t, forces[name][:, k], lw=0.7, alpha=0.8, color=f"C{i + 1}", label=label)
+            ax.set_ylabel(f"F{axis} [N]")
+            ax.grid(alpha=0.3)
+        axes[0, j].set_title(name, fontsize=8)
+        axes[2, j].set_xlabel("t [s]")
+    axes[0, 0].legend(fontsize=7)
+    fig.suptitle(title, fontsize=9)
+    return _save(fig, path)
+
+
+def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, path, *, title: str = "") -> Path:
+    """Like Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed.
+
+    ``loads``: "thrust", "drag", "torque" -> (N,) collective rotor thrust, in-plane force
+    and sum of |torque| of the fitted model; ``hover``: the hover model's (T = k_T Omega^2,
+    D = 0, Q = k_Q Omega^2) same keys; ``vertical_error``: label -> (N,) body-z force error
+    (model - measured) [N]. Medians in 1 m/s bins.
+    """
+    plt = _pyplot()
+    speed = np.asarray(speed)
+    edges = np.arange(0.0, max(float(np.max(speed)), 1.0) + 1.0, 1.0)
+    centre = 0.5 * (edges[1:] + edges[:-1])
+
+    def binned(y):
+        out = np.full(centre.size, np.nan)
+        for i in range(centre.size):
+            m = (speed >= edges[i]) & (speed < edges[i + 1])
+            if m.sum() >= 3:
+                out[i] = np.median(np.asarray(y)[m])
+        return out
+
+    fig, axes = plt.subplots(1, 4, figsize=(15, 3.6), constrained_layout=True)
+    labels = (("thrust", "collective thrust [N]"), ("drag", "collective in-plane force [N]"),
+              ("torque", "sum |torque| [N m]"))
+    for ax, (key, ylabel) in zip(axes, labels):
+        ax.plot(centre, binned(loads[key]), "o-", ms=3, label="BET+BEMT (fitted)")
+        ax.plot(centre, binned(hover[key]), "s--", ms=3, label="hover model")
+        ax.set_ylabel(ylabel)
+    for i, (label, err) in enumerate(vertical_error.items()):
+        axes[3].plot(centre, binned(err), "o-" if i == 0 else "s--", ms=3, label=label)
+    axes[3].axhline(0, color="r", lw=1, label="ground truth")
+    axes[3].set_ylabel("vertical force error [N] (median)")
+    for ax in axes:
+        ax.set_xlabel("speed [m/s]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle(title, fontsize=9)
     return _save(fig, path)

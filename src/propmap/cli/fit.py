@@ -60,12 +60,13 @@ def _out_files(out: Path) -> list:
                                      for s in (".report.json", ".report.txt", ".png")]
 
 
-def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None) -> dict:
+def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
+                   body=None) -> dict:
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
     report = {**result.to_dict(), "base": base_label, "params_file": str(out)}
-    write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})")
+    write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body)
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)

@@ -14,6 +14,7 @@ from .. import __version__
 from .demo import demo
 from .export_sim import export_sim_command
 from .fit import fit
+from .flight import fit_flight_command, wrench_command
 from .loads import loads
 from .map import map_command
 from .props import props
@@ -26,8 +27,9 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, map_command, export_sim_command, validate, fit, demo):
+for _cmd in (props, loads, wrench_command, map_command, export_sim_command, validate, fit, demo):
     cli.add_command(_cmd)
+fit.add_command(fit_flight_command)
 
 
 _PACKAGE_DIR = __file__.rsplit("/cli/", 1)[0]

@@ -26,13 +26,16 @@ class RotorWrench:
     Attributes
     ----------
     force : ndarray, shape S + (3,)
-        T z_hat - D e_ip [N], e_ip the unit in-plane velocity direction.
+        T z_hat - D e_ip + Y e_adv [N], e_ip the unit in-plane velocity direction and
+        e_adv = -spin (z_hat x e_ip) the advancing side (Y = 0 with the paper's uniform
+        inflow and rigid blades).
     torque : ndarray, shape S + (3,)
-        Aerodynamic moment about the hub, -spin (Q z_hat + M_R e_ip) [N m]: the shaft
-        torque opposing the rotation (at constant speed, the reaction the motor passes to
-        the airframe) and the rolling moment M_R of the advancing/retreating asymmetry
-        (:attr:`RotorLoads.rolling_moment`), which for a ccw rotor points along -e_ip: the
-        advancing side, where the extra thrust acts, lies at -z_hat x e_ip.
+        Aerodynamic moment about the hub, -spin (Q z_hat + M_R e_ip) + M_P (e_ip x z_hat)
+        [N m]: the shaft torque opposing the rotation (at constant speed, the reaction the
+        motor passes to the airframe), the rolling moment M_R of the advancing/retreating
+        asymmetry (:attr:`RotorLoads.rolling_moment`), which for a ccw rotor points along
+        -e_ip: the advancing side, where the extra thrust acts, lies at -z_hat x e_ip; and
+        the pitching moment M_P (0 with the uniform inflow and rigid blades).
     loads : RotorLoads
         The scalar loads and flags behind them, shape S.
     """
@@ -108,15 +111,17 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
 
     Notes
     -----
-    The inflow does not depend on azimuth (paper Section II), so the side force and the
-    pitching moment (about z_hat x e_ip) are zero by symmetry; spin mirrors the shaft
-    torque and the rolling moment and leaves the force unchanged.
+    With the paper's inflow, independent of azimuth (Section II), and rigid blades, the
+    side force and the pitching moment (about z_hat x e_ip) are zero by symmetry; spin then
+    mirrors the shaft torque and the rolling moment and leaves the force unchanged. A
+    linear inflow model or flapping blades (RotorOptions) give both.
     """
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure)
-    force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s)
+    force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s,
+                                   side_force=loads.side_force, pitching_moment=loads.pitching_moment)
     return RotorWrench(force=force, torque=torque, loads=loads)
 
 
@@ -149,11 +154,14 @@ def disk_frame(velocity, axis):
     return V, z, speed, beta
 
 
-def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin):
+def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin, *, side_force=0.0, pitching_moment=0.0):
     """(force, moment) vectors, shape S + (3,), from the scalar loads (shape S), the
-    velocity V and unit axis z (shape S + (3,) or broadcastable) and the spin sign:
-    force T z - D e_ip, moment -spin (Q z + M_R e_ip), e_ip the in-plane unit velocity
-    (0 where the velocity is axial or zero)."""
+    velocity V and unit axis z (shape S + (3,) or broadcastable) and the spin sign.
+
+    force T z - D e_ip + Y e_adv, moment -spin (Q z + M_R e_ip) + M_P (e_ip x z), with e_ip
+    the in-plane unit velocity (0 where the velocity is axial or zero) and e_adv =
+    -spin (z x e_ip) the direction of the advancing side (docs/conventions.md).
+    """
     shape = np.shape(thrust)
     z = np.broadcast_to(z, shape + (3,))
     V = np.broadcast_to(V, shape + (3,))
@@ -161,7 +169,12 @@ def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin):
     n_ip = np.linalg.norm(v_ip, axis=-1, keepdims=True)
     e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(V, axis=-1, keepdims=True), 1e-300),
                     v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
-    force = np.asarray(thrust)[..., None] * z - np.asarray(drag)[..., None] * e_ip
     s = np.broadcast_to(spin, shape)[..., None]
+    lateral = np.cross(z, e_ip)  # z x e_ip
+    force = np.asarray(thrust)[..., None] * z - np.asarray(drag)[..., None] * e_ip
     moment = -s * (np.asarray(torque)[..., None] * z + np.asarray(rolling_moment)[..., None] * e_ip)
+    if np.any(side_force):
+        force = force - s * np.asarray(side_force)[..., None] * lateral
+    if np.any(pitching_moment):
+        moment = moment - np.asarray(pitching_moment)[..., None] * lateral
     return force, moment

@@ -5,7 +5,7 @@ from .data import (DataError, LevelFlightData, LoadData, loads_from_catalogue, l
 from .fit import (FitOptions, FitResult, Identifiability, X0_PAPER, fit_level_flight, fit_loads, fit_loads_joint,
                   level_flight_forces)
 from .synthetic import simulate_level_flight
-from .vehicle import Rotor, Vehicle, VehicleFileError, read_vehicle
+from ..vehicle import Rotor, Vehicle, VehicleFileError, read_vehicle
 
 __all__ = [
     "DataError", "LevelFlightData", "LoadData", "loads_from_catalogue", "loads_from_uiuc_files",

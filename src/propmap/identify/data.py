@@ -40,7 +40,7 @@ import numpy as np
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry
 from ..io.readers import MAX_FILE_BYTES, RPM_MAX, decode_input_text, parse_number, read_input_bytes, show_path
-from .vehicle import Vehicle
+from ..vehicle import Vehicle
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
            "loads_from_uiuc_files", "body_to_world", "rotor_kinematics"]

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 from scipy import optimize, stats
@@ -27,7 +27,7 @@ from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
-from .vehicle import Vehicle
+from ..vehicle import Vehicle
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
            "fit_loads_joint", "level_flight_forces", "param_names", "CAMBERED_FIT", "CAMBERED_FIT_STATIC",
@@ -61,8 +61,12 @@ CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
 MIN_RATES_FOR_RE = 3
 BODY_BOUNDS = {"cl1_body": (0.0, 10.0), "cl2_body": (0.0, 5.0), "alpha0_body": (math.radians(3), math.radians(60))}
 BODY_X0 = (0.0, 0.0, 0.47)
+#: bounds of the rotor options (RotorOptions) and of the airframe drag (core/body.py) when fitted
+ROTOR_BOUNDS = {"collective": (math.radians(-15), math.radians(15)), "flap_compliance": (0.0, 50.0)}
+AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag_area_z": (0.0, 0.05),
+                   "wash_factor": (0.0, 3.0)}
 #: parameters that are angles [rad], reported in degrees
-ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re")
+ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined
 SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
 M_SMOOTH = 30.0  # first stage of the continuation in M (eq 3's blend has no root folds at 30)
@@ -289,7 +293,7 @@ class FitResult:
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
                 for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
         lines.append("scaled Jacobian singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
-        level = self.extra.get("kind") == "level_flight"
+        level = self.extra.get("kind") in ("level_flight", "flight")
         unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
         r = self.residuals
         order = np.argsort(-np.abs(r))[:max_residuals]
@@ -361,7 +365,7 @@ def _identifiability(names, x, jac, residuals) -> Identifiability:
 
 
 def _bounds(names, options: FitOptions):
-    table = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **(options.bounds or {})}
+    table = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS, **(options.bounds or {})}
     unknown = [n for n in names if n not in table]
     if unknown:
         raise ValueError(f"cannot fit {', '.join(unknown)}: valid names are {', '.join(table)}")
@@ -411,7 +415,10 @@ def _jacobian(residual, x, lb, ub):
 
 
 def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionParams:
-    kw = {n: float(v) for n, v in zip(names, x) if not n.endswith("_body")}
+    """The section record with the fitted values of its own fields (other names, such as the
+    body-lift or airframe terms, are the caller's)."""
+    own = {f.name for f in fields(base)}
+    kw = {n: float(v) for n, v in zip(names, x) if n in own}
     if isinstance(base, AirfoilParams):
         kw["lift_model"] = options.lift_model
     if options.M is not None:

@@ -16,7 +16,7 @@ from ..core.airfoil import Air, AirfoilParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 from .data import LevelFlightData
 from .fit import level_flight_forces
-from .vehicle import Vehicle
+from ..vehicle import Vehicle
 
 __all__ = ["simulate_level_flight"]
 

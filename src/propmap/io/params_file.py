@@ -48,7 +48,12 @@ are the paper's rigid blades in an azimuth-independent inflow::
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
 
 ``rho``, ``mu`` and ``speed_of_sound`` (the air) and the free text keys ``comment`` and
-``source``.
+``source``. A flight fit (``propmap fit flight``) adds the airframe drag it identified, which
+``propmap wrench`` uses and the single-rotor commands ignore::
+
+    [body]
+    drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
+    wash_factor = 1.0                   # slipstream factor, in [0, 3] (core/body.py)
 
 Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
 never converted), finite, and within its range: the cambered keys as ``CamberedParams``
@@ -73,13 +78,14 @@ from .atomic import atomic_write
 from .readers import show_path
 from .toml_file import load_toml
 
-__all__ = ["ParamsFileError", "read_params", "write_params", "resolve_params", "params_to_dict",
-           "params_from_dict", "named_sets", "SECTION_MODELS"]
+__all__ = ["ParamsFileError", "read_params", "read_body_drag", "write_params", "resolve_params", "params_to_dict",
+           "params_from_dict", "body_from_dict", "named_sets", "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
 REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
 AIR_KEYS = ("rho", "mu", "speed_of_sound")
 TEXT_KEYS = ("comment", "source", "section_model")
+BODY_TABLE = "body"
 #: keys holding an angle in degrees in files, and the field they set [rad]
 DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re",
             "collective_deg": "collective"}
@@ -135,7 +141,7 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
         raise ValueError(f"{where}: missing key(s) {', '.join(missing)} (required for section_model "
                          f"{model!r}: {', '.join(REQUIRED[model])})")
     keys = _file_keys(model)
-    unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS)))
+    unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS) - {BODY_TABLE}))
     if unknown:
         shown = ", ".join(_short(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
@@ -166,7 +172,45 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
         air = Air(**{k: data[k] for k in AIR_KEYS if k in data})
     except (TypeError, ValueError) as exc:
         raise ValueError(f"{where}: {exc}") from None
+    body_from_dict(data, where=where)  # validated here too, so that every reader refuses a bad table
     return params, air
+
+
+def body_from_dict(data: dict, *, where: str = "parameters"):
+    """The airframe drag of a file-form dict's ``[body]`` table, or None without one.
+
+    Returns
+    -------
+    BodyDrag or None
+
+    Raises
+    ------
+    ValueError
+        A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
+        values of the wrong type or out of range (core/body.py); the message starts with
+        ``where``.
+    """
+    from ..core.body import BodyDrag
+
+    if BODY_TABLE not in data:
+        return None
+    table = data[BODY_TABLE]
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {_short(table)}")
+    extra = sorted(str(k) for k in table if k not in ("drag_area", "wash_factor", "comment"))
+    if extra:
+        raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(_short(k, 40) for k in extra[:5])} "
+                         "(allowed: drag_area, wash_factor, comment)")
+    if "drag_area" not in table:
+        raise ValueError(f"{where}: [body]: missing key 'drag_area'")
+    area = table["drag_area"]
+    if not (isinstance(area, list) and len(area) == 3):
+        raise ValueError(f"{where}: [body]: drag_area must be 3 numbers [m^2], got {_short(area)}")
+    for k, v in enumerate(area):
+        _check_number(v, f"[body] drag_area[{k}]", where, (0.0, 10.0, False, False, "m^2"))
+    if "wash_factor" in table:
+        _check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
+    return BodyDrag(drag_area=tuple(float(v) for v in area), wash_factor=float(table.get("wash_factor", 0.0)))
 
 
 def _short(value, n: int = 60) -> str:
@@ -244,11 +288,21 @@ def read_params(path) -> tuple[SectionParams, Air]:
         raise ParamsFileError(str(exc)) from None
 
 
-def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str = "") -> None:
+def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str = "", body=None) -> None:
     """Write ``params`` and ``air`` (every field) atomically to ``path``.
 
     Reading the file back with :func:`read_params` gives the same record, its angles to
     within the degree-radian round trip (relative 2e-16).
+
+    Parameters
+    ----------
+    path : str or Path
+    params : AirfoilParams or CamberedParams
+    air : Air
+    comment : str
+        Written as the file's ``comment``.
+    body : BodyDrag, optional
+        Airframe drag, written as the ``[body]`` table (:func:`read_body_drag` reads it).
 
     Raises
     ------
@@ -258,8 +312,27 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
     data = params_to_dict(params, air)
     if comment:
         data["comment"] = comment
+    if body is not None:
+        data[BODY_TABLE] = {"drag_area": list(body.drag_area), "wash_factor": body.wash_factor}
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
+
+
+def read_body_drag(path):
+    """The airframe drag (``[body]`` table) of a parameter file, or None without one.
+
+    Raises
+    ------
+    ParamsFileError
+        As :func:`read_params`.
+    """
+    path = Path(path)
+    data = load_toml(path, ParamsFileError)
+    try:
+        params_from_dict(data, where=show_path(path))
+        return body_from_dict(data, where=show_path(path))
+    except ValueError as exc:
+        raise ParamsFileError(str(exc)) from None
 
 
 def named_sets() -> tuple[str, ...]:

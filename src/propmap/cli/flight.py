@@ -1,0 +1,298 @@
+"""``propmap fit flight`` and ``propmap wrench``: flight logs against the vehicle model."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+
+from ._common import InputError, check_outputs, load_params
+from .fit import _options, _run_fit, _write_outputs, with_fit_options
+
+#: the densities accepted on the command line [kg/m^3] (as parameter files)
+RHO_RANGE = (1e-3, 2000.0)
+
+
+def _rho(rho, air):
+    from ..core.airfoil import Air
+
+    if rho is None:
+        return air
+    if not (math.isfinite(rho) and RHO_RANGE[0] <= rho <= RHO_RANGE[1]):
+        raise InputError(f"--rho must be in [{RHO_RANGE[0]:g}, {RHO_RANGE[1]:g}] kg/m^3, got {rho!r}")
+    return Air(rho=rho, mu=air.mu, speed_of_sound=air.speed_of_sound)
+
+
+def _vehicle(path: Path):
+    from ..vehicle import VehicleFileError, read_vehicle
+
+    try:
+        return read_vehicle(path)
+    except VehicleFileError as exc:
+        raise InputError(f"--vehicle: {exc}") from None
+
+
+def _logs(paths):
+    from ..io.flightlog import FlightLogError, read_flight_log
+
+    logs = []
+    for p in paths:
+        try:
+            logs.append(read_flight_log(p))
+        except FlightLogError as exc:
+            raise InputError(f"LOG: {exc}") from None
+    return logs
+
+
+def _vehicle_inputs(vehicle: Path) -> list:
+    """The files a vehicle TOML names (geometry and parameter files), relative to it: inputs too."""
+    import tomllib
+
+    try:
+        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
+        specs = [r.get(k) for r in rotors if isinstance(r, dict) for k in ("propeller", "params")]
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
+        return []
+    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
+
+
+def _samples(logs, veh, rate_hz):
+    from ..identify.flight import flight_samples
+
+    try:
+        return flight_samples(logs, veh, rate_hz=rate_hz)
+    except ValueError as exc:
+        raise InputError(str(exc)) from None
+
+
+def _table(rows: list[tuple[str, dict]]) -> str:
+    """Rows of force (and moment) errors as text."""
+    head = f"{'':<44}{'Fx':>7}{'Fy':>7}{'Fz':>7}{'F':>7}"
+    moments = any("M" in r for _, r in rows)
+    if moments:
+        head += f"   {'Mx':>7}{'My':>7}{'Mz':>7}{'M':>7}"
+    lines = [head + ("   [N]; [N m]" if moments else "   [N]")]
+    for label, r in rows:
+        line = f"{label[:43]:<44}" + "".join(f"{r[k]:>7.3f}" for k in ("Fx", "Fy", "Fz", "F"))
+        if moments and "M" in r:
+            line += "   " + "".join(f"{r[k]:>7.4f}" for k in ("Mx", "My", "Mz", "M"))
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def _flight_out_files(out: Path) -> list:
+    stem = Path(out).with_suffix("")
+    return [("--out", Path(out))] + [("--out (report/figure beside it)", stem.with_name(stem.name + s))
+                                     for s in (".report.json", ".report.txt", ".png", ".speed.png")]
+
+
+@click.command("flight")
+@click.argument("log_paths", metavar="LOG...", nargs=-1, required=True, type=click.Path(path_type=Path))
+@click.option("--vehicle", type=click.Path(path_type=Path), required=True,
+              help="Vehicle TOML, its rotors in the logs' motor order.")
+@click.option("--holdout", default="", help="Comma-separated LOG file names to hold out (scored, not fitted).")
+@click.option("--base", "base_spec", default="generic", show_default=True,
+              help="Start and constants not fitted: a named set or a parameter file.")
+@click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of --base).")
+@click.option("--rate-hz", type=float, default=25.0, show_default=True,
+              help="Samples per second taken from the logs, in (0, 10000].")
+@click.option("--cross-validate", "cross_validate", is_flag=True,
+              help="Also leave each training log out in turn (one fit per log) and report the held-out errors.")
+@with_fit_options
+def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cross_validate, out, M, lift_model,
+                       fit_params, multistart, no_prior, as_json):
+    """Fit the rotor and airframe parameters to flight logs (eqs 16-18 in three axes).
+
+    LOG: NeuroBEM .mat or .csv, or PX4 .ulg; the vehicle file lists its rotors in the logs'
+    motor order. The measured force is the mass times the logged specific force.
+    """
+    import numpy as np
+
+    from ..identify.flight import (cross_validate_flight, fit_baselines, baseline_force, fit_flight,
+                                   fitted_body_drag, flight_errors, hover_torque_check, predict_flight,
+                                   speed_band_errors)
+
+    check_outputs(_flight_out_files(out), [*log_paths, vehicle, base_spec])
+    veh = _vehicle(vehicle)
+    check_outputs(_flight_out_files(out), _vehicle_inputs(vehicle))
+    if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
+        raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
+    base, air, base_label = load_params(base_spec, option="--base")
+    air = _rho(rho, air)
+    logs = _logs(log_paths)
+    names = [lg.name for lg in logs]
+    if len(set(names)) != len(names):
+        raise InputError("LOG: two logs have the same file name; give each log once")
+    held = [h.strip() for h in holdout.split(",") if h.strip()]
+    unknown = [h for h in held if Path(h).name not in names]
+    if unknown:
+        raise InputError(f"--holdout: {unknown[0]!r} is not one of the LOGs ({', '.join(names)})")
+    held = {Path(h).name for h in held}
+    if len(held) == len(names):
+        raise InputError("--holdout: every LOG is held out; keep at least one to fit")
+    samples = _samples(logs, veh, rate_hz)
+    held_idx = [k for k, n in enumerate(names) if n in held]
+    train = samples.select(~np.isin(samples.log_index, held_idx))
+    opts = _options(M, lift_model, multistart, fit_params, no_prior)
+    res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts)
+    body = fitted_body_drag(res)
+    pred = predict_flight(samples, veh, res.params, body=body, air=air)
+    baselines = fit_baselines(train, veh)
+    rows, report = [], {"training": {}, "held_out": {}}
+
+    def score(label, mask, key, store):
+        sub = samples.select(mask)
+        e = {"model": flight_errors(pred.force[mask], sub, pred.moment[mask])}
+        rows.append((f"{label}: propmap", e["model"]))
+        for k, bl in baselines.items():
+            e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
+            rows.append((f"{label}: {bl['label'][:30]}", e[k]))
+        if sub.reference_force is not None:
+            e["reference"] = flight_errors(sub.reference_force, sub, sub.reference_moment)
+            rows.append((f"{label}: log's own (NeuroBEM BEM+NN)", e["reference"]))
+        e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
+        store[key] = e
+
+    score("training", ~np.isin(samples.log_index, held_idx), "all", report)
+    report["training"] = report.pop("all")
+    for k in held_idx:
+        score(f"held out {names[k]}", samples.log_index == k, names[k], report["held_out"])
+    report["baselines"] = baselines
+    report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
+    report["body_drag"] = res.extra.get("body_drag")
+    if cross_validate:
+        cv = _run_fit(cross_validate_flight, train, veh, base=base, air=air, options=opts)
+        report["cross_validation"] = cv
+    res.extra["flight_report"] = report
+    text = [f"{samples.n} samples at {rate_hz:g} Hz from {len(names)} log(s); fitted on "
+            f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
+    bands = report["training"]["speed_bands"]
+    text.append("training F by speed band: " + ", ".join(
+        f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
+        + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
+    ht = report["hover_torque"]
+    if ht:
+        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s: model {ht['torque_model']:.4f} N m, measured "
+                    f"from the yaw channel {ht['torque_measured']:.4f} N m (ratio {ht['ratio']:.2f})")
+    if cross_validate:
+        cv = report["cross_validation"]
+        text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "
+                    + ", ".join(f"{k} {v:.3f}" for k, v in cv["pooled"].items()))
+        text.append(_table([(f"held out {f['log']}", f["model"]) for f in cv["folds"]]))
+
+    def figures(png):
+        from ..identify.flight import BASELINES
+        from ..plots import plot_flight_speed, plot_flight_timeseries
+
+        t = {n: samples.t[samples.log_index == k] for k, n in enumerate(names)}
+        meas = {n: samples.force[samples.log_index == k] for k, n in enumerate(names)}
+        model = {n: pred.force[samples.log_index == k] for k, n in enumerate(names)}
+        key, label, _ = BASELINES[-1]
+        other = {label[:40]: {n: baseline_force(baselines[key], samples.of_log(k), veh) for k, n in enumerate(names)}}
+        if samples.reference_force is not None:
+            other["NeuroBEM BEM+NN (log)"] = {n: samples.reference_force[samples.log_index == k]
+                                              for k, n in enumerate(names)}
+        plot_flight_timeseries(t, meas, model, png, other=other,
+                               title=f"fit flight: measured m a vs predicted body force ({veh.name or vehicle.name}); "
+                                     f"held out: {', '.join(sorted(held)) or 'none'}")
+        hover = _hover_loads(res.params, veh, samples, air)
+        loads = {"thrust": sum(lo.thrust for lo in pred.loads), "drag": sum(lo.drag for lo in pred.loads),
+                 "torque": sum(np.abs(lo.torque) for lo in pred.loads)}
+        vertical = {"BET+BEMT (fitted)": pred.force[:, 2] - samples.force[:, 2],
+                    "hover model": hover["thrust"] - samples.force[:, 2]}
+        stem = png.with_suffix("")
+        plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
+                          title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
+
+    _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures, body=body)
+
+
+def _hover_loads(params, veh, samples, air):
+    """The hover model of every rotor (T = k_T Omega^2, D = 0, Q = k_Q Omega^2), summed."""
+    import numpy as np
+
+    from ..core.hover import HoverModel
+
+    om = samples.rotor_omega
+    T = np.zeros(samples.n)
+    Q = np.zeros(samples.n)
+    for i, r in enumerate(veh.rotors):
+        h = HoverModel.from_model(r.propeller, r.params or params, float(np.median(om[:, i])), air=air)
+        T += h.thrust(om[:, i]) * r.axis[2]
+        Q += np.abs(h.torque(om[:, i]))
+    return {"thrust": T, "drag": np.zeros(samples.n), "torque": Q}
+
+
+@click.command("wrench")
+@click.argument("log_path", metavar="LOG", type=click.Path(path_type=Path))
+@click.option("--vehicle", type=click.Path(path_type=Path), required=True,
+              help="Vehicle TOML, its rotors in the log's motor order.")
+@click.option("--params", "params_spec", default=None,
+              help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
+                   "else 'generic'.")
+@click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of the parameter set).")
+@click.option("--out", type=click.Path(path_type=Path), required=True, help="CSV to write.")
+@click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
+def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
+    """Predicted body force and moment at every sample of a flight log.
+
+    Writes t, Fx, Fy, Fz, Mx, My, Mz (body frame: x forward, y left, z up; N, N m) and, when
+    the log measures them, Fx_measured ... Mz_measured (m a_s and I dw/dt + w x I w); prints
+    the rms errors.
+    """
+    import pandas as pd
+
+    from ..io.atomic import atomic_write
+    from ..io.params_file import ParamsFileError, read_body_drag
+    from ..identify.flight import flight_errors
+
+    check_outputs([("--out", out)], [log_path, vehicle, params_spec])
+    veh = _vehicle(vehicle)
+    check_outputs([("--out", out)], _vehicle_inputs(vehicle))
+    params, air, label = load_params(params_spec or "generic", option="--params")
+    air = _rho(rho, air)
+    body = veh.body_drag
+    if params_spec is not None and Path(params_spec).is_file():
+        try:
+            body = read_body_drag(params_spec) or body
+        except ParamsFileError as exc:
+            raise InputError(f"--params: {exc}") from None
+    (log,) = _logs([log_path])
+    samples = _samples([log], veh, 1e4)  # every sample
+    from ..vehicle import vehicle_wrench
+
+    w = _run_fit(vehicle_wrench, veh, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
+                 rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air)
+    cols = {"t": samples.t}
+    for k, a in enumerate("xyz"):
+        cols[f"F{a}"] = w.force[:, k]
+    for k, a in enumerate("xyz"):
+        cols[f"M{a}"] = w.moment[:, k]
+    for k, a in enumerate("xyz"):
+        cols[f"F{a}_measured"] = samples.force[:, k]
+    if samples.moment is not None:
+        for k, a in enumerate("xyz"):
+            cols[f"M{a}_measured"] = samples.moment[:, k]
+    with atomic_write(out) as fh:
+        pd.DataFrame(cols).to_csv(fh, index=False, float_format="%.6g")
+    err = flight_errors(w.force, samples, w.moment)
+    rows = [(f"propmap ({label})", err)]
+    if samples.reference_force is not None:
+        rows.append(("log's own prediction (NeuroBEM BEM+NN)",
+                     flight_errors(samples.reference_force, samples, samples.reference_moment)))
+    if as_json:
+        import json
+
+        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n}, indent=2))
+    else:
+        click.echo(f"{samples.n} samples of {log.name} (stopped-rotor samples left out), params {label}, "
+                   f"rho {air.rho:g} kg/m^3")
+        click.echo(_table(rows))
+        if "M_zero" in err:
+            click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
+    click.echo(f"wrote {out}", err=True)
+    skipped = log.n - samples.n
+    if skipped:
+        click.echo(f"propmap: warning: {skipped} sample(s) with a stopped rotor (Omega < 1 rad/s) were left out",
+                   err=True)

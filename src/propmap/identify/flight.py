@@ -1,0 +1,450 @@
+"""Identification from flight logs: the paper's force balance (eqs 16-18) generalised to
+agile flight.
+
+Gill & D'Andrea (2017), Sec. III, identify the section parameters from steady level
+flight, where the rotors' vertical force balances the weight (eq 16). An agile flight is
+not steady, but a log measures the acceleration: the aerodynamic force on the vehicle is
+F = m a_s, a_s the specific force (acceleration minus gravity, what the accelerometer
+reads), and the moment about the centre of mass M = I dw/dt + w x I w. Every logged sample
+is then an equation like eq 16, in three axes: the residual is the predicted aerodynamic
+force (:func:`propmap.vehicle.vehicle_wrench`) minus m a_s, and eq 18's least squares runs
+over all samples and axes. The fitting engine, its bounds, population prior,
+identifiability report and multistart are identify.fit's (docs/identification.md).
+
+What is fitted: any section parameter, the rotor options (``collective``,
+``flap_compliance``) and the airframe drag (``drag_area_x``, ``drag_area_y``,
+``drag_area_z``, ``wash_factor``; core/body.py). The default choice
+(:data:`FLIGHT_FIT`) was made by leave-one-log-out cross-validation on the NeuroBEM logs
+(docs/flight.md).
+
+Samples are taken at ``rate_hz`` (25 Hz by default, from logs at hundreds of Hz): the
+measured forces of the NeuroBEM logs carry no content above 2 Hz that a quasi-steady
+rotor model can follow (docs/flight.md), and the cost of a fit is proportional to the
+samples.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..core.airfoil import Air, CamberedParams, SectionParams
+from ..core.body import BodyDrag
+from ..core.solver import Discretization, rotor_loads
+from ..io.flightlog import FlightLog
+from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
+from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _finish, _fit_with_continuation, _params_from,
+                  _with_prior)
+
+__all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag", "flight_errors",
+           "fit_baselines", "baseline_force", "speed_band_errors", "cross_validate_flight", "hover_torque_check",
+           "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
+
+#: parameters fitted by default (docs/flight.md: chosen by leave-one-log-out cross-validation)
+FLIGHT_FIT = ("collective", "cl_alpha", "flap_compliance", "drag_area_x", "drag_area_y", "drag_area_z",
+              "wash_factor")
+AIRFRAME_NAMES = tuple(AIRFRAME_BOUNDS)
+#: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
+#: rotor thrust (docs/flight.md), far inside the flight data's model error
+FLIGHT_DISCRETIZATION = Discretization(24, 8)
+#: speed bands of the report [m/s]
+SPEED_BANDS = ((0.0, 3.0), (3.0, 6.0), (6.0, 9.0), (9.0, math.inf))
+#: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
+OMEGA_STOPPED = 1.0
+
+
+@dataclass(frozen=True)
+class FlightSamples:
+    """Samples of one or more flight logs for the force balance, N samples.
+
+    Attributes
+    ----------
+    log_names : tuple of str
+        The logs, in order.
+    log_index : ndarray of int, shape (N,)
+        Which log each sample comes from.
+    t : ndarray, shape (N,)
+        Time within its log [s].
+    velocity, angular_velocity : ndarray, shape (N, 3)
+        Body velocity over the ground [m/s] and rates [rad/s], body axes.
+    rotor_omega, rotor_acceleration : ndarray, shape (N, n_rotors)
+        Omega [rad/s] and dOmega/dt [rad/s^2] (zeros where the log has none), vehicle
+        rotor order.
+    force : ndarray, shape (N, 3)
+        Measured aerodynamic force m a_s [N].
+    moment : ndarray, shape (N, 3), or None
+        Measured moment I dw/dt + w x I w [N m] (None without the vehicle's inertia).
+    reference_force, reference_moment : ndarray, shape (N, 3), or None
+        The logs' own model prediction (NeuroBEM's BEM + NN) where every log has one.
+    rate_hz : float
+        Sampling rate of the samples [Hz].
+    """
+
+    log_names: tuple[str, ...]
+    log_index: np.ndarray
+    t: np.ndarray
+    velocity: np.ndarray
+    angular_velocity: np.ndarray
+    rotor_omega: np.ndarray
+    rotor_acceleration: np.ndarray
+    force: np.ndarray
+    moment: np.ndarray | None
+    reference_force: np.ndarray | None
+    reference_moment: np.ndarray | None
+    rate_hz: float
+
+    @property
+    def n(self) -> int:
+        """Number of samples N."""
+        return self.t.size
+
+    @property
+    def speed(self) -> np.ndarray:
+        """|v| [m/s], shape (N,)."""
+        return np.linalg.norm(self.velocity, axis=1)
+
+    def select(self, mask) -> "FlightSamples":
+        """The samples where ``mask`` (shape (N,) bool) holds."""
+        m = np.asarray(mask, bool)
+        kw = {}
+        for name in ("log_index", "t", "velocity", "angular_velocity", "rotor_omega", "rotor_acceleration", "force",
+                     "moment", "reference_force", "reference_moment"):
+            a = getattr(self, name)
+            kw[name] = None if a is None else a[m]
+        return replace(self, **kw)
+
+    def of_log(self, k: int) -> "FlightSamples":
+        """The samples of log ``k``."""
+        return self.select(self.log_index == k)
+
+
+def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0) -> FlightSamples:
+    """Samples of the logs at ``rate_hz`` with their measured force and moment.
+
+    Parameters
+    ----------
+    logs : sequence of FlightLog
+    vehicle : Vehicle
+        Its rotors in each log's motor order; its mass (and inertia, for moments).
+    rate_hz : float
+        Sampling rate [Hz], in (0, 10000]: every k-th sample of a log, k = round(log rate /
+        rate_hz) (at least 1). dw/dt, where a log has none, is differentiated from w at the
+        log's own rate first.
+
+    Returns
+    -------
+    FlightSamples
+
+    Raises
+    ------
+    ValueError
+        No logs, a log whose motor count differs from the vehicle's rotor count, a bad
+        rate, or no sample left (every rotor stopped).
+    """
+    logs = list(logs)
+    if not logs:
+        raise ValueError("no flight logs given")
+    if not (isinstance(rate_hz, (int, float)) and 0 < rate_hz <= 1e4):
+        raise ValueError(f"rate_hz must be a number in (0, 10000] Hz, got {rate_hz!r}")
+    n_rot = len(vehicle.rotors)
+    parts = []
+    for k, log in enumerate(logs):
+        if not isinstance(log, FlightLog):
+            raise ValueError(f"logs must be FlightLog records (io.read_flight_log), got {type(log).__name__}")
+        if log.n_motors != n_rot:
+            raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
+                             "vehicle file lists its rotors in the log's motor order)")
+        dt = float(np.median(np.diff(log.t)))
+        step = max(1, int(round(1.0 / (rate_hz * dt))))
+        wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
+            log.angular_velocity, log.t, axis=0)
+        sl = slice(None, None, step)
+        om = log.rotor_omega[sl]
+        keep = np.all(om >= OMEGA_STOPPED, axis=1)
+        w = log.angular_velocity[sl][keep]
+        if vehicle.inertia is not None:
+            I = vehicle.inertia
+            moment = wdot[sl][keep] @ I.T + np.cross(w, w @ I.T)
+        else:
+            moment = None
+        acc = log.rotor_acceleration[sl][keep] if log.rotor_acceleration is not None else np.zeros((keep.sum(), n_rot))
+        parts.append(dict(log_index=np.full(keep.sum(), k), t=log.t[sl][keep], velocity=log.velocity[sl][keep],
+                          angular_velocity=w, rotor_omega=om[keep], rotor_acceleration=acc,
+                          force=vehicle.mass * log.specific_force[sl][keep], moment=moment,
+                          reference_force=None if log.reference_force is None else log.reference_force[sl][keep],
+                          reference_moment=None if log.reference_moment is None else log.reference_moment[sl][keep]))
+    out = {}
+    for key in parts[0]:
+        vals = [p[key] for p in parts]
+        out[key] = None if any(v is None for v in vals) else np.concatenate(vals)
+    if out["t"].size == 0:
+        raise ValueError("no samples left: every rotor is stopped in every sample")
+    return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(rate_hz), **out)
+
+
+def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionParams, *, body: BodyDrag | None = None,
+                   air: Air = Air(), discretization: Discretization = FLIGHT_DISCRETIZATION) -> VehicleWrench:
+    """The vehicle model's wrench at every sample (:func:`propmap.vehicle.vehicle_wrench`, no wind).
+
+    Raises
+    ------
+    SolverError
+        From the rotor model.
+    """
+    return vehicle_wrench(vehicle, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
+                          rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air,
+                          discretization=discretization)
+
+
+def _body_from(x, names, body: BodyDrag) -> BodyDrag:
+    vals = dict(zip(names, x))
+    area = [vals.get(f"drag_area_{a}", body.drag_area[k]) for k, a in enumerate("xyz")]
+    return BodyDrag(drag_area=tuple(float(v) for v in area), wash_factor=float(vals.get("wash_factor",
+                                                                                        body.wash_factor)))
+
+
+def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None, air: Air = Air(),
+               body: BodyDrag | None = None, options: FitOptions = FitOptions(),
+               discretization: Discretization = FLIGHT_DISCRETIZATION) -> FitResult:
+    """Identify the rotor and airframe parameters from flight logs (module docstring).
+
+    Parameters
+    ----------
+    samples : FlightSamples
+        The samples to fit (:func:`flight_samples`; select the training logs first).
+    vehicle : Vehicle
+    base : AirfoilParams or CamberedParams, optional
+        The start and every parameter not fitted; the catalogue's ``generic`` set by default.
+    air : Air
+    body : BodyDrag, optional
+        Start of the airframe drag; default the vehicle's, else none (0).
+    options : FitOptions
+        ``names``: default :data:`FLIGHT_FIT`. The population prior applies to the section
+        parameters it knows, weighted as level flight's (by the vehicle's weight).
+    discretization : Discretization
+
+    Returns
+    -------
+    FitResult
+        ``residuals``: the force errors [N], samples x 3 axes; ``extra["body_drag"]``: the
+        fitted airframe drag; ``extra["kind"] == "flight"``.
+
+    Raises
+    ------
+    ValueError
+        Unknown parameter names, fewer residuals than parameters + 1.
+    SolverError
+        From the rotor model.
+    """
+    from ..io.calibration import generic_params
+
+    base = base or generic_params()
+    names = tuple(options.names) if options.names is not None else FLIGHT_FIT
+    if not isinstance(base, CamberedParams):
+        names = tuple(n for n in names if n not in ("cl_alpha",)) if options.names is None else names
+    if 3 * samples.n <= len(names):
+        raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters")
+    body0 = body or vehicle.body_drag or BodyDrag()
+    # airframe terms start small but non-zero, so that every column of the Jacobian is alive
+    start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),
+             "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0,
+             "flap_compliance": base.flap_compliance or 1.0}
+    x0 = np.array([start[n] if n in start else getattr(base, n) for n in names], float)
+    measured = samples.force
+
+    def make_residual(opts):
+        def residual(x, opts=opts):
+            p = _params_from(x, names, base, opts)
+            b = _body_from(x, names, body0)
+            w = predict_flight(samples, vehicle, p, body=b, air=air, discretization=discretization)
+            return (w.force - measured).ravel()
+        return residual
+
+    make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit flight",
+                                                                    x0)
+    fitted_body = _body_from(best.x, names, body0)
+    extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
+             "discretization": [discretization.n_radial, discretization.n_azimuth],
+             "body_drag": {"drag_area": list(fitted_body.drag_area), "wash_factor": fitted_body.wash_factor},
+             **extra}
+    if prior:
+        extra["prior"] = prior
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
+                     air, extra)
+    return result
+
+
+def fitted_body_drag(result: FitResult) -> BodyDrag | None:
+    """The airframe drag of a flight fit's result (None for other fits)."""
+    b = result.extra.get("body_drag")
+    return None if b is None else BodyDrag(drag_area=tuple(b["drag_area"]), wash_factor=b["wash_factor"])
+
+
+# ---------------------------------------------------------------------------- errors
+
+def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None) -> dict:
+    """Rms errors of a prediction against the measured force (and moment).
+
+    The pooled force error is NeuroBEM's Table II metric: F = sqrt(mean of the three
+    axes' mean square errors) [N]; likewise M [N m].
+
+    Returns
+    -------
+    dict
+        ``Fx, Fy, Fz, F`` [N], ``n``, and with moments ``Mx, My, Mz, M`` [N m] and
+        ``M_zero`` (the zero-moment predictor's pooled error).
+    """
+    e = np.asarray(predicted_force) - samples.force
+    ms = np.mean(e**2, axis=0) if e.size else np.full(3, np.nan)
+    out = {"Fx": float(np.sqrt(ms[0])), "Fy": float(np.sqrt(ms[1])), "Fz": float(np.sqrt(ms[2])),
+           "F": float(np.sqrt(np.mean(ms))), "n": int(samples.n)}
+    if predicted_moment is not None and samples.moment is not None:
+        em = np.asarray(predicted_moment) - samples.moment
+        mm = np.mean(em**2, axis=0)
+        out.update({"Mx": float(np.sqrt(mm[0])), "My": float(np.sqrt(mm[1])), "Mz": float(np.sqrt(mm[2])),
+                    "M": float(np.sqrt(np.mean(mm))),
+                    "M_zero": float(np.sqrt(np.mean(samples.moment**2)))})
+    return out
+
+
+def _hub_velocities(samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
+    pos = np.array([r.position for r in vehicle.rotors])
+    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], pos[None])
+
+
+#: the baselines of the report: (key, label, terms)
+BASELINES = (("k_omega2", "T = k Omega^2", ("thrust",)),
+             ("rotor_drag", "k Omega^2 + linear rotor drag c Omega v_ip", ("thrust", "drag")),
+             ("rotorpy", "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)", ("thrust", "drag", "kz")))
+
+
+def _baseline_columns(samples: FlightSamples, vehicle: Vehicle, terms) -> np.ndarray:
+    """Design matrix, shape (N, 3, n_terms): each term's body force per unit coefficient."""
+    axes = np.array([r.axis for r in vehicle.rotors])  # (n_rot, 3)
+    om = samples.rotor_omega
+    V = _hub_velocities(samples, vehicle)
+    v_ax = np.einsum("nkj,kj->nk", V, axes)
+    v_ip = V - v_ax[..., None] * axes[None]
+    cols = []
+    for t in terms:
+        if t == "thrust":
+            cols.append(np.einsum("nk,kj->nj", om**2, axes))
+        elif t == "drag":
+            cols.append(-np.einsum("nk,nkj->nj", om, v_ip))
+        else:  # RotorPy's k_z: thrust reduced by k_z Omega v_z along each axis
+            cols.append(-np.einsum("nk,kj->nj", om * v_ax, axes))
+    return np.stack(cols, axis=-1)
+
+
+def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
+    """The simple models, fitted by linear least squares to the training samples' force.
+
+    Returns
+    -------
+    dict
+        key -> {"label", "terms", "coefficients"} for each of :data:`BASELINES`.
+    """
+    out = {}
+    for key, label, terms in BASELINES:
+        X = _baseline_columns(train, vehicle, terms).reshape(-1, len(terms))
+        coef = np.linalg.lstsq(X, train.force.reshape(-1), rcond=None)[0]
+        out[key] = {"label": label, "terms": list(terms), "coefficients": [float(c) for c in coef]}
+    return out
+
+
+def baseline_force(baseline: dict, samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
+    """A fitted baseline's body force at the samples [N], shape (N, 3)."""
+    X = _baseline_columns(samples, vehicle, baseline["terms"])
+    return X @ np.asarray(baseline["coefficients"])
+
+
+def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
+    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty)."""
+    sp = samples.speed
+    rows = []
+    for lo, hi in SPEED_BANDS:
+        m = (sp >= lo) & (sp < hi)
+        rows.append({"band_m_s": [lo, None if math.isinf(hi) else hi], "n": int(m.sum()),
+                     "F": flight_errors(np.asarray(predicted_force)[m], samples.select(m))["F"] if m.any() else None})
+    return rows
+
+
+def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None,
+                          air: Air = Air(), options: FitOptions = FitOptions(),
+                          discretization: Discretization = FLIGHT_DISCRETIZATION, progress=None) -> dict:
+    """Leave-one-log-out: fit on all logs but one, score on it, for every log.
+
+    The baselines are refitted the same way, so that every number is held out.
+
+    Returns
+    -------
+    dict
+        ``folds``: per held-out log its name and the errors (:func:`flight_errors`) of the
+        model, of each baseline and of the log's reference prediction where it has one;
+        ``pooled``: the pooled F over all folds (root mean of the folds' mean squares,
+        weighted by samples) for the model and each baseline.
+
+    Raises
+    ------
+    ValueError
+        Fewer than 2 logs.
+    """
+    if len(samples.log_names) < 2:
+        raise ValueError("cross-validation needs at least 2 logs")
+    folds = []
+    for k, name in enumerate(samples.log_names):
+        train = samples.select(samples.log_index != k)
+        test = samples.of_log(k)
+        res = fit_flight(train, vehicle, base=base, air=air, options=options, discretization=discretization)
+        w = predict_flight(test, vehicle, res.params, body=fitted_body_drag(res), air=air,
+                           discretization=discretization)
+        row = {"log": name, "model": flight_errors(w.force, test, w.moment),
+               "x": {n: float(v) for n, v in zip(res.names, res.x)}}
+        for key, bl in fit_baselines(train, vehicle).items():
+            row[key] = flight_errors(baseline_force(bl, test, vehicle), test)
+        if test.reference_force is not None:
+            row["reference"] = flight_errors(test.reference_force, test, test.reference_moment)
+        folds.append(row)
+        if progress:
+            progress(row)
+    pooled = {}
+    for key in ["model"] + [b[0] for b in BASELINES] + (["reference"] if "reference" in folds[0] else []):
+        ms = np.array([f[key]["F"] ** 2 * f[key]["n"] for f in folds])
+        pooled[key] = float(np.sqrt(ms.sum() / sum(f[key]["n"] for f in folds)))
+    return {"folds": folds, "pooled": pooled}
+
+
+def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightSamples, *, air: Air = Air(),
+                       discretization: Discretization = FLIGHT_DISCRETIZATION) -> dict:
+    """The fitted set's hover torque against the torque the logs' yaw channel measures.
+
+    The yaw moment of a multirotor is the sum of its rotors' reaction torques (and spin-up
+    reactions): M_z = -sum_i s_i (k_Q Omega_i^2 + J_i dOmega_i/dt) for rotors along z. A
+    linear fit of the measured M_z gives k_Q, a thrust-stand-like torque coefficient
+    measured in flight; the fitted rotor model's hover torque is compared with
+    k_Q Omega_hover^2 (Omega_hover the median rotor speed of the slowest tenth of the
+    samples).
+
+    Returns
+    -------
+    dict
+        ``omega_hover`` [rad/s], ``torque_model`` and ``torque_measured`` [N m], ``ratio``;
+        empty without measured moments.
+    """
+    if samples.moment is None:
+        return {}
+    spins = np.array([r.spin for r in vehicle.rotors])
+    J = np.array([r.inertia or 0.0 for r in vehicle.rotors])
+    az = np.array([r.axis[2] for r in vehicle.rotors])
+    X = -(spins * az * samples.rotor_omega**2).sum(axis=1)
+    y = samples.moment[:, 2] + (spins * az * J * samples.rotor_acceleration).sum(axis=1)
+    kQ = float(X @ y / (X @ X))
+    slow = samples.speed <= np.quantile(samples.speed, 0.1)
+    om_h = float(np.median(samples.rotor_omega[slow]))
+    prop = vehicle.rotors[0].propeller
+    Q = float(rotor_loads(prop, params, om_h, 0.0, 0.0, air=air, discretization=discretization).torque)
+    return {"omega_hover": om_h, "torque_model": Q, "torque_measured": kQ * om_h**2, "ratio": Q / (kQ * om_h**2),
+            "k_Q": kQ}

@@ -1,0 +1,385 @@
+"""Flight-log readers: the NeuroBEM layout (MATLAB .mat or CSV) and PX4 ULog.
+
+Every reader returns a :class:`FlightLog` in propmap's body frame (x forward, y left, z up;
+SI units), with the rotor speeds in the log's motor order: a vehicle file that goes with a
+log lists its rotors in that order (rotor k of the file is motor k of the log).
+
+* **NeuroBEM** (L. Bauersfeld, E. Kaufmann, P. Foehn, S. Sun, D. Scaramuzza, "NeuroBEM:
+  Hybrid Aerodynamic Quadrotor Model", RSS 2021): one N x 41 float array, as the authors'
+  CSV files or converted to MATLAB v5 (``.mat``, one array of any name). Columns (the
+  authors' names, :data:`NEUROBEM_COLUMNS`): t [s]; angular acceleration [rad/s^2],
+  angular velocity [rad/s], quaternion (x, y, z, w), specific force (linear acceleration
+  including gravity) [m/s^2], velocity [m/s], all in the body frame; position [m]; four
+  motor speeds [rad/s] and their derivatives [rad/s^2]; battery voltage; NeuroBEM's
+  predicted body force [N] and moment [N m]; residuals. A CSV may have a header line with
+  those names, or none. Motor order: back-right, front-right, back-left, front-left.
+* **PX4 ULog** (read with pyulog, https://github.com/PX4/pyulog): ``vehicle_acceleration``
+  (or ``sensor_combined``), ``vehicle_angular_velocity`` (with ``xyz_derivative`` when
+  logged), ``vehicle_attitude``, ``vehicle_local_position`` and the motor speeds from
+  ``esc_status`` (``esc_rpm``), or, with a stated linear mapping rpm = a + b u, from
+  ``actuator_outputs``. PX4's body frame is forward-right-down and its world frame
+  north-east-down: vectors are turned into propmap's frame (y and z negated) and the
+  velocity rotated into the body frame with the attitude. All topics are interpolated to
+  the timestamps of the acceleration topic, over the time they all cover. Motor order:
+  PX4's motor numbering of the airframe.
+
+Errors are :class:`FlightLogError` (a ValueError) with one line naming the file and, for a
+missing topic or column, what was looked for and what was found.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .readers import MAX_FILE_BYTES, decode_input_text, read_input_bytes, show_path
+
+__all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
+
+#: the NeuroBEM dataset's 41 columns (the names of the authors' CSV loader)
+NEUROBEM_COLUMNS = (
+    "t", "ang acc x", "ang acc y", "ang acc z", "ang vel x", "ang vel y", "ang vel z",
+    "quat x", "quat y", "quat z", "quat w", "acc x", "acc y", "acc z", "vel x", "vel y", "vel z",
+    "pos x", "pos y", "pos z", "mot 1", "mot 2", "mot 3", "mot 4", "dmot 1", "dmot 2", "dmot 3", "dmot 4", "vbat",
+    "model_fx", "model_fy", "model_fz", "model_tx", "model_ty", "model_tz",
+    "residual_fx", "residual_fy", "residual_fz", "residual_tx", "residual_ty", "residual_tz",
+)
+FORMATS = ("neurobem", "ulog")
+#: plausibility limits of logged values (refused beyond: a unit or column mistake)
+OMEGA_MAX = 1e5  # [rad/s], the solver's limit
+ACC_MAX = 2000.0  # [m/s^2]
+RATE_MAX = 200.0  # [rad/s]
+SPEED_MAX = 500.0  # [m/s]
+MIN_SAMPLES = 2
+
+
+class FlightLogError(ValueError):
+    """A flight log that cannot be read; the message names the file and the problem."""
+
+
+@dataclass(frozen=True)
+class FlightLog:
+    """One flight log in propmap's body frame (x forward, y left, z up), N samples.
+
+    Attributes
+    ----------
+    name : str
+        The file's name (without folder), for reports.
+    path : str
+    format : str
+        ``"neurobem"`` or ``"ulog"``.
+    t : ndarray, shape (N,)
+        Time [s], strictly increasing.
+    angular_velocity : ndarray, shape (N, 3)
+        Body rates w [rad/s].
+    angular_acceleration : ndarray, shape (N, 3), or None
+        dw/dt [rad/s^2] as logged; None when the log has none (computed from w then).
+    specific_force : ndarray, shape (N, 3)
+        Acceleration minus gravity, body axes [m/s^2] (what an accelerometer reads: +g
+        along z in hover). Times the mass, the measured aerodynamic force.
+    velocity : ndarray, shape (N, 3)
+        Velocity over the ground, body axes [m/s].
+    attitude : ndarray, shape (N, 4)
+        Unit quaternion (x, y, z, w) of the body relative to a z-up world frame.
+    rotor_omega : ndarray, shape (N, n_motors)
+        Motor speeds Omega [rad/s], in the log's motor order.
+    rotor_acceleration : ndarray, shape (N, n_motors), or None
+        dOmega/dt [rad/s^2] as logged, or None.
+    reference_force, reference_moment : ndarray, shape (N, 3), or None
+        A model's prediction carried by the log (NeuroBEM's BEM + neural network, columns
+        30-35), for comparison on the same samples; None otherwise.
+    motor_order : str
+        What the motor columns are.
+    """
+
+    name: str
+    path: str
+    format: str
+    t: np.ndarray
+    angular_velocity: np.ndarray
+    angular_acceleration: np.ndarray | None
+    specific_force: np.ndarray
+    velocity: np.ndarray
+    attitude: np.ndarray
+    rotor_omega: np.ndarray
+    rotor_acceleration: np.ndarray | None
+    reference_force: np.ndarray | None = None
+    reference_moment: np.ndarray | None = None
+    motor_order: str = ""
+
+    @property
+    def n(self) -> int:
+        """Number of samples N."""
+        return self.t.size
+
+    @property
+    def n_motors(self) -> int:
+        """Number of motor-speed columns."""
+        return self.rotor_omega.shape[1]
+
+    @property
+    def duration(self) -> float:
+        """t[-1] - t[0] [s]."""
+        return float(self.t[-1] - self.t[0])
+
+
+def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, float] | None = None) -> FlightLog:
+    """Read a flight log (module docstring).
+
+    Parameters
+    ----------
+    path : str or Path
+    format : {"neurobem", "ulog"}, optional
+        Default from the suffix: ``.mat`` and ``.csv`` NeuroBEM, ``.ulg`` ULog.
+    motor_map : (a, b), optional
+        ULog without ``esc_status`` rpm: motor speed [rpm] = a + b * actuator_outputs
+        output (the ESC's calibration, stated by the user).
+
+    Returns
+    -------
+    FlightLog
+
+    Raises
+    ------
+    FlightLogError
+        Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
+        file, a missing topic or column (named, with those found), fewer than 2 samples,
+        time not strictly increasing, non-finite values, motor speeds outside [0, 1e5]
+        rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
+        500 m/s (likely a unit mistake).
+    """
+    p = Path(path)
+    name = show_path(p)
+    fmt = format
+    if fmt is None:
+        fmt = {".mat": "neurobem", ".csv": "neurobem", ".ulg": "ulog"}.get(p.suffix.lower())
+        if fmt is None:
+            raise FlightLogError(f"{name}: unknown flight-log format (suffix {p.suffix or 'none'!s}); give a NeuroBEM "
+                                 ".mat or .csv file or a PX4 .ulg file, or name the format")
+    if fmt not in FORMATS:
+        raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
+    if fmt == "ulog":
+        log = _read_ulog(raw, p, name, motor_map)
+    elif p.suffix.lower() == ".mat":
+        log = _neurobem(_mat_array(raw, name), p, name)
+    else:
+        log = _neurobem(_csv_array(raw, p, name), p, name)
+    _check(log, name)
+    return log
+
+
+# ---------------------------------------------------------------------------- NeuroBEM
+
+def _mat_array(raw: bytes, name: str) -> np.ndarray:
+    from scipy.io import loadmat
+
+    try:
+        data = loadmat(io.BytesIO(raw))
+    except NotImplementedError:
+        raise FlightLogError(f"{name}: MATLAB v7.3 (HDF5) file; save it as MATLAB v5 (-v7 or older)") from None
+    except Exception as exc:  # scipy raises many types for a corrupt file
+        raise FlightLogError(f"{name}: not a readable MATLAB v5 file ({type(exc).__name__}: "
+                             f"{str(exc)[:120]})") from None
+    arrays = {k: v for k, v in data.items() if not k.startswith("__") and isinstance(v, np.ndarray)}
+    if len(arrays) != 1:
+        raise FlightLogError(f"{name}: expected one N x {len(NEUROBEM_COLUMNS)} array, found "
+                             f"{len(arrays)} variable(s) ({', '.join(sorted(arrays))[:200] or 'none'})")
+    (key, a), = arrays.items()
+    if a.ndim != 2 or a.shape[1] != len(NEUROBEM_COLUMNS) or a.dtype.kind not in "iuf":
+        raise FlightLogError(f"{name}: variable {key!r} must be an N x {len(NEUROBEM_COLUMNS)} numeric array "
+                             f"(the NeuroBEM layout), got shape {a.shape} of {a.dtype}")
+    return a.astype(float)
+
+
+def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
+    text = decode_input_text(raw, p, FlightLogError)
+    lines = text.splitlines()
+    first = next((i for i, line in enumerate(lines) if line.strip()), None)
+    if first is None:
+        raise FlightLogError(f"{name}: empty file")
+    head = [c.strip().strip('"').lower() for c in lines[first].split(",")]
+    skip = first
+    order = list(range(len(NEUROBEM_COLUMNS)))
+    try:
+        [float(c) for c in head]
+    except ValueError:  # a header line: map the columns by name
+        skip = first + 1
+        missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
+        if missing:
+            raise FlightLogError(f"{name}: header lacks the NeuroBEM column(s) {', '.join(missing[:6])}"
+                                 f"{' ...' if len(missing) > 6 else ''}; found {', '.join(head)[:200]}") from None
+        dup = sorted({c for c in head if head.count(c) > 1 and c in NEUROBEM_COLUMNS})
+        if dup:
+            raise FlightLogError(f"{name}: column(s) {', '.join(dup)} appear twice in the header") from None
+        order = [head.index(c) if c in head else -1 for c in NEUROBEM_COLUMNS]
+    try:
+        a = np.loadtxt(io.StringIO("\n".join(lines[skip:])), delimiter=",", ndmin=2)
+    except ValueError as exc:
+        msg = str(exc).splitlines()[0][:160]
+        raise FlightLogError(f"{name}: not a numeric CSV after line {skip} ({msg})") from None
+    if a.shape[1] <= max(order):
+        raise FlightLogError(f"{name}: {a.shape[1]} columns; the NeuroBEM layout has {len(NEUROBEM_COLUMNS)} "
+                             f"(or a header naming them)")
+    out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)
+    for k, j in enumerate(order):
+        if j >= 0:
+            out[:, k] = a[:, j]
+    return out
+
+
+def _neurobem(a: np.ndarray, p: Path, name: str) -> FlightLog:
+    if a.shape[0] < MIN_SAMPLES:
+        raise FlightLogError(f"{name}: {a.shape[0]} sample(s); a log needs at least {MIN_SAMPLES}")
+    core = a[:, :29]
+    if not np.all(np.isfinite(core)):
+        i, j = np.argwhere(~np.isfinite(core))[0]
+        raise FlightLogError(f"{name}: sample {i + 1}, column {NEUROBEM_COLUMNS[j]!r}: not a finite number")
+    ref = a[:, 29:35]
+    has_ref = bool(np.all(np.isfinite(ref)))
+    return FlightLog(
+        name=p.name, path=str(p), format="neurobem", t=a[:, 0].copy(), angular_acceleration=a[:, 1:4].copy(),
+        angular_velocity=a[:, 4:7].copy(), attitude=a[:, 7:11].copy(), specific_force=a[:, 11:14].copy(),
+        velocity=a[:, 14:17].copy(), rotor_omega=a[:, 20:24].copy(), rotor_acceleration=a[:, 24:28].copy(),
+        reference_force=a[:, 29:32].copy() if has_ref else None,
+        reference_moment=a[:, 32:35].copy() if has_ref else None,
+        motor_order="NeuroBEM: back-right, front-right, back-left, front-left")
+
+
+# ---------------------------------------------------------------------------- ULog
+
+_FRD_TO_FLU = np.array([1.0, -1.0, -1.0])
+
+
+def _topic(ulog, name: str, fields: list[str], where: str):
+    """(t [s], columns) of the first instance of topic ``name``; the error names what is missing."""
+    sets = [d for d in ulog.data_list if d.name == name]
+    if not sets:
+        found = sorted({d.name for d in ulog.data_list})
+        raise FlightLogError(f"{where}: topic {name!r} not in the log (topics found: {', '.join(found)[:300]})")
+    d = min(sets, key=lambda s: s.multi_id)
+    missing = [f for f in fields if f not in d.data]
+    if missing:
+        raise FlightLogError(f"{where}: topic {name!r} lacks field(s) {', '.join(missing)} (fields: "
+                             f"{', '.join(sorted(d.data))[:300]})")
+    return d.data["timestamp"] * 1e-6, np.column_stack([np.asarray(d.data[f], float) for f in fields])
+
+
+def _has(ulog, name: str) -> bool:
+    return any(d.name == name for d in ulog.data_list)
+
+
+def _rotate_ned_to_body(q_wxyz: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """R(q)^T v: a NED vector into the FRD body frame, q (w, x, y, z) FRD -> NED."""
+    w, x, y, z = q_wxyz.T
+    R = np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
+    ], -2)
+    return np.einsum("nji,nj->ni", R, v)
+
+
+def _read_ulog(raw: bytes, p: Path, name: str, motor_map) -> FlightLog:
+    try:
+        from pyulog import ULog
+    except ImportError:  # pragma: no cover (a declared dependency)
+        raise FlightLogError("reading ULog files needs the package pyulog (pip install pyulog)") from None
+    try:
+        ulog = ULog(io.BytesIO(raw))
+    except Exception as exc:  # pyulog raises many types for a corrupt file
+        raise FlightLogError(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
+    acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
+    acc_fields = ["xyz[0]", "xyz[1]", "xyz[2]"] if acc_topic == "vehicle_acceleration" else [
+        "accelerometer_m_s2[0]", "accelerometer_m_s2[1]", "accelerometer_m_s2[2]"]
+    t, acc = _topic(ulog, acc_topic, acc_fields, name)
+    tw, rates = _topic(ulog, "vehicle_angular_velocity", ["xyz[0]", "xyz[1]", "xyz[2]"], name)
+    deriv = None
+    d = [s for s in ulog.data_list if s.name == "vehicle_angular_velocity"]
+    if d and all(f"xyz_derivative[{k}]" in d[0].data for k in range(3)):
+        deriv = _topic(ulog, "vehicle_angular_velocity", [f"xyz_derivative[{k}]" for k in range(3)], name)[1]
+    tq, q = _topic(ulog, "vehicle_attitude", ["q[0]", "q[1]", "q[2]", "q[3]"], name)
+    tv, vel = _topic(ulog, "vehicle_local_position", ["vx", "vy", "vz"], name)
+    tm, rpm, order = _ulog_motors(ulog, name, motor_map)
+    lo = max(t[0], tw[0], tq[0], tv[0], tm[0])
+    hi = min(t[-1], tw[-1], tq[-1], tv[-1], tm[-1])
+    keep = (t >= lo) & (t <= hi)
+    if keep.sum() < MIN_SAMPLES:
+        raise FlightLogError(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
+                             f"{MIN_SAMPLES}")
+    t, acc = t[keep], acc[keep]
+
+    def at(tt, a):
+        return np.column_stack([np.interp(t, tt, a[:, k]) for k in range(a.shape[1])])
+
+    q_i = at(tq, q)
+    q_i /= np.linalg.norm(q_i, axis=1, keepdims=True)
+    v_body = _rotate_ned_to_body(q_i, at(tv, vel)) * _FRD_TO_FLU
+    w = at(tw, rates) * _FRD_TO_FLU
+    # attitude as (x, y, z, w) of FLU body -> ENU-like z-up world: FRD->NED conjugated by the flips
+    quat = np.column_stack([q_i[:, 1], -q_i[:, 2], -q_i[:, 3], q_i[:, 0]])
+    omega = at(tm, rpm) * (2 * math.pi / 60)
+    return FlightLog(name=p.name, path=str(p), format="ulog", t=t - t[0], angular_velocity=w,
+                     angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
+                     specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,
+                     rotor_acceleration=None, motor_order=order)
+
+
+def _ulog_motors(ulog, name: str, motor_map):
+    """(t, rpm columns, description) of the motor speeds."""
+    if _has(ulog, "esc_status") and motor_map is None:
+        d = min((s for s in ulog.data_list if s.name == "esc_status"), key=lambda s: s.multi_id)
+        cols = sorted((f for f in d.data if f.startswith("esc[") and f.endswith("].esc_rpm")),
+                      key=lambda f: int(f[4:f.index("]")]))
+        count = int(np.max(d.data["esc_count"])) if "esc_count" in d.data else len(cols)
+        cols = cols[:count]
+        if cols:
+            t, rpm = _topic(ulog, "esc_status", cols, name)
+            if np.any(np.abs(rpm) > 0):
+                return t, np.abs(rpm), f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm (motor numbering)"
+        raise FlightLogError(f"{name}: topic 'esc_status' carries no motor rpm (esc_rpm all zero or absent); give "
+                             "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
+    if motor_map is None:
+        raise FlightLogError(f"{name}: no motor speeds: topic 'esc_status' not in the log; give the mapping "
+                             "rpm = a + b * output of actuator_outputs (--motor-map a,b)")
+    a, b = motor_map
+    d = [s for s in ulog.data_list if s.name == "actuator_outputs"]
+    if not d:
+        raise FlightLogError(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
+    d = min(d, key=lambda s: s.multi_id)
+    n = int(np.max(d.data["noutputs"])) if "noutputs" in d.data else 0
+    cols = [f"output[{k}]" for k in range(n) if f"output[{k}]" in d.data]
+    if not cols:
+        raise FlightLogError(f"{name}: topic 'actuator_outputs' has no outputs")
+    t, u = _topic(ulog, "actuator_outputs", cols, name)
+    return t, np.maximum(a + b * u, 0.0), f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u"
+
+
+# ---------------------------------------------------------------------------- checks
+
+def _check(log: FlightLog, name: str) -> None:
+    if log.n < MIN_SAMPLES:
+        raise FlightLogError(f"{name}: {log.n} sample(s); a log needs at least {MIN_SAMPLES}")
+    dt = np.diff(log.t)
+    if not np.all(dt > 0):
+        i = int(np.argmax(~(dt > 0)))
+        raise FlightLogError(f"{name}: time does not increase at sample {i + 2} (t = {log.t[i + 1]:.6g} s after "
+                             f"{log.t[i]:.6g} s)")
+    checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
+              ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
+              ("velocity", log.velocity, SPEED_MAX, "m/s"),
+              ("rotor_omega", log.rotor_omega, OMEGA_MAX, "rad/s")]
+    for what, a, limit, unit in checks:
+        bad = ~np.isfinite(a) | (np.abs(a) > limit)
+        if bad.any():
+            i = int(np.argmax(bad.any(axis=1)))
+            raise FlightLogError(f"{name}: sample {i + 1}: {what} {a[i].round(6).tolist()} beyond +-{limit:g} {unit} "
+                                 "(a unit or column mistake?)")
+    if np.any(log.rotor_omega < 0):
+        i = int(np.argmax((log.rotor_omega < 0).any(axis=1)))
+        raise FlightLogError(f"{name}: sample {i + 1}: negative motor speed {log.rotor_omega[i].tolist()} rad/s "
+                             "(give speeds as magnitudes; the spin is the vehicle file's)")

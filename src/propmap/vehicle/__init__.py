@@ -1,0 +1,10 @@
+"""The multirotor vehicle model (its rotors' wrenches about the centre of mass) and its file.
+
+Shared by identification (level flight, flight logs), maps and exports; imports the core
+and io only.
+"""
+
+from .file import VehicleFileError, read_vehicle
+from .model import Rotor, Vehicle, VehicleWrench, vehicle_wrench
+
+__all__ = ["Rotor", "Vehicle", "VehicleWrench", "VehicleFileError", "read_vehicle", "vehicle_wrench"]

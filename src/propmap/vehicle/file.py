@@ -1,0 +1,289 @@
+"""Vehicle files (TOML): a multirotor's mass, inertia, rotors and airframe drag.
+
+Format (body frame: x forward, y left, z up; SI units)::
+
+    mass = 0.8            # [kg], in (0, 1e4]
+    gravity = 9.81        # [m/s^2], optional, in (0, 100]
+    body_area = 0.02      # [m^2], optional, in [0, 100]: S_body of the body-lift option (Sec. III-A)
+    inertia = [0.0025, 0.0021, 0.0043]   # [kg m^2], optional: the diagonal, or a symmetric
+                                         # positive definite 3 x 3 list [[Ixx, Ixy, Ixz], ...]
+
+    [body]                # optional airframe drag (core/body.py)
+    drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
+    wash_factor = 1.0                   # slipstream factor kappa, in [0, 3]
+
+    [[rotors]]
+    position = [0.08, -0.08, 0.0]   # [m], hub relative to the centre of mass, each in [-100, 100]
+    axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
+    spin = "ccw"                    # about +axis (right-hand rule), or "cw"
+    propeller = "apce_8x6"          # geometry file or catalogue name
+    blades = 3                      # optional: blade count of a geometry file (1 to 100)
+    diameter_m = 0.13               # optional: diameter of a UIUC geometry file [m], in (0, 100]
+    params = "generic"              # optional: this rotor's parameter set (a file, relative to
+                                    # the vehicle file, or a named set); default the set in use
+    inertia = 9.4e-6                # optional: rotor + motor inertia about the axis [kg m^2],
+                                    # in [0, 100] (gyroscopic and spin-up moments)
+
+Numbers must be TOML integers or floats (a ``true`` or a quoted ``"0.8"`` is refused).
+Free-text keys ``name``, ``comment`` and ``source`` are allowed at the top level, in
+``[body]`` and in a rotor; any other unknown key is an error (a typo such as ``gravty`` is
+never ignored).
+
+``propeller`` (and ``params``, when it is not a named set) is resolved as follows: a
+relative path is taken from the folder of the vehicle file (not from the working
+directory), an absolute path as it is; if no file (or folder) of that name exists there,
+the value must be a catalogue name (a named parameter set). A geometry file is read with
+:func:`propmap.io.readers.read_geometry` (a UIUC file takes its diameter from a
+``<family>_<D>x<P>`` name unless ``diameter_m`` is given).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import numbers
+import os
+from pathlib import Path
+
+import numpy as np
+
+from ..core.geometry import INCH, Propeller
+from ..core.body import BodyDrag
+from ..io.readers import show_path
+from ..io.toml_file import load_toml
+from .model import Rotor, Vehicle
+
+__all__ = ["VehicleFileError", "read_vehicle"]
+
+#: valid ranges (low, high, low open) of the vehicle's numbers
+MASS_RANGE = (0.0, 1e4, True)  # [kg]
+GRAVITY_RANGE = (0.0, 100.0, True)  # [m/s^2]
+BODY_AREA_RANGE = (0.0, 100.0, False)  # [m^2]
+POSITION_MAX = 100.0  # [m], each component
+AXIS_LENGTH_RANGE = (1e-6, 1e6)
+INERTIA_MAX = 1e6  # [kg m^2], each element
+ROTOR_INERTIA_RANGE = (0.0, 100.0, False)  # [kg m^2]
+BLADES_RANGE = (1, 100)
+DIAMETER_RANGE = (0.0, 100.0, True)  # [m]
+TEXT_KEYS = ("name", "comment", "source")
+VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "body", "rotors", *TEXT_KEYS)
+BODY_KEYS = ("drag_area", "wash_factor", *TEXT_KEYS)
+ROTOR_KEYS = ("position", "axis", "spin", "propeller", "blades", "diameter_m", "params", "inertia", *TEXT_KEYS)
+
+
+class VehicleFileError(ValueError):
+    """A vehicle file is malformed; the message names the file and the entry."""
+
+
+def _short(value, n: int = 60) -> str:
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    r = repr(value)
+    return r if len(r) <= n else r[: n - 4] + " ..."
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
+def _float(value) -> float:
+    """``float(value)`` of a real number; +-inf for an integer too large for a float."""
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
+def _number(value, what: str, unit: str, rng) -> float:
+    lo, hi, lo_open = rng
+    interval = f"{'>' if lo_open else '>='} {lo:g} and <= {hi:g} {unit}"
+    if not _is_number(value):
+        raise VehicleFileError(f"{what} must be a number {interval}, got {_short(value)}")
+    x = _float(value)
+    if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and x <= hi):
+        raise VehicleFileError(f"{what} must be {interval}, got {_short(value)}")
+    return x
+
+
+def _vec3(value, what: str) -> np.ndarray:
+    if not (isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)):
+        raise VehicleFileError(f"{what} must be 3 numbers [x, y, z], got {_short(value)}")
+    a = np.array([_float(v) for v in value])
+    if not np.all(np.isfinite(a)):
+        raise VehicleFileError(f"{what} must be 3 finite numbers, got {_short(value)}")
+    return a
+
+
+def _unknown(table: dict, allowed, where: str) -> None:
+    extra = sorted(str(k) for k in table if k not in allowed)
+    if extra:
+        shown = ", ".join(k if k.isidentifier() else _short(k, 40) for k in extra[:5])
+        raise VehicleFileError(f"{where}: unknown key(s) {shown} (allowed: {', '.join(allowed)})")
+
+
+def _inertia(value, what: str) -> np.ndarray:
+    """A 3 x 3 inertia tensor from a diagonal [a, b, c] or a nested 3 x 3 list [kg m^2]."""
+    shape_msg = f"{what} must be [Ixx, Iyy, Izz] or a 3 x 3 list of numbers [kg m^2], got {_short(value)}"
+    if isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value):
+        m = np.diag([_float(v) for v in value])
+    elif (isinstance(value, list) and len(value) == 3
+          and all(isinstance(row, list) and len(row) == 3 and all(_is_number(v) for v in row) for row in value)):
+        m = np.array([[_float(v) for v in row] for row in value])
+    else:
+        raise VehicleFileError(shape_msg)
+    if not np.all(np.isfinite(m)) or np.any(np.abs(m) > INERTIA_MAX):
+        raise VehicleFileError(f"{what} must have finite elements within +-{INERTIA_MAX:g} kg m^2, got {_short(value)}")
+    if not np.allclose(m, m.T, rtol=1e-9, atol=1e-15):
+        raise VehicleFileError(f"{what} must be symmetric, got {_short(value)}")
+    if np.min(np.linalg.eigvalsh(m)) <= 0:
+        raise VehicleFileError(f"{what} must be positive definite (all principal moments > 0), got {_short(value)}")
+    return m
+
+
+def _body(table, name: str) -> BodyDrag:
+    where = f"{name}: [body]"
+    if not isinstance(table, dict):
+        raise VehicleFileError(f"{where} must be a table with drag_area and optional wash_factor, got {_short(table)}")
+    _unknown(table, BODY_KEYS, where)
+    if "drag_area" not in table:
+        raise VehicleFileError(f"{where}: missing key 'drag_area'")
+    area = _vec3(table["drag_area"], f"{where} drag_area")
+    try:
+        return BodyDrag(drag_area=tuple(area), wash_factor=table.get("wash_factor", 0.0))
+    except ValueError as exc:
+        raise VehicleFileError(f"{where}: {exc}") from None
+
+
+def _blades(value, where: str) -> int:
+    lo, hi = BLADES_RANGE
+    if not (isinstance(value, int) and not isinstance(value, bool) and lo <= value <= hi):
+        raise VehicleFileError(f"{where}: blades must be an integer in [{lo}, {hi}], got {_short(value)}")
+    return value
+
+
+def _rotor_params(spec, folder: Path, where: str):
+    """A rotor's own parameter set: a file relative to ``folder`` (or absolute), else a named set."""
+    from ..io.params_file import ParamsFileError, read_params, resolve_params
+
+    if not isinstance(spec, str) or not spec.strip():
+        raise VehicleFileError(f"{where}: params must be a parameter file or a named set (a string), "
+                               f"got {_short(spec)}")
+    local = folder / spec
+    try:
+        if "\x00" not in spec and os.path.lexists(local):
+            return read_params(local)[0]
+        return resolve_params(spec)[0]
+    except (ParamsFileError, KeyError, ValueError) as exc:
+        msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+        raise VehicleFileError(f"{where}: params: {msg}") from None
+
+
+def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
+               n_blades: int | None = None) -> Propeller:
+    """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name."""
+    from ..io.catalogue import catalogue, load_propeller
+    from ..io.readers import read_geometry
+
+    if not isinstance(spec, str) or not spec.strip():
+        raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "
+                               f"got {_short(spec)}")
+    local = folder / spec
+    try:
+        exists = "\x00" not in spec and os.path.lexists(local)
+    except (OSError, ValueError):
+        exists = False
+    if exists:
+        try:
+            return read_geometry(local, diameter_in=diameter_in, n_blades=n_blades)
+        except ValueError as exc:
+            raise VehicleFileError(f"{where}: propeller: {exc}") from None
+    if spec in catalogue():
+        if diameter_in is not None or n_blades is not None:
+            raise VehicleFileError(f"{where}: blades and diameter_m are for geometry files; {spec!r} is a catalogue "
+                                   "propeller, whose geometry states them")
+        return load_propeller(spec)
+    near = difflib.get_close_matches(spec, list(catalogue()), n=3)
+    hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
+    shown = show_path(local)
+    shown = shown if len(shown) <= 300 else shown[:290] + "..."
+    raise VehicleFileError(f"{where}: propeller {_short(spec)} is neither a file ({shown}: a relative "
+                           f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
+
+
+def read_vehicle(path) -> Vehicle:
+    """Read a vehicle TOML file (format, ranges and propeller resolution in the module docstring).
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    Vehicle
+
+    Raises
+    ------
+    VehicleFileError
+        Not a readable regular file (a directory, a device, over 16 MiB), not UTF-8,
+        invalid TOML, missing ``mass`` or ``rotors``, an unknown key, a value of the wrong
+        type (a bool or a string for a number, a rotor that is not a table), a mass,
+        gravity, body area, inertia, drag area, position, blade count, diameter or rotor
+        inertia out of range, an inertia that is not symmetric positive definite, an axis
+        of zero, non-finite or overflowing length, a bad spin, a propeller that is neither a
+        readable geometry file nor a catalogue name, or a rotor ``params`` that is neither a
+        readable parameter file nor a named set; the message names the file, the rotor and
+        the key.
+
+    Warns
+    -----
+    UserWarning
+        As :func:`propmap.io.readers.read_uiuc_geometry` for a rotor's geometry file.
+    """
+    path = Path(path)
+    name = show_path(path)
+    data = load_toml(path, VehicleFileError)
+    for key in ("mass", "rotors"):
+        if key not in data:
+            raise VehicleFileError(f"{name}: missing key {key!r}")
+    _unknown(data, VEHICLE_KEYS, name)
+    mass = _number(data["mass"], f"{name}: mass", "kg", MASS_RANGE)
+    gravity = _number(data.get("gravity", 9.81), f"{name}: gravity", "m/s^2", GRAVITY_RANGE)
+    area = _number(data.get("body_area", 0.0), f"{name}: body_area", "m^2", BODY_AREA_RANGE)
+    inertia = _inertia(data["inertia"], f"{name}: inertia") if "inertia" in data else None
+    body = _body(data["body"], name) if "body" in data else None
+    rotors = []
+    if not isinstance(data["rotors"], list) or not data["rotors"]:
+        raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
+    for k, r in enumerate(data["rotors"], start=1):
+        where = f"{name}: rotor {k}"
+        if not isinstance(r, dict):
+            raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
+                                   f"got {_short(r)}")
+        for key in ("position", "axis", "spin", "propeller"):
+            if key not in r:
+                raise VehicleFileError(f"{where}: missing key {key!r}")
+        _unknown(r, ROTOR_KEYS, where)
+        position = _vec3(r["position"], f"{where} position")
+        if np.any(np.abs(position) > POSITION_MAX):
+            raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
+                                   f"m, got {_short(r['position'])}")
+        axis = _vec3(r["axis"], f"{where} axis")
+        lo, hi = AXIS_LENGTH_RANGE
+        scale = float(np.max(np.abs(axis)))
+        length = scale * float(np.linalg.norm(axis / scale)) if scale > 0 else 0.0
+        if not (lo <= length <= hi):
+            raise VehicleFileError(f"{where}: axis must be non-zero with a length in [{lo:g}, {hi:g}] (a direction; "
+                                   f"it is normalised), got {_short(r['axis'])}")
+        spin = r["spin"]
+        spin = {"ccw": 1.0, "cw": -1.0}.get(spin.lower()) if isinstance(spin, str) else None
+        if spin is None:
+            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {_short(r['spin'])}")
+        blades = _blades(r["blades"], where) if "blades" in r else None
+        diameter = _number(r["diameter_m"], f"{where} diameter_m", "m", DIAMETER_RANGE) if "diameter_m" in r else None
+        prop = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH, blades)
+        params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
+        j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
+        rotors.append(Rotor(position, axis / length, spin, prop, params=params, inertia=j_r))
+    text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
+    return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
+                   **text)

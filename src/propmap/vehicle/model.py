@@ -1,0 +1,252 @@
+"""The multirotor vehicle model: its rotors' wrenches summed about the centre of mass.
+
+Body frame: x forward, y left, z up; every vector of this module is in body axes. Each rotor
+i at hub position r_i (from the centre of mass) with axis a_i sees the air at the hub
+velocity V_i = v + w x r_i - v_wind (v the velocity of the centre of mass and w the angular
+velocity, both of the body, v_wind the wind), and gives, by :func:`propmap.rotor_wrench`
+(Gill & D'Andrea 2017 eqs 13-15 and the rotor options), a force F_i and an aerodynamic
+moment M_i about its hub. About the centre of mass:
+
+    F = sum_i F_i + F_body,
+    M = sum_i (r_i x F_i + M_i - w x h_i - s_i J_i dOmega_i/dt a_i),
+
+with h_i = s_i J_i Omega_i a_i the rotor's angular momentum (s_i = +1 ccw about a_i): the
+gyroscopic moment -w x h_i and the reaction to the rotor's spin-up, both only when the
+rotor inertia J_i is known (a rigid body carrying spinning rotors, as in R. Mahony,
+V. Kumar and P. Corke, "Multirotor aerial vehicles", IEEE Robotics & Automation Magazine
+19(3), 2012). F_body is
+the airframe drag (core/body.py), acting at the centre of mass.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields, replace
+
+import numpy as np
+
+from ..core.airfoil import Air, SectionParams
+from ..core.body import BodyDrag, body_drag_force
+from ..core.geometry import Propeller
+from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
+from ..core.vector import disk_frame, wrench_vectors
+
+__all__ = ["Rotor", "Vehicle", "VehicleWrench", "vehicle_wrench"]
+
+
+@dataclass(frozen=True, eq=False)
+class Rotor:
+    """One rotor of a vehicle.
+
+    Attributes
+    ----------
+    position : ndarray, shape (3,)
+        Hub position relative to the centre of mass, body axes [m].
+    axis : ndarray, shape (3,)
+        Unit thrust direction, body axes.
+    spin : float
+        +1: ccw about ``axis`` (right-hand rule), -1: cw.
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams, optional
+        This rotor's own parameter set; None: the set passed to :func:`vehicle_wrench`.
+    inertia : float, optional
+        Rotor and motor inertia about the axis J_r [kg m^2] (gyroscopic and spin-up
+        moments); None: not modelled.
+    """
+
+    position: np.ndarray
+    axis: np.ndarray
+    spin: float
+    propeller: Propeller
+    params: SectionParams | None = None
+    inertia: float | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Vehicle:
+    """A multirotor.
+
+    Attributes
+    ----------
+    mass : float
+        [kg].
+    rotors : tuple of Rotor
+    gravity : float
+        [m/s^2].
+    body_area : float
+        S_body of the paper's body-lift option (Sec. III-A) [m^2].
+    inertia : ndarray, shape (3, 3), optional
+        Inertia tensor about the centre of mass, body axes [kg m^2] (needed for measured
+        moments, I dw/dt + w x I w).
+    body_drag : BodyDrag, optional
+        Airframe drag (core/body.py).
+    name, source : str
+        Free text (what the vehicle is, where its numbers come from).
+    """
+
+    mass: float
+    rotors: tuple[Rotor, ...]
+    gravity: float = 9.81
+    body_area: float = 0.0
+    inertia: np.ndarray | None = None
+    body_drag: BodyDrag | None = None
+    name: str = ""
+    source: str = ""
+
+    @property
+    def weight(self) -> float:
+        """m g [N]."""
+        return self.mass * self.gravity
+
+
+@dataclass(frozen=True)
+class VehicleWrench:
+    """Force and moment on a vehicle, body axes, at N samples.
+
+    Attributes
+    ----------
+    force : ndarray, shape (N, 3)
+        Aerodynamic force: the rotors' and the airframe drag [N] (no gravity).
+    moment : ndarray, shape (N, 3)
+        Moment about the centre of mass [N m].
+    rotor_force : ndarray, shape (N, n_rotors, 3)
+        Each rotor's force [N].
+    rotor_moment : ndarray, shape (N, n_rotors, 3)
+        Each rotor's moment about the centre of mass [N m]: r_i x F_i, its aerodynamic hub
+        moment and, with a rotor inertia, the gyroscopic and spin-up moments.
+    body_force : ndarray, shape (N, 3)
+        Airframe drag [N] (zeros without one).
+    loads : tuple of RotorLoads
+        Each rotor's scalar loads and flags, shape (N,).
+    """
+
+    force: np.ndarray
+    moment: np.ndarray
+    rotor_force: np.ndarray
+    rotor_moment: np.ndarray
+    body_force: np.ndarray
+    loads: tuple[RotorLoads, ...]
+
+
+def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
+    """``value`` as a float array of shape (N, n_cols) (a single row is promoted to N = 1)."""
+    a = np.asarray(value)
+    if a.dtype.kind not in "iuf":
+        raise ValueError(f"{name} must be numbers, got {value!r:.60}")
+    a = a.astype(float)
+    if a.ndim == 1:
+        a = a[None, :]
+    if a.ndim != 2 or (n_cols is not None and a.shape[1] != n_cols):
+        raise ValueError(f"{name} must have shape (N, {n_cols}) or ({n_cols},), got {np.shape(value)}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{name} must be finite")
+    return a
+
+
+def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_velocity, rotor_omega, *,
+                   wind=None, rotor_acceleration=None, body_drag: BodyDrag | None = None, air: Air = Air(),
+                   discretization: Discretization = DEFAULT_DISCRETIZATION, on_failure: str = "raise") -> VehicleWrench:
+    """Body force and moment of a multirotor from its motion and rotor speeds (module docstring).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    params : AirfoilParams or CamberedParams
+        The rotors' parameter set (a rotor with its own ``params`` uses those).
+    velocity : array_like, shape (N, 3) or (3,)
+        Velocity of the centre of mass, body axes [m/s] (relative to the ground; the wind
+        is given separately).
+    angular_velocity : array_like, shape (N, 3) or (3,)
+        Body angular velocity w, body axes [rad/s].
+    rotor_omega : array_like, shape (N, n_rotors) or (n_rotors,)
+        Rotation rates Omega_i [rad/s], in the vehicle's rotor order, each in [0.1, 1e5].
+    wind : array_like, shape (N, 3) or (3,), optional
+        Wind velocity in body axes [m/s]; default none.
+    rotor_acceleration : array_like, shape (N, n_rotors) or (n_rotors,), optional
+        dOmega_i/dt [rad/s^2] for the spin-up reaction (rotors with a known inertia).
+    body_drag : BodyDrag, optional
+        Airframe drag; default the vehicle's (none if it has none).
+    air : Air
+    discretization : Discretization
+    on_failure : {"raise", "flag"}
+        As :func:`propmap.rotor_loads`.
+
+    Returns
+    -------
+    VehicleWrench
+        N the broadcast number of samples.
+
+    Raises
+    ------
+    ValueError
+        An input that is not numbers, of the wrong shape, non-finite, samples counts that
+        do not match, or the ranges of :func:`propmap.rotor_loads` (naming the input).
+    SolverError
+        As :func:`propmap.rotor_loads`.
+    """
+    n_rot = len(vehicle.rotors)
+    v = _samples("velocity", velocity, 3)
+    w = _samples("angular_velocity", angular_velocity, 3)
+    om = _samples("rotor_omega", rotor_omega, n_rot)
+    wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
+    acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
+    arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
+    counts = {a.shape[0] for a in arrays} - {1}
+    if len(counts) > 1:
+        raise ValueError(f"velocity, angular_velocity, rotor_omega, wind and rotor_acceleration must have the same "
+                         f"number of samples (or one), got {[a.shape[0] for a in arrays]}")
+    N = counts.pop() if counts else 1
+    v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
+    om = np.broadcast_to(om, (N, n_rot))
+    pos = np.array([r.position for r in vehicle.rotors])  # (n_rot, 3)
+    axes = np.array([r.axis for r in vehicle.rotors])
+    spins = np.array([r.spin for r in vehicle.rotors])
+    V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
+
+    # one solver call per distinct (propeller, parameter set): all its rotors' samples together
+    groups: dict[tuple[int, int], list[int]] = {}
+    for i, r in enumerate(vehicle.rotors):
+        p = r.params if r.params is not None else params
+        groups.setdefault((id(r.propeller), id(p)), []).append(i)
+    rotor_force = np.empty((N, n_rot, 3))
+    rotor_moment = np.empty((N, n_rot, 3))
+    loads: list[RotorLoads | None] = [None] * n_rot
+    for idx in groups.values():
+        rot = vehicle.rotors[idx[0]]
+        p = rot.params if rot.params is not None else params
+        Vg = V_hub[:, idx, :]  # (N, k, 3)
+        Vd, z, speed, beta = disk_frame(Vg, np.broadcast_to(axes[idx], Vg.shape))
+        r = rotor_loads(rot.propeller, p, om[:, idx], speed, beta, air=air, discretization=discretization,
+                        on_failure=on_failure)
+        F, M = wrench_vectors(r.thrust, r.drag, r.torque, r.rolling_moment, Vd, z, spins[idx],
+                              side_force=r.side_force, pitching_moment=r.pitching_moment)
+        rotor_force[:, idx, :] = F
+        rotor_moment[:, idx, :] = M
+        for k, i in enumerate(idx):
+            loads[i] = _column(r, k)
+    rotor_moment += np.cross(pos[None, :, :], rotor_force)
+    for i, rot in enumerate(vehicle.rotors):
+        if rot.inertia is None or rot.inertia == 0:
+            continue
+        h = (rot.spin * rot.inertia * om[:, i])[:, None] * rot.axis  # (N, 3)
+        rotor_moment[:, i, :] -= np.cross(w, h)
+        if acc is not None:
+            dom = np.broadcast_to(acc, (N, n_rot))[:, i]
+            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * rot.axis
+    body = vehicle.body_drag if body_drag is None else body_drag
+    body_force = np.zeros((N, 3))
+    if body is not None and body.active:
+        wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
+        body_force = body_drag_force(body, v - wind_a, wash, air.rho)
+    return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
+                         rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
+                         loads=tuple(loads))
+
+
+def _column(r: RotorLoads, k: int) -> RotorLoads:
+    """Column k of loads of shape (N, k_rotors): one rotor's RotorLoads of shape (N,)."""
+    kw = {}
+    for f in fields(r):
+        a = getattr(r, f.name)
+        if isinstance(a, np.ndarray) and a.ndim >= 2 and f.name != "r":
+            kw[f.name] = a[:, k]
+    return replace(r, **kw)

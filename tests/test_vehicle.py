@@ -1,0 +1,172 @@
+"""The vehicle model: its wrench against rotor_wrench summed by hand, hover equilibrium,
+gyroscopic and spin-up moments, airframe drag, and the vehicle file's new keys."""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.core.body import BodyDrag, body_drag_force
+from propmap.vehicle import VehicleFileError, read_vehicle, vehicle_wrench
+from propmap.vehicle.model import Rotor, Vehicle
+
+DATA = Path(pm.__file__).parent / "data"
+NEUROBEM = DATA / "examples" / "neurobem_quadrotor.toml"
+
+
+@pytest.fixture(scope="module")
+def quad():
+    return read_vehicle(DATA / "examples" / "quadrotor.toml")
+
+
+@pytest.fixture(scope="module")
+def generic():
+    return pm.generic_params()
+
+
+@pytest.mark.parametrize("w", [[0.0, 0.0, 0.0], [0.5, -1.0, 2.0]])
+def test_wrench_is_the_rotor_wrenches_summed_by_hand(quad, generic, w):
+    """F = sum F_i, M = sum r_i x F_i + M_i, with hub velocities v + w x r_i; both spins."""
+    v = np.array([[4.0, -1.0, -0.5], [0.0, 0.0, 2.0]])
+    om = np.array([[800.0, 820.0, 780.0, 810.0], [700.0, 700.0, 700.0, 700.0]])
+    res = vehicle_wrench(quad, generic, v, w, om)
+    F = np.zeros((2, 3))
+    M = np.zeros((2, 3))
+    for i, r in enumerate(quad.rotors):
+        V = v + np.cross(w, r.position)
+        rw = pm.rotor_wrench(r.propeller, generic, V, r.axis, om[:, i], r.spin)
+        F += rw.force
+        M += np.cross(r.position, rw.force) + rw.torque
+    np.testing.assert_allclose(res.force, F, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(res.moment, M, rtol=1e-12, atol=1e-12)
+    assert res.rotor_force.shape == (2, 4, 3) and res.loads[0].thrust.shape == (2,)
+
+
+def test_spin_senses_mirror_the_yaw_moment(quad, generic):
+    """Reversing every spin leaves the force and negates the shaft-torque (yaw) moment in hover."""
+    om = np.full(4, 800.0)
+    a = vehicle_wrench(quad, generic, [0, 0, 0], [0, 0, 0], om * [1, 1.05, 1, 1.05])
+    flipped = Vehicle(mass=quad.mass, rotors=tuple(Rotor(r.position, r.axis, -r.spin, r.propeller)
+                                                   for r in quad.rotors))
+    b = vehicle_wrench(flipped, generic, [0, 0, 0], [0, 0, 0], om * [1, 1.05, 1, 1.05])
+    np.testing.assert_allclose(a.force, b.force, rtol=1e-12)
+    np.testing.assert_allclose(a.moment[:, 2], -b.moment[:, 2], rtol=1e-12)
+    assert abs(a.moment[0, 2]) > 1e-4
+
+
+def test_hover_equilibrium_of_the_neurobem_vehicle(generic):
+    """Equal rotor speeds at rest: a pure vertical force, no moment (the layout is symmetric
+    and the spins cancel); the speed that carries the weight exists and is found by bisection."""
+    veh = read_vehicle(NEUROBEM)
+    params = generic.replace(collective=math.radians(8))
+    lo, hi = 300.0, 4000.0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        fz = vehicle_wrench(veh, params, [0, 0, 0], [0, 0, 0], [mid] * 4).force[0, 2]
+        lo, hi = (mid, hi) if fz < veh.weight else (lo, mid)
+    res = vehicle_wrench(veh, params, [0, 0, 0], [0, 0, 0], [lo] * 4)
+    assert res.force[0, 2] == pytest.approx(veh.weight, rel=1e-6)
+    np.testing.assert_allclose(res.force[0, :2], 0.0, atol=1e-12)
+    np.testing.assert_allclose(res.moment[0], 0.0, atol=1e-12)
+    assert 800 < lo < 2000  # the logs hover near 1100-1250 rad/s
+
+
+def test_gyroscopic_and_spin_up_moments():
+    """A single rotor with inertia J: M = ... - w x h - s J dOmega/dt a, h = s J Omega a."""
+    prop = pm.load_propeller("apce_8x6")
+    J = 2e-5
+    rot = Rotor(np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), 1.0, prop, inertia=J)
+    veh = Vehicle(mass=1.0, rotors=(rot,))
+    p = pm.generic_params()
+    w = np.array([1.0, 0.0, 0.0])
+    base = vehicle_wrench(Vehicle(mass=1.0, rotors=(Rotor(rot.position, rot.axis, 1.0, prop),)), p, [0, 0, 0], w,
+                          [800.0])
+    res = vehicle_wrench(veh, p, [0, 0, 0], w, [800.0], rotor_acceleration=[100.0])
+    h = J * 800.0 * np.array([0.0, 0.0, 1.0])
+    expected = base.moment[0] - np.cross(w, h) - J * 100.0 * np.array([0.0, 0.0, 1.0])
+    np.testing.assert_allclose(res.moment[0], expected, rtol=1e-12)
+    # the gyroscopic moment of a spinning rotor rolled about x acts about y
+    assert abs(res.moment[0, 1] - base.moment[0, 1]) == pytest.approx(J * 800.0, rel=1e-12)
+
+
+def test_body_drag_download_and_linear_in_plane_drag():
+    """In hover the wash gives a download (rho/2) C_D A_z (kappa v)^2; at low speed V the
+    in-plane drag is (rho/2) C_D A_x kappa v V, linear in V."""
+    b = BodyDrag(drag_area=(0.01, 0.01, 0.02), wash_factor=2.0)
+    wash = np.array([0.0, 0.0, 8.0])
+    F = body_drag_force(b, [0.0, 0.0, 0.0], wash, 1.2)
+    assert F[2] == pytest.approx(-0.5 * 1.2 * 0.02 * 16.0**2)
+    small = [body_drag_force(b, [V, 0.0, 0.0], wash, 1.2)[0] for V in (0.1, 0.2)]
+    assert small[1] / small[0] == pytest.approx(2.0, rel=1e-3)
+    assert small[0] == pytest.approx(-0.5 * 1.2 * 0.01 * 16.0 * 0.1, rel=1e-3)
+    with pytest.raises(ValueError, match="wash_factor"):
+        BodyDrag(drag_area=(0, 0, 0), wash_factor=-1)
+    with pytest.raises(ValueError, match="drag_area"):
+        BodyDrag(drag_area=(0, 0))
+
+
+def test_vehicle_body_drag_enters_the_total_force(quad, generic):
+    b = BodyDrag(drag_area=(0.01, 0.01, 0.01), wash_factor=0.0)
+    a = vehicle_wrench(quad, generic, [5, 0, 0], [0, 0, 0], [800] * 4)
+    c = vehicle_wrench(quad, generic, [5, 0, 0], [0, 0, 0], [800] * 4, body_drag=b)
+    np.testing.assert_allclose(c.force - a.force, c.body_force)
+    assert c.body_force[0, 0] == pytest.approx(-0.5 * 1.225 * 0.01 * 25)
+    np.testing.assert_allclose(c.moment, a.moment)  # drag acts at the centre of mass
+
+
+def test_wrench_inputs_are_checked(quad, generic):
+    with pytest.raises(ValueError, match="rotor_omega must have shape"):
+        vehicle_wrench(quad, generic, [0, 0, 0], [0, 0, 0], [800] * 3)
+    with pytest.raises(ValueError, match="same number of samples"):
+        vehicle_wrench(quad, generic, np.zeros((2, 3)), np.zeros((3, 3)), [800] * 4)
+    with pytest.raises(ValueError, match="velocity must be finite"):
+        vehicle_wrench(quad, generic, [np.nan, 0, 0], [0, 0, 0], [800] * 4)
+
+
+def test_extended_vehicle_file(tmp_path, generic):
+    veh = read_vehicle(NEUROBEM)
+    assert veh.mass == 0.772 and veh.inertia[2, 2] == 0.0043 and len(veh.rotors) == 4
+    r = veh.rotors[0]
+    assert r.propeller.n_blades == 3 and r.propeller.radius == pytest.approx(0.06477, rel=1e-4)
+    assert r.inertia == 9.3575e-6 and r.spin == -1.0
+    (tmp_path / "p.toml").write_text('section_model = "cambered"\ncollective_deg = 5.0\n')
+    (tmp_path / "v.toml").write_text(
+        'mass = 1.0\ninertia = [[0.01, 0.0, 0.0], [0.0, 0.02, 0.001], [0.0, 0.001, 0.03]]\n'
+        '[body]\ndrag_area = [0.01, 0.02, 0.03]\nwash_factor = 1.5\n'
+        '[[rotors]]\nposition = [0.1, 0, 0]\naxis = [0, 0, 1]\nspin = "ccw"\npropeller = "apce_8x6"\n'
+        'params = "p.toml"\ninertia = 1e-5\n')
+    v = read_vehicle(tmp_path / "v.toml")
+    assert v.inertia[1, 2] == 0.001 and v.body_drag.wash_factor == 1.5
+    assert v.rotors[0].params.collective == pytest.approx(math.radians(5))
+
+
+@pytest.mark.parametrize("text, match", [
+    ("inertia = [1, 2]", "inertia must be"),
+    ("inertia = [[1, 0, 0], [1, 1, 0], [0, 0, 1]]", "symmetric"),
+    ("inertia = [1, -1, 1]", "positive definite"),
+    ("[body]\nwash_factor = 1", "drag_area"),
+    ("[body]\ndrag_area = [0, 0, 100]", "drag_area"),
+    ("[body]\ndrag_area = [0, 0, 0]\nwash = 1", "unknown key"),
+])
+def test_vehicle_file_errors_name_the_key(tmp_path, text, match):
+    rotor = '[[rotors]]\nposition = [0.1, 0, 0]\naxis = [0, 0, 1]\nspin = "ccw"\npropeller = "apce_8x6"\n'
+    top, _, table = text.partition("[body]")
+    body = "[body]" + table if table else ""
+    (tmp_path / "v.toml").write_text(f"mass = 1.0\n{top}\n{body}\n{rotor}")
+    with pytest.raises(VehicleFileError, match=match):
+        read_vehicle(tmp_path / "v.toml")
+
+
+@pytest.mark.parametrize("line, match", [
+    ("blades = 0", "blades must be an integer"),
+    ("blades = 3", "catalogue propeller"),
+    ("params = \"nope\"", "params"),
+    ("inertia = -1", "inertia"),
+])
+def test_rotor_keys_errors(tmp_path, line, match):
+    (tmp_path / "v.toml").write_text('mass = 1.0\n[[rotors]]\nposition = [0.1, 0, 0]\naxis = [0, 0, 1]\n'
+                                     f'spin = "ccw"\npropeller = "apce_8x6"\n{line}\n')
+    with pytest.raises(VehicleFileError, match=match):
+        read_vehicle(tmp_path / "v.toml")
