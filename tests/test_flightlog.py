@@ -1,0 +1,139 @@
+"""Flight-log readers: the shared NeuroBEM logs (Bauersfeld et al., RSS 2021), their CSV form,
+synthetic PX4 ULogs, and malformed logs (one-line errors; exit 2 from the CLI)."""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import scipy.io
+
+from propmap.cli.main import main
+from propmap.io.flightlog import NEUROBEM_COLUMNS, FlightLogError, read_flight_log
+
+from .ulog_writer import hover_ulog
+
+SEGMENTS = ("bemnn20210218170320seg2.mat", "bemnn20210218171908seg2.mat", "bemnn20210223104803seg2.mat",
+            "bemnn20210223114138seg3.mat")
+
+
+@pytest.fixture(scope="module")
+def seg(shared_data):
+    return shared_data / "neurobem_flights" / SEGMENTS[2]
+
+
+def test_the_shared_neurobem_segments_read(shared_data):
+    """Four segments at 400 Hz; hovering figure-8: specific force about +g along body z, motor
+    speeds 985-1250 rad/s (PROVENANCE.md), NeuroBEM's own prediction carried along."""
+    durations = []
+    for name in SEGMENTS:
+        log = read_flight_log(shared_data / "neurobem_flights" / name)
+        assert log.n_motors == 4 and log.format == "neurobem"
+        assert np.median(np.diff(log.t)) == pytest.approx(0.0025, rel=1e-6)
+        assert log.reference_force is not None and log.reference_force.shape == (log.n, 3)
+        durations.append(log.duration)
+    np.testing.assert_allclose(durations, [35.76, 31.81, 29.37, 28.58], atol=0.01)
+    log = read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[2])
+    assert np.mean(log.specific_force[:, 2]) == pytest.approx(9.84, abs=0.05)
+    assert log.rotor_omega.min() == pytest.approx(985.1, abs=0.1) and log.rotor_omega.max() == pytest.approx(1250.0,
+                                                                                                              abs=0.1)
+
+
+@pytest.mark.parametrize("header", [True, False])
+def test_csv_form_reads_as_the_mat(tmp_path, seg, header):
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:500]
+    path = tmp_path / "log.csv"
+    lines = ([",".join(NEUROBEM_COLUMNS)] if header else []) + [",".join(repr(float(x)) for x in row) for row in arr]
+    path.write_text("\n".join(lines) + "\n")
+    log = read_flight_log(path)
+    ref = read_flight_log(seg)
+    np.testing.assert_array_equal(log.rotor_omega, ref.rotor_omega[:500])
+    np.testing.assert_array_equal(log.specific_force, ref.specific_force[:500])
+
+
+def test_csv_header_in_another_column_order(tmp_path, seg):
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:50]
+    order = list(range(41))[::-1]
+    path = tmp_path / "log.csv"
+    path.write_text(",".join(NEUROBEM_COLUMNS[j] for j in order) + "\n"
+                    + "\n".join(",".join(repr(float(row[j])) for j in order) for row in arr) + "\n")
+    np.testing.assert_array_equal(read_flight_log(path).velocity, read_flight_log(seg).velocity[:50])
+
+
+def test_ulog_from_esc_status(tmp_path):
+    """PX4 frames: FRD body / NED world turned into propmap's x forward, y left, z up."""
+    truth = hover_ulog(tmp_path / "f.ulg", rpm=12000.0)
+    log = read_flight_log(tmp_path / "f.ulg")
+    yaw, pitch = truth["yaw"], truth["pitch"]
+    # 2 m/s north seen from a body yawed 30 deg (east of north) and pitched 5 deg up
+    np.testing.assert_allclose(log.velocity[0], [2 * math.cos(yaw) * math.cos(pitch), 2 * math.sin(yaw),
+                                                 -2 * math.cos(yaw) * math.sin(pitch)], atol=1e-6)
+    np.testing.assert_allclose(log.specific_force[0], [0.5, -0.2, 9.9], atol=1e-5)
+    np.testing.assert_allclose(log.angular_velocity[0], [0.1, 0.0, 0.0], atol=1e-7)
+    np.testing.assert_allclose(log.rotor_omega[0], 12000 * 2 * math.pi / 60)
+    assert "esc_status" in log.motor_order
+
+
+def test_ulog_motor_map(tmp_path):
+    hover_ulog(tmp_path / "f.ulg", rpm=12000.0, with_esc=False)
+    with pytest.raises(FlightLogError, match="esc_status' not in the log.*--motor-map"):
+        read_flight_log(tmp_path / "f.ulg")
+    log = read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0))
+    np.testing.assert_allclose(log.rotor_omega[0], 12000 * 2 * math.pi / 60, rtol=1e-6)
+
+
+def test_ulog_missing_topic_is_named_with_those_found(tmp_path):
+    from .ulog_writer import write_ulog
+
+    write_ulog(tmp_path / "f.ulg", {"vehicle_acceleration": ([("uint64_t", "timestamp"), ("float[3]", "xyz")],
+                                                             [(1000, 0.0, 0.0, -9.8), (2000, 0.0, 0.0, -9.8)])})
+    with pytest.raises(FlightLogError, match="'vehicle_angular_velocity' not in the log .topics found: "
+                                             "vehicle_acceleration"):
+        read_flight_log(tmp_path / "f.ulg")
+
+
+def _bad_mat(tmp_path, arr, name="bad.mat"):
+    scipy.io.savemat(tmp_path / name, {"x": arr})
+    return tmp_path / name
+
+
+@pytest.mark.parametrize("mutate, match", [
+    (lambda a: a[:, :40], "N x 41"),
+    (lambda a: a[:1], "at least 2"),
+    (lambda a: np.vstack([a[:1], a[:1]]), "time does not increase at sample 2"),
+    (lambda a: np.where(np.arange(41) == 21, np.nan, a), "not a finite number"),
+    (lambda a: np.where(np.arange(41) == 20, -5.0, a), "negative motor speed"),
+    (lambda a: np.where(np.arange(41) == 13, 1e4, a), "specific_force .* beyond"),
+])
+def test_malformed_mat_logs(tmp_path, seg, mutate, match):
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:20].copy()
+    with pytest.raises(FlightLogError, match=match):
+        read_flight_log(_bad_mat(tmp_path, mutate(arr)))
+
+
+@pytest.mark.parametrize("content, name, match", [
+    (b"not a mat file at all", "x.mat", "not a readable MATLAB"),
+    (b"t,ang acc x\n1,2\n", "x.csv", "header lacks the NeuroBEM column"),
+    (b"1,2,3\n4,5,6\n", "x.csv", "3 columns"),
+    (b"ULog garbage", "x.ulg", "not a readable ULog"),
+    (b"", "x.csv", "empty file"),
+    (b"1,2", "x.bin", "unknown flight-log format"),
+])
+def test_malformed_files(tmp_path, content, name, match):
+    (tmp_path / name).write_bytes(content)
+    with pytest.raises(FlightLogError, match=match):
+        read_flight_log(tmp_path / name)
+
+
+def test_cli_bad_log_exits_2_with_one_line(tmp_path, capsys, shared_data):
+    import propmap as pm
+
+    (tmp_path / "x.mat").write_bytes(b"junk")
+    veh = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    code = main(["wrench", str(tmp_path / "x.mat"), "--vehicle", str(veh), "--out", str(tmp_path / "p.csv")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and err[0].startswith("propmap: error:")
+    assert not (tmp_path / "p.csv").exists()
