@@ -17,7 +17,7 @@ from propmap.identify import FitOptions
 from propmap.identify.flight import (FlightSamples, baseline_force, fit_baselines, fit_flight, fitted_body_drag,
                                      flight_errors, flight_samples, predict_flight)
 from propmap.io.flightlog import read_flight_log
-from propmap.io.params_file import read_body_drag, read_params
+from propmap.io.params_file import read_body, read_params
 
 VEHICLE = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
 SEGMENTS = ("bemnn20210218170320seg2.mat", "bemnn20210223104803seg2.mat")
@@ -57,6 +57,25 @@ def test_synthetic_log_parameters_are_recovered(noise):
         ci = res.identifiability.ci95
         assert np.all((ci[:, 0] <= true_x) & (true_x <= ci[:, 1])), (res.x, ci)
         assert np.sqrt(np.mean(res.residuals**2)) == pytest.approx(noise, rel=0.25)
+
+
+def test_centre_of_mass_is_recovered_from_the_moments():
+    """Moments generated about a centre of mass 4 mm forward and 2 mm right of the file's
+    origin: the fit with moments finds it (noise-free, exactly)."""
+    from dataclasses import replace
+
+    from propmap.identify.flight import fitted_centre_of_mass, shift_centre_of_mass
+
+    veh = pm.read_vehicle(VEHICLE)
+    truth = pm.generic_params().replace(collective=math.radians(5.0))
+    s = _synthetic(veh, truth, None, noise=0.0, n=30)
+    w = predict_flight(s, shift_centre_of_mass(veh, [0.004, -0.002]), truth, discretization=COARSE)
+    s = replace(s, force=w.force, moment=w.moment)
+    res = fit_flight(s, veh, base=truth, moments=True, options=FitOptions(names=("cg_x", "cg_y"), prior=False),
+                     discretization=COARSE)
+    np.testing.assert_allclose(fitted_centre_of_mass(res), [0.004, -0.002], atol=1e-9)
+    with pytest.raises(ValueError, match="no measured moment"):
+        fit_flight(replace(s, moment=None), veh, moments=True, options=FitOptions(names=("cg_x",)))
 
 
 def test_baselines_are_exact_on_their_own_model():
@@ -103,8 +122,8 @@ def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shar
         assert (tmp_path / ("p" + suffix)).is_file()
     params, air = read_params(out)
     assert air.rho == 1.204 and params.flap_compliance == pytest.approx(report["fitted"]["flap_compliance"])
-    body = read_body_drag(out)
-    assert body.drag_area[0] == pytest.approx(report["body_drag"]["drag_area"][0])
+    body = read_body(out)
+    assert body.drag.drag_area[0] == pytest.approx(report["body_drag"]["drag_area"][0])
     code = main(["wrench", logs[1], "--vehicle", str(VEHICLE), "--params", str(out), "--out",
                  str(tmp_path / "pred.csv")])
     assert code == 0

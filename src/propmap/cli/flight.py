@@ -97,11 +97,13 @@ def _flight_out_files(out: Path) -> list:
 @click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of --base).")
 @click.option("--rate-hz", type=float, default=25.0, show_default=True,
               help="Samples per second taken from the logs, in (0, 10000].")
+@click.option("--moments", is_flag=True,
+              help="Fit the measured moments too (I dw/dt + w x I w; the vehicle file needs its inertia).")
 @click.option("--cross-validate", "cross_validate", is_flag=True,
               help="Also leave each training log out in turn (one fit per log) and report the held-out errors.")
 @with_fit_options
-def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cross_validate, out, M, lift_model,
-                       fit_params, multistart, no_prior, as_json):
+def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, moments, cross_validate, out, M,
+                       lift_model, fit_params, multistart, no_prior, as_json):
     """Fit the rotor and airframe parameters to flight logs (eqs 16-18 in three axes).
 
     LOG: NeuroBEM .mat or .csv, or PX4 .ulg; the vehicle file lists its rotors in the logs'
@@ -109,9 +111,10 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cro
     """
     import numpy as np
 
-    from ..identify.flight import (cross_validate_flight, fit_baselines, baseline_force, fit_flight,
-                                   fitted_body_drag, flight_errors, hover_torque_check, predict_flight,
-                                   speed_band_errors)
+    from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
+                                   fitted_body_drag, fitted_centre_of_mass, flight_errors, hover_torque_check,
+                                   predict_flight, shift_centre_of_mass, speed_band_errors)
+    from ..io.params_file import BodyTable
 
     check_outputs(_flight_out_files(out), [*log_paths, vehicle, base_spec])
     veh = _vehicle(vehicle)
@@ -134,9 +137,13 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cro
     samples = _samples(logs, veh, rate_hz)
     held_idx = [k for k, n in enumerate(names) if n in held]
     train = samples.select(~np.isin(samples.log_index, held_idx))
+    if moments and veh.inertia is None:
+        raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
     opts = _options(M, lift_model, multistart, fit_params, no_prior)
-    res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts)
+    res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
+    cg = fitted_centre_of_mass(res)
+    veh = shift_centre_of_mass(veh, cg)
     pred = predict_flight(samples, veh, res.params, body=body, air=air)
     baselines = fit_baselines(train, veh)
     rows, report = [], {"training": {}, "held_out": {}}
@@ -162,7 +169,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cro
     report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
     report["body_drag"] = res.extra.get("body_drag")
     if cross_validate:
-        cv = _run_fit(cross_validate_flight, train, veh, base=base, air=air, options=opts)
+        cv = _run_fit(cross_validate_flight, train, veh, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
     res.extra["flight_report"] = report
     text = [f"{samples.n} samples at {rate_hz:g} Hz from {len(names)} log(s); fitted on "
@@ -205,7 +212,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, cro
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
-    _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures, body=body)
+    _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
+                   body=BodyTable(body, veh.centre_of_mass))
 
 
 def _hover_loads(params, veh, samples, air):
@@ -244,8 +252,8 @@ def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
     import pandas as pd
 
     from ..io.atomic import atomic_write
-    from ..io.params_file import ParamsFileError, read_body_drag
-    from ..identify.flight import flight_errors
+    from ..identify.flight import flight_errors, shift_centre_of_mass
+    from ..io.params_file import ParamsFileError, read_body
 
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
     veh = _vehicle(vehicle)
@@ -255,9 +263,13 @@ def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
     body = veh.body_drag
     if params_spec is not None and Path(params_spec).is_file():
         try:
-            body = read_body_drag(params_spec) or body
+            table = read_body(params_spec)
         except ParamsFileError as exc:
             raise InputError(f"--params: {exc}") from None
+        if table is not None:
+            body = table.drag
+            if table.centre_of_mass is not None:
+                veh = shift_centre_of_mass(veh, table.centre_of_mass)
     (log,) = _logs([log_path])
     samples = _samples([log], veh, 1e4)  # every sample
     from ..vehicle import vehicle_wrench

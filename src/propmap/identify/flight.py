@@ -12,10 +12,13 @@ over all samples and axes. The fitting engine, its bounds, population prior,
 identifiability report and multistart are identify.fit's (docs/identification.md).
 
 What is fitted: any section parameter, the rotor options (``collective``,
-``flap_compliance``) and the airframe drag (``drag_area_x``, ``drag_area_y``,
-``drag_area_z``, ``wash_factor``; core/body.py). The default choice
-(:data:`FLIGHT_FIT`) was made by leave-one-log-out cross-validation on the NeuroBEM logs
-(docs/flight.md).
+``flap_compliance``), the airframe drag (``drag_area_x``, ``drag_area_y``,
+``drag_area_z``, ``wash_factor``; core/body.py) and the centre of mass (``cg_x``,
+``cg_y``: its offset from the vehicle file's origin in the rotor plane [m], which moves
+every rotor's moment arm; a few millimetres decide the hover moment balance). The default
+choice (:data:`FLIGHT_FIT`) was made by leave-one-log-out cross-validation on the
+NeuroBEM logs (docs/flight.md). With ``moments``, the moment errors join the residual,
+divided by the mean rotor arm so that they are forces too.
 
 Samples are taken at ``rate_hz`` (25 Hz by default, from logs at hundreds of Hz): the
 measured forces of the NeuroBEM logs carry no content above 2 Hz that a quasi-steady
@@ -38,7 +41,8 @@ from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _finish, _fit_with_continuation, _params_from,
                   _with_prior)
 
-__all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag", "flight_errors",
+__all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
+           "fitted_centre_of_mass", "shift_centre_of_mass", "flight_errors",
            "fit_baselines", "baseline_force", "speed_band_errors", "cross_validate_flight", "hover_torque_check",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
@@ -46,6 +50,9 @@ __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "f
 FLIGHT_FIT = ("collective", "cl_alpha", "flap_compliance", "drag_area_x", "drag_area_y", "drag_area_z",
               "wash_factor")
 AIRFRAME_NAMES = tuple(AIRFRAME_BOUNDS)
+CG_NAMES = ("cg_x", "cg_y")
+#: bounds of the centre-of-mass offset [m]
+CG_BOUND = 0.05
 #: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
 #: rotor thrust (docs/flight.md), far inside the flight data's model error
 FLIGHT_DISCRETIZATION = Discretization(24, 8)
@@ -198,6 +205,23 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
                           discretization=discretization)
 
 
+def shift_centre_of_mass(vehicle: Vehicle, cg) -> Vehicle:
+    """The vehicle with its centre of mass at ``cg`` (shape (3,) or (2,), body axes [m]) from
+    the origin of its rotor positions."""
+    c = np.array(vehicle.centre_of_mass, float)
+    c[: len(cg)] = cg
+    return replace(vehicle, centre_of_mass=c)
+
+
+def fitted_centre_of_mass(result: FitResult) -> np.ndarray:
+    """The centre of mass (x, y) [m] of a flight fit (the vehicle's when not fitted)."""
+    return np.asarray(result.extra.get("centre_of_mass", [0.0, 0.0]), float)
+
+
+def _mean_arm(vehicle: Vehicle) -> float:
+    return float(np.mean([np.linalg.norm(r.position[:2]) for r in vehicle.rotors])) or 1.0
+
+
 def _body_from(x, names, body: BodyDrag) -> BodyDrag:
     vals = dict(zip(names, x))
     area = [vals.get(f"drag_area_{a}", body.drag_area[k]) for k, a in enumerate("xyz")]
@@ -206,7 +230,7 @@ def _body_from(x, names, body: BodyDrag) -> BodyDrag:
 
 
 def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None, air: Air = Air(),
-               body: BodyDrag | None = None, options: FitOptions = FitOptions(),
+               body: BodyDrag | None = None, options: FitOptions = FitOptions(), moments: bool = False,
                discretization: Discretization = FLIGHT_DISCRETIZATION) -> FitResult:
     """Identify the rotor and airframe parameters from flight logs (module docstring).
 
@@ -223,18 +247,24 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     options : FitOptions
         ``names``: default :data:`FLIGHT_FIT`. The population prior applies to the section
         parameters it knows, weighted as level flight's (by the vehicle's weight).
+    moments : bool
+        Fit the measured moments too (samples need them: the vehicle's inertia), each
+        divided by the mean rotor arm [m].
     discretization : Discretization
 
     Returns
     -------
     FitResult
-        ``residuals``: the force errors [N], samples x 3 axes; ``extra["body_drag"]``: the
-        fitted airframe drag; ``extra["kind"] == "flight"``.
+        ``residuals``: the force errors [N], samples x 3 axes (then, with ``moments``, the
+        moment errors / arm [N]); ``extra["body_drag"]``: the fitted airframe drag;
+        ``extra["centre_of_mass"]``: the centre-of-mass offset [m]; ``extra["kind"] ==
+        "flight"``.
 
     Raises
     ------
     ValueError
-        Unknown parameter names, fewer residuals than parameters + 1.
+        Unknown parameter names, fewer residuals than parameters + 1, moments asked for
+        without measured moments.
     SolverError
         From the rotor model.
     """
@@ -251,22 +281,34 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),
              "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0,
              "flap_compliance": base.flap_compliance or 1.0}
+    if moments and samples.moment is None:
+        raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
+    start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]))
     x0 = np.array([start[n] if n in start else getattr(base, n) for n in names], float)
     measured = samples.force
+    arm = _mean_arm(vehicle)
+    cg_idx = [names.index(n) if n in names else None for n in CG_NAMES]
+    x0_cg = [float(c) for c in vehicle.centre_of_mass[:2]]
 
     def make_residual(opts):
         def residual(x, opts=opts):
             p = _params_from(x, names, base, opts)
             b = _body_from(x, names, body0)
-            w = predict_flight(samples, vehicle, p, body=b, air=air, discretization=discretization)
-            return (w.force - measured).ravel()
+            veh = shift_centre_of_mass(vehicle, [c0 if k is None else x[k] for k, c0 in zip(cg_idx, x0_cg)])
+            w = predict_flight(samples, veh, p, body=b, air=air, discretization=discretization)
+            r = (w.force - measured).ravel()
+            if moments:
+                r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
+            return r
         return residual
 
     make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit flight",
                                                                     x0)
     fitted_body = _body_from(best.x, names, body0)
+    cg = [c0 if k is None else float(best.x[k]) for k, c0 in zip(cg_idx, x0_cg)]
     extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
+             "centre_of_mass": cg, "moments_fitted": bool(moments), "moment_arm_m": arm,
              "discretization": [discretization.n_radial, discretization.n_azimuth],
              "body_drag": {"drag_area": list(fitted_body.drag_area), "wash_factor": fitted_body.wash_factor},
              **extra}
@@ -373,7 +415,7 @@ def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
 
 
 def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None,
-                          air: Air = Air(), options: FitOptions = FitOptions(),
+                          air: Air = Air(), options: FitOptions = FitOptions(), moments: bool = False,
                           discretization: Discretization = FLIGHT_DISCRETIZATION, progress=None) -> dict:
     """Leave-one-log-out: fit on all logs but one, score on it, for every log.
 
@@ -398,9 +440,10 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
     for k, name in enumerate(samples.log_names):
         train = samples.select(samples.log_index != k)
         test = samples.of_log(k)
-        res = fit_flight(train, vehicle, base=base, air=air, options=options, discretization=discretization)
-        w = predict_flight(test, vehicle, res.params, body=fitted_body_drag(res), air=air,
-                           discretization=discretization)
+        res = fit_flight(train, vehicle, base=base, air=air, options=options, moments=moments,
+                         discretization=discretization)
+        w = predict_flight(test, shift_centre_of_mass(vehicle, fitted_centre_of_mass(res)), res.params,
+                           body=fitted_body_drag(res), air=air, discretization=discretization)
         row = {"log": name, "model": flight_errors(w.force, test, w.moment),
                "x": {n: float(v) for n, v in zip(res.names, res.x)}}
         for key, bl in fit_baselines(train, vehicle).items():

@@ -54,6 +54,8 @@ are the paper's rigid blades in an azimuth-independent inflow::
     [body]
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
     wash_factor = 1.0                   # slipstream factor, in [0, 3] (core/body.py)
+    centre_of_mass = [0.002, -0.001, 0.0]   # [m], each in [-1, 1]: the fitted centre of mass in
+                                            # the vehicle file's frame (optional)
 
 Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
 never converted), finite, and within its range: the cambered keys as ``CamberedParams``
@@ -70,6 +72,7 @@ import math
 import numbers
 from dataclasses import fields
 from pathlib import Path
+from typing import NamedTuple
 
 import tomli_w
 
@@ -78,8 +81,8 @@ from .atomic import atomic_write
 from .readers import show_path
 from .toml_file import load_toml
 
-__all__ = ["ParamsFileError", "read_params", "read_body_drag", "write_params", "resolve_params", "params_to_dict",
-           "params_from_dict", "body_from_dict", "named_sets", "SECTION_MODELS"]
+__all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
+           "params_to_dict", "params_from_dict", "body_from_dict", "named_sets", "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
 REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
@@ -108,6 +111,14 @@ FILE_RANGES = {
 
 class ParamsFileError(ValueError):
     """A parameter file is malformed; the message names the file and the key."""
+
+
+class BodyTable(NamedTuple):
+    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag) and the
+    centre of mass [m] (shape (3,), or None when the table has none)."""
+
+    drag: object
+    centre_of_mass: object
 
 
 def _record(model: str):
@@ -176,20 +187,22 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
     return params, air
 
 
-def body_from_dict(data: dict, *, where: str = "parameters"):
-    """The airframe drag of a file-form dict's ``[body]`` table, or None without one.
+def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
+    """The ``[body]`` table of a file-form dict (module docstring), or None without one.
 
     Returns
     -------
-    BodyDrag or None
+    BodyTable or None
 
     Raises
     ------
     ValueError
         A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
-        values of the wrong type or out of range (core/body.py); the message starts with
-        ``where``.
+        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m);
+        the message starts with ``where``.
     """
+    import numpy as np
+
     from ..core.body import BodyDrag
 
     if BODY_TABLE not in data:
@@ -197,20 +210,28 @@ def body_from_dict(data: dict, *, where: str = "parameters"):
     table = data[BODY_TABLE]
     if not isinstance(table, dict):
         raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {_short(table)}")
-    extra = sorted(str(k) for k in table if k not in ("drag_area", "wash_factor", "comment"))
+    allowed = ("drag_area", "wash_factor", "centre_of_mass", "comment")
+    extra = sorted(str(k) for k in table if k not in allowed)
     if extra:
         raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(_short(k, 40) for k in extra[:5])} "
-                         "(allowed: drag_area, wash_factor, comment)")
+                         f"(allowed: {', '.join(allowed)})")
     if "drag_area" not in table:
         raise ValueError(f"{where}: [body]: missing key 'drag_area'")
-    area = table["drag_area"]
-    if not (isinstance(area, list) and len(area) == 3):
-        raise ValueError(f"{where}: [body]: drag_area must be 3 numbers [m^2], got {_short(area)}")
-    for k, v in enumerate(area):
-        _check_number(v, f"[body] drag_area[{k}]", where, (0.0, 10.0, False, False, "m^2"))
+    vectors = {}
+    for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")), ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
+        if key not in table:
+            continue
+        value = table[key]
+        if not (isinstance(value, list) and len(value) == 3):
+            raise ValueError(f"{where}: [body]: {key} must be 3 numbers [{rng[4]}], got {_short(value)}")
+        for k, v in enumerate(value):
+            _check_number(v, f"[body] {key}[{k}]", where, rng)
+        vectors[key] = [float(v) for v in value]
     if "wash_factor" in table:
         _check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
-    return BodyDrag(drag_area=tuple(float(v) for v in area), wash_factor=float(table.get("wash_factor", 0.0)))
+    drag = BodyDrag(drag_area=tuple(vectors["drag_area"]), wash_factor=float(table.get("wash_factor", 0.0)))
+    cg = np.array(vectors["centre_of_mass"]) if "centre_of_mass" in vectors else None
+    return BodyTable(drag, cg)
 
 
 def _short(value, n: int = 60) -> str:
@@ -301,8 +322,9 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
     air : Air
     comment : str
         Written as the file's ``comment``.
-    body : BodyDrag, optional
-        Airframe drag, written as the ``[body]`` table (:func:`read_body_drag` reads it).
+    body : BodyTable, optional
+        Airframe drag and centre of mass, written as the ``[body]`` table (:func:`read_body`
+        reads it).
 
     Raises
     ------
@@ -313,13 +335,16 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
     if comment:
         data["comment"] = comment
     if body is not None:
-        data[BODY_TABLE] = {"drag_area": list(body.drag_area), "wash_factor": body.wash_factor}
+        data[BODY_TABLE] = {"drag_area": [float(v) for v in body.drag.drag_area],
+                            "wash_factor": float(body.drag.wash_factor)}
+        if body.centre_of_mass is not None:
+            data[BODY_TABLE]["centre_of_mass"] = [float(v) for v in body.centre_of_mass]
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
 
 
-def read_body_drag(path):
-    """The airframe drag (``[body]`` table) of a parameter file, or None without one.
+def read_body(path) -> BodyTable | None:
+    """The ``[body]`` table (airframe drag, centre of mass) of a parameter file, or None.
 
     Raises
     ------

@@ -7,6 +7,8 @@ Format (body frame: x forward, y left, z up; SI units)::
     body_area = 0.02      # [m^2], optional, in [0, 100]: S_body of the body-lift option (Sec. III-A)
     inertia = [0.0025, 0.0021, 0.0043]   # [kg m^2], optional: the diagonal, or a symmetric
                                          # positive definite 3 x 3 list [[Ixx, Ixy, Ixz], ...]
+    centre_of_mass = [0.0, 0.0, 0.0]     # [m], optional: where the centre of mass is in the frame
+                                         # of the rotor positions (each in [-100, 100])
 
     [body]                # optional airframe drag (core/body.py)
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
@@ -66,7 +68,7 @@ ROTOR_INERTIA_RANGE = (0.0, 100.0, False)  # [kg m^2]
 BLADES_RANGE = (1, 100)
 DIAMETER_RANGE = (0.0, 100.0, True)  # [m]
 TEXT_KEYS = ("name", "comment", "source")
-VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "body", "rotors", *TEXT_KEYS)
+VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "body", "rotors", *TEXT_KEYS)
 BODY_KEYS = ("drag_area", "wash_factor", *TEXT_KEYS)
 ROTOR_KEYS = ("position", "axis", "spin", "propeller", "blades", "diameter_m", "params", "inertia", *TEXT_KEYS)
 
@@ -251,6 +253,10 @@ def read_vehicle(path) -> Vehicle:
     area = _number(data.get("body_area", 0.0), f"{name}: body_area", "m^2", BODY_AREA_RANGE)
     inertia = _inertia(data["inertia"], f"{name}: inertia") if "inertia" in data else None
     body = _body(data["body"], name) if "body" in data else None
+    cg = _vec3(data["centre_of_mass"], f"{name}: centre_of_mass") if "centre_of_mass" in data else np.zeros(3)
+    if np.any(np.abs(cg) > POSITION_MAX):
+        raise VehicleFileError(f"{name}: centre_of_mass must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
+                               f"m, got {_short(data['centre_of_mass'])}")
     rotors = []
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -286,4 +292,4 @@ def read_vehicle(path) -> Vehicle:
         rotors.append(Rotor(position, axis / length, spin, prop, params=params, inertia=j_r))
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
-                   **text)
+                   centre_of_mass=cg, **text)

@@ -10,6 +10,9 @@ moment M_i about its hub. About the centre of mass:
     F = sum_i F_i + F_body,
     M = sum_i (r_i x F_i + M_i - w x h_i - s_i J_i dOmega_i/dt a_i),
 
+(r_i taken from the centre of mass: ``Vehicle.centre_of_mass`` is subtracted from the
+file's positions)
+
 with h_i = s_i J_i Omega_i a_i the rotor's angular momentum (s_i = +1 ccw about a_i): the
 gyroscopic moment -w x h_i and the reaction to the rotor's spin-up, both only when the
 rotor inertia J_i is known (a rigid body carrying spinning rotors, as in R. Mahony,
@@ -20,7 +23,7 @@ the airframe drag (core/body.py), acting at the centre of mass.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
@@ -79,6 +82,10 @@ class Vehicle:
         moments, I dw/dt + w x I w).
     body_drag : BodyDrag, optional
         Airframe drag (core/body.py).
+    centre_of_mass : ndarray, shape (3,)
+        Position of the centre of mass relative to the origin of the rotor positions, body
+        axes [m] (zeros: the rotor positions are taken from the centre of mass). Moments are
+        taken about it: rotor i's arm is r_i - centre_of_mass.
     name, source : str
         Free text (what the vehicle is, where its numbers come from).
     """
@@ -89,6 +96,7 @@ class Vehicle:
     body_area: float = 0.0
     inertia: np.ndarray | None = None
     body_drag: BodyDrag | None = None
+    centre_of_mass: np.ndarray = field(default_factory=lambda: np.zeros(3))
     name: str = ""
     source: str = ""
 
@@ -197,7 +205,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     N = counts.pop() if counts else 1
     v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
     om = np.broadcast_to(om, (N, n_rot))
-    pos = np.array([r.position for r in vehicle.rotors])  # (n_rot, 3)
+    pos = np.array([r.position for r in vehicle.rotors]) - vehicle.centre_of_mass  # arms about the centre of mass
     axes = np.array([r.axis for r in vehicle.rotors])
     spins = np.array([r.spin for r in vehicle.rotors])
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
