@@ -28,6 +28,10 @@ from .core.solver import rotor_loads
 __all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller"]
 
 CASES = ("apc10x7e", "dji9443", "beaver")
+#: the Beaver polar's test conditions (Sinnige et al. 2019 as published with the data): rotation
+#: rate [rev/s] and air density [kg/m^3]
+BEAVER_N = 188.3
+BEAVER_RHO = 1.198
 DIGITIZED = "FLOWUnsteady (byuflowlab, MIT), digitized"
 CITATIONS = {
     "apc10x7e": "McCrink & Gregory, J. Aircraft 54(1), 2017, Figs. 16, 20; " + DIGITIZED,
@@ -142,8 +146,11 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
     CaseResult
         ``metrics[label]``: apc10x7e: rms and max |dCT| / CT(first point) and
         |dCQ| / CQ(first point); dji9443: CT and its error relative to 0.072; beaver:
-        CT(0) and its relative error, CT(alpha)/CT(0) at 10 and 20 deg and their errors
-        against the measured ratio (interpolated).
+        the wind-axis CT_w = (T cos a - H sin a) / (rho n^2 D^4) that the tunnel's balance
+        measured (Sinnige et al. 2019, Sec. III.A), at the test's rho and n: CT_w(0) and its
+        relative error, CT_w(a)/CT_w(0) at 10 and 20 deg and their errors against the
+        measured ratio (interpolated), the shaft ratios and H/T. ``air`` sets the viscosity
+        and speed of sound (the density is the test's).
 
     Raises
     ------
@@ -187,28 +194,38 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         return CaseResult(case, "rpm", np.array([5400.0]), {"CT": np.array([0.072])}, pred, CITATIONS[case],
                           "hover; measured CT 0.072 (standard deviation 0.0018)", metrics)
     if case == "beaver":
+        # Sinnige et al. (2019) measured the force with an external balance in WIND axes:
+        # CT_w = (T cos a - H sin a) / (rho n^2 D^4), H the in-plane (drag) force; their test
+        # conditions: rho = 1.198 kg/m^3, n = 188.3 Hz (J = 0.896), V = 40 m/s, and the
+        # nominal -0.2 deg is the true 0 (setup misalignment): a = nominal + 0.2 deg.
         prop = beaver_propeller()
         d = np.array(_rows("sinnige2019_CT_vs_incidence_J0.9.csv"))
         inc = d[:, 0]
-        V, J = 40.0, 0.9
-        n = V / (J * prop.diameter)
+        V, n = 40.0, BEAVER_N
+        tunnel = Air(rho=BEAVER_RHO, mu=air.mu, speed_of_sound=air.speed_of_sound)
         pred, metrics = {}, {}
-        ratio_m = {a: float(np.interp(a, inc, d[:, 1]) / np.interp(0.0, inc, d[:, 1])) for a in (10.0, 20.0)}
-        CT0m = float(np.interp(0.0, inc, d[:, 1]))
+        CT0m = float(d[0, 1])
+        ratio_m = {a: float(np.interp(a + inc[0], inc, d[:, 1]) / CT0m) for a in (10.0, 20.0)}
+        true = inc - inc[0]
         for label, p in param_sets.items():
-            # the model is symmetric in the sign of the incidence: -0.2 deg is 0.2 deg
-            grid = np.concatenate([[0.0, 10.0, 20.0], np.abs(inc)])
-            CT = rotor_loads(prop, p, 2 * math.pi * n, V, np.radians(grid), air=air, radial=False).CT
-            pred[label] = {"CT": CT[3:]}
-            metrics[label] = {"CT0": float(CT[0]), "rel_err_ct0": float(CT[0] / CT0m - 1),
-                              **{f"ratio_{a:g}": float(CT[k + 1] / CT[0]) for k, a in enumerate((10.0, 20.0))},
-                              **{f"ratio_err_{a:g}": float(CT[k + 1] / CT[0] - ratio_m[a])
+            grid = np.radians(np.concatenate([[0.0, 10.0, 20.0], true]))
+            r = rotor_loads(prop, p, 2 * math.pi * n, V, grid, air=tunnel, radial=False)
+            norm = tunnel.rho * n**2 * prop.diameter**4
+            CTw = (r.thrust * np.cos(grid) - r.drag * np.sin(grid)) / norm
+            pred[label] = {"CT": CTw[3:], "CT_shaft": r.CT[3:]}
+            metrics[label] = {"CT0": float(CTw[0]), "rel_err_ct0": float(CTw[0] / CT0m - 1),
+                              **{f"ratio_{a:g}": float(CTw[k + 1] / CTw[0]) for k, a in enumerate((10.0, 20.0))},
+                              **{f"ratio_err_{a:g}": float(CTw[k + 1] / CTw[0] - ratio_m[a])
+                                 for k, a in enumerate((10.0, 20.0))},
+                              **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0]) for k, a in enumerate((10.0, 20.0))},
+                              **{f"H_over_T_{a:g}": float(r.drag[k + 1] / r.thrust[k + 1])
                                  for k, a in enumerate((10.0, 20.0))}}
         metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
         first = next(iter(param_sets.values()))
-        h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=air)
-        pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=air))}
+        h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)
+        pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=tunnel)) * np.cos(np.radians(true))}
         return CaseResult(case, "incidence_deg", inc, {"CT": d[:, 1]}, pred, CITATIONS[case],
-                          f"J = 0.9, V = 40 m/s ({n * 60:.0f} rpm); hover model calibrated on the "
-                          f"{next(iter(param_sets))} model at V = 0", metrics)
+                          f"wind-axis CT (T cos a - H sin a), J = 0.896, V = 40 m/s, rho = {BEAVER_RHO} kg/m^3 "
+                          f"({n * 60:.0f} rpm); hover model calibrated on the {next(iter(param_sets))} model at V = 0",
+                          metrics)
     raise ValueError(f"unknown case {case!r}; valid: {', '.join(CASES)}")

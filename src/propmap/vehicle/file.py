@@ -9,6 +9,8 @@ Format (body frame: x forward, y left, z up; SI units)::
                                          # positive definite 3 x 3 list [[Ixx, Ixy, Ixz], ...]
     centre_of_mass = [0.0, 0.0, 0.0]     # [m], optional: where the centre of mass is in the frame
                                          # of the rotor positions (each in [-100, 100])
+    motor_time_constant = 0.033          # [s], optional, in [0, 1]: first-order lag from a log's
+                                         # motor speeds to the rotors' (flight logs only)
 
     [body]                # optional airframe drag (core/body.py)
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
@@ -68,7 +70,9 @@ ROTOR_INERTIA_RANGE = (0.0, 100.0, False)  # [kg m^2]
 BLADES_RANGE = (1, 100)
 DIAMETER_RANGE = (0.0, 100.0, True)  # [m]
 TEXT_KEYS = ("name", "comment", "source")
-VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "body", "rotors", *TEXT_KEYS)
+MOTOR_TAU_RANGE = (0.0, 1.0, False)  # [s]
+VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "motor_time_constant", "body", "rotors",
+                *TEXT_KEYS)
 BODY_KEYS = ("drag_area", "wash_factor", *TEXT_KEYS)
 ROTOR_KEYS = ("position", "axis", "spin", "propeller", "blades", "diameter_m", "params", "inertia", *TEXT_KEYS)
 
@@ -257,6 +261,7 @@ def read_vehicle(path) -> Vehicle:
     if np.any(np.abs(cg) > POSITION_MAX):
         raise VehicleFileError(f"{name}: centre_of_mass must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
                                f"m, got {_short(data['centre_of_mass'])}")
+    tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     rotors = []
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -292,4 +297,4 @@ def read_vehicle(path) -> Vehicle:
         rotors.append(Rotor(position, axis / length, spin, prop, params=params, inertia=j_r))
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
-                   centre_of_mass=cg, **text)
+                   centre_of_mass=cg, motor_time_constant=tau, **text)

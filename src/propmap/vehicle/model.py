@@ -86,6 +86,9 @@ class Vehicle:
         Position of the centre of mass relative to the origin of the rotor positions, body
         axes [m] (zeros: the rotor positions are taken from the centre of mass). Moments are
         taken about it: rotor i's arm is r_i - centre_of_mass.
+    motor_time_constant : float
+        tau [s] of the first-order lag from a log's motor speeds to the rotors' (0: the
+        logged speeds are the rotors'; identify.flight.flight_samples).
     name, source : str
         Free text (what the vehicle is, where its numbers come from).
     """
@@ -97,6 +100,7 @@ class Vehicle:
     inertia: np.ndarray | None = None
     body_drag: BodyDrag | None = None
     centre_of_mass: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    motor_time_constant: float = 0.0
     name: str = ""
     source: str = ""
 

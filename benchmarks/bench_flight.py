@@ -1,0 +1,112 @@
+"""Flight-log benchmark: the vehicle model on a whole log, and a flight fit.
+
+Run:  .venv/bin/python benchmarks/bench_flight.py [--fit]
+
+Needs ../shared/data/neurobem_flights beside the checkout (the NeuroBEM logs, Bauersfeld
+et al., RSS 2021). Writes benchmarks/results/flight.json atomically and prints it.
+
+* ``propmap wrench`` on the 29.4 s, 400 Hz segment bemnn20210223104803seg2 (11,749 samples
+  x 4 rotors) as a whole process (median, min, max of 5 runs after a warm-up), beside
+  ``propmap props`` (the CLI's start-up, the same run) so that the ratio carries over.
+* ``vehicle_wrench`` in-process on the same samples: seconds, rotor evaluations per
+  second, residual evaluations per annulus, for the default (48 x 16) and the flight-fit
+  (24 x 8) discretizations, uniform inflow and Pitt-Peters.
+* With ``--fit``: ``fit_flight`` on all four segments at 25 Hz with the default
+  parameters (FLIGHT_FIT): seconds, residual evaluations, rotor points.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import propmap as pm
+from propmap.identify.flight import FLIGHT_DISCRETIZATION, fit_flight, flight_samples
+from propmap.io.atomic import atomic_write
+from propmap.io.flightlog import read_flight_log
+
+ROOT = Path(__file__).resolve().parents[1]
+LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
+VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
+SEGMENT = "bemnn20210223104803seg2.mat"
+BIN = Path(sys.executable).parent
+
+
+def wall(argv, runs=5):
+    subprocess.run(argv, capture_output=True, check=True)
+    times = []
+    for _ in range(runs):
+        t = time.perf_counter()
+        subprocess.run(argv, capture_output=True, check=True)
+        times.append(time.perf_counter() - t)
+    return {"min_s": min(times), "median_s": float(np.median(times)), "max_s": max(times)}
+
+
+def in_process(params, disc, runs=3):
+    veh = pm.read_vehicle(VEHICLE)
+    s = flight_samples([read_flight_log(LOGS / SEGMENT)], veh, rate_hz=1e4)
+    pm.vehicle_wrench(veh, params, s.velocity[:64], s.angular_velocity[:64], s.rotor_omega[:64],
+                      discretization=disc)  # compile / load the cache
+    times = []
+    for _ in range(runs):
+        t = time.perf_counter()
+        w = pm.vehicle_wrench(veh, params, s.velocity, s.angular_velocity, s.rotor_omega,
+                              rotor_acceleration=s.rotor_acceleration, discretization=disc)
+        times.append(time.perf_counter() - t)
+    nev = sum(float(np.sum(lo.n_evaluations)) for lo in w.loads)
+    points = s.n * len(veh.rotors)
+    med = float(np.median(times))
+    return {"samples": s.n, "rotor_points": points, "median_s": med, "min_s": min(times),
+            "us_per_rotor_point": 1e6 * med / points,
+            "residual_evaluations_per_annulus": nev / (points * disc.n_radial)}
+
+
+def main() -> None:
+    if not LOGS.is_dir():
+        sys.exit(f"needs {LOGS}")
+    out = {"cpu": _cpu(), "cores": os.cpu_count(), "load_average": os.getloadavg()}
+    with tempfile.TemporaryDirectory() as tmp:
+        out["wrench_cli"] = wall([str(BIN / "propmap"), "wrench", str(LOGS / SEGMENT), "--vehicle", str(VEHICLE),
+                                  "--out", str(Path(tmp) / "p.csv")])
+        out["props_cli"] = wall([str(BIN / "propmap"), "props"])
+    out["wrench_cli"]["ratio_to_props"] = out["wrench_cli"]["median_s"] / out["props_cli"]["median_s"]
+    g = pm.generic_params()
+    out["vehicle_wrench"] = {
+        "48x16 uniform": in_process(g, pm.DEFAULT_DISCRETIZATION),
+        "24x8 uniform": in_process(g, FLIGHT_DISCRETIZATION),
+        "24x8 pitt-peters": in_process(g.replace(inflow="pitt-peters"), FLIGHT_DISCRETIZATION),
+    }
+    if "--fit" in sys.argv:
+        veh = pm.read_vehicle(VEHICLE)
+        logs = [read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))]
+        s = flight_samples(logs, veh, rate_hz=25)
+        t = time.perf_counter()
+        res = fit_flight(s, veh, air=pm.Air(rho=1.204))
+        out["fit_flight"] = {"samples": s.n, "seconds": time.perf_counter() - t, "residual_evaluations": res.nfev,
+                             "rotor_points": res.n_model_points, "names": list(res.names)}
+    path = ROOT / "benchmarks" / "results" / "flight.json"
+    path.parent.mkdir(exist_ok=True)
+    with atomic_write(path) as fh:
+        json.dump(out, fh, indent=2)
+    print(json.dumps(out, indent=2))
+
+
+def _cpu() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown"
+
+
+if __name__ == "__main__":
+    main()
