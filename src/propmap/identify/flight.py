@@ -47,9 +47,10 @@ __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "f
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
 #: parameters fitted by default (docs/flight.md: chosen by leave-one-log-out cross-validation on the
-#: NeuroBEM logs among 15 candidate sets: the collective offset of an uncertain blade, the lift slope,
-#: flapping and the Reynolds zero-lift shift, whose catalogue value contradicts the logs)
-FLIGHT_FIT = ("collective", "cl_alpha", "flap_compliance", "alpha_L0_re")
+#: NeuroBEM logs among 17 candidate sets): the collective offset of an uncertain blade, the lift
+#: slope, the Reynolds zero-lift shift (whose catalogue value contradicts the logs' constant
+#: T / Omega^2) and the in-plane airframe drag in the rotors' slipstream
+FLIGHT_FIT = ("collective", "cl_alpha", "alpha_L0_re", "drag_area_x", "drag_area_y", "wash_factor")
 AIRFRAME_NAMES = tuple(AIRFRAME_BOUNDS)
 CG_NAMES = ("cg_x", "cg_y")
 #: bounds of the centre-of-mass offset [m]
