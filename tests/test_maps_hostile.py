@@ -30,7 +30,7 @@ RPM = 2 * math.pi / 60
 
 @pytest.fixture(scope="module")
 def tiny():
-    """(dataset, netCDF bytes) of a 4 x 3 x 5 map of apce_8x6 with its error check (20 points)."""
+    """A 4 x 3 x 5 map of apce_8x6 with its error check (20 points)."""
     prop = pm.load_propeller("apce_8x6")
     params, air, label = pm.default_params("apce_8x6")
     ds = build_map(prop, params, np.linspace(3000, 9000, 4) * RPM, np.linspace(0, 10, 3),

@@ -89,8 +89,8 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
 
 def _check_names(names, base: SectionParams, options: "FitOptions") -> tuple[str, ...]:
     """``names`` as a tuple, refused unless each is a parameter of the base's model (the
-    paper's: :func:`param_names` of the lift model; the cambered: CAMBERED_BOUNDS and any
-    field given bounds in ``options.bounds``), given once.
+    paper's: cl1, cl2, cd, alpha0; the cambered: CAMBERED_BOUNDS and any field given
+    bounds in ``options.bounds``), given once.
 
     Raises
     ------
@@ -108,8 +108,8 @@ def _check_names(names, base: SectionParams, options: "FitOptions") -> tuple[str
     if isinstance(base, CamberedParams):
         valid = (*CAMBERED_BOUNDS, *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
         model = "the cambered model"
-    else:
-        valid, model = param_names(options.lift_model), f"the paper's model ({options.lift_model} lift)"
+    else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
+        valid, model = tuple(BOUNDS), "the paper's model"
     unknown = [n for n in names if n not in valid]
     if unknown:
         hint = " (body-lift terms: body_lift=True, --body-lift)" if any(n in BODY_BOUNDS for n in unknown) else ""
