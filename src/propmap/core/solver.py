@@ -16,7 +16,7 @@ import numpy as np
 from . import _kernel
 from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
-from .geometry import Propeller, _real
+from .geometry import Propeller
 
 __all__ = [
     "Discretization",
@@ -56,6 +56,8 @@ class Discretization:
     n_azimuth: int = 16
 
     def __post_init__(self) -> None:
+        from .geometry import _real
+
         for name, hi in (("n_radial", 10000), ("n_azimuth", 1000)):
             v = getattr(self, name)
             x = _real(v)
