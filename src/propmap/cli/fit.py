@@ -41,15 +41,16 @@ M_MAX = 1e6
 MULTISTART_MAX = 256
 
 
-def _options(M, lift_model, multistart, fit_params, no_prior, base, base_label):
-    """FitOptions from the options, checked against the model of ``base`` (before any work).
+def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, base_label=""):
+    """FitOptions from the options, checked against the model of ``base`` when given
+    (before any work).
 
     Raises
     ------
     InputError
-        --M or --multistart out of range; --lift-model with the cambered model, --no-prior
-        with the paper's (options that would be ignored); --fit-params empty, repeated,
-        or naming parameters the model does not have.
+        --M or --multistart out of range; --fit-params empty or repeated; with ``base``:
+        --lift-model with the cambered model, --no-prior with the paper's (options that
+        would be ignored), --fit-params naming parameters the model does not have.
     """
     from ..core.airfoil import CamberedParams
     from ..identify import FitOptions
@@ -61,16 +62,16 @@ def _options(M, lift_model, multistart, fit_params, no_prior, base, base_label):
         raise InputError(f"--multistart must be in [0, {MULTISTART_MAX}] (each start is a whole fit), "
                          f"got {multistart}")
     cambered = isinstance(base, CamberedParams)
-    if cambered and lift_model is not None:
+    if base is not None and cambered and lift_model is not None:
         raise InputError(f"--lift-model applies to the paper's model; --base {_short(base_label, 40)} is the cambered "
                          "model (give a Table I set, e.g. --base gill2017-apc)")
-    if no_prior and not cambered:
+    if base is not None and no_prior and not cambered:
         raise InputError(f"--no-prior applies to the cambered model (its population prior); --base "
                          f"{_short(base_label, 40)} is the paper's model, fitted without one")
     names = parse_names("--fit-params", fit_params, what="parameter name")
     options = FitOptions(M=M, lift_model=lift_model or "sigmoid", multistart=multistart, progress=True, names=names,
                          prior=not no_prior)
-    if names is not None:
+    if names is not None and base is not None:
         try:
             _check_names(names, base, options)
         except ValueError as exc:
