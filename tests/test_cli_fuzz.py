@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import propmap as pm
@@ -258,3 +258,113 @@ def test_fit_level_flight_options(capsys, tmp_path_factory, M, base, fit_params,
     _check(code, out, err)
     written = sorted(p.name for p in d.iterdir())
     assert written == (["p.png", "p.report.json", "p.report.txt", "p.toml"] if code == 0 else [])
+
+
+# ---- map and export-sim (issue 19): options of every kind, nothing written unless it succeeds ----
+
+AXIS_TEXT = st.one_of(
+    st.tuples(st.floats(0, 1e6).map(repr), st.floats(0, 1e6).map(repr), st.integers(-3, 6).map(str)).map(":".join),
+    st.tuples(st.floats(0, 180).map(repr), st.floats(0, 180).map(repr), st.integers(2, 4).map(str)).map(":".join),
+    st.sampled_from(["", ":", "1:2", "1:2:3:4", "1:2:3:log", "0:10:3:log", "a:b:c", "nan:1:3", "1:inf:3", "3:1:3",
+                     "1e300:1e301:2", "0:180:2.5", "0:180:1e9", " 0 : 10 : 3 "]),
+    NUMBER_TEXT)
+SMALL_AXES = {"--rpm": "3000:9000:3", "--airspeed": "0:10:2", "--incidence-deg": "0:180:3"}
+MAP_LIMITS = {"--rpm": (1, 954929), "--airspeed": (0, 500), "--incidence-deg": (0, 180)}
+
+
+def _axis_ok(option, text):
+    parts = text.split(":")
+    if len(parts) == 4 and parts[3].strip().lower() == "log":
+        parts = parts[:3]
+    elif len(parts) != 3:
+        return False
+    try:
+        a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
+    except ValueError:
+        return False
+    lo, hi = MAP_LIMITS[option]
+    return math.isfinite(a) and math.isfinite(b) and lo <= a < b <= hi and 2 <= n <= 6 and (
+        len(text.split(":")) == 3 or a > 0)
+
+
+VALID_AXIS = st.sampled_from(["0:180:2", "1000:5000:3", "0:20:4", "10:100:2:log", "0.5:1.5:2", "3000:9000:3"])
+VALID_PLOT_RPM = st.sampled_from([None, "3000", "6000,9000", " 9000 "])
+VALID_C_NAME = st.sampled_from([None, "rotor", "ok_name", "pm_front"])
+HOSTILE_PLOT_RPM = st.one_of(st.sampled_from(["nan", "", "1e300", "-1", "abc", "6000,6001", ",", "inf"]), NUMBER_TEXT)
+HOSTILE_C_NAME = st.sampled_from(["fp", "", "_x", "9x", "sig", "\u00e9", "ERR", "a b", "lc", "x" * 300])
+
+
+@settings(derandomize=True, database=None, deadline=None, max_examples=50, print_blob=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(option=st.sampled_from(list(SMALL_AXES)), data=st.data(),
+       hostile=st.sampled_from(["none", "axis", "plot_rpm", "c_name"]))
+def test_map_options(capsys, tmp_path_factory, option, data, hostile):
+    """exit 0 with the map, sidecar and plots written, or exit 2 (one line) with nothing
+    written; a valid axis is built, an invalid one refused. One option at a time is drawn
+    from hostile values (or none), the others from valid ones."""
+    axis = data.draw(AXIS_TEXT if hostile == "axis" else VALID_AXIS, "axis")
+    plot_rpm = data.draw(HOSTILE_PLOT_RPM if hostile == "plot_rpm" else VALID_PLOT_RPM, "plot_rpm")
+    c_name = data.draw(HOSTILE_C_NAME if hostile == "c_name" else VALID_C_NAME, "c_name")
+    d = tmp_path_factory.mktemp("map")
+    axes = {**SMALL_AXES, option: axis}
+    fmt = ["--format", "c", "--c-name", c_name] if c_name is not None else []
+    out = d / ("m.h" if c_name is not None else "m.nc")
+    argv = ["map", "apce_8x6", *[x for kv in axes.items() for x in kv], "--check-points", "0", "--out", str(out),
+            *fmt] + (["--plot", str(d / "p"), "--plot-rpm", plot_rpm] if plot_rpm is not None else [])
+    code = main(argv)
+    text, err = capsys.readouterr()
+    _check(code, text, err)
+    event(f"exit {code}")
+    written = sorted(str(p.relative_to(d)) for p in d.rglob("*") if p.is_file())
+    if code == 0:
+        assert _axis_ok(option, axis), (axis, err)
+        assert {out.name, out.name + ".json"} <= set(written)
+        from propmap.maps import read_sidecar
+
+        assert read_sidecar(out)["describes"]["file"] == out.name
+    else:
+        assert code == 2 and written == [], (written, err)
+
+
+ENVELOPE_ITEM = st.tuples(st.sampled_from(["rpm", "airspeed", "incidence_deg", "incidence-deg", "speed", ""]),
+                          st.one_of(st.tuples(st.floats(0, 2e4).map(repr), st.floats(0, 2e4).map(repr))
+                                    .map(":".join), st.sampled_from(["0:1e-300", "0:1e-9", "30:40", "1:2:3", "a:b",
+                                                                     "", ":", "nan:1", "0:inf"]))).map("=".join)
+
+
+@settings(derandomize=True, database=None, deadline=None, max_examples=40, print_blob=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture,
+                                 HealthCheck.filter_too_much])
+@given(target=st.sampled_from(["rotorpy", "gazebo", "gill2019"]), data=st.data(),
+       hostile=st.sampled_from(["none", "envelope", "points"]))
+def test_export_sim_options(capsys, tmp_path_factory, target, data, hostile):
+    """exit 0 with finite coefficients (a fixed one said on stderr) and the file and its
+    report, or exit 2 (one line) with nothing written. Degenerate envelopes (airspeed to
+    1e-300, incidence to 1e-9, all |V_z| >= 25 m/s, all in the vortex ring) among the valid
+    ones; one option at a time drawn from hostile values."""
+    envelope = data.draw(st.lists(ENVELOPE_ITEM, min_size=0, max_size=3).map(",".join) if hostile == "envelope" else
+                         st.sampled_from([None, "rpm=4000:9000", "airspeed=0:10,incidence_deg=0:90",
+                                          "airspeed=0:1e-300", "incidence_deg=0:1e-9", "airspeed=30:40",
+                                          "rpm=5000:6000,airspeed=2:4,incidence_deg=170:180"]), "envelope")
+    # valid counts kept small (each point is a model solve)
+    points = data.draw(NUMBER_TEXT.filter(lambda t: not (t.isdigit() and 100 < int(t) <= 1_000_000))
+                       if hostile == "points" else st.sampled_from(["20", "40", "100"]), "points")
+    d = tmp_path_factory.mktemp("sim")
+    out = d / {"rotorpy": "c.py", "gazebo": "c.sdf", "gill2019": "c.json"}[target]
+    argv = ["export-sim", "apce_8x6", "--target", target, "--out", str(out), "--points", points, "--json"]
+    if envelope is not None:
+        argv += ["--envelope", envelope]
+    code = main(argv)
+    text, err = capsys.readouterr()
+    _check(code, text, err)
+    event(f"exit {code}")
+    written = sorted(p.name for p in d.iterdir())
+    if code == 0:
+        d_out = json.loads(text)
+        values = [v for c in d_out["coefficients"].values() for v in (c if isinstance(c, list) else [c])]
+        assert all(math.isfinite(v) for v in values), d_out
+        for name in d_out["fixed_at_zero"]:
+            assert f"propmap: warning: {name} fixed at 0" in err
+        assert written == sorted([out.name, out.name + ".json"])
+    else:
+        assert code == 2 and written == [], (written, err)

@@ -220,9 +220,13 @@ def test_power_under_clip_numpy_scalars_and_bad_maps(small_map):
     for bad in (ds.isel(rpm=[0, 1, 1, 2]), ds.isel(rpm=[1]), ds.isel(airspeed=slice(None, None, -1))):
         with pytest.raises(ValueError, match="axis (rpm|airspeed) must hold at least 2 finite, strictly increasing"):
             RotorMap(bad)
-    # a node without finite loads is flagged like a non-converged one
+    # a converged node without finite loads is an edited map: refused, naming the node; a
+    # node that did not converge may lack values, and flags its cells
     holed = ds.copy(deep=True)
     holed["thrust"].values[2, 3, 6] = np.nan
+    with pytest.raises(ValueError, match=r"thrust is not finite at a converged node \(rpm 6500, airspeed 9, "):
+        RotorMap(holed)
+    holed["converged"].values[2, 3, 6] = False
     assert RotorMap(holed).loads(float(rm.omega[2]), float(rm.airspeed[3]), float(rm.incidence[6])).flagged
 
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["c_prefix", "write_c_header"]
+__all__ = ["c_header_text", "c_prefix", "write_c_header"]
 
 _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *
@@ -181,23 +181,89 @@ def _numbers(values, fmt: str, per_line: int = 6) -> str:
     return ",\n".join("    " + ", ".join(items[i:i + per_line]) for i in range(0, len(items), per_line))
 
 
+#: the names the header defines after its prefix: functions and tables (prefix as given),
+#: macros (prefix in upper case); the include guard adds _H_<hash>
+_C_NAMES = ("loads", "locate", "weights", "omega", "airspeed", "incidence", "table", "cellflag")
+_C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H")
+#: names the C standard reserves (C11 7.1.3 and the future library directions 7.31, C23
+#: 7.33): any identifier of file scope beginning with an underscore, and the macro
+#: namespaces of the headers (the header includes <math.h>, whose FP_NAN a prefix ``fp``
+#: would redefine). (pattern, what reserves it). The function and table names are static
+#: (internal linkage), so the external-linkage reservations (is..., str...) do not apply.
+_C_RESERVED = (
+    (r"_.*", "C for identifiers of file scope beginning with an underscore"),
+    (r"E[0-9A-Z].*", "<errno.h> (E followed by a digit or an uppercase letter)"),
+    (r"FP_[A-Z].*", "<math.h> (FP_ followed by an uppercase letter: FP_NAN, FP_ZERO, ...)"),
+    (r"FE_[A-Z].*", "<fenv.h> (FE_ followed by an uppercase letter)"),
+    (r"LC_[A-Z].*", "<locale.h> (LC_ followed by an uppercase letter)"),
+    (r"SIG_?[A-Z].*", "<signal.h> (SIG or SIG_ followed by an uppercase letter)"),
+    (r"(PRI|SCN)[a-zX].*", "<inttypes.h> (PRI or SCN followed by a lowercase letter or X)"),
+    (r"(ATOMIC|TIME)_[A-Z].*", "<stdatomic.h> and <time.h> (ATOMIC_ or TIME_ followed by an uppercase letter)"),
+    (r"(DBL|FLT|LDBL)_[A-Z].*", "<float.h> (DBL_, FLT_ or LDBL_ followed by an uppercase letter)"),
+)
+
+
+def _reserved(identifier: str) -> str | None:
+    """What reserves ``identifier`` in C (or POSIX <math.h>), or None."""
+    for pattern, why in _C_RESERVED:
+        if re.fullmatch(pattern, identifier):
+            return why
+    return None
+
+
 def c_prefix(path, name: str | None = None) -> str:
     """The C identifier prefix of a header: ``name``, or ``pm_<file stem>`` (lower case).
 
     Raises
     ------
     ValueError
-        The prefix is not a C identifier (ASCII letters, digits, underscores).
+        ``name`` empty or not a string; the prefix is not a C identifier (ASCII letters,
+        digits, underscores); or a name the header would define with it
+        (``<prefix>_loads``, ``<PREFIX>_NAN``, ...) is reserved to the C library
+        (``fp`` gives ``FP_NAN``, <math.h>'s; ``_x`` a file-scope name with an
+        underscore): the message names them and the rule.
     """
+    if name is not None and not isinstance(name, str):
+        raise ValueError(f"the C name prefix must be a string, got {name!r:.60}")
+    if name == "":
+        raise ValueError("the C name prefix is empty")
     prefix = name or "pm_" + re.sub(r"\W", "_", Path(path).stem).lower()
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", prefix):
         raise ValueError(f"the C name prefix must be a C identifier (ASCII letters, digits, underscores), "
-                         f"got {prefix!r}")
+                         f"got {prefix!r:.80}")
+    defined = [f"{prefix}_{n}" for n in _C_NAMES] + [f"{prefix.upper()}_{m}" for m in _C_MACROS]
+    clash = [(ident, _reserved(ident)) for ident in defined if _reserved(ident)]
+    if clash:
+        names = ", ".join(ident for ident, _ in clash[:3]) + (", ..." if len(clash) > 3 else "")
+        raise ValueError(f"the C name prefix {prefix!r} would define {names}: names reserved by {clash[0][1]}; "
+                         "choose another prefix")
     return prefix
 
 
 def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> Path:
-    """Write ``rotor_map`` as a self-contained C99 header (atomically).
+    """Write ``rotor_map`` as a self-contained C99 header (atomically): :func:`c_header_text`.
+
+    Returns
+    -------
+    Path
+
+    Raises
+    ------
+    ValueError
+        As :func:`c_header_text`.
+    OSError
+        The file cannot be written.
+    """
+    from .io.atomic import atomic_write
+
+    text = c_header_text(rotor_map, path, dtype=dtype, name=name)
+    with atomic_write(path) as fh:
+        fh.write(text)
+    return Path(path)
+
+
+def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> str:
+    """``rotor_map`` as the text of a self-contained C99 header.
 
     Parameters
     ----------
@@ -215,17 +281,13 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
 
     Returns
     -------
-    Path
+    str
 
     Raises
     ------
     ValueError
-        Unknown ``dtype`` or a prefix that is not a C identifier.
-    OSError
-        The file cannot be written.
+        Unknown ``dtype`` or a bad prefix (:func:`c_prefix`).
     """
-    from .io.atomic import atomic_write
-
     if dtype not in ("float", "double"):
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
     path = Path(path)
@@ -261,6 +323,4 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
         table=_numbers(table.reshape(-1), fmt_tab), ncell=rm._cellflag.size,
         cells=",\n".join("    " + ", ".join(str(int(c)) for c in row)
                          for row in rm._cellflag.reshape(-1, rm._cellflag.shape[-1])))
-    with atomic_write(path) as fh:
-        fh.write(text)
-    return path
+    return text

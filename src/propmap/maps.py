@@ -16,30 +16,29 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import re
 from dataclasses import dataclass
-from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 
 from . import __version__
 from .core.airfoil import Air, SectionParams
-from .core.geometry import Propeller
+from .core.geometry import Propeller, _real
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from .io.mapfile import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller, map_model,
+                         read_dataset, read_sidecar, write_map, write_sidecar)
 
-__all__ = ["MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "write_map",
-           "write_sidecar"]
+__all__ = ["MAX_NODES", "MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "read_sidecar",
+           "scheduler_client", "write_map", "write_sidecar"]
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
-#: the loads a map interpolates (each divided by (Omega R)^2 + V^2 in the table)
-LOADS = ("thrust", "drag", "torque", "rolling_moment")
-UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W", "CT": "1", "CP": "1"}
 LONG_NAMES = {"thrust": "thrust T along the rotor axis", "drag": "rotor drag D (H-force), against the in-plane velocity",
               "torque": "shaft torque Q opposing the rotation",
               "rolling_moment": "rolling moment M_R (advancing/retreating thrust asymmetry)",
               "power": "shaft power P = Q Omega", "CT": "thrust coefficient T / (rho n^2 D^4)",
               "CP": "power coefficient P / (rho n^3 D^5)"}
-FLAGS = ("converged", "vortex_ring", "multiple_roots", "reverse_flow")
 POLICIES = ("raise", "clip", "nan")
 #: interpolation methods of RotorMap and of the C export
 INTERPOLATIONS = ("linear", "cubic")
@@ -72,7 +71,14 @@ def default_axes(propeller: Propeller):
 
 
 def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
-    a = np.asarray(a, dtype=float)
+    try:
+        a = np.asarray(a)
+        numeric = a.dtype.kind in "iuf"
+    except (TypeError, ValueError):
+        numeric = False
+    if not numeric:
+        raise ValueError(f"{name} must be a 1-D array of numbers [{unit}], got {a!r:.60}")
+    a = a.astype(float)
     if a.ndim != 1 or a.size < 2:
         raise ValueError(f"{name} must be a 1-D axis of at least 2 values, got shape {a.shape}")
     if not np.all(np.isfinite(a)) or a[0] < lo or a[-1] > hi:
@@ -80,6 +86,53 @@ def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
     if np.any(np.diff(a) <= 0):
         raise ValueError(f"{name} must be strictly increasing")
     return a
+
+
+def _integer(name: str, value, lo: int, hi: int) -> int:
+    """``value`` as an int in [lo, hi] (an integral float such as 2000.0 too, never a bool)."""
+    x = _real(value)
+    if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
+        raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
+    return int(value)
+
+
+#: seconds to wait for a dask.distributed scheduler
+SCHEDULER_TIMEOUT = 10.0
+#: a scheduler address: PROTOCOL://HOST:PORT (HOST a name, an IPv4 or a bracketed IPv6 address)
+_ADDRESS = re.compile(r"(tcp|tls|ucx|ws|wss)://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9._-]+):([0-9]{1,5})")
+
+
+def scheduler_client(address: str):
+    """A ``dask.distributed`` Client connected to the scheduler at ``address``.
+
+    Parameters
+    ----------
+    address : str
+        ``tcp://HOST:PORT`` (or tls, ucx, ws, wss).
+
+    Returns
+    -------
+    distributed.Client
+        The caller closes it.
+
+    Raises
+    ------
+    ValueError
+        Not such an address (a port outside [1, 65535] included), or no scheduler
+        answering there within SCHEDULER_TIMEOUT (10 s); the message names the
+        scheduler.
+    """
+    from distributed import Client
+
+    m = _ADDRESS.fullmatch(address) if isinstance(address, str) else None
+    if m is None or not 1 <= int(m.group(3)) <= 65535:
+        raise ValueError(f"scheduler must be an address PROTOCOL://HOST:PORT (e.g. tcp://10.0.0.5:8786; protocol "
+                         f"tcp, tls, ucx, ws or wss; port in [1, 65535]), got {address!r:.80}")
+    try:
+        return Client(address, timeout=SCHEDULER_TIMEOUT)
+    except Exception as exc:  # noqa: BLE001 -- distributed raises OSError, TimeoutError, ValueError, ...
+        raise ValueError(f"scheduler: no scheduler answered at {address} within {SCHEDULER_TIMEOUT:g} s "
+                         f"({type(exc).__name__}: {' '.join(str(exc).split())[:120]})") from None
 
 
 def _solve_block(propeller, params, air, discretization, om, V, b):
@@ -132,10 +185,13 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     Raises
     ------
     ValueError
-        An axis that is not 1-D, has fewer than 2 values, is not increasing, or leaves
-        the model's range; ``chunk_points`` < 1; ``n_check`` < 0.
+        An axis that is not a 1-D array of numbers, has fewer than 2 values, is not
+        increasing, or leaves the model's range; more than MAX_NODES (20,000,000) nodes
+        (refused before any work); a propeller a map cannot record (diameter outside
+        0.5-100 in, more than 100 blades; io.mapfile); ``chunk_points`` not an integer
+        in [1, MAX_NODES]; ``n_check`` not an integer in [0, 1,000,000]; ``seed`` not an
+        integer >= 0; a scheduler address that cannot be reached within 10 s.
     """
-    import dask
     import dask.array as da
     import xarray as xr
 
@@ -144,10 +200,14 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
     V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
     b = _check_axis("incidence", incidence, 0.0, math.pi, "rad")
-    if int(chunk_points) < 1:
-        raise ValueError(f"chunk_points must be >= 1, got {chunk_points!r}")
-    if int(n_check) < 0:
-        raise ValueError(f"n_check must be >= 0, got {n_check!r}")
+    chunk_points = _integer("chunk_points", chunk_points, 1, MAX_NODES)
+    n_check = _integer("n_check", n_check, 0, CHECK_POINTS_MAX)
+    seed = _integer("seed", seed, 0, 2**63 - 1)
+    nodes = om.size * V.size * b.size
+    if nodes > MAX_NODES:
+        raise ValueError(f"the grid omega x airspeed x incidence has {om.size} x {V.size} x {b.size} = {nodes:,} "
+                         f"nodes; at most {MAX_NODES:,}")
+    check_propeller(propeller)
     shape = (om.size, V.size, b.size)
     O3, V3, B3 = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))
     chunks = int(chunk_points)
@@ -179,7 +239,11 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     else:
         from distributed import Client
 
-        client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+        own = not isinstance(scheduler, Client)
+        if own and not isinstance(scheduler, str):
+            raise ValueError(f"scheduler must be None, a dask.distributed Client or an address such as "
+                             f"tcp://HOST:PORT, got {scheduler!r:.60}")
+        client = scheduler_client(scheduler) if own else scheduler
         try:
             future = client.compute(parts)
             if progress:
@@ -188,7 +252,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
                 dist_progress(future)
             result = future.result()
         finally:
-            if client is not scheduler:
+            if own:
                 client.close()
     result = np.asarray(result).reshape((4 + len(FLAGS),) + shape)
     dims = ("rpm", "airspeed", "incidence_deg")
@@ -231,19 +295,6 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     return ds
 
 
-def _map_model(ds):
-    """(propeller, params, air, discretization) recorded in a map."""
-    from .io.calibration import params_from_si
-
-    a = ds.attrs
-    prop = Propeller(name=str(a["propeller"]), radius=float(a["diameter_m"]) / 2, n_blades=int(a["n_blades"]),
-                     r=np.asarray(a["geometry_r_m"], float), chord=np.asarray(a["geometry_chord_m"], float),
-                     theta=np.asarray(a["geometry_theta_rad"], float), source=str(a.get("propeller_source", "")))
-    air = Air(rho=float(a["rho_kg_m3"]), mu=float(a["mu_Pa_s"]), speed_of_sound=float(a["speed_of_sound_m_s"]))
-    return (prop, params_from_si(json.loads(a["params_json"])), air,
-            Discretization(int(a["n_radial"]), int(a["n_azimuth"])))
-
-
 def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=None, air=None,
               discretization=None) -> dict:
     """Interpolation error of a map against the full model at random off-grid points.
@@ -260,8 +311,9 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     ds : xarray.Dataset
         A map from :func:`build_map` (or read back from netCDF).
     n_check : int
-        Number of points, >= 1.
+        Number of points, in [1, 1,000,000].
     seed : int
+        >= 0.
     propeller, params, air, discretization
         The model; default: the one recorded in the map.
 
@@ -277,15 +329,20 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     Raises
     ------
     ValueError
-        ``n_check`` < 1.
+        ``n_check`` or ``seed`` out of range; a map that does not record its model (when
+        one is not given) or is malformed (io.mapfile.check_dataset).
     """
-    if int(n_check) < 1:
-        raise ValueError(f"n_check must be >= 1, got {n_check!r}")
-    model = _map_model(ds)
-    prop = propeller or model[0]
-    params = params or model[1]
-    air = air or model[2]
-    disc = discretization or model[3]
+    n_check = _integer("n_check", n_check, 1, CHECK_POINTS_MAX)
+    seed = _integer("seed", seed, 0, 2**63 - 1)
+    check_dataset(ds)
+    if None in (propeller, params, air, discretization):
+        model = map_model(ds.attrs)
+        prop = propeller or model[0]
+        params = params or model[1]
+        air = air or model[2]
+        disc = discretization or model[3]
+    else:
+        prop, disc = propeller, discretization
     evaluators = {m: RotorMap(ds, m) for m in INTERPOLATIONS}
     rm = evaluators["linear"]
     rng = np.random.default_rng(seed)
@@ -408,8 +465,12 @@ class RotorMap:
 
     Raises
     ------
+    TypeError
+        ``dataset`` is not an xarray Dataset.
     ValueError
-        The dataset lacks a variable, a flag or an axis of a map; unknown interpolation.
+        The dataset is not a valid map (io.mapfile.check_dataset: a missing variable,
+        flag or axis, an axis outside the model's range, non-finite loads at a converged
+        node, an attribute of the wrong type or out of range); unknown interpolation.
     """
 
     def __init__(self, dataset, interpolation: str = "cubic") -> None:
@@ -417,26 +478,14 @@ class RotorMap:
             raise ValueError(f"interpolation must be one of {', '.join(INTERPOLATIONS)}, got {interpolation!r}")
         self.interpolation = interpolation
         self._order = 3 if interpolation == "cubic" else 1
-        if "prop" in dataset.dims:
-            raise ValueError("a map of several propellers: select one (RotorMap.open(path, prop=NAME))")
-        missing = [k for k in (*LOADS, *FLAGS) if k not in dataset]
-        missing += [k for k in ("rpm", "airspeed", "incidence_deg") if k not in dataset.coords]
-        if missing:
-            raise ValueError(f"not a propmap rotor map: lacks {', '.join(missing)}")
+        check_dataset(dataset)
         ds = dataset.transpose("rpm", "airspeed", "incidence_deg")
-        for d in ("rpm", "airspeed", "incidence_deg"):
-            ax = np.asarray(ds[d].values, dtype=float)
-            if ax.ndim != 1 or ax.size < 2 or not np.all(np.isfinite(ax)) or np.any(np.diff(ax) <= 0):
-                raise ValueError(f"axis {d} must hold at least 2 finite, strictly increasing values "
-                                 f"(got {ax.size}: {np.array2string(ax[:4], precision=4)}...)")
         self.dataset = ds
         self.attrs = dict(ds.attrs)
         self.omega = np.ascontiguousarray(ds["rpm"].values, dtype=float) * RPM
         self.airspeed = np.ascontiguousarray(ds["airspeed"].values, dtype=float)
         self.incidence = np.ascontiguousarray(np.radians(ds["incidence_deg"].values), dtype=float)
-        self.radius = float(ds.attrs["diameter_m"]) / 2 if "diameter_m" in ds.attrs else None
-        if self.radius is None or not self.radius > 0:
-            raise ValueError("not a propmap rotor map: lacks the attribute diameter_m")
+        self.radius = float(ds.attrs["diameter_m"]) / 2
         ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
         table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
         self._table = np.ascontiguousarray(table, dtype=float)
@@ -469,39 +518,30 @@ class RotorMap:
 
         Raises
         ------
+        TypeError
+            ``path`` not a str or os.PathLike, ``prop`` not a str.
         ValueError
-            Not a readable netCDF file, not a rotor map, or ``prop`` missing or unknown for
-            a map over several propellers (the message names the file); unknown
-            interpolation.
+            Not a regular file, not a readable netCDF file (whatever the netCDF/HDF5
+            libraries raise on a damaged file), declared sizes beyond MAX_NODES nodes
+            (refused before reading), not a valid rotor map (:class:`RotorMap`), or
+            ``prop`` missing or unknown for a map over several propellers; the message
+            names the file (io.mapfile.read_dataset). Unknown interpolation.
         """
-        import xarray as xr
-
         if interpolation not in INTERPOLATIONS:
             raise ValueError(f"interpolation must be one of {', '.join(INTERPOLATIONS)}, got {interpolation!r}")
-
-        try:
-            with xr.open_dataset(path, engine="netcdf4") as ds:
-                ds.load()
-        except (OSError, ValueError, KeyError) as exc:
-            raise ValueError(f"{path}: not a readable netCDF rotor map ({exc})") from None
-        if "prop" in ds.dims:
-            names = [str(n) for n in ds["prop"].values]
-            if prop not in names:
-                raise ValueError(f"{path}: a map of {len(names)} propellers; give prop= one of them "
-                                 f"(e.g. {', '.join(names[:3])}), got {prop!r}")
-            attrs = json.loads(ds.attrs["per_prop_json"])[prop]
-            ds = ds.sel(prop=prop, drop=True).assign_attrs(attrs)
-        elif prop is not None and prop != ds.attrs.get("propeller"):
-            raise ValueError(f"{path}: a map of {ds.attrs.get('propeller')!r}, not of {prop!r}")
+        ds = read_dataset(path, prop)
         try:
             return cls(ds, interpolation)
         except ValueError as exc:
-            raise ValueError(f"{path}: {exc}") from None
+            raise ValueError(f"{os.fspath(path)!s:.80}: {exc}") from None
 
     def _queries(self, omega, airspeed, incidence, out_of_grid):
         arrays = []
         for name, v in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence)):
-            a = np.asarray(v)
+            try:
+                a = np.asarray(v)
+            except ValueError:  # a ragged list
+                raise ValueError(f"{name} must be a number or a rectangular array of numbers, got {v!r:.60}") from None
             if a.dtype.kind not in "fiu":
                 raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
             arrays.append(a.astype(float, copy=False))
@@ -600,85 +640,15 @@ class RotorMap:
         ValueError
             As :func:`propmap.rotor_wrench` and :meth:`loads`.
         """
-        from .core.vector import _spin_sign, disk_frame, wrench_vectors
+        from .core.vector import _check_spin, _spin_sign, disk_frame, wrench_vectors
 
         V, z, speed, beta = disk_frame(velocity, axis)
         s = _spin_sign(spin)
         ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
+        _check_spin(s, np.shape(ml.thrust))
         force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s)
         return MapWrench(force=force, torque=moment, loads=ml)
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """:func:`check_map` with the model recorded in the map."""
         return check_map(self.dataset, n_check, seed=seed)
-
-
-def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Path]:
-    """Write a map atomically: netCDF (``fmt="netcdf"``) or a long-form CSV (``"csv"``),
-    plus a JSON sidecar ``<path>.json`` of its metadata and error bound.
-
-    Returns
-    -------
-    list of Path
-        The files written.
-
-    Raises
-    ------
-    ValueError
-        Unknown format.
-    OSError
-        The folder cannot be written.
-    """
-    from .io.atomic import atomic_path, atomic_write
-
-    path = Path(path)
-    if fmt == "netcdf":
-        with atomic_path(path) as tmp:
-            encoding = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-    elif fmt == "csv":
-        table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
-        for f in FLAGS:
-            table[f] = np.where(table[f].to_numpy(bool), "true", "false")
-        with atomic_write(path, "w", newline="") as fh:
-            table.to_csv(fh, index=False, float_format="%.10g", lineterminator="\n")
-    else:
-        raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
-    written = [path]
-    if sidecar:
-        written.append(write_sidecar(ds, path.with_name(path.name + ".json")))
-    return written
-
-
-def _json_safe(value):
-    """``value`` with every non-finite float replaced by None (JSON null): strict JSON."""
-    if isinstance(value, dict):
-        return {k: _json_safe(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_json_safe(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
-
-
-def write_sidecar(ds, path) -> Path:
-    """Write a map's metadata and error bound as JSON (atomically): its attributes, sizes,
-    axis ranges and variable units; a value that is not finite (an error with no point
-    to measure it) is written as null.
-
-    Raises
-    ------
-    OSError
-        The file cannot be written.
-    """
-    from .io.atomic import atomic_write
-
-    meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
-            for k, v in ds.attrs.items()}
-    meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
-    meta["axes"] = {d: [float(ds[d].values[0]), float(ds[d].values[-1])] for d in ("rpm", "airspeed", "incidence_deg")}
-    meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
-    path = Path(path)
-    with atomic_write(path) as fh:
-        json.dump(_json_safe(meta), fh, indent=2, allow_nan=False)
-    return path

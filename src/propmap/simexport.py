@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -44,6 +45,7 @@ import numpy as np
 
 from . import __version__
 from .core.airfoil import Air
+from .core.geometry import _real
 from .core.solver import rotor_loads
 
 __all__ = ["Envelope", "SimExport", "TARGETS", "default_envelope", "error_lines", "export_sim", "predict",
@@ -51,6 +53,19 @@ __all__ = ["Envelope", "SimExport", "TARGETS", "default_envelope", "error_lines"
 
 TARGETS = ("rotorpy", "gazebo", "gill2019")
 GAZEBO_AXIAL_SPEED = 25.0  # [m/s] the PX4 Gazebo motor model's fixed thrust fade with axial speed
+#: a term is fitted only if its dimensionless size (1; the advance ratio mu = V_ip/(Omega R),
+#: the inflow ratio lambda_c = V_z/(Omega R), their powers and products; Gazebo's thrust
+#: fade) reaches this somewhere in the envelope: a term below it changes its load by less
+#: than about 0.1% there, and its coefficient would be fitted to round-off (a coefficient of
+#: 1e294 from an envelope of airspeed 0 to 1e-300 m/s). Such a coefficient is fixed at 0 and
+#: said (SimExport.fixed, a warning); one without which the model has no thrust or torque
+#: refuses the envelope.
+DETERMINED = 1e-3
+#: the largest condition number of the fit's (column-normalised) design matrix: beyond it
+#: the envelope cannot separate the terms (e.g. a single rpm and a single speed)
+MAX_CONDITION = 1e8
+#: fewest converged points a fit takes
+MIN_POINTS = 10
 
 
 @dataclass(frozen=True)
@@ -72,10 +87,15 @@ class Envelope:
     incidence_deg: tuple = (0.0, 180.0)
 
     def __post_init__(self) -> None:
-        for name, (lo, hi), (a, b) in (("rpm", self.rpm, (1.0, 954929.0)), ("airspeed", self.airspeed, (0.0, 500.0)),
-                                       ("incidence_deg", self.incidence_deg, (0.0, 180.0))):
+        for name, (a, b) in (("rpm", (1.0, 954929.0)), ("airspeed", (0.0, 500.0)), ("incidence_deg", (0.0, 180.0))):
+            value = getattr(self, name)
+            pair = tuple(value) if isinstance(value, (tuple, list, np.ndarray)) else None
+            if pair is None or len(pair) != 2 or any(_real(v) is None for v in pair):
+                raise ValueError(f"envelope {name} must be two numbers (low, high), got {value!r:.60}")
+            lo, hi = (_real(v) for v in pair)
             if not (math.isfinite(lo) and math.isfinite(hi) and a <= lo < hi <= b):
                 raise ValueError(f"envelope {name} must satisfy {a:g} <= low < high <= {b:g}, got {lo!r}, {hi!r}")
+            object.__setattr__(self, name, (lo, hi))
 
 
 @dataclass
@@ -96,6 +116,9 @@ class SimExport:
     n_points : int
     meta : dict
         Propeller, parameters, model, propmap version.
+    fixed : dict
+        Coefficient name (``k_z``; ``CT[lambda^2]`` for gill2019) -> why the envelope
+        cannot determine it; those are fixed at 0 (:data:`DETERMINED`).
     """
 
     target: str
@@ -104,6 +127,7 @@ class SimExport:
     envelope: Envelope
     n_points: int
     meta: dict = field(default_factory=dict)
+    fixed: dict = field(default_factory=dict)
 
 
 def default_envelope(propeller) -> Envelope:
@@ -124,18 +148,76 @@ def _samples(propeller, params, air, envelope: Envelope, n: int, seed: int):
     full = rotor_loads(propeller, params, om, V, b, air=air, on_failure="flag")
     static = rotor_loads(propeller, params, om, 0.0, 0.0, air=air)
     ok = full.converged
+    if ok.sum() < MIN_POINTS:
+        raise ValueError(f"only {int(ok.sum())} of the envelope's {n} points converged; at least {MIN_POINTS} are needed "
+                         "to fit (a larger envelope, or more points)")
+    for k, v in (("thrust", static.thrust), ("torque", static.torque)):
+        if not np.all(np.isfinite(v) & (v > 0)):
+            raise ValueError(f"the model's static {k} is not positive at every rpm of the envelope "
+                             f"({float(np.min(v)):.3g}): the fit, relative to it, cannot be normalised")
     flagged = full.vortex_ring | full.multiple_roots
     return {"omega": om[ok], "V": V[ok], "beta": b[ok], "flagged": flagged[ok],
             "thrust": full.thrust[ok], "drag": full.drag[ok], "torque": full.torque[ok],
             "rolling_moment": full.rolling_moment[ok], "T0": static.thrust[ok], "Q0": static.torque[ok]}
 
 
-def _lstsq(columns, y):
-    A = np.column_stack(columns)
-    scale = np.max(np.abs(A), axis=0)
-    scale[scale == 0] = 1.0
-    x, *_ = np.linalg.lstsq(A / scale, y, rcond=None)
-    return x / scale
+#: what each dimensionless term size is, for messages
+_SIZE_TEXT = {"mu": "the advance ratio mu = V sin(beta) / (Omega R)",
+              "lambda": "the inflow ratio lambda_c = V cos(beta) / (Omega R)",
+              "fade": f"the plugin's thrust fade 1 - |V_z| / {GAZEBO_AXIAL_SPEED:g} m/s"}
+
+
+def _lstsq(terms, y, fixed: dict, required=()):
+    """Least squares of ``y`` on the terms that the envelope determines.
+
+    Parameters
+    ----------
+    terms : list of (name, column, size, what)
+        The coefficient's name, its column (weighted like ``y``), the term's
+        dimensionless size at each point and what that size is (a key of _SIZE_TEXT,
+        with a power: "mu^2").
+    y : ndarray
+    fixed : dict
+        Receives name -> reason for each term left out (its coefficient 0).
+    required : collection of str
+        Terms without which the model has no thrust or torque: refused instead.
+
+    Returns
+    -------
+    list of float
+        One coefficient per term, 0 for those left out.
+
+    Raises
+    ------
+    ValueError
+        A required term below DETERMINED, or terms the envelope cannot separate.
+    """
+    keep = []
+    for k, (name, col, size, what) in enumerate(terms):
+        peak = float(np.max(np.abs(size)))
+        if peak >= DETERMINED:
+            keep.append(k)
+            continue
+        legend = "; ".join(text for key, text in _SIZE_TEXT.items() if key in what)
+        why = (f"its term's size {what} ({legend}) stays below {DETERMINED:g} over the envelope "
+               f"(at most {peak:.2g})")
+        if name in required:
+            raise ValueError(f"the envelope cannot determine {name}: {why}; widen the envelope")
+        fixed[name] = why
+    x = np.zeros(len(terms))
+    if keep:
+        A = np.column_stack([terms[k][1] for k in keep])
+        scale = np.max(np.abs(A), axis=0)
+        scale[scale == 0] = 1.0
+        A = A / scale
+        _, sv, vt = np.linalg.svd(A / np.maximum(np.linalg.norm(A, axis=0), 1e-300), full_matrices=False)
+        if sv[-1] < sv[0] / MAX_CONDITION:
+            mixed = [terms[k][0] for k, v in zip(keep, vt[-1]) if abs(v) > 0.1]
+            raise ValueError(f"the envelope cannot separate {', '.join(mixed)} (condition number "
+                             f"{sv[0] / max(sv[-1], 1e-300):.2g}): widen its rpm, airspeed or incidence range")
+        sol, *_ = np.linalg.lstsq(A, y, rcond=None)
+        x[keep] = sol / scale
+    return [float(v) for v in x]
 
 
 def _mu_lambda(s, R):
@@ -143,38 +225,47 @@ def _mu_lambda(s, R):
     return s["V"] * np.sin(s["beta"]) / tip, s["V"] * np.cos(s["beta"]) / tip
 
 
-def _fit(target: str, s, R: float, rho: float) -> dict:
+#: gill2019's terms (names as in the JSON file's terms_even / terms_odd)
+EVEN_TERMS = ("1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2")
+ODD_TERMS = ("mu", "mu lambda", "mu lambda^2", "mu^3")
+
+
+def _fit(target: str, s, R: float, rho: float, fixed: dict) -> dict:
     om, V, b = s["omega"], s["V"], s["beta"]
     Vip, Vz = V * np.sin(b), V * np.cos(b)
+    mu, lam = _mu_lambda(s, R)
+    one = np.ones_like(mu)
     # each load is fitted relative to its scale at the point (static value at that Omega), so
     # that low and high rpm count alike: divide both sides by the scale
     wT, wQ = 1 / s["T0"], 1 / s["Q0"]
     wD = 1 / max(float(np.max(np.abs(s["drag"]))), 1e-300)
     wR = 1 / max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300)
     if target == "rotorpy":
-        k_eta, k_h, k_z = _lstsq([om**2 * wT, Vip**2 * wT, -om * Vz * wT], s["thrust"] * wT)
-        (k_d,) = _lstsq([om * Vip * wD], s["drag"] * wD)
-        (k_m,) = _lstsq([om**2 * wQ], s["torque"] * wQ)
+        k_eta, k_h, k_z = _lstsq([("k_eta", om**2 * wT, one, "1"), ("k_h", Vip**2 * wT, mu**2, "mu^2"),
+                                  ("k_z", -om * Vz * wT, lam, "lambda")], s["thrust"] * wT, fixed, {"k_eta"})
+        (k_d,) = _lstsq([("k_d", om * Vip * wD, mu, "mu")], s["drag"] * wD, fixed)
+        (k_m,) = _lstsq([("k_m", om**2 * wQ, one, "1")], s["torque"] * wQ, fixed, {"k_m"})
         return {"k_eta": k_eta, "k_m": k_m, "k_d": k_d, "k_z": k_z, "k_h": k_h, "k_flap": 0.0, "rotor_radius": R}
     if target == "gazebo":
         fade = np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
-        (kT,) = _lstsq([om**2 * fade * wT], s["thrust"] * wT)
-        (kQ,) = _lstsq([kT * om**2 * wQ], s["torque"] * wQ)
-        (kD,) = _lstsq([om * Vip * wD], s["drag"] * wD)
-        (kR,) = _lstsq([om * Vip * wR], s["rolling_moment"] * wR)
+        (kT,) = _lstsq([("motorConstant", om**2 * fade * wT, fade, "fade")], s["thrust"] * wT, fixed,
+                       {"motorConstant"})
+        (kQ,) = _lstsq([("momentConstant", kT * om**2 * wQ, one, "1")], s["torque"] * wQ, fixed, {"momentConstant"})
+        (kD,) = _lstsq([("rotorDragCoefficient", om * Vip * wD, mu, "mu")], s["drag"] * wD, fixed)
+        (kR,) = _lstsq([("rollingMomentCoefficient", om * Vip * wR, mu, "mu")], s["rolling_moment"] * wR, fixed)
         return {"motorConstant": kT, "momentConstant": kQ, "rotorDragCoefficient": kD,
                 "rollingMomentCoefficient": kR}
     if target == "gill2019":
-        mu, lam = _mu_lambda(s, R)
         q = rho * math.pi * R**2 * (om * R) ** 2  # force scale; moments add R
-        even = [np.ones_like(mu), lam, lam**2, mu**2, lam**3, lam * mu**2]
+        even = [one, lam, lam**2, mu**2, lam**3, lam * mu**2]
         odd = [mu, mu * lam, mu * lam**2, mu**3]
         out = {"R": R, "rho": rho}
-        for key, terms, y, w, moment in (("CT", even, s["thrust"], wT, False), ("CH", odd, s["drag"], wD, False),
-                                         ("CQ", even, s["torque"], wQ, True), ("CR", odd, s["rolling_moment"], wR, True)):
+        for key, terms, names, y, w, moment in (
+                ("CT", even, EVEN_TERMS, s["thrust"], wT, False), ("CH", odd, ODD_TERMS, s["drag"], wD, False),
+                ("CQ", even, EVEN_TERMS, s["torque"], wQ, True), ("CR", odd, ODD_TERMS, s["rolling_moment"], wR, True)):
             scale = q * (R if moment else 1.0)
-            c = _lstsq([t * scale * w for t in terms], y * w)
-            out[key] = [float(v) for v in c]
+            out[key] = _lstsq([(f"{key}[{n}]", t * scale * w, t, n) for t, n in zip(terms, names)], y * w, fixed,
+                              {f"{key}[1]"})
         return out
     raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
 
@@ -258,21 +349,44 @@ def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: En
     Raises
     ------
     ValueError
-        Unknown target, ``n_points`` < 20, an envelope outside the model's range.
+        Unknown target; ``n_points`` not an integer in [20, 1,000,000]; ``seed`` not an
+        integer >= 0; ``envelope`` not an Envelope; fewer than 10 converged points; a
+        coefficient without which the model has no thrust or torque that the envelope
+        cannot determine (:data:`DETERMINED`: e.g. Gazebo's motorConstant where the
+        plugin's thrust fade is 0 at every point, |V_z| >= 25 m/s), or terms it cannot
+        separate (:data:`MAX_CONDITION`).
+
+    Warns
+    -----
+    UserWarning
+        Each coefficient fixed at 0 because the envelope cannot determine it (also in
+        ``SimExport.fixed``); an envelope whose every point is flagged (its errors
+        outside flagged regions are NaN: nothing to measure them on).
     """
     if target not in TARGETS:
-        raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
-    if int(n_points) < 20:
-        raise ValueError(f"n_points must be >= 20, got {n_points!r}")
+        raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r:.60}")
+    for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):
+        x = _real(value)
+        if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
+            raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
     if envelope is None:
         envelope = default_envelope(propeller)
-    s = _samples(propeller, params, air, envelope, int(n_points), seed)
+    elif not isinstance(envelope, Envelope):
+        raise ValueError(f"envelope must be an Envelope or None, got {type(envelope).__name__}")
+    s = _samples(propeller, params, air, envelope, int(n_points), int(seed))
+    fixed: dict = {}
     coefficients = {k: (float(v) if not isinstance(v, list) else v)
-                    for k, v in _fit(target, s, propeller.radius, air.rho).items()}
+                    for k, v in _fit(target, s, propeller.radius, air.rho, fixed).items()}
+    for name, why in fixed.items():
+        warnings.warn(f"{name} fixed at 0: {why}", UserWarning, stacklevel=2)
+    errors = _errors(target, coefficients, s)
+    if errors["points_flagged"] == s["omega"].size:
+        warnings.warn(f"every one of the {s['omega'].size} points of the envelope is flagged (vortex ring or multiple "
+                      "roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
     meta = {"propeller": propeller.name, "params": params_label or params.section_model,
             "section_model": params.section_model, "propmap_version": __version__,
-            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": seed}
-    return SimExport(target, coefficients, _errors(target, coefficients, s), envelope, int(s["omega"].size), meta)
+            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed)}
+    return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed)
 
 
 def error_lines(res: SimExport, comment: str = "") -> list[str]:
@@ -283,10 +397,17 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
              f"incidence {res.envelope.incidence_deg[0]:g}-{res.envelope.incidence_deg[1]:g} deg; "
              f"{res.n_points} points, {e['points_flagged']} flagged):"]
     for k in ("thrust", "drag", "torque", "rolling_moment"):
-        lines.append(f"{comment}   {k:<15} rms {e[k]['rms']:7.2%}  max {e[k]['max']:7.2%}  "
-                     f"(max in flagged regions {e[k]['max_flagged']:.2%})")
+        lines.append(f"{comment}   {k:<15} rms {_pct(e[k]['rms']):>7}  max {_pct(e[k]['max']):>7}  "
+                     f"(max in flagged regions {_pct(e[k]['max_flagged'])})")
     lines.append(f"{comment} normalised: {e['normalisation']}")
+    for name, why in res.fixed.items():
+        lines.append(f"{comment} {name} fixed at 0: {why}")
     return lines
+
+
+def _pct(value: float) -> str:
+    """A fraction as a percentage; n/a for NaN (no point to measure it on)."""
+    return "n/a" if math.isnan(value) else f"{value:.2%}"
 
 
 def write_export(res: SimExport, path) -> list[Path]:
@@ -297,13 +418,14 @@ def write_export(res: SimExport, path) -> list[Path]:
     gazebo: an SDF fragment of the gazebo_motor_model plugin's coefficient elements;
     gill2019: JSON.
 
+    The two are written as a pair (io.atomic.atomic_paths); the report records the
+    file's SHA-256 (``describes``) and the coefficients fixed at 0 (``fixed_at_zero``).
+
     Raises
     ------
     OSError
         The files cannot be written.
     """
-    from .io.atomic import atomic_write
-
     path = Path(path)
     head = (f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
             f"({res.meta.get('params')}), fitted to the full model")
@@ -336,18 +458,20 @@ def write_export(res: SimExport, path) -> list[Path]:
         text = "\n".join(lines) + "\n"
     else:
         text = json.dumps({"model": "multinomial in mu = V sin(beta)/(Omega R), lambda_c = V cos(beta)/(Omega R)",
-                           "terms_even": ["1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2"],
-                           "terms_odd": ["mu", "mu lambda", "mu lambda^2", "mu^3"],
+                           "terms_even": list(EVEN_TERMS), "terms_odd": list(ODD_TERMS),
                            "normalisation": "T, H = rho pi R^2 (Omega R)^2 C; Q, M_R = rho pi R^3 (Omega R)^2 C",
-                           **res.coefficients}, indent=2) + "\n"
-    with atomic_write(path) as fh:
-        fh.write(text)
-    from .maps import _json_safe
+                           **res.coefficients, "fixed_at_zero": res.fixed}, indent=2) + "\n"
+    from .io.atomic import atomic_paths, file_sha256
+    from .io.mapfile import _json_safe
 
     report = path.with_name(path.name + ".json")
-    with atomic_write(report) as fh:
-        json.dump(_json_safe({"target": res.target, "coefficients": res.coefficients, "errors": res.errors,
-                   "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
-                                "incidence_deg": list(res.envelope.incidence_deg)},
-                   "n_points": res.n_points, **res.meta}), fh, indent=2, allow_nan=False)
+    # the file and its report as a pair; the report names the file's SHA-256
+    with atomic_paths([path, report]) as (tmp, tmp_report):
+        tmp.write_text(text)
+        tmp_report.write_text(json.dumps(_json_safe({
+            "target": res.target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed, "errors": res.errors,
+            "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
+                         "incidence_deg": list(res.envelope.incidence_deg)},
+            "n_points": res.n_points, **res.meta, "describes": {"file": path.name, "sha256": file_sha256(tmp)}}),
+            indent=2, allow_nan=False))
     return [path, report]

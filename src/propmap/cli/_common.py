@@ -27,6 +27,67 @@ class InputError(click.ClickException):
     exit_code = 2
 
 
+class PathArg(click.Path):
+    """``click.Path`` giving a ``pathlib.Path`` that refuses an empty value: click alone
+    turns ``--out ''`` into ``Path('.')``, the working folder."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(path_type=Path, **kwargs)
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, str) and value == "":
+            self.fail("the path is empty", param, ctx)
+        return super().convert(value, param, ctx)
+
+
+def parse_names(option: str, text: str | None, valid=None, what: str = "name") -> tuple[str, ...] | None:
+    """The comma-separated names of ``option`` (None when the option was not given).
+
+    Parameters
+    ----------
+    option : str
+        The option, for messages.
+    text : str or None
+    valid : sequence of str, optional
+        The names allowed (the message lists them).
+    what : str
+        What a name is, for messages ("propeller name").
+
+    Raises
+    ------
+    InputError
+        An empty value or item (``''``, ``','``, ``'a,,b'``: never a silent "all" or
+        default), a name given twice, or a name not in ``valid``.
+    """
+    if text is None:
+        return None
+    names = [n.strip() for n in text.split(",")]
+    if not any(names):
+        raise InputError(f"{option}: no {what} in {_short(text)!r}; leave the option out for the default")
+    if not all(names):
+        raise InputError(f"{option}: an empty {what} in {_short(text)!r} (a stray comma?)")
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise InputError(f"{option}: {_short(', '.join(twice))} given more than once")
+    if valid is not None:
+        unknown = [n for n in names if n not in valid]
+        if unknown:
+            raise InputError(f"{option}: unknown {_short(', '.join(unknown))}; valid: {', '.join(valid)}")
+    return tuple(names)
+
+
+def given(ctx: click.Context, *params: str) -> list[str]:
+    """The options among ``params`` (parameter names) given on the command line, as typed
+    (``--c-name``), whatever their value."""
+    from click.core import ParameterSource
+
+    out = []
+    for p in ctx.command.params:
+        if p.name in params and ctx.get_parameter_source(p.name) not in (ParameterSource.DEFAULT, None):
+            out.append(p.opts[0] if p.opts and p.opts[0].startswith("-") else p.name.upper())
+    return out
+
+
 def warn(message: str) -> None:
     """A one-line warning on stderr (the run goes on)."""
     click.echo(f"propmap: warning: {message}", err=True)
@@ -211,17 +272,31 @@ def _check_output(option: str, p: Path, ins) -> None:
         raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
     if not os.access(parent, os.W_OK | os.X_OK):
         raise InputError(f"{option}: cannot write in {parent} (permission denied)")
-    _probe(option, parent)
+    _probe(option, parent, p.name)
 
 
-def _probe(option: str, folder: Path) -> None:
-    """Create and remove a file in ``folder``: what the access bits do not tell (a read-only
-    file system, /proc, root on a folder without write permission)."""
+def _probe(option: str, folder: Path, name: str) -> None:
+    """Create and remove, in ``folder``, the temporary file that writing ``name`` will use
+    (io.atomic): what the access bits do not tell (a read-only file system, /proc, root on
+    a folder without write permission), and a name too long once the temporary file's
+    prefix and suffix are added, found now instead of after the work."""
+    import errno
     import tempfile
 
+    from ..io.atomic import temp_affixes
+
+    prefix, suffix = temp_affixes(name)
     try:
-        fd, tmp = tempfile.mkstemp(prefix=".propmap-probe-", dir=folder)
+        fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=folder)
     except OSError as exc:
+        if exc.errno == errno.ENAMETOOLONG:
+            try:
+                name_max = os.pathconf(folder, "PC_NAME_MAX")
+            except (OSError, ValueError):
+                name_max = 255
+            most = name_max - (len(prefix) + len(suffix) + 8 - len(name))  # mkstemp adds 8 characters
+            raise InputError(f"{option}: the name {_short(name)!r} ({len(name)} characters) is too long with the "
+                             f"temporary file's affixes; give at most {most} characters") from None
         raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
     try:
         os.close(fd)
@@ -231,7 +306,7 @@ def _probe(option: str, folder: Path) -> None:
 
 def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
     """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
-    if str(out_dir) == "":
+    if out_dir is None or str(out_dir) == "":
         raise InputError(f"{option}: the path is empty")
     if out_dir.exists() and not out_dir.is_dir():
         raise InputError(f"{option}: {out_dir} exists and is not a folder")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, check_out_dir
+from ._common import InputError, PathArg, check_out_dir
 
 PROP = "apce_8x6"
 PAPER = "gill2017-apc"
@@ -79,7 +79,7 @@ def fit_demo(prop, generic, out_dir: Path):
 
 
 @click.command("demo")
-@click.option("--out-dir", type=click.Path(path_type=Path), default=Path("propmap-demo"), show_default=True,
+@click.option("--out-dir", type=PathArg(), default=Path("propmap-demo"), show_default=True,
               help="Folder for the figures and tables.")
 @click.option("--rpm", type=float, default=8000.0, show_default=True, help="Rotation rate of the envelope [rpm].")
 def demo(out_dir: Path, rpm: float):

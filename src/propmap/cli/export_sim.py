@@ -3,40 +3,42 @@
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import click
 
-from ._common import PARAMS_HELP, InputError, check_outputs, echo_json, load_params, load_prop, with_prop_options
+from ._common import (PARAMS_HELP, InputError, PathArg, check_outputs, echo_json, load_params, load_prop,
+                      with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo": ".sdf", "gill2019": ".json"}
 KEYS = {"rpm": "rpm", "airspeed": "airspeed", "incidence_deg": "incidence_deg", "incidence-deg": "incidence_deg"}
 
 
-def parse_envelope(text: str, propeller):
-    """``rpm=A:B,airspeed=A:B,incidence_deg=A:B`` (any subset; the rest default).
+def parse_envelope(text: str | None, propeller):
+    """``rpm=A:B,airspeed=A:B,incidence_deg=A:B`` (any subset; the rest default; None:
+    the default envelope).
 
     Raises
     ------
     InputError
-        Not that form, unknown names, or ranges outside the model's.
+        Not that form (an empty value or item included), unknown names, a name given
+        twice, or ranges outside the model's.
     """
     from dataclasses import replace
 
     from ..simexport import default_envelope
 
     env = default_envelope(propeller)
-    if not text:
+    if text is None:
         return env
     changes = {}
     for part in text.split(","):
-        if not part.strip():
-            continue
         name, _, rng = part.partition("=")
         key = KEYS.get(name.strip().lower())
         if key is None or rng.count(":") != 1:
-            raise InputError(f"--envelope: {part.strip()!r} is not NAME=LOW:HIGH with NAME rpm, airspeed or "
-                             "incidence_deg")
+            raise InputError(f"--envelope: {part.strip()[:60]!r} is not NAME=LOW:HIGH with NAME rpm, airspeed or "
+                             "incidence_deg (items separated by commas)")
+        if key in changes:
+            raise InputError(f"--envelope: {key} given more than once; give one range per name")
         try:
             lo, hi = (float(x) for x in rng.split(":"))
         except ValueError:
@@ -53,9 +55,9 @@ def parse_envelope(text: str, propeller):
 @click.option("--target", type=click.Choice(["rotorpy", "gazebo", "gill2019"]), required=True,
               help="rotorpy (quad_params rotor keys), gazebo (PX4 gazebo_motor_model SDF elements) or gill2019 "
                    "(multinomial in mu and lambda_c, JSON).")
-@click.option("--out", type=click.Path(path_type=Path), required=True,
+@click.option("--out", type=PathArg(), required=True,
               help="Coefficient file (.py, .sdf or .json by target); a JSON report OUT.json beside it.")
-@click.option("--envelope", default="",
+@click.option("--envelope", default=None,
               help="Fit envelope rpm=A:B,airspeed=A:B,incidence_deg=A:B (default: tip speeds 50-150 m/s, "
                    "0-15 m/s, 0-180 deg).")
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
@@ -79,10 +81,13 @@ def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_js
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
     env = parse_envelope(envelope, propeller)
-    res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
+    try:
+        res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
+    except ValueError as exc:
+        raise InputError(f"--envelope: {exc}") from None
     files = write_export(res, out)
     if as_json:
-        echo_json({"target": target, "coefficients": res.coefficients,
+        echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:

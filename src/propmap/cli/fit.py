@@ -8,16 +8,17 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, check_outputs, load_params, load_prop
+from ._common import InputError, PathArg, _is_file, _short, check_outputs, load_params, load_prop, parse_names
 
 fit_options = [
-    click.option("--out", type=click.Path(path_type=Path), required=True, help="Parameter TOML to write."),
+    click.option("--out", type=PathArg(), required=True, help="Parameter TOML to write."),
     click.option("--M", "M", type=float, default=None,
                  help="Stall-blend sharpness used while fitting (default: that of --base; the paper's model at "
                       "M = 50 is fitted at M = 30 first and continued to 50); in (0, 1e6] 1/rad."),
-    click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default="sigmoid", show_default=True,
-                 help="Paper's model: eq 3, or footnote 1's C_L = c_l sin a cos a (fits cl2, cd only)."),
-    click.option("--fit-params", "fit_params", default="",
+    click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default=None,
+                 help="Paper's model only: eq 3 (sigmoid, the default), or footnote 1's C_L = c_l sin a cos a "
+                      "(sincos; fits cl2, cd only)."),
+    click.option("--fit-params", "fit_params", default=None,
                  help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; for the "
                       "cambered one chosen by the data, docs/identification.md)."),
     click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage), in [0, 256]."),
@@ -40,17 +41,42 @@ M_MAX = 1e6
 MULTISTART_MAX = 256
 
 
-def _options(M, lift_model, multistart, fit_params, no_prior=False):
+def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, base_label=""):
+    """FitOptions from the options, checked against the model of ``base`` when given
+    (before any work).
+
+    Raises
+    ------
+    InputError
+        --M or --multistart out of range; --fit-params empty or repeated; with ``base``:
+        --lift-model with the cambered model, --no-prior with the paper's (options that
+        would be ignored), --fit-params naming parameters the model does not have.
+    """
+    from ..core.airfoil import CamberedParams
     from ..identify import FitOptions
+    from ..identify.fit import _check_names
 
     if M is not None and not (math.isfinite(M) and 0 < M <= M_MAX):
         raise InputError(f"--M must be finite and in (0, {M_MAX:g}] 1/rad, got {M!r}")
     if not 0 <= multistart <= MULTISTART_MAX:
         raise InputError(f"--multistart must be in [0, {MULTISTART_MAX}] (each start is a whole fit), "
                          f"got {multistart}")
-    names = tuple(n.strip() for n in fit_params.split(",") if n.strip()) or None
-    return FitOptions(M=M, lift_model=lift_model, multistart=multistart, progress=True, names=names,
-                      prior=not no_prior)
+    cambered = isinstance(base, CamberedParams)
+    if base is not None and cambered and lift_model is not None:
+        raise InputError(f"--lift-model applies to the paper's model; --base {_short(base_label, 40)} is the cambered "
+                         "model (give a Table I set, e.g. --base gill2017-apc)")
+    if base is not None and no_prior and not cambered:
+        raise InputError(f"--no-prior applies to the cambered model (its population prior); --base "
+                         f"{_short(base_label, 40)} is the paper's model, fitted without one")
+    names = parse_names("--fit-params", fit_params, what="parameter name")
+    options = FitOptions(M=M, lift_model=lift_model or "sigmoid", multistart=multistart, progress=True, names=names,
+                         prior=not no_prior)
+    if names is not None and base is not None:
+        try:
+            _check_names(names, base, options)
+        except ValueError as exc:
+            raise InputError(f"--fit-params: {exc}") from None
+    return options
 
 
 def _out_files(out: Path) -> list:
@@ -113,8 +139,8 @@ def fit() -> None:
 
 
 @fit.command("level-flight")
-@click.argument("data", type=click.Path(path_type=Path))
-@click.option("--vehicle", type=click.Path(path_type=Path), required=True, help="Vehicle TOML.")
+@click.argument("data", type=PathArg())
+@click.option("--vehicle", type=PathArg(), required=True, help="Vehicle TOML.")
 @click.option("--body-lift", is_flag=True, help="Append the body-lift term of Sec. III-A and report whether it matters.")
 @click.option("--base", "base_spec", default="gill2017-apc", show_default=True,
               help="The model and the constants not fitted: the paper's Table I sets (fit from the paper's x0), "
@@ -143,7 +169,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
     base, air, base_label = load_params(base_spec, option="--base")
-    opts = replace(_options(M, lift_model, multistart, fit_params, no_prior), body_lift=body_lift)
+    opts = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), body_lift=body_lift)
     res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
@@ -173,18 +199,20 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
         entry = get_entry(sources[0])
         prop = load_prop(sources[0], diameter_in, blades)  # refuses both: the catalogue geometry fixes them
         return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
-    missing = [s for s in sources if not Path(s).is_file()]
+    missing = [s for s in sources if not _is_file(s)]
     if missing:
-        raise InputError(f"SOURCE: {missing[0]!r} is neither a catalogue propeller nor a file")
+        raise InputError(f"SOURCE: {_short(missing[0])!r} is neither a catalogue propeller nor a file"
+                         + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     prop = load_prop(prop_spec, diameter_in, blades)
     try:
-        if all(looks_like_uiuc(s) for s in sources):
+        other = [s for s in sources if not looks_like_uiuc(s)]
+        if not other:
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
         if len(sources) > 1:
-            raise InputError("SOURCE: several files must all be UIUC-format static (RPM CT CP) or wind-tunnel "
-                             "(J CT CP eta) files; give one CSV at a time")
+            raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
+                             "(J CT CP eta) file; several files must all be, or give one CSV at a time")
         return read_loads(sources[0]), prop, None, Path(sources[0]).name
     except DataError as exc:
         raise InputError(f"SOURCE: {exc}") from None
@@ -192,9 +220,10 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
 
 @fit.command("loads")
 @click.argument("sources", metavar="SOURCE...", nargs=-1, required=True)
-@click.option("--holdout", default="", help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
-                                            "to hold out.")
-@click.option("--quantities", default="", help="Comma-separated subset of thrust,drag,torque to fit (default: all).")
+@click.option("--holdout", default=None, help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
+                                              "to hold out (default: none).")
+@click.option("--quantities", default=None, help="Comma-separated subset of thrust,drag,torque to fit (default: all "
+                                                 "measured).")
 @click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of file SOURCEs.")
 @click.option("--diameter-in", type=float, default=None, help="Diameter [in] for a geometry file that lacks it.")
 @click.option("--blades", type=int, default=None, help="Blade count for a geometry file.")
@@ -220,7 +249,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params(base_spec or "generic", option="--base")
     data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
-    held = tuple(h.strip() for h in holdout.split(",") if h.strip())
+    held = parse_names("--holdout", holdout, what="run") or ()
     population = None
     if entry is not None and held:
         # judging held-out runs of a catalogue propeller: the generic set and the prior must
@@ -231,7 +260,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
         population = population_without(without=entry.name)
         if base_spec is None:
             base, base_label = generic_without(entry.name)
-    qty = tuple(q.strip() for q in quantities.split(",") if q.strip()) or None
+    qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
     groups = set(data.group)
     unknown = [h for h in held if h not in groups]
     if unknown:
@@ -239,7 +268,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    options = replace(_options(M, lift_model, multistart, fit_params, no_prior), population=population)
+    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:

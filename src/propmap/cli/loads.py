@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_outputs, check_point,
+from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
                       echo_json, load_params, load_prop, warn, with_prop_options)
 
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "converged", "flags")
@@ -236,7 +236,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--incidence-deg", type=float, default=None,
               help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent (default 0).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
-@click.option("--points", type=click.Path(path_type=Path),
+@click.option("--points", type=PathArg(),
               help="CSV (',' or ';') with columns rpm, airspeed, incidence_deg (case-insensitive); other "
                    "columns are kept in the output.")
 @click.option("--out", help="Output CSV of --points ('-': standard output).")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import time
@@ -9,12 +10,11 @@ from pathlib import Path
 
 import click
 
-from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_out_dir, check_outputs, echo_json, load_params,
-                      load_prop, with_prop_options)
+from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs, echo_json,
+                      given, load_params, load_prop, parse_names, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
-MAX_POINTS = 20_000_000
 
 
 def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
@@ -54,7 +54,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--incidence-deg", "incidence_axis", default=None,
               help="Incidence axis [deg] start:stop:count (default 0:180:73).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
-@click.option("--out", type=click.Path(path_type=Path), default=None,
+@click.option("--out", type=PathArg(), default=None,
               help="Map file; a JSON sidecar OUT.json of its metadata is written beside it.")
 @click.option("--format", "fmt", type=click.Choice(list(FORMATS)), default="netcdf", show_default=True,
               help="netcdf (xarray Dataset), csv (long form) or c (a C99 header).")
@@ -66,18 +66,18 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>).")
 @click.option("--check-points", type=int, default=2000, show_default=True,
               help="Random off-grid points at which the full model checks the map (0: none).")
-@click.option("--check", "check_file", type=click.Path(path_type=Path), default=None,
+@click.option("--check", "check_file", type=PathArg(), default=None,
               help="Recompute the error bound of an existing netCDF map (no PROP).")
 @click.option("--all", "all_props", is_flag=True,
               help="One netCDF map over every catalogue propeller (a prop dimension), each with its default "
                    "parameters, on one grid (default axes from the median diameter).")
-@click.option("--props", "only", default="", help="With --all: comma-separated catalogue names to restrict to.")
+@click.option("--props", "only", default=None, help="With --all: comma-separated catalogue names to restrict to.")
 @click.option("--scheduler", default=None,
               help="Address of a dask.distributed scheduler (tcp://HOST:PORT) to build on; default: this machine.")
-@click.option("--plot", "plot_dir", type=click.Path(path_type=Path), default=None,
+@click.option("--plot", "plot_dir", type=PathArg(), default=None,
               help="Folder for contour maps of T, D, Q and the hover model's error.")
-@click.option("--plot-rpm", default=None, help="Comma-separated rpm of the contour maps (default: the middle of the "
-                                               "rpm axis).")
+@click.option("--plot-rpm", default=None, help="Comma-separated rpm of the contour maps, within the rpm axis (each "
+                                               "drawn at its nearest node; default: the middle of the axis).")
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
 @with_prop_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out, fmt, c_type, c_interpolation,
@@ -90,97 +90,124 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out,
     interpolation error (the full model at random off-grid points). Evaluate it with
     propmap.RotorMap (Python) or the C header (--format c); docs/simulators.md.
     """
-    import numpy as np
-
+    ctx = click.get_current_context()
     if check_file is not None:
-        given = [o for o, v in (("PROP", prop), ("--out", out), ("--all", all_props), ("--plot", plot_dir),
-                                ("--rpm", rpm_axis), ("--airspeed", airspeed_axis),
-                                ("--incidence-deg", incidence_axis), ("--params", params_spec)) if v]
-        if given:
-            raise InputError(f"--check takes a map file only; {', '.join(given)} do not apply")
+        extra = [o for o in given(ctx, *(p.name for p in ctx.command.params)) if o not in ("--check", "--check-points",
+                                                                                          "--json")]
+        if extra:
+            raise InputError(f"--check takes a map file only; {', '.join(extra)} do not apply")
         return _check(check_file, check_points, as_json)
     if all_props and prop:
         raise InputError("give PROP or --all, not both")
-    if only and not all_props:
+    only = parse_names("--props", only, what="propeller name")
+    if only is not None and not all_props:
         raise InputError("--props applies to --all")
-    only_names = [n.strip() for n in only.split(",") if n.strip()]
-    if only and not only_names:
-        raise InputError(f"--props: no propeller name in {only!r}")
-    twice = sorted({n for n in only_names if only_names.count(n) > 1})
-    if twice:
-        raise InputError(f"--props: {', '.join(twice)} given more than once")
     if not all_props and not prop:
         raise InputError("give PROP (catalogue name or geometry file), --all, or --check MAP.nc")
     if out is None:
         raise InputError("--out is required (the map file)")
-    if all_props and fmt != "netcdf":
-        raise InputError("--all writes one netCDF map with a prop dimension; --format must be netcdf")
-    if all_props and params_spec is not None:
-        raise InputError("--params does not apply to --all (each propeller gets its default parameters)")
-    if check_points < 0 or check_points > 1_000_000:
+    if all_props:
+        ignored = given(ctx, "params_spec", "fmt", "plot_dir", "plot_rpm", "diameter_in", "blades", "c_type",
+                        "c_interpolation", "c_name")
+        if ignored:
+            raise InputError(f"{', '.join(ignored)} {'does' if len(ignored) == 1 else 'do'} not apply to --all (one "
+                             "netCDF map, each propeller with its catalogue geometry and default parameters, no plots)")
+    if not 0 <= check_points <= 1_000_000:
         raise InputError(f"--check-points must be in [0, 1000000], got {check_points}")
-    if fmt != "c" and c_type != "float":
-        raise InputError("--c-type applies to --format c")
-    if fmt != "c" and (c_interpolation != "linear" or c_name is not None):
-        raise InputError(f"{'--c-name' if c_name is not None else '--c-interpolation'} applies to --format c")
-    if fmt == "c":
+    if fmt != "c":
+        ignored = given(ctx, "c_type", "c_interpolation", "c_name")
+        if ignored:
+            raise InputError(f"{', '.join(ignored)} appl{'ies' if len(ignored) == 1 else 'y'} to --format c")
+    else:
         from ..export_c import c_prefix
 
         try:
             c_prefix(out, c_name)
         except ValueError as exc:
-            raise InputError(f"{'--c-name' if c_name else '--out'}: {exc} (give --c-name)") from None
+            raise InputError(f"{'--c-name' if c_name is not None else '--out'}: {exc}"
+                             f"{'' if c_name is not None else ' (give --c-name)'}") from None
     if plot_rpm is not None and plot_dir is None:
         raise InputError("--plot-rpm applies to --plot")
     if out.suffix.lower() != FORMATS[fmt]:
         raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} (or choose --format)")
     inputs = [params_spec, prop]
-    outputs = [("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))]
-    check_outputs(outputs, inputs)
-    if plot_dir is not None:
-        check_out_dir("--plot", plot_dir, ["map_contours_probe.png"], inputs)
+    check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
 
-    from ..maps import build_map, write_map, write_sidecar
+    import numpy as np
 
-    t0 = time.perf_counter()
+    from ..maps import build_map, write_map
+
     if all_props:
-        ds = _build_all(rpm_axis, airspeed_axis, incidence_axis, check_points, scheduler, only_names)
+        names, props = _catalogue(only)
+        # one grid for all: the default axes of the median diameter
+        median = props[int(np.argsort([p.diameter for p in props])[len(props) // 2])]
+        rpm, V, inc = _axes(median, rpm_axis, airspeed_axis, incidence_axis, len(names))
     else:
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
         rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
-        citation = _citation(prop)
-        ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
-                       citation=citation, scheduler=scheduler, progress=True, n_check=check_points)
+        plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
+    t0 = time.perf_counter()
+    with _scheduler(scheduler) as client:
+        if all_props:
+            with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client) as ds:
+                ds.attrs["build_seconds"] = time.perf_counter() - t0
+                files = write_map(ds, out, fmt)
+        else:
+            ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
+                           citation=_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0
-    ds.attrs["build_seconds"] = elapsed
-    if fmt == "c":
-        from ..export_c import write_c_header
-        from ..maps import RotorMap
+    if not all_props:
+        ds.attrs["build_seconds"] = elapsed
+        if fmt == "c":
+            from ..export_c import c_header_text
+            from ..io.mapfile import write_with_sidecar
+            from ..maps import RotorMap
 
-        files = [write_c_header(RotorMap(ds, c_interpolation), out, dtype=c_type, name=c_name),
-                 write_sidecar(ds, out.with_name(out.name + ".json"))]
-    else:
-        files = write_map(ds, out, fmt)
-    if plot_dir is not None and not all_props:
-        files += _plots(ds, plot_dir, plot_rpm)
+            text = c_header_text(RotorMap(ds, c_interpolation), out, dtype=c_type, name=c_name)
+            files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text))
+        else:
+            files = write_map(ds, out, fmt)
+        files += _plots(ds, plots)
     _report(ds, files, elapsed, as_json)
 
 
-def _axes(propeller, rpm_axis, airspeed_axis, incidence_axis):
-    from ..maps import default_axes
+def _axes(propeller, rpm_axis, airspeed_axis, incidence_axis, n_props: int = 1):
+    """The grid's axes: the options given, else the defaults for ``propeller``; refused
+    (before any work) beyond MAX_NODES nodes over ``n_props`` propellers."""
+    from ..maps import MAX_NODES, default_axes
 
     rpm, V, inc = default_axes(propeller)
-    if rpm_axis:
+    if rpm_axis is not None:
         rpm = parse_axis("--rpm", rpm_axis, RPM_MIN, RPM_MAX, "rpm")
-    if airspeed_axis:
+    if airspeed_axis is not None:
         V = parse_axis("--airspeed", airspeed_axis, 0.0, 500.0, "m/s")
-    if incidence_axis:
+    if incidence_axis is not None:
         inc = parse_axis("--incidence-deg", incidence_axis, 0.0, 180.0, "deg")
     n = rpm.size * V.size * inc.size
-    if n > MAX_POINTS:
-        raise InputError(f"the grid has {n:,} points; at most {MAX_POINTS:,} (about 8 minutes on 2 cores)")
+    if n * n_props > MAX_NODES:
+        each = f" for each of {n_props} propellers" if n_props > 1 else ""
+        raise InputError(f"the grid has {n:,} points{each} ({n * n_props:,} in all); at most {MAX_NODES:,} "
+                         "(about 8 minutes on 2 cores): give coarser axes" + (" or --props" if n_props > 1 else ""))
     return rpm, V, inc
+
+
+@contextlib.contextmanager
+def _scheduler(address):
+    """A dask.distributed Client for --scheduler (None without), closed at the end."""
+    if address is None:
+        yield None
+        return
+    from ..maps import scheduler_client
+
+    try:
+        client = scheduler_client(address)
+    except ValueError as exc:
+        raise InputError(f"--scheduler: {exc}") from None
+    try:
+        yield client
+    finally:
+        client.close()
 
 
 def _citation(prop: str) -> str:
@@ -190,62 +217,98 @@ def _citation(prop: str) -> str:
     return entry.citation if entry is not None else ""
 
 
-def _build_all(rpm_axis, airspeed_axis, incidence_axis, check_points, scheduler, only):
-    """One Dataset over the catalogue: the maps stacked along ``prop``, per-propeller
-    metadata in the attribute ``per_prop_json``."""
-    import numpy as np
-    import xarray as xr
-    from tqdm import tqdm
-
-    from ..io.calibration import default_params
+def _catalogue(only):
+    """(names, propellers) of --all: the catalogue, or the --props names in it."""
     from ..io.catalogue import catalogue, load_propeller
-    from ..maps import build_map
 
     names = sorted(only or catalogue())
     unknown = [n for n in names if n not in catalogue()]
     if unknown:
         raise InputError(f"--props: unknown propeller(s) {', '.join(unknown)}")
-    props = [load_propeller(n) for n in names]
-    median = props[int(np.argsort([p.diameter for p in props])[len(props) // 2])]
-    rpm, V, inc = _axes(median, rpm_axis, airspeed_axis, incidence_axis)
-    maps, per_prop = [], {}
-    for name, p in tqdm(list(zip(names, props)), unit="prop", leave=False, disable=None):
-        params, air, label = default_params(name)
-        ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
-                       citation=catalogue()[name].citation, scheduler=scheduler, n_check=check_points)
-        per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
-        ds = ds.copy()
-        ds.attrs = {}
-        maps.append(ds)
-    # "override": the variables keep their units and long names (those of the first map)
-    out = xr.concat(maps, dim=xr.DataArray(names, dims="prop", name="prop"), combine_attrs="override")
-    out.attrs = {"title": "propmap rotor maps of the catalogue", "propmap_version": maps and per_prop[names[0]]
-                 ["propmap_version"], "per_prop_json": json.dumps(per_prop, default=float),
-                 "note": "RotorMap.open(path, prop=NAME) evaluates one propeller's map"}
-    return out
+    return names, [load_propeller(n) for n in names]
 
 
-def _plots(ds, plot_dir: Path, plot_rpm):
+@contextlib.contextmanager
+def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client):
+    """The maps of ``names`` on one grid, as one lazy Dataset along ``prop`` (per-propeller
+    metadata in the attribute ``per_prop_json``). Each propeller's map goes to a hidden
+    folder beside ``out`` as soon as it is built (removed at the end, also when stopped),
+    so that memory holds one propeller's map at a time, also while the result is written."""
+    import tempfile
+
+    import numpy as np
+    import xarray as xr
+    from tqdm import tqdm
+
+    from ..io.calibration import default_params
+    from ..io.catalogue import catalogue
+    from ..maps import build_map
+
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix=f".{out.name}.", suffix=".parts", dir=out.parent) as tmp:
+        parts, per_prop = [], {}
+        for k, (name, p) in enumerate(tqdm(list(zip(names, props)), unit="prop", leave=False, disable=None)):
+            params, air, label = default_params(name)
+            ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
+                           citation=catalogue()[name].citation, scheduler=client, n_check=check_points)
+            per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
+            parts.append(Path(tmp) / f"{k:04d}.nc")
+            ds.attrs = {}
+            ds.to_netcdf(parts[-1], engine="netcdf4")
+            del ds
+        combined = xr.open_mfdataset(parts, combine="nested", concat_dim="prop", engine="netcdf4", data_vars="all",
+                                     coords="minimal", compat="override", combine_attrs="override")
+        try:
+            combined = combined.assign_coords(prop=("prop", names))
+            for v in combined.variables.values():
+                v.encoding = {}
+            combined.attrs = {"title": "propmap rotor maps of the catalogue",
+                              "propmap_version": per_prop[names[0]]["propmap_version"],
+                              "per_prop_json": json.dumps(per_prop, default=float),
+                              "note": "RotorMap.open(path, prop=NAME) evaluates one propeller's map"}
+            yield combined
+        finally:
+            combined.close()
+
+
+def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs) -> list:
+    """(node rpm, figure path) of each contour map, checked as outputs before any work.
+
+    Raises
+    ------
+    InputError
+        A --plot-rpm value that is not a number within the rpm axis, two values on one
+        node, or an unusable figure path (an input among them).
+    """
     import numpy as np
 
+    if plot_rpm is None:
+        nodes = [float(rpm[len(rpm) // 2])]
+    else:
+        nodes = []
+        for part in plot_rpm.split(","):
+            try:
+                r = float(part)
+            except ValueError:
+                raise InputError(f"--plot-rpm: {part.strip()!r:.40} is not a number") from None
+            if not (math.isfinite(r) and rpm[0] <= r <= rpm[-1]):
+                raise InputError(f"--plot-rpm: {part.strip():.40} is outside the map's rpm axis "
+                                 f"[{rpm[0]:g}, {rpm[-1]:g}]")
+            node = float(rpm[int(np.argmin(np.abs(rpm - r)))])
+            if node in nodes:
+                raise InputError(f"--plot-rpm: {part.strip():.40} falls on the node {node:.0f} rpm of another "
+                                 "value (maps are drawn at nodes)")
+            nodes.append(node)
+    paths = check_out_dir("--plot", plot_dir, [f"map_contours_{n:.0f}rpm.png" for n in nodes], inputs)
+    return list(zip(nodes, paths))
+
+
+def _plots(ds, plots) -> list:
     from ..plots import plot_map_contours
 
-    rpm_values = ds["rpm"].values
-    wanted = [float(rpm_values[len(rpm_values) // 2])] if not plot_rpm else []
-    for part in (plot_rpm or "").split(","):
-        if part.strip():
-            try:
-                wanted.append(float(part))
-            except ValueError:
-                raise InputError(f"--plot-rpm: {part!r} is not a number") from None
-    files = []
-    for r in wanted:
-        node = float(rpm_values[int(np.argmin(np.abs(rpm_values - r)))])
-        path = plot_dir / f"map_contours_{node:.0f}rpm.png"
-        title = (f"{ds.attrs.get('propeller', '')}, {ds.attrs.get('params_label', '')} "
-                 f"(propmap map; data: {ds.attrs.get('citation', '') or 'see params'})")
-        files.append(plot_map_contours(ds, node, path, title=title))
-    return files
+    title = (f"{ds.attrs.get('propeller', '')}, {ds.attrs.get('params_label', '')} "
+             f"(propmap map; data: {ds.attrs.get('citation', '') or 'see params'})")
+    return [plot_map_contours(ds, node, path, title=title) for node, path in plots]
 
 
 def _report(ds, files, elapsed: float, as_json: bool) -> None:
@@ -267,8 +330,9 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
                  "rolling_moment": "largest M_R", "power": "static power"}
         for k, norm in norms.items():
             c, lin = (f"check_{m}_{k}" for m in ("cubic", "linear"))
-            click.echo(f"  {k:<16}{a[c + '_rms']:>10.3%}{a[c + '_max']:>8.3%}{a[c + '_max_flagged']:>13.2%}"
-                       f"{a[lin + '_rms']:>12.3%}{a[lin + '_max']:>8.3%}{a[lin + '_max_flagged']:>13.2%}   {norm}")
+            click.echo(f"  {k:<16}{_pct(a[c + '_rms'], 10)}{_pct(a[c + '_max'], 8)}{_pct(a[c + '_max_flagged'], 13, 2)}"
+                       f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 8)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
+                       f"   {norm}")
         click.echo("  (propmap.RotorMap interpolates cubic by default, the C header linear)")
     click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
 
@@ -282,13 +346,12 @@ def _check(path: Path, n: int, as_json: bool) -> None:
         rm = RotorMap.open(path)
     except ValueError as exc:
         raise InputError(f"--check: {exc}") from None
-    # fresh points: another seed than the stored check's
-    seed = int(rm.attrs.get("check_seed", 0)) + 1
+    # fresh points: another seed than the stored check's (a valid map's check_seed is an integer >= 0)
+    seed = (int(rm.attrs.get("check_seed", 0)) + 1) % 2**63
     try:
         res = rm.check(n, seed=seed)
-    except (KeyError, ValueError, TypeError) as exc:
-        raise InputError(f"--check: {path} does not record the model that made it ({type(exc).__name__}: "
-                         f"{exc}); it was not written by propmap map") from None
+    except ValueError as exc:
+        raise InputError(f"--check: {str(path)[:80]}: {exc}") from None
     stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
     if as_json:
         echo_json({"recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
@@ -297,10 +360,18 @@ def _check(path: Path, n: int, as_json: bool) -> None:
     click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
                f"points (seed {seed}; stored values in brackets):")
     nan = float("nan")
-    click.echo(f" {res['check_points_flagged']} of them flagged")
+    click.echo(f" {res['check_points_flagged']} of them flagged" + (" (no error outside flagged regions to "
+                                                                      "measure: n/a)" if res["check_points_flagged"] == n
+                                                                      else ""))
     for method in ("cubic", "linear"):
         p = f"check_{method}_"
         click.echo(f" {method}:")
         for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
-            click.echo(f"  {k:<16} max {res[f'{p}{k}_max']:.3%} ({stored.get(f'{p}{k}_max', nan):.3%}), "
-                       f"rms {res[f'{p}{k}_rms']:.3%} ({stored.get(f'{p}{k}_rms', nan):.3%})")
+            click.echo(f"  {k:<16} max {_pct(res[f'{p}{k}_max'])} ({_pct(stored.get(f'{p}{k}_max', nan))}), "
+                       f"rms {_pct(res[f'{p}{k}_rms'])} ({_pct(stored.get(f'{p}{k}_rms', nan))})")
+
+
+def _pct(value, width: int = 0, digits: int = 3) -> str:
+    """``value`` as a percentage, or n/a when there was no point to measure it (NaN)."""
+    text = "n/a" if value is None or math.isnan(value) else f"{value:.{digits}%}"
+    return f"{text:>{width}}"

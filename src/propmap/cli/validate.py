@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ._common import PARAMS_HELP, InputError, check_out_dir, check_outputs, echo_json, load_params
+from ._common import PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params, parse_names
 from .validate_all import PROTOCOLS
 
 
@@ -33,11 +33,11 @@ def print_table(v) -> None:
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
 @click.option("--protocols", default=None,
               help=f"With --all: comma-separated subset of {', '.join(PROTOCOLS)} (default: all).")
-@click.option("--props", "only", default="", help="With --all: comma-separated catalogue names to restrict to.")
-@click.option("--out-dir", type=click.Path(path_type=Path), default=None,
+@click.option("--props", "only", default=None, help="With --all: comma-separated catalogue names to restrict to.")
+@click.option("--out-dir", type=PathArg(), default=None,
               help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")
 @click.option("--json", "as_json", is_flag=True, help="Print the errors as JSON.")
-@click.option("--figure", type=click.Path(path_type=Path), default=None,
+@click.option("--figure", type=PathArg(), default=None,
               help="Single propeller: figure (.png, .pdf or .svg) of the model against the measurements "
                    "(default: none written).")
 def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure):
@@ -57,15 +57,16 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
 
         if figure is not None:
             raise InputError("--figure applies to a single PROP; --all writes its figures into --out-dir")
+        protocols = parse_names("--protocols", protocols, valid=PROTOCOLS, what="protocol") or PROTOCOLS
+        only = parse_names("--props", only, what="propeller name") or ()
         if out_dir is not None:
             check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
-        run_all([p.strip() for p in (protocols or ",".join(PROTOCOLS)).split(",") if p.strip()],
-                [p.strip() for p in only.split(",") if p.strip()], out_dir, as_json)
+        run_all(list(protocols), list(only), out_dir, as_json)
         return
     if not prop:
         raise InputError("give PROP (a catalogue propeller) or --all")
     for option, value in (("--protocols", protocols is not None),
-                          ("--props", bool(only)), ("--out-dir", out_dir is not None)):
+                          ("--props", only is not None), ("--out-dir", out_dir is not None)):
         if value:
             raise InputError(f"{option} applies to --all")
     if figure is not None:

@@ -74,9 +74,16 @@ def _one_propeller(name: str, protocols) -> dict:
 
 
 def _worker_init() -> None:
+    import threading
+
     import numba
+    from tqdm import tqdm
 
     numba.set_num_threads(1)  # the workers share the cores; each runs small batches
+    # a thread lock for tqdm instead of its default multiprocessing lock: a worker ended by
+    # SIGTERM (validate --all stopped) cannot release a named semaphore, and Python's
+    # resource tracker then prints "leaked semaphore" lines at exit
+    tqdm.set_lock(threading.RLock())
 
 
 def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> dict:

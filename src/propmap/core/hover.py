@@ -46,7 +46,15 @@ class HoverModel:
 
         Then ``HoverModel.thrust(omega)`` equals the full model's T at V = 0 exactly at
         that ``omega`` (and within the Reynolds-number dependence elsewhere).
+
+        Raises
+        ------
+        ValueError
+            ``omega`` not a single number (an array of several, a string, a bool), or as
+            :func:`propmap.rotor_loads` (its range).
         """
+        if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
+            raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")
         r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
         return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2)
 

@@ -57,10 +57,13 @@ class Discretization:
     n_azimuth: int = 16
 
     def __post_init__(self) -> None:
-        if int(self.n_radial) != self.n_radial or not 2 <= self.n_radial <= 10000:
-            raise ValueError(f"n_radial must be an integer in [2, 10000], got {self.n_radial!r}")
-        if int(self.n_azimuth) != self.n_azimuth or not 2 <= self.n_azimuth <= 1000:
-            raise ValueError(f"n_azimuth must be an integer in [2, 1000], got {self.n_azimuth!r}")
+        from .geometry import _real
+
+        for name, hi in (("n_radial", 10000), ("n_azimuth", 1000)):
+            v = getattr(self, name)
+            x = _real(v)
+            if x is None or not (math.isfinite(x) and x.is_integer() and 2 <= x <= hi):
+                raise ValueError(f"{name} must be an integer in [2, {hi}], got {v!r:.60}")
 
 
 DEFAULT_DISCRETIZATION = Discretization()

@@ -62,8 +62,22 @@ def _spin_sign(spin) -> np.ndarray:
     return s.astype(float)
 
 
+def _check_spin(s: np.ndarray, shape: tuple) -> None:
+    """Refuse a spin array that does not broadcast to the loads' shape S."""
+    try:
+        ok = np.broadcast_shapes(shape, s.shape) == tuple(shape)
+    except ValueError:
+        ok = False
+    if not ok:
+        raise ValueError(f"spin of shape {s.shape} does not broadcast to the shape {tuple(shape)} of the loads "
+                         "(of velocity and omega)")
+
+
 def _vectors(name: str, value) -> np.ndarray:
-    a = np.asarray(value)
+    try:
+        a = np.asarray(value)
+    except ValueError:  # a ragged list
+        raise ValueError(f"{name} must be a rectangular array of numbers, got {value!r:.60}") from None
     if a.dtype.kind not in "iuf":
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
     a = a.astype(float)
@@ -104,7 +118,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     ------
     ValueError
         Non-numeric inputs, shapes not ending in 3, a zero or non-finite axis, a non-finite
-        velocity, a bad spin (a bool included), or the ranges of :func:`rotor_loads`
+        velocity, a bad spin (a bool included, or an array that does not broadcast to the
+        loads' shape S), or the ranges of :func:`rotor_loads`
         (the speed |velocity| at most 500 m/s).
     SolverError
         As :func:`rotor_loads`.
@@ -118,6 +133,12 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     """
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)
+    try:
+        shape = np.broadcast_shapes(speed.shape, np.shape(omega))
+    except ValueError:
+        shape = None  # rotor_loads names the argument
+    if shape is not None:
+        _check_spin(s, shape)
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure)
     force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s,

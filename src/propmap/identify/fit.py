@@ -80,14 +80,46 @@ def param_names(lift_model: str) -> tuple[str, ...]:
 
 
 def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
-    """The parameters fitted by default; ``data_kind`` "static", "few_rates" or "rates"."""
+    """The parameters fitted: ``options.names`` (checked), else the default for
+    ``data_kind`` "static", "few_rates" or "rates"."""
     if options.names is not None:
-        return tuple(options.names)
+        return _check_names(options.names, base, options)
     if isinstance(base, CamberedParams):
         if data_kind == "static" and not options.prior:
             return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
     return param_names(options.lift_model)
+
+
+def _check_names(names, base: SectionParams, options: "FitOptions") -> tuple[str, ...]:
+    """``names`` as a tuple, refused unless each is a parameter of the base's model (the
+    paper's: cl1, cl2, cd, alpha0; the cambered: CAMBERED_BOUNDS and any field given
+    bounds in ``options.bounds``), given once.
+
+    Raises
+    ------
+    ValueError
+        Not a sequence of str, empty, a name given twice, or a name the model does not
+        have (a paper-model name with a cambered base, ``alpha0``, included).
+    """
+    if isinstance(names, str) or not isinstance(names, (tuple, list)) or not all(isinstance(n, str) for n in names):
+        raise ValueError(f"names must be a tuple of parameter names (str), got {names!r:.60}")
+    if not names:
+        raise ValueError("names is empty: give the parameters to fit, or None for the default")
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise ValueError(f"cannot fit {', '.join(twice)} twice: give each parameter once")
+    if isinstance(base, CamberedParams):
+        valid = (*CAMBERED_BOUNDS, *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
+        model = "the cambered model"
+    else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
+        valid, model = tuple(BOUNDS), "the paper's model"
+    unknown = [n for n in names if n not in valid]
+    if unknown:
+        hint = " (body-lift terms: body_lift=True, --body-lift)" if any(n in BODY_BOUNDS for n in unknown) else ""
+        raise ValueError(f"cannot fit {', '.join(unknown)[:120]} with {model}: its parameters are "
+                         f"{', '.join(valid)}{hint}")
+    return tuple(names)
 
 
 def _is_angle(name: str) -> bool:

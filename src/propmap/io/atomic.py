@@ -11,12 +11,13 @@ never a damaged target.
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import os
 import stat
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_path", "atomic_write", "normal_mode"]
+__all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal_mode", "temp_affixes"]
 
 
 def normal_mode(path: Path) -> int:
@@ -28,6 +29,21 @@ def normal_mode(path: Path) -> int:
         umask = os.umask(0)
         os.umask(umask)
         return 0o666 & ~umask
+
+
+def file_sha256(path) -> str:
+    """The SHA-256 of a file's bytes (hex), read in 1 MiB blocks."""
+    h = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def temp_affixes(name: str) -> tuple[str, str]:
+    """(prefix, suffix) of the temporary file written beside a target called ``name``
+    (``tempfile.mkstemp`` puts 8 random characters between them)."""
+    return f".{name}.", ".tmp"
 
 
 @contextlib.contextmanager
@@ -65,16 +81,73 @@ def atomic_path(path):
     OSError
         As :func:`atomic_write`.
     """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    perm = normal_mode(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
+    with atomic_paths([path]) as (tmp,):
+        yield tmp
+
+
+@contextlib.contextmanager
+def atomic_paths(paths):
+    """:func:`atomic_path` for files that belong together (a map and its sidecar): yields
+    one temporary path per target; on success the targets are replaced one after another
+    while holding an exclusive lock (``flock``) on each target's folder, so that two
+    propmap runs writing the same files never interleave their renames (the last run's
+    files all win); on an exception every temporary file is removed.
+
+    A reader that does not take the lock can still see the first file replaced and not
+    yet the second for a moment: files that describe another (a sidecar) carry its
+    SHA-256 to check (``propmap.maps.read_sidecar``).
+
+    Parameters
+    ----------
+    paths : sequence of str or Path
+
+    Raises
+    ------
+    OSError
+        As :func:`atomic_write`.
+    """
+    paths = [Path(p) for p in paths]
+    tmps = []
     try:
-        yield Path(tmp)
-        os.chmod(tmp, perm)
-        os.replace(tmp, path)
+        for path in paths:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            prefix, suffix = temp_affixes(path.name)
+            fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=path.parent)
+            os.close(fd)
+            tmps.append(Path(tmp))
+        yield tuple(tmps)
+        perms = [normal_mode(p) for p in paths]
+        with _folder_locks({p.parent for p in paths}):
+            for tmp, path, perm in zip(tmps, paths, perms):
+                os.chmod(tmp, perm)
+                os.replace(tmp, path)
     except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
+        for tmp in tmps:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(tmp)
         raise
+
+
+@contextlib.contextmanager
+def _folder_locks(folders):
+    """Exclusive ``flock`` locks on ``folders`` (in a fixed order: no deadlock between two
+    writers); a folder that cannot be opened for reading, or a file system without flock
+    (some network mounts), goes unlocked."""
+    fds = []
+    try:
+        for folder in sorted(os.path.realpath(f) for f in folders):
+            try:
+                fd = os.open(folder, os.O_RDONLY)
+            except OSError:  # a folder that can be written but not read: no lock
+                continue
+            fds.append(fd)
+            try:
+                import fcntl
+
+                fcntl.flock(fd, fcntl.LOCK_EX)
+            except (ImportError, OSError):
+                pass
+        yield
+    finally:
+        for fd in fds:
+            os.close(fd)  # closing releases the lock

@@ -63,7 +63,8 @@ never converted), finite, and within its range: the cambered keys as ``CamberedP
 the paper's keys and the air within :data:`FILE_RANGES`, which only refuse absurd values
 (``cl1 = 1e300``): ``cl1``, ``cl2``, ``cd``, ``cp_blasius`` in [0, 100], ``cd0`` in
 [0, 10], ``M`` in (0, 1e6], ``alpha0_deg`` in (0, 90); ``rho`` in [0.001, 2000] kg/m^3 (Mars' surface air is 0.02),
-``mu`` in (0, 10] Pa s, ``speed_of_sound`` in (0, 1e4] m/s.
+``mu`` in (0, 10] Pa s, ``speed_of_sound`` in [1, 1e4] m/s (a speed of sound near 0, 1e-300,
+made the compressibility term 1/a^2 divide by zero; no gas is slower than about 100 m/s).
 """
 
 from __future__ import annotations
@@ -105,7 +106,7 @@ FILE_RANGES = {
     "cambered": {"alpha_L0_deg": (-20.0, 10.0, False, False, "deg"),
                  "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg"), **_ROTOR_RANGES},
     "air": {"rho": (1e-3, 2000.0, False, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
-            "speed_of_sound": (0.0, 1e4, True, False, "m/s")},
+            "speed_of_sound": (1.0, 1e4, False, False, "m/s")},
 }
 
 
