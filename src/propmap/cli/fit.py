@@ -41,7 +41,7 @@ M_MAX = 1e6
 MULTISTART_MAX = 256
 
 
-def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, base_label=""):
+def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, base_label="", extra_names=()):
     """FitOptions from the options, checked against the model of ``base`` when given
     (before any work).
 
@@ -73,7 +73,7 @@ def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, b
                          prior=not no_prior)
     if names is not None and base is not None:
         try:
-            _check_names(names, base, options)
+            _check_names(names, base, options, extra=extra_names)
         except ValueError as exc:
             raise InputError(f"--fit-params: {exc}") from None
     return options

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, check_outputs, load_params
+from ._common import InputError, PathArg, check_outputs, load_params, parse_names
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
 #: the densities accepted on the command line [kg/m^3] (as parameter files)
@@ -88,10 +88,9 @@ def _flight_out_files(out: Path) -> list:
 
 
 @click.command("flight")
-@click.argument("log_paths", metavar="LOG...", nargs=-1, required=True, type=click.Path(path_type=Path))
-@click.option("--vehicle", type=click.Path(path_type=Path), required=True,
-              help="Vehicle TOML, its rotors in the logs' motor order.")
-@click.option("--holdout", default="", help="Comma-separated LOG file names to hold out (scored, not fitted).")
+@click.argument("log_paths", metavar="LOG...", nargs=-1, required=True, type=PathArg())
+@click.option("--vehicle", type=PathArg(), required=True, help="Vehicle TOML, its rotors in the logs' motor order.")
+@click.option("--holdout", default=None, help="Comma-separated LOG file names to hold out (scored, not fitted).")
 @click.option("--base", "base_spec", default="generic", show_default=True,
               help="Start and constants not fitted: a named set or a parameter file.")
 @click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of --base).")
@@ -127,7 +126,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, mom
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
         raise InputError("LOG: two logs have the same file name; give each log once")
-    held = [h.strip() for h in holdout.split(",") if h.strip()]
+    held = parse_names("--holdout", holdout, what="log") or ()
     unknown = [h for h in held if Path(h).name not in names]
     if unknown:
         raise InputError(f"--holdout: {unknown[0]!r} is not one of the LOGs ({', '.join(names)})")
@@ -139,7 +138,10 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, mom
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    opts = _options(M, lift_model, multistart, fit_params, no_prior)
+    from ..identify.flight import AIRFRAME_NAMES
+
+    opts = _options(M, lift_model, multistart, fit_params, no_prior, base=base, base_label=base_label,
+                    extra_names=AIRFRAME_NAMES)
     res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
     cg = fitted_centre_of_mass(res)
@@ -233,14 +235,13 @@ def _hover_loads(params, veh, samples, air):
 
 
 @click.command("wrench")
-@click.argument("log_path", metavar="LOG", type=click.Path(path_type=Path))
-@click.option("--vehicle", type=click.Path(path_type=Path), required=True,
-              help="Vehicle TOML, its rotors in the log's motor order.")
+@click.argument("log_path", metavar="LOG", type=PathArg())
+@click.option("--vehicle", type=PathArg(), required=True, help="Vehicle TOML, its rotors in the log's motor order.")
 @click.option("--params", "params_spec", default=None,
               help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
                    "else 'generic'.")
 @click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of the parameter set).")
-@click.option("--out", type=click.Path(path_type=Path), required=True, help="CSV to write.")
+@click.option("--out", type=PathArg(), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
 def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
     """Predicted body force and moment at every sample of a flight log.

@@ -91,10 +91,11 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
     return param_names(options.lift_model)
 
 
-def _check_names(names, base: SectionParams, options: "FitOptions") -> tuple[str, ...]:
+def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) -> tuple[str, ...]:
     """``names`` as a tuple, refused unless each is a parameter of the base's model (the
     paper's: cl1, cl2, cd, alpha0; the cambered: CAMBERED_BOUNDS and any field given
-    bounds in ``options.bounds``), given once.
+    bounds in ``options.bounds``), a rotor option (ROTOR_BOUNDS) or one of ``extra`` (the
+    kind of fit's own terms, e.g. the airframe's in a flight fit), given once.
 
     Raises
     ------
@@ -114,6 +115,7 @@ def _check_names(names, base: SectionParams, options: "FitOptions") -> tuple[str
         model = "the cambered model"
     else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
         valid, model = tuple(BOUNDS), "the paper's model"
+    valid = (*valid, *ROTOR_BOUNDS, *extra)
     unknown = [n for n in names if n not in valid]
     if unknown:
         hint = " (body-lift terms: body_lift=True, --body-lift)" if any(n in BODY_BOUNDS for n in unknown) else ""

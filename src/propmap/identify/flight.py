@@ -38,8 +38,8 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _finish, _fit_with_continuation, _params_from,
-                  _with_prior)
+from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _finish, _fit_with_continuation,
+                  _params_from, _with_prior)
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
            "fitted_centre_of_mass", "shift_centre_of_mass", "flight_errors",
@@ -306,9 +306,11 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     from ..io.calibration import generic_params
 
     base = base or generic_params()
-    names = tuple(options.names) if options.names is not None else FLIGHT_FIT
-    if not isinstance(base, CamberedParams):
-        names = tuple(n for n in names if n not in ("cl_alpha",)) if options.names is None else names
+    if options.names is not None:
+        names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
+    else:
+        names = FLIGHT_FIT if isinstance(base, CamberedParams) else tuple(
+            n for n in FLIGHT_FIT if n not in ("cl_alpha", "alpha_L0_re"))
     if 3 * samples.n <= len(names):
         raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters")
     body0 = body or vehicle.body_drag or BodyDrag()
