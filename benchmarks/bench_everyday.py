@@ -79,7 +79,7 @@ def single_call(params, n=2000):
     nr = nd.y.size
     args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), nd.y, nd.w, nd.theta,
             nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.cospsi, model, pk,
-            _cambered_args(params, air), 0, prop.radius, False, np.empty((_kernel.N_OUT, 1)),
+            _cambered_args(params, air), 0, False, prop.radius, False, np.empty((_kernel.N_OUT, 1)),
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((4, 1), np.int64))
     total, kernel = [], []
     for _ in range(n):  # interleaved, so that drift of the machine's speed hits both alike

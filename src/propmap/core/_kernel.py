@@ -39,9 +39,9 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, cambered_annulus, inflow_gradients, inverse_sin_phi,
-                       make_cambered_element, make_element, make_loss_factor, make_prandtl, momentum_scale,
-                       momentum_thrust)
+from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, axial_mass_flow, cambered_annulus, inflow_gradients,
+                       inverse_sin_phi, make_cambered_element, make_element, make_loss_factor, make_prandtl,
+                       momentum_scale, momentum_thrust)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -70,6 +70,7 @@ _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
 _cambered_annulus = _jit_inline(cambered_annulus)
 _inflow_gradients = _jit_inline(inflow_gradients)
+_axial_mass_flow = _jit_inline(axial_mass_flow)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -84,12 +85,13 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
-              pk):
+              pk, emp):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
 
     ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
-    gy = k_y y/R, over the full circle of ``naz`` nodes.
+    gy = k_y y/R, over the full circle of ``naz`` nodes. ``emp``: the momentum side uses the
+    empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
     """
     acc = 0.0
     UP = Vc + v
@@ -121,6 +123,9 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss,
                 qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth,
                                       s0, g0, g1, g2, g3, g4, g5, sincos)
                 acc += qT
+    if emp:
+        w_ax = _axial_mass_flow(v, Vc, Vs)
+        return cfac * acc / naz - floss * mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
     return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vs, Vc)
 
 
@@ -161,7 +166,7 @@ _REFINE = 4
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz, model,
-                 pk, v, code, nev, multiple):
+                 pk, emp, v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
     The annuli are independent, so they are solved in lockstep: each sweep evaluates
@@ -215,7 +220,7 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
         for q in range(n_active):  # independent evaluations
             j = active[q]
             f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], cfac[j],
-                             mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk)
+                             mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
             nev[j] += 1
         m = 0
         for q in range(n_active):
@@ -236,6 +241,10 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                         # the loss-free estimate (F falls with v, so this still undershoots)
                         vm = _momentum_scale(fj, mfac[j] * _loss_factor(Vc + sgn[j] * vm, Om * y[j], ct[j], ch[j]),
                                              Vs, Vc)
+                    if emp and Vc < 0.0:
+                        # the empirical closure's root lies near the annulus' hover inflow (vortex
+                        # ring) or below it (windmill brake): a march sized by it brackets the one root
+                        vm = max(vm, np.sqrt(abs(fj) / mfac[j]))
                     h[j] = vm / MARCH_STEPS
                     xtol[j] = XTOL * vm
                     ftol[j] = FTOL * abs(fj)
@@ -388,7 +397,7 @@ N_RAD = 7  # v_i, dT, dD, dQ, dM_R, dY, dM_P
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 radius, radial, out, rad, counts):
+                 emp, radius, radial, out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
@@ -399,7 +408,8 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
     the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
     re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. ``inflow``: the inflow
-    model (_physics.INFLOW_*); with a linear model each point is solved twice: with the
+    model (_physics.INFLOW_*); ``emp``: the empirical momentum in descent (_physics.DESCENT_CODES);
+    with a linear model each point is solved twice: with the
     uniform inflow, whose mean inflow gives the wake skew angle and the gradients
     (_physics.inflow_gradients), then with the linear inflow over the full circle.
     ``radius``: R [m]. Outputs (packed, so that the argument list stays short enough for
@@ -442,7 +452,7 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
                 s2[j] = 0.0
                 s3[j] = 0.0
         solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy,
-                     naz, model, pk, v, code, nev, multiple)
+                     naz, model, pk, emp, v, code, nev, multiple)
         ne = 0
         for j in range(nr):
             ne += nev[j]
@@ -461,7 +471,7 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
                 gy[j] = ky * y[j] / radius
             naz = 2 * naz_half
             solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx,
-                         gy, naz, model, pk, v, code, nev, multiple)
+                         gy, naz, model, pk, emp, v, code, nev, multiple)
             for j in range(nr):
                 ne += nev[j]
         Ti = 0.0
@@ -520,17 +530,17 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                radius, radial, out, rad, counts):
+                emp, radius, radial, out, rad, counts):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
     _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 radius, radial, out, rad, counts)
+                 emp, radius, radial, out, rad, counts)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                       inflow, radius, radial, out, rad, counts):
+                       inflow, emp, radius, radial, out, rad, counts):
     """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
     _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 radius, radial, out, rad, counts)
+                 emp, radius, radial, out, rad, counts)

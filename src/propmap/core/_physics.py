@@ -252,6 +252,53 @@ def momentum_thrust(v, mom_fac, Vs, Vc):
     return mom_fac * v * np.sqrt(Vs * Vs + (Vc + v) * (Vc + v))
 
 
+# The empirical induced velocity of a rotor in axial descent through the vortex-ring and
+# turbulent-wake states: J. G. Leishman, Principles of Helicopter Aerodynamics, 2nd ed., 2006,
+# Ch. 2, a fit to the wind-tunnel measurements on four model rotors of W. Castles and R. B.
+# Gray, NACA TN 2474, 1951:  v/v_h = 1 + 1.125 k - 1.372 k^2 + 1.718 k^3 - 0.655 k^4,
+# k = -V_c / v_h in [0, 2]. propmap subtracts EMPIRICAL_SHIFT k (1.3% at k = 2) so that the
+# curve meets Glauert's windmill-brake branch (v/v_h = 1 at k = 2) as it meets hover at k = 0.
+EMPIRICAL_SHIFT = 0.0130
+EMPIRICAL_C1 = 1.125 - EMPIRICAL_SHIFT
+EMPIRICAL_C2 = -1.372
+EMPIRICAL_C3 = 1.718
+EMPIRICAL_C4 = -0.655
+#: Newton steps of the curve's inversion (converged to round-off from k = min(d/v, 2) in tests)
+EMPIRICAL_NEWTON = 8
+
+
+def axial_mass_flow(v, Vc, Vs):
+    """Axial velocity of the mass flow through an annulus, empirical in descent [m/s] (scalars).
+
+    Glauert's momentum (eq 10) carries the mass flow rho A W with W = sqrt(Vs^2 + (Vc + v)^2);
+    this returns its axial part. Outside descent, and in descent for v <= |Vc|/2 (the
+    windmill-brake branch, where momentum theory holds), it is Glauert's |Vc + v|. For
+    v > |Vc|/2 in descent (the vortex-ring and turbulent-wake states) the empirical curve
+    above replaces it: with d = -Vc, the curve's k solves v/d = f(k)/k (f(k)/k falls
+    monotonically from infinity at k = 0 to 1/2 at k = 2), the annulus' hover inflow is
+    v_h = d/k, and the mass-flow velocity that gives dT = 4 pi rho r v_h^2 is v_h^2 / v.
+    The curve was measured in axial descent; a vortex ring only forms while the in-plane
+    velocity cannot carry the wake away, so the empirical part fades with exp(-(Vs/v)^2)
+    (propmap's choice: half gone at Vs = 0.83 v, nearly all at Vs = 2 v) and Glauert's form
+    holds in forward flight. Continuous in v, Vc and Vs, and v sqrt(Vs^2 + W^2) grows with v
+    (checked on a grid of descent and in-plane speeds): one root per annulus from the
+    momentum side (docs/models.md, Descent).
+    """
+    d = -Vc
+    glauert = abs(Vc + v)
+    if d <= 0.0 or v <= 0.5 * d:
+        return glauert
+    r = v / d
+    k = min(1.0 / r, 2.0)
+    for _ in range(EMPIRICAL_NEWTON):
+        f = 1.0 + k * (EMPIRICAL_C1 + k * (EMPIRICAL_C2 + k * (EMPIRICAL_C3 + k * EMPIRICAL_C4)))
+        fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
+        k = min(max(k - (f - r * k) / (fp - r), 1e-12), 2.0)
+    vh = d / k
+    s = Vs / v
+    return glauert + (vh * vh / v - glauert) * np.exp(-s * s)
+
+
 def momentum_scale(B0, mom_fac, Vs, Vc):
     """Inflow scale v_m [m/s] used to size the root march.
 
@@ -269,6 +316,9 @@ INFLOW_UNIFORM = 0
 INFLOW_DREES = 1
 INFLOW_PITT_PETERS = 2
 INFLOW_CODES = {"uniform": INFLOW_UNIFORM, "drees": INFLOW_DREES, "pitt-peters": INFLOW_PITT_PETERS}
+# momentum in descent (``descent`` of the section records): Glauert's everywhere (the paper's),
+# or the empirical curve in the vortex-ring and turbulent-wake states (axial_mass_flow)
+DESCENT_CODES = {"glauert": 0, "empirical": 1}
 
 
 def inflow_gradients(mu, lam, model):

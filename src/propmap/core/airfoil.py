@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import asdict, dataclass, fields, replace
+from dataclasses import asdict, dataclass, field, fields, replace
 
 import numpy as np
 
@@ -43,6 +43,8 @@ __all__ = [
 LIFT_MODELS = ("sigmoid", "sincos")
 #: inflow models (``RotorOptions.inflow``; _physics.inflow_gradients)
 INFLOW_MODELS = ("uniform", "drees", "pitt-peters")
+#: momentum in descent (``RotorOptions.descent``; _physics.axial_mass_flow)
+DESCENT_MODELS = ("glauert", "empirical")
 #: valid ranges of the rotor options (SI)
 FLAP_COMPLIANCE_MAX = 1e3  # [rad/(N m)]
 COLLECTIVE_MAX = math.radians(30.0)  # [rad]
@@ -127,20 +129,32 @@ class RotorOptions:
     collective : float
         Blade-angle offset added to theta(r) [rad], in [-30, 30] deg (a geometry whose blade
         angles are uncertain, or a collective setting). Default 0.
+    descent : {"glauert", "empirical"}
+        Momentum in descent. ``"glauert"``: the paper's Glauert momentum in every state (each
+        annulus may switch between the vortex-ring and windmill-brake branches on its own);
+        the default of the paper's section model, which stays exactly the paper's.
+        ``"empirical"``: in the vortex-ring and turbulent-wake states the measured induced
+        velocity of rotors in axial descent (Leishman 2006, Ch. 2, fitted to Castles & Gray,
+        NACA TN 2474, 1951), written as an axial mass flow that fades into Glauert's with the
+        in-plane speed (_physics.axial_mass_flow; docs/models.md); climb and hover unchanged;
+        the default of the cambered model.
 
     Raises
     ------
     ValueError
-        An unknown inflow model or a value outside its range (the message names it).
+        An unknown inflow or descent model or a value outside its range (the message names it).
     """
 
     inflow: str = "uniform"
     flap_compliance: float = 0.0
     collective: float = 0.0
+    descent: str = "empirical"
 
     def _check_rotor_options(self) -> None:
         if self.inflow not in INFLOW_MODELS:
             raise ValueError(f"inflow must be one of {', '.join(INFLOW_MODELS)}, got {self.inflow!r}")
+        if self.descent not in DESCENT_MODELS:
+            raise ValueError(f"descent must be one of {', '.join(DESCENT_MODELS)}, got {self.descent!r}")
         object.__setattr__(self, "flap_compliance",
                            _check_finite("flap_compliance", self.flap_compliance, low=0.0, high=FLAP_COMPLIANCE_MAX))
         object.__setattr__(self, "collective", _check_finite("collective", self.collective, low=-COLLECTIVE_MAX,
@@ -198,6 +212,9 @@ class AirfoilParams(RotorOptions):
     lift_model: str = "sigmoid"
     tip_loss: bool = False
     hub_loss: bool = False
+
+    #: the paper's Glauert momentum in descent too (RotorOptions.descent), so the model stays the paper's
+    descent: str = field(default="glauert", kw_only=True)
 
     section_model = "gill2017"
 

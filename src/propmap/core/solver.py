@@ -18,6 +18,7 @@ from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
+from .states import STATES, descent_state
 
 __all__ = [
     "Discretization",
@@ -221,8 +222,18 @@ class RotorLoads:
     converged : ndarray of bool
         Every annulus root converged.
     vortex_ring : ndarray of bool
-        Some annulus is in vortex-ring state (V cos b < 0 < V cos b + v_i):
-        momentum theory is not predictive there.
+        The rotor is in the vortex-ring state (``state == 1``, core/states.py: descent rates
+        0.3-1.5 v_h at in-plane speeds below 0.9 v_h): the wake recirculates through the
+        disk and the loads fluctuate; the mean loads come from the empirical descent
+        momentum (``descent = "empirical"``) or, with Glauert's, are not predictive.
+    state : ndarray of int
+        Working state, codes into ``propmap.core.states.STATES``: 0 normal working, 1 vortex
+        ring, 2 turbulent wake, 3 windmill brake (:attr:`state_name` gives the names).
+    v_h : ndarray
+        Hover induced velocity at the thrust made, sqrt(T / (2 rho pi R^2)) [m/s] (0 where
+        T <= 0).
+    descent_ratio : ndarray
+        k = -V cos(beta) / v_h [-] (lambda_2 in vertical descent; NaN where T <= 0).
     multiple_roots : ndarray of bool
         Some annulus has a further root of eq (11) near the selected one.
     reverse_flow : ndarray of bool
@@ -266,9 +277,23 @@ class RotorLoads:
     reverse_flow: np.ndarray
     reverse_flow_radius: np.ndarray
     inflow_extrapolated: np.ndarray
+    state: np.ndarray
+    v_h: np.ndarray
+    descent_ratio: np.ndarray
     n_evaluations: np.ndarray
     rho: float
     diameter: float
+
+    @property
+    def state_name(self) -> np.ndarray:
+        """The working state's name at every point (array of str, shape S)."""
+        return np.asarray(STATES, dtype=object)[np.asarray(self.state)]
+
+    @property
+    def inflow_ratio(self) -> np.ndarray:
+        """v_i,mean / v_h [-], shape S (NaN where T <= 0)."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(self.v_h > 0, self.v_i_mean / np.where(self.v_h > 0, self.v_h, 1.0), np.nan)
 
     @property
     def power(self) -> np.ndarray:
@@ -464,8 +489,8 @@ def rotor_loads(
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, _cambered_args(params, air), inflow, propeller.radius, bool(radial), out,
-          rad, counts)
+          nd.sinpsi, nd.cospsi, model, pk, _cambered_args(params, air), inflow,
+          bool(ph.DESCENT_CODES[params.descent]), propeller.radius, bool(radial), out, rad, counts)
     converged = status == 0
     if on_failure == "raise" and not converged.all():
         i = int(np.argmax(~converged))
@@ -484,6 +509,7 @@ def rotor_loads(
         b1c = b1s = np.zeros(n)
     rfr = Vs / om1
     extrapolated = (Vc + vbar < 0) & (Vs != 0) if inflow != ph.INFLOW_UNIFORM else np.zeros(n, dtype=bool)
+    state, v_h, k_desc, _ = descent_state(T, V1, b1, vbar, air.rho, propeller.radius)
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
@@ -497,8 +523,9 @@ def rotor_loads(
         v_i_mean=s(vbar), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,
         v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3], dMR_dr=radial_out[4],
         dY_dr=radial_out[5], dMP_dr=radial_out[6],
-        converged=s(converged), vortex_ring=s(nvrs > 0), multiple_roots=s(nmulti > 0),
+        converged=s(converged), vortex_ring=s(state == 1), multiple_roots=s(nmulti > 0),
         reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
+        state=s(state), v_h=s(v_h), descent_ratio=s(k_desc),
         n_evaluations=s(nev),
         rho=air.rho, diameter=propeller.diameter,
     )

@@ -44,6 +44,7 @@ Either model also takes the rotor options (``RotorOptions``; docs/models.md), wh
 are the paper's rigid blades in an azimuth-independent inflow::
 
     inflow = "uniform"        # or "drees", "pitt-peters" (linear inflow models)
+    descent = "glauert"       # or "empirical" (measured inflow in the vortex-ring state)
     flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
 
@@ -77,7 +78,7 @@ from typing import NamedTuple
 
 import tomli_w
 
-from ..core.airfoil import INFLOW_MODELS, LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.airfoil import DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
 from .atomic import atomic_write
 from .readers import show_path
 from .toml_file import load_toml
@@ -171,6 +172,8 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
             raise ValueError(f"{where}: lift_model must be one of {', '.join(LIFT_MODELS)}, got {_short(data[key])}")
         elif key == "inflow" and data[key] not in INFLOW_MODELS:
             raise ValueError(f"{where}: inflow must be one of {', '.join(INFLOW_MODELS)}, got {_short(data[key])}")
+        elif key == "descent" and data[key] not in DESCENT_MODELS:
+            raise ValueError(f"{where}: descent must be one of {', '.join(DESCENT_MODELS)}, got {_short(data[key])}")
     kw = {}
     for key, name in keys.items():
         if key not in data:

@@ -1,0 +1,68 @@
+"""Working states in descent (core/states.py) and the vortex-ring flag: the band's limits,
+ordinary forward flight with a slight descent not flagged, the states of an axial descent."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.core.states import STATES, VRS_BAND, descent_state
+
+RHO, R = 1.225, 0.1
+
+
+def _at(k, m, v_mean=None):
+    """descent_state at descent ratio k and in-plane ratio m for a rotor with v_h = 5 m/s; the
+    mean inflow on the empirical curve v/v_h = 1 + 1.125 k - 1.372 k^2 + 1.718 k^3 - 0.655 k^4
+    (k in [0, 2]) unless given."""
+    T = 2 * RHO * math.pi * R**2 * 25.0
+    vz, vx = -5.0 * k, 5.0 * m
+    V, b = math.hypot(vz, vx), math.atan2(vx, vz)
+    kk = min(max(k, 0.0), 2.0)
+    curve = 5.0 * (1 + 1.125 * kk - 1.372 * kk**2 + 1.718 * kk**3 - 0.655 * kk**4)
+    return descent_state(np.array(T), np.array(V), np.array(b), np.array(curve if v_mean is None else v_mean), RHO, R)
+
+
+@pytest.mark.parametrize("k, m, state", [
+    (0.0, 0.0, "normal working"), (0.25, 0.0, "normal working"), (0.35, 0.0, "vortex ring"),
+    (1.45, 0.0, "vortex ring"), (0.9, 0.85, "vortex ring"), (0.9, 0.95, "normal working"),
+    (2.5, 0.0, "windmill brake"), (-1.0, 0.0, "normal working"), (0.1, 3.0, "normal working"),
+])
+def test_band_limits(k, m, state):
+    """Descent rates 0.3-1.5 v_h in axial descent, closing at in-plane 0.9 v_h."""
+    code, vh, kk, mm = _at(k, m)
+    assert STATES[int(code)] == state
+    assert float(vh) == pytest.approx(5.0) and float(kk) == pytest.approx(k) and float(mm) == pytest.approx(m)
+    assert VRS_BAND == {"k_min": 0.3, "k_max": 1.5, "m_max": 0.9}
+
+
+def test_turbulent_wake_is_upward_flow_through_the_disk_short_of_the_windmill_brake():
+    assert STATES[int(_at(1.8, 0.0, v_mean=8.0)[0])] == "turbulent wake"  # V_z + v = -9 + 8 < 0
+    assert STATES[int(_at(1.8, 0.0, v_mean=10.0)[0])] == "normal working"  # beyond the band, flow still down
+
+
+def test_forward_flight_with_slight_descent_is_not_a_vortex_ring():
+    """The quadrotor case of the issue: 20 m/s at 92.5 deg incidence, and 5 m/s forward with
+    0.3 m/s down, are ordinary flight."""
+    prop = pm.load_propeller("apce_8x6")
+    g = pm.generic_params()
+    r = pm.rotor_loads(prop, g, 8000 * math.pi / 30, [20.0, math.hypot(5.0, 0.3)],
+                       [math.radians(92.5), math.atan2(5.0, -0.3)])
+    assert not r.vortex_ring.any()
+    assert list(r.state_name) == ["normal working", "normal working"]
+
+
+def test_states_through_an_axial_descent():
+    """A propeller at fixed speed descending axially passes normal working, vortex ring and
+    the windmill brake in order; v_i/v_h and the descent ratio are reported."""
+    prop = pm.load_propeller("apce_8x6")
+    g = pm.generic_params()
+    V = np.linspace(0.0, 20.0, 81)
+    r = pm.rotor_loads(prop, g, 6000 * math.pi / 30, V, math.pi)
+    names = list(r.state_name)
+    assert names[0] == "normal working" and "vortex ring" in names and names[-1] == "windmill brake"
+    first = {n: names.index(n) for n in set(names)}
+    assert first["normal working"] < first["vortex ring"] < first["windmill brake"]
+    assert np.all(np.diff(r.descent_ratio) > 0)
+    assert r.inflow_ratio[0] == pytest.approx(float(r.v_i_mean[0] / r.v_h[0]))
