@@ -16,7 +16,7 @@ import numpy as np
 
 from ._pchip import Pchip
 
-__all__ = ["Propeller"]
+__all__ = ["Propeller", "rotor_like"]
 
 INCH = 0.0254  # [m]
 
@@ -181,3 +181,33 @@ class Propeller:
     def __repr__(self) -> str:
         return (f"Propeller(name={self.name!r}, radius={self.radius:.4g} m, n_blades={self.n_blades}, "
                 f"stations={len(self.r)}, r_hub={self.r_hub / self.radius:.3f} R)")
+
+
+#: a blade angle at 0.75 R below this looks like a rotor's (every catalogue propeller has >= 7.4 deg)
+ROTOR_BETA75_MAX = math.radians(5.0)
+#: a twist from 0.3 R to the tip below this looks like a rotor's (catalogue propellers: >= 9.1 deg)
+ROTOR_TWIST_MAX = math.radians(6.0)
+
+
+def rotor_like(propeller: Propeller) -> str | None:
+    """Why ``propeller``'s blade angles look like a helicopter-style rotor's, or None.
+
+    A propeller's blades are strongly twisted to a pitch (the 108 UIUC catalogue
+    propellers: blade angle at 0.75 R >= 7.4 deg, twist from 0.3 R to the tip >= 9.1 deg);
+    a rotor's are nearly untwisted and set by a collective. The test: blade angle at
+    0.75 R below 5 deg, or twist from 0.3 R (or the first station) to the tip below
+    6 deg. Used to warn when a rotor is run with the propeller-camber generic set.
+
+    Returns
+    -------
+    str or None
+        A sentence naming the angles, or None for a propeller-like blade.
+    """
+    R = propeller.radius
+    root = max(0.3 * R, propeller.r_hub)
+    b75, broot, btip = (float(propeller.theta_at(np.array([y]))[0]) for y in (0.75 * R, root, R))
+    if b75 < ROTOR_BETA75_MAX or broot - btip < ROTOR_TWIST_MAX:
+        return (f"blade angle {math.degrees(b75):.1f} deg at 0.75 R and twist {math.degrees(broot - btip):.1f} deg "
+                f"from {root / R:.2f} R to the tip: a rotor's blade, not a propeller's")
+    return None
+

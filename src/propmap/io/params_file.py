@@ -48,6 +48,11 @@ are the paper's rigid blades in an azimuth-independent inflow::
     flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
 
+A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
+``section = "naca0015"`` takes every key of that section preset (:func:`section_preset`;
+symmetric NACA sections fitted to Sheldahl & Klimas, Sandia SAND80-2114, 1981), and the
+file's other keys override it. ``--params section:naca0015`` names the preset alone.
+
 ``rho``, ``mu`` and ``speed_of_sound`` (the air) and the free text keys ``comment`` and
 ``source``. A flight fit (``propmap fit flight``) adds the airframe drag it identified, which
 ``propmap wrench`` uses and the single-rotor commands ignore::
@@ -84,12 +89,15 @@ from .readers import show_path
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
-           "params_to_dict", "params_from_dict", "body_from_dict", "named_sets", "SECTION_MODELS"]
+           "params_to_dict", "params_from_dict", "body_from_dict", "named_sets", "section_preset", "section_presets",
+           "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
 REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
 AIR_KEYS = ("rho", "mu", "speed_of_sound")
-TEXT_KEYS = ("comment", "source", "section_model")
+TEXT_KEYS = ("comment", "source", "section_model", "section")
+#: prefix of the named section presets in ``--params`` (``section:naca0015``)
+SECTION_PREFIX = "section:"
 BODY_TABLE = "body"
 #: keys holding an angle in degrees in files, and the field they set [rad]
 DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re",
@@ -146,6 +154,16 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
     """
     if not isinstance(data, dict):
         raise ValueError(f"{where}: expected a table of keys, got {_short(data)}")
+    if "section" in data:  # a named section preset, the file's keys on top
+        name = data["section"]
+        presets = _section_tables()
+        if not isinstance(name, str) or name not in presets:
+            raise ValueError(f"{where}: section must be one of {', '.join(presets)}, got {_short(name)}")
+        if data.get("section_model", "cambered") != "cambered":
+            raise ValueError(f"{where}: section = {name!r} is a cambered-model preset; section_model must be "
+                             f"'cambered', got {_short(data.get('section_model'))}")
+        base = {k: v for k, v in presets[name].items() if k not in ("source", "comment")}
+        data = {**base, **{k: v for k, v in data.items() if k != "section"}}
     model = data.get("section_model", "gill2017")
     if not isinstance(model, str) or model not in SECTION_MODELS:
         raise ValueError(f"{where}: section_model must be one of {', '.join(SECTION_MODELS)}, got {_short(model)}")
@@ -371,15 +389,70 @@ def named_sets() -> tuple[str, ...]:
     -------
     tuple of str
     """
-    return (*PRESETS, "generic", "calibrated:<catalogue name>")
+    return (*PRESETS, "generic", "calibrated:<catalogue name>", *(SECTION_PREFIX + k for k in _section_tables()))
+
+
+_SECTIONS: dict | None = None
+
+
+def _section_tables() -> dict:
+    """The shipped section presets, file form (data/sections/presets.toml), read once."""
+    global _SECTIONS
+    if _SECTIONS is None:
+        import tomllib
+        from importlib.resources import files
+
+        _SECTIONS = tomllib.loads(files("propmap").joinpath("data/sections/presets.toml").read_text("utf-8"))
+    return _SECTIONS
+
+
+def section_presets() -> dict[str, str]:
+    """The named section presets and their sources.
+
+    Returns
+    -------
+    dict
+        name -> source (the published data and how the parameters were derived).
+    """
+    return {k: v["source"] for k, v in _section_tables().items()}
+
+
+def section_preset(name: str) -> CamberedParams:
+    """A named section's cambered-polar parameters (symmetric NACA sections).
+
+    Fitted by tools/fit_section_presets.py to the tables of Sheldahl & Klimas, "Aerodynamic
+    Characteristics of Seven Symmetrical Airfoil Sections Through 180-Degree Angle of
+    Attack", Sandia SAND80-2114 (1981), at chord Reynolds numbers 1.6e5-1e6 (reference
+    3.6e5); zero-lift angle 0, tip loss on, empirical descent inflow. The fit's errors are
+    in the preset's ``comment`` (docs/models.md).
+
+    Parameters
+    ----------
+    name : str
+        ``naca0015`` or ``naca0018`` (:func:`section_presets` lists them).
+
+    Returns
+    -------
+    CamberedParams
+
+    Raises
+    ------
+    KeyError
+        An unknown name; the message lists the valid ones.
+    """
+    tables = _section_tables()
+    if name not in tables:
+        raise KeyError(f"unknown section preset {name!r}; valid: {', '.join(tables)}")
+    return params_from_dict({k: v for k, v in tables[name].items()}, where=f"section preset {name}")[0]
 
 
 def resolve_params(spec: str) -> tuple[SectionParams, Air]:
     """A named parameter set or a parameter file path.
 
     Named sets: the paper's Table I (``gill2017-soft``, ``gill2017-stiff``,
-    ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set, and
-    ``calibrated:<name>``, a catalogue propeller's own calibrated set.
+    ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set,
+    ``calibrated:<name>``, a catalogue propeller's own calibrated set, and
+    ``section:<name>``, a symmetric section preset (:func:`section_preset`).
 
     Raises
     ------
@@ -395,6 +468,8 @@ def resolve_params(spec: str) -> tuple[SectionParams, Air]:
     if spec == calibration.GENERIC:
         g = calibration.calibration()["generic"]
         return g.params, g.air
+    if spec.startswith(SECTION_PREFIX):
+        return section_preset(spec[len(SECTION_PREFIX):]), Air()
     if spec.startswith("calibrated:"):
         c = calibration.calibrated(spec.split(":", 1)[1])
         if c is None:

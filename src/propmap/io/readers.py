@@ -402,8 +402,11 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
     Warns
     -----
     UserWarning
-        The diameter was read in millimetres from the name; or every blade angle is below
-        1.6 in magnitude (the column looks like radians; it is read as degrees).
+        The diameter was read in millimetres from the name; or the blade angles look like
+        radians (every one below 1.6, and read as radians they make a near-constant pitch
+        r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
+        small, nearly untwisted angles in degrees (a collective given separately) do not
+        warn.
     """
     text = _read_text(path, GeometryFileError)
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
@@ -446,7 +449,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
         if not (math.isfinite(pitch_in) and 0 < pitch_in <= 10 * NAME_DIAMETER_RANGE_IN[1]):
             pitch_in = None  # catalogue information only: an implausible one is dropped
-    if np.all(np.abs(data[:, 2]) < 1.6):
+    if _looks_like_radians(data[:, 0], data[:, 2]):
         warnings.warn(f"{where}: every blade angle beta is below 1.6 in magnitude: the column looks like radians, "
                       "but UIUC geometry files give degrees (read as degrees)", UserWarning, stacklevel=3)
     R = 0.5 * float(diameter_in) * INCH
@@ -459,6 +462,23 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
                          pitch=None if pitch_in is None else pitch_in * INCH, source=src)
     except ValueError as exc:
         raise GeometryFileError(f"{where}: {exc}") from None
+
+
+#: the coefficient of variation of r tan(beta) over 0.3-1 R below which radian-valued blade
+#: angles make a propeller's near-constant pitch (the 108 catalogue propellers: <= 0.185;
+#: an untwisted rotor: 0.32)
+RADIANS_PITCH_CV = 0.25
+
+
+def _looks_like_radians(r_over_R, beta) -> bool:
+    """True when the blade-angle column is plausibly radians (see _uiuc_geometry's warning)."""
+    if not np.all(np.abs(beta) < 1.6):
+        return False
+    outer = r_over_R >= 0.3
+    if outer.sum() < 2 or np.any(beta[outer] <= 0):
+        return False
+    q = r_over_R[outer] * np.tan(beta[outer])
+    return bool(np.std(q) < RADIANS_PITCH_CV * np.mean(q))
 
 
 _PE0_RADIUS_IN = (0.25, 50.0)

@@ -1,0 +1,124 @@
+"""Derive propmap's symmetric-section presets from published section data.
+
+Fits the cambered polar (propmap.CamberedParams: lift slope, stall limit, blend sharpness,
+profile drag, drag curvature and their Reynolds exponents; zero-lift angle 0 and
+cl_min = -cl_max for a symmetric section) to Sheldahl & Klimas (Sandia SAND80-2114, 1981),
+tables of NACA 0015 and NACA 0018 at chord Reynolds numbers 1.6e5-1e6, angles of attack
+0-20 deg (src/propmap/data/sections/sheldahl_klimas_1981.csv), by least squares on C_L
+(0-20 deg) and C_D (attached flow, below the tabulated drag break), and writes
+src/propmap/data/sections/presets.toml with the fit's rms errors.
+
+    .venv/bin/python tools/fit_section_presets.py
+
+The reference Reynolds number is 3.6e5 (model rotors of 0.6-0.9 m radius; a small
+propeller's sections sit near 1e5, where the presets are extrapolated in Re).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import least_squares
+
+import propmap as pm
+from propmap.core.airfoil import drag_coefficient, lift_coefficient
+from propmap.io.atomic import atomic_write
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "src/propmap/data/sections/sheldahl_klimas_1981.csv"
+OUT = ROOT / "src/propmap/data/sections/presets.toml"
+RE_REF = 3.6e5
+CD90 = 1.80  # the report's drag at 90 deg (every Reynolds number)
+SOURCE = ("Sheldahl & Klimas, Sandia SAND80-2114 (1981), NACA {name} tables at Re 1.6e5-1e6, 0-20 deg; "
+          "fitted by tools/fit_section_presets.py")
+#: weight of the attached-flow drag errors against the lift errors in the stall fit
+DRAG_WEIGHT = 10.0
+NAMES = ("cl_alpha", "cl_max", "M", "cd_min", "cd2", "re_exp", "re_exp_lift", "re_exp_stall")
+
+
+def params_from(x) -> pm.CamberedParams:
+    d = dict(zip(NAMES, x))
+    return pm.CamberedParams(alpha_L0=0.0, cl_min=-d["cl_max"], cl_cdmin=0.0, cd90=CD90, re_ref=RE_REF,
+                             tip_loss=True, compressibility=True, **d)
+
+
+def fit(table: pd.DataFrame):
+    """Staged fit: the attached-flow constants by linear regression, then the stall.
+
+    1. ``cl_alpha``: slope of C_L over 0-4 deg at the reference Reynolds number (the
+       tables give the same slope at every Re, so ``re_exp_lift`` = 0);
+       ``cd_min`` and ``re_exp``: C_D at 0 deg against Re (log-log line through the
+       reference); ``cd2``: (C_D - C_D(0)) against C_L^2 over 0-8 deg, all Reynolds numbers.
+    2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg and on
+       C_D in attached flow (below the tabulated drag break), the rest held.
+    """
+    a = np.radians(table.alpha_deg.to_numpy())
+    re = table.reynolds.to_numpy(float)
+    cl, cd = table.cl.to_numpy(), table.cd.to_numpy()
+    ref = np.isclose(re, RE_REF)
+    lin = ref & (a <= np.radians(4.0)) & (a > 0)
+    cl_alpha = float(np.sum(a[lin] * cl[lin]) / np.sum(a[lin] ** 2))
+    zero = a == 0
+    re_exp, ln_cd = np.polyfit(np.log(re[zero] / RE_REF), np.log(cd[zero]), 1)
+    cd_min = float(np.exp(ln_cd))
+    low = (a > 0) & (a <= np.radians(8.0))
+    cd0_at = cd_min * (re / RE_REF) ** re_exp
+    cd2 = float(np.sum(cl[low] ** 2 * (cd[low] - cd0_at[low])) / np.sum(cl[low] ** 4))
+    # attached drag: below the tabulated break (the first jump of cd by > 2x between rows)
+    attached = np.ones(a.size, bool)
+    for r in np.unique(re):
+        k = np.flatnonzero(re == r)
+        jump = np.flatnonzero(cd[k][1:] > 2 * cd[k][:-1])
+        if jump.size:
+            attached[k[jump[0] + 1:]] = False
+    fixed = dict(cl_alpha=cl_alpha, cd_min=cd_min, cd2=cd2, re_exp=float(re_exp), re_exp_lift=0.0)
+
+    def make(y):
+        return params_from([fixed["cl_alpha"], y[0], y[1], fixed["cd_min"], fixed["cd2"], fixed["re_exp"],
+                            0.0, y[2]])
+
+    def residual(y):
+        p = make(y)
+        return np.concatenate([lift_coefficient(a, p, re) - cl,
+                               DRAG_WEIGHT * (drag_coefficient(a[attached], re[attached], p) - cd[attached])])
+
+    res = least_squares(residual, [1.1, 60.0, 0.15], bounds=([0.5, 5.0, -0.5], [2.5, 500.0, 0.5]),
+                        x_scale=[0.1, 10.0, 0.1])
+    p = make(res.x)
+    e_cl = lift_coefficient(a, p, re) - cl
+    e_cd = drag_coefficient(a[attached], re[attached], p) - cd[attached]
+    pre = a <= np.radians(8.0)
+    return p, {"cl_rms": float(np.sqrt(np.mean(e_cl**2))),
+               "cl_rms_0_8deg": float(np.sqrt(np.mean(e_cl[pre]**2))),
+               "cd_rms_attached": float(np.sqrt(np.mean(e_cd**2))),
+               "cd_rms_attached_relative": float(np.sqrt(np.mean((e_cd / cd[attached])**2))),
+               "cd_rms_0_8deg_relative": float(np.sqrt(np.mean((e_cd / cd[attached])[pre[attached]]**2))),
+               "points": int(a.size)}
+
+
+def main() -> None:
+    import tomli_w
+
+    data = pd.read_csv(DATA, comment="#")
+    out = {}
+    for section, table in data.groupby("section"):
+        key = section.lower().replace(" ", "")
+        p, err = fit(table)
+        d = {k: float(getattr(p, k)) for k in NAMES}
+        d.update(alpha_L0_deg=0.0, cl_min=-d["cl_max"], cl_cdmin=0.0, cd90=CD90, re_ref=RE_REF)
+        out[key] = {"section_model": "cambered", **{k: round(v, 6) for k, v in d.items()},
+                    "compressibility": True, "tip_loss": True, "descent": "empirical",
+                    "source": SOURCE.format(name=section.split()[-1]),
+                    "comment": "fit errors against the tables: " + ", ".join(f"{k} {v:.4g}" for k, v in err.items())}
+        print(key, {k: round(v, 4) for k, v in d.items()}, err)
+    with atomic_write(OUT, "wb") as fh:
+        fh.write(("# Symmetric-section presets (propmap --params section:NAME, or section = \"NAME\" in a\n"
+                  "# parameter file); written by tools/fit_section_presets.py, do not edit by hand.\n").encode())
+        tomli_w.dump(out, fh)
+
+
+if __name__ == "__main__":
+    main()
