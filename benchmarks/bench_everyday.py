@@ -77,7 +77,7 @@ def single_call(params, n=2000):
     nd = _nodes(prop, d.n_radial, d.n_azimuth, air, params)
     model, pk = _model_constants(params)
     nr = nd.y.size
-    args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), nd.y, nd.w, nd.theta,
+    args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), np.zeros(1), nd.y, nd.w, nd.theta,
             nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.cospsi, model, pk,
             _cambered_args(params, air), 0, False, prop.radius, False, np.empty((_kernel.N_OUT, 1)),
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((4, 1), np.int64))

@@ -26,6 +26,9 @@ _EXPORTS = {
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
     "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
     "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle",
+    "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim",
+    "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.params_file",
+    "rotor_like": "core.geometry",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

@@ -132,7 +132,8 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
 
 
 PARAMS_HELP = ("Parameter set: a parameter TOML file, 'generic' (cambered, fitted to the whole catalogue), "
-               "'calibrated:NAME' (a catalogue propeller's own fit) or the paper's Table I "
+               "'calibrated:NAME' (a catalogue propeller's own fit), 'section:NAME' (a symmetric rotor "
+               "section: naca0015|naca0018) or the paper's Table I "
                "(gill2017-soft|gill2017-stiff|gill2017-apc). Default: PROP's calibrated set if it has one, "
                "else 'generic'.")
 
@@ -164,6 +165,20 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     except OSError as exc:
         raise InputError(f"{option}: {_short(spec)}: {exc.strerror or exc}") from None
     return params, air, spec
+
+
+def check_section_match(propeller, label: str) -> None:
+    """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
+    which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
+    its hover thrust is far too high); the warning names the section presets."""
+    from ..core.geometry import rotor_like
+    from ..io.params_file import section_presets
+
+    why = rotor_like(propeller)
+    if why and label == "generic":
+        warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "
+             f"for a symmetric-section rotor give --params section:NAME ({', '.join(section_presets())}) or a "
+             "parameter file fitted to its data")
 
 
 def _short(text, n: int = 80) -> str:

@@ -6,8 +6,8 @@ import math
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, check_outputs, echo_json, load_params, load_prop,
-                      with_prop_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, echo_json, load_params,
+                      load_prop, with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo": ".sdf", "gill2019": ".json"}
 KEYS = {"rpm": "rpm", "airspeed": "airspeed", "incidence_deg": "incidence_deg", "incidence-deg": "incidence_deg"}
@@ -80,6 +80,7 @@ def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_js
     check_outputs([("--out", out), ("--out (report)", out.with_name(out.name + ".json"))], [params_spec, prop])
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
+    check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)

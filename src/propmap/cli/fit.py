@@ -295,7 +295,8 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
 
         model = {}
         for name, p in (("fitted", res.params), (base_label, base)):
-            r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag")
+            r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                            collective=data.collective)
             model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
         held_mask = np.isin(data.group, held)
         if held:

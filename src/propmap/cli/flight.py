@@ -182,8 +182,13 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, mom
         + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
     ht = report["hover_torque"]
     if ht:
-        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s: model {ht['torque_model']:.4f} N m, measured "
-                    f"from the yaw channel {ht['torque_measured']:.4f} N m (ratio {ht['ratio']:.2f})")
+        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
+                    f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
+                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
+        if "yaw_r" in ht:
+            text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
+                        f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
+                                                 if abs(ht["yaw_r"]) < 0.5 else ""))
     if cross_validate:
         cv = report["cross_validation"]
         text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "

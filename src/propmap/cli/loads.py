@@ -9,10 +9,25 @@ from pathlib import Path
 import click
 
 from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
-                      echo_json, load_params, load_prop, warn, with_prop_options)
+                      check_section_match, echo_json, load_params, load_prop, warn, with_prop_options)
 
-OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "converged", "flags")
+#: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
+OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
+               "converged", "flags")
+NUMERIC_KEYS = OUTPUT_KEYS[:7]
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
+#: optional input column: the blade-angle offset of a variable-pitch rotor [deg]
+COLLECTIVE_COLUMN = "collective_deg"
+COLLECTIVE_DEG_MAX = 45.0
+#: what the flags mean (printed with a single point, and in docs/cli.md)
+FLAG_MEANINGS = {
+    "not_converged": "the inflow solve failed at this point: its loads are NaN",
+    "vortex_ring": "inside the vortex-ring band of descent rate and in-plane speed (thrust unsteady there; "
+                   "the loads are the empirical mean)",
+    "multiple_roots": "an annulus had several inflow roots; the selection rule of docs/solver.md picked one",
+    "reverse_flow": "part of the blade root sees the air from behind (V sin(beta) > Omega r_hub)",
+    "inflow_extrapolated": "the linear inflow model was used beyond its validity (net upflow through the disk)",
+}
 CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused
 
@@ -97,8 +112,8 @@ def _parse_error(path: Path, exc: Exception) -> InputError:
 
 
 def _chunks(path: Path, chunksize: int):
-    """Chunks of the points CSV: the cells as text, and rpm, airspeed, incidence_deg as
-    checked floats.
+    """Chunks of the points CSV: the cells as text, and rpm, airspeed, incidence_deg (and
+    collective_deg where the file has it) as checked floats.
 
     Yields (DataFrame of the text as read, first line number, dict of the three float
     arrays); blank lines are dropped. Raises InputError
@@ -112,8 +127,9 @@ def _chunks(path: Path, chunksize: int):
 
     reader, names = _points_reader(path, chunksize)
     lower = [n.lower() for n in names]
-    cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS}
-    limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0)}
+    cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in lower}
+    limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
+              COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX, COLLECTIVE_DEG_MAX)}
     line = 2
     rows = 0
     try:
@@ -148,23 +164,32 @@ def _chunks(path: Path, chunksize: int):
 
 
 def _flag_strings(r):
-    """Per-point ';'-joined flag names, as a pandas Categorical (16 combinations at most)."""
+    """Per-point ';'-joined flag names, as a pandas Categorical (32 combinations at most)."""
     import numpy as np
     import pandas as pd
 
-    keys = ("not_converged", "vortex_ring", "multiple_roots", "reverse_flow")
-    bits = np.stack([~r.converged, r.vortex_ring, r.multiple_roots, r.reverse_flow]).astype(np.int64)
-    code = (bits * (1 << np.arange(4))[:, None]).sum(axis=0)
-    labels = [";".join(k for b, k in enumerate(keys) if m >> b & 1) for m in range(16)]
+    keys = tuple(FLAG_MEANINGS)
+    bits = np.stack([~r.converged, r.vortex_ring, r.multiple_roots, r.reverse_flow,
+                     r.inflow_extrapolated]).astype(np.int64)
+    code = (bits * (1 << np.arange(len(keys)))[:, None]).sum(axis=0)
+    labels = [";".join(k for b, k in enumerate(keys) if m >> b & 1) for m in range(1 << len(keys))]
     return pd.Categorical.from_codes(code, categories=labels)
 
 
-def solve_points(prop, params, air, rpm, airspeed, incidence_deg):
-    """Loads at every point (arrays of rpm, airspeed [m/s], incidence [deg]).
+def _descent_outputs(r) -> dict:
+    """v_i_over_v_h (mean induced inflow over the hover induced velocity at the thrust made),
+    lambda2 (descent rate over v_h, positive descending) and the working state's name; the
+    ratios are NaN (an empty CSV cell) where T <= 0, which has no hover induced velocity."""
+    return {"v_i_over_v_h": r.inflow_ratio, "lambda2": r.descent_ratio, "state": r.state_name}
+
+
+def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg=None):
+    """Loads at every point (arrays of rpm, airspeed [m/s], incidence [deg], and optionally
+    the collective [deg]).
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
     outputs, one row per input row: thrust, drag, torque, rolling_moment, power, CT, CP,
-    converged ("true"/"false"), flags.
+    v_i_over_v_h, lambda2, state, converged ("true"/"false"), flags.
     """
     import numpy as np
     import pandas as pd
@@ -172,8 +197,11 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg):
     from ..core.solver import rotor_loads
 
     r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, airspeed, np.radians(incidence_deg), air=air,
-                    on_failure="flag", radial=False)
-    res = pd.DataFrame({k: getattr(r, k) for k in OUTPUT_KEYS[:-2]})
+                    on_failure="flag", radial=False,
+                    collective=None if collective_deg is None else np.radians(collective_deg))
+    res = pd.DataFrame({k: getattr(r, k) for k in NUMERIC_KEYS})
+    for k, v in _descent_outputs(r).items():
+        res[k] = v
     res["converged"] = np.where(r.converged, "true", "false")
     res["flags"] = _flag_strings(r)
     return res
@@ -212,7 +240,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
         bad = 0
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
             for k, (df, _, values) in enumerate(_chunks(path, CHUNK)):  # the input cells are written as read
-                res = solve_points(prop, params, air, values["rpm"], values["airspeed"], values["incidence_deg"])
+                res = solve_points(prop, params, air, values["rpm"], values["airspeed"], values["incidence_deg"],
+                                   values.get(COLLECTIVE_COLUMN))
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
@@ -236,20 +265,27 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--incidence-deg", type=float, default=None,
               help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent (default 0).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--collective-deg", type=float, default=None,
+              help=f"Collective: a blade-angle offset [deg] added to every blade angle, in "
+                   f"[-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] (default 0; a points file takes a "
+                   f"{COLLECTIVE_COLUMN} column).")
 @click.option("--points", type=PathArg(),
-              help="CSV (',' or ';') with columns rpm, airspeed, incidence_deg (case-insensitive); other "
-                   "columns are kept in the output.")
+              help="CSV (',' or ';') with columns rpm, airspeed, incidence_deg (case-insensitive) and optionally "
+                   "collective_deg; other columns are kept in the output.")
 @click.option("--out", help="Output CSV of --points ('-': standard output).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options
-def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json, diameter_in, blades):
+def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, diameter_in,
+          blades):
     """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
 
-    Outputs are SI: N, N m, W; CT and CP in the propeller convention.
+    Outputs are SI: N, N m, W; CT and CP in the propeller convention; in descent the
+    mean induced inflow over the hover induced velocity at that thrust (v_i_over_v_h),
+    the descent ratio lambda2 = -V cos(incidence) / v_h and the rotor's working state.
     """
     if points is not None:
-        given = [o for o, v in (("--rpm", rpm), ("--airspeed", airspeed), ("--incidence-deg", incidence_deg))
-                 if v is not None]
+        given = [o for o, v in (("--rpm", rpm), ("--airspeed", airspeed), ("--incidence-deg", incidence_deg),
+                                ("--collective-deg", collective_deg)) if v is not None]
         if given:
             raise InputError(f"{', '.join(given)}: give the operating points either as options (one point) or in "
                              "--points (many), not both")
@@ -262,6 +298,7 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
             check_outputs([("--out", out)], inputs)
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
+        check_section_match(propeller, label)
         n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
         click.echo(f"wrote {n} points to {'standard output' if out == '-' else out} (params {label})"
                    + (f"; {n_bad} did not converge (see flags)" if n_bad else ""), err=True)
@@ -273,29 +310,52 @@ def loads(prop, rpm, airspeed, incidence_deg, params_spec, points, out, as_json,
     airspeed = 0.0 if airspeed is None else airspeed
     incidence_deg = 0.0 if incidence_deg is None else incidence_deg
     check_point(rpm, airspeed, incidence_deg)
+    collective_deg = check_collective(collective_deg)
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
+    check_section_match(propeller, label)
     _coverage_messages(propeller, label, air, *_extremes(propeller, rpm, airspeed, incidence_deg))
     from ..core.solver import SolverError, rotor_loads
 
     try:
         r = rotor_loads(propeller, params, rpm * 2 * math.pi / 60, airspeed, math.radians(incidence_deg), air=air,
-                        radial=False)
+                        radial=False, collective=math.radians(collective_deg) if collective_deg else None)
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    result = {k: float(getattr(r, k)) for k in OUTPUT_KEYS[:-2]}
-    result.update(converged=bool(r.converged), flags=r.flags())
+    result = {k: float(getattr(r, k)) for k in NUMERIC_KEYS}
+    d = _descent_outputs(r)
+    ratio = {k: (float(d[k]) if math.isfinite(float(d[k])) else None) for k in ("v_i_over_v_h", "lambda2")}
+    result.update(ratio, state=str(d["state"]), converged=bool(r.converged), flags=r.flags())
     if as_json:
         echo_json({**result, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
-                   "incidence_deg": incidence_deg,
+                   "incidence_deg": incidence_deg, "collective_deg": collective_deg,
+                   "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W"}})
         return
-    click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
-               f"(params {label})")
+    click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg"
+               + (f", collective {collective_deg:g} deg" if collective_deg else "") + f" (params {label})")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
     click.echo(f"  rolling moment M_R = {result['rolling_moment']:.5f} N m")
-    click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}  flags: {', '.join(r.flags()) or 'none'}")
+    click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}")
+    if ratio["v_i_over_v_h"] is not None:
+        click.echo(f"  state: {result['state']}  (v_i/v_h = {ratio['v_i_over_v_h']:.3f}, "
+                   f"lambda2 = V_descent/v_h = {ratio['lambda2']:.3f})")
+    else:
+        click.echo(f"  state: {result['state']}  (T <= 0: no hover induced velocity to refer to)")
+    click.echo(f"  flags: {', '.join(r.flags()) or 'none'}")
+    for f in r.flags():
+        click.echo(f"    {f}: {FLAG_MEANINGS[f]}")
+
+
+def check_collective(collective_deg):
+    """The --collective-deg value (0 when not given); InputError outside its range."""
+    if collective_deg is None:
+        return 0.0
+    if not (math.isfinite(collective_deg) and abs(collective_deg) <= COLLECTIVE_DEG_MAX):
+        raise InputError(f"--collective-deg must be finite and in [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] "
+                         f"deg, got {collective_deg!r}")
+    return float(collective_deg)
 
 
 def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
@@ -313,7 +373,7 @@ def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
     """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
     n, ext = 0, (0.0, 0.0, 0.0)
     for df, _, values in _chunks(path, CHUNK):
-        e = _extremes(prop, *(values[c] for c in INPUT_COLUMNS))
+        e = _extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         n += len(df)
     return n, ext

@@ -18,6 +18,7 @@ from .flight import fit_flight_command, wrench_command
 from .loads import loads
 from .map import map_command
 from .props import props
+from .trim import trim_command
 from .validate import validate
 
 
@@ -27,7 +28,7 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, wrench_command, map_command, export_sim_command, validate, fit, demo):
+for _cmd in (props, loads, trim_command, wrench_command, map_command, export_sim_command, validate, fit, demo):
     cli.add_command(_cmd)
 fit.add_command(fit_flight_command)
 

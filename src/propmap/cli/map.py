@@ -10,8 +10,8 @@ from pathlib import Path
 
 import click
 
-from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs, echo_json,
-                      given, load_params, load_prop, parse_names, with_prop_options)
+from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
+                      check_section_match, echo_json, given, load_params, load_prop, parse_names, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
@@ -54,6 +54,9 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--incidence-deg", "incidence_axis", default=None,
               help="Incidence axis [deg] start:stop:count (default 0:180:73).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--collective-deg", type=float, default=None,
+              help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
+                   "(the sum within [-30, 30]); stored with the map's parameters.")
 @click.option("--out", type=PathArg(), default=None,
               help="Map file; a JSON sidecar OUT.json of its metadata is written beside it.")
 @click.option("--format", "fmt", type=click.Choice(list(FORMATS)), default="netcdf", show_default=True,
@@ -80,7 +83,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
                                                "drawn at its nearest node; default: the middle of the axis).")
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
 @with_prop_options
-def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out, fmt, c_type, c_interpolation,
+def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,
                 c_name, check_points, check_file, all_props, only, scheduler, plot_dir, plot_rpm, as_json, diameter_in,
                 blades):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
@@ -107,8 +110,8 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out,
     if out is None:
         raise InputError("--out is required (the map file)")
     if all_props:
-        ignored = given(ctx, "params_spec", "fmt", "plot_dir", "plot_rpm", "diameter_in", "blades", "c_type",
-                        "c_interpolation", "c_name")
+        ignored = given(ctx, "params_spec", "collective_deg", "fmt", "plot_dir", "plot_rpm", "diameter_in", "blades",
+                        "c_type", "c_interpolation", "c_name")
         if ignored:
             raise InputError(f"{', '.join(ignored)} {'does' if len(ignored) == 1 else 'do'} not apply to --all (one "
                              "netCDF map, each propeller with its catalogue geometry and default parameters, no plots)")
@@ -145,6 +148,13 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, out,
     else:
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
+        check_section_match(propeller, label)
+        if collective_deg is not None:
+            try:
+                params = params.replace(collective=params.collective + math.radians(collective_deg))
+            except (ValueError, OverflowError) as exc:
+                raise InputError(f"--collective-deg: {exc}") from None
+            label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
         plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
     t0 = time.perf_counter()

@@ -396,12 +396,13 @@ N_RAD = 7  # v_i, dT, dD, dQ, dM_R, dY, dM_P
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 emp, radius, radial, out, rad, counts):
+def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
+                 inflow, emp, radius, radial, out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
-    Inputs Om, Vs, Vc have shape (n,); y, w, th, sth, cth, sc, cfac, mfac, ct, ch shape
-    (nr,); sinpsi, cospsi shape (2 naz,): the full circle of azimuth nodes, whose first half
+    Inputs Om, Vs, Vc and coll (a collective offset added to every blade angle [rad]) have
+    shape (n,); y, w, th0, sth0, cth0 (the blade angle and its sine and cosine), sc, cfac,
+    mfac, ct, ch shape (nr,); sinpsi, cospsi shape (2 naz,): the full circle of azimuth nodes, whose first half
     covers [-pi/2, pi/2] (enough for the uniform inflow, where every integrand depends on psi
     through sin psi only). ``sc`` is the per-annulus section constant (gill2017: the
     Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
@@ -425,6 +426,12 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
     nr = y.shape[0]
     naz_half = sinpsi.shape[0] // 2
     for i in numba.prange(n):
+        if coll[i] == 0.0:
+            th, sth, cth = th0, sth0, cth0
+        else:  # a per-point collective: the blade angles of this point
+            th = th0 + coll[i]
+            sth = np.sin(th)
+            cth = np.cos(th)
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_half  # the integrand is independent of psi
         # the roots are written straight into the output row, or into scratch
@@ -529,18 +536,18 @@ def _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, si
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                emp, radius, radial, out, rad, counts):
+def solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
+                inflow, emp, radius, radial, out, rad, counts):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 emp, radius, radial, out, rad, counts)
+    _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
+                 inflow, emp, radius, radial, out, rad, counts)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch_serial(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                       inflow, emp, radius, radial, out, rad, counts):
+def solve_batch_serial(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk,
+                       cam, inflow, emp, radius, radial, out, rad, counts):
     """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
-    _solve_batch(Om, Vs, Vc, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam, inflow,
-                 emp, radius, radial, out, rad, counts)
+    _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
+                 inflow, emp, radius, radial, out, rad, counts)

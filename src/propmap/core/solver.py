@@ -341,8 +341,10 @@ class RotorLoads:
 OMEGA_MIN = 0.1
 OMEGA_MAX = 1e5
 AIRSPEED_MAX = 500.0
+#: the per-point collective's range [rad] (the blade-angle offset of ``rotor_loads(collective=)``)
+COLLECTIVE_RANGE = math.radians(45.0)
 _RANGES = {"omega": (OMEGA_MIN, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
-           "incidence": (0.0, math.pi, "rad")}
+           "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
 
 
 def _range_error(name: str, value) -> ValueError:
@@ -403,6 +405,7 @@ def rotor_loads(
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     on_failure: str = "raise",
     radial: bool = False,
+    collective=None,
 ) -> RotorLoads:
     """Thrust, rotor drag and torque of a propeller at any operating point.
 
@@ -435,8 +438,13 @@ def rotor_loads(
         return, with ``converged`` False and NaN loads at the failed points.
     radial : bool
         Keep the per-annulus outputs (``v_i``, ``dT_dr``, ``dD_dr``, ``dQ_dr``,
-        ``dMR_dr``; 5 n_radial doubles, 1.9 kB per point at the default). False (the
-        default): they are None, and a point costs 84 bytes.
+        ``dMR_dr``, ``dY_dr``, ``dMP_dr``; 7 n_radial doubles per point). False (the
+        default): they are None.
+    collective : float or array_like, optional
+        A blade-angle offset per operating point [rad] in [-pi/4, pi/4], added to every
+        blade angle theta(r) (on top of ``params.collective``): a variable-pitch rotor's
+        collective, or a collective sweep of one geometry. Broadcast with ``omega``,
+        ``airspeed`` and ``incidence``. None (default): no offset.
 
     Returns
     -------
@@ -455,23 +463,31 @@ def rotor_loads(
     if on_failure not in ("raise", "flag"):
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
     if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
-            and type(incidence) in _REAL_SCALARS):
+            and type(incidence) in _REAL_SCALARS and (collective is None or type(collective) in _REAL_SCALARS)):
         shape = ()
         om1 = np.array([_scalar("omega", omega)])
         V1 = np.array([_scalar("airspeed", airspeed)])
         b1 = np.array([_scalar("incidence", incidence)])
+        c1 = np.array([0.0 if collective is None else _scalar("collective", collective)])
     else:
+        arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
+        if collective is not None:
+            arrays.append(_as_array("collective", collective))
         try:
-            om, V, b = np.broadcast_arrays(_as_array("omega", omega), _as_array("airspeed", airspeed),
-                                           _as_array("incidence", incidence))
+            arrays = np.broadcast_arrays(*arrays)
         except ValueError as exc:
             if "broadcast" in str(exc):
-                raise ValueError(f"omega, airspeed and incidence must broadcast together: {exc}") from None
+                what = "omega, airspeed, incidence and collective" if collective is not None else \
+                    "omega, airspeed and incidence"
+                raise ValueError(f"{what} must broadcast together: {exc}") from None
             raise
+        om = arrays[0]
         shape = om.shape
         om1 = np.ascontiguousarray(om.reshape(-1))
-        V1 = V.reshape(-1)
-        b1 = b.reshape(-1)
+        V1 = arrays[1].reshape(-1)
+        b1 = arrays[2].reshape(-1)
+        c1 = (np.ascontiguousarray(arrays[3].reshape(-1), dtype=float) if collective is not None
+              else np.zeros(om1.size))
     Vs = np.ascontiguousarray(V1 * np.sin(b1))
     Vc = np.ascontiguousarray(V1 * np.cos(b1))
     Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
@@ -488,7 +504,7 @@ def rotor_loads(
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
-    batch(om1, Vs, Vc, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
+    batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
           nd.sinpsi, nd.cospsi, model, pk, _cambered_args(params, air), inflow,
           bool(ph.DESCENT_CODES[params.descent]), propeller.radius, bool(radial), out, rad, counts)
     converged = status == 0

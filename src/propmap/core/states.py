@@ -69,7 +69,7 @@ def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float
     vx = V * np.sin(b)
     with np.errstate(invalid="ignore", divide="ignore"):
         vh = np.sqrt(np.maximum(T, 0.0) / (2.0 * rho * np.pi * radius**2))
-        k = np.where(vh > 0, -vz / vh, np.nan)
+        k = np.where(vh > 0, -vz / vh, np.nan) + 0.0  # + 0.0: no -0 in hover
         m = np.where(vh > 0, vx / vh, np.nan)
         band = VRS_BAND
         centre = 0.5 * (band["k_min"] + band["k_max"])

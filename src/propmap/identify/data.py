@@ -52,6 +52,7 @@ RANGES = {
     "rpm": (0.0, RPM_MAX, True, False, "rpm"),
     "airspeed": (0.0, 500.0, False, False, "m/s"),
     "incidence_deg": (0.0, 180.0, False, False, "deg"),
+    "collective_deg": (-45.0, 45.0, False, False, "deg"),
     "thrust": (-1e5, 1e5, False, False, "N"),
     "drag": (-1e5, 1e5, False, False, "N"),
     "torque": (-1e4, 1e4, False, False, "N m"),
@@ -333,6 +334,9 @@ class LoadData:
     group : ndarray of str, shape (N,)
         Run label of each point (for hold-out).
     source : str
+    collective : ndarray, shape (N,), or None
+        Blade-angle offset of each point [rad] (a collective sweep of a variable-pitch
+        rotor); None: none.
     """
 
     omega: np.ndarray
@@ -341,6 +345,7 @@ class LoadData:
     measured: dict
     group: np.ndarray
     source: str = ""
+    collective: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -351,7 +356,8 @@ class LoadData:
         """The points where ``mask`` is True."""
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
-                        {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source)
+                        {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
+                        None if self.collective is None else self.collective[mask])
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")
@@ -362,7 +368,8 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
 
     Columns ``rpm`` and at least one of ``thrust`` [N], ``drag`` [N], ``torque`` [N m];
     ``airspeed`` [m/s] and ``incidence_deg`` (both default 0: a static thrust stand);
-    optional ``group`` (run label). Format and valid ranges in the module docstring.
+    optional ``collective_deg`` (blade-angle offset of a variable-pitch rotor, in
+    [-45, 45] deg: a hover collective sweep is a valid data set) and ``group`` (run label). Format and valid ranges in the module docstring.
 
     Parameters
     ----------
@@ -380,7 +387,7 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
         lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
         header), a missing, duplicated or over-long column, an empty, non-numeric or
         non-finite value, a value out of range (rpm outside (0, 954929], airspeed outside
-        [0, 500] m/s, incidence_deg outside [0, 180], |thrust| or |drag| > 1e5 N, |torque|
+        [0, 500] m/s, incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or |drag| > 1e5 N, |torque|
         > 1e4 N m), fewer than ``min_points`` rows, or all operating points identical; the
         message names the file, the line and the column.
     """
@@ -394,7 +401,7 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
     keys = [k for k in LOAD_KEYS if k in f.index]
     if not keys:
         raise DataError(f"{what}: {p} has none of the load columns {', '.join(LOAD_KEYS)}")
-    cols = ["rpm", *(c for c in ("airspeed", "incidence_deg") if c in f.index), *keys]
+    cols = ["rpm", *(c for c in ("airspeed", "incidence_deg", "collective_deg") if c in f.index), *keys]
     v, texts, lines = f.read(cols, ("group",))
     f.check_ranges(v, lines, RANGES)
     n = lines.size
@@ -402,12 +409,13 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
         v.setdefault(c, np.zeros(n))  # a static thrust stand
     if n < min_points:
         raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
-    ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"]])
+    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
+    ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
     if np.all(np.ptp(ops, axis=0) == 0):
         raise DataError(f"{what}: {p}: all operating points are identical")
     group = np.array(texts["group"], dtype=object) if "group" in texts else np.full(n, "all")
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}")
+                    group, f"{path}", collective)
 
 
 def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = Air()) -> LoadData:

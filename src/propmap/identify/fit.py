@@ -56,6 +56,9 @@ CAMBERED_FIT_RE = CAMBERED_FIT + ("re_exp_lift", "re_exp", "alpha_L0_re")
 #: static-only data without the prior: two parameters (a static run has two or three degrees
 #: of freedom; fitted freely, more parameters chase them)
 CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
+#: a hover collective sweep (static points at several collectives) spans the angles of
+#: attack: the lift slope and the drag polar are identified too
+CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
@@ -81,10 +84,12 @@ def param_names(lift_model: str) -> tuple[str, ...]:
 
 def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
     """The parameters fitted: ``options.names`` (checked), else the default for
-    ``data_kind`` "static", "few_rates" or "rates"."""
+    ``data_kind`` "static", "collective" (a static collective sweep), "few_rates" or "rates"."""
     if options.names is not None:
         return _check_names(options.names, base, options)
     if isinstance(base, CamberedParams):
+        if data_kind == "collective":
+            return CAMBERED_FIT_COLLECTIVE
         if data_kind == "static" and not options.prior:
             return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
@@ -834,11 +839,12 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 
 def _data_kind(data: LoadData) -> str:
-    """"static" (all airspeeds 0), "few_rates" (moving points at < MIN_RATES_FOR_RE rotation
-    rates, within 3%) or "rates"."""
+    """"static" (all airspeeds 0), "collective" (all airspeeds 0, several collectives),
+    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, within 3%) or "rates"."""
     moving = data.airspeed > 0
     if not moving.any():
-        return "static"
+        swept = data.collective is not None and np.ptp(data.collective) > 0
+        return "collective" if swept else "static"
     rpm = np.sort(data.omega[moving])
     rates = 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
     return "rates" if rates >= MIN_RATES_FOR_RE else "few_rates"
@@ -884,7 +890,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
         def residual(x, opts=opts):
             p = _params_from(x, names, base, opts)
             r = rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
-                            discretization=opts.discretization)
+                            discretization=opts.discretization, collective=data.collective)
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
             return weight * np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
         return residual

@@ -1,0 +1,85 @@
+"""``propmap trim``: the collective that makes a given thrust at one operating point."""
+
+from __future__ import annotations
+
+import math
+
+import click
+
+from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
+                      load_params, load_prop, with_prop_options)
+from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
+
+
+@click.command("trim")
+@click.argument("prop")
+@click.option("--thrust", type=float, required=True, help="Thrust to make [N].")
+@click.option("--rpm", type=float, required=True, help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}].")
+@click.option("--airspeed", type=float, default=0.0, show_default=True, help="Airspeed V [m/s], in [0, 500].")
+@click.option("--incidence-deg", type=float, default=0.0, show_default=True,
+              help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent.")
+@click.option("--range-deg", nargs=2, type=float, default=(-20.0, 30.0), show_default=True,
+              help=f"Collectives searched [deg], within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}].")
+@click.option("--hover-reference", is_flag=True,
+              help="Also trim hover to the same thrust and rpm and report dCQ = CQ - CQ_hover.")
+@click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@with_prop_options
+def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_reference, params_spec, as_json,
+                 diameter_in, blades):
+    """Collective (blade-angle offset) at which PROP makes --thrust.
+
+    The lowest collective in --range-deg that makes the thrust is returned (below stall the
+    only one); the output states the branch and how many solutions the search saw.
+    """
+    from ..core.solver import SolverError
+    from ..core.trim import TrimError, torque_change_at_constant_thrust, trim_collective
+
+    check_point(rpm, airspeed, incidence_deg)
+    if not math.isfinite(thrust) or abs(thrust) > 1e5:
+        raise InputError(f"--thrust must be finite and in [-1e5, 1e5] N, got {thrust!r}")
+    lo, hi = range_deg
+    if not (-COLLECTIVE_DEG_MAX <= lo < hi <= COLLECTIVE_DEG_MAX):
+        raise InputError(f"--range-deg must be two angles LOW < HIGH within [-{COLLECTIVE_DEG_MAX:g}, "
+                         f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
+    propeller = load_prop(prop, diameter_in, blades)
+    params, air, label = load_params(params_spec, prop)
+    check_section_match(propeller, label)
+    omega, beta = rpm * 2 * math.pi / 60, math.radians(incidence_deg)
+    bounds = (math.radians(lo), math.radians(hi))
+    try:
+        res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
+        dcq = None
+        if hover_reference:
+            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
+                                                       collective=float(res.collective), air=air, bounds=bounds)
+            dcq = float(d)
+    except TrimError as exc:
+        raise InputError(f"--thrust: {exc}") from None
+    except SolverError as exc:
+        raise click.ClickException(str(exc)) from None
+    r = res.loads
+    d = _descent_outputs(r)
+    out = {"collective_deg": math.degrees(float(res.collective)), "branch": res.branch,
+           "solutions_seen": int(res.n_solutions), "thrust": float(r.thrust), "drag": float(r.drag),
+           "torque": float(r.torque), "power": float(r.power), "CT": float(r.CT), "CQ": float(r.CQ),
+           "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
+           "state": str(d["state"]), "flags": r.flags()}
+    if as_json:
+        echo_json({**out, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
+                   "incidence_deg": incidence_deg, "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
+                   "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W", "collective_deg": "deg"}})
+        return
+    click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
+               f"(params {label})")
+    click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
+               f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg)")
+    click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
+    if dcq is not None:
+        click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
+    click.echo(f"  state: {out['state']}  flags: {', '.join(out['flags']) or 'none'}")
+
+
+def _finite(x):
+    x = float(x)
+    return x if math.isfinite(x) else None

@@ -1,0 +1,248 @@
+"""Trim: the collective that makes a given thrust, and the torque change at constant thrust.
+
+A variable-pitch rotor is flown by its collective: at a given rotation rate and velocity the
+blade-angle offset is set so that the rotor makes the thrust wanted. :func:`trim_collective`
+finds it with the full model (:func:`propmap.rotor_loads` with its ``collective`` input).
+
+Which solution: the thrust need not be monotonic in the collective (past the sections'
+stall it falls again), so T(collective) = T* can have several solutions. The one returned
+is the **lowest collective** that makes the thrust: the thrust is tabulated on a grid of
+collectives (``grid_step``, 2.5 deg by default) across ``bounds``, the first upward
+crossing of T* is bracketed and refined by Chandrupatla's method
+(:func:`scipy.optimize.elementwise.find_root`). For a rotor below stall this is the only
+solution; ``n_solutions`` counts the crossings the grid saw, so that a second (stalled)
+branch is reported, not hidden.
+
+:func:`torque_change_at_constant_thrust` gives the descent literature's dCQ: the torque
+coefficient at an operating point minus the one in hover at the same thrust and rotation
+rate (both trimmed with the collective), the quantity the measured descent data tabulate
+(e.g. Castles & Gray, NACA TN 2474, 1951, who derive the induced velocity from it).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .airfoil import Air, SectionParams
+from .geometry import Propeller
+from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads,
+                     rotor_loads)
+
+__all__ = ["TrimError", "TrimResult", "trim_collective", "torque_change_at_constant_thrust"]
+
+#: the branch :func:`trim_collective` returns, in words (reported with every result)
+BRANCH = "lowest collective that makes the thrust (the first upward crossing on the grid)"
+
+
+class TrimError(ValueError):
+    """No collective in the bounds makes the thrust asked for at some operating point."""
+
+
+@dataclass(frozen=True)
+class TrimResult:
+    """The trimmed collective and the loads there.
+
+    Attributes
+    ----------
+    collective : ndarray
+        Blade-angle offset [rad] (added to ``params.collective`` and the geometry's blade
+        angles), broadcast shape of the inputs.
+    loads : RotorLoads
+        The full model's loads at the trimmed collective (same shape).
+    n_solutions : ndarray of int
+        Crossings of the thrust asked for that the collective grid saw (1: a unique
+        solution in the bounds; more: a stalled branch as well, not the one returned).
+    branch : str
+        Which solution is returned, in words (:data:`BRANCH`).
+    """
+
+    collective: np.ndarray
+    loads: RotorLoads
+    n_solutions: np.ndarray
+    branch: str = BRANCH
+
+
+def _check_bounds(bounds) -> tuple[float, float]:
+    try:
+        lo, hi = (float(b) for b in bounds)
+    except (TypeError, ValueError):
+        raise ValueError(f"bounds must be two numbers [rad], got {bounds!r}") from None
+    if not (-COLLECTIVE_RANGE <= lo < hi <= COLLECTIVE_RANGE):
+        raise ValueError(f"bounds must satisfy -{COLLECTIVE_RANGE:.6g} <= low < high <= {COLLECTIVE_RANGE:.6g} rad, "
+                         f"got ({lo!r}, {hi!r})")
+    return lo, hi
+
+
+def _where(i: int, shape) -> str:
+    """The index of point ``i`` for a message ('' for a single point)."""
+    return f"{tuple(int(k) for k in np.unravel_index(i, shape))} " if shape else ""
+
+
+def trim_collective(
+    propeller: Propeller,
+    params: SectionParams,
+    thrust,
+    omega,
+    airspeed=0.0,
+    incidence=0.0,
+    *,
+    air: Air = Air(),
+    discretization: Discretization = DEFAULT_DISCRETIZATION,
+    bounds=(-math.radians(20.0), math.radians(30.0)),
+    grid_step: float = math.radians(2.5),
+    thrust_tol: float = 1e-6,
+    on_missing: str = "raise",
+) -> TrimResult:
+    """The collective (blade-angle offset) at which the rotor makes ``thrust``.
+
+    Parameters
+    ----------
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    thrust : float or array_like
+        The thrust wanted T* [N], finite (may be negative: a windmilling rotor).
+    omega, airspeed, incidence : float or array_like
+        Omega [rad/s], V [m/s] and beta [rad] as in :func:`propmap.rotor_loads`; all four
+        inputs broadcast together.
+    air : Air, optional
+    discretization : Discretization, optional
+    bounds : (float, float)
+        The collectives searched [rad], within [-pi/4, pi/4]; default -20 to +30 deg.
+    grid_step : float
+        Spacing of the bracketing grid [rad] (default 2.5 deg), in (0, bounds width].
+    thrust_tol : float
+        Absolute tolerance on T [N] (default 1e-6 N); the collective is also converged to
+        1e-10 rad.
+    on_missing : {"raise", "nan"}
+        Where no collective in ``bounds`` makes the thrust: raise TrimError (default), or
+        return NaN collective and loads there (``n_solutions`` 0 tells them).
+
+    Returns
+    -------
+    TrimResult
+        ``collective`` [rad] and ``loads`` at it, of the broadcast shape; the branch rule
+        is the module docstring's.
+
+    Raises
+    ------
+    ValueError
+        A bad argument (the message names it and its range).
+    TrimError
+        At some point no collective in ``bounds`` makes the thrust: the message names the
+        point and the thrust range the bounds reach there.
+    propmap.SolverError
+        The inflow solve failed at some collective (the message names where).
+    """
+    from scipy.optimize import elementwise
+
+    if on_missing not in ("raise", "nan"):
+        raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
+    lo, hi = _check_bounds(bounds)
+    if not (isinstance(grid_step, (int, float)) and 0 < grid_step <= hi - lo):
+        raise ValueError(f"grid_step must be in (0, {hi - lo:.6g}] rad, got {grid_step!r}")
+    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
+        raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
+    T_star = np.asarray(thrust, dtype=float)
+    if not np.all(np.isfinite(T_star)):
+        raise ValueError("thrust must be finite [N]")
+    # the operating points are checked by rotor_loads; broadcast them with the thrust here
+    try:
+        T_star, om, V, b = np.broadcast_arrays(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
+    except ValueError as exc:
+        raise ValueError(f"thrust, omega, airspeed and incidence must broadcast together: {exc}") from None
+    shape = T_star.shape
+    T1, om1, V1, b1 = (np.ascontiguousarray(a.reshape(-1)) for a in (T_star, om, V, b))
+    n = T1.size
+
+    m = max(2, int(math.ceil((hi - lo) / grid_step)) + 1)
+    grid = np.linspace(lo, hi, m)
+    kw = dict(air=air, discretization=discretization)
+    Tg = rotor_loads(propeller, params, om1[:, None], V1[:, None], b1[:, None], collective=grid[None, :],
+                     **kw).thrust - T1[:, None]  # (n, m)
+    up = (Tg[:, :-1] <= 0) & (Tg[:, 1:] > 0)  # upward crossings
+    down = (Tg[:, :-1] > 0) & (Tg[:, 1:] <= 0)
+    n_solutions = up.sum(axis=1) + down.sum(axis=1)
+    exact = Tg == 0
+    missing = ~up.any(axis=1) & ~exact.any(axis=1)
+    if missing.any() and on_missing == "raise":
+        i = int(np.argmax(missing))
+        raise TrimError(
+            f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
+            f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s, "
+            f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
+            f"[{(Tg[i] + T1[i]).min():.6g}, {(Tg[i] + T1[i]).max():.6g}] N")
+    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
+    xl, xr = grid[j], grid[j + 1]
+    on_node = exact.any(axis=1) & ~up.any(axis=1)
+    x = np.full(n, np.nan)
+    x[on_node] = grid[np.argmax(exact[on_node], axis=1)]
+    todo = ~on_node & ~missing
+    if todo.any():
+        def f(c, om_, V_, b_, T_):
+            return rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust - T_
+
+        res = elementwise.find_root(f, (xl[todo], xr[todo]), args=(om1[todo], V1[todo], b1[todo], T1[todo]),
+                                    tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=thrust_tol, frtol=0.0))
+        if not np.all(res.success):
+            k = int(np.argmax(~res.success))
+            i = int(np.flatnonzero(todo)[k])
+            raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
+                            f"(omega={om1[i]:.6g} rad/s, thrust={T1[i]:.6g} N; scipy status {int(res.status[k])})")
+        x[todo] = res.x
+    ok = ~missing
+    loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
+                        collective=np.where(ok, x, 0.0).reshape(shape), **kw)
+    if not ok.all():  # NaN loads where no collective makes the thrust
+        bad = ~ok.reshape(shape)
+        for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean"):
+            np.asarray(getattr(loads, f))[bad] = np.nan
+    return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
+
+
+def torque_change_at_constant_thrust(
+    propeller: Propeller,
+    params: SectionParams,
+    omega,
+    airspeed,
+    incidence,
+    *,
+    collective=None,
+    air: Air = Air(),
+    discretization: Discretization = DEFAULT_DISCRETIZATION,
+    bounds=(-math.radians(20.0), math.radians(30.0)),
+):
+    """dCQ: CQ at an operating point minus CQ in hover at the same thrust and Omega.
+
+    The hover point is trimmed with the collective (:func:`trim_collective`) to the thrust
+    the rotor makes at the operating point; CQ = Q / (rho n^2 D^5) in the propeller
+    convention. Negative dCQ: the descent gives the rotor power (ideal autorotation where
+    CQ itself reaches 0).
+
+    Parameters
+    ----------
+    propeller, params, omega, airspeed, incidence, air, discretization
+        As in :func:`propmap.rotor_loads`.
+    collective : float or array_like, optional
+        The operating point's blade-angle offset [rad].
+    bounds : (float, float)
+        Collectives searched for the hover trim [rad].
+
+    Returns
+    -------
+    (dCQ, loads, hover) : (ndarray, RotorLoads, TrimResult)
+        dCQ of the broadcast shape, the loads at the operating point and the hover trim.
+
+    Raises
+    ------
+    ValueError, TrimError, propmap.SolverError
+        As :func:`trim_collective` (a thrust that no hover collective in ``bounds`` makes,
+        e.g. a negative thrust in the windmill brake, raises TrimError).
+    """
+    loads = rotor_loads(propeller, params, omega, airspeed, incidence, collective=collective, air=air,
+                        discretization=discretization)
+    hover = trim_collective(propeller, params, loads.thrust, loads.omega, 0.0, 0.0, air=air,
+                            discretization=discretization, bounds=bounds)
+    return loads.CQ - hover.loads.CQ, loads, hover

@@ -1,0 +1,257 @@
+"""Collective pitch as an input, trim to a thrust, section presets and rotor-like warnings (issue 16)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.core.geometry import rotor_like
+from propmap.core.trim import TrimError, torque_change_at_constant_thrust, trim_collective
+from propmap.identify.data import read_loads
+from propmap.io.params_file import params_from_dict, resolve_params, section_preset
+
+RPM = 2 * math.pi / 60
+
+
+@pytest.fixture(scope="module")
+def rotor():
+    """An untwisted, rectangular three-bladed model rotor (R = 0.6 m, c = 0.05 m), the kind
+    of helicopter-style rotor whose pitch is all collective."""
+    R = 0.6
+    r = np.linspace(0.15, 1.0, 12) * R
+    return pm.Propeller(name="model_rotor", radius=R, n_blades=3, r=r, chord=np.full(r.size, 0.05),
+                        theta=np.zeros(r.size), source="test: untwisted rectangular rotor")
+
+
+@pytest.fixture(scope="module")
+def naca0015():
+    return section_preset("naca0015")
+
+
+def test_per_point_collective_equals_the_parameter_offset(apc8x6, apc_params):
+    cs = np.radians([-6.0, 0.0, 4.0, 9.0])
+    V = np.array([0.0, 6.0, 12.0])[:, None]
+    r = pm.rotor_loads(apc8x6, apc_params, 900.0, V, 0.8, collective=cs)
+    assert r.thrust.shape == (3, 4)
+    for j, c in enumerate(cs):
+        q = pm.rotor_loads(apc8x6, dataclasses.replace(apc_params, collective=float(c)), 900.0, V[:, 0], 0.8)
+        np.testing.assert_array_equal(r.thrust[:, j], q.thrust)  # the same blade angles, bit for bit
+        np.testing.assert_array_equal(r.torque[:, j], q.torque)
+        np.testing.assert_array_equal(r.drag[:, j], q.drag)
+
+
+def test_collective_raises_thrust_below_stall(rotor, naca0015):
+    r = pm.rotor_loads(rotor, naca0015, 100.0, 0.0, 0.0, collective=np.radians([0.0, 2.0, 4.0, 6.0, 8.0]))
+    assert abs(float(r.thrust[0])) < 1e-9  # a symmetric, untwisted blade at zero pitch makes no thrust
+    assert np.all(np.diff(r.thrust) > 0)
+
+
+def test_collective_errors(apc8x6, apc_params):
+    with pytest.raises(ValueError, match=r"collective must be finite and in \[-0.785398, 0.785398\] rad"):
+        pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, collective=1.0)
+    with pytest.raises(ValueError, match="collective must be finite"):
+        pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, collective=np.array([0.0, np.nan]))
+    with pytest.raises(ValueError, match="omega, airspeed, incidence and collective must broadcast"):
+        pm.rotor_loads(apc8x6, apc_params, np.ones(3) * 900, 0.0, 0.0, collective=np.zeros(2))
+    with pytest.raises(ValueError, match="collective must be a number"):
+        pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, collective="3")
+
+
+def test_trim_round_trip(rotor, naca0015):
+    """Trim to the thrust made at known collectives gives those collectives back."""
+    known = np.radians([2.0, 5.0, 8.0])
+    om, V, b = 100.0, np.array([0.0, 3.0, 10.0]), np.array([0.0, math.pi, math.pi / 2])
+    T = pm.rotor_loads(rotor, naca0015, om, V, b, collective=known).thrust
+    res = trim_collective(rotor, naca0015, T, om, V, b)
+    np.testing.assert_allclose(res.collective, known, atol=1e-7)
+    np.testing.assert_allclose(res.loads.thrust, T, atol=1e-6)
+    assert np.all(res.n_solutions >= 1) and "lowest collective" in res.branch
+
+
+def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
+    with pytest.raises(TrimError, match=r"no collective in \[-20, 30\] deg makes thrust=10000 N at operating point \(omega=100 rad/s.*spans \["):
+        trim_collective(rotor, naca0015, 1e4, 100.0)
+    res = trim_collective(rotor, naca0015, np.array([50.0, 1e4]), 100.0, on_missing="nan")
+    assert np.isfinite(res.collective[0]) and np.isnan(res.collective[1]) and np.isnan(res.loads.thrust[1])
+    assert list(res.n_solutions) == [1, 0] or res.n_solutions[1] == 0
+    with pytest.raises(ValueError, match="bounds must satisfy"):
+        trim_collective(rotor, naca0015, 50.0, 100.0, bounds=(0.2, 0.1))
+    with pytest.raises(ValueError, match="on_missing must be"):
+        trim_collective(rotor, naca0015, 50.0, 100.0, on_missing="zero")
+
+
+def test_torque_change_at_constant_thrust(rotor, naca0015):
+    """dCQ is 0 in hover itself and falls (the descent gives power) as the rotor descends."""
+    coll = math.radians(8.0)
+    d, loads, hover = torque_change_at_constant_thrust(rotor, naca0015, 100.0, np.array([0.0, 1.0, 2.0, 4.0]),
+                                                       math.pi, collective=coll)
+    assert abs(d[0]) < 1e-9
+    np.testing.assert_allclose(hover.loads.thrust, loads.thrust, atol=1e-6)
+    assert np.all(np.diff(d) < 0)
+
+
+def test_hover_collective_sweep_is_a_load_data_set_and_fit_recovers_the_slope(tmp_path, rotor, naca0015):
+    """A hover collective sweep (a helicopter-style rotor's hover test) is read and fitted:
+    the lift slope and zero-lift angle of a synthetic truth come back."""
+    truth = dataclasses.replace(naca0015, cl_alpha=5.6, alpha_L0=math.radians(-0.5))
+    coll_deg = np.arange(0.0, 10.1, 1.0)
+    r = pm.rotor_loads(rotor, truth, 1200 * RPM, 0.0, 0.0, collective=np.radians(coll_deg))
+    p = tmp_path / "sweep.csv"
+    pd.DataFrame({"rpm": 1200.0, "collective_deg": coll_deg, "thrust": r.thrust, "torque": r.torque}).to_csv(p,
+                                                                                                          index=False)
+    data = read_loads(p)
+    np.testing.assert_allclose(data.collective, np.radians(coll_deg))
+    from propmap.identify.fit import fit_loads
+
+    res = fit_loads(data, rotor, base=naca0015)
+    assert res.names == ("cl_alpha", "alpha_L0", "cd_min", "cd2")
+    assert res.params.cl_alpha == pytest.approx(5.6, rel=0.02)
+    assert math.degrees(res.params.alpha_L0) == pytest.approx(-0.5, abs=0.1)
+
+
+def test_a_sweep_without_collective_column_stays_refused_when_identical(tmp_path):
+    p = tmp_path / "same.csv"
+    pd.DataFrame({"rpm": [1000.0] * 6, "thrust": 1.0}).to_csv(p, index=False)
+    with pytest.raises(ValueError, match="all operating points are identical"):
+        read_loads(p)
+    p2 = tmp_path / "bad.csv"
+    pd.DataFrame({"rpm": [1000.0] * 6, "collective_deg": [0, 1, 2, 3, 4, 60], "thrust": 1.0}).to_csv(p2, index=False)
+    with pytest.raises(ValueError, match=r"collective_deg .*\[-45, 45\]"):
+        read_loads(p2)
+
+
+# -- section presets against their published polars (Sheldahl & Klimas, SAND80-2114) --------
+
+def _table():
+    from importlib.resources import files
+
+    with files("propmap").joinpath("data/sections/sheldahl_klimas_1981.csv").open() as fh:
+        return pd.read_csv(fh, comment="#")
+
+
+@pytest.mark.parametrize("name", ["naca0015", "naca0018"])
+def test_section_presets_reproduce_their_published_polar(name):
+    t = _table()
+    t = t[t.section == name.upper().replace("NACA", "NACA ")]
+    p = section_preset(name)
+    a, re = np.radians(t.alpha_deg.to_numpy()), t.reynolds.to_numpy(float)
+    pre = a <= math.radians(8.0)  # attached flow, where a rotor's sections work
+    cl = pm.lift_coefficient(a, p, re)
+    cd = pm.drag_coefficient(a, re, p)
+    assert np.sqrt(np.mean((cl - t.cl.to_numpy())[pre] ** 2)) < 0.03
+    assert np.sqrt(np.mean(((cd - t.cd.to_numpy()) / t.cd.to_numpy())[pre] ** 2)) < 0.08
+    assert p.alpha_L0 == 0.0 and p.cl_min == -p.cl_max  # symmetric
+    # the published minimum drag at the reference Reynolds number (regression of the table's 0 deg values)
+    assert float(pm.drag_coefficient(0.0, 3.6e5, p)) == pytest.approx(float(t.cd[(t.alpha_deg == 0) &
+                                                                                (t.reynolds == 3.6e5)].iloc[0]),
+                                                                       rel=0.05)
+
+
+def test_section_preset_in_files_and_names():
+    p, _ = params_from_dict({"section": "naca0015", "cl_alpha": 5.5})
+    assert p.cl_alpha == 5.5 and p.cd_min == section_preset("naca0015").cd_min
+    assert resolve_params("section:naca0018")[0] == section_preset("naca0018")
+    with pytest.raises(ValueError, match="section must be one of naca0015, naca0018, got 'naca9999'"):
+        params_from_dict({"section": "naca9999"})
+    with pytest.raises(ValueError, match="section_model must be 'cambered'"):
+        params_from_dict({"section": "naca0015", "section_model": "gill2017"})
+    with pytest.raises(KeyError, match="unknown section preset"):
+        section_preset("clarky")
+
+
+def test_symmetric_preset_against_the_generic_set_on_a_rotor(rotor):
+    """The generic (cambered propeller) set at zero collective makes thrust on an untwisted
+    rotor; the symmetric preset makes none: the mismatch the warning is about."""
+    from propmap.io.calibration import generic_params
+
+    T_generic = float(pm.rotor_loads(rotor, generic_params(), 1200 * RPM, 0.0, 0.0).thrust)
+    T_sym = float(pm.rotor_loads(rotor, section_preset("naca0015"), 1200 * RPM, 0.0, 0.0).thrust)
+    assert T_generic > 10.0 and abs(T_sym) < 1e-6
+
+
+# -- rotor-like blades -------------------------------------------------------------------------
+
+def test_rotor_like_on_the_catalogue_and_a_rotor(rotor):
+    from propmap.io.catalogue import catalogue
+
+    assert rotor_like(rotor) is not None
+    assert all(rotor_like(pm.load_propeller(n)) is None for n in list(catalogue())[::7])
+
+
+def test_rotor_geometry_in_degrees_does_not_warn_radians(tmp_path):
+    from propmap.io.readers import read_uiuc_geometry
+
+    p = tmp_path / "rot_20x1_geom.txt"
+    p.write_text("r/R c/R beta\n0.2 0.08 1.2\n0.6 0.08 0.6\n1.0 0.08 0.0\n")  # a rotor, -1.2 deg twist
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_uiuc_geometry(p)
+    p2 = tmp_path / "flat_20x1_geom.txt"
+    p2.write_text("r/R c/R beta\n0.2 0.08 1.0\n0.6 0.08 1.0\n1.0 0.08 1.0\n")  # untwisted, 1 deg
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_uiuc_geometry(p2)
+
+
+# -- CLI ---------------------------------------------------------------------------------------
+
+def test_cli_loads_collective_option_column_and_descent_outputs(tmp_path, capsys):
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,0\n6000,0,0,-4\n6000,3,180,0\n")
+    out = tmp_path / "o.csv"
+    assert main(["loads", "apce_8x6", "--points", str(pts), "--out", str(out)]) == 0
+    df = pd.read_csv(out)
+    for c in ("v_i_over_v_h", "lambda2", "state"):
+        assert c in df.columns
+    assert df.thrust[1] < df.thrust[0]  # -4 deg collective: less thrust
+    assert df.state[0] == "normal working" and df.lambda2[0] == 0.0 and df.state[2] == "vortex ring"
+    capsys.readouterr()
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--airspeed", "3", "--incidence-deg", "180",
+                 "--collective-deg", "-4"]) == 0
+    text = capsys.readouterr().out
+    assert "collective -4 deg" in text and "state: vortex ring" in text
+    assert "vortex_ring: inside the vortex-ring band" in text
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--collective-deg", "50"]) == 2
+    assert "--collective-deg must be finite and in [-45, 45] deg" in capsys.readouterr().err
+
+
+def test_cli_trim_and_generic_rotor_warning(tmp_path, capsys):
+    g = tmp_path / "rot_47x1_geom.txt"
+    g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
+    assert main(["trim", str(g), "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--json"]) == 0
+    cap = capsys.readouterr()
+    import json
+
+    j = json.loads(cap.out)
+    assert j["thrust"] == pytest.approx(20.0, abs=1e-5) and j["collective_deg"] > 0
+    assert "lowest collective" in j["branch"] and "warning" not in cap.err
+    assert main(["loads", str(g), "--rpm", "1200"]) == 0  # the generic set: warned
+    assert "a rotor's blade, not a propeller's" in capsys.readouterr().err
+    assert main(["trim", str(g), "--thrust", "1e4", "--rpm", "1200", "--params", "section:naca0015"]) == 2
+    assert "--thrust: no collective" in capsys.readouterr().err
+
+
+def test_cli_map_with_a_collective(tmp_path, capsys):
+    import xarray as xr
+
+    out = tmp_path / "m.nc"
+    assert main(["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:3",
+                 "--collective-deg", "3", "--check-points", "0", "--out", str(out)]) == 0
+    with xr.open_dataset(out) as ds:
+        T = float(ds["thrust"].isel(rpm=1, airspeed=0, incidence_deg=0))
+        om = float(ds["omega"].isel(rpm=1))
+    from propmap.io.calibration import default_params
+
+    p = default_params("apce_8x6")[0]
+    ref = float(pm.rotor_loads(pm.load_propeller("apce_8x6"), p, om, 0.0, 0.0,
+                               collective=math.radians(3.0)).thrust)
+    assert T == pytest.approx(ref, rel=1e-6)
+    assert main(["map", "apce_8x6", "--collective-deg", "40", "--out", str(tmp_path / "x.nc")]) == 2
+    assert "--collective-deg: collective must be" in capsys.readouterr().err
