@@ -66,3 +66,22 @@ def test_states_through_an_axial_descent():
     assert first["normal working"] < first["vortex ring"] < first["windmill brake"]
     assert np.all(np.diff(r.descent_ratio) > 0)
     assert r.inflow_ratio[0] == pytest.approx(float(r.v_i_mean[0] / r.v_h[0]))
+
+
+def test_the_empirical_descent_flags_its_blend_with_forward_speed_only():
+    """inflow_extrapolated marks where the empirical descent curve (measured in axial
+    descent) is blended by propmap's in-plane fade: oblique descent in the vortex-ring range;
+    not axial descent (the measurements' own range), not fast forward flight with a slight
+    descent, not Glauert's model."""
+    prop = pm.load_propeller("apce_8x6")
+    p = pm.default_params("apce_8x6")[0]
+    V = np.array([2.0, 4.0, 6.0])[:, None]
+    b = np.radians([180.0, 150.0, 120.0, 95.0])[None, :]
+    r = pm.rotor_loads(prop, p, 700.0, V, b)
+    flagged = r.inflow_extrapolated
+    assert not flagged[:, 0].any()  # axial descent
+    assert not flagged[:, 3].any()  # 95 deg: forward flight, slight descent
+    assert flagged[1:, 1:3].any()  # oblique descent at 0.3 <= lambda2 < 2
+    assert np.all(~flagged | ((r.descent_ratio >= 0.3) & (r.descent_ratio < 2)))
+    g = pm.rotor_loads(prop, p.replace(descent="glauert"), 700.0, V, b)
+    assert not g.inflow_extrapolated.any()

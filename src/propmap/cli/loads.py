@@ -26,7 +26,9 @@ FLAG_MEANINGS = {
                    "the loads are the empirical mean)",
     "multiple_roots": "an annulus had several inflow roots; the selection rule of docs/solver.md picked one",
     "reverse_flow": "part of the blade root sees the air from behind (V sin(beta) > Omega r_hub)",
-    "inflow_extrapolated": "the linear inflow model was used beyond its validity (net upflow through the disk)",
+    "inflow_extrapolated": "the inflow model was used beyond the measurements behind it (a linear inflow model "
+                           "with net upflow through the disk, or the empirical descent curve blended with "
+                           "forward speed)",
 }
 CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused

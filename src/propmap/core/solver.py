@@ -18,7 +18,7 @@ from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
-from .states import STATES, descent_state
+from .states import K_WINDMILL, STATES, VRS_BAND, descent_state
 
 __all__ = [
     "Discretization",
@@ -241,8 +241,12 @@ class RotorLoads:
     reverse_flow_radius : ndarray
         V sin(beta) / Omega [m]: radius inside which the retreating blade sees reverse flow.
     inflow_extrapolated : ndarray of bool
-        A linear inflow model was used with the wake above the disk (inflow ratio < 0, the
-        model's mirrored extrapolation; _physics.inflow_gradients).
+        The inflow model was used outside the measurements behind it: a linear inflow model
+        with the wake above the disk (inflow ratio < 0, the model's mirrored extrapolation;
+        _physics.inflow_gradients), or the empirical descent momentum (``descent =
+        "empirical"``) in the vortex-ring or turbulent-wake range (0.3 <= lambda2 < 2) with an
+        in-plane speed that puts its fade with V sin(beta) (propmap's, not measured) between
+        5% and 95%.
     n_evaluations : ndarray of int
         Residual evaluations (each n_azimuth element evaluations) spent on the point.
     rho : float
@@ -526,6 +530,11 @@ def rotor_loads(
     rfr = Vs / om1
     extrapolated = (Vc + vbar < 0) & (Vs != 0) if inflow != ph.INFLOW_UNIFORM else np.zeros(n, dtype=bool)
     state, v_h, k_desc, _ = descent_state(T, V1, b1, vbar, air.rho, propeller.radius)
+    if params.descent == "empirical":  # the axial measurements' curve, blended in forward flight by propmap's fade
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            fade = np.exp(-(Vs / np.maximum(np.abs(vbar), 1e-12)) ** 2)
+            extrapolated = extrapolated | ((k_desc >= VRS_BAND["k_min"]) & (k_desc < K_WINDMILL) & (fade > 0.05)
+                                           & (fade < 0.95))
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
