@@ -78,7 +78,7 @@ def test_trim_round_trip(rotor, naca0015):
 def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     with pytest.raises(TrimError, match=r"no collective in \[-20, 30\] deg makes thrust=10000 N at operating point \(omega=100 rad/s.*spans \["):
         trim_collective(rotor, naca0015, 1e4, 100.0)
-    res = trim_collective(rotor, naca0015, np.array([50.0, 1e4]), 100.0, on_missing="nan")
+    res = trim_collective(rotor, naca0015, np.array([40.0, 1e4]), 100.0, on_missing="nan")
     assert np.isfinite(res.collective[0]) and np.isnan(res.collective[1]) and np.isnan(res.loads.thrust[1])
     assert list(res.n_solutions) == [1, 0] or res.n_solutions[1] == 0
     with pytest.raises(ValueError, match="bounds must satisfy"):
@@ -146,7 +146,11 @@ def test_section_presets_reproduce_their_published_polar(name):
     cl = pm.lift_coefficient(a, p, re)
     cd = pm.drag_coefficient(a, re, p)
     assert np.sqrt(np.mean((cl - t.cl.to_numpy())[pre] ** 2)) < 0.03
-    assert np.sqrt(np.mean(((cd - t.cd.to_numpy()) / t.cd.to_numpy())[pre] ** 2)) < 0.08
+    # 12% in drag: the stall blend's sharpness is held at M = 20 so that a descending rotor has
+    # one inflow root per annulus (tools/fit_section_presets.py, M_MAX); at 6-8 deg the blend
+    # already adds some flat-plate drag
+    assert np.sqrt(np.mean(((cd - t.cd.to_numpy()) / t.cd.to_numpy())[pre] ** 2)) < 0.13
+    assert p.M <= 20.0
     assert p.alpha_L0 == 0.0 and p.cl_min == -p.cl_max  # symmetric
     # the published minimum drag at the reference Reynolds number (regression of the table's 0 deg values)
     assert float(pm.drag_coefficient(0.0, 3.6e5, p)) == pytest.approx(float(t.cd[(t.alpha_deg == 0) &
@@ -276,3 +280,57 @@ def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rot
     assert 1.7 <= lam[i] <= 2.3 and np.all(Q[:i] > 0)
     gl = trim_collective(rotor, naca0015.replace(descent="glauert"), T0, om, lam * vh, math.pi)
     assert np.abs(np.diff(np.degrees(gl.collective))).max() > 5.0
+
+
+@pytest.mark.parametrize("twist_deg", [0.0, -16.0])
+def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(naca0015, twist_deg):
+    """Axial descent of a NACA 0015 model rotor at 8 deg collective from hover to 3 v_h in steps of
+    0.005 v_h: no annulus with several inflow roots and no thrust step above 0.6% of the hover
+    thrust. Before, a sharper preset stall (M = 38) and a tip-loss angle taken from U_P (which
+    passes through 0 near an annulus' ideal autorotation) gave 400-800 multiple-root points and
+    steps of 2-3% (the annuli switching branch one by one)."""
+    R = 0.6
+    x = np.linspace(0.15, 1.0, 12)
+    rot = pm.Propeller(name="twisted", radius=R, n_blades=3, r=x * R, chord=np.full(x.size, 0.05),
+                       theta=np.radians(twist_deg * (x - 0.75)))
+    om, coll = 1200 * RPM, math.radians(8.0)
+    T0 = float(pm.rotor_loads(rot, naca0015, om, 0.0, 0.0, collective=coll).thrust)
+    vh = math.sqrt(T0 / (2 * 1.225 * math.pi * R**2))
+    r = pm.rotor_loads(rot, naca0015, om, np.linspace(0.0, 3.0, 601) * vh, math.pi, collective=coll)
+    assert not r.multiple_roots.any()
+    assert np.max(np.abs(np.diff(r.thrust))) / T0 < 0.006
+
+
+def test_cli_trim_hover_reference_and_flag_meanings_in_text(tmp_path, capsys):
+    """`trim --hover-reference` prints dCQ at constant thrust (0 in hover, negative in descent)
+    and, in text output, each flag with its meaning."""
+    g = tmp_path / "rot_47x1_geom.txt"
+    g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
+    base = ["trim", str(g), "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--hover-reference"]
+    assert main(base + ["--json"]) == 0
+    import json
+
+    assert json.loads(capsys.readouterr().out)["dCQ_constant_thrust"] == pytest.approx(0.0, abs=1e-9)
+    assert main(base + ["--airspeed", "2", "--incidence-deg", "180"]) == 0
+    text = capsys.readouterr().out
+    dcq = float(text.split("dCQ at constant thrust (minus hover at the same T and rpm) = ")[1].split()[0])
+    assert dcq < 0
+    assert "state: vortex ring" in text and "vortex_ring: inside the vortex-ring band" in text
+
+
+def test_cli_fit_loads_of_a_collective_sweep_warns_with_the_generic_base(tmp_path, capsys):
+    """A rotor's hover collective sweep fitted from the generic (cambered propeller) base: the
+    command warns and names the section presets; from a preset it does not."""
+    R = 0.6
+    g = tmp_path / "rot_47x1_geom.txt"
+    g.write_text("r/R c/R beta\n0.15 0.0833 0\n0.6 0.0833 0\n1.0 0.0833 0\n")
+    rot = pm.read_geometry(g, diameter_in=2 * R / 0.0254, n_blades=3)
+    coll = np.arange(0.0, 11.0, 2.0)
+    r = pm.rotor_loads(rot, section_preset("naca0015"), 1200 * RPM, 0.0, 0.0, collective=np.radians(coll))
+    data = tmp_path / "sweep.csv"
+    pd.DataFrame({"rpm": 1200.0, "thrust": r.thrust, "torque": r.torque, "collective_deg": coll}).to_csv(data, index=False)
+    args = ["fit", "loads", str(data), "--prop", str(g), "--diameter-in", f"{2 * R / 0.0254}", "--blades", "3"]
+    assert main(args + ["--out", str(tmp_path / "a.toml")]) == 0
+    assert "section:NAME" in capsys.readouterr().err
+    assert main(args + ["--base", "section:naca0015", "--out", str(tmp_path / "b.toml")]) == 0
+    assert "section:NAME" not in capsys.readouterr().err

@@ -37,9 +37,37 @@ def test_band_limits(k, m, state):
     assert VRS_BAND == {"k_min": 0.3, "k_max": 1.5, "m_max": 0.9}
 
 
-def test_turbulent_wake_is_upward_flow_through_the_disk_short_of_the_windmill_brake():
+def test_turbulent_wake_lies_between_the_band_and_the_windmill_brake_at_low_in_plane_speed():
     assert STATES[int(_at(1.8, 0.0, v_mean=8.0)[0])] == "turbulent wake"  # V_z + v = -9 + 8 < 0
-    assert STATES[int(_at(1.8, 0.0, v_mean=10.0)[0])] == "normal working"  # beyond the band, flow still down
+    # beyond the band with the flow still down (k 1.5 to ideal autorotation): not normal working
+    assert STATES[int(_at(1.6, 0.0)[0])] == "turbulent wake"
+    assert STATES[int(_at(1.8, 0.0, v_mean=10.0)[0])] == "turbulent wake"
+    assert STATES[int(_at(1.3, 0.8)[0])] == "turbulent wake"  # oblique, outside the band's upper side
+    assert STATES[int(_at(0.4, 0.8)[0])] == "normal working"  # outside its lower side: slow descent
+
+
+def test_fast_descent_in_forward_flight_is_never_a_turbulent_wake():
+    """In-plane speed beyond the band's closing speed carries the wake away: normal working
+    with the flow down through the disk, windmill brake with it up (an autogyro)."""
+    assert STATES[int(_at(1.0, 3.7, v_mean=3.0)[0])] == "windmill brake"  # V_z + v = -5 + 3 < 0
+    assert STATES[int(_at(1.0, 3.7, v_mean=6.0)[0])] == "normal working"
+    prop = pm.load_propeller("apce_8x6")
+    r = pm.rotor_loads(prop, pm.generic_params(), 8000 * math.pi / 30, [30.0, 20.0, 20.0],
+                       np.radians([100.0, 100.0, 120.0]))
+    assert "turbulent wake" not in list(r.state_name) and not r.vortex_ring.any()
+
+
+def test_states_of_an_axial_descent_are_ordered_without_gaps():
+    """Axial descent: normal working, vortex ring, turbulent wake, windmill brake, each once
+    and in that order (between k = 1.5 and ideal autorotation the state was reported as
+    normal working)."""
+    prop = pm.load_propeller("apce_8x6")
+    r = pm.rotor_loads(prop, pm.generic_params(), 6000 * math.pi / 30, np.linspace(0.0, 25.0, 251), math.pi)
+    names = list(r.state_name)
+    runs = [n for i, n in enumerate(names) if i == 0 or n != names[i - 1]]
+    assert runs == list(STATES)
+    k = r.descent_ratio
+    assert np.all(k[np.array(names) == "turbulent wake"] >= 0.9) and np.all(k[np.array(names) == "turbulent wake"] < 2)
 
 
 def test_forward_flight_with_slight_descent_is_not_a_vortex_ring():

@@ -36,6 +36,13 @@ SOURCE = ("Sheldahl & Klimas, Sandia SAND80-2114 (1981), NACA {name} tables at R
           "fitted by tools/fit_section_presets.py")
 #: weight of the attached-flow drag errors against the lift errors in the stall fit
 DRAG_WEIGHT = 10.0
+#: largest stall-blend sharpness allowed [1/rad]: sharper blends fold C_L(alpha) so that an
+#: annulus has several inflow roots in the windmill brake and the thrust of a descending rotor
+#: steps by 2-3% of its hover thrust from one descent rate to the next (measured on an untwisted
+#: and a -16 deg twisted 0.6 m rotor at 6-12 deg collective: M = 38 gives 785 multiple-root
+#: points of 1803 and 2.9% steps, M = 25 292 and 1.4%, M = 20 none and 0.44%, the step of the
+#: sweep itself); 20 is also the cambered model's default (docs/models.md)
+M_MAX = 20.0
 NAMES = ("cl_alpha", "cl_max", "M", "cd_min", "cd2", "re_exp", "re_exp_lift", "re_exp_stall")
 
 
@@ -53,7 +60,8 @@ def fit(table: pd.DataFrame):
        ``cd_min`` and ``re_exp``: C_D at 0 deg against Re (log-log line through the
        reference); ``cd2``: (C_D - C_D(0)) against C_L^2 over 0-8 deg, all Reynolds numbers.
     2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg and on
-       C_D in attached flow (below the tabulated drag break), the rest held.
+       C_D in attached flow (below the tabulated drag break), the rest held; M at most
+       :data:`M_MAX` (no root folds).
     """
     a = np.radians(table.alpha_deg.to_numpy())
     re = table.reynolds.to_numpy(float)
@@ -85,7 +93,7 @@ def fit(table: pd.DataFrame):
         return np.concatenate([lift_coefficient(a, p, re) - cl,
                                DRAG_WEIGHT * (drag_coefficient(a[attached], re[attached], p) - cd[attached])])
 
-    res = least_squares(residual, [1.1, 60.0, 0.15], bounds=([0.5, 5.0, -0.5], [2.5, 500.0, 0.5]),
+    res = least_squares(residual, [1.1, 0.5 * M_MAX, 0.15], bounds=([0.5, 5.0, -0.5], [2.5, M_MAX, 0.5]),
                         x_scale=[0.1, 10.0, 0.1])
     p = make(res.x)
     e_cl = lift_coefficient(a, p, re) - cl

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, _is_file, _short, check_outputs, load_params, load_prop, parse_names
+from ._common import InputError, PathArg, _is_file, _short, check_outputs, check_section_match, load_params, load_prop, parse_names
 
 fit_options = [
     click.option("--out", type=PathArg(), required=True, help="Parameter TOML to write."),
@@ -236,8 +236,9 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     """Fit to load measurements of one propeller.
 
     SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
-    rpm and any of thrust, drag, torque (airspeed and incidence_deg optional: a static
-    thrust stand; optional group), or UIUC-format static and wind-tunnel files.
+    rpm and any of thrust, drag, torque (airspeed, incidence_deg and collective_deg optional:
+    a static thrust stand, or a rotor's hover collective sweep; optional group), or
+    UIUC-format static and wind-tunnel files.
     """
     from dataclasses import replace
 
@@ -249,6 +250,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params(base_spec or "generic", option="--base")
     data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
+    check_section_match(prop, base_label)
     held = parse_names("--holdout", holdout, what="run") or ()
     population = None
     if entry is not None and held:

@@ -78,6 +78,8 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     if dcq is not None:
         click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
     click.echo(f"  state: {out['state']}  flags: {', '.join(out['flags']) or 'none'}")
+    for f in out["flags"]:
+        click.echo(f"    {f}: {FLAG_MEANINGS[f]}")
 
 
 def _finite(x):

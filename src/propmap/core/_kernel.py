@@ -209,8 +209,15 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
             # the loss factor at every trial first, in branch-free loops of their own over all
             # annuli (contiguous, so they vectorise; inside each residual it is a long scalar
             # chain). Annuli already solved are recomputed harmlessly.
-            for j in range(nr):
-                inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j])
+            if emp and Vc < 0.0:
+                # empirical descent: the vortex sheets are carried by the mass-flow velocity of
+                # the closure (_physics.axial_mass_flow), not by U_P, which passes through 0 near
+                # the annulus' ideal autorotation and would make F(v) jump there (several roots)
+                for j in range(nr):
+                    inv_sin[j] = _inverse_sin_phi(_axial_mass_flow(trial[j], Vc, Vs), Om * y[j])
+            else:
+                for j in range(nr):
+                    inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j])
             if tip:
                 for j in range(nr):
                     floss[j] = _prandtl(ct[j], inv_sin[j])

@@ -255,8 +255,9 @@ def momentum_thrust(v, mom_fac, Vs, Vc):
 # The empirical induced velocity of a rotor in axial descent through the vortex-ring and
 # turbulent-wake states: J. G. Leishman, Principles of Helicopter Aerodynamics, 2nd ed., 2006,
 # Ch. 2, a fit to the wind-tunnel measurements on four model rotors of W. Castles and R. B.
-# Gray, NACA TN 2474, 1951:  v/v_h = 1 + 1.125 k - 1.372 k^2 + 1.718 k^3 - 0.655 k^4,
-# k = -V_c / v_h in [0, 2]. propmap subtracts EMPIRICAL_SHIFT k (1.3% at k = 2) so that the
+# Gray, NACA TN 2474, 1951:  v/v_h = kappa + 1.125 k - 1.372 k^2 + 1.718 k^3 - 0.655 k^4,
+# k = -V_c / v_h in [0, 2], with kappa = 1 here (Leishman's 1.15 is the measured rotors'
+# induced-power factor; the BEMT computes those losses itself: docs/models.md, Descent). propmap subtracts EMPIRICAL_SHIFT k (1.3% at k = 2) so that the
 # curve meets Glauert's windmill-brake branch (v/v_h = 1 at k = 2) as it meets hover at k = 0.
 EMPIRICAL_SHIFT = 0.0130
 EMPIRICAL_C1 = 1.125 - EMPIRICAL_SHIFT
@@ -282,7 +283,9 @@ def axial_mass_flow(v, Vc, Vs):
     (propmap's choice: half gone at Vs = 0.83 v, nearly all at Vs = 2 v) and Glauert's form
     holds in forward flight. Continuous in v, Vc and Vs, and v sqrt(Vs^2 + W^2) grows with v
     (checked on a grid of descent and in-plane speeds): one root per annulus from the
-    momentum side (docs/models.md, Descent).
+    momentum side (docs/models.md, Descent). With tip loss, Prandtl's factor takes its inflow
+    angle from this velocity in descent (the kernel's loss loop), so that it does not jump
+    where U_P = Vc + v passes through 0.
     """
     d = -Vc
     glauert = abs(Vc + v)

@@ -10,8 +10,12 @@ Principles of Helicopter Aerodynamics, 2nd ed., 2006, Ch. 2):
 
 * **windmill brake**: k >= 2, where momentum theory holds again (the flow through the disk is
   upward and smooth) and the empirical curve of the descent model meets Glauert's branch;
-* **turbulent wake**: the mean flow through the disk is upward (V cos beta + v_mean < 0,
-  beyond ideal autorotation) with k < 2;
+  also a descent fast enough in-plane (m >= 0.9, the band's closing speed below) with the mean
+  flow through the disk upward (V cos beta + v_mean < 0): the wake is swept away, momentum
+  theory holds and the rotor takes energy from the flow (an autogyro's state);
+* **turbulent wake**: between the vortex-ring band and the windmill brake at low in-plane
+  speed (m < 0.9, k < 2, outside the band on its high-descent side: k above the band's centre),
+  which includes ideal autorotation (v_mean = -V cos beta, k about 1.8 in axial descent);
 * **vortex ring**: inside the band in which the measured rotors' thrust fluctuates and the
   wake recirculates: an ellipse in (m, k) through descent rates 0.3 v_h and 1.5 v_h in axial
   descent, closing at an in-plane speed of 0.9 v_h (the classical band that summaries of the
@@ -76,9 +80,11 @@ def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float
         half = 0.5 * (band["k_max"] - band["k_min"])
         in_ellipse = ((k - centre) / half) ** 2 + (m / band["m_max"]) ** 2 <= 1.0
     state = np.zeros(np.shape(T), dtype=np.int64)
-    descending = vz < 0
-    turbulent = descending & (vz + np.asarray(v_mean, float) < 0) & (vh > 0)
-    state = np.where(in_ellipse & (vh > 0), 1, state)
-    state = np.where(turbulent, 2, state)
-    state = np.where(descending & ((vh == 0) | (k >= K_WINDMILL)), 3, state)
+    descending = (vz < 0) & (vh > 0)
+    slow = m < band["m_max"]  # NaN (no thrust) compares False
+    upflow = vz + np.asarray(v_mean, float) < 0
+    state = np.where(descending & slow & in_ellipse, 1, state)
+    state = np.where(descending & slow & ~in_ellipse & (k > centre), 2, state)
+    state = np.where(descending & ~slow & upflow, 3, state)
+    state = np.where((vz < 0) & ((vh == 0) | (k >= K_WINDMILL)), 3, state)
     return state, vh, k, m
