@@ -127,11 +127,12 @@ def test_invariants_with_the_cambered_section_and_losses(apc8x6, params, envelop
     e = pm.rotor_loads(apc8x6, params, o, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)
     Vs, Vc = (V * np.sin(b))[:, None], (V * np.cos(b))[:, None]
-    F = loss_factor_numpy(Vc + e.v_i, o[:, None] * nd.y[None, :], nd.ct[None, :], nd.ch[None, :])
-    # eq (10)'s axial mass flow: Glauert's |Vc + v|, or the empirical one in descent (the default)
+    # eq (10)'s axial mass flow: Glauert's |Vc + v|, or the empirical one in descent (the default),
+    # which also sets the loss factor's inflow angle there
     from propmap.core._physics import axial_mass_flow
 
     W_ax = np.vectorize(axial_mass_flow)(e.v_i, Vc, Vs) if params.descent == "empirical" else np.abs(Vc + e.v_i)
+    F = loss_factor_numpy(W_ax, o[:, None] * nd.y[None, :], nd.ct[None, :], nd.ch[None, :])
     T_bemt = (F * nd.mfac * e.v_i * np.sqrt(Vs**2 + W_ax**2)) @ nd.w
     assert np.max(np.abs(T_bemt - e.thrust)) < 1e-6 * float(pm.rotor_loads(apc8x6, params, 12000 * RPM, 0, 0, radial=True).thrust)
 
