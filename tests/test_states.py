@@ -113,3 +113,17 @@ def test_the_empirical_descent_flags_its_blend_with_forward_speed_only():
     assert np.all(~flagged | ((r.descent_ratio >= 0.3) & (r.descent_ratio < 2)))
     g = pm.rotor_loads(prop, p.replace(descent="glauert"), 700.0, V, b)
     assert not g.inflow_extrapolated.any()
+
+
+@pytest.mark.parametrize("name", ["apce_8x6", "apce_10x7"])
+def test_a_vanishing_descent_rate_gives_the_hover_loads(name):
+    """Regression (issue 19 audit): at 1e-300 to 1e-11 m/s of descent the empirical curve's
+    inversion clipped its descent ratio at 1e-12 and returned a thrust near 0, converged and
+    unflagged; the loads must tend to hover's."""
+    prop = pm.load_propeller(name)
+    p = pm.default_params(name)[0]
+    V = np.array([0.0, 1e-300, 1e-100, 1e-14, 1e-12, 1e-11, 1e-9])
+    for b in (math.pi, math.radians(135.0)):
+        r = pm.rotor_loads(prop, p, 5500 * math.pi / 30, V, b)
+        np.testing.assert_allclose(r.thrust, r.thrust[0], rtol=1e-8)
+        np.testing.assert_allclose(r.torque, r.torque[0], rtol=1e-8)

@@ -264,6 +264,8 @@ EMPIRICAL_C1 = 1.125 - EMPIRICAL_SHIFT
 EMPIRICAL_C2 = -1.372
 EMPIRICAL_C3 = 1.718
 EMPIRICAL_C4 = -0.655
+#: v / (-V_c) above which the curve is taken at hover (Glauert's form; k < 1e-8)
+EMPIRICAL_HOVER_RATIO = 1e8
 #: Newton steps of the curve's inversion (converged to round-off from k = min(d/v, 2) in tests)
 EMPIRICAL_NEWTON = 8
 
@@ -289,7 +291,9 @@ def axial_mass_flow(v, Vc, Vs):
     """
     d = -Vc
     glauert = abs(Vc + v)
-    if d <= 0.0 or v <= 0.5 * d:
+    if d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
+        # beyond EMPIRICAL_HOVER_RATIO the curve is at hover (k < 1e-8, where it differs from
+        # Glauert's by O(k)); the Newton solve below would clip k there and lose the thrust
         return glauert
     r = v / d
     k = min(1.0 / r, 2.0)
