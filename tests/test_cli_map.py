@@ -33,9 +33,12 @@ def test_map_netcdf_with_sidecar_check_and_plot(capsys, tmp_path):
     rm = RotorMap.open(out)
     np.testing.assert_allclose(rm.dataset["rpm"].values, np.linspace(3000, 9000, 5))
     assert [p.name for p in (tmp_path / "plots").iterdir()] == ["map_contours_6000rpm.png"]
+    # a coarse test grid: exit 3 at the default 1% threshold, 0 with a looser one
     code, text, err = run(capsys, "map", "--check", out, "--check-points", "40", "--json")
+    assert code == 3 and json.loads(text)["passed"] is False
+    code, text, err = run(capsys, "map", "--check", out, "--check-points", "40", "--json", "--max-error-pct", "50")
     d = json.loads(text)
-    assert code == 0 and d["recomputed"]["check_points"] == 40 and d["stored"]["check_points"] == 60
+    assert code == 0 and d["passed"] and d["recomputed"]["check_points"] == 40 and d["stored"]["check_points"] == 60
     assert d["recomputed"]["check_seed"] == d["stored"]["check_seed"] + 1  # fresh points
     # the sidecar is strict JSON: an error with no point to measure it is null, not NaN
     json.loads((tmp_path / "m.nc.json").read_text(), parse_constant=lambda c: pytest.fail(f"bare {c}"))

@@ -140,9 +140,10 @@ def _synthetic_map(ds, f):
     return out, R
 
 
-@pytest.mark.parametrize("interpolation, f", [
-    ("linear", lambda O, V, B: 1 + 0.01 * O - 0.2 * V + 0.3 * B + 1e-3 * O * V * B),
-    ("cubic", lambda O, V, B: 1 + 1e-4 * O**2 - 0.02 * V**2 + 0.3 * B**2 + 1e-5 * O**2 * V**2 * B**2 + 0.1 * O * V),
+@pytest.mark.parametrize("interpolation, f", [  # scaled by 1e-7: the loads stay within a map's ranges
+    ("linear", lambda O, V, B: 1e-7 * (1 + 0.01 * O - 0.2 * V + 0.3 * B + 1e-3 * O * V * B)),
+    ("cubic", lambda O, V, B: 1e-7 * (1 + 1e-4 * O**2 - 0.02 * V**2 + 0.3 * B**2 + 1e-5 * O**2 * V**2 * B**2
+                                      + 0.1 * O * V)),
 ])
 def test_interpolation_is_exact_for_its_polynomials(small_map, interpolation, f):
     """Multilinear reproduces functions linear in each axis; the cubic (three-point slopes
@@ -160,8 +161,8 @@ def test_interpolation_is_exact_for_its_polynomials(small_map, interpolation, f)
     np.testing.assert_allclose(got.rolling_moment, 4 * ref, rtol=1e-10)
     assert not got.flagged.any()
     if interpolation == "linear":  # and the other method is not exact for it (the test can fail)
-        quad = RotorMap(_synthetic_map(ds, lambda O, V, B: 1 + 0.3 * B**2)[0], "linear").loads(O, V, B)
-        assert np.max(np.abs(quad.thrust / ((O * R) ** 2 + V**2) - (1 + 0.3 * B**2))) > 1e-3
+        quad = RotorMap(_synthetic_map(ds, lambda O, V, B: 1e-3 * (1 + 0.3 * B**2))[0], "linear").loads(O, V, B)
+        assert np.max(np.abs(quad.thrust / ((O * R) ** 2 + V**2) / 1e-3 - (1 + 0.3 * B**2))) > 1e-3
 
 
 def test_cubic_equals_the_model_at_nodes_and_beats_linear_off_grid(small_map):

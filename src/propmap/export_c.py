@@ -23,8 +23,8 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  * Parameters: {params_label}. Data: {citation}
  * Grid: {n0} rpm ({rpm0:g}-{rpm1:g} rpm) x {n1} airspeed ({v0:g}-{v1:g} m/s) x {n2} incidence
  * ({b0:g}-{b1:g} deg); table in {ctype}; {interpolation} interpolation. Its error against the
- * full model (off-grid check, outside flagged cells): T {eT:.3%} of static thrust, Q {eQ:.3%} of
- * static torque, D {eD:.3%} of the largest drag (max over {npts} random points).
+ * full model (off-grid check, outside flagged cells): T {eT} of static thrust, Q {eQ} of
+ * static torque, D {eD} of the largest drag (max over {npts} random points).
  *
  * int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4]);
  *   omega [rad/s], airspeed [m/s], incidence [rad] (0 climb, pi/2 edgewise, pi descent).
@@ -203,6 +203,12 @@ _C_RESERVED = (
 )
 
 
+def _pct(value) -> str:
+    """A checked error as a percentage, or ``n/a`` where there was no point to measure it."""
+    x = float(np.nan if value is None else value)
+    return f"{x:.3%}" if np.isfinite(x) else "n/a"
+
+
 def _reserved(identifier: str) -> str | None:
     """What reserves ``identifier`` in C (or POSIX <math.h>), or None."""
     for pattern, why in _C_RESERVED:
@@ -287,7 +293,15 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     ------
     ValueError
         Unknown ``dtype`` or a bad prefix (:func:`c_prefix`).
+    TypeError
+        ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
+        ``RotorMap(ds)``).
     """
+    from .maps import RotorMap
+
+    if not isinstance(rotor_map, RotorMap):
+        raise TypeError(f"rotor_map must be a propmap.RotorMap (RotorMap(ds) or RotorMap.open(path)), "
+                        f"got {type(rotor_map).__name__}")
     if dtype not in ("float", "double"):
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
     path = Path(path)
@@ -313,8 +327,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         model=a.get("model", ""), params_label=a.get("params_label", "") or a.get("section_model", ""),
         citation=a.get("citation", "") or "-", n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] * 30 / np.pi,
         rpm1=rm.omega[-1] * 30 / np.pi, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
-        b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=float(a.get(check + "thrust_max", np.nan)),
-        eQ=float(a.get(check + "torque_max", np.nan)), eD=float(a.get(check + "drag_max", np.nan)),
+        b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),
+        eQ=_pct(a.get(check + "torque_max")), eD=_pct(a.get(check + "drag_max")),
         interpolation=rm.interpolation,
         npts=int(a.get("check_points", 0)), prefix=prefix, PREFIX=prefix.upper(), GUARD=guard,
         radius=float(rm.radius), ax0=", ".join(format(float(x), fmt_axis) for x in rm.omega),

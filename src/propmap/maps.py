@@ -26,7 +26,7 @@ import numpy as np
 from . import __version__
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller, _real
-from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
 from .io.mapfile import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller, map_model,
                          read_dataset, read_sidecar, write_map, write_sidecar)
 
@@ -119,8 +119,9 @@ def scheduler_client(address: str):
     ------
     ValueError
         Not such an address (a port outside [1, 65535] included), or no scheduler
-        answering there within SCHEDULER_TIMEOUT (10 s); the message names the
-        scheduler.
+        answering there within SCHEDULER_TIMEOUT (10 s; a server that accepts the
+        connection but does not answer dask's handshake within twice that); the message
+        names the scheduler.
     """
     from distributed import Client
 
@@ -128,11 +129,28 @@ def scheduler_client(address: str):
     if m is None or not 1 <= int(m.group(3)) <= 65535:
         raise ValueError(f"scheduler must be an address PROTOCOL://HOST:PORT (e.g. tcp://10.0.0.5:8786; protocol "
                          f"tcp, tls, ucx, ws or wss; port in [1, 65535]), got {address!r:.80}")
-    try:
-        return Client(address, timeout=SCHEDULER_TIMEOUT)
-    except Exception as exc:  # noqa: BLE001 -- distributed raises OSError, TimeoutError, ValueError, ...
-        raise ValueError(f"scheduler: no scheduler answered at {address} within {SCHEDULER_TIMEOUT:g} s "
-                         f"({type(exc).__name__}: {' '.join(str(exc).split())[:120]})") from None
+    import threading
+
+    # Client's timeout bounds the connection, not the handshake: a server that accepts the
+    # connection but does not speak dask's protocol would keep it waiting forever, so the
+    # client is made in a thread that is given up after twice the timeout
+    box: dict = {}
+
+    def connect() -> None:
+        try:
+            box["client"] = Client(address, timeout=SCHEDULER_TIMEOUT)
+        except Exception as exc:  # noqa: BLE001 -- distributed raises OSError, TimeoutError, ValueError, ...
+            box["error"] = exc
+
+    worker = threading.Thread(target=connect, name="propmap-scheduler-connect", daemon=True)
+    worker.start()
+    worker.join(2 * SCHEDULER_TIMEOUT)
+    if "client" in box:
+        return box["client"]
+    exc = box.get("error")
+    why = (f"{type(exc).__name__}: {' '.join(str(exc).split())[:120]}" if exc is not None
+           else "connected, but no dask scheduler answered the handshake")
+    raise ValueError(f"scheduler: no scheduler answered at {address} within {SCHEDULER_TIMEOUT:g} s ({why})")
 
 
 def _solve_block(propeller, params, air, discretization, om, V, b):
@@ -191,9 +209,13 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         0.5-100 in, more than 100 blades; io.mapfile); ``chunk_points`` not an integer
         in [1, MAX_NODES]; ``n_check`` not an integer in [0, 1,000,000]; ``seed`` not an
         integer >= 0; a scheduler address that cannot be reached within 10 s.
+    TypeError
+        A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
     """
     import dask.array as da
     import xarray as xr
+
+    check_model_args(propeller, params, air, discretization)
 
     from .io.calibration import params_to_si
 

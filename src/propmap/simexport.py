@@ -46,7 +46,7 @@ import numpy as np
 from . import __version__
 from .core.airfoil import Air
 from .core.geometry import _real
-from .core.solver import rotor_loads
+from .core.solver import check_model_args, rotor_loads
 
 __all__ = ["Envelope", "SimExport", "TARGETS", "default_envelope", "error_lines", "export_sim", "predict",
            "write_export"]
@@ -62,8 +62,11 @@ GAZEBO_AXIAL_SPEED = 25.0  # [m/s] the PX4 Gazebo motor model's fixed thrust fad
 #: refuses the envelope.
 DETERMINED = 1e-3
 #: the largest condition number of the fit's (column-normalised) design matrix: beyond it
-#: the envelope cannot separate the terms (e.g. a single rpm and a single speed)
-MAX_CONDITION = 1e8
+#: the envelope cannot separate the terms (e.g. a single rpm and a single speed). The default
+#: envelopes of the three targets give 1-4 on catalogue propellers; an envelope that is
+#: nearly a point (rpm 5000-5000.001, airspeed 10-10.000001 m/s) gives 1.5e7, where 1e8 let
+#: a coefficient be fitted to round-off and written without a word
+MAX_CONDITION = 1e4
 #: fewest converged points a fit takes
 MIN_POINTS = 10
 
@@ -363,6 +366,7 @@ def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: En
         ``SimExport.fixed``); an envelope whose every point is flagged (its errors
         outside flagged regions are NaN: nothing to measure them on).
     """
+    check_model_args(propeller, params, air)
     if target not in TARGETS:
         raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r:.60}")
     for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):

@@ -28,15 +28,16 @@ class InputError(click.ClickException):
 
 
 class PathArg(click.Path):
-    """``click.Path`` giving a ``pathlib.Path`` that refuses an empty value: click alone
-    turns ``--out ''`` into ``Path('.')``, the working folder."""
+    """``click.Path`` giving a ``pathlib.Path`` that refuses an empty or all-blank value: click
+    alone turns ``--out ''`` into ``Path('.')``, the working folder (a name of blanks is a
+    typing slip, not a file anyone wants)."""
 
     def __init__(self, **kwargs) -> None:
         super().__init__(path_type=Path, **kwargs)
 
     def convert(self, value, param, ctx):
-        if isinstance(value, str) and value == "":
-            self.fail("the path is empty", param, ctx)
+        if isinstance(value, str) and not value.strip():
+            self.fail("the path is empty" if value == "" else f"the path {value!r} is only blanks", param, ctx)
         return super().convert(value, param, ctx)
 
 
@@ -151,6 +152,8 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     """
     from ..io.params_file import resolve_params
 
+    if isinstance(spec, str) and not spec.strip():
+        raise InputError(f"{option}: the value is empty; leave the option out for the default")
     if spec is None:
         from ..io.calibration import default_params
         from ..io.catalogue import catalogue

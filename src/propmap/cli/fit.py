@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 from pathlib import Path
 
 import click
@@ -205,10 +206,17 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
+    seen: dict = {}
+    for s in sources:
+        key = os.path.realpath(s)
+        if key in seen:
+            raise InputError(f"SOURCE: {_short(s)} is the same file as {_short(seen[key])}: its data would count twice")
+        seen[key] = s
     prop = load_prop(prop_spec, diameter_in, blades)
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
         if not other:
+            _warn_other_propeller(sources, prop)
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
         if len(sources) > 1:
             raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
@@ -216,6 +224,22 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
         return read_loads(sources[0]), prop, None, Path(sources[0]).name
     except DataError as exc:
         raise InputError(f"SOURCE: {exc}") from None
+
+
+def _warn_other_propeller(sources, prop) -> None:
+    """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
+    fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run."""
+    import re
+
+    from ._common import warn
+
+    base = re.sub(r"_geom$", "", prop.name)
+    for s in sources:
+        m = re.match(r"(.+?)_(static_[0-9a-z]+|[0-9]{3,4}[a-z]{2}_[0-9]+)\.txt$", Path(s).name)
+        if m and base and m.group(1) != base:
+            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, fitted with --prop "
+                 f"{prop.name!r}; check that they are the same propeller")
+            return
 
 
 @fit.command("loads")
@@ -248,7 +272,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     from ..validation import holdout_comparison
 
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
-    base, air, base_label = load_params(base_spec or "generic", option="--base")
+    base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
     data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
     check_section_match(prop, base_label)
     held = parse_names("--holdout", holdout, what="run") or ()

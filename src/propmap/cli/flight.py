@@ -264,7 +264,7 @@ def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
     veh = _vehicle(vehicle)
     check_outputs([("--out", out)], _vehicle_inputs(vehicle))
-    params, air, label = load_params(params_spec or "generic", option="--params")
+    params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
     air = _rho(rho, air)
     body = veh.body_drag
     if params_spec is not None and Path(params_spec).is_file():

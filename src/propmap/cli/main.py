@@ -64,7 +64,9 @@ def main(argv: list[str] | None = None) -> int:
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            cli.main(args=argv, prog_name="propmap", standalone_mode=False)
+            code = cli.main(args=argv, prog_name="propmap", standalone_mode=False)
+        if isinstance(code, int) and code:  # click returns (not raises) an Exit's code in this mode
+            return code
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except click.exceptions.Abort:

@@ -74,7 +74,12 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--all", "all_props", is_flag=True,
               help="One netCDF map over every catalogue propeller (a prop dimension), each with its default "
                    "parameters, on one grid (default axes from the median diameter).")
-@click.option("--props", "only", default=None, help="With --all: comma-separated catalogue names to restrict to.")
+@click.option("--props", "only", default=None,
+              help="With --all: comma-separated catalogue names to restrict to; with --check of a map over several "
+                   "propellers: those to check (default: all).")
+@click.option("--max-error-pct", type=float, default=None,
+              help="With --check: the largest error outside flagged regions that passes, in % of static thrust and "
+                   "torque (twice it for drag), cubic interpolation (default 1; exit 3 beyond).")
 @click.option("--scheduler", default=None,
               help="Address of a dask.distributed scheduler (tcp://HOST:PORT) to build on; default: this machine.")
 @click.option("--plot", "plot_dir", type=PathArg(), default=None,
@@ -84,8 +89,8 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
 @with_prop_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,
-                c_name, check_points, check_file, all_props, only, scheduler, plot_dir, plot_rpm, as_json, diameter_in,
-                blades):
+                c_name, check_points, check_file, all_props, only, max_error_pct, scheduler, plot_dir, plot_rpm, as_json,
+                diameter_in, blades):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
     The map stores thrust, drag, torque, rolling moment, power, CT, CP and the flags of
@@ -96,10 +101,14 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
     ctx = click.get_current_context()
     if check_file is not None:
         extra = [o for o in given(ctx, *(p.name for p in ctx.command.params)) if o not in ("--check", "--check-points",
-                                                                                          "--json")]
+                                                                                          "--json", "--props",
+                                                                                          "--max-error-pct")]
         if extra:
             raise InputError(f"--check takes a map file only; {', '.join(extra)} do not apply")
-        return _check(check_file, check_points, as_json)
+        return _check(check_file, check_points, as_json, parse_names("--props", only, what="propeller name"),
+                      max_error_pct)
+    if max_error_pct is not None:
+        raise InputError("--max-error-pct applies to --check")
     if all_props and prop:
         raise InputError("give PROP or --all, not both")
     only = parse_names("--props", only, what="propeller name")
@@ -347,26 +356,76 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
     click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
 
 
-def _check(path: Path, n: int, as_json: bool) -> None:
+#: the default pass threshold of --check: 1% of static thrust and torque, 2% of the largest drag
+#: (the map targets of docs/simulators.md), cubic interpolation outside flagged regions
+CHECK_MAX_ERROR_PCT = 1.0
+#: exit code of a --check whose errors exceed the threshold (0 passes; 2 is bad input)
+CHECK_FAILED = 3
+
+
+def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
+    """``--check``: recompute a map's error at fresh points, per propeller of a map over several;
+    exit CHECK_FAILED when a cubic maximum outside the flagged regions exceeds the threshold."""
+    from ..io.mapfile import map_props
     from ..maps import RotorMap
 
     if not 1 <= n <= 1_000_000:
         raise InputError(f"--check-points must be in [1, 1000000] with --check, got {n}")
+    limit = CHECK_MAX_ERROR_PCT if max_error_pct is None else max_error_pct
+    if not (math.isfinite(limit) and 0 < limit <= 100):
+        raise InputError(f"--max-error-pct must be in (0, 100], got {limit!r}")
     try:
-        rm = RotorMap.open(path)
+        props = map_props(path)
     except ValueError as exc:
         raise InputError(f"--check: {exc}") from None
-    # fresh points: another seed than the stored check's (a valid map's check_seed is an integer >= 0)
-    seed = (int(rm.attrs.get("check_seed", 0)) + 1) % 2**63
-    try:
-        res = rm.check(n, seed=seed)
-    except ValueError as exc:
-        raise InputError(f"--check: {str(path)[:80]}: {exc}") from None
-    stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
+    if props is None and only is not None:
+        raise InputError(f"--props: {str(path)[:80]} is a map of one propeller; --props applies to a map over several")
+    if props is not None and only is not None:
+        unknown = [p for p in only if p not in props]
+        if unknown:
+            raise InputError(f"--props: {', '.join(unknown)} not in {str(path)[:80]} (it holds {len(props)}: "
+                             f"{', '.join(props[:4])}{', ...' if len(props) > 4 else ''})")
+    selected = [None] if props is None else list(only or props)
+    maps = []
+    for prop in selected:
+        try:
+            maps.append((prop, RotorMap.open(path, prop=prop)))
+        except ValueError as exc:
+            raise InputError(f"--check: {exc}") from None
+    results, failed = [], []
+    for prop, rm in maps:
+        # fresh points: another seed than the stored check's (a valid map's check_seed is an integer >= 0)
+        seed = (int(rm.attrs.get("check_seed", 0)) + 1) % 2**63
+        try:
+            res = rm.check(n, seed=seed)
+        except ValueError as exc:
+            raise InputError(f"--check: {str(path)[:80]}{'' if prop is None else f' [{prop}]'}: {exc}") from None
+        worst = {k: res[f"check_cubic_{k}_max"] / (2.0 if k == "drag" else 1.0) for k in ("thrust", "torque", "drag")}
+        over = [k for k, v in worst.items() if not math.isnan(v) and v > limit / 100]
+        if over:
+            failed.append(f"{rm.attrs.get('propeller')}: {', '.join(over)}")
+        results.append((prop, rm, seed, res, over))
     if as_json:
-        echo_json({"recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
-                   "stored": {k: v for k, v in stored.items() if not (isinstance(v, float) and math.isnan(v))}})
-        return
+        out = []
+        for prop, rm, seed, res, over in results:
+            stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
+            out.append({"propeller": rm.attrs.get("propeller"), "passed": not over, "exceeded": over,
+                        "recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
+                        "stored": {k: v for k, v in stored.items() if not (isinstance(v, float) and math.isnan(v))}})
+        echo_json({"max_error_pct": limit, "passed": not failed, "maps": out} if props is not None
+                  else {"max_error_pct": limit, "passed": not failed, **{k: v for k, v in out[0].items()}})
+    else:
+        for prop, rm, seed, res, over in results:
+            _print_check(path, rm, n, seed, res)
+        verdict = "passed" if not failed else f"FAILED ({'; '.join(failed)})"
+        click.echo(f"threshold: cubic max outside flagged regions <= {limit:g}% of static thrust and torque, "
+                   f"{2 * limit:g}% of the largest drag: {verdict}")
+    if failed:
+        raise click.exceptions.Exit(CHECK_FAILED)
+
+
+def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
+    stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
     click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
                f"points (seed {seed}; stored values in brackets):")
     nan = float("nan")

@@ -13,7 +13,7 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
 
@@ -52,7 +52,10 @@ class HoverModel:
         ValueError
             ``omega`` not a single number (an array of several, a string, a bool), or as
             :func:`propmap.rotor_loads` (its range).
+        TypeError
+            A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
         """
+        check_model_args(propeller, params, air, discretization)
         if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
             raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")
         r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)

@@ -398,6 +398,35 @@ def _scalar(name: str, value) -> float:
 _REAL_SCALARS = (float, int, np.floating, np.integer)
 
 
+_UNCHECKED = object()
+
+
+def check_model_args(propeller, params, air=_UNCHECKED, discretization=_UNCHECKED) -> None:
+    """Refuse model arguments of the wrong type with a TypeError naming the argument (the
+    public entry points call it first, so that a wrong object never surfaces as an
+    AttributeError deep inside).
+
+    Raises
+    ------
+    TypeError
+        ``propeller`` not a :class:`Propeller`, ``params`` not an ``AirfoilParams`` or
+        ``CamberedParams`` (a set's name such as ``"generic"`` included: resolve it with
+        :func:`propmap.resolve_params`), ``air`` not an :class:`Air`, ``discretization`` not a
+        :class:`Discretization` (each checked only when given).
+    """
+    if not isinstance(propeller, Propeller):
+        raise TypeError(f"propeller must be a Propeller (propmap.load_propeller, read_geometry), "
+                        f"got {type(propeller).__name__}")
+    if not isinstance(params, (AirfoilParams, CamberedParams)):
+        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(params, str) else ""
+        raise TypeError(f"params must be AirfoilParams or CamberedParams (propmap.default_params, generic_params, "
+                        f"read_params){hint}, got {type(params).__name__}")
+    if air is not _UNCHECKED and not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    if discretization is not _UNCHECKED and not isinstance(discretization, Discretization):
+        raise TypeError(f"discretization must be a propmap.Discretization, got {type(discretization).__name__}")
+
+
 def rotor_loads(
     propeller: Propeller,
     params: SectionParams,
@@ -457,6 +486,9 @@ def rotor_loads(
 
     Raises
     ------
+    TypeError
+        ``propeller``, ``params``, ``air`` or ``discretization`` of the wrong type
+        (:func:`check_model_args`).
     ValueError
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
@@ -464,6 +496,7 @@ def rotor_loads(
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
     """
+    check_model_args(propeller, params, air, discretization)
     if on_failure not in ("raise", "flag"):
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
     if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)

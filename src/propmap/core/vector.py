@@ -14,7 +14,7 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench"]
 
@@ -131,6 +131,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     mirrors the shaft torque and the rolling moment and leaves the force unchanged. A
     linear inflow model or flapping blades (RotorOptions) give both.
     """
+    check_model_args(propeller, params, air, discretization)
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)
     try:

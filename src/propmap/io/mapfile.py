@@ -14,19 +14,28 @@ axis rpm                    Omega = rpm 2 pi / 60 in [0.1, 1e5] rad/s, strictly 
 axis airspeed               [0, 500] m/s
 axis incidence_deg          [0, 180] deg
 nodes                       at least 2 per axis, at most 20,000,000 in all (MAX_NODES)
-loads                       finite at every converged node; at least one converged node
+loads                       finite at every converged node; at least one converged node;
+                            |thrust|, |drag| <= 1e5 N, |torque|, |rolling_moment| <= 1e4 N m
+                            (the load data files' ranges)
 flags                       boolean (or 0/1)
 diameter_m                  [0.0127, 2.54] m (the CLI's --diameter-in range, 0.5-100 in)
 n_blades                    an integer in [1, 100] (the PE0 reader's range)
 rho_kg_m3, mu_Pa_s, ...     as in parameter files (io.params_file.FILE_RANGES)
 n_radial, n_azimuth         as :class:`propmap.Discretization`
-geometry_*                  1-D arrays of at most 10,000 numbers (a valid Propeller)
+geometry_*                  1-D arrays of at most 10,000 numbers (a valid Propeller) whose
+                            outermost station is the tip, diameter_m / 2 (within 1e-6)
 check_points                an integer in [0, 1,000,000]; check_seed an integer >= 0
 check_<m>_<load>_<stat>     a number >= 0, or NaN (no point to measure it)
 text attributes             strings
 ==========================  ===========================================================
 
 Numbers are never bools, strings or arrays where one number is expected.
+
+A damaged file can make the netCDF/HDF5 libraries loop forever inside a C call, where no
+signal reaches Python (a file with one byte changed was seen to). :func:`read_dataset`
+therefore reads the file first in a child process (``fork``) and refuses it when that read
+does not finish within :func:`open_timeout`: the caller never hangs, and SIGTERM and
+Ctrl-C keep working meanwhile.
 """
 
 from __future__ import annotations
@@ -41,7 +50,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["MAX_NODES", "check_dataset", "check_propeller", "map_model", "read_dataset", "read_sidecar",
+__all__ = ["MAX_NODES", "check_dataset", "check_propeller", "map_model", "map_props", "read_dataset", "read_sidecar",
            "sidecar_path", "write_map", "write_sidecar", "write_with_sidecar"]
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
@@ -65,6 +74,11 @@ DIAMETER_RANGE = (0.5 * 0.0254, 100 * 0.0254)  # [m]
 N_BLADES_RANGE = (1, 100)
 MAX_STATIONS = 10_000
 CHECK_POINTS_MAX = 1_000_000
+#: largest |value| of each load at a node (the load data files' ranges, identify.data.RANGES)
+LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4}
+#: the child read of a map file may take this long [s], plus OPEN_SECONDS_PER_GB per GiB
+OPEN_TIMEOUT = 20.0
+OPEN_SECONDS_PER_GB = 60.0
 _CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|power)_(rms|max|max_flagged)")
 _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_label", "params_json", "model",
          "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note")
@@ -169,13 +183,20 @@ def _check_variables(ds) -> np.ndarray:
     if not converged.any():
         raise ValueError("no node of the map converged: nothing to interpolate")
     for k in LOADS:
-        v = ds[k].transpose(*DIMS).values
+        v = ds[k].transpose(*DIMS).values.astype(float)
         bad = converged & ~np.isfinite(v)
         if bad.any():
             i = np.unravel_index(int(np.argmax(bad)), bad.shape)
             node = ", ".join(f"{d} {float(ds[d].values[j]):g}" for d, j in zip(DIMS, i))
             raise ValueError(f"variable {k} is not finite at a converged node ({node}; {int(bad.sum())} such "
                              "nodes): only nodes that did not converge may lack values")
+        with np.errstate(invalid="ignore"):
+            big = np.abs(v) > LOAD_LIMITS[k]
+        if big.any():
+            i = np.unravel_index(int(np.argmax(big)), big.shape)
+            node = ", ".join(f"{d} {float(ds[d].values[j]):g}" for d, j in zip(DIMS, i))
+            raise ValueError(f"variable {k} must lie within +-{LOAD_LIMITS[k]:g} {UNITS[k]}, got {v[i]:.6g} "
+                             f"({node}; {int(big.sum())} such nodes)")
     return converged
 
 
@@ -216,6 +237,10 @@ def check_attributes(attrs: dict) -> None:
             _number(attrs, key, 0.0, math.inf, nan_ok=True)
     for key in ("geometry_r_m", "geometry_chord_m", "geometry_theta_rad"):
         _array(attrs, key)
+    r = _array(attrs, "geometry_r_m")
+    if r is not None and r.size and not math.isclose(float(np.max(r)), 0.5 * d, rel_tol=1e-6):
+        raise ValueError(f"attribute diameter_m ({d:g} m) disagrees with geometry_r_m, whose tip radius is "
+                         f"{float(np.max(r)):g} m")
     for key in _TEXT:
         if key in attrs and not isinstance(attrs[key], str):
             raise ValueError(f"attribute {key} must be text, got {_short(attrs[key])}")
@@ -335,6 +360,93 @@ def _layout(path, where: str) -> list[str]:
     return [name for name in variables if name not in wanted]
 
 
+def open_timeout(size: int) -> float:
+    """Seconds the child read of a map file of ``size`` bytes may take (module docstring)."""
+    return OPEN_TIMEOUT + OPEN_SECONDS_PER_GB * size / 2**30
+
+
+def _probe_child(path, conn) -> None:
+    """In the child: open the file and read every map variable, then report (never raises)."""
+    try:
+        import netCDF4
+
+        wanted = {*LOADS, *DERIVED, *FLAGS, *DIMS, "omega", "incidence", "prop"}
+        with netCDF4.Dataset(path, "r") as nc:
+            for name, var in nc.variables.items():
+                if name in wanted and math.prod(var.shape) <= MAX_NODES:
+                    var[...]
+        conn.send(None)
+    except BaseException as exc:  # noqa: BLE001 -- reported to the parent, which decides
+        try:
+            conn.send(f"{type(exc).__name__}: {' '.join(str(exc).split())[:200]}")
+        except BaseException:  # noqa: BLE001
+            pass
+    finally:
+        conn.close()
+
+
+def _probe(path, where: str, size: int) -> None:
+    """Read the file in a child process first (module docstring); refuse it when the read
+    does not end within :func:`open_timeout`. Errors found there are left to the reader,
+    which names them as usual."""
+    import multiprocessing as mp
+
+    methods = mp.get_all_start_methods()
+    ctx = mp.get_context("fork" if "fork" in methods else methods[0])
+    recv, send = ctx.Pipe(duplex=False)
+    child = ctx.Process(target=_probe_child, args=(os.fspath(path), send), daemon=True)
+    child.start()
+    send.close()
+    limit = open_timeout(size)
+    try:
+        done = recv.poll(limit)
+    finally:
+        if child.is_alive() and not recv.poll(0):
+            child.kill()
+        child.join(5.0)
+        recv.close()
+    if not done:
+        raise ValueError(f"{where}: not a readable netCDF rotor map (the netCDF/HDF5 libraries did not finish "
+                         f"reading it within {limit:.0f} s: a damaged file)")
+
+
+def map_props(path) -> tuple[str, ...] | None:
+    """The propellers of a map file over several (``propmap map --all``), or None for a map
+    of one.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`read_dataset` (the file is read in a child first, its layout checked).
+    """
+    import netCDF4
+
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a str or os.PathLike (a map file), got {type(path).__name__}")
+    where = _where(path)
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{where}: {getattr(exc, 'strerror', None) or exc}") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
+    _probe(path, where, st.st_size)
+    try:
+        _layout(path, where)
+        with netCDF4.Dataset(path, "r") as nc:
+            if "prop" not in nc.variables:
+                return None
+            names = [str(n) for n in np.asarray(nc.variables["prop"][:]).ravel()]
+    except ValueError:
+        raise
+    except Exception as exc:  # noqa: BLE001 -- the netCDF/HDF5 libraries raise anything on a damaged file
+        raise ValueError(f"{where}: not a readable netCDF rotor map ({type(exc).__name__}: "
+                         f"{' '.join(str(exc).split())[:200]})") from None
+    if not names or len(set(names)) != len(names):
+        raise ValueError(f"{where}: the prop coordinate must hold distinct propeller names")
+    return tuple(names)
+
+
 def read_dataset(path, prop: str | None = None):
     """Read one propeller's map from a netCDF file, as hostile input.
 
@@ -357,7 +469,8 @@ def read_dataset(path, prop: str | None = None):
         Not a regular file (a folder, device, pipe: refused before opening), larger than
         4 GiB, not readable netCDF (whatever the netCDF/HDF5 libraries raise), a variable
         of a map with dimensions not a map's or declaring more than MAX_NODES nodes
-        (refused before reading data), or ``prop`` missing or unknown for a map over
+        (refused before reading data), a read that does not end within
+        :func:`open_timeout` (a damaged file; module docstring), or ``prop`` missing or unknown for a map over
         several propellers, or their metadata (``per_prop_json``) malformed. The message
         names the file.
     """
@@ -376,6 +489,7 @@ def read_dataset(path, prop: str | None = None):
         raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
     if st.st_size > MAX_FILE_BYTES:
         raise ValueError(f"{where}: {st.st_size:,} bytes; a map file is at most {MAX_FILE_BYTES:,}")
+    _probe(path, where, st.st_size)
     try:
         unused = _layout(path, where)
         with xr.open_dataset(path, engine="netcdf4", drop_variables=unused) as ds:
@@ -483,10 +597,18 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     Raises
     ------
     ValueError
-        Unknown format.
+        Unknown format, or an empty path.
+    TypeError
+        ``ds`` not an xarray Dataset.
     OSError
         The folder cannot be written.
     """
+    import xarray as xr
+
+    if not isinstance(ds, xr.Dataset):
+        raise TypeError(f"ds must be an xarray.Dataset (a map from build_map), got {type(ds).__name__}")
+    if not os.fspath(path):
+        raise ValueError("path is empty: give the map file to write")
     if fmt not in ("netcdf", "csv"):
         raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
 
