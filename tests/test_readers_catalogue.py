@@ -12,10 +12,32 @@ from propmap.io.readers import MeasurementFileError, read_uiuc_static, read_uiuc
 
 def test_catalogue_contents():
     cat = catalogue()
-    assert len(cat) == 108
-    assert sum(e.geometry_format == "uiuc" for e in cat.values()) == 79
+    assert len(cat) == 147
+    v1 = [e for e in cat.values() if e.volume == 1]
+    v2 = [e for e in cat.values() if e.volume == 2]
+    assert len(v1) == 108 and sum(e.geometry_format == "uiuc" for e in v1) == 79 and len(v2) == 39
     e = cat["apce_8x6"]
     assert e.geometry_format == "apc_pe0" and len(e.static_files) == 1 and len(e.sweep_files) == 7
+    assert "Brandt & Selig" in e.citation and "Deters, Ananda & Selig" in cat["da4002_5x1.58"].citation
+
+
+def test_volume_2_names_sizes_and_hubs():
+    """The vol. 2 naming rules (tools/build_catalogue.py, data/CITATION.md): millimetre
+    families, the 3- and 4-blade hubs of one blade, the family design files."""
+    cat = catalogue()
+    assert cat["pl_100x80"].diameter_in == pytest.approx(100 / 25.4)
+    assert cat["union_u80"].diameter_in == pytest.approx(80 / 25.4)
+    assert cat["cfnq_45p1"].diameter_in == pytest.approx(45 / 25.4)
+    assert cat["pl_triturbo"].n_blades == 3 and cat["pl_triturbo"].diameter_in == pytest.approx(64 / 25.4)
+    for hub, n in (("", 2), ("_3b", 3), ("_4b", 4)):
+        e = cat["nr640_5_15deg" + hub]
+        assert e.n_blades == n and e.geometry_file.endswith("nr640_5_15deg_geom.txt")
+        assert pm.load_propeller("nr640_5_15deg" + hub).n_blades == n
+    p20 = pm.load_propeller("nr640_5_20deg")
+    assert math.degrees(np.interp(0.75 * p20.radius, p20.r, p20.theta)) == pytest.approx(20.0, abs=1e-9)
+    d = pm.load_propeller("da4052_9x4.76")  # the design's chord with the helix of the named pitch
+    np.testing.assert_allclose(np.tan(d.theta) * 2 * np.pi * d.r, 4.76 * 0.0254, rtol=1e-12)
+    assert cat["da4052_9x4.76"].note.startswith("no measured geometry")
 
 
 @pytest.mark.parametrize("name", sorted(catalogue()))
@@ -23,13 +45,15 @@ def test_every_bundled_geometry_reads_and_solves(name):
     e = catalogue()[name]
     prop = pm.load_propeller(name)
     assert prop.radius == pytest.approx(0.5 * e.diameter_in * 0.0254, rel=0.02)
-    assert prop.n_blades == 2 and 0.05 < prop.r_hub / prop.radius < 0.35
+    assert prop.n_blades == e.n_blades and 0.05 < prop.r_hub / prop.radius < 0.35
     assert np.all(np.diff(prop.r) > 0) and np.all(prop.chord >= 0)
     assert 0 < np.degrees(prop.theta).max() < 90
-    assert 0.03 < prop.solidity() < 0.25
+    assert 0.03 < prop.solidity() < 0.4
     for run in e.static_runs():
         assert np.all((run.CT > 0) & (run.CT < 0.3))
-    r = pm.rotor_loads(prop, pm.preset("gill2017-apc"), 6000 * 2 * math.pi / 60, [0.0, 10.0], [0.0, 1.2])
+    # static, and J = 0.15 at 69 deg incidence (a low-pitch propeller windmills at 10 m/s)
+    r = pm.rotor_loads(prop, pm.preset("gill2017-apc"), 6000 * 2 * math.pi / 60, [0.0, 15.0 * prop.diameter],
+                       [0.0, 1.2])
     assert r.converged.all() and np.all(r.thrust > 0)
 
 

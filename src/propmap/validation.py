@@ -124,7 +124,7 @@ class Validation:
         }
 
 
-def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams, *, air: Air = Air(),
+def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams, *, air: Air | None = None,
              discretization: Discretization = DEFAULT_DISCRETIZATION) -> Validation:
     """Compare the model and the hover model with every bundled measurement of ``entry``.
 
@@ -135,7 +135,8 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
     propeller : Propeller
         The geometry to use (normally ``load_propeller(entry.name)``).
     params : AirfoilParams or CamberedParams
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
         Density used to convert coefficients; UIUC coefficients are density-normalised,
         so air only enters through the Reynolds term.
 
@@ -150,6 +151,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
     SolverError
         From the solver.
     """
+    air = params.air if air is None else air
     statics = entry.static_runs()
     sweeps = entry.sweeps()
     if not statics:
@@ -174,7 +176,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
 
 
 def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: SectionParams, baseline: SectionParams,
-                       holdout, *, air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+                       holdout, *, air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Held-out CT and CP errors of a fitted model, a baseline parameter set and the hover model.
 
     The hover model uses the measured static CT and CP. ``holdout`` names UIUC run ids.
@@ -193,6 +195,7 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
     SolverError
         From the model.
     """
+    air = fitted.air if air is None else air
     vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
     vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
     held = sorted(set(holdout))
@@ -209,7 +212,7 @@ PROTOCOL_TEXT = {
     "loro": "leave one rpm out: fit on the static run and the sweeps at other rpm, predict all sweeps at that rpm",
     "lowest": "fit on the static run and the lowest-rpm sweeps, predict the sweeps at higher rpm",
     "static": "fit on the static run only, predict the sweeps",
-    "blind": "no fit: the generic set fitted without this propeller, predict the sweeps",
+    "blind": "no fit: the generic set derived without this propeller's family, predict the sweeps",
 }
 #: sweeps whose mean rotation rates differ by less than this fraction form one rpm group
 SAME_RPM = 0.03
@@ -225,7 +228,7 @@ def _coefficients(data, propeller: Propeller, air: Air):
     return CT, CP
 
 
-def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air = Air(), mask=None,
+def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air | None = None, mask=None,
                        discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """rms |dCT| / static CT and rms |dCP| / static CP of ``params`` on load data.
 
@@ -255,6 +258,7 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     SolverError
         From the model.
     """
+    air = params.air if air is None else air
     CT, CP = _coefficients(data, propeller, air)
     static = data.airspeed == 0
     if not static.any():
@@ -304,7 +308,7 @@ def _splits(data, protocol: str):
     return [(None, ~static)]
 
 
-def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protocols=PROTOCOLS, air: Air = Air(),
+def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protocols=PROTOCOLS, air: Air | None = None,
                    population: dict | None = None,
                    discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Held-out errors of the calibration protocols for one propeller's static run and sweeps.
@@ -341,6 +345,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     SolverError
         From the model.
     """
+    air = generic.air if air is None else air
     from .identify import FitOptions, fit_loads
 
     bad = [p for p in protocols if p not in PROTOCOLS]

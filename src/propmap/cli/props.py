@@ -22,7 +22,8 @@ def props(as_json: bool) -> None:
     rows = []
     for e in catalogue().values():
         c = calibrated(e.name)
-        rows.append({"name": e.name, "diameter_in": e.diameter_in, "pitch_in": e.pitch_in, "blades": e.n_blades,
+        rows.append({"name": e.name, "volume": e.volume, "family": e.family, "diameter_in": e.diameter_in,
+                     "pitch_in": e.pitch_in, "blades": e.n_blades,
                      "geometry": "UIUC" if e.geometry_format == "uiuc" else "APC PE0",
                      "static_runs": len(e.static_files), "sweeps": len(e.sweep_files),
                      "calibrated": c is not None,
@@ -30,13 +31,15 @@ def props(as_json: bool) -> None:
     if as_json:
         echo_json(rows)
         return
-    click.echo(f"{'name':<18}{'D [in]':>7}{'P [in]':>7}{'blades':>7}  {'geometry':<9}{'static':>7}{'sweeps':>7}"
-               f"  {'calibrated (fit rms dCT/CT0, dCP/CP0)'}")
+    click.echo(f"{'name':<22}{'vol':>4}{'D [in]':>7}{'P [in]':>7}{'blades':>7}  {'geometry':<9}{'static':>7}"
+               f"{'sweeps':>7}  {'calibrated (fit rms dCT/CT0, dCP/CP0)'}")
     for r in rows:
         cal = (f"yes ({100 * r['fit_rms_ct']:.1f}%, {100 * r['fit_rms_cp']:.1f}%)" if r["calibrated"]
                else "no (generic)")
-        click.echo(f"{r['name']:<18}{r['diameter_in']:>7g}{r['pitch_in']:>7g}{r['blades']:>7}  {r['geometry']:<9}"
-                   f"{r['static_runs']:>7}{r['sweeps']:>7}  {cal}")
+        pitch = "-" if r["pitch_in"] is None else f"{r['pitch_in']:.3g}"
+        click.echo(f"{r['name']:<22}{r['volume']:>4}{r['diameter_in']:>7.3g}{pitch:>7}{r['blades']:>7}  "
+                   f"{r['geometry']:<9}{r['static_runs']:>7}{r['sweeps']:>7}  {cal}")
     n_cal = sum(r["calibrated"] for r in rows)
     click.echo(f"{len(rows)} propellers, {n_cal} calibrated. Measurements: UIUC Propeller Data Site vol. 1 "
-               "(Brandt & Selig, AIAA 2011-1255); APC geometry: APC PE0 files.")
+               "(Brandt & Selig, AIAA 2011-1255) and part of vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151); APC "
+               "geometry: APC PE0 files. P of vol. 2's nr640 blades: the helix of their blade angle at 0.75 R.")

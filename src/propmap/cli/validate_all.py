@@ -159,10 +159,21 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> di
             pool.shutdown(wait=True)
     finally:
         bar.close()
-    return {"propellers": rows,
-            "summary": {k: {"ct": summarize([r[k]["rms_ct"] for r in rows]),
-                            "cp": summarize([r[k]["rms_cp"] for r in rows])}
-                        for k in [*protocols, "paper_table_i", "hover_model"]}}
+    keys = [*protocols, "paper_table_i", "hover_model"]
+    for r in rows:
+        e = cat[r["propeller"]]
+        r.update(volume=e.volume, family=e.family)
+    return {"propellers": rows, "summary": _summaries(rows, keys),
+            "by_volume": {f"vol. {v}": _summaries([r for r in rows if r["volume"] == v], keys)
+                          for v in sorted({r["volume"] for r in rows})},
+            "by_family": {f: _summaries([r for r in rows if r["family"] == f], keys)
+                          for f in sorted({r["family"] for r in rows})}}
+
+
+def _summaries(rows, keys) -> dict:
+    """:func:`summarize` of each protocol's CT and CP errors over ``rows``."""
+    return {k: {"ct": summarize([r[k]["rms_ct"] for r in rows]), "cp": summarize([r[k]["rms_cp"] for r in rows])}
+            for k in keys}
 
 
 def run_cases() -> dict:
@@ -191,8 +202,9 @@ def print_report(cat: dict, cases: dict) -> None:
     from ..validation import PROTOCOL_TEXT
 
     protos = [k for k in PROTOCOLS if k in cat["summary"]]
-    click.echo("rms |dCT| / static CT and |dCP| / static CP on held-out data, per propeller "
-               "(UIUC vol. 1, Brandt & Selig AIAA 2011-1255):")
+    click.echo("rms |dCT| / static CT and |dCP| / static CP on held-out data, per propeller (UIUC vol. 1, Brandt & "
+               "Selig AIAA 2011-1255; vol. 2, Deters, Ananda & Selig AIAA 2014-2151). Every protocol's generic set "
+               "and prior were derived without the propeller's family (leave-one-family-out):")
     head = "".join(f"{p + ' CT':>11}{p + ' CP':>11}" for p in protos)
     click.echo(f"{'propeller':<16}{head}{'paper CT':>10}{'hover CT':>10}")
     for r in cat["propellers"]:
@@ -206,6 +218,13 @@ def print_report(cat: dict, cases: dict) -> None:
         text = texts[k]
         click.echo(f"  {k:<13} CT {_pct(s['ct']['median'])} / {_pct(s['ct']['p90'])} / {_pct(s['ct']['worst'])}   "
                    f"CP {_pct(s['cp']['median'])} / {_pct(s['cp']['p90'])} / {_pct(s['cp']['worst'])}   ({text})")
+    for title, groups in (("per volume", cat.get("by_volume", {})), ("per family", cat.get("by_family", {}))):
+        click.echo(f"\n{title} (CT median / 90th percentile / worst; n propellers):")
+        for g, s in groups.items():
+            n = next(iter(s.values()))["ct"]["n_propellers"]
+            click.echo(f"  {g:<10} n={n:<3}" + "  ".join(
+                f"{k} {_pct(s[k]['ct']['median']).strip()}/{_pct(s[k]['ct']['p90']).strip()}/"
+                f"{_pct(s[k]['ct']['worst']).strip()}" for k in protos))
     click.echo("\npublished cases (digitized; data/CITATION.md):")
     for c, res in cases.items():
         click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
@@ -220,7 +239,8 @@ def _csv(path: Path, cat: dict) -> None:
 
     rows = []
     for r in cat["propellers"]:
-        row = {"propeller": r["propeller"], "generic_used": r["generic_used"]}
+        row = {"propeller": r["propeller"], "volume": r.get("volume"), "family": r.get("family"),
+               "generic_used": r["generic_used"]}
         for k, v in r.items():
             if isinstance(v, dict):
                 row.update({f"{k}_{m}": v[m] for m in ("rms_ct", "rms_cp") if m in v})

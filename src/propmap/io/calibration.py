@@ -1,16 +1,19 @@
 """The shipped calibration: the generic cambered parameter set and per-propeller sets.
 
 ``data/calibration.json`` is written by ``tools/calibrate_catalogue.py`` from the bundled
-UIUC measurements (Brandt & Selig, AIAA 2011-1255; see data/CITATION.md):
+UIUC measurements (vol. 1: Brandt & Selig, AIAA 2011-1255; vol. 2: Deters, Ananda & Selig,
+AIAA 2014-2151; see data/CITATION.md):
 
 * ``generic``: one cambered parameter set fitted jointly to every catalogue propeller
   (:func:`propmap.identify.fit_loads_joint`). The default for geometry files and for
   propellers without measurements (blind prediction).
-* ``generic_folds``: the same joint fit on each half of the catalogue, so that a
-  propeller can be predicted by a generic set that never saw its data (validation).
+* ``generic_folds``: the same derivation without each propeller family in turn
+  (``generic without <family>``), so that a propeller can be predicted by a generic set
+  and a prior that never saw its family (validation: leave-one-family-out).
 * ``population``: the covariance of the parameters fitted to each catalogue propeller
   and their median rms residual: the fits' population prior (identify.FitOptions), also
-  per half of the catalogue.
+  per fold.
+* ``single_fits``: each propeller's free 8-parameter fit (the statistics' input).
 * ``propellers``: for every catalogue propeller with measurements, the parameters fitted
   to all its bundled data, starting from ``generic``, with the fit's rms errors. The
   default for that propeller.
@@ -27,9 +30,7 @@ import json
 from dataclasses import dataclass
 from importlib import resources
 
-from dataclasses import asdict
-
-from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 
 __all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
            "population", "coverage", "params_to_si", "params_from_si", "GENERIC"]
@@ -47,7 +48,8 @@ class Calibration:
     params : SectionParams
     air : Air
     name : str
-        ``"generic"`` or the propeller's catalogue name.
+        ``"generic"``, ``"generic without <family>"`` or ``"calibrated:<name>"`` (also the
+        label its ``params`` carry).
     rms_ct, rms_cp : float
         The fit's rms |dCT| / static CT and |dCP| / static CP over the data it was
         fitted to [-] (in-sample).
@@ -72,17 +74,27 @@ def coverage(label: str) -> dict | None:
     Parameters
     ----------
     label : str
-        ``"generic"``, ``"generic fold <k>"`` or ``"calibrated:<name>"``.
+        ``"generic"``, ``"generic without <family>"``, ``"calibrated:<name>"`` or a parameter file.
 
     Returns
     -------
     dict or None
         ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial); None for other sets (Table I, files), whose data propmap
-        does not know.
+        UIUC data are axial), for a fitted file also ``rpm_min``, ``rpm_max`` and
+        ``airspeed_max`` (its ``[coverage]`` table); None for other sets (Table I, files
+        without the table), whose data propmap does not know.
     """
+    from pathlib import Path
+
     raw = _raw()
-    if label == GENERIC or label.startswith("generic fold"):
+    if label and Path(label).is_file():  # a parameter file: its [coverage] table, if it has one
+        from .params_file import read_coverage
+
+        try:
+            return read_coverage(label)
+        except ValueError:
+            return None
+    if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
         return raw["generic"].get("coverage")
     if label.startswith("calibrated:"):
         entry = raw["propellers"].get(label.split(":", 1)[1])
@@ -96,8 +108,9 @@ def _raw() -> dict:
 
 
 def params_to_si(params: SectionParams) -> dict:
-    """The record's fields (SI, angles in rad) plus ``section_model``: exact in JSON."""
-    return {"section_model": params.section_model, **asdict(params)}
+    """The record's model fields (SI, angles in rad) plus ``section_model``: exact in JSON (the
+    set's air and label are not stored: the shipped sets use footnote 2's air)."""
+    return {"section_model": params.section_model, **params.as_dict()}
 
 
 def params_from_si(d: dict) -> SectionParams:
@@ -108,7 +121,7 @@ def params_from_si(d: dict) -> SectionParams:
     ValueError
         Unknown section model or invalid fields.
     """
-    d = dict(d)
+    d = {k: v for k, v in d.items() if k not in RECORD_META}
     model = d.pop("section_model", "gill2017")
     record = {"gill2017": AirfoilParams, "cambered": CamberedParams}.get(model)
     if record is None:
@@ -118,7 +131,7 @@ def params_from_si(d: dict) -> SectionParams:
 
 def _entry(name: str, d: dict, source: str) -> Calibration:
     try:
-        params = params_from_si(d["params"])
+        params = params_from_si(d["params"]).replace(label=name)
     except (TypeError, ValueError) as exc:
         raise ValueError(f"calibration.json [{name}]: {exc}") from None
     return Calibration(params, Air(), name, float(d["rms_ct"]), float(d["rms_cp"]), int(d["n_points"]), source)
@@ -136,11 +149,11 @@ def calibration() -> dict:
     raw = _raw()
     return {
         "generic": _entry(GENERIC, raw["generic"], raw["generic"]["source"]),
-        "generic_folds": [(_entry(f"generic fold {k}", d, raw["generic"]["source"]), frozenset(d["propellers"]),
-                           d.get("population"))
+        "generic_folds": [(_entry(d.get("label", f"generic fold {k}"), d, raw["generic"]["source"]),
+                           frozenset(d["propellers"]), d.get("population"))
                           for k, d in enumerate(raw.get("generic_folds", []))],
         "population": raw.get("population"),
-        "propellers": {n: _entry(n, d, raw["propeller_source"]) for n, d in raw["propellers"].items()},
+        "propellers": {n: _entry(f"calibrated:{n}", d, raw["propeller_source"]) for n, d in raw["propellers"].items()},
         "citation": raw["citation"],
         "created_by": raw["created_by"],
     }
@@ -162,10 +175,11 @@ def generic_params() -> SectionParams:
 
 
 def generic_without(name: str) -> tuple[SectionParams, str]:
-    """A generic set fitted without propeller ``name``'s data, and its label.
+    """A generic set fitted without propeller ``name``'s family, and its label.
 
-    The fold of ``generic_folds`` that does not contain ``name``; for a propeller outside
-    the catalogue, the full generic set (which never saw it either).
+    The fold of ``generic_folds`` that does not contain ``name`` (``"generic without
+    <family>"``); for a propeller outside the calibration, the full generic set (which never
+    saw it either).
     """
     folds = calibration()["generic_folds"]
     if any(name in members for _, members, _ in folds):
@@ -181,7 +195,7 @@ def population(without: str | None = None) -> dict:
     Parameters
     ----------
     without : str, optional
-        A catalogue propeller: the statistics of the catalogue half that excludes it.
+        A catalogue propeller: the statistics of the fold that excludes its family.
 
     Returns
     -------
@@ -221,17 +235,17 @@ def calibrated(name: str) -> Calibration | None:
     return calibration()["propellers"].get(name)
 
 
-def default_params(name: str) -> tuple[SectionParams, Air, str]:
+def default_params(name: str) -> SectionParams:
     """The parameters propmap uses for a propeller when none are given.
 
     Returns
     -------
-    (params, air, label)
-        The propeller's calibrated set if the catalogue has one (label
-        ``"calibrated:<name>"``), else the generic set (label ``"generic"``).
+    CamberedParams
+        The propeller's calibrated set if the catalogue has one (``.label``
+        ``"calibrated:<name>"``), else the generic set (``.label`` ``"generic"``); either
+        carries its air (``.air``).
     """
     c = calibrated(name)
     if c is not None:
-        return c.params, c.air, f"calibrated:{name}"
-    g = calibration()["generic"]
-    return g.params, g.air, GENERIC
+        return c.params
+    return calibration()["generic"].params

@@ -1,4 +1,5 @@
-"""The bundled propeller catalogue (UIUC vol. 1 and APC PE0 geometries, UIUC measurements).
+"""The bundled propeller catalogue: UIUC Propeller Data Site vol. 1 and part of vol. 2 (geometry
+and measurements), APC PE0 geometries for the APC propellers UIUC measured without one.
 
 Sources: src/propmap/data/CITATION.md. Files are read with importlib.resources.
 """
@@ -7,16 +8,21 @@ from __future__ import annotations
 
 import functools
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
 
-from ..core.geometry import Propeller
+import numpy as np
+
+from ..core.geometry import INCH, Propeller
 from .readers import StaticRun, Sweep, read_apc_pe0, read_geometry, read_uiuc_geometry, read_uiuc_static, read_uiuc_sweep
 
 __all__ = ["CatalogueEntry", "catalogue", "get_entry", "load_propeller", "resolve_propeller"]
 
 UIUC_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255")
+UIUC_V2_CITATION = ("UIUC Propeller Data Site vol. 2, Deters, Ananda & Selig, AIAA 2014-2151")
+#: citation of each volume's measurements
+VOLUME_CITATION = {1: UIUC_CITATION, 2: UIUC_V2_CITATION}
 APC_CITATION = "APC Propellers PE0 geometry (v2022-0915)"
 
 
@@ -42,23 +48,42 @@ class CatalogueEntry:
         Path relative to the package data folder.
     static_files, sweep_files : tuple of str
         Bundled UIUC measurement files (relative paths).
+    volume : {1, 2}
+        UIUC Propeller Data Site volume of the measurements.
+    beta_offset_deg : float
+        Added to the geometry file's blade angles [deg] (a blade run at another setting than
+        the one its file gives: NR640 at 20 deg).
+    helical_pitch_in : float or None
+        If set, the blade angles are the helix of this pitch, atan(P / (2 pi r)), on the
+        file's chord (a DA-series design without a measured geometry of its own).
+    note : str
+        How the entry was derived where the files do not say it (tools/build_catalogue.py).
+
+    ``pitch_in`` is None where the name gives no pitch (``union_u80``, ``cfnq_45p1``,
+    ``pl_triturbo``).
     """
 
     name: str
     family: str
     diameter_in: float
-    pitch_in: float
+    pitch_in: float | None
     n_blades: int
     geometry_format: str
     geometry_file: str
     static_files: tuple[str, ...]
     sweep_files: tuple[str, ...]
+    volume: int = 1
+    beta_offset_deg: float = 0.0
+    helical_pitch_in: float | None = None
+    note: str = ""
 
     @property
     def citation(self) -> str:
         """Sources of the geometry and the measurements, for figures and reports."""
-        geo = UIUC_CITATION if self.geometry_format == "uiuc" else APC_CITATION
-        return f"geometry: {geo}; measurements: {UIUC_CITATION}"
+        data = VOLUME_CITATION[self.volume]
+        geo = data if self.geometry_format == "uiuc" else APC_CITATION
+        extra = f" ({self.note})" if self.note else ""
+        return f"geometry: {geo}{extra}; measurements: {data}"
 
     def static_runs(self) -> list[StaticRun]:
         """The bundled UIUC static runs (may be empty)."""
@@ -71,12 +96,15 @@ class CatalogueEntry:
 
 @functools.lru_cache(maxsize=1)
 def catalogue() -> dict[str, CatalogueEntry]:
-    """All bundled propellers, by name (108 entries: 79 UIUC geometries, 29 APC PE0)."""
+    """All bundled propellers, by name (147 entries: vol. 1, 79 UIUC geometries and 29 APC PE0;
+    vol. 2, 39)."""
     raw = json.loads(_data_path("catalogue.json").read_text())
     return {
         e["name"]: CatalogueEntry(e["name"], e["family"], e["diameter_in"], e["pitch_in"], e["n_blades"],
                                   e["geometry"]["format"], e["geometry"]["file"],
-                                  tuple(e["static"]), tuple(e["sweeps"]))
+                                  tuple(e["static"]), tuple(e["sweeps"]), volume=e.get("volume", 1),
+                                  beta_offset_deg=e["geometry"].get("beta_offset_deg", 0.0),
+                                  helical_pitch_in=e["geometry"].get("helical_pitch_in"), note=e.get("note", ""))
         for e in raw
     }
 
@@ -110,10 +138,15 @@ def load_propeller(name: str) -> Propeller:
     """
     e = get_entry(name)
     path = _data_path(e.geometry_file)
-    if e.geometry_format == "uiuc":
-        return read_uiuc_geometry(path, diameter_in=e.diameter_in, n_blades=e.n_blades, name=e.name,
-                                  source=e.citation)
-    return read_apc_pe0(path, name=e.name, source=e.citation)
+    if e.geometry_format != "uiuc":
+        return read_apc_pe0(path, name=e.name, source=e.citation)
+    prop = read_uiuc_geometry(path, diameter_in=e.diameter_in, n_blades=e.n_blades, name=e.name, source=e.citation)
+    if e.helical_pitch_in is not None:
+        P = e.helical_pitch_in * INCH
+        prop = replace(prop, theta=np.arctan(P / (2.0 * np.pi * prop.r)), pitch=P)
+    if e.beta_offset_deg:
+        prop = replace(prop, theta=prop.theta + np.radians(e.beta_offset_deg))
+    return prop
 
 
 def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
