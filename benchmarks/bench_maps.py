@@ -142,7 +142,8 @@ def main() -> None:
 
     quick = "--quick" in sys.argv
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     rpm, V, inc = default_axes(prop)
     # warm-up: imports (xarray, dask) and the compiled kernels loaded before anything is timed
     build_map(prop, params, rpm[:2] * RPM, V[:2], np.radians(inc[:2]), air=air, n_check=20)

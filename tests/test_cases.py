@@ -23,7 +23,7 @@ def test_beaver_is_compared_in_wind_axes():
         air.rho * BEAVER_N**2 * prop.diameter**4)
     assert r["ratio_20"] == pytest.approx(ctw20 / r["CT0"], rel=1e-12)
     assert r["ratio_20"] < r["shaft_ratio_20"]
-    # regression values (2026-11-22), docs/validation.md: the measured rise is not reached
+    # regression values (2026-11-22, the generic set of both UIUC volumes), docs/validation.md: the measured rise is not reached
     assert m.metrics["measured"]["ratio_20"] == pytest.approx(1.351, abs=0.001)
-    assert r["CT0"] == pytest.approx(0.0714, abs=0.0002)
+    assert r["CT0"] == pytest.approx(0.0754, abs=0.0002)
     assert r["ratio_10"] == pytest.approx(1.051, abs=0.002) and r["ratio_20"] == pytest.approx(1.189, abs=0.002)

@@ -19,14 +19,14 @@ def run(capsys, *argv):
 def test_props_json(capsys):
     code, out, _ = run(capsys, "props", "--json")
     rows = json.loads(out)
-    assert code == 0 and len(rows) == 108
+    assert code == 0 and len(rows) == 147
     row = next(r for r in rows if r["name"] == "apce_8x6")
     assert row["diameter_in"] == 8 and row["pitch_in"] == 6 and row["sweeps"] == 7 and row["geometry"] == "APC PE0"
 
 
 def test_props_table(capsys):
     code, out, _ = run(capsys, "props")
-    assert code == 0 and "apce_8x6" in out and "108 propellers" in out
+    assert code == 0 and "apce_8x6" in out and "147 propellers" in out
 
 
 def test_loads_single_point_json_matches_api(capsys):
@@ -37,7 +37,7 @@ def test_loads_single_point_json_matches_api(capsys):
     assert set(d) >= {"thrust", "drag", "torque", "power", "CT", "CP", "converged", "flags", "params"}
     # the default for a calibrated catalogue propeller is its own calibrated set, and it says so
     assert d["params"] == "calibrated:apce_8x6"
-    params, _ = pm.resolve_params("calibrated:apce_8x6")
+    params = pm.resolve_params("calibrated:apce_8x6")
     r = pm.rotor_loads(pm.load_propeller("apce_8x6"), params, 8000 * math.pi / 30, 10.0, math.radians(60))
     assert d["thrust"] == pytest.approx(float(r.thrust), rel=1e-12)
     assert d["drag"] == pytest.approx(float(r.drag), rel=1e-12)
@@ -47,9 +47,12 @@ def test_loads_single_point_json_matches_api(capsys):
 def test_loads_with_params_file_and_geometry_file(capsys, tmp_path, shared_data):
     f = tmp_path / "p.toml"
     pm.write_params(f, pm.preset("gill2017-stiff"))
-    code, out, _ = run(capsys, "loads", str(shared_data / "uiuc_propdb/v1/apce_9x6_geom.txt"), "--rpm", "6000",
-                       "--params", str(f), "--json")
-    assert code == 0 and json.loads(out)["thrust"] > 0
+    geom = str(shared_data / "uiuc_propdb/v1/apce_9x6_geom.txt")
+    code, out, _ = run(capsys, "loads", geom, "--rpm", "6000", "--params", str(f), "--json", "--blades", "2")
+    assert code == 0 and json.loads(out)["thrust"] > 0 and json.loads(out)["n_blades"] == 2
+    # a UIUC geometry file does not state its blade count: it must be given
+    code, _, err = run(capsys, "loads", geom, "--rpm", "6000", "--params", str(f))
+    assert code == 2 and "does not state the blade count: give it (--blades" in err
 
 
 def test_loads_points_csv(capsys, tmp_path):

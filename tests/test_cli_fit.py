@@ -32,7 +32,7 @@ def test_fit_level_flight_writes_params_report_and_figure(capsys, tmp_path):
     assert len(rep["residuals"]) == 20
     for name in ("p.toml", "p.report.json", "p.report.txt", "p.png"):
         assert (tmp_path / name).stat().st_size > 100
-    params, _ = pm.read_params(out)
+    params = pm.read_params(out)
     assert params.M == 30.0 and params.cl1 == pytest.approx(rep["fitted"]["cl1"])
     # the fitted file is accepted back by loads and validate
     assert run(capsys, "loads", "apce_8x6", "--rpm", "6000", "--params", str(out))[0] == 0
@@ -114,6 +114,6 @@ def test_fit_loads_csv_with_prop_and_holdout(capsys, tmp_path):
     rep = json.loads(stdout)
     assert rep["holdout"]["holdout"] == ["g2"]
     assert rep["holdout"]["fitted"]["thrust_rmse"] < 1e-6  # the CSV is consistent with the model
-    params, _ = pm.read_params(out)
+    params = pm.read_params(out)
     assert params.cl1 == pytest.approx(TRUE_X[0], rel=1e-5)
     assert (tmp_path / "c.png").stat().st_size > 10_000

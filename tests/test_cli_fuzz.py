@@ -214,7 +214,7 @@ def test_fit_loads_options(capsys, tmp_path_factory, M, multistart, fit_params, 
     written = sorted(p.name for p in d.iterdir())
     if code == 0:
         assert written == ["p.png", "p.report.json", "p.report.txt", "p.toml"]
-        params, _ = pm.read_params(d / "p.toml")  # the parameters written read back
+        params = pm.read_params(d / "p.toml")  # the parameters written read back
     else:
         assert written == []
 
@@ -365,6 +365,6 @@ def test_export_sim_options(capsys, tmp_path_factory, target, data, hostile):
         assert all(math.isfinite(v) for v in values), d_out
         for name in d_out["fixed_at_zero"]:
             assert f"propmap: warning: {name} fixed at 0" in err
-        assert written == sorted([out.name, out.name + ".json"])
+        assert written == sorted([out.name, out.stem + ".report.json"])
     else:
         assert code == 2 and written == [], (written, err)

@@ -51,7 +51,7 @@ def test_map_plot_never_replaces_an_input(capsys, tmp_path, monkeypatch):
     geom = tmp_path / "plots" / "map_contours_5000rpm.png"  # a geometry file under the name of a plot
     geom.write_bytes((UIUC / "apce_9x6_geom.txt").read_bytes())
     before = files(tmp_path)
-    code, _, err = run(capsys, "map", geom, "--diameter-in", "9", *TINY, "--out", "m.nc", "--plot", "plots",
+    code, _, err = run(capsys, "map", geom, "--diameter-in", "9", "--blades", "2", *TINY, "--out", "m.nc", "--plot", "plots",
                        "--plot-rpm", "5000")
     assert one_line_error(code, err, "--plot: plots/map_contours_5000rpm.png is the input file"), err
     assert files(tmp_path) == before
@@ -95,7 +95,7 @@ def test_export_sim_fixes_and_names_what_the_envelope_cannot_determine(capsys, t
     assert code == 0, err
     c = _coefficients(out)
     assert {k for k in ("k_h", "k_z", "k_d") if c[k] == 0.0} == fixed
-    report = json.loads((tmp_path / "c.py.json").read_text())
+    report = json.loads((tmp_path / "c.report.json").read_text())
     assert set(report["fixed_at_zero"]) == fixed
     for name in fixed:
         assert f"propmap: warning: {name} fixed at 0: its term's size" in err
@@ -119,7 +119,7 @@ def test_export_sim_all_flagged_envelope_says_n_a(capsys, tmp_path):
     assert code == 0, err
     assert "nan" not in text.lower() and "rms     n/a  max     n/a" in text
     assert "propmap: warning: every one of the 60 points of the envelope is flagged" in err
-    report = json.loads((tmp_path / "c.py.json").read_text(), parse_constant=pytest.fail)
+    report = json.loads((tmp_path / "c.report.json").read_text(), parse_constant=pytest.fail)
     assert report["errors"]["thrust"]["rms"] is None and report["errors"]["thrust"]["max_flagged"] > 0
 
 
@@ -139,7 +139,7 @@ def test_map_all_too_large_is_refused_before_any_work(capsys, tmp_path):
     t0 = time.perf_counter()
     code, _, err = run(capsys, "map", "--all", "--rpm", "1000:20000:200", "--airspeed", "0:40:200",
                        "--incidence-deg", "0:180:500", "--out", tmp_path / "all.nc")
-    assert one_line_error(code, err, "points for each of 108 propellers (2,160,000,000 in all); at most 20,000,000")
+    assert one_line_error(code, err, "points for each of 147 propellers (2,940,000,000 in all); at most 20,000,000")
     assert time.perf_counter() - t0 < 30 and list(tmp_path.iterdir()) == []
 
 

@@ -159,9 +159,9 @@ def test_section_presets_reproduce_their_published_polar(name):
 
 
 def test_section_preset_in_files_and_names():
-    p, _ = params_from_dict({"section": "naca0015", "cl_alpha": 5.5})
+    p = params_from_dict({"section": "naca0015", "cl_alpha": 5.5})
     assert p.cl_alpha == 5.5 and p.cd_min == section_preset("naca0015").cd_min
-    assert resolve_params("section:naca0018")[0] == section_preset("naca0018")
+    assert resolve_params("section:naca0018") == section_preset("naca0018")
     with pytest.raises(ValueError, match="section must be one of naca0015, naca0018, got 'naca9999'"):
         params_from_dict({"section": "naca9999"})
     with pytest.raises(ValueError, match="section_model must be 'cambered'"):
@@ -229,16 +229,16 @@ def test_cli_loads_collective_option_column_and_descent_outputs(tmp_path, capsys
 def test_cli_trim_and_generic_rotor_warning(tmp_path, capsys):
     g = tmp_path / "rot_47x1_geom.txt"
     g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
-    assert main(["trim", str(g), "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--json"]) == 0
+    assert main(["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--json"]) == 0
     cap = capsys.readouterr()
     import json
 
     j = json.loads(cap.out)
     assert j["thrust"] == pytest.approx(20.0, abs=1e-5) and j["collective_deg"] > 0
     assert "lowest collective" in j["branch"] and "warning" not in cap.err
-    assert main(["loads", str(g), "--rpm", "1200"]) == 0  # the generic set: warned
+    assert main(["loads", str(g), "--blades", "3", "--rpm", "1200"]) == 0  # the generic set: warned
     assert "a rotor's blade, not a propeller's" in capsys.readouterr().err
-    assert main(["trim", str(g), "--thrust", "1e4", "--rpm", "1200", "--params", "section:naca0015"]) == 2
+    assert main(["trim", str(g), "--blades", "3", "--thrust", "1e4", "--rpm", "1200", "--params", "section:naca0015"]) == 2
     assert "--thrust: no collective" in capsys.readouterr().err
 
 
@@ -253,7 +253,7 @@ def test_cli_map_with_a_collective(tmp_path, capsys):
         om = float(ds["omega"].isel(rpm=1))
     from propmap.io.calibration import default_params
 
-    p = default_params("apce_8x6")[0]
+    p = default_params("apce_8x6")
     ref = float(pm.rotor_loads(pm.load_propeller("apce_8x6"), p, om, 0.0, 0.0,
                                collective=math.radians(3.0)).thrust)
     assert T == pytest.approx(ref, rel=1e-6)
@@ -306,7 +306,7 @@ def test_cli_trim_hover_reference_and_flag_meanings_in_text(tmp_path, capsys):
     and, in text output, each flag with its meaning."""
     g = tmp_path / "rot_47x1_geom.txt"
     g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
-    base = ["trim", str(g), "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--hover-reference"]
+    base = ["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--hover-reference"]
     assert main(base + ["--json"]) == 0
     import json
 

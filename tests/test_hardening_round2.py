@@ -113,7 +113,7 @@ def test_api_model_arguments_of_the_wrong_type_are_type_errors_naming_them(small
     cases = [
         (lambda: pm.rotor_loads(None, par, 800.0, 0.0, 0.0), "propeller must be a Propeller"),
         (lambda: pm.rotor_loads(p, "gill2017-apc", 800.0, 0.0, 0.0), "resolve it with propmap.resolve_params"),
-        (lambda: pm.rotor_loads(p, par, 800.0, 0.0, 0.0, air=None), "air must be a propmap.Air"),
+        (lambda: pm.rotor_loads(p, par, 800.0, 0.0, 0.0, air="x"), "air must be a propmap.Air"),
         (lambda: pm.rotor_loads(p, par, 800.0, 0.0, 0.0, discretization=5), "discretization must be"),
         (lambda: pm.HoverModel.from_model(None, par, 800.0), "propeller must be a Propeller"),
         (lambda: pm.rotor_wrench("x", par, [1, 0, 0], [0, 0, 1], 800.0), "propeller must be a Propeller"),

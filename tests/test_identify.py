@@ -190,8 +190,8 @@ def test_bad_level_flight_data(tmp_path, quad, text, match):
     "text, match",
     [
         ("rpm,incidence_deg,thrust\n" + "5000,1,2\n" * 8, "lacks column airspeed"),
-        ("airspeed,thrust\n" + "1,2\n" * 8, "lacks column rpm"),
-        ("rpm,airspeed,incidence_deg\n" + "5000,1,0\n" * 8, "none of the load columns"),
+        ("airspeed,thrust\n" + "1,2\n" * 8, "no rotation-speed column: looked for rpm .*found 'airspeed', 'thrust'"),
+        ("rpm,airspeed,incidence_deg\n" + "5000,1,0\n" * 8, "no load column: looked for thrust, torque or drag"),
         ("rpm,airspeed,incidence_deg,thrust\n" + "5000,1,0,2\n" * 8, "identical"),
         ("rpm,airspeed,incidence_deg,thrust\n5000,1,0,2\n6000,1,0,abc\n", "line 3"),
     ],

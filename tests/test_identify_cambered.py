@@ -86,9 +86,15 @@ def test_the_prior_keeps_a_static_run_near_the_base_and_changes_rich_data_little
 
 
 def test_default_parameters_follow_the_data(apc8x6):
+    """One sweep rate: the Reynolds terms are fitted when a static run spans 1.5x in rpm
+    (2500-6500 here; STATIC_RPM_SPAN), kept at the base's when it does not."""
     one_rate = synthetic(apc8x6, TRUE, sweep_rpm=(5000.0,))
-    assert _data_kind(one_rate) == "few_rates"
+    assert _data_kind(one_rate) == "rates"
     r = fit_loads(one_rate, apc8x6, options=FitOptions(max_nfev=5))
+    assert r.names == CAMBERED_FIT_RE
+    narrow = one_rate.subset((one_rate.airspeed > 0) | (one_rate.omega > 4500 * RPM))  # static 4545-6500 rpm
+    assert _data_kind(narrow) == "few_rates"
+    r = fit_loads(narrow, apc8x6, options=FitOptions(max_nfev=5))
     assert r.names == CAMBERED_FIT  # Reynolds terms kept at the base
 
 

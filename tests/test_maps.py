@@ -16,7 +16,8 @@ from .conftest import RPM
 def small_map():
     """apce_8x6, calibrated parameters, a coarse grid (5 x 6 x 13), 300 check points."""
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6), np.radians(np.linspace(0, 180, 13)),
                    air=air, params_label=label, n_check=300)
     return prop, params, ds
@@ -241,7 +242,8 @@ def test_default_grid_meets_the_error_targets_outside_flagged_regions():
     tip-loss angle took the closure's mass-flow velocity (one root per annulus there since):
     the limits carry that 1% (linear) and 0.3% (cubic) headroom."""
     prop = pm.load_propeller("apce_8x6")
-    params, air, _ = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air = params.air
     rpm, V, inc = default_axes(prop)
     ds = build_map(prop, params, rpm * RPM, V, np.radians(inc), air=air, n_check=2000, seed=3)
     a = ds.attrs

@@ -37,7 +37,8 @@ int main(void)
 @pytest.fixture(scope="module")
 def rotor_map():
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     ds = build_map(prop, params, np.geomspace(3000, 9000, 6) * RPM, np.linspace(0, 15, 7),
                    np.radians(np.linspace(0, 180, 19)), air=air, params_label=label, n_check=200)
     return RotorMap(ds)

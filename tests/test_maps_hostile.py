@@ -32,7 +32,8 @@ RPM = 2 * math.pi / 60
 def tiny():
     """A 4 x 3 x 5 map of apce_8x6 with its error check (20 points)."""
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     ds = build_map(prop, params, np.linspace(3000, 9000, 4) * RPM, np.linspace(0, 10, 3),
                    np.radians(np.linspace(0, 180, 5)), air=air, params_label=label, n_check=20)
     return ds

@@ -36,6 +36,8 @@ PARAMS = "cl1 = 5.3\ncl2 = 1.7\ncd = 1.8\nalpha0_deg = 20.6\n"
 LOADS = "rpm,airspeed,incidence_deg,thrust,torque\n" + "".join(
     f"{5000 + 100 * k},{k},{10 * k},{1 + 0.1 * k},{0.01 + 0.001 * k}\n" for k in range(8))
 ROTOR = "[[rotors]]\nposition = [0, 0, 0]\naxis = [0, 0, 1]\nspin = 'cw'\npropeller = 'apce_8x6'\n"
+#: the same rotor with a UIUC geometry file, which needs its blade count
+GEOM_ROTOR = "mass = 1\n[[rotors]]\nposition = [0, 0, 0]\naxis = [0, 0, 1]\nspin = 'cw'\nblades = 2\npropeller = 'apce_8x6'\n"
 VEHICLE = "mass = 1\n" + ROTOR
 
 
@@ -110,10 +112,10 @@ def test_utf8_bom_is_accepted_everywhere(tmp_path, quad):
     loads = read_loads(_write(tmp_path, "l.csv", bom + LOADS))  # Excel's "CSV UTF-8"
     assert loads.n == 8 and loads.omega[0] == pytest.approx(5000 * math.pi / 30)
     assert read_level_flight(_write(tmp_path, "d.csv", bom + FLIGHT), quad).n > 6
-    assert read_params(_write(tmp_path, "p.toml", bom + PARAMS))[0].cl1 == 5.3
+    assert read_params(_write(tmp_path, "p.toml", bom + PARAMS)).cl1 == 5.3
     assert read_vehicle(_write(tmp_path, "v.toml", bom + VEHICLE)).mass == 1.0
     assert read_uiuc_geometry(_write(tmp_path, "g_9x6_geom.txt", bom + GEOM)).n_blades == 2
-    assert read_geometry(_write(tmp_path, "h_9x6_geom.txt", bom + GEOM)).radius == pytest.approx(4.5 * 0.0254)
+    assert read_geometry(_write(tmp_path, "h_9x6_geom.txt", bom + GEOM), n_blades=2).radius == pytest.approx(4.5 * 0.0254)
     static = _write(tmp_path, "x_9x6_static_r1.txt", bom + "RPM CT CP\n3000 0.1 0.05\n")
     assert looks_like_uiuc(static) and read_uiuc_static(static).rpm[0] == 3000
 
@@ -217,7 +219,7 @@ def test_long_header_name(tmp_path):
 
 def test_non_ascii_column_names(tmp_path, quad):
     p = _write(tmp_path, "l.csv", LOADS.replace("rpm,", "rpm_\u00b2,", 1))
-    refused(DataError, read_loads, p, match="lacks column rpm")
+    refused(DataError, read_loads, p, match="no rotation-speed column: looked for rpm .*found 'rpm_²'")
     p = _write(tmp_path, "d.csv", FLIGHT.replace("rpm_4", "rpm_\u00b2", 1))
     refused(DataError, read_level_flight, p, quad, match=r"rotor columns \['rpm_1', 'rpm_2', 'rpm_3', 'rpm_\u00b2'\]")
     p = _write(tmp_path, "d.csv", FLIGHT.replace("rpm_4", "rpm_\u0664", 1))  # Arabic-Indic digit four
@@ -261,7 +263,6 @@ def test_numbers_must_be_plain_ascii(tmp_path):
     ("thrust", "1e300", r"thrust must be in \[-100000, 100000\] N, got 1e\+300"),
     ("torque", "-2e4", r"torque must be in \[-10000, 10000\] N m"),
     ("rpm", "1e6", r"rpm must be > 0 and <= 954929 .*got rpm = 1e\+06"),
-    ("rpm", "0", "rpm must be > 0"),
     ("airspeed", "600", r"airspeed must be in \[0, 500\] m/s"),
     ("incidence_deg", "181", r"incidence_deg must be in \[0, 180\] deg"),
 ])
@@ -271,6 +272,16 @@ def test_loads_out_of_physical_range(tmp_path, column, value, match):
     rows[3][cols.index(column)] = value
     p = _write(tmp_path, "l.csv", ",".join(cols) + "\n" + "".join(",".join(r) + "\n" for r in rows))
     refused(DataError, read_loads, p, match="line 5: " + match)
+
+
+def test_loads_rows_of_a_stopped_motor_are_skipped_and_said(tmp_path):
+    """rpm 0 (a thrust stand's motor off) is not a point of the model: skipped, with a note."""
+    cols = LOADS.splitlines()[0].split(",")
+    rows = [r.split(",") for r in LOADS.splitlines()[1:]]
+    rows.append(list(rows[0]))
+    rows[-1][cols.index("rpm")] = "0"
+    d = read_loads(_write(tmp_path, "l.csv", ",".join(cols) + "\n" + "".join(",".join(r) + "\n" for r in rows)))
+    assert d.n == len(rows) - 1 and any("1 rows with rpm 0" in n for n in d.notes)
 
 
 def test_level_flight_ranges_and_partial_body_rates(tmp_path, quad):
@@ -365,22 +376,22 @@ def test_vehicle_propeller_path_is_relative_to_the_vehicle_file(tmp_path, monkey
     (tmp_path / "craft").mkdir()
     (tmp_path / "elsewhere").mkdir()
     _write(tmp_path / "craft", "my_9x6_geom.txt", GEOM)
-    v = _write(tmp_path / "craft", "v.toml", VEHICLE.replace("'apce_8x6'", "'my_9x6_geom.txt'"))
+    v = _write(tmp_path / "craft", "v.toml", GEOM_ROTOR.replace("'apce_8x6'", "'my_9x6_geom.txt'"))
     monkeypatch.chdir(tmp_path / "elsewhere")
     veh = read_vehicle(v)
     assert veh.rotors[0].propeller.radius == pytest.approx(4.5 * 0.0254)
     # a file beside the working directory but not beside the vehicle file is not used
     _write(tmp_path / "elsewhere", "cwd_9x6_geom.txt", GEOM)
-    v2 = _write(tmp_path / "craft", "v2.toml", VEHICLE.replace("'apce_8x6'", "'cwd_9x6_geom.txt'"))
+    v2 = _write(tmp_path / "craft", "v2.toml", GEOM_ROTOR.replace("'apce_8x6'", "'cwd_9x6_geom.txt'"))
     msg = refused(VehicleFileError, read_vehicle, v2, match="relative path is taken from the vehicle file's folder")
     assert str(tmp_path / "craft" / "cwd_9x6_geom.txt") in msg
     # a subfolder and an absolute path work; a broken geometry file is named
     (tmp_path / "craft" / "props").mkdir()
     _write(tmp_path / "craft" / "props", "sub_10x5_geom.txt", GEOM)
-    v3 = _write(tmp_path / "craft", "v3.toml", VEHICLE.replace("'apce_8x6'", "'props/sub_10x5_geom.txt'"))
+    v3 = _write(tmp_path / "craft", "v3.toml", GEOM_ROTOR.replace("'apce_8x6'", "'props/sub_10x5_geom.txt'"))
     assert read_vehicle(v3).rotors[0].propeller.radius == pytest.approx(5 * 0.0254)
     absolute = (tmp_path / "craft" / "props" / "sub_10x5_geom.txt").as_posix()
-    v4 = _write(tmp_path / "elsewhere", "v4.toml", VEHICLE.replace("'apce_8x6'", f"'{absolute}'"))
+    v4 = _write(tmp_path / "elsewhere", "v4.toml", GEOM_ROTOR.replace("'apce_8x6'", f"'{absolute}'"))
     assert read_vehicle(v4).rotors[0].propeller.radius == pytest.approx(5 * 0.0254)
     _write(tmp_path / "craft", "bad_9x6_geom.txt", "r/R c/R beta\n0.2 0.1 nan\n")
     v5 = _write(tmp_path / "craft", "v5.toml", VEHICLE.replace("'apce_8x6'", "'bad_9x6_geom.txt'"))
@@ -429,7 +440,7 @@ def test_uiuc_millimetre_families(tmp_path, family):
     assert prop.pitch == pytest.approx(0.070)
     assert "130 mm" in prop.source and "millimetres" in prop.source
     with pytest.warns(UserWarning, match="millimetres"):
-        assert read_geometry(p).diameter == pytest.approx(0.130)
+        assert read_geometry(p, n_blades=2).diameter == pytest.approx(0.130)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # an explicit diameter: no guess, no warning
         assert read_uiuc_geometry(p, diameter_in=5.0).diameter == pytest.approx(5 * 0.0254)

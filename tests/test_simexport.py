@@ -17,7 +17,8 @@ from propmap.simexport import Envelope, _errors, _samples, export_sim, predict, 
 @pytest.fixture(scope="module")
 def model():
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     return prop, params, air, label
 
 

@@ -102,7 +102,7 @@ def test_the_empirical_descent_flags_its_blend_with_forward_speed_only():
     not axial descent (the measurements' own range), not fast forward flight with a slight
     descent, not Glauert's model."""
     prop = pm.load_propeller("apce_8x6")
-    p = pm.default_params("apce_8x6")[0]
+    p = pm.default_params("apce_8x6")
     V = np.array([2.0, 4.0, 6.0])[:, None]
     b = np.radians([180.0, 150.0, 120.0, 95.0])[None, :]
     r = pm.rotor_loads(prop, p, 700.0, V, b)
@@ -121,7 +121,7 @@ def test_a_vanishing_descent_rate_gives_the_hover_loads(name):
     inversion clipped its descent ratio at 1e-12 and returned a thrust near 0, converged and
     unflagged; the loads must tend to hover's."""
     prop = pm.load_propeller(name)
-    p = pm.default_params(name)[0]
+    p = pm.default_params(name)
     V = np.array([0.0, 1e-300, 1e-100, 1e-14, 1e-12, 1e-11, 1e-9])
     for b in (math.pi, math.radians(135.0)):
         r = pm.rotor_loads(prop, p, 5500 * math.pi / 30, V, b)

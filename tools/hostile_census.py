@@ -32,7 +32,8 @@ def _tiny():
     from propmap.maps import build_map
 
     prop = pm.load_propeller("apce_8x6")
-    params, air, label = pm.default_params("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    air, label = params.air, params.label
     rpm = 2 * math.pi / 60
     return prop, build_map(prop, params, np.linspace(3000, 9000, 4) * rpm, np.linspace(0, 10, 3),
                            np.radians(np.linspace(0, 180, 5)), air=air, params_label=label, n_check=20)

@@ -160,7 +160,7 @@ def _solve_block(propeller, params, air, discretization, om, V, b):
                      *(np.asarray(getattr(r, f), float) for f in FLAGS)])
 
 
-def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, incidence, *, air: Air = Air(),
+def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, incidence, *, air: Air | None = None,
               discretization: Discretization = DEFAULT_DISCRETIZATION, params_label: str = "",
               citation: str = "", chunk_points: int = 20_000, scheduler=None, progress: bool = False,
               n_check: int = 2000, seed: int = 0):
@@ -173,7 +173,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     omega, airspeed, incidence : array_like, shape (n0,), (n1,), (n2,)
         Strictly increasing axes: Omega [rad/s] in [0.1, 1e5], V [m/s] in [0, 500],
         incidence beta [rad] in [0, pi].
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     discretization : Discretization
     params_label : str
         How the parameters were named (``calibrated:apce_8x6``, a file), kept in the map.
@@ -212,6 +213,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     TypeError
         A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
     """
+    air = getattr(params, "air", None) if air is None else air  # checked below
     import dask.array as da
     import xarray as xr
 

@@ -327,7 +327,14 @@ def _errors(target: str, coefficients: dict, s) -> dict:
     return out
 
 
-def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: Envelope | None = None,
+def report_path(path) -> Path:
+    """The report written beside an export: ``<stem>.report.json`` (``c.json`` gets
+    ``c.report.json``, not ``c.json.json``; the fit commands' convention)."""
+    path = Path(path)
+    return path.with_name(path.stem + ".report.json")
+
+
+def export_sim(target: str, propeller, params, *, air: Air | None = None, envelope: Envelope | None = None,
                n_points: int = 4000, seed: int = 0, params_label: str = "") -> SimExport:
     """Fit ``target``'s coefficients to the full model over ``envelope`` and measure its error.
 
@@ -336,7 +343,8 @@ def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: En
     target : {"rotorpy", "gazebo", "gill2019"}
     propeller : Propeller
     params : AirfoilParams or CamberedParams
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     envelope : Envelope, optional
         Default: :func:`default_envelope`.
     n_points : int
@@ -366,6 +374,7 @@ def export_sim(target: str, propeller, params, *, air: Air = Air(), envelope: En
         ``SimExport.fixed``); an envelope whose every point is flagged (its errors
         outside flagged regions are NaN: nothing to measure them on).
     """
+    air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air)
     if target not in TARGETS:
         raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r:.60}")
@@ -468,7 +477,7 @@ def write_export(res: SimExport, path) -> list[Path]:
     from .io.atomic import atomic_paths, file_sha256
     from .io.mapfile import _json_safe
 
-    report = path.with_name(path.name + ".json")
+    report = report_path(path)
     # the file and its report as a pair; the report names the file's SHA-256
     with atomic_paths([path, report]) as (tmp, tmp_report):
         tmp.write_text(text)

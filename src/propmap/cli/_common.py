@@ -158,9 +158,11 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
         from ..io.calibration import default_params
         from ..io.catalogue import catalogue
 
-        return default_params(prop_spec if prop_spec in catalogue() else "")
+        p = default_params(prop_spec if prop_spec in catalogue() else "")
+        return p, p.air, p.label
     try:
-        params, air = resolve_params(spec)
+        params = resolve_params(spec)
+        air = params.air
     except KeyError as exc:
         raise InputError(f"{option}: {exc.args[0]}") from None
     except ValueError as exc:
@@ -349,3 +351,74 @@ def with_prop_options(f):
     for opt in reversed(prop_options):
         f = opt(f)
     return f
+
+
+#: the densities accepted on the command line [kg/m^3] (as parameter files)
+RHO_RANGE = (1e-3, 2000.0)
+
+air_options = [
+    click.option("--rho", type=float, default=None,
+                 help="Air density [kg/m^3] (default: that of the parameter set); viscosity and speed of sound stay "
+                      "the set's."),
+    click.option("--temperature-c", type=float, default=None,
+                 help="Air temperature [degC], with --pressure-pa: density, viscosity and speed of sound of dry air."),
+    click.option("--pressure-pa", type=float, default=None, help="Static air pressure [Pa], with --temperature-c."),
+    click.option("--altitude-m", type=float, default=None,
+                 help="The International Standard Atmosphere at this altitude [m] (ISO 2533)."),
+]
+
+
+def with_air_options(f):
+    """Add --rho, --temperature-c, --pressure-pa and --altitude-m to a command."""
+    for opt in reversed(air_options):
+        f = opt(f)
+    return f
+
+
+def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+    """The air of a command: the parameter set's ``air``, or what the air options give.
+
+    ``--rho`` replaces the density only; ``--temperature-c`` with ``--pressure-pa`` gives
+    dry air at those conditions and ``--altitude-m`` the ISA (core.airfoil.Air). One of the
+    three ways at a time.
+
+    Raises
+    ------
+    InputError
+        Options of two ways, a temperature without a pressure (or the reverse), a value out
+        of its range (named with the option).
+    """
+    from ..core.airfoil import Air
+
+    ways = [w for w, given_ in (("--rho", rho is not None),
+                                ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),
+                                ("--altitude-m", altitude_m is not None)) if given_]
+    if len(ways) > 1:
+        raise InputError(f"give the air one way: {' or '.join(ways)}, not both")
+    if rho is not None:
+        if not (math.isfinite(rho) and RHO_RANGE[0] <= rho <= RHO_RANGE[1]):
+            raise InputError(f"--rho must be in [{RHO_RANGE[0]:g}, {RHO_RANGE[1]:g}] kg/m^3, got {rho!r}")
+        return Air(rho=rho, mu=air.mu, speed_of_sound=air.speed_of_sound)
+    if temperature_c is not None or pressure_pa is not None:
+        if temperature_c is None or pressure_pa is None:
+            raise InputError("--temperature-c and --pressure-pa go together (or give --rho or --altitude-m)")
+        try:
+            return Air.from_conditions(temperature_c + 273.15, pressure_pa)
+        except ValueError as exc:
+            msg = str(exc)
+            if msg.startswith("temperature"):
+                lo, hi = (v - 273.15 for v in (180.0, 350.0))
+                raise InputError(f"--temperature-c must be finite and in [{lo:g}, {hi:g}] degC, got "
+                                 f"{temperature_c!r}") from None
+            raise InputError(f"--pressure-pa {msg.split(' ', 1)[1]}") from None
+    if altitude_m is not None:
+        try:
+            return Air.isa(altitude_m)
+        except ValueError as exc:
+            raise InputError(f"--altitude-m {str(exc).split(' ', 1)[1]}") from None
+    return air
+
+
+def air_label(air) -> str:
+    """One line of the air used, for outputs."""
+    return f"rho {air.rho:.4g} kg/m^3, mu {air.mu:.4g} Pa s, speed of sound {air.speed_of_sound:.4g} m/s"

@@ -6,7 +6,7 @@ import math
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, echo_json, load_params,
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, echo_json, load_params,
                       load_prop, with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo": ".sdf", "gill2019": ".json"}
@@ -65,21 +65,23 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
-def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_json, diameter_in, blades):
+@with_air_options
+def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_json, diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Fit a simulator's simple rotor model to propmap and report what it costs.
 
     The coefficients are fitted by least squares to the full model over the envelope, and
     each load's error against the full model is reported (docs/simulators.md).
     """
-    from ..simexport import export_sim, write_export
+    from ..simexport import export_sim, report_path, write_export
 
     if out.suffix.lower() != SUFFIX[target]:
         raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
     if not 20 <= n_points <= 1_000_000:
         raise InputError(f"--points must be in [20, 1000000], got {n_points}")
-    check_outputs([("--out", out), ("--out (report)", out.with_name(out.name + ".json"))], [params_spec, prop])
+    check_outputs([("--out", out), ("--out (report)", report_path(out))], [params_spec, prop])
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
     try:

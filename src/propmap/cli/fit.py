@@ -9,7 +9,11 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, _is_file, _short, check_outputs, check_section_match, load_params, load_prop, parse_names
+from ._common import (InputError, PathArg, _is_file, _short, check_outputs, check_section_match, load_params, load_prop,
+                      parse_names, resolve_air, warn, with_air_options)
+
+#: the fit warnings printed (the report has them all)
+MAX_WARNINGS = 3
 
 fit_options = [
     click.option("--out", type=PathArg(), required=True, help="Parameter TOML to write."),
@@ -87,24 +91,38 @@ def _out_files(out: Path) -> list:
                                      for s in (".report.json", ".report.txt", ".png")]
 
 
+def _coverage(data, prop) -> dict:
+    """What load data cover, for the written file's [coverage] table."""
+    import numpy as np
+
+    n = data.omega / (2 * math.pi)
+    return {"J_max": float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter))),
+            "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
+            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
+            "airspeed_max": float(np.max(data.airspeed))}
+
+
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
-                   body=None) -> dict:
+                   body=None, coverage=None, header: str = "") -> dict:
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
-    report = {**result.to_dict(), "base": base_label, "params_file": str(out)}
-    write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body)
+    report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage}
+    write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body,
+                 coverage=coverage)
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
-    text = result.report_text() + ("\n" + extra_text if extra_text else "")
+    text = (header + "\n" if header else "") + result.report_text() + ("\n" + extra_text if extra_text else "")
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
         figure(stem.with_name(stem.name + ".png"))
     click.echo(json.dumps(report, indent=2, default=float) if as_json else text)
-    for w in result.warnings:
+    for w in result.warnings[:MAX_WARNINGS]:
         click.echo(f"propmap: warning: {w}", err=True)
+    if len(result.warnings) > MAX_WARNINGS:
+        click.echo(f"propmap: warning: {len(result.warnings) - MAX_WARNINGS} more in {stem.name}.report.txt", err=True)
     click.echo(f"wrote {out}, {stem.name}.report.json, {stem.name}.report.txt, {stem.name}.png", err=True)
     return report
 
@@ -147,7 +165,8 @@ def fit() -> None:
               help="The model and the constants not fitted: the paper's Table I sets (fit from the paper's x0), "
                    "'generic' or a parameter file (cambered: fit from it).")
 @with_fit_options
-def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, no_prior, as_json):
+@with_air_options
+def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     from dataclasses import replace
 
@@ -170,6 +189,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
     base, air, base_label = load_params(base_spec, option="--base")
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     opts = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), body_lift=body_lift)
     res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
@@ -188,7 +208,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
-def _read_sources(sources, prop_spec, diameter_in, blades, air):
+def _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source=None, pole_pairs=None):
     """(data, propeller, catalogue entry or None, label) from the SOURCE arguments."""
     from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
     from ..io.catalogue import catalogue, get_entry
@@ -221,7 +241,8 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air):
         if len(sources) > 1:
             raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
                              "(J CT CP eta) file; several files must all be, or give one CSV at a time")
-        return read_loads(sources[0]), prop, None, Path(sources[0]).name
+        return (read_loads(sources[0], rpm_source=rpm_source, pole_pairs=pole_pairs), prop, None,
+                Path(sources[0]).name)
     except DataError as exc:
         raise InputError(f"SOURCE: {exc}") from None
 
@@ -254,15 +275,24 @@ def _warn_other_propeller(sources, prop) -> None:
 @click.option("--base", "base_spec", default=None,
               help="The model, start and constants not fitted: default 'generic' (cambered, fitted to the "
                    "catalogue); a parameter file, 'calibrated:NAME', or a Table I set for the paper's model.")
+@click.option("--rpm-source", type=click.Choice(["optical", "electrical"]), default=None,
+              help="A thrust-stand export's speed column (default: the optical one where present).")
+@click.option("--pole-pairs", type=int, default=None,
+              help="Divide a stand's electrical speed by the motor's pole pairs (raw electrical rpm), in [1, 50].")
+@click.option("--skip-sanity-check", is_flag=True,
+              help="Fit data whose loads are more than 3x off the generic model's (refused by default: units?).")
 @with_fit_options
-def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, out, M, lift_model, fit_params,
-          multistart, no_prior, as_json):
+@with_air_options
+def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, rpm_source, pole_pairs,
+          skip_sanity_check, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None,
+          temperature_c=None, pressure_pa=None, altitude_m=None):
     """Fit to load measurements of one propeller.
 
     SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
-    rpm and any of thrust, drag, torque (airspeed, incidence_deg and collective_deg optional:
-    a static thrust stand, or a rotor's hover collective sweep; optional group), or
-    UIUC-format static and wind-tunnel files.
+    rpm and any of thrust, drag, torque, with or without units in the names (thrust_kgf,
+    Thrust (gf), torque_Nmm; airspeed, incidence_deg and collective_deg optional: a static
+    thrust stand, or a rotor's hover collective sweep; optional group), an RCbenchmark /
+    Tyto thrust-stand export as written, or UIUC-format static and wind-tunnel files.
     """
     from dataclasses import replace
 
@@ -273,8 +303,21 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
 
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
-    data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source, pole_pairs)
+    for note in data.notes:
+        click.echo(f"propmap: note: {note}", err=True)
     check_section_match(prop, base_label)
+    if entry is None:
+        from ..identify.data import DataError, sanity_check
+
+        try:
+            for w in sanity_check(data, prop, air=air):
+                warn(w)
+        except DataError as exc:
+            if not skip_sanity_check:
+                raise InputError(f"SOURCE: {exc} (--skip-sanity-check fits it anyway)") from None
+            warn(str(exc))
     held = parse_names("--holdout", holdout, what="run") or ()
     population = None
     if entry is not None and held:
@@ -337,4 +380,6 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
                 for name in model)
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
-    _write_outputs(res, out, base_label, as_json, extra, figure=figure)
+    _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=_coverage(train, prop),
+                   header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
+                          f"{air.rho:.4g} kg/m^3")

@@ -7,22 +7,8 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, check_outputs, load_params, parse_names
+from ._common import InputError, PathArg, check_outputs, load_params, parse_names, resolve_air, with_air_options
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
-
-#: the densities accepted on the command line [kg/m^3] (as parameter files)
-RHO_RANGE = (1e-3, 2000.0)
-
-
-def _rho(rho, air):
-    from ..core.airfoil import Air
-
-    if rho is None:
-        return air
-    if not (math.isfinite(rho) and RHO_RANGE[0] <= rho <= RHO_RANGE[1]):
-        raise InputError(f"--rho must be in [{RHO_RANGE[0]:g}, {RHO_RANGE[1]:g}] kg/m^3, got {rho!r}")
-    return Air(rho=rho, mu=air.mu, speed_of_sound=air.speed_of_sound)
-
 
 def _vehicle(path: Path):
     from ..vehicle import VehicleFileError, read_vehicle
@@ -93,7 +79,6 @@ def _flight_out_files(out: Path) -> list:
 @click.option("--holdout", default=None, help="Comma-separated LOG file names to hold out (scored, not fitted).")
 @click.option("--base", "base_spec", default="generic", show_default=True,
               help="Start and constants not fitted: a named set or a parameter file.")
-@click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of --base).")
 @click.option("--rate-hz", type=float, default=25.0, show_default=True,
               help="Samples per second taken from the logs, in (0, 10000].")
 @click.option("--moments", is_flag=True,
@@ -101,8 +86,10 @@ def _flight_out_files(out: Path) -> list:
 @click.option("--cross-validate", "cross_validate", is_flag=True,
               help="Also leave each training log out in turn (one fit per log) and report the held-out errors.")
 @with_fit_options
-def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, moments, cross_validate, out, M,
-                       lift_model, fit_params, multistart, no_prior, as_json):
+@with_air_options
+def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments, cross_validate, out, M,
+                       lift_model, fit_params, multistart, no_prior, as_json, rho=None, temperature_c=None,
+                       pressure_pa=None, altitude_m=None):
     """Fit the rotor and airframe parameters to flight logs (eqs 16-18 in three axes).
 
     LOG: NeuroBEM .mat or .csv, or PX4 .ulg; the vehicle file lists its rotors in the logs'
@@ -121,7 +108,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rho, rate_hz, mom
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
-    air = _rho(rho, air)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     logs = _logs(log_paths)
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
@@ -245,10 +232,11 @@ def _hover_loads(params, veh, samples, air):
 @click.option("--params", "params_spec", default=None,
               help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
                    "else 'generic'.")
-@click.option("--rho", type=float, default=None, help="Air density [kg/m^3] (default: that of the parameter set).")
 @click.option("--out", type=PathArg(), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
-def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
+@with_air_options
+def wrench_command(log_path, vehicle, params_spec, out, as_json, rho=None, temperature_c=None,
+                   pressure_pa=None, altitude_m=None):
     """Predicted body force and moment at every sample of a flight log.
 
     Writes t, Fx, Fy, Fz, Mx, My, Mz (body frame: x forward, y left, z up; N, N m) and, when
@@ -265,7 +253,7 @@ def wrench_command(log_path, vehicle, params_spec, rho, out, as_json):
     veh = _vehicle(vehicle)
     check_outputs([("--out", out)], _vehicle_inputs(vehicle))
     params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
-    air = _rho(rho, air)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     body = veh.body_drag
     if params_spec is not None and Path(params_spec).is_file():
         try:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
+from ._common import (air_label, resolve_air, with_air_options, AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
                       check_section_match, echo_json, load_params, load_prop, warn, with_prop_options)
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
@@ -277,8 +277,9 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--out", help="Output CSV of --points ('-': standard output).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options
+@with_air_options
 def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, diameter_in,
-          blades):
+          blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
 
     Outputs are SI: N, N m, W; CT and CP in the propeller convention; in descent the
@@ -300,6 +301,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
             check_outputs([("--out", out)], inputs)
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
+        air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
         check_section_match(propeller, label)
         n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
         click.echo(f"wrote {n} points to {'standard output' if out == '-' else out} (params {label})"
@@ -315,8 +317,9 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     collective_deg = check_collective(collective_deg)
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
-    _coverage_messages(propeller, label, air, *_extremes(propeller, rpm, airspeed, incidence_deg))
+    _coverage_messages(propeller, label, air, *_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
     from ..core.solver import SolverError, rotor_loads
 
     try:
@@ -329,13 +332,16 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     ratio = {k: (float(d[k]) if math.isfinite(float(d[k])) else None) for k in ("v_i_over_v_h", "lambda2")}
     result.update(ratio, state=str(d["state"]), converged=bool(r.converged), flags=r.flags())
     if as_json:
-        echo_json({**result, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
+        echo_json({**result, "propeller": propeller.name, "n_blades": propeller.n_blades,
+                   "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "collective_deg": collective_deg,
+                   "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg"
                + (f", collective {collective_deg:g} deg" if collective_deg else "") + f" (params {label})")
+    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
     click.echo(f"  rolling moment M_R = {result['rolling_moment']:.5f} N m")
@@ -361,12 +367,16 @@ def check_collective(collective_deg):
 
 
 def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
-    """(largest tip speed [m/s], advance ratio of the axial flow, incidence [deg])."""
+    """(largest speed of the advancing blade tip [m/s], advance ratio of the axial flow,
+    incidence [deg]). The advancing tip meets the air at sqrt((Omega R + V sin b)^2 +
+    (V cos b)^2), not sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s,
+    not 102."""
     import numpy as np
 
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
     n = rpm / 60
-    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius, airspeed))),
+    b = np.radians(incidence_deg)
+    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
             float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
             float(np.max(incidence_deg)))
 
@@ -381,7 +391,7 @@ def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
     return n, ext
 
 
-def _coverage_messages(prop, label, air, tip_speed, J, incidence_deg) -> None:
+def _coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -> None:
     """One warning line per risk: tip Mach number (with the parameter set's speed of sound)
     above 0.7, advance ratio or incidence beyond the data behind the parameters
     (docs/validation.md)."""
@@ -397,5 +407,10 @@ def _coverage_messages(prop, label, air, tip_speed, J, incidence_deg) -> None:
     if J > cov["J_max"]:
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
     if incidence_deg > cov["incidence_deg_max"]:
-        warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to axial data only; off-axis "
-             "loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)")
+        axial = cov["incidence_deg_max"] == 0
+        warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
+             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)"
+                if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
+    if rpm is not None and "rpm_min" in cov and not cov["rpm_min"] <= rpm <= cov["rpm_max"]:
+        warn(f"{rpm:g} rpm: the data behind {label} span {cov['rpm_min']:.0f}-{cov['rpm_max']:.0f} rpm (Reynolds "
+             "numbers beyond them are extrapolated)")

@@ -11,7 +11,8 @@ from pathlib import Path
 import click
 
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
-                      check_section_match, echo_json, given, load_params, load_prop, parse_names, with_prop_options)
+                      check_section_match, echo_json, given, load_params, load_prop, parse_names, resolve_air,
+                      with_air_options, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
@@ -88,9 +89,10 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
                                                "drawn at its nearest node; default: the middle of the axis).")
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
 @with_prop_options
+@with_air_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,
                 c_name, check_points, check_file, all_props, only, max_error_pct, scheduler, plot_dir, plot_rpm, as_json,
-                diameter_in, blades):
+                diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
     The map stores thrust, drag, torque, rolling moment, power, CT, CP and the flags of
@@ -157,6 +159,7 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
     else:
         propeller = load_prop(prop, diameter_in, blades)
         params, air, label = load_params(params_spec, prop)
+        air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
         check_section_match(propeller, label)
         if collective_deg is not None:
             try:
@@ -169,7 +172,9 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
-            with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client) as ds:
+            air_of = (lambda a: resolve_air(a, rho, temperature_c, pressure_pa, altitude_m))
+            air_of(load_params("generic")[1])  # options checked before any work
+            with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client, air_of) as ds:
                 ds.attrs["build_seconds"] = time.perf_counter() - t0
                 files = write_map(ds, out, fmt)
         else:
@@ -248,7 +253,7 @@ def _catalogue(only):
 
 
 @contextlib.contextmanager
-def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client):
+def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, air_of=lambda air: air):
     """The maps of ``names`` on one grid, as one lazy Dataset along ``prop`` (per-propeller
     metadata in the attribute ``per_prop_json``). Each propeller's map goes to a hidden
     folder beside ``out`` as soon as it is built (removed at the end, also when stopped),
@@ -267,8 +272,9 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client):
     with tempfile.TemporaryDirectory(prefix=f".{out.name}.", suffix=".parts", dir=out.parent) as tmp:
         parts, per_prop = [], {}
         for k, (name, p) in enumerate(tqdm(list(zip(names, props)), unit="prop", leave=False, disable=None)):
-            params, air, label = default_params(name)
-            ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
+            params = default_params(name)
+            air, label = params.air, params.label
+            ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air_of(air), params_label=label,
                            citation=catalogue()[name].citation, scheduler=client, n_check=check_points)
             per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
             parts.append(Path(tmp) / f"{k:04d}.nc")

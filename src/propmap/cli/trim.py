@@ -6,7 +6,7 @@ import math
 
 import click
 
-from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
                       load_params, load_prop, with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 
@@ -25,8 +25,9 @@ from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @with_prop_options
+@with_air_options
 def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_reference, params_spec, as_json,
-                 diameter_in, blades):
+                 diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Collective (blade-angle offset) at which PROP makes --thrust.
 
     The lowest collective in --range-deg that makes the thrust is returned (below stall the
@@ -44,6 +45,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
                          f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
     omega, beta = rpm * 2 * math.pi / 60, math.radians(incidence_deg)
     bounds = (math.radians(lo), math.radians(hi))

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from ._common import PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params, parse_names
+from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params, parse_names,
+                      resolve_air, with_air_options)
 from .validate_all import PROTOCOLS
 
 
@@ -40,7 +41,9 @@ def print_table(v) -> None:
 @click.option("--figure", type=PathArg(), default=None,
               help="Single propeller: figure (.png, .pdf or .svg) of the model against the measurements "
                    "(default: none written).")
-def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure):
+@with_air_options
+def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure, rho=None, temperature_c=None,
+             pressure_pa=None, altitude_m=None):
     """The model against bundled measurements.
 
     PROP: the model and the hover model against that catalogue propeller's UIUC static
@@ -53,6 +56,11 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
             raise InputError("give PROP or --all, not both")
         if params_spec is not None:
             raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
+        air_given = [o for o, v in (("--rho", rho), ("--temperature-c", temperature_c), ("--pressure-pa", pressure_pa),
+                                    ("--altitude-m", altitude_m)) if v is not None]
+        if air_given:
+            raise InputError(f"{air_given[0]} applies to a single PROP; --all compares coefficients in the air the "
+                             "sets were fitted in")
         from .validate_all import OUTPUT_FILES, run_all
 
         if figure is not None:
@@ -82,6 +90,7 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
     except KeyError as exc:
         raise InputError(f"PROP: {exc.args[0]} (validate needs a catalogue propeller with measurements)") from None
     params, air, label = load_params(params_spec, prop)
+    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     try:
         v = run_validation(entry, load_propeller(prop), params, air=air)
     except ValueError as exc:

@@ -103,6 +103,86 @@ class Air:
         for name in ("rho", "mu", "speed_of_sound"):
             object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0, low_open=True))
 
+    @classmethod
+    def from_conditions(cls, temperature: float, pressure: float) -> "Air":
+        """Dry air at a measured temperature and static pressure.
+
+        rho = p / (R T) with R = 287.05287 J/(kg K); mu by Sutherland's law,
+        mu = 1.458e-6 T^1.5 / (T + 110.4); speed of sound sqrt(1.4 R T) (the constants of
+        the U.S. Standard Atmosphere, 1976, and ISO 2533:1975). Humidity is left out: at
+        25 degC and 60% relative humidity it lowers rho by 0.8%.
+
+        Parameters
+        ----------
+        temperature : float
+            Static temperature T [K], in [180, 350].
+        pressure : float
+            Static pressure p [Pa], in [1e3, 1.2e5].
+
+        Raises
+        ------
+        ValueError
+            Naming the value out of its range.
+        """
+        T = _check_range("temperature", temperature, *TEMPERATURE_RANGE_K, "K")
+        p = _check_range("pressure", pressure, *PRESSURE_RANGE_PA, "Pa")
+        return cls(rho=p / (R_AIR * T), mu=SUTHERLAND_C1 * T**1.5 / (T + SUTHERLAND_S),
+                   speed_of_sound=math.sqrt(GAMMA_AIR * R_AIR * T))
+
+    @classmethod
+    def isa(cls, altitude: float) -> "Air":
+        """The International Standard Atmosphere at a geopotential altitude.
+
+        Troposphere (h <= 11 km): T = 288.15 K - 0.0065 K/m h, p = 101325 Pa (T / 288.15
+        K)^5.255877; the isothermal layer above it to 20 km: T = 216.65 K,
+        p = 22632.06 Pa exp(-g0 (h - 11000 m) / (R T)) (ISO 2533:1975; U.S. Standard
+        Atmosphere, 1976); then :meth:`from_conditions`. Sea level: rho 1.2250 kg/m^3, mu
+        1.789e-5 Pa s, speed of sound 340.29 m/s.
+
+        Parameters
+        ----------
+        altitude : float
+            h [m], in [-500, 20000].
+
+        Raises
+        ------
+        ValueError
+            ``altitude`` out of its range or not a number.
+        """
+        h = _check_range("altitude", altitude, *ALTITUDE_RANGE_M, "m")
+        if h <= 11000.0:
+            T = 288.15 - 0.0065 * h
+            p = 101325.0 * (T / 288.15) ** (G0 / (0.0065 * R_AIR))
+        else:
+            T = 216.65
+            p = 22632.06 * math.exp(-G0 * (h - 11000.0) / (R_AIR * T))
+        return cls.from_conditions(T, p)
+
+
+#: constants of dry air (U.S. Standard Atmosphere, 1976; ISO 2533:1975)
+R_AIR = 287.05287  # [J/(kg K)]
+GAMMA_AIR = 1.4
+SUTHERLAND_C1 = 1.458e-6  # [kg/(m s K^0.5)]
+SUTHERLAND_S = 110.4  # [K]
+G0 = 9.80665  # [m/s^2]
+#: valid ranges of Air.from_conditions and Air.isa
+TEMPERATURE_RANGE_K = (180.0, 350.0)
+PRESSURE_RANGE_PA = (1e3, 1.2e5)
+ALTITUDE_RANGE_M = (-500.0, 20000.0)
+
+
+def _check_range(name: str, value, lo: float, hi: float, unit: str) -> float:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
+    x = float(value)
+    if not (math.isfinite(x) and lo <= x <= hi):
+        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
+    return x
+
+
+#: the fields of the section records that are not model parameters: the set's air and label
+RECORD_META = ("air", "label")
+
 
 @dataclass(frozen=True, kw_only=True)
 class RotorOptions:
@@ -138,19 +218,34 @@ class RotorOptions:
         NACA TN 2474, 1951), written as an axial mass flow that fades into Glauert's with the
         in-plane speed (_physics.axial_mass_flow; docs/models.md); climb and hover unchanged;
         the default of the cambered model.
+    air : Air
+        The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
+        the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
+        function use it unless given an ``air`` of their own, so that a set never loses
+        its air on the way. Default :class:`Air` ().
+    label : str
+        Where the set comes from (``"generic"``, ``"calibrated:apce_8x6"``,
+        ``"section:naca0015"``, a file's path), for outputs; not part of equality.
 
     Raises
     ------
     ValueError
-        An unknown inflow or descent model or a value outside its range (the message names it).
+        An unknown inflow or descent model, a value outside its range, an ``air`` that is
+        not an :class:`Air` or a ``label`` that is not text (the message names it).
     """
 
     inflow: str = "uniform"
     flap_compliance: float = 0.0
     collective: float = 0.0
     descent: str = "empirical"
+    air: Air = field(default_factory=Air)
+    label: str = field(default="", compare=False)
 
     def _check_rotor_options(self) -> None:
+        if not isinstance(self.air, Air):
+            raise ValueError(f"air must be a propmap.Air, got {type(self.air).__name__}")
+        if not isinstance(self.label, str):
+            raise ValueError(f"label must be text, got {type(self.label).__name__}")
         if self.inflow not in INFLOW_MODELS:
             raise ValueError(f"inflow must be one of {', '.join(INFLOW_MODELS)}, got {self.inflow!r}")
         if self.descent not in DESCENT_MODELS:
@@ -236,8 +331,9 @@ class AirfoilParams(RotorOptions):
         return replace(self, **changes)
 
     def as_dict(self) -> dict:
-        """Return the fields as a plain dict (SI units, alpha0 in rad)."""
-        return asdict(self)
+        """Return the section and rotor fields as a plain dict (SI units, alpha0 in rad; without
+        ``air`` and ``label``, :data:`RECORD_META`)."""
+        return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
 
 def _check_flags(p) -> None:
@@ -358,8 +454,9 @@ class CamberedParams(RotorOptions):
         return replace(self, **changes)
 
     def as_dict(self) -> dict:
-        """Return the fields as a plain dict (SI units, alpha_L0 in rad)."""
-        return asdict(self)
+        """Return the section and rotor fields as a plain dict (SI units, alpha_L0 in rad; without
+        ``air`` and ``label``, :data:`RECORD_META`)."""
+        return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
 
 #: either section model's parameter record
@@ -384,13 +481,18 @@ def preset(name: str) -> AirfoilParams:
         (Table I of Gill & D'Andrea 2017: soft = Parrot AR.Drone 2.0,
         stiff = HQP 8x4.5, apc = APC 8x6).
 
+    Returns
+    -------
+    AirfoilParams
+        Carrying footnote 2's air and the label ``name``.
+
     Raises
     ------
     KeyError
         If ``name`` is not a preset; the message lists the valid names.
     """
     try:
-        return PRESETS[name]
+        return PRESETS[name].replace(label=name)
     except KeyError:
         raise KeyError(f"unknown parameter preset {name!r}; valid: {', '.join(PRESETS)}") from None
 

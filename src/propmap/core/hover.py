@@ -41,7 +41,7 @@ class HoverModel:
 
     @classmethod
     def from_model(cls, propeller: Propeller, params: AirfoilParams, omega: float, *,
-                   air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION) -> "HoverModel":
+                   air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> "HoverModel":
         """Calibrate on the full model at V = 0 and rotation rate ``omega`` [rad/s].
 
         Then ``HoverModel.thrust(omega)`` equals the full model's T at V = 0 exactly at
@@ -55,6 +55,7 @@ class HoverModel:
         TypeError
             A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
         """
+        air = getattr(params, "air", None) if air is None else air  # checked below
         check_model_args(propeller, params, air, discretization)
         if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
             raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")

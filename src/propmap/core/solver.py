@@ -330,9 +330,21 @@ class RotorLoads:
         return self.airspeed / (self._n * self.diameter)
 
     def flags(self, index=()) -> list[str]:
-        """Names of the raised status flags at one point (``index`` into shape S)."""
+        """Names of the raised status flags at one point (``index`` into shape S; on scalar
+        loads, shape (), ``()`` or ``0``).
+
+        Raises
+        ------
+        IndexError
+            ``index`` outside shape S (on scalar loads: anything but ``()``, 0 or -1).
+        """
+        conv = np.asarray(self.converged)
+        if conv.ndim == 0:
+            if not (index == () or (isinstance(index, (int, np.integer)) and index in (0, -1))):
+                raise IndexError(f"index {index!r} into loads of one point (shape ()): give () or 0")
+            index = ()
         names = []
-        if not bool(np.asarray(self.converged)[index]):
+        if not bool(conv[index]):
             names.append("not_converged")
         for key in ("vortex_ring", "multiple_roots", "reverse_flow", "inflow_extrapolated"):
             if bool(np.asarray(getattr(self, key))[index]):
@@ -434,7 +446,7 @@ def rotor_loads(
     airspeed,
     incidence,
     *,
-    air: Air = Air(),
+    air: Air | None = None,
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     on_failure: str = "raise",
     radial: bool = False,
@@ -464,7 +476,7 @@ def rotor_loads(
         and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
         docs/numerics.md item 1. Irrelevant when V = 0.
     air : Air, optional
-        Density and viscosity; footnote 2 values by default.
+        Density, viscosity, speed of sound. Default: the parameter set's (``params.air``).
     discretization : Discretization, optional
     on_failure : {"raise", "flag"}
         ``"raise"`` (default): raise SolverError if any annulus fails. ``"flag"``:
@@ -496,6 +508,7 @@ def rotor_loads(
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
     """
+    air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
     if on_failure not in ("raise", "flag"):
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")

@@ -89,7 +89,7 @@ def trim_collective(
     airspeed=0.0,
     incidence=0.0,
     *,
-    air: Air = Air(),
+    air: Air | None = None,
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     bounds=(-math.radians(20.0), math.radians(30.0)),
     grid_step: float = math.radians(2.5),
@@ -108,6 +108,7 @@ def trim_collective(
         Omega [rad/s], V [m/s] and beta [rad] as in :func:`propmap.rotor_loads`; all four
         inputs broadcast together.
     air : Air, optional
+        Default: the parameter set's own (``.air``).
     discretization : Discretization, optional
     bounds : (float, float)
         The collectives searched [rad], within [-pi/4, pi/4]; default -20 to +30 deg.
@@ -136,6 +137,7 @@ def trim_collective(
     propmap.SolverError
         The inflow solve failed at some collective (the message names where).
     """
+    air = params.air if air is None else air
     from scipy.optimize import elementwise
 
     if on_missing not in ("raise", "nan"):
@@ -210,7 +212,7 @@ def torque_change_at_constant_thrust(
     incidence,
     *,
     collective=None,
-    air: Air = Air(),
+    air: Air | None = None,
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     bounds=(-math.radians(20.0), math.radians(30.0)),
 ):
@@ -241,6 +243,7 @@ def torque_change_at_constant_thrust(
         As :func:`trim_collective` (a thrust that no hover collective in ``bounds`` makes,
         e.g. a negative thrust in the windmill brake, raises TrimError).
     """
+    air = params.air if air is None else air
     loads = rotor_loads(propeller, params, omega, airspeed, incidence, collective=collective, air=air,
                         discretization=discretization)
     hover = trim_collective(propeller, params, loads.thrust, loads.omega, 0.0, 0.0, air=air,

@@ -89,7 +89,7 @@ def _vectors(name: str, value) -> np.ndarray:
 
 
 def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, omega, spin="ccw", *,
-                 air: Air = Air(), discretization: Discretization = DEFAULT_DISCRETIZATION,
+                 air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION,
                  on_failure: str = "raise") -> RotorWrench:
     """Force and torque vectors of a rotor from its velocity, axis and rotation rate.
 
@@ -131,6 +131,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     mirrors the shaft torque and the rolling moment and leaves the force unchanged. A
     linear inflow model or flapping blades (RotorOptions) give both.
     """
+    air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)

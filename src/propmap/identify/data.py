@@ -135,7 +135,8 @@ class _Csv:
         self.columns: list[str] = []
         for line, cells in self._rows():
             self.header_line = line
-            self.columns = [c.strip().lower() for c in cells]  # names match in any case
+            self.header = [c.strip() for c in cells]  # as written, for messages and unit parsing
+            self.columns = [c.lower() for c in self.header]  # names match in any case
             break
         if not self.header_line:
             raise self.error("empty file (no header line)")
@@ -174,8 +175,9 @@ class _Csv:
                 msg = "a closing quote must be followed by a comma or the end of the line"
             raise self.error(msg, last + 1) from None
 
-    def read(self, numeric: list[str], text: tuple[str, ...] = ()) -> tuple[dict, dict, np.ndarray]:
-        """(numbers by column, text by column, line of each row) for the named columns."""
+    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=()) -> tuple[dict, dict, np.ndarray]:
+        """(numbers by column, text by column, line of each row) for the named columns; an
+        empty cell of a column in ``optional`` is NaN instead of an error."""
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -188,6 +190,9 @@ class _Csv:
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
+                if not cell and c in optional:
+                    nums[c].append(math.nan)
+                    continue
                 if not cell:
                     raise self.error(f"column {_short(c)} is empty (missing value)", line)
                 try:
@@ -337,6 +342,9 @@ class LoadData:
     collective : ndarray, shape (N,), or None
         Blade-angle offset of each point [rad] (a collective sweep of a variable-pitch
         rotor); None: none.
+    notes : tuple of str
+        What the reader decided (units converted, rows skipped, steps averaged, a sign
+        turned), for the user.
     """
 
     omega: np.ndarray
@@ -346,6 +354,7 @@ class LoadData:
     group: np.ndarray
     source: str = ""
     collective: np.ndarray | None = None
+    notes: tuple = ()
 
     @property
     def n(self) -> int:
@@ -357,24 +366,36 @@ class LoadData:
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
-                        None if self.collective is None else self.collective[mask])
+                        None if self.collective is None else self.collective[mask], self.notes)
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")
 
 
-def read_loads(path, *, min_points: int = 6) -> LoadData:
-    """Read load measurements: a wind-tunnel or a thrust-stand CSV.
+def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole_pairs: int | None = None) -> LoadData:
+    """Read load measurements: a wind-tunnel or thrust-stand CSV, as written.
 
-    Columns ``rpm`` and at least one of ``thrust`` [N], ``drag`` [N], ``torque`` [N m];
-    ``airspeed`` [m/s] and ``incidence_deg`` (both default 0: a static thrust stand);
-    optional ``collective_deg`` (blade-angle offset of a variable-pitch rotor, in
-    [-45, 45] deg: a hover collective sweep is a valid data set) and ``group`` (run label). Format and valid ranges in the module docstring.
+    Columns: a rotation speed and at least one of thrust, torque, drag, each named with or
+    without a unit (``rpm``, ``thrust``, ``torque`` in rpm, N, N m; or ``thrust_kgf``,
+    ``Thrust (gf)``, ``torque_Nmm``, ``Torque (N·m)``, ``speed_rad_s``; the units of
+    :mod:`propmap.identify.stand`); ``airspeed`` [m/s] and ``incidence_deg`` (both default 0:
+    a static thrust stand); optional ``collective_deg`` (blade-angle offset of a
+    variable-pitch rotor, in [-45, 45] deg: a hover collective sweep is a valid data set)
+    and ``group`` (run label). The exports of RCbenchmark / Tyto thrust stands (Series
+    1520, 1580, 1585, 1780) are read as written: the optical or electrical motor speed (the
+    choice stated), a "steps" test averaged to one point per ESC step (its settling rows
+    dropped; each step a group for holding out), rows of a stopped motor (rpm 0) skipped,
+    and a stand's reaction torque (negative) turned to the propeller's; every decision is
+    in ``LoadData.notes``. Format and valid ranges in the module docstring.
 
     Parameters
     ----------
     path : str or Path
     min_points : int
+    rpm_source : {"optical", "electrical"}, optional
+        Which speed column of a stand export to use (default: optical where present).
+    pole_pairs : int, optional
+        Divide an electrical speed by the motor's pole pairs (an export of raw electrical rpm).
 
     Returns
     -------
@@ -385,37 +406,102 @@ def read_loads(path, *, min_points: int = 6) -> LoadData:
     DataError
         Not a readable regular file (a directory, a device, over 200 MiB or 10,000,000
         lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
-        header), a missing, duplicated or over-long column, an empty, non-numeric or
-        non-finite value, a value out of range (rpm outside (0, 954929], airspeed outside
-        [0, 500] m/s, incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or |drag| > 1e5 N, |torque|
-        > 1e4 N m), fewer than ``min_points`` rows, or all operating points identical; the
-        message names the file, the line and the column.
+        header), no rotation-speed or no load column (the message lists the columns found
+        and what was looked for), a unit it does not know, two columns for one quantity, an
+        empty, non-numeric or non-finite value, a value out of range (rpm outside
+        (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
+        incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
+        |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque whose sign
+        changes between points, fewer than ``min_points`` points, or all operating points
+        identical; the message names the file, the line and the column.
     """
+    from .stand import map_columns, stand_points
+
     what = "load data"
     f = _Csv(path, what)
     p = f.name
-    if "rpm" not in f.index:
-        raise DataError(f"{what}: {p} lacks column rpm")
-    if ("incidence_deg" in f.index) and ("airspeed" not in f.index):
+    try:
+        cm = map_columns(f.header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
+    except DataError as exc:
+        raise DataError(f"{what}: {p}: {exc}") from None
+    notes = list(cm.notes)
+    speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
+    if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")
-    keys = [k for k in LOAD_KEYS if k in f.index]
-    if not keys:
-        raise DataError(f"{what}: {p} has none of the load columns {', '.join(LOAD_KEYS)}")
-    cols = ["rpm", *(c for c in ("airspeed", "incidence_deg", "collective_deg") if c in f.index), *keys]
-    v, texts, lines = f.read(cols, ("group",))
-    f.check_ranges(v, lines, RANGES)
+    keys = [k for k in LOAD_KEYS if k in cm.columns]
+    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time")
+                             if q in cm.columns), *keys]
+    low = {q: cm.column(q).lower() for q in quantities}
+    optional = {low[q] for q in speeds} | ({low["time"]} if "time" in low else set())
+    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional)
+    v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
+    group_col = cm.column("group")
+    # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
+    use = speeds[0]
+    if use != "rpm":
+        if rpm_source is not None:
+            use = f"rpm_{rpm_source}"
+        elif "rpm_optical" in v and np.nanmax(np.nan_to_num(v["rpm_optical"])) > 0:
+            use = "rpm_optical"
+        elif "rpm_electrical" in v:
+            use = "rpm_electrical"
+        notes.append(f"rotation speed from {cm.column(use)!r}" + (
+            " (the optical probe)" if use == "rpm_optical" else
+            (f", divided by {pole_pairs} pole pairs" if pole_pairs else
+             ", as the stand computed it from its motor-pole setting; if the export is raw electrical rpm, give "
+             "the pole pairs (--pole-pairs)")))
+    rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
+    for q in speeds:
+        v.pop(q)
+    v["rpm"] = rpm
+    # stopped motor: rows skipped
+    stopped = ~(np.nan_to_num(rpm) > 0)
+    if stopped.any():
+        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor")
+        keep = ~stopped
+        v = {k: a[keep] for k, a in v.items()}
+        lines = lines[keep]
+        texts = {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}
     n = lines.size
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
+    # a "steps" test: one averaged point per ESC step
+    group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
+             else None)
+    if "esc" in v and n and np.unique(np.round(v["esc"], 1)).size < n:
+        esc, time = v.pop("esc"), v.pop("time", None)
+        f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
+        v, group, dropped = stand_points(v, esc, time)
+        notes.append(f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped); "
+                     f"each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
+        lines = np.zeros(group.size, dtype=np.int64)
+        n = group.size
+    else:
+        v.pop("esc", None)
+        v.pop("time", None)
+    if "torque" in v and n:
+        q = v["torque"]
+        big = np.abs(q) > 0.02 * np.max(np.abs(q)) if np.any(q) else np.zeros(n, bool)
+        if big.any() and np.all(q[big] < 0):
+            v["torque"] = -q
+            notes.append("torque negated: it is the stand's reaction torque (negative here); the propeller's "
+                         "torque opposes its rotation")
+        elif big.any() and np.any(q[big] < 0) and np.any(q[big] > 0):
+            raise DataError(f"{what}: {p}: column {cm.column('torque')!r} changes sign between points "
+                            f"({int(np.sum(q[big] < 0))} negative, {int(np.sum(q[big] > 0))} positive): one propeller "
+                            "turning one way has one torque sign")
+    named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
+    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
     if n < min_points:
         raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
     collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
     if np.all(np.ptp(ops, axis=0) == 0):
         raise DataError(f"{what}: {p}: all operating points are identical")
-    group = np.array(texts["group"], dtype=object) if "group" in texts else np.full(n, "all")
+    if group is None:
+        group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}", collective)
+                    group, f"{path}", collective, tuple(notes))
 
 
 def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = Air()) -> LoadData:
@@ -516,3 +602,94 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -
     omega = np.concatenate(om)
     return LoadData(omega, np.concatenate(V), np.zeros(omega.size),
                     {"thrust": np.concatenate(T), "torque": np.concatenate(Q)}, np.concatenate(grp), source)
+
+
+#: measured over predicted (generic set, the data's geometry) beyond which load data are refused
+SANITY_FACTOR = 3.0
+#: unit slips of load data: (factor on the measured thrust, on the measured torque, cause)
+_UNIT_SLIPS = [
+    (9.80665, 1.0, "thrust in kgf read as N (name the column thrust_kgf or 'Thrust (kgf)')"),
+    (9.80665e-3, 1.0, "thrust in gf read as N (name the column thrust_gf or 'Thrust (gf)')"),
+    (4.4482216152605, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
+    (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
+    (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
+    (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
+    (1.0, -1.0, "the stand's reaction torque, of the opposite sign, in a file whose torque also changes sign"),
+]
+
+
+def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None) -> list[str]:
+    """Refuse load data that cannot be this propeller's in these units; warn of risks.
+
+    The measured thrust and torque are compared with the model's at the measured operating
+    points (the generic set by default: hobby-propeller sections, accurate to about 10% blind,
+    docs/validation.md): a median ratio beyond 1/3 to 3, or a torque of the other sign, is
+    refused with the likely cause (thrust in kgf, gf or lbf read as N, torque in N mm, the
+    electrical rpm of a motor with pole pairs, a reaction torque).
+
+    Parameters
+    ----------
+    data : LoadData
+    propeller : Propeller
+    params : SectionParams, optional
+        The model compared with (default: the generic set).
+    air : Air, optional
+        Default: the set's.
+
+    Returns
+    -------
+    list of str
+        Warnings: a tip Mach number above 0.7 in the data.
+
+    Raises
+    ------
+    DataError
+        The data are off by more than :data:`SANITY_FACTOR` (the message gives the factor and
+        the likely cause).
+    """
+    from ..core.solver import rotor_loads
+    from ..io.calibration import generic_params
+
+    params = params or generic_params()
+    air = params.air if air is None else air
+    warnings_ = []
+    tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),
+                                data.airspeed * np.cos(data.incidence))) / air.speed_of_sound)
+    if tip > 0.7:
+        warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
+                         "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
+    r = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                    collective=data.collective)
+    def ratios(omega, fT=1.0, fQ=1.0):
+        r = rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                        collective=data.collective)
+        out = {}
+        for key, model, f in (("thrust", r.thrust, fT), ("torque", r.torque, fQ)):
+            if key not in data.measured:
+                continue
+            ok = np.isfinite(model) & (np.abs(model) > 0.05 * np.nanmax(np.abs(model)))
+            if ok.sum() >= 2:
+                out[key] = float(np.median(f * data.measured[key][ok] / model[ok]))
+        return out
+
+    def plausible(rat, lo=1 / SANITY_FACTOR, hi=SANITY_FACTOR):
+        return all(lo <= v <= hi for v in rat.values())
+
+    ratio = ratios(data.omega)
+    if plausible(ratio):
+        return warnings_
+    bad = {k: v for k, v in ratio.items() if not (1 / SANITY_FACTOR <= v <= SANITY_FACTOR)}
+    causes = [why for fT, fQ, why in _UNIT_SLIPS
+              if plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
+    # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
+    miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
+            for pp in range(2, 15)}
+    pp = min(miss, key=miss.get)
+    if miss[pp] < math.log(1.6):
+        causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
+                      f"--pole-pairs {pp}, or the optical speed)")
+    said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
+    raise DataError(f"load data: {data.source}: the measured {said} what the model predicts for {propeller.name} "
+                    f"at the measured rpm (expected within {1 / SANITY_FACTOR:.2g}-{SANITY_FACTOR:g}x): "
+                    + (f"likely {' or '.join(causes[:2])}" if causes else
+                       "check the units, the rpm and the geometry (a 3-blade propeller given as 2?)"))

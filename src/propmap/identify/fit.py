@@ -62,6 +62,11 @@ CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
+#: ... as does a static run over this ratio of rotation rates (a UIUC static run spans 2-8x):
+#: with the static run and the lowest sweep, leave-one-family-out on both UIUC volumes
+#: (docs/identification.md) gave a held-out median of 3.9% (vol. 1) and 5.0% (vol. 2) with the
+#: Reynolds terms fitted, 3.5% and 7.7% with them held at the generic set's
+STATIC_RPM_SPAN = 1.5
 BODY_BOUNDS = {"cl1_body": (0.0, 10.0), "cl2_body": (0.0, 5.0), "alpha0_body": (math.radians(3), math.radians(60))}
 BODY_X0 = (0.0, 0.0, 0.47)
 #: bounds of the rotor options (RotorOptions) and of the airframe drag (core/body.py) when fitted
@@ -211,6 +216,11 @@ class Identifiability:
     interval is wider than about +-20%; "not determined" when the std error is not finite.
     ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
     respect to relative parameter changes.
+
+    With the population prior, ``std_error``, ``ci95``, ``correlation`` and the warnings
+    are the posterior's (J stacked with the prior's rows: what data and prior together
+    determine), and ``std_error_data`` holds the data's alone beside them (None without a
+    prior); ``poorly_determined`` is still judged on the data alone.
     """
 
     names: tuple[str, ...]
@@ -220,6 +230,7 @@ class Identifiability:
     singular_values: np.ndarray
     poorly_determined: tuple[str, ...]
     warnings: tuple[str, ...]
+    std_error_data: np.ndarray | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready form (angles in rad; a non-finite std error is null)."""
@@ -228,6 +239,8 @@ class Identifiability:
 
         return {
             "std_error": {n: num(v) for n, v in zip(self.names, self.std_error)},
+            "std_error_data_only": (None if self.std_error_data is None
+                                    else {n: num(v) for n, v in zip(self.names, self.std_error_data)}),
             "ci95": {n: [num(a), num(b)] for n, (a, b) in zip(self.names, self.ci95)},
             "correlation": [[float(c) for c in row] for row in self.correlation],
             "singular_values": [float(s) for s in self.singular_values],
@@ -319,14 +332,20 @@ class FitResult:
         their count; the JSON report has them all.
         """
         idf = self.identifiability
-        lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"]
+        data_only = idf.std_error_data is not None
+        lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"
+                 + (f"{'data only':>12}" if data_only else "")]
         for k, n in enumerate(self.names):
             deg = _is_angle(n)
             f = math.degrees if deg else float
             lo, hi = idf.ci95[k]
             flag = " (at bound)" if n in self.at_bound else ""
+            extra = f"{f(idf.std_error_data[k]):>12.3g}" if data_only else ""
             lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
-                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{flag}")
+                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{extra}{flag}")
+        if data_only:
+            lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
+                         "the data's alone")
         if len(self.names) > 1:
             lines.append("correlation: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
@@ -337,7 +356,7 @@ class FitResult:
         r = self.residuals
         order = np.argsort(-np.abs(r))[:max_residuals]
         shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
-        lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in sorted(order)))
+        lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in order))
         u = " N" if level else " [-]"
         lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
@@ -359,9 +378,12 @@ def _scale_of(name: str) -> float:
     return CAMBERED_SCALE.get(name, 0.0)
 
 
-def _identifiability(names, x, jac, residuals) -> Identifiability:
+def _identifiability(names, x, jac, residuals, dof_rows: int | None = None) -> Identifiability:
+    """Identifiability from ``jac`` (rows: residuals, prior rows included for the posterior);
+    the residual variance from ``residuals`` with ``dof_rows`` (default: jac's rows) - p
+    degrees of freedom."""
     N, p = jac.shape
-    dof = max(N - p, 1)
+    dof = max((N if dof_rows is None else dof_rows) - p, 1)
     s2 = float(residuals @ residuals) / dof
     # covariance from the SVD of J with no cut-off: a weak direction gets a large
     # variance (a pseudo-inverse with a cut-off would report it as perfectly known)
@@ -544,11 +566,14 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
     idf = _identifiability(names, best.x, jac, residuals)
     if "prior" in extra:
+        # the posterior (data and prior rows together), with the data's residual variance;
+        # the data-only figures stay beside it
+        post = _identifiability(names, best.x, best.jac, residuals, dof_rows=residuals.size)
         held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
-        if held:
-            idf = replace(idf, warnings=idf.warnings + (
-                f"the population prior holds {', '.join(held)} near the base set's values, which the data alone "
-                "would leave (nearly) free",))
+        idf_warns = post.warnings + ((f"the data alone leave {', '.join(held)} (nearly) free: the population prior "
+                                      "holds them near the base set's values (data-only std errors in the report)",)
+                                     if held else ())
+        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error)
     tol = 1e-6 * (ub - lb)
     at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
     warns = list(warns)
@@ -569,7 +594,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
 
 # ---------------------------------------------------------------- level flight (eqs 16-18)
 
-def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air(),
+def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None,
                         discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Rotor loads of every rotor at every condition and the net vertical force (eq 16).
 
@@ -587,6 +612,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     SolverError
         From the rotor model.
     """
+    air = params.air if air is None else air
     R, vel = rotor_kinematics(data, vehicle)
     n_rot = len(vehicle.rotors)
     T = np.empty((data.n, n_rot))
@@ -702,7 +728,7 @@ def _fit_with_continuation(make_residual, names, base, options, label, x0):
 
 
 def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionParams | None = None,
-                     air: Air = Air(), options: FitOptions = FitOptions()) -> FitResult:
+                     air: Air | None = None, options: FitOptions = FitOptions()) -> FitResult:
     """Identify section parameters from steady level flight, eqs (16)-(18).
 
     Parameters
@@ -714,7 +740,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         footnote 2 values) by default. Paper's model: the fit starts from the paper's x0
         and, when the base M exceeds 30, continues in M (FitOptions). Cambered: the fit
         starts from ``base``.
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     options : FitOptions
 
     Returns
@@ -736,6 +763,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     from ..core.airfoil import preset
 
     base = base or preset("gill2017-apc")
+    air = base.air if air is None else air
     names = _default_names(base, options)
     if options.body_lift:
         if vehicle.body_area <= 0:
@@ -798,7 +826,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     return result
 
 
-def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air = Air()):
+def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None):
     """Vertical force of the hover model (T = k_T Omega^2 along each rotor axis, D = 0) [N], shape (N,).
 
     k_T of each propeller from the model at V = 0 at the mean rotor speed of the
@@ -809,6 +837,7 @@ def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: 
     SolverError
         From the rotor model.
     """
+    air = params.air if air is None else air
     R = body_to_world(data.pitch, data.roll)
     j0 = int(np.argmin(data.airspeed))
     out = np.zeros(data.n)
@@ -840,14 +869,17 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 def _data_kind(data: LoadData) -> str:
     """"static" (all airspeeds 0), "collective" (all airspeeds 0, several collectives),
-    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, within 3%) or "rates"."""
+    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, within 3%, and no
+    static run spanning STATIC_RPM_SPAN) or "rates"."""
     moving = data.airspeed > 0
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
         return "collective" if swept else "static"
     rpm = np.sort(data.omega[moving])
     rates = 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
-    return "rates" if rates >= MIN_RATES_FOR_RE else "few_rates"
+    static = data.omega[~moving]
+    spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN
+    return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
 def _with_prior(make_residual, names, base, options, scale: float = 1.0):
@@ -898,7 +930,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     return make, scales
 
 
-def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, air: Air = Air(),
+def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, air: Air | None = None,
               quantities: tuple[str, ...] | None = None, options: FitOptions = FitOptions()) -> FitResult:
     """Identify section parameters from direct load measurements of one propeller.
 
@@ -914,7 +946,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     base : AirfoilParams or CamberedParams, optional
         The model, the start and the constants not fitted; the catalogue-fitted
         ``generic`` cambered set by default (``gill2017-apc`` for the paper's model).
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     quantities : tuple of str, optional
         Which measured quantities to fit (default: all in ``data.measured``).
     options : FitOptions
@@ -932,6 +965,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     from ..io.calibration import generic_params
 
     base = base or generic_params()
+    air = base.air if air is None else air
     names = _default_names(base, options, _data_kind(data))
     keys = _load_keys(data, quantities)
     if data.n * len(keys) <= len(names):
@@ -948,7 +982,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
                    nfev * data.n, air, extra)
 
 
-def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air = Air(),
+def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,
                     options: FitOptions = FitOptions()) -> FitResult:
     """One parameter set fitted to the load measurements of several propellers at once.
 
@@ -982,6 +1016,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air = A
     if not datasets:
         raise ValueError("fit_loads_joint needs at least one (data, propeller) pair")
     base = base or generic_params()
+    air = base.air if air is None else air
     names = _default_names(base, options)
     makers = []
     for data, prop in datasets:

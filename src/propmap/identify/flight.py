@@ -227,7 +227,7 @@ def _lagged(log: FlightLog, tau: float):
 
 
 def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionParams, *, body: BodyDrag | None = None,
-                   air: Air = Air(), discretization: Discretization = FLIGHT_DISCRETIZATION) -> VehicleWrench:
+                   air: Air | None = None, discretization: Discretization = FLIGHT_DISCRETIZATION) -> VehicleWrench:
     """The vehicle model's wrench at every sample (:func:`propmap.vehicle.vehicle_wrench`, no wind).
 
     Raises
@@ -235,6 +235,7 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
     SolverError
         From the rotor model.
     """
+    air = params.air if air is None else air
     return vehicle_wrench(vehicle, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
                           rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air,
                           discretization=discretization)
@@ -264,7 +265,7 @@ def _body_from(x, names, body: BodyDrag) -> BodyDrag:
                                                                                         body.wash_factor)))
 
 
-def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None, air: Air = Air(),
+def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None, air: Air | None = None,
                body: BodyDrag | None = None, options: FitOptions = FitOptions(), moments: bool = False,
                discretization: Discretization = FLIGHT_DISCRETIZATION) -> FitResult:
     """Identify the rotor and airframe parameters from flight logs (module docstring).
@@ -276,7 +277,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     vehicle : Vehicle
     base : AirfoilParams or CamberedParams, optional
         The start and every parameter not fitted; the catalogue's ``generic`` set by default.
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     body : BodyDrag, optional
         Start of the airframe drag; default the vehicle's, else none (0).
     options : FitOptions
@@ -306,6 +308,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     from ..io.calibration import generic_params
 
     base = base or generic_params()
+    air = base.air if air is None else air
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
     else:
@@ -452,7 +455,7 @@ def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
 
 
 def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None,
-                          air: Air = Air(), options: FitOptions = FitOptions(), moments: bool = False,
+                          air: Air | None = None, options: FitOptions = FitOptions(), moments: bool = False,
                           discretization: Discretization = FLIGHT_DISCRETIZATION, progress=None) -> dict:
     """Leave-one-log-out: fit on all logs but one, score on it, for every log.
 
@@ -497,7 +500,7 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
     return {"folds": folds, "pooled": pooled}
 
 
-def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightSamples, *, air: Air = Air(),
+def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightSamples, *, air: Air | None = None,
                        reference: SectionParams | None = None,
                        discretization: Discretization = FLIGHT_DISCRETIZATION) -> dict:
     """The fitted set's hover torque against a thrust-stand-like value.
@@ -530,6 +533,7 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
     propmap.TrimError
         No reference collective in [-20, 30] deg makes the fitted hover thrust.
     """
+    air = params.air if air is None else air
     from ..core.trim import trim_collective
     from ..io.calibration import generic_params
 

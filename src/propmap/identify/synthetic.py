@@ -21,7 +21,7 @@ from ..vehicle import Vehicle
 __all__ = ["simulate_level_flight"]
 
 
-def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pitch_deg, *, air: Air = Air(),
+def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pitch_deg, *, air: Air | None = None,
                           omega_bounds=(200.0, 3000.0),
                           discretization: Discretization = DEFAULT_DISCRETIZATION) -> LevelFlightData:
     """Trimmed level-flight conditions: rotor speed solving eq (16) at each (airspeed, pitch).
@@ -43,6 +43,7 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
     ValueError
         If no rotor speed in ``omega_bounds`` balances the weight at some condition.
     """
+    air = params.air if air is None else air
     V = np.asarray(airspeed, float)
     pitch = np.radians(np.asarray(pitch_deg, float))
     n_rot = len(vehicle.rotors)

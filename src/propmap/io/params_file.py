@@ -17,8 +17,10 @@ The paper's model (``section_model = "gill2017"``, the default when the key is a
     tip_loss = false     # Prandtl tip loss (not in the paper)
     hub_loss = false
 
-The cambered polar (``section_model = "cambered"``); every key is optional and defaults to
-the ``CamberedParams`` default, so a file normally lists them all (``write_params`` does)::
+The cambered polar (``section_model = "cambered"``); every key is optional: a key the file
+lacks takes the shipped ``generic`` set's value (with a warning naming the keys), so that a
+file holding, say, only ``rho`` means "the generic set in this air"; ``write_params`` writes
+them all::
 
     section_model = "cambered"
     cl_alpha = 5.4          # lift slope at re_ref [1/rad]
@@ -83,13 +85,14 @@ from typing import NamedTuple
 
 import tomli_w
 
-from ..core.airfoil import DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, PRESETS, Air, AirfoilParams, CamberedParams, SectionParams
+from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, PRESETS, RECORD_META, Air, AirfoilParams,
+                             CamberedParams, SectionParams)
 from .atomic import atomic_write
 from .readers import show_path
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
-           "params_to_dict", "params_from_dict", "body_from_dict", "named_sets", "section_preset", "section_presets",
+           "params_to_dict", "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage", "named_sets", "section_preset", "section_presets",
            "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
@@ -99,6 +102,10 @@ TEXT_KEYS = ("comment", "source", "section_model", "section")
 #: prefix of the named section presets in ``--params`` (``section:naca0015``)
 SECTION_PREFIX = "section:"
 BODY_TABLE = "body"
+#: the table of what a fitted set's data covered (warnings when the set is used beyond it)
+COVERAGE_TABLE = "coverage"
+COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
+                 "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
 #: keys holding an angle in degrees in files, and the field they set [rad]
 DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re",
             "collective_deg": "collective"}
@@ -136,13 +143,19 @@ def _record(model: str):
 
 
 def _file_keys(model: str) -> dict[str, str]:
-    """file key -> field name of the model's record (angles with ``_deg``)."""
+    """file key -> field name of the model's record (angles with ``_deg``; the set's air is
+    written as AIR_KEYS, its label not at all)."""
     deg = {v: k for k, v in DEG_KEYS.items()}
-    return {deg.get(f.name, f.name): f.name for f in fields(_record(model))}
+    return {deg.get(f.name, f.name): f.name for f in fields(_record(model)) if f.name not in RECORD_META}
 
 
-def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionParams, Air]:
-    """Build (params, air) from a file-form dict (angles in degrees, ``section_model`` key).
+def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", fill: bool = False) -> SectionParams:
+    """Build the parameter record, with its air, from a file-form dict (angles in degrees,
+    ``section_model`` key).
+
+    ``fill``: the cambered keys the dict lacks take the shipped generic set's values, and a
+    warning names them (parameter files; the module docstring); otherwise the record's
+    defaults.
 
     Raises
     ------
@@ -154,6 +167,7 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
     """
     if not isinstance(data, dict):
         raise ValueError(f"{where}: expected a table of keys, got {_short(data)}")
+    fill = fill and "section" not in data and data.get("section_model", "gill2017") == "cambered"
     if "section" in data:  # a named section preset, the file's keys on top
         name = data["section"]
         presets = _section_tables()
@@ -172,7 +186,7 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
         raise ValueError(f"{where}: missing key(s) {', '.join(missing)} (required for section_model "
                          f"{model!r}: {', '.join(REQUIRED[model])})")
     keys = _file_keys(model)
-    unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS) - {BODY_TABLE}))
+    unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS) - {BODY_TABLE, COVERAGE_TABLE}))
     if unknown:
         shown = ", ".join(_short(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
@@ -193,6 +207,8 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
         elif key == "descent" and data[key] not in DESCENT_MODELS:
             raise ValueError(f"{where}: descent must be one of {', '.join(DESCENT_MODELS)}, got {_short(data[key])}")
     kw = {}
+    if fill:
+        kw = _generic_fill(data, keys, where)
     for key, name in keys.items():
         if key not in data:
             continue
@@ -201,12 +217,69 @@ def params_from_dict(data: dict, *, where: str = "parameters") -> tuple[SectionP
             value = math.radians(value)
         kw[name] = value
     try:
-        params = _record(model)(**kw)
         air = Air(**{k: data[k] for k in AIR_KEYS if k in data})
+        params = _record(model)(**kw, air=air, label=label)
     except (TypeError, ValueError) as exc:
         raise ValueError(f"{where}: {exc}") from None
     body_from_dict(data, where=where)  # validated here too, so that every reader refuses a bad table
-    return params, air
+    coverage_from_dict(data, where=where)
+    return params
+
+
+def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
+    """The ``[coverage]`` table of a file-form dict (what the fitted data covered: J_max,
+    incidence_deg_max, rpm_min, rpm_max, airspeed_max), or None without one.
+
+    Raises
+    ------
+    ValueError
+        Not a table, an unknown key, a value not a number or out of its range.
+    """
+    table = data.get(COVERAGE_TABLE)
+    if table is None:
+        return None
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] must be a table, got {_short(table)}")
+    unknown = sorted(set(table) - set(COVERAGE_KEYS))
+    if unknown:
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))} (valid: "
+                         f"{', '.join(COVERAGE_KEYS)})")
+    for k, v in table.items():
+        _check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+    return {k: float(v) for k, v in table.items()}
+
+
+def read_coverage(path) -> dict | None:
+    """The ``[coverage]`` table of a parameter file (what the data behind a fitted set
+    covered), or None.
+
+    Raises
+    ------
+    ParamsFileError
+        As :func:`read_params`.
+    """
+    path = Path(path)
+    data = load_toml(path, ParamsFileError)
+    try:
+        return coverage_from_dict(data, where=show_path(path))
+    except ValueError as exc:
+        raise ParamsFileError(str(exc)) from None
+
+
+def _generic_fill(data: dict, keys: dict, where: str) -> dict:
+    """The generic set's values (field name -> value) of the cambered keys ``data`` lacks,
+    and a warning naming them."""
+    import warnings
+
+    from .calibration import generic_params
+
+    g = generic_params()
+    missing = [k for k in keys if k not in data]
+    if missing:
+        given = sorted(k for k in data if k in keys or k in AIR_KEYS)
+        warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
+                      f"{', '.join(given) or 'no model key'})", UserWarning, stacklevel=4)
+    return {keys[k]: getattr(g, keys[k]) for k in missing}
 
 
 def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
@@ -283,13 +356,14 @@ def _check_number(value, key: str, where: str, rng) -> None:
         raise ValueError(f"{where}: {key} must be a finite number in {interval}, got {_short(value)}")
 
 
-def params_to_dict(params: SectionParams, air: Air = Air()) -> dict:
+def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
     """The file form of ``params`` and ``air``: every field, angles in degrees.
 
     Parameters
     ----------
     params : AirfoilParams or CamberedParams
-    air : Air
+    air : Air, optional
+        Default: the set's own (``params.air``).
 
     Returns
     -------
@@ -304,16 +378,24 @@ def params_to_dict(params: SectionParams, air: Air = Air()) -> dict:
     for key, name in keys.items():
         value = getattr(params, name)
         data[key] = math.degrees(value) if key in DEG_KEYS else value
+    air = params.air if air is None else air
     data.update({k: getattr(air, k) for k in AIR_KEYS})
     return data
 
 
-def read_params(path) -> tuple[SectionParams, Air]:
+def read_params(path) -> SectionParams:
     """Read a parameter file (either section model; format in the module docstring).
 
     Returns
     -------
-    (AirfoilParams or CamberedParams, Air)
+    AirfoilParams or CamberedParams
+        Carrying the file's air (``.air``; footnote 2's where the file gives none) and its
+        path as ``.label``.
+
+    Warns
+    -----
+    UserWarning
+        A cambered file that lacks keys: they are the generic set's (named).
 
     Raises
     ------
@@ -326,13 +408,14 @@ def read_params(path) -> tuple[SectionParams, Air]:
     path = Path(path)
     data = load_toml(path, ParamsFileError)
     try:
-        return params_from_dict(data, where=show_path(path))
+        return params_from_dict(data, where=show_path(path), label=str(path), fill=True)
     except ValueError as exc:
         raise ParamsFileError(str(exc)) from None
 
 
-def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str = "", body=None) -> None:
-    """Write ``params`` and ``air`` (every field) atomically to ``path``.
+def write_params(path, params: SectionParams, air: Air | None = None, *, comment: str = "", body=None,
+                 coverage: dict | None = None) -> None:
+    """Write ``params`` and its air (every field) atomically to ``path``.
 
     Reading the file back with :func:`read_params` gives the same record, its angles to
     within the degree-radian round trip (relative 2e-16).
@@ -341,12 +424,16 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
     ----------
     path : str or Path
     params : AirfoilParams or CamberedParams
-    air : Air
+    air : Air, optional
+        Default: the set's own (``params.air``).
     comment : str
         Written as the file's ``comment``.
     body : BodyTable, optional
         Airframe drag and centre of mass, written as the ``[body]`` table (:func:`read_body`
         reads it).
+    coverage : dict, optional
+        What the data behind a fitted set covered (keys of :data:`COVERAGE_KEYS`), written
+        as the ``[coverage]`` table: later uses of the file warn beyond it.
 
     Raises
     ------
@@ -361,6 +448,8 @@ def write_params(path, params: SectionParams, air: Air = Air(), *, comment: str 
                             "wash_factor": float(body.drag.wash_factor)}
         if body.centre_of_mass is not None:
             data[BODY_TABLE]["centre_of_mass"] = [float(v) for v in body.centre_of_mass]
+    if coverage:
+        data[COVERAGE_TABLE] = {k: float(v) for k, v in coverage.items() if k in COVERAGE_KEYS}
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
 
@@ -443,11 +532,12 @@ def section_preset(name: str) -> CamberedParams:
     tables = _section_tables()
     if name not in tables:
         raise KeyError(f"unknown section preset {name!r}; valid: {', '.join(tables)}")
-    return params_from_dict({k: v for k, v in tables[name].items()}, where=f"section preset {name}")[0]
+    return params_from_dict({k: v for k, v in tables[name].items()}, where=f"section preset {name}",
+                            label=SECTION_PREFIX + name)
 
 
-def resolve_params(spec: str) -> tuple[SectionParams, Air]:
-    """A named parameter set or a parameter file path.
+def resolve_params(spec: str) -> SectionParams:
+    """A named parameter set or a parameter file path, as a record carrying its air and label.
 
     Named sets: the paper's Table I (``gill2017-soft``, ``gill2017-stiff``,
     ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set,
@@ -463,19 +553,20 @@ def resolve_params(spec: str) -> tuple[SectionParams, Air]:
     """
     from . import calibration
 
+    from ..core.airfoil import preset
+
     if spec in PRESETS:
-        return PRESETS[spec], Air()
+        return preset(spec)
     if spec == calibration.GENERIC:
-        g = calibration.calibration()["generic"]
-        return g.params, g.air
+        return calibration.generic_params()
     if spec.startswith(SECTION_PREFIX):
-        return section_preset(spec[len(SECTION_PREFIX):]), Air()
+        return section_preset(spec[len(SECTION_PREFIX):])
     if spec.startswith("calibrated:"):
         c = calibration.calibrated(spec.split(":", 1)[1])
         if c is None:
             raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set "
                            "('propmap props' lists the calibrated propellers)")
-        return c.params, c.air
+        return c.params
     if Path(spec).is_file():
         return read_params(spec)
     raise KeyError(f"unknown parameters {spec!r}: not a named set ({', '.join(named_sets())}) nor an existing file")

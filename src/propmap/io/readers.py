@@ -615,7 +615,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
         a different ``diameter_in`` is refused.
     n_blades : int, optional
-        Blade count; default 2 (UIUC) or the PE0 file's BLADES.
+        Blade count: required for a UIUC file (which does not state it); a PE0 file's
+        BLADES by default.
 
     Returns
     -------
@@ -625,7 +626,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     ------
     GeometryFileError
         As the chosen reader; also if the file is not a readable regular file or the format
-        is not recognised.
+        is not recognised, or a UIUC file without ``n_blades``.
 
     Warns
     -----
@@ -649,8 +650,13 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
                 raise GeometryFileError(f"{show_path(path)}: {exc}") from None
         return prop
     if _is_uiuc_geometry(text):
-        return _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
-                              name=None, source="")
+        prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
+                              name=None, source="")  # the file's own errors first
+        if n_blades is None:
+            raise GeometryFileError(f"{show_path(path)}: a UIUC geometry file (r/R c/R beta) does not state the blade "
+                                    "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
+                                    "read as 2: -26% in hover)")
+        return prop
     raise GeometryFileError(f"{show_path(path)}: unrecognised geometry format (expected UIUC 'r/R c/R beta' or an "
                             "APC PE0 file)")
 

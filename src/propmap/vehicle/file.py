@@ -21,7 +21,7 @@ Format (body frame: x forward, y left, z up; SI units)::
     axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
     spin = "ccw"                    # about +axis (right-hand rule), or "cw"
     propeller = "apce_8x6"          # geometry file or catalogue name
-    blades = 3                      # optional: blade count of a geometry file (1 to 100)
+    blades = 3                      # blade count of a geometry file (1 to 100): required for a UIUC file, which does not state it
     diameter_m = 0.13               # optional: diameter of a UIUC geometry file [m], in (0, 100]
     params = "generic"              # optional: this rotor's parameter set (a file, relative to
                                     # the vehicle file, or a named set); default the set in use
@@ -177,8 +177,8 @@ def _rotor_params(spec, folder: Path, where: str):
     local = folder / spec
     try:
         if "\x00" not in spec and os.path.lexists(local):
-            return read_params(local)[0]
-        return resolve_params(spec)[0]
+            return read_params(local)
+        return resolve_params(spec)
     except (ParamsFileError, KeyError, ValueError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         raise VehicleFileError(f"{where}: params: {msg}") from None

@@ -155,7 +155,7 @@ def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
 
 
 def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_velocity, rotor_omega, *,
-                   wind=None, rotor_acceleration=None, body_drag: BodyDrag | None = None, air: Air = Air(),
+                   wind=None, rotor_acceleration=None, body_drag: BodyDrag | None = None, air: Air | None = None,
                    discretization: Discretization = DEFAULT_DISCRETIZATION, on_failure: str = "raise") -> VehicleWrench:
     """Body force and moment of a multirotor from its motion and rotor speeds (module docstring).
 
@@ -177,7 +177,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         dOmega_i/dt [rad/s^2] for the spin-up reaction (rotors with a known inertia).
     body_drag : BodyDrag, optional
         Airframe drag; default the vehicle's (none if it has none).
-    air : Air
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
     discretization : Discretization
     on_failure : {"raise", "flag"}
         As :func:`propmap.rotor_loads`.
@@ -195,6 +196,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     SolverError
         As :func:`propmap.rotor_loads`.
     """
+    air = params.air if air is None else air
     n_rot = len(vehicle.rotors)
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)

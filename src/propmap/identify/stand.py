@@ -1,0 +1,223 @@
+"""Load measurements as instruments write them: column names with units, thrust-stand exports.
+
+:func:`propmap.identify.read_loads` reads any CSV whose columns name a quantity and, where
+it is not the SI one, a unit: ``thrust``, ``thrust_kgf``, ``Thrust (gf)``, ``torque_Nmm``,
+``Torque (N·m)``, ``airspeed_kmh``; and the exports of the RCbenchmark / Tyto Robotics
+thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``,
+``Thrust (kgf)`` or ``(gf)``, ``(N)``, ``(lbf)``, ``Torque (N·m)`` (not on the 1520),
+``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
+mark), as the stand's software writes them. This module maps the columns and turns a
+"steps" test into one averaged point per ESC step.
+
+Units (a quantity without a unit is SI, rpm for rotation speed):
+
+==============  ===================================================================
+thrust, drag    N, mN, kgf (kg), gf (g), lbf, ozf
+torque          N·m (Nm, N.m, N m), N·mm (Nmm), kgf·cm, gf·cm, lbf·in, ozf·in, lbf·ft
+rotation speed  rpm, rad/s, Hz (rev/s)
+airspeed        m/s, km/h (kmh), mph, kn (kt, knots)
+==============  ===================================================================
+
+1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
+1 ozf = lbf / 16; 1 in = 0.0254 m.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["ColumnMap", "map_columns", "stand_points", "UNITS", "ROTATION_COLUMNS"]
+
+G0 = 9.80665
+LBF = 4.4482216152605
+INCH = 0.0254
+#: quantity -> {unit token (lower case, separators removed) -> factor to SI}
+UNITS = {
+    "force": {"n": 1.0, "mn": 1e-3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF, "lb": LBF,
+              "ozf": LBF / 16, "oz": LBF / 16},
+    "torque": {"nm": 1.0, "nmm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5, "lbfin": LBF * INCH,
+               "ozfin": LBF / 16 * INCH, "lbfft": LBF * 0.3048},
+    "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
+    "speed": {"ms": 1.0, "kmh": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600, "kt": 1852 / 3600, "knots": 1852 / 3600},
+    "angle": {"deg": 1.0, "rad": 180.0 / math.pi},
+}
+#: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
+_NAMES = {
+    "thrust": ("thrust", "force"), "drag": ("drag", "force"), "torque": ("torque", "torque"),
+    "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
+    "omega": ("rpm", "rotation"),
+    "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
+    "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
+    "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
+    "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
+    "esc signal": ("esc", None), "time": ("time", None), "group": ("group", None),
+}
+#: the rotation-speed columns, in the order of preference when several are present
+ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
+#: what each quantity is looked for as, for messages
+LOOKED_FOR = {
+    "rpm": "rpm (or speed_rad_s, Motor Optical Speed (RPM), Motor Electrical Speed (RPM))",
+    "loads": "thrust, torque or drag, with or without a unit (thrust_kgf, Thrust (gf), torque_Nmm, Torque (N·m))",
+}
+
+
+def _token(unit: str) -> str:
+    """A unit written any usual way, as a lookup token: 'N·m' -> 'nm', 'rad/s' -> 'rads', 'µs' -> 'us'."""
+    return re.sub(r"[\s·*./_\-^]", "", unit.lower().replace("µ", "u").replace("μ", "u"))
+
+
+def _split(name: str) -> tuple[str, str | None]:
+    """(quantity text, unit text or None) of a column name: ``Thrust (kgf)``, ``thrust [N]``,
+    ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one."""
+    name = name.strip()
+    m = re.fullmatch(r"(.*?)\s*[(\[]([^()\[\]]*)[)\]]\s*", name)
+    if m:
+        return m.group(1).strip().lower(), m.group(2).strip()
+    low = name.lower()
+    if low in _NAMES:
+        return low, None
+    if "_" in low:
+        base, unit = low.rsplit("_", 1)
+        if base in _NAMES:
+            kind = _NAMES[base][1]
+            if kind is not None and _token(unit) in UNITS[kind]:
+                return base, unit
+        # e.g. speed_rad_s: the unit itself holds an underscore
+        for k in sorted(_NAMES, key=len, reverse=True):
+            if low.startswith(k + "_") and _NAMES[k][1] is not None and _token(low[len(k) + 1:]) in UNITS[_NAMES[k][1]]:
+                return k, low[len(k) + 1:]
+    return low, None
+
+
+@dataclass
+class ColumnMap:
+    """Which file column gives each quantity, and its factor to SI (rpm for rotation).
+
+    Attributes
+    ----------
+    columns : dict
+        quantity -> (column name as written, factor, unit as written or None).
+    notes : list of str
+        What the mapping decided (units converted, the rotation-speed column chosen).
+    """
+
+    columns: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+
+    def column(self, quantity: str):
+        return self.columns[quantity][0] if quantity in self.columns else None
+
+
+def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None = None,
+                error=ValueError) -> ColumnMap:
+    """Map a CSV header to the load quantities (module docstring).
+
+    Parameters
+    ----------
+    names : sequence of str
+        The header's column names, as written.
+    rpm_source : {"optical", "electrical"}, optional
+        Which of a stand's two speed columns to use; default: the optical one where the
+        file has both (the electrical speed depends on the pole setting of the stand's
+        software).
+    pole_pairs : int, optional
+        Divide the electrical speed by this (an export of the raw electrical rpm).
+    error : type
+        The exception raised.
+
+    Raises
+    ------
+    error
+        A recognised quantity in an unknown unit (naming the column and the known units),
+        two columns for one quantity, no rotation-speed column or no load column (listing
+        the columns found and what was looked for), an unknown ``rpm_source``, or a
+        ``pole_pairs`` outside [1, 50].
+    """
+    cm = ColumnMap()
+    for name in names:
+        if not name.strip():
+            continue
+        base, unit = _split(name)
+        if base not in _NAMES:
+            continue
+        quantity, kind = _NAMES[base]
+        factor = 1.0
+        if kind is not None:
+            if unit is None:
+                factor = 1.0  # SI (rpm, deg)
+            else:
+                tok = _token(unit)
+                if tok not in UNITS[kind]:
+                    raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: "
+                                f"{', '.join(UNITS[kind])})")
+                factor = UNITS[kind][tok]
+        if quantity in cm.columns:
+            raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
+        cm.columns[quantity] = (name, factor, unit)
+        if unit is not None and factor != 1.0:
+            cm.notes.append(f"{name!r} converted from {unit} ({factor:.6g} SI per {unit})")
+    if rpm_source not in (None, "optical", "electrical"):
+        raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
+    if pole_pairs is not None and not (isinstance(pole_pairs, int) and 1 <= pole_pairs <= 50):
+        raise error(f"pole_pairs must be an integer in [1, 50], got {pole_pairs!r}")
+    found = ", ".join(repr(n) for n in names if n.strip())
+    speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
+    if not speeds:
+        raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}")
+    if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
+        raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+    if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
+        raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; found {found}")
+    return cm
+
+
+def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
+                 steady: float = 0.02):
+    """One averaged point per ESC step of a thrust-stand "steps" test.
+
+    Consecutive rows with the same ESC signal form a step. Of each step the first ``settle``
+    of its duration (its rows, without a time column) is dropped, the motor settling, and of
+    the rest the rows whose rotation speed is within ``steady`` of the step's median;
+    what remains is averaged. A step of one or two rows (an export that already averaged
+    them) is taken whole.
+
+    Parameters
+    ----------
+    values : dict
+        quantity -> ndarray of shape (N,), rows in file order; must hold ``rpm``.
+    esc : ndarray, shape (N,)
+        ESC signal [us].
+    time : ndarray, shape (N,), or None
+    settle, steady : float
+
+    Returns
+    -------
+    (dict, ndarray of str, int)
+        The averaged values (quantity -> shape (K,)), each step's group label
+        ``step<k>_<esc>us``, and the number of rows dropped as transients.
+    """
+    edges = np.flatnonzero(np.diff(np.round(esc, 1)) != 0) + 1
+    starts = np.concatenate([[0], edges])
+    stops = np.concatenate([edges, [esc.size]])
+    out = {k: [] for k in values}
+    groups, dropped = [], 0
+    for k, (a, b) in enumerate(zip(starts, stops)):
+        idx = np.arange(a, b)
+        if idx.size > 2:
+            if time is not None and time[b - 1] > time[a]:
+                keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]
+            else:
+                keep = idx[int(settle * idx.size):]
+            rpm = values["rpm"][keep]
+            med = np.median(rpm)
+            keep = keep[np.abs(rpm - med) <= steady * max(abs(med), 1e-9)] if med > 0 else keep
+            dropped += idx.size - keep.size
+            idx = keep if keep.size else idx[-1:]
+        for q in values:
+            out[q].append(float(np.mean(values[q][idx])))
+        groups.append(f"step{k + 1}_{esc[a]:g}us")
+    return {q: np.array(v) for q, v in out.items()}, np.array(groups, dtype=object), dropped
