@@ -48,7 +48,7 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
         for ax, meas, mod in ((axes[0], run.CT, run.CT_model), (axes[1], run.CP, run.CP_model)):
             if run.kind == "static":
                 ax.plot(run.J, meas, "s", color=c, ms=4, mfc="none", label=f"{run.label} (measured)")
-                ax.plot(run.J, mod, "x", color=c, ms=5)
+                ax.plot(run.J, mod, "x", color=c, ms=5, label=f"{run.label} (model)")
             else:
                 order = np.argsort(run.J)
                 ax.plot(run.J, meas, "o", color=c, ms=4, label=f"{run.label} (measured)")
@@ -60,8 +60,9 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
         ax.set_ylabel(name)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7, loc="lower left")
-    fig.suptitle((title or f"{validation.propeller}: model vs measured") + "\nData: " + validation.citation,
-                 fontsize=9)
+    # the data's citation once, under the title (a title that already cites the data is kept as given)
+    title = title or f"{validation.propeller}: model vs measured"
+    fig.suptitle(title if "Data:" in title else title + "\nData: " + validation.citation, fontsize=9)
     return _save(fig, path)
 
 
@@ -73,16 +74,16 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.2), constrained_layout=True)
+    T_hover = float(table.thrust_hover.abs().max())  # one scale for every curve (the rpm's hover thrust)
     for inc, g in table.groupby("incidence_deg"):
         g = g.sort_values("airspeed")
         line, = axes[0].plot(g.airspeed, g.thrust, "-", label=f"incidence {inc:g} deg")
         axes[1].plot(g.airspeed, g.drag, "-", color=line.get_color())
-        axes[2].plot(g.airspeed, 100 * (g.thrust_hover - g.thrust) / g.thrust.abs().max(), "-",
-                     color=line.get_color())
+        axes[2].plot(g.airspeed, 100 * (g.thrust_hover - g.thrust) / T_hover, "-", color=line.get_color())
     axes[0].axhline(float(table.thrust_hover.iloc[0]), color="k", ls="--", lw=1, label="hover model T = k_T Omega^2")
     axes[0].set_ylabel("thrust T [N]")
     axes[1].set_ylabel("rotor drag D [N] (hover model: 0)")
-    axes[2].set_ylabel("hover-model thrust error [% of max T]")
+    axes[2].set_ylabel("hover-model thrust error [% of hover T]")
     for ax in axes:
         ax.set_xlabel("airspeed V [m/s]")
         ax.grid(alpha=0.3)
@@ -199,7 +200,8 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=8)
     fig.suptitle(title or f"propmap cross-validation over {len(rows)} catalogue propellers\n"
-                          "Data: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255)", fontsize=9)
+                          "Data: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255) and vol. 2 "
+                          "(Deters, Ananda & Selig, AIAA 2014-2151)", fontsize=9)
     return _save(fig, path)
 
 

@@ -342,7 +342,7 @@ def echo_json(obj) -> None:
 
 prop_options = [
     click.option("--diameter-in", type=float, default=None, help="Diameter [in] for geometry files that lack it."),
-    click.option("--blades", type=int, default=None, help="Blade count for geometry files (default 2)."),
+    click.option("--blades", type=int, default=None, help="Blade count; required for UIUC geometry files (they do not state it), checked against PE0 files."),
 ]
 
 

@@ -471,9 +471,13 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if "esc" in v and n and np.unique(np.round(v["esc"], 1)).size < n:
         esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
-        v, group, dropped = stand_points(v, esc, time)
-        notes.append(f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped); "
-                     f"each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
+        v, group, dropped, unsteady = stand_points(v, esc, time)
+        if not group.size:
+            raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
+                            "half of the step)")
+        notes.append(f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped"
+                     + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
+                     + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
         lines = np.zeros(group.size, dtype=np.int64)
         n = group.size
     else:

@@ -77,6 +77,7 @@ AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag
 ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined
 SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
+NM_STAT_TOL = 0.01  # Nelder-Mead at its limit counts as converged within 1% of the std errors
 M_SMOOTH = 30.0  # first stage of the continuation in M (eq 3's blend has no root folds at 30)
 SAME_COST_RTOL = 0.01  # multistart optima within 1% in cost ...
 DIFFERENT_X_RTOL = 0.05  # ... but 5% apart in a parameter: the data do not determine it
@@ -220,7 +221,12 @@ class Identifiability:
     With the population prior, ``std_error``, ``ci95``, ``correlation`` and the warnings
     are the posterior's (J stacked with the prior's rows: what data and prior together
     determine), and ``std_error_data`` holds the data's alone beside them (None without a
-    prior); ``poorly_determined`` is still judged on the data alone.
+    prior); ``poorly_determined`` is still judged on the data alone. ``effective_parameters``
+    is how many parameter directions the data determine against the prior, the trace of the
+    posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
+    the prior's): p without a prior, fewer as the prior holds directions the data leave free
+    (the effective degrees of freedom of a ridge fit: Hastie, Tibshirani & Friedman, The
+    Elements of Statistical Learning, 2nd ed. 2009, eq 3.50).
     """
 
     names: tuple[str, ...]
@@ -231,6 +237,7 @@ class Identifiability:
     poorly_determined: tuple[str, ...]
     warnings: tuple[str, ...]
     std_error_data: np.ndarray | None = None
+    effective_parameters: float | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready form (angles in rad; a non-finite std error is null)."""
@@ -242,6 +249,8 @@ class Identifiability:
             "std_error_data_only": (None if self.std_error_data is None
                                     else {n: num(v) for n, v in zip(self.names, self.std_error_data)}),
             "ci95": {n: [num(a), num(b)] for n, (a, b) in zip(self.names, self.ci95)},
+            "effective_parameters": (None if self.effective_parameters is None
+                                     else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
             "singular_values": [float(s) for s in self.singular_values],
             "poorly_determined": list(self.poorly_determined),
@@ -346,6 +355,9 @@ class FitResult:
         if data_only:
             lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
                          "the data's alone")
+        if idf.effective_parameters is not None:
+            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
+                         "directions (effective number; the prior holds the others near the base set)")
         if len(self.names) > 1:
             lines.append("correlation: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
@@ -423,6 +435,13 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None) -> I
     if sv.size and sv[-1] < 1e-6 * sv[0]:
         warns.append("the Jacobian is nearly singular: some direction in parameter space is not identifiable")
     return Identifiability(tuple(names), std, ci, corr, sv, tuple(poor), tuple(warns))
+
+
+def _effective_parameters(jac_data, jac_all) -> float:
+    """tr[J_d^T J_d (J^T J)^+] with J = jac_all (data and prior rows): the directions the data
+    determine against the prior (Identifiability)."""
+    A = jac_data.T @ jac_data
+    return float(np.trace(A @ np.linalg.pinv(jac_all.T @ jac_all)))
 
 
 def _bounds(names, options: FitOptions):
@@ -573,7 +592,8 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         idf_warns = post.warnings + ((f"the data alone leave {', '.join(held)} (nearly) free: the population prior "
                                       "holds them near the base set's values (data-only std errors in the report)",)
                                      if held else ())
-        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error)
+        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
+                      effective_parameters=_effective_parameters(jac, best.jac))
     tol = 1e-6 * (ub - lb)
     at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
     warns = list(warns)
@@ -693,9 +713,19 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
                                     "initial_simplex": simplex})
     x = np.clip(nm.x * scale, lb, ub) if nm.fun <= r2.cost else r2.x
     fun = exact(x)
+    J = _jacobian(smooth, x, lb, ub)
     stopped = nm.nfev >= max_fev and nm.fun < r2.cost
+    if stopped:
+        # with noisy data Nelder-Mead's 1e-12 tolerance is not reached in max_fev evaluations;
+        # it has converged for every purpose when its simplex is within NM_STAT_TOL of the
+        # parameters' standard errors (the data's scatter, not the optimiser, sets the error)
+        spread = np.ptp(nm.final_simplex[0], axis=0) * scale
+        s2 = float(fun @ fun) / max(fun.size - len(names), 1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            std = np.sqrt(np.clip(np.diag(s2 * np.linalg.pinv(J.T @ J)), 0, None))
+        stopped = not np.all(spread <= NM_STAT_TOL * std)
     result = optimize.OptimizeResult(
-        x=x, fun=fun, jac=_jacobian(smooth, x, lb, ub), cost=0.5 * float(fun @ fun), nfev_limit=max_fev,
+        x=x, fun=fun, jac=J, cost=0.5 * float(fun @ fun), nfev_limit=max_fev,
         status=0 if stopped else 2, success=not stopped, nfev=r2.nfev + nm.nfev,
         message=("Nelder-Mead stopped at its evaluation limit" if stopped else
                  f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then Nelder-Mead at M = {base_M:g}"))

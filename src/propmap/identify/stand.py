@@ -182,8 +182,9 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     Consecutive rows with the same ESC signal form a step. Of each step the first ``settle``
     of its duration (its rows, without a time column) is dropped, the motor settling, and of
     the rest the rows whose rotation speed is within ``steady`` of the step's median;
-    what remains is averaged. A step of one or two rows (an export that already averaged
-    them) is taken whole.
+    what remains is averaged. A step where fewer than half of the rows after settling are
+    steady (a spin-down, a step too short for the motor) gives no point. A step of one or
+    two rows (an export that already averaged them) is taken whole.
 
     Parameters
     ----------
@@ -196,17 +197,19 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
 
     Returns
     -------
-    (dict, ndarray of str, int)
+    (dict, ndarray of str, int, tuple of str)
         The averaged values (quantity -> shape (K,)), each step's group label
-        ``step<k>_<esc>us``, and the number of rows dropped as transients.
+        ``step<k>_<esc>us``, the number of rows dropped as transients, and the labels of
+        the steps dropped as unsteady.
     """
     edges = np.flatnonzero(np.diff(np.round(esc, 1)) != 0) + 1
     starts = np.concatenate([[0], edges])
     stops = np.concatenate([edges, [esc.size]])
     out = {k: [] for k in values}
-    groups, dropped = [], 0
+    groups, dropped, unsteady = [], 0, []
     for k, (a, b) in enumerate(zip(starts, stops)):
         idx = np.arange(a, b)
+        label = f"step{k + 1}_{esc[a]:g}us"
         if idx.size > 2:
             if time is not None and time[b - 1] > time[a]:
                 keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]
@@ -214,10 +217,15 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
                 keep = idx[int(settle * idx.size):]
             rpm = values["rpm"][keep]
             med = np.median(rpm)
-            keep = keep[np.abs(rpm - med) <= steady * max(abs(med), 1e-9)] if med > 0 else keep
-            dropped += idx.size - keep.size
-            idx = keep if keep.size else idx[-1:]
+            steady_rows = keep[np.abs(rpm - med) <= steady * max(abs(med), 1e-9)] if med > 0 else keep
+            if steady_rows.size < 0.5 * keep.size:
+                # the speed never settled (a spin-down, a step too short): no steady point
+                unsteady.append(label)
+                dropped += idx.size
+                continue
+            dropped += idx.size - steady_rows.size
+            idx = steady_rows
         for q in values:
             out[q].append(float(np.mean(values[q][idx])))
-        groups.append(f"step{k + 1}_{esc[a]:g}us")
-    return {q: np.array(v) for q, v in out.items()}, np.array(groups, dtype=object), dropped
+        groups.append(label)
+    return {q: np.array(v) for q, v in out.items()}, np.array(groups, dtype=object), dropped, tuple(unsteady)
