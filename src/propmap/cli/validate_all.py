@@ -222,14 +222,14 @@ def print_report(cat: dict, cases: dict) -> None:
         click.echo(f"\n{title} (CT median / 90th percentile / worst; n propellers):")
         for g, s in groups.items():
             n = next(iter(s.values()))["ct"]["n_propellers"]
-            click.echo(f"  {g:<10} n={n:<3}" + "  ".join(
+            click.echo(f"  {g:<10} n={n:<4} " + "  ".join(
                 f"{k} {_pct(s[k]['ct']['median']).strip()}/{_pct(s[k]['ct']['p90']).strip()}/"
                 f"{_pct(s[k]['ct']['worst']).strip()}" for k in protos))
     click.echo("\npublished cases (digitized; data/CITATION.md):")
     for c, res in cases.items():
         click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
         for label, m in res.metrics.items():
-            click.echo(f"    {label:<28}" + ", ".join(f"{k} {v:.4g}" for k, v in m.items()))
+            click.echo(f"    {label:<32} " + ", ".join(f"{k} {v:.4g}" for k, v in m.items()))
 
 
 def _csv(path: Path, cat: dict) -> None:
