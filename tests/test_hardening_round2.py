@@ -186,3 +186,12 @@ def test_fit_loads_refuses_a_file_given_twice_and_warns_of_another_propeller(cap
         assert one_line_error(code, err, "is the same file as"), err
     code, _, err = run(capsys, "fit", "loads", static, *sweeps, "--prop", "apce_10x5", "--out", tmp_path / "p.toml")
     assert code == 0 and "is named for propeller 'apce_10x7', fitted with --prop 'apce_10x5'" in err
+
+
+def test_a_plot_folder_name_too_long_for_the_system_is_refused_naming_plot(capsys, tmp_path):
+    """A --plot folder whose name exceeds the system's limit: exit 2 naming --plot, no map written."""
+    code, out, err = run(capsys, "map", "apce_9x6", "--rpm", "3000:9000:3", "--airspeed", "0:10:3",
+                         "--incidence-deg", "0:180:3", "--out", str(tmp_path / "m.nc"),
+                         "--plot", str(tmp_path / ("d" * 300)), "--plot-rpm", "5000")
+    assert one_line_error(code, err, "--plot: ") and "too long" in err, err
+    assert not (tmp_path / "m.nc").exists()

@@ -331,7 +331,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
         Any of :data:`PROTOCOLS`.
     population : dict, optional
         The fits' prior statistics (io.calibration.population); for honest numbers, those
-        of the catalogue half without this propeller (``population(without=name)``).
+        of the catalogue without this propeller's family (``population(without=name)``).
 
     Returns
     -------

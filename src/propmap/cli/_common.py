@@ -328,7 +328,12 @@ def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
     """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
     if out_dir is None or str(out_dir) == "":
         raise InputError(f"{option}: the path is empty")
-    if out_dir.exists() and not out_dir.is_dir():
+    try:
+        exists = out_dir.exists()
+    except OSError as exc:  # a name too long for the system, a loop of links
+        raise InputError(f"{option}: {str(out_dir)[:80]}{'...' if len(str(out_dir)) > 80 else ''}: "
+                         f"{exc.strerror or exc}") from None
+    if exists and not out_dir.is_dir():
         raise InputError(f"{option}: {out_dir} exists and is not a folder")
     paths = [out_dir / n for n in names]
     check_outputs([(option, p) for p in paths], inputs)

@@ -54,7 +54,7 @@ def fit_demo(prop, generic, out_dir: Path):
     entry = get_entry(PROP)
     data = loads_from_catalogue(entry, prop.diameter)
     train = data.subset(~np.isin(data.group, HOLDOUT))
-    # base and prior from the catalogue half without PROP: nothing of the held-out data leaks
+    # base and prior from the catalogue without PROP's family: nothing of the held-out data leaks
     cambered = fit_loads(train, prop, base=generic, options=FitOptions(population=population(without=PROP)))
     paper = fit_loads(train, prop, base=preset(PAPER), options=FitOptions())
     write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
@@ -106,7 +106,7 @@ def demo(out_dir: Path, rpm: float):
     paper = preset(PAPER)
     click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric; {prop.source})")
     click.echo(f"models: the paper's eqs 3-4 with Table I ({PAPER}); the cambered section with Prandtl tip loss "
-               f"and the {generic_label} set (fitted to half of the catalogue, without {PROP})\n")
+               f"and the {generic_label} set (fitted to the catalogue without {PROP}'s family)\n")
 
     from ..core.airfoil import Air
     from .loads import _coverage_messages, _extremes

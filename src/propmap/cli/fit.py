@@ -322,7 +322,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     population = None
     if entry is not None and held:
         # judging held-out runs of a catalogue propeller: the generic set and the prior must
-        # come from the catalogue half that never saw them
+        # come from the catalogue without the propeller's family, which never saw them
         from ..io.calibration import generic_without
         from ..io.calibration import population as population_without
 

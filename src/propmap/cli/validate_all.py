@@ -180,7 +180,7 @@ def run_cases() -> dict:
     """The digitized published cases with the paper's Table I, a generic set and the hover model.
 
     The generic set never saw the case's propeller: for the APC 10x7E, whose geometry is
-    the catalogue's apce_10x7, the half-catalogue set without apce_10x7.
+    the catalogue's apce_10x7, the generic set without the APC electric family.
     """
     from ..cases import CASES, run_case
     from ..core.airfoil import preset

@@ -172,7 +172,7 @@ class FitOptions:
     population : dict, optional
         The prior's statistics (``names``, ``covariance``, ``sigma_data``, ``source``);
         default the shipped ones (io.calibration.population). Validation passes the
-        statistics of the catalogue half that excludes the propeller it predicts.
+        statistics of the catalogue without the family of the propeller it predicts.
     lift_model : {"sigmoid", "sincos"}
     multistart : int
         Extra starts from a scrambled Sobol sequence inside the bounds (0: x0 only). With
