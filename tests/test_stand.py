@@ -138,3 +138,96 @@ def test_held_out_steps_of_a_1585_export_are_predicted(tmp_path, truth_params):
     idf = res.identifiability
     assert np.all(np.isfinite(idf.ci95)) and idf.effective_parameters < len(res.names)
     assert len(res.warnings) + len(idf.warnings) <= 3
+
+
+def _rows_csv(path, header, rows):
+    path.write_text("\n".join([",".join(header)] + [",".join(f"{v:.6g}" for v in r) for r in rows]) + "\n")
+    return path
+
+
+def test_a_step_is_split_where_the_airspeed_changes_at_one_throttle(tmp_path, truth_params):
+    """A tunnel run holding the ESC at each level while the airspeed is swept: every
+    (ESC, airspeed) pair is its own point, not an average over airspeeds."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = []
+    for esc, rpm in ((1400, 4000.0), (1600, 6000.0)):
+        for V in (0.0, 5.0, 10.0):
+            r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, V, 0.0)
+            for k in range(10):
+                rows.append((esc, rpm, V, float(r.thrust), float(r.torque)))
+    data = read_loads(_rows_csv(tmp_path / "t.csv", ["esc_us", "rpm", "airspeed", "thrust", "torque"], rows),
+                      min_points=6)
+    assert data.n == 6
+    np.testing.assert_allclose(np.sort(data.airspeed), [0, 0, 5, 5, 10, 10])
+
+
+def test_a_jittering_esc_signal_still_gives_one_point_per_step(tmp_path, truth_params):
+    rng = np.random.default_rng(1)
+    prop = pm.load_propeller("apce_8x6")
+    rows = []
+    for esc, rpm in zip(range(1200, 1900, 100), range(3000, 10000, 1000)):
+        r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+        for k in range(20):
+            rows.append((esc + rng.uniform(-0.8, 0.8), rpm, float(r.thrust), float(r.torque)))
+    data = read_loads(_rows_csv(tmp_path / "j.csv", ["ESC signal (µs)", "rpm", "thrust", "torque"], rows))
+    assert data.n == 7
+    np.testing.assert_allclose(data.omega * 30 / np.pi, range(3000, 10000, 1000))
+
+
+@pytest.mark.parametrize("header, match", [
+    (["rpm", "thrust_N", "torque_Ncmx"], "unknown unit 'Ncmx'"),
+    (["rpm", "thrust_lbs"], "unknown unit 'lbs'"),
+])
+def test_an_unknown_unit_suffix_is_refused_not_ignored(tmp_path, header, match):
+    path = _rows_csv(tmp_path / "u.csv", header, [(1000.0 * k, 1.0, 0.01)[:len(header)] for k in range(1, 8)])
+    with pytest.raises(DataError, match=match):
+        read_loads(path)
+
+
+def test_other_units_of_torque_and_force_are_converted(tmp_path):
+    rows = [(1000.0 * k, 0.5 * k, 0.2 * k) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "c.csv", ["rpm", "thrust_kN", "torque_Ncm"], rows))
+    np.testing.assert_allclose(d.measured["thrust"], [500.0 * k for k in range(1, 8)])
+    np.testing.assert_allclose(d.measured["torque"], [0.002 * k for k in range(1, 8)])
+
+
+def test_a_header_only_export_is_a_data_error_naming_the_file(tmp_path):
+    path = tmp_path / "empty.csv"
+    path.write_text(",".join(COLUMNS["1585"]).replace("{u}", "gf") + "\n", encoding="utf-8-sig")
+    with pytest.raises(DataError, match="empty.csv"):
+        read_loads(path)
+
+
+def test_pole_pairs_without_the_electrical_speed_is_refused(tmp_path, truth_params):
+    path = tmp_path / "o.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS)
+    with pytest.raises(DataError, match="pole_pairs"):
+        read_loads(path, pole_pairs=7)
+
+
+def test_negative_thrust_is_refused_with_its_cause(tmp_path, truth_params):
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    path = _rows_csv(tmp_path / "n.csv", ["rpm", "thrust", "torque"], zip(rpm, -r.thrust, r.torque))
+    with pytest.raises(DataError, match="thrust of the opposite sign"):
+        sanity_check(read_loads(path), prop)
+
+
+def test_posterior_errors_of_prior_held_parameters_keep_the_population_spread(tmp_path, truth_params):
+    """A direction the data leave free keeps the prior's spread in the posterior, whatever the
+    data's residual level (the prior rows are rescaled to the fit's residual variance)."""
+    from propmap.io.calibration import population
+
+    pop = population()
+    sd_pop = dict(zip(pop["names"], np.sqrt(np.diag(np.asarray(pop["covariance"], float)))))
+    out = []
+    for noise in (0.004, 0.0004):
+        path = tmp_path / f"s{noise}.csv"
+        write_steps_export(path, params=truth_params, steps=STEPS, noise=noise)
+        res = fit_loads(read_loads(path), pm.load_propeller("apce_8x6"), base=pm.generic_params())
+        out.append(dict(zip(res.names, res.identifiability.std_error)))
+        k = res.names.index("cl_alpha")  # data-only std error far above the population's spread
+        assert res.identifiability.std_error_data[k] > 3 * sd_pop["cl_alpha"]
+        assert 0.5 * sd_pop["cl_alpha"] < out[-1]["cl_alpha"] <= 1.0001 * sd_pop["cl_alpha"]
+    assert out[1]["cl_alpha"] == pytest.approx(out[0]["cl_alpha"], rel=0.2)

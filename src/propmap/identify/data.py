@@ -408,7 +408,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
         header), no rotation-speed or no load column (the message lists the columns found
         and what was looked for), a unit it does not know, two columns for one quantity, an
-        empty, non-numeric or non-finite value, a value out of range (rpm outside
+        empty (except a rotation speed: an empty one is a stopped motor, skipped),
+        non-numeric or non-finite value, a value out of range (rpm outside
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
         incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque whose sign
@@ -441,7 +442,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if use != "rpm":
         if rpm_source is not None:
             use = f"rpm_{rpm_source}"
-        elif "rpm_optical" in v and np.nanmax(np.nan_to_num(v["rpm_optical"])) > 0:
+        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.nan_to_num(v["rpm_optical"])) > 0:
             use = "rpm_optical"
         elif "rpm_electrical" in v:
             use = "rpm_electrical"
@@ -450,6 +451,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             (f", divided by {pole_pairs} pole pairs" if pole_pairs else
              ", as the stand computed it from its motor-pole setting; if the export is raw electrical rpm, give "
              "the pole pairs (--pole-pairs)")))
+    if pole_pairs and use != "rpm_electrical":
+        raise DataError(f"{what}: {p}: pole_pairs (--pole-pairs) divides an electrical speed, but the rotation "
+                        f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
+                        "to use the electrical one)")
     rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
     for q in speeds:
         v.pop(q)
@@ -471,7 +476,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if "esc" in v and n and np.unique(np.round(v["esc"], 1)).size < n:
         esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
-        v, group, dropped, unsteady = stand_points(v, esc, time)
+        if n and np.all(np.isnan(v["rpm"])):
+            raise DataError(f"{what}: {p}: no rotation speed in any row")
+        v, group, dropped, unsteady = stand_points(v, esc, time, labels=group)
         if not group.size:
             raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
                             "half of the step)")
@@ -619,6 +626,8 @@ _UNIT_SLIPS = [
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
     (1.0, -1.0, "the stand's reaction torque, of the opposite sign, in a file whose torque also changes sign"),
+    (-1.0, 1.0, "thrust of the opposite sign (a pusher, or a stand mounted the other way round): negate the thrust "
+                "column"),
 ]
 
 
@@ -662,8 +671,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if tip > 0.7:
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
-    r = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                    collective=data.collective)
+
     def ratios(omega, fT=1.0, fQ=1.0):
         r = rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
                         collective=data.collective)

@@ -218,9 +218,10 @@ class Identifiability:
     ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
     respect to relative parameter changes.
 
-    With the population prior, ``std_error``, ``ci95``, ``correlation`` and the warnings
-    are the posterior's (J stacked with the prior's rows: what data and prior together
-    determine), and ``std_error_data`` holds the data's alone beside them (None without a
+    With the population prior, ``std_error``, ``ci95`` and ``correlation`` are the
+    posterior's, covariance (J_d^T J_d / s^2 + Sigma^-1)^-1 with Sigma the population
+    covariance (what data and prior together determine; a direction the data leave free
+    keeps the population's spread), and ``std_error_data`` holds the data's alone beside them (None without a
     prior); ``poorly_determined`` is still judged on the data alone. ``effective_parameters``
     is how many parameter directions the data determine against the prior, the trace of the
     posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
@@ -585,13 +586,24 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
     idf = _identifiability(names, best.x, jac, residuals)
     if "prior" in extra:
-        # the posterior (data and prior rows together), with the data's residual variance;
-        # the data-only figures stay beside it
-        post = _identifiability(names, best.x, best.jac, residuals, dof_rows=residuals.size)
+        # the posterior: the prior rows were weighted by w = sigma_d * scale (the population's
+        # residual level) in the fit; rescaled by sqrt(s2) / w they carry the population
+        # covariance Sigma against this fit's residual variance s2, so that
+        # cov = s2 (J_d^T J_d + s2 Sigma^-1)^-1 = (J_d^T J_d / s2 + Sigma^-1)^-1 (a direction
+        # the data leave free keeps the prior's spread, whatever the data's noise)
+        w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
+        s2 = float(residuals @ residuals) / max(residuals.size - len(names), 1)
+        prior_rows = best.jac[-k:] * (math.sqrt(s2) / w)
+        post = _identifiability(names, best.x, np.vstack([jac, prior_rows]), residuals, dof_rows=residuals.size)
         held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
-        idf_warns = post.warnings + ((f"the data alone leave {', '.join(held)} (nearly) free: the population prior "
-                                      "holds them near the base set's values (data-only std errors in the report)",)
-                                     if held else ())
+        # one line for what the prior holds; the data's own word on parameters it does not
+        # cover; the posterior's correlations (its std errors are in the report)
+        determined = ("poorly determined", "not determined")
+        own = tuple(w for w in idf.warnings if any(d in w for d in determined)
+                    and w.split(" ", 1)[0] not in extra["prior"]["names"])
+        idf_warns = own + tuple(w for w in post.warnings if not any(d in w for d in determined)) + (
+            (f"the data alone leave {', '.join(held)} (nearly) free: the population prior holds them near the "
+             "base set's values (data-only std errors in the report)",) if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac, best.jac))
     tol = 1e-6 * (ub - lb)

@@ -12,8 +12,8 @@ mark), as the stand's software writes them. This module maps the columns and tur
 Units (a quantity without a unit is SI, rpm for rotation speed):
 
 ==============  ===================================================================
-thrust, drag    N, mN, kgf (kg), gf (g), lbf, ozf
-torque          N·m (Nm, N.m, N m), N·mm (Nmm), kgf·cm, gf·cm, lbf·in, ozf·in, lbf·ft
+thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
+torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm, gf·cm, lbf·in, ozf·in, lbf·ft
 rotation speed  rpm, rad/s, Hz (rev/s)
 airspeed        m/s, km/h (kmh), mph, kn (kt, knots)
 ==============  ===================================================================
@@ -37,9 +37,9 @@ LBF = 4.4482216152605
 INCH = 0.0254
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
-    "force": {"n": 1.0, "mn": 1e-3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF, "lb": LBF,
+    "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF, "lb": LBF,
               "ozf": LBF / 16, "oz": LBF / 16},
-    "torque": {"nm": 1.0, "nmm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5, "lbfin": LBF * INCH,
+    "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5, "lbfin": LBF * INCH,
                "ozfin": LBF / 16 * INCH, "lbfft": LBF * 0.3048},
     "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
     "speed": {"ms": 1.0, "kmh": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600, "kt": 1852 / 3600, "knots": 1852 / 3600},
@@ -54,7 +54,8 @@ _NAMES = {
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
     "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
-    "esc signal": ("esc", None), "time": ("time", None), "group": ("group", None),
+    "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
+    "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
 }
 #: the rotation-speed columns, in the order of preference when several are present
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
@@ -90,6 +91,10 @@ def _split(name: str) -> tuple[str, str | None]:
         for k in sorted(_NAMES, key=len, reverse=True):
             if low.startswith(k + "_") and _NAMES[k][1] is not None and _token(low[len(k) + 1:]) in UNITS[_NAMES[k][1]]:
                 return k, low[len(k) + 1:]
+        # a known quantity with a unit suffix propmap does not know (torque_Ncm): returned
+        # as such, so that the unit is refused rather than the column silently ignored
+        if base in _NAMES and _NAMES[base][1] is not None:
+            return base, name.strip().rsplit("_", 1)[1]
     return low, None
 
 
@@ -175,11 +180,33 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     return cm
 
 
+#: a new step starts where the ESC signal moves more than this from the step's first row [us]
+#: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
+#: its tolerance (a tunnel run at one throttle and several airspeeds)
+ESC_TOL_US = 2.0
+CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
+
+
+def _step_starts(esc: np.ndarray, conditions: dict, labels) -> np.ndarray:
+    """Row index where each step starts (see ESC_TOL_US, CONDITION_TOL)."""
+    starts = [0]
+    ref = 0
+    cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
+    for i in range(1, esc.size):
+        if (abs(esc[i] - esc[ref]) > ESC_TOL_US or any(abs(a[i] - a[ref]) > tol for a, tol in cond)
+                or (labels is not None and labels[i] != labels[ref])):
+            starts.append(i)
+            ref = i
+    return np.array(starts)
+
+
 def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
-                 steady: float = 0.02):
+                 steady: float = 0.02, labels=None):
     """One averaged point per ESC step of a thrust-stand "steps" test.
 
-    Consecutive rows with the same ESC signal form a step. Of each step the first ``settle``
+    Consecutive rows with one ESC signal (within ESC_TOL_US of the step's first row) and one
+    operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
+    ``labels``) form a step. Of each step the first ``settle``
     of its duration (its rows, without a time column) is dropped, the motor settling, and of
     the rest the rows whose rotation speed is within ``steady`` of the step's median;
     what remains is averaged. A step where fewer than half of the rows after settling are
@@ -194,6 +221,9 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
         ESC signal [us].
     time : ndarray, shape (N,), or None
     settle, steady : float
+    labels : sequence of str, shape (N,), optional
+        A run label per row (a ``group`` column): a step never spans two labels, and its
+        label becomes ``<label>_step<k>_<esc>us``.
 
     Returns
     -------
@@ -202,14 +232,13 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
         ``step<k>_<esc>us``, the number of rows dropped as transients, and the labels of
         the steps dropped as unsteady.
     """
-    edges = np.flatnonzero(np.diff(np.round(esc, 1)) != 0) + 1
-    starts = np.concatenate([[0], edges])
-    stops = np.concatenate([edges, [esc.size]])
+    starts = _step_starts(esc, {q: values[q] for q in CONDITION_TOL if q in values}, labels)
+    stops = np.concatenate([starts[1:], [esc.size]])
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     for k, (a, b) in enumerate(zip(starts, stops)):
         idx = np.arange(a, b)
-        label = f"step{k + 1}_{esc[a]:g}us"
+        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k + 1}_{np.median(esc[a:b]):.0f}us"
         if idx.size > 2:
             if time is not None and time[b - 1] > time[a]:
                 keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]

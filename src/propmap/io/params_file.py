@@ -246,6 +246,8 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
                          f"{', '.join(COVERAGE_KEYS)})")
     for k, v in table.items():
         _check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+    if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max {table['rpm_max']:g}")
     return {k: float(v) for k, v in table.items()}
 
 
