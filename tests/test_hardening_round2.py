@@ -13,18 +13,9 @@ import propmap as pm
 from propmap.cli.main import main
 from propmap.io import mapfile
 
+from test_cli_hostile_maps import one_line_error, run
+
 TINY = ["--rpm", "3000:9000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5", "--check-points", "0"]
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def one_line_error(code, err, match=""):
-    errors = [line for line in err.strip().splitlines() if line.startswith("propmap: error:")]
-    return code == 2 and len(errors) == 1 and match in errors[0] and "Traceback" not in err
 
 
 @pytest.mark.parametrize("argv, match", [

@@ -340,6 +340,24 @@ def _where(path) -> str:
     return s if len(s) <= 80 else s[:77] + "..."
 
 
+def _stat_regular(path):
+    """(the path as shown in messages, its os.stat) of a map file that must be a regular file.
+
+    Raises
+    ------
+    ValueError
+        The path cannot be stat-ed, or is a folder, device or pipe.
+    """
+    where = _where(path)
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{where}: {getattr(exc, 'strerror', None) or exc}") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
+    return where, st
+
+
 def _layout(path, where: str) -> list[str]:
     """Read the file's dimensions and variables (no data); refuse a layout that is not a
     map's or declares more than MAX_NODES nodes. Returns the variables not to read."""
@@ -423,13 +441,7 @@ def map_props(path) -> tuple[str, ...] | None:
 
     if not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"path must be a str or os.PathLike (a map file), got {type(path).__name__}")
-    where = _where(path)
-    try:
-        st = os.stat(path)
-    except (OSError, ValueError) as exc:
-        raise ValueError(f"{where}: {getattr(exc, 'strerror', None) or exc}") from None
-    if not stat.S_ISREG(st.st_mode):
-        raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
+    where, st = _stat_regular(path)
     _probe(path, where, st.st_size)
     try:
         _layout(path, where)
@@ -480,13 +492,7 @@ def read_dataset(path, prop: str | None = None):
         raise TypeError(f"path must be a str or os.PathLike (a map file), got {type(path).__name__}")
     if prop is not None and not isinstance(prop, str):
         raise TypeError(f"prop must be a propeller name (str) or None, got {type(prop).__name__}")
-    where = _where(path)
-    try:
-        st = os.stat(path)
-    except (OSError, ValueError) as exc:
-        raise ValueError(f"{where}: {getattr(exc, 'strerror', None) or exc}") from None
-    if not stat.S_ISREG(st.st_mode):
-        raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
+    where, st = _stat_regular(path)
     if st.st_size > MAX_FILE_BYTES:
         raise ValueError(f"{where}: {st.st_size:,} bytes; a map file is at most {MAX_FILE_BYTES:,}")
     _probe(path, where, st.st_size)
