@@ -136,7 +136,7 @@ def _table():
         return pd.read_csv(fh, comment="#")
 
 
-@pytest.mark.parametrize("name", ["naca0015", "naca0018"])
+@pytest.mark.parametrize("name", ["naca0012", "naca0015", "naca0018"])
 def test_section_presets_reproduce_their_published_polar(name):
     t = _table()
     t = t[t.section == name.upper().replace("NACA", "NACA ")]
@@ -162,7 +162,7 @@ def test_section_preset_in_files_and_names():
     p = params_from_dict({"section": "naca0015", "cl_alpha": 5.5})
     assert p.cl_alpha == 5.5 and p.cd_min == section_preset("naca0015").cd_min
     assert resolve_params("section:naca0018") == section_preset("naca0018")
-    with pytest.raises(ValueError, match="section must be one of naca0015, naca0018, got 'naca9999'"):
+    with pytest.raises(ValueError, match="section must be one of naca0012, naca0015, naca0018, got 'naca9999'"):
         params_from_dict({"section": "naca9999"})
     with pytest.raises(ValueError, match="section_model must be 'cambered'"):
         params_from_dict({"section": "naca0015", "section_model": "gill2017"})
@@ -261,13 +261,15 @@ def test_cli_map_with_a_collective(tmp_path, capsys):
     assert "--collective-deg: collective must be" in capsys.readouterr().err
 
 
-def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rotor, naca0015):
+@pytest.mark.parametrize("section", ["naca0012", "naca0015"])
+def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rotor, section):
     """Constant-thrust vertical descent of the model rotor, trimmed by the collective.
 
     With the empirical descent momentum the collective falls smoothly through the vortex
     ring and ideal autorotation (Q = 0) comes at lambda2 = V / v_h between 1.7 and 2.3
     (wind-tunnel model rotors: 1.79-2.23, the issue's measurements); with Glauert's the
     trimmed collective jumps by more than 5 deg where the annuli switch branch."""
+    naca0015 = section_preset(section)  # the preset under test
     om = 100.0
     T0 = float(pm.rotor_loads(rotor, naca0015, om, 0.0, 0.0, collective=math.radians(8.0)).thrust)
     vh = math.sqrt(T0 / (2 * 1.225 * math.pi * rotor.radius**2))
@@ -283,8 +285,9 @@ def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rot
 
 
 @pytest.mark.parametrize("twist_deg", [0.0, -16.0])
-def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(naca0015, twist_deg):
-    """Axial descent of a NACA 0015 model rotor at 8 deg collective from hover to 3 v_h in steps of
+@pytest.mark.parametrize("section", ["naca0012", "naca0015"])
+def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(section, twist_deg):
+    """Axial descent of a model rotor (NACA 0012, 0015) at 8 deg collective from hover to 3 v_h in steps of
     0.005 v_h: no annulus with several inflow roots and no thrust step above 0.6% of the hover
     thrust. Before, a sharper preset stall (M = 38) and a tip-loss angle taken from U_P (which
     passes through 0 near an annulus' ideal autorotation) gave 400-800 multiple-root points and
@@ -293,6 +296,7 @@ def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(naca0015
     x = np.linspace(0.15, 1.0, 12)
     rot = pm.Propeller(name="twisted", radius=R, n_blades=3, r=x * R, chord=np.full(x.size, 0.05),
                        theta=np.radians(twist_deg * (x - 0.75)))
+    naca0015 = section_preset(section)  # the preset under test
     om, coll = 1200 * RPM, math.radians(8.0)
     T0 = float(pm.rotor_loads(rot, naca0015, om, 0.0, 0.0, collective=coll).thrust)
     vh = math.sqrt(T0 / (2 * 1.225 * math.pi * R**2))

@@ -3,10 +3,13 @@
 Fits the cambered polar (propmap.CamberedParams: lift slope, stall limit, blend sharpness,
 profile drag, drag curvature and their Reynolds exponents; zero-lift angle 0 and
 cl_min = -cl_max for a symmetric section) to Sheldahl & Klimas (Sandia SAND80-2114, 1981),
-tables of NACA 0015 and NACA 0018 at chord Reynolds numbers 1.6e5-1e6, angles of attack
-0-20 deg (src/propmap/data/sections/sheldahl_klimas_1981.csv), by least squares on C_L
-(0-20 deg) and C_D (attached flow, below the tabulated drag break), and writes
-src/propmap/data/sections/presets.toml with the fit's rms errors.
+tables of NACA 0015 and NACA 0018 at chord Reynolds numbers 1.6e5-1e6 and of NACA 0012 at
+3.6e5, angles of attack 0-20 deg (src/propmap/data/sections/sheldahl_klimas_1981.csv), by
+least squares on C_L (0-20 deg) and C_D (attached flow, below the tabulated drag break),
+and writes src/propmap/data/sections/presets.toml with the fit's rms errors. A section
+tabulated at one Reynolds number only (NACA 0012) cannot give Reynolds exponents: it takes
+those of the nearest thickness fitted from several (NACA 0015, the same report), and its
+preset says so.
 
     .venv/bin/python tools/fit_section_presets.py
 
@@ -32,7 +35,7 @@ DATA = ROOT / "src/propmap/data/sections/sheldahl_klimas_1981.csv"
 OUT = ROOT / "src/propmap/data/sections/presets.toml"
 RE_REF = 3.6e5
 CD90 = 1.80  # the report's drag at 90 deg (every Reynolds number)
-SOURCE = ("Sheldahl & Klimas, Sandia SAND80-2114 (1981), NACA {name} tables at Re 1.6e5-1e6, 0-20 deg; "
+SOURCE = ("Sheldahl & Klimas, Sandia SAND80-2114 (1981), NACA {name} {tables} at {span}, 0-20 deg; "
           "fitted by tools/fit_section_presets.py")
 #: weight of the attached-flow drag errors against the lift errors in the stall fit
 DRAG_WEIGHT = 10.0
@@ -43,6 +46,9 @@ DRAG_WEIGHT = 10.0
 #: points of 1803 and 2.9% steps, M = 25 292 and 1.4%, M = 20 none and 0.44%, the step of the
 #: sweep itself); 20 is also the cambered model's default (docs/models.md)
 M_MAX = 20.0
+#: a stall is abrupt (leading-edge) when C_L falls below half its maximum within this many
+#: degrees past it; the lift is then fitted up to the break only (fit)
+ABRUPT_DEG = 3.0
 NAMES = ("cl_alpha", "cl_max", "M", "cd_min", "cd2", "re_exp", "re_exp_lift", "re_exp_stall")
 
 
@@ -52,16 +58,19 @@ def params_from(x) -> pm.CamberedParams:
                              tip_loss=True, compressibility=True, **d)
 
 
-def fit(table: pd.DataFrame):
+def fit(table: pd.DataFrame, exponents: dict | None = None):
     """Staged fit: the attached-flow constants by linear regression, then the stall.
+
+    ``exponents`` (``re_exp``, ``re_exp_stall``): given for a table at one Reynolds number,
+    whose own data cannot determine them; they are then held.
 
     1. ``cl_alpha``: slope of C_L over 0-4 deg at the reference Reynolds number (the
        tables give the same slope at every Re, so ``re_exp_lift`` = 0);
        ``cd_min`` and ``re_exp``: C_D at 0 deg against Re (log-log line through the
        reference); ``cd2``: (C_D - C_D(0)) against C_L^2 over 0-8 deg, all Reynolds numbers.
-    2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg and on
-       C_D in attached flow (below the tabulated drag break), the rest held; M at most
-       :data:`M_MAX` (no root folds).
+    2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg (up to the
+       break of an abrupt stall, :data:`ABRUPT_DEG`) and on C_D in attached flow (below the
+       tabulated drag break), the rest held; M at most :data:`M_MAX` (no root folds).
     """
     a = np.radians(table.alpha_deg.to_numpy())
     re = table.reynolds.to_numpy(float)
@@ -70,7 +79,11 @@ def fit(table: pd.DataFrame):
     lin = ref & (a <= np.radians(4.0)) & (a > 0)
     cl_alpha = float(np.sum(a[lin] * cl[lin]) / np.sum(a[lin] ** 2))
     zero = a == 0
-    re_exp, ln_cd = np.polyfit(np.log(re[zero] / RE_REF), np.log(cd[zero]), 1)
+    if exponents is None:
+        re_exp, ln_cd = np.polyfit(np.log(re[zero] / RE_REF), np.log(cd[zero]), 1)
+    else:
+        re_exp = exponents["re_exp"]
+        ln_cd = float(np.mean(np.log(cd[zero]) - re_exp * np.log(re[zero] / RE_REF)))
     cd_min = float(np.exp(ln_cd))
     low = (a > 0) & (a <= np.radians(8.0))
     cd0_at = cd_min * (re / RE_REF) ** re_exp
@@ -82,19 +95,34 @@ def fit(table: pd.DataFrame):
         jump = np.flatnonzero(cd[k][1:] > 2 * cd[k][:-1])
         if jump.size:
             attached[k[jump[0] + 1:]] = False
+    # lift: over 0-20 deg, but a leading-edge stall (the tabulated C_L falls below half its
+    # maximum within ABRUPT_DEG past it, NACA 0012 at Re 3.6e5: 0.98 at 10 deg, 0.48 at 12 deg)
+    # only up to that break: no blend with M <= M_MAX follows it, and fitted through it the
+    # blend's lift is 12-24% low at 6-10 deg, where a rotor's sections work
+    lifted = np.ones(a.size, bool)
+    for r in np.unique(re):
+        k = np.flatnonzero(re == r)
+        top = int(np.argmax(cl[k]))
+        drop = np.flatnonzero((a[k] > a[k][top]) & (a[k] <= a[k][top] + np.radians(ABRUPT_DEG))
+                              & (cl[k] < 0.5 * cl[k][top]))
+        if drop.size:
+            lifted[k[drop[0] + 1:]] = False
     fixed = dict(cl_alpha=cl_alpha, cd_min=cd_min, cd2=cd2, re_exp=float(re_exp), re_exp_lift=0.0)
+
+    stall_exp = None if exponents is None else exponents["re_exp_stall"]
 
     def make(y):
         return params_from([fixed["cl_alpha"], y[0], y[1], fixed["cd_min"], fixed["cd2"], fixed["re_exp"],
-                            0.0, y[2]])
+                            0.0, y[2] if stall_exp is None else stall_exp])
 
     def residual(y):
         p = make(y)
-        return np.concatenate([lift_coefficient(a, p, re) - cl,
+        return np.concatenate([lift_coefficient(a[lifted], p, re[lifted]) - cl[lifted],
                                DRAG_WEIGHT * (drag_coefficient(a[attached], re[attached], p) - cd[attached])])
 
-    res = least_squares(residual, [1.1, 0.5 * M_MAX, 0.15], bounds=([0.5, 5.0, -0.5], [2.5, M_MAX, 0.5]),
-                        x_scale=[0.1, 10.0, 0.1])
+    y0, lo, hi, scale = [1.1, 0.5 * M_MAX, 0.15], [0.5, 5.0, -0.5], [2.5, M_MAX, 0.5], [0.1, 10.0, 0.1]
+    n_free = 3 if stall_exp is None else 2
+    res = least_squares(residual, y0[:n_free], bounds=(lo[:n_free], hi[:n_free]), x_scale=scale[:n_free])
     p = make(res.x)
     e_cl = lift_coefficient(a, p, re) - cl
     e_cd = drag_coefficient(a[attached], re[attached], p) - cd[attached]
@@ -111,21 +139,36 @@ def main() -> None:
     import tomli_w
 
     data = pd.read_csv(DATA, comment="#")
-    out = {}
-    for section, table in data.groupby("section"):
+    out, fitted = {}, {}
+    # sections with several Reynolds numbers first: a single-Re table borrows their exponents
+    groups = sorted(data.groupby("section"), key=lambda g: g[1].reynolds.nunique() == 1)
+    for section, table in groups:
         key = section.lower().replace(" ", "")
-        p, err = fit(table)
+        single = table.reynolds.nunique() == 1
+        donor = None
+        if single:
+            donor = min(fitted, key=lambda k: abs(int(k[-2:]) - int(key[-2:])))  # nearest thickness
+            exponents = {"re_exp": fitted[donor].re_exp, "re_exp_stall": fitted[donor].re_exp_stall}
+        p, err = fit(table, exponents if single else None)
+        fitted[key] = p
         d = {k: float(getattr(p, k)) for k in NAMES}
         d.update(alpha_L0_deg=0.0, cl_min=-d["cl_max"], cl_cdmin=0.0, cd90=CD90, re_ref=RE_REF)
+        res = sorted(table.reynolds.unique())
+        span = f"Re {res[0]:.2g}" if single else f"Re {res[0]:.2g}-{res[-1]:.2g}"
+        source = SOURCE.format(name=section.split()[-1], span=span.replace("e+0", "e"),
+                               tables="table" if single else "tables")
+        if single:
+            source += (f"; its Reynolds exponents (re_exp, re_exp_stall) are the {donor.upper().replace('NACA', 'NACA ')} "
+                       "fit's: one Reynolds number cannot determine them")
         out[key] = {"section_model": "cambered", **{k: round(v, 6) for k, v in d.items()},
                     "compressibility": True, "tip_loss": True, "descent": "empirical",
-                    "source": SOURCE.format(name=section.split()[-1]),
+                    "source": source,
                     "comment": "fit errors against the tables: " + ", ".join(f"{k} {v:.4g}" for k, v in err.items())}
         print(key, {k: round(v, 4) for k, v in d.items()}, err)
     with atomic_write(OUT, "wb") as fh:
         fh.write(("# Symmetric-section presets (propmap --params section:NAME, or section = \"NAME\" in a\n"
                   "# parameter file); written by tools/fit_section_presets.py, do not edit by hand.\n").encode())
-        tomli_w.dump(out, fh)
+        tomli_w.dump(dict(sorted(out.items())), fh)
 
 
 if __name__ == "__main__":

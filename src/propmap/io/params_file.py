@@ -513,14 +513,15 @@ def section_preset(name: str) -> CamberedParams:
 
     Fitted by tools/fit_section_presets.py to the tables of Sheldahl & Klimas, "Aerodynamic
     Characteristics of Seven Symmetrical Airfoil Sections Through 180-Degree Angle of
-    Attack", Sandia SAND80-2114 (1981), at chord Reynolds numbers 1.6e5-1e6 (reference
-    3.6e5); zero-lift angle 0, tip loss on, empirical descent inflow. The fit's errors are
-    in the preset's ``comment`` (docs/models.md).
+    Attack", Sandia SAND80-2114 (1981), at chord Reynolds numbers 1.6e5-1e6 (NACA 0015,
+    0018) or 3.6e5 (NACA 0012, whose Reynolds exponents are the NACA 0015 fit's), reference
+    3.6e5; zero-lift angle 0, tip loss on, empirical descent inflow. The fit's errors are in
+    the preset's ``comment`` (docs/models.md).
 
     Parameters
     ----------
     name : str
-        ``naca0015`` or ``naca0018`` (:func:`section_presets` lists them).
+        ``naca0012``, ``naca0015`` or ``naca0018`` (:func:`section_presets` lists them).
 
     Returns
     -------
