@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.core.states import STATES, VRS_BAND, descent_state
+from propmap.core.states import STATES, VRS_BAND, descent_state, vrs_boundary
 
 RHO, R = 1.225, 0.1
 
@@ -25,16 +25,33 @@ def _at(k, m, v_mean=None):
 
 
 @pytest.mark.parametrize("k, m, state", [
-    (0.0, 0.0, "normal working"), (0.25, 0.0, "normal working"), (0.35, 0.0, "vortex ring"),
-    (1.45, 0.0, "vortex ring"), (0.9, 0.85, "vortex ring"), (0.9, 0.95, "normal working"),
+    (0.0, 0.0, "normal working"), (0.44, 0.0, "normal working"), (0.46, 0.0, "vortex ring"),
+    (1.49, 0.0, "vortex ring"), (1.51, 0.0, "turbulent wake"), (0.9, 0.94, "vortex ring"),
+    (0.9, 0.96, "normal working"), (0.49, 0.6, "normal working"), (0.52, 0.6, "vortex ring"),
+    (1.21, 0.6, "vortex ring"), (1.23, 0.6, "turbulent wake"),
     (2.5, 0.0, "windmill brake"), (-1.0, 0.0, "normal working"), (0.1, 3.0, "normal working"),
 ])
 def test_band_limits(k, m, state):
-    """Descent rates 0.3-1.5 v_h in axial descent, closing at in-plane 0.9 v_h."""
+    """Johnson's boundary (NASA/TP-2005-213477, pp. 23-24): descent rates 0.45-1.5 v_h in axial
+    descent, 0.501-1.220 v_h at an in-plane 0.6 v_h, closing at 0.95 v_h."""
     code, vh, kk, mm = _at(k, m)
     assert STATES[int(code)] == state
     assert float(vh) == pytest.approx(5.0) and float(kk) == pytest.approx(k) and float(mm) == pytest.approx(m)
-    assert VRS_BAND == {"k_min": 0.3, "k_max": 1.5, "m_max": 0.9}
+
+
+def test_boundary_against_its_source():
+    """The edges at Johnson's constants: onset 0.45 and exit 1.5 in axial descent (V_zN, V_zX),
+    both 0.975 where the band closes at m = 0.95 (V_xM), the edges of the formula at m = 0.6 and
+    0.9, and no band beyond."""
+    assert VRS_BAND == {"k_onset": 0.45, "k_exit": 1.5, "m_max": 0.95, "onset_exponent": 0.2, "exit_exponent": 1.5}
+    on, ex = vrs_boundary(np.array([0.0, 0.6, 0.9, 0.95 - 1e-12, 0.95, 2.0, np.nan]))
+    np.testing.assert_allclose(on[:3], [0.45, 0.5008, 0.6421], atol=1e-4)
+    np.testing.assert_allclose(ex[:3], [1.5, 1.2197, 0.9922], atol=1e-4)
+    assert on[3] == pytest.approx(0.975, abs=3e-3) and ex[3] == pytest.approx(0.975, abs=1e-9)  # the closing point
+    assert np.all(np.isnan(on[4:])) and np.all(np.isnan(ex[4:]))
+    m = np.linspace(0.0, 0.94, 95)
+    on, ex = vrs_boundary(m)
+    assert np.all(np.diff(on) >= 0) and np.all(np.diff(ex) <= 0) and np.all(on < ex)  # narrows with m
 
 
 def test_turbulent_wake_lies_between_the_band_and_the_windmill_brake_at_low_in_plane_speed():
@@ -109,8 +126,8 @@ def test_the_empirical_descent_flags_its_blend_with_forward_speed_only():
     flagged = r.inflow_extrapolated
     assert not flagged[:, 0].any()  # axial descent
     assert not flagged[:, 3].any()  # 95 deg: forward flight, slight descent
-    assert flagged[1:, 1:3].any()  # oblique descent at 0.3 <= lambda2 < 2
-    assert np.all(~flagged | ((r.descent_ratio >= 0.3) & (r.descent_ratio < 2)))
+    assert flagged[1:, 1:3].any()  # oblique descent at 0.45 <= lambda2 < 2
+    assert np.all(~flagged | ((r.descent_ratio >= 0.45) & (r.descent_ratio < 2)))
     g = pm.rotor_loads(prop, p.replace(descent="glauert"), 700.0, V, b)
     assert not g.inflow_extrapolated.any()
 

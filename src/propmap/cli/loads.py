@@ -22,8 +22,9 @@ COLLECTIVE_DEG_MAX = 45.0
 #: what the flags mean (printed with a single point, and in docs/cli.md)
 FLAG_MEANINGS = {
     "not_converged": "the inflow solve failed at this point: its loads are NaN",
-    "vortex_ring": "inside the vortex-ring band of descent rate and in-plane speed (thrust unsteady there; "
-                   "the loads are the empirical mean)",
+    "vortex_ring": "inside the vortex-ring band of descent rate and in-plane speed (Johnson, NASA/TP-2005-213477: "
+                   "descent 0.45-1.5 v_h, closing at 0.95 v_h in-plane; thrust unsteady there, the loads are "
+                   "the empirical mean)",
     "multiple_roots": "an annulus had several inflow roots; the selection rule of docs/solver.md picked one",
     "reverse_flow": "part of the blade root sees the air from behind (V sin(beta) > Omega r_hub)",
     "inflow_extrapolated": "the inflow model was used beyond the measurements behind it (a linear inflow model "

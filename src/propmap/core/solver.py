@@ -222,8 +222,9 @@ class RotorLoads:
     converged : ndarray of bool
         Every annulus root converged.
     vortex_ring : ndarray of bool
-        The rotor is in the vortex-ring state (``state == 1``, core/states.py: descent rates
-        0.3-1.5 v_h at in-plane speeds below 0.9 v_h): the wake recirculates through the
+        The rotor is in the vortex-ring state (``state == 1``, core/states.py: Johnson's
+        boundary, descent rates 0.45-1.5 v_h in axial descent narrowing to 0.975 v_h at an
+        in-plane speed of 0.95 v_h): the wake recirculates through the
         disk and the loads fluctuate; the mean loads come from the empirical descent
         momentum (``descent = "empirical"``) or, with Glauert's, are not predictive.
     state : ndarray of int
@@ -244,7 +245,7 @@ class RotorLoads:
         The inflow model was used outside the measurements behind it: a linear inflow model
         with the wake above the disk (inflow ratio < 0, the model's mirrored extrapolation;
         _physics.inflow_gradients), or the empirical descent momentum (``descent =
-        "empirical"``) in the vortex-ring or turbulent-wake range (0.3 <= lambda2 < 2) with an
+        "empirical"``) in the vortex-ring or turbulent-wake range (0.45 <= lambda2 < 2) with an
         in-plane speed that puts its fade with V sin(beta) (propmap's, not measured) between
         5% and 95%.
     n_evaluations : ndarray of int
@@ -579,7 +580,7 @@ def rotor_loads(
     if params.descent == "empirical":  # the axial measurements' curve, blended in forward flight by propmap's fade
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             fade = np.exp(-(Vs / np.maximum(np.abs(vbar), 1e-12)) ** 2)
-            extrapolated = extrapolated | ((k_desc >= VRS_BAND["k_min"]) & (k_desc < K_WINDMILL) & (fade > 0.05)
+            extrapolated = extrapolated | ((k_desc >= VRS_BAND["k_onset"]) & (k_desc < K_WINDMILL) & (fade > 0.05)
                                            & (fade < 0.95))
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):

@@ -10,37 +10,71 @@ Principles of Helicopter Aerodynamics, 2nd ed., 2006, Ch. 2):
 
 * **windmill brake**: k >= 2, where momentum theory holds again (the flow through the disk is
   upward and smooth) and the empirical curve of the descent model meets Glauert's branch;
-  also a descent fast enough in-plane (m >= 0.9, the band's closing speed below) with the mean
+  also a descent fast enough in-plane (m >= 0.95, the band's closing speed below) with the mean
   flow through the disk upward (V cos beta + v_mean < 0): the wake is swept away, momentum
   theory holds and the rotor takes energy from the flow (an autogyro's state);
 * **turbulent wake**: between the vortex-ring band and the windmill brake at low in-plane
-  speed (m < 0.9, k < 2, outside the band on its high-descent side: k above the band's centre),
+  speed (m < 0.95, k < 2, outside the band on its high-descent side: k above its exit edge),
   which includes ideal autorotation (v_mean = -V cos beta, k about 1.8 in axial descent);
-* **vortex ring**: inside the band in which the measured rotors' thrust fluctuates and the
-  wake recirculates: an ellipse in (m, k) through descent rates 0.3 v_h and 1.5 v_h in axial
-  descent, closing at an in-plane speed of 0.9 v_h (the classical band that summaries of the
-  measured boundaries give, e.g. W. Johnson, "Model for Vortex Ring State Influence on
-  Rotorcraft Flight Dynamics", NASA/TP-2005-213477, 2005; the ellipse's shape between those
-  limits is propmap's). A forward flight with a slight descent (m >= 0.9, or k < 0.3) is not
-  in it;
+* **vortex ring**: inside the band in which the rotor's thrust fluctuates and the wake
+  recirculates: the boundary of W. Johnson's vortex-ring-state model ("Model for Vortex Ring
+  State Influence on Rotorcraft Flight Dynamics", NASA/TP-2005-213477, 2005, pp. 23-24; a
+  boundary the report defines by the stability of the aircraft's vertical motion), which
+  narrows with in-plane speed: with c = (k_N + k_X) / 2, h = (k_X - k_N) / 2,
+
+      k_onset(m) = c - h (1 - (m / m_M)^2)^0.2,   k_exit(m) = c + h (1 - (m / m_M)^2)^1.5,
+
+  k_N = 0.45 and k_X = 1.5 the onset and exit descent ratios in axial descent and m_M = 0.95
+  the in-plane ratio at which the band closes (at k = 0.975). (Johnson's constants V_zN =
+  -0.45, V_zX = -1.5, V_xM = 0.95 in units of v_h, as transcribed in the LADAC flight-dynamics
+  library of TU Braunschweig, aerodynamics/rotorcraft/induced_velocity, not re-read from the
+  report's pages.) A forward flight with a slight descent (m >= 0.95, or k < 0.45) is not in
+  it;
 * **normal working**: everything else (climb, hover, forward flight, slow descent).
 
-The constants are in :data:`VRS_BAND`; tests/test_states.py checks the region against them.
+The constants are in :data:`VRS_BAND`, the boundary in :func:`vrs_boundary`;
+tests/test_states.py checks the region against them.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["STATES", "VRS_BAND", "descent_state"]
+__all__ = ["STATES", "VRS_BAND", "K_WINDMILL", "descent_state", "vrs_boundary"]
 
 #: state names, in the order of the integer codes of ``descent_state``
 STATES = ("normal working", "vortex ring", "turbulent wake", "windmill brake")
-#: the vortex-ring band: descent ratio k from 0.3 to 1.5 in axial descent, in-plane ratio m
-#: below 0.9 (summaries of the measured boundaries, module docstring)
-VRS_BAND = {"k_min": 0.3, "k_max": 1.5, "m_max": 0.9}
-#: from this descent ratio on, the windmill-brake state (momentum theory valid again)
+#: the vortex-ring boundary (Johnson 2005, module docstring): onset and exit descent ratios in
+#: axial descent, the in-plane ratio at which the band closes, and the exponents of the onset
+#: and exit edges
+VRS_BAND = {"k_onset": 0.45, "k_exit": 1.5, "m_max": 0.95, "onset_exponent": 0.2, "exit_exponent": 1.5}
+#: from this descent ratio on, the windmill-brake state (momentum theory valid again; Johnson's
+#: end of the vortex-ring model in axial descent, V_zE = -2 v_h)
 K_WINDMILL = 2.0
+
+
+def vrs_boundary(m):
+    """The vortex-ring band's edges at in-plane ratio ``m`` (Johnson 2005, module docstring).
+
+    Parameters
+    ----------
+    m : array_like
+        In-plane ratio V sin(beta) / v_h [-], >= 0 (any shape).
+
+    Returns
+    -------
+    (k_onset, k_exit) : ndarray
+        Descent ratios -V cos(beta) / v_h at which the band starts and ends, shape of ``m``;
+        NaN where ``m >= VRS_BAND["m_max"]`` (no vortex ring at that in-plane speed) or ``m``
+        is NaN.
+    """
+    b = VRS_BAND
+    m = np.asarray(m, float)
+    c = 0.5 * (b["k_onset"] + b["k_exit"])
+    h = 0.5 * (b["k_exit"] - b["k_onset"])
+    with np.errstate(invalid="ignore"):
+        u = np.where(np.abs(m) < b["m_max"], 1.0 - (m / b["m_max"]) ** 2, np.nan)
+        return c - h * u ** b["onset_exponent"], c + h * u ** b["exit_exponent"]
 
 
 def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float):
@@ -75,16 +109,14 @@ def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float
         vh = np.sqrt(np.maximum(T, 0.0) / (2.0 * rho * np.pi * radius**2))
         k = np.where(vh > 0, -vz / vh, np.nan) + 0.0  # + 0.0: no -0 in hover
         m = np.where(vh > 0, vx / vh, np.nan)
-        band = VRS_BAND
-        centre = 0.5 * (band["k_min"] + band["k_max"])
-        half = 0.5 * (band["k_max"] - band["k_min"])
-        in_ellipse = ((k - centre) / half) ** 2 + (m / band["m_max"]) ** 2 <= 1.0
+        onset, exit_ = vrs_boundary(m)
+        in_band = (k >= onset) & (k <= exit_)  # NaN edges (fast in-plane, no thrust) compare False
     state = np.zeros(np.shape(T), dtype=np.int64)
     descending = (vz < 0) & (vh > 0)
-    slow = m < band["m_max"]  # NaN (no thrust) compares False
+    slow = m < VRS_BAND["m_max"]  # NaN (no thrust) compares False
     upflow = vz + np.asarray(v_mean, float) < 0
-    state = np.where(descending & slow & in_ellipse, 1, state)
-    state = np.where(descending & slow & ~in_ellipse & (k > centre), 2, state)
+    state = np.where(descending & slow & in_band, 1, state)
+    state = np.where(descending & slow & (k > exit_), 2, state)
     state = np.where(descending & ~slow & upflow, 3, state)
     state = np.where((vz < 0) & ((vh == 0) | (k >= K_WINDMILL)), 3, state)
     return state, vh, k, m
