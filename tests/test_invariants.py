@@ -234,3 +234,24 @@ def test_huge_axis_keeps_the_thrust_direction_and_spins_by_name(apc8x6, apc_para
     np.testing.assert_allclose(w.force, [0.0, T / math.sqrt(2), T / math.sqrt(2)], rtol=1e-12)
     two = pm.rotor_wrench(apc8x6, apc_params, [[5.0, 0, 0]] * 2, [0, 0, 1], 800.0, spin=["ccw", "cw"])
     np.testing.assert_allclose(two.torque[0], -two.torque[1], rtol=1e-12)
+
+
+def test_a_single_point_equals_the_same_point_in_a_batch(apc8x6, apc_params):
+    """The scalar fast path of rotor_loads (one operating point: its own input handling and
+    result construction) gives the batch's numbers bit for bit, every field of RotorLoads set,
+    shape ()."""
+    from dataclasses import fields
+
+    from propmap.core.solver import RotorLoads
+
+    om, V, b = 8000 * RPM, np.array([0.0, 10.0, 10.0, 6.0]), np.radians([0.0, 0.0, 60.0, 175.0])
+    batch = pm.rotor_loads(apc8x6, apc_params, om, V, b)
+    for i in range(V.size):
+        one = pm.rotor_loads(apc8x6, apc_params, om, float(V[i]), float(b[i]))
+        assert set(vars(one)) == {f.name for f in fields(RotorLoads)}
+        for f in fields(RotorLoads):
+            a = getattr(one, f.name)
+            if isinstance(a, np.ndarray) and f.name != "r":
+                assert a.shape == ()
+                np.testing.assert_array_equal(a, getattr(batch, f.name)[i], err_msg=f.name)
+    assert pm.rotor_loads(apc8x6, apc_params, om, 6.0, math.radians(175.0)).state_name == "vortex ring"

@@ -558,3 +558,56 @@ def solve_batch_serial(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac
     solves small batches then never starts the thread pool."""
     _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
                  inflow, emp, radius, radial, out, rad, counts)
+
+
+@numba.njit(cache=CACHE, error_model="numpy")
+def working_states(T, vx, vz, vbar, rho, radius, band, k_windmill, linear, empirical, state, vh, k, m, extrap):
+    """Per point: the rotor's working state and the inflow model's validity flag (no fastmath:
+    NaN thrust and the sign of zero are kept as NumPy keeps them).
+
+    The rules of core/states.py (:func:`propmap.core.states.descent_state`, its docstring),
+    from the thrust ``T``, the in-plane and axial speeds ``vx`` = V sin(beta) and ``vz`` =
+    V cos(beta) and the mean inflow ``vbar``: ``band`` holds (k_onset, k_exit, m_max,
+    onset_exponent, exit_exponent) of Johnson's vortex-ring boundary; ``state`` gets 0 normal
+    working, 1 vortex ring, 2 turbulent wake, 3 windmill brake; ``vh`` the hover induced
+    velocity at the thrust (NaN where the thrust is NaN), ``k`` and ``m`` the descent and
+    in-plane ratios (NaN without thrust). ``extrap`` (the solver's ``inflow_extrapolated``): a
+    linear inflow model (``linear``) with net upflow through the disk, vz + v_mean < 0, in
+    forward flight; and the empirical descent momentum (``empirical``) where its fade with the
+    in-plane speed, exp(-(vx / v_mean)^2), is between 5% and 95% at k_onset <= k < ``k_windmill``.
+    """
+    k_on, k_ex, m_max, e_on, e_ex = band[0], band[1], band[2], band[3], band[4]
+    c = 0.5 * (k_on + k_ex)
+    h = 0.5 * (k_ex - k_on)
+    area2 = 2.0 * rho * np.pi * (radius * radius)
+    for i in range(T.size):
+        t = T[i]
+        v = np.nan if t != t else np.sqrt(max(t, 0.0) / area2)
+        if v > 0.0:
+            ki = -vz[i] / v + 0.0  # + 0.0: no -0 in hover
+            mi = vx[i] / v
+        else:
+            ki = np.nan
+            mi = np.nan
+        s = 0
+        if vz[i] < 0.0:
+            if v == 0.0 or ki >= k_windmill:
+                s = 3
+            elif v > 0.0:
+                if mi < m_max:
+                    u = 1.0 - (mi / m_max) ** 2
+                    if ki > c + h * u**e_ex:
+                        s = 2
+                    elif ki >= c - h * u**e_on:
+                        s = 1
+                elif vz[i] + vbar[i] < 0.0:
+                    s = 3
+        state[i] = s
+        vh[i] = v
+        k[i] = ki
+        m[i] = mi
+        x = linear and vz[i] + vbar[i] < 0.0 and vx[i] != 0.0
+        if empirical and not x and ki >= k_on and ki < k_windmill:
+            fade = np.exp(-(vx[i] / max(abs(vbar[i]), 1e-12)) ** 2)
+            x = 0.05 < fade < 0.95
+        extrap[i] = x

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -18,7 +18,7 @@ from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
-from .states import K_WINDMILL, STATES, VRS_BAND, descent_state
+from .states import STATES, _classify
 
 __all__ = [
     "Discretization",
@@ -148,6 +148,32 @@ def _lift_slope(params: SectionParams) -> float:
     if isinstance(params, CamberedParams):
         return params.cl_alpha
     return params.cl2 if params.lift_model == "sincos" else params.cl1
+
+
+#: the kernel's model arguments of recent (propeller, params, air, discretization), by identity:
+#: the records are immutable, so a call with the same objects (a controller's or a fitting loop's
+#: single points) skips hashing them for _nodes and rebuilding the constant vectors
+_PREPARED: dict = {}
+_PREPARED_MAX = 64
+
+
+def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretization: Discretization):
+    """(nodes, model code, pk, cam, inflow code, empirical descent) of a model, cached by identity
+    (the cache holds the objects, so an id is not reused while its entry lives)."""
+    key = (id(propeller), id(params), id(air), id(discretization))
+    hit = _PREPARED.get(key)
+    if hit is not None and hit[0] is propeller and hit[1] is params and hit[2] is air and hit[3] is discretization:
+        return hit[4]
+    nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
+    model, pk = _model_constants(params)
+    cam = _cambered_args(params, air)
+    for a in (pk, cam):
+        a.setflags(write=False)
+    prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]))
+    if len(_PREPARED) >= _PREPARED_MAX:
+        _PREPARED.clear()
+    _PREPARED[key] = (propeller, params, air, discretization, prep)
+    return prep
 
 
 def _cambered_args(params: SectionParams, air: Air) -> np.ndarray:
@@ -353,6 +379,18 @@ class RotorLoads:
         return names
 
 
+_LOADS_FIELDS = frozenset(f.name for f in fields(RotorLoads))
+
+
+def _new_loads(**kw) -> RotorLoads:
+    """A RotorLoads from all its fields, without the frozen dataclass's per-field
+    ``object.__setattr__`` (a few microseconds of a single point's call); the fields must be
+    exactly :class:`RotorLoads`'s (checked by tests/test_invariants.py)."""
+    obj = object.__new__(RotorLoads)
+    obj.__dict__.update(kw)
+    return obj
+
+
 #: the rotation rate's range [rad/s]: below OMEGA_MIN the propeller-convention coefficients,
 #: referred to n^2, overflow (a parked propeller is not modelled)
 OMEGA_MIN = 0.1
@@ -516,10 +554,9 @@ def rotor_loads(
     if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
             and type(incidence) in _REAL_SCALARS and (collective is None or type(collective) in _REAL_SCALARS)):
         shape = ()
-        om1 = np.array([_scalar("omega", omega)])
-        V1 = np.array([_scalar("airspeed", airspeed)])
-        b1 = np.array([_scalar("incidence", incidence)])
-        c1 = np.array([0.0 if collective is None else _scalar("collective", collective)])
+        inputs = np.array([[_scalar("omega", omega)], [_scalar("airspeed", airspeed)], [_scalar("incidence", incidence)],
+                           [0.0 if collective is None else _scalar("collective", collective)]])
+        om1, V1, b1, c1 = inputs  # rows: contiguous views of one point each
     else:
         arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
         if collective is not None:
@@ -541,25 +578,26 @@ def rotor_loads(
               else np.zeros(om1.size))
     Vs = np.ascontiguousarray(V1 * np.sin(b1))
     Vc = np.ascontiguousarray(V1 * np.cos(b1))
-    Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
+    if shape == ():  # exact axial flow at beta = 0, pi
+        if abs(Vs[0]) < 1e-12 * max(V1[0], 1e-300):
+            Vs[0] = 0.0
+    else:
+        Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0
 
-    nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
+    nd, model, pk, cam, inflow, empirical = _prepared(propeller, params, air, discretization)
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow
     rows = n if radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
     rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
     counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
     (T, D, Q, R, Y, P, vbar), (status, nmulti, nvrs, nev) = out, counts
-    model, pk = _model_constants(params)
-    inflow = ph.INFLOW_CODES[params.inflow]
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, _cambered_args(params, air), inflow,
-          bool(ph.DESCENT_CODES[params.descent]), propeller.radius, bool(radial), out, rad, counts)
+          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, bool(radial), out, rad, counts)
     converged = status == 0
-    if on_failure == "raise" and not converged.all():
+    if on_failure == "raise" and status.any():
         i = int(np.argmax(~converged))
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
@@ -575,13 +613,10 @@ def rotor_loads(
     else:
         b1c = b1s = np.zeros(n)
     rfr = Vs / om1
-    extrapolated = (Vc + vbar < 0) & (Vs != 0) if inflow != ph.INFLOW_UNIFORM else np.zeros(n, dtype=bool)
-    state, v_h, k_desc, _ = descent_state(T, V1, b1, vbar, air.rho, propeller.radius)
-    if params.descent == "empirical":  # the axial measurements' curve, blended in forward flight by propmap's fade
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            fade = np.exp(-(Vs / np.maximum(np.abs(vbar), 1e-12)) ** 2)
-            extrapolated = extrapolated | ((k_desc >= VRS_BAND["k_onset"]) & (k_desc < K_WINDMILL) & (fade > 0.05)
-                                           & (fade < 0.95))
+    # working state, v_h, descent ratio and the inflow-validity flag (a linear inflow model with net
+    # upflow; the empirical descent curve blended in forward flight by propmap's fade), compiled
+    state, v_h, k_desc, _, extrapolated = _classify(T, Vs, Vc, vbar, air.rho, propeller.radius,
+                                                    linear=inflow != ph.INFLOW_UNIFORM, empirical=empirical)
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
@@ -589,7 +624,7 @@ def rotor_loads(
         def s(a):
             return a.reshape(shape)
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
-    return RotorLoads(
+    return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
         thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y), pitching_moment=s(P),
         v_i_mean=s(vbar), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,

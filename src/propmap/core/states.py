@@ -40,6 +40,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import _kernel
+
 __all__ = ["STATES", "VRS_BAND", "K_WINDMILL", "descent_state", "vrs_boundary"]
 
 #: state names, in the order of the integer codes of ``descent_state``
@@ -77,17 +79,33 @@ def vrs_boundary(m):
         return c - h * u ** b["onset_exponent"], c + h * u ** b["exit_exponent"]
 
 
+#: :data:`VRS_BAND` as the compiled kernel takes it
+BAND_ARRAY = np.array([VRS_BAND[k] for k in ("k_onset", "k_exit", "m_max", "onset_exponent", "exit_exponent")])
+
+
+def _classify(T, vx, vz, v_mean, rho, radius, linear=False, empirical=False):
+    """The compiled rules (core/_kernel.working_states) on flat float arrays of the thrust, the
+    in-plane and axial speeds V sin(beta), V cos(beta) and the mean inflow: (state, v_h, k, m,
+    inflow-validity flag)."""
+    n = T.size
+    state, vh, k, m = np.empty(n, np.int64), np.empty(n), np.empty(n), np.empty(n)
+    extrap = np.empty(n, np.bool_)
+    _kernel.working_states(T, vx, vz, v_mean, float(rho), float(radius), BAND_ARRAY, K_WINDMILL, bool(linear),
+                           bool(empirical), state, vh, k, m, extrap)
+    return state, vh, k, m, extrap
+
+
 def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float):
     """The working state of a rotor (module docstring).
 
     Parameters
     ----------
-    thrust : ndarray
-        T [N] (any shape S).
-    airspeed, incidence : ndarray
-        V [m/s] and beta [rad], shape S.
-    v_mean : ndarray
-        Mean induced inflow over the disk [m/s], shape S.
+    thrust : array_like
+        T [N].
+    airspeed, incidence : array_like
+        V [m/s] and beta [rad].
+    v_mean : array_like
+        Mean induced inflow over the disk [m/s]. The four broadcast together to a shape S.
     rho : float
         Air density [kg/m^3].
     radius : float
@@ -100,23 +118,9 @@ def descent_state(thrust, airspeed, incidence, v_mean, rho: float, radius: float
         thrust [m/s] (0 where T <= 0); ``k`` the descent ratio and ``m`` the in-plane ratio
         (NaN where T <= 0). All shape S.
     """
-    T = np.asarray(thrust, float)
-    V = np.asarray(airspeed, float)
-    b = np.asarray(incidence, float)
-    vz = V * np.cos(b)
-    vx = V * np.sin(b)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        vh = np.sqrt(np.maximum(T, 0.0) / (2.0 * rho * np.pi * radius**2))
-        k = np.where(vh > 0, -vz / vh, np.nan) + 0.0  # + 0.0: no -0 in hover
-        m = np.where(vh > 0, vx / vh, np.nan)
-        onset, exit_ = vrs_boundary(m)
-        in_band = (k >= onset) & (k <= exit_)  # NaN edges (fast in-plane, no thrust) compare False
-    state = np.zeros(np.shape(T), dtype=np.int64)
-    descending = (vz < 0) & (vh > 0)
-    slow = m < VRS_BAND["m_max"]  # NaN (no thrust) compares False
-    upflow = vz + np.asarray(v_mean, float) < 0
-    state = np.where(descending & slow & in_band, 1, state)
-    state = np.where(descending & slow & (k > exit_), 2, state)
-    state = np.where(descending & ~slow & upflow, 3, state)
-    state = np.where((vz < 0) & ((vh == 0) | (k >= K_WINDMILL)), 3, state)
+    T, V, b, vm = np.broadcast_arrays(*(np.asarray(a, float) for a in (thrust, airspeed, incidence, v_mean)))
+    shape = T.shape
+    flat = [np.array(a, copy=True).reshape(-1) for a in (T, V * np.sin(b), V * np.cos(b), vm)]
+    state, vh, k, m, _ = _classify(*flat, rho, radius)
+    state, vh, k, m = (a.reshape(shape) for a in (state, vh, k, m))
     return state, vh, k, m
