@@ -18,10 +18,13 @@ radius. Sources of the model forms:
   T = motorConstant Omega^2 max(0, 1 - |V_z| / 25 m/s) (the plugin's fixed axial scaling),
   Q = momentConstant motorConstant Omega^2 (the plugin multiplies momentConstant by the
   thrust before the axial fade), D = rotorDragCoefficient Omega V_ip, rolling moment
-  M_R = rollingMomentCoefficient Omega V_ip. The plugin applies the rolling moment as
-  -|Omega| rollingMomentCoefficient V_perp whatever the turning direction (some forks
-  multiply it by the direction): that is propmap's -spin M_R e_ip for a ccw rotor and the
-  opposite sign for a cw one.
+  M_R = rollingMomentCoefficient Omega V_ip. PX4-SITL_gazebo-classic's
+  src/gazebo_motor_model.cpp applies the rolling moment as -|Omega| turning_direction
+  rollingMomentCoefficient V_perp (turning_direction +1 for ccw) since its pull request #809
+  (2021, "Modified the rolling moment formula of rotor"): propmap's -spin M_R e_ip for both
+  turning directions. gz-sim's MulticopterMotorModel (src/systems/multicopter_motor_model)
+  applies -|Omega| rollingMomentCoefficient V_perp without the turning direction, as the
+  PX4 plugin did before #809: right for a ccw rotor, the opposite sign for a cw one.
 * ``gill2019`` -- a multinomial in the rotorcraft advance ratio mu = V_ip / (Omega R) and
   inflow ratio lambda_c = V_z / (Omega R), the form of Gill & D'Andrea, "Computationally
   efficient force and moment models for propellers in UAV forward flight applications",
@@ -462,7 +465,8 @@ def write_export(res: SimExport, path) -> list[Path]:
         lines = ["<!--", f"  {head}", *(" " + ln for ln in error_lines(res, "")),
                  "  Thrust fades with axial speed as 1 - |V_z| / 25 m/s in the plugin (not a parameter);",
                  "  the torque, momentConstant times the unfaded thrust, does not fade.",
-                 "  The plugin's rolling moment has one sign for both turning directions: right for ccw.",
+                 "  PX4-SITL_gazebo-classic (since its PR #809, 2021) signs the rolling moment by the turning",
+                 "  direction: right for both. gz-sim's MulticopterMotorModel does not: right for ccw only.",
                  "  Paste these elements into each rotor's gazebo_motor_model plugin.", "-->",
                  f"<motorConstant>{c['motorConstant']!r}</motorConstant>",
                  f"<momentConstant>{c['momentConstant']!r}</momentConstant>",
