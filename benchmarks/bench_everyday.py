@@ -35,7 +35,7 @@ import numpy as np
 
 import propmap as pm
 from propmap.core import _kernel
-from propmap.core.solver import _cambered_args, _model_constants, _nodes
+from propmap.core.solver import _prepared
 from propmap.io.atomic import atomic_write
 
 BIN = Path(sys.executable).parent
@@ -73,14 +73,11 @@ def single_call(params, n=2000):
     prop = pm.load_propeller("apce_8x6")
     om, V, b = 8000 * math.pi / 30, 10.0, math.radians(45)
     pm.rotor_loads(prop, params, om, V, b)
-    d = pm.DEFAULT_DISCRETIZATION
-    air = pm.Air()
-    nd = _nodes(prop, d.n_radial, d.n_azimuth, air, params)
-    model, pk = _model_constants(params)
+    nd, model, pk, cam, inflow, empirical = _prepared(prop, params, params.air, pm.DEFAULT_DISCRETIZATION)
     nr = nd.y.size
     args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), np.zeros(1), nd.y, nd.w, nd.theta,
             nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.cospsi, model, pk,
-            _cambered_args(params, air), 0, False, prop.radius, False, np.empty((_kernel.N_OUT, 1)),
+            cam, inflow, empirical, prop.radius, False, np.empty((_kernel.N_OUT, 1)),
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((4, 1), np.int64))
     total, kernel = [], []
     for _ in range(n):  # interleaved, so that drift of the machine's speed hits both alike

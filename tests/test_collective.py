@@ -269,18 +269,18 @@ def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rot
     ring and ideal autorotation (Q = 0) comes at lambda2 = V / v_h between 1.7 and 2.3
     (wind-tunnel model rotors: 1.79-2.23, the issue's measurements); with Glauert's the
     trimmed collective jumps by more than 5 deg where the annuli switch branch."""
-    naca0015 = section_preset(section)  # the preset under test
+    p = section_preset(section)  # the preset under test
     om = 100.0
-    T0 = float(pm.rotor_loads(rotor, naca0015, om, 0.0, 0.0, collective=math.radians(8.0)).thrust)
+    T0 = float(pm.rotor_loads(rotor, p, om, 0.0, 0.0, collective=math.radians(8.0)).thrust)
     vh = math.sqrt(T0 / (2 * 1.225 * math.pi * rotor.radius**2))
     lam = np.linspace(0.0, 3.0, 61)
-    emp = trim_collective(rotor, naca0015, T0, om, lam * vh, math.pi)
+    emp = trim_collective(rotor, p, T0, om, lam * vh, math.pi)
     steps = np.abs(np.diff(np.degrees(emp.collective)))
     assert steps.max() < 1.5
     Q = emp.loads.torque
     i = int(np.argmax(Q < 0))
     assert 1.7 <= lam[i] <= 2.3 and np.all(Q[:i] > 0)
-    gl = trim_collective(rotor, naca0015.replace(descent="glauert"), T0, om, lam * vh, math.pi)
+    gl = trim_collective(rotor, p.replace(descent="glauert"), T0, om, lam * vh, math.pi)
     assert np.abs(np.diff(np.degrees(gl.collective))).max() > 5.0
 
 
@@ -296,11 +296,11 @@ def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(section,
     x = np.linspace(0.15, 1.0, 12)
     rot = pm.Propeller(name="twisted", radius=R, n_blades=3, r=x * R, chord=np.full(x.size, 0.05),
                        theta=np.radians(twist_deg * (x - 0.75)))
-    naca0015 = section_preset(section)  # the preset under test
+    p = section_preset(section)  # the preset under test
     om, coll = 1200 * RPM, math.radians(8.0)
-    T0 = float(pm.rotor_loads(rot, naca0015, om, 0.0, 0.0, collective=coll).thrust)
+    T0 = float(pm.rotor_loads(rot, p, om, 0.0, 0.0, collective=coll).thrust)
     vh = math.sqrt(T0 / (2 * 1.225 * math.pi * R**2))
-    r = pm.rotor_loads(rot, naca0015, om, np.linspace(0.0, 3.0, 601) * vh, math.pi, collective=coll)
+    r = pm.rotor_loads(rot, p, om, np.linspace(0.0, 3.0, 601) * vh, math.pi, collective=coll)
     assert not r.multiple_roots.any()
     assert np.max(np.abs(np.diff(r.thrust))) / T0 < 0.006
 

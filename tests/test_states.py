@@ -144,3 +144,15 @@ def test_a_vanishing_descent_rate_gives_the_hover_loads(name):
         r = pm.rotor_loads(prop, p, 5500 * math.pi / 30, V, b)
         np.testing.assert_allclose(r.thrust, r.thrust[0], rtol=1e-8)
         np.testing.assert_allclose(r.torque, r.torque[0], rtol=1e-8)
+
+
+def test_the_compiled_states_follow_the_published_boundary_on_a_grid():
+    """descent_state (the compiled rules) puts a descending rotor in the vortex ring exactly
+    where vrs_boundary (Johnson's formula) says, on a fine (m, k) grid, and in the turbulent
+    wake just beyond the exit edge at low in-plane speed."""
+    mg, kg = np.meshgrid(np.linspace(0.0, 1.2, 121), np.linspace(0.01, 1.99, 199))
+    code, _, k, m = (np.array(a, float) for a in zip(*(_at(a, b) for a, b in zip(kg.ravel(), mg.ravel()))))
+    on, ex = vrs_boundary(m)  # at the ratios the rules saw (k, m recomputed from T and V)
+    inside = (k >= on) & (k <= ex)
+    assert np.array_equal(code == 1, inside)
+    assert np.array_equal(code == 2, (m < 0.95) & (k > ex))

@@ -97,15 +97,17 @@ def fit(table: pd.DataFrame, exponents: dict | None = None):
             attached[k[jump[0] + 1:]] = False
     # lift: over 0-20 deg, but a leading-edge stall (the tabulated C_L falls below half its
     # maximum within ABRUPT_DEG past it, NACA 0012 at Re 3.6e5: 0.98 at 10 deg, 0.48 at 12 deg)
-    # only up to that break: no blend with M <= M_MAX follows it, and fitted through it the
-    # blend's lift is 12-24% low at 6-10 deg, where a rotor's sections work
+    # only up to and including the first angle past the break: no blend with M <= M_MAX follows
+    # the collapse, and fitted through it the blend's lift is 12-24% low at 6-10 deg, where a
+    # rotor's sections work; the first point past the break is kept because it bounds cl_max
+    # (without it the stall limit runs to its bound)
     lifted = np.ones(a.size, bool)
     for r in np.unique(re):
         k = np.flatnonzero(re == r)
         top = int(np.argmax(cl[k]))
         drop = np.flatnonzero((a[k] > a[k][top]) & (a[k] <= a[k][top] + np.radians(ABRUPT_DEG))
                               & (cl[k] < 0.5 * cl[k][top]))
-        if drop.size:
+        if drop.size:  # drop indexes k: keep the break's first point, leave out the rest
             lifted[k[drop[0] + 1:]] = False
     fixed = dict(cl_alpha=cl_alpha, cd_min=cd_min, cd2=cd2, re_exp=float(re_exp), re_exp_lift=0.0)
 
@@ -139,7 +141,7 @@ def main() -> None:
     import tomli_w
 
     data = pd.read_csv(DATA, comment="#")
-    out, fitted = {}, {}
+    out, fitted, multi = {}, {}, set()
     # sections with several Reynolds numbers first: a single-Re table borrows their exponents
     groups = sorted(data.groupby("section"), key=lambda g: g[1].reynolds.nunique() == 1)
     for section, table in groups:
@@ -147,10 +149,17 @@ def main() -> None:
         single = table.reynolds.nunique() == 1
         donor = None
         if single:
-            donor = min(fitted, key=lambda k: abs(int(k[-2:]) - int(key[-2:])))  # nearest thickness
+            if not np.isclose(table.reynolds.iloc[0], RE_REF):
+                raise ValueError(f"{section}: a single-Reynolds table must be at the reference Re {RE_REF:g}")
+            donors = [k for k in fitted if k in multi]
+            if not donors:
+                raise ValueError(f"{section}: no section tabulated at several Reynolds numbers to take exponents from")
+            donor = min(donors, key=lambda k: abs(int(k[-2:]) - int(key[-2:])))  # nearest thickness
             exponents = {"re_exp": fitted[donor].re_exp, "re_exp_stall": fitted[donor].re_exp_stall}
         p, err = fit(table, exponents if single else None)
         fitted[key] = p
+        if not single:
+            multi.add(key)
         d = {k: float(getattr(p, k)) for k in NAMES}
         d.update(alpha_L0_deg=0.0, cl_min=-d["cl_max"], cl_cdmin=0.0, cd90=CD90, re_ref=RE_REF)
         res = sorted(table.reynolds.unique())

@@ -582,7 +582,7 @@ def working_states(T, vx, vz, vbar, rho, radius, band, k_windmill, linear, empir
     area2 = 2.0 * rho * np.pi * (radius * radius)
     for i in range(T.size):
         t = T[i]
-        v = np.nan if t != t else np.sqrt(max(t, 0.0) / area2)
+        v = np.nan if t != t else np.sqrt(max(t, 0.0) / area2) + 0.0  # + 0.0: T = -0 gives +0
         if v > 0.0:
             ki = -vz[i] / v + 0.0  # + 0.0: no -0 in hover
             mi = vx[i] / v
