@@ -47,7 +47,7 @@ DRAG_WEIGHT = 10.0
 #: sweep itself); 20 is also the cambered model's default (docs/models.md)
 M_MAX = 20.0
 #: a stall is abrupt (leading-edge) when C_L falls below half its maximum within this many
-#: degrees past it; the lift is then fitted up to the break only (fit)
+#: degrees past it; the lift is then fitted up to and including its first point past the break (fit)
 ABRUPT_DEG = 3.0
 NAMES = ("cl_alpha", "cl_max", "M", "cd_min", "cd2", "re_exp", "re_exp_lift", "re_exp_stall")
 
@@ -68,8 +68,9 @@ def fit(table: pd.DataFrame, exponents: dict | None = None):
        tables give the same slope at every Re, so ``re_exp_lift`` = 0);
        ``cd_min`` and ``re_exp``: C_D at 0 deg against Re (log-log line through the
        reference); ``cd2``: (C_D - C_D(0)) against C_L^2 over 0-8 deg, all Reynolds numbers.
-    2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg (up to the
-       break of an abrupt stall, :data:`ABRUPT_DEG`) and on C_D in attached flow (below the
+    2. ``cl_max``, ``M`` and ``re_exp_stall``: least squares on C_L over 0-20 deg (for an
+       abrupt stall, :data:`ABRUPT_DEG`, up to and including its first point past the break)
+       and on C_D in attached flow (below the
        tabulated drag break), the rest held; M at most :data:`M_MAX` (no root folds).
     """
     a = np.radians(table.alpha_deg.to_numpy())
@@ -141,7 +142,7 @@ def main() -> None:
     import tomli_w
 
     data = pd.read_csv(DATA, comment="#")
-    out, fitted, multi = {}, {}, set()
+    out, donors = {}, {}  # donors: the fits of sections tabulated at several Reynolds numbers
     # sections with several Reynolds numbers first: a single-Re table borrows their exponents
     groups = sorted(data.groupby("section"), key=lambda g: g[1].reynolds.nunique() == 1)
     for section, table in groups:
@@ -151,15 +152,13 @@ def main() -> None:
         if single:
             if not np.isclose(table.reynolds.iloc[0], RE_REF):
                 raise ValueError(f"{section}: a single-Reynolds table must be at the reference Re {RE_REF:g}")
-            donors = [k for k in fitted if k in multi]
             if not donors:
                 raise ValueError(f"{section}: no section tabulated at several Reynolds numbers to take exponents from")
             donor = min(donors, key=lambda k: abs(int(k[-2:]) - int(key[-2:])))  # nearest thickness
-            exponents = {"re_exp": fitted[donor].re_exp, "re_exp_stall": fitted[donor].re_exp_stall}
+            exponents = {"re_exp": donors[donor].re_exp, "re_exp_stall": donors[donor].re_exp_stall}
         p, err = fit(table, exponents if single else None)
-        fitted[key] = p
         if not single:
-            multi.add(key)
+            donors[key] = p
         d = {k: float(getattr(p, k)) for k in NAMES}
         d.update(alpha_L0_deg=0.0, cl_min=-d["cl_max"], cl_cdmin=0.0, cd90=CD90, re_ref=RE_REF)
         res = sorted(table.reynolds.unique())
