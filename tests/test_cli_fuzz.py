@@ -335,7 +335,7 @@ ENVELOPE_ITEM = st.tuples(st.sampled_from(["rpm", "airspeed", "incidence_deg", "
 @settings(derandomize=True, database=None, deadline=None, max_examples=40, print_blob=True,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture,
                                  HealthCheck.filter_too_much])
-@given(target=st.sampled_from(["rotorpy", "gazebo", "gill2019"]), data=st.data(),
+@given(target=st.sampled_from(["rotorpy", "gazebo-classic", "gz-sim", "multinomial", "gazebo"]), data=st.data(),
        hostile=st.sampled_from(["none", "envelope", "points"]))
 def test_export_sim_options(capsys, tmp_path_factory, target, data, hostile):
     """exit 0 with finite coefficients (a fixed one said on stderr) and the file and its
@@ -350,7 +350,7 @@ def test_export_sim_options(capsys, tmp_path_factory, target, data, hostile):
     points = data.draw(NUMBER_TEXT.filter(lambda t: not (t.isdigit() and 100 < int(t) <= 1_000_000))
                        if hostile == "points" else st.sampled_from(["20", "40", "100"]), "points")
     d = tmp_path_factory.mktemp("sim")
-    out = d / {"rotorpy": "c.py", "gazebo": "c.sdf", "gill2019": "c.json"}[target]
+    out = d / {"rotorpy": "c.py", "multinomial": "c.json"}.get(target, "c.sdf")
     argv = ["export-sim", "apce_8x6", "--target", target, "--out", str(out), "--points", points, "--json"]
     if envelope is not None:
         argv += ["--envelope", envelope]
@@ -365,6 +365,8 @@ def test_export_sim_options(capsys, tmp_path_factory, target, data, hostile):
         assert all(math.isfinite(v) for v in values), d_out
         for name in d_out["fixed_at_zero"]:
             assert f"propmap: warning: {name} fixed at 0" in err
+        for name in d_out["held_at_sign_bound"]:
+            assert f"propmap: warning: {name} held at 0, the bound of its physical sign" in err
         assert written == sorted([out.name, out.stem + ".report.json"])
     else:
         assert code == 2 and written == [], (written, err)

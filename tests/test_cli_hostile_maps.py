@@ -105,10 +105,11 @@ def test_export_sim_fixes_and_names_what_the_envelope_cannot_determine(capsys, t
 
 
 def test_export_sim_refuses_an_envelope_without_gazebo_thrust(capsys, tmp_path):
-    """|V_z| >= 25 m/s everywhere: the plugin's thrust fade is 0, motorConstant undetermined (was 0)."""
+    """|V_z| >= 25 m/s everywhere: the plugin's thrust fade is 0, its thrust 0 whatever motorConstant (was a
+    motorConstant of 0; with hover pinned it would be written and give no thrust anywhere in the envelope)."""
     code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "gazebo", "--out", tmp_path / "c.sdf",
                        "--envelope", "airspeed=30:40,incidence_deg=0:10", "--points", "100")
-    assert one_line_error(code, err, "--envelope: the envelope cannot determine motorConstant"), err
+    assert one_line_error(code, err, "--envelope: the plugin's thrust fade 1 - |V_z| / 25 m/s is 0 at every point"), err
     assert list(tmp_path.iterdir()) == []
 
 

@@ -9,7 +9,7 @@ import pytest
 
 import propmap as pm
 from propmap.core.body import BodyDrag, body_drag_force
-from propmap.vehicle import VehicleFileError, read_vehicle, vehicle_wrench
+from propmap.vehicle import VehicleFileError, hover_omega, read_vehicle, vehicle_wrench
 from propmap.vehicle.model import Rotor, Vehicle
 
 DATA = Path(pm.__file__).parent / "data"
@@ -58,19 +58,22 @@ def test_spin_senses_mirror_the_yaw_moment(quad, generic):
 
 def test_hover_equilibrium_of_the_neurobem_vehicle(generic):
     """Equal rotor speeds at rest: a pure vertical force, no moment (the layout is symmetric
-    and the spins cancel); the speed that carries the weight exists and is found by bisection."""
+    and the spins cancel); the speed that carries the weight exists and hover_omega finds it."""
     veh = read_vehicle(NEUROBEM)
     params = generic.replace(collective=math.radians(8))
-    lo, hi = 300.0, 4000.0
-    for _ in range(50):
-        mid = 0.5 * (lo + hi)
-        fz = vehicle_wrench(veh, params, [0, 0, 0], [0, 0, 0], [mid] * 4).force[0, 2]
-        lo, hi = (mid, hi) if fz < veh.weight else (lo, mid)
+    lo = hover_omega(veh, params)
     res = vehicle_wrench(veh, params, [0, 0, 0], [0, 0, 0], [lo] * 4)
-    assert res.force[0, 2] == pytest.approx(veh.weight, rel=1e-6)
+    assert res.force[0, 2] == pytest.approx(veh.weight, rel=1e-9)
     np.testing.assert_allclose(res.force[0, :2], 0.0, atol=1e-12)
     np.testing.assert_allclose(res.moment[0], 0.0, atol=1e-12)
     assert 800 < lo < 2000  # the logs hover near 1100-1250 rad/s
+    # rotors that cannot lift it: refused, naming why
+    sideways = Vehicle(mass=1.0, rotors=tuple(Rotor(r.position, np.array([1.0, 0.0, 0.0]), r.spin, r.propeller)
+                                              for r in veh.rotors))
+    with pytest.raises(ValueError, match="no rotor's axis has an upward component"):
+        hover_omega(sideways, params)
+    with pytest.raises(ValueError, match="needs more than 1e5 rad/s"):
+        hover_omega(Vehicle(mass=1e6, rotors=veh.rotors), params)
 
 
 def test_gyroscopic_and_spin_up_moments():

@@ -9,7 +9,9 @@ import click
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, echo_json, load_params,
                       load_prop, with_prop_options)
 
-SUFFIX = {"rotorpy": ".py", "gazebo": ".sdf", "gill2019": ".json"}
+SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
+#: --target choices: the targets and their former names (gazebo: the PX4 classic plugin; gill2019: the multinomial)
+CHOICES = ["rotorpy", "gazebo-classic", "gz-sim", "multinomial", "gazebo", "gill2019"]
 KEYS = {"rpm": "rpm", "airspeed": "airspeed", "incidence_deg": "incidence_deg", "incidence-deg": "incidence_deg"}
 
 
@@ -52,45 +54,88 @@ def parse_envelope(text: str | None, propeller):
 
 @click.command("export-sim")
 @click.argument("prop")
-@click.option("--target", type=click.Choice(["rotorpy", "gazebo", "gill2019"]), required=True,
-              help="rotorpy (quad_params rotor keys), gazebo (PX4 gazebo_motor_model SDF elements) or gill2019 "
-                   "(multinomial in mu and lambda_c, JSON).")
+@click.option("--target", type=click.Choice(CHOICES), required=True,
+              help="rotorpy (quad_params keys; a whole quad_params with --vehicle), gazebo-classic (PX4-SITL "
+                   "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial (in mu "
+                   "and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and multinomial.")
 @click.option("--out", type=PathArg(), required=True,
               help="Coefficient file (.py, .sdf or .json by target); a JSON report OUT.json beside it.")
 @click.option("--envelope", default=None,
               help="Fit envelope rpm=A:B,airspeed=A:B,incidence_deg=A:B (default: tip speeds 50-150 m/s, "
                    "0-15 m/s, 0-180 deg).")
+@click.option("--hover-rpm", "hover_rpm", type=float, default=None,
+              help="Where hover thrust and torque are pinned to the model's [rpm] (default: the vehicle's hover with "
+                   "--vehicle, else the geometric mean of the envelope's rpm).")
+@click.option("--vehicle", type=PathArg(), default=None,
+              help="Vehicle TOML: its hover rpm pins the fit; with --target rotorpy a whole quad_params is written.")
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
-def export_sim_command(prop, target, out, envelope, n_points, params_spec, as_json, diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points, params_spec, as_json, diameter_in,
+                       blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Fit a simulator's simple rotor model to propmap and report what it costs.
 
-    The coefficients are fitted by least squares to the full model over the envelope, and
-    each load's error against the full model is reported (docs/simulators.md).
+    Hover thrust and torque are pinned to the model's; the speed terms are fitted by least
+    squares to the full model over the envelope, each within its physical sign, and each
+    load's error against the full model is reported (docs/simulators.md).
     """
-    from ..simexport import export_sim, report_path, write_export
+    import warnings
+    from dataclasses import replace
 
+    from ..simexport import ALIASES, check_rotorpy_vehicle, export_sim, report_path, write_export
+
+    if target == "gill2019":
+        warnings.warn("--target gill2019 is now called multinomial: its term set is propmap's, not the list of "
+                      "Gill & D'Andrea 2019", UserWarning, stacklevel=1)
+    target = ALIASES.get(target, target)
     if out.suffix.lower() != SUFFIX[target]:
         raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
     if not 20 <= n_points <= 1_000_000:
         raise InputError(f"--points must be in [20, 1000000], got {n_points}")
-    check_outputs([("--out", out), ("--out (report)", report_path(out))], [params_spec, prop])
+    check_outputs([("--out", out), ("--out (report)", report_path(out))], [params_spec, prop, vehicle])
     propeller = load_prop(prop, diameter_in, blades)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
+    veh, hover_from = None, "--hover-rpm"
+    if vehicle is not None:
+        from .flight import _vehicle
+        from ..vehicle import hover_omega
+
+        veh = _vehicle(vehicle)
+        if target == "rotorpy":
+            try:
+                check_rotorpy_vehicle(veh)
+            except ValueError as exc:
+                raise InputError(f"--vehicle: {exc}") from None
+        names = sorted({r.propeller.name for r in veh.rotors} - {propeller.name})
+        if names:
+            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {propeller.name}: the hover rpm is "
+                          f"the vehicle's, the coefficients {propeller.name}'s", UserWarning, stacklevel=1)
+        if hover_rpm is None:
+            hover_from = "--vehicle (its hover rpm)"
+            try:
+                hover_rpm = hover_omega(veh, params, air=air) * 30 / math.pi
+            except ValueError as exc:
+                raise InputError(f"--vehicle: {exc}") from None
+    if hover_rpm is not None:
+        try:
+            env = replace(env, hover_rpm=hover_rpm)
+        except ValueError as exc:
+            raise InputError(f"{hover_from}: {exc}; widen --envelope rpm=LOW:HIGH") from None
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
     except ValueError as exc:
         raise InputError(f"--envelope: {exc}") from None
-    files = write_export(res, out)
+    files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
+                         vehicle_label=str(vehicle) if vehicle is not None else "")
     if as_json:
         echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
+                   "held_at_sign_bound": res.held,
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:

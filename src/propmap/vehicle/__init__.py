@@ -5,6 +5,6 @@ and io only.
 """
 
 from .file import VehicleFileError, read_vehicle
-from .model import Rotor, Vehicle, VehicleWrench, vehicle_wrench
+from .model import Rotor, Vehicle, VehicleWrench, hover_omega, vehicle_wrench
 
-__all__ = ["Rotor", "Vehicle", "VehicleWrench", "VehicleFileError", "read_vehicle", "vehicle_wrench"]
+__all__ = ["Rotor", "Vehicle", "VehicleWrench", "VehicleFileError", "hover_omega", "read_vehicle", "vehicle_wrench"]

@@ -33,7 +33,7 @@ from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
 from ..core.vector import disk_frame, wrench_vectors
 
-__all__ = ["Rotor", "Vehicle", "VehicleWrench", "vehicle_wrench"]
+__all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "vehicle_wrench"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -264,3 +264,53 @@ def _column(r: RotorLoads, k: int) -> RotorLoads:
         if isinstance(a, np.ndarray) and a.ndim >= 2 and f.name != "r":
             kw[f.name] = a[:, k]
     return replace(r, **kw)
+
+
+def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = None,
+                discretization: Discretization = DEFAULT_DISCRETIZATION) -> float:
+    """The rotor speed at which the vehicle hovers in still air, every rotor at the same speed.
+
+    Solves sum_i T_i(Omega) (a_i . e_z) = m g for Omega, T_i the static thrust of rotor i's
+    propeller (:func:`propmap.rotor_loads` at V = 0; a rotor's own ``params`` where it has
+    them), a_i its axis, e_z body up; the airframe drag is zero in still air.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    params : AirfoilParams or CamberedParams
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
+    discretization : Discretization
+
+    Returns
+    -------
+    float
+        Omega [rad/s].
+
+    Raises
+    ------
+    ValueError
+        The rotors give no upward thrust (axes with a_i . e_z <= 0), or the weight needs
+        more than the solver's 1e5 rad/s.
+    """
+    from scipy.optimize import brentq
+
+    air = params.air if air is None else air
+    up = np.array([float(r.axis[2]) for r in vehicle.rotors])
+    if not np.any(up > 0):
+        raise ValueError("no rotor's axis has an upward component: the vehicle cannot hover")
+
+    def lift(om: float) -> float:
+        total = 0.0
+        for r, u in zip(vehicle.rotors, up):
+            p = r.params if r.params is not None else params
+            total += u * float(rotor_loads(r.propeller, p, om, 0.0, 0.0, air=air, discretization=discretization).thrust)
+        return total - vehicle.weight
+
+    hi = 100.0
+    while lift(hi) < 0:
+        hi *= 2
+        if hi > 1e5:
+            raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than 1e5 rad/s of its rotors: "
+                             "check its mass and propellers")
+    return float(brentq(lift, 0.1 if hi == 100.0 else hi / 2, hi, xtol=1e-9, rtol=1e-12))

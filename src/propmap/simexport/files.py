@@ -1,0 +1,239 @@
+"""Simulator coefficient files: each target's own format, and the JSON report beside it."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .. import __version__
+from .fit import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS, SimExport
+
+__all__ = ["error_lines", "report_path", "rotorpy_directions", "write_export"]
+
+
+def report_path(path) -> Path:
+    """The report written beside an export: ``<stem>.report.json`` (``c.json`` gets
+    ``c.report.json``, not ``c.json.json``; the fit commands' convention)."""
+    path = Path(path)
+    return path.with_name(path.stem + ".report.json")
+
+
+def _pct(value: float) -> str:
+    """A fraction as a percentage; n/a for NaN (no point to measure it on)."""
+    return "n/a" if math.isnan(value) else f"{value:.2%}"
+
+
+def error_lines(res: SimExport, comment: str = "") -> list[str]:
+    """The error table as text lines, each starting with ``comment`` (and a space)."""
+    e, env = res.errors, res.envelope
+    h = e["hover"]
+    lines = [f"{comment} hover pinned at {h['rpm']:.6g} rpm: thrust {h['thrust']:.6g} N (error "
+             f"{_pct(h['thrust_error'])}), torque {h['torque']:.6g} N m (error {_pct(h['torque_error'])}); static "
+             f"thrust and torque within {_pct(e['static']['thrust_max'])} and {_pct(e['static']['torque_max'])} "
+             f"over rpm {env.rpm[0]:g}-{env.rpm[1]:g}",
+             f"{comment} error against the full model over the envelope (rpm {env.rpm[0]:g}-{env.rpm[1]:g}, "
+             f"V {env.airspeed[0]:g}-{env.airspeed[1]:g} m/s, incidence {env.incidence_deg[0]:g}-"
+             f"{env.incidence_deg[1]:g} deg; {res.n_points} points, {e['points_flagged']} flagged):"]
+    for k in ("thrust", "drag", "torque", "rolling_moment"):
+        lines.append(f"{comment}   {k:<15} rms {_pct(e[k]['rms']):>7}  max {_pct(e[k]['max']):>7}  "
+                     f"(flagged: rms {_pct(e[k]['rms_flagged'])}, max {_pct(e[k]['max_flagged'])})")
+    lines.append(f"{comment} normalised: {e['normalisation']}")
+    for name, why in res.fixed.items():
+        lines.append(f"{comment} {name} fixed at 0: {why}")
+    for name, why in res.held.items():
+        lines.append(f"{comment} {name} {why}")
+    return lines
+
+
+def rotorpy_directions(spins) -> list[int]:
+    """RotorPy's ``rotor_directions`` for propmap spins.
+
+    RotorPy's yaw moment on the body is ``rotor_directions[i] k_m Omega_i^2`` about +z
+    (``Multirotor.compute_body_wrench``), the reaction to the rotor's rotation: a rotor
+    spinning ccw about +z (propmap spin "ccw", +1) gives -1 there, a cw one +1.
+
+    Parameters
+    ----------
+    spins : sequence of {"ccw", "cw", +1, -1}
+
+    Returns
+    -------
+    list of int
+
+    Raises
+    ------
+    ValueError
+        A spin that is none of those.
+    """
+    out = []
+    for k, s in enumerate(spins):
+        sign = {"ccw": 1, "cw": -1}.get(s, s) if isinstance(s, str) else s
+        if isinstance(sign, bool) or sign not in (1, -1):
+            raise ValueError(f"spins[{k}] must be 'ccw', 'cw', +1 or -1, got {s!r:.40}")
+        out.append(-int(sign))
+    return out
+
+
+def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str) -> str:
+    c = res.coefficients
+    rotor = [f"    'k_eta': {c['k_eta']!r},  # thrust coefficient N/(rad/s)**2",
+             f"    'k_m': {c['k_m']!r},  # yaw moment coefficient Nm/(rad/s)**2",
+             f"    'k_d': {c['k_d']!r},  # rotor drag coefficient N/(rad*m/s**2) = kg/rad",
+             f"    'k_z': {c['k_z']!r},  # induced inflow coefficient N/(rad*m/s**2) = kg/rad",
+             f"    'k_h': {c['k_h']!r},  # translational lift coefficient N/(m/s)**2",
+             f"    'k_flap': {c['k_flap']!r},  # flapping moment coefficient Nm/(rad*m/s**2)",
+             f"    'rotor_radius': {c['rotor_radius']!r},  # m"]
+    lines = [f"# {head}", *error_lines(res, "#"),
+             "# RotorPy (release 3.0.0, rotorpy/vehicles/multirotor.py): T = k_eta w^2 + k_h V_ip^2 - k_z w V_z,",
+             "# H = -w k_d V_ip, yaw moment rotor_directions k_m w^2 about +z. k_flap = 0: the rigid-blade model",
+             "# has no moment about z x e_ip; its rolling moment about e_ip has no RotorPy term (its error above).",
+             "# rotor_directions: -1 for a rotor spinning ccw about its (upward) thrust axis, seen from above",
+             "# (propmap spin 'ccw'), +1 for cw: the sign of its reaction torque on the body about +z.",
+             "import numpy as np", "", "rotor_params = {", *rotor, "}"]
+    if vehicle is not None:
+        lines += _quad_params(res, vehicle, vehicle_label)
+    return "\n".join(lines) + "\n"
+
+
+def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
+    """A complete RotorPy ``quad_params`` for ``vehicle`` (checked by :func:`check_rotorpy_vehicle`)."""
+    inertia = np.asarray(vehicle.inertia, float).tolist()  # Python floats: their repr is plain
+    rho = float(res.meta["rho"])
+    drag = vehicle.body_drag.drag_area if vehicle.body_drag is not None else (0.0, 0.0, 0.0)
+    positions = [(np.asarray(r.position, float) - np.asarray(vehicle.centre_of_mass, float)).tolist()
+                 for r in vehicle.rotors]
+    directions = rotorpy_directions([1 if r.spin > 0 else -1 for r in vehicle.rotors])
+    tau = vehicle.motor_time_constant
+    rpm_max = res.envelope.rpm[1]
+    out = ["", f"# quad_params for RotorPy's Multirotor: {vehicle.name or 'vehicle'} ({Path(label).name or 'vehicle file'}).",
+           "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; parasitic drag",
+           f"# c_D = rho (C_D A) / 2 from the vehicle file's drag areas at rho = {rho!r} kg/m^3 (the slipstream",
+           "# factor has no RotorPy term).",
+           "quad_params = {",
+           f"    'mass': {float(vehicle.mass)!r},  # kg",
+           f"    'Ixx': {inertia[0][0]!r}, 'Iyy': {inertia[1][1]!r}, 'Izz': {inertia[2][2]!r},  # kg m^2",
+           f"    'Ixy': {inertia[0][1]!r}, 'Iyz': {inertia[1][2]!r}, 'Ixz': {inertia[0][2]!r},  # kg m^2",
+           f"    'num_rotors': {len(vehicle.rotors)},",
+           f"    'rotor_radius': {res.coefficients['rotor_radius']!r},  # m",
+           "    'rotor_pos': {"]
+    out += [f"        'r{k + 1}': np.array([{p[0]!r}, {p[1]!r}, {p[2]!r}]),  # m" for k, p in enumerate(positions)]
+    out += ["    },",
+            f"    'rotor_directions': np.array({directions!r}),",
+            "    'rI': np.array([0.0, 0.0, 0.0]),  # IMU at the centre of mass",
+            *(f"    'c_D{ax}': {0.5 * rho * float(a)!r},  # N/(m/s)**2" for ax, a in zip("xyz", drag)),
+            "    **rotor_params,",
+            (f"    'tau_m': {float(tau)!r},  # s, the vehicle file's motor time constant" if tau > 0 else
+             "    'tau_m': 0.005,  # s: NOT in the vehicle file (motor_time_constant = 0); RotorPy needs one > 0, "
+             "set yours"),
+            "    'rotor_speed_min': 0.0,  # rad/s",
+            f"    'rotor_speed_max': {rpm_max * math.pi / 30!r},  # rad/s, the envelope's highest rpm",
+            "    'motor_noise_std': 0.0,  # rad/s",
+            "}"]
+    return out
+
+
+def check_rotorpy_vehicle(vehicle) -> None:
+    """Whether RotorPy's Multirotor can represent ``vehicle``.
+
+    Raises
+    ------
+    ValueError
+        No inertia tensor in the vehicle file, or a rotor whose axis is not body +z
+        (RotorPy assumes every rotor thrusts along +z).
+    """
+    if vehicle.inertia is None:
+        raise ValueError("the vehicle file has no inertia: RotorPy's quad_params needs Ixx ... Izz")
+    for k, r in enumerate(vehicle.rotors):
+        if not np.allclose(np.asarray(r.axis, float), (0.0, 0.0, 1.0), atol=1e-9):
+            raise ValueError(f"rotor {k + 1}'s axis {list(np.round(r.axis, 6))} is not body +z: RotorPy's Multirotor "
+                             "assumes every rotor thrusts along +z")
+
+
+def _gazebo_text(res: SimExport, head: str) -> str:
+    c = res.coefficients
+    if res.target == "gazebo-classic":
+        notes = [f"  PX4-SITL_gazebo-classic's gazebo_motor_model: thrust fades with axial speed as 1 - |V_z| / "
+                 f"{GAZEBO_AXIAL_SPEED:g} m/s",
+                 "  (not a parameter); the drag torque, momentConstant times the unfaded thrust, does not fade.",
+                 "  The rolling moment is signed by turning_direction (since the plugin's PR #809, 2021): the same",
+                 "  rollingMomentCoefficient is right for both turning directions.",
+                 "  Paste these elements into each rotor's gazebo_motor_model plugin."]
+        elements = [f"<rollingMomentCoefficient>{c['rollingMomentCoefficient']!r}</rollingMomentCoefficient>"]
+    else:
+        notes = ["  gz-sim's MulticopterMotorModel: no axial fade of the thrust; the drag torque is momentConstant",
+                 "  times the thrust. Its rolling moment is NOT signed by turningDirection: the value below is right",
+                 "  for a ccw rotor (<turningDirection>ccw</turningDirection>); give a cw rotor its negative,",
+                 f"  {-c['rollingMomentCoefficient']!r}.",
+                 "  Paste these elements into each rotor's MulticopterMotorModel system."]
+        elements = [f"<!-- ccw rotors; cw rotors: <rollingMomentCoefficient>{-c['rollingMomentCoefficient']!r}"
+                    "</rollingMomentCoefficient> -->",
+                    f"<rollingMomentCoefficient>{c['rollingMomentCoefficient']!r}</rollingMomentCoefficient>"]
+    lines = ["<!--", f"  {head}", *(" " + ln for ln in error_lines(res, "")), *notes, "-->",
+             f"<motorConstant>{c['motorConstant']!r}</motorConstant>",
+             f"<momentConstant>{c['momentConstant']!r}</momentConstant>",
+             f"<rotorDragCoefficient>{c['rotorDragCoefficient']!r}</rotorDragCoefficient>", *elements]
+    return "\n".join(lines) + "\n"
+
+
+def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "") -> list[Path]:
+    """Write the coefficients in the target's own format (atomically), and a JSON report
+    ``<stem>.report.json`` with the coefficients, the envelope and the errors.
+
+    rotorpy: a Python file defining ``rotor_params`` (keys of RotorPy's ``quad_params``)
+    and, with ``vehicle``, a complete ``quad_params``; gazebo-classic and gz-sim: an SDF
+    fragment of the plugin's coefficient elements; multinomial: JSON.
+
+    The two are written as a pair (io.atomic.atomic_paths); the report records the
+    file's SHA-256 (``describes``), the coefficients fixed at 0 (``fixed_at_zero``) and
+    those held at 0 by their physical sign (``held_at_sign_bound``).
+
+    Parameters
+    ----------
+    res : SimExport
+    path : path-like
+    vehicle : Vehicle, optional
+        rotorpy only: write ``quad_params`` for it (:func:`check_rotorpy_vehicle`).
+    vehicle_label : str
+        Where the vehicle came from, for the file's comment.
+
+    Raises
+    ------
+    ValueError
+        ``vehicle`` with another target, or one RotorPy cannot represent.
+    OSError
+        The files cannot be written.
+    """
+    path = Path(path)
+    head = (f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
+            f"({res.meta.get('params')}), fitted to the full model")
+    if vehicle is not None:
+        if res.target != "rotorpy":
+            raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")
+        check_rotorpy_vehicle(vehicle)
+    if res.target == "rotorpy":
+        text = _rotorpy_text(res, head, vehicle, vehicle_label)
+    elif res.target in ("gazebo-classic", "gz-sim"):
+        text = _gazebo_text(res, head)
+    else:
+        text = json.dumps({"model": "multinomial in mu = V sin(beta)/(Omega R), lambda_c = V cos(beta)/(Omega R)",
+                           "terms_even": list(EVEN_TERMS), "terms_odd": list(ODD_TERMS),
+                           "normalisation": "T, H = rho pi R^2 (Omega R)^2 C; Q, M_R = rho pi R^3 (Omega R)^2 C",
+                           **res.coefficients, "fixed_at_zero": res.fixed}, indent=2) + "\n"
+    from ..io.atomic import atomic_paths, file_sha256
+    from ..io.mapfile import _json_safe
+
+    report = report_path(path)
+    # the file and its report as a pair; the report names the file's SHA-256
+    with atomic_paths([path, report]) as (tmp, tmp_report):
+        tmp.write_text(text)
+        tmp_report.write_text(json.dumps(_json_safe({
+            "target": res.target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
+            "held_at_sign_bound": res.held, "errors": res.errors,
+            "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
+                         "incidence_deg": list(res.envelope.incidence_deg), "hover_rpm": res.envelope.hover},
+            "n_points": res.n_points, **res.meta, "describes": {"file": path.name, "sha256": file_sha256(tmp)}}),
+            indent=2, allow_nan=False))
+    return [path, report]

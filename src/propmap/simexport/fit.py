@@ -1,0 +1,500 @@
+"""Simulator coefficients: the simple rotor models of common simulators fitted to propmap.
+
+Each target is a closed-form rotor model that a simulator evaluates. Its coefficients are
+fitted to the full model (propmap's BET/BEMT) over an envelope of operating points, with
+hover pinned: the static coefficients (thrust and torque at V = 0) are set so that the
+simple model's hover thrust and torque equal the full model's at the envelope's hover rpm,
+and the speed terms are then fitted by least squares to what remains, each within its
+physical sign. The error against the full model over the envelope is reported, so that a
+user sees what the simple model costs. Notation: Omega [rad/s], V [m/s], incidence beta,
+V_ip = V sin(beta) (in-plane), V_z = V cos(beta) (axial, positive in climb), R the tip
+radius. Sources of the model forms (each checked against the simulator's source):
+
+* ``rotorpy`` -- RotorPy (Folk et al., "RotorPy: a Python-based multirotor simulator with
+  aerodynamics", 2023; ``rotorpy/vehicles/multirotor.py``, ``Multirotor.compute_body_wrench``
+  of release 3.0.0): T = k_eta Omega^2 + k_h V_ip^2 - k_z Omega V_z, rotor drag
+  D = k_d Omega V_ip, yaw moment rotor_dir k_m Omega^2 about +z, flapping moment
+  -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
+  flapping blades); propmap's rigid-blade, azimuth-uniform-inflow model has none about
+  that axis (docs/conventions.md), so k_flap = 0, and propmap's rolling moment M_R (about
+  e_ip) has no RotorPy term: its error is reported. RotorPy's ``rotor_directions`` entry
+  is the sign of the reaction torque on the body about +z: -spin in propmap's convention
+  (a "ccw" rotor, spin +1 about its thrust axis, is -1 there).
+* ``gazebo-classic`` -- PX4-SITL_gazebo-classic's motor model
+  (``src/gazebo_motor_model.cpp``, ``GazeboMotorModel::UpdateForcesAndMoments``):
+  T = motorConstant Omega^2 clamp(1 - |V_z| / 25 m/s, 0, 1) (the plugin's fixed axial
+  fade), drag torque -turning_direction momentConstant motorConstant Omega^2 (the unfaded
+  thrust), D = rotorDragCoefficient |Omega| V_ip, rolling moment
+  -|Omega| turning_direction rollingMomentCoefficient V_perp (turning_direction +1 for
+  ccw; the turning direction since the plugin's pull request #809, 2021): propmap's
+  -spin M_R e_ip for both turning directions.
+* ``gz-sim`` -- gz-sim's MulticopterMotorModel system
+  (``src/systems/multicopter_motor_model/MulticopterMotorModel.cc``): the same formulas
+  without the axial fade (T = motorConstant Omega^2) and with the rolling moment
+  -|Omega| rollingMomentCoefficient V_perp, not multiplied by the turning direction:
+  right for a ccw rotor; a cw rotor needs the coefficient's negative (the written file
+  gives both).
+* ``multinomial`` -- a multinomial in the rotorcraft advance ratio mu = V_ip / (Omega R)
+  and inflow ratio lambda_c = V_z / (Omega R), of the form of Gill & D'Andrea,
+  "Computationally efficient force and moment models for propellers in UAV forward flight
+  applications", Drones 3(4) 77, 2019 (a Taylor expansion of a BEMT model). Coefficients
+  in the rotorcraft normalisation X = rho pi R^2 (Omega R)^2 C_X (R C_X for moments). The
+  term set is propmap's choice from the symmetry of the azimuth-averaged model, not the
+  paper's list (which this repository does not carry): C_T and C_Q even in mu,
+  {1, lambda, lambda^2, mu^2, lambda^3, lambda mu^2}; C_H and C_R odd in mu,
+  mu {1, lambda, lambda^2, mu^2}. (``gill2019``, its former name, is still accepted.)
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .. import __version__
+from ..core.airfoil import Air
+from ..core.geometry import _real
+from ..core.solver import check_model_args, rotor_loads
+
+__all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "default_envelope", "export_sim", "predict"]
+
+TARGETS = ("rotorpy", "gazebo-classic", "gz-sim", "multinomial")
+#: former names, still accepted: "gazebo" (the PX4 classic plugin) and "gill2019" (propmap's
+#: multinomial, whose term set is not that paper's)
+ALIASES = {"gazebo": "gazebo-classic", "gill2019": "multinomial"}
+GAZEBO_AXIAL_SPEED = 25.0  # [m/s] PX4-SITL_gazebo-classic's fixed thrust fade with axial speed
+#: a term is fitted only if its dimensionless size (1; the advance ratio mu = V_ip/(Omega R),
+#: the inflow ratio lambda_c = V_z/(Omega R), their powers and products; Gazebo's thrust
+#: fade) reaches this somewhere in the envelope: a term below it changes its load by less
+#: than about 0.1% there, and its coefficient would be fitted to round-off (a coefficient of
+#: 1e294 from an envelope of airspeed 0 to 1e-300 m/s). Such a coefficient is fixed at 0 and
+#: said (SimExport.fixed, a warning).
+DETERMINED = 1e-3
+#: the largest condition number of the fit's (column-normalised) design matrix: beyond it
+#: the envelope cannot separate the terms (e.g. a single rpm and a single speed). The default
+#: envelopes of the targets give 1-4 on catalogue propellers; an envelope that is nearly a
+#: point (rpm 5000-5000.001, airspeed 10-10.000001 m/s) gives 1.5e7, where 1e8 let a
+#: coefficient be fitted to round-off and written without a word
+MAX_CONDITION = 1e4
+#: fewest converged points a fit takes
+MIN_POINTS = 10
+#: what the physical sign of each sign-constrained coefficient means (all >= 0)
+PHYSICAL_SIGN = {
+    "k_h": "translational lift: k_h V_ip^2 can only raise the thrust with in-plane speed",
+    "k_z": "induced inflow: -k_z Omega V_z lowers the thrust in climb and raises it in descent",
+    "k_d": "rotor drag acts against the in-plane motion",
+    "rotorDragCoefficient": "rotor drag acts against the in-plane motion",
+    "rollingMomentCoefficient": "more thrust on the advancing side than on the retreating side",
+}
+
+
+def canonical_target(target: str) -> str:
+    """``target``'s current name (a former name, :data:`ALIASES`, is mapped to it).
+
+    Raises
+    ------
+    ValueError
+        Not a target.
+    """
+    if isinstance(target, str) and target in ALIASES:
+        if target == "gill2019":
+            warnings.warn("target 'gill2019' is now called 'multinomial': its term set is propmap's, not the list of "
+                          "Gill & D'Andrea 2019", FutureWarning, stacklevel=3)
+        return ALIASES[target]
+    if target not in TARGETS:
+        raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r:.60}")
+    return target
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """Operating points to fit over: uniform in rpm, airspeed and incidence.
+
+    Attributes
+    ----------
+    rpm : (float, float)
+        [rpm]
+    airspeed : (float, float)
+        [m/s]
+    incidence_deg : (float, float)
+        [deg], within [0, 180].
+    hover_rpm : float, optional
+        [rpm], within ``rpm``: where the simple model's static thrust and torque are pinned
+        to the full model's. None: the geometric mean of ``rpm`` (give the vehicle's hover
+        rpm where it is known; ``propmap export-sim --vehicle`` computes it).
+    """
+
+    rpm: tuple
+    airspeed: tuple = (0.0, 25.0)
+    incidence_deg: tuple = (0.0, 180.0)
+    hover_rpm: float | None = None
+
+    def __post_init__(self) -> None:
+        for name, (a, b) in (("rpm", (1.0, 954929.0)), ("airspeed", (0.0, 500.0)), ("incidence_deg", (0.0, 180.0))):
+            value = getattr(self, name)
+            pair = tuple(value) if isinstance(value, (tuple, list, np.ndarray)) else None
+            if pair is None or len(pair) != 2 or any(_real(v) is None for v in pair):
+                raise ValueError(f"envelope {name} must be two numbers (low, high), got {value!r:.60}")
+            lo, hi = (_real(v) for v in pair)
+            if not (math.isfinite(lo) and math.isfinite(hi) and a <= lo < hi <= b):
+                raise ValueError(f"envelope {name} must satisfy {a:g} <= low < high <= {b:g}, got {lo!r}, {hi!r}")
+            object.__setattr__(self, name, (lo, hi))
+        if self.hover_rpm is not None:
+            h, (lo, hi) = _real(self.hover_rpm), self.rpm
+            if h is None or not (math.isfinite(h) and lo <= h <= hi):
+                raise ValueError(f"envelope hover_rpm must be a number within its rpm range [{lo:g}, {hi:g}], "
+                                 f"got {self.hover_rpm!r:.60}")
+            object.__setattr__(self, "hover_rpm", h)
+
+    @property
+    def hover(self) -> float:
+        """The hover rpm in use: ``hover_rpm``, or the geometric mean of ``rpm`` [rpm]."""
+        return self.hover_rpm if self.hover_rpm is not None else math.sqrt(self.rpm[0] * self.rpm[1])
+
+
+@dataclass
+class SimExport:
+    """Fitted coefficients of one target and their error against the full model.
+
+    Attributes
+    ----------
+    target : str
+    coefficients : dict
+        Name -> value in SI units (as the target's file writes them).
+    errors : dict
+        Per load (thrust, drag, torque, rolling_moment): rms and max of |simple - full|,
+        normalised per point by the static thrust or torque at its Omega (T, Q) or the
+        largest |D| or |M_R| of the envelope's points (D, M_R); over the points outside
+        vortex ring and multiple roots, and apart (``rms_flagged``, ``max_flagged``) over
+        those inside. ``hover``: the full model's and the simple model's static thrust
+        and torque at the hover rpm and their relative differences; ``static``: the
+        largest relative difference of static thrust and torque over the envelope's rpm.
+    envelope : Envelope
+    n_points : int
+    meta : dict
+        Propeller, parameters, model, propmap version.
+    fixed : dict
+        Coefficient name (``k_z``; ``CT[lambda^2]`` for the multinomial) -> why the
+        envelope cannot determine it; those are fixed at 0 (:data:`DETERMINED`).
+    held : dict
+        Coefficient name -> why it is held at 0, the bound of its physical sign
+        (:data:`PHYSICAL_SIGN`): the full model's trend over the envelope is the opposite
+        of what the term can represent.
+    """
+
+    target: str
+    coefficients: dict
+    errors: dict
+    envelope: Envelope
+    n_points: int
+    meta: dict = field(default_factory=dict)
+    fixed: dict = field(default_factory=dict)
+    held: dict = field(default_factory=dict)
+
+
+def default_envelope(propeller) -> Envelope:
+    """A multirotor's envelope for ``propeller``: rpm from a third of the rpm of a 150 m/s
+    tip speed to it (tip speeds 50-150 m/s), V 0-15 m/s, incidence 0-180 deg (advance
+    ratios J up to about 1), hover at the geometric mean of the rpm range."""
+    from ..maps import default_axes
+
+    rpm, _, _ = default_axes(propeller)
+    return Envelope(rpm=(float(rpm[-1]) / 3, float(rpm[-1])), airspeed=(0.0, 15.0))
+
+
+def _samples(propeller, params, air, envelope: Envelope, n: int, seed: int):
+    rng = np.random.default_rng(seed)
+    om = rng.uniform(*envelope.rpm, n) * math.pi / 30
+    V = rng.uniform(*envelope.airspeed, n)
+    b = np.radians(rng.uniform(*envelope.incidence_deg, n))
+    full = rotor_loads(propeller, params, om, V, b, air=air, on_failure="flag")
+    om_h = envelope.hover * math.pi / 30
+    static = rotor_loads(propeller, params, np.append(om, om_h), 0.0, 0.0, air=air)
+    ok = full.converged
+    if ok.sum() < MIN_POINTS:
+        raise ValueError(f"only {int(ok.sum())} of the envelope's {n} points converged; at least {MIN_POINTS} are needed "
+                         "to fit (a larger envelope, or more points)")
+    for k, v in (("thrust", static.thrust), ("torque", static.torque)):
+        if not np.all(np.isfinite(v) & (v > 0)):
+            raise ValueError(f"the model's static {k} is not positive at every rpm of the envelope "
+                             f"({float(np.min(v)):.3g}): the fit, relative to it, cannot be normalised")
+    flagged = full.vortex_ring | full.multiple_roots
+    return {"omega": om[ok], "V": V[ok], "beta": b[ok], "flagged": flagged[ok],
+            "thrust": full.thrust[ok], "drag": full.drag[ok], "torque": full.torque[ok],
+            "rolling_moment": full.rolling_moment[ok], "T0": static.thrust[:-1][ok], "Q0": static.torque[:-1][ok],
+            "omega_h": om_h, "T_h": float(static.thrust[-1]), "Q_h": float(static.torque[-1])}
+
+
+#: what each dimensionless term size is, for messages
+_SIZE_TEXT = {"mu": "the advance ratio mu = V sin(beta) / (Omega R)",
+              "lambda": "the inflow ratio lambda_c = V cos(beta) / (Omega R)",
+              "fade": f"the plugin's thrust fade 1 - |V_z| / {GAZEBO_AXIAL_SPEED:g} m/s"}
+
+
+def _lstsq(terms, y, fixed: dict, held: dict):
+    """Least squares of ``y`` on the terms that the envelope determines, each within its sign.
+
+    Parameters
+    ----------
+    terms : list of (name, column, size, what)
+        The coefficient's name, its column (weighted like ``y``), the term's
+        dimensionless size at each point and what that size is (a key of _SIZE_TEXT,
+        with a power: "mu^2"). A name in :data:`PHYSICAL_SIGN` is bounded below by 0.
+    y : ndarray
+    fixed : dict
+        Receives name -> reason for each term left out (its coefficient 0).
+    held : dict
+        Receives name -> reason for each sign-bounded coefficient that ends at its bound
+        while the unbounded fit gives the opposite sign.
+
+    Returns
+    -------
+    list of float
+        One coefficient per term, 0 for those left out.
+
+    Raises
+    ------
+    ValueError
+        Terms the envelope cannot separate.
+    """
+    from scipy.optimize import lsq_linear
+
+    keep = []
+    for k, (name, col, size, what) in enumerate(terms):
+        peak = float(np.max(np.abs(size)))
+        if peak >= DETERMINED:
+            keep.append(k)
+            continue
+        legend = "; ".join(text for key, text in _SIZE_TEXT.items() if key in what)
+        fixed[name] = (f"its term's size {what} ({legend}) stays below {DETERMINED:g} over the envelope "
+                       f"(at most {peak:.2g})")
+    x = np.zeros(len(terms))
+    if not keep:
+        return [float(v) for v in x]
+    names = [terms[k][0] for k in keep]
+    A = np.column_stack([terms[k][1] for k in keep])
+    scale = np.max(np.abs(A), axis=0)
+    scale[scale == 0] = 1.0
+    A = A / scale
+    _, sv, vt = np.linalg.svd(A / np.maximum(np.linalg.norm(A, axis=0), 1e-300), full_matrices=False)
+    if sv[-1] < sv[0] / MAX_CONDITION:
+        mixed = [n for n, v in zip(names, vt[-1]) if abs(v) > 0.1]
+        raise ValueError(f"the envelope cannot separate {', '.join(mixed)} (condition number "
+                         f"{sv[0] / max(sv[-1], 1e-300):.2g}): widen its rpm, airspeed or incidence range")
+    free, *_ = np.linalg.lstsq(A, y, rcond=None)
+    lower = np.array([0.0 if n in PHYSICAL_SIGN else -np.inf for n in names])
+    sol = free
+    if np.any(free < lower):
+        sol = lsq_linear(A, y, bounds=(lower, np.inf), method="bvls").x
+        for n, f, v, lo in zip(names, free, sol, lower):
+            if lo == 0.0 and v <= 0.0 and f < 0.0:
+                held[n] = (f"held at 0, the bound of its physical sign ({PHYSICAL_SIGN[n]}): the full model's trend "
+                           f"over the envelope is the opposite (the unbounded fit gives {f / scale[names.index(n)]:.3g})")
+    x[keep] = sol / scale
+    return [float(v) for v in x]
+
+
+def _mu_lambda(s, R):
+    tip = s["omega"] * R
+    return s["V"] * np.sin(s["beta"]) / tip, s["V"] * np.cos(s["beta"]) / tip
+
+
+#: the multinomial's terms (names as in the JSON file's terms_even / terms_odd)
+EVEN_TERMS = ("1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2")
+ODD_TERMS = ("mu", "mu lambda", "mu lambda^2", "mu^3")
+
+
+def _fit(target: str, s, R: float, rho: float, fixed: dict, held: dict) -> dict:
+    om, V, b = s["omega"], s["V"], s["beta"]
+    Vip, Vz = V * np.sin(b), V * np.cos(b)
+    mu, lam = _mu_lambda(s, R)
+    one = np.ones_like(mu)
+    om_h, T_h, Q_h = s["omega_h"], s["T_h"], s["Q_h"]
+    # each load is fitted relative to its scale at the point (static value at that Omega), so
+    # that low and high rpm count alike: divide both sides by the scale
+    wT, wQ = 1 / s["T0"], 1 / s["Q0"]
+    wD = 1 / max(float(np.max(np.abs(s["drag"]))), 1e-300)
+    wR = 1 / max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300)
+    if target == "rotorpy":
+        k_eta, k_m = T_h / om_h**2, Q_h / om_h**2  # hover pinned
+        k_h, k_z = _lstsq([("k_h", Vip**2 * wT, mu**2, "mu^2"), ("k_z", -om * Vz * wT, lam, "lambda")],
+                          (s["thrust"] - k_eta * om**2) * wT, fixed, held)
+        (k_d,) = _lstsq([("k_d", om * Vip * wD, mu, "mu")], s["drag"] * wD, fixed, held)
+        return {"k_eta": k_eta, "k_m": k_m, "k_d": k_d, "k_z": k_z, "k_h": k_h, "k_flap": 0.0, "rotor_radius": R}
+    if target in ("gazebo-classic", "gz-sim"):
+        kT, kQ = T_h / om_h**2, Q_h / T_h  # hover pinned (the plugins' torque: momentConstant x unfaded thrust)
+        if target == "gazebo-classic":
+            fade = np.maximum(0.0, 1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED)
+            if float(np.max(fade)) < DETERMINED:
+                raise ValueError(f"the plugin's thrust fade 1 - |V_z| / {GAZEBO_AXIAL_SPEED:g} m/s is 0 at every point "
+                                 f"of the envelope (|V_z| >= {GAZEBO_AXIAL_SPEED:g} m/s): its thrust is 0 there "
+                                 "whatever motorConstant; widen the envelope")
+        (kD,) = _lstsq([("rotorDragCoefficient", om * Vip * wD, mu, "mu")], s["drag"] * wD, fixed, held)
+        (kR,) = _lstsq([("rollingMomentCoefficient", om * Vip * wR, mu, "mu")], s["rolling_moment"] * wR, fixed,
+                       held)
+        return {"motorConstant": kT, "momentConstant": kQ, "rotorDragCoefficient": kD,
+                "rollingMomentCoefficient": kR}
+    if target == "multinomial":
+        q = rho * math.pi * R**2 * (om * R) ** 2  # force scale; moments add R
+        q_h = rho * math.pi * R**2 * (om_h * R) ** 2
+        even = [lam, lam**2, mu**2, lam**3, lam * mu**2]
+        odd = [mu, mu * lam, mu * lam**2, mu**3]
+        out = {"R": R, "rho": rho}
+        for key, c0, terms, names, y, w, moment in (
+                ("CT", T_h / q_h, even, EVEN_TERMS[1:], s["thrust"], wT, False),
+                ("CH", None, odd, ODD_TERMS, s["drag"], wD, False),
+                ("CQ", Q_h / (q_h * R), even, EVEN_TERMS[1:], s["torque"], wQ, True),
+                ("CR", None, odd, ODD_TERMS, s["rolling_moment"], wR, True)):
+            scale = q * (R if moment else 1.0)
+            rest = y - (c0 * scale if c0 is not None else 0.0)
+            fitted = _lstsq([(f"{key}[{n}]", t * scale * w, t, n) for t, n in zip(terms, names)], rest * w, fixed,
+                            held)
+            out[key] = [c0, *fitted] if c0 is not None else fitted
+        return out
+    raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
+
+
+def predict(target: str, coefficients: dict, omega, airspeed, incidence):
+    """The simple model's (T, D, Q, M_R) [N, N, N m, N m] at Omega [rad/s], V [m/s], beta [rad].
+
+    The formulas are those of the module docstring (what the target simulator evaluates),
+    in propmap's scalar convention: D against the in-plane motion, Q opposing the rotation,
+    M_R positive for more thrust on the advancing side; Omega > 0. Arrays broadcast.
+
+    Raises
+    ------
+    ValueError
+        Unknown target.
+    """
+    target = canonical_target(target)
+    om, V, b = (np.asarray(x, float) for x in (omega, airspeed, incidence))
+    Vip, Vz = V * np.sin(b), V * np.cos(b)
+    c = coefficients
+    if target == "rotorpy":
+        T = c["k_eta"] * om**2 + c["k_h"] * Vip**2 - c["k_z"] * om * Vz
+        return T, c["k_d"] * om * Vip, c["k_m"] * om**2, 0.0 * om
+    if target in ("gazebo-classic", "gz-sim"):
+        fade = np.clip(1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED, 0.0, 1.0) if target == "gazebo-classic" else 1.0
+        T0 = c["motorConstant"] * om**2
+        return (T0 * fade, c["rotorDragCoefficient"] * om * Vip, c["momentConstant"] * T0,
+                c["rollingMomentCoefficient"] * om * Vip)
+    R, rho = c["R"], c["rho"]
+    mu, lam = Vip / (om * R), Vz / (om * R)
+    q = rho * math.pi * R**2 * (om * R) ** 2
+    even = [np.ones_like(mu), lam, lam**2, mu**2, lam**3, lam * mu**2]
+    odd = [mu, mu * lam, mu * lam**2, mu**3]
+
+    def poly(coef, terms):
+        return sum(k * t for k, t in zip(coef, terms))
+
+    return (q * poly(c["CT"], even), q * poly(c["CH"], odd), q * R * poly(c["CQ"], even),
+            q * R * poly(c["CR"], odd))
+
+
+def _rel(a: float, b: float) -> float:
+    return float(abs(a - b) / abs(b))
+
+
+def _errors(target: str, coefficients: dict, s) -> dict:
+    T, D, Q, MR = predict(target, coefficients, s["omega"], s["V"], s["beta"])
+    norm = {"thrust": np.abs(s["T0"]), "torque": np.abs(s["Q0"]),
+            "drag": np.full_like(T, max(float(np.max(np.abs(s["drag"]))), 1e-300)),
+            "rolling_moment": np.full_like(T, max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300))}
+    out = {}
+    for k, pred in (("thrust", T), ("drag", D), ("torque", Q), ("rolling_moment", MR)):
+        e = np.abs(pred - s[k]) / norm[k]
+        ok, bad = e[~s["flagged"]], e[s["flagged"]]
+        out[k] = {"rms": float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan,
+                  "max": float(np.max(ok)) if ok.size else math.nan,
+                  "rms_flagged": float(np.sqrt(np.mean(bad**2))) if bad.size else math.nan,
+                  "max_flagged": float(np.max(bad)) if bad.size else math.nan}
+    out["normalisation"] = ("T by the static thrust and Q by the static torque at each point's Omega; D and M_R by "
+                            "the largest |D|, |M_R| over the envelope; 'flagged': points in vortex ring or with "
+                            "multiple roots")
+    out["points_flagged"] = int(np.sum(s["flagged"]))
+    Th, _, Qh, _ = predict(target, coefficients, s["omega_h"], 0.0, 0.0)
+    out["hover"] = {"rpm": s["omega_h"] * 30 / math.pi, "thrust": s["T_h"], "torque": s["Q_h"],
+                    "thrust_export": float(Th), "torque_export": float(Qh),
+                    "thrust_error": _rel(float(Th), s["T_h"]), "torque_error": _rel(float(Qh), s["Q_h"])}
+    T0, _, Q0, _ = predict(target, coefficients, s["omega"], 0.0, 0.0)
+    out["static"] = {"thrust_max": float(np.max(np.abs(T0 - s["T0"]) / s["T0"])),
+                     "torque_max": float(np.max(np.abs(Q0 - s["Q0"]) / s["Q0"]))}
+    return out
+
+
+def export_sim(target: str, propeller, params, *, air: Air | None = None, envelope: Envelope | None = None,
+               n_points: int = 4000, seed: int = 0, params_label: str = "") -> SimExport:
+    """Fit ``target``'s coefficients to the full model over ``envelope`` and measure its error.
+
+    Hover is pinned: the static coefficients make the simple model's thrust and torque at
+    V = 0 and ``envelope.hover`` rpm equal the full model's (to round-off); the speed
+    terms are fitted by least squares, relative to each point's static load, to what
+    remains, each within its physical sign (:data:`PHYSICAL_SIGN`).
+
+    Parameters
+    ----------
+    target : {"rotorpy", "gazebo-classic", "gz-sim", "multinomial"}
+        Also the former names "gazebo" (gazebo-classic) and "gill2019" (multinomial, with
+        a FutureWarning).
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
+    envelope : Envelope, optional
+        Default: :func:`default_envelope`.
+    n_points : int
+        Random operating points in the envelope (seeded), >= 20.
+    seed : int
+    params_label : str
+        Recorded in the result.
+
+    Returns
+    -------
+    SimExport
+
+    Raises
+    ------
+    ValueError
+        Unknown target; ``n_points`` not an integer in [20, 1,000,000]; ``seed`` not an
+        integer >= 0; ``envelope`` not an Envelope; fewer than 10 converged points; an
+        envelope where gazebo-classic's thrust fade is 0 at every point (|V_z| >= 25 m/s),
+        or terms it cannot separate (:data:`MAX_CONDITION`).
+
+    Warns
+    -----
+    UserWarning
+        Each coefficient fixed at 0 because the envelope cannot determine it (also in
+        ``SimExport.fixed``); each held at 0 by its physical sign (``SimExport.held``); an
+        envelope whose every point is flagged (its errors outside flagged regions are
+        NaN: nothing to measure them on).
+    """
+    air = getattr(params, "air", None) if air is None else air  # checked below
+    check_model_args(propeller, params, air)
+    target = canonical_target(target)
+    for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):
+        x = _real(value)
+        if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
+            raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
+    if envelope is None:
+        envelope = default_envelope(propeller)
+    elif not isinstance(envelope, Envelope):
+        raise ValueError(f"envelope must be an Envelope or None, got {type(envelope).__name__}")
+    s = _samples(propeller, params, air, envelope, int(n_points), int(seed))
+    fixed: dict = {}
+    held: dict = {}
+    coefficients = {k: (float(v) if not isinstance(v, list) else v)
+                    for k, v in _fit(target, s, propeller.radius, air.rho, fixed, held).items()}
+    for name, why in fixed.items():
+        warnings.warn(f"{name} fixed at 0: {why}", UserWarning, stacklevel=2)
+    for name, why in held.items():
+        warnings.warn(f"{name} {why}", UserWarning, stacklevel=2)
+    errors = _errors(target, coefficients, s)
+    if errors["points_flagged"] == s["omega"].size:
+        warnings.warn(f"every one of the {s['omega'].size} points of the envelope is flagged (vortex ring or multiple "
+                      "roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
+    meta = {"propeller": propeller.name, "params": params_label or params.section_model,
+            "section_model": params.section_model, "propmap_version": __version__,
+            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed), "rho": float(air.rho)}
+    return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed, held)
