@@ -76,10 +76,25 @@ def lookups(rm: RotorMap, prop, params, air, n=10_000):
         t = time.perf_counter()
         rm.loads(o, v, x)
         single.append(time.perf_counter() - t)
+    # one rotor's wrench (RotorMap.wrench's scalar path), alternated with loads in the same loop
+    wrench, single2 = [], []
+    axis = np.array([0.0, 0.0, 1.0])
+    for i in range(20_000):
+        o, v, x = float(om[i % n]), float(V[i % n]), float(b[i % n])
+        vel = np.array([v * math.sin(x), 0.0, v * math.cos(x)])
+        t = time.perf_counter()
+        rm.wrench(vel, axis, o, "ccw")
+        t1 = time.perf_counter()
+        rm.loads(o, v, x)
+        t2 = time.perf_counter()
+        wrench.append(t1 - t)
+        single2.append(t2 - t1)
     return {"interpolation": rm.interpolation, "batch_points": n,
             "batch_us_per_point_median": 1e6 * float(np.median(batch)) / n,
             "model_us_per_point": 1e6 * t_model / n, "ratio_model_to_map_batch": t_model / float(np.median(batch)),
-            "single_python_call_us_median": 1e6 * float(np.median(single))}
+            "single_python_call_us_median": 1e6 * float(np.median(single)),
+            "single_wrench_call_us_median": 1e6 * float(np.median(wrench)),
+            "ratio_wrench_to_loads_single": float(np.median(wrench)) / float(np.median(single2))}
 
 
 C_BENCH = r"""

@@ -95,6 +95,30 @@ def test_scalar_and_array_queries_agree(small_map, interpolation):
     assert a.thrust == b.thrust[0] and a.rolling_moment == b.rolling_moment[0] and a.flagged == b.flagged[0]
 
 
+@pytest.mark.parametrize("spin", ["ccw", "cw", -1, 1.0])
+def test_scalar_wrench_agrees_with_the_array_path(small_map, spin):
+    """One rotor's plain numbers take RotorMap.wrench's Python fast path; as arrays of one row, the
+    general path: the same vectors to round-off, axial and zero velocity included (e_ip = 0)."""
+    _, _, ds = small_map
+    rm = RotorMap(ds)
+    om = 6100 * RPM
+    for velocity, axis in (((3.0, -2.0, 4.5), (0.1, 0.2, 2.0)), ((0.0, 0.0, 5.0), (0.0, 0.0, 1.0)),
+                           ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0)), (np.array([-4.0, 1.0, -1.5]), np.array([0.0, 0.0, 3.0]))):
+        a = rm.wrench(velocity, axis, om, spin)
+        b = rm.wrench(np.array([velocity], float), np.array([axis], float), np.array([om]), spin)
+        assert isinstance(a.loads.thrust, float) and a.force.shape == (3,)  # the fast path answered
+        np.testing.assert_allclose(a.force, b.force[0], rtol=1e-13, atol=1e-15)
+        np.testing.assert_allclose(a.torque, b.torque[0], rtol=1e-13, atol=1e-15)
+        assert a.loads.flagged == b.loads.flagged[0]
+    # what the fast path does not take goes to the general path, which refuses it as before
+    for bad, match in ((((0.0, 0.0, 1.0), (0.0, 0.0, 0.0)), "axis must be non-zero"),
+                       (((math.nan, 0.0, 1.0), (0.0, 0.0, 1.0)), "velocity must be finite")):
+        with pytest.raises(ValueError, match=match):
+            rm.wrench(*bad, om)
+    with pytest.raises(ValueError, match="spin must be"):
+        rm.wrench((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), om, True)
+
+
 @pytest.mark.parametrize("spin", ["ccw", "cw"])
 def test_map_wrench_equals_rotor_wrench_at_nodes(small_map, spin):
     prop, params, ds = small_map

@@ -414,6 +414,19 @@ def _cell_flags(bad: np.ndarray) -> np.ndarray:
     return cell
 
 
+_SPIN = {"ccw": 1.0, "cw": -1.0}
+
+
+def _three(value):
+    """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers
+    (such an array, or a tuple or list of three floats); else None."""
+    if type(value) is np.ndarray:
+        return value if value.shape == (3,) and value.dtype == np.float64 else None
+    if type(value) in (tuple, list) and len(value) == 3 and all(type(x) is float for x in value):
+        return np.array(value)
+    return None
+
+
 class MapLoads(NamedTuple):
     """Loads interpolated in a map; arrays of the broadcast shape S of the queries.
 
@@ -446,8 +459,7 @@ class MapLoads(NamedTuple):
         return self.torque * self.omega
 
 
-@dataclass(frozen=True)
-class MapWrench:
+class MapWrench(NamedTuple):
     """Force and moment vectors from a map (as :class:`propmap.RotorWrench`).
 
     Attributes
@@ -523,7 +535,13 @@ class RotorMap:
         # the grid's box as Python floats, for the scalar fast path of loads()
         self._box = (float(self.omega[0]), float(self.omega[-1]), float(self.airspeed[0]), float(self.airspeed[-1]),
                      float(self.incidence[0]), float(self.incidence[-1]))
+        from .core import _interp
+
+        # the scalar paths' kernels and policies, looked up once
+        self._interp_point, self._wrench_point = _interp.interp_point, _interp.wrench_point
+        self._policy = {"raise": _interp.CLIP, "clip": _interp.CLIP, "nan": _interp.NAN}
         self._out1 = np.empty((1, len(LOADS)))
+        self._out1w = np.empty((1, len(LOADS) + 6))
         self._in1 = np.empty(1, dtype=np.bool_)
         self._fl1 = np.empty(1, dtype=np.bool_)
 
@@ -610,25 +628,15 @@ class RotorMap:
             Non-numeric or NaN queries, an unknown policy, or (policy "raise") a query
             outside the grid, naming the argument and the grid's range.
         """
+        if isinstance(omega, float) and isinstance(airspeed, float) and isinstance(incidence, float):
+            fast = self._loads1(omega, airspeed, incidence, out_of_grid)
+            if fast is not None:
+                return fast
         from .core import _interp
 
         if out_of_grid not in POLICIES:
             raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
         policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
-        if isinstance(omega, float) and isinstance(airspeed, float) and isinstance(incidence, float):
-            # the scalar fast path (a simulator's call): no arrays built, no broadcasting
-            o0, o1, v0, v1, b0, b1 = self._box
-            inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
-            if inside or (out_of_grid in ("clip", "nan") and not (math.isnan(omega) or math.isnan(airspeed)
-                                                                  or math.isnan(incidence))):
-                _interp.interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag,
-                                     self.radius, omega, airspeed, incidence, policy, self._order, self._out1,
-                                     self._in1, self._fl1)
-                t, d, q, m = self._out1[0].tolist()
-                omega = float(omega)
-                if not inside and out_of_grid == "clip":
-                    omega = min(max(omega, o0), o1)
-                return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
         q = self._queries(omega, airspeed, incidence, out_of_grid)
         shape = q[0].shape
         flat = [np.ascontiguousarray(a.reshape(-1)) for a in q]
@@ -664,6 +672,9 @@ class RotorMap:
         ValueError
             As :func:`propmap.rotor_wrench` and :meth:`loads`.
         """
+        fast = self._wrench1(velocity, axis, omega, spin, out_of_grid)
+        if fast is not None:
+            return fast
         from .core.vector import _check_spin, _spin_sign, disk_frame, wrench_vectors
 
         V, z, speed, beta = disk_frame(velocity, axis)
@@ -672,6 +683,51 @@ class RotorMap:
         _check_spin(s, np.shape(ml.thrust))
         force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s)
         return MapWrench(force=force, torque=moment, loads=ml)
+
+    def _loads1(self, omega: float, airspeed: float, incidence: float, out_of_grid):
+        """:meth:`loads` at one point of Python floats (a simulator's call): no arrays built, no
+        broadcasting. None where the general path must answer (an unknown policy, a NaN, or
+        a query outside the grid under "raise"), which then raises what it raises."""
+        o0, o1, v0, v1, b0, b1 = self._box
+        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
+        if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
+                           or math.isnan(incidence)):
+            return None
+        if out_of_grid not in POLICIES:
+            return None
+        self._interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, omega,
+                     airspeed, incidence, self._policy[out_of_grid], self._order, self._out1, self._in1,
+                     self._fl1)
+        t, d, q, m = self._out1[0].tolist()
+        omega = float(omega)
+        if not inside and out_of_grid == "clip":
+            omega = min(max(omega, o0), o1)
+        return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
+
+    def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
+        """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
+        (core._interp.wrench_point: the arithmetic of core.vector.disk_frame and
+        wrench_vectors), without building and broadcasting arrays. None where the inputs
+        are not one rotor's plain numbers, or not finite, or outside the grid under
+        "raise": the general path then answers (and raises what it raises)."""
+        v, a = _three(velocity), _three(axis)
+        if v is None or a is None or not isinstance(omega, float) or omega != omega:
+            return None
+        s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
+            float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
+        policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
+        if s is None or policy is None:
+            return None
+        out = self._out1w
+        if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, v, a,
+                              omega, s, policy, out_of_grid == "raise", self._order, out, self._in1, self._fl1):
+            return None
+        t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
+        inside = bool(self._in1[0])
+        if not inside and out_of_grid == "clip":
+            omega = min(max(omega, self._box[0]), self._box[1])
+        return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
+                         MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0])))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """:func:`check_map` with the model recorded in the map."""

@@ -178,3 +178,68 @@ def interp_batch(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, ord
 def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, inside, flagged):
     """One query (scalars q0, q1, q2) into out[0, :], inside[0], flagged[0]."""
     _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, 0, inside, flagged)
+
+
+@numba.njit(**_FLAGS)
+def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, spin, policy, strict, order, out,
+                 inside, flagged):
+    """One rotor's force and moment vectors from the map (maps.RotorMap.wrench's scalar path).
+
+    The disk frame and the vectors as core.vector.disk_frame and wrench_vectors: the axis
+    scaled by its largest component and normalised, speed |V|, incidence
+    beta = arccos(V . z / |V|) (0 where V = 0), e_ip the in-plane unit velocity (0 where the
+    in-plane speed is below 1e-12 of the speed), force T z - D e_ip, moment
+    -spin (Q z + M_R e_ip). out[0, :] receives T, D, Q, M_R, the force (3) and the moment (3).
+
+    Returns
+    -------
+    int
+        0: done; 1: a zero or non-finite axis, or a velocity that is not finite or beyond
+        1e150 m/s; 2: outside the grid with ``strict`` (the raising policy). On 1 and 2
+        nothing is written: the caller's general path answers and raises what it raises.
+    """
+    vx = velocity[0]
+    vy = velocity[1]
+    vz = velocity[2]
+    a0 = axis[0]
+    a1 = axis[1]
+    a2 = axis[2]
+    amax = max(abs(a0), abs(a1), abs(a2))
+    vmax = max(abs(vx), abs(vy), abs(vz))
+    if not (amax > 0.0 and amax < np.inf and vmax < 1e150):  # NaN fails every comparison
+        return 1
+    a0 /= amax
+    a1 /= amax
+    a2 /= amax
+    n = np.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
+    zx = a0 / n
+    zy = a1 / n
+    zz = a2 / n
+    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+    axial = vx * zx + vy * zy + vz * zz
+    beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
+    if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
+        return 2
+    _one(ax0, ax1, ax2, table, cellflag, radius, omega, speed, beta, policy, order, out, 0, inside, flagged)
+    ix = vx - axial * zx
+    iy = vy - axial * zy
+    iz = vz - axial * zz
+    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
+    ex = 0.0
+    ey = 0.0
+    ez = 0.0
+    if n_ip > 1e-12 * max(speed, 1e-300):
+        ex = ix / n_ip
+        ey = iy / n_ip
+        ez = iz / n_ip
+    T = out[0, 0]
+    D = out[0, 1]
+    Q = out[0, 2]
+    M = out[0, 3]
+    out[0, 4] = T * zx - D * ex
+    out[0, 5] = T * zy - D * ey
+    out[0, 6] = T * zz - D * ez
+    out[0, 7] = -spin * (Q * zx + M * ex)
+    out[0, 8] = -spin * (Q * zy + M * ey)
+    out[0, 9] = -spin * (Q * zz + M * ez)
+    return 0
