@@ -18,7 +18,6 @@ import json
 import math
 import os
 import re
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
