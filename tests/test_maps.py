@@ -95,6 +95,35 @@ def test_scalar_and_array_queries_agree(small_map, interpolation):
     assert a.thrust == b.thrust[0] and a.rolling_moment == b.rolling_moment[0] and a.flagged == b.flagged[0]
 
 
+def test_spin_up_below_the_grid_and_a_stopped_rotor(small_map):
+    """0 <= Omega < the lowest rpm under "clip": the lowest row's loads x (Omega / Omega_min)^2 (was the lowest
+    row's loads: a stopped rotor gave the thrust of the lowest rpm); a signed Omega is refused."""
+    _, _, ds = small_map
+    rm = RotorMap(ds)
+    o0, V, b = float(rm.omega[0]), 6.0, 1.2
+    edge = rm.loads(o0, V, b)
+    for frac in (0.0, 0.5, 0.999):
+        for query in (lambda om: rm.loads(om, V, b, out_of_grid="clip"),
+                      lambda om: rm.loads(np.array([om]), V, b, out_of_grid="clip")):
+            got = query(frac * o0)
+            for k in ("thrust", "drag", "torque", "rolling_moment"):
+                assert float(np.squeeze(getattr(got, k))) == pytest.approx(frac**2 * getattr(edge, k), rel=1e-12,
+                                                                           abs=1e-300)
+            assert not np.squeeze(got.inside) and np.squeeze(got.flagged)
+            assert float(np.squeeze(got.omega)) == frac * o0 and float(np.squeeze(got.power)) == pytest.approx(
+                frac**3 * edge.power, rel=1e-12, abs=1e-300)
+    w = rm.wrench((V * math.sin(b), 0.0, V * math.cos(b)), (0.0, 0.0, 1.0), 0.0, "cw", out_of_grid="clip")
+    assert np.all(w.force == 0.0) and np.all(w.torque == 0.0)
+    with pytest.raises(ValueError, match="outside the map's grid"):  # the default policy still refuses it
+        rm.loads(0.0, V, b)
+    for policy in ("raise", "clip", "nan"):
+        for om in (-1.0, np.array([10.0, -1.0])):
+            with pytest.raises(ValueError, match="omega must be >= 0 rad/s, the rotation rate's magnitude"):
+                rm.loads(om, V, b, out_of_grid=policy)
+        with pytest.raises(ValueError, match="omega must be >= 0 rad/s"):
+            rm.wrench((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), -500.0, out_of_grid=policy)
+
+
 @pytest.mark.parametrize("spin", ["ccw", "cw", -1, 1.0])
 def test_scalar_wrench_agrees_with_the_array_path(small_map, spin):
     """One rotor's plain numbers take RotorMap.wrench's Python fast path; as arrays of one row, the

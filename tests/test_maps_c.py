@@ -62,15 +62,19 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
     rng = np.random.default_rng(4)
     n = 400
     om = rng.uniform(rm.omega[0] * 0.8, rm.omega[-1] * 1.1, n)  # some outside the grid
+    om[:6] = (0.0, 0.0, rm.omega[0] / 2, rm.omega[0] / 2, -3.0, -3.0)  # stopped, spin-up, signed
     V = rng.uniform(0, 18, n)
     b = rng.uniform(0, math.pi, n)
     policy = rng.integers(0, 3, n)
+    policy[:6] = (0, 1, 0, 1, 0, 1)
     stdin = "".join(f"{float(o)!r} {float(v)!r} {float(x)!r} {int(p)}\n" for o, v, x, p in zip(om, V, b, policy))
     rows = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
                                                              check=True).stdout.splitlines()], dtype=float)
     status, c_out = rows[:, 0].astype(int), rows[:, 1:]
+    assert np.all(status[om < 0] == -1)  # a signed omega is refused, as RotorMap refuses it
+    assert np.all(c_out[0] == 0.0) and status[0] == 2  # a stopped rotor under CLIP: zero loads
     for name, code in (("clip", 0), ("nan", 1)):
-        m = policy == code
+        m = (policy == code) & (om >= 0)
         got = rm.loads(om[m], V[m], b[m], out_of_grid=name)
         py = np.column_stack([got.thrust, got.drag, got.torque, got.rolling_moment])
         # relative to each load's own largest value (T, D, Q, M_R apart)
@@ -80,7 +84,7 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
         assert ok.all(), np.nanmax(np.abs(c_out[m] - py) / scale)
         expect = np.where(~got.inside, 2, np.where(got.flagged, 1, 0))
         np.testing.assert_array_equal(status[m], expect)
-    m = policy == 2  # error policy: -1 outside and the outputs untouched, as "raise" refuses them
+    m = (policy == 2) & (om >= 0)  # error policy: -1 outside and the outputs untouched, as "raise" refuses them
     inside = (om >= rm.omega[0]) & (om <= rm.omega[-1]) & (V <= rm.airspeed[-1])
     assert np.all(status[m & ~inside] == -1) and np.all(c_out[m & ~inside] == -12345.0)
     assert np.all(status[m & inside] >= 0)

@@ -29,12 +29,15 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  * int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4]);
  *   omega [rad/s], airspeed [m/s], incidence [rad] (0 climb, pi/2 edgewise, pi descent).
  *   out: thrust T [N], drag D [N], torque Q [N m], rolling moment M_R [N m].
- *   policy: {PREFIX}_CLIP (outside the grid: the value at the nearest grid point),
+ *   policy: {PREFIX}_CLIP (outside the grid: the value at the nearest grid point, except
+ *           below the lowest rpm, 0 <= omega < omega_min, spin-up or a stopped rotor: the
+ *           lowest row's loads times (omega / omega_min)^2, 0 at omega = 0),
  *           {PREFIX}_NAN (outside: NaN), {PREFIX}_ERROR (outside: out untouched, returns -1).
  *   returns 0 inside an unflagged cell, 1 inside a flagged cell (vortex ring or multiple
  *   roots at a node of the cell or of a neighbour cell: the error bound does not hold),
  *   2 outside the grid (clipped or NaN),
- *   -1 outside with {PREFIX}_ERROR, a NaN argument or an unknown policy.
+ *   -1 outside with {PREFIX}_ERROR, a NaN argument, omega < 0 (give its magnitude) or an
+ *   unknown policy.
  */
 #ifndef {GUARD}
 #define {GUARD}
@@ -76,7 +79,8 @@ static inline int {prefix}_locate(const double *ax, int n, double x, double *fra
 static inline int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4])
 {{
     const double *a0 = {prefix}_omega, *a1 = {prefix}_airspeed, *a2 = {prefix}_incidence;
-{decl}    if (omega != omega || airspeed != airspeed || incidence != incidence) return -1;
+{decl}    double fade = 1.0;
+    if (omega != omega || airspeed != airspeed || incidence != incidence || omega < 0.0) return -1;
     if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]
              && a2[0] <= incidence && incidence <= a2[{n2} - 1];
@@ -86,6 +90,7 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
             for (k = 0; k < 4; k++) out[k] = NAN;
             return 2;
         }}
+        if (omega < a0[0]) fade = (omega / a0[0]) * (omega / a0[0]);
         omega = omega < a0[0] ? a0[0] : (omega > a0[{n0} - 1] ? a0[{n0} - 1] : omega);
         airspeed = airspeed < a1[0] ? a1[0] : (airspeed > a1[{n1} - 1] ? a1[{n1} - 1] : airspeed);
         incidence = incidence < a2[0] ? a2[0] : (incidence > a2[{n2} - 1] ? a2[{n2} - 1] : incidence);
@@ -107,7 +112,7 @@ _LINEAR_BODY = """    i0 = {prefix}_locate(a0, {n0}, omega, &f0);
     g0 = 1.0 - f0; g1 = 1.0 - f1; g2 = 1.0 - f2;
     w[0] = g0 * g1 * g2; w[1] = g0 * g1 * f2; w[2] = g0 * f1 * g2; w[3] = g0 * f1 * f2;
     w[4] = f0 * g1 * g2; w[5] = f0 * g1 * f2; w[6] = f0 * f1 * g2; w[7] = f0 * f1 * f2;
-    s = omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed;
+    s = (omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed) * fade;
     for (k = 0; k < 4; k++) {{
         const {ctype} *t = {prefix}_table + k;
 #define {PREFIX}_T(a, b, c) ((double)t[(((i0 + (a)) * {n1} + (i1 + (b))) * {n2} + (i2 + (c))) * 4])
@@ -160,7 +165,7 @@ static inline int {prefix}_weights(const double *ax, int n, double x, double w[4
 _CUBIC_BODY = """    i0 = {prefix}_weights(a0, {n0}, omega, w0, j0);
     i1 = {prefix}_weights(a1, {n1}, airspeed, w1, j1);
     i2 = {prefix}_weights(a2, {n2}, incidence, w2, j2);
-    s = omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed;
+    s = (omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed) * fade;
     for (a = 0; a < 4; a++) {{
         for (b = 0; b < 4; b++) {{
             const {ctype} *t = {prefix}_table + (j0[a] * {n1} + j1[b]) * {n2} * 4;

@@ -435,7 +435,8 @@ class MapLoads(NamedTuple):
         T [N], D [N], Q [N m], M_R [N m] as in :class:`propmap.RotorLoads`.
     omega : ndarray
         Omega [rad/s] at which the loads hold: the query's, or under ``out_of_grid="clip"``
-        its value clipped to the grid (so ``power`` is the boundary point's).
+        above the grid the highest rpm's (so ``power`` is the boundary point's); below the
+        grid the query's, at which the scaled loads hold.
     inside : ndarray of bool
         The query lies in the grid (else it was clipped to it or set to NaN).
     flagged : ndarray of bool
@@ -594,6 +595,9 @@ class RotorMap:
         for name, a in zip(("omega", "airspeed", "incidence"), q):
             if np.isnan(a).any():
                 raise ValueError(f"{name} must not be NaN")
+        if (q[0] < 0).any():
+            raise ValueError(f"omega must be >= 0 rad/s, the rotation rate's magnitude (the sense is the spin), got "
+                             f"{float(q[0][q[0] < 0].reshape(-1)[0])!r}")
         if out_of_grid == "raise":
             for name, a, ax, unit in (("omega", q[0], self.omega, "rad/s"), ("airspeed", q[1], self.airspeed, "m/s"),
                                       ("incidence", q[2], self.incidence, "rad")):
@@ -615,7 +619,12 @@ class RotorMap:
         out_of_grid : {"raise", "clip", "nan"}
             A query outside the grid raises ValueError ("raise", the default), takes the
             value at the nearest boundary point ("clip"), or gets NaN ("nan"); the last two
-            set ``inside = False`` and ``flagged = True``. Never silent extrapolation.
+            set ``inside = False`` and ``flagged = True``. Never silent extrapolation. Under
+            "clip", a rotation rate below the grid's lowest, 0 <= Omega < Omega_min (spin-up,
+            a stopped or windmill-starting rotor), takes the lowest row's loads at the same
+            airspeed and incidence scaled by (Omega / Omega_min)^2, the loads of a rotor with
+            constant coefficients: 0 at Omega = 0 (a parked rotor's blade drag is not
+            modelled), continuous at Omega_min.
 
         Returns
         -------
@@ -624,8 +633,9 @@ class RotorMap:
         Raises
         ------
         ValueError
-            Non-numeric or NaN queries, an unknown policy, or (policy "raise") a query
-            outside the grid, naming the argument and the grid's range.
+            Non-numeric or NaN queries, Omega < 0 (a signed rate: give its magnitude, the
+            sense is the spin of :meth:`wrench`), an unknown policy, or (policy "raise") a
+            query outside the grid, naming the argument and the grid's range.
         """
         if isinstance(omega, float) and isinstance(airspeed, float) and isinstance(incidence, float):
             fast = self._loads1(omega, airspeed, incidence, out_of_grid)
@@ -645,7 +655,8 @@ class RotorMap:
         flagged = np.empty(n, dtype=np.bool_)
         _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius,
                              *flat, policy, self._order, out, inside, flagged)
-        om = np.clip(q[0], self.omega[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
+        # under "clip" the loads hold at the top row above the grid, at the query's Omega below it (scaled)
+        om = np.minimum(q[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
         return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=om,
                         inside=inside.reshape(shape), flagged=flagged.reshape(shape))
 
@@ -690,7 +701,7 @@ class RotorMap:
         o0, o1, v0, v1, b0, b1 = self._box
         inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
-                           or math.isnan(incidence)):
+                           or math.isnan(incidence) or omega < 0):
             return None
         if out_of_grid not in POLICIES:
             return None
@@ -700,7 +711,7 @@ class RotorMap:
         t, d, q, m = self._out1[0].tolist()
         omega = float(omega)
         if not inside and out_of_grid == "clip":
-            omega = min(max(omega, o0), o1)
+            omega = min(omega, o1)  # below the grid the loads are scaled to the query's
         return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
 
     def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
@@ -724,7 +735,7 @@ class RotorMap:
         t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
         inside = bool(self._in1[0])
         if not inside and out_of_grid == "clip":
-            omega = min(max(omega, self._box[0]), self._box[1])
+            omega = min(omega, self._box[1])  # below the grid: scaled to the query's
         return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
                          MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0])))
 

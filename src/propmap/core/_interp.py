@@ -18,9 +18,12 @@ nodes and reproduces any polynomial of degree 2 in each axis exactly. This is th
 spacing (Bessel's slopes, de Boor, A Practical Guide to Splines, 2001, ch. IV). An axis
 of 2 nodes is interpolated linearly.
 
-Out-of-grid policy (``policy``): CLIP (0) moves the query onto the grid's boundary,
-NAN (1) returns NaN; both set ``inside[i] = False``. The raising policy is applied by the
-caller before this kernel runs.
+Out-of-grid policy (``policy``): CLIP (0) moves the query onto the grid's boundary, except
+that a rotation rate below the grid's lowest, 0 <= Omega < Omega_min (spin-up, a stopped
+rotor), takes the lowest row's loads scaled by (Omega / Omega_min)^2: the loads of a
+constant-coefficient rotor, zero at Omega = 0 (a parked rotor's blade drag is not
+modelled); NAN (1) returns NaN; both set ``inside[i] = False``. The raising policy, and the
+refusal of Omega < 0, are applied by the caller before this kernel runs.
 """
 
 from __future__ import annotations
@@ -95,16 +98,19 @@ def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out,
     nvar = table.shape[3]
     ok = ax0[0] <= q0 <= ax0[-1] and ax1[0] <= q1 <= ax1[-1] and ax2[0] <= q2 <= ax2[-1]
     inside[i] = ok
+    fade = 1.0
     if not ok:
         if policy == NAN:
             for k in range(nvar):
                 out[i, k] = np.nan
             flagged[i] = True
             return
+        if q0 < ax0[0]:  # spin-up below the grid (0 <= q0, the caller's check): the lowest row's loads x (q0/min)^2
+            fade = (q0 / ax0[0]) * (q0 / ax0[0])
         q0 = min(max(q0, ax0[0]), ax0[-1])
         q1 = min(max(q1, ax1[0]), ax1[-1])
         q2 = min(max(q2, ax2[0]), ax2[-1])
-    s = q0 * q0 * radius * radius + q1 * q1
+    s = (q0 * q0 * radius * radius + q1 * q1) * fade
     if order == 3:
         i0, u0, u1, u2, u3 = _cubic_weights(ax0, q0)
         i1, v0, v1, v2, v3 = _cubic_weights(ax1, q1)
@@ -194,8 +200,8 @@ def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, 
     Returns
     -------
     int
-        0: done; 1: a zero or non-finite axis, or a velocity that is not finite or beyond
-        1e150 m/s; 2: outside the grid with ``strict`` (the raising policy). On 1 and 2
+        0: done; 1: a zero or non-finite axis, a velocity that is not finite or beyond
+        1e150 m/s, or Omega < 0; 2: outside the grid with ``strict`` (the raising policy). On 1 and 2
         nothing is written: the caller's general path answers and raises what it raises.
     """
     vx = velocity[0]
@@ -206,7 +212,7 @@ def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, 
     a2 = axis[2]
     amax = max(abs(a0), abs(a1), abs(a2))
     vmax = max(abs(vx), abs(vy), abs(vz))
-    if not (amax > 0.0 and amax < np.inf and vmax < 1e150):  # NaN fails every comparison
+    if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
         return 1
     a0 /= amax
     a1 /= amax
