@@ -75,6 +75,9 @@ def test_plot_rpm_draws_the_nearest_nodes(capsys, tmp_path):
     assert code == 0, err
     assert sorted(p.name for p in (tmp_path / "p").iterdir()) == ["map_contours_3000rpm.png",
                                                                   "map_contours_9000rpm.png"]
+    # said, not silent (was: --plot-rpm 8000 drew 8165 rpm without a word)
+    assert "propmap: warning: --plot-rpm 3100: drawn at the nearest node of the rpm axis, 3000 rpm" in err
+    assert "--plot-rpm 8900: drawn at the nearest node of the rpm axis, 9000 rpm" in err
 
 
 # ---- (2) export-sim: coefficients the envelope cannot determine are fixed and said, or refused ----

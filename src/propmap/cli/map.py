@@ -10,7 +10,7 @@ from pathlib import Path
 
 import click
 
-from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
+from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
                       check_section_match, echo_json, given, load_params, load_prop, parse_names, resolve_air,
                       with_air_options, with_prop_options)
 
@@ -324,6 +324,9 @@ def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs) -> list:
                 raise InputError(f"--plot-rpm: {part.strip():.40} falls on the node {node:.0f} rpm of another "
                                  "value (maps are drawn at nodes)")
             nodes.append(node)
+            if abs(node - r) > 1e-9 * node:
+                warn(f"--plot-rpm {part.strip():.40}: drawn at the nearest node of the rpm axis, {node:.0f} rpm (maps "
+                     "are drawn at nodes; give --rpm with that value as a node to draw it)")
     paths = check_out_dir("--plot", plot_dir, [f"map_contours_{n:.0f}rpm.png" for n in nodes], inputs)
     return list(zip(nodes, paths))
 
