@@ -10,7 +10,8 @@ PE0 geometry). Writes benchmarks/results/maps.json atomically and prints it.
   timed beside one rotor_loads batch of the same number of points in the same run (ratio);
   the build includes its error check (2,000 random points, about 10% of the work).
 * Lookups: a batch of 10,000 random points (median of 20), the model on the same points
-  (ratio); one scalar Python call (median of 20,000); the C function, compiled with the
+  (ratio); one scalar Python call (median of 20,000); a quadrotor step from the map (VehicleMap, batch and one
+  step) against the full vehicle model; the C function, compiled with the
   system compiler at -O2 (ns per call over 10^6 calls of varying points).
 * Size: the default map's netCDF file (zlib level 4).
 * Lookups and the C function with the multilinear interpolation, then with the cubic
@@ -152,6 +153,34 @@ def density(prop, params, air, quick):
     return out
 
 
+def vehicle_step(rm: RotorMap, params, n=10_000):
+    """A quadrotor step (four apce_8x6, data/examples/quadrotor.toml) from the map (VehicleMap.wrench, a batch of n
+    steps) against the full vehicle model (vehicle_wrench, 500 steps), in one run: us per vehicle step and ratio."""
+    from propmap.vehicle import VehicleMap, read_vehicle, vehicle_wrench
+
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    rng = np.random.default_rng(3)
+    v = rng.normal(0, 3, (n, 3))
+    v[:, 2] = np.abs(v[:, 2])
+    w = rng.normal(0, 1, (n, 3))
+    om = rng.uniform(500, 1100, (n, 4))
+    vm = VehicleMap(veh, rm)
+    vm.wrench(v[:10], w[:10], om[:10], out_of_grid="clip")
+    batch = [timed(lambda: vm.wrench(v, w, om, out_of_grid="clip"))[0] for _ in range(10)]
+    single = []
+    for i in range(2000):
+        t = time.perf_counter()
+        vm.wrench(v[i], w[i], om[i], out_of_grid="clip")
+        single.append(time.perf_counter() - t)
+    m = 500
+    vehicle_wrench(veh, params, v[:5], w[:5], om[:5], on_failure="flag")
+    t_model, _ = timed(lambda: vehicle_wrench(veh, params, v[:m], w[:m], om[:m], on_failure="flag"))
+    per_step = float(np.median(batch)) / n
+    return {"rotors": 4, "batch_steps": n, "map_batch_us_per_step_median": 1e6 * per_step,
+            "map_single_step_us_median": 1e6 * float(np.median(single)),
+            "model_us_per_step": 1e6 * t_model / m, "ratio_model_to_map_batch": (t_model / m) / per_step}
+
+
 def main() -> None:
     from bench_solver import cpu_name
 
@@ -171,6 +200,7 @@ def main() -> None:
            "build_default_grid": default_build, "build_21x26x37": issue_build,
            "lookups": lookups(rm, prop, params, air), "lookups_cubic": lookups(RotorMap(ds), prop, params, air),
            "c_linear": c_speed(rm), "c_cubic": c_speed(RotorMap(ds)),
+           "vehicle_step_cubic": vehicle_step(RotorMap(ds), params),
            "default_map_netcdf_bytes": size,
            "default_map_check": {k: v for k, v in ds.attrs.items() if k.startswith("check_") and k != "check_normalisation"},
            "density": density(prop, params, air, quick)}

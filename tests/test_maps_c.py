@@ -92,6 +92,60 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
     assert f"; {interpolation} interpolation." in header and ("_weights(" in header) == (interpolation == "cubic")
 
 
+WRENCH_DRIVER = r"""
+#include <stdio.h>
+#include "map.h"
+int main(void)
+{
+    double v[3], a[3], o, f[3], m[3];
+    int spin, policy, status;
+    while (scanf("%lf %lf %lf %lf %lf %lf %lf %d %d", &v[0], &v[1], &v[2], &a[0], &a[1], &a[2], &o, &spin,
+                 &policy) == 9) {
+        f[0] = f[1] = f[2] = m[0] = m[1] = m[2] = -12345.0;
+        status = pm_map_wrench(v, a, o, spin, policy, f, m);
+        printf("%d %.17g %.17g %.17g %.17g %.17g %.17g\n", status, f[0], f[1], f[2], m[0], m[1], m[2]);
+    }
+    return 0;
+}
+"""
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_c_wrench_equals_the_python_wrench(tmp_path, rotor_map):
+    """pm_map_wrench (velocity, axis, omega, spin -> force and moment vectors) against RotorMap.wrench with the
+    same interpolation: random directions and speeds, both spins, axial and zero velocity; bad inputs -1."""
+    write_c_header(rotor_map, tmp_path / "map.h", dtype="double")
+    (tmp_path / "w.c").write_text(WRENCH_DRIVER)
+    exe = tmp_path / "w"
+    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
+                    str(tmp_path / "w.c"), "-lm"], check=True, capture_output=True, text=True)
+    rng = np.random.default_rng(7)
+    rows = []
+    for i in range(200):
+        d = rng.normal(size=3)
+        v = d / np.linalg.norm(d) * rng.uniform(0, 14)
+        a = rng.normal(size=3) * rng.uniform(0.1, 5)
+        if i == 0:
+            v = np.zeros(3)
+        if i == 1:
+            v = 3.0 * a / np.linalg.norm(a)  # axial: e_ip = 0
+        rows.append((*v, *a, float(rng.uniform(rotor_map.omega[0], rotor_map.omega[-1])), int(rng.choice([1, -1]))))
+    bad = [(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 500.0, 1), (math.nan, 0.0, 0.0, 0.0, 0.0, 1.0, 500.0, 1),
+           (1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 500.0, 2), (1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -5.0, 1)]
+    stdin = "".join(" ".join(repr(float(x)) for x in r[:7]) + f" {r[7]} 0\n" for r in rows + bad)
+    out = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
+                                                            check=True).stdout.splitlines()], dtype=float)
+    for r, o in zip(rows, out):
+        w = rotor_map.wrench(np.array(r[:3]), np.array(r[3:6]), r[6], r[7], out_of_grid="clip")
+        expect = 2 if not w.loads.inside else (1 if w.loads.flagged else 0)
+        assert int(o[0]) == expect
+        np.testing.assert_allclose(o[1:4], w.force, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(o[4:7], w.torque, rtol=1e-10, atol=1e-12)
+    assert np.all(out[len(rows):, 0] == -1) and np.all(out[len(rows):, 1:] == -12345.0)
+    header = (tmp_path / "map.h").read_text()
+    assert "force = T z - D e_ip; moment = -spin (Q z + M_R e_ip)" in header
+
+
 def test_bad_dtype_and_name_are_refused(tmp_path, rotor_map):
     with pytest.raises(ValueError, match="dtype"):
         write_c_header(rotor_map, tmp_path / "m.h", dtype="half")

@@ -25,7 +25,7 @@ _EXPORTS = {
     "read_geometry": "io.readers", "read_params": "io.params_file", "resolve_params": "io.params_file",
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
     "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
-    "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle",
+    "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle", "VehicleMap": "vehicle",
     "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim",
     "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.params_file",
     "rotor_like": "core.geometry",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import re
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +26,7 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  * ({b0:g}-{b1:g} deg); table in {ctype}; {interpolation} interpolation. Its error against the
  * full model (off-grid check, outside flagged cells): T {eT} of static thrust, Q {eQ} of
  * static torque, D {eD} of the largest drag (max over {npts} random points).
- *
+{uncertainty} *
  * int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4]);
  *   omega [rad/s], airspeed [m/s], incidence [rad] (0 climb, pi/2 edgewise, pi descent).
  *   out: thrust T [N], drag D [N], torque Q [N m], rolling moment M_R [N m].
@@ -38,6 +39,29 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *   2 outside the grid (clipped or NaN),
  *   -1 outside with {PREFIX}_ERROR, a NaN argument, omega < 0 (give its magnitude) or an
  *   unknown policy.
+ *
+ * int {prefix}_wrench(const double velocity[3], const double axis[3], double omega, int spin,
+ *                     int policy, double force[3], double moment[3]);
+ *   One rotor's force [N] and moment about its hub [N m] as vectors, in the frame velocity
+ *   and axis are given in (as propmap.rotor_wrench and RotorMap.wrench). Returns as
+ *   {prefix}_loads, and -1 (outputs untouched) for a zero or non-finite axis, a velocity
+ *   component that is not finite or beyond 1e150 m/s, or a spin other than +1 or -1.
+ *
+ * Conventions (propmap docs/conventions.md):
+ *   velocity: the hub's velocity relative to the air (the negative of the wind it meets).
+ *   axis: the rotor axis, the thrust direction (normalised here). z = axis / |axis|.
+ *   incidence beta: the angle between velocity and z, arccos(V . z / |V|): 0 axial climb,
+ *     pi/2 edgewise, pi axial descent; 0 where V = 0.
+ *   e_ip: the unit in-plane velocity, (V - (V . z) z) / |...| (0 where the flow is axial).
+ *   T: thrust along z. D (rotor drag, the H-force): in the disk plane, positive against the
+ *     in-plane motion. Q: shaft torque, positive opposing the rotation (what the motor
+ *     supplies; power Q omega). M_R (rolling moment): about e_ip, positive for more thrust on
+ *     the advancing side.
+ *   spin: +1 rotates counter-clockwise about z by the right-hand rule (seen from the tip of z
+ *     looking back at the disk), -1 clockwise. omega is the magnitude of the rotation rate.
+ *   force = T z - D e_ip; moment = -spin (Q z + M_R e_ip): the reaction the rotor passes to
+ *     the airframe at constant speed, and for a ccw rotor the rolling moment along -e_ip (its
+ *     advancing side lies at -z x e_ip). Add r x force for the moment about another point.
  */
 #ifndef {GUARD}
 #define {GUARD}
@@ -97,6 +121,35 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
     }}
 {body}    status = {prefix}_cellflag[(i0 * ({n1} - 1) + i1) * ({n2} - 1) + i2] ? 1 : 0;
     return inside ? status : 2;
+}}
+
+static inline int {prefix}_wrench(const double velocity[3], const double axis[3], double omega, int spin,
+                                  int policy, double force[3], double moment[3])
+{{
+    double z[3], e[3] = {{0.0, 0.0, 0.0}}, ip[3], out[4], amax, n, speed, axial, beta, n_ip;
+    int k, status;
+    if (spin != 1 && spin != -1) return -1;
+    amax = fmax(fabs(axis[0]), fmax(fabs(axis[1]), fabs(axis[2])));
+    if (!(amax > 0.0 && amax < HUGE_VAL)) return -1;
+    for (k = 0; k < 3; k++)
+        if (!(fabs(velocity[k]) < 1e150)) return -1;
+    for (k = 0; k < 3; k++) z[k] = axis[k] / amax;
+    n = sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+    for (k = 0; k < 3; k++) z[k] /= n;
+    speed = sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
+    axial = velocity[0] * z[0] + velocity[1] * z[1] + velocity[2] * z[2];
+    beta = speed > 0.0 ? acos(fmin(fmax(axial / speed, -1.0), 1.0)) : 0.0;
+    status = {prefix}_loads(omega, speed, beta, policy, out);
+    if (status < 0) return status;
+    for (k = 0; k < 3; k++) ip[k] = velocity[k] - axial * z[k];
+    n_ip = sqrt(ip[0] * ip[0] + ip[1] * ip[1] + ip[2] * ip[2]);
+    if (n_ip > 1e-12 * fmax(speed, 1e-300))
+        for (k = 0; k < 3; k++) e[k] = ip[k] / n_ip;
+    for (k = 0; k < 3; k++) {{
+        force[k] = out[0] * z[k] - out[1] * e[k];
+        moment[k] = -spin * (out[2] * z[k] + out[3] * e[k]);
+    }}
+    return status;
 }}
 
 #endif /* {GUARD} */
@@ -273,6 +326,12 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     return Path(path)
 
 
+def _comment(text) -> str:
+    """Text from a map's attributes made safe inside a C block comment: one line, and no "*/"
+    that would end the comment (an edited map must not inject code into the header)."""
+    return " ".join(str(text).split()).replace("*/", "* /")
+
+
 def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> str:
     """``rotor_map`` as the text of a self-contained C99 header.
 
@@ -327,10 +386,16 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     digest = hashlib.sha256(b"".join(np.ascontiguousarray(x).tobytes() for x in (
         rm.omega, rm.airspeed, rm.incidence, table, rm._cellflag)) + rm.interpolation.encode()).hexdigest()[:12]
     guard = f"{prefix.upper()}_H_{digest.upper()}"
+    unc = ""
+    if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the table's
+        words = (f"The model against measurements: axial: {a['model_uncertainty_axial']}. "
+                 f"Off-axis: {a['model_uncertainty_off_axis']}.")
+        unc = "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
     text = template.format(
-        name=path.stem, propeller=a.get("propeller", ""), version=a.get("propmap_version", ""),
-        model=a.get("model", ""), params_label=a.get("params_label", "") or a.get("section_model", ""),
-        citation=a.get("citation", "") or "-", n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] * 30 / np.pi,
+        name=path.stem, propeller=_comment(a.get("propeller", "")), version=_comment(a.get("propmap_version", "")),
+        model=_comment(a.get("model", "")), uncertainty=unc,
+        params_label=_comment(a.get("params_label", "") or a.get("section_model", "")),
+        citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] * 30 / np.pi,
         rpm1=rm.omega[-1] * 30 / np.pi, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),
         eQ=_pct(a.get(check + "torque_max")), eD=_pct(a.get(check + "drag_max")),

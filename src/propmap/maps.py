@@ -26,6 +26,7 @@ from . import __version__
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller, _real
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
+from .io.uncertainty import model_uncertainty
 from .io.mapfile import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller, map_model,
                          read_dataset, read_sidecar, write_map, write_sidecar)
 
@@ -311,6 +312,10 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
                          "slopes (RotorMap's default) or multilinear (RotorMap(..., 'linear'), the C export's default)",
         "Conventions": "CF-1.8",
     }
+    # the model's own error against measurements with this set, beside the map's against the model
+    unc = model_uncertainty(params_label)
+    attrs["model_uncertainty_axial"] = unc["axial"]
+    attrs["model_uncertainty_off_axis"] = unc["off_axis"]
     ds = xr.Dataset(data, coords=coords, attrs=attrs)
     if n_check:
         ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,

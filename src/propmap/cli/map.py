@@ -343,8 +343,8 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
     a = ds.attrs
     if as_json:
         echo_json({"files": [str(f) for f in files], "build_seconds": elapsed,
-                   **{k: v for k, v in a.items() if k.startswith("check_") and not (isinstance(v, float)
-                                                                                  and math.isnan(v))}})
+                   **{k: v for k, v in a.items() if (k.startswith("check_") or k.startswith("model_uncertainty_"))
+                      and not (isinstance(v, float) and math.isnan(v))}})
         return
     dims = " x ".join(f"{n} {d}" for d, n in ds.sizes.items())
     click.echo(f"map of {a.get('propeller', 'the catalogue')}: {dims} = {math.prod(ds.sizes.values()):,} nodes "
@@ -362,6 +362,9 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
                        f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 8)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
                        f"   {norm}")
         click.echo("  (propmap.RotorMap interpolates cubic by default, the C header linear)")
+    if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the map's against it
+        click.echo(f"the model against measurements ({a.get('params_label', '')}): axial: "
+                   f"{a['model_uncertainty_axial']}; off-axis: {a['model_uncertainty_off_axis']}")
     click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
 
 

@@ -81,7 +81,8 @@ OPEN_TIMEOUT = 20.0
 OPEN_SECONDS_PER_GB = 60.0
 _CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|power)_(rms|max|max_flagged)")
 _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_label", "params_json", "model",
-         "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note")
+         "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note",
+         "model_uncertainty_axial", "model_uncertainty_off_axis")
 
 
 def _short(value, n: int = 60) -> str:

@@ -45,6 +45,14 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
         lines.append(f"{comment} {name} fixed at 0: {why}")
     for name, why in res.held.items():
         lines.append(f"{comment} {name} {why}")
+    u = res.meta.get("model_uncertainty")
+    if u:  # the model's own error against measurements, beside the simple model's against it
+        lines.append(f"{comment} the model against measurements ({u['params']}): axial: {u['axial']}")
+        lines.append(f"{comment}   off-axis: {u['off_axis']}")
+        t = u.get("edgewise_trend")
+        if t and not math.isnan(t["this_set"]):
+            lines.append(f"{comment}   thrust change from hover to {t['airspeed']:g} m/s edgewise at {t['rpm']:.0f} rpm: "
+                         f"{t['this_set']:+.1%} with this set, {t['generic']:+.1%} with the generic set")
     return lines
 
 

@@ -57,6 +57,7 @@ from .. import __version__
 from ..core.airfoil import Air
 from ..core.geometry import _real
 from ..core.solver import check_model_args, rotor_loads
+from ..io.uncertainty import model_uncertainty
 
 __all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "default_envelope", "export_sim", "predict"]
 
@@ -424,6 +425,21 @@ def _errors(target: str, coefficients: dict, s) -> dict:
     return out
 
 
+def _edgewise_trend(propeller, params, air, envelope: Envelope) -> dict:
+    """The thrust change from hover to edgewise flight at the envelope's top airspeed (hover
+    rpm, incidence 90 deg) with this set and with the generic set: the model's own spread in
+    forward flight, where no measurement of the propeller arbitrates (docs/simulators.md)."""
+    from ..io.calibration import generic_params
+
+    om, V = envelope.hover * math.pi / 30, float(envelope.airspeed[1])
+    out = {"rpm": envelope.hover, "airspeed": V}
+    for key, p in (("this_set", params), ("generic", generic_params())):
+        r = rotor_loads(propeller, p, np.array([om, om]), np.array([0.0, V]), math.pi / 2, air=air,
+                        on_failure="flag")
+        out[key] = float(r.thrust[1] / r.thrust[0] - 1) if r.converged.all() else math.nan
+    return out
+
+
 def export_sim(target: str, propeller, params, *, air: Air | None = None, envelope: Envelope | None = None,
                n_points: int = 4000, seed: int = 0, params_label: str = "") -> SimExport:
     """Fit ``target``'s coefficients to the full model over ``envelope`` and measure its error.
@@ -495,6 +511,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         warnings.warn(f"every one of the {s['omega'].size} points of the envelope is flagged (vortex ring or multiple "
                       "roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
     meta = {"propeller": propeller.name, "params": params_label or params.section_model,
+            "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
+                                  "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,
             "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed), "rho": float(air.rho)}
     return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed, held)

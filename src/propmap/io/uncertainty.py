@@ -1,0 +1,90 @@
+"""The model's own uncertainty, stated beside the errors of maps and exports against it.
+
+A map's interpolation error and an export's fit error are measured against propmap itself.
+What a user also needs is how far propmap is from measurements with the parameter set in
+use. propmap knows that axially, from cross-validation on the bundled UIUC catalogue
+(docs/validation.md), and says in words what it does not know off-axis.
+
+The figures are rms |dCT| / static CT (and |dCP| / static CP) over each propeller's held-out
+sweeps: median / 90th percentile / worst over the 143 catalogue propellers of UIUC vol. 1
+(Brandt & Selig, AIAA 2011-1255) and vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), with
+defaults derived without each propeller's family (leave-one-family-out). Measured
+2026-11-22 by ``benchmarks/validate_catalogue.py``; tests/test_uncertainty.py holds them to
+docs/validation.md.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+__all__ = ["AXIAL_VALIDATION", "OFF_AXIS", "model_uncertainty"]
+
+#: cross-validated axial errors by kind of parameter set: (median, 90th percentile, worst)
+AXIAL_VALIDATION = {
+    "calibrated": {"protocol": "leave one sweep out (the set fitted to the propeller's other sweeps)",
+                   "ct": (0.026, 0.046, 0.101), "cp": (0.030, 0.050, 0.130)},
+    "generic": {"protocol": "blind (the generic set derived without the propeller's family)",
+                "ct": (0.077, 0.189, 0.423)},
+    "paper": {"protocol": "the paper's Table I without a fit", "ct": (0.213, 0.332, 0.492)},
+}
+#: what is known off-axis, in words (docs/validation.md, docs/flight.md)
+OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind the shipped sets are axial. "
+            "propmap's off-axis checks are the Beaver propeller at 0-20 deg (Sinnige et al. 2019: the generic "
+            "set's rise of the wind-axis thrust with incidence is half the measured one) and the NeuroBEM "
+            "quadrotor's flight logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts "
+            "held-out body force to 0.296 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane "
+            "force from the airframe's); off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
+
+
+def _pct(t) -> str:
+    return " / ".join(f"{100 * v:.1f}" for v in t) + "%"
+
+
+def model_uncertainty(label: str) -> dict:
+    """What propmap knows of its own error against measurements with a parameter set.
+
+    Parameters
+    ----------
+    label : str
+        The set's label as outputs record it: ``"calibrated:NAME"``, ``"generic"`` (or a
+        generic fold), ``"gill2017-*"`` (the paper's Table I), ``"section:NAME"``, a
+        parameter file's path, or anything else (unknown).
+
+    Returns
+    -------
+    dict
+        ``params`` (the label); ``axial``: a sentence with the cross-validated CT (and CP)
+        error median / 90th percentile / worst over the catalogue, or why there is none;
+        ``axial_ct`` (and ``axial_cp``): the three fractions, absent where unknown;
+        ``in_sample_rms_ct`` for a catalogue propeller's own set; ``off_axis``: a sentence.
+    """
+    label = str(label)
+    out: dict = {"params": label}
+    kind = ("calibrated" if label.startswith("calibrated:") else
+            "generic" if label == "generic" or label.startswith("generic ") else
+            "paper" if label.startswith("gill2017") else None)
+    if kind is not None:
+        v = AXIAL_VALIDATION[kind]
+        out["axial_ct"] = list(v["ct"])
+        text = (f"cross-validated over the UIUC catalogue (143 propellers, {v['protocol']}): rms CT error "
+                f"{_pct(v['ct'])} of static CT (median / 90th percentile / worst)")
+        if "cp" in v:
+            out["axial_cp"] = list(v["cp"])
+            text += f", CP {_pct(v['cp'])}"
+        out["axial"] = text
+        if kind == "calibrated":
+            from .calibration import calibrated
+
+            c = calibrated(label.split(":", 1)[1])
+            if c is not None:
+                out["in_sample_rms_ct"] = c.rms_ct
+                out["axial"] += f"; this set's in-sample rms CT error {100 * c.rms_ct:.1f}%"
+    elif label.startswith("section:"):
+        out["axial"] = ("not validated on propellers: a symmetric rotor section's published polar (docs/models.md), "
+                        "for rotor-like blades")
+    elif label and Path(label).suffix.lower() == ".toml":
+        out["axial"] = "a parameter file: its own fit report states its errors; propmap has no cross-validated figure"
+    else:
+        out["axial"] = "unknown: propmap has no validation figure for this parameter set"
+    out["off_axis"] = OFF_AXIS
+    return out

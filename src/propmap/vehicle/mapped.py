@@ -1,0 +1,200 @@
+"""The vehicle model evaluated from rotor maps: a simulator's vehicle step in one batch call.
+
+The same sums as :func:`propmap.vehicle.vehicle_wrench` (module ``model``): rotor i at hub
+position r_i (from the centre of mass) with axis a_i sees the air at V_i = v + w x r_i -
+v_wind, its force F_i and hub moment M_i come from its map (``RotorMap.wrench``: T z - D e_ip
+and -s_i (Q z + M_R e_ip)) instead of the full model, and
+
+    F = sum_i F_i + F_body,    M = sum_i (r_i x F_i + M_i - w x h_i),
+
+with h_i = s_i J_i Omega_i a_i where the rotor inertia J_i is known. F_body is the airframe
+drag at the centre of mass (core/body.py) in the freestream: a map holds no induced
+velocity, so the slipstream term of a vehicle's ``wash_factor`` is left out (said once, at
+construction). The maps are duck-typed (anything with RotorMap's ``wrench``), so this
+module imports the core only.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.body import body_drag_force
+from .model import Vehicle, _samples
+
+__all__ = ["VehicleMap", "VehicleMapWrench"]
+
+
+def _cross(a, b):
+    """a x b over the last axis (length 3), broadcast: numpy.cross without its per-call overhead (15 us on
+    small arrays, most of a vehicle step)."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
+
+
+@dataclass(frozen=True)
+class VehicleMapWrench:
+    """Force and moment on a vehicle from its rotors' maps, body axes, at N samples.
+
+    Attributes
+    ----------
+    force : ndarray, shape (N, 3)
+        Rotor forces and airframe drag [N] (no gravity).
+    moment : ndarray, shape (N, 3)
+        About the centre of mass [N m].
+    flagged : ndarray of bool, shape (N,)
+        A rotor's query lies outside its map's grid or in a flagged cell: the maps' error
+        bounds do not hold for that sample.
+    """
+
+    force: np.ndarray
+    moment: np.ndarray
+    flagged: np.ndarray
+
+
+class VehicleMap:
+    """A vehicle whose rotors are evaluated from maps (module docstring).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    maps : RotorMap or sequence of RotorMap
+        One map for every rotor, or one per rotor in the vehicle's order (each built for
+        that rotor's propeller and parameter set; not checked here).
+    rho : float, optional
+        Air density for the airframe drag [kg/m^3]; default the first map's
+        (``attrs["rho_kg_m3"]``).
+
+    Raises
+    ------
+    ValueError
+        ``vehicle`` not a Vehicle, or a number of maps other than 1 or the number of rotors.
+
+    Warns
+    -----
+    UserWarning
+        The vehicle's airframe drag has a slipstream factor (``wash_factor`` > 0): left out.
+    """
+
+    def __init__(self, vehicle: Vehicle, maps, *, rho: float | None = None) -> None:
+        if not isinstance(vehicle, Vehicle):
+            raise ValueError(f"vehicle must be a Vehicle, got {type(vehicle).__name__}")
+        n = len(vehicle.rotors)
+        maps = [maps] * n if hasattr(maps, "wrench") else list(maps)
+        if len(maps) != n or not all(hasattr(m, "wrench") for m in maps):
+            raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
+        self.vehicle = vehicle
+        self.maps = maps
+        self._pos = np.array([r.position for r in vehicle.rotors], float) - vehicle.centre_of_mass
+        self._axes = np.array([r.axis for r in vehicle.rotors], float)
+        self._spins = np.array([r.spin for r in vehicle.rotors], float)
+        self._h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * self._axes
+        # the same as Python floats and lists, for the one-step path
+        self._pos_list = self._pos.tolist()
+        self._h_list = self._h.tolist()
+        self._spin_list = [float(x) for x in self._spins]
+        groups: dict[int, list[int]] = {}
+        for i, m in enumerate(maps):
+            groups.setdefault(id(m), []).append(i)
+        self._groups = [(maps[idx[0]], np.array(idx)) for idx in groups.values()]
+        body = vehicle.body_drag
+        self._body = body if body is not None and body.active else None
+        if self._body is not None and self._body.wash_factor > 0:
+            warnings.warn(f"the airframe's slipstream factor ({self._body.wash_factor:g}) is left out: a map holds no "
+                          "induced velocity; its drag is taken in the freestream", UserWarning, stacklevel=2)
+        self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else float(rho)
+
+    def _step(self, air_v: list, w: list, om: list, out_of_grid: str):
+        """One step's (force, moment, flagged), shapes (1, 3), (1, 3), (1,): the sums of
+        :meth:`wrench` in Python floats, each rotor by RotorMap.wrench's one-rotor path."""
+        vx, vy, vz = air_v
+        wx, wy, wz = w
+        F = [0.0, 0.0, 0.0]
+        M = [0.0, 0.0, 0.0]
+        flagged = False
+        h = [0.0, 0.0, 0.0]
+        for i, m in enumerate(self.maps):
+            px, py, pz = self._pos_list[i]
+            v_hub = np.array((vx + wy * pz - wz * py, vy + wz * px - wx * pz, vz + wx * py - wy * px))
+            res = m.wrench(v_hub, self._axes[i], float(om[i]), self._spin_list[i], out_of_grid=out_of_grid)
+            fx, fy, fz = res.force.tolist()
+            mx, my, mz = res.torque.tolist()
+            F[0] += fx
+            F[1] += fy
+            F[2] += fz
+            M[0] += py * fz - pz * fy + mx
+            M[1] += pz * fx - px * fz + my
+            M[2] += px * fy - py * fx + mz
+            flagged = flagged or bool(res.loads.flagged)
+            hx, hy, hz = self._h_list[i]
+            h[0] += hx * om[i]
+            h[1] += hy * om[i]
+            h[2] += hz * om[i]
+        M[0] -= wy * h[2] - wz * h[1]  # gyroscopic: -w x h
+        M[1] -= wz * h[0] - wx * h[2]
+        M[2] -= wx * h[1] - wy * h[0]
+        return np.array([F]), np.array([M]), np.array([flagged])
+
+    def wrench(self, velocity, angular_velocity, rotor_omega, *, wind=None,
+               out_of_grid: str = "raise") -> VehicleMapWrench:
+        """Body force and moment at N samples (broadcast like :func:`propmap.vehicle_wrench`).
+
+        Parameters
+        ----------
+        velocity : array_like, shape (N, 3) or (3,)
+            Velocity of the centre of mass over the ground, body axes [m/s].
+        angular_velocity : array_like, shape (N, 3) or (3,)
+            Body rates w [rad/s].
+        rotor_omega : array_like, shape (N, n_rotors) or (n_rotors,)
+            Rotor speeds Omega_i >= 0 [rad/s], in the vehicle's rotor order.
+        wind : array_like, shape (N, 3) or (3,), optional
+            Wind velocity in body axes [m/s].
+        out_of_grid : {"raise", "clip", "nan"}
+            As :meth:`propmap.RotorMap.loads` (under "clip" a rotor below its grid's lowest
+            rpm, a stopped one included, has its loads scaled to zero).
+
+        Returns
+        -------
+        VehicleMapWrench
+
+        Raises
+        ------
+        ValueError
+            Inputs not numbers, of the wrong shape, non-finite, with sample counts that do
+            not match; what the maps raise (a query outside a grid under "raise", naming it;
+            Omega < 0).
+        """
+        n_rot = len(self.vehicle.rotors)
+        v = _samples("velocity", velocity, 3)
+        w = _samples("angular_velocity", angular_velocity, 3)
+        om = _samples("rotor_omega", rotor_omega, n_rot)
+        wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
+        counts = {a.shape[0] for a in (v, w, om, wind_a)} - {1}
+        if len(counts) > 1:
+            raise ValueError("velocity, angular_velocity, rotor_omega and wind must have the same number of samples "
+                             f"(or one), got {[a.shape[0] for a in (v, w, om, wind_a)]}")
+        N = counts.pop() if counts else 1
+        air_v = np.broadcast_to(v - wind_a, (N, 3))
+        w = np.broadcast_to(w, (N, 3))
+        om = np.broadcast_to(om, (N, n_rot))
+        if N == 1:  # one step (a simulator's call): each rotor through its map's one-rotor path, in floats
+            force, moment, flagged = self._step(air_v[0].tolist(), w[0].tolist(), om[0].tolist(), out_of_grid)
+        else:
+            v_hub = air_v[:, None, :] + _cross(w[:, None, :], self._pos[None, :, :])  # (N, n_rot, 3)
+            force = np.zeros((N, 3))
+            moment = np.zeros((N, 3))
+            flagged = np.zeros(N, dtype=bool)
+            for m, idx in self._groups:
+                res = m.wrench(v_hub[:, idx, :], self._axes[idx], om[:, idx], self._spins[idx],
+                               out_of_grid=out_of_grid)
+                force += res.force.sum(axis=1)
+                moment += (_cross(self._pos[idx][None, :, :], res.force) + res.torque).sum(axis=1)
+                flagged |= np.asarray(res.loads.flagged).any(axis=1)
+            if np.any(self._h):
+                moment -= _cross(w, om @ self._h)  # gyroscopic: -w x sum_i s_i J_i Omega_i a_i
+        if self._body is not None:
+            force += body_drag_force(self._body, air_v, np.zeros((N, 3)), self._rho)
+        return VehicleMapWrench(force=force, moment=moment, flagged=flagged)

@@ -1,0 +1,96 @@
+"""The vehicle model from rotor maps (propmap.vehicle.VehicleMap): the same sums as
+vehicle_wrench with each rotor's RotorMap.wrench, exact to round-off against those sums done
+by hand, within the maps' error of the full model, and a stopped rotor under "clip"."""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.core.body import BodyDrag
+from propmap.maps import RotorMap, build_map
+from propmap.vehicle import VehicleMap, read_vehicle, vehicle_wrench
+from propmap.vehicle.model import Rotor, Vehicle
+
+DATA = Path(pm.__file__).parent / "data"
+RPM = math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def setup():
+    veh = read_vehicle(DATA / "examples" / "quadrotor.toml")  # four apce_8x6, spins ccw/cw
+    params = pm.default_params("apce_8x6")
+    prop = veh.rotors[0].propeller
+    ds = build_map(prop, params, np.geomspace(2000, 12000, 15) * RPM, np.linspace(0, 12, 13),
+                   np.radians(np.linspace(0, 180, 37)), air=params.air, params_label=params.label, n_check=0)
+    # rotor inertias and an airframe, so that every term of the sum is exercised
+    rotors = tuple(Rotor(r.position, r.axis, r.spin, r.propeller, inertia=2e-5) for r in veh.rotors)
+    veh = Vehicle(mass=veh.mass, rotors=rotors, body_drag=BodyDrag((0.01, 0.012, 0.02)),
+                  centre_of_mass=np.array([0.005, 0.0, -0.01]))
+    return veh, params, RotorMap(ds)
+
+
+def _states(n, seed=2):
+    rng = np.random.default_rng(seed)
+    v = rng.normal(0, 3, (n, 3))
+    w = rng.normal(0, 1.0, (n, 3))
+    om = rng.uniform(500, 1100, (n, 4))
+    return v, w, om
+
+
+def test_equals_the_rotor_maps_summed_by_hand(setup):
+    veh, params, rm = setup
+    v, w, om = _states(50)
+    got = VehicleMap(veh, rm).wrench(v, w, om)
+    pos = np.array([r.position for r in veh.rotors]) - veh.centre_of_mass
+    F = np.zeros((50, 3))
+    M = np.zeros((50, 3))
+    for i, r in enumerate(veh.rotors):
+        vh = v + np.cross(w, pos[i])
+        res = rm.wrench(vh, r.axis, om[:, i], r.spin)
+        F += res.force
+        M += np.cross(pos[i], res.force) + res.torque - np.cross(w, (r.spin * r.inertia * om[:, i])[:, None] * r.axis)
+    F += -0.5 * rm.attrs["rho_kg_m3"] * np.array(veh.body_drag.drag_area) * np.linalg.norm(v, axis=1)[:, None] * v
+    np.testing.assert_allclose(got.force, F, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(got.moment, M, rtol=1e-12, atol=1e-12)
+    # one step at a time (a simulator's call: each rotor by RotorMap.wrench's one-rotor path) = the batch's rows
+    vm = VehicleMap(veh, rm)
+    for i in range(8):
+        one = vm.wrench(v[i], w[i], om[i])
+        assert one.force.shape == (1, 3) and one.flagged[0] == got.flagged[i]
+        np.testing.assert_allclose(one.force[0], got.force[i], rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(one.moment[0], got.moment[i], rtol=1e-12, atol=1e-12)
+
+
+def test_within_the_maps_error_of_the_full_model(setup):
+    veh, params, rm = setup
+    v, w, om = _states(40, seed=5)
+    v[:, 2] = np.abs(v[:, 2])  # forward flight and climb: away from the vortex-ring cells, which are flagged
+    got = VehicleMap(veh, rm).wrench(v, w, om)
+    ref = vehicle_wrench(veh, params, v, w, om)
+    keep = ~got.flagged  # the maps' bounds hold outside flagged cells
+    assert keep.sum() >= 20
+    # relative to the weight and its moment arm: 15 rpm nodes over 2000-12000 (13% steps), cubic
+    err_F = np.max(np.abs(got.force - ref.force)[keep]) / veh.weight
+    err_M = np.max(np.abs(got.moment - ref.moment)[keep]) / (veh.weight * 0.1)
+    assert err_F < 0.01 and err_M < 0.01, (err_F, err_M)
+
+
+def test_a_stopped_rotor_and_bad_input(setup):
+    veh, params, rm = setup
+    vm = VehicleMap(veh, [rm] * 4)
+    om = np.array([[900.0, 0.0, 900.0, 900.0]])
+    with pytest.raises(ValueError, match="outside the map's grid"):
+        vm.wrench([0, 0, 0], [0, 0, 0], om)
+    res = vm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], om, out_of_grid="clip")
+    alone = vm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], np.array([[900.0, 900.0, 900.0, 900.0]]))
+    assert res.force[0, 2] == pytest.approx(0.75 * alone.force[0, 2], rel=1e-12)  # the stopped rotor adds nothing
+    assert res.flagged[0] and not alone.flagged[0]
+    with pytest.raises(ValueError, match="maps must be one RotorMap or one per rotor"):
+        VehicleMap(veh, [rm, rm])
+    with pytest.raises(ValueError, match=r"rotor_omega must have shape \(N, 4\)"):
+        vm.wrench([0, 0, 0], [0, 0, 0], [900.0, 900.0])
+    with pytest.warns(UserWarning, match="slipstream factor"):
+        VehicleMap(Vehicle(mass=1.0, rotors=veh.rotors, body_drag=BodyDrag((0.01, 0.01, 0.0), 1.2)), rm)
