@@ -137,6 +137,52 @@ def c_speed(rm: RotorMap):
     return {"c_ns_per_call_median": float(np.median(runs)), "c_ns_per_call_min": min(runs), "compiler": cc}
 
 
+C_VEHICLE_BENCH = r"""
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <time.h>
+#include "map.h"
+int main(void)
+{
+    double v[3], w[3], o[4], f[3], m[3], acc = 0.0;
+    const int n = 200000;
+    struct timespec t0, t1;
+    int i, k;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (i = 0; i < n; i++) {
+        double g = (double)(i % 7919) / 7919.0, h = (double)(i % 6007) / 6007.0;
+        v[0] = 12.0 * g - 6.0; v[1] = 4.0 * h - 2.0; v[2] = 3.0 * g * h;
+        w[0] = 0.5 * h; w[1] = -0.4 * g; w[2] = 0.2;
+        for (k = 0; k < 4; k++) o[k] = 500.0 + 600.0 * (double)((i + 997 * k) % 4999) / 4999.0;
+        pm_map_vehicle_wrench(v, w, o, PM_MAP_CLIP, f, m);
+        acc += f[2] + m[0];
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    printf("%.3f %g\n", ((t1.tv_sec - t0.tv_sec) * 1e9 + (t1.tv_nsec - t0.tv_nsec)) / n, acc);
+    return 0;
+}
+"""
+
+
+def c_vehicle_speed(rm: RotorMap):
+    """The quadrotor example's C vehicle step (pm_map_vehicle_wrench, four rotors), ns per step, -O2."""
+    from propmap.vehicle import read_vehicle
+
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None:
+        return {"c_ns_per_step": None, "note": "no C compiler"}
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        write_c_header(rm, tmp / "map.h", vehicle=veh)
+        (tmp / "b.c").write_text(C_VEHICLE_BENCH)
+        subprocess.run([cc, "-std=c99", "-O2", "-o", str(tmp / "b"), str(tmp / "b.c"), "-lm"], check=True)
+        runs = [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
+                for _ in range(5)]
+    return {"interpolation": rm.interpolation, "c_ns_per_vehicle_step_median": float(np.median(runs)),
+            "c_ns_per_vehicle_step_min": min(runs), "compiler": cc}
+
+
 def density(prop, params, air, quick):
     top = default_axes(prop)[0][-1]
     grids = [(11, 13, 19), (21, 26, 37), (21, 26, 73), (31, 51, 73)] if not quick else [(11, 13, 19), (21, 26, 37)]
@@ -201,6 +247,7 @@ def main() -> None:
            "lookups": lookups(rm, prop, params, air), "lookups_cubic": lookups(RotorMap(ds), prop, params, air),
            "c_linear": c_speed(rm), "c_cubic": c_speed(RotorMap(ds)),
            "vehicle_step_cubic": vehicle_step(RotorMap(ds), params),
+           "c_vehicle_linear": c_vehicle_speed(rm), "c_vehicle_cubic": c_vehicle_speed(RotorMap(ds)),
            "default_map_netcdf_bytes": size,
            "default_map_check": {k: v for k, v in ds.attrs.items() if k.startswith("check_") and k != "check_normalisation"},
            "density": density(prop, params, air, quick)}

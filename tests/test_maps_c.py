@@ -146,6 +146,58 @@ def test_c_wrench_equals_the_python_wrench(tmp_path, rotor_map):
     assert "force = T z - D e_ip; moment = -spin (Q z + M_R e_ip)" in header
 
 
+VEHICLE_DRIVER = r"""
+#include <stdio.h>
+#include "map.h"
+int main(void)
+{
+    double v[3], w[3], o[4], f[3], m[3];
+    int status;
+    while (scanf("%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &w[0], &w[1], &w[2], &o[0], &o[1],
+                 &o[2], &o[3]) == 10) {
+        status = pm_map_vehicle_wrench(v, w, o, PM_MAP_CLIP, f, m);
+        printf("%d %.17g %.17g %.17g %.17g %.17g %.17g\n", status, f[0], f[1], f[2], m[0], m[1], m[2]);
+    }
+    return 0;
+}
+"""
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_c_vehicle_wrench_equals_the_python_vehicle_map(tmp_path, rotor_map):
+    """pm_map_vehicle_wrench (a quadrotor of four apce_8x6 with rotor inertias, an offset centre of mass and an
+    airframe) against propmap.VehicleMap.wrench on the same map: random velocities, rates and rotor speeds."""
+    from propmap.core.body import BodyDrag
+    from propmap.vehicle import VehicleMap
+    from propmap.vehicle.model import Rotor, Vehicle
+
+    prop = pm.load_propeller("apce_8x6")
+    d = 0.106
+    rotors = tuple(Rotor(np.array(p), np.array([0.0, 0.0, 1.0]), s, prop, inertia=2e-5)
+                   for p, s in zip([(d, d, 0.0), (d, -d, 0.0), (-d, -d, 0.0), (-d, d, 0.0)], (1, -1, 1, -1)))
+    veh = Vehicle(mass=0.8, rotors=rotors, body_drag=BodyDrag((0.01, 0.012, 0.02)), centre_of_mass=np.array(
+        [0.004, 0.0, -0.01]), name="X */ quad")
+    write_c_header(rotor_map, tmp_path / "map.h", dtype="double", vehicle=veh)
+    (tmp_path / "v.c").write_text(VEHICLE_DRIVER)
+    exe = tmp_path / "v"
+    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
+                    str(tmp_path / "v.c"), "-lm"], check=True, capture_output=True, text=True)
+    rng = np.random.default_rng(9)
+    n = 100
+    v, w = rng.normal(0, 4, (n, 3)), rng.normal(0, 1, (n, 3))
+    om = rng.uniform(rotor_map.omega[0] * 0.5, rotor_map.omega[-1], (n, 4))  # some spinning up below the grid
+    stdin = "".join(" ".join(repr(float(x)) for x in (*a, *b, *c)) + "\n" for a, b, c in zip(v, w, om))
+    out = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
+                                                            check=True).stdout.splitlines()], dtype=float)
+    ref = VehicleMap(veh, rotor_map).wrench(v, w, om, out_of_grid="clip")
+    np.testing.assert_allclose(out[:, 1:4], ref.force, rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(out[:, 4:7], ref.moment, rtol=1e-10, atol=1e-12)
+    np.testing.assert_array_equal(out[:, 0] > 0, ref.flagged)
+    with pytest.raises(ValueError, match="rotor 1 carries apce_9x6, not the map's apce_8x6"):
+        write_c_header(rotor_map, tmp_path / "x.h", vehicle=Vehicle(mass=1.0, rotors=(
+            Rotor(np.zeros(3), np.array([0.0, 0.0, 1.0]), 1, pm.load_propeller("apce_9x6")),)))
+
+
 def test_bad_dtype_and_name_are_refused(tmp_path, rotor_map):
     with pytest.raises(ValueError, match="dtype"):
         write_c_header(rotor_map, tmp_path / "m.h", dtype="half")

@@ -241,8 +241,9 @@ def _numbers(values, fmt: str, per_line: int = 6) -> str:
 
 #: the names the header defines after its prefix: functions and tables (prefix as given),
 #: macros (prefix in upper case); the include guard adds _H_<hash>
-_C_NAMES = ("loads", "locate", "weights", "omega", "airspeed", "incidence", "table", "cellflag")
-_C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H")
+_C_NAMES = ("loads", "locate", "weights", "omega", "airspeed", "incidence", "table", "cellflag", "wrench",
+            "vehicle_wrench", "rotor_pos", "rotor_axis", "rotor_spin", "rotor_h", "body_cd")
+_C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H", "NROT")
 #: names the C standard reserves (C11 7.1.3 and the future library directions 7.31, C23
 #: 7.33): any identifier of file scope beginning with an underscore, and the macro
 #: namespaces of the headers (the header includes <math.h>, whose FP_NAN a prefix ``fp``
@@ -304,7 +305,7 @@ def c_prefix(path, name: str | None = None) -> str:
     return prefix
 
 
-def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> Path:
+def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = None, vehicle=None) -> Path:
     """Write ``rotor_map`` as a self-contained C99 header (atomically): :func:`c_header_text`.
 
     Returns
@@ -320,7 +321,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     """
     from .io.atomic import atomic_write
 
-    text = c_header_text(rotor_map, path, dtype=dtype, name=name)
+    text = c_header_text(rotor_map, path, dtype=dtype, name=name, vehicle=vehicle)
     with atomic_write(path) as fh:
         fh.write(text)
     return Path(path)
@@ -332,7 +333,98 @@ def _comment(text) -> str:
     return " ".join(str(text).split()).replace("*/", "* /")
 
 
-def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = None) -> str:
+_VEHICLE = r"""
+/* Vehicle {vname}: its {nrot} rotors in the file's order, all this map's propeller. Body axes x
+ * forward, y left, z up; positions from the centre of mass [m]; rotor_h = spin J axis [kg m^2]
+ * (the rotor's angular momentum per rad/s; 0 where the inertia is unknown); body_cd =
+ * rho (C_D A) / 2 per body axis [kg/m] at rho = {rho!r} kg/m^3 (the airframe drag in the
+ * freestream; a slipstream factor is not in a map).
+ *
+ * int {prefix}_vehicle_wrench(const double velocity[3], const double rates[3],
+ *                             const double omega[{nrot}], int policy, double force[3], double moment[3]);
+ *   velocity: of the centre of mass relative to the air (subtract the wind), body axes [m/s];
+ *   rates: body angular velocity w [rad/s]; omega: rotor speeds [rad/s] >= 0.
+ *   force: sum of the rotors' T z - D e_ip and the airframe drag [N] (no gravity);
+ *   moment about the centre of mass: sum of r x F + the hub moments - w x sum(rotor_h omega)
+ *   [N m] (propmap.VehicleMap.wrench). Returns the largest rotor status (0 all inside
+ *   unflagged cells, 1 some flagged, 2 some outside the grid), or -1 (outputs untouched) if
+ *   any rotor's is -1.
+ */
+#define {PREFIX}_NROT {nrot}
+static const double {prefix}_rotor_pos[{nrot}][3] = {{{pos}}};
+static const double {prefix}_rotor_axis[{nrot}][3] = {{{axis}}};
+static const int {prefix}_rotor_spin[{nrot}] = {{{spin}}};
+static const double {prefix}_rotor_h[{nrot}][3] = {{{h}}};
+static const double {prefix}_body_cd[3] = {{{cd}}};
+
+static inline int {prefix}_vehicle_wrench(const double velocity[3], const double rates[3],
+                                          const double omega[{nrot}], int policy, double force[3],
+                                          double moment[3])
+{{
+    double F[3] = {{0.0, 0.0, 0.0}}, M[3] = {{0.0, 0.0, 0.0}}, h[3] = {{0.0, 0.0, 0.0}}, vh[3], f[3], m[3], speed;
+    int i, k, s, status = 0;
+    for (i = 0; i < {nrot}; i++) {{
+        const double *p = {prefix}_rotor_pos[i];
+        vh[0] = velocity[0] + rates[1] * p[2] - rates[2] * p[1];
+        vh[1] = velocity[1] + rates[2] * p[0] - rates[0] * p[2];
+        vh[2] = velocity[2] + rates[0] * p[1] - rates[1] * p[0];
+        s = {prefix}_wrench(vh, {prefix}_rotor_axis[i], omega[i], {prefix}_rotor_spin[i], policy, f, m);
+        if (s < 0) return -1;
+        if (s > status) status = s;
+        F[0] += f[0]; F[1] += f[1]; F[2] += f[2];
+        M[0] += p[1] * f[2] - p[2] * f[1] + m[0];
+        M[1] += p[2] * f[0] - p[0] * f[2] + m[1];
+        M[2] += p[0] * f[1] - p[1] * f[0] + m[2];
+        for (k = 0; k < 3; k++) h[k] += {prefix}_rotor_h[i][k] * omega[i];
+    }}
+    M[0] -= rates[1] * h[2] - rates[2] * h[1];
+    M[1] -= rates[2] * h[0] - rates[0] * h[2];
+    M[2] -= rates[0] * h[1] - rates[1] * h[0];
+    speed = sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
+    for (k = 0; k < 3; k++) {{
+        force[k] = F[k] - {prefix}_body_cd[k] * speed * velocity[k];
+        moment[k] = M[k];
+    }}
+    return status;
+}}
+"""
+
+
+def _vehicle_block(vehicle, rm, prefix: str) -> str:
+    """The C vehicle function of a header (:data:`_VEHICLE`), for a vehicle whose every rotor
+    carries the map's propeller.
+
+    Raises
+    ------
+    ValueError
+        A rotor with another propeller (a header holds one map), or a rotor with its own
+        parameter set.
+    """
+    name = rm.attrs.get("propeller", "")
+    for k, r in enumerate(vehicle.rotors):
+        if r.propeller.name != name:
+            raise ValueError(f"rotor {k + 1} carries {r.propeller.name}, not the map's {name}: a C header holds "
+                             "one map (use VehicleMap in Python, with one map per rotor)")
+        if r.params is not None:
+            raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
+    rho = float(rm.attrs["rho_kg_m3"])
+    pos = np.array([r.position for r in vehicle.rotors], float) - np.asarray(vehicle.centre_of_mass, float)
+    axes = np.array([r.axis for r in vehicle.rotors], float)
+    h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * axes
+    body = vehicle.body_drag
+    cda = np.zeros(3) if body is None else np.asarray(body.drag_area, float)
+
+    def rows(a):
+        return ", ".join("{" + ", ".join(format(float(x), ".17g") for x in row) + "}" for row in a)
+
+    return _VEHICLE.format(
+        vname=_comment(vehicle.name or "(unnamed)"), nrot=len(vehicle.rotors), rho=rho, prefix=prefix,
+        PREFIX=prefix.upper(), pos=rows(pos), axis=rows(axes), h=rows(h),
+        spin=", ".join(str(1 if r.spin > 0 else -1) for r in vehicle.rotors),
+        cd=", ".join(format(0.5 * rho * float(x), ".17g") for x in cda))
+
+
+def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = None, vehicle=None) -> str:
     """``rotor_map`` as the text of a self-contained C99 header.
 
     Parameters
@@ -348,6 +440,9 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         The C identifier prefix; default from the file name (``pm_<stem>``). The include
         guard adds a hash of the table, so two different maps with one prefix collide
         at compile time instead of silently.
+    vehicle : Vehicle, optional
+        Add ``<prefix>_vehicle_wrench``: the vehicle's body force and moment from its
+        rotors (all of this map's propeller), as :class:`propmap.VehicleMap`.
 
     Returns
     -------
@@ -356,7 +451,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     Raises
     ------
     ValueError
-        Unknown ``dtype`` or a bad prefix (:func:`c_prefix`).
+        Unknown ``dtype``, a bad prefix (:func:`c_prefix`), or a vehicle rotor with another
+        propeller or its own parameter set.
     TypeError
         ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
         ``RotorMap(ds)``).
@@ -383,8 +479,10 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     check = f"check_{rm.interpolation}_"
     # the include guard carries a hash of the content: two different maps given the same
     # prefix then fail to compile (redefinitions) instead of one being skipped silently
+    block = "" if vehicle is None else _vehicle_block(vehicle, rm, prefix)
     digest = hashlib.sha256(b"".join(np.ascontiguousarray(x).tobytes() for x in (
-        rm.omega, rm.airspeed, rm.incidence, table, rm._cellflag)) + rm.interpolation.encode()).hexdigest()[:12]
+        rm.omega, rm.airspeed, rm.incidence, table, rm._cellflag)) + rm.interpolation.encode()
+        + block.encode()).hexdigest()[:12]
     guard = f"{prefix.upper()}_H_{digest.upper()}"
     unc = ""
     if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the table's
@@ -407,4 +505,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         table=_numbers(table.reshape(-1), fmt_tab), ncell=rm._cellflag.size,
         cells=",\n".join("    " + ", ".join(str(int(c)) for c in row)
                          for row in rm._cellflag.reshape(-1, rm._cellflag.shape[-1])))
+    if block:
+        end = f"#endif /* {guard} */"
+        text = text.replace(end, block.lstrip("\n") + "\n" + end)
     return text

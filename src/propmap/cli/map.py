@@ -68,6 +68,9 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
               help="Interpolation of the --format c function (linear: 54 ns a call; cubic, the Python "
                    "evaluator's default: 167 ns, 3-9x smaller largest errors; docs/simulators.md).")
 @click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>).")
+@click.option("--vehicle", type=PathArg(), default=None,
+              help="With --format c: add <prefix>_vehicle_wrench, the body force and moment of this vehicle TOML "
+                   "(every rotor this map's propeller).")
 @click.option("--check-points", type=int, default=2000, show_default=True,
               help="Random off-grid points at which the full model checks the map (0: none).")
 @click.option("--check", "check_file", type=PathArg(), default=None,
@@ -91,7 +94,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @with_prop_options
 @with_air_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,
-                c_name, check_points, check_file, all_props, only, max_error_pct, scheduler, plot_dir, plot_rpm, as_json,
+                c_name, vehicle, check_points, check_file, all_props, only, max_error_pct, scheduler, plot_dir, plot_rpm, as_json,
                 diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
@@ -122,14 +125,14 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         raise InputError("--out is required (the map file)")
     if all_props:
         ignored = given(ctx, "params_spec", "collective_deg", "fmt", "plot_dir", "plot_rpm", "diameter_in", "blades",
-                        "c_type", "c_interpolation", "c_name")
+                        "c_type", "c_interpolation", "c_name", "vehicle")
         if ignored:
             raise InputError(f"{', '.join(ignored)} {'does' if len(ignored) == 1 else 'do'} not apply to --all (one "
                              "netCDF map, each propeller with its catalogue geometry and default parameters, no plots)")
     if not 0 <= check_points <= 1_000_000:
         raise InputError(f"--check-points must be in [0, 1000000], got {check_points}")
     if fmt != "c":
-        ignored = given(ctx, "c_type", "c_interpolation", "c_name")
+        ignored = given(ctx, "c_type", "c_interpolation", "c_name", "vehicle")
         if ignored:
             raise InputError(f"{', '.join(ignored)} appl{'ies' if len(ignored) == 1 else 'y'} to --format c")
     else:
@@ -144,8 +147,13 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         raise InputError("--plot-rpm applies to --plot")
     if out.suffix.lower() != FORMATS[fmt]:
         raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} (or choose --format)")
-    inputs = [params_spec, prop]
+    inputs = [params_spec, prop, vehicle]
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
+    veh = None
+    if vehicle is not None:
+        from .flight import _vehicle
+
+        veh = _vehicle(vehicle)
 
     import numpy as np
 
@@ -158,6 +166,12 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         rpm, V, inc = _axes(median, rpm_axis, airspeed_axis, incidence_axis, len(names))
     else:
         propeller = load_prop(prop, diameter_in, blades)
+        if veh is not None:  # refused before the build, not after it
+            for k, r in enumerate(veh.rotors):
+                if r.propeller.name != propeller.name or r.params is not None:
+                    raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name}"
+                                     f"{' with its own parameters' if r.params is not None else ''}, not the map's "
+                                     f"{propeller.name}: a C header holds one map")
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
         check_section_match(propeller, label)
@@ -188,7 +202,10 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
             from ..io.mapfile import write_with_sidecar
             from ..maps import RotorMap
 
-            text = c_header_text(RotorMap(ds, c_interpolation), out, dtype=c_type, name=c_name)
+            try:
+                text = c_header_text(RotorMap(ds, c_interpolation), out, dtype=c_type, name=c_name, vehicle=veh)
+            except ValueError as exc:
+                raise InputError(f"--vehicle: {exc}") from None
             files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text))
         else:
             files = write_map(ds, out, fmt)
