@@ -180,11 +180,14 @@ _CUBIC_DECL = """    int inside, status, i0, i1, i2, j0[4], j1[4], j2[4], a, b, 
     double w0[4], w1[4], w2[4], r[4] = {{0.0, 0.0, 0.0, 0.0}}, s;
 """
 
-# the cubic Hermite weights of core/_interp.py (_cubic_weights), nodes i-1 .. i+2 clamped
+# the cubic Hermite weights of core/_interp.py (_cubic_weights), nodes i-1 .. i+2 clamped; the
+# node slopes' coefficients of each cell (da: at its left node, db: at its right node, on the
+# nodes i-1 .. i+2) are precomputed per axis (_slopes), so a call does no division but t's
 _CUBIC_WEIGHTS = """
-static inline int {prefix}_weights(const double *ax, int n, double x, double w[4], int j[4])
+static inline int {prefix}_weights(const double *ax, const double *sl, int n, double x, double w[4], int j[4])
 {{
-    double t, h, t2, t3, h00, h01, h10, h11, g, c, q, da[4] = {{0.0, 0.0, 0.0, 0.0}}, db[4] = {{0.0, 0.0, 0.0, 0.0}};
+    double t, h, t2, t3, h00, h01, h10, h11;
+    const double *da, *db;
     int i = {prefix}_locate(ax, n, x, &t), m;
     j[0] = i > 0 ? i - 1 : 0; j[1] = i; j[2] = i + 1; j[3] = i + 2 < n ? i + 2 : n - 1;
     if (n == 2) {{
@@ -195,29 +198,48 @@ static inline int {prefix}_weights(const double *ax, int n, double x, double w[4
     t2 = t * t; t3 = t2 * t;
     h00 = 2.0 * t3 - 3.0 * t2 + 1.0; h01 = 3.0 * t2 - 2.0 * t3;
     h10 = h * (t3 - 2.0 * t2 + t); h11 = h * (t3 - t2);
-    if (i == 0) {{
-        g = ax[2] - ax[1]; c = h / (h + g);
-        da[1] = -(1.0 + c) / h; da[2] = (1.0 + c) / h + c / g; da[3] = -c / g;
-    }} else {{
-        g = ax[i] - ax[i - 1]; q = g + h;
-        da[0] = -h / (g * q); da[1] = (h / g - g / h) / q; da[2] = g / (h * q);
-    }}
-    if (i + 1 == n - 1) {{
-        g = ax[i] - ax[i - 1]; c = h / (g + h);
-        db[0] = c / g; db[1] = -(1.0 + c) / h - c / g; db[2] = (1.0 + c) / h;
-    }} else {{
-        g = ax[i + 2] - ax[i + 1]; q = h + g;
-        db[1] = -g / (h * q); db[2] = (g / h - h / g) / q; db[3] = h / (g * q);
-    }}
+    da = sl + 8 * i; db = da + 4;
     for (m = 0; m < 4; m++) w[m] = h10 * da[m] + h11 * db[m];
     w[1] += h00; w[2] += h01;
     return i;
 }}
 """
 
-_CUBIC_BODY = """    i0 = {prefix}_weights(a0, {n0}, omega, w0, j0);
-    i1 = {prefix}_weights(a1, {n1}, airspeed, w1, j1);
-    i2 = {prefix}_weights(a2, {n2}, incidence, w2, j2);
+
+def _slopes(ax: np.ndarray) -> np.ndarray:
+    """Per cell i of an axis (n >= 3 nodes), the coefficients on the nodes i-1 .. i+2 of the
+    node slopes at its left (4) and right (4) node: the three-point parabola's derivative,
+    one-sided at the ends (core/_interp.py, _cubic_weights), shape (n - 1, 8). An axis of 2
+    nodes is linear: zeros."""
+    n = ax.size
+    out = np.zeros((max(n - 1, 1), 8))
+    if n < 3:
+        return out
+    for i in range(n - 1):
+        h = ax[i + 1] - ax[i]
+        da, db = out[i, :4], out[i, 4:]
+        if i == 0:
+            g = ax[2] - ax[1]
+            c = h / (h + g)
+            da[1], da[2], da[3] = -(1.0 + c) / h, (1.0 + c) / h + c / g, -c / g
+        else:
+            g = ax[i] - ax[i - 1]
+            q = g + h
+            da[0], da[1], da[2] = -h / (g * q), (h / g - g / h) / q, g / (h * q)
+        if i + 1 == n - 1:
+            g = ax[i] - ax[i - 1]
+            c = h / (g + h)
+            db[0], db[1], db[2] = c / g, -(1.0 + c) / h - c / g, (1.0 + c) / h
+        else:
+            g = ax[i + 2] - ax[i + 1]
+            q = h + g
+            db[1], db[2], db[3] = -g / (h * q), (g / h - h / g) / q, h / (g * q)
+    return out
+
+
+_CUBIC_BODY = """    i0 = {prefix}_weights(a0, {prefix}_slope0, {n0}, omega, w0, j0);
+    i1 = {prefix}_weights(a1, {prefix}_slope1, {n1}, airspeed, w1, j1);
+    i2 = {prefix}_weights(a2, {prefix}_slope2, {n2}, incidence, w2, j2);
     s = (omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed) * fade;
     for (a = 0; a < 4; a++) {{
         for (b = 0; b < 4; b++) {{
@@ -242,6 +264,7 @@ def _numbers(values, fmt: str, per_line: int = 6) -> str:
 #: the names the header defines after its prefix: functions and tables (prefix as given),
 #: macros (prefix in upper case); the include guard adds _H_<hash>
 _C_NAMES = ("loads", "locate", "weights", "omega", "airspeed", "incidence", "table", "cellflag", "wrench",
+            "slope0", "slope1", "slope2",
             "vehicle_wrench", "rotor_pos", "rotor_axis", "rotor_spin", "rotor_h", "body_cd")
 _C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H", "NROT")
 #: names the C standard reserves (C11 7.1.3 and the future library directions 7.31, C23
@@ -473,9 +496,16 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     table = rm._table.astype(np.float32 if dtype == "float" else np.float64)
     n0, n1, n2 = rm.omega.size, rm.airspeed.size, rm.incidence.size
     cubic = rm.interpolation == "cubic"
+    slopes = ""
+    if cubic:  # each axis's per-cell slope coefficients (_slopes), as static tables
+        slopes = "".join(
+            f"static const double {prefix}_slope{k}[{8 * max(ax.size - 1, 1)}] = {{\n"
+            + _numbers(_slopes(ax).reshape(-1), ".17g", 8) + "\n};\n"
+            for k, ax in enumerate((rm.omega, rm.airspeed, rm.incidence)))
     template = (_TEMPLATE.replace("{decl}", _CUBIC_DECL if cubic else _LINEAR_DECL)
                 .replace("{body}", _CUBIC_BODY if cubic else _LINEAR_BODY)
-                .replace("{weights_fn}", _CUBIC_WEIGHTS if cubic else ""))
+                .replace("{weights_fn}", (slopes.replace("{", "{{").replace("}", "}}") + _CUBIC_WEIGHTS)
+                         if cubic else ""))
     check = f"check_{rm.interpolation}_"
     # the include guard carries a hash of the content: two different maps given the same
     # prefix then fail to compile (redefinitions) instead of one being skipped silently
