@@ -35,7 +35,7 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *           lowest row's loads times (omega / omega_min)^2, 0 at omega = 0),
  *           {PREFIX}_NAN (outside: NaN), {PREFIX}_ERROR (outside: out untouched, returns -1).
  *   returns 0 inside an unflagged cell, 1 inside a flagged cell (vortex ring or multiple
- *   roots at a node of the cell or of a neighbour cell: the error bound does not hold),
+ *   roots at a node of the cell or of a neighbour cell: the measured error does not hold),
  *   2 outside the grid (clipped or NaN),
  *   -1 outside with {PREFIX}_ERROR, a NaN argument, omega < 0 (give its magnitude) or an
  *   unknown policy.

@@ -164,7 +164,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
               discretization: Discretization = DEFAULT_DISCRETIZATION, params_label: str = "",
               citation: str = "", chunk_points: int = 20_000, scheduler=None, progress: bool = False,
               n_check: int = 2000, seed: int = 0):
-    """Tabulate the model on the grid omega x airspeed x incidence, with its error bound.
+    """Tabulate the model on the grid omega x airspeed x incidence, with its measured interpolation error (a sample maximum).
 
     Parameters
     ----------
@@ -447,7 +447,7 @@ class MapLoads(NamedTuple):
     flagged : ndarray of bool
         The query is outside the grid, or a node of its cell or of a neighbour cell (the
         4 x 4 x 4 nodes around it) is flagged vortex_ring or
-        multiple_roots or did not converge (the map's error bound does not hold there).
+        multiple_roots or did not converge (the map's measured error does not hold there).
     """
 
     thrust: np.ndarray
@@ -501,7 +501,7 @@ class RotorMap:
     omega, airspeed, incidence : ndarray
         The grid's axes in SI units (rad/s, m/s, rad).
     attrs : dict
-        The map's metadata (propeller, parameters, model, version, citation, error bound).
+        The map's metadata (propeller, parameters, model, version, citation, measured error).
     interpolation : str
 
     Raises

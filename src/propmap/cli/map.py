@@ -74,7 +74,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 @click.option("--check-points", type=int, default=2000, show_default=True,
               help="Random off-grid points at which the full model checks the map (0: none).")
 @click.option("--check", "check_file", type=PathArg(), default=None,
-              help="Recompute the error bound of an existing netCDF map (no PROP).")
+              help="Recompute the measured error of an existing netCDF map on fresh points (no PROP).")
 @click.option("--all", "all_props", is_flag=True,
               help="One netCDF map over every catalogue propeller (a prop dimension), each with its default "
                    "parameters, on one grid (default axes from the median diameter).")
@@ -90,7 +90,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
               help="Folder for contour maps of T, D, Q and the hover model's error.")
 @click.option("--plot-rpm", default=None, help="Comma-separated rpm of the contour maps, within the rpm axis (each "
                                                "drawn at its nearest node; default: the middle of the axis).")
-@click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and error bound as JSON.")
+@click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and measured error as JSON.")
 @with_prop_options
 @with_air_options
 def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,

@@ -593,7 +593,7 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
 
 def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Path]:
     """Write a map atomically: netCDF (``fmt="netcdf"``) or a long-form CSV (``"csv"``),
-    plus a JSON sidecar ``<path>.json`` of its metadata and error bound, written as a pair
+    plus a JSON sidecar ``<path>.json`` of its metadata and measured error, written as a pair
     (:func:`write_with_sidecar`).
 
     Returns
@@ -640,7 +640,7 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
 
 
 def write_sidecar(ds, path) -> Path:
-    """Write a map's metadata and error bound as JSON (atomically): its attributes, sizes,
+    """Write a map's metadata and measured error as JSON (atomically): its attributes, sizes,
     axis ranges and variable units; a value that is not finite (an error with no point
     to measure it) is written as null. Without the map file it describes: prefer
     :func:`write_map` or :func:`write_with_sidecar`, which write both as a pair.
