@@ -95,6 +95,22 @@ def test_scalar_and_array_queries_agree(small_map, interpolation):
     assert a.thrust == b.thrust[0] and a.rolling_moment == b.rolling_moment[0] and a.flagged == b.flagged[0]
 
 
+def test_windmilling_negative_torque_and_thrust_are_kept(small_map):
+    """At 4000 rpm and 15 m/s of axial climb (J = 1.1) apce_8x6 windmills: the model's torque and thrust are
+    negative (-0.0015 N m, -0.41 N; regression values of the calibrated set). The map holds them as they are
+    (the table divides by (Omega R)^2 + V^2, never by a load), in Python and so in the C header."""
+    prop, params, ds = small_map
+    rm = RotorMap(ds)
+    om = 4000 * RPM
+    model = pm.rotor_loads(prop, params, om, 15.0, 0.0)
+    got = rm.loads(om, 15.0, 0.0)
+    assert model.torque < 0 and model.thrust < 0
+    assert got.torque == pytest.approx(float(model.torque), rel=1e-12) and got.power < 0
+    assert got.thrust == pytest.approx(float(model.thrust), rel=1e-12)
+    w = rm.wrench((0.0, 0.0, 15.0), (0.0, 0.0, 1.0), om, "ccw")
+    assert w.force[2] < 0 and w.torque[2] > 0  # the windmilling rotor drives its shaft: -spin Q z points up
+
+
 def test_spin_up_below_the_grid_and_a_stopped_rotor(small_map):
     """0 <= Omega < the lowest rpm under "clip": the lowest row's loads x (Omega / Omega_min)^2 (was the lowest
     row's loads: a stopped rotor gave the thrust of the lowest rpm); a signed Omega is refused."""
