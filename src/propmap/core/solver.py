@@ -406,7 +406,9 @@ def _range_error(name: str, value) -> ValueError:
     lo, hi, unit = _RANGES[name]
     why = ""
     if name == "omega" and isinstance(value, float) and 0 <= value < lo:
-        why = " (a parked propeller is not modelled: the coefficients are referred to the rotation rate)"
+        why = (" (a parked propeller is not modelled: the coefficients are referred to the rotation rate; for spin-up "
+               "and a stopped rotor use a map, RotorMap.loads(..., out_of_grid='clip'), which scales its lowest "
+               "row's loads to 0 at Omega = 0)")
     if name == "incidence" and isinstance(value, float) and -math.pi <= value < 0:
         why = " (the model is symmetric in the incidence: give its magnitude)"
     return ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got {value!r}{why}")
