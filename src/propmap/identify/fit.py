@@ -19,8 +19,6 @@ import time
 from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
-from scipy import optimize, stats
-from scipy.stats import qmc
 
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
@@ -408,6 +406,8 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None) -> I
         if sig.size < p:  # fewer residuals than parameters: the missing directions are free
             std = np.full(p, np.inf)
         std = np.where(np.isnan(std), np.inf, std)
+        from scipy import stats
+
         t = stats.t.ppf(0.975, dof)
         ci = np.column_stack([x - t * std, x + t * std])
         corr = cov / np.outer(std, std)
@@ -520,6 +520,8 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
     starts = [x0]
     if options.multistart > 0:
         m = max(0, math.ceil(math.log2(options.multistart)))  # Sobol' points come in powers of 2
+        from scipy.stats import qmc
+
         sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random_base2(m)[: options.multistart]
         starts += list(lb + sob * (ub - lb))
     counter = {"n": 0}
@@ -534,6 +536,8 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
         return _jacobian(fun, np.array(x, float), lb, ub)
 
     def run(x_start, max_nfev):
+        from scipy import optimize
+
         r = optimize.least_squares(fun, x_start, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
                                    max_nfev=max_nfev, xtol=1e-10, ftol=1e-10, gtol=1e-10)
         log.append({"x0": np.array(x_start), "x": r.x.copy(), "cost": float(r.cost), "nfev": int(r.nfev),
@@ -712,6 +716,8 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         count["n"] += 2 * len(x)
         return _jacobian(smooth, np.array(x, float), lb, ub)
 
+    from scipy import optimize  # imported where used: `propmap wrench` and `loads` start without it
+
     r2 = optimize.least_squares(f, x_smooth, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
                                 max_nfev=options.max_nfev, xtol=1e-12, ftol=1e-12, gtol=1e-12)
     scale = np.maximum(np.abs(r2.x), 0.1)
@@ -851,6 +857,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
         dof1 = data.n - len(names)
         F = ((rss0 - rss1) / 3) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
+        from scipy import stats
+
         p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")
         matters = bool(p_value < 0.05)
         verdict = {

@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..core.airfoil import Air, AirfoilParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
@@ -57,5 +56,7 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
         if f(lo) * f(hi) > 0:
             raise ValueError(f"no rotor speed in {omega_bounds} rad/s trims condition {j} "
                              f"(V={V[j]:g} m/s, pitch={math.degrees(pitch[j]):g} deg)")
+        from scipy.optimize import brentq  # imported where used: the CLI starts without it
+
         omega[j] = brentq(f, lo, hi, xtol=1e-10, rtol=1e-13)
     return LevelFlightData(V, pitch, np.zeros(V.size), np.repeat(omega[:, None], n_rot, axis=1), np.zeros((V.size, 3)))
