@@ -67,6 +67,11 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
     b = rng.uniform(0, math.pi, n)
     policy = rng.integers(0, 3, n)
     policy[:6] = (0, 1, 0, 1, 0, 1)
+    # queries on the nodes of the uniform and geometric axes, whose cells the header finds by arithmetic: the same
+    # cell (and flag) as the bisection of the Python evaluator
+    V[6:46] = rm.airspeed[rng.integers(0, rm.airspeed.size, 40)]
+    b[6:46] = rm.incidence[rng.integers(0, rm.incidence.size, 40)]
+    om[30:60] = rm.omega[rng.integers(0, rm.omega.size, 30)]
     stdin = "".join(f"{float(o)!r} {float(v)!r} {float(x)!r} {int(p)}\n" for o, v, x, p in zip(om, V, b, policy))
     rows = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
                                                              check=True).stdout.splitlines()], dtype=float)

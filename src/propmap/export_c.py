@@ -75,6 +75,11 @@ _TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
 #define {PREFIX}_N1 {n1}
 #define {PREFIX}_N2 {n2}
 #define {PREFIX}_RADIUS {radius!r}
+/* 1 / the step of a uniform axis, -1 / log(ratio) of a geometric one (cells found by arithmetic),
+   0 for another (bisection) */
+#define {PREFIX}_U0 {u0}
+#define {PREFIX}_U1 {u1}
+#define {PREFIX}_U2 {u2}
 
 static const double {prefix}_omega[{n0}] = {{{ax0}}};
 static const double {prefix}_airspeed[{n1}] = {{{ax1}}};
@@ -89,12 +94,23 @@ static const unsigned char {prefix}_cellflag[{ncell}] = {{
 {cells}
 }};
 
-static inline int {prefix}_locate(const double *ax, int n, double x, double *frac)
+/* the cell lo with ax[lo] <= x < ax[lo + 1] (lo = n - 2 at the last node), x within the axis:
+   by bisection, or by arithmetic and one correction for rounding on a uniform axis (inv_h =
+   1 / its step > 0) or a geometric one (inv_h = -1 / log of its ratio < 0): the same cell
+   without the bisection's unpredictable branches */
+static inline int {prefix}_locate(const double *ax, int n, double x, double inv_h, double *frac)
 {{
     int lo = 0, hi = n - 1;
-    while (hi - lo > 1) {{
-        int mid = (lo + hi) >> 1;
-        if (ax[mid] <= x) lo = mid; else hi = mid;
+    if (inv_h != 0.0) {{
+        lo = (int)(inv_h > 0.0 ? (x - ax[0]) * inv_h : -log(x / ax[0]) * inv_h);
+        lo = lo < 0 ? 0 : (lo > n - 2 ? n - 2 : lo);
+        if (lo > 0 && x < ax[lo]) lo--;
+        else if (lo < n - 2 && x >= ax[lo + 1]) lo++;
+    }} else {{
+        while (hi - lo > 1) {{
+            int mid = (lo + hi) >> 1;
+            if (ax[mid] <= x) lo = mid; else hi = mid;
+        }}
     }}
     *frac = (x - ax[lo]) / (ax[lo + 1] - ax[lo]);
     return lo;
@@ -159,9 +175,9 @@ _LINEAR_DECL = """    int inside, status, i0, i1, i2, k;
     double f0, f1, f2, g0, g1, g2, w[8], s;
 """
 
-_LINEAR_BODY = """    i0 = {prefix}_locate(a0, {n0}, omega, &f0);
-    i1 = {prefix}_locate(a1, {n1}, airspeed, &f1);
-    i2 = {prefix}_locate(a2, {n2}, incidence, &f2);
+_LINEAR_BODY = """    i0 = {prefix}_locate(a0, {n0}, omega, {PREFIX}_U0, &f0);
+    i1 = {prefix}_locate(a1, {n1}, airspeed, {PREFIX}_U1, &f1);
+    i2 = {prefix}_locate(a2, {n2}, incidence, {PREFIX}_U2, &f2);
     g0 = 1.0 - f0; g1 = 1.0 - f1; g2 = 1.0 - f2;
     w[0] = g0 * g1 * g2; w[1] = g0 * g1 * f2; w[2] = g0 * f1 * g2; w[3] = g0 * f1 * f2;
     w[4] = f0 * g1 * g2; w[5] = f0 * g1 * f2; w[6] = f0 * f1 * g2; w[7] = f0 * f1 * f2;
@@ -184,11 +200,12 @@ _CUBIC_DECL = """    int inside, status, i0, i1, i2, j0[4], j1[4], j2[4], a, b, 
 # node slopes' coefficients of each cell (da: at its left node, db: at its right node, on the
 # nodes i-1 .. i+2) are precomputed per axis (_slopes), so a call does no division but t's
 _CUBIC_WEIGHTS = """
-static inline int {prefix}_weights(const double *ax, const double *sl, int n, double x, double w[4], int j[4])
+static inline int {prefix}_weights(const double *ax, const double *sl, int n, double inv_h, double x, double w[4],
+                                   int j[4])
 {{
     double t, h, t2, t3, h00, h01, h10, h11;
     const double *da, *db;
-    int i = {prefix}_locate(ax, n, x, &t), m;
+    int i = {prefix}_locate(ax, n, x, inv_h, &t), m;
     j[0] = i > 0 ? i - 1 : 0; j[1] = i; j[2] = i + 1; j[3] = i + 2 < n ? i + 2 : n - 1;
     if (n == 2) {{
         w[0] = 0.0; w[1] = 1.0 - t; w[2] = t; w[3] = 0.0;
@@ -204,6 +221,20 @@ static inline int {prefix}_weights(const double *ax, const double *sl, int n, do
     return i;
 }}
 """
+
+
+def _inverse_step(ax: np.ndarray) -> str:
+    """1 / the step of a uniform axis (steps equal to 1e-9 relative), or -1 / log of the
+    ratio of a geometric one (positive nodes, ratios equal to 1e-9 relative), as C text;
+    "0.0" for another, whose cells the header finds by bisection."""
+    d = np.diff(ax)
+    if d.size and np.all(np.abs(d - d.mean()) <= 1e-9 * d.mean()):
+        return repr(float(1.0 / d.mean()))
+    if d.size and ax[0] > 0:
+        lr = np.diff(np.log(ax))
+        if np.all(np.abs(lr - lr.mean()) <= 1e-9 * lr.mean()):
+            return repr(float(-1.0 / lr.mean()))
+    return "0.0"
 
 
 def _slopes(ax: np.ndarray) -> np.ndarray:
@@ -237,9 +268,9 @@ def _slopes(ax: np.ndarray) -> np.ndarray:
     return out
 
 
-_CUBIC_BODY = """    i0 = {prefix}_weights(a0, {prefix}_slope0, {n0}, omega, w0, j0);
-    i1 = {prefix}_weights(a1, {prefix}_slope1, {n1}, airspeed, w1, j1);
-    i2 = {prefix}_weights(a2, {prefix}_slope2, {n2}, incidence, w2, j2);
+_CUBIC_BODY = """    i0 = {prefix}_weights(a0, {prefix}_slope0, {n0}, {PREFIX}_U0, omega, w0, j0);
+    i1 = {prefix}_weights(a1, {prefix}_slope1, {n1}, {PREFIX}_U1, airspeed, w1, j1);
+    i2 = {prefix}_weights(a2, {prefix}_slope2, {n2}, {PREFIX}_U2, incidence, w2, j2);
     s = (omega * omega * {PREFIX}_RADIUS * {PREFIX}_RADIUS + airspeed * airspeed) * fade;
     for (a = 0; a < 4; a++) {{
         for (b = 0; b < 4; b++) {{
@@ -266,7 +297,7 @@ def _numbers(values, fmt: str, per_line: int = 6) -> str:
 _C_NAMES = ("loads", "locate", "weights", "omega", "airspeed", "incidence", "table", "cellflag", "wrench",
             "slope0", "slope1", "slope2",
             "vehicle_wrench", "rotor_pos", "rotor_axis", "rotor_spin", "rotor_h", "body_cd")
-_C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H", "NROT")
+_C_MACROS = ("CLIP", "NAN", "ERROR", "N0", "N1", "N2", "RADIUS", "T", "H", "NROT", "U0", "U1", "U2")
 #: names the C standard reserves (C11 7.1.3 and the future library directions 7.31, C23
 #: 7.33): any identifier of file scope beginning with an underscore, and the macro
 #: namespaces of the headers (the header includes <math.h>, whose FP_NAN a prefix ``fp``
@@ -529,6 +560,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         eQ=_pct(a.get(check + "torque_max")), eD=_pct(a.get(check + "drag_max")),
         interpolation=rm.interpolation,
         npts=int(a.get("check_points", 0)), prefix=prefix, PREFIX=prefix.upper(), GUARD=guard,
+        u0=_inverse_step(rm.omega), u1=_inverse_step(rm.airspeed), u2=_inverse_step(rm.incidence),
         radius=float(rm.radius), ax0=", ".join(format(float(x), fmt_axis) for x in rm.omega),
         ax1=", ".join(format(float(x), fmt_axis) for x in rm.airspeed),
         ax2=", ".join(format(float(x), fmt_axis) for x in rm.incidence), ntab=table.size,
