@@ -122,18 +122,26 @@ int main(void)
 """
 
 
-def c_speed(rm: RotorMap):
+def _c_runs(rm: RotorMap, source: str, vehicle=None):
+    """(compiler, ns per call of each of 5 runs) of the C program ``source`` against rm's header
+    (map.h, with ``vehicle``'s function), compiled at -O2; (None, []) without a compiler."""
     cc = shutil.which("cc") or shutil.which("gcc")
     if cc is None:
-        return {"c_ns_per_call": None, "note": "no C compiler"}
+        return None, []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        write_c_header(rm, tmp / "map.h")
-        (tmp / "b.c").write_text(C_BENCH.replace("OMIN", repr(float(rm.omega[0]))).replace(
-            "OMAX", repr(float(rm.omega[-1]))).replace("VMAX", repr(float(rm.airspeed[-1]))))
+        write_c_header(rm, tmp / "map.h", vehicle=vehicle)
+        (tmp / "b.c").write_text(source)
         subprocess.run([cc, "-std=c99", "-O2", "-o", str(tmp / "b"), str(tmp / "b.c"), "-lm"], check=True)
-        runs = [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
-                for _ in range(5)]
+        return cc, [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
+                    for _ in range(5)]
+
+
+def c_speed(rm: RotorMap):
+    cc, runs = _c_runs(rm, C_BENCH.replace("OMIN", repr(float(rm.omega[0]))).replace(
+        "OMAX", repr(float(rm.omega[-1]))).replace("VMAX", repr(float(rm.airspeed[-1]))))
+    if cc is None:
+        return {"c_ns_per_call": None, "note": "no C compiler"}
     return {"c_ns_per_call_median": float(np.median(runs)), "c_ns_per_call_min": min(runs), "compiler": cc}
 
 
@@ -168,17 +176,10 @@ def c_vehicle_speed(rm: RotorMap):
     """The quadrotor example's C vehicle step (pm_map_vehicle_wrench, four rotors), ns per step, -O2."""
     from propmap.vehicle import read_vehicle
 
-    cc = shutil.which("cc") or shutil.which("gcc")
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    cc, runs = _c_runs(rm, C_VEHICLE_BENCH, veh)
     if cc is None:
         return {"c_ns_per_step": None, "note": "no C compiler"}
-    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = Path(tmp)
-        write_c_header(rm, tmp / "map.h", vehicle=veh)
-        (tmp / "b.c").write_text(C_VEHICLE_BENCH)
-        subprocess.run([cc, "-std=c99", "-O2", "-o", str(tmp / "b"), str(tmp / "b.c"), "-lm"], check=True)
-        runs = [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
-                for _ in range(5)]
     return {"interpolation": rm.interpolation, "c_ns_per_vehicle_step_median": float(np.median(runs)),
             "c_ns_per_vehicle_step_min": min(runs), "compiler": cc}
 
