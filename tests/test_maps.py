@@ -322,3 +322,22 @@ def test_default_grid_meets_the_error_targets_outside_flagged_regions():
         head = {"linear": 1.01, "cubic": 1.5}[m]
         assert a[f"check_{m}_thrust_max"] <= head * limit / 100 and a[f"check_{m}_torque_max"] <= head * limit / 100, m
         assert a[f"check_{m}_drag_max"] <= 2 * limit / 100, m
+
+
+def test_exactly_in_plane_velocities_are_on_the_incidence_axis_end():
+    """A map whose incidence axis ends at 90 deg, queried with exactly in-plane velocities: the arccos lands a few
+    ulp either side of pi/2 depending on the arithmetic, which decided "inside" differently in the scalar and array
+    paths of RotorMap.wrench (488 of 5,000 disagreed) and made some edgewise queries "outside"."""
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.geomspace(3000, 9000, 4) * RPM, np.linspace(0, 12, 4),
+                   np.radians(np.linspace(0, 90, 5)), air=params.air, n_check=0)
+    rm = RotorMap(ds)
+    rng = np.random.default_rng(0)
+    for _ in range(300):
+        ang, V = rng.uniform(0, 2 * math.pi), rng.uniform(0.1, 12)
+        v = np.array([V * math.cos(ang), V * math.sin(ang), 0.0])
+        a = rm.wrench(v, np.array([0.0, 0.0, 1.0]), 600.0)  # "raise": never outside
+        b = rm.wrench(v[None], np.array([[0.0, 0.0, 1.0]]), np.array([600.0]))
+        assert a.loads.inside and b.loads.inside[0] and a.loads.flagged == b.loads.flagged[0]
+        np.testing.assert_allclose(a.force, b.force[0], rtol=1e-12, atol=1e-15)

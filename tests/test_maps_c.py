@@ -95,6 +95,9 @@ def test_c_header_compiles_cleanly_and_matches_the_python_evaluator(tmp_path, ro
     assert np.all(status[m & inside] >= 0)
     header = (tmp_path / "map.h").read_text()
     assert f"; {interpolation} interpolation." in header and ("_weights(" in header) == (interpolation == "cubic")
+    # the arithmetic cell lookup is on for the fixture's geometric rpm and uniform airspeed/incidence axes
+    for k in range(3):
+        assert f"#define PM_MAP_U{k} 0.0\n" not in header and f"#define PM_MAP_U{k} " in header
 
 
 WRENCH_DRIVER = r"""

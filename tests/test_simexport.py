@@ -127,3 +127,21 @@ def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):
     d = json.loads(out)
     assert set(d["errors"]["thrust"]) >= {"rms", "max"} and len(d["coefficients"]["CT"]) == 6
     assert np.isfinite(json.loads((tmp_path / "g.json").read_text())["CQ"]).all()
+
+
+@pytest.mark.parametrize("target, name", [("rotorpy", "c.py"), ("gazebo-classic", "c.sdf")])
+def test_a_label_cannot_inject_into_the_written_file(tmp_path, model, target, name, capsys):
+    """A label (a parameter file's path may hold a newline) with a newline and "-->": was run as code in the .py
+    and closed the SDF comment."""
+    prop, params, air, _ = model
+    env = Envelope(rpm=(4000.0, 9000.0), airspeed=(0.0, 10.0), incidence_deg=(0.0, 90.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        res = export_sim(target, prop, params, air=air, envelope=env, n_points=60,
+                         params_label="x\nprint('INJECTED')  # --> <motorConstant>1</motorConstant>")
+    path, _ = write_export(res, tmp_path / name)
+    coefficients = _read(target, path)  # parses: the label stayed inside the comment
+    assert "INJECTED" not in capsys.readouterr().out
+    assert set(coefficients) >= ({"k_eta", "k_m"} if target == "rotorpy" else {"motorConstant", "momentConstant"})
+    if target != "rotorpy":
+        assert coefficients["motorConstant"] == pytest.approx(res.coefficients["motorConstant"])

@@ -4,6 +4,7 @@ their sources. Hover is pinned to the model's within 0.5% (to round-off), the re
 errors are reproduced, spins and signs agree with propmap's vectors (rotor_wrench)."""
 
 import math
+import re
 import runpy
 import warnings
 
@@ -54,7 +55,8 @@ def test_rotorpy_directions_are_the_reaction_torque_sign():
 
 def test_rotorpy_itself_hovers_the_vehicle_and_reproduces_the_reported_error(tmp_path, model, samples):
     """The written quad_params, run by RotorPy's Multirotor.compute_body_wrench."""
-    Multirotor = pytest.importorskip("rotorpy.vehicles.multirotor").Multirotor
+    from rotorpy.vehicles.multirotor import Multirotor  # a test dependency (pyproject): missing fails, not skips
+
     prop, params, air = model
     veh = _vehicle(prop)
     om_h = hover_omega(veh, params, air=air)
@@ -119,13 +121,17 @@ def _plugin(target, c, velocity, axis, omega, turning_direction):
 
 
 @pytest.mark.parametrize("target", ["gazebo-classic", "gz-sim"])
-def test_gazebo_plugins_formulas_hover_and_signs(model, samples, target):
+def test_gazebo_plugins_formulas_hover_and_signs(tmp_path, model, samples, target):
     prop, params, air = model
     res = _export(model, target)
-    c = dict(res.coefficients)
-    # the file's advice: gz-sim's cw rotors get the negative coefficient, the classic plugin's the same one
-    c["rollingMomentCoefficient_cw"] = -c["rollingMomentCoefficient"] if target == "gz-sim" else \
-        c["rollingMomentCoefficient"]
+    path, _ = write_export(res, tmp_path / "m.sdf")
+    text = path.read_text()
+    # the coefficients as the written SDF gives them; gz-sim's cw rotors take the value its comment gives
+    c = {k: float(v) for k, v in re.findall(r"^<(\w+)>([^<]+)</\1>$", text, flags=re.M)}
+    cw = re.search(r"cw rotors: <rollingMomentCoefficient>([^<]+)</rollingMomentCoefficient>", text)
+    c["rollingMomentCoefficient_cw"] = float(cw.group(1)) if target == "gz-sim" else c["rollingMomentCoefficient"]
+    assert (cw is not None) == (target == "gz-sim")
+    assert c["motorConstant"] == res.coefficients["motorConstant"]
     om_h = ENV.hover * math.pi / 30
     z = np.array([0.0, 0.0, 1.0])
     for spin, direction in (("ccw", 1), ("cw", -1)):

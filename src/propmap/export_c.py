@@ -155,6 +155,11 @@ static inline int {prefix}_wrench(const double velocity[3], const double axis[3]
     speed = sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
     axial = velocity[0] * z[0] + velocity[1] * z[1] + velocity[2] * z[2];
     beta = speed > 0.0 ? acos(fmin(fmax(axial / speed, -1.0), 1.0)) : 0.0;
+    /* an incidence a few ulp beyond an end of the axis is on it (an exactly in-plane velocity) */
+    if (beta > {prefix}_incidence[{n2} - 1] && beta <= {prefix}_incidence[{n2} - 1] + 1e-12)
+        beta = {prefix}_incidence[{n2} - 1];
+    else if (beta < {prefix}_incidence[0] && beta >= {prefix}_incidence[0] - 1e-12)
+        beta = {prefix}_incidence[0];
     status = {prefix}_loads(omega, speed, beta, policy, out);
     if (status < 0) return status;
     for (k = 0; k < 3; k++) ip[k] = velocity[k] - axial * z[k];
@@ -362,6 +367,14 @@ def c_prefix(path, name: str | None = None) -> str:
 def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = None, vehicle=None) -> Path:
     """Write ``rotor_map`` as a self-contained C99 header (atomically): :func:`c_header_text`.
 
+    Parameters
+    ----------
+    rotor_map : RotorMap
+    path : str or Path
+        The header file.
+    dtype, name, vehicle
+        As :func:`c_header_text`.
+
     Returns
     -------
     Path
@@ -464,6 +477,7 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
     rho = float(rm.attrs["rho_kg_m3"])
     pos = np.array([r.position for r in vehicle.rotors], float) - np.asarray(vehicle.centre_of_mass, float)
     axes = np.array([r.axis for r in vehicle.rotors], float)
+    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
     h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * axes
     body = vehicle.body_drag
     cda = np.zeros(3) if body is None else np.asarray(body.drag_area, float)

@@ -18,6 +18,7 @@ import json
 import math
 import os
 import re
+import warnings
 from typing import NamedTuple
 
 import numpy as np
@@ -218,6 +219,10 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     import xarray as xr
 
     check_model_args(propeller, params, air, discretization)
+    if params.flap_compliance > 0 or getattr(params, "inflow", "uniform") != "uniform":
+        warnings.warn("this parameter set gives a side force and a pitching moment (blade flapping or a linear "
+                      "inflow model); a map holds T, D, Q and M_R only, so RotorMap.wrench, VehicleMap and the C "
+                      "header leave them out", UserWarning, stacklevel=2)
 
     from .io.calibration import params_to_si
 
@@ -313,7 +318,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         "Conventions": "CF-1.8",
     }
     # the model's own error against measurements with this set, beside the map's against the model
-    unc = model_uncertainty(params_label)
+    unc = model_uncertainty(params_label or getattr(params, "label", ""))
     attrs["model_uncertainty_axial"] = unc["axial"]
     attrs["model_uncertainty_off_axis"] = unc["off_axis"]
     ds = xr.Dataset(data, coords=coords, attrs=attrs)
@@ -693,6 +698,11 @@ class RotorMap:
         from .core.vector import _check_spin, _spin_sign, disk_frame, wrench_vectors
 
         V, z, speed, beta = disk_frame(velocity, axis)
+        from .core._interp import EDGE_SNAP
+
+        lo, hi = self._box[4], self._box[5]  # an incidence a few ulp beyond an end of the axis is on it
+        beta = np.where((beta > hi) & (beta <= hi + EDGE_SNAP), hi, np.where((beta < lo) & (beta >= lo - EDGE_SNAP),
+                                                                            lo, beta))
         s = _spin_sign(spin)
         ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
         _check_spin(s, np.shape(ml.thrust))

@@ -59,7 +59,7 @@ def parse_envelope(text: str | None, propeller):
                    "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial (in mu "
                    "and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and multinomial.")
 @click.option("--out", type=PathArg(), required=True,
-              help="Coefficient file (.py, .sdf or .json by target); a JSON report OUT.json beside it.")
+              help="Coefficient file (.py, .sdf or .json by target); a JSON report <stem>.report.json beside it.")
 @click.option("--envelope", default=None,
               help="Fit envelope rpm=A:B,airspeed=A:B,incidence_deg=A:B (default: tip speeds 50-150 m/s, "
                    "0-15 m/s, 0-180 deg).")
@@ -118,10 +118,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                           f"the vehicle's, the coefficients {propeller.name}'s", UserWarning, stacklevel=1)
         if hover_rpm is None:
             hover_from = "--vehicle (its hover rpm)"
+            from ..core.solver import SolverError
+
             try:
                 hover_rpm = hover_omega(veh, params, air=air) * 30 / math.pi
-            except ValueError as exc:
-                raise InputError(f"--vehicle: {exc}") from None
+            except (ValueError, SolverError) as exc:
+                raise InputError(f"--vehicle: its hover rpm: {exc}") from None
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)

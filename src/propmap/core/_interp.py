@@ -186,6 +186,23 @@ def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, ord
     _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, 0, inside, flagged)
 
 
+#: an incidence within this of an end of the grid's axis [rad] is taken on it: the arccos of an
+#: exactly in-plane (or axial) velocity lands a few ulp either side of pi/2 (0, pi) depending on
+#: the arithmetic, which must not decide between "inside" and "outside" (RotorMap.wrench's scalar
+#: and array paths, the C header)
+EDGE_SNAP = 1e-12
+
+
+@numba.njit(inline="always", **_FLAGS)
+def snap_edge(x, lo, hi):
+    """``x`` moved onto ``lo`` or ``hi`` when outside by less than EDGE_SNAP."""
+    if hi < x <= hi + EDGE_SNAP:
+        return hi
+    if lo - EDGE_SNAP <= x < lo:
+        return lo
+    return x
+
+
 @numba.njit(**_FLAGS)
 def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, spin, policy, strict, order, out,
                  inside, flagged):
@@ -224,6 +241,7 @@ def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, 
     speed = np.sqrt(vx * vx + vy * vy + vz * vz)
     axial = vx * zx + vy * zy + vz * zz
     beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
+    beta = snap_edge(beta, ax2[0], ax2[-1])
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2
     _one(ax0, ax1, ax2, table, cellflag, radius, omega, speed, beta, policy, order, out, 0, inside, flagged)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -11,12 +12,22 @@ import numpy as np
 from .. import __version__
 from .fit import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS, SimExport
 
-__all__ = ["error_lines", "report_path", "rotorpy_directions", "write_export"]
+__all__ = ["check_rotorpy_vehicle", "error_lines", "report_path", "rotorpy_directions", "write_export"]
 
 
 def report_path(path) -> Path:
     """The report written beside an export: ``<stem>.report.json`` (``c.json`` gets
-    ``c.report.json``, not ``c.json.json``; the fit commands' convention)."""
+    ``c.report.json``, not ``c.json.json``; the fit commands' convention).
+
+    Parameters
+    ----------
+    path : str or Path
+        The export file.
+
+    Returns
+    -------
+    Path
+    """
     path = Path(path)
     return path.with_name(path.stem + ".report.json")
 
@@ -26,8 +37,30 @@ def _pct(value: float) -> str:
     return "n/a" if math.isnan(value) else f"{value:.2%}"
 
 
+def _text(value) -> str:
+    """Free text (a label, a propeller name) made safe inside the written files' comments: one
+    line (a newline would end a Python comment and run the rest as code), no "--" (which ends
+    an XML comment early, "-->")."""
+    text = re.sub(r"[\x00-\x1f\x7f\x85\u2028\u2029]", " ", str(value))
+    while "--" in text:
+        text = text.replace("--", "- -")
+    return text
+
+
 def error_lines(res: SimExport, comment: str = "") -> list[str]:
-    """The error table as text lines, each starting with ``comment`` (and a space)."""
+    """The error table and the model's uncertainty as text lines, each starting with
+    ``comment`` (and a space); the label in them is made one-line (:func:`_text`).
+
+    Parameters
+    ----------
+    res : SimExport
+    comment : str
+        The comment marker of the file the lines go into ("#" for Python, "" for SDF).
+
+    Returns
+    -------
+    list of str
+    """
     e, env = res.errors, res.envelope
     h = e["hover"]
     lines = [f"{comment} hover pinned at {h['rpm']:.6g} rpm: thrust {h['thrust']:.6g} N (error "
@@ -47,7 +80,7 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
         lines.append(f"{comment} {name} {why}")
     u = res.meta.get("model_uncertainty")
     if u:  # the model's own error against measurements, beside the simple model's against it
-        lines.append(f"{comment} the model against measurements ({u['params']}): axial: {u['axial']}")
+        lines.append(f"{comment} the model against measurements ({_text(u['params'])}): axial: {u['axial']}")
         lines.append(f"{comment}   off-axis: {u['off_axis']}")
         t = u.get("edgewise_trend")
         if t and not math.isnan(t["this_set"]):
@@ -116,7 +149,8 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
     directions = rotorpy_directions([1 if r.spin > 0 else -1 for r in vehicle.rotors])
     tau = vehicle.motor_time_constant
     rpm_max = res.envelope.rpm[1]
-    out = ["", f"# quad_params for RotorPy's Multirotor: {vehicle.name or 'vehicle'} ({Path(label).name or 'vehicle file'}).",
+    out = ["", "# " + _text(f"quad_params for RotorPy's Multirotor: {vehicle.name or 'vehicle'} "
+                            f"({Path(label).name or 'vehicle file'})."),
            "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; parasitic drag",
            f"# c_D = rho (C_D A) / 2 from the vehicle file's drag areas at rho = {rho!r} kg/m^3 (the slipstream",
            "# factor has no RotorPy term).",
@@ -215,8 +249,8 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "")
         The files cannot be written.
     """
     path = Path(path)
-    head = (f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
-            f"({res.meta.get('params')}), fitted to the full model")
+    head = _text(f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
+                 f"({res.meta.get('params')}), fitted to the full model")
     if vehicle is not None:
         if res.target != "rotorpy":
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")

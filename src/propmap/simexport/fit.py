@@ -15,8 +15,9 @@ radius. Sources of the model forms (each checked against the simulator's source)
   of release 3.0.0): T = k_eta Omega^2 + k_h V_ip^2 - k_z Omega V_z, rotor drag
   D = k_d Omega V_ip, yaw moment rotor_dir k_m Omega^2 about +z, flapping moment
   -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
-  flapping blades); propmap's rigid-blade, azimuth-uniform-inflow model has none about
-  that axis (docs/conventions.md), so k_flap = 0, and propmap's rolling moment M_R (about
+  flapping blades); propmap's model with rigid blades and uniform inflow (the defaults) has
+  none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping or a
+  linear inflow model is warned about: its pitching moment and side force are left out), and propmap's rolling moment M_R (about
   e_ip) has no RotorPy term: its error is reported. RotorPy's ``rotor_directions`` entry
   is the sign of the reaction torque on the body about +z: -spin in propmap's convention
   (a "ccw" rotor, spin +1 about its thrust axis, is -1 there).
@@ -94,6 +95,21 @@ PHYSICAL_SIGN = {
 def canonical_target(target: str) -> str:
     """``target``'s current name (a former name, :data:`ALIASES`, is mapped to it).
 
+    Parameters
+    ----------
+    target : str
+        One of :data:`TARGETS` or :data:`ALIASES`.
+
+    Returns
+    -------
+    str
+        One of :data:`TARGETS`.
+
+    Warns
+    -----
+    FutureWarning
+        For "gill2019".
+
     Raises
     ------
     ValueError
@@ -162,6 +178,7 @@ class SimExport:
     Attributes
     ----------
     target : str
+        One of :data:`TARGETS`.
     coefficients : dict
         Name -> value in SI units (as the target's file writes them).
     errors : dict
@@ -198,7 +215,16 @@ class SimExport:
 def default_envelope(propeller) -> Envelope:
     """A multirotor's envelope for ``propeller``: rpm from a third of the rpm of a 150 m/s
     tip speed to it (tip speeds 50-150 m/s), V 0-15 m/s, incidence 0-180 deg (advance
-    ratios J up to about 1), hover at the geometric mean of the rpm range."""
+    ratios J up to about 1), hover at the geometric mean of the rpm range.
+
+    Parameters
+    ----------
+    propeller : Propeller
+
+    Returns
+    -------
+    Envelope
+    """
     from ..maps import default_axes
 
     rpm, _, _ = default_axes(propeller)
@@ -362,7 +388,21 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
 
     The formulas are those of the module docstring (what the target simulator evaluates),
     in propmap's scalar convention: D against the in-plane motion, Q opposing the rotation,
-    M_R positive for more thrust on the advancing side; Omega > 0. Arrays broadcast.
+    M_R positive for more thrust on the advancing side; Omega > 0.
+
+    Parameters
+    ----------
+    target : str
+        One of :data:`TARGETS` (or a former name).
+    coefficients : dict
+        As :attr:`SimExport.coefficients` (or as read back from the written file).
+    omega, airspeed, incidence : float or array_like
+        Omega [rad/s], V [m/s], beta [rad]; broadcast together to a shape S.
+
+    Returns
+    -------
+    tuple of 4 ndarray
+        T, D, Q, M_R, shape S (M_R is zeros for rotorpy, which has no such term).
 
     Raises
     ------
@@ -489,6 +529,10 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air)
     target = canonical_target(target)
+    if params.flap_compliance > 0 or getattr(params, "inflow", "uniform") != "uniform":
+        warnings.warn(f"this parameter set gives a side force and a pitching moment (blade flapping or a linear "
+                      f"inflow model); the {target} model has no term fitted to them (RotorPy's k_flap is written "
+                      "0), so they are left out and their error is not reported", UserWarning, stacklevel=2)
     for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):
         x = _real(value)
         if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):

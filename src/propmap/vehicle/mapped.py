@@ -7,7 +7,8 @@ and -s_i (Q z + M_R e_ip)) instead of the full model, and
 
     F = sum_i F_i + F_body,    M = sum_i (r_i x F_i + M_i - w x h_i),
 
-with h_i = s_i J_i Omega_i a_i where the rotor inertia J_i is known. F_body is the airframe
+with h_i = s_i J_i Omega_i a_i where the rotor inertia J_i is known (the spin-up reaction of
+``vehicle_wrench``'s ``rotor_acceleration`` is not included). F_body is the airframe
 drag at the centre of mass (core/body.py) in the freestream: a map holds no induced
 velocity, so the slipstream term of a vehicle's ``wash_factor`` is left out (said once, at
 construction). The maps are duck-typed (anything with RotorMap's ``wrench``), so this
@@ -90,6 +91,7 @@ class VehicleMap:
         self.maps = maps
         self._pos = np.array([r.position for r in vehicle.rotors], float) - vehicle.centre_of_mass
         self._axes = np.array([r.axis for r in vehicle.rotors], float)
+        self._axes /= np.linalg.norm(self._axes, axis=1, keepdims=True)  # unit axes (a Rotor built in Python may not be)
         self._spins = np.array([r.spin for r in vehicle.rotors], float)
         self._h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * self._axes
         # the same as Python floats and lists, for the one-step path
@@ -150,6 +152,11 @@ class VehicleMap:
             Body rates w [rad/s].
         rotor_omega : array_like, shape (N, n_rotors) or (n_rotors,)
             Rotor speeds Omega_i >= 0 [rad/s], in the vehicle's rotor order.
+
+        Notes
+        -----
+        One RotorMap's scalar path reuses its output buffers: evaluate one VehicleMap from
+        one thread at a time (or give each thread its own maps).
         wind : array_like, shape (N, 3) or (3,), optional
             Wind velocity in body axes [m/s].
         out_of_grid : {"raise", "clip", "nan"}

@@ -281,6 +281,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     air : Air, optional
         Default: the parameter set's own (``.air``).
     discretization : Discretization
+        Nodes of the static solves (default: the solver's).
 
     Returns
     -------
@@ -292,11 +293,13 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     ValueError
         The rotors give no upward thrust (axes with a_i . e_z <= 0), or the weight needs
         more than the solver's 1e5 rad/s.
+    SolverError
+        A static solve fails (as :func:`propmap.rotor_loads`).
     """
     from scipy.optimize import brentq
 
     air = params.air if air is None else air
-    up = np.array([float(r.axis[2]) for r in vehicle.rotors])
+    up = np.array([float(r.axis[2]) / float(np.linalg.norm(r.axis)) for r in vehicle.rotors])  # a_i . e_z, a_i unit
     if not np.any(up > 0):
         raise ValueError("no rotor's axis has an upward component: the vehicle cannot hover")
 
@@ -311,6 +314,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     while lift(hi) < 0:
         hi *= 2
         if hi > 1e5:
-            raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than 1e5 rad/s of its rotors: "
+            raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than {hi / 2:.4g} rad/s of its "
+                             "rotors (the solver's limit is 1e5): "
                              "check its mass and propellers")
     return float(brentq(lift, 0.1 if hi == 100.0 else hi / 2, hi, xtol=1e-9, rtol=1e-12))
