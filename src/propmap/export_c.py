@@ -475,10 +475,9 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
         if r.params is not None:
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
     rho = float(rm.attrs["rho_kg_m3"])
-    pos = np.array([r.position for r in vehicle.rotors], float) - np.asarray(vehicle.centre_of_mass, float)
-    axes = np.array([r.axis for r in vehicle.rotors], float)
-    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
-    h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * axes
+    from .vehicle import rotor_geometry
+
+    pos, axes, spins, h = rotor_geometry(vehicle)
     body = vehicle.body_drag
     cda = np.zeros(3) if body is None else np.asarray(body.drag_area, float)
 
@@ -488,7 +487,7 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
     return _VEHICLE.format(
         vname=_comment(vehicle.name or "(unnamed)"), nrot=len(vehicle.rotors), rho=rho, prefix=prefix,
         PREFIX=prefix.upper(), pos=rows(pos), axis=rows(axes), h=rows(h),
-        spin=", ".join(str(1 if r.spin > 0 else -1) for r in vehicle.rotors),
+        spin=", ".join(str(int(x)) for x in spins),
         cd=", ".join(format(0.5 * rho * float(x), ".17g") for x in cda))
 
 

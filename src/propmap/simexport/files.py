@@ -144,9 +144,11 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
     inertia = np.asarray(vehicle.inertia, float).tolist()  # Python floats: their repr is plain
     rho = float(res.meta["rho"])
     drag = vehicle.body_drag.drag_area if vehicle.body_drag is not None else (0.0, 0.0, 0.0)
-    positions = [(np.asarray(r.position, float) - np.asarray(vehicle.centre_of_mass, float)).tolist()
-                 for r in vehicle.rotors]
-    directions = rotorpy_directions([1 if r.spin > 0 else -1 for r in vehicle.rotors])
+    from ..vehicle import rotor_geometry
+
+    arms, _, spins, _ = rotor_geometry(vehicle)
+    positions = arms.tolist()  # Python floats: their repr is plain
+    directions = rotorpy_directions([int(s) for s in spins])
     tau = vehicle.motor_time_constant
     rpm_max = res.envelope.rpm[1]
     out = ["", "# " + _text(f"quad_params for RotorPy's Multirotor: {vehicle.name or 'vehicle'} "

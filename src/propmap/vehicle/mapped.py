@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.body import body_drag_force
-from .model import Vehicle, _samples
+from .model import Vehicle, _samples, rotor_geometry
 
 __all__ = ["VehicleMap", "VehicleMapWrench"]
 
@@ -89,11 +89,7 @@ class VehicleMap:
             raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
         self.vehicle = vehicle
         self.maps = maps
-        self._pos = np.array([r.position for r in vehicle.rotors], float) - vehicle.centre_of_mass
-        self._axes = np.array([r.axis for r in vehicle.rotors], float)
-        self._axes /= np.linalg.norm(self._axes, axis=1, keepdims=True)  # unit axes (a Rotor built in Python may not be)
-        self._spins = np.array([r.spin for r in vehicle.rotors], float)
-        self._h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * self._axes
+        self._pos, self._axes, self._spins, self._h = rotor_geometry(vehicle)
         # the same as Python floats and lists, for the one-step path
         self._pos_list = self._pos.tolist()
         self._h_list = self._h.tolist()

@@ -33,7 +33,7 @@ from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
 from ..core.vector import disk_frame, wrench_vectors
 
-__all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "vehicle_wrench"]
+__all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -137,6 +137,33 @@ class VehicleWrench:
     rotor_moment: np.ndarray
     body_force: np.ndarray
     loads: tuple[RotorLoads, ...]
+
+
+def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The rotors' arms, unit axes, spins and angular momentum per unit speed.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+
+    Returns
+    -------
+    arms : ndarray, shape (n_rotors, 3)
+        Hub positions from the centre of mass, r_i [m] (the file's positions less
+        ``centre_of_mass``).
+    axes : ndarray, shape (n_rotors, 3)
+        Unit rotor axes a_i (normalised here: a Rotor built in Python may not be).
+    spins : ndarray, shape (n_rotors,)
+        s_i, +1 ccw about a_i, -1 cw.
+    h : ndarray, shape (n_rotors, 3)
+        s_i J_i a_i [kg m^2]: the rotor's angular momentum per rad/s (0 where J_i is unknown).
+    """
+    arms = np.array([r.position for r in vehicle.rotors], float) - np.asarray(vehicle.centre_of_mass, float)
+    axes = np.array([r.axis for r in vehicle.rotors], float)
+    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
+    spins = np.array([1.0 if r.spin > 0 else -1.0 for r in vehicle.rotors])
+    h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * axes
+    return arms, axes, spins, h
 
 
 def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
