@@ -1,0 +1,379 @@
+"""Evaluating a rotor map: :class:`RotorMap` (built by :func:`propmap.maps.build_map`).
+
+Cubic (default) or multilinear interpolation of T, D, Q and M_R divided by
+(Omega R)^2 + V^2 (compiled, core/_interp.py), multiplied back, with an explicit out-of-grid
+policy; scalar fast paths for one point and for one rotor's force and moment vectors.
+docs/simulators.md has the conventions and the measured speeds.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from typing import NamedTuple
+
+import numpy as np
+
+from .io.mapfile import LOADS, check_dataset, read_dataset
+
+__all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap"]
+
+RPM = 2 * math.pi / 60  # rad/s per rpm
+POLICIES = ("raise", "clip", "nan")
+#: interpolation methods of RotorMap and of the C export
+INTERPOLATIONS = ("linear", "cubic")
+#: the model flags that make a cell's interpolation unreliable (reverse flow is not one:
+#: the model is smooth there)
+BAD_FLAGS = ("vortex_ring", "multiple_roots")
+
+
+def _cell_flags(bad: np.ndarray) -> np.ndarray:
+    """Cells (shape n - 1 per axis) with a bad node among the nodes i-1 .. i+2 of every
+    axis: the 4 x 4 x 4 nodes the cubic reads, cut at the grid's edges."""
+    cell = bad
+    for axis in range(3):
+        n = cell.shape[axis]
+        padded = np.pad(cell, [(1, 1) if a == axis else (0, 0) for a in range(3)])
+        acc = np.zeros_like(np.take(padded, range(n - 1), axis=axis))
+        for k in range(4):
+            acc |= np.take(padded, range(k, k + n - 1), axis=axis)
+        cell = acc
+    return cell
+
+
+_SPIN = {"ccw": 1.0, "cw": -1.0}
+
+
+def _three(value):
+    """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers
+    (such an array, or a tuple or list of three floats); else None."""
+    if type(value) is np.ndarray:
+        return value if value.shape == (3,) and value.dtype == np.float64 else None
+    if type(value) in (tuple, list) and len(value) == 3 and all(type(x) is float for x in value):
+        return np.array(value)
+    return None
+
+
+class MapLoads(NamedTuple):
+    """Loads interpolated in a map; arrays of the broadcast shape S of the queries.
+
+    Attributes
+    ----------
+    thrust, drag, torque, rolling_moment : ndarray
+        T [N], D [N], Q [N m], M_R [N m] as in :class:`propmap.RotorLoads`.
+    omega : ndarray
+        Omega [rad/s] at which the loads hold: the query's, or under ``out_of_grid="clip"``
+        above the grid the highest rpm's (so ``power`` is the boundary point's); below the
+        grid the query's, at which the scaled loads hold.
+    inside : ndarray of bool
+        The query lies in the grid (else it was clipped to it or set to NaN).
+    flagged : ndarray of bool
+        The query is outside the grid, or a node of its cell or of a neighbour cell (the
+        4 x 4 x 4 nodes around it) is flagged vortex_ring or
+        multiple_roots or did not converge (the map's measured error does not hold there).
+    """
+
+    thrust: np.ndarray
+    drag: np.ndarray
+    torque: np.ndarray
+    rolling_moment: np.ndarray
+    omega: np.ndarray
+    inside: np.ndarray
+    flagged: np.ndarray
+
+    @property
+    def power(self) -> np.ndarray:
+        """P = Q Omega [W]."""
+        return self.torque * self.omega
+
+
+class MapWrench(NamedTuple):
+    """Force and moment vectors from a map (as :class:`propmap.RotorWrench`).
+
+    Attributes
+    ----------
+    force, torque : ndarray, shape S + (3,)
+        T z - D e_ip [N] and -spin (Q z + M_R e_ip) [N m].
+    loads : MapLoads
+    """
+
+    force: np.ndarray
+    torque: np.ndarray
+    loads: MapLoads
+
+
+class RotorMap:
+    """A rotor map ready to evaluate: ``RotorMap.open("map.nc").loads(omega, V, beta)``.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A map from :func:`build_map` or read from its netCDF file.
+    interpolation : {"cubic", "linear"}
+        ``"cubic"`` (default): tensor-product cubic Hermite with three-point slopes
+        (core/_interp.py), continuous with a continuous first derivative along each
+        axis; on the default grid its largest error is 3-9x smaller than the
+        multilinear one, at 1.5x its cost per lookup (0.24 against 0.16 us; docs/simulators.md).
+        ``"linear"``: multilinear in each cell, the C export's default. The map
+        stores both measured bounds (``check_cubic_*``, ``check_linear_*``). For both,
+        a query is flagged when any of the 4 x 4 x 4 nodes around its cell (its cell's
+        and its neighbours') is.
+
+    Attributes
+    ----------
+    omega, airspeed, incidence : ndarray
+        The grid's axes in SI units (rad/s, m/s, rad).
+    attrs : dict
+        The map's metadata (propeller, parameters, model, version, citation, measured error).
+    interpolation : str
+
+    Raises
+    ------
+    TypeError
+        ``dataset`` is not an xarray Dataset.
+    ValueError
+        The dataset is not a valid map (io.mapfile.check_dataset: a missing variable,
+        flag or axis, an axis outside the model's range, non-finite loads at a converged
+        node, an attribute of the wrong type or out of range); unknown interpolation.
+    """
+
+    def __init__(self, dataset, interpolation: str = "cubic") -> None:
+        if interpolation not in INTERPOLATIONS:
+            raise ValueError(f"interpolation must be one of {', '.join(INTERPOLATIONS)}, got {interpolation!r}")
+        self.interpolation = interpolation
+        self._order = 3 if interpolation == "cubic" else 1
+        check_dataset(dataset)
+        ds = dataset.transpose("rpm", "airspeed", "incidence_deg")
+        self.dataset = ds
+        self.attrs = dict(ds.attrs)
+        self.omega = np.ascontiguousarray(ds["rpm"].values, dtype=float) * RPM
+        self.airspeed = np.ascontiguousarray(ds["airspeed"].values, dtype=float)
+        self.incidence = np.ascontiguousarray(np.radians(ds["incidence_deg"].values), dtype=float)
+        self.radius = float(ds.attrs["diameter_m"]) / 2
+        ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
+        table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
+        self._table = np.ascontiguousarray(table, dtype=float)
+        # a node whose loads are not finite is as unreliable as a non-converged one
+        bad = ~ds["converged"].values.astype(bool) | ~np.isfinite(table).all(axis=-1)
+        for f in BAD_FLAGS:
+            bad |= ds[f].values.astype(bool)
+        # a cell is flagged when a node of it or of its neighbour cells is: the loads bend
+        # sharply at the edge of the vortex-ring region, and the cubic reads those nodes
+        self._cellflag = np.ascontiguousarray(_cell_flags(bad).astype(np.uint8))
+        # the grid's box as Python floats, for the scalar fast path of loads()
+        self._box = (float(self.omega[0]), float(self.omega[-1]), float(self.airspeed[0]), float(self.airspeed[-1]),
+                     float(self.incidence[0]), float(self.incidence[-1]))
+        from .core import _interp
+
+        # the scalar paths' kernels and policies, looked up once
+        self._interp_point, self._wrench_point = _interp.interp_point, _interp.wrench_point
+        self._policy = {"raise": _interp.CLIP, "clip": _interp.CLIP, "nan": _interp.NAN}
+        self._out1 = np.empty((1, len(LOADS)))
+        self._out1w = np.empty((1, len(LOADS) + 6))
+        self._in1 = np.empty(1, dtype=np.bool_)
+        self._fl1 = np.empty(1, dtype=np.bool_)
+
+    @classmethod
+    def open(cls, path, prop: str | None = None, interpolation: str = "cubic") -> "RotorMap":
+        """Read a map's netCDF file (written by :func:`write_map` or ``propmap map``).
+
+        Parameters
+        ----------
+        path : str or Path
+        prop : str, optional
+            For a map over several propellers (``propmap map --all``, a ``prop``
+            dimension): the propeller to evaluate.
+        interpolation : {"cubic", "linear"}
+            As in :class:`RotorMap`.
+
+        Raises
+        ------
+        TypeError
+            ``path`` not a str or os.PathLike, ``prop`` not a str.
+        ValueError
+            Not a regular file, not a readable netCDF file (whatever the netCDF/HDF5
+            libraries raise on a damaged file), declared sizes beyond MAX_NODES nodes
+            (refused before reading), not a valid rotor map (:class:`RotorMap`), or
+            ``prop`` missing or unknown for a map over several propellers; the message
+            names the file (io.mapfile.read_dataset). Unknown interpolation.
+        """
+        if interpolation not in INTERPOLATIONS:
+            raise ValueError(f"interpolation must be one of {', '.join(INTERPOLATIONS)}, got {interpolation!r}")
+        ds = read_dataset(path, prop)
+        try:
+            return cls(ds, interpolation)
+        except ValueError as exc:
+            raise ValueError(f"{os.fspath(path)!s:.80}: {exc}") from None
+
+    def _queries(self, omega, airspeed, incidence, out_of_grid):
+        arrays = []
+        for name, v in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence)):
+            try:
+                a = np.asarray(v)
+            except ValueError:  # a ragged list
+                raise ValueError(f"{name} must be a number or a rectangular array of numbers, got {v!r:.60}") from None
+            if a.dtype.kind not in "fiu":
+                raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
+            arrays.append(a.astype(float, copy=False))
+        try:
+            q = np.broadcast_arrays(*arrays)
+        except ValueError:
+            raise ValueError("omega, airspeed and incidence must broadcast together, got shapes "
+                             f"{', '.join(str(a.shape) for a in arrays)}") from None
+        for name, a in zip(("omega", "airspeed", "incidence"), q):
+            if np.isnan(a).any():
+                raise ValueError(f"{name} must not be NaN")
+        if (q[0] < 0).any():
+            raise ValueError(f"omega must be >= 0 rad/s, the rotation rate's magnitude (the sense is the spin), got "
+                             f"{float(q[0][q[0] < 0].reshape(-1)[0])!r}")
+        if out_of_grid == "raise":
+            for name, a, ax, unit in (("omega", q[0], self.omega, "rad/s"), ("airspeed", q[1], self.airspeed, "m/s"),
+                                      ("incidence", q[2], self.incidence, "rad")):
+                with np.errstate(invalid="ignore"):
+                    bad = ~((a >= ax[0]) & (a <= ax[-1]))
+                if bad.any():
+                    v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
+                    raise ValueError(f"{name} = {v!r} is outside the map's grid [{ax[0]:g}, {ax[-1]:g}] {unit} "
+                                     "(out_of_grid='clip' or 'nan' to flag instead)")
+        return q
+
+    def loads(self, omega, airspeed, incidence, *, out_of_grid: str = "raise") -> MapLoads:
+        """Interpolated loads at Omega [rad/s], V [m/s], incidence beta [rad] (broadcast).
+
+        Parameters
+        ----------
+        omega, airspeed, incidence : float or array_like
+            Broadcast together to a shape S.
+        out_of_grid : {"raise", "clip", "nan"}
+            A query outside the grid raises ValueError ("raise", the default), takes the
+            value at the nearest boundary point ("clip"), or gets NaN ("nan"); the last two
+            set ``inside = False`` and ``flagged = True``. Never silent extrapolation. Under
+            "clip", a rotation rate below the grid's lowest, 0 <= Omega < Omega_min (spin-up,
+            a stopped or windmill-starting rotor), takes the lowest row's loads at the same
+            airspeed and incidence scaled by (Omega / Omega_min)^2, the loads of a rotor with
+            constant coefficients: 0 at Omega = 0 (a parked rotor's blade drag is not
+            modelled), continuous at Omega_min.
+
+        Returns
+        -------
+        MapLoads
+
+        Raises
+        ------
+        ValueError
+            Non-numeric or NaN queries, Omega < 0 (a signed rate: give its magnitude, the
+            sense is the spin of :meth:`wrench`), an unknown policy, or (policy "raise") a
+            query outside the grid, naming the argument and the grid's range.
+        """
+        if isinstance(omega, float) and isinstance(airspeed, float) and isinstance(incidence, float):
+            fast = self._loads1(omega, airspeed, incidence, out_of_grid)
+            if fast is not None:
+                return fast
+        from .core import _interp
+
+        if out_of_grid not in POLICIES:
+            raise ValueError(f"out_of_grid must be one of {', '.join(POLICIES)}, got {out_of_grid!r}")
+        policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
+        q = self._queries(omega, airspeed, incidence, out_of_grid)
+        shape = q[0].shape
+        flat = [np.ascontiguousarray(a.reshape(-1)) for a in q]
+        n = flat[0].size
+        out = np.empty((n, len(LOADS)))
+        inside = np.empty(n, dtype=np.bool_)
+        flagged = np.empty(n, dtype=np.bool_)
+        _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius,
+                             *flat, policy, self._order, out, inside, flagged)
+        # under "clip" the loads hold at the top row above the grid, at the query's Omega below it (scaled)
+        om = np.minimum(q[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
+        return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=om,
+                        inside=inside.reshape(shape), flagged=flagged.reshape(shape))
+
+    def wrench(self, velocity, axis, omega, spin="ccw", *, out_of_grid: str = "raise") -> MapWrench:
+        """Force and moment vectors from the map, as :func:`propmap.rotor_wrench`.
+
+        Parameters
+        ----------
+        velocity, axis : array_like, shape S + (3,)
+            Hub velocity relative to the air [m/s]; rotor axis (thrust direction).
+        omega : float or array_like, shape S
+            Omega [rad/s].
+        spin : {"ccw", "cw"} or +1/-1
+        out_of_grid : {"raise", "clip", "nan"}
+            As :meth:`loads`.
+
+        Returns
+        -------
+        MapWrench
+
+        Raises
+        ------
+        ValueError
+            As :func:`propmap.rotor_wrench` and :meth:`loads`.
+        """
+        fast = self._wrench1(velocity, axis, omega, spin, out_of_grid)
+        if fast is not None:
+            return fast
+        from .core.vector import _check_spin, _spin_sign, disk_frame, wrench_vectors
+
+        V, z, speed, beta = disk_frame(velocity, axis)
+        from .core._interp import EDGE_SNAP
+
+        lo, hi = self._box[4], self._box[5]  # an incidence a few ulp beyond an end of the axis is on it
+        beta = np.where((beta > hi) & (beta <= hi + EDGE_SNAP), hi, np.where((beta < lo) & (beta >= lo - EDGE_SNAP),
+                                                                            lo, beta))
+        s = _spin_sign(spin)
+        ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
+        _check_spin(s, np.shape(ml.thrust))
+        force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s)
+        return MapWrench(force=force, torque=moment, loads=ml)
+
+    def _loads1(self, omega: float, airspeed: float, incidence: float, out_of_grid):
+        """:meth:`loads` at one point of Python floats (a simulator's call): no arrays built, no
+        broadcasting. None where the general path must answer (an unknown policy, a NaN, or
+        a query outside the grid under "raise"), which then raises what it raises."""
+        o0, o1, v0, v1, b0, b1 = self._box
+        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
+        if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
+                           or math.isnan(incidence) or omega < 0):
+            return None
+        if out_of_grid not in POLICIES:
+            return None
+        self._interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, omega,
+                     airspeed, incidence, self._policy[out_of_grid], self._order, self._out1, self._in1,
+                     self._fl1)
+        t, d, q, m = self._out1[0].tolist()
+        omega = float(omega)
+        if not inside and out_of_grid == "clip":
+            omega = min(omega, o1)  # below the grid the loads are scaled to the query's
+        return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
+
+    def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
+        """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
+        (core._interp.wrench_point: the arithmetic of core.vector.disk_frame and
+        wrench_vectors), without building and broadcasting arrays. None where the inputs
+        are not one rotor's plain numbers, or not finite, or outside the grid under
+        "raise": the general path then answers (and raises what it raises)."""
+        v, a = _three(velocity), _three(axis)
+        if v is None or a is None or not isinstance(omega, float) or omega != omega:
+            return None
+        s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
+            float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
+        policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
+        if s is None or policy is None:
+            return None
+        out = self._out1w
+        if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, v, a,
+                              omega, s, policy, out_of_grid == "raise", self._order, out, self._in1, self._fl1):
+            return None
+        t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
+        inside = bool(self._in1[0])
+        if not inside and out_of_grid == "clip":
+            omega = min(omega, self._box[1])  # below the grid: scaled to the query's
+        return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
+                         MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0])))
+
+    def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
+        """:func:`propmap.maps.check_map` with the model recorded in the map."""
+        from .maps import check_map
+
+        return check_map(self.dataset, n_check, seed=seed)
