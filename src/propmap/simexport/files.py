@@ -182,6 +182,14 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
 def check_rotorpy_vehicle(vehicle) -> None:
     """Whether RotorPy's Multirotor can represent ``vehicle``.
 
+    Parameters
+    ----------
+    vehicle : Vehicle
+
+    Returns
+    -------
+    None
+
     Raises
     ------
     ValueError

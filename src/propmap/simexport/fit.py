@@ -315,10 +315,10 @@ def _lstsq(terms, y, fixed: dict, held: dict):
     sol = free
     if np.any(free < lower):
         sol = lsq_linear(A, y, bounds=(lower, np.inf), method="bvls").x
-        for n, f, v, lo in zip(names, free, sol, lower):
+        for n, f, v, lo, sc in zip(names, free, sol, lower, scale):
             if lo == 0.0 and v <= 0.0 and f < 0.0:
                 held[n] = (f"held at 0, the bound of its physical sign ({PHYSICAL_SIGN[n]}): the full model's trend "
-                           f"over the envelope is the opposite (the unbounded fit gives {f / scale[names.index(n)]:.3g})")
+                           f"over the envelope is the opposite (the unbounded fit gives {f / sc:.3g})")
     x[keep] = sol / scale
     return [float(v) for v in x]
 
