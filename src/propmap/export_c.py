@@ -474,6 +474,11 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
                              "one map (use VehicleMap in Python, with one map per rotor)")
         if r.params is not None:
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
+    if vehicle.rotor_interference > 0:
+        import warnings
+
+        warnings.warn(f"the rotors' interference (factor {vehicle.rotor_interference:g}) is left out of the C "
+                      "vehicle function: a map holds no induced velocity", UserWarning, stacklevel=2)
     rho = float(rm.attrs["rho_kg_m3"])
     from .vehicle import rotor_geometry
 

@@ -70,7 +70,8 @@ BODY_X0 = (0.0, 0.0, 0.47)
 #: bounds of the rotor options (RotorOptions) and of the airframe drag (core/body.py) when fitted
 ROTOR_BOUNDS = {"collective": (math.radians(-15), math.radians(15)), "flap_compliance": (0.0, 50.0)}
 AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag_area_z": (0.0, 0.05),
-                   "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05)}
+                   "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05),
+                   "rotor_interference": (0.0, 3.0)}
 #: parameters that are angles [rad], reported in degrees
 ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined

@@ -42,7 +42,7 @@ from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _finish,
                   _params_from, _with_prior)
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
-           "fitted_centre_of_mass", "shift_centre_of_mass", "flight_errors",
+           "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
            "fit_baselines", "baseline_force", "speed_band_errors", "cross_validate_flight", "hover_torque_check",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
@@ -255,6 +255,13 @@ def fitted_centre_of_mass(result: FitResult) -> np.ndarray:
     return np.asarray(result.extra.get("centre_of_mass", [0.0, 0.0]), float)
 
 
+def fitted_vehicle(vehicle: Vehicle, result: FitResult) -> Vehicle:
+    """The vehicle with a flight fit's centre of mass and rotor interference factor (each the
+    vehicle's own where the fit did not free it)."""
+    veh = shift_centre_of_mass(vehicle, fitted_centre_of_mass(result))
+    return replace(veh, rotor_interference=float(result.extra.get("rotor_interference", veh.rotor_interference)))
+
+
 def _mean_arm(vehicle: Vehicle) -> float:
     return float(np.mean([np.linalg.norm(r.position[:2]) for r in vehicle.rotors])) or 1.0
 
@@ -324,19 +331,24 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
              "flap_compliance": base.flap_compliance or 1.0}
     if moments and samples.moment is None:
         raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
-    start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]))
+    start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]),
+                 rotor_interference=vehicle.rotor_interference or 1.0)
     x0 = np.array([start[n] if n in start else getattr(base, n) for n in names], float)
     measured = samples.force
     arm = _mean_arm(vehicle)
     cg_idx = [names.index(n) if n in names else None for n in CG_NAMES]
     x0_cg = [float(c) for c in vehicle.centre_of_mass[:2]]
+    k_int = names.index("rotor_interference") if "rotor_interference" in names else None
+
+    def vehicle_at(x) -> Vehicle:
+        veh = shift_centre_of_mass(vehicle, [c0 if k is None else x[k] for k, c0 in zip(cg_idx, x0_cg)])
+        return veh if k_int is None else replace(veh, rotor_interference=float(x[k_int]))
 
     def make_residual(opts):
         def residual(x, opts=opts):
             p = _params_from(x, names, base, opts)
             b = _body_from(x, names, body0)
-            veh = shift_centre_of_mass(vehicle, [c0 if k is None else x[k] for k, c0 in zip(cg_idx, x0_cg)])
-            w = predict_flight(samples, veh, p, body=b, air=air, discretization=discretization)
+            w = predict_flight(samples, vehicle_at(x), p, body=b, air=air, discretization=discretization)
             r = (w.force - measured).ravel()
             if moments:
                 r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
@@ -349,7 +361,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     fitted_body = _body_from(best.x, names, body0)
     cg = [c0 if k is None else float(best.x[k]) for k, c0 in zip(cg_idx, x0_cg)]
     extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
-             "centre_of_mass": cg, "moments_fitted": bool(moments), "moment_arm_m": arm,
+             "centre_of_mass": cg, "rotor_interference": vehicle_at(best.x).rotor_interference,
+             "moments_fitted": bool(moments), "moment_arm_m": arm,
              "discretization": [discretization.n_radial, discretization.n_azimuth],
              "body_drag": {"drag_area": list(fitted_body.drag_area), "wash_factor": fitted_body.wash_factor},
              **extra}
@@ -483,7 +496,7 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
         test = samples.of_log(k)
         res = fit_flight(train, vehicle, base=base, air=air, options=options, moments=moments,
                          discretization=discretization)
-        w = predict_flight(test, shift_centre_of_mass(vehicle, fitted_centre_of_mass(res)), res.params,
+        w = predict_flight(test, fitted_vehicle(vehicle, res), res.params,
                            body=fitted_body_drag(res), air=air, discretization=discretization)
         row = {"log": name, "model": flight_errors(w.force, test, w.moment),
                "x": {n: float(v) for n, v in zip(res.names, res.x)}}

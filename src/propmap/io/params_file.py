@@ -64,6 +64,8 @@ file's other keys override it. ``--params section:naca0015`` names the preset al
     wash_factor = 1.0                   # slipstream factor, in [0, 3] (core/body.py)
     centre_of_mass = [0.002, -0.001, 0.0]   # [m], each in [-1, 1]: the fitted centre of mass in
                                             # the vehicle file's frame (optional)
+    rotor_interference = 1.0            # optional, in [0, 3]: the fitted factor on the inflow the
+                                        # rotors' wakes induce at each other (core/interference.py)
 
 Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
 never converted), finite, and within its range: the cambered keys as ``CamberedParams``
@@ -131,11 +133,13 @@ class ParamsFileError(ValueError):
 
 
 class BodyTable(NamedTuple):
-    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag) and the
-    centre of mass [m] (shape (3,), or None when the table has none)."""
+    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag), the
+    centre of mass [m] (shape (3,)) and the rotor interference factor [-] (each of the last
+    two None when the table has none)."""
 
     drag: object
     centre_of_mass: object
+    rotor_interference: float | None = None
 
 
 def _record(model: str):
@@ -295,7 +299,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
     ------
     ValueError
         A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
-        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m);
+        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m,
+        rotor_interference in [0, 3]);
         the message starts with ``where``.
     """
     import numpy as np
@@ -307,7 +312,7 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
     table = data[BODY_TABLE]
     if not isinstance(table, dict):
         raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {_short(table)}")
-    allowed = ("drag_area", "wash_factor", "centre_of_mass", "comment")
+    allowed = ("drag_area", "wash_factor", "centre_of_mass", "rotor_interference", "comment")
     extra = sorted(str(k) for k in table if k not in allowed)
     if extra:
         raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(_short(k, 40) for k in extra[:5])} "
@@ -328,7 +333,11 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
         _check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
     drag = BodyDrag(drag_area=tuple(vectors["drag_area"]), wash_factor=float(table.get("wash_factor", 0.0)))
     cg = np.array(vectors["centre_of_mass"]) if "centre_of_mass" in vectors else None
-    return BodyTable(drag, cg)
+    kappa = None
+    if "rotor_interference" in table:
+        _check_number(table["rotor_interference"], "[body] rotor_interference", where, (0.0, 3.0, False, False, ""))
+        kappa = float(table["rotor_interference"])
+    return BodyTable(drag, cg, kappa)
 
 
 def _short(value, n: int = 60) -> str:
@@ -450,6 +459,8 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
                             "wash_factor": float(body.drag.wash_factor)}
         if body.centre_of_mass is not None:
             data[BODY_TABLE]["centre_of_mass"] = [float(v) for v in body.centre_of_mass]
+        if body.rotor_interference is not None:
+            data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
     if coverage:
         data[COVERAGE_TABLE] = {k: float(v) for k, v in coverage.items() if k in COVERAGE_KEYS}
     with atomic_write(path, "wb") as fh:

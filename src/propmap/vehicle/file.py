@@ -11,6 +11,8 @@ Format (body frame: x forward, y left, z up; SI units)::
                                          # of the rotor positions (each in [-100, 100])
     motor_time_constant = 0.033          # [s], optional, in [0, 1]: first-order lag from a log's
                                          # motor speeds to the rotors' (flight logs only)
+    rotor_interference = 1.0             # optional, in [0, 3]: factor on the inflow each rotor's
+                                         # wake induces at the others (core/interference.py; default 0)
 
     [body]                # optional airframe drag (core/body.py)
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
@@ -71,8 +73,9 @@ BLADES_RANGE = (1, 100)
 DIAMETER_RANGE = (0.0, 100.0, True)  # [m]
 TEXT_KEYS = ("name", "comment", "source")
 MOTOR_TAU_RANGE = (0.0, 1.0, False)  # [s]
-VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "motor_time_constant", "body", "rotors",
-                *TEXT_KEYS)
+INTERFERENCE_RANGE = (0.0, 3.0, False)  # [-]
+VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "motor_time_constant",
+                "rotor_interference", "body", "rotors", *TEXT_KEYS)
 BODY_KEYS = ("drag_area", "wash_factor", *TEXT_KEYS)
 ROTOR_KEYS = ("position", "axis", "spin", "propeller", "blades", "diameter_m", "params", "inertia", *TEXT_KEYS)
 
@@ -262,6 +265,7 @@ def read_vehicle(path) -> Vehicle:
         raise VehicleFileError(f"{name}: centre_of_mass must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
                                f"m, got {_short(data['centre_of_mass'])}")
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
+    kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
     rotors = []
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -297,4 +301,4 @@ def read_vehicle(path) -> Vehicle:
         rotors.append(Rotor(position, axis / length, spin, prop, params=params, inertia=j_r))
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
-                   centre_of_mass=cg, motor_time_constant=tau, **text)
+                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)

@@ -10,8 +10,8 @@ and -s_i (Q z + M_R e_ip)) instead of the full model, and
 with h_i = s_i J_i Omega_i a_i where the rotor inertia J_i is known (the spin-up reaction of
 ``vehicle_wrench``'s ``rotor_acceleration`` is not included). F_body is the airframe
 drag at the centre of mass (core/body.py) in the freestream: a map holds no induced
-velocity, so the slipstream term of a vehicle's ``wash_factor`` is left out (said once, at
-construction). The maps are duck-typed (anything with RotorMap's ``wrench``), so this
+velocity, so the slipstream term of a vehicle's ``wash_factor`` and the rotors' interference
+(``rotor_interference``, core/interference.py) are left out (said once, at construction). The maps are duck-typed (anything with RotorMap's ``wrench``), so this
 module imports the core only.
 """
 
@@ -103,6 +103,10 @@ class VehicleMap:
         if self._body is not None and self._body.wash_factor > 0:
             warnings.warn(f"the airframe's slipstream factor ({self._body.wash_factor:g}) is left out: a map holds no "
                           "induced velocity; its drag is taken in the freestream", UserWarning, stacklevel=2)
+        if vehicle.rotor_interference > 0:
+            warnings.warn(f"the rotors' interference (factor {vehicle.rotor_interference:g}) is left out: a map "
+                          "holds no induced velocity; each rotor is evaluated in the freestream", UserWarning,
+                          stacklevel=2)
         self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else float(rho)
 
     def _step(self, air_v: list, w: list, om: list, out_of_grid: str):

@@ -19,6 +19,11 @@ rotor inertia J_i is known (a rigid body carrying spinning rotors, as in R. Maho
 V. Kumar and P. Corke, "Multirotor aerial vehicles", IEEE Robotics & Automation Magazine
 19(3), 2012). F_body is
 the airframe drag (core/body.py), acting at the centre of mass.
+
+With ``Vehicle.rotor_interference`` kappa > 0, each rotor also sees the inflow the other
+rotors' skewed wakes induce at its disk (core/interference.py): the rotors are solved once
+without it, which gives their induced velocities, and again with it in their hub
+velocities (twice the rotor evaluations).
 """
 
 from __future__ import annotations
@@ -89,6 +94,10 @@ class Vehicle:
     motor_time_constant : float
         tau [s] of the first-order lag from a log's motor speeds to the rotors' (0: the
         logged speeds are the rotors'; identify.flight.flight_samples).
+    rotor_interference : float
+        kappa [-], in [0, 3]: the factor on the inflow each rotor's skewed wake induces at
+        the others (core/interference.py; 0: rotors do not interact, 1: the vortex-cylinder
+        model as it is).
     name, source : str
         Free text (what the vehicle is, where its numbers come from).
     """
@@ -101,6 +110,7 @@ class Vehicle:
     body_drag: BodyDrag | None = None
     centre_of_mass: np.ndarray = field(default_factory=lambda: np.zeros(3))
     motor_time_constant: float = 0.0
+    rotor_interference: float = 0.0
     name: str = ""
     source: str = ""
 
@@ -219,12 +229,16 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     ------
     ValueError
         An input that is not numbers, of the wrong shape, non-finite, samples counts that
-        do not match, or the ranges of :func:`propmap.rotor_loads` (naming the input).
+        do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
+        :func:`propmap.rotor_loads` (naming the input).
     SolverError
         As :func:`propmap.rotor_loads`.
     """
     air = params.air if air is None else air
     n_rot = len(vehicle.rotors)
+    kappa = vehicle.rotor_interference
+    if not (isinstance(kappa, (int, float)) and 0.0 <= kappa <= 3.0):
+        raise ValueError(f"vehicle.rotor_interference must be a number in [0, 3], got {kappa!r:.60}")
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
     om = _samples("rotor_omega", rotor_omega, n_rot)
@@ -238,12 +252,43 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     N = counts.pop() if counts else 1
     v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
     om = np.broadcast_to(om, (N, n_rot))
-    pos = np.array([r.position for r in vehicle.rotors]) - vehicle.centre_of_mass  # arms about the centre of mass
-    axes = np.array([r.axis for r in vehicle.rotors])
-    spins = np.array([r.spin for r in vehicle.rotors])
+    pos, axes, _, _ = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
+    solve = dict(air=air, discretization=discretization, on_failure=on_failure)
+    rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
+    if kappa > 0 and n_rot > 1:
+        from ..core.interference import interference_inflow
 
-    # one solver call per distinct (propeller, parameter set): all its rotors' samples together
+        radii = np.array([r.propeller.radius for r in vehicle.rotors])
+        v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
+        v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
+        wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
+        rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
+    rotor_moment += np.cross(pos[None, :, :], rotor_force)
+    for i, rot in enumerate(vehicle.rotors):
+        if rot.inertia is None or rot.inertia == 0:
+            continue
+        h = (rot.spin * rot.inertia * om[:, i])[:, None] * rot.axis  # (N, 3)
+        rotor_moment[:, i, :] -= np.cross(w, h)
+        if acc is not None:
+            dom = np.broadcast_to(acc, (N, n_rot))[:, i]
+            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * rot.axis
+    body = vehicle.body_drag if body_drag is None else body_drag
+    body_force = np.zeros((N, 3))
+    if body is not None and body.active:
+        wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
+        body_force = body_drag_force(body, v - wind_a, wash, air.rho)
+    return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
+                         rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
+                         loads=tuple(loads))
+
+
+def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure):
+    """Each rotor's force and hub moment (body axes) and loads at hub velocities ``V_hub``
+    (N, n_rot, 3): one solver call per distinct (propeller, parameter set), all its rotors'
+    samples together."""
+    N, n_rot = om.shape
+    spins = np.array([r.spin for r in vehicle.rotors])
     groups: dict[tuple[int, int], list[int]] = {}
     for i, r in enumerate(vehicle.rotors):
         p = r.params if r.params is not None else params
@@ -264,23 +309,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         rotor_moment[:, idx, :] = M
         for k, i in enumerate(idx):
             loads[i] = _column(r, k)
-    rotor_moment += np.cross(pos[None, :, :], rotor_force)
-    for i, rot in enumerate(vehicle.rotors):
-        if rot.inertia is None or rot.inertia == 0:
-            continue
-        h = (rot.spin * rot.inertia * om[:, i])[:, None] * rot.axis  # (N, 3)
-        rotor_moment[:, i, :] -= np.cross(w, h)
-        if acc is not None:
-            dom = np.broadcast_to(acc, (N, n_rot))[:, i]
-            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * rot.axis
-    body = vehicle.body_drag if body_drag is None else body_drag
-    body_force = np.zeros((N, 3))
-    if body is not None and body.active:
-        wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
-        body_force = body_drag_force(body, v - wind_a, wash, air.rho)
-    return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
-                         rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
-                         loads=tuple(loads))
+    return rotor_force, rotor_moment, loads
 
 
 def _column(r: RotorLoads, k: int) -> RotorLoads:
