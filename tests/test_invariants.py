@@ -1,6 +1,7 @@
 """Physical limits and invariants of the rotor model (Gill & D'Andrea 2017, Section II)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -138,7 +139,7 @@ def test_inputs_are_not_modified(apc8x6, apc_params):
     "kwargs, match",
     [
         (dict(omega=-1.0), "omega"),
-        (dict(omega=0.0), "omega"),
+        (dict(omega=-1e-9), "a signed rotation rate is refused"),
         (dict(omega=np.nan), "omega"),
         (dict(airspeed=-0.1), "airspeed"),
         (dict(airspeed=np.inf), "airspeed"),
@@ -150,6 +151,26 @@ def test_bad_operating_points_raise_naming_the_argument(apc8x6, apc_params, kwar
     args = dict(omega=800.0, airspeed=5.0, incidence=0.5) | kwargs
     with pytest.raises(ValueError, match=match):
         pm.rotor_loads(apc8x6, apc_params, **args, radial=True)
+
+
+def test_stopped_and_parked_rotor(apc8x6, apc_params):
+    """Omega = 0 in still air: exactly zero loads (and NaN coefficients, which are referred to
+    n); in a flow: the parked blades' loads, continuous with the spinning rotor's (the
+    solution at 0.1 rad/s, within 3% of 1 rad/s); a vehicle with a stopped rotor evaluates."""
+    r = pm.rotor_loads(apc8x6, apc_params, np.array([0.0, 0.05]), 0.0, 0.0, radial=True)
+    assert r.thrust[0] == 0.0 and r.torque[0] == 0.0 and r.drag[0] == 0.0 and r.v_i[0].max() == 0.0
+    assert 0 < r.thrust[1] < 1e-7
+    assert np.isnan(r.CT[0]) and np.isfinite(r.CT[1])
+    assert r.converged.all()
+    V, beta = 8.0, math.radians(97.0)
+    parked = pm.rotor_loads(apc8x6, apc_params, np.array([0.0, 0.1, 1.0]), V, beta)
+    assert parked.drag[0] > 0.005  # the parked blades' drag in an 8 m/s stream (not zero)
+    assert parked.thrust[0] == parked.thrust[1]
+    np.testing.assert_allclose(parked.drag[2], parked.drag[0], rtol=0.03)
+    assert np.isinf(parked.reverse_flow_radius[0]) and parked.reverse_flow[0]
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    w = pm.vehicle_wrench(veh, apc_params, [5.0, 0.0, 0.0], np.zeros(3), [0.0, 800.0, 800.0, 800.0])
+    assert np.isfinite(w.force).all() and abs(w.loads[0].thrust[0]) < 0.05 * w.loads[1].thrust[0]
 
 
 def test_vector_form_matches_scalar_loads_and_rotates(apc8x6, apc_params):

@@ -196,8 +196,8 @@ def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = 
     """Raise InputError naming the input and its valid range (the solver's ranges)."""
     pre = f"{where}: " if where else ""
     if not (math.isfinite(rpm) and RPM_MIN <= rpm <= RPM_MAX):
-        why = (" (a parked propeller, rpm 0, is outside the model: its coefficients are referred to the "
-               "rotation rate)" if math.isfinite(rpm) and 0 <= rpm < RPM_MIN else "")
+        why = (" (a parked propeller, rpm 0, has no coefficients: they are referred to the rotation rate; the "
+               "Python API's rotor_loads gives its loads)" if math.isfinite(rpm) and 0 <= rpm < RPM_MIN else "")
         raise InputError(f"{pre}rpm must be finite and in [{RPM_MIN:g}, {RPM_MAX:.0f}], got {rpm!r}{why}")
     if not (math.isfinite(airspeed) and 0 <= airspeed <= AIRSPEED_MAX):
         raise InputError(f"{pre}airspeed must be finite and in [0, {AIRSPEED_MAX:g}] m/s, got {airspeed!r}")

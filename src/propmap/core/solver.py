@@ -338,23 +338,29 @@ class RotorLoads:
 
     @property
     def CT(self) -> np.ndarray:
-        """T / (rho n^2 D^4) [-], propeller convention, shape S."""
-        return self.thrust / (self.rho * self._n**2 * self.diameter**4)
+        """T / (rho n^2 D^4) [-], propeller convention, shape S (NaN for a stopped rotor, Omega = 0,
+        as CQ, CP and J: they are referred to n)."""
+        return self._per_n(self.thrust, self.rho * self._n**2 * self.diameter**4)
+
+    def _per_n(self, a, b) -> np.ndarray:
+        """a / b, NaN where Omega = 0 (b = 0) without a division warning."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(self.omega > 0, a / np.where(self.omega > 0, b, 1.0), np.nan)
 
     @property
     def CQ(self) -> np.ndarray:
         """Q / (rho n^2 D^5) [-], propeller convention, shape S."""
-        return self.torque / (self.rho * self._n**2 * self.diameter**5)
+        return self._per_n(self.torque, self.rho * self._n**2 * self.diameter**5)
 
     @property
     def CP(self) -> np.ndarray:
         """P / (rho n^3 D^5) [-], propeller convention, shape S."""
-        return self.power / (self.rho * self._n**3 * self.diameter**5)
+        return self._per_n(self.power, self.rho * self._n**3 * self.diameter**5)
 
     @property
     def J(self) -> np.ndarray:
         """V / (n D) [-], total airspeed, shape S."""
-        return self.airspeed / (self._n * self.diameter)
+        return self._per_n(self.airspeed, self._n * self.diameter)
 
     def flags(self, index=()) -> list[str]:
         """Names of the raised status flags at one point (``index`` into shape S; on scalar
@@ -391,24 +397,38 @@ def _new_loads(**kw) -> RotorLoads:
     return obj
 
 
-#: the rotation rate's range [rad/s]: below OMEGA_MIN the propeller-convention coefficients,
-#: referred to n^2, overflow (a parked propeller is not modelled)
+#: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
+#: solution at OMEGA_MIN (in still air scaled by (Omega / OMEGA_MIN)^2 to 0 at Omega = 0); the solver
+#: itself, whose coefficients are referred to n^2, runs from OMEGA_MIN
 OMEGA_MIN = 0.1
 OMEGA_MAX = 1e5
 AIRSPEED_MAX = 500.0
 #: the per-point collective's range [rad] (the blade-angle offset of ``rotor_loads(collective=)``)
 COLLECTIVE_RANGE = math.radians(45.0)
-_RANGES = {"omega": (OMEGA_MIN, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
+_RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
            "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
+
+
+def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
+    """The loads solved at OMEGA_MIN, taken to the rates ``om`` below it (parked blades): in
+    still air (V = 0) loads and flap angles scale by (Omega / OMEGA_MIN)^2 and induced
+    velocities by Omega / OMEGA_MIN, to exactly 0 at Omega = 0; in a flow they are held
+    (Omega at or above OMEGA_MIN unchanged)."""
+    f = np.where((om < OMEGA_MIN) & (V == 0.0), om / OMEGA_MIN, 1.0)
+    f2 = f * f
+    scaled = [a * f2 + 0.0 for a in (T, D, Q, R, Y, P)] + [vbar * f + 0.0, b1c * f2 + 0.0, b1s * f2 + 0.0]
+    if radial:
+        rad = rad.copy()
+        rad[0] *= f[:, None]
+        rad[1:] *= f2[None, :, None]
+    return (*scaled, rad)
 
 
 def _range_error(name: str, value) -> ValueError:
     lo, hi, unit = _RANGES[name]
     why = ""
-    if name == "omega" and isinstance(value, float) and 0 <= value < lo:
-        why = (" (a parked propeller is not modelled: the coefficients are referred to the rotation rate; for spin-up "
-               "and a stopped rotor use a map, RotorMap.loads(..., out_of_grid='clip'), which scales its lowest "
-               "row's loads to 0 at Omega = 0)")
+    if name == "omega" and isinstance(value, float) and value < 0:
+        why = " (a signed rotation rate is refused: give its magnitude, and the sense as the rotor's spin)"
     if name == "incidence" and isinstance(value, float) and -math.pi <= value < 0:
         why = " (the model is symmetric in the incidence: give its magnitude)"
     return ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got {value!r}{why}")
@@ -508,8 +528,12 @@ def rotor_loads(
     propeller : Propeller
     params : AirfoilParams or CamberedParams
     omega : float or array_like
-        Rotation rate Omega [rad/s], finite, in [0.1, 1e5] (below 0.1 rad/s the
-        coefficients, referred to n^2, overflow: a parked propeller is not modelled).
+        Rotation rate Omega [rad/s], finite, in [0, 1e5]. Below 0.1 rad/s the blades are
+        taken as parked (a stopped rotor, the start of a spin-up): in a flow the loads are
+        the solution at 0.1 rad/s, where every blade element sees the freestream (the
+        parked blades' loads averaged over their azimuth: drag, and a thrust and torque
+        of either sign); in still air (V = 0) they scale by (Omega / 0.1)^2 to exactly 0
+        at Omega = 0, the induced velocities by Omega / 0.1.
     airspeed : float or array_like
         Speed V of the disk relative to the air [m/s], finite, in [0, 500].
     incidence : float or array_like
@@ -556,7 +580,9 @@ def rotor_loads(
     if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
             and type(incidence) in _REAL_SCALARS and (collective is None or type(collective) in _REAL_SCALARS)):
         shape = ()
-        inputs = np.array([[_scalar("omega", omega)], [_scalar("airspeed", airspeed)], [_scalar("incidence", incidence)],
+        w0 = _scalar("omega", omega)
+        any_slow = w0 < OMEGA_MIN
+        inputs = np.array([[w0], [_scalar("airspeed", airspeed)], [_scalar("incidence", incidence)],
                            [0.0 if collective is None else _scalar("collective", collective)]])
         om1, V1, b1, c1 = inputs  # rows: contiguous views of one point each
     else:
@@ -578,6 +604,7 @@ def rotor_loads(
         b1 = arrays[2].reshape(-1)
         c1 = (np.ascontiguousarray(arrays[3].reshape(-1), dtype=float) if collective is not None
               else np.zeros(om1.size))
+        any_slow = bool((om1 < OMEGA_MIN).any())
     Vs = np.ascontiguousarray(V1 * np.sin(b1))
     Vc = np.ascontiguousarray(V1 * np.cos(b1))
     if shape == ():  # exact axial flow at beta = 0, pi
@@ -586,6 +613,9 @@ def rotor_loads(
     else:
         Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0
 
+    om_in = om1
+    if any_slow:  # spin-up and stopped rotors: solved at OMEGA_MIN, scaled below
+        om1 = np.maximum(om1, OMEGA_MIN)
     nd, model, pk, cam, inflow, empirical = _prepared(propeller, params, air, discretization)
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow
@@ -614,7 +644,14 @@ def rotor_loads(
         D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
     else:
         b1c = b1s = np.zeros(n)
-    rfr = Vs / om1
+    if any_slow:
+        T, D, Q, R, Y, P, vbar, b1c, b1s, rad = _spin_up_scaled(om_in, V1, T, D, Q, R, Y, P, vbar, b1c, b1s, rad,
+                                                                radial)
+        om1 = om_in
+        # a stopped rotor: its whole retreating side in reverse flow (radius inf), none without in-plane flow
+        rfr = np.where(om1 > 0, Vs / np.maximum(om1, 1e-300), np.where(Vs > 0, np.inf, 0.0))
+    else:
+        rfr = Vs / om1
     # working state, v_h, descent ratio and the inflow-validity flag (a linear inflow model with net
     # upflow; the empirical descent curve blended in forward flight by propmap's fade), compiled
     state, v_h, k_desc, _, extrapolated = _classify(T, Vs, Vc, vbar, air.rho, propeller.radius,

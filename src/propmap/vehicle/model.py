@@ -207,7 +207,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     angular_velocity : array_like, shape (N, 3) or (3,)
         Body angular velocity w, body axes [rad/s].
     rotor_omega : array_like, shape (N, n_rotors) or (n_rotors,)
-        Rotation rates Omega_i [rad/s], in the vehicle's rotor order, each in [0.1, 1e5].
+        Rotation rates Omega_i [rad/s], in the vehicle's rotor order, each in [0, 1e5] (below
+        0.1 rad/s parked blades, as :func:`propmap.rotor_loads`).
     wind : array_like, shape (N, 3) or (3,), optional
         Wind velocity in body axes [m/s]; default none.
     rotor_acceleration : array_like, shape (N, n_rotors) or (n_rotors,), optional
