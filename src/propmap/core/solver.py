@@ -280,6 +280,9 @@ class RotorLoads:
         Air density used [kg/m^3].
     diameter : float
         Propeller diameter [m].
+    jacobian : dict or None
+        With ``rotor_loads(..., derivatives=...)``: {(quantity, wrt): ndarray of shape S}
+        (:meth:`derivative`); else None.
     """
 
     omega: np.ndarray
@@ -314,6 +317,40 @@ class RotorLoads:
     n_evaluations: np.ndarray
     rho: float
     diameter: float
+    jacobian: dict | None = None
+
+    def derivative(self, quantity: str, wrt: str) -> np.ndarray:
+        """d(quantity)/d(wrt) at every point, by the implicit function theorem (core/_sensitivity.py).
+
+        Parameters
+        ----------
+        quantity : {"thrust", "drag", "torque", "rolling_moment"}
+        wrt : {"omega", "airspeed", "incidence", "collective"}
+            Omega [rad/s], V [m/s], beta [rad], the collective offset [rad]; as asked of
+            :func:`rotor_loads` (``derivatives``).
+
+        Returns
+        -------
+        ndarray, shape S
+            [N or N m per unit of ``wrt``]; NaN where the point did not converge. At
+            points with ``multiple_roots`` the derivative is that of the selected root's
+            branch; the loads jump where the selection changes.
+
+        Raises
+        ------
+        ValueError
+            The loads were computed without derivatives, or an unknown quantity or input
+            (naming the valid ones).
+        """
+        if self.jacobian is None:
+            raise ValueError("these loads have no derivatives: call rotor_loads(..., derivatives=True)")
+        if quantity not in DERIVATIVE_LOADS:
+            raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS)}, got {quantity!r:.60}")
+        if (quantity, wrt) not in self.jacobian:
+            have = sorted({w for _, w in self.jacobian})
+            raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads), "
+                             f"got {wrt!r:.60}")
+        return self.jacobian[(quantity, wrt)]
 
     @property
     def state_name(self) -> np.ndarray:
@@ -396,6 +433,10 @@ def _new_loads(**kw) -> RotorLoads:
     obj.__dict__.update(kw)
     return obj
 
+
+#: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
+DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment")
+DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
 
 #: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
 #: solution at OMEGA_MIN (in still air scaled by (Omega / OMEGA_MIN)^2 to 0 at Omega = 0); the solver
@@ -512,6 +553,7 @@ def rotor_loads(
     on_failure: str = "raise",
     radial: bool = False,
     collective=None,
+    derivatives=False,
 ) -> RotorLoads:
     """Thrust, rotor drag and torque of a propeller at any operating point.
 
@@ -555,6 +597,14 @@ def rotor_loads(
         blade angle theta(r) (on top of ``params.collective``): a variable-pitch rotor's
         collective, or a collective sweep of one geometry. Broadcast with ``omega``,
         ``airspeed`` and ``incidence``. None (default): no offset.
+    derivatives : bool or sequence of str
+        True: also the derivatives of T, D, Q and M_R with respect to ``omega``,
+        ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
+        the inputs, ``"collective"`` among them (the blade-angle offset, the same for
+        ``params.collective`` and ``collective``). By the implicit function theorem on
+        each annulus' converged root (core/_sensitivity.py), not by differencing the
+        solver; for the uniform inflow and rigid blades (the paper's rotor) and Omega >=
+        0.1 rad/s. False (default): none.
 
     Returns
     -------
@@ -569,6 +619,8 @@ def rotor_loads(
     ValueError
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
+        With ``derivatives``: an unknown input name, a linear inflow model or flapping
+        blades, or an Omega below 0.1 rad/s.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
@@ -613,13 +665,15 @@ def rotor_loads(
     else:
         Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0
 
+    wrt = _derivative_inputs(derivatives, params, any_slow)
+    keep_radial = radial or bool(wrt)  # the derivatives need the roots
     om_in = om1
     if any_slow:  # spin-up and stopped rotors: solved at OMEGA_MIN, scaled below
         om1 = np.maximum(om1, OMEGA_MIN)
     nd, model, pk, cam, inflow, empirical = _prepared(propeller, params, air, discretization)
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow
-    rows = n if radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
+    rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
     rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
     counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
     (T, D, Q, R, Y, P, vbar), (status, nmulti, nvrs, nev) = out, counts
@@ -627,7 +681,7 @@ def rotor_loads(
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, bool(radial), out, rad, counts)
+          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, out, rad, counts)
     converged = status == 0
     if on_failure == "raise" and status.any():
         i = int(np.argmax(~converged))
@@ -662,6 +716,10 @@ def rotor_loads(
     else:
         def s(a):
             return a.reshape(shape)
+    jac = None
+    if wrt:
+        jac = {k: s(a) for k, a in _jacobian(wrt, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam,
+                                                 empirical).items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
@@ -673,5 +731,40 @@ def rotor_loads(
         reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
         state=s(state), v_h=s(v_h), descent_ratio=s(k_desc),
         n_evaluations=s(nev),
-        rho=air.rho, diameter=propeller.diameter,
+        rho=air.rho, diameter=propeller.diameter, jacobian=jac,
     )
+
+
+def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
+    """The inputs ``rotor_loads(derivatives=...)`` asks for, checked (() for none)."""
+    if derivatives is False or derivatives is None:
+        return ()
+    if derivatives is True:
+        wrt = DERIVATIVE_INPUTS[:3]
+    else:
+        if isinstance(derivatives, str) or not hasattr(derivatives, "__iter__"):
+            raise ValueError(f"derivatives must be True, False or a sequence of input names "
+                             f"({', '.join(DERIVATIVE_INPUTS)}), got {derivatives!r:.60}")
+        wrt = tuple(dict.fromkeys(derivatives))
+        bad = [w for w in wrt if w not in DERIVATIVE_INPUTS]
+        if bad:
+            raise ValueError(f"derivatives: unknown input {bad[0]!r:.60}; valid: {', '.join(DERIVATIVE_INPUTS)}")
+    if params.inflow != "uniform" or params.flap_compliance > 0:
+        raise ValueError("derivatives are implemented for the uniform inflow and rigid blades (the paper's rotor); "
+                         f"this set has inflow={params.inflow!r}, flap_compliance={params.flap_compliance:g}")
+    if any_slow:
+        raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")
+    return wrt
+
+
+def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical) -> dict:
+    """{(load, input): derivative} at every point (flat arrays), from the kernel
+    (core/_sensitivity.py)."""
+    from . import _sensitivity
+
+    n_in = 4 if "collective" in wrt else 3
+    raw = np.empty((4, n_in, om.size))
+    om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
+    _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, raw)
+    return {(load, w): raw[q, DERIVATIVE_INPUTS.index(w)] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}

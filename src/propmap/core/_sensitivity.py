@@ -1,0 +1,183 @@
+"""Compiled (numba) implicit derivatives of the loads: the implicit function theorem on each
+annulus' converged root.
+
+On annulus j the inflow v solves G(v, x) = dT_BET - F dT_BEMT = 0 (eq 11) for the inputs
+x = (Omega, V sin beta, V cos beta, collective). Its loads L(v, x) (eqs 5-7 and the rolling
+moment, azimuth-averaged) then change with x as
+
+    dL/dx = dL/dx|_v + dL/dv|_x dv/dx,    dv/dx = -(dG/dx|_v) / (dG/dv|_x)
+
+(the implicit function theorem; the approach of A. Ning, "Using blade element momentum
+methods with gradient-based design optimization", Structural and Multidisciplinary
+Optimization 64, 2021, there with algorithmic differentiation of the residual). The
+partial derivatives at the fixed root are central differences of the residual and loads
+(no root solve in them): their error is the difference's, O(h^2) with h = 1e-5 of each
+variable's scale, far below the root's own tolerance, whereas differencing the whole solver
+would carry that tolerance (1e-7 of the inflow scale) divided by h. One evaluation of the
+annulus gives G and L together (G's BET side is L's thrust), so each derivative costs two
+element passes per annulus (the solve costs about 8.8).
+
+The residual and the loads are the solver's own (_kernel._residual and annulus_loads, with
+the loss factor and the cambered section's Reynolds constants recomputed at each perturbed
+input): uniform inflow only, every azimuth node of the half circle (in axial flow too, so
+that the in-plane speed can be perturbed; the nodes are symmetric in sin psi, which makes T
+even and D, M_R odd in V sin beta, so the differences at V sin beta = 0 are exact).
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ._jitcache import CACHE
+from ._kernel import (_FM, CAMBERED, _axial_mass_flow, _cambered_annulus, _element, _inverse_sin_phi,
+                      _momentum_thrust, _prandtl)
+
+#: relative step of the central differences at the fixed root
+STEP = 1e-5
+#: inputs, in the order of the output's second axis
+INPUTS = ("omega", "airspeed", "incidence", "collective")
+#: loads, in the order of the output's first axis
+LOADS = ("thrust", "drag", "torque", "rolling_moment")
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: ten call sites (compile time)
+def _annulus(v, Om, Vs, Vc, dth, y, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, naz, model, pk, cam, emp):
+    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc) with
+    the blade angle th + dth: the solver's residual and loads, recomputed from scratch."""
+    tj = th + dth
+    st = np.sin(tj)
+    cs = np.cos(tj)
+    if model == CAMBERED:
+        s0, s1, s2, s3 = _cambered_annulus((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, cam[4], cam[0], cam[1],
+                                           cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
+    else:
+        s0, s1, s2, s3 = sc, 0.0, 0.0, 0.0
+    floss = 1.0
+    if ct >= 0.0 or ch >= 0.0:
+        if emp and Vc < 0.0:
+            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
+        else:
+            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
+        if ct >= 0.0:
+            floss = _prandtl(ct, inv_sin)
+        if ch >= 0.0:
+            floss *= _prandtl(ch, inv_sin)
+    aT = 0.0
+    aD = 0.0
+    aQ = 0.0
+    aR = 0.0
+    UP = Vc + v
+    for k in range(naz):
+        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, tj, st, cs, s0, s1, s2, s3, model, pk)
+        aT += qT
+        aD += qH * sinpsi[k]
+        aQ += qH
+        aR += qT * sinpsi[k]
+    t = cfac * aT / naz
+    if emp:
+        w_ax = _axial_mass_flow(v, Vc, Vs)
+        mom = mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
+    else:
+        mom = _momentum_thrust(v, mfac, Vs, Vc)
+    return t - floss * mom, t, cfac * aD / naz, y * cfac * aQ / naz, y * cfac * aR / naz
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
+    naz = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
+    nr = y.shape[0]
+    if not ok[i]:
+        for q in range(4):
+            for p in range(n_in):
+                out[q, p, i] = np.nan
+        return
+    for q in range(4):
+        for p in range(n_in):
+            out[q, p, i] = 0.0
+    om, dth = Om[i], coll[i]
+    sb = np.sin(b[i])
+    cb = np.cos(b[i])
+    vs = V[i] * sb
+    vc = V[i] * cb
+    if abs(vs) < 1e-12 * V[i]:
+        vs = 0.0
+    # each input's direction in (Omega, V sin beta, V cos beta, collective) and its step
+    e = np.zeros((4, 4))
+    e[0, 0] = 1.0
+    e[1, 1] = sb
+    e[1, 2] = cb
+    e[2, 1] = V[i] * cb
+    e[2, 2] = -V[i] * sb
+    e[3, 3] = 1.0
+    hx = np.empty(4)
+    hx[0] = STEP * om
+    hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
+    hx[2] = STEP
+    hx[3] = STEP
+    # at V = 0 the airspeed only grows: a one-sided (second-order) difference along the ray
+    one_sided = V[i] == 0.0
+    dL = np.empty(4)
+    Lv = np.empty(4)
+    L0 = np.empty(5)
+    for j in range(nr):
+        vj = v[i, j]
+        hv = STEP * (abs(vj) + abs(vc) + 0.01 * om * y[j] + 1e-9)
+        gp, t1, d1, q1, r1 = _annulus(vj + hv, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
+                                      ch[j], sinpsi, naz, model, pk, cam, emp)
+        gm, t2, d2, q2, r2 = _annulus(vj - hv, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
+                                      ch[j], sinpsi, naz, model, pk, cam, emp)
+        Gv = (gp - gm) / (2.0 * hv)
+        Lv[0] = (t1 - t2) / (2.0 * hv)
+        Lv[1] = (d1 - d2) / (2.0 * hv)
+        Lv[2] = (q1 - q2) / (2.0 * hv)
+        Lv[3] = (r1 - r2) / (2.0 * hv)
+        if one_sided:
+            L0[0], L0[1], L0[2], L0[3], L0[4] = _annulus(vj, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j],
+                                                         mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
+        for p in range(n_in):
+            if p == 2 and V[i] == 0.0:
+                continue  # the incidence does nothing at V = 0
+            h = hx[p]
+            if p == 1 and one_sided:
+                g1, t1, d1, q1, r1 = _annulus(vj, om, h * sb, h * cb, dth, y[j], th[j], sc[j], cy2[j], cfac[j],
+                                              mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
+                g2, t2, d2, q2, r2 = _annulus(vj, om, 2 * h * sb, 2 * h * cb, dth, y[j], th[j], sc[j], cy2[j],
+                                              cfac[j], mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
+                k2 = 1.0 / (2.0 * h)
+                dv = -((4.0 * g1 - g2 - 3.0 * L0[0]) * k2) / Gv
+                dL[0] = (4.0 * t1 - t2 - 3.0 * L0[1]) * k2
+                dL[1] = (4.0 * d1 - d2 - 3.0 * L0[2]) * k2
+                dL[2] = (4.0 * q1 - q2 - 3.0 * L0[3]) * k2
+                dL[3] = (4.0 * r1 - r2 - 3.0 * L0[4]) * k2
+            else:
+                gp, t1, d1, q1, r1 = _annulus(vj, om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2],
+                                              dth + h * e[p, 3], y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
+                                              ch[j], sinpsi, naz, model, pk, cam, emp)
+                gm, t2, d2, q2, r2 = _annulus(vj, om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2],
+                                              dth - h * e[p, 3], y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
+                                              ch[j], sinpsi, naz, model, pk, cam, emp)
+                k2 = 1.0 / (2.0 * h)
+                dv = -((gp - gm) * k2) / Gv
+                dL[0] = (t1 - t2) * k2
+                dL[1] = (d1 - d2) * k2
+                dL[2] = (q1 - q2) * k2
+                dL[3] = (r1 - r2) * k2
+            for q in range(4):
+                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
+
+
+@numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
+def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
+    """d(T, D, Q, M_R)/d(Omega, V, beta[, collective]) at every point.
+
+    Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
+    (V sin beta, V cos beta), ``th`` the blade angles without the per-point collective
+    ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
+    every annulus converged (the others get NaN); ``n_in`` 3 or 4 (with the collective).
+    ``out`` shape (4, n_in, n). Each derivative is a directional one in (Omega, V sin
+    beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
+    incidence's is 0.
+    """
+    for i in numba.prange(Om.shape[0]):
+        _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out)

@@ -1,0 +1,123 @@
+"""Implicit derivatives of the loads (core/_sensitivity.py): against central differences of
+the whole solver across the envelope, physical limits (symmetries in axial flow, the
+momentum-theory hover slope), shapes and errors."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+
+LOADS = ("thrust", "drag", "torque", "rolling_moment")
+DISC = pm.Discretization(24, 8)
+
+
+@pytest.fixture(scope="module")
+def prop():
+    return pm.load_propeller("apce_8x6")
+
+
+@pytest.fixture(scope="module", params=["generic", "paper"])
+def params(request):
+    if request.param == "generic":
+        return pm.generic_params()
+    return pm.preset("gill2017-apc")  # the paper's section (Table I), the other section model
+
+
+def _loads(prop, params, om, V, b):
+    return pm.rotor_loads(prop, params, om, V, b, discretization=DISC)
+
+
+def _finite_difference(prop, params, base, key, h):
+    """Central differences of the solver in ``base[key]`` (one-sided, second order, at an end
+    of the input's range: V = 0, beta = 0 or pi)."""
+    x0 = base[key]
+    lo_end = x0 == 0 and key in ("V", "b")
+    hi_end = key == "b" and x0 == math.pi
+    if lo_end or hi_end:
+        s = 1.0 if lo_end else -1.0
+        f0 = _loads(prop, params, **base)
+        f1 = _loads(prop, params, **(base | {key: x0 + s * h}))
+        f2 = _loads(prop, params, **(base | {key: x0 + 2 * s * h}))
+        return {q: s * (4 * float(getattr(f1, q)) - float(getattr(f2, q)) - 3 * float(getattr(f0, q))) / (2 * h)
+                for q in LOADS}
+    a = _loads(prop, params, **(base | {key: x0 + h}))
+    c = _loads(prop, params, **(base | {key: x0 - h}))
+    return {q: (float(getattr(a, q)) - float(getattr(c, q))) / (2 * h) for q in LOADS}
+
+
+@pytest.mark.parametrize("om, V, beta_deg", [
+    (800.0, 0.0, 0.0),  # hover
+    (800.0, 5.0, 0.0),  # axial climb
+    (800.0, 3.0, 180.0),  # axial descent (empirical momentum)
+    (800.0, 12.0, 100.0),  # edgewise, descending
+    (1200.0, 25.0, 30.0),  # fast climb at incidence
+    (500.0, 8.0, 60.0),
+])
+def test_implicit_derivatives_match_finite_differences(prop, params, om, V, beta_deg):
+    """Each derivative within 2e-5 of central differences of the whole solver, in units of the
+    point's thrust (forces) or torque (moments) per unit of the input's scale (the differences
+    carry the root tolerance, 1e-7 of the inflow scale, divided by their step)."""
+    base = {"om": om, "V": V, "b": math.radians(beta_deg)}
+    r = pm.rotor_loads(prop, params, om, V, base["b"], discretization=DISC, derivatives=True)
+    for wrt, key, h, scale_x in (("omega", "om", 1e-4 * om, om), ("airspeed", "V", 1e-4 * max(V, 1.0), max(V, 1.0)),
+                                 ("incidence", "b", 1e-4, 1.0)):
+        fd = _finite_difference(prop, params, base, key, h)
+        for q in LOADS:
+            scale = abs(float(r.thrust)) if q in ("thrust", "drag") else abs(float(r.torque))
+            err = abs(float(r.derivative(q, wrt)) - fd[q]) * scale_x / scale
+            assert err < 2e-5, (wrt, q, float(r.derivative(q, wrt)), fd[q])
+
+
+def test_collective_derivative_and_array_shapes(prop):
+    g = pm.generic_params()
+    om = np.array([[700.0, 900.0, 1100.0], [800.0, 800.0, 800.0]])
+    V = np.array([[0.0, 6.0, 12.0], [3.0, 3.0, 3.0]])
+    b = np.radians([[0.0, 45.0, 90.0], [10.0, 120.0, 170.0]])
+    r = pm.rotor_loads(prop, g, om, V, b, discretization=DISC, derivatives=("omega", "collective"))
+    for q in LOADS:
+        assert r.derivative(q, "omega").shape == (2, 3) and r.derivative(q, "collective").shape == (2, 3)
+    h = 1e-4
+    a = pm.rotor_loads(prop, g, om, V, b, discretization=DISC, collective=h)
+    c = pm.rotor_loads(prop, g, om, V, b, discretization=DISC, collective=-h)
+    np.testing.assert_allclose(r.derivative("thrust", "collective"), (a.thrust - c.thrust) / (2 * h),
+                               rtol=2e-5, atol=2e-5 * np.abs(r.thrust).max())
+    with pytest.raises(ValueError, match="wrt must be one of collective, omega"):
+        r.derivative("thrust", "airspeed")
+
+
+def test_physical_limits(prop):
+    """Axial flow: D and M_R do not change with Omega or V (0 by symmetry), T is even in the
+    incidence at beta = 0 (dT/dbeta = 0) while D grows with it; hover: dT/dOmega = 2 T / Omega,
+    T ~ Omega^2 for the paper's section (its only Reynolds term, the Blasius drag, enters T
+    through the element's in-plane force: within 3%); thrust falls with axial climb."""
+    r = pm.rotor_loads(prop, pm.preset("gill2017-apc"), np.array([800.0, 800.0]), np.array([0.0, 6.0]), 0.0,
+                       discretization=DISC, derivatives=True)
+    for wrt in ("omega", "airspeed"):
+        assert np.all(np.abs(r.derivative("drag", wrt)) < 1e-12 * r.thrust)
+        assert np.all(np.abs(r.derivative("rolling_moment", wrt)) < 1e-12 * r.torque)
+    assert abs(r.derivative("thrust", "incidence")[1]) < 1e-9 * r.thrust[1]
+    assert r.derivative("drag", "incidence")[1] > 0  # drag grows as the disk tilts into the flow
+    assert r.derivative("thrust", "omega")[0] == pytest.approx(2 * r.thrust[0] / 800.0, rel=0.03)
+    assert r.derivative("thrust", "airspeed")[1] < 0
+
+
+def test_derivative_errors(prop):
+    g = pm.generic_params()
+    r = pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC)
+    with pytest.raises(ValueError, match="no derivatives"):
+        r.derivative("thrust", "omega")
+    r = pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=True)
+    with pytest.raises(ValueError, match="quantity must be one of thrust, drag"):
+        r.derivative("power", "omega")
+    with pytest.raises(ValueError, match="unknown input 'rpm'"):
+        pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives=["rpm"])
+    with pytest.raises(ValueError, match="derivatives must be True, False or a sequence"):
+        pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
+    from dataclasses import replace
+
+    with pytest.raises(ValueError, match="uniform inflow and rigid blades"):
+        pm.rotor_loads(prop, replace(g, inflow="pitt-peters"), 800.0, 5.0, 0.5, derivatives=True)
+    with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
+        pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
