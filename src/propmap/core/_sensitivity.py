@@ -30,8 +30,8 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE
-from ._kernel import (_FM, CAMBERED, _axial_mass_flow, _cambered_annulus, _element, _inverse_sin_phi,
-                      _momentum_thrust, _prandtl)
+from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
+                      _element_gill, _inverse_sin_phi, _momentum_thrust, _prandtl)
 
 #: relative step of the central differences at the fixed root
 STEP = 1e-5
@@ -41,18 +41,20 @@ INPUTS = ("omega", "airspeed", "incidence", "collective")
 LOADS = ("thrust", "drag", "torque", "rolling_moment")
 
 
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: ten call sites (compile time)
-def _annulus(v, Om, Vs, Vc, dth, y, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, naz, model, pk, cam, emp):
-    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc) with
-    the blade angle th + dth: the solver's residual and loads, recomputed from scratch."""
-    tj = th + dth
-    st = np.sin(tj)
-    cs = np.cos(tj)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
+    """The section constants (s0, s1, s2, s3) of an annulus at the inputs (as _solve_batch)."""
     if model == CAMBERED:
-        s0, s1, s2, s3 = _cambered_annulus((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, cam[4], cam[0], cam[1],
-                                           cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
-    else:
-        s0, s1, s2, s3 = sc, 0.0, 0.0, 0.0
+        return _cambered_annulus((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, cam[4], cam[0], cam[1], cam[2],
+                                 cam[3] != 0.0, cam[5], cam[6], cam[7])
+    return sc, 0.0, 0.0, 0.0
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: many call sites (compile time)
+def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk, emp):
+    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc), blade
+    angle th (its sine and cosine) and section constants s0..s3: the solver's residual
+    (_kernel._residual, with its loss factor) and loads (_kernel.annulus_loads)."""
     floss = 1.0
     if ct >= 0.0 or ch >= 0.0:
         if emp and Vc < 0.0:
@@ -68,12 +70,24 @@ def _annulus(v, Om, Vs, Vc, dth, y, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, naz
     aQ = 0.0
     aR = 0.0
     UP = Vc + v
-    for k in range(naz):
-        qT, qH = _element(Om * y + Vs * sinpsi[k], UP, tj, st, cs, s0, s1, s2, s3, model, pk)
-        aT += qT
-        aD += qH * sinpsi[k]
-        aQ += qH
-        aR += qT * sinpsi[k]
+    # one loop per section model, so that each compiles to straight-line SIMD code (as _kernel._residual)
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for k in range(naz):
+            qT, qH = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                                       a0, a1, a2, a3, a4, a5, a6, a7)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for k in range(naz):
+            qT, qH = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
     t = cfac * aT / naz
     if emp:
         w_ax = _axial_mass_flow(v, Vc, Vs)
@@ -84,8 +98,8 @@ def _annulus(v, Om, Vs, Vc, dth, y, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, naz
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
-    naz = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
+def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
+    naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     if not ok[i]:
         for q in range(4):
@@ -110,6 +124,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinp
     e[2, 1] = V[i] * cb
     e[2, 2] = -V[i] * sb
     e[3, 3] = 1.0
+    if vs == 0.0:  # axial: exactly no in-plane speed along the airspeed's ray
+        e[1, 1] = 0.0
     hx = np.empty(4)
     hx[0] = STEP * om
     hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
@@ -122,47 +138,76 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinp
     L0 = np.empty(5)
     for j in range(nr):
         vj = v[i, j]
+        th = th0[j] + dth
+        sth = np.sin(th)
+        cth = np.cos(th)
+        s0, s1, s2, s3 = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, cam)
+        # in axial flow the integrand does not depend on psi: one node, except where V sin beta is perturbed
+        naz = 1 if vs == 0.0 else naz_half
         hv = STEP * (abs(vj) + abs(vc) + 0.01 * om * y[j] + 1e-9)
-        gp, t1, d1, q1, r1 = _annulus(vj + hv, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
-                                      ch[j], sinpsi, naz, model, pk, cam, emp)
-        gm, t2, d2, q2, r2 = _annulus(vj - hv, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
-                                      ch[j], sinpsi, naz, model, pk, cam, emp)
+        gp, t1, d1, q1, r1 = _annulus(vj + hv, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j], mfac[j],
+                                      ct[j], ch[j], sinpsi, naz, model, pk, emp)
+        gm, t2, d2, q2, r2 = _annulus(vj - hv, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j], mfac[j],
+                                      ct[j], ch[j], sinpsi, naz, model, pk, emp)
         Gv = (gp - gm) / (2.0 * hv)
         Lv[0] = (t1 - t2) / (2.0 * hv)
         Lv[1] = (d1 - d2) / (2.0 * hv)
         Lv[2] = (q1 - q2) / (2.0 * hv)
         Lv[3] = (r1 - r2) / (2.0 * hv)
+        if vs == 0.0:  # exactly 0 by symmetry in axial flow (as annulus_loads)
+            Lv[1] = 0.0
+            Lv[3] = 0.0
         if one_sided:
-            L0[0], L0[1], L0[2], L0[3], L0[4] = _annulus(vj, om, vs, vc, dth, y[j], th[j], sc[j], cy2[j], cfac[j],
-                                                         mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
+            L0[0], L0[1], L0[2], L0[3], L0[4] = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j],
+                                                         mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, emp)
+            L0[2] = 0.0  # D and M_R vanish at V = 0
+            L0[4] = 0.0
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
             h = hx[p]
+            k2 = 1.0 / (2.0 * h)
             if p == 1 and one_sided:
-                g1, t1, d1, q1, r1 = _annulus(vj, om, h * sb, h * cb, dth, y[j], th[j], sc[j], cy2[j], cfac[j],
-                                              mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
-                g2, t2, d2, q2, r2 = _annulus(vj, om, 2 * h * sb, 2 * h * cb, dth, y[j], th[j], sc[j], cy2[j],
-                                              cfac[j], mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, cam, emp)
-                k2 = 1.0 / (2.0 * h)
+                s0a, s1a, s2a, s3a = _constants(om, h * sb, h * cb, y[j], sc[j], cy2[j], model, cam)
+                s0b, s1b, s2b, s3b = _constants(om, 2 * h * sb, 2 * h * cb, y[j], sc[j], cy2[j], model, cam)
+                nz = naz_half if sb != 0.0 else 1
+                g1, t1, d1, q1, r1 = _annulus(vj, om, h * sb, h * cb, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j],
+                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
+                g2, t2, d2, q2, r2 = _annulus(vj, om, 2 * h * sb, 2 * h * cb, y[j], th, sth, cth, s0b, s1b, s2b, s3b,
+                                              cfac[j], mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
                 dv = -((4.0 * g1 - g2 - 3.0 * L0[0]) * k2) / Gv
                 dL[0] = (4.0 * t1 - t2 - 3.0 * L0[1]) * k2
                 dL[1] = (4.0 * d1 - d2 - 3.0 * L0[2]) * k2
                 dL[2] = (4.0 * q1 - q2 - 3.0 * L0[3]) * k2
                 dL[3] = (4.0 * r1 - r2 - 3.0 * L0[4]) * k2
+                if nz == 1:  # along the axis: D and M_R stay 0
+                    dL[1] = 0.0
+                    dL[3] = 0.0
             else:
-                gp, t1, d1, q1, r1 = _annulus(vj, om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2],
-                                              dth + h * e[p, 3], y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
-                                              ch[j], sinpsi, naz, model, pk, cam, emp)
-                gm, t2, d2, q2, r2 = _annulus(vj, om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2],
-                                              dth - h * e[p, 3], y[j], th[j], sc[j], cy2[j], cfac[j], mfac[j], ct[j],
-                                              ch[j], sinpsi, naz, model, pk, cam, emp)
-                k2 = 1.0 / (2.0 * h)
+                a_om, a_vs, a_vc = om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2]
+                b_om, b_vs, b_vc = om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2]
+                if p == 3:
+                    tha, thb = th + h, th - h
+                    stha, ctha, sthb, cthb = np.sin(tha), np.cos(tha), np.sin(thb), np.cos(thb)
+                    s0a, s1a, s2a, s3a = s0, s1, s2, s3
+                    s0b, s1b, s2b, s3b = s0, s1, s2, s3
+                else:
+                    tha, thb, stha, ctha, sthb, cthb = th, th, sth, cth, sth, cth
+                    s0a, s1a, s2a, s3a = _constants(a_om, a_vs, a_vc, y[j], sc[j], cy2[j], model, cam)
+                    s0b, s1b, s2b, s3b = _constants(b_om, b_vs, b_vc, y[j], sc[j], cy2[j], model, cam)
+                nz = naz_half if e[p, 1] != 0.0 else naz
+                gp, t1, d1, q1, r1 = _annulus(vj, a_om, a_vs, a_vc, y[j], tha, stha, ctha, s0a, s1a, s2a, s3a, cfac[j],
+                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
+                gm, t2, d2, q2, r2 = _annulus(vj, b_om, b_vs, b_vc, y[j], thb, sthb, cthb, s0b, s1b, s2b, s3b, cfac[j],
+                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
                 dv = -((gp - gm) * k2) / Gv
                 dL[0] = (t1 - t2) * k2
                 dL[1] = (d1 - d2) * k2
                 dL[2] = (q1 - q2) * k2
                 dL[3] = (r1 - r2) * k2
+                if nz == 1:  # in axial flow, V sin beta unchanged: D and M_R stay 0 (one node has no symmetry)
+                    dL[1] = 0.0
+                    dL[3] = 0.0
             for q in range(4):
                 out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
 

@@ -19,7 +19,7 @@ divided by that mean, is a pure function of the geometry and chi:
 
 psi_ij the angle between the wake's in-plane direction (along -V_ip, where the air goes)
 and the in-plane offset of rotor j from rotor i. Rotor j then sees the air moving along
--a_i at sum_i kappa f_ij v_i, kappa the interference factor (1: the model as it is; the
+-a_i at sum_i k_I f_ij v_i, k_I the interference factor (1: the model as it is; the
 ring field of one vortex ring: e.g. Leishman 2006, Sec. 10.7).
 
 What it gives: nothing in hover or axial flight (a semi-infinite cylinder induces no
@@ -203,13 +203,13 @@ def interference_inflow(positions, axes, radii, velocity, v_i, factor: float) ->
     v_i : ndarray, shape (N, n)
         Each rotor's mean induced velocity [m/s] (RotorLoads.v_i_mean).
     factor : float
-        kappa, the interference factor (>= 0).
+        k_I, the interference factor (>= 0).
 
     Returns
     -------
     ndarray, shape (N, n, 3)
         The velocity of the air at each hub from the other rotors' wakes [m/s]
-        (sum_i -kappa f_ij v_i a_i): add it to the wind, i.e. subtract it from the hub's
+        (sum_i -k_I f_ij v_i a_i): add it to the wind, i.e. subtract it from the hub's
         velocity relative to the air.
     """
     positions = np.asarray(positions, float)

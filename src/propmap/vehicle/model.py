@@ -20,7 +20,7 @@ V. Kumar and P. Corke, "Multirotor aerial vehicles", IEEE Robotics & Automation 
 19(3), 2012). F_body is
 the airframe drag (core/body.py), acting at the centre of mass.
 
-With ``Vehicle.rotor_interference`` kappa > 0, each rotor also sees the inflow the other
+With ``Vehicle.rotor_interference`` k_I > 0, each rotor also sees the inflow the other
 rotors' skewed wakes induce at its disk (core/interference.py): the rotors are solved once
 without it, which gives their induced velocities, and again with it in their hub
 velocities (twice the rotor evaluations).
@@ -95,7 +95,7 @@ class Vehicle:
         tau [s] of the first-order lag from a log's motor speeds to the rotors' (0: the
         logged speeds are the rotors'; identify.flight.flight_samples).
     rotor_interference : float
-        kappa [-], in [0, 3]: the factor on the inflow each rotor's skewed wake induces at
+        k_I [-], in [0, 3]: the factor on the inflow each rotor's skewed wake induces at
         the others (core/interference.py; 0: rotors do not interact, 1: the vortex-cylinder
         model as it is).
     name, source : str

@@ -1,0 +1,92 @@
+"""Derivatives benchmark: the implicit derivatives' cost against the loads alone and against
+differencing the solver, on one batch, in one run.
+
+Run:  .venv/bin/python benchmarks/bench_derivatives.py
+
+Writes benchmarks/results/derivatives.json atomically and prints it.
+
+On 2,000 operating points of apce_8x6 (generic cambered set, 48 x 16 nodes; seed 0: 2,000
+to 12,000 rpm, 0 to 20 m/s, incidence 0 to 180 deg, a fifth of them axial), each timed as
+the median of 5 alternated runs:
+
+* ``rotor_loads`` alone (the baseline);
+* with ``derivatives=True`` (omega, airspeed, incidence) and with the collective too;
+* the central differences of the whole solver for the same three inputs (6 more solves).
+
+Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
+inputs), the residual evaluations per annulus of the solve, and the CPU.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import time
+from pathlib import Path
+
+import numpy as np
+
+import propmap as pm
+from propmap.io.atomic import atomic_write
+
+ROOT = Path(__file__).resolve().parents[1]
+N = 2000
+RUNS = 5
+
+
+def cpu_name() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def main() -> dict:
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.generic_params()
+    rng = np.random.default_rng(0)
+    om = rng.uniform(2000, 12000, N) * 2 * np.pi / 60
+    V = rng.uniform(0, 20, N)
+    b = np.radians(rng.uniform(0, 180, N))
+    b[: N // 5] = 0.0  # axial
+    cases = {
+        "loads": lambda: pm.rotor_loads(prop, params, om, V, b),
+        "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=True),
+        "loads + derivatives (4 inputs)": lambda: pm.rotor_loads(
+            prop, params, om, V, b, derivatives=("omega", "airspeed", "incidence", "collective")),
+        "central differences of the solver (3 inputs)": lambda: [
+            pm.rotor_loads(prop, params, *args) for args in (
+                (om, V, b), (om * (1 + 1e-4), V, b), (om * (1 - 1e-4), V, b), (om, V + 1e-3, b),
+                (om, np.maximum(V - 1e-3, 0), b), (om, V, np.minimum(b + 1e-4, np.pi)),
+                (om, V, np.maximum(b - 1e-4, 0)))],
+    }
+    for f in cases.values():  # compile / load the caches
+        f()
+    times = {k: [] for k in cases}
+    for _ in range(RUNS):
+        for k, f in cases.items():
+            t = time.perf_counter()
+            f()
+            times[k].append(time.perf_counter() - t)
+    base = float(np.median(times["loads"]))
+    r = pm.rotor_loads(prop, params, om, V, b)
+    out = {
+        "cpu": cpu_name(), "cores": os.cpu_count(), "load_average": os.getloadavg(), "points": N,
+        "discretization": [48, 16], "date": time.strftime("%Y-%m-%d"),
+        "residual_evaluations_per_annulus": float(r.n_evaluations.sum() / (N * r.r.size)),
+        "cases": {k: {"median_s": float(np.median(v)), "min_s": float(np.min(v)),
+                      "ratio_to_loads": float(np.median(v)) / base} for k, v in times.items()},
+    }
+    path = ROOT / "benchmarks" / "results" / "derivatives.json"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with atomic_write(path) as fh:
+        fh.write(json.dumps(out, indent=2))
+    return out
+
+
+if __name__ == "__main__":
+    print(json.dumps(main(), indent=2))
