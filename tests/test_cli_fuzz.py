@@ -184,8 +184,13 @@ def test_rotor_loads_finite_or_value_error_naming_the_argument(apc8x6, apc_param
     except pm.SolverError:  # documented: a failed root solve names the point and radius
         return
     ok = np.asarray(r.converged)
-    for k in ("thrust", "drag", "torque", "CT", "CP"):
+    for k in ("thrust", "drag", "torque"):
         assert np.all(np.isfinite(np.asarray(getattr(r, k))[ok])), k
+    spinning = ok & (np.asarray(r.omega) > 1e-100)
+    for k in ("CT", "CP"):  # referred to n: finite while the rotor turns, NaN when it is stopped (documented)
+        c = np.asarray(getattr(r, k))
+        assert np.all(np.isfinite(c[spinning])), k
+        assert np.all(np.isnan(c[np.asarray(r.omega) == 0])), k
 
 
 FIT_NAMES = ["cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp", "re_exp_lift", "alpha_L0_re", "cl1",

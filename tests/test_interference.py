@@ -162,3 +162,21 @@ def test_fit_flight_accepts_the_factor_as_a_parameter():
     from propmap.identify.flight import AIRFRAME_NAMES
 
     assert "rotor_interference" in AIRFRAME_NAMES and AIRFRAME_BOUNDS["rotor_interference"] == (0.0, 3.0)
+
+
+def test_descending_wake_is_the_mirror_image():
+    """In descent (V . a + v_i < 0) the wake rises above the disk: a rotor at height h sees
+    what a rotor at -h sees of the falling wake at the same skew (module docstring)."""
+    R, v_i, h = 0.06, 4.0, 0.5
+    pos = np.array([[0.0, 0.0, 0.0], [-2.4 * R, 0.0, h * R]])
+    axes = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
+    V = np.zeros((2, 2, 3))
+    V[:, :, 0] = 5.0  # the air goes to -x: rotor 2 downstream
+    V[0, :, 2] = 2.0  # climbing: V . a + v_i = 6
+    V[1, :, 2] = -10.0  # descending: V . a + v_i = -6, the same skew
+    out = interference_inflow(pos, axes, np.full(2, R), V, np.full((2, 2), v_i), 1.0)
+    chi = math.atan2(5.0, 6.0)
+    f_climb, f_descent = -out[:, 1, 2] / v_i
+    assert f_climb == pytest.approx(wake_ratio(chi, (2.4, 0.0, h)), abs=0.003)
+    assert f_descent == pytest.approx(wake_ratio(chi, (2.4, 0.0, -h)), abs=0.003)
+    assert f_descent - f_climb > 0.02

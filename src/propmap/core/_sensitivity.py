@@ -19,9 +19,11 @@ element passes per annulus (the solve costs about 8.8).
 
 The residual and the loads are the solver's own (_kernel._residual and annulus_loads, with
 the loss factor and the cambered section's Reynolds constants recomputed at each perturbed
-input): uniform inflow only, every azimuth node of the half circle (in axial flow too, so
-that the in-plane speed can be perturbed; the nodes are symmetric in sin psi, which makes T
-even and D, M_R odd in V sin beta, so the differences at V sin beta = 0 are exact).
+input): uniform inflow only, every azimuth node of the half circle where V sin beta is
+nonzero or perturbed (the nodes are symmetric in sin psi, which makes T even and D, M_R odd
+in V sin beta, so the differences at V sin beta = 0 are exact); in axial flow, where it is
+not perturbed (Omega, V along the axis, the collective), one node, the integrand being
+independent of psi there, with the D and M_R derivatives 0 by that symmetry.
 """
 
 from __future__ import annotations

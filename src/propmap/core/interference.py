@@ -30,9 +30,10 @@ weak upwash beside and ahead of a rotor. Left out: the in-plane part of the indu
 velocity, the wake's contraction and roll-up (both would move the downwash), and the
 wake's deflection by the others' wakes. Only rotors whose axes are parallel (within
 :data:`PARALLEL_COS`) interact; the wake of a rotor in descent (V . a_i + v_i < 0), which
-rises above the disk, is the mirror image (its normal velocity in the disk plane is the
-same). Tables of f over chi and psi are computed once per pair geometry (Biot-Savart
-with elliptic integrals, :func:`ring_normal_velocity`) and cached.
+rises above the disk, is the mirror image in the disk's plane (its normal velocity at a
+height h above the disk is the falling wake's at -h). Tables of f over chi and psi are
+computed once per pair geometry (Biot-Savart with elliptic integrals,
+:func:`ring_normal_velocity`) and cached.
 """
 
 from __future__ import annotations
@@ -70,6 +71,7 @@ def ring_normal_velocity(rho, z, radius=1.0):
         Distance from the ring's axis and along it from the ring's plane (same unit as
         ``radius``), broadcast together; not on the ring itself (rho = radius, z = 0).
     radius : float
+        The ring's radius (> 0), in the unit of ``rho`` and ``z``.
 
     Returns
     -------
@@ -242,5 +244,10 @@ def interference_inflow(positions, axes, radii, velocity, v_i, factor: float) ->
             else:
                 psi = np.zeros(V.shape[0])
             f = table(chi, psi)
+            up = (Va + v_i[:, i]) < 0  # in descent the wake rises: the mirror image, rotor j at -h
+            if h != 0 and up.any():
+                mirror = interference_table(round(dist / radii[i], 4), round(-h / radii[i], 4),
+                                            round(float(radii[j] / radii[i]), 4))
+                f = np.where(up, mirror(chi, psi), f)
             out[:, j, :] -= (factor * f * v_i[:, i])[:, None] * a
     return out

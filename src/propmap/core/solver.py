@@ -376,13 +376,16 @@ class RotorLoads:
     @property
     def CT(self) -> np.ndarray:
         """T / (rho n^2 D^4) [-], propeller convention, shape S (NaN for a stopped rotor, Omega = 0,
-        as CQ, CP and J: they are referred to n)."""
+        or one below about 1e-150 rad/s, where n^2 underflows; as CQ, CP and J: they are
+        referred to n)."""
         return self._per_n(self.thrust, self.rho * self._n**2 * self.diameter**4)
 
     def _per_n(self, a, b) -> np.ndarray:
-        """a / b, NaN where Omega = 0 (b = 0) without a division warning."""
+        """a / b, NaN where b = 0 (Omega = 0, or so small that n^2 underflows) without a
+        division warning."""
+        b = np.asarray(b)
         with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(self.omega > 0, a / np.where(self.omega > 0, b, 1.0), np.nan)
+            return np.where(b > 0, a / np.where(b > 0, b, 1.0), np.nan)
 
     @property
     def CQ(self) -> np.ndarray:

@@ -103,7 +103,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     axis : array_like, shape S + (3,)
         Rotor axis, the thrust direction; normalised here; must be non-zero.
     omega : float or array_like, shape S
-        Rotation rate magnitude Omega [rad/s], > 0.
+        Rotation rate magnitude Omega [rad/s], in [0, 1e5] (below 0.1 rad/s parked blades, as
+        :func:`propmap.rotor_loads`).
     spin : {"ccw", "cw"} or +1/-1 (array_like, shape S)
         Rotation sense about ``axis`` by the right-hand rule: "ccw" (+1) spins about
         +axis (counter-clockwise seen from the tip of the axis looking back at the disk).

@@ -11,8 +11,9 @@ with h_i = s_i J_i Omega_i a_i where the rotor inertia J_i is known (the spin-up
 ``vehicle_wrench``'s ``rotor_acceleration`` is not included). F_body is the airframe
 drag at the centre of mass (core/body.py) in the freestream: a map holds no induced
 velocity, so the slipstream term of a vehicle's ``wash_factor`` and the rotors' interference
-(``rotor_interference``, core/interference.py) are left out (said once, at construction). The maps are duck-typed (anything with RotorMap's ``wrench``), so this
-module imports the core only.
+(``rotor_interference``, core/interference.py) are left out (said once, at construction).
+The maps are duck-typed (anything with RotorMap's ``wrench``), so this module imports the
+core only.
 """
 
 from __future__ import annotations
