@@ -94,9 +94,14 @@ def test_physical_limits(prop):
     through the element's in-plane force: within 3%); thrust falls with axial climb."""
     r = pm.rotor_loads(prop, pm.preset("gill2017-apc"), np.array([800.0, 800.0]), np.array([0.0, 6.0]), 0.0,
                        discretization=DISC, derivatives=True)
+    # a hair off the axis every azimuth node is computed (no axial shortcut): D and M_R hardly move with
+    # Omega or V, and their incidence slopes match the axial point's
+    near = pm.rotor_loads(prop, pm.preset("gill2017-apc"), 800.0, 6.0, 1e-6, discretization=DISC, derivatives=True)
     for wrt in ("omega", "airspeed"):
-        assert np.all(np.abs(r.derivative("drag", wrt)) < 1e-12 * r.thrust)
-        assert np.all(np.abs(r.derivative("rolling_moment", wrt)) < 1e-12 * r.torque)
+        assert abs(float(near.derivative("drag", wrt))) < 1e-5 * abs(float(near.derivative("thrust", wrt)))
+        assert abs(float(near.derivative("rolling_moment", wrt))) < 1e-5 * abs(float(near.derivative("torque", wrt)))
+    for q in ("drag", "rolling_moment"):
+        assert float(near.derivative(q, "incidence")) == pytest.approx(r.derivative(q, "incidence")[1], rel=1e-4)
     assert abs(r.derivative("thrust", "incidence")[1]) < 1e-9 * r.thrust[1]
     assert r.derivative("drag", "incidence")[1] > 0  # drag grows as the disk tilts into the flow
     assert r.derivative("thrust", "omega")[0] == pytest.approx(2 * r.thrust[0] / 800.0, rel=0.03)

@@ -15,7 +15,9 @@ partial derivatives at the fixed root are central differences of the residual an
 variable's scale, far below the root's own tolerance, whereas differencing the whole solver
 would carry that tolerance (1e-7 of the inflow scale) divided by h. One evaluation of the
 annulus gives G and L together (G's BET side is L's thrust), so each derivative costs two
-element passes per annulus (the solve costs about 8.8).
+element passes per annulus and the inflow's two more (the solve costs about 8 residual
+evaluations and one loads pass; benchmarks/README.md has the measured ratio, 2.7x the
+loads alone for the three inputs).
 
 The residual and the loads are the solver's own (_kernel._residual and annulus_loads, with
 the loss factor and the cambered section's Reynolds constants recomputed at each perturbed

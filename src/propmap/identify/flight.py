@@ -256,8 +256,20 @@ def fitted_centre_of_mass(result: FitResult) -> np.ndarray:
 
 
 def fitted_vehicle(vehicle: Vehicle, result: FitResult) -> Vehicle:
-    """The vehicle with a flight fit's centre of mass and rotor interference factor (each the
-    vehicle's own where the fit did not free it)."""
+    """The vehicle with a flight fit's centre of mass and rotor interference factor.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle the fit was run on.
+    result : FitResult
+        Of :func:`fit_flight` (its ``extra["centre_of_mass"]`` and
+        ``extra["rotor_interference"]``; each the vehicle's own where the fit did not free it).
+
+    Returns
+    -------
+    Vehicle
+    """
     veh = shift_centre_of_mass(vehicle, fitted_centre_of_mass(result))
     return replace(veh, rotor_interference=float(result.extra.get("rotor_interference", veh.rotor_interference)))
 
@@ -290,7 +302,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     body : BodyDrag, optional
         Start of the airframe drag; default the vehicle's, else none (0).
     options : FitOptions
-        ``names``: default :data:`FLIGHT_FIT`. The population prior applies to the section
+        ``names``: default :data:`FLIGHT_FIT` (``rotor_interference`` may be added: it starts
+        at the vehicle's value, or at 1 where the vehicle has none). The population prior applies to the section
         parameters it knows, weighted as level flight's (by the vehicle's weight).
     moments : bool
         Fit the measured moments too (samples need them: the vehicle's inertia), each

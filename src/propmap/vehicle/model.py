@@ -28,6 +28,7 @@ velocities (twice the rotor evaluations).
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
@@ -238,7 +239,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     air = params.air if air is None else air
     n_rot = len(vehicle.rotors)
     kappa = vehicle.rotor_interference
-    if not (isinstance(kappa, (int, float)) and 0.0 <= kappa <= 3.0):
+    if isinstance(kappa, (bool, np.bool_)) or not isinstance(kappa, numbers.Real) or not 0.0 <= kappa <= 3.0:
         raise ValueError(f"vehicle.rotor_interference must be a number in [0, 3], got {kappa!r:.60}")
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
