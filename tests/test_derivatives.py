@@ -126,3 +126,51 @@ def test_derivative_errors(prop):
         pm.rotor_loads(prop, replace(g, inflow="pitt-peters"), 800.0, 5.0, 0.5, derivatives=True)
     with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
         pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
+
+
+def test_mean_inflow_derivative(prop):
+    """dv_i,mean/dx against differences of the solver (the airframe's slipstream depends on it)."""
+    g = pm.generic_params()
+    r = pm.rotor_loads(prop, g, 900.0, 6.0, 1.0, discretization=DISC, derivatives=True)
+    for wrt, args, h in (("omega", (900.0, 6.0, 1.0), 0.09), ("airspeed", (900.0, 6.0, 1.0), 6e-4)):
+        k = 0 if wrt == "omega" else 1
+        hi, lo = list(args), list(args)
+        hi[k] += h
+        lo[k] -= h
+        fd = (float(_loads(prop, g, *hi).v_i_mean) - float(_loads(prop, g, *lo).v_i_mean)) / (2 * h)
+        assert float(r.derivative("v_i_mean", wrt)) == pytest.approx(fd, rel=1e-5)
+
+
+def test_vehicle_rotor_speed_derivatives():
+    """dF/dOmega_i and dM/dOmega_i of the vehicle (arms, spins, gyroscopic moment, airframe drag
+    in the slipstream) against central differences of vehicle_wrench; refused with interference."""
+    from dataclasses import replace
+    from pathlib import Path
+
+    from propmap.core.body import BodyDrag
+
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    veh = replace(veh, body_drag=BodyDrag((0.02, 0.02, 0.01), 1.2))
+    g = pm.generic_params()
+    v = np.array([[4.0, -1.0, -0.5], [0.0, 0.0, 0.0]])
+    w = np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [1000.0] * 4])
+    r = pm.vehicle_wrench(veh, g, v, w, om, derivatives=True, discretization=DISC)
+    assert r.force_domega.shape == (2, 3, 4) and r.moment_domega.shape == (2, 3, 4)
+    for i in range(4):
+        h = 1e-3 * om[0, i]
+        a, c = om.copy(), om.copy()
+        a[:, i] += h
+        c[:, i] -= h
+        fa = pm.vehicle_wrench(veh, g, v, w, a, discretization=DISC)
+        fc = pm.vehicle_wrench(veh, g, v, w, c, discretization=DISC)
+        np.testing.assert_allclose(r.force_domega[:, :, i], (fa.force - fc.force) / (2 * h),
+                                   atol=1e-5 * np.abs(r.force_domega).max())
+        np.testing.assert_allclose(r.moment_domega[:, :, i], (fa.moment - fc.moment) / (2 * h),
+                                   atol=1e-5 * np.abs(r.moment_domega).max())
+    # hover: each rotor's speed pushes the vehicle up, and the spins' yaw moments alternate in sign
+    assert np.all(r.force_domega[1, 2] > 0)
+    assert np.sign(r.moment_domega[1, 2]).tolist() == [1.0 if rot.spin < 0 else -1.0 for rot in veh.rotors]
+    assert pm.vehicle_wrench(veh, g, v, w, om, discretization=DISC).force_domega is None
+    with pytest.raises(ValueError, match="not implemented with rotor_interference"):
+        pm.vehicle_wrench(replace(veh, rotor_interference=1.0), g, v, w, om, derivatives=True)

@@ -41,8 +41,8 @@ from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_an
 STEP = 1e-5
 #: inputs, in the order of the output's second axis
 INPUTS = ("omega", "airspeed", "incidence", "collective")
-#: loads, in the order of the output's first axis
-LOADS = ("thrust", "drag", "torque", "rolling_moment")
+#: loads, in the order of the output's first axis (and the mean induced velocity)
+LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -106,13 +106,16 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     if not ok[i]:
-        for q in range(4):
+        for q in range(5):
             for p in range(n_in):
                 out[q, p, i] = np.nan
         return
-    for q in range(4):
+    for q in range(5):
         for p in range(n_in):
             out[q, p, i] = 0.0
+    wy = 0.0  # the mean inflow's weights (as _solve_batch: annulus area)
+    for j in range(nr):
+        wy += w[j] * y[j]
     om, dth = Om[i], coll[i]
     sb = np.sin(b[i])
     cb = np.cos(b[i])
@@ -214,17 +217,18 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                     dL[3] = 0.0
             for q in range(4):
                 out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
+            out[4, p, i] += w[j] * y[j] * dv / wy
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
-    """d(T, D, Q, M_R)/d(Omega, V, beta[, collective]) at every point.
+    """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
     (V sin beta, V cos beta), ``th`` the blade angles without the per-point collective
     ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
     every annulus converged (the others get NaN); ``n_in`` 3 or 4 (with the collective).
-    ``out`` shape (4, n_in, n). Each derivative is a directional one in (Omega, V sin
+    ``out`` shape (5, n_in, n). Each derivative is a directional one in (Omega, V sin
     beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
     incidence's is 0.
     """

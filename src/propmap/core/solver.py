@@ -324,7 +324,7 @@ class RotorLoads:
 
         Parameters
         ----------
-        quantity : {"thrust", "drag", "torque", "rolling_moment"}
+        quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean"}
         wrt : {"omega", "airspeed", "incidence", "collective"}
             Omega [rad/s], V [m/s], beta [rad], the collective offset [rad]; as asked of
             :func:`rotor_loads` (``derivatives``).
@@ -438,7 +438,7 @@ def _new_loads(**kw) -> RotorLoads:
 
 
 #: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
-DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment")
+DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
 
 #: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
@@ -601,7 +601,7 @@ def rotor_loads(
         collective, or a collective sweep of one geometry. Broadcast with ``omega``,
         ``airspeed`` and ``incidence``. None (default): no offset.
     derivatives : bool or sequence of str
-        True: also the derivatives of T, D, Q and M_R with respect to ``omega``,
+        True: also the derivatives of T, D, Q, M_R and v_i,mean with respect to ``omega``,
         ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``). By the implicit function theorem on
@@ -766,7 +766,7 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical) 
     from . import _sensitivity
 
     n_in = 4 if "collective" in wrt else 3
-    raw = np.empty((4, n_in, om.size))
+    raw = np.empty((len(DERIVATIVE_LOADS), n_in, om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
                                nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, raw)

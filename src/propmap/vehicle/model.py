@@ -140,6 +140,10 @@ class VehicleWrench:
         Airframe drag [N] (zeros without one).
     loads : tuple of RotorLoads
         Each rotor's scalar loads and flags, shape (N,).
+    force_domega, moment_domega : ndarray, shape (N, 3, n_rotors), or None
+        With ``vehicle_wrench(..., derivatives=True)``: dF/dOmega_i and dM/dOmega_i
+        [N s/rad, N m s/rad] (column i: rotor i's speed), the control-effectiveness matrix
+        of a linearisation; else None.
     """
 
     force: np.ndarray
@@ -148,6 +152,8 @@ class VehicleWrench:
     rotor_moment: np.ndarray
     body_force: np.ndarray
     loads: tuple[RotorLoads, ...]
+    force_domega: np.ndarray | None = None
+    moment_domega: np.ndarray | None = None
 
 
 def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -194,7 +200,8 @@ def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
 
 def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_velocity, rotor_omega, *,
                    wind=None, rotor_acceleration=None, body_drag: BodyDrag | None = None, air: Air | None = None,
-                   discretization: Discretization = DEFAULT_DISCRETIZATION, on_failure: str = "raise") -> VehicleWrench:
+                   discretization: Discretization = DEFAULT_DISCRETIZATION, on_failure: str = "raise",
+                   derivatives: bool = False) -> VehicleWrench:
     """Body force and moment of a multirotor from its motion and rotor speeds (module docstring).
 
     Parameters
@@ -221,6 +228,14 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     discretization : Discretization
     on_failure : {"raise", "flag"}
         As :func:`propmap.rotor_loads`.
+    derivatives : bool
+        Also dF/dOmega_i and dM/dOmega_i (``VehicleWrench.force_domega``,
+        ``moment_domega``): each rotor's load derivatives by the implicit function theorem
+        (``rotor_loads(..., derivatives=("omega",))``; docs/solver.md) carried through the
+        vector sums, the gyroscopic moment and the airframe's slipstream (its wash moves
+        with the rotors' induced velocity). Not with ``rotor_interference`` (the wakes
+        couple the rotors' speeds) nor with the parameter sets ``rotor_loads`` cannot
+        differentiate (a linear inflow, flapping); Omega_i >= 0.1 rad/s.
 
     Returns
     -------
@@ -232,7 +247,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     ValueError
         An input that is not numbers, of the wrong shape, non-finite, samples counts that
         do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
-        :func:`propmap.rotor_loads` (naming the input).
+        :func:`propmap.rotor_loads` (naming the input); ``derivatives`` with rotor
+        interference or where :func:`propmap.rotor_loads` refuses them.
     SolverError
         As :func:`propmap.rotor_loads`.
     """
@@ -256,7 +272,10 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, _ = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
-    solve = dict(air=air, discretization=discretization, on_failure=on_failure)
+    if derivatives and kappa > 0 and n_rot > 1:
+        raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
+                         "their speeds); set the vehicle's rotor_interference to 0")
+    solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=bool(derivatives))
     rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
@@ -277,15 +296,47 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
             rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * rot.axis
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
+    wash = None
     if body is not None and body.active:
         wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
         body_force = body_drag_force(body, v - wind_a, wash, air.rho)
+    dF = dM = None
+    if derivatives:
+        dF, dM = _speed_derivatives(vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
-                         loads=tuple(loads))
+                         loads=tuple(loads), force_domega=dF, moment_domega=dM)
 
 
-def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure):
+def _speed_derivatives(vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rho):
+    """(dF/dOmega_i, dM/dOmega_i), shapes (N, 3, n_rot): the rotors' load derivatives through the
+    vector form (linear in the scalar loads), the arms, the gyroscopic moment -w x (s_i J_i a_i)
+    and the airframe drag's slipstream."""
+    N, n_rot = V_hub.shape[0], len(vehicle.rotors)
+    dF = np.empty((N, 3, n_rot))
+    dM = np.empty((N, 3, n_rot))
+    for i, rot in enumerate(vehicle.rotors):
+        ld = loads[i]
+        Vd, z, _, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
+        F, M = wrench_vectors(*(ld.derivative(q, "omega") for q in ("thrust", "drag", "torque", "rolling_moment")),
+                              Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0))
+        M = M + np.cross(pos[i], F)
+        if rot.inertia:
+            M = M - np.cross(w, (rot.spin * rot.inertia) * axes[i])
+        if wash is not None and body.wash_factor > 0:
+            u = v_air + body.wash_factor * wash
+            speed = np.linalg.norm(u, axis=1, keepdims=True)
+            du = (body.wash_factor / n_rot) * ld.derivative("v_i_mean", "omega")[:, None] * axes[i]
+            # d(-(rho/2) C |u| u) = -(rho/2) C (|u| du + u (u . du) / |u|)
+            proj = np.einsum("nk,nk->n", u, du)[:, None] / np.where(speed > 0, speed, 1.0)
+            F = F - 0.5 * rho * np.asarray(body.drag_area) * (speed * du + u * proj)
+        dF[:, :, i] = F
+        dM[:, :, i] = M
+    return dF, dM
+
+
+def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure,
+                    derivatives=False):
     """Each rotor's force and hub moment (body axes) and loads at hub velocities ``V_hub``
     (N, n_rot, 3): one solver call per distinct (propeller, parameter set), all its rotors'
     samples together."""
@@ -304,7 +355,7 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
         Vg = V_hub[:, idx, :]  # (N, k, 3)
         Vd, z, speed, beta = disk_frame(Vg, np.broadcast_to(axes[idx], Vg.shape))
         r = rotor_loads(rot.propeller, p, om[:, idx], speed, beta, air=air, discretization=discretization,
-                        on_failure=on_failure)
+                        on_failure=on_failure, derivatives=("omega",) if derivatives else False)
         F, M = wrench_vectors(r.thrust, r.drag, r.torque, r.rolling_moment, Vd, z, spins[idx],
                               side_force=r.side_force, pitching_moment=r.pitching_moment)
         rotor_force[:, idx, :] = F
@@ -321,6 +372,8 @@ def _column(r: RotorLoads, k: int) -> RotorLoads:
         a = getattr(r, f.name)
         if isinstance(a, np.ndarray) and a.ndim >= 2 and f.name != "r":
             kw[f.name] = a[:, k]
+    if r.jacobian is not None:
+        kw["jacobian"] = {key: a[:, k] for key, a in r.jacobian.items()}
     return replace(r, **kw)
 
 
