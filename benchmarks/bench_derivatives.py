@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import json
 import os
-import platform
+import sys
 import time
 from pathlib import Path
 
@@ -35,17 +35,10 @@ N = 2000
 RUNS = 5
 
 
-def cpu_name() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
-
-
 def main() -> dict:
+    sys.path.insert(0, str(Path(__file__).parent))
+    from bench_solver import cpu_name
+
     prop = pm.load_propeller("apce_8x6")
     params = pm.generic_params()
     rng = np.random.default_rng(0)

@@ -71,7 +71,10 @@ def in_process(params, disc, runs=3):
 def main() -> None:
     if not LOGS.is_dir():
         sys.exit(f"needs {LOGS}")
-    out = {"cpu": _cpu(), "cores": os.cpu_count(), "load_average": os.getloadavg()}
+    sys.path.insert(0, str(Path(__file__).parent))
+    from bench_solver import cpu_name
+
+    out = {"cpu": cpu_name(), "cores": os.cpu_count(), "load_average": os.getloadavg()}
     with tempfile.TemporaryDirectory() as tmp:
         out["wrench_cli"] = wall([str(BIN / "propmap"), "wrench", str(LOGS / SEGMENT), "--vehicle", str(VEHICLE),
                                   "--out", str(Path(tmp) / "p.csv")])
@@ -96,16 +99,6 @@ def main() -> None:
     with atomic_write(path) as fh:
         json.dump(out, fh, indent=2)
     print(json.dumps(out, indent=2))
-
-
-def _cpu() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return "unknown"
 
 
 if __name__ == "__main__":
