@@ -147,3 +147,22 @@ def test_flight_errors_pool_as_neurobem_table_ii():
                       reference_moment=None, rate_hz=1.0)
     e = flight_errors(np.array([[3.0, 0, 0], [3.0, 0, 0]]), s)
     assert e["Fx"] == 3.0 and e["F"] == pytest.approx(math.sqrt(3.0))
+
+
+def test_wrench_applies_a_params_files_rotor_interference(tmp_path, capsys, shared_data):
+    """A parameter file's [body] rotor_interference drives `propmap wrench`: the rotors' wakes
+    change the predicted moments (rear rotors in the front ones' wakes), not the file's absence."""
+    from propmap.io.params_file import BodyTable, write_params
+
+    log = str(shared_data / "neurobem_flights" / SEGMENTS[1])
+    csv = {}
+    for k in (None, 1.0):
+        p = tmp_path / f"p{k}.toml"
+        write_params(p, pm.generic_params(), body=BodyTable(BodyDrag((0.02, 0.02, 0.0), 1.2), None, k))
+        assert main(["wrench", log, "--vehicle", str(VEHICLE), "--params", str(p), "--out",
+                     str(tmp_path / f"w{k}.csv")]) == 0
+        csv[k] = np.loadtxt(tmp_path / f"w{k}.csv", delimiter=",", skiprows=1)
+    capsys.readouterr()
+    dM = np.abs(csv[1.0][:, 4:7] - csv[None][:, 4:7]).max(axis=0)
+    assert dM[1] > 1e-3  # pitch: the front-rear wake interaction of forward flight
+    np.testing.assert_array_equal(csv[1.0][:, 7:], csv[None][:, 7:])  # the measured columns are the log's
