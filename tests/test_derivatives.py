@@ -116,7 +116,7 @@ def test_derivative_errors(prop):
     r = pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=True)
     with pytest.raises(ValueError, match="quantity must be one of thrust, drag"):
         r.derivative("power", "omega")
-    with pytest.raises(ValueError, match="unknown input 'rpm'"):
+    with pytest.raises(ValueError, match="unknown input or parameter 'rpm'"):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives=["rpm"])
     with pytest.raises(ValueError, match="derivatives must be True, False or a sequence"):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
@@ -174,3 +174,43 @@ def test_vehicle_rotor_speed_derivatives():
     assert pm.vehicle_wrench(veh, g, v, w, om, discretization=DISC).force_domega is None
     with pytest.raises(ValueError, match="not implemented with rotor_interference"):
         pm.vehicle_wrench(replace(veh, rotor_interference=1.0), g, v, w, om, derivatives=True)
+
+
+@pytest.mark.parametrize("model", ["generic", "paper"])
+def test_section_parameter_derivatives(prop, model):
+    """d(T, Q, D)/d(section parameter) against differences of the solver with the parameter
+    moved (the pk and cam constants of the element and the annulus), 1e-5 of the loads per
+    unit of max(|p|, 0.01); node-changing parameters refused."""
+    g = pm.generic_params() if model == "generic" else pm.preset("gill2017-apc")
+    names = (("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re", "M")
+             if model == "generic" else ("cl1", "cl2", "cd", "alpha0"))
+    om, V, b = np.array([600.0, 900.0, 1200.0]), np.array([0.0, 8.0, 15.0]), np.radians([0.0, 60.0, 20.0])
+    r = pm.rotor_loads(prop, g, om, V, b, discretization=DISC, derivatives=names)
+    for n in names:
+        x = getattr(g, n)
+        h = 1e-4 * max(abs(x), 0.01)
+        a = pm.rotor_loads(prop, g.replace(**{n: x + h}), om, V, b, discretization=DISC)
+        c = pm.rotor_loads(prop, g.replace(**{n: x - h}), om, V, b, discretization=DISC)
+        for q in ("thrust", "torque", "drag"):
+            scale = np.abs(r.thrust if q != "torque" else r.torque) / max(abs(x), 0.01)
+            err = np.abs(r.derivative(q, n) - (getattr(a, q) - getattr(c, q)) / (2 * h)) / scale
+            assert err.max() < 1e-5, (n, q)
+    with pytest.raises(ValueError, match="re_ref are not supported: it changes the blade's nodes"):
+        pm.rotor_loads(prop, pm.generic_params(), 800.0, 0.0, 0.0, derivatives=("re_ref",))
+    with pytest.raises(ValueError, match="unknown input or parameter 'nonsense'"):
+        pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, derivatives=("nonsense",))
+
+
+def test_loads_fit_with_the_implicit_jacobian_reaches_the_same_optimum(prop):
+    """fit_loads on UIUC apce_8x6 (Brandt & Selig): the implicit Jacobian (default) and
+    differences of the solver reach the same parameters (1e-5 relative) with far fewer
+    solves; FitOptions refuses an unknown Jacobian."""
+    from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+
+    data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+    a = fit_loads(data, prop, options=FitOptions(jacobian="implicit", discretization=DISC))
+    b = fit_loads(data, prop, options=FitOptions(jacobian="differences", discretization=DISC))
+    np.testing.assert_allclose(a.x, b.x, rtol=1e-5, atol=1e-7)
+    assert a.nfev < b.nfev / 4
+    with pytest.raises(ValueError, match="jacobian must be 'implicit' or 'differences'"):
+        FitOptions(jacobian="exact")

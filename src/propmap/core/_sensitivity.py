@@ -19,6 +19,11 @@ element passes per annulus and the inflow's two more (the solve costs about 8 re
 evaluations and one loads pass; benchmarks/README.md has the measured ratio, 2.7x the
 loads alone for the three inputs).
 
+A section parameter enters through the element's constants (pk) and the annulus'
+Reynolds constants (cam) only; its partial derivatives are the differences of the residual
+and loads between the constants at its two values (central, or one-sided at a bound of its
+range), computed by the caller.
+
 The residual and the loads are the solver's own (_kernel._residual and annulus_loads, with
 the loss factor and the cambered section's Reynolds constants recomputed at each perturbed
 input): uniform inflow only, every azimuth node of the half circle where V sin beta is
@@ -102,16 +107,19 @@ def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
+def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
+           pkp, pkm, camp, camm, hpar, out):
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
+    n_par = hpar.shape[0]
+    n_all = n_in + n_par
     if not ok[i]:
         for q in range(5):
-            for p in range(n_in):
+            for p in range(n_all):
                 out[q, p, i] = np.nan
         return
     for q in range(5):
-        for p in range(n_in):
+        for p in range(n_all):
             out[q, p, i] = 0.0
     wy = 0.0  # the mean inflow's weights (as _solve_batch: annulus area)
     for j in range(nr):
@@ -218,19 +226,45 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
             for q in range(4):
                 out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
             out[4, p, i] += w[j] * y[j] * dv / wy
+        for k in range(n_par):  # section parameters: the element's constants pk and the annulus' cam at +-
+            s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camp[k])
+            s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camm[k])
+            gp, t1, d1, q1, r1 = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], mfac[j],
+                                          ct[j], ch[j], sinpsi, naz, model, pkp[k], emp)
+            gm, t2, d2, q2, r2 = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], mfac[j],
+                                          ct[j], ch[j], sinpsi, naz, model, pkm[k], emp)
+            k2 = 1.0 / hpar[k]
+            dv = -((gp - gm) * k2) / Gv
+            dL[0] = (t1 - t2) * k2
+            dL[1] = (d1 - d2) * k2
+            dL[2] = (q1 - q2) * k2
+            dL[3] = (r1 - r2) * k2
+            if naz == 1:
+                dL[1] = 0.0
+                dL[3] = 0.0
+            p = n_in + k
+            for q in range(4):
+                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
+            out[4, p, i] += w[j] * y[j] * dv / wy
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out):
+def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
+                  pkp, pkm, camp, camm, hpar, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
     (V sin beta, V cos beta), ``th`` the blade angles without the per-point collective
     ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
-    every annulus converged (the others get NaN); ``n_in`` 3 or 4 (with the collective).
-    ``out`` shape (5, n_in, n). Each derivative is a directional one in (Omega, V sin
+    every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
+    the collective).
+    Section parameters: ``pkp``, ``pkm`` shape (n_par, N_PK) and ``camp``, ``camm`` shape
+    (n_par, 8), the element and annulus constants at each parameter's upper and lower value,
+    ``hpar`` shape (n_par,) the distance between them (n_par may be 0). ``out`` shape
+    (5, n_in + n_par, n). Each derivative is a directional one in (Omega, V sin
     beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
     incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
-        _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in, out)
+        _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
+               pkp, pkm, camp, camm, hpar, out)

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import _kernel
 from . import _physics as ph
-from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
+from .airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
 from .states import STATES, _classify
@@ -722,7 +722,7 @@ def rotor_loads(
     jac = None
     if wrt:
         jac = {k: s(a) for k, a in _jacobian(wrt, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam,
-                                                 empirical).items()}
+                                                 empirical, propeller, params, air, discretization).items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
@@ -739,19 +739,23 @@ def rotor_loads(
 
 
 def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
-    """The inputs ``rotor_loads(derivatives=...)`` asks for, checked (() for none)."""
+    """The inputs and section parameters ``rotor_loads(derivatives=...)`` asks for, checked
+    (() for none)."""
     if derivatives is False or derivatives is None:
         return ()
     if derivatives is True:
         wrt = DERIVATIVE_INPUTS[:3]
     else:
         if isinstance(derivatives, str) or not hasattr(derivatives, "__iter__"):
-            raise ValueError(f"derivatives must be True, False or a sequence of input names "
-                             f"({', '.join(DERIVATIVE_INPUTS)}), got {derivatives!r:.60}")
+            raise ValueError(f"derivatives must be True, False or a sequence of input or parameter names "
+                             f"({', '.join(DERIVATIVE_INPUTS)}, or a field of the parameter set), "
+                             f"got {derivatives!r:.60}")
         wrt = tuple(dict.fromkeys(derivatives))
-        bad = [w for w in wrt if w not in DERIVATIVE_INPUTS]
+        own = {f.name for f in fields(params)} - set(RECORD_META)
+        bad = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in own]
         if bad:
-            raise ValueError(f"derivatives: unknown input {bad[0]!r:.60}; valid: {', '.join(DERIVATIVE_INPUTS)}")
+            raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
+                             f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
     if params.inflow != "uniform" or params.flap_compliance > 0:
         raise ValueError("derivatives are implemented for the uniform inflow and rigid blades (the paper's rotor); "
                          f"this set has inflow={params.inflow!r}, flap_compliance={params.flap_compliance:g}")
@@ -760,14 +764,66 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
     return wrt
 
 
-def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical) -> dict:
-    """{(load, input): derivative} at every point (flat arrays), from the kernel
+#: relative step of a section parameter's difference (of max(|value|, PARAM_FLOOR))
+PARAM_STEP = 1e-5
+PARAM_FLOOR = 0.01
+
+
+def _parameter_constants(names, propeller, params, air, discretization, nd):
+    """(pk+, pk-, cam+, cam-, span) of each section parameter in ``names``: the element and
+    annulus constants at the parameter's value +- its step (one-sided where the other side
+    leaves the parameter's range), the distance between the two values.
+
+    Raises
+    ------
+    ValueError
+        A parameter that is not a number, or one that changes the blade's nodes (the
+        Reynolds reference, the Blasius factor, the loss switches; ``collective`` is the
+        input of that name) rather than the section's constants.
+    """
+    n = len(names)
+    pkp, pkm = np.empty((n, ph.N_PK)), np.empty((n, ph.N_PK))
+    camp, camm = np.empty((n, 8)), np.empty((n, 8))
+    span = np.empty(n)
+    for k, name in enumerate(names):
+        x = getattr(params, name)
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")
+        h = PARAM_STEP * max(abs(float(x)), PARAM_FLOOR)
+        sides = []
+        for step in (h, -h):
+            try:
+                sides.append((float(x) + step, params.replace(**{name: float(x) + step})))
+            except ValueError:  # beyond the parameter's range: one-sided
+                sides.append((float(x), params))
+        (xa, pa), (xb, pb) = sides
+        if xa == xb:
+            raise ValueError(f"derivatives: {name} = {x!r} admits no step within its range")
+        for q in (pa, pb):
+            nq = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, q)
+            if not all(np.array_equal(getattr(nq, f), getattr(nd, f)) for f in ("theta", "sc", "ct", "ch", "cfac")):
+                raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
+                                 "not the section's constants (for the blade angle, use 'collective')")
+        pkp[k], pkm[k] = _model_constants(pa)[1], _model_constants(pb)[1]
+        camp[k], camm[k] = _cambered_args(pa, air), _cambered_args(pb, air)
+        span[k] = xa - xb
+    return pkp, pkm, camp, camm, span
+
+
+def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, propeller, params, air,
+              discretization) -> dict:
+    """{(load, input or parameter): derivative} at every point (flat arrays), from the kernel
     (core/_sensitivity.py)."""
     from . import _sensitivity
 
-    n_in = 4 if "collective" in wrt else 3
-    raw = np.empty((len(DERIVATIVE_LOADS), n_in, om.size))
+    inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
+    names = [w for w in wrt if w not in DERIVATIVE_INPUTS]
+    n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
+    pkp, pkm, camp, camm, span = _parameter_constants(names, propeller, params, air, discretization, nd)
+    raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
-                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, raw)
-    return {(load, w): raw[q, DERIVATIVE_INPUTS.index(w)] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pkp, pkm, camp, camm, span,
+                               raw)
+    col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
+    return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}

@@ -187,6 +187,12 @@ class FitOptions:
     progress : bool
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
+    jacobian : {"implicit", "differences"}
+        The residual Jacobian of a loads fit: ``"implicit"`` (default) the model's implicit
+        derivatives (``rotor_loads(derivatives=names)``; docs/solver.md), where it can give
+        them for every name (uniform inflow, rigid blades, no node-changing name such as
+        re_ref), else central differences of the solver, as ``"differences"`` always
+        (and as the level-flight and flight-log fits always).
     """
 
     x0: tuple = X0_PAPER
@@ -202,13 +208,19 @@ class FitOptions:
     seed: int = 0
     progress: bool = False
     discretization: Discretization = DEFAULT_DISCRETIZATION
+    jacobian: str = "implicit"
+
+    def __post_init__(self) -> None:
+        if self.jacobian not in ("implicit", "differences"):
+            raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")
 
 
 @dataclass(frozen=True)
 class Identifiability:
     """Local identifiability at the optimum, from the residual Jacobian J.
 
-    J is a central-difference Jacobian at the optimum. Covariance s^2 (J^T J)^-1 (from the
+    J is the residual Jacobian at the optimum (a loads fit's implicit derivatives, else central
+    differences of the solver). Covariance s^2 (J^T J)^-1 (from the
     SVD of J, no cut-off) with s^2 = |r|^2 / (N - p); 95% intervals use Student's t with
     N - p degrees of freedom. A parameter is "poorly determined" when its std error
     exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
@@ -533,7 +545,12 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
         bar.update(1)
         return residual(x)
 
+    analytic = getattr(residual, "jacobian", None)
+
     def jac(x):
+        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
+            counter["n"] += 1
+            return analytic(np.array(x, float))
         return _jacobian(fun, np.array(x, float), lb, ub)
 
     def run(x_start, max_nfev):
@@ -713,7 +730,12 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         count["n"] += 1
         return exact(x)
 
+    analytic = getattr(smooth, "jacobian", None)
+
     def jac(x):
+        if analytic is not None:
+            count["n"] += 1
+            return analytic(np.array(x, float))
         count["n"] += 2 * len(x)
         return _jacobian(smooth, np.array(x, float), lb, ub)
 
@@ -732,7 +754,7 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
                                     "initial_simplex": simplex})
     x = np.clip(nm.x * scale, lb, ub) if nm.fun <= r2.cost else r2.x
     fun = exact(x)
-    J = _jacobian(smooth, x, lb, ub)
+    J = analytic(x) if analytic is not None else _jacobian(smooth, x, lb, ub)
     stopped = nm.nfev >= max_fev and nm.fun < r2.cost
     if stopped:
         # with noisy data Nelder-Mead's 1e-12 tolerance is not reached in max_fev evaluations;
@@ -933,6 +955,10 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
+#: section fields rotor_loads cannot differentiate (they change the blade's nodes)
+NOT_DIFFERENTIABLE = ("re_ref", "cp_blasius")
+
+
 def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model).
 
@@ -954,10 +980,19 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     mu = np.array([getattr(base, names[k]) for k in sel])
     weight = float(pop["sigma_data"]) * scale
 
+    E = np.zeros((len(sel), len(names)))
+    E[np.arange(len(sel)), sel] = 1.0
+    prior_jac = weight * (Linv @ E)  # the prior rows are linear in x
+
     def make(opts):
+        data = make_residual(opts)
+
         def residual(x, opts=opts):
             prior_rows = weight * (Linv @ (np.asarray(x)[sel] - mu))
-            return np.concatenate([make_residual(opts)(x, opts), prior_rows])
+            return np.concatenate([data(x, opts), prior_rows])
+
+        if hasattr(data, "jacobian"):
+            residual.jacobian = lambda x: np.vstack([data.jacobian(x), prior_jac])
         return residual
 
     info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),
@@ -966,19 +1001,47 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
 
 
 def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weight: float = 1.0):
-    """x -> stacked (model - measured) coefficient errors / RMS(measured coefficient), times ``weight``."""
+    """x -> stacked (model - measured) coefficient errors / RMS(measured coefficient), times ``weight``.
+
+    The residual carries its Jacobian as ``residual.jacobian(x)`` where the model can
+    differentiate every name (``rotor_loads(derivatives=names)``, the implicit function
+    theorem: core/_sensitivity.py); the fit then uses it instead of differencing the solver.
+    """
     norm, scales = _load_norms(data, propeller, keys, air)
 
     def make(opts):
-        def residual(x, opts=opts):
+        def loads(x, derivatives=False):
             p = _params_from(x, names, base, opts)
-            r = rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
-                            discretization=opts.discretization, collective=data.collective)
+            return rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
+                               discretization=opts.discretization, collective=data.collective,
+                               derivatives=names if derivatives else False)
+
+        def residual(x, opts=opts):
+            r = loads(x)
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
             return weight * np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
+
+        def jacobian(x):
+            r = loads(x, derivatives=True)
+            return weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names]) / norm[k][:, None]
+                                       / scales[k] for k in keys])
+
+        if opts.jacobian == "implicit" and _differentiable(names, base):
+            residual.jacobian = jacobian
         return residual
 
     return make, scales
+
+
+def _differentiable(names, params: SectionParams) -> bool:
+    """Whether ``rotor_loads`` gives implicit derivatives of ``params`` with respect to every
+    name (the uniform inflow and rigid blades; names that are inputs or the section's
+    numeric constants, not the node-changing re_ref, cp_blasius or switches)."""
+    if params.inflow != "uniform" or params.flap_compliance > 0:
+        return False
+    own = {f.name for f in fields(params)}
+    return all(n == "collective" or (n in own and n not in NOT_DIFFERENTIABLE
+                                      and isinstance(getattr(params, n), float)) for n in names)
 
 
 def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, air: Air | None = None,
