@@ -1139,7 +1139,13 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
 
     def make_residual(opts):
         parts = [m(opts) for m in makers]
-        return lambda x, opts=opts: np.concatenate([f(x) for f in parts])
+
+        def residual(x, opts=opts):
+            return np.concatenate([f(x) for f in parts])
+
+        if all(hasattr(f, "jacobian") for f in parts):  # each propeller's implicit Jacobian, stacked
+            residual.jacobian = lambda x: np.vstack([f.jacobian(x) for f in parts])
+        return residual
 
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                     "fit loads (joint)", _x0(names, options, base))
