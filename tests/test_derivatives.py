@@ -214,3 +214,52 @@ def test_loads_fit_with_the_implicit_jacobian_reaches_the_same_optimum(prop):
     assert a.nfev < b.nfev / 4
     with pytest.raises(ValueError, match="jacobian must be 'implicit' or 'differences'"):
         FitOptions(jacobian="exact")
+
+
+def test_vehicle_parameter_and_airframe_derivatives():
+    """vehicle_wrench's derivatives with respect to section parameters, the collective and the
+    airframe terms against central differences (forces and moments, 1e-5 of the largest
+    entry); a drag area's derivative holds at zero area too."""
+    from dataclasses import replace
+    from pathlib import Path
+
+    from propmap.core.body import BodyDrag
+
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    g = pm.generic_params()
+    v = np.array([[6.0, -1.0, -0.5], [0.5, 0.0, 1.0]])
+    w = np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [1000.0] * 4])
+    body = BodyDrag((0.02, 0.0, 0.01), 1.2)
+    names = ("cl_alpha", "alpha_L0_re", "collective", "drag_area_x", "drag_area_y", "wash_factor")
+    r = pm.vehicle_wrench(veh, g, v, w, om, body_drag=body, derivatives=names, discretization=DISC)
+    for n in names:
+        if n.startswith("drag_area") or n == "wash_factor":
+            x = body.drag_area["xyz".index(n[-1])] if n.startswith("drag_area") else body.wash_factor
+            h = 1e-4
+
+            def at(val, n=n):
+                if n == "wash_factor":
+                    return BodyDrag(body.drag_area, val), g
+                a = list(body.drag_area)
+                a["xyz".index(n[-1])] = val
+                return BodyDrag(tuple(a), body.wash_factor), g
+        else:
+            x = getattr(g, n)
+            h = 1e-4 * max(abs(x), 0.01)
+
+            def at(val, n=n):
+                return body, g.replace(**{n: val})
+        lo = 0.0 if n.startswith("drag_area") else h  # the force is linear in a drag area (one may be 0)
+        (b1, g1), (b2, g2) = at(x + h), at(x - lo)
+        f1 = pm.vehicle_wrench(veh, g1, v, w, om, body_drag=b1, discretization=DISC)
+        f2 = pm.vehicle_wrench(veh, g2, v, w, om, body_drag=b2, discretization=DISC)
+        for key, a, c in (("force", f1.force, f2.force), ("moment", f1.moment, f2.moment)):
+            fd = (a - c) / (h + lo)
+            np.testing.assert_allclose(r.jacobian[(key, n)], fd, atol=1e-5 * max(np.abs(fd).max(), 1e-9), err_msg=n)
+    assert np.abs(r.jacobian[("force", "drag_area_y")][:, 1]).max() > 0  # at zero area: the drag it would add
+    with pytest.raises(ValueError, match="is a rotor's input"):
+        pm.vehicle_wrench(veh, g, v, w, om, derivatives=("airspeed",))
+    own = replace(veh, rotors=(replace(veh.rotors[0], params=g),) + veh.rotors[1:])
+    with pytest.raises(ValueError, match="has its own"):
+        pm.vehicle_wrench(own, g, v, w, om, derivatives=("cl_alpha",))

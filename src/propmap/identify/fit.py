@@ -191,8 +191,9 @@ class FitOptions:
         The residual Jacobian of a loads fit: ``"implicit"`` (default) the model's implicit
         derivatives (``rotor_loads(derivatives=names)``; docs/solver.md), where it can give
         them for every name (uniform inflow, rigid blades, no node-changing name such as
-        re_ref), else central differences of the solver, as ``"differences"`` always
-        (and as the level-flight and flight-log fits always).
+        re_ref), else central differences of the solver, as ``"differences"`` always.
+        The flight-log fit likewise (``vehicle_wrench``'s derivatives; the centre of mass
+        by differences); the level-flight fit always differences.
     """
 
     x0: tuple = X0_PAPER
@@ -955,8 +956,8 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
-#: section fields rotor_loads cannot differentiate (they change the blade's nodes)
-NOT_DIFFERENTIABLE = ("re_ref", "cp_blasius")
+#: section fields rotor_loads cannot differentiate (they change the blade's nodes; flapping is not differentiated)
+NOT_DIFFERENTIABLE = ("re_ref", "cp_blasius", "flap_compliance")
 
 
 def _with_prior(make_residual, names, base, options, scale: float = 1.0):

@@ -38,8 +38,8 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _finish, _fit_with_continuation,
-                  _params_from, _with_prior)
+from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _differentiable, _finish,
+                  _fit_with_continuation, _params_from, _with_prior)
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
            "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
@@ -228,8 +228,10 @@ def _lagged(log: FlightLog, tau: float):
 
 
 def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionParams, *, body: BodyDrag | None = None,
-                   air: Air | None = None, discretization: Discretization = FLIGHT_DISCRETIZATION) -> VehicleWrench:
-    """The vehicle model's wrench at every sample (:func:`propmap.vehicle.vehicle_wrench`, no wind).
+                   air: Air | None = None, discretization: Discretization = FLIGHT_DISCRETIZATION,
+                   derivatives=False) -> VehicleWrench:
+    """The vehicle model's wrench at every sample (:func:`propmap.vehicle.vehicle_wrench`, no wind;
+    ``derivatives`` as there).
 
     Raises
     ------
@@ -239,7 +241,7 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
     air = params.air if air is None else air
     return vehicle_wrench(vehicle, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
                           rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air,
-                          discretization=discretization)
+                          discretization=discretization, derivatives=derivatives)
 
 
 def shift_centre_of_mass(vehicle: Vehicle, cg) -> Vehicle:
@@ -357,6 +359,10 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         veh = shift_centre_of_mass(vehicle, [c0 if k is None else x[k] for k, c0 in zip(cg_idx, x0_cg)])
         return veh if k_int is None else replace(veh, rotor_interference=float(x[k_int]))
 
+    section = [n for n in names if n not in AIRFRAME_NAMES]
+    implicit = (options.jacobian == "implicit" and k_int is None and vehicle.rotor_interference == 0
+                and _differentiable(section, base) and not any(r.params is not None for r in vehicle.rotors))
+
     def make_residual(opts):
         def residual(x, opts=opts):
             p = _params_from(x, names, base, opts)
@@ -366,6 +372,32 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
             if moments:
                 r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
             return r
+
+        def jacobian(x):
+            """The residual's Jacobian: vehicle_wrench's implicit derivatives for the section and
+            airframe terms, central differences for the centre of mass (it moves the arms)."""
+            x = np.asarray(x, float)
+            analytic = [n for n in names if n not in CG_NAMES]
+            p = _params_from(x, names, base, opts)
+            w = predict_flight(samples, vehicle_at(x), p, body=_body_from(x, names, body0), air=air,
+                               discretization=discretization, derivatives=analytic)
+            cols = []
+            for k, n in enumerate(names):
+                if n in CG_NAMES:
+                    h = 1e-4 * max(abs(x[k]), 0.1)
+                    hi, lo = x.copy(), x.copy()
+                    hi[k] += h
+                    lo[k] -= h
+                    cols.append((residual(hi) - residual(lo)) / (2 * h))
+                    continue
+                c = w.jacobian[("force", n)].ravel()
+                if moments:
+                    c = np.concatenate([c, (w.jacobian[("moment", n)] / arm).ravel()])
+                cols.append(c)
+            return np.column_stack(cols)
+
+        if implicit:
+            residual.jacobian = jacobian
         return residual
 
     make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)

@@ -141,9 +141,12 @@ class VehicleWrench:
     loads : tuple of RotorLoads
         Each rotor's scalar loads and flags, shape (N,).
     force_domega, moment_domega : ndarray, shape (N, 3, n_rotors), or None
-        With ``vehicle_wrench(..., derivatives=True)``: dF/dOmega_i and dM/dOmega_i
-        [N s/rad, N m s/rad] (column i: rotor i's speed), the control-effectiveness matrix
-        of a linearisation; else None.
+        With ``vehicle_wrench(..., derivatives=True)`` (or "omega" among the names):
+        dF/dOmega_i and dM/dOmega_i [N s/rad, N m s/rad] (column i: rotor i's speed), the
+        control-effectiveness matrix of a linearisation; else None.
+    jacobian : dict or None
+        With parameter names among ``derivatives``: {("force", name): dF/dp, ("moment",
+        name): dM/dp}, each shape (N, 3); else None.
     """
 
     force: np.ndarray
@@ -154,6 +157,7 @@ class VehicleWrench:
     loads: tuple[RotorLoads, ...]
     force_domega: np.ndarray | None = None
     moment_domega: np.ndarray | None = None
+    jacobian: dict | None = None
 
 
 def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -201,7 +205,7 @@ def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
 def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_velocity, rotor_omega, *,
                    wind=None, rotor_acceleration=None, body_drag: BodyDrag | None = None, air: Air | None = None,
                    discretization: Discretization = DEFAULT_DISCRETIZATION, on_failure: str = "raise",
-                   derivatives: bool = False) -> VehicleWrench:
+                   derivatives=False) -> VehicleWrench:
     """Body force and moment of a multirotor from its motion and rotor speeds (module docstring).
 
     Parameters
@@ -228,14 +232,18 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     discretization : Discretization
     on_failure : {"raise", "flag"}
         As :func:`propmap.rotor_loads`.
-    derivatives : bool
-        Also dF/dOmega_i and dM/dOmega_i (``VehicleWrench.force_domega``,
-        ``moment_domega``): each rotor's load derivatives by the implicit function theorem
-        (``rotor_loads(..., derivatives=("omega",))``; docs/solver.md) carried through the
-        vector sums, the gyroscopic moment and the airframe's slipstream (its wash moves
-        with the rotors' induced velocity). Not with ``rotor_interference`` (the wakes
-        couple the rotors' speeds) nor with the parameter sets ``rotor_loads`` cannot
-        differentiate (a linear inflow, flapping); Omega_i >= 0.1 rad/s.
+    derivatives : bool or sequence of str
+        True (or "omega" among the names): dF/dOmega_i and dM/dOmega_i
+        (``VehicleWrench.force_domega``, ``moment_domega``). Other names: derivatives of F
+        and M with respect to a section parameter of ``params`` (as :func:`propmap.rotor_loads`
+        takes them, "collective" included) or an airframe term (``drag_area_x``,
+        ``drag_area_y``, ``drag_area_z``, ``wash_factor``), in ``VehicleWrench.jacobian``.
+        Each rotor's load derivatives come from the implicit function theorem (docs/solver.md)
+        and are carried through the vector sums, the arms, the gyroscopic moment and the
+        airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
+        ``rotor_interference`` (the wakes couple the rotors), nor for a section parameter
+        when a rotor has its own set, nor with the sets ``rotor_loads`` cannot differentiate
+        (a linear inflow, flapping); Omega_i >= 0.1 rad/s.
 
     Returns
     -------
@@ -272,10 +280,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, _ = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
-    if derivatives and kappa > 0 and n_rot > 1:
+    wrt = _vehicle_derivatives(derivatives, vehicle)
+    if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
-    solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=bool(derivatives))
+    rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES)
+    solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
     rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
@@ -300,43 +310,111 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     if body is not None and body.active:
         wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
         body_force = body_drag_force(body, v - wind_a, wash, air.rho)
-    dF = dM = None
-    if derivatives:
-        dF, dM = _speed_derivatives(vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
+    dF = dM = jac = None
+    if wrt:
+        dF, dM, jac = _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
-                         loads=tuple(loads), force_domega=dF, moment_domega=dM)
+                         loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
 
 
-def _speed_derivatives(vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rho):
-    """(dF/dOmega_i, dM/dOmega_i), shapes (N, 3, n_rot): the rotors' load derivatives through the
-    vector form (linear in the scalar loads), the arms, the gyroscopic moment -w x (s_i J_i a_i)
-    and the airframe drag's slipstream."""
+#: the airframe terms vehicle_wrench differentiates (core/body.py)
+BODY_DRAG_NAMES = ("drag_area_x", "drag_area_y", "drag_area_z", "wash_factor")
+
+
+def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
+    """The names ``vehicle_wrench(derivatives=...)`` asks for (() for none); the section
+    parameters' are checked by rotor_loads."""
+    if derivatives is False or derivatives is None:
+        return ()
+    if derivatives is True:
+        return ("omega",)
+    if isinstance(derivatives, str) or not hasattr(derivatives, "__iter__"):
+        raise ValueError(f"derivatives must be True, False or a sequence of names, got {derivatives!r:.60}")
+    wrt = tuple(dict.fromkeys(derivatives))
+    bad = [n for n in wrt if n in ("airspeed", "incidence")]
+    if bad:
+        raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', a section "
+                         "parameter or an airframe term")
+    if any(n not in ("omega", *BODY_DRAG_NAMES) for n in wrt) and any(r.params is not None for r in vehicle.rotors):
+        raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
+                         "(a rotor of this vehicle has its own)")
+    return wrt
+
+
+def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rho):
+    """(dF/dOmega_i, dM/dOmega_i) of shape (N, 3, n_rot) where "omega" is asked (else None), and
+    {("force" | "moment", name): shape (N, 3)} for the other names (else None): the rotors'
+    load derivatives through the vector form (linear in the scalar loads), the arms, the
+    gyroscopic moment -w x (s_i J_i a_i) and the airframe drag (core/body.py)."""
     N, n_rot = V_hub.shape[0], len(vehicle.rotors)
-    dF = np.empty((N, 3, n_rot))
-    dM = np.empty((N, 3, n_rot))
-    for i, rot in enumerate(vehicle.rotors):
-        ld = loads[i]
-        Vd, z, _, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
-        F, M = wrench_vectors(*(ld.derivative(q, "omega") for q in ("thrust", "drag", "torque", "rolling_moment")),
-                              Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0))
-        M = M + np.cross(pos[i], F)
-        if rot.inertia:
-            M = M - np.cross(w, (rot.spin * rot.inertia) * axes[i])
-        if wash is not None and body.wash_factor > 0:
-            u = v_air + body.wash_factor * wash
-            speed = np.linalg.norm(u, axis=1, keepdims=True)
-            du = (body.wash_factor / n_rot) * ld.derivative("v_i_mean", "omega")[:, None] * axes[i]
-            # d(-(rho/2) C |u| u) = -(rho/2) C (|u| du + u (u . du) / |u|)
+    frames = [disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))[:2] for i in range(n_rot)]
+    spins = [np.full(N, 1.0 if r.spin > 0 else -1.0) for r in vehicle.rotors]
+    if any(n in BODY_DRAG_NAMES for n in wrt):  # the drag's derivatives hold at zero drag areas too
+        body = body if body is not None else BodyDrag()
+        if wash is None:
+            wash = np.mean([loads[i].v_i_mean[:, None] * axes[i] for i in range(n_rot)], axis=0)
+    drag_active = wash is not None and body is not None
+    if drag_active:
+        u = v_air + body.wash_factor * wash
+        speed = np.linalg.norm(u, axis=1, keepdims=True)
+        area = np.asarray(body.drag_area)
+
+        def body_du(du):  # d(-(rho/2) C |u| u) = -(rho/2) C (|u| du + u (u . du) / |u|)
             proj = np.einsum("nk,nk->n", u, du)[:, None] / np.where(speed > 0, speed, 1.0)
-            F = F - 0.5 * rho * np.asarray(body.drag_area) * (speed * du + u * proj)
-        dF[:, :, i] = F
-        dM[:, :, i] = M
-    return dF, dM
+            return -0.5 * rho * area * (speed * du + u * proj)
+
+    def rotor_vectors(i, name):
+        ld = loads[i]
+        F, M = wrench_vectors(*(ld.derivative(q, name) for q in ("thrust", "drag", "torque", "rolling_moment")),
+                              *frames[i], spins[i])
+        return F, M + np.cross(pos[i], F)
+
+    dF = dM = jac = None
+    if "omega" in wrt:
+        dF = np.empty((N, 3, n_rot))
+        dM = np.empty((N, 3, n_rot))
+        for i, rot in enumerate(vehicle.rotors):
+            F, M = rotor_vectors(i, "omega")
+            if rot.inertia:
+                M = M - np.cross(w, (rot.spin * rot.inertia) * axes[i])
+            if drag_active and body.wash_factor > 0:
+                F = F + body_du((body.wash_factor / n_rot) * loads[i].derivative("v_i_mean", "omega")[:, None]
+                                * axes[i])
+            dF[:, :, i] = F
+            dM[:, :, i] = M
+    others = [n for n in wrt if n != "omega"]
+    if others:
+        jac = {}
+        for name in others:
+            if name in BODY_DRAG_NAMES:
+                M = np.zeros((N, 3))
+                if not drag_active:
+                    F = np.zeros((N, 3))
+                elif name == "wash_factor":
+                    F = body_du(wash)
+                else:
+                    k = BODY_DRAG_NAMES.index(name)
+                    F = np.zeros((N, 3))
+                    F[:, k] = -0.5 * rho * speed[:, 0] * u[:, k]
+            else:
+                F = np.zeros((N, 3))
+                M = np.zeros((N, 3))
+                dwash = np.zeros((N, 3))
+                for i in range(n_rot):
+                    Fi, Mi = rotor_vectors(i, name)
+                    F += Fi
+                    M += Mi
+                    dwash += loads[i].derivative("v_i_mean", name)[:, None] * axes[i] / n_rot
+                if drag_active and body.wash_factor > 0:
+                    F = F + body_du(body.wash_factor * dwash)
+            jac[("force", name)] = F
+            jac[("moment", name)] = M
+    return dF, dM, jac
 
 
 def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure,
-                    derivatives=False):
+                    derivatives=()):
     """Each rotor's force and hub moment (body axes) and loads at hub velocities ``V_hub``
     (N, n_rot, 3): one solver call per distinct (propeller, parameter set), all its rotors'
     samples together."""
@@ -355,7 +433,7 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
         Vg = V_hub[:, idx, :]  # (N, k, 3)
         Vd, z, speed, beta = disk_frame(Vg, np.broadcast_to(axes[idx], Vg.shape))
         r = rotor_loads(rot.propeller, p, om[:, idx], speed, beta, air=air, discretization=discretization,
-                        on_failure=on_failure, derivatives=("omega",) if derivatives else False)
+                        on_failure=on_failure, derivatives=derivatives or False)
         F, M = wrench_vectors(r.thrust, r.drag, r.torque, r.rolling_moment, Vd, z, spins[idx],
                               side_force=r.side_force, pitching_moment=r.pitching_moment)
         rotor_force[:, idx, :] = F
