@@ -77,10 +77,13 @@ def test_noisy_recovery_and_identifiability_report(quad, high_pitch):
     assert cl1 == pytest.approx(TRUE.cl1, rel=0.03)
     assert math.degrees(alpha0) == pytest.approx(20.6, abs=2.0)
     idf = r.identifiability
-    assert set(idf.poorly_determined) == {"cl2", "cd"}
+    # the implicit Jacobian (the local, smooth sensitivity): c_l2 and c_d poorly determined, and
+    # alpha_0 at about 12%; the former 1e-4 differences crossed a root-branch jump at the hover
+    # condition (columns 20-300x too large there) and reported alpha_0 to 0.9%
+    assert {"cl2", "cd"} <= set(idf.poorly_determined) and "cl1" not in idf.poorly_determined
     assert any("cl2 is poorly determined" in w for w in idf.warnings)
     rel = idf.std_error / np.abs(r.x)
-    assert rel[0] < 0.02 and rel[3] < 0.1
+    assert rel[0] < 0.02 and rel[3] < 0.2
     # the error of the well-determined c_l1 is consistent with its reported std error
     assert abs(cl1 - TRUE.cl1) < 3 * idf.std_error[0]
     assert idf.singular_values[0] / idf.singular_values[-1] > 100  # ill-conditioned, as docs/numerics.md

@@ -38,11 +38,16 @@ class RotorWrench:
         the pitching moment M_P (0 with the uniform inflow and rigid blades).
     loads : RotorLoads
         The scalar loads and flags behind them, shape S.
+    jacobian : dict or None
+        With ``rotor_wrench(..., derivatives=names)``: {("force", name): dF/dp, ("torque",
+        name): dtau/dp}, shape S + (3,), for each name (the rotation rate "omega", the
+        "collective" or a section parameter); else None.
     """
 
     force: np.ndarray
     torque: np.ndarray
     loads: RotorLoads
+    jacobian: dict | None = None
 
 
 def _spin_sign(spin) -> np.ndarray:
@@ -90,7 +95,7 @@ def _vectors(name: str, value) -> np.ndarray:
 
 def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, omega, spin="ccw", *,
                  air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION,
-                 on_failure: str = "raise") -> RotorWrench:
+                 on_failure: str = "raise", derivatives=()) -> RotorWrench:
     """Force and torque vectors of a rotor from its velocity, axis and rotation rate.
 
     Parameters
@@ -110,6 +115,12 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         +axis (counter-clockwise seen from the tip of the axis looking back at the disk).
     air, discretization, on_failure
         As for :func:`rotor_loads`.
+    derivatives : sequence of str
+        Names to differentiate the force and torque vectors with respect to: "omega", the
+        "collective" or section parameters (as :func:`rotor_loads` takes them; the loads'
+        derivatives by the implicit function theorem, carried through the vector form, which
+        is linear in them). Not the velocity vector: at V = 0 the model is not
+        differentiable in it (docs/solver.md, Derivatives).
 
     Returns
     -------
@@ -142,11 +153,22 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         shape = None  # rotor_loads names the argument
     if shape is not None:
         _check_spin(s, shape)
+    names = tuple(derivatives or ())
+    if isinstance(derivatives, str) or any(n in ("airspeed", "incidence") for n in names):
+        raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (the "
+                         f"velocity vector's derivatives are not given), got {derivatives!r:.60}")
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
-                        on_failure=on_failure)
+                        on_failure=on_failure, derivatives=names or False)
     force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s,
                                    side_force=loads.side_force, pitching_moment=loads.pitching_moment)
-    return RotorWrench(force=force, torque=torque, loads=loads)
+    jac = None
+    if names:
+        jac = {}
+        for n in names:
+            dF, dtau = wrench_vectors(*(loads.derivative(q, n) for q in ("thrust", "drag", "torque", "rolling_moment")),
+                                      V, z, s)
+            jac[("force", n)], jac[("torque", n)] = dF, dtau
+    return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
 
 
 def disk_frame(velocity, axis):

@@ -650,7 +650,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
 # ---------------------------------------------------------------- level flight (eqs 16-18)
 
 def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None,
-                        discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+                        discretization: Discretization = DEFAULT_DISCRETIZATION, derivatives=()) -> dict:
     """Rotor loads of every rotor at every condition and the net vertical force (eq 16).
 
     Uses the vector form (:func:`rotor_wrench`) on V_i = V_vehicle + omega x r_i; for rotor
@@ -660,7 +660,9 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     Returns
     -------
     dict with ``thrust``, ``drag``, ``torque`` (shape (N, n_rotors)) [N, N, N m],
-    ``vertical`` (shape (N,)) [N] and ``beta`` (shape (N, n_rotors)) [rad].
+    ``vertical`` (shape (N,)) [N] and ``beta`` (shape (N, n_rotors)) [rad]; with
+    ``derivatives`` (section parameters' names) also ``vertical_jacobian``, shape (N, len(names)):
+    d vertical / d p by the implicit function theorem (rotor_wrench's derivatives).
 
     Raises
     ------
@@ -674,6 +676,8 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     D = np.empty_like(T)
     Q = np.empty_like(T)
     vertical = np.zeros(data.n)
+    names = tuple(derivatives or ())
+    dvert = np.zeros((data.n, len(names)))
     groups: dict[int, list[int]] = {}
     for i, rotor in enumerate(vehicle.rotors):
         groups.setdefault(id(rotor.propeller), []).append(i)
@@ -683,12 +687,17 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
         spins = np.array([vehicle.rotors[i].spin for i in idx])
         w = rotor_wrench(prop, params, vel[:, idx, :], np.broadcast_to(axes, (data.n, len(idx), 3)),
                          data.omega[:, idx], np.broadcast_to(spins, (data.n, len(idx))), air=air,
-                         discretization=discretization)
+                         discretization=discretization, derivatives=names)
         T[:, idx], D[:, idx], Q[:, idx] = w.loads.thrust, w.loads.drag, w.loads.torque
         vertical += np.einsum("nj,nkj->n", R[:, 2, :], w.force)
+        for c, n in enumerate(names):
+            dvert[:, c] += np.einsum("nj,nkj->n", R[:, 2, :], w.jacobian[("force", n)])
     beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, np.stack([r.axis for r in vehicle.rotors]))
                              / np.maximum(np.linalg.norm(vel, axis=-1), 1e-300), -1, 1))
-    return {"thrust": T, "drag": D, "torque": Q, "vertical": vertical, "beta": beta}
+    out = {"thrust": T, "drag": D, "torque": Q, "vertical": vertical, "beta": beta}
+    if names:
+        out["vertical_jacobian"] = dvert
+    return out
 
 
 def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -> np.ndarray:
@@ -853,6 +862,29 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             if opts.body_lift:
                 r = r + body_lift(x[-3:], data, vehicle, p.M, air)
             return r
+
+        def jacobian(x):
+            """The rotors' columns from the implicit derivatives; the body-lift terms (a closed
+            form, no solve) by central differences."""
+            x = np.asarray(x, float)
+            p = _params_from(x, names, base, opts)
+            section = names[:-3] if opts.body_lift else names
+            f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
+                                    derivatives=section)
+            cols = [f["vertical_jacobian"]]
+            if opts.body_lift:
+                for k in range(3):
+                    h = 1e-6 * max(abs(x[-3 + k]), 0.1)
+                    hi, lo = x[-3:].copy(), x[-3:].copy()
+                    hi[k] += h
+                    lo[k] -= h
+                    cols.append(((body_lift(hi, data, vehicle, p.M, air) - body_lift(lo, data, vehicle, p.M, air))
+                                 / (2 * h))[:, None])
+            return np.hstack(cols)
+
+        section_names = names[:-3] if opts.body_lift else names
+        if opts.jacobian == "implicit" and _differentiable(section_names, base):
+            residual.jacobian = jacobian
         return residual
 
     make_data = make_residual
