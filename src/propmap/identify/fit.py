@@ -188,12 +188,12 @@ class FitOptions:
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
     jacobian : {"implicit", "differences"}
-        The residual Jacobian of a loads fit: ``"implicit"`` (default) the model's implicit
-        derivatives (``rotor_loads(derivatives=names)``; docs/solver.md), where it can give
-        them for every name (uniform inflow, rigid blades, no node-changing name such as
-        re_ref), else central differences of the solver, as ``"differences"`` always.
-        The flight-log fit likewise (``vehicle_wrench``'s derivatives; the centre of mass
-        by differences); the level-flight fit always differences.
+        The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
+        (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
+        docs/solver.md) where it can give them for every section name (uniform inflow, rigid
+        blades, no node-changing name such as re_ref), the terms outside the rotor model
+        (the centre of mass, the body-lift closed form) by central differences; else, and
+        always with ``"differences"``, central differences of the solver.
     """
 
     x0: tuple = X0_PAPER
@@ -220,8 +220,9 @@ class FitOptions:
 class Identifiability:
     """Local identifiability at the optimum, from the residual Jacobian J.
 
-    J is the residual Jacobian at the optimum (a loads fit's implicit derivatives, else central
-    differences of the solver). Covariance s^2 (J^T J)^-1 (from the
+    J is the residual Jacobian at the optimum (the model's implicit derivatives where it
+    gives them, else central differences of the solver: FitOptions.jacobian). Covariance
+    s^2 (J^T J)^-1 (from the
     SVD of J, no cut-off) with s^2 = |r|^2 / (N - p); 95% intervals use Student's t with
     N - p degrees of freedom. A parameter is "poorly determined" when its std error
     exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
