@@ -10,7 +10,8 @@ to 12,000 rpm, 0 to 20 m/s, incidence 0 to 180 deg, a fifth of them axial), each
 the median of 5 alternated runs:
 
 * ``rotor_loads`` alone (the baseline);
-* with ``derivatives=True`` (omega, airspeed, incidence) and with the collective too;
+* with ``derivatives=True`` (omega, airspeed, incidence), with the collective too, and with
+  the 8 section parameters of the cambered fit (issue 20's target: <= 3x);
 * the central differences of the whole solver for the same three inputs (6 more solves).
 
 Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
@@ -33,6 +34,8 @@ from propmap.io.atomic import atomic_write
 ROOT = Path(__file__).resolve().parents[1]
 N = 2000
 RUNS = 5
+#: the cambered fit's parameters with Reynolds terms (identify.fit.CAMBERED_FIT_RE)
+PARAMS = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re")
 
 
 def main() -> dict:
@@ -51,6 +54,7 @@ def main() -> dict:
         "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=True),
         "loads + derivatives (4 inputs)": lambda: pm.rotor_loads(
             prop, params, om, V, b, derivatives=("omega", "airspeed", "incidence", "collective")),
+        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=PARAMS),
         "central differences of the solver (3 inputs)": lambda: [
             pm.rotor_loads(prop, params, *args) for args in (
                 (om, V, b), (om * (1 + 1e-4), V, b), (om * (1 - 1e-4), V, b), (om, V + 1e-3, b),

@@ -60,26 +60,15 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: many call sites (compile time)
-def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk, emp):
-    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc), blade
-    angle th (its sine and cosine) and section constants s0..s3: the solver's residual
-    (_kernel._residual, with its loss factor) and loads (_kernel.annulus_loads)."""
-    floss = 1.0
-    if ct >= 0.0 or ch >= 0.0:
-        if emp and Vc < 0.0:
-            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
-        else:
-            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
-        if ct >= 0.0:
-            floss = _prandtl(ct, inv_sin)
-        if ch >= 0.0:
-            floss *= _prandtl(ch, inv_sin)
+def _blade_sums(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk):
+    """(dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc), blade
+    angle th (its sine and cosine) and section constants s0..s3: _kernel.annulus_loads with the
+    uniform inflow, one loop per section model (straight-line SIMD code, as _kernel._residual)."""
     aT = 0.0
     aD = 0.0
     aQ = 0.0
     aR = 0.0
     UP = Vc + v
-    # one loop per section model, so that each compiles to straight-line SIMD code (as _kernel._residual)
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
@@ -97,18 +86,35 @@ def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch,
             aD += qH * sinpsi[k]
             aQ += qH
             aR += qT * sinpsi[k]
-    t = cfac * aT / naz
+    return cfac * aT / naz, cfac * aD / naz, y * cfac * aQ / naz, y * cfac * aR / naz
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
+def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk, emp):
+    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus: :func:`_blade_sums` and the solver's
+    residual G = dT/dy - F dT_BEMT/dy (_kernel._residual, with its loss factor F)."""
+    t, d, q, r = _blade_sums(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk)
+    floss = 1.0
+    if ct >= 0.0 or ch >= 0.0:
+        if emp and Vc < 0.0:
+            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
+        else:
+            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
+        if ct >= 0.0:
+            floss = _prandtl(ct, inv_sin)
+        if ch >= 0.0:
+            floss *= _prandtl(ch, inv_sin)
     if emp:
         w_ax = _axial_mass_flow(v, Vc, Vs)
         mom = mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
     else:
         mom = _momentum_thrust(v, mfac, Vs, Vc)
-    return t - floss * mom, t, cfac * aD / naz, y * cfac * aQ / naz, y * cfac * aR / naz
+    return t - floss * mom, t, d, q, r
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-           pkp, pkm, camp, camm, hpar, out):
+           pkp, pkm, camp, camm, cam_same, hpar, out):
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     n_par = hpar.shape[0]
@@ -227,14 +233,18 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
             out[4, p, i] += w[j] * y[j] * dv / wy
         for k in range(n_par):  # section parameters: the element's constants pk and the annulus' cam at +-
-            s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camp[k])
-            s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camm[k])
-            gp, t1, d1, q1, r1 = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], mfac[j],
-                                          ct[j], ch[j], sinpsi, naz, model, pkp[k], emp)
-            gm, t2, d2, q2, r2 = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], mfac[j],
-                                          ct[j], ch[j], sinpsi, naz, model, pkm[k], emp)
+            # the loss factor and the momentum side do not depend on them: G changes by the blade's thrust
+            if cam_same[k]:
+                s0a, s1a, s2a, s3a, s0b, s1b, s2b, s3b = s0, s1, s2, s3, s0, s1, s2, s3
+            else:
+                s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camp[k])
+                s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camm[k])
+            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], sinpsi, naz,
+                                         model, pkp[k])
+            t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
+                                         model, pkm[k])
             k2 = 1.0 / hpar[k]
-            dv = -((gp - gm) * k2) / Gv
+            dv = -((t1 - t2) * k2) / Gv
             dL[0] = (t1 - t2) * k2
             dL[1] = (d1 - d2) * k2
             dL[2] = (q1 - q2) * k2
@@ -250,7 +260,7 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-                  pkp, pkm, camp, camm, hpar, out):
+                  pkp, pkm, camp, camm, cam_same, hpar, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
@@ -260,11 +270,13 @@ def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, 
     the collective).
     Section parameters: ``pkp``, ``pkm`` shape (n_par, N_PK) and ``camp``, ``camm`` shape
     (n_par, 8), the element and annulus constants at each parameter's upper and lower value,
-    ``hpar`` shape (n_par,) the distance between them (n_par may be 0). ``out`` shape
+    ``cam_same`` shape (n_par,) bool: the parameter leaves ``cam`` unchanged (its annulus
+    constants are not recomputed), ``hpar`` shape (n_par,) the distance between the two
+    values (n_par may be 0). ``out`` shape
     (5, n_in + n_par, n). Each derivative is a directional one in (Omega, V sin
     beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
     incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
         _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-               pkp, pkm, camp, camm, hpar, out)
+               pkp, pkm, camp, camm, cam_same, hpar, out)

@@ -823,7 +823,7 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
-                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pkp, pkm, camp, camm, span,
-                               raw)
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pkp, pkm, camp, camm,
+                               np.all(camp == cam, axis=1) & np.all(camm == cam, axis=1), span, raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
