@@ -263,3 +263,24 @@ def test_vehicle_parameter_and_airframe_derivatives():
     own = replace(veh, rotors=(replace(veh.rotors[0], params=g),) + veh.rotors[1:])
     with pytest.raises(ValueError, match="has its own"):
         pm.vehicle_wrench(own, g, v, w, om, derivatives=("cl_alpha",))
+
+
+@pytest.mark.parametrize("params", [pm.generic_params(), pm.preset("gill2017-apc")], ids=["cambered", "paper"])
+def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
+    """solver.NODE_FIELDS (refused as derivatives) are exactly the numeric fields that change the
+    blade's nodes; every other numeric field enters the section's constants only."""
+    from dataclasses import fields
+
+    from propmap.core.airfoil import RECORD_META
+    from propmap.core.solver import NODE_FIELDS, _nodes
+
+    base = _nodes(prop, 24, 8, params.air, params)
+    for f in fields(params):
+        x = getattr(params, f.name)
+        if f.name in RECORD_META or isinstance(x, (bool, str)) or not isinstance(x, float):
+            continue
+        moved = params.replace(**{f.name: x * 1.01 + 1e-3})
+        nd = _nodes(prop, 24, 8, params.air, moved)
+        same = all(np.array_equal(getattr(nd, k), getattr(base, k)) for k in ("theta", "sc", "ct", "ch", "cfac",
+                                                                              "mfac", "cy2"))
+        assert same == (f.name not in NODE_FIELDS), f.name

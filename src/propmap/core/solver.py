@@ -722,7 +722,7 @@ def rotor_loads(
     jac = None
     if wrt:
         jac = {k: s(a) for k, a in _jacobian(wrt, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam,
-                                                 empirical, propeller, params, air, discretization).items()}
+                                                 empirical, params, air).items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
@@ -764,12 +764,16 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
     return wrt
 
 
+#: the parameter set's fields that _nodes reads (the blade angle, the Reynolds reference, the Blasius
+#: factor, the loss switches): not differentiable as section constants (tests/test_derivatives.py checks
+#: that every other numeric field leaves the nodes unchanged)
+NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
 #: relative step of a section parameter's difference (of max(|value|, PARAM_FLOOR))
 PARAM_STEP = 1e-5
 PARAM_FLOOR = 0.01
 
 
-def _parameter_constants(names, propeller, params, air, discretization, nd):
+def _parameter_constants(names, params, air):
     """(pk+, pk-, cam+, cam-, span) of each section parameter in ``names``: the element and
     annulus constants at the parameter's value +- its step (one-sided where the other side
     leaves the parameter's range), the distance between the two values.
@@ -786,6 +790,9 @@ def _parameter_constants(names, propeller, params, air, discretization, nd):
     camp, camm = np.empty((n, 8)), np.empty((n, 8))
     span = np.empty(n)
     for k, name in enumerate(names):
+        if name in NODE_FIELDS:
+            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
+                             "not the section's constants (for the blade angle, use 'collective')")
         x = getattr(params, name)
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")
@@ -799,19 +806,13 @@ def _parameter_constants(names, propeller, params, air, discretization, nd):
         (xa, pa), (xb, pb) = sides
         if xa == xb:
             raise ValueError(f"derivatives: {name} = {x!r} admits no step within its range")
-        for q in (pa, pb):
-            nq = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, q)
-            if not all(np.array_equal(getattr(nq, f), getattr(nd, f)) for f in ("theta", "sc", "ct", "ch", "cfac")):
-                raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
-                                 "not the section's constants (for the blade angle, use 'collective')")
         pkp[k], pkm[k] = _model_constants(pa)[1], _model_constants(pb)[1]
         camp[k], camm[k] = _cambered_args(pa, air), _cambered_args(pb, air)
         span[k] = xa - xb
     return pkp, pkm, camp, camm, span
 
 
-def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, propeller, params, air,
-              discretization) -> dict:
+def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from the kernel
     (core/_sensitivity.py)."""
     from . import _sensitivity
@@ -819,7 +820,7 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
     names = [w for w in wrt if w not in DERIVATIVE_INPUTS]
     n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
-    pkp, pkm, camp, camm, span = _parameter_constants(names, propeller, params, air, discretization, nd)
+    pkp, pkm, camp, camm, span = _parameter_constants(names, params, air)
     raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
