@@ -284,3 +284,22 @@ def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
         same = all(np.array_equal(getattr(nd, k), getattr(base, k)) for k in ("theta", "sc", "ct", "ch", "cfac",
                                                                               "mfac", "cy2"))
         assert same == (f.name not in NODE_FIELDS), f.name
+
+
+@pytest.mark.parametrize("params", [pm.generic_params(), pm.preset("gill2017-apc")], ids=["cambered", "paper"])
+def test_air_density_derivative(prop, params):
+    """dL/drho against differences of the solver with the air's density moved (the loads'
+    proportional part and the Reynolds number's, through the section constant)."""
+    from dataclasses import replace
+
+    om, V, b = np.array([600.0, 900.0, 1200.0]), np.array([0.0, 8.0, 15.0]), np.radians([0.0, 60.0, 20.0])
+    air = params.air
+    r = pm.rotor_loads(prop, params, om, V, b, discretization=DISC, derivatives=("rho",))
+    h = 1e-4 * air.rho
+    a = pm.rotor_loads(prop, params, om, V, b, discretization=DISC, air=replace(air, rho=air.rho + h))
+    c = pm.rotor_loads(prop, params, om, V, b, discretization=DISC, air=replace(air, rho=air.rho - h))
+    for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean"):
+        fd = (getattr(a, q) - getattr(c, q)) / (2 * h)
+        np.testing.assert_allclose(r.derivative(q, "rho"), fd, rtol=1e-5, atol=1e-7 * np.abs(fd).max(), err_msg=q)
+    # the thrust is nearly proportional to rho: the Reynolds part is a correction
+    np.testing.assert_allclose(r.derivative("thrust", "rho"), r.thrust / air.rho, rtol=0.2)

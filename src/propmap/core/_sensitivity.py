@@ -114,11 +114,11 @@ def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch,
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-           pkp, pkm, camp, camm, cam_same, hpar, out):
+           pkpm, campm, cam_same, hpar, scpm, hrho, out):
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     n_par = hpar.shape[0]
-    n_all = n_in + n_par
+    n_all = n_in + n_par + (1 if hrho > 0.0 else 0)
     if not ok[i]:
         for q in range(5):
             for p in range(n_all):
@@ -237,12 +237,12 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
             if cam_same[k]:
                 s0a, s1a, s2a, s3a, s0b, s1b, s2b, s3b = s0, s1, s2, s3, s0, s1, s2, s3
             else:
-                s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camp[k])
-                s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, camm[k])
+                s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, campm[0, k])
+                s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, campm[1, k])
             t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], sinpsi, naz,
-                                         model, pkp[k])
+                                         model, pkpm[0, k])
             t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
-                                         model, pkm[k])
+                                         model, pkpm[1, k])
             k2 = 1.0 / hpar[k]
             dv = -((t1 - t2) * k2) / Gv
             dL[0] = (t1 - t2) * k2
@@ -256,11 +256,31 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
             for q in range(4):
                 out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
             out[4, p, i] += w[j] * y[j] * dv / wy
+        if hrho > 0.0:  # the air density through the Reynolds number: sc at rho +- (cfac, mfac scale out)
+            s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], scpm[0, j], cy2[j], model, cam)
+            s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], scpm[1, j], cy2[j], model, cam)
+            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], sinpsi, naz,
+                                         model, pk)
+            t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
+                                         model, pk)
+            k2 = 1.0 / hrho
+            dv = -((t1 - t2) * k2) / Gv
+            dL[0] = (t1 - t2) * k2
+            dL[1] = (d1 - d2) * k2
+            dL[2] = (q1 - q2) * k2
+            dL[3] = (r1 - r2) * k2
+            if naz == 1:
+                dL[1] = 0.0
+                dL[3] = 0.0
+            p = n_in + n_par
+            for q in range(4):
+                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
+            out[4, p, i] += w[j] * y[j] * dv / wy
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-                  pkp, pkm, camp, camm, cam_same, hpar, out):
+                  pkpm, campm, cam_same, hpar, scpm, hrho, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
@@ -268,15 +288,19 @@ def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, 
     ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
     every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
-    Section parameters: ``pkp``, ``pkm`` shape (n_par, N_PK) and ``camp``, ``camm`` shape
-    (n_par, 8), the element and annulus constants at each parameter's upper and lower value,
+    Section parameters (packed, so that the argument list stays short enough for numba's
+    inliner): ``pkpm`` shape (2, n_par, N_PK) and ``campm`` shape (2, n_par, 8), the element
+    and annulus constants at each parameter's upper [0] and lower [1] value,
     ``cam_same`` shape (n_par,) bool: the parameter leaves ``cam`` unchanged (its annulus
     constants are not recomputed), ``hpar`` shape (n_par,) the distance between the two
-    values (n_par may be 0). ``out`` shape
+    values (n_par may be 0). The air density (``hrho`` > 0, the distance between its two
+    values; 0: not asked): ``scpm`` shape (2, nr), the section constant sc at them; the
+    output's last row is then the Reynolds part of dL/drho (the caller adds L / rho, the
+    part of cfac and mfac, which scale the residual and leave the root unchanged). ``out`` shape
     (5, n_in + n_par, n). Each derivative is a directional one in (Omega, V sin
     beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
     incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
         _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-               pkp, pkm, camp, camm, cam_same, hpar, out)
+               pkpm, campm, cam_same, hpar, scpm, hrho, out)

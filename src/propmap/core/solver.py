@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass, fields
+from dataclasses import replace as dc_replace
 
 import numpy as np
 
@@ -325,8 +326,9 @@ class RotorLoads:
         Parameters
         ----------
         quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean"}
-        wrt : {"omega", "airspeed", "incidence", "collective"}
-            Omega [rad/s], V [m/s], beta [rad], the collective offset [rad]; as asked of
+        wrt : str
+            "omega" [rad/s], "airspeed" [m/s], "incidence" [rad], "collective" [rad], "rho"
+            [kg/m^3] or a section parameter's name (in its SI unit); as asked of
             :func:`rotor_loads` (``derivatives``).
 
         Returns
@@ -440,6 +442,8 @@ def _new_loads(**kw) -> RotorLoads:
 #: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
 DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
+#: the air density, differentiated besides the inputs and the section parameters
+RHO = "rho"
 
 #: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
 #: solution at OMEGA_MIN (in still air scaled by (Omega / OMEGA_MIN)^2 to 0 at Omega = 0); the solver
@@ -604,7 +608,9 @@ def rotor_loads(
         True: also the derivatives of T, D, Q, M_R and v_i,mean with respect to ``omega``,
         ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
-        ``params.collective`` and ``collective``). By the implicit function theorem on
+        ``params.collective`` and ``collective``), section parameters (numeric fields of
+        ``params`` other than :data:`NODE_FIELDS`) and ``"rho"`` (the air density
+        [kg/m^3]). By the implicit function theorem on
         each annulus' converged root (core/_sensitivity.py), not by differencing the
         solver; for the uniform inflow and rigid blades (the paper's rotor) and Omega >=
         0.1 rad/s. False (default): none.
@@ -722,7 +728,8 @@ def rotor_loads(
     jac = None
     if wrt:
         jac = {k: s(a) for k, a in _jacobian(wrt, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam,
-                                                 empirical, params, air).items()}
+                                                 empirical, params, air, propeller, discretization,
+                                                 (T, D, Q, R)).items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
@@ -751,7 +758,7 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
                              f"({', '.join(DERIVATIVE_INPUTS)}, or a field of the parameter set), "
                              f"got {derivatives!r:.60}")
         wrt = tuple(dict.fromkeys(derivatives))
-        own = {f.name for f in fields(params)} - set(RECORD_META)
+        own = ({f.name for f in fields(params)} - set(RECORD_META)) | {RHO}
         bad = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in own]
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
@@ -812,19 +819,34 @@ def _parameter_constants(names, params, air):
     return pkp, pkm, camp, camm, span
 
 
-def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air) -> dict:
+def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+              discretization, loads) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from the kernel
     (core/_sensitivity.py)."""
     from . import _sensitivity
 
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
-    names = [w for w in wrt if w not in DERIVATIVE_INPUTS]
+    names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w != RHO]
+    scp = scm = nd.sc
+    hrho = 0.0
+    if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
+        h = PARAM_STEP * air.rho
+        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho + h),
+                     params).sc
+        scm = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho - h),
+                     params).sc
+        hrho = 2 * h
     n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
     pkp, pkm, camp, camm, span = _parameter_constants(names, params, air)
-    raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names), om.size))
+    raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names) + (RHO in wrt), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
-                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pkp, pkm, camp, camm,
-                               np.all(camp == cam, axis=1) & np.all(camm == cam, axis=1), span, raw)
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, np.stack([pkp, pkm]),
+                               np.stack([camp, camm]), np.all(camp == cam, axis=1) & np.all(camm == cam, axis=1), span,
+                               np.stack([scp, scm]), hrho, raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
+    if RHO in wrt:
+        col[RHO] = n_in + len(names)
+        for q, a in enumerate(loads):  # cfac and mfac scale with rho: L / rho at the same root
+            raw[q, col[RHO]] += a / air.rho
     return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
