@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 from dataclasses import dataclass, fields
 from dataclasses import replace as dc_replace
 
@@ -457,6 +458,10 @@ _RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "
            "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
 
 
+#: a 1-element array's 0-d view (a[0, ...])
+_ZERO_D = operator.itemgetter((0, Ellipsis))
+
+
 def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
     """The loads solved at OMEGA_MIN, taken to the rates ``om`` below it (parked blades): in
     still air (V = 0) loads and flap angles scale by (Omega / OMEGA_MIN)^2 and induced
@@ -643,9 +648,13 @@ def rotor_loads(
         shape = ()
         w0 = _scalar("omega", omega)
         any_slow = w0 < OMEGA_MIN
-        inputs = np.array([[w0], [_scalar("airspeed", airspeed)], [_scalar("incidence", incidence)],
-                           [0.0 if collective is None else _scalar("collective", collective)]])
-        om1, V1, b1, c1 = inputs  # rows: contiguous views of one point each
+        v0, b0 = _scalar("airspeed", airspeed), _scalar("incidence", incidence)
+        vs0, vc0 = v0 * math.sin(b0), v0 * math.cos(b0)  # Python floats: no ufunc calls on 1-element arrays
+        if abs(vs0) < 1e-12 * max(v0, 1e-300):  # exact axial flow at beta = 0, pi
+            vs0 = 0.0
+        inputs = np.array([[w0], [v0], [b0], [0.0 if collective is None else _scalar("collective", collective)],
+                           [vs0], [vc0]])
+        om1, V1, b1, c1, Vs, Vc = inputs  # rows: contiguous views of one point each
     else:
         arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
         if collective is not None:
@@ -666,13 +675,9 @@ def rotor_loads(
         c1 = (np.ascontiguousarray(arrays[3].reshape(-1), dtype=float) if collective is not None
               else np.zeros(om1.size))
         any_slow = bool((om1 < OMEGA_MIN).any())
-    Vs = np.ascontiguousarray(V1 * np.sin(b1))
-    Vc = np.ascontiguousarray(V1 * np.cos(b1))
-    if shape == ():  # exact axial flow at beta = 0, pi
-        if abs(Vs[0]) < 1e-12 * max(V1[0], 1e-300):
-            Vs[0] = 0.0
-    else:
-        Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0
+        Vs = np.ascontiguousarray(V1 * np.sin(b1))
+        Vc = np.ascontiguousarray(V1 * np.cos(b1))
+        Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
 
     wrt = _derivative_inputs(derivatives, params, any_slow)
     keep_radial = radial or bool(wrt)  # the derivatives need the roots
@@ -692,7 +697,7 @@ def rotor_loads(
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
           nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, out, rad, counts)
     converged = status == 0
-    if on_failure == "raise" and status.any():
+    if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
         i = int(np.argmax(~converged))
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
@@ -722,6 +727,8 @@ def rotor_loads(
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
+    elif shape == ():  # one point: 0-d views, by a C-level getter (half a reshape's cost; 22 fields)
+        s = _ZERO_D
     else:
         def s(a):
             return a.reshape(shape)
