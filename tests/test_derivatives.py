@@ -199,6 +199,11 @@ def test_section_parameter_derivatives(prop, model):
         pm.rotor_loads(prop, pm.generic_params(), 800.0, 0.0, 0.0, derivatives=("re_ref",))
     with pytest.raises(ValueError, match="unknown input or parameter 'nonsense'"):
         pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, derivatives=("nonsense",))
+    # flapping enters no section constant: refused, not a derivative of 0
+    with pytest.raises(ValueError, match="flap_compliance are not supported"):
+        pm.rotor_loads(prop, g, 800.0, 8.0, 1.0, derivatives=("flap_compliance",))
+    with pytest.raises(ValueError, match="must be a sequence of names"):
+        pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
 
 
 def test_loads_fit_with_the_implicit_jacobian_reaches_the_same_optimum(prop):
@@ -303,3 +308,33 @@ def test_air_density_derivative(prop, params):
         np.testing.assert_allclose(r.derivative(q, "rho"), fd, rtol=1e-5, atol=1e-7 * np.abs(fd).max(), err_msg=q)
     # the thrust is nearly proportional to rho: the Reynolds part is a correction
     np.testing.assert_allclose(r.derivative("thrust", "rho"), r.thrust / air.rho, rtol=0.2)
+
+
+def test_vehicle_air_density_derivative():
+    """vehicle_wrench's d/drho: the rotors' loads and the airframe drag's own proportionality
+    to rho, against central differences of vehicle_wrench."""
+    from dataclasses import replace
+    from pathlib import Path
+
+    from propmap.core.body import BodyDrag
+
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    g = pm.generic_params()
+    v, w = np.array([[12.0, -1.0, -0.5]]), np.array([[0.5, -1.0, 2.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0]])
+    body = BodyDrag((0.02, 0.01, 0.01), 1.2)
+    r = pm.vehicle_wrench(veh, g, v, w, om, body_drag=body, derivatives=("rho",), discretization=DISC)
+    h = 1e-4 * g.air.rho
+    a, c = (pm.vehicle_wrench(veh, g, v, w, om, body_drag=body, discretization=DISC,
+                              air=replace(g.air, rho=g.air.rho + s)) for s in (h, -h))
+    for key, fa, fc in (("force", a.force, c.force), ("moment", a.moment, c.moment)):
+        fd = (fa - fc) / (2 * h)
+        np.testing.assert_allclose(r.jacobian[(key, "rho")], fd, atol=1e-5 * np.abs(fd).max(), err_msg=key)
+
+
+def test_fitting_a_fixed_M_is_refused(prop):
+    from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+
+    data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+    with pytest.raises(ValueError, match="M is fixed at 30 by the fit's options"):
+        fit_loads(data, prop, options=FitOptions(M=30.0, names=("cl_alpha", "M")))

@@ -614,9 +614,9 @@ def rotor_loads(
         ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
-        ``params`` other than :data:`NODE_FIELDS`) and ``"rho"`` (the air density
-        [kg/m^3]). By the implicit function theorem on
-        each annulus' converged root (core/_sensitivity.py), not by differencing the
+        ``params`` other than :data:`NODE_FIELDS` and ``flap_compliance``) and ``"rho"``
+        (the air density [kg/m^3]). By the implicit function theorem on each annulus'
+        converged root (core/_sensitivity.py), not by differencing the
         solver; for the uniform inflow and rigid blades (the paper's rotor) and Omega >=
         0.1 rad/s. False (default): none.
 
@@ -633,7 +633,8 @@ def rotor_loads(
     ValueError
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
-        With ``derivatives``: an unknown input name, a linear inflow model or flapping
+        With ``derivatives``: an unknown input name, a node-changing parameter
+        (:data:`NODE_FIELDS`) or ``flap_compliance``, a linear inflow model or flapping
         blades, or an Omega below 0.1 rad/s.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
@@ -795,9 +796,10 @@ def _parameter_constants(names, params, air):
     Raises
     ------
     ValueError
-        A parameter that is not a number, or one that changes the blade's nodes (the
+        A parameter that is not a number, one that changes the blade's nodes (the
         Reynolds reference, the Blasius factor, the loss switches; ``collective`` is the
-        input of that name) rather than the section's constants.
+        input of that name) rather than the section's constants, or ``flap_compliance``
+        (flapping is not differentiated).
     """
     n = len(names)
     pkp, pkm = np.empty((n, ph.N_PK)), np.empty((n, ph.N_PK))
@@ -807,6 +809,9 @@ def _parameter_constants(names, params, air):
         if name in NODE_FIELDS:
             raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
                              "not the section's constants (for the blade angle, use 'collective')")
+        if name == "flap_compliance":  # enters neither pk nor cam: its difference would say 0
+            raise ValueError("derivatives with respect to flap_compliance are not supported: flapping is not "
+                             "differentiated")
         x = getattr(params, name)
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")

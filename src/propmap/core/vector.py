@@ -132,7 +132,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         Non-numeric inputs, shapes not ending in 3, a zero or non-finite axis, a non-finite
         velocity, a bad spin (a bool included, or an array that does not broadcast to the
         loads' shape S), or the ranges of :func:`rotor_loads`
-        (the speed |velocity| at most 500 m/s).
+        (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
+        naming "airspeed" or "incidence", or refused by :func:`rotor_loads`.
     SolverError
         As :func:`rotor_loads`.
 
@@ -153,8 +154,10 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         shape = None  # rotor_loads names the argument
     if shape is not None:
         _check_spin(s, shape)
+    if derivatives is True or isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
+        raise ValueError(f"derivatives must be a sequence of names, got {derivatives!r:.60}")
     names = tuple(derivatives or ())
-    if isinstance(derivatives, str) or any(n in ("airspeed", "incidence") for n in names):
+    if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (the "
                          f"velocity vector's derivatives are not given), got {derivatives!r:.60}")
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,

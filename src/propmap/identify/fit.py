@@ -22,7 +22,7 @@ import numpy as np
 
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
-from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, rotor_loads
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from ..vehicle import Vehicle
@@ -110,8 +110,9 @@ def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) ->
     Raises
     ------
     ValueError
-        Not a sequence of str, empty, a name given twice, or a name the model does not
-        have (a paper-model name with a cambered base, ``alpha0``, included).
+        Not a sequence of str, empty, a name given twice, a name the model does not
+        have (a paper-model name with a cambered base, ``alpha0``, included), or ``M``
+        fitted while ``options.M`` fixes it.
     """
     if isinstance(names, str) or not isinstance(names, (tuple, list)) or not all(isinstance(n, str) for n in names):
         raise ValueError(f"names must be a tuple of parameter names (str), got {names!r:.60}")
@@ -131,6 +132,9 @@ def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) ->
         hint = " (body-lift terms: body_lift=True, --body-lift)" if any(n in BODY_BOUNDS for n in unknown) else ""
         raise ValueError(f"cannot fit {', '.join(unknown)[:120]} with {model}: its parameters are "
                          f"{', '.join(valid)}{hint}")
+    if options.M is not None and "M" in names:
+        raise ValueError(f"M is fixed at {options.M:g} by the fit's options (--M) and cannot also be fitted: "
+                         "drop one")
     return tuple(names)
 
 
@@ -658,6 +662,19 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     axes along body z, no rates and no roll this is exactly eq 16,
     sum_i T_i sin(beta_i) + D_i cos(beta_i).
 
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+        The section set of every rotor.
+    data : LevelFlightData
+    vehicle : Vehicle
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
+    discretization : Discretization
+    derivatives : sequence of str
+        Section parameters' names (and ``"collective"``) to differentiate the vertical
+        force with respect to, as :func:`propmap.rotor_loads` takes them; () (default): none.
+
     Returns
     -------
     dict with ``thrust``, ``drag``, ``torque`` (shape (N, n_rotors)) [N, N, N m],
@@ -667,6 +684,9 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
 
     Raises
     ------
+    ValueError
+        ``derivatives`` that :func:`propmap.rotor_loads` refuses (an unknown or node-changing
+        name, a linear inflow, flapping, Omega below 0.1 rad/s).
     SolverError
         From the rotor model.
     """
@@ -881,6 +901,10 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
                     lo[k] -= h
                     cols.append(((body_lift(hi, data, vehicle, p.M, air) - body_lift(lo, data, vehicle, p.M, air))
                                  / (2 * h))[:, None])
+                if "M" in section and opts.M is None:  # the body lift's blend shares the section's M
+                    k, h = names.index("M"), 1e-6 * p.M
+                    cols[0][:, k] += (body_lift(x[-3:], data, vehicle, p.M + h, air)
+                                      - body_lift(x[-3:], data, vehicle, p.M - h, air)) / (2 * h)
             return np.hstack(cols)
 
         section_names = names[:-3] if opts.body_lift else names
@@ -1060,8 +1084,8 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
             return weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names]) / norm[k][:, None]
                                        / scales[k] for k in keys])
 
-        if opts.jacobian == "implicit" and _differentiable(names, base):
-            residual.jacobian = jacobian
+        if opts.jacobian == "implicit" and _differentiable(names, base) and np.all(data.omega >= OMEGA_MIN):
+            residual.jacobian = jacobian  # (a parked point, below OMEGA_MIN, has no derivatives: differences)
         return residual
 
     return make, scales

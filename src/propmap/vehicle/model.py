@@ -236,7 +236,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         True (or "omega" among the names): dF/dOmega_i and dM/dOmega_i
         (``VehicleWrench.force_domega``, ``moment_domega``). Other names: derivatives of F
         and M with respect to a section parameter of ``params`` (as :func:`propmap.rotor_loads`
-        takes them, "collective" included) or an airframe term (``drag_area_x``,
+        takes them, "collective" included), the air density "rho" [kg/m^3] (the rotors'
+        loads and the airframe drag) or an airframe term (``drag_area_x``,
         ``drag_area_y``, ``drag_area_z``, ``wash_factor``), in ``VehicleWrench.jacobian``.
         Each rotor's load derivatives come from the implicit function theorem (docs/solver.md)
         and are carried through the vector sums, the arms, the gyroscopic moment and the
@@ -336,7 +337,8 @@ def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
     if bad:
         raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', a section "
                          "parameter or an airframe term")
-    if any(n not in ("omega", *BODY_DRAG_NAMES) for n in wrt) and any(r.params is not None for r in vehicle.rotors):
+    if any(n not in ("omega", "rho", *BODY_DRAG_NAMES) for n in wrt) and any(r.params is not None
+                                                                            for r in vehicle.rotors):
         raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
                          "(a rotor of this vehicle has its own)")
     return wrt
@@ -408,6 +410,8 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
                     dwash += loads[i].derivative("v_i_mean", name)[:, None] * axes[i] / n_rot
                 if drag_active and body.wash_factor > 0:
                     F = F + body_du(body.wash_factor * dwash)
+                if name == "rho" and drag_active:  # the drag's own proportionality to rho
+                    F = F - 0.5 * area * speed * u
             jac[("force", name)] = F
             jac[("moment", name)] = M
     return dF, dM, jac
