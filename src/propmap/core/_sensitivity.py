@@ -113,6 +113,23 @@ def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
+    """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
+    blade's sums only (a section parameter, the density's Reynolds part): the differences
+    (dt, dd, dq, dr) of its loads over ``span``, G's change being dt's (the loss factor and the
+    momentum side do not depend on p); ``wj`` the annulus' weight, ``wvj`` its mean-inflow
+    weight; D and M_R stay 0 in axial flow."""
+    k2 = 1.0 / span
+    dv = -(dt * k2) / Gv
+    out[0, p, i] += wj * (dt * k2 + Lv[0] * dv)
+    out[2, p, i] += wj * (dq * k2 + Lv[2] * dv)
+    if not axial:
+        out[1, p, i] += wj * (dd * k2 + Lv[1] * dv)
+        out[3, p, i] += wj * (dr * k2 + Lv[3] * dv)
+    out[4, p, i] += wvj * dv
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
            pkpm, campm, cam_same, hpar, scpm, hrho, out):
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
@@ -243,19 +260,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                                          model, pkpm[0, k])
             t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
                                          model, pkpm[1, k])
-            k2 = 1.0 / hpar[k]
-            dv = -((t1 - t2) * k2) / Gv
-            dL[0] = (t1 - t2) * k2
-            dL[1] = (d1 - d2) * k2
-            dL[2] = (q1 - q2) * k2
-            dL[3] = (r1 - r2) * k2
-            if naz == 1:
-                dL[1] = 0.0
-                dL[3] = 0.0
-            p = n_in + k
-            for q in range(4):
-                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
-            out[4, p, i] += w[j] * y[j] * dv / wy
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * y[j] / wy, Lv, Gv, t1 - t2, d1 - d2, q1 - q2, r1 - r2,
+                            hpar[k], naz == 1)
         if hrho > 0.0:  # the air density through the Reynolds number: sc at rho +- (cfac, mfac scale out)
             s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], scpm[0, j], cy2[j], model, cam)
             s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], scpm[1, j], cy2[j], model, cam)
@@ -263,19 +269,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                                          model, pk)
             t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
                                          model, pk)
-            k2 = 1.0 / hrho
-            dv = -((t1 - t2) * k2) / Gv
-            dL[0] = (t1 - t2) * k2
-            dL[1] = (d1 - d2) * k2
-            dL[2] = (q1 - q2) * k2
-            dL[3] = (r1 - r2) * k2
-            if naz == 1:
-                dL[1] = 0.0
-                dL[3] = 0.0
-            p = n_in + n_par
-            for q in range(4):
-                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
-            out[4, p, i] += w[j] * y[j] * dv / wy
+            _add_fixed_root(out, n_in + n_par, i, w[j], w[j] * y[j] / wy, Lv, Gv, t1 - t2, d1 - d2, q1 - q2, r1 - r2,
+                            hrho, naz == 1)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
