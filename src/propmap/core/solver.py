@@ -27,6 +27,7 @@ __all__ = [
     "RotorLoads",
     "SolverError",
     "rotor_loads",
+    "differentiable",
     "DEFAULT_DISCRETIZATION",
 ]
 
@@ -753,6 +754,30 @@ def rotor_loads(
     )
 
 
+def differentiable(params: SectionParams, names) -> bool:
+    """Whether :func:`rotor_loads` gives implicit derivatives of ``params``'s loads with respect
+    to every name in ``names`` (what the fits ask before using them).
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+    names : sequence of str
+        Inputs (:data:`DERIVATIVE_INPUTS`), ``"rho"`` or section parameters' names.
+
+    Returns
+    -------
+    bool
+        False for a linear inflow model or flapping blades, or a name that is not a numeric
+        field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text);
+        the rotation rates' range is the caller's to check (>= 0.1 rad/s).
+    """
+    if params.inflow != "uniform" or params.flap_compliance > 0:
+        return False
+    own = {f.name for f in fields(params)} - set(RECORD_META)
+    return all(n in DERIVATIVE_INPUTS or n == RHO
+               or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
+
+
 def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
     """The inputs and section parameters ``rotor_loads(derivatives=...)`` asks for, checked
     (() for none)."""
@@ -783,6 +808,8 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
 #: factor, the loss switches): not differentiable as section constants (tests/test_derivatives.py checks
 #: that every other numeric field leaves the nodes unchanged)
 NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
+#: fields that enter neither the element's nor the annulus' constants: refused as derivatives
+NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance")
 #: relative step of a section parameter's difference (of max(|value|, PARAM_FLOOR))
 PARAM_STEP = 1e-5
 PARAM_FLOOR = 0.01
@@ -806,12 +833,12 @@ def _parameter_constants(names, params, air):
     camp, camm = np.empty((n, 8)), np.empty((n, 8))
     span = np.empty(n)
     for k, name in enumerate(names):
-        if name in NODE_FIELDS:
-            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
-                             "not the section's constants (for the blade angle, use 'collective')")
         if name == "flap_compliance":  # enters neither pk nor cam: its difference would say 0
             raise ValueError("derivatives with respect to flap_compliance are not supported: flapping is not "
                              "differentiated")
+        if name in NOT_CONSTANTS:
+            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
+                             "not the section's constants (for the blade angle, use 'collective')")
         x = getattr(params, name)
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")

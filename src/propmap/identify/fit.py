@@ -22,7 +22,7 @@ import numpy as np
 
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
-from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, rotor_loads
+from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, differentiable, rotor_loads
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from ..vehicle import Vehicle
@@ -908,7 +908,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             return np.hstack(cols)
 
         section_names = names[:-3] if opts.body_lift else names
-        if opts.jacobian == "implicit" and _differentiable(section_names, base):
+        if opts.jacobian == "implicit" and differentiable(base, section_names):
             residual.jacobian = jacobian
         return residual
 
@@ -1013,10 +1013,6 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
-#: section fields rotor_loads cannot differentiate (they change the blade's nodes; flapping is not differentiated)
-NOT_DIFFERENTIABLE = ("re_ref", "cp_blasius", "flap_compliance")
-
-
 def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model).
 
@@ -1084,22 +1080,11 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
             return weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names]) / norm[k][:, None]
                                        / scales[k] for k in keys])
 
-        if opts.jacobian == "implicit" and _differentiable(names, base) and np.all(data.omega >= OMEGA_MIN):
+        if opts.jacobian == "implicit" and differentiable(base, names) and np.all(data.omega >= OMEGA_MIN):
             residual.jacobian = jacobian  # (a parked point, below OMEGA_MIN, has no derivatives: differences)
         return residual
 
     return make, scales
-
-
-def _differentiable(names, params: SectionParams) -> bool:
-    """Whether ``rotor_loads`` gives implicit derivatives of ``params`` with respect to every
-    name (the uniform inflow and rigid blades; names that are inputs or the section's
-    numeric constants, not the node-changing re_ref, cp_blasius or switches)."""
-    if params.inflow != "uniform" or params.flap_compliance > 0:
-        return False
-    own = {f.name for f in fields(params)}
-    return all(n == "collective" or (n in own and n not in NOT_DIFFERENTIABLE
-                                      and isinstance(getattr(params, n), float)) for n in names)
 
 
 def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, air: Air | None = None,

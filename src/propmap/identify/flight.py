@@ -35,11 +35,11 @@ import numpy as np
 
 from ..core.airfoil import Air, CamberedParams, SectionParams
 from ..core.body import BodyDrag
-from ..core.solver import Discretization, rotor_loads
+from ..core.solver import Discretization, differentiable, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _differentiable, _finish,
-                  _fit_with_continuation, _params_from, _with_prior)
+from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _finish, _fit_with_continuation,
+                  _params_from, _with_prior)
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
            "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
@@ -361,7 +361,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
     section = [n for n in names if n not in AIRFRAME_NAMES]
     implicit = (options.jacobian == "implicit" and k_int is None and vehicle.rotor_interference == 0
-                and _differentiable(section, base) and not any(r.params is not None for r in vehicle.rotors))
+                and differentiable(base, section) and not any(r.params is not None for r in vehicle.rotors))
 
     def make_residual(opts):
         def residual(x, opts=opts):
