@@ -340,6 +340,31 @@ def test_sigterm_of_validate_all_ends_quietly(tmp_path):
     assert b"leaked" not in err and b"resource_tracker" not in err and b"Traceback" not in err, err
 
 
+CALLBACK = """
+import signal, sys, time
+from propmap.cli import main as m
+signal.signal(signal.SIGTERM, m._on_sigterm)
+# C calling back into Python (as llvmlite does while numba compiles): a SIGTERM there
+# must not be raised (it would be printed and dropped) but delivered after the callback
+src = "import os, signal\\nos.kill(os.getpid(), signal.SIGTERM)\\nfor _ in range(10000): pass\\n"
+exec(compile(src, "/site-packages/ctypes/callback.py", "exec"))
+print("callback returned", flush=True)
+try:
+    time.sleep(10)
+except SystemExit as exc:
+    print("stopped", exc.code, m._terminated, flush=True)
+"""
+
+
+def test_sigterm_inside_a_c_callback_is_delivered_after_it(tmp_path):
+    out = subprocess.run([sys.executable, "-c", CALLBACK], capture_output=True, text=True, timeout=60,
+                         cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.split("\n")
+    assert lines[0] == "callback returned" and lines[1].startswith("stopped 143 [15"), out.stdout
+    assert "Exception ignored" not in out.stderr and "Traceback" not in out.stderr, out.stderr
+
+
 # ---- (15) the map and its sidecar are a pair ----
 
 def test_sidecar_names_the_map_it_describes(capsys, tmp_path, tiny_map):
