@@ -10,27 +10,34 @@ moment, azimuth-averaged) then change with x as
 (the implicit function theorem; the approach of A. Ning, "Using blade element momentum
 methods with gradient-based design optimization", Structural and Multidisciplinary
 Optimization 64, 2021, there with algorithmic differentiation of the residual). The
-partial derivatives at the fixed root are central differences of the residual and loads
-(no root solve in them): their error is the difference's, O(h^2) with h = 1e-5 of each
-variable's scale, far below the root's own tolerance, whereas differencing the whole solver
-would carry that tolerance (1e-7 of the inflow scale) divided by h. One evaluation of the
-annulus gives G and L together (G's BET side is L's thrust), so each derivative costs two
-element passes per annulus and the inflow's two more (the solve costs about 8 residual
-evaluations and one loads pass; benchmarks/README.md has the measured ratio, 2.7x the
-loads alone for the three inputs).
+partial derivatives at the fixed root (no root solve in them) come from the structure of
+the blade element: at every azimuth node it depends on the inputs only through
+U_T = Omega y + V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the
+section constants, which depend on the annulus' mean square speed U2 = (Omega y)^2 +
+(V sin beta)^2 / 2 + (V cos beta)^2 only. So one pass over the nodes, evaluating the
+element at the base and one-sided at U_T + h, U_P + h and the constants at U2 + h (and the
+blade angle + h for the collective), gives every input's partials by the chain rule
+(Omega: U_T by y, U2 by 2 Omega y^2; V sin beta: U_T by sin psi, U2 by V sin beta;
+V cos beta and v: U_P by 1, U2 by 2 V cos beta): four element evaluations per node for the
+three inputs and the inflow, where differencing each input centrally took eight. The steps
+are 1e-7 of each variable's scale (an O(h) error of about that relative size, far below the
+root's own tolerance, whereas differencing the whole solver carries that tolerance,
+1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a scalar per
+annulus: no azimuth sum) is differenced centrally with steps 1e-5, one-sided along the
+airspeed's ray at V = 0 (where the empirical descent model switches on).
 
 A section parameter enters through the element's constants (pk) and the annulus'
-Reynolds constants (cam) only; its partial derivatives are the differences of the residual
-and loads between the constants at its two values (central, or one-sided at a bound of its
-range), computed by the caller.
+Reynolds constants (cam) only, the density through the Reynolds constant sc; their partial
+derivatives are one-sided differences of the blade's sums between the base and the
+constants at the parameter's stepped value (computed by the caller: +h, or -h at the upper
+bound of its range): one pass each.
 
-The residual and the loads are the solver's own (_kernel._residual and annulus_loads, with
-the loss factor and the cambered section's Reynolds constants recomputed at each perturbed
-input): uniform inflow only, every azimuth node of the half circle where V sin beta is
-nonzero or perturbed (the nodes are symmetric in sin psi, which makes T even and D, M_R odd
-in V sin beta, so the differences at V sin beta = 0 are exact); in axial flow, where it is
-not perturbed (Omega, V along the axis, the collective), one node, the integrand being
-independent of psi there, with the D and M_R derivatives 0 by that symmetry.
+The element, the loss factor and the momentum side are the solver's own (_kernel): uniform
+inflow only, every azimuth node of the half circle where V sin beta is nonzero (the nodes
+are symmetric in sin psi, which makes T even and D, M_R odd in V sin beta); in axial flow
+one node, the integrand being independent of psi there: its partials stand for every
+node's, with the half circle's mean sin(psi) (0) and mean sin(psi)^2 as the weights, so
+that D and M_R change with V sin beta there and with nothing else.
 """
 
 from __future__ import annotations
@@ -39,11 +46,16 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE
+from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO,
+                       EMPIRICAL_NEWTON, TWO_OVER_PI)
 from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
                       _element_gill, _inverse_sin_phi, _momentum_thrust, _prandtl)
 
-#: relative step of the central differences at the fixed root
+#: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
+#: relative step of the blade's one-sided differences at the fixed root (elements, section
+#: constants, section parameters, density)
+ONE_SIDED = 1e-7
 #: inputs, in the order of the output's second axis
 INPUTS = ("omega", "airspeed", "incidence", "collective")
 #: loads, in the order of the output's first axis (and the mean induced velocity)
@@ -51,12 +63,17 @@ LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _constants_u2(U2, sc, cy2, model, cam):
+    """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as _solve_batch)."""
+    if model == CAMBERED:
+        return _cambered_annulus(U2, sc, cy2, cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
+    return sc, 0.0, 0.0, 0.0
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus at the inputs (as _solve_batch)."""
-    if model == CAMBERED:
-        return _cambered_annulus((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, cam[4], cam[0], cam[1], cam[2],
-                                 cam[3] != 0.0, cam[5], cam[6], cam[7])
-    return sc, 0.0, 0.0, 0.0
+    return _constants_u2((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: many call sites (compile time)
@@ -89,29 +106,6 @@ def _blade_sums(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, na
     return cfac * aT / naz, cfac * aD / naz, y * cfac * aQ / naz, y * cfac * aR / naz
 
 
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def _annulus(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, naz, model, pk, emp):
-    """(G, dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus: :func:`_blade_sums` and the solver's
-    residual G = dT/dy - F dT_BEMT/dy (_kernel._residual, with its loss factor F)."""
-    t, d, q, r = _blade_sums(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk)
-    floss = 1.0
-    if ct >= 0.0 or ch >= 0.0:
-        if emp and Vc < 0.0:
-            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
-        else:
-            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
-        if ct >= 0.0:
-            floss = _prandtl(ct, inv_sin)
-        if ch >= 0.0:
-            floss *= _prandtl(ch, inv_sin)
-    if emp:
-        w_ax = _axial_mass_flow(v, Vc, Vs)
-        mom = mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
-    else:
-        mom = _momentum_thrust(v, mfac, Vs, Vc)
-    return t - floss * mom, t, d, q, r
-
-
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
     """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
@@ -130,12 +124,218 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
+    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _annulus)."""
+    floss = 1.0
+    if ct >= 0.0 or ch >= 0.0:
+        if emp and Vc < 0.0:
+            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
+        else:
+            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
+        if ct >= 0.0:
+            floss = _prandtl(ct, inv_sin)
+        if ch >= 0.0:
+            floss *= _prandtl(ch, inv_sin)
+    if emp:
+        w_ax = _axial_mass_flow(v, Vc, Vs)
+        return floss * mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
+    return floss * _momentum_thrust(v, mfac, Vs, Vc)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _prandtl_slope(c, inv_sin):
+    """dF/d(1/sin phi) of Prandtl's factor F = (2/pi) acos(exp(-c / sin phi)) (_physics.make_prandtl)."""
+    x = min(np.exp(-c * inv_sin), 1.0 - 1e-16)
+    return TWO_OVER_PI * c * x / np.sqrt(1.0 - x * x)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _mass_flow_partials(v, Vc, Vs, emp):
+    """The axial mass-flow velocity w of one annulus and dw/d(v, V cos beta, V sin beta).
+
+    Glauert's w = |Vc + v|, or with ``emp`` in the vortex-ring and turbulent-wake states the
+    empirical curve of _physics.axial_mass_flow, w = g + (v_h^2 / v - g) exp(-(Vs/v)^2),
+    g = |Vc + v|, v_h = d / k, d = -Vc, where k solves f(k) = (v/d) k: differentiated
+    through that equation (dk/dr = k / (f'(k) - r), r = v/d), not by differences.
+    """
+    UP = Vc + v
+    sg = 1.0 if UP >= 0.0 else -1.0
+    g = abs(UP)
+    d = -Vc
+    if not emp or d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
+        return g, sg, sg, 0.0
+    r = v / d
+    k = min(1.0 / r, 2.0)
+    for _ in range(EMPIRICAL_NEWTON):  # as axial_mass_flow
+        f = 1.0 + k * (EMPIRICAL_C1 + k * (EMPIRICAL_C2 + k * (EMPIRICAL_C3 + k * EMPIRICAL_C4)))
+        fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
+        k = min(max(k - (f - r * k) / (fp - r), 1e-12), 2.0)
+    fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
+    dk_dr = k / (fp - r)
+    vh = d / k
+    # d(v_h)/dv and d(v_h)/dVc (d = -Vc, r = v / d)
+    dvh_v = -d / (k * k) * dk_dr / d
+    dvh_vc = -(1.0 / k - d / (k * k) * dk_dr * (-v / (d * d)))
+    A = vh * vh / v
+    dA_v = 2.0 * vh * dvh_v / v - A / v
+    dA_vc = 2.0 * vh * dvh_vc / v
+    q = Vs / v
+    E = np.exp(-q * q)
+    dE_v = E * 2.0 * q * q / v
+    dE_vs = -E * 2.0 * q / v
+    w = g + (A - g) * E
+    return w, sg * (1.0 - E) + dA_v * E + (A - g) * dE_v, sg * (1.0 - E) + dA_vc * E, (A - g) * dE_vs
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
+    """d(F_loss dT_BEMT/dy)/d(v, Omega, V sin beta, V cos beta) of one annulus, analytic.
+
+    The momentum side (_momentum_side) is mfac v sqrt(Vs^2 + w^2) times the loss factor of
+    1/sin phi = sqrt(w^2 + (Omega y)^2) / w, w the axial mass-flow velocity
+    (:func:`_mass_flow_partials`; |Vc + v| with Glauert's momentum).
+    """
+    w, w_v, w_vc, w_vs = _mass_flow_partials(v, Vc, Vs, emp)
+    W = np.sqrt(Vs * Vs + w * w) + 1e-300
+    m = mfac * v * W
+    m_w = mfac * v * w / W  # dm/dw
+    m_v = mfac * W + m_w * w_v
+    m_vc = m_w * w_vc
+    m_vs = mfac * v * Vs / W + m_w * w_vs
+    floss = 1.0
+    f_w = 0.0  # dF/dw and dF/d(Omega y)
+    f_wy = 0.0
+    if ct >= 0.0 or ch >= 0.0:
+        wy = Om * y
+        root = np.sqrt(w * w + wy * wy)
+        inv_sin = root / (w + 1e-300)
+        ds_w = -wy * wy / (w * w * root + 1e-300)
+        ds_wy = wy / (w * root + 1e-300)
+        ft = _prandtl(ct, inv_sin) if ct >= 0.0 else 1.0
+        fh = _prandtl(ch, inv_sin) if ch >= 0.0 else 1.0
+        dfs = (_prandtl_slope(ct, inv_sin) * fh if ct >= 0.0 else 0.0) + \
+            (_prandtl_slope(ch, inv_sin) * ft if ch >= 0.0 else 0.0)
+        floss = ft * fh
+        f_w = dfs * ds_w
+        f_wy = dfs * ds_wy
+    return (floss * m_v + f_w * w_v * m, f_wy * y * m, floss * m_vs + f_w * w_vs * m, floss * m_vc + f_w * w_vc * m)
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _partials(v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, hth, sthp, cthp, sinpsi, naz, model, pk):
+    """Partial derivatives of one annulus' blade sums at the fixed inflow v.
+
+    At every azimuth node the element (its thrust and in-plane force, qT and qH) depends on
+    the inputs only through U_T = Omega y + V sin(beta) sin(psi), U_P = V cos(beta) + v, the
+    blade angle and the section constants ``s``, which depend on the annulus' mean square
+    speed U2 only. One pass over the nodes evaluates the element at the base and at U_T + hT,
+    U_P + hP, the constants ``u`` (those at U2 + its step, the caller's) and, if ``hth`` > 0,
+    the blade angle + hth (sine and cosine ``sthp``, ``cthp``), and sums the one-sided
+    differences, weighted by 1, sin(psi) and sin(psi)^2 as the loads need them (thrust,
+    in-plane force, torque and rolling moment are sums of qT, qH sin, qH and qT sin). Returns
+    per unit step the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P
+    sums, the U2 sums (not divided by U2's step, which the caller knows) and the blade-angle
+    sums (each qT, qT sin, qH, qH sin; 0 without ``hth``): 18 numbers, not yet divided by
+    the node count.
+    """
+    tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
+    pT = pTs = pH = pHs = 0.0
+    uT = uTs = uH = uHs = 0.0
+    cT = cTs = cH = cHs = 0.0
+    UP = Vc + v
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for k in range(naz):
+            sk = sinpsi[k]
+            UT = Om * y + Vs * sk
+            q0, h0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            q1, h1 = _element_cambered(UT + hT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
+                                       a7)
+            q2, h2 = _element_cambered(UT, UP + hP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
+                                       a7)
+            q3, h3 = _element_cambered(UT, UP, th, sth, cth, u[0], u[1], u[2], u[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            d = q1 - q0
+            e = h1 - h0
+            tT += d
+            tTs += d * sk
+            tTs2 += d * sk * sk
+            tH += e
+            tHs += e * sk
+            tHs2 += e * sk * sk
+            d = q2 - q0
+            e = h2 - h0
+            pT += d
+            pTs += d * sk
+            pH += e
+            pHs += e * sk
+            d = q3 - q0
+            e = h3 - h0
+            uT += d
+            uTs += d * sk
+            uH += e
+            uHs += e * sk
+        if hth > 0.0:
+            for k in range(naz):
+                sk = sinpsi[k]
+                UT = Om * y + Vs * sk
+                q0, h0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
+                                           a7)
+                q4, h4 = _element_cambered(UT, UP, th + hth, sthp, cthp, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4,
+                                           a5, a6, a7)
+                d = q4 - q0
+                e = h4 - h0
+                cT += d
+                cTs += d * sk
+                cH += e
+                cHs += e * sk
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
+            sk = sinpsi[k]
+            UT = Om * y + Vs * sk
+            q0, h0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q1, h1 = _element_gill(UT + hT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q2, h2 = _element_gill(UT, UP + hP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            d = q1 - q0
+            e = h1 - h0
+            tT += d
+            tTs += d * sk
+            tTs2 += d * sk * sk
+            tH += e
+            tHs += e * sk
+            tHs2 += e * sk * sk
+            d = q2 - q0
+            e = h2 - h0
+            pT += d
+            pTs += d * sk
+            pH += e
+            pHs += e * sk
+        if hth > 0.0:
+            for k in range(naz):
+                sk = sinpsi[k]
+                UT = Om * y + Vs * sk
+                q0, h0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+                q4, h4 = _element_gill(UT, UP, th + hth, sthp, cthp, s[0], g0, g1, g2, g3, g4, g5, sincos)
+                d = q4 - q0
+                e = h4 - h0
+                cT += d
+                cTs += d * sk
+                cH += e
+                cHs += e * sk
+    kT = 1.0 / hT
+    kP = 1.0 / hP
+    kth = 1.0 / hth if hth > 0.0 else 0.0
+    return (tT * kT, tTs * kT, tTs2 * kT, tH * kT, tHs * kT, tHs2 * kT,
+            pT * kP, pTs * kP, pH * kP, pHs * kP, uT, uTs, uH, uHs, cT * kth, cTs * kth, cH * kth, cHs * kth)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
            pkpm, campm, cam_same, hpar, scpm, hrho, out):
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     n_par = hpar.shape[0]
-    n_all = n_in + n_par + (1 if hrho > 0.0 else 0)
+    n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
     if not ok[i]:
         for q in range(5):
             for p in range(n_all):
@@ -145,8 +345,12 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         for p in range(n_all):
             out[q, p, i] = 0.0
     wy = 0.0  # the mean inflow's weights (as _solve_batch: annulus area)
+    m2 = 0.0  # the mean of sin(psi)^2 over the half circle's nodes (the axial point's one node stands for them)
     for j in range(nr):
         wy += w[j] * y[j]
+    for k in range(naz_half):
+        m2 += sinpsi[k] * sinpsi[k]
+    m2 /= naz_half
     om, dth = Om[i], coll[i]
     sb = np.sin(b[i])
     cb = np.cos(b[i])
@@ -154,6 +358,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     vc = V[i] * cb
     if abs(vs) < 1e-12 * V[i]:
         vs = 0.0
+    axial = vs == 0.0
+    naz = 1 if axial else naz_half  # in axial flow the integrand does not depend on psi
     # each input's direction in (Omega, V sin beta, V cos beta, collective) and its step
     e = np.zeros((4, 4))
     e[0, 0] = 1.0
@@ -162,115 +368,127 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     e[2, 1] = V[i] * cb
     e[2, 2] = -V[i] * sb
     e[3, 3] = 1.0
-    if vs == 0.0:  # axial: exactly no in-plane speed along the airspeed's ray
+    if axial and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray (V sin beta snapped to 0)
         e[1, 1] = 0.0
     hx = np.empty(4)
     hx[0] = STEP * om
     hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
     hx[2] = STEP
     hx[3] = STEP
-    # at V = 0 the airspeed only grows: a one-sided (second-order) difference along the ray
+    # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
-    dL = np.empty(4)
-    Lv = np.empty(4)
-    L0 = np.empty(5)
+    dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     for j in range(nr):
         vj = v[i, j]
+        yj = y[j]
         th = th0[j] + dth
         sth = np.sin(th)
         cth = np.cos(th)
-        s0, s1, s2, s3 = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, cam)
-        # in axial flow the integrand does not depend on psi: one node, except where V sin beta is perturbed
-        naz = 1 if vs == 0.0 else naz_half
-        hv = STEP * (abs(vj) + abs(vc) + 0.01 * om * y[j] + 1e-9)
-        gp, t1, d1, q1, r1 = _annulus(vj + hv, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j], mfac[j],
-                                      ct[j], ch[j], sinpsi, naz, model, pk, emp)
-        gm, t2, d2, q2, r2 = _annulus(vj - hv, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j], mfac[j],
-                                      ct[j], ch[j], sinpsi, naz, model, pk, emp)
-        Gv = (gp - gm) / (2.0 * hv)
-        Lv[0] = (t1 - t2) / (2.0 * hv)
-        Lv[1] = (d1 - d2) / (2.0 * hv)
-        Lv[2] = (q1 - q2) / (2.0 * hv)
-        Lv[3] = (r1 - r2) / (2.0 * hv)
-        if vs == 0.0:  # exactly 0 by symmetry in axial flow (as annulus_loads)
-            Lv[1] = 0.0
-            Lv[3] = 0.0
-        if one_sided:
-            L0[0], L0[1], L0[2], L0[3], L0[4] = _annulus(vj, om, vs, vc, y[j], th, sth, cth, s0, s1, s2, s3, cfac[j],
-                                                         mfac[j], ct[j], ch[j], sinpsi, naz, model, pk, emp)
-            L0[2] = 0.0  # D and M_R vanish at V = 0
-            L0[4] = 0.0
+        s = _constants(om, vs, vc, yj, sc[j], cy2[j], model, cam)
+        U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
+        hU = ONE_SIDED * U2 + 1e-300
+        u = _constants_u2(U2 + hU, sc[j], cy2[j], model, cam)
+        scale = abs(om * yj) + abs(vs) + abs(vc) + abs(vj) + 1e-9  # the element's speed scale [m/s]
+        hT = ONE_SIDED * scale
+        hP = ONE_SIDED * scale
+        hth = ONE_SIDED if n_in == 4 else 0.0
+        r = _partials(vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, hth, np.sin(th + hth), np.cos(th + hth),
+                      sinpsi, naz, model, pk)
+        cf = cfac[j] / naz
+        cq = yj * cf
+        kU = cf / hU
+        kUq = cq / hU
+        if axial:  # one node: its sin(psi)-weighted sums are those of the half circle (mean sin 0, sin^2 m2)
+            tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, r[0] * m2, 0.0, r[3] * m2, 0.0, 0.0, 0.0, 0.0, \
+                0.0, 0.0
+        else:
+            tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = r[1], r[2], r[4], r[5], r[7], r[9], r[11], r[13], \
+                r[15], r[17]
+        # d(T, D, Q, R)/d(U_T uniform), d/d(U_T sin psi), d/dU_P, d/dU2, d/dtheta (the loads' scales applied)
+        Lv0, Lv1, Lv2, Lv3 = r[6] * cf, pHs * cf, r[8] * cq, pTs * cq  # d/dv = d/dU_P
+        uu0, uu1, uu2, uu3 = r[10] * kU, uHs * kU, r[12] * kUq, uTs * kUq
+        # Omega: U_T by y, U2 by 2 Omega y^2
+        f = 2.0 * om * yj * yj
+        dB[0, 0] = yj * r[0] * cf + f * uu0
+        dB[1, 0] = yj * tHs * cf + f * uu1
+        dB[2, 0] = yj * r[3] * cq + f * uu2
+        dB[3, 0] = yj * tTs * cq + f * uu3
+        # V sin beta: U_T by sin psi, U2 by V sin beta
+        dB[0, 1] = tTs * cf + vs * uu0
+        dB[1, 1] = tHs2 * cf + vs * uu1
+        dB[2, 1] = tHs * cq + vs * uu2
+        dB[3, 1] = tTs2 * cq + vs * uu3
+        # V cos beta: U_P by 1, U2 by 2 V cos beta
+        dB[0, 2] = Lv0 + 2.0 * vc * uu0
+        dB[1, 2] = Lv1 + 2.0 * vc * uu1
+        dB[2, 2] = Lv2 + 2.0 * vc * uu2
+        dB[3, 2] = Lv3 + 2.0 * vc * uu3
+        dB[0, 3] = r[14] * cf
+        dB[1, 3] = cHs * cf
+        dB[2, 3] = r[16] * cq
+        dB[3, 3] = cTs * cq
+        # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0,
+        # v = -V cos beta / 2) and at V = 0, where the solver's own momentum side is differenced (central;
+        # one-sided along the airspeed's ray at V = 0)
+        analytic = not emp or (not one_sided and vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
+        if analytic:
+            mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
+        else:
+            hv = STEP * (abs(vj) + abs(vc) + 0.01 * om * yj + 1e-9)
+            mv = (_momentum_side(vj + hv, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
+                  - _momentum_side(vj - hv, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)) / (2.0 * hv)
+            mom_om = mom_vs = mom_vc = 0.0
+        Gv = Lv0 - mv
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
             h = hx[p]
-            k2 = 1.0 / (2.0 * h)
-            if p == 1 and one_sided:
-                s0a, s1a, s2a, s3a = _constants(om, h * sb, h * cb, y[j], sc[j], cy2[j], model, cam)
-                s0b, s1b, s2b, s3b = _constants(om, 2 * h * sb, 2 * h * cb, y[j], sc[j], cy2[j], model, cam)
-                nz = naz_half if sb != 0.0 else 1
-                g1, t1, d1, q1, r1 = _annulus(vj, om, h * sb, h * cb, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j],
-                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
-                g2, t2, d2, q2, r2 = _annulus(vj, om, 2 * h * sb, 2 * h * cb, y[j], th, sth, cth, s0b, s1b, s2b, s3b,
-                                              cfac[j], mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
-                dv = -((4.0 * g1 - g2 - 3.0 * L0[0]) * k2) / Gv
-                dL[0] = (4.0 * t1 - t2 - 3.0 * L0[1]) * k2
-                dL[1] = (4.0 * d1 - d2 - 3.0 * L0[2]) * k2
-                dL[2] = (4.0 * q1 - q2 - 3.0 * L0[3]) * k2
-                dL[3] = (4.0 * r1 - r2 - 3.0 * L0[4]) * k2
-                if nz == 1:  # along the axis: D and M_R stay 0
-                    dL[1] = 0.0
-                    dL[3] = 0.0
+            if p == 3:
+                dmom = 0.0
+            elif analytic:
+                dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
+            elif p == 1 and one_sided:
+                m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
+                m1 = _momentum_side(vj, om, h * sb, h * cb, yj, mfac[j], ct[j], ch[j], emp)
+                m2_ = _momentum_side(vj, om, 2 * h * sb, 2 * h * cb, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h)
             else:
-                a_om, a_vs, a_vc = om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2]
-                b_om, b_vs, b_vc = om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2]
-                if p == 3:
-                    tha, thb = th + h, th - h
-                    stha, ctha, sthb, cthb = np.sin(tha), np.cos(tha), np.sin(thb), np.cos(thb)
-                    s0a, s1a, s2a, s3a = s0, s1, s2, s3
-                    s0b, s1b, s2b, s3b = s0, s1, s2, s3
-                else:
-                    tha, thb, stha, ctha, sthb, cthb = th, th, sth, cth, sth, cth
-                    s0a, s1a, s2a, s3a = _constants(a_om, a_vs, a_vc, y[j], sc[j], cy2[j], model, cam)
-                    s0b, s1b, s2b, s3b = _constants(b_om, b_vs, b_vc, y[j], sc[j], cy2[j], model, cam)
-                nz = naz_half if e[p, 1] != 0.0 else naz
-                gp, t1, d1, q1, r1 = _annulus(vj, a_om, a_vs, a_vc, y[j], tha, stha, ctha, s0a, s1a, s2a, s3a, cfac[j],
-                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
-                gm, t2, d2, q2, r2 = _annulus(vj, b_om, b_vs, b_vc, y[j], thb, sthb, cthb, s0b, s1b, s2b, s3b, cfac[j],
-                                              mfac[j], ct[j], ch[j], sinpsi, nz, model, pk, emp)
-                dv = -((gp - gm) * k2) / Gv
-                dL[0] = (t1 - t2) * k2
-                dL[1] = (d1 - d2) * k2
-                dL[2] = (q1 - q2) * k2
-                dL[3] = (r1 - r2) * k2
-                if nz == 1:  # in axial flow, V sin beta unchanged: D and M_R stay 0 (one node has no symmetry)
-                    dL[1] = 0.0
-                    dL[3] = 0.0
-            for q in range(4):
-                out[q, p, i] += w[j] * (dL[q] + Lv[q] * dv)
-            out[4, p, i] += w[j] * y[j] * dv / wy
-        for k in range(n_par):  # section parameters: the element's constants pk and the annulus' cam at +-
+                dmom = (_momentum_side(vj, om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2], yj, mfac[j], ct[j],
+                                       ch[j], emp)
+                        - _momentum_side(vj, om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2], yj, mfac[j], ct[j],
+                                         ch[j], emp)) / (2.0 * h)
+            dL0 = dB[0, 0] * e[p, 0] + dB[0, 1] * e[p, 1] + dB[0, 2] * e[p, 2] + dB[0, 3] * e[p, 3]
+            dL1 = dB[1, 0] * e[p, 0] + dB[1, 1] * e[p, 1] + dB[1, 2] * e[p, 2] + dB[1, 3] * e[p, 3]
+            dL2 = dB[2, 0] * e[p, 0] + dB[2, 1] * e[p, 1] + dB[2, 2] * e[p, 2] + dB[2, 3] * e[p, 3]
+            dL3 = dB[3, 0] * e[p, 0] + dB[3, 1] * e[p, 1] + dB[3, 2] * e[p, 2] + dB[3, 3] * e[p, 3]
+            dv = -(dL0 - dmom) / Gv
+            out[0, p, i] += w[j] * (dL0 + Lv0 * dv)
+            out[2, p, i] += w[j] * (dL2 + Lv2 * dv)
+            if not axial or (e[p, 1] != 0.0):
+                out[1, p, i] += w[j] * (dL1 + Lv1 * dv)
+                out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
+            out[4, p, i] += w[j] * yj * dv / wy
+        Lv = (Lv0, Lv1, Lv2, Lv3)
+        if n_par > 0 or hrho != 0.0:  # the base by the same code as the stepped sums: a parameter that does
+            # not enter the model differs by exactly 0
+            T0, D0, Q0, R0 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, s[0], s[1], s[2], s[3], cfac[j], sinpsi,
+                                         naz, model, pk)
+        for k in range(n_par):  # section parameters: the element's constants pk and the annulus' cam at one side
             # the loss factor and the momentum side do not depend on them: G changes by the blade's thrust
             if cam_same[k]:
-                s0a, s1a, s2a, s3a, s0b, s1b, s2b, s3b = s0, s1, s2, s3, s0, s1, s2, s3
+                sa = s
             else:
-                s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, campm[0, k])
-                s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], sc[j], cy2[j], model, campm[1, k])
-            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], sinpsi, naz,
-                                         model, pkpm[0, k])
-            t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
-                                         model, pkpm[1, k])
-            _add_fixed_root(out, n_in + k, i, w[j], w[j] * y[j] / wy, Lv, Gv, t1 - t2, d1 - d2, q1 - q2, r1 - r2,
-                            hpar[k], naz == 1)
-        if hrho > 0.0:  # the air density through the Reynolds number: sc at rho +- (cfac, mfac scale out)
-            s0a, s1a, s2a, s3a = _constants(om, vs, vc, y[j], scpm[0, j], cy2[j], model, cam)
-            s0b, s1b, s2b, s3b = _constants(om, vs, vc, y[j], scpm[1, j], cy2[j], model, cam)
-            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0a, s1a, s2a, s3a, cfac[j], sinpsi, naz,
-                                         model, pk)
-            t2, d2, q2, r2 = _blade_sums(vj, om, vs, vc, y[j], th, sth, cth, s0b, s1b, s2b, s3b, cfac[j], sinpsi, naz,
-                                         model, pk)
-            _add_fixed_root(out, n_in + n_par, i, w[j], w[j] * y[j] / wy, Lv, Gv, t1 - t2, d1 - d2, q1 - q2, r1 - r2,
-                            hrho, naz == 1)
+                sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[k])
+            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, sa[0], sa[1], sa[2], sa[3], cfac[j], sinpsi,
+                                         naz, model, pkpm[k])
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, t1 - T0, d1 - D0, q1 - Q0, r1 - R0,
+                            hpar[k], axial)
+        if hrho != 0.0:  # the air density through the Reynolds number: sc at rho + its step (cfac, mfac scale out)
+            sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
+            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, sa[0], sa[1], sa[2], sa[3], cfac[j], sinpsi,
+                                         naz, model, pk)
+            _add_fixed_root(out, n_in + n_par, i, w[j], w[j] * yj / wy, Lv, Gv, t1 - T0, d1 - D0, q1 - Q0, r1 - R0,
+                            hrho, axial)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
@@ -284,17 +502,16 @@ def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, 
     every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
     Section parameters (packed, so that the argument list stays short enough for numba's
-    inliner): ``pkpm`` shape (2, n_par, N_PK) and ``campm`` shape (2, n_par, 8), the element
-    and annulus constants at each parameter's upper [0] and lower [1] value,
-    ``cam_same`` shape (n_par,) bool: the parameter leaves ``cam`` unchanged (its annulus
-    constants are not recomputed), ``hpar`` shape (n_par,) the distance between the two
-    values (n_par may be 0). The air density (``hrho`` > 0, the distance between its two
-    values; 0: not asked): ``scpm`` shape (2, nr), the section constant sc at them; the
-    output's last row is then the Reynolds part of dL/drho (the caller adds L / rho, the
-    part of cfac and mfac, which scale the residual and leave the root unchanged). ``out`` shape
-    (5, n_in + n_par, n). Each derivative is a directional one in (Omega, V sin
-    beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0) and the
-    incidence's is 0.
+    inliner): ``pkpm`` shape (n_par, N_PK) and ``campm`` shape (n_par, 8), the element and
+    annulus constants at each parameter's stepped value, ``cam_same`` shape (n_par,) bool:
+    the parameter leaves ``cam`` unchanged (its annulus constants are not recomputed),
+    ``hpar`` shape (n_par,) the step (stepped value - value, either sign; n_par may be 0).
+    The air density (``hrho`` != 0, its step; 0: not asked): ``scpm`` shape (nr,), the
+    section constant sc at the stepped density; the output's last row is then the Reynolds
+    part of dL/drho (the caller adds L / rho, the part of cfac and mfac, which scale the
+    residual and leave the root unchanged). ``out`` shape (5, n_in + n_par, n). Each
+    derivative is a directional one in (Omega, V sin beta, V cos beta, collective); at V = 0
+    the airspeed's is one-sided (V >= 0) and the incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
         _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,

@@ -810,28 +810,29 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
 NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
 #: fields that enter neither the element's nor the annulus' constants: refused as derivatives
 NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance")
-#: relative step of a section parameter's difference (of max(|value|, PARAM_FLOOR))
-PARAM_STEP = 1e-5
+#: a section parameter's step is _sensitivity.ONE_SIDED of max(|value|, PARAM_FLOOR)
 PARAM_FLOOR = 0.01
 
 
 def _parameter_constants(names, params, air):
-    """(pk+, pk-, cam+, cam-, span) of each section parameter in ``names``: the element and
-    annulus constants at the parameter's value +- its step (one-sided where the other side
-    leaves the parameter's range), the distance between the two values.
+    """(pk, cam, step) of each section parameter in ``names``: the element and annulus
+    constants at the parameter's value + its step (- its step where + leaves the parameter's
+    range), and that step (either sign), for the kernel's one-sided differences.
 
     Raises
     ------
     ValueError
         A parameter that is not a number, one that changes the blade's nodes (the
         Reynolds reference, the Blasius factor, the loss switches; ``collective`` is the
-        input of that name) rather than the section's constants, or ``flap_compliance``
-        (flapping is not differentiated).
+        input of that name) rather than the section's constants, ``flap_compliance``
+        (flapping is not differentiated), or one that admits no step within its range.
     """
+    from ._sensitivity import ONE_SIDED
+
     n = len(names)
-    pkp, pkm = np.empty((n, ph.N_PK)), np.empty((n, ph.N_PK))
-    camp, camm = np.empty((n, 8)), np.empty((n, 8))
-    span = np.empty(n)
+    pks = np.empty((n, ph.N_PK))
+    cams = np.empty((n, 8))
+    step = np.empty(n)
     for k, name in enumerate(names):
         if name == "flap_compliance":  # enters neither pk nor cam: its difference would say 0
             raise ValueError("derivatives with respect to flap_compliance are not supported: flapping is not "
@@ -842,20 +843,19 @@ def _parameter_constants(names, params, air):
         x = getattr(params, name)
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")
-        h = PARAM_STEP * max(abs(float(x)), PARAM_FLOOR)
-        sides = []
-        for step in (h, -h):
+        h = ONE_SIDED * max(abs(float(x)), PARAM_FLOOR)
+        for dx in (h, -h):
             try:
-                sides.append((float(x) + step, params.replace(**{name: float(x) + step})))
-            except ValueError:  # beyond the parameter's range: one-sided
-                sides.append((float(x), params))
-        (xa, pa), (xb, pb) = sides
-        if xa == xb:
+                stepped = params.replace(**{name: float(x) + dx})
+            except ValueError:  # beyond the parameter's range: the other side
+                continue
+            break
+        else:
             raise ValueError(f"derivatives: {name} = {x!r} admits no step within its range")
-        pkp[k], pkm[k] = _model_constants(pa)[1], _model_constants(pb)[1]
-        camp[k], camm[k] = _cambered_args(pa, air), _cambered_args(pb, air)
-        span[k] = xa - xb
-    return pkp, pkm, camp, camm, span
+        pks[k] = _model_constants(stepped)[1]
+        cams[k] = _cambered_args(stepped, air)
+        step[k] = (float(x) + dx) - float(x)  # the step as represented
+    return pks, cams, step
 
 
 def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
@@ -866,23 +866,19 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
 
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
     names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w != RHO]
-    scp = scm = nd.sc
+    scp = nd.sc
     hrho = 0.0
     if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
-        h = PARAM_STEP * air.rho
-        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho + h),
+        hrho = _sensitivity.ONE_SIDED * air.rho
+        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho + hrho),
                      params).sc
-        scm = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho - h),
-                     params).sc
-        hrho = 2 * h
     n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
-    pkp, pkm, camp, camm, span = _parameter_constants(names, params, air)
+    pks, cams, step = _parameter_constants(names, params, air)
     raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names) + (RHO in wrt), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
-                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, np.stack([pkp, pkm]),
-                               np.stack([camp, camm]), np.all(camp == cam, axis=1) & np.all(camm == cam, axis=1), span,
-                               np.stack([scp, scm]), hrho, raw)
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pks, cams,
+                               np.all(cams == cam, axis=1), step, np.ascontiguousarray(scp, dtype=float), hrho, raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)
