@@ -76,36 +76,6 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
     return _constants_u2((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
 
 
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: many call sites (compile time)
-def _blade_sums(v, Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, naz, model, pk):
-    """(dT/dy, dD/dy, dQ/dy, dM_R/dy) of one annulus at inflow v and inputs (Om, Vs, Vc), blade
-    angle th (its sine and cosine) and section constants s0..s3: _kernel.annulus_loads with the
-    uniform inflow, one loop per section model (straight-line SIMD code, as _kernel._residual)."""
-    aT = 0.0
-    aD = 0.0
-    aQ = 0.0
-    aR = 0.0
-    UP = Vc + v
-    if model == CAMBERED:
-        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
-        for k in range(naz):
-            qT, qH = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
-                                       a0, a1, a2, a3, a4, a5, a6, a7)
-            aT += qT
-            aD += qH * sinpsi[k]
-            aQ += qH
-            aR += qT * sinpsi[k]
-    else:
-        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
-        for k in range(naz):
-            qT, qH = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
-            aT += qT
-            aD += qH * sinpsi[k]
-            aQ += qH
-            aR += qT * sinpsi[k]
-    return cfac * aT / naz, cfac * aD / naz, y * cfac * aQ / naz, y * cfac * aR / naz
-
-
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
     """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
@@ -222,111 +192,136 @@ def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _partials(v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, hth, sthp, cthp, sinpsi, naz, model, pk):
-    """Partial derivatives of one annulus' blade sums at the fixed inflow v.
+def _base(q0, h0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
+    """The element's thrust and in-plane force (qT, qH) at each of the ``naz`` nodes of one
+    annulus, written into ``q0`` and ``h0``: the base of :func:`_pass`' differences."""
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for k in range(naz):
+            q0[k], h0[k] = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1,
+                                             a2, a3, a4, a5, a6, a7)
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for k in range(naz):
+            q0[k], h0[k] = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5,
+                                         sincos)
 
-    At every azimuth node the element (its thrust and in-plane force, qT and qH) depends on
-    the inputs only through U_T = Omega y + V sin(beta) sin(psi), U_P = V cos(beta) + v, the
-    blade angle and the section constants ``s``, which depend on the annulus' mean square
-    speed U2 only. One pass over the nodes evaluates the element at the base and at U_T + hT,
-    U_P + hP, the constants ``u`` (those at U2 + its step, the caller's) and, if ``hth`` > 0,
-    the blade angle + hth (sine and cosine ``sthp``, ``cthp``), and sums the one-sided
-    differences, weighted by 1, sin(psi) and sin(psi)^2 as the loads need them (thrust,
-    in-plane force, torque and rolling moment are sums of qT, qH sin, qH and qT sin). Returns
-    per unit step the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P
-    sums, the U2 sums (not divided by U2's step, which the caller knows) and the blade-angle
-    sums (each qT, qT sin, qH, qH sin; 0 without ``hth``): 18 numbers, not yet divided by
-    the node count.
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _pass(q0, h0, Om, Vs, UP, y, dUT, th, sth, cth, s, sinpsi, naz, model, pk):
+    """One perturbed pass over the nodes of one annulus: the element at U_T + ``dUT`` and the
+    given U_P, blade angle and section constants, less the base (q0, h0 of :func:`_base`).
+
+    At every azimuth node the element depends on the inputs only through U_T = Omega y +
+    V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the section constants,
+    so the caller perturbs one of them per pass. Returns the differences' sums weighted as
+    the loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
+    qH sin(psi), qH and qT sin(psi); a U_T step along sin(psi) adds one more sin): qT,
+    qT sin, qT sin^2, qH, qH sin, qH sin^2, not divided by the step or the node count.
+    """
+    aT = aTs = aTs2 = aH = aHs = aHs2 = 0.0
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for k in range(naz):
+            sk = sinpsi[k]
+            q, h = _element_cambered(Om * y + Vs * sk + dUT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
+                                     a4, a5, a6, a7)
+            d = q - q0[k]
+            e = h - h0[k]
+            aT += d
+            aTs += d * sk
+            aTs2 += d * sk * sk
+            aH += e
+            aHs += e * sk
+            aHs2 += e * sk * sk
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for k in range(naz):
+            sk = sinpsi[k]
+            q, h = _element_gill(Om * y + Vs * sk + dUT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            d = q - q0[k]
+            e = h - h0[k]
+            aT += d
+            aTs += d * sk
+            aTs2 += d * sk * sk
+            aH += e
+            aHs += e * sk
+            aHs2 += e * sk * sk
+    return aT, aTs, aTs2, aH, aHs, aHs2
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _partials(q0, h0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk):
+    """The inputs' passes over the nodes of one annulus, fused: :func:`_base` (written into
+    ``q0``, ``h0``) and :func:`_pass` at U_T + ``hT``, at U_P + ``hP`` and, for the cambered
+    section, at the constants ``u`` (those at U2 + its step), in one loop, which keeps the
+    four element evaluations per node in flight together (measured: the derivatives' cost
+    over the loads' about half that of four separate loops, benchmarks/README.md). Returns
+    the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P and the U2 sums
+    (qT, qT sin, qH, qH sin each), not divided by the steps or the node count.
     """
     tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
     pT = pTs = pH = pHs = 0.0
     uT = uTs = uH = uHs = 0.0
-    cT = cTs = cH = cHs = 0.0
     UP = Vc + v
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
             sk = sinpsi[k]
             UT = Om * y + Vs * sk
-            q0, h0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            b0, c0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            q0[k] = b0
+            h0[k] = c0
             q1, h1 = _element_cambered(UT + hT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
                                        a7)
             q2, h2 = _element_cambered(UT, UP + hP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
                                        a7)
             q3, h3 = _element_cambered(UT, UP, th, sth, cth, u[0], u[1], u[2], u[3], a0, a1, a2, a3, a4, a5, a6, a7)
-            d = q1 - q0
-            e = h1 - h0
+            d = q1 - b0
+            e = h1 - c0
             tT += d
             tTs += d * sk
             tTs2 += d * sk * sk
             tH += e
             tHs += e * sk
             tHs2 += e * sk * sk
-            d = q2 - q0
-            e = h2 - h0
+            d = q2 - b0
+            e = h2 - c0
             pT += d
             pTs += d * sk
             pH += e
             pHs += e * sk
-            d = q3 - q0
-            e = h3 - h0
+            d = q3 - b0
+            e = h3 - c0
             uT += d
             uTs += d * sk
             uH += e
             uHs += e * sk
-        if hth > 0.0:
-            for k in range(naz):
-                sk = sinpsi[k]
-                UT = Om * y + Vs * sk
-                q0, h0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
-                                           a7)
-                q4, h4 = _element_cambered(UT, UP, th + hth, sthp, cthp, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4,
-                                           a5, a6, a7)
-                d = q4 - q0
-                e = h4 - h0
-                cT += d
-                cTs += d * sk
-                cH += e
-                cHs += e * sk
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
             sk = sinpsi[k]
             UT = Om * y + Vs * sk
-            q0, h0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            b0, c0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q0[k] = b0
+            h0[k] = c0
             q1, h1 = _element_gill(UT + hT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             q2, h2 = _element_gill(UT, UP + hP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            d = q1 - q0
-            e = h1 - h0
+            d = q1 - b0
+            e = h1 - c0
             tT += d
             tTs += d * sk
             tTs2 += d * sk * sk
             tH += e
             tHs += e * sk
             tHs2 += e * sk * sk
-            d = q2 - q0
-            e = h2 - h0
+            d = q2 - b0
+            e = h2 - c0
             pT += d
             pTs += d * sk
             pH += e
             pHs += e * sk
-        if hth > 0.0:
-            for k in range(naz):
-                sk = sinpsi[k]
-                UT = Om * y + Vs * sk
-                q0, h0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-                q4, h4 = _element_gill(UT, UP, th + hth, sthp, cthp, s[0], g0, g1, g2, g3, g4, g5, sincos)
-                d = q4 - q0
-                e = h4 - h0
-                cT += d
-                cTs += d * sk
-                cH += e
-                cHs += e * sk
-    kT = 1.0 / hT
-    kP = 1.0 / hP
-    kth = 1.0 / hth if hth > 0.0 else 0.0
-    return (tT * kT, tTs * kT, tTs2 * kT, tH * kT, tHs * kT, tHs2 * kT,
-            pT * kP, pTs * kP, pH * kP, pHs * kP, uT, uTs, uH, uHs, cT * kth, cTs * kth, cH * kth, cHs * kth)
+    return tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -378,6 +373,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
+    q0 = np.empty(naz_half)  # the element at the root, per node
+    h0 = np.empty(naz_half)
     for j in range(nr):
         vj = v[i, j]
         yj = y[j]
@@ -391,27 +388,38 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         scale = abs(om * yj) + abs(vs) + abs(vc) + abs(vj) + 1e-9  # the element's speed scale [m/s]
         hT = ONE_SIDED * scale
         hP = ONE_SIDED * scale
-        hth = ONE_SIDED if n_in == 4 else 0.0
-        r = _partials(vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, hth, np.sin(th + hth), np.cos(th + hth),
-                      sinpsi, naz, model, pk)
+        hth = ONE_SIDED
+        UP = vc + vj
+        if n_in > 0:  # the inputs' passes, fused (the U_P pass is d/dv as well)
+            tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = _partials(
+                q0, h0, vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk)
+        else:  # the U_P pass only (dG/dv)
+            _base(q0, h0, om, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
+            pT, pTs, _, pH, pHs, _ = _pass(q0, h0, om, vs, UP + hP, yj, 0.0, th, sth, cth, s, sinpsi, naz, model, pk)
+            tT = tTs = tTs2 = tH = tHs = tHs2 = uT = uTs = uH = uHs = 0.0
+        kP = 1.0 / hP
+        cT = cTs = cH = cHs = 0.0
+        if n_in == 4:
+            cT, cTs, _, cH, cHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th + hth, np.sin(th + hth), np.cos(th + hth),
+                                           s, sinpsi, naz, model, pk)
+        kT = 1.0 / hT
+        kth = 1.0 / hth
         cf = cfac[j] / naz
         cq = yj * cf
         kU = cf / hU
         kUq = cq / hU
         if axial:  # one node: its sin(psi)-weighted sums are those of the half circle (mean sin 0, sin^2 m2)
-            tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, r[0] * m2, 0.0, r[3] * m2, 0.0, 0.0, 0.0, 0.0, \
-                0.0, 0.0
-        else:
-            tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = r[1], r[2], r[4], r[5], r[7], r[9], r[11], r[13], \
-                r[15], r[17]
-        # d(T, D, Q, R)/d(U_T uniform), d/d(U_T sin psi), d/dU_P, d/dU2, d/dtheta (the loads' scales applied)
-        Lv0, Lv1, Lv2, Lv3 = r[6] * cf, pHs * cf, r[8] * cq, pTs * cq  # d/dv = d/dU_P
-        uu0, uu1, uu2, uu3 = r[10] * kU, uHs * kU, r[12] * kUq, uTs * kUq
+            tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
+                0.0
+        # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
+        Lv0, Lv1, Lv2, Lv3 = pT * kP * cf, pHs * kP * cf, pH * kP * cq, pTs * kP * cq
+        uu0, uu1, uu2, uu3 = uT * kU, uHs * kU, uH * kUq, uTs * kUq
+        tT, tTs, tTs2, tH, tHs, tHs2 = tT * kT, tTs * kT, tTs2 * kT, tH * kT, tHs * kT, tHs2 * kT
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
-        dB[0, 0] = yj * r[0] * cf + f * uu0
+        dB[0, 0] = yj * tT * cf + f * uu0
         dB[1, 0] = yj * tHs * cf + f * uu1
-        dB[2, 0] = yj * r[3] * cq + f * uu2
+        dB[2, 0] = yj * tH * cq + f * uu2
         dB[3, 0] = yj * tTs * cq + f * uu3
         # V sin beta: U_T by sin psi, U2 by V sin beta
         dB[0, 1] = tTs * cf + vs * uu0
@@ -423,10 +431,10 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         dB[1, 2] = Lv1 + 2.0 * vc * uu1
         dB[2, 2] = Lv2 + 2.0 * vc * uu2
         dB[3, 2] = Lv3 + 2.0 * vc * uu3
-        dB[0, 3] = r[14] * cf
-        dB[1, 3] = cHs * cf
-        dB[2, 3] = r[16] * cq
-        dB[3, 3] = cTs * cq
+        dB[0, 3] = cT * kth * cf
+        dB[1, 3] = cHs * kth * cf
+        dB[2, 3] = cH * kth * cq
+        dB[3, 3] = cTs * kth * cq
         # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0,
         # v = -V cos beta / 2) and at V = 0, where the solver's own momentum side is differenced (central;
         # one-sided along the airspeed's ray at V = 0)
@@ -469,26 +477,23 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
             out[4, p, i] += w[j] * yj * dv / wy
         Lv = (Lv0, Lv1, Lv2, Lv3)
-        if n_par > 0 or hrho != 0.0:  # the base by the same code as the stepped sums: a parameter that does
-            # not enter the model differs by exactly 0
-            T0, D0, Q0, R0 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, s[0], s[1], s[2], s[3], cfac[j], sinpsi,
-                                         naz, model, pk)
-        for k in range(n_par):  # section parameters: the element's constants pk and the annulus' cam at one side
-            # the loss factor and the momentum side do not depend on them: G changes by the blade's thrust
-            if cam_same[k]:
-                sa = s
+        # section parameters (the element's constants pk, the annulus' cam) and the density (through the
+        # Reynolds constant sc; cfac and mfac scale out): one pass each at the stepped value; the loss factor and
+        # the momentum side do not depend on them, so G changes by the blade's thrust
+        if n_par > 0 or hrho != 0.0:  # the base through the same code: exactly 0 for a parameter that does not enter
+            zT, zTs, _, zH, zHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th, sth, cth, s, sinpsi, naz, model, pk)
+        for k in range(n_par + (1 if hrho != 0.0 else 0)):
+            if k == n_par:
+                sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
+                pka = pk
+                span = hrho
             else:
-                sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[k])
-            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, sa[0], sa[1], sa[2], sa[3], cfac[j], sinpsi,
-                                         naz, model, pkpm[k])
-            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, t1 - T0, d1 - D0, q1 - Q0, r1 - R0,
-                            hpar[k], axial)
-        if hrho != 0.0:  # the air density through the Reynolds number: sc at rho + its step (cfac, mfac scale out)
-            sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
-            t1, d1, q1, r1 = _blade_sums(vj, om, vs, vc, yj, th, sth, cth, sa[0], sa[1], sa[2], sa[3], cfac[j], sinpsi,
-                                         naz, model, pk)
-            _add_fixed_root(out, n_in + n_par, i, w[j], w[j] * yj / wy, Lv, Gv, t1 - T0, d1 - D0, q1 - Q0, r1 - R0,
-                            hrho, axial)
+                sa = s if cam_same[k] else _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[k])
+                pka = pkpm[k]
+                span = hpar[k]
+            aT, aTs, _, aH, aHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th, sth, cth, sa, sinpsi, naz, model, pka)
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, (aT - zT) * cf, (aHs - zHs) * cf,
+                            (aH - zH) * cq, (aTs - zTs) * cq, span, axial)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
