@@ -93,7 +93,7 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
     out[4, p, i] += wvj * dv
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
     """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _annulus)."""
     floss = 1.0
@@ -157,7 +157,7 @@ def _mass_flow_partials(v, Vc, Vs, emp):
     return w, sg * (1.0 - E) + dA_v * E + (A - g) * dE_v, sg * (1.0 - E) + dA_vc * E, (A - g) * dE_vs
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
     """d(F_loss dT_BEMT/dy)/d(v, Omega, V sin beta, V cos beta) of one annulus, analytic.
 
@@ -207,47 +207,43 @@ def _base(q0, h0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
                                          sincos)
 
 
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _pass(q0, h0, Om, Vs, UP, y, dUT, th, sth, cth, s, sinpsi, naz, model, pk):
-    """One perturbed pass over the nodes of one annulus: the element at U_T + ``dUT`` and the
-    given U_P, blade angle and section constants, less the base (q0, h0 of :func:`_base`).
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _pass(q0, h0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
+    """One perturbed pass over the nodes of one annulus: the element at the given U_P, blade
+    angle, section constants and parameters, less the base (q0, h0 of :func:`_base`).
 
     At every azimuth node the element depends on the inputs only through U_T = Omega y +
     V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the section constants,
     so the caller perturbs one of them per pass. Returns the differences' sums weighted as
     the loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
-    qH sin(psi), qH and qT sin(psi); a U_T step along sin(psi) adds one more sin): qT,
-    qT sin, qT sin^2, qH, qH sin, qH sin^2, not divided by the step or the node count.
+    qH sin(psi), qH and qT sin(psi)): qT, qT sin, qH, qH sin, not divided by the step or
+    the node count.
     """
-    aT = aTs = aTs2 = aH = aHs = aHs2 = 0.0
+    aT = aTs = aH = aHs = 0.0
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
             sk = sinpsi[k]
-            q, h = _element_cambered(Om * y + Vs * sk + dUT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
+            q, h = _element_cambered(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
                                      a4, a5, a6, a7)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
-            aTs2 += d * sk * sk
             aH += e
             aHs += e * sk
-            aHs2 += e * sk * sk
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
             sk = sinpsi[k]
-            q, h = _element_gill(Om * y + Vs * sk + dUT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q, h = _element_gill(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
-            aTs2 += d * sk * sk
             aH += e
             aHs += e * sk
-            aHs2 += e * sk * sk
-    return aT, aTs, aTs2, aH, aHs, aHs2
+    return aT, aTs, aH, aHs
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
@@ -375,6 +371,7 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node
     h0 = np.empty(naz_half)
+    ps = np.zeros((4 + n_par, 4))  # the sums of the passes other than the inputs' (below)
     for j in range(nr):
         vj = v[i, j]
         yj = y[j]
@@ -393,15 +390,37 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         if n_in > 0:  # the inputs' passes, fused (the U_P pass is d/dv as well)
             tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = _partials(
                 q0, h0, vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk)
-        else:  # the U_P pass only (dG/dv)
+        else:
             _base(q0, h0, om, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
-            pT, pTs, _, pH, pHs, _ = _pass(q0, h0, om, vs, UP + hP, yj, 0.0, th, sth, cth, s, sinpsi, naz, model, pk)
             tT = tTs = tTs2 = tH = tHs = tHs2 = uT = uTs = uH = uHs = 0.0
+        # the other passes through one (inlined) call: 0 the U_P pass (d/dv) where the inputs' did not run,
+        # 1 the blade angle's, 2 the base again (the section parameters' differences are then exactly 0 for one
+        # that does not enter), 3 + k the k-th section parameter's (the element's constants pk, the annulus'
+        # cam), 3 + n_par the density's (through the Reynolds constant sc; cfac and mfac scale out)
+        for m in range(3 + n_par + (1 if hrho != 0.0 else 0)):
+            if (m == 0 and n_in > 0) or (m == 1 and n_in < 4) or (m == 2 and n_par == 0 and hrho == 0.0):
+                continue
+            up, tha, stha, ctha, sa, pka = UP, th, sth, cth, s, pk
+            if m == 0:
+                up = UP + hP
+            elif m == 1:
+                tha = th + hth
+                stha = np.sin(tha)
+                ctha = np.cos(tha)
+            elif m == n_par + 3:
+                sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
+            elif m >= 3:
+                pka = pkpm[m - 3]
+                if not cam_same[m - 3]:
+                    sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 3])
+            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3] = _pass(q0, h0, om, vs, up, yj, tha, stha, ctha, sa, sinpsi, naz,
+                                                           model, pka)
+        if n_in == 0:
+            pT, pTs, pH, pHs = ps[0, 0], ps[0, 1], ps[0, 2], ps[0, 3]
         kP = 1.0 / hP
         cT = cTs = cH = cHs = 0.0
         if n_in == 4:
-            cT, cTs, _, cH, cHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th + hth, np.sin(th + hth), np.cos(th + hth),
-                                           s, sinpsi, naz, model, pk)
+            cT, cTs, cH, cHs = ps[1, 0], ps[1, 1], ps[1, 2], ps[1, 3]
         kT = 1.0 / hT
         kth = 1.0 / hth
         cf = cfac[j] / naz
@@ -477,23 +496,13 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
             out[4, p, i] += w[j] * yj * dv / wy
         Lv = (Lv0, Lv1, Lv2, Lv3)
-        # section parameters (the element's constants pk, the annulus' cam) and the density (through the
-        # Reynolds constant sc; cfac and mfac scale out): one pass each at the stepped value; the loss factor and
-        # the momentum side do not depend on them, so G changes by the blade's thrust
-        if n_par > 0 or hrho != 0.0:  # the base through the same code: exactly 0 for a parameter that does not enter
-            zT, zTs, _, zH, zHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th, sth, cth, s, sinpsi, naz, model, pk)
+        # section parameters and the density: the loss factor and the momentum side do not depend on them, so G
+        # changes by the blade's thrust
         for k in range(n_par + (1 if hrho != 0.0 else 0)):
-            if k == n_par:
-                sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
-                pka = pk
-                span = hrho
-            else:
-                sa = s if cam_same[k] else _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[k])
-                pka = pkpm[k]
-                span = hpar[k]
-            aT, aTs, _, aH, aHs, _ = _pass(q0, h0, om, vs, UP, yj, 0.0, th, sth, cth, sa, sinpsi, naz, model, pka)
-            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, (aT - zT) * cf, (aHs - zHs) * cf,
-                            (aH - zH) * cq, (aTs - zTs) * cq, span, axial)
+            span = hrho if k == n_par else hpar[k]
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, (ps[3 + k, 0] - ps[2, 0]) * cf,
+                            (ps[3 + k, 3] - ps[2, 3]) * cf, (ps[3 + k, 2] - ps[2, 2]) * cq,
+                            (ps[3 + k, 1] - ps[2, 1]) * cq, span, axial)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
