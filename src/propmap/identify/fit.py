@@ -526,6 +526,14 @@ def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionP
     return base.replace(**kw)
 
 
+def _attach_jacobian(residual, with_jacobian):
+    """Give a residual function its implicit Jacobian: ``residual.with_jacobian(x)`` returns
+    (residual, Jacobian) from one model call (what the fitting engine uses), and
+    ``residual.jacobian(x)`` the Jacobian alone."""
+    residual.with_jacobian = with_jacobian
+    residual.jacobian = lambda x: with_jacobian(x)[1]
+
+
 def _solve(residual, names, options: FitOptions, label: str, x0):
     """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins.
 
@@ -546,18 +554,29 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
     counter = {"n": 0}
     bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)  # None: off unless a terminal
 
+    both = getattr(residual, "with_jacobian", None)
+    last = {}  # the Jacobian of the last residual evaluated, and where
+
     def fun(x):
         counter["n"] += 1
         bar.update(1)
-        return residual(x)
-
-    analytic = getattr(residual, "jacobian", None)
+        if both is None:
+            return residual(x)
+        # the implicit derivatives come with the residual from one model call: least_squares asks
+        # for the Jacobian where it last evaluated the residual (after an accepted step), so most
+        # calls need it, and the derivatives cost less than a second call (benchmarks/README.md)
+        r, J = both(np.array(x, float))
+        last["x"], last["J"] = np.array(x, float), J
+        return r
 
     def jac(x):
-        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
+        x = np.array(x, float)
+        if both is not None:
+            if "x" in last and np.array_equal(last["x"], x):
+                return last["J"]
             counter["n"] += 1
-            return analytic(np.array(x, float))
-        return _jacobian(fun, np.array(x, float), lb, ub)
+            return both(x)[1]
+        return _jacobian(fun, x, lb, ub)
 
     def run(x_start, max_nfev):
         from scipy import optimize
@@ -884,14 +903,18 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
                 r = r + body_lift(x[-3:], data, vehicle, p.M, air)
             return r
 
-        def jacobian(x):
-            """The rotors' columns from the implicit derivatives; the body-lift terms (a closed
-            form, no solve) by central differences."""
+        def with_jacobian(x):
+            """The residual and its Jacobian from one model call: the rotors' columns from the
+            implicit derivatives; the body-lift terms (a closed form, no solve) by central
+            differences."""
             x = np.asarray(x, float)
             p = _params_from(x, names, base, opts)
             section = names[:-3] if opts.body_lift else names
             f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
                                     derivatives=section)
+            r = f["vertical"] - vehicle.weight
+            if opts.body_lift:
+                r = r + body_lift(x[-3:], data, vehicle, p.M, air)
             cols = [f["vertical_jacobian"]]
             if opts.body_lift:
                 for k in range(3):
@@ -905,11 +928,11 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
                     k, h = names.index("M"), 1e-6 * p.M
                     cols[0][:, k] += (body_lift(x[-3:], data, vehicle, p.M + h, air)
                                       - body_lift(x[-3:], data, vehicle, p.M - h, air)) / (2 * h)
-            return np.hstack(cols)
+            return r, np.hstack(cols)
 
         section_names = names[:-3] if opts.body_lift else names
         if opts.jacobian == "implicit" and differentiable(base, section_names):
-            residual.jacobian = jacobian
+            _attach_jacobian(residual, with_jacobian)
         return residual
 
     make_data = make_residual
@@ -1045,8 +1068,12 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
             prior_rows = weight * (Linv @ (np.asarray(x)[sel] - mu))
             return np.concatenate([data(x, opts), prior_rows])
 
-        if hasattr(data, "jacobian"):
-            residual.jacobian = lambda x: np.vstack([data.jacobian(x), prior_jac])
+        if hasattr(data, "with_jacobian"):
+            def with_jacobian(x):
+                r, J = data.with_jacobian(x)
+                return np.concatenate([r, weight * (Linv @ (np.asarray(x)[sel] - mu))]), np.vstack([J, prior_jac])
+
+            _attach_jacobian(residual, with_jacobian)
         return residual
 
     info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),
@@ -1070,18 +1097,20 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
                                discretization=opts.discretization, collective=data.collective,
                                derivatives=names if derivatives else False)
 
-        def residual(x, opts=opts):
-            r = loads(x)
+        def errors(r):
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
             return weight * np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
 
-        def jacobian(x):
+        def residual(x, opts=opts):
+            return errors(loads(x))
+
+        def with_jacobian(x):
             r = loads(x, derivatives=True)
-            return weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names]) / norm[k][:, None]
-                                       / scales[k] for k in keys])
+            return errors(r), weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names])
+                                                  / norm[k][:, None] / scales[k] for k in keys])
 
         if opts.jacobian == "implicit" and differentiable(base, names) and np.all(data.omega >= OMEGA_MIN):
-            residual.jacobian = jacobian  # (a parked point, below OMEGA_MIN, has no derivatives: differences)
+            _attach_jacobian(residual, with_jacobian)  # (a parked point, below OMEGA_MIN, has no derivatives)
         return residual
 
     return make, scales
@@ -1186,8 +1215,12 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         def residual(x, opts=opts):
             return np.concatenate([f(x) for f in parts])
 
-        if all(hasattr(f, "jacobian") for f in parts):  # each propeller's implicit Jacobian, stacked
-            residual.jacobian = lambda x: np.vstack([f.jacobian(x) for f in parts])
+        if all(hasattr(f, "with_jacobian") for f in parts):  # each propeller's implicit Jacobian, stacked
+            def with_jacobian(x):
+                pairs = [f.with_jacobian(x) for f in parts]
+                return np.concatenate([r for r, _ in pairs]), np.vstack([J for _, J in pairs])
+
+            _attach_jacobian(residual, with_jacobian)
         return residual
 
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,

@@ -38,8 +38,8 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _check_names, _finish, _fit_with_continuation,
-                  _params_from, _with_prior)
+from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _attach_jacobian, _check_names, _finish,
+                  _fit_with_continuation, _params_from, _with_prior)
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
            "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
@@ -373,14 +373,18 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
                 r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
             return r
 
-        def jacobian(x):
-            """The residual's Jacobian: vehicle_wrench's implicit derivatives for the section and
-            airframe terms, central differences for the centre of mass (it moves the arms)."""
+        def with_jacobian(x):
+            """The residual and its Jacobian from one model call: vehicle_wrench's implicit
+            derivatives for the section and airframe terms, central differences for the centre of
+            mass (it moves the arms)."""
             x = np.asarray(x, float)
             analytic = [n for n in names if n not in CG_NAMES]
             p = _params_from(x, names, base, opts)
             w = predict_flight(samples, vehicle_at(x), p, body=_body_from(x, names, body0), air=air,
                                discretization=discretization, derivatives=analytic)
+            r = (w.force - measured).ravel()
+            if moments:
+                r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
             cols = []
             for k, n in enumerate(names):
                 if n in CG_NAMES:
@@ -394,10 +398,10 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
                 if moments:
                     c = np.concatenate([c, (w.jacobian[("moment", n)] / arm).ravel()])
                 cols.append(c)
-            return np.column_stack(cols)
+            return r, np.column_stack(cols)
 
         if implicit:
-            residual.jacobian = jacobian
+            _attach_jacobian(residual, with_jacobian)
         return residual
 
     make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
