@@ -3,7 +3,8 @@
 Run:  .venv/bin/python benchmarks/bench_threads.py [--quick]
 
 Propeller apce_8x6 (APC PE0 geometry) with its calibrated set (UIUC vol. 1). Batches of
-10^4 and 10^5 random forward-flight points (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg),
+10^4 and 10^5 random forward-flight points (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg)
+and 10^4 axial ones (incidence 0; issue 20's per-core targets: <= 60 and <= 15 us per point),
 each timed with numba's thread count set to 1 and to all cores in turn, 5 rounds (3 with
 --quick; the 10^5 batch is left out with --quick). The speed-up is the median over rounds
 of t(1 thread) / t(all) of each round's pair, so it holds when the machine's speed drifts;
@@ -40,8 +41,9 @@ def main() -> None:
     pm.rotor_loads(prop, params, *points(100, 0, 90, 0), on_failure="flag")  # compile / load the kernel
     out = {"cpu": cpu_name(), "cores": os.cpu_count(), "numba_threads": cores, "propeller": "apce_8x6",
            "params": params.label, "batches": []}
-    for n in (10_000,) if quick else (10_000, 100_000):
-        om, V, b = points(n, 0, 90, 1)
+    cases = [("forward", 10_000, 90)] + ([] if quick else [("forward", 100_000, 90)]) + [("axial", 10_000, 0)]
+    for kind, n, inc_max in cases:
+        om, V, b = points(n, 0, inc_max, 1)
         pairs, loads = [], []
         for _ in range(3 if quick else 5):
             t = {}
@@ -57,7 +59,7 @@ def main() -> None:
         one = [p[1] for p in pairs]
         full = [p[cores] for p in pairs]
         out["batches"].append({
-            "points": n, "rounds": len(pairs),
+            "kind": kind, "points": n, "rounds": len(pairs),
             "one_thread_us_per_point_median": 1e6 * float(np.median(one)) / n,
             "all_threads_us_per_point_median": 1e6 * float(np.median(full)) / n,
             "speedup_median_of_pairs": float(np.median([p[1] / p[cores] for p in pairs])),
