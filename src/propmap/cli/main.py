@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import _thread
 import atexit
 import os
 import signal
@@ -42,27 +41,37 @@ def _one_line(text: str) -> str:
     return " ".join(str(text).split())
 
 
-# Python code that C calls back into (llvmlite's object-cache hooks while numba compiles,
-# any ctypes callback): an exception raised there is printed as "Exception ignored ..."
-# with its traceback and dropped, and the run went on to exit 0 (seen once in CI, a
-# SIGTERM during a worker's compilation).
-_CALLBACK_DIRS = ("/llvmlite/", "/ctypes/")
+# Python code that C calls back into (llvmlite's object-cache hooks while numba compiles):
+# an exception raised there is printed as "Exception ignored ..." with its traceback and
+# dropped, and the run went on to exit 0 (seen once in CI, a SIGTERM during a worker's
+# compilation). Those hooks, by file and name:
+_CALLBACKS = (("/llvmlite/", "_raw_object_cache_notify"), ("/llvmlite/", "_raw_object_cache_getbuffer"))
 _terminated: list[int] = []  # the signal that stopped the run, once one has
+_redelivery: list[threading.Timer] = []  # the pending re-delivery, cancelled when the run ends
 
 
 def _in_callback(frame) -> bool:
     while frame is not None:
-        if any(d in frame.f_code.co_filename for d in _CALLBACK_DIRS):
+        code = frame.f_code
+        if any(d in code.co_filename and code.co_name == name for d, name in _CALLBACKS):
             return True
         frame = frame.f_back
     return False
 
 
+def _redeliver(signum: int) -> None:
+    # a real signal to the main thread (it also interrupts a blocking call there), and only
+    # while this handler is still the one installed: after the run the caller's is back
+    if signal.getsignal(signum) is _on_sigterm:
+        signal.pthread_kill(threading.main_thread().ident, signum)
+
+
 def _on_sigterm(signum, frame):  # pragma: no cover (exercised in a subprocess test)
     _terminated.append(signum)
-    if _in_callback(frame):  # deliver it again (to this handler only) after the callback
-        timer = threading.Timer(0.05, _thread.interrupt_main, (signum,))
+    if _in_callback(frame):  # deliver it again after the callback
+        timer = threading.Timer(0.05, _redeliver, (signum,))
         timer.daemon = True
+        _redelivery.append(timer)
         timer.start()
         return
     raise SystemExit(128 + signum)
@@ -130,6 +139,9 @@ def _main(argv: list[str] | None) -> int:
                    "please report it with the command line", err=True)
         return 1
     finally:
+        for timer in _redelivery:
+            timer.cancel()
+        _redelivery.clear()
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
         seen = set()

@@ -18,13 +18,15 @@ section constants, which depend on the annulus' mean square speed U2 = (Omega y)
 element at the base and one-sided at U_T + h, U_P + h and the constants at U2 + h (and the
 blade angle + h for the collective), gives every input's partials by the chain rule
 (Omega: U_T by y, U2 by 2 Omega y^2; V sin beta: U_T by sin psi, U2 by V sin beta;
-V cos beta and v: U_P by 1, U2 by 2 V cos beta): four element evaluations per node for the
-three inputs and the inflow, where differencing each input centrally took eight. The steps
-are 1e-7 of each variable's scale (an O(h) error of about that relative size, far below the
-root's own tolerance, whereas differencing the whole solver carries that tolerance,
-1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a scalar per
-annulus: no azimuth sum) is differenced centrally with steps 1e-5, one-sided along the
-airspeed's ray at V = 0 (where the empirical descent model switches on).
+V cos beta: U_P by 1, U2 by 2 V cos beta; v: U_P by 1): four element evaluations per node
+for the three inputs and the inflow, where differencing each input centrally took eight.
+The steps are 1e-7 of each variable's scale (an O(h) error of about that relative size, far
+below the root's own tolerance, whereas differencing the whole solver carries that
+tolerance, 1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a
+scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
+the empirical descent curve, through its inversion, and Prandtl's factor); where the
+empirical model switches on (V cos beta = 0, v = -V cos beta / 2) it is differenced
+centrally with steps 1e-5 (at V = 0 one-sided along the airspeed's ray).
 
 A section parameter enters through the element's constants (pk) and the annulus'
 Reynolds constants (cam) only, the density through the Reynolds constant sc; their partial
@@ -95,7 +97,8 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
-    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _annulus)."""
+    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _kernel._residual,
+    with the loss factor of _kernel.solve_annuli)."""
     floss = 1.0
     if ct >= 0.0 or ch >= 0.0:
         if emp and Vc < 0.0:
@@ -121,7 +124,8 @@ def _prandtl_slope(c, inv_sin):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _mass_flow_partials(v, Vc, Vs, emp):
-    """The axial mass-flow velocity w of one annulus and dw/d(v, V cos beta, V sin beta).
+    """The axial mass-flow velocity w [m/s] of one annulus and dw/d(v, V cos beta, V sin beta) [-]
+    (inflow v and speeds [m/s]).
 
     Glauert's w = |Vc + v|, or with ``emp`` in the vortex-ring and turbulent-wake states the
     empirical curve of _physics.axial_mass_flow, w = g + (v_h^2 / v - g) exp(-(Vs/v)^2),
@@ -349,6 +353,8 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     vc = V[i] * cb
     if abs(vs) < 1e-12 * V[i]:
         vs = 0.0
+    if abs(vc) < 1e-12 * V[i]:  # exactly edgewise (cos(pi/2) is 6e-17): where the empirical descent model switches
+        vc = 0.0
     axial = vs == 0.0
     naz = 1 if axial else naz_half  # in axial flow the integrand does not depend on psi
     # each input's direction in (Omega, V sin beta, V cos beta, collective) and its step
@@ -361,11 +367,10 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     e[3, 3] = 1.0
     if axial and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray (V sin beta snapped to 0)
         e[1, 1] = 0.0
-    hx = np.empty(4)
+    hx = np.empty(3)
     hx[0] = STEP * om
     hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
     hx[2] = STEP
-    hx[3] = STEP
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
@@ -469,7 +474,7 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
-            h = hx[p]
+            h = hx[p] if p < 3 else 0.0  # (the collective moves no momentum side)
             if p == 3:
                 dmom = 0.0
             elif analytic:

@@ -869,8 +869,9 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     scp = nd.sc
     hrho = 0.0
     if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
-        hrho = _sensitivity.ONE_SIDED * air.rho
-        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=air.rho + hrho),
+        rho_step = air.rho + _sensitivity.ONE_SIDED * air.rho
+        hrho = rho_step - air.rho  # the step as represented
+        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=rho_step),
                      params).sc
     n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
     pks, cams, step = _parameter_constants(names, params, air)

@@ -526,12 +526,15 @@ def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionP
     return base.replace(**kw)
 
 
-def _attach_jacobian(residual, with_jacobian):
-    """Give a residual function its implicit Jacobian: ``residual.with_jacobian(x)`` returns
-    (residual, Jacobian) from one model call (what the fitting engine uses), and
-    ``residual.jacobian(x)`` the Jacobian alone."""
-    residual.with_jacobian = with_jacobian
+def _attach_jacobian(residual, with_jacobian, eager: bool = True):
+    """Give a residual function its implicit Jacobian: ``residual.jacobian(x)``, and with
+    ``eager`` ``residual.with_jacobian(x)``, (residual, Jacobian) from one model call, which
+    the fitting engine then evaluates at every point (least squares asks for the Jacobian
+    where it evaluated last). Not eager where the Jacobian costs more than its derivatives
+    (columns differenced by extra solves): the engine then asks for it only when needed."""
     residual.jacobian = lambda x: with_jacobian(x)[1]
+    if eager:
+        residual.with_jacobian = with_jacobian
 
 
 def _solve(residual, names, options: FitOptions, label: str, x0):
@@ -569,13 +572,16 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
         last["x"], last["J"] = np.array(x, float), J
         return r
 
+    analytic = getattr(residual, "jacobian", None)
+
     def jac(x):
         x = np.array(x, float)
-        if both is not None:
-            if "x" in last and np.array_equal(last["x"], x):
-                return last["J"]
+        if both is not None and "x" in last and np.array_equal(last["x"], x):
+            return last["J"]
+        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
             counter["n"] += 1
-            return both(x)[1]
+            bar.update(1)
+            return analytic(x)
         return _jacobian(fun, x, lb, ub)
 
     def run(x_start, max_nfev):
@@ -1074,6 +1080,8 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
                 return np.concatenate([r, weight * (Linv @ (np.asarray(x)[sel] - mu))]), np.vstack([J, prior_jac])
 
             _attach_jacobian(residual, with_jacobian)
+        elif hasattr(data, "jacobian"):
+            residual.jacobian = lambda x: np.vstack([data.jacobian(x), prior_jac])
         return residual
 
     info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),

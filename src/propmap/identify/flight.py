@@ -400,8 +400,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
                 cols.append(c)
             return r, np.column_stack(cols)
 
-        if implicit:
-            _attach_jacobian(residual, with_jacobian)
+        if implicit:  # the centre of mass's columns cost two solves each: only where asked for
+            _attach_jacobian(residual, with_jacobian, eager=not any(n in CG_NAMES for n in names))
         return residual
 
     make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
