@@ -901,13 +901,15 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     n_rot = len(vehicle.rotors)
 
     def make_residual(opts):
-        def residual(x, opts=opts):
-            p = _params_from(x, names, base, opts)
-            f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization)
+        def errors(f, x, p):  # the vertical force balance (eq 16) of the model's forces f
             r = f["vertical"] - vehicle.weight
             if opts.body_lift:
                 r = r + body_lift(x[-3:], data, vehicle, p.M, air)
             return r
+
+        def residual(x, opts=opts):
+            p = _params_from(x, names, base, opts)
+            return errors(level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization), x, p)
 
         def with_jacobian(x):
             """The residual and its Jacobian from one model call: the rotors' columns from the
@@ -918,9 +920,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             section = names[:-3] if opts.body_lift else names
             f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
                                     derivatives=section)
-            r = f["vertical"] - vehicle.weight
-            if opts.body_lift:
-                r = r + body_lift(x[-3:], data, vehicle, p.M, air)
+            r = errors(f, x, p)
             cols = [f["vertical_jacobian"]]
             if opts.body_lift:
                 for k in range(3):

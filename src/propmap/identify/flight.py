@@ -364,14 +364,16 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
                 and differentiable(base, section) and not any(r.params is not None for r in vehicle.rotors))
 
     def make_residual(opts):
-        def residual(x, opts=opts):
-            p = _params_from(x, names, base, opts)
-            b = _body_from(x, names, body0)
-            w = predict_flight(samples, vehicle_at(x), p, body=b, air=air, discretization=discretization)
+        def errors(w):  # the force (and moment) errors of a prediction
             r = (w.force - measured).ravel()
             if moments:
                 r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
             return r
+
+        def residual(x, opts=opts):
+            p = _params_from(x, names, base, opts)
+            b = _body_from(x, names, body0)
+            return errors(predict_flight(samples, vehicle_at(x), p, body=b, air=air, discretization=discretization))
 
         def with_jacobian(x):
             """The residual and its Jacobian from one model call: vehicle_wrench's implicit
@@ -382,9 +384,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
             p = _params_from(x, names, base, opts)
             w = predict_flight(samples, vehicle_at(x), p, body=_body_from(x, names, body0), air=air,
                                discretization=discretization, derivatives=analytic)
-            r = (w.force - measured).ravel()
-            if moments:
-                r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
+            r = errors(w)
             cols = []
             for k, n in enumerate(names):
                 if n in CG_NAMES:
