@@ -692,7 +692,7 @@ def rotor_loads(
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
     rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
     counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
-    (T, D, Q, R, Y, P, vbar), (status, nmulti, nvrs, nev) = out, counts
+    (T, D, Q, R, Y, P, vbar), (status, nmulti, _, nev) = out, counts  # (row 2: annuli in vortex ring)
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
