@@ -39,8 +39,9 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, axial_mass_flow, cambered_annulus, inflow_gradients,
-                       inverse_sin_phi, make_cambered_element, make_element, make_loss_factor, make_prandtl,
+from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, cambered_annulus, empirical_k, inflow_gradients,
+                       inverse_sin_phi, make_axial_mass_flow, make_cambered_element, make_element, make_loss_factor,
+                       make_prandtl,
                        momentum_scale, momentum_thrust)
 
 MARCH_STEPS = 3.0
@@ -70,7 +71,8 @@ _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
 _cambered_annulus = _jit_inline(cambered_annulus)
 _inflow_gradients = _jit_inline(inflow_gradients)
-_axial_mass_flow = _jit_inline(axial_mass_flow)
+_empirical_k = _jit_inline(empirical_k)
+_axial_mass_flow = _jit_inline(make_axial_mass_flow(_empirical_k))
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)

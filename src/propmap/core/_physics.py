@@ -270,40 +270,55 @@ EMPIRICAL_HOVER_RATIO = 1e8
 EMPIRICAL_NEWTON = 8
 
 
-def axial_mass_flow(v, Vc, Vs):
-    """Axial velocity of the mass flow through an annulus, empirical in descent [m/s] (scalars).
-
-    Glauert's momentum (eq 10) carries the mass flow rho A W with W = sqrt(Vs^2 + (Vc + v)^2);
-    this returns its axial part. Outside descent, and in descent for v <= |Vc|/2 (the
-    windmill-brake branch, where momentum theory holds), it is Glauert's |Vc + v|. For
-    v > |Vc|/2 in descent (the vortex-ring and turbulent-wake states) the empirical curve
-    above replaces it: with d = -Vc, the curve's k solves v/d = f(k)/k (f(k)/k falls
-    monotonically from infinity at k = 0 to 1/2 at k = 2), the annulus' hover inflow is
-    v_h = d/k, and the mass-flow velocity that gives dT = 4 pi rho r v_h^2 is v_h^2 / v.
-    The curve was measured in axial descent; a vortex ring only forms while the in-plane
-    velocity cannot carry the wake away, so the empirical part fades with exp(-(Vs/v)^2)
-    (propmap's choice: half gone at Vs = 0.83 v, nearly all at Vs = 2 v) and Glauert's form
-    holds in forward flight. Continuous in v, Vc and Vs, and v sqrt(Vs^2 + W^2) grows with v
-    (checked on a grid of descent and in-plane speeds): one root per annulus from the
-    momentum side (docs/models.md, Descent). With tip loss, Prandtl's factor takes its inflow
-    angle from this velocity in descent (the kernel's loss loop), so that it does not jump
-    where U_P = Vc + v passes through 0.
-    """
-    d = -Vc
-    glauert = abs(Vc + v)
-    if d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
-        # beyond EMPIRICAL_HOVER_RATIO the curve is at hover (k < 1e-8, where it differs from
-        # Glauert's by O(k)); the Newton solve below would clip k there and lose the thrust
-        return glauert
-    r = v / d
+def empirical_k(r):
+    """The descent ratio k in [1e-12, 2] of the empirical curve at v / (-V_c) = r >= 1/2: the root
+    of f(k) = r k (f(k)/k falls monotonically from infinity at k = 0 to 1/2 at k = 2), by
+    EMPIRICAL_NEWTON clipped Newton steps from k = min(1/r, 2) (scalars)."""
     k = min(1.0 / r, 2.0)
     for _ in range(EMPIRICAL_NEWTON):
         f = 1.0 + k * (EMPIRICAL_C1 + k * (EMPIRICAL_C2 + k * (EMPIRICAL_C3 + k * EMPIRICAL_C4)))
         fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
         k = min(max(k - (f - r * k) / (fp - r), 1e-12), 2.0)
-    vh = d / k
-    s = Vs / v
-    return glauert + (vh * vh / v - glauert) * np.exp(-s * s)
+    return k
+
+
+def make_axial_mass_flow(root):
+    """Return ``axial_mass_flow`` built on the given ``root`` (:func:`empirical_k`, or its
+    compiled copy)."""
+
+    def axial_mass_flow(v, Vc, Vs):
+        """Axial velocity of the mass flow through an annulus, empirical in descent [m/s] (scalars).
+
+        Glauert's momentum (eq 10) carries the mass flow rho A W with W = sqrt(Vs^2 + (Vc + v)^2);
+        this returns its axial part. Outside descent, and in descent for v <= |Vc|/2 (the
+        windmill-brake branch, where momentum theory holds), it is Glauert's |Vc + v|. For
+        v > |Vc|/2 in descent (the vortex-ring and turbulent-wake states) the empirical curve
+        above replaces it: with d = -Vc, the curve's k solves v/d = f(k)/k (f(k)/k falls
+        monotonically from infinity at k = 0 to 1/2 at k = 2), the annulus' hover inflow is
+        v_h = d/k, and the mass-flow velocity that gives dT = 4 pi rho r v_h^2 is v_h^2 / v.
+        The curve was measured in axial descent; a vortex ring only forms while the in-plane
+        velocity cannot carry the wake away, so the empirical part fades with exp(-(Vs/v)^2)
+        (propmap's choice: half gone at Vs = 0.83 v, nearly all at Vs = 2 v) and Glauert's form
+        holds in forward flight. Continuous in v, Vc and Vs, and v sqrt(Vs^2 + W^2) grows with v
+        (checked on a grid of descent and in-plane speeds): one root per annulus from the
+        momentum side (docs/models.md, Descent). With tip loss, Prandtl's factor takes its inflow
+        angle from this velocity in descent (the kernel's loss loop), so that it does not jump
+        where U_P = Vc + v passes through 0.
+        """
+        d = -Vc
+        glauert = abs(Vc + v)
+        if d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
+            # beyond EMPIRICAL_HOVER_RATIO the curve is at hover (k < 1e-8, where it differs from
+            # Glauert's by O(k)); the Newton solve would clip k there and lose the thrust
+            return glauert
+        vh = d / root(v / d)
+        s = Vs / v
+        return glauert + (vh * vh / v - glauert) * np.exp(-s * s)
+
+    return axial_mass_flow
+
+
+axial_mass_flow = make_axial_mass_flow(empirical_k)
 
 
 def momentum_scale(B0, mom_fac, Vs, Vc):

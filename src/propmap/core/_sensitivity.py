@@ -48,10 +48,9 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE
-from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO,
-                       EMPIRICAL_NEWTON, TWO_OVER_PI)
+from ._physics import EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, TWO_OVER_PI
 from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
-                      _element_gill, _inverse_sin_phi, _momentum_thrust, _prandtl)
+                      _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -139,11 +138,7 @@ def _mass_flow_partials(v, Vc, Vs, emp):
     if not emp or d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
         return g, sg, sg, 0.0
     r = v / d
-    k = min(1.0 / r, 2.0)
-    for _ in range(EMPIRICAL_NEWTON):  # as axial_mass_flow
-        f = 1.0 + k * (EMPIRICAL_C1 + k * (EMPIRICAL_C2 + k * (EMPIRICAL_C3 + k * EMPIRICAL_C4)))
-        fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
-        k = min(max(k - (f - r * k) / (fp - r), 1e-12), 2.0)
+    k = _empirical_k(r)
     fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
     dk_dr = k / (fp - r)
     vh = d / k
