@@ -324,6 +324,108 @@ def test_vehicle_parameter_and_airframe_derivatives():
         pm.vehicle_wrench(own, g, v, w, om, derivatives=("cl_alpha",))
 
 
+@pytest.mark.parametrize("V, axis, om, spin", [
+    ([6.0, 1.0, -2.0], [0.1, 0.2, 1.0], 900.0, "ccw"),  # oblique, descending
+    ([3.0, -4.0, -1.0], [0.3, -0.2, 1.0], 700.0, "cw"),
+    ([0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 800.0, "cw"),  # axial climb: the in-plane block from the limit D / V_s
+    ([0.0, 0.0, -3.0], [0.0, 0.0, 1.0], 800.0, "ccw"),  # axial descent (the empirical momentum)
+    ([1e-3, 0.0, 2.0], [0.0, 0.0, 1.0], 800.0, "ccw"),  # nearly axial
+    ([0.0, 0.0, 0.0], [0.0, 0.3, 1.0], 800.0, "ccw"),  # hover, a tilted axis
+])
+def test_rotor_wrench_velocity_jacobian(prop, params, V, axis, om, spin):
+    """rotor_wrench(derivatives=("velocity",)): dF/dV and dtau/dV (shape (3, 3)) against central
+    differences of rotor_wrench in each velocity component (2e-5 of the largest entry; at V = 0
+    the mean of the climb and descent slopes, which is what central differences give)."""
+    V = np.array(V)
+    r = pm.rotor_wrench(prop, params, V, axis, om, spin, derivatives=("velocity", "omega"), discretization=DISC)
+    JF, JT = r.jacobian[("force", "velocity")], r.jacobian[("torque", "velocity")]
+    assert JF.shape == JT.shape == (3, 3)
+    h = 1e-4
+    for j in range(3):
+        dv = np.eye(3)[j] * h
+        a = pm.rotor_wrench(prop, params, V + dv, axis, om, spin, discretization=DISC)
+        c = pm.rotor_wrench(prop, params, V - dv, axis, om, spin, discretization=DISC)
+        for got, fd, scale in ((JF[:, j], (a.force - c.force) / (2 * h), np.abs(JF).max()),
+                               (JT[:, j], (a.torque - c.torque) / (2 * h), np.abs(JT).max())):
+            np.testing.assert_allclose(got, fd, atol=2e-5 * scale, rtol=0, err_msg=f"column {j}")
+    z = np.asarray(axis) / np.linalg.norm(axis)
+    proj = np.eye(3) - np.outer(z, z)
+    inplane = proj @ JF @ proj
+    if not np.any(proj @ V):  # axial flow and hover: the rotor drag damps in-plane motion isotropically
+        d_s = -np.trace(inplane) / 2
+        assert d_s > 0
+        np.testing.assert_allclose(inplane, -d_s * proj, atol=1e-12 + 1e-9 * d_s)
+    # the velocity enters only through the loads: the omega derivative is unchanged by asking for it
+    alone = pm.rotor_wrench(prop, params, V, axis, om, spin, derivatives=("omega",), discretization=DISC)
+    np.testing.assert_array_equal(alone.jacobian[("force", "omega")], r.jacobian[("force", "omega")])
+
+
+def test_velocity_jacobian_errors_and_shapes(prop):
+    """Batches keep their shape S + (3, 3); the slopes at V = 0 are required; odd loads have no
+    gradient."""
+    from propmap.core.vector import velocity_gradient, velocity_jacobian
+
+    g = pm.generic_params()
+    V = np.array([[[5.0, 0.0, 1.0], [0.0, 0.0, 0.0]], [[0.0, 2.0, -1.0], [0.0, 0.0, 4.0]]])
+    r = pm.rotor_wrench(prop, g, V, [0.0, 0.0, 1.0], [[800.0, 900.0], [700.0, 1000.0]],
+                        derivatives=("velocity",), discretization=DISC)
+    assert r.jacobian[("force", "velocity")].shape == (2, 2, 3, 3)
+    one = pm.rotor_wrench(prop, g, V[1, 0], [0.0, 0.0, 1.0], 700.0, derivatives=("velocity",), discretization=DISC)
+    np.testing.assert_allclose(r.jacobian[("torque", "velocity")][1, 0], one.jacobian[("torque", "velocity")],
+                               rtol=1e-12, atol=1e-15)
+    still = r.loads
+    with pytest.raises(ValueError, match="still .* is required where V = 0"):
+        velocity_jacobian(still, V, [0.0, 0.0, 1.0], 1.0)
+    with pytest.raises(ValueError, match="quantity must be 'thrust', 'torque' or 'v_i_mean'"):
+        velocity_gradient(still, "drag", V, [0.0, 0.0, 1.0])
+    with pytest.raises(ValueError, match="ask for 'velocity'"):
+        pm.rotor_wrench(prop, g, V, [0.0, 0.0, 1.0], 800.0, derivatives=("incidence",))
+
+
+def test_vehicle_motion_jacobians():
+    """vehicle_wrench(derivatives=("velocity", "angular_velocity")) on the NeuroBEM quadrotor with
+    an airframe drag and rotor inertia: against central differences of vehicle_wrench in each
+    component of v and w (1e-5 of the largest entry), in forward flight with body rates, slow
+    climb and hover (the rotors' kink at V = 0 averaged, as the differences average it); the
+    wind's Jacobian is minus the velocity's."""
+    from pathlib import Path
+
+    from propmap.core.body import BodyDrag
+
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    assert all(r.inertia for r in veh.rotors)  # the gyroscopic term is exercised
+    g = pm.generic_params()
+    v = np.array([[6.0, -1.0, -0.5], [0.5, 0.0, 1.0], [0.0, 0.0, 0.0]])
+    w = np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [1000.0] * 4, [1000.0] * 4])
+    body = BodyDrag((0.02, 0.01, 0.03), 1.2)
+    r = pm.vehicle_wrench(veh, g, v, w, om, body_drag=body, derivatives=("velocity", "angular_velocity"),
+                          discretization=DISC)
+    h = 1e-5
+    for name in ("velocity", "angular_velocity"):
+        for j in range(3):
+            d = np.eye(3)[j] * h
+            args = ((v + d, w), (v - d, w)) if name == "velocity" else ((v, w + d), (v, w - d))
+            a, c = (pm.vehicle_wrench(veh, g, *x, om, body_drag=body, discretization=DISC) for x in args)
+            for key, fd in (("force", (a.force - c.force) / (2 * h)), ("moment", (a.moment - c.moment) / (2 * h))):
+                J = r.jacobian[(key, name)]
+                assert J.shape == (3, 3, 3)
+                for n in range(3):
+                    np.testing.assert_allclose(J[n, :, j], fd[n], rtol=0, atol=1e-5 * np.abs(J[n]).max(),
+                                               err_msg=f"{key} {name} sample {n} column {j}")
+    # hover: the airframe and the rotors damp horizontal motion (a stable, diagonal block)
+    Fv = r.jacobian[("force", "velocity")][2]
+    assert Fv[0, 0] < 0 and Fv[1, 1] < 0 and Fv[2, 2] < 0
+    wind = np.array([1.0, 0.5, 0.0])
+    dw = np.array([0.0, 1e-5, 0.0])
+    a, c = (pm.vehicle_wrench(veh, g, v[0], w[0], om[0], wind=wind + s * dw, body_drag=body, discretization=DISC)
+            for s in (1, -1))
+    rw = pm.vehicle_wrench(veh, g, v[0], w[0], om[0], wind=wind, body_drag=body, derivatives=("velocity",),
+                           discretization=DISC)
+    np.testing.assert_allclose(-rw.jacobian[("force", "velocity")][0, :, 1], (a.force[0] - c.force[0]) / 2e-5,
+                               rtol=0, atol=1e-5 * np.abs(rw.jacobian[("force", "velocity")]).max())
+
+
 @pytest.mark.parametrize("params", [pm.generic_params(), pm.preset("gill2017-apc")], ids=["cambered", "paper"])
 def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
     """solver.NODE_FIELDS (refused as derivatives) are exactly the numeric fields that change the

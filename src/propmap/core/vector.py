@@ -16,7 +16,7 @@ from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
-__all__ = ["RotorWrench", "rotor_wrench"]
+__all__ = ["RotorWrench", "rotor_wrench", "velocity_gradient", "velocity_jacobian"]
 
 
 @dataclass(frozen=True)
@@ -41,7 +41,8 @@ class RotorWrench:
     jacobian : dict or None
         With ``rotor_wrench(..., derivatives=names)``: {("force", name): dF/dp, ("torque",
         name): dtau/dp}, shape S + (3,), for each name (the rotation rate "omega", the
-        "collective" or a section parameter); else None.
+        "collective", "rho" or a section parameter); for "velocity" shape S + (3, 3), entry
+        [..., i, j] = dF_i/dV_j [N s/m] (dtau_i/dV_j [N s]); else None.
     """
 
     force: np.ndarray
@@ -117,10 +118,11 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         As for :func:`rotor_loads`.
     derivatives : sequence of str
         Names to differentiate the force and torque vectors with respect to: "omega", the
-        "collective" or section parameters (as :func:`rotor_loads` takes them; the loads'
-        derivatives by the implicit function theorem, carried through the vector form, which
-        is linear in them). Not the velocity vector: at V = 0 the model is not
-        differentiable in it (docs/solver.md, Derivatives).
+        "collective", "rho" or section parameters (as :func:`rotor_loads` takes them; the
+        loads' derivatives by the implicit function theorem, carried through the vector
+        form, which is linear in them), and "velocity": the Jacobians dF/dV and dtau/dV
+        with respect to the velocity vector (:func:`velocity_jacobian`; at V = 0 its axial
+        column is the mean of the climb and descent slopes, :func:`still_air_slopes`).
 
     Returns
     -------
@@ -133,7 +135,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         velocity, a bad spin (a bool included, or an array that does not broadcast to the
         loads' shape S), or the ranges of :func:`rotor_loads`
         (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
-        naming "airspeed" or "incidence", or refused by :func:`rotor_loads`.
+        naming "airspeed" or "incidence" (ask for "velocity"), or refused by
+        :func:`rotor_loads`.
     SolverError
         As :func:`rotor_loads`.
 
@@ -156,22 +159,224 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         _check_spin(s, shape)
     if derivatives is True or isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
         raise ValueError(f"derivatives must be a sequence of names, got {derivatives!r:.60}")
-    names = tuple(derivatives or ())
+    names = tuple(dict.fromkeys(derivatives or ()))
     if any(n in ("airspeed", "incidence") for n in names):
-        raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (the "
-                         f"velocity vector's derivatives are not given), got {derivatives!r:.60}")
-    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
-                        on_failure=on_failure, derivatives=names or False)
+        raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
+                         f"'velocity', the velocity vector's Jacobian), got {derivatives!r:.60}")
+    solve = dict(air=air, discretization=discretization, on_failure=on_failure)
+    scalar = tuple(n for n in names if n != "velocity")
+    wrt = scalar + (VELOCITY_INPUTS if "velocity" in names else ())
+    loads = rotor_loads(propeller, params, omega, speed, beta, derivatives=wrt or False, **solve)
     force, torque = wrench_vectors(loads.thrust, loads.drag, loads.torque, loads.rolling_moment, V, z, s,
                                    side_force=loads.side_force, pitching_moment=loads.pitching_moment)
     jac = None
     if names:
         jac = {}
-        for n in names:
+        for n in scalar:
             dF, dtau = wrench_vectors(*(loads.derivative(q, n) for q in ("thrust", "drag", "torque", "rolling_moment")),
                                       V, z, s)
             jac[("force", n)], jac[("torque", n)] = dF, dtau
+        if "velocity" in names:
+            slope = still_air_slopes(propeller, params, omega, speed, **solve)
+            jac[("force", "velocity")], jac[("torque", "velocity")] = velocity_jacobian(loads, V, z, s, slope)
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
+
+
+#: the scalar inputs ``rotor_loads`` differentiates for the velocity vector's Jacobian
+VELOCITY_INPUTS = ("airspeed", "incidence")
+
+
+def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, **solve) -> dict:
+    """The loads' slopes in the velocity at the points where ``speed`` is 0 (0 elsewhere).
+
+    At V = 0 the loads' incidence derivative is 0 and their airspeed derivative lies along
+    one ray, so :func:`velocity_jacobian` takes the slopes there from one more solve of
+    those points only, along three rays: edgewise (beta = pi/2) for the in-plane slopes of
+    D and M_R, which are odd in V sin(beta) (the azimuth nodes are symmetric in sin psi), so
+    that this one-sided slope is the derivative; climbing (beta = 0) and descending (beta =
+    pi) for the axial slopes of T, Q and v_i,mean, whose mean is returned: the limit of
+    central differences. With Glauert's momentum the two are equal; with the empirical
+    descent momentum, which switches on at V cos(beta) = 0, they differ (docs/solver.md,
+    Derivatives), and the mean is what a vehicle's rotation sees (its rotors on either side
+    climb and descend alike).
+
+    Parameters
+    ----------
+    propeller, params
+        As :func:`propmap.rotor_loads`.
+    omega : float or array_like, shape S
+        Rotation rates [rad/s].
+    speed : ndarray, shape S
+        Airspeeds [m/s] (:func:`disk_frame`).
+    **solve
+        ``air``, ``discretization``, ``on_failure`` as :func:`propmap.rotor_loads`.
+
+    Returns
+    -------
+    dict
+        {"drag": dD/dV_s [N s/m], "rolling_moment": dM_R/dV_s [N s], "thrust": dT/dV_c
+        [N s/m], "torque": dQ/dV_c [N s], "v_i_mean": dv_i,mean/dV_c [-]}, each shape S.
+    """
+    shape = np.broadcast_shapes(np.shape(speed), np.shape(omega))
+    out = {q: np.zeros(shape) for q in ("drag", "rolling_moment", "thrust", "torque", "v_i_mean")}
+    still = np.broadcast_to(np.asarray(speed) == 0.0, shape)
+    if np.any(still):
+        om = np.broadcast_to(np.asarray(omega, float), shape)[still]
+        rays = np.array([0.0, 0.5 * np.pi, np.pi])[:, None]  # climb, edgewise, descent
+        r = rotor_loads(propeller, params, om[None, :], 0.0, rays, derivatives=("airspeed",), **solve)
+        for q in out:
+            d = r.derivative(q, "airspeed")
+            # edgewise for the odd loads; the mean of climb and descent (dV_c = -dV along beta = pi)
+            out[q][still] = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
+    return out
+
+
+def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
+    """dF/dV and dtau/dV: the force's and torque's Jacobians with respect to the velocity vector.
+
+    With V_c = V . z, V_s = |V - V_c z|, e_ip the in-plane unit velocity and l = z x e_ip,
+    the force F = T z - D e_ip (:func:`wrench_vectors`) has (the chain rule; de_ip/dV =
+    l l^T / V_s)
+
+        dF/dV = z (T_s e_ip + T_c z)^T - e_ip (D_s e_ip + D_c z)^T - (D / V_s) l l^T,
+
+    X_s, X_c the loads' derivatives with respect to V_s and V_c, from their airspeed and
+    incidence derivatives (X_s = sin(beta) X_V + cos(beta) X_beta / V, X_c = cos(beta) X_V -
+    sin(beta) X_beta / V); the torque -spin (Q z + M_R e_ip) likewise. In axial flow (V_s =
+    0) D / V_s and M_R / V_s are their limits D_s and M_R,s (D and M_R are odd in V_s, T and Q
+    even, so T_s = Q_s = 0 there) and the in-plane block is -D_s (I - z z^T): isotropic.
+
+    Parameters
+    ----------
+    loads : RotorLoads, shape S
+        With the derivatives "airspeed" and "incidence" (:func:`propmap.rotor_loads`), the
+        uniform inflow and rigid blades (no side force or pitching moment).
+    V, z : array_like, shape S + (3,)
+        Velocity [m/s] and unit axis (:func:`disk_frame`).
+    spin : array_like, shape S
+        +1 ccw, -1 cw.
+    still : dict, optional
+        The slopes where V = 0 (:func:`still_air_slopes`); required when a point has V = 0,
+        where the loads' own derivatives lie along one ray.
+
+    Returns
+    -------
+    tuple of ndarray
+        dF/dV [N s/m] and dtau/dV [N s], shape S + (3, 3), entry [..., i, j] the derivative
+        of component i with respect to V_j.
+
+    Raises
+    ------
+    ValueError
+        ``still`` missing while a point has V = 0.
+
+    Notes
+    -----
+    At V = 0 the axial column is the mean of the climb and descent slopes
+    (:func:`still_air_slopes`), as exactly edgewise (V_c = 0) the loads' own derivatives
+    are: the empirical descent momentum switches on at V_c = 0 and the model has a kink
+    there (docs/solver.md, Derivatives). Elsewhere these are derivatives.
+    """
+    shape = np.shape(loads.thrust)
+    z = np.broadcast_to(z, shape + (3,))
+    s = np.broadcast_to(spin, shape)
+    e, axial, vs, split = _disk_split(loads, V, z, still)
+    (Ts, Tc), (Ds, Dc), (Qs, Qc), (Rs, Rc) = (split(q) for q in ("thrust", "drag", "torque", "rolling_moment"))
+    # D / V_s and M_R / V_s, their limits D_s, M_R,s in axial flow
+    d_ratio = np.where(axial, Ds, loads.drag / np.where(axial, 1.0, vs))
+    r_ratio = np.where(axial, Rs, loads.rolling_moment / np.where(axial, 1.0, vs))
+    proj = np.eye(3) - z[..., :, None] * z[..., None, :]  # I - z z^T
+    ee = e[..., :, None] * e[..., None, :]
+
+    def outer(a, b):
+        return a[..., :, None] * b[..., None, :]
+
+    def row(xs, xc):  # X_s e_ip + X_c z
+        return xs[..., None] * e + xc[..., None] * z
+
+    # -(D_s e e^T + (D / V_s) l l^T) = -((D_s - D / V_s) e e^T + (D / V_s) (I - z z^T))
+    dF = (outer(z, row(Ts, Tc)) - outer(e, row(0.0 * Ds, Dc)) - (Ds - d_ratio)[..., None, None] * ee
+          - d_ratio[..., None, None] * proj)
+    dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, row(0.0 * Rs, Rc))
+                                  + (Rs - r_ratio)[..., None, None] * ee + r_ratio[..., None, None] * proj)
+    return dF, dtau
+
+
+def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.ndarray:
+    """d(quantity)/dV for a load even in the in-plane speed ("thrust", "torque", "v_i_mean").
+
+    X_s e_ip + X_c z (:func:`velocity_jacobian`, its notation): the gradient of the scalar
+    with respect to the velocity vector; in axial flow X_s = 0 (the load is even in V_s),
+    at V = 0 X_c is the mean of the climb and descent slopes.
+
+    Parameters
+    ----------
+    loads : RotorLoads, shape S
+        With the derivatives "airspeed" and "incidence".
+    quantity : {"thrust", "torque", "v_i_mean"}
+    V, z : array_like, shape S + (3,)
+        Velocity [m/s] and unit axis.
+    still : dict, optional
+        As :func:`velocity_jacobian`.
+
+    Returns
+    -------
+    ndarray, shape S + (3,)
+        The gradient [unit of the quantity per m/s].
+
+    Raises
+    ------
+    ValueError
+        ``quantity`` odd in the in-plane speed ("drag", "rolling_moment": use
+        :func:`velocity_jacobian`), ``still`` missing while a point has V = 0, or as
+        :meth:`RotorLoads.derivative`.
+    """
+    if quantity not in ("thrust", "torque", "v_i_mean"):
+        raise ValueError(f"quantity must be 'thrust', 'torque' or 'v_i_mean' (a load even in the in-plane speed), "
+                         f"got {quantity!r:.40}")
+    z = np.broadcast_to(z, np.shape(loads.thrust) + (3,))
+    e, _, _, split = _disk_split(loads, V, z, still)
+    xs, xc = split(quantity)
+    return xs[..., None] * e + xc[..., None] * z
+
+
+#: the loads odd in the in-plane speed V sin(beta) (the others are even)
+_ODD = ("drag", "rolling_moment")
+
+
+def _disk_split(loads: RotorLoads, V, z, still) -> tuple:
+    """(e_ip, axial, V_s, split) at the loads' points: the in-plane unit velocity (0 in axial
+    flow), the mask of axial flow (V = 0 included), V_s [m/s] as the solver had it, and
+    split(q) -> (dq/dV_s, dq/dV_c) from q's airspeed and incidence derivatives (dq/dV_s = 0
+    in axial flow for the even loads), at V = 0 from ``still`` (:func:`still_air_slopes`)."""
+    shape = np.shape(loads.thrust)
+    V = np.broadcast_to(V, shape + (3,))
+    # the speed and incidence the loads were solved at, so that D / V_s is theirs
+    speed = np.broadcast_to(loads.airspeed, shape)
+    sb = np.sin(np.broadcast_to(loads.incidence, shape))
+    cb = np.cos(np.broadcast_to(loads.incidence, shape))
+    vs = speed * sb
+    axial = (np.abs(vs) < 1e-12 * speed) | (vs == 0.0)  # as the solver: no in-plane speed
+    at_rest = speed == 0.0
+    if np.any(at_rest) and still is None:
+        raise ValueError("still (the slopes of still_air_slopes) is required where V = 0")
+    v_ip = V - np.einsum("...i,...i->...", V, z)[..., None] * z
+    n_ip = np.linalg.norm(v_ip, axis=-1)
+    e = np.where(axial[..., None], 0.0, v_ip / np.where(n_ip > 0, n_ip, 1.0)[..., None])
+    sb = np.where(axial, 0.0, sb)
+    safe = np.where(at_rest, 1.0, speed)
+
+    def split(q):
+        xv, xb = loads.derivative(q, "airspeed"), loads.derivative(q, "incidence") / safe
+        xs, xc = sb * xv + cb * xb, cb * xv - sb * xb
+        if q not in _ODD:
+            xs = np.where(axial, 0.0, xs)  # even loads: no in-plane slope in axial flow
+        if np.any(at_rest):
+            xs = np.where(at_rest, still[q] if q in _ODD else 0.0, xs)
+            xc = np.where(at_rest, 0.0 if q in _ODD else still[q], xc)
+        return xs, xc
+
+    return e, axial, vs, split
 
 
 def disk_frame(velocity, axis):

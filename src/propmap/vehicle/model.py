@@ -37,7 +37,8 @@ from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
-from ..core.vector import disk_frame, wrench_vectors
+from ..core.vector import (VELOCITY_INPUTS, disk_frame, still_air_slopes, velocity_gradient, velocity_jacobian,
+                           wrench_vectors)
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
@@ -146,7 +147,11 @@ class VehicleWrench:
         control-effectiveness matrix of a linearisation; else None.
     jacobian : dict or None
         With parameter names among ``derivatives``: {("force", name): dF/dp, ("moment",
-        name): dM/dp}, each shape (N, 3); else None.
+        name): dM/dp}, each shape (N, 3); with "velocity" or "angular_velocity" among them
+        dF/dv, dM/dv [N s/m, N s] and dF/dw, dM/dw [N s/rad, N m s/rad], each shape (N, 3, 3),
+        entry [n, i, j] the derivative of component i with respect to component j of the
+        body velocity v or the angular velocity w (the state matrix of a linearisation;
+        with respect to the wind, -dF/dv and -dM/dv); else None.
     """
 
     force: np.ndarray
@@ -238,7 +243,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         and M with respect to a section parameter of ``params`` (as :func:`propmap.rotor_loads`
         takes them, "collective" included), the air density "rho" [kg/m^3] (the rotors'
         loads and the airframe drag) or an airframe term (``drag_area_x``,
-        ``drag_area_y``, ``drag_area_z``, ``wash_factor``), in ``VehicleWrench.jacobian``.
+        ``drag_area_y``, ``drag_area_z``, ``wash_factor``), in ``VehicleWrench.jacobian``;
+        "velocity" and "angular_velocity" give the Jacobians with respect to v and w
+        (each rotor's through :func:`propmap.core.vector.velocity_jacobian`, its hub moving
+        at v + w x r_i - wind; at a hub speed of 0 its axial column is the mean of the climb
+        and descent slopes, :func:`propmap.core.vector.still_air_slopes`).
         Each rotor's load derivatives come from the implicit function theorem (docs/solver.md)
         and are carried through the vector sums, the arms, the gyroscopic moment and the
         airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
@@ -285,9 +294,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
-    rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES)
+    motion = any(n in MOTION_NAMES for n in wrt)
+    rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
     rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
+    hub_jac = _hub_velocity_jacobians(vehicle, params, loads, V_hub, axes, om, **solve) if motion else None
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
 
@@ -300,20 +311,24 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     for i, rot in enumerate(vehicle.rotors):
         if rot.inertia is None or rot.inertia == 0:
             continue
-        h = (rot.spin * rot.inertia * om[:, i])[:, None] * rot.axis  # (N, 3)
+        h = (rot.spin * rot.inertia * om[:, i])[:, None] * axes[i]  # (N, 3)
         rotor_moment[:, i, :] -= np.cross(w, h)
         if acc is not None:
             dom = np.broadcast_to(acc, (N, n_rot))[:, i]
-            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * rot.axis
+            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * axes[i]
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
     wash = None
     if body is not None and body.active:
-        wash = np.mean([loads[i].v_i_mean[:, None] * vehicle.rotors[i].axis for i in range(n_rot)], axis=0)
+        wash = np.mean([loads[i].v_i_mean[:, None] * axes[i] for i in range(n_rot)], axis=0)
         body_force = body_drag_force(body, v - wind_a, wash, air.rho)
     dF = dM = jac = None
     if wrt:
         dF, dM, jac = _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
+        if motion:
+            jac = {} if jac is None else jac
+            jac.update(_motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body, v - wind_a,
+                                           wash, air.rho))
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
@@ -321,6 +336,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
 
 #: the airframe terms vehicle_wrench differentiates (core/body.py)
 BODY_DRAG_NAMES = ("drag_area_x", "drag_area_y", "drag_area_z", "wash_factor")
+#: the vehicle's motion, whose Jacobians (shape (N, 3, 3)) vehicle_wrench gives
+MOTION_NAMES = ("velocity", "angular_velocity")
 
 
 def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
@@ -335,9 +352,9 @@ def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
     wrt = tuple(dict.fromkeys(derivatives))
     bad = [n for n in wrt if n in ("airspeed", "incidence")]
     if bad:
-        raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', a section "
-                         "parameter or an airframe term")
-    if any(n not in ("omega", "rho", *BODY_DRAG_NAMES) for n in wrt) and any(r.params is not None
+        raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', "
+                         "'velocity', 'angular_velocity', a section parameter or an airframe term")
+    if any(n not in ("omega", "rho", *BODY_DRAG_NAMES, *MOTION_NAMES) for n in wrt) and any(r.params is not None
                                                                             for r in vehicle.rotors):
         raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
                          "(a rotor of this vehicle has its own)")
@@ -385,7 +402,7 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
                                 * axes[i])
             dF[:, :, i] = F
             dM[:, :, i] = M
-    others = [n for n in wrt if n != "omega"]
+    others = [n for n in wrt if n != "omega" and n not in MOTION_NAMES]
     if others:
         jac = {}
         for name in others:
@@ -415,6 +432,75 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
             jac[("force", name)] = F
             jac[("moment", name)] = M
     return dF, dM, jac
+
+
+def _cross_matrix(r: np.ndarray) -> np.ndarray:
+    """[r]x, shape r.shape + (3,): the matrix with [r]x u = r x u."""
+    m = np.zeros(r.shape + (3,))
+    m[..., 0, 1], m[..., 0, 2], m[..., 1, 2] = -r[..., 2], r[..., 1], -r[..., 0]
+    m[..., 1, 0], m[..., 2, 0], m[..., 2, 1] = r[..., 2], -r[..., 1], r[..., 0]
+    return m
+
+
+def _hub_velocity_jacobians(vehicle, params, loads, V_hub, axes, om, *, air, discretization, on_failure,
+                            derivatives):
+    """Each rotor's (dF_i/dV_i, dtau_i/dV_i, dvbar_i/dV_i), shapes (N, n_rot, 3, 3) twice and
+    (N, n_rot, 3): its force's, hub moment's and mean inflow's derivatives with respect to its
+    hub velocity (core/vector.velocity_jacobian; at V_i = 0 one more solve of those samples
+    along three rays, core/vector.still_air_slopes)."""
+    N, n_rot = om.shape
+    dF = np.empty((N, n_rot, 3, 3))
+    dtau = np.empty((N, n_rot, 3, 3))
+    dvi = np.empty((N, n_rot, 3))
+    for i, rot in enumerate(vehicle.rotors):
+        p = rot.params if rot.params is not None else params
+        Vd, z, speed, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
+        still = still_air_slopes(rot.propeller, p, om[:, i], speed, air=air, discretization=discretization,
+                                 on_failure=on_failure)
+        dF[:, i], dtau[:, i] = velocity_jacobian(loads[i], Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0), still)
+        dvi[:, i] = velocity_gradient(loads[i], "v_i_mean", Vd, z, still)
+    return dF, dtau, dvi
+
+
+def _motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body, v_air, wash, rho) -> dict:
+    """{("force" | "moment", "velocity" | "angular_velocity"): shape (N, 3, 3)}: the rotors' hub
+    Jacobians through V_i = v + w x r_i - wind (dV_i/dv = I, dV_i/dw = -[r_i]x), the arms, the
+    gyroscopic moment -w x (s_i J_i Omega_i a_i) and the airframe drag, whose air speed
+    v - wind + k_w (mean of v_i,mean a_i) moves with the rotors' inflow too."""
+    dF_hub, dtau_hub, dvi = hub_jac
+    N, n_rot = om.shape
+    arm = _cross_matrix(pos)  # (n_rot, 3, 3)
+    dM_hub = dtau_hub + arm[None] @ dF_hub  # moment about the centre of mass per unit hub velocity
+    out = {}
+    drag_active = wash is not None and body is not None
+    if drag_active:
+        u = v_air + body.wash_factor * wash
+        speed = np.linalg.norm(u, axis=1)
+        unit = u / np.where(speed > 0, speed, 1.0)[:, None]
+        # d(-(rho/2) C |u| u)/du = -(rho/2) C (|u| I + u u^T / |u|)
+        drag_du = -0.5 * rho * np.asarray(body.drag_area)[None, :, None] * (
+            speed[:, None, None] * np.eye(3) + speed[:, None, None] * unit[:, :, None] * unit[:, None, :])
+        # d wash/dV_i = a_i (dvbar_i/dV_i)^T / n_rot
+        dwash = axes[None, :, :, None] * dvi[:, :, None, :] / n_rot  # (N, n_rot, 3, 3)
+    for name in ("velocity", "angular_velocity"):
+        if name not in wrt:
+            continue
+        # dV_i/dx: I for the velocity, -[r_i]x for the angular velocity
+        dV = np.broadcast_to(np.eye(3), (n_rot, 3, 3)) if name == "velocity" else -arm
+        F = np.einsum("nrij,rjk->nik", dF_hub, dV)
+        M = np.einsum("nrij,rjk->nik", dM_hub, dV)
+        if name == "angular_velocity":
+            for i, rot in enumerate(vehicle.rotors):
+                if rot.inertia:  # d(-w x h)/dw = [h]x
+                    M = M + _cross_matrix((rot.spin * rot.inertia * om[:, i])[:, None] * axes[i])
+        if drag_active:
+            du = np.einsum("nrij,rjk->nik", body.wash_factor * dwash, dV)
+            if name == "velocity":
+                du = du + np.eye(3)
+            F = F + drag_du @ du
+        out[("force", name)] = F
+        out[("moment", name)] = M
+    return out
 
 
 def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure,
