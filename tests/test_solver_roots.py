@@ -148,12 +148,17 @@ def test_failed_solve_raises_or_flags_never_silent(apc8x6, apc_params, monkeypat
 
 
 def _fail_everything(*args):
-    # the last 3 arguments are the outputs: out (T, D, Q, M_R), rad (per annulus), counts (status, ...)
-    out, rad, counts = args[-3:]
+    # the last 4 arguments are the outputs: out (T, D, Q, M_R, ...), rad (per annulus), counts (status, ...)
+    # and flags (converged, ...); the states and flags as the kernel's point_flags writes them
+    from propmap.core import _kernel
+
+    out, rad, counts, flags = args[-4:]
     out[...] = np.nan
     rad[...] = 0
     counts[...] = 0
     counts[0] = 1 + 3 * 4 + 1  # status: annulus 3, no bracket
+    Om, Vs, Vc, cls, inflow, emp = args[0], args[1], args[2], args[-5], args[20], args[21]
+    _kernel.point_flags(out, counts, Vs, Vc, Om, cls, inflow != 0, emp, flags)
 
 
 def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, apc_params):

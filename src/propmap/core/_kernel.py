@@ -399,9 +399,12 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
     return cfac * aT / naz, dD, y * cfac * aQ / naz, dR, cfac * aY / naz, y * cfac * aP / naz
 
 
-#: rows of the packed outputs of _solve_batch: ``out`` (N_OUT, n) and ``rad`` (N_RAD, rows, nr)
-N_OUT = 7  # T, D, Q, M_R, Y, M_P, mean inflow
+#: rows of the packed outputs of solve_batch: ``out`` (N_OUT, n), ``rad`` (N_RAD, rows, nr),
+#: ``counts`` (N_COUNTS, n) and ``flags`` (N_FLAGS, n)
+N_OUT = 11  # T, D, Q, M_R, Y, M_P, mean inflow; v_h, descent ratio k, in-plane ratio m, reverse-flow radius
 N_RAD = 7  # v_i, dT, dD, dQ, dM_R, dY, dM_P
+N_COUNTS = 5  # status, annuli with multiple roots, annuli in vortex ring, residual evaluations, working state
+N_FLAGS = 5  # converged, vortex ring, multiple roots, reverse flow, inflow extrapolated
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -424,7 +427,8 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
     (_physics.inflow_gradients), then with the linear inflow over the full circle.
     ``radius``: R [m]. Outputs (packed, so that the argument list stays short enough for
     numba's inliner): ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
-    the side force Y, the pitching moment M_P and the area-weighted mean inflow; ``rad``
+    the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
+    the flags', are written by :func:`point_flags`); ``rad``
     shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P per annulus when
     ``radial``, else unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (4, n) int64, the
     rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations.
@@ -546,20 +550,23 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                inflow, emp, radius, radial, out, rad, counts):
-    """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``)."""
+                inflow, emp, radius, radial, cls, out, rad, counts, flags):
+    """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``),
+    then :func:`point_flags` (``cls``, ``flags`` as there)."""
     _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
                  inflow, emp, radius, radial, out, rad, counts)
+    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch_serial(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk,
-                       cam, inflow, emp, radius, radial, out, rad, counts):
-    """:func:`_solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
+                       cam, inflow, emp, radius, radial, cls, out, rad, counts, flags):
+    """:func:`solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
     _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
                  inflow, emp, radius, radial, out, rad, counts)
+    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
 
 
 @numba.njit(cache=CACHE, error_model="numpy")
@@ -613,3 +620,39 @@ def working_states(T, vx, vz, vbar, rho, radius, band, k_windmill, linear, empir
             fade = np.exp(-(vx[i] / max(abs(vbar[i]), 1e-12)) ** 2)
             x = 0.05 < fade < 0.95
         extrap[i] = x
+
+
+
+#: layout of ``cls``, the per-model constants of :func:`point_flags`: rho [kg/m^3], R [m], r_hub [m],
+#: the windmill-brake descent ratio and the vortex-ring band (core/states.py)
+CLS_RHO, CLS_RADIUS, CLS_R_HUB, CLS_K_WINDMILL, CLS_BAND = 0, 1, 2, 3, 4
+
+
+@numba.njit(cache=CACHE, error_model="numpy")
+def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags):
+    """The result's per-point states and flags from the loads, written into the packed outputs
+    (compiled after the solve: one NumPy comparison on a one-point array costs as much as this
+    whole loop; no fastmath, as :func:`working_states`).
+
+    Reads ``out`` rows 0 (T) and 6 (mean inflow), ``counts`` rows 0 (status) and 1 (annuli
+    with multiple roots), ``vx``, ``vz`` = V sin(beta), V cos(beta) and ``om``, the rates the
+    loads are for [rad/s]; ``cls`` as ``CLS_*``. Writes ``out`` rows 7-10 (v_h, the descent
+    and in-plane ratios k and m, the reverse-flow radius V sin(beta) / Omega [m]: for a
+    stopped rotor, Omega = 0, inf with in-plane flow, else 0), ``counts`` row 4 (the working
+    state) and ``flags`` shape (N_FLAGS, n): converged (status 0), vortex ring (state 1),
+    multiple roots, reverse flow (radius > r_hub), inflow extrapolated
+    (:func:`working_states`).
+    """
+    working_states(out[0], vx, vz, out[6], cls[CLS_RHO], cls[CLS_RADIUS], cls[CLS_BAND:], cls[CLS_K_WINDMILL],
+                   linear, empirical, counts[4], out[7], out[8], out[9], flags[4])
+    r_hub = cls[CLS_R_HUB]
+    for i in range(vx.size):
+        flags[0, i] = counts[0, i] == 0
+        flags[1, i] = counts[4, i] == 1
+        flags[2, i] = counts[1, i] > 0
+        if om[i] > 0.0:
+            r = vx[i] / om[i]
+        else:
+            r = np.inf if vx[i] > 0.0 else 0.0
+        out[10, i] = r
+        flags[3, i] = r > r_hub

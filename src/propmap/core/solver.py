@@ -20,7 +20,7 @@ from . import _physics as ph
 from .airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
-from .states import STATES, _classify
+from .states import BAND_ARRAY, K_WINDMILL, STATES
 
 __all__ = [
     "Discretization",
@@ -161,7 +161,8 @@ _PREPARED_MAX = 64
 
 
 def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretization: Discretization):
-    """(nodes, model code, pk, cam, inflow code, empirical descent) of a model, cached by identity
+    """(nodes, model code, pk, cam, inflow code, empirical descent, the flags' constants cls) of a
+    model, cached by identity
     (the cache holds the objects, so an id is not reused while its entry lives)."""
     key = (id(propeller), id(params), id(air), id(discretization))
     hit = _PREPARED.get(key)
@@ -170,9 +171,12 @@ def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretizat
     nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
     model, pk = _model_constants(params)
     cam = _cambered_args(params, air)
-    for a in (pk, cam):
+    cls = np.empty(_kernel.CLS_BAND + BAND_ARRAY.size)  # _kernel.point_flags' constants
+    cls[_kernel.CLS_RHO], cls[_kernel.CLS_RADIUS], cls[_kernel.CLS_R_HUB] = air.rho, propeller.radius, propeller.r_hub
+    cls[_kernel.CLS_K_WINDMILL], cls[_kernel.CLS_BAND:] = K_WINDMILL, BAND_ARRAY
+    for a in (pk, cam, cls):
         a.setflags(write=False)
-    prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]))
+    prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]), cls)
     if len(_PREPARED) >= _PREPARED_MAX:
         _PREPARED.clear()
     _PREPARED[key] = (propeller, params, air, discretization, prep)
@@ -654,9 +658,8 @@ def rotor_loads(
         vs0, vc0 = v0 * math.sin(b0), v0 * math.cos(b0)  # Python floats: no ufunc calls on 1-element arrays
         if abs(vs0) < 1e-12 * max(v0, 1e-300):  # exact axial flow at beta = 0, pi
             vs0 = 0.0
-        inputs = np.array([[w0], [v0], [b0], [0.0 if collective is None else _scalar("collective", collective)],
-                           [vs0], [vc0]])
-        om1, V1, b1, c1, Vs, Vc = inputs  # rows: contiguous views of one point each
+        x = np.array([w0, v0, b0, 0.0 if collective is None else _scalar("collective", collective), vs0, vc0])
+        om1, V1, b1, c1, Vs, Vc = x[0:1], x[1:2], x[2:3], x[3:4], x[4:5], x[5:6]  # one-point views
     else:
         arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
         if collective is not None:
@@ -686,21 +689,25 @@ def rotor_loads(
     om_in = om1
     if any_slow:  # spin-up and stopped rotors: solved at OMEGA_MIN, scaled below
         om1 = np.maximum(om1, OMEGA_MIN)
-    nd, model, pk, cam, inflow, empirical = _prepared(propeller, params, air, discretization)
+    nd, model, pk, cam, inflow, empirical, cls = _prepared(propeller, params, air, discretization)
     n, nr = om1.size, nd.y.size
-    out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow
+    out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow, v_h, k, m, reverse-flow radius
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
     rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
-    counts = np.empty((4, n), dtype=np.int64)  # status, annuli with multiple roots, in vortex ring, evaluations
-    (T, D, Q, R, Y, P, vbar), (status, nmulti, _, nev) = out, counts  # (row 2: annuli in vortex ring)
+    counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
+    flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
+    # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
+    (T, D, Q, R, Y, P, vbar, v_h, k_desc, _, rfr), (status, _, _, nev, state) = out, counts
     # a small batch runs on the calling thread: starting the parallel region would cost more
-    # than the work (and a single call need not load the thread pool at all)
+    # than the work (and a single call need not load the thread pool at all). The kernel also
+    # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
+    # (_kernel.point_flags: no NumPy calls on one-point arrays here)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, out, rad, counts)
-    converged = status == 0
+          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, cls, out, rad,
+          counts, flags)
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
-        i = int(np.argmax(~converged))
+        i = int(np.argmax(status != 0))
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
         why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge"}[reason]
@@ -718,14 +725,13 @@ def rotor_loads(
         T, D, Q, R, Y, P, vbar, b1c, b1s, rad = _spin_up_scaled(om_in, V1, T, D, Q, R, Y, P, vbar, b1c, b1s, rad,
                                                                 radial)
         om1 = om_in
-        # a stopped rotor: its whole retreating side in reverse flow (radius inf), none without in-plane flow
-        rfr = np.where(om1 > 0, Vs / np.maximum(om1, 1e-300), np.where(Vs > 0, np.inf, 0.0))
-    else:
-        rfr = Vs / om1
-    # working state, v_h, descent ratio and the inflow-validity flag (a linear inflow model with net
-    # upflow; the empirical descent curve blended in forward flight by propmap's fade), compiled
-    state, v_h, k_desc, _, extrapolated = _classify(T, Vs, Vc, vbar, air.rho, propeller.radius,
-                                                    linear=inflow != ph.INFLOW_UNIFORM, empirical=empirical)
+        # the states and flags again, for the scaled thrust and inflow and the rates asked for (a stopped
+        # rotor: its whole retreating side in reverse flow, radius inf, with in-plane flow)
+        out[0], out[6] = T, vbar
+        _kernel.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags)
+    # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
+    # upflow; the empirical descent curve blended in forward flight by propmap's fade)
+    converged, vring, multiple, reverse, extrapolated = flags
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
@@ -746,8 +752,8 @@ def rotor_loads(
         v_i_mean=s(vbar), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,
         v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3], dMR_dr=radial_out[4],
         dY_dr=radial_out[5], dMP_dr=radial_out[6],
-        converged=s(converged), vortex_ring=s(state == 1), multiple_roots=s(nmulti > 0),
-        reverse_flow=s(rfr > propeller.r_hub), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
+        converged=s(converged), vortex_ring=s(vring), multiple_roots=s(multiple),
+        reverse_flow=s(reverse), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
         state=s(state), v_h=s(v_h), descent_ratio=s(k_desc),
         n_evaluations=s(nev),
         rho=air.rho, diameter=propeller.diameter, jacobian=jac,
