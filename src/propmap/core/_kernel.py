@@ -132,6 +132,44 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _residuals_axial(f, trial, y, Om, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp, active,
+                     n_active):
+    """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
+    azimuth node), the annuli already solved included: branch-free loops over contiguous
+    annuli, which compile to SIMD code across them (one annulus' residual at a time is a
+    scalar chain). The empirical momentum in descent (a Newton solve per annulus) only for the
+    ``n_active`` annuli in ``active``, one at a time."""
+    nr = y.shape[0]
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for j in range(nr):
+            v = trial[j]
+            qT, _ = _element_cambered(Om * y[j], Vc + v, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], a0, a1,
+                                      a2, a3, a4, a5, a6, a7)
+            f[j] = cfac[j] * qT
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for j in range(nr):
+            v = trial[j]
+            qT, _ = _element_gill(Om * y[j], Vc + v, th[j], sth[j], cth[j], s0[j], g0, g1, g2, g3, g4, g5, sincos)
+            f[j] = cfac[j] * qT
+    if emp and Vc < 0.0:
+        for q in range(n_active):
+            j = active[q]
+            v = trial[j]
+            w_ax = _axial_mass_flow(v, Vc, 0.0)
+            f[j] -= floss[j] * mfac[j] * v * np.sqrt(w_ax * w_ax)
+    elif emp:  # Glauert's mass flow |Vc + v| outside descent, written as _residual writes it
+        for j in range(nr):
+            v = trial[j]
+            w_ax = abs(Vc + v)
+            f[j] -= floss[j] * mfac[j] * v * np.sqrt(w_ax * w_ax)
+    else:
+        for j in range(nr):
+            f[j] -= floss[j] * _momentum_thrust(trial[j], mfac[j], 0.0, Vc)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _false_position(a, fa, b, fb):
     """Zero of the secant through (a, fa), (b, fb); fa * fb < 0."""
     return (a * fb - b * fa) / (fb - fa)
@@ -200,6 +238,9 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
     inv_sin = np.empty(nr)
     tip = ct[0] >= 0.0  # the switches hold for all annuli
     hub = ch[0] >= 0.0
+    # axial flow (one node, uniform inflow): all annuli's blade elements in one vectorised loop, the solved
+    # ones recomputed harmlessly (their roots are already stored)
+    vector_axial = naz == 1 and Vs == 0.0 and gx[0] == 0.0 and gy[0] == 0.0
     active = np.arange(nr)
     for j in range(nr):
         nev[j] = 0
@@ -226,11 +267,17 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
             if hub:
                 for j in range(nr):
                     floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
-        for q in range(n_active):  # independent evaluations
-            j = active[q]
-            f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], cfac[j],
-                             mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
-            nev[j] += 1
+        if vector_axial:  # every annulus, solved or not, in one SIMD loop
+            _residuals_axial(f, trial, y, Om, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp,
+                             active, n_active)
+            for q in range(n_active):
+                nev[active[q]] += 1
+        else:
+            for q in range(n_active):  # independent evaluations
+                j = active[q]
+                f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
+                                 cfac[j], mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
+                nev[j] += 1
         m = 0
         for q in range(n_active):
             j = active[q]
