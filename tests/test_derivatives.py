@@ -360,6 +360,27 @@ def test_rotor_wrench_velocity_jacobian(prop, params, V, axis, om, spin):
     np.testing.assert_array_equal(alone.jacobian[("force", "omega")], r.jacobian[("force", "omega")])
 
 
+@pytest.mark.parametrize("vs", [1e-12, 1e-10, 1e-6, 1e-2])
+def test_velocity_jacobian_at_tiny_edgewise_speeds(prop, vs):
+    """Exactly edgewise at tiny airspeeds (the empirical descent model's switch at V_c = 0): the
+    axial column is the mean of the two sides, continuous with hover's and equal to central
+    differences (a step in the incidence would move V_c by only V 1e-5 and see one side)."""
+    g = pm.generic_params()
+    V = np.array([vs, 0.0, 0.0])
+    J = pm.rotor_wrench(prop, g, V, [0.0, 0.0, 1.0], 800.0, derivatives=("velocity",),
+                        discretization=DISC).jacobian[("force", "velocity")]
+    hover = pm.rotor_wrench(prop, g, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("velocity",),
+                            discretization=DISC).jacobian[("force", "velocity")]
+    h = 1e-4
+    for j in range(3):
+        dv = np.eye(3)[j] * h
+        fd = (pm.rotor_wrench(prop, g, V + dv, [0, 0, 1], 800.0, discretization=DISC).force
+              - pm.rotor_wrench(prop, g, V - dv, [0, 0, 1], 800.0, discretization=DISC).force) / (2 * h)
+        np.testing.assert_allclose(J[:, j], fd, rtol=0, atol=2e-5 * np.abs(J).max(), err_msg=f"column {j}")
+    if vs <= 1e-6:  # T's in-plane slope grows as V_s: 4e-5 N s/m at 1e-2 m/s
+        np.testing.assert_allclose(J, hover, rtol=0, atol=2e-5 * np.abs(hover).max())
+
+
 def test_velocity_jacobian_errors_and_shapes(prop):
     """Batches keep their shape S + (3, 3); the slopes at V = 0 are required; odd loads have no
     gradient."""
@@ -384,16 +405,22 @@ def test_velocity_jacobian_errors_and_shapes(prop):
 
 def test_vehicle_motion_jacobians():
     """vehicle_wrench(derivatives=("velocity", "angular_velocity")) on the NeuroBEM quadrotor with
-    an airframe drag and rotor inertia: against central differences of vehicle_wrench in each
-    component of v and w (1e-5 of the largest entry), in forward flight with body rates, slow
+    an airframe drag, rotor inertia and tilted rotors (axes given not unit): against central
+    differences of vehicle_wrench in each component of v and w (5e-5 of the largest entry), in
+    forward flight with body rates, slow
     climb and hover (the rotors' kink at V = 0 averaged, as the differences average it); the
     wind's Jacobian is minus the velocity's."""
     from pathlib import Path
 
     from propmap.core.body import BodyDrag
 
+    from dataclasses import replace
+
     veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
     assert all(r.inertia for r in veh.rotors)  # the gyroscopic term is exercised
+    # tilted rotors, their axes given not unit (the model normalises them)
+    tilts = ([0.2, 0.0, 2.0], [0.0, -0.3, 1.0], [-0.1, 0.1, 3.0], [0.0, 0.0, 1.0])
+    veh = replace(veh, rotors=tuple(replace(r, axis=np.array(a)) for r, a in zip(veh.rotors, tilts)))
     g = pm.generic_params()
     v = np.array([[6.0, -1.0, -0.5], [0.5, 0.0, 1.0], [0.0, 0.0, 0.0]])
     w = np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
@@ -401,17 +428,25 @@ def test_vehicle_motion_jacobians():
     body = BodyDrag((0.02, 0.01, 0.03), 1.2)
     r = pm.vehicle_wrench(veh, g, v, w, om, body_drag=body, derivatives=("velocity", "angular_velocity"),
                           discretization=DISC)
-    h = 1e-5
+    def central(name, j, h):
+        d = np.eye(3)[j] * h
+        args = ((v + d, w), (v - d, w)) if name == "velocity" else ((v, w + d), (v, w - d))
+        a, c = (pm.vehicle_wrench(veh, g, *x, om, body_drag=body, discretization=DISC) for x in args)
+        return {"force": (a.force - c.force) / (2 * h), "moment": (a.moment - c.moment) / (2 * h)}
+
+    # at hover the tilted hubs' axial speeds cross the kink at V_c = 0, whose two sides curve differently:
+    # central differences err by O(h) there, removed by Richardson's extrapolation from h = 2e-3 and 1e-3 (a
+    # smaller step moves the hubs by so little that the root tolerance over h dominates)
     for name in ("velocity", "angular_velocity"):
         for j in range(3):
-            d = np.eye(3)[j] * h
-            args = ((v + d, w), (v - d, w)) if name == "velocity" else ((v, w + d), (v, w - d))
-            a, c = (pm.vehicle_wrench(veh, g, *x, om, body_drag=body, discretization=DISC) for x in args)
-            for key, fd in (("force", (a.force - c.force) / (2 * h)), ("moment", (a.moment - c.moment) / (2 * h))):
+            coarse, fine = central(name, j, 2e-3), central(name, j, 1e-3)
+            for key in ("force", "moment"):
+                fd = 2.0 * fine[key] - coarse[key]
                 J = r.jacobian[(key, name)]
                 assert J.shape == (3, 3, 3)
                 for n in range(3):
-                    np.testing.assert_allclose(J[n, :, j], fd[n], rtol=0, atol=1e-5 * np.abs(J[n]).max(),
+                    # 5e-5: the rotors' derivatives (each within ~2e-5 of differences) cancel in part
+                    np.testing.assert_allclose(J[n, :, j], fd[n], rtol=0, atol=5e-5 * np.abs(J[n]).max(),
                                                err_msg=f"{key} {name} sample {n} column {j}")
     # hover: the airframe and the rotors damp horizontal motion (a stable, diagonal block)
     Fv = r.jacobian[("force", "velocity")][2]

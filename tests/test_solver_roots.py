@@ -147,18 +147,30 @@ def test_failed_solve_raises_or_flags_never_silent(apc8x6, apc_params, monkeypat
     assert not r.converged and np.isnan(r.thrust) and "not_converged" in r.flags()
 
 
-def _fail_everything(*args):
-    # the last 4 arguments are the outputs: out (T, D, Q, M_R, ...), rad (per annulus), counts (status, ...)
-    # and flags (converged, ...); the states and flags as the kernel's point_flags writes them
+def _kernel_args():
+    import inspect
+
     from propmap.core import _kernel
 
-    out, rad, counts, flags = args[-4:]
+    return tuple(inspect.signature(_kernel.solve_batch_serial.py_func).parameters)
+
+
+#: the kernel's argument names (read before any test replaces the kernel)
+_KERNEL_ARGS = _kernel_args()
+
+
+def _fail_everything(*args):
+    # the kernel's outputs by name: out (T, D, Q, M_R, ...), rad (per annulus), counts (status, ...) and
+    # flags (converged, ...); the states and flags as the kernel's point_flags writes them
+    from propmap.core import _kernel
+
+    a = dict(zip(_KERNEL_ARGS, args))
+    out, counts, flags = a["out"], a["counts"], a["flags"]
     out[...] = np.nan
-    rad[...] = 0
+    a["rad"][...] = 0
     counts[...] = 0
     counts[0] = 1 + 3 * 4 + 1  # status: annulus 3, no bracket
-    Om, Vs, Vc, cls, inflow, emp = args[0], args[1], args[2], args[-5], args[20], args[21]
-    _kernel.point_flags(out, counts, Vs, Vc, Om, cls, inflow != 0, emp, flags)
+    _kernel.point_flags(out, counts, a["Vs"], a["Vc"], a["Om"], a["cls"], a["inflow"] != 0, a["emp"], flags)
 
 
 def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, apc_params):

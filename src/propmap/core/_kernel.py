@@ -477,8 +477,9 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
     the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
     the flags', are written by :func:`point_flags`); ``rad``
     shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P per annulus when
-    ``radial``, else unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (4, n) int64, the
-    rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations.
+    ``radial``, else unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the
+    rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations (row
+    4, the working state, is :func:`point_flags`').
     ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
     4 + (annulus status code).
     """
@@ -667,7 +668,6 @@ def working_states(T, vx, vz, vbar, rho, radius, band, k_windmill, linear, empir
             fade = np.exp(-(vx[i] / max(abs(vbar[i]), 1e-12)) ** 2)
             x = 0.05 < fade < 0.95
         extrap[i] = x
-
 
 
 #: layout of ``cls``, the per-model constants of :func:`point_flags`: rho [kg/m^3], R [m], r_hub [m],

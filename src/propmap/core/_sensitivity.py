@@ -26,7 +26,9 @@ tolerance, 1e-7 of the inflow scale, divided by its step). The momentum side F d
 scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
 the empirical descent curve, through its inversion, and Prandtl's factor); where the
 empirical model switches on (V cos beta = 0, v = -V cos beta / 2) it is differenced
-centrally with steps 1e-5 (at V = 0 one-sided along the airspeed's ray).
+centrally in v, Omega, V sin beta and V cos beta with steps 1e-5 of their scales, whatever
+the airspeed, so that the two sides of the switch are averaged (at V = 0 one-sided along the
+airspeed's ray).
 
 A section parameter enters through the element's constants (pk) and the annulus'
 Reynolds constants (cam) only, the density through the Reynolds constant sc; their partial
@@ -362,10 +364,9 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     e[3, 3] = 1.0
     if axial and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray (V sin beta snapped to 0)
         e[1, 1] = 0.0
-    hx = np.empty(3)
+    hx = np.empty(2)  # at V = 0: the steps of the momentum side's differences in Omega and along the ray
     hx[0] = STEP * om
     hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
-    hx[2] = STEP
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
@@ -455,24 +456,35 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         dB[2, 3] = cH * kth * cq
         dB[3, 3] = cTs * kth * cq
         # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0,
-        # v = -V cos beta / 2) and at V = 0, where the solver's own momentum side is differenced (central;
-        # one-sided along the airspeed's ray at V = 0)
+        # v = -V cos beta / 2) and at V = 0, where the solver's own momentum side is differenced: centrally in
+        # v, Omega, V sin beta and V cos beta, with steps of each variable's scale (not of the incidence,
+        # whose step would move V cos beta by only V STEP: at small airspeeds that stays on one side of the
+        # switch); at V = 0 one-sided along the airspeed's ray
         analytic = not emp or (not one_sided and vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
         if analytic:
             mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
         else:
-            hv = STEP * (abs(vj) + abs(vc) + 0.01 * om * yj + 1e-9)
-            mv = (_momentum_side(vj + hv, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
-                  - _momentum_side(vj - hv, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)) / (2.0 * hv)
+            hv = STEP * (abs(vj) + abs(vc) + abs(vs) + 0.01 * om * yj + 1e-9)
+            mj, ctj, chj = mfac[j], ct[j], ch[j]
+            mv = (_momentum_side(vj + hv, om, vs, vc, yj, mj, ctj, chj, emp)
+                  - _momentum_side(vj - hv, om, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
             mom_om = mom_vs = mom_vc = 0.0
+            if not one_sided:
+                ho = STEP * om
+                mom_om = (_momentum_side(vj, om + ho, vs, vc, yj, mj, ctj, chj, emp)
+                          - _momentum_side(vj, om - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
+                mom_vs = (_momentum_side(vj, om, vs + hv, vc, yj, mj, ctj, chj, emp)
+                          - _momentum_side(vj, om, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+                mom_vc = (_momentum_side(vj, om, vs, vc + hv, yj, mj, ctj, chj, emp)
+                          - _momentum_side(vj, om, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
         Gv = Lv0 - mv
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
-            h = hx[p] if p < 3 else 0.0  # (the collective moves no momentum side)
+            h = hx[p] if p < 2 else 0.0  # (the collective moves no momentum side)
             if p == 3:
                 dmom = 0.0
-            elif analytic:
+            elif not one_sided:  # analytic or differenced above: the chain rule
                 dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
             elif p == 1 and one_sided:
                 m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)

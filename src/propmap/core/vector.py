@@ -16,7 +16,11 @@ from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
-__all__ = ["RotorWrench", "rotor_wrench", "velocity_gradient", "velocity_jacobian"]
+__all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
+
+
+#: the scalar inputs ``rotor_loads`` differentiates for the velocity vector's Jacobian
+VELOCITY_INPUTS = ("airspeed", "incidence")
 
 
 @dataclass(frozen=True)
@@ -182,10 +186,6 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
 
 
-#: the scalar inputs ``rotor_loads`` differentiates for the velocity vector's Jacobian
-VELOCITY_INPUTS = ("airspeed", "incidence")
-
-
 def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, **solve) -> dict:
     """The loads' slopes in the velocity at the points where ``speed`` is 0 (0 elsewhere).
 
@@ -282,9 +282,12 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
     s = np.broadcast_to(spin, shape)
     e, axial, vs, split = _disk_split(loads, V, z, still)
     (Ts, Tc), (Ds, Dc), (Qs, Qc), (Rs, Rc) = (split(q) for q in ("thrust", "drag", "torque", "rolling_moment"))
-    # D / V_s and M_R / V_s, their limits D_s, M_R,s in axial flow
-    d_ratio = np.where(axial, Ds, loads.drag / np.where(axial, 1.0, vs))
-    r_ratio = np.where(axial, Rs, loads.rolling_moment / np.where(axial, 1.0, vs))
+    # D / V_s and M_R / V_s; their limits D_s, M_R,s in axial flow and where V_s is below 1e-6 of the
+    # blade's speed scale (they differ by O((V_s / Omega R)^2) there, while the quotient of the tiny
+    # D, a sum over the nodes that cancels to O(V_s), loses digits: 1e-3 at V_s = 1e-12 m/s)
+    small = axial | (np.abs(vs) < 1e-6 * (np.asarray(loads.omega) * (0.5 * loads.diameter) + np.asarray(loads.airspeed)))
+    d_ratio = np.where(small, Ds, loads.drag / np.where(small, 1.0, vs))
+    r_ratio = np.where(small, Rs, loads.rolling_moment / np.where(small, 1.0, vs))
     proj = np.eye(3) - z[..., :, None] * z[..., None, :]  # I - z z^T
     ee = e[..., :, None] * e[..., None, :]
 

@@ -288,7 +288,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     N = counts.pop() if counts else 1
     v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
     om = np.broadcast_to(om, (N, n_rot))
-    pos, axes, _, _ = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes
+    pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
     wrt = _vehicle_derivatives(derivatives, vehicle)
     if wrt and kappa > 0 and n_rot > 1:
@@ -308,14 +308,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
         rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
     rotor_moment += np.cross(pos[None, :, :], rotor_force)
-    for i, rot in enumerate(vehicle.rotors):
-        if rot.inertia is None or rot.inertia == 0:
+    for i in range(n_rot):  # the gyroscopic and spin-up moments of the rotors with a known inertia
+        if not np.any(h_spin[i]):
             continue
-        h = (rot.spin * rot.inertia * om[:, i])[:, None] * axes[i]  # (N, 3)
-        rotor_moment[:, i, :] -= np.cross(w, h)
+        rotor_moment[:, i, :] -= np.cross(w, om[:, i, None] * h_spin[i])
         if acc is not None:
-            dom = np.broadcast_to(acc, (N, n_rot))[:, i]
-            rotor_moment[:, i, :] -= (rot.spin * rot.inertia * dom)[:, None] * axes[i]
+            rotor_moment[:, i, :] -= np.broadcast_to(acc, (N, n_rot))[:, i, None] * h_spin[i]
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
     wash = None
@@ -327,8 +325,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         dF, dM, jac = _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
         if motion:
             jac = {} if jac is None else jac
-            jac.update(_motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body, v - wind_a,
-                                           wash, air.rho))
+            jac.update(_motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, body, v - wind_a, wash, air.rho))
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
@@ -378,10 +375,10 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
         u = v_air + body.wash_factor * wash
         speed = np.linalg.norm(u, axis=1, keepdims=True)
         area = np.asarray(body.drag_area)
+        drag_du = _drag_jacobian(u, area, rho)
 
-        def body_du(du):  # d(-(rho/2) C |u| u) = -(rho/2) C (|u| du + u (u . du) / |u|)
-            proj = np.einsum("nk,nk->n", u, du)[:, None] / np.where(speed > 0, speed, 1.0)
-            return -0.5 * rho * area * (speed * du + u * proj)
+        def body_du(du):
+            return np.einsum("nij,nj->ni", drag_du, du)
 
     def rotor_vectors(i, name):
         ld = loads[i]
@@ -434,6 +431,15 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
     return dF, dM, jac
 
 
+def _drag_jacobian(u: np.ndarray, area: np.ndarray, rho: float) -> np.ndarray:
+    """d(-(rho/2) C |u| u)/du = -(rho/2) C (|u| I + u u^T / |u|), shape (N, 3, 3): the airframe
+    drag's (core/body.py, per-axis drag areas C [m^2]) Jacobian in its air speed u (N, 3) [m/s]
+    (0 at u = 0)."""
+    speed = np.linalg.norm(u, axis=1)[:, None, None]
+    outer = u[:, :, None] * u[:, None, :] / np.where(speed > 0, speed, 1.0)
+    return -0.5 * rho * np.asarray(area)[None, :, None] * (speed * np.eye(3) + outer)
+
+
 def _cross_matrix(r: np.ndarray) -> np.ndarray:
     """[r]x, shape r.shape + (3,): the matrix with [r]x u = r x u."""
     m = np.zeros(r.shape + (3,))
@@ -462,7 +468,7 @@ def _hub_velocity_jacobians(vehicle, params, loads, V_hub, axes, om, *, air, dis
     return dF, dtau, dvi
 
 
-def _motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body, v_air, wash, rho) -> dict:
+def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, body, v_air, wash, rho) -> dict:
     """{("force" | "moment", "velocity" | "angular_velocity"): shape (N, 3, 3)}: the rotors' hub
     Jacobians through V_i = v + w x r_i - wind (dV_i/dv = I, dV_i/dw = -[r_i]x), the arms, the
     gyroscopic moment -w x (s_i J_i Omega_i a_i) and the airframe drag, whose air speed
@@ -474,12 +480,7 @@ def _motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body
     out = {}
     drag_active = wash is not None and body is not None
     if drag_active:
-        u = v_air + body.wash_factor * wash
-        speed = np.linalg.norm(u, axis=1)
-        unit = u / np.where(speed > 0, speed, 1.0)[:, None]
-        # d(-(rho/2) C |u| u)/du = -(rho/2) C (|u| I + u u^T / |u|)
-        drag_du = -0.5 * rho * np.asarray(body.drag_area)[None, :, None] * (
-            speed[:, None, None] * np.eye(3) + speed[:, None, None] * unit[:, :, None] * unit[:, None, :])
+        drag_du = _drag_jacobian(v_air + body.wash_factor * wash, body.drag_area, rho)
         # d wash/dV_i = a_i (dvbar_i/dV_i)^T / n_rot
         dwash = axes[None, :, :, None] * dvi[:, :, None, :] / n_rot  # (N, n_rot, 3, 3)
     for name in ("velocity", "angular_velocity"):
@@ -489,10 +490,8 @@ def _motion_derivatives(wrt, vehicle, loads, hub_jac, V_hub, axes, pos, om, body
         dV = np.broadcast_to(np.eye(3), (n_rot, 3, 3)) if name == "velocity" else -arm
         F = np.einsum("nrij,rjk->nik", dF_hub, dV)
         M = np.einsum("nrij,rjk->nik", dM_hub, dV)
-        if name == "angular_velocity":
-            for i, rot in enumerate(vehicle.rotors):
-                if rot.inertia:  # d(-w x h)/dw = [h]x
-                    M = M + _cross_matrix((rot.spin * rot.inertia * om[:, i])[:, None] * axes[i])
+        if name == "angular_velocity":  # the gyroscopic moment: d(-w x h_i Omega_i)/dw = [h_i Omega_i]x
+            M = M + _cross_matrix(np.einsum("ri,nr->ni", h, om))
         if drag_active:
             du = np.einsum("nrij,rjk->nik", body.wash_factor * dwash, dV)
             if name == "velocity":
