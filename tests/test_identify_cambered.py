@@ -67,7 +67,11 @@ def test_the_prior_keeps_a_static_run_near_the_base_and_changes_rich_data_little
     static = synthetic(apc8x6, TRUE, sweep_rpm=())
     assert _data_kind(static) == "static"
     free = fit_loads(static, apc8x6, base=base, options=FitOptions(prior=False, names=CAMBERED_FIT_RE))
-    shrunk = fit_loads(static, apc8x6, base=base)
+    shrunk = fit_loads(static, apc8x6, base=base, options=FitOptions(directions=0))  # all 8 under the prior
+    along = fit_loads(static, apc8x6, base=base)  # the default: the data's 3 leading directions
+    assert along.extra["directions"]["count"] == 3
+    k = CAMBERED_FIT_RE.index("cd2")
+    assert abs(along.x[k] - base.cd2) < abs(free.x[k] - base.cd2)
     assert "prior" in shrunk.extra and "prior" not in free.extra
     # without the prior a static run gets only two parameters by default
     assert fit_loads(static, apc8x6, base=base, options=FitOptions(prior=False, max_nfev=3)).names == (

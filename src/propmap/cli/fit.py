@@ -281,10 +281,13 @@ def _warn_other_propeller(sources, prop) -> None:
               help="Divide a stand's electrical speed by the motor's pole pairs (raw electrical rpm), in [1, 50].")
 @click.option("--skip-sanity-check", is_flag=True,
               help="Fit data whose loads are more than 3x off the generic model's (refused by default: units?).")
+@click.option("--directions", type=click.IntRange(0, 8), default=None,
+              help="Static data, cambered model under the prior: how many parameter directions to free, those the "
+                   "data determine best against the prior (default 3; 0: every parameter under the prior).")
 @with_fit_options
 @with_air_options
 def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, rpm_source, pole_pairs,
-          skip_sanity_check, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None,
+          skip_sanity_check, directions, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None,
           temperature_c=None, pressure_pa=None, altitude_m=None):
     """Fit to load measurements of one propeller.
 
@@ -337,7 +340,13 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population)
+    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population,
+                      directions=directions)
+    if directions is not None and (np.any(train.airspeed > 0) or fit_params or no_prior):
+        from ._common import warn
+
+        warn("--directions applies to static data (all airspeeds 0) fitted with the default parameters under the "
+             "prior: ignored here")
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:

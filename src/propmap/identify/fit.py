@@ -191,6 +191,12 @@ class FitOptions:
     progress : bool
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
+    directions : int, optional
+        Cambered model, static data, the prior on and ``names`` not given: fit only this
+        many of the parameter directions the data determine best against the prior
+        (identify/directions.py), the others held at the base values; None (default):
+        :data:`~propmap.identify.directions.STATIC_DIRECTIONS` (3); 0: every name under
+        the prior instead (the measurement behind the default: docs/identification.md).
     jacobian : {"implicit", "differences"}
         The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
         (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
@@ -214,10 +220,14 @@ class FitOptions:
     progress: bool = False
     discretization: Discretization = DEFAULT_DISCRETIZATION
     jacobian: str = "implicit"
+    directions: int | None = None
 
     def __post_init__(self) -> None:
         if self.jacobian not in ("implicit", "differences"):
             raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")
+        d = self.directions
+        if d is not None and (isinstance(d, bool) or not isinstance(d, (int, np.integer)) or d < 0):
+            raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")
 
 
 @dataclass(frozen=True)
@@ -370,9 +380,25 @@ class FitResult:
             extra = f"{f(idf.std_error_data[k]):>12.3g}" if data_only else ""
             lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
                          f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{extra}{flag}")
-        if data_only:
+        if data_only and self.extra.get("directions"):
+            lines.append("std err and interval: data and population prior together (the posterior; the held "
+                         "directions keep the population's spread); 'data only': the data's alone, along the free "
+                         "directions")
+        elif data_only:
             lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
                          "the data's alone")
+        dirs = self.extra.get("directions")
+        if dirs:
+            lines.append(f"free: {dirs['count']} directions of the {len(self.names)} parameters, those the data "
+                         "determine best against the population prior (the others at the base set); coefficient "
+                         "+- std error (data only) in prior standard deviations, and the parameter changes per unit "
+                         "(the four largest against each parameter's population spread):")
+            for i, (cf, sd, sdd, load) in enumerate(zip(dirs["coefficients"], dirs["std_error"],
+                                                        dirs["std_error_data_only"], dirs["loadings"])):
+                big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
+                terms = ", ".join(f"{self.names[j]} {math.degrees(load[j]) if _is_angle(self.names[j]) else load[j]:+.3g}"
+                                  f"{' deg' if _is_angle(self.names[j]) else ''}" for j in big)
+                lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd:.3f} ({sdd:.3f}): {terms}")
         if idf.effective_parameters is not None:
             lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
                          "directions (effective number; the prior holds the others near the base set)")
@@ -1042,6 +1068,23 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
+def _prior_stats(names, base, options):
+    """(sel, mu, L, population) of the population prior on ``names`` (the indices it covers,
+    the base values there, the Cholesky factor of its covariance, the statistics), or None
+    without a prior (the paper's model, ``options.prior`` off, no name covered)."""
+    if not (options.prior and isinstance(base, CamberedParams)):
+        return None
+    from ..io.calibration import population
+
+    pop = options.population or population()
+    sel = [k for k, n in enumerate(names) if n in pop["names"]]
+    if not sel:
+        return None
+    idx = [pop["names"].index(names[k]) for k in sel]
+    cov = np.asarray(pop["covariance"], float)[np.ix_(idx, idx)]
+    return sel, np.array([getattr(base, names[k]) for k in sel]), np.linalg.cholesky(cov), pop
+
+
 def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model).
 
@@ -1049,18 +1092,11 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     fit_loads' normalised residuals) into the residuals' unit: 1 for loads, the weight [N]
     for level flight (whose residuals are forces).
     """
-    if not (options.prior and isinstance(base, CamberedParams)):
+    stats = _prior_stats(names, base, options)
+    if stats is None:
         return make_residual, None
-    from ..io.calibration import population
-
-    pop = options.population or population()
-    idx = [pop["names"].index(n) for n in names if n in pop["names"]]
-    if not idx:
-        return make_residual, None
-    sel = [k for k, n in enumerate(names) if n in pop["names"]]
-    cov = np.asarray(pop["covariance"], float)[np.ix_(idx, idx)]
-    Linv = np.linalg.inv(np.linalg.cholesky(cov))
-    mu = np.array([getattr(base, names[k]) for k in sel])
+    sel, mu, chol, pop = stats
+    Linv = np.linalg.inv(chol)
     weight = float(pop["sigma_data"]) * scale
 
     E = np.zeros((len(sel), len(names)))
@@ -1087,6 +1123,130 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),
             "scale": scale, "source": pop["source"]}
     return make, info
+
+
+def _direction_count(options: FitOptions, base: SectionParams, kind: str, names) -> int:
+    """How many directions :func:`fit_loads` frees (0: every name): ``options.directions``
+    (None: STATIC_DIRECTIONS) for static data of the cambered model under the prior with the
+    default names, at most their number."""
+    from .directions import STATIC_DIRECTIONS
+
+    if kind != "static" or options.names is not None or _prior_stats(names, base, options) is None:
+        return 0
+    k = STATIC_DIRECTIONS if options.directions is None else int(options.directions)
+    return min(k, len(names))
+
+
+def _fit_along_directions(make_data, make_residual, names, base, options, k):
+    """Fit the ``k`` directions the data determine best against the population prior
+    (identify/directions.py): x = mu + B c, c in prior standard deviations, the residual the
+    data's and the prior's (whose rows are w U_k c: the others' deviations stay 0).
+
+    Returns (best, log, nfev, elapsed, warnings, extra) as :func:`_fit_with_continuation`;
+    ``best`` in the parameters' space (x, the residual and Jacobian with the prior's rows;
+    the directions' optimum clipped to the bounds), ``extra["directions"]`` the directions'
+    coefficients and loadings for :func:`_directions_report`, ``extra["outside"]`` the names
+    that the optimum put outside their range (the caller then fits every name instead).
+    """
+    import time
+
+    from scipy import optimize
+
+    from .directions import leading_directions
+
+    sel, mu, chol, pop = _prior_stats(names, base, options)
+    if len(sel) != len(names):
+        raise ValueError("a fit along directions needs the population prior on every fitted name")
+    weight = float(pop["sigma_data"])
+    lb, ub = _bounds(names, options)
+    data, full = make_data(options), make_residual(options)
+    count = {"n": 0}
+
+    def data_jac(x):
+        count["n"] += 1
+        if hasattr(data, "with_jacobian"):
+            return data.with_jacobian(x)
+        count["n"] += 2 * len(x)
+        return data(x), _jacobian(data, x, lb, ub)
+
+    t0 = time.perf_counter()
+    every, lam = leading_directions(data_jac(mu)[1], chol, weight, len(names))
+    B = every[:, :k]
+
+    def x_of(c):
+        return np.clip(mu + B @ c, lb, ub)
+
+    def fun(c):
+        count["n"] += 1
+        return np.concatenate([data(x_of(c)), weight * c])
+
+    def jac(c):
+        return np.vstack([data_jac(x_of(c))[1] @ B, weight * np.eye(k)])
+
+    sol = optimize.least_squares(fun, np.zeros(k), jac=jac, method="trf", x_scale="jac", max_nfev=options.max_nfev,
+                                 xtol=1e-12, ftol=1e-12, gtol=1e-12)
+    x = x_of(sol.x)
+    r, J = data_jac(x)
+    prior_rows = full(x)[r.size:]
+    best = optimize.OptimizeResult(x=x, fun=np.concatenate([r, prior_rows]),
+                                   jac=np.vstack([J, weight * np.linalg.inv(chol)]), status=sol.status,
+                                   success=sol.success, message=f"least squares along {k} directions: {sol.message}")
+    elapsed = time.perf_counter() - t0
+    extra = {"outside": [n for n, v, lo, hi in zip(names, mu + B @ sol.x, lb, ub) if not lo <= v <= hi],
+             "directions": {"count": k, "c": sol.x, "loadings": B, "eigenvalues": lam, "base": mu,
+                            "jac_c": J @ B, "prior_std": np.sqrt(np.sum(chol**2, axis=1)), "held": every[:, k:]}}
+    log = [{"x0": mu, "x": x, "cost": 0.5 * float(r @ r), "nfev": int(sol.nfev)}]
+    return best, log, count["n"], elapsed, [], extra
+
+
+def _directions_report(result: FitResult) -> FitResult:
+    """The identifiability of a fit along directions: the k free directions' posterior
+    (covariance (J_c^T J_c / s^2 + I)^-1, c in prior standard deviations) and the data's
+    alone (s^2 (J_c^T J_c)^-1). The parameters' posterior covariance is B cov_c B^T + H H^T,
+    B the free directions' loadings and H the held ones' (each a prior standard deviation:
+    the data do not move them, the prior's spread stays); their 'data only' figure is the
+    free directions' part, B cov_c,data B^T."""
+    d = result.extra["directions"]
+    k, B, Jc, c = d["count"], d["loadings"], d["jac_c"], d["c"]
+    dnames = tuple(f"direction_{i + 1}" for i in range(k))
+    r = result.residuals
+    dof = max(r.size - k, 1)
+    s2 = float(r @ r) / dof
+    own = _identifiability(dnames, c, Jc, r)
+    post = _identifiability(dnames, c, np.vstack([Jc, math.sqrt(s2) * np.eye(k)]), r, dof_rows=r.size)
+
+    def to_x(idf, held):
+        cov_c = idf.correlation * np.outer(idf.std_error, idf.std_error)
+        cov = B @ cov_c @ B.T + held @ held.T
+        return cov, np.sqrt(np.clip(np.diag(cov), 0, None))
+
+    cov, std = to_x(post, d["held"])
+    _, std_data = to_x(own, d["held"][:, :0])
+    from scipy import stats
+
+    t = stats.t.ppf(0.975, dof)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corr = np.where(np.outer(std, std) > 0, cov / np.outer(std, std), 0.0)
+    np.fill_diagonal(corr, 1.0)
+    weight = result.extra["prior"]["sigma_data"]
+    eff = float(np.trace(Jc.T @ Jc @ np.linalg.inv(Jc.T @ Jc + weight**2 * np.eye(k))))
+    weak = [n for n, sd in zip(dnames, own.std_error) if not sd < 1.0]  # less known from the data than the prior
+    warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
+                  f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
+                  for n, sd in zip(dnames, own.std_error) if n in weak)
+    idf = Identifiability(result.names, std, np.column_stack([result.x - t * std, result.x + t * std]), corr,
+                          own.singular_values, tuple(weak), warns, std_error_data=std_data, effective_parameters=eff)
+    extra = dict(result.extra)
+    extra["directions"] = {
+        "count": k, "names": list(result.names),
+        "coefficients": [float(v) for v in c],
+        "std_error": [float(v) for v in post.std_error], "std_error_data_only": [float(v) for v in own.std_error],
+        "loadings": [[float(v) for v in B[:, i]] for i in range(k)],
+        "eigenvalues": [float(v) for v in d["eigenvalues"]],
+        "base": [float(v) for v in d["base"]],
+        "prior_std": [float(v) for v in d["prior_std"]],
+    }
+    return replace(result, identifiability=idf, extra=extra)
 
 
 def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weight: float = 1.0):
@@ -1166,14 +1326,26 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
     make_residual, prior = _with_prior(make_data, names, base, options)
-    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit loads",
-                                                                    _x0(names, options, base))
+    k_dirs = _direction_count(options, base, _data_kind(data), names)
+    outside = []
+    if k_dirs:
+        best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, make_residual, names, base, options,
+                                                                       k_dirs)
+        outside = extra.pop("outside")
+        if outside:  # the directions' optimum is not a point of the range: every name under the prior instead
+            k_dirs = 0
+    if not k_dirs:
+        best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
+                                                                        "fit loads", _x0(names, options, base))
+        if outside:
+            warns = [f"the optimum along the data's leading directions put {', '.join(outside)} outside the "
+                     f"allowed range: all {len(names)} parameters fitted under the prior instead", *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}
     if prior:
         extra["prior"] = prior
-    return _finish(names, base, options, best, log, nfev, elapsed, warns,
-                   nfev * data.n, air, extra)
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * data.n, air, extra)
+    return _directions_report(result) if k_dirs else result
 
 
 def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,

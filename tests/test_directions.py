@@ -1,0 +1,113 @@
+"""Static fits along the data's leading directions against the population prior
+(identify/directions.py): the directions' algebra, the fit on real UIUC static runs (Brandt &
+Selig, UIUC Propeller Data Site vol. 1; Deters, Ananda & Selig, vol. 2), its report and the
+CLI."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+import propmap as pm
+from propmap.cli.main import cli
+from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from propmap.identify.directions import STATIC_DIRECTIONS, leading_directions
+
+
+def _static(name):
+    prop = pm.load_propeller(name)
+    data = loads_from_catalogue(pm.catalogue()[name], prop.diameter)
+    return data.subset(data.airspeed == 0), prop
+
+
+def test_leading_directions_are_the_data_information_eigenvectors_in_the_prior_metric():
+    """B^T Sigma^-1 B = I (one prior standard deviation per unit), the eigenvalues fall, B's first
+    column maximises |J b| over b^T Sigma^-1 b = 1, and a direction the data do not see comes last."""
+    rng = np.random.default_rng(0)
+    p = 5
+    A = rng.standard_normal((p, p))
+    sigma = A @ A.T + p * np.eye(p)
+    L = np.linalg.cholesky(sigma)
+    J = rng.standard_normal((20, p))
+    J[:, 4] = 0.0  # the data do not see the 5th parameter
+    B, lam = leading_directions(J, L, 0.5, 3)
+    assert B.shape == (p, 3) and lam.shape == (p,)
+    np.testing.assert_allclose(B.T @ np.linalg.inv(sigma) @ B, np.eye(3), atol=1e-10)
+    assert np.all(np.diff(lam) <= 1e-12)
+    best = np.linalg.norm(J @ B[:, 0])
+    for _ in range(200):  # no unit (prior-metric) direction sees more of the data
+        b = L @ rng.standard_normal(p)
+        b /= math.sqrt(b @ np.linalg.solve(sigma, b))
+        assert np.linalg.norm(J @ b) <= best * (1 + 1e-12)
+    np.testing.assert_allclose(lam[0], (best / 0.5) ** 2, rtol=1e-10)
+    # a zero-information direction exists (the 5th parameter's): the smallest eigenvalue is 0
+    assert abs(lam[-1]) < 1e-10 * lam[0]
+    with pytest.raises(ValueError, match=r"k must be in \[1, 5\]"):
+        leading_directions(J, L, 0.5, 0)
+    with pytest.raises(ValueError, match="must have shape"):
+        leading_directions(J[:, :4], L, 0.5, 2)
+
+
+def test_static_fit_frees_three_directions_with_finite_intervals():
+    """UIUC apce_8x6's static run: 3 free directions (issue 18: at most 3), the data determining
+    each one (finite data-only std errors, fewer than the 8 parameters' 3.8 effective), the
+    parameters the base set moved along them, no warning; FitOptions(directions=0) fits the
+    8 under the prior as before."""
+    st, prop = _static("apce_8x6")
+    r = fit_loads(st, prop)
+    d = r.extra["directions"]
+    assert d["count"] == STATIC_DIRECTIONS == 3
+    base = np.array(d["base"])
+    B = np.array(d["loadings"]).T
+    np.testing.assert_allclose(r.x, base + B @ np.array(d["coefficients"]), rtol=1e-12, atol=1e-15)
+    idf = r.identifiability
+    assert 2.5 < idf.effective_parameters <= 3.0
+    assert np.all(np.isfinite(idf.std_error)) and np.all(np.isfinite(idf.std_error_data))
+    assert np.all(np.array(d["std_error_data_only"]) < 0.2)  # in prior standard deviations: well determined
+    assert not idf.warnings and not r.warnings
+    text = r.report_text()
+    assert "free: 3 directions of the 8 parameters" in text and "direction_3" in text
+    # in-sample: the static thrust and torque within 2% rms (the measured scatter is about 1%)
+    assert float(np.sqrt(np.mean(r.residuals**2))) < 0.02
+    full = fit_loads(st, prop, options=FitOptions(directions=0))
+    assert "directions" not in full.extra
+    assert 3.5 < full.identifiability.effective_parameters < 4.2  # the 8 under the prior, as before
+    one = fit_loads(st, prop, options=FitOptions(directions=1))
+    assert one.extra["directions"]["count"] == 1 and one.cost > r.cost
+    for bad in (-1, True, 1.5):
+        with pytest.raises(ValueError, match="directions must be None or an integer >= 0"):
+            FitOptions(directions=bad)
+
+
+def test_static_direction_fit_leaving_the_range_falls_back_to_the_full_fit():
+    """MicroInvent mi_4x2.7 (UIUC vol. 2, 4 in, chord Reynolds numbers near 2e4): the 3
+    directions' optimum puts cl_max beyond its bound, so the fit frees the 8 under the prior
+    instead and says so."""
+    st, prop = _static("mi_4x2.7")
+    r = fit_loads(st, prop)
+    assert "directions" not in r.extra
+    assert any("outside the allowed range: all 8 parameters fitted under the prior instead" in w for w in r.warnings)
+
+
+def test_cli_static_fit_reports_directions(tmp_path):
+    """`propmap fit loads` on a static CSV: the report names the 3 free directions; --directions 0
+    the full fit; --directions with sweeps is ignored with a note; out of range exits 2."""
+    st, _ = _static("apce_8x6")
+    csv = tmp_path / "static.csv"
+    rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
+                                    zip(st.omega, st.measured["thrust"], st.measured["torque"])]
+    csv.write_text("\n".join(rows) + "\n")
+    run = CliRunner().invoke
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--out", str(tmp_path / "p.toml")])
+    assert r.exit_code == 0, r.output
+    assert "free: 3 directions" in r.output
+    report = json.loads((tmp_path / "p.report.json").read_text())
+    assert report["directions"]["count"] == 3 and len(report["directions"]["loadings"]) == 3
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "0", "--out", str(tmp_path / "q.toml")])
+    assert r.exit_code == 0 and "free: 3 directions" not in r.output
+    r = run(cli, ["fit", "loads", "apce_8x6", "--directions", "2", "--out", str(tmp_path / "s.toml")])
+    assert r.exit_code == 0 and "--directions applies to static data" in r.output
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9", "--out", str(tmp_path / "x.toml")])
+    assert r.exit_code == 2 and "--directions" in r.output
