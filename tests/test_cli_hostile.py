@@ -291,13 +291,13 @@ def test_library_runtime_warnings_do_not_leak(capsys, monkeypatch):
 
     import propmap.cli.loads as cl
 
-    real = cl._coverage_messages
+    real = cl.coverage_messages
 
     def noisy(*a, **k):
         warnings.warn("overflow encountered", RuntimeWarning)
         return real(*a, **k)
 
-    monkeypatch.setattr(cl, "_coverage_messages", noisy)
+    monkeypatch.setattr(cl, "coverage_messages", noisy)
     code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "8000")
     assert code == 0 and "overflow" not in err
 

@@ -111,3 +111,31 @@ def test_cli_static_fit_reports_directions(tmp_path):
     assert r.exit_code == 0 and "--directions applies to static data" in r.output
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9", "--out", str(tmp_path / "x.toml")])
     assert r.exit_code == 2 and "--directions" in r.output
+
+
+def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):
+    """Issue 18: a file fitted to a static run records its data's coverage (J 0, axial, its rpm
+    span); `loads`, `map` and `export-sim` each warn, one line per risk, where they go beyond it,
+    and say nothing inside it."""
+    st, _ = _static("apce_8x6")
+    csv = tmp_path / "static.csv"
+    rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
+                                    zip(st.omega, st.measured["thrust"], st.measured["torque"])]
+    csv.write_text("\n".join(rows) + "\n")
+    run = CliRunner().invoke  # (its output holds stderr's warnings too)
+    p = tmp_path / "p.toml"
+    assert run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--out", str(p)]).exit_code == 0
+    inside = run(cli, ["loads", "apce_8x6", "--params", str(p), "--rpm", "5000"])
+    assert inside.exit_code == 0 and "the data behind" not in inside.output and "axial data only" not in inside.output
+    outside = run(cli, ["loads", "apce_8x6", "--params", str(p), "--rpm", "5000", "--airspeed", "10",
+                        "--incidence-deg", "60"])
+    assert outside.exit_code == 0
+    assert "advance ratio up to" in outside.output and "fitted to axial data only" in outside.output
+    m = run(cli, ["map", "apce_8x6", "--params", str(p), "--rpm", "3000:9000:4", "--airspeed", "0:10:3",
+                  "--incidence-deg", "0:90:3", "--out", str(tmp_path / "m.nc")])
+    assert m.exit_code == 0, m.output
+    assert "3000-9000 rpm: the data behind" in m.output and "fitted to axial data only" in m.output
+    e = run(cli, ["export-sim", "apce_8x6", "--target", "rotorpy", "--params", str(p), "--envelope",
+                  "rpm=3000:6000,airspeed=0:5,incidence_deg=0:30", "--points", "200", "--out", str(tmp_path / "x.py")])
+    assert e.exit_code == 0, e.output
+    assert "advance ratio up to" in e.output and "axial data only" in e.output and "rpm: the data" not in e.output

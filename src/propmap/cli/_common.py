@@ -427,3 +427,48 @@ def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=
 def air_label(air) -> str:
     """One line of the air used, for outputs."""
     return f"rho {air.rho:.4g} kg/m^3, mu {air.mu:.4g} Pa s, speed of sound {air.speed_of_sound:.4g} m/s"
+
+
+def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
+    """(largest speed of the advancing blade tip [m/s], advance ratio of the axial flow,
+    incidence [deg]) over operating points (rpm [rpm], airspeed [m/s], incidence [deg],
+    broadcast together). The advancing tip meets the air at sqrt((Omega R + V sin b)^2 +
+    (V cos b)^2), not sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s,
+    not 102."""
+    import numpy as np
+
+    rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
+    n = rpm / 60
+    b = np.radians(incidence_deg)
+    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
+            float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
+            float(np.max(incidence_deg)))
+
+
+def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -> None:
+    """One warning line per risk: tip Mach number (with the parameter set's speed of sound)
+    above 0.7, advance ratio or incidence beyond the data behind the parameters ``label``
+    (a catalogue set or a fitted file's [coverage] table; docs/validation.md), and with
+    ``rpm`` (one rate or a (low, high) range) rates outside the data's."""
+    from ..io.calibration import coverage
+
+    tip_mach = tip_speed / air.speed_of_sound
+    if tip_mach > 0.7:
+        warn(f"tip Mach number up to {tip_mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
+             "is not modelled")
+    cov = coverage(label)
+    if cov is None:
+        return
+    if J > cov["J_max"]:
+        warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
+    if incidence_deg > cov["incidence_deg_max"]:
+        axial = cov["incidence_deg_max"] == 0
+        warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
+             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)"
+                if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
+    if rpm is not None and "rpm_min" in cov:
+        lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
+        if lo < cov["rpm_min"] or hi > cov["rpm_max"]:
+            shown = f"{lo:g}" if lo == hi else f"{lo:g}-{hi:g}"
+            warn(f"{shown} rpm: the data behind {label} span {cov['rpm_min']:.0f}-{cov['rpm_max']:.0f} rpm (Reynolds "
+                 "numbers beyond them are extrapolated)")

@@ -109,10 +109,10 @@ def demo(out_dir: Path, rpm: float):
                f"and the {generic_label} set (fitted to the catalogue without {PROP}'s family)\n")
 
     from ..core.airfoil import Air
-    from .loads import _coverage_messages, _extremes
+    from ._common import coverage_messages, envelope_extremes
 
     # the tip Mach number only: the envelope's incidence and advance ratio are the demo's point
-    _coverage_messages(prop, generic_label, Air(), _extremes(prop, rpm, 20.0, 90.0)[0], 0.0, 0.0)
+    coverage_messages(prop, generic_label, Air(), envelope_extremes(prop, rpm, 20.0, 90.0)[0], 0.0, 0.0)
     out_dir.mkdir(parents=True, exist_ok=True)
     table = envelope_table(prop, generic, rpm)
     with atomic_write(out_dir / "envelope.csv", "w", newline="") as fh:

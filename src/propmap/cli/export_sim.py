@@ -6,7 +6,7 @@ import math
 
 import click
 
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, echo_json, load_params,
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       load_prop, with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
@@ -101,6 +101,11 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
+    import numpy as np
+
+    coverage_messages(propeller, label, air, *envelope_extremes(
+        propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None],
+        np.array(env.incidence_deg)[None, None, :]), rpm=tuple(env.rpm))
     veh, hover_from = None, "--hover-rpm"
     if vehicle is not None:
         from .flight import _vehicle

@@ -9,7 +9,8 @@ from pathlib import Path
 import click
 
 from ._common import (air_label, resolve_air, with_air_options, AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
-                      check_section_match, echo_json, load_params, load_prop, warn, with_prop_options)
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      with_prop_options)
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
@@ -237,7 +238,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     # first pass: every value checked before any work, and the extremes for the warnings
     n, extremes = _scan(prop, path)
-    _coverage_messages(prop, label, air, *extremes)
+    coverage_messages(prop, label, air, *extremes)
 
     def write(fh):
         bad = 0
@@ -320,7 +321,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
-    _coverage_messages(propeller, label, air, *_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
+    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
     from ..core.solver import SolverError, rotor_loads
 
     try:
@@ -367,51 +368,11 @@ def check_collective(collective_deg):
     return float(collective_deg)
 
 
-def _extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
-    """(largest speed of the advancing blade tip [m/s], advance ratio of the axial flow,
-    incidence [deg]). The advancing tip meets the air at sqrt((Omega R + V sin b)^2 +
-    (V cos b)^2), not sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s,
-    not 102."""
-    import numpy as np
-
-    rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
-    n = rpm / 60
-    b = np.radians(incidence_deg)
-    return (float(np.max(np.hypot(2 * math.pi * n * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
-            float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
-            float(np.max(incidence_deg)))
-
-
 def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
     """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
     n, ext = 0, (0.0, 0.0, 0.0)
     for df, _, values in _chunks(path, CHUNK):
-        e = _extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
+        e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         n += len(df)
     return n, ext
-
-
-def _coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -> None:
-    """One warning line per risk: tip Mach number (with the parameter set's speed of sound)
-    above 0.7, advance ratio or incidence beyond the data behind the parameters
-    (docs/validation.md)."""
-    from ..io.calibration import coverage
-
-    tip_mach = tip_speed / air.speed_of_sound
-    if tip_mach > 0.7:
-        warn(f"tip Mach number up to {tip_mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
-             "is not modelled")
-    cov = coverage(label)
-    if cov is None:
-        return
-    if J > cov["J_max"]:
-        warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    if incidence_deg > cov["incidence_deg_max"]:
-        axial = cov["incidence_deg_max"] == 0
-        warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
-             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)"
-                if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
-    if rpm is not None and "rpm_min" in cov and not cov["rpm_min"] <= rpm <= cov["rpm_max"]:
-        warn(f"{rpm:g} rpm: the data behind {label} span {cov['rpm_min']:.0f}-{cov['rpm_max']:.0f} rpm (Reynolds "
-             "numbers beyond them are extrapolated)")

@@ -11,7 +11,7 @@ from pathlib import Path
 import click
 
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
-                      check_section_match, echo_json, given, load_params, load_prop, parse_names, resolve_air,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params, load_prop, parse_names, resolve_air,
                       with_air_options, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
@@ -175,6 +175,7 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
         check_section_match(propeller, label)
+        data_label = label  # (the set whose data coverage the envelope is checked against)
         if collective_deg is not None:
             try:
                 params = params.replace(collective=params.collective + math.radians(collective_deg))
@@ -182,6 +183,9 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
                 raise InputError(f"--collective-deg: {exc}") from None
             label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
+        # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's)
+        coverage_messages(propeller, data_label, air, *envelope_extremes(
+            propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]), rpm=(float(rpm[0]), float(rpm[-1])))
         plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
