@@ -93,7 +93,8 @@ def test_static_direction_fit_leaving_the_range_falls_back_to_the_full_fit():
 
 def test_cli_static_fit_reports_directions(tmp_path):
     """`propmap fit loads` on a static CSV: the report names the 3 free directions; --directions 0
-    the full fit; --directions with sweeps is ignored with a note; out of range exits 2."""
+    the full fit; --directions N on rich data frees N; with --fit-params it is ignored with a
+    note; out of range exits 2."""
     st, _ = _static("apce_8x6")
     csv = tmp_path / "static.csv"
     rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
@@ -108,9 +109,31 @@ def test_cli_static_fit_reports_directions(tmp_path):
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "0", "--out", str(tmp_path / "q.toml")])
     assert r.exit_code == 0 and "free: 3 directions" not in r.output
     r = run(cli, ["fit", "loads", "apce_8x6", "--directions", "2", "--out", str(tmp_path / "s.toml")])
-    assert r.exit_code == 0 and "--directions applies to static data" in r.output
+    assert r.exit_code == 0 and "free: 2 directions" in r.output  # (all of UIUC's data: given, it applies)
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "2", "--fit-params",
+                  "alpha_L0,cd_min", "--out", str(tmp_path / "f.toml")])
+    assert r.exit_code == 0 and "--directions applies to the default parameters under the prior" in r.output
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9", "--out", str(tmp_path / "x.toml")])
     assert r.exit_code == 2 and "--directions" in r.output
+
+
+def test_one_sweep_rate_frees_the_directions_the_data_know_ten_times_better():
+    """UIUC apce_8x6, the static run and the lowest-rpm sweep (one rotation rate): the directions
+    with eigenvalue >= DATA_OVER_PRIOR are freed; with two sweep rates every parameter is fitted
+    under the prior."""
+    from propmap.identify.directions import DATA_OVER_PRIOR
+    from propmap.validation import rpm_groups
+
+    prop = pm.load_propeller("apce_8x6")
+    data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
+    groups = rpm_groups(data)
+    one = data.subset((data.airspeed == 0) | np.isin(data.group, groups[0]))
+    r = fit_loads(one, prop)
+    d = r.extra["directions"]
+    lam = np.array(d["eigenvalues"])
+    assert d["count"] == max(1, int(np.sum(lam >= DATA_OVER_PRIOR))) and 3 <= d["count"] < 8
+    two = data.subset((data.airspeed == 0) | np.isin(data.group, groups[0] + groups[1]))
+    assert "directions" not in fit_loads(two, prop).extra
 
 
 def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):

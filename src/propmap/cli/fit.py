@@ -282,8 +282,9 @@ def _warn_other_propeller(sources, prop) -> None:
 @click.option("--skip-sanity-check", is_flag=True,
               help="Fit data whose loads are more than 3x off the generic model's (refused by default: units?).")
 @click.option("--directions", type=click.IntRange(0, 8), default=None,
-              help="Static data, cambered model under the prior: how many parameter directions to free, those the "
-                   "data determine best against the prior (default 3; 0: every parameter under the prior).")
+              help="Cambered model under the prior: how many parameter directions to free, those the data "
+                   "determine best against the prior (0: every parameter; default: 3 for a static run, those the "
+                   "data know 10x better than the prior for sweeps at one rate, 0 for sweeps at more).")
 @with_fit_options
 @with_air_options
 def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, rpm_source, pole_pairs,
@@ -342,11 +343,11 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     train = data.subset(~np.isin(data.group, held))
     options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population,
                       directions=directions)
-    if directions is not None and (np.any(train.airspeed > 0) or fit_params or no_prior):
+    if directions is not None and (fit_params or no_prior):
         from ._common import warn
 
-        warn("--directions applies to static data (all airspeeds 0) fitted with the default parameters under the "
-             "prior: ignored here")
+        warn("--directions applies to the default parameters under the prior: ignored with "
+             + ("--fit-params" if fit_params else "--no-prior"))
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:

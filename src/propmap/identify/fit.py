@@ -192,11 +192,12 @@ class FitOptions:
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
     directions : int, optional
-        Cambered model, static data, the prior on and ``names`` not given: fit only this
-        many of the parameter directions the data determine best against the prior
-        (identify/directions.py), the others held at the base values; None (default):
-        :data:`~propmap.identify.directions.STATIC_DIRECTIONS` (3); 0: every name under
-        the prior instead (the measurement behind the default: docs/identification.md).
+        Cambered model under the prior, ``names`` not given: fit only this many of the
+        parameter directions the data determine best against the prior
+        (identify/directions.py), the others held at the base values; 0: every name under
+        the prior. None (default): 3 (STATIC_DIRECTIONS) for a static run, those the data
+        know DATA_OVER_PRIOR (10) times better than the prior for sweeps at one rotation
+        rate, 0 for sweeps at two or more (the measurements: docs/identification.md).
     jacobian : {"implicit", "differences"}
         The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
         (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
@@ -1061,8 +1062,7 @@ def _data_kind(data: LoadData) -> str:
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
         return "collective" if swept else "static"
-    rpm = np.sort(data.omega[moving])
-    rates = 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
+    rates = _sweep_rates(data)
     static = data.omega[~moving]
     spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
@@ -1125,22 +1125,37 @@ def _with_prior(make_residual, names, base, options, scale: float = 1.0):
     return make, info
 
 
-def _direction_count(options: FitOptions, base: SectionParams, kind: str, names) -> int:
-    """How many directions :func:`fit_loads` frees (0: every name): ``options.directions``
-    (None: STATIC_DIRECTIONS) for static data of the cambered model under the prior with the
-    default names, at most their number."""
+def _sweep_rates(data: LoadData) -> int:
+    """Distinct rotation rates (3% apart) of the moving points (0 for static data)."""
+    rpm = np.sort(data.omega[data.airspeed > 0])
+    return 0 if rpm.size == 0 else 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
+
+
+def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, names) -> int | None:
+    """How many directions :func:`fit_loads` frees: 0 every name (under the prior), None as
+    many as the data determine DATA_OVER_PRIOR times better than the prior (at least one).
+
+    Only for the cambered model under the prior with the default names: ``options.directions``
+    where given; else STATIC_DIRECTIONS for a static run, the rule (None) for sweeps at one
+    rotation rate (with or without a static run), 0 for sweeps at two or more
+    (identify/directions.py; docs/identification.md has the measurements)."""
     from .directions import STATIC_DIRECTIONS
 
-    if kind != "static" or options.names is not None or _prior_stats(names, base, options) is None:
+    kind = _data_kind(data)
+    if kind == "collective" or options.names is not None or _prior_stats(names, base, options) is None:
         return 0
-    k = STATIC_DIRECTIONS if options.directions is None else int(options.directions)
-    return min(k, len(names))
+    if options.directions is not None:
+        return min(int(options.directions), len(names))
+    if kind == "static":
+        return min(STATIC_DIRECTIONS, len(names))
+    return None if _sweep_rates(data) < 2 else 0
 
 
 def _fit_along_directions(make_data, make_residual, names, base, options, k):
     """Fit the ``k`` directions the data determine best against the population prior
-    (identify/directions.py): x = mu + B c, c in prior standard deviations, the residual the
-    data's and the prior's (whose rows are w U_k c: the others' deviations stay 0).
+    (identify/directions.py; None: those whose eigenvalue is at least DATA_OVER_PRIOR, at
+    least one): x = mu + B c, c in prior standard deviations, the residual the data's and the
+    prior's (whose rows are w U_k c: the others' deviations stay 0).
 
     Returns (best, log, nfev, elapsed, warnings, extra) as :func:`_fit_with_continuation`;
     ``best`` in the parameters' space (x, the residual and Jacobian with the prior's rows;
@@ -1152,7 +1167,7 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
 
     from scipy import optimize
 
-    from .directions import leading_directions
+    from .directions import DATA_OVER_PRIOR, leading_directions
 
     sel, mu, chol, pop = _prior_stats(names, base, options)
     if len(sel) != len(names):
@@ -1171,6 +1186,8 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
 
     t0 = time.perf_counter()
     every, lam = leading_directions(data_jac(mu)[1], chol, weight, len(names))
+    if k is None:
+        k = max(1, int(np.sum(lam >= DATA_OVER_PRIOR)))
     B = every[:, :k]
 
     def x_of(c):
@@ -1326,15 +1343,15 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
     make_residual, prior = _with_prior(make_data, names, base, options)
-    k_dirs = _direction_count(options, base, _data_kind(data), names)
+    k_dirs = _direction_count(options, base, data, names)
     outside = []
-    if k_dirs:
+    if k_dirs != 0:
         best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, make_residual, names, base, options,
                                                                        k_dirs)
         outside = extra.pop("outside")
         if outside:  # the directions' optimum is not a point of the range: every name under the prior instead
             k_dirs = 0
-    if not k_dirs:
+    if k_dirs == 0:
         best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                         "fit loads", _x0(names, options, base))
         if outside:
@@ -1345,7 +1362,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     if prior:
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * data.n, air, extra)
-    return _directions_report(result) if k_dirs else result
+    return result if k_dirs == 0 else _directions_report(result)
 
 
 def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,
