@@ -101,11 +101,6 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
-    import numpy as np
-
-    coverage_messages(propeller, label, air, *envelope_extremes(
-        propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None],
-        np.array(env.incidence_deg)[None, None, :]), rpm=tuple(env.rpm))
     veh, hover_from = None, "--hover-rpm"
     if vehicle is not None:
         from .flight import _vehicle
@@ -134,6 +129,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             env = replace(env, hover_rpm=hover_rpm)
         except ValueError as exc:
             raise InputError(f"{hover_from}: {exc}; widen --envelope rpm=LOW:HIGH") from None
+    import numpy as np
+
+    # the envelope beyond the data behind the parameters (after every input check: an error is the only line)
+    coverage_messages(propeller, label, air, *envelope_extremes(
+        propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None],
+        np.array(env.incidence_deg)[None, None, :]), rpm=tuple(env.rpm))
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
     except ValueError as exc:

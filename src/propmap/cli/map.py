@@ -183,10 +183,11 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
                 raise InputError(f"--collective-deg: {exc}") from None
             label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
-        # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's)
+        plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
+        # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
+        # after every input check (an error is the only line)
         coverage_messages(propeller, data_label, air, *envelope_extremes(
             propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]), rpm=(float(rpm[0]), float(rpm[-1])))
-        plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
