@@ -22,6 +22,15 @@ def _static(name):
     return data.subset(data.airspeed == 0), prop
 
 
+def _static_csv(path):
+    """apce_8x6's static run (UIUC vol. 1) as a thrust-stand CSV (rpm, N, N m)."""
+    st, _ = _static("apce_8x6")
+    rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
+                                    zip(st.omega, st.measured["thrust"], st.measured["torque"])]
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
 def test_leading_directions_are_the_data_information_eigenvectors_in_the_prior_metric():
     """B^T Sigma^-1 B = I (one prior standard deviation per unit), the eigenvalues fall, B's first
     column maximises |J b| over b^T Sigma^-1 b = 1, and a direction the data do not see comes last."""
@@ -59,20 +68,29 @@ def test_static_fit_frees_three_directions_with_finite_intervals():
     r = fit_loads(st, prop)
     d = r.extra["directions"]
     assert d["count"] == STATIC_DIRECTIONS == 3
-    base = np.array(d["base"])
-    B = np.array(d["loadings"]).T
+    to_si = np.array([math.radians(1.0) if n in d["units"] else 1.0 for n in r.names])  # (angles in degrees)
+    base = np.array(d["base"]) * to_si
+    B = np.array(d["loadings"]).T * to_si[:, None]
     np.testing.assert_allclose(r.x, base + B @ np.array(d["coefficients"]), rtol=1e-12, atol=1e-15)
     idf = r.identifiability
     assert 2.5 < idf.effective_parameters <= 3.0
-    assert np.all(np.isfinite(idf.std_error)) and np.all(np.isfinite(idf.std_error_data))
+    assert np.all(np.isfinite(idf.std_error)) and idf.std_error_data is None  # the data determine directions
     assert np.all(np.array(d["std_error_data_only"]) < 0.2)  # in prior standard deviations: well determined
+    # the parameters' posterior keeps the population's spread along the held directions: within it, above 0
+    pop_sd = np.array(d["prior_std"]) / np.array([math.degrees(1.0) if n in d["units"] else 1.0 for n in r.names])
+    assert np.all(idf.std_error <= pop_sd * (1 + 1e-9)) and np.all(idf.std_error > 0.05 * pop_sd)
     assert not idf.warnings and not r.warnings
     text = r.report_text()
     assert "free: 3 directions of the 8 parameters" in text and "direction_3" in text
+    assert "the data determine 3.0 of the 3 free directions" in text
+    json.dumps(r.to_dict())  # JSON-ready (angles in degrees, as "fitted")
+    assert r.to_dict()["directions"]["units"] == {"alpha_L0": "deg", "alpha_L0_re": "deg"}
+    diff = fit_loads(st, prop, options=FitOptions(jacobian="differences"))  # the same fit, differencing the solver
+    np.testing.assert_allclose(diff.x, r.x, rtol=1e-5, atol=1e-8)
     # in-sample: the static thrust and torque within 2% rms (the measured scatter is about 1%)
     assert float(np.sqrt(np.mean(r.residuals**2))) < 0.02
     full = fit_loads(st, prop, options=FitOptions(directions=0))
-    assert "directions" not in full.extra
+    assert "directions" not in full.extra and full.identifiability.std_error_data is not None
     assert 3.5 < full.identifiability.effective_parameters < 4.2  # the 8 under the prior, as before
     one = fit_loads(st, prop, options=FitOptions(directions=1))
     assert one.extra["directions"]["count"] == 1 and one.cost > r.cost
@@ -88,32 +106,45 @@ def test_static_direction_fit_leaving_the_range_falls_back_to_the_full_fit():
     st, prop = _static("mi_4x2.7")
     r = fit_loads(st, prop)
     assert "directions" not in r.extra
-    assert any("outside the allowed range: all 8 parameters fitted under the prior instead" in w for w in r.warnings)
+    assert any("left the allowed range (cl_max 2." in w and "all 8 parameters fitted under the prior instead" in w
+               for w in r.warnings)
+    assert "free directions" not in r.report_text() and "WARNING: the optimum along" in r.report_text()
+    json.dumps(r.to_dict())
+    # a population prior that leaves a fitted name out: no fit along directions (the MAP fit, as before)
+    from propmap.io.calibration import population
+
+    pop = population()
+    keep = [i for i, n in enumerate(pop["names"]) if n != "re_exp"]
+    part = dict(pop, names=[pop["names"][i] for i in keep],
+                covariance=np.asarray(pop["covariance"])[np.ix_(keep, keep)].tolist())
+    st8, prop8 = _static("apce_8x6")
+    r = fit_loads(st8, prop8, options=FitOptions(population=part))
+    assert "directions" not in r.extra and "prior" in r.extra
+    r = fit_loads(st8, prop8, options=FitOptions(directions=3, names=("alpha_L0", "cd_min")))
+    assert "directions" not in r.extra and any("directions ignored" in w for w in r.warnings)
 
 
 def test_cli_static_fit_reports_directions(tmp_path):
     """`propmap fit loads` on a static CSV: the report names the 3 free directions; --directions 0
     the full fit; --directions N on rich data frees N; with --fit-params it is ignored with a
     note; out of range exits 2."""
-    st, _ = _static("apce_8x6")
-    csv = tmp_path / "static.csv"
-    rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
-                                    zip(st.omega, st.measured["thrust"], st.measured["torque"])]
-    csv.write_text("\n".join(rows) + "\n")
+    csv = _static_csv(tmp_path / "static.csv")
     run = CliRunner().invoke
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--out", str(tmp_path / "p.toml")])
     assert r.exit_code == 0, r.output
     assert "free: 3 directions" in r.output
     report = json.loads((tmp_path / "p.report.json").read_text())
     assert report["directions"]["count"] == 3 and len(report["directions"]["loadings"]) == 3
-    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "0", "--out", str(tmp_path / "q.toml")])
-    assert r.exit_code == 0 and "free: 3 directions" not in r.output
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "0",
+                  "--out", str(tmp_path / "q.toml")])
+    assert r.exit_code == 0 and "directions" not in json.loads((tmp_path / "q.report.json").read_text())
     r = run(cli, ["fit", "loads", "apce_8x6", "--directions", "2", "--out", str(tmp_path / "s.toml")])
     assert r.exit_code == 0 and "free: 2 directions" in r.output  # (all of UIUC's data: given, it applies)
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "2", "--fit-params",
                   "alpha_L0,cd_min", "--out", str(tmp_path / "f.toml")])
-    assert r.exit_code == 0 and "--directions applies to the default parameters under the prior" in r.output
-    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9", "--out", str(tmp_path / "x.toml")])
+    assert r.exit_code == 0 and "WARNING: directions ignored" in r.output
+    r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9",
+                  "--out", str(tmp_path / "x.toml")])
     assert r.exit_code == 2 and "--directions" in r.output
 
 
@@ -131,7 +162,8 @@ def test_one_sweep_rate_frees_the_directions_the_data_know_ten_times_better():
     r = fit_loads(one, prop)
     d = r.extra["directions"]
     lam = np.array(d["eigenvalues"])
-    assert d["count"] == max(1, int(np.sum(lam >= DATA_OVER_PRIOR))) and 3 <= d["count"] < 8
+    assert 3 <= d["count"] < 8  # more than a static run determines, fewer than all
+    assert lam[d["count"] - 1] >= DATA_OVER_PRIOR > lam[d["count"]]
     two = data.subset((data.airspeed == 0) | np.isin(data.group, groups[0] + groups[1]))
     assert "directions" not in fit_loads(two, prop).extra
 
@@ -140,11 +172,7 @@ def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):
     """Issue 18: a file fitted to a static run records its data's coverage (J 0, axial, its rpm
     span); `loads`, `map` and `export-sim` each warn, one line per risk, where they go beyond it,
     and say nothing inside it."""
-    st, _ = _static("apce_8x6")
-    csv = tmp_path / "static.csv"
-    rows = ["rpm,thrust,torque"] + [f"{o * 30 / math.pi:.3f},{t:.6g},{q:.6g}" for o, t, q in
-                                    zip(st.omega, st.measured["thrust"], st.measured["torque"])]
-    csv.write_text("\n".join(rows) + "\n")
+    csv = _static_csv(tmp_path / "static.csv")
     run = CliRunner().invoke  # (its output holds stderr's warnings too)
     p = tmp_path / "p.toml"
     assert run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--out", str(p)]).exit_code == 0
@@ -159,6 +187,35 @@ def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):
     assert m.exit_code == 0, m.output
     assert "3000-9000 rpm: the data behind" in m.output and "fitted to axial data only" in m.output
     e = run(cli, ["export-sim", "apce_8x6", "--target", "rotorpy", "--params", str(p), "--envelope",
-                  "rpm=3000:6000,airspeed=0:5,incidence_deg=0:30", "--points", "200", "--out", str(tmp_path / "x.py")])
+                  "rpm=3000:6000,airspeed=0:5,incidence_deg=0:30", "--points", "200",
+                  "--out", str(tmp_path / "x.py")])
     assert e.exit_code == 0, e.output
     assert "advance ratio up to" in e.output and "axial data only" in e.output and "rpm: the data" not in e.output
+
+
+def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
+    """A fitted file's rpm span: a range partly outside it warns once with the range; one rate
+    inside, or a range inside, says nothing; the extremes take the advancing tip's speed."""
+    from propmap.cli._common import coverage_messages, envelope_extremes
+    from propmap.io.calibration import coverage
+
+    prop = pm.load_propeller("apce_8x6")
+    label = str(tmp_path / "p.toml")
+    fitted = CliRunner().invoke(cli, ["fit", "loads", str(_static_csv(tmp_path / "s.csv")), "--prop", "apce_8x6",
+                                      "--out", label])
+    assert fitted.exit_code == 0
+    capsys.readouterr()
+
+    cov = coverage(label)
+    lo, hi = cov["rpm_min"], cov["rpm_max"]
+    coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=(lo + 1, hi - 1))
+    coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=0.5 * (lo + hi))
+    assert capsys.readouterr().err == ""
+    coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=(lo / 2, hi - 1))
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{lo / 2:g}-{hi - 1:g} rpm" in err
+    tip, J, inc = envelope_extremes(prop, np.array([10000.0]), np.array([0.0, 20.0])[:, None],
+                                    np.array([0.0, 90.0, 180.0]))
+    om_r = 10000 * math.pi / 30 * prop.radius
+    assert tip == pytest.approx(om_r + 20.0) and inc == 180.0
+    assert J == pytest.approx(20.0 / (10000 / 60 * prop.diameter))

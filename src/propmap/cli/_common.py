@@ -430,11 +430,23 @@ def air_label(air) -> str:
 
 
 def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
-    """(largest speed of the advancing blade tip [m/s], advance ratio of the axial flow,
-    incidence [deg]) over operating points (rpm [rpm], airspeed [m/s], incidence [deg],
-    broadcast together). The advancing tip meets the air at sqrt((Omega R + V sin b)^2 +
-    (V cos b)^2), not sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s,
-    not 102."""
+    """The extremes of operating points that :func:`coverage_messages` checks.
+
+    The advancing tip meets the air at sqrt((Omega R + V sin b)^2 + (V cos b)^2), not
+    sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s, not 102.
+
+    Parameters
+    ----------
+    prop : Propeller
+    rpm, airspeed, incidence_deg : array_like
+        Operating points [rpm, m/s, deg], broadcast together (a grid by broadcasting axes).
+
+    Returns
+    -------
+    tuple of float
+        The largest advancing-tip speed [m/s], advance ratio of the axial flow V cos(beta) /
+        (n D) [-] and incidence [deg].
+    """
     import numpy as np
 
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
@@ -446,10 +458,28 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
 
 
 def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -> None:
-    """One warning line per risk: tip Mach number (with the parameter set's speed of sound)
-    above 0.7, advance ratio or incidence beyond the data behind the parameters ``label``
-    (a catalogue set or a fitted file's [coverage] table; docs/validation.md), and with
-    ``rpm`` (one rate or a (low, high) range) rates outside the data's."""
+    """One warning line per risk of a model run beyond its data (docs/cli.md, Warnings).
+
+    Parameters
+    ----------
+    prop : Propeller
+    label : str
+        The parameter set's label: a catalogue set or a parameter file, whose data coverage
+        (io.calibration.coverage: a fitted file's [coverage] table) is checked; other sets
+        only for the tip Mach number.
+    air : Air
+        For the speed of sound.
+    tip_speed, J, incidence_deg : float
+        The run's extremes (:func:`envelope_extremes`) [m/s, -, deg].
+    rpm : float or (float, float), optional
+        One rate or a (low, high) range [rpm], checked against the data's rpm span.
+
+    Notes
+    -----
+    Warns: tip Mach number above 0.7 (compressibility beyond Prandtl-Glauert), advance
+    ratio beyond the data's largest, incidence beyond the data's (axial data: the off-axis
+    loads rest on the BET/BEMT physics), rates outside the data's span.
+    """
     from ..io.calibration import coverage
 
     tip_mach = tip_speed / air.speed_of_sound

@@ -129,16 +129,18 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             env = replace(env, hover_rpm=hover_rpm)
         except ValueError as exc:
             raise InputError(f"{hover_from}: {exc}; widen --envelope rpm=LOW:HIGH") from None
-    import numpy as np
-
-    # the envelope beyond the data behind the parameters (after every input check: an error is the only line)
-    coverage_messages(propeller, label, air, *envelope_extremes(
-        propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None],
-        np.array(env.incidence_deg)[None, None, :]), rpm=tuple(env.rpm))
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
     except ValueError as exc:
         raise InputError(f"--envelope: {exc}") from None
+    import numpy as np
+
+    # the envelope beyond the data behind the parameters, after every input check (an error is the only
+    # line); the advancing tip is fastest edgewise, so 90 deg is checked where the envelope holds it
+    inc = np.unique(np.clip([env.incidence_deg[0], 90.0, env.incidence_deg[1]], *env.incidence_deg))
+    coverage_messages(propeller, label, air, *envelope_extremes(
+        propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
+        rpm=tuple(env.rpm))
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "")
     if as_json:

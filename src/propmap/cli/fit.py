@@ -343,11 +343,6 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     train = data.subset(~np.isin(data.group, held))
     options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population,
                       directions=directions)
-    if directions is not None and (fit_params or no_prior):
-        from ._common import warn
-
-        warn("--directions applies to the default parameters under the prior: ignored with "
-             + ("--fit-params" if fit_params else "--no-prior"))
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:

@@ -184,10 +184,6 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
             label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
         plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
-        # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
-        # after every input check (an error is the only line)
-        coverage_messages(propeller, data_label, air, *envelope_extremes(
-            propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]), rpm=(float(rpm[0]), float(rpm[-1])))
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
@@ -197,6 +193,11 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
                 ds.attrs["build_seconds"] = time.perf_counter() - t0
                 files = write_map(ds, out, fmt)
         else:
+            # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
+            # after every input check, the scheduler's included (an error is the only line)
+            coverage_messages(propeller, data_label, air, *envelope_extremes(
+                propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
+                rpm=(float(rpm[0]), float(rpm[-1])))
             ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
                            citation=_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0

@@ -24,7 +24,7 @@ __all__ = ["DATA_OVER_PRIOR", "STATIC_DIRECTIONS", "leading_directions"]
 #: directions a static run's fit frees by default (FitOptions.directions; the measurement
 #: behind it is in docs/identification.md)
 STATIC_DIRECTIONS = 3
-#: with sweeps at one or two rotation rates a fit frees the directions along which the data
+#: with sweeps at one rotation rate a fit frees the directions along which the data
 #: know at least this many times more than the prior (eigenvalue lambda >= 10: the posterior
 #: standard deviation there at most 1/sqrt(11) of the prior's; docs/identification.md)
 DATA_OVER_PRIOR = 10.0

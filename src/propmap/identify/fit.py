@@ -170,8 +170,9 @@ class FitOptions:
         sigma_d L^-1 (x - x_base) with L L^T the covariance of the parameters fitted to
         each catalogue propeller and sigma_d their median rms residual
         (io.calibration.population). The fit then moves a parameter away from the base
-        only as far as the data warrant (a maximum a posteriori estimate); on sparse data (a
-        static run) this measured better than a free fit (docs/identification.md).
+        only as far as the data warrant (a maximum a posteriori estimate; along the data's
+        leading directions only, ``directions``); on sparse data (a static run) this
+        measured better than a free fit (docs/identification.md).
     population : dict, optional
         The prior's statistics (``names``, ``covariance``, ``sigma_data``, ``source``);
         default the shipped ones (io.calibration.population). Validation passes the
@@ -192,7 +193,8 @@ class FitOptions:
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
     directions : int, optional
-        Cambered model under the prior, ``names`` not given: fit only this many of the
+        :func:`fit_loads` only. Cambered model under the prior, ``names`` not given, data
+        other than a collective sweep: fit only this many of the
         parameter directions the data determine best against the prior
         (identify/directions.py), the others held at the base values; 0: every name under
         the prior. None (default): 3 (STATIC_DIRECTIONS) for a static run, those the data
@@ -250,7 +252,8 @@ class Identifiability:
     posterior's, covariance (J_d^T J_d / s^2 + Sigma^-1)^-1 with Sigma the population
     covariance (what data and prior together determine; a direction the data leave free
     keeps the population's spread), and ``std_error_data`` holds the data's alone beside them (None without a
-    prior); ``poorly_determined`` is still judged on the data alone. ``effective_parameters``
+    prior, and in a fit along directions, FitResult.extra["directions"]); ``poorly_determined``
+    is still judged on the data alone. ``effective_parameters``
     is how many parameter directions the data determine against the prior, the trace of the
     posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
     the prior's): p without a prior, fewer as the prior holds directions the data leave free
@@ -381,33 +384,37 @@ class FitResult:
             extra = f"{f(idf.std_error_data[k]):>12.3g}" if data_only else ""
             lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
                          f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{extra}{flag}")
-        if data_only and self.extra.get("directions"):
-            lines.append("std err and interval: data and population prior together (the posterior; the held "
-                         "directions keep the population's spread); 'data only': the data's alone, along the free "
-                         "directions")
+        dirs = self.extra.get("directions")
+        if dirs:
+            lines.append(f"std err and interval: the posterior, the data's along the {dirs['count']} free directions "
+                         "and the population's spread along the held ones (the data determine the directions, not a "
+                         "parameter alone: their own figures are the directions', below)")
         elif data_only:
             lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
                          "the data's alone")
-        dirs = self.extra.get("directions")
         if dirs:
             lines.append(f"free: {dirs['count']} directions of the {len(self.names)} parameters, those the data "
-                         "determine best against the population prior (the others at the base set); coefficient "
-                         "+- std error (data only) in prior standard deviations, and the parameter changes per unit "
-                         "(the four largest against each parameter's population spread):")
+                         "determine best against the population prior\n  (the others held at the base set); "
+                         "coefficient +- std error (data only) in prior standard deviations,\n  and the parameter "
+                         "changes per unit (the four largest against each parameter's population spread):")
             for i, (cf, sd, sdd, load) in enumerate(zip(dirs["coefficients"], dirs["std_error"],
                                                         dirs["std_error_data_only"], dirs["loadings"])):
                 big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
-                terms = ", ".join(f"{self.names[j]} {math.degrees(load[j]) if _is_angle(self.names[j]) else load[j]:+.3g}"
-                                  f"{' deg' if _is_angle(self.names[j]) else ''}" for j in big)
+                unit = dirs["units"]
+                terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if self.names[j] in unit else ''}"
+                                  for j in big)
                 lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd:.3f} ({sdd:.3f}): {terms}")
-        if idf.effective_parameters is not None:
+            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {dirs['count']} free directions "
+                         f"(effective number; the other {len(self.names) - dirs['count']} held at the base set)")
+        elif idf.effective_parameters is not None:
             lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
                          "directions (effective number; the prior holds the others near the base set)")
         if len(self.names) > 1:
             lines.append("correlation: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
                 for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
-        lines.append("scaled Jacobian singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
+        label = "the free directions' Jacobian" if dirs else "scaled Jacobian"
+        lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
         level = self.extra.get("kind") in ("level_flight", "flight")
         unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
         r = self.residuals
@@ -1142,7 +1149,8 @@ def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, n
     from .directions import STATIC_DIRECTIONS
 
     kind = _data_kind(data)
-    if kind == "collective" or options.names is not None or _prior_stats(names, base, options) is None:
+    stats = _prior_stats(names, base, options)
+    if kind == "collective" or options.names is not None or stats is None or len(stats[0]) != len(names):
         return 0
     if options.directions is not None:
         return min(int(options.directions), len(names))
@@ -1169,9 +1177,7 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
 
     from .directions import DATA_OVER_PRIOR, leading_directions
 
-    sel, mu, chol, pop = _prior_stats(names, base, options)
-    if len(sel) != len(names):
-        raise ValueError("a fit along directions needs the population prior on every fitted name")
+    _, mu, chol, pop = _prior_stats(names, base, options)  # (on every name: _direction_count)
     weight = float(pop["sigma_data"])
     lb, ub = _bounds(names, options)
     data, full = make_data(options), make_residual(options)
@@ -1193,12 +1199,15 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
     def x_of(c):
         return np.clip(mu + B @ c, lb, ub)
 
-    def fun(c):
-        count["n"] += 1
-        return np.concatenate([data(x_of(c)), weight * c])
+    last = {}
+
+    def fun(c):  # the residual with its Jacobian from one model call (least_squares asks for both at each x)
+        last["c"], (r, last["J"]) = np.array(c, float), data_jac(x_of(c))
+        return np.concatenate([r, weight * c])
 
     def jac(c):
-        return np.vstack([data_jac(x_of(c))[1] @ B, weight * np.eye(k)])
+        J = last["J"] if np.array_equal(last.get("c"), c) else data_jac(x_of(c))[1]
+        return np.vstack([J @ B, weight * np.eye(k)])
 
     sol = optimize.least_squares(fun, np.zeros(k), jac=jac, method="trf", x_scale="jac", max_nfev=options.max_nfev,
                                  xtol=1e-12, ftol=1e-12, gtol=1e-12)
@@ -1209,7 +1218,8 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
                                    jac=np.vstack([J, weight * np.linalg.inv(chol)]), status=sol.status,
                                    success=sol.success, message=f"least squares along {k} directions: {sol.message}")
     elapsed = time.perf_counter() - t0
-    extra = {"outside": [n for n, v, lo, hi in zip(names, mu + B @ sol.x, lb, ub) if not lo <= v <= hi],
+    unclipped = mu + B @ sol.x
+    extra = {"outside": [(n, v) for n, v, lo, hi in zip(names, unclipped, lb, ub) if not lo <= v <= hi],
              "directions": {"count": k, "c": sol.x, "loadings": B, "eigenvalues": lam, "base": mu,
                             "jac_c": J @ B, "prior_std": np.sqrt(np.sum(chol**2, axis=1)), "held": every[:, k:]}}
     log = [{"x0": mu, "x": x, "cost": 0.5 * float(r @ r), "nfev": int(sol.nfev)}]
@@ -1219,10 +1229,14 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
 def _directions_report(result: FitResult) -> FitResult:
     """The identifiability of a fit along directions: the k free directions' posterior
     (covariance (J_c^T J_c / s^2 + I)^-1, c in prior standard deviations) and the data's
-    alone (s^2 (J_c^T J_c)^-1). The parameters' posterior covariance is B cov_c B^T + H H^T,
-    B the free directions' loadings and H the held ones' (each a prior standard deviation:
-    the data do not move them, the prior's spread stays); their 'data only' figure is the
-    free directions' part, B cov_c,data B^T."""
+    alone (s^2 (J_c^T J_c)^-1), in ``extra["directions"]``. The parameters' posterior
+    covariance is B cov_c B^T + H H^T, B the free directions' loadings and H the held ones'
+    (each a prior standard deviation: the data do not move them, the prior's spread stays);
+    they have no data-only figure (the data determine the directions, not a parameter alone:
+    ``std_error_data`` None), ``singular_values`` are the free directions' Jacobian's and
+    ``poorly_determined`` is empty (a direction the data know less well than the prior is
+    named in the warnings). Angles in the JSON loadings and base are in degrees, as
+    ``fitted``."""
     d = result.extra["directions"]
     k, B, Jc, c = d["count"], d["loadings"], d["jac_c"], d["c"]
     dnames = tuple(f"direction_{i + 1}" for i in range(k))
@@ -1238,30 +1252,30 @@ def _directions_report(result: FitResult) -> FitResult:
         return cov, np.sqrt(np.clip(np.diag(cov), 0, None))
 
     cov, std = to_x(post, d["held"])
-    _, std_data = to_x(own, d["held"][:, :0])
     from scipy import stats
 
     t = stats.t.ppf(0.975, dof)
     with np.errstate(divide="ignore", invalid="ignore"):
         corr = np.where(np.outer(std, std) > 0, cov / np.outer(std, std), 0.0)
     np.fill_diagonal(corr, 1.0)
-    weight = result.extra["prior"]["sigma_data"]
+    weight = result.extra["prior"]["sigma_data"] * result.extra["prior"]["scale"]
     eff = float(np.trace(Jc.T @ Jc @ np.linalg.inv(Jc.T @ Jc + weight**2 * np.eye(k))))
     weak = [n for n, sd in zip(dnames, own.std_error) if not sd < 1.0]  # less known from the data than the prior
     warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
                   f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
                   for n, sd in zip(dnames, own.std_error) if n in weak)
     idf = Identifiability(result.names, std, np.column_stack([result.x - t * std, result.x + t * std]), corr,
-                          own.singular_values, tuple(weak), warns, std_error_data=std_data, effective_parameters=eff)
+                          own.singular_values, (), warns, std_error_data=None, effective_parameters=eff)
     extra = dict(result.extra)
+    deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")
     extra["directions"] = {
-        "count": k, "names": list(result.names),
+        "count": k, "names": list(result.names), "units": {n: "deg" for n in result.names if _is_angle(n)},
         "coefficients": [float(v) for v in c],
         "std_error": [float(v) for v in post.std_error], "std_error_data_only": [float(v) for v in own.std_error],
-        "loadings": [[float(v) for v in B[:, i]] for i in range(k)],
+        "loadings": [[float(v) for v in B[:, i] * deg] for i in range(k)],
         "eigenvalues": [float(v) for v in d["eigenvalues"]],
-        "base": [float(v) for v in d["base"]],
-        "prior_std": [float(v) for v in d["prior_std"]],
+        "base": [float(v) for v in d["base"] * deg],
+        "prior_std": [float(v) for v in d["prior_std"] * deg],
     }
     return replace(result, identifiability=idf, extra=extra)
 
@@ -1322,8 +1336,19 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     quantities : tuple of str, optional
         Which measured quantities to fit (default: all in ``data.measured``).
     options : FitOptions
-        ``names`` default: the paper's four parameters; for the cambered model
-        CAMBERED_FIT, or CAMBERED_FIT_STATIC when every point is static.
+        ``names`` default: the paper's four parameters; for the cambered model as
+        :class:`FitOptions` says (CAMBERED_FIT_RE or CAMBERED_FIT under the prior,
+        CAMBERED_FIT_STATIC for a static run without it), and under the prior, by default,
+        only the data's leading directions for a static run or sweeps at one rotation rate
+        (``FitOptions.directions``; identify/directions.py).
+
+    Returns
+    -------
+    FitResult
+        With a fit along directions ``extra["directions"]``: their count, coefficients and
+        std errors (posterior and data only) in prior standard deviations, loadings, the
+        eigenvalues and the base (angles in degrees, ``units``); the parameters' std errors
+        are the posterior's with the held directions at the population's spread.
 
     Raises
     ------
@@ -1332,6 +1357,11 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         parameters + 1, or a measured quantity that is zero everywhere.
     SolverError
         From the rotor model.
+
+    Notes
+    -----
+    Residual method of Gill & D'Andrea (2017), Section III, applied to load measurements;
+    the population prior and the directions: docs/identification.md.
     """
     from ..io.calibration import generic_params
 
@@ -1344,19 +1374,27 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
     make_residual, prior = _with_prior(make_data, names, base, options)
     k_dirs = _direction_count(options, base, data, names)
-    outside = []
+    notes, outside, spent = [], [], (0, 0.0)
+    if options.directions is not None and k_dirs == 0 and options.directions != 0:
+        notes.append("directions ignored: they apply to the cambered model under the population prior with the "
+                     "default parameters, on load data other than a collective sweep")
     if k_dirs != 0:
         best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, make_residual, names, base, options,
                                                                        k_dirs)
-        outside = extra.pop("outside")
+        outside, spent = extra.pop("outside"), (nfev, elapsed)
         if outside:  # the directions' optimum is not a point of the range: every name under the prior instead
             k_dirs = 0
+        elif options.multistart:
+            notes.append("multistart not used: the fit along directions starts from the base set")
     if k_dirs == 0:
         best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                         "fit loads", _x0(names, options, base))
+        nfev, elapsed = nfev + spent[0], elapsed + spent[1]
         if outside:
-            warns = [f"the optimum along the data's leading directions put {', '.join(outside)} outside the "
-                     f"allowed range: all {len(names)} parameters fitted under the prior instead", *warns]
+            shown = ", ".join(f"{n} {math.degrees(v):.4g} deg" if _is_angle(n) else f"{n} {v:.4g}" for n, v in outside)
+            warns = [f"the optimum along the data's leading directions left the allowed range ({shown}): all "
+                     f"{len(names)} parameters fitted under the prior instead", *warns]
+    warns = [*notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}
     if prior:
