@@ -55,7 +55,8 @@ if __name__ == "__main__":
     from propmap.cli.validate_all import run_catalogue
 
     rows = run_catalogue(["static"], [], progress=False)["propellers"]
-    label = CAND if CAND != "base" else f"{D.STATIC_DIRECTIONS} directions" if D.STATIC_DIRECTIONS else "8 under the prior"
+    label = (CAND if CAND != "base" else f"{D.STATIC_DIRECTIONS} directions" if D.STATIC_DIRECTIONS
+             else "8 under the prior")
     print(f"{label} ({len(rows)}):", _row(rows))
     for v in sorted({r["volume"] for r in rows}):
         sub = [r for r in rows if r["volume"] == v]

@@ -6,8 +6,9 @@ import math
 
 import click
 
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      load_prop, with_prop_options)
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
 #: --target choices: the targets and their former names (gazebo: the PX4 classic plugin; gill2019: the multinomial)

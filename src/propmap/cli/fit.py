@@ -341,8 +341,8 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), population=population,
-                      directions=directions)
+    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label),
+                      population=population, directions=directions)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:

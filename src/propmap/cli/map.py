@@ -11,8 +11,8 @@ from pathlib import Path
 import click
 
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params, load_prop, parse_names, resolve_air,
-                      with_air_options, with_prop_options)
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params,
+                      load_prop, parse_names, resolve_air, with_air_options, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000

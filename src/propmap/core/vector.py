@@ -21,6 +21,8 @@ __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient
 
 #: the scalar inputs ``rotor_loads`` differentiates for the velocity vector's Jacobian
 VELOCITY_INPUTS = ("airspeed", "incidence")
+#: the loads odd in the in-plane speed V sin(beta) (the others are even)
+_ODD = ("drag", "rolling_moment")
 
 
 @dataclass(frozen=True)
@@ -227,7 +229,7 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
         for q in out:
             d = r.derivative(q, "airspeed")
             # edgewise for the odd loads; the mean of climb and descent (dV_c = -dV along beta = pi)
-            out[q][still] = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
+            out[q][still] = d[1] if q in _ODD else 0.5 * (d[0] - d[2])
     return out
 
 
@@ -285,7 +287,8 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
     # D / V_s and M_R / V_s; their limits D_s, M_R,s in axial flow and where V_s is below 1e-6 of the
     # blade's speed scale (they differ by O((V_s / Omega R)^2) there, while the quotient of the tiny
     # D, a sum over the nodes that cancels to O(V_s), loses digits: 1e-3 at V_s = 1e-12 m/s)
-    small = axial | (np.abs(vs) < 1e-6 * (np.asarray(loads.omega) * (0.5 * loads.diameter) + np.asarray(loads.airspeed)))
+    blade = np.asarray(loads.omega) * (0.5 * loads.diameter) + np.asarray(loads.airspeed)  # speed scale [m/s]
+    small = axial | (np.abs(vs) < 1e-6 * blade)
     d_ratio = np.where(small, Ds, loads.drag / np.where(small, 1.0, vs))
     r_ratio = np.where(small, Rs, loads.rolling_moment / np.where(small, 1.0, vs))
     proj = np.eye(3) - z[..., :, None] * z[..., None, :]  # I - z z^T
@@ -298,9 +301,9 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
         return xs[..., None] * e + xc[..., None] * z
 
     # -(D_s e e^T + (D / V_s) l l^T) = -((D_s - D / V_s) e e^T + (D / V_s) (I - z z^T))
-    dF = (outer(z, row(Ts, Tc)) - outer(e, row(0.0 * Ds, Dc)) - (Ds - d_ratio)[..., None, None] * ee
+    dF = (outer(z, row(Ts, Tc)) - outer(e, Dc[..., None] * z) - (Ds - d_ratio)[..., None, None] * ee
           - d_ratio[..., None, None] * proj)
-    dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, row(0.0 * Rs, Rc))
+    dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, Rc[..., None] * z)
                                   + (Rs - r_ratio)[..., None, None] * ee + r_ratio[..., None, None] * proj)
     return dF, dtau
 
@@ -341,10 +344,6 @@ def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.
     e, _, _, split = _disk_split(loads, V, z, still)
     xs, xc = split(quantity)
     return xs[..., None] * e + xc[..., None] * z
-
-
-#: the loads odd in the in-plane speed V sin(beta) (the others are even)
-_ODD = ("drag", "rolling_moment")
 
 
 def _disk_split(loads: RotorLoads, V, z, still) -> tuple:

@@ -1159,7 +1159,7 @@ def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, n
     return None if _sweep_rates(data) < 2 else 0
 
 
-def _fit_along_directions(make_data, make_residual, names, base, options, k):
+def _fit_along_directions(make_data, names, base, options, k):
     """Fit the ``k`` directions the data determine best against the population prior
     (identify/directions.py; None: those whose eigenvalue is at least DATA_OVER_PRIOR, at
     least one): x = mu + B c, c in prior standard deviations, the residual the data's and the
@@ -1180,7 +1180,7 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
     _, mu, chol, pop = _prior_stats(names, base, options)  # (on every name: _direction_count)
     weight = float(pop["sigma_data"])
     lb, ub = _bounds(names, options)
-    data, full = make_data(options), make_residual(options)
+    data = make_data(options)
     count = {"n": 0}
 
     def data_jac(x):
@@ -1202,8 +1202,8 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
     last = {}
 
     def fun(c):  # the residual with its Jacobian from one model call (least_squares asks for both at each x)
-        last["c"], (r, last["J"]) = np.array(c, float), data_jac(x_of(c))
-        return np.concatenate([r, weight * c])
+        last["c"], (last["r"], last["J"]) = np.array(c, float), data_jac(x_of(c))
+        return np.concatenate([last["r"], weight * c])
 
     def jac(c):
         J = last["J"] if np.array_equal(last.get("c"), c) else data_jac(x_of(c))[1]
@@ -1212,8 +1212,8 @@ def _fit_along_directions(make_data, make_residual, names, base, options, k):
     sol = optimize.least_squares(fun, np.zeros(k), jac=jac, method="trf", x_scale="jac", max_nfev=options.max_nfev,
                                  xtol=1e-12, ftol=1e-12, gtol=1e-12)
     x = x_of(sol.x)
-    r, J = data_jac(x)
-    prior_rows = full(x)[r.size:]
+    r, J = (last["r"], last["J"]) if np.array_equal(last.get("c"), sol.x) else data_jac(x)
+    prior_rows = weight * np.linalg.solve(chol, x - mu)  # as _with_prior's, w L^-1 (x - mu)
     best = optimize.OptimizeResult(x=x, fun=np.concatenate([r, prior_rows]),
                                    jac=np.vstack([J, weight * np.linalg.inv(chol)]), status=sol.status,
                                    success=sol.success, message=f"least squares along {k} directions: {sol.message}")
@@ -1379,8 +1379,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         notes.append("directions ignored: they apply to the cambered model under the population prior with the "
                      "default parameters, on load data other than a collective sweep")
     if k_dirs != 0:
-        best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, make_residual, names, base, options,
-                                                                       k_dirs)
+        best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, names, base, options, k_dirs)
         outside, spent = extra.pop("outside"), (nfev, elapsed)
         if outside:  # the directions' optimum is not a point of the range: every name under the prior instead
             k_dirs = 0
