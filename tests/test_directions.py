@@ -219,3 +219,18 @@ def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     om_r = 10000 * math.pi / 30 * prop.radius
     assert tip == pytest.approx(om_r + 20.0) and inc == 180.0
     assert J == pytest.approx(20.0 / (10000 / 60 * prop.diameter))
+
+
+def test_a_few_thrust_only_steps_are_enough_for_the_directions():
+    """A Series 1520 stand measures no torque: 6 static thrust-only steps (UIUC apce_8x6, every
+    third point) identify the 3 directions, where all 8 parameters under the prior need more than
+    8 residuals; 3 points are refused, naming the directions."""
+    st, prop = _static("apce_8x6")
+    six = st.subset(np.arange(st.n) % 3 == 0)
+    assert six.n == 6
+    r = fit_loads(six, prop, quantities=("thrust",))
+    assert r.extra["directions"]["count"] == 3 and 1.0 < r.identifiability.effective_parameters <= 3.0
+    with pytest.raises(ValueError, match="6 points cannot identify 8 parameters"):
+        fit_loads(six, prop, quantities=("thrust",), options=FitOptions(directions=0))
+    with pytest.raises(ValueError, match="3 points of thrust cannot identify 3 parameter directions"):
+        fit_loads(six.subset(np.arange(6) < 3), prop, quantities=("thrust",))

@@ -1369,11 +1369,13 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     air = base.air if air is None else air
     names = _default_names(base, options, _data_kind(data))
     keys = _load_keys(data, quantities)
-    if data.n * len(keys) <= len(names):
-        raise ValueError(f"{data.n} points cannot identify {len(names)} parameters")
+    k_dirs = _direction_count(options, base, data, names)
+    free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
+    if data.n * len(keys) <= free:
+        raise ValueError(f"{data.n} points cannot identify {free} parameters" if k_dirs == 0 else
+                         f"{data.n} points of {', '.join(keys)} cannot identify {free} parameter directions")
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
     make_residual, prior = _with_prior(make_data, names, base, options)
-    k_dirs = _direction_count(options, base, data, names)
     notes, outside, spent = [], [], (0, 0.0)
     if options.directions is not None and k_dirs == 0 and options.directions != 0:
         notes.append("directions ignored: they apply to the cambered model under the population prior with the "
