@@ -529,3 +529,44 @@ def test_fitting_a_fixed_M_is_refused(prop):
     data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
     with pytest.raises(ValueError, match="M is fixed at 30 by the fit's options"):
         fit_loads(data, prop, options=FitOptions(M=30.0, names=("cl_alpha", "M")))
+
+
+@pytest.mark.parametrize("params", [pm.generic_params().replace(descent="glauert"), pm.preset("gill2017-apc")],
+                         ids=["cambered", "paper"])
+def test_implicit_derivatives_match_tightly_converged_differences(prop, params, monkeypatch):
+    """Issue 20: 1e-6 against central differences where the loads are smooth. The differences
+    are of the NumPy reference solver (core/_reference.py, the same rule) with its root
+    tolerance tightened to 1e-15 (the compiled kernel's 1e-7 / h would swamp them), Richardson-
+    extrapolated from h and h/2; hover-side climb, fast climb at 30 deg and 60 deg incidence
+    (measured: 1e-8 to 3e-6 of each derivative; near windmilling, where the torque is small and
+    U_P passes through 0 on some annulus, less: docs/solver.md)."""
+    from propmap.core import _kernel as K
+    from propmap.core._reference import solve_reference
+    from propmap.core.solver import _nodes
+
+    monkeypatch.setattr(K, "XTOL", 1e-15)  # the reference reads them at run time; the kernel's are compiled
+    monkeypatch.setattr(K, "FTOL", 0.0)
+    monkeypatch.setattr(K, "MAX_REFINE", 400)
+    nd = _nodes(prop, DISC.n_radial, DISC.n_azimuth, params.air, params)
+
+    def loads(om, V, b):
+        T, D, Q, _, ok = solve_reference(np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]),
+                                         nd, params, params.air)
+        assert ok.all()
+        return np.array([T[0], D[0], Q[0]])
+
+    for om, V, b in ((800.0, 5.0, 0.0), (1200.0, 25.0, math.radians(30)), (500.0, 8.0, math.radians(60))):
+        r = pm.rotor_loads(prop, params, om, V, b, discretization=DISC, derivatives=True)
+        base = loads(om, V, b)
+        for wrt, k, h in (("omega", 0, 1e-3 * om), ("airspeed", 1, 1e-3 * V), ("incidence", 2, 1e-3)):
+            def f(dx, k=k):
+                x = [om, V, b]
+                x[k] += dx
+                return loads(*x)
+
+            d1, d2 = (f(h) - f(-h)) / (2 * h), (f(h / 2) - f(-h / 2)) / h
+            fd = (4 * d2 - d1) / 3
+            got = np.array([r.derivative(q, wrt) for q in ("thrust", "drag", "torque")])
+            floor = 1e-3 * np.array([base[0], base[0], base[2]]) / (1.0 if wrt == "incidence" else [om, V, 1][k])
+            np.testing.assert_array_less(np.abs(got - fd), 5e-6 * np.maximum(np.abs(fd), np.abs(floor)),
+                                         err_msg=f"{om} rad/s, {V} m/s, {math.degrees(b):.0f} deg, {wrt}")
