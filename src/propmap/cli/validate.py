@@ -30,7 +30,7 @@ def print_table(v) -> None:
 @click.command("validate")
 @click.argument("prop", required=False)
 @click.option("--all", "all_props", is_flag=True,
-              help="Cross-validate every catalogue propeller with measurements (about 10 minutes on 2 cores).")
+              help="Cross-validate every catalogue propeller with measurements (about 1 minute on 2 cores).")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
 @click.option("--protocols", default=None,
               help=f"With --all: comma-separated subset of {', '.join(PROTOCOLS)} (default: all).")
