@@ -191,6 +191,26 @@ def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):
                   "--out", str(tmp_path / "x.py")])
     assert e.exit_code == 0, e.output
     assert "advance ratio up to" in e.output and "axial data only" in e.output and "rpm: the data" not in e.output
+    t = run(cli, ["trim", "apce_8x6", "--thrust", "3", "--rpm", "8000", "--airspeed", "10", "--incidence-deg", "60",
+                  "--params", str(p)])
+    assert t.exit_code == 0 and "8000 rpm: the data behind" in t.output and "axial data only" in t.output
+
+
+def test_wrench_checks_the_coverage_once_per_propeller(tmp_path, shared_data):
+    """`propmap wrench` on a NeuroBEM log (Bauersfeld et al. 2021) with a static stand fit: the log's
+    incidences and rpm lie beyond the fit's data, said once (the quadrotor's four rotors share
+    one propeller)."""
+    from pathlib import Path
+
+    p = tmp_path / "p.toml"
+    run = CliRunner().invoke
+    assert run(cli, ["fit", "loads", str(_static_csv(tmp_path / "s.csv")), "--prop", "apce_8x6",
+                     "--out", str(p)]).exit_code == 0
+    log = sorted((shared_data / "neurobem_flights").glob("*.mat"))[0]
+    veh = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    w = run(cli, ["wrench", str(log), "--vehicle", str(veh), "--params", str(p), "--out", str(tmp_path / "w.csv")])
+    assert w.exit_code == 0, w.output
+    assert w.output.count("fitted to axial data only") == 1 and w.output.count("rpm: the data behind") == 1
 
 
 def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
@@ -213,7 +233,7 @@ def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     assert capsys.readouterr().err == ""
     coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=(lo / 2, hi - 1))
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"{lo / 2:g}-{hi - 1:g} rpm" in err
+    assert err.count("\n") == 1 and f"{lo / 2:.0f}-{hi - 1:.0f} rpm" in err
     tip, J, inc = envelope_extremes(prop, np.array([10000.0]), np.array([0.0, 20.0])[:, None],
                                     np.array([0.0, 90.0, 180.0]))
     om_r = 10000 * math.pi / 30 * prop.radius

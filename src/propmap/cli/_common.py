@@ -499,6 +499,6 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     if rpm is not None and "rpm_min" in cov:
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
         if lo < cov["rpm_min"] or hi > cov["rpm_max"]:
-            shown = f"{lo:g}" if lo == hi else f"{lo:g}-{hi:g}"
+            shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
             warn(f"{shown} rpm: the data behind {label} span {cov['rpm_min']:.0f}-{cov['rpm_max']:.0f} rpm (Reynolds "
                  "numbers beyond them are extrapolated)")

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, check_outputs, load_params, parse_names, resolve_air, with_air_options
+from ._common import (InputError, PathArg, check_outputs, coverage_messages, envelope_extremes, load_params,
+                      parse_names, resolve_air, with_air_options)
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
 def _vehicle(path: Path):
@@ -310,6 +311,15 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, rho=None, tempe
         if "M_zero" in err:
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
     click.echo(f"wrote {out}", err=True)
+    # the log's rotor operating points beyond the data behind the parameters (a fitted file's [coverage])
+    import numpy as np
+
+    for name, prop in {r.propeller.name: r.propeller for r in veh.rotors}.items():  # once per propeller
+        ld = [w.loads[i] for i, r in enumerate(veh.rotors) if r.propeller.name == name]
+        rpm = np.concatenate([x.omega for x in ld]) * 30 / np.pi
+        coverage_messages(prop, label, air, *envelope_extremes(
+            prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
+            rpm=(float(rpm.min()), float(rpm.max())))
     skipped = log.n - samples.n
     if skipped:
         click.echo(f"propmap: warning: {skipped} sample(s) with a stopped rotor (Omega < 1 rad/s) were left out",

@@ -6,8 +6,9 @@ import math
 
 import click
 
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
-                      load_params, load_prop, with_prop_options)
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 
 
@@ -60,6 +61,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
         raise InputError(f"--thrust: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
+    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
     r = res.loads
     d = _descent_outputs(r)
     out = {"collective_deg": math.degrees(float(res.collective)), "branch": res.branch,
