@@ -1138,7 +1138,7 @@ def _sweep_rates(data: LoadData) -> int:
     return 0 if rpm.size == 0 else 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
 
 
-def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, names) -> int | None:
+def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, kind: str, names) -> int | None:
     """How many directions :func:`fit_loads` frees: 0 every name (under the prior), None as
     many as the data determine DATA_OVER_PRIOR times better than the prior (at least one).
 
@@ -1148,7 +1148,6 @@ def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, n
     (identify/directions.py; docs/identification.md has the measurements)."""
     from .directions import STATIC_DIRECTIONS
 
-    kind = _data_kind(data)
     stats = _prior_stats(names, base, options)
     if kind == "collective" or options.names is not None or stats is None or len(stats[0]) != len(names):
         return 0
@@ -1367,9 +1366,10 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
 
     base = base or generic_params()
     air = base.air if air is None else air
-    names = _default_names(base, options, _data_kind(data))
+    kind = _data_kind(data)
+    names = _default_names(base, options, kind)
     keys = _load_keys(data, quantities)
-    k_dirs = _direction_count(options, base, data, names)
+    k_dirs = _direction_count(options, base, data, kind, names)
     free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
     if data.n * len(keys) <= free:
         raise ValueError(f"{data.n} points cannot identify {free} parameters" if k_dirs == 0 else
