@@ -384,9 +384,7 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     e[3, 3] = 1.0
     if axial and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray (V sin beta snapped to 0)
         e[1, 1] = 0.0
-    hx = np.empty(2)  # at V = 0: the steps of the momentum side's differences in Omega and along the ray
-    hx[0] = STEP * om
-    hx[1] = STEP * (om * y[nr - 1] + V[i])  # the tip's speed scale [m/s]
+    h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (the tip's speed scale)
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
@@ -474,12 +472,13 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
         dB[1, 3] = cHs * kth * cf
         dB[2, 3] = cH * kth * cq
         dB[3, 3] = cTs * kth * cq
-        # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0,
-        # v = -V cos beta / 2) and at V = 0, where the solver's own momentum side is differenced: centrally in
-        # v, Omega, V sin beta and V cos beta, with steps of each variable's scale (not of the incidence,
-        # whose step would move V cos beta by only V STEP: at small airspeeds that stays on one side of the
-        # switch); at V = 0 one-sided along the airspeed's ray
-        analytic = not emp or (not one_sided and vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
+        # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0 at
+        # V > 0, and v = -V cos beta / 2), where the solver's own momentum side is differenced centrally in v,
+        # Omega, V sin beta and V cos beta, with steps of each variable's scale (not of the incidence, whose step
+        # would move V cos beta by only V STEP: at small airspeeds that stays on one side of the switch). At V = 0
+        # the empirical model is Glauert's (d = -V cos beta = 0): analytic in v and Omega, and one-sided along
+        # the airspeed's ray (below)
+        analytic = not emp or one_sided or (vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
         if analytic:
             mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
         else:
@@ -487,34 +486,26 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
             mj, ctj, chj = mfac[j], ct[j], ch[j]
             mv = (_momentum_side(vj + hv, om, vs, vc, yj, mj, ctj, chj, emp)
                   - _momentum_side(vj - hv, om, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
-            mom_om = mom_vs = mom_vc = 0.0
-            if not one_sided:
-                ho = STEP * om
-                mom_om = (_momentum_side(vj, om + ho, vs, vc, yj, mj, ctj, chj, emp)
-                          - _momentum_side(vj, om - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
-                mom_vs = (_momentum_side(vj, om, vs + hv, vc, yj, mj, ctj, chj, emp)
-                          - _momentum_side(vj, om, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
-                mom_vc = (_momentum_side(vj, om, vs, vc + hv, yj, mj, ctj, chj, emp)
-                          - _momentum_side(vj, om, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+            ho = STEP * om
+            mom_om = (_momentum_side(vj, om + ho, vs, vc, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, om - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
+            mom_vs = (_momentum_side(vj, om, vs + hv, vc, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, om, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+            mom_vc = (_momentum_side(vj, om, vs, vc + hv, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, om, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
         Gv = Lv0 - mv
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
-            h = hx[p] if p < 2 else 0.0  # (the collective moves no momentum side)
-            if p == 3:
+            if p == 3:  # the collective moves no momentum side
                 dmom = 0.0
-            elif not one_sided:  # analytic or differenced above: the chain rule
-                dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
-            elif p == 1 and one_sided:
+            elif p == 1 and one_sided:  # along the airspeed's ray from rest: one-sided, second order
                 m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
-                m1 = _momentum_side(vj, om, h * sb, h * cb, yj, mfac[j], ct[j], ch[j], emp)
-                m2_ = _momentum_side(vj, om, 2 * h * sb, 2 * h * cb, yj, mfac[j], ct[j], ch[j], emp)
-                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h)
-            else:
-                dmom = (_momentum_side(vj, om + h * e[p, 0], vs + h * e[p, 1], vc + h * e[p, 2], yj, mfac[j], ct[j],
-                                       ch[j], emp)
-                        - _momentum_side(vj, om - h * e[p, 0], vs - h * e[p, 1], vc - h * e[p, 2], yj, mfac[j], ct[j],
-                                         ch[j], emp)) / (2.0 * h)
+                m1 = _momentum_side(vj, om, h_ray * sb, h_ray * cb, yj, mfac[j], ct[j], ch[j], emp)
+                m2_ = _momentum_side(vj, om, 2 * h_ray * sb, 2 * h_ray * cb, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h_ray)
+            else:  # analytic or differenced above: the chain rule
+                dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
             dL0 = dB[0, 0] * e[p, 0] + dB[0, 1] * e[p, 1] + dB[0, 2] * e[p, 2] + dB[0, 3] * e[p, 3]
             dL1 = dB[1, 0] * e[p, 0] + dB[1, 1] * e[p, 1] + dB[1, 2] * e[p, 2] + dB[1, 3] * e[p, 3]
             dL2 = dB[2, 0] * e[p, 0] + dB[2, 1] * e[p, 1] + dB[2, 2] * e[p, 2] + dB[2, 3] * e[p, 3]
