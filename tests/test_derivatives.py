@@ -395,12 +395,39 @@ def test_velocity_jacobian_errors_and_shapes(prop):
     np.testing.assert_allclose(r.jacobian[("torque", "velocity")][1, 0], one.jacobian[("torque", "velocity")],
                                rtol=1e-12, atol=1e-15)
     still = r.loads
+    # loads without the slopes at rest (rotor_wrench's carry them): the slopes must be given
+    bare = pm.rotor_loads(prop, g, 800.0, [0.0, 3.0], 0.3, derivatives=("airspeed", "incidence"), discretization=DISC)
     with pytest.raises(ValueError, match="still .* is required where V = 0"):
-        velocity_jacobian(still, V, [0.0, 0.0, 1.0], 1.0)
+        velocity_jacobian(bare, [[0.0, 0.0, 0.0], [0.9, 0.0, 2.9]], [0.0, 0.0, 1.0], 1.0)
     with pytest.raises(ValueError, match="quantity must be 'thrust', 'torque' or 'v_i_mean'"):
         velocity_gradient(still, "drag", V, [0.0, 0.0, 1.0])
     with pytest.raises(ValueError, match="ask for 'velocity'"):
         pm.rotor_wrench(prop, g, V, [0.0, 0.0, 1.0], 800.0, derivatives=("incidence",))
+
+
+def test_still_air_slopes_from_the_same_roots(prop):
+    """At V = 0 the slopes along the three rays come from the roots already solved (the root at
+    rest does not depend on the incidence): equal to separate solves along each ray, for both
+    section models, in a batch that mixes points at rest with moving ones (0 there)."""
+    from propmap.core.solver import STILL_AIR
+    from propmap.core.vector import still_air_slopes
+
+    om = np.array([600.0, 800.0, 1000.0, 900.0])
+    V = np.array([0.0, 4.0, 0.0, 0.0])
+    for params in (pm.generic_params(), pm.preset("gill2017-apc")):
+        r = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=("omega", STILL_AIR), discretization=DISC)
+        rays = pm.rotor_loads(prop, params, om[None, V == 0], 0.0, np.array([[0.0], [0.5 * np.pi], [np.pi]]),
+                              derivatives=("airspeed",), discretization=DISC)
+        alone = still_air_slopes(prop, params, om, V, discretization=DISC)
+        for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean"):
+            d = rays.derivative(q, "airspeed")
+            want = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
+            got = r.derivative(q, STILL_AIR)
+            np.testing.assert_allclose(got[V == 0], want, rtol=1e-12, atol=1e-15)
+            assert np.all(got[V > 0] == 0.0)
+            np.testing.assert_allclose(alone[q], got, rtol=1e-12, atol=1e-15)
+        assert np.all(r.derivative("thrust", STILL_AIR)[V == 0] < 0)  # climbing unloads the rotor
+        assert np.all(r.derivative("drag", STILL_AIR)[V == 0] > 0)  # rotor drag opposes the in-plane speed
 
 
 def test_vehicle_motion_jacobians():

@@ -450,6 +450,11 @@ DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
 #: the air density, differentiated besides the inputs and the section parameters
 RHO = "rho"
+#: internal (core/vector.py): at the points with V = 0, the loads' slopes in the velocity along three rays
+#: from the same roots (:func:`_still_air_jacobian`); 0 elsewhere
+STILL_AIR = "_still_air"
+#: the loads odd in V sin(beta), whose slope at rest is the edgewise one
+_ODD_LOADS = ("drag", "rolling_moment")
 
 #: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
 #: solution at OMEGA_MIN (in still air scaled by (Omega / OMEGA_MIN)^2 to 0 at Omega = 0); the solver
@@ -797,7 +802,7 @@ def _derivative_inputs(derivatives, params, any_slow: bool) -> tuple:
                              f"({', '.join(DERIVATIVE_INPUTS)}, or a field of the parameter set), "
                              f"got {derivatives!r:.60}")
         wrt = tuple(dict.fromkeys(derivatives))
-        own = ({f.name for f in fields(params)} - set(RECORD_META)) | {RHO}
+        own = ({f.name for f in fields(params)} - set(RECORD_META)) | {RHO, STILL_AIR}
         bad = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in own]
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
@@ -870,6 +875,12 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     (core/_sensitivity.py)."""
     from . import _sensitivity
 
+    if STILL_AIR in wrt:
+        others = tuple(w for w in wrt if w != STILL_AIR)
+        out = _jacobian(others, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+                        discretization, loads) if others else {}
+        return out | _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air,
+                                         propeller, discretization, loads)
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
     names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w != RHO]
     scp = nd.sc
@@ -892,3 +903,25 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
         for q, a in enumerate(loads):  # cfac and mfac scale with rho: L / rho at the same root
             raw[q, col[RHO]] += a / air.rho
     return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
+
+
+def _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+                        discretization, loads) -> dict:
+    """{(load, STILL_AIR): slope}: at the points with V = 0 the loads' slopes in the velocity, from the
+    kernel's one-sided airspeed derivatives along three rays at the same roots (at rest the root does
+    not depend on the incidence): edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that
+    this one-sided slope is the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and
+    descent (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes). 0 at
+    the points with V > 0."""
+    rest = np.flatnonzero(V == 0.0)
+    k = rest.size
+    slopes = np.zeros((len(DERIVATIVE_LOADS), om.size))
+    if k:
+        idx = np.tile(rest, 3)
+        rays = np.repeat([0.0, 0.5 * np.pi, np.pi], k)  # climb, edgewise, descent
+        d = _jacobian(("airspeed",), om[idx], np.zeros(3 * k), rays, coll[idx], v[idx], converged[idx], nd, model,
+                      pk, cam, empirical, params, air, propeller, discretization, tuple(a[idx] for a in loads))
+        for q, load in enumerate(DERIVATIVE_LOADS):
+            a = d[(load, "airspeed")].reshape(3, k)
+            slopes[q, rest] = a[1] if load in _ODD_LOADS else 0.5 * (a[0] - a[2])  # dV_c = -dV along beta = pi
+    return {(load, STILL_AIR): slopes[q] for q, load in enumerate(DERIVATIVE_LOADS)}

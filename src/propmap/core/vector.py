@@ -14,13 +14,14 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, STILL_AIR, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
 
 
-#: the scalar inputs ``rotor_loads`` differentiates for the velocity vector's Jacobian
-VELOCITY_INPUTS = ("airspeed", "incidence")
+#: what ``rotor_loads`` differentiates for the velocity vector's Jacobian: the airspeed, the incidence and, at
+#: the points at rest, the slopes along three rays from the same roots (:func:`still_air_slopes`)
+VELOCITY_INPUTS = ("airspeed", "incidence", STILL_AIR)
 #: the loads odd in the in-plane speed V sin(beta) (the others are even)
 _ODD = ("drag", "rolling_moment")
 
@@ -183,8 +184,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
                                       V, z, s)
             jac[("force", n)], jac[("torque", n)] = dF, dtau
         if "velocity" in names:
-            slope = still_air_slopes(propeller, params, omega, speed, **solve)
-            jac[("force", "velocity")], jac[("torque", "velocity")] = velocity_jacobian(loads, V, z, s, slope)
+            jac[("force", "velocity")], jac[("torque", "velocity")] = velocity_jacobian(loads, V, z, s)
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
 
 
@@ -192,8 +192,10 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     """The loads' slopes in the velocity at the points where ``speed`` is 0 (0 elsewhere).
 
     At V = 0 the loads' incidence derivative is 0 and their airspeed derivative lies along
-    one ray, so :func:`velocity_jacobian` takes the slopes there from one more solve of
-    those points only, along three rays: edgewise (beta = pi/2) for the in-plane slopes of
+    one ray, so :func:`velocity_jacobian` takes the slopes there along three rays, from the
+    same roots (at rest the root does not depend on the incidence; ``rotor_loads`` does this
+    for the points at rest of a call that asks for :data:`VELOCITY_INPUTS`; this function
+    solves the points at rest once): edgewise (beta = pi/2) for the in-plane slopes of
     D and M_R, which are odd in V sin(beta) (the azimuth nodes are symmetric in sin psi), so
     that this one-sided slope is the derivative; climbing (beta = 0) and descending (beta =
     pi) for the axial slopes of T, Q and v_i,mean, whose mean is returned: the limit of
@@ -224,13 +226,17 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     still = np.broadcast_to(np.asarray(speed) == 0.0, shape)
     if np.any(still):
         om = np.broadcast_to(np.asarray(omega, float), shape)[still]
-        rays = np.array([0.0, 0.5 * np.pi, np.pi])[:, None]  # climb, edgewise, descent
-        r = rotor_loads(propeller, params, om[None, :], 0.0, rays, derivatives=("airspeed",), **solve)
+        r = rotor_loads(propeller, params, om, 0.0, 0.0, derivatives=(STILL_AIR,), **solve)
         for q in out:
-            d = r.derivative(q, "airspeed")
-            # edgewise for the odd loads; the mean of climb and descent (dV_c = -dV along beta = pi)
-            out[q][still] = d[1] if q in _ODD else 0.5 * (d[0] - d[2])
+            out[q][still] = r.derivative(q, STILL_AIR)
     return out
+
+
+def _slopes_at_rest(loads: RotorLoads):
+    """The slopes at rest that ``rotor_loads`` computed with :data:`VELOCITY_INPUTS`, or None."""
+    if loads.jacobian is None or ("thrust", STILL_AIR) not in loads.jacobian:
+        return None
+    return {q: loads.derivative(q, STILL_AIR) for q in ("drag", "rolling_moment", "thrust", "torque", "v_i_mean")}
 
 
 def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
@@ -259,7 +265,8 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
         +1 ccw, -1 cw.
     still : dict, optional
         The slopes where V = 0 (:func:`still_air_slopes`); required when a point has V = 0,
-        where the loads' own derivatives lie along one ray.
+        where the loads' own derivatives lie along one ray, unless the loads were computed
+        with :data:`VELOCITY_INPUTS` (which carry them).
 
     Returns
     -------
@@ -361,7 +368,10 @@ def _disk_split(loads: RotorLoads, V, z, still) -> tuple:
     axial = (np.abs(vs) < 1e-12 * speed) | (vs == 0.0)  # as the solver: no in-plane speed
     at_rest = speed == 0.0
     if np.any(at_rest) and still is None:
-        raise ValueError("still (the slopes of still_air_slopes) is required where V = 0")
+        still = _slopes_at_rest(loads)
+        if still is None:
+            raise ValueError("still (the slopes of still_air_slopes) is required where V = 0, unless the loads "
+                             "were computed with derivatives=VELOCITY_INPUTS")
     v_ip = V - np.einsum("...i,...i->...", V, z)[..., None] * z
     n_ip = np.linalg.norm(v_ip, axis=-1)
     e = np.where(axial[..., None], 0.0, v_ip / np.where(n_ip > 0, n_ip, 1.0)[..., None])

@@ -37,8 +37,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
-from ..core.vector import (VELOCITY_INPUTS, disk_frame, still_air_slopes, velocity_gradient, velocity_jacobian,
-                           wrench_vectors)
+from ..core.vector import VELOCITY_INPUTS, disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
@@ -298,7 +297,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
     rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
-    hub_jac = _hub_velocity_jacobians(vehicle, params, loads, V_hub, axes, om, **solve) if motion else None
+    hub_jac = _hub_velocity_jacobians(vehicle, loads, V_hub, axes, om) if motion else None
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
 
@@ -448,23 +447,19 @@ def _cross_matrix(r: np.ndarray) -> np.ndarray:
     return m
 
 
-def _hub_velocity_jacobians(vehicle, params, loads, V_hub, axes, om, *, air, discretization, on_failure,
-                            derivatives):
+def _hub_velocity_jacobians(vehicle, loads, V_hub, axes, om):
     """Each rotor's (dF_i/dV_i, dtau_i/dV_i, dvbar_i/dV_i), shapes (N, n_rot, 3, 3) twice and
     (N, n_rot, 3): its force's, hub moment's and mean inflow's derivatives with respect to its
-    hub velocity (core/vector.velocity_jacobian; at V_i = 0 one more solve of those samples
-    along three rays, core/vector.still_air_slopes)."""
+    hub velocity (core/vector.velocity_jacobian), from its loads' derivatives with respect to
+    VELOCITY_INPUTS (at V_i = 0 the slopes along three rays, core/vector.still_air_slopes)."""
     N, n_rot = om.shape
     dF = np.empty((N, n_rot, 3, 3))
     dtau = np.empty((N, n_rot, 3, 3))
     dvi = np.empty((N, n_rot, 3))
     for i, rot in enumerate(vehicle.rotors):
-        p = rot.params if rot.params is not None else params
-        Vd, z, speed, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
-        still = still_air_slopes(rot.propeller, p, om[:, i], speed, air=air, discretization=discretization,
-                                 on_failure=on_failure)
-        dF[:, i], dtau[:, i] = velocity_jacobian(loads[i], Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0), still)
-        dvi[:, i] = velocity_gradient(loads[i], "v_i_mean", Vd, z, still)
+        Vd, z, _, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
+        dF[:, i], dtau[:, i] = velocity_jacobian(loads[i], Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0))
+        dvi[:, i] = velocity_gradient(loads[i], "v_i_mean", Vd, z)
     return dF, dtau, dvi
 
 
