@@ -38,8 +38,9 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .fit import (AIRFRAME_BOUNDS, FitOptions, FitResult, _attach_jacobian, _check_names, _finish,
-                  _fit_with_continuation, _params_from, _with_prior)
+from .engine import _attach_jacobian, _finish, _fit_with_continuation, _params_from, _with_prior
+from .options import AIRFRAME_BOUNDS, FitOptions, _check_names
+from .result import FitResult
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
            "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",

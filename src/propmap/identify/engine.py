@@ -1,0 +1,510 @@
+"""The one fitting engine that every data kind uses (loads, level flight, flight logs):
+bounds, the population prior, multistart least squares, the continuation in the stall-blend
+sharpness M, fits along the data's leading directions and the report (docs/identification.md).
+
+A data kind brings its residual, a function of the parameter vector (with
+``with_jacobian`` for the implicit Jacobian, :func:`_attach_jacobian`), and calls
+:func:`_solve` or :func:`_fit_with_continuation`, then :func:`_finish`.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import fields, replace
+
+import numpy as np
+
+from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
+from .options import AIRFRAME_BOUNDS, BODY_BOUNDS, BODY_X0, BOUNDS, CAMBERED_BOUNDS, ROTOR_BOUNDS, FitOptions, _is_angle
+from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
+
+
+SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
+NM_STAT_TOL = 0.01  # Nelder-Mead at its limit counts as converged within 1% of the std errors
+M_SMOOTH = 30.0  # first stage of the continuation in M (eq 3's blend has no root folds at 30)
+SAME_COST_RTOL = 0.01  # multistart optima within 1% in cost ...
+DIFFERENT_X_RTOL = 0.05  # ... but 5% apart in a parameter: the data do not determine it
+
+
+def _bounds(names, options: FitOptions):
+    table = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS, **(options.bounds or {})}
+    unknown = [n for n in names if n not in table]
+    if unknown:
+        raise ValueError(f"cannot fit {', '.join(unknown)}: valid names are {', '.join(table)}")
+    lb = np.array([table[n][0] for n in names], float)
+    ub = np.array([table[n][1] for n in names], float)
+    return lb, ub
+
+
+def _x0(names, options: FitOptions, base: SectionParams):
+    """Start vector: the paper's x0 for its model, the base parameters for the cambered one."""
+    if isinstance(base, CamberedParams):
+        full = {n: getattr(base, n) for n in names if hasattr(base, n)}
+    else:
+        full = dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
+    full.update(zip(("cl1_body", "cl2_body", "alpha0_body"), BODY_X0))
+    return np.array([full[n] for n in names], float)
+
+
+def _m_effect(make_data_residual, best, base: SectionParams, options: FitOptions) -> dict:
+    """When the fit used a smoother M than the base parameters, report what that did: the
+    rms data residual of the fitted parameters under the fit's M and under the base M."""
+    if options.M is None or options.M == base.M:
+        return {"M_used": base.M if options.M is None else options.M}
+    r_fit = make_data_residual(options)(best.x)
+    r_base = make_data_residual(replace(options, M=base.M))(best.x)
+    return {"M_used": options.M, "M_effect": {
+        "M_fit": options.M, "M_base": base.M,
+        "rms_residual_at_M_fit": float(np.sqrt(np.mean(r_fit**2))),
+        "rms_residual_at_M_base": float(np.sqrt(np.mean(r_base**2)))}}
+
+
+def _jacobian(residual, x, lb, ub):
+    """Central-difference Jacobian at x (one-sided at a bound), step 1e-4 max(|x_k|, 0.1).
+
+    The floor 0.1 matters: a purely relative step (SciPy's ``diff_step``) is 1e-14 at
+    the paper's start c_d = 0, far below the root solve's tolerance, and gives a
+    derivative that is pure round-off.
+    """
+    cols = []
+    for k in range(x.size):
+        h = 1e-4 * max(abs(x[k]), 0.1)
+        hi, lo = x.copy(), x.copy()
+        hi[k] = min(x[k] + h, ub[k])
+        lo[k] = max(x[k] - h, lb[k])
+        cols.append((residual(hi) - residual(lo)) / (hi[k] - lo[k]))
+    return np.column_stack(cols)
+
+
+def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionParams:
+    """The section record with the fitted values of its own fields (other names, such as the
+    body-lift or airframe terms, are the caller's)."""
+    own = {f.name for f in fields(base)}
+    kw = {n: float(v) for n, v in zip(names, x) if n in own}
+    if isinstance(base, AirfoilParams):
+        kw["lift_model"] = options.lift_model
+    if options.M is not None:
+        kw["M"] = float(options.M)
+    return base.replace(**kw)
+
+
+def _attach_jacobian(residual, with_jacobian, eager: bool = True):
+    """Give a residual function its implicit Jacobian: ``residual.jacobian(x)``, and with
+    ``eager`` ``residual.with_jacobian(x)``, (residual, Jacobian) from one model call, which
+    the fitting engine then evaluates at every point (least squares asks for the Jacobian
+    where it evaluated last). Not eager where the Jacobian costs more than its derivatives
+    (columns differenced by extra solves): the engine then asks for it only when needed."""
+    residual.jacobian = lambda x: with_jacobian(x)[1]
+    if eager:
+        residual.with_jacobian = with_jacobian
+
+
+def _solve(residual, names, options: FitOptions, label: str, x0):
+    """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins.
+
+    Returns (best, log, nfev, elapsed, warnings): ``warnings`` names multistart optima
+    that reach the same cost with different parameters.
+    """
+    from tqdm import tqdm
+
+    lb, ub = _bounds(names, options)
+    x0 = np.clip(np.asarray(x0, float), lb, ub)
+    starts = [x0]
+    if options.multistart > 0:
+        m = max(0, math.ceil(math.log2(options.multistart)))  # Sobol' points come in powers of 2
+        from scipy.stats import qmc
+
+        sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random_base2(m)[: options.multistart]
+        starts += list(lb + sob * (ub - lb))
+    counter = {"n": 0}
+    bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)  # None: off unless a terminal
+
+    both = getattr(residual, "with_jacobian", None)
+    last = {}  # the Jacobian of the last residual evaluated, and where
+
+    def fun(x):
+        counter["n"] += 1
+        bar.update(1)
+        if both is None:
+            return residual(x)
+        # the implicit derivatives come with the residual from one model call: least_squares asks
+        # for the Jacobian where it last evaluated the residual (after an accepted step), so most
+        # calls need it, and the derivatives cost less than a second call (benchmarks/README.md)
+        r, J = both(np.array(x, float))
+        last["x"], last["J"] = np.array(x, float), J
+        return r
+
+    analytic = getattr(residual, "jacobian", None)
+
+    def jac(x):
+        x = np.array(x, float)
+        if both is not None and "x" in last and np.array_equal(last["x"], x):
+            return last["J"]
+        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
+            counter["n"] += 1
+            bar.update(1)
+            return analytic(x)
+        return _jacobian(fun, x, lb, ub)
+
+    def run(x_start, max_nfev):
+        from scipy import optimize
+
+        r = optimize.least_squares(fun, x_start, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
+                                   max_nfev=max_nfev, xtol=1e-10, ftol=1e-10, gtol=1e-10)
+        log.append({"x0": np.array(x_start), "x": r.x.copy(), "cost": float(r.cost), "nfev": int(r.nfev),
+                    "status": int(r.status), "stage": "polish" if max_nfev == options.max_nfev else "screen"})
+        bar.set_postfix(best_cost=f"{min(e['cost'] for e in log):.3g}")
+        return r
+
+    log = []
+    warns = []
+    t0 = time.perf_counter()
+    try:
+        if len(starts) == 1:
+            best = run(starts[0], options.max_nfev)
+        else:
+            # global stage: short runs from every start, then polish the two best to convergence
+            screened = sorted((run(s, SCREEN_NFEV) for s in starts), key=lambda r: r.cost)
+            polished = sorted((run(r.x, options.max_nfev) for r in screened[:2]), key=lambda r: r.cost)
+            best = polished[0]
+            other = polished[1]
+            # same cost: within 1%, or both at round-off level (a perfect fit)
+            if other.cost <= best.cost * (1 + SAME_COST_RTOL) + 1e-12 * best.fun.size:
+                span = np.maximum(np.abs(best.x), [max(_scale_of(n), 1e-12) for n in names])
+                differ = [n for n, a, b, sc in zip(names, best.x, other.x, span) if abs(a - b) > DIFFERENT_X_RTOL * sc]
+                if differ:
+                    warns.append(f"two multistart optima reach the same residual (costs {best.cost:.4g} and "
+                                 f"{other.cost:.4g}) with different {', '.join(differ)}: the data do not "
+                                 "determine them")
+        # best.jac is _jacobian at best.x: least_squares evaluates jac after every
+        # accepted step and returns it unchanged for the default linear loss
+    finally:
+        bar.close()
+    return best, log, counter["n"], time.perf_counter() - t0, warns
+
+
+def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
+    """Assemble the FitResult: identifiability, parameters at a bound, evaluation limit.
+
+    With the population prior, ``residuals``, ``cost`` and the identifiability report are
+    the data's alone (the prior's pseudo-residuals and cost go to ``extra["prior"]``), so
+    the report says what the data determine; a parameter they leave free is named, and
+    said to be held near the base by the prior.
+    """
+    lb, ub = _bounds(names, options)
+    params = _params_from(best.x, names, base, options)
+    residuals, jac = best.fun, best.jac
+    if "prior" in extra:
+        k = len(extra["prior"]["names"])
+        residuals, jac = best.fun[:-k], best.jac[:-k]
+        extra["prior"]["pseudo_residuals"] = [float(v) for v in best.fun[-k:]]
+        extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
+    idf = _identifiability(names, best.x, jac, residuals)
+    if "prior" in extra:
+        # the posterior: the prior rows were weighted by w = sigma_d * scale (the population's
+        # residual level) in the fit; rescaled by sqrt(s2) / w they carry the population
+        # covariance Sigma against this fit's residual variance s2, so that
+        # cov = s2 (J_d^T J_d + s2 Sigma^-1)^-1 = (J_d^T J_d / s2 + Sigma^-1)^-1 (a direction
+        # the data leave free keeps the prior's spread, whatever the data's noise)
+        w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
+        s2 = float(residuals @ residuals) / max(residuals.size - len(names), 1)
+        prior_rows = best.jac[-k:] * (math.sqrt(s2) / w)
+        post = _identifiability(names, best.x, np.vstack([jac, prior_rows]), residuals, dof_rows=residuals.size)
+        held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
+        # one line for what the prior holds; the data's own word on parameters it does not
+        # cover; the posterior's correlations (its std errors are in the report)
+        determined = ("poorly determined", "not determined")
+        own = tuple(w for w in idf.warnings if any(d in w for d in determined)
+                    and w.split(" ", 1)[0] not in extra["prior"]["names"])
+        idf_warns = own + tuple(w for w in post.warnings if not any(d in w for d in determined)) + (
+            (f"the data alone leave {', '.join(held)} (nearly) free: the population prior holds them near the "
+             "base set's values (data-only std errors in the report)",) if held else ())
+        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
+                      effective_parameters=_effective_parameters(jac, best.jac))
+    tol = 1e-6 * (ub - lb)
+    at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
+    warns = list(warns)
+    for n, v, lo, hi in zip(names, best.x, lb, ub):
+        if n in at_bound:
+            side, b = ("lower", lo) if abs(v - lo) <= abs(v - hi) else ("upper", hi)
+            shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
+            warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
+                         "its value is the bound's; suspect the data, the geometry or the model")
+    hit = int(best.status) == 0
+    if hit:
+        limit = getattr(best, "nfev_limit", options.max_nfev)
+        warns.append(f"the fit stopped at its evaluation limit ({limit}) before converging")
+    cost = 0.5 * float(residuals @ residuals)
+    return FitResult(params, air, names, best.x, residuals, cost, nfev, n_points, elapsed,
+                     bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
+
+
+def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
+    """Stages 2 and 3 of the continuation in M, at the base M (docs/identification.md).
+
+    2. Trust-region least squares on the EXACT residual at the base M, with the Jacobian
+       of the smooth M_SMOOTH model: at M = 50 the stall folds make the residual jump by
+       small amounts as parameters move (root-branch switches), so finite differences at
+       M = 50 are dominated by the jumps, while the smooth Jacobian still points downhill.
+    3. Nelder-Mead on the exact cost from there: it needs no derivatives, so the jumps do
+       not stall it where the smooth Jacobian stops being a good model (measured: the
+       paper's case generated at M = 50 is then recovered to 2e-13).
+
+    Returns an OptimizeResult-like object (x, fun, jac, cost, status, success, message,
+    nfev) whose ``jac`` is the smooth model's Jacobian at the optimum (used for the
+    identifiability report) and the number of residual evaluations spent.
+    """
+    lb, ub = _bounds(names, options)
+    exact = make_residual(replace(options, M=base_M))
+    smooth = make_residual(replace(options, M=M_SMOOTH))
+    count = {"n": 0}
+
+    def f(x):
+        count["n"] += 1
+        return exact(x)
+
+    analytic = getattr(smooth, "jacobian", None)
+
+    def jac(x):
+        if analytic is not None:
+            count["n"] += 1
+            return analytic(np.array(x, float))
+        count["n"] += 2 * len(x)
+        return _jacobian(smooth, np.array(x, float), lb, ub)
+
+    from scipy import optimize  # imported where used: `propmap wrench` and `loads` start without it
+
+    r2 = optimize.least_squares(f, x_smooth, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
+                                max_nfev=options.max_nfev, xtol=1e-12, ftol=1e-12, gtol=1e-12)
+    scale = np.maximum(np.abs(r2.x), 0.1)
+    z0 = r2.x / scale
+    simplex = np.vstack([z0, z0 + 0.02 * np.eye(z0.size)])
+    simplex = np.clip(simplex, lb / scale, ub / scale)
+    max_fev = 200 * len(names)
+    nm = optimize.minimize(lambda z: 0.5 * float(np.sum(f(z * scale) ** 2)), z0, method="Nelder-Mead",
+                           bounds=list(zip(lb / scale, ub / scale)),
+                           options={"xatol": 1e-12, "fatol": 1e-30, "maxfev": max_fev, "adaptive": True,
+                                    "initial_simplex": simplex})
+    x = np.clip(nm.x * scale, lb, ub) if nm.fun <= r2.cost else r2.x
+    fun = exact(x)
+    J = analytic(x) if analytic is not None else _jacobian(smooth, x, lb, ub)
+    stopped = nm.nfev >= max_fev and nm.fun < r2.cost
+    if stopped:
+        # with noisy data Nelder-Mead's 1e-12 tolerance is not reached in max_fev evaluations;
+        # it has converged for every purpose when its simplex is within NM_STAT_TOL of the
+        # parameters' standard errors (the data's scatter, not the optimiser, sets the error)
+        spread = np.ptp(nm.final_simplex[0], axis=0) * scale
+        s2 = float(fun @ fun) / max(fun.size - len(names), 1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            std = np.sqrt(np.clip(np.diag(s2 * np.linalg.pinv(J.T @ J)), 0, None))
+        stopped = not np.all(spread <= NM_STAT_TOL * std)
+    result = optimize.OptimizeResult(
+        x=x, fun=fun, jac=J, cost=0.5 * float(fun @ fun), nfev_limit=max_fev,
+        status=0 if stopped else 2, success=not stopped, nfev=r2.nfev + nm.nfev,
+        message=("Nelder-Mead stopped at its evaluation limit" if stopped else
+                 f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then Nelder-Mead at M = {base_M:g}"))
+    return result, count["n"] + len(names) * 2 + 1
+
+
+def _fit_with_continuation(make_residual, names, base, options, label, x0):
+    """Solve; for the paper's model with a base M above M_SMOOTH and no M given, continue in M.
+
+    Stage 1 fits at M_SMOOTH (no root folds: a smooth objective), then
+    :func:`_polish_at_base_M` fits at the base M from that optimum.
+
+    Returns (best, log, nfev, elapsed, warnings, extra).
+    """
+    if isinstance(base, AirfoilParams) and options.M is None and base.M > M_SMOOTH and options.lift_model == "sigmoid":
+        smooth = replace(options, M=M_SMOOTH)
+        b1, log, n1, t1, w1 = _solve(make_residual(smooth), names, smooth, label, x0)
+        t0 = time.perf_counter()
+        best, n2 = _polish_at_base_M(make_residual, names, options, base.M, b1.x, label)
+        elapsed = t1 + time.perf_counter() - t0
+        log.append({"x0": b1.x.copy(), "x": best.x.copy(), "cost": best.cost, "nfev": n2, "status": best.status,
+                    "stage": f"continuation to M = {base.M:g}"})
+        extra = {"M_continuation": {"M_first": M_SMOOTH, "M_final": base.M,
+                                    "rms_residual_first": float(np.sqrt(np.mean(b1.fun ** 2))),
+                                    "x_first": [float(v) for v in b1.x],
+                                    "jacobian": f"identifiability from the M = {M_SMOOTH:g} model's Jacobian"}}
+        return best, log, n1 + n2, elapsed, w1, extra
+    best, log, nfev, elapsed, warns = _solve(make_residual(options), names, options, label, x0)
+    return best, log, nfev, elapsed, warns, {}
+
+
+def _prior_stats(names, base, options):
+    """(sel, mu, L, population) of the population prior on ``names`` (the indices it covers,
+    the base values there, the Cholesky factor of its covariance, the statistics), or None
+    without a prior (the paper's model, ``options.prior`` off, no name covered)."""
+    if not (options.prior and isinstance(base, CamberedParams)):
+        return None
+    from ..io.calibration import population
+
+    pop = options.population or population()
+    sel = [k for k, n in enumerate(names) if n in pop["names"]]
+    if not sel:
+        return None
+    idx = [pop["names"].index(names[k]) for k in sel]
+    cov = np.asarray(pop["covariance"], float)[np.ix_(idx, idx)]
+    return sel, np.array([getattr(base, names[k]) for k in sel]), np.linalg.cholesky(cov), pop
+
+
+def _with_prior(make_residual, names, base, options, scale: float = 1.0):
+    """Wrap ``make_residual`` with the population prior's pseudo-residuals (cambered model).
+
+    ``scale`` converts the prior's dimensionless weight sigma_d (the median rms residual of
+    fit_loads' normalised residuals) into the residuals' unit: 1 for loads, the weight [N]
+    for level flight (whose residuals are forces).
+    """
+    stats = _prior_stats(names, base, options)
+    if stats is None:
+        return make_residual, None
+    sel, mu, chol, pop = stats
+    Linv = np.linalg.inv(chol)
+    weight = float(pop["sigma_data"]) * scale
+
+    E = np.zeros((len(sel), len(names)))
+    E[np.arange(len(sel)), sel] = 1.0
+    prior_jac = weight * (Linv @ E)  # the prior rows are linear in x
+
+    def make(opts):
+        data = make_residual(opts)
+
+        def residual(x, opts=opts):
+            prior_rows = weight * (Linv @ (np.asarray(x)[sel] - mu))
+            return np.concatenate([data(x, opts), prior_rows])
+
+        if hasattr(data, "with_jacobian"):
+            def with_jacobian(x):
+                r, J = data.with_jacobian(x)
+                return np.concatenate([r, weight * (Linv @ (np.asarray(x)[sel] - mu))]), np.vstack([J, prior_jac])
+
+            _attach_jacobian(residual, with_jacobian)
+        elif hasattr(data, "jacobian"):
+            residual.jacobian = lambda x: np.vstack([data.jacobian(x), prior_jac])
+        return residual
+
+    info = {"names": [names[k] for k in sel], "mean": [float(m) for m in mu], "sigma_data": float(pop["sigma_data"]),
+            "scale": scale, "source": pop["source"]}
+    return make, info
+
+
+def _fit_along_directions(make_data, names, base, options, k):
+    """Fit the ``k`` directions the data determine best against the population prior
+    (identify/directions.py; None: those whose eigenvalue is at least DATA_OVER_PRIOR, at
+    least one): x = mu + B c, c in prior standard deviations, the residual the data's and the
+    prior's (whose rows are w U_k c: the others' deviations stay 0).
+
+    Returns (best, log, nfev, elapsed, warnings, extra) as :func:`_fit_with_continuation`;
+    ``best`` in the parameters' space (x, the residual and Jacobian with the prior's rows;
+    the directions' optimum clipped to the bounds), ``extra["directions"]`` the directions'
+    coefficients and loadings for :func:`_directions_report`, ``extra["outside"]`` the names
+    that the optimum put outside their range (the caller then fits every name instead).
+    """
+    import time
+
+    from scipy import optimize
+
+    from .directions import DATA_OVER_PRIOR, leading_directions
+
+    _, mu, chol, pop = _prior_stats(names, base, options)  # (on every name: _direction_count)
+    weight = float(pop["sigma_data"])
+    lb, ub = _bounds(names, options)
+    data = make_data(options)
+    count = {"n": 0}
+
+    def data_jac(x):
+        count["n"] += 1
+        if hasattr(data, "with_jacobian"):
+            return data.with_jacobian(x)
+        count["n"] += 2 * len(x)
+        return data(x), _jacobian(data, x, lb, ub)
+
+    t0 = time.perf_counter()
+    every, lam = leading_directions(data_jac(mu)[1], chol, weight, len(names))
+    if k is None:
+        k = max(1, int(np.sum(lam >= DATA_OVER_PRIOR)))
+    B = every[:, :k]
+
+    def x_of(c):
+        return np.clip(mu + B @ c, lb, ub)
+
+    last = {}
+
+    def fun(c):  # the residual with its Jacobian from one model call (least_squares asks for both at each x)
+        last["c"], (last["r"], last["J"]) = np.array(c, float), data_jac(x_of(c))
+        return np.concatenate([last["r"], weight * c])
+
+    def jac(c):
+        J = last["J"] if np.array_equal(last.get("c"), c) else data_jac(x_of(c))[1]
+        return np.vstack([J @ B, weight * np.eye(k)])
+
+    sol = optimize.least_squares(fun, np.zeros(k), jac=jac, method="trf", x_scale="jac", max_nfev=options.max_nfev,
+                                 xtol=1e-12, ftol=1e-12, gtol=1e-12)
+    x = x_of(sol.x)
+    r, J = (last["r"], last["J"]) if np.array_equal(last.get("c"), sol.x) else data_jac(x)
+    prior_rows = weight * np.linalg.solve(chol, x - mu)  # as _with_prior's, w L^-1 (x - mu)
+    best = optimize.OptimizeResult(x=x, fun=np.concatenate([r, prior_rows]),
+                                   jac=np.vstack([J, weight * np.linalg.inv(chol)]), status=sol.status,
+                                   success=sol.success, message=f"least squares along {k} directions: {sol.message}")
+    elapsed = time.perf_counter() - t0
+    unclipped = mu + B @ sol.x
+    extra = {"outside": [(n, v) for n, v, lo, hi in zip(names, unclipped, lb, ub) if not lo <= v <= hi],
+             "directions": {"count": k, "c": sol.x, "loadings": B, "eigenvalues": lam, "base": mu,
+                            "jac_c": J @ B, "prior_std": np.sqrt(np.sum(chol**2, axis=1)), "held": every[:, k:]}}
+    log = [{"x0": mu, "x": x, "cost": 0.5 * float(r @ r), "nfev": int(sol.nfev)}]
+    return best, log, count["n"], elapsed, [], extra
+
+
+def _directions_report(result: FitResult) -> FitResult:
+    """The identifiability of a fit along directions: the k free directions' posterior
+    (covariance (J_c^T J_c / s^2 + I)^-1, c in prior standard deviations) and the data's
+    alone (s^2 (J_c^T J_c)^-1), in ``extra["directions"]``. The parameters' posterior
+    covariance is B cov_c B^T + H H^T, B the free directions' loadings and H the held ones'
+    (each a prior standard deviation: the data do not move them, the prior's spread stays);
+    they have no data-only figure (the data determine the directions, not a parameter alone:
+    ``std_error_data`` None), ``singular_values`` are the free directions' Jacobian's and
+    ``poorly_determined`` is empty (a direction the data know less well than the prior is
+    named in the warnings). Angles in the JSON loadings and base are in degrees, as
+    ``fitted``."""
+    d = result.extra["directions"]
+    k, B, Jc, c = d["count"], d["loadings"], d["jac_c"], d["c"]
+    dnames = tuple(f"direction_{i + 1}" for i in range(k))
+    r = result.residuals
+    dof = max(r.size - k, 1)
+    s2 = float(r @ r) / dof
+    own = _identifiability(dnames, c, Jc, r)
+    post = _identifiability(dnames, c, np.vstack([Jc, math.sqrt(s2) * np.eye(k)]), r, dof_rows=r.size)
+
+    def to_x(idf, held):
+        cov_c = idf.correlation * np.outer(idf.std_error, idf.std_error)
+        cov = B @ cov_c @ B.T + held @ held.T
+        return cov, np.sqrt(np.clip(np.diag(cov), 0, None))
+
+    cov, std = to_x(post, d["held"])
+    from scipy import stats
+
+    t = stats.t.ppf(0.975, dof)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corr = np.where(np.outer(std, std) > 0, cov / np.outer(std, std), 0.0)
+    np.fill_diagonal(corr, 1.0)
+    weight = result.extra["prior"]["sigma_data"] * result.extra["prior"]["scale"]
+    eff = float(np.trace(Jc.T @ Jc @ np.linalg.inv(Jc.T @ Jc + weight**2 * np.eye(k))))
+    weak = [n for n, sd in zip(dnames, own.std_error) if not sd < 1.0]  # less known from the data than the prior
+    warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
+                  f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
+                  for n, sd in zip(dnames, own.std_error) if n in weak)
+    idf = Identifiability(result.names, std, np.column_stack([result.x - t * std, result.x + t * std]), corr,
+                          own.singular_values, (), warns, std_error_data=None, effective_parameters=eff)
+    extra = dict(result.extra)
+    deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")
+    extra["directions"] = {
+        "count": k, "names": list(result.names), "units": {n: "deg" for n in result.names if _is_angle(n)},
+        "coefficients": [float(v) for v in c],
+        "std_error": [float(v) for v in post.std_error], "std_error_data_only": [float(v) for v in own.std_error],
+        "loadings": [[float(v) for v in B[:, i] * deg] for i in range(k)],
+        "eigenvalues": [float(v) for v in d["eigenvalues"]],
+        "base": [float(v) for v in d["base"] * deg],
+        "prior_std": [float(v) for v in d["prior_std"] * deg],
+    }
+    return replace(result, identifiability=idf, extra=extra)

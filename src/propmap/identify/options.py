@@ -1,0 +1,209 @@
+"""What a fit frees, within which bounds and how: parameter names, ranges, scales and
+:class:`FitOptions` (docs/identification.md).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.airfoil import CamberedParams, SectionParams
+from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
+
+
+#: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
+X0_PAPER = (2 * math.pi, 2.0, 0.0, 0.47)
+#: default bounds for (cl1, cl2, cd, alpha0 [rad]); wide but physical
+BOUNDS = {"cl1": (0.5, 15.0), "cl2": (0.0, 6.0), "cd": (0.0, 10.0), "alpha0": (math.radians(3), math.radians(60))}
+#: default bounds of the cambered polar's parameters (SI, angles in rad): the range of
+#: low-Reynolds-number propeller sections, wide enough that the catalogue fits end inside
+CAMBERED_BOUNDS = {
+    "cl_alpha": (2.0, 9.0), "alpha_L0": (math.radians(-15), math.radians(5)), "cl_max": (0.4, 2.5),
+    "cl_min": (-1.5, -0.05), "cd_min": (0.002, 0.2), "cd2": (0.0, 2.0), "cl_cdmin": (-0.5, 1.5),
+    "cd90": (0.5, 3.0), "re_exp": (-1.5, 0.5), "re_exp_lift": (-0.3, 0.8), "re_exp_stall": (-0.5, 1.0),
+    "stall_delay": (0.0, 15.0), "alpha_L0_re": (math.radians(-4), math.radians(4)), "M": (5.0, 100.0),
+}
+#: natural size of each cambered parameter: a standard error above POOR_REL_STD of
+#: max(|estimate|, this) is "poorly determined" (parameters whose value may be ~0)
+CAMBERED_SCALE = {"alpha_L0": math.radians(2), "cl_cdmin": 0.3, "re_exp": 0.3, "re_exp_lift": 0.1,
+                  "re_exp_stall": 0.1, "stall_delay": 1.0, "alpha_L0_re": math.radians(1), "cd2": 0.05}
+#: cambered parameters fitted by default from data with advance-ratio sweeps / static only /
+#: sweeps at several Reynolds numbers (docs/identification.md has the measured choice)
+CAMBERED_FIT = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2")
+CAMBERED_FIT_RE = CAMBERED_FIT + ("re_exp_lift", "re_exp", "alpha_L0_re")
+#: static-only data without the prior: two parameters (a static run has two or three degrees
+#: of freedom; fitted freely, more parameters chase them)
+CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
+#: a hover collective sweep (static points at several collectives) spans the angles of
+#: attack: the lift slope and the drag polar are identified too
+CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
+#: sweeps at this many distinct rotation rates (or more) let the fit estimate the
+#: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
+MIN_RATES_FOR_RE = 3
+#: ... as does a static run over this ratio of rotation rates (a UIUC static run spans 2-8x):
+#: with the static run and the lowest sweep, leave-one-family-out on both UIUC volumes
+#: (docs/identification.md) gave a held-out median of 3.9% (vol. 1) and 5.0% (vol. 2) with the
+#: Reynolds terms fitted, 3.5% and 7.7% with them held at the generic set's
+STATIC_RPM_SPAN = 1.5
+BODY_BOUNDS = {"cl1_body": (0.0, 10.0), "cl2_body": (0.0, 5.0), "alpha0_body": (math.radians(3), math.radians(60))}
+BODY_X0 = (0.0, 0.0, 0.47)
+#: bounds of the rotor options (RotorOptions) and of the airframe drag (core/body.py) when fitted
+ROTOR_BOUNDS = {"collective": (math.radians(-15), math.radians(15)), "flap_compliance": (0.0, 50.0)}
+AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag_area_z": (0.0, 0.05),
+                   "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05),
+                   "rotor_interference": (0.0, 3.0)}
+#: parameters that are angles [rad], reported in degrees
+ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
+
+
+def param_names(lift_model: str) -> tuple[str, ...]:
+    """Fitted parameters of the paper's model: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift."""
+    return ("cl1", "cl2", "cd", "alpha0") if lift_model == "sigmoid" else ("cl2", "cd")
+
+
+def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
+    """The parameters fitted: ``options.names`` (checked), else the default for
+    ``data_kind`` "static", "collective" (a static collective sweep), "few_rates" or "rates"."""
+    if options.names is not None:
+        return _check_names(options.names, base, options)
+    if isinstance(base, CamberedParams):
+        if data_kind == "collective":
+            return CAMBERED_FIT_COLLECTIVE
+        if data_kind == "static" and not options.prior:
+            return CAMBERED_FIT_STATIC
+        return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
+    return param_names(options.lift_model)
+
+
+def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) -> tuple[str, ...]:
+    """``names`` as a tuple, refused unless each is a parameter of the base's model (the
+    paper's: cl1, cl2, cd, alpha0; the cambered: CAMBERED_BOUNDS and any field given
+    bounds in ``options.bounds``), a rotor option (ROTOR_BOUNDS) or one of ``extra`` (the
+    kind of fit's own terms, e.g. the airframe's in a flight fit), given once.
+
+    Raises
+    ------
+    ValueError
+        Not a sequence of str, empty, a name given twice, a name the model does not
+        have (a paper-model name with a cambered base, ``alpha0``, included), or ``M``
+        fitted while ``options.M`` fixes it.
+    """
+    if isinstance(names, str) or not isinstance(names, (tuple, list)) or not all(isinstance(n, str) for n in names):
+        raise ValueError(f"names must be a tuple of parameter names (str), got {names!r:.60}")
+    if not names:
+        raise ValueError("names is empty: give the parameters to fit, or None for the default")
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise ValueError(f"cannot fit {', '.join(twice)} twice: give each parameter once")
+    if isinstance(base, CamberedParams):
+        valid = (*CAMBERED_BOUNDS, *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
+        model = "the cambered model"
+    else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
+        valid, model = tuple(BOUNDS), "the paper's model"
+    valid = (*valid, *ROTOR_BOUNDS, *extra)
+    unknown = [n for n in names if n not in valid]
+    if unknown:
+        hint = " (body-lift terms: body_lift=True, --body-lift)" if any(n in BODY_BOUNDS for n in unknown) else ""
+        raise ValueError(f"cannot fit {', '.join(unknown)[:120]} with {model}: its parameters are "
+                         f"{', '.join(valid)}{hint}")
+    if options.M is not None and "M" in names:
+        raise ValueError(f"M is fixed at {options.M:g} by the fit's options (--M) and cannot also be fitted: "
+                         "drop one")
+    return tuple(names)
+
+
+def _is_angle(name: str) -> bool:
+    return name in ANGLES
+
+
+@dataclass(frozen=True)
+class FitOptions:
+    """Options of a fit.
+
+    Parameters
+    ----------
+    x0 : tuple
+        Paper's model: start (cl1, cl2, cd, alpha0 [rad]); the paper's (2 pi, 2, 0, 0.47)
+        by default. For ``lift_model="sincos"`` only cl2 and cd are used. The cambered
+        model starts from the base parameters instead.
+    bounds : dict, optional
+        name -> (low, high); defaults :data:`BOUNDS` / :data:`CAMBERED_BOUNDS`.
+    M : float, optional
+        Sigmoid sharpness used while fitting (None: that of the base parameters). Paper's
+        model, None: when the base M exceeds M_SMOOTH (30), the fit runs at M = 30 first
+        (no root-branch jumps, a smooth objective) and then continues at the base M from
+        that optimum (continuation in M).
+    names : tuple of str, optional
+        Parameters to fit. Default: :func:`param_names` for the paper's model; for the
+        cambered model :data:`CAMBERED_FIT_RE` when the data are static only or contain
+        sweeps at three or more rotation rates, else :data:`CAMBERED_FIT` (Reynolds terms
+        kept at the base values), and :data:`CAMBERED_FIT_STATIC` for static data without
+        the prior (docs/identification.md gives the measurements behind this rule).
+    prior : bool
+        Cambered model: add the population prior, pseudo-residuals
+        sigma_d L^-1 (x - x_base) with L L^T the covariance of the parameters fitted to
+        each catalogue propeller and sigma_d their median rms residual
+        (io.calibration.population). The fit then moves a parameter away from the base
+        only as far as the data warrant (a maximum a posteriori estimate; along the data's
+        leading directions only, ``directions``); on sparse data (a static run) this
+        measured better than a free fit (docs/identification.md).
+    population : dict, optional
+        The prior's statistics (``names``, ``covariance``, ``sigma_data``, ``source``);
+        default the shipped ones (io.calibration.population). Validation passes the
+        statistics of the catalogue without the family of the propeller it predicts.
+    lift_model : {"sigmoid", "sincos"}
+    multistart : int
+        Extra starts from a scrambled Sobol sequence inside the bounds (0: x0 only). With
+        starts, every start gets a short screening run (SCREEN_NFEV evaluations) and the
+        two best are polished to convergence.
+    body_lift : bool
+        Level flight only: append the body-lift term of Sec. III-A (needs the vehicle's
+        ``body_area``). The model without body lift is fitted first and the full fit
+        starts from its optimum with zero body lift, so the residual can only shrink.
+    max_nfev : int
+        Residual evaluations allowed per start.
+    seed : int
+    progress : bool
+        Show a tqdm progress bar (on a terminal).
+    discretization : Discretization
+    directions : int, optional
+        :func:`fit_loads` only. Cambered model under the prior, ``names`` not given, data
+        other than a collective sweep: fit only this many of the
+        parameter directions the data determine best against the prior
+        (identify/directions.py), the others held at the base values; 0: every name under
+        the prior. None (default): 3 (STATIC_DIRECTIONS) for a static run, those the data
+        know DATA_OVER_PRIOR (10) times better than the prior for sweeps at one rotation
+        rate, 0 for sweeps at two or more (the measurements: docs/identification.md).
+    jacobian : {"implicit", "differences"}
+        The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
+        (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
+        docs/solver.md) where it can give them for every section name (uniform inflow, rigid
+        blades, no node-changing name such as re_ref), the terms outside the rotor model
+        (the centre of mass, the body-lift closed form) by central differences; else, and
+        always with ``"differences"``, central differences of the solver.
+    """
+
+    x0: tuple = X0_PAPER
+    bounds: dict | None = None
+    M: float | None = None
+    names: tuple | None = None
+    prior: bool = True
+    population: dict | None = None
+    lift_model: str = "sigmoid"
+    multistart: int = 0
+    body_lift: bool = False
+    max_nfev: int = 200
+    seed: int = 0
+    progress: bool = False
+    discretization: Discretization = DEFAULT_DISCRETIZATION
+    jacobian: str = "implicit"
+    directions: int | None = None
+
+    def __post_init__(self) -> None:
+        if self.jacobian not in ("implicit", "differences"):
+            raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")
+        d = self.directions
+        if d is not None and (isinstance(d, bool) or not isinstance(d, (int, np.integer)) or d < 0):
+            raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")

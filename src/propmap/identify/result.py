@@ -1,0 +1,281 @@
+"""A fit's result and its identifiability report: standard errors, correlations, what the
+data do not determine (docs/identification.md).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..core.airfoil import Air, SectionParams
+from .options import CAMBERED_SCALE, _is_angle
+
+
+POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined
+
+
+@dataclass(frozen=True)
+class Identifiability:
+    """Local identifiability at the optimum, from the residual Jacobian J.
+
+    J is the residual Jacobian at the optimum (the model's implicit derivatives where it
+    gives them, else central differences of the solver: FitOptions.jacobian). Covariance
+    s^2 (J^T J)^-1 (from the
+    SVD of J, no cut-off) with s^2 = |r|^2 / (N - p); 95% intervals use Student's t with
+    N - p degrees of freedom. A parameter is "poorly determined" when its std error
+    exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
+    for cambered parameters whose value may be near zero: CAMBERED_SCALE), i.e. its 95%
+    interval is wider than about +-20%; "not determined" when the std error is not finite.
+    ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
+    respect to relative parameter changes.
+
+    With the population prior, ``std_error``, ``ci95`` and ``correlation`` are the
+    posterior's, covariance (J_d^T J_d / s^2 + Sigma^-1)^-1 with Sigma the population
+    covariance (what data and prior together determine; a direction the data leave free
+    keeps the population's spread), and ``std_error_data`` holds the data's alone beside them (None without a
+    prior, and in a fit along directions, FitResult.extra["directions"]); ``poorly_determined``
+    is still judged on the data alone. ``effective_parameters``
+    is how many parameter directions the data determine against the prior, the trace of the
+    posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
+    the prior's): p without a prior, fewer as the prior holds directions the data leave free
+    (the effective degrees of freedom of a ridge fit: Hastie, Tibshirani & Friedman, The
+    Elements of Statistical Learning, 2nd ed. 2009, eq 3.50).
+    """
+
+    names: tuple[str, ...]
+    std_error: np.ndarray
+    ci95: np.ndarray
+    correlation: np.ndarray
+    singular_values: np.ndarray
+    poorly_determined: tuple[str, ...]
+    warnings: tuple[str, ...]
+    std_error_data: np.ndarray | None = None
+    effective_parameters: float | None = None
+
+    def to_dict(self) -> dict:
+        """JSON-ready form (angles in rad; a non-finite std error is null)."""
+        def num(v):
+            return float(v) if np.isfinite(v) else None
+
+        return {
+            "std_error": {n: num(v) for n, v in zip(self.names, self.std_error)},
+            "std_error_data_only": (None if self.std_error_data is None
+                                    else {n: num(v) for n, v in zip(self.names, self.std_error_data)}),
+            "ci95": {n: [num(a), num(b)] for n, (a, b) in zip(self.names, self.ci95)},
+            "effective_parameters": (None if self.effective_parameters is None
+                                     else float(self.effective_parameters)),
+            "correlation": [[float(c) for c in row] for row in self.correlation],
+            "singular_values": [float(s) for s in self.singular_values],
+            "poorly_determined": list(self.poorly_determined),
+            "warnings": list(self.warnings),
+        }
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """Result of :func:`fit_level_flight`, :func:`fit_loads` or :func:`fit_loads_joint`.
+
+    Attributes
+    ----------
+    params : AirfoilParams or CamberedParams
+        The fitted parameters (with the M and lift model used in the fit).
+    air : Air
+    names : tuple of str
+        Fitted parameter names (angles in rad); body-lift names appended if used.
+    x : ndarray
+        Fitted values, in ``names`` order.
+    residuals : ndarray
+        Residual per condition at the optimum (level flight: N; loads: dimensionless).
+    cost : float
+        0.5 |residuals|^2.
+    nfev : int
+        Residual evaluations over all starts (each one batched model call).
+    n_model_points : int
+        Rotor operating points evaluated over the whole fit.
+    elapsed_s : float
+    success : bool
+    message : str
+    starts : list of dict
+        Every start: x0, final x, cost, nfev.
+    identifiability : Identifiability
+    at_bound : tuple of str
+        Fitted parameters that ended on (within 1e-6 of the range of) a bound: the data
+        pull them outside the bounds, and their value is the bound's, not the data's.
+    hit_max_nfev : bool
+        The best start stopped at its evaluation limit, not at convergence.
+    warnings : tuple of str
+        Everything the report must say about the fit itself (bounds, evaluation limit,
+        multistart optima that disagree), beside the identifiability warnings.
+    extra : dict
+        Problem-specific information (body-lift verdict, held-out errors, ...).
+    """
+
+    params: SectionParams
+    air: Air
+    names: tuple[str, ...]
+    x: np.ndarray
+    residuals: np.ndarray
+    cost: float
+    nfev: int
+    n_model_points: int
+    elapsed_s: float
+    success: bool
+    message: str
+    starts: list
+    identifiability: Identifiability
+    at_bound: tuple = ()
+    hit_max_nfev: bool = False
+    warnings: tuple = ()
+    extra: dict = field(default_factory=dict)
+
+    def to_dict(self) -> dict:
+        """The JSON report (angles in degrees, as labelled in ``units``)."""
+        from ..io.params_file import params_to_dict
+
+        return {
+            "params": params_to_dict(self.params, self.air),
+            "fitted": {n: (math.degrees(v) if _is_angle(n) else float(v)) for n, v in zip(self.names, self.x)},
+            "units": {n: "deg" for n in self.names if _is_angle(n)},
+            "cost": self.cost, "rms_residual": float(np.sqrt(np.mean(self.residuals**2))),
+            "residuals": [float(r) for r in self.residuals],
+            "nfev": self.nfev, "n_model_points": self.n_model_points, "elapsed_s": self.elapsed_s,
+            "success": self.success, "message": self.message,
+            "at_bound": list(self.at_bound), "hit_max_nfev": self.hit_max_nfev, "warnings": list(self.warnings),
+            "starts": [{k: ([float(a) for a in v] if isinstance(v, np.ndarray) else v) for k, v in s.items()}
+                       for s in self.starts],
+            "identifiability": self.identifiability.to_dict(),
+            **self.extra,
+        }
+
+    def report_text(self, *, max_residuals: int = 20) -> str:
+        """Plain-text report: estimates, 95% intervals, correlations, warnings.
+
+        At most ``max_residuals`` residuals are listed (the largest in magnitude), with
+        their count; the JSON report has them all.
+        """
+        idf = self.identifiability
+        data_only = idf.std_error_data is not None
+        lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"
+                 + (f"{'data only':>12}" if data_only else "")]
+        for k, n in enumerate(self.names):
+            deg = _is_angle(n)
+            f = math.degrees if deg else float
+            lo, hi = idf.ci95[k]
+            flag = " (at bound)" if n in self.at_bound else ""
+            extra = f"{f(idf.std_error_data[k]):>12.3g}" if data_only else ""
+            lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
+                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{extra}{flag}")
+        dirs = self.extra.get("directions")
+        if dirs:
+            lines.append(f"std err and interval: the posterior, the data's along the {dirs['count']} free directions "
+                         "and the population's spread along the held ones (the data determine the directions, not a "
+                         "parameter alone: their own figures are the directions', below)")
+        elif data_only:
+            lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
+                         "the data's alone")
+        if dirs:
+            lines.append(f"free: {dirs['count']} directions of the {len(self.names)} parameters, those the data "
+                         "determine best against the population prior\n  (the others held at the base set); "
+                         "coefficient +- std error (data only) in prior standard deviations,\n  and the parameter "
+                         "changes per unit (the four largest against each parameter's population spread):")
+            for i, (cf, sd, sdd, load) in enumerate(zip(dirs["coefficients"], dirs["std_error"],
+                                                        dirs["std_error_data_only"], dirs["loadings"])):
+                big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
+                unit = dirs["units"]
+                terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if self.names[j] in unit else ''}"
+                                  for j in big)
+                lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd:.3f} ({sdd:.3f}): {terms}")
+            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {dirs['count']} free directions "
+                         f"(effective number; the other {len(self.names) - dirs['count']} held at the base set)")
+        elif idf.effective_parameters is not None:
+            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
+                         "directions (effective number; the prior holds the others near the base set)")
+        if len(self.names) > 1:
+            lines.append("correlation: " + "; ".join(
+                f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
+                for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
+        label = "the free directions' Jacobian" if dirs else "scaled Jacobian"
+        lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
+        level = self.extra.get("kind") in ("level_flight", "flight")
+        unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
+        r = self.residuals
+        order = np.argsort(-np.abs(r))[:max_residuals]
+        shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
+        lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in order))
+        u = " N" if level else " [-]"
+        lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {self.nfev} evaluations "
+                     f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
+        eff = self.extra.get("M_effect")
+        if eff:
+            lines.append(f"stall-blend smoothing: fitted with M = {eff['M_fit']:g}; the same parameters give rms "
+                         f"residual {eff['rms_residual_at_M_fit']:.4g} at M = {eff['M_fit']:g} and "
+                         f"{eff['rms_residual_at_M_base']:.4g} at M = {eff['M_base']:g} (the base value)")
+        cont = self.extra.get("M_continuation")
+        if cont:
+            lines.append(f"continuation in M: fitted at M = {cont['M_first']:g} (rms residual "
+                         f"{cont['rms_residual_first']:.4g}{u}), then at M = {cont['M_final']:g} from there")
+        lines.extend(f"WARNING: {w}" for w in self.warnings)
+        lines.extend(f"WARNING: {w}" for w in idf.warnings)
+        return "\n".join(lines)
+
+
+def _scale_of(name: str) -> float:
+    return CAMBERED_SCALE.get(name, 0.0)
+
+
+def _identifiability(names, x, jac, residuals, dof_rows: int | None = None) -> Identifiability:
+    """Identifiability from ``jac`` (rows: residuals, prior rows included for the posterior);
+    the residual variance from ``residuals`` with ``dof_rows`` (default: jac's rows) - p
+    degrees of freedom."""
+    N, p = jac.shape
+    dof = max((N if dof_rows is None else dof_rows) - p, 1)
+    s2 = float(residuals @ residuals) / dof
+    # covariance from the SVD of J with no cut-off: a weak direction gets a large
+    # variance (a pseudo-inverse with a cut-off would report it as perfectly known)
+    _, sig, Vt = np.linalg.svd(jac, full_matrices=False)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inv_sig2 = np.where(sig > 0, 1.0 / sig**2, np.inf)
+        cov = s2 * (Vt.T * inv_sig2) @ Vt
+        std = np.sqrt(np.clip(np.diag(cov), 0, None))
+        if sig.size < p:  # fewer residuals than parameters: the missing directions are free
+            std = np.full(p, np.inf)
+        std = np.where(np.isnan(std), np.inf, std)
+        from scipy import stats
+
+        t = stats.t.ppf(0.975, dof)
+        ci = np.column_stack([x - t * std, x + t * std])
+        corr = cov / np.outer(std, std)
+    corr = np.where(np.isfinite(corr), corr, 0.0)
+    np.fill_diagonal(corr, 1.0)
+    scale = np.maximum(np.abs(x), 0.1)
+    sv = np.linalg.svd(jac * scale, compute_uv=False)
+    poor, warns = [], []
+    for k, n in enumerate(names):
+        if not np.isfinite(std[k]):
+            poor.append(n)
+            warns.append(f"{n} is not determined by the data: its std error is not finite (no residual "
+                         "changes with it at the optimum)")
+            continue
+        rel = std[k] / max(abs(x[k]), _scale_of(n), 1e-12)
+        if rel > POOR_REL_STD:
+            poor.append(n)
+            shown = f"{math.degrees(std[k]):.3g} deg" if _is_angle(n) else f"{std[k]:.3g}"
+            warns.append(f"{n} is poorly determined: std error {shown} is {100 * rel:.0f}% of its "
+                         f"{'estimate' if abs(x[k]) >= _scale_of(n) else 'natural scale'}")
+    for i in range(p):
+        for j in range(i + 1, p):
+            if abs(corr[i, j]) > 0.95:
+                warns.append(f"{names[i]} and {names[j]} are strongly correlated ({corr[i, j]:+.2f}): "
+                             "the data constrain mainly a combination of them")
+    if sv.size and sv[-1] < 1e-6 * sv[0]:
+        warns.append("the Jacobian is nearly singular: some direction in parameter space is not identifiable")
+    return Identifiability(tuple(names), std, ci, corr, sv, tuple(poor), tuple(warns))
+
+
+def _effective_parameters(jac_data, jac_all) -> float:
+    """tr[J_d^T J_d (J^T J)^+] with J = jac_all (data and prior rows): the directions the data
+    determine against the prior (Identifiability)."""
+    A = jac_data.T @ jac_data
+    return float(np.trace(A @ np.linalg.pinv(jac_all.T @ jac_all)))
