@@ -109,7 +109,8 @@ def test_fit_residuals_carry_their_jacobian_from_one_call(prop):
     one model call, equal to ``residual(x)`` and ``residual.jacobian(x)`` (a loads fit with the
     population prior's rows; UIUC apce_8x6, Brandt & Selig)."""
     from propmap.identify import FitOptions, loads_from_catalogue
-    from propmap.identify.fit import CAMBERED_FIT, _load_residual, _with_prior
+    from propmap.identify.engine import _with_prior
+    from propmap.identify.fit import CAMBERED_FIT, _load_residual
 
     data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
     base = pm.generic_params()

@@ -158,7 +158,7 @@ def test_params_file_carries_a_fitted_factor(tmp_path, generic):
 
 
 def test_fit_flight_accepts_the_factor_as_a_parameter():
-    from propmap.identify.fit import AIRFRAME_BOUNDS
+    from propmap.identify.options import AIRFRAME_BOUNDS
     from propmap.identify.flight import AIRFRAME_NAMES
 
     assert "rotor_interference" in AIRFRAME_NAMES and AIRFRAME_BOUNDS["rotor_interference"] == (0.0, 3.0)

@@ -59,7 +59,7 @@ def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, b
     """
     from ..core.airfoil import CamberedParams
     from ..identify import FitOptions
-    from ..identify.fit import _check_names
+    from ..identify.options import _check_names
 
     if M is not None and not (math.isfinite(M) and 0 < M <= M_MAX):
         raise InputError(f"--M must be finite and in (0, {M_MAX:g}] 1/rad, got {M!r}")

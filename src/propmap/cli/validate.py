@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 
 import click
 
@@ -109,12 +107,3 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
         print_table(v)
         if fig is not None:
             click.echo(f"figure: {fig}")
-
-
-def write_json(path: Path, obj) -> None:
-    """Write ``obj`` as JSON atomically."""
-    from ..io.atomic import atomic_write
-
-    with atomic_write(path, "w") as fh:
-        json.dump(obj, fh, indent=1, allow_nan=False)
-        fh.write("\n")

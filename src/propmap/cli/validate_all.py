@@ -279,7 +279,6 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
               "units": "rms errors as fractions of the propeller's measured static CT / CP"}
     if out_dir is not None:
         from ..plots import plot_cases, plot_cv_summary
-        from .validate import write_json
 
         out_dir.mkdir(parents=True, exist_ok=True)
         write_json(out_dir / "validation.json", report)
@@ -293,3 +292,14 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
         if out_dir is not None:
             click.echo(f"\nwrote {out_dir / 'validation.json'}, validation_per_propeller.csv, cross_validation.png, "
                        "published_cases.png")
+
+
+def write_json(path: Path, obj) -> None:
+    """Write ``obj`` as JSON atomically."""
+    import json
+
+    from ..io.atomic import atomic_write
+
+    with atomic_write(path, "w") as fh:
+        json.dump(obj, fh, indent=1, allow_nan=False)
+        fh.write("\n")

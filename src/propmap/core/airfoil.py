@@ -522,13 +522,27 @@ def sigmoid_blend(alpha, alpha0: float, M: float):
     return 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
 
 
+def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
+    """Section-model code and constant vector ``pk`` of the element (layout in _physics)."""
+    from . import _physics as ph  # as in _section_cd_cl: imported where used
+
+    pk = np.zeros(ph.N_PK)
+    if isinstance(params, CamberedParams):
+        p = params
+        pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,
+                  p.cl_min / p.cl_alpha)
+        return ph.CAMBERED, pk
+    p = params
+    pk[:6] = (p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0)
+    return (ph.GILL_SINCOS if p.lift_model == "sincos" else ph.GILL_SIGMOID), pk
+
+
 def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
     """C_L, C_D of ``params`` at angle of attack ``alpha`` through the solver's own element.
 
     With U_T = 1, U_P = 0 the element's outputs are exactly C_L and C_D (theta = alpha).
     """
     from . import _physics as ph
-    from .solver import _model_constants
 
     alpha, reynolds, mach = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (alpha, reynolds, mach)))
     model, pk = _model_constants(params)

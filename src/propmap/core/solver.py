@@ -17,7 +17,7 @@ import numpy as np
 
 from . import _kernel
 from . import _physics as ph
-from .airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
+from .airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams, _model_constants
 from .flapping import flap_damping, flapping
 from .geometry import Propeller
 from .states import BAND_ARRAY, K_WINDMILL, STATES
@@ -103,19 +103,6 @@ class _Nodes:
     sinpsi: np.ndarray
     cospsi: np.ndarray
     chord_r3: np.ndarray
-
-
-def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
-    """Section-model code and constant vector ``pk`` of the element (layout in _physics)."""
-    pk = np.zeros(ph.N_PK)
-    if isinstance(params, CamberedParams):
-        p = params
-        pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,
-                  p.cl_min / p.cl_alpha)
-        return ph.CAMBERED, pk
-    p = params
-    pk[:6] = (p.cl1, p.cl2, p.cd, p.alpha0, p.M, p.cd0)
-    return (ph.GILL_SINCOS if p.lift_model == "sincos" else ph.GILL_SIGMOID), pk
 
 
 @functools.lru_cache(maxsize=64)
