@@ -35,7 +35,7 @@ import numpy as np
 
 import propmap as pm
 from propmap.core import _kernel
-from propmap.core.solver import _prepared
+from propmap.core.nodes import _prepared
 from propmap.io.atomic import atomic_write
 
 BIN = Path(sys.executable).parent

@@ -39,7 +39,7 @@ import numpy as np
 import propmap as pm
 from propmap.core import _kernel
 from propmap.core._reference import solve_reference
-from propmap.core.solver import _nodes
+from propmap.core.nodes import _nodes
 from propmap.io.atomic import atomic_write
 
 RPM = 2 * math.pi / 60

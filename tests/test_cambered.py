@@ -13,7 +13,7 @@ import pytest
 
 import propmap as pm
 from propmap.core._physics import loss_factor_numpy
-from propmap.core.solver import _nodes
+from propmap.core.nodes import _nodes
 
 from .conftest import RPM
 

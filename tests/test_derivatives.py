@@ -410,7 +410,7 @@ def test_still_air_slopes_from_the_same_roots(prop):
     """At V = 0 the slopes along the three rays come from the roots already solved (the root at
     rest does not depend on the incidence): equal to separate solves along each ray, for both
     section models, in a batch that mixes points at rest with moving ones (0 there)."""
-    from propmap.core.solver import STILL_AIR
+    from propmap.core.derivatives import STILL_AIR
     from propmap.core.vector import still_air_slopes
 
     om = np.array([600.0, 800.0, 1000.0, 900.0])
@@ -496,7 +496,8 @@ def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
     from dataclasses import fields
 
     from propmap.core.airfoil import RECORD_META
-    from propmap.core.solver import NODE_FIELDS, _nodes
+    from propmap.core.derivatives import NODE_FIELDS
+    from propmap.core.nodes import _nodes
 
     base = _nodes(prop, 24, 8, params.air, params)
     for f in fields(params):
@@ -570,7 +571,7 @@ def test_implicit_derivatives_match_tightly_converged_differences(prop, params, 
     U_P passes through 0 on some annulus, less: docs/solver.md)."""
     from propmap.core import _kernel as K
     from propmap.core._reference import solve_reference
-    from propmap.core.solver import _nodes
+    from propmap.core.nodes import _nodes
 
     monkeypatch.setattr(K, "XTOL", 1e-15)  # the reference reads them at run time; the kernel's are compiled
     monkeypatch.setattr(K, "FTOL", 0.0)

@@ -8,7 +8,7 @@ import pytest
 
 import propmap as pm
 from propmap.core.hover import HoverModel
-from propmap.core.solver import _nodes
+from propmap.core.nodes import _nodes
 
 from .conftest import RPM
 
@@ -263,7 +263,7 @@ def test_a_single_point_equals_the_same_point_in_a_batch(apc8x6, apc_params):
     shape ()."""
     from dataclasses import fields
 
-    from propmap.core.solver import _LOADS_FIELDS, RotorLoads
+    from propmap.core.loads import _LOADS_FIELDS, RotorLoads
 
     om, V, b = 8000 * RPM, np.array([0.0, 10.0, 10.0, 6.0]), np.radians([0.0, 0.0, 60.0, 175.0])
     batch = pm.rotor_loads(apc8x6, apc_params, om, V, b)

@@ -15,7 +15,8 @@ import pytest
 import propmap as pm
 from propmap.core._physics import element, momentum_thrust
 from propmap.core._reference import solve_reference
-from propmap.core.solver import _model_constants, _nodes
+from propmap.core.airfoil import _model_constants
+from propmap.core.nodes import _nodes
 
 from .conftest import RPM
 

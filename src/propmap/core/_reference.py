@@ -19,13 +19,14 @@ from ._physics import (CAMBERED, cambered_annulus, element, loss_factor_numpy, m
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
     """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,)).
 
-    ``nodes`` from ``solver._nodes`` for the same parameters ``p`` and ``air``. The paper's
+    ``nodes`` from ``nodes._nodes`` for the same parameters ``p`` and ``air``. The paper's
     uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping).
     """
     if p.inflow != "uniform" or p.flap_compliance > 0:
         raise ValueError("the NumPy reference solves the uniform inflow of rigid blades only")
     from .airfoil import Air
-    from .solver import _cambered_args, _model_constants
+    from .airfoil import _model_constants
+    from .nodes import _cambered_args
 
     air = air or Air()
     model, pk = _model_constants(p)

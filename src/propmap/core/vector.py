@@ -14,7 +14,8 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, STILL_AIR, Discretization, RotorLoads, check_model_args, rotor_loads
+from .derivatives import STILL_AIR
+from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
 

@@ -1,0 +1,199 @@
+"""Implicit derivatives of the rotor loads (docs/solver.md, Derivatives): which inputs and
+section parameters :func:`propmap.rotor_loads` differentiates, their constants, and the
+call of the sensitivity kernel (core/_sensitivity.py) at the converged roots.
+"""
+
+from __future__ import annotations
+
+from dataclasses import fields
+from dataclasses import replace as dc_replace
+
+import numpy as np
+
+from . import _physics as ph
+from .airfoil import RECORD_META, SectionParams, _model_constants
+from .nodes import _cambered_args, _nodes
+
+
+#: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
+DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
+
+
+DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
+
+
+#: the air density, differentiated besides the inputs and the section parameters
+RHO = "rho"
+
+
+#: internal (core/vector.py): at the points with V = 0, the loads' slopes in the velocity along three rays
+#: from the same roots (:func:`_still_air_jacobian`); 0 elsewhere
+STILL_AIR = "_still_air"
+
+
+#: the loads odd in V sin(beta), whose slope at rest is the edgewise one
+_ODD_LOADS = ("drag", "rolling_moment")
+
+
+def differentiable(params: SectionParams, names) -> bool:
+    """Whether :func:`rotor_loads` gives implicit derivatives of ``params``'s loads with respect
+    to every name in ``names`` (what the fits ask before using them).
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+    names : sequence of str
+        Inputs (:data:`DERIVATIVE_INPUTS`), ``"rho"`` or section parameters' names.
+
+    Returns
+    -------
+    bool
+        False for a linear inflow model or flapping blades, or a name that is not a numeric
+        field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text);
+        the rotation rates' range is the caller's to check (>= 0.1 rad/s).
+    """
+    if params.inflow != "uniform" or params.flap_compliance > 0:
+        return False
+    own = {f.name for f in fields(params)} - set(RECORD_META)
+    return all(n in DERIVATIVE_INPUTS or n == RHO
+               or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
+
+
+def _derivative_inputs(derivatives, params) -> tuple:
+    """The inputs and section parameters ``rotor_loads(derivatives=...)`` asks for, checked
+    (() for none)."""
+    if derivatives is False or derivatives is None:
+        return ()
+    if derivatives is True:
+        wrt = DERIVATIVE_INPUTS[:3]
+    else:
+        if isinstance(derivatives, str) or not hasattr(derivatives, "__iter__"):
+            raise ValueError(f"derivatives must be True, False or a sequence of input or parameter names "
+                             f"({', '.join(DERIVATIVE_INPUTS)}, or a field of the parameter set), "
+                             f"got {derivatives!r:.60}")
+        wrt = tuple(dict.fromkeys(derivatives))
+        own = ({f.name for f in fields(params)} - set(RECORD_META)) | {RHO, STILL_AIR}
+        bad = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in own]
+        if bad:
+            raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
+                             f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
+    if params.inflow != "uniform" or params.flap_compliance > 0:
+        raise ValueError("derivatives are implemented for the uniform inflow and rigid blades (the paper's rotor); "
+                         f"this set has inflow={params.inflow!r}, flap_compliance={params.flap_compliance:g}")
+    return wrt
+
+
+#: the parameter set's fields that _nodes reads (the blade angle, the Reynolds reference, the Blasius
+#: factor, the loss switches): not differentiable as section constants (tests/test_derivatives.py checks
+#: that every other numeric field leaves the nodes unchanged)
+NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
+
+
+#: fields that enter neither the element's nor the annulus' constants: refused as derivatives
+NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance")
+
+
+#: a section parameter's step is _sensitivity.ONE_SIDED of max(|value|, PARAM_FLOOR)
+PARAM_FLOOR = 0.01
+
+
+def _parameter_constants(names, params, air):
+    """(pk, cam, step) of each section parameter in ``names``: the element and annulus
+    constants at the parameter's value + its step (- its step where + leaves the parameter's
+    range), and that step (either sign), for the kernel's one-sided differences.
+
+    Raises
+    ------
+    ValueError
+        A parameter that is not a number, one that changes the blade's nodes (the
+        Reynolds reference, the Blasius factor, the loss switches; ``collective`` is the
+        input of that name) rather than the section's constants, ``flap_compliance``
+        (flapping is not differentiated), or one that admits no step within its range.
+    """
+    from ._sensitivity import ONE_SIDED
+
+    n = len(names)
+    pks = np.empty((n, ph.N_PK))
+    cams = np.empty((n, 8))
+    step = np.empty(n)
+    for k, name in enumerate(names):
+        if name == "flap_compliance":  # enters neither pk nor cam: its difference would say 0
+            raise ValueError("derivatives with respect to flap_compliance are not supported: flapping is not "
+                             "differentiated")
+        if name in NOT_CONSTANTS:
+            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
+                             "not the section's constants (for the blade angle, use 'collective')")
+        x = getattr(params, name)
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")
+        h = ONE_SIDED * max(abs(float(x)), PARAM_FLOOR)
+        for dx in (h, -h):
+            try:
+                stepped = params.replace(**{name: float(x) + dx})
+            except ValueError:  # beyond the parameter's range: the other side
+                continue
+            break
+        else:
+            raise ValueError(f"derivatives: {name} = {x!r} admits no step within its range")
+        pks[k] = _model_constants(stepped)[1]
+        cams[k] = _cambered_args(stepped, air)
+        step[k] = (float(x) + dx) - float(x)  # the step as represented
+    return pks, cams, step
+
+
+def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+              discretization, loads) -> dict:
+    """{(load, input or parameter): derivative} at every point (flat arrays), from the kernel
+    (core/_sensitivity.py)."""
+    from . import _sensitivity
+
+    if STILL_AIR in wrt:
+        others = tuple(w for w in wrt if w != STILL_AIR)
+        out = _jacobian(others, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+                        discretization, loads) if others else {}
+        return out | _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air,
+                                         propeller, discretization, loads)
+    inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
+    names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w != RHO]
+    scp = nd.sc
+    hrho = 0.0
+    if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
+        rho_step = air.rho + _sensitivity.ONE_SIDED * air.rho
+        hrho = rho_step - air.rho  # the step as represented
+        scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=rho_step),
+                     params).sc
+    n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
+    pks, cams, step = _parameter_constants(names, params, air)
+    raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names) + (RHO in wrt), om.size))
+    om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
+    _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
+                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pks, cams,
+                               np.all(cams == cam, axis=1), step, np.ascontiguousarray(scp, dtype=float), hrho, raw)
+    col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
+    if RHO in wrt:
+        col[RHO] = n_in + len(names)
+        for q, a in enumerate(loads):  # cfac and mfac scale with rho: L / rho at the same root
+            raw[q, col[RHO]] += a / air.rho
+    return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
+
+
+def _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+                        discretization, loads) -> dict:
+    """{(load, STILL_AIR): slope}: at the points with V = 0 the loads' slopes in the velocity, from the
+    kernel's one-sided airspeed derivatives along three rays at the same roots (at rest the root does
+    not depend on the incidence): edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that
+    this one-sided slope is the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and
+    descent (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes). 0 at
+    the points with V > 0."""
+    rest = np.flatnonzero(V == 0.0)
+    k = rest.size
+    slopes = np.zeros((len(DERIVATIVE_LOADS), om.size))
+    if k:
+        idx = np.tile(rest, 3)
+        rays = np.repeat([0.0, 0.5 * np.pi, np.pi], k)  # climb, edgewise, descent
+        d = _jacobian(("airspeed",), om[idx], np.zeros(3 * k), rays, coll[idx], v[idx], converged[idx], nd, model,
+                      pk, cam, empirical, params, air, propeller, discretization, tuple(a[idx] for a in loads))
+        for q, load in enumerate(DERIVATIVE_LOADS):
+            a = d[(load, "airspeed")].reshape(3, k)
+            slopes[q, rest] = a[1] if load in _ODD_LOADS else 0.5 * (a[0] - a[2])  # dV_c = -dV along beta = pi
+    return {(load, STILL_AIR): slopes[q] for q, load in enumerate(DERIVATIVE_LOADS)}
