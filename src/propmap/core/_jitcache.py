@@ -1,13 +1,15 @@
-"""The compiled kernel's disk cache, keyed on every module it compiles in.
+"""The compiled kernels' disk cache, keyed on every module each kernel compiles in.
 
-numba stamps a cached function with a hash of the file that defines it only. The kernel
-(``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py``, so an edit
-there would leave numba serving a kernel compiled from the old physics. The locators
-below serve ``_kernel.py`` alone and stamp its cache with a SHA-256 over all three files'
-contents, so that editing any of them recompiles. They are registered ahead of numba's
-own locators (numba.core.caching, an internal API); if that API is not found,
-:data:`CACHE` is False and the kernel is compiled in every process instead of risking a
-stale one.
+numba stamps a cached function with a hash of the file that defines it only. The solver
+kernel (``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py``, and the
+sensitivity kernel (``_sensitivity.py``) from those and ``_kernel.py``, so an edit there would
+leave numba serving a kernel compiled from the old physics (module constants such as the
+Reynolds clamp are compiled in). The locators below serve these two files alone and stamp
+each one's cache with a SHA-256 over the contents of every file it compiles in
+(:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`), so that editing any of them
+recompiles. They are registered ahead of numba's own locators (numba.core.caching, an
+internal API); if that API is not found, :data:`CACHE` is False and the kernels are
+compiled in every process instead of risking a stale one.
 """
 
 from __future__ import annotations
@@ -16,11 +18,15 @@ import hashlib
 import os
 from pathlib import Path
 
-__all__ = ["CACHE", "KERNEL_SOURCES", "sources_stamp"]
+__all__ = ["CACHE", "KERNEL_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
-#: the files whose code the compiled kernel contains
+#: the files whose code the compiled solver kernel contains
 KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_physics.py", _HERE / "_fastmath.py")
+#: the files whose code the compiled sensitivity kernel contains
+SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", *KERNEL_SOURCES)
+#: the cached files, each with the sources its stamp covers
+_STAMPED = {os.path.realpath(paths[0]): paths for paths in (KERNEL_SOURCES, SENSITIVITY_SOURCES)}
 
 
 def sources_stamp(paths=KERNEL_SOURCES) -> bytes:
@@ -40,18 +46,21 @@ def _install() -> bool:
         impl._locator_classes  # noqa: B018 (the attribute must exist)
     except (ImportError, AttributeError):
         return False
-    kernel = os.path.realpath(KERNEL_SOURCES[0])
 
     def make(base):
         class KernelLocator(base):
             def get_source_stamp(self):
-                return sources_stamp()
+                return sources_stamp(self._propmap_sources)
 
             @classmethod
             def from_function(cls, py_func, py_file):
-                if os.path.realpath(py_file) != kernel:
+                sources = _STAMPED.get(os.path.realpath(py_file))
+                if sources is None:
                     return None
-                return super().from_function(py_func, py_file)
+                locator = super().from_function(py_func, py_file)
+                if locator is not None:
+                    locator._propmap_sources = sources
+                return locator
 
         KernelLocator.__name__ = f"PropmapKernel{base.__name__}"
         return KernelLocator
