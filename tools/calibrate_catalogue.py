@@ -1,6 +1,7 @@
 """Rebuild src/propmap/data/calibration.json from the bundled UIUC measurements.
 
-Run from the repository root (about 40 minutes on a 2-core machine, two worker processes):
+Run from the repository root (141 s on the 2-core machine, two worker processes, 2026-11-23;
+about 40 minutes before the fits had implicit Jacobians):
 
     .venv/bin/python tools/calibrate_catalogue.py [--jobs 2]
 
