@@ -39,7 +39,8 @@ import numpy as np
 
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry
-from ..io.readers import MAX_FILE_BYTES, RPM_MAX, decode_input_text, parse_number, read_input_bytes, show_path
+from ..io.inputs import MAX_FILE_BYTES, decode_input_text, parse_number, read_input_bytes, show_path
+from ..io.readers import RPM_MAX
 from ..vehicle import Vehicle
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",

@@ -2,8 +2,8 @@
 
 from .catalogue import CatalogueEntry, catalogue, get_entry, load_propeller, resolve_propeller
 from .params_file import ParamsFileError, read_params, resolve_params, write_params
-from .readers import (GeometryFileError, MeasurementFileError, read_apc_pe0, read_geometry, read_uiuc_geometry,
-                      read_uiuc_static, read_uiuc_sweep)
+from .geometry_files import GeometryFileError, read_apc_pe0, read_geometry, read_uiuc_geometry
+from .readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
 __all__ = [
     "CatalogueEntry", "catalogue", "get_entry", "load_propeller", "resolve_propeller",

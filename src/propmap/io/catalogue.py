@@ -15,7 +15,8 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller
-from .readers import StaticRun, Sweep, read_apc_pe0, read_geometry, read_uiuc_geometry, read_uiuc_static, read_uiuc_sweep
+from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
+from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
 __all__ = ["CatalogueEntry", "catalogue", "get_entry", "load_propeller", "resolve_propeller"]
 

@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .readers import MAX_FILE_BYTES, decode_input_text, read_input_bytes, show_path
+from .inputs import MAX_FILE_BYTES, decode_input_text, read_input_bytes, show_path
 
 __all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
 

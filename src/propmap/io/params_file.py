@@ -90,7 +90,7 @@ import tomli_w
 from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, PRESETS, RECORD_META, Air, AirfoilParams,
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
-from .readers import show_path
+from .inputs import show_path
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",

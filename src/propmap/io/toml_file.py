@@ -10,7 +10,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from .readers import MAX_SMALL_FILE_BYTES, decode_input_text, read_input_bytes, show_path
+from .inputs import MAX_SMALL_FILE_BYTES, decode_input_text, read_input_bytes, show_path
 
 __all__ = ["load_toml"]
 

@@ -55,7 +55,7 @@ import numpy as np
 
 from ..core.geometry import INCH, Propeller
 from ..core.body import BodyDrag
-from ..io.readers import show_path
+from ..io.inputs import show_path
 from ..io.toml_file import load_toml
 from .model import Rotor, Vehicle
 
@@ -191,7 +191,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                n_blades: int | None = None) -> Propeller:
     """The rotor's propeller: a file relative to ``folder`` (or absolute), else a catalogue name."""
     from ..io.catalogue import catalogue, load_propeller
-    from ..io.readers import read_geometry
+    from ..io.geometry_files import read_geometry
 
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "

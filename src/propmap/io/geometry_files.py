@@ -1,0 +1,345 @@
+"""Readers for propeller geometry files (io/readers.py has the measurement files).
+
+* UIUC Propeller Data Site (Brandt & Selig, AIAA 2011-1255) geometry ``r/R c/R beta``.
+* APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915).
+
+Every reader raises :class:`GeometryFileError` (a ValueError) with a one-line message naming
+the file, the line where known and, for a value out of range, the valid range: UIUC r/R in
+(0, 1], c/R in [0, 1], beta in [-90, 90] deg; APC RADIUS in [0.25, 50] in, BLADES an integer
+in [1, 100], TWIST in [-90, 90] deg, every table value finite; a diameter from the name in
+[0.5, 100] in. No other exception escapes for any file content, and none modifies its input.
+
+Diameters in file names: UIUC names are ``<family>_<D>x<P>``, D and P in inches, except
+the families whose sizes are in millimetres (:data:`MM_FAMILIES`: ``ef``, ``kpf``, ``pl``,
+``vp``, e.g. ``ef_130x70`` is 130 mm = 5.118 in). :func:`read_uiuc_geometry` reads those
+as millimetres, says so in ``Propeller.source`` and warns (``UserWarning``).
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import re
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from ..core.geometry import INCH, Propeller
+from .inputs import (_check_column, _check_number, _clip, _line_of, _meta, _read_table, _read_text, parse_number,
+                     show_path)
+
+
+class GeometryFileError(ValueError):
+    """A geometry file is malformed; the message names the file and the problem."""
+
+
+_SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the size from a file name "
+              "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and vp families)")
+#: UIUC families whose file names give the diameter and pitch in millimetres
+MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
+#: plausible diameters derived from a file name [in]
+NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
+_NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII)
+
+
+def _size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
+    """(diameter, pitch, unit, family) from ``<family>_<D>x<P>``; unit ``"in"``, or ``"mm"`` for MM_FAMILIES."""
+    m = _NAME_RE.search(name)
+    if not m:
+        return None, None, "in", ""
+    family = name[: m.start()].rstrip("_").split("_")[-1]
+    return float(m["D"]), float(m["P"]), ("mm" if family.lower() in MM_FAMILIES else "in"), family
+
+
+def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int = 2,
+                       name: str | None = None, source: str = "") -> Propeller:
+    """Read a UIUC geometry file (columns ``r/R c/R beta``, beta in degrees).
+
+    Parameters
+    ----------
+    path : str or Path
+    diameter_in : float, optional
+        Diameter [in], finite and > 0. If omitted it is taken from a UIUC-style name
+        ``<fam>_<D>x<P>_geom.txt``: D in inches, except the families of
+        :data:`MM_FAMILIES` (``ef``, ``kpf``, ``pl``, ``vp``), whose names give millimetres
+        (``ef_130x70`` is 5.118 in): the reader then says so in ``Propeller.source`` and
+        warns. A diameter from the name must lie in [0.5, 100] in.
+    n_blades : int
+        Blade count (UIUC vol. 1 propellers are 2-bladed).
+    name, source : str, optional
+
+    Returns
+    -------
+    Propeller
+
+    Raises
+    ------
+    GeometryFileError
+        Not a readable regular file (or over 16 MiB), missing columns, non-numeric or
+        non-finite values, r/R outside (0, 1], c/R outside [0, 1], beta outside [-90, 90]
+        deg, radii not strictly increasing, fewer than 2 stations, a bad ``diameter_in``
+        or ``n_blades``, or no diameter given or plausibly derivable from the name (the
+        message suggests ``--diameter-in``); each message names the file and the line.
+
+    Warns
+    -----
+    UserWarning
+        The diameter was read in millimetres from the name; or the blade angles look like
+        radians (every one below 1.6, and read as radians they make a near-constant pitch
+        r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
+        small, nearly untwisted angles in degrees (a collective given separately) do not
+        warn.
+    """
+    text = _read_text(path, GeometryFileError)
+    return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
+
+
+def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source) -> Propeller:
+    where = show_path(path)
+    table = _read_table(path, text, ["r/R", "c/R", "beta"], GeometryFileError)
+    _check_column(table, 0, "r/R (station radius / tip radius)", 0.0, 1.0, path, GeometryFileError, lo_open=True)
+    _check_column(table, 1, "c/R", 0.0, 1.0, path, GeometryFileError)
+    _check_column(table, 2, "beta", -90.0, 90.0, path, GeometryFileError, unit="deg")
+    data = table.data
+    stem = path.name.replace("_geom.txt", "")
+    D_name, P_name, unit, family = _size_from_name(stem)
+    note = ""
+    if diameter_in is None:
+        if D_name is None:
+            raise GeometryFileError(f"{where}: diameter unknown; {_SIZE_HINT}")
+        lo, hi = NAME_DIAMETER_RANGE_IN
+        diameter_in = D_name / 25.4 if unit == "mm" else D_name
+        if not (lo <= diameter_in <= hi):
+            raise GeometryFileError(
+                f"{where}: diameter {D_name:g} {unit} from the file name is not plausible (a diameter from a name "
+                f"must be in [{lo:g}, {hi:g}] in); {_SIZE_HINT}")
+        if unit == "mm":
+            note = (f"diameter {D_name:g} mm = {diameter_in:.4g} in from the file name (UIUC family "
+                    f"{family!r} gives sizes in millimetres)")
+            warnings.warn(f"{where}: {note}; if that is wrong, {_SIZE_HINT}", UserWarning,
+                          stacklevel=3)
+    else:
+        _check_number(diameter_in, "diameter_in", GeometryFileError, where)
+        try:
+            ok = math.isfinite(float(diameter_in)) and diameter_in > 0
+        except OverflowError:  # an int too large for a float
+            ok = False
+        if not ok:
+            raise GeometryFileError(f"{where}: diameter_in must be finite and > 0 in, got {_clip(str(diameter_in))}")
+    pitch_in = None
+    if P_name is not None:
+        pitch_in = P_name / 25.4 if unit == "mm" else P_name
+        if not (math.isfinite(pitch_in) and 0 < pitch_in <= 10 * NAME_DIAMETER_RANGE_IN[1]):
+            pitch_in = None  # catalogue information only: an implausible one is dropped
+    if _looks_like_radians(data[:, 0], data[:, 2]):
+        warnings.warn(f"{where}: every blade angle beta is below 1.6 in magnitude: the column looks like radians, "
+                      "but UIUC geometry files give degrees (read as degrees)", UserWarning, stacklevel=3)
+    R = 0.5 * float(diameter_in) * INCH
+    src = source or f"UIUC Propeller Data Site geometry file {path.name}"
+    if note:
+        src = f"{src}; {note}"
+    try:
+        return Propeller(name=name or stem, radius=R, n_blades=n_blades, r=data[:, 0] * R,
+                         chord=data[:, 1] * R, theta=np.radians(data[:, 2]),
+                         pitch=None if pitch_in is None else pitch_in * INCH, source=src)
+    except ValueError as exc:
+        raise GeometryFileError(f"{where}: {exc}") from None
+
+
+#: the coefficient of variation of r tan(beta) over 0.3-1 R below which radian-valued blade
+#: angles make a propeller's near-constant pitch (the 108 catalogue propellers: <= 0.185;
+#: an untwisted rotor: 0.32)
+RADIANS_PITCH_CV = 0.25
+
+
+def _looks_like_radians(r_over_R, beta) -> bool:
+    """True when the blade-angle column is plausibly radians (see _uiuc_geometry's warning)."""
+    if not np.all(np.abs(beta) < 1.6):
+        return False
+    outer = r_over_R >= 0.3
+    if outer.sum() < 2 or np.any(beta[outer] <= 0):
+        return False
+    q = r_over_R[outer] * np.tan(beta[outer])
+    return bool(np.std(q) < RADIANS_PITCH_CV * np.mean(q))
+
+
+#: the ranges of a PE0 file's RADIUS [in] and BLADES
+_PE0_RADIUS_IN = (0.25, 50.0)
+_PE0_MAX_BLADES = 100
+
+
+def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propeller:
+    """Read an APC PE0 geometry file (STATION [in], CHORD [in], ..., TWIST [deg]).
+
+    The blade angle is APC's TWIST column (LE-TE datum); RADIUS and BLADES come from
+    the file's summary lines.
+
+    Parameters
+    ----------
+    path : str or Path
+    name, source : str, optional
+
+    Returns
+    -------
+    Propeller
+
+    Raises
+    ------
+    GeometryFileError
+        Not a readable regular file (or over 16 MiB), no station table, a malformed or
+        non-finite table value (naming the line and column), no RADIUS or BLADES line, a
+        RADIUS that is not a number in [0.25, 50] in, BLADES not an integer in [1, 100],
+        TWIST outside [-90, 90] deg, or invalid geometry (stations not increasing or
+        beyond RADIUS, negative chord).
+    """
+    text = _read_text(path, GeometryFileError)
+    return _apc_pe0(Path(path), text, name=name, source=source)
+
+
+def _pe0_summary(text: str, key: str, where: str) -> tuple[str, int]:
+    m = re.search(rf"{key}:[ \t]*(\S*)", text)
+    if not m:
+        raise GeometryFileError(f"{where}: {key} line missing (RADIUS and BLADES are needed)")
+    return m.group(1), _line_of(text, m.start())
+
+
+def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
+    where = show_path(path)
+    rows, row_lines, header = [], [], []
+    in_table = False
+    for k, ln in enumerate(io.StringIO(text, newline=None), start=1):
+        parts = ln.split()
+        if "STATION" in parts and "TWIST" in parts:
+            in_table, header = True, parts
+            continue
+        if not in_table:
+            continue
+        vals = []
+        bad = None
+        for x in parts:
+            try:
+                vals.append(parse_number(x))
+            except ValueError:
+                bad = x
+                break
+        if bad is not None:
+            if len(parts) >= 13 and vals:  # a station row (it starts with a number) with a bad value
+                raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
+            if rows:
+                break
+            continue  # the units line under the header
+        if len(vals) >= 13:
+            for j, v in enumerate(vals):
+                if not math.isfinite(v):
+                    col = header[j][:20] if j < len(header) else "?"
+                    raise GeometryFileError(f"{where}, line {k}: column {j + 1} ({col}) is {_clip(parts[j], 40)}, "
+                                            "not a finite number")
+            rows.append(vals[:13])
+            row_lines.append(k)
+        elif rows:
+            break
+    if not rows:
+        raise GeometryFileError(f"{where}: no STATION/CHORD/.../TWIST table found")
+    r_raw, r_line = _pe0_summary(text, "RADIUS", where)
+    b_raw, b_line = _pe0_summary(text, "BLADES", where)
+    try:
+        radius_in = parse_number(r_raw)
+    except ValueError:
+        raise GeometryFileError(f"{where}, line {r_line}: RADIUS {_clip(r_raw, 40)} is not a number") from None
+    lo, hi = _PE0_RADIUS_IN
+    if not (math.isfinite(radius_in) and lo <= radius_in <= hi):
+        raise GeometryFileError(f"{where}, line {r_line}: RADIUS {_clip(r_raw, 40)} in is outside [{lo:g}, {hi:g}] in")
+    if not (b_raw.isascii() and b_raw.isdigit() and len(b_raw) <= 3 and 1 <= int(b_raw) <= _PE0_MAX_BLADES):
+        raise GeometryFileError(f"{where}, line {b_line}: BLADES {_clip(b_raw, 40)} is not an integer in "
+                                f"[1, {_PE0_MAX_BLADES}]")
+    data = np.array(rows)
+    twist = data[:, 7]
+    if np.any(np.abs(twist) > 90):
+        i = int(np.argmax(np.abs(twist) > 90))
+        raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
+    station, chord = data[:, 0], data[:, 1]
+    for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
+                                    ("CHORD", chord, (0.0, radius_in))):
+        bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise GeometryFileError(f"{where}, line {row_lines[i]}: {label} = {values[i]:g} in is outside "
+                                    f"{'(0' if label == 'STATION' else '[0'}, {radius_in:g}] in (RADIUS)")
+    if np.any(np.diff(station) <= 0):
+        i = int(np.argmax(np.diff(station) <= 0)) + 1
+        raise GeometryFileError(f"{where}, line {row_lines[i]}: STATION = {station[i]:g} in does not increase "
+                                f"(previous {station[i - 1]:g} in)")
+    R = radius_in * INCH
+    pitch = float(np.median(data[:, 2])) * INCH  # QUOTED pitch column [in]
+    try:
+        return Propeller(name=name or path.name.replace("-PERF.PE0", ""), radius=R, n_blades=int(b_raw),
+                         r=data[:, 0] * INCH, chord=data[:, 1] * INCH, theta=np.radians(twist),
+                         pitch=pitch, source=source or f"APC Propellers PE0 geometry file {path.name}")
+    except ValueError as exc:
+        raise GeometryFileError(f"{where}: {exc}") from None
+
+
+def _is_uiuc_geometry(text: str) -> bool:
+    for ln in io.StringIO(text[:65536], newline=None):
+        words = ln.split()
+        if not words or _meta(ln.rstrip("\n")):
+            continue
+        return words[0].lower() == "r/r"
+    return False
+
+
+def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
+    """Read a geometry file, choosing the reader by content (PE0 or UIUC ``r/R c/R beta``).
+
+    Parameters
+    ----------
+    path : str or Path
+    diameter_in : float, optional
+        For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
+        a different ``diameter_in`` is refused.
+    n_blades : int, optional
+        Blade count: required for a UIUC file (which does not state it); a PE0 file's
+        BLADES by default.
+
+    Returns
+    -------
+    Propeller
+
+    Raises
+    ------
+    GeometryFileError
+        As the chosen reader; also if the file is not a readable regular file or the format
+        is not recognised, or a UIUC file without ``n_blades``.
+
+    Warns
+    -----
+    UserWarning
+        As :func:`read_uiuc_geometry`.
+    """
+    path = Path(path)
+    text = _read_text(path, GeometryFileError)
+    head = text[:4000]
+    if "STATION" in head and "TWIST" in head:
+        prop = _apc_pe0(path, text, name=None, source="")
+        if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-9):
+            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:g} in, but a PE0 file gives its "
+                                    f"own radius (diameter {prop.diameter / 0.0254:g} in); diameter_in applies to "
+                                    "UIUC files")
+        if n_blades is not None and n_blades != prop.n_blades:
+            try:
+                prop = Propeller(prop.name, prop.radius, n_blades, prop.r, prop.chord, prop.theta, prop.pitch,
+                                 prop.source)
+            except ValueError as exc:
+                raise GeometryFileError(f"{show_path(path)}: {exc}") from None
+        return prop
+    if _is_uiuc_geometry(text):
+        prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
+                              name=None, source="")  # the file's own errors first
+        if n_blades is None:
+            raise GeometryFileError(f"{show_path(path)}: a UIUC geometry file (r/R c/R beta) does not state the blade "
+                                    "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
+                                    "read as 2: -26% in hover)")
+        return prop
+    raise GeometryFileError(f"{show_path(path)}: unrecognised geometry format (expected UIUC 'r/R c/R beta' or an "
+                            "APC PE0 file)")

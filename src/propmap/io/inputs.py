@@ -1,0 +1,289 @@
+"""Reading input files safely, and the whitespace tables of UIUC files.
+
+Every input file of the package (geometry and measurement files, parameter and vehicle
+TOML, identification CSVs, flight logs) is read through :func:`read_input_bytes` and
+:func:`decode_input_text`: only regular files (a directory, a device such as ``/dev/zero``,
+a pipe or a socket is refused before anything is read), at most :data:`MAX_FILE_BYTES`
+(data CSVs) or :data:`MAX_SMALL_FILE_BYTES` (geometry, UIUC measurement and TOML files),
+UTF-8 with or without a byte-order mark (UIUC and APC files also Latin-1), never UTF-16 or
+binary (NUL bytes). Errors are the caller's ValueError subclass, one line naming the file.
+"""
+
+from __future__ import annotations
+
+import codecs
+import io
+import math
+import numbers
+import os
+import re
+import stat
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+#: the largest data file (loads and level-flight CSVs) a reader accepts [bytes]
+MAX_FILE_BYTES = 200 * 1024 * 1024
+#: the largest geometry, UIUC measurement or TOML file a reader accepts [bytes]; such
+#: files are a few kB
+MAX_SMALL_FILE_BYTES = 16 * 1024 * 1024
+
+
+def show_path(path) -> str:
+    """``path`` as text for a one-line message (quoted if it holds control characters)."""
+    s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
+    return s if s.isprintable() else repr(s)
+
+
+def _clip(text: str, n: int = 60) -> str:
+    """``repr(text)`` cut to about ``n`` characters (for echoing user input in messages)."""
+    r = repr(text)
+    return r if len(r) <= n else r[: n - 5] + "...'" + f" ({len(text)} characters)"
+
+
+def _mb(n: int) -> str:
+    return f"{n / 2**20:.0f} MiB" if n >= 2**20 else f"{n} bytes"
+
+
+def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYTES) -> bytes:
+    """The content of the regular file ``path``, refusing anything else.
+
+    Parameters
+    ----------
+    path : str or PathLike
+    error : ValueError subclass
+        Raised with a one-line message naming the file.
+    limit : int
+        Largest size accepted [bytes].
+
+    Returns
+    -------
+    bytes
+
+    Raises
+    ------
+    error
+        No such file, a directory, not a regular file (a device such as ``/dev/zero``, a
+        pipe, a socket: refused before reading, so never a hang), larger than ``limit``, a
+        name the OS cannot represent, or unreadable (permissions, I/O error).
+    """
+    name = show_path(path)
+    try:
+        fspath = os.fspath(path)
+    except TypeError:
+        raise error(f"{name}: not a file path") from None
+    try:
+        st = os.stat(fspath)
+    except FileNotFoundError:
+        raise error(f"{name}: no such file") from None
+    except OSError as exc:
+        raise error(f"{name}: cannot read ({exc.strerror or type(exc).__name__})") from None
+    except ValueError:
+        raise error(f"{name}: not a valid file name (it contains a NUL character)") from None
+    _check_stat(st, name, error, limit)
+    # O_NONBLOCK: if the name was swapped for a pipe after the stat, opening it does not block
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0)
+    try:
+        fd = os.open(fspath, flags)
+    except OSError as exc:
+        raise error(f"{name}: cannot read ({exc.strerror or type(exc).__name__})") from None
+    try:
+        _check_stat(os.fstat(fd), name, error, limit)
+        with os.fdopen(fd, "rb", closefd=True) as fh:
+            fd = None
+            data = fh.read(limit + 1)
+    except OSError as exc:
+        raise error(f"{name}: cannot read ({exc.strerror or type(exc).__name__})") from None
+    finally:
+        if fd is not None:
+            os.close(fd)
+    if len(data) > limit:
+        raise error(f"{name}: larger than {_mb(limit)}, the limit for this kind of file")
+    return data
+
+
+def _check_stat(st, name: str, error, limit: int) -> None:
+    if stat.S_ISDIR(st.st_mode):
+        raise error(f"{name}: is a directory, not a file")
+    if not stat.S_ISREG(st.st_mode):
+        raise error(f"{name}: not a regular file (a device, pipe or socket); give a file")
+    if st.st_size > limit:
+        raise error(f"{name}: {_mb(st.st_size)} is larger than {_mb(limit)}, the limit for this kind of file")
+
+
+def decode_input_text(raw: bytes, path, error: type[ValueError], *, latin1: bool = False) -> str:
+    """Decode an input file: UTF-8 (a leading byte-order mark is dropped).
+
+    Parameters
+    ----------
+    raw : bytes
+    path : str or PathLike
+        Named in messages.
+    error : ValueError subclass
+    latin1 : bool
+        Fall back to Latin-1 for text that is not UTF-8 (legacy UIUC and APC files).
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    error
+        UTF-16 or UTF-32 text, bytes that are not UTF-8 (without ``latin1``; the message
+        gives the line and the byte), or NUL bytes (a binary file).
+    """
+    name = show_path(path)
+    if raw.startswith((codecs.BOM_UTF32_LE, codecs.BOM_UTF32_BE)):
+        raise error(f"{name}: UTF-32 text; save it as UTF-8")
+    if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        raise error(f"{name}: UTF-16 text; save it as UTF-8")
+    if b"\x00" in raw:
+        line = _line_of(raw, raw.index(b"\x00"))
+        raise error(f"{name}, line {line}: NUL byte: a binary file, not text")
+    skip = len(codecs.BOM_UTF8) if raw.startswith(codecs.BOM_UTF8) else 0
+    body = memoryview(raw)[skip:]  # no copy of a large file
+    try:
+        return str(body, "utf-8")
+    except UnicodeDecodeError as exc:
+        if latin1:
+            return str(body, "latin-1")
+        at = exc.start + skip
+        line = _line_of(raw, at)
+        col = at - max(raw.rfind(b"\n", 0, at), raw.rfind(b"\r", 0, at))
+        raise error(f"{name}, line {line}: byte 0x{raw[at]:02x} (byte {col} of the line) is not UTF-8; "
+                    "save the file as UTF-8") from None
+
+
+def _line_of(text, pos: int) -> int:
+    """The line number (from 1) of position ``pos`` in ``text`` (str or bytes), for LF, CRLF or CR line ends."""
+    lf, cr, crlf = ("\n", "\r", "\r\n") if isinstance(text, str) else (b"\n", b"\r", b"\r\n")
+    return text.count(lf, 0, pos) + text.count(cr, 0, pos) - text.count(crlf, 0, pos) + 1
+
+
+def parse_number(text: str) -> float:
+    """``float(text)`` for plain ASCII decimal numbers only.
+
+    Python's ``float`` also takes ``1_000`` and non-ASCII digits; a data file should not.
+    ``nan`` and ``inf`` parse (the caller refuses non-finite values with its own message).
+
+    Raises
+    ------
+    ValueError
+        Not a number.
+    """
+    s = text.strip()
+    if not s.isascii() or "_" in s:
+        raise ValueError(text)
+    return float(s)
+
+
+def _read_text(path, error, *, latin1: bool = True) -> str:
+    return decode_input_text(read_input_bytes(path, error, limit=MAX_SMALL_FILE_BYTES), path, error, latin1=latin1)
+
+
+_KEY_RE = re.compile(r"[A-Za-z][A-Za-z0-9 _./()-]*")
+
+
+_VALUE_RE = re.compile(r"[-+0-9.eE]+")
+
+
+_SEP_RE = re.compile(r"[=:]")
+
+
+def _meta(line: str) -> tuple[str, str] | None:
+    """``(key, value)`` of a ``key = value`` / ``key: value`` line with a numeric-looking value."""
+    m = _SEP_RE.search(line)
+    if not m:
+        return None
+    key, value = line[: m.start()].strip(), line[m.end():].strip()
+    if _KEY_RE.fullmatch(key) and _VALUE_RE.fullmatch(value):
+        return key, value
+    return None
+
+
+@dataclass
+class _Table:
+    data: np.ndarray  # (k, n)
+    lines: np.ndarray  # (k,) line number of each row
+    meta: dict  # key -> (raw value, line)
+
+
+def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
+    """Numeric rows of a whitespace table whose header starts with ``expected``.
+
+    Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
+    ``RPM average = 4042``) are metadata; any other line that is not numeric is an error
+    naming the file and the line. Every value must be a finite number.
+    """
+    name = show_path(path)
+    meta: dict[str, tuple[str, int]] = {}
+    want = [e.lower() for e in expected]
+    start = None
+    first = ""
+    lines = io.StringIO(text, newline=None)
+    k = 0
+    for k, ln in enumerate(lines, start=1):
+        ln = ln.rstrip("\n")
+        if not ln or ln.isspace():
+            continue
+        if not first:
+            first = ln.strip()
+        m = _meta(ln)
+        if m:
+            meta[m[0]] = (m[1], k)
+            continue
+        if [h.lower() for h in ln.split()[: len(expected)]] == want:
+            start = k
+            break
+    if start is None:
+        if not first:
+            raise error(f"{name}: empty file")
+        raise error(f"{name}: expected columns {' '.join(expected)}, found header {_clip(first)}")
+    rows, where = [], []
+    n = len(expected)
+    for k, ln in enumerate(lines, start=start + 1):
+        ln = ln.rstrip("\n")
+        if not ln or ln.isspace():
+            continue
+        m = _meta(ln)
+        if m:
+            meta[m[0]] = (m[1], k)
+            continue
+        parts = ln.split()
+        if len(parts) < n:
+            raise error(f"{name}, line {k}: expected {n} columns, found {len(parts)}")
+        vals = []
+        for j, x in enumerate(parts[:n]):
+            try:
+                v = parse_number(x)
+            except ValueError:
+                raise error(f"{name}, line {k}: non-numeric value {_clip(x, 40)} in column "
+                            f"{expected[j]}") from None
+            if not math.isfinite(v):
+                raise error(f"{name}, line {k}: non-finite value {_clip(x, 40)} in column {expected[j]}")
+            vals.append(v)
+        rows.append(vals)
+        where.append(k)
+    if not rows:
+        raise error(f"{name}: no data rows")
+    return _Table(np.array(rows, dtype=float), np.array(where), meta)
+
+
+def _check_column(table: _Table, j: int, label: str, lo: float, hi: float, path, error, *,
+                  lo_open: bool = False, unit: str = "") -> None:
+    """Refuse the first value of column ``j`` outside [lo, hi] (or (lo, hi]), naming its line."""
+    x = table.data[:, j]
+    bad = (x > hi) | ((x <= lo) if lo_open else (x < lo))
+    if bad.any():
+        i = int(np.argmax(bad))
+        rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}]{' ' + unit if unit else ''}"
+        raise error(f"{show_path(path)}, line {int(table.lines[i])}: {label} = {x[i]:g} is outside {rng}")
+
+
+def _check_number(value, label: str, error, where: str, *, integer: bool = False) -> None:
+    ok = (isinstance(value, numbers.Integral) if integer else isinstance(value, numbers.Real))
+    if isinstance(value, (bool, np.bool_)) or not ok:
+        kind = "an integer" if integer else "a number"
+        raise error(f"{where}: {label} must be {kind}, got {value!r}"[:300])
