@@ -1,6 +1,6 @@
 """Reading TOML input files with errors that name the file.
 
-The file is read as :func:`propmap.io.readers.read_input_bytes` reads every input file:
+The file is read as :func:`propmap.io.inputs.read_input_bytes` reads every input file:
 a regular file only (never a directory, a device or a pipe), at most
 :data:`~propmap.io.readers.MAX_SMALL_FILE_BYTES`, UTF-8 (a byte-order mark is dropped).
 """

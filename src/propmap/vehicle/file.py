@@ -39,7 +39,7 @@ never ignored).
 relative path is taken from the folder of the vehicle file (not from the working
 directory), an absolute path as it is; if no file (or folder) of that name exists there,
 the value must be a catalogue name (a named parameter set). A geometry file is read with
-:func:`propmap.io.readers.read_geometry` (a UIUC file takes its diameter from a
+:func:`propmap.io.geometry_files.read_geometry` (a UIUC file takes its diameter from a
 ``<family>_<D>x<P>`` name unless ``diameter_m`` is given).
 """
 
@@ -246,7 +246,7 @@ def read_vehicle(path) -> Vehicle:
     Warns
     -----
     UserWarning
-        As :func:`propmap.io.readers.read_uiuc_geometry` for a rotor's geometry file.
+        As :func:`propmap.io.geometry_files.read_uiuc_geometry` for a rotor's geometry file.
     """
     path = Path(path)
     name = show_path(path)
