@@ -12,7 +12,10 @@ the median of 5 alternated runs:
 * ``rotor_loads`` alone (the baseline);
 * with ``derivatives=True`` (omega, airspeed, incidence), with the collective too, and with
   the 8 section parameters of the cambered fit (issue 20's target: <= 3x);
-* the central differences of the whole solver for the same three inputs (6 more solves).
+* the central differences of the whole solver for the same three inputs (6 more solves);
+* a vehicle's linearisation: ``vehicle_wrench`` of the example quadrotor (4 x APC 8x6E,
+  generic set) on 200 samples, alone and with the velocity and angular-velocity Jacobians,
+  at rest (hover: the rotors' slopes at V = 0 along three rays) and at 3 m/s forward.
 
 Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
 inputs), the residual evaluations per annulus of the solve, and the CPU.
@@ -78,11 +81,42 @@ def main() -> dict:
         "cases": {k: {"median_s": float(np.median(v)), "min_s": float(np.min(v)),
                       "ratio_to_loads": float(np.median(v)) / base} for k, v in times.items()},
     }
+    out["vehicle_linearisation"] = vehicle_linearisation()
     path = ROOT / "benchmarks" / "results" / "derivatives.json"
     path.parent.mkdir(parents=True, exist_ok=True)
     with atomic_write(path) as fh:
         fh.write(json.dumps(out, indent=2))
     return out
+
+
+def vehicle_linearisation(n: int = 200) -> dict:
+    """vehicle_wrench's cost with the velocity and angular-velocity Jacobians over its cost alone,
+    at rest and at 3 m/s forward (median of RUNS alternated runs each)."""
+    from importlib import resources
+
+    from propmap.vehicle import read_vehicle, vehicle_wrench
+
+    veh = read_vehicle(str(resources.files("propmap") / "data/examples/quadrotor.toml"))
+    params = pm.generic_params()
+    om = np.full((n, len(veh.rotors)), 800.0)
+    w = np.zeros((n, 3))
+    res = {}
+    for label, speed in (("at rest", 0.0), ("3 m/s forward", 3.0)):
+        vel = np.tile([speed, 0.0, 0.0], (n, 1))
+        runs = {"wrench": lambda: vehicle_wrench(veh, params, vel, w, om),
+                "with Jacobians": lambda: vehicle_wrench(veh, params, vel, w, om,
+                                                         derivatives=("velocity", "angular_velocity"))}
+        t = {k: [] for k in runs}
+        for f in runs.values():
+            f()
+        for _ in range(RUNS):
+            for k, f in runs.items():
+                t0 = time.perf_counter()
+                f()
+                t[k].append(time.perf_counter() - t0)
+        a, b = float(np.median(t["wrench"])), float(np.median(t["with Jacobians"]))
+        res[label] = {"samples": n, "wrench_s": a, "with_jacobians_s": b, "ratio": b / a}
+    return res
 
 
 if __name__ == "__main__":

@@ -79,8 +79,9 @@ def _constants_stepped(U2, hU, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as
     :func:`_constants_u2`) and those at U2 + hU to first order, from their analytic slopes
     (the power laws of _physics.cambered_annulus; 0 where ln Re is clamped): one set of
-    logarithms and exponentials per annulus instead of two (measured: the derivatives of
-    axial points 4% cheaper). The paper's section has no Reynolds terms."""
+    logarithms and exponentials per annulus instead of two (the batch's cost did not change
+    measurably: benchmarks/bench_derivatives.py, 1.41x the loads before and after). The
+    paper's section has no Reynolds terms."""
     if model != CAMBERED:
         return (sc, 0.0, 0.0, 0.0), (sc, 0.0, 0.0, 0.0)
     a, cdf, g, dal0 = _constants_u2(U2, sc, cy2, model, cam)
@@ -348,13 +349,14 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
     nr = y.shape[0]
     n_par = hpar.shape[0]
     n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
+    n_rays = out.shape[1] - n_all  # 3: the slopes at rest along three rays in the last columns (sensitivities)
     if not ok[i]:
         for q in range(5):
-            for p in range(n_all):
+            for p in range(out.shape[1]):
                 out[q, p, i] = np.nan
         return
     for q in range(5):
-        for p in range(n_all):
+        for p in range(out.shape[1]):
             out[q, p, i] = 0.0
     wy = 0.0  # the mean inflow's weights (as _solve_batch: annulus area)
     m2 = 0.0  # the mean of sin(psi)^2 over the half circle's nodes (the axial point's one node stands for them)
@@ -517,6 +519,22 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[1, p, i] += w[j] * (dL1 + Lv1 * dv)
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
             out[4, p, i] += w[j] * yj * dv / wy
+        if n_rays > 0 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
+            m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
+            for k in range(3):
+                rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)
+                rc = 1.0 - k if k != 1 else 0.0
+                m1 = _momentum_side(vj, om, h_ray * rs, h_ray * rc, yj, mfac[j], ct[j], ch[j], emp)
+                m2_ = _momentum_side(vj, om, 2 * h_ray * rs, 2 * h_ray * rc, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h_ray)
+                dv = -(dB[0, 1] * rs + dB[0, 2] * rc - dmom) / Gv
+                c = n_all + k
+                out[0, c, i] += w[j] * (dB[0, 1] * rs + dB[0, 2] * rc + Lv0 * dv)
+                out[2, c, i] += w[j] * (dB[2, 1] * rs + dB[2, 2] * rc + Lv2 * dv)
+                if rs != 0.0:
+                    out[1, c, i] += w[j] * (dB[1, 1] * rs + dB[1, 2] * rc + Lv1 * dv)
+                    out[3, c, i] += w[j] * (dB[3, 1] * rs + dB[3, 2] * rc + Lv3 * dv)
+                out[4, c, i] += w[j] * yj * dv / wy
         Lv = (Lv0, Lv1, Lv2, Lv3)
         # section parameters and the density: the loss factor and the momentum side do not depend on them, so G
         # changes by the blade's thrust
@@ -545,9 +563,12 @@ def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, 
     The air density (``hrho`` != 0, its step; 0: not asked): ``scpm`` shape (nr,), the
     section constant sc at the stepped density; the output's last row is then the Reynolds
     part of dL/drho (the caller adds L / rho, the part of cfac and mfac, which scale the
-    residual and leave the root unchanged). ``out`` shape (5, n_in + n_par, n). Each
-    derivative is a directional one in (Omega, V sin beta, V cos beta, collective); at V = 0
-    the airspeed's is one-sided (V >= 0) and the incidence's is 0.
+    residual and leave the root unchanged). ``out`` shape (5, n_in + n_par [+ 1], n), or
+    with 3 columns more (and ``n_in`` >= 3): at the points with V = 0 the airspeed's one-sided
+    derivatives along the rays beta = 0, pi/2 and pi from the same roots (the slopes at rest
+    of derivatives.STILL_AIR; 0 at the other points). Each derivative is a directional one in
+    (Omega, V sin beta, V cos beta, collective); at V = 0 the airspeed's is one-sided (V >= 0)
+    along the point's beta and the incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
         _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,

@@ -27,7 +27,7 @@ RHO = "rho"
 
 
 #: internal (core/vector.py): at the points with V = 0, the loads' slopes in the velocity along three rays
-#: from the same roots (:func:`_still_air_jacobian`); 0 elsewhere
+#: from the same roots, in the same kernel pass (:func:`_jacobian`); 0 elsewhere
 STILL_AIR = "_still_air"
 
 
@@ -143,18 +143,19 @@ def _parameter_constants(names, params, air):
 
 def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
               discretization, loads) -> dict:
-    """{(load, input or parameter): derivative} at every point (flat arrays), from the kernel
-    (core/_sensitivity.py)."""
+    """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
+    the sensitivity kernel (core/_sensitivity.py). With :data:`STILL_AIR`, at the points with
+    V = 0 the loads' slopes in the velocity, from the kernel's one-sided airspeed derivatives
+    along three rays at the same roots (at rest the root does not depend on the incidence):
+    edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that this one-sided slope is
+    the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and descent
+    (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes); 0 at
+    the points with V > 0."""
     from . import _sensitivity
 
-    if STILL_AIR in wrt:
-        others = tuple(w for w in wrt if w != STILL_AIR)
-        out = _jacobian(others, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
-                        discretization, loads) if others else {}
-        return out | _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air,
-                                         propeller, discretization, loads)
+    rays = STILL_AIR in wrt
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
-    names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w != RHO]
+    names = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in (RHO, STILL_AIR)]
     scp = nd.sc
     hrho = 0.0
     if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
@@ -162,9 +163,11 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
         hrho = rho_step - air.rho  # the step as represented
         scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=rho_step),
                      params).sc
-    n_in = 4 if "collective" in inputs else (3 if inputs else 0)  # the kernel's inputs come in this order
+    # the kernel's inputs come in this order; the rays need its input passes
+    n_in = 4 if "collective" in inputs else (3 if inputs or rays else 0)
     pks, cams, step = _parameter_constants(names, params, air)
-    raw = np.empty((len(DERIVATIVE_LOADS), n_in + len(names) + (RHO in wrt), om.size))
+    n_cols = n_in + len(names) + (RHO in wrt)
+    raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
                                nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pks, cams,
@@ -174,26 +177,9 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
         col[RHO] = n_in + len(names)
         for q, a in enumerate(loads):  # cfac and mfac scale with rho: L / rho at the same root
             raw[q, col[RHO]] += a / air.rho
-    return {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt}
-
-
-def _still_air_jacobian(om, V, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
-                        discretization, loads) -> dict:
-    """{(load, STILL_AIR): slope}: at the points with V = 0 the loads' slopes in the velocity, from the
-    kernel's one-sided airspeed derivatives along three rays at the same roots (at rest the root does
-    not depend on the incidence): edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that
-    this one-sided slope is the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and
-    descent (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes). 0 at
-    the points with V > 0."""
-    rest = np.flatnonzero(V == 0.0)
-    k = rest.size
-    slopes = np.zeros((len(DERIVATIVE_LOADS), om.size))
-    if k:
-        idx = np.tile(rest, 3)
-        rays = np.repeat([0.0, 0.5 * np.pi, np.pi], k)  # climb, edgewise, descent
-        d = _jacobian(("airspeed",), om[idx], np.zeros(3 * k), rays, coll[idx], v[idx], converged[idx], nd, model,
-                      pk, cam, empirical, params, air, propeller, discretization, tuple(a[idx] for a in loads))
+    out = {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt if w != STILL_AIR}
+    if rays:  # climb, edgewise, descent (dV_c = -dV along beta = pi)
         for q, load in enumerate(DERIVATIVE_LOADS):
-            a = d[(load, "airspeed")].reshape(3, k)
-            slopes[q, rest] = a[1] if load in _ODD_LOADS else 0.5 * (a[0] - a[2])  # dV_c = -dV along beta = pi
-    return {(load, STILL_AIR): slopes[q] for q, load in enumerate(DERIVATIVE_LOADS)}
+            out[(load, STILL_AIR)] = (raw[q, n_cols + 1] if load in _ODD_LOADS
+                                      else 0.5 * (raw[q, n_cols] - raw[q, n_cols + 2]))
+    return out
