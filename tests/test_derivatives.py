@@ -408,27 +408,43 @@ def test_velocity_jacobian_errors_and_shapes(prop):
 
 def test_still_air_slopes_from_the_same_roots(prop):
     """At V = 0 the slopes along the three rays come from the roots already solved (the root at
-    rest does not depend on the incidence): equal to separate solves along each ray, for both
-    section models, in a batch that mixes points at rest with moving ones (0 there)."""
+    rest does not depend on the incidence), in the same kernel pass: equal to separate solves
+    along each ray, for both section models, in a batch that mixes points at rest with moving
+    ones (0 there), alone and beside the collective, a section parameter and rho (whose
+    columns must not move), with a collective offset."""
     from propmap.core.derivatives import STILL_AIR
     from propmap.core.vector import still_air_slopes
 
     om = np.array([600.0, 800.0, 1000.0, 900.0])
     V = np.array([0.0, 4.0, 0.0, 0.0])
-    for params in (pm.generic_params(), pm.preset("gill2017-apc")):
-        r = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=("omega", STILL_AIR), discretization=DISC)
-        rays = pm.rotor_loads(prop, params, om[None, V == 0], 0.0, np.array([[0.0], [0.5 * np.pi], [np.pi]]),
-                              derivatives=("airspeed",), discretization=DISC)
-        alone = still_air_slopes(prop, params, om, V, discretization=DISC)
-        for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean"):
-            d = rays.derivative(q, "airspeed")
-            want = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
-            got = r.derivative(q, STILL_AIR)
-            np.testing.assert_allclose(got[V == 0], want, rtol=1e-12, atol=1e-15)
-            assert np.all(got[V > 0] == 0.0)
-            np.testing.assert_allclose(alone[q], got, rtol=1e-12, atol=1e-15)
-        assert np.all(r.derivative("thrust", STILL_AIR)[V == 0] < 0)  # climbing unloads the rotor
-        assert np.all(r.derivative("drag", STILL_AIR)[V == 0] > 0)  # rotor drag opposes the in-plane speed
+    for params, par in ((pm.generic_params(), "cd_min"), (pm.preset("gill2017-apc"), "cd")):
+        for others, coll in ((("omega",), None), (("collective", par, "rho"), 0.05)):
+            kw = dict(discretization=DISC, collective=coll)
+            r = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=others + (STILL_AIR,), **kw)
+            plain = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=others, **kw)
+            rays = pm.rotor_loads(prop, params, om[None, V == 0], 0.0, np.array([[0.0], [0.5 * np.pi], [np.pi]]),
+                                  derivatives=("airspeed",), discretization=DISC,
+                                  collective=None if coll is None else np.full((3, 3), coll))
+            for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean"):
+                d = rays.derivative(q, "airspeed")
+                want = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
+                got = r.derivative(q, STILL_AIR)
+                np.testing.assert_allclose(got[V == 0], want, rtol=1e-12, atol=1e-15)
+                assert np.all(got[V > 0] == 0.0)
+                for w in others:  # the other columns as without the slopes at rest
+                    np.testing.assert_allclose(r.derivative(q, w), plain.derivative(q, w), rtol=1e-9, atol=1e-12)
+            assert np.all(r.derivative("drag", STILL_AIR)[V == 0] > 0)  # rotor drag opposes the in-plane speed
+            if coll is None:  # (with 2.9 deg more blade angle, 48% of apce_8x6's annuli are past the generic
+                # set's stall angle at rest, against 38%: a climb lowers their angle of attack and raises their
+                # lift, and dT/dV_c > 0 at some points)
+                assert np.all(r.derivative("thrust", STILL_AIR)[V == 0] < 0)  # climbing unloads the rotor
+        alone = still_air_slopes(prop, params, om, V, discretization=DISC)  # solves the points at rest only
+        full = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=(STILL_AIR,), discretization=DISC)
+        for q in alone:
+            np.testing.assert_allclose(alone[q], full.derivative(q, STILL_AIR), rtol=1e-12, atol=1e-15)
+    with pytest.raises(ValueError, match="wrt must be one of") as err:  # the internal name is not offered
+        full.derivative("thrust", "omega")
+    assert "_still_air" not in str(err.value)
 
 
 def test_vehicle_motion_jacobians():

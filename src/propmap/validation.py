@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .core.airfoil import Air, AirfoilParams, SectionParams
+from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from .io.catalogue import CatalogueEntry

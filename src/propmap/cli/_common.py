@@ -465,7 +465,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     prop : Propeller
     label : str
         The parameter set's label: a catalogue set or a parameter file, whose data coverage
-        (io.params_file.coverage: a fitted file's [coverage] table) is checked; other sets
+        (io.calibration.coverage: a fitted file's [coverage] table) is checked; other sets
         only for the tip Mach number.
     air : Air
         For the speed of sound.
@@ -480,7 +480,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     ratio beyond the data's largest, incidence beyond the data's (axial data: the off-axis
     loads rest on the BET/BEMT physics), rates outside the data's span.
     """
-    from ..io.params_file import coverage
+    from ..io.calibration import coverage
 
     tip_mach = tip_speed / air.speed_of_sound
     if tip_mach > 0.7:

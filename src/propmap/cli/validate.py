@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-
 import click
 
 from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params, parse_names,

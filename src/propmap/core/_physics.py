@@ -374,8 +374,9 @@ def inflow_gradients(mu, lam, model):
 
 
 #: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),
-#: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: the calibration data span 16,000-135,000 at
-#: 0.75 R (docs/models.md), and a power or log law is not extrapolated further
+#: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: vol. 1's data span 14,500-125,000 at 0.75 R, and a
+#: power or log law is not extrapolated further; vol. 2's reach 3,600, and acting down to 3e3
+#: was measured and not adopted (docs/models.md)
 LN_RE_MIN = -2.302585092994046
 LN_RE_MAX = 1.6094379124341003
 

@@ -24,8 +24,7 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     """
     if p.inflow != "uniform" or p.flap_compliance > 0:
         raise ValueError("the NumPy reference solves the uniform inflow of rigid blades only")
-    from .airfoil import Air
-    from .airfoil import _model_constants
+    from .airfoil import Air, _model_constants
     from .nodes import _cambered_args
 
     air = air or Air()

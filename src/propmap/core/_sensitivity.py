@@ -25,10 +25,12 @@ below the root's own tolerance, whereas differencing the whole solver carries th
 tolerance, 1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a
 scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
 the empirical descent curve, through its inversion, and Prandtl's factor); where the
-empirical model switches on (V cos beta = 0, v = -V cos beta / 2) it is differenced
+empirical model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) it is differenced
 centrally in v, Omega, V sin beta and V cos beta with steps 1e-5 of their scales, whatever
-the airspeed, so that the two sides of the switch are averaged (at V = 0 one-sided along the
-airspeed's ray).
+the airspeed, so that the two sides of the switch are averaged. At V = 0, where the empirical
+model is Glauert's, the partials in v and Omega are analytic and the airspeed's is one-sided
+along its ray (second order), for the point's ray and, when the output has three columns
+more, for the rays beta = 0, pi/2 and pi (the slopes at rest, core/derivatives.py).
 
 A section parameter enters through the element's constants (pk) and the annulus'
 Reynolds constants (cam) only, the density through the Reynolds constant sc; their partial
@@ -79,7 +81,7 @@ def _constants_stepped(U2, hU, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as
     :func:`_constants_u2`) and those at U2 + hU to first order, from their analytic slopes
     (the power laws of _physics.cambered_annulus; 0 where ln Re is clamped): one set of
-    logarithms and exponentials per annulus instead of two (the batch's cost did not change
+    exponentials per annulus instead of two (the batch's cost did not change
     measurably: benchmarks/bench_derivatives.py, 1.41x the loads before and after). The
     paper's section has no Reynolds terms."""
     if model != CAMBERED:
@@ -519,7 +521,7 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[1, p, i] += w[j] * (dL1 + Lv1 * dv)
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
             out[4, p, i] += w[j] * yj * dv / wy
-        if n_rays > 0 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
+        if n_rays == 3 and n_in >= 3 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
             m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
             for k in range(3):
                 rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)

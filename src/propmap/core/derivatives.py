@@ -14,6 +14,9 @@ from . import _physics as ph
 from .airfoil import RECORD_META, SectionParams, _model_constants
 from .nodes import _cambered_args, _nodes
 
+__all__ = ["DERIVATIVE_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS", "PARAM_FLOOR",
+           "differentiable"]
+
 
 #: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
 DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
@@ -161,6 +164,8 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     if RHO in wrt:  # the section constant sc holds the Reynolds number's density (rho c / mu)
         rho_step = air.rho + _sensitivity.ONE_SIDED * air.rho
         hrho = rho_step - air.rho  # the step as represented
+        if hrho == 0.0:  # (the kernel tells the density's column by a nonzero step)
+            raise ValueError(f"derivatives: rho = {air.rho!r} kg/m^3 is too small to be stepped")
         scp = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, dc_replace(air, rho=rho_step),
                      params).sc
     # the kernel's inputs come in this order; the rays need its input passes

@@ -11,6 +11,8 @@ import numpy as np
 from .derivatives import DERIVATIVE_LOADS
 from .states import STATES
 
+__all__ = ["RotorLoads"]
+
 
 @dataclass(frozen=True)
 class RotorLoads:
@@ -175,7 +177,7 @@ class RotorLoads:
         if quantity not in DERIVATIVE_LOADS:
             raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS)}, got {quantity!r:.60}")
         if (quantity, wrt) not in self.jacobian:
-            have = sorted({w for _, w in self.jacobian})
+            have = sorted({w for _, w in self.jacobian if not w.startswith("_")})  # not the internal ones
             raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads), "
                              f"got {wrt!r:.60}")
         return self.jacobian[(quantity, wrt)]

@@ -16,6 +16,8 @@ from .airfoil import Air, CamberedParams, SectionParams, _model_constants
 from .geometry import Propeller
 from .states import BAND_ARRAY, K_WINDMILL
 
+__all__ = []
+
 
 @dataclass(frozen=True)
 class _Nodes:

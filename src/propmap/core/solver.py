@@ -245,7 +245,7 @@ def rotor_loads(
         ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
-        ``params`` other than :data:`NODE_FIELDS` and ``flap_compliance``) and ``"rho"``
+        ``params`` other than :data:`~propmap.core.derivatives.NODE_FIELDS` and ``flap_compliance``) and ``"rho"``
         (the air density [kg/m^3]). By the implicit function theorem on each annulus'
         converged root (core/_sensitivity.py), not by differencing the
         solver; for the uniform inflow and rigid blades (the paper's rotor) and Omega >=
@@ -265,7 +265,7 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`NODE_FIELDS`) or ``flap_compliance``, a linear inflow model or flapping
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`) or ``flap_compliance``, a linear inflow model or flapping
         blades, or an Omega below 0.1 rad/s.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .airfoil import Air, AirfoilParams
-from .geometry import Propeller
 from .derivatives import STILL_AIR
+from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
@@ -278,7 +278,8 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
     Raises
     ------
     ValueError
-        ``still`` missing while a point has V = 0.
+        ``still`` missing while a point has V = 0 and the loads do not carry the slopes
+        at rest (loads computed with :data:`VELOCITY_INPUTS`, as :func:`rotor_wrench`'s, do).
 
     Notes
     -----
@@ -342,7 +343,8 @@ def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.
     ------
     ValueError
         ``quantity`` odd in the in-plane speed ("drag", "rolling_moment": use
-        :func:`velocity_jacobian`), ``still`` missing while a point has V = 0, or as
+        :func:`velocity_jacobian`), ``still`` missing while a point has V = 0 and the
+        loads do not carry the slopes at rest (as :func:`velocity_jacobian`), or as
         :meth:`RotorLoads.derivative`.
     """
     if quantity not in ("thrust", "torque", "v_i_mean"):

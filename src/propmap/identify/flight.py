@@ -9,7 +9,8 @@ reads), and the moment about the centre of mass M = I dw/dt + w x I w. Every log
 is then an equation like eq 16, in three axes: the residual is the predicted aerodynamic
 force (:func:`propmap.vehicle.vehicle_wrench`) minus m a_s, and eq 18's least squares runs
 over all samples and axes. The fitting engine, its bounds, population prior,
-identifiability report and multistart are identify.fit's (docs/identification.md).
+identifiability report and multistart are those of the loads and level-flight fits
+(identify/engine.py, options.py, result.py; docs/identification.md).
 
 What is fitted: any section parameter, the rotor options (``collective``,
 ``flap_compliance``), the airframe drag (``drag_area_x``, ``drag_area_y``,

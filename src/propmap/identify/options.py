@@ -12,6 +12,10 @@ import numpy as np
 from ..core.airfoil import CamberedParams, SectionParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
+__all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
+           "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
+           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES"]
+
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
 X0_PAPER = (2 * math.pi, 2.0, 0.0, 0.47)

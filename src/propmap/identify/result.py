@@ -12,6 +12,8 @@ import numpy as np
 from ..core.airfoil import Air, SectionParams
 from .options import CAMBERED_SCALE, _is_angle
 
+__all__ = ["FitResult", "Identifiability", "POOR_REL_STD"]
+
 
 POOR_REL_STD = 0.10  # relative std error above which a parameter is reported poorly determined
 

@@ -69,22 +69,31 @@ class Calibration:
 
 
 def coverage(label: str) -> dict | None:
-    """What the data behind a shipped parameter set covered, for warnings (a parameter
-    file's: :func:`propmap.io.params_file.coverage`).
+    """What the data behind a shipped parameter set covered, for warnings.
 
     Parameters
     ----------
     label : str
-        ``"generic"``, ``"generic without <family>"`` or ``"calibrated:<name>"``.
+        ``"generic"``, ``"generic without <family>"``, ``"calibrated:<name>"`` or a parameter file.
 
     Returns
     -------
     dict or None
         ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial); None for other labels (Table I), whose data propmap does not
-        know.
+        UIUC data are axial), for a fitted file also ``rpm_min``, ``rpm_max`` and
+        ``airspeed_max`` (its ``[coverage]`` table); None for other sets (Table I, files
+        without the table), whose data propmap does not know.
     """
+    from pathlib import Path
+
     raw = _raw()
+    if label and Path(label).is_file():  # a parameter file: its [coverage] table, if it has one
+        from .params_file import read_coverage
+
+        try:
+            return read_coverage(label)
+        except ValueError:
+            return None
     if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
         return raw["generic"].get("coverage")
     if label.startswith("calibrated:"):

@@ -29,6 +29,9 @@ from ..core.geometry import INCH, Propeller
 from .inputs import (_check_column, _check_number, _clip, _line_of, _meta, _read_table, _read_text, parse_number,
                      show_path)
 
+__all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "MM_FAMILIES",
+           "NAME_DIAMETER_RANGE_IN"]
+
 
 class GeometryFileError(ValueError):
     """A geometry file is malformed; the message names the file and the problem."""

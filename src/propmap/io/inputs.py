@@ -23,6 +23,9 @@ from pathlib import Path
 
 import numpy as np
 
+__all__ = ["MAX_FILE_BYTES", "MAX_SMALL_FILE_BYTES", "show_path", "read_input_bytes", "decode_input_text",
+           "parse_number"]
+
 #: the largest data file (loads and level-flight CSVs) a reader accepts [bytes]
 MAX_FILE_BYTES = 200 * 1024 * 1024
 #: the largest geometry, UIUC measurement or TOML file a reader accepts [bytes]; such

@@ -94,7 +94,7 @@ from .inputs import show_path
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
-           "params_to_dict", "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage", "coverage",
+           "params_to_dict", "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage",
            "named_sets", "section_preset", "section_presets", "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
@@ -270,34 +270,6 @@ def read_coverage(path) -> dict | None:
         return coverage_from_dict(data, where=show_path(path))
     except ValueError as exc:
         raise ParamsFileError(str(exc)) from None
-
-
-def coverage(label: str) -> dict | None:
-    """What the data behind a parameter set covered, for warnings: a parameter file's
-    ``[coverage]`` table, else the shipped set's (:func:`propmap.io.calibration.coverage`).
-
-    Parameters
-    ----------
-    label : str
-        A parameter file, ``"generic"``, ``"generic without <family>"`` or
-        ``"calibrated:<name>"``.
-
-    Returns
-    -------
-    dict or None
-        ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial), for a fitted file also ``rpm_min``, ``rpm_max`` and
-        ``airspeed_max``; None for other sets (Table I, files without the table, unreadable
-        files), whose data propmap does not know.
-    """
-    from .calibration import coverage as shipped_coverage
-
-    if label and Path(label).is_file():
-        try:
-            return read_coverage(label)
-        except ValueError:
-            return None
-    return shipped_coverage(label)
 
 
 def _generic_fill(data: dict, keys: dict, where: str) -> dict:

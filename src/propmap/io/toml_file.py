@@ -2,7 +2,7 @@
 
 The file is read as :func:`propmap.io.inputs.read_input_bytes` reads every input file:
 a regular file only (never a directory, a device or a pipe), at most
-:data:`~propmap.io.readers.MAX_SMALL_FILE_BYTES`, UTF-8 (a byte-order mark is dropped).
+:data:`~propmap.io.inputs.MAX_SMALL_FILE_BYTES`, UTF-8 (a byte-order mark is dropped).
 """
 
 from __future__ import annotations

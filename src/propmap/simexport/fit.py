@@ -337,7 +337,6 @@ def _fit(target: str, s, R: float, rho: float, fixed: dict, held: dict) -> dict:
     om, V, b = s["omega"], s["V"], s["beta"]
     Vip, Vz = V * np.sin(b), V * np.cos(b)
     mu, lam = _mu_lambda(s, R)
-    one = np.ones_like(mu)
     om_h, T_h, Q_h = s["omega_h"], s["T_h"], s["Q_h"]
     # each load is fitted relative to its scale at the point (static value at that Omega), so
     # that low and high rpm count alike: divide both sides by the scale
