@@ -14,10 +14,15 @@ from propmap.core import _jitcache, _kernel
 
 SRC = Path(_kernel.__file__).resolve().parents[1]  # .../propmap
 
-SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K; "
-          "r = pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0); "
-          "s = K.solve_batch_serial.stats; print(repr(float(r.torque)), sum(s.cache_hits.values()), "
-          "sum(s.cache_misses.values()))")
+#: the paper's model at one point, with its torque's Omega derivative: the solver kernel and the
+#: sensitivity kernel, each with its cache statistics (hits, misses)
+SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K, _sensitivity as S; "
+          "r = pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'), 800.0, 5.0, 1.0, "
+          "derivatives=('omega',)); "
+          "k, d = K.solve_batch_serial.stats, S.sensitivities.stats; "
+          "print(repr(float(r.torque)), repr(float(r.derivative('torque', 'omega'))), "
+          "sum(k.cache_hits.values()), sum(k.cache_misses.values()), "
+          "sum(d.cache_hits.values()), sum(d.cache_misses.values()))")
 
 
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
@@ -33,8 +38,10 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     assert _jitcache.sources_stamp([a, b]) != before
 
 
-def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernel(tmp_path):
-    """A warm cache, then edit _physics.py (here: eq 4's form drag doubled)."""
+def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernels(tmp_path):
+    """A warm cache, then edit _physics.py (here: eq 4's form drag doubled): both kernels, the
+    solver's and the sensitivities' (which was stamped with its own file only until
+    2026-11-23 and then served the old model's derivatives), are compiled anew."""
     pkg = tmp_path / "propmap"
     shutil.copytree(SRC, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc"))
     env = {**os.environ, "PYTHONPATH": str(tmp_path), "NUMBA_CACHE_DIR": ""}
@@ -42,49 +49,16 @@ def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernel(tmp
     def run():
         out = subprocess.run([sys.executable, "-c", SCRIPT], capture_output=True, text=True, env=env, cwd=tmp_path,
                              check=True).stdout.split()
-        return float(out[0]), int(out[1]), int(out[2])
+        return float(out[0]), float(out[1]), *(int(x) for x in out[2:])
 
-    q0, hits, misses = run()
-    assert misses >= 1 and hits == 0  # compiled and cached
-    q1, hits, misses = run()
-    assert q1 == q0 and hits == 1 and misses == 0  # served from the cache
+    q0, dq0, hits, misses, dhits, dmisses = run()
+    assert misses >= 1 and hits == 0 and dmisses >= 1 and dhits == 0  # compiled and cached
+    q1, dq1, hits, misses, dhits, dmisses = run()
+    assert (q1, dq1) == (q0, dq0) and hits == 1 and misses == 0 and dhits == 1 and dmisses == 0  # from the cache
     physics = pkg / "core" / "_physics.py"
     text = physics.read_text()
     assert "+ cd0  # eq (4)" in text
     physics.write_text(text.replace("+ cd0  # eq (4)", "+ 2.0 * cd0  # eq (4)"))
-    q2, hits, misses = run()
+    q2, dq2, hits, misses, dhits, dmisses = run()
     assert hits == 0 and q2 > q0  # recompiled: more form drag, more torque
-
-
-SENS_SCRIPT = ("import propmap as pm; from propmap.core import _sensitivity as S; "
-               "r = pm.rotor_loads(pm.load_propeller('apce_8x6'), pm.generic_params(), 800.0, 5.0, 1.0, "
-               "derivatives=('cd_min',)); "
-               "s = S.sensitivities.stats; print(repr(float(r.derivative('torque', 'cd_min'))), "
-               "sum(s.cache_hits.values()), sum(s.cache_misses.values()))")
-
-
-def test_editing_the_physics_recompiles_the_sensitivity_kernel(tmp_path):
-    """The sensitivity kernel inlines the physics too (it was stamped with its own file only
-    until 2026-11-23): a warm cache, then an edit of _physics.py (the cambered drag's
-    Reynolds factor doubled) must recompile it, not serve the derivatives of the old model."""
-    pkg = tmp_path / "propmap"
-    shutil.copytree(SRC, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc"))
-    env = {**os.environ, "PYTHONPATH": str(tmp_path), "NUMBA_CACHE_DIR": ""}
-
-    def run():
-        out = subprocess.run([sys.executable, "-c", SENS_SCRIPT], capture_output=True, text=True, env=env,
-                             cwd=tmp_path, check=True).stdout.split()
-        return float(out[0]), int(out[1]), int(out[2])
-
-    d0, hits, misses = run()
-    assert misses >= 1 and hits == 0
-    d1, hits, misses = run()
-    assert d1 == d0 and hits == 1 and misses == 0
-    physics = pkg / "core" / "_physics.py"
-    text = physics.read_text()
-    old = "return a, np.exp(re_exp * ln_re), g, alpha_L0_re * ln_re"
-    assert old in text
-    physics.write_text(text.replace(old, "return a, 2.0 * np.exp(re_exp * ln_re), g, alpha_L0_re * ln_re"))
-    d2, hits, misses = run()
-    assert hits == 0 and d2 > 1.5 * d0  # recompiled: the drag factor doubled doubles dQ/dcd_min
-
+    assert dhits == 0 and dq2 != dq0  # the derivatives recompiled with it
