@@ -1,0 +1,203 @@
+"""The identification CSV files (level flight, loads): parsing, checks and errors
+(identify/data.py and identify/level_flight.py read them).
+
+Readers raise :class:`DataError` (a ValueError) with a one-line message naming the file,
+the line and the column, and for a value out of range the valid range; no other exception
+escapes for any file content, and no reader modifies its input.
+
+CSV files (:func:`read_level_flight`, :func:`read_loads`): a regular file of at most
+200 MiB and 10,000,000 lines (never a directory, a device or a pipe), UTF-8 with or
+without a byte-order mark
+(as Excel writes it), comma-separated, a header line then one row per point; line ends
+LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in RFC 4180
+(an unterminated quote is an error). Column names are stripped of spaces, at most 255
+characters, each at most once (a duplicated column is an error, never "the first wins");
+unnamed columns and columns not listed are ignored. Numbers are plain ASCII decimals
+(``1e3``; not ``1_000``, not NaN or inf). Valid ranges:
+
+=====================  ======================================================
+rpm, rpm_<k>           (0, 954929] (the solver's limit of 1e5 rad/s)
+airspeed               [0, 500] m/s
+incidence_deg          [0, 180] deg
+thrust, drag           [-1e5, 1e5] N
+torque                 [-1e4, 1e4] N m
+pitch_deg, roll_deg    (-90, 90) deg
+p, q, r                [-100, 100] rad/s
+=====================  ======================================================
+"""
+
+from __future__ import annotations
+
+import array
+import csv
+import io
+import math
+import re
+
+import numpy as np
+
+from ..io.inputs import MAX_FILE_BYTES, decode_input_text, parse_number, read_input_bytes, show_path
+from ..io.readers import RPM_MAX
+
+__all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
+
+
+RPM = 2 * math.pi / 60
+
+
+#: valid ranges of the CSV columns: (low, high, low open, high open, unit)
+RANGES = {
+    "rpm": (0.0, RPM_MAX, True, False, "rpm"),
+    "airspeed": (0.0, 500.0, False, False, "m/s"),
+    "incidence_deg": (0.0, 180.0, False, False, "deg"),
+    "collective_deg": (-45.0, 45.0, False, False, "deg"),
+    "thrust": (-1e5, 1e5, False, False, "N"),
+    "drag": (-1e5, 1e5, False, False, "N"),
+    "torque": (-1e4, 1e4, False, False, "N m"),
+    "pitch_deg": (-90.0, 90.0, True, True, "deg"),
+    "roll_deg": (-90.0, 90.0, True, True, "deg"),
+    "p": (-100.0, 100.0, False, False, "rad/s"),
+    "q": (-100.0, 100.0, False, False, "rad/s"),
+    "r": (-100.0, 100.0, False, False, "rad/s"),
+}
+
+
+#: the longest column name accepted [characters]
+MAX_NAME = 255
+
+
+#: the most lines a CSV may have (bounds the time a 200 MiB file of tiny lines takes)
+MAX_LINES = 10_000_000
+
+
+class DataError(ValueError):
+    """Bad identification data; the message names the problem."""
+
+
+def _short(text: str, n: int = 40) -> str:
+    r = repr(text)
+    return r if len(r) <= n else r[: n - 5] + "...'" + f" ({len(text)} characters)"
+
+
+def _interval(rng) -> str:
+    lo, hi, lo_open, hi_open, unit = rng
+    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'} {unit}"
+
+
+#: a per-rotor rotation-rate column, rpm_<k>
+_ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
+
+
+class _Csv:
+    """A parsed CSV: the header's columns, and numbers or text of the columns asked for.
+
+    Only the columns asked for are converted (to float arrays), so that a large file
+    costs 8 bytes a value; every message names the file, the line and the column.
+    """
+
+    def __init__(self, path, what: str):
+        self.what, self.name = what, show_path(path)
+        try:
+            raw = read_input_bytes(path, DataError, limit=MAX_FILE_BYTES)
+            decode_input_text(raw, path, DataError)  # refuses UTF-16, NUL bytes, non-UTF-8 (naming the line)
+        except DataError as exc:
+            raise DataError(f"{what}: {exc}") from None
+        n_lines = raw.count(b"\n") + raw.count(b"\r") - raw.count(b"\r\n")
+        if n_lines > MAX_LINES:
+            raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
+        self._raw = raw
+        # ',' or ';' (spreadsheets in locales with a decimal comma), from the header line
+        head = raw.lstrip(b"\xef\xbb\xbf\r\n \t").split(b"\n", 1)[0]
+        self.sep = ";" if head.count(b";") > head.count(b",") else ","
+        self.header_line = 0
+        self.columns: list[str] = []
+        for line, cells in self._rows():
+            self.header_line = line
+            self.header = [c.strip() for c in cells]  # as written, for messages and unit parsing
+            self.columns = [c.lower() for c in self.header]  # names match in any case
+            break
+        if not self.header_line:
+            raise self.error("empty file (no header line)")
+        seen: dict[str, int] = {}
+        for j, c in enumerate(self.columns, start=1):
+            if len(c) > MAX_NAME:
+                raise self.error(f"column {j} has a name of {len(c)} characters (at most {MAX_NAME})",
+                                 self.header_line)
+            if c and c in seen:
+                raise self.error(f"column {_short(c)} appears twice (columns {seen[c]} and {j}); remove one",
+                                 self.header_line)
+            seen[c] = j
+        self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
+
+    def error(self, message: str, line: int | None = None) -> DataError:
+        at = f", line {line}" if line else ""
+        return DataError(f"{self.what}: {self.name}{at}: {message}")
+
+    def _rows(self):
+        """(first line number, cells) of every non-blank row, after the header if it is known."""
+        text = io.TextIOWrapper(io.BytesIO(self._raw), encoding="utf-8-sig", newline="")
+        reader = csv.reader(text, delimiter=getattr(self, "sep", ","), strict=True, skipinitialspace=True)
+        last = 0
+        try:
+            for cells in reader:
+                first, last = last + 1, reader.line_num
+                if any(c.strip() for c in cells):
+                    yield first, cells
+        except csv.Error as exc:
+            msg = str(exc)
+            if "field larger than field limit" in msg:
+                msg = f"a field longer than {csv.field_size_limit()} characters"
+            elif "unexpected end of data" in msg:
+                msg = "unterminated quote: a quoted field is never closed"
+            elif "expected after" in msg:
+                msg = "a closing quote must be followed by a comma or the end of the line"
+            raise self.error(msg, last + 1) from None
+
+    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=()) -> tuple[dict, dict, np.ndarray]:
+        """(numbers by column, text by column, line of each row) for the named columns; an
+        empty cell of a column in ``optional`` is NaN instead of an error."""
+        n = len(self.columns)
+        cols = [(c, self.index[c]) for c in numeric]
+        nums = {c: array.array("d") for c in numeric}
+        texts = {c: [] for c in text if c in self.index}
+        lines = array.array("q")
+        rows = self._rows()
+        next(rows)  # the header
+        for line, cells in rows:
+            if len(cells) > n and any(c.strip() for c in cells[n:]):
+                raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
+            for c, j in cols:
+                cell = cells[j].strip() if j < len(cells) else ""
+                if not cell and c in optional:
+                    nums[c].append(math.nan)
+                    continue
+                if not cell:
+                    raise self.error(f"column {_short(c)} is empty (missing value)", line)
+                try:
+                    x = parse_number(cell)
+                except ValueError:
+                    raise self.error(f"column {_short(c)}: {_short(cell)} is not a number", line) from None
+                if not math.isfinite(x):
+                    raise self.error(f"column {_short(c)} is {_short(cell)}, not a finite number", line)
+                nums[c].append(x)
+            for c in texts:
+                j = self.index[c]
+                texts[c].append(cells[j].strip() if j < len(cells) else "")
+            lines.append(line)
+        return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
+                np.frombuffer(lines, dtype=np.int64).copy())
+
+    def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict) -> None:
+        """Refuse the first value outside its column's range, naming the line and the range."""
+        for c, x in values.items():
+            key = "rpm" if (c == "rpm" or _ROTOR_RE.fullmatch(c)) else c
+            if key not in ranges:
+                continue
+            lo, hi, lo_open, hi_open, unit = ranges[key]
+            bad = ((x <= lo) if lo_open else (x < lo)) | ((x >= hi) if hi_open else (x > hi))
+            if bad.any():
+                i = int(np.argmax(bad))
+                if key == "rpm":  # rpm_1 .. rpm_n too
+                    raise self.error(f"rpm must be > 0 and <= {hi:.0f} (the solver's limit of 1e5 rad/s), got "
+                                     f"{c} = {x[i]:g}", int(lines[i]))
+                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {x[i]:g}", int(lines[i]))

@@ -1,0 +1,140 @@
+"""Level-flight conditions (Gill & D'Andrea 2017, eqs 16-18): the data, their CSV reader and
+the rotors' kinematics (the CSV rules and errors: identify/csvfile.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..vehicle import Vehicle
+from .csvfile import _ROTOR_RE, RANGES, RPM, DataError, _Csv, _short
+
+__all__ = ["LevelFlightData", "read_level_flight", "body_to_world", "rotor_kinematics"]
+
+
+@dataclass(frozen=True)
+class LevelFlightData:
+    """Steady level-flight conditions, one row each (Gill & D'Andrea 2017, Sec. III).
+
+    Attributes
+    ----------
+    airspeed : ndarray, shape (N,)
+        Horizontal speed along the heading [m/s], >= 0.
+    pitch, roll : ndarray, shape (N,)
+        Attitude [rad]; pitch nose-up positive (forward flight negative), roll right-wing-down positive.
+    omega : ndarray, shape (N, n_rotors)
+        Rotor rotation rates [rad/s], > 0, in the vehicle's rotor order.
+    rates : ndarray, shape (N, 3)
+        Body rates p, q, r [rad/s] (x forward, y left, z up).
+    """
+
+    airspeed: np.ndarray
+    pitch: np.ndarray
+    roll: np.ndarray
+    omega: np.ndarray
+    rates: np.ndarray
+
+    @property
+    def n(self) -> int:
+        """Number of conditions N."""
+        return self.airspeed.size
+
+
+def _rotor_order(column: str):
+    """Sort key of rotor columns: rpm_1, rpm_2, ..., rpm_10, then any malformed name."""
+    m = _ROTOR_RE.fullmatch(column)
+    return (0, int(m.group(1)), column) if m else (1, 0, column)
+
+
+def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> LevelFlightData:
+    """Read level-flight conditions: columns ``airspeed, pitch_deg, rpm_1 .. rpm_n``,
+    optional ``roll_deg`` and body rates ``p, q, r`` [rad/s] (all three or none).
+
+    Format and valid ranges in the module docstring.
+
+    Parameters
+    ----------
+    path : str or Path
+    vehicle : Vehicle
+        Gives the rotor count n.
+    min_conditions : int
+
+    Returns
+    -------
+    LevelFlightData
+
+    Raises
+    ------
+    DataError
+        Not a readable regular file (a directory, a device, over 200 MiB or 10,000,000
+        lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
+        header), a missing, duplicated or over-long column, a rotor count that does not
+        match the vehicle, only some of ``p, q, r``, an empty, non-numeric or non-finite
+        value, a value out of range (rpm outside (0, 954929], airspeed outside [0, 500] m/s, |pitch| or |roll|
+        >= 90 deg, |p|, |q|, |r| > 100 rad/s), fewer than ``min_conditions`` rows, or all
+        rows identical; the message names the file, the line and the column.
+    """
+    what = "level-flight data"
+    f = _Csv(path, what)
+    p = f.name
+    rpm_cols = sorted((c for c in f.index if c.startswith("rpm_")), key=_rotor_order)
+    n_rot = len(vehicle.rotors)
+    if rpm_cols != [f"rpm_{k}" for k in range(1, n_rot + 1)]:
+        shown = ", ".join(_short(c) for c in rpm_cols[:8]) + (", ..." if len(rpm_cols) > 8 else "")
+        raise DataError(f"{what}: {p} has rotor columns {'[' + shown + ']' if rpm_cols else 'none'}; the vehicle has "
+                        f"{n_rot} rotors, so rpm_1 .. rpm_{n_rot} are needed")
+    missing = [c for c in ("airspeed", "pitch_deg") if c not in f.index]
+    if missing:
+        raise DataError(f"{what}: {p} lacks column(s) {', '.join(missing)}")
+    rates_given = [c for c in ("p", "q", "r") if c in f.index]
+    if rates_given and len(rates_given) < 3:
+        raise DataError(f"{what}: {p} has body-rate column(s) {', '.join(rates_given)} but not "
+                        f"{', '.join(c for c in 'pqr' if c not in rates_given)}: give all of p, q, r or none")
+    cols = ["airspeed", "pitch_deg", *rpm_cols, *(["roll_deg"] if "roll_deg" in f.index else []), *rates_given]
+    v, _, lines = f.read(cols)
+    f.check_ranges(v, lines, RANGES)
+    n = lines.size
+    if n < min_conditions:
+        raise DataError(f"{what}: {p} has {n} conditions; at least {min_conditions} are needed")
+    base = np.column_stack([v[c] for c in ["airspeed", "pitch_deg", *rpm_cols]])
+    if np.all(np.ptp(base, axis=0) == 0):
+        raise DataError(f"{what}: {p}: all conditions are identical; the parameters cannot be identified")
+    roll = v["roll_deg"] if "roll_deg" in v else np.zeros(n)
+    rates = np.column_stack([v[c] for c in "pqr"]) if rates_given else np.zeros((n, 3))
+    rpm = base[:, 2:]
+    return LevelFlightData(v["airspeed"], np.radians(v["pitch_deg"]), np.radians(roll), rpm * RPM, rates)
+
+
+def body_to_world(pitch, roll) -> np.ndarray:
+    """Rotation matrices R (shape (N, 3, 3)) taking body vectors to the level world frame.
+
+    Frames: x forward, y left, z up (heading along world x). Nose-up pitch is a rotation
+    about +y by -pitch; right-wing-down roll a rotation about +x by +roll; R = Ry(-pitch) Rx(roll).
+    """
+    p = -np.asarray(pitch, float)
+    r = np.asarray(roll, float)
+    cp, sp, cr, sr = np.cos(p), np.sin(p), np.cos(r), np.sin(r)
+    z, o = np.zeros_like(p), np.ones_like(p)
+    Ry = np.stack([np.stack([cp, z, sp], -1), np.stack([z, o, z], -1), np.stack([-sp, z, cp], -1)], -2)
+    Rx = np.stack([np.stack([o, z, z], -1), np.stack([z, cr, -sr], -1), np.stack([z, sr, cr], -1)], -2)
+    return Ry @ Rx
+
+
+def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
+    """Body-frame hub velocities of every rotor: V_i = R^T V_vehicle + omega x r_i (Sec. III).
+
+    Returns
+    -------
+    R : ndarray, shape (N, 3, 3)
+        Body-to-world rotations.
+    velocity : ndarray, shape (N, n_rotors, 3)
+        Hub velocity relative to still air, body frame [m/s].
+    """
+    R = body_to_world(data.pitch, data.roll)
+    v_world = np.stack([data.airspeed, np.zeros(data.n), np.zeros(data.n)], -1)
+    v_body = np.einsum("nji,nj->ni", R, v_world)  # R^T v
+    pos = np.stack([r.position for r in vehicle.rotors])  # (n_rot, 3)
+    vel = v_body[:, None, :] + np.cross(data.rates[:, None, :], pos[None, :, :])
+    return R, vel
