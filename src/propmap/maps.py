@@ -26,8 +26,9 @@ from . import __version__
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller, _real
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
-from .io.mapfile import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller, map_model,
-                         read_sidecar, write_map, write_sidecar)
+from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller,
+                          map_model)
+from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.uncertainty import model_uncertainty
 from .rotormap import INTERPOLATIONS, RPM, MapLoads, MapWrench, RotorMap
 

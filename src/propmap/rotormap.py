@@ -14,7 +14,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .io.mapfile import LOADS, check_dataset, read_dataset
+from .io.mapcheck import LOADS, check_dataset
+from .io.mapfile import read_dataset
 
 __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap"]
 
