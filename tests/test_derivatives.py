@@ -442,8 +442,9 @@ def test_still_air_slopes_from_the_same_roots(prop):
         full = pm.rotor_loads(prop, params, om, V, 0.4, derivatives=(STILL_AIR,), discretization=DISC)
         for q in alone:
             np.testing.assert_allclose(alone[q], full.derivative(q, STILL_AIR), rtol=1e-12, atol=1e-15)
-    with pytest.raises(ValueError, match="wrt must be one of") as err:  # the internal name is not offered
-        full.derivative("thrust", "omega")
+    some = pm.rotor_loads(prop, pm.generic_params(), om, V, 0.4, derivatives=("omega", STILL_AIR), discretization=DISC)
+    with pytest.raises(ValueError, match="wrt must be one of omega ") as err:  # the internal name is not offered
+        some.derivative("thrust", "airspeed")
     assert "_still_air" not in str(err.value)
 
 
@@ -544,6 +545,23 @@ def test_air_density_derivative(prop, params):
         np.testing.assert_allclose(r.derivative(q, "rho"), fd, rtol=1e-5, atol=1e-7 * np.abs(fd).max(), err_msg=q)
     # the thrust is nearly proportional to rho: the Reynolds part is a correction
     np.testing.assert_allclose(r.derivative("thrust", "rho"), r.thrust / air.rho, rtol=0.2)
+
+
+def test_a_density_too_small_to_step_and_loads_without_derivatives_say_so(prop):
+    """A density whose step rounds away (the kernel tells its column by a nonzero step) is
+    refused, not given another column's values; loads asked only for internal derivatives
+    name none."""
+    from dataclasses import replace
+
+    from propmap.core.derivatives import STILL_AIR
+
+    g = pm.generic_params()
+    with pytest.raises(ValueError, match="too small to be stepped"):
+        pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, air=replace(g.air, rho=1e-320), on_failure="flag",
+                       derivatives=("rho",), discretization=DISC)
+    r = pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, derivatives=(STILL_AIR,), discretization=DISC)
+    with pytest.raises(ValueError, match="no derivative with respect to 'omega'"):
+        r.derivative("thrust", "omega")
 
 
 def test_vehicle_air_density_derivative():

@@ -202,7 +202,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         An axis that is not a 1-D array of numbers, has fewer than 2 values, is not
         increasing, or leaves the model's range; more than MAX_NODES (20,000,000) nodes
         (refused before any work); a propeller a map cannot record (diameter outside
-        0.5-100 in, more than 100 blades; io.mapfile); ``chunk_points`` not an integer
+        0.5-100 in, more than 100 blades; io.mapcheck); ``chunk_points`` not an integer
         in [1, MAX_NODES]; ``n_check`` not an integer in [0, 1,000,000]; ``seed`` not an
         integer >= 0; a scheduler address that cannot be reached within 10 s.
     TypeError
@@ -357,7 +357,7 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     ------
     ValueError
         ``n_check`` or ``seed`` out of range; a map that does not record its model (when
-        one is not given) or is malformed (io.mapfile.check_dataset).
+        one is not given) or is malformed (io.mapcheck.check_dataset).
     """
     n_check = _integer("n_check", n_check, 1, CHECK_POINTS_MAX)
     seed = _integer("seed", seed, 0, 2**63 - 1)

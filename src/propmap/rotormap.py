@@ -133,7 +133,7 @@ class RotorMap:
     TypeError
         ``dataset`` is not an xarray Dataset.
     ValueError
-        The dataset is not a valid map (io.mapfile.check_dataset: a missing variable,
+        The dataset is not a valid map (io.mapcheck.check_dataset: a missing variable,
         flag or axis, an axis outside the model's range, non-finite loads at a converged
         node, an attribute of the wrong type or out of range); unknown interpolation.
     """

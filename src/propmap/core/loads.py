@@ -178,6 +178,9 @@ class RotorLoads:
             raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS)}, got {quantity!r:.60}")
         if (quantity, wrt) not in self.jacobian:
             have = sorted({w for _, w in self.jacobian if not w.startswith("_")})  # not the internal ones
+            if not have:
+                raise ValueError(f"these loads have no derivative with respect to {wrt!r:.60}: ask rotor_loads(..., "
+                                 "derivatives=...) for it")
             raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads), "
                              f"got {wrt!r:.60}")
         return self.jacobian[(quantity, wrt)]

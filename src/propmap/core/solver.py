@@ -266,7 +266,7 @@ def rotor_loads(
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
         (:data:`~propmap.core.derivatives.NODE_FIELDS`) or ``flap_compliance``, a linear inflow model or flapping
-        blades, or an Omega below 0.1 rad/s.
+        blades, an Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.

@@ -19,6 +19,7 @@ unnamed columns and columns not listed are ignored. Numbers are plain ASCII deci
 rpm, rpm_<k>           (0, 954929] (the solver's limit of 1e5 rad/s)
 airspeed               [0, 500] m/s
 incidence_deg          [0, 180] deg
+collective_deg         [-45, 45] deg
 thrust, drag           [-1e5, 1e5] N
 torque                 [-1e4, 1e4] N m
 pitch_deg, roll_deg    (-90, 90) deg

@@ -27,8 +27,6 @@ __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "rea
            "loads_from_uiuc_files", "body_to_world", "rotor_kinematics"]
 
 
-
-
 @dataclass(frozen=True)
 class LoadData:
     """Direct load measurements of one propeller.

@@ -175,7 +175,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     parts = []
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
-            raise ValueError(f"logs must be FlightLog records (io.read_flight_log), got {type(log).__name__}")
+            raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
         if log.n_motors != n_rot:
             raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
                              "vehicle file lists its rotors in the log's motor order)")

@@ -87,7 +87,7 @@ MAX_STATIONS = 10_000
 CHECK_POINTS_MAX = 1_000_000
 
 
-#: largest |value| of each load at a node (the load data files' ranges, identify.data.RANGES)
+#: largest |value| of each load at a node (the load data files' ranges, identify.csvfile.RANGES)
 LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4}
 
 

@@ -1,5 +1,5 @@
-"""Rotor-map files: the checks every map passes, the netCDF reader for hostile files, and
-the writers of a map with its JSON sidecar.
+"""Rotor-map files: the netCDF reader for hostile files and the writers of a map with its
+JSON sidecar (the checks every map passes: io/mapcheck.py).
 
 A map file is input like any other (docs/cli.md): it may be truncated, mutated, edited by
 hand or crafted. :func:`read_dataset` reads only regular files, refuses declared sizes
@@ -9,7 +9,8 @@ turns whatever the netCDF/HDF5 libraries raise into a ValueError naming the file
 maps ``propmap map`` and :func:`propmap.maps.build_map` make, so that a map answers only
 inside the model that made it.
 
-The checks and their ranges are in io/mapcheck.py (their names are importable from here).
+The checks and their ranges are in io/mapcheck.py; the names of this module's ``__all__``
+(``check_dataset``, ``check_propeller``, ``map_model``, ``MAX_NODES``) are importable from here too.
 
 A damaged file can make the netCDF/HDF5 libraries loop forever inside a C call, where no
 signal reaches Python (a file with one byte changed was seen to). :func:`read_dataset`
