@@ -20,20 +20,12 @@ __all__ = ["DERIVATIVE_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_C
 
 #: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
 DERIVATIVE_LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
-
-
 DERIVATIVE_INPUTS = ("omega", "airspeed", "incidence", "collective")
-
-
 #: the air density, differentiated besides the inputs and the section parameters
 RHO = "rho"
-
-
 #: internal (core/vector.py): at the points with V = 0, the loads' slopes in the velocity along three rays
 #: from the same roots, in the same kernel pass (:func:`_jacobian`); 0 elsewhere
 STILL_AIR = "_still_air"
-
-
 #: the loads odd in V sin(beta), whose slope at rest is the edgewise one
 _ODD_LOADS = ("drag", "rolling_moment")
 
@@ -90,12 +82,8 @@ def _derivative_inputs(derivatives, params) -> tuple:
 #: factor, the loss switches): not differentiable as section constants (tests/test_derivatives.py checks
 #: that every other numeric field leaves the nodes unchanged)
 NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
-
-
 #: fields that enter neither the element's nor the annulus' constants: refused as derivatives
 NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance")
-
-
 #: a section parameter's step is _sensitivity.ONE_SIDED of max(|value|, PARAM_FLOOR)
 PARAM_FLOOR = 0.01
 

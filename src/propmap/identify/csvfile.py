@@ -44,8 +44,6 @@ __all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
 
 
 RPM = 2 * math.pi / 60
-
-
 #: valid ranges of the CSV columns: (low, high, low open, high open, unit)
 RANGES = {
     "rpm": (0.0, RPM_MAX, True, False, "rpm"),
@@ -61,12 +59,8 @@ RANGES = {
     "q": (-100.0, 100.0, False, False, "rad/s"),
     "r": (-100.0, 100.0, False, False, "rad/s"),
 }
-
-
 #: the longest column name accepted [characters]
 MAX_NAME = 255
-
-
 #: the most lines a CSV may have (bounds the time a 200 MiB file of tiny lines takes)
 MAX_LINES = 10_000_000
 

@@ -187,11 +187,7 @@ def _read_text(path, error, *, latin1: bool = True) -> str:
 
 
 _KEY_RE = re.compile(r"[A-Za-z][A-Za-z0-9 _./()-]*")
-
-
 _VALUE_RE = re.compile(r"[-+0-9.eE]+")
-
-
 _SEP_RE = re.compile(r"[=:]")
 
 

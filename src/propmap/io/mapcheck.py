@@ -41,21 +41,11 @@ __all__ = ["DIMS", "LOADS", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POI
 
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
-
-
 DIMS = ("rpm", "airspeed", "incidence_deg")
-
-
 #: the loads a map interpolates, the derived variables and the node flags
 LOADS = ("thrust", "drag", "torque", "rolling_moment")
-
-
 DERIVED = ("power", "CT", "CP")
-
-
 FLAGS = ("converged", "vortex_ring", "multiple_roots", "reverse_flow")
-
-
 UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W", "CT": "1", "CP": "1",
          "rpm": "rpm", "airspeed": "m/s", "incidence_deg": "degree", "omega": "rad/s", "incidence": "rad"}
 
@@ -63,37 +53,17 @@ UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "
 #: the most nodes a map may hold (all propellers of a ``prop`` dimension together): what
 #: ``propmap map`` builds in about 8 minutes on 2 cores, 1.3 GB of tables
 MAX_NODES = 20_000_000
-
-
 #: SI ranges of the axes: Omega [rad/s], V [m/s], beta [rad] (the solver's)
 OMEGA_RANGE = (0.1, 1e5)
-
-
 AIRSPEED_RANGE = (0.0, 500.0)
-
-
 INCIDENCE_RANGE = (0.0, math.pi)
-
-
 DIAMETER_RANGE = (0.5 * 0.0254, 100 * 0.0254)  # [m]
-
-
 N_BLADES_RANGE = (1, 100)
-
-
 MAX_STATIONS = 10_000
-
-
 CHECK_POINTS_MAX = 1_000_000
-
-
 #: largest |value| of each load at a node (the load data files' ranges, identify.csvfile.RANGES)
 LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4}
-
-
 _CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|power)_(rms|max|max_flagged)")
-
-
 _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_label", "params_json", "model",
          "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note",
          "model_uncertainty_axial", "model_uncertainty_off_axis")
