@@ -140,6 +140,16 @@ def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _ray_slope(m0, v, Om, sb, cb, h, y, mfac, ct, ch, emp):
+    """d(F_loss dT_BEMT/dy)/dV from rest along the ray (V sin beta, V cos beta) = V (sb, cb):
+    one-sided, second order, step ``h`` [m/s], ``m0`` the momentum side at V = 0 (the
+    empirical descent model switches on at V cos beta = 0, so only this side is defined)."""
+    m1 = _momentum_side(v, Om, h * sb, h * cb, y, mfac, ct, ch, emp)
+    m2 = _momentum_side(v, Om, 2.0 * h * sb, 2.0 * h * cb, y, mfac, ct, ch, emp)
+    return (4.0 * m1 - m2 - 3.0 * m0) / (2.0 * h)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _prandtl_slope(c, inv_sin):
     """dF/d(1/sin phi) of Prandtl's factor F = (2/pi) acos(exp(-c / sin phi)) (_physics.make_prandtl)."""
     x = min(np.exp(-c * inv_sin), 1.0 - 1e-16)
@@ -498,16 +508,15 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
             mom_vc = (_momentum_side(vj, om, vs, vc + hv, yj, mj, ctj, chj, emp)
                       - _momentum_side(vj, om, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
         Gv = Lv0 - mv
+        # at rest, the momentum side there: the base of the one-sided differences along the rays
+        m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
             if p == 3:  # the collective moves no momentum side
                 dmom = 0.0
-            elif p == 1 and one_sided:  # along the airspeed's ray from rest: one-sided, second order
-                m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
-                m1 = _momentum_side(vj, om, h_ray * sb, h_ray * cb, yj, mfac[j], ct[j], ch[j], emp)
-                m2_ = _momentum_side(vj, om, 2 * h_ray * sb, 2 * h_ray * cb, yj, mfac[j], ct[j], ch[j], emp)
-                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h_ray)
+            elif p == 1 and one_sided:  # along the airspeed's ray from rest
+                dmom = _ray_slope(m0, vj, om, sb, cb, h_ray, yj, mfac[j], ct[j], ch[j], emp)
             else:  # analytic or differenced above: the chain rule
                 dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
             dL0 = dB[0, 0] * e[p, 0] + dB[0, 1] * e[p, 1] + dB[0, 2] * e[p, 2] + dB[0, 3] * e[p, 3]
@@ -522,13 +531,10 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
             out[4, p, i] += w[j] * yj * dv / wy
         if n_rays == 3 and n_in >= 3 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
-            m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
             for k in range(3):
                 rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)
                 rc = 1.0 - k if k != 1 else 0.0
-                m1 = _momentum_side(vj, om, h_ray * rs, h_ray * rc, yj, mfac[j], ct[j], ch[j], emp)
-                m2_ = _momentum_side(vj, om, 2 * h_ray * rs, 2 * h_ray * rc, yj, mfac[j], ct[j], ch[j], emp)
-                dmom = (4.0 * m1 - m2_ - 3.0 * m0) / (2.0 * h_ray)
+                dmom = _ray_slope(m0, vj, om, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
                 dv = -(dB[0, 1] * rs + dB[0, 2] * rc - dmom) / Gv
                 c = n_all + k
                 out[0, c, i] += w[j] * (dB[0, 1] * rs + dB[0, 2] * rc + Lv0 * dv)

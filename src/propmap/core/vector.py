@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .airfoil import Air, AirfoilParams
+from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import STILL_AIR
 from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
@@ -23,8 +24,6 @@ __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient
 #: what ``rotor_loads`` differentiates for the velocity vector's Jacobian: the airspeed, the incidence and, at
 #: the points at rest, the slopes along three rays from the same roots (:func:`still_air_slopes`)
 VELOCITY_INPUTS = ("airspeed", "incidence", STILL_AIR)
-#: the loads odd in the in-plane speed V sin(beta) (the others are even)
-_ODD = ("drag", "rolling_moment")
 
 
 @dataclass(frozen=True)
