@@ -1,0 +1,108 @@
+"""Where propmap's body moments go wrong on the NeuroBEM flight logs, measured.
+
+Data: the four NeuroBEM segments (Bauersfeld et al., "NeuroBEM: Hybrid Aerodynamic
+Quadrotor Model", RSS 2021; ../shared/data/neurobem_flights), the bundled vehicle
+data/examples/neurobem_quadrotor.toml. The rotor and airframe parameters are the default
+flight fit to the forces of all four logs (``fit_flight``, 25 samples a second), so the
+moments are predicted by a model that never saw them.
+
+    .venv/bin/python tools/flight_moments.py      # about 1 minute on 2 cores
+
+Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
+
+1. roll and pitch moment rms of propmap, the zero predictor and NeuroBEM's BEM + NN (the
+   logs' columns 33-35, trained on these flights);
+2. the pitching-moment error against forward speed (|v_y| < 1.5 m/s) with the logged
+   rear-minus-front rotor speed, and the rolling-moment error against lateral speed;
+3. the same moments with the optional physics at the default fit's parameters (not
+   refitted): Pitt-Peters and Drees inflow, flapping blades;
+4. how much of the error a linear correction in the body velocity, the predicted moment
+   and the body rates removes, each log predicted by the correction fitted on the other
+   three (an upper bound on what a missing term of that form could give);
+5. the motor lag: force error and moment correlation with and without the 33 ms lag.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from propmap.identify.flight import fit_flight, fitted_body_drag, fitted_vehicle, flight_samples, predict_flight
+from propmap.io.flightlog import read_flight_log
+from propmap.vehicle import read_vehicle
+
+ROOT = Path(__file__).resolve().parents[1]
+LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
+VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
+
+
+def rms(a) -> float:
+    """Root mean square over every entry."""
+    return float(np.sqrt(np.mean(np.square(a))))
+
+
+def main() -> None:
+    vehicle = read_vehicle(VEHICLE)
+    logs = [read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))]
+    s = flight_samples(logs, vehicle)
+    res = fit_flight(s, vehicle)
+    body, veh = fitted_body_drag(res), fitted_vehicle(vehicle, res)
+    w = predict_flight(s, veh, res.params, body=body)
+    e = w.moment - s.moment
+    print(f"{s.n} samples; force F {rms(w.force - s.force):.3f} N (in-sample)")
+    print(f"1. roll+pitch moment rms [N m]: propmap {rms(e[:, :2]):.4f} (roll {rms(e[:, 0]):.4f}, pitch "
+          f"{rms(e[:, 1]):.4f}); zero {rms(s.moment[:, :2]):.4f}; NeuroBEM BEM + NN "
+          f"{rms(s.reference_moment[:, :2] - s.moment[:, :2]):.4f}")
+
+    vx, vy = s.velocity[:, 0], s.velocity[:, 1]
+    om = s.rotor_omega  # back-right, front-right, back-left, front-left
+    print("2. pitching-moment error by forward speed (|v_y| < 1.5 m/s): v_x [m/s], n, error [N m], measured "
+          "[N m], rear - front Omega [rad/s]")
+    for lo in range(-5, 6):
+        m = (vx >= lo) & (vx < lo + 1) & (np.abs(vy) < 1.5)
+        if m.sum() >= 10:
+            d = (om[m][:, [0, 2]].mean(1) - om[m][:, [1, 3]].mean(1)).mean()
+            print(f"   {lo:+d}..{lo + 1:+d}  {m.sum():4d}  {e[m, 1].mean():+.4f}  {s.moment[m, 1].mean():+.4f}  {d:+6.1f}")
+    X = np.c_[s.velocity, np.ones(s.n)]
+    c = [np.linalg.lstsq(X, e[:, k], rcond=None)[0] for k in (0, 1)]
+    print(f"   slopes: pitch error {c[1][0]:+.4f} N m per m/s of v_x, roll error {c[0][1]:+.4f} per m/s of v_y")
+
+    print("3. optional physics at the default fit's parameters (F [N], roll+pitch moment rms [N m], pitch slope):")
+    for inflow, comp in (("uniform", 0.0), ("pitt-peters", 0.0), ("drees", 0.0), ("uniform", 4.0),
+                         ("pitt-peters", 2.0)):
+        p = replace(res.params, inflow=inflow, flap_compliance=comp)
+        wp = predict_flight(s, veh, p, body=body)
+        ep = wp.moment - s.moment
+        slope = np.linalg.lstsq(X, ep[:, 1], rcond=None)[0][0]
+        print(f"   {inflow:<12} flap_compliance {comp:g}: F {rms(wp.force - s.force):.3f}, M {rms(ep[:, :2]):.4f}, "
+              f"{slope:+.4f}")
+
+    print("4. linear corrections of the roll and pitch errors, each log predicted from the other three [N m]:")
+    terms = {"velocity": [s.velocity],
+             "velocity, predicted moment, rates": [s.velocity, None, s.angular_velocity]}
+    for name, cols in terms.items():
+        out = np.empty((s.n, 2))
+        for k in (0, 1):
+            A = np.hstack([w.moment[:, [k]] if col is None else col for col in cols] + [np.ones((s.n, 1))])
+            for j in range(len(s.log_names)):
+                tr, te = s.log_index != j, s.log_index == j
+                coef = np.linalg.lstsq(A[tr], e[tr, k], rcond=None)[0]
+                out[te, k] = e[te, k] - A[te] @ coef
+        print(f"   after {name}: {rms(out):.4f}")
+
+    print("5. motor lag (first-order, on the logged speeds):")
+    for tau in (0.0, 0.033):
+        sl = flight_samples(logs, vehicle, motor_time_constant=tau)
+        wl = predict_flight(sl, veh, res.params, body=body)
+        r = [np.corrcoef(wl.moment[:, k], sl.moment[:, k])[0, 1] for k in (0, 1)]
+        slow = sl.speed < 1.0
+        a, b = wl.moment[slow, 0], sl.moment[slow, 0]
+        print(f"   tau {tau * 1e3:4.1f} ms: F {rms(wl.force - sl.force):.3f} N; correlation of predicted and "
+              f"measured roll {r[0]:.2f}, pitch {r[1]:.2f}; below 1 m/s roll correlation "
+              f"{np.corrcoef(a, b)[0, 1]:.2f}, measured / predicted {(a @ b) / (a @ a):.2f}")
+
+
+if __name__ == "__main__":
+    main()
