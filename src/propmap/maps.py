@@ -1,5 +1,5 @@
 """Rotor maps: the model tabulated over (rpm, airspeed, incidence) for real-time use (this
-module builds and checks them; rotormap.py evaluates them, and its names are re-exported here).
+module builds them; rotormap.py evaluates and checks them, and its names are re-exported here).
 
 The paper ends with "since the computation time is in the order of seconds, a
 look-up-table can be used for real-time purposes" (Gill & D'Andrea 2017, Sec. V). A map is
@@ -24,13 +24,12 @@ import numpy as np
 
 from . import __version__
 from .core.airfoil import Air, SectionParams
-from .core.geometry import Propeller, _real
+from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
-from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_dataset, check_propeller,
-                          map_model)
+from .io.mapcheck import CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_integer, check_propeller
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.uncertainty import model_uncertainty
-from .rotormap import INTERPOLATIONS, RPM, MapLoads, MapWrench, RotorMap
+from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
 
 __all__ = ["MAX_NODES", "MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "read_sidecar",
            "scheduler_client", "write_map", "write_sidecar"]
@@ -81,14 +80,6 @@ def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
     if np.any(np.diff(a) <= 0):
         raise ValueError(f"{name} must be strictly increasing")
     return a
-
-
-def _integer(name: str, value, lo: int, hi: int) -> int:
-    """``value`` as an int in [lo, hi] (an integral float such as 2000.0 too, never a bool)."""
-    x = _real(value)
-    if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
-        raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
-    return int(value)
 
 
 #: seconds to wait for a dask.distributed scheduler
@@ -223,9 +214,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
     V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
     b = _check_axis("incidence", incidence, 0.0, math.pi, "rad")
-    chunk_points = _integer("chunk_points", chunk_points, 1, MAX_NODES)
-    n_check = _integer("n_check", n_check, 0, CHECK_POINTS_MAX)
-    seed = _integer("seed", seed, 0, 2**63 - 1)
+    chunk_points = check_integer("chunk_points", chunk_points, 1, MAX_NODES)
+    n_check = check_integer("n_check", n_check, 0, CHECK_POINTS_MAX)
+    seed = check_integer("seed", seed, 0, 2**63 - 1)
     nodes = om.size * V.size * b.size
     if nodes > MAX_NODES:
         raise ValueError(f"the grid omega x airspeed x incidence has {om.size} x {V.size} x {b.size} = {nodes:,} "
@@ -320,84 +311,3 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
                                   discretization=discretization))
     return ds
-
-
-def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=None, air=None,
-              discretization=None) -> dict:
-    """Interpolation error of a map against the full model at random off-grid points.
-
-    Points are uniform in the grid's box. Errors are normalised per point: T and P by the
-    static thrust and power at the point's Omega, Q by the static torque, D and M_R by the
-    largest |D| (|M_R|) of the map at the two rpm rows around the point. Points flagged by
-    the evaluator (a node within one node of their cell in vortex_ring, with multiple
-    roots, or not converged), or that the model flags so, are counted apart ("flagged
-    regions").
-
-    Parameters
-    ----------
-    ds : xarray.Dataset
-        A map from :func:`build_map` (or read back from netCDF).
-    n_check : int
-        Number of points, in [1, 1,000,000].
-    seed : int
-        >= 0.
-    propeller, params, air, discretization
-        The model; default: the one recorded in the map.
-
-    Returns
-    -------
-    dict
-        ``check_points``, ``check_points_flagged``, ``check_seed``, ``check_normalisation``
-        and, per interpolation m (linear, cubic) and variable (thrust, drag, torque,
-        rolling_moment, power), ``check_<m>_<var>_rms`` and ``check_<m>_<var>_max``
-        outside flagged regions, and ``check_<m>_<var>_max_flagged`` inside them (NaN if
-        there are none); both methods on the same points and flagged regions.
-
-    Raises
-    ------
-    ValueError
-        ``n_check`` or ``seed`` out of range; a map that does not record its model (when
-        one is not given) or is malformed (io.mapcheck.check_dataset).
-    """
-    n_check = _integer("n_check", n_check, 1, CHECK_POINTS_MAX)
-    seed = _integer("seed", seed, 0, 2**63 - 1)
-    check_dataset(ds)
-    if None in (propeller, params, air, discretization):
-        model = map_model(ds.attrs)
-        prop = propeller or model[0]
-        params = params or model[1]
-        air = air or model[2]
-        disc = discretization or model[3]
-    else:
-        prop, disc = propeller, discretization
-    evaluators = {m: RotorMap(ds, m) for m in INTERPOLATIONS}
-    rm = evaluators["linear"]
-    rng = np.random.default_rng(seed)
-    om = rng.uniform(rm.omega[0], rm.omega[-1], n_check)
-    V = rng.uniform(rm.airspeed[0], rm.airspeed[-1], n_check)
-    b = rng.uniform(rm.incidence[0], rm.incidence[-1], n_check)
-    full = rotor_loads(prop, params, om, V, b, air=air, discretization=disc, on_failure="flag", radial=False)
-    static = rotor_loads(prop, params, om, 0.0, 0.0, air=air, discretization=disc, on_failure="flag", radial=False)
-    row = np.clip(np.searchsorted(rm.omega, om, side="right") - 1, 0, rm.omega.size - 2)
-    norm = {"thrust": np.abs(static.thrust), "torque": np.abs(static.torque), "power": np.abs(static.power)}
-    for k in ("drag", "rolling_moment"):
-        peak = np.max(np.abs(ds[k].values), axis=(1, 2))
-        norm[k] = np.maximum(peak[row], peak[row + 1])
-    out = {"check_points": int(n_check), "check_seed": int(seed),
-           "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
-                                  "torque, D and M_R by the largest |D|, |M_R| of the map at the rpm rows around it; "
-                                  "flagged: the point, or a node within one node of its cell, in vortex ring, "
-                                  "with multiple roots or not converged"}
-    for method, evaluator in evaluators.items():
-        prefix = f"check_{method}_"
-        got = evaluator.loads(om, V, b)
-        # both methods flag the same cells (RotorMap), so the same points
-        flagged = got.flagged | ~full.converged | full.vortex_ring | full.multiple_roots
-        out["check_points_flagged"] = int(flagged.sum())
-        for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
-            err = np.abs(getattr(got, k) - getattr(full, k)) / np.where(norm[k] > 0, norm[k], np.inf)
-            ok = err[~flagged]
-            out[f"{prefix}{k}_rms"] = float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan
-            out[f"{prefix}{k}_max"] = float(np.max(ok)) if ok.size else math.nan
-            out[f"{prefix}{k}_max_flagged"] = float(np.nanmax(err[flagged])) if flagged.any() else math.nan
-    return out

@@ -3,7 +3,9 @@
 Cubic (default) or multilinear interpolation of T, D, Q and M_R divided by
 (Omega R)^2 + V^2 (compiled, core/_interp.py), multiplied back, with an explicit out-of-grid
 policy; scalar fast paths for one point and for one rotor's force and moment vectors.
-docs/simulators.md has the conventions and the measured speeds.
+docs/simulators.md has the conventions and the measured speeds. :func:`check_map` measures
+a map's interpolation error against the model that made it (here, so that
+:meth:`RotorMap.check` needs no import of the module that builds maps).
 """
 
 from __future__ import annotations
@@ -14,10 +16,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .io.mapcheck import LOADS, check_dataset
+from .core.solver import rotor_loads
+from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
 from .io.mapfile import read_dataset
 
-__all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap"]
+__all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap", "check_map"]
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
 POLICIES = ("raise", "clip", "nan")
@@ -374,7 +377,86 @@ class RotorMap:
                          MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0])))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
-        """:func:`propmap.maps.check_map` with the model recorded in the map."""
-        from .maps import check_map
-
+        """:func:`check_map` with the model recorded in the map."""
         return check_map(self.dataset, n_check, seed=seed)
+
+
+def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=None, air=None,
+              discretization=None) -> dict:
+    """Interpolation error of a map against the full model at random off-grid points.
+
+    Points are uniform in the grid's box. Errors are normalised per point: T and P by the
+    static thrust and power at the point's Omega, Q by the static torque, D and M_R by the
+    largest |D| (|M_R|) of the map at the two rpm rows around the point. Points flagged by
+    the evaluator (a node within one node of their cell in vortex_ring, with multiple
+    roots, or not converged), or that the model flags so, are counted apart ("flagged
+    regions").
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A map from :func:`propmap.maps.build_map` (or read back from netCDF).
+    n_check : int
+        Number of points, in [1, 1,000,000].
+    seed : int
+        >= 0.
+    propeller, params, air, discretization
+        The model; default: the one recorded in the map.
+
+    Returns
+    -------
+    dict
+        ``check_points``, ``check_points_flagged``, ``check_seed``, ``check_normalisation``
+        and, per interpolation m (linear, cubic) and variable (thrust, drag, torque,
+        rolling_moment, power), ``check_<m>_<var>_rms`` and ``check_<m>_<var>_max``
+        outside flagged regions, and ``check_<m>_<var>_max_flagged`` inside them (NaN if
+        there are none); both methods on the same points and flagged regions.
+
+    Raises
+    ------
+    ValueError
+        ``n_check`` or ``seed`` out of range; a map that does not record its model (when
+        one is not given) or is malformed (io.mapcheck.check_dataset).
+    """
+    n_check = check_integer("n_check", n_check, 1, CHECK_POINTS_MAX)
+    seed = check_integer("seed", seed, 0, 2**63 - 1)
+    check_dataset(ds)
+    if None in (propeller, params, air, discretization):
+        model = map_model(ds.attrs)
+        prop = propeller or model[0]
+        params = params or model[1]
+        air = air or model[2]
+        disc = discretization or model[3]
+    else:
+        prop, disc = propeller, discretization
+    evaluators = {m: RotorMap(ds, m) for m in INTERPOLATIONS}
+    rm = evaluators["linear"]
+    rng = np.random.default_rng(seed)
+    om = rng.uniform(rm.omega[0], rm.omega[-1], n_check)
+    V = rng.uniform(rm.airspeed[0], rm.airspeed[-1], n_check)
+    b = rng.uniform(rm.incidence[0], rm.incidence[-1], n_check)
+    full = rotor_loads(prop, params, om, V, b, air=air, discretization=disc, on_failure="flag", radial=False)
+    static = rotor_loads(prop, params, om, 0.0, 0.0, air=air, discretization=disc, on_failure="flag", radial=False)
+    row = np.clip(np.searchsorted(rm.omega, om, side="right") - 1, 0, rm.omega.size - 2)
+    norm = {"thrust": np.abs(static.thrust), "torque": np.abs(static.torque), "power": np.abs(static.power)}
+    for k in ("drag", "rolling_moment"):
+        peak = np.max(np.abs(ds[k].values), axis=(1, 2))
+        norm[k] = np.maximum(peak[row], peak[row + 1])
+    out = {"check_points": int(n_check), "check_seed": int(seed),
+           "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
+                                  "torque, D and M_R by the largest |D|, |M_R| of the map at the rpm rows around it; "
+                                  "flagged: the point, or a node within one node of its cell, in vortex ring, "
+                                  "with multiple roots or not converged"}
+    for method, evaluator in evaluators.items():
+        prefix = f"check_{method}_"
+        got = evaluator.loads(om, V, b)
+        # both methods flag the same cells (RotorMap), so the same points
+        flagged = got.flagged | ~full.converged | full.vortex_ring | full.multiple_roots
+        out["check_points_flagged"] = int(flagged.sum())
+        for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
+            err = np.abs(getattr(got, k) - getattr(full, k)) / np.where(norm[k] > 0, norm[k], np.inf)
+            ok = err[~flagged]
+            out[f"{prefix}{k}_rms"] = float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan
+            out[f"{prefix}{k}_max"] = float(np.max(ok)) if ok.size else math.nan
+            out[f"{prefix}{k}_max_flagged"] = float(np.nanmax(err[flagged])) if flagged.any() else math.nan
+    return out

@@ -36,8 +36,10 @@ import re
 
 import numpy as np
 
+from ..core.geometry import _real
+
 __all__ = ["DIMS", "LOADS", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX", "check_propeller",
-           "check_attributes", "check_dataset", "map_model"]
+           "check_attributes", "check_dataset", "check_integer", "map_model"]
 
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
@@ -315,3 +317,17 @@ def map_model(attrs: dict):
     air = Air(rho=float(attrs["rho_kg_m3"]), mu=float(attrs["mu_Pa_s"]),
               speed_of_sound=float(attrs["speed_of_sound_m_s"]))
     return prop, params, air, Discretization(int(attrs["n_radial"]), int(attrs["n_azimuth"]))
+
+
+def check_integer(name: str, value, lo: int, hi: int) -> int:
+    """``value`` as an int in [lo, hi] (an integral float such as 2000.0 too, never a bool).
+
+    Raises
+    ------
+    ValueError
+        Naming ``name`` and the range.
+    """
+    x = _real(value)
+    if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
+        raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
+    return int(value)
