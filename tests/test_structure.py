@@ -1,7 +1,8 @@
 """The package's import structure (the brief's "core <- io <- identify, maps, vehicle <- cli").
 
 Every import is read from the source (module level and inside functions alike, with
-:mod:`ast`), so a function-local import that closes a cycle counts as one.
+:mod:`ast`), so a function-local import that closes a cycle counts as one; imports under
+``if TYPE_CHECKING:`` (annotations only, never executed) do not.
 """
 
 from __future__ import annotations
@@ -33,7 +34,13 @@ def _modules() -> dict[str, tuple[Path, bool]]:
 def _imports(name: str, path: Path, package: bool, modules) -> set[str]:
     """The propmap modules ``name`` imports anywhere in its source."""
     found = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    typing_only = {id(n) for block in ast.walk(tree) if isinstance(block, ast.If)
+                   and getattr(block.test, "id", getattr(block.test, "attr", None)) == "TYPE_CHECKING"
+                   for stmt in block.body for n in ast.walk(stmt)}
+    for node in ast.walk(tree):
+        if id(node) in typing_only:
+            continue
         targets = []
         if isinstance(node, ast.Import):
             targets = [a.name for a in node.names]

@@ -23,7 +23,8 @@ from pathlib import Path
 import numpy as np
 
 import propmap as pm
-from propmap.identify.flight import _baseline_columns, _hub_velocities, flight_samples
+from propmap.identify.flight import flight_samples
+from propmap.identify.flight_scores import _baseline_columns, _hub_velocities
 from propmap.io.calibration import calibration
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle

@@ -25,6 +25,9 @@ Samples are taken at ``rate_hz`` (25 Hz by default, from logs at hundreds of Hz)
 measured forces of the NeuroBEM logs carry no content above 2 Hz that a quasi-steady
 rotor model can follow (docs/flight.md), and the cost of a fit is proportional to the
 samples.
+
+The scores of a prediction (errors, baselines, speed bands) are in identify/flight_scores.py;
+their names are re-exported here.
 """
 
 from __future__ import annotations
@@ -40,6 +43,8 @@ from ..core.solver import Discretization, differentiable, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .engine import _attach_jacobian, _finish, _fit_with_continuation, _params_from, _with_prior
+from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
+                            speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FitOptions, _check_names
 from .result import FitResult
 
@@ -60,8 +65,6 @@ CG_BOUND = 0.05
 #: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
 #: rotor thrust (docs/flight.md), far inside the flight data's model error
 FLIGHT_DISCRETIZATION = Discretization(24, 8)
-#: speed bands of the report [m/s]
-SPEED_BANDS = ((0.0, 3.0), (3.0, 6.0), (6.0, 9.0), (9.0, math.inf))
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
 
@@ -428,95 +431,6 @@ def fitted_body_drag(result: FitResult) -> BodyDrag | None:
     """The airframe drag of a flight fit's result (None for other fits)."""
     b = result.extra.get("body_drag")
     return None if b is None else BodyDrag(drag_area=tuple(b["drag_area"]), wash_factor=b["wash_factor"])
-
-
-# ---------------------------------------------------------------------------- errors
-
-def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None) -> dict:
-    """Rms errors of a prediction against the measured force (and moment).
-
-    The pooled force error is NeuroBEM's Table II metric: F = sqrt(mean of the three
-    axes' mean square errors) [N]; likewise M [N m].
-
-    Returns
-    -------
-    dict
-        ``Fx, Fy, Fz, F`` [N], ``n``, and with moments ``Mx, My, Mz, M`` [N m] and
-        ``M_zero`` (the zero-moment predictor's pooled error).
-    """
-    e = np.asarray(predicted_force) - samples.force
-    ms = np.mean(e**2, axis=0) if e.size else np.full(3, np.nan)
-    out = {"Fx": float(np.sqrt(ms[0])), "Fy": float(np.sqrt(ms[1])), "Fz": float(np.sqrt(ms[2])),
-           "F": float(np.sqrt(np.mean(ms))), "n": int(samples.n)}
-    if predicted_moment is not None and samples.moment is not None:
-        em = np.asarray(predicted_moment) - samples.moment
-        mm = np.mean(em**2, axis=0)
-        out.update({"Mx": float(np.sqrt(mm[0])), "My": float(np.sqrt(mm[1])), "Mz": float(np.sqrt(mm[2])),
-                    "M": float(np.sqrt(np.mean(mm))),
-                    "M_zero": float(np.sqrt(np.mean(samples.moment**2)))})
-    return out
-
-
-def _hub_velocities(samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
-    pos = np.array([r.position for r in vehicle.rotors])
-    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], pos[None])
-
-
-#: the baselines of the report: (key, label, terms)
-BASELINES = (("k_omega2", "T = k Omega^2", ("thrust",)),
-             ("rotor_drag", "k Omega^2 + linear rotor drag c Omega v_ip", ("thrust", "drag")),
-             ("rotorpy", "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)", ("thrust", "drag", "kz")))
-
-
-def _baseline_columns(samples: FlightSamples, vehicle: Vehicle, terms) -> np.ndarray:
-    """Design matrix, shape (N, 3, n_terms): each term's body force per unit coefficient."""
-    axes = np.array([r.axis for r in vehicle.rotors])  # (n_rot, 3)
-    om = samples.rotor_omega
-    V = _hub_velocities(samples, vehicle)
-    v_ax = np.einsum("nkj,kj->nk", V, axes)
-    v_ip = V - v_ax[..., None] * axes[None]
-    cols = []
-    for t in terms:
-        if t == "thrust":
-            cols.append(np.einsum("nk,kj->nj", om**2, axes))
-        elif t == "drag":
-            cols.append(-np.einsum("nk,nkj->nj", om, v_ip))
-        else:  # RotorPy's k_z: thrust reduced by k_z Omega v_z along each axis
-            cols.append(-np.einsum("nk,kj->nj", om * v_ax, axes))
-    return np.stack(cols, axis=-1)
-
-
-def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
-    """The simple models, fitted by linear least squares to the training samples' force.
-
-    Returns
-    -------
-    dict
-        key -> {"label", "terms", "coefficients"} for each of :data:`BASELINES`.
-    """
-    out = {}
-    for key, label, terms in BASELINES:
-        X = _baseline_columns(train, vehicle, terms).reshape(-1, len(terms))
-        coef = np.linalg.lstsq(X, train.force.reshape(-1), rcond=None)[0]
-        out[key] = {"label": label, "terms": list(terms), "coefficients": [float(c) for c in coef]}
-    return out
-
-
-def baseline_force(baseline: dict, samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
-    """A fitted baseline's body force at the samples [N], shape (N, 3)."""
-    X = _baseline_columns(samples, vehicle, baseline["terms"])
-    return X @ np.asarray(baseline["coefficients"])
-
-
-def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
-    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty)."""
-    sp = samples.speed
-    rows = []
-    for lo, hi in SPEED_BANDS:
-        m = (sp >= lo) & (sp < hi)
-        rows.append({"band_m_s": [lo, None if math.isinf(hi) else hi], "n": int(m.sum()),
-                     "F": flight_errors(np.asarray(predicted_force)[m], samples.select(m))["F"] if m.any() else None})
-    return rows
 
 
 def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams | None = None,

@@ -1,0 +1,109 @@
+"""Scores of a flight-log prediction (identify/flight.py fits and predicts): the force and
+moment errors in NeuroBEM's Table II metric, the simple baselines fitted by linear least
+squares (T = k Omega^2; + a linear rotor drag; + RotorPy's k_z) and the errors by speed band
+(docs/flight.md).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..vehicle import Vehicle
+
+if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
+    from .flight import FlightSamples
+
+__all__ = ["flight_errors", "fit_baselines", "baseline_force", "speed_band_errors", "SPEED_BANDS", "BASELINES"]
+
+#: speed bands of the report [m/s]
+SPEED_BANDS = ((0.0, 3.0), (3.0, 6.0), (6.0, 9.0), (9.0, math.inf))
+
+
+def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None) -> dict:
+    """Rms errors of a prediction against the measured force (and moment).
+
+    The pooled force error is NeuroBEM's Table II metric: F = sqrt(mean of the three
+    axes' mean square errors) [N]; likewise M [N m].
+
+    Returns
+    -------
+    dict
+        ``Fx, Fy, Fz, F`` [N], ``n``, and with moments ``Mx, My, Mz, M`` [N m] and
+        ``M_zero`` (the zero-moment predictor's pooled error).
+    """
+    e = np.asarray(predicted_force) - samples.force
+    ms = np.mean(e**2, axis=0) if e.size else np.full(3, np.nan)
+    out = {"Fx": float(np.sqrt(ms[0])), "Fy": float(np.sqrt(ms[1])), "Fz": float(np.sqrt(ms[2])),
+           "F": float(np.sqrt(np.mean(ms))), "n": int(samples.n)}
+    if predicted_moment is not None and samples.moment is not None:
+        em = np.asarray(predicted_moment) - samples.moment
+        mm = np.mean(em**2, axis=0)
+        out.update({"Mx": float(np.sqrt(mm[0])), "My": float(np.sqrt(mm[1])), "Mz": float(np.sqrt(mm[2])),
+                    "M": float(np.sqrt(np.mean(mm))),
+                    "M_zero": float(np.sqrt(np.mean(samples.moment**2)))})
+    return out
+
+
+def _hub_velocities(samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
+    pos = np.array([r.position for r in vehicle.rotors])
+    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], pos[None])
+
+
+#: the baselines of the report: (key, label, terms)
+BASELINES = (("k_omega2", "T = k Omega^2", ("thrust",)),
+             ("rotor_drag", "k Omega^2 + linear rotor drag c Omega v_ip", ("thrust", "drag")),
+             ("rotorpy", "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)", ("thrust", "drag", "kz")))
+
+
+def _baseline_columns(samples: FlightSamples, vehicle: Vehicle, terms) -> np.ndarray:
+    """Design matrix, shape (N, 3, n_terms): each term's body force per unit coefficient."""
+    axes = np.array([r.axis for r in vehicle.rotors])  # (n_rot, 3)
+    om = samples.rotor_omega
+    V = _hub_velocities(samples, vehicle)
+    v_ax = np.einsum("nkj,kj->nk", V, axes)
+    v_ip = V - v_ax[..., None] * axes[None]
+    cols = []
+    for t in terms:
+        if t == "thrust":
+            cols.append(np.einsum("nk,kj->nj", om**2, axes))
+        elif t == "drag":
+            cols.append(-np.einsum("nk,nkj->nj", om, v_ip))
+        else:  # RotorPy's k_z: thrust reduced by k_z Omega v_z along each axis
+            cols.append(-np.einsum("nk,kj->nj", om * v_ax, axes))
+    return np.stack(cols, axis=-1)
+
+
+def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
+    """The simple models, fitted by linear least squares to the training samples' force.
+
+    Returns
+    -------
+    dict
+        key -> {"label", "terms", "coefficients"} for each of :data:`BASELINES`.
+    """
+    out = {}
+    for key, label, terms in BASELINES:
+        X = _baseline_columns(train, vehicle, terms).reshape(-1, len(terms))
+        coef = np.linalg.lstsq(X, train.force.reshape(-1), rcond=None)[0]
+        out[key] = {"label": label, "terms": list(terms), "coefficients": [float(c) for c in coef]}
+    return out
+
+
+def baseline_force(baseline: dict, samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
+    """A fitted baseline's body force at the samples [N], shape (N, 3)."""
+    X = _baseline_columns(samples, vehicle, baseline["terms"])
+    return X @ np.asarray(baseline["coefficients"])
+
+
+def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
+    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty)."""
+    sp = samples.speed
+    rows = []
+    for lo, hi in SPEED_BANDS:
+        m = (sp >= lo) & (sp < hi)
+        rows.append({"band_m_s": [lo, None if math.isinf(hi) else hi], "n": int(m.sum()),
+                     "F": flight_errors(np.asarray(predicted_force)[m], samples.select(m))["F"] if m.any() else None})
+    return rows
