@@ -384,7 +384,7 @@ def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=
     """The air of a command: the parameter set's ``air``, or what the air options give.
 
     ``--rho`` replaces the density only; ``--temperature-c`` with ``--pressure-pa`` gives
-    dry air at those conditions and ``--altitude-m`` the ISA (core.airfoil.Air). One of the
+    dry air at those conditions and ``--altitude-m`` the ISA (core.air.Air). One of the
     three ways at a time.
 
     Raises
@@ -393,7 +393,7 @@ def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=
         Options of two ways, a temperature without a pressure (or the reverse), a value out
         of its range (named with the option).
     """
-    from ..core.airfoil import Air
+    from ..core.air import Air
 
     ways = [w for w, given_ in (("--rho", rho is not None),
                                 ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),

@@ -17,16 +17,18 @@ Two section models, selected by the parameter record (``section_model``):
 Both records also carry the switches of Prandtl's tip and hub loss (``tip_loss``,
 ``hub_loss``; ``_physics.loss_factor``) and the rotor-level options of :class:`RotorOptions`
 (inflow model, blade flapping, collective offset; docs/models.md), which default to the
-paper's rigid blades with an azimuth-independent inflow.
+paper's rigid blades with an azimuth-independent inflow. The records' air (:class:`Air`) is
+defined in core/air.py and re-exported here.
 """
 
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import asdict, dataclass, field, fields, replace
 
 import numpy as np
+
+from .air import Air, _check_finite
 
 __all__ = [
     "RotorOptions",
@@ -48,136 +50,6 @@ DESCENT_MODELS = ("glauert", "empirical")
 #: valid ranges of the rotor options (SI)
 FLAP_COMPLIANCE_MAX = 1e3  # [rad/(N m)]
 COLLECTIVE_MAX = math.radians(30.0)  # [rad]
-
-
-def _check_finite(name: str, value: float, *, low: float | None = None,
-                  high: float | None = None, low_open: bool = False) -> float:
-    """Return ``float(value)`` or raise ValueError naming ``name`` and the valid range.
-
-    Only real numbers are accepted: a bool or a string (``True``, ``"5.3"``) is an error,
-    not silently converted.
-    """
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be a number, got {value!r}")
-    try:
-        x = float(value)
-    except (TypeError, ValueError, OverflowError):
-        raise ValueError(f"{name} must be a finite number, got {value!r}") from None
-    if not math.isfinite(x):
-        raise ValueError(f"{name} must be finite, got {x!r}")
-    if low is not None and (x < low or (low_open and x == low)):
-        bracket = "(" if low_open else "["
-        hi = "inf)" if high is None else f"{high}]"
-        raise ValueError(f"{name} must be in {bracket}{low}, {hi}, got {x!r}")
-    if high is not None and x > high:
-        lo = "(-inf" if low is None else ("(" if low_open else "[") + f"{low}"
-        raise ValueError(f"{name} must be in {lo}, {high}], got {x!r}")
-    return x
-
-
-@dataclass(frozen=True)
-class Air:
-    """Air properties (footnote 2 of Gill & D'Andrea 2017).
-
-    Parameters
-    ----------
-    rho : float
-        Density [kg/m^3], > 0. Default 1.225.
-    mu : float
-        Dynamic viscosity [Pa s], > 0. Default 1.983e-5.
-    speed_of_sound : float
-        [m/s], > 0; used by the cambered section's compressibility correction. Default
-        340.3 (ISA sea level).
-
-    Raises
-    ------
-    ValueError
-        If a value is non-finite or not positive.
-    """
-
-    rho: float = 1.225
-    mu: float = 1.983e-5
-    speed_of_sound: float = 340.3
-
-    def __post_init__(self) -> None:
-        for name in ("rho", "mu", "speed_of_sound"):
-            object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0, low_open=True))
-
-    @classmethod
-    def from_conditions(cls, temperature: float, pressure: float) -> "Air":
-        """Dry air at a measured temperature and static pressure.
-
-        rho = p / (R T) with R = 287.05287 J/(kg K); mu by Sutherland's law,
-        mu = 1.458e-6 T^1.5 / (T + 110.4); speed of sound sqrt(1.4 R T) (the constants of
-        the U.S. Standard Atmosphere, 1976, and ISO 2533:1975). Humidity is left out: at
-        25 degC and 60% relative humidity it lowers rho by 0.8%.
-
-        Parameters
-        ----------
-        temperature : float
-            Static temperature T [K], in [180, 350].
-        pressure : float
-            Static pressure p [Pa], in [1e3, 1.2e5].
-
-        Raises
-        ------
-        ValueError
-            Naming the value out of its range.
-        """
-        T = _check_range("temperature", temperature, *TEMPERATURE_RANGE_K, "K")
-        p = _check_range("pressure", pressure, *PRESSURE_RANGE_PA, "Pa")
-        return cls(rho=p / (R_AIR * T), mu=SUTHERLAND_C1 * T**1.5 / (T + SUTHERLAND_S),
-                   speed_of_sound=math.sqrt(GAMMA_AIR * R_AIR * T))
-
-    @classmethod
-    def isa(cls, altitude: float) -> "Air":
-        """The International Standard Atmosphere at a geopotential altitude.
-
-        Troposphere (h <= 11 km): T = 288.15 K - 0.0065 K/m h, p = 101325 Pa (T / 288.15
-        K)^5.255877; the isothermal layer above it to 20 km: T = 216.65 K,
-        p = 22632.06 Pa exp(-g0 (h - 11000 m) / (R T)) (ISO 2533:1975; U.S. Standard
-        Atmosphere, 1976); then :meth:`from_conditions`. Sea level: rho 1.2250 kg/m^3, mu
-        1.789e-5 Pa s, speed of sound 340.29 m/s.
-
-        Parameters
-        ----------
-        altitude : float
-            h [m], in [-500, 20000].
-
-        Raises
-        ------
-        ValueError
-            ``altitude`` out of its range or not a number.
-        """
-        h = _check_range("altitude", altitude, *ALTITUDE_RANGE_M, "m")
-        if h <= 11000.0:
-            T = 288.15 - 0.0065 * h
-            p = 101325.0 * (T / 288.15) ** (G0 / (0.0065 * R_AIR))
-        else:
-            T = 216.65
-            p = 22632.06 * math.exp(-G0 * (h - 11000.0) / (R_AIR * T))
-        return cls.from_conditions(T, p)
-
-
-#: constants of dry air (U.S. Standard Atmosphere, 1976; ISO 2533:1975)
-R_AIR = 287.05287  # [J/(kg K)]
-GAMMA_AIR = 1.4
-SUTHERLAND_C1 = 1.458e-6  # [kg/(m s K^0.5)]
-SUTHERLAND_S = 110.4  # [K]
-G0 = 9.80665  # [m/s^2]
-#: valid ranges of Air.from_conditions and Air.isa
-TEMPERATURE_RANGE_K = (180.0, 350.0)
-PRESSURE_RANGE_PA = (1e3, 1.2e5)
-ALTITUDE_RANGE_M = (-500.0, 20000.0)
-
-
-def _check_range(name: str, value, lo: float, hi: float, unit: str) -> float:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
-    x = float(value)
-    if not (math.isfinite(x) and lo <= x <= hi):
-        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
-    return x
 
 
 #: the fields of the section records that are not model parameters: the set's air and label
