@@ -16,9 +16,9 @@ Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
    rear-minus-front rotor speed, and the rolling-moment error against lateral speed;
 3. the same moments with the optional physics at the default fit's parameters (not
    refitted): Pitt-Peters and Drees inflow, flapping blades;
-4. how much of the error a linear correction in the body velocity, the predicted moment
-   and the body rates removes, each log predicted by the correction fitted on the other
-   three (an upper bound on what a missing term of that form could give);
+4. how much of the error a linear correction in the body velocity, a gain on the predicted
+   moment and the body rates removes, each log predicted by the correction fitted on the
+   other three (what a missing term of that form could give), with and without the lag;
 5. the motor lag: force error and moment correlation with and without the 33 ms lag.
 """
 
@@ -80,17 +80,21 @@ def main() -> None:
               f"{slope:+.4f}")
 
     print("4. linear corrections of the roll and pitch errors, each log predicted from the other three [N m]:")
-    terms = {"velocity": [s.velocity],
-             "velocity, predicted moment, rates": [s.velocity, None, s.angular_velocity]}
-    for name, cols in terms.items():
-        out = np.empty((s.n, 2))
-        for k in (0, 1):
-            A = np.hstack([w.moment[:, [k]] if col is None else col for col in cols] + [np.ones((s.n, 1))])
-            for j in range(len(s.log_names)):
-                tr, te = s.log_index != j, s.log_index == j
-                coef = np.linalg.lstsq(A[tr], e[tr, k], rcond=None)[0]
-                out[te, k] = e[te, k] - A[te] @ coef
-        print(f"   after {name}: {rms(out):.4f}")
+    for tau in (vehicle.motor_time_constant, 0.0):
+        sl = flight_samples(logs, vehicle, motor_time_constant=tau)
+        wl = predict_flight(sl, veh, res.params, body=body)
+        one = np.ones((sl.n, 1))
+        terms = {"velocity": lambda k: np.c_[sl.velocity, one],
+                 "gain on the predicted moment, velocity": lambda k: np.c_[wl.moment[:, k], sl.velocity, one],
+                 "gain, velocity, body rates": lambda k: np.c_[wl.moment[:, k], sl.velocity, sl.angular_velocity, one]}
+        for name, design in terms.items():
+            out = np.empty((sl.n, 2))
+            for k in (0, 1):
+                A, err = design(k), wl.moment[:, k] - sl.moment[:, k]
+                for j in range(len(sl.log_names)):
+                    tr, te = sl.log_index != j, sl.log_index == j
+                    out[te, k] = err[te] - A[te] @ np.linalg.lstsq(A[tr], err[tr], rcond=None)[0]
+            print(f"   motor lag {tau * 1e3:4.1f} ms, after {name}: {rms(out):.4f}")
 
     print("5. motor lag (first-order, on the logged speeds):")
     for tau in (0.0, 0.033):
