@@ -6,7 +6,7 @@ data/examples/neurobem_quadrotor.toml. The rotor and airframe parameters are the
 flight fit to the forces of all four logs (``fit_flight``, 25 samples a second), so the
 moments are predicted by a model that never saw them.
 
-    .venv/bin/python tools/flight_moments.py      # about 1 minute on 2 cores
+    .venv/bin/python tools/flight_moments.py      # about 15 s on 2 cores
 
 Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
 
@@ -19,7 +19,10 @@ Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
 4. how much of the error a linear correction in the body velocity, a gain on the predicted
    moment and the body rates removes, each log predicted by the correction fitted on the
    other three (what a missing term of that form could give), with and without the lag;
-5. the motor lag: force error and moment correlation with and without the 33 ms lag.
+5. the motor lag: force error and moment correlation with and without the 33 ms lag;
+6. the gain of the control moments against frequency: measured / predicted roll and pitch
+   moment at 400 Hz (no lag, a linear velocity term removed) with the prediction low-passed
+   (second-order Butterworth, zero phase) at 30, 15 and 8 Hz.
 """
 
 from __future__ import annotations
@@ -106,6 +109,26 @@ def main() -> None:
         print(f"   tau {tau * 1e3:4.1f} ms: F {rms(wl.force - sl.force):.3f} N; correlation of predicted and "
               f"measured roll {r[0]:.2f}, pitch {r[1]:.2f}; below 1 m/s roll correlation "
               f"{np.corrcoef(a, b)[0, 1]:.2f}, measured / predicted {(a @ b) / (a @ a):.2f}")
+
+
+    print("6. measured / predicted moment at 400 Hz against a low-pass filter of the prediction:")
+    from scipy.signal import butter, filtfilt
+
+    sf = flight_samples(logs, vehicle, rate_hz=400.0, motor_time_constant=0.0)
+    wf = predict_flight(sf, veh, res.params, body=body)
+    X = np.c_[sf.velocity, np.ones(sf.n)]
+    for fc in (None, 30.0, 15.0, 8.0):
+        ratios = []
+        for k in (0, 1):
+            pred = wf.moment[:, k].copy()
+            if fc:
+                b, a = butter(2, fc / (0.5 * sf.rate_hz))
+                for j in range(len(sf.log_names)):
+                    m = sf.log_index == j
+                    pred[m] = filtfilt(b, a, pred[m])
+            pred -= X @ np.linalg.lstsq(X, pred - sf.moment[:, k], rcond=None)[0]
+            ratios.append((pred @ sf.moment[:, k]) / (pred @ pred))
+        print(f"   {'unfiltered' if fc is None else f'{fc:g} Hz':>10}: roll {ratios[0]:.2f}, pitch {ratios[1]:.2f}")
 
 
 if __name__ == "__main__":
