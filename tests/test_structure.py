@@ -1,4 +1,5 @@
-"""The package's import structure (the brief's "core <- io <- identify, maps, vehicle <- cli").
+"""The package's import structure (docs/conventions.md, Code layout: core <- io <- identify, maps,
+vehicle, ... <- cli).
 
 Every import is read from the source (module level and inside functions alike, with
 :mod:`ast`), so a function-local import that closes a cycle counts as one; imports under
@@ -31,9 +32,29 @@ def _modules() -> dict[str, tuple[Path, bool]]:
     return out
 
 
-def _imports(name: str, path: Path, package: bool, modules) -> set[str]:
-    """The propmap modules ``name`` imports anywhere in its source."""
+def _lazy_exports(path: Path) -> dict[str, str]:
+    """A package's ``_EXPORTS`` table (name -> submodule, relative; propmap/_lazy.py), or {}."""
+    for node in ast.parse(path.read_text(encoding="utf-8")).body:
+        if (isinstance(node, ast.Assign) and any(getattr(t, "id", None) == "_EXPORTS" for t in node.targets)
+                and isinstance(node.value, ast.Dict)):
+            return {k.value: v.value for k, v in zip(node.value.keys, node.value.values)}
+    return {}
+
+
+def _ancestors(name: str) -> list[str]:
+    parts = name.split(".")
+    return [".".join(parts[:i]) for i in range(1, len(parts))]
+
+
+def _imports(name: str, path: Path, package: bool, modules, lazy) -> set[str]:
+    """The propmap modules and packages that importing ``name`` runs, from its source.
+
+    Importing a.b.c runs the packages a.b and a first (their ``__init__``), so those count
+    too, except the importer's own packages, which are being imported already. A name
+    taken from a package's lazy ``_EXPORTS`` table counts as its submodule.
+    """
     found = set()
+    own = set(_ancestors(name))
     tree = ast.parse(path.read_text(encoding="utf-8"))
     typing_only = {id(n) for block in ast.walk(tree) if isinstance(block, ast.If)
                    and getattr(block.test, "id", getattr(block.test, "attr", None)) == "TYPE_CHECKING"
@@ -51,18 +72,23 @@ def _imports(name: str, path: Path, package: bool, modules) -> set[str]:
                 mod = ".".join(base + ([node.module] if node.module else []))
             else:
                 mod = node.module or ""
-            targets = [f"{mod}.{a.name}" if f"{mod}.{a.name}" in modules else mod for a in node.names]
+            for a in node.names:
+                sub = f"{mod}.{a.name}"
+                if sub not in modules and a.name in lazy.get(mod, {}):
+                    sub = f"{mod}.{lazy[mod][a.name]}"
+                targets.append(sub if sub in modules else mod)
         for t in targets:
             while t not in modules and "." in t:
                 t = t.rsplit(".", 1)[0]
-            if t in modules and t != name:
-                found.add(t)
+            if t in modules:
+                found.update(a for a in [*_ancestors(t), t] if a in modules and a != name and a not in own)
     return found
 
 
 def _graph():
     modules = _modules()
-    return modules, {m: _imports(m, p, pkg, modules) for m, (p, pkg) in modules.items()}
+    lazy = {m: _lazy_exports(p) for m, (p, pkg) in modules.items() if pkg}
+    return modules, {m: _imports(m, p, pkg, modules, lazy) for m, (p, pkg) in modules.items()}
 
 
 def _cycles(graph: dict[str, set[str]], nodes: list[str]) -> list[set[str]]:
@@ -115,8 +141,7 @@ def test_the_import_graph_is_read():
 
 def test_no_import_cycles_but_the_known_one():
     modules, graph = _graph()
-    nodes = [m for m, (_, package) in modules.items() if not package]  # packages only re-export
-    assert _cycles(graph, nodes) == KNOWN_CYCLES
+    assert _cycles(graph, list(graph)) == KNOWN_CYCLES
 
 
 def test_modules_import_only_their_layer_and_below():

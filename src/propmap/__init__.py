@@ -16,7 +16,7 @@ from ._lazy import lazy_exports
 __version__ = "0.1.0"
 
 _EXPORTS = {
-    "Air": "core.airfoil", "AirfoilParams": "core.airfoil", "CamberedParams": "core.airfoil",
+    "Air": "core.air", "AirfoilParams": "core.airfoil", "CamberedParams": "core.airfoil",
     "PRESETS": "core.airfoil", "preset": "core.airfoil", "lift_coefficient": "core.airfoil",
     "drag_coefficient": "core.airfoil", "Propeller": "core.geometry", "HoverModel": "core.hover",
     "Discretization": "core.solver", "DEFAULT_DISCRETIZATION": "core.solver", "RotorLoads": "core.solver",

@@ -16,7 +16,6 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .core.solver import rotor_loads
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
 from .io.mapfile import read_dataset
 
@@ -418,6 +417,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
         ``n_check`` or ``seed`` out of range; a map that does not record its model (when
         one is not given) or is malformed (io.mapcheck.check_dataset).
     """
+    from .core.solver import rotor_loads  # here: evaluating a map needs neither the solver nor SciPy
+
     n_check = check_integer("n_check", n_check, 1, CHECK_POINTS_MAX)
     seed = check_integer("seed", seed, 0, 2**63 - 1)
     check_dataset(ds)

@@ -8,7 +8,7 @@ from __future__ import annotations
 from .._lazy import lazy_exports
 
 _EXPORTS = {
-    "Air": "airfoil", "AirfoilParams": "airfoil", "CamberedParams": "airfoil", "PRESETS": "airfoil",
+    "Air": "air", "AirfoilParams": "airfoil", "CamberedParams": "airfoil", "PRESETS": "airfoil",
     "preset": "airfoil", "lift_coefficient": "airfoil", "drag_coefficient": "airfoil", "Propeller": "geometry",
     "HoverModel": "hover", "Discretization": "solver", "DEFAULT_DISCRETIZATION": "solver", "RotorLoads": "solver",
     "SolverError": "solver", "rotor_loads": "solver", "RotorWrench": "vector", "rotor_wrench": "vector",

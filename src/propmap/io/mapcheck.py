@@ -322,6 +322,19 @@ def map_model(attrs: dict):
 def check_integer(name: str, value, lo: int, hi: int) -> int:
     """``value`` as an int in [lo, hi] (an integral float such as 2000.0 too, never a bool).
 
+    Parameters
+    ----------
+    name : str
+        The argument's name, for the message.
+    value : int or float
+        The value given.
+    lo, hi : int
+        The valid range, inclusive.
+
+    Returns
+    -------
+    int
+
     Raises
     ------
     ValueError
