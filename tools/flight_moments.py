@@ -24,7 +24,11 @@ Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
 5. the motor lag: force error and moment correlation with and without the 33 ms lag, and
    near hover the ratio of measured to predicted roll moment, by regressing each on the
    other (an error in the prediction pulls the first down, one in the measurement the
-   second up).
+   second up);
+6. the rotor arms the moment channel implies near hover (|v| < 0.5 m/s, 100 samples a
+   second, no lag): the measured roll and pitch moments regressed on the thrust differences
+   of T_i = k Omega_i^2 (k fitted to the measured vertical force of the same samples), with
+   the body velocity and a constant, each way round, against the vehicle file's arms.
 """
 
 from __future__ import annotations
@@ -113,6 +117,23 @@ def main() -> None:
               f"measured roll {r[0]:.2f}, pitch {r[1]:.2f}; below 1 m/s the roll moments' correlation "
               f"{np.corrcoef(a, b)[0, 1]:.2f}, measured / predicted {(a @ b) / (a @ a):.2f} (measured regressed "
               f"on predicted) to {(b @ b) / (a @ b):.2f} (the reverse)")
+
+    print("6. arms implied by the moments near hover (|v| < 0.5 m/s, 100 Hz, no lag) [m]:")
+    sh = flight_samples(logs, vehicle, rate_hz=100.0, motor_time_constant=0.0)
+    sh = sh.select(sh.speed < 0.5)
+    om2 = sh.rotor_omega**2
+    k = float(om2.sum(axis=1) @ sh.force[:, 2] / (om2.sum(axis=1) @ om2.sum(axis=1)))
+    pos = np.array([r.position for r in vehicle.rotors])
+    for axis, label, sign, arm in ((0, "lateral (roll)", np.sign(pos[:, 1]), np.abs(pos[:, 1]).mean()),
+                                   (1, "fore-aft (pitch)", -np.sign(pos[:, 0]), np.abs(pos[:, 0]).mean())):
+        x = (k * om2 * sign).sum(axis=1)  # the moment per metre of arm [N]
+        y = sh.moment[:, axis]
+        V = np.c_[sh.velocity, np.ones(sh.n)]  # the velocity and a constant partialled out of both
+        x = x - V @ np.linalg.lstsq(V, x, rcond=None)[0]
+        y = y - V @ np.linalg.lstsq(V, y, rcond=None)[0]
+        print(f"   {label:<16}: {(x @ y) / (x @ x):.4f} (moment on thrust difference) to {(y @ y) / (x @ y):.4f} "
+              f"(the reverse), correlation {np.corrcoef(x, y)[0, 1]:.2f}; the vehicle file's {arm:.3f}; {sh.n} "
+              f"samples, k = {k:.3e} N s^2")
 
 if __name__ == "__main__":
     main()
