@@ -2,8 +2,8 @@
 
 Data: the four NeuroBEM segments (Bauersfeld et al., "NeuroBEM: Hybrid Aerodynamic
 Quadrotor Model", RSS 2021; ../shared/data/neurobem_flights), the bundled vehicle
-data/examples/neurobem_quadrotor.toml, the generic set's air
-(rho = 1.225 kg/m^3; the CLI examples in docs/flight.md use the logs' 1.204), 25 samples a second.
+data/examples/neurobem_quadrotor.toml, the generic set's air (rho = 1.225 kg/m^3; the CLI
+examples in docs/flight.md use the logs' 1.204), 25 samples a second.
 
     .venv/bin/python tools/flight_descent.py          # about 20 s on 2 cores
     .venv/bin/python tools/flight_descent.py --cv     # and the leave-one-log-out fits, about 6 min

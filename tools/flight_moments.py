@@ -2,10 +2,10 @@
 
 Data: the four NeuroBEM segments (Bauersfeld et al., "NeuroBEM: Hybrid Aerodynamic
 Quadrotor Model", RSS 2021; ../shared/data/neurobem_flights), the bundled vehicle
-data/examples/neurobem_quadrotor.toml, the generic set's air
-(rho = 1.225 kg/m^3; the CLI examples in docs/flight.md use the logs' 1.204). The rotor and airframe parameters are the default
-flight fit to the forces of all four logs (``fit_flight``, 25 samples a second), so the
-moments are predicted by a model that never saw them.
+data/examples/neurobem_quadrotor.toml, the generic set's air (rho = 1.225 kg/m^3; the CLI
+examples in docs/flight.md use the logs' 1.204). The rotor and airframe parameters are the
+default flight fit to the forces of all four logs (``fit_flight``, 25 samples a second), so
+the moments are predicted by a model that never saw them.
 
     .venv/bin/python tools/flight_moments.py      # about 15 s on 2 cores
 
