@@ -19,7 +19,6 @@ propeller's sections sit near 1e5, where the presets are extrapolated in Re).
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
