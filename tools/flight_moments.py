@@ -136,5 +136,6 @@ def main() -> None:
               f"(the reverse), correlation {np.corrcoef(x, y)[0, 1]:.2f}; the vehicle file's {arm:.3f}; {sh.n} "
               f"samples, k = {k:.3e} N s^2")
 
+
 if __name__ == "__main__":
     main()
