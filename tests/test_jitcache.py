@@ -4,6 +4,7 @@ numba alone stamps the cache with the kernel file only; propmap's locators
 (core/_jitcache.py) stamp it with every module the kernel compiles in.
 """
 
+import ast
 import os
 import shutil
 import subprocess
@@ -27,10 +28,21 @@ SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K, _sensiti
           "sum(d.cache_hits.values()), sum(d.cache_misses.values()))")
 
 
+def _sibling_imports(path: Path) -> set[str]:
+    """The core modules a kernel file imports (``from ._x import ...``), but the cache's own."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    return {f"{n.module}.py" for n in ast.walk(tree)
+            if isinstance(n, ast.ImportFrom) and n.level == 1 and n.module and n.module != "_jitcache"}
+
+
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
-    assert names == {"_kernel.py", "_physics.py", "_fastmath.py"}
+    assert names == {"_kernel.py", "_physics.py", "_fastmath.py", "_flags.py"}
     assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == names | {"_sensitivity.py"}
+    # every module the kernels import is in their stamp (a new kernel module must be added there)
+    core = SRC / "core"
+    assert _sibling_imports(core / "_kernel.py") | {"_kernel.py"} <= names
+    assert _sibling_imports(core / "_sensitivity.py") | {"_sensitivity.py"} <= names | {"_sensitivity.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"
     a.write_text("x = 1\n")

@@ -163,7 +163,7 @@ _KERNEL_ARGS = _kernel_args()
 def _fail_everything(*args):
     # the kernel's outputs by name: out (T, D, Q, M_R, ...), rad (per annulus), counts (status, ...) and
     # flags (converged, ...); the states and flags as the kernel's point_flags writes them
-    from propmap.core import _kernel
+    from propmap.core import _flags
 
     a = dict(zip(_KERNEL_ARGS, args))
     out, counts, flags = a["out"], a["counts"], a["flags"]
@@ -171,7 +171,7 @@ def _fail_everything(*args):
     a["rad"][...] = 0
     counts[...] = 0
     counts[0] = 1 + 3 * 4 + 1  # status: annulus 3, no bracket
-    _kernel.point_flags(out, counts, a["Vs"], a["Vc"], a["Om"], a["cls"], a["inflow"] != 0, a["emp"], flags)
+    _flags.point_flags(out, counts, a["Vs"], a["Vc"], a["Om"], a["cls"], a["inflow"] != 0, a["emp"], flags)
 
 
 def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, apc_params):

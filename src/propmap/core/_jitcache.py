@@ -1,10 +1,12 @@
 """The compiled kernels' disk cache, keyed on every module each kernel compiles in.
 
 numba stamps a cached function with a hash of the file that defines it only. The solver
-kernel (``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py``, and the
-sensitivity kernel (``_sensitivity.py``) from those and ``_kernel.py``, so an edit there would
-leave numba serving a kernel compiled from the old physics (module constants such as the
-Reynolds clamp are compiled in). The locators below serve these two files alone and stamp
+kernel (``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py`` and calls
+those of ``_flags.py``, and the sensitivity kernel (``_sensitivity.py``) compiles in those
+and ``_kernel.py``, so an edit there would leave numba serving a kernel compiled from the old
+physics (module constants such as the Reynolds clamp are compiled in). The locators below
+serve these two files alone (``_flags.py``'s own functions use numba's, stamped with that
+file: they use nothing else of propmap) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
 (:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`), so that editing any of them
 recompiles. They are registered ahead of numba's own locators (numba.core.caching, an
@@ -22,7 +24,7 @@ __all__ = ["CACHE", "KERNEL_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
-KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_physics.py", _HERE / "_fastmath.py")
+KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_physics.py", _HERE / "_fastmath.py", _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", *KERNEL_SOURCES)
 #: the cached files, each with the sources its stamp covers

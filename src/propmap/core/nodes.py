@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _kernel
+from . import _flags
 from . import _physics as ph
 from .airfoil import Air, CamberedParams, SectionParams, _model_constants
 from .geometry import Propeller
@@ -102,9 +102,9 @@ def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretizat
     nd = _nodes(propeller, discretization.n_radial, discretization.n_azimuth, air, params)
     model, pk = _model_constants(params)
     cam = _cambered_args(params, air)
-    cls = np.empty(_kernel.CLS_BAND + BAND_ARRAY.size)  # _kernel.point_flags' constants
-    cls[_kernel.CLS_RHO], cls[_kernel.CLS_RADIUS], cls[_kernel.CLS_R_HUB] = air.rho, propeller.radius, propeller.r_hub
-    cls[_kernel.CLS_K_WINDMILL], cls[_kernel.CLS_BAND:] = K_WINDMILL, BAND_ARRAY
+    cls = np.empty(_flags.CLS_BAND + BAND_ARRAY.size)  # _flags.point_flags' constants
+    cls[_flags.CLS_RHO], cls[_flags.CLS_RADIUS], cls[_flags.CLS_R_HUB] = air.rho, propeller.radius, propeller.r_hub
+    cls[_flags.CLS_K_WINDMILL], cls[_flags.CLS_BAND:] = K_WINDMILL, BAND_ARRAY
     for a in (pk, cam, cls):
         a.setflags(write=False)
     prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]), cls)

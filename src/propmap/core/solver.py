@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _kernel
+from . import _flags, _kernel
 from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import _derivative_inputs, _jacobian, differentiable
@@ -329,7 +329,7 @@ def rotor_loads(
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all). The kernel also
     # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
-    # (_kernel.point_flags: no NumPy calls on one-point arrays here)
+    # (_flags.point_flags: no NumPy calls on one-point arrays here)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
           nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, cls, out, rad,
@@ -356,7 +356,7 @@ def rotor_loads(
         # the states and flags again, for the scaled thrust and inflow and the rates asked for (a stopped
         # rotor: its whole retreating side in reverse flow, radius inf, with in-plane flow)
         out[0], out[6] = T, vbar
-        _kernel.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags)
+        _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags)
     # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
     # upflow; the empirical descent curve blended in forward flight by propmap's fade)
     converged, vring, multiple, reverse, extrapolated = flags

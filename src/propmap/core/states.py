@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _kernel
+from . import _flags
 
 __all__ = ["STATES", "VRS_BAND", "K_WINDMILL", "descent_state", "vrs_boundary"]
 
@@ -84,13 +84,13 @@ BAND_ARRAY = np.array([VRS_BAND[k] for k in ("k_onset", "k_exit", "m_max", "onse
 
 
 def _classify(T, vx, vz, v_mean, rho, radius, linear=False, empirical=False):
-    """The compiled rules (core/_kernel.working_states) on flat float arrays of the thrust, the
+    """The compiled rules (core/_flags.working_states) on flat float arrays of the thrust, the
     in-plane and axial speeds V sin(beta), V cos(beta) and the mean inflow: (state, v_h, k, m,
     inflow-validity flag)."""
     n = T.size
     state, vh, k, m = np.empty(n, np.int64), np.empty(n), np.empty(n), np.empty(n)
     extrap = np.empty(n, np.bool_)
-    _kernel.working_states(T, vx, vz, v_mean, float(rho), float(radius), BAND_ARRAY, K_WINDMILL, bool(linear),
+    _flags.working_states(T, vx, vz, v_mean, float(rho), float(radius), BAND_ARRAY, K_WINDMILL, bool(linear),
                            bool(empirical), state, vh, k, m, extrap)
     return state, vh, k, m, extrap
 
