@@ -40,10 +40,10 @@ import numpy as np
 from ._fastmath import atan2_poly, exp_sat
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, cambered_annulus, empirical_k, inflow_gradients,
-                       inverse_sin_phi, make_axial_mass_flow, make_cambered_element, make_element, make_loss_factor,
-                       make_prandtl,
-                       momentum_scale, momentum_thrust)
+from ._physics import (CAMBERED, GILL_SINCOS, INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_TOL, cambered_annulus,
+                       empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow, make_cambered_element,
+                       make_element, make_loss_factor, make_prandtl, momentum_scale, momentum_thrust, swirl_step,
+                       swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -57,6 +57,7 @@ FTOL = 1e-9
 OK = 0
 NO_BRACKET = 1
 NO_CONVERGENCE = 2
+NO_SWIRL_BALANCE = 3  # the swirl iteration (_physics.swirl_target) did not balance within SWIRL_MAX_ITER solves
 
 _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -74,6 +75,8 @@ _cambered_annulus = _jit_inline(cambered_annulus)
 _inflow_gradients = _jit_inline(inflow_gradients)
 _empirical_k = _jit_inline(empirical_k)
 _axial_mass_flow = _jit_inline(make_axial_mass_flow(_empirical_k))
+_swirl_target = _jit_inline(swirl_target)
+_swirl_step = _jit_inline(swirl_step)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -87,9 +90,11 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
+def _residual(v, wy, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
               pk, emp):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
+
+    ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl).
 
     ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
@@ -103,13 +108,13 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss,
         if model == CAMBERED:
             a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
             for k in range(naz):
-                qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                qT, _ = _element_cambered(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
                                           a0, a1, a2, a3, a4, a5, a6, a7)
                 acc += qT
         else:
             g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
             for k in range(naz):
-                qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
+                qT, _ = _element_gill(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
                 acc += qT
     else:
         vx = v * gx
@@ -117,13 +122,13 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss,
         if model == CAMBERED:
             a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
             for k in range(naz):
-                qT, _ = _element_cambered(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth,
+                qT, _ = _element_cambered(wy + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth,
                                           cth, s0, s1, s2, s3, a0, a1, a2, a3, a4, a5, a6, a7)
                 acc += qT
         else:
             g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
             for k in range(naz):
-                qT, _ = _element_gill(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth,
+                qT, _ = _element_gill(wy + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth,
                                       s0, g0, g1, g2, g3, g4, g5, sincos)
                 acc += qT
     if emp:
@@ -133,26 +138,27 @@ def _residual(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residuals_axial(f, trial, y, Om, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp, active,
+def _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp, active,
                      n_active):
     """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
     azimuth node), the annuli already solved included: branch-free loops over contiguous
     annuli, which compile to SIMD code across them (one annulus' residual at a time is a
     scalar chain). The empirical momentum in descent (a Newton solve per annulus) only for the
-    ``n_active`` annuli in ``active``, one at a time."""
+    ``n_active`` annuli in ``active``, one at a time. ``us``: the annuli's swirl [m/s]."""
     nr = y.shape[0]
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for j in range(nr):
             v = trial[j]
-            qT, _ = _element_cambered(Om * y[j], Vc + v, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j], a0, a1,
-                                      a2, a3, a4, a5, a6, a7)
+            qT, _ = _element_cambered(Om * y[j] - us[j], Vc + v, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
+                                      a0, a1, a2, a3, a4, a5, a6, a7)
             f[j] = cfac[j] * qT
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for j in range(nr):
             v = trial[j]
-            qT, _ = _element_gill(Om * y[j], Vc + v, th[j], sth[j], cth[j], s0[j], g0, g1, g2, g3, g4, g5, sincos)
+            qT, _ = _element_gill(Om * y[j] - us[j], Vc + v, th[j], sth[j], cth[j], s0[j], g0, g1, g2, g3, g4, g5,
+                                  sincos)
             f[j] = cfac[j] * qT
     if emp and Vc < 0.0:
         for q in range(n_active):
@@ -206,8 +212,8 @@ _REFINE = 4
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz, model,
-                 pk, emp, v, code, nev, multiple):
+def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz,
+                 model, pk, emp, v, code, nev, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
     The annuli are independent, so they are solved in lockstep: each sweep evaluates
@@ -215,7 +221,8 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
     state machine (march, doubling, extra scan, Illinois) by one step. Step for step
     this is the scalar algorithm of the module docstring, but the evaluations of one
     sweep do not wait on each other, so the CPU overlaps them (one F(v) at a time is
-    latency-bound). Outputs, shape (nr,): v [m/s], code (OK, NO_BRACKET,
+    latency-bound). ``us`` (nr,): the annuli's swirl u [m/s], subtracted from the blade speed
+    Omega y (zeros without swirl). Outputs, shape (nr,): v [m/s], code (OK, NO_BRACKET,
     NO_CONVERGENCE), nev (residual evaluations) and multiple (more roots seen).
     """
     nr = y.shape[0]
@@ -258,10 +265,10 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                 # the closure (_physics.axial_mass_flow), not by U_P, which passes through 0 near
                 # the annulus' ideal autorotation and would make F(v) jump there (several roots)
                 for j in range(nr):
-                    inv_sin[j] = _inverse_sin_phi(_axial_mass_flow(trial[j], Vc, Vs), Om * y[j])
+                    inv_sin[j] = _inverse_sin_phi(_axial_mass_flow(trial[j], Vc, Vs), Om * y[j] - us[j])
             else:
                 for j in range(nr):
-                    inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j])
+                    inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j] - us[j])
             if tip:
                 for j in range(nr):
                     floss[j] = _prandtl(ct[j], inv_sin[j])
@@ -269,14 +276,14 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                 for j in range(nr):
                     floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
         if vector_axial:  # every annulus, solved or not, in one SIMD loop
-            _residuals_axial(f, trial, y, Om, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp,
+            _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp,
                              active, n_active)
             for q in range(n_active):
                 nev[active[q]] += 1
         else:
             for q in range(n_active):  # independent evaluations
                 j = active[q]
-                f[j] = _residual(trial[j], y[j], Om, Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
+                f[j] = _residual(trial[j], Om * y[j] - us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
                                  cfac[j], mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
                 nev[j] += 1
         m = 0
@@ -296,8 +303,8 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
                     if ct[j] >= 0.0 or ch[j] >= 0.0:
                         # the loss factor F scales the momentum side: size the march with F at
                         # the loss-free estimate (F falls with v, so this still undershoots)
-                        vm = _momentum_scale(fj, mfac[j] * _loss_factor(Vc + sgn[j] * vm, Om * y[j], ct[j], ch[j]),
-                                             Vs, Vc)
+                        vm = _momentum_scale(fj, mfac[j] * _loss_factor(Vc + sgn[j] * vm, Om * y[j] - us[j], ct[j],
+                                                                        ch[j]), Vs, Vc)
                     if emp and Vc < 0.0:
                         # the empirical closure's root lies near the annulus' hover inflow (vortex
                         # ring) or below it (windmill brake): a march sized by it brackets the one root
@@ -404,10 +411,10 @@ def solve_annuli(Om, Vs, Vc, y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk,
+def annulus_loads(v, y, Om, u, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk,
                   axial):
     """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
-    (eqs 5-7, azimuth-averaged; linear inflow as ``_residual``).
+    (eqs 5-7, azimuth-averaged; linear inflow as ``_residual``); ``u`` the annulus' swirl [m/s].
 
     dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
     y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
@@ -425,7 +432,7 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
     UP = Vc + v
     if gx == 0.0 and gy == 0.0:
         for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
-            qT, qH = _element(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
+            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
             aT += qT
             aD += qH * sinpsi[k]
             aQ += qH
@@ -434,7 +441,7 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
         vx = v * gx
         vy = v * gy
         for k in range(naz):
-            qT, qH = _element(Om * y + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth, s0, s1,
+            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth, s0, s1,
                               s2, s3, model, pk)
             aT += qT
             aD += qH * sinpsi[k]
@@ -447,6 +454,38 @@ def annulus_loads(v, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, 
     return cfac * aT / naz, dD, y * cfac * aQ / naz, dR, cfac * aY / naz, y * cfac * aP / naz
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _swirl_iterate(us, u_prev, g_prev, v, code, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx,
+                   gy, naz, model, pk, axial, it):
+    """One swirl step of an operating point after its root solve with the swirl ``us``: every
+    annulus' target (_physics.swirl_target, from its loads at the roots ``v``) and imbalance;
+    True when all balance to SWIRL_TOL Omega y (``us`` is then the swirl the roots were solved
+    with), else ``us`` takes the next iterate (_physics.swirl_step; ``u_prev``, ``g_prev`` keep
+    the last one) and False; on the last iteration the annuli still out of balance get
+    NO_SWIRL_BALANCE."""
+    nr = y.shape[0]
+    balanced = True
+    for j in range(nr):
+        if code[j] != OK:
+            continue
+        t, _, q, _, _, _ = annulus_loads(v[j], y[j], Om, us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
+                                         s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, axial)
+        lim = SWIRL_LIMIT * Om * y[j]
+        g = min(max(_swirl_target(v[j], t, q, y[j]), -lim), lim) - us[j]
+        if abs(g) > SWIRL_TOL * Om * y[j]:
+            balanced = False
+            if it + 1 >= SWIRL_MAX_ITER:
+                code[j] = NO_SWIRL_BALANCE
+        nxt = _swirl_step(us[j], u_prev[j], g, g_prev[j], it == 0, lim)
+        u_prev[j] = us[j]
+        g_prev[j] = g
+        us[j] = nxt
+    if balanced:
+        for j in range(nr):
+            us[j] = u_prev[j]  # the swirl the roots were solved with
+    return balanced
+
+
 #: rows of the packed outputs of solve_batch: ``out`` (N_OUT, n), ``rad`` (N_RAD, rows, nr),
 #: ``counts`` (N_COUNTS, n) and ``flags`` (N_FLAGS, n)
 N_OUT = 11  # T, D, Q, M_R, Y, M_P, mean inflow; v_h, descent ratio k, in-plane ratio m, reverse-flow radius
@@ -457,7 +496,7 @@ N_FLAGS = 5  # converged, vortex ring, multiple roots, reverse flow, inflow extr
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, radius, radial, out, rad, counts):
+                 inflow, emp, swirl, radius, radial, out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc and coll (a collective offset added to every blade angle [rad]) have
@@ -473,6 +512,10 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
     with a linear model each point is solved twice: with the
     uniform inflow, whose mean inflow gives the wake skew angle and the gradients
     (_physics.inflow_gradients), then with the linear inflow over the full circle.
+    ``swirl``: the annuli's swirl u (_physics.swirl_target) is iterated around these solves,
+    by a secant per annulus from u = 0, until every annulus' angular momentum balances to
+    SWIRL_TOL Omega y (an annulus that does not within SWIRL_MAX_ITER solves fails with
+    NO_SWIRL_BALANCE); without it u = 0 and each point is solved once.
     ``radius``: R [m]. Outputs (packed, so that the argument list stays short enough for
     numba's inliner): ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
     the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
@@ -507,6 +550,8 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
         s3 = np.empty(nr)
         gx = np.zeros(nr)
         gy = np.zeros(nr)
+        u_prev = np.zeros(nr if swirl else 0)  # the swirl's previous iterate and its imbalance
+        g_prev = np.zeros(nr if swirl else 0)
         if model == CAMBERED:
             # Reynolds, Mach and rotation corrections, once per point and annulus
             w2 = 0.5 * Vs[i] * Vs[i] + Vc[i] * Vc[i]
@@ -520,29 +565,39 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                 s1[j] = 0.0
                 s2[j] = 0.0
                 s3[j] = 0.0
-        solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy,
-                     naz, model, pk, emp, v, code, nev, multiple)
+        us = np.zeros(nr)  # the annuli's swirl [m/s]
         ne = 0
-        for j in range(nr):
-            ne += nev[j]
-        if inflow != INFLOW_UNIFORM and not axial:
-            # the uniform solution's mean inflow sets the wake skew, then the linear inflow
-            # is solved over the full circle (a second, independent root solve per annulus)
-            vsum = 0.0
-            wsum = 0.0
-            for j in range(nr):
-                vsum += w[j] * y[j] * v[j]
-                wsum += w[j] * y[j]
-            OmR = Om[i] * radius
-            kx, ky = _inflow_gradients(Vs[i] / OmR, (Vc[i] + vsum / wsum) / OmR, inflow)
-            for j in range(nr):
-                gx[j] = kx * y[j] / radius
-                gy[j] = ky * y[j] / radius
-            naz = 2 * naz_half
-            solve_annuli(Om[i], Vs[i], Vc[i], y, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx,
-                         gy, naz, model, pk, emp, v, code, nev, multiple)
+        for it in range(SWIRL_MAX_ITER if swirl else 1):
+            if it > 0:
+                naz = 1 if axial else naz_half
+                for j in range(nr):
+                    gx[j] = 0.0
+                    gy[j] = 0.0
+            solve_annuli(Om[i], Vs[i], Vc[i], y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi,
+                         gx, gy, naz, model, pk, emp, v, code, nev, multiple)
             for j in range(nr):
                 ne += nev[j]
+            if inflow != INFLOW_UNIFORM and not axial:
+                # the uniform solution's mean inflow sets the wake skew, then the linear inflow
+                # is solved over the full circle (a second, independent root solve per annulus)
+                vsum = 0.0
+                wsum = 0.0
+                for j in range(nr):
+                    vsum += w[j] * y[j] * v[j]
+                    wsum += w[j] * y[j]
+                OmR = Om[i] * radius
+                kx, ky = _inflow_gradients(Vs[i] / OmR, (Vc[i] + vsum / wsum) / OmR, inflow)
+                for j in range(nr):
+                    gx[j] = kx * y[j] / radius
+                    gy[j] = ky * y[j] / radius
+                naz = 2 * naz_half
+                solve_annuli(Om[i], Vs[i], Vc[i], y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi,
+                             cospsi, gx, gy, naz, model, pk, emp, v, code, nev, multiple)
+                for j in range(nr):
+                    ne += nev[j]
+            if swirl and _swirl_iterate(us, u_prev, g_prev, v, code, y, Om[i], Vs[i], Vc[i], th, sth, cth, s0, s1, s2,
+                                        s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk, axial, it):
+                break
         Ti = 0.0
         Di = 0.0
         Qi = 0.0
@@ -566,9 +621,9 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j], s1[j],
-                                                s2[j], s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk,
-                                                axial)
+            t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], us[j], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j],
+                                                s1[j], s2[j], s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model,
+                                                pk, axial)
             if radial:
                 rad[1, i, j] = t
                 rad[2, i, j] = d
@@ -599,20 +654,20 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                inflow, emp, radius, radial, cls, out, rad, counts, flags):
+                inflow, emp, swirl, radius, radial, cls, out, rad, counts, flags):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``),
     then :func:`point_flags` (``cls``, ``flags`` as there)."""
     _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, radius, radial, out, rad, counts)
+                 inflow, emp, swirl, radius, radial, out, rad, counts)
     point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def solve_batch_serial(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk,
-                       cam, inflow, emp, radius, radial, cls, out, rad, counts, flags):
+                       cam, inflow, emp, swirl, radius, radial, cls, out, rad, counts, flags):
     """:func:`solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
     _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, radius, radial, out, rad, counts)
+                 inflow, emp, swirl, radius, radial, out, rad, counts)
     point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)

@@ -373,6 +373,48 @@ def inflow_gradients(mu, lam, model):
     return (15.0 * np.pi / 32.0) * np.tan(0.5 * chi), 0.0
 
 
+
+# Swirl (RotorOptions.swirl): the tangential induced velocity u of an annulus, from its angular
+# momentum. The blade sees the tangential speed Omega y - u (+ V sin beta sin psi); the wake
+# carries away the angular momentum the torque puts in, dQ/dy = F 4 pi rho y^2 W u (the mass
+# flow of eq 10 times the swirl 2u far behind the disk, u at the disk): the rotational
+# interference factor a' = u / (Omega y) of propeller blade-element momentum theory (H. Glauert,
+# "Airplane Propellers", in W. F. Durand (ed.), Aerodynamic Theory, vol. IV, div. L, Springer,
+# 1935, ch. VII; in the form of S. A. Ning, "A simple solution method for the blade element
+# momentum equations with guaranteed convergence", Wind Energy 17, 2014, eqs for a'). Where eq 11
+# holds, dT/dy = F 4 pi rho y v W, so u = v (dQ/dy / y) / (dT/dy), free of F and W.
+#: outer iterations of the swirl around the root solve (a secant in u per annulus)
+SWIRL_MAX_ITER = 30
+#: the swirl iteration stops when every annulus' |u_target - u| <= SWIRL_TOL Omega y: at the
+#: root solve's own accuracy (XTOL = 1e-7 of the inflow scale), which sets the target's noise
+SWIRL_TOL = 1e-7
+#: |u| <= SWIRL_LIMIT Omega y (the blade keeps half its speed; reached only at a rotor stopped in
+#: a flow, or at annuli of near-zero thrust and finite torque)
+SWIRL_LIMIT = 0.5
+
+
+def swirl_target(v, dT, dQ, y):
+    """The swirl u [m/s] that balances an annulus' angular momentum at a root of eq 11
+    (scalars): u = v dQ / (y dT) from the annulus' mean inflow v [m/s], thrust and torque
+    densities dT [N/m] and dQ [N] at radius y [m]; 0 where dT = 0."""
+    if dT == 0.0:
+        return 0.0
+    return v * dQ / (y * dT)
+
+
+def swirl_step(u, u_prev, g, g_prev, first, limit):
+    """The next swirl iterate (scalars): the secant through (u_prev, g_prev) and (u, g), with
+    g = target - u; a plain step u + g on the first iteration, for a flat secant or a
+    non-finite one; clipped to [-limit, limit]."""
+    nxt = u + g
+    if not first:
+        den = g - g_prev
+        if den != 0.0:
+            sec = u - g * (u - u_prev) / den
+            if sec == sec and abs(sec) < 1e300:
+                nxt = sec
+    return min(max(nxt, -limit), limit)
+
 #: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),
 #: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: vol. 1's data span 14,500-125,000 at 0.75 R, and a
 #: power or log law is not extrapolated further; vol. 2's reach 3,600, and acting down to 3e3

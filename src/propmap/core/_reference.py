@@ -12,16 +12,41 @@ from __future__ import annotations
 import numpy as np
 
 from . import _kernel as K
-from ._physics import (CAMBERED, cambered_annulus, element, loss_factor_numpy, momentum_scale,
-                       momentum_thrust)
+from ._physics import (CAMBERED, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_TOL, cambered_annulus, element,
+                       loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step, swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
     """Return (T, D, Q, v_i, converged) for flat arrays om, Vs, Vc (shape (n,)).
 
     ``nodes`` from ``nodes._nodes`` for the same parameters ``p`` and ``air``. The paper's
-    uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping).
+    uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping); with
+    ``p.swirl`` the swirl is iterated around the root solve by the kernel's secant, annulus by
+    annulus (_physics.swirl_target, swirl_step), with NumPy arrays.
     """
+    if not p.swirl:
+        return _solve_u(om, Vs, Vc, nodes, p, air, None)[:5]
+    om1 = np.asarray(om, float)
+    Omy = om1[:, None] * nodes.y[None, :]
+    u = np.zeros_like(Omy)
+    u_prev = np.zeros_like(u)
+    g_prev = np.zeros_like(u)
+    target = np.vectorize(swirl_target)
+    step = np.vectorize(swirl_step)
+    lim = SWIRL_LIMIT * Omy
+    for it in range(SWIRL_MAX_ITER):  # a point keeps its swirl once balanced, as in the kernel
+        T, D, Q, v, conv, dT, dQ = _solve_u(om, Vs, Vc, nodes, p, air, u)
+        g = np.clip(target(v, dT, dQ, nodes.y[None, :]), -lim, lim) - u
+        done = np.all(np.abs(g) <= SWIRL_TOL * Omy, axis=1)
+        if done.all():
+            break
+        nxt = np.where(done[:, None], u, step(u, u_prev, g, g_prev, it == 0, lim))
+        u, u_prev, g_prev = nxt, u, g
+    return T, D, Q, v, conv & done
+
+
+def _solve_u(om, Vs, Vc, nodes, p, air, u):
+    """(T, D, Q, v_i, converged, dT/dy, dQ/dy) with the annuli's swirl ``u`` (n, nr) [m/s] or None."""
     if p.inflow != "uniform" or p.flap_compliance > 0:
         raise ValueError("the NumPy reference solves the uniform inflow of rigid blades only")
     from .airfoil import Air, _model_constants
@@ -35,6 +60,8 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     y = nodes.y[None, :, None]
     sinpsi = nodes.sinpsi[None, None, : nodes.sinpsi.size // 2]  # the half circle: uniform inflow only
     UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
+    if u is not None:
+        UT = UT - u[:, :, None]
     cfac = nodes.cfac[None, :]
     mfac = nodes.mfac[None, :]
     Vs2 = np.asarray(Vs, float)[:, None]
@@ -50,7 +77,7 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     geo = (nodes.theta[None, :, None], nodes.sin_th[None, :, None], nodes.cos_th[None, :, None],
            s0[..., None], s1[..., None], s2[..., None], s3[..., None])
     pars = (model, pk)
-    wy = om1[:, None] * nodes.y[None, :]
+    wy = om1[:, None] * nodes.y[None, :] - (0.0 if u is None else u)
     lossy = bool(np.any(nodes.ct >= 0) or np.any(nodes.ch >= 0))
 
     def F(v):  # v shape (n, nr)
@@ -118,4 +145,4 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     dD = np.where(axial, 0.0, cfac * (qH * sinpsi).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
     w = nodes.w
-    return dT @ w, dD @ w, dQ @ w, v, converged.all(axis=1)
+    return dT @ w, dD @ w, dQ @ w, v, converged.all(axis=1), dT, dQ

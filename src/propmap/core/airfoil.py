@@ -90,6 +90,16 @@ class RotorOptions:
         NACA TN 2474, 1951), written as an axial mass flow that fades into Glauert's with the
         in-plane speed (_physics.axial_mass_flow; docs/models.md); climb and hover unchanged;
         the default of the cambered model.
+    swirl : bool
+        The annuli's swirl: the tangential induced velocity u that the torque leaves in the
+        wake, from each annulus' angular momentum, dQ/dy = F 4 pi rho y^2 W u, so that the
+        blade meets Omega r - u (the rotational interference a' = u / (Omega r) of propeller
+        blade-element momentum theory: H. Glauert, "Airplane Propellers", in Durand (ed.),
+        Aerodynamic Theory, vol. IV, div. L, 1935; S. A. Ning, Wind Energy 17, 2014). It grows
+        with the local solidity and the loading, so it takes thrust from many-bladed rotors and
+        from the static run more than from the sweeps (docs/models.md, Swirl). Solved by a
+        secant in u around the root solve (about six solves per point); no implicit
+        derivatives. False (default): the paper's model, which has no swirl.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -110,6 +120,7 @@ class RotorOptions:
     flap_compliance: float = 0.0
     collective: float = 0.0
     descent: str = "empirical"
+    swirl: bool = False
     air: Air = field(default_factory=Air)
     label: str = field(default="", compare=False)
 

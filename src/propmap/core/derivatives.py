@@ -43,11 +43,11 @@ def differentiable(params: SectionParams, names) -> bool:
     Returns
     -------
     bool
-        False for a linear inflow model or flapping blades, or a name that is not a numeric
+        False for a linear inflow model, flapping blades or swirl, or a name that is not a numeric
         field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text);
         the rotation rates' range is the caller's to check (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform" or params.flap_compliance > 0:
+    if params.inflow != "uniform" or params.flap_compliance > 0 or params.swirl:
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO
@@ -72,9 +72,10 @@ def _derivative_inputs(derivatives, params) -> tuple:
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
-    if params.inflow != "uniform" or params.flap_compliance > 0:
-        raise ValueError("derivatives are implemented for the uniform inflow and rigid blades (the paper's rotor); "
-                         f"this set has inflow={params.inflow!r}, flap_compliance={params.flap_compliance:g}")
+    if params.inflow != "uniform" or params.flap_compliance > 0 or params.swirl:
+        raise ValueError("derivatives are implemented for the uniform inflow and rigid blades without swirl (the "
+                         f"paper's rotor); this set has inflow={params.inflow!r}, "
+                         f"flap_compliance={params.flap_compliance:g}, swirl={params.swirl}")
     return wrt
 
 

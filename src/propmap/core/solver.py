@@ -332,13 +332,15 @@ def rotor_loads(
     # (_flags.point_flags: no NumPy calls on one-point arrays here)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, propeller.radius, keep_radial, cls, out, rad,
-          counts, flags)
+          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, params.swirl, propeller.radius, keep_radial, cls,
+          out, rad, counts, flags)
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
         i = int(np.argmax(status != 0))
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
-        why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge"}[reason]
+        why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
+               3: f"the swirl did not balance the annulus' angular momentum within {ph.SWIRL_MAX_ITER} root solves "
+                  "(the section's stall fold may leave no balance on the selected root)"}[reason]
         raise SolverError(
             f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "

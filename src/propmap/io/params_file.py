@@ -49,6 +49,7 @@ are the paper's rigid blades in an azimuth-independent inflow::
     descent = "glauert"       # or "empirical" (measured inflow in the vortex-ring state)
     flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
+    swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
 ``section = "naca0015"`` takes every key of that section preset (:func:`section_preset`;

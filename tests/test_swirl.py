@@ -1,0 +1,169 @@
+"""Swirl (RotorOptions.swirl): the annuli's tangential induced velocity from angular momentum.
+
+Checked against an independent solve of the two momentum balances per annulus (thrust and
+torque, SciPy's fsolve on the section's own element), against the NumPy reference, and
+against the physics it adds: it takes thrust and torque, more with more blades of the same
+blade, least where the rotor is lightly loaded, and it is off in the paper's model.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import fsolve
+
+import propmap as pm
+from propmap.core._physics import element, momentum_thrust
+from propmap.core._reference import solve_reference
+from propmap.core.airfoil import _model_constants
+from propmap.core.nodes import _nodes
+
+from .conftest import RPM
+
+
+def test_swirl_balances_thrust_and_angular_momentum(apc8x6, apc_params):
+    # the paper's section (no per-annulus Reynolds constants), no tip loss: per annulus, the
+    # blade's thrust and torque equal the axial and angular momentum of the wake,
+    # cfac qT(Omega y - u, V + v) = 4 pi rho y v (V + v), cfac qH = 4 pi rho y u (V + v)
+    p = apc_params.replace(swirl=True)
+    om, V = 9000 * RPM, np.array([0.0, 6.0])
+    r = pm.rotor_loads(apc8x6, p, om, V, 0.0, radial=True)
+    plain = pm.rotor_loads(apc8x6, apc_params, om, V, 0.0, radial=True)
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), p)
+    pk = _model_constants(p)
+    checked = 0
+    for i, Vc in enumerate(V):
+        for j in range(0, 48, 6):
+            def balances(x, j=j, Vc=Vc):
+                v, u = x
+                qT, qH = element(om * nd.y[j] - u, Vc + v, nd.theta[j], nd.sin_th[j], nd.cos_th[j], nd.sc[j], 0.0,
+                                 0.0, 0.0, *pk)
+                W = abs(Vc + v)
+                return [nd.cfac[j] * qT - momentum_thrust(v, nd.mfac[j], 0.0, Vc),
+                        nd.cfac[j] * qH - nd.mfac[j] * u * W]
+
+            x, info, ok, msg = fsolve(balances, [plain.v_i[i, j], 0.0], xtol=1e-13, full_output=True)
+            assert ok == 1, msg
+            assert r.v_i[i, j] == pytest.approx(x[0], rel=1e-6, abs=1e-9)
+            u = x[1]
+            assert 0 < u < 0.5 * om * nd.y[j]  # the wake turns with the blade and less than it
+            checked += 1
+    assert checked == 16
+    # swirl takes thrust and torque (here 2-6%)
+    assert np.all(r.thrust < plain.thrust) and np.all(r.torque < plain.torque)
+    assert np.all(r.thrust > 0.9 * plain.thrust)
+
+
+@pytest.mark.parametrize("tip_hub", [False, True])
+def test_swirl_matches_numpy_reference(apc8x6, envelope_points, tip_hub):
+    p = pm.CamberedParams(descent="glauert", swirl=True, tip_loss=tip_hub, hub_loss=tip_hub)
+    om, V, b = (a[:60] for a in envelope_points)
+    b = np.where(b > math.pi / 2, math.pi - b, b)  # climb and forward flight
+    V = V.copy()
+    V[:6] = 0.0
+    r = pm.rotor_loads(apc8x6, p, om, V, b, radial=True)
+    assert r.converged.all()
+    nd = _nodes(apc8x6, 48, 16, pm.Air(), p)
+    Vs, Vc = V * np.sin(b), V * np.cos(b)
+    Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0
+    T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, p)
+    assert conv.all()
+    T0 = float(pm.rotor_loads(apc8x6, p, 12000 * RPM, 0, 0).thrust)
+    Q0 = float(pm.rotor_loads(apc8x6, p, 12000 * RPM, 0, 0).torque)
+    np.testing.assert_allclose(r.thrust, T, rtol=0, atol=1e-7 * T0)
+    np.testing.assert_allclose(r.drag, D, rtol=0, atol=1e-7 * T0)
+    np.testing.assert_allclose(r.torque, Q, rtol=0, atol=1e-7 * Q0)
+    np.testing.assert_allclose(r.v_i, vi, rtol=1e-5, atol=1e-6)
+    # the swirl iteration's cost is counted: several root solves per point
+    plain = pm.rotor_loads(apc8x6, p.replace(swirl=False), om, V, b)
+    assert np.all(r.n_evaluations > 2 * plain.n_evaluations)
+
+
+def test_swirl_grows_with_blade_count_and_loading():
+    # the same NR640 blade (UIUC vol. 2) on 2-, 3- and 4-blade hubs, generic section, 6000 rpm
+    g = pm.CamberedParams(tip_loss=True)
+    om = 6000 * RPM
+    ratios = []
+    for name in ("nr640_5_15deg", "nr640_5_15deg_3b", "nr640_5_15deg_4b"):
+        prop = pm.load_propeller(name)
+        V = np.array([0.0, 0.3]) * om / (2 * math.pi) * prop.diameter  # J = 0 and 0.3
+        on = pm.rotor_loads(prop, g.replace(swirl=True), om, V, 0.0)
+        off = pm.rotor_loads(prop, g, om, V, 0.0)
+        ratios.append(on.thrust / off.thrust)
+    ratios = np.array(ratios)  # (blades, J)
+    assert np.all(ratios < 1.0)
+    assert np.all(np.diff(ratios, axis=0) < -0.009)  # each added blade takes > 0.9% more thrust
+    assert np.all(ratios[:, 1] > ratios[:, 0] + 0.025)  # the static run, loaded most, loses most
+    # regression values (2026-11-23): thrust with swirl / without, 2, 3, 4 blades, J = 0 and 0.3
+    np.testing.assert_allclose(ratios, [[0.9264, 0.9601], [0.9141, 0.9452], [0.9035, 0.9317]], atol=5e-4)
+
+
+def test_swirl_is_off_by_default_and_checked():
+    assert pm.CamberedParams().swirl is False
+    assert pm.preset("gill2017-apc").swirl is False
+    with pytest.raises(ValueError, match="swirl must be true or false"):
+        pm.CamberedParams(swirl=1)
+
+
+def test_swirl_has_no_implicit_derivatives(apc8x6):
+    p = pm.CamberedParams(swirl=True)
+    with pytest.raises(ValueError, match="swirl=True"):
+        pm.rotor_loads(apc8x6, p, 900.0, 5.0, 0.3, derivatives=True)
+    from propmap.core.derivatives import differentiable
+
+    assert not differentiable(p, ("collective",))
+    assert differentiable(p.replace(swirl=False), ("collective",))
+
+
+def test_swirl_round_trips_through_a_parameter_file(tmp_path):
+    from propmap.io.params_file import read_params, write_params
+
+    p = pm.CamberedParams(swirl=True, tip_loss=True)
+    write_params(tmp_path / "p.toml", p)
+    assert "swirl = true" in (tmp_path / "p.toml").read_text()
+    back = read_params(tmp_path / "p.toml")
+    assert back.swirl is True
+    assert back == p
+
+
+def test_swirl_gives_up_with_its_own_code(apc8x6, apc_params):
+    # one swirl step on an axial point's annuli from u = 0 (out of balance): an intermediate step
+    # moves u to the balance's target; the last allowed step marks the annuli NO_SWIRL_BALANCE
+    from propmap.core import _kernel
+    from propmap.core._physics import SWIRL_MAX_ITER
+
+    p = apc_params.replace(swirl=True)
+    r = pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, discretization=pm.Discretization(6, 2), radial=True)
+    nd = _nodes(apc8x6, 6, 2, pm.Air(), p)
+    model, pk = _model_constants(p)
+    zeros = np.zeros(6)
+
+    def step(it):
+        us, code = zeros.copy(), np.zeros(6, np.int64)
+        done = _kernel._swirl_iterate.py_func(us, zeros.copy(), zeros.copy(), r.v_i, code, nd.y, 900.0, 0.0, 0.0,
+                                              nd.theta, nd.sin_th, nd.cos_th, nd.sc, zeros, zeros, zeros, nd.cfac,
+                                              nd.sinpsi, nd.cospsi, zeros, zeros, 1, model, pk, True, it)
+        return done, us, code
+
+    done, us, code = step(0)
+    assert not done and np.all(code == _kernel.OK)
+    target = r.v_i * r.dQ_dr / (nd.y * r.dT_dr)
+    np.testing.assert_allclose(us, target, rtol=1e-12)
+    assert np.all(us > 0)
+    done, _, code = step(SWIRL_MAX_ITER - 1)
+    assert not done and np.all(code == _kernel.NO_SWIRL_BALANCE)
+
+
+def test_swirl_failure_message(apc8x6, monkeypatch):
+    # the solver's message for an annulus whose swirl did not balance (status code 3)
+    from propmap.core import _kernel
+
+    real = _kernel.solve_batch_serial
+
+    def failing(*args):
+        real(*args)
+        args[-2][0, :] = 1 + 2 * 4 + _kernel.NO_SWIRL_BALANCE  # counts row 0: the third annulus
+
+    monkeypatch.setattr(_kernel, "solve_batch_serial", failing)
+    with pytest.raises(pm.SolverError, match="swirl did not balance the annulus' angular momentum"):
+        pm.rotor_loads(apc8x6, pm.CamberedParams(swirl=True), 900.0, 5.0, 0.2)
