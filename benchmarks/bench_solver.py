@@ -37,7 +37,7 @@ import numba
 import numpy as np
 
 import propmap as pm
-from propmap.core import _kernel
+from propmap.core import _annulus
 from propmap.core._reference import solve_reference
 from propmap.core.nodes import _nodes
 from propmap.io.atomic import atomic_write
@@ -110,9 +110,10 @@ def speed(prop, params, n_batch):
 
 def simd_widths():
     """Vector widths (doubles) LLVM used in the compiled residual (eq 11) loops of both models."""
-    fresh = numba.njit(error_model="numpy", fastmath=_kernel._FM)(_kernel._residual.py_func)
+    fresh = numba.njit(error_model="numpy", fastmath=_annulus._FM)(_annulus._residual.py_func)
     # the dispatcher loaded from the disk cache holds no IR: compile a copy for one call
-    fresh(1.0, *([0.1] * 14), np.linspace(-1.0, 1.0, 16), 16, 0, np.full(8, 0.5))
+    psi = np.linspace(-1.0, 1.0, 16)
+    fresh(1.0, *([0.1] * 13), psi, psi, 0.0, 0.0, 16, 0, np.full(8, 0.5), False)
     ir = "".join(fresh.inspect_llvm().values())
     return sorted({int(w) for w in re.findall(r"<(\d+) x double>", ir)})
 
@@ -123,7 +124,8 @@ def section_models(prop, paper, n=2000, rounds=7):
 
     g = generic_params()
     models = {"gill2017-apc (paper)": paper, "cambered, tip loss (default)": g,
-              "cambered, no loss": g.replace(tip_loss=False), "cambered, tip + hub loss": g.replace(hub_loss=True)}
+              "cambered, no loss": g.replace(tip_loss=False), "cambered, tip + hub loss": g.replace(hub_loss=True),
+              "cambered, tip loss, swirl (option)": g.replace(swirl=True)}
     om, V, b = points(n, 0, 90, 5)
     out = {}
     threads_all = numba.get_num_threads()

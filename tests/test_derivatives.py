@@ -603,7 +603,7 @@ def test_implicit_derivatives_match_tightly_converged_differences(prop, params, 
     extrapolated from h and h/2; hover-side climb, fast climb at 30 deg and 60 deg incidence
     (measured: 1e-8 to 3e-6 of each derivative; near windmilling, where the torque is small and
     U_P passes through 0 on some annulus, less: docs/solver.md)."""
-    from propmap.core import _kernel as K
+    from propmap.core import _annulus as K
     from propmap.core._reference import solve_reference
     from propmap.core.nodes import _nodes
 

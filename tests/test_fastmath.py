@@ -9,7 +9,7 @@ import numba
 import numpy as np
 import pytest
 
-from propmap.core import _fastmath, _kernel
+from propmap.core import _annulus, _fastmath
 import propmap as pm
 from propmap.core._physics import element, loss_factor_numpy
 from propmap.core.airfoil import _model_constants
@@ -20,26 +20,26 @@ ROOT = Path(__file__).resolve().parents[1]
 @numba.njit
 def _atan2_all(y, x, out):
     for i in range(y.size):
-        out[i] = _kernel._atan2(y[i], x[i])
+        out[i] = _annulus._atan2(y[i], x[i])
 
 
 @numba.njit
 def _exp_all(z, out):
     for i in range(z.size):
-        out[i] = _kernel._exp_sat(z[i])
+        out[i] = _annulus._exp_sat(z[i])
 
 
 @numba.njit
 def _element_all(UT, UP, th, s0, s1, s2, s3, model, pk, qT, qH):
     for i in range(UT.size):
-        qT[i], qH[i] = _kernel._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i], s2[i],
+        qT[i], qH[i] = _annulus._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i], s2[i],
                                         s3[i], model, pk)
 
 
 @numba.njit
 def _loss_all(UP, wy, ct, ch, out):
     for i in range(UP.size):
-        out[i] = _kernel._loss_factor(UP[i], wy[i], ct[i], ch[i])
+        out[i] = _annulus._loss_factor(UP[i], wy[i], ct[i], ch[i])
 
 
 def atan2_poly(y, x):

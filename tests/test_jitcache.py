@@ -37,12 +37,15 @@ def _sibling_imports(path: Path) -> set[str]:
 
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
-    assert names == {"_kernel.py", "_physics.py", "_fastmath.py", "_flags.py"}
+    assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_fastmath.py", "_flags.py"}
     assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == names | {"_sensitivity.py"}
     # every module the kernels import is in their stamp (a new kernel module must be added there)
     core = SRC / "core"
     assert _sibling_imports(core / "_kernel.py") | {"_kernel.py"} <= names
+    assert _sibling_imports(core / "_annulus.py") <= names
     assert _sibling_imports(core / "_sensitivity.py") <= names
+    # the kernels' own files are served by the stamping locators, each with its sources
+    assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_sensitivity.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"
     a.write_text("x = 1\n")

@@ -186,12 +186,12 @@ def test_a_second_process_loads_the_compiled_kernel_from_the_disk_cache(apc8x6, 
 
 
 def _solve_annuli_python(nd, p, om, V, b):
-    """The kernel's lockstep root solve run as plain Python (reads _kernel's constants now)."""
-    from propmap.core import _kernel
+    """The kernel's lockstep root solve run as plain Python (reads _annulus' constants now)."""
+    from propmap.core import _annulus
 
     nr = nd.y.size
     v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
-    _kernel.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, np.zeros(nr), nd.theta, nd.sin_th,
+    _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, np.zeros(nr), nd.theta, nd.sin_th,
                                  nd.cos_th, nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct,
                                  nd.ch, nd.sinpsi, nd.cospsi, np.zeros(nr), np.zeros(nr), nd.sinpsi.size // 2,
                                  *_model_constants(p), False, v, code, nev, mult)
@@ -200,39 +200,39 @@ def _solve_annuli_python(nd, p, om, V, b):
 
 def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monkeypatch):
     """The give-up paths (no bracket, no convergence) that feed SolverError's message."""
-    from propmap.core import _kernel
+    from propmap.core import _annulus
 
     nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params)
     om, V, b = 800.0, 10.0, 1.0
     v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
     r = pm.rotor_loads(apc8x6, apc_params, om, V, b, discretization=pm.Discretization(6, 8), radial=True)
-    assert np.all(code == _kernel.OK)
+    assert np.all(code == _annulus.OK)
     np.testing.assert_allclose(v, r.v_i, rtol=1e-12)  # same iterates as the compiled kernel
     assert nev.sum() == r.n_evaluations
 
-    monkeypatch.setattr(_kernel, "MAX_MARCH", 1)  # the root lies ~3 march steps out
-    monkeypatch.setattr(_kernel, "MAX_DOUBLING", 0)
+    monkeypatch.setattr(_annulus, "MAX_MARCH", 1)  # the root lies ~3 march steps out
+    monkeypatch.setattr(_annulus, "MAX_DOUBLING", 0)
     v, code, _ = _solve_annuli_python(nd, apc_params, om, V, b)
-    assert np.all(code == _kernel.NO_BRACKET) and np.all(np.isnan(v))
+    assert np.all(code == _annulus.NO_BRACKET) and np.all(np.isnan(v))
 
-    monkeypatch.setattr(_kernel, "MAX_MARCH", 64)
-    monkeypatch.setattr(_kernel, "MAX_DOUBLING", 80)
-    monkeypatch.setattr(_kernel, "MAX_REFINE", 1)
+    monkeypatch.setattr(_annulus, "MAX_MARCH", 64)
+    monkeypatch.setattr(_annulus, "MAX_DOUBLING", 80)
+    monkeypatch.setattr(_annulus, "MAX_REFINE", 1)
     v, code, nev = _solve_annuli_python(nd, apc_params, om, V, b)
-    assert np.all(code == _kernel.NO_CONVERGENCE) and np.all(np.isfinite(v))
+    assert np.all(code == _annulus.NO_CONVERGENCE) and np.all(np.isfinite(v))
 
 
 def test_refinement_entered_from_doubling_finds_the_same_root(apc8x6, apc_params, monkeypatch):
     """The bracket found by doubling (no extra-scan point: a secant first step) refines to
     the root the march finds, within the root tolerance."""
-    from propmap.core import _kernel
+    from propmap.core import _annulus
 
     nd = _nodes(apc8x6, 6, 8, pm.Air(), apc_params)
     om, V, b = 800.0, 10.0, 1.0
     v_march, code, _ = _solve_annuli_python(nd, apc_params, om, V, b)
-    monkeypatch.setattr(_kernel, "MAX_MARCH", 1)  # the root lies ~3 march steps out: doubling brackets it
+    monkeypatch.setattr(_annulus, "MAX_MARCH", 1)  # the root lies ~3 march steps out: doubling brackets it
     v_double, code2, _ = _solve_annuli_python(nd, apc_params, om, V, b)
-    assert np.all(code == _kernel.OK) and np.all(code2 == _kernel.OK)
+    assert np.all(code == _annulus.OK) and np.all(code2 == _annulus.OK)
     np.testing.assert_allclose(v_double, v_march, rtol=0, atol=2e-7 * np.max(np.abs(v_march)))
 
 

@@ -13,7 +13,7 @@ Accuracy (asserted by tests/test_fastmath.py against NumPy on 10^6 random inputs
   equal to them in double precision; it is applied identically in the NumPy
   reference (``_physics.exp_sat_numpy``).
 
-Both are plain Python functions of scalars; ``_kernel.py`` compiles them inline.
+Both are plain Python functions of scalars; ``_annulus.py`` compiles them inline.
 The coefficients are monomial forms of Chebyshev interpolants (numpy.polynomial):
 ``atan(x) = x P(x^2)`` with P of degree 18 interpolating atan(sqrt t)/sqrt t on
 t in [0, 1], and ``exp(y)`` of degree 12 on y in [-0.625, 0.625];

@@ -1,12 +1,13 @@
 """The compiled kernels' disk cache, keyed on every module each kernel compiles in.
 
 numba stamps a cached function with a hash of the file that defines it only. The solver
-kernel (``_kernel.py``) inlines functions from ``_physics.py`` and ``_fastmath.py`` and calls
-those of ``_flags.py``, and the sensitivity kernel (``_sensitivity.py``) compiles in those
-and ``_kernel.py``, so an edit there would leave numba serving a kernel compiled from the old
-physics (module constants such as the Reynolds clamp are compiled in). The locators below
-serve these two files alone (``_flags.py``'s own functions use numba's, stamped with that
-file: they use nothing else of propmap) and stamp
+kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
+``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
+kernel (``_sensitivity.py``) compiles in those and ``_annulus.py``, so an edit there would leave
+numba serving a kernel compiled from the old physics (module constants such as the Reynolds
+clamp are compiled in). The locators below serve the kernels' own files (``_kernel.py``,
+``_annulus.py``, ``_sensitivity.py``; ``_flags.py``'s own functions use numba's, stamped with
+that file: they use nothing else of propmap) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
 (:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`), so that editing any of them
 recompiles. They are registered ahead of numba's own locators (numba.core.caching, an
@@ -24,11 +25,13 @@ __all__ = ["CACHE", "KERNEL_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
-KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_physics.py", _HERE / "_fastmath.py", _HERE / "_flags.py")
+KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_fastmath.py",
+                  _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", *KERNEL_SOURCES)
 #: the cached files, each with the sources its stamp covers
-_STAMPED = {os.path.realpath(paths[0]): paths for paths in (KERNEL_SOURCES, SENSITIVITY_SOURCES)}
+_STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in KERNEL_SOURCES[:2]}
+_STAMPED[os.path.realpath(SENSITIVITY_SOURCES[0])] = SENSITIVITY_SOURCES
 
 
 def sources_stamp(paths=KERNEL_SOURCES) -> bytes:

@@ -2,7 +2,7 @@
 
 Only arithmetic, NumPy ufuncs and the injected atan2/exp are used, so the same functions
 run elementwise on NumPy arrays (the vectorised reference in ``_reference.py``) and on
-scalars inside numba-compiled loops (``_kernel.py``). Every other piece of physics is
+scalars inside numba-compiled loops (``_annulus.py``). Every other piece of physics is
 built on them.
 
 Gill & D'Andrea (2017), eqs (1)-(7). With phi = atan2(U_P, U_T) (four-quadrant, the

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _kernel as K
+from . import _annulus as K
 from ._physics import (CAMBERED, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_TOL, cambered_annulus, element,
                        loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step, swirl_target)
 

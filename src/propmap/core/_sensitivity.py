@@ -38,7 +38,7 @@ derivatives are one-sided differences of the blade's sums between the base and t
 constants at the parameter's stepped value (computed by the caller: +h, or -h at the upper
 bound of its range): one pass each.
 
-The element, the loss factor and the momentum side are the solver's own (_kernel): uniform
+The element, the loss factor and the momentum side are the solver's own (_annulus): uniform
 inflow only, every azimuth node of the half circle where V sin beta is nonzero (the nodes
 are symmetric in sin psi, which makes T even and D, M_R odd in V sin beta); in axial flow
 one node, the integrand being independent of psi there: its partials stand for every
@@ -52,10 +52,10 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE
+from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
+                       _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, TWO_OVER_PI)
-from ._kernel import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
-                      _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -121,8 +121,8 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
-    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _kernel._residual,
-    with the loss factor of _kernel.solve_annuli)."""
+    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _annulus._residual,
+    with the loss factor of _annulus.solve_annuli)."""
     floss = 1.0
     if ct >= 0.0 or ch >= 0.0:
         if emp and Vc < 0.0:

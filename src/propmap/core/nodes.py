@@ -1,6 +1,6 @@
 """The blade's quadrature nodes and the kernel's constants of a model (propeller, section
 parameters, air, discretization), cached: what :func:`propmap.rotor_loads` and the
-derivatives hand the compiled kernels (core/_kernel.py, core/_sensitivity.py).
+derivatives hand the compiled kernels (core/_kernel.py with core/_annulus.py, core/_sensitivity.py).
 """
 
 from __future__ import annotations

@@ -1,0 +1,453 @@
+"""Compiled (numba) physics of one annulus: the root solve of eq 11 by the selection rule, and
+the annulus' loads (eqs 5-7); core/_kernel.py runs them over the annuli and the points.
+
+Root-selection rule (documented in docs/solver.md, tested in tests/test_solver_roots.py)
+-----------------------------------------------------------------------------------
+F(v) = dT_BET(v) - dT_BEMT(v) on each annulus. We return the FIRST root met when v
+moves from 0 in the direction of sign F(0): the equilibrium that a dynamic-inflow
+relaxation m dv/dt = F(v), started from rest, settles on. It is therefore always a
+stable root (F crosses zero downward in that direction). Concretely:
+
+1. v_m = momentum_scale(F(0)) (with tip/hub loss, of F(0) / F_loss(v_m0) where v_m0 is
+   the loss-free scale); step h = v_m / MARCH_STEPS.
+2. March v_k = s k h, k = 1..MAX_MARCH, s = sign F(0), until F changes sign.
+   (A fold narrower than h can be stepped over; the rule is thus "first sign change
+   on this march", which is deterministic and reproducible by the NumPy reference.)
+3. If no sign change after MAX_MARCH steps: double v until one appears (a root always
+   exists, docs/numerics.md "Root solve").
+4. Refine the bracket with Chandrupatla's method (inverse quadratic interpolation where
+   the three latest points admit it, else bisection; every step stays inside the
+   bracket) until it is narrower than XTOL * v_m or |F| <= FTOL * |F(0)|; the end point
+   with the smaller |F| is returned. Its first step interpolates through the bracket
+   ends and the extra-scan point of step 5 (which lies beyond the bracket with the sign
+   of F at its near end), so that evaluation also speeds the refinement. Every iterate
+   stays in the bracket of step 2, so the root selected is that of the rule whatever
+   the refinement (the NumPy reference refines with the Illinois method and selects
+   the same roots).
+5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
+   march steps beyond the bracket.
+
+``solve_annuli`` runs these steps for all annuli of an operating point in lockstep (one
+residual sweep over the active annuli, then one state-machine step each), which gives
+the same iterates as a per-annulus loop (tested against the NumPy reference) but lets
+the CPU overlap the independent evaluations.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ._fastmath import atan2_poly, exp_sat
+from ._jitcache import CACHE  # before the decorators: installs the cache locators
+from ._physics import (CAMBERED, GILL_SINCOS, cambered_annulus, empirical_k, inflow_gradients, inverse_sin_phi,
+                       make_axial_mass_flow, make_cambered_element, make_element, make_loss_factor, make_prandtl,
+                       momentum_scale, momentum_thrust, swirl_step, swirl_target)
+
+MARCH_STEPS = 3.0
+MAX_MARCH = 64
+MAX_DOUBLING = 80
+EXTRA_SCAN = 1
+MAX_REFINE = 100
+XTOL = 1e-7
+FTOL = 1e-9
+
+# status codes of one annulus
+OK = 0
+NO_BRACKET = 1
+NO_CONVERGENCE = 2
+NO_SWIRL_BALANCE = 3  # the swirl iteration (_physics.swirl_target) did not balance within SWIRL_MAX_ITER solves
+
+_FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
+_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+# polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
+_atan2 = _jit_inline(atan2_poly)
+_exp_sat = _jit_inline(exp_sat)
+_element_gill = _jit_inline(make_element(_atan2, _exp_sat))
+_element_cambered = _jit_inline(make_cambered_element(_atan2, _exp_sat))
+_prandtl = _jit_inline(make_prandtl(_atan2, _exp_sat))
+_loss_factor = _jit_inline(make_loss_factor(_prandtl))
+_inverse_sin_phi = _jit_inline(inverse_sin_phi)
+_momentum_thrust = _jit_inline(momentum_thrust)
+_momentum_scale = _jit_inline(momentum_scale)
+_cambered_annulus = _jit_inline(cambered_annulus)
+_inflow_gradients = _jit_inline(inflow_gradients)
+_empirical_k = _jit_inline(empirical_k)
+_axial_mass_flow = _jit_inline(make_axial_mass_flow(_empirical_k))
+_swirl_target = _jit_inline(swirl_target)
+_swirl_step = _jit_inline(swirl_step)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
+    """Either model's element (scalar): the loads pass and the tests; the residual loops
+    branch outside the element instead (docs/models.md, Cost)."""
+    if model == CAMBERED:
+        return _element_cambered(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5],
+                                 pk[6], pk[7])
+    return _element_gill(UT, UP, th, sth, cth, s0, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _residual(v, wy, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
+              pk, emp):
+    """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
+
+    ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl).
+
+    ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
+    element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
+    gy = k_y y/R, over the full circle of ``naz`` nodes. ``emp``: the momentum side uses the
+    empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
+    """
+    acc = 0.0
+    UP = Vc + v
+    # one loop per section model and inflow, so that each compiles to straight-line SIMD code
+    if gx == 0.0 and gy == 0.0:
+        if model == CAMBERED:
+            a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+            for k in range(naz):
+                qT, _ = _element_cambered(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                                          a0, a1, a2, a3, a4, a5, a6, a7)
+                acc += qT
+        else:
+            g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+            for k in range(naz):
+                qT, _ = _element_gill(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, g0, g1, g2, g3, g4, g5, sincos)
+                acc += qT
+    else:
+        vx = v * gx
+        vy = v * gy
+        if model == CAMBERED:
+            a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+            for k in range(naz):
+                qT, _ = _element_cambered(wy + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth,
+                                          cth, s0, s1, s2, s3, a0, a1, a2, a3, a4, a5, a6, a7)
+                acc += qT
+        else:
+            g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+            for k in range(naz):
+                qT, _ = _element_gill(wy + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth,
+                                      s0, g0, g1, g2, g3, g4, g5, sincos)
+                acc += qT
+    if emp:
+        w_ax = _axial_mass_flow(v, Vc, Vs)
+        return cfac * acc / naz - floss * mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
+    return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vs, Vc)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp, active,
+                     n_active):
+    """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
+    azimuth node), the annuli already solved included: branch-free loops over contiguous
+    annuli, which compile to SIMD code across them (one annulus' residual at a time is a
+    scalar chain). The empirical momentum in descent (a Newton solve per annulus) only for the
+    ``n_active`` annuli in ``active``, one at a time. ``us``: the annuli's swirl [m/s]."""
+    nr = y.shape[0]
+    if model == CAMBERED:
+        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        for j in range(nr):
+            v = trial[j]
+            qT, _ = _element_cambered(Om * y[j] - us[j], Vc + v, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
+                                      a0, a1, a2, a3, a4, a5, a6, a7)
+            f[j] = cfac[j] * qT
+    else:
+        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+        for j in range(nr):
+            v = trial[j]
+            qT, _ = _element_gill(Om * y[j] - us[j], Vc + v, th[j], sth[j], cth[j], s0[j], g0, g1, g2, g3, g4, g5,
+                                  sincos)
+            f[j] = cfac[j] * qT
+    if emp and Vc < 0.0:
+        for q in range(n_active):
+            j = active[q]
+            v = trial[j]
+            w_ax = _axial_mass_flow(v, Vc, 0.0)
+            f[j] -= floss[j] * mfac[j] * v * np.sqrt(w_ax * w_ax)
+    elif emp:  # Glauert's mass flow |Vc + v| outside descent, written as _residual writes it
+        for j in range(nr):
+            v = trial[j]
+            w_ax = abs(Vc + v)
+            f[j] -= floss[j] * mfac[j] * v * np.sqrt(w_ax * w_ax)
+    else:
+        for j in range(nr):
+            f[j] -= floss[j] * _momentum_thrust(trial[j], mfac[j], 0.0, Vc)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _false_position(a, fa, b, fb):
+    """Zero of the secant through (a, fa), (b, fb); fa * fb < 0."""
+    return (a * fb - b * fa) / (fb - fa)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _chandrupatla_t(x1, f1, x2, f2, x3, f3, tol):
+    """Fraction t of the next iterate x1 + t (x2 - x1) in Chandrupatla's method.
+
+    (x1, f1) is the newest point, (x2, f2) the other end of the bracket (f1 f2 < 0) and
+    (x3, f3) the point dropped last (beyond the bracket, f3 of the sign of f1). Inverse
+    quadratic interpolation where the three points admit a monotone one, else bisection;
+    t is kept tol / 2 away from the ends. Chandrupatla, "A new hybrid quadratic/bisection
+    algorithm for finding the zero of a nonlinear function without using derivatives",
+    Adv. Eng. Software 28 (1997) 145-149, Fig. 1 and eq. 1.
+    """
+    xi = (x1 - x2) / (x3 - x2)
+    phi = (f1 - f2) / (f3 - f2)
+    t = 0.5
+    if 1.0 - np.sqrt(1.0 - xi) < phi and phi < np.sqrt(xi):
+        alpha = (x3 - x1) / (x2 - x1)
+        t = f1 / (f1 - f2) * f3 / (f3 - f2) - alpha * f1 / (f3 - f1) * f2 / (f2 - f3)
+    tl = 0.5 * tol / abs(x2 - x1)
+    return min(max(t, tl), 1.0 - tl)
+
+
+# phases of one annulus' root solve (solve_annuli)
+_INIT = 0
+_MARCH = 1
+_DOUBLE = 2
+_SCAN = 3
+_REFINE = 4
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
+def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz,
+                 model, pk, emp, v, code, nev, multiple):
+    """Roots of eq (11) on every annulus of one operating point, by the module's rule.
+
+    The annuli are independent, so they are solved in lockstep: each sweep evaluates
+    F at the trial inflow of every annulus still active, then advances each annulus'
+    state machine (march, doubling, extra scan, Illinois) by one step. Step for step
+    this is the scalar algorithm of the module docstring, but the evaluations of one
+    sweep do not wait on each other, so the CPU overlaps them (one F(v) at a time is
+    latency-bound). ``us`` (nr,): the annuli's swirl u [m/s], subtracted from the blade speed
+    Omega y (zeros without swirl). Outputs, shape (nr,): v [m/s], code (OK, NO_BRACKET,
+    NO_CONVERGENCE), nev (residual evaluations) and multiple (more roots seen).
+    """
+    nr = y.shape[0]
+    trial = np.zeros(nr)
+    f = np.empty(nr)
+    a = np.zeros(nr)
+    fa = np.empty(nr)
+    b = np.zeros(nr)
+    fb = np.empty(nr)
+    c = np.zeros(nr)
+    fc = np.empty(nr)
+    sgn = np.empty(nr)
+    h = np.empty(nr)
+    xtol = np.empty(nr)
+    ftol = np.empty(nr)
+    phase = np.zeros(nr, dtype=np.int64)
+    k = np.zeros(nr, dtype=np.int64)
+    kb = np.zeros(nr, dtype=np.int64)
+    cnt = np.zeros(nr, dtype=np.int64)
+    floss = np.ones(nr)
+    inv_sin = np.empty(nr)
+    tip = ct[0] >= 0.0  # the switches hold for all annuli
+    hub = ch[0] >= 0.0
+    # axial flow (one node, uniform inflow): all annuli's blade elements in one vectorised loop, the solved
+    # ones recomputed harmlessly (their roots are already stored)
+    vector_axial = naz == 1 and Vs == 0.0 and gx[0] == 0.0 and gy[0] == 0.0
+    active = np.arange(nr)
+    for j in range(nr):
+        nev[j] = 0
+        multiple[j] = False
+        code[j] = OK
+    n_active = nr
+    while n_active > 0:
+        if tip or hub:
+            # the loss factor at every trial first, in branch-free loops of their own over all
+            # annuli (contiguous, so they vectorise; inside each residual it is a long scalar
+            # chain). Annuli already solved are recomputed harmlessly.
+            if emp and Vc < 0.0:
+                # empirical descent: the vortex sheets are carried by the mass-flow velocity of
+                # the closure (_physics.axial_mass_flow), not by U_P, which passes through 0 near
+                # the annulus' ideal autorotation and would make F(v) jump there (several roots)
+                for j in range(nr):
+                    inv_sin[j] = _inverse_sin_phi(_axial_mass_flow(trial[j], Vc, Vs), Om * y[j] - us[j])
+            else:
+                for j in range(nr):
+                    inv_sin[j] = _inverse_sin_phi(Vc + trial[j], Om * y[j] - us[j])
+            if tip:
+                for j in range(nr):
+                    floss[j] = _prandtl(ct[j], inv_sin[j])
+            if hub:
+                for j in range(nr):
+                    floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
+        if vector_axial:  # every annulus, solved or not, in one SIMD loop
+            _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp,
+                             active, n_active)
+            for q in range(n_active):
+                nev[active[q]] += 1
+        else:
+            for q in range(n_active):  # independent evaluations
+                j = active[q]
+                f[j] = _residual(trial[j], Om * y[j] - us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
+                                 cfac[j], mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
+                nev[j] += 1
+        m = 0
+        for q in range(n_active):
+            j = active[q]
+            fj = f[j]
+            ph = phase[j]
+            refine = False
+            done = False
+            if ph == _INIT:
+                if fj == 0.0:
+                    v[j] = 0.0
+                    done = True
+                else:
+                    sgn[j] = 1.0 if fj > 0.0 else -1.0
+                    vm = _momentum_scale(fj, mfac[j], Vs, Vc)
+                    if ct[j] >= 0.0 or ch[j] >= 0.0:
+                        # the loss factor F scales the momentum side: size the march with F at
+                        # the loss-free estimate (F falls with v, so this still undershoots)
+                        vm = _momentum_scale(fj, mfac[j] * _loss_factor(Vc + sgn[j] * vm, Om * y[j] - us[j], ct[j],
+                                                                        ch[j]), Vs, Vc)
+                    if emp and Vc < 0.0:
+                        # the empirical closure's root lies near the annulus' hover inflow (vortex
+                        # ring) or below it (windmill brake): a march sized by it brackets the one root
+                        vm = max(vm, np.sqrt(abs(fj) / mfac[j]))
+                    h[j] = vm / MARCH_STEPS
+                    xtol[j] = XTOL * vm
+                    ftol[j] = FTOL * abs(fj)
+                    fa[j] = fj
+                    fb[j] = fj
+                    k[j] = 1
+                    phase[j] = _MARCH
+                    trial[j] = sgn[j] * h[j]
+            elif ph == _MARCH:
+                b[j] = trial[j]
+                fb[j] = fj
+                if fj * sgn[j] <= 0.0:
+                    kb[j] = k[j]
+                    if EXTRA_SCAN > 0:
+                        phase[j] = _SCAN
+                        cnt[j] = 1
+                        trial[j] = sgn[j] * (kb[j] + 1) * h[j]
+                    else:
+                        refine = True
+                else:
+                    a[j] = b[j]
+                    fa[j] = fj
+                    k[j] += 1
+                    if k[j] > MAX_MARCH:
+                        phase[j] = _DOUBLE
+                        cnt[j] = 0
+                        trial[j] = 2.0 * b[j]
+                    else:
+                        trial[j] = sgn[j] * k[j] * h[j]
+            elif ph == _DOUBLE:
+                b[j] = trial[j]
+                fb[j] = fj
+                if fj * sgn[j] <= 0.0:
+                    refine = True
+                else:
+                    a[j] = b[j]
+                    fa[j] = fj
+                    cnt[j] += 1
+                    if cnt[j] >= MAX_DOUBLING:
+                        v[j] = np.nan
+                        code[j] = NO_BRACKET
+                        done = True
+                    else:
+                        trial[j] = 2.0 * b[j]
+            elif ph == _SCAN:
+                if fj * sgn[j] > 0.0:
+                    multiple[j] = True
+                    refine = True
+                else:
+                    c[j] = trial[j]  # beyond the bracket, F of the sign of F(b): seeds the interpolation
+                    fc[j] = fj
+                    cnt[j] += 1
+                    if cnt[j] > EXTRA_SCAN:
+                        refine = True
+                    else:
+                        trial[j] = sgn[j] * (kb[j] + cnt[j]) * h[j]
+            else:  # _REFINE: Chandrupatla on the bracket [a, b], fa * fb < 0, b the newest point
+                # the secant through the two newest points estimates the distance to the root
+                est = abs(fj * (trial[j] - b[j]) / (fj - fb[j]))
+                if fj * fb[j] > 0.0:
+                    c[j] = b[j]
+                    fc[j] = fb[j]
+                else:
+                    c[j] = a[j]
+                    fc[j] = fa[j]
+                    a[j] = b[j]
+                    fa[j] = fb[j]
+                b[j] = trial[j]
+                fb[j] = fj
+                if abs(fj) <= ftol[j] or abs(b[j] - a[j]) <= xtol[j] or est <= xtol[j]:
+                    v[j] = b[j] if abs(fb[j]) <= abs(fa[j]) else a[j]
+                    done = True
+                else:
+                    cnt[j] += 1
+                    if cnt[j] >= MAX_REFINE:
+                        v[j] = b[j]
+                        code[j] = NO_CONVERGENCE
+                        done = True
+                    else:
+                        trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
+                                                          xtol[j]) * (a[j] - b[j])
+            if refine:
+                if fb[j] == 0.0:
+                    v[j] = b[j]
+                    done = True
+                else:
+                    phase[j] = _REFINE
+                    cnt[j] = 0
+                    if ph == _SCAN and not multiple[j]:
+                        trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
+                                                          xtol[j]) * (a[j] - b[j])
+                    else:  # no third point of the right sign: a secant step first
+                        tl = 0.5 * xtol[j] / abs(a[j] - b[j])
+                        t = min(max(fb[j] / (fb[j] - fa[j]), tl), 1.0 - tl)
+                        trial[j] = b[j] + t * (a[j] - b[j])
+            if not done:
+                active[m] = j
+                m += 1
+        n_active = m
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def annulus_loads(v, y, Om, u, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk,
+                  axial):
+    """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
+    (eqs 5-7, azimuth-averaged; linear inflow as ``_residual``); ``u`` the annulus' swirl [m/s].
+
+    dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
+    y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
+    dY/dy, the side force toward the advancing side, -<dH(psi) cos psi>, and dM_P/dy,
+    the pitching moment density -y <dT(psi) cos psi> (positive when the upstream half,
+    psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and are only
+    accumulated with a linear one (gx or gy non-zero, full-circle nodes).
+    """
+    aT = 0.0
+    aD = 0.0
+    aQ = 0.0
+    aR = 0.0
+    aY = 0.0
+    aP = 0.0
+    UP = Vc + v
+    if gx == 0.0 and gy == 0.0:
+        for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
+            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+    else:
+        vx = v * gx
+        vy = v * gy
+        for k in range(naz):
+            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth, s0, s1,
+                              s2, s3, model, pk)
+            aT += qT
+            aD += qH * sinpsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+            aY -= qH * cospsi[k]
+            aP -= qT * cospsi[k]
+    dD = 0.0 if axial else cfac * aD / naz  # exactly 0 by symmetry in axial flow
+    dR = 0.0 if axial else y * cfac * aR / naz
+    return cfac * aT / naz, dD, y * cfac * aQ / naz, dR, cfac * aY / naz, y * cfac * aP / naz
