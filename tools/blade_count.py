@@ -4,7 +4,7 @@ Data: UIUC Propeller Data Site vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), 
 5 in 15 deg and DA4022 5 in blades on 2-, 3- and 4-blade hubs (the catalogue's
 ``nr640_5_15deg``, ``_3b``, ``_4b`` and ``da4022_5x3.75``, ``_3b``, ``_4b``).
 
-    .venv/bin/python tools/blade_count.py      # a few seconds
+    .venv/bin/python tools/blade_count.py      # about 2 minutes (2026-11-23, 2 cores)
 
 For each blade, the cambered model is fitted (CLI defaults) to all of the 2-blade
 propeller's data; that set predicts the 3- and 4-blade hubs' J-sweeps (rms and mean of
@@ -12,7 +12,10 @@ dCT / static CT, %). Then one parameter, a collective offset, is fitted to each 
 static run alone (thrust and torque, under the population prior; the rest of the 2-blade set
 kept) and the sweeps predicted again, with the static run's own thrust error left; and to
 the sweeps alone, for comparison: a hub that seats its blades at another angle would ask for
-the same offset from both. Prints the numbers of docs/validation.md, "Blade count".
+the same offset from both. Last, the same with swirl (``RotorOptions.swirl``): the 2-blade
+fit from the generic set with swirl on, and its predictions of the other hubs (most of the
+time: with swirl the fits difference the solver). Prints the numbers of docs/validation.md, "Blade
+count", and docs/models.md, "Swirl".
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ import propmap as pm
 from propmap.core.air import Air
 from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
 from propmap.identify.data import _loads_from_runs
+from propmap.io.calibration import generic_params
 
 BLADES = ("nr640_5_15deg", "da4022_5x3.75")
 
@@ -72,6 +76,20 @@ def main() -> None:
                   f"+ a collective from the static run ({math.degrees(off.collective):+.2f} deg) {a[0]:4.1f}% "
                   f"(mean {a[1]:+.1f}%), static CT then {static_bias(prop, off, entry):+.1f}%; a collective from the "
                   f"sweeps {math.degrees(off_sw.collective):+.2f} deg")
+    for swirl in (False, True):
+        base = generic_params().replace(swirl=swirl)
+        for blade in BLADES:
+            prop2 = pm.load_propeller(blade)
+            two = fit_loads(loads_from_catalogue(cat[blade], prop2.diameter), prop2, base=base).params
+            own = sweep_errors(prop2, two, cat[blade])
+            line = f"swirl {'on ' if swirl else 'off'} {blade:<16} 2 blades (fitted) {own[0]:4.1f}%"
+            for hub in ("_3b", "_4b"):
+                entry = cat[blade + hub]
+                prop = pm.load_propeller(blade + hub)
+                e = sweep_errors(prop, two, entry)
+                line += (f"; {prop.n_blades} blades {e[0]:4.1f}% (mean {e[1]:+.1f}%), "
+                         f"static {static_bias(prop, two, entry):+.1f}%")
+            print(line)
 
 
 if __name__ == "__main__":

@@ -57,8 +57,9 @@ def _reference_errors(data, prop, air):
     return {"paper_table_i": paper, "hover_model": hover}
 
 
-def _one_propeller(name: str, protocols) -> dict:
-    """Cross-validation row of one catalogue propeller (runs in a worker process)."""
+def _one_propeller(name: str, protocols, rotor_options=()) -> dict:
+    """Cross-validation row of one catalogue propeller (runs in a worker process); ``rotor_options``:
+    (name, value) pairs given to the generic set, so to every fit started from it."""
     from ..core.airfoil import Air
     from ..identify import loads_from_catalogue
     from ..io.calibration import generic_without, population
@@ -69,6 +70,9 @@ def _one_propeller(name: str, protocols) -> dict:
     prop = load_propeller(name)
     data = loads_from_catalogue(catalogue()[name], prop.diameter, air=air)
     generic, label = generic_without(name)
+    if rotor_options:
+        generic = generic.replace(**dict(rotor_options))
+        label += " with " + ", ".join(f"{k} = {v}" for k, v in rotor_options)
     cv = cross_validate(data, prop, generic, protocols=protocols, air=air, population=population(without=name))
     return {"propeller": name, "generic_used": label, **cv, **_reference_errors(data, prop, air)}
 
@@ -86,7 +90,7 @@ def _worker_init() -> None:
     tqdm.set_lock(threading.RLock())
 
 
-def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> dict:
+def run_catalogue(protocols, only, progress=True, jobs: int | None = None, rotor_options=None) -> dict:
     """Per-propeller held-out errors of ``protocols`` and the no-fit references.
 
     The propellers are spread over ``jobs`` worker processes (default: the cores),
@@ -103,6 +107,10 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> di
         Show a progress bar on a terminal.
     jobs : int, optional
         Worker processes.
+    rotor_options : dict, optional
+        Rotor options (:class:`~propmap.core.airfoil.RotorOptions` fields, e.g. ``{"swirl":
+        True}``) set on every generic set, and so on every fit and prediction, to measure an
+        option's effect; the generic sets and the prior stay those calibrated without it.
 
     Returns
     -------
@@ -132,17 +140,18 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None) -> di
     if short:
         raise InputError(f"--props: {', '.join(short)} lack(s) a static run and sweeps at two rotation rates")
     jobs = min(jobs or os.cpu_count() or 1, len(names))
+    opts = tuple(sorted((rotor_options or {}).items()))
     bar = tqdm(total=len(names), desc="validate --all", unit="prop", disable=None if progress else True, leave=False)
     try:
         if jobs <= 1:
             rows = []
             for n in names:
-                rows.append(_one_propeller(n, protocols))
+                rows.append(_one_propeller(n, protocols, opts))
                 bar.update(1)
         else:
             pool = ProcessPoolExecutor(jobs, mp_context=get_context("spawn"), initializer=_worker_init)
             try:
-                futures = [pool.submit(_one_propeller, n, tuple(protocols)) for n in names]
+                futures = [pool.submit(_one_propeller, n, tuple(protocols), opts) for n in names]
                 rows = []
                 for f in futures:
                     rows.append(f.result())
