@@ -33,7 +33,7 @@ def _exp_all(z, out):
 def _element_all(UT, UP, th, s0, s1, s2, s3, model, pk, qT, qH):
     for i in range(UT.size):
         qT[i], qH[i] = _annulus._element(UT[i], UP[i], th[i], math.sin(th[i]), math.cos(th[i]), s0[i], s1[i], s2[i],
-                                        s3[i], model, pk)
+                                         s3[i], model, pk)
 
 
 @numba.njit

@@ -192,9 +192,9 @@ def _solve_annuli_python(nd, p, om, V, b):
     nr = nd.y.size
     v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
     _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, np.zeros(nr), nd.theta, nd.sin_th,
-                                 nd.cos_th, nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct,
-                                 nd.ch, nd.sinpsi, nd.cospsi, np.zeros(nr), np.zeros(nr), nd.sinpsi.size // 2,
-                                 *_model_constants(p), False, v, code, nev, mult)
+                                  nd.cos_th, nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct,
+                                  nd.ch, nd.sinpsi, nd.cospsi, np.zeros(nr), np.zeros(nr), nd.sinpsi.size // 2,
+                                  *_model_constants(p), False, v, code, nev, mult)
     return v, code, nev
 
 

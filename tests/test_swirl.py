@@ -139,10 +139,11 @@ def test_swirl_gives_up_with_its_own_code(apc8x6, apc_params):
     zeros = np.zeros(6)
 
     def step(it):
-        us, code = zeros.copy(), np.zeros(6, np.int64)
-        done = _kernel._swirl_iterate.py_func(us, zeros.copy(), zeros.copy(), r.v_i, code, nd.y, 900.0, 0.0, 0.0,
-                                              nd.theta, nd.sin_th, nd.cos_th, nd.sc, zeros, zeros, zeros, nd.cfac,
+        us, code, multiple = zeros.copy(), np.zeros(6, np.int64), np.zeros(6, bool)
+        done = _kernel._swirl_iterate.py_func(us, np.full((4, 6), np.nan), r.v_i, code, multiple, nd.y, 900.0, 0.0,
+                                              0.0, nd.theta, nd.sin_th, nd.cos_th, nd.sc, zeros, zeros, zeros, nd.cfac,
                                               nd.sinpsi, nd.cospsi, zeros, zeros, 1, model, pk, True, it)
+        assert not multiple.any()
         return done, us, code
 
     done, us, code = step(0)
@@ -167,3 +168,42 @@ def test_swirl_failure_message(apc8x6, monkeypatch):
     monkeypatch.setattr(_kernel, "solve_batch_serial", failing)
     with pytest.raises(pm.SolverError, match="swirl did not balance the annulus' angular momentum"):
         pm.rotor_loads(apc8x6, pm.CamberedParams(swirl=True), 900.0, 5.0, 0.2)
+
+
+def test_swirl_where_the_selected_root_jumps_is_kept_at_the_jump_and_flagged():
+    # the NeuroBEM quadrotor's rotor (the authors' lumped blade) in a steep oblique descent with
+    # Glauert's momentum: near the tip the root selected by the rule jumps between two branches
+    # (v_i about 3.9 and 8.0 m/s) as the swirl moves between 0.009 and 0.027 Omega y, so no
+    # balance exists on it. The iteration closes in on the jump (bisection), keeps the root there
+    # and flags the point; without swirl the same point has no such flag.
+    from importlib import resources
+
+    from propmap.io.calibration import generic_params
+    from propmap.vehicle import read_vehicle
+
+    vehicle = read_vehicle(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml")
+    prop = vehicle.rotors[0].propeller
+    g = generic_params().replace(descent="glauert")
+    om, V, b = 668.0, 10.5, math.radians(113.0)
+    plain = pm.rotor_loads(prop, g, om, V, b)
+    r = pm.rotor_loads(prop, g.replace(swirl=True), om, V, b)
+    assert plain.converged and not plain.multiple_roots
+    assert r.converged and r.multiple_roots
+    assert 0.9 * plain.thrust < r.thrust < plain.thrust
+
+
+def test_swirl_with_a_linear_inflow_and_in_descent(apc8x6):
+    # Pitt-Peters' gradient vanishes in axial flow: there the linear inflow with swirl is the
+    # uniform one with swirl, exactly; in forward flight swirl still takes thrust. The default
+    # (empirical) descent converges with swirl over a descent grid.
+    g = pm.CamberedParams(tip_loss=True, swirl=True)
+    pp = g.replace(inflow="pitt-peters")
+    om = 8000 * RPM
+    axial = [pm.rotor_loads(apc8x6, p, om, 6.0, 0.0) for p in (g, pp)]
+    assert float(axial[0].thrust) == float(axial[1].thrust)
+    fwd = pm.rotor_loads(apc8x6, pp, om, 10.0, math.radians(60.0))
+    fwd_plain = pm.rotor_loads(apc8x6, pp.replace(swirl=False), om, 10.0, math.radians(60.0))
+    assert fwd.converged and 0.9 * fwd_plain.thrust < fwd.thrust < fwd_plain.thrust
+    V, b = np.meshgrid([2.0, 5.0, 10.0, 15.0], np.radians([100.0, 135.0, 160.0, 180.0]))
+    r = pm.rotor_loads(apc8x6, g, np.array([4000.0, 10000.0])[:, None, None] * RPM, V, b)
+    assert r.converged.all()

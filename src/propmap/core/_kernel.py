@@ -14,39 +14,50 @@ from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _
                        _swirl_target, annulus_loads, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_TOL
+from ._physics import INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _swirl_iterate(us, u_prev, g_prev, v, code, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx,
+def _swirl_iterate(us, sw, v, code, multiple, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx,
                    gy, naz, model, pk, axial, it):
     """One swirl step of an operating point after its root solve with the swirl ``us``: every
-    annulus' target (_physics.swirl_target, from its loads at the roots ``v``) and imbalance;
-    True when all balance to SWIRL_TOL Omega y (``us`` is then the swirl the roots were solved
-    with), else ``us`` takes the next iterate (_physics.swirl_step; ``u_prev``, ``g_prev`` keep
-    the last one) and False; on the last iteration the annuli still out of balance get
-    NO_SWIRL_BALANCE."""
+    annulus' target (_physics.swirl_target, from its loads at the roots ``v``) and imbalance
+    g. An annulus is done when it balances to SWIRL_TOL Omega y, or when the iterates with
+    g > 0 and g < 0 close in on each other to that width without a balance: the selected root
+    jumps between branches there as u moves (a fold of eq 11), no balance exists on it, and
+    the annulus keeps that u with its ``multiple`` flag raised. Others move to the next
+    iterate (_physics.swirl_step); ``sw`` (4, nr) keeps each annulus' previous iterate, its
+    imbalance and the bracket's ends (NaN until known). True when every annulus is done (``us``
+    is then the swirl the roots were solved with); on the last iteration those that are not
+    get NO_SWIRL_BALANCE."""
     nr = y.shape[0]
-    balanced = True
+    all_done = True
     for j in range(nr):
         if code[j] != OK:
             continue
         t, _, q, _, _, _ = annulus_loads(v[j], y[j], Om, us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
                                          s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, axial)
+        tol = SWIRL_TOL * Om * y[j]
         lim = SWIRL_LIMIT * Om * y[j]
-        g = min(max(_swirl_target(v[j], t, q, y[j]), -lim), lim) - us[j]
-        if abs(g) > SWIRL_TOL * Om * y[j]:
-            balanced = False
-            if it + 1 >= SWIRL_MAX_ITER:
-                code[j] = NO_SWIRL_BALANCE
-        nxt = _swirl_step(us[j], u_prev[j], g, g_prev[j], it == 0, lim)
-        u_prev[j] = us[j]
-        g_prev[j] = g
+        u = us[j]
+        g = min(max(_swirl_target(v[j], t, q, y[j]), -lim), lim) - u
+        lo = u if g > 0.0 else sw[2, j]
+        hi = u if g < 0.0 else sw[3, j]
+        nxt = u
+        if abs(g) > tol:
+            if lo == lo and hi == hi and abs(hi - lo) <= tol:
+                multiple[j] = True  # the root jumps at this u: no balance on it
+            else:
+                all_done = False
+                if it + 1 >= SWIRL_MAX_ITER:
+                    code[j] = NO_SWIRL_BALANCE
+                nxt = _swirl_step(u, g, sw[0, j], sw[1, j], lo, hi, it == 0, it >= SWIRL_SECANT_ITER, lim)
+        sw[0, j] = u
+        sw[1, j] = g
+        sw[2, j] = lo
+        sw[3, j] = hi
         us[j] = nxt
-    if balanced:
-        for j in range(nr):
-            us[j] = u_prev[j]  # the swirl the roots were solved with
-    return balanced
+    return all_done
 
 
 #: rows of the packed outputs of solve_batch: ``out`` (N_OUT, n), ``rad`` (N_RAD, rows, nr),
@@ -76,9 +87,10 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
     uniform inflow, whose mean inflow gives the wake skew angle and the gradients
     (_physics.inflow_gradients), then with the linear inflow over the full circle.
     ``swirl``: the annuli's swirl u (_physics.swirl_target) is iterated around these solves,
-    by a secant per annulus from u = 0, until every annulus' angular momentum balances to
-    SWIRL_TOL Omega y (an annulus that does not within SWIRL_MAX_ITER solves fails with
-    NO_SWIRL_BALANCE); without it u = 0 and each point is solved once.
+    by a bracketed secant per annulus from u = 0, until every annulus' angular momentum balances
+    to SWIRL_TOL Omega y or its selected root is found to jump there (flagged as multiple roots;
+    :func:`_swirl_iterate`); an annulus that does neither within SWIRL_MAX_ITER solves fails
+    with NO_SWIRL_BALANCE. Without it u = 0 and each point is solved once.
     ``radius``: R [m]. Outputs (packed, so that the argument list stays short enough for
     numba's inliner): ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
     the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
@@ -113,8 +125,7 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
         s3 = np.empty(nr)
         gx = np.zeros(nr)
         gy = np.zeros(nr)
-        u_prev = np.zeros(nr if swirl else 0)  # the swirl's previous iterate and its imbalance
-        g_prev = np.zeros(nr if swirl else 0)
+        sw = np.full((4, nr if swirl else 0), np.nan)  # the swirl iteration's state (_swirl_iterate)
         if model == CAMBERED:
             # Reynolds, Mach and rotation corrections, once per point and annulus
             w2 = 0.5 * Vs[i] * Vs[i] + Vc[i] * Vc[i]
@@ -158,7 +169,7 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                              cospsi, gx, gy, naz, model, pk, emp, v, code, nev, multiple)
                 for j in range(nr):
                     ne += nev[j]
-            if swirl and _swirl_iterate(us, u_prev, g_prev, v, code, y, Om[i], Vs[i], Vc[i], th, sth, cth, s0, s1, s2,
+            if swirl and _swirl_iterate(us, sw, v, code, multiple, y, Om[i], Vs[i], Vc[i], th, sth, cth, s0, s1, s2,
                                         s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk, axial, it):
                 break
         Ti = 0.0

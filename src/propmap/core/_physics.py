@@ -373,20 +373,23 @@ def inflow_gradients(mu, lam, model):
     return (15.0 * np.pi / 32.0) * np.tan(0.5 * chi), 0.0
 
 
-
 # Swirl (RotorOptions.swirl): the tangential induced velocity u of an annulus, from its angular
 # momentum. The blade sees the tangential speed Omega y - u (+ V sin beta sin psi); the wake
 # carries away the angular momentum the torque puts in, dQ/dy = F 4 pi rho y^2 W u (the mass
 # flow of eq 10 times the swirl 2u far behind the disk, u at the disk): the rotational
-# interference factor a' = u / (Omega y) of propeller blade-element momentum theory (H. Glauert,
-# "Airplane Propellers", in W. F. Durand (ed.), Aerodynamic Theory, vol. IV, div. L, Springer,
-# 1935, ch. VII; in the form of S. A. Ning, "A simple solution method for the blade element
-# momentum equations with guaranteed convergence", Wind Energy 17, 2014, eqs for a'). Where eq 11
+# interference factor a' = u / (Omega y) of blade-element momentum theory (H. Glauert, "Airplane
+# Propellers", in W. F. Durand (ed.), Aerodynamic Theory, vol. IV, div. L, Springer, 1935; the
+# same balance in the wind-turbine form of S. A. Ning, "A simple solution method for the blade
+# element momentum equations with guaranteed convergence", Wind Energy 17, 2014). Where eq 11
 # holds, dT/dy = F 4 pi rho y v W, so u = v (dQ/dy / y) / (dT/dy), free of F and W.
-#: outer iterations of the swirl around the root solve (a secant in u per annulus)
-SWIRL_MAX_ITER = 30
-#: the swirl iteration stops when every annulus' |u_target - u| <= SWIRL_TOL Omega y: at the
-#: root solve's own accuracy (XTOL = 1e-7 of the inflow scale), which sets the target's noise
+#: outer iterations of the swirl around the root solve (a bracketed secant in u per annulus)
+SWIRL_MAX_ITER = 40
+#: iterations after which a bracketed annulus bisects (the secant converges in 4-6 where a
+#: balance exists; where the root jumps, bisection closes a bracket of 1e-3 Omega y in 14)
+SWIRL_SECANT_ITER = 8
+#: the swirl iteration stops when every annulus' |u_target - u| <= SWIRL_TOL Omega y: an error
+#: of that size moves v by about as much as the root solve's own tolerance (XTOL = 1e-7 of the
+#: inflow scale), and that tolerance's noise in the target is far smaller
 SWIRL_TOL = 1e-7
 #: |u| <= SWIRL_LIMIT Omega y (the blade keeps half its speed; reached only at a rotor stopped in
 #: a flow, or at annuli of near-zero thrust and finite torque)
@@ -402,10 +405,15 @@ def swirl_target(v, dT, dQ, y):
     return v * dQ / (y * dT)
 
 
-def swirl_step(u, u_prev, g, g_prev, first, limit):
+def swirl_step(u, g, u_prev, g_prev, lo, hi, first, bisect, limit):
     """The next swirl iterate (scalars): the secant through (u_prev, g_prev) and (u, g), with
     g = target - u; a plain step u + g on the first iteration, for a flat secant or a
-    non-finite one; clipped to [-limit, limit]."""
+    non-finite one. Once iterates with g > 0 (the latest, ``lo``) and g < 0 (``hi``) are known
+    (NaN until then), a sign change of g lies between them, and a step that leaves that
+    bracket is replaced by its midpoint, as is every step with ``bisect`` (from iteration
+    SWIRL_SECANT_ITER on: a secant creeps along a jump of g), so that the bracket shrinks to a
+    balance or, where the selected root jumps between branches as u moves, to the jump.
+    Clipped to [-limit, limit]."""
     nxt = u + g
     if not first:
         den = g - g_prev
@@ -413,6 +421,8 @@ def swirl_step(u, u_prev, g, g_prev, first, limit):
             sec = u - g * (u - u_prev) / den
             if sec == sec and abs(sec) < 1e300:
                 nxt = sec
+    if lo == lo and hi == hi and (bisect or not (min(lo, hi) < nxt < max(lo, hi))):
+        nxt = 0.5 * (lo + hi)
     return min(max(nxt, -limit), limit)
 
 #: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),

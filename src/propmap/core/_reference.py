@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _annulus as K
-from ._physics import (CAMBERED, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_TOL, cambered_annulus, element,
+from ._physics import (CAMBERED, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element,
                        loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step, swirl_target)
 
 
@@ -21,28 +21,34 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
 
     ``nodes`` from ``nodes._nodes`` for the same parameters ``p`` and ``air``. The paper's
     uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping); with
-    ``p.swirl`` the swirl is iterated around the root solve by the kernel's secant, annulus by
-    annulus (_physics.swirl_target, swirl_step), with NumPy arrays.
+    ``p.swirl`` the swirl is iterated around the root solve by the kernel's bracketed secant,
+    annulus by annulus (_physics.swirl_target, swirl_step; _kernel._swirl_iterate), with NumPy
+    arrays.
     """
     if not p.swirl:
         return _solve_u(om, Vs, Vc, nodes, p, air, None)[:5]
     om1 = np.asarray(om, float)
     Omy = om1[:, None] * nodes.y[None, :]
+    tol, lim = SWIRL_TOL * Omy, SWIRL_LIMIT * Omy
     u = np.zeros_like(Omy)
-    u_prev = np.zeros_like(u)
-    g_prev = np.zeros_like(u)
+    u_prev, g_prev = np.full_like(u, np.nan), np.full_like(u, np.nan)
+    lo, hi = np.full_like(u, np.nan), np.full_like(u, np.nan)
     target = np.vectorize(swirl_target)
     step = np.vectorize(swirl_step)
-    lim = SWIRL_LIMIT * Omy
-    for it in range(SWIRL_MAX_ITER):  # a point keeps its swirl once balanced, as in the kernel
+    for it in range(SWIRL_MAX_ITER):
         T, D, Q, v, conv, dT, dQ = _solve_u(om, Vs, Vc, nodes, p, air, u)
         g = np.clip(target(v, dT, dQ, nodes.y[None, :]), -lim, lim) - u
-        done = np.all(np.abs(g) <= SWIRL_TOL * Omy, axis=1)
+        lo = np.where(g > 0, u, lo)
+        hi = np.where(g < 0, u, hi)
+        # balanced, or the root jumps there (the bracket closed without a balance; the kernel
+        # flags it as multiple roots): the annulus keeps its u, as in the kernel
+        done = (np.abs(g) <= tol) | (np.abs(hi - lo) <= tol)
         if done.all():
-            break
-        nxt = np.where(done[:, None], u, step(u, u_prev, g, g_prev, it == 0, lim))
+            return T, D, Q, v, conv
+        with np.errstate(invalid="ignore"):  # NaN: a bracket end not known yet
+            nxt = np.where(done, u, step(u, g, u_prev, g_prev, lo, hi, it == 0, it >= SWIRL_SECANT_ITER, lim))
         u, u_prev, g_prev = nxt, u, g
-    return T, D, Q, v, conv & done
+    return T, D, Q, v, conv & done.all(axis=1)
 
 
 def _solve_u(om, Vs, Vc, nodes, p, air, u):

@@ -51,9 +51,9 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._jitcache import CACHE
 from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
                        _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
+from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, TWO_OVER_PI)
 

@@ -339,8 +339,8 @@ def rotor_loads(
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
         why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
-               3: f"the swirl did not balance the annulus' angular momentum within {ph.SWIRL_MAX_ITER} root solves "
-                  "(the section's stall fold may leave no balance on the selected root)"}[reason]
+               3: f"the swirl did not balance the annulus' angular momentum within {ph.SWIRL_MAX_ITER} root solves, "
+                  "nor close in on a jump of its selected root"}[reason]
         raise SolverError(
             f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
