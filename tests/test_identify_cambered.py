@@ -6,7 +6,6 @@ axial J-sweeps of the APC 8x6E (APC PE0 geometry) with known cambered parameters
 """
 
 import math
-from dataclasses import replace
 from importlib import resources
 
 import numpy as np
@@ -160,6 +159,7 @@ def test_joint_fit_weights_propellers_alike(apc8x6):
     for k, (data, lo, hi) in enumerate(((big, 0, 96), (small, 96, 144))):
         own = fit_loads(data, apc8x6, base=r.params, options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=1))
         unscaled = r.residuals[lo:hi] * np.sqrt(data.n)
+        np.testing.assert_allclose(unscaled, own.residuals, rtol=1e-6, atol=1e-9)
         assert np.sqrt(np.mean(unscaled**2)) == pytest.approx(r.extra["per_propeller"][k]["rms_residual"], rel=1e-9)
     # the compromise lies between the two truths
     assert other.cl_alpha < r.params.cl_alpha < TRUE.cl_alpha
