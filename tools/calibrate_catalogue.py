@@ -3,7 +3,12 @@
 Run from the repository root (141 s on the 2-core machine, two worker processes, 2026-11-23;
 about 40 minutes before the fits had implicit Jacobians):
 
-    .venv/bin/python tools/calibrate_catalogue.py [--jobs 2]
+    .venv/bin/python tools/calibrate_catalogue.py [--jobs 2] [--swirl]
+
+``--swirl`` calibrates the model with the swirl option (RotorOptions.swirl) on every fit: 984 s
+on the same machine (2026-11-23; the fits difference the solver, which costs 5x per point
+with swirl). It overwrites the shipped calibration like any run: do it in a scratch copy of
+the repository (docs/models.md, Swirl).
 
 The procedure (docs/validation.md explains and measures each choice) is hierarchical, over
 every catalogue propeller with a static run and J-sweeps, both UIUC volumes:
@@ -77,10 +82,10 @@ def _worker_init() -> None:
     numba.set_num_threads(1)
 
 
-def _single(name: str):
-    """Step 1: the free 8-parameter fit of one propeller."""
+def _single(name: str, start=START):
+    """Step 1: the free 8-parameter fit of one propeller, from ``start``."""
     d, prop = _data(name)
-    res = fit_loads(d, prop, base=START, options=FitOptions(names=CAMBERED_FIT_RE, prior=False))
+    res = fit_loads(d, prop, base=start, options=FitOptions(names=CAMBERED_FIT_RE, prior=False))
     return name, {"params": params_to_si(res.params), "rms_residual": float(np.sqrt(np.mean(res.residuals ** 2)))}
 
 
@@ -151,10 +156,12 @@ def _save(work, name: str, result) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2, help="worker processes")
+    ap.add_argument("--swirl", action="store_true", help="calibrate with the swirl option on (an experiment)")
     ap.add_argument("--work", type=Path, default=None,
                     help="folder for the steps' results: a rerun reuses those already there (default: none kept)")
     args = ap.parse_args()
     jobs, work = args.jobs, args.work
+    start = START.replace(swirl=True) if args.swirl else START
     if work is not None:
         work.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
@@ -167,7 +174,7 @@ def main() -> None:
     if single is None:
         with pool() as ex:
             single = {}
-            for i, (n, r) in enumerate(ex.map(_single, names)):
+            for i, (n, r) in enumerate(ex.map(partial(_single, start=start), names)):
                 single[n] = r
                 print(f"[1: {i + 1}/{len(names)}] {n}: rms residual {r['rms_residual']:.4f}", flush=True)
         _save(work, "single.json", single)
@@ -177,7 +184,7 @@ def main() -> None:
     data = {n: _data(n) for n in names}
     joint = _load(work, "joint.json", names)
     if joint is None:
-        gparams, pop, gct, gcp, gn, ghit, gcov = _generic(names, single, data)
+        gparams, pop, gct, gcp, gn, ghit, gcov = _generic(names, single, data, start=start)
         print(f"generic: median rms dCT/CT0 {gct:.4f}, dCP/CP0 {gcp:.4f}; Reynolds medians {pop['re_medians']}",
               flush=True)
         folds = []
