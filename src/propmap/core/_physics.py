@@ -425,6 +425,7 @@ def swirl_step(u, g, u_prev, g_prev, lo, hi, first, bisect, limit):
         nxt = 0.5 * (lo + hi)
     return min(max(nxt, -limit), limit)
 
+
 #: the Reynolds corrections are held constant outside Re_ref * exp([LN_RE_MIN, LN_RE_MAX]),
 #: i.e. Re in [1e4, 5e5] for Re_ref = 1e5: vol. 1's data span 14,500-125,000 at 0.75 R, and a
 #: power or log law is not extrapolated further; vol. 2's reach 3,600, and acting down to 3e3
