@@ -20,7 +20,7 @@ from importlib import resources
 
 import numpy as np
 
-from .core.airfoil import Air, SectionParams
+from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
 from .core.hover import HoverModel
 from .core.solver import rotor_loads
@@ -132,6 +132,45 @@ class CaseResult:
     metrics: dict = field(default_factory=dict)
 
 
+def _beaver_ctw(prop: Propeller, p: SectionParams, air: Air, incidence_deg) -> tuple[np.ndarray, object]:
+    """Wind-axis CT_w = (T cos a - H sin a) / (rho n^2 D^4) of the Beaver at J = 0.896, and the loads."""
+    a = np.radians(np.asarray(incidence_deg, float))
+    r = rotor_loads(prop, p, 2 * math.pi * BEAVER_N, 40.0, a, air=air, radial=False)
+    return (r.thrust * np.cos(a) - r.drag * np.sin(a)) / (air.rho * BEAVER_N**2 * prop.diameter**4), r
+
+
+def _beaver_matched(prop: Propeller, p: SectionParams, air: Air, CT0m: float, ratio_m: dict) -> dict:
+    """The incidence response with the zero-incidence thrust matched to the measurement.
+
+    One measurement fixes one parameter: the blade-angle offset ``collective`` (added to the
+    set's own) that makes CT_w(0) equal the measured value, the rest of the set kept. The
+    ratios CT_w(a) / CT_w(0) then test the model's incidence physics apart from its thrust
+    level (a lightly loaded propeller's relative rise scales with 1 / CT_w(0)). Returns
+    ``matched_collective_deg``, ``matched_ratio_10``, ``matched_ratio_20``,
+    ``matched_ratio_err_*`` and ``matched_H_over_T_20``; empty where no offset within
+    +-COLLECTIVE_MAX reaches the measured thrust.
+    """
+    from scipy.optimize import brentq  # imported where used: `propmap validate` starts without it
+
+    base = p.collective
+    lo, hi = -COLLECTIVE_MAX - base, COLLECTIVE_MAX - base
+
+    def miss(dc: float) -> float:
+        return float(_beaver_ctw(prop, p.replace(collective=base + dc), air, [0.0])[0][0]) - CT0m
+
+    lo, hi = max(lo, math.radians(-15.0)), min(hi, math.radians(15.0))
+    if miss(lo) * miss(hi) > 0.0:
+        return {}
+    dc = brentq(miss, lo, hi, xtol=1e-9)
+    ctw, r = _beaver_ctw(prop, p.replace(collective=base + dc), air, [0.0, 10.0, 20.0])
+    out = {"matched_collective_deg": math.degrees(dc)}
+    for k, a in enumerate((10.0, 20.0)):
+        out[f"matched_ratio_{a:g}"] = float(ctw[k + 1] / ctw[0])
+        out[f"matched_ratio_err_{a:g}"] = float(ctw[k + 1] / ctw[0] - ratio_m[a])
+    out["matched_H_over_T_20"] = float(r.drag[2] / r.thrust[2])
+    return out
+
+
 def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air()) -> CaseResult:
     """Predict a published case with each parameter set.
 
@@ -149,8 +188,10 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         the wind-axis CT_w = (T cos a - H sin a) / (rho n^2 D^4) that the tunnel's balance
         measured (Sinnige et al. 2019, Sec. III.A), at the test's rho and n: CT_w(0) and its
         relative error, CT_w(a)/CT_w(0) at 10 and 20 deg and their errors against the
-        measured ratio (interpolated), the shaft ratios and H/T. ``air`` sets the viscosity
-        and speed of sound (the density is the test's).
+        measured ratio (interpolated), the shaft ratios and H/T, and the same ratios with
+        CT_w(0) matched to the measurement by a collective offset (``matched_*``,
+        :func:`_beaver_matched`). ``air`` sets the viscosity and speed of sound (the density
+        is the test's).
 
     Raises
     ------
@@ -201,17 +242,14 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         prop = beaver_propeller()
         d = np.array(_rows("sinnige2019_CT_vs_incidence_J0.9.csv"))
         inc = d[:, 0]
-        V, n = 40.0, BEAVER_N
+        n = BEAVER_N
         tunnel = Air(rho=BEAVER_RHO, mu=air.mu, speed_of_sound=air.speed_of_sound)
         pred, metrics = {}, {}
         CT0m = float(d[0, 1])
         ratio_m = {a: float(np.interp(a + inc[0], inc, d[:, 1]) / CT0m) for a in (10.0, 20.0)}
         true = inc - inc[0]
         for label, p in param_sets.items():
-            grid = np.radians(np.concatenate([[0.0, 10.0, 20.0], true]))
-            r = rotor_loads(prop, p, 2 * math.pi * n, V, grid, air=tunnel, radial=False)
-            norm = tunnel.rho * n**2 * prop.diameter**4
-            CTw = (r.thrust * np.cos(grid) - r.drag * np.sin(grid)) / norm
+            CTw, r = _beaver_ctw(prop, p, tunnel, np.concatenate([[0.0, 10.0, 20.0], true]))
             pred[label] = {"CT": CTw[3:], "CT_shaft": r.CT[3:]}
             metrics[label] = {"CT0": float(CTw[0]), "rel_err_ct0": float(CTw[0] / CT0m - 1),
                               **{f"ratio_{a:g}": float(CTw[k + 1] / CTw[0]) for k, a in enumerate((10.0, 20.0))},
@@ -220,6 +258,7 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
                               **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0]) for k, a in enumerate((10.0, 20.0))},
                               **{f"H_over_T_{a:g}": float(r.drag[k + 1] / r.thrust[k + 1])
                                  for k, a in enumerate((10.0, 20.0))}}
+            metrics[label].update(_beaver_matched(prop, p, tunnel, CT0m, ratio_m))
         metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
         first = next(iter(param_sets.values()))
         h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)
