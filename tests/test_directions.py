@@ -217,7 +217,7 @@ def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     """A fitted file's rpm span: a range partly outside it warns once with the range; one rate
     inside, or a range inside, says nothing; the extremes take the advancing tip's speed."""
     from propmap.cli._common import coverage_messages, envelope_extremes
-    from propmap.io.calibration import coverage
+    from propmap.io.params_file import set_coverage
 
     prop = pm.load_propeller("apce_8x6")
     label = str(tmp_path / "p.toml")
@@ -226,7 +226,7 @@ def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     assert fitted.exit_code == 0
     capsys.readouterr()
 
-    cov = coverage(label)
+    cov = set_coverage(label)
     lo, hi = cov["rpm_min"], cov["rpm_max"]
     coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=(lo + 1, hi - 1))
     coverage_messages(prop, label, pm.Air(), 50.0, 0.0, 0.0, rpm=0.5 * (lo + hi))

@@ -14,10 +14,9 @@ from pathlib import Path
 import propmap
 
 ROOT = Path(propmap.__file__).parent
-#: the one known cycle, both sides function-local: a parameter file's reader fills missing keys
-#: from the generic set (io.calibration), and io.calibration.coverage(path) reads a parameter
-#: file's [coverage] table (io.params_file); both are public behaviour
-KNOWN_CYCLES = [{"propmap.io.calibration", "propmap.io.params_file"}]
+#: none since 2026-11-23 (io.calibration no longer reads parameter files: io.params_file.set_coverage
+#: does, on top of io.calibration.coverage)
+KNOWN_CYCLES = []
 #: layers: a module may import its own layer and those below it
 LAYERS = {"core": 0, "io": 1, "cli": 3, "__main__": 3}
 LEAVES = {"vehicle": {"identify", "maps", "rotormap", "export_c", "simexport", "validation", "cases", "plots"}}
@@ -134,12 +133,12 @@ def test_the_import_graph_is_read():
     modules, graph = _graph()
     assert len(modules) > 60
     assert "propmap.core.solver" in graph["propmap.maps"]  # a module-level relative import
-    assert "propmap.io.params_file" in graph["propmap.io.calibration"]  # the function-local side of the known cycle
+    assert "propmap.io.calibration" in graph["propmap.io.params_file"]  # a function-local import
     assert "propmap.vehicle" in graph["propmap.identify.flight"]  # through the package's __init__
     assert "propmap.identify.flight" not in graph["propmap.identify.flight_scores"]  # its TYPE_CHECKING import
 
 
-def test_no_import_cycles_but_the_known_one():
+def test_no_import_cycles():
     modules, graph = _graph()
     assert _cycles(graph, list(graph)) == KNOWN_CYCLES
 

@@ -465,7 +465,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     prop : Propeller
     label : str
         The parameter set's label: a catalogue set or a parameter file, whose data coverage
-        (io.calibration.coverage: a fitted file's [coverage] table) is checked; other sets
+        (io.params_file.set_coverage: a fitted file's [coverage] table) is checked; other sets
         only for the tip Mach number.
     air : Air
         For the speed of sound.
@@ -480,13 +480,13 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     ratio beyond the data's largest, incidence beyond the data's (axial data: the off-axis
     loads rest on the BET/BEMT physics), rates outside the data's span.
     """
-    from ..io.calibration import coverage
+    from ..io.params_file import set_coverage
 
     tip_mach = tip_speed / air.speed_of_sound
     if tip_mach > 0.7:
         warn(f"tip Mach number up to {tip_mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
              "is not modelled")
-    cov = coverage(label)
+    cov = set_coverage(label)
     if cov is None:
         return
     if J > cov["J_max"]:

@@ -74,26 +74,17 @@ def coverage(label: str) -> dict | None:
     Parameters
     ----------
     label : str
-        ``"generic"``, ``"generic without <family>"``, ``"calibrated:<name>"`` or a parameter file.
+        ``"generic"``, ``"generic without <family>"`` or ``"calibrated:<name>"`` (a parameter
+        file's table: :func:`propmap.io.params_file.set_coverage`).
 
     Returns
     -------
     dict or None
         ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial), for a fitted file also ``rpm_min``, ``rpm_max`` and
-        ``airspeed_max`` (its ``[coverage]`` table); None for other sets (Table I, files
-        without the table), whose data propmap does not know.
+        UIUC data are axial); None for other labels (Table I, a file), whose data this
+        module does not know.
     """
-    from pathlib import Path
-
     raw = _raw()
-    if label and Path(label).is_file():  # a parameter file: its [coverage] table, if it has one
-        from .params_file import read_coverage
-
-        try:
-            return read_coverage(label)
-        except ValueError:
-            return None
     if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
         return raw["generic"].get("coverage")
     if label.startswith("calibrated:"):

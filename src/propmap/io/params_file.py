@@ -96,7 +96,7 @@ from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
            "params_to_dict", "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage",
-           "named_sets", "section_preset", "section_presets", "SECTION_MODELS"]
+           "set_coverage", "named_sets", "section_preset", "section_presets", "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
 REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
@@ -271,6 +271,33 @@ def read_coverage(path) -> dict | None:
         return coverage_from_dict(data, where=show_path(path))
     except ValueError as exc:
         raise ParamsFileError(str(exc)) from None
+
+
+def set_coverage(label: str) -> dict | None:
+    """What the data behind a parameter set covered, for warnings: a parameter file's
+    ``[coverage]`` table (:func:`read_coverage`; None without one, or for a file that does
+    not read), else the shipped set's (:func:`propmap.io.calibration.coverage`).
+
+    Parameters
+    ----------
+    label : str
+        A parameter file's path, ``"generic"``, ``"generic without <family>"`` or
+        ``"calibrated:<name>"``.
+
+    Returns
+    -------
+    dict or None
+        ``J_max``, ``incidence_deg_max`` and, for a fitted file, ``rpm_min``, ``rpm_max`` and
+        ``airspeed_max``; None where propmap does not know the data (Table I, other files).
+    """
+    from .calibration import coverage
+
+    if label and Path(label).is_file():
+        try:
+            return read_coverage(label)
+        except ValueError:
+            return None
+    return coverage(label)
 
 
 def _generic_fill(data: dict, keys: dict, where: str) -> dict:
