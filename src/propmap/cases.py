@@ -147,18 +147,18 @@ def _beaver_matched(prop: Propeller, p: SectionParams, air: Air, CT0m: float, ra
     ratios CT_w(a) / CT_w(0) then test the model's incidence physics apart from its thrust
     level (a lightly loaded propeller's relative rise scales with 1 / CT_w(0)). Returns
     ``matched_collective_deg``, ``matched_ratio_10``, ``matched_ratio_20``,
-    ``matched_ratio_err_*`` and ``matched_H_over_T_20``; empty where no offset within
-    +-COLLECTIVE_MAX reaches the measured thrust.
+    ``matched_ratio_err_*`` and ``matched_H_over_T_20``; empty where no offset of up to
+    15 deg (the total within +-COLLECTIVE_MAX) reaches the measured thrust.
     """
     from scipy.optimize import brentq  # imported where used: `propmap validate` starts without it
 
     base = p.collective
-    lo, hi = -COLLECTIVE_MAX - base, COLLECTIVE_MAX - base
+    # offsets of up to 15 deg, the total within the record's range
+    lo, hi = max(-COLLECTIVE_MAX - base, math.radians(-15.0)), min(COLLECTIVE_MAX - base, math.radians(15.0))
 
     def miss(dc: float) -> float:
         return float(_beaver_ctw(prop, p.replace(collective=base + dc), air, [0.0])[0][0]) - CT0m
 
-    lo, hi = max(lo, math.radians(-15.0)), min(hi, math.radians(15.0))
     if miss(lo) * miss(hi) > 0.0:
         return {}
     dc = brentq(miss, lo, hi, xtol=1e-9)
