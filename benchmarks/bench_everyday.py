@@ -75,9 +75,8 @@ def single_call(params, n=2000):
     pm.rotor_loads(prop, params, om, V, b)
     nd, model, pk, cam, inflow, empirical, cls = _prepared(prop, params, params.air, pm.DEFAULT_DISCRETIZATION)
     nr = nd.y.size
-    args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), np.zeros(1), nd.y, nd.w, nd.theta,
-            nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch, nd.sinpsi, nd.cospsi, model, pk,
-            cam, inflow, empirical, params.swirl, prop.radius, False, cls, np.empty((_kernel.N_OUT, 1)),
+    args = (np.array([om]), np.array([V * math.sin(b)]), np.array([V * math.cos(b)]), np.zeros(1), nd.rows, nd.azimuth,
+            model, pk, cam, inflow, empirical, params.swirl, prop.radius, False, cls, np.empty((_kernel.N_OUT, 1)),
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((_kernel.N_COUNTS, 1), np.int64),
             np.empty((_kernel.N_FLAGS, 1), np.bool_))
     total, kernel = [], []

@@ -113,7 +113,8 @@ def simd_widths():
     fresh = numba.njit(error_model="numpy", fastmath=_annulus._FM)(_annulus._residual.py_func)
     # the dispatcher loaded from the disk cache holds no IR: compile a copy for one call
     psi = np.linspace(-1.0, 1.0, 16)
-    fresh(1.0, *([0.1] * 13), psi, psi, 0.0, 0.0, 16, 0, np.full(8, 0.5), False)
+    fresh(1.0, 0.1, 0.1, 0.1, (0.1, 0.1, 0.1), (0.1, 0.1, 0.1, 0.1), 0.1, 0.1, 0.1, np.stack([psi, psi]), 0.0, 0.0, 16,
+          0, np.full(8, 0.5), False)
     ir = "".join(fresh.inspect_llvm().values())
     return sorted({int(w) for w in re.findall(r"<(\d+) x double>", ir)})
 

@@ -190,12 +190,12 @@ def _solve_annuli_python(nd, p, om, V, b):
     from propmap.core import _annulus
 
     nr = nd.y.size
-    v, code, nev, mult = np.empty(nr), np.empty(nr, np.int64), np.empty(nr, np.int64), np.empty(nr, bool)
-    _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.y, np.zeros(nr), nd.theta, nd.sin_th,
-                                  nd.cos_th, nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr), nd.cfac, nd.mfac, nd.ct,
-                                  nd.ch, nd.sinpsi, nd.cospsi, np.zeros(nr), np.zeros(nr), nd.sinpsi.size // 2,
-                                  *_model_constants(p), False, v, code, nev, mult)
-    return v, code, nev
+    v, status, mult = np.empty(nr), np.empty((2, nr), np.int64), np.empty(nr, bool)
+    sect = np.stack([nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr)])  # the paper's section: s0 the Blasius factor
+    _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.rows, nd.rows[2:5], np.zeros(nr), sect,
+                                  nd.azimuth, np.zeros((2, nr)), nd.sinpsi.size // 2, *_model_constants(p), False, v,
+                                  status, mult)
+    return v, status[0], status[1]
 
 
 def test_root_solve_failure_codes_of_the_state_machine(apc8x6, apc_params, monkeypatch):

@@ -140,9 +140,10 @@ def test_swirl_gives_up_with_its_own_code(apc8x6, apc_params):
 
     def step(it):
         us, code, multiple = zeros.copy(), np.zeros(6, np.int64), np.zeros(6, bool)
-        done = _kernel._swirl_iterate.py_func(us, np.full((4, 6), np.nan), r.v_i, code, multiple, nd.y, 900.0, 0.0,
-                                              0.0, nd.theta, nd.sin_th, nd.cos_th, nd.sc, zeros, zeros, zeros, nd.cfac,
-                                              nd.sinpsi, nd.cospsi, zeros, zeros, 1, model, pk, True, it)
+        sect = np.stack([nd.sc, zeros, zeros, zeros])  # the paper's section: s0 the Blasius factor
+        done = _kernel._swirl_iterate.py_func(us, np.full((4, 6), np.nan), r.v_i, code, multiple, nd.rows, nd.rows[2:5],
+                                              900.0, 0.0, 0.0, sect, nd.azimuth, np.zeros((2, 6)), 1, model, pk, True,
+                                              it)
         assert not multiple.any()
         return done, us, code
 

@@ -40,9 +40,10 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, cambered_annulus, empirical_k, inflow_gradients, inverse_sin_phi,
-                       make_axial_mass_flow, make_cambered_element, make_element, make_loss_factor, make_prandtl,
-                       momentum_scale, momentum_thrust, swirl_step, swirl_target)
+from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, cambered_annulus,
+                       empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow, make_cambered_element,
+                       make_element, make_loss_factor, make_prandtl, momentum_scale, momentum_thrust, swirl_step,
+                       swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -89,17 +90,22 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, wy, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, sinpsi, cospsi, gx, gy, naz, model,
-              pk, emp):
+def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, model, pk, emp):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
 
-    ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl).
+    ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl);
+    ``bl`` = (theta, sin theta, cos theta) and ``sec`` = (s0, s1, s2, s3), the annulus' blade
+    angle and section constants; ``azim`` = (sin psi, cos psi) of the azimuth nodes, shape (2, 2 naz).
 
     ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
     gy = k_y y/R, over the full circle of ``naz`` nodes. ``emp``: the momentum side uses the
     empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
     """
+    th, sth, cth = bl
+    s0, s1, s2, s3 = sec
+    sinpsi = azim[0]
+    cospsi = azim[1]
     acc = 0.0
     UP = Vc + v
     # one loop per section model and inflow, so that each compiles to straight-line SIMD code
@@ -137,13 +143,23 @@ def _residual(v, wy, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, si
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp, active,
-                     n_active):
+def _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk, emp, active, n_active):
     """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
     azimuth node), the annuli already solved included: branch-free loops over contiguous
     annuli, which compile to SIMD code across them (one annulus' residual at a time is a
     scalar chain). The empirical momentum in descent (a Newton solve per annulus) only for the
-    ``n_active`` annuli in ``active``, one at a time. ``us``: the annuli's swirl [m/s]."""
+    ``n_active`` annuli in ``active``, one at a time. ``nodes``, ``blade``, ``sect`` as
+    :func:`solve_annuli`; ``us``: the annuli's swirl [m/s]."""
+    y = nodes[NODE_Y]
+    cfac = nodes[NODE_CFAC]
+    mfac = nodes[NODE_MFAC]
+    th = blade[0]
+    sth = blade[1]
+    cth = blade[2]
+    s0 = sect[0]
+    s1 = sect[1]
+    s2 = sect[2]
+    s3 = sect[3]
     nr = y.shape[0]
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
@@ -211,8 +227,7 @@ _REFINE = 4
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi, gx, gy, naz,
-                 model, pk, emp, v, code, nev, multiple):
+def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status, multiple):
     """Roots of eq (11) on every annulus of one operating point, by the module's rule.
 
     The annuli are independent, so they are solved in lockstep: each sweep evaluates
@@ -220,10 +235,31 @@ def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct
     state machine (march, doubling, extra scan, Illinois) by one step. Step for step
     this is the scalar algorithm of the module docstring, but the evaluations of one
     sweep do not wait on each other, so the CPU overlaps them (one F(v) at a time is
-    latency-bound). ``us`` (nr,): the annuli's swirl u [m/s], subtracted from the blade speed
-    Omega y (zeros without swirl). Outputs, shape (nr,): v [m/s], code (OK, NO_BRACKET,
-    NO_CONVERGENCE), nev (residual evaluations) and multiple (more roots seen).
+    latency-bound). ``nodes`` (N_NODE_ROWS, nr): the blade's node rows (_physics.NODE_Y ...,
+    core/nodes.py; the blade angle's rows are not read); ``blade`` (3, nr): this point's blade
+    angle theta and its sine and cosine; ``us`` (nr,): the annuli's swirl u [m/s], subtracted
+    from the blade speed Omega y (zeros without swirl); ``sect`` (4, nr): the section constants
+    s0 ... s3 at this point; ``azim`` (2, 2 naz_half): sin psi and cos psi of the azimuth nodes;
+    ``grad`` (2, nr): the linear inflow's gx, gy (zeros: uniform). Outputs: v (nr,) [m/s],
+    ``status`` (2, nr) int64, the rows code (OK, NO_BRACKET, NO_CONVERGENCE) and nev (residual
+    evaluations), and multiple (nr,) (more roots seen).
     """
+    y = nodes[NODE_Y]
+    cfac = nodes[NODE_CFAC]
+    mfac = nodes[NODE_MFAC]
+    ct = nodes[NODE_CT]
+    ch = nodes[NODE_CH]
+    th = blade[0]
+    sth = blade[1]
+    cth = blade[2]
+    s0 = sect[0]
+    s1 = sect[1]
+    s2 = sect[2]
+    s3 = sect[3]
+    gx = grad[0]
+    gy = grad[1]
+    code = status[0]
+    nev = status[1]
     nr = y.shape[0]
     trial = np.zeros(nr)
     f = np.empty(nr)
@@ -275,15 +311,15 @@ def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct
                 for j in range(nr):
                     floss[j] = (floss[j] if tip else 1.0) * _prandtl(ch[j], inv_sin[j])
         if vector_axial:  # every annulus, solved or not, in one SIMD loop
-            _residuals_axial(f, trial, y, Om, us, Vc, th, sth, cth, s0, s1, s2, s3, cfac, mfac, floss, model, pk, emp,
-                             active, n_active)
+            _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk, emp, active, n_active)
             for q in range(n_active):
                 nev[active[q]] += 1
         else:
             for q in range(n_active):  # independent evaluations
                 j = active[q]
-                f[j] = _residual(trial[j], Om * y[j] - us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j], s3[j],
-                                 cfac[j], mfac[j], floss[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, emp)
+                f[j] = _residual(trial[j], Om * y[j] - us[j], Vs, Vc, (th[j], sth[j], cth[j]),
+                                 (s0[j], s1[j], s2[j], s3[j]), cfac[j], mfac[j], floss[j], azim, gx[j], gy[j], naz,
+                                 model, pk, emp)
                 nev[j] += 1
         m = 0
         for q in range(n_active):
@@ -410,10 +446,10 @@ def solve_annuli(Om, Vs, Vc, y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, u, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk,
-                  axial):
+def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, pk, axial):
     """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
-    (eqs 5-7, azimuth-averaged; linear inflow as ``_residual``); ``u`` the annulus' swirl [m/s].
+    (eqs 5-7, azimuth-averaged; linear inflow, ``bl``, ``sec`` and ``azim`` as ``_residual``);
+    ``u`` the annulus' swirl [m/s].
 
     dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
     y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
@@ -422,6 +458,10 @@ def annulus_loads(v, y, Om, u, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinps
     psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and are only
     accumulated with a linear one (gx or gy non-zero, full-circle nodes).
     """
+    th, sth, cth = bl
+    s0, s1, s2, s3 = sec
+    sinpsi = azim[0]
+    cospsi = azim[1]
     aT = 0.0
     aD = 0.0
     aQ = 0.0

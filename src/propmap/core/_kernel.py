@@ -14,12 +14,12 @@ from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _
                        _swirl_target, annulus_loads, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL
+from ._physics import (INFLOW_UNIFORM, NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y,
+                       SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _swirl_iterate(us, sw, v, code, multiple, y, Om, Vs, Vc, th, sth, cth, s0, s1, s2, s3, cfac, sinpsi, cospsi, gx,
-                   gy, naz, model, pk, axial, it):
+def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, azim, grad, naz, model, pk, axial, it):
     """One swirl step of an operating point after its root solve with the swirl ``us``: every
     annulus' target (_physics.swirl_target, from its loads at the roots ``v``) and imbalance
     g. An annulus is done when it balances to SWIRL_TOL Omega y, or when the iterates with
@@ -29,14 +29,18 @@ def _swirl_iterate(us, sw, v, code, multiple, y, Om, Vs, Vc, th, sth, cth, s0, s
     iterate (_physics.swirl_step); ``sw`` (4, nr) keeps each annulus' previous iterate, its
     imbalance and the bracket's ends (NaN until known). True when every annulus is done (``us``
     is then the swirl the roots were solved with); on the last iteration those that are not
-    get NO_SWIRL_BALANCE."""
+    get NO_SWIRL_BALANCE. ``nodes``, ``blade``, ``sect``, ``azim``, ``grad`` as
+    _annulus.solve_annuli."""
+    y = nodes[NODE_Y]
+    cfac = nodes[NODE_CFAC]
     nr = y.shape[0]
     all_done = True
     for j in range(nr):
         if code[j] != OK:
             continue
-        t, _, q, _, _, _ = annulus_loads(v[j], y[j], Om, us[j], Vs, Vc, th[j], sth[j], cth[j], s0[j], s1[j], s2[j],
-                                         s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model, pk, axial)
+        t, _, q, _, _, _ = annulus_loads(v[j], y[j], Om, us[j], Vs, Vc, (blade[0, j], blade[1, j], blade[2, j]),
+                                         (sect[0, j], sect[1, j], sect[2, j], sect[3, j]), cfac[j], azim, grad[0, j],
+                                         grad[1, j], naz, model, pk, axial)
         tol = SWIRL_TOL * Om * y[j]
         lim = SWIRL_LIMIT * Om * y[j]
         u = us[j]
@@ -69,17 +73,17 @@ N_FLAGS = 5  # converged, vortex ring, multiple roots, reverse flow, inflow extr
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, swirl, radius, radial, out, rad, counts):
+def _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, out, rad, counts):
     """Solve every operating point; results are written into the output arrays.
 
     Inputs Om, Vs, Vc and coll (a collective offset added to every blade angle [rad]) have
-    shape (n,); y, w, th0, sth0, cth0 (the blade angle and its sine and cosine), sc, cfac,
-    mfac, ct, ch shape (nr,); sinpsi, cospsi shape (2 naz,): the full circle of azimuth nodes, whose first half
-    covers [-pi/2, pi/2] (enough for the uniform inflow, where every integrand depends on psi
-    through sin psi only). ``sc`` is the per-annulus section constant (gill2017: the
-    Blasius factor; cambered: ln(rho c / (mu Re_ref))), ``cy2`` = (c/y)^2; ``ct``, ``ch``
-    the tip- and hub-loss constants (negative: off). ``model``, ``pk``: section model and
+    shape (n,); ``nodes`` shape (N_NODE_ROWS, nr), the blade's node rows (_physics.NODE_Y ...;
+    core/nodes.py): per annulus y, the weight w, the blade angle and its sine and cosine, the
+    section constant sc (gill2017: the Blasius factor; cambered: ln(rho c / (mu Re_ref))),
+    cy2 = (c/y)^2, cfac, mfac and the tip- and hub-loss constants ct, ch (negative: off);
+    ``azim`` shape (2, 2 naz): sin psi and cos psi of the full circle of azimuth nodes, whose
+    first half covers [-pi/2, pi/2] (enough for the uniform inflow, where every integrand
+    depends on psi through sin psi only). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
     re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. ``inflow``: the inflow
     model (_physics.INFLOW_*); ``emp``: the empirical momentum in descent (_physics.DESCENT_CODES);
@@ -102,29 +106,42 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
     ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
     4 + (annulus status code).
     """
+    y = nodes[NODE_Y]
+    w = nodes[NODE_W]
+    sc = nodes[NODE_SC]
+    cy2 = nodes[NODE_CY2]
+    cfac = nodes[NODE_CFAC]
     n = Om.shape[0]
     nr = y.shape[0]
-    naz_half = sinpsi.shape[0] // 2
+    naz_half = azim.shape[1] // 2
     for i in numba.prange(n):
+        blade = np.empty((3, nr))  # this point's blade angle, its sine and cosine
         if coll[i] == 0.0:
-            th, sth, cth = th0, sth0, cth0
-        else:  # a per-point collective: the blade angles of this point
-            th = th0 + coll[i]
-            sth = np.sin(th)
-            cth = np.cos(th)
+            for j in range(nr):
+                blade[0, j] = nodes[NODE_TH, j]
+                blade[1, j] = nodes[NODE_STH, j]
+                blade[2, j] = nodes[NODE_CTH, j]
+        else:  # a per-point collective
+            for j in range(nr):
+                blade[0, j] = nodes[NODE_TH, j] + coll[i]
+                blade[1, j] = np.sin(blade[0, j])
+                blade[2, j] = np.cos(blade[0, j])
         axial = Vs[i] == 0.0
         naz = 1 if axial else naz_half  # the integrand is independent of psi
         # the roots are written straight into the output row, or into scratch
         v = rad[0, i] if radial else np.empty(nr)
-        code = np.empty(nr, dtype=np.int64)
-        nev = np.empty(nr, dtype=np.int64)
+        status = np.empty((2, nr), dtype=np.int64)  # per annulus: code, residual evaluations
+        code = status[0]
+        nev = status[1]
         multiple = np.empty(nr, dtype=np.bool_)
-        s0 = np.empty(nr)
-        s1 = np.empty(nr)
-        s2 = np.empty(nr)
-        s3 = np.empty(nr)
-        gx = np.zeros(nr)
-        gy = np.zeros(nr)
+        sect = np.empty((4, nr))  # the section constants s0 ... s3
+        s0 = sect[0]
+        s1 = sect[1]
+        s2 = sect[2]
+        s3 = sect[3]
+        grad = np.zeros((2, nr))  # the linear inflow's gradients gx, gy
+        gx = grad[0]
+        gy = grad[1]
         sw = np.full((4, nr if swirl else 0), np.nan)  # the swirl iteration's state (_swirl_iterate)
         if model == CAMBERED:
             # Reynolds, Mach and rotation corrections, once per point and annulus
@@ -147,8 +164,8 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                 for j in range(nr):
                     gx[j] = 0.0
                     gy[j] = 0.0
-            solve_annuli(Om[i], Vs[i], Vc[i], y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi, cospsi,
-                         gx, gy, naz, model, pk, emp, v, code, nev, multiple)
+            solve_annuli(Om[i], Vs[i], Vc[i], nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status,
+                         multiple)
             for j in range(nr):
                 ne += nev[j]
             if inflow != INFLOW_UNIFORM and not axial:
@@ -165,12 +182,12 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                     gx[j] = kx * y[j] / radius
                     gy[j] = ky * y[j] / radius
                 naz = 2 * naz_half
-                solve_annuli(Om[i], Vs[i], Vc[i], y, us, th, sth, cth, s0, s1, s2, s3, cfac, mfac, ct, ch, sinpsi,
-                             cospsi, gx, gy, naz, model, pk, emp, v, code, nev, multiple)
+                solve_annuli(Om[i], Vs[i], Vc[i], nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status,
+                             multiple)
                 for j in range(nr):
                     ne += nev[j]
-            if swirl and _swirl_iterate(us, sw, v, code, multiple, y, Om[i], Vs[i], Vc[i], th, sth, cth, s0, s1, s2,
-                                        s3, cfac, sinpsi, cospsi, gx, gy, naz, model, pk, axial, it):
+            if swirl and _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om[i], Vs[i], Vc[i], sect, azim, grad,
+                                        naz, model, pk, axial, it):
                 break
         Ti = 0.0
         Di = 0.0
@@ -195,9 +212,9 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
                 continue
             if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:
                 nv += 1
-            t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], us[j], Vs[i], Vc[i], th[j], sth[j], cth[j], s0[j],
-                                                s1[j], s2[j], s3[j], cfac[j], sinpsi, cospsi, gx[j], gy[j], naz, model,
-                                                pk, axial)
+            t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], us[j], Vs[i], Vc[i],
+                                                (blade[0, j], blade[1, j], blade[2, j]), (s0[j], s1[j], s2[j], s3[j]),
+                                                cfac[j], azim, gx[j], gy[j], naz, model, pk, axial)
             if radial:
                 rad[1, i, j] = t
                 rad[2, i, j] = d
@@ -227,21 +244,19 @@ def _solve_batch(Om, Vs, Vc, coll, y, w, th0, sth0, cth0, sc, cy2, cfac, mfac, c
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                inflow, emp, swirl, radius, radial, cls, out, rad, counts, flags):
+def solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, cls, out, rad, counts,
+                flags):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``),
     then :func:`point_flags` (``cls``, ``flags`` as there)."""
-    _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, swirl, radius, radial, out, rad, counts)
+    _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, out, rad, counts)
     point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch_serial(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk,
-                       cam, inflow, emp, swirl, radius, radial, cls, out, rad, counts, flags):
+def solve_batch_serial(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, cls, out, rad,
+                       counts, flags):
     """:func:`solve_batch` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS),
     where starting the parallel region would cost more than the work; a process that only
     solves small batches then never starts the thread pool."""
-    _solve_batch(Om, Vs, Vc, coll, y, w, th, sth, cth, sc, cy2, cfac, mfac, ct, ch, sinpsi, cospsi, model, pk, cam,
-                 inflow, emp, swirl, radius, radial, out, rad, counts)
+    _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, out, rad, counts)
     point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)

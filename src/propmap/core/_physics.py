@@ -51,6 +51,13 @@ CAMBERED = 2
 #   cambered: alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, stall angle above and below
 #             the zero-lift line (cl_max / cl_alpha, cl_min / cl_alpha)
 N_PK = 8
+#: rows of the blade's node array (core/nodes._Nodes.rows, shape (N_NODE_ROWS, n_radial)), per annulus:
+#: its radius y [m] and quadrature weight [m], the blade angle [rad] and its sine and cosine, the
+#: section constant, (c/y)^2, the blade and momentum factors N_b rho c / 2 [kg/m^2] and 4 pi rho y
+#: [kg/m^2], the tip- and hub-loss constants (-1: off). The angles' three rows are contiguous, so
+#: that ``rows[NODE_TH:NODE_TH + 3]`` is the (3, n_radial) blade-angle array the root solve takes.
+NODE_Y, NODE_W, NODE_TH, NODE_STH, NODE_CTH, NODE_SC, NODE_CY2, NODE_CFAC, NODE_MFAC, NODE_CT, NODE_CH = range(11)
+N_NODE_ROWS = 11
 
 
 def exp_sat_numpy(z):

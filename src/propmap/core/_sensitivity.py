@@ -55,7 +55,8 @@ from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_a
                        _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
 from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
-                       LN_RE_MIN, TWO_OVER_PI)
+                       LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
+                       TWO_OVER_PI)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -355,8 +356,18 @@ def _partials(q0, h0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-           pkpm, campm, cam_same, hpar, scpm, hrho, out):
+def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
+    y = nodes[NODE_Y]
+    w = nodes[NODE_W]
+    th0 = nodes[NODE_TH]
+    sc = nodes[NODE_SC]
+    cy2 = nodes[NODE_CY2]
+    cfac = nodes[NODE_CFAC]
+    mfac = nodes[NODE_MFAC]
+    ct = nodes[NODE_CT]
+    ch = nodes[NODE_CH]
+    sinpsi = azim[0]
+    pkpm, campm, cam_same, hpar = par
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
     nr = y.shape[0]
     n_par = hpar.shape[0]
@@ -554,17 +565,17 @@ def _point(i, Om, V, b, coll, v, ok, y, w, th0, sc, cy2, cfac, mfac, ct, ch, sin
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-                  pkpm, campm, cam_same, hpar, scpm, hrho, out):
+def sensitivities(Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
-    (V sin beta, V cos beta), ``th`` the blade angles without the per-point collective
+    (V sin beta, V cos beta), the blade angles of ``nodes`` without the per-point collective
     ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
     every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
-    Section parameters (packed, so that the argument list stays short enough for numba's
-    inliner): ``pkpm`` shape (n_par, N_PK) and ``campm`` shape (n_par, 8), the element and
+    Section parameters, ``par`` = (pkpm, campm, cam_same, hpar) (packed, so that the argument
+    list stays short enough for numba's inliner): ``pkpm`` shape (n_par, N_PK) and ``campm``
+    shape (n_par, 8), the element and
     annulus constants at each parameter's stepped value, ``cam_same`` shape (n_par,) bool:
     the parameter leaves ``cam`` unchanged (its annulus constants are not recomputed),
     ``hpar`` shape (n_par,) the step (stepped value - value, either sign; n_par may be 0).
@@ -579,5 +590,4 @@ def sensitivities(Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, 
     along the point's beta and the incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
-        _point(i, Om, V, b, coll, v, ok, y, w, th, sc, cy2, cfac, mfac, ct, ch, sinpsi, model, pk, cam, emp, n_in,
-               pkpm, campm, cam_same, hpar, scpm, hrho, out)
+        _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)

@@ -163,9 +163,9 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     n_cols = n_in + len(names) + (RHO in wrt)
     raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
-    _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.y, nd.w, nd.theta, nd.sc, nd.cy2, nd.cfac, nd.mfac,
-                               nd.ct, nd.ch, nd.sinpsi, model, pk, cam, empirical, n_in, pks, cams,
-                               np.all(cams == cam, axis=1), step, np.ascontiguousarray(scp, dtype=float), hrho, raw)
+    _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in,
+                               (pks, cams, np.all(cams == cam, axis=1), step), np.ascontiguousarray(scp, dtype=float),
+                               hrho, raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)

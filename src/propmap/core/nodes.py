@@ -28,7 +28,10 @@ class _Nodes:
     (N_b/2)(R - y)/y and (N_b/2)(y - r_hub)/r_hub, -1 where that loss is off. ``theta``
     includes the collective offset. ``sinpsi``, ``cospsi``: the full circle of 2 n_azimuth
     midpoints from -pi/2, whose first half is the half circle the uniform inflow needs.
-    ``chord_r3``: int c r^3 dr over the blade [m^5] (0-d), for the flap damping.
+    ``chord_r3``: int c r^3 dr over the blade [m^5] (0-d), for the flap damping. ``rows``:
+    y, w, theta, sin_th, cos_th, sc, cy2, cfac, mfac, ct, ch as one array (the rows of
+    _physics.NODE_Y ... NODE_CH, of which those fields are views), ``azimuth``: sinpsi and
+    cospsi as one (2, 2 n_azimuth) array: what the compiled kernels take.
     """
 
     y: np.ndarray
@@ -45,6 +48,8 @@ class _Nodes:
     sinpsi: np.ndarray
     cospsi: np.ndarray
     chord_r3: np.ndarray
+    rows: np.ndarray
+    azimuth: np.ndarray
 
 
 @functools.lru_cache(maxsize=64)
@@ -66,9 +71,17 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     ct = half_b * (prop.radius - y) / y if params.tip_loss else np.full(n_radial, -1.0)
     ch = half_b * (y - prop.r_hub) / prop.r_hub if params.hub_loss else np.full(n_radial, -1.0)
     psi = -0.5 * np.pi + (np.arange(2 * n_azimuth) + 0.5) * np.pi / n_azimuth
-    out = _Nodes(y=y, w=w, theta=th, sin_th=np.sin(th), cos_th=np.cos(th), sc=sc, cy2=(c / y) ** 2,
-                 cfac=prop.n_blades * 0.5 * air.rho * c, mfac=4.0 * np.pi * air.rho * y, ct=ct, ch=ch,
-                 sinpsi=np.sin(psi), cospsi=np.cos(psi), chord_r3=np.array(np.sum(w * c * y**3)))
+    rows = np.empty((ph.N_NODE_ROWS, n_radial))
+    for k, a in ((ph.NODE_Y, y), (ph.NODE_W, w), (ph.NODE_TH, th), (ph.NODE_STH, np.sin(th)),
+                 (ph.NODE_CTH, np.cos(th)), (ph.NODE_SC, sc), (ph.NODE_CY2, (c / y) ** 2),
+                 (ph.NODE_CFAC, prop.n_blades * 0.5 * air.rho * c), (ph.NODE_MFAC, 4.0 * np.pi * air.rho * y),
+                 (ph.NODE_CT, ct), (ph.NODE_CH, ch)):
+        rows[k] = a
+    azimuth = np.stack([np.sin(psi), np.cos(psi)])
+    out = _Nodes(y=rows[ph.NODE_Y], w=rows[ph.NODE_W], theta=rows[ph.NODE_TH], sin_th=rows[ph.NODE_STH],
+                 cos_th=rows[ph.NODE_CTH], sc=rows[ph.NODE_SC], cy2=rows[ph.NODE_CY2], cfac=rows[ph.NODE_CFAC],
+                 mfac=rows[ph.NODE_MFAC], ct=rows[ph.NODE_CT], ch=rows[ph.NODE_CH], sinpsi=azimuth[0],
+                 cospsi=azimuth[1], chord_r3=np.array(np.sum(w * c * y**3)), rows=rows, azimuth=azimuth)
     for a in vars(out).values():
         a.setflags(write=False)
     return out

@@ -331,9 +331,8 @@ def rotor_loads(
     # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
     # (_flags.point_flags: no NumPy calls on one-point arrays here)
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
-    batch(om1, Vs, Vc, c1, nd.y, nd.w, nd.theta, nd.sin_th, nd.cos_th, nd.sc, nd.cy2, nd.cfac, nd.mfac, nd.ct, nd.ch,
-          nd.sinpsi, nd.cospsi, model, pk, cam, inflow, empirical, params.swirl, propeller.radius, keep_radial, cls,
-          out, rad, counts, flags)
+    batch(om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
+          keep_radial, cls, out, rad, counts, flags)
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
         i = int(np.argmax(status != 0))
         code = int(status[i]) - 1
