@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.core._physics import element, momentum_thrust
+from propmap.core._physics import NODE_TH, element, momentum_thrust
 from propmap.core._reference import solve_reference
 from propmap.core.airfoil import _model_constants
 from propmap.core.nodes import _nodes
@@ -192,7 +192,8 @@ def _solve_annuli_python(nd, p, om, V, b):
     nr = nd.y.size
     v, status, mult = np.empty(nr), np.empty((2, nr), np.int64), np.empty(nr, bool)
     sect = np.stack([nd.sc, np.zeros(nr), np.zeros(nr), np.zeros(nr)])  # the paper's section: s0 the Blasius factor
-    _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.rows, nd.rows[2:5], np.zeros(nr), sect,
+    blade = nd.rows[NODE_TH:NODE_TH + 3]  # theta, its sine and cosine
+    _annulus.solve_annuli.py_func(om, V * math.sin(b), V * math.cos(b), nd.rows, blade, np.zeros(nr), sect,
                                   nd.azimuth, np.zeros((2, nr)), nd.sinpsi.size // 2, *_model_constants(p), False, v,
                                   status, mult)
     return v, status[0], status[1]

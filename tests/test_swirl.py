@@ -13,7 +13,7 @@ import pytest
 from scipy.optimize import fsolve
 
 import propmap as pm
-from propmap.core._physics import element, momentum_thrust
+from propmap.core._physics import NODE_TH, element, momentum_thrust
 from propmap.core._reference import solve_reference
 from propmap.core.airfoil import _model_constants
 from propmap.core.nodes import _nodes
@@ -141,7 +141,8 @@ def test_swirl_gives_up_with_its_own_code(apc8x6, apc_params):
     def step(it):
         us, code, multiple = zeros.copy(), np.zeros(6, np.int64), np.zeros(6, bool)
         sect = np.stack([nd.sc, zeros, zeros, zeros])  # the paper's section: s0 the Blasius factor
-        done = _kernel._swirl_iterate.py_func(us, np.full((4, 6), np.nan), r.v_i, code, multiple, nd.rows, nd.rows[2:5],
+        blade = nd.rows[NODE_TH:NODE_TH + 3]  # theta, its sine and cosine
+        done = _kernel._swirl_iterate.py_func(us, np.full((4, 6), np.nan), r.v_i, code, multiple, nd.rows, blade,
                                               900.0, 0.0, 0.0, sect, nd.azimuth, np.zeros((2, 6)), 1, model, pk, True,
                                               it)
         assert not multiple.any()

@@ -145,7 +145,8 @@ def _beaver_matched(prop: Propeller, p: SectionParams, air: Air, CT0m: float, ra
     One measurement fixes one parameter: the blade-angle offset ``collective`` (added to the
     set's own) that makes CT_w(0) equal the measured value, the rest of the set kept. The
     ratios CT_w(a) / CT_w(0) then test the model's incidence physics apart from its thrust
-    level (a lightly loaded propeller's relative rise scales with 1 / CT_w(0)). Returns
+    level (a lightly loaded propeller's rise with incidence does not grow with that level, so
+    a level too high shrinks the relative rise; docs/validation.md). Returns
     ``matched_collective_deg``, ``matched_ratio_10``, ``matched_ratio_20``,
     ``matched_ratio_err_*`` and ``matched_H_over_T_20``; empty where no offset of up to
     15 deg (the total within +-COLLECTIVE_MAX) reaches the measured thrust.

@@ -95,7 +95,8 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
 
     ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl);
     ``bl`` = (theta, sin theta, cos theta) and ``sec`` = (s0, s1, s2, s3), the annulus' blade
-    angle and section constants; ``azim`` = (sin psi, cos psi) of the azimuth nodes, shape (2, 2 naz).
+    angle and section constants; ``azim`` = (sin psi, cos psi) of the azimuth nodes, shape
+    (2, 2 n_azimuth), of which the first ``naz`` columns are used.
 
     ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
@@ -143,6 +144,14 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _annulus_rows(nodes, blade, sect):
+    """The per-annulus arrays of :func:`solve_annuli`'s packed arguments: y, cfac, mfac (rows
+    of ``nodes``), theta, sin theta, cos theta (``blade``) and s0 ... s3 (``sect``)."""
+    return (nodes[NODE_Y], nodes[NODE_CFAC], nodes[NODE_MFAC], blade[0], blade[1], blade[2], sect[0], sect[1], sect[2],
+            sect[3])
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk, emp, active, n_active):
     """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
     azimuth node), the annuli already solved included: branch-free loops over contiguous
@@ -150,16 +159,7 @@ def _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk,
     scalar chain). The empirical momentum in descent (a Newton solve per annulus) only for the
     ``n_active`` annuli in ``active``, one at a time. ``nodes``, ``blade``, ``sect`` as
     :func:`solve_annuli`; ``us``: the annuli's swirl [m/s]."""
-    y = nodes[NODE_Y]
-    cfac = nodes[NODE_CFAC]
-    mfac = nodes[NODE_MFAC]
-    th = blade[0]
-    sth = blade[1]
-    cth = blade[2]
-    s0 = sect[0]
-    s1 = sect[1]
-    s2 = sect[2]
-    s3 = sect[3]
+    y, cfac, mfac, th, sth, cth, s0, s1, s2, s3 = _annulus_rows(nodes, blade, sect)
     nr = y.shape[0]
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
@@ -244,18 +244,9 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
     ``status`` (2, nr) int64, the rows code (OK, NO_BRACKET, NO_CONVERGENCE) and nev (residual
     evaluations), and multiple (nr,) (more roots seen).
     """
-    y = nodes[NODE_Y]
-    cfac = nodes[NODE_CFAC]
-    mfac = nodes[NODE_MFAC]
+    y, cfac, mfac, th, sth, cth, s0, s1, s2, s3 = _annulus_rows(nodes, blade, sect)
     ct = nodes[NODE_CT]
     ch = nodes[NODE_CH]
-    th = blade[0]
-    sth = blade[1]
-    cth = blade[2]
-    s0 = sect[0]
-    s1 = sect[1]
-    s2 = sect[2]
-    s3 = sect[3]
     gx = grad[0]
     gy = grad[1]
     code = status[0]

@@ -244,8 +244,8 @@ def _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swi
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, cls, out, rad, counts,
-                flags):
+def solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, cls, out, rad,
+                counts, flags):
     """:func:`_solve_batch` with the operating points in parallel over the cores (``prange``),
     then :func:`point_flags` (``cls``, ``flags`` as there)."""
     _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, out, rad, counts)

@@ -81,8 +81,9 @@ def coverage(label: str) -> dict | None:
     -------
     dict or None
         ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial); None for other labels (Table I, a file), whose data this
-        module does not know.
+        UIUC data are axial); None for other labels (Table I, and since 2026-11-23 a
+        parameter file's path: :func:`propmap.io.params_file.set_coverage` reads its table),
+        whose data this module does not know.
     """
     raw = _raw()
     if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
