@@ -81,7 +81,7 @@ def _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swi
     core/nodes.py): per annulus y, the weight w, the blade angle and its sine and cosine, the
     section constant sc (gill2017: the Blasius factor; cambered: ln(rho c / (mu Re_ref))),
     cy2 = (c/y)^2, cfac, mfac and the tip- and hub-loss constants ct, ch (negative: off);
-    ``azim`` shape (2, 2 naz): sin psi and cos psi of the full circle of azimuth nodes, whose
+    ``azim`` shape (2, 2 n_azimuth): sin psi and cos psi of the full circle of azimuth nodes, whose
     first half covers [-pi/2, pi/2] (enough for the uniform inflow, where every integrand
     depends on psi through sin psi only). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
