@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import os
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import click
@@ -345,17 +346,64 @@ def echo_json(obj) -> None:
     click.echo(json.dumps(obj, indent=2, allow_nan=False))
 
 
+def option_group(name: str, cls, options):
+    """A decorator giving a click command ``options`` and handing their values to it as one
+    keyword argument ``name``, ``cls(**values)``.
+
+    The options keep their names on the command line and in the click context (so
+    :func:`given` still names them); the command function takes one argument per group
+    instead of one per option.
+
+    Parameters
+    ----------
+    name : str
+        The command function's keyword argument.
+    cls : type
+        Called with the options' values by their click parameter names (a dataclass).
+    options : list
+        ``click.option(...)`` decorators.
+    """
+    import functools
+
+    def probe():
+        pass
+
+    for opt in options:
+        opt(probe)
+    keys = [p.name for p in probe.__click_params__]
+
+    def decorate(f):
+        @functools.wraps(f)
+        def command(*args, **kwargs):
+            kwargs[name] = cls(**{k: kwargs.pop(k) for k in keys})
+            return f(*args, **kwargs)
+
+        for opt in reversed(options):
+            command = opt(command)
+        return command
+
+    return decorate
+
+
+@dataclass(frozen=True)
+class PropChoice:
+    """--diameter-in [in] and --blades: what a geometry file may lack."""
+
+    diameter_in: float | None = None
+    blades: int | None = None
+
+    def load(self, spec: str):
+        """The Propeller named by ``spec`` with these options (:func:`load_prop`)."""
+        return load_prop(spec, self.diameter_in, self.blades)
+
+
 prop_options = [
     click.option("--diameter-in", type=float, default=None, help="Diameter [in] for geometry files that lack it."),
-    click.option("--blades", type=int, default=None, help="Blade count; required for UIUC geometry files (they do not state it), checked against PE0 files."),
+    click.option("--blades", type=int, default=None, help="Blade count; required for UIUC geometry files (they do not "
+                                                          "state it), checked against PE0 files."),
 ]
-
-
-def with_prop_options(f):
-    """Add --diameter-in and --blades to a command."""
-    for opt in reversed(prop_options):
-        f = opt(f)
-    return f
+#: adds --diameter-in and --blades, passed as ``prop_choice`` (a PropChoice)
+with_prop_options = option_group("prop_choice", PropChoice, prop_options)
 
 
 #: the densities accepted on the command line [kg/m^3] (as parameter files)
@@ -373,14 +421,26 @@ air_options = [
 ]
 
 
-def with_air_options(f):
-    """Add --rho, --temperature-c, --pressure-pa and --altitude-m to a command."""
-    for opt in reversed(air_options):
-        f = opt(f)
-    return f
+@dataclass(frozen=True)
+class AirChoice:
+    """The air options of a command: --rho [kg/m^3], --temperature-c [degC] with
+    --pressure-pa [Pa], or --altitude-m [m] (:func:`resolve_air`)."""
+
+    rho: float | None = None
+    temperature_c: float | None = None
+    pressure_pa: float | None = None
+    altitude_m: float | None = None
+
+    def options_given(self) -> list[str]:
+        """The options given (not None), as typed: ``["--rho"]``."""
+        return ["--" + f.name.replace("_", "-") for f in fields(self) if getattr(self, f.name) is not None]
 
 
-def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+#: adds --rho, --temperature-c, --pressure-pa and --altitude-m, passed as ``air_choice`` (an AirChoice)
+with_air_options = option_group("air_choice", AirChoice, air_options)
+
+
+def resolve_air(air, choice: AirChoice):
     """The air of a command: the parameter set's ``air``, or what the air options give.
 
     ``--rho`` replaces the density only; ``--temperature-c`` with ``--pressure-pa`` gives
@@ -395,6 +455,7 @@ def resolve_air(air, rho=None, temperature_c=None, pressure_pa=None, altitude_m=
     """
     from ..core.air import Air
 
+    rho, temperature_c, pressure_pa, altitude_m = choice.rho, choice.temperature_c, choice.pressure_pa, choice.altitude_m
     ways = [w for w, given_ in (("--rho", rho is not None),
                                 ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),
                                 ("--altitude-m", altitude_m is not None)) if given_]

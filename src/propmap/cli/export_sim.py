@@ -7,7 +7,7 @@ import math
 import click
 
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
@@ -75,8 +75,7 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
-def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points, params_spec, as_json, diameter_in,
-                       blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points, params_spec, as_json, prop_choice, air_choice):
     """Fit a simulator's simple rotor model to propmap and report what it costs.
 
     Hover thrust and torque are pinned to the model's; the speed terms are fitted by least
@@ -97,9 +96,9 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     if not 20 <= n_points <= 1_000_000:
         raise InputError(f"--points must be in [20, 1000000], got {n_points}")
     check_outputs([("--out", out), ("--out (report)", report_path(out))], [params_spec, prop, vehicle])
-    propeller = load_prop(prop, diameter_in, blades)
+    propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
     veh, hover_from = None, "--hover-rpm"

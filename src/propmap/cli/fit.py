@@ -5,18 +5,22 @@ from __future__ import annotations
 import json
 import math
 import os
+from dataclasses import dataclass
 from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, _is_file, _short, check_outputs, check_section_match, load_params, load_prop,
-                      parse_names, resolve_air, warn, with_air_options)
+from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match, load_params,
+                      option_group, parse_names, resolve_air, warn, with_air_options, with_prop_options)
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
 
-fit_options = [
+output_options = [
     click.option("--out", type=PathArg(), required=True, help="Parameter TOML to write."),
+    click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
+]
+fit_options = [
     click.option("--M", "M", type=float, default=None,
                  help="Stall-blend sharpness used while fitting (default: that of --base; the paper's model at "
                       "M = 50 is fitted at M = 30 first and continued to 50); in (0, 1e6] 1/rad."),
@@ -29,13 +33,26 @@ fit_options = [
     click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage), in [0, 256]."),
     click.option("--no-prior", "no_prior", is_flag=True,
                  help="Cambered model: fit without the catalogue population prior (docs/identification.md)."),
-    click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
 ]
 
 
+@dataclass(frozen=True)
+class FitChoice:
+    """The fitting options every fit command shares: --M [1/rad], --lift-model, --fit-params,
+    --multistart, --no-prior (checked by :func:`_options`)."""
+
+    M: float | None = None
+    lift_model: str | None = None
+    fit_params: str | None = None
+    multistart: int = 0
+    no_prior: bool = False
+
+
 def with_fit_options(f):
-    """Decorate a fit command with the options shared by both fits."""
-    for opt in reversed(fit_options):
+    """Decorate a fit command with the options shared by every fit: --out and --json (as
+    themselves) and the fitting options (as ``fit_choice``, a FitChoice)."""
+    f = option_group("fit_choice", FitChoice, fit_options)(f)
+    for opt in reversed(output_options):
         f = opt(f)
     return f
 
@@ -46,7 +63,7 @@ M_MAX = 1e6
 MULTISTART_MAX = 256
 
 
-def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, base_label="", extra_names=()):
+def _options(choice: FitChoice, base=None, base_label="", extra_names=()):
     """FitOptions from the options, checked against the model of ``base`` when given
     (before any work).
 
@@ -61,6 +78,7 @@ def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, b
     from ..identify import FitOptions
     from ..identify.options import _check_names
 
+    M, lift_model, multistart, no_prior = choice.M, choice.lift_model, choice.multistart, choice.no_prior
     if M is not None and not (math.isfinite(M) and 0 < M <= M_MAX):
         raise InputError(f"--M must be finite and in (0, {M_MAX:g}] 1/rad, got {M!r}")
     if not 0 <= multistart <= MULTISTART_MAX:
@@ -73,7 +91,7 @@ def _options(M, lift_model, multistart, fit_params, no_prior=False, base=None, b
     if base is not None and no_prior and not cambered:
         raise InputError(f"--no-prior applies to the cambered model (its population prior); --base "
                          f"{_short(base_label, 40)} is the paper's model, fitted without one")
-    names = parse_names("--fit-params", fit_params, what="parameter name")
+    names = parse_names("--fit-params", choice.fit_params, what="parameter name")
     options = FitOptions(M=M, lift_model=lift_model or "sigmoid", multistart=multistart, progress=True, names=names,
                          prior=not no_prior)
     if names is not None and base is not None:
@@ -166,7 +184,7 @@ def fit() -> None:
                    "'generic' or a parameter file (cambered: fit from it).")
 @with_fit_options
 @with_air_options
-def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, air_choice):
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     from dataclasses import replace
 
@@ -189,8 +207,8 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
     base, air, base_label = load_params(base_spec, option="--base")
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
-    opts = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label), body_lift=body_lift)
+    air = resolve_air(air, air_choice)
+    opts = replace(_options(fit_choice, base, base_label), body_lift=body_lift)
     res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
@@ -208,7 +226,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, M, lift_model, fit_pa
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
-def _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source=None, pole_pairs=None):
+def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None):
     """(data, propeller, catalogue entry or None, label) from the SOURCE arguments."""
     from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
     from ..io.catalogue import catalogue, get_entry
@@ -218,7 +236,7 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source=None,
         if prop_spec is not None and prop_spec != sources[0]:
             raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller; --prop must be omitted")
         entry = get_entry(sources[0])
-        prop = load_prop(sources[0], diameter_in, blades)  # refuses both: the catalogue geometry fixes them
+        prop = prop_choice.load(sources[0])  # refuses both: the catalogue geometry fixes them
         return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
     missing = [s for s in sources if not _is_file(s)]
     if missing:
@@ -232,7 +250,7 @@ def _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source=None,
         if key in seen:
             raise InputError(f"SOURCE: {_short(s)} is the same file as {_short(seen[key])}: its data would count twice")
         seen[key] = s
-    prop = load_prop(prop_spec, diameter_in, blades)
+    prop = prop_choice.load(prop_spec)
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
         if not other:
@@ -270,8 +288,7 @@ def _warn_other_propeller(sources, prop) -> None:
 @click.option("--quantities", default=None, help="Comma-separated subset of thrust,drag,torque to fit (default: all "
                                                  "measured).")
 @click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of file SOURCEs.")
-@click.option("--diameter-in", type=float, default=None, help="Diameter [in] for a geometry file that lacks it.")
-@click.option("--blades", type=int, default=None, help="Blade count for a geometry file.")
+@with_prop_options
 @click.option("--base", "base_spec", default=None,
               help="The model, start and constants not fitted: default 'generic' (cambered, fitted to the "
                    "catalogue); a parameter file, 'calibrated:NAME', or a Table I set for the paper's model.")
@@ -287,9 +304,8 @@ def _warn_other_propeller(sources, prop) -> None:
                    "data know 10x better than the prior for sweeps at one rate, 0 for sweeps at more).")
 @with_fit_options
 @with_air_options
-def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spec, rpm_source, pole_pairs,
-          skip_sanity_check, directions, out, M, lift_model, fit_params, multistart, no_prior, as_json, rho=None,
-          temperature_c=None, pressure_pa=None, altitude_m=None):
+def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_source, pole_pairs,
+          skip_sanity_check, directions, out, as_json, fit_choice, air_choice):
     """Fit to load measurements of one propeller.
 
     SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
@@ -307,8 +323,8 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
 
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
-    data, prop, entry, label = _read_sources(sources, prop_spec, diameter_in, blades, air, rpm_source, pole_pairs)
+    air = resolve_air(air, air_choice)
+    data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
     check_section_match(prop, base_label)
@@ -341,7 +357,7 @@ def loads(sources, holdout, quantities, prop_spec, diameter_in, blades, base_spe
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
-    options = replace(_options(M, lift_model, multistart, fit_params, no_prior, base, base_label),
+    options = replace(_options(fit_choice, base, base_label),
                       population=population, directions=directions)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""

@@ -88,9 +88,8 @@ def _flight_out_files(out: Path) -> list:
               help="Also leave each training log out in turn (one fit per log) and report the held-out errors.")
 @with_fit_options
 @with_air_options
-def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments, cross_validate, out, M,
-                       lift_model, fit_params, multistart, no_prior, as_json, rho=None, temperature_c=None,
-                       pressure_pa=None, altitude_m=None):
+def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments, cross_validate, out, as_json,
+                       fit_choice, air_choice):
     """Fit the rotor and airframe parameters to flight logs (eqs 16-18 in three axes).
 
     LOG: NeuroBEM .mat or .csv, or PX4 .ulg; the vehicle file lists its rotors in the logs'
@@ -109,7 +108,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     logs = _logs(log_paths)
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
@@ -128,7 +127,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
     from ..identify.flight import AIRFRAME_NAMES
 
-    opts = _options(M, lift_model, multistart, fit_params, no_prior, base=base, base_label=base_label,
+    opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
     res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
@@ -237,8 +236,7 @@ def _hover_loads(params, veh, samples, air):
 @click.option("--out", type=PathArg(), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
 @with_air_options
-def wrench_command(log_path, vehicle, params_spec, out, as_json, rho=None, temperature_c=None,
-                   pressure_pa=None, altitude_m=None):
+def wrench_command(log_path, vehicle, params_spec, out, as_json, air_choice):
     """Predicted body force and moment at every sample of a flight log.
 
     Writes t, Fx, Fy, Fz, Mx, My, Mz (body frame: x forward, y left, z up; N, N m) and, when
@@ -258,7 +256,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, rho=None, tempe
     veh = _vehicle(vehicle)
     check_outputs([("--out", out)], _vehicle_inputs(vehicle))
     params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     body = veh.body_drag
     if params_spec is not None and Path(params_spec).is_file():
         try:

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ._common import (air_label, resolve_air, with_air_options, AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       with_prop_options)
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
@@ -280,8 +280,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options
 @with_air_options
-def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, diameter_in,
-          blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice, air_choice):
     """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
 
     Outputs are SI: N, N m, W; CT and CP in the propeller convention; in descent the
@@ -301,9 +300,9 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         inputs = [points, prop, params_spec]
         if out != "-":
             check_outputs([("--out", out)], inputs)
-        propeller = load_prop(prop, diameter_in, blades)
+        propeller = prop_choice.load(prop)
         params, air, label = load_params(params_spec, prop)
-        air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+        air = resolve_air(air, air_choice)
         check_section_match(propeller, label)
         n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
         click.echo(f"wrote {n} points to {'standard output' if out == '-' else out} (params {label})"
@@ -317,9 +316,9 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     incidence_deg = 0.0 if incidence_deg is None else incidence_deg
     check_point(rpm, airspeed, incidence_deg)
     collective_deg = check_collective(collective_deg)
-    propeller = load_prop(prop, diameter_in, blades)
+    propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
     coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
     from ..core.solver import SolverError, rotor_loads

@@ -6,13 +6,14 @@ import contextlib
 import json
 import math
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import click
 
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
                       check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params,
-                      load_prop, parse_names, resolve_air, with_air_options, with_prop_options)
+                      option_group, parse_names, resolve_air, with_air_options, with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
@@ -46,14 +47,68 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
     return np.geomspace(a, b, n) if log else np.linspace(a, b, n)
 
 
+@dataclass(frozen=True)
+class MapAxes:
+    """The grid's axes as given: --rpm, --airspeed [m/s], --incidence-deg, each
+    ``start:stop:count[:log]`` or None for the default (:func:`_axes`)."""
+
+    rpm_axis: str | None = None
+    airspeed_axis: str | None = None
+    incidence_axis: str | None = None
+
+
+@dataclass(frozen=True)
+class CHeaderChoice:
+    """The options of ``--format c``: the table type, the interpolation, the identifier
+    prefix and a vehicle whose body wrench the header adds."""
+
+    c_type: str = "float"
+    c_interpolation: str = "linear"
+    c_name: str | None = None
+    vehicle: Path | None = None
+
+
+@dataclass(frozen=True)
+class PlotChoice:
+    """--plot (a folder of contour maps) and --plot-rpm (their rpm, comma-separated)."""
+
+    plot_dir: Path | None = None
+    plot_rpm: str | None = None
+
+
+axis_options = [
+    click.option("--rpm", "rpm_axis", default=None,
+                 help="rpm axis start:stop:count[:log] (default: 21 values, geometric, from 1/6 of the rpm of a "
+                      "150 m/s tip speed to it)."),
+    click.option("--airspeed", "airspeed_axis", default=None, help="Airspeed axis [m/s] start:stop:count (default 0:25:26)."),
+    click.option("--incidence-deg", "incidence_axis", default=None,
+                 help="Incidence axis [deg] start:stop:count (default 0:180:73)."),
+]
+c_options = [
+    click.option("--c-type", type=click.Choice(["float", "double"]), default="float", show_default=True,
+                 help="Table type of --format c."),
+    click.option("--c-interpolation", type=click.Choice(["linear", "cubic"]), default="linear", show_default=True,
+                 help="Interpolation of the --format c function (linear: 22-23 ns a call; cubic, the Python "
+                      "evaluator's default: 92-97 ns, 3-9x smaller largest errors; docs/simulators.md)."),
+    click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>)."),
+    click.option("--vehicle", type=PathArg(), default=None,
+                 help="With --format c: add <prefix>_vehicle_wrench, the body force and moment of this vehicle TOML "
+                      "(every rotor this map's propeller)."),
+]
+plot_options = [
+    click.option("--plot", "plot_dir", type=PathArg(), default=None,
+                 help="Folder for contour maps of T, D, Q and the hover model's error."),
+    click.option("--plot-rpm", default=None, help="Comma-separated rpm of the contour maps, within the rpm axis (each "
+                                                  "drawn at its nearest node; default: the middle of the axis)."),
+]
+with_axis_options = option_group("axes", MapAxes, axis_options)
+with_c_options = option_group("c_header", CHeaderChoice, c_options)
+with_plot_options = option_group("plot", PlotChoice, plot_options)
+
+
 @click.command("map")
 @click.argument("prop", required=False)
-@click.option("--rpm", "rpm_axis", default=None,
-              help="rpm axis start:stop:count[:log] (default: 21 values, geometric, from 1/6 of the rpm of a "
-                   "150 m/s tip speed to it).")
-@click.option("--airspeed", "airspeed_axis", default=None, help="Airspeed axis [m/s] start:stop:count (default 0:25:26).")
-@click.option("--incidence-deg", "incidence_axis", default=None,
-              help="Incidence axis [deg] start:stop:count (default 0:180:73).")
+@with_axis_options
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--collective-deg", type=float, default=None,
               help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
@@ -62,15 +117,7 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
               help="Map file; a JSON sidecar OUT.json of its metadata is written beside it.")
 @click.option("--format", "fmt", type=click.Choice(list(FORMATS)), default="netcdf", show_default=True,
               help="netcdf (xarray Dataset), csv (long form) or c (a C99 header).")
-@click.option("--c-type", type=click.Choice(["float", "double"]), default="float", show_default=True,
-              help="Table type of --format c.")
-@click.option("--c-interpolation", type=click.Choice(["linear", "cubic"]), default="linear", show_default=True,
-              help="Interpolation of the --format c function (linear: 22-23 ns a call; cubic, the Python "
-                   "evaluator's default: 92-97 ns, 3-9x smaller largest errors; docs/simulators.md).")
-@click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>).")
-@click.option("--vehicle", type=PathArg(), default=None,
-              help="With --format c: add <prefix>_vehicle_wrench, the body force and moment of this vehicle TOML "
-                   "(every rotor this map's propeller).")
+@with_c_options
 @click.option("--check-points", type=int, default=2000, show_default=True,
               help="Random off-grid points at which the full model checks the map (0: none).")
 @click.option("--check", "check_file", type=PathArg(), default=None,
@@ -86,16 +133,12 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
                    "torque (twice it for drag), cubic interpolation (default 1; exit 3 beyond).")
 @click.option("--scheduler", default=None,
               help="Address of a dask.distributed scheduler (tcp://HOST:PORT) to build on; default: this machine.")
-@click.option("--plot", "plot_dir", type=PathArg(), default=None,
-              help="Folder for contour maps of T, D, Q and the hover model's error.")
-@click.option("--plot-rpm", default=None, help="Comma-separated rpm of the contour maps, within the rpm axis (each "
-                                               "drawn at its nearest node; default: the middle of the axis).")
+@with_plot_options
 @click.option("--json", "as_json", is_flag=True, help="Print the map's metadata and measured error as JSON.")
 @with_prop_options
 @with_air_options
-def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, collective_deg, out, fmt, c_type, c_interpolation,
-                c_name, vehicle, check_points, check_file, all_props, only, max_error_pct, scheduler, plot_dir, plot_rpm, as_json,
-                diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, check_points, check_file, all_props, only,
+                max_error_pct, scheduler, plot, as_json, prop_choice, air_choice):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
     The map stores thrust, drag, torque, rolling moment, power, CT, CP and the flags of
@@ -139,21 +182,21 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         from ..export_c import c_prefix
 
         try:
-            c_prefix(out, c_name)
+            c_prefix(out, c_header.c_name)
         except ValueError as exc:
-            raise InputError(f"{'--c-name' if c_name is not None else '--out'}: {exc}"
-                             f"{'' if c_name is not None else ' (give --c-name)'}") from None
-    if plot_rpm is not None and plot_dir is None:
+            raise InputError(f"{'--c-name' if c_header.c_name is not None else '--out'}: {exc}"
+                             f"{'' if c_header.c_name is not None else ' (give --c-name)'}") from None
+    if plot.plot_rpm is not None and plot.plot_dir is None:
         raise InputError("--plot-rpm applies to --plot")
     if out.suffix.lower() != FORMATS[fmt]:
         raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} (or choose --format)")
-    inputs = [params_spec, prop, vehicle]
+    inputs = [params_spec, prop, c_header.vehicle]
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
-    if vehicle is not None:
+    if c_header.vehicle is not None:
         from .flight import _vehicle
 
-        veh = _vehicle(vehicle)
+        veh = _vehicle(c_header.vehicle)
 
     import numpy as np
 
@@ -163,9 +206,9 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
         names, props = _catalogue(only)
         # one grid for all: the default axes of the median diameter
         median = props[int(np.argsort([p.diameter for p in props])[len(props) // 2])]
-        rpm, V, inc = _axes(median, rpm_axis, airspeed_axis, incidence_axis, len(names))
+        rpm, V, inc = _axes(median, axes, len(names))
     else:
-        propeller = load_prop(prop, diameter_in, blades)
+        propeller = prop_choice.load(prop)
         if veh is not None:  # refused before the build, not after it
             for k, r in enumerate(veh.rotors):
                 if r.propeller.name != propeller.name or r.params is not None:
@@ -173,7 +216,7 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
                                      f"{' with its own parameters' if r.params is not None else ''}, not the map's "
                                      f"{propeller.name}: a C header holds one map")
         params, air, label = load_params(params_spec, prop)
-        air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+        air = resolve_air(air, air_choice)
         check_section_match(propeller, label)
         data_label = label  # (the set whose data coverage the envelope is checked against)
         if collective_deg is not None:
@@ -182,12 +225,12 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
             except (ValueError, OverflowError) as exc:
                 raise InputError(f"--collective-deg: {exc}") from None
             label = f"{label} + collective {collective_deg:g} deg"
-        rpm, V, inc = _axes(propeller, rpm_axis, airspeed_axis, incidence_axis)
-        plots = _plot_files(plot_dir, rpm, plot_rpm, inputs) if plot_dir is not None else []
+        rpm, V, inc = _axes(propeller, axes)
+        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs) if plot.plot_dir is not None else []
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
-            air_of = (lambda a: resolve_air(a, rho, temperature_c, pressure_pa, altitude_m))
+            air_of = (lambda a: resolve_air(a, air_choice))
             air_of(load_params("generic")[1])  # options checked before any work
             with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client, air_of) as ds:
                 ds.attrs["build_seconds"] = time.perf_counter() - t0
@@ -209,7 +252,8 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
             from ..maps import RotorMap
 
             try:
-                text = c_header_text(RotorMap(ds, c_interpolation), out, dtype=c_type, name=c_name, vehicle=veh)
+                text = c_header_text(RotorMap(ds, c_header.c_interpolation), out, dtype=c_header.c_type,
+                                     name=c_header.c_name, vehicle=veh)
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
             files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text))
@@ -219,18 +263,18 @@ def map_command(prop, rpm_axis, airspeed_axis, incidence_axis, params_spec, coll
     _report(ds, files, elapsed, as_json)
 
 
-def _axes(propeller, rpm_axis, airspeed_axis, incidence_axis, n_props: int = 1):
+def _axes(propeller, axes: MapAxes, n_props: int = 1):
     """The grid's axes: the options given, else the defaults for ``propeller``; refused
     (before any work) beyond MAX_NODES nodes over ``n_props`` propellers."""
     from ..maps import MAX_NODES, default_axes
 
     rpm, V, inc = default_axes(propeller)
-    if rpm_axis is not None:
-        rpm = parse_axis("--rpm", rpm_axis, RPM_MIN, RPM_MAX, "rpm")
-    if airspeed_axis is not None:
-        V = parse_axis("--airspeed", airspeed_axis, 0.0, 500.0, "m/s")
-    if incidence_axis is not None:
-        inc = parse_axis("--incidence-deg", incidence_axis, 0.0, 180.0, "deg")
+    if axes.rpm_axis is not None:
+        rpm = parse_axis("--rpm", axes.rpm_axis, RPM_MIN, RPM_MAX, "rpm")
+    if axes.airspeed_axis is not None:
+        V = parse_axis("--airspeed", axes.airspeed_axis, 0.0, 500.0, "m/s")
+    if axes.incidence_axis is not None:
+        inc = parse_axis("--incidence-deg", axes.incidence_axis, 0.0, 180.0, "deg")
     n = rpm.size * V.size * inc.size
     if n * n_props > MAX_NODES:
         each = f" for each of {n_props} propellers" if n_props > 1 else ""

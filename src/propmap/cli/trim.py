@@ -7,7 +7,7 @@ import math
 import click
 
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, load_prop,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 
@@ -28,7 +28,7 @@ from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 @with_prop_options
 @with_air_options
 def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_reference, params_spec, as_json,
-                 diameter_in, blades, rho=None, temperature_c=None, pressure_pa=None, altitude_m=None):
+                 prop_choice, air_choice):
     """Collective (blade-angle offset) at which PROP makes --thrust.
 
     The lowest collective in --range-deg that makes the thrust is returned (below stall the
@@ -44,9 +44,9 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     if not (-COLLECTIVE_DEG_MAX <= lo < hi <= COLLECTIVE_DEG_MAX):
         raise InputError(f"--range-deg must be two angles LOW < HIGH within [-{COLLECTIVE_DEG_MAX:g}, "
                          f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
-    propeller = load_prop(prop, diameter_in, blades)
+    propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
     omega, beta = rpm * 2 * math.pi / 60, math.radians(incidence_deg)
     bounds = (math.radians(lo), math.radians(hi))

@@ -39,8 +39,7 @@ def print_table(v) -> None:
               help="Single propeller: figure (.png, .pdf or .svg) of the model against the measurements "
                    "(default: none written).")
 @with_air_options
-def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure, rho=None, temperature_c=None,
-             pressure_pa=None, altitude_m=None):
+def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure, air_choice):
     """The model against bundled measurements.
 
     PROP: the model and the hover model against that catalogue propeller's UIUC static
@@ -53,8 +52,7 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
             raise InputError("give PROP or --all, not both")
         if params_spec is not None:
             raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
-        air_given = [o for o, v in (("--rho", rho), ("--temperature-c", temperature_c), ("--pressure-pa", pressure_pa),
-                                    ("--altitude-m", altitude_m)) if v is not None]
+        air_given = air_choice.options_given()
         if air_given:
             raise InputError(f"{air_given[0]} applies to a single PROP; --all compares coefficients in the air the "
                              "sets were fitted in")
@@ -87,7 +85,7 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
     except KeyError as exc:
         raise InputError(f"PROP: {exc.args[0]} (validate needs a catalogue propeller with measurements)") from None
     params, air, label = load_params(params_spec, prop)
-    air = resolve_air(air, rho, temperature_c, pressure_pa, altitude_m)
+    air = resolve_air(air, air_choice)
     try:
         v = run_validation(entry, load_propeller(prop), params, air=air)
     except ValueError as exc:
