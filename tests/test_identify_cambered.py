@@ -140,6 +140,54 @@ def test_default_level_flight_fit_recovers_parameters_from_data_generated_at_M_5
     np.testing.assert_allclose(r.x, [true.cl1, true.cl2, true.cd, true.alpha0], rtol=1e-8)
     assert r.params.M == 50.0 and r.extra["M_continuation"]["M_first"] == 30.0
     assert "continuation in M" in r.report_text()
+    # Gauss-Newton with the exact M = 50 Jacobian ends it (regression value, 2026-11-24: 159
+    # model calls where Nelder-Mead alone took 917; bench_fit.py times it)
+    assert "Gauss-Newton with the exact M = 50 Jacobian" in r.message
+    assert r.nfev < 400
+
+
+def test_gauss_newton_polish_converges_on_a_smooth_piece_and_stops_at_a_jump():
+    """The continuation's Gauss-Newton tries (identify.engine._gauss_newton): on a smooth
+    residual they converge to the optimum; where the full step would cross a jump of the
+    residual that raises the cost, the try ends at its start, not converged (Nelder-Mead
+    then moves on)."""
+    from propmap.identify.engine import _gauss_newton
+
+    lb, ub = np.full(2, -10.0), np.full(2, 10.0)
+    A = np.array([[2.0, 1.0], [0.5, 3.0], [1.0, -1.0]])
+    b = np.array([1.0, 2.0, 0.5])
+
+    def smooth(x):
+        return A @ x - b, A
+
+    x, cost, ok = _gauss_newton(smooth, np.zeros(2), lb, ub)
+    assert ok
+    np.testing.assert_allclose(x, np.linalg.lstsq(A, b, rcond=None)[0], rtol=1e-12)
+
+    def jumpy(x):  # a jump of +5 in the first residual for x0 > 0.5, where the step lands
+        return np.array([x[0] - 1.0 + (5.0 if x[0] > 0.5 else 0.0), x[1] - 2.0]), np.eye(2)
+
+    x, cost, ok = _gauss_newton(jumpy, np.zeros(2), lb, ub)
+    assert not ok and np.all(x == 0.0) and cost == pytest.approx(2.5)
+
+
+def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
+    """With noise (0.5% rpm, 0.3 deg pitch) the optimum lies where no Gauss-Newton try
+    converges, and the continuation's result is Nelder-Mead's (regression values,
+    2026-11-24, identical to those before the Gauss-Newton tries: cost 1.909733e-02)."""
+    from dataclasses import replace
+
+    veh = read_vehicle(str(resources.files("propmap") / "data/examples/quadrotor.toml"))
+    true = pm.preset("gill2017-apc")
+    V = np.linspace(0, 14, 20)
+    d = simulate_level_flight(veh, true, V, -2.5 * V)
+    rng = np.random.default_rng(1)
+    d = replace(d, omega=d.omega * (1 + 0.005 * rng.standard_normal(d.omega.shape)),
+                pitch=d.pitch + np.radians(0.3) * rng.standard_normal(d.n))
+    r = fit_level_flight(d, veh)
+    assert "Nelder-Mead at M = 50" in r.message
+    np.testing.assert_allclose(r.cost, 1.909733e-02, rtol=1e-6)
+    np.testing.assert_allclose(r.x, [5.3128943938, 1.3736831441, 1.6929932523, 0.3707202919], rtol=1e-8)
 
 
 def test_joint_fit_weights_propellers_alike(apc8x6):
