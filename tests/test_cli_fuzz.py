@@ -16,6 +16,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
@@ -218,7 +219,10 @@ def test_fit_loads_options(capsys, tmp_path_factory, M, multistart, fit_params, 
     written = sorted(p.name for p in d.iterdir())
     if code == 0:
         assert written == ["p.png", "p.report.json", "p.report.txt", "p.toml"]
-        params = pm.read_params(d / "p.toml")  # the parameters written read back
+        params = pm.read_params(d / "p.toml")  # the parameters written read back as the report states them
+        report = json.loads((d / "p.report.json").read_text())
+        for name in ("cl_alpha", "cd_min", "re_exp") if report["params"]["section_model"] == "cambered" else ("cl1", "cd"):
+            assert getattr(params, name) == pytest.approx(report["params"][name], rel=1e-12)
     else:
         assert written == []
 

@@ -13,7 +13,8 @@ import pytest
 
 import propmap as pm
 from propmap.cli.main import main
-from propmap.simexport import Envelope, _errors, _samples, export_sim, predict, write_export
+from propmap.simexport import Envelope, export_sim, predict, write_export
+from propmap.simexport.fit import _errors, _samples
 
 
 @pytest.fixture(scope="module")

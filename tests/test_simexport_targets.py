@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.simexport import Envelope, _samples, export_sim, rotorpy_directions, write_export
+from propmap.simexport import Envelope, export_sim, rotorpy_directions, write_export
+from propmap.simexport.fit import _samples
 from propmap.vehicle import Rotor, Vehicle, hover_omega
 
 ENV = Envelope(rpm=(4000.0, 9000.0), airspeed=(0.0, 12.0), incidence_deg=(0.0, 120.0), hover_rpm=6000.0)

@@ -455,7 +455,8 @@ def resolve_air(air, choice: AirChoice):
     """
     from ..core.air import Air
 
-    rho, temperature_c, pressure_pa, altitude_m = choice.rho, choice.temperature_c, choice.pressure_pa, choice.altitude_m
+    rho, temperature_c = choice.rho, choice.temperature_c
+    pressure_pa, altitude_m = choice.pressure_pa, choice.altitude_m
     ways = [w for w, given_ in (("--rho", rho is not None),
                                 ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),
                                 ("--altitude-m", altitude_m is not None)) if given_]

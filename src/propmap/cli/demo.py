@@ -64,7 +64,8 @@ def fit_demo(prop, generic, out_dir: Path):
     rows = [f"   held-out {cmp_c['fitted']['n_points']} points, rms error of the coefficients [-]:",
             f"   {'':<36}{'CT':>8}{'CP':>8}",
             f"   {'cambered model, fitted':<36}{cmp_c['fitted']['ct_rmse']:>8.4f}{cmp_c['fitted']['cp_rmse']:>8.4f}",
-            f"   {'paper model (eqs 3-4), fitted':<36}{cmp_p['fitted']['ct_rmse']:>8.4f}{cmp_p['fitted']['cp_rmse']:>8.4f}",
+            f"   {'paper model (eqs 3-4), fitted':<36}{cmp_p['fitted']['ct_rmse']:>8.4f}"
+            f"{cmp_p['fitted']['cp_rmse']:>8.4f}",
             f"   {'cambered generic set, no fit':<36}{cmp_c['baseline']['ct_rmse']:>8.4f}"
             f"{cmp_c['baseline']['cp_rmse']:>8.4f}",
             f"   {'paper Table I, no fit':<36}{cmp_p['baseline']['ct_rmse']:>8.4f}{cmp_p['baseline']['cp_rmse']:>8.4f}",
@@ -117,8 +118,8 @@ def demo(out_dir: Path, rpm: float):
     table = envelope_table(prop, generic, rpm)
     with atomic_write(out_dir / "envelope.csv", "w", newline="") as fh:
         table.to_csv(fh, index=False, float_format="%.6g")
-    click.echo(f"1. Envelope at {rpm:g} rpm, cambered model vs hover model (T_hover = {table.thrust_hover.iloc[0]:.3f} N,"
-               " D = 0)")
+    click.echo(f"1. Envelope at {rpm:g} rpm, cambered model vs hover model "
+               f"(T_hover = {table.thrust_hover.iloc[0]:.3f} N, D = 0)")
     click.echo("   hover-model thrust error = T_hover - T, in N and in % of the static thrust")
     click.echo(f"   {'V [m/s]':>8}{'incid.':>8}{'T [N]':>9}{'D [N]':>8}{'Q [N m]':>10}{'T_hover - T':>13}")
     for _, row in table[table.airspeed.isin([0.0, 10.0, 20.0])].iterrows():

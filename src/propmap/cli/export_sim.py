@@ -57,8 +57,8 @@ def parse_envelope(text: str | None, propeller):
 @click.argument("prop")
 @click.option("--target", type=click.Choice(CHOICES), required=True,
               help="rotorpy (quad_params keys; a whole quad_params with --vehicle), gazebo-classic (PX4-SITL "
-                   "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial (in mu "
-                   "and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and multinomial.")
+                   "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial "
+                   "(in mu and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and multinomial.")
 @click.option("--out", type=PathArg(), required=True,
               help="Coefficient file (.py, .sdf or .json by target); a JSON report <stem>.report.json beside it.")
 @click.option("--envelope", default=None,
@@ -75,7 +75,8 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
-def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points, params_spec, as_json, prop_choice, air_choice):
+def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points, params_spec, as_json, prop_choice,
+                       air_choice):
     """Fit a simulator's simple rotor model to propmap and report what it costs.
 
     Hover thrust and torque are pinned to the model's; the speed terms are fitted by least

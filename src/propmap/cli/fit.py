@@ -10,8 +10,8 @@ from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match, load_params,
-                      option_group, parse_names, resolve_air, warn, with_air_options, with_prop_options)
+from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match,
+                      load_params, option_group, parse_names, resolve_air, warn, with_air_options, with_prop_options)
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -30,7 +30,8 @@ fit_options = [
     click.option("--fit-params", "fit_params", default=None,
                  help="Comma-separated parameters to fit (default: cl1,cl2,cd,alpha0 for the paper's model; for the "
                       "cambered one chosen by the data, docs/identification.md)."),
-    click.option("--multistart", type=int, default=0, show_default=True, help="Extra Sobol starts (global stage), in [0, 256]."),
+    click.option("--multistart", type=int, default=0, show_default=True,
+                 help="Extra Sobol starts (global stage), in [0, 256]."),
     click.option("--no-prior", "no_prior", is_flag=True,
                  help="Cambered model: fit without the catalogue population prior (docs/identification.md)."),
 ]
@@ -178,7 +179,8 @@ def fit() -> None:
 @fit.command("level-flight")
 @click.argument("data", type=PathArg())
 @click.option("--vehicle", type=PathArg(), required=True, help="Vehicle TOML.")
-@click.option("--body-lift", is_flag=True, help="Append the body-lift term of Sec. III-A and report whether it matters.")
+@click.option("--body-lift", is_flag=True,
+              help="Append the body-lift term of Sec. III-A and report whether it matters.")
 @click.option("--base", "base_spec", default="gill2017-apc", show_default=True,
               help="The model and the constants not fitted: the paper's Table I sets (fit from the paper's x0), "
                    "'generic' or a parameter file (cambered: fit from it).")
@@ -212,7 +214,8 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     res = _run_fit(fit_level_flight, d, veh, base=base, air=air, options=opts)
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
-    extra = (f"vertical-force error rms (rotors only): model {np.sqrt(np.mean((forces['vertical'] - veh.weight) ** 2)):.4f} N, "
+    rms_model = np.sqrt(np.mean((forces['vertical'] - veh.weight) ** 2))
+    extra = (f"vertical-force error rms (rotors only): model {rms_model:.4f} N, "
              f"hover model {np.sqrt(np.mean((hover - veh.weight) ** 2)):.4f} N (weight {veh.weight:.3f} N)")
     if body_lift:
         bl = res.extra["body_lift"]

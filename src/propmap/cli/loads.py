@@ -8,9 +8,9 @@ from pathlib import Path
 
 import click
 
-from ._common import (air_label, resolve_air, with_air_options, AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_outputs, check_point,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      with_prop_options)
+from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_outputs,
+                      check_point, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
+                      resolve_air, with_air_options, with_prop_options)
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
@@ -280,7 +280,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options
 @with_air_options
-def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice, air_choice):
+def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice,
+          air_choice):
     """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
 
     Outputs are SI: N, N m, W; CT and CP in the propeller convention; in descent the

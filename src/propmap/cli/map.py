@@ -80,7 +80,8 @@ axis_options = [
     click.option("--rpm", "rpm_axis", default=None,
                  help="rpm axis start:stop:count[:log] (default: 21 values, geometric, from 1/6 of the rpm of a "
                       "150 m/s tip speed to it)."),
-    click.option("--airspeed", "airspeed_axis", default=None, help="Airspeed axis [m/s] start:stop:count (default 0:25:26)."),
+    click.option("--airspeed", "airspeed_axis", default=None,
+                 help="Airspeed axis [m/s] start:stop:count (default 0:25:26)."),
     click.option("--incidence-deg", "incidence_axis", default=None,
                  help="Incidence axis [deg] start:stop:count (default 0:180:73)."),
 ]
@@ -508,9 +509,9 @@ def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
     click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
                f"points (seed {seed}; stored values in brackets):")
     nan = float("nan")
-    click.echo(f" {res['check_points_flagged']} of them flagged" + (" (no error outside flagged regions to "
-                                                                      "measure: n/a)" if res["check_points_flagged"] == n
-                                                                      else ""))
+    none_left = res["check_points_flagged"] == n
+    click.echo(f" {res['check_points_flagged']} of them flagged"
+               + (" (no error outside flagged regions to measure: n/a)" if none_left else ""))
     for method in ("cubic", "linear"):
         p = f"check_{method}_"
         click.echo(f" {method}:")

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params, parse_names,
-                      resolve_air, with_air_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params,
+                      parse_names, resolve_air, with_air_options)
 from .validate_all import PROTOCOLS
 
 

@@ -123,7 +123,8 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
         sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random_base2(m)[: options.multistart]
         starts += list(lb + sob * (ub - lb))
     counter = {"n": 0}
-    bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)  # None: off unless a terminal
+    # disable=None: off unless a terminal
+    bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)
 
     both = getattr(residual, "with_jacobian", None)
     last = {}  # the Jacobian of the last residual evaluated, and where

@@ -3,8 +3,7 @@ with their error against the full model (fit.py: the models and the fit; files.p
 target's file and the report)."""
 
 from .files import check_rotorpy_vehicle, error_lines, report_path, rotorpy_directions, write_export
-from .fit import (ALIASES, DETERMINED, EVEN_TERMS, GAZEBO_AXIAL_SPEED, MAX_CONDITION, MIN_POINTS, ODD_TERMS,
-                  PHYSICAL_SIGN, TARGETS, Envelope, SimExport, _errors, _samples, canonical_target, default_envelope,
+from .fit import (ALIASES, TARGETS, Envelope, SimExport, canonical_target, default_envelope,
                   export_sim, predict)
 
 __all__ = ["ALIASES", "Envelope", "SimExport", "TARGETS", "canonical_target", "check_rotorpy_vehicle",
