@@ -237,3 +237,27 @@ def test_posterior_errors_of_prior_held_parameters_keep_the_population_spread(tm
                 assert max(res.extra["directions"]["std_error_data_only"]) < 0.5  # the directions': determined
             assert 0.5 * sd_pop["cl_alpha"] < out[-1]["cl_alpha"] <= 1.0001 * sd_pop["cl_alpha"]
         assert out[1]["cl_alpha"] == pytest.approx(out[0]["cl_alpha"], rel=0.2)
+
+
+def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp_path, truth_params):
+    """A spreadsheet in a decimal-comma locale saves the export with ';' between cells and
+    ',' as the decimal mark: the same numbers as the original (identify/csvfile.py)."""
+    path = tmp_path / "1585.csv"
+    write_steps_export(path, series="1585", thrust_unit="kgf", params=truth_params, steps=STEPS)
+    text = path.read_text(encoding="utf-8-sig")
+    assert "," in text and ";" not in text
+    resaved = tmp_path / "1585_de.csv"
+    resaved.write_text(text.replace(",", ";").replace(".", ","), encoding="utf-8-sig")
+    a, b = read_loads(path), read_loads(resaved)
+    assert b.n == a.n and list(b.group) == list(a.group)
+    np.testing.assert_array_equal(b.omega, a.omega)
+    for k in a.measured:
+        np.testing.assert_array_equal(b.measured[k], a.measured[k])
+    # a cell with both marks is not guessed at
+    lines = resaved.read_text(encoding="utf-8-sig").splitlines()
+    cells = lines[5].split(";")
+    cells[0] = "1.234,5"
+    lines[5] = ";".join(cells)
+    resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
+    with pytest.raises(DataError, match="line 6.*is not a number"):
+        read_loads(resaved)

@@ -8,7 +8,9 @@ escapes for any file content, and no reader modifies its input.
 CSV files (:func:`read_level_flight`, :func:`read_loads`): a regular file of at most
 200 MiB and 10,000,000 lines (never a directory, a device or a pipe), UTF-8 with or
 without a byte-order mark
-(as Excel writes it), comma-separated, a header line then one row per point; line ends
+(as Excel writes it), comma-separated (or semicolon-separated with decimal commas, as
+spreadsheets in such locales save it: ``0,057``; the separator is read from the header
+line), a header line then one row per point; line ends
 LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in RFC 4180
 (an unterminated quote is an error). Column names are stripped of spaces, at most 255
 characters, each at most once (a duplicated column is an error, never "the first wins");
@@ -168,6 +170,8 @@ class _Csv:
                     continue
                 if not cell:
                     raise self.error(f"column {_short(c)} is empty (missing value)", line)
+                if self.sep == ";" and cell.count(",") == 1 and "." not in cell:
+                    cell = cell.replace(",", ".")  # a decimal comma (a ';'-separated file)
                 try:
                     x = parse_number(cell)
                 except ValueError:
