@@ -170,6 +170,12 @@ def test_gauss_newton_polish_converges_on_a_smooth_piece_and_stops_at_a_jump():
     x, cost, ok = _gauss_newton(jumpy, np.zeros(2), lb, ub)
     assert not ok and np.all(x == 0.0) and cost == pytest.approx(2.5)
 
+    def broken(x):  # a Jacobian that is not finite (at a fold) ends the try where it is
+        return A @ x - b, np.full_like(A, np.nan)
+
+    x, cost, ok = _gauss_newton(broken, np.ones(2), lb, ub)
+    assert not ok and np.all(x == 1.0)
+
 
 def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
     """With noise (0.5% rpm, 0.3 deg pitch) the optimum lies where no Gauss-Newton try

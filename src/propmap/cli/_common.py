@@ -373,11 +373,13 @@ def option_group(name: str, cls, options):
     keys = [p.name for p in probe.__click_params__]
 
     def decorate(f):
-        @functools.wraps(f)
+        @functools.wraps(f, updated=())
         def command(*args, **kwargs):
             kwargs[name] = cls(**{k: kwargs.pop(k) for k in keys})
             return f(*args, **kwargs)
 
+        if hasattr(f, "__click_params__"):  # options declared below the group (a copy: f's own list stays f's)
+            command.__click_params__ = list(f.__click_params__)
         for opt in reversed(options):
             command = opt(command)
         return command
