@@ -223,7 +223,7 @@ def test_fit_level_flight_no_prior_with_the_papers_model_is_refused(capsys, tmp_
     (["map", "--all", "--plot", "p", "--out", "m.nc"], "--plot does not apply to --all"),
     (["map", "--all", "--diameter-in", "9", "--out", "m.nc"], "--diameter-in does not apply to --all"),
     (["map", "--check", "m.nc", "--c-name", "x", "--format", "c"], "--format, --c-name do not apply"),
-    (["map", "--check", "m.nc", "--scheduler", "tcp://h:1"], "--scheduler do not apply"),
+    (["map", "--check", "m.nc", "--scheduler", "tcp://h:1"], "--scheduler does not apply"),
     (["map", "apce_8x6", "--out", "m.nc", "--c-type", "float"], "--c-type applies to --format c"),
     (["map", "apce_8x6", "--out", "m.h", "--format", "c", "--c-name", "fp"],
      "--c-name: the C name prefix 'fp' would define FP_CLIP, FP_NAN, FP_ERROR, ...: names reserved by <math.h>"),

@@ -153,7 +153,8 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                                                                                           "--json", "--props",
                                                                                           "--max-error-pct")]
         if extra:
-            raise InputError(f"--check takes a map file only; {', '.join(extra)} do not apply")
+            verb = "does" if len(extra) == 1 else "do"
+            raise InputError(f"--check takes a map file only; {', '.join(extra)} {verb} not apply")
         return _check(check_file, check_points, as_json, parse_names("--props", only, what="propeller name"),
                       max_error_pct)
     if max_error_pct is not None:
