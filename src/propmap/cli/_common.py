@@ -449,6 +449,13 @@ def resolve_air(air, choice: AirChoice):
     dry air at those conditions and ``--altitude-m`` the ISA (core.air.Air). One of the
     three ways at a time.
 
+    Parameters
+    ----------
+    air : Air
+        The parameter set's air.
+    choice : AirChoice
+        The command's air options.
+
     Raises
     ------
     InputError
