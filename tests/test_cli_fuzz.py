@@ -221,7 +221,8 @@ def test_fit_loads_options(capsys, tmp_path_factory, M, multistart, fit_params, 
         assert written == ["p.png", "p.report.json", "p.report.txt", "p.toml"]
         params = pm.read_params(d / "p.toml")  # the parameters written read back as the report states them
         report = json.loads((d / "p.report.json").read_text())
-        for name in ("cl_alpha", "cd_min", "re_exp") if report["params"]["section_model"] == "cambered" else ("cl1", "cd"):
+        cambered = report["params"]["section_model"] == "cambered"
+        for name in ("cl_alpha", "cd_min", "re_exp") if cambered else ("cl1", "cd"):
             assert getattr(params, name) == pytest.approx(report["params"][name], rel=1e-12)
     else:
         assert written == []

@@ -160,3 +160,19 @@ def test_modules_import_only_their_layer_and_below():
             if LAYERS.get(_top(d), 2) > layer or _top(d) in LEAVES.get(_top(m), ()):
                 bad.append((m, d))
     assert bad == []
+
+
+def test_no_function_takes_20_arguments():
+    """docs/conventions.md: a function of 20 arguments asks to be split by responsibility
+    (the kernels pack their per-annulus and per-point data into arrays, the commands their
+    option groups into one value each). The largest today: the kernel's solve_batch, 19."""
+    worst = []
+    for name, (path, _) in _modules().items():
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                a = node.args
+                n = len(a.posonlyargs) + len(a.args) + len(a.kwonlyargs) + (a.vararg is not None) + (a.kwarg is not None)
+                worst.append((n, f"{name}.{node.name}"))
+    worst.sort(reverse=True)
+    assert len(worst) > 500  # every module was read
+    assert worst[0][0] < 20, worst[:3]

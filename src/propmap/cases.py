@@ -256,7 +256,8 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
                               **{f"ratio_{a:g}": float(CTw[k + 1] / CTw[0]) for k, a in enumerate((10.0, 20.0))},
                               **{f"ratio_err_{a:g}": float(CTw[k + 1] / CTw[0] - ratio_m[a])
                                  for k, a in enumerate((10.0, 20.0))},
-                              **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0]) for k, a in enumerate((10.0, 20.0))},
+                              **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0])
+                                 for k, a in enumerate((10.0, 20.0))},
                               **{f"H_over_T_{a:g}": float(r.drag[k + 1] / r.thrust[k + 1])
                                  for k, a in enumerate((10.0, 20.0))}}
             metrics[label].update(_beaver_matched(prop, p, tunnel, CT0m, ratio_m))

@@ -34,7 +34,8 @@ from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
 __all__ = ["MAX_NODES", "MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "read_sidecar",
            "scheduler_client", "write_map", "write_sidecar"]
 
-LONG_NAMES = {"thrust": "thrust T along the rotor axis", "drag": "rotor drag D (H-force), against the in-plane velocity",
+LONG_NAMES = {"thrust": "thrust T along the rotor axis",
+              "drag": "rotor drag D (H-force), against the in-plane velocity",
               "torque": "shaft torque Q opposing the rotation",
               "rolling_moment": "rolling moment M_R (advancing/retreating thrust asymmetry)",
               "power": "shaft power P = Q Omega", "CT": "thrust coefficient T / (rho n^2 D^4)",
@@ -150,7 +151,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
               discretization: Discretization = DEFAULT_DISCRETIZATION, params_label: str = "",
               citation: str = "", chunk_points: int = 20_000, scheduler=None, progress: bool = False,
               n_check: int = 2000, seed: int = 0):
-    """Tabulate the model on the grid omega x airspeed x incidence, with its measured interpolation error (a sample maximum).
+    """Tabulate the model on the grid omega x airspeed x incidence, with its measured
+    interpolation error (a sample maximum).
 
     Parameters
     ----------

@@ -125,7 +125,8 @@ def plot_level_flight_fit(data, forces, hover_vertical, weight, path, *, title: 
     return _save(fig, path)
 
 
-def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "", baseline_label: str = "Table I") -> Path:
+def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
+                  baseline_label: str = "Table I") -> Path:
     """Like Fig. 7 of Gill & D'Andrea (2017) for a load fit: CT and CP vs J, measured
     (filled: used in the fit, open: held out), fitted model (solid), baseline parameters
     (dotted) and the hover model (dashed). Runs are :class:`SweepComparison` lists of the
@@ -138,7 +139,8 @@ def plot_load_fit(runs_fitted, runs_baseline, holdout, path, *, title: str = "",
         c = colors[k % len(colors)]
         held = rf.run_id in holdout
         o = np.argsort(rf.J)
-        for ax, meas, fit, bl in ((axes[0], rf.CT, rf.CT_model, rb.CT_model), (axes[1], rf.CP, rf.CP_model, rb.CP_model)):
+        for ax, meas, fit, bl in ((axes[0], rf.CT, rf.CT_model, rb.CT_model),
+                                  (axes[1], rf.CP, rf.CP_model, rb.CP_model)):
             ax.plot(rf.J, meas, "o", color=c, ms=4, mfc="none" if held else c,
                     label=f"{rf.label}{' (held out)' if held else ''}")
             style = "x" if rf.kind == "static" else "-"

@@ -176,7 +176,8 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
 
 
 def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: SectionParams, baseline: SectionParams,
-                       holdout, *, air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+                       holdout, *, air: Air | None = None,
+                       discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Held-out CT and CP errors of a fitted model, a baseline parameter set and the hover model.
 
     The hover model uses the measured static CT and CP. ``holdout`` names UIUC run ids.

@@ -58,7 +58,8 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--target", type=click.Choice(CHOICES), required=True,
               help="rotorpy (quad_params keys; a whole quad_params with --vehicle), gazebo-classic (PX4-SITL "
                    "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial "
-                   "(in mu and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and multinomial.")
+                   "(in mu and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and "
+                   "multinomial.")
 @click.option("--out", type=PathArg(), required=True,
               help="Coefficient file (.py, .sdf or .json by target); a JSON report <stem>.report.json beside it.")
 @click.option("--envelope", default=None,

@@ -264,8 +264,9 @@ def momentum_thrust(v, mom_fac, Vs, Vc):
 # Ch. 2, a fit to the wind-tunnel measurements on four model rotors of W. Castles and R. B.
 # Gray, NACA TN 2474, 1951:  v/v_h = kappa + 1.125 k - 1.372 k^2 + 1.718 k^3 - 0.655 k^4,
 # k = -V_c / v_h in [0, 2], with kappa = 1 here (Leishman's 1.15 is the measured rotors'
-# induced-power factor; the BEMT computes those losses itself: docs/models.md, Descent). propmap subtracts EMPIRICAL_SHIFT k (1.3% at k = 2) so that the
-# curve meets Glauert's windmill-brake branch (v/v_h = 1 at k = 2) as it meets hover at k = 0.
+# induced-power factor; the BEMT computes those losses itself: docs/models.md, Descent).
+# propmap subtracts EMPIRICAL_SHIFT k (1.3% at k = 2) so that the curve meets Glauert's
+# windmill-brake branch (v/v_h = 1 at k = 2) as it meets hover at k = 0.
 EMPIRICAL_SHIFT = 0.0130
 EMPIRICAL_C1 = 1.125 - EMPIRICAL_SHIFT
 EMPIRICAL_C2 = -1.372

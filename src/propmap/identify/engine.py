@@ -19,7 +19,8 @@ from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
 from .options import AIRFRAME_BOUNDS, BODY_BOUNDS, BODY_X0, BOUNDS, CAMBERED_BOUNDS, ROTOR_BOUNDS, FitOptions, _is_angle
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
 
-__all__ = ["SCREEN_NFEV", "NM_STAT_TOL", "M_SMOOTH", "GN_STEP_TOL", "GN_MAX_ITER", "GN_TRY_EVERY", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
+__all__ = ["SCREEN_NFEV", "NM_STAT_TOL", "M_SMOOTH", "GN_STEP_TOL", "GN_MAX_ITER", "GN_TRY_EVERY", "SAME_COST_RTOL",
+           "DIFFERENT_X_RTOL"]
 
 
 SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage

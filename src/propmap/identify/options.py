@@ -102,7 +102,8 @@ def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) ->
     if twice:
         raise ValueError(f"cannot fit {', '.join(twice)} twice: give each parameter once")
     if isinstance(base, CamberedParams):
-        valid = (*CAMBERED_BOUNDS, *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
+        valid = (*CAMBERED_BOUNDS,
+                 *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
         model = "the cambered model"
     else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
         valid, model = tuple(BOUNDS), "the paper's model"

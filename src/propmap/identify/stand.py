@@ -37,10 +37,10 @@ LBF = 4.4482216152605
 INCH = 0.0254
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
-    "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF, "lb": LBF,
-              "ozf": LBF / 16, "oz": LBF / 16},
-    "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5, "lbfin": LBF * INCH,
-               "ozfin": LBF / 16 * INCH, "lbfft": LBF * 0.3048},
+    "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
+              "lb": LBF, "ozf": LBF / 16, "oz": LBF / 16},
+    "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
+               "lbfin": LBF * INCH, "ozfin": LBF / 16 * INCH, "lbfft": LBF * 0.3048},
     "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
     "speed": {"ms": 1.0, "kmh": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600, "kt": 1852 / 3600, "knots": 1852 / 3600},
     "angle": {"deg": 1.0, "rad": 180.0 / math.pi},
@@ -176,7 +176,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
         raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
-        raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; found {found}")
+        raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
+                    f"found {found}")
     return cm
 
 

@@ -356,7 +356,8 @@ def _ulog_motors(ulog, name: str, motor_map):
     if not cols:
         raise FlightLogError(f"{name}: topic 'actuator_outputs' has no outputs")
     t, u = _topic(ulog, "actuator_outputs", cols, name)
-    return t, np.maximum(a + b * u, 0.0), f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u"
+    return (t, np.maximum(a + b * u, 0.0),
+            f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u")
 
 
 # ---------------------------------------------------------------------------- checks

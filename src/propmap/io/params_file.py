@@ -252,7 +252,8 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     for k, v in table.items():
         _check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
     if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max {table['rpm_max']:g}")
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
+                         f"{table['rpm_max']:g}")
     return {k: float(v) for k, v in table.items()}
 
 
@@ -348,7 +349,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
     if "drag_area" not in table:
         raise ValueError(f"{where}: [body]: missing key 'drag_area'")
     vectors = {}
-    for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")), ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
+    for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")),
+                     ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
         if key not in table:
             continue
         value = table[key]

@@ -84,7 +84,8 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
         lines.append(f"{comment}   off-axis: {u['off_axis']}")
         t = u.get("edgewise_trend")
         if t and not math.isnan(t["this_set"]):
-            lines.append(f"{comment}   thrust change from hover to {t['airspeed']:g} m/s edgewise at {t['rpm']:.0f} rpm: "
+            lines.append(f"{comment}   thrust change from hover to {t['airspeed']:g} m/s edgewise at "
+                         f"{t['rpm']:.0f} rpm: "
                          f"{t['this_set']:+.1%} with this set, {t['generic']:+.1%} with the generic set")
     return lines
 
@@ -153,7 +154,8 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
     rpm_max = res.envelope.rpm[1]
     out = ["", "# " + _text(f"quad_params for RotorPy's Multirotor: {vehicle.name or 'vehicle'} "
                             f"({Path(label).name or 'vehicle file'})."),
-           "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; parasitic drag",
+           "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; "
+           "parasitic drag",
            f"# c_D = rho (C_D A) / 2 from the vehicle file's drag areas at rho = {rho!r} kg/m^3 (the slipstream",
            "# factor has no RotorPy term).",
            "quad_params = {",

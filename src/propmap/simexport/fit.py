@@ -17,9 +17,10 @@ radius. Sources of the model forms (each checked against the simulator's source)
   -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
   flapping blades); propmap's model with rigid blades and uniform inflow (the defaults) has
   none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping or a
-  linear inflow model is warned about: its pitching moment and side force are left out), and propmap's rolling moment M_R (about
-  e_ip) has no RotorPy term: its error is reported. RotorPy's ``rotor_directions`` entry
-  is the sign of the reaction torque on the body about +z: -spin in propmap's convention
+  linear inflow model is warned about: its pitching moment and side force are left out),
+  and propmap's rolling moment M_R (about e_ip) has no RotorPy term: its error is reported.
+  RotorPy's ``rotor_directions`` entry is the sign of the reaction torque on the body about
+  +z: -spin in propmap's convention
   (a "ccw" rotor, spin +1 about its thrust axis, is -1 there).
 * ``gazebo-classic`` -- PX4-SITL_gazebo-classic's motor model
   (``src/gazebo_motor_model.cpp``, ``GazeboMotorModel::UpdateForcesAndMoments``):
@@ -241,8 +242,8 @@ def _samples(propeller, params, air, envelope: Envelope, n: int, seed: int):
     static = rotor_loads(propeller, params, np.append(om, om_h), 0.0, 0.0, air=air)
     ok = full.converged
     if ok.sum() < MIN_POINTS:
-        raise ValueError(f"only {int(ok.sum())} of the envelope's {n} points converged; at least {MIN_POINTS} are needed "
-                         "to fit (a larger envelope, or more points)")
+        raise ValueError(f"only {int(ok.sum())} of the envelope's {n} points converged; at least {MIN_POINTS} are "
+                         "needed to fit (a larger envelope, or more points)")
     for k, v in (("thrust", static.thrust), ("torque", static.torque)):
         if not np.all(np.isfinite(v) & (v > 0)):
             raise ValueError(f"the model's static {k} is not positive at every rpm of the envelope "

@@ -8,4 +8,5 @@ from .file import VehicleFileError, read_vehicle
 from .mapped import VehicleMap, VehicleMapWrench
 from .model import Rotor, Vehicle, VehicleWrench, hover_omega, rotor_geometry, vehicle_wrench
 
-__all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleWrench", "VehicleFileError", "hover_omega", "read_vehicle", "rotor_geometry", "vehicle_wrench"]
+__all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleWrench", "VehicleFileError", "hover_omega",
+           "read_vehicle", "rotor_geometry", "vehicle_wrench"]

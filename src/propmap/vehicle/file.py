@@ -23,7 +23,7 @@ Format (body frame: x forward, y left, z up; SI units)::
     axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
     spin = "ccw"                    # about +axis (right-hand rule), or "cw"
     propeller = "apce_8x6"          # geometry file or catalogue name
-    blades = 3                      # blade count of a geometry file (1 to 100): required for a UIUC file, which does not state it
+    blades = 3                      # blade count of a geometry file (1 to 100): a UIUC file needs it
     diameter_m = 0.13               # optional: diameter of a UIUC geometry file [m], in (0, 100]
     params = "generic"              # optional: this rotor's parameter set (a file, relative to
                                     # the vehicle file, or a named set); default the set in use
