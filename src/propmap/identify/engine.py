@@ -252,11 +252,11 @@ def _gauss_newton(evaluate, x, lb, ub):
 
     Full steps only: at M = 50 the residual jumps where an annulus' selected root changes
     branch; on the piece that holds the optimum, Gauss-Newton's full steps converge in a few
-    iterations (measured: 3-6 from the paper's case, every step accepted whole), while a
-    step that does not lower the exact cost means a jump or a curved valley that a shorter
-    step would only creep along, and the try ends there (a try that stalls at once costs two
-    model calls: its start and the step). A residual or Jacobian that is not finite ends the
-    try too.
+    iterations (measured: 2-8 from points along Nelder-Mead's path on the paper's case,
+    every step accepted whole), while a step that does not lower the exact cost means a jump
+    or a curved valley that a shorter step would only creep along, and the try ends there (a
+    try that stalls at once costs two model calls: its start and the step). A residual or
+    Jacobian that is not finite ends the try too.
 
     Parameters
     ----------
