@@ -69,6 +69,20 @@ def test_loads_points_csv(capsys, tmp_path):
     assert "vortex_ring" in rows[2]["flags"].split(";")  # axial descent at 5 m/s, 6000 rpm: k = 0.92
 
 
+def test_loads_points_with_semicolons_and_decimal_commas(capsys, tmp_path):
+    """A points file saved by a spreadsheet in a decimal-comma locale gives the loads of the
+    same points written with decimal points."""
+    loads = {}
+    for name, text in (("en", "rpm,airspeed,incidence_deg\n8000,5.5,10\n6000,0,0.5\n"),
+                       ("de", "rpm;airspeed;incidence_deg\r\n8000;5,5;10\r\n6000;0;0,5\r\n")):
+        src, dst = tmp_path / f"{name}.csv", tmp_path / f"{name}_out.csv"
+        src.write_text(text, newline="")
+        code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
+        assert code == 0, err
+        loads[name] = [(float(r["thrust"]), float(r["drag"])) for r in csv.DictReader(dst.open())]
+    assert loads["de"] == loads["en"] and loads["en"][0][1] > 0
+
+
 def test_validate_json_and_figure(capsys, tmp_path):
     fig = tmp_path / "v.png"
     code, out, _ = run(capsys, "validate", "apce_8x6", "--json", "--figure", str(fig))
@@ -132,6 +146,8 @@ def test_bad_geometry_file_exits_2(capsys, tmp_path, text, match):
         ("rpm,airspeed,incidence_deg\n8000,0,0\n-8000,1,0\n", "line 3: rpm"),
         ("rpm,airspeed,incidence_deg\n8000,0,200\n", "line 2: incidence_deg"),
         ("rpm,airspeed,incidence_deg\n", "no data rows"),
+        # beside decimal commas a point is a thousands separator: refused, not read as 7 rpm
+        ("rpm;airspeed;incidence_deg\n6000;5,5;10\n7.000;0;0\n", "(line 3, column rpm)"),
     ],
 )
 def test_malformed_points_csv_names_the_line_and_writes_nothing(capsys, tmp_path, text, match):

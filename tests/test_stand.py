@@ -261,3 +261,12 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
     resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
     with pytest.raises(DataError, match="line 6.*is not a number"):
         read_loads(resaved)
+    # a point beside decimal commas is a thousands separator (7.000 meaning 7000): refused
+    cells[0] = "7.000"
+    lines[5] = ";".join(cells)
+    resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
+    with pytest.raises(DataError, match=r"decimal commas \(line 2, .*points \(line 6"):
+        read_loads(resaved)
+    # old Mac line ends (CR only): the separator is still read from the first line
+    resaved.write_text("\r".join(text.replace(",", ";").replace(".", ",").splitlines()) + "\r", encoding="utf-8-sig")
+    np.testing.assert_array_equal(read_loads(resaved).measured["thrust"], a.measured["thrust"])

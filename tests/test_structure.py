@@ -171,7 +171,8 @@ def test_no_function_takes_20_arguments():
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 a = node.args
-                n = len(a.posonlyargs) + len(a.args) + len(a.kwonlyargs) + (a.vararg is not None) + (a.kwarg is not None)
+                n = (len(a.posonlyargs) + len(a.args) + len(a.kwonlyargs) + (a.vararg is not None)
+                     + (a.kwarg is not None))
                 worst.append((n, f"{name}.{node.name}"))
     worst.sort(reverse=True)
     assert len(worst) > 500  # every module was read

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -77,7 +78,7 @@ def _points_reader(path: Path, chunksize: int):
     if b"\n" not in head and len(head) > MAX_HEADER_BYTES:
         raise InputError(f"{where}: the header line is longer than {MAX_HEADER_BYTES} bytes")
     try:
-        first = head.split(b"\n", 1)[0].decode("utf-8-sig").rstrip("\r")
+        first = re.split(rb"\r\n|\r|\n", head, maxsplit=1)[0].decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise InputError(f"{where}, line 1: byte 0x{exc.object[exc.start]:02x} is not UTF-8; save the file as "
                          "UTF-8 CSV") from None
@@ -103,7 +104,7 @@ def _points_reader(path: Path, chunksize: int):
     except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
             ValueError) as exc:
         raise _parse_error(path, exc) from None
-    return reader, names
+    return reader, names, sep
 
 
 def _parse_error(path: Path, exc: Exception) -> InputError:
@@ -129,13 +130,14 @@ def _chunks(path: Path, chunksize: int):
     import numpy as np
     import pandas as pd
 
-    reader, names = _points_reader(path, chunksize)
+    reader, names, sep = _points_reader(path, chunksize)
     lower = [n.lower() for n in names]
     cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in lower}
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX, COLLECTIVE_DEG_MAX)}
     line = 2
     rows = 0
+    marks = [None, None]  # a ';' file: where a decimal comma and a point were first seen, (line, column)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", pd.errors.ParserWarning)
@@ -149,7 +151,10 @@ def _chunks(path: Path, chunksize: int):
                     continue
                 values = {}
                 for c, name in cols.items():
-                    v = pd.to_numeric(df[name].str.strip(), errors="coerce").to_numpy(float)
+                    text = df[name].str.strip()
+                    if sep == ";":
+                        text = _decimal_commas(path, c, text, lines, marks)
+                    v = pd.to_numeric(text, errors="coerce").to_numpy(float)
                     lo, hi = limits[c]
                     bad = ~((v >= lo) & (v <= hi))
                     if bad.any():
@@ -165,6 +170,26 @@ def _chunks(path: Path, chunksize: int):
         raise _parse_error(path, exc) from None
     if rows == 0:
         raise InputError(f"--points: {path} has no data rows")
+
+
+def _decimal_commas(path: Path, column: str, text, lines, marks: list):
+    """A ';'-separated points file's cells with decimal commas as points (identify/csvfile.py's
+    rule: a file with decimal commas and points is refused, a point beside decimal commas being
+    a thousands separator). ``marks``: where a decimal comma and a point were first seen so far,
+    (line, column)."""
+    import numpy as np
+
+    comma = (text.str.count(",") == 1) & ~text.str.contains(".", regex=False)
+    point = text.str.contains(".", regex=False) & ~text.str.contains(",", regex=False)
+    for k, m in ((0, comma.to_numpy()), (1, point.to_numpy())):
+        if m.any() and not marks[k]:
+            marks[k] = (int(lines[int(np.argmax(m))]), column)
+    if marks[0] and marks[1]:
+        (lc, cc), (lp, cp) = marks
+        raise InputError(f"--points: {path}: decimal commas (line {lc}, column {cc}) and points (line {lp}, column "
+                         f"{cp}) in one file; beside decimal commas a point is a thousands separator: save the "
+                         "numbers without one")
+    return text.where(~comma, text.str.replace(",", ".", regex=False))
 
 
 def _flag_strings(r):

@@ -8,9 +8,10 @@ escapes for any file content, and no reader modifies its input.
 CSV files (:func:`read_level_flight`, :func:`read_loads`): a regular file of at most
 200 MiB and 10,000,000 lines (never a directory, a device or a pipe), UTF-8 with or
 without a byte-order mark
-(as Excel writes it), comma-separated (or semicolon-separated with decimal commas, as
-spreadsheets in such locales save it: ``0,057``; the separator is read from the header
-line), a header line then one row per point; line ends
+(as Excel writes it), comma-separated, or semicolon-separated (the separator is read from
+the header line) with decimal points or, as spreadsheets in decimal-comma locales save it,
+decimal commas (``0,057``; a file with both is refused: beside decimal commas a point is a
+thousands separator), a header line then one row per point; line ends
 LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in RFC 4180
 (an unterminated quote is an error). Column names are stripped of spaces, at most 255
 characters, each at most once (a duplicated column is an error, never "the first wins");
@@ -104,7 +105,7 @@ class _Csv:
             raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
         self._raw = raw
         # ',' or ';' (spreadsheets in locales with a decimal comma), from the header line
-        head = raw.lstrip(b"\xef\xbb\xbf\r\n \t").split(b"\n", 1)[0]
+        head = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n \t"), maxsplit=1)[0]
         self.sep = ";" if head.count(b";") > head.count(b",") else ","
         self.header_line = 0
         self.columns: list[str] = []
@@ -147,7 +148,8 @@ class _Csv:
             elif "unexpected end of data" in msg:
                 msg = "unterminated quote: a quoted field is never closed"
             elif "expected after" in msg:
-                msg = "a closing quote must be followed by a comma or the end of the line"
+                mark = "semicolon" if getattr(self, "sep", ",") == ";" else "comma"
+                msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
     def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=()) -> tuple[dict, dict, np.ndarray]:
@@ -158,6 +160,8 @@ class _Csv:
         nums = {c: array.array("d") for c in numeric}
         texts = {c: [] for c in text if c in self.index}
         lines = array.array("q")
+        # a ';'-separated file: where a decimal comma and a point were first seen, (line, column)
+        marks = [None, None]
         rows = self._rows()
         next(rows)  # the header
         for line, cells in rows:
@@ -170,10 +174,11 @@ class _Csv:
                     continue
                 if not cell:
                     raise self.error(f"column {_short(c)} is empty (missing value)", line)
-                if self.sep == ";" and cell.count(",") == 1 and "." not in cell:
-                    cell = cell.replace(",", ".")  # a decimal comma (a ';'-separated file)
+                number = cell
+                if self.sep == ";":
+                    number = self._decimal_comma(c, cell, line, marks)
                 try:
-                    x = parse_number(cell)
+                    x = parse_number(number)
                 except ValueError:
                     raise self.error(f"column {_short(c)}: {_short(cell)} is not a number", line) from None
                 if not math.isfinite(x):
@@ -185,6 +190,24 @@ class _Csv:
             lines.append(line)
         return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
                 np.frombuffer(lines, dtype=np.int64).copy())
+
+    def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
+        """A ';'-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).
+
+        ``marks`` holds where a decimal comma and a point were first seen, (line, column): a file
+        with both is refused, since beside decimal commas a point is a thousands separator
+        (``7.000`` meaning 7000), which no reading can tell from a decimal point."""
+        if cell.count(",") == 1 and "." not in cell:
+            marks[0] = marks[0] or (line, column)
+            cell = cell.replace(",", ".")
+        elif "." in cell and "," not in cell:
+            marks[1] = marks[1] or (line, column)
+        if marks[0] and marks[1]:
+            (lc, cc), (lp, cp) = marks
+            raise self.error(f"decimal commas (line {lc}, column {_short(cc)}) and points (line {lp}, column "
+                             f"{_short(cp)}) in one file; beside decimal commas a point is a thousands separator: "
+                             "save the numbers without one", line)
+        return cell
 
     def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict) -> None:
         """Refuse the first value outside its column's range, naming the line and the range."""
