@@ -1,0 +1,112 @@
+"""How few residual evaluations per annulus a root solve could take with the same roots: a bound.
+
+The kernel (core/_annulus.py) marches from v = 0 in steps of v_m / 3 to the first sign change
+of F (the root-selection rule, docs/solver.md), then refines; 8.05 evaluations per annulus on
+the benchmark envelope, where issue 20 asks for 5. This measures what is left if a perfect
+certificate could say that F is monotone on [0, b], so that the march could be skipped:
+
+1. F(0), F(v_m) (v_m = 3 h, the march's scale), doubling from v_m until F changes sign at b;
+   then Chandrupatla's method (SciPy's find_root) on [0, b] with the kernel's tolerances
+   (1e-7 v_m, 1e-9 |F(0)|); allowed where a 400-sample scan finds F monotone on [0, b];
+2. the root of the annulus inward as the guess, bracketed by +-5% (two evaluations), where
+   that brackets the root and F is monotone as above.
+
+Both are compared with the rule's root (core/_reference.py). The multiple-roots flag's scan
+(one evaluation beyond the root) comes on top of either. Benchmark envelope as
+benchmarks/bench_solver.py (apce_8x6 calibrated set, rpm 3000-12000, V 0-25 m/s, incidence
+0-90 deg; 150 points here), 48 x 16 nodes.
+
+    .venv/bin/python tools/evaluation_bound.py     # about 5 s on 2 cores
+
+Measured 2026-11-24 (docs/solver.md): F monotone on 97.7% of the 7,200 annuli, the same root
+everywhere; scheme 1 takes 6.65 evaluations where allowed (4.38 of them refining the wide
+bracket), 7.66 overall with the scan, counting the kernel's mean of 8.05 where F is not
+monotone; scheme 2 brackets 69.7% of the annuli, 6.18 there, 7.45 overall.
+"""
+import numpy as np, propmap as pm
+from scipy.optimize.elementwise import find_root
+from propmap.core.nodes import _nodes, _cambered_args
+from propmap.core import _annulus as K
+from propmap.core._physics import (cambered_annulus, element, loss_factor_numpy, momentum_scale,
+                                   momentum_thrust)
+from propmap.core.airfoil import _model_constants
+from propmap.core._reference import solve_reference
+
+prop = pm.load_propeller("apce_8x6"); p = pm.default_params("apce_8x6"); air = pm.Air()
+rng = np.random.default_rng(7); n = 150
+om = rng.uniform(3000, 12000, n) * np.pi / 30; V = rng.uniform(0, 25, n); inc = np.radians(rng.uniform(0, 90, n))
+Vs, Vc = V * np.sin(inc), V * np.cos(inc)
+nd = _nodes(prop, 48, 16, air, p)
+model, pk = _model_constants(p)
+nr = nd.y.size; naz = nd.sinpsi.size // 2
+y = np.broadcast_to(nd.y[None, :], (n, nr)).ravel()
+Vs1 = np.repeat(Vs, nr); Vc1 = np.repeat(Vc, nr); om1 = np.repeat(om, nr)
+UT = om1[:, None] * y[:, None] + Vs1[:, None] * nd.sinpsi[None, :naz]
+cfac = np.tile(nd.cfac, n); mfac = np.tile(nd.mfac, n); ct = np.tile(nd.ct, n); ch = np.tile(nd.ch, n)
+cam = _cambered_args(p, air)
+U2 = (om1 * y) ** 2 + 0.5 * Vs1**2 + Vc1**2
+s0, s1, s2, s3 = cambered_annulus(U2, np.tile(nd.sc, n), np.tile(nd.cy2, n), cam[4], cam[0], cam[1], cam[2],
+                                  cam[3] != 0.0, cam[5], cam[6], cam[7])
+th, sth, cth = np.tile(nd.theta, n), np.tile(nd.sin_th, n), np.tile(nd.cos_th, n)
+wy = om1 * y
+COUNT = np.zeros(n * nr)
+
+def F(v, idx):
+    idx = idx.astype(int)
+    np.add.at(COUNT, idx.ravel(), 1)
+    geo = (th[idx][..., None], sth[idx][..., None], cth[idx][..., None], s0[idx][..., None], s1[idx][..., None],
+           s2[idx][..., None], s3[idx][..., None])
+    qT, _ = element(UT[idx], (Vc1[idx] + v)[..., None], *geo, model, pk)
+    mom = momentum_thrust(v, mfac[idx], Vs1[idx], Vc1[idx])
+    mom = mom * loss_factor_numpy(Vc1[idx] + v, wy[idx], ct[idx], ch[idx])
+    return cfac[idx] * qT.mean(axis=-1) - mom
+
+allidx = np.arange(n * nr).astype(float)
+with np.errstate(all="ignore"):
+    F0 = F(np.zeros(n * nr), allidx)
+    s = np.where(F0 >= 0, 1.0, -1.0)
+    h = momentum_scale(F0, mfac, Vs1, Vc1)
+    h = momentum_scale(F0, mfac * loss_factor_numpy(Vc1 + s * h, wy, ct, ch), Vs1, Vc1) / K.MARCH_STEPS
+    vm = 3 * h
+    b = s * vm; fb = F(b, allidx)
+    for _ in range(40):
+        same = fb * s > 0
+        if not same.any(): break
+        b = np.where(same, 2 * b, b); fb2 = F(b[same], allidx[same]); fb[same] = fb2
+    lo, hi = np.minimum(0, b), np.maximum(0, b)
+    def G(u, idx):
+        i = idx.astype(int)
+        return F(u * vm[i], idx) / np.abs(F0[i])
+    tol = dict(xatol=K.XTOL, fatol=K.FTOL, xrtol=0, frtol=0)
+    res = find_root(G, (lo / vm, hi / vm), args=(allidx,), tolerances=tol)
+    res.x = res.x * vm
+    n_ideal = 2 + np.round(np.log2(np.abs(b / vm))) + (res.nfev - 2)   # F0, F(vm), doublings, refinement
+    # an ideal certificate: F monotone on [0, b] (400 samples)
+    t = np.linspace(0, 1, 401)[1:]
+    Fs = np.stack([F(b * tk, allidx) for tk in t])
+    mono = np.all(np.diff(np.vstack([F0[None], Fs]), axis=0) * s[None] <= 0, axis=0)
+T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, p)
+vref = vi.ravel()
+same_root = np.abs(res.x - vref) <= 1e-5 * vm + 1e-9
+print(f"annuli {n*nr}; F monotone on [0, bracket end] {mono.mean():.3f}; same root as the rule "
+      f"{same_root.mean():.4f}; same root where monotone {same_root[mono].mean():.4f}")
+print(f"scheme 1, evaluations per annulus (incl. F0): mean {n_ideal.mean():.2f}, where monotone "
+      f"{n_ideal[mono].mean():.2f}; refinement alone {np.mean(res.nfev - 2):.2f}; +1 for the multiple-roots scan")
+print(f"with the kernel's mean 8.05 where not monotone, and the scan: {np.where(mono, n_ideal + 1, 8.05).mean():.2f}")
+
+# scheme 2: the guess is the annulus inward's root (same point), bracket [0.95 g, 1.05 g]
+with np.errstate(all="ignore"):
+    vr = vref.reshape(n, nr)
+    g = np.empty_like(vr); g[:, 0] = vm.reshape(n, nr)[:, 0]; g[:, 1:] = vr[:, :-1]
+    g = g.ravel()
+    a1, b1 = 0.95 * g, 1.05 * g
+    fa1, fb1 = F(a1, allidx), F(b1, allidx)
+    ok = (fa1 * fb1 < 0) & mono
+    lo1, hi1 = np.minimum(a1, b1), np.maximum(a1, b1)
+    r2 = find_root(G, (lo1[ok] / vm[ok], hi1[ok] / vm[ok]), args=(allidx[ok],), tolerances=tol)
+    n_nb = 3 + (r2.nfev - 2)
+    same2 = np.mean(np.abs(r2.x * vm[ok] - vref[ok]) <= 1e-5 * vm[ok])
+    print(f"scheme 2 (the neighbour's root +-5%): bracketed on {ok.mean():.3f} of annuli; evaluations there "
+          f"(F0 + 2 + refinement) {n_nb.mean():.2f}, refinement {np.mean(r2.nfev - 2):.2f}; same root {same2:.4f}")
+    overall = (np.sum(n_nb + 1) + 8.05 * np.sum(~ok)) / ok.size
+    print(f"with the kernel's mean 8.05 elsewhere, and the scan: {overall:.2f}")
