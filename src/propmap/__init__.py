@@ -22,12 +22,12 @@ _EXPORTS = {
     "Discretization": "core.solver", "DEFAULT_DISCRETIZATION": "core.solver", "RotorLoads": "core.solver",
     "SolverError": "core.solver", "rotor_loads": "core.solver", "RotorWrench": "core.vector",
     "rotor_wrench": "core.vector", "catalogue": "io.catalogue", "load_propeller": "io.catalogue",
-    "read_geometry": "io.geometry_files", "read_params": "io.params_file", "resolve_params": "io.params_file",
+    "read_geometry": "io.geometry_files", "read_params": "io.params_file", "resolve_params": "io.param_sets",
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
     "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
     "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle", "VehicleMap": "vehicle",
     "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim",
-    "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.params_file",
+    "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.param_sets",
     "rotor_like": "core.geometry",
 }
 

@@ -151,7 +151,7 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     InputError
         Unknown set, missing or malformed file; the message starts with ``option``.
     """
-    from ..io.params_file import resolve_params
+    from ..io.param_sets import resolve_params
 
     if isinstance(spec, str) and not spec.strip():
         raise InputError(f"{option}: the value is empty; leave the option out for the default")
@@ -178,7 +178,7 @@ def check_section_match(propeller, label: str) -> None:
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets."""
     from ..core.geometry import rotor_like
-    from ..io.params_file import section_presets
+    from ..io.param_sets import section_presets
 
     why = rotor_like(propeller)
     if why and label == "generic":

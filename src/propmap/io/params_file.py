@@ -1,4 +1,4 @@
-"""Section-parameter files (TOML) and named parameter sets.
+"""Section-parameter files (TOML); the named sets that resolve to them are io/param_sets.py's.
 
 Two section models (airfoil.py), chosen by ``section_model``. SI units except angles,
 which carry ``_deg`` in the key.
@@ -88,15 +88,15 @@ from typing import NamedTuple
 
 import tomli_w
 
-from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, PRESETS, RECORD_META, Air, AirfoilParams,
+from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_META, Air, AirfoilParams,
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
 from .inputs import show_path
 from .toml_file import load_toml
 
-__all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "resolve_params",
-           "params_to_dict", "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage",
-           "set_coverage", "named_sets", "section_preset", "section_presets", "SECTION_MODELS"]
+__all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "params_to_dict",
+           "params_from_dict", "body_from_dict", "coverage_from_dict", "read_coverage", "set_coverage",
+           "SECTION_MODELS"]
 
 SECTION_MODELS = ("gill2017", "cambered")
 REQUIRED = {"gill2017": ("cl1", "cl2", "cd", "alpha0_deg"), "cambered": ()}
@@ -514,16 +514,6 @@ def read_body(path) -> BodyTable | None:
         raise ParamsFileError(str(exc)) from None
 
 
-def named_sets() -> tuple[str, ...]:
-    """Names :func:`resolve_params` accepts besides files (for messages and help).
-
-    Returns
-    -------
-    tuple of str
-    """
-    return (*PRESETS, "generic", "calibrated:<catalogue name>", *(SECTION_PREFIX + k for k in _section_tables()))
-
-
 _SECTIONS: dict | None = None
 
 
@@ -536,80 +526,3 @@ def _section_tables() -> dict:
 
         _SECTIONS = tomllib.loads(files("propmap").joinpath("data/sections/presets.toml").read_text("utf-8"))
     return _SECTIONS
-
-
-def section_presets() -> dict[str, str]:
-    """The named section presets and their sources.
-
-    Returns
-    -------
-    dict
-        name -> source (the published data and how the parameters were derived).
-    """
-    return {k: v["source"] for k, v in _section_tables().items()}
-
-
-def section_preset(name: str) -> CamberedParams:
-    """A named section's cambered-polar parameters (symmetric NACA sections).
-
-    Fitted by tools/fit_section_presets.py to the tables of Sheldahl & Klimas, "Aerodynamic
-    Characteristics of Seven Symmetrical Airfoil Sections Through 180-Degree Angle of
-    Attack", Sandia SAND80-2114 (1981), at chord Reynolds numbers 1.6e5-1e6 (NACA 0015,
-    0018) or 3.6e5 (NACA 0012, whose Reynolds exponents are the NACA 0015 fit's), reference
-    3.6e5; zero-lift angle 0, tip loss on, empirical descent inflow. The fit's errors are in
-    the preset's ``comment`` (docs/models.md).
-
-    Parameters
-    ----------
-    name : str
-        ``naca0012``, ``naca0015`` or ``naca0018`` (:func:`section_presets` lists them).
-
-    Returns
-    -------
-    CamberedParams
-
-    Raises
-    ------
-    KeyError
-        An unknown name; the message lists the valid ones.
-    """
-    tables = _section_tables()
-    if name not in tables:
-        raise KeyError(f"unknown section preset {name!r}; valid: {', '.join(tables)}")
-    return params_from_dict({k: v for k, v in tables[name].items()}, where=f"section preset {name}",
-                            label=SECTION_PREFIX + name)
-
-
-def resolve_params(spec: str) -> SectionParams:
-    """A named parameter set or a parameter file path, as a record carrying its air and label.
-
-    Named sets: the paper's Table I (``gill2017-soft``, ``gill2017-stiff``,
-    ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set,
-    ``calibrated:<name>``, a catalogue propeller's own calibrated set, and
-    ``section:<name>``, a symmetric section preset (:func:`section_preset`).
-
-    Raises
-    ------
-    KeyError
-        Neither a named set nor an existing file.
-    ParamsFileError
-        Malformed file.
-    """
-    from ..core.airfoil import preset
-    from .calibration import GENERIC, calibrated, generic_params
-
-    if spec in PRESETS:
-        return preset(spec)
-    if spec == GENERIC:
-        return generic_params()
-    if spec.startswith(SECTION_PREFIX):
-        return section_preset(spec[len(SECTION_PREFIX):])
-    if spec.startswith("calibrated:"):
-        c = calibrated(spec.split(":", 1)[1])
-        if c is None:
-            raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set "
-                           "('propmap props' lists the calibrated propellers)")
-        return c.params
-    if Path(spec).is_file():
-        return read_params(spec)
-    raise KeyError(f"unknown parameters {spec!r}: not a named set ({', '.join(named_sets())}) nor an existing file")

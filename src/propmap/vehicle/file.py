@@ -172,7 +172,8 @@ def _blades(value, where: str) -> int:
 
 def _rotor_params(spec, folder: Path, where: str):
     """A rotor's own parameter set: a file relative to ``folder`` (or absolute), else a named set."""
-    from ..io.params_file import ParamsFileError, read_params, resolve_params
+    from ..io.param_sets import resolve_params
+    from ..io.params_file import ParamsFileError, read_params
 
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: params must be a parameter file or a named set (a string), "

@@ -1,0 +1,104 @@
+"""Named parameter sets: what ``--params NAME`` and :func:`resolve_params` accept.
+
+The paper's Table I sets (``gill2017-soft``, ``gill2017-stiff``, ``gill2017-apc``), the
+catalogue's cambered ``generic`` set and each propeller's ``calibrated:<name>`` set
+(io/calibration.py, fitted to the bundled UIUC measurements), the symmetric section presets
+``section:<name>`` (data/sections/presets.toml; Sheldahl & Klimas, Sandia SAND80-2114, 1981),
+or a parameter file's path (io/params_file.py reads and writes the files).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..core.airfoil import PRESETS, CamberedParams, SectionParams
+from .params_file import SECTION_PREFIX, _section_tables, params_from_dict, read_params
+
+__all__ = ["named_sets", "resolve_params", "section_preset", "section_presets"]
+
+
+def named_sets() -> tuple[str, ...]:
+    """Names :func:`resolve_params` accepts besides files (for messages and help).
+
+    Returns
+    -------
+    tuple of str
+    """
+    return (*PRESETS, "generic", "calibrated:<catalogue name>", *(SECTION_PREFIX + k for k in _section_tables()))
+
+
+def section_presets() -> dict[str, str]:
+    """The named section presets and their sources.
+
+    Returns
+    -------
+    dict
+        name -> source (the published data and how the parameters were derived).
+    """
+    return {k: v["source"] for k, v in _section_tables().items()}
+
+
+def section_preset(name: str) -> CamberedParams:
+    """A named section's cambered-polar parameters (symmetric NACA sections).
+
+    Fitted by tools/fit_section_presets.py to the tables of Sheldahl & Klimas, "Aerodynamic
+    Characteristics of Seven Symmetrical Airfoil Sections Through 180-Degree Angle of
+    Attack", Sandia SAND80-2114 (1981), at chord Reynolds numbers 1.6e5-1e6 (NACA 0015,
+    0018) or 3.6e5 (NACA 0012, whose Reynolds exponents are the NACA 0015 fit's), reference
+    3.6e5; zero-lift angle 0, tip loss on, empirical descent inflow. The fit's errors are in
+    the preset's ``comment`` (docs/models.md).
+
+    Parameters
+    ----------
+    name : str
+        ``naca0012``, ``naca0015`` or ``naca0018`` (:func:`section_presets` lists them).
+
+    Returns
+    -------
+    CamberedParams
+
+    Raises
+    ------
+    KeyError
+        An unknown name; the message lists the valid ones.
+    """
+    tables = _section_tables()
+    if name not in tables:
+        raise KeyError(f"unknown section preset {name!r}; valid: {', '.join(tables)}")
+    return params_from_dict({k: v for k, v in tables[name].items()}, where=f"section preset {name}",
+                            label=SECTION_PREFIX + name)
+
+
+def resolve_params(spec: str) -> SectionParams:
+    """A named parameter set or a parameter file path, as a record carrying its air and label.
+
+    Named sets: the paper's Table I (``gill2017-soft``, ``gill2017-stiff``,
+    ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set,
+    ``calibrated:<name>``, a catalogue propeller's own calibrated set, and
+    ``section:<name>``, a symmetric section preset (:func:`section_preset`).
+
+    Raises
+    ------
+    KeyError
+        Neither a named set nor an existing file.
+    ParamsFileError
+        Malformed file.
+    """
+    from ..core.airfoil import preset
+    from .calibration import GENERIC, calibrated, generic_params
+
+    if spec in PRESETS:
+        return preset(spec)
+    if spec == GENERIC:
+        return generic_params()
+    if spec.startswith(SECTION_PREFIX):
+        return section_preset(spec[len(SECTION_PREFIX):])
+    if spec.startswith("calibrated:"):
+        c = calibrated(spec.split(":", 1)[1])
+        if c is None:
+            raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set "
+                           "('propmap props' lists the calibrated propellers)")
+        return c.params
+    if Path(spec).is_file():
+        return read_params(spec)
+    raise KeyError(f"unknown parameters {spec!r}: not a named set ({', '.join(named_sets())}) nor an existing file")
