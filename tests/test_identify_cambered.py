@@ -147,11 +147,11 @@ def test_default_level_flight_fit_recovers_parameters_from_data_generated_at_M_5
 
 
 def test_gauss_newton_polish_converges_on_a_smooth_piece_and_stops_at_a_jump():
-    """The continuation's Gauss-Newton tries (identify.engine._gauss_newton): on a smooth
+    """The continuation's Gauss-Newton tries (identify.continuation._gauss_newton): on a smooth
     residual they converge to the optimum; where the full step would cross a jump of the
     residual that raises the cost, the try ends at its start, not converged (Nelder-Mead
     then moves on)."""
-    from propmap.identify.engine import _gauss_newton
+    from propmap.identify.continuation import _gauss_newton
 
     lb, ub = np.full(2, -10.0), np.full(2, 10.0)
     A = np.array([[2.0, 1.0], [0.5, 3.0], [1.0, -1.0]])

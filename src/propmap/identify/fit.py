@@ -13,8 +13,9 @@ base set (normally the catalogue-fitted ``generic`` set).
 
 This module holds these two data kinds' residuals; they, and the flight logs'
 (identify/flight.py), share one engine: identify/options.py (what is fitted, bounds,
-:class:`FitOptions`), identify/engine.py (prior, solve, continuation, directions, report)
-and identify/result.py (:class:`FitResult`, identifiability).
+:class:`FitOptions`), identify/engine.py (prior, solve, directions, report),
+identify/continuation.py (the continuation in M) and identify/result.py
+(:class:`FitResult`, identifiability).
 """
 
 from __future__ import annotations
@@ -30,7 +31,8 @@ from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, dif
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from ..vehicle import Vehicle
-from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _fit_with_continuation,
+from .continuation import _fit_with_continuation
+from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, MIN_RATES_FOR_RE, STATIC_RPM_SPAN,
                       X0_PAPER, FitOptions, _default_names, _is_angle, param_names)

@@ -10,7 +10,7 @@ is then an equation like eq 16, in three axes: the residual is the predicted aer
 force (:func:`propmap.vehicle.vehicle_wrench`) minus m a_s, and eq 18's least squares runs
 over all samples and axes. The fitting engine, its bounds, population prior,
 identifiability report and multistart are those of the loads and level-flight fits
-(identify/engine.py, options.py, result.py; docs/identification.md).
+(identify/engine.py, continuation.py, options.py, result.py; docs/identification.md).
 
 What is fitted: any section parameter, the rotor options (``collective``,
 ``flap_compliance``), the airframe drag (``drag_area_x``, ``drag_area_y``,
@@ -42,7 +42,8 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, rotor_loads
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
-from .engine import _attach_jacobian, _finish, _fit_with_continuation, _params_from, _with_prior
+from .continuation import _fit_with_continuation
+from .engine import _attach_jacobian, _finish, _params_from, _with_prior
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FitOptions, _check_names
