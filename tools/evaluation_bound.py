@@ -1,27 +1,30 @@
 """How few residual evaluations per annulus a root solve could take with the same roots: a bound.
 
 The kernel (core/_annulus.py) marches from v = 0 in steps of v_m / 3 to the first sign change
-of F (the root-selection rule, docs/solver.md), then refines; 8.05 evaluations per annulus on
-the benchmark envelope, where issue 20 asks for 5. This measures what is left if a perfect
-certificate could say that F is monotone on [0, b], so that the march could be skipped:
+of F (the root-selection rule, docs/solver.md), then refines; issue 20 asks for 5 evaluations
+per annulus. This measures what is left if a certificate could say that F is monotone on
+[0, b], so that the march could be skipped, taking as such a certificate a 400-sample scan of
+F on [0, b] (an ideal one: no certificate computable at the cost of an evaluation or two is
+known to be as sharp):
 
 1. F(0), F(v_m) (v_m = 3 h, the march's scale), doubling from v_m until F changes sign at b;
    then Chandrupatla's method (SciPy's find_root) on [0, b] with the kernel's tolerances
-   (1e-7 v_m, 1e-9 |F(0)|); allowed where a 400-sample scan finds F monotone on [0, b];
-2. the root of the annulus inward as the guess, bracketed by +-5% (two evaluations), where
-   that brackets the root and F is monotone as above.
+   (1e-7 v_m, 1e-9 |F(0)|); where the scan finds F monotone on [0, b];
+2. the root of the annulus inward as the guess, bracketed by +-5% (two evaluations); where
+   that does not bracket the root, scheme 1 after those two evaluations.
 
-Both are compared with the rule's root (core/_reference.py). The multiple-roots flag's scan
-(one evaluation beyond the root) comes on top of either. Benchmark envelope as
-benchmarks/bench_solver.py (apce_8x6 calibrated set, rpm 3000-12000, V 0-25 m/s, incidence
-0-90 deg; 150 points here), 48 x 16 nodes.
+Both are compared with the rule's root (core/_reference.py); the multiple-roots flag's scan
+(one evaluation beyond the root) comes on top of either, and where F is not monotone the
+kernel's own mean on the same points stands in. 150 random points of apce_8x6 with its
+calibrated set, rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg (benchmarks/bench_solver.py's
+ranges), 48 x 16 nodes.
 
     .venv/bin/python tools/evaluation_bound.py     # about 5 s on 2 cores
 
-Measured 2026-11-24 (docs/solver.md): F monotone on 97.7% of the 7,200 annuli, the same root
-everywhere; scheme 1 takes 6.65 evaluations where allowed (4.38 of them refining the wide
-bracket), 7.66 overall with the scan, counting the kernel's mean of 8.05 where F is not
-monotone; scheme 2 brackets 69.7% of the annuli, 6.18 there, 7.45 overall.
+Measured 2026-11-24 (docs/solver.md): the kernel 7.88 evaluations per annulus on these
+points; F monotone on 97.7% of the 7,200 annuli, the same root everywhere; scheme 1 6.65
+where F is monotone (4.34 of them refining the wide bracket), 7.66 overall with the scan;
+scheme 2 brackets 72.0% of the roots (69.7% with F monotone), 6.18 there, 7.85 overall.
 """
 import numpy as np, propmap as pm
 from scipy.optimize.elementwise import find_root
@@ -88,11 +91,14 @@ with np.errstate(all="ignore"):
 T, D, Q, vi, conv = solve_reference(om, Vs, Vc, nd, p)
 vref = vi.ravel()
 same_root = np.abs(res.x - vref) <= 1e-5 * vm + 1e-9
-print(f"annuli {n*nr}; F monotone on [0, bracket end] {mono.mean():.3f}; same root as the rule "
-      f"{same_root.mean():.4f}; same root where monotone {same_root[mono].mean():.4f}")
-print(f"scheme 1, evaluations per annulus (incl. F0): mean {n_ideal.mean():.2f}, where monotone "
-      f"{n_ideal[mono].mean():.2f}; refinement alone {np.mean(res.nfev - 2):.2f}; +1 for the multiple-roots scan")
-print(f"with the kernel's mean 8.05 where not monotone, and the scan: {np.where(mono, n_ideal + 1, 8.05).mean():.2f}")
+kernel = float(np.sum(pm.rotor_loads(prop, p, om, V, inc).n_evaluations)) / (n * nr)
+print(f"annuli {n*nr}; the kernel on the same points: {kernel:.2f} evaluations per annulus")
+print(f"F monotone on [0, bracket end] by the scan: {mono.mean():.3f}; same root as the rule {same_root.mean():.4f}; "
+      f"same root where monotone {same_root[mono].mean():.4f}")
+print(f"scheme 1, evaluations per annulus (incl. F0) where monotone {n_ideal[mono].mean():.2f}, of which refinement "
+      f"{np.mean(res.nfev[mono] - 2):.2f}; +1 for the multiple-roots scan")
+tot1 = np.where(mono, n_ideal + 1, kernel)
+print(f"scheme 1 overall, with the scan and the kernel's mean where not monotone: {tot1.mean():.2f}")
 
 # scheme 2: the guess is the annulus inward's root (same point), bracket [0.95 g, 1.05 g]
 with np.errstate(all="ignore"):
@@ -106,7 +112,11 @@ with np.errstate(all="ignore"):
     r2 = find_root(G, (lo1[ok] / vm[ok], hi1[ok] / vm[ok]), args=(allidx[ok],), tolerances=tol)
     n_nb = 3 + (r2.nfev - 2)
     same2 = np.mean(np.abs(r2.x * vm[ok] - vref[ok]) <= 1e-5 * vm[ok])
-    print(f"scheme 2 (the neighbour's root +-5%): bracketed on {ok.mean():.3f} of annuli; evaluations there "
-          f"(F0 + 2 + refinement) {n_nb.mean():.2f}, refinement {np.mean(r2.nfev - 2):.2f}; same root {same2:.4f}")
-    overall = (np.sum(n_nb + 1) + 8.05 * np.sum(~ok)) / ok.size
-    print(f"with the kernel's mean 8.05 elsewhere, and the scan: {overall:.2f}")
+    print(f"scheme 2 (the neighbour's root +-5%): brackets {np.mean(fa1 * fb1 < 0):.3f} of the annuli, "
+          f"{ok.mean():.3f} both bracketed and monotone; evaluations there (F0 + 2 + refinement) {n_nb.mean():.2f}, "
+          f"refinement {np.mean(r2.nfev - 2):.2f}; same root {same2:.4f}")
+    # where the guess does not bracket: its two evaluations spent, then scheme 1; not monotone: the kernel
+    tot2 = np.where(mono, 2 + n_ideal + 1, kernel)
+    tot2[ok] = n_nb + 1
+    print(f"scheme 2 overall, with the scan, scheme 1 where the guess does not bracket and the kernel where F is "
+          f"not monotone: {tot2.mean():.2f}")

@@ -1,6 +1,7 @@
 """The one fitting engine that every data kind uses (loads, level flight, flight logs):
-bounds, the population prior, multistart least squares, the continuation in the stall-blend
-sharpness M, fits along the data's leading directions and the report (docs/identification.md).
+bounds, the population prior, multistart least squares, fits along the data's leading
+directions and the report (docs/identification.md); the continuation in the stall-blend
+sharpness M is identify/continuation.py's.
 
 A data kind brings its residual, a function of the parameter vector (with
 ``with_jacobian`` for the implicit Jacobian, :func:`_attach_jacobian`), and calls

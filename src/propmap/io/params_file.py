@@ -52,7 +52,7 @@ are the paper's rigid blades in an azimuth-independent inflow::
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
-``section = "naca0015"`` takes every key of that section preset (:func:`section_preset`;
+``section = "naca0015"`` takes every key of that section preset (:func:`propmap.io.param_sets.section_preset`;
 symmetric NACA sections fitted to Sheldahl & Klimas, Sandia SAND80-2114, 1981), and the
 file's other keys override it. ``--params section:naca0015`` names the preset alone.
 
