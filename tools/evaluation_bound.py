@@ -26,16 +26,20 @@ points; F monotone on 97.7% of the 7,200 annuli, the same root everywhere; schem
 where F is monotone (4.34 of them refining the wide bracket), 7.66 overall with the scan;
 scheme 2 brackets 72.0% of the roots (69.7% with F monotone), 6.18 there, 7.85 overall.
 """
-import numpy as np, propmap as pm
+import numpy as np
 from scipy.optimize.elementwise import find_root
-from propmap.core.nodes import _nodes, _cambered_args
+
+import propmap as pm
 from propmap.core import _annulus as K
+from propmap.core.nodes import _cambered_args, _nodes
 from propmap.core._physics import (cambered_annulus, element, loss_factor_numpy, momentum_scale,
                                    momentum_thrust)
 from propmap.core.airfoil import _model_constants
 from propmap.core._reference import solve_reference
 
-prop = pm.load_propeller("apce_8x6"); p = pm.default_params("apce_8x6"); air = pm.Air()
+prop = pm.load_propeller("apce_8x6")
+p = pm.default_params("apce_8x6")
+air = pm.Air()
 rng = np.random.default_rng(7); n = 150
 om = rng.uniform(3000, 12000, n) * np.pi / 30; V = rng.uniform(0, 25, n); inc = np.radians(rng.uniform(0, 90, n))
 Vs, Vc = V * np.sin(inc), V * np.cos(inc)
@@ -52,11 +56,9 @@ s0, s1, s2, s3 = cambered_annulus(U2, np.tile(nd.sc, n), np.tile(nd.cy2, n), cam
                                   cam[3] != 0.0, cam[5], cam[6], cam[7])
 th, sth, cth = np.tile(nd.theta, n), np.tile(nd.sin_th, n), np.tile(nd.cos_th, n)
 wy = om1 * y
-COUNT = np.zeros(n * nr)
 
 def F(v, idx):
     idx = idx.astype(int)
-    np.add.at(COUNT, idx.ravel(), 1)
     geo = (th[idx][..., None], sth[idx][..., None], cth[idx][..., None], s0[idx][..., None], s1[idx][..., None],
            s2[idx][..., None], s3[idx][..., None])
     qT, _ = element(UT[idx], (Vc1[idx] + v)[..., None], *geo, model, pk)
