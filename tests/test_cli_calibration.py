@@ -147,7 +147,7 @@ def test_validate_all_on_two_propellers(capsys, tmp_path):
         assert r["propeller"] not in members
     for r in rows:  # the cambered model, calibrated or not, beats the paper's Table I on these
         assert r["blind"]["rms_ct"] < r["paper_table_i"]["rms_ct"]
-    assert set(rep["cases"]) == {"apc10x7e", "dji9443", "beaver"}
+    assert set(rep["cases"]) == {"apc10x7e", "dji9443", "beaver", "gill2019"}
     for name in ("validation.json", "validation_per_propeller.csv", "cross_validation.png", "published_cases.png"):
         assert (tmp_path / "v" / name).stat().st_size > 100
 

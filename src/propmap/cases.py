@@ -8,7 +8,11 @@ digitization (FLOWUnsteady, MIT) are in data/CITATION.md:
   Gregory, J. Aircraft 2017), at 9200 rpm; geometry from the UIUC catalogue (apce_10x7).
 * ``dji9443``: DJI 9443 hover CT 0.072 at 5400 rpm (Zawodny & Boyd, AHS Forum 2016).
 * ``beaver``: TU Delft Beaver propeller, CT against the angle of incidence at J = 0.9,
-  V = 40 m/s (Sinnige et al., J. Aircraft 2019): the only incidence data bundled.
+  V = 40 m/s (Sinnige et al., J. Aircraft 2019): the only digitized incidence data.
+* ``gill2019``: four catalogue propellers (APC 8x6E, 8x8E, 10x7E, 10x4.7SF) in oblique flow,
+  as the published coefficients of a multinomial model fitted to the wind-tunnel data (Gill &
+  D'Andrea, Drones 2019, Appendix A; data/published): the slopes of the in-plane H-force,
+  and of thrust and torque with edgewise speed, against propmap's fitted the same way.
 """
 
 from __future__ import annotations
@@ -25,9 +29,10 @@ from .core.geometry import Propeller
 from .core.hover import HoverModel
 from .core.solver import rotor_loads
 
-__all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller"]
+__all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller", "gill2019_coefficients",
+           "multinomial_fit"]
 
-CASES = ("apc10x7e", "dji9443", "beaver")
+CASES = ("apc10x7e", "dji9443", "beaver", "gill2019")
 #: the Beaver polar's test conditions (Sinnige et al. 2019 as published with the data): rotation
 #: rate [rev/s] and air density [kg/m^3]
 BEAVER_N = 188.3
@@ -37,7 +42,18 @@ CITATIONS = {
     "apc10x7e": "McCrink & Gregory, J. Aircraft 54(1), 2017, Figs. 16, 20; " + DIGITIZED,
     "dji9443": "Zawodny & Boyd, AHS 72nd Forum, 2016 (hover CT 0.072 +- 0.0018 at 5400 rpm); geometry " + DIGITIZED,
     "beaver": "Sinnige et al., J. Aircraft 56(1), 2019, Fig. 10; " + DIGITIZED,
+    "gill2019": ("Gill & D'Andrea, Drones 3(4):77, 2019, Appendix A (multinomial model fitted to their oblique-flow "
+                 "wind-tunnel data)"),
 }
+GILL2019_FILE = "gill2019_oblique_coefficients.csv"
+#: the rotation rate at which propmap's coefficients are fitted [rpm] (the published ones
+#: are dimensionless; the H-force slope's ratio moves by 0.06-0.07 between 4000 and 8000 rpm,
+#: docs/validation.md)
+GILL2019_RPM = 6000.0
+#: the grid of that fit: total advance ratio sqrt(mu^2 + lambda_c^2) and incidence [deg]
+#: (the published data reach mu and lambda_c of about 0.24), plus the static point
+GILL2019_ADVANCE = (0.04, 0.08, 0.12, 0.16, 0.2, 0.24)
+GILL2019_INCIDENCE_DEG = (0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0)
 
 
 def _rows(name: str) -> list[list[float]]:
@@ -172,14 +188,105 @@ def _beaver_matched(prop: Propeller, p: SectionParams, air: Air, CT0m: float, ra
     return out
 
 
+def gill2019_coefficients() -> dict[str, dict[str, float]]:
+    """The published multinomial coefficients (data/published), by catalogue propeller name.
+
+    Returns
+    -------
+    dict
+        name -> ``CT_static``, ``k1`` ... ``k5``, ``CQ_static``, ``k6`` ... ``k8``
+        (Gill & D'Andrea 2019, Appendix A; normalised by (rho/2) pi R^2 (Omega R)^2, the
+        moments times R).
+    """
+    text = (resources.files("propmap") / "data" / "published" / GILL2019_FILE).read_text(encoding="utf-8")
+    rows = list(csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#")))
+    head = rows[0]
+    return {r[0]: {k: float(v) for k, v in zip(head[2:], r[2:])} for r in rows[1:]}
+
+
+def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air = Air()) -> dict[str, float]:
+    """propmap's loads fitted with Gill & D'Andrea's (2019, Sec. 5) multinomial model.
+
+    The model's loads on a grid of total advance ratio (GILL2019_ADVANCE) and incidence
+    (GILL2019_INCIDENCE_DEG, 0: axial climb, 90: edgewise) plus the static point, in their
+    normalisation ((rho/2) pi R^2 (Omega R)^2, moments times R; mu = V sin(incidence) /
+    (Omega R), lambda_c = V cos(incidence) / (Omega R)), fitted by least squares with
+    C_FT = CT_static + k1 lambda_c + k2 mu^2 + k3 lambda_c^2, C_FH = k4 mu + k5 lambda_c mu and
+    C_MQ = CQ_static + k6 lambda_c + k7 mu^2 + k8 lambda_c^2.
+
+    Parameters
+    ----------
+    prop : Propeller
+    p : AirfoilParams or CamberedParams
+    omega : float
+        Rotation rate [rad/s], > 0.
+
+    Returns
+    -------
+    dict
+        ``CT_static``, ``k1`` ... ``k5``, ``CQ_static``, ``k6`` ... ``k8``.
+
+    Raises
+    ------
+    SolverError
+        From the model.
+    """
+    adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
+    adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
+    R = prop.radius
+    r = rotor_loads(prop, p, omega, adv * omega * R, inc, air=air, radial=False)
+    q = 0.5 * air.rho * math.pi * R**2 * (omega * R) ** 2
+    mu, lam = adv * np.sin(inc), adv * np.cos(inc)
+    one = np.ones_like(mu)
+    thrust = np.linalg.lstsq(np.column_stack([one, lam, mu**2, lam**2]), r.thrust / q, rcond=None)[0]
+    h = np.linalg.lstsq(np.column_stack([mu, lam * mu]), r.drag / q, rcond=None)[0]
+    torque = np.linalg.lstsq(np.column_stack([one, lam, mu**2, lam**2]), r.torque / (q * R), rcond=None)[0]
+    names = ("CT_static", "k1", "k2", "k3", "k4", "k5", "CQ_static", "k6", "k7", "k8")
+    return dict(zip(names, map(float, (*thrust, *h, *torque))))
+
+
+#: the dimensionless slopes the gill2019 case compares: name -> (coefficient, its static value)
+GILL2019_SLOPES = {"H_slope": ("k4", "CT_static"), "thrust_mu2": ("k2", "CT_static"),
+                   "torque_mu2": ("k7", "CQ_static")}
+
+
+def _gill2019(param_sets: dict, air: Air) -> CaseResult:
+    published = gill2019_coefficients()
+    names = list(published)
+    slopes = {s: np.array([published[n][k] / published[n][k0] for n in names])
+              for s, (k, k0) in GILL2019_SLOPES.items()}
+    from .io.catalogue import load_propeller
+
+    omega = GILL2019_RPM * math.pi / 30
+    pred, metrics = {}, {}
+    for label, sets in param_sets.items():
+        fits = [multinomial_fit(load_propeller(n), sets(n) if callable(sets) else sets, omega, air=air) for n in names]
+        pred[label] = {s: np.array([f[k] / f[k0] for f in fits]) for s, (k, k0) in GILL2019_SLOPES.items()}
+        pred[label]["CT_static"] = np.array([f["CT_static"] for f in fits])
+        m = {}
+        for s in GILL2019_SLOPES:
+            ratio = pred[label][s] / slopes[s]
+            m.update({f"{s}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
+            m[f"{s}_ratio_min"], m[f"{s}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
+        metrics[label] = m
+    measured = {**slopes, "CT_static": np.array([published[n]["CT_static"] for n in names])}
+    return CaseResult("gill2019", "propeller", np.arange(len(names)), measured, pred, CITATIONS["gill2019"],
+                      f"{', '.join(names)}; slopes k4 / CT_static (H-force), k2 / CT_static and k7 / CQ_static "
+                      f"(thrust and torque against mu^2) of the published multinomial fits against propmap's loads "
+                      f"fitted the same way at {GILL2019_RPM:.0f} rpm, advance ratios to 0.24, incidence 0-90 deg",
+                      metrics)
+
+
 def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air()) -> CaseResult:
     """Predict a published case with each parameter set.
 
     Parameters
     ----------
-    case : {"apc10x7e", "dji9443", "beaver"}
+    case : {"apc10x7e", "dji9443", "beaver", "gill2019"}
     param_sets : dict
-        label -> parameters (e.g. the paper's Table I, the generic set).
+        label -> parameters (e.g. the paper's Table I, the generic set); for ``gill2019``
+        a value may also be a callable, catalogue name -> parameters (e.g.
+        ``propmap.default_params``: each propeller's calibrated set).
 
     Returns
     -------
@@ -192,7 +299,11 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         measured ratio (interpolated), the shaft ratios and H/T, and the same ratios with
         CT_w(0) matched to the measurement by a collective offset (``matched_*``,
         :func:`_beaver_matched`). ``air`` sets the viscosity and speed of sound (the density
-        is the test's).
+        is the test's). gill2019: per propeller and slope (``H_slope``, ``thrust_mu2``,
+        ``torque_mu2``, GILL2019_SLOPES) the ratio of propmap's dimensionless slope to the
+        published one (:func:`multinomial_fit`), ``<slope>_ratio_<name>``, and their
+        ``_min`` and ``_max``; ``measured`` and ``predicted`` hold the slopes per propeller
+        (``x`` indexes the propellers, in the file's order).
 
     Raises
     ------
@@ -269,4 +380,6 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
                           f"wind-axis CT (T cos a - H sin a), J = 0.896, V = 40 m/s, rho = {BEAVER_RHO} kg/m^3 "
                           f"({n * 60:.0f} rpm); hover model calibrated on the {next(iter(param_sets))} model at V = 0",
                           metrics)
+    if case == "gill2019":
+        return _gill2019(param_sets, air)
     raise ValueError(f"unknown case {case!r}; valid: {', '.join(CASES)}")

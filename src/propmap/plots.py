@@ -216,7 +216,7 @@ def _wrap(text: str, width: int = 60) -> str:
 def plot_cases(cases: dict, path) -> Path:
     """The digitized published cases (cases.run_case results): measured points, model lines."""
     plt = _pyplot()
-    fig, axes = plt.subplots(1, 4, figsize=(17, 4.2), constrained_layout=True)
+    fig, axes = plt.subplots(1, 5, figsize=(21, 4.2), constrained_layout=True)
     a = cases.get("apc10x7e")
     if a is not None:
         for ax, q in zip(axes[:2], ("CT", "CQ")):
@@ -245,6 +245,17 @@ def plot_cases(cases: dict, path) -> Path:
         axes[3].set_ylabel("CT")
         axes[3].set_title(_wrap(f"Beaver propeller, {b.notes.split(' (')[0]}. {b.citation}"), fontsize=7)
         axes[3].legend(fontsize=7)
+    g = cases.get("gill2019")
+    if g is not None:
+        names = g.notes.split(";")[0].split(", ")
+        width = 0.8 / (1 + len(g.predicted))
+        axes[4].bar(g.x - 0.4 + width / 2, g.measured["H_slope"], width, color="k", label="measured (fit)")
+        for k, (label, pred) in enumerate(g.predicted.items()):
+            axes[4].bar(g.x - 0.4 + (k + 1.5) * width, pred["H_slope"], width, label=label)
+        axes[4].set_xticks(g.x, names, fontsize=7, rotation=15)
+        axes[4].set_ylabel("dC_H/dmu / CT_static")
+        axes[4].set_title(_wrap(f"In-plane H-force slope in oblique flow. {g.citation}"), fontsize=7)
+        axes[4].legend(fontsize=7)
     return _save(fig, path)
 
 

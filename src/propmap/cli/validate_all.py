@@ -186,17 +186,26 @@ def _summaries(rows, keys) -> dict:
 
 
 def run_cases() -> dict:
-    """The digitized published cases with the paper's Table I, a generic set and the hover model.
+    """The published cases with the paper's Table I, a generic set and the hover model.
 
     The generic set never saw the case's propeller: for the APC 10x7E, whose geometry is
-    the catalogue's apce_10x7, the generic set without the APC electric family.
+    the catalogue's apce_10x7, the generic set without the APC electric family. The
+    gill2019 case's propellers are in the catalogue: each is predicted with its own
+    calibrated set (fitted to its UIUC axial data) and with the generic set without its family.
     """
     from ..cases import CASES, run_case
     from ..core.airfoil import preset
     from ..io.calibration import generic_without
 
+    from ..io.calibration import default_params
+
     out = {}
     for c in CASES:
+        if c == "gill2019":  # catalogue propellers: each one's own set and the generic set without its family
+            out[c] = run_case(c, {"calibrated (cambered)": default_params,
+                                  "generic without family (cambered)": lambda n: generic_without(n)[0],
+                                  "gill2017-apc (paper)": preset("gill2017-apc")})
+            continue
         generic, label = generic_without("apce_10x7" if c == "apc10x7e" else c)
         out[c] = run_case(c, {f"{label} (cambered)": generic, "gill2017-apc (paper)": preset("gill2017-apc")})
     return out
