@@ -353,7 +353,8 @@ def test_two_outputs_of_one_command_may_not_be_the_same_file(capsys, tmp_path):
 @pytest.mark.parametrize(
     "text, match",
     [
-        ("rpm,airspeed,incidence_deg\n5000,5,0,9\n", "more fields than the header"),
+        ("rpm,airspeed,incidence_deg\n5000,5,0,9\n", "line 2 has more fields than the header"),
+        ("rpm;airspeed;incidence_deg\n5000;5;0;1\n6000;5;0\n", "line 2 has more fields than the header"),
         ("rpm,airspeed,incidence_deg\n5000,5,0\n6000,5,0,9\n", "--points"),
         ("rpm,airspeed,incidence_deg\n\n\n5000,5,0\n\n6000,5,-1\n", "line 6: incidence_deg"),
         ("rpm,airspeed," + "x" * 256 + ",incidence_deg\n5000,5,1,0\n", "a column name of 256 characters"),

@@ -124,6 +124,10 @@ def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shar
     assert held["model"]["F"] < held["k_omega2"]["F"]
     for suffix in (".report.json", ".report.txt", ".png", ".speed.png"):
         assert (tmp_path / ("p" + suffix)).is_file()
+    assert "p.png, p.speed.png" in cap.err.splitlines()[-1]  # every file written is named
+    # the held-out rows name their log and model whole (the labels were cut at 43 characters)
+    text = (tmp_path / "p.report.txt").read_text()
+    assert f"held out {SEGMENTS[1]}: propmap " in text and f"held out {SEGMENTS[1]}: log's own" in text
     params = read_params(out)
     air = params.air
     assert air.rho == 1.204 and params.flap_compliance == pytest.approx(report["fitted"]["flap_compliance"])

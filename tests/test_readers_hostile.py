@@ -413,6 +413,13 @@ def test_pe0_nan_in_pitch_column(tmp_path):
     refused(GeometryFileError, read_geometry, p, match="not a finite number")
 
 
+def test_pe0_blade_count_is_the_files(tmp_path):
+    # a PE0 file states its blade count: another is refused, not silently used (+44% thrust)
+    p = _pe0_with(tmp_path, "5.1063", "5.1063")
+    assert read_geometry(p).n_blades == 2 and read_geometry(p, n_blades=2).n_blades == 2
+    refused(GeometryFileError, read_geometry, p, n_blades=3, match="n_blades = 3, but the PE0 file states BLADES: 2")
+
+
 def test_pe0_malformed_radius_and_blades(tmp_path):
     line = PE0[:PE0.index("RADIUS:")].count("\n") + 1
     p = _pe0_with(tmp_path, "RADIUS:  4.00", "RADIUS:  4.0.0")

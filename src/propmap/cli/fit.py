@@ -122,7 +122,7 @@ def _coverage(data, prop) -> dict:
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
-                   body=None, coverage=None, header: str = "") -> dict:
+                   body=None, coverage=None, header: str = "", figure_suffixes=(".png",)) -> dict:
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
@@ -142,7 +142,8 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
         click.echo(f"propmap: warning: {w}", err=True)
     if len(result.warnings) > MAX_WARNINGS:
         click.echo(f"propmap: warning: {len(result.warnings) - MAX_WARNINGS} more in {stem.name}.report.txt", err=True)
-    click.echo(f"wrote {out}, {stem.name}.report.json, {stem.name}.report.txt, {stem.name}.png", err=True)
+    figures = "".join(f", {stem.name}{suffix}" for suffix in figure_suffixes)
+    click.echo(f"wrote {out}, {stem.name}.report.json, {stem.name}.report.txt{figures}", err=True)
     return report
 
 

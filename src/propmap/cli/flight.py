@@ -55,13 +55,14 @@ def _samples(logs, veh, rate_hz):
 
 def _table(rows: list[tuple[str, dict]]) -> str:
     """Rows of force (and moment) errors as text."""
-    head = f"{'':<44}{'Fx':>7}{'Fy':>7}{'Fz':>7}{'F':>7}"
+    width = max([44] + [len(label) + 1 for label, _ in rows])  # labels whole: held-out log names are long
+    head = f"{'':<{width}}{'Fx':>7}{'Fy':>7}{'Fz':>7}{'F':>7}"
     moments = any("M" in r for _, r in rows)
     if moments:
         head += f"   {'Mx':>7}{'My':>7}{'Mz':>7}{'M':>7}"
     lines = [head + ("   [N]; [N m]" if moments else "   [N]")]
     for label, r in rows:
-        line = f"{label[:43]:<44}" + "".join(f"{r[k]:>7.3f}" for k in ("Fx", "Fy", "Fz", "F"))
+        line = f"{label:<{width}}" + "".join(f"{r[k]:>7.3f}" for k in ("Fx", "Fy", "Fz", "F"))
         if moments and "M" in r:
             line += "   " + "".join(f"{r[k]:>7.4f}" for k in ("Mx", "My", "Mz", "M"))
         lines.append(line)
@@ -207,6 +208,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
+                   figure_suffixes=(".png", ".speed.png"),
                    body=BodyTable(body, veh.centre_of_mass,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 

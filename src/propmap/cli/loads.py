@@ -107,12 +107,27 @@ def _points_reader(path: Path, chunksize: int):
     return reader, names, sep
 
 
+def _long_row(path: Path) -> str:
+    """``"line N "`` of the first row with more fields than the header ("a row " if none is
+    found): pandas' warning does not say which (read again only on this error's path)."""
+    import csv
+
+    with open(path, encoding="utf-8-sig", newline="") as fh:
+        head = fh.readline()
+        sep = ";" if head.count(";") > head.count(",") else ","
+        width = len(next(csv.reader([head], delimiter=sep), []))
+        for k, row in enumerate(csv.reader(fh, delimiter=sep), start=2):
+            if len(row) > width:
+                return f"line {k} "
+    return "a row "
+
+
 def _parse_error(path: Path, exc: Exception) -> InputError:
     if isinstance(exc, UnicodeDecodeError):
         return InputError(f"--points: {path}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
                           "save it as UTF-8 CSV")
     if isinstance(exc, Warning):  # pandas' ParserWarning: a row with more fields than the header
-        return InputError(f"--points: {path}: a row has more fields than the header")
+        return InputError(f"--points: {path}: {_long_row(path)}has more fields than the header")
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 

@@ -50,8 +50,9 @@ class HoverModel:
         Raises
         ------
         ValueError
-            ``omega`` not a single number (an array of several, a string, a bool), or as
-            :func:`propmap.rotor_loads` (its range).
+            ``omega`` not a single number (an array of several, a string, a bool), below
+            1 rad/s (k_T = T / Omega^2 needs a spinning rotor; below 0.1 rad/s the model
+            treats the blades as parked), or as :func:`propmap.rotor_loads` (its range).
         TypeError
             A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
         """
@@ -59,6 +60,9 @@ class HoverModel:
         check_model_args(propeller, params, air, discretization)
         if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
             raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")
+        if not abs(float(omega)) >= 1.0:
+            raise ValueError(f"omega must be at least 1 rad/s in magnitude to calibrate a hover model "
+                             f"(k_T = T / Omega^2), got {float(omega)!r}")
         r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
         return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2)
 

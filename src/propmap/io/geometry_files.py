@@ -302,8 +302,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
         a different ``diameter_in`` is refused.
     n_blades : int, optional
-        Blade count: required for a UIUC file (which does not state it); a PE0 file's
-        BLADES by default.
+        Blade count: required for a UIUC file (which does not state it); a PE0 file states
+        its BLADES, and a different ``n_blades`` is refused.
 
     Returns
     -------
@@ -313,7 +313,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     ------
     GeometryFileError
         As the chosen reader; also if the file is not a readable regular file or the format
-        is not recognised, or a UIUC file without ``n_blades``.
+        is not recognised, a UIUC file without ``n_blades``, or a PE0 file with a
+        ``diameter_in`` or ``n_blades`` other than its own.
 
     Warns
     -----
@@ -330,11 +331,9 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
                                     f"own radius (diameter {prop.diameter / 0.0254:g} in); diameter_in applies to "
                                     "UIUC files")
         if n_blades is not None and n_blades != prop.n_blades:
-            try:
-                prop = Propeller(prop.name, prop.radius, n_blades, prop.r, prop.chord, prop.theta, prop.pitch,
-                                 prop.source)
-            except ValueError as exc:
-                raise GeometryFileError(f"{show_path(path)}: {exc}") from None
+            raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the PE0 file states BLADES: "
+                                    f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "
+                                    "the thrust nearly in proportion)")
         return prop
     if _is_uiuc_geometry(text):
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
