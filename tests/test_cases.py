@@ -96,18 +96,31 @@ def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
                               "flap": lambda n: pm.default_params(n).replace(flap_compliance=10.0)})
     own = m.metrics["own"]
     assert m.x.tolist() == [0, 1, 2, 3] and m.measured["H_slope"][0] == pytest.approx(0.043 / 0.034)
+    assert m.measured["thrust_rise"][0] == pytest.approx(0.14 * 0.2**2 / 0.034)
     for name in ("apce_8x6", "apce_8x8", "apce_10x7", "apcsf_10x4.7"):
         assert 0.3 < own[f"H_slope_ratio_{name}"] < 0.6
         assert m.metrics["flap"][f"H_slope_ratio_{name}"] > own[f"H_slope_ratio_{name}"] + 0.2
+    # the edgewise thrust rise is the model's own: T(mu = 0.2) / T(0) - 1 at 6000 rpm
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    om = 6000 * math.pi / 30
+    r = pm.rotor_loads(prop, p, om, np.array([0.0, 0.2 * om * prop.radius]), np.array([0.0, math.pi / 2]),
+                       air=pm.Air())
+    assert m.predicted["own"]["thrust_rise"][0] == pytest.approx(r.thrust[1] / r.thrust[0] - 1, rel=1e-12)
     # regression values (2026-11-24, the shipped calibration; docs/validation.md)
     assert own["H_slope_ratio_apce_8x6"] == pytest.approx(0.411, abs=0.005)
     assert own["H_slope_ratio_min"] == pytest.approx(0.371, abs=0.005)
     assert own["H_slope_ratio_max"] == pytest.approx(0.510, abs=0.005)
-    # the edgewise thrust rise of the APC electric sets is a fraction of the measured one
-    assert own["thrust_mu2_ratio_max"] == pytest.approx(0.956, abs=0.01)
-    assert own["thrust_mu2_ratio_apce_10x7"] == pytest.approx(0.282, abs=0.01)
+    # the APC electric sets' edgewise thrust falls where the tunnel's rises 15-19%
+    assert m.predicted["own"]["thrust_rise"][0] == pytest.approx(-0.043, abs=0.002)
+    assert own["thrust_rise_ratio_apcsf_10x4.7"] == pytest.approx(1.28, abs=0.02)
 
 
-def test_run_case_unknown():
-    with pytest.raises(ValueError, match="gill2019"):
+def test_run_case_refuses():
+    with pytest.raises(ValueError, match="unknown case 'nope'; valid: .*gill2019"):
         run_case("nope", {})
+    with pytest.raises(ValueError, match="only gill2019 takes a callable"):
+        run_case("dji9443", {"own": pm.default_params})
+    from propmap.cases import multinomial_fit
+
+    with pytest.raises(ValueError, match="omega must be a rotation rate"):
+        multinomial_fit(pm.load_propeller("apce_8x6"), pm.generic_params(), 0.0)

@@ -125,13 +125,15 @@ class CaseResult:
     ----------
     case : str
     x_name : str
-        The abscissa: ``"J"``, ``"rpm"`` or ``"incidence_deg"``.
+        The abscissa: ``"J"``, ``"rpm"``, ``"incidence_deg"`` or (gill2019) ``"propeller"``
+        (``x`` then indexes the propellers).
     x : ndarray
     measured : dict[str, ndarray]
-        ``"CT"`` and, where digitized, ``"CQ"``.
+        ``"CT"`` and, where digitized, ``"CQ"``; gill2019: the quantities of
+        GILL2019_QUANTITIES per propeller.
     predicted : dict[str, dict[str, ndarray]]
         label -> quantity -> values at ``x`` (one entry per parameter set, plus
-        ``"hover model"``).
+        ``"hover model"`` except in gill2019).
     citation : str
     notes : str
     metrics : dict
@@ -219,7 +221,7 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     prop : Propeller
     p : AirfoilParams or CamberedParams
     omega : float
-        Rotation rate [rad/s], > 0.
+        Rotation rate [rad/s], in [1, 1e5].
 
     Returns
     -------
@@ -228,9 +230,13 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
 
     Raises
     ------
+    ValueError
+        ``omega`` not a number in range.
     SolverError
         From the model.
     """
+    if isinstance(omega, (bool, np.bool_)) or not isinstance(omega, (int, float)) or not 1.0 <= omega <= 1e5:
+        raise ValueError(f"omega must be a rotation rate in [1, 100000] rad/s, got {omega!r:.60}")
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
     R = prop.radius
@@ -245,39 +251,52 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     return dict(zip(names, map(float, (*thrust, *h, *torque))))
 
 
-#: the dimensionless slopes the gill2019 case compares: name -> (coefficient, its static value)
-GILL2019_SLOPES = {"H_slope": ("k4", "CT_static"), "thrust_mu2": ("k2", "CT_static"),
-                   "torque_mu2": ("k7", "CQ_static")}
+#: the in-plane advance ratio at which the gill2019 case compares the edgewise rise of thrust and torque
+GILL2019_MU_RISE = 0.2
+#: the quantities the gill2019 case compares, each dimensionless and free of the normalisation
+GILL2019_QUANTITIES = ("H_slope", "thrust_rise", "torque_rise")
+
+
+def _gill2019_published(c: dict) -> dict[str, float]:
+    mu2 = GILL2019_MU_RISE**2
+    return {"H_slope": c["k4"] / c["CT_static"], "thrust_rise": c["k2"] * mu2 / c["CT_static"],
+            "torque_rise": c["k7"] * mu2 / c["CQ_static"]}
+
+
+def _gill2019_model(prop: Propeller, p: SectionParams, omega: float, air: Air) -> dict[str, float]:
+    f = multinomial_fit(prop, p, omega, air=air)
+    r = rotor_loads(prop, p, omega, np.array([0.0, GILL2019_MU_RISE * omega * prop.radius]),
+                    np.array([0.0, math.pi / 2]), air=air, radial=False)
+    return {"H_slope": f["k4"] / f["CT_static"], "thrust_rise": float(r.thrust[1] / r.thrust[0] - 1),
+            "torque_rise": float(r.torque[1] / r.torque[0] - 1)}
 
 
 def _gill2019(param_sets: dict, air: Air) -> CaseResult:
-    published = gill2019_coefficients()
-    names = list(published)
-    slopes = {s: np.array([published[n][k] / published[n][k0] for n in names])
-              for s, (k, k0) in GILL2019_SLOPES.items()}
     from .io.catalogue import load_propeller
 
+    published = gill2019_coefficients()
+    names = list(published)
+    measured = {q: np.array([_gill2019_published(published[n])[q] for n in names]) for q in GILL2019_QUANTITIES}
     omega = GILL2019_RPM * math.pi / 30
     pred, metrics = {}, {}
     for label, sets in param_sets.items():
-        fits = [multinomial_fit(load_propeller(n), sets(n) if callable(sets) else sets, omega, air=air) for n in names]
-        pred[label] = {s: np.array([f[k] / f[k0] for f in fits]) for s, (k, k0) in GILL2019_SLOPES.items()}
-        pred[label]["CT_static"] = np.array([f["CT_static"] for f in fits])
+        model = [_gill2019_model(load_propeller(n), sets(n) if callable(sets) else sets, omega, air) for n in names]
+        pred[label] = {q: np.array([m[q] for m in model]) for q in GILL2019_QUANTITIES}
         m = {}
-        for s in GILL2019_SLOPES:
-            ratio = pred[label][s] / slopes[s]
-            m.update({f"{s}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
-            m[f"{s}_ratio_min"], m[f"{s}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
+        for q in GILL2019_QUANTITIES:
+            ratio = pred[label][q] / measured[q]
+            m.update({f"{q}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
+            m[f"{q}_ratio_min"], m[f"{q}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
         metrics[label] = m
-    measured = {**slopes, "CT_static": np.array([published[n]["CT_static"] for n in names])}
     return CaseResult("gill2019", "propeller", np.arange(len(names)), measured, pred, CITATIONS["gill2019"],
-                      f"{', '.join(names)}; slopes k4 / CT_static (H-force), k2 / CT_static and k7 / CQ_static "
-                      f"(thrust and torque against mu^2) of the published multinomial fits against propmap's loads "
-                      f"fitted the same way at {GILL2019_RPM:.0f} rpm, advance ratios to 0.24, incidence 0-90 deg",
-                      metrics)
+                      f"{', '.join(names)}; H_slope: k4 / CT_static of the published multinomial fits against "
+                      f"propmap's loads fitted the same way (advance ratios to 0.24, incidence 0-90 deg); "
+                      f"thrust_rise, torque_rise: T / T_static - 1 and Q / Q_static - 1 edgewise at mu = "
+                      f"{GILL2019_MU_RISE:g} (published: k2 mu^2 / CT_static, k7 mu^2 / CQ_static); "
+                      f"{GILL2019_RPM:.0f} rpm", metrics)
 
 
-def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air()) -> CaseResult:
+def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
     """Predict a published case with each parameter set.
 
     Parameters
@@ -299,11 +318,12 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
         measured ratio (interpolated), the shaft ratios and H/T, and the same ratios with
         CT_w(0) matched to the measurement by a collective offset (``matched_*``,
         :func:`_beaver_matched`). ``air`` sets the viscosity and speed of sound (the density
-        is the test's). gill2019: per propeller and slope (``H_slope``, ``thrust_mu2``,
-        ``torque_mu2``, GILL2019_SLOPES) the ratio of propmap's dimensionless slope to the
-        published one (:func:`multinomial_fit`), ``<slope>_ratio_<name>``, and their
-        ``_min`` and ``_max``; ``measured`` and ``predicted`` hold the slopes per propeller
-        (``x`` indexes the propellers, in the file's order).
+        is the test's). gill2019: per propeller and quantity (GILL2019_QUANTITIES: the
+        H-force slope k4 / CT_static from :func:`multinomial_fit`, and the edgewise rise of
+        thrust and torque at mu = GILL2019_MU_RISE) the ratio of propmap's value to the
+        published one, ``<quantity>_ratio_<name>``, and their ``_min`` and ``_max``;
+        ``measured`` and ``predicted`` hold the values per propeller (``x`` indexes the
+        propellers, in the file's order).
 
     Raises
     ------
@@ -314,6 +334,8 @@ def run_case(case: str, param_sets: dict[str, SectionParams], *, air: Air = Air(
     """
     from .io.catalogue import load_propeller
 
+    if case != "gill2019" and any(callable(p) for p in param_sets.values()):
+        raise ValueError(f"case {case!r} takes parameter sets, not callables (only gill2019 takes a callable)")
     if case == "apc10x7e":
         prop = load_propeller("apce_10x7")
         ct, cq = np.array(_rows("apc10x7E_mccrink_gregory2017_CT_vs_J.csv")), np.array(

@@ -214,7 +214,8 @@ def _wrap(text: str, width: int = 60) -> str:
 
 
 def plot_cases(cases: dict, path) -> Path:
-    """The digitized published cases (cases.run_case results): measured points, model lines."""
+    """The published cases (cases.run_case results): measured points, model lines; gill2019's
+    H-force slopes as bars."""
     plt = _pyplot()
     fig, axes = plt.subplots(1, 5, figsize=(21, 4.2), constrained_layout=True)
     a = cases.get("apc10x7e")

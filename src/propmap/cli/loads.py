@@ -116,9 +116,10 @@ def _long_row(path: Path) -> str:
         head = fh.readline()
         sep = ";" if head.count(";") > head.count(",") else ","
         width = len(next(csv.reader([head], delimiter=sep), []))
-        for k, row in enumerate(csv.reader(fh, delimiter=sep), start=2):
+        rows = csv.reader(fh, delimiter=sep)
+        for row in rows:
             if len(row) > width:
-                return f"line {k} "
+                return f"line {rows.line_num + 1} "  # + the header line; line_num counts physical lines
     return "a row "
 
 

@@ -195,9 +195,7 @@ def run_cases() -> dict:
     """
     from ..cases import CASES, run_case
     from ..core.airfoil import preset
-    from ..io.calibration import generic_without
-
-    from ..io.calibration import default_params
+    from ..io.calibration import default_params, generic_without
 
     out = {}
     for c in CASES:
@@ -243,7 +241,7 @@ def print_report(cat: dict, cases: dict) -> None:
             click.echo(f"  {g:<10} n={n:<4} " + "  ".join(
                 f"{k} {_pct(s[k]['ct']['median']).strip()}/{_pct(s[k]['ct']['p90']).strip()}/"
                 f"{_pct(s[k]['ct']['worst']).strip()}" for k in protos))
-    click.echo("\npublished cases (digitized; data/CITATION.md):")
+    click.echo("\npublished cases (digitized curves and published fits; data/CITATION.md):")
     for c, res in cases.items():
         click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
         for label, m in res.metrics.items():

@@ -60,8 +60,8 @@ class HoverModel:
         check_model_args(propeller, params, air, discretization)
         if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
             raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")
-        if not abs(float(omega)) >= 1.0:
-            raise ValueError(f"omega must be at least 1 rad/s in magnitude to calibrate a hover model "
+        if not float(omega) >= 1.0:
+            raise ValueError(f"omega must be at least 1 rad/s to calibrate a hover model "
                              f"(k_T = T / Omega^2), got {float(omega)!r}")
         r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
         return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2)
