@@ -171,11 +171,14 @@ def trim_collective(
     missing = ~up.any(axis=1) & ~exact.any(axis=1)
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
+        k = int(np.argmax(Tg[i]))
+        peak = (f", highest at a collective of {math.degrees(grid[k]):.4g} deg and falling beyond it (the set stalls "
+                "there; docs/models.md, Collective pitch)") if k < m - 1 else ""
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s, "
             f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
-            f"[{(Tg[i] + T1[i]).min():.6g}, {(Tg[i] + T1[i]).max():.6g}] N")
+            f"[{(Tg[i] + T1[i]).min():.6g}, {(Tg[i] + T1[i]).max():.6g}] N{peak}")
     j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
     xl, xr = grid[j], grid[j + 1]
     on_node = exact.any(axis=1) & ~up.any(axis=1)
