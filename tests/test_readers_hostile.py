@@ -475,6 +475,13 @@ def test_blade_angles_in_radians_warn(tmp_path):
         read_uiuc_geometry(_write(tmp_path, "deg_9x6_geom.txt", GEOM))
 
 
+def test_stations_short_of_the_tip_warn(tmp_path):
+    # the blade beyond the last station is extrapolated: said, not silent (r/R 0.5 here)
+    p = _write(tmp_path, "half_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.5 0.1 20\n")
+    with pytest.warns(UserWarning, match=f"{re.escape(str(p))}: the stations stop at r/R = 0.5: .*extrapolated"):
+        read_uiuc_geometry(p)
+
+
 def test_uiuc_geometry_ranges(tmp_path):
     p = _write(tmp_path, "g_9x6_geom.txt", GEOM.replace("0.12 20", "1.5 20"))
     refused(GeometryFileError, read_uiuc_geometry, p, match=r"line 3: c/R = 1.5 is outside \[0, 1\]")

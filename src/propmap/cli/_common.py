@@ -565,7 +565,8 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     if incidence_deg > cov["incidence_deg_max"]:
         axial = cov["incidence_deg_max"] == 0
         warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
-             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver case)"
+             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
+                "gill2019 cases)"
                 if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
     if rpm is not None and "rpm_min" in cov:
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))

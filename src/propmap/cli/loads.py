@@ -347,7 +347,8 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         air = resolve_air(air, air_choice)
         check_section_match(propeller, label)
         n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
-        click.echo(f"wrote {n} points to {'standard output' if out == '-' else out} (params {label})"
+        where = "standard output" if out == "-" else out
+        click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label})"
                    + (f"; {n_bad} did not converge (see flags)" if n_bad else ""), err=True)
         return
     if out is not None:
@@ -391,7 +392,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}")
     if ratio["v_i_over_v_h"] is not None:
         click.echo(f"  state: {result['state']}  (v_i/v_h = {ratio['v_i_over_v_h']:.3f}, "
-                   f"lambda2 = V_descent/v_h = {ratio['lambda2']:.3f})")
+                   f"lambda2 = V_descent/v_h = {round(ratio['lambda2'], 3) + 0.0:.3f})")  # no "-0.000"
     else:
         click.echo(f"  state: {result['state']}  (T <= 0: no hover induced velocity to refer to)")
     click.echo(f"  flags: {', '.join(r.flags()) or 'none'}")

@@ -44,8 +44,8 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
 
     PROP: the model and the hover model against that catalogue propeller's UIUC static
     and J-sweep data. --all: held-out errors of every calibration protocol over the
-    catalogue, and the digitized published cases (APC 10x7E, DJI 9443, Beaver propeller
-    at incidence).
+    catalogue, and the published cases (APC 10x7E, DJI 9443, Beaver propeller at
+    incidence, four catalogue propellers in oblique flow).
     """
     if all_props:
         if prop:

@@ -62,9 +62,10 @@ class RotorLoads:
         P = Q Omega [W].
     CT, CP, CQ : ndarray
         Propeller-convention coefficients T/(rho n^2 D^4), P/(rho n^3 D^5),
-        Q/(rho n^2 D^5), n = Omega/(2 pi) [rev/s], D the diameter.
+        Q/(rho n^2 D^5), n = Omega/(2 pi) [rev/s], D the diameter; NaN for a stopped rotor
+        (Omega = 0), where they are undefined (the loads are not).
     J : ndarray
-        Advance ratio V/(n D) [-] (total airspeed).
+        Advance ratio V/(n D) [-] (total airspeed); NaN for a stopped rotor.
     r : ndarray, shape (n_radial,)
         Radial nodes [m].
     v_i : ndarray, shape S + (n_radial,), or None

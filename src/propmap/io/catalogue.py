@@ -156,13 +156,19 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
     Raises
     ------
     KeyError
-        ``spec`` is neither a catalogue name nor an existing file.
+        ``spec`` is neither a catalogue name nor an existing file (the message says which it
+        looks like: a folder, a missing file, or an unknown name with close ones suggested).
     GeometryFileError
         The file is malformed.
     """
     if spec in catalogue():
         return load_propeller(spec)
-    if Path(spec).is_file():
+    path = Path(spec)
+    if path.is_file():
         return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
+    if path.is_dir():
+        raise KeyError(f"{spec!r} is a folder, not a catalogue name or a geometry file")
+    if len(path.parts) > 1 or path.suffix.lower() in (".txt", ".pe0", ".dat", ".csv"):  # a path: no file there
+        raise KeyError(f"no file {spec!r}, and no catalogue propeller of that name")
     get_entry(spec)  # raises KeyError with suggestions
     raise AssertionError("unreachable")

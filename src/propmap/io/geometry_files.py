@@ -43,6 +43,8 @@ _SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]
 NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
+#: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)
+LAST_STATION_MIN = 0.9
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII)
 
 
@@ -92,7 +94,8 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
         radians (every one below 1.6, and read as radians they make a near-constant pitch
         r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
         small, nearly untwisted angles in degrees (a collective given separately) do not
-        warn.
+        warn. Or the stations stop inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond
+        them is extrapolated to the tip.
     """
     text = _read_text(path, GeometryFileError)
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
@@ -143,11 +146,16 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     if note:
         src = f"{src}; {note}"
     try:
-        return Propeller(name=name or stem, radius=R, n_blades=n_blades, r=data[:, 0] * R,
+        prop = Propeller(name=name or stem, radius=R, n_blades=n_blades, r=data[:, 0] * R,
                          chord=data[:, 1] * R, theta=np.radians(data[:, 2]),
                          pitch=None if pitch_in is None else pitch_in * INCH, source=src)
     except ValueError as exc:
         raise GeometryFileError(f"{where}: {exc}") from None
+    if data[-1, 0] < LAST_STATION_MIN:
+        warnings.warn(f"{where}: the stations stop at r/R = {data[-1, 0]:.3g}: the blade from there to the tip is "
+                      "extrapolated from the last stations (chord and blade angle); give stations to r/R = 1",
+                      UserWarning, stacklevel=3)
+    return prop
 
 
 #: the coefficient of variation of r tan(beta) over 0.3-1 R below which radian-valued blade
