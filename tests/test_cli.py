@@ -113,6 +113,8 @@ def test_demo_writes_figures(capsys, tmp_path):
         (["loads", "no/such/geom.txt", "--rpm", "8000"], "no file 'no/such/geom.txt'"),
         (["loads", "missing_9x6_geom.txt", "--rpm", "8000"], "no file 'missing_9x6_geom.txt'"),
         (["loads", "/", "--rpm", "8000"], "'/' is a folder"),
+        (["loads", "", "--rpm", "8000"], "the propeller is empty"),
+        (["loads", "apce_8x6.txt", "--rpm", "8000"], "did you mean the catalogue's apce_8x6"),
         (["loads", "apce_8x6", "--rpm", "8000", "--params", "nope"], "--params"),
         (["loads", "apce_8x6"], "--rpm"),
         (["loads", "apce_8x6", "--rpm", "abc"], "abc"),

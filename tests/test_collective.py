@@ -82,8 +82,14 @@ def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     res = trim_collective(rotor, naca0015, np.array([40.0, 1e4]), 100.0, on_missing="nan")
     # a set past stall at rest: the message names the collective where the thrust peaks
     # (apce_8x6's calibrated set, fitted at collective 0: docs/models.md, Collective pitch)
-    with pytest.raises(TrimError, match=r"highest at a collective of -2.5 deg and falling beyond it"):
-        trim_collective(pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6"), 5.0, 8000 * math.pi / 30)
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    with pytest.raises(TrimError, match=r"highest near a collective of -2.5 deg \(grid step 2.5 deg\), where the set"):
+        trim_collective(prop, p8, 5.0, 8000 * math.pi / 30)
+    # a thrust below the range, or a peak at a bound, is not called a stall
+    for thrust, bounds in ((0.1, (-math.radians(5), math.radians(10))), (5.0, (-math.radians(2.5), math.radians(20)))):
+        with pytest.raises(TrimError) as info:
+            trim_collective(prop, p8, thrust, 8000 * math.pi / 30, bounds=bounds)
+        assert "stalls" not in str(info.value)
     assert np.isfinite(res.collective[0]) and np.isnan(res.collective[1]) and np.isnan(res.loads.thrust[1])
     assert list(res.n_solutions) == [1, 0] or res.n_solutions[1] == 0
     with pytest.raises(ValueError, match="bounds must satisfy"):

@@ -5,8 +5,9 @@ vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), through the shipped calibration
 
     .venv/bin/python tools/collective_census.py      # about 1 minute on 2 cores
 
-Prints the numbers of docs/models.md, "The calibrated sets do not pin the response to the
-collective": the count of calibrated sets whose static thrust falls as the collective rises
+Prints the census numbers of docs/models.md, "The calibrated sets do not pin the response to
+the collective" (the paragraph's other figures, the generic set's slope, UIUC's static CT and
+the stall_delay recalibration, were measured separately): the count of calibrated sets whose static thrust falls as the collective rises
 (dT/d(collective) < 0 at a tip speed of 60 m/s, implicit derivatives), the median slope, the
 static-CT error of each set used on a sibling of the same family and diameter but another
 pitch (and of the generic set without the family on the same propellers), and the

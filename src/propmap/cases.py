@@ -11,8 +11,9 @@ digitization (FLOWUnsteady, MIT) are in data/CITATION.md:
   V = 40 m/s (Sinnige et al., J. Aircraft 2019): the only digitized incidence data.
 * ``gill2019``: four catalogue propellers (APC 8x6E, 8x8E, 10x7E, 10x4.7SF) in oblique flow,
   as the published coefficients of a multinomial model fitted to the wind-tunnel data (Gill &
-  D'Andrea, Drones 2019, Appendix A; data/published): the slopes of the in-plane H-force,
-  and of thrust and torque with edgewise speed, against propmap's fitted the same way.
+  D'Andrea, Drones 2019, Appendix A; data/published): the slope of the in-plane H-force
+  against propmap's loads fitted the same way, and the rise of thrust and torque with edgewise
+  speed against propmap's own.
 """
 
 from __future__ import annotations
@@ -328,7 +329,7 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
     Raises
     ------
     ValueError
-        Unknown case.
+        Unknown case, or a callable among ``param_sets`` for a case other than gill2019.
     SolverError
         From the model.
     """

@@ -133,7 +133,8 @@ def trim_collective(
         A bad argument (the message names it and its range).
     TrimError
         At some point no collective in ``bounds`` makes the thrust: the message names the
-        point and the thrust range the bounds reach there.
+        point and the thrust range the bounds reach there, and where a thrust too high peaks
+        inside the bounds, the grid collective of the peak (the set stalls beyond it).
     propmap.SolverError
         The inflow solve failed at some collective (the message names where).
     """
@@ -172,8 +173,10 @@ def trim_collective(
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
         k = int(np.argmax(Tg[i]))
-        peak = (f", highest at a collective of {math.degrees(grid[k]):.4g} deg and falling beyond it (the set stalls "
-                "there; docs/models.md, Collective pitch)") if k < m - 1 else ""
+        stalls = Tg[i, k] < 0 and 0 < k < m - 1 and Tg[i, k + 1] < Tg[i, k]  # short of the target at a peak inside
+        peak = (f", highest near a collective of {math.degrees(grid[k]):.4g} deg (grid step "
+                f"{math.degrees(grid[1] - grid[0]):.3g} deg), where the set stalls (docs/models.md, Collective pitch "
+                "as an input, and trim)") if stalls else ""
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s, "

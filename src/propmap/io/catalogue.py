@@ -153,22 +153,49 @@ def load_propeller(name: str) -> Propeller:
 def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
     """A catalogue name or a path to a geometry file (UIUC ``r/R c/R beta`` or APC PE0).
 
+    Parameters
+    ----------
+    spec : str
+        A catalogue name (``propmap props``) or the path of a geometry file.
+    diameter_in, n_blades
+        For a geometry file, as :func:`propmap.io.geometry_files.read_geometry`; a
+        catalogue propeller's own are used.
+
+    Returns
+    -------
+    Propeller
+
     Raises
     ------
     KeyError
-        ``spec`` is neither a catalogue name nor an existing file (the message says which it
-        looks like: a folder, a missing file, or an unknown name with close ones suggested).
+        ``spec`` is neither a catalogue name nor an existing file: the message says what it
+        looks like (empty, a folder, something other than a file, a missing file, or an
+        unknown name), with close catalogue names suggested.
     GeometryFileError
         The file is malformed.
+
+    Warns
+    -----
+    UserWarning
+        As the geometry readers (e.g. stations stopping short of the tip).
     """
     if spec in catalogue():
         return load_propeller(spec)
+    shown = repr(spec if len(spec) <= 120 else spec[:117] + "...")
+    if not spec.strip():
+        raise KeyError("the propeller is empty: give a catalogue name or a geometry file")
     path = Path(spec)
     if path.is_file():
         return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
     if path.is_dir():
-        raise KeyError(f"{spec!r} is a folder, not a catalogue name or a geometry file")
+        raise KeyError(f"{shown} is a folder, not a catalogue name or a geometry file")
+    if path.exists():
+        raise KeyError(f"{shown} is not a regular file")
     if len(path.parts) > 1 or path.suffix.lower() in (".txt", ".pe0", ".dat", ".csv"):  # a path: no file there
-        raise KeyError(f"no file {spec!r}, and no catalogue propeller of that name")
+        import difflib
+
+        near = difflib.get_close_matches(path.name.split(".")[0].replace("-PERF", ""), catalogue(), n=3)
+        hint = f"; did you mean the catalogue's {', '.join(near)}?" if near else ""
+        raise KeyError(f"no file {shown}, and no catalogue propeller of that name{hint}")
     get_entry(spec)  # raises KeyError with suggestions
     raise AssertionError("unreachable")

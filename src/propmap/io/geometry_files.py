@@ -152,7 +152,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     except ValueError as exc:
         raise GeometryFileError(f"{where}: {exc}") from None
     if data[-1, 0] < LAST_STATION_MIN:
-        warnings.warn(f"{where}: the stations stop at r/R = {data[-1, 0]:.3g}: the blade from there to the tip is "
+        warnings.warn(f"{where}: the stations stop at r/R = {data[-1, 0]:.4g}: the blade from there to the tip is "
                       "extrapolated from the last stations (chord and blade angle); give stations to r/R = 1",
                       UserWarning, stacklevel=3)
     return prop

@@ -34,10 +34,10 @@ OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind
             "63-84% of it with the zero-incidence thrust matched by one collective offset) and the NeuroBEM "
             "quadrotor's flight logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts "
             "held-out body force to 0.293 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane "
-            "force from the airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with "
+            "force from the airframe's), and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with "
             "their own sets the in-plane force rises with the advance ratio at 0.37-0.51 of the measured rate, and "
-            "the thrust of the three APC electric ones falls edgewise where the measured rises 15-19% at mu = 0.2); "
-            "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
+            "the edgewise thrust of the three APC electric ones falls or stays flat where the measured rises 15-19% "
+            "at mu = 0.2); off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
 
 
 def _pct(t) -> str:
