@@ -174,7 +174,7 @@ def trim_collective(
         i = int(np.argmax(missing))
         k = int(np.argmax(Tg[i]))
         stalls = Tg[i, k] < 0 and 0 < k < m - 1 and Tg[i, k + 1] < Tg[i, k]  # short of the target at a peak inside
-        peak = (f", highest near a collective of {math.degrees(grid[k]):.4g} deg (grid step "
+        peak = (f", highest near a collective of {round(math.degrees(grid[k]), 6) + 0.0:.4g} deg (grid step "
                 f"{math.degrees(grid[1] - grid[0]):.3g} deg), where the set stalls (docs/models.md, Collective pitch "
                 "as an input, and trim)") if stalls else ""
         raise TrimError(
