@@ -80,8 +80,9 @@ def test_fits_reduce_to_the_hover_model_in_hover(model):
     assert gz.coefficients["motorConstant"] == pytest.approx(hover.k_T, rel=1e-9)
     assert rp.coefficients["k_m"] == pytest.approx(hover.k_Q, rel=1e-9)
     # static thrust is not exactly k Omega^2 over 4000-9000 rpm (Reynolds effects): pinned at 7639 rpm, the
-    # 4000 rpm end is 3.5% off (measured)
-    assert 0.01 < rp.errors["static"]["thrust_max"] < 0.04 and rp.errors["thrust"]["max"] < 0.04
+    # 4000 rpm end is 6.0% off (measured with the stall blend M = 12 calibration, 2026-11-24; 3.5% with M = 20;
+    # UIUC's static CT of apce_8x6 rises by 9% from 2534 to 6700 rpm)
+    assert 0.01 < rp.errors["static"]["thrust_max"] < 0.07 and rp.errors["thrust"]["max"] < 0.07
 
 
 def test_multinomial_evaluates_like_its_definition(model):

@@ -57,8 +57,10 @@ from propmap.validation import coefficient_errors
 
 OUT = Path("src/propmap/data/calibration.json")
 RE_TERMS = ("re_exp_lift", "re_exp", "alpha_L0_re")
-#: start of the per-propeller fits (a rounded earlier joint fit; each fit converges from it)
-START = pm.CamberedParams(cl_alpha=5.5, alpha_L0=math.radians(-5.0), cl_max=1.9, cd_min=0.022, cd2=0.065,
+#: start of the per-propeller fits (a rounded earlier joint fit; each fit converges from it); the
+#: stall blend's sharpness M is not fitted: 12 was chosen among 8, 12, 16, 20 and 40 by
+#: leave-one-family-out validation and checks the fits never see (docs/models.md, The blend's sharpness)
+START = pm.CamberedParams(cl_alpha=5.5, alpha_L0=math.radians(-5.0), cl_max=1.9, cd_min=0.022, cd2=0.065, M=12.0,
                           re_exp=-0.6, re_exp_lift=0.06, alpha_L0_re=math.radians(-2.0))
 #: the joint fits' evaluation limit (they converge in 20-80; a stop at the limit is printed)
 JOINT_MAX_NFEV = 150

@@ -9,8 +9,8 @@ The figures are rms |dCT| / static CT (and |dCP| / static CP) over each propelle
 sweeps: median / 90th percentile / worst over the 143 catalogue propellers of UIUC vol. 1
 (Brandt & Selig, AIAA 2011-1255) and vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), with
 defaults derived without each propeller's family (leave-one-family-out). Measured
-2026-11-22 by ``benchmarks/validate_catalogue.py``; tests/test_uncertainty.py holds them to
-docs/validation.md.
+2026-11-24 (the calibration with the stall blend M = 12) by ``propmap validate --all``;
+tests/test_uncertainty.py holds them to docs/validation.md.
 """
 
 from __future__ import annotations
@@ -22,22 +22,22 @@ __all__ = ["AXIAL_VALIDATION", "OFF_AXIS", "model_uncertainty"]
 #: cross-validated axial errors by kind of parameter set: (median, 90th percentile, worst)
 AXIAL_VALIDATION = {
     "calibrated": {"protocol": "leave one sweep out (the set fitted to the propeller's other sweeps)",
-                   "ct": (0.026, 0.046, 0.101), "cp": (0.030, 0.050, 0.130)},
+                   "ct": (0.025, 0.049, 0.110), "cp": (0.028, 0.043, 0.130)},
     "generic": {"protocol": "blind (the generic set derived without the propeller's family)",
-                "ct": (0.077, 0.189, 0.423)},
+                "ct": (0.076, 0.192, 0.431)},
     "paper": {"protocol": "the paper's Table I without a fit", "ct": (0.213, 0.332, 0.492)},
 }
 #: what is known off-axis, in words (docs/validation.md, docs/flight.md)
 OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind the shipped sets are axial. "
             "propmap's off-axis checks are the Beaver propeller at 0-20 deg (Sinnige et al. 2019: the generic "
-            "set's rise of the wind-axis thrust with incidence is a fifth to a quarter of the measured one, and "
-            "63-84% of it with the zero-incidence thrust matched by one collective offset) and the NeuroBEM "
-            "quadrotor's flight logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts "
-            "held-out body force to 0.293 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane "
-            "force from the airframe's), and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with "
-            "their own sets the in-plane force rises with the advance ratio at 0.37-0.51 of the measured rate, and "
-            "the edgewise thrust of the three APC electric ones falls or stays flat where the measured rises 15-19% "
-            "at mu = 0.2); off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
+            "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 62-82% of "
+            "it with the zero-incidence thrust matched by one collective offset), the NeuroBEM quadrotor's flight "
+            "logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts held-out body force to "
+            "0.296 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
+            "airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with their own sets "
+            "the in-plane force rises with the advance ratio at 0.36-0.51 of the measured rate, and the edgewise "
+            "thrust of the three APC electric ones by 2-7% where the measured rises by 15-19% at mu = 0.2); "
+            "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
 
 
 def _pct(t) -> str:
