@@ -133,8 +133,9 @@ def test_the_c_header_says_n_a_where_no_check_point_measured_the_error(tmp_path,
 def test_an_envelope_that_is_nearly_a_point_is_refused(capsys, tmp_path):
     """rpm 5000-5000.001, airspeed 10-10.000001 m/s: condition number 1.5e7, under the former
     limit of 1e8, and k_h was written fitted to round-off. With hover pinned, RotorPy's k_h is
-    the one thrust term left and the point determines it (held at 0 here by its sign); the
-    multinomial's speed terms stay inseparable and are refused."""
+    the one thrust term left and the point determines it (positive with the calibration of
+    2026-11-24, held at 0 by its sign with the earlier one); the multinomial's speed terms stay
+    inseparable and are refused."""
     env = "rpm=5000:5000.001,airspeed=10:10.000001,incidence_deg=90:90.000001"
     code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--envelope", env,
                        "--out", tmp_path / "c.json")
@@ -144,9 +145,15 @@ def test_an_envelope_that_is_nearly_a_point_is_refused(capsys, tmp_path):
                        "--out", tmp_path / "c.py")
     assert code == 0, err
     # k_h is determined by the point, within its physical sign (held at 0 where the point asks for a negative
-    # one, as with the calibration of 2026-11-23, and said; positive with the stall blend M = 12)
+    # one, as with the calibration of 2026-11-23, and said; positive with the stall blend M = 12), and of the
+    # size the point's thrust change gives, not round-off: k_h (10 m/s)^2 against the model's own edgewise
+    # thrust change at 5000 rpm (+5.0%, the export's report) of a hover thrust of 1.68 N
     k_h = float(re.search(r"'k_h': ([-0-9.e]+),", (tmp_path / "c.py").read_text()).group(1))
-    assert k_h > 0 or (k_h == 0 and "k_h held at 0, the bound of its physical sign" in err), err
+    assert (0 < k_h < 2e-3) or (k_h == 0 and "k_h held at 0, the bound of its physical sign" in err), err
+    if k_h > 0:
+        prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+        r = pm.rotor_loads(prop, params, 5000 * np.pi / 30, np.array([0.0, 10.0]), np.array([0.0, np.pi / 2]))
+        assert k_h * 100 == pytest.approx(r.thrust[1] - r.thrust[0], rel=0.05)
 
 
 def test_map_check_of_a_map_over_several_propellers_and_its_exit_status(capsys, tmp_path):
