@@ -7,8 +7,9 @@ vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), through the shipped calibration
 
 Prints the census numbers of docs/models.md, "The calibrated sets do not pin the response to
 the collective" (the paragraph's other figures, the generic set's slope, UIUC's static CT and
-the stall_delay recalibration, were measured separately): the count of calibrated sets whose static thrust falls as the collective rises
-(dT/d(collective) < 0 at a tip speed of 60 m/s, implicit derivatives), the median slope, the
+the stall_delay recalibration, were measured separately): the count of calibrated sets whose
+static thrust falls as the collective rises (dT/d(collective) < 0 at a tip speed of 60 m/s,
+implicit derivatives), the median slope, the
 static-CT error of each set used on a sibling of the same family and diameter but another
 pitch (and of the generic set without the family on the same propellers), and the
 oblique-flow case's ratios (docs/validation.md).

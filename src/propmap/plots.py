@@ -248,7 +248,9 @@ def plot_cases(cases: dict, path) -> Path:
         axes[3].legend(fontsize=7)
     g = cases.get("gill2019")
     if g is not None:
-        names = g.notes.split(";")[0].split(", ")
+        from .cases import gill2019_coefficients
+
+        names = list(gill2019_coefficients())  # x indexes them, in this order
         width = 0.8 / (1 + len(g.predicted))
         axes[4].bar(g.x - 0.4 + width / 2, g.measured["H_slope"], width, color="k", label="measured (fit)")
         for k, (label, pred) in enumerate(g.predicted.items()):

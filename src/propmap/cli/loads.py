@@ -103,19 +103,17 @@ def _points_reader(path: Path, chunksize: int):
                                  skip_blank_lines=False, header=0, names=names, index_col=False, chunksize=chunksize)
     except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
             ValueError) as exc:
-        raise _parse_error(path, exc) from None
+        raise _parse_error(path, exc, sep, len(names)) from None
     return reader, names, sep
 
 
-def _long_row(path: Path) -> str:
-    """``"line N "`` of the first row with more fields than the header ("a row " if none is
+def _long_row(path: Path, sep: str, width: int) -> str:
+    """``"line N "`` of the first row with more than ``width`` fields ("a row " if none is
     found): pandas' warning does not say which (read again only on this error's path)."""
     import csv
 
     with open(path, encoding="utf-8-sig", newline="") as fh:
-        head = fh.readline()
-        sep = ";" if head.count(";") > head.count(",") else ","
-        width = len(next(csv.reader([head], delimiter=sep), []))
+        fh.readline()  # the header, read by _points_reader
         rows = csv.reader(fh, delimiter=sep)
         for row in rows:
             if len(row) > width:
@@ -123,12 +121,12 @@ def _long_row(path: Path) -> str:
     return "a row "
 
 
-def _parse_error(path: Path, exc: Exception) -> InputError:
+def _parse_error(path: Path, exc: Exception, sep: str, width: int) -> InputError:
     if isinstance(exc, UnicodeDecodeError):
         return InputError(f"--points: {path}: not UTF-8 text (byte 0x{exc.object[exc.start]:02x}); "
                           "save it as UTF-8 CSV")
     if isinstance(exc, Warning):  # pandas' ParserWarning: a row with more fields than the header
-        return InputError(f"--points: {path}: {_long_row(path)}has more fields than the header")
+        return InputError(f"--points: {path}: {_long_row(path, sep, width)}has more fields than the header")
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 
@@ -183,7 +181,7 @@ def _chunks(path: Path, chunksize: int):
                 rows += len(df)
                 yield df, int(lines[0]), values
     except (pd.errors.ParserError, pd.errors.ParserWarning, UnicodeDecodeError, ValueError) as exc:
-        raise _parse_error(path, exc) from None
+        raise _parse_error(path, exc, sep, len(names)) from None
     if rows == 0:
         raise InputError(f"--points: {path} has no data rows")
 
