@@ -180,7 +180,10 @@ def test_gauss_newton_polish_converges_on_a_smooth_piece_and_stops_at_a_jump():
 def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
     """With noise (0.5% rpm, 0.3 deg pitch) the optimum lies where no Gauss-Newton try
     converges, and the continuation's result is Nelder-Mead's (regression values,
-    2026-11-24, identical to those before the Gauss-Newton tries: cost 1.909733e-02)."""
+    2026-11-24, identical to those before the Gauss-Newton tries: cost 1.909733e-02). The
+    optimum is flat: the parameters are regression values to 1e-3 only, Nelder-Mead's end
+    point having moved by 3e-4 at the same cost with rounding-level changes of the
+    derivative kernel (the radial drag's terms, 2026-11-24)."""
     from dataclasses import replace
 
     veh = read_vehicle(str(resources.files("propmap") / "data/examples/quadrotor.toml"))
@@ -193,7 +196,7 @@ def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
     r = fit_level_flight(d, veh)
     assert "Nelder-Mead at M = 50" in r.message
     np.testing.assert_allclose(r.cost, 1.909733e-02, rtol=1e-6)
-    np.testing.assert_allclose(r.x, [5.3128943938, 1.3736831441, 1.6929932523, 0.3707202919], rtol=1e-8)
+    np.testing.assert_allclose(r.x, [5.3128943938, 1.3736831441, 1.6929932523, 0.3707202919], rtol=1e-3)
 
 
 def test_joint_fit_weights_propellers_alike(apc8x6):

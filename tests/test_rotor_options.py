@@ -1,4 +1,5 @@
-"""Rotor options beyond the paper: linear inflow models, blade flapping, collective offset.
+"""Rotor options beyond the paper: linear inflow models, blade flapping, collective offset,
+the radial flow's drag.
 
 Physical limits and invariants: each option vanishes in axial flow and hover, the paper's
 model is recovered exactly at the defaults, the linear-inflow gradients follow their
@@ -34,11 +35,54 @@ POINTS = (np.full(4, 8000 * RPM), np.array([0.0, 10.0, 10.0, 10.0]), np.radians(
 def test_defaults_are_the_papers_uniform_inflow_and_rigid_blades(prop, generic):
     """Explicit defaults change nothing, to the last bit."""
     a = pm.rotor_loads(prop, generic, *POINTS)
-    b = pm.rotor_loads(prop, generic.replace(inflow="uniform", flap_compliance=0.0, collective=0.0), *POINTS)
+    b = pm.rotor_loads(prop, generic.replace(inflow="uniform", flap_compliance=0.0, collective=0.0, radial_drag=True),
+                       *POINTS)
     for k in ("thrust", "drag", "torque", "rolling_moment"):
         np.testing.assert_array_equal(getattr(a, k), getattr(b, k))
     for k in ("side_force", "pitching_moment", "flap_1c", "flap_1s"):
         np.testing.assert_array_equal(getattr(a, k), 0.0)
+
+
+def test_radial_drag_is_the_cambered_default_and_not_the_papers():
+    assert pm.generic_params().radial_drag and pm.CamberedParams().radial_drag
+    assert not any(pm.preset(n).radial_drag for n in ("gill2017-soft", "gill2017-stiff", "gill2017-apc"))
+    with pytest.raises(ValueError, match="radial_drag must be true or false"):
+        pm.generic_params().replace(radial_drag=1)
+
+
+@pytest.mark.parametrize("inflow", ["uniform", "pitt-peters"])
+def test_radial_drag_adds_to_the_in_plane_force_only(prop, generic, inflow):
+    """The radial force passes through the shaft: thrust, torque, the moments and the roots
+    are unchanged to the last bit, the drag is unchanged in axial flow (0) and grows in
+    edgewise flow; with the linear inflow it also moves the side force."""
+    on = generic.replace(inflow=inflow)
+    a = pm.rotor_loads(prop, on.replace(radial_drag=False), *POINTS, radial=True)
+    b = pm.rotor_loads(prop, on, *POINTS, radial=True)
+    for k in ("thrust", "torque", "rolling_moment", "pitching_moment", "v_i"):
+        np.testing.assert_array_equal(getattr(a, k), getattr(b, k))
+    np.testing.assert_array_equal(b.drag[:2], 0.0)
+    assert np.all(b.drag[2:] > 1.1 * a.drag[2:])
+    if inflow == "uniform":
+        np.testing.assert_array_equal(b.side_force, 0.0)
+    else:
+        assert np.all(b.side_force[2:] != a.side_force[2:])
+
+
+def test_radial_drag_raises_the_profile_h_force_by_half_at_small_mu(prop):
+    """A section without lift and with a constant drag coefficient (the paper's polar with
+    c_l1 = c_l2 = c_d = 0 and no Blasius term): its H-force is the profile H-force alone,
+    sigma C_D mu / 4 in coefficient form without the radial flow's drag and 3 sigma C_D mu / 8
+    with it (Johnson 1980, Ch. 5; the ratio 1.5 to first order in mu)."""
+    base = pm.AirfoilParams(cl1=0.0, cl2=0.0, cd=0.0, alpha0=0.3, cd0=0.02, cp_blasius=0.0)
+    om = np.full(3, 8000 * RPM)
+    V = np.array([0.01, 0.02, 0.04]) * om * prop.radius  # mu = 0.01, 0.02, 0.04 edgewise
+    inc = np.full(3, math.pi / 2)
+    a = pm.rotor_loads(prop, base, om, V, inc)
+    b = pm.rotor_loads(prop, base.replace(radial_drag=True), om, V, inc)
+    ratio = b.drag / a.drag
+    np.testing.assert_allclose(ratio, 1.5, atol=2e-3)
+    # the chordwise profile H-force is linear in mu at small mu
+    np.testing.assert_allclose(a.drag / a.drag[0], [1.0, 2.0, 4.0], rtol=2e-3)
 
 
 @pytest.mark.parametrize("inflow", ["drees", "pitt-peters"])

@@ -40,7 +40,8 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, cambered_annulus,
+from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, PK_RADIAL_DRAG,
+                       cambered_annulus,
                        empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow, make_cambered_element,
                        make_element, make_loss_factor, make_prandtl, momentum_scale, momentum_thrust, swirl_step,
                        swirl_target)
@@ -448,6 +449,11 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     the pitching moment density -y <dT(psi) cos psi> (positive when the upstream half,
     psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and are only
     accumulated with a linear one (gx or gy non-zero, full-circle nodes).
+
+    With ``pk[PK_RADIAL_DRAG]`` = 1 (airfoil.RotorOptions.radial_drag) the radial flow's drag
+    C_D U u_R (u_R = V sin beta cos psi, per unit 0.5 rho c; C_D U = (qH U_T - qT U_P) / U^2
+    from the element's own outputs) adds its components along the airspeed, u_R cos psi, to
+    dD/dy and toward the advancing side, sin psi, to dY/dy; it passes through the shaft.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -460,25 +466,34 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     aY = 0.0
     aP = 0.0
     UP = Vc + v
+    kr = 0.0 if axial else pk[PK_RADIAL_DRAG] * Vs  # the radial flow's drag: u_R = kr cos psi
     if gx == 0.0 and gy == 0.0:
         for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
-            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3, model, pk)
+            UT = Om * y - u + Vs * sinpsi[k]
+            qT, qH = _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk)
             aT += qT
             aD += qH * sinpsi[k]
             aQ += qH
             aR += qT * sinpsi[k]
+            if kr != 0.0:  # (its side force cancels over the half circle's nodes, symmetric in cos psi)
+                aD += kr * (qH * UT - qT * UP) / (UT * UT + UP * UP + 1e-300) * cospsi[k] * cospsi[k]
     else:
         vx = v * gx
         vy = v * gy
         for k in range(naz):
-            qT, qH = _element(Om * y - u + Vs * sinpsi[k], UP + vx * cospsi[k] + vy * sinpsi[k], th, sth, cth, s0, s1,
-                              s2, s3, model, pk)
+            UT = Om * y - u + Vs * sinpsi[k]
+            UPk = UP + vx * cospsi[k] + vy * sinpsi[k]
+            qT, qH = _element(UT, UPk, th, sth, cth, s0, s1, s2, s3, model, pk)
             aT += qT
             aD += qH * sinpsi[k]
             aQ += qH
             aR += qT * sinpsi[k]
             aY -= qH * cospsi[k]
             aP -= qT * cospsi[k]
+            if kr != 0.0:
+                gR = kr * (qH * UT - qT * UPk) / (UT * UT + UPk * UPk + 1e-300) * cospsi[k]
+                aD += gR * cospsi[k]
+                aY += gR * sinpsi[k]
     dD = 0.0 if axial else cfac * aD / naz  # exactly 0 by symmetry in axial flow
     dR = 0.0 if axial else y * cfac * aR / naz
     return cfac * aT / naz, dD, y * cfac * aQ / naz, dR, cfac * aY / naz, y * cfac * aP / naz

@@ -50,7 +50,10 @@ CAMBERED = 2
 #   gill2017: cl1, cl2, cd, alpha0, M, cd0
 #   cambered: alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, stall angle above and below
 #             the zero-lift line (cl_max / cl_alpha, cl_min / cl_alpha)
-N_PK = 8
+# and, for both, at PK_RADIAL_DRAG the factor on the radial flow's drag (1: RotorOptions.radial_drag,
+# 0: off), which only the loads read (_annulus.annulus_loads), not the element
+PK_RADIAL_DRAG = 8
+N_PK = 9
 #: rows of the blade's node array (core/nodes._Nodes.rows, shape (N_NODE_ROWS, n_radial)), per annulus:
 #: its radius y [m] and quadrature weight [m], the blade angle [rad] and its sine and cosine, the
 #: section constant, (c/y)^2, the blade and momentum factors N_b rho c / 2 [kg/m^2] and 4 pi rho y

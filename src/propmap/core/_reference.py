@@ -12,8 +12,9 @@ from __future__ import annotations
 import numpy as np
 
 from . import _annulus as K
-from ._physics import (CAMBERED, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element,
-                       loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step, swirl_target)
+from ._physics import (CAMBERED, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL,
+                       cambered_annulus, element, loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step,
+                       swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
@@ -65,6 +66,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     Vs3 = np.asarray(Vs, float)[:, None, None]
     y = nodes.y[None, :, None]
     sinpsi = nodes.sinpsi[None, None, : nodes.sinpsi.size // 2]  # the half circle: uniform inflow only
+    cospsi = nodes.cospsi[None, None, : nodes.cospsi.size // 2]
     UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
     if u is not None:
         UT = UT - u[:, :, None]
@@ -148,7 +150,10 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
         qT, qH = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
     axial = (np.asarray(Vs) == 0)[:, None]
     dT = cfac * qT.mean(axis=2)
-    dD = np.where(axial, 0.0, cfac * (qH * sinpsi).mean(axis=2))
+    UPv = (Vc2 + v)[:, :, None]
+    with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus.annulus_loads)
+        radial = pk[PK_RADIAL_DRAG] * (qH * UT - qT * UPv) / (UT**2 + UPv**2 + 1e-300) * Vs3 * cospsi**2
+    dD = np.where(axial, 0.0, cfac * (qH * sinpsi + radial).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
     w = nodes.w
     return dT @ w, dD @ w, dQ @ w, v, converged.all(axis=1), dT, dQ

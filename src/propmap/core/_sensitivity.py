@@ -44,6 +44,13 @@ are symmetric in sin psi, which makes T even and D, M_R odd in V sin beta); in a
 one node, the integrand being independent of psi there: its partials stand for every
 node's, with the half circle's mean sin(psi) (0) and mean sin(psi)^2 as the weights, so
 that D and M_R change with V sin beta there and with nothing else.
+
+The radial flow's drag (airfoil.RotorOptions.radial_drag, pk[PK_RADIAL_DRAG] = 1) adds
+V sin(beta) times the node sums of C_D U cos^2 psi to D (_annulus.annulus_loads). C_D U is
+a function of the element's outputs and of U_T, U_P (:func:`_radial`), so the same passes
+give its partials: it is evaluated at each pass' stepped state and differenced like qT and
+qH; V sin(beta) enters it once more explicitly (its base sum; in axial flow the one node's
+value times the half circle's mean cos^2 psi, 1 - mean sin^2 psi).
 """
 
 from __future__ import annotations
@@ -56,7 +63,7 @@ from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_a
 from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
-                       TWO_OVER_PI)
+                       PK_RADIAL_DRAG, TWO_OVER_PI)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -227,73 +234,96 @@ def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _base(q0, h0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
+def _base(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     """The element's thrust and in-plane force (qT, qH) at each of the ``naz`` nodes of one
-    annulus, written into ``q0`` and ``h0``: the base of :func:`_pass`' differences."""
+    annulus, written into ``q0`` and ``h0``, and the radial drag's :func:`_radial` into ``r0``:
+    the base of :func:`_pass`' differences."""
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
-            q0[k], h0[k] = _element_cambered(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1,
-                                             a2, a3, a4, a5, a6, a7)
+            UT = Om * y + Vs * sinpsi[k]
+            q0[k], h0[k] = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
+                                             a6, a7)
+            if pk[PK_RADIAL_DRAG] != 0.0:
+                r0[k] = _radial(q0[k], h0[k], UT, UP, sinpsi[k])
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
-            q0[k], h0[k] = _element_gill(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5,
-                                         sincos)
+            UT = Om * y + Vs * sinpsi[k]
+            q0[k], h0[k] = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            if pk[PK_RADIAL_DRAG] != 0.0:
+                r0[k] = _radial(q0[k], h0[k], UT, UP, sinpsi[k])
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _pass(q0, h0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
+def _radial(q, h, UT, UP, sk):
+    """The radial flow's drag per unit in-plane speed along the airspeed, C_D U cos^2 psi
+    (_annulus.annulus_loads: C_D U = (qH U_T - qT U_P) / U^2), at a node of sin psi = ``sk``."""
+    return (h * UT - q * UP) / (UT * UT + UP * UP + 1e-300) * (1.0 - sk * sk)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     """One perturbed pass over the nodes of one annulus: the element at the given U_P, blade
-    angle, section constants and parameters, less the base (q0, h0 of :func:`_base`).
+    angle, section constants and parameters, less the base (q0, h0, r0 of :func:`_base`).
 
     At every azimuth node the element depends on the inputs only through U_T = Omega y +
     V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the section constants,
     so the caller perturbs one of them per pass. Returns the differences' sums weighted as
     the loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
-    qH sin(psi), qH and qT sin(psi)): qT, qT sin, qH, qH sin, not divided by the step or
-    the node count.
+    qH sin(psi), qH and qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH,
+    qH sin and the radial drag's (0 without it), not divided by the step or the node count.
     """
-    aT = aTs = aH = aHs = 0.0
+    aT = aTs = aH = aHs = aR = 0.0
+    rad = pk[PK_RADIAL_DRAG] != 0.0
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
             sk = sinpsi[k]
-            q, h = _element_cambered(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
-                                     a4, a5, a6, a7)
+            UT = Om * y + Vs * sk
+            q, h = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
             aH += e
             aHs += e * sk
+            if rad:
+                aR += _radial(q, h, UT, UP, sk) - r0[k]
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
             sk = sinpsi[k]
-            q, h = _element_gill(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            UT = Om * y + Vs * sk
+            q, h = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
             aH += e
             aHs += e * sk
-    return aT, aTs, aH, aHs
+            if rad:
+                aR += _radial(q, h, UT, UP, sk) - r0[k]
+    return aT, aTs, aH, aHs, aR
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _partials(q0, h0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk):
+def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk):
     """The inputs' passes over the nodes of one annulus, fused: :func:`_base` (written into
-    ``q0``, ``h0``) and :func:`_pass` at U_T + ``hT``, at U_P + ``hP`` and, for the cambered
-    section, at the constants ``u`` (those at U2 + its step), in one loop, which keeps the
-    four element evaluations per node in flight together (measured: the derivatives' cost
+    ``q0``, ``h0``, ``r0``) and :func:`_pass` at U_T + ``hT``, at U_P + ``hP`` and, for the
+    cambered section, at the constants ``u`` (those at U2 + its step), in one loop, which keeps
+    the four element evaluations per node in flight together (measured: the derivatives' cost
     over the loads' about half that of four separate loops, benchmarks/README.md). Returns
     the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P and the U2 sums
-    (qT, qT sin, qH, qH sin each), not divided by the steps or the node count.
+    (qT, qT sin, qH, qH sin each), not divided by the steps or the node count, and the radial
+    drag's (:func:`_radial`; zeros without it): its base sum, its U_T sums (plain and sin),
+    its U_P and its U2 sum.
     """
     tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
     pT = pTs = pH = pHs = 0.0
     uT = uTs = uH = uHs = 0.0
+    rB = rT = rTs = rP = rU = 0.0
+    rad = pk[PK_RADIAL_DRAG] != 0.0
     UP = Vc + v
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
@@ -328,6 +358,15 @@ def _partials(q0, h0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz,
             uTs += d * sk
             uH += e
             uHs += e * sk
+            if rad:
+                g = _radial(b0, c0, UT, UP, sk)
+                r0[k] = g
+                rB += g
+                d = _radial(q1, h1, UT + hT, UP, sk) - g
+                rT += d
+                rTs += d * sk
+                rP += _radial(q2, h2, UT, UP + hP, sk) - g
+                rU += _radial(q3, h3, UT, UP, sk) - g
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
@@ -352,7 +391,15 @@ def _partials(q0, h0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz,
             pTs += d * sk
             pH += e
             pHs += e * sk
-    return tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs
+            if rad:
+                g = _radial(b0, c0, UT, UP, sk)
+                r0[k] = g
+                rB += g
+                d = _radial(q1, h1, UT + hT, UP, sk) - g
+                rT += d
+                rTs += d * sk
+                rP += _radial(q2, h2, UT, UP + hP, sk) - g
+    return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -415,7 +462,9 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node
     h0 = np.empty(naz_half)
-    ps = np.zeros((4 + n_par, 4))  # the sums of the passes other than the inputs' (below)
+    r0 = np.zeros(naz_half)  # the radial drag's (_radial) at the root, per node
+    ps = np.zeros((4 + n_par, 5))  # the sums of the passes other than the inputs' (below)
+    krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
     for j in range(nr):
         vj = v[i, j]
         yj = y[j]
@@ -431,11 +480,13 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         hth = ONE_SIDED
         UP = vc + vj
         if n_in > 0:  # the inputs' passes, fused (the U_P pass is d/dv as well)
-            tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = _partials(
-                q0, h0, vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk)
+            sums, rsums = _partials(q0, h0, r0, vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk)
+            tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
+            rB, rT, rTs, rP, rU = rsums
         else:
-            _base(q0, h0, om, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
+            _base(q0, h0, r0, om, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
             tT = tTs = tTs2 = tH = tHs = tHs2 = uT = uTs = uH = uHs = 0.0
+            rB = rT = rTs = rP = rU = 0.0
         # the other passes through one (inlined) call: 0 the U_P pass (d/dv) where the inputs' did not run,
         # 1 the blade angle's, 2 the base again (the section parameters' differences are then exactly 0 for one
         # that does not enter), 3 + k the k-th section parameter's (the element's constants pk, the annulus'
@@ -456,10 +507,10 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
                 pka = pkpm[m - 3]
                 if not cam_same[m - 3]:
                     sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 3])
-            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3] = _pass(q0, h0, om, vs, up, yj, tha, stha, ctha, sa, sinpsi, naz,
-                                                           model, pka)
+            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, om, vs, up, yj, tha, stha, ctha, sa,
+                                                                     sinpsi, naz, model, pka)
         if n_in == 0:
-            pT, pTs, pH, pHs = ps[0, 0], ps[0, 1], ps[0, 2], ps[0, 3]
+            pT, pTs, pH, pHs, rP = ps[0, 0], ps[0, 1], ps[0, 2], ps[0, 3], ps[0, 4]
         kP = 1.0 / hP
         cT = cTs = cH = cHs = 0.0
         if n_in == 4:
@@ -473,19 +524,23 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         if axial:  # one node: its sin(psi)-weighted sums are those of the half circle (mean sin 0, sin^2 m2)
             tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
                 0.0
+            if krad != 0.0:  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
+                rB = _radial(q0[0], h0[0], om * yj, UP, 0.0) * (1.0 - m2)
+        # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
+        rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
-        Lv0, Lv1, Lv2, Lv3 = pT * kP * cf, pHs * kP * cf, pH * kP * cq, pTs * kP * cq
-        uu0, uu1, uu2, uu3 = uT * kU, uHs * kU, uH * kUq, uTs * kUq
+        Lv0, Lv1, Lv2, Lv3 = pT * kP * cf, (pHs + rr * rP) * kP * cf, pH * kP * cq, pTs * kP * cq
+        uu0, uu1, uu2, uu3 = uT * kU, (uHs + rr * rU) * kU, uH * kUq, uTs * kUq
         tT, tTs, tTs2, tH, tHs, tHs2 = tT * kT, tTs * kT, tTs2 * kT, tH * kT, tHs * kT, tHs2 * kT
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
         dB[0, 0] = yj * tT * cf + f * uu0
-        dB[1, 0] = yj * tHs * cf + f * uu1
+        dB[1, 0] = yj * (tHs + rr * rT * kT) * cf + f * uu1
         dB[2, 0] = yj * tH * cq + f * uu2
         dB[3, 0] = yj * tTs * cq + f * uu3
         # V sin beta: U_T by sin psi, U2 by V sin beta
         dB[0, 1] = tTs * cf + vs * uu0
-        dB[1, 1] = tHs2 * cf + vs * uu1
+        dB[1, 1] = (tHs2 + rr * rTs * kT + krad * rB) * cf + vs * uu1
         dB[2, 1] = tHs * cq + vs * uu2
         dB[3, 1] = tTs2 * cq + vs * uu3
         # V cos beta: U_P by 1, U2 by 2 V cos beta
@@ -494,7 +549,7 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         dB[2, 2] = Lv2 + 2.0 * vc * uu2
         dB[3, 2] = Lv3 + 2.0 * vc * uu3
         dB[0, 3] = cT * kth * cf
-        dB[1, 3] = cHs * kth * cf
+        dB[1, 3] = (cHs + rr * ps[1, 4]) * kth * cf
         dB[2, 3] = cH * kth * cq
         dB[3, 3] = cTs * kth * cq
         # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0 at
@@ -560,7 +615,8 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         for k in range(n_par + (1 if hrho != 0.0 else 0)):
             span = hrho if k == n_par else hpar[k]
             _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, (ps[3 + k, 0] - ps[2, 0]) * cf,
-                            (ps[3 + k, 3] - ps[2, 3]) * cf, (ps[3 + k, 2] - ps[2, 2]) * cq,
+                            (ps[3 + k, 3] - ps[2, 3] + rr * (ps[3 + k, 4] - ps[2, 4])) * cf,
+                            (ps[3 + k, 2] - ps[2, 2]) * cq,
                             (ps[3 + k, 1] - ps[2, 1]) * cq, span, axial)
 
 

@@ -102,6 +102,19 @@ class RotorOptions:
         closes in on a jump of the selected root in descent, more: 173 residual evaluations
         per annulus against 8.6 without swirl at tests/test_swirl.py's jump point); no
         implicit derivatives. False (default): the paper's model, which has no swirl.
+    radial_drag : bool
+        The section drag of the radial flow along the blade (the yawed-flow drag of helicopter
+        theory, W. Johnson, Helicopter Theory, Princeton University Press, 1980, Ch. 5: the
+        section drag acts along the blade's whole relative velocity, so the radial velocity
+        u_R = V sin(beta) cos(psi) of edgewise flow gives a radial force D u_R / U). The
+        chordwise loads keep the independence principle (lift and drag from U_T and U_P only)
+        and the radial force (rho/2) c C_D U u_R adds to the in-plane force, to first order in
+        u_R / U: it raises the profile part of the H-force by half at small mu (<cos^2 psi> =
+        1/2 of the chordwise term; the classical sigma C_D mu / 4 becomes 3 sigma C_D mu / 8).
+        It passes through the shaft: thrust, torque, the rolling and pitching moments and the
+        root solve are unchanged, and so is everything in axial flow. True: the default of the
+        cambered model (docs/models.md, Radial drag). False: the default of the paper's
+        section model, which stays exactly the paper's.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -123,6 +136,7 @@ class RotorOptions:
     collective: float = 0.0
     descent: str = "empirical"
     swirl: bool = False
+    radial_drag: bool = True
     air: Air = field(default_factory=Air)
     label: str = field(default="", compare=False)
 
@@ -195,6 +209,8 @@ class AirfoilParams(RotorOptions):
 
     #: the paper's Glauert momentum in descent too (RotorOptions.descent), so the model stays the paper's
     descent: str = field(default="glauert", kw_only=True)
+    #: and no radial drag (RotorOptions.radial_drag), which the paper's element leaves out
+    radial_drag: bool = field(default=False, kw_only=True)
 
     section_model = "gill2017"
 
@@ -412,6 +428,7 @@ def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
     from . import _physics as ph  # as in _section_cd_cl: imported where used
 
     pk = np.zeros(ph.N_PK)
+    pk[ph.PK_RADIAL_DRAG] = 1.0 if params.radial_drag else 0.0
     if isinstance(params, CamberedParams):
         p = params
         pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,

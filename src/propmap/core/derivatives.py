@@ -74,7 +74,7 @@ def _derivative_inputs(derivatives, params) -> tuple:
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
     if params.inflow != "uniform" or params.flap_compliance > 0 or params.swirl:
         raise ValueError("derivatives are implemented for the uniform inflow and rigid blades without swirl (the "
-                         f"paper's rotor); this set has inflow={params.inflow!r}, "
+                         f"paper's rotor, with or without the radial drag); this set has inflow={params.inflow!r}, "
                          f"flap_compliance={params.flap_compliance:g}, swirl={params.swirl}")
     return wrt
 

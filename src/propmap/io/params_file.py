@@ -43,13 +43,16 @@ them all::
     hub_loss = false
 
 Either model also takes the rotor options (``RotorOptions``; docs/models.md), whose defaults
-are the paper's rigid blades in an azimuth-independent inflow::
+are the paper's rigid blades in an azimuth-independent inflow (the paper's section model's
+defaults shown; the cambered model's are ``descent = "empirical"`` and ``radial_drag = true``,
+which a cambered file without those keys gets)::
 
     inflow = "uniform"        # or "drees", "pitt-peters" (linear inflow models)
     descent = "glauert"       # or "empirical" (measured inflow in the vortex-ring state)
     flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
+    radial_drag = false       # the radial flow's drag in edgewise flow (in-plane force; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
 ``section = "naca0015"`` takes every key of that section preset (:func:`propmap.io.param_sets.section_preset`;
