@@ -239,8 +239,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
 
             class _Bar(Callback):
                 def _start_state(self, dsk, state):
+                    # disable=None: no bar where stderr is not a terminal (a log file, a pipe)
                     self.bar = tqdm(total=sum(len(v) for v in state.values() if isinstance(v, (set, list))),
-                                    unit="task", leave=False)
+                                    unit="task", leave=False, disable=None)
 
                 def _posttask(self, key, result, dsk, state, worker_id):
                     self.bar.update(1)
