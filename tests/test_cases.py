@@ -54,8 +54,8 @@ def test_beaver_with_its_zero_incidence_thrust_matched():
     # short of the measured rise (1.127, 1.351), with a larger in-plane force than the ratio can take
     assert m["generic"]["matched_collective_deg"] == pytest.approx(-3.60, abs=0.02)
     assert m["generic"]["matched_ratio_10"] == pytest.approx(1.079, abs=0.002)
-    assert m["generic"]["matched_ratio_20"] == pytest.approx(1.286, abs=0.002)
-    assert m["generic"]["matched_H_over_T_20"] == pytest.approx(0.247, abs=0.002)
+    assert m["generic"]["matched_ratio_20"] == pytest.approx(1.287, abs=0.002)
+    assert m["generic"]["matched_H_over_T_20"] == pytest.approx(0.245, abs=0.002)
 
 
 def test_gill2019_coefficients_are_the_published_ones():
@@ -92,7 +92,7 @@ def test_multinomial_fit_of_the_model():
 
 def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
     # the in-plane force of each propeller's own set (fitted to its UIUC axial data) rises with
-    # the advance ratio at 0.50-0.71 of the rate the wind tunnel shows, 0.36-0.51 without the
+    # the advance ratio at 0.40-0.60 of the rate the wind tunnel shows, 0.36-0.51 without the
     # radial flow's drag (issue 14's 0.39-0.57 on the raw data); flapping blades raise it further
     m = run_case("gill2019", {"own": pm.default_params,
                               "no_radial": lambda n: pm.default_params(n).replace(radial_drag=False),
@@ -101,9 +101,9 @@ def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
     assert m.x.tolist() == [0, 1, 2, 3] and m.measured["H_slope"][0] == pytest.approx(0.043 / 0.034)
     assert m.measured["thrust_rise"][0] == pytest.approx(0.14 * 0.2**2 / 0.034)
     for name in ("apce_8x6", "apce_8x8", "apce_10x7", "apcsf_10x4.7"):
-        assert 0.45 < own[f"H_slope_ratio_{name}"] < 0.8
+        assert 0.35 < own[f"H_slope_ratio_{name}"] < 0.7
         # the radial drag adds to the H-force only: the profile part of the slope grows by up to a half
-        assert 0.05 < own[f"H_slope_ratio_{name}"] - m.metrics["no_radial"][f"H_slope_ratio_{name}"] < 0.25
+        assert 0.02 < own[f"H_slope_ratio_{name}"] - m.metrics["no_radial"][f"H_slope_ratio_{name}"] < 0.15
         for q in ("thrust_rise", "torque_rise"):
             assert own[f"{q}_ratio_{name}"] == pytest.approx(m.metrics["no_radial"][f"{q}_ratio_{name}"], abs=1e-9)
         assert m.metrics["flap"][f"H_slope_ratio_{name}"] > own[f"H_slope_ratio_{name}"] + 0.1
@@ -114,9 +114,9 @@ def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
                        air=pm.Air())
     assert m.predicted["own"]["thrust_rise"][0] == pytest.approx(r.thrust[1] / r.thrust[0] - 1, rel=1e-12)
     # regression values (2026-11-24, the shipped calibration, stall blend M = 12, radial drag; docs/validation.md)
-    assert own["H_slope_ratio_apce_8x6"] == pytest.approx(0.576, abs=0.005)
-    assert own["H_slope_ratio_min"] == pytest.approx(0.496, abs=0.005)
-    assert own["H_slope_ratio_max"] == pytest.approx(0.710, abs=0.005)
+    assert own["H_slope_ratio_apce_8x6"] == pytest.approx(0.482, abs=0.005)
+    assert own["H_slope_ratio_min"] == pytest.approx(0.395, abs=0.005)
+    assert own["H_slope_ratio_max"] == pytest.approx(0.597, abs=0.005)
     assert m.metrics["no_radial"]["H_slope_ratio_min"] == pytest.approx(0.362, abs=0.005)
     assert m.metrics["no_radial"]["H_slope_ratio_max"] == pytest.approx(0.507, abs=0.005)
     # the APC electric sets' edgewise thrust rises, but by a quarter of the tunnel's 15-19% (with the stall

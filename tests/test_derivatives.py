@@ -18,10 +18,12 @@ def prop():
     return pm.load_propeller("apce_8x6")
 
 
-@pytest.fixture(scope="module", params=["generic", "paper"])
+@pytest.fixture(scope="module", params=["generic", "paper", "paper_radial"])
 def params(request):
     if request.param == "generic":
-        return pm.generic_params()
+        return pm.generic_params()  # the radial flow's drag on (the cambered default)
+    if request.param == "paper_radial":  # the other section model with the radial flow's drag
+        return pm.preset("gill2017-apc").replace(radial_drag=True)
     return pm.preset("gill2017-apc")  # the paper's section (Table I), the other section model
 
 

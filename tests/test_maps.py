@@ -66,6 +66,21 @@ def test_netcdf_round_trip_keeps_values_flags_and_attributes(small_map, tmp_path
     assert rm.check(50, seed=1)["check_points"] == 50
 
 
+def test_a_map_from_before_the_radial_drag_is_read_without_it(small_map):
+    """A map's record without ``radial_drag`` (written before the option, 2026-11-24) was made
+    without it: map_model reads it so, whatever the record's default is now."""
+    import json
+
+    from propmap.io.mapcheck import map_model
+
+    _, params, ds = small_map
+    assert params.radial_drag and map_model(ds.attrs)[1] == params
+    old = json.loads(ds.attrs["params_json"])
+    del old["radial_drag"]
+    attrs = {**ds.attrs, "params_json": json.dumps(old)}
+    assert map_model(attrs)[1] == params.replace(radial_drag=False)
+
+
 @pytest.mark.parametrize("interpolation", ["cubic", "linear"])
 def test_out_of_grid_policies(small_map, interpolation):
     _, _, ds = small_map

@@ -68,6 +68,45 @@ def test_radial_drag_adds_to_the_in_plane_force_only(prop, generic, inflow):
         assert np.all(b.side_force[2:] != a.side_force[2:])
 
 
+@pytest.mark.parametrize("inflow", ["drees", "pitt-peters"])
+def test_radial_drag_of_a_linear_inflow_against_a_numpy_quadrature(prop, generic, inflow):
+    """The radial drag's share of D and of the side force Y, on and off with the kernel's own roots,
+    against an independent quadrature over the full circle: (rho/2) N_b c C_D,p U u_R resolved
+    along the airspeed (cos psi) and toward the advancing side (sin psi), u_R = V sin(beta) cos(psi)."""
+    from propmap.core.nodes import _nodes
+
+    on = generic.replace(inflow=inflow)
+    om, V, b = POINTS[0][2:], POINTS[1][2:], POINTS[2][2:]
+    r_on = pm.rotor_loads(prop, on, om, V, b, radial=True)
+    r_off = pm.rotor_loads(prop, on.replace(radial_drag=False), om, V, b, radial=True)
+    np.testing.assert_array_equal(r_on.v_i, r_off.v_i)
+    vbar = pm.rotor_loads(prop, generic, om, V, b).v_i_mean  # the uniform solution sets the wake skew
+    nd = _nodes(prop, 48, 16, generic.air, on)
+    from propmap.core.airfoil import _model_constants
+    from propmap.core.nodes import _cambered_args
+
+    model, pk = _model_constants(on)
+    cam = _cambered_args(on, generic.air)
+    psi_s, psi_c = nd.sinpsi[None, None, :], nd.cospsi[None, None, :]
+    y = nd.y[None, :, None]
+    Vs, Vc = (V * np.sin(b))[:, None, None], (V * np.cos(b))[:, None, None]
+    OmR = om * prop.radius
+    kx, ky = np.array([ph.inflow_gradients(m, lam, ph.INFLOW_CODES[inflow])  # scalars only
+                       for m, lam in zip(V * np.sin(b) / OmR, (V * np.cos(b) + vbar) / OmR)]).T
+    UT = om[:, None, None] * y + Vs * psi_s
+    UP = Vc + r_on.v_i[:, :, None] * (1 + (kx[:, None, None] * psi_c + ky[:, None, None] * psi_s) * y / prop.radius)
+    U2 = (om[:, None] * nd.y[None, :]) ** 2 + 0.5 * Vs[:, :, 0] ** 2 + Vc[:, :, 0] ** 2
+    s = ph.cambered_annulus(U2, nd.sc[None, :], nd.cy2[None, :], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0,
+                            cam[5], cam[6], cam[7])
+    cd = ph.profile_cd(UT, UP, nd.theta[None, :, None], *(x[..., None] for x in s), model, pk)
+    fR = cd * np.sqrt(UT**2 + UP**2) * Vs * psi_c  # per unit (rho/2) c and span, as the element's outputs
+    dD = (nd.cfac * (fR * psi_c).mean(axis=2)) @ nd.w
+    dY = (nd.cfac * (fR * psi_s).mean(axis=2)) @ nd.w
+    np.testing.assert_allclose(r_on.drag - r_off.drag, dD, rtol=1e-9)
+    np.testing.assert_allclose(r_on.side_force - r_off.side_force, dY, rtol=1e-6, atol=1e-9 * np.abs(dD).max())
+    assert np.all(dD > 0.1 * r_off.drag)
+
+
 def test_radial_drag_raises_the_profile_h_force_by_half_at_small_mu(prop):
     """A section without lift and with a constant drag coefficient (the paper's polar with
     c_l1 = c_l2 = c_d = 0 and no Blasius term): its H-force is the profile H-force alone,

@@ -41,10 +41,9 @@ import numpy as np
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, PK_RADIAL_DRAG,
-                       cambered_annulus,
-                       empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow, make_cambered_element,
-                       make_element, make_loss_factor, make_prandtl, momentum_scale, momentum_thrust, swirl_step,
-                       swirl_target)
+                       cambered_annulus, empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow,
+                       make_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag,
+                       momentum_scale, momentum_thrust, swirl_step, swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -67,6 +66,7 @@ _atan2 = _jit_inline(atan2_poly)
 _exp_sat = _jit_inline(exp_sat)
 _element_gill = _jit_inline(make_element(_atan2, _exp_sat))
 _element_cambered = _jit_inline(make_cambered_element(_atan2, _exp_sat))
+_profile_cd = _jit_inline(make_profile_drag(_atan2, _exp_sat))
 _prandtl = _jit_inline(make_prandtl(_atan2, _exp_sat))
 _loss_factor = _jit_inline(make_loss_factor(_prandtl))
 _inverse_sin_phi = _jit_inline(inverse_sin_phi)
@@ -451,9 +451,9 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     accumulated with a linear one (gx or gy non-zero, full-circle nodes).
 
     With ``pk[PK_RADIAL_DRAG]`` = 1 (airfoil.RotorOptions.radial_drag) the radial flow's drag
-    C_D U u_R (u_R = V sin beta cos psi, per unit 0.5 rho c; C_D U = (qH U_T - qT U_P) / U^2
-    from the element's own outputs) adds its components along the airspeed, u_R cos psi, to
-    dD/dy and toward the advancing side, sin psi, to dY/dy; it passes through the shaft.
+    C_D,p U u_R (u_R = V sin beta cos psi, per unit 0.5 rho c; C_D,p the profile drag,
+    _physics.make_profile_drag) adds its components along the airspeed, cos psi, to dD/dy and
+    toward the advancing side, sin psi, to dY/dy; it passes through the shaft.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -475,8 +475,9 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
             aD += qH * sinpsi[k]
             aQ += qH
             aR += qT * sinpsi[k]
-            if kr != 0.0:  # (its side force cancels over the half circle's nodes, symmetric in cos psi)
-                aD += kr * (qH * UT - qT * UP) / (UT * UT + UP * UP + 1e-300) * cospsi[k] * cospsi[k]
+            if kr != 0.0:  # (its side force cancels over the full circle, psi <-> 180 deg - psi: not accumulated)
+                aD += (kr * _profile_cd(UT, UP, th, s0, s1, s2, s3, model, pk) * np.sqrt(UT * UT + UP * UP)
+                       * cospsi[k] * cospsi[k])
     else:
         vx = v * gx
         vy = v * gy
@@ -491,7 +492,7 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
             aY -= qH * cospsi[k]
             aP -= qT * cospsi[k]
             if kr != 0.0:
-                gR = kr * (qH * UT - qT * UPk) / (UT * UT + UPk * UPk + 1e-300) * cospsi[k]
+                gR = kr * _profile_cd(UT, UPk, th, s0, s1, s2, s3, model, pk) * np.sqrt(UT * UT + UPk * UPk) * cospsi[k]
                 aD += gR * cospsi[k]
                 aY += gR * sinpsi[k]
     dD = 0.0 if axial else cfac * aD / naz  # exactly 0 by symmetry in axial flow

@@ -166,8 +166,37 @@ def make_cambered_element(atan2, exp_sat):
     return element_cambered
 
 
+def make_profile_drag(atan2, exp_sat):
+    """Return the profile (attached-flow) drag coefficient of either element, using the given
+    arctangent and saturated exp: the part of C_D that the radial flow's drag scales
+    (airfoil.RotorOptions.radial_drag; _annulus.annulus_loads)."""
+
+    def profile_cd(UT, UP, theta, s0, s1, s2, s3, model, pk):
+        """The element's friction and profile drag coefficient, without the pressure drag of stall.
+
+        Parameters as :func:`element` (``s0 ... s3`` the annulus' section constants, ``pk`` the
+        model's constants). Cambered: ``cdf (cd_min + (1 - s) cd2 (C_L,att - cl_cdmin)^2)``, the
+        quadratic polar of the attached flow faded out by the stall blend s as in the element;
+        the flat-plate term s cd90 sin^2 a, a pressure force normal to the chord, is left out.
+        gill2017: eq (4)'s Blasius and form terms ``kre / sqrt(U) + cd0``, without its
+        ``cd sin^2 a`` (stall) term. [-]
+        """
+        if model == CAMBERED:
+            ae = theta - (pk[0] + s3) - atan2(UP, UT)
+            ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+            p = exp_sat(pk[5] * (ae - s2 * pk[6]))
+            q = exp_sat(-pk[5] * (ae - s2 * pk[7]))
+            s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
+            dcl = s0 * ae - pk[4]
+            return s1 * (pk[2] + (1.0 - s) * pk[3] * dcl * dcl)
+        return s0 / np.sqrt(np.sqrt(UT * UT + UP * UP + 1e-300)) + pk[5]
+
+    return profile_cd
+
+
 element_gill = make_element(np.arctan2, exp_sat_numpy)
 element_cambered = make_cambered_element(np.arctan2, exp_sat_numpy)
+profile_cd = make_profile_drag(np.arctan2, exp_sat_numpy)
 
 
 def element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk):

@@ -13,8 +13,8 @@ import numpy as np
 
 from . import _annulus as K
 from ._physics import (CAMBERED, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL,
-                       cambered_annulus, element, loss_factor_numpy, momentum_scale, momentum_thrust, swirl_step,
-                       swirl_target)
+                       cambered_annulus, element, loss_factor_numpy, momentum_scale, momentum_thrust, profile_cd,
+                       swirl_step, swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
@@ -152,7 +152,8 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     dT = cfac * qT.mean(axis=2)
     UPv = (Vc2 + v)[:, :, None]
     with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus.annulus_loads)
-        radial = pk[PK_RADIAL_DRAG] * (qH * UT - qT * UPv) / (UT**2 + UPv**2 + 1e-300) * Vs3 * cospsi**2
+        radial = (pk[PK_RADIAL_DRAG] * profile_cd(UT, UPv, *geo[:1], *geo[3:], model, pk) * np.sqrt(UT**2 + UPv**2)
+                  * Vs3 * cospsi**2)
     dD = np.where(axial, 0.0, cfac * (qH * sinpsi + radial).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
     w = nodes.w

@@ -46,11 +46,12 @@ node's, with the half circle's mean sin(psi) (0) and mean sin(psi)^2 as the weig
 that D and M_R change with V sin beta there and with nothing else.
 
 The radial flow's drag (airfoil.RotorOptions.radial_drag, pk[PK_RADIAL_DRAG] = 1) adds
-V sin(beta) times the node sums of C_D U cos^2 psi to D (_annulus.annulus_loads). C_D U is
-a function of the element's outputs and of U_T, U_P (:func:`_radial`), so the same passes
-give its partials: it is evaluated at each pass' stepped state and differenced like qT and
-qH; V sin(beta) enters it once more explicitly (its base sum; in axial flow the one node's
-value times the half circle's mean cos^2 psi, 1 - mean sin^2 psi).
+V sin(beta) times the node sums of C_D,p U cos^2 psi to D (_annulus.annulus_loads; C_D,p the
+profile drag). It depends on the inputs through U_T, U_P, the blade angle and the section
+constants, as the element does, so the same passes give its partials: it is evaluated at
+each pass' stepped state (:func:`_radial`) and differenced like qT and qH; V sin(beta)
+enters it once more explicitly (its base sum; in axial flow the one node's value times the
+half circle's mean cos^2 psi, 1 - mean sin^2 psi).
 """
 
 from __future__ import annotations
@@ -59,7 +60,7 @@ import numba
 import numpy as np
 
 from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
-                       _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl)
+                       _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl, _profile_cd)
 from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
@@ -245,21 +246,22 @@ def _base(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
             q0[k], h0[k] = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
                                              a6, a7)
             if pk[PK_RADIAL_DRAG] != 0.0:
-                r0[k] = _radial(q0[k], h0[k], UT, UP, sinpsi[k])
+                r0[k] = _radial(UT, UP, th, s, sinpsi[k], model, pk)
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
             UT = Om * y + Vs * sinpsi[k]
             q0[k], h0[k] = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             if pk[PK_RADIAL_DRAG] != 0.0:
-                r0[k] = _radial(q0[k], h0[k], UT, UP, sinpsi[k])
+                r0[k] = _radial(UT, UP, th, s, sinpsi[k], model, pk)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _radial(q, h, UT, UP, sk):
-    """The radial flow's drag per unit in-plane speed along the airspeed, C_D U cos^2 psi
-    (_annulus.annulus_loads: C_D U = (qH U_T - qT U_P) / U^2), at a node of sin psi = ``sk``."""
-    return (h * UT - q * UP) / (UT * UT + UP * UP + 1e-300) * (1.0 - sk * sk)
+def _radial(UT, UP, th, s, sk, model, pk):
+    """The radial flow's drag per unit in-plane speed along the airspeed, C_D,p U cos^2 psi
+    (_annulus.annulus_loads; C_D,p the profile drag), at a node of sin psi = ``sk``, blade
+    angle ``th`` and section constants ``s``."""
+    return _profile_cd(UT, UP, th, s[0], s[1], s[2], s[3], model, pk) * np.sqrt(UT * UT + UP * UP) * (1.0 - sk * sk)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -289,7 +291,7 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
             aH += e
             aHs += e * sk
             if rad:
-                aR += _radial(q, h, UT, UP, sk) - r0[k]
+                aR += _radial(UT, UP, th, s, sk, model, pk) - r0[k]
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
@@ -303,7 +305,7 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
             aH += e
             aHs += e * sk
             if rad:
-                aR += _radial(q, h, UT, UP, sk) - r0[k]
+                aR += _radial(UT, UP, th, s, sk, model, pk) - r0[k]
     return aT, aTs, aH, aHs, aR
 
 
@@ -359,14 +361,14 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             uH += e
             uHs += e * sk
             if rad:
-                g = _radial(b0, c0, UT, UP, sk)
+                g = _radial(UT, UP, th, s, sk, model, pk)
                 r0[k] = g
                 rB += g
-                d = _radial(q1, h1, UT + hT, UP, sk) - g
+                d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
                 rT += d
                 rTs += d * sk
-                rP += _radial(q2, h2, UT, UP + hP, sk) - g
-                rU += _radial(q3, h3, UT, UP, sk) - g
+                rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
+                rU += _radial(UT, UP, th, u, sk, model, pk) - g
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
@@ -392,13 +394,13 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             pH += e
             pHs += e * sk
             if rad:
-                g = _radial(b0, c0, UT, UP, sk)
+                g = _radial(UT, UP, th, s, sk, model, pk)
                 r0[k] = g
                 rB += g
-                d = _radial(q1, h1, UT + hT, UP, sk) - g
+                d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
                 rT += d
                 rTs += d * sk
-                rP += _radial(q2, h2, UT, UP + hP, sk) - g
+                rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
     return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
 
 
@@ -525,7 +527,7 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
             tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
                 0.0
             if krad != 0.0:  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
-                rB = _radial(q0[0], h0[0], om * yj, UP, 0.0) * (1.0 - m2)
+                rB = _radial(om * yj, UP, th, s, 0.0, model, pk) * (1.0 - m2)
         # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
         rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)

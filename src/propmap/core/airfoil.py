@@ -103,14 +103,16 @@ class RotorOptions:
         per annulus against 8.6 without swirl at tests/test_swirl.py's jump point); no
         implicit derivatives. False (default): the paper's model, which has no swirl.
     radial_drag : bool
-        The section drag of the radial flow along the blade (the yawed-flow drag of helicopter
+        The profile drag of the radial flow along the blade (the yawed-flow drag of helicopter
         theory, W. Johnson, Helicopter Theory, Princeton University Press, 1980, Ch. 5: the
-        section drag acts along the blade's whole relative velocity, so the radial velocity
-        u_R = V sin(beta) cos(psi) of edgewise flow gives a radial force D u_R / U). The
+        skin friction acts along the blade's whole relative velocity, so the radial velocity
+        u_R = V sin(beta) cos(psi) of edgewise flow gives a radial force D_p u_R / U). The
         chordwise loads keep the independence principle (lift and drag from U_T and U_P only)
-        and the radial force (rho/2) c C_D U u_R adds to the in-plane force, to first order in
-        u_R / U: it raises the profile part of the H-force by half at small mu (<cos^2 psi> =
-        1/2 of the chordwise term; the classical sigma C_D mu / 4 becomes 3 sigma C_D mu / 8).
+        and the radial force (rho/2) c C_D,p U u_R adds to the in-plane force, to first order
+        in u_R / U, with C_D,p the section's profile drag without the pressure drag of stall
+        (_physics.make_profile_drag): it raises the profile part of the H-force by half at
+        small mu (<cos^2 psi> = 1/2 of the chordwise term; the classical sigma C_D mu / 4
+        becomes 3 sigma C_D mu / 8).
         It passes through the shaft: thrust, torque, the rolling and pitching moments and the
         root solve are unchanged, and so is everything in axial flow. True: the default of the
         cambered model (docs/models.md, Radial drag). False: the default of the paper's

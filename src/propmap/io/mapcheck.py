@@ -274,6 +274,9 @@ def check_dataset(ds) -> None:
 def map_model(attrs: dict):
     """(propeller, params, air, discretization) recorded in a map's attributes.
 
+    A record without ``radial_drag`` (a map written before that option) is read with
+    ``radial_drag = False``, the model that made it.
+
     Raises
     ------
     ValueError
@@ -299,6 +302,9 @@ def map_model(attrs: dict):
         raise ValueError(f"attribute params_json is not JSON ({exc})") from None
     if not isinstance(si, dict):
         raise ValueError(f"attribute params_json must be a JSON object, got {_short(si)}")
+    # a map written before the radial flow's drag existed (2026-11-24) was made without it,
+    # whatever the record's default is now
+    si.setdefault("radial_drag", False)
     # the ranges of a parameter file (angles in degrees there), then the exact SI record
     form = {({v: k for k, v in DEG_KEYS.items()}.get(k, k)): (math.degrees(v) if k in DEG_KEYS.values()
                                                              and isinstance(v, numbers.Real) else v)

@@ -30,12 +30,12 @@ AXIAL_VALIDATION = {
 #: what is known off-axis, in words (docs/validation.md, docs/flight.md)
 OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind the shipped sets are axial. "
             "propmap's off-axis checks are the Beaver propeller at 0-20 deg (Sinnige et al. 2019: the generic "
-            "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 61-81% of "
+            "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 62-82% of "
             "it with the zero-incidence thrust matched by one collective offset), the NeuroBEM quadrotor's flight "
             "logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts held-out body force to "
             "0.297 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
             "airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with their own sets "
-            "the in-plane force rises with the advance ratio at 0.50-0.71 of the measured rate, and the edgewise "
+            "the in-plane force rises with the advance ratio at 0.40-0.60 of the measured rate, and the edgewise "
             "thrust of the three APC electric ones by 2-7% where the measured rises by 15-19% at mu = 0.2); "
             "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
 
