@@ -183,8 +183,8 @@ def test_continuation_with_noisy_data_ends_where_nelder_mead_alone_does():
     2026-11-24, identical to those before the Gauss-Newton tries: cost 1.909733e-02). The
     paper's M = 50 cost is rugged (root-branch jumps) and Nelder-Mead's end point on it
     moves with rounding: when the derivative kernels were recompiled with the radial drag's
-    terms (2026-11-24; the paper's loads unchanged to about 1e-16 relative, its implicit
-    derivatives to 4e-10, which moves the Gauss-Newton tries' end points and so the
+    terms (2026-11-24; the paper's loads and implicit derivatives unchanged to rounding,
+    1e-16 to 4e-10 relative, which moves the Gauss-Newton tries' end points and so the
     simplex's start) it ended at cost 1.914370e-02 (+0.24%) with the parameters within 1%
     (the second, cl2, 1.0%). So the values are regression values to 0.5% in the cost and 2%
     in the parameters."""

@@ -360,15 +360,6 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             uTs += d * sk
             uH += e
             uHs += e * sk
-            if rad:
-                g = _radial(UT, UP, th, s, sk, model, pk)
-                r0[k] = g
-                rB += g
-                d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
-                rT += d
-                rTs += d * sk
-                rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
-                rU += _radial(UT, UP, th, u, sk, model, pk) - g
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
@@ -393,14 +384,19 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             pTs += d * sk
             pH += e
             pHs += e * sk
-            if rad:
-                g = _radial(UT, UP, th, s, sk, model, pk)
-                r0[k] = g
-                rB += g
-                d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
-                rT += d
-                rTs += d * sk
-                rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
+    if rad:  # the radial drag's passes (:func:`_radial`), in a loop of their own
+        for k in range(naz):
+            sk = sinpsi[k]
+            UT = Om * y + Vs * sk
+            g = _radial(UT, UP, th, s, sk, model, pk)
+            r0[k] = g
+            rB += g
+            d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
+            rT += d
+            rTs += d * sk
+            rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
+            if model == CAMBERED:  # the U2 pass (the paper's section has none)
+                rU += _radial(UT, UP, th, u, sk, model, pk) - g
     return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
 
 
