@@ -207,6 +207,60 @@ def gill2019_coefficients() -> dict[str, dict[str, float]]:
     return {r[0]: {k: float(v) for k, v in zip(head[2:], r[2:])} for r in rows[1:]}
 
 
+def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
+    """Loads of a gill2019 propeller from its published multinomial model, as load data.
+
+    Thrust, in-plane force and torque at the static point and on the grid of total advance
+    ratio (GILL2019_ADVANCE, within the 0.24 the fits cover) and incidence
+    (GILL2019_INCIDENCE_DEG) at each rotation rate, dimensional with (rho/2) pi R^2
+    (Omega R)^2 (R with the moments). They stand in for the wind-tunnel data behind the
+    fits, which are not in the repository: smooth (a fit's, without its scatter) and
+    independent of the rotation rate in coefficient form, which real data are not.
+
+    Parameters
+    ----------
+    name : str
+        A catalogue propeller with published coefficients (:func:`gill2019_coefficients`).
+    rpm : sequence of float
+        Rotation rates [rpm], each in [100, 50000].
+    air : Air
+        The density that makes the coefficients dimensional.
+
+    Returns
+    -------
+    LoadData
+        ``thrust``, ``drag``, ``torque``; ``group`` ``"inc<deg>"``, the static points in
+        ``"inc00"`` with the axial ones.
+
+    Raises
+    ------
+    ValueError
+        ``name`` without published coefficients, or an rpm out of range.
+    """
+    from .identify.data import LoadData
+    from .io.catalogue import load_propeller
+
+    published = gill2019_coefficients()
+    if name not in published:
+        raise ValueError(f"no published gill2019 coefficients for {name!r:.60}; known: {', '.join(published)}")
+    rpm = np.atleast_1d(np.asarray(rpm, float))
+    if rpm.ndim != 1 or not np.all((rpm >= 100.0) & (rpm <= 50000.0)):
+        raise ValueError(f"rpm must be rotation rates in [100, 50000] rpm, got {rpm!r:.60}")
+    c, R = published[name], load_propeller(name).radius
+    adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
+    adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
+    omega = np.repeat(rpm * math.pi / 30, adv.size)
+    adv, inc = np.tile(adv, rpm.size), np.tile(inc, rpm.size)
+    mu, lam = adv * np.sin(inc), adv * np.cos(inc)
+    q = 0.5 * air.rho * math.pi * R**2 * (omega * R) ** 2
+    measured = {"thrust": q * (c["CT_static"] + c["k1"] * lam + c["k2"] * mu**2 + c["k3"] * lam**2),
+                "drag": q * (c["k4"] * mu + c["k5"] * lam * mu),
+                "torque": q * R * (c["CQ_static"] + c["k6"] * lam + c["k7"] * mu**2 + c["k8"] * lam**2)}
+    group = np.array([f"inc{round(math.degrees(b)):02d}" for b in inc])
+    return LoadData(omega, adv * omega * R, inc, measured, group,
+                    f"{name}: Gill & D'Andrea 2019 (Drones 3(4):77), Appendix A multinomial model")
+
+
 def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air = Air()) -> dict[str, float]:
     """propmap's loads fitted with Gill & D'Andrea's (2019, Sec. 5) multinomial model.
 

@@ -25,7 +25,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..core.airfoil import Air, SectionParams, sigmoid_blend
+from ..core.airfoil import Air, CamberedParams, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, differentiable, rotor_loads
 from ..core.vector import rotor_wrench
@@ -34,8 +34,8 @@ from ..vehicle import Vehicle
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
-from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, MIN_RATES_FOR_RE, STATIC_RPM_SPAN,
-                      X0_PAPER, FitOptions, _default_names, _is_angle, param_names)
+from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, INPLANE_FIT, MIN_RATES_FOR_RE,
+                      STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle, param_names)
 from .result import FitResult, Identifiability
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
@@ -311,6 +311,15 @@ def _data_kind(data: LoadData) -> str:
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
+def _measures_inplane_force(data: LoadData, keys) -> bool:
+    """Whether the fitted quantities include the in-plane force D measured where the rotor
+    has an in-plane speed (V sin beta > 0): what identifies the flapping (INPLANE_FIT)."""
+    if "drag" not in keys:
+        return False
+    edgewise = (data.airspeed * np.abs(np.sin(data.incidence)) > 0) & np.isfinite(data.measured["drag"])
+    return bool(edgewise.any())
+
+
 def _sweep_rates(data: LoadData) -> int:
     """Distinct rotation rates (3% apart) of the moving points (0 for static data)."""
     rpm = np.sort(data.omega[data.airspeed > 0])
@@ -427,6 +436,9 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     kind = _data_kind(data)
     names = _default_names(base, options, kind)
     keys = _load_keys(data, quantities)
+    inplane = options.names is None and isinstance(base, CamberedParams) and _measures_inplane_force(data, keys)
+    if inplane:  # the flapping carries the in-plane force (outside the prior: the directions do not apply)
+        names = (*names, *(n for n in INPLANE_FIT if n not in names))
     k_dirs = _direction_count(options, base, data, kind, names)
     free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
     if data.n * len(keys) <= free:
@@ -453,6 +465,9 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
             shown = ", ".join(f"{n} {math.degrees(v):.4g} deg" if _is_angle(n) else f"{n} {v:.4g}" for n, v in outside)
             warns = [f"the optimum along the data's leading directions left the allowed range ({shown}): all "
                      f"{len(names)} parameters fitted under the prior instead", *warns]
+    if inplane:
+        notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure the in-plane force at incidence "
+                     "(docs/identification.md)")
     warns = [*notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}

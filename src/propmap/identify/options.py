@@ -14,7 +14,7 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
            "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
-           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES"]
+           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT"]
 
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
@@ -43,6 +43,13 @@ CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
 #: a hover collective sweep (static points at several collectives) spans the angles of
 #: attack: the lift slope and the drag polar are identified too
 CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
+#: freed besides the section's parameters (cambered model, default names) when the data measure the
+#: in-plane force D at incidence: the blades' flapping tilts the thrust and carries the in-plane
+#: force that a rigid rotor under-predicts, instead of a section drag distorted to chase it.
+#: Leave one incidence out on the four propellers of Gill & D'Andrea's oblique-flow fits
+#: (Drones 2019; docs/identification.md): held-out D 2-4% -> 0.4-0.8% of static thrust, T 5-8% ->
+#: 2-6%, Q 17-27% -> 3-11% of static torque
+INPLANE_FIT = ("flap_compliance",)
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
