@@ -14,6 +14,9 @@ digitization (FLOWUnsteady, MIT) are in data/CITATION.md:
   D'Andrea, Drones 2019, Appendix A; data/published): the slope of the in-plane H-force
   against propmap's loads fitted the same way, and the rise of thrust and torque with edgewise
   speed against propmap's own.
+
+:func:`gill2019_loads` turns those published fits into load data (thrust, in-plane force,
+torque) for fitting tests (tools/incidence_fit.py, docs/identification.md).
 """
 
 from __future__ import annotations
