@@ -406,7 +406,10 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         :class:`FitOptions` says (CAMBERED_FIT_RE or CAMBERED_FIT under the prior,
         CAMBERED_FIT_STATIC for a static run without it), and under the prior, by default,
         only the data's leading directions for a static run or sweeps at one rotation rate
-        (``FitOptions.directions``; identify/directions.py).
+        (``FitOptions.directions``; identify/directions.py). Where the fitted quantities
+        include the in-plane force ``drag`` measured at points with an in-plane speed, the
+        cambered model's default also frees the flapping (INPLANE_FIT, outside the prior, so
+        every name is fitted; docs/identification.md, Load data at incidence).
 
     Returns
     -------

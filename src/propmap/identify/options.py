@@ -152,7 +152,9 @@ class FitOptions:
         cambered model :data:`CAMBERED_FIT_RE` when the data are static only or contain
         sweeps at three or more rotation rates, else :data:`CAMBERED_FIT` (Reynolds terms
         kept at the base values), and :data:`CAMBERED_FIT_STATIC` for static data without
-        the prior (docs/identification.md gives the measurements behind this rule).
+        the prior (docs/identification.md gives the measurements behind this rule);
+        :func:`~propmap.identify.fit_loads` adds :data:`INPLANE_FIT` where the data measure
+        the in-plane force at incidence.
     prior : bool
         Cambered model: add the population prior, pseudo-residuals
         sigma_d L^-1 (x - x_base) with L L^T the covariance of the parameters fitted to
