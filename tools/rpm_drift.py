@@ -1,0 +1,67 @@
+"""How the held-out error of the static + lowest-rpm protocol grows with the rotation rate.
+
+Data: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255) and the bundled part of
+vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151). Each propeller is fitted as `propmap validate
+--all`'s static + lowest protocol fits it (the CLI defaults, from the generic set and prior
+without its family), and each held-out rpm group's mean signed CT error (of static CT) is
+regressed on ln(rpm / rpm of the lowest sweeps); the same for the generic set without the
+family (blind).
+
+    .venv/bin/python tools/rpm_drift.py      # about 15 s on 2 cores
+
+Prints the median slope over the catalogue and per family: positive where the model's thrust
+runs ahead of the measured one as the rpm rises (docs/validation.md, Where the model is still
+wrong).
+"""
+
+import warnings
+from concurrent.futures import ProcessPoolExecutor
+
+import numpy as np
+import pandas as pd
+
+import propmap as pm
+from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from propmap.io.calibration import generic_without, population
+from propmap.io.catalogue import catalogue
+from propmap.validation import _coefficients, rpm_groups
+
+
+def biases(name: str) -> list:
+    """(name, family, "fit" or "blind", ln rpm ratio, mean signed dCT / CT0) per held-out rpm group."""
+    warnings.simplefilter("ignore")  # the catalogue's coverage notes
+    entry, prop = catalogue()[name], pm.load_propeller(name)
+    data = loads_from_catalogue(entry, prop.diameter)
+    generic, pop = generic_without(name)[0], population(without=name)
+    static, groups = data.airspeed == 0, rpm_groups(data)
+    train = static | np.isin(data.group, groups[0])
+    fitted = fit_loads(data.subset(train), prop, base=generic, options=FitOptions(population=pop)).params
+    CT = _coefficients(data, prop, generic.air)[0]
+    CT0, rpm0 = CT[static].mean(), np.mean(data.omega[np.isin(data.group, groups[0])])
+    rows = []
+    for grp in groups[1:]:
+        m = np.isin(data.group, grp)
+        for params, kind in ((fitted, "fit"), (generic, "blind")):
+            r = pm.rotor_loads(prop, params, data.omega[m], data.airspeed[m], data.incidence[m])
+            rows.append((name, entry.family, kind, np.log(np.mean(data.omega[m]) / rpm0), np.mean((r.CT - CT[m]) / CT0)))
+    return rows
+
+
+def main() -> None:
+    names = sorted(n for n, e in catalogue().items() if e.static_files and e.sweep_files)
+    with ProcessPoolExecutor(2) as ex:
+        df = pd.DataFrame([r for rows in ex.map(biases, names) for r in rows],
+                          columns=["name", "family", "kind", "ln_rpm_ratio", "bias"])
+    for kind in ("fit", "blind"):
+        d = df[df.kind == kind]
+        slope = d.groupby("name").apply(lambda g: np.polyfit(g.ln_rpm_ratio, g.bias, 1)[0] if len(g) > 1 else np.nan,
+                                        include_groups=False)
+        family = d.groupby("name").family.first()
+        print(f"{kind}: median slope of the held-out bias against ln(rpm / lowest rpm) {np.nanmedian(slope):+.3f} "
+              f"({slope.notna().sum()} propellers); per family (median, count):")
+        per = slope.groupby(family).agg(["median", "count"]).sort_values("median")
+        print("  " + "; ".join(f"{f} {m:+.3f} ({int(c)})" for f, (m, c) in per.iterrows()))
+
+
+if __name__ == "__main__":
+    main()
