@@ -179,7 +179,7 @@ def test_derivative_errors(prop):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
     from dataclasses import replace
 
-    with pytest.raises(ValueError, match="uniform inflow and rigid blades"):
+    with pytest.raises(ValueError, match="uniform inflow without swirl"):
         pm.rotor_loads(prop, replace(g, inflow="pitt-peters"), 800.0, 5.0, 0.5, derivatives=True)
     with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
         pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
@@ -256,9 +256,13 @@ def test_section_parameter_derivatives(prop, model):
         pm.rotor_loads(prop, pm.generic_params(), 800.0, 0.0, 0.0, derivatives=("re_ref",))
     with pytest.raises(ValueError, match="unknown input or parameter 'nonsense'"):
         pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, derivatives=("nonsense",))
-    # flapping enters no section constant: refused, not a derivative of 0
-    with pytest.raises(ValueError, match="flap_compliance are not supported"):
-        pm.rotor_loads(prop, g, 800.0, 8.0, 1.0, derivatives=("flap_compliance",))
+    # rigid blades: the flapping's loads are quadratic in the compliance, so its derivative is 0
+    r = pm.rotor_loads(prop, g, 800.0, 8.0, 1.0, derivatives=("flap_compliance",))
+    h = 1e-4
+    a = pm.rotor_loads(prop, g.replace(flap_compliance=h), 800.0, 8.0, 1.0)
+    for q in ("thrust", "drag", "torque", "rolling_moment"):
+        assert float(r.derivative(q, "flap_compliance")) == 0.0
+        assert abs(float(getattr(a, q) - getattr(r, q))) / h < 1e-4 * abs(float(r.thrust))  # O(h): a quadratic
     with pytest.raises(ValueError, match="must be a sequence of names"):
         pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
 
@@ -635,3 +639,48 @@ def test_implicit_derivatives_match_tightly_converged_differences(prop, params, 
             floor = 1e-3 * np.array([base[0], base[0], base[2]]) / (1.0 if wrt == "incidence" else [om, V, 1][k])
             np.testing.assert_array_less(np.abs(got - fd), 5e-6 * np.maximum(np.abs(fd), np.abs(floor)),
                                          err_msg=f"{om} rad/s, {V} m/s, {math.degrees(b):.0f} deg, {wrt}")
+
+
+@pytest.mark.parametrize("model", ["cambered", "gill2017"])
+def test_flapping_blades_derivatives_against_differences(prop, model):
+    """Flapping (core/flapping.py) acts on the converged rigid loads: the chain rule of
+    core/flapping.flapping_derivatives gives the flapping rotor's T, D, Q and M_R derivatives,
+    the compliance's and the lift slope's (which sets the flap damping) included, within 1e-5 of
+    central differences of the solver (off the kink at exactly 90 deg, docs/solver.md)."""
+    base = pm.generic_params() if model == "cambered" else pm.preset("gill2017-apc").replace(M=30.0)
+    p = base.replace(flap_compliance=2.0)
+    slope = "cl_alpha" if model == "cambered" else "cl1"
+    om, V, b = np.array([600.0, 800.0, 1000.0]), np.array([5.0, 10.0, 8.0]), np.radians([30.0, 88.0, 150.0])
+    wrt = ("omega", "airspeed", "incidence", "collective", "rho", "flap_compliance", slope)
+    r = pm.rotor_loads(prop, p, om, V, b, derivatives=wrt, discretization=DISC)
+    steps = {"omega": 1e-2, "airspeed": 1e-4, "incidence": 1e-6, "collective": 1e-6, "rho": 1e-5,
+             "flap_compliance": 1e-5, slope: 1e-5}
+
+    def moved(w, h):
+        kw = dict(discretization=DISC)
+        if w == "omega":
+            return pm.rotor_loads(prop, p, om + h, V, b, **kw)
+        if w == "airspeed":
+            return pm.rotor_loads(prop, p, om, V + h, b, **kw)
+        if w == "incidence":
+            return pm.rotor_loads(prop, p, om, V, b + h, **kw)
+        if w == "collective":
+            return pm.rotor_loads(prop, p, om, V, b, collective=h, **kw)
+        if w == "rho":
+            return pm.rotor_loads(prop, p, om, V, b, air=pm.Air(rho=p.air.rho + h), **kw)
+        return pm.rotor_loads(prop, p.replace(**{w: getattr(p, w) + h}), om, V, b, **kw)
+
+    assert np.all(np.abs(r.flap_1c) > 1e-3)  # the blades do flap
+    for w in wrt:
+        hi, lo = moved(w, steps[w]), moved(w, -steps[w])
+        for q in ("thrust", "drag", "torque", "rolling_moment"):
+            fd = (getattr(hi, q) - getattr(lo, q)) / (2 * steps[w])
+            assert np.max(np.abs(r.derivative(q, w) - fd)) <= 1e-5 * np.max(np.abs(fd)) + 1e-12, (w, q)
+    with pytest.raises(ValueError, match="flapping rotor's wrench are not implemented"):
+        pm.rotor_wrench(prop, p, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("omega",))
+    from importlib import resources
+
+    vehicle = pm.read_vehicle(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml")
+    with pytest.raises(ValueError, match="flapping rotors' wrenches are not implemented"):
+        pm.vehicle_wrench(vehicle, p, velocity=[5.0, 0.0, 0.0], angular_velocity=[0.0, 0.0, 0.0],
+                          rotor_omega=[1200.0] * 4, derivatives=("omega",))

@@ -12,6 +12,7 @@ import numpy as np
 
 from . import _physics as ph
 from .airfoil import RECORD_META, SectionParams, _model_constants
+from .flapping import COMPLIANCE
 from .nodes import _cambered_args, _nodes
 
 __all__ = ["DERIVATIVE_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS", "PARAM_FLOOR",
@@ -30,7 +31,7 @@ STILL_AIR = "_still_air"
 _ODD_LOADS = ("drag", "rolling_moment")
 
 
-def differentiable(params: SectionParams, names) -> bool:
+def differentiable(params: SectionParams, names, *, flapping: bool = False) -> bool:
     """Whether :func:`rotor_loads` gives implicit derivatives of ``params``'s loads with respect
     to every name in ``names`` (what the fits ask before using them).
 
@@ -39,18 +40,25 @@ def differentiable(params: SectionParams, names) -> bool:
     params : AirfoilParams or CamberedParams
     names : sequence of str
         Inputs (:data:`DERIVATIVE_INPUTS`), ``"rho"`` or section parameters' names.
+    flapping : bool
+        Whether the caller needs only :data:`DERIVATIVE_LOADS` (a loads fit), which
+        :func:`rotor_loads` also gives for flapping blades and with respect to
+        ``flap_compliance`` (core/flapping.flapping_derivatives); not a wrench, whose side
+        force and pitching moment a flapping rotor has too (False: flapping blades and that
+        name make it False).
 
     Returns
     -------
     bool
-        False for a linear inflow model, flapping blades or swirl, or a name that is not a numeric
-        field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text);
-        the rotation rates' range is the caller's to check (>= 0.1 rad/s).
+        False for a linear inflow model or swirl, flapping blades unless ``flapping``, or a
+        name that is not a numeric field entering the section's constants
+        (:data:`NOT_CONSTANTS`, switches, text; ``flap_compliance`` with ``flapping``); the
+        rotation rates' range is the caller's to check (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform" or params.flap_compliance > 0 or params.swirl:
+    if params.inflow != "uniform" or params.swirl or (params.flap_compliance > 0 and not flapping):
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
-    return all(n in DERIVATIVE_INPUTS or n == RHO
+    return all(n in DERIVATIVE_INPUTS or n == RHO or (flapping and n == COMPLIANCE)
                or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
 
 
@@ -72,10 +80,10 @@ def _derivative_inputs(derivatives, params) -> tuple:
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
-    if params.inflow != "uniform" or params.flap_compliance > 0 or params.swirl:
-        raise ValueError("derivatives are implemented for the uniform inflow and rigid blades without swirl (the "
-                         f"paper's rotor, with or without the radial drag); this set has inflow={params.inflow!r}, "
-                         f"flap_compliance={params.flap_compliance:g}, swirl={params.swirl}")
+    if params.inflow != "uniform" or params.swirl:
+        raise ValueError("derivatives are implemented for the uniform inflow without swirl (the paper's rotor, "
+                         f"with or without the radial drag and flapping); this set has inflow={params.inflow!r}, "
+                         f"swirl={params.swirl}")
     return wrt
 
 
@@ -99,8 +107,9 @@ def _parameter_constants(names, params, air):
     ValueError
         A parameter that is not a number, one that changes the blade's nodes (the
         Reynolds reference, the Blasius factor, the loss switches; ``collective`` is the
-        input of that name) rather than the section's constants, ``flap_compliance``
-        (flapping is not differentiated), or one that admits no step within its range.
+        input of that name) rather than the section's constants, ``flap_compliance`` (not a
+        constant: rotor_loads differentiates the flapping itself, core/flapping.py), or one
+        that admits no step within its range.
     """
     from ._sensitivity import ONE_SIDED
 
@@ -109,9 +118,8 @@ def _parameter_constants(names, params, air):
     cams = np.empty((n, 8))
     step = np.empty(n)
     for k, name in enumerate(names):
-        if name == "flap_compliance":  # enters neither pk nor cam: its difference would say 0
-            raise ValueError("derivatives with respect to flap_compliance are not supported: flapping is not "
-                             "differentiated")
+        if name == COMPLIANCE:  # enters neither pk nor cam: rotor_loads differentiates the flapping itself
+            raise ValueError("flap_compliance is not a section constant (core/flapping.flapping_derivatives)")
         if name in NOT_CONSTANTS:
             raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
                              "not the section's constants (for the blade angle, use 'collective')")

@@ -45,7 +45,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["FlapResult", "flap_damping", "flapping"]
+__all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "COMPLIANCE"]
+
+#: the name of the flap compliance 1 / K_beta among the derivatives' inputs
+COMPLIANCE = "flap_compliance"
 
 
 class FlapResult(NamedTuple):
@@ -116,3 +119,68 @@ def flapping(thrust, drag, side_force, rolling_moment, pitching_moment, damping,
     half = 0.5 * n_blades * K
     return FlapResult(drag=np.asarray(drag) - T * b1c, side_force=np.asarray(side_force) - T * b1s,
                       rolling_moment=half * b1s, pitching_moment=-half * b1c, beta_1c=b1c, beta_1s=b1s)
+
+
+def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance: float, n_blades: int, *, omega,
+                         rho: float, lift_slope: tuple) -> dict:
+    """The flapping rotor's load derivatives from the rigid rotor's, by the chain rule.
+
+    :func:`flapping` is applied to the converged rigid loads and changes only the drag and
+    the rolling moment among the differentiated loads. With the uniform inflow (the only
+    inflow the derivatives cover) the rigid pitching moment and side force vanish, so with
+    M_1s = 2 M_R / N_b, det = K^2 + D_beta^2 and g = D_beta M_1s / det:
+
+        D_flap = D + T g,   M_R,flap = K^2 M_R / det,
+
+    and D_beta = (rho a / 2) Omega^2 int c r^3 dr changes with Omega, rho and the lift slope a.
+    With respect to the compliance c = 1 / K (dK/dc = -K^2): dD_flap/dc = 2 K^3 T D_beta
+    M_1s / det^2 and dM_R,flap/dc = -2 K^3 M_R D_beta^2 / det^2; thrust, torque and the mean
+    inflow do not depend on it.
+
+    Parameters
+    ----------
+    jac : dict
+        {(load, name): derivative} of the rigid rotor (core/derivatives._jacobian), loads
+        among ``thrust, drag, torque, rolling_moment, v_i_mean``; flat arrays of N points.
+        Changed in place and returned, with ``(load, "flap_compliance")`` added when
+        ``COMPLIANCE`` is among the names (pass its entries as zeros).
+    thrust, rolling_moment : ndarray, shape (N,)
+        The rigid rotor's T [N] and M_R [N m].
+    damping : ndarray, shape (N,)
+        D_beta [N m/rad] (:func:`flap_damping`).
+    compliance : float
+        1 / K_beta [rad/(N m)], > 0.
+    n_blades : int
+    omega : ndarray, shape (N,)
+        Rotation rates [rad/s] (D_beta grows as Omega^2).
+    rho : float
+        Air density [kg/m^3] (D_beta grows with it).
+    lift_slope : (str, float)
+        The parameter that is the lift slope a of D_beta (``cl_alpha``, ``cl1`` or ``cl2``;
+        core/nodes._lift_slope) and its value [1/rad].
+
+    Returns
+    -------
+    dict
+        ``jac`` with the flapping rotor's drag and rolling-moment derivatives.
+    """
+    K = 1.0 / compliance
+    T, Db = np.asarray(thrust), np.asarray(damping)
+    M1s = 2.0 * np.asarray(rolling_moment) / n_blades
+    det = K * K + Db * Db
+    g = Db * M1s / det
+    # dD_beta/dx of what it depends on
+    a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: Db / lift_slope[1]}
+    names = {w for (_, w) in jac}
+    for w in names:
+        if w == COMPLIANCE:
+            jac[("drag", w)] = 2.0 * K**3 * T * Db * M1s / det**2
+            jac[("rolling_moment", w)] = -2.0 * K**3 * np.asarray(rolling_moment) * Db * Db / det**2
+            continue
+        dDb = a.get(w, 0.0)
+        dM1s = 2.0 * jac[("rolling_moment", w)] / n_blades
+        dg = (dDb * M1s + Db * dM1s) / det - g * 2.0 * Db * dDb / det
+        jac[("drag", w)] = jac[("drag", w)] + jac[("thrust", w)] * g + T * dg
+        jac[("rolling_moment", w)] = K * K * (jac[("rolling_moment", w)] - np.asarray(rolling_moment) * 2.0 * Db
+                                               * dDb / det) / det
+    return jac

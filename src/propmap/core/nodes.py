@@ -87,12 +87,17 @@ def _nodes(prop: Propeller, n_radial: int, n_azimuth: int, air: Air, params: Sec
     return out
 
 
-def _lift_slope(params: SectionParams) -> float:
-    """Attached-flow lift slope of the section [1/rad]: cl_alpha (cambered), c_l1 (eq 3) or,
-    for footnote 1's sin-cos lift, c_l2 (its slope at alpha = 0)."""
+def _lift_slope_name(params: SectionParams) -> str:
+    """The parameter that is the section's attached-flow lift slope: cl_alpha (cambered), cl1
+    (eq 3) or, for footnote 1's sin-cos lift, cl2 (its slope at alpha = 0)."""
     if isinstance(params, CamberedParams):
-        return params.cl_alpha
-    return params.cl2 if params.lift_model == "sincos" else params.cl1
+        return "cl_alpha"
+    return "cl2" if params.lift_model == "sincos" else "cl1"
+
+
+def _lift_slope(params: SectionParams) -> float:
+    """Attached-flow lift slope of the section [1/rad] (:func:`_lift_slope_name`)."""
+    return getattr(params, _lift_slope_name(params))
 
 
 #: the kernel's model arguments of recent (propeller, params, air, discretization), by identity:

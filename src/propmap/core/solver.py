@@ -16,11 +16,11 @@ import numpy as np
 from . import _flags, _kernel
 from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
-from .derivatives import _derivative_inputs, _jacobian, differentiable
-from .flapping import flap_damping, flapping
+from .derivatives import DERIVATIVE_LOADS, _derivative_inputs, _jacobian, differentiable
+from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives
 from .geometry import Propeller
 from .loads import RotorLoads, _new_loads
-from .nodes import _lift_slope, _prepared
+from .nodes import _lift_slope, _lift_slope_name, _prepared
 
 __all__ = [
     "Discretization",
@@ -245,11 +245,12 @@ def rotor_loads(
         ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
-        ``params`` other than :data:`~propmap.core.derivatives.NODE_FIELDS` and ``flap_compliance``) and ``"rho"``
-        (the air density [kg/m^3]). By the implicit function theorem on each annulus'
-        converged root (core/_sensitivity.py), not by differencing the
-        solver; for the uniform inflow and rigid blades (the paper's rotor) and Omega >=
-        0.1 rad/s. False (default): none.
+        ``params`` other than :data:`~propmap.core.derivatives.NODE_FIELDS`), ``"rho"``
+        (the air density [kg/m^3]) and ``"flap_compliance"``. By the implicit function
+        theorem on each annulus' converged root (core/_sensitivity.py), not by differencing
+        the solver, and for flapping blades the chain rule through the flapping
+        (core/flapping.flapping_derivatives); for the uniform inflow without swirl and
+        Omega >= 0.1 rad/s. False (default): none.
 
     Returns
     -------
@@ -265,8 +266,8 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`~propmap.core.derivatives.NODE_FIELDS`) or ``flap_compliance``, a linear inflow model or flapping
-        blades, an Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model or swirl, an
+        Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
@@ -345,6 +346,7 @@ def rotor_loads(
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
             f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
         )
+    rigid = (T, D, Q, R)  # (rows of out: flapping below returns new arrays)
     if params.flap_compliance > 0:
         damping = flap_damping(air.rho, _lift_slope(params), float(nd.chord_r3), om1)
         D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
@@ -371,9 +373,16 @@ def rotor_loads(
             return a.reshape(shape)
     jac = None
     if wrt:
-        jac = {k: s(a) for k, a in _jacobian(wrt, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam,
-                                                 empirical, params, air, propeller, discretization,
-                                                 (T, D, Q, R)).items()}
+        solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
+        raw = (_jacobian(solved, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam, empirical, params, air,
+                         propeller, discretization, rigid) if solved else {})
+        if COMPLIANCE in wrt:  # (0 for rigid blades: the flapping's loads are quadratic in it there)
+            raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
+        if params.flap_compliance > 0:
+            raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
+                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params),
+                                                                           _lift_slope(params)))
+        jac = {k: s(a) for k, a in raw.items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),

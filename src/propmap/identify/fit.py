@@ -34,8 +34,8 @@ from ..vehicle import Vehicle
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
-from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, INPLANE_FIT, MIN_RATES_FOR_RE,
-                      STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle, param_names)
+from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
+                      MIN_RATES_FOR_RE, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle, param_names)
 from .result import FitResult, Identifiability
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
@@ -374,7 +374,8 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
             return errors(r), weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names])
                                                   / norm[k][:, None] / scales[k] for k in keys])
 
-        if opts.jacobian == "implicit" and differentiable(base, names) and np.all(data.omega >= OMEGA_MIN):
+        if (opts.jacobian == "implicit" and differentiable(base, names, flapping=True)
+                and np.all(data.omega >= OMEGA_MIN)):
             _attach_jacobian(residual, with_jacobian)  # (a parked point, below OMEGA_MIN, has no derivatives)
         return residual
 
@@ -442,6 +443,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     inplane = options.names is None and isinstance(base, CamberedParams) and _measures_inplane_force(data, keys)
     if inplane:  # the flapping carries the in-plane force (outside the prior: the directions do not apply)
         names = (*names, *(n for n in INPLANE_FIT if n not in names))
+        if base.flap_compliance == 0.0:  # rigid blades: the loads are quadratic in the compliance, flat there
+            base = base.replace(flap_compliance=FLAP_START)
     k_dirs = _direction_count(options, base, data, kind, names)
     free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
     if data.n * len(keys) <= free:

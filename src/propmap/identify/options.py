@@ -14,7 +14,8 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
            "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
-           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT"]
+           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT",
+           "FLAP_START"]
 
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
@@ -50,6 +51,10 @@ CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
 #: (Drones 2019; docs/identification.md): held-out D 2-4% -> 0.4-0.8% of static thrust, T 5-8% ->
 #: 2-6%, Q 17-27% -> 3-11% of static torque
 INPLANE_FIT = ("flap_compliance",)
+#: the compliance such a fit starts from when the base's blades are rigid [rad/(N m)]: at 0 the
+#: loads are quadratic in it (their derivative is 0) and the flapping responds near 1 / D_beta,
+#: 0.5-5 rad/(N m) for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
+FLAP_START = 1.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
