@@ -18,6 +18,7 @@ from propmap.identify import FitOptions, LoadData, fit_loads
 from propmap.identify.fit import CAMBERED_FIT, _measures_inplane_force
 from propmap.identify.options import INPLANE_FIT
 from propmap.io.calibration import generic_params, generic_without, population
+from propmap.validation import holdout_loads
 
 AIR = pm.Air(rho=1.225)
 
@@ -80,21 +81,21 @@ def test_held_out_incidence_of_the_apc_10x7e_in_oblique_flow():
     name = "apce_10x7"
     prop, data = pm.load_propeller(name), gill2019_loads(name, air=AIR)
     base, pop = generic_without(name)[0], population(without=name)
-    static = data.airspeed == 0
-    T0, Q0 = data.measured["thrust"][static].mean(), data.measured["torque"][static].mean()
-    held = np.isclose(data.incidence, math.radians(60))
-    errors = {}
-    for label, names in (("rigid", CAMBERED_FIT), ("default", None)):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            p = fit_loads(data.subset(~held), prop, base=base, air=AIR,
-                          options=FitOptions(population=pop, names=names)).params
-        r = pm.rotor_loads(prop, p, data.omega[held], data.airspeed[held], data.incidence[held], air=AIR)
-        errors[label] = [float(np.sqrt(np.mean(e**2))) for e in
-                         ((r.drag - data.measured["drag"][held]) / T0, (r.thrust - data.measured["thrust"][held]) / T0,
-                          (r.torque - data.measured["torque"][held]) / Q0)]
-    assert errors["default"][0] < 0.01 and errors["default"][0] < errors["rigid"][0] / 4  # in-plane force
-    assert errors["default"][1] < 0.8 * errors["rigid"][1] and errors["default"][2] < errors["rigid"][2] / 2
+    folds = [~np.isclose(data.incidence, math.radians(60))]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rigid, default = (holdout_loads(data, prop, base, folds, names=names, population=pop, air=AIR)
+                          for names in (CAMBERED_FIT, None))
+    assert default["rms_drag"] < 0.01 and default["rms_drag"] < rigid["rms_drag"] / 4  # in-plane force
+    assert default["rms_thrust"] < 0.8 * rigid["rms_thrust"] and default["rms_torque"] < rigid["rms_torque"] / 2
+    assert rigid["flap_compliance"] == [0.0] and 2.0 < default["flap_compliance"][0] < 10.0
+    assert default["n_points"] == int(np.sum(~folds[0]))
+    with pytest.raises(ValueError, match="training and held-out"):
+        holdout_loads(data, prop, base, [np.ones(data.n, bool)])
+    with pytest.raises(ValueError, match="missing drag"):
+        holdout_loads(LoadData(data.omega, data.airspeed, data.incidence, {"thrust": data.measured["thrust"],
+                                                                           "torque": data.measured["torque"]},
+                               data.group), prop, base, folds)
 
 
 def test_cli_fit_of_a_wind_tunnel_csv_at_incidence_writes_the_flapping(capsys, tmp_path):

@@ -264,6 +264,58 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
                     f"{name}: Gill & D'Andrea 2019 (Drones 3(4):77), Appendix A multinomial model")
 
 
+#: the fits :func:`gill2019_incidence_fits` compares: the section alone (a rigid rotor) and the defaults
+GILL2019_FITS = {"section alone (rigid)": ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2"),
+                 "default (section + flapping)": None}
+
+
+def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -> dict:
+    """Fits to the gill2019 propellers' loads at incidence (:func:`gill2019_loads`), held out.
+
+    Each propeller's loads are fitted from the generic set without its family and under that
+    fold's prior (as validation does), once with the section's five level parameters alone
+    and once with the defaults, which also free the flapping (identify.options.INPLANE_FIT),
+    and predicted where they were held out (:func:`propmap.validation.holdout_loads`).
+
+    Parameters
+    ----------
+    protocol : {"incidence", "speed"}
+        ``"incidence"``: each incidence 15-90 deg held out in turn; ``"speed"``: the total
+        advance ratios 0.16-0.24 predicted from those up to 0.12.
+    rpm : sequence of float
+        As :func:`gill2019_loads`.
+
+    Returns
+    -------
+    dict
+        propeller -> fit label (GILL2019_FITS) -> :func:`~propmap.validation.holdout_loads`'s dict.
+
+    Raises
+    ------
+    ValueError
+        An unknown protocol, or as :func:`gill2019_loads`.
+    """
+    from .io.calibration import generic_without, population
+    from .io.catalogue import load_propeller
+    from .validation import holdout_loads
+
+    if protocol not in ("incidence", "speed"):
+        raise ValueError(f"protocol must be 'incidence' or 'speed', got {protocol!r:.60}")
+    air = Air(rho=1.225)
+    out = {}
+    for name in gill2019_coefficients():
+        prop, data = load_propeller(name), gill2019_loads(name, rpm, air=air)
+        inc = np.round(np.degrees(data.incidence)).astype(int)
+        if protocol == "speed":
+            folds = [data.airspeed / (data.omega * prop.radius) < 0.14]
+        else:
+            folds = [inc != held for held in sorted(set(inc[inc > 0]))]
+        base, pop = generic_without(name)[0], population(without=name)
+        out[name] = {label: holdout_loads(data, prop, base, folds, names=names, population=pop, air=air)
+                     for label, names in GILL2019_FITS.items()}
+    return out
+
+
 def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air = Air()) -> dict[str, float]:
     """propmap's loads fitted with Gill & D'Andrea's (2019, Sec. 5) multinomial model.
 

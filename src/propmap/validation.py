@@ -8,6 +8,8 @@
   out, static-only calibration, static + lowest-rpm sweep, blind prediction with a generic
   set that never saw the propeller), in the metric rms |dCT| / static CT and
   |dCP| / static CP.
+* :func:`holdout_loads`: held-out errors of fits to load data at incidence (thrust, in-plane
+  force, torque), each fold's training points fitted with the defaults or given names.
 
 Measurements: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255).
 """
@@ -24,7 +26,8 @@ from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from .io.catalogue import CatalogueEntry
 
-__all__ = ["SweepComparison", "Validation", "validate", "coefficient_errors", "cross_validate", "PROTOCOLS"]
+__all__ = ["SweepComparison", "Validation", "validate", "coefficient_errors", "cross_validate", "holdout_loads",
+           "PROTOCOLS"]
 
 
 @dataclass(frozen=True)
@@ -375,3 +378,65 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
                          "bias_ct": float(np.mean(dct)), "bias_cp": float(np.mean(dcp)), "n_points": int(dct.size),
                          "n_fits": sum(t is not None for t, _ in splits)}
     return out
+
+
+def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, names=None, population: dict | None = None,
+                  air: Air | None = None) -> dict:
+    """Held-out errors of fits to load data with thrust, in-plane force and torque.
+
+    Each fold's training points are fitted with :func:`propmap.identify.fit_loads` (from
+    ``base``, under ``population``'s prior, ``names`` or the defaults, which free the flapping
+    where the data measure the in-plane force at incidence) and its held-out points predicted.
+
+    Parameters
+    ----------
+    data : LoadData
+        With ``thrust``, ``drag`` and ``torque`` measured, and static points (airspeed 0).
+    propeller : Propeller
+    base : AirfoilParams or CamberedParams
+    folds : sequence of array_like of bool
+        Each fold's training mask, shape (N,); its complement is predicted (not empty).
+    names : tuple of str, optional
+        The parameters to fit (default: the fit's own choice).
+    population : dict, optional
+        The prior's statistics (io.calibration.population).
+    air : Air, optional
+        Default: ``base.air``.
+
+    Returns
+    -------
+    dict
+        ``rms_thrust`` and ``rms_drag`` (of the mean measured static thrust), ``rms_torque``
+        (of the static torque), pooled over the folds' held-out points; ``flap_compliance``,
+        each fold's fitted value [rad/(N m)]; ``n_points``.
+
+    Raises
+    ------
+    ValueError
+        A quantity not measured, no static point, an empty fold, or as ``fit_loads``.
+    SolverError
+        From the model.
+    """
+    from .identify import FitOptions, fit_loads
+
+    air = base.air if air is None else air
+    missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
+    static = data.airspeed == 0
+    if missing or not static.any():
+        raise ValueError(f"holdout_loads needs thrust, drag and torque and static points; missing "
+                         f"{', '.join(missing) or 'static points'}")
+    T0, Q0 = float(np.mean(data.measured["thrust"][static])), float(np.mean(data.measured["torque"][static]))
+    err = {"thrust": [], "drag": [], "torque": []}
+    compliance = []
+    for train in folds:
+        train = np.asarray(train, bool)
+        if train.all() or not train.any():
+            raise ValueError("every fold needs training and held-out points")
+        p = fit_loads(data.subset(train), propeller, base=base, air=air,
+                      options=FitOptions(population=population, names=names)).params
+        compliance.append(float(p.flap_compliance))
+        r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air)
+        for k, scale in (("thrust", T0), ("drag", T0), ("torque", Q0)):
+            err[k].append((getattr(r, k) - data.measured[k][~train]) / scale)
+    out = {f"rms_{k}": float(np.sqrt(np.mean(np.concatenate(v) ** 2))) for k, v in err.items()}
+    return {**out, "flap_compliance": compliance, "n_points": int(sum(len(v) for v in err["thrust"]))}

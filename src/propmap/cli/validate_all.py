@@ -209,12 +209,24 @@ def run_cases() -> dict:
     return out
 
 
+def run_incidence_fits() -> dict:
+    """:func:`propmap.cases.gill2019_incidence_fits` (leave one incidence out), the fits' bound
+    warnings kept out of the report (the flapping at its bound is in the numbers)."""
+    import warnings
+
+    from ..cases import gill2019_incidence_fits
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return gill2019_incidence_fits()
+
+
 def _pct(x: float) -> str:
     return f"{100 * x:5.1f}%"
 
 
-def print_report(cat: dict, cases: dict) -> None:
-    """The per-propeller and summary tables, then the published cases."""
+def print_report(cat: dict, cases: dict, incidence: dict | None = None) -> None:
+    """The per-propeller and summary tables, then the published cases and the fits at incidence."""
     from ..validation import PROTOCOL_TEXT
 
     protos = [k for k in PROTOCOLS if k in cat["summary"]]
@@ -246,6 +258,14 @@ def print_report(cat: dict, cases: dict) -> None:
         click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
         for label, m in res.metrics.items():
             click.echo(f"    {label:<32} " + ", ".join(f"{k} {v:.4g}" for k, v in m.items()))
+    if incidence:
+        click.echo("\nfits to loads at incidence, leave one incidence out (gill2019's published fits as loads, 5000 "
+                   "and 7000 rpm; rms held-out T and D of static T, Q of static Q; docs/identification.md):")
+        for name, by_fit in incidence.items():
+            for label, e in by_fit.items():
+                c = e["flap_compliance"]
+                click.echo(f"  {name:<13} {label:<28} T {_pct(e['rms_thrust'])}  D {_pct(e['rms_drag'])}  "
+                           f"Q {_pct(e['rms_torque'])}  flap compliance {min(c):.3g}-{max(c):.3g} rad/(N m)")
 
 
 def _csv(path: Path, cat: dict) -> None:
@@ -289,8 +309,9 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
     from ..validation import PROTOCOL_TEXT
 
     cases = run_cases()
+    incidence = run_incidence_fits()
     case_json = {c: {"metrics": r.metrics, "citation": r.citation, "notes": r.notes} for c, r in cases.items()}
-    report = {"catalogue": cat, "cases": case_json, "targets": TARGETS,
+    report = {"catalogue": cat, "cases": case_json, "incidence_fits": incidence, "targets": TARGETS,
               "protocols": {k: PROTOCOL_TEXT[k] for k in protocols},
               "units": "rms errors as fractions of the propeller's measured static CT / CP"}
     if out_dir is not None:
@@ -304,7 +325,7 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
     if as_json:
         echo_json(report)
     else:
-        print_report(cat, cases)
+        print_report(cat, cases, incidence)
         if out_dir is not None:
             click.echo(f"\nwrote {out_dir / 'validation.json'}, validation_per_propeller.csv, cross_validation.png, "
                        "published_cases.png")
