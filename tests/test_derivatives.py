@@ -684,3 +684,13 @@ def test_flapping_blades_derivatives_against_differences(prop, model):
     with pytest.raises(ValueError, match="flapping rotors' wrenches are not implemented"):
         pm.vehicle_wrench(vehicle, p, velocity=[5.0, 0.0, 0.0], angular_velocity=[0.0, 0.0, 0.0],
                           rotor_omega=[1200.0] * 4, derivatives=("omega",))
+    # rigid blades too, with respect to the compliance: the side force and pitching moment are linear in it
+    with pytest.raises(ValueError, match="flapping rotor's wrench are not implemented"):
+        pm.rotor_wrench(prop, base, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("flap_compliance",))
+    with pytest.raises(ValueError, match="flapping rotors' wrenches are not implemented"):
+        pm.vehicle_wrench(vehicle, base, velocity=[5.0, 0.0, 0.0], angular_velocity=[0.0, 0.0, 0.0],
+                          rotor_omega=[1200.0] * 4, derivatives=("flap_compliance",))
+    # a zero lift slope (the damping's factor is passed, not divided out): finite derivatives
+    flat = pm.rotor_loads(prop, p.replace(**{slope: 0.0}) if model == "gill2017" else p, 800.0, 8.0, 1.0,
+                          derivatives=(slope,), discretization=DISC)
+    assert np.isfinite(float(flat.derivative("drag", slope)))

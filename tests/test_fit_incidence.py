@@ -45,6 +45,8 @@ def test_the_rule_asks_for_the_in_plane_force_at_incidence(apc8x6):
     assert not _measures_inplane_force(d, ["thrust", "torque"])  # drag measured, not fitted
     axial = d.subset(d.incidence == 0)
     assert not _measures_inplane_force(axial, ["thrust", "drag", "torque"])  # D = 0 there: says nothing
+    descent = LoadData(axial.omega, axial.airspeed, np.full(axial.n, math.pi), axial.measured, axial.group)
+    assert not _measures_inplane_force(descent, ["thrust", "drag", "torque"])  # sin(pi) ~ 1e-16: axial too
     unmeasured = LoadData(d.omega, d.airspeed, d.incidence, {**d.measured, "drag": np.full(d.n, np.nan)}, d.group)
     assert not _measures_inplane_force(unmeasured, ["thrust", "drag", "torque"])
 
@@ -126,5 +128,5 @@ def test_cli_fit_of_a_wind_tunnel_csv_at_incidence_writes_the_flapping(capsys, t
     r = pm.rotor_loads(pm.load_propeller("apce_8x8"), params, data.omega[edgewise], data.airspeed[edgewise],
                        math.pi / 2, air=AIR)
     assert float(r.drag[0]) == pytest.approx(float(data.measured["drag"][edgewise][0]), rel=0.05)
-    code = main(["loads", "apce_8x8", "--rpm", "5000", "--airspeed", "10", "--incidence-deg", "90", "--params", str(out)])
-    assert code == 0
+    assert main(["loads", "apce_8x8", "--rpm", "5000", "--airspeed", "10", "--incidence-deg", "90",
+                 "--params", str(out)]) == 0

@@ -43,7 +43,8 @@ def biases(name: str) -> list:
         m = np.isin(data.group, grp)
         for params, kind in ((fitted, "fit"), (generic, "blind")):
             r = pm.rotor_loads(prop, params, data.omega[m], data.airspeed[m], data.incidence[m])
-            rows.append((name, entry.family, kind, np.log(np.mean(data.omega[m]) / rpm0), np.mean((r.CT - CT[m]) / CT0)))
+            bias = np.mean((r.CT - CT[m]) / CT0)
+            rows.append((name, entry.family, kind, np.log(np.mean(data.omega[m]) / rpm0), bias))
     return rows
 
 
@@ -54,8 +55,8 @@ def main() -> None:
                           columns=["name", "family", "kind", "ln_rpm_ratio", "bias"])
     for kind in ("fit", "blind"):
         d = df[df.kind == kind]
-        slope = d.groupby("name").apply(lambda g: np.polyfit(g.ln_rpm_ratio, g.bias, 1)[0] if len(g) > 1 else np.nan,
-                                        include_groups=False)
+        slope = pd.Series({n: np.polyfit(g.ln_rpm_ratio, g.bias, 1)[0] if len(g) > 1 else np.nan
+                           for n, g in d.groupby("name")})
         family = d.groupby("name").family.first()
         print(f"{kind}: median slope of the held-out bias against ln(rpm / lowest rpm) {np.nanmedian(slope):+.3f} "
               f"({slope.notna().sum()} propellers); per family (median, count):")

@@ -225,7 +225,7 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
     name : str
         A catalogue propeller with published coefficients (:func:`gill2019_coefficients`).
     rpm : sequence of float
-        Rotation rates [rpm], each in [100, 50000].
+        Rotation rates [rpm], at least one, each in [100, 50000].
     air : Air
         The density that makes the coefficients dimensional.
 
@@ -247,7 +247,7 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
     if name not in published:
         raise ValueError(f"no published gill2019 coefficients for {name!r:.60}; known: {', '.join(published)}")
     rpm = np.atleast_1d(np.asarray(rpm, float))
-    if rpm.ndim != 1 or not np.all((rpm >= 100.0) & (rpm <= 50000.0)):
+    if rpm.ndim != 1 or rpm.size == 0 or not np.all((rpm >= 100.0) & (rpm <= 50000.0)):
         raise ValueError(f"rpm must be rotation rates in [100, 50000] rpm, got {rpm!r:.60}")
     c, R = published[name], load_propeller(name).radius
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))

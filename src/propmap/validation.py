@@ -435,7 +435,8 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         p = fit_loads(data.subset(train), propeller, base=base, air=air,
                       options=FitOptions(population=population, names=names)).params
         compliance.append(float(p.flap_compliance))
-        r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air)
+        r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air,
+                        collective=None if data.collective is None else data.collective[~train])
         for k, scale in (("thrust", T0), ("drag", T0), ("torque", Q0)):
             err[k].append((getattr(r, k) - data.measured[k][~train]) / scale)
     out = {f"rms_{k}": float(np.sqrt(np.mean(np.concatenate(v) ** 2))) for k, v in err.items()}

@@ -155,14 +155,20 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
         Rotation rates [rad/s] (D_beta grows as Omega^2).
     rho : float
         Air density [kg/m^3] (D_beta grows with it).
-    lift_slope : (str, float)
+    lift_slope : (str, ndarray)
         The parameter that is the lift slope a of D_beta (``cl_alpha``, ``cl1`` or ``cl2``;
-        core/nodes._lift_slope) and its value [1/rad].
+        core/nodes._lift_slope_name) and dD_beta/da = (rho / 2) Omega^2 int c r^3 dr
+        [N m], shape (N,) (:func:`flap_damping` with a = 1).
 
     Returns
     -------
     dict
         ``jac`` with the flapping rotor's drag and rolling-moment derivatives.
+
+    Raises
+    ------
+    ZeroDivisionError
+        ``compliance`` 0 (rigid blades have no flapping to differentiate: do not call).
     """
     K = 1.0 / compliance
     T, Db = np.asarray(thrust), np.asarray(damping)
@@ -170,7 +176,7 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
     det = K * K + Db * Db
     g = Db * M1s / det
     # dD_beta/dx of what it depends on
-    a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: Db / lift_slope[1]}
+    a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: np.asarray(lift_slope[1])}
     names = {w for (_, w) in jac}
     for w in names:
         if w == COMPLIANCE:

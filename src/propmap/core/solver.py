@@ -380,8 +380,8 @@ def rotor_loads(
             raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
         if params.flap_compliance > 0:
             raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
-                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params),
-                                                                           _lift_slope(params)))
+                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), flap_damping(
+                                           air.rho, 1.0, float(nd.chord_r3), om1)))
         jac = {k: s(a) for k, a in raw.items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(

@@ -143,8 +143,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         loads' shape S), or the ranges of :func:`rotor_loads`
         (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
         naming "airspeed" or "incidence" (ask for "velocity"), asked of flapping blades
-        (``flap_compliance > 0``: the side force's and pitching moment's are not
-        implemented), or refused by :func:`rotor_loads`.
+        (``flap_compliance > 0``) or with respect to ``flap_compliance`` (the side force's
+        and pitching moment's are not implemented), or refused by :func:`rotor_loads`.
     SolverError
         As :func:`rotor_loads`.
 
@@ -171,7 +171,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
                          f"'velocity', the velocity vector's Jacobian), got {derivatives!r:.60}")
-    if names and params.flap_compliance > 0:
+    if names and (params.flap_compliance > 0 or "flap_compliance" in names):
         raise ValueError("derivatives of a flapping rotor's wrench are not implemented (its side force and pitching "
                          "moment); rotor_loads gives those of its thrust, drag, torque and rolling moment")
     solve = dict(air=air, discretization=discretization, on_failure=on_failure)

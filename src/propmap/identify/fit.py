@@ -316,7 +316,8 @@ def _measures_inplane_force(data: LoadData, keys) -> bool:
     has an in-plane speed (V sin beta > 0): what identifies the flapping (INPLANE_FIT)."""
     if "drag" not in keys:
         return False
-    edgewise = (data.airspeed * np.abs(np.sin(data.incidence)) > 0) & np.isfinite(data.measured["drag"])
+    in_plane = data.airspeed * np.abs(np.sin(data.incidence))  # (axial below 1e-12 V, as the solver: sin(pi) ~ 1e-16)
+    edgewise = (in_plane > 1e-12 * data.airspeed) & np.isfinite(data.measured["drag"])
     return bool(edgewise.any())
 
 
@@ -455,7 +456,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     notes, outside, spent = [], [], (0, 0.0)
     if options.directions is not None and k_dirs == 0 and options.directions != 0:
         notes.append("directions ignored: they apply to the cambered model under the population prior with the "
-                     "default parameters, on load data other than a collective sweep")
+                     "default parameters (not with the flapping freed for the in-plane force), on load data other "
+                     "than a collective sweep")
     if k_dirs != 0:
         best, log, nfev, elapsed, warns, extra = _fit_along_directions(make_data, names, base, options, k_dirs)
         outside, spent = extra.pop("outside"), (nfev, elapsed)

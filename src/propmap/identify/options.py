@@ -48,12 +48,12 @@ CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
 #: in-plane force D at incidence: the blades' flapping tilts the thrust and carries the in-plane
 #: force that a rigid rotor under-predicts, instead of a section drag distorted to chase it.
 #: Leave one incidence out on the four propellers of Gill & D'Andrea's oblique-flow fits
-#: (Drones 2019; docs/identification.md): held-out D 2-4% -> 0.4-0.8% of static thrust, T 5-8% ->
-#: 2-6%, Q 17-27% -> 3-11% of static torque
+#: (Drones 2019; docs/identification.md): held-out D 1.9-4.4% -> 0.5-0.8% of static thrust, T 5.4-8.4% ->
+#: 3.7-5.6%, Q 18-27% -> 4.3-11% of static torque
 INPLANE_FIT = ("flap_compliance",)
 #: the compliance such a fit starts from when the base's blades are rigid [rad/(N m)]: at 0 the
 #: loads are quadratic in it (their derivative is 0) and the flapping responds near 1 / D_beta,
-#: 0.5-5 rad/(N m) for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
+#: 0.3-4 rad/(N m) for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
 FLAP_START = 1.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values

@@ -265,7 +265,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         An input that is not numbers, of the wrong shape, non-finite, samples counts that
         do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
         :func:`propmap.rotor_loads` (naming the input); ``derivatives`` with rotor
-        interference, with flapping rotors (``flap_compliance > 0``) or where
+        interference, with flapping rotors (``flap_compliance > 0``) or with respect to
+        ``flap_compliance``, or where
         :func:`propmap.rotor_loads` refuses them.
     SolverError
         As :func:`propmap.rotor_loads`.
@@ -291,7 +292,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
     wrt = _vehicle_derivatives(derivatives, vehicle)
-    if wrt and any((params if r.params is None else r.params).flap_compliance > 0 for r in vehicle.rotors):
+    if wrt and ("flap_compliance" in wrt
+                or any((params if r.params is None else r.params).flap_compliance > 0 for r in vehicle.rotors)):
         raise ValueError("derivatives of flapping rotors' wrenches are not implemented (their side force and "
                          "pitching moment); use flap_compliance = 0 or difference vehicle_wrench")
     if wrt and kappa > 0 and n_rot > 1:
