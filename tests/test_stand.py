@@ -270,3 +270,17 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
     # old Mac line ends (CR only): the separator is still read from the first line
     resaved.write_text("\r".join(text.replace(",", ";").replace(".", ",").splitlines()) + "\r", encoding="utf-8-sig")
     np.testing.assert_array_equal(read_loads(resaved).measured["thrust"], a.measured["thrust"])
+
+
+@pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force", "Rotor drag (N)"])
+def test_the_in_plane_force_is_read_by_its_wind_tunnel_names(tmp_path, header):
+    """A tunnel export names the in-plane force along the in-plane airspeed H, normal or in-plane
+    force or rotor drag: each is read as propmap's drag D (units converted)."""
+    factor = 1000 / 9.80665 if header == "h_force_gf" else 1.0
+    rows = [(5000.0, 5.0 * k, 90.0, 1.0 + 0.1 * k, 0.02 * k * factor, 0.02) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "t.csv", ["rpm", "airspeed", "incidence_deg", "thrust", header, "torque"],
+                             rows))
+    np.testing.assert_allclose(d.measured["drag"], [0.02 * k for k in range(1, 8)], rtol=1e-5)  # (6 digits written)
+    with pytest.raises(DataError, match="both give drag"):
+        read_loads(_rows_csv(tmp_path / "two.csv", ["rpm", "thrust", "drag", header], [r[:1] + r[3:5] + r[4:5]
+                                                                                         for r in rows]))

@@ -48,6 +48,11 @@ UNITS = {
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
     "thrust": ("thrust", "force"), "drag": ("drag", "force"), "torque": ("torque", "torque"),
+    # the in-plane force along the in-plane airspeed, by the names wind-tunnel tests give it
+    "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
+    "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),
+    "normal force": ("drag", "force"), "normal_force": ("drag", "force"), "rotor drag": ("drag", "force"),
+    "rotor_drag": ("drag", "force"),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
     "omega": ("rpm", "rotation"),
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
@@ -62,7 +67,8 @@ ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
 LOOKED_FOR = {
     "rpm": "rpm (or speed_rad_s, Motor Optical Speed (RPM), Motor Electrical Speed (RPM))",
-    "loads": "thrust, torque or drag, with or without a unit (thrust_kgf, Thrust (gf), torque_Nmm, Torque (N·m))",
+    "loads": "thrust, torque or drag (or H force, in-plane force, normal force, rotor drag), with or without a unit "
+             "(thrust_kgf, Thrust (gf), torque_Nmm, Torque (N·m))",
 }
 
 
