@@ -130,3 +130,17 @@ def test_cli_fit_of_a_wind_tunnel_csv_at_incidence_writes_the_flapping(capsys, t
     assert float(r.drag[0]) == pytest.approx(float(data.measured["drag"][edgewise][0]), rel=0.05)
     assert main(["loads", "apce_8x8", "--rpm", "5000", "--airspeed", "10", "--incidence-deg", "90",
                  "--params", str(out)]) == 0
+
+
+def test_holdout_loads_predicts_with_the_datas_collective(apc8x6):
+    """Points at several collectives (a variable-pitch rotor's sweep, synthetic from the generic set):
+    each held-out point is predicted at its own collective, so the set that made them scores ~0."""
+    base = generic_params()
+    d = synthetic(apc8x6, base, incidence_deg=(0.0, 45.0, 90.0), rpm=(6000.0,))
+    coll = np.radians(np.resize([-3.0, 0.0, 3.0], d.n))
+    res = pm.rotor_loads(apc8x6, base, d.omega, d.airspeed, d.incidence, collective=coll, air=AIR)
+    swept = LoadData(d.omega, d.airspeed, d.incidence, {"thrust": res.thrust, "drag": res.drag,
+                                                        "torque": res.torque}, d.group, collective=coll)
+    folds = [~np.isclose(d.incidence, math.radians(45))]
+    e = holdout_loads(swept, apc8x6, base, folds, names=("cd_min",), air=AIR)
+    assert max(e["rms_thrust"], e["rms_drag"], e["rms_torque"]) < 1e-6
