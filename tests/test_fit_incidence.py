@@ -6,6 +6,7 @@ oblique-flow fit of the APC 10x7E by Gill & D'Andrea (Drones 2019, Appendix A, d
 turned into loads by propmap.cases.gill2019_loads.
 """
 
+import json
 import math
 import warnings
 
@@ -14,6 +15,7 @@ import pytest
 
 import propmap as pm
 from propmap.cases import gill2019_loads
+from propmap.cli.main import main
 from propmap.identify import FitOptions, LoadData, fit_loads
 from propmap.identify.fit import CAMBERED_FIT, _measures_inplane_force
 from propmap.identify.options import INPLANE_FIT
@@ -104,8 +106,6 @@ def test_cli_fit_of_a_wind_tunnel_csv_at_incidence_writes_the_flapping(capsys, t
     """A loads CSV with drag at incidence (the APC 8x8E's published oblique-flow fit, 5000 rpm):
     `fit loads` says it fitted the flapping, writes it, and `loads` takes the file back with
     the in-plane force the fit found."""
-    from propmap.cli.main import main
-
     data = gill2019_loads("apce_8x8", (5000.0,), air=AIR)
     csv = tmp_path / "tunnel.csv"
     rows = ["rpm,airspeed,incidence_deg,thrust,drag,torque,group"]
@@ -117,8 +117,6 @@ def test_cli_fit_of_a_wind_tunnel_csv_at_incidence_writes_the_flapping(capsys, t
     code = main(["fit", "loads", str(csv), "--prop", "apce_8x8", "--rho", "1.225", "--out", str(out), "--json"])
     stdout, err = capsys.readouterr()
     assert code == 0, err
-    import json
-
     rep = json.loads(stdout)
     assert "flap_compliance" in rep["fitted"] and rep["fitted"]["flap_compliance"] > 1.0
     assert any("flap_compliance fitted too" in w for w in rep["warnings"])
