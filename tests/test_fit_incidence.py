@@ -142,3 +142,15 @@ def test_holdout_loads_predicts_with_the_datas_collective(apc8x6):
     folds = [~np.isclose(d.incidence, math.radians(45))]
     e = holdout_loads(swept, apc8x6, base, folds, names=("cd_min",), air=AIR)
     assert max(e["rms_thrust"], e["rms_drag"], e["rms_torque"]) < 1e-6
+
+
+def test_a_drag_column_of_the_other_sign_is_warned_of(apc8x6):
+    """The in-plane force written with the other sign convention (along the disk's motion): the
+    data check says so before the fit; the convention's own sign passes quietly."""
+    from propmap.identify.data import sanity_check
+
+    d = synthetic(apc8x6, generic_params())
+    assert sanity_check(d, apc8x6, air=AIR) == []
+    flipped = LoadData(d.omega, d.airspeed, d.incidence, {**d.measured, "drag": -d.measured["drag"]}, d.group)
+    warns = sanity_check(flipped, apc8x6, air=AIR)
+    assert len(warns) == 1 and "other sign than the model's in-plane force" in warns[0]

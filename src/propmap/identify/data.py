@@ -353,7 +353,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     Returns
     -------
     list of str
-        Warnings: a tip Mach number above 0.7 in the data.
+        Warnings: a tip Mach number above 0.7 in the data; a measured in-plane force (drag)
+        of the other sign than the model's at most points at incidence (propmap's D points
+        along the in-plane airspeed, against the disk's in-plane motion: docs/conventions.md).
 
     Raises
     ------
@@ -388,6 +390,16 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     def plausible(rat, lo=1 / SANITY_FACTOR, hi=SANITY_FACTOR):
         return all(lo <= v <= hi for v in rat.values())
 
+    if "drag" in data.measured:  # the sign convention of the in-plane force (a fit of the other sign is nonsense)
+        D = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                        collective=data.collective).drag
+        sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
+        opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
+        if sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
+            warnings_.append(f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
+                             f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
+                             "airspeed (against the disk's in-plane motion); negate the column if the file uses the "
+                             "other convention")
     ratio = ratios(data.omega)
     if plausible(ratio):
         return warnings_
