@@ -264,9 +264,9 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
                     f"{name}: Gill & D'Andrea 2019 (Drones 3(4):77), Appendix A multinomial model")
 
 
-#: the fits :func:`gill2019_incidence_fits` compares: the section alone (a rigid rotor) and the defaults
-GILL2019_FITS = {"section alone (rigid)": ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2"),
-                 "default (section + flapping)": None}
+#: the fits :func:`gill2019_incidence_fits` compares: the section alone (identify.options.CAMBERED_FIT, a
+#: rigid rotor) and the defaults
+GILL2019_FITS = ("section alone (rigid)", "default (section + flapping)")
 
 
 def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -> dict:
@@ -295,6 +295,7 @@ def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -
     ValueError
         An unknown protocol, or as :func:`gill2019_loads`.
     """
+    from .identify.options import CAMBERED_FIT
     from .io.calibration import generic_without, population
     from .io.catalogue import load_propeller
     from .validation import holdout_loads
@@ -312,7 +313,7 @@ def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -
             folds = [inc != held for held in sorted(set(inc[inc > 0]))]
         base, pop = generic_without(name)[0], population(without=name)
         out[name] = {label: holdout_loads(data, prop, base, folds, names=names, population=pop, air=air)
-                     for label, names in GILL2019_FITS.items()}
+                     for label, names in zip(GILL2019_FITS, (CAMBERED_FIT, None))}
     return out
 
 

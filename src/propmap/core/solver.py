@@ -348,7 +348,8 @@ def rotor_loads(
         )
     rigid = (T, D, Q, R)  # (rows of out: flapping below returns new arrays)
     if params.flap_compliance > 0:
-        damping = flap_damping(air.rho, _lift_slope(params), float(nd.chord_r3), om1)
+        per_slope = flap_damping(air.rho, 1.0, float(nd.chord_r3), om1)  # dD_beta / d(lift slope)
+        damping = _lift_slope(params) * per_slope
         D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
     else:
         b1c = b1s = np.zeros(n)
@@ -380,8 +381,7 @@ def rotor_loads(
             raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
         if params.flap_compliance > 0:
             raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
-                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), flap_damping(
-                                           air.rho, 1.0, float(nd.chord_r3), om1)))
+                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), per_slope))
         jac = {k: s(a) for k, a in raw.items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(

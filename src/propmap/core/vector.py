@@ -15,6 +15,7 @@ import numpy as np
 from .airfoil import Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import STILL_AIR
+from .flapping import COMPLIANCE
 from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -171,7 +172,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
                          f"'velocity', the velocity vector's Jacobian), got {derivatives!r:.60}")
-    if names and (params.flap_compliance > 0 or "flap_compliance" in names):
+    if names and (params.flap_compliance > 0 or COMPLIANCE in names):
         raise ValueError("derivatives of a flapping rotor's wrench are not implemented (its side force and pitching "
                          "moment); rotor_loads gives those of its thrust, drag, torque and rolling moment")
     solve = dict(air=air, discretization=discretization, on_failure=on_failure)

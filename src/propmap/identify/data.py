@@ -375,9 +375,14 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
 
-    def ratios(omega, fT=1.0, fQ=1.0):
-        r = rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                        collective=data.collective)
+    def loads_at(omega):
+        return rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                           collective=data.collective)
+
+    at_rpm = loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
+
+    def ratios(omega, fT=1.0, fQ=1.0, r=None):
+        r = loads_at(omega) if r is None else r
         out = {}
         for key, model, f in (("thrust", r.thrust, fT), ("torque", r.torque, fQ)):
             if key not in data.measured:
@@ -391,8 +396,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         return all(lo <= v <= hi for v in rat.values())
 
     if "drag" in data.measured:  # the sign convention of the in-plane force (a fit of the other sign is nonsense)
-        D = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                        collective=data.collective).drag
+        D = at_rpm.drag
         sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
         opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
         if sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
@@ -400,7 +404,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                              f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
                              "airspeed (against the disk's in-plane motion); negate the column if the file uses the "
                              "other convention")
-    ratio = ratios(data.omega)
+    ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
         return warnings_
     bad = {k: v for k, v in ratio.items() if not (1 / SANITY_FACTOR <= v <= SANITY_FACTOR)}

@@ -46,7 +46,7 @@ from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _params_from, _with_prior
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
-from .options import AIRFRAME_BOUNDS, FitOptions, _check_names
+from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_names
 from .result import FitResult
 
 __all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
@@ -349,7 +349,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     # airframe terms start small but non-zero, so that every column of the Jacobian is alive
     start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),
              "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0,
-             "flap_compliance": base.flap_compliance or 1.0}
+             "flap_compliance": base.flap_compliance or FLAP_START}
     if moments and samples.moment is None:
         raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
     start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]),

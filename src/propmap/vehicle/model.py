@@ -35,6 +35,7 @@ import numpy as np
 
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
+from ..core.flapping import COMPLIANCE
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
 from ..core.vector import VELOCITY_INPUTS, disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
@@ -292,7 +293,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
     wrt = _vehicle_derivatives(derivatives, vehicle)
-    if wrt and ("flap_compliance" in wrt
+    if wrt and (COMPLIANCE in wrt
                 or any((params if r.params is None else r.params).flap_compliance > 0 for r in vehicle.rotors)):
         raise ValueError("derivatives of flapping rotors' wrenches are not implemented (their side force and "
                          "pitching moment); use flap_compliance = 0 or difference vehicle_wrench")
