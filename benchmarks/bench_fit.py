@@ -2,6 +2,8 @@
 and the cambered model fitted to real data.
 
 Run:  .venv/bin/python benchmarks/bench_fit.py   (about 1 minute on the 2-core machine)
+      .venv/bin/python benchmarks/bench_fit.py --flight   (adds the flight fit with flapping
+      blades: about 3 minutes more; needs ../shared/data/neurobem_flights beside the checkout)
 
 Every case is fitted twice in the same run: with the residual Jacobian from the model's
 implicit derivatives (the default) and with central differences of the solver.
@@ -12,13 +14,18 @@ at M = 50 directly (the discontinuous objective, docs/numerics.md) and with the 
 continuation in M (docs/identification.md)), fitted from the paper's x0 = (2 pi, 2, 0, 0.47).
 The paper reports 2-10 hours for this fit (Gill & D'Andrea 2017, Sec. IV). Then the
 cambered model fitted (defaults: 8 parameters, population prior) to all of UIUC's apce_8x6
-data (Brandt & Selig, AIAA 2011-1255). Writes benchmarks/results/fit.json atomically.
+data (Brandt & Selig, AIAA 2011-1255). With ``--flight``: the flight fit (``fit_flight``) of the
+NeuroBEM quadrotor's four shared logs (Bauersfeld et al., RSS 2021; 25 samples a second) with
+``flap_compliance`` added to its default names, from a compliance of 1 rad/(N m), whose
+Jacobian needs the flapping rotors' side-force and pitching-moment derivatives. Writes
+benchmarks/results/fit.json atomically.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import sys
 from dataclasses import replace
 from importlib import resources
 from pathlib import Path
@@ -62,6 +69,8 @@ def main() -> None:
                   f"max |rel err| {np.max(np.abs(err)):.2e}, alpha0 {math.degrees(r.x[3]):.2f} deg, "
                   f"poorly determined: {', '.join(r.identifiability.poorly_determined) or 'none'}")
     rows.append(cambered_real_data())
+    if "--flight" in sys.argv[1:]:
+        rows.append(flight_with_flapping())
     out = Path(__file__).parent / "results" / "fit.json"
     with atomic_write(out) as fh:
         json.dump(rows, fh, indent=2)
@@ -87,6 +96,37 @@ def cambered_real_data() -> dict:
         out[jac] = {"names": list(r.names), "seconds": r.elapsed_s, "residual_evaluations": r.nfev,
                     "rotor_points": r.n_model_points, "rms_dct_over_ct0": e["rms_ct"], "rms_dcp_over_cp0": e["rms_cp"],
                     "cost": float(0.5 * np.sum(r.residuals ** 2)), "x": [float(v) for v in r.x]}
+    a, b = fits["implicit"], fits["differences"]
+    out["speedup"] = b.elapsed_s / a.elapsed_s
+    out["max_rel_x_difference"] = float(np.max(np.abs(a.x - b.x) / np.maximum(np.abs(b.x), 1e-3)))
+    print(f"implicit over differences: {out['speedup']:.2f}x faster, parameters within "
+          f"{out['max_rel_x_difference']:.1e} (relative)")
+    return out
+
+
+def flight_with_flapping() -> dict:
+    """The flight fit of the four shared NeuroBEM logs with the blades' flapping freed, with the
+    implicit Jacobian (the default) and with differences of the solver, in one run."""
+    from propmap.identify.flight import FLIGHT_FIT, fit_flight, flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    logs_dir = Path(__file__).resolve().parents[2] / "shared" / "data" / "neurobem_flights"
+    vehicle = read_vehicle(str(resources.files("propmap") / "data/examples/neurobem_quadrotor.toml"))
+    samples = flight_samples([read_flight_log(p) for p in sorted(logs_dir.glob("*.mat"))], vehicle)
+    names = FLIGHT_FIT + ("flap_compliance",)
+    base = pm.generic_params().replace(flap_compliance=1.0)
+    out = {"data": "NeuroBEM flight logs, 4 segments", "names": list(names), "samples": len(samples.force)}
+    fits = {}
+    for jac in ("implicit", "differences"):
+        r = fit_flight(samples, vehicle, base=base,
+                       options=FitOptions(names=names, jacobian=jac, progress=False))
+        fits[jac] = r
+        rms = float(np.sqrt(np.mean(r.residuals ** 2)))
+        print(f"flight fit with flapping ({len(samples.force)} samples, {len(names)} parameters), {jac} Jacobian: "
+              f"{r.elapsed_s:.1f} s, {r.nfev} evaluations, rms force error {rms:.4f} N, compliance "
+              f"{r.x[-1]:.3g} rad/(N m)")
+        out[jac] = {"seconds": r.elapsed_s, "residual_evaluations": r.nfev, "rms_force_error_N": rms,
+                    "x": [float(v) for v in r.x]}
     a, b = fits["implicit"], fits["differences"]
     out["speedup"] = b.elapsed_s / a.elapsed_s
     out["max_rel_x_difference"] = float(np.max(np.abs(a.x - b.x) / np.maximum(np.abs(b.x), 1e-3)))

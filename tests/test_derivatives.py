@@ -256,13 +256,18 @@ def test_section_parameter_derivatives(prop, model):
         pm.rotor_loads(prop, pm.generic_params(), 800.0, 0.0, 0.0, derivatives=("re_ref",))
     with pytest.raises(ValueError, match="unknown input or parameter 'nonsense'"):
         pm.rotor_loads(prop, g, 800.0, 0.0, 0.0, derivatives=("nonsense",))
-    # rigid blades: the flapping's loads are quadratic in the compliance, so its derivative is 0
+    # rigid blades: the flapping's T, D, Q and M_R are quadratic in the compliance, so their derivative is 0;
+    # its side force and pitching moment are linear in it (core/flapping.rigid_compliance_derivatives)
     r = pm.rotor_loads(prop, g, 800.0, 8.0, 1.0, derivatives=("flap_compliance",))
     h = 1e-4
     a = pm.rotor_loads(prop, g.replace(flap_compliance=h), 800.0, 8.0, 1.0)
     for q in ("thrust", "drag", "torque", "rolling_moment"):
         assert float(r.derivative(q, "flap_compliance")) == 0.0
         assert abs(float(getattr(a, q) - getattr(r, q))) / h < 1e-4 * abs(float(r.thrust))  # O(h): a quadratic
+    for q in ("side_force", "pitching_moment"):
+        slope = float(r.derivative(q, "flap_compliance"))
+        assert float(getattr(r, q)) == 0.0 and abs(slope) > 1e-4  # the blades of this set would flap
+        assert abs(float(getattr(a, q)) / h - slope) < 1e-3 * abs(slope), q
     with pytest.raises(ValueError, match="must be a sequence of names"):
         pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
 
@@ -673,24 +678,80 @@ def test_flapping_blades_derivatives_against_differences(prop, model):
     assert np.all(np.abs(r.flap_1c) > 1e-3)  # the blades do flap
     for w in wrt:
         hi, lo = moved(w, steps[w]), moved(w, -steps[w])
-        for q in ("thrust", "drag", "torque", "rolling_moment"):
+        for q in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment"):
             fd = (getattr(hi, q) - getattr(lo, q)) / (2 * steps[w])
             assert np.max(np.abs(r.derivative(q, w) - fd)) <= 1e-5 * np.max(np.abs(fd)) + 1e-12, (w, q)
-    with pytest.raises(ValueError, match="flapping rotor's wrench are not implemented"):
-        pm.rotor_wrench(prop, p, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("omega",))
-    from importlib import resources
-
-    vehicle = pm.read_vehicle(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml")
-    with pytest.raises(ValueError, match="flapping rotors' wrenches are not implemented"):
-        pm.vehicle_wrench(vehicle, p, velocity=[5.0, 0.0, 0.0], angular_velocity=[0.0, 0.0, 0.0],
-                          rotor_omega=[1200.0] * 4, derivatives=("omega",))
-    # rigid blades too, with respect to the compliance: the side force and pitching moment are linear in it
-    with pytest.raises(ValueError, match="flapping rotor's wrench are not implemented"):
-        pm.rotor_wrench(prop, base, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("flap_compliance",))
-    with pytest.raises(ValueError, match="flapping rotors' wrenches are not implemented"):
-        pm.vehicle_wrench(vehicle, base, velocity=[5.0, 0.0, 0.0], angular_velocity=[0.0, 0.0, 0.0],
-                          rotor_omega=[1200.0] * 4, derivatives=("flap_compliance",))
     # a zero lift slope (the damping's factor is passed, not divided out): finite derivatives
     flat = pm.rotor_loads(prop, p.replace(**{slope: 0.0}) if model == "gill2017" else p, 800.0, 8.0, 1.0,
                           derivatives=(slope,), discretization=DISC)
     assert np.isfinite(float(flat.derivative("drag", slope)))
+
+
+@pytest.mark.parametrize("model", ["cambered", "gill2017"])
+def test_flapping_wrench_derivatives_against_differences(prop, model):
+    """A flapping rotor's wrench has a side force and a pitching moment (core/flapping.py):
+    rotor_wrench's velocity Jacobian (at rest, axial, oblique, both spins) and its derivatives with
+    respect to omega, the collective and flap_compliance (at 2 rad/(N m) and at 0, where Y and M_P
+    are linear in it) agree with central differences of rotor_wrench within 3e-5 of the largest
+    entry; vehicle_wrench's motion Jacobians and compliance derivative within 5e-5."""
+    base = pm.generic_params() if model == "cambered" else pm.preset("gill2017-apc").replace(M=30.0)
+    cases = (([5.0, 1.0, 2.0], [0.1, 0.0, 1.0], 800.0, "ccw"), ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 900.0, "cw"),
+             ([0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 900.0, "ccw"), ([3.0, -4.0, -1.0], [0.0, 0.2, 1.0], 1000.0, "cw"))
+    for comp in (2.0, 0.0):
+        p = base.replace(flap_compliance=comp)
+        for V, axis, om, spin in cases:
+            V = np.array(V)
+            r = pm.rotor_wrench(prop, p, V, axis, om, spin, derivatives=("velocity", "omega", "flap_compliance"),
+                                discretization=DISC)
+            if comp > 0 and np.any(V[:2]):
+                assert abs(float(r.loads.side_force)) > 1e-3 * float(r.loads.thrust)  # the blades do flap
+            for j in range(3):
+                dv = np.eye(3)[j] * 1e-4
+                a, c = (pm.rotor_wrench(prop, p, V + sgn * dv, axis, om, spin, discretization=DISC) for sgn in (1, -1))
+                for key, fd in (("force", (a.force - c.force) / 2e-4), ("torque", (a.torque - c.torque) / 2e-4)):
+                    J = r.jacobian[(key, "velocity")]
+                    np.testing.assert_allclose(J[:, j], fd, rtol=0, atol=3e-5 * np.abs(J).max(),
+                                               err_msg=f"{comp} {V} {key} column {j}")
+            h = 1e-5
+            for name, (a, c, step) in {
+                "omega": (pm.rotor_wrench(prop, p, V, axis, om + 1e-2, spin, discretization=DISC),
+                          pm.rotor_wrench(prop, p, V, axis, om - 1e-2, spin, discretization=DISC), 2e-2),
+                # at 0 one-sided: the side force and pitching moment are linear in the compliance there
+                "flap_compliance": (pm.rotor_wrench(prop, p.replace(flap_compliance=comp + h), V, axis, om, spin,
+                                                    discretization=DISC),
+                                    pm.rotor_wrench(prop, p.replace(flap_compliance=max(comp - h, 0.0)), V, axis, om,
+                                                    spin, discretization=DISC), h + min(h, comp)),
+            }.items():
+                for key in ("force", "torque"):
+                    fd = (getattr(a, key) - getattr(c, key)) / step
+                    J = r.jacobian[(key, name)]
+                    np.testing.assert_allclose(J, fd, rtol=0, atol=3e-5 * max(np.abs(fd).max(), 1e-9),
+                                               err_msg=f"{comp} {V} {key} {name}")
+    from importlib import resources
+
+    vehicle = pm.read_vehicle(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml")
+    p = base.replace(flap_compliance=3.0)
+    v, w = np.array([[6.0, -1.0, -0.5], [0.0, 0.0, 0.0]]), np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [1000.0] * 4])
+    r = pm.vehicle_wrench(vehicle, p, v, w, om, derivatives=("velocity", "angular_velocity", "flap_compliance"),
+                          discretization=DISC)
+    def central(name, j, h):
+        d = np.eye(3)[j] * h
+        args = {"velocity": ((v + d, w, p), (v - d, w, p)), "angular_velocity": ((v, w + d, p), (v, w - d, p)),
+                "flap_compliance": ((v, w, p.replace(flap_compliance=3.0 + h)),
+                                    (v, w, p.replace(flap_compliance=3.0 - h)))}[name]
+        a, c = (pm.vehicle_wrench(vehicle, x[2], x[0], x[1], om, discretization=DISC) for x in args)
+        return {key: (getattr(a, key) - getattr(c, key)) / (2 * h) for key in ("force", "moment")}
+
+    for name in ("velocity", "angular_velocity", "flap_compliance"):
+        for j in range(3 if name != "flap_compliance" else 1):
+            if name == "flap_compliance":
+                fd = central(name, j, 1e-5)
+            else:  # Richardson's extrapolation over the hover sample's kink at V_c = 0 (test_vehicle_motion_jacobians)
+                coarse, fine = central(name, j, 2e-3), central(name, j, 1e-3)
+                fd = {key: 2.0 * fine[key] - coarse[key] for key in fine}
+            for key in ("force", "moment"):
+                J = r.jacobian[(key, name)]
+                got = J[..., j] if name != "flap_compliance" else J
+                np.testing.assert_allclose(got, fd[key], rtol=0, atol=5e-5 * np.abs(J).max(),
+                                           err_msg=f"{key} {name} {j}")

@@ -15,8 +15,8 @@ from .airfoil import RECORD_META, SectionParams, _model_constants
 from .flapping import COMPLIANCE
 from .nodes import _cambered_args, _nodes
 
-__all__ = ["DERIVATIVE_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS", "PARAM_FLOOR",
-           "differentiable"]
+__all__ = ["DERIVATIVE_LOADS", "FLAPPING_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS",
+           "PARAM_FLOOR", "differentiable"]
 
 
 #: what ``rotor_loads(derivatives=...)`` differentiates, and with respect to what
@@ -27,11 +27,14 @@ RHO = "rho"
 #: internal (core/vector.py): at the points with V = 0, the loads' slopes in the velocity along three rays
 #: from the same roots, in the same kernel pass (:func:`_jacobian`); 0 elsewhere
 STILL_AIR = "_still_air"
+#: the loads that flapping blades add (core/flapping.py), differentiated by the chain rule after the kernel's;
+#: zero with rigid blades and the uniform inflow
+FLAPPING_LOADS = ("side_force", "pitching_moment")
 #: the loads odd in V sin(beta), whose slope at rest is the edgewise one
-_ODD_LOADS = ("drag", "rolling_moment")
+_ODD_LOADS = ("drag", "rolling_moment", *FLAPPING_LOADS)
 
 
-def differentiable(params: SectionParams, names, *, flapping: bool = False) -> bool:
+def differentiable(params: SectionParams, names) -> bool:
     """Whether :func:`rotor_loads` gives implicit derivatives of ``params``'s loads with respect
     to every name in ``names`` (what the fits ask before using them).
 
@@ -39,26 +42,22 @@ def differentiable(params: SectionParams, names, *, flapping: bool = False) -> b
     ----------
     params : AirfoilParams or CamberedParams
     names : sequence of str
-        Inputs (:data:`DERIVATIVE_INPUTS`), ``"rho"`` or section parameters' names.
-    flapping : bool
-        Whether the caller needs only :data:`DERIVATIVE_LOADS` (a loads fit), which
-        :func:`rotor_loads` also gives for flapping blades and with respect to
-        ``flap_compliance`` (core/flapping.flapping_derivatives); not a wrench, whose side
-        force and pitching moment a flapping rotor has too (False: flapping blades and that
-        name make it False).
+        Inputs (:data:`DERIVATIVE_INPUTS`), ``"rho"``, ``"flap_compliance"`` or section
+        parameters' names.
 
     Returns
     -------
     bool
-        False for a linear inflow model or swirl, flapping blades unless ``flapping``, or a
-        name that is not a numeric field entering the section's constants
-        (:data:`NOT_CONSTANTS`, switches, text; ``flap_compliance`` with ``flapping``); the
-        rotation rates' range is the caller's to check (>= 0.1 rad/s).
+        False for a linear inflow model or swirl, or a name that is not a numeric field
+        entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other than
+        ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
+        rigid and flapping blades alike); the rotation rates' range is the caller's to check
+        (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform" or params.swirl or (params.flap_compliance > 0 and not flapping):
+    if params.inflow != "uniform" or params.swirl:
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
-    return all(n in DERIVATIVE_INPUTS or n == RHO or (flapping and n == COMPLIANCE)
+    return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
                or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
 
 

@@ -45,7 +45,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "COMPLIANCE"]
+__all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "rigid_compliance_derivatives",
+           "COMPLIANCE"]
 
 #: the name of the flap compliance 1 / K_beta among the derivatives' inputs
 COMPLIANCE = "flap_compliance"
@@ -125,17 +126,20 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
                          rho: float, lift_slope: tuple) -> dict:
     """The flapping rotor's load derivatives from the rigid rotor's, by the chain rule.
 
-    :func:`flapping` is applied to the converged rigid loads and changes only the drag and
-    the rolling moment among the differentiated loads. With the uniform inflow (the only
-    inflow the derivatives cover) the rigid pitching moment and side force vanish, so with
-    M_1s = 2 M_R / N_b, det = K^2 + D_beta^2 and g = D_beta M_1s / det:
+    :func:`flapping` is applied to the converged rigid loads and changes the drag, the side
+    force and both hub moments. With the uniform inflow (the only inflow the derivatives
+    cover) the rigid pitching moment and side force vanish, so with M_1s = 2 M_R / N_b,
+    det = K^2 + D_beta^2 and u = M_1s / det:
 
-        D_flap = D + T g,   M_R,flap = K^2 M_R / det,
+        D_flap = D + T D_beta u,   Y_flap = -T K u,   M_R,flap = K^2 M_R / det,
+        M_P,flap = (N_b / 2) K D_beta u,
 
     and D_beta = (rho a / 2) Omega^2 int c r^3 dr changes with Omega, rho and the lift slope a.
     With respect to the compliance c = 1 / K (dK/dc = -K^2): dD_flap/dc = 2 K^3 T D_beta
-    M_1s / det^2 and dM_R,flap/dc = -2 K^3 M_R D_beta^2 / det^2; thrust, torque and the mean
-    inflow do not depend on it.
+    M_1s / det^2, dM_R,flap/dc = -2 K^3 M_R D_beta^2 / det^2, dY_flap/dc = -T M_1s K^2 (K^2 -
+    D_beta^2) / det^2 and dM_P,flap/dc = (N_b / 2) D_beta M_1s K^2 (K^2 - D_beta^2) / det^2;
+    thrust, torque and the mean inflow do not depend on it. (At c = 0, rigid blades, D and
+    M_R are quadratic in c and Y and M_P linear: :func:`rigid_compliance_derivatives`.)
 
     Parameters
     ----------
@@ -143,7 +147,8 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
         {(load, name): derivative} of the rigid rotor (core/derivatives._jacobian), loads
         among ``thrust, drag, torque, rolling_moment, v_i_mean``; flat arrays of N points.
         Changed in place and returned, with ``(load, "flap_compliance")`` added when
-        ``COMPLIANCE`` is among the names (pass its entries as zeros).
+        ``COMPLIANCE`` is among the names (pass its entries as zeros), and
+        ``("side_force", name)`` and ``("pitching_moment", name)`` for every name.
     thrust, rolling_moment : ndarray, shape (N,)
         The rigid rotor's T [N] and M_R [N m].
     damping : ndarray, shape (N,)
@@ -163,7 +168,8 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
     Returns
     -------
     dict
-        ``jac`` with the flapping rotor's drag and rolling-moment derivatives.
+        ``jac`` with the flapping rotor's drag, side-force, rolling-moment and
+        pitching-moment derivatives.
 
     Raises
     ------
@@ -174,7 +180,9 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
     T, Db = np.asarray(thrust), np.asarray(damping)
     M1s = 2.0 * np.asarray(rolling_moment) / n_blades
     det = K * K + Db * Db
-    g = Db * M1s / det
+    u = M1s / det
+    g = Db * u
+    half = 0.5 * n_blades
     # dD_beta/dx of what it depends on
     a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: np.asarray(lift_slope[1])}
     names = {w for (_, w) in jac}
@@ -182,11 +190,45 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
         if w == COMPLIANCE:
             jac[("drag", w)] = 2.0 * K**3 * T * Db * M1s / det**2
             jac[("rolling_moment", w)] = -2.0 * K**3 * np.asarray(rolling_moment) * Db * Db / det**2
+            dk_det = K * K * (K * K - Db * Db) / det**2  # d(K / det)/dc
+            jac[("side_force", w)] = -T * M1s * dk_det
+            jac[("pitching_moment", w)] = half * Db * M1s * dk_det
             continue
         dDb = a.get(w, 0.0)
         dM1s = 2.0 * jac[("rolling_moment", w)] / n_blades
-        dg = (dDb * M1s + Db * dM1s) / det - g * 2.0 * Db * dDb / det
+        du = dM1s / det - u * 2.0 * Db * dDb / det
+        dg = dDb * u + Db * du
         jac[("drag", w)] = jac[("drag", w)] + jac[("thrust", w)] * g + T * dg
+        jac[("side_force", w)] = -K * (jac[("thrust", w)] * u + T * du)
+        jac[("pitching_moment", w)] = half * K * dg
         jac[("rolling_moment", w)] = K * K * (jac[("rolling_moment", w)] - np.asarray(rolling_moment) * 2.0 * Db
                                                * dDb / det) / det
     return jac
+
+
+def rigid_compliance_derivatives(thrust, rolling_moment, damping, n_blades: int) -> dict:
+    """Rigid blades' (compliance 0) load derivatives with respect to ``flap_compliance``.
+
+    As c = 1 / K -> 0 the flapping's drag and rolling moment change as c^2 (derivative 0)
+    and its side force and pitching moment as c (:func:`flapping_derivatives`' notation):
+    Y = -T c M_1s and M_P = D_beta c M_R to first order, so dY/dc = -2 T M_R / N_b and
+    dM_P/dc = D_beta M_R.
+
+    Parameters
+    ----------
+    thrust, rolling_moment, damping : ndarray, shape (N,)
+        The rigid rotor's T [N], M_R [N m] and D_beta [N m/rad] (:func:`flap_damping`).
+    n_blades : int
+
+    Returns
+    -------
+    dict
+        {(load, "flap_compliance"): shape (N,)} for thrust, drag, torque, rolling_moment,
+        v_i_mean (zeros), side_force and pitching_moment.
+    """
+    T, R = np.asarray(thrust, float), np.asarray(rolling_moment, float)
+    zero = np.zeros(T.shape)
+    out = {(q, COMPLIANCE): zero.copy() for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")}
+    out[("side_force", COMPLIANCE)] = -2.0 * T * R / n_blades
+    out[("pitching_moment", COMPLIANCE)] = np.asarray(damping) * R
+    return out

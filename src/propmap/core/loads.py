@@ -8,7 +8,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from .derivatives import DERIVATIVE_LOADS
+from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS
 from .states import STATES
 
 __all__ = ["RotorLoads"]
@@ -154,7 +154,9 @@ class RotorLoads:
 
         Parameters
         ----------
-        quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean"}
+        quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean", "side_force", "pitching_moment"}
+            The side force and pitching moment are those of flapping blades (0 for rigid
+            ones with the uniform inflow, the only inflow differentiated; core/flapping.py).
         wrt : str
             "omega" [rad/s], "airspeed" [m/s], "incidence" [rad], "collective" [rad], "rho"
             [kg/m^3] or a section parameter's name (in its SI unit); as asked of
@@ -175,8 +177,9 @@ class RotorLoads:
         """
         if self.jacobian is None:
             raise ValueError("these loads have no derivatives: call rotor_loads(..., derivatives=True)")
-        if quantity not in DERIVATIVE_LOADS:
-            raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS)}, got {quantity!r:.60}")
+        if quantity not in DERIVATIVE_LOADS + FLAPPING_LOADS:
+            raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS + FLAPPING_LOADS)}, "
+                             f"got {quantity!r:.60}")
         if (quantity, wrt) not in self.jacobian:
             have = sorted({w for _, w in self.jacobian if not w.startswith("_")})  # not the internal ones
             if not have:

@@ -16,8 +16,8 @@ import numpy as np
 from . import _flags, _kernel
 from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
-from .derivatives import DERIVATIVE_LOADS, _derivative_inputs, _jacobian, differentiable
-from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives
+from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, _derivative_inputs, _jacobian, differentiable
+from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
 from .geometry import Propeller
 from .loads import RotorLoads, _new_loads
 from .nodes import _lift_slope, _lift_slope_name, _prepared
@@ -241,8 +241,9 @@ def rotor_loads(
         collective, or a collective sweep of one geometry. Broadcast with ``omega``,
         ``airspeed`` and ``incidence``. None (default): no offset.
     derivatives : bool or sequence of str
-        True: also the derivatives of T, D, Q, M_R and v_i,mean with respect to ``omega``,
-        ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
+        True: also the derivatives of T, D, Q, M_R, v_i,mean and (flapping blades; zeros
+        for rigid ones) Y and M_P with respect to ``omega``, ``airspeed`` and ``incidence``
+        (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
         ``params`` other than :data:`~propmap.core.derivatives.NODE_FIELDS`), ``"rho"``
@@ -377,11 +378,17 @@ def rotor_loads(
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
         raw = (_jacobian(solved, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam, empirical, params, air,
                          propeller, discretization, rigid) if solved else {})
-        if COMPLIANCE in wrt:  # (0 for rigid blades: the flapping's loads are quadratic in it there)
-            raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
         if params.flap_compliance > 0:
+            if COMPLIANCE in wrt:
+                raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
             raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
                                        omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), per_slope))
+        else:  # rigid blades with the uniform inflow: no side force or pitching moment at any input
+            raw.update({(q, w): np.zeros(n) for q in FLAPPING_LOADS for w in solved})
+            if COMPLIANCE in wrt:  # (D and M_R are quadratic in it here, Y and M_P linear)
+                raw.update(rigid_compliance_derivatives(
+                    T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
+                    propeller.n_blades))
         jac = {k: s(a) for k, a in raw.items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
     return _new_loads(

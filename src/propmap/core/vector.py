@@ -15,7 +15,6 @@ import numpy as np
 from .airfoil import Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import STILL_AIR
-from .flapping import COMPLIANCE
 from .geometry import Propeller
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -131,6 +130,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         form, which is linear in them), and "velocity": the Jacobians dF/dV and dtau/dV
         with respect to the velocity vector (:func:`velocity_jacobian`; at V = 0 its axial
         column is the mean of the climb and descent slopes, :func:`still_air_slopes`).
+        Flapping blades (``flap_compliance > 0``) and ``flap_compliance`` itself included:
+        their side force and pitching moment by the chain rule (core/flapping.py).
 
     Returns
     -------
@@ -143,9 +144,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         velocity, a bad spin (a bool included, or an array that does not broadcast to the
         loads' shape S), or the ranges of :func:`rotor_loads`
         (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
-        naming "airspeed" or "incidence" (ask for "velocity"), asked of flapping blades
-        (``flap_compliance > 0``) or with respect to ``flap_compliance`` (the side force's
-        and pitching moment's are not implemented), or refused by :func:`rotor_loads`.
+        naming "airspeed" or "incidence" (ask for "velocity"), or refused by
+        :func:`rotor_loads`.
     SolverError
         As :func:`rotor_loads`.
 
@@ -172,9 +172,6 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
                          f"'velocity', the velocity vector's Jacobian), got {derivatives!r:.60}")
-    if names and (params.flap_compliance > 0 or COMPLIANCE in names):
-        raise ValueError("derivatives of a flapping rotor's wrench are not implemented (its side force and pitching "
-                         "moment); rotor_loads gives those of its thrust, drag, torque and rolling moment")
     solve = dict(air=air, discretization=discretization, on_failure=on_failure)
     scalar = tuple(n for n in names if n != "velocity")
     wrt = scalar + (VELOCITY_INPUTS if "velocity" in names else ())
@@ -186,11 +183,16 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         jac = {}
         for n in scalar:
             dF, dtau = wrench_vectors(*(loads.derivative(q, n) for q in ("thrust", "drag", "torque", "rolling_moment")),
-                                      V, z, s)
+                                      V, z, s, side_force=loads.derivative("side_force", n),
+                                      pitching_moment=loads.derivative("pitching_moment", n))
             jac[("force", n)], jac[("torque", n)] = dF, dtau
         if "velocity" in names:
             jac[("force", "velocity")], jac[("torque", "velocity")] = velocity_jacobian(loads, V, z, s)
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
+
+
+#: the loads whose slopes at rest :func:`still_air_slopes` gives (the odd ones edgewise, the even ones axially)
+_AT_REST = ("drag", "rolling_moment", "side_force", "pitching_moment", "thrust", "torque", "v_i_mean")
 
 
 def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, **solve) -> dict:
@@ -201,7 +203,7 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     same roots (at rest the root does not depend on the incidence; ``rotor_loads`` does this
     for the points at rest of a call that asks for :data:`VELOCITY_INPUTS`; this function
     solves the points at rest once): edgewise (beta = pi/2) for the in-plane slopes of
-    D and M_R, which are odd in V sin(beta) (the azimuth nodes are symmetric in sin psi), so
+    D, M_R and (flapping blades) Y and M_P, which are odd in V sin(beta) (the azimuth nodes are symmetric in sin psi), so
     that this one-sided slope is the derivative; climbing (beta = 0) and descending (beta =
     pi) for the axial slopes of T, Q and v_i,mean, whose mean is returned: the limit of
     central differences. With Glauert's momentum the two are equal; with the empirical
@@ -223,11 +225,12 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     Returns
     -------
     dict
-        {"drag": dD/dV_s [N s/m], "rolling_moment": dM_R/dV_s [N s], "thrust": dT/dV_c
+        {"drag": dD/dV_s [N s/m], "rolling_moment": dM_R/dV_s [N s], "side_force": dY/dV_s
+        [N s/m], "pitching_moment": dM_P/dV_s [N s] (0 for rigid blades), "thrust": dT/dV_c
         [N s/m], "torque": dQ/dV_c [N s], "v_i_mean": dv_i,mean/dV_c [-]}, each shape S.
     """
     shape = np.broadcast_shapes(np.shape(speed), np.shape(omega))
-    out = {q: np.zeros(shape) for q in ("drag", "rolling_moment", "thrust", "torque", "v_i_mean")}
+    out = {q: np.zeros(shape) for q in _AT_REST}
     still = np.broadcast_to(np.asarray(speed) == 0.0, shape)
     if np.any(still):
         om = np.broadcast_to(np.asarray(omega, float), shape)[still]
@@ -241,7 +244,7 @@ def _slopes_at_rest(loads: RotorLoads):
     """The slopes at rest that ``rotor_loads`` computed with :data:`VELOCITY_INPUTS`, or None."""
     if loads.jacobian is None or ("thrust", STILL_AIR) not in loads.jacobian:
         return None
-    return {q: loads.derivative(q, STILL_AIR) for q in ("drag", "rolling_moment", "thrust", "torque", "v_i_mean")}
+    return {q: loads.derivative(q, STILL_AIR) for q in _AT_REST}
 
 
 def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
@@ -258,12 +261,19 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
     sin(beta) X_beta / V); the torque -spin (Q z + M_R e_ip) likewise. In axial flow (V_s =
     0) D / V_s and M_R / V_s are their limits D_s and M_R,s (D and M_R are odd in V_s, T and Q
     even, so T_s = Q_s = 0 there) and the in-plane block is -D_s (I - z z^T): isotropic.
+    Flapping blades add the side force -spin Y l and the pitching moment -M_P l (odd in V_s
+    too); with dl/dV = -e_ip l^T / V_s,
+
+        d(Y l)/dV = l (Y_s e_ip + Y_c z)^T - (Y / V_s) e_ip l^T,
+
+    whose last term with the first's Y_s l e_ip^T is (Y / V_s) [z]x in axial flow ([z]x the
+    cross-product matrix of z: isotropic in the disk plane).
 
     Parameters
     ----------
     loads : RotorLoads, shape S
-        With the derivatives "airspeed" and "incidence" (:func:`propmap.rotor_loads`), the
-        uniform inflow and rigid blades (no side force or pitching moment).
+        With the derivatives "airspeed" and "incidence" (:func:`propmap.rotor_loads`) and the
+        uniform inflow, rigid or flapping blades.
     V, z : array_like, shape S + (3,)
         Velocity [m/s] and unit axis (:func:`disk_frame`).
     spin : array_like, shape S
@@ -318,7 +328,35 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
           - d_ratio[..., None, None] * proj)
     dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, Rc[..., None] * z)
                                   + (Rs - r_ratio)[..., None, None] * ee + r_ratio[..., None, None] * proj)
+    if np.any(loads.side_force) or np.any(loads.pitching_moment) or _flapping_slopes(loads, still):
+        # flapping blades: -spin Y l and -M_P l, l = z x e_ip, with dl/dV = -e_ip l^T / V_s, so
+        # d(-spin Y l)/dV = -spin ((Y_s - Y / V_s) l e^T + Y_c l z^T + (Y / V_s) [z]x), as l e^T - e l^T = [z]x
+        # (the cross-product matrix of z, isotropic in the disk plane), and M_P likewise; Y and M_P are odd in V_s
+        (Ys, Yc), (Ps, Pc) = split("side_force"), split("pitching_moment")
+        y_ratio = np.where(small, Ys, loads.side_force / np.where(small, 1.0, vs))
+        p_ratio = np.where(small, Ps, loads.pitching_moment / np.where(small, 1.0, vs))
+        lat = np.cross(z, e)
+        zx = np.zeros(shape + (3, 3))
+        zx[..., 0, 1], zx[..., 0, 2], zx[..., 1, 2] = -z[..., 2], z[..., 1], -z[..., 0]
+        zx = zx - np.swapaxes(zx, -1, -2)
+
+        def turn(xs, xc, ratio):  # d(X l)/dV
+            return ((xs - ratio)[..., None, None] * outer(lat, e) + outer(lat, xc[..., None] * z)
+                    + ratio[..., None, None] * zx)
+
+        dF = dF - s[..., None, None] * turn(Ys, Yc, y_ratio)
+        dtau = dtau - turn(Ps, Pc, p_ratio)
     return dF, dtau
+
+
+def _flapping_slopes(loads: RotorLoads, still) -> bool:
+    """Whether the side force or pitching moment has a non-zero derivative in the velocity
+    (flapping blades; rigid ones with the uniform inflow have neither)."""
+    jac = loads.jacobian or {}
+    if any(np.any(jac.get((q, w), 0.0)) for q in ("side_force", "pitching_moment") for w in ("airspeed", "incidence")):
+        return True
+    rest = still if still is not None else (_slopes_at_rest(loads) or {})
+    return any(np.any(rest.get(q, 0.0)) for q in ("side_force", "pitching_moment"))
 
 
 def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.ndarray:
@@ -391,7 +429,7 @@ def _disk_split(loads: RotorLoads, V, z, still) -> tuple:
         if q not in _ODD:
             xs = np.where(axial, 0.0, xs)  # even loads: no in-plane slope in axial flow
         if np.any(at_rest):
-            xs = np.where(at_rest, still[q] if q in _ODD else 0.0, xs)
+            xs = np.where(at_rest, still.get(q, 0.0) if q in _ODD else 0.0, xs)
             xc = np.where(at_rest, 0.0 if q in _ODD else still[q], xc)
         return xs, xc
 

@@ -75,7 +75,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     ------
     ValueError
         ``derivatives`` that :func:`propmap.rotor_loads` refuses (an unknown or node-changing
-        name, a linear inflow, flapping, Omega below 0.1 rad/s).
+        name, a linear inflow or swirl, Omega below 0.1 rad/s).
     SolverError
         From the rotor model.
     """
@@ -375,7 +375,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
             return errors(r), weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names])
                                                   / norm[k][:, None] / scales[k] for k in keys])
 
-        if (opts.jacobian == "implicit" and differentiable(base, names, flapping=True)
+        if (opts.jacobian == "implicit" and differentiable(base, names)
                 and np.all(data.omega >= OMEGA_MIN)):
             _attach_jacobian(residual, with_jacobian)  # (a parked point, below OMEGA_MIN, has no derivatives)
         return residual

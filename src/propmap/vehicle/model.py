@@ -35,7 +35,6 @@ import numpy as np
 
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
-from ..core.flapping import COMPLIANCE
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
 from ..core.vector import VELOCITY_INPUTS, disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
@@ -253,7 +252,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
         ``rotor_interference`` (the wakes couple the rotors), nor for a section parameter
         when a rotor has its own set, nor with the sets ``rotor_loads`` cannot differentiate
-        (a linear inflow, flapping); Omega_i >= 0.1 rad/s.
+        (a linear inflow, swirl); Omega_i >= 0.1 rad/s. Flapping rotors' side force and
+        pitching moment, and ``flap_compliance``, by the chain rule (core/flapping.py).
 
     Returns
     -------
@@ -266,9 +266,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         An input that is not numbers, of the wrong shape, non-finite, samples counts that
         do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
         :func:`propmap.rotor_loads` (naming the input); ``derivatives`` with rotor
-        interference, with flapping rotors (``flap_compliance > 0``) or with respect to
-        ``flap_compliance``, or where
-        :func:`propmap.rotor_loads` refuses them.
+        interference, or where :func:`propmap.rotor_loads` refuses them.
     SolverError
         As :func:`propmap.rotor_loads`.
     """
@@ -293,10 +291,6 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
     wrt = _vehicle_derivatives(derivatives, vehicle)
-    if wrt and (COMPLIANCE in wrt
-                or any((params if r.params is None else r.params).flap_compliance > 0 for r in vehicle.rotors)):
-        raise ValueError("derivatives of flapping rotors' wrenches are not implemented (their side force and "
-                         "pitching moment); use flap_compliance = 0 or difference vehicle_wrench")
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
@@ -389,7 +383,8 @@ def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rh
     def rotor_vectors(i, name):
         ld = loads[i]
         F, M = wrench_vectors(*(ld.derivative(q, name) for q in ("thrust", "drag", "torque", "rolling_moment")),
-                              *frames[i], spins[i])
+                              *frames[i], spins[i], side_force=ld.derivative("side_force", name),
+                              pitching_moment=ld.derivative("pitching_moment", name))
         return F, M + np.cross(pos[i], F)
 
     dF = dM = jac = None
