@@ -649,7 +649,7 @@ def test_implicit_derivatives_match_tightly_converged_differences(prop, params, 
 @pytest.mark.parametrize("model", ["cambered", "gill2017"])
 def test_flapping_blades_derivatives_against_differences(prop, model):
     """Flapping (core/flapping.py) acts on the converged rigid loads: the chain rule of
-    core/flapping.flapping_derivatives gives the flapping rotor's T, D, Q and M_R derivatives,
+    core/flapping.flapping_derivatives gives the flapping rotor's T, D, Q, M_R, Y and M_P derivatives,
     the compliance's and the lift slope's (which sets the flap damping) included, within 1e-5 of
     central differences of the solver (off the kink at exactly 90 deg, docs/solver.md)."""
     base = pm.generic_params() if model == "cambered" else pm.preset("gill2017-apc").replace(M=30.0)

@@ -203,10 +203,10 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     same roots (at rest the root does not depend on the incidence; ``rotor_loads`` does this
     for the points at rest of a call that asks for :data:`VELOCITY_INPUTS`; this function
     solves the points at rest once): edgewise (beta = pi/2) for the in-plane slopes of
-    D, M_R and (flapping blades) Y and M_P, which are odd in V sin(beta) (the azimuth nodes are symmetric in sin psi), so
-    that this one-sided slope is the derivative; climbing (beta = 0) and descending (beta =
-    pi) for the axial slopes of T, Q and v_i,mean, whose mean is returned: the limit of
-    central differences. With Glauert's momentum the two are equal; with the empirical
+    D, M_R and (flapping blades) Y and M_P, which are odd in V sin(beta) (the azimuth nodes
+    are symmetric in sin psi), so that this one-sided slope is the derivative; climbing
+    (beta = 0) and descending (beta = pi) for the axial slopes of T, Q and v_i,mean, whose
+    mean is returned: the limit of central differences. With Glauert's momentum the two are equal; with the empirical
     descent momentum, which switches on at V cos(beta) = 0, they differ (docs/solver.md,
     Derivatives), and the mean is what a vehicle's rotation sees (its rotors on either side
     climb and descend alike).
@@ -384,8 +384,8 @@ def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.
     Raises
     ------
     ValueError
-        ``quantity`` odd in the in-plane speed ("drag", "rolling_moment": use
-        :func:`velocity_jacobian`), ``still`` missing while a point has V = 0 and the
+        ``quantity`` odd in the in-plane speed ("drag", "rolling_moment", "side_force",
+        "pitching_moment": use :func:`velocity_jacobian`), ``still`` missing while a point has V = 0 and the
         loads do not carry the slopes at rest (as :func:`velocity_jacobian`), or as
         :meth:`RotorLoads.derivative`.
     """

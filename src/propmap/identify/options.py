@@ -52,8 +52,9 @@ CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
 #: 3.7-5.6%, Q 18-27% -> 4.3-11% of static torque
 INPLANE_FIT = ("flap_compliance",)
 #: the compliance such a fit starts from when the base's blades are rigid [rad/(N m)]: at 0 the
-#: loads are quadratic in it (their derivative is 0) and the flapping responds near 1 / D_beta,
-#: 0.3-4 rad/(N m) for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
+#: thrust, drag, torque and rolling moment are quadratic in it (their derivative is 0; the side
+#: force and pitching moment are linear) and the flapping responds near 1 / D_beta, 0.3-4 rad/(N m)
+#: for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
 FLAP_START = 1.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
@@ -198,8 +199,9 @@ class FitOptions:
     jacobian : {"implicit", "differences"}
         The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
         (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
-        docs/solver.md) where it can give them for every section name (uniform inflow, rigid
-        blades, no node-changing name such as re_ref), the terms outside the rotor model
+        docs/solver.md) where it can give them for every section name (uniform inflow without
+        swirl, rigid or flapping blades, no node-changing name such as re_ref), the terms
+        outside the rotor model
         (the centre of mass, the body-lift closed form) by central differences; else, and
         always with ``"differences"``, central differences of the solver.
     """
