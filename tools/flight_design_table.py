@@ -13,7 +13,7 @@ lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
 
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
 Row C (Pitt-Peters inflow) runs only when named: a linear inflow has no implicit derivatives,
-and its differenced fits take about 10 minutes.
+and its differenced fits take about 2 minutes more.
 """
 
 import sys
