@@ -17,13 +17,19 @@ stable root (F crosses zero downward in that direction). Concretely:
    exists, docs/numerics.md "Root solve").
 4. Refine the bracket with Chandrupatla's method (inverse quadratic interpolation where
    the three latest points admit it, else bisection; every step stays inside the
-   bracket) until it is narrower than XTOL * v_m or |F| <= FTOL * |F(0)|; the end point
-   with the smaller |F| is returned. Its first step interpolates through the bracket
-   ends and the extra-scan point of step 5 (which lies beyond the bracket with the sign
-   of F at its near end), so that evaluation also speeds the refinement. Every iterate
-   stays in the bracket of step 2, so the root selected is that of the rule whatever
-   the refinement (the NumPy reference refines with the Illinois method and selects
-   the same roots).
+   bracket) until it is narrower than XTOL * v_m, |F| <= FTOL * |F(0)| or the secant
+   through the two newest points puts the root within XTOL * v_m of the newest (the end
+   point with the smaller |F| is returned), or until that secant's root lies inside the
+   bracket and two estimates of its own error agree that it is within XTOL * v_m: the
+   second divided difference through the three newest points gives |F''/(2 F')| est (est +
+   |step|) <= XTOL v_m / 10, est its distance from the newest point and step the last one,
+   and est |step| <= XTOL v_m^2 (a curvature of at most 1 / v_m); that root is returned
+   without evaluating F there (one evaluation fewer in about half the annuli). Its first
+   step interpolates through the bracket ends and the extra-scan point of step 5 (which
+   lies beyond the bracket with the sign of F at its near end), so that evaluation also
+   speeds the refinement. Every iterate (and the secant's root) stays in the bracket of
+   step 2, so the root selected is that of the rule whatever the refinement (the NumPy
+   reference refines with the Illinois method and selects the same roots).
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
    march steps beyond the bracket.
 
@@ -219,6 +225,16 @@ def _chandrupatla_t(x1, f1, x2, f2, x3, f3, tol):
     return min(max(t, tl), 1.0 - tl)
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _secant_error(x1, f1, x2, f2, x3, f3, est, step):
+    """Error estimate of the secant's root through (x1, f1), (x2, f2): |F''/(2 F')| est (est +
+    |step|), F''/2 the second divided difference through the three points, est the root's
+    distance from x1 and step = x1 - x2 (NaN where two points coincide)."""
+    d1 = (f1 - f2) / (x1 - x2)
+    d2 = (d1 - (f2 - f3) / (x2 - x3)) / (x1 - x3)
+    return abs(d2 / d1) * est * (est + abs(step))
+
+
 # phases of one annulus' root solve (solve_annuli)
 _INIT = 0
 _MARCH = 1
@@ -393,8 +409,14 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                     else:
                         trial[j] = sgn[j] * (kb[j] + cnt[j]) * h[j]
             else:  # _REFINE: Chandrupatla on the bracket [a, b], fa * fb < 0, b the newest point
-                # the secant through the two newest points estimates the distance to the root
-                est = abs(fj * (trial[j] - b[j]) / (fj - fb[j]))
+                # the secant through the two newest points estimates the root (xs) and its distance from the
+                # newest point (est); the three newest points (trial, b, c) the secant root's own error
+                # (_secant_error), computed only where the cheap estimate est |step| / v_m is within xtol
+                step = trial[j] - b[j]
+                dx = fj * step / (fj - fb[j])
+                est = abs(dx)
+                xs = trial[j] - dx
+                tb, fbo, tc, fco = b[j], fb[j], c[j], fc[j]  # (the error estimate's, below)
                 if fj * fb[j] > 0.0:
                     c[j] = b[j]
                     fc[j] = fb[j]
@@ -407,6 +429,10 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                 fb[j] = fj
                 if abs(fj) <= ftol[j] or abs(b[j] - a[j]) <= xtol[j] or est <= xtol[j]:
                     v[j] = b[j] if abs(fb[j]) <= abs(fa[j]) else a[j]
+                    done = True
+                elif (est * abs(step) <= xtol[j] * xtol[j] / XTOL and min(a[j], b[j]) < xs < max(a[j], b[j])
+                      and _secant_error(trial[j], fj, tb, fbo, tc, fco, est, step) <= 0.1 * xtol[j]):
+                    v[j] = xs  # the secant's root, unevaluated: by both estimates within xtol
                     done = True
                 else:
                     cnt[j] += 1
@@ -428,6 +454,8 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                         trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
                                                           xtol[j]) * (a[j] - b[j])
                     else:  # no third point of the right sign: a secant step first
+                        c[j] = a[j]  # (the third point of the first error estimate)
+                        fc[j] = fa[j]
                         tl = 0.5 * xtol[j] / abs(a[j] - b[j])
                         t = min(max(fb[j] / (fb[j] - fa[j]), tl), 1.0 - tl)
                         trial[j] = b[j] + t * (a[j] - b[j])

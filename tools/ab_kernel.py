@@ -1,0 +1,72 @@
+"""Paired A/B timing of two checkouts' solvers in one process (one thread, alternated).
+
+Loads propmap from two source trees (each with its kernel cache already compiled: run any
+solve in each checkout first), then times ``rotor_loads`` on the same batch with each in
+turn, alternating the order every round, and prints the median of the paired ratios B/A
+(forward flight and axial): in one process the machine's drift between runs cancels, which
+whole-process timings on a shared machine do not resolve to a few percent. The batch is
+benchmarks/bench_solver.py's envelope (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg;
+apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set).
+
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS]   # ~2 min for 30 rounds
+
+e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
+``make env`` there); also prints each tree's residual evaluations per annulus.
+"""
+
+import importlib
+import sys
+import time
+
+import numba
+import numpy as np
+
+
+def load(src: str):
+    """propmap imported from ``src``, its solver modules loaded before the next tree replaces them."""
+    for m in [m for m in sys.modules if m == "propmap" or m.startswith("propmap.")]:
+        del sys.modules[m]
+    sys.path.insert(0, src)
+    pm = importlib.import_module("propmap")
+    if not pm.__file__.startswith(src):
+        raise SystemExit(f"propmap came from {pm.__file__}, not {src}")
+    for name in ("rotor_loads", "load_propeller", "default_params"):  # resolve the lazy exports now
+        getattr(pm, name)
+    for mod in ("core.solver", "core._kernel", "core._annulus", "io.catalogue", "io.calibration"):
+        importlib.import_module(f"propmap.{mod}")
+    pm.load_propeller("apce_8x6")
+    pm.default_params("apce_8x6")
+    sys.path.remove(src)
+    return pm
+
+
+def main() -> None:
+    if len(sys.argv) < 3:
+        raise SystemExit(__doc__)
+    numba.set_num_threads(1)
+    trees = {"A": load(sys.argv[1]), "B": load(sys.argv[2])}
+    rounds = int(sys.argv[3]) if len(sys.argv) > 3 else 30
+    rng = np.random.default_rng(5)
+    n = 4000
+    om = rng.uniform(3000, 12000, n) * np.pi / 30
+    V = rng.uniform(0, 25, n)
+    inc = np.radians(rng.uniform(0, 90, n))
+    args = {k: (pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")) for k, pm in trees.items()}
+    for k, pm in trees.items():
+        r = pm.rotor_loads(*args[k], om, V, inc)
+        print(f"{k}: {pm.__file__}; {r.n_evaluations.mean() / r.r.size:.3f} residual evaluations per annulus")
+    for label, beta in (("forward flight", inc), ("axial", 0.0 * inc)):
+        t = {"A": [], "B": []}
+        for i in range(rounds):
+            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+                t0 = time.process_time()
+                trees[k].rotor_loads(*args[k], om, V, beta)
+                t[k].append(time.process_time() - t0)
+        a, b = np.array(t["A"]), np.array(t["B"])
+        q = np.percentile(b / a, [25, 50, 75])
+        print(f"{label}: A {1e6 * np.median(a) / n:.2f}, B {1e6 * np.median(b) / n:.2f} us per point; B / A paired "
+              f"median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+
+
+if __name__ == "__main__":
+    main()
