@@ -206,10 +206,10 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     D, M_R and (flapping blades) Y and M_P, which are odd in V sin(beta) (the azimuth nodes
     are symmetric in sin psi), so that this one-sided slope is the derivative; climbing
     (beta = 0) and descending (beta = pi) for the axial slopes of T, Q and v_i,mean, whose
-    mean is returned: the limit of central differences. With Glauert's momentum the two are equal; with the empirical
-    descent momentum, which switches on at V cos(beta) = 0, they differ (docs/solver.md,
-    Derivatives), and the mean is what a vehicle's rotation sees (its rotors on either side
-    climb and descend alike).
+    mean is returned: the limit of central differences. With Glauert's momentum the two are
+    equal; with the empirical descent momentum, which switches on at V cos(beta) = 0, they
+    differ (docs/solver.md, Derivatives), and the mean is what a vehicle's rotation sees (its
+    rotors on either side climb and descend alike).
 
     Parameters
     ----------
