@@ -114,13 +114,14 @@ def flight_with_flapping() -> dict:
     """The flight fit of the four shared NeuroBEM logs with the blades' flapping freed, with the
     implicit Jacobian (the default) and with differences of the solver, in one run."""
     from propmap.identify.flight import FLIGHT_FIT, fit_flight, flight_samples
+    from propmap.identify.options import FLAP_START
     from propmap.io.flightlog import read_flight_log
 
     logs_dir = Path(__file__).resolve().parents[2] / "shared" / "data" / "neurobem_flights"
     vehicle = read_vehicle(str(resources.files("propmap") / "data/examples/neurobem_quadrotor.toml"))
     samples = flight_samples([read_flight_log(p) for p in sorted(logs_dir.glob("*.mat"))], vehicle)
     names = FLIGHT_FIT + ("flap_compliance",)
-    base = pm.generic_params().replace(flap_compliance=1.0)
+    base = pm.generic_params().replace(flap_compliance=FLAP_START)
     out = {"data": "NeuroBEM flight logs, 4 segments", "names": list(names), "samples": len(samples.force)}
     fits = {}
     for jac in ("implicit", "differences"):

@@ -328,35 +328,24 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
           - d_ratio[..., None, None] * proj)
     dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, Rc[..., None] * z)
                                   + (Rs - r_ratio)[..., None, None] * ee + r_ratio[..., None, None] * proj)
-    if np.any(loads.side_force) or np.any(loads.pitching_moment) or _flapping_slopes(loads, still):
-        # flapping blades: -spin Y l and -M_P l, l = z x e_ip, with dl/dV = -e_ip l^T / V_s, so
-        # d(-spin Y l)/dV = -spin ((Y_s - Y / V_s) l e^T + Y_c l z^T + (Y / V_s) [z]x), as l e^T - e l^T = [z]x
-        # (the cross-product matrix of z, isotropic in the disk plane), and M_P likewise; Y and M_P are odd in V_s
-        (Ys, Yc), (Ps, Pc) = split("side_force"), split("pitching_moment")
-        y_ratio = np.where(small, Ys, loads.side_force / np.where(small, 1.0, vs))
-        p_ratio = np.where(small, Ps, loads.pitching_moment / np.where(small, 1.0, vs))
-        lat = np.cross(z, e)
-        zx = np.zeros(shape + (3, 3))
-        zx[..., 0, 1], zx[..., 0, 2], zx[..., 1, 2] = -z[..., 2], z[..., 1], -z[..., 0]
-        zx = zx - np.swapaxes(zx, -1, -2)
+    # flapping blades (zeros for rigid ones): -spin Y l and -M_P l, l = z x e_ip, with dl/dV = -e_ip l^T / V_s, so
+    # d(-spin Y l)/dV = -spin ((Y_s - Y / V_s) l e^T + Y_c l z^T + (Y / V_s) [z]x), as l e^T - e l^T = [z]x
+    # (the cross-product matrix of z, isotropic in the disk plane), and M_P likewise; Y and M_P are odd in V_s
+    (Ys, Yc), (Ps, Pc) = split("side_force"), split("pitching_moment")
+    y_ratio = np.where(small, Ys, loads.side_force / np.where(small, 1.0, vs))
+    p_ratio = np.where(small, Ps, loads.pitching_moment / np.where(small, 1.0, vs))
+    lat = np.cross(z, e)
+    zx = np.zeros(shape + (3, 3))
+    zx[..., 0, 1], zx[..., 0, 2], zx[..., 1, 2] = -z[..., 2], z[..., 1], -z[..., 0]
+    zx = zx - np.swapaxes(zx, -1, -2)
 
-        def turn(xs, xc, ratio):  # d(X l)/dV
-            return ((xs - ratio)[..., None, None] * outer(lat, e) + outer(lat, xc[..., None] * z)
-                    + ratio[..., None, None] * zx)
+    def turn(xs, xc, ratio):  # d(X l)/dV
+        return ((xs - ratio)[..., None, None] * outer(lat, e) + outer(lat, xc[..., None] * z)
+                + ratio[..., None, None] * zx)
 
-        dF = dF - s[..., None, None] * turn(Ys, Yc, y_ratio)
-        dtau = dtau - turn(Ps, Pc, p_ratio)
+    dF = dF - s[..., None, None] * turn(Ys, Yc, y_ratio)
+    dtau = dtau - turn(Ps, Pc, p_ratio)
     return dF, dtau
-
-
-def _flapping_slopes(loads: RotorLoads, still) -> bool:
-    """Whether the side force or pitching moment has a non-zero derivative in the velocity
-    (flapping blades; rigid ones with the uniform inflow have neither)."""
-    jac = loads.jacobian or {}
-    if any(np.any(jac.get((q, w), 0.0)) for q in ("side_force", "pitching_moment") for w in ("airspeed", "incidence")):
-        return True
-    rest = still if still is not None else (_slopes_at_rest(loads) or {})
-    return any(np.any(rest.get(q, 0.0)) for q in ("side_force", "pitching_moment"))
 
 
 def velocity_gradient(loads: RotorLoads, quantity: str, V, z, still=None) -> np.ndarray:
