@@ -4,6 +4,8 @@ and the cambered model fitted to real data.
 Run:  .venv/bin/python benchmarks/bench_fit.py   (about 1 minute on the 2-core machine)
       .venv/bin/python benchmarks/bench_fit.py --flight   (adds the flight fit with flapping
       blades: about 3 minutes more; needs ../shared/data/neurobem_flights beside the checkout)
+      .venv/bin/python benchmarks/bench_fit.py --swirl   (adds the cambered fit with the wake's
+      swirl: about 2 minutes more)
 
 Every case is fitted twice in the same run: with the residual Jacobian from the model's
 implicit derivatives (the default) and with central differences of the solver.
@@ -14,7 +16,9 @@ at M = 50 directly (the discontinuous objective, docs/numerics.md) and with the 
 continuation in M (docs/identification.md)), fitted from the paper's x0 = (2 pi, 2, 0, 0.47).
 The paper reports 2-10 hours for this fit (Gill & D'Andrea 2017, Sec. IV). Then the
 cambered model fitted (defaults: 8 parameters, population prior) to all of UIUC's apce_8x6
-data (Brandt & Selig, AIAA 2011-1255). With ``--flight``: the flight fit (``fit_flight``) of the
+data (Brandt & Selig, AIAA 2011-1255); with ``--swirl`` that fit again with the wake's swirl
+(``swirl = true``: two equations per annulus, the root and the angular momentum balance, in
+its implicit derivatives). With ``--flight``: the flight fit (``fit_flight``) of the
 NeuroBEM quadrotor's four shared logs (Bauersfeld et al., RSS 2021; 25 samples a second) with
 ``flap_compliance`` added to its default names, from a compliance of 1 rad/(N m), whose
 Jacobian needs the flapping rotors' side-force and pitching-moment derivatives. Writes
@@ -69,6 +73,8 @@ def main() -> None:
                   f"max |rel err| {np.max(np.abs(err)):.2e}, alpha0 {math.degrees(r.x[3]):.2f} deg, "
                   f"poorly determined: {', '.join(r.identifiability.poorly_determined) or 'none'}")
     rows.append(cambered_real_data())
+    if "--swirl" in sys.argv[1:]:
+        rows.append(cambered_real_data(swirl=True))
     if "--flight" in sys.argv[1:]:
         rows.append(flight_with_flapping())
     out = Path(__file__).parent / "results" / "fit.json"
@@ -76,21 +82,23 @@ def main() -> None:
         json.dump(rows, fh, indent=2)
 
 
-def cambered_real_data() -> dict:
-    """The cambered model (defaults) fitted to all of UIUC apce_8x6's static run and sweeps, with
-    the implicit Jacobian (the default) and with differences of the solver, in one run."""
+def cambered_real_data(swirl: bool = False) -> dict:
+    """The cambered model (defaults; with ``swirl`` the wake's swirl on) fitted to all of UIUC
+    apce_8x6's static run and sweeps, with the implicit Jacobian (the default) and with
+    differences of the solver, in one run."""
     from propmap.identify import fit_loads, loads_from_catalogue
     from propmap.validation import coefficient_errors
 
     prop = pm.load_propeller("apce_8x6")
     data = loads_from_catalogue(pm.catalogue()["apce_8x6"], prop.diameter)
-    out = {"data": "UIUC apce_8x6, all", "model": "cambered"}
+    out = {"data": "UIUC apce_8x6, all", "model": "cambered" + (", swirl" if swirl else "")}
+    base = pm.generic_params().replace(swirl=swirl)
     fits = {}
     for jac in ("implicit", "differences"):
-        r = fit_loads(data, prop, options=FitOptions(jacobian=jac))
+        r = fit_loads(data, prop, base=base, options=FitOptions(jacobian=jac))
         e = coefficient_errors(data, prop, r.params)
         fits[jac] = r
-        print(f"cambered, UIUC apce_8x6 ({data.n} points, {len(r.names)} parameters, prior), {jac} Jacobian: "
+        print(f"{out['model']}, UIUC apce_8x6 ({data.n} points, {len(r.names)} parameters, prior), {jac} Jacobian: "
               f"{r.elapsed_s:.2f} s, {r.nfev} evaluations; rms dCT/CT0 {e['rms_ct']:.4f}, dCP/CP0 {e['rms_cp']:.4f} "
               "(in-sample)")
         out[jac] = {"names": list(r.names), "seconds": r.elapsed_s, "residual_evaluations": r.nfev,

@@ -67,7 +67,7 @@ def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, az
 #: rows of the packed outputs of solve_batch: ``out`` (N_OUT, n), ``rad`` (N_RAD, rows, nr),
 #: ``counts`` (N_COUNTS, n) and ``flags`` (N_FLAGS, n)
 N_OUT = 11  # T, D, Q, M_R, Y, M_P, mean inflow; v_h, descent ratio k, in-plane ratio m, reverse-flow radius
-N_RAD = 7  # v_i, dT, dD, dQ, dM_R, dY, dM_P
+N_RAD = 8  # v_i, dT, dD, dQ, dM_R, dY, dM_P, the swirl u (0 without it)
 N_COUNTS = 5  # status, annuli with multiple roots, annuli in vortex ring, residual evaluations, working state
 N_FLAGS = 5  # converged, vortex ring, multiple roots, reverse flow, inflow extrapolated
 
@@ -99,9 +99,9 @@ def _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swi
     numba's inliner): ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
     the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
     the flags', are written by :func:`point_flags`); ``rad``
-    shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P per annulus when
-    ``radial``, else unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the
-    rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations (row
+    shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P and the swirl u the roots
+    were solved with (0 without swirl) per annulus when ``radial``, else unused (pass shape
+    (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations (row
     4, the working state, is :func:`point_flags`').
     ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
     4 + (annulus status code).
@@ -156,7 +156,8 @@ def _solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swi
                 s1[j] = 0.0
                 s2[j] = 0.0
                 s3[j] = 0.0
-        us = np.zeros(nr)  # the annuli's swirl [m/s]
+        us = rad[N_RAD - 1, i] if radial else np.empty(nr)  # the annuli's swirl [m/s] (kept for the derivatives)
+        us[:] = 0.0
         ne = 0
         for it in range(SWIRL_MAX_ITER if swirl else 1):
             if it > 0:

@@ -64,7 +64,7 @@ from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_a
 from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
-                       PK_RADIAL_DRAG, TWO_OVER_PI)
+                       PK_RADIAL_DRAG, SWIRL_LIMIT, TWO_OVER_PI)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -112,20 +112,72 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _add_fixed_root(out, p, i, wj, wvj, Lv, Gv, dt, dd, dq, dr, span, axial):
+def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
     """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
     blade's sums only (a section parameter, the density's Reynolds part): the differences
     (dt, dd, dq, dr) of its loads over ``span``, G's change being dt's (the loss factor and the
-    momentum side do not depend on p); ``wj`` the annulus' weight, ``wvj`` its mean-inflow
-    weight; D and M_R stay 0 in axial flow."""
+    momentum side do not depend on p); ``sw`` the annulus' :func:`_swirl_system`; ``wj`` the
+    annulus' weight, ``wvj`` its mean-inflow weight; D and M_R stay 0 in axial flow."""
     k2 = 1.0 / span
-    dv = -(dt * k2) / Gv
-    out[0, p, i] += wj * (dt * k2 + Lv[0] * dv)
-    out[2, p, i] += wj * (dq * k2 + Lv[2] * dv)
+    dv, du = _swirl_solve(sw, dt * k2, dt * k2, dq * k2, 0.0)
+    out[0, p, i] += wj * (dt * k2 + Lv[0] * dv - sw[6] * du)
+    out[2, p, i] += wj * (dq * k2 + Lv[2] * dv - sw[8] * du)
     if not axial:
-        out[1, p, i] += wj * (dd * k2 + Lv[1] * dv)
-        out[3, p, i] += wj * (dr * k2 + Lv[3] * dv)
+        out[1, p, i] += wj * (dd * k2 + Lv[1] * dv - sw[7] * du)
+        out[3, p, i] += wj * (dr * k2 + Lv[3] * dv - sw[9] * du)
     out[4, p, i] += wvj * dv
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _swirl_system(swirl, v, y, Om, q0, h0, naz, cf, cq, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
+    """One annulus' linearised equations in its unknowns (v, u), the inflow and the swirl.
+
+    The root solves G(v, u, x) = dT_BET - F dT_BEMT = 0 (eq 11) at the blade speed Omega y - u,
+    and with swirl u balances the angular momentum, S(v, u, x) = u - v dQ / (y dT) = 0
+    (_physics.swirl_target; dT, dQ the annulus' thrust and torque densities), or is held at its
+    clip +-SWIRL_LIMIT Omega y. Given the loads' partials at the fixed (v, u): ``Tv``, ``Qv``
+    (d/dv of dT, dQ), ``Tt``, ``Dt``, ``Qt``, ``Rt`` (d/dU_T of dT, dD, dQ, dM_R: the swirl's
+    partials are their negatives), ``mom_wy`` (d/d(Omega y) of the momentum side: its swirl
+    partial is the negative) and ``Gv``; the base loads from the element at the root per node
+    (``q0``, ``h0``, scaled by ``cf``, ``cq``). Returns (G_u, S_v, S_u, a, T0, Q0 [or the clip's
+    dS/dOmega in a's place, T0 = 0], Tt, Dt, Qt, Rt, Gv) for :func:`_swirl_solve`; without swirl
+    the identity S = u (u held at 0): G_u = S_v = 0, S_u = 1 and the U_T partials zeroed.
+    """
+    if not swirl:
+        return 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, Gv
+    T0 = 0.0
+    Q0 = 0.0
+    for k in range(naz):
+        T0 += q0[k]
+        Q0 += h0[k]
+    T0 *= cf
+    Q0 *= cq
+    Gu = -Tt + mom_wy
+    if T0 == 0.0:  # no thrust: the target is 0 (_physics.swirl_target), S = u
+        return Gu, 0.0, 1.0, 0.0, 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
+    target = v * Q0 / (y * T0)
+    lim = SWIRL_LIMIT * Om * y
+    if abs(target) >= lim:  # held at the clip, S = u -+ SWIRL_LIMIT Omega y: it moves with Omega only
+        return Gu, 0.0, 1.0, (-SWIRL_LIMIT * y if target > 0.0 else SWIRL_LIMIT * y), 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
+    a = v / (y * T0 * T0)
+    Sv = -Q0 / (y * T0) - a * (Qv * T0 - Q0 * Tv)
+    Su = 1.0 + a * (Qt * T0 - Q0 * Tt)
+    return Gu, Sv, Su, a, T0, Q0, Tt, Dt, Qt, Rt, Gv
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _swirl_solve(sw, Gx, Tx, Qx, e_om):
+    """(dv/dx, du/dx) of one annulus from its :func:`_swirl_system` ``sw`` and an input's
+    partials at the fixed (v, u): ``Gx`` of the residual, ``Tx``, ``Qx`` of the thrust and
+    torque densities, ``e_om`` the input's Omega component (moves a clipped swirl); without
+    swirl dv = -Gx / G_v, du = 0."""
+    Gu, Sv, Su, a, T0, Q0, _, _, _, _, Gv = sw
+    if T0 != 0.0:
+        Sx = -a * (Qx * T0 - Q0 * Tx)
+    else:  # held at 0 or at its clip (a: the clip's dS/dOmega)
+        Sx = a * e_om
+    det = Gv * Su - Gu * Sv
+    return -(Gx * Su - Gu * Sx) / det, -(Gv * Sx - Sv * Gx) / det
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
@@ -401,7 +453,7 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
+def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     y = nodes[NODE_Y]
     w = nodes[NODE_W]
     th0 = nodes[NODE_TH]
@@ -463,9 +515,14 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
     r0 = np.zeros(naz_half)  # the radial drag's (_radial) at the root, per node
     ps = np.zeros((4 + n_par, 5))  # the sums of the passes other than the inputs' (below)
     krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
+    swirl = roots.shape[0] == 2
     for j in range(nr):
-        vj = v[i, j]
+        vj = roots[0, i, j]
         yj = y[j]
+        # with swirl the element sees the blade speed Omega y - u (the annulus' swirl u): every element pass and
+        # the loss factor take Omega less u / y, the section constants Omega itself (as _solve_batch)
+        uj = roots[1, i, j] if swirl else 0.0
+        ome = om - uj / yj if swirl else om
         th = th0[j] + dth
         sth = np.sin(th)
         cth = np.cos(th)
@@ -477,12 +534,13 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         hP = ONE_SIDED * scale
         hth = ONE_SIDED
         UP = vc + vj
-        if n_in > 0:  # the inputs' passes, fused (the U_P pass is d/dv as well)
-            sums, rsums = _partials(q0, h0, r0, vj, om, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk)
+        if n_in > 0 or swirl:  # the inputs' passes, fused (the U_P pass is d/dv, the U_T pass -d/du as well)
+            sums, rsums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model,
+                                    pk)
             tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
             rB, rT, rTs, rP, rU = rsums
         else:
-            _base(q0, h0, r0, om, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
+            _base(q0, h0, r0, ome, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
             tT = tTs = tTs2 = tH = tHs = tHs2 = uT = uTs = uH = uHs = 0.0
             rB = rT = rTs = rP = rU = 0.0
         # the other passes through one (inlined) call: 0 the U_P pass (d/dv) where the inputs' did not run,
@@ -490,7 +548,7 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         # that does not enter), 3 + k the k-th section parameter's (the element's constants pk, the annulus'
         # cam), 3 + n_par the density's (through the Reynolds constant sc; cfac and mfac scale out)
         for m in range(3 + n_par + (1 if hrho != 0.0 else 0)):
-            if (m == 0 and n_in > 0) or (m == 1 and n_in < 4) or (m == 2 and n_par == 0 and hrho == 0.0):
+            if (m == 0 and (n_in > 0 or swirl)) or (m == 1 and n_in < 4) or (m == 2 and n_par == 0 and hrho == 0.0):
                 continue
             up, tha, stha, ctha, sa, pka = UP, th, sth, cth, s, pk
             if m == 0:
@@ -505,9 +563,9 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
                 pka = pkpm[m - 3]
                 if not cam_same[m - 3]:
                     sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 3])
-            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, om, vs, up, yj, tha, stha, ctha, sa,
-                                                                     sinpsi, naz, model, pka)
-        if n_in == 0:
+            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, up, yj, tha, stha, ctha,
+                                                                     sa, sinpsi, naz, model, pka)
+        if n_in == 0 and not swirl:
             pT, pTs, pH, pHs, rP = ps[0, 0], ps[0, 1], ps[0, 2], ps[0, 3], ps[0, 4]
         kP = 1.0 / hP
         cT = cTs = cH = cHs = 0.0
@@ -523,7 +581,7 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
             tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
                 0.0
             if krad != 0.0:  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
-                rB = _radial(om * yj, UP, th, s, 0.0, model, pk) * (1.0 - m2)
+                rB = _radial(ome * yj, UP, th, s, 0.0, model, pk) * (1.0 - m2)
         # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
         rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
@@ -558,73 +616,79 @@ def _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par
         # the airspeed's ray (below)
         analytic = not emp or one_sided or (vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
         if analytic:
-            mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
+            mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, ome, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
         else:
             hv = STEP * (abs(vj) + abs(vc) + abs(vs) + 0.01 * om * yj + 1e-9)
             mj, ctj, chj = mfac[j], ct[j], ch[j]
-            mv = (_momentum_side(vj + hv, om, vs, vc, yj, mj, ctj, chj, emp)
-                  - _momentum_side(vj - hv, om, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+            mv = (_momentum_side(vj + hv, ome, vs, vc, yj, mj, ctj, chj, emp)
+                  - _momentum_side(vj - hv, ome, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
             ho = STEP * om
-            mom_om = (_momentum_side(vj, om + ho, vs, vc, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, om - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
-            mom_vs = (_momentum_side(vj, om, vs + hv, vc, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, om, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
-            mom_vc = (_momentum_side(vj, om, vs, vc + hv, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, om, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+            mom_om = (_momentum_side(vj, ome + ho, vs, vc, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, ome - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
+            mom_vs = (_momentum_side(vj, ome, vs + hv, vc, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, ome, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+            mom_vc = (_momentum_side(vj, ome, vs, vc + hv, yj, mj, ctj, chj, emp)
+                      - _momentum_side(vj, ome, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
         Gv = Lv0 - mv
+        # the swirl's balance (without swirl the identity du = 0, which leaves dv = -G_x / G_v)
+        sw = _swirl_system(swirl, vj, yj, om, q0, h0, naz, cf, cq, Lv0, Lv2, tT * cf, (tHs + rr * rT * kT) * cf,
+                           tH * cq, tTs * cq, mom_om / yj, Gv)
         # at rest, the momentum side there: the base of the one-sided differences along the rays
-        m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
+        m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
             if p == 3:  # the collective moves no momentum side
                 dmom = 0.0
             elif p == 1 and one_sided:  # along the airspeed's ray from rest
-                dmom = _ray_slope(m0, vj, om, sb, cb, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = _ray_slope(m0, vj, ome, sb, cb, h_ray, yj, mfac[j], ct[j], ch[j], emp)
             else:  # analytic or differenced above: the chain rule
                 dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
             dL0 = dB[0, 0] * e[p, 0] + dB[0, 1] * e[p, 1] + dB[0, 2] * e[p, 2] + dB[0, 3] * e[p, 3]
             dL1 = dB[1, 0] * e[p, 0] + dB[1, 1] * e[p, 1] + dB[1, 2] * e[p, 2] + dB[1, 3] * e[p, 3]
             dL2 = dB[2, 0] * e[p, 0] + dB[2, 1] * e[p, 1] + dB[2, 2] * e[p, 2] + dB[2, 3] * e[p, 3]
             dL3 = dB[3, 0] * e[p, 0] + dB[3, 1] * e[p, 1] + dB[3, 2] * e[p, 2] + dB[3, 3] * e[p, 3]
-            dv = -(dL0 - dmom) / Gv
-            out[0, p, i] += w[j] * (dL0 + Lv0 * dv)
-            out[2, p, i] += w[j] * (dL2 + Lv2 * dv)
+            dv, du = _swirl_solve(sw, dL0 - dmom, dL0, dL2, e[p, 0])
+            out[0, p, i] += w[j] * (dL0 + Lv0 * dv - sw[6] * du)
+            out[2, p, i] += w[j] * (dL2 + Lv2 * dv - sw[8] * du)
             if not axial or (e[p, 1] != 0.0):
-                out[1, p, i] += w[j] * (dL1 + Lv1 * dv)
-                out[3, p, i] += w[j] * (dL3 + Lv3 * dv)
+                out[1, p, i] += w[j] * (dL1 + Lv1 * dv - sw[7] * du)
+                out[3, p, i] += w[j] * (dL3 + Lv3 * dv - sw[9] * du)
             out[4, p, i] += w[j] * yj * dv / wy
         if n_rays == 3 and n_in >= 3 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
             for k in range(3):
                 rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)
                 rc = 1.0 - k if k != 1 else 0.0
-                dmom = _ray_slope(m0, vj, om, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
-                dv = -(dB[0, 1] * rs + dB[0, 2] * rc - dmom) / Gv
+                dmom = _ray_slope(m0, vj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dT = dB[0, 1] * rs + dB[0, 2] * rc
+                dQ = dB[2, 1] * rs + dB[2, 2] * rc
+                dv, du = _swirl_solve(sw, dT - dmom, dT, dQ, 0.0)
                 c = n_all + k
-                out[0, c, i] += w[j] * (dB[0, 1] * rs + dB[0, 2] * rc + Lv0 * dv)
-                out[2, c, i] += w[j] * (dB[2, 1] * rs + dB[2, 2] * rc + Lv2 * dv)
+                out[0, c, i] += w[j] * (dT + Lv0 * dv - sw[6] * du)
+                out[2, c, i] += w[j] * (dQ + Lv2 * dv - sw[8] * du)
                 if rs != 0.0:
-                    out[1, c, i] += w[j] * (dB[1, 1] * rs + dB[1, 2] * rc + Lv1 * dv)
-                    out[3, c, i] += w[j] * (dB[3, 1] * rs + dB[3, 2] * rc + Lv3 * dv)
+                    out[1, c, i] += w[j] * (dB[1, 1] * rs + dB[1, 2] * rc + Lv1 * dv - sw[7] * du)
+                    out[3, c, i] += w[j] * (dB[3, 1] * rs + dB[3, 2] * rc + Lv3 * dv - sw[9] * du)
                 out[4, c, i] += w[j] * yj * dv / wy
         Lv = (Lv0, Lv1, Lv2, Lv3)
         # section parameters and the density: the loss factor and the momentum side do not depend on them, so G
         # changes by the blade's thrust
         for k in range(n_par + (1 if hrho != 0.0 else 0)):
             span = hrho if k == n_par else hpar[k]
-            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, Gv, (ps[3 + k, 0] - ps[2, 0]) * cf,
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, sw, (ps[3 + k, 0] - ps[2, 0]) * cf,
                             (ps[3 + k, 3] - ps[2, 3] + rr * (ps[3 + k, 4] - ps[2, 4])) * cf,
                             (ps[3 + k, 2] - ps[2, 2]) * cq,
                             (ps[3 + k, 1] - ps[2, 1]) * cq, span, axial)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
-def sensitivities(Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
+def sensitivities(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
     Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
     (V sin beta, V cos beta), the blade angles of ``nodes`` without the per-point collective
-    ``coll``; ``v`` shape (n, nr): the converged roots; ``ok`` shape (n,): the points whose
+    ``coll``; ``roots`` shape (1, n, nr): the converged roots v, or (2, n, nr) with swirl: the roots
+    and the swirl u of every annulus (:func:`_swirl_system`); ``ok`` shape (n,): the points whose
     every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
     Section parameters, ``par`` = (pkpm, campm, cam_same, hpar) (packed, so that the argument
@@ -644,4 +708,4 @@ def sensitivities(Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in,
     along the point's beta and the incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
-        _point(i, Om, V, b, coll, v, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)
+        _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)

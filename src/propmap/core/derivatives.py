@@ -48,13 +48,13 @@ def differentiable(params: SectionParams, names) -> bool:
     Returns
     -------
     bool
-        False for a linear inflow model or swirl, or a name that is not a numeric field
+        False for a linear inflow model, or a name that is not a numeric field
         entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other than
         ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
         rigid and flapping blades alike); the rotation rates' range is the caller's to check
         (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform" or params.swirl:
+    if params.inflow != "uniform":
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
@@ -79,10 +79,9 @@ def _derivative_inputs(derivatives, params) -> tuple:
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
-    if params.inflow != "uniform" or params.swirl:
-        raise ValueError("derivatives are implemented for the uniform inflow without swirl (the paper's rotor, "
-                         f"with or without the radial drag and flapping); this set has inflow={params.inflow!r}, "
-                         f"swirl={params.swirl}")
+    if params.inflow != "uniform":
+        raise ValueError("derivatives are implemented for the uniform inflow (the paper's rotor, with or without "
+                         f"the radial drag, flapping and swirl); this set has inflow={params.inflow!r}")
     return wrt
 
 
@@ -140,7 +139,7 @@ def _parameter_constants(names, params, air):
     return pks, cams, step
 
 
-def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, params, air, propeller,
+def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
               discretization, loads) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
     the sensitivity kernel (core/_sensitivity.py). With :data:`STILL_AIR`, at the points with
@@ -170,7 +169,7 @@ def _jacobian(wrt, om, V, b, coll, v, converged, nd, model, pk, cam, empirical, 
     n_cols = n_in + len(names) + (RHO in wrt)
     raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
-    _sensitivity.sensitivities(om, V, b, coll, v, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in,
+    _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in,
                                (pks, cams, np.all(cams == cam, axis=1), step), np.ascontiguousarray(scp, dtype=float),
                                hrho, raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}

@@ -104,7 +104,8 @@ def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
     if radial:
         rad = rad.copy()
         rad[0] *= f[:, None]
-        rad[1:] *= f2[None, :, None]
+        rad[1:-1] *= f2[None, :, None]
+        rad[-1] *= f[:, None]  # the swirl, a velocity
     return (*scaled, rad)
 
 
@@ -250,8 +251,9 @@ def rotor_loads(
         (the air density [kg/m^3]) and ``"flap_compliance"``. By the implicit function
         theorem on each annulus' converged root (core/_sensitivity.py), not by differencing
         the solver, and for flapping blades the chain rule through the flapping
-        (core/flapping.flapping_derivatives); for the uniform inflow without swirl and
-        Omega >= 0.1 rad/s. False (default): none.
+        (core/flapping.flapping_derivatives); with swirl each annulus' root and angular
+        momentum balance together (core/_sensitivity._swirl_system); for the uniform inflow
+        and Omega >= 0.1 rad/s. False (default): none.
 
     Returns
     -------
@@ -267,7 +269,7 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model or swirl, an
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model, an
         Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
@@ -323,7 +325,7 @@ def rotor_loads(
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow, v_h, k, m, reverse-flow radius
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
-    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P
+    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl
     counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
     flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
     # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
@@ -376,7 +378,9 @@ def rotor_loads(
     jac = None
     if wrt:
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
-        raw = (_jacobian(solved, om1, V1, b1, c1, rad[0], converged, nd, model, pk, cam, empirical, params, air,
+        # v_i (and the swirl), contiguous as the kernel is compiled for
+        roots = np.ascontiguousarray(rad[::_kernel.N_RAD - 1]) if params.swirl else rad[:1]
+        raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
                          propeller, discretization, rigid) if solved else {})
         if params.flap_compliance > 0:
             if COMPLIANCE in wrt:
@@ -390,7 +394,7 @@ def rotor_loads(
                     T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
                     propeller.n_blades))
         jac = {k: s(a) for k, a in raw.items()}
-    radial_out = ([a.reshape(shape + (nr,)) for a in rad] if radial else [None] * _kernel.N_RAD)
+    radial_out = ([a.reshape(shape + (nr,)) for a in rad[:-1]] if radial else [None] * (_kernel.N_RAD - 1))
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
         thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y), pitching_moment=s(P),
