@@ -68,8 +68,10 @@ def exp_sat_numpy(z):
     return np.exp(np.clip(z, -EXP_CLIP, EXP_CLIP))
 
 
-def make_element(atan2, exp_sat):
-    """Return the paper's element (eqs 3-4) using the given arctangent and saturated exp."""
+def make_element(atan2, exp_sat, profile=False):
+    """Return the paper's element (eqs 3-4) using the given arctangent and saturated exp; with
+    ``profile`` it returns a third value, the profile drag's C_D,p U (:func:`make_profile_drag`,
+    computed with the element's own terms; the implicit derivatives' radial drag)."""
 
     def element_gill(UT, UP, theta, sin_th, cos_th, kre, cl1, cl2, cd, alpha0, M, cd0, sincos):
         """Per-unit-span section loads of eqs (3)-(4), without the factor 0.5 rho c.
@@ -110,14 +112,18 @@ def make_element(atan2, exp_sat):
             q = exp_sat(-M * (alpha + alpha0))
             s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
             CL = (1.0 - s) * cl1 * alpha + s * post
-        CD = cd * sin_a * sin_a + kre / np.sqrt(U) + cd0  # eq (4)
+        cdp = kre / np.sqrt(U) + cd0
+        CD = cd * sin_a * sin_a + cdp  # eq (4)
+        if profile:  # (a constant of the closure: each compiled element has one return type)
+            return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT), cdp * U
         return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT)
 
     return element_gill
 
 
-def make_cambered_element(atan2, exp_sat):
-    """Return the cambered-polar element using the given arctangent and saturated exp."""
+def make_cambered_element(atan2, exp_sat, profile=False):
+    """Return the cambered-polar element using the given arctangent and saturated exp; with
+    ``profile`` it returns a third value, C_D,p U (as :func:`make_element`)."""
 
     def element_cambered(UT, UP, theta, sin_th, cos_th, a, cdf, g, dal0, alpha_L0, cd90, cd_min, cd2, cl_cdmin, M,
                          a_stall_pos, a_stall_neg):
@@ -160,7 +166,10 @@ def make_cambered_element(atan2, exp_sat):
         dcl = cl_att - cl_cdmin
         CL = (1.0 - s) * cl_att + s * cd90 * sin_a * cos_a
         # profile drag (quadratic polar, Reynolds-scaled) + flat-plate drag past stall
-        CD = cdf * (cd_min + (1.0 - s) * cd2 * dcl * dcl) + s * cd90 * sin_a * sin_a
+        cdp = cdf * (cd_min + (1.0 - s) * cd2 * dcl * dcl)
+        CD = cdp + s * cd90 * sin_a * sin_a
+        if profile:
+            return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT), cdp * U
         return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT)
 
     return element_cambered

@@ -48,10 +48,13 @@ that D and M_R change with V sin beta there and with nothing else.
 The radial flow's drag (airfoil.RotorOptions.radial_drag, pk[PK_RADIAL_DRAG] = 1) adds
 V sin(beta) times the node sums of C_D,p U cos^2 psi to D (_annulus.annulus_loads; C_D,p the
 profile drag). It depends on the inputs through U_T, U_P, the blade angle and the section
-constants, as the element does, so the same passes give its partials: it is evaluated at
-each pass' stepped state (:func:`_radial`) and differenced like qT and qH; V sin(beta)
-enters it once more explicitly (its base sum; in axial flow the one node's value times the
-half circle's mean cos^2 psi, 1 - mean sin^2 psi).
+constants, as the element does, so the same passes give its partials: the element returns
+C_D,p U from its own terms at each pass' stepped state (_physics.make_element's ``profile``;
+since 2026-11-25, where a second evaluation of the profile drag at every stepped state had
+made the derivatives with respect to the three inputs cost 2.7x the loads instead of 1.5x)
+and it is differenced like qT and qH; V sin(beta) enters it once more explicitly (its base
+sum; in axial flow the one node's value times the half circle's mean cos^2 psi, 1 - mean
+sin^2 psi, :func:`_radial`).
 """
 
 from __future__ import annotations
@@ -59,8 +62,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered,
-                       _element_gill, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl, _profile_cd)
+from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered_p,
+                       _element_gill_p, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl, _profile_cd)
 from ._jitcache import CACHE
 from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
                        LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
@@ -294,25 +297,25 @@ def _base(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
-            UT = Om * y + Vs * sinpsi[k]
-            q0[k], h0[k] = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
-                                             a6, a7)
-            if pk[PK_RADIAL_DRAG] != 0.0:
-                r0[k] = _radial(UT, UP, th, s, sinpsi[k], model, pk)
+            sk = sinpsi[k]
+            q0[k], h0[k], g = _element_cambered_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1,
+                                                  a2, a3, a4, a5, a6, a7)
+            r0[k] = g * (1.0 - sk * sk)
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
-            UT = Om * y + Vs * sinpsi[k]
-            q0[k], h0[k] = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            if pk[PK_RADIAL_DRAG] != 0.0:
-                r0[k] = _radial(UT, UP, th, s, sinpsi[k], model, pk)
+            sk = sinpsi[k]
+            q0[k], h0[k], g = _element_gill_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            r0[k] = g * (1.0 - sk * sk)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _radial(UT, UP, th, s, sk, model, pk):
     """The radial flow's drag per unit in-plane speed along the airspeed, C_D,p U cos^2 psi
     (_annulus.annulus_loads; C_D,p the profile drag), at a node of sin psi = ``sk``, blade
-    angle ``th`` and section constants ``s``."""
+    angle ``th`` and section constants ``s`` (the passes below take C_D,p U from the element
+    itself, _physics.make_element's ``profile``: no second evaluation of its angle and stall
+    blend)."""
     return _profile_cd(UT, UP, th, s[0], s[1], s[2], s[3], model, pk) * np.sqrt(UT * UT + UP * UP) * (1.0 - sk * sk)
 
 
@@ -326,38 +329,34 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     so the caller perturbs one of them per pass. Returns the differences' sums weighted as
     the loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
     qH sin(psi), qH and qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH,
-    qH sin and the radial drag's (0 without it), not divided by the step or the node count.
+    qH sin and the radial drag's (used only with it), not divided by the step or the node count.
     """
     aT = aTs = aH = aHs = aR = 0.0
-    rad = pk[PK_RADIAL_DRAG] != 0.0
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
             sk = sinpsi[k]
-            UT = Om * y + Vs * sk
-            q, h = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            q, h, g = _element_cambered_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
+                                          a4, a5, a6, a7)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
             aH += e
             aHs += e * sk
-            if rad:
-                aR += _radial(UT, UP, th, s, sk, model, pk) - r0[k]
+            aR += g * (1.0 - sk * sk) - r0[k]
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):
             sk = sinpsi[k]
-            UT = Om * y + Vs * sk
-            q, h = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q, h, g = _element_gill_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             d = q - q0[k]
             e = h - h0[k]
             aT += d
             aTs += d * sk
             aH += e
             aHs += e * sk
-            if rad:
-                aR += _radial(UT, UP, th, s, sk, model, pk) - r0[k]
+            aR += g * (1.0 - sk * sk) - r0[k]
     return aT, aTs, aH, aHs, aR
 
 
@@ -370,28 +369,31 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
     over the loads' about half that of four separate loops, benchmarks/README.md). Returns
     the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P and the U2 sums
     (qT, qT sin, qH, qH sin each), not divided by the steps or the node count, and the radial
-    drag's (:func:`_radial`; zeros without it): its base sum, its U_T sums (plain and sin),
-    its U_P and its U2 sum.
+    drag's (:func:`_radial`, from the same element evaluations; used only with it): its base
+    sum, its U_T sums (plain and sin), its U_P and its U2 sum.
     """
     tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
     pT = pTs = pH = pHs = 0.0
     uT = uTs = uH = uHs = 0.0
     rB = rT = rTs = rP = rU = 0.0
-    rad = pk[PK_RADIAL_DRAG] != 0.0
     UP = Vc + v
     if model == CAMBERED:
         a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
         for k in range(naz):
             sk = sinpsi[k]
+            ck = 1.0 - sk * sk
             UT = Om * y + Vs * sk
-            b0, c0 = _element_cambered(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            b0, c0, g0 = _element_cambered_p(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
+                                             a7)
             q0[k] = b0
             h0[k] = c0
-            q1, h1 = _element_cambered(UT + hT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
-                                       a7)
-            q2, h2 = _element_cambered(UT, UP + hP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
-                                       a7)
-            q3, h3 = _element_cambered(UT, UP, th, sth, cth, u[0], u[1], u[2], u[3], a0, a1, a2, a3, a4, a5, a6, a7)
+            r0[k] = g0 * ck
+            q1, h1, g1 = _element_cambered_p(UT + hT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
+                                             a6, a7)
+            q2, h2, g2 = _element_cambered_p(UT, UP + hP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
+                                             a6, a7)
+            q3, h3, g3 = _element_cambered_p(UT, UP, th, sth, cth, u[0], u[1], u[2], u[3], a0, a1, a2, a3, a4, a5, a6,
+                                             a7)
             d = q1 - b0
             e = h1 - c0
             tT += d
@@ -412,16 +414,24 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             uTs += d * sk
             uH += e
             uHs += e * sk
+            rB += g0 * ck
+            d = (g1 - g0) * ck
+            rT += d
+            rTs += d * sk
+            rP += (g2 - g0) * ck
+            rU += (g3 - g0) * ck
     else:
         g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
             sk = sinpsi[k]
+            ck = 1.0 - sk * sk
             UT = Om * y + Vs * sk
-            b0, c0 = _element_gill(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            b0, c0, f0 = _element_gill_p(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             q0[k] = b0
             h0[k] = c0
-            q1, h1 = _element_gill(UT + hT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            q2, h2 = _element_gill(UT, UP + hP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            r0[k] = f0 * ck
+            q1, h1, f1 = _element_gill_p(UT + hT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+            q2, h2, f2 = _element_gill_p(UT, UP + hP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
             d = q1 - b0
             e = h1 - c0
             tT += d
@@ -436,19 +446,11 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
             pTs += d * sk
             pH += e
             pHs += e * sk
-    if rad:  # the radial drag's passes (:func:`_radial`), in a loop of their own
-        for k in range(naz):
-            sk = sinpsi[k]
-            UT = Om * y + Vs * sk
-            g = _radial(UT, UP, th, s, sk, model, pk)
-            r0[k] = g
-            rB += g
-            d = _radial(UT + hT, UP, th, s, sk, model, pk) - g
+            rB += f0 * ck
+            d = (f1 - f0) * ck
             rT += d
             rTs += d * sk
-            rP += _radial(UT, UP + hP, th, s, sk, model, pk) - g
-            if model == CAMBERED:  # the U2 pass (the paper's section has none)
-                rU += _radial(UT, UP, th, u, sk, model, pk) - g
+            rP += (f2 - f0) * ck
     return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
 
 
