@@ -81,7 +81,7 @@ def test_momentum_side_partials_are_its_derivatives():
     descent curve through its inversion, with Prandtl's tip and hub loss) against central
     differences of the solver's own scalar, on random annuli in climb, the windmill brake and
     the vortex-ring branch."""
-    from propmap.core._sensitivity import _momentum_partials, _momentum_side
+    from propmap.core._momentum_sensitivity import _momentum_partials, _momentum_side
 
     rng = np.random.default_rng(3)
     worst = 0.0

@@ -43,14 +43,17 @@ def _sibling_imports(path: Path) -> set[str]:
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
     assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_fastmath.py", "_flags.py"}
-    assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == names | {"_sensitivity.py"}
+    sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py"}
+    assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == sensitivity
     # every module the kernels import is in their stamp (a new kernel module must be added there)
     core = SRC / "core"
     assert _sibling_imports(core / "_kernel.py") | {"_kernel.py"} <= names
     assert _sibling_imports(core / "_annulus.py") <= names
-    assert _sibling_imports(core / "_sensitivity.py") <= names
+    assert _sibling_imports(core / "_sensitivity.py") <= sensitivity
+    assert _sibling_imports(core / "_momentum_sensitivity.py") <= names
     # the kernels' own files are served by the stamping locators, each with its sources
-    assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_sensitivity.py"}
+    assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_sensitivity.py",
+                                                          "_momentum_sensitivity.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"
     a.write_text("x = 1\n")
@@ -85,8 +88,8 @@ def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernels(tm
     assert min(int(x) for x in run(SERVED)) >= 1  # (the copied cache may hold more overloads than this script's)
     physics = pkg / "core" / "_physics.py"
     text = physics.read_text()
-    assert "+ cd0  # eq (4)" in text
-    physics.write_text(text.replace("+ cd0  # eq (4)", "+ 2.0 * cd0  # eq (4)"))
+    assert "cdp = kre / np.sqrt(U) + cd0\n" in text  # eq (4)'s form drag
+    physics.write_text(text.replace("cdp = kre / np.sqrt(U) + cd0\n", "cdp = kre / np.sqrt(U) + 2.0 * cd0\n"))
     assert [int(x) for x in run(SERVED)] == [0, 0]  # both stale: a call compiles the edited physics
     physics.write_text(text)  # and the unedited sources are served again: the stamp is the contents
     assert min(int(x) for x in run(SERVED)) >= 1

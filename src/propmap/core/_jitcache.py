@@ -3,10 +3,11 @@
 numba stamps a cached function with a hash of the file that defines it only. The solver
 kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
 ``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
-kernel (``_sensitivity.py``) compiles in those and ``_annulus.py``, so an edit there would leave
+kernel (``_sensitivity.py``, calling the momentum side's partials of ``_momentum_sensitivity.py``)
+compiles in those and ``_annulus.py``, so an edit there would leave
 numba serving a kernel compiled from the old physics (module constants such as the Reynolds
 clamp are compiled in). The locators below serve the kernels' own files (``_kernel.py``,
-``_annulus.py``, ``_sensitivity.py``; ``_flags.py``'s own functions use numba's, stamped with
+``_annulus.py``, ``_sensitivity.py``, ``_momentum_sensitivity.py``; ``_flags.py``'s own functions use numba's, stamped with
 that file: they use nothing else of propmap) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
 (:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`), so that editing any of them
@@ -28,10 +29,10 @@ _HERE = Path(__file__).resolve().parent
 KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_fastmath.py",
                   _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
-SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", *KERNEL_SOURCES)
+SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", *KERNEL_SOURCES)
 #: the cached files, each with the sources its stamp covers
 _STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in KERNEL_SOURCES[:2]}
-_STAMPED[os.path.realpath(SENSITIVITY_SOURCES[0])] = SENSITIVITY_SOURCES
+_STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:2]})
 
 
 def sources_stamp(paths=KERNEL_SOURCES) -> bytes:

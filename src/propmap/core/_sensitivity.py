@@ -24,7 +24,8 @@ The steps are 1e-7 of each variable's scale (an O(h) error of about that relativ
 below the root's own tolerance, whereas differencing the whole solver carries that
 tolerance, 1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a
 scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
-the empirical descent curve, through its inversion, and Prandtl's factor); where the
+the empirical descent curve, through its inversion, and Prandtl's factor:
+core/_momentum_sensitivity.py); where the
 empirical model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) it is differenced
 centrally in v, Omega, V sin beta and V cos beta with steps 1e-5 of their scales, whatever
 the airspeed, so that the two sides of the switch are averaged. At V = 0, where the empirical
@@ -62,12 +63,11 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _axial_mass_flow, _cambered_annulus, _element_cambered_p,
-                       _element_gill_p, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl, _profile_cd)
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _cambered_annulus, _element_cambered_p, _element_gill_p, _profile_cd
 from ._jitcache import CACHE
-from ._physics import (EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, LN_RE_MAX,
-                       LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y,
-                       PK_RADIAL_DRAG, SWIRL_LIMIT, TWO_OVER_PI)
+from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
+from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
+                       NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -181,112 +181,6 @@ def _swirl_solve(sw, Gx, Tx, Qx, e_om):
         Sx = a * e_om
     det = Gv * Su - Gu * Sv
     return -(Gx * Su - Gu * Sx) / det, -(Gv * Sx - Sv * Gx) / det
-
-
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
-    """F_loss dT_BEMT/dy of one annulus [N/m]: the residual's momentum side (as _annulus._residual,
-    with the loss factor of _annulus.solve_annuli)."""
-    floss = 1.0
-    if ct >= 0.0 or ch >= 0.0:
-        if emp and Vc < 0.0:
-            inv_sin = _inverse_sin_phi(_axial_mass_flow(v, Vc, Vs), Om * y)
-        else:
-            inv_sin = _inverse_sin_phi(Vc + v, Om * y)
-        if ct >= 0.0:
-            floss = _prandtl(ct, inv_sin)
-        if ch >= 0.0:
-            floss *= _prandtl(ch, inv_sin)
-    if emp:
-        w_ax = _axial_mass_flow(v, Vc, Vs)
-        return floss * mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
-    return floss * _momentum_thrust(v, mfac, Vs, Vc)
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _ray_slope(m0, v, Om, sb, cb, h, y, mfac, ct, ch, emp):
-    """d(F_loss dT_BEMT/dy)/dV from rest along the ray (V sin beta, V cos beta) = V (sb, cb):
-    one-sided, second order, step ``h`` [m/s], ``m0`` the momentum side at V = 0 (the
-    empirical descent model switches on at V cos beta = 0, so only this side is defined)."""
-    m1 = _momentum_side(v, Om, h * sb, h * cb, y, mfac, ct, ch, emp)
-    m2 = _momentum_side(v, Om, 2.0 * h * sb, 2.0 * h * cb, y, mfac, ct, ch, emp)
-    return (4.0 * m1 - m2 - 3.0 * m0) / (2.0 * h)
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _prandtl_slope(c, inv_sin):
-    """dF/d(1/sin phi) of Prandtl's factor F = (2/pi) acos(exp(-c / sin phi)) (_physics.make_prandtl)."""
-    x = min(np.exp(-c * inv_sin), 1.0 - 1e-16)
-    return TWO_OVER_PI * c * x / np.sqrt(1.0 - x * x)
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _mass_flow_partials(v, Vc, Vs, emp):
-    """The axial mass-flow velocity w [m/s] of one annulus and dw/d(v, V cos beta, V sin beta) [-]
-    (inflow v and speeds [m/s]).
-
-    Glauert's w = |Vc + v|, or with ``emp`` in the vortex-ring and turbulent-wake states the
-    empirical curve of _physics.axial_mass_flow, w = g + (v_h^2 / v - g) exp(-(Vs/v)^2),
-    g = |Vc + v|, v_h = d / k, d = -Vc, where k solves f(k) = (v/d) k: differentiated
-    through that equation (dk/dr = k / (f'(k) - r), r = v/d), not by differences.
-    """
-    UP = Vc + v
-    sg = 1.0 if UP >= 0.0 else -1.0
-    g = abs(UP)
-    d = -Vc
-    if not emp or d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
-        return g, sg, sg, 0.0
-    r = v / d
-    k = _empirical_k(r)
-    fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
-    dk_dr = k / (fp - r)
-    vh = d / k
-    # d(v_h)/dv and d(v_h)/dVc (d = -Vc, r = v / d)
-    dvh_v = -d / (k * k) * dk_dr / d
-    dvh_vc = -(1.0 / k - d / (k * k) * dk_dr * (-v / (d * d)))
-    A = vh * vh / v
-    dA_v = 2.0 * vh * dvh_v / v - A / v
-    dA_vc = 2.0 * vh * dvh_vc / v
-    q = Vs / v
-    E = np.exp(-q * q)
-    dE_v = E * 2.0 * q * q / v
-    dE_vs = -E * 2.0 * q / v
-    w = g + (A - g) * E
-    return w, sg * (1.0 - E) + dA_v * E + (A - g) * dE_v, sg * (1.0 - E) + dA_vc * E, (A - g) * dE_vs
-
-
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
-    """d(F_loss dT_BEMT/dy)/d(v, Omega, V sin beta, V cos beta) of one annulus, analytic.
-
-    The momentum side (_momentum_side) is mfac v sqrt(Vs^2 + w^2) times the loss factor of
-    1/sin phi = sqrt(w^2 + (Omega y)^2) / w, w the axial mass-flow velocity
-    (:func:`_mass_flow_partials`; |Vc + v| with Glauert's momentum).
-    """
-    w, w_v, w_vc, w_vs = _mass_flow_partials(v, Vc, Vs, emp)
-    W = np.sqrt(Vs * Vs + w * w) + 1e-300
-    m = mfac * v * W
-    m_w = mfac * v * w / W  # dm/dw
-    m_v = mfac * W + m_w * w_v
-    m_vc = m_w * w_vc
-    m_vs = mfac * v * Vs / W + m_w * w_vs
-    floss = 1.0
-    f_w = 0.0  # dF/dw and dF/d(Omega y)
-    f_wy = 0.0
-    if ct >= 0.0 or ch >= 0.0:
-        wy = Om * y
-        root = np.sqrt(w * w + wy * wy)
-        inv_sin = root / (w + 1e-300)
-        ds_w = -wy * wy / (w * w * root + 1e-300)
-        ds_wy = wy / (w * root + 1e-300)
-        ft = _prandtl(ct, inv_sin) if ct >= 0.0 else 1.0
-        fh = _prandtl(ch, inv_sin) if ch >= 0.0 else 1.0
-        dfs = (_prandtl_slope(ct, inv_sin) * fh if ct >= 0.0 else 0.0) + \
-            (_prandtl_slope(ch, inv_sin) * ft if ch >= 0.0 else 0.0)
-        floss = ft * fh
-        f_w = dfs * ds_w
-        f_wy = dfs * ds_wy
-    return (floss * m_v + f_w * w_v * m, f_wy * y * m, floss * m_vs + f_w * w_vs * m, floss * m_vc + f_w * w_vc * m)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
