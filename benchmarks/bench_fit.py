@@ -5,7 +5,7 @@ Run:  .venv/bin/python benchmarks/bench_fit.py   (about 1 minute on the 2-core m
       .venv/bin/python benchmarks/bench_fit.py --flight   (adds the flight fit with flapping
       blades: about 3 minutes more; needs ../shared/data/neurobem_flights beside the checkout)
       .venv/bin/python benchmarks/bench_fit.py --swirl   (adds the cambered fit with the wake's
-      swirl: about 2 minutes more)
+      swirl: a few seconds more)
 
 Every case is fitted twice in the same run: with the residual Jacobian from the model's
 implicit derivatives (the default) and with central differences of the solver.

@@ -37,3 +37,20 @@ def envelope_points():
     rng = np.random.default_rng(2017)
     n = 200
     return (rng.uniform(3000, 12000, n) * RPM, rng.uniform(0, 25, n), np.radians(rng.uniform(0, 180, n)))
+
+
+def moved_loads(prop, p, om, V, b, w, h, disc):
+    """rotor_loads with one input or parameter moved by h: omega, airspeed, incidence, the
+    collective, rho or a field of ``p`` (the derivative tests' central differences)."""
+    kw = dict(discretization=disc)
+    if w == "omega":
+        return pm.rotor_loads(prop, p, om + h, V, b, **kw)
+    if w == "airspeed":
+        return pm.rotor_loads(prop, p, om, V + h, b, **kw)
+    if w == "incidence":
+        return pm.rotor_loads(prop, p, om, V, b + h, **kw)
+    if w == "collective":
+        return pm.rotor_loads(prop, p, om, V, b, collective=h, **kw)
+    if w == "rho":
+        return pm.rotor_loads(prop, p, om, V, b, air=pm.Air(rho=p.air.rho + h), **kw)
+    return pm.rotor_loads(prop, p.replace(**{w: getattr(p, w) + h}), om, V, b, **kw)

@@ -9,6 +9,8 @@ import pytest
 
 import propmap as pm
 
+from .conftest import moved_loads
+
 LOADS = ("thrust", "drag", "torque", "rolling_moment")
 DISC = pm.Discretization(24, 8)
 
@@ -662,18 +664,7 @@ def test_flapping_blades_derivatives_against_differences(prop, model):
              "flap_compliance": 1e-5, slope: 1e-5}
 
     def moved(w, h):
-        kw = dict(discretization=DISC)
-        if w == "omega":
-            return pm.rotor_loads(prop, p, om + h, V, b, **kw)
-        if w == "airspeed":
-            return pm.rotor_loads(prop, p, om, V + h, b, **kw)
-        if w == "incidence":
-            return pm.rotor_loads(prop, p, om, V, b + h, **kw)
-        if w == "collective":
-            return pm.rotor_loads(prop, p, om, V, b, collective=h, **kw)
-        if w == "rho":
-            return pm.rotor_loads(prop, p, om, V, b, air=pm.Air(rho=p.air.rho + h), **kw)
-        return pm.rotor_loads(prop, p.replace(**{w: getattr(p, w) + h}), om, V, b, **kw)
+        return moved_loads(prop, p, om, V, b, w, h, DISC)
 
     assert np.all(np.abs(r.flap_1c) > 1e-3)  # the blades do flap
     for w in wrt:

@@ -18,7 +18,7 @@ from propmap.core._reference import solve_reference
 from propmap.core.airfoil import _model_constants
 from propmap.core.nodes import _nodes
 
-from .conftest import RPM
+from .conftest import RPM, moved_loads
 
 LOADS = ("thrust", "drag", "torque", "rolling_moment")
 
@@ -138,18 +138,7 @@ def test_swirl_implicit_derivatives_match_differences(apc8x6, model):
         assert abs(float(r.derivative("thrust", "omega")) / float(plain.derivative("thrust", "omega")) - 1) > 1e-3
 
         def moved(w, h):
-            kw = dict(discretization=disc)
-            if w == "omega":
-                return pm.rotor_loads(apc8x6, p, om + h, V, b, **kw)
-            if w == "airspeed":
-                return pm.rotor_loads(apc8x6, p, om, V + h, b, **kw)
-            if w == "incidence":
-                return pm.rotor_loads(apc8x6, p, om, V, b + h, **kw)
-            if w == "collective":
-                return pm.rotor_loads(apc8x6, p, om, V, b, collective=h, **kw)
-            if w == "rho":
-                return pm.rotor_loads(apc8x6, p, om, V, b, air=pm.Air(rho=p.air.rho + h), **kw)
-            return pm.rotor_loads(apc8x6, p.replace(**{w: getattr(p, w) + h}), om, V, b, **kw)
+            return moved_loads(apc8x6, p, om, V, b, w, h, disc)
 
         scales = {"omega": om, "airspeed": max(V, 1.0), "incidence": 1.0, "collective": 1.0, par: getattr(p, par),
                   "rho": p.air.rho}

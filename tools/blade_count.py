@@ -14,7 +14,7 @@ kept) and the sweeps predicted again, with the static run's own thrust error lef
 the sweeps alone, for comparison: a hub that seats its blades at another angle would ask for
 the same offset from both. Last, the same with swirl (``RotorOptions.swirl``): the 2-blade
 fit from the generic set with swirl on, and its predictions of the other hubs (most of the
-time: with swirl the fits difference the solver). Prints the numbers of docs/validation.md, "Blade
+time: swirl's solves cost about 5x). Prints the numbers of docs/validation.md, "Blade
 count", and docs/models.md, "Swirl".
 """
 

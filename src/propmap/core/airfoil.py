@@ -100,8 +100,8 @@ class RotorOptions:
         from the static run more than from the sweeps (docs/models.md, Swirl). Solved by a
         secant in u around the root solve (4-5 root solves per point in the median; where it
         closes in on a jump of the selected root in descent, more: 173 residual evaluations
-        per annulus against 8.6 without swirl at tests/test_swirl.py's jump point); no
-        implicit derivatives. False (default): the paper's model, which has no swirl.
+        per annulus against 8.6 without swirl at tests/test_swirl.py's jump point); implicit
+        derivatives since 2026-11-25 (docs/solver.md). False (default): the paper's model, which has no swirl.
     radial_drag : bool
         The profile drag of the radial flow along the blade (the yawed-flow drag of helicopter
         theory, W. Johnson, Helicopter Theory, Princeton University Press, 1980, Ch. 5: the

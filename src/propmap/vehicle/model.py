@@ -252,7 +252,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
         ``rotor_interference`` (the wakes couple the rotors), nor for a section parameter
         when a rotor has its own set, nor with the sets ``rotor_loads`` cannot differentiate
-        (a linear inflow, swirl); Omega_i >= 0.1 rad/s. Flapping rotors' side force and
+        (a linear inflow); Omega_i >= 0.1 rad/s. Flapping rotors' side force and
         pitching moment, and ``flap_compliance``, by the chain rule (core/flapping.py).
 
     Returns
