@@ -125,7 +125,7 @@ def test_swirl_implicit_derivatives_match_differences(apc8x6, model):
     inputs, the collective, a section parameter and the density agree with central differences
     of the whole solver (swirl iteration included) within 2e-5 of the point's thrust (forces) or
     torque (moments) per unit of the input's scale (measured 2026-11-25: at most 2.6e-6 for the
-    inputs, 6.9e-6 for the parameters and the density), and differ from the derivatives without
+    inputs, 2.0e-7 for the parameter and the density), and differ from the derivatives without
     swirl (the balance is not ignored)."""
     p = (pm.generic_params() if model == "cambered" else pm.preset("gill2017-apc")).replace(swirl=True)
     par = "cd_min" if model == "cambered" else "cd"

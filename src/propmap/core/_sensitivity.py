@@ -52,7 +52,8 @@ profile drag). It depends on the inputs through U_T, U_P, the blade angle and th
 constants, as the element does, so the same passes give its partials: the element returns
 C_D,p U from its own terms at each pass' stepped state (_physics.make_element's ``profile``;
 since 2026-11-25, where a second evaluation of the profile drag at every stepped state had
-made the derivatives with respect to the three inputs cost 2.7x the loads instead of 1.5x)
+made the derivatives with respect to the three inputs cost 2.6-2.7x the loads; 1.6-1.9x
+since, benchmarks/README.md)
 and it is differenced like qT and qH; V sin(beta) enters it once more explicitly (its base
 sum; in axial flow the one node's value times the half circle's mean cos^2 psi, 1 - mean
 sin^2 psi, :func:`_radial`).
