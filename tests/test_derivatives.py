@@ -442,7 +442,9 @@ def test_still_air_slopes_from_the_same_roots(prop):
                 d = rays.derivative(q, "airspeed")
                 want = d[1] if q in ("drag", "rolling_moment") else 0.5 * (d[0] - d[2])
                 got = r.derivative(q, STILL_AIR)
-                np.testing.assert_allclose(got[V == 0], want, rtol=1e-12, atol=1e-15)
+                # the same arithmetic compiled into two kernels: equal to rounding (7.5e-12 relative
+                # on 2026-11-25, when the point's body moved into a function of its own)
+                np.testing.assert_allclose(got[V == 0], want, rtol=1e-10, atol=1e-15)
                 assert np.all(got[V > 0] == 0.0)
                 for w in others:  # the other columns as without the slopes at rest
                     np.testing.assert_allclose(r.derivative(q, w), plain.derivative(q, w), rtol=1e-9, atol=1e-12)

@@ -8,7 +8,10 @@ whole-process timings on a shared machine do not resolve to a few percent. The b
 benchmarks/bench_solver.py's envelope (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg;
 apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set).
 
-    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS]   # ~2 min for 30 rounds
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] [--serial]   # ~2 min for 30 rounds
+
+``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
+raised above the batch) instead of the parallel one on one thread.
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -20,6 +23,9 @@ import time
 
 import numba
 import numpy as np
+
+
+SERIAL = "--serial" in sys.argv
 
 
 def load(src: str):
@@ -36,16 +42,19 @@ def load(src: str):
         importlib.import_module(f"propmap.{mod}")
     pm.load_propeller("apce_8x6")
     pm.default_params("apce_8x6")
+    if SERIAL:
+        sys.modules["propmap.core.solver"].PARALLEL_MIN_POINTS = 10**9
     sys.path.remove(src)
     return pm
 
 
 def main() -> None:
-    if len(sys.argv) < 3:
+    argv = [a for a in sys.argv[1:] if a != "--serial"]
+    if len(argv) < 2:
         raise SystemExit(__doc__)
     numba.set_num_threads(1)
-    trees = {"A": load(sys.argv[1]), "B": load(sys.argv[2])}
-    rounds = int(sys.argv[3]) if len(sys.argv) > 3 else 30
+    trees = {"A": load(argv[0]), "B": load(argv[1])}
+    rounds = int(argv[2]) if len(argv) > 2 else 30
     rng = np.random.default_rng(5)
     n = 4000
     om = rng.uniform(3000, 12000, n) * np.pi / 30

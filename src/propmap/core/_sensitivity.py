@@ -83,7 +83,7 @@ LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _constants_u2(U2, sc, cy2, model, cam):
-    """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as _solve_batch)."""
+    """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as _kernel._solve_point)."""
     if model == CAMBERED:
         return _cambered_annulus(U2, sc, cy2, cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5], cam[6], cam[7])
     return sc, 0.0, 0.0, 0.0
@@ -111,7 +111,7 @@ def _constants_stepped(U2, hU, sc, cy2, model, cam):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
-    """The section constants (s0, s1, s2, s3) of an annulus at the inputs (as _solve_batch)."""
+    """The section constants (s0, s1, s2, s3) of an annulus at the inputs (as _kernel._solve_point)."""
     return _constants_u2((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
 
 
@@ -349,7 +349,7 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, 
     return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
 def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     y = nodes[NODE_Y]
     w = nodes[NODE_W]
@@ -375,7 +375,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     for q in range(5):
         for p in range(out.shape[1]):
             out[q, p, i] = 0.0
-    wy = 0.0  # the mean inflow's weights (as _solve_batch: annulus area)
+    wy = 0.0  # the mean inflow's weights (as _kernel._solve_point: annulus area)
     m2 = 0.0  # the mean of sin(psi)^2 over the half circle's nodes (the axial point's one node stands for them)
     for j in range(nr):
         wy += w[j] * y[j]
@@ -417,7 +417,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         vj = roots[0, i, j]
         yj = y[j]
         # with swirl the element sees the blade speed Omega y - u (the annulus' swirl u): every element pass and
-        # the loss factor take Omega less u / y, the section constants Omega itself (as _solve_batch)
+        # the loss factor take Omega less u / y, the section constants Omega itself (as _kernel._solve_point)
         uj = roots[1, i, j] if swirl else 0.0
         ome = om - uj / yj if swirl else om
         th = th0[j] + dth
@@ -582,15 +582,14 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
 def sensitivities(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     """d(T, D, Q, M_R, v_i,mean)/d(Omega, V, beta[, collective]) at every point.
 
-    Inputs as _kernel._solve_batch but the airspeed V and the incidence beta in place of
+    Inputs as _kernel._solve_point but the airspeed V and the incidence beta in place of
     (V sin beta, V cos beta), the blade angles of ``nodes`` without the per-point collective
     ``coll``; ``roots`` shape (1, n, nr): the converged roots v, or (2, n, nr) with swirl: the roots
     and the swirl u of every annulus (:func:`_swirl_system`); ``ok`` shape (n,): the points whose
     every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
-    Section parameters, ``par`` = (pkpm, campm, cam_same, hpar) (packed, so that the argument
-    list stays short enough for numba's inliner): ``pkpm`` shape (n_par, N_PK) and ``campm``
-    shape (n_par, 8), the element and
+    Section parameters, ``par`` = (pkpm, campm, cam_same, hpar) (packed, to keep the argument
+    list short): ``pkpm`` shape (n_par, N_PK) and ``campm`` shape (n_par, 8), the element and
     annulus constants at each parameter's stepped value, ``cam_same`` shape (n_par,) bool:
     the parameter leaves ``cam`` unchanged (its annulus constants are not recomputed),
     ``hpar`` shape (n_par,) the step (stepped value - value, either sign; n_par may be 0).
@@ -605,4 +604,4 @@ def sensitivities(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n
     along the point's beta and the incidence's is 0.
     """
     for i in numba.prange(Om.shape[0]):
-        _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)
+        _point(np.int64(i), Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)
