@@ -276,3 +276,28 @@ def test_a_single_point_equals_the_same_point_in_a_batch(apc8x6, apc_params):
                 assert a.shape == ()
                 np.testing.assert_array_equal(a, getattr(batch, f.name)[i], err_msg=f.name)
     assert pm.rotor_loads(apc8x6, apc_params, om, 6.0, math.radians(175.0)).state_name == "vortex ring"
+
+
+def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
+    """A batch of PARALLEL_MIN_POINTS or more runs the parallel kernel, smaller ones the serial
+    one (solver.PARALLEL_MIN_POINTS); both run the same compiled point (_kernel._solve_point,
+    inlined by LLVM into each loop), so the same points take the same iterations and give the
+    same loads to rounding (reassociation may differ between the two loops: 2.3e-16 relative
+    measured with the calibrated set, 2026-11-25), in forward flight, axial flow and descent."""
+    from propmap.core import solver
+
+    rng = np.random.default_rng(1)
+    n = 48
+    om, V, b = rng.uniform(300.0, 1200.0, n), rng.uniform(0.0, 20.0, n), rng.uniform(0.0, np.pi, n)
+    V[::5] = 0.0
+    assert n >= solver.PARALLEL_MIN_POINTS > 8
+    for params in (apc_params, pm.generic_params()):
+        whole = pm.rotor_loads(apc8x6, params, om, V, b)
+        parts = [pm.rotor_loads(apc8x6, params, om[k:k + 8], V[k:k + 8], b[k:k + 8]) for k in range(0, n, 8)]
+        for f in ("n_evaluations", "state", "converged"):
+            np.testing.assert_array_equal(getattr(whole, f), np.concatenate([getattr(q, f) for q in parts]),
+                                          err_msg=f)
+        for f in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean"):
+            np.testing.assert_allclose(getattr(whole, f), np.concatenate([getattr(q, f) for q in parts]),
+                                       rtol=1e-13, atol=1e-15, err_msg=f)
+        assert whole.converged.all()

@@ -123,10 +123,9 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     cfac = nodes[NODE_CFAC]
     nr = y.shape[0]
     naz_half = azim.shape[1] // 2
-    # the point's scratch in one block (its allocations are a measurable part of an axial point):
-    # rows 0-2 the blade angle, its sine and cosine; 3-6 the section constants s0 ... s3; 7-8
-    # the linear inflow's gradients gx, gy; 9-10 the roots and the swirl when not written into
-    # ``rad``; 11-14 the swirl iteration's state (_swirl_iterate)
+    # the point's scratch in one block: rows 0-2 the blade angle, its sine and cosine; 3-6 the
+    # section constants s0 ... s3; 7-8 the linear inflow's gradients gx, gy; 9-10 the roots and
+    # the swirl when not written into ``rad``; 11-14 the swirl iteration's state (_swirl_iterate)
     work = np.empty((15 if swirl else 11, nr))
     blade = work[0:3]
     if coll[i] == 0.0:
