@@ -283,7 +283,8 @@ def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
     one (solver.PARALLEL_MIN_POINTS); both run the same compiled point (_kernel._solve_point,
     inlined by LLVM into each loop), so the same points take the same iterations and give the
     same loads to rounding (reassociation may differ between the two loops: 2.3e-16 relative
-    measured with the calibrated set, 2026-11-25), in forward flight, axial flow and descent."""
+    measured with the paper's APC set, 2026-11-25), in forward flight, axial flow and descent,
+    with that set and the generic cambered one."""
     from propmap.core import solver
 
     rng = np.random.default_rng(1)
