@@ -283,14 +283,16 @@ def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
     one (solver.PARALLEL_MIN_POINTS); both run the same compiled point (_kernel._solve_point,
     inlined by LLVM into each loop), so the same points take the same iterations and give the
     same loads to rounding (reassociation may differ between the two loops: 2.3e-16 relative
-    measured with the paper's APC set, 2026-11-25), in forward flight, axial flow and descent,
-    with that set and the generic cambered one."""
+    measured with the paper's APC set, 2026-11-25), in hover, axial climb and descent and
+    oblique flow, with that set and the generic cambered one."""
     from propmap.core import solver
 
     rng = np.random.default_rng(1)
     n = 48
     om, V, b = rng.uniform(300.0, 1200.0, n), rng.uniform(0.0, 20.0, n), rng.uniform(0.0, np.pi, n)
-    V[::5] = 0.0
+    V[::5] = 0.0  # hover
+    b[1::6] = 0.0  # axial climb
+    b[2::6] = np.pi  # axial descent
     assert n >= solver.PARALLEL_MIN_POINTS > 8
     for params in (apc_params, pm.generic_params()):
         whole = pm.rotor_loads(apc8x6, params, om, V, b)

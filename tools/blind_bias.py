@@ -14,7 +14,7 @@ lowest-J point of every sweep.
 
     .venv/bin/python tools/blind_bias.py OUT_DIR [--recompute]
 
-Stage 1 (about a minute, one process) writes OUT_DIR/props.csv (one row per propeller) and
+Stage 1 (seconds with the kernel cache warm, one process) writes OUT_DIR/props.csv (one row per propeller) and
 OUT_DIR/points.npz, reused unless --recompute; stage 2 prints the tables (correlations,
 binned medians, per family, leave-one-family-out tests of simple thrust corrections, the
 trend with rpm inside each static run, paired propellers) and writes OUT_DIR/tables.md.
@@ -44,7 +44,7 @@ def compute():
     from propmap.identify import loads_from_catalogue
     from propmap.io.calibration import generic_without
     from propmap.io.catalogue import catalogue, load_propeller
-    from propmap.validation import _coefficients, rpm_groups
+    from propmap.validation import _coefficients
 
     air = Air()
     cat = catalogue()
@@ -345,7 +345,7 @@ def main():
       f"{100 * lr1.slope:+.1f}*log10Re75 (R2 {lr1.rvalue ** 2:.2f}); both volumes {100 * lra.intercept:+.1f} "
       f"{100 * lra.slope:+.1f}*log10Re75 (R2 {lra.rvalue ** 2:.2f}).\n")
 
-    # ---- 8. Reynolds inside one propeller: the static run spans ~1.5-2x in rpm at fixed geometry
+    # ---- 8. Reynolds inside one propeller: the static run spans ~3x (vol. 1) to ~6x (vol. 2) in rpm
     p("## 8. Reynolds dependence inside each static run (fixed geometry)\n")
     p("Per propeller, OLS slope of ln CT on ln rpm over its static points, measured and model (generic "
       "without family), and of the signed error on ln rpm. A missing low-Re loss in the model would show as "
@@ -369,7 +369,8 @@ def main():
     p("|---|---|---|---|---|---|---|---|")
     for vv in (1, 2):
         r8 = rows8[rows8[:, 0] == vv]
-        q = lambda a: f"{np.median(a):+.3f} ({np.percentile(a, 25):+.3f}..{np.percentile(a, 75):+.3f})"
+        def q(a):
+            return f"{np.median(a):+.3f} ({np.percentile(a, 25):+.3f}..{np.percentile(a, 75):+.3f})"
         p(f"| vol. {vv} | {len(r8)} | {q(r8[:, 1])} | {q(r8[:, 2])} | {np.median(r8[:, 3]):+.3f} | "
           f"{np.mean(r8[:, 3] > 0):.0%} | {np.median(r8[:, 4]):.2f} | {pct(np.median(r8[:, 5]))} / "
           f"{pct(np.median(r8[:, 6]))} |")
@@ -386,7 +387,7 @@ def main():
     for vv in (1, 2):
         a = np.array(sl[vv])
         p(f"\nvol. {vv}: slope of per-sweep mean signed error on ln rpm (within propeller, {len(a)} propellers): "
-          f"median {a.mean() * 0 + np.median(a):+.3f}, {np.mean(a > 0):.0%} positive")
+          f"median {np.median(a):+.3f}, {np.mean(a > 0):.0%} positive")
     for vv in (1, 2):
         r8 = rows8[rows8[:, 0] == vv]
         rho, pv = stats.spearmanr(r8[:, 1], r8[:, 7])

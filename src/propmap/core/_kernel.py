@@ -80,11 +80,12 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
 
     A function of its own, so that numba compiles its body once for :func:`solve_batch` and
     :func:`solve_batch_serial`, and outside the parallel region's passes; ``forceinline``
-    has LLVM inline the compiled body into both loops, where it runs as fast as inlined by
-    numba in the parallel loop and faster in the serial one. Measured on the 2-core AMD EPYC,
-    2026-11-25 (benchmarks/README.md, "Compile time"): the cold compile of both batch kernels
-    took 354 s with the body inlined into each by numba and 83 s now; a plain call instead
-    (no ``forceinline``) compiled in 59 s but ran forward-flight batches 1.63x slower.
+    has LLVM inline the compiled body into both loops. Measured on the 2-core AMD EPYC,
+    2026-11-25 (benchmarks/README.md, "Compile time"): the cold compile of the parallel and
+    the serial kernel took 229 + 124 s with the body inlined into each by numba, 18 + 65 s
+    now; forward-flight points run 0.95x the time in the parallel kernel and 0.58x in the
+    serial one, axial batches about 8% slower in the parallel kernel. A plain call instead
+    (no ``forceinline``) compiled fastest but ran forward-flight batches 1.63x slower.
 
     Inputs Om, Vs, Vc and coll (a collective offset added to every blade angle [rad]) have
     shape (n,); ``nodes`` shape (N_NODE_ROWS, nr), the blade's node rows (_physics.NODE_Y ...;
