@@ -25,11 +25,9 @@ import numba
 import numpy as np
 
 
-SERIAL = "--serial" in sys.argv
-
-
-def load(src: str):
-    """propmap imported from ``src``, its solver modules loaded before the next tree replaces them."""
+def load(src: str, serial: bool = False):
+    """propmap imported from ``src``, its solver modules loaded before the next tree replaces them
+    (``serial``: small-batch threshold raised, so that every batch runs the serial kernel)."""
     for m in [m for m in sys.modules if m == "propmap" or m.startswith("propmap.")]:
         del sys.modules[m]
     sys.path.insert(0, src)
@@ -42,7 +40,7 @@ def load(src: str):
         importlib.import_module(f"propmap.{mod}")
     pm.load_propeller("apce_8x6")
     pm.default_params("apce_8x6")
-    if SERIAL:
+    if serial:
         sys.modules["propmap.core.solver"].PARALLEL_MIN_POINTS = 10**9
     sys.path.remove(src)
     return pm
@@ -53,7 +51,8 @@ def main() -> None:
     if len(argv) < 2:
         raise SystemExit(__doc__)
     numba.set_num_threads(1)
-    trees = {"A": load(argv[0]), "B": load(argv[1])}
+    serial = "--serial" in sys.argv
+    trees = {"A": load(argv[0], serial), "B": load(argv[1], serial)}
     rounds = int(argv[2]) if len(argv) > 2 else 30
     rng = np.random.default_rng(5)
     n = 4000

@@ -140,7 +140,6 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
             blade[1, j] = np.sin(blade[0, j])
             blade[2, j] = np.cos(blade[0, j])
     axial = Vs[i] == 0.0
-    naz = 1 if axial else naz_half  # the integrand is independent of psi
     # the roots are written straight into the output row, or into scratch
     v = rad[0, i] if radial else work[9]
     status = np.empty((2, nr), dtype=np.int64)  # per annulus: code, residual evaluations
@@ -153,7 +152,6 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     s2 = sect[2]
     s3 = sect[3]
     grad = work[7:9]
-    grad[:] = 0.0
     gx = grad[0]
     gy = grad[1]
     sw = work[11:]
@@ -175,11 +173,8 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     us[:] = 0.0
     ne = 0
     for it in range(SWIRL_MAX_ITER if swirl else 1):
-        if it > 0:
-            naz = 1 if axial else naz_half
-            for j in range(nr):
-                gx[j] = 0.0
-                gy[j] = 0.0
+        naz = 1 if axial else naz_half  # axial: the integrand is independent of psi
+        grad[:] = 0.0  # the uniform inflow first
         solve_annuli(Om[i], Vs[i], Vc[i], nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status,
                      multiple)
         for j in range(nr):
