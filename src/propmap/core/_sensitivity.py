@@ -15,14 +15,19 @@ the blade element: at every azimuth node it depends on the inputs only through
 U_T = Omega y + V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the
 section constants, which depend on the annulus' mean square speed U2 = (Omega y)^2 +
 (V sin beta)^2 / 2 + (V cos beta)^2 only. So one pass over the nodes, evaluating the
-element at the base and one-sided at U_T + h, U_P + h and the constants at U2 + h (and the
-blade angle + h for the collective), gives every input's partials by the chain rule
-(Omega: U_T by y, U2 by 2 Omega y^2; V sin beta: U_T by sin psi, U2 by V sin beta;
-V cos beta: U_P by 1, U2 by 2 V cos beta; v: U_P by 1): four element evaluations per node
-for the three inputs and the inflow, where differencing each input centrally took eight.
-The steps are 1e-7 of each variable's scale (an O(h) error of about that relative size, far
-below the root's own tolerance, whereas differencing the whole solver carries that
-tolerance, 1e-7 of the inflow scale, divided by its step). The momentum side F dT_BEMT (a
+element with its analytic partial derivatives in U_T, U_P, the blade angle and along the
+constants' change with U2 (core/_tangents.py; that change from the constants' own power
+laws, :func:`_constants_stepped`), gives every input's partials by the chain rule (Omega:
+U_T by y, U2 by 2 Omega y^2; V sin beta: U_T by sin psi, U2 by V sin beta; V cos beta: U_P
+by 1, U2 by 2 V cos beta; v: U_P by 1; the collective: the blade angle by 1): one element
+evaluation per node for all of them. Until 2026-11-25 these partials were one-sided
+differences (the element at the base and at U_T + h, U_P + h, the constants at U2 + h and
+the blade angle + h, four or five evaluations per node, steps 1e-7 of each variable's
+scale), whose O(h) error reached 8e-6 (cambered) and 3e-5 (the paper's section) of a
+derivative against tightly converged differences of the solver, 1.1e-7 since (tests/
+test_derivatives.py). No root is re-solved, so the root's own tolerance (1e-7 of the
+inflow scale) does not enter, whereas differencing the whole solver carries it divided by
+its step. The momentum side F dT_BEMT (a
 scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
 the empirical descent curve, through its inversion, and Prandtl's factor:
 core/_momentum_sensitivity.py); where the
@@ -49,14 +54,10 @@ that D and M_R change with V sin beta there and with nothing else.
 The radial flow's drag (airfoil.RotorOptions.radial_drag, pk[PK_RADIAL_DRAG] = 1) adds
 V sin(beta) times the node sums of C_D,p U cos^2 psi to D (_annulus.annulus_loads; C_D,p the
 profile drag). It depends on the inputs through U_T, U_P, the blade angle and the section
-constants, as the element does, so the same passes give its partials: the element returns
-C_D,p U from its own terms at each pass' stepped state (_physics.make_element's ``profile``;
-since 2026-11-25, where a second evaluation of the profile drag at every stepped state had
-made the derivatives with respect to the three inputs cost 2.6-2.7x the loads; 1.6-1.9x
-since, benchmarks/README.md)
-and it is differenced like qT and qH; V sin(beta) enters it once more explicitly (its base
-sum; in axial flow the one node's value times the half circle's mean cos^2 psi, 1 - mean
-sin^2 psi, :func:`_radial`).
+constants, as the element does, so the element's partials carry C_D,p U's as a third value
+(and the section parameters' passes the element's own, _physics.make_element's ``profile``);
+V sin(beta) enters it once more explicitly (its base sum; in axial flow the one node's value
+times the half circle's mean cos^2 psi, 1 - mean sin^2 psi, :func:`_radial`).
 """
 
 from __future__ import annotations
@@ -64,16 +65,24 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, CAMBERED, GILL_SINCOS, _cambered_annulus, _element_cambered_p, _element_gill_p, _profile_cd
+from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_cambered_p, _element_gill_p,
+                       _exp_sat, _profile_cd)
+from . import _tangents
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
                        NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
 
+_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+_loads_tangent = _jit_inline(_tangents._loads_tangent)
+# the elements with their analytic partials in U_T, U_P, the blade angle and the section constants
+_cambered_tangent = _jit_inline(_tangents.make_cambered_tangent(_atan2, _exp_sat, _loads_tangent))
+_gill_tangent = _jit_inline(_tangents.make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
+
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
-#: relative step of the blade's one-sided differences at the fixed root (elements, section
-#: constants, section parameters, density)
+#: relative step of the blade's one-sided differences at the fixed root (the section constants'
+#: slope in U2's direction, section parameters, density)
 ONE_SIDED = 1e-7
 #: inputs, in the order of the output's second axis
 INPUTS = ("omega", "airspeed", "incidence", "collective")
@@ -184,26 +193,6 @@ def _swirl_solve(sw, Gx, Tx, Qx, e_om):
     return -(Gx * Su - Gu * Sx) / det, -(Gv * Sx - Sv * Gx) / det
 
 
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _base(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
-    """The element's thrust and in-plane force (qT, qH) at each of the ``naz`` nodes of one
-    annulus, written into ``q0`` and ``h0``, and the radial drag's :func:`_radial` into ``r0``:
-    the base of :func:`_pass`' differences."""
-    if model == CAMBERED:
-        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
-        for k in range(naz):
-            sk = sinpsi[k]
-            q0[k], h0[k], g = _element_cambered_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1,
-                                                  a2, a3, a4, a5, a6, a7)
-            r0[k] = g * (1.0 - sk * sk)
-    else:
-        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
-        for k in range(naz):
-            sk = sinpsi[k]
-            q0[k], h0[k], g = _element_gill_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            r0[k] = g * (1.0 - sk * sk)
-
-
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _radial(UT, UP, th, s, sk, model, pk):
     """The radial flow's drag per unit in-plane speed along the airspeed, C_D,p U cos^2 psi
@@ -216,15 +205,12 @@ def _radial(UT, UP, th, s, sk, model, pk):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
-    """One perturbed pass over the nodes of one annulus: the element at the given U_P, blade
-    angle, section constants and parameters, less the base (q0, h0, r0 of :func:`_base`).
-
-    At every azimuth node the element depends on the inputs only through U_T = Omega y +
-    V sin(beta) sin(psi), U_P = V cos(beta) + v, the blade angle and the section constants,
-    so the caller perturbs one of them per pass. Returns the differences' sums weighted as
-    the loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
-    qH sin(psi), qH and qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH,
-    qH sin and the radial drag's (used only with it), not divided by the step or the node count.
+    """One perturbed pass over the nodes of one annulus: the element at the given section
+    constants and parameters (a section parameter's or the density's step), less the base
+    (q0, h0, r0 of :func:`_partials`). Returns the differences' sums weighted as the loads need
+    them (thrust, in-plane force, torque and rolling moment are sums of qT, qH sin(psi), qH and
+    qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH, qH sin and the radial
+    drag's (used only with it), not divided by the step or the node count.
     """
     aT = aTs = aH = aHs = aR = 0.0
     if model == CAMBERED:
@@ -256,97 +242,89 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, hT, hP, sinpsi, naz, model, pk):
-    """The inputs' passes over the nodes of one annulus, fused: :func:`_base` (written into
-    ``q0``, ``h0``, ``r0``) and :func:`_pass` at U_T + ``hT``, at U_P + ``hP`` and, for the
-    cambered section, at the constants ``u`` (those at U2 + its step), in one loop, which keeps
-    the four element evaluations per node in flight together (measured: the derivatives' cost
-    over the loads' about half that of four separate loops, benchmarks/README.md). Returns
-    the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2), then the U_P and the U2 sums
-    (qT, qT sin, qH, qH sin each), not divided by the steps or the node count, and the radial
-    drag's (:func:`_radial`, from the same element evaluations; used only with it): its base
-    sum, its U_T sums (plain and sin), its U_P and its U2 sum.
+def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, model, pk):
+    """The inputs' partials over the nodes of one annulus, from one evaluation per node of the
+    element with its analytic partial derivatives (core/_tangents.py): the base (written into
+    ``q0``, ``h0``, ``r0`` for :func:`_pass`) and the derivatives with respect to U_T, U_P, the
+    blade angle and, for the cambered section, along the constants' direction ``u - s`` (``u``
+    those at U2 + its step). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2),
+    then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the node count
+    (the U2 sums not by the step either), the radial drag's (:func:`_radial`, from the same
+    evaluations; used only with it): its base sum, its U_T sums (plain and sin), its U_P and
+    its U2 sum, and the blade angle's (qT, qT sin, qH, qH sin, the radial drag's).
     """
     tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
     pT = pTs = pH = pHs = 0.0
     uT = uTs = uH = uHs = 0.0
     rB = rT = rTs = rP = rU = 0.0
+    cT = cTs = cH = cHs = rC = 0.0
     UP = Vc + v
     if model == CAMBERED:
-        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+        con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
+        sec = (s[0], s[1], s[2], s[3])
+        dsec = (u[0] - s[0], u[1] - s[1], u[2] - s[2], u[3] - s[3])
         for k in range(naz):
             sk = sinpsi[k]
             ck = 1.0 - sk * sk
-            UT = Om * y + Vs * sk
-            b0, c0, g0 = _element_cambered_p(UT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5, a6,
-                                             a7)
-            q0[k] = b0
-            h0[k] = c0
-            r0[k] = g0 * ck
-            q1, h1, g1 = _element_cambered_p(UT + hT, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
-                                             a6, a7)
-            q2, h2, g2 = _element_cambered_p(UT, UP + hP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3, a4, a5,
-                                             a6, a7)
-            q3, h3, g3 = _element_cambered_p(UT, UP, th, sth, cth, u[0], u[1], u[2], u[3], a0, a1, a2, a3, a4, a5, a6,
-                                             a7)
-            d = q1 - b0
-            e = h1 - c0
-            tT += d
-            tTs += d * sk
-            tTs2 += d * sk * sk
-            tH += e
-            tHs += e * sk
-            tHs2 += e * sk * sk
-            d = q2 - b0
-            e = h2 - c0
-            pT += d
-            pTs += d * sk
-            pH += e
-            pHs += e * sk
-            d = q3 - b0
-            e = h3 - c0
-            uT += d
-            uTs += d * sk
-            uH += e
-            uHs += e * sk
-            rB += g0 * ck
-            d = (g1 - g0) * ck
-            rT += d
-            rTs += d * sk
-            rP += (g2 - g0) * ck
-            rU += (g3 - g0) * ck
+            base, d_t, d_p, d_u, d_c = _cambered_tangent(Om * y + Vs * sk, UP, th, sth, cth, sec, dsec, con)
+            q0[k] = base[0]
+            h0[k] = base[1]
+            r0[k] = base[2] * ck
+            rB += base[2] * ck
+            uT += d_u[0]
+            uTs += d_u[0] * sk
+            uH += d_u[1]
+            uHs += d_u[1] * sk
+            rU += d_u[2] * ck
+            tT += d_t[0]
+            tTs += d_t[0] * sk
+            tTs2 += d_t[0] * sk * sk
+            tH += d_t[1]
+            tHs += d_t[1] * sk
+            tHs2 += d_t[1] * sk * sk
+            rT += d_t[2] * ck
+            rTs += d_t[2] * ck * sk
+            pT += d_p[0]
+            pTs += d_p[0] * sk
+            pH += d_p[1]
+            pHs += d_p[1] * sk
+            rP += d_p[2] * ck
+            cT += d_c[0]
+            cTs += d_c[0] * sk
+            cH += d_c[1]
+            cHs += d_c[1] * sk
+            rC += d_c[2] * ck
     else:
-        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
-        for k in range(naz):  # the paper's section has no Reynolds terms: no U2 pass
+        con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5])
+        sincos = model == GILL_SINCOS
+        for k in range(naz):  # the paper's section has no Reynolds terms: no U2 sums
             sk = sinpsi[k]
             ck = 1.0 - sk * sk
-            UT = Om * y + Vs * sk
-            b0, c0, f0 = _element_gill_p(UT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            q0[k] = b0
-            h0[k] = c0
-            r0[k] = f0 * ck
-            q1, h1, f1 = _element_gill_p(UT + hT, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            q2, h2, f2 = _element_gill_p(UT, UP + hP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            d = q1 - b0
-            e = h1 - c0
-            tT += d
-            tTs += d * sk
-            tTs2 += d * sk * sk
-            tH += e
-            tHs += e * sk
-            tHs2 += e * sk * sk
-            d = q2 - b0
-            e = h2 - c0
-            pT += d
-            pTs += d * sk
-            pH += e
-            pHs += e * sk
-            rB += f0 * ck
-            d = (f1 - f0) * ck
-            rT += d
-            rTs += d * sk
-            rP += (f2 - f0) * ck
-    return (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU)
+            base, d_t, d_p, d_c = _gill_tangent(Om * y + Vs * sk, UP, th, sth, cth, s[0], con, sincos)
+            q0[k] = base[0]
+            h0[k] = base[1]
+            r0[k] = base[2] * ck
+            rB += base[2] * ck
+            tT += d_t[0]
+            tTs += d_t[0] * sk
+            tTs2 += d_t[0] * sk * sk
+            tH += d_t[1]
+            tHs += d_t[1] * sk
+            tHs2 += d_t[1] * sk * sk
+            rT += d_t[2] * ck
+            rTs += d_t[2] * ck * sk
+            pT += d_p[0]
+            pTs += d_p[0] * sk
+            pH += d_p[1]
+            pHs += d_p[1] * sk
+            rP += d_p[2] * ck
+            cT += d_c[0]
+            cTs += d_c[0] * sk
+            cH += d_c[1]
+            cHs += d_c[1] * sk
+            rC += d_c[2] * ck
+    return ((tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU),
+            (cT, cTs, cH, cHs, rC))
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
@@ -410,7 +388,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     q0 = np.empty(naz_half)  # the element at the root, per node
     h0 = np.empty(naz_half)
     r0 = np.zeros(naz_half)  # the radial drag's (_radial) at the root, per node
-    ps = np.zeros((4 + n_par, 5))  # the sums of the passes other than the inputs' (below)
+    ps = np.zeros((2 + n_par, 5))  # the sums of the section parameters' and the density's passes (below)
     krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
     swirl = roots.shape[0] == 2
     for j in range(nr):
@@ -426,50 +404,29 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
         hU = ONE_SIDED * U2 + 1e-300
         s, u = _constants_stepped(U2, hU, sc[j], cy2[j], model, cam)
-        scale = abs(om * yj) + abs(vs) + abs(vc) + abs(vj) + 1e-9  # the element's speed scale [m/s]
-        hT = ONE_SIDED * scale
-        hP = ONE_SIDED * scale
-        hth = ONE_SIDED
         UP = vc + vj
-        if n_in > 0 or swirl:  # the inputs' passes, fused (the U_P pass is d/dv, the U_T pass -d/du as well)
-            sums, rsums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, hT, hP, sinpsi, naz, model,
-                                    pk)
-            tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
-            rB, rT, rTs, rP, rU = rsums
-        else:
-            _base(q0, h0, r0, ome, vs, UP, yj, th, sth, cth, s, sinpsi, naz, model, pk)
-            tT = tTs = tTs2 = tH = tHs = tHs2 = uT = uTs = uH = uHs = 0.0
-            rB = rT = rTs = rP = rU = 0.0
-        # the other passes through one (inlined) call: 0 the U_P pass (d/dv) where the inputs' did not run,
-        # 1 the blade angle's, 2 the base again (the section parameters' differences are then exactly 0 for one
-        # that does not enter), 3 + k the k-th section parameter's (the element's constants pk, the annulus'
-        # cam), 3 + n_par the density's (through the Reynolds constant sc; cfac and mfac scale out)
-        for m in range(3 + n_par + (1 if hrho != 0.0 else 0)):
-            if (m == 0 and (n_in > 0 or swirl)) or (m == 1 and n_in < 4) or (m == 2 and n_par == 0 and hrho == 0.0):
+        # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
+        # constants' direction, from one evaluation per node
+        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, sinpsi, naz, model, pk)
+        tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
+        rB, rT, rTs, rP, rU = rsums
+        cT, cTs, cH, cHs, rC = csums
+        # the section parameters' and the density's passes through one (inlined) call: 0 the base again (the
+        # parameters' differences are then exactly 0 for one that does not enter), 1 + k the k-th section
+        # parameter's (the element's constants pk, the annulus' cam), 1 + n_par the density's (through the
+        # Reynolds constant sc; cfac and mfac scale out)
+        for m in range(1 + n_par + (1 if hrho != 0.0 else 0)):
+            if m == 0 and n_par == 0 and hrho == 0.0:
                 continue
-            up, tha, stha, ctha, sa, pka = UP, th, sth, cth, s, pk
-            if m == 0:
-                up = UP + hP
-            elif m == 1:
-                tha = th + hth
-                stha = np.sin(tha)
-                ctha = np.cos(tha)
-            elif m == n_par + 3:
+            sa, pka = s, pk
+            if m == n_par + 1:
                 sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
-            elif m >= 3:
-                pka = pkpm[m - 3]
-                if not cam_same[m - 3]:
-                    sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 3])
-            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, up, yj, tha, stha, ctha,
-                                                                     sa, sinpsi, naz, model, pka)
-        if n_in == 0 and not swirl:
-            pT, pTs, pH, pHs, rP = ps[0, 0], ps[0, 1], ps[0, 2], ps[0, 3], ps[0, 4]
-        kP = 1.0 / hP
-        cT = cTs = cH = cHs = 0.0
-        if n_in == 4:
-            cT, cTs, cH, cHs = ps[1, 0], ps[1, 1], ps[1, 2], ps[1, 3]
-        kT = 1.0 / hT
-        kth = 1.0 / hth
+            elif m >= 1:
+                pka = pkpm[m - 1]
+                if not cam_same[m - 1]:
+                    sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 1])
+            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, UP, yj, th, sth, cth, sa,
+                                                                     sinpsi, naz, model, pka)
         cf = cfac[j] / naz
         cq = yj * cf
         kU = cf / hU
@@ -482,18 +439,17 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
         rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
-        Lv0, Lv1, Lv2, Lv3 = pT * kP * cf, (pHs + rr * rP) * kP * cf, pH * kP * cq, pTs * kP * cq
+        Lv0, Lv1, Lv2, Lv3 = pT * cf, (pHs + rr * rP) * cf, pH * cq, pTs * cq
         uu0, uu1, uu2, uu3 = uT * kU, (uHs + rr * rU) * kU, uH * kUq, uTs * kUq
-        tT, tTs, tTs2, tH, tHs, tHs2 = tT * kT, tTs * kT, tTs2 * kT, tH * kT, tHs * kT, tHs2 * kT
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
         dB[0, 0] = yj * tT * cf + f * uu0
-        dB[1, 0] = yj * (tHs + rr * rT * kT) * cf + f * uu1
+        dB[1, 0] = yj * (tHs + rr * rT) * cf + f * uu1
         dB[2, 0] = yj * tH * cq + f * uu2
         dB[3, 0] = yj * tTs * cq + f * uu3
         # V sin beta: U_T by sin psi, U2 by V sin beta
         dB[0, 1] = tTs * cf + vs * uu0
-        dB[1, 1] = (tHs2 + rr * rTs * kT + krad * rB) * cf + vs * uu1
+        dB[1, 1] = (tHs2 + rr * rTs + krad * rB) * cf + vs * uu1
         dB[2, 1] = tHs * cq + vs * uu2
         dB[3, 1] = tTs2 * cq + vs * uu3
         # V cos beta: U_P by 1, U2 by 2 V cos beta
@@ -501,10 +457,10 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         dB[1, 2] = Lv1 + 2.0 * vc * uu1
         dB[2, 2] = Lv2 + 2.0 * vc * uu2
         dB[3, 2] = Lv3 + 2.0 * vc * uu3
-        dB[0, 3] = cT * kth * cf
-        dB[1, 3] = (cHs + rr * ps[1, 4]) * kth * cf
-        dB[2, 3] = cH * kth * cq
-        dB[3, 3] = cTs * kth * cq
+        dB[0, 3] = cT * cf
+        dB[1, 3] = (cHs + rr * rC) * cf
+        dB[2, 3] = cH * cq
+        dB[3, 3] = cTs * cq
         # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0 at
         # V > 0, and v = -V cos beta / 2), where the solver's own momentum side is differenced centrally in v,
         # Omega, V sin beta and V cos beta, with steps of each variable's scale (not of the incidence, whose step
@@ -528,7 +484,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                       - _momentum_side(vj, ome, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
         Gv = Lv0 - mv
         # the swirl's balance (without swirl the identity du = 0, which leaves dv = -G_x / G_v)
-        sw = _swirl_system(swirl, vj, yj, om, q0, h0, naz, cf, cq, Lv0, Lv2, tT * cf, (tHs + rr * rT * kT) * cf,
+        sw = _swirl_system(swirl, vj, yj, om, q0, h0, naz, cf, cq, Lv0, Lv2, tT * cf, (tHs + rr * rT) * cf,
                            tH * cq, tTs * cq, mom_om / yj, Gv)
         # at rest, the momentum side there: the base of the one-sided differences along the rays
         m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
@@ -572,10 +528,10 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         # changes by the blade's thrust
         for k in range(n_par + (1 if hrho != 0.0 else 0)):
             span = hrho if k == n_par else hpar[k]
-            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, sw, (ps[3 + k, 0] - ps[2, 0]) * cf,
-                            (ps[3 + k, 3] - ps[2, 3] + rr * (ps[3 + k, 4] - ps[2, 4])) * cf,
-                            (ps[3 + k, 2] - ps[2, 2]) * cq,
-                            (ps[3 + k, 1] - ps[2, 1]) * cq, span, axial)
+            _add_fixed_root(out, n_in + k, i, w[j], w[j] * yj / wy, Lv, sw, (ps[1 + k, 0] - ps[0, 0]) * cf,
+                            (ps[1 + k, 3] - ps[0, 3] + rr * (ps[1 + k, 4] - ps[0, 4])) * cf,
+                            (ps[1 + k, 2] - ps[0, 2]) * cq,
+                            (ps[1 + k, 1] - ps[0, 1]) * cq, span, axial)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)

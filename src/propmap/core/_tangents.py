@@ -1,0 +1,199 @@
+"""The blade elements with their analytic partial derivatives (forward mode, by hand).
+
+The implicit derivatives (core/_sensitivity.py) need, at every azimuth node of an annulus
+at its converged root, the element's loads and their partial derivatives with respect to
+U_T, U_P, the blade angle and the annulus' section constants. Until 2026-11-25 they were
+one-sided differences, an element evaluation per direction (four per node for the three
+inputs and the inflow, five with the collective). Here one evaluation gives the loads and
+every partial: the element's own terms (the same as _physics.make_element /
+make_cambered_element, so the same loads to the last bit where the compiler keeps the order
+of operations) carried with their derivatives along each direction,
+
+* U_T and U_P: dU = U_T / U, U_P / U; the angle of attack alpha = theta - phi, with
+  phi = atan2(U_P, U_T), moves by +U_P / U^2 and -U_T / U^2, and sin(alpha), cos(alpha) by
+  cos(alpha) dalpha and -sin(alpha) dalpha (the element takes them from U_T, U_P and the
+  blade angle: U cos phi = U_T, U sin phi = U_P exactly);
+* the blade angle: dalpha = 1;
+* the section constants of the cambered polar (lift slope, drag factor, stall-angle factor,
+  zero-lift shift) along a given direction (their change with the annulus' mean square speed,
+  _sensitivity._constants_stepped): the angle from the zero-lift line moves by minus the
+  shift's change, the chord's angle not at all.
+
+The stall blend s = 1 - 1 / ((1 + p)(1 + q)) moves by (dp (1 + q) + (1 + p) dq) / ((1 + p)
+(1 + q))^2 with dp = M p (da_e - dg a_stall+), dq = -M q (da_e - dg a_stall-); where the
+exponential saturates (|exponent| >= 40, _fastmath.exp_sat) this is M e^-40 of the blend's
+range instead of 0. No transcendental function is evaluated beyond the element's own (one
+atan2, two exp, one sqrt; the paper's section's Blasius term one more sqrt), so the partials
+cost arithmetic only. Checked against central differences of the element (tests/
+test_derivatives.py) and, through the implicit derivatives, against the solver.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._physics import exp_sat_numpy
+
+TWO_PI = 2.0 * np.pi
+
+
+def _loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, dUT, dUP, dU, dCL, dCD, dcdp):
+    """The derivatives of qT = U (C_L U_T - C_D U_P), qH = U (C_L U_P + C_D U_T) and the profile
+    drag's C_D,p U along one direction, from those of U_T, U_P, U, C_L, C_D and C_D,p
+    (FT, FH: the brackets)."""
+    dqT = dU * FT + U * (dCL * UT + CL * dUT - dCD * UP - CD * dUP)
+    dqH = dU * FH + U * (dCL * UP + CL * dUP + dCD * UT + CD * dUT)
+    return dqT, dqH, dcdp * U + cdp * dU
+
+
+def make_cambered_tangent(atan2, exp_sat, loads_tangent):
+    """Return the cambered element with its partials, using the given arctangent, saturated
+    exp and :func:`_loads_tangent` (each back end's own)."""
+
+    def cambered_tangent(UT, UP, theta, sin_th, cos_th, sec, dsec, con):
+        """The cambered polar's element (_physics.make_cambered_element with ``profile``) and
+        its partial derivatives.
+
+        Parameters
+        ----------
+        UT, UP, theta, sin_th, cos_th : float
+            As for the element [m/s, rad].
+        sec : tuple of 4 float
+            The annulus' section constants (lift slope [1/rad], drag factor, stall-angle
+            factor, zero-lift shift [rad]).
+        dsec : tuple of 4 float
+            A direction in those constants (their change for a step of the annulus' mean
+            square speed).
+        con : tuple of 8 float
+            The polar's constants alpha_L0, cd90, cd_min, cd2, cl_cdmin, M and the stall angles
+            above and below the zero-lift line (pk[:8]).
+
+        Returns
+        -------
+        base, d_UT, d_UP, d_sec, d_theta : tuple of 3 float each
+            (qT, qH, C_D,p U) [m^2/s^2] and their derivatives with respect to U_T and U_P
+            [m/s], along ``dsec`` (per unit of it) and with respect to the blade angle [1/rad].
+        """
+        a, cdf, g, dal0 = sec
+        da, dcdf, dg, ddal0 = dsec
+        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
+        U2 = UT * UT + UP * UP + 1e-300
+        U = np.sqrt(U2)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
+        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        p = exp_sat(M * (ae - g * asp))
+        q = exp_sat(-M * (ae - g * asn))
+        P = 1.0 + p
+        Q = 1.0 + q
+        s = 1.0 - 1.0 / (P * Q)
+        cl_att = a * ae
+        dcl = cl_att - cl_cdmin
+        sc = sin_a * cos_a
+        s2 = sin_a * sin_a
+        CL = (1.0 - s) * cl_att + s * cd90 * sc
+        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
+        cdp = cdf * inner
+        CD = cdp + s * cd90 * s2
+        FT = CL * UT - CD * UP
+        FH = CL * UP + CD * UT
+        base = (U * FT, U * FH, cdp * U)
+        # the blend's slopes: ds = sp (dae - dg asp) - sq (dae - dg asn)
+        w = 1.0 / (P * Q * P * Q)
+        sp = M * p * Q * w
+        sq = M * q * P * w
+        c2 = cos_a * cos_a - s2  # d(sin a cos a) / dalpha
+        # U_T, U_P and the blade angle move alpha and the angle from the zero-lift line alike (dalpha = dae) and leave
+        # the constants: ds, dC_L, dC_D, dC_D,p per unit dalpha
+        ds = sp - sq
+        dCLa = -ds * cl_att + (1.0 - s) * a + cd90 * (ds * sc + s * c2)
+        dcdpa = cdf * cd2 * dcl * (2.0 * (1.0 - s) * a - ds * dcl)
+        dCDa = dcdpa + cd90 * (ds * s2 + 2.0 * s * sc)
+        at = UP / U2  # dalpha/dU_T
+        ap = -UT / U2  # dalpha/dU_P
+        d_ut = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 1.0, 0.0, UT / U, dCLa * at, dCDa * at, dcdpa * at)
+        d_up = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 1.0, UP / U, dCLa * ap, dCDa * ap, dcdpa * ap)
+        d_th = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCLa, dCDa, dcdpa)
+        # the constants: the angle from the zero-lift line moves by -ddal0, the chord's angle not
+        dae = -ddal0
+        dsc = sp * (dae - dg * asp) - sq * (dae - dg * asn)
+        dcla = da * ae + a * dae
+        dCLc = -dsc * cl_att + (1.0 - s) * dcla + cd90 * dsc * sc
+        dcdpc = dcdf * inner + cdf * cd2 * dcl * (2.0 * (1.0 - s) * dcla - dsc * dcl)
+        dCDc = dcdpc + cd90 * dsc * s2
+        d_sec = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCLc, dCDc, dcdpc)
+        return base, d_ut, d_up, d_sec, d_th
+
+    return cambered_tangent
+
+
+def make_gill_tangent(atan2, exp_sat, loads_tangent):
+    """Return the paper's element (eqs 3-4) with its partials, using the given arctangent,
+    saturated exp and :func:`_loads_tangent`."""
+
+    def gill_tangent(UT, UP, theta, sin_th, cos_th, kre, con, sincos):
+        """The paper's element (_physics.make_element with ``profile``) and its partials.
+
+        Parameters
+        ----------
+        UT, UP, theta, sin_th, cos_th : float
+            As for the element [m/s, rad].
+        kre : float
+            The annulus' Blasius factor [sqrt(m/s)] (no Reynolds terms: no direction in it).
+        con : tuple of 6 float
+            cl1, cl2, cd, alpha0, M, cd0 (pk[:6]).
+        sincos : bool
+            Footnote 1's sin-cos lift instead of eq (3).
+
+        Returns
+        -------
+        base, d_UT, d_UP, d_theta : tuple of 3 float each
+            As :func:`make_cambered_tangent`'s, without the constants' direction.
+        """
+        cl1, cl2, cd, alpha0, M, cd0 = con
+        U2 = UT * UT + UP * UP + 1e-300
+        U = np.sqrt(U2)
+        alpha = theta - atan2(UP, UT)
+        alpha = alpha - TWO_PI * (alpha > np.pi) + TWO_PI * (alpha < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        sc = sin_a * cos_a
+        s2 = sin_a * sin_a
+        c2 = cos_a * cos_a - s2
+        post = cl2 * sc
+        if sincos:
+            CL = post
+            dCLa = cl2 * c2
+        else:
+            p = exp_sat(M * (alpha - alpha0))
+            q = exp_sat(-M * (alpha + alpha0))
+            P = 1.0 + p
+            Q = 1.0 + q
+            s = 1.0 - 1.0 / (P * Q)
+            ds = M * (p * Q - q * P) / (P * Q * P * Q)
+            CL = (1.0 - s) * cl1 * alpha + s * post
+            dCLa = ds * (post - cl1 * alpha) + (1.0 - s) * cl1 + s * cl2 * c2
+        rU = 1.0 / np.sqrt(U)
+        cdp = kre * rU + cd0
+        CD = cd * s2 + cdp
+        FT = CL * UT - CD * UP
+        FH = CL * UP + CD * UT
+        base = (U * FT, U * FH, cdp * U)
+        dCDa = 2.0 * cd * sc
+        kU = -0.5 * kre * rU / U  # dC_D,p/dU
+        at = UP / U2
+        ap = -UT / U2
+        ut = UT / U
+        up = UP / U
+        d_ut = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 1.0, 0.0, ut, dCLa * at, dCDa * at + kU * ut, kU * ut)
+        d_up = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 1.0, up, dCLa * ap, dCDa * ap + kU * up, kU * up)
+        d_th = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCLa, dCDa, 0.0)
+        return base, d_ut, d_up, d_th
+
+    return gill_tangent
+
+
+# the NumPy twins (tests)
+cambered_tangent = make_cambered_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
+gill_tangent = make_gill_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
