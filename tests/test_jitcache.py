@@ -36,14 +36,17 @@ SERVED = ("from propmap.core import _kernel as K, _sensitivity as S; "
 def _sibling_imports(path: Path) -> set[str]:
     """The core modules a kernel file imports (``from ._x import ...``), but the cache's own."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    return {f"{n.module}.py" for n in ast.walk(tree)
-            if isinstance(n, ast.ImportFrom) and n.level == 1 and n.module and n.module != "_jitcache"}
+    named = {f"{n.module}.py" for n in ast.walk(tree)
+             if isinstance(n, ast.ImportFrom) and n.level == 1 and n.module and n.module != "_jitcache"}
+    # ``from . import _x`` as well
+    return named | {f"{a.name}.py" for n in ast.walk(tree)
+                    if isinstance(n, ast.ImportFrom) and n.level == 1 and not n.module for a in n.names}
 
 
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
     assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_fastmath.py", "_flags.py"}
-    sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py"}
+    sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py", "_tangents.py"}
     assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == sensitivity
     # every module the kernels import is in their stamp (a new kernel module must be added there)
     core = SRC / "core"
@@ -51,6 +54,7 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     assert _sibling_imports(core / "_annulus.py") <= names
     assert _sibling_imports(core / "_sensitivity.py") <= sensitivity
     assert _sibling_imports(core / "_momentum_sensitivity.py") <= names
+    assert _sibling_imports(core / "_tangents.py") <= names
     # the kernels' own files are served by the stamping locators, each with its sources
     assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_sensitivity.py",
                                                           "_momentum_sensitivity.py"}

@@ -3,8 +3,8 @@
 numba stamps a cached function with a hash of the file that defines it only. The solver
 kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
 ``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
-kernel (``_sensitivity.py``, calling the momentum side's partials of ``_momentum_sensitivity.py``)
-compiles in those and ``_annulus.py``, so an edit there would leave
+kernel (``_sensitivity.py``, calling the momentum side's partials of ``_momentum_sensitivity.py``
+and inlining the elements' partials of ``_tangents.py``) compiles in those and ``_annulus.py``, so an edit there would leave
 numba serving a kernel compiled from the old physics (module constants such as the Reynolds
 clamp are compiled in). The locators below serve the kernels' own files (``_kernel.py``,
 ``_annulus.py``, ``_sensitivity.py``, ``_momentum_sensitivity.py``; ``_flags.py``'s own functions use numba's, stamped with
@@ -29,7 +29,8 @@ _HERE = Path(__file__).resolve().parent
 KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_fastmath.py",
                   _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
-SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", *KERNEL_SOURCES)
+SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", _HERE / "_tangents.py",
+                       *KERNEL_SOURCES)
 #: the cached files, each with the sources its stamp covers
 _STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in KERNEL_SOURCES[:2]}
 _STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:2]})

@@ -67,17 +67,18 @@ import numpy as np
 
 from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_cambered_p, _element_gill_p,
                        _exp_sat, _profile_cd)
-from . import _tangents
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
                        NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
+from ._tangents import _loads_tangent as _loads_tangent_py
+from ._tangents import make_cambered_tangent, make_gill_tangent
 
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-_loads_tangent = _jit_inline(_tangents._loads_tangent)
+_loads_tangent = _jit_inline(_loads_tangent_py)
 # the elements with their analytic partials in U_T, U_P, the blade angle and the section constants
-_cambered_tangent = _jit_inline(_tangents.make_cambered_tangent(_atan2, _exp_sat, _loads_tangent))
-_gill_tangent = _jit_inline(_tangents.make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
+_cambered_tangent = _jit_inline(make_cambered_tangent(_atan2, _exp_sat, _loads_tangent))
+_gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
