@@ -2,7 +2,7 @@
 
 Loads propmap from two source trees (each with its kernel cache already compiled: run any
 solve in each checkout first), then times ``rotor_loads`` on the same batch with each in
-turn, alternating the order every round, and prints the median of the paired ratios B/A
+turn (each tree's modules put back into ``sys.modules`` before its call, :func:`use`), alternating the order every round, and prints the median of the paired ratios B/A
 (forward flight and axial): in one process the machine's drift between runs cancels, which
 whole-process timings on a shared machine do not resolve to a few percent. The batch is
 benchmarks/bench_solver.py's envelope (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg;
@@ -43,7 +43,17 @@ def load(src: str, serial: bool = False):
     if serial:
         sys.modules["propmap.core.solver"].PARALLEL_MIN_POINTS = 10**9
     sys.path.remove(src)
+    pm._ab_modules = {m: mod for m, mod in sys.modules.items() if m == "propmap" or m.startswith("propmap.")}
     return pm
+
+
+def use(pm) -> None:
+    """Make ``pm``'s tree the one ``sys.modules`` holds: a function-level import (``from . import
+    _sensitivity`` in core/derivatives.py) resolves through it at call time, and would otherwise
+    run the last loaded tree's module whichever tree is called."""
+    for m in [m for m in sys.modules if m == "propmap" or m.startswith("propmap.")]:
+        del sys.modules[m]
+    sys.modules.update(pm._ab_modules)
 
 
 def main() -> None:
@@ -61,12 +71,14 @@ def main() -> None:
     inc = np.radians(rng.uniform(0, 90, n))
     args = {k: (pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")) for k, pm in trees.items()}
     for k, pm in trees.items():
+        use(pm)
         r = pm.rotor_loads(*args[k], om, V, inc)
         print(f"{k}: {pm.__file__}; {r.n_evaluations.mean() / r.r.size:.3f} residual evaluations per annulus")
     for label, beta in (("forward flight", inc), ("axial", 0.0 * inc)):
         t = {"A": [], "B": []}
         for i in range(rounds):
             for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+                use(trees[k])
                 t0 = time.process_time()
                 trees[k].rotor_loads(*args[k], om, V, beta)
                 t[k].append(time.process_time() - t0)
