@@ -758,7 +758,8 @@ def test_flapping_wrench_derivatives_against_differences(prop, model):
 @pytest.mark.parametrize("model", ["cambered", "gill2017", "gill2017_sincos"])
 def test_element_partials_match_central_differences(model):
     """The elements' analytic partials (core/_tangents.py, the NumPy twins of the kernel's) in
-    U_T, U_P, the blade angle and a direction of the cambered section's constants, against
+    U_T, U_P, the blade angle and a direction of the cambered section's constants (and of its
+    polar's constants: a section parameter's step), against
     Richardson-extrapolated central differences of the element itself (_physics), on random
     states over both signs of U_T and U_P (reverse flow and windmilling) and through stall; the
     loads they carry are the element's."""
@@ -791,6 +792,21 @@ def test_element_partials_match_central_differences(model):
     f0 = f(UT, UP, th)
     np.testing.assert_allclose(np.array(base), f0, rtol=1e-13, atol=1e-12)
     speed = np.maximum(np.hypot(UT, UP), 1.0)
+    if model == "cambered":  # a direction in the polar's constants too (a section parameter's step)
+        from propmap.core._tangents import cambered_direction, cambered_state
+
+        dcon = tuple(rng.normal(size=(8, n)) * np.array([0.01, 0.1, 0.005, 0.01, 0.05, 2.0, 0.02, 0.02])[:, None])
+        got = np.array(cambered_direction(cambered_state(UT, UP, th, np.sin(th), np.cos(th), sec, con), dsec, dcon))
+
+        def g(t):
+            return np.array(el(UT, UP, th, np.sin(th), np.cos(th), *(s + t * d for s, d in zip(sec, dsec)),
+                               *(c + t * d for c, d in zip(con, dcon))))
+        fd = (4 * (g(5e-5) - g(-5e-5)) / 1e-4 - (g(1e-4) - g(-1e-4)) / 2e-4) / 3
+        assert np.max(np.abs(got - fd) / (np.abs(f0).max(axis=0) + 1e-9)) < 1e-7
+        # along the section constants alone it is the tangent's constants direction
+        np.testing.assert_allclose(np.array(cambered_direction(
+            cambered_state(UT, UP, th, np.sin(th), np.cos(th), sec, con), dsec, (0.0,) * 8)), np.array(partials[2]),
+            rtol=1e-9, atol=1e-12 * np.abs(f0).max())
     for got, (mt, mp, mth, mc) in zip(partials, moves):
         h = 1e-4 * (speed if mt or mp else 1.0)
 

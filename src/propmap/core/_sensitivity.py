@@ -39,10 +39,15 @@ along its ray (second order), for the point's ray and, when the output has three
 more, for the rays beta = 0, pi/2 and pi (the slopes at rest, core/derivatives.py).
 
 A section parameter enters through the element's constants (pk) and the annulus'
-Reynolds constants (cam) only, the density through the Reynolds constant sc; their partial
-derivatives are one-sided differences of the blade's sums between the base and the
-constants at the parameter's stepped value (computed by the caller: +h, or -h at the upper
-bound of its range): one pass each.
+Reynolds constants (cam) only, the density through the Reynolds constant sc: its step
+(computed by the caller: +h, or -h at the upper bound of its range) moves the polar's
+constants pk[:8] and the annulus' section constants (those recomputed at the stepped cam or
+sc) by known amounts. For the cambered section the element's derivative along that direction
+is analytic (core/_tangents.make_cambered_direction: every parameter's from one evaluation
+per node, :func:`_parameter_partials`; since 2026-11-25), so only the constants' own change
+is a difference (first order in h = 1e-7 of the parameter's scale); for the paper's section
+it is a one-sided difference of the blade's sums between the base and the stepped constants,
+one pass each (:func:`_pass`).
 
 The element, the loss factor and the momentum side are the solver's own (_annulus): uniform
 inflow only, every azimuth node of the half circle where V sin beta is nonzero (the nodes
@@ -72,14 +77,19 @@ from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slop
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
                        NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
 from ._tangents import _loads_tangent as _loads_tangent_py
-from ._tangents import make_cambered_tangent, make_gill_tangent
+from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill_tangent
 
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 # the elements with their analytic partials in U_T, U_P, the blade angle and the section constants
 _cambered_tangent = _jit_inline(make_cambered_tangent(_atan2, _exp_sat, _loads_tangent))
 _gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
+# the cambered element's derivatives along the section parameters' directions, one evaluation per node for all
+_cambered_state, _cambered_direction = (_jit_inline(f) for f in make_cambered_direction(_atan2, _exp_sat,
+                                                                                          _loads_tangent))
 
+#: the values of the cambered element's state at a node (_tangents.make_cambered_direction)
+N_STATE = 27
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
 #: relative step of the blade's one-sided differences at the fixed root (the section constants'
@@ -328,6 +338,45 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
             (cT, cTs, cH, cHs, rC))
 
 
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, pk):
+    """The cambered element's derivatives along ``n_m`` directions over the nodes of one annulus,
+    from one evaluation per node (core/_tangents.make_cambered_direction): row m of ``dS``
+    (shape (n_m, 4)) and ``dC`` (shape (n_m, 8)) the m-th direction in the annulus' section
+    constants and in the polar's constants pk[:8] (a section parameter's or the density's step,
+    stepped value less base). Writes into row 1 + m of ``ps`` the sums qT, qT sin, qH, qH sin
+    and the radial drag's (:func:`_radial`), not divided by the step or the node count, as
+    :func:`_pass` gives them as differences. ``stw`` shape (N_STATE, >= naz): scratch for the
+    nodes' element states, so that each direction's loop runs over the nodes (SIMD), as the
+    element's own loops do."""
+    con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
+    sec = (s[0], s[1], s[2], s[3])
+    for k in range(naz):
+        st = _cambered_state(Om * y + Vs * sinpsi[k], UP, th, sth, cth, sec, con)
+        for c in range(N_STATE):  # unrolled: the state is a tuple of floats
+            stw[c, k] = st[c]
+    for m in range(n_m):
+        dsec = (dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3])
+        dcon = (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7])
+        aT = aTs = aH = aHs = aR = 0.0
+        for k in range(naz):
+            sk = sinpsi[k]
+            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k], stw[7, k], stw[8, k],
+                  stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k], stw[14, k], stw[15, k], stw[16, k], stw[17, k],
+                  stw[18, k], stw[19, k], stw[20, k], stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k])
+            dqT, dqH, dgR = _cambered_direction(st, dsec, dcon)
+            aT += dqT
+            aTs += dqT * sk
+            aH += dqH
+            aHs += dqH * sk
+            aR += dgR * (1.0 - sk * sk)
+        ps[1 + m, 0] = aT
+        ps[1 + m, 1] = aTs
+        ps[1 + m, 2] = aH
+        ps[1 + m, 3] = aHs
+        ps[1 + m, 4] = aR
+
+
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
 def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     y = nodes[NODE_Y]
@@ -390,6 +439,14 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     h0 = np.empty(naz_half)
     r0 = np.zeros(naz_half)  # the radial drag's (_radial) at the root, per node
     ps = np.zeros((2 + n_par, 5))  # the sums of the section parameters' and the density's passes (below)
+    # the cambered section's parameter directions: in the section constants (per annulus, below) and in the
+    # polar's constants (the same on every annulus)
+    dS = np.zeros((max(n_par + 1, 1), 4))
+    dC = np.zeros((max(n_par + 1, 1), 8))
+    stw = np.empty((N_STATE, naz_half if model == CAMBERED and n_par + (1 if hrho != 0.0 else 0) > 0 else 0))
+    for m in range(n_par):
+        for c in range(8):
+            dC[m, c] = pkpm[m][c] - pk[c]
     krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
     swirl = roots.shape[0] == 2
     for j in range(nr):
@@ -412,22 +469,36 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
         rB, rT, rTs, rP, rU = rsums
         cT, cTs, cH, cHs, rC = csums
-        # the section parameters' and the density's passes through one (inlined) call: 0 the base again (the
-        # parameters' differences are then exactly 0 for one that does not enter), 1 + k the k-th section
-        # parameter's (the element's constants pk, the annulus' cam), 1 + n_par the density's (through the
-        # Reynolds constant sc; cfac and mfac scale out)
-        for m in range(1 + n_par + (1 if hrho != 0.0 else 0)):
-            if m == 0 and n_par == 0 and hrho == 0.0:
-                continue
-            sa, pka = s, pk
-            if m == n_par + 1:
-                sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
-            elif m >= 1:
-                pka = pkpm[m - 1]
-                if not cam_same[m - 1]:
-                    sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 1])
-            ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, UP, yj, th, sth, cth, sa,
-                                                                     sinpsi, naz, model, pka)
+        n_m = n_par + (1 if hrho != 0.0 else 0)
+        if model == CAMBERED and n_m > 0:
+            # each section parameter's and the density's direction in the annulus' section constants (their
+            # change at the parameter's stepped value) and in the polar's constants: the element's derivatives
+            # along them from one evaluation per node (_parameter_partials), into rows 1 + k of ps (row 0 stays 0)
+            for m in range(n_m):
+                if m == n_par:  # the density, through the Reynolds constant sc
+                    sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
+                elif not cam_same[m]:
+                    sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m])
+                else:
+                    sa = s
+                for c in range(4):
+                    dS[m, c] = sa[c] - s[c]
+            _parameter_partials(ps, dS, dC, n_m, stw, ome, vs, UP, yj, th, sth, cth, s, sinpsi, naz, pk)
+        elif n_m > 0:
+            # the paper's section: one-sided differences, a pass each: 0 the base again (the parameters'
+            # differences are then exactly 0 for one that does not enter), 1 + k the k-th section parameter's (the
+            # element's constants pk, the annulus' cam), 1 + n_par the density's (through the Reynolds constant sc;
+            # cfac and mfac scale out)
+            for m in range(1 + n_m):
+                sa, pka = s, pk
+                if m == n_par + 1:
+                    sa = _constants(om, vs, vc, yj, scpm[j], cy2[j], model, cam)
+                elif m >= 1:
+                    pka = pkpm[m - 1]
+                    if not cam_same[m - 1]:
+                        sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 1])
+                ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, UP, yj, th, sth, cth,
+                                                                         sa, sinpsi, naz, model, pka)
         cf = cfac[j] / naz
         cq = yj * cf
         kU = cf / hU

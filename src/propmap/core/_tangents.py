@@ -128,6 +128,63 @@ def make_cambered_tangent(atan2, exp_sat, loads_tangent):
     return cambered_tangent
 
 
+def make_cambered_direction(atan2, exp_sat, loads_tangent):
+    """Return ``(state, direction)`` for the cambered element's derivatives along any direction in
+    its section constants and polar constants (a section parameter's or the air density's step),
+    using the given arctangent, saturated exp and :func:`_loads_tangent`: ``state`` evaluates the
+    element once at a node, ``direction`` gives the derivative of its loads along one direction
+    from that state (arithmetic only), so that many directions share one evaluation."""
+
+    def state(UT, UP, theta, sin_th, cos_th, sec, con):
+        """The cambered element's terms at one node (arguments as :func:`make_cambered_tangent`'s
+        ``cambered_tangent``), packed for ``direction``."""
+        a, cdf, g, dal0 = sec
+        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
+        U = np.sqrt(UT * UT + UP * UP + 1e-300)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
+        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        zp = ae - g * asp
+        zq = ae - g * asn
+        p = exp_sat(M * zp)
+        q = exp_sat(-M * zq)
+        P = 1.0 + p
+        Q = 1.0 + q
+        s = 1.0 - 1.0 / (P * Q)
+        cl_att = a * ae
+        dcl = cl_att - cl_cdmin
+        sc = sin_a * cos_a
+        s2 = sin_a * sin_a
+        CL = (1.0 - s) * cl_att + s * cd90 * sc
+        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
+        cdp = cdf * inner
+        CD = cdp + s * cd90 * s2
+        w = 1.0 / (P * Q * P * Q)
+        return (U, UT, UP, CL, CD, CL * UT - CD * UP, CL * UP + CD * UT, cdp, ae, zp, zq, p * Q * w, q * P * w, s,
+                cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M, asp, asn)
+
+    def direction(st, dsec, dcon):
+        """The derivatives of (qT, qH, C_D,p U) [m^2/s^2] along ``dsec`` (4: the section
+        constants, as ``cambered_tangent``'s) and ``dcon`` (8: the polar's constants, pk[:8])
+        at the node of ``st`` (``state``'s), per unit of the direction."""
+        (U, UT, UP, CL, CD, FT, FH, cdp, ae, zp, zq, pw, qw, s, cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M,
+         asp, asn) = st
+        da, dcdf, dg, ddal0 = dsec
+        d_aL0, d_cd90, d_cd_min, d_cd2, d_cl_cdmin, d_M, d_asp, d_asn = dcon
+        dae = -(d_aL0 + ddal0)
+        # ds = (dp Q + P dq) / (PQ)^2, dp = p d(M zp), dq = -q d(M zq)
+        ds = pw * (d_M * zp + M * (dae - dg * asp - g * d_asp)) - qw * (d_M * zq + M * (dae - dg * asn - g * d_asn))
+        dcla = da * ae + a * dae
+        dCL = -ds * cl_att + (1.0 - s) * dcla + (d_cd90 * s + cd90 * ds) * sc
+        dinner = d_cd_min - ds * cd2 * dcl * dcl + (1.0 - s) * dcl * (d_cd2 * dcl + 2.0 * cd2 * (dcla - d_cl_cdmin))
+        dcdp = dcdf * inner + cdf * dinner
+        dCD = dcdp + (d_cd90 * s + cd90 * ds) * s2
+        return loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCL, dCD, dcdp)
+
+    return state, direction
+
+
 def make_gill_tangent(atan2, exp_sat, loads_tangent):
     """Return the paper's element (eqs 3-4) with its partials, using the given arctangent,
     saturated exp and :func:`_loads_tangent`."""
@@ -196,4 +253,5 @@ def make_gill_tangent(atan2, exp_sat, loads_tangent):
 
 # the NumPy twins (tests)
 cambered_tangent = make_cambered_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
+cambered_state, cambered_direction = make_cambered_direction(np.arctan2, exp_sat_numpy, _loads_tangent)
 gill_tangent = make_gill_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
