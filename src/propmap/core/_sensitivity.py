@@ -82,14 +82,15 @@ from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 # the elements with their analytic partials in U_T, U_P, the blade angle and the section constants
-_cambered_tangent = _jit_inline(make_cambered_tangent(_atan2, _exp_sat, _loads_tangent))
-_gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
-# the cambered element's derivatives along the section parameters' directions, one evaluation per node for all
+# the cambered element's state at a node and its derivative along any direction in its constants (the section
+# parameters', one evaluation per node for all)
 _cambered_state, _cambered_direction = (_jit_inline(f) for f in make_cambered_direction(_atan2, _exp_sat,
                                                                                           _loads_tangent))
+_cambered_tangent = _jit_inline(make_cambered_tangent(_cambered_state, _cambered_direction, _loads_tangent))
+_gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
 
 #: the values of the cambered element's state at a node (_tangents.make_cambered_direction)
-N_STATE = 27
+N_STATE = 28
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
 #: relative step of the blade's one-sided differences at the fixed root (the section constants'
@@ -252,6 +253,24 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     return aT, aTs, aH, aHs, aR
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _add_node(acc, q0, h0, r0, k, sk, base, d_t, d_p, d_u, d_c):
+    """One node's element (``base``, written into ``q0``, ``h0``, ``r0``) and partials (in U_T, U_P,
+    the constants' direction and the blade angle, each (qT, qH, C_D,p U)) added to the 24 sums
+    :func:`_partials` returns, at sin psi = ``sk``."""
+    (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs, rB, rT, rTs, rP, rU, cT, cTs, cH, cHs,
+     rC) = acc
+    ck = 1.0 - sk * sk
+    q0[k] = base[0]
+    h0[k] = base[1]
+    r0[k] = base[2] * ck
+    return (tT + d_t[0], tTs + d_t[0] * sk, tTs2 + d_t[0] * sk * sk, tH + d_t[1], tHs + d_t[1] * sk,
+            tHs2 + d_t[1] * sk * sk, pT + d_p[0], pTs + d_p[0] * sk, pH + d_p[1], pHs + d_p[1] * sk, uT + d_u[0],
+            uTs + d_u[0] * sk, uH + d_u[1], uHs + d_u[1] * sk, rB + base[2] * ck, rT + d_t[2] * ck,
+            rTs + d_t[2] * ck * sk, rP + d_p[2] * ck, rU + d_u[2] * ck, cT + d_c[0], cTs + d_c[0] * sk, cH + d_c[1],
+            cHs + d_c[1] * sk, rC + d_c[2] * ck)
+
+
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, model, pk):
     """The inputs' partials over the nodes of one annulus, from one evaluation per node of the
@@ -264,76 +283,24 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     evaluations; used only with it): its base sum, its U_T sums (plain and sin), its U_P and
     its U2 sum, and the blade angle's (qT, qT sin, qH, qH sin, the radial drag's).
     """
-    tT = tTs = tTs2 = tH = tHs = tHs2 = 0.0
-    pT = pTs = pH = pHs = 0.0
-    uT = uTs = uH = uHs = 0.0
-    rB = rT = rTs = rP = rU = 0.0
-    cT = cTs = cH = cHs = rC = 0.0
+    acc = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+           0.0, 0.0)  # the 24 sums (_add_node)
     UP = Vc + v
     if model == CAMBERED:
         con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
         sec = (s[0], s[1], s[2], s[3])
         dsec = (u[0] - s[0], u[1] - s[1], u[2] - s[2], u[3] - s[3])
-        for k in range(naz):
-            sk = sinpsi[k]
-            ck = 1.0 - sk * sk
-            base, d_t, d_p, d_u, d_c = _cambered_tangent(Om * y + Vs * sk, UP, th, sth, cth, sec, dsec, con)
-            q0[k] = base[0]
-            h0[k] = base[1]
-            r0[k] = base[2] * ck
-            rB += base[2] * ck
-            uT += d_u[0]
-            uTs += d_u[0] * sk
-            uH += d_u[1]
-            uHs += d_u[1] * sk
-            rU += d_u[2] * ck
-            tT += d_t[0]
-            tTs += d_t[0] * sk
-            tTs2 += d_t[0] * sk * sk
-            tH += d_t[1]
-            tHs += d_t[1] * sk
-            tHs2 += d_t[1] * sk * sk
-            rT += d_t[2] * ck
-            rTs += d_t[2] * ck * sk
-            pT += d_p[0]
-            pTs += d_p[0] * sk
-            pH += d_p[1]
-            pHs += d_p[1] * sk
-            rP += d_p[2] * ck
-            cT += d_c[0]
-            cTs += d_c[0] * sk
-            cH += d_c[1]
-            cHs += d_c[1] * sk
-            rC += d_c[2] * ck
+        for k in range(naz):  # one loop per section model, each straight-line SIMD code
+            base, d_t, d_p, d_u, d_c = _cambered_tangent(Om * y + Vs * sinpsi[k], UP, th, sth, cth, sec, dsec, con)
+            acc = _add_node(acc, q0, h0, r0, k, sinpsi[k], base, d_t, d_p, d_u, d_c)
     else:
         con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5])
         sincos = model == GILL_SINCOS
         for k in range(naz):  # the paper's section has no Reynolds terms: no U2 sums
-            sk = sinpsi[k]
-            ck = 1.0 - sk * sk
-            base, d_t, d_p, d_c = _gill_tangent(Om * y + Vs * sk, UP, th, sth, cth, s[0], con, sincos)
-            q0[k] = base[0]
-            h0[k] = base[1]
-            r0[k] = base[2] * ck
-            rB += base[2] * ck
-            tT += d_t[0]
-            tTs += d_t[0] * sk
-            tTs2 += d_t[0] * sk * sk
-            tH += d_t[1]
-            tHs += d_t[1] * sk
-            tHs2 += d_t[1] * sk * sk
-            rT += d_t[2] * ck
-            rTs += d_t[2] * ck * sk
-            pT += d_p[0]
-            pTs += d_p[0] * sk
-            pH += d_p[1]
-            pHs += d_p[1] * sk
-            rP += d_p[2] * ck
-            cT += d_c[0]
-            cTs += d_c[0] * sk
-            cH += d_c[1]
-            cHs += d_c[1] * sk
-            rC += d_c[2] * ck
+            base, d_t, d_p, d_c = _gill_tangent(Om * y + Vs * sinpsi[k], UP, th, sth, cth, s[0], con, sincos)
+            acc = _add_node(acc, q0, h0, r0, k, sinpsi[k], base, d_t, d_p, (0.0, 0.0, 0.0), d_c)
+    (tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs, rB, rT, rTs, rP, rU, cT, cTs, cH, cHs,
+     rC) = acc
     return ((tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU),
             (cT, cTs, cH, cHs, rC))
 
@@ -363,7 +330,8 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
             sk = sinpsi[k]
             st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k], stw[7, k], stw[8, k],
                   stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k], stw[14, k], stw[15, k], stw[16, k], stw[17, k],
-                  stw[18, k], stw[19, k], stw[20, k], stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k])
+                  stw[18, k], stw[19, k], stw[20, k], stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k],
+                  stw[27, k])
             dqT, dqH, dgR = _cambered_direction(st, dsec, dcon)
             aT += dqT
             aTs += dqT * sk

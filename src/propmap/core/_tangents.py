@@ -46,9 +46,67 @@ def _loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, dUT, dUP, dU, dCL, dCD, dcdp)
     return dqT, dqH, dcdp * U + cdp * dU
 
 
-def make_cambered_tangent(atan2, exp_sat, loads_tangent):
-    """Return the cambered element with its partials, using the given arctangent, saturated
-    exp and :func:`_loads_tangent` (each back end's own)."""
+def make_cambered_direction(atan2, exp_sat, loads_tangent):
+    """Return ``(state, direction)`` for the cambered element's derivatives along any direction in
+    its section constants and polar constants (a section parameter's or the air density's step),
+    using the given arctangent, saturated exp and :func:`_loads_tangent`: ``state`` evaluates the
+    element once at a node, ``direction`` gives the derivative of its loads along one direction
+    from that state (arithmetic only), so that many directions share one evaluation."""
+
+    def state(UT, UP, theta, sin_th, cos_th, sec, con):
+        """The cambered element's terms at one node (arguments as :func:`make_cambered_tangent`'s
+        ``cambered_tangent``), packed for ``direction`` (N_STATE values)."""
+        a, cdf, g, dal0 = sec
+        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
+        U = np.sqrt(UT * UT + UP * UP + 1e-300)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
+        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        zp = ae - g * asp
+        zq = ae - g * asn
+        p = exp_sat(M * zp)
+        q = exp_sat(-M * zq)
+        P = 1.0 + p
+        Q = 1.0 + q
+        s = 1.0 - 1.0 / (P * Q)
+        cl_att = a * ae
+        dcl = cl_att - cl_cdmin
+        sc = sin_a * cos_a
+        s2 = sin_a * sin_a
+        CL = (1.0 - s) * cl_att + s * cd90 * sc
+        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
+        cdp = cdf * inner
+        CD = cdp + s * cd90 * s2
+        w = 1.0 / (P * Q * P * Q)
+        return (U, UT, UP, CL, CD, CL * UT - CD * UP, CL * UP + CD * UT, cdp, ae, zp, zq, p * Q * w, q * P * w, s,
+                cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M, asp, asn, cos_a * cos_a - s2)
+
+    def direction(st, dsec, dcon):
+        """The derivatives of (qT, qH, C_D,p U) [m^2/s^2] along ``dsec`` (4: the section
+        constants, as ``cambered_tangent``'s) and ``dcon`` (8: the polar's constants, pk[:8])
+        at the node of ``st`` (``state``'s), per unit of the direction."""
+        (U, UT, UP, CL, CD, FT, FH, cdp, ae, zp, zq, pw, qw, s, cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M,
+         asp, asn, _) = st
+        da, dcdf, dg, ddal0 = dsec
+        d_aL0, d_cd90, d_cd_min, d_cd2, d_cl_cdmin, d_M, d_asp, d_asn = dcon
+        dae = -(d_aL0 + ddal0)
+        # ds = (dp Q + P dq) / (PQ)^2, dp = p d(M zp), dq = -q d(M zq)
+        ds = pw * (d_M * zp + M * (dae - dg * asp - g * d_asp)) - qw * (d_M * zq + M * (dae - dg * asn - g * d_asn))
+        dcla = da * ae + a * dae
+        dCL = -ds * cl_att + (1.0 - s) * dcla + (d_cd90 * s + cd90 * ds) * sc
+        dinner = d_cd_min - ds * cd2 * dcl * dcl + (1.0 - s) * dcl * (d_cd2 * dcl + 2.0 * cd2 * (dcla - d_cl_cdmin))
+        dcdp = dcdf * inner + cdf * dinner
+        dCD = dcdp + (d_cd90 * s + cd90 * ds) * s2
+        return loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCL, dCD, dcdp)
+
+    return state, direction
+
+
+def make_cambered_tangent(state, direction, loads_tangent):
+    """Return the cambered element with its partials, from :func:`make_cambered_direction`'s
+    ``state`` and ``direction`` and :func:`_loads_tangent` (each back end's own)."""
+    zero = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
     def cambered_tangent(UT, UP, theta, sin_th, cos_th, sec, dsec, con):
         """The cambered polar's element (_physics.make_cambered_element with ``profile``) and
@@ -74,115 +132,24 @@ def make_cambered_tangent(atan2, exp_sat, loads_tangent):
             (qT, qH, C_D,p U) [m^2/s^2] and their derivatives with respect to U_T and U_P
             [m/s], along ``dsec`` (per unit of it) and with respect to the blade angle [1/rad].
         """
-        a, cdf, g, dal0 = sec
-        da, dcdf, dg, ddal0 = dsec
-        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
-        U2 = UT * UT + UP * UP + 1e-300
-        U = np.sqrt(U2)
-        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
-        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
-        sin_a = (sin_th * UT - cos_th * UP) / U
-        cos_a = (cos_th * UT + sin_th * UP) / U
-        p = exp_sat(M * (ae - g * asp))
-        q = exp_sat(-M * (ae - g * asn))
-        P = 1.0 + p
-        Q = 1.0 + q
-        s = 1.0 - 1.0 / (P * Q)
-        cl_att = a * ae
-        dcl = cl_att - cl_cdmin
-        sc = sin_a * cos_a
-        s2 = sin_a * sin_a
-        CL = (1.0 - s) * cl_att + s * cd90 * sc
-        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
-        cdp = cdf * inner
-        CD = cdp + s * cd90 * s2
-        FT = CL * UT - CD * UP
-        FH = CL * UP + CD * UT
-        base = (U * FT, U * FH, cdp * U)
-        # the blend's slopes: ds = sp (dae - dg asp) - sq (dae - dg asn)
-        w = 1.0 / (P * Q * P * Q)
-        sp = M * p * Q * w
-        sq = M * q * P * w
-        c2 = cos_a * cos_a - s2  # d(sin a cos a) / dalpha
+        st = state(UT, UP, theta, sin_th, cos_th, sec, con)
+        (U, _, _, CL, CD, FT, FH, cdp, _, _, _, pw, qw, s, cl_att, dcl, sc, s2, _, a, cdf, _, cd90, cd2, M, _, _,
+         c2) = st
         # U_T, U_P and the blade angle move alpha and the angle from the zero-lift line alike (dalpha = dae) and leave
-        # the constants: ds, dC_L, dC_D, dC_D,p per unit dalpha
-        ds = sp - sq
+        # the constants: ds, dC_L, dC_D, dC_D,p per unit dalpha (c2 = d(sin a cos a) / dalpha)
+        ds = M * (pw - qw)
         dCLa = -ds * cl_att + (1.0 - s) * a + cd90 * (ds * sc + s * c2)
         dcdpa = cdf * cd2 * dcl * (2.0 * (1.0 - s) * a - ds * dcl)
         dCDa = dcdpa + cd90 * (ds * s2 + 2.0 * s * sc)
+        U2 = U * U
         at = UP / U2  # dalpha/dU_T
         ap = -UT / U2  # dalpha/dU_P
         d_ut = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 1.0, 0.0, UT / U, dCLa * at, dCDa * at, dcdpa * at)
         d_up = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 1.0, UP / U, dCLa * ap, dCDa * ap, dcdpa * ap)
         d_th = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCLa, dCDa, dcdpa)
-        # the constants: the angle from the zero-lift line moves by -ddal0, the chord's angle not
-        dae = -ddal0
-        dsc = sp * (dae - dg * asp) - sq * (dae - dg * asn)
-        dcla = da * ae + a * dae
-        dCLc = -dsc * cl_att + (1.0 - s) * dcla + cd90 * dsc * sc
-        dcdpc = dcdf * inner + cdf * cd2 * dcl * (2.0 * (1.0 - s) * dcla - dsc * dcl)
-        dCDc = dcdpc + cd90 * dsc * s2
-        d_sec = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCLc, dCDc, dcdpc)
-        return base, d_ut, d_up, d_sec, d_th
+        return (U * FT, U * FH, cdp * U), d_ut, d_up, direction(st, dsec, zero), d_th
 
     return cambered_tangent
-
-
-def make_cambered_direction(atan2, exp_sat, loads_tangent):
-    """Return ``(state, direction)`` for the cambered element's derivatives along any direction in
-    its section constants and polar constants (a section parameter's or the air density's step),
-    using the given arctangent, saturated exp and :func:`_loads_tangent`: ``state`` evaluates the
-    element once at a node, ``direction`` gives the derivative of its loads along one direction
-    from that state (arithmetic only), so that many directions share one evaluation."""
-
-    def state(UT, UP, theta, sin_th, cos_th, sec, con):
-        """The cambered element's terms at one node (arguments as :func:`make_cambered_tangent`'s
-        ``cambered_tangent``), packed for ``direction``."""
-        a, cdf, g, dal0 = sec
-        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
-        U = np.sqrt(UT * UT + UP * UP + 1e-300)
-        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
-        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
-        sin_a = (sin_th * UT - cos_th * UP) / U
-        cos_a = (cos_th * UT + sin_th * UP) / U
-        zp = ae - g * asp
-        zq = ae - g * asn
-        p = exp_sat(M * zp)
-        q = exp_sat(-M * zq)
-        P = 1.0 + p
-        Q = 1.0 + q
-        s = 1.0 - 1.0 / (P * Q)
-        cl_att = a * ae
-        dcl = cl_att - cl_cdmin
-        sc = sin_a * cos_a
-        s2 = sin_a * sin_a
-        CL = (1.0 - s) * cl_att + s * cd90 * sc
-        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
-        cdp = cdf * inner
-        CD = cdp + s * cd90 * s2
-        w = 1.0 / (P * Q * P * Q)
-        return (U, UT, UP, CL, CD, CL * UT - CD * UP, CL * UP + CD * UT, cdp, ae, zp, zq, p * Q * w, q * P * w, s,
-                cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M, asp, asn)
-
-    def direction(st, dsec, dcon):
-        """The derivatives of (qT, qH, C_D,p U) [m^2/s^2] along ``dsec`` (4: the section
-        constants, as ``cambered_tangent``'s) and ``dcon`` (8: the polar's constants, pk[:8])
-        at the node of ``st`` (``state``'s), per unit of the direction."""
-        (U, UT, UP, CL, CD, FT, FH, cdp, ae, zp, zq, pw, qw, s, cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M,
-         asp, asn) = st
-        da, dcdf, dg, ddal0 = dsec
-        d_aL0, d_cd90, d_cd_min, d_cd2, d_cl_cdmin, d_M, d_asp, d_asn = dcon
-        dae = -(d_aL0 + ddal0)
-        # ds = (dp Q + P dq) / (PQ)^2, dp = p d(M zp), dq = -q d(M zq)
-        ds = pw * (d_M * zp + M * (dae - dg * asp - g * d_asp)) - qw * (d_M * zq + M * (dae - dg * asn - g * d_asn))
-        dcla = da * ae + a * dae
-        dCL = -ds * cl_att + (1.0 - s) * dcla + (d_cd90 * s + cd90 * ds) * sc
-        dinner = d_cd_min - ds * cd2 * dcl * dcl + (1.0 - s) * dcl * (d_cd2 * dcl + 2.0 * cd2 * (dcla - d_cl_cdmin))
-        dcdp = dcdf * inner + cdf * dinner
-        dCD = dcdp + (d_cd90 * s + cd90 * ds) * s2
-        return loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, 0.0, 0.0, 0.0, dCL, dCD, dcdp)
-
-    return state, direction
 
 
 def make_gill_tangent(atan2, exp_sat, loads_tangent):
@@ -252,6 +219,6 @@ def make_gill_tangent(atan2, exp_sat, loads_tangent):
 
 
 # the NumPy twins (tests)
-cambered_tangent = make_cambered_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
 cambered_state, cambered_direction = make_cambered_direction(np.arctan2, exp_sat_numpy, _loads_tangent)
+cambered_tangent = make_cambered_tangent(cambered_state, cambered_direction, _loads_tangent)
 gill_tangent = make_gill_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
