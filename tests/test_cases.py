@@ -88,9 +88,15 @@ def test_multinomial_fit_of_the_model():
     # edgewise at mu = 0.1 the fitted H matches the model's to a few per cent of it
     e = pm.rotor_loads(prop, p, om, 0.1 * om * prop.radius, math.pi / 2)
     assert f["k4"] * 0.1 == pytest.approx(float(e.drag) / q, rel=0.1)
-    # the published fits' form (k5 held at 0) averages the slope over the grid's lambda_c, where the model's
-    # in-plane force grows with lambda_c (k5 > 0): its k4 lies above the k5-free fit's
-    assert f["k5"] > 0 and f["k4_mu_only"] > f["k4"]
+    # the model's in-plane force grows with lambda_c (k5 > 0); fitted in the published fits' form (k5 held at 0)
+    # its slope is the edgewise one plus k5 times the grid's mu^2-weighted mean lambda_c (least squares on the
+    # same grid: the two fits agree to rounding)
+    assert f["k5"] > 0
+    from propmap.cases import GILL2019_ADVANCE, GILL2019_INCIDENCE_DEG
+
+    adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
+    mu, lam = adv * np.sin(inc), adv * np.cos(inc)
+    assert f["k4_mu_only"] == pytest.approx(f["k4"] + f["k5"] * np.sum(lam * mu**2) / np.sum(mu**2), rel=1e-9)
 
 
 def test_gill2019_published_h_force_has_no_lambda_term():
@@ -133,7 +139,6 @@ def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
     # fitted in the published fits' form (k5 = 0; regression values, 2026-11-25): 0.49-0.61 of the tunnel's
     assert own["H_slope_mu_only_ratio_min"] == pytest.approx(0.491, abs=0.005)
     assert own["H_slope_mu_only_ratio_max"] == pytest.approx(0.613, abs=0.005)
-    assert m.measured["H_slope_mu_only"].tolist() == m.measured["H_slope"].tolist()
     # the APC electric sets' edgewise thrust rises, but by a quarter of the tunnel's 15-19% (with the stall
     # blend M = 20 it fell: -4.3% on apce_8x6)
     assert m.predicted["own"]["thrust_rise"][0] == pytest.approx(0.042, abs=0.002)

@@ -616,10 +616,10 @@ def test_implicit_derivatives_match_tightly_converged_differences(prop, params, 
     are of the NumPy reference solver (core/_reference.py, the same rule) with its root
     tolerance tightened to 1e-15 (the compiled kernel's 1e-7 / h would swamp them), Richardson-
     extrapolated from h and h/2; hover-side climb, fast climb at 30 deg, 60 deg incidence and
-    four random points in climb (measured 2026-11-25 with the element's analytic partials:
-    at most 1.1e-7 of each derivative, 8e-6 and 3e-5 with the one-sided element differences
-    before; near windmilling, where the torque is small and U_P passes through 0 on some
-    annulus, less: docs/solver.md)."""
+    four random points in climb (measured 2026-11-25 with the element's analytic partials on
+    these and two more random points: at most 1.1e-7 of each derivative, 8e-6 and 3e-5 with the
+    one-sided element differences before; in descent at 150 deg 7.9e-7, and near windmilling,
+    where the torque is small, 5.2e-7: docs/solver.md)."""
     from propmap.core import _annulus as K
     from propmap.core._reference import solve_reference
     from propmap.core.nodes import _nodes

@@ -43,6 +43,13 @@ def _sibling_imports(path: Path) -> set[str]:
                     if isinstance(n, ast.ImportFrom) and n.level == 1 and not n.module for a in n.names}
 
 
+def test_sibling_imports_sees_both_import_forms(tmp_path):
+    # the stamp check below relies on it: a kernel module imported as ``from . import x`` counts too
+    f = tmp_path / "k.py"
+    f.write_text("from . import _a, _b\nfrom ._c import f\nfrom ._jitcache import CACHE\nimport numpy\n")
+    assert _sibling_imports(f) == {"_a.py", "_b.py", "_c.py"}
+
+
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
     assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_fastmath.py", "_flags.py"}

@@ -2,16 +2,23 @@
 
 Loads propmap from two source trees (each with its kernel cache already compiled: run any
 solve in each checkout first), then times ``rotor_loads`` on the same batch with each in
-turn (each tree's modules put back into ``sys.modules`` before its call, :func:`use`), alternating the order every round, and prints the median of the paired ratios B/A
+turn (each tree's modules put back into ``sys.modules`` before its call, :func:`use`),
+alternating the order every round, and prints the median of the paired ratios B/A
 (forward flight and axial): in one process the machine's drift between runs cancels, which
 whole-process timings on a shared machine do not resolve to a few percent. The batch is
 benchmarks/bench_solver.py's envelope (rpm 3000-12000, V 0-25 m/s, incidence 0-90 deg;
 apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set).
 
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] [--serial]   # ~2 min for 30 rounds
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial]
 
 ``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
-raised above the batch) instead of the parallel one on one thread.
+raised above the batch) instead of the parallel one on one thread. ``--derivatives`` times
+the implicit derivatives instead, on benchmarks/bench_derivatives.py's batch (2,000 points of
+apce_8x6, generic set, a fifth axial; or all forward-flight or all axial): the loads alone,
+with the three inputs' derivatives, with the collective too and with the 8 section
+parameters, each tree's ratio to its loads and the paired new / old of each (~2 min for 10
+rounds).
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -36,7 +43,8 @@ def load(src: str, serial: bool = False):
         raise SystemExit(f"propmap came from {pm.__file__}, not {src}")
     for name in ("rotor_loads", "load_propeller", "default_params"):  # resolve the lazy exports now
         getattr(pm, name)
-    for mod in ("core.solver", "core._kernel", "core._annulus", "io.catalogue", "io.calibration"):
+    for mod in ("core.solver", "core._kernel", "core._annulus", "core.derivatives", "core._sensitivity", "io.catalogue",
+                "io.calibration"):
         importlib.import_module(f"propmap.{mod}")
     pm.load_propeller("apce_8x6")
     pm.default_params("apce_8x6")
@@ -56,14 +64,57 @@ def use(pm) -> None:
     sys.modules.update(pm._ab_modules)
 
 
+#: the cambered fit's parameters with Reynolds terms (benchmarks/bench_derivatives.py's)
+PARAMS = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re")
+
+
+def derivatives_ab(trees: dict, rounds: int, batch: str) -> None:
+    """The paired timing of the implicit derivatives (``--derivatives``)."""
+    rng = np.random.default_rng(0)
+    n = 2000
+    om = rng.uniform(2000, 12000, n) * 2 * np.pi / 60
+    V = rng.uniform(0, 20, n)
+    b = np.radians(rng.uniform(0, 180, n))
+    b[: n // 5] = 0.0
+    if batch == "forward":
+        b = np.radians(rng.uniform(1, 179, n))
+    elif batch == "axial":
+        b = 0.0 * V
+    cases = {"loads": None, "3 inputs": True, "with the collective": ("omega", "airspeed", "incidence", "collective"),
+             "8 parameters": PARAMS}
+    args = {}
+    for k, pm in trees.items():
+        use(pm)
+        args[k] = (pm.load_propeller("apce_8x6"), pm.generic_params())
+        for d in cases.values():  # warm
+            pm.rotor_loads(*args[k], om, V, b, derivatives=d)
+    t = {(k, c): [] for k in trees for c in cases}
+    for i in range(rounds):
+        for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+            use(trees[k])
+            for c, d in cases.items():
+                t0 = time.process_time()
+                trees[k].rotor_loads(*args[k], om, V, b, derivatives=d)
+                t[(k, c)].append(time.process_time() - t0)
+    for c in cases:
+        a, bb = np.array(t[("A", c)]), np.array(t[("B", c)])
+        ra, rb = a / np.array(t[("A", "loads")]), bb / np.array(t[("B", "loads")])
+        print(f"{batch} batch, {c}: A {1e3 * np.median(a):.1f} ms ({np.median(ra):.3f}x its loads), B "
+              f"{1e3 * np.median(bb):.1f} ms ({np.median(rb):.3f}x); B / A paired median {np.median(bb / a):.3f}")
+
+
 def main() -> None:
-    argv = [a for a in sys.argv[1:] if a != "--serial"]
+    flags = ("--serial", "--derivatives", "forward", "axial")
+    argv = [a for a in sys.argv[1:] if a not in flags]
     if len(argv) < 2:
         raise SystemExit(__doc__)
     numba.set_num_threads(1)
     serial = "--serial" in sys.argv
     trees = {"A": load(argv[0], serial), "B": load(argv[1], serial)}
     rounds = int(argv[2]) if len(argv) > 2 else 30
+    if "--derivatives" in sys.argv:
+        derivatives_ab(trees, rounds, next((a for a in ("forward", "axial") if a in sys.argv), "mixed"))
+        return
     rng = np.random.default_rng(5)
     n = 4000
     om = rng.uniform(3000, 12000, n) * np.pi / 30

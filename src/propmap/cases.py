@@ -340,9 +340,10 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
         ``CT_static``, ``k1`` ... ``k5``, ``CQ_static``, ``k6`` ... ``k8``, and ``k4_mu_only``: the
         H-force fitted as C_FH = k4 mu alone (k5 held at 0), the form of the published fits,
         whose k5 lambda_c mu is below 1e-6 of k4 mu over the data's lambda_c <= 0.24
-        (|k5| 1.4e-9 to 5.3e-8 against k4 0.025-0.055, GILL2019_FILE): a least-squares k5 of measured
-        data would not be, so the authors' fits hold it at 0 in effect, and their k4 is the
-        H-force's mean slope over the data's lambda_c.
+        (|k5| 1.4e-9 to 5.3e-8 against k4 0.025-0.055, GILL2019_FILE), as if fitted with
+        k5 = 0 (a free least-squares k5 of measured data would hardly be that small), so that
+        their k4 is the H-force's mean slope over the data's lambda_c; this one is the mean over
+        this function's grid, which need not weight lambda_c as the authors' test points did.
 
     Raises
     ------
@@ -408,8 +409,9 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
         metrics[label] = m
     return CaseResult("gill2019", "propeller", np.arange(len(names)), measured, pred, CITATIONS["gill2019"],
                       f"{', '.join(names)}; H_slope: k4 / CT_static of the published multinomial fits against "
-                      f"propmap's loads fitted the same way (advance ratios to 0.24, incidence 0-90 deg); H_slope_mu_only: "
-                      f"propmap's fitted with k5 = 0, the published fits' effective form (their k5 are 0); "
+                      f"propmap's loads fitted the same way (advance ratios to 0.24, incidence 0-90 deg); "
+                      f"H_slope_mu_only: propmap's fitted with k5 = 0, the published fits' form in effect "
+                      f"(their k5 lambda_c mu is below 1e-6 of k4 mu); "
                       f"thrust_rise, torque_rise: T / T_static - 1 and Q / Q_static - 1 edgewise at mu = "
                       f"{GILL2019_MU_RISE:g} (published: k2 mu^2 / CT_static, k7 mu^2 / CQ_static); "
                       f"{GILL2019_RPM:.0f} rpm", metrics)

@@ -3,17 +3,18 @@
 numba stamps a cached function with a hash of the file that defines it only. The solver
 kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
 ``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
-kernel (``_sensitivity.py``, calling the momentum side's partials of ``_momentum_sensitivity.py``
-and inlining the elements' partials of ``_tangents.py``) compiles in those and ``_annulus.py``, so an edit there would leave
-numba serving a kernel compiled from the old physics (module constants such as the Reynolds
-clamp are compiled in). The locators below serve the kernels' own files (``_kernel.py``,
-``_annulus.py``, ``_sensitivity.py``, ``_momentum_sensitivity.py``; ``_flags.py``'s own functions use numba's, stamped with
-that file: they use nothing else of propmap) and stamp
-each one's cache with a SHA-256 over the contents of every file it compiles in
-(:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`), so that editing any of them
-recompiles. They are registered ahead of numba's own locators (numba.core.caching, an
-internal API); if that API is not found, :data:`CACHE` is False and the kernels are
-compiled in every process instead of risking a stale one.
+kernel (``_sensitivity.py``, calling the momentum side's partials of
+``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py``) compiles
+in those and ``_annulus.py``, so an edit there would leave numba serving a kernel compiled
+from the old physics (module constants such as the Reynolds clamp are compiled in). The
+locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``,
+``_sensitivity.py``, ``_momentum_sensitivity.py``; ``_flags.py``'s own functions use numba's,
+stamped with that file: they use nothing else of propmap) and stamp each one's cache with a
+SHA-256 over the contents of every file it compiles in (:data:`KERNEL_SOURCES`,
+:data:`SENSITIVITY_SOURCES`), so that editing any of them recompiles. They are registered
+ahead of numba's own locators (numba.core.caching, an internal API); if that API is not found,
+:data:`CACHE` is False and the kernels are compiled in every process instead of risking a
+stale one.
 """
 
 from __future__ import annotations

@@ -17,18 +17,18 @@ section constants, which depend on the annulus' mean square speed U2 = (Omega y)
 (V sin beta)^2 / 2 + (V cos beta)^2 only. So one pass over the nodes, evaluating the
 element with its analytic partial derivatives in U_T, U_P, the blade angle and along the
 constants' change with U2 (core/_tangents.py; that change from the constants' own power
-laws, :func:`_constants_stepped`), gives every input's partials by the chain rule (Omega:
+laws, :func:`_constants_slopes`), gives every input's partials by the chain rule (Omega:
 U_T by y, U2 by 2 Omega y^2; V sin beta: U_T by sin psi, U2 by V sin beta; V cos beta: U_P
 by 1, U2 by 2 V cos beta; v: U_P by 1; the collective: the blade angle by 1): one element
 evaluation per node for all of them. Until 2026-11-25 these partials were one-sided
 differences (the element at the base and at U_T + h, U_P + h, the constants at U2 + h and
 the blade angle + h, four or five evaluations per node, steps 1e-7 of each variable's
 scale), whose O(h) error reached 8e-6 (cambered) and 3e-5 (the paper's section) of a
-derivative against tightly converged differences of the solver, 1.1e-7 since (tests/
-test_derivatives.py). No root is re-solved, so the root's own tolerance (1e-7 of the
-inflow scale) does not enter, whereas differencing the whole solver carries it divided by
-its step. The momentum side F dT_BEMT (a
-scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
+derivative against tightly converged differences of the solver on 9 points in climb, 1.1e-7
+since (7.9e-7 and 5.2e-7 at two points in descent; docs/solver.md, tests/test_derivatives.py).
+No root is re-solved, so the root's own tolerance (1e-7 of the inflow scale) does not enter,
+whereas differencing the whole solver carries it divided by its step. The momentum side
+F dT_BEMT (a scalar per annulus: no azimuth sum) is differentiated analytically (Glauert's mass flow or
 the empirical descent curve, through its inversion, and Prandtl's factor:
 core/_momentum_sensitivity.py); where the
 empirical model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) it is differenced
@@ -49,8 +49,10 @@ is a difference (first order in h = 1e-7 of the parameter's scale); for the pape
 it is a one-sided difference of the blade's sums between the base and the stepped constants,
 one pass each (:func:`_pass`).
 
-The element, the loss factor and the momentum side are the solver's own (_annulus): uniform
-inflow only, every azimuth node of the half circle where V sin beta is nonzero (the nodes
+The loss factor and the momentum side are the solver's own (_annulus), the element's terms
+too (core/_tangents.py evaluates them with their partials; the order of a few products
+differs, so its loads agree with the solver's to rounding, not to the bit): uniform inflow
+only, every azimuth node of the half circle where V sin beta is nonzero (the nodes
 are symmetric in sin psi, which makes T even and D, M_R odd in V sin beta); in axial flow
 one node, the integrand being independent of psi there: its partials stand for every
 node's, with the half circle's mean sin(psi) (0) and mean sin(psi)^2 as the weights, so
@@ -93,8 +95,8 @@ _gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
 N_STATE = 28
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
-#: relative step of the blade's one-sided differences at the fixed root (the section constants'
-#: slope in U2's direction, section parameters, density)
+#: relative step of the section parameters' and the density's one-sided differences of the
+#: annulus' and polar's constants (core/derivatives.py)
 ONE_SIDED = 1e-7
 #: inputs, in the order of the output's second axis
 INPUTS = ("omega", "airspeed", "incidence", "collective")
@@ -111,23 +113,21 @@ def _constants_u2(U2, sc, cy2, model, cam):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _constants_stepped(U2, hU, sc, cy2, model, cam):
+def _constants_slopes(U2, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as
-    :func:`_constants_u2`) and those at U2 + hU to first order, from their analytic slopes
-    (the power laws of _physics.cambered_annulus; 0 where ln Re is clamped): one set of
-    exponentials per annulus instead of two (the batch's cost did not change
-    measurably: benchmarks/bench_derivatives.py, 1.41x the loads before and after). The
-    paper's section has no Reynolds terms."""
+    :func:`_constants_u2`) and their derivatives with respect to U2 [1/(m/s)^2 times each
+    constant's unit], analytic (the power laws of _physics.cambered_annulus; 0 where ln Re is
+    clamped). The paper's section has no Reynolds terms (slopes 0)."""
     if model != CAMBERED:
-        return (sc, 0.0, 0.0, 0.0), (sc, 0.0, 0.0, 0.0)
+        return (sc, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0)
     a, cdf, g, dal0 = _constants_u2(U2, sc, cy2, model, cam)
     ln_re = sc + 0.5 * np.log(U2 + 1e-300)
-    dln = 0.5 * hU / (U2 + 1e-300) if LN_RE_MIN < ln_re < LN_RE_MAX else 0.0
+    dln = 0.5 / (U2 + 1e-300) if LN_RE_MIN < ln_re < LN_RE_MAX else 0.0  # d ln Re / dU2
     # cam: (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2, re_exp_stall, stall_delay, alpha_L0_re)
     da = a * cam[2] * dln
     if cam[3] != 0.0 and U2 * cam[4] < 0.81:
-        da += a * 0.5 * cam[4] * hU / (1.0 - U2 * cam[4])
-    return (a, cdf, g, dal0), (a + da, cdf * (1.0 + cam[1] * dln), g * (1.0 + cam[5] * dln), dal0 + cam[7] * dln)
+        da += a * 0.5 * cam[4] / (1.0 - U2 * cam[4])
+    return (a, cdf, g, dal0), (da, cdf * cam[1] * dln, g * cam[5] * dln, cam[7] * dln)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -276,10 +276,10 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     """The inputs' partials over the nodes of one annulus, from one evaluation per node of the
     element with its analytic partial derivatives (core/_tangents.py): the base (written into
     ``q0``, ``h0``, ``r0`` for :func:`_pass`) and the derivatives with respect to U_T, U_P, the
-    blade angle and, for the cambered section, along the constants' direction ``u - s`` (``u``
-    those at U2 + its step). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2),
-    then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the node count
-    (the U2 sums not by the step either), the radial drag's (:func:`_radial`, from the same
+    blade angle and, for the cambered section, along the constants' slopes in U2, ``u`` (their
+    derivative with respect to U2). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2),
+    then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the node count,
+    the radial drag's (:func:`_radial`, from the same
     evaluations; used only with it): its base sum, its U_T sums (plain and sin), its U_P and
     its U2 sum, and the blade angle's (qT, qT sin, qH, qH sin, the radial drag's).
     """
@@ -289,7 +289,7 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     if model == CAMBERED:
         con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
         sec = (s[0], s[1], s[2], s[3])
-        dsec = (u[0] - s[0], u[1] - s[1], u[2] - s[2], u[3] - s[3])
+        dsec = (u[0], u[1], u[2], u[3])
         for k in range(naz):  # one loop per section model, each straight-line SIMD code
             base, d_t, d_p, d_u, d_c = _cambered_tangent(Om * y + Vs * sinpsi[k], UP, th, sth, cth, sec, dsec, con)
             acc = _add_node(acc, q0, h0, r0, k, sinpsi[k], base, d_t, d_p, d_u, d_c)
@@ -328,10 +328,10 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
         aT = aTs = aH = aHs = aR = 0.0
         for k in range(naz):
             sk = sinpsi[k]
-            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k], stw[7, k], stw[8, k],
-                  stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k], stw[14, k], stw[15, k], stw[16, k], stw[17, k],
-                  stw[18, k], stw[19, k], stw[20, k], stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k],
-                  stw[27, k])
+            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
+                  stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
+                  stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
+                  stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
             dqT, dqH, dgR = _cambered_direction(st, dsec, dcon)
             aT += dqT
             aTs += dqT * sk
@@ -409,9 +409,10 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     ps = np.zeros((2 + n_par, 5))  # the sums of the section parameters' and the density's passes (below)
     # the cambered section's parameter directions: in the section constants (per annulus, below) and in the
     # polar's constants (the same on every annulus)
-    dS = np.zeros((max(n_par + 1, 1), 4))
-    dC = np.zeros((max(n_par + 1, 1), 8))
-    stw = np.empty((N_STATE, naz_half if model == CAMBERED and n_par + (1 if hrho != 0.0 else 0) > 0 else 0))
+    n_m = n_par + (1 if hrho != 0.0 else 0)  # the parameters' and the density's directions
+    dS = np.zeros((n_par + 1, 4))
+    dC = np.zeros((n_par + 1, 8))
+    stw = np.empty((N_STATE, naz_half if model == CAMBERED and n_m > 0 else 0))
     for m in range(n_par):
         for c in range(8):
             dC[m, c] = pkpm[m][c] - pk[c]
@@ -428,8 +429,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         sth = np.sin(th)
         cth = np.cos(th)
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
-        hU = ONE_SIDED * U2 + 1e-300
-        s, u = _constants_stepped(U2, hU, sc[j], cy2[j], model, cam)
+        s, u = _constants_slopes(U2, sc[j], cy2[j], model, cam)
         UP = vc + vj
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node
@@ -437,7 +437,6 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
         rB, rT, rTs, rP, rU = rsums
         cT, cTs, cH, cHs, rC = csums
-        n_m = n_par + (1 if hrho != 0.0 else 0)
         if model == CAMBERED and n_m > 0:
             # each section parameter's and the density's direction in the annulus' section constants (their
             # change at the parameter's stepped value) and in the polar's constants: the element's derivatives
@@ -469,8 +468,6 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                                                                          sa, sinpsi, naz, model, pka)
         cf = cfac[j] / naz
         cq = yj * cf
-        kU = cf / hU
-        kUq = cq / hU
         if axial:  # one node: its sin(psi)-weighted sums are those of the half circle (mean sin 0, sin^2 m2)
             tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
                 0.0
@@ -480,7 +477,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
         Lv0, Lv1, Lv2, Lv3 = pT * cf, (pHs + rr * rP) * cf, pH * cq, pTs * cq
-        uu0, uu1, uu2, uu3 = uT * kU, (uHs + rr * rU) * kU, uH * kUq, uTs * kUq
+        uu0, uu1, uu2, uu3 = uT * cf, (uHs + rr * rU) * cf, uH * cq, uTs * cq
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
         dB[0, 0] = yj * tT * cf + f * uu0

@@ -5,9 +5,10 @@ at its converged root, the element's loads and their partial derivatives with re
 U_T, U_P, the blade angle and the annulus' section constants. Until 2026-11-25 they were
 one-sided differences, an element evaluation per direction (four per node for the three
 inputs and the inflow, five with the collective). Here one evaluation gives the loads and
-every partial: the element's own terms (the same as _physics.make_element /
-make_cambered_element, so the same loads to the last bit where the compiler keeps the order
-of operations) carried with their derivatives along each direction,
+every partial: the element's own terms (those of _physics.make_element /
+make_cambered_element; a few products are grouped differently, so the loads agree with the
+element's to rounding, 1e-13 relative in the tests, not to the bit) carried with their
+derivatives along each direction,
 
 * U_T and U_P: dU = U_T / U, U_P / U; the angle of attack alpha = theta - phi, with
   phi = atan2(U_P, U_T), moves by +U_P / U^2 and -U_T / U^2, and sin(alpha), cos(alpha) by
@@ -83,7 +84,7 @@ def make_cambered_direction(atan2, exp_sat, loads_tangent):
                 cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M, asp, asn, cos_a * cos_a - s2)
 
     def direction(st, dsec, dcon):
-        """The derivatives of (qT, qH, C_D,p U) [m^2/s^2] along ``dsec`` (4: the section
+        """The derivatives of (qT, qH [m^2/s^2], C_D,p U [m/s]) along ``dsec`` (4: the section
         constants, as ``cambered_tangent``'s) and ``dcon`` (8: the polar's constants, pk[:8])
         at the node of ``st`` (``state``'s), per unit of the direction."""
         (U, UT, UP, CL, CD, FT, FH, cdp, ae, zp, zq, pw, qw, s, cl_att, dcl, sc, s2, inner, a, cdf, g, cd90, cd2, M,
@@ -117,8 +118,8 @@ def make_cambered_tangent(state, direction, loads_tangent):
         UT, UP, theta, sin_th, cos_th : float
             As for the element [m/s, rad].
         sec : tuple of 4 float
-            The annulus' section constants (lift slope [1/rad], drag factor, stall-angle
-            factor, zero-lift shift [rad]).
+            The annulus' section constants (lift slope [1/rad], drag factor [-], stall-angle
+            factor [-], zero-lift shift [rad]).
         dsec : tuple of 4 float
             A direction in those constants (their change for a step of the annulus' mean
             square speed).
@@ -129,8 +130,9 @@ def make_cambered_tangent(state, direction, loads_tangent):
         Returns
         -------
         base, d_UT, d_UP, d_sec, d_theta : tuple of 3 float each
-            (qT, qH, C_D,p U) [m^2/s^2] and their derivatives with respect to U_T and U_P
-            [m/s], along ``dsec`` (per unit of it) and with respect to the blade angle [1/rad].
+            (qT [m^2/s^2], qH [m^2/s^2], C_D,p U [m/s]) and their derivatives with respect to
+            U_T and U_P (per m/s), along ``dsec`` (per unit of it) and with respect to the
+            blade angle (per rad).
         """
         st = state(UT, UP, theta, sin_th, cos_th, sec, con)
         (U, _, _, CL, CD, FT, FH, cdp, _, _, _, pw, qw, s, cl_att, dcl, sc, s2, _, a, cdf, _, cd90, cd2, M, _, _,
