@@ -72,8 +72,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import (_FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_cambered_p, _element_gill_p,
-                       _exp_sat, _profile_cd)
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat, _profile_cd
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
@@ -83,9 +82,9 @@ from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill
 
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 _loads_tangent = _jit_inline(_loads_tangent_py)
-# the elements with their analytic partials in U_T, U_P, the blade angle and the section constants
-# the cambered element's state at a node and its derivative along any direction in its constants (the section
-# parameters', one evaluation per node for all)
+# the elements with their analytic partials in U_T, U_P, the blade angle and the section constants; the cambered
+# element's state at a node and its derivative along any direction in its constants (the section parameters', one
+# evaluation per node for all)
 _cambered_state, _cambered_direction = (_jit_inline(f) for f in make_cambered_direction(_atan2, _exp_sat,
                                                                                           _loads_tangent))
 _cambered_tangent = _jit_inline(make_cambered_tangent(_cambered_state, _cambered_direction, _loads_tangent))
@@ -217,39 +216,26 @@ def _radial(UT, UP, th, s, sk, model, pk):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
-    """One perturbed pass over the nodes of one annulus: the element at the given section
-    constants and parameters (a section parameter's or the density's step), less the base
-    (q0, h0, r0 of :func:`_partials`). Returns the differences' sums weighted as the loads need
-    them (thrust, in-plane force, torque and rolling moment are sums of qT, qH sin(psi), qH and
-    qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH, qH sin and the radial
-    drag's (used only with it), not divided by the step or the node count.
+    """One perturbed pass over the nodes of one annulus for the paper's section (the cambered
+    one takes its parameters' derivatives from :func:`_parameter_partials`): the element at the
+    given section constants and parameters (a section parameter's or the density's step), less
+    the base (q0, h0, r0 of :func:`_partials`). Returns the differences' sums weighted as the
+    loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
+    qH sin(psi), qH and qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH,
+    qH sin and the radial drag's (used only with it), not divided by the step or the node count.
     """
     aT = aTs = aH = aHs = aR = 0.0
-    if model == CAMBERED:
-        a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
-        for k in range(naz):
-            sk = sinpsi[k]
-            q, h, g = _element_cambered_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], s[1], s[2], s[3], a0, a1, a2, a3,
-                                          a4, a5, a6, a7)
-            d = q - q0[k]
-            e = h - h0[k]
-            aT += d
-            aTs += d * sk
-            aH += e
-            aHs += e * sk
-            aR += g * (1.0 - sk * sk) - r0[k]
-    else:
-        g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
-        for k in range(naz):
-            sk = sinpsi[k]
-            q, h, g = _element_gill_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
-            d = q - q0[k]
-            e = h - h0[k]
-            aT += d
-            aTs += d * sk
-            aH += e
-            aHs += e * sk
-            aR += g * (1.0 - sk * sk) - r0[k]
+    g0, g1, g2, g3, g4, g5, sincos = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS
+    for k in range(naz):
+        sk = sinpsi[k]
+        q, h, g = _element_gill_p(Om * y + Vs * sk, UP, th, sth, cth, s[0], g0, g1, g2, g3, g4, g5, sincos)
+        d = q - q0[k]
+        e = h - h0[k]
+        aT += d
+        aTs += d * sk
+        aH += e
+        aHs += e * sk
+        aR += g * (1.0 - sk * sk) - r0[k]
     return aT, aTs, aH, aHs, aR
 
 
@@ -277,11 +263,11 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     element with its analytic partial derivatives (core/_tangents.py): the base (written into
     ``q0``, ``h0``, ``r0`` for :func:`_pass`) and the derivatives with respect to U_T, U_P, the
     blade angle and, for the cambered section, along the constants' slopes in U2, ``u`` (their
-    derivative with respect to U2). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin, qH sin^2),
-    then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the node count,
-    the radial drag's (:func:`_radial`, from the same
-    evaluations; used only with it): its base sum, its U_T sums (plain and sin), its U_P and
-    its U2 sum, and the blade angle's (qT, qT sin, qH, qH sin, the radial drag's).
+    derivative with respect to U2). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin,
+    qH sin^2), then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the
+    node count; the radial drag's (:func:`_radial`, from the same evaluations; used only with
+    it): its base sum, its U_T sums (plain and sin), its U_P and its U2 sum; and the blade
+    angle's (qT, qT sin, qH, qH sin, the radial drag's).
     """
     acc = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
            0.0, 0.0)  # the 24 sums (_add_node)
