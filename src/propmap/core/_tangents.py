@@ -17,16 +17,21 @@ derivatives along each direction,
 * the blade angle: dalpha = 1;
 * the section constants of the cambered polar (lift slope, drag factor, stall-angle factor,
   zero-lift shift) along a given direction (their change with the annulus' mean square speed,
-  _sensitivity._constants_stepped): the angle from the zero-lift line moves by minus the
-  shift's change, the chord's angle not at all.
+  _sensitivity._constants_slopes): the angle from the zero-lift line moves by minus the
+  shift's change, the chord's angle not at all;
+* the cambered polar's constants pk[:8] and the section constants together
+  (:func:`make_cambered_direction`: a section parameter's or the air density's step), every
+  direction from one evaluation of the element's state at the node.
 
 The stall blend s = 1 - 1 / ((1 + p)(1 + q)) moves by (dp (1 + q) + (1 + p) dq) / ((1 + p)
 (1 + q))^2 with dp = M p (da_e - dg a_stall+), dq = -M q (da_e - dg a_stall-); where the
 exponential saturates (|exponent| >= 40, _fastmath.exp_sat) this is M e^-40 of the blend's
 range instead of 0. No transcendental function is evaluated beyond the element's own (one
 atan2, two exp, one sqrt; the paper's section's Blasius term one more sqrt), so the partials
-cost arithmetic only. Checked against central differences of the element (tests/
-test_derivatives.py) and, through the implicit derivatives, against the solver.
+cost arithmetic only (the tangent-linear, or forward, mode of A. Griewank and A. Walther,
+"Evaluating Derivatives", 2nd ed., SIAM, 2008, Ch. 3, applied by hand). Checked against
+central differences of the element (tests/test_derivatives.py) and, through the implicit
+derivatives, against the solver.
 """
 
 from __future__ import annotations
