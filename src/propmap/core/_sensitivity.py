@@ -64,7 +64,7 @@ profile drag). It depends on the inputs through U_T, U_P, the blade angle and th
 constants, as the element does, so the element's partials carry C_D,p U's as a third value
 (and the section parameters' passes the element's own, _physics.make_element's ``profile``);
 V sin(beta) enters it once more explicitly (its base sum; in axial flow the one node's value
-times the half circle's mean cos^2 psi, 1 - mean sin^2 psi, :func:`_radial`).
+times the half circle's mean cos^2 psi, 1 - mean sin^2 psi).
 """
 
 from __future__ import annotations
@@ -72,7 +72,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat, _profile_cd
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
@@ -205,23 +205,13 @@ def _swirl_solve(sw, Gx, Tx, Qx, e_om):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _radial(UT, UP, th, s, sk, model, pk):
-    """The radial flow's drag per unit in-plane speed along the airspeed, C_D,p U cos^2 psi
-    (_annulus.annulus_loads; C_D,p the profile drag), at a node of sin psi = ``sk``, blade
-    angle ``th`` and section constants ``s`` (the passes below take C_D,p U from the element
-    itself, _physics.make_element's ``profile``: no second evaluation of its angle and stall
-    blend)."""
-    return _profile_cd(UT, UP, th, s[0], s[1], s[2], s[3], model, pk) * np.sqrt(UT * UT + UP * UP) * (1.0 - sk * sk)
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     """One perturbed pass over the nodes of one annulus for the paper's section (the cambered
     one takes its parameters' derivatives from :func:`_parameter_partials`): the element at the
     given section constants and parameters (a section parameter's or the density's step), less
     the base (q0, h0, r0 of :func:`_partials`). Returns the differences' sums weighted as the
     loads need them (thrust, in-plane force, torque and rolling moment are sums of qT,
-    qH sin(psi), qH and qT sin(psi), the radial drag's of :func:`_radial`): qT, qT sin, qH,
+    qH sin(psi), qH and qT sin(psi), the radial drag's of C_D,p U cos^2 psi): qT, qT sin, qH,
     qH sin and the radial drag's (used only with it), not divided by the step or the node count.
     """
     aT = aTs = aH = aHs = aR = 0.0
@@ -265,7 +255,7 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     blade angle and, for the cambered section, along the constants' slopes in U2, ``u`` (their
     derivative with respect to U2). Returns the U_T sums (qT, qT sin, qT sin^2, qH, qH sin,
     qH sin^2), then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the
-    node count; the radial drag's (:func:`_radial`, from the same evaluations; used only with
+    node count; the radial drag's (C_D,p U cos^2 psi, from the same evaluations; used only with
     it): its base sum, its U_T sums (plain and sin), its U_P and its U2 sum; and the blade
     angle's (qT, qT sin, qH, qH sin, the radial drag's).
     """
@@ -298,7 +288,7 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
     (shape (n_m, 4)) and ``dC`` (shape (n_m, 8)) the m-th direction in the annulus' section
     constants and in the polar's constants pk[:8] (a section parameter's or the density's step,
     stepped value less base). Writes into row 1 + m of ``ps`` the sums qT, qT sin, qH, qH sin
-    and the radial drag's (:func:`_radial`), not divided by the step or the node count, as
+    and the radial drag's (C_D,p U cos^2 psi), not divided by the step or the node count, as
     :func:`_pass` gives them as differences. ``stw`` shape (N_STATE, >= naz): scratch for the
     nodes' element states, so that each direction's loop runs over the nodes (SIMD), as the
     element's own loops do."""
@@ -375,6 +365,9 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         vc = 0.0
     axial = vs == 0.0
     naz = 1 if axial else naz_half  # in axial flow the integrand does not depend on psi
+    # the nodes' sin psi for the passes; the axial point's one node at psi = 0 (its sin-weighted sums are replaced by
+    # the half circle's means below, and its radial-drag weight cos^2 psi is then 1)
+    sn = np.zeros(1) if axial else sinpsi
     # each input's direction in (Omega, V sin beta, V cos beta, collective) and its step
     e = np.zeros((4, 4))
     e[0, 0] = 1.0
@@ -391,7 +384,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node
     h0 = np.empty(naz_half)
-    r0 = np.zeros(naz_half)  # the radial drag's (_radial) at the root, per node
+    r0 = np.zeros(naz_half)  # the radial drag's C_D,p U cos^2 psi at the root, per node
     ps = np.zeros((2 + n_par, 5))  # the sums of the section parameters' and the density's passes (below)
     # the cambered section's parameter directions: in the section constants (per annulus, below) and in the
     # polar's constants (the same on every annulus)
@@ -419,7 +412,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         UP = vc + vj
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node
-        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, sinpsi, naz, model, pk)
+        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, sn, naz, model, pk)
         tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
         rB, rT, rTs, rP, rU = rsums
         cT, cTs, cH, cHs, rC = csums
@@ -436,7 +429,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                     sa = s
                 for c in range(4):
                     dS[m, c] = sa[c] - s[c]
-            _parameter_partials(ps, dS, dC, n_m, stw, ome, vs, UP, yj, th, sth, cth, s, sinpsi, naz, pk)
+            _parameter_partials(ps, dS, dC, n_m, stw, ome, vs, UP, yj, th, sth, cth, s, sn, naz, pk)
         elif n_m > 0:
             # the paper's section: one-sided differences, a pass each: 0 the base again (the parameters'
             # differences are then exactly 0 for one that does not enter), 1 + k the k-th section parameter's (the
@@ -451,14 +444,13 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                     if not cam_same[m - 1]:
                         sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 1])
                 ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, UP, yj, th, sth, cth,
-                                                                         sa, sinpsi, naz, model, pka)
+                                                                         sa, sn, naz, model, pka)
         cf = cfac[j] / naz
         cq = yj * cf
         if axial:  # one node: its sin(psi)-weighted sums are those of the half circle (mean sin 0, sin^2 m2)
             tTs, tTs2, tHs, tHs2, pTs, pHs, uTs, uHs, cTs, cHs = 0.0, tT * m2, 0.0, tH * m2, 0.0, 0.0, 0.0, 0.0, 0.0, \
                 0.0
-            if krad != 0.0:  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
-                rB = _radial(ome * yj, UP, th, s, 0.0, model, pk) * (1.0 - m2)
+            rB *= 1.0 - m2  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
         # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
         rr = krad * vs
         # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
