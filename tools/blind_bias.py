@@ -30,17 +30,14 @@ from pathlib import Path
 import numpy as np
 from scipy import stats
 
-if len(sys.argv) < 2 or sys.argv[1].startswith("-"):
-    raise SystemExit(__doc__)
-OUT = Path(sys.argv[1])
-PROPS_CSV = OUT / "props.csv"
-POINTS = OUT / "points.npz"
 
 
-# ---------------------------------------------------------------- stage 1
-def compute():
+def blind_cases():
+    """Yield, for every propeller ``propmap validate --all`` scores (a static run and two sweeps
+    or more), in name order: (name, catalogue entry, propeller, load data, the generic set
+    without its family, that set's label, the measured CT and CP, the static points' mask, the
+    air). Also tools/blind_washout.py's."""
     from propmap.core.airfoil import Air
-    from propmap.core.solver import rotor_loads
     from propmap.identify import loads_from_catalogue
     from propmap.io.calibration import generic_without
     from propmap.io.catalogue import catalogue, load_propeller
@@ -48,15 +45,21 @@ def compute():
 
     air = Air()
     cat = catalogue()
-    names = sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2)  # as validate --all
-    rows, pts = [], {}
-    for i, name in enumerate(names):
+    for name in sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2):
         e = cat[name]
         prop = load_propeller(name)
         data = loads_from_catalogue(e, prop.diameter, air=air)
         generic, label = generic_without(name)
         CT, CP = _coefficients(data, prop, air)
-        static = data.airspeed == 0
+        yield name, e, prop, data, generic, label, CT, CP, data.airspeed == 0, air
+
+
+# ---------------------------------------------------------------- stage 1
+def compute(out: Path):
+    from propmap.core.solver import rotor_loads
+
+    rows, pts = [], {}
+    for i, (name, e, prop, data, generic, label, CT, CP, static, air) in enumerate(blind_cases()):
         CT0, CP0 = float(np.mean(CT[static])), float(np.mean(CP[static]))
         r = rotor_loads(prop, generic, data.omega, data.airspeed, data.incidence, air=air)
         dct = (r.CT - CT) / CT0
@@ -93,18 +96,18 @@ def compute():
             if np.ptp(data.omega[static]) > 0 else float("nan"),
         })
         pts[name] = np.vstack([J, r.CT, CT, np.full(data.n, CT0), static, low, data.omega])
-        print(f"{i + 1:3d}/{len(names)} {name:22s} {label:28s} static {100 * rows[-1]['bias_static']:+6.1f}% "
+        print(f"{i + 1:3d} {name:22s} {label:28s} static {100 * rows[-1]['bias_static']:+6.1f}% "
               f"sweep rms {100 * rows[-1]['rms_sweep']:5.1f}% bias {100 * rows[-1]['bias_sweep']:+6.1f}%", flush=True)
-    with open(PROPS_CSV, "w", newline="") as f:
+    with open(out / "props.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    np.savez(POINTS, **pts)
+    np.savez(out / "points.npz", **pts)
 
 
 # ---------------------------------------------------------------- stage 2
-def load():
-    with open(PROPS_CSV) as f:
+def load(out: Path):
+    with open(out / "props.csv") as f:
         rows = list(csv.DictReader(f))
     cols = {k: np.array([r[k] for r in rows]) for k in rows[0]}
     for k in cols:
@@ -118,11 +121,14 @@ def pct(x):
 
 
 def main():
-    OUT.mkdir(parents=True, exist_ok=True)
-    if "--recompute" in sys.argv or not PROPS_CSV.exists():
-        compute()
-    c = load()
-    pts = np.load(POINTS)
+    if len(sys.argv) < 2 or sys.argv[1].startswith("-"):
+        raise SystemExit(__doc__)
+    out_dir = Path(sys.argv[1])
+    out_dir.mkdir(parents=True, exist_ok=True)
+    if "--recompute" in sys.argv or not (out_dir / "props.csv").exists():
+        compute(out_dir)
+    c = load(out_dir)
+    pts = np.load(out_dir / "points.npz")
     c["logRe75"] = np.log10(c["Re75"])
     c["D_in"] = c["D_m"] / 0.0254
     vol = c["volume"].astype(int)
@@ -409,7 +415,7 @@ def main():
               f"{pct(c['bias_static'][j])} | {pct(c['bias_sweep'][i])} / {pct(c['bias_sweep'][j])} |")
     p("")
 
-    (OUT / "tables.md").write_text("\n".join(L) + "\n")
+    (out_dir / "tables.md").write_text("\n".join(L) + "\n")
     print("\n".join(L))
 
 

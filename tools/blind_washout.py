@@ -22,12 +22,9 @@ import math
 
 import numpy as np
 
-from propmap.core.airfoil import Air
+from blind_bias import blind_cases  # tools/blind_bias.py: the propellers and their blind sets
+
 from propmap.core.solver import rotor_loads
-from propmap.identify import loads_from_catalogue
-from propmap.io.calibration import generic_without
-from propmap.io.catalogue import catalogue, load_propeller
-from propmap.validation import _coefficients
 
 STEP = math.radians(0.5)
 LAWS = ("none", "tip2", "tip2_ar", "tip2_ar2", "tip2_R", "tip2_ar2_R")
@@ -41,15 +38,8 @@ def _law(p: dict, kind: str) -> np.ndarray:
 
 
 def compute() -> dict:
-    air, cat = Air(), catalogue()
-    names = sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2)  # as validate --all
     out = {}
-    for name in names:
-        e, prop = cat[name], load_propeller(name)
-        data = loads_from_catalogue(e, prop.diameter, air=air)
-        generic, label = generic_without(name)
-        CT, _ = _coefficients(data, prop, air)
-        static = data.airspeed == 0
+    for name, e, prop, data, generic, label, CT, _, static, air in blind_cases():
         CT0 = float(np.mean(CT[static]))
         r0 = rotor_loads(prop, generic, data.omega, data.airspeed, data.incidence, air=air)
         r1 = rotor_loads(prop, generic.replace(collective=generic.collective - STEP), data.omega, data.airspeed,
