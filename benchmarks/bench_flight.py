@@ -14,6 +14,9 @@ et al., RSS 2021). Writes benchmarks/results/flight.json atomically and prints i
 * With ``--fit``: ``fit_flight`` on all four segments at 25 Hz with the default
   parameters (FLIGHT_FIT), with the implicit Jacobian (the default) and with differences of
   the solver: seconds, residual evaluations, rotor points, the optimum.
+* With ``--cg``: the same fit with the centre of mass freed (``cg_x``, ``cg_y``) and the
+  moments in the residual, with the default Jacobian only (run it with another tree's
+  ``src`` first on PYTHONPATH for an A/B of the Jacobian's code).
 """
 
 from __future__ import annotations
@@ -30,7 +33,7 @@ import numpy as np
 
 import propmap as pm
 from propmap.identify import FitOptions
-from propmap.identify.flight import FLIGHT_DISCRETIZATION, fit_flight, flight_samples
+from propmap.identify.flight import FLIGHT_DISCRETIZATION, FLIGHT_FIT, fit_flight, flight_samples
 from propmap.io.atomic import atomic_write
 from propmap.io.flightlog import read_flight_log
 
@@ -100,6 +103,16 @@ def main() -> None:
                                       "residual_evaluations": res.nfev, "rotor_points": res.n_model_points,
                                       "names": list(res.names), "x": [float(x) for x in res.x],
                                       "rms_residual_N": float(np.sqrt(np.mean(res.residuals ** 2)))}
+    if "--cg" in sys.argv:
+        veh = pm.read_vehicle(VEHICLE)
+        s = flight_samples([read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))], veh, rate_hz=25)
+        names = (*FLIGHT_FIT, "cg_x", "cg_y")
+        t = time.perf_counter()
+        res = fit_flight(s, veh, air=pm.Air(rho=1.204), options=FitOptions(names=names), moments=True)
+        out["fit_flight_cg"] = {"samples": s.n, "seconds": time.perf_counter() - t, "propmap": pm.__file__,
+                                "residual_evaluations": res.nfev, "rotor_points": res.n_model_points,
+                                "names": list(res.names), "x": [float(x) for x in res.x],
+                                "rms_residual_N": float(np.sqrt(np.mean(res.residuals ** 2)))}
     path = ROOT / "benchmarks" / "results" / "flight.json"
     path.parent.mkdir(exist_ok=True)
     with atomic_write(path) as fh:

@@ -521,6 +521,44 @@ def test_vehicle_motion_jacobians():
                                rtol=0, atol=1e-5 * np.abs(rw.jacobian[("force", "velocity")]).max())
 
 
+def test_vehicle_centre_of_mass_jacobian():
+    """vehicle_wrench(derivatives=("centre_of_mass",)) against central differences of
+    vehicle_wrench with the centre of mass moved (5e-5 of the largest entry), on the NeuroBEM
+    quadrotor with an airframe drag, rotor inertia and body rates; at zero body rate the hubs
+    do not move, so the force does not change and the moment's Jacobian is exactly [F_r]x,
+    the moment of the rotors' force about a moved point."""
+    from dataclasses import replace
+    from importlib import resources
+
+    from propmap.core.body import BodyDrag
+
+    veh = pm.read_vehicle(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml")
+    g = pm.generic_params()
+    v = np.array([[6.0, -1.0, -0.5], [1.0, 2.0, 0.5], [3.0, 0.0, 0.0]])
+    w = np.array([[0.5, -1.0, 2.0], [-3.0, 2.0, -1.0], [0.0, 0.0, 0.0]])
+    om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [900.0, 1300.0, 1000.0, 1250.0], [1000.0] * 4])
+    body = BodyDrag((0.02, 0.01, 0.03), 1.2)
+    c0 = np.array([0.003, -0.002, 0.001])
+    at = replace(veh, centre_of_mass=c0)
+    r = pm.vehicle_wrench(at, g, v, w, om, body_drag=body, derivatives=("centre_of_mass", "velocity"),
+                          discretization=DISC)
+    h = 1e-3
+    for j in range(3):
+        a, c = (pm.vehicle_wrench(replace(veh, centre_of_mass=c0 + s * h * np.eye(3)[j]), g, v, w, om,
+                                  body_drag=body, discretization=DISC) for s in (1, -1))
+        for key in ("force", "moment"):
+            J = r.jacobian[(key, "centre_of_mass")]
+            assert J.shape == (3, 3, 3)
+            fd = (getattr(a, key) - getattr(c, key)) / (2 * h)
+            np.testing.assert_allclose(J[..., j], fd, rtol=0, atol=5e-5 * np.abs(J).max(), err_msg=f"{key} {j}")
+    # the force moves with the body rate only: the first sample's is alive, the third's is zero
+    assert np.abs(r.jacobian[("force", "centre_of_mass")][0]).max() > 0.01
+    np.testing.assert_array_equal(r.jacobian[("force", "centre_of_mass")][2], 0.0)
+    F_r = r.rotor_force.sum(axis=1)[2]
+    np.testing.assert_allclose(r.jacobian[("moment", "centre_of_mass")][2],
+                               [[0, -F_r[2], F_r[1]], [F_r[2], 0, -F_r[0]], [-F_r[1], F_r[0], 0]], rtol=1e-14)
+
+
 @pytest.mark.parametrize("params", [pm.generic_params(), pm.preset("gill2017-apc")], ids=["cambered", "paper"])
 def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
     """solver.NODE_FIELDS (refused as derivatives) are exactly the numeric fields that change the

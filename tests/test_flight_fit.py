@@ -182,3 +182,24 @@ def test_fit_flight_implicit_jacobian_reaches_the_same_optimum(shared_data):
     b = fit_flight(s, veh, base=base, options=FitOptions(jacobian="differences"), discretization=Discretization(12, 8))
     np.testing.assert_allclose(a.x, b.x, rtol=1e-4, atol=1e-6)
     assert a.nfev < b.nfev / 2
+
+
+def test_fit_flight_centre_of_mass_columns_are_implicit(shared_data):
+    """With the centre of mass fitted (moments in the residual), the fit's Jacobian comes from
+    one model call with vehicle_wrench's centre-of-mass derivatives (checked against differences
+    in tests/test_derivatives.py): the fit reaches the differencing fit's optimum (cg within
+    1e-6 m, the other parameters 1e-4 relative) in fewer than half its model calls."""
+    from propmap.identify.flight import fitted_centre_of_mass
+
+    veh = pm.read_vehicle(VEHICLE)
+    s = flight_samples([read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[0])], veh, rate_hz=2)
+    base = pm.generic_params().replace(air=pm.Air(rho=1.204))
+    names = ("collective", "drag_area_x", "cg_x", "cg_y")
+    fits = {}
+    for how in ("implicit", "differences"):
+        opts = FitOptions(names=names, jacobian=how, prior=False)
+        fits[how] = fit_flight(s, veh, base=base, options=opts, moments=True, discretization=COARSE)
+    a, b = fits["implicit"], fits["differences"]
+    np.testing.assert_allclose(fitted_centre_of_mass(a), fitted_centre_of_mass(b), rtol=0, atol=1e-6)
+    np.testing.assert_allclose(a.x, b.x, rtol=1e-4, atol=1e-6)
+    assert a.nfev < b.nfev / 2

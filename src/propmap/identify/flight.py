@@ -383,31 +383,31 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
         def with_jacobian(x):
             """The residual and its Jacobian from one model call: vehicle_wrench's implicit
-            derivatives for the section and airframe terms, central differences for the centre of
-            mass (it moves the arms)."""
+            derivatives for the section and airframe terms and, through the hub velocities'
+            and the arms' chain rule, the centre of mass ("centre_of_mass")."""
             x = np.asarray(x, float)
-            analytic = [n for n in names if n not in CG_NAMES]
+            wrt = [n for n in names if n not in CG_NAMES]
+            if any(n in CG_NAMES for n in names):
+                wrt.append("centre_of_mass")
             p = _params_from(x, names, base, opts)
             w = predict_flight(samples, vehicle_at(x), p, body=_body_from(x, names, body0), air=air,
-                               discretization=discretization, derivatives=analytic)
+                               discretization=discretization, derivatives=wrt)
             r = errors(w)
             cols = []
-            for k, n in enumerate(names):
+            for n in names:
                 if n in CG_NAMES:
-                    h = 1e-4 * max(abs(x[k]), 0.1)
-                    hi, lo = x.copy(), x.copy()
-                    hi[k] += h
-                    lo[k] -= h
-                    cols.append((residual(hi) - residual(lo)) / (2 * h))
-                    continue
-                c = w.jacobian[("force", n)].ravel()
+                    k = CG_NAMES.index(n)
+                    force, moment = (w.jacobian[(key, "centre_of_mass")][:, :, k] for key in ("force", "moment"))
+                else:
+                    force, moment = w.jacobian[("force", n)], w.jacobian[("moment", n)]
+                c = force.ravel()
                 if moments:
-                    c = np.concatenate([c, (w.jacobian[("moment", n)] / arm).ravel()])
+                    c = np.concatenate([c, (moment / arm).ravel()])
                 cols.append(c)
             return r, np.column_stack(cols)
 
-        if implicit:  # the centre of mass's columns cost two solves each: only where asked for
-            _attach_jacobian(residual, with_jacobian, eager=not any(n in CG_NAMES for n in names))
+        if implicit:
+            _attach_jacobian(residual, with_jacobian)
         return residual
 
     make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)

@@ -150,7 +150,9 @@ class VehicleWrench:
         dF/dv, dM/dv [N s/m, N s] and dF/dw, dM/dw [N s/rad, N m s/rad], each shape (N, 3, 3),
         entry [n, i, j] the derivative of component i with respect to component j of the
         body velocity v or the angular velocity w (the state matrix of a linearisation;
-        with respect to the wind, -dF/dv and -dM/dv); else None.
+        with respect to the wind, -dF/dv and -dM/dv); with "centre_of_mass", dF/dc and
+        dM/dc [N/m, N], shape (N, 3, 3), entry [n, i, j] with respect to component j of the
+        centre of mass; else None.
     """
 
     force: np.ndarray
@@ -246,7 +248,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         "velocity" and "angular_velocity" give the Jacobians with respect to v and w
         (each rotor's through :func:`propmap.core.vector.velocity_jacobian`, its hub moving
         at v + w x r_i - wind; at a hub speed of 0 its axial column is the mean of the climb
-        and descent slopes, :func:`propmap.core.vector.still_air_slopes`).
+        and descent slopes, :func:`propmap.core.vector.still_air_slopes`);
+        "centre_of_mass" the Jacobians with respect to ``vehicle.centre_of_mass`` c [m] at
+        fixed v and w: every arm r_i = p_i - c moves by -dc, so each hub velocity by
+        -w x dc and the moment of the rotors' total force F_r by -dc x F_r (the chain rule
+        through the same hub Jacobians; the airframe drag acts at the centre of mass).
         Each rotor's load derivatives come from the implicit function theorem (docs/solver.md)
         and are carried through the vector sums, the arms, the gyroscopic moment and the
         airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
@@ -325,7 +331,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         dF, dM, jac = _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
         if motion:
             jac = {} if jac is None else jac
-            jac.update(_motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, body, v - wind_a, wash, air.rho))
+            jac.update(_motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, w, rotor_force.sum(axis=1), body,
+                                           v - wind_a, wash, air.rho))
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
@@ -333,8 +340,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
 
 #: the airframe terms vehicle_wrench differentiates (core/body.py)
 BODY_DRAG_NAMES = ("drag_area_x", "drag_area_y", "drag_area_z", "wash_factor")
-#: the vehicle's motion, whose Jacobians (shape (N, 3, 3)) vehicle_wrench gives
-MOTION_NAMES = ("velocity", "angular_velocity")
+#: the vehicle's motion and its centre of mass, whose Jacobians (shape (N, 3, 3)) vehicle_wrench gives
+MOTION_NAMES = ("velocity", "angular_velocity", "centre_of_mass")
 
 
 def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
@@ -350,7 +357,7 @@ def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
     bad = [n for n in wrt if n in ("airspeed", "incidence")]
     if bad:
         raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', "
-                         "'velocity', 'angular_velocity', a section parameter or an airframe term")
+                         "'velocity', 'angular_velocity', 'centre_of_mass', a section parameter or an airframe term")
     if any(n not in ("omega", "rho", *BODY_DRAG_NAMES, *MOTION_NAMES) for n in wrt) and any(r.params is not None
                                                                             for r in vehicle.rotors):
         raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
@@ -465,11 +472,13 @@ def _hub_velocity_jacobians(vehicle, loads, V_hub, axes, om):
     return dF, dtau, dvi
 
 
-def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, body, v_air, wash, rho) -> dict:
-    """{("force" | "moment", "velocity" | "angular_velocity"): shape (N, 3, 3)}: the rotors' hub
-    Jacobians through V_i = v + w x r_i - wind (dV_i/dv = I, dV_i/dw = -[r_i]x), the arms, the
-    gyroscopic moment -w x (s_i J_i Omega_i a_i) and the airframe drag, whose air speed
-    v - wind + k_w (mean of v_i,mean a_i) moves with the rotors' inflow too."""
+def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, w, rotor_force, body, v_air, wash, rho) -> dict:
+    """{("force" | "moment", name): shape (N, 3, 3)} for the MOTION_NAMES in ``wrt``: the rotors'
+    hub Jacobians through V_i = v + w x r_i - wind with r_i = p_i - c (dV_i/dv = I, dV_i/dw =
+    -[r_i]x, dV_i/dc = -[w]x), the arms (d(r_i x F_i)/dc adds [F_r]x, F_r = ``rotor_force``,
+    the rotors' total force, shape (N, 3)), the gyroscopic moment -w x (s_i J_i Omega_i a_i)
+    and the airframe drag, whose air speed v - wind + k_w (mean of v_i,mean a_i) moves with the
+    rotors' inflow too."""
     dF_hub, dtau_hub, dvi = hub_jac
     N, n_rot = om.shape
     arm = _cross_matrix(pos)  # (n_rot, 3, 3)
@@ -480,17 +489,24 @@ def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, body, v_air, wash, rho) 
         drag_du = _drag_jacobian(v_air + body.wash_factor * wash, body.drag_area, rho)
         # d wash/dV_i = a_i (dvbar_i/dV_i)^T / n_rot
         dwash = axes[None, :, :, None] * dvi[:, :, None, :] / n_rot  # (N, n_rot, 3, 3)
-    for name in ("velocity", "angular_velocity"):
+    for name in MOTION_NAMES:
         if name not in wrt:
             continue
-        # dV_i/dx: I for the velocity, -[r_i]x for the angular velocity
-        dV = np.broadcast_to(np.eye(3), (n_rot, 3, 3)) if name == "velocity" else -arm
-        F = np.einsum("nrij,rjk->nik", dF_hub, dV)
-        M = np.einsum("nrij,rjk->nik", dM_hub, dV)
+        if name == "centre_of_mass":  # dV_i/dc = -[w]x, the same for every rotor: (N, 3, 3)
+            dV = -_cross_matrix(np.broadcast_to(w, (N, 3)))
+            F = np.einsum("nrij,njk->nik", dF_hub, dV)
+            M = np.einsum("nrij,njk->nik", dM_hub, dV) + _cross_matrix(rotor_force)
+        else:  # dV_i/dx, (n_rot, 3, 3): I for the velocity, -[r_i]x for the angular velocity
+            dV = np.broadcast_to(np.eye(3), (n_rot, 3, 3)) if name == "velocity" else -arm
+            F = np.einsum("nrij,rjk->nik", dF_hub, dV)
+            M = np.einsum("nrij,rjk->nik", dM_hub, dV)
         if name == "angular_velocity":  # the gyroscopic moment: d(-w x h_i Omega_i)/dw = [h_i Omega_i]x
             M = M + _cross_matrix(np.einsum("ri,nr->ni", h, om))
         if drag_active:
-            du = np.einsum("nrij,rjk->nik", body.wash_factor * dwash, dV)
+            if name == "centre_of_mass":
+                du = np.einsum("nrij,njk->nik", body.wash_factor * dwash, dV)
+            else:
+                du = np.einsum("nrij,rjk->nik", body.wash_factor * dwash, dV)
             if name == "velocity":
                 du = du + np.eye(3)
             F = F + drag_du @ du
