@@ -198,6 +198,11 @@ def rotor_like(propeller: Propeller) -> str | None:
     0.75 R below 5 deg, or twist from 0.3 R (or the first station) to the tip below
     6 deg. Used to warn when a rotor is run with the propeller-camber generic set.
 
+    Parameters
+    ----------
+    propeller : Propeller
+        Its blade angles ``theta`` [rad] at its stations ``r`` [m].
+
     Returns
     -------
     str or None

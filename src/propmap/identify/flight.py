@@ -239,6 +239,28 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
     """The vehicle model's wrench at every sample (:func:`propmap.vehicle.vehicle_wrench`, no wind;
     ``derivatives`` as there).
 
+    Parameters
+    ----------
+    samples : FlightSamples
+        Velocity, angular velocity, rotor speeds and rotor accelerations per sample (N
+        samples; :func:`flight_samples`).
+    vehicle : Vehicle
+    params : AirfoilParams or CamberedParams
+        The rotors' section parameters.
+    body : BodyDrag, optional
+        Airframe drag; default the vehicle's.
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
+    discretization : Discretization
+        The rotors' nodes; the flight fit's 24 x 8 by default (docs/flight.md, Speed).
+    derivatives : bool or sequence of str
+        As :func:`propmap.vehicle.vehicle_wrench` (``"centre_of_mass"`` included).
+
+    Returns
+    -------
+    VehicleWrench
+        Body force [N] and moment [N m] about the centre of mass, shape (N, 3), body axes.
+
     Raises
     ------
     SolverError
@@ -251,15 +273,39 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
 
 
 def shift_centre_of_mass(vehicle: Vehicle, cg) -> Vehicle:
-    """The vehicle with its centre of mass at ``cg`` (shape (3,) or (2,), body axes [m]) from
-    the origin of its rotor positions."""
+    """The vehicle with its centre of mass moved.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    cg : array_like, shape (3,) or (2,)
+        The centre of mass from the origin of the vehicle file's rotor positions, body axes
+        [m]; with two values its z stays the vehicle's.
+
+    Returns
+    -------
+    Vehicle
+        A copy; every rotor's arm (``position - centre_of_mass``) moves with it.
+    """
     c = np.array(vehicle.centre_of_mass, float)
     c[: len(cg)] = cg
     return replace(vehicle, centre_of_mass=c)
 
 
 def fitted_centre_of_mass(result: FitResult) -> np.ndarray:
-    """The centre of mass (x, y) [m] of a flight fit (the vehicle's when not fitted)."""
+    """The centre of mass of a flight fit.
+
+    Parameters
+    ----------
+    result : FitResult
+        Of :func:`fit_flight`.
+
+    Returns
+    -------
+    ndarray, shape (2,)
+        x, y [m] from the vehicle file's origin (the vehicle's own where ``cg_x``, ``cg_y``
+        were not fitted; [0, 0] for a result of another fit).
+    """
     return np.asarray(result.extra.get("centre_of_mass", [0.0, 0.0]), float)
 
 
@@ -429,7 +475,19 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
 
 def fitted_body_drag(result: FitResult) -> BodyDrag | None:
-    """The airframe drag of a flight fit's result (None for other fits)."""
+    """The airframe drag of a flight fit.
+
+    Parameters
+    ----------
+    result : FitResult
+        Of any fit.
+
+    Returns
+    -------
+    BodyDrag or None
+        The fitted (or held) drag areas and slipstream factor; None for a result of another
+        fit.
+    """
     b = result.extra.get("body_drag")
     return None if b is None else BodyDrag(drag_area=tuple(b["drag_area"]), wash_factor=b["wash_factor"])
 

@@ -230,6 +230,12 @@ def calibrated(name: str) -> Calibration | None:
 def default_params(name: str) -> SectionParams:
     """The parameters propmap uses for a propeller when none are given.
 
+    Parameters
+    ----------
+    name : str
+        A catalogue propeller's name (``propmap props``); any other name (a geometry file's
+        propeller) gets the generic set.
+
     Returns
     -------
     CamberedParams

@@ -77,6 +77,16 @@ def resolve_params(spec: str) -> SectionParams:
     ``calibrated:<name>``, a catalogue propeller's own calibrated set, and
     ``section:<name>``, a symmetric section preset (:func:`section_preset`).
 
+    Parameters
+    ----------
+    spec : str
+        One of the names above, or the path of a parameter file (:func:`read_params`).
+
+    Returns
+    -------
+    AirfoilParams or CamberedParams
+        The set, with its air (``.air``) and its name or path as ``.label``.
+
     Raises
     ------
     KeyError

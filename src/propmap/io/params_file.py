@@ -430,6 +430,11 @@ def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
 def read_params(path) -> SectionParams:
     """Read a parameter file (either section model; format in the module docstring).
 
+    Parameters
+    ----------
+    path : str or Path
+        The TOML parameter file (``propmap fit`` writes them; :func:`write_params`).
+
     Returns
     -------
     AirfoilParams or CamberedParams
