@@ -338,6 +338,19 @@ def _reserved(identifier: str) -> str | None:
 def c_prefix(path, name: str | None = None) -> str:
     """The C identifier prefix of a header: ``name``, or ``pm_<file stem>`` (lower case).
 
+    Parameters
+    ----------
+    path : str or Path
+        The header file; only its stem is used, and only when ``name`` is None (its
+        non-word characters become underscores).
+    name : str, optional
+        The prefix as given (its case kept); default ``pm_<stem>``.
+
+    Returns
+    -------
+    str
+        The checked prefix: ``name``, or ``"pm_"`` followed by the lower-cased stem.
+
     Raises
     ------
     ValueError

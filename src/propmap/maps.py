@@ -55,6 +55,12 @@ def default_axes(propeller: Propeller):
     drag outside flagged regions (docs/simulators.md gives the measured figures and how
     they fall with grid density).
 
+    Parameters
+    ----------
+    propeller : Propeller
+        Its ``diameter`` [m] sets the top rpm (the 150 m/s tip speed's, rounded to
+        100 rpm).
+
     Returns
     -------
     (ndarray, ndarray, ndarray)

@@ -39,6 +39,23 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
 
     Like Fig. 7 of Gill & D'Andrea (2017), for axial J-sweeps (static runs at J = 0).
     Writes a PNG atomically and returns its path.
+
+    Parameters
+    ----------
+    validation : Validation
+        :func:`propmap.validation.validate`'s result: each run's J, measured and modelled
+        CT and CP, the hover model's CT and CP, the propeller's name and the data's citation.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+        Default ``"<propeller>: model vs measured"``; the data's citation is added below it
+        unless it holds ``"Data:"``.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
@@ -71,6 +88,23 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
 
     ``table`` is a pandas DataFrame with columns airspeed, incidence_deg, thrust, drag,
     thrust_hover (one rpm). Writes a PNG atomically.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        One row per (airspeed [m/s], incidence_deg [deg]) at one rpm: ``thrust``, ``drag``
+        and the hover model's ``thrust_hover`` [N] (as ``propmap demo`` makes it);
+        one curve per incidence, the hover-model error in % of the largest
+        ``|thrust_hover|``.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.2), constrained_layout=True)
@@ -187,6 +221,22 @@ def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
 
     ``catalogue_result`` as returned by ``cli.validate_all.run_catalogue``. Writes a PNG
     atomically and returns its path.
+
+    Parameters
+    ----------
+    catalogue_result : dict
+        Its ``summary`` keys (the protocols) each give a curve, from the ``rms_ct`` and
+        ``rms_cp`` (fractions) of that key in every row of ``propellers``.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+        Default: the number of propellers and the UIUC citation.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
@@ -215,7 +265,23 @@ def _wrap(text: str, width: int = 60) -> str:
 
 def plot_cases(cases: dict, path) -> Path:
     """The published cases (cases.run_case results): measured points, model lines; gill2019's
-    H-force slopes as bars."""
+    H-force slopes as bars.
+
+    Parameters
+    ----------
+    cases : dict
+        Case name -> :class:`propmap.cases.CaseResult`; ``"apc10x7e"``, ``"dji9443"``,
+        ``"beaver"`` and ``"gill2019"`` are drawn (a panel left empty where one is absent),
+        other keys ignored.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 5, figsize=(21, 4.2), constrained_layout=True)
     a = cases.get("apc10x7e")
@@ -305,6 +371,24 @@ def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path
 
     ``t_by_log``, ``measured``, ``predicted``: log name -> time [s] (N,), force [N] (N, 3);
     ``other``: optional label -> {log name -> force (N, 3)} drawn thin (baselines, references).
+
+    Parameters
+    ----------
+    t_by_log : dict
+        Log name -> sample times [s], shape (N,) (N per log); its order gives the columns.
+    measured, predicted : dict
+        Log name -> body force [N], shape (N, 3) (x, y, z), for every log of ``t_by_log``.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+    other : dict, optional
+        Label -> {log name -> body force [N], shape (N, 3)}; a log it lacks is skipped.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     plt = _pyplot()
     names = list(t_by_log)
@@ -335,6 +419,25 @@ def plot_flight_speed(speed, loads: dict, hover: dict, vertical_error: dict, pat
     and sum of |torque| of the fitted model; ``hover``: the hover model's (T = k_T Omega^2,
     D = 0, Q = k_Q Omega^2) same keys; ``vertical_error``: label -> (N,) body-z force error
     (model - measured) [N]. Medians in 1 m/s bins.
+
+    Parameters
+    ----------
+    speed : array_like, shape (N,)
+        Each sample's speed [m/s], finite: the bins run from 0 to the largest, and a bin
+        of fewer than 3 samples is left empty.
+    loads, hover : dict
+        ``"thrust"``, ``"drag"`` [N] and ``"torque"`` [N m] -> shape (N,).
+    vertical_error : dict
+        Label -> body-z force error [N], shape (N,); the first drawn solid, the rest dashed.
+    path : str or Path
+        Figure file, written atomically; the format from the extension (png, pdf, svg;
+        any other: PNG).
+    title : str
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     plt = _pyplot()
     speed = np.asarray(speed)

@@ -222,10 +222,28 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
     T = CT rho n^2 D^4, Q = CP rho n^2 D^5 / (2 pi), V = J n D, incidence 0; groups are
     the UIUC run ids (e.g. ``"2801rd"``; static runs ``"static_<id>"``).
 
+    Parameters
+    ----------
+    entry : CatalogueEntry
+        Its bundled UIUC static runs and J-sweeps (:func:`propmap.io.catalogue.get_entry`).
+    diameter : float
+        Propeller diameter [m] (the coefficients' reference length); not range-checked here.
+    air : Air
+        Its density ``rho`` [kg/m^3] converts the coefficients.
+
+    Returns
+    -------
+    LoadData
+        Static points first, then the sweeps' points: ``omega`` [rad/s], ``airspeed``
+        [m/s], ``incidence`` 0 [rad], ``measured`` with ``thrust`` [N] and ``torque``
+        [N m], each shape (N,); ``source`` the entry's name and citation.
+
     Raises
     ------
     DataError
-        The entry has no bundled measurements.
+        The entry has no bundled measurements; or converted loads out of the ranges of
+        :func:`read_loads` (|thrust| > 1e5 N, |torque| > 1e4 N m, airspeed outside
+        [0, 500] m/s), the message naming the run's file.
     """
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")

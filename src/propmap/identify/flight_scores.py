@@ -28,6 +28,15 @@ def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None
     The pooled force error is NeuroBEM's Table II metric: F = sqrt(mean of the three
     axes' mean square errors) [N]; likewise M [N m].
 
+    Parameters
+    ----------
+    predicted_force : array_like, shape (N, 3)
+        Predicted body force at the samples [N], body axes.
+    samples : FlightSamples
+        Their ``force`` [N] (and ``moment`` [N m]), shape (N, 3), are the measurement.
+    predicted_moment : array_like, shape (N, 3), optional
+        Predicted body moment [N m]; scored only where ``samples.moment`` is not None.
+
     Returns
     -------
     dict
@@ -79,6 +88,14 @@ def _baseline_columns(samples: FlightSamples, vehicle: Vehicle, terms) -> np.nda
 def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
     """The simple models, fitted by linear least squares to the training samples' force.
 
+    Parameters
+    ----------
+    train : FlightSamples
+        Their ``force`` [N], ``rotor_omega`` [rad/s], ``velocity`` [m/s] and
+        ``angular_velocity`` [rad/s] (the hubs' velocities from the rotor positions).
+    vehicle : Vehicle
+        Its rotors' positions [m] and axes, in the samples' rotor order.
+
     Returns
     -------
     dict
@@ -93,13 +110,44 @@ def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
 
 
 def baseline_force(baseline: dict, samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
-    """A fitted baseline's body force at the samples [N], shape (N, 3)."""
+    """A fitted baseline's body force at the samples [N], shape (N, 3).
+
+    Parameters
+    ----------
+    baseline : dict
+        One value of :func:`fit_baselines`' result: its ``"terms"`` and ``"coefficients"``.
+    samples : FlightSamples
+        N samples: rotor speeds [rad/s], body velocity [m/s] and rates [rad/s].
+    vehicle : Vehicle
+        Its rotors' positions [m] and axes, in the samples' rotor order.
+
+    Returns
+    -------
+    ndarray, shape (N, 3)
+        The body force [N], body axes.
+    """
     X = _baseline_columns(samples, vehicle, baseline["terms"])
     return X @ np.asarray(baseline["coefficients"])
 
 
 def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
-    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty)."""
+    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty).
+
+    Parameters
+    ----------
+    predicted_force : array_like, shape (N, 3)
+        Predicted body force at the samples [N].
+    samples : FlightSamples
+        Its speed ``|v|`` [m/s] puts each sample in a band (lower bound included, upper
+        excluded).
+
+    Returns
+    -------
+    list of dict
+        One per band, in order: ``band_m_s`` ``[low, high]`` [m/s] (high None for the
+        open band), ``n`` (samples in the band) and ``F`` [N] (as :func:`flight_errors`;
+        None where the band is empty).
+    """
     sp = samples.speed
     rows = []
     for lo, hi in SPEED_BANDS:

@@ -112,6 +112,18 @@ def body_to_world(pitch, roll) -> np.ndarray:
 
     Frames: x forward, y left, z up (heading along world x). Nose-up pitch is a rotation
     about +y by -pitch; right-wing-down roll a rotation about +x by +roll; R = Ry(-pitch) Rx(roll).
+
+    Parameters
+    ----------
+    pitch, roll : array_like, shape (N,)
+        Attitude [rad] (as :class:`LevelFlightData`), nose-up and right-wing-down positive.
+        Any shape, the two the same (they do not broadcast against each other; scalars
+        give one matrix).
+
+    Returns
+    -------
+    ndarray, shape (N, 3, 3)
+        R, with ``v_world = R @ v_body`` (``pitch.shape + (3, 3)`` in general).
     """
     p = -np.asarray(pitch, float)
     r = np.asarray(roll, float)
@@ -124,6 +136,14 @@ def body_to_world(pitch, roll) -> np.ndarray:
 
 def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
     """Body-frame hub velocities of every rotor: V_i = R^T V_vehicle + omega x r_i (Sec. III).
+
+    Parameters
+    ----------
+    data : LevelFlightData
+        N conditions: ``airspeed`` [m/s] along world x, ``pitch``, ``roll`` [rad] and body
+        ``rates`` [rad/s], shape (N, 3).
+    vehicle : Vehicle
+        Its rotors' positions r_i [m], body frame.
 
     Returns
     -------

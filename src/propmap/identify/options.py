@@ -76,7 +76,19 @@ ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 
 
 def param_names(lift_model: str) -> tuple[str, ...]:
-    """Fitted parameters of the paper's model: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift."""
+    """Fitted parameters of the paper's model: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift.
+
+    Parameters
+    ----------
+    lift_model : {"sigmoid", "sincos"}
+        The paper's lift model (``AirfoilParams.lift_model``); any value other than
+        ``"sigmoid"`` is taken as ``"sincos"`` (not checked here).
+
+    Returns
+    -------
+    tuple of str
+        ``("cl1", "cl2", "cd", "alpha0")`` for ``"sigmoid"``, else ``("cl2", "cd")``.
+    """
     return ("cl1", "cl2", "cd", "alpha0") if lift_model == "sigmoid" else ("cl2", "cd")
 
 

@@ -140,6 +140,16 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     error : type
         The exception raised.
 
+    Returns
+    -------
+    ColumnMap
+        ``columns``: each recognised quantity (``thrust``, ``drag``, ``torque``, ``rpm``,
+        ``rpm_optical``, ``rpm_electrical``, ``airspeed``, ``incidence_deg``,
+        ``collective_deg``, ``esc``, ``time``, ``group``; the columns it does not recognise
+        left out) -> (column name as written, factor to N, N m, rpm, m/s or deg, unit as
+        written or None); ``notes``: the units converted. ``pole_pairs`` is only checked
+        here: the caller divides the speed (:func:`propmap.identify.read_loads`).
+
     Raises
     ------
     error

@@ -34,8 +34,18 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
         [m/s].
     pitch_deg : array_like, shape (N,)
         Nose-up positive [deg] (negative in forward flight).
+    air : Air, optional
+        Default: the parameter set's own (``params.air``).
     omega_bounds : (float, float)
         Bracket for the common rotor speed [rad/s].
+    discretization : Discretization
+
+    Returns
+    -------
+    LevelFlightData
+        ``airspeed`` [m/s] and ``pitch`` [rad] as given, ``roll`` and ``rates`` zero, and
+        ``omega`` [rad/s], shape (N, n_rotors): at each condition every rotor at the one
+        speed whose net vertical force (eq 16) equals the vehicle's weight [N].
 
     Raises
     ------

@@ -22,7 +22,19 @@ __all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal
 
 def normal_mode(path: Path) -> int:
     """The permission bits a plain ``open(path, "w")`` would leave: the existing file's, or
-    0o666 & ~umask for a new file."""
+    0o666 & ~umask for a new file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The target; a path that cannot be stat'ed (missing, unreadable folder) counts as a
+        new file. A symbolic link gives its target's bits.
+
+    Returns
+    -------
+    int
+        The permission bits (``stat.S_IMODE``), e.g. ``0o644``.
+    """
     try:
         return stat.S_IMODE(os.stat(path).st_mode)
     except OSError:
@@ -32,7 +44,22 @@ def normal_mode(path: Path) -> int:
 
 
 def file_sha256(path) -> str:
-    """The SHA-256 of a file's bytes (hex), read in 1 MiB blocks."""
+    """The SHA-256 of a file's bytes (hex), read in 1 MiB blocks.
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    str
+        64 lower-case hexadecimal digits.
+
+    Raises
+    ------
+    OSError
+        The file cannot be opened or read.
+    """
     h = hashlib.sha256()
     with open(path, "rb") as fh:
         for block in iter(lambda: fh.read(1 << 20), b""):
@@ -42,7 +69,18 @@ def file_sha256(path) -> str:
 
 def temp_affixes(name: str) -> tuple[str, str]:
     """(prefix, suffix) of the temporary file written beside a target called ``name``
-    (``tempfile.mkstemp`` puts 8 random characters between them)."""
+    (``tempfile.mkstemp`` puts 8 random characters between them).
+
+    Parameters
+    ----------
+    name : str
+        The target's file name (no folder), e.g. ``"map.nc"``.
+
+    Returns
+    -------
+    (str, str)
+        ``("." + name + ".", ".tmp")``: a hidden ``.map.nc.<random>.tmp``.
+    """
     return f".{name}.", ".tmp"
 
 
@@ -61,6 +99,11 @@ def atomic_write(path, mode: str = "w", **kwargs):
     **kwargs
         Passed to ``open`` (``newline``, ``encoding``).
 
+    Yields
+    ------
+    file object
+        The temporary file, opened with ``mode`` and ``kwargs``; closed before the rename.
+
     Raises
     ------
     OSError
@@ -75,6 +118,16 @@ def atomic_path(path):
     """:func:`atomic_write` for writers that take a file name (netCDF, compilers): yields a
     temporary path in ``path``'s folder (the file exists, empty); on success it replaces
     ``path`` with normal permissions, on an exception it is removed.
+
+    Parameters
+    ----------
+    path : str or Path
+        The target; its folder is created if missing.
+
+    Yields
+    ------
+    Path
+        The temporary file (hidden, beside the target: :func:`temp_affixes`).
 
     Raises
     ------
@@ -100,6 +153,12 @@ def atomic_paths(paths):
     Parameters
     ----------
     paths : sequence of str or Path
+        The targets; their folders are created if missing.
+
+    Yields
+    ------
+    tuple of Path
+        One temporary file per target, in the order of ``paths`` (each exists, empty).
 
     Raises
     ------

@@ -101,17 +101,42 @@ def _raw() -> dict:
 
 def params_to_si(params: SectionParams) -> dict:
     """The record's model fields (SI, angles in rad) plus ``section_model``: exact in JSON (the
-    set's air and label are not stored: the shipped sets use footnote 2's air)."""
+    set's air and label are not stored: the shipped sets use footnote 2's air).
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+
+    Returns
+    -------
+    dict
+        ``section_model`` (``"gill2017"`` or ``"cambered"``) and every field but ``air``
+        and ``label`` (``params.as_dict()``), angles in rad.
+    """
     return {"section_model": params.section_model, **params.as_dict()}
 
 
 def params_from_si(d: dict) -> SectionParams:
     """Inverse of :func:`params_to_si`.
 
+    Parameters
+    ----------
+    d : dict
+        Field name -> value (SI, angles in rad) and ``section_model`` (default
+        ``"gill2017"``); ``air`` and ``label`` keys are ignored.
+
+    Returns
+    -------
+    AirfoilParams or CamberedParams
+        With the record's default air (footnote 2's) and an empty label.
+
     Raises
     ------
     ValueError
         Unknown section model or invalid fields.
+    TypeError
+        A key that is not a field of the record, or a required field missing (the
+        record's constructor).
     """
     d = {k: v for k, v in d.items() if k not in RECORD_META}
     model = d.pop("section_model", "gill2017")
@@ -172,6 +197,23 @@ def generic_without(name: str) -> tuple[SectionParams, str]:
     The fold of ``generic_folds`` that does not contain ``name`` (``"generic without
     <family>"``); for a propeller outside the calibration, the full generic set (which never
     saw it either).
+
+    Parameters
+    ----------
+    name : str
+        A propeller's name (a catalogue name for a fold to apply).
+
+    Returns
+    -------
+    params : CamberedParams
+        The first fold's set whose propellers exclude ``name``, else the generic set.
+    label : str
+        Its name, ``"generic without <family>"`` (the fold's label), or ``"generic"``.
+
+    Raises
+    ------
+    ValueError
+        The packaged calibration file is malformed (an installation problem).
     """
     folds = calibration()["generic_folds"]
     if any(name in members for _, members, _ in folds):
@@ -218,6 +260,17 @@ def population(without: str | None = None) -> dict:
 
 def calibrated(name: str) -> Calibration | None:
     """The calibrated set of catalogue propeller ``name``, or None if it has none.
+
+    Parameters
+    ----------
+    name : str
+        A catalogue propeller's name (``propmap props``), e.g. ``"apce_8x6"``.
+
+    Returns
+    -------
+    Calibration or None
+        Its set (``.params`` labelled ``"calibrated:<name>"``), the set's air and the fit's
+        rms errors; None for a name without measurements or outside the catalogue.
 
     Raises
     ------

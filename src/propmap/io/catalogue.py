@@ -113,6 +113,15 @@ def catalogue() -> dict[str, CatalogueEntry]:
 def get_entry(name: str) -> CatalogueEntry:
     """Catalogue entry by name.
 
+    Parameters
+    ----------
+    name : str
+        A catalogue propeller's name (``propmap props``), e.g. ``"apce_8x6"``.
+
+    Returns
+    -------
+    CatalogueEntry
+
     Raises
     ------
     KeyError

@@ -34,7 +34,20 @@ MAX_SMALL_FILE_BYTES = 16 * 1024 * 1024
 
 
 def show_path(path) -> str:
-    """``path`` as text for a one-line message (quoted if it holds control characters)."""
+    """``path`` as text for a one-line message (quoted if it holds control characters).
+
+    Parameters
+    ----------
+    path : str, bytes or PathLike
+        Bytes and path objects are decoded with the file-system encoding
+        (``os.fsdecode``); anything else is ``str(path)``.
+
+    Returns
+    -------
+    str
+        The path as written, or its ``repr`` where it is not printable (a newline, a
+        terminal escape).
+    """
     s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
     return s if s.isprintable() else repr(s)
 
@@ -170,6 +183,15 @@ def parse_number(text: str) -> float:
 
     Python's ``float`` also takes ``1_000`` and non-ASCII digits; a data file should not.
     ``nan`` and ``inf`` parse (the caller refuses non-finite values with its own message).
+
+    Parameters
+    ----------
+    text : str
+        One field; surrounding whitespace is ignored.
+
+    Returns
+    -------
+    float
 
     Raises
     ------

@@ -117,7 +117,13 @@ def _array(attrs: dict, key: str) -> np.ndarray | None:
 
 def check_propeller(propeller) -> None:
     """Refuse a propeller outside what a map records: diameter in [0.5, 100] in, at most
-    100 blades (the ranges :func:`check_dataset` holds a map file to).
+    100 blades (the ranges :func:`check_dataset` holds a map file to). Nothing is returned:
+    a propeller within both ranges passes silently.
+
+    Parameters
+    ----------
+    propeller : Propeller
+        Its ``diameter`` [m] and ``n_blades``.
 
     Raises
     ------
@@ -201,6 +207,15 @@ def _check_coordinates(ds) -> None:
 def check_attributes(attrs: dict) -> None:
     """Check a map's attributes against the ranges of the module docstring.
 
+    Nothing is returned: valid attributes pass silently (``attrs`` is not modified).
+
+    Parameters
+    ----------
+    attrs : dict
+        A map's attributes (``Dataset.attrs``): ``diameter_m`` is required, every other
+        checked key only where present; keys the table does not name are not checked.
+        A number may be a one-element array.
+
     Raises
     ------
     ValueError
@@ -235,6 +250,8 @@ def check_attributes(attrs: dict) -> None:
 
 def check_dataset(ds) -> None:
     """Check a map (from :func:`propmap.maps.build_map` or a file) before it is evaluated.
+
+    Nothing is returned: a valid map passes silently (``ds`` is not modified).
 
     Parameters
     ----------
@@ -276,6 +293,26 @@ def map_model(attrs: dict):
 
     A record without ``radial_drag`` (a map written before that option) is read with
     ``radial_drag = False``, the model that made it.
+
+    Parameters
+    ----------
+    attrs : dict
+        A map's attributes (``Dataset.attrs``), with at least ``propeller``, ``diameter_m``,
+        ``n_blades``, ``geometry_r_m``, ``geometry_chord_m``, ``geometry_theta_rad`` [m, m,
+        rad], ``params_json`` (the parameter record's fields, SI, angles in rad),
+        ``rho_kg_m3``, ``mu_Pa_s``, ``speed_of_sound_m_s``, ``n_radial`` and ``n_azimuth``.
+
+    Returns
+    -------
+    propeller : Propeller
+        Radius ``diameter_m / 2`` [m] and the recorded stations, chords and blade angles.
+    params : AirfoilParams or CamberedParams
+        The recorded section set (``section_model`` in ``params_json``, default
+        ``"gill2017"``), with an empty label and the record's default air.
+    air : Air
+        The recorded air: density [kg/m^3], viscosity [Pa s], speed of sound [m/s].
+    discretization : Discretization
+        ``Discretization(n_radial, n_azimuth)``.
 
     Raises
     ------

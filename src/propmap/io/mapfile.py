@@ -142,10 +142,22 @@ def map_props(path) -> tuple[str, ...] | None:
     """The propellers of a map file over several (``propmap map --all``), or None for a map
     of one.
 
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The map file (netCDF).
+
+    Returns
+    -------
+    tuple of str or None
+        The names of the ``prop`` coordinate, in the file's order; None where the file has
+        no ``prop`` variable.
+
     Raises
     ------
     TypeError, ValueError
-        As :func:`read_dataset` (the file is read in a child first, its layout checked).
+        As :func:`read_dataset` (the file is read in a child first, its layout checked),
+        and a ``prop`` coordinate that is empty or holds a name twice.
     """
     import netCDF4
 
@@ -248,7 +260,18 @@ def _select(ds, prop, where: str):
 # ---------------------------------------------------------------- writing
 
 def sidecar_path(path) -> Path:
-    """The JSON sidecar of a map file: ``<path>.json``."""
+    """The JSON sidecar of a map file: ``<path>.json``.
+
+    Parameters
+    ----------
+    path : str or Path
+        The map file, e.g. ``m.nc``.
+
+    Returns
+    -------
+    Path
+        The same folder, the file name with ``.json`` appended (``m.nc.json``).
+    """
     path = Path(path)
     return path.with_name(path.name + ".json")
 
@@ -280,6 +303,17 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
     (io.atomic.atomic_paths): the sidecar, derived from the map's attributes, names the
     map file and its SHA-256 (``describes``), which :func:`read_sidecar` checks.
 
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The map: the sidecar holds its attributes, sizes, axis ranges (``rpm``,
+        ``airspeed``, ``incidence_deg``) and variable units.
+    path : str or Path
+        The map file; the sidecar is :func:`sidecar_path` of it.
+    write : callable
+        ``write(tmp)`` writes the map file's content to the temporary path ``tmp``
+        (a :class:`~pathlib.Path` beside ``path``, existing and empty).
+
     Returns
     -------
     list of Path
@@ -305,10 +339,24 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     plus a JSON sidecar ``<path>.json`` of its metadata and measured error, written as a pair
     (:func:`write_with_sidecar`).
 
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The map (:func:`propmap.maps.build_map`).
+    path : str or Path
+        The map file; its folder is created if missing.
+    fmt : {"netcdf", "csv"}
+        netCDF4 with every variable compressed (zlib, level 4), or CSV: one row per node,
+        the axes ``rpm``, ``airspeed``, ``incidence_deg`` and every variable as columns
+        (the coordinates ``omega`` and ``incidence`` left out), numbers to 10 significant
+        digits, flags ``true``/``false``.
+    sidecar : bool
+        Write the sidecar ``<path>.json`` too (:func:`sidecar_path`).
+
     Returns
     -------
     list of Path
-        The files written.
+        The files written: ``[path, <path>.json]``, or ``[path]`` without ``sidecar``.
 
     Raises
     ------
@@ -353,6 +401,19 @@ def write_sidecar(ds, path) -> Path:
     axis ranges and variable units; a value that is not finite (an error with no point
     to measure it) is written as null. Without the map file it describes: prefer
     :func:`write_map` or :func:`write_with_sidecar`, which write both as a pair.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The map.
+    path : str or Path
+        The sidecar file itself (e.g. :func:`sidecar_path` of the map file); written
+        without a ``describes`` entry.
+
+    Returns
+    -------
+    Path
+        ``path``.
 
     Raises
     ------

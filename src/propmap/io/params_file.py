@@ -165,6 +165,33 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     warning names them (parameter files; the module docstring); otherwise the record's
     defaults.
 
+    Parameters
+    ----------
+    data : dict
+        File form (:func:`params_to_dict`; module docstring): the model's keys, the air's
+        (``rho``, ``mu``, ``speed_of_sound``), the text keys, ``section`` (a named preset,
+        the other keys on top) and the ``[body]`` and ``[coverage]`` tables, which are
+        checked here too (:func:`body_from_dict`, :func:`coverage_from_dict`) but not
+        returned.
+    where : str
+        Starts every error message (a file's path).
+    label : str
+        The record's ``.label``.
+    fill : bool
+        Fill a cambered set's missing keys from the generic set (ignored with ``section``
+        or for the paper's model).
+
+    Returns
+    -------
+    AirfoilParams or CamberedParams
+        Angles in rad, carrying the dict's air (``.air``; footnote 2's values for the keys
+        it lacks).
+
+    Warns
+    -----
+    UserWarning
+        With ``fill``, the keys taken from the generic set.
+
     Raises
     ------
     ValueError
@@ -238,6 +265,19 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     """The ``[coverage]`` table of a file-form dict (what the fitted data covered: J_max,
     incidence_deg_max, rpm_min, rpm_max, airspeed_max), or None without one.
 
+    Parameters
+    ----------
+    data : dict
+        File form (module docstring); only its ``[coverage]`` table is read.
+    where : str
+        Starts every error message.
+
+    Returns
+    -------
+    dict or None
+        The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
+        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]); None without a table.
+
     Raises
     ------
     ValueError
@@ -263,6 +303,17 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
 def read_coverage(path) -> dict | None:
     """The ``[coverage]`` table of a parameter file (what the data behind a fitted set
     covered), or None.
+
+    Parameters
+    ----------
+    path : str or Path
+        A parameter file (module docstring).
+
+    Returns
+    -------
+    dict or None
+        As :func:`coverage_from_dict`. Only the table is checked, not the file's other
+        keys.
 
     Raises
     ------
@@ -322,6 +373,13 @@ def _generic_fill(data: dict, keys: dict, where: str) -> dict:
 
 def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
     """The ``[body]`` table of a file-form dict (module docstring), or None without one.
+
+    Parameters
+    ----------
+    data : dict
+        File form (module docstring); only its ``[body]`` table is read.
+    where : str
+        Starts every error message.
 
     Returns
     -------
@@ -507,6 +565,19 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
 
 def read_body(path) -> BodyTable | None:
     """The ``[body]`` table (airframe drag, centre of mass) of a parameter file, or None.
+
+    Parameters
+    ----------
+    path : str or Path
+        A parameter file (module docstring); the whole file is checked, as
+        :func:`read_params` does (without filling missing keys or warning).
+
+    Returns
+    -------
+    BodyTable or None
+        ``drag`` (a ``BodyDrag``: ``drag_area`` [m^2] along body x, y, z and
+        ``wash_factor``, 0 where the table gives none), ``centre_of_mass`` [m], shape (3,),
+        and ``rotor_interference``; None where the file has no ``[body]`` table.
 
     Raises
     ------

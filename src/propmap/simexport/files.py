@@ -253,6 +253,11 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "")
     vehicle_label : str
         Where the vehicle came from, for the file's comment.
 
+    Returns
+    -------
+    list of Path
+        ``[path, report]``: the coefficient file and its report (:func:`report_path`).
+
     Raises
     ------
     ValueError
