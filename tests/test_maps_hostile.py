@@ -11,6 +11,8 @@ ValueError or TypeError naming the argument. Derandomized (no example database) 
 import math
 import os
 import re
+import subprocess
+import sys
 import time
 
 import numpy as np
@@ -225,6 +227,23 @@ def test_a_folder_a_device_or_a_missing_file_is_named(tmp_path):
     assert code == 2
 
 
+def test_a_map_file_over_the_size_limit_is_refused_before_reading(tmp_path, tiny_bytes, monkeypatch):
+    """Both readers of a map file (RotorMap.open through read_dataset, and map_props, which
+    names a file's propellers for `propmap map --check`) refuse a file over MAX_FILE_BYTES
+    (4 GiB; lowered here to below this map's size) naming its size; the limit admits it back."""
+    from propmap.io import mapfile
+
+    path = tmp_path / "m.nc"
+    path.write_bytes(tiny_bytes)
+    monkeypatch.setattr(mapfile, "MAX_FILE_BYTES", len(tiny_bytes) - 1)
+    for read in (RotorMap.open, mapfile.map_props):
+        with pytest.raises(ValueError, match=f"{len(tiny_bytes):,} bytes; a map file is at most"):
+            read(path)
+    monkeypatch.setattr(mapfile, "MAX_FILE_BYTES", len(tiny_bytes))
+    assert mapfile.map_props(path) is None  # a map of one propeller
+    assert isinstance(RotorMap.open(path), RotorMap)
+
+
 # ---- (14) the API: documented errors naming the argument ----
 
 @pytest.fixture(scope="module")
@@ -378,3 +397,42 @@ def test_map_check_of_a_hostile_file_exits_0_or_2_with_one_line(capsys, tmp_path
         assert errors == [] and "nan" not in out.lower()
     else:
         assert code == 2 and len(errors) == 1 and errors[0].startswith(f"propmap: error: --check: {path}"), err
+
+
+WRITERS_SCRIPT = r"""
+import math, sys, warnings
+from pathlib import Path
+import numpy as np
+import propmap as pm
+from propmap.export_c import write_c_header
+from propmap.io.atomic import atomic_write
+from propmap.maps import RotorMap, build_map, write_map
+from propmap.simexport import export_sim, write_export
+
+out = Path(sys.argv[1])
+prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+ds = build_map(prop, params, np.linspace(3000, 9000, 3) * math.pi / 30, np.linspace(0, 10, 3),
+               np.radians(np.linspace(0, 90, 3)), air=params.air, params_label=params.label, n_check=5)
+sim = export_sim("rotorpy", prop, params, n_points=200)
+warnings.simplefilter("error", EncodingWarning)  # a text file opened without naming its encoding
+write_map(ds, out / "m.nc")
+write_map(ds, out / "m.csv", "csv")
+write_c_header(RotorMap.open(out / "m.nc"), out / "m.h")
+write_export(sim, out / "r.py")
+pm.write_params(out / "p.toml", params)
+with atomic_write(out / "t.txt") as fh:
+    fh.write("\u00b5")
+print("written")
+"""
+
+
+def test_text_outputs_name_their_encoding(tmp_path):
+    """The writers of text files (a map's JSON sidecar and CSV form, the C header, a simulator
+    export and its report, a parameter file, atomic_write's text mode) write UTF-8 whatever the
+    locale: run under Python's -X warn_default_encoding (PEP 597) with that warning an error,
+    none opens a text file without naming its encoding (the sidecar and the export's report
+    did, taking the locale's), and atomic_write's text is UTF-8 bytes."""
+    run = subprocess.run([sys.executable, "-X", "warn_default_encoding", "-c", WRITERS_SCRIPT, str(tmp_path)],
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0 and run.stdout.strip().endswith("written"), run.stderr[-3000:]
+    assert (tmp_path / "t.txt").read_bytes() == "\u00b5".encode("utf-8")

@@ -258,7 +258,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                                      name=c_header.c_name, vehicle=veh)
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
-            files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text))
+            files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text, encoding="utf-8"))
         else:
             files = write_map(ds, out, fmt)
         files += _plots(ds, plots)

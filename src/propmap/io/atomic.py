@@ -97,7 +97,8 @@ def atomic_write(path, mode: str = "w", **kwargs):
         The target; its folder is created if missing.
     mode : {"w", "wb"}
     **kwargs
-        Passed to ``open`` (``newline``, ``encoding``).
+        Passed to ``open`` (``newline``, ``encoding``); text is UTF-8 unless ``encoding``
+        says otherwise (not the locale's encoding).
 
     Yields
     ------
@@ -109,6 +110,8 @@ def atomic_write(path, mode: str = "w", **kwargs):
     OSError
         The folder cannot be created or written, or the rename fails.
     """
+    if "b" not in mode:
+        kwargs.setdefault("encoding", "utf-8")
     with atomic_path(path) as tmp, open(tmp, mode, **kwargs) as fh:
         yield fh
 

@@ -51,12 +51,14 @@ def _where(path) -> str:
 
 
 def _stat_regular(path):
-    """(the path as shown in messages, its os.stat) of a map file that must be a regular file.
+    """(the path as shown in messages, its os.stat) of a map file that must be a regular file
+    of at most MAX_FILE_BYTES.
 
     Raises
     ------
     ValueError
-        The path cannot be stat-ed, or is a folder, device or pipe.
+        The path cannot be stat-ed, is a folder, device or pipe, or is larger than
+        MAX_FILE_BYTES.
     """
     where = _where(path)
     try:
@@ -65,6 +67,8 @@ def _stat_regular(path):
         raise ValueError(f"{where}: {getattr(exc, 'strerror', None) or exc}") from None
     if not stat.S_ISREG(st.st_mode):
         raise ValueError(f"{where}: not a regular file (a folder, device or pipe); a map is a netCDF file")
+    if st.st_size > MAX_FILE_BYTES:
+        raise ValueError(f"{where}: {st.st_size:,} bytes; a map file is at most {MAX_FILE_BYTES:,}")
     return where, st
 
 
@@ -215,8 +219,6 @@ def read_dataset(path, prop: str | None = None):
     if prop is not None and not isinstance(prop, str):
         raise TypeError(f"prop must be a propeller name (str) or None, got {type(prop).__name__}")
     where, st = _stat_regular(path)
-    if st.st_size > MAX_FILE_BYTES:
-        raise ValueError(f"{where}: {st.st_size:,} bytes; a map file is at most {MAX_FILE_BYTES:,}")
     _probe(path, where, st.st_size)
     try:
         unused = _layout(path, where)
@@ -330,7 +332,7 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
     side = sidecar_path(path)
     with atomic_paths([path, side]) as (tmp, tmp_side):
         write(tmp)
-        tmp_side.write_text(_sidecar_text(ds, {"file": path.name, "sha256": file_sha256(tmp)}))
+        tmp_side.write_text(_sidecar_text(ds, {"file": path.name, "sha256": file_sha256(tmp)}), encoding="utf-8")
     return [path, side]
 
 
@@ -384,7 +386,7 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
             table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
             for f in FLAGS:
                 table[f] = np.where(table[f].to_numpy(bool), "true", "false")
-            with open(tmp, "w", newline="") as fh:
+            with open(tmp, "w", newline="", encoding="utf-8") as fh:
                 table.to_csv(fh, index=False, float_format="%.10g", lineterminator="\n")
 
     if sidecar:

@@ -287,12 +287,12 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "")
     report = report_path(path)
     # the file and its report as a pair; the report names the file's SHA-256
     with atomic_paths([path, report]) as (tmp, tmp_report):
-        tmp.write_text(text)
+        tmp.write_text(text, encoding="utf-8")
         tmp_report.write_text(json.dumps(_json_safe({
             "target": res.target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
             "held_at_sign_bound": res.held, "errors": res.errors,
             "envelope": {"rpm": list(res.envelope.rpm), "airspeed": list(res.envelope.airspeed),
                          "incidence_deg": list(res.envelope.incidence_deg), "hover_rpm": res.envelope.hover},
             "n_points": res.n_points, **res.meta, "describes": {"file": path.name, "sha256": file_sha256(tmp)}}),
-            indent=2, allow_nan=False))
+            indent=2, allow_nan=False), encoding="utf-8")
     return [path, report]
