@@ -157,6 +157,28 @@ def test_new_output_respects_the_umask_and_an_existing_file_keeps_its_mode(capsy
     assert sorted(p.name for p in tmp_path.iterdir()) == ["kept.csv", "new.csv", "x.csv"]
 
 
+def test_the_umask_is_read_without_changing_it():
+    """The new file's mode comes from the process' umask, read from /proc/self/status (Linux)
+    rather than set and restored (which another thread's new file would see)."""
+    from propmap.io.atomic import _umask
+
+    for mask in (0o022, 0o077, 0o002):
+        old = os.umask(mask)
+        try:
+            assert _umask() == mask
+        finally:
+            os.umask(old)
+    if os.path.exists("/proc/self/status"):  # read, not set: the umask is not touched meanwhile
+        calls = []
+        real = os.umask
+        try:
+            os.umask = lambda m: calls.append(m) or real(m)
+            _umask()
+        finally:
+            os.umask = real
+        assert calls == []
+
+
 def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
     src = tmp_path / "many.csv"
     src.write_text("rpm,airspeed,incidence_deg\n" + "8000,10,45\n" * 400_000)

@@ -204,6 +204,27 @@ def test_bad_load_data(tmp_path, text, match):
         read_loads(_write(tmp_path, text))
 
 
+def test_fit_options_refuse_an_unknown_lift_model():
+    """FitOptions names a lift model it does not know (it was taken as "sincos", silently)."""
+    from propmap.identify.options import param_names
+
+    for bad in ("Sigmoid", "linear", ""):
+        with pytest.raises(ValueError, match="lift_model must be 'sigmoid' or 'sincos'"):
+            FitOptions(lift_model=bad)
+        with pytest.raises(ValueError, match="lift_model must be 'sigmoid' or 'sincos'"):
+            param_names(bad)
+    assert param_names("sincos") == ("cl2", "cd") and FitOptions(lift_model="sincos").lift_model == "sincos"
+
+
+@pytest.mark.parametrize("diameter", [0.0, -0.2, float("nan"), 11.0, True, "0.2"])
+def test_catalogue_loads_refuse_a_bad_diameter(diameter):
+    """The diameter converts the catalogue's coefficients into loads: outside (0, 10] m (or
+    not a number) it is refused naming the argument, as for UIUC-format files."""
+    with pytest.raises(DataError, match=r"diameter must be a finite number in \(0, 10\] m"):
+        loads_from_catalogue(get_entry("apce_8x6"), diameter)
+    assert loads_from_catalogue(get_entry("apce_8x6"), 0.2032).omega.size > 0
+
+
 @pytest.mark.parametrize(
     "text, match",
     [

@@ -38,7 +38,7 @@ def plot_validation(validation, path, *, title: str = "") -> Path:
     """CT and CP against J: measured (markers), model (lines), hover model (dashed).
 
     Like Fig. 7 of Gill & D'Andrea (2017), for axial J-sweeps (static runs at J = 0).
-    Writes a PNG atomically and returns its path.
+    Writes the figure atomically (its format by ``path``'s extension) and returns its path.
 
     Parameters
     ----------
@@ -87,7 +87,7 @@ def plot_envelope(table, path, *, title: str = "") -> Path:
     """Thrust and drag vs airspeed for several incidences, model beside the hover model.
 
     ``table`` is a pandas DataFrame with columns airspeed, incidence_deg, thrust, drag,
-    thrust_hover (one rpm). Writes a PNG atomically.
+    thrust_hover (one rpm). Writes the figure atomically (its format by the extension).
 
     Parameters
     ----------
@@ -219,7 +219,7 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
 def plot_cv_summary(catalogue_result: dict, path, *, title: str = "") -> Path:
     """Cumulative distributions over the propellers of the held-out errors of each protocol.
 
-    ``catalogue_result`` as returned by ``cli.validate_all.run_catalogue``. Writes a PNG
+    ``catalogue_result`` as returned by ``cli.validate_all.run_catalogue``. Writes the figure
     atomically and returns its path.
 
     Parameters

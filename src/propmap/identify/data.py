@@ -216,6 +216,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                     group, f"{path}", collective, tuple(notes))
 
 
+def _check_diameter(diameter) -> None:
+    """Raise DataError unless ``diameter`` is a number in (0, 10] m."""
+    if isinstance(diameter, bool) or not isinstance(diameter, numbers.Real) or not 0 < diameter <= 10:
+        raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r:.60}")
+
+
 def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = Air()) -> LoadData:
     """UIUC static runs and axial J-sweeps of a catalogue propeller as thrust and torque.
 
@@ -227,7 +233,7 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
     entry : CatalogueEntry
         Its bundled UIUC static runs and J-sweeps (:func:`propmap.io.catalogue.get_entry`).
     diameter : float
-        Propeller diameter [m] (the coefficients' reference length); not range-checked here.
+        Propeller diameter [m] (the coefficients' reference length), in (0, 10].
     air : Air
         Its density ``rho`` [kg/m^3] converts the coefficients.
 
@@ -241,10 +247,11 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
     Raises
     ------
     DataError
-        The entry has no bundled measurements; or converted loads out of the ranges of
-        :func:`read_loads` (|thrust| > 1e5 N, |torque| > 1e4 N m, airspeed outside
-        [0, 500] m/s), the message naming the run's file.
+        The entry has no bundled measurements; a ``diameter`` outside (0, 10] m; or
+        converted loads out of the ranges of :func:`read_loads` (|thrust| > 1e5 N, |torque|
+        > 1e4 N m, airspeed outside [0, 500] m/s), the message naming the run's file.
     """
+    _check_diameter(diameter)
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")
 
@@ -281,8 +288,7 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
 
     from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
-    if isinstance(diameter, bool) or not isinstance(diameter, numbers.Real) or not 0 < diameter <= 10:
-        raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r}")
+    _check_diameter(diameter)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:
         p = Path(p)

@@ -81,14 +81,20 @@ def param_names(lift_model: str) -> tuple[str, ...]:
     Parameters
     ----------
     lift_model : {"sigmoid", "sincos"}
-        The paper's lift model (``AirfoilParams.lift_model``); any value other than
-        ``"sigmoid"`` is taken as ``"sincos"`` (not checked here).
+        The paper's lift model (``AirfoilParams.lift_model``).
 
     Returns
     -------
     tuple of str
-        ``("cl1", "cl2", "cd", "alpha0")`` for ``"sigmoid"``, else ``("cl2", "cd")``.
+        ``("cl1", "cl2", "cd", "alpha0")`` for ``"sigmoid"``, ``("cl2", "cd")`` for ``"sincos"``.
+
+    Raises
+    ------
+    ValueError
+        Another ``lift_model``.
     """
+    if lift_model not in ("sigmoid", "sincos"):
+        raise ValueError(f"lift_model must be 'sigmoid' or 'sincos', got {lift_model!r:.40}")
     return ("cl1", "cl2", "cd", "alpha0") if lift_model == "sigmoid" else ("cl2", "cd")
 
 
@@ -216,6 +222,11 @@ class FitOptions:
         fit's centre of mass through ``vehicle_wrench``'s "centre_of_mass" Jacobian), the
         body-lift closed form by central differences; else, and always with ``"differences"``,
         central differences of the solver.
+
+    Raises
+    ------
+    ValueError
+        A ``lift_model``, ``jacobian`` or ``directions`` outside the values above.
     """
 
     x0: tuple = X0_PAPER
@@ -235,6 +246,8 @@ class FitOptions:
     directions: int | None = None
 
     def __post_init__(self) -> None:
+        if self.lift_model not in ("sigmoid", "sincos"):
+            raise ValueError(f"lift_model must be 'sigmoid' or 'sincos', got {self.lift_model!r:.40}")
         if self.jacobian not in ("implicit", "differences"):
             raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")
         d = self.directions
