@@ -95,6 +95,29 @@ def test_baselines_are_exact_on_their_own_model():
     np.testing.assert_allclose(fitted, [1.5e-6, 4e-5, 6e-5], rtol=1e-8)
 
 
+def test_baselines_and_level_flight_kinematics_use_the_arms_about_the_centre_of_mass():
+    """Only the arms about the centre of mass and the axes' directions matter: a vehicle whose
+    centre of mass is moved by c, with its rotor positions moved by c too and its axes given
+    not unit, has the same baseline forces and level-flight hub velocities (the baselines and
+    rotor_kinematics took the file's positions and the axes as given, unlike vehicle_wrench)."""
+    from dataclasses import replace
+
+    from propmap.identify.level_flight import LevelFlightData, rotor_kinematics
+
+    veh = pm.read_vehicle(VEHICLE)
+    c = np.array([0.02, -0.015, 0.01])
+    moved = replace(veh, centre_of_mass=c, rotors=tuple(replace(r, position=np.asarray(r.position) + c,
+                                                                axis=3.0 * np.asarray(r.axis)) for r in veh.rotors))
+    s = _synthetic(veh, pm.generic_params(), None, noise=0.0, n=20)
+    for key, bl in fit_baselines(s, veh).items():
+        np.testing.assert_allclose(baseline_force(bl, s, moved), baseline_force(bl, s, veh), rtol=1e-12,
+                                   atol=1e-12, err_msg=key)
+    n = 5
+    data = LevelFlightData(airspeed=np.linspace(0, 8, n), pitch=np.radians(np.linspace(0, -10, n)),
+                           roll=np.zeros(n), rates=np.tile([0.3, -0.5, 1.0], (n, 1)), omega=np.full((n, 4), 1100.0))
+    np.testing.assert_allclose(rotor_kinematics(data, moved)[1], rotor_kinematics(data, veh)[1], rtol=1e-12, atol=1e-12)
+
+
 def test_flight_samples_measure_force_and_moment(shared_data):
     """Force m a_s and moment I dw/dt + w x I w; 400 Hz logs taken at 20 Hz."""
     veh = pm.read_vehicle(VEHICLE)

@@ -91,15 +91,13 @@ def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionP
     return base.replace(**kw)
 
 
-def _attach_jacobian(residual, with_jacobian, eager: bool = True):
-    """Give a residual function its implicit Jacobian: ``residual.jacobian(x)``, and with
-    ``eager`` ``residual.with_jacobian(x)``, (residual, Jacobian) from one model call, which
-    the fitting engine then evaluates at every point (least squares asks for the Jacobian
-    where it evaluated last). Not eager where the Jacobian costs more than its derivatives
-    (columns differenced by extra solves): the engine then asks for it only when needed."""
+def _attach_jacobian(residual, with_jacobian):
+    """Give a residual function its implicit Jacobian: ``residual.jacobian(x)``, and
+    ``residual.with_jacobian(x)``, (residual, Jacobian) from one model call, which the fitting
+    engine then evaluates at every point (least squares asks for the Jacobian where it
+    evaluated last), rejected steps included: the derivatives cost a fraction of the solve."""
     residual.jacobian = lambda x: with_jacobian(x)[1]
-    if eager:
-        residual.with_jacobian = with_jacobian
+    residual.with_jacobian = with_jacobian
 
 
 def _solve(residual, names, options: FitOptions, label: str, x0):

@@ -30,7 +30,7 @@ from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, differentiable, rotor_loads
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
-from ..vehicle import Vehicle
+from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
@@ -102,7 +102,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
         vertical += np.einsum("nj,nkj->n", R[:, 2, :], w.force)
         for c, n in enumerate(names):
             dvert[:, c] += np.einsum("nj,nkj->n", R[:, 2, :], w.jacobian[("force", n)])
-    beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, np.stack([r.axis for r in vehicle.rotors]))
+    beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, rotor_geometry(vehicle)[1])  # unit axes
                              / np.maximum(np.linalg.norm(vel, axis=-1), 1e-300), -1, 1))
     out = {"thrust": T, "drag": D, "torque": Q, "vertical": vertical, "beta": beta}
     if names:

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..vehicle import Vehicle
+from ..vehicle import Vehicle, rotor_geometry
 
 if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
     from .flight import FlightSamples
@@ -56,9 +56,9 @@ def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None
     return out
 
 
-def _hub_velocities(samples: FlightSamples, vehicle: Vehicle) -> np.ndarray:
-    pos = np.array([r.position for r in vehicle.rotors])
-    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], pos[None])
+def _hub_velocities(samples: FlightSamples, arms: np.ndarray) -> np.ndarray:
+    """v + w x r_i, shape (N, n_rotors, 3): the hubs' velocities from their arms about the centre of mass."""
+    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], arms[None])
 
 
 #: the baselines of the report: (key, label, terms)
@@ -69,9 +69,9 @@ BASELINES = (("k_omega2", "T = k Omega^2", ("thrust",)),
 
 def _baseline_columns(samples: FlightSamples, vehicle: Vehicle, terms) -> np.ndarray:
     """Design matrix, shape (N, 3, n_terms): each term's body force per unit coefficient."""
-    axes = np.array([r.axis for r in vehicle.rotors])  # (n_rot, 3)
+    arms, axes, _, _ = rotor_geometry(vehicle)  # about the centre of mass; unit axes (n_rot, 3)
     om = samples.rotor_omega
-    V = _hub_velocities(samples, vehicle)
+    V = _hub_velocities(samples, arms)
     v_ax = np.einsum("nkj,kj->nk", V, axes)
     v_ip = V - v_ax[..., None] * axes[None]
     cols = []

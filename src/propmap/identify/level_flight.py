@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..vehicle import Vehicle
+from ..vehicle import Vehicle, rotor_geometry
 from .csvfile import _ROTOR_RE, RANGES, RPM, DataError, _Csv, _short
 
 __all__ = ["LevelFlightData", "read_level_flight", "body_to_world", "rotor_kinematics"]
@@ -143,7 +143,7 @@ def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
         N conditions: ``airspeed`` [m/s] along world x, ``pitch``, ``roll`` [rad] and body
         ``rates`` [rad/s], shape (N, 3).
     vehicle : Vehicle
-        Its rotors' positions r_i [m], body frame.
+        Its rotors' positions r_i [m] about its centre of mass, body frame.
 
     Returns
     -------
@@ -155,6 +155,6 @@ def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
     R = body_to_world(data.pitch, data.roll)
     v_world = np.stack([data.airspeed, np.zeros(data.n), np.zeros(data.n)], -1)
     v_body = np.einsum("nji,nj->ni", R, v_world)  # R^T v
-    pos = np.stack([r.position for r in vehicle.rotors])  # (n_rot, 3)
+    pos = rotor_geometry(vehicle)[0]  # (n_rot, 3), about the centre of mass
     vel = v_body[:, None, :] + np.cross(data.rates[:, None, :], pos[None, :, :])
     return R, vel

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.airfoil import CamberedParams, SectionParams
+from ..core.airfoil import LIFT_MODELS, CamberedParams, SectionParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
@@ -93,7 +93,7 @@ def param_names(lift_model: str) -> tuple[str, ...]:
     ValueError
         Another ``lift_model``.
     """
-    if lift_model not in ("sigmoid", "sincos"):
+    if lift_model not in LIFT_MODELS:
         raise ValueError(f"lift_model must be 'sigmoid' or 'sincos', got {lift_model!r:.40}")
     return ("cl1", "cl2", "cd", "alpha0") if lift_model == "sigmoid" else ("cl2", "cd")
 
@@ -246,7 +246,7 @@ class FitOptions:
     directions: int | None = None
 
     def __post_init__(self) -> None:
-        if self.lift_model not in ("sigmoid", "sincos"):
+        if self.lift_model not in LIFT_MODELS:
             raise ValueError(f"lift_model must be 'sigmoid' or 'sincos', got {self.lift_model!r:.40}")
         if self.jacobian not in ("implicit", "differences"):
             raise ValueError(f"jacobian must be 'implicit' or 'differences', got {self.jacobian!r:.40}")

@@ -19,7 +19,7 @@ Format (body frame: x forward, y left, z up; SI units)::
     wash_factor = 1.0                   # slipstream factor kappa, in [0, 3]
 
     [[rotors]]
-    position = [0.08, -0.08, 0.0]   # [m], hub relative to the centre of mass, each in [-100, 100]
+    position = [0.08, -0.08, 0.0]   # [m], hub in the frame of centre_of_mass (its origin), each in [-100, 100]
     axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
     spin = "ccw"                    # about +axis (right-hand rule), or "cw"
     propeller = "apce_8x6"          # geometry file or catalogue name

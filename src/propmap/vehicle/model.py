@@ -49,7 +49,8 @@ class Rotor:
     Attributes
     ----------
     position : ndarray, shape (3,)
-        Hub position relative to the centre of mass, body axes [m].
+        Hub position p_i from the vehicle's origin, body axes [m]; its arm about the centre
+        of mass is p_i - ``Vehicle.centre_of_mass`` (the origin unless given or fitted).
     axis : ndarray, shape (3,)
         Unit thrust direction, body axes.
     spin : float
