@@ -167,6 +167,31 @@ def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shar
     assert len(df) == 11749
 
 
+def test_wrench_csv_is_written_as_pandas_wrote_it_without_importing_pandas(tmp_path, shared_data):
+    """wrench's table: the columns' names, then %.6g numbers and an empty cell for NaN, the bytes
+    pandas' to_csv(float_format="%.6g") wrote (checked against pandas here); the command no
+    longer imports pandas (0.18 s of its start-up, docs/flight.md, Speed)."""
+    import io
+    import subprocess
+    import sys
+
+    import pandas as pd
+
+    from propmap.cli.flight import _write_columns
+
+    cols = {"t": np.array([0.0, 0.0025, 1e-7]), "Fx": np.array([-0.0, 1234567.0, np.nan]),
+            "Mz": np.array([np.inf, -2.5e-9, 7.0])}
+    ours = io.StringIO()
+    _write_columns(ours, cols)
+    theirs = pd.DataFrame(cols).to_csv(index=False, float_format="%.6g", lineterminator="\n")
+    assert ours.getvalue() == theirs == "t,Fx,Mz\n0,-0,inf\n0.0025,1.23457e+06,-2.5e-09\n1e-07,,7\n"
+    log = shared_data / "neurobem_flights" / SEGMENTS[1]
+    argv = ["wrench", str(log), "--vehicle", str(VEHICLE), "--out", str(tmp_path / "w.csv")]
+    script = f"import sys; from propmap.cli.main import main; print(main({argv!r}), 'pandas' in sys.modules)"
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
+    assert run.stdout.split()[-2:] == ["0", "False"], run.stdout[-500:] + run.stderr[-2000:]
+
+
 def test_flight_errors_pool_as_neurobem_table_ii():
     s = FlightSamples(log_names=("x",), log_index=np.zeros(2, int), t=np.arange(2.0), velocity=np.zeros((2, 3)),
                       angular_velocity=np.zeros((2, 3)), rotor_omega=np.ones((2, 4)),
