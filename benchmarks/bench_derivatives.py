@@ -57,7 +57,8 @@ def main() -> dict:
         "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=True),
         "loads + derivatives (4 inputs)": lambda: pm.rotor_loads(
             prop, params, om, V, b, derivatives=("omega", "airspeed", "incidence", "collective")),
-        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=PARAMS),
+        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, params, om, V, b,
+                                                                            derivatives=PARAMS),
         "central differences of the solver (3 inputs)": lambda: [
             pm.rotor_loads(prop, params, *args) for args in (
                 (om, V, b), (om * (1 + 1e-4), V, b), (om * (1 - 1e-4), V, b), (om, V + 1e-3, b),

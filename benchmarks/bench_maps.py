@@ -133,8 +133,8 @@ def _c_runs(rm: RotorMap, source: str, vehicle=None):
         write_c_header(rm, tmp / "map.h", vehicle=vehicle)
         (tmp / "b.c").write_text(source)
         subprocess.run([cc, "-std=c99", "-O2", "-o", str(tmp / "b"), str(tmp / "b.c"), "-lm"], check=True)
-        return cc, [float(subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True).stdout.split()[0])
-                    for _ in range(5)]
+        runs = [subprocess.run([str(tmp / "b")], capture_output=True, text=True, check=True) for _ in range(5)]
+        return cc, [float(r.stdout.split()[0]) for r in runs]
 
 
 def c_speed(rm: RotorMap):
@@ -250,7 +250,8 @@ def main() -> None:
            "vehicle_step_cubic": vehicle_step(RotorMap(ds), params),
            "c_vehicle_linear": c_vehicle_speed(rm), "c_vehicle_cubic": c_vehicle_speed(RotorMap(ds)),
            "default_map_netcdf_bytes": size,
-           "default_map_check": {k: v for k, v in ds.attrs.items() if k.startswith("check_") and k != "check_normalisation"},
+           "default_map_check": {k: v for k, v in ds.attrs.items()
+                                 if k.startswith("check_") and k != "check_normalisation"},
            "density": density(prop, params, air, quick)}
     out = Path(__file__).parent / "results" / "maps.json"
     with atomic_write(out) as fh:

@@ -14,7 +14,8 @@ import pytest
 
 import propmap as pm
 from propmap.cli.main import main
-from propmap.io.calibration import calibrated, calibration, generic_params, generic_without, params_from_si, params_to_si
+from propmap.io.calibration import (calibrated, calibration, generic_params, generic_without, params_from_si,
+                                    params_to_si)
 
 DATA = resources.files("propmap") / "data"
 

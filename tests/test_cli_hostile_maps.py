@@ -51,8 +51,8 @@ def test_map_plot_never_replaces_an_input(capsys, tmp_path, monkeypatch):
     geom = tmp_path / "plots" / "map_contours_5000rpm.png"  # a geometry file under the name of a plot
     geom.write_bytes((UIUC / "apce_9x6_geom.txt").read_bytes())
     before = files(tmp_path)
-    code, _, err = run(capsys, "map", geom, "--diameter-in", "9", "--blades", "2", *TINY, "--out", "m.nc", "--plot", "plots",
-                       "--plot-rpm", "5000")
+    code, _, err = run(capsys, "map", geom, "--diameter-in", "9", "--blades", "2", *TINY, "--out", "m.nc", "--plot",
+                       "plots", "--plot-rpm", "5000")
     assert one_line_error(code, err, "--plot: plots/map_contours_5000rpm.png is the input file"), err
     assert files(tmp_path) == before
 
@@ -172,7 +172,8 @@ def test_map_all_streams_its_parts_and_removes_them(capsys, tmp_path, monkeypatc
 # ---- (7) fit parameter names; (11) options that would be ignored ----
 
 @pytest.mark.parametrize("argv, match", [
-    (["--fit-params", "alpha0"], "--fit-params: cannot fit alpha0 with the cambered model: its parameters are cl_alpha"),
+    (["--fit-params", "alpha0"],
+     "--fit-params: cannot fit alpha0 with the cambered model: its parameters are cl_alpha"),
     (["--fit-params", "foo"], "--fit-params: cannot fit foo with the cambered model"),
     (["--fit-params", "cl1,cl1"], "--fit-params: cl1 given more than once"),
     (["--fit-params", "cl_alpha,"], "--fit-params: an empty parameter name"),
@@ -195,7 +196,8 @@ def test_fit_loads_option_errors(capsys, tmp_path, argv, match):
 def test_fit_level_flight_no_prior_with_the_papers_model_is_refused(capsys, tmp_path):
     code, _, err = run(capsys, "fit", "level-flight", EXAMPLES / "level_flight_synthetic.csv", "--vehicle",
                        EXAMPLES / "quadrotor.toml", "--out", tmp_path / "p.toml", "--no-prior")
-    assert one_line_error(code, err, "--no-prior applies to the cambered model (its population prior); --base gill2017-apc"), err
+    assert one_line_error(code, err, "--no-prior applies to the cambered model (its population prior); "
+                                     "--base gill2017-apc"), err
 
 
 # ---- (8) an empty value never means "default" or "all"; (11) ignored options refused ----

@@ -77,7 +77,8 @@ def test_trim_round_trip(rotor, naca0015):
 
 
 def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
-    with pytest.raises(TrimError, match=r"no collective in \[-20, 30\] deg makes thrust=10000 N at operating point \(omega=100 rad/s.*spans \["):
+    with pytest.raises(TrimError, match=r"no collective in \[-20, 30\] deg makes thrust=10000 N at operating point "
+                                        r"\(omega=100 rad/s.*spans \["):
         trim_collective(rotor, naca0015, 1e4, 100.0)
     res = trim_collective(rotor, naca0015, np.array([40.0, 1e4]), 100.0, on_missing="nan")
     # a set past stall at rest: the message names the collective where the thrust peaks
@@ -240,7 +241,8 @@ def test_cli_loads_collective_option_column_and_descent_outputs(tmp_path, capsys
 def test_cli_trim_and_generic_rotor_warning(tmp_path, capsys):
     g = tmp_path / "rot_47x1_geom.txt"
     g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
-    assert main(["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--json"]) == 0
+    assert main(["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015",
+                 "--json"]) == 0
     cap = capsys.readouterr()
     import json
 
@@ -249,7 +251,8 @@ def test_cli_trim_and_generic_rotor_warning(tmp_path, capsys):
     assert "lowest collective" in j["branch"] and "warning" not in cap.err
     assert main(["loads", str(g), "--blades", "3", "--rpm", "1200"]) == 0  # the generic set: warned
     assert "a rotor's blade, not a propeller's" in capsys.readouterr().err
-    assert main(["trim", str(g), "--blades", "3", "--thrust", "1e4", "--rpm", "1200", "--params", "section:naca0015"]) == 2
+    assert main(["trim", str(g), "--blades", "3", "--thrust", "1e4", "--rpm", "1200", "--params",
+                 "section:naca0015"]) == 2
     assert "--thrust: no collective" in capsys.readouterr().err
 
 
@@ -321,7 +324,8 @@ def test_cli_trim_hover_reference_and_flag_meanings_in_text(tmp_path, capsys):
     and, in text output, each flag with its meaning."""
     g = tmp_path / "rot_47x1_geom.txt"
     g.write_text("r/R c/R beta\n0.15 0.08 0\n0.6 0.08 0\n1.0 0.08 0\n")
-    base = ["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015", "--hover-reference"]
+    base = ["trim", str(g), "--blades", "3", "--thrust", "20", "--rpm", "1200", "--params", "section:naca0015",
+            "--hover-reference"]
     assert main(base + ["--json"]) == 0
     import json
 
@@ -343,7 +347,8 @@ def test_cli_fit_loads_of_a_collective_sweep_warns_with_the_generic_base(tmp_pat
     coll = np.arange(0.0, 11.0, 2.0)
     r = pm.rotor_loads(rot, section_preset("naca0015"), 1200 * RPM, 0.0, 0.0, collective=np.radians(coll))
     data = tmp_path / "sweep.csv"
-    pd.DataFrame({"rpm": 1200.0, "thrust": r.thrust, "torque": r.torque, "collective_deg": coll}).to_csv(data, index=False)
+    pd.DataFrame({"rpm": 1200.0, "thrust": r.thrust, "torque": r.torque, "collective_deg": coll}).to_csv(data,
+                                                                                                         index=False)
     args = ["fit", "loads", str(data), "--prop", str(g), "--diameter-in", f"{2 * R / 0.0254}", "--blades", "3"]
     assert main(args + ["--out", str(tmp_path / "a.toml")]) == 0
     assert "section:NAME" in capsys.readouterr().err

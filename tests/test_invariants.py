@@ -120,7 +120,8 @@ def test_shapes_scalar_1d_and_broadcast(apc8x6, apc_params):
     assert s.thrust.shape == () and s.v_i.shape == (48,)
     one = pm.rotor_loads(apc8x6, apc_params, [700.0, 800.0, 900.0], 5.0, 1.0, radial=True)
     assert one.thrust.shape == (3,) and one.v_i.shape == (3, 48)
-    grid = pm.rotor_loads(apc8x6, apc_params, np.array([700.0, 800.0])[:, None], np.array([0.0, 5.0, 10.0]), 1.0, radial=True)
+    grid = pm.rotor_loads(apc8x6, apc_params, np.array([700.0, 800.0])[:, None], np.array([0.0, 5.0, 10.0]), 1.0,
+                          radial=True)
     assert grid.thrust.shape == (2, 3) and grid.dD_dr.shape == (2, 3, 48)
     assert grid.thrust[1, 1] == pytest.approx(float(s.thrust), rel=1e-12)
 

@@ -18,8 +18,8 @@ def small_map():
     prop = pm.load_propeller("apce_8x6")
     params = pm.default_params("apce_8x6")
     air, label = params.air, params.label
-    ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6), np.radians(np.linspace(0, 180, 13)),
-                   air=air, params_label=label, n_check=300)
+    ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6),
+                   np.radians(np.linspace(0, 180, 13)), air=air, params_label=label, n_check=300)
     return prop, params, ds
 
 
@@ -163,7 +163,8 @@ def test_scalar_wrench_agrees_with_the_array_path(small_map, spin):
     rm = RotorMap(ds)
     om = 6100 * RPM
     for velocity, axis in (((3.0, -2.0, 4.5), (0.1, 0.2, 2.0)), ((0.0, 0.0, 5.0), (0.0, 0.0, 1.0)),
-                           ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0)), (np.array([-4.0, 1.0, -1.5]), np.array([0.0, 0.0, 3.0]))):
+                           ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+                           (np.array([-4.0, 1.0, -1.5]), np.array([0.0, 0.0, 3.0]))):
         a = rm.wrench(velocity, axis, om, spin)
         b = rm.wrench(np.array([velocity], float), np.array([axis], float), np.array([om]), spin)
         assert isinstance(a.loads.thrust, float) and a.force.shape == (3,)  # the fast path answered

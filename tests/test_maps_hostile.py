@@ -61,14 +61,16 @@ EDITS = {
                             "axis incidence_deg must lie within [0, 180]"),
     "a 0-rpm node": (lambda ds: ds.assign_coords(rpm=ds["rpm"] - 3000), "axis rpm must lie within"),
     "airspeed 600 m/s": (lambda ds: ds.assign_coords(airspeed=ds["airspeed"] * 60), "axis airspeed must lie within"),
-    "rpm in rad/s": (lambda ds: ds.assign_coords(rpm=ds["rpm"].assign_attrs(units="rad/s")), "axis rpm must be in 'rpm'"),
+    "rpm in rad/s": (lambda ds: ds.assign_coords(rpm=ds["rpm"].assign_attrs(units="rad/s")),
+                     "axis rpm must be in 'rpm'"),
     "omega disagrees": (lambda ds: ds.assign_coords(omega=ds["omega"] * 2), "coordinate omega must equal rpm"),
     "all-NaN thrust": (lambda ds: ds.assign(thrust=ds["thrust"] * np.nan), "thrust is not finite at a converged node"),
     "inf torque": (lambda ds: ds.assign(torque=ds["torque"] * np.inf), "torque is not finite at a converged node"),
     "nothing converged": (lambda ds: ds.assign(converged=ds["converged"] & False), "no node of the map converged"),
     "flags of 5": (lambda ds: ds.assign(vortex_ring=ds["vortex_ring"].astype(np.int8) * 0 + 5), "flag vortex_ring"),
     "text thrust": (lambda ds: ds.assign(thrust=ds["thrust"].astype(str)), "variable thrust must hold numbers"),
-    "thrust in kN": (lambda ds: ds.assign(thrust=ds["thrust"].assign_attrs(units="kN")), "variable thrust must be in 'N'"),
+    "thrust in kN": (lambda ds: ds.assign(thrust=ds["thrust"].assign_attrs(units="kN")),
+                     "variable thrust must be in 'N'"),
     "thrust over two axes": (lambda ds: ds.assign(thrust=ds["thrust"].isel(incidence_deg=0)),
                              "variable thrust must have the dimensions"),
     "no drag": (lambda ds: ds.drop_vars("drag"), "lacks drag"),
@@ -199,7 +201,8 @@ def test_crafted_small_file_without_data_is_refused(tmp_path):
     """Declared variables never written read as fill values (masked: NaN) at converged nodes."""
     path = tmp_path / "empty_vars.nc"
     _crafted(path, (4, 3, 5))
-    with pytest.raises(ValueError, match=r"empty_vars.nc: (no node of the map converged|.*not finite|flag converged must be boolean)"):
+    with pytest.raises(ValueError, match=r"empty_vars.nc: (no node of the map converged|.*not finite|"
+                                         r"flag converged must be boolean)"):
         RotorMap.open(path)
 
 
@@ -285,8 +288,8 @@ def _api_cases(prop, tiny):
                              "1500 x 1500 x 1500 = 3,375,000,000 nodes; at most 20,000,000"),
         "build_map scheduler=5": (lambda: build_map(prop, par, *ax, n_check=0, scheduler=5), ValueError,
                                   "scheduler must be None, a dask.distributed Client or an address"),
-        "build_map 200-blade rotor": (lambda: build_map(pm.Propeller(name="x", radius=prop.radius, n_blades=200, r=prop.r,
-                                                                     chord=prop.chord, theta=prop.theta),
+        "build_map 200-blade rotor": (lambda: build_map(pm.Propeller(name="x", radius=prop.radius, n_blades=200,
+                                                                     r=prop.r, chord=prop.chord, theta=prop.theta),
                                                         par, *ax), ValueError, "1 to 100 blades"),
         "check_map n_check=0": (lambda: pm.maps.check_map(tiny, 0), ValueError, "n_check must be an integer in"),
         "export_sim n_points='x'": (lambda: export_sim("rotorpy", prop, par, n_points="x"), ValueError,

@@ -37,7 +37,8 @@ LOADS = "rpm,airspeed,incidence_deg,thrust,torque\n" + "".join(
     f"{5000 + 100 * k},{k},{10 * k},{1 + 0.1 * k},{0.01 + 0.001 * k}\n" for k in range(8))
 ROTOR = "[[rotors]]\nposition = [0, 0, 0]\naxis = [0, 0, 1]\nspin = 'cw'\npropeller = 'apce_8x6'\n"
 #: the same rotor with a UIUC geometry file, which needs its blade count
-GEOM_ROTOR = "mass = 1\n[[rotors]]\nposition = [0, 0, 0]\naxis = [0, 0, 1]\nspin = 'cw'\nblades = 2\npropeller = 'apce_8x6'\n"
+GEOM_ROTOR = ("mass = 1\n[[rotors]]\nposition = [0, 0, 0]\naxis = [0, 0, 1]\nspin = 'cw'\nblades = 2\n"
+              "propeller = 'apce_8x6'\n")
 VEHICLE = "mass = 1\n" + ROTOR
 
 
@@ -115,7 +116,8 @@ def test_utf8_bom_is_accepted_everywhere(tmp_path, quad):
     assert read_params(_write(tmp_path, "p.toml", bom + PARAMS)).cl1 == 5.3
     assert read_vehicle(_write(tmp_path, "v.toml", bom + VEHICLE)).mass == 1.0
     assert read_uiuc_geometry(_write(tmp_path, "g_9x6_geom.txt", bom + GEOM)).n_blades == 2
-    assert read_geometry(_write(tmp_path, "h_9x6_geom.txt", bom + GEOM), n_blades=2).radius == pytest.approx(4.5 * 0.0254)
+    radius = read_geometry(_write(tmp_path, "h_9x6_geom.txt", bom + GEOM), n_blades=2).radius
+    assert radius == pytest.approx(4.5 * 0.0254)
     static = _write(tmp_path, "x_9x6_static_r1.txt", bom + "RPM CT CP\n3000 0.1 0.05\n")
     assert looks_like_uiuc(static) and read_uiuc_static(static).rpm[0] == 3000
 

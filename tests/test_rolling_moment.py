@@ -51,7 +51,8 @@ def test_rolling_moment_equals_a_full_circle_quadrature(apc8x6, apc_params, V, b
 
 def test_rolling_moment_is_zero_in_axial_flow_and_hover(apc8x6, apc_params):
     for params in (apc_params, pm.CamberedParams()):
-        r = pm.rotor_loads(apc8x6, params, 8000 * RPM, [0.0, 10.0, 10.0, 5.0], np.radians([0.0, 0.0, 180.0, 180.0]), radial=True)
+        r = pm.rotor_loads(apc8x6, params, 8000 * RPM, [0.0, 10.0, 10.0, 5.0], np.radians([0.0, 0.0, 180.0, 180.0]),
+                           radial=True)
         assert np.all(r.rolling_moment == 0.0)
 
 

@@ -272,7 +272,8 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
     np.testing.assert_array_equal(read_loads(resaved).measured["thrust"], a.measured["thrust"])
 
 
-@pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force", "Rotor drag (N)"])
+@pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force",
+                                    "Rotor drag (N)"])
 def test_the_in_plane_force_is_read_by_its_wind_tunnel_names(tmp_path, header):
     """A tunnel export names the in-plane force along the in-plane airspeed H, normal or in-plane
     force or rotor drag: each is read as propmap's drag D (units converted)."""

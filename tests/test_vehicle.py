@@ -72,7 +72,8 @@ def test_hover_equilibrium_of_the_neurobem_vehicle(generic):
                                               for r in veh.rotors))
     with pytest.raises(ValueError, match="no rotor's axis has an upward component"):
         hover_omega(sideways, params)
-    with pytest.raises(ValueError, match=r"needs more than 5.12e\+04 rad/s of its rotors \(the solver.s limit is 1e5\)"):
+    with pytest.raises(ValueError,
+                       match=r"needs more than 5.12e\+04 rad/s of its rotors \(the solver.s limit is 1e5\)"):
         hover_omega(Vehicle(mass=1e6, rotors=veh.rotors), params)
 
 

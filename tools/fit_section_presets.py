@@ -165,7 +165,8 @@ def main() -> None:
         source = SOURCE.format(name=section.split()[-1], span=span.replace("e+0", "e"),
                                tables="table" if single else "tables")
         if single:
-            source += (f"; its Reynolds exponents (re_exp, re_exp_stall) are the {donor.upper().replace('NACA', 'NACA ')} "
+            donor_name = donor.upper().replace("NACA", "NACA ")
+            source += (f"; its Reynolds exponents (re_exp, re_exp_stall) are the {donor_name} "
                        "fit's: one Reynolds number cannot determine them")
         out[key] = {"section_model": "cambered", **{k: round(v, 6) for k, v in d.items()},
                     "compressibility": True, "tip_loss": True, "descent": "empirical",
