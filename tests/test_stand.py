@@ -272,6 +272,17 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
     np.testing.assert_array_equal(read_loads(resaved).measured["thrust"], a.measured["thrust"])
 
 
+@pytest.mark.parametrize("header, factor", [("Motor Speed (RPM)", 1.0), ("Rotational speed (rad/s)", 30 / np.pi),
+                                            ("rotor_speed_hz", 60.0), ("Propeller speed [rpm]", 1.0)])
+def test_the_rotation_speed_is_read_by_other_names_exports_give_it(tmp_path, header, factor):
+    """Stand software and hand-made tables also name the rotation speed motor, rotor, propeller or
+    rotational speed (with a unit): each is read as the rpm (converted); before, "Motor Speed
+    (RPM)" was refused as having no rotation-speed column."""
+    rows = [(5000.0 / factor * k, 1.0 + 0.1 * k, 0.02) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "s.csv", [header, "thrust", "torque"], rows))
+    np.testing.assert_allclose(d.omega, [5000.0 * k * np.pi / 30 for k in range(1, 8)], rtol=1e-5)  # 6 digits
+
+
 @pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force",
                                     "Rotor drag (N)"])
 def test_the_in_plane_force_is_read_by_its_wind_tunnel_names(tmp_path, header):

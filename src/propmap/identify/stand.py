@@ -6,7 +6,8 @@ it is not the SI one, a unit: ``thrust``, ``thrust_kgf``, ``Thrust (gf)``, ``tor
 thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``,
 ``Thrust (kgf)`` or ``(gf)``, ``(N)``, ``(lbf)``, ``Torque (N·m)`` (not on the 1520),
 ``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
-mark), as the stand's software writes them. This module maps the columns and turns a
+mark), as the stand's software writes them; the rotation speed also as ``Motor Speed (RPM)``,
+``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``. This module maps the columns and turns a
 "steps" test into one averaged point per ESC step.
 
 Units (a quantity without a unit is SI, rpm for rotation speed):
@@ -55,6 +56,7 @@ _NAMES = {
     "rotor_drag": ("drag", "force"),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
     "omega": ("rpm", "rotation"),
+    **{f"{who}{sep}speed": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "rotational") for sep in " _"},
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
@@ -66,7 +68,7 @@ _NAMES = {
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
 LOOKED_FOR = {
-    "rpm": "rpm (or speed_rad_s, Motor Optical Speed (RPM), Motor Electrical Speed (RPM))",
+    "rpm": "rpm (or speed_rad_s, Motor Speed (RPM), Motor Optical Speed (RPM), Motor Electrical Speed (RPM))",
     "loads": "thrust, torque or drag (or H force, in-plane force, normal force, rotor drag), with or without a unit "
              "(thrust_kgf, Thrust (gf), torque_Nmm, Torque (N·m))",
 }
