@@ -499,6 +499,16 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
 
     The baselines are refitted the same way, so that every number is held out.
 
+    Parameters
+    ----------
+    samples : FlightSamples
+        Samples of two logs or more (``log_index`` tells them apart).
+    vehicle : Vehicle
+    base, air, options, moments, discretization
+        As :func:`fit_flight`, for every fold.
+    progress : callable, optional
+        Called after each fold with its row of ``folds`` (below).
+
     Returns
     -------
     dict
@@ -558,6 +568,20 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
       says nothing.
 
     Omega_hover is the median rotor speed of the slowest tenth of the samples.
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+        The fitted set.
+    vehicle : Vehicle
+        Its rotors' propeller (the first rotor's), spins and inertias.
+    samples : FlightSamples
+        Their speeds pick the hover samples; with measured moments, the yaw channel.
+    air : Air, optional
+        Default: the fitted set's own (``.air``).
+    reference : AirfoilParams or CamberedParams, optional
+        The static set; default the catalogue's generic set.
+    discretization : Discretization
 
     Returns
     -------
