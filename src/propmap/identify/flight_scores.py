@@ -92,9 +92,11 @@ def fit_baselines(train: FlightSamples, vehicle: Vehicle) -> dict:
     ----------
     train : FlightSamples
         Their ``force`` [N], ``rotor_omega`` [rad/s], ``velocity`` [m/s] and
-        ``angular_velocity`` [rad/s] (the hubs' velocities from the rotor positions).
+        ``angular_velocity`` [rad/s] (the hubs' velocities from the rotors' arms about the
+        centre of mass).
     vehicle : Vehicle
-        Its rotors' positions [m] and axes, in the samples' rotor order.
+        Its rotors' arms [m] and axes (:func:`propmap.vehicle.rotor_geometry`), in the samples'
+        rotor order.
 
     Returns
     -------

@@ -493,21 +493,21 @@ def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, w, rotor_force, body, v_
     for name in MOTION_NAMES:
         if name not in wrt:
             continue
-        if name == "centre_of_mass":  # dV_i/dc = -[w]x, the same for every rotor: (N, 3, 3)
-            dV = -_cross_matrix(np.broadcast_to(w, (N, 3)))
-            F = np.einsum("nrij,njk->nik", dF_hub, dV)
-            M = np.einsum("nrij,njk->nik", dM_hub, dV) + _cross_matrix(rotor_force)
-        else:  # dV_i/dx, (n_rot, 3, 3): I for the velocity, -[r_i]x for the angular velocity
-            dV = np.broadcast_to(np.eye(3), (n_rot, 3, 3)) if name == "velocity" else -arm
-            F = np.einsum("nrij,rjk->nik", dF_hub, dV)
-            M = np.einsum("nrij,rjk->nik", dM_hub, dV)
+        # dV_i/dx, (N, n_rot, 3, 3): I for the velocity, -[r_i]x for the angular velocity, -[w]x (the same for
+        # every rotor) for the centre of mass
+        if name == "centre_of_mass":
+            dV = -_cross_matrix(np.broadcast_to(w, (N, 3)))[:, None]
+        else:
+            dV = (np.eye(3) if name == "velocity" else -arm)[None]
+        dV = np.broadcast_to(dV, (N, n_rot, 3, 3))
+        F = np.einsum("nrij,nrjk->nik", dF_hub, dV)
+        M = np.einsum("nrij,nrjk->nik", dM_hub, dV)
         if name == "angular_velocity":  # the gyroscopic moment: d(-w x h_i Omega_i)/dw = [h_i Omega_i]x
             M = M + _cross_matrix(np.einsum("ri,nr->ni", h, om))
+        if name == "centre_of_mass":  # the arms' moment: d(r_i x F_i)/dc = -dc x F_r
+            M = M + _cross_matrix(rotor_force)
         if drag_active:
-            if name == "centre_of_mass":
-                du = np.einsum("nrij,njk->nik", body.wash_factor * dwash, dV)
-            else:
-                du = np.einsum("nrij,rjk->nik", body.wash_factor * dwash, dV)
+            du = np.einsum("nrij,nrjk->nik", body.wash_factor * dwash, dV)
             if name == "velocity":
                 du = du + np.eye(3)
             F = F + drag_du @ du
