@@ -38,12 +38,13 @@ COLUMNS["1585"] = COLUMNS["1580"]
 def write_steps_export(path, *, series="1585", thrust_unit="gf", prop="apce_8x6", params=None, pole_pairs=7,
                        electrical_raw=False, optical=True, noise=0.004, steps=(1000, 1150, 1250, 1350, 1450, 1550,
                                                                                  1650, 1750, 1850, 1950),
-                       hold_s=3.0, rate_hz=10.0, seed=0, reaction_torque=True):
+                       hold_s=3.0, rate_hz=10.0, seed=0, reaction_torque=True, pusher=False):
     """Write a "steps" test: each ESC step held ``hold_s`` seconds, sampled at ``rate_hz``.
 
     The rotor speed goes from 0 at 1000 us linearly to 9000 rpm at 2000 us, each step
     approached with a 0.25 s time constant; thrust and torque are propmap's at the
-    instantaneous speed, with relative noise. Returns the true (rpm, thrust [N], torque
+    instantaneous speed, with relative noise. ``pusher``: the thrust written negated (a
+    pusher mount), the same digits otherwise. Returns the true (rpm, thrust [N], torque
     [N m]) of each step's steady state.
     """
     rng = np.random.default_rng(seed)
@@ -76,7 +77,7 @@ def write_steps_export(path, *, series="1585", thrust_unit="gf", prop="apce_8x6"
             elif c == "ESC signal (µs)":
                 vals.append(f"{esc}")
             elif c.startswith("Thrust"):
-                vals.append(f"{T * THRUST_UNITS[thrust_unit]:.6g}")
+                vals.append(f"{(-T if pusher else T) * THRUST_UNITS[thrust_unit]:.6g}")
             elif c.startswith("Torque"):
                 vals.append(f"{-Q if reaction_torque else Q:.6g}")
             elif c == "Motor Electrical Speed (RPM)":

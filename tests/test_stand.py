@@ -12,7 +12,7 @@ import pytest
 
 import propmap as pm
 
-from propmap.identify import DataError, FitOptions, fit_loads, read_loads
+from propmap.identify import DataError, FitOptions, LoadData, fit_loads, read_loads
 from propmap.identify.data import sanity_check
 
 from stand_exports import COLUMNS, THRUST_UNITS, write_steps_export
@@ -205,13 +205,108 @@ def test_pole_pairs_without_the_electrical_speed_is_refused(tmp_path, truth_para
         read_loads(path, pole_pairs=7)
 
 
-def test_negative_thrust_is_refused_with_its_cause(tmp_path, truth_params):
+@pytest.mark.parametrize("series", ["1520", "1585"])
+def test_a_pushers_negative_thrust_is_negated_with_a_note_and_fits_alike(tmp_path, truth_params, series):
+    """A stand export of a pusher mount (or a stand mounted the other way round): the thrust
+    column is negative at every point. It is read negated, with a note, as the same points as
+    the export written with positive thrust, and fits to the same parameters."""
+    pos, neg = tmp_path / "pos.csv", tmp_path / "neg.csv"
+    truth = write_steps_export(pos, series=series, thrust_unit="kgf", params=truth_params, steps=STEPS)
+    write_steps_export(neg, series=series, thrust_unit="kgf", params=truth_params, steps=STEPS, pusher=True)
+    a, b = read_loads(pos), read_loads(neg)
+    assert np.all(b.measured["thrust"] > 0)
+    np.testing.assert_allclose(b.measured["thrust"], truth[:, 1], rtol=0.01)
+    assert b.n == a.n and list(b.group) == list(a.group) and b.measured.keys() == a.measured.keys()
+    np.testing.assert_array_equal(b.omega, a.omega)
+    for k in a.measured:
+        np.testing.assert_array_equal(b.measured[k], a.measured[k])
+    said = [n for n in b.notes if n.startswith("thrust negated")]
+    assert len(said) == 1 and "'Thrust (kgf)'" in said[0] and "pusher" in said[0], b.notes
+    assert [n for n in b.notes if n not in said] == list(a.notes)
+    assert not any("thrust negated" in n for n in a.notes)
     prop = pm.load_propeller("apce_8x6")
-    rpm = np.linspace(3000, 9000, 7)
-    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
-    path = _rows_csv(tmp_path / "n.csv", ["rpm", "thrust", "torque"], zip(rpm, -r.thrust, r.torque))
+    assert sanity_check(b, prop) == []
+    opts = FitOptions(names=("alpha_L0", "cd_min"), prior=False)  # two parameters: a fit of under a second
+    fa, fb = (fit_loads(d, prop, base=pm.generic_params(), options=opts) for d in (a, b))
+    np.testing.assert_allclose([getattr(fb.params, k) for k in fb.names], [getattr(fa.params, k) for k in fa.names],
+                               rtol=1e-9, atol=0)
+
+
+def test_a_plain_csv_of_negative_thrust_is_negated(tmp_path):
+    rows = [(1000.0 * k, -0.25 * k * k, 0.004 * k * k) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "n.csv", ["rpm", "thrust_N", "torque"], rows))
+    np.testing.assert_array_equal(d.measured["thrust"], [0.25 * k * k for k in range(1, 8)])
+    assert any(n.startswith("thrust negated: 'thrust_N'") for n in d.notes), d.notes
+    # values within 2% of the largest are noise about zero: their sign does not count
+    rows[0] = (1000.0, 0.01, 0.004)
+    d = read_loads(_rows_csv(tmp_path / "z.csv", ["rpm", "thrust", "torque"], rows))
+    assert d.measured["thrust"][0] == -0.01 and np.all(d.measured["thrust"][1:] > 0)
+    # one larger positive value: a thrust of both signs, read as written (not refused either)
+    rows[0] = (1000.0, 0.5, 0.004)
+    d = read_loads(_rows_csv(tmp_path / "b.csv", ["rpm", "thrust", "torque"], rows))
+    assert d.measured["thrust"][0] == 0.5 and np.all(d.measured["thrust"][1:] < 0)
+    assert not any("thrust negated" in n for n in d.notes), d.notes
+
+
+def _sweep(prop, params, rpm, J):
+    """(rpm, airspeed, thrust, torque) rows of propmap's loads along an advance-ratio sweep."""
+    V = np.asarray(J) * rpm / 60 * prop.diameter
+    r = pm.rotor_loads(prop, params, np.full(V.size, rpm * np.pi / 30), V, 0.0)
+    return np.column_stack([np.full(V.size, rpm), V, r.thrust, r.torque])
+
+
+def test_a_thrust_that_changes_sign_is_read_as_written(tmp_path, truth_params):
+    """A wind-tunnel sweep from static to beyond the zero-thrust advance ratio (windmilling):
+    negative thrust at the high-J points only; nothing is negated (and nothing refused)."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 1.0, 21))
+    assert np.sum(rows[:, 2] < -0.02 * np.abs(rows[:, 2]).max()) >= 2 and rows[0, 2] > 0
+    assert np.all(rows[:, 3] > 0)  # (a torque of both signs is refused)
+    d = read_loads(_rows_csv(tmp_path / "t.csv", ["rpm", "airspeed", "thrust", "torque"], rows))
+    np.testing.assert_allclose(d.measured["thrust"], rows[:, 2], rtol=1e-5, atol=1e-9)  # (6 digits written)
+    assert not any("thrust negated" in n for n in d.notes), d.notes
+    assert sanity_check(d, prop) == []
+
+
+def test_a_run_entirely_beyond_the_zero_thrust_advance_ratio_keeps_its_sign(tmp_path, truth_params):
+    """Negative thrust at every point of a tunnel run without a static point is the
+    propeller's own (UIUC's apcsf_11x3.8 run kt0545: CT -0.019 to -0.057 at J 0.56-0.69):
+    read as written, and the model agrees (thrust alone: between the zero-thrust and the
+    zero-torque advance ratios the calibrated and the generic torque differ in sign)."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.95, 1.2, 6))
+    assert np.all(rows[:, 2] < 0)
+    d = read_loads(_rows_csv(tmp_path / "w.csv", ["rpm", "airspeed", "thrust"], rows[:, :3]))
+    assert np.all(d.measured["thrust"] < 0) and not any("thrust negated" in n for n in d.notes), d.notes
+    assert sanity_check(d, prop) == []
+
+
+def test_a_reverse_collective_sweep_keeps_its_negative_static_thrust(tmp_path):
+    """At a standstill with the blades at a negative collective offset a rotor may push:
+    negative static thrust there is not taken for a pusher mount."""
+    rows = [(3000.0, -20.0 + k, -0.1 * (8 - k), 0.002 * (8 - k)) for k in range(7)]
+    d = read_loads(_rows_csv(tmp_path / "c.csv", ["rpm", "collective_deg", "thrust", "torque"], rows))
+    assert np.all(d.measured["thrust"] < 0) and not any("thrust negated" in n for n in d.notes), d.notes
+
+
+def test_a_pushers_tunnel_run_without_a_static_point_is_refused_with_its_cause(tmp_path, truth_params):
+    """The reader negates a thrust only with static points among the negative ones: a
+    pusher's tunnel run without one is read as written, and the sanity check names the sign
+    (also for load data built without the reader)."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = _sweep(prop, truth_params, 6000.0, np.linspace(0.1, 0.4, 7))
+    assert np.all(rows[:, 2] > 0)
+    rows[:, 2] *= -1
+    d = read_loads(_rows_csv(tmp_path / "n.csv", ["rpm", "airspeed", "thrust", "torque"], rows))
+    assert np.all(d.measured["thrust"] < 0) and not any("thrust negated" in n for n in d.notes), d.notes
+    with pytest.raises(DataError, match="thrust of the opposite sign.*negate the thrust column"):
+        sanity_check(d, prop)
+    omega = np.linspace(3000, 9000, 7) * np.pi / 30
+    r = pm.rotor_loads(prop, truth_params, omega, 0.0, 0.0)
+    flipped = LoadData(omega, np.zeros(7), np.zeros(7), {"thrust": -r.thrust, "torque": r.torque},
+                       np.full(7, "all", dtype=object), "built")
     with pytest.raises(DataError, match="thrust of the opposite sign"):
-        sanity_check(read_loads(path), prop)
+        sanity_check(flipped, prop)
 
 
 def test_posterior_errors_of_prior_held_parameters_keep_the_population_spread(tmp_path, truth_params):

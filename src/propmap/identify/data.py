@@ -71,6 +71,8 @@ class LoadData:
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")
+#: a point at an airspeed up to this [m/s] is static for the thrust's sign rule (:func:`read_loads`)
+STATIC_AIRSPEED = 0.3
 
 
 def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole_pairs: int | None = None) -> LoadData:
@@ -88,6 +90,17 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     dropped; each step a group for holding out), rows of a stopped motor (rpm 0) skipped,
     and a stand's reaction torque (negative) turned to the propeller's; every decision is
     in ``LoadData.notes``. Format and valid ranges in the module docstring.
+
+    Signs, decided after the ESC steps are averaged, on the points whose value is larger
+    than 2% of the column's largest magnitude (those below are noise about zero), each
+    decision a note: a torque negative at every point is negated (the stand's reaction
+    torque), a torque of both signs is refused. A thrust negative at every point, static
+    points among them (airspeed at most :data:`STATIC_AIRSPEED`, no negative
+    ``collective_deg``), is negated: at a standstill a propeller pulls, so it is the sign of
+    a pusher mount or of a stand mounted the other way round (propmap's thrust is positive
+    in the direction the propeller pulls, opposite to its slipstream). Any other thrust is
+    read as written: beyond its zero-thrust advance ratio a propeller makes negative thrust,
+    at some points of a sweep or at all of them (UIUC's apcsf_11x3.8 run kt0545).
 
     Parameters
     ----------
@@ -191,9 +204,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     else:
         v.pop("esc", None)
         v.pop("time", None)
+    # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
     if "torque" in v and n:
         q = v["torque"]
-        big = np.abs(q) > 0.02 * np.max(np.abs(q)) if np.any(q) else np.zeros(n, bool)
+        big = _significant(q)
         if big.any() and np.all(q[big] < 0):
             v["torque"] = -q
             notes.append("torque negated: it is the stand's reaction torque (negative here); the propeller's "
@@ -202,6 +216,15 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             raise DataError(f"{what}: {p}: column {cm.column('torque')!r} changes sign between points "
                             f"({int(np.sum(q[big] < 0))} negative, {int(np.sum(q[big] > 0))} positive): one propeller "
                             "turning one way has one torque sign")
+    if "thrust" in v and n:
+        t = v["thrust"]
+        big = _significant(t)
+        static = (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(n)) >= 0)
+        if big.any() and np.all(t[big] < 0) and np.any(static[big]):
+            v["thrust"] = -t
+            notes.append(f"thrust negated: {cm.column('thrust')!r} is negative at every point, static ones too: "
+                         "a pusher mount or a stand mounted the other way round; propmap's thrust is positive in "
+                         "the direction the propeller pulls, opposite to its slipstream")
     named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
     if n < min_points:
@@ -214,6 +237,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes))
+
+
+def _significant(x: np.ndarray) -> np.ndarray:
+    """Mask of the values larger than 2% of the largest |x| (all False for a column of zeros):
+    the points whose sign counts in the reader's sign rules (values near zero are noise)."""
+    return np.abs(x) > 0.02 * np.max(np.abs(x)) if np.any(x) else np.zeros(x.size, bool)
 
 
 def _check_diameter(diameter) -> None:
@@ -351,8 +380,9 @@ _UNIT_SLIPS = [
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
     (1.0, -1.0, "the stand's reaction torque, of the opposite sign, in a file whose torque also changes sign"),
-    (-1.0, 1.0, "thrust of the opposite sign (a pusher, or a stand mounted the other way round): negate the thrust "
-                "column"),
+    (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
+                 "negates it only where it is negative at every point, static ones too): negate the thrust "
+                 "column")),
 ]
 
 
@@ -361,9 +391,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
 
     The measured thrust and torque are compared with the model's at the measured operating
     points (the generic set by default: hobby-propeller sections, accurate to about 10% blind,
-    docs/validation.md): a median ratio beyond 1/3 to 3, or a torque of the other sign, is
-    refused with the likely cause (thrust in kgf, gf or lbf read as N, torque in N mm, the
-    electrical rpm of a motor with pole pairs, a reaction torque).
+    docs/validation.md): a median ratio beyond 1/3 to 3, or a thrust or torque of the other
+    sign, is refused with the likely cause (thrust in kgf, gf or lbf read as N, torque in
+    N mm, the electrical rpm of a motor with pole pairs, a reaction torque, a pusher's
+    thrust in data the reader left as written).
 
     Parameters
     ----------
