@@ -181,8 +181,9 @@ def test_derivative_errors(prop):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
     from dataclasses import replace
 
-    with pytest.raises(ValueError, match="implemented for the uniform inflow .* inflow=.pitt-peters."):
-        pm.rotor_loads(prop, replace(g, inflow="pitt-peters"), 800.0, 5.0, 0.5, derivatives=True)
+    with pytest.raises(ValueError, match="linear inflow model are implemented without swirl.*inflow=.pitt-peters. "
+                                         "with swirl"):
+        pm.rotor_loads(prop, replace(g, inflow="pitt-peters", swirl=True), 800.0, 5.0, 0.5, derivatives=True)
     with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
         pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
 

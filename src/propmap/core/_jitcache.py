@@ -5,13 +5,15 @@ kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines
 ``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
 kernel (``_sensitivity.py``, calling the momentum side's partials of
 ``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py``) compiles
-in those and ``_annulus.py``, so an edit there would leave numba serving a kernel compiled
+in those and ``_annulus.py``, and the linear inflow models' (``_linear_sensitivity.py``)
+those and ``_sensitivity.py``'s, so an edit there would leave numba serving a kernel compiled
 from the old physics (module constants such as the Reynolds clamp are compiled in). The
 locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``,
-``_sensitivity.py``, ``_momentum_sensitivity.py``; ``_flags.py``'s own functions use numba's,
-stamped with that file: they use nothing else of propmap) and stamp each one's cache with a
-SHA-256 over the contents of every file it compiles in (:data:`KERNEL_SOURCES`,
-:data:`SENSITIVITY_SOURCES`), so that editing any of them recompiles. They are registered
+``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``; ``_flags.py``'s
+own functions use numba's, stamped with that file: they use nothing else of propmap) and stamp
+each one's cache with a SHA-256 over the contents of every file it compiles in
+(:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`, :data:`LINEAR_SOURCES`), so that editing
+any of them recompiles. They are registered
 ahead of numba's own locators (numba.core.caching, an internal API); if that API is not found,
 :data:`CACHE` is False and the kernels are compiled in every process instead of risking a
 stale one.
@@ -23,7 +25,7 @@ import hashlib
 import os
 from pathlib import Path
 
-__all__ = ["CACHE", "KERNEL_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
+__all__ = ["CACHE", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
@@ -32,9 +34,12 @@ KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", _HERE / "_tangents.py",
                        *KERNEL_SOURCES)
+#: the files whose code the compiled sensitivity kernel of the linear inflow models contains
+LINEAR_SOURCES = (_HERE / "_linear_sensitivity.py", *SENSITIVITY_SOURCES)
 #: the cached files, each with the sources its stamp covers
 _STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in KERNEL_SOURCES[:2]}
 _STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:2]})
+_STAMPED[os.path.realpath(LINEAR_SOURCES[0])] = LINEAR_SOURCES
 
 
 def sources_stamp(paths=KERNEL_SOURCES) -> bytes:

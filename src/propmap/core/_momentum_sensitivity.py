@@ -21,6 +21,9 @@ from ._annulus import _FM, _axial_mass_flow, _empirical_k, _inverse_sin_phi, _mo
 from ._jitcache import CACHE
 from ._physics import EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, TWO_OVER_PI
 
+#: relative step of the momentum side's central differences at the fixed root
+STEP = 1e-5
+
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
@@ -126,3 +129,29 @@ def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
         f_w = dfs * ds_w
         f_wy = dfs * ds_wy
     return (floss * m_v + f_w * w_v * m, f_wy * y * m, floss * m_vs + f_w * w_vs * m, floss * m_vc + f_w * w_vc * m)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _momentum_derivatives(v, Om_e, Om, Vs, Vc, y, mfac, ct, ch, emp, one_sided):
+    """d(F_loss dT_BEMT/dy)/d(v, Omega, V sin beta, V cos beta) of one annulus at its fixed root:
+    :func:`_momentum_partials` (analytic), except where the empirical descent model switches on
+    (V cos beta = 0 at V > 0, and v = -V cos beta / 2), where the momentum side is differenced
+    centrally in v, Omega, V sin beta and V cos beta with steps :data:`STEP` of each variable's
+    scale (not of the incidence, whose step would move V cos beta by only V STEP: at small
+    airspeeds that stays on one side of the switch). At V = 0 (``one_sided``) the empirical model
+    is Glauert's (d = -V cos beta = 0): analytic in v and Omega; the airspeed's is then the
+    caller's, one-sided along its ray (:func:`_ray_slope`). ``Om_e``: the blade speed's Omega
+    (Omega - u / y with swirl), ``Om`` the rotation rate (the step's scale)."""
+    if not emp or one_sided or (Vc != 0.0 and abs(v + 0.5 * Vc) > 1e-6 * (abs(v) + abs(Vc))):
+        return _momentum_partials(v, Om_e, Vs, Vc, y, mfac, ct, ch, emp)
+    hv = STEP * (abs(v) + abs(Vc) + abs(Vs) + 0.01 * Om * y + 1e-9)
+    mv = (_momentum_side(v + hv, Om_e, Vs, Vc, y, mfac, ct, ch, emp)
+          - _momentum_side(v - hv, Om_e, Vs, Vc, y, mfac, ct, ch, emp)) / (2.0 * hv)
+    ho = STEP * Om
+    m_om = (_momentum_side(v, Om_e + ho, Vs, Vc, y, mfac, ct, ch, emp)
+            - _momentum_side(v, Om_e - ho, Vs, Vc, y, mfac, ct, ch, emp)) / (2.0 * ho)
+    m_vs = (_momentum_side(v, Om_e, Vs + hv, Vc, y, mfac, ct, ch, emp)
+            - _momentum_side(v, Om_e, Vs - hv, Vc, y, mfac, ct, ch, emp)) / (2.0 * hv)
+    m_vc = (_momentum_side(v, Om_e, Vs, Vc + hv, y, mfac, ct, ch, emp)
+            - _momentum_side(v, Om_e, Vs, Vc - hv, y, mfac, ct, ch, emp)) / (2.0 * hv)
+    return mv, m_om, m_vs, m_vc

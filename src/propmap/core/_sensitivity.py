@@ -74,7 +74,7 @@ import numpy as np
 
 from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat
 from ._jitcache import CACHE
-from ._momentum_sensitivity import _momentum_partials, _momentum_side, _ray_slope
+from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
                        NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
 from ._tangents import _loads_tangent as _loads_tangent_py
@@ -92,8 +92,6 @@ _gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
 
 #: the values of the cambered element's state at a node (_tangents.make_cambered_direction)
 N_STATE = 28
-#: relative step of the momentum side's central differences at the fixed root
-STEP = 1e-5
 #: relative step of the section parameters' and the density's one-sided differences of the
 #: annulus' and polar's constants (core/derivatives.py)
 ONE_SIDED = 1e-7
@@ -476,27 +474,9 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         dB[1, 3] = (cHs + rr * rC) * cf
         dB[2, 3] = cH * cq
         dB[3, 3] = cTs * cq
-        # the momentum side: analytic, except where the empirical descent model switches on (V cos beta = 0 at
-        # V > 0, and v = -V cos beta / 2), where the solver's own momentum side is differenced centrally in v,
-        # Omega, V sin beta and V cos beta, with steps of each variable's scale (not of the incidence, whose step
-        # would move V cos beta by only V STEP: at small airspeeds that stays on one side of the switch). At V = 0
-        # the empirical model is Glauert's (d = -V cos beta = 0): analytic in v and Omega, and one-sided along
-        # the airspeed's ray (below)
-        analytic = not emp or one_sided or (vc != 0.0 and abs(vj + 0.5 * vc) > 1e-6 * (abs(vj) + abs(vc)))
-        if analytic:
-            mv, mom_om, mom_vs, mom_vc = _momentum_partials(vj, ome, vs, vc, yj, mfac[j], ct[j], ch[j], emp)
-        else:
-            hv = STEP * (abs(vj) + abs(vc) + abs(vs) + 0.01 * om * yj + 1e-9)
-            mj, ctj, chj = mfac[j], ct[j], ch[j]
-            mv = (_momentum_side(vj + hv, ome, vs, vc, yj, mj, ctj, chj, emp)
-                  - _momentum_side(vj - hv, ome, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
-            ho = STEP * om
-            mom_om = (_momentum_side(vj, ome + ho, vs, vc, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, ome - ho, vs, vc, yj, mj, ctj, chj, emp)) / (2.0 * ho)
-            mom_vs = (_momentum_side(vj, ome, vs + hv, vc, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, ome, vs - hv, vc, yj, mj, ctj, chj, emp)) / (2.0 * hv)
-            mom_vc = (_momentum_side(vj, ome, vs, vc + hv, yj, mj, ctj, chj, emp)
-                      - _momentum_side(vj, ome, vs, vc - hv, yj, mj, ctj, chj, emp)) / (2.0 * hv)
+        # the momentum side's partials (analytic but at the empirical descent model's switch)
+        mv, mom_om, mom_vs, mom_vc = _momentum_derivatives(vj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp,
+                                                           one_sided)
         Gv = Lv0 - mv
         # the swirl's balance (without swirl the identity du = 0, which leaves dv = -G_x / G_v)
         sw = _swirl_system(swirl, vj, yj, om, q0, h0, naz, cf, cq, Lv0, Lv2, tT * cf, (tHs + rr * rT) * cf,

@@ -13,7 +13,7 @@ import numpy as np
 from . import _physics as ph
 from .airfoil import RECORD_META, SectionParams, _model_constants
 from .flapping import COMPLIANCE
-from .nodes import _cambered_args, _nodes
+from .nodes import _cambered_args, _nodes, _prepared
 
 __all__ = ["DERIVATIVE_LOADS", "FLAPPING_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS",
            "PARAM_FLOOR", "differentiable"]
@@ -48,13 +48,13 @@ def differentiable(params: SectionParams, names) -> bool:
     Returns
     -------
     bool
-        False for a linear inflow model, or a name that is not a numeric field
+        False for a linear inflow model with swirl, or for a name that is not a numeric field
         entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other than
         ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
         rigid and flapping blades alike); the rotation rates' range is the caller's to check
         (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform":
+    if params.inflow != "uniform" and params.swirl:
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
@@ -79,9 +79,9 @@ def _derivative_inputs(derivatives, params) -> tuple:
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
-    if params.inflow != "uniform":
-        raise ValueError("derivatives are implemented for the uniform inflow (the paper's rotor, with or without "
-                         f"the radial drag, flapping and swirl); this set has inflow={params.inflow!r}")
+    if params.inflow != "uniform" and params.swirl:
+        raise ValueError("derivatives with a linear inflow model are implemented without swirl; this set has "
+                         f"inflow={params.inflow!r} with swirl=True")
     return wrt
 
 
@@ -139,6 +139,27 @@ def _parameter_constants(names, params, air):
     return pks, cams, step
 
 
+def _uniform_solve(om, V, b, coll, propeller, params, air, discretization):
+    """The roots (shape (1, n, nr)), mean inflow and convergence of the points solved with the
+    uniform inflow: the first of the kernel's two solves with a linear inflow model (the same
+    operations, so the same mean inflow, which sets the gradients; core/_kernel.py)."""
+    from . import _kernel
+
+    nd, model, pk, cam, _, empirical, cls = _prepared(propeller, params, air, discretization)
+    n, nr = om.size, nd.y.size
+    Vs = V * np.sin(b)
+    Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi (as rotor_loads)
+    Vc = V * np.cos(b)
+    out = np.empty((_kernel.N_OUT, n))
+    rad = np.empty((_kernel.N_RAD, n, nr))
+    counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)
+    flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)
+    # (parallel, as the sensitivity kernels are)
+    _kernel.solve_batch(om, Vs, Vc, coll, nd.rows, nd.azimuth, model, pk, cam, ph.INFLOW_UNIFORM, empirical, False,
+                        propeller.radius, True, cls, out, rad, counts, flags)
+    return np.ascontiguousarray(rad[:1]), out[6].copy(), flags[0].copy()
+
+
 def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
               discretization, loads) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
@@ -149,7 +170,7 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and descent
     (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes); 0 at
     the points with V > 0."""
-    from . import _sensitivity
+    from . import _linear_sensitivity, _sensitivity
 
     rays = STILL_AIR in wrt
     inputs = [w for w in wrt if w in DERIVATIVE_INPUTS]
@@ -166,20 +187,36 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     # the kernel's inputs come in this order; the rays need its input passes
     n_in = 4 if "collective" in inputs else (3 if inputs or rays else 0)
     pks, cams, step = _parameter_constants(names, params, air)
+    par = (pks, cams, np.all(cams == cam, axis=1), step)
     n_cols = n_in + len(names) + (RHO in wrt)
-    raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
-    _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in,
-                               (pks, cams, np.all(cams == cam, axis=1), step), np.ascontiguousarray(scp, dtype=float),
-                               hrho, raw)
+    scp = np.ascontiguousarray(scp, dtype=float)
+    raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
+    inflow = ph.INFLOW_CODES[params.inflow]
+    if inflow == ph.INFLOW_UNIFORM:
+        _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,
+                                   n_in, par, scp, hrho, raw)
+    else:  # the uniform solve's mean inflow and its derivatives, then the linear inflow's (core/_linear_sensitivity.py)
+        roots_u, vu, converged_u = _uniform_solve(om, V, b, coll, propeller, params, air, discretization)
+        _sensitivity.sensitivities(om, V, b, coll, roots_u, converged_u, nd.rows, nd.azimuth, model, pk, cam,
+                                   empirical, n_in, par, scp, hrho, raw)
+        lin = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
+        _linear_sensitivity.linear_sensitivities(om, V, b, coll, np.ascontiguousarray(roots[0]),
+                                                 converged & converged_u, (vu, np.ascontiguousarray(raw[4]),
+                                                                           float(propeller.radius)),
+                                                 nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, n_in, par,
+                                                 (scp, hrho), lin)
+        raw = lin
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)
-        for q, a in enumerate(loads):  # cfac and mfac scale with rho: L / rho at the same root
-            raw[q, col[RHO]] += a / air.rho
-    out = {(load, w): raw[q, col[w]] for q, load in enumerate(DERIVATIVE_LOADS) for w in wrt if w != STILL_AIR}
+        for q, a in zip((0, 1, 2, 3, 5, 6), loads):  # cfac and mfac scale with rho: L / rho at the same root
+            if q < raw.shape[0]:
+                raw[q, col[RHO]] += a / air.rho
+    names_out = DERIVATIVE_LOADS + (FLAPPING_LOADS if raw.shape[0] > len(DERIVATIVE_LOADS) else ())
+    out = {(load, w): raw[q, col[w]] for q, load in enumerate(names_out) for w in wrt if w != STILL_AIR}
     if rays:  # climb, edgewise, descent (dV_c = -dV along beta = pi)
-        for q, load in enumerate(DERIVATIVE_LOADS):
+        for q, load in enumerate(names_out):
             out[(load, STILL_AIR)] = (raw[q, n_cols + 1] if load in _ODD_LOADS
                                       else 0.5 * (raw[q, n_cols] - raw[q, n_cols + 2]))
     return out

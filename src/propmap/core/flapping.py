@@ -123,30 +123,32 @@ def flapping(thrust, drag, side_force, rolling_moment, pitching_moment, damping,
 
 
 def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance: float, n_blades: int, *, omega,
-                         rho: float, lift_slope: tuple) -> dict:
+                         rho: float, lift_slope: tuple, pitching_moment=0.0) -> dict:
     """The flapping rotor's load derivatives from the rigid rotor's, by the chain rule.
 
     :func:`flapping` is applied to the converged rigid loads and changes the drag, the side
-    force and both hub moments. With the uniform inflow (the only inflow the derivatives
-    cover) the rigid pitching moment and side force vanish, so with M_1s = 2 M_R / N_b,
-    det = K^2 + D_beta^2 and u = M_1s / det:
+    force and both hub moments: with M_1s = 2 M_R / N_b, M_1c = -2 M_P / N_b (the rigid
+    rotor's moments), det = K^2 + D_beta^2,
 
-        D_flap = D + T D_beta u,   Y_flap = -T K u,   M_R,flap = K^2 M_R / det,
-        M_P,flap = (N_b / 2) K D_beta u,
+        beta_1c = (K M_1c - D_beta M_1s) / det,   beta_1s = (K M_1s + D_beta M_1c) / det,
+        D_flap = D - T beta_1c,   Y_flap = Y - T beta_1s,
+        M_R,flap = (N_b / 2) K beta_1s,   M_P,flap = -(N_b / 2) K beta_1c,
 
-    and D_beta = (rho a / 2) Omega^2 int c r^3 dr changes with Omega, rho and the lift slope a.
-    With respect to the compliance c = 1 / K (dK/dc = -K^2): dD_flap/dc = 2 K^3 T D_beta
-    M_1s / det^2, dM_R,flap/dc = -2 K^3 M_R D_beta^2 / det^2, dY_flap/dc = -T M_1s K^2 (K^2 -
-    D_beta^2) / det^2 and dM_P,flap/dc = (N_b / 2) D_beta M_1s K^2 (K^2 - D_beta^2) / det^2;
-    thrust, torque and the mean inflow do not depend on it. (At c = 0, rigid blades, D and
-    M_R are quadratic in c and Y and M_P linear: :func:`rigid_compliance_derivatives`.)
+    differentiated term by term, with D_beta = (rho a / 2) Omega^2 int c r^3 dr changing with
+    Omega, rho and the lift slope a. With respect to the compliance c = 1 / K (dK/dc = -K^2,
+    the rigid loads and D_beta fixed): d beta_1c/dK = (M_1c - 2 K beta_1c) / det and
+    d beta_1s/dK = (M_1s - 2 K beta_1s) / det; thrust, torque and the mean inflow do not
+    depend on it. With the uniform inflow the rigid M_P and Y vanish (M_1c = 0); a linear
+    inflow model gives them (core/_linear_sensitivity.py). (At c = 0, rigid blades:
+    :func:`rigid_compliance_derivatives`.)
 
     Parameters
     ----------
     jac : dict
         {(load, name): derivative} of the rigid rotor (core/derivatives._jacobian), loads
-        among ``thrust, drag, torque, rolling_moment, v_i_mean``; flat arrays of N points.
-        Changed in place and returned, with ``(load, "flap_compliance")`` added when
+        among ``thrust, drag, torque, rolling_moment, v_i_mean`` and, where the rigid rotor has
+        them (a linear inflow), ``side_force, pitching_moment`` (absent: 0); flat arrays of N
+        points. Changed in place and returned, with ``(load, "flap_compliance")`` added when
         ``COMPLIANCE`` is among the names (pass its entries as zeros), and
         ``("side_force", name)`` and ``("pitching_moment", name)`` for every name.
     thrust, rolling_moment : ndarray, shape (N,)
@@ -164,6 +166,8 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
         The parameter that is the lift slope a of D_beta (``cl_alpha``, ``cl1`` or ``cl2``;
         core/nodes._lift_slope_name) and dD_beta/da = (rho / 2) Omega^2 int c r^3 dr
         [N m], shape (N,) (:func:`flap_damping` with a = 1).
+    pitching_moment : ndarray, shape (N,), or float
+        The rigid rotor's M_P [N m] (0, default: the uniform inflow's).
 
     Returns
     -------
@@ -179,46 +183,55 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
     K = 1.0 / compliance
     T, Db = np.asarray(thrust), np.asarray(damping)
     M1s = 2.0 * np.asarray(rolling_moment) / n_blades
+    M1c = -2.0 * np.asarray(pitching_moment) / n_blades
     det = K * K + Db * Db
-    u = M1s / det
-    g = Db * u
+    b1c = (K * M1c - Db * M1s) / det
+    b1s = (K * M1s + Db * M1c) / det
     half = 0.5 * n_blades
     # dD_beta/dx of what it depends on
     a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: np.asarray(lift_slope[1])}
     names = {w for (_, w) in jac}
     for w in names:
         if w == COMPLIANCE:
-            jac[("drag", w)] = 2.0 * K**3 * T * Db * M1s / det**2
-            jac[("rolling_moment", w)] = -2.0 * K**3 * np.asarray(rolling_moment) * Db * Db / det**2
-            dk_det = K * K * (K * K - Db * Db) / det**2  # d(K / det)/dc
-            jac[("side_force", w)] = -T * M1s * dk_det
-            jac[("pitching_moment", w)] = half * Db * M1s * dk_det
+            kk = -K * K  # dK/dc
+            db1c = kk * (M1c - 2.0 * K * b1c) / det
+            db1s = kk * (M1s - 2.0 * K * b1s) / det
+            jac[("drag", w)] = -T * db1c
+            jac[("side_force", w)] = -T * db1s
+            jac[("rolling_moment", w)] = half * (kk * b1s + K * db1s)
+            jac[("pitching_moment", w)] = -half * (kk * b1c + K * db1c)
             continue
         dDb = a.get(w, 0.0)
         dM1s = 2.0 * jac[("rolling_moment", w)] / n_blades
-        du = dM1s / det - u * 2.0 * Db * dDb / det
-        dg = dDb * u + Db * du
-        jac[("drag", w)] = jac[("drag", w)] + jac[("thrust", w)] * g + T * dg
-        jac[("side_force", w)] = -K * (jac[("thrust", w)] * u + T * du)
-        jac[("pitching_moment", w)] = half * K * dg
-        jac[("rolling_moment", w)] = K * K * (jac[("rolling_moment", w)] - np.asarray(rolling_moment) * 2.0 * Db
-                                               * dDb / det) / det
+        dM1c = -2.0 * jac.get(("pitching_moment", w), 0.0) / n_blades
+        ddet = 2.0 * Db * dDb
+        db1c = (K * dM1c - dDb * M1s - Db * dM1s - b1c * ddet) / det
+        db1s = (K * dM1s + dDb * M1c + Db * dM1c - b1s * ddet) / det
+        dT = jac[("thrust", w)]
+        jac[("drag", w)] = jac[("drag", w)] - dT * b1c - T * db1c
+        jac[("side_force", w)] = jac.get(("side_force", w), 0.0) - dT * b1s - T * db1s
+        jac[("rolling_moment", w)] = half * K * db1s
+        jac[("pitching_moment", w)] = -half * K * db1c
     return jac
 
 
-def rigid_compliance_derivatives(thrust, rolling_moment, damping, n_blades: int) -> dict:
+def rigid_compliance_derivatives(thrust, rolling_moment, damping, n_blades: int, pitching_moment=0.0) -> dict:
     """Rigid blades' (compliance 0) load derivatives with respect to ``flap_compliance``.
 
-    As c = 1 / K -> 0 the flapping's drag and rolling moment change as c^2 (derivative 0)
-    and its side force and pitching moment as c (:func:`flapping_derivatives`' notation):
-    Y = -T c M_1s and M_P = D_beta c M_R to first order, so dY/dc = -2 T M_R / N_b and
-    dM_P/dc = D_beta M_R.
+    As c = 1 / K -> 0 the flap angles grow as c (:func:`flapping_derivatives`' notation):
+    beta_1c = c M_1c, beta_1s = c M_1s to first order, and the hub moments change as
+    M_R = (N_b / 2) (M_1s + c D_beta M_1c), M_P = -(N_b / 2) (M_1c - c D_beta M_1s), so
+    dD/dc = -T M_1c = 2 T M_P / N_b, dY/dc = -T M_1s = -2 T M_R / N_b, dM_R/dc = -D_beta M_P
+    and dM_P/dc = D_beta M_R (with the uniform inflow M_P = 0: the drag and the rolling moment
+    change as c^2, derivative 0).
 
     Parameters
     ----------
     thrust, rolling_moment, damping : ndarray, shape (N,)
         The rigid rotor's T [N], M_R [N m] and D_beta [N m/rad] (:func:`flap_damping`).
     n_blades : int
+    pitching_moment : ndarray, shape (N,), or float
+        The rigid rotor's M_P [N m] (0, default: the uniform inflow's).
 
     Returns
     -------
@@ -227,8 +240,12 @@ def rigid_compliance_derivatives(thrust, rolling_moment, damping, n_blades: int)
         v_i_mean (zeros), side_force and pitching_moment.
     """
     T, R = np.asarray(thrust, float), np.asarray(rolling_moment, float)
+    P = np.broadcast_to(np.asarray(pitching_moment, float), T.shape)
+    Db = np.asarray(damping)
     zero = np.zeros(T.shape)
-    out = {(q, COMPLIANCE): zero.copy() for q in ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")}
+    out = {(q, COMPLIANCE): zero.copy() for q in ("thrust", "torque", "v_i_mean")}
+    out[("drag", COMPLIANCE)] = 2.0 * T * P / n_blades
+    out[("rolling_moment", COMPLIANCE)] = -Db * P
     out[("side_force", COMPLIANCE)] = -2.0 * T * R / n_blades
-    out[("pitching_moment", COMPLIANCE)] = np.asarray(damping) * R
+    out[("pitching_moment", COMPLIANCE)] = Db * R
     return out

@@ -242,9 +242,9 @@ def rotor_loads(
         collective, or a collective sweep of one geometry. Broadcast with ``omega``,
         ``airspeed`` and ``incidence``. None (default): no offset.
     derivatives : bool or sequence of str
-        True: also the derivatives of T, D, Q, M_R, v_i,mean and (flapping blades; zeros
-        for rigid ones) Y and M_P with respect to ``omega``, ``airspeed`` and ``incidence``
-        (:meth:`RotorLoads.derivative`); a sequence names
+        True: also the derivatives of T, D, Q, M_R, v_i,mean and (flapping blades or a linear
+        inflow; zeros for rigid blades in the uniform inflow) Y and M_P with respect to
+        ``omega``, ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
         ``params`` other than :data:`~propmap.core.derivatives.NODE_FIELDS`), ``"rho"``
@@ -252,8 +252,10 @@ def rotor_loads(
         theorem on each annulus' converged root (core/_sensitivity.py), not by differencing
         the solver, and for flapping blades the chain rule through the flapping
         (core/flapping.flapping_derivatives); with swirl each annulus' root and angular
-        momentum balance together (core/_sensitivity._swirl_system); for the uniform inflow
-        and Omega >= 0.1 rad/s. False (default): none.
+        momentum balance together (core/_sensitivity._swirl_system); with a linear inflow
+        model (without swirl) through both of its solves, the gradients' change with the
+        uniform solve's mean inflow included (core/_linear_sensitivity.py); for
+        Omega >= 0.1 rad/s. False (default): none.
 
     Returns
     -------
@@ -269,8 +271,8 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model, an
-        Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model with swirl,
+        an Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
@@ -381,18 +383,20 @@ def rotor_loads(
         # v_i (and the swirl), contiguous as the kernel is compiled for
         roots = np.ascontiguousarray(rad[::_kernel.N_RAD - 1]) if params.swirl else rad[:1]
         raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
-                         propeller, discretization, rigid) if solved else {})
+                         propeller, discretization, rigid + (out[4], out[5])) if solved else {})
         if params.flap_compliance > 0:
             if COMPLIANCE in wrt:
                 raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
             raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
-                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), per_slope))
-        else:  # rigid blades with the uniform inflow: no side force or pitching moment at any input
-            raw.update({(q, w): np.zeros(n) for q in FLAPPING_LOADS for w in solved})
+                                       omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), per_slope),
+                                       pitching_moment=out[5])
+        else:  # rigid blades with the uniform inflow: no side force or pitching moment at any input (a linear
+            # inflow's are the kernel's)
+            raw.update({(q, w): np.zeros(n) for q in FLAPPING_LOADS for w in solved if (q, w) not in raw})
             if COMPLIANCE in wrt:  # (D and M_R are quadratic in it here, Y and M_P linear)
                 raw.update(rigid_compliance_derivatives(
                     T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
-                    propeller.n_blades))
+                    propeller.n_blades, pitching_moment=out[5]))
         jac = {k: s(a) for k, a in raw.items()}
     radial_out = ([a.reshape(shape + (nr,)) for a in rad[:-1]] if radial else [None] * (_kernel.N_RAD - 1))
     return _new_loads(

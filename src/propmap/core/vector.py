@@ -272,8 +272,8 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
     Parameters
     ----------
     loads : RotorLoads, shape S
-        With the derivatives "airspeed" and "incidence" (:func:`propmap.rotor_loads`) and the
-        uniform inflow, rigid or flapping blades.
+        With the derivatives "airspeed" and "incidence" (:func:`propmap.rotor_loads`): the
+        uniform or a linear inflow, rigid or flapping blades.
     V, z : array_like, shape S + (3,)
         Velocity [m/s] and unit axis (:func:`disk_frame`).
     spin : array_like, shape S

@@ -1,0 +1,276 @@
+"""Compiled (numba) implicit derivatives of the loads with a linear inflow model (Drees,
+Pitt-Peters; _physics.inflow_gradients).
+
+With a linear inflow each operating point is solved twice (core/_kernel.py): the uniform
+inflow first, whose area-weighted mean inflow v_u sets the wake skew and so the gradients
+(k_x, k_y) = k(mu, lambda), mu = V sin(beta) / (Omega R), lambda = (V cos(beta) + v_u) /
+(Omega R); then, on the full circle, every annulus' mean inflow v solves
+
+    G(v, x, g) = dT_BET(v (1 + g_x cos psi + g_y sin psi)) - F dT_BEMT(v) = 0,
+    g_x = k_x y / R, g_y = k_y y / R
+
+(eq 11 with the linear inflow at every azimuth node). Its loads L(v, x, g) (T, D, Q, M_R, the
+side force Y and the pitching moment M_P, _annulus.annulus_loads) change with an input or a
+section parameter x as (the implicit function theorem on each annulus' converged root, as
+core/_sensitivity.py does for the uniform inflow; A. Ning, "Using blade element momentum
+methods with gradient-based design optimization", Structural and Multidisciplinary
+Optimization 64, 2021)
+
+    dL/dx = L_x + L_g dg/dx + L_v dv/dx,    dv/dx = -(G_x + G_g dg/dx) / G_v,
+    dg/dx = (y / R) (k_mu dmu/dx + k_lambda dlambda/dx),
+
+with dlambda/dx carrying dv_u/dx, the uniform solve's mean-inflow derivative (row
+``v_i_mean`` of core/_sensitivity.sensitivities at the uniform roots). The partial derivatives
+at the fixed root (no root solve in them) are differences of the annulus' loads
+(_annulus.annulus_loads: the blade's sums) and of its momentum side: central in v, Omega,
+V sin beta, V cos beta, the blade angle, g_x and g_y (steps _momentum_sensitivity.STEP of each
+variable's scale: the speeds', 1 rad, 1), one-sided in the section parameters and the
+density's Reynolds constant (their constants stepped by the caller, as for the uniform
+inflow); the momentum side's are _momentum_sensitivity's (analytic but at the empirical
+descent model's switch). The gradients' own partials k_mu, k_lambda are central differences
+of _physics.inflow_gradients (step 1e-6), one-sided (second order) at mu = 0, where they are
+defined for mu >= 0 only: an axial point (V sin beta = 0, solved with the uniform inflow only,
+where g = 0) gets the right-hand slope in V sin beta, the one that the in-plane loads, odd in
+V sin beta, share on both sides.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ._annulus import _FM, _inflow_gradients, annulus_loads
+from ._jitcache import CACHE
+from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
+from ._physics import NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y
+from ._sensitivity import _constants as _constants_inline
+
+#: the loads of annulus_loads, in the rows of the output (row 4 is v_i,mean, as core/_sensitivity's)
+LOAD_ROWS = (0, 1, 2, 3, 5, 6)
+#: rows of the output: T, D, Q, M_R, v_i,mean, Y, M_P
+N_ROWS = 7
+#: step of the gradients' partials in mu and lambda
+K_STEP = 1e-6
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _k_partials(mu, lam, inflow):
+    """(k_x, k_y) and their partials in mu and lambda: (kx, ky, kx_mu, ky_mu, kx_lam, ky_lam)."""
+    kx, ky = _inflow_gradients(mu, lam, inflow)
+    h = K_STEP
+    if mu > 2.0 * h:
+        xp, yp = _inflow_gradients(mu + h, lam, inflow)
+        xm, ym = _inflow_gradients(mu - h, lam, inflow)
+        kx_mu, ky_mu = (xp - xm) / (2.0 * h), (yp - ym) / (2.0 * h)
+    else:  # defined for mu >= 0 only: one-sided, second order
+        x1, y1 = _inflow_gradients(mu + h, lam, inflow)
+        x2, y2 = _inflow_gradients(mu + 2.0 * h, lam, inflow)
+        kx_mu, ky_mu = (4.0 * x1 - x2 - 3.0 * kx) / (2.0 * h), (4.0 * y1 - y2 - 3.0 * ky) / (2.0 * h)
+    xp, yp = _inflow_gradients(mu, lam + h, inflow)
+    xm, ym = _inflow_gradients(mu, lam - h, inflow)
+    return kx, ky, kx_mu, ky_mu, (xp - xm) / (2.0 * h), (yp - ym) / (2.0 * h)
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: compiled once, not 20 times
+def _loads(v, y, Om, Vs, Vc, th, sec, cfac, azim, gx, gy, naz, model, pk):
+    """The annulus' six load densities over the full circle (_annulus.annulus_loads, no swirl)."""
+    return annulus_loads(v, y, Om, 0.0, Vs, Vc, (th, np.sin(th), np.cos(th)), sec, cfac, azim, gx, gy, naz, model, pk,
+                         False)
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
+    """The section constants at an operating point (core/_sensitivity._constants)."""
+    return _constants_inline(Om, Vs, Vc, y, sc, cy2, model, cam)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _central(dst, c, a, b, h):
+    """Row ``c`` of ``dst`` = (a - b) / (2 h), a and b the six load densities at +h and -h."""
+    k = 0.5 / h
+    dst[c, 0] = (a[0] - b[0]) * k
+    dst[c, 1] = (a[1] - b[1]) * k
+    dst[c, 2] = (a[2] - b[2]) * k
+    dst[c, 3] = (a[3] - b[3]) * k
+    dst[c, 4] = (a[4] - b[4]) * k
+    dst[c, 5] = (a[5] - b[5]) * k
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens):
+    """The annulus' load partials at its fixed root, into ``P`` (rows: v, Omega, V sin beta,
+    V cos beta, the blade angle, g_x, g_y, then each section parameter and the density's
+    Reynolds part; columns the six loads of annulus_loads). ``op`` = (Omega, V sin beta,
+    V cos beta), ``ann`` = (y, sc, cy2, cfac, sc at the stepped density), ``g`` = (g_x, g_y),
+    ``dens`` = (the stepped sc of every annulus, the density's step; 0: not asked)."""
+    Om, Vs, Vc = op
+    y, sc, cy2, cfac, scj = ann
+    gx, gy = g
+    naz = azim.shape[1]
+    s = _constants(Om, Vs, Vc, y, sc, cy2, model, cam)
+    base = _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk)
+    hv = STEP * (abs(v) + abs(Vc) + abs(Vs) + Om * y)
+    _central(P, 0, _loads(v + hv, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk),
+             _loads(v - hv, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk), hv)
+    ho = STEP * Om
+    _central(P, 1, _loads(v, y, Om + ho, Vs, Vc, th, _constants(Om + ho, Vs, Vc, y, sc, cy2, model, cam), cfac, azim,
+                          gx, gy, naz, model, pk),
+             _loads(v, y, Om - ho, Vs, Vc, th, _constants(Om - ho, Vs, Vc, y, sc, cy2, model, cam), cfac, azim, gx,
+                    gy, naz, model, pk), ho)
+    _central(P, 2, _loads(v, y, Om, Vs + hv, Vc, th, _constants(Om, Vs + hv, Vc, y, sc, cy2, model, cam), cfac, azim,
+                          gx, gy, naz, model, pk),
+             _loads(v, y, Om, Vs - hv, Vc, th, _constants(Om, Vs - hv, Vc, y, sc, cy2, model, cam), cfac, azim, gx,
+                    gy, naz, model, pk), hv)
+    _central(P, 3, _loads(v, y, Om, Vs, Vc + hv, th, _constants(Om, Vs, Vc + hv, y, sc, cy2, model, cam), cfac, azim,
+                          gx, gy, naz, model, pk),
+             _loads(v, y, Om, Vs, Vc - hv, th, _constants(Om, Vs, Vc - hv, y, sc, cy2, model, cam), cfac, azim, gx,
+                    gy, naz, model, pk), hv)
+    _central(P, 4, _loads(v, y, Om, Vs, Vc, th + STEP, s, cfac, azim, gx, gy, naz, model, pk),
+             _loads(v, y, Om, Vs, Vc, th - STEP, s, cfac, azim, gx, gy, naz, model, pk), STEP)
+    _central(P, 5, _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx + STEP, gy, naz, model, pk),
+             _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx - STEP, gy, naz, model, pk), STEP)
+    _central(P, 6, _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy + STEP, naz, model, pk),
+             _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy - STEP, naz, model, pk), STEP)
+    pkpm, campm, cam_same, hpar = par
+    n_par = hpar.shape[0]
+    hrho = dens[1]
+    for m in range(n_par + (1 if hrho != 0.0 else 0)):  # one-sided: the constants at the stepped value
+        if m == n_par:  # the density, through the Reynolds constant sc
+            a = _loads(v, y, Om, Vs, Vc, th, _constants(Om, Vs, Vc, y, scj, cy2, model, cam), cfac, azim, gx, gy, naz,
+                       model, pk)
+            span = hrho
+        else:
+            sa = s if cam_same[m] else _constants(Om, Vs, Vc, y, sc, cy2, model, campm[m])
+            a = _loads(v, y, Om, Vs, Vc, th, sa, cfac, azim, gx, gy, naz, model, pkpm[m])
+            span = hpar[m]
+        for q in range(6):
+            P[7 + m, q] = (a[q] - base[q]) / span
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)
+def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens, out):
+    vu, dvu, radius = uni
+    scpm, hrho = dens
+    y = nodes[NODE_Y]
+    w = nodes[NODE_W]
+    th0 = nodes[NODE_TH]
+    sc = nodes[NODE_SC]
+    cy2 = nodes[NODE_CY2]
+    cfac = nodes[NODE_CFAC]
+    mfac = nodes[NODE_MFAC]
+    ct = nodes[NODE_CT]
+    ch = nodes[NODE_CH]
+    nr = y.shape[0]
+    n_par = par[3].shape[0]
+    n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
+    n_cols = out.shape[1]  # n_all, or 3 more: the slopes at rest along three rays (core/_sensitivity.py)
+    if not ok[i]:
+        for q in range(N_ROWS):
+            for p in range(n_cols):
+                out[q, p, i] = np.nan
+        return
+    for q in range(N_ROWS):
+        for p in range(n_cols):
+            out[q, p, i] = 0.0
+    wy = 0.0
+    for j in range(nr):
+        wy += w[j] * y[j]
+    om, dth = Om[i], coll[i]
+    sb = np.sin(b[i])
+    cb = np.cos(b[i])
+    vs = V[i] * sb
+    vc = V[i] * cb
+    if abs(vs) < 1e-12 * V[i]:
+        vs = 0.0
+    if abs(vc) < 1e-12 * V[i]:
+        vc = 0.0
+    one_sided = V[i] == 0.0
+    # each column's direction in (Omega, V sin beta, V cos beta, the blade angle): the inputs, then the
+    # parameters and the density (0: they move the constants only), then the rays at rest
+    e = np.zeros((n_cols, 4))
+    if n_in > 0:
+        e[0, 0] = 1.0
+        e[1, 1] = sb
+        e[1, 2] = cb
+        e[2, 1] = V[i] * cb
+        e[2, 2] = -V[i] * sb
+        if vs == 0.0 and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray
+            e[1, 1] = 0.0
+    if n_in > 3:
+        e[3, 3] = 1.0
+    for k in range(n_cols - n_all):  # the rays beta = 0, pi/2, pi
+        e[n_all + k, 1] = 1.0 if k == 1 else 0.0
+        e[n_all + k, 2] = 1.0 - k if k != 1 else 0.0
+    # the gradients and their change along every column, through mu, lambda and the uniform mean inflow
+    OmR = om * radius
+    mu = vs / OmR
+    lam = (vc + vu[i]) / OmR
+    kx, ky, kx_mu, ky_mu, kx_lam, ky_lam = _k_partials(mu, lam, inflow)
+    dk = np.empty((n_cols, 2))
+    for c in range(n_cols):
+        dmu = e[c, 1] / OmR - mu * e[c, 0] / om
+        dlam = (e[c, 2] + dvu[c, i]) / OmR - lam * e[c, 0] / om
+        dk[c, 0] = kx_mu * dmu + kx_lam * dlam
+        dk[c, 1] = ky_mu * dmu + ky_lam * dlam
+    h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (as _sensitivity)
+    P = np.empty((7 + n_all - n_in, 6))
+    dL = np.empty(6)
+    scj = 0.0
+    for j in range(nr):
+        vj = roots[i, j]
+        yj = y[j]
+        gx = kx * yj / radius
+        gy = ky * yj / radius
+        if hrho != 0.0:
+            scj = scpm[j]
+        _annulus_partials(P, vj, (om, vs, vc), th0[j] + dth, (yj, sc[j], cy2[j], cfac[j], scj), azim, (gx, gy), model,
+                          pk, cam, par, dens)
+        mv, m_om, m_vs, m_vc = _momentum_derivatives(vj, om, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp, one_sided)
+        Gv = P[0, 0] - mv
+        m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
+        for c in range(n_cols):
+            if c == 2 and n_in > 2 and one_sided:
+                continue  # the incidence does nothing at V = 0
+            ray = c >= n_all
+            if ray and not one_sided:
+                continue  # the slopes at rest: 0 at the points with V > 0
+            par_col = n_in <= c < n_all
+            if (c == 1 and n_in > 1 and one_sided) or ray:  # the airspeed from rest along its ray: one-sided
+                dmom = _ray_slope(m0, vj, om, e[c, 1] if ray else sb, e[c, 2] if ray else cb, h_ray, yj, mfac[j],
+                                  ct[j], ch[j], emp)
+            else:
+                dmom = m_om * e[c, 0] + m_vs * e[c, 1] + m_vc * e[c, 2]
+            dgx = dk[c, 0] * yj / radius
+            dgy = dk[c, 1] * yj / radius
+            for q in range(6):
+                d = P[5, q] * dgx + P[6, q] * dgy
+                if par_col:
+                    d += P[7 + c - n_in, q]
+                else:
+                    d += P[1, q] * e[c, 0] + P[2, q] * e[c, 1] + P[3, q] * e[c, 2] + P[4, q] * e[c, 3]
+                dL[q] = d
+            dv = -(dL[0] - dmom) / Gv
+            for q in range(6):
+                out[LOAD_ROWS[q], c, i] += w[j] * (dL[q] + P[0, q] * dv)
+            out[4, c, i] += w[j] * yj * dv / wy
+
+
+@numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
+def linear_sensitivities(Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens,
+                         out):
+    """d(T, D, Q, M_R, v_i,mean, Y, M_P)/d(Omega, V, beta[, collective], section parameters, rho) at
+    every point, with the linear inflow model ``inflow`` (module docstring).
+
+    Inputs as core/_sensitivity.sensitivities, with ``roots`` shape (n, nr) the linear
+    inflow's converged roots (the uniform ones at the axial points, where the kernel solves
+    once), ``azim`` the full circle's nodes, and ``uni`` = (v_u, dv_u, R): the uniform solve's
+    mean inflow shape (n,), its derivative along every output column shape (n_cols, n)
+    (core/_sensitivity.sensitivities' row v_i,mean at the uniform roots, the same columns) and
+    the rotor radius [m]. ``out`` shape (7, n_cols, n): the rows T, D, Q, M_R, v_i,mean (as
+    core/_sensitivity's), then Y and M_P; ``dens`` = (``scpm``, ``hrho``) of
+    core/_sensitivity.sensitivities: the density's column is the Reynolds part (the caller adds
+    L / rho). No swirl.
+    """
+    for i in numba.prange(Om.shape[0]):
+        _point(np.int64(i), Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens,
+               out)
