@@ -15,7 +15,10 @@ the median of 5 alternated runs:
 * the central differences of the whole solver for the same three inputs (6 more solves);
 * a vehicle's linearisation: ``vehicle_wrench`` of the example quadrotor (4 x APC 8x6E,
   generic set) on 200 samples, alone and with the velocity and angular-velocity Jacobians,
-  at rest (hover: the rotors' slopes at V = 0 along three rays) and at 3 m/s forward.
+  at rest (hover: the rotors' slopes at V = 0 along three rays) and at 3 m/s forward;
+* the same batch with Pitt-Peters inflow (``linear_inflow``): its loads, with the three
+  inputs' and the 8 parameters' derivatives (core/_linear_sensitivity.py) and the three
+  inputs' central differences, each ratio to its own loads.
 
 Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
 inputs), the residual evaluations per annulus of the solve, and the CPU.
@@ -41,6 +44,25 @@ RUNS = 5
 PARAMS = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re")
 
 
+def _timed(cases: dict) -> dict:
+    """{case: [seconds of each of RUNS alternated runs]}, each case called once before."""
+    for f in cases.values():  # compile / load the caches
+        f()
+    times = {k: [] for k in cases}
+    for _ in range(RUNS):
+        for k, f in cases.items():
+            t = time.perf_counter()
+            f()
+            times[k].append(time.perf_counter() - t)
+    return times
+
+
+def _summary(times: dict, base: str) -> dict:
+    b = float(np.median(times[base]))
+    return {k: {"median_s": float(np.median(v)), "min_s": float(np.min(v)), "ratio_to_loads": float(np.median(v)) / b}
+            for k, v in times.items()}
+
+
 def main() -> dict:
     sys.path.insert(0, str(Path(__file__).parent))
     from bench_solver import cpu_name
@@ -52,6 +74,8 @@ def main() -> dict:
     V = rng.uniform(0, 20, N)
     b = np.radians(rng.uniform(0, 180, N))
     b[: N // 5] = 0.0  # axial
+    steps = ((om, V, b), (om * (1 + 1e-4), V, b), (om * (1 - 1e-4), V, b), (om, V + 1e-3, b),
+             (om, np.maximum(V - 1e-3, 0), b), (om, V, np.minimum(b + 1e-4, np.pi)), (om, V, np.maximum(b - 1e-4, 0)))
     cases = {
         "loads": lambda: pm.rotor_loads(prop, params, om, V, b),
         "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, params, om, V, b, derivatives=True),
@@ -59,29 +83,24 @@ def main() -> dict:
             prop, params, om, V, b, derivatives=("omega", "airspeed", "incidence", "collective")),
         "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, params, om, V, b,
                                                                             derivatives=PARAMS),
-        "central differences of the solver (3 inputs)": lambda: [
-            pm.rotor_loads(prop, params, *args) for args in (
-                (om, V, b), (om * (1 + 1e-4), V, b), (om * (1 - 1e-4), V, b), (om, V + 1e-3, b),
-                (om, np.maximum(V - 1e-3, 0), b), (om, V, np.minimum(b + 1e-4, np.pi)),
-                (om, V, np.maximum(b - 1e-4, 0)))],
+        "central differences of the solver (3 inputs)": lambda: [pm.rotor_loads(prop, params, *a) for a in steps],
     }
-    for f in cases.values():  # compile / load the caches
-        f()
-    times = {k: [] for k in cases}
-    for _ in range(RUNS):
-        for k, f in cases.items():
-            t = time.perf_counter()
-            f()
-            times[k].append(time.perf_counter() - t)
-    base = float(np.median(times["loads"]))
+    times = _timed(cases)
     r = pm.rotor_loads(prop, params, om, V, b)
     out = {
         "cpu": cpu_name(), "cores": os.cpu_count(), "load_average": os.getloadavg(), "points": N,
         "discretization": [48, 16], "date": time.strftime("%Y-%m-%d"),
         "residual_evaluations_per_annulus": float(r.n_evaluations.sum() / (N * r.r.size)),
-        "cases": {k: {"median_s": float(np.median(v)), "min_s": float(np.min(v)),
-                      "ratio_to_loads": float(np.median(v)) / base} for k, v in times.items()},
+        "cases": _summary(times, "loads"),
     }
+    linear = params.replace(inflow="pitt-peters")
+    out["linear_inflow"] = _summary(_timed({
+        "loads (Pitt-Peters)": lambda: pm.rotor_loads(prop, linear, om, V, b),
+        "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, linear, om, V, b, derivatives=True),
+        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, linear, om, V, b,
+                                                                            derivatives=PARAMS),
+        "central differences of the solver (3 inputs)": lambda: [pm.rotor_loads(prop, linear, *a) for a in steps],
+    }), "loads (Pitt-Peters)")
     out["vehicle_linearisation"] = vehicle_linearisation()
     path = ROOT / "benchmarks" / "results" / "derivatives.json"
     path.parent.mkdir(parents=True, exist_ok=True)
