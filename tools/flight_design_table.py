@@ -9,11 +9,13 @@ second, the vehicle file's 33 ms motor lag), from the generic set; rows with
 ``flap_compliance`` start it at FLAP_START (1 rad/(N m)), and T and U switch the generic
 lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
 
-    .venv/bin/python tools/flight_design_table.py [ROW ...]    # all rows: about 5 min on 2 cores
+    .venv/bin/python tools/flight_design_table.py [--differences] [ROW ...]    # all rows: about 5 min on 2 cores
 
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
-Row C (Pitt-Peters inflow) runs only when named: a linear inflow has no implicit derivatives,
-and its differenced fits take about 2 minutes more.
+Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's implicit derivatives
+cost about 3x the loads (docs/solver.md), and row C takes about 1.5 minutes.
+``--differences``: the fits' Jacobians by central differences of the solver instead of the
+implicit derivatives (an A/B of the two; the same optimum).
 """
 
 import sys
@@ -49,6 +51,7 @@ def rows(g) -> dict:
         "J": (("collective", "flap_compliance", "cl_max"), flap),
         "K": (("collective", "flap_compliance", "cl_max", "stall_delay"), flap),
         "C": (("collective", "flap_compliance"), flap.replace(inflow="pitt-peters")),
+        "WP": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inflow="pitt-peters")),
     }
 
 
@@ -58,11 +61,13 @@ def main() -> None:
     samples = flight_samples([read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))], vehicle)
     air = Air(rho=1.204)
     table = rows(pm.generic_params().replace(air=air))
-    for key in sys.argv[1:] or [k for k in table if k != "C"]:
+    args = [a for a in sys.argv[1:] if a != "--differences"]
+    jacobian = "differences" if "--differences" in sys.argv[1:] else "implicit"
+    for key in args or [k for k in table if k not in ("C", "WP")]:
         names, base = table[key]
         t = time.perf_counter()
         cv = cross_validate_flight(samples, vehicle, base=base, air=air,
-                                   options=FitOptions(names=names, progress=False))
+                                   options=FitOptions(names=names, progress=False, jacobian=jacobian))
         comp = [f["x"].get("flap_compliance") for f in cv["folds"]]
         print(f"{key}: pooled held-out F {cv['pooled']['model']:.3f} N; per log "
               + " / ".join(f"{f['model']['F']:.3f}" for f in cv["folds"])
