@@ -150,13 +150,14 @@ class RotorLoads:
     jacobian: dict | None = None
 
     def derivative(self, quantity: str, wrt: str) -> np.ndarray:
-        """d(quantity)/d(wrt) at every point, by the implicit function theorem (core/_sensitivity.py).
+        """d(quantity)/d(wrt) at every point, by the implicit function theorem (core/_sensitivity.py;
+        core/_linear_sensitivity.py with a linear inflow model).
 
         Parameters
         ----------
         quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean", "side_force", "pitching_moment"}
-            The side force and pitching moment are those of flapping blades (0 for rigid
-            ones with the uniform inflow, the only inflow differentiated; core/flapping.py).
+            The side force and pitching moment are those of flapping blades or of a linear
+            inflow model (0 for rigid blades with the uniform inflow; core/flapping.py).
         wrt : str
             "omega" [rad/s], "airspeed" [m/s], "incidence" [rad], "collective" [rad], "rho"
             [kg/m^3] or a section parameter's name (in its SI unit); as asked of
