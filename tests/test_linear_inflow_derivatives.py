@@ -93,7 +93,7 @@ def test_section_parameter_and_density_derivatives(prop, params):
         x = params.air.rho if n == "rho" else getattr(params, n)
         h = 1e-4 * max(abs(x), 0.01)
 
-        def moved(dx):
+        def moved(dx, n=n, x=x):
             if n == "rho":
                 return pm.rotor_loads(prop, params, om, V, b, discretization=DISC, air=pm.Air(rho=x + dx))
             return pm.rotor_loads(prop, params.replace(**{n: x + dx}), om, V, b, discretization=DISC)

@@ -21,13 +21,14 @@ Optimization 64, 2021)
 
 with dlambda/dx carrying dv_u/dx, the uniform solve's mean-inflow derivative (row
 ``v_i_mean`` of core/_sensitivity.sensitivities at the uniform roots). The partial derivatives
-at the fixed root (no root solve in them) are differences of the annulus' loads
-(_annulus.annulus_loads: the blade's sums) and of its momentum side: central in v, Omega,
-V sin beta, V cos beta, the blade angle, g_x and g_y (steps _momentum_sensitivity.STEP of each
-variable's scale: the speeds', 1 rad, 1), one-sided in the section parameters and the
-density's Reynolds constant (their constants stepped by the caller, as for the uniform
-inflow); the momentum side's are _momentum_sensitivity's (analytic but at the empirical
-descent model's switch). The gradients' own partials k_mu, k_lambda are central differences
+at the fixed root (no root solve in them) in v, Omega, V sin beta, V cos beta, the blade angle,
+g_x and g_y are analytic: one evaluation per node of the element with its partials in U_T,
+U_P, the section constants' slope in U2 and the blade angle (core/_tangents.py, as the uniform
+inflow's), weighted by each variable's chain (:func:`_input_partials`); in the section
+parameters and the density's Reynolds constant they are one-sided differences of the
+annulus' loads (_annulus.annulus_loads: the blade's sums) at the constants stepped by the
+caller, as for the uniform inflow's paper section; the momentum side's are
+_momentum_sensitivity's (analytic but at the empirical descent model's switch). The gradients' own partials k_mu, k_lambda are central differences
 of _physics.inflow_gradients (step 1e-6), one-sided (second order) at mu = 0, where they are
 defined for mu >= 0 only: an axial point (V sin beta = 0, solved with the uniform inflow only,
 where g = 0) gets the right-hand slope in V sin beta, the one that the in-plane loads, odd in
@@ -39,10 +40,18 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, _inflow_gradients, annulus_loads
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, annulus_loads
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
-from ._physics import NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y
+from ._physics import NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y, PK_RADIAL_DRAG
+from ._sensitivity import (
+    N_STATE,
+    _cambered_direction,
+    _cambered_state,
+    _cambered_tangent,
+    _constants_slopes,
+    _gill_tangent,
+)
 from ._sensitivity import _constants as _constants_inline
 
 #: the loads of annulus_loads, in the rows of the output (row 4 is v_i,mean, as core/_sensitivity's)
@@ -85,56 +94,163 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _central(dst, c, a, b, h):
-    """Row ``c`` of ``dst`` = (a - b) / (2 h), a and b the six load densities at +h and -h."""
-    k = 0.5 / h
-    dst[c, 0] = (a[0] - b[0]) * k
-    dst[c, 1] = (a[1] - b[1]) * k
-    dst[c, 2] = (a[2] - b[2]) * k
-    dst[c, 3] = (a[3] - b[3]) * k
-    dst[c, 4] = (a[4] - b[4]) * k
-    dst[c, 5] = (a[5] - b[5]) * k
+def _integrands(q, sk, ck, kr):
+    """The six loads' integrands at one node (annulus_loads' sums) from the element's (qT, qH,
+    C_D,p U) ``q`` or a derivative of it: qT, qH sin psi + kr C_D,p U cos^2 psi, qH, qT sin psi,
+    -qH cos psi + kr C_D,p U cos psi sin psi, -qT cos psi (kr: the radial drag's V sin beta)."""
+    return (q[0], q[1] * sk + kr * q[2] * ck * ck, q[1], q[0] * sk, -q[1] * ck + kr * q[2] * ck * sk, -q[0] * ck)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens):
+def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
+    """Rows 0-6 of ``P``: the annulus' six load densities' partials at its fixed root in v,
+    Omega, V sin beta, V cos beta, the blade angle, g_x and g_y, from one evaluation per node of
+    the element with its analytic partials in U_T, U_P, the section constants' slope in U2 and
+    the blade angle (core/_tangents.py, as core/_sensitivity._partials for the uniform inflow),
+    over the full circle: at node psi, U_T = Omega y + V sin beta sin psi, U_P = V cos beta +
+    v (1 + g_x cos psi + g_y sin psi), U2 = (Omega y)^2 + V sin^2 beta / 2 + V cos^2 beta (the
+    constants'), and the radial drag's factor V sin beta. ``op`` = (Omega, V sin beta,
+    V cos beta), ``sec`` = (the section constants, their slopes in U2), ``g`` = (g_x, g_y)."""
+    Om, Vs, Vc = op
+    gx, gy = g
+    s, u = sec
+    sinpsi = azim[0]
+    cospsi = azim[1]
+    naz = sinpsi.shape[0]
+    krad = pk[PK_RADIAL_DRAG]
+    kr = krad * Vs
+    # the sums of the integrands of the element's partials: 0-2 U_P's (weights 1, cos, sin), 3-4 U_T's (1, sin),
+    # 5 the constants' slope's, 6 the blade angle's; 7 the radial drag's base (C_D,p U cos^2, cos sin)
+    S = np.zeros((8, 6))
+    zero = (0.0, 0.0, 0.0)
+    for k in range(naz):
+        sk = sinpsi[k]
+        ck = cospsi[k]
+        UT = Om * y + Vs * sk
+        UP = Vc + v * (1.0 + gx * ck + gy * sk)
+        if model == CAMBERED:
+            base, d_t, d_p, d_u, d_c = _cambered_tangent(UT, UP, th, np.sin(th), np.cos(th), (s[0], s[1], s[2], s[3]),
+                                                         (u[0], u[1], u[2], u[3]),
+                                                         (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]))
+        else:
+            base, d_t, d_p, d_c = _gill_tangent(UT, UP, th, np.sin(th), np.cos(th), s[0],
+                                                (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5]), model == GILL_SINCOS)
+            d_u = zero
+        lp = _integrands(d_p, sk, ck, kr)
+        lt = _integrands(d_t, sk, ck, kr)
+        lu = _integrands(d_u, sk, ck, kr)
+        lc = _integrands(d_c, sk, ck, kr)
+        for q in range(6):
+            S[0, q] += lp[q]
+            S[1, q] += lp[q] * ck
+            S[2, q] += lp[q] * sk
+            S[3, q] += lt[q]
+            S[4, q] += lt[q] * sk
+            S[5, q] += lu[q]
+            S[6, q] += lc[q]
+        S[7, 1] += base[2] * ck * ck
+        S[7, 4] += base[2] * ck * sk
+    cf = cfac / naz
+    for q in range(6):
+        f = cf * y if q == 2 or q == 3 or q == 5 else cf  # Q, M_R and M_P carry the radius
+        P[0, q] = f * (S[0, q] + gx * S[1, q] + gy * S[2, q])  # dU_P/dv = 1 + g_x cos + g_y sin
+        P[1, q] = f * (y * S[3, q] + 2.0 * Om * y * y * S[5, q])
+        P[2, q] = f * (S[4, q] + Vs * S[5, q] + krad * S[7, q])
+        P[3, q] = f * (S[0, q] + 2.0 * Vc * S[5, q])
+        P[4, q] = f * S[6, q]
+        P[5, q] = f * v * S[1, q]
+        P[6, q] = f * v * S[2, q]
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g, pk):
+    """Rows 7, 8, ... of ``P``: the cambered element's derivatives along each section parameter's
+    and the density's direction (row m of ``dS``, shape (n_m, 4), and ``dC``, shape (n_m, 8):
+    the stepped value's section constants and polar constants less the base's), divided by the
+    step ``spans[m]``, from one evaluation per node (core/_tangents.make_cambered_direction, as
+    core/_sensitivity._parameter_partials for the uniform inflow), summed into the six loads over
+    the full circle. ``stw`` shape (N_STATE, >= the node count): scratch for the nodes' states."""
+    Om, Vs, Vc = op
+    gx, gy = g
+    sinpsi = azim[0]
+    cospsi = azim[1]
+    naz = sinpsi.shape[0]
+    kr = pk[PK_RADIAL_DRAG] * Vs
+    con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
+    sth = np.sin(th)
+    cth = np.cos(th)
+    for k in range(naz):
+        st = _cambered_state(Om * y + Vs * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
+                             sec, con)
+        for c in range(N_STATE):  # unrolled: the state is a tuple of floats
+            stw[c, k] = st[c]
+    cf = cfac / naz
+    for m in range(dS.shape[0]):
+        dsec = (dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3])
+        dcon = (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7])
+        a0 = a1 = a2 = a3 = a4 = a5 = 0.0
+        for k in range(naz):
+            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
+                  stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
+                  stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
+                  stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
+            l0, l1, l2, l3, l4, l5 = _integrands(_cambered_direction(st, dsec, dcon), sinpsi[k], cospsi[k], kr)
+            a0 += l0
+            a1 += l1
+            a2 += l2
+            a3 += l3
+            a4 += l4
+            a5 += l5
+        f = cf / spans[m]
+        P[7 + m, 0] = f * a0
+        P[7 + m, 1] = f * a1
+        P[7 + m, 2] = f * y * a2
+        P[7 + m, 3] = f * y * a3
+        P[7 + m, 4] = f * a4
+        P[7 + m, 5] = f * y * a5
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
+def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens, stw):
     """The annulus' load partials at its fixed root, into ``P`` (rows: v, Omega, V sin beta,
-    V cos beta, the blade angle, g_x, g_y, then each section parameter and the density's
-    Reynolds part; columns the six loads of annulus_loads). ``op`` = (Omega, V sin beta,
-    V cos beta), ``ann`` = (y, sc, cy2, cfac, sc at the stepped density), ``g`` = (g_x, g_y),
-    ``dens`` = (the stepped sc of every annulus, the density's step; 0: not asked)."""
+    V cos beta, the blade angle, g_x, g_y (:func:`_input_partials`), then each section
+    parameter and the density's Reynolds part: for the cambered section along each one's
+    direction (:func:`_direction_partials`), for the paper's one-sided differences of the
+    blade's sums at the stepped constants; columns the six loads of annulus_loads). ``op`` =
+    (Omega, V sin beta, V cos beta), ``ann`` = (y, sc, cy2, cfac, sc at the stepped density),
+    ``g`` = (g_x, g_y), ``dens`` = (the stepped sc of every annulus, the density's step; 0: not
+    asked), ``stw`` the cambered directions' scratch (N_STATE, the node count)."""
     Om, Vs, Vc = op
     y, sc, cy2, cfac, scj = ann
     gx, gy = g
     naz = azim.shape[1]
-    s = _constants(Om, Vs, Vc, y, sc, cy2, model, cam)
-    base = _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk)
-    hv = STEP * (abs(v) + abs(Vc) + abs(Vs) + Om * y)
-    _central(P, 0, _loads(v + hv, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk),
-             _loads(v - hv, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk), hv)
-    ho = STEP * Om
-    _central(P, 1, _loads(v, y, Om + ho, Vs, Vc, th, _constants(Om + ho, Vs, Vc, y, sc, cy2, model, cam), cfac, azim,
-                          gx, gy, naz, model, pk),
-             _loads(v, y, Om - ho, Vs, Vc, th, _constants(Om - ho, Vs, Vc, y, sc, cy2, model, cam), cfac, azim, gx,
-                    gy, naz, model, pk), ho)
-    _central(P, 2, _loads(v, y, Om, Vs + hv, Vc, th, _constants(Om, Vs + hv, Vc, y, sc, cy2, model, cam), cfac, azim,
-                          gx, gy, naz, model, pk),
-             _loads(v, y, Om, Vs - hv, Vc, th, _constants(Om, Vs - hv, Vc, y, sc, cy2, model, cam), cfac, azim, gx,
-                    gy, naz, model, pk), hv)
-    _central(P, 3, _loads(v, y, Om, Vs, Vc + hv, th, _constants(Om, Vs, Vc + hv, y, sc, cy2, model, cam), cfac, azim,
-                          gx, gy, naz, model, pk),
-             _loads(v, y, Om, Vs, Vc - hv, th, _constants(Om, Vs, Vc - hv, y, sc, cy2, model, cam), cfac, azim, gx,
-                    gy, naz, model, pk), hv)
-    _central(P, 4, _loads(v, y, Om, Vs, Vc, th + STEP, s, cfac, azim, gx, gy, naz, model, pk),
-             _loads(v, y, Om, Vs, Vc, th - STEP, s, cfac, azim, gx, gy, naz, model, pk), STEP)
-    _central(P, 5, _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx + STEP, gy, naz, model, pk),
-             _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx - STEP, gy, naz, model, pk), STEP)
-    _central(P, 6, _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy + STEP, naz, model, pk),
-             _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy - STEP, naz, model, pk), STEP)
+    s, u = _constants_slopes((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
+    _input_partials(P, v, op, y, th, (s, u), cfac, azim, g, model, pk)
+    n_m = P.shape[0] - 7  # the section parameters' and the density's
+    if n_m == 0:
+        return
     pkpm, campm, cam_same, hpar = par
     n_par = hpar.shape[0]
     hrho = dens[1]
-    for m in range(n_par + (1 if hrho != 0.0 else 0)):  # one-sided: the constants at the stepped value
+    if model == CAMBERED:
+        dS = np.zeros((n_m, 4))
+        dC = np.zeros((n_m, 8))
+        spans = np.empty(n_m)
+        for m in range(n_m):
+            if m == n_par:  # the density, through the Reynolds constant sc
+                sa = _constants(Om, Vs, Vc, y, scj, cy2, model, cam)
+                spans[m] = hrho
+            else:
+                sa = s if cam_same[m] else _constants(Om, Vs, Vc, y, sc, cy2, model, campm[m])
+                for c in range(8):
+                    dC[m, c] = pkpm[m][c] - pk[c]
+                spans[m] = hpar[m]
+            for c in range(4):
+                dS[m, c] = sa[c] - s[c]
+        _direction_partials(P, dS, dC, spans, stw, v, op, y, th, s, cfac, azim, g, pk)
+        return
+    base = _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk)
+    for m in range(n_m):  # one-sided: the constants at the stepped value
         if m == n_par:  # the density, through the Reynolds constant sc
             a = _loads(v, y, Om, Vs, Vc, th, _constants(Om, Vs, Vc, y, scj, cy2, model, cam), cfac, azim, gx, gy, naz,
                        model, pk)
@@ -214,6 +330,7 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         dk[c, 1] = ky_mu * dmu + ky_lam * dlam
     h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (as _sensitivity)
     P = np.empty((7 + n_all - n_in, 6))
+    stw = np.empty((N_STATE, azim.shape[1] if model == CAMBERED and n_all > n_in else 0))
     dL = np.empty(6)
     scj = 0.0
     for j in range(nr):
@@ -224,7 +341,7 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         if hrho != 0.0:
             scj = scpm[j]
         _annulus_partials(P, vj, (om, vs, vc), th0[j] + dth, (yj, sc[j], cy2[j], cfac[j], scj), azim, (gx, gy), model,
-                          pk, cam, par, dens)
+                          pk, cam, par, dens, stw)
         mv, m_om, m_vs, m_vc = _momentum_derivatives(vj, om, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp, one_sided)
         Gv = P[0, 0] - mv
         m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
