@@ -255,6 +255,24 @@ def _sweep(prop, params, rpm, J):
     return np.column_stack([np.full(V.size, rpm), V, r.thrust, r.torque])
 
 
+def test_a_pushers_sweep_past_zero_thrust_is_negated_as_a_whole(tmp_path, truth_params):
+    """A pusher's run from static to beyond the zero-thrust advance ratio, torque still
+    positive: written negative at the static and low-J points, positive beyond; negative at
+    every static point, so it is negated as a whole and reads as the tractor's run."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = np.vstack([_sweep(prop, truth_params, 4000.0, [0.0]),  # two static points
+                      _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 1.0, 21))])
+    assert np.sum(rows[:, 2] < -0.02 * np.abs(rows[:, 2]).max()) >= 2 and rows[0, 2] > 0
+    assert np.all(rows[:, 3] > 0)  # (before the zero-torque advance ratio: one torque sign)
+    pusher = rows.copy()
+    pusher[:, 2] *= -1
+    d = read_loads(_rows_csv(tmp_path / "p.csv", ["rpm", "airspeed", "thrust", "torque"], pusher))
+    np.testing.assert_allclose(d.measured["thrust"], rows[:, 2], rtol=1e-5, atol=1e-9)
+    said = [n for n in d.notes if n.startswith("thrust negated")]
+    assert len(said) == 1 and "every static point (2;" in said[0], d.notes
+    assert sanity_check(d, prop) == []
+
+
 def test_a_thrust_that_changes_sign_is_read_as_written(tmp_path, truth_params):
     """A wind-tunnel sweep from static to beyond the zero-thrust advance ratio (windmilling):
     negative thrust at the high-J points only; nothing is negated (and nothing refused)."""

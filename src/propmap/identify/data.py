@@ -94,13 +94,17 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
     than 2% of the column's largest magnitude (those below are noise about zero), each
     decision a note: a torque negative at every point is negated (the stand's reaction
-    torque), a torque of both signs is refused. A thrust negative at every point, static
-    points among them (airspeed at most :data:`STATIC_AIRSPEED`, no negative
-    ``collective_deg``), is negated: at a standstill a propeller pulls, so it is the sign of
-    a pusher mount or of a stand mounted the other way round (propmap's thrust is positive
-    in the direction the propeller pulls, opposite to its slipstream). Any other thrust is
-    read as written: beyond its zero-thrust advance ratio a propeller makes negative thrust,
-    at some points of a sweep or at all of them (UIUC's apcsf_11x3.8 run kt0545).
+    torque), a torque of both signs is refused. A thrust negative at every static point
+    (airspeed at most :data:`STATIC_AIRSPEED`, no negative ``collective_deg``) is negated,
+    whatever its sign at the other points: at a standstill a propeller pulls, so it is the
+    sign of a pusher mount or of a stand mounted the other way round (propmap's thrust is
+    positive in the direction the propeller pulls, opposite to its slipstream); a pusher's
+    sweep past its zero-thrust advance ratio, written positive there, is negated as a whole.
+    Any other
+    thrust is read as written: beyond its zero-thrust advance ratio a propeller makes
+    negative thrust, at some points of a sweep or at all of them (UIUC's apcsf_11x3.8 run
+    kt0545); a run without a static point keeps its sign (:func:`sanity_check` names a
+    pusher's).
 
     Parameters
     ----------
@@ -219,12 +223,13 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if "thrust" in v and n:
         t = v["thrust"]
         big = _significant(t)
-        static = (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(n)) >= 0)
-        if big.any() and np.all(t[big] < 0) and np.any(static[big]):
+        static = big & (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(n)) >= 0)
+        if static.any() and np.all(t[static] < 0):
             v["thrust"] = -t
-            notes.append(f"thrust negated: {cm.column('thrust')!r} is negative at every point, static ones too: "
-                         "a pusher mount or a stand mounted the other way round; propmap's thrust is positive in "
-                         "the direction the propeller pulls, opposite to its slipstream")
+            notes.append(f"thrust negated: {cm.column('thrust')!r} is negative at every static point "
+                         f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
+                         "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
+                         "direction the propeller pulls, opposite to its slipstream")
     named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
     if n < min_points:
