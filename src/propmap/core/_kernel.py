@@ -112,8 +112,12 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     the flags', are written by :func:`point_flags`); ``rad``
     shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P and the swirl u the roots
     were solved with (0 without swirl) per annulus when ``radial``, else unused (pass shape
-    (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the rows status, annuli with multiple roots, annuli in vortex ring, residual evaluations (row
-    4, the working state, is :func:`point_flags`').
+    (N_RAD, 1, nr)); with a linear inflow model and no swirl the last row holds instead the
+    uniform solve's roots (NaN where that solve failed; the final ones at an axial point,
+    solved once), whose mean inflow set the gradients (the derivatives' start,
+    core/_linear_sensitivity.py); ``counts`` shape (N_COUNTS, n) int64, the rows status,
+    annuli with multiple roots, annuli in vortex ring, residual evaluations (row 4, the
+    working state, is :func:`point_flags`').
     ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
     4 + (annulus status code).
     """
@@ -193,6 +197,9 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
                 gx[j] = kx * y[j] / radius
                 gy[j] = ky * y[j] / radius
             naz = 2 * naz_half
+            if radial and not swirl:  # the uniform roots, kept for the derivatives (into rad's last row below)
+                for j in range(nr):
+                    work[9, j] = v[j] if code[j] == OK else np.nan
             solve_annuli(Om[i], Vs[i], Vc[i], nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status,
                          multiple)
             for j in range(nr):
@@ -241,6 +248,9 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
         Pi += w[j] * pm
         vsum += w[j] * y[j] * v[j]
         wsum += w[j] * y[j]
+    if radial and not swirl and inflow != INFLOW_UNIFORM:  # the uniform roots (docstring): the swirl row is free
+        for j in range(nr):
+            us[j] = v[j] if axial else work[9, j]
     out[0, i] = Ti if st == 0 else np.nan
     out[1, i] = Di if st == 0 else np.nan
     out[2, i] = Qi if st == 0 else np.nan

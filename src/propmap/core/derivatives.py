@@ -13,7 +13,7 @@ import numpy as np
 from . import _physics as ph
 from .airfoil import RECORD_META, SectionParams, _model_constants
 from .flapping import COMPLIANCE
-from .nodes import _cambered_args, _nodes, _prepared
+from .nodes import _cambered_args, _nodes
 
 __all__ = ["DERIVATIVE_LOADS", "FLAPPING_LOADS", "DERIVATIVE_INPUTS", "RHO", "NODE_FIELDS", "NOT_CONSTANTS",
            "PARAM_FLOOR", "differentiable"]
@@ -139,29 +139,8 @@ def _parameter_constants(names, params, air):
     return pks, cams, step
 
 
-def _uniform_solve(om, V, b, coll, propeller, params, air, discretization):
-    """The roots (shape (1, n, nr)), mean inflow and convergence of the points solved with the
-    uniform inflow: the first of the kernel's two solves with a linear inflow model (the same
-    operations, so the same mean inflow, which sets the gradients; core/_kernel.py)."""
-    from . import _kernel
-
-    nd, model, pk, cam, _, empirical, cls = _prepared(propeller, params, air, discretization)
-    n, nr = om.size, nd.y.size
-    Vs = V * np.sin(b)
-    Vs[np.abs(Vs) < 1e-12 * np.maximum(V, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi (as rotor_loads)
-    Vc = V * np.cos(b)
-    out = np.empty((_kernel.N_OUT, n))
-    rad = np.empty((_kernel.N_RAD, n, nr))
-    counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)
-    flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)
-    # (parallel, as the sensitivity kernels are)
-    _kernel.solve_batch(om, Vs, Vc, coll, nd.rows, nd.azimuth, model, pk, cam, ph.INFLOW_UNIFORM, empirical, False,
-                        propeller.radius, True, cls, out, rad, counts, flags)
-    return np.ascontiguousarray(rad[:1]), out[6].copy(), flags[0].copy()
-
-
 def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
-              discretization, loads) -> dict:
+              discretization, loads, uniform_roots=None) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
     the sensitivity kernel (core/_sensitivity.py). With :data:`STILL_AIR`, at the points with
     V = 0 the loads' slopes in the velocity, from the kernel's one-sided airspeed derivatives
@@ -197,7 +176,12 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
         _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,
                                    n_in, par, scp, hrho, raw)
     else:  # the uniform solve's mean inflow and its derivatives, then the linear inflow's (core/_linear_sensitivity.py)
-        roots_u, vu, converged_u = _uniform_solve(om, V, b, coll, propeller, params, air, discretization)
+        # the uniform solve's roots, kept by the kernel (core/_kernel._solve_point), shape (n, nr); its mean inflow
+        # weighted as the kernel's (w y), NaN where that solve failed
+        roots_u = np.ascontiguousarray(uniform_roots)[None]
+        wy = nd.rows[ph.NODE_W] * nd.rows[ph.NODE_Y]
+        vu = uniform_roots @ wy / wy.sum()
+        converged_u = np.isfinite(vu)
         _sensitivity.sensitivities(om, V, b, coll, roots_u, converged_u, nd.rows, nd.azimuth, model, pk, cam,
                                    empirical, n_in, par, scp, hrho, raw)
         lin = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])

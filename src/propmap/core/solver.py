@@ -382,8 +382,9 @@ def rotor_loads(
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
         # v_i (and the swirl), contiguous as the kernel is compiled for
         roots = np.ascontiguousarray(rad[::_kernel.N_RAD - 1]) if params.swirl else rad[:1]
+        uniform = rad[_kernel.N_RAD - 1] if inflow != ph.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
         raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
-                         propeller, discretization, rigid + (out[4], out[5])) if solved else {})
+                         propeller, discretization, rigid + (out[4], out[5]), uniform) if solved else {})
         if params.flap_compliance > 0:
             if COMPLIANCE in wrt:
                 raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})

@@ -226,7 +226,7 @@ def still_air_slopes(propeller: Propeller, params: AirfoilParams, omega, speed, 
     -------
     dict
         {"drag": dD/dV_s [N s/m], "rolling_moment": dM_R/dV_s [N s], "side_force": dY/dV_s
-        [N s/m], "pitching_moment": dM_P/dV_s [N s] (0 for rigid blades), "thrust": dT/dV_c
+        [N s/m], "pitching_moment": dM_P/dV_s [N s] (0 for rigid blades with the uniform inflow), "thrust": dT/dV_c
         [N s/m], "torque": dQ/dV_c [N s], "v_i_mean": dv_i,mean/dV_c [-]}, each shape S.
     """
     shape = np.broadcast_shapes(np.shape(speed), np.shape(omega))
@@ -328,7 +328,8 @@ def velocity_jacobian(loads: RotorLoads, V, z, spin, still=None) -> tuple:
           - d_ratio[..., None, None] * proj)
     dtau = -s[..., None, None] * (outer(z, row(Qs, Qc)) + outer(e, Rc[..., None] * z)
                                   + (Rs - r_ratio)[..., None, None] * ee + r_ratio[..., None, None] * proj)
-    # flapping blades (zeros for rigid ones): -spin Y l and -M_P l, l = z x e_ip, with dl/dV = -e_ip l^T / V_s, so
+    # flapping blades or a linear inflow (zeros for rigid blades with the uniform one): -spin Y l and -M_P l,
+    # l = z x e_ip, with dl/dV = -e_ip l^T / V_s, so
     # d(-spin Y l)/dV = -spin ((Y_s - Y / V_s) l e^T + Y_c l z^T + (Y / V_s) [z]x), as l e^T - e l^T = [z]x
     # (the cross-product matrix of z, isotropic in the disk plane), and M_P likewise; Y and M_P are odd in V_s
     (Ys, Yc), (Ps, Pc) = split("side_force"), split("pitching_moment")
