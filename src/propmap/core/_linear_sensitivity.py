@@ -46,11 +46,13 @@ from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, 
 from ._physics import NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y, PK_RADIAL_DRAG
 from ._sensitivity import (
     N_STATE,
+    _airspeed_components,
     _cambered_direction,
     _cambered_state,
     _cambered_tangent,
     _constants_slopes,
     _gill_tangent,
+    _start_point,
 )
 from ._sensitivity import _constants as _constants_inline
 
@@ -280,26 +282,11 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
     n_par = par[3].shape[0]
     n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
     n_cols = out.shape[1]  # n_all, or 3 more: the slopes at rest along three rays (core/_sensitivity.py)
+    wy = _start_point(out, i, ok, N_ROWS, w, y)
     if not ok[i]:
-        for q in range(N_ROWS):
-            for p in range(n_cols):
-                out[q, p, i] = np.nan
         return
-    for q in range(N_ROWS):
-        for p in range(n_cols):
-            out[q, p, i] = 0.0
-    wy = 0.0
-    for j in range(nr):
-        wy += w[j] * y[j]
     om, dth = Om[i], coll[i]
-    sb = np.sin(b[i])
-    cb = np.cos(b[i])
-    vs = V[i] * sb
-    vc = V[i] * cb
-    if abs(vs) < 1e-12 * V[i]:
-        vs = 0.0
-    if abs(vc) < 1e-12 * V[i]:
-        vc = 0.0
+    sb, cb, vs, vc = _airspeed_components(V[i], b[i])
     one_sided = V[i] == 0.0
     # each column's direction in (Omega, V sin beta, V cos beta, the blade angle): the inputs, then the
     # parameters and the density (0: they move the constants only), then the rays at rest

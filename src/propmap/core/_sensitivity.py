@@ -319,6 +319,39 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
         ps[1 + m, 4] = aR
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _start_point(out, i, ok, n_rows, w, y):
+    """Column ``i`` of rows 0 ... n_rows - 1 of ``out`` set to 0, or to NaN where the point did not
+    converge (``ok[i]`` False: returns 0.0, nothing more to do); else the mean inflow's weight
+    sum w y (as _kernel._solve_point: annulus area)."""
+    fill = 0.0 if ok[i] else np.nan
+    for q in range(n_rows):
+        for p in range(out.shape[1]):
+            out[q, p, i] = fill
+    if not ok[i]:
+        return 0.0
+    wy = 0.0
+    for j in range(y.shape[0]):
+        wy += w[j] * y[j]
+    return wy
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _airspeed_components(V, b):
+    """(sin beta, cos beta, V sin beta, V cos beta), each speed snapped to 0 where it is below
+    1e-12 V: exact axial flow at beta = 0, pi and exactly edgewise flow at pi/2 (cos(pi/2) is
+    6e-17), where the empirical descent model switches (as rotor_loads)."""
+    sb = np.sin(b)
+    cb = np.cos(b)
+    vs = V * sb
+    vc = V * cb
+    if abs(vs) < 1e-12 * V:
+        vs = 0.0
+    if abs(vc) < 1e-12 * V:
+        vc = 0.0
+    return sb, cb, vs, vc
+
+
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
 def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     y = nodes[NODE_Y]
@@ -337,30 +370,15 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     n_par = hpar.shape[0]
     n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
     n_rays = out.shape[1] - n_all  # 3: the slopes at rest along three rays in the last columns (sensitivities)
+    wy = _start_point(out, i, ok, 5, w, y)  # the mean inflow's weights
     if not ok[i]:
-        for q in range(5):
-            for p in range(out.shape[1]):
-                out[q, p, i] = np.nan
         return
-    for q in range(5):
-        for p in range(out.shape[1]):
-            out[q, p, i] = 0.0
-    wy = 0.0  # the mean inflow's weights (as _kernel._solve_point: annulus area)
     m2 = 0.0  # the mean of sin(psi)^2 over the half circle's nodes (the axial point's one node stands for them)
-    for j in range(nr):
-        wy += w[j] * y[j]
     for k in range(naz_half):
         m2 += sinpsi[k] * sinpsi[k]
     m2 /= naz_half
     om, dth = Om[i], coll[i]
-    sb = np.sin(b[i])
-    cb = np.cos(b[i])
-    vs = V[i] * sb
-    vc = V[i] * cb
-    if abs(vs) < 1e-12 * V[i]:
-        vs = 0.0
-    if abs(vc) < 1e-12 * V[i]:  # exactly edgewise (cos(pi/2) is 6e-17): where the empirical descent model switches
-        vc = 0.0
+    sb, cb, vs, vc = _airspeed_components(V[i], b[i])
     axial = vs == 0.0
     naz = 1 if axial else naz_half  # in axial flow the integrand does not depend on psi
     # the nodes' sin psi for the passes; the axial point's one node at psi = 0 (its sin-weighted sums are replaced by
