@@ -12,8 +12,8 @@ lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
     .venv/bin/python tools/flight_design_table.py [--differences] [ROW ...]    # all rows: about 5 min on 2 cores
 
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
-Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's implicit derivatives
-cost about 3x the loads (docs/solver.md), and row C takes about 1.5 minutes.
+Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads cost 2.4x the
+uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes.
 ``--differences``: the fits' Jacobians by central differences of the solver instead of the
 implicit derivatives (an A/B of the two; the same optimum).
 """
