@@ -142,7 +142,10 @@ def _parameter_constants(names, params, air):
 def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
               discretization, loads, uniform_roots=None) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
-    the sensitivity kernel (core/_sensitivity.py). With :data:`STILL_AIR`, at the points with
+    the sensitivity kernel (core/_sensitivity.py); with a linear inflow model, of that kernel at
+    ``uniform_roots`` (shape (n, nr): the kernel's uniform solve, core/_kernel._solve_point) and
+    then of core/_linear_sensitivity.py at ``roots``, which also gives the side force and the
+    pitching moment. With :data:`STILL_AIR`, at the points with
     V = 0 the loads' slopes in the velocity, from the kernel's one-sided airspeed derivatives
     along three rays at the same roots (at rest the root does not depend on the incidence):
     edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that this one-sided slope is

@@ -394,7 +394,7 @@ def rotor_loads(
         else:  # rigid blades with the uniform inflow: no side force or pitching moment at any input (a linear
             # inflow's are the kernel's)
             raw.update({(q, w): np.zeros(n) for q in FLAPPING_LOADS for w in solved if (q, w) not in raw})
-            if COMPLIANCE in wrt:  # (D and M_R are quadratic in it here, Y and M_P linear)
+            if COMPLIANCE in wrt:  # (Y and M_P linear in it; D and M_R too with a linear inflow, else quadratic)
                 raw.update(rigid_compliance_derivatives(
                     T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
                     propeller.n_blades, pitching_moment=out[5]))

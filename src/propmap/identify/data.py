@@ -100,10 +100,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     sign of a pusher mount or of a stand mounted the other way round (propmap's thrust is
     positive in the direction the propeller pulls, opposite to its slipstream); a pusher's
     sweep past its zero-thrust advance ratio, written positive there, is negated as a whole.
-    Any other
-    thrust is read as written: beyond its zero-thrust advance ratio a propeller makes
-    negative thrust, at some points of a sweep or at all of them (UIUC's apcsf_11x3.8 run
-    kt0545); a run without a static point keeps its sign (:func:`sanity_check` names a
+    Any other thrust is read as written: beyond its zero-thrust advance ratio a propeller
+    makes negative thrust, at some points of a sweep or at all of them (UIUC's apcsf_11x3.8
+    run kt0545); a run without a static point keeps its sign (:func:`sanity_check` names a
     pusher's).
 
     Parameters
@@ -386,8 +385,8 @@ _UNIT_SLIPS = [
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
     (1.0, -1.0, "the stand's reaction torque, of the opposite sign, in a file whose torque also changes sign"),
     (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
-                 "negates it only where it is negative at every point, static ones too): negate the thrust "
-                 "column")),
+                 "negates it only where it is negative at every static point): negate the "
+                 "thrust column")),
 ]
 
 
