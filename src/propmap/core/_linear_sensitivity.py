@@ -24,11 +24,13 @@ with dlambda/dx carrying dv_u/dx, the uniform solve's mean-inflow derivative (ro
 at the fixed root (no root solve in them) in v, Omega, V sin beta, V cos beta, the blade angle,
 g_x and g_y are analytic: one evaluation per node of the element with its partials in U_T,
 U_P, the section constants' slope in U2 and the blade angle (core/_tangents.py, as the uniform
-inflow's), weighted by each variable's chain (:func:`_input_partials`); in the section
-parameters and the density's Reynolds constant they are one-sided differences of the
-annulus' loads (_annulus.annulus_loads: the blade's sums) at the constants stepped by the
-caller, as for the uniform inflow's paper section; the momentum side's are
-_momentum_sensitivity's (analytic but at the empirical descent model's switch). The gradients' own partials k_mu, k_lambda are central differences
+inflow's), weighted by each variable's chain (:func:`_input_partials`). Those in the section
+parameters and the density's Reynolds constant start from the constants stepped by the caller
+(one-sided, as for the uniform inflow): for the cambered section the element's derivative
+along that change, one evaluation per node (:func:`_direction_partials`), for the paper's the
+annulus' loads at the stepped constants less the base (_annulus.annulus_loads: the blade's
+sums). The momentum side's are _momentum_sensitivity's (analytic but at the empirical descent
+model's switch). The gradients' own partials k_mu, k_lambda are central differences
 of _physics.inflow_gradients (step 1e-6), one-sided (second order) at mu = 0, where they are
 defined for mu >= 0 only: an axial point (V sin beta = 0, solved with the uniform inflow only,
 where g = 0) gets the right-hand slope in V sin beta, the one that the in-plane loads, odd in
