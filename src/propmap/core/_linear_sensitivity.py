@@ -54,6 +54,7 @@ from ._sensitivity import (
     _cambered_tangent,
     _constants_slopes,
     _gill_tangent,
+    _input_directions,
     _start_point,
 )
 from ._sensitivity import _constants as _constants_inline
@@ -294,15 +295,7 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
     # parameters and the density (0: they move the constants only), then the rays at rest
     e = np.zeros((n_cols, 4))
     if n_in > 0:
-        e[0, 0] = 1.0
-        e[1, 1] = sb
-        e[1, 2] = cb
-        e[2, 1] = V[i] * cb
-        e[2, 2] = -V[i] * sb
-        if vs == 0.0 and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray
-            e[1, 1] = 0.0
-    if n_in > 3:
-        e[3, 3] = 1.0
+        _input_directions(e, n_in, V[i], sb, cb, vs)
     for k in range(n_cols - n_all):  # the rays beta = 0, pi/2, pi
         e[n_all + k, 1] = 1.0 if k == 1 else 0.0
         e[n_all + k, 2] = 1.0 - k if k != 1 else 0.0

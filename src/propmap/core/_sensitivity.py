@@ -352,6 +352,21 @@ def _airspeed_components(V, b):
     return sb, cb, vs, vc
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _input_directions(e, n, V, sb, cb, vs):
+    """Rows 0 ... n - 1 (n = 3 or 4) of ``e``: the directions of omega, the airspeed, the
+    incidence (and the collective) in (Omega, V sin beta, V cos beta, the blade angle); along
+    the airspeed's ray exactly no in-plane speed where V sin beta was snapped to 0 at V > 0
+    (:func:`_airspeed_components`)."""
+    e[0, 0] = 1.0
+    e[1, 1] = 0.0 if vs == 0.0 and V > 0.0 else sb
+    e[1, 2] = cb
+    e[2, 1] = V * cb
+    e[2, 2] = -V * sb
+    if n > 3:
+        e[3, 3] = 1.0
+
+
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
 def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     y = nodes[NODE_Y]
@@ -384,16 +399,8 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     # the nodes' sin psi for the passes; the axial point's one node at psi = 0 (its sin-weighted sums are replaced by
     # the half circle's means below, and its radial-drag weight cos^2 psi is then 1)
     sn = np.zeros(1) if axial else sinpsi
-    # each input's direction in (Omega, V sin beta, V cos beta, collective) and its step
-    e = np.zeros((4, 4))
-    e[0, 0] = 1.0
-    e[1, 1] = sb
-    e[1, 2] = cb
-    e[2, 1] = V[i] * cb
-    e[2, 2] = -V[i] * sb
-    e[3, 3] = 1.0
-    if axial and V[i] > 0.0:  # exactly no in-plane speed along the airspeed's ray (V sin beta snapped to 0)
-        e[1, 1] = 0.0
+    e = np.zeros((4, 4))  # each input's direction in (Omega, V sin beta, V cos beta, collective)
+    _input_directions(e, 4, V[i], sb, cb, vs)
     h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (the tip's speed scale)
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
