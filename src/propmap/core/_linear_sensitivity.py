@@ -53,9 +53,11 @@ from ._sensitivity import (
     _cambered_state,
     _cambered_tangent,
     _constants_slopes,
+    _direction,
     _gill_tangent,
     _input_directions,
     _start_point,
+    _stored_state,
 )
 from ._sensitivity import _constants as _constants_inline
 
@@ -191,14 +193,10 @@ def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g,
             stw[c, k] = st[c]
     cf = cfac / naz
     for m in range(dS.shape[0]):
-        dsec = (dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3])
-        dcon = (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7])
+        dsec, dcon = _direction(dS, dC, m)
         a0 = a1 = a2 = a3 = a4 = a5 = 0.0
         for k in range(naz):
-            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
-                  stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
-                  stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
-                  stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
+            st = _stored_state(stw, k)
             l0, l1, l2, l3, l4, l5 = _integrands(_cambered_direction(st, dsec, dcon), sinpsi[k], cospsi[k], kr)
             a0 += l0
             a1 += l1

@@ -279,6 +279,24 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
             (cT, cTs, cH, cHs, rC))
 
 
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _stored_state(stw, k):
+    """The cambered element's state at node ``k`` (a tuple of N_STATE floats) from the scratch
+    ``stw`` shape (N_STATE, >= k + 1) that :func:`_parameter_partials` fills."""
+    return (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
+            stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
+            stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
+            stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _direction(dS, dC, m):
+    """Direction ``m`` as (its section constants' change, its polar constants' change): rows m of
+    ``dS`` shape (n, 4) and ``dC`` shape (n, 8) as tuples (:func:`_parameter_partials`)."""
+    return ((dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3]),
+            (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7]))
+
+
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, pk):
     """The cambered element's derivatives along ``n_m`` directions over the nodes of one annulus,
@@ -297,15 +315,11 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
         for c in range(N_STATE):  # unrolled: the state is a tuple of floats
             stw[c, k] = st[c]
     for m in range(n_m):
-        dsec = (dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3])
-        dcon = (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7])
+        dsec, dcon = _direction(dS, dC, m)
         aT = aTs = aH = aHs = aR = 0.0
         for k in range(naz):
             sk = sinpsi[k]
-            st = (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
-                  stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
-                  stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
-                  stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
+            st = _stored_state(stw, k)
             dqT, dqH, dgR = _cambered_direction(st, dsec, dcon)
             aT += dqT
             aTs += dqT * sk
