@@ -279,11 +279,53 @@ def test_a_thrust_that_changes_sign_is_read_as_written(tmp_path, truth_params):
     prop = pm.load_propeller("apce_8x6")
     rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 1.0, 21))
     assert np.sum(rows[:, 2] < -0.02 * np.abs(rows[:, 2]).max()) >= 2 and rows[0, 2] > 0
-    assert np.all(rows[:, 3] > 0)  # (a torque of both signs is refused)
+    assert np.all(rows[:, 3] > 0)  # (before the zero-torque advance ratio)
     d = read_loads(_rows_csv(tmp_path / "t.csv", ["rpm", "airspeed", "thrust", "torque"], rows))
     np.testing.assert_allclose(d.measured["thrust"], rows[:, 2], rtol=1e-5, atol=1e-9)  # (6 digits written)
     assert not any("thrust negated" in n for n in d.notes), d.notes
     assert sanity_check(d, prop) == []
+
+
+def test_a_windmilling_sweep_keeps_its_negative_torque_and_a_reaction_torque_is_negated(tmp_path, truth_params):
+    """A tunnel sweep from static to beyond the zero-torque advance ratio (J about 1.04 for the
+    calibrated apce_8x6): the propeller's own torque changes sign, so it is read as written
+    (with a note); the same run with the stand's reaction torque is negative at its static
+    points and is negated as a whole; without a static point the least advanced points
+    decide. Each reads as the propeller's run and passes the sanity check."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 1.3, 27))
+    assert rows[0, 3] > 0 and np.sum(rows[:, 3] < -0.02 * rows[:, 3].max()) >= 4  # windmilling at J >= 1.1
+    header = ["rpm", "airspeed", "thrust", "torque"]
+    for name, sign, tail in (("own", 1, rows), ("reaction", -1, rows), ("tunnel", -1, rows[4:])):
+        written = tail.copy()
+        written[:, 3] *= sign
+        d = read_loads(_rows_csv(tmp_path / f"{name}.csv", header, written))
+        np.testing.assert_allclose(d.measured["torque"], tail[:, 3], rtol=1e-5, atol=1e-9)
+        assert any(n.startswith("torque negative at ") and "windmills" in n for n in d.notes), d.notes
+        assert any(n.startswith("torque negated") for n in d.notes) == (sign < 0), d.notes
+        assert ("without a static one" in " ".join(d.notes)) == (name == "tunnel"), d.notes
+        assert sanity_check(d, prop) == []
+
+
+def test_a_torque_of_both_signs_where_a_propeller_takes_power_is_refused(tmp_path, truth_params):
+    """Static points of both torque signs, or a negative torque where the propeller pulls in
+    climb (in part of the file a reaction torque), cannot be one propeller's: refused, naming
+    the column; a windmill-brake point in descent (thrust up, torque negative) is not."""
+    prop = pm.load_propeller("apce_8x6")
+    header = ["rpm", "airspeed", "thrust", "torque"]
+    rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 0.8, 9))
+    both = np.vstack([_sweep(prop, truth_params, 4000.0, [0.0]), rows])
+    both[0, 3] *= -1  # one static point's torque of the other sign
+    with pytest.raises(DataError, match=r"'torque' has both signs at the static points \(1 negative, 1 positive\)"):
+        read_loads(_rows_csv(tmp_path / "b.csv", header, both))
+    part = rows.copy()
+    part[5:, 3] *= -1  # the faster half as a reaction torque, the thrust still positive
+    with pytest.raises(DataError, match=r"'torque' has the other sign .* at 4 points, 4 of them with positive thrust"):
+        read_loads(_rows_csv(tmp_path / "p.csv", header, part))
+    brake = np.column_stack([np.full(7, 4000.0), np.linspace(0.0, 12.0, 7), np.linspace(1.0, 3.0, 7),
+                             np.linspace(0.02, -0.01, 7), np.linspace(0.0, 180.0, 7)])
+    d = read_loads(_rows_csv(tmp_path / "d.csv", [*header, "incidence_deg"], brake))
+    assert d.measured["torque"][-1] < 0 and any("windmills" in n for n in d.notes), d.notes
 
 
 def test_a_run_entirely_beyond_the_zero_thrust_advance_ratio_keeps_its_sign(tmp_path, truth_params):

@@ -93,8 +93,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
     than 2% of the column's largest magnitude (those below are noise about zero), each
-    decision a note: a torque negative at every point is negated (the stand's reaction
-    torque), a torque of both signs is refused. A thrust negative at every static point
+    decision a note: a torque negative at every static point (without one: at every point
+    at the smallest axial advance V cos(incidence) / rpm, the most loaded) is negated (the
+    stand's reaction torque); a torque of both signs there is refused; a torque of the other
+    sign elsewhere is read as written (windmilling, noted), unless the thrust is positive
+    there in climb or edgewise flow (a propeller that pulls takes power: refused). A thrust
+    negative at every static point
     (airspeed at most :data:`STATIC_AIRSPEED`, no negative ``collective_deg``) is negated,
     whatever its sign at the other points: at a standstill a propeller pulls, so it is the
     sign of a pusher mount or of a stand mounted the other way round (propmap's thrust is
@@ -129,8 +133,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         non-numeric or non-finite value, a value out of range (rpm outside
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
         incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
-        |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque whose sign
-        changes between points, fewer than ``min_points`` points, or all operating points
+        |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
+        at the static points (or the least advanced ones), a negative torque where the
+        thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
         identical; the message names the file, the line and the column.
     """
     from .stand import map_columns, stand_points
@@ -208,17 +213,6 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         v.pop("esc", None)
         v.pop("time", None)
     # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
-    if "torque" in v and n:
-        q = v["torque"]
-        big = _significant(q)
-        if big.any() and np.all(q[big] < 0):
-            v["torque"] = -q
-            notes.append("torque negated: it is the stand's reaction torque (negative here); the propeller's "
-                         "torque opposes its rotation")
-        elif big.any() and np.any(q[big] < 0) and np.any(q[big] > 0):
-            raise DataError(f"{what}: {p}: column {cm.column('torque')!r} changes sign between points "
-                            f"({int(np.sum(q[big] < 0))} negative, {int(np.sum(q[big] > 0))} positive): one propeller "
-                            "turning one way has one torque sign")
     if "thrust" in v and n:
         t = v["thrust"]
         big = _significant(t)
@@ -229,6 +223,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                          f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
                          "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
                          "direction the propeller pulls, opposite to its slipstream")
+    if "torque" in v and n:
+        v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
     named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
     if n < min_points:
@@ -241,6 +237,57 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes))
+
+
+def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:
+    """The torque column turned to the propeller's sign (read_loads' docstring, the sign rules).
+
+    The reference points are the significant static ones (airspeed at most
+    :data:`STATIC_AIRSPEED`), else those at the smallest axial advance V cos(incidence) / rpm,
+    the most loaded: there a propeller absorbs power whatever its collective, so a torque
+    negative at all of them is the stand's reaction torque and is negated. Elsewhere a
+    negative torque is windmilling (beyond the zero-torque advance ratio) and kept, but in
+    climb or edgewise flow (V cos(incidence) >= 0) only where the thrust, if measured, is not
+    positive: the shaft power is T V cos(incidence) plus the induced and profile powers, so a
+    propeller that pulls against the flow takes power, and its torque changes sign after its
+    thrust (in descent, the windmill-brake state, it may both pull and give power).
+    """
+    q = v["torque"]
+    big = _significant(q)
+    if not big.any():
+        return q
+    static = big & (v["airspeed"] <= STATIC_AIRSPEED)
+    if static.any():
+        ref, where = static, "static point"
+    else:
+        x = v["airspeed"] * np.cos(np.radians(v["incidence_deg"])) / v["rpm"]
+        ref, where = big & (x <= np.min(x[big]) * (1 + 1e-9) + 1e-300), "point at the smallest advance ratio"
+    if np.any(q[ref] < 0) and np.any(q[ref] > 0):
+        raise DataError(f"{what}: {p}: column {column!r} has both signs at the {where}s ({int(np.sum(q[ref] < 0))} "
+                        f"negative, {int(np.sum(q[ref] > 0))} positive): there a propeller absorbs power, so one "
+                        "propeller turning one way has one torque sign")
+    if np.all(q[ref] < 0):
+        q = -q
+        notes.append("torque negated: it is the stand's reaction torque (negative at every " + where
+                     + ("" if static.any() else " of a run without a static one") + "); the propeller's torque "
+                     "opposes its rotation")
+    neg = big & (q < 0)
+    if neg.any():
+        if "thrust" in v:
+            t = v["thrust"]
+            climb = np.cos(np.radians(v["incidence_deg"])) >= 0
+            pulls = neg & climb & _significant(t) & (t > 0)
+            if pulls.any():
+                raise DataError(f"{what}: {p}: column {column!r} has the other sign than at the {where}s at "
+                                f"{int(neg.sum())} points, {int(pulls.sum())} of them with positive thrust: a "
+                                "propeller that pulls in climb or edgewise flow takes power, so the torque changes "
+                                "sign only beyond the zero-thrust advance ratio (windmilling); is part of the file "
+                                "a reaction torque?")
+        speeds = v["airspeed"][neg]
+        notes.append(f"torque negative at {int(neg.sum())} of {int(big.sum())} points (airspeed {np.min(speeds):.3g}-"
+                     f"{np.max(speeds):.3g} m/s), read as written: the propeller windmills there, beyond its "
+                     "zero-torque advance ratio")
+    return q
 
 
 def _significant(x: np.ndarray) -> np.ndarray:
@@ -383,7 +430,8 @@ _UNIT_SLIPS = [
     (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
-    (1.0, -1.0, "the stand's reaction torque, of the opposite sign, in a file whose torque also changes sign"),
+    (1.0, -1.0, ("the stand's reaction torque, of the opposite sign, in a run whose torque changes sign, or "
+                 "windmilling at every point (beyond the zero-torque advance ratio) read as a reaction torque")),
     (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
                  "negates it only where it is negative at every static point): negate the "
                  "thrust column")),
