@@ -226,6 +226,33 @@ def test_joint_fit_weights_propellers_alike(apc8x6):
     assert other.cl_alpha < r.params.cl_alpha < TRUE.cl_alpha
 
 
+def test_joint_fit_weights_move_the_compromise_toward_the_heavier_propeller(apc8x6):
+    """Per-dataset weights (the catalogue tool's family balance): a propeller's residuals
+    carry sqrt(w / n), so weighting one propeller 9 times the other pulls the joint
+    cl_alpha toward its truth, and weights of one each give the default fit; bad weights
+    are refused naming the argument."""
+    from propmap.identify import fit_loads_joint
+
+    other = TRUE.replace(cl_alpha=5.0, cd_min=0.03)
+    big = synthetic(apc8x6, TRUE)
+    small = synthetic(apc8x6, other, sweep_rpm=(5000.0,))
+    base = generic_params().replace(re_exp_lift=TRUE.re_exp_lift, re_exp=TRUE.re_exp, alpha_L0_re=TRUE.alpha_L0_re)
+    opts = FitOptions(names=CAMBERED_FIT, prior=False)
+    pairs = [(big, apc8x6), (small, apc8x6)]
+    alike = fit_loads_joint(pairs, base=base, options=opts)
+    ones = fit_loads_joint(pairs, base=base, options=opts, weights=[1.0, 1.0])
+    np.testing.assert_array_equal(ones.residuals, alike.residuals)
+    heavy = fit_loads_joint(pairs, base=base, options=opts, weights=[1.0, 9.0])
+    assert other.cl_alpha < heavy.params.cl_alpha < alike.params.cl_alpha - 0.1
+    # the per-propeller rms stays the unweighted one
+    own = fit_loads(small, apc8x6, base=heavy.params, options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=1))
+    assert heavy.extra["per_propeller"][1]["rms_residual"] == pytest.approx(np.sqrt(np.mean(own.residuals**2)),
+                                                                          rel=1e-9)
+    for bad in ([1.0], [1.0, 0.0], [1.0, float("nan")]):
+        with pytest.raises(ValueError, match="weights must be 2 positive finite numbers"):
+            fit_loads_joint(pairs, base=base, options=opts, weights=bad)
+
+
 def test_prior_and_M_effect_report_the_data_residual(apc8x6):
     """With the prior and a fit at another M, the M_effect rms values are the data's
     residual under each M (the prior rows excluded), and they differ."""

@@ -3,12 +3,15 @@
 Run from the repository root (141 s on the 2-core machine, two worker processes, 2026-11-23;
 about 40 minutes before the fits had implicit Jacobians):
 
-    .venv/bin/python tools/calibrate_catalogue.py [--jobs 2] [--swirl]
+    .venv/bin/python tools/calibrate_catalogue.py [--jobs 2] [--balance families] [--swirl] [--work DIR]
 
-``--swirl`` calibrates the model with the swirl option (RotorOptions.swirl) on every fit: 984 s
-on the same machine (2026-11-23; the fits difference the solver, which costs 5x per point
-with swirl). It overwrites the shipped calibration like any run: do it in a scratch copy of
-the repository (docs/models.md, Swirl).
+``--balance families`` weights every UIUC family alike instead of every propeller (in the
+generic set's joint fit, its Reynolds medians and the prior's covariance; measured and not
+adopted, docs/validation.md). ``--swirl`` calibrates the model with the swirl option
+(RotorOptions.swirl) on every fit: 984 s on the same machine (2026-11-23; the fits
+difference the solver, which costs 5x per point with swirl). Either overwrites the shipped
+calibration like any run: do it in a scratch copy of the repository, or restore the file
+afterwards (docs/models.md, Swirl). ``--work DIR`` keeps each step's results for a rerun.
 
 The procedure (docs/validation.md explains and measures each choice) is hierarchical, over
 every catalogue propeller with a static run and J-sweeps, both UIUC volumes:
@@ -102,21 +105,42 @@ def _coverage(datasets) -> dict:
     return {"J_max": max(J), "incidence_deg_max": max(float(np.degrees(np.max(d.incidence))) for d, _ in datasets)}
 
 
-def _generic(names, single, data, start=START):
+def _weights(names, balance: str) -> np.ndarray:
+    """Each propeller's share of the population statistics, summing to 1: alike
+    (``propellers``), or each family's alike, split among its members (``families``)."""
+    if balance == "propellers":
+        return np.full(len(names), 1.0 / len(names))
+    fam = [catalogue()[n].family for n in names]
+    size = {f: fam.count(f) for f in fam}
+    w = np.array([1.0 / size[f] for f in fam])
+    return w / w.sum()
+
+
+def _weighted_median(x: np.ndarray, w: np.ndarray) -> float:
+    """The value below which half of the weight lies (the plain median for equal weights)."""
+    order = np.argsort(x)
+    cw = np.cumsum(w[order]) - 0.5 * w[order]
+    return float(np.interp(0.5 * w.sum(), cw, x[order]))
+
+
+def _generic(names, single, data, start=START, balance="propellers"):
     """Steps 2-3 on ``names``: the generic set, its population statistics and its in-sample errors.
 
-    Reynolds terms: medians of the single-propeller fits; level parameters: joint fit from
-    ``start``; the prior's covariance: the spread of the single-propeller fits around this
-    generic set, sigma_d: their median rms residual.
+    Reynolds terms: (weighted) medians of the single-propeller fits; level parameters: joint
+    fit from ``start``; the prior's covariance: the (weighted) spread of the single-propeller
+    fits around this generic set, sigma_d: their median rms residual. ``balance``: the
+    weights (:func:`_weights`).
     """
+    w = _weights(names, balance)
     X = np.array([[single[n]["params"][k] for k in CAMBERED_FIT_RE] for n in names])
-    re_medians = {k: float(np.median(X[:, CAMBERED_FIT_RE.index(k)])) for k in RE_TERMS}
+    re_medians = {k: _weighted_median(X[:, CAMBERED_FIT_RE.index(k)], w) for k in RE_TERMS}
     data = [data[n] for n in names]
-    res = fit_loads_joint(data, base=start.replace(**re_medians),
+    res = fit_loads_joint(data, base=start.replace(**re_medians), weights=w * len(names),
                           options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=JOINT_MAX_NFEV))
     g = np.array([getattr(res.params, k) for k in CAMBERED_FIT_RE])
     dev = X - g
-    pop = {"names": list(CAMBERED_FIT_RE), "covariance": (dev.T @ dev / (len(names) - 1)).tolist(),
+    cov = (dev * w[:, None]).T @ dev / (1.0 - np.sum(w ** 2))  # unbiased for weights summing to 1
+    pop = {"names": list(CAMBERED_FIT_RE), "covariance": cov.tolist(),
            "sigma_data": float(np.median([single[n]["rms_residual"] for n in names])),
            "re_medians": re_medians, "n_propellers": len(names), "source": POPULATION_SOURCE}
     errs = [coefficient_errors(*d, res.params) for d in data]
@@ -159,6 +183,9 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2, help="worker processes")
     ap.add_argument("--swirl", action="store_true", help="calibrate with the swirl option on (an experiment)")
+    ap.add_argument("--balance", choices=("propellers", "families"), default="propellers",
+                    help="weights of the generic set's joint fit, Reynolds medians and prior: every propeller "
+                         "alike (default), or every family alike")
     ap.add_argument("--work", type=Path, default=None,
                     help="folder for the steps' results: a rerun reuses those already there (default: none kept)")
     args = ap.parse_args()
@@ -184,21 +211,23 @@ def main() -> None:
     # minute; run in the worker processes, a pair had not finished in 17); the folds start
     # from the full generic set
     data = {n: _data(n) for n in names}
-    joint = _load(work, "joint.json", names)
+    joint_file = "joint.json" if args.balance == "propellers" else f"joint_{args.balance}.json"
+    joint = _load(work, joint_file, names)
     if joint is None:
-        gparams, pop, gct, gcp, gn, ghit, gcov = _generic(names, single, data, start=start)
+        gparams, pop, gct, gcp, gn, ghit, gcov = _generic(names, single, data, start=start, balance=args.balance)
         print(f"generic: median rms dCT/CT0 {gct:.4f}, dCP/CP0 {gcp:.4f}; Reynolds medians {pop['re_medians']}",
               flush=True)
         folds = []
         for f in families:
             members = [n for n in names if cat[n].family != f]
-            p, fpop, c, cp, n_pts, hit, _ = _generic(members, single, data, start=params_from_si(gparams))
+            p, fpop, c, cp, n_pts, hit, _ = _generic(members, single, data, start=params_from_si(gparams),
+                                                     balance=args.balance)
             folds.append({**_entry(params_from_si(p), c, cp, n_pts), "label": f"generic without {f}",
                           "family": f, "propellers": members, "population": fpop})
             print(f"generic without {f}: median rms dCT/CT0 {c:.4f}{' (evaluation limit)' if hit else ''}",
                   flush=True)
         joint = {"generic": [gparams, pop, gct, gcp, gn, ghit, gcov], "folds": folds}
-        _save(work, "joint.json", joint)
+        _save(work, joint_file, joint)
     gparams, pop, gct, gcp, gn, ghit, gcov = joint["generic"]
     folds = joint["folds"]
     with pool() as ex:

@@ -486,19 +486,22 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
 
 
 def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,
-                    options: FitOptions = FitOptions()) -> FitResult:
+                    options: FitOptions = FitOptions(), weights=None) -> FitResult:
     """One parameter set fitted to the load measurements of several propellers at once.
 
     Each propeller's residuals (as :func:`fit_loads`, all measured quantities) are
-    weighted by 1/sqrt(its number of points), so that every propeller counts alike
-    whatever its number of measurements. This is how the catalogue's ``generic`` set is
-    made (tools/calibrate_catalogue.py).
+    weighted by sqrt(w / its number of points), so that every propeller counts in
+    proportion to its weight w whatever its number of measurements (alike by default).
+    This is how the catalogue's ``generic`` set is made (tools/calibrate_catalogue.py).
 
     Parameters
     ----------
     datasets : sequence of (LoadData, Propeller)
     base, air, options
         As :func:`fit_loads`.
+    weights : sequence of float, optional
+        One positive, finite weight per dataset, its share of the sum of squares (default:
+        1 each).
 
     Returns
     -------
@@ -509,7 +512,8 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     Raises
     ------
     ValueError
-        No datasets, or as :func:`fit_loads`.
+        No datasets, ``weights`` not one positive finite number per dataset, or as
+        :func:`fit_loads`.
     SolverError
         From the rotor model.
     """
@@ -518,13 +522,17 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     datasets = list(datasets)
     if not datasets:
         raise ValueError("fit_loads_joint needs at least one (data, propeller) pair")
+    w = np.ones(len(datasets)) if weights is None else np.asarray(weights, dtype=float)
+    if w.shape != (len(datasets),) or not np.all(np.isfinite(w) & (w > 0)):
+        raise ValueError(f"weights must be {len(datasets)} positive finite numbers (one per dataset), got "
+                         f"{weights!r:.80}")
     base = base or generic_params()
     air = base.air if air is None else air
     names = _default_names(base, options)
     makers = []
-    for data, prop in datasets:
+    for (data, prop), wk in zip(datasets, w):
         makers.append(_load_residual(data, prop, _load_keys(data, None), air, names, base,
-                                     weight=1.0 / math.sqrt(data.n))[0])
+                                     weight=math.sqrt(wk / data.n))[0])
 
     def make_residual(opts):
         parts = [m(opts) for m in makers]
@@ -545,9 +553,9 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     result = _finish(names, base, options, best, log, nfev, elapsed, warns,
                      nfev * sum(d.n for d, _ in datasets), air, {"kind": "loads_joint", **extra})
     per, k = [], 0
-    for data, prop in datasets:
+    for (data, prop), wk in zip(datasets, w):
         m = data.n * len(data.measured)
-        r = best.fun[k:k + m] * math.sqrt(data.n)
+        r = best.fun[k:k + m] * math.sqrt(data.n / wk)
         per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2)))})
         k += m
     result.extra["per_propeller"] = per
