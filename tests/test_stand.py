@@ -290,21 +290,30 @@ def test_a_windmilling_sweep_keeps_its_negative_torque_and_a_reaction_torque_is_
     """A tunnel sweep from static to beyond the zero-torque advance ratio (J about 1.04 for the
     calibrated apce_8x6): the propeller's own torque changes sign, so it is read as written
     (with a note); the same run with the stand's reaction torque is negative at its static
-    points and is negated as a whole; without a static point the least advanced points
-    decide. Each reads as the propeller's run and passes the sanity check."""
+    points and is negated as a whole; without a static point the points nearest to static,
+    where the propeller pulls, decide. Each reads as the propeller's run and passes the
+    sanity check. A pusher mount's windmilling sweep (thrust and torque both of the stand's
+    sign) reads the same. Values within 2% of the largest are noise: a static point's small
+    torque of the other sign, or a windmilling point's small positive thrust, counts for
+    nothing."""
     prop = pm.load_propeller("apce_8x6")
     rows = _sweep(prop, truth_params, 5000.0, np.linspace(0.0, 1.3, 27))
     assert rows[0, 3] > 0 and np.sum(rows[:, 3] < -0.02 * rows[:, 3].max()) >= 4  # windmilling at J >= 1.1
+    noisy = np.vstack([[5000.0, 0.0, rows[0, 2], -0.01 * rows[0, 3]], rows])  # a static point, torque noise
+    noisy[-1, 2] = 0.01 * rows[0, 2]  # the fastest point: thrust noise of the pulling sign, torque negative
     header = ["rpm", "airspeed", "thrust", "torque"]
-    for name, sign, tail in (("own", 1, rows), ("reaction", -1, rows), ("tunnel", -1, rows[4:])):
-        written = tail.copy()
-        written[:, 3] *= sign
-        d = read_loads(_rows_csv(tmp_path / f"{name}.csv", header, written))
-        np.testing.assert_allclose(d.measured["torque"], tail[:, 3], rtol=1e-5, atol=1e-9)
+    for name, fT, fQ, written in (("own", 1, 1, rows), ("reaction", 1, -1, rows), ("tunnel", 1, -1, rows[4:]),
+                                  ("pusher", -1, -1, rows), ("noisy", 1, -1, noisy)):
+        d = read_loads(_rows_csv(tmp_path / f"{name}.csv", header, written * [1, 1, fT, fQ]))
+        np.testing.assert_allclose(d.measured["torque"], written[:, 3], rtol=1e-5, atol=1e-9)
+        np.testing.assert_allclose(d.measured["thrust"], written[:, 2], rtol=1e-5, atol=1e-9)
         assert any(n.startswith("torque negative at ") and "windmills" in n for n in d.notes), d.notes
-        assert any(n.startswith("torque negated") for n in d.notes) == (sign < 0), d.notes
-        assert ("without a static one" in " ".join(d.notes)) == (name == "tunnel"), d.notes
-        assert sanity_check(d, prop) == []
+        said = [n for n in d.notes if n.startswith("torque negated")]
+        assert len(said) == (fQ < 0), d.notes
+        if name == "tunnel":
+            assert "nearest to static (smallest axial advance), where the propeller pulls" in said[0], said
+        if name != "noisy":
+            assert sanity_check(d, prop) == []
 
 
 def test_a_torque_of_both_signs_where_a_propeller_takes_power_is_refused(tmp_path, truth_params):
@@ -320,12 +329,47 @@ def test_a_torque_of_both_signs_where_a_propeller_takes_power_is_refused(tmp_pat
         read_loads(_rows_csv(tmp_path / "b.csv", header, both))
     part = rows.copy()
     part[5:, 3] *= -1  # the faster half as a reaction torque, the thrust still positive
-    with pytest.raises(DataError, match=r"'torque' has the other sign .* at 4 points, 4 of them with positive thrust"):
+    with pytest.raises(DataError, match=r"'torque' is negative at 4 points, 4 of them with positive thrust in climb"):
         read_loads(_rows_csv(tmp_path / "p.csv", header, part))
     brake = np.column_stack([np.full(7, 4000.0), np.linspace(0.0, 12.0, 7), np.linspace(1.0, 3.0, 7),
                              np.linspace(0.02, -0.01, 7), np.linspace(0.0, 180.0, 7)])
     d = read_loads(_rows_csv(tmp_path / "d.csv", [*header, "incidence_deg"], brake))
     assert d.measured["torque"][-1] < 0 and any("windmills" in n for n in d.notes), d.notes
+
+
+def test_a_descent_run_without_a_static_point_keeps_its_torque(tmp_path):
+    """Axial descent (incidence 180 deg) without a static point: the points nearest to static
+    are the slowest descent, where the rotor takes power; a torque positive there is kept as
+    written, and one negative there with the thrust positive is a reaction torque. (The
+    deepest descent, the windmill-brake state, may give power: it is not the reference.)"""
+    V = np.linspace(2.0, 14.0, 7)
+    rows = np.column_stack([np.full(7, 4000.0), V, np.full(7, 180.0), 1.0 + 0.2 * V, 0.03 - 0.003 * V])
+    header = ["rpm", "airspeed", "incidence_deg", "thrust", "torque"]
+    assert rows[0, 4] > 0 and rows[-1, 4] < 0  # the fastest descent gives power
+    for sign in (1, -1):
+        d = read_loads(_rows_csv(tmp_path / f"d{sign}.csv", header, rows * [1, 1, 1, 1, sign]))
+        np.testing.assert_allclose(d.measured["torque"], rows[:, 4], rtol=1e-5, atol=1e-9)
+        assert any(n.startswith("torque negated") for n in d.notes) == (sign < 0), d.notes
+        assert any("windmills" in n for n in d.notes), d.notes
+
+
+def test_a_run_entirely_beyond_the_zero_torque_advance_ratio_keeps_its_torque(tmp_path, truth_params):
+    """Without a static point and with negative thrust where the run is nearest to static,
+    the reader cannot tell a windmilling torque from a reaction torque: it keeps the sign
+    as written (noted), and the sanity check accepts the propeller's own sign and refuses the
+    other, saying to negate the column."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = _sweep(prop, truth_params, 5000.0, np.linspace(1.1, 1.35, 6))
+    assert np.all(rows[:, 2] < 0) and np.all(rows[:, 3] < 0)
+    header = ["rpm", "airspeed", "thrust", "torque"]
+    d = read_loads(_rows_csv(tmp_path / "w.csv", header, rows))
+    np.testing.assert_allclose(d.measured["torque"], rows[:, 3], rtol=1e-5, atol=1e-9)
+    assert any("the sanity check compares the sign" in n for n in d.notes), d.notes
+    assert sanity_check(d, prop) == []
+    r = read_loads(_rows_csv(tmp_path / "r.csv", header, rows * [1, 1, 1, -1]))
+    assert np.all(r.measured["torque"] > 0) and r.notes == ()
+    with pytest.raises(DataError, match="a torque of the opposite sign.*negate the torque column"):
+        sanity_check(r, prop)
 
 
 def test_a_run_entirely_beyond_the_zero_thrust_advance_ratio_keeps_its_sign(tmp_path, truth_params):

@@ -93,12 +93,13 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
     than 2% of the column's largest magnitude (those below are noise about zero), each
-    decision a note: a torque negative at every static point (without one: at every point
-    at the smallest axial advance V cos(incidence) / rpm, the most loaded) is negated (the
-    stand's reaction torque); a torque of both signs there is refused; a torque of the other
-    sign elsewhere is read as written (windmilling, noted), unless the thrust is positive
-    there in climb or edgewise flow (a propeller that pulls takes power: refused). A thrust
-    negative at every static point
+    decision a note: a torque negative at every static point is negated (the stand's
+    reaction torque; without a static point: negative at every point nearest to static, the
+    smallest axial advance |V cos(incidence)| / rpm, where the thrust, if measured, is
+    positive); a torque of both signs there is refused; a torque of the other sign elsewhere
+    is read as written (windmilling, noted), unless the thrust is positive there in climb or
+    edgewise flow (a propeller that pulls takes power: refused). A thrust negative at every
+    static point
     (airspeed at most :data:`STATIC_AIRSPEED`, no negative ``collective_deg``) is negated,
     whatever its sign at the other points: at a standstill a propeller pulls, so it is the
     sign of a pusher mount or of a stand mounted the other way round (propmap's thrust is
@@ -134,7 +135,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
         incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
-        at the static points (or the least advanced ones), a negative torque where the
+        at the static points (or those nearest to static), a negative torque where the
         thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
         identical; the message names the file, the line and the column.
     """
@@ -243,50 +244,63 @@ def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.nda
     """The torque column turned to the propeller's sign (read_loads' docstring, the sign rules).
 
     The reference points are the significant static ones (airspeed at most
-    :data:`STATIC_AIRSPEED`), else those at the smallest axial advance V cos(incidence) / rpm,
-    the most loaded: there a propeller absorbs power whatever its collective, so a torque
-    negative at all of them is the stand's reaction torque and is negated. Elsewhere a
-    negative torque is windmilling (beyond the zero-torque advance ratio) and kept, but in
-    climb or edgewise flow (V cos(incidence) >= 0) only where the thrust, if measured, is not
-    positive: the shaft power is T V cos(incidence) plus the induced and profile powers, so a
-    propeller that pulls against the flow takes power, and its torque changes sign after its
-    thrust (in descent, the windmill-brake state, it may both pull and give power).
+    :data:`STATIC_AIRSPEED`), else those nearest to static, at the smallest axial advance
+    |V cos(incidence)| / rpm. At a standstill a propeller takes power whatever its collective,
+    so a torque negative at every static point is the stand's reaction torque and is negated.
+    Without a static point the same holds where the thrust is significantly positive at the
+    reference points (in axial climb the shaft power is at least T V: a propeller that pulls
+    takes power), and, with no thrust column, a torque negative at all of them is taken for a
+    reaction torque too; where the thrust is negative there (a run beyond its zero-thrust
+    advance ratio) the torque keeps its sign and :func:`sanity_check` judges it. A negative
+    torque elsewhere is windmilling (beyond the zero-torque advance ratio) and kept with a
+    note, but in climb or edgewise flow (V cos(incidence) >= 0) not where the thrust is
+    significantly positive: the torque changes sign after the thrust. That is exact in axial
+    climb; at incidence the in-plane force's work enters the balance (Q Omega >= T V
+    cos(incidence) - H V sin(incidence)) and it is what the model gives (apce_8x6, 0-90 deg,
+    collective -10 to +10 deg, 2-40 m/s: no point with T > 0 and Q < 0). In descent (the
+    windmill-brake state) a rotor may both pull and give power.
     """
     q = v["torque"]
     big = _significant(q)
     if not big.any():
         return q
     static = big & (v["airspeed"] <= STATIC_AIRSPEED)
+    t = v.get("thrust")
+    pulling = None if t is None else _significant(t) & (t > 0)
     if static.any():
-        ref, where = static, "static point"
+        ref, where = static, "the static points"
+        reaction = np.all(q[ref] < 0)
     else:
-        x = v["airspeed"] * np.cos(np.radians(v["incidence_deg"])) / v["rpm"]
-        ref, where = big & (x <= np.min(x[big]) * (1 + 1e-9) + 1e-300), "point at the smallest advance ratio"
+        x = np.abs(v["airspeed"] * np.cos(np.radians(v["incidence_deg"]))) / v["rpm"]
+        xmin = np.min(x[big])
+        ref, where = big & (x <= xmin + 1e-9 * xmin), "the points nearest to static (smallest axial advance)"
+        reaction = np.all(q[ref] < 0) and (pulling is None or np.all(pulling[ref]))
     if np.any(q[ref] < 0) and np.any(q[ref] > 0):
-        raise DataError(f"{what}: {p}: column {column!r} has both signs at the {where}s ({int(np.sum(q[ref] < 0))} "
-                        f"negative, {int(np.sum(q[ref] > 0))} positive): there a propeller absorbs power, so one "
+        raise DataError(f"{what}: {p}: column {column!r} has both signs at {where} ({int(np.sum(q[ref] < 0))} "
+                        f"negative, {int(np.sum(q[ref] > 0))} positive): there a propeller takes power, so one "
                         "propeller turning one way has one torque sign")
-    if np.all(q[ref] < 0):
+    if reaction:
         q = -q
-        notes.append("torque negated: it is the stand's reaction torque (negative at every " + where
-                     + ("" if static.any() else " of a run without a static one") + "); the propeller's torque "
-                     "opposes its rotation")
+        notes.append(f"torque negated: it is the stand's reaction torque (negative at {where}"
+                     + ("" if static.any() else ", where the propeller pulls" if t is not None else "")
+                     + "); the propeller's torque opposes its rotation")
     neg = big & (q < 0)
     if neg.any():
-        if "thrust" in v:
-            t = v["thrust"]
+        if pulling is not None:
             climb = np.cos(np.radians(v["incidence_deg"])) >= 0
-            pulls = neg & climb & _significant(t) & (t > 0)
+            pulls = neg & climb & pulling
             if pulls.any():
-                raise DataError(f"{what}: {p}: column {column!r} has the other sign than at the {where}s at "
-                                f"{int(neg.sum())} points, {int(pulls.sum())} of them with positive thrust: a "
-                                "propeller that pulls in climb or edgewise flow takes power, so the torque changes "
-                                "sign only beyond the zero-thrust advance ratio (windmilling); is part of the file "
-                                "a reaction torque?")
+                raise DataError(f"{what}: {p}: column {column!r} is negative at {int(neg.sum())} points, "
+                                f"{int(pulls.sum())} of them with positive thrust in climb or edgewise flow: a "
+                                "propeller that pulls takes power, so the torque changes sign only beyond the "
+                                "zero-thrust advance ratio (windmilling); is part of the file a reaction torque, "
+                                "or the thrust of the other sign (a pusher mount)?")
         speeds = v["airspeed"][neg]
         notes.append(f"torque negative at {int(neg.sum())} of {int(big.sum())} points (airspeed {np.min(speeds):.3g}-"
                      f"{np.max(speeds):.3g} m/s), read as written: the propeller windmills there, beyond its "
-                     "zero-torque advance ratio")
+                     "zero-torque advance ratio" + ("" if static.any() or reaction else
+                                                    " (no static point: the sanity check compares the sign with "
+                                                    "the model's)"))
     return q
 
 
@@ -430,8 +444,8 @@ _UNIT_SLIPS = [
     (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
-    (1.0, -1.0, ("the stand's reaction torque, of the opposite sign, in a run whose torque changes sign, or "
-                 "windmilling at every point (beyond the zero-torque advance ratio) read as a reaction torque")),
+    (1.0, -1.0, ("a torque of the opposite sign, in a run the reader could not orient (no static point, and "
+                 "no positive thrust where the propeller is nearest to static): negate the torque column")),
     (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
                  "negates it only where it is negative at every static point): negate the "
                  "thrust column")),
