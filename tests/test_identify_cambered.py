@@ -229,8 +229,8 @@ def test_joint_fit_weights_propellers_alike(apc8x6):
 def test_joint_fit_weights_move_the_compromise_toward_the_heavier_propeller(apc8x6):
     """Per-dataset weights (the catalogue tool's family balance): a propeller's residuals
     carry sqrt(w / n), so weighting one propeller 9 times the other pulls the joint
-    cl_alpha toward its truth, and weights of one each give the default fit; bad weights
-    are refused naming the argument."""
+    cl_alpha toward its truth, and a weight of 2 fits as the dataset listed twice; bad
+    weights are refused naming the argument."""
     from propmap.identify import fit_loads_joint
 
     other = TRUE.replace(cl_alpha=5.0, cd_min=0.03)
@@ -240,15 +240,18 @@ def test_joint_fit_weights_move_the_compromise_toward_the_heavier_propeller(apc8
     opts = FitOptions(names=CAMBERED_FIT, prior=False)
     pairs = [(big, apc8x6), (small, apc8x6)]
     alike = fit_loads_joint(pairs, base=base, options=opts)
-    ones = fit_loads_joint(pairs, base=base, options=opts, weights=[1.0, 1.0])
-    np.testing.assert_array_equal(ones.residuals, alike.residuals)
+    # a weight of 2 is the same sum of squares as the dataset listed twice
+    twice = fit_loads_joint([*pairs, (small, apc8x6)], base=base, options=opts)
+    doubled = fit_loads_joint(pairs, base=base, options=opts, weights=[1.0, 2.0])
+    np.testing.assert_allclose([getattr(doubled.params, k) for k in CAMBERED_FIT],
+                               [getattr(twice.params, k) for k in CAMBERED_FIT], rtol=1e-5)
     heavy = fit_loads_joint(pairs, base=base, options=opts, weights=[1.0, 9.0])
     assert other.cl_alpha < heavy.params.cl_alpha < alike.params.cl_alpha - 0.1
     # the per-propeller rms stays the unweighted one
     own = fit_loads(small, apc8x6, base=heavy.params, options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=1))
     assert heavy.extra["per_propeller"][1]["rms_residual"] == pytest.approx(np.sqrt(np.mean(own.residuals**2)),
                                                                           rel=1e-9)
-    for bad in ([1.0], [1.0, 0.0], [1.0, float("nan")]):
+    for bad in ([1.0], [1.0, 0.0], [1.0, float("nan")], [None, 1.0], "ab"):
         with pytest.raises(ValueError, match="weights must be 2 positive finite numbers"):
             fit_loads_joint(pairs, base=base, options=opts, weights=bad)
 

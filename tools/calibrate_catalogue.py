@@ -135,14 +135,17 @@ def _generic(names, single, data, start=START, balance="propellers"):
     X = np.array([[single[n]["params"][k] for k in CAMBERED_FIT_RE] for n in names])
     re_medians = {k: _weighted_median(X[:, CAMBERED_FIT_RE.index(k)], w) for k in RE_TERMS}
     data = [data[n] for n in names]
-    res = fit_loads_joint(data, base=start.replace(**re_medians), weights=w * len(names),
+    res = fit_loads_joint(data, base=start.replace(**re_medians),
+                          weights=None if balance == "propellers" else w * len(names),
                           options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=JOINT_MAX_NFEV))
     g = np.array([getattr(res.params, k) for k in CAMBERED_FIT_RE])
     dev = X - g
-    cov = (dev * w[:, None]).T @ dev / (1.0 - np.sum(w ** 2))  # unbiased for weights summing to 1
+    # the weighted spread about the generic set; (n - 1) in the denominator for equal weights
+    cov = (dev * w[:, None]).T @ dev / (1.0 - np.sum(w ** 2))
+    source = POPULATION_SOURCE + ("" if balance == "propellers" else "; every UIUC family weighted alike")
     pop = {"names": list(CAMBERED_FIT_RE), "covariance": cov.tolist(),
-           "sigma_data": float(np.median([single[n]["rms_residual"] for n in names])),
-           "re_medians": re_medians, "n_propellers": len(names), "source": POPULATION_SOURCE}
+           "sigma_data": _weighted_median(np.array([single[n]["rms_residual"] for n in names]), w),
+           "re_medians": re_medians, "n_propellers": len(names), "source": source}
     errs = [coefficient_errors(*d, res.params) for d in data]
     return (params_to_si(res.params), pop, float(np.median([e["rms_ct"] for e in errs])),
             float(np.median([e["rms_cp"] for e in errs])), sum(d.n for d, _ in data), bool(res.hit_max_nfev),
@@ -243,8 +246,9 @@ def main() -> None:
         "generic": {**_entry(params_from_si(gparams), gct, gcp, gn), "coverage": gcov,
                     "source": f"Reynolds terms: medians of single-propeller fits; {', '.join(CAMBERED_FIT)} fitted "
                               f"jointly to the bundled UIUC static runs and J-sweeps of all {len(names)} catalogue "
-                              "propellers with both (UIUC vol. 1 and 2); rms_ct, rms_cp: medians over the "
-                              "propellers (in-sample)"},
+                              "propellers with both (UIUC vol. 1 and 2)"
+                              + ("" if args.balance == "propellers" else ", every UIUC family alike")
+                              + "; rms_ct, rms_cp: medians over the propellers (in-sample)"},
         "population": pop,
         "single_fits": single,
         "generic_folds": folds,

@@ -522,7 +522,10 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     datasets = list(datasets)
     if not datasets:
         raise ValueError("fit_loads_joint needs at least one (data, propeller) pair")
-    w = np.ones(len(datasets)) if weights is None else np.asarray(weights, dtype=float)
+    try:
+        w = np.ones(len(datasets)) if weights is None else np.asarray(weights, dtype=float)
+    except (TypeError, ValueError):
+        w = np.array([np.nan])
     if w.shape != (len(datasets),) or not np.all(np.isfinite(w) & (w > 0)):
         raise ValueError(f"weights must be {len(datasets)} positive finite numbers (one per dataset), got "
                          f"{weights!r:.80}")
@@ -532,7 +535,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     makers = []
     for (data, prop), wk in zip(datasets, w):
         makers.append(_load_residual(data, prop, _load_keys(data, None), air, names, base,
-                                     weight=math.sqrt(wk / data.n))[0])
+                                     weight=math.sqrt(wk) / math.sqrt(data.n))[0])
 
     def make_residual(opts):
         parts = [m(opts) for m in makers]
@@ -555,7 +558,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     per, k = [], 0
     for (data, prop), wk in zip(datasets, w):
         m = data.n * len(data.measured)
-        r = best.fun[k:k + m] * math.sqrt(data.n / wk)
+        r = best.fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
         per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2)))})
         k += m
     result.extra["per_propeller"] = per
