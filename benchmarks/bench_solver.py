@@ -126,7 +126,8 @@ def section_models(prop, paper, n=2000, rounds=7):
     g = generic_params()
     models = {"gill2017-apc (paper)": paper, "cambered, tip loss (default)": g,
               "cambered, no loss": g.replace(tip_loss=False), "cambered, tip + hub loss": g.replace(hub_loss=True),
-              "cambered, tip loss, swirl (option)": g.replace(swirl=True)}
+              "cambered, tip loss, swirl (option)": g.replace(swirl=True),
+              "cambered, tip loss, in-plane induction (option)": g.replace(inplane_induction=True)}
     om, V, b = points(n, 0, 90, 5)
     out = {}
     threads_all = numba.get_num_threads()

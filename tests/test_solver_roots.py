@@ -101,11 +101,15 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
     # the point-level flag is computed per annulus: the 200-node run sees the fold
 
 
-@pytest.mark.parametrize("which", ["gill2017", "gill2017_radial", "cambered_tip_hub", "cambered_stall_terms"])
+@pytest.mark.parametrize("which", ["gill2017", "gill2017_radial", "cambered_tip_hub", "cambered_stall_terms",
+                                   "gill2017_inplane", "cambered_inplane"])
 def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points, which):
     # the reference solves Glauert's momentum (the paper's): the cambered sets are asked for it; they
-    # carry the radial flow's drag (their default), and gill2017_radial gives it to the paper's section
+    # carry the radial flow's drag (their default), and gill2017_radial gives it to the paper's section;
+    # the *_inplane sets add the skewed wake's in-plane induced velocity (its root solve and loads)
     params = {"gill2017": apc_params, "gill2017_radial": apc_params.replace(radial_drag=True),
+              "gill2017_inplane": apc_params.replace(inplane_induction=True),
+              "cambered_inplane": pm.CamberedParams(tip_loss=True, descent="glauert", inplane_induction=True),
               "cambered_tip_hub": pm.CamberedParams(tip_loss=True, hub_loss=True, descent="glauert"),
               "cambered_stall_terms": pm.CamberedParams(re_exp_stall=0.2, stall_delay=2.0, descent="glauert",
                                                         alpha_L0_re=math.radians(-1.5))}[which]

@@ -46,8 +46,9 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, PK_RADIAL_DRAG,
-                       cambered_annulus, empirical_k, inflow_gradients, inverse_sin_phi, make_axial_mass_flow,
+from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, PK_INPLANE,
+                       PK_RADIAL_DRAG, cambered_annulus, empirical_k, inflow_gradients, inplane_induction,
+                       inverse_sin_phi, make_axial_mass_flow,
                        make_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag,
                        momentum_scale, momentum_thrust, swirl_step, swirl_target)
 
@@ -87,6 +88,7 @@ _empirical_k = _jit_inline(empirical_k)
 _axial_mass_flow = _jit_inline(make_axial_mass_flow(_empirical_k))
 _swirl_target = _jit_inline(swirl_target)
 _swirl_step = _jit_inline(swirl_step)
+_inplane_induction = _jit_inline(inplane_induction)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -112,6 +114,9 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
     gy = k_y y/R, over the full circle of ``naz`` nodes. ``emp``: the momentum side uses the
     empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
+    With ``pk[PK_INPLANE]`` = 1 (airfoil.RotorOptions.inplane_induction) the blades meet the
+    in-plane airspeed Vs plus the skewed wake's in-plane induced velocity at v
+    (_physics.inplane_induction); the momentum side keeps Vs.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -119,6 +124,8 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     cospsi = azim[1]
     acc = 0.0
     UP = Vc + v
+    Vm = Vs  # the momentum side's in-plane airspeed
+    Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, UP)  # the blades'
     # one loop per section model and inflow, so that each compiles to straight-line SIMD code
     if gx == 0.0 and gy == 0.0:
         if model == CAMBERED:
@@ -148,9 +155,9 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
                                       s0, g0, g1, g2, g3, g4, g5, sincos)
                 acc += qT
     if emp:
-        w_ax = _axial_mass_flow(v, Vc, Vs)
-        return cfac * acc / naz - floss * mfac * v * np.sqrt(Vs * Vs + w_ax * w_ax)
-    return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vs, Vc)
+        w_ax = _axial_mass_flow(v, Vc, Vm)
+        return cfac * acc / naz - floss * mfac * v * np.sqrt(Vm * Vm + w_ax * w_ax)
+    return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vm, Vc)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -484,7 +491,9 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     With ``pk[PK_RADIAL_DRAG]`` = 1 (airfoil.RotorOptions.radial_drag) the radial flow's drag
     C_D,p U u_R (u_R = V sin beta cos psi, per unit 0.5 rho c; C_D,p the profile drag,
     _physics.make_profile_drag) adds its components along the airspeed, cos psi, to dD/dy and
-    toward the advancing side, sin psi, to dY/dy; it passes through the shaft.
+    toward the advancing side, sin psi, to dY/dy; it passes through the shaft. With
+    ``pk[PK_INPLANE]`` = 1 the blades' in-plane airspeed, and so u_R, includes the skewed
+    wake's in-plane induced velocity at v, as in ``_residual``.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -497,6 +506,8 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     aY = 0.0
     aP = 0.0
     UP = Vc + v
+    if not axial:
+        Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, UP)
     kr = 0.0 if axial else pk[PK_RADIAL_DRAG] * Vs  # the radial flow's drag: u_R = kr cos psi
     if gx == 0.0 and gy == 0.0:
         for k in range(naz):  # once per annulus: the model branch inside the loop costs little here

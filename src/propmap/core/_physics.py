@@ -51,9 +51,12 @@ CAMBERED = 2
 #   cambered: alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, stall angle above and below
 #             the zero-lift line (cl_max / cl_alpha, cl_min / cl_alpha)
 # and, for both, at PK_RADIAL_DRAG the factor on the radial flow's drag (1: RotorOptions.radial_drag,
-# 0: off), which only the loads read (_annulus.annulus_loads), not the element
+# 0: off), which only the loads read (_annulus.annulus_loads), not the element, and at PK_INPLANE
+# the factor on the skewed wake's in-plane induced velocity (1: RotorOptions.inplane_induction, 0: off;
+# :func:`inplane_induction`), which the residual and the loads add to the blades' in-plane airspeed
 PK_RADIAL_DRAG = 8
-N_PK = 9
+PK_INPLANE = 9
+N_PK = 10
 #: rows of the blade's node array (core/nodes._Nodes.rows, shape (N_NODE_ROWS, n_radial)), per annulus:
 #: its radius y [m] and quadrature weight [m], the blade angle [rad] and its sine and cosine, the
 #: section constant, (c/y)^2, the blade and momentum factors N_b rho c / 2 [kg/m^2] and 4 pi rho y
@@ -289,6 +292,35 @@ def loss_factor_numpy(UP, wy, ct, ch):
     for c in (ct, ch):
         F = F * np.where(np.asarray(c) >= 0, prandtl_numpy(np.maximum(c, 0.0), inv_sin), 1.0)
     return F
+
+
+def inplane_induction(v, Vs, UP):
+    """The skewed wake's in-plane induced velocity at an annulus [m/s], along the in-plane airspeed.
+
+    u_x = v tan(chi / 2), with v the annulus' inflow and chi the wake's skew from the disk's
+    axis, tan(chi) = Vs / |UP| (UP = V cos(beta) + v, the flow through the disk; mirrored when
+    it flows upward), written without the angle as u_x = v Vs / (sqrt(Vs^2 + UP^2) + |UP|):
+    0 in axial flow, Vs / 2 at small skew (Vs << |UP|), v edgewise (UP = 0). Scalars (the
+    kernels; :func:`inplane_induction_numpy` for arrays).
+
+    Source: the wake of a uniformly loaded disk as a semi-infinite skewed cylinder of ring
+    vortices (W. Castles and J. H. De Leeuw, NACA Report 1184, 1954; its normal velocity at
+    the disk is Glauert's momentum value v on the azimuthal mean, R. P. Coleman, A. M.
+    Feingold and C. W. Stempin, NACA ARR L5E10, 1945). Its in-plane velocity, averaged over
+    the azimuth at a radius inside the cylinder, is v tan(chi / 2) and 0 outside it, so that
+    with the loading varying along the radius (nested cylinders) each annulus sees its own v
+    times tan(chi / 2): propmap's Biot-Savart evaluation of that model (integrated in
+    tests/test_inplane_induction.py), the component that momentum theory, which keeps only
+    the normal one, leaves out. The skew is taken per annulus, as the annulus' momentum is.
+    """
+    d = np.sqrt(Vs * Vs + UP * UP) + abs(UP)
+    return v * Vs / d if d > 0.0 else 0.0
+
+
+def inplane_induction_numpy(v, Vs, UP):
+    """:func:`inplane_induction` elementwise over broadcast arrays."""
+    d = np.sqrt(Vs * Vs + UP * UP) + np.abs(UP)
+    return np.where(d > 0.0, v * Vs / np.where(d > 0.0, d, 1.0), 0.0)
 
 
 def momentum_thrust(v, mom_fac, Vs, Vc):

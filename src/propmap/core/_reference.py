@@ -12,9 +12,9 @@ from __future__ import annotations
 import numpy as np
 
 from . import _annulus as K
-from ._physics import (CAMBERED, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL,
-                       cambered_annulus, element, loss_factor_numpy, momentum_scale, momentum_thrust, profile_cd,
-                       swirl_step, swirl_target)
+from ._physics import (CAMBERED, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL,
+                       cambered_annulus, element, inplane_induction_numpy, loss_factor_numpy, momentum_scale,
+                       momentum_thrust, profile_cd, swirl_step, swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
@@ -67,9 +67,13 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     y = nodes.y[None, :, None]
     sinpsi = nodes.sinpsi[None, None, : nodes.sinpsi.size // 2]  # the half circle: uniform inflow only
     cospsi = nodes.cospsi[None, None, : nodes.cospsi.size // 2]
-    UT = om * y + Vs3 * sinpsi  # (n, nr, naz)
-    if u is not None:
-        UT = UT - u[:, :, None]
+    wy3 = om * y - (0.0 if u is None else u[:, :, None])
+    ux = pk[PK_INPLANE]  # the skewed wake's in-plane induced velocity on (1) or off (0)
+
+    def blade_ut(v):  # the blades' U_T at inflow v (n, nr): the in-plane airspeed, plus u_x(v) with the option
+        return wy3 + (Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2 + v)[:, :, None]) * sinpsi
+
+    UT = wy3 + Vs3 * sinpsi  # (n, nr, naz)
     cfac = nodes.cfac[None, :]
     mfac = nodes.mfac[None, :]
     Vs2 = np.asarray(Vs, float)[:, None]
@@ -89,7 +93,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     lossy = bool(np.any(nodes.ct >= 0) or np.any(nodes.ch >= 0))
 
     def F(v):  # v shape (n, nr)
-        qT, _ = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
+        qT, _ = element(blade_ut(v) if ux else UT, (Vc2 + v)[:, :, None], *geo, *pars)
         mom = momentum_thrust(v, mfac, Vs2, Vc2)
         if lossy:
             mom = mom * loss_factor_numpy(Vc2 + v, wy, nodes.ct[None, :], nodes.ch[None, :])
@@ -147,13 +151,15 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
             fin |= (np.abs(fb) <= ftol) | (np.abs(b - a) <= xtol)
         converged &= fin
         v = np.where(F0 == 0, 0.0, b)
+        Vb = Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2 + v)[:, :, None]  # the blades' in-plane airspeed
+        UT = wy3 + Vb * sinpsi
         qT, qH = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
     axial = (np.asarray(Vs) == 0)[:, None]
     dT = cfac * qT.mean(axis=2)
     UPv = (Vc2 + v)[:, :, None]
     with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus.annulus_loads)
         radial = (pk[PK_RADIAL_DRAG] * profile_cd(UT, UPv, *geo[:1], *geo[3:], model, pk) * np.sqrt(UT**2 + UPv**2)
-                  * Vs3 * cospsi**2)
+                  * Vb * cospsi**2)
     dD = np.where(axial, 0.0, cfac * (qH * sinpsi + radial).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
     w = nodes.w

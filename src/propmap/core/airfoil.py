@@ -117,6 +117,17 @@ class RotorOptions:
         root solve are unchanged, and so is everything in axial flow. True: the default of the
         cambered model (docs/models.md, Radial drag). False: the default of the paper's
         section model, which stays exactly the paper's.
+    inplane_induction : bool
+        The skewed wake's in-plane induced velocity: in edgewise flow the wake, a skewed
+        cylinder of ring vortices (W. Castles and J. H. De Leeuw, NACA Report 1184, 1954),
+        induces at each annulus besides the normal inflow v of momentum theory an in-plane
+        velocity along the in-plane airspeed, v tan(chi / 2) on the azimuthal mean, chi the
+        wake's skew (tan chi = V sin(beta) / |V cos(beta) + v|): from V sin(beta) / 2 at small
+        skew to v edgewise (_physics.inplane_induction, docs/models.md). The blades meet
+        V sin(beta) + v tan(chi / 2) in the disk plane; the momentum balance keeps Glauert's.
+        Zero in axial flow and hover. No implicit derivatives yet: ``rotor_loads(derivatives=
+        ...)`` refuses it and the fits difference the solver. False (default): momentum
+        theory's inflow, normal to the disk.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -139,6 +150,7 @@ class RotorOptions:
     descent: str = "empirical"
     swirl: bool = False
     radial_drag: bool = True
+    inplane_induction: bool = False
     air: Air = field(default_factory=Air)
     label: str = field(default="", compare=False)
 
@@ -431,6 +443,7 @@ def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
 
     pk = np.zeros(ph.N_PK)
     pk[ph.PK_RADIAL_DRAG] = 1.0 if params.radial_drag else 0.0
+    pk[ph.PK_INPLANE] = 1.0 if params.inplane_induction else 0.0
     if isinstance(params, CamberedParams):
         p = params
         pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,

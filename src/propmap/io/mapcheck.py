@@ -291,8 +291,8 @@ def check_dataset(ds) -> None:
 def map_model(attrs: dict):
     """(propeller, params, air, discretization) recorded in a map's attributes.
 
-    A record without ``radial_drag`` (a map written before that option) is read with
-    ``radial_drag = False``, the model that made it.
+    A record without ``radial_drag`` or ``inplane_induction`` (a map written before that
+    option) is read with it False, the model that made it.
 
     Parameters
     ----------
@@ -342,6 +342,7 @@ def map_model(attrs: dict):
     # a map written before the radial flow's drag existed (2026-11-24) was made without it,
     # whatever the record's default is now
     si.setdefault("radial_drag", False)
+    si.setdefault("inplane_induction", False)  # (2026-11-25) likewise
     # the ranges of a parameter file (angles in degrees there), then the exact SI record
     form = {({v: k for k, v in DEG_KEYS.items()}.get(k, k)): (math.degrees(v) if k in DEG_KEYS.values()
                                                              and isinstance(v, numbers.Real) else v)

@@ -53,6 +53,8 @@ which a cambered file without those keys gets)::
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
     radial_drag = false       # the radial flow's drag in edgewise flow (in-plane force; not in the paper)
+    inplane_induction = false # the skewed wake's in-plane induced velocity (edgewise flow; not in the paper);
+                              # a file without the key has it off, without a warning
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
 ``section = "naca0015"`` takes every key of that section preset (:func:`propmap.io.param_sets.section_preset`;
@@ -355,6 +357,11 @@ def set_coverage(label: str) -> dict | None:
     return coverage(label)
 
 
+#: rotor options added after parameter files were written, off unless a file says otherwise: a
+#: file without one gets the record's default (off) without a warning, not the generic set's value
+SILENT_KEYS = frozenset({"inplane_induction"})
+
+
 def _generic_fill(data: dict, keys: dict, where: str) -> dict:
     """The generic set's values (field name -> value) of the cambered keys ``data`` lacks,
     and a warning naming them."""
@@ -363,7 +370,7 @@ def _generic_fill(data: dict, keys: dict, where: str) -> dict:
     from .calibration import generic_params
 
     g = generic_params()
-    missing = [k for k in keys if k not in data]
+    missing = [k for k in keys if k not in data and k not in SILENT_KEYS]
     if missing:
         given = sorted(k for k in data if k in keys or k in AIR_KEYS)
         warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
