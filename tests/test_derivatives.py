@@ -20,10 +20,12 @@ def prop():
     return pm.load_propeller("apce_8x6")
 
 
-@pytest.fixture(scope="module", params=["generic", "paper", "paper_radial"])
+@pytest.fixture(scope="module", params=["generic", "paper", "paper_radial", "generic_inplane"])
 def params(request):
     if request.param == "generic":
         return pm.generic_params()  # the radial flow's drag on (the cambered default)
+    if request.param == "generic_inplane":  # with the skewed wake's in-plane induced velocity (an option)
+        return pm.generic_params().replace(inplane_induction=True)
     if request.param == "paper_radial":  # the other section model with the radial flow's drag
         return pm.preset("gill2017-apc").replace(radial_drag=True)
     return pm.preset("gill2017-apc")  # the paper's section (Table I), the other section model
@@ -236,14 +238,17 @@ def test_vehicle_rotor_speed_derivatives():
         pm.vehicle_wrench(replace(veh, rotor_interference=1.0), g, v, w, om, derivatives=True)
 
 
-@pytest.mark.parametrize("model", ["generic", "paper"])
+@pytest.mark.parametrize("model", ["generic", "paper", "generic_inplane", "paper_inplane"])
 def test_section_parameter_derivatives(prop, model):
     """d(T, Q, D)/d(section parameter) against differences of the solver with the parameter
     moved (the pk and cam constants of the element and the annulus), 1e-5 of the loads per
-    unit of max(|p|, 0.01); node-changing parameters refused."""
-    g = pm.generic_params() if model == "generic" else pm.preset("gill2017-apc")
+    unit of max(|p|, 0.01); node-changing parameters refused. Also with the skewed wake's
+    in-plane induced velocity (the option)."""
+    g = pm.generic_params() if model.startswith("generic") else pm.preset("gill2017-apc")
+    if model.endswith("_inplane"):
+        g = g.replace(inplane_induction=True)
     names = (("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re", "M")
-             if model == "generic" else ("cl1", "cl2", "cd", "alpha0"))
+             if model.startswith("generic") else ("cl1", "cl2", "cd", "alpha0"))
     om, V, b = np.array([600.0, 900.0, 1200.0]), np.array([0.0, 8.0, 15.0]), np.radians([0.0, 60.0, 20.0])
     r = pm.rotor_loads(prop, g, om, V, b, discretization=DISC, derivatives=names)
     for n in names:

@@ -76,7 +76,7 @@ from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _el
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
-                       NODE_Y, PK_RADIAL_DRAG, SWIRL_LIMIT)
+                       NODE_Y, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT)
 from ._tangents import _loads_tangent as _loads_tangent_py
 from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill_tangent
 
@@ -99,6 +99,23 @@ ONE_SIDED = 1e-7
 INPUTS = ("omega", "airspeed", "incidence", "collective")
 #: loads, in the order of the output's first axis (and the mean induced velocity)
 LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _inplane_partials(kin, v, vs, UP):
+    """The blades' in-plane airspeed vb = vs + kin u_x (u_x = v vs / (sqrt(vs^2 + UP^2) + |UP|),
+    _physics.inplane_induction; kin 1 with the option, 0 without) and kin times u_x's partial
+    derivatives in vs, in UP and in v at fixed UP. Where vs = UP = 0 (u_x = 0) the partials
+    are taken as 0."""
+    if kin == 0.0:
+        return vs, 0.0, 0.0, 0.0
+    rq = np.sqrt(vs * vs + UP * UP)
+    d = rq + abs(UP)
+    if d == 0.0:
+        return vs, 0.0, 0.0, 0.0
+    ux = v * vs / d
+    sg = 1.0 if UP > 0.0 else (-1.0 if UP < 0.0 else 0.0)
+    return vs + kin * ux, kin * (v / d - ux * vs / (rq * d)), -kin * ux * (UP / rq + sg) / d, kin * vs / d
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -433,6 +450,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         for c in range(8):
             dC[m, c] = pkpm[m][c] - pk[c]
     krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
+    kin = pk[PK_INPLANE]  # the skewed wake's in-plane induced velocity (uniform inflow, no swirl: derivatives.py)
     swirl = roots.shape[0] == 2
     for j in range(nr):
         vj = roots[0, i, j]
@@ -447,9 +465,13 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
         s, u = _constants_slopes(U2, sc[j], cy2[j], model, cam)
         UP = vc + vj
+        # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, U_P) (_physics.inplane_induction) and
+        # u_x's partials in V sin beta, in U_P and in v at fixed U_P; the Reynolds constants and the momentum side
+        # keep V sin beta
+        vb, uxs, uxp, uxv = _inplane_partials(kin, vj, vs, UP)
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node
-        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vs, vc, yj, th, sth, cth, s, u, sn, naz, model, pk)
+        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vb, vc, yj, th, sth, cth, s, u, sn, naz, model, pk)
         tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
         rB, rT, rTs, rP, rU = rsums
         cT, cTs, cH, cHs, rC = csums
@@ -466,7 +488,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                     sa = s
                 for c in range(4):
                     dS[m, c] = sa[c] - s[c]
-            _parameter_partials(ps, dS, dC, n_m, stw, ome, vs, UP, yj, th, sth, cth, s, sn, naz, pk)
+            _parameter_partials(ps, dS, dC, n_m, stw, ome, vb, UP, yj, th, sth, cth, s, sn, naz, pk)
         elif n_m > 0:
             # the paper's section: one-sided differences, a pass each: 0 the base again (the parameters'
             # differences are then exactly 0 for one that does not enter), 1 + k the k-th section parameter's (the
@@ -480,7 +502,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                     pka = pkpm[m - 1]
                     if not cam_same[m - 1]:
                         sa = _constants(om, vs, vc, yj, sc[j], cy2[j], model, campm[m - 1])
-                ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vs, UP, yj, th, sth, cth,
+                ps[m, 0], ps[m, 1], ps[m, 2], ps[m, 3], ps[m, 4] = _pass(q0, h0, r0, ome, vb, UP, yj, th, sth, cth,
                                                                          sa, sn, naz, model, pka)
         cf = cfac[j] / naz
         cq = yj * cf
@@ -489,9 +511,13 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                 0.0
             rB *= 1.0 - m2  # the radial drag's base, cos^2 psi = 1 - sin^2 psi averaged the same way
         # the radial drag: D gains rr times its sums (0 in axial flow) and, through V sin beta, krad times the base's
-        rr = krad * vs
-        # d(T, D, Q, R)/dv = d/dU_P and d/dU2 (the loads' scales applied)
-        Lv0, Lv1, Lv2, Lv3 = pT * cf, (pHs + rr * rP) * cf, pH * cq, pTs * cq
+        rr = krad * vb
+        # d(T, D, Q, R)/d(the blades' in-plane airspeed) at fixed v: U_T by sin psi, and the radial drag's
+        b0, b1, b2, b3 = tTs * cf, (tHs2 + rr * rTs + krad * rB) * cf, tHs * cq, tTs2 * cq
+        # d(T, D, Q, R)/dv = d/dU_P, and through u_x (0 without it), and d/dU2 (the loads' scales applied)
+        uxt = uxv + uxp  # u_x's total derivative in v (U_P = V cos beta + v)
+        Lv0, Lv1 = pT * cf + uxt * b0, (pHs + rr * rP) * cf + uxt * b1
+        Lv2, Lv3 = pH * cq + uxt * b2, pTs * cq + uxt * b3
         uu0, uu1, uu2, uu3 = uT * cf, (uHs + rr * rU) * cf, uH * cq, uTs * cq
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
@@ -499,16 +525,17 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         dB[1, 0] = yj * (tHs + rr * rT) * cf + f * uu1
         dB[2, 0] = yj * tH * cq + f * uu2
         dB[3, 0] = yj * tTs * cq + f * uu3
-        # V sin beta: U_T by sin psi, U2 by V sin beta
-        dB[0, 1] = tTs * cf + vs * uu0
-        dB[1, 1] = (tHs2 + rr * rTs + krad * rB) * cf + vs * uu1
-        dB[2, 1] = tHs * cq + vs * uu2
-        dB[3, 1] = tTs2 * cq + vs * uu3
-        # V cos beta: U_P by 1, U2 by 2 V cos beta
-        dB[0, 2] = Lv0 + 2.0 * vc * uu0
-        dB[1, 2] = Lv1 + 2.0 * vc * uu1
-        dB[2, 2] = Lv2 + 2.0 * vc * uu2
-        dB[3, 2] = Lv3 + 2.0 * vc * uu3
+        # V sin beta: U_T by sin psi (times 1 + du_x/dV sin beta), U2 by V sin beta
+        fs = 1.0 + uxs
+        dB[0, 1] = fs * b0 + vs * uu0
+        dB[1, 1] = fs * b1 + vs * uu1
+        dB[2, 1] = fs * b2 + vs * uu2
+        dB[3, 1] = fs * b3 + vs * uu3
+        # V cos beta: U_P by 1 (at fixed v: not u_x's part in v), U2 by 2 V cos beta
+        dB[0, 2] = Lv0 - uxv * b0 + 2.0 * vc * uu0
+        dB[1, 2] = Lv1 - uxv * b1 + 2.0 * vc * uu1
+        dB[2, 2] = Lv2 - uxv * b2 + 2.0 * vc * uu2
+        dB[3, 2] = Lv3 - uxv * b3 + 2.0 * vc * uu3
         dB[0, 3] = cT * cf
         dB[1, 3] = (cHs + rr * rC) * cf
         dB[2, 3] = cH * cq
