@@ -57,13 +57,16 @@ def test_the_skewed_wake_induces_v_tan_half_chi_in_plane_inside_and_nothing_outs
         assert u[2] == pytest.approx(-v, abs=0.01)  # downwash
         assert u[0] == pytest.approx(v * math.tan(chi / 2), abs=0.01)
         assert abs(u[1]) < 1e-9
-    # propmap's closed form is v tan(chi / 2), tan chi = Vs / |UP|, without the angle
-    v, Vs, UP = 3.0, 4.0, np.array([5.0, -5.0, 1e-9, 0.0])
-    np.testing.assert_allclose(inplane_induction_numpy(v, Vs, UP), v * np.tan(np.arctan2(Vs, np.abs(UP)) / 2),
+    # propmap's closed form is v tan(chi / 2), tan chi = Vs / |UP|, UP = Vc + v, without the angle (Vc >= 0)
+    v, Vs, UP = 3.0, 4.0, np.array([5.0, 3.0 + 1e-9, 3.0])
+    np.testing.assert_allclose(inplane_induction_numpy(v, Vs, UP - v), v * np.tan(np.arctan2(Vs, np.abs(UP)) / 2),
                                rtol=1e-12)
-    assert inplane_induction_numpy(v, 0.0, UP).tolist() == [0.0] * 4  # axial flow
-    assert inplane_induction_numpy(v, 1e-6, v) == pytest.approx(0.5e-6, rel=1e-6)  # small skew in hover: Vs / 2
+    assert inplane_induction_numpy(v, 0.0, UP - v).tolist() == [0.0] * 3  # axial flow
+    assert inplane_induction_numpy(v, 1e-6, 0.0) == pytest.approx(0.5e-6, rel=1e-6)  # small skew in hover: Vs / 2
     assert float(inplane_induction_numpy(0.0, 0.0, 0.0)) == 0.0
+    # in descent the skew of a hovering disk at the same in-plane speed (W = v): continuous at Vc = 0
+    hover = v * Vs / (math.hypot(Vs, v) + v)
+    np.testing.assert_allclose(inplane_induction_numpy(v, Vs, np.array([-1.0, -4.0, -40.0, 0.0])), hover, rtol=1e-12)
 
 
 @pytest.fixture(scope="module")
@@ -88,7 +91,7 @@ def test_at_small_skew_the_blades_meet_three_halves_of_the_in_plane_airspeed(rot
     prop, p = rotor
     q = p.replace(inplane_induction=True)
     om = 6000 * math.pi / 30
-    for inc in (math.pi / 2, math.radians(60), math.radians(120)):
+    for inc in (math.pi / 2, math.radians(60), math.radians(120), math.radians(150)):
         a, b = (pm.rotor_loads(prop, s, om, 1e-3, inc) for s in (p, q))
         assert float(b.drag / a.drag) == pytest.approx(1.5, rel=1e-4)
         assert float(b.thrust / a.thrust) == pytest.approx(1.0, abs=1e-8)

@@ -14,8 +14,8 @@ lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
 Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads cost 2.4x the
 uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes. So does row WI
-(W with the skewed wake's in-plane induced velocity, ``inplane_induction``), which has no
-implicit derivatives: its fits difference the solver, about 5 minutes.
+(W with the skewed wake's in-plane induced velocity, ``inplane_induction``, an option), about
+1 minute.
 ``--differences``: the fits' Jacobians by central differences of the solver instead of the
 implicit derivatives (an A/B of the two; the same optimum).
 """

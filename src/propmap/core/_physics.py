@@ -294,13 +294,18 @@ def loss_factor_numpy(UP, wy, ct, ch):
     return F
 
 
-def inplane_induction(v, Vs, UP):
+def inplane_induction(v, Vs, Vc):
     """The skewed wake's in-plane induced velocity at an annulus [m/s], along the in-plane airspeed.
 
     u_x = v tan(chi / 2), with v the annulus' inflow and chi the wake's skew from the disk's
-    axis, tan(chi) = Vs / |UP| (UP = V cos(beta) + v, the flow through the disk; mirrored when
-    it flows upward), written without the angle as u_x = v Vs / (sqrt(Vs^2 + UP^2) + |UP|):
-    0 in axial flow, Vs / 2 at small skew (Vs << |UP|), v edgewise (UP = 0). Scalars (the
+    axis, tan(chi) = Vs / |W| with W = Vc + v the flow through the disk, written without the
+    angle as u_x = v Vs / (sqrt(Vs^2 + W^2) + |W|): 0 in axial flow, Vs / 2 at small skew in
+    hover (Vs << |W|), v edgewise at W = 0. In descent (Vc < 0) W is taken as v, the skew
+    of a hovering disk at the same in-plane speed: propmap's choice, as the model holds for
+    a wake that convects away below, which in descent it does less and less (the
+    vortex-ring state), and with Vc + v its tan(chi / 2) would jump from Vs / 2 to 1 over
+    |Vc + v| ~ Vs there (root folds). Continuous at Vc = 0, where its slope in Vc has a kink
+    (exactly edgewise, as the empirical descent model's switch). Vs >= 0; scalars (the
     kernels; :func:`inplane_induction_numpy` for arrays).
 
     Source: the wake of a uniformly loaded disk as a semi-infinite skewed cylinder of ring
@@ -313,13 +318,15 @@ def inplane_induction(v, Vs, UP):
     tests/test_inplane_induction.py), the component that momentum theory, which keeps only
     the normal one, leaves out. The skew is taken per annulus, as the annulus' momentum is.
     """
-    d = np.sqrt(Vs * Vs + UP * UP) + abs(UP)
+    W = Vc + v if Vc >= 0.0 else v
+    d = np.sqrt(Vs * Vs + W * W) + abs(W)
     return v * Vs / d if d > 0.0 else 0.0
 
 
-def inplane_induction_numpy(v, Vs, UP):
+def inplane_induction_numpy(v, Vs, Vc):
     """:func:`inplane_induction` elementwise over broadcast arrays."""
-    d = np.sqrt(Vs * Vs + UP * UP) + np.abs(UP)
+    W = np.where(Vc >= 0.0, Vc + v, v)
+    d = np.sqrt(Vs * Vs + W * W) + np.abs(W)
     return np.where(d > 0.0, v * Vs / np.where(d > 0.0, d, 1.0), 0.0)
 
 

@@ -71,7 +71,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     ux = pk[PK_INPLANE]  # the skewed wake's in-plane induced velocity on (1) or off (0)
 
     def blade_ut(v):  # the blades' U_T at inflow v (n, nr): the in-plane airspeed, plus u_x(v) with the option
-        return wy3 + (Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2 + v)[:, :, None]) * sinpsi
+        return wy3 + (Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2)[:, :, None]) * sinpsi
 
     UT = wy3 + Vs3 * sinpsi  # (n, nr, naz)
     cfac = nodes.cfac[None, :]
@@ -151,7 +151,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
             fin |= (np.abs(fb) <= ftol) | (np.abs(b - a) <= xtol)
         converged &= fin
         v = np.where(F0 == 0, 0.0, b)
-        Vb = Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2 + v)[:, :, None]  # the blades' in-plane airspeed
+        Vb = Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2)[:, :, None]  # the blades' in-plane airspeed
         UT = wy3 + Vb * sinpsi
         qT, qH = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
     axial = (np.asarray(Vs) == 0)[:, None]

@@ -102,20 +102,25 @@ LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _inplane_partials(kin, v, vs, UP):
-    """The blades' in-plane airspeed vb = vs + kin u_x (u_x = v vs / (sqrt(vs^2 + UP^2) + |UP|),
-    _physics.inplane_induction; kin 1 with the option, 0 without) and kin times u_x's partial
-    derivatives in vs, in UP and in v at fixed UP. Where vs = UP = 0 (u_x = 0) the partials
-    are taken as 0."""
+def _inplane_partials(kin, v, vs, vc):
+    """The blades' in-plane airspeed vb = vs + kin u_x (u_x = v vs / (sqrt(vs^2 + W^2) + |W|),
+    W = vc + v, or v in descent: _physics.inplane_induction; kin 1 with the option, 0
+    without) and kin times u_x's partial derivatives in vs, in vc at fixed v and in v at
+    fixed vc. At vc = 0, where u_x's slope in vc has a kink, the two sides' mean (as for the
+    empirical descent model's switch); where vs = W = 0 the partials are taken as 0."""
     if kin == 0.0:
         return vs, 0.0, 0.0, 0.0
-    rq = np.sqrt(vs * vs + UP * UP)
-    d = rq + abs(UP)
+    W = vc + v if vc >= 0.0 else v
+    rq = np.sqrt(vs * vs + W * W)
+    d = rq + abs(W)
     if d == 0.0:
         return vs, 0.0, 0.0, 0.0
-    ux = v * vs / d
-    sg = 1.0 if UP > 0.0 else (-1.0 if UP < 0.0 else 0.0)
-    return vs + kin * ux, kin * (v / d - ux * vs / (rq * d)), -kin * ux * (UP / rq + sg) / d, kin * vs / d
+    g = v * vs / d
+    sg = 1.0 if W > 0.0 else (-1.0 if W < 0.0 else 0.0)
+    g_s = v / d - (g * vs / (rq * d) if rq > 0.0 else 0.0)
+    g_w = -g * (W / rq + sg) / d if rq > 0.0 else 0.0  # in W
+    g_c = g_w if vc > 0.0 else (0.5 * g_w if vc == 0.0 else 0.0)  # W = vc + v in climb, v in descent
+    return vs + kin * g, kin * g_s, kin * g_c, kin * (vs / d + g_w)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -465,10 +470,10 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
         s, u = _constants_slopes(U2, sc[j], cy2[j], model, cam)
         UP = vc + vj
-        # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, U_P) (_physics.inplane_induction) and
-        # u_x's partials in V sin beta, in U_P and in v at fixed U_P; the Reynolds constants and the momentum side
-        # keep V sin beta
-        vb, uxs, uxp, uxv = _inplane_partials(kin, vj, vs, UP)
+        # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, V cos beta) (_physics.inplane_induction)
+        # and u_x's partials in V sin beta, in V cos beta and in v; the Reynolds constants and the momentum side keep
+        # V sin beta
+        vb, uxs, uxc, uxv = _inplane_partials(kin, vj, vs, vc)
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node
         sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vb, vc, yj, th, sth, cth, s, u, sn, naz, model, pk)
@@ -515,9 +520,8 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         # d(T, D, Q, R)/d(the blades' in-plane airspeed) at fixed v: U_T by sin psi, and the radial drag's
         b0, b1, b2, b3 = tTs * cf, (tHs2 + rr * rTs + krad * rB) * cf, tHs * cq, tTs2 * cq
         # d(T, D, Q, R)/dv = d/dU_P, and through u_x (0 without it), and d/dU2 (the loads' scales applied)
-        uxt = uxv + uxp  # u_x's total derivative in v (U_P = V cos beta + v)
-        Lv0, Lv1 = pT * cf + uxt * b0, (pHs + rr * rP) * cf + uxt * b1
-        Lv2, Lv3 = pH * cq + uxt * b2, pTs * cq + uxt * b3
+        Lv0, Lv1 = pT * cf + uxv * b0, (pHs + rr * rP) * cf + uxv * b1
+        Lv2, Lv3 = pH * cq + uxv * b2, pTs * cq + uxv * b3
         uu0, uu1, uu2, uu3 = uT * cf, (uHs + rr * rU) * cf, uH * cq, uTs * cq
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
@@ -531,11 +535,12 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         dB[1, 1] = fs * b1 + vs * uu1
         dB[2, 1] = fs * b2 + vs * uu2
         dB[3, 1] = fs * b3 + vs * uu3
-        # V cos beta: U_P by 1 (at fixed v: not u_x's part in v), U2 by 2 V cos beta
-        dB[0, 2] = Lv0 - uxv * b0 + 2.0 * vc * uu0
-        dB[1, 2] = Lv1 - uxv * b1 + 2.0 * vc * uu1
-        dB[2, 2] = Lv2 - uxv * b2 + 2.0 * vc * uu2
-        dB[3, 2] = Lv3 - uxv * b3 + 2.0 * vc * uu3
+        # V cos beta: U_P by 1 and u_x by its partial (Lv less u_x's part in v), U2 by 2 V cos beta
+        dc = uxc - uxv
+        dB[0, 2] = Lv0 + dc * b0 + 2.0 * vc * uu0
+        dB[1, 2] = Lv1 + dc * b1 + 2.0 * vc * uu1
+        dB[2, 2] = Lv2 + dc * b2 + 2.0 * vc * uu2
+        dB[3, 2] = Lv3 + dc * b3 + 2.0 * vc * uu3
         dB[0, 3] = cT * cf
         dB[1, 3] = (cHs + rr * rC) * cf
         dB[2, 3] = cH * cq

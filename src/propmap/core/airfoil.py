@@ -122,12 +122,14 @@ class RotorOptions:
         cylinder of ring vortices (W. Castles and J. H. De Leeuw, NACA Report 1184, 1954),
         induces at each annulus besides the normal inflow v of momentum theory an in-plane
         velocity along the in-plane airspeed, v tan(chi / 2) on the azimuthal mean, chi the
-        wake's skew (tan chi = V sin(beta) / |V cos(beta) + v|): from V sin(beta) / 2 at small
-        skew to v edgewise (_physics.inplane_induction, docs/models.md). The blades meet
+        wake's skew (tan chi = V sin(beta) / |V cos(beta) + v|, in descent V sin(beta) / |v|):
+        from V sin(beta) / 2 at small skew in hover to v edgewise at V cos(beta) + v = 0
+        (_physics.inplane_induction, docs/models.md). The blades meet
         V sin(beta) + v tan(chi / 2) in the disk plane; the momentum balance keeps Glauert's.
-        Zero in axial flow and hover. No implicit derivatives yet: ``rotor_loads(derivatives=
-        ...)`` refuses it and the fits difference the solver. False (default): momentum
-        theory's inflow, normal to the disk.
+        Zero in axial flow and hover. Implicit derivatives with the uniform inflow without
+        swirl; with a linear inflow or swirl ``rotor_loads(derivatives=...)`` refuses it and
+        the fits difference the solver. False (default): momentum theory's inflow, normal to
+        the disk.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
