@@ -303,8 +303,10 @@ def inplane_induction(v, Vs, Vc):
     hover (Vs << |W|), v edgewise at W = 0. In descent (Vc < 0) W is taken as v, the skew
     of a hovering disk at the same in-plane speed: propmap's choice, as the model holds for
     a wake that convects away below, which in descent it does less and less (the
-    vortex-ring state), and with Vc + v its tan(chi / 2) would jump from Vs / 2 to 1 over
-    |Vc + v| ~ Vs there (root folds). Continuous at Vc = 0, where its slope in Vc has a kink
+    vortex-ring state), and with Vc + v its tan(chi / 2) would change from Vs / (2 |W|) to 1
+    over |Vc + v| ~ Vs there (root folds). Where the flow through the disk is upward the
+    model's wake leaves above and its u_x is -v tan(chi / 2), upstream: propmap keeps the
+    sign of v and a continuous u_x through the vortex-ring state instead (docs/models.md). Continuous at Vc = 0, where its slope in Vc has a kink
     (exactly edgewise, as the empirical descent model's switch). Vs >= 0; scalars (the
     kernels; :func:`inplane_induction_numpy` for arrays).
 

@@ -123,8 +123,9 @@ class RotorOptions:
         induces at each annulus besides the normal inflow v of momentum theory an in-plane
         velocity along the in-plane airspeed, v tan(chi / 2) on the azimuthal mean, chi the
         wake's skew (tan chi = V sin(beta) / |V cos(beta) + v|, in descent V sin(beta) / |v|):
-        from V sin(beta) / 2 at small skew in hover to v edgewise at V cos(beta) + v = 0
-        (_physics.inplane_induction, docs/models.md). The blades meet
+        from V sin(beta) / 2 at small skew in hover to v as the skew nears 90 deg
+        (_physics.inplane_induction, docs/models.md; in descent propmap's interpolation, not
+        the model's sign where the flow through the disk is upward). The blades meet
         V sin(beta) + v tan(chi / 2) in the disk plane; the momentum balance keeps Glauert's.
         Zero in axial flow and hover. Implicit derivatives with the uniform inflow without
         swirl; with a linear inflow or swirl ``rotor_loads(derivatives=...)`` refuses it and
