@@ -306,9 +306,10 @@ def inplane_induction(v, Vs, Vc):
     vortex-ring state), and with Vc + v its tan(chi / 2) would change from Vs / (2 |W|) to 1
     over |Vc + v| ~ Vs there (root folds). Where the flow through the disk is upward the
     model's wake leaves above and its u_x is -v tan(chi / 2), upstream: propmap keeps the
-    sign of v and a continuous u_x through the vortex-ring state instead (docs/models.md). Continuous at Vc = 0, where its slope in Vc has a kink
-    (exactly edgewise, as the empirical descent model's switch). Vs >= 0; scalars (the
-    kernels; :func:`inplane_induction_numpy` for arrays).
+    sign of v and a continuous u_x through the vortex-ring state instead (docs/models.md).
+    Continuous at Vc = 0, where its slope in Vc has a kink (exactly edgewise, as the
+    empirical descent model's switch). Vs >= 0; scalars (the kernels;
+    :func:`inplane_induction_numpy` for arrays).
 
     Source: the wake of a uniformly loaded disk as a semi-infinite skewed cylinder of ring
     vortices (W. Castles and J. H. De Leeuw, NACA Report 1184, 1954; its normal velocity at
