@@ -125,7 +125,8 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     acc = 0.0
     UP = Vc + v
     Vm = Vs  # the momentum side's in-plane airspeed
-    Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)  # the blades'
+    if pk[PK_INPLANE] != 0.0:  # the blades' (off: no square root per evaluation)
+        Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)
     # one loop per section model and inflow, so that each compiles to straight-line SIMD code
     if gx == 0.0 and gy == 0.0:
         if model == CAMBERED:
@@ -506,7 +507,7 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     aY = 0.0
     aP = 0.0
     UP = Vc + v
-    if not axial:
+    if not axial and pk[PK_INPLANE] != 0.0:
         Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)
     kr = 0.0 if axial else pk[PK_RADIAL_DRAG] * Vs  # the radial flow's drag: u_R = kr cos psi
     if gx == 0.0 and gy == 0.0:
