@@ -45,7 +45,7 @@ import numpy as np
 from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, annulus_loads
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
-from ._physics import NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W, NODE_Y, PK_RADIAL_DRAG
+from ._physics import PK_RADIAL_DRAG
 from ._sensitivity import (
     N_STATE,
     _airspeed_components,
@@ -56,6 +56,7 @@ from ._sensitivity import (
     _direction,
     _gill_tangent,
     _input_directions,
+    _node_rows,
     _start_point,
     _stored_state,
 )
@@ -270,15 +271,7 @@ def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens, stw
 def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens, out):
     vu, dvu, radius = uni
     scpm, hrho = dens
-    y = nodes[NODE_Y]
-    w = nodes[NODE_W]
-    th0 = nodes[NODE_TH]
-    sc = nodes[NODE_SC]
-    cy2 = nodes[NODE_CY2]
-    cfac = nodes[NODE_CFAC]
-    mfac = nodes[NODE_MFAC]
-    ct = nodes[NODE_CT]
-    ch = nodes[NODE_CH]
+    y, w, th0, sc, cy2, cfac, mfac, ct, ch = _node_rows(nodes)
     nr = y.shape[0]
     n_par = par[3].shape[0]
     n_all = n_in + n_par + (1 if hrho != 0.0 else 0)

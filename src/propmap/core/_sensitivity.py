@@ -356,6 +356,16 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _node_rows(nodes):
+    """The rows of the blade's node array (shape (N_NODE_ROWS, n_radial), _physics.NODE_*) that
+    the sensitivity passes read, each shape (n_radial,): y [m], the quadrature weight w [m],
+    the blade angle [rad], the section constant sc, (c/y)^2, the blade and momentum factors
+    cfac, mfac [kg/m^2] and the tip- and hub-loss constants ct, ch (-1: off)."""
+    return (nodes[NODE_Y], nodes[NODE_W], nodes[NODE_TH], nodes[NODE_SC], nodes[NODE_CY2], nodes[NODE_CFAC],
+            nodes[NODE_MFAC], nodes[NODE_CT], nodes[NODE_CH])
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _start_point(out, i, ok, n_rows, w, y):
     """Column ``i`` of rows 0 ... n_rows - 1 of ``out`` set to 0, or to NaN where the point did not
     converge (``ok[i]`` False: returns 0.0, nothing more to do); else the mean inflow's weight
@@ -405,15 +415,7 @@ def _input_directions(e, n, V, sb, cb, vs):
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)  # as _kernel._solve_point
 def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
-    y = nodes[NODE_Y]
-    w = nodes[NODE_W]
-    th0 = nodes[NODE_TH]
-    sc = nodes[NODE_SC]
-    cy2 = nodes[NODE_CY2]
-    cfac = nodes[NODE_CFAC]
-    mfac = nodes[NODE_MFAC]
-    ct = nodes[NODE_CT]
-    ch = nodes[NODE_CH]
+    y, w, th0, sc, cy2, cfac, mfac, ct, ch = _node_rows(nodes)
     sinpsi = azim[0]
     pkpm, campm, cam_same, hpar = par
     naz_half = sinpsi.shape[0] // 2  # the half circle [-pi/2, pi/2]
