@@ -110,16 +110,15 @@ def test_at_small_skew_the_blades_meet_three_halves_of_the_in_plane_airspeed(rot
 
 
 def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp_path):
-    """Implicit derivatives with the uniform inflow (tests/test_derivatives.py checks them
-    against differences of the solver); refused with a linear inflow or swirl, where the fits
-    difference the solver. A fit of loads at incidence recovers the set it was made with."""
+    """Implicit derivatives with the uniform inflow, a linear inflow or swirl
+    (tests/test_derivatives.py, test_linear_inflow_derivatives.py and test_swirl.py check them
+    against differences of the solver): the fits take them. A fit of loads at incidence
+    recovers the set it was made with."""
     prop, p = rotor
     q = p.replace(inplane_induction=True)
-    assert differentiable(q, ("cl_alpha",))
-    for other in (q.replace(inflow="pitt-peters"), q.replace(swirl=True)):
-        assert not differentiable(other, ("cl_alpha",))
-        with pytest.raises(ValueError, match="inplane_induction=True .* implemented for the uniform inflow"):
-            pm.rotor_loads(prop, other, 600.0, 5.0, 1.0, derivatives=True)
+    for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True)):
+        assert differentiable(other, ("cl_alpha",))
+    assert not differentiable(q.replace(inflow="pitt-peters", swirl=True), ("cl_alpha",))
     inc = np.radians(np.repeat([0.0, 30.0, 60.0, 90.0], 4))
     V = np.tile([2.0, 5.0, 8.0, 11.0], 4)
     om = np.full(V.size, 6000 * math.pi / 30)

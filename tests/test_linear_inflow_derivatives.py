@@ -21,11 +21,15 @@ def prop():
     return pm.load_propeller("apce_8x6")
 
 
-@pytest.fixture(scope="module", params=[("generic", "pitt-peters"), ("paper", "drees")], ids=lambda p: "-".join(p))
+@pytest.fixture(scope="module", params=[("generic", "pitt-peters"), ("paper", "drees"), ("generic_inplane", "drees"),
+                                        ("paper_inplane", "pitt-peters")], ids=lambda p: "-".join(p))
 def params(request):
+    """The sets with a linear inflow, and with the skewed wake's in-plane induced velocity
+    (RotorOptions.inplane_induction: the blades' in-plane airspeed depends on the annulus'
+    root, the airspeed and the incidence)."""
     model, inflow = request.param
-    base = pm.generic_params() if model == "generic" else pm.preset("gill2017-apc")
-    return base.replace(inflow=inflow)
+    base = pm.generic_params() if model.startswith("generic") else pm.preset("gill2017-apc")
+    return base.replace(inflow=inflow, inplane_induction=model.endswith("_inplane"))
 
 
 def _scale(r, q):
@@ -178,8 +182,11 @@ def test_flapping_blades_with_a_linear_inflow(prop, params, compliance):
     """Flapping acts on the rigid loads, whose side force and pitching moment a linear inflow
     makes nonzero (core/flapping.flapping_derivatives in its general form): the flapping
     rotor's derivatives, the compliance's and the lift slope's included, within 1e-5 of central
-    differences of the solver; at compliance 0 (one-sided there) the rigid pitching moment makes
-    the drag and the rolling moment linear in the compliance, no longer quadratic."""
+    differences of the solver (2e-5 with the in-plane induction: measured 2026-11-25, at most
+    1.1e-5, d(side force)/d(incidence) of the paper's set at 80 deg, where Richardson-extrapolated
+    differences of the rigid rotor differ from the derivative by 7.7e-6 with the option and by
+    up to 2e-5 on other loads without it); at compliance 0 (one-sided there) the rigid pitching
+    moment makes the drag and the rolling moment linear in the compliance, no longer quadratic."""
     from .conftest import moved_loads
 
     p = params.replace(flap_compliance=compliance)
@@ -187,6 +194,7 @@ def test_flapping_blades_with_a_linear_inflow(prop, params, compliance):
     om, V, b = np.array([600.0, 800.0, 1000.0]), np.array([5.0, 10.0, 8.0]), np.radians([30.0, 80.0, 150.0])
     wrt = ("omega", "airspeed", "incidence", "collective", "rho", "flap_compliance", slope)
     r = pm.rotor_loads(prop, p, om, V, b, derivatives=wrt, discretization=DISC)
+    tol = 2e-5 if params.inplane_induction else 1e-5
     steps = {"omega": 1e-2, "airspeed": 1e-4, "incidence": 1e-6, "collective": 1e-6, "rho": 1e-5,
              "flap_compliance": 1e-5, slope: 1e-5}
     assert np.all(np.abs(r.pitching_moment) > 1e-3 * np.abs(r.torque))  # (rigid or flapping, Y and M_P)
@@ -202,7 +210,7 @@ def test_flapping_blades_with_a_linear_inflow(prop, params, compliance):
                 fd = (4 * getattr(hi, q) - getattr(hi2, q) - 3 * getattr(r, q)) / (2 * h)
             else:
                 fd = (getattr(hi, q) - getattr(lo, q)) / (2 * h)
-            assert np.max(np.abs(r.derivative(q, w) - fd)) <= 1e-5 * np.max(np.abs(fd)) + 1e-12, (w, q)
+            assert np.max(np.abs(r.derivative(q, w) - fd)) <= tol * np.max(np.abs(fd)) + 1e-12, (w, q)
     if compliance == 0:
         assert np.all(np.abs(r.derivative("drag", "flap_compliance")) > 0)
 

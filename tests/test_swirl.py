@@ -118,7 +118,7 @@ SWIRL_POINTS = [  # (omega [rad/s], V [m/s], incidence [deg])
 ]
 
 
-@pytest.mark.parametrize("model", ["cambered", "gill2017"])
+@pytest.mark.parametrize("model", ["cambered", "gill2017", "cambered_inplane"])
 def test_swirl_implicit_derivatives_match_differences(apc8x6, model):
     """With swirl each annulus solves two equations in (v, u), the root and the angular momentum
     balance (core/_sensitivity._swirl_system): the implicit derivatives with respect to the
@@ -127,8 +127,9 @@ def test_swirl_implicit_derivatives_match_differences(apc8x6, model):
     torque (moments) per unit of the input's scale (measured 2026-11-25: at most 2.6e-6 for the
     inputs, 2.0e-7 for the parameter and the density), and differ from the derivatives without
     swirl (the balance is not ignored)."""
-    p = (pm.generic_params() if model == "cambered" else pm.preset("gill2017-apc")).replace(swirl=True)
-    par = "cd_min" if model == "cambered" else "cd"
+    p = (pm.generic_params() if model.startswith("cambered") else pm.preset("gill2017-apc")).replace(
+        swirl=True, inplane_induction=model.endswith("_inplane"))  # (with the skewed wake's in-plane induction)
+    par = "cd_min" if model.startswith("cambered") else "cd"
     disc = pm.Discretization(24, 8)
     wrt = ("omega", "airspeed", "incidence", "collective", par, "rho")
     for om, V, beta_deg in SWIRL_POINTS:

@@ -45,7 +45,7 @@ import numpy as np
 from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, annulus_loads
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
-from ._physics import PK_RADIAL_DRAG
+from ._physics import PK_INPLANE, PK_RADIAL_DRAG
 from ._sensitivity import (
     N_STATE,
     _airspeed_components,
@@ -55,6 +55,7 @@ from ._sensitivity import (
     _constants_slopes,
     _direction,
     _gill_tangent,
+    _inplane_partials,
     _input_directions,
     _node_rows,
     _start_point,
@@ -126,7 +127,10 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     cospsi = azim[1]
     naz = sinpsi.shape[0]
     krad = pk[PK_RADIAL_DRAG]
-    kr = krad * Vs
+    # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, V cos beta) at the annulus' mean inflow v
+    # (_physics.inplane_induction, 0 without the option) and u_x's partials; the constants keep V sin beta
+    vb, uxs, uxc, uxv = _inplane_partials(pk[PK_INPLANE], v, Vs, Vc)
+    kr = krad * vb
     # the sums of the integrands of the element's partials: 0-2 U_P's (weights 1, cos, sin), 3-4 U_T's (1, sin),
     # 5 the constants' slope's, 6 the blade angle's; 7 the radial drag's base (C_D,p U cos^2, cos sin)
     S = np.zeros((8, 6))
@@ -134,7 +138,7 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     for k in range(naz):
         sk = sinpsi[k]
         ck = cospsi[k]
-        UT = Om * y + Vs * sk
+        UT = Om * y + vb * sk
         UP = Vc + v * (1.0 + gx * ck + gy * sk)
         if model == CAMBERED:
             base, d_t, d_p, d_u, d_c = _cambered_tangent(UT, UP, th, np.sin(th), np.cos(th), (s[0], s[1], s[2], s[3]),
@@ -161,10 +165,11 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     cf = cfac / naz
     for q in range(6):
         f = cf * y if q == 2 or q == 3 or q == 5 else cf  # Q, M_R and M_P carry the radius
-        P[0, q] = f * (S[0, q] + gx * S[1, q] + gy * S[2, q])  # dU_P/dv = 1 + g_x cos + g_y sin
+        sb = S[4, q] + krad * S[7, q]  # in the blades' in-plane airspeed vb: U_T by sin psi, the radial drag's factor
+        P[0, q] = f * (S[0, q] + gx * S[1, q] + gy * S[2, q] + uxv * sb)  # dU_P/dv = 1 + g_x cos + g_y sin
         P[1, q] = f * (y * S[3, q] + 2.0 * Om * y * y * S[5, q])
-        P[2, q] = f * (S[4, q] + Vs * S[5, q] + krad * S[7, q])
-        P[3, q] = f * (S[0, q] + 2.0 * Vc * S[5, q])
+        P[2, q] = f * ((1.0 + uxs) * sb + Vs * S[5, q])
+        P[3, q] = f * (S[0, q] + 2.0 * Vc * S[5, q] + uxc * sb)
         P[4, q] = f * S[6, q]
         P[5, q] = f * v * S[1, q]
         P[6, q] = f * v * S[2, q]
@@ -183,12 +188,13 @@ def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g,
     sinpsi = azim[0]
     cospsi = azim[1]
     naz = sinpsi.shape[0]
-    kr = pk[PK_RADIAL_DRAG] * Vs
+    vb = _inplane_partials(pk[PK_INPLANE], v, Vs, Vc)[0]  # the blades' in-plane airspeed (:func:`_input_partials`)
+    kr = pk[PK_RADIAL_DRAG] * vb
     con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
     sth = np.sin(th)
     cth = np.cos(th)
     for k in range(naz):
-        st = _cambered_state(Om * y + Vs * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
+        st = _cambered_state(Om * y + vb * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
                              sec, con)
         for c in range(N_STATE):  # unrolled: the state is a tuple of floats
             stw[c, k] = st[c]

@@ -48,14 +48,13 @@ def differentiable(params: SectionParams, names) -> bool:
     Returns
     -------
     bool
-        False for a linear inflow model with swirl, for ``inplane_induction`` with either, or
-        for a name that is not a numeric field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other than
-        ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
+        False for a linear inflow model with swirl, or for a name that is not a numeric
+        field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other
+        than ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
         rigid and flapping blades alike); the rotation rates' range is the caller's to check
         (>= 0.1 rad/s).
     """
-    if (params.inflow != "uniform" and params.swirl) or (params.inplane_induction and (params.inflow != "uniform"
-                                                                                     or params.swirl)):
+    if params.inflow != "uniform" and params.swirl:
         return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
@@ -83,10 +82,6 @@ def _derivative_inputs(derivatives, params) -> tuple:
     if params.inflow != "uniform" and params.swirl:
         raise ValueError("derivatives with a linear inflow model are implemented without swirl; this set has "
                          f"inflow={params.inflow!r} with swirl=True")
-    if params.inplane_induction and (params.inflow != "uniform" or params.swirl):
-        raise ValueError("derivatives with inplane_induction=True (the skewed wake's in-plane induced velocity) are "
-                         f"implemented for the uniform inflow without swirl; this set has inflow={params.inflow!r}, "
-                         f"swirl={params.swirl}")
     return wrt
 
 
