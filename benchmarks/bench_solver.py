@@ -127,7 +127,8 @@ def section_models(prop, paper, n=2000, rounds=7):
     models = {"gill2017-apc (paper)": paper, "cambered, tip loss (default)": g,
               "cambered, no loss": g.replace(tip_loss=False), "cambered, tip + hub loss": g.replace(hub_loss=True),
               "cambered, tip loss, swirl (option)": g.replace(swirl=True),
-              "cambered, tip loss, in-plane induction (option)": g.replace(inplane_induction=True)}
+              "cambered, tip loss, without the in-plane induction (the default until 2026-11-25)":
+                  g.replace(inplane_induction=False)}
     om, V, b = points(n, 0, 90, 5)
     out = {}
     threads_all = numba.get_num_threads()

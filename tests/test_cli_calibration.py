@@ -150,11 +150,13 @@ def test_validate_all_on_two_propellers(capsys, tmp_path):
         assert r["blind"]["rms_ct"] < r["paper_table_i"]["rms_ct"]
     assert set(rep["cases"]) == {"apc10x7e", "dji9443", "beaver", "gill2019"}
     # fits at incidence held out: the flapping (the default) carries the in-plane force the section alone misses
+    # (measured 2026-11-25, with the skewed wake's in-plane induction: held-out in-plane force 0.22 / 0.33 / 0.31 /
+    # 0.60 of the rigid fit's; without the induction 0.17 / 0.16 / 0.15 / 0.42)
     fits = rep["incidence_fits"]
     assert set(fits) == {"apce_8x6", "apce_8x8", "apce_10x7", "apcsf_10x4.7"}
     for by_fit in fits.values():
         rigid, default = by_fit["section alone (rigid)"], by_fit["default (section + flapping)"]
-        assert default["rms_drag"] < rigid["rms_drag"] / 2 and default["rms_torque"] < rigid["rms_torque"]
+        assert default["rms_drag"] < 0.7 * rigid["rms_drag"] and default["rms_torque"] < rigid["rms_torque"]
         assert min(default["flap_compliance"]) > 0.5 and max(rigid["flap_compliance"]) == 0.0
     for name in ("validation.json", "validation_per_propeller.csv", "cross_validation.png", "published_cases.png"):
         assert (tmp_path / "v" / name).stat().st_size > 100

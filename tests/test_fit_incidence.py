@@ -79,9 +79,11 @@ def test_without_the_in_plane_force_the_defaults_are_unchanged(apc8x6):
 
 def test_held_out_incidence_of_the_apc_10x7e_in_oblique_flow():
     """Measured (published fit): the 60 deg incidence held out, the rest fitted from the generic
-    set without the APC electric family and its prior. Measured 2026-11-24 (rms of the static
-    thrust or torque): the section alone D 3.67%, T 5.48%, Q 9.47%; with the flapping (4.5
-    rad/(N m)) 0.65%, 3.66%, 3.40%."""
+    set without the APC electric family and its prior. Measured 2026-11-25 with the skewed
+    wake's in-plane induction (the cambered default since then; rms of the static thrust or
+    torque): the section alone D 3.15%, T 3.92%, Q 7.99%; with the flapping (1.9 rad/(N m))
+    0.78%, 3.28%, 2.91% (without the induction, 2026-11-24: 3.67%, 5.48%, 9.47%; with the
+    flapping, 4.5 rad/(N m), 0.65%, 3.66%, 3.40%)."""
     name = "apce_10x7"
     prop, data = pm.load_propeller(name), gill2019_loads(name, air=AIR)
     base, pop = generic_without(name)[0], population(without=name)
@@ -91,8 +93,8 @@ def test_held_out_incidence_of_the_apc_10x7e_in_oblique_flow():
         rigid, default = (holdout_loads(data, prop, base, folds, names=names, population=pop, air=AIR)
                           for names in (CAMBERED_FIT, None))
     assert default["rms_drag"] < 0.01 and default["rms_drag"] < rigid["rms_drag"] / 4  # in-plane force
-    assert default["rms_thrust"] < 0.8 * rigid["rms_thrust"] and default["rms_torque"] < rigid["rms_torque"] / 2
-    assert rigid["flap_compliance"] == [0.0] and 2.0 < default["flap_compliance"][0] < 10.0
+    assert default["rms_thrust"] < 0.9 * rigid["rms_thrust"] and default["rms_torque"] < rigid["rms_torque"] / 2
+    assert rigid["flap_compliance"] == [0.0] and 1.0 < default["flap_compliance"][0] < 10.0
     assert default["n_points"] == int(np.sum(~folds[0]))
     with pytest.raises(ValueError, match="training and held-out"):
         holdout_loads(data, prop, base, [np.ones(data.n, bool)])

@@ -222,13 +222,21 @@ def test_wrench_applies_a_params_files_rotor_interference(tmp_path, capsys, shar
 
 def test_fit_flight_implicit_jacobian_reaches_the_same_optimum(shared_data):
     """fit_flight with vehicle_wrench's implicit derivatives (default) and with differences of
-    the solver: the same parameters (1e-4 relative) in fewer model calls (one log at 2 Hz)."""
+    the solver: the same optimum in fewer model calls (one log at 2 Hz). Measured 2026-11-25
+    with the skewed wake's in-plane induction (the cambered default): costs 2.5356234 and
+    2.5356193, parameters within 3.3e-4 relative (alpha_L0_re, the least pinned; the others
+    within 7e-5), in 21 and 219 calls; without the induction within 4e-5. At 12 x 8 nodes the
+    solver's loads are rough below about 1e-8 of the thrust (one-sided differences of the
+    thrust in alpha_L0_re at one of the sample's rotors: 5.140-5.168 at steps 1e-7-1e-6,
+    5.1475 by central differences at 1e-4 and by the implicit derivative), so both fits stop
+    within that roughness of each other."""
     veh = pm.read_vehicle(VEHICLE)
     s = flight_samples([read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[0])], veh, rate_hz=2)
     base = pm.generic_params().replace(air=pm.Air(rho=1.204))
     a = fit_flight(s, veh, base=base, options=FitOptions(jacobian="implicit"), discretization=Discretization(12, 8))
     b = fit_flight(s, veh, base=base, options=FitOptions(jacobian="differences"), discretization=Discretization(12, 8))
-    np.testing.assert_allclose(a.x, b.x, rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(a.x, b.x, rtol=1e-3, atol=1e-6)
+    assert a.cost == pytest.approx(b.cost, rel=1e-5)
     assert a.nfev < b.nfev / 2
 
 
@@ -249,5 +257,6 @@ def test_fit_flight_centre_of_mass_columns_are_implicit(shared_data):
         fits[how] = fit_flight(s, veh, base=base, options=opts, moments=True, discretization=COARSE)
     a, b = fits["implicit"], fits["differences"]
     np.testing.assert_allclose(fitted_centre_of_mass(a), fitted_centre_of_mass(b), rtol=0, atol=1e-6)
-    np.testing.assert_allclose(a.x, b.x, rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(a.x, b.x, rtol=1e-3, atol=1e-6)
+    assert a.cost == pytest.approx(b.cost, rel=1e-5)
     assert a.nfev < b.nfev / 2

@@ -72,10 +72,13 @@ def test_radial_drag_adds_to_the_in_plane_force_only(prop, generic, inflow):
 def test_radial_drag_of_a_linear_inflow_against_a_numpy_quadrature(prop, generic, inflow):
     """The radial drag's share of D and of the side force Y, on and off with the kernel's own roots,
     against an independent quadrature over the full circle: (rho/2) N_b c C_D,p U u_R resolved
-    along the airspeed (cos psi) and toward the advancing side (sin psi), u_R = V sin(beta) cos(psi)."""
+    along the airspeed (cos psi) and toward the advancing side (sin psi), u_R = V_b cos(psi), with
+    the blades' in-plane airspeed V_b = V sin(beta) + u_x (the skewed wake's in-plane induction
+    at the annulus' mean inflow, the cambered default)."""
     from propmap.core.nodes import _nodes
 
     on = generic.replace(inflow=inflow)
+    assert on.inplane_induction  # (the cambered default: V_b below differs from V sin beta)
     om, V, b = POINTS[0][2:], POINTS[1][2:], POINTS[2][2:]
     r_on = pm.rotor_loads(prop, on, om, V, b, radial=True)
     r_off = pm.rotor_loads(prop, on.replace(radial_drag=False), om, V, b, radial=True)
@@ -93,13 +96,14 @@ def test_radial_drag_of_a_linear_inflow_against_a_numpy_quadrature(prop, generic
     OmR = om * prop.radius
     kx, ky = np.array([ph.inflow_gradients(m, lam, ph.INFLOW_CODES[inflow])  # scalars only
                        for m, lam in zip(V * np.sin(b) / OmR, (V * np.cos(b) + vbar) / OmR)]).T
-    UT = om[:, None, None] * y + Vs * psi_s
+    Vb = Vs + ph.inplane_induction_numpy(r_on.v_i[:, :, None], Vs, Vc) if on.inplane_induction else Vs
+    UT = om[:, None, None] * y + Vb * psi_s
     UP = Vc + r_on.v_i[:, :, None] * (1 + (kx[:, None, None] * psi_c + ky[:, None, None] * psi_s) * y / prop.radius)
     U2 = (om[:, None] * nd.y[None, :]) ** 2 + 0.5 * Vs[:, :, 0] ** 2 + Vc[:, :, 0] ** 2
     s = ph.cambered_annulus(U2, nd.sc[None, :], nd.cy2[None, :], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0,
                             cam[5], cam[6], cam[7])
     cd = ph.profile_cd(UT, UP, nd.theta[None, :, None], *(x[..., None] for x in s), model, pk)
-    fR = cd * np.sqrt(UT**2 + UP**2) * Vs * psi_c  # per unit (rho/2) c and span, as the element's outputs
+    fR = cd * np.sqrt(UT**2 + UP**2) * Vb * psi_c  # per unit (rho/2) c and span, as the element's outputs
     dD = (nd.cfac * (fR * psi_c).mean(axis=2)) @ nd.w
     dY = (nd.cfac * (fR * psi_s).mean(axis=2)) @ nd.w
     np.testing.assert_allclose(r_on.drag - r_off.drag, dD, rtol=1e-9)

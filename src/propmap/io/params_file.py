@@ -44,8 +44,9 @@ them all::
 
 Either model also takes the rotor options (``RotorOptions``; docs/models.md), whose defaults
 are the paper's rigid blades in an azimuth-independent inflow (the paper's section model's
-defaults shown; the cambered model's are ``descent = "empirical"`` and ``radial_drag = true``,
-which a cambered file without those keys gets)::
+defaults shown; the cambered model's are ``descent = "empirical"``, ``radial_drag = true`` and
+``inplane_induction = true``, which a cambered file without those keys gets, with the warning
+that names every key taken from the generic set)::
 
     inflow = "uniform"        # or "drees", "pitt-peters" (linear inflow models)
     descent = "glauert"       # or "empirical" (measured inflow in the vortex-ring state)
@@ -53,8 +54,7 @@ which a cambered file without those keys gets)::
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
     radial_drag = false       # the radial flow's drag in edgewise flow (in-plane force; not in the paper)
-    inplane_induction = false # the skewed wake's in-plane induced velocity (edgewise flow; not in the paper);
-                              # a file without the key has it off, without a warning
+    inplane_induction = false # the skewed wake's in-plane induced velocity (edgewise flow; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
 ``section = "naca0015"`` takes every key of that section preset (:func:`propmap.io.param_sets.section_preset`;
@@ -357,11 +357,6 @@ def set_coverage(label: str) -> dict | None:
     return coverage(label)
 
 
-#: rotor options added after parameter files were written, off unless a file says otherwise: a
-#: file without one gets the record's default (off) without a warning, not the generic set's value
-SILENT_KEYS = frozenset({"inplane_induction"})
-
-
 def _generic_fill(data: dict, keys: dict, where: str) -> dict:
     """The generic set's values (field name -> value) of the cambered keys ``data`` lacks,
     and a warning naming them."""
@@ -370,7 +365,7 @@ def _generic_fill(data: dict, keys: dict, where: str) -> dict:
     from .calibration import generic_params
 
     g = generic_params()
-    missing = [k for k in keys if k not in data and k not in SILENT_KEYS]
+    missing = [k for k in keys if k not in data]
     if missing:
         given = sorted(k for k in data if k in keys or k in AIR_KEYS)
         warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "

@@ -33,10 +33,10 @@ OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind
             "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 62-82% of "
             "it with the zero-incidence thrust matched by one collective offset), the NeuroBEM quadrotor's flight "
             "logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts held-out body force to "
-            "0.297 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
+            "0.298 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
             "airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with their own sets "
-            "the in-plane force rises with the advance ratio at 0.40-0.60 of the measured rate, and the edgewise "
-            "thrust of the three APC electric ones by 2-7% where the measured rises by 15-19% at mu = 0.2); "
+            "the in-plane force rises with the advance ratio at 0.47-0.74 of the measured rate, and the edgewise "
+            "thrust of the three APC electric ones by 4-9% where the measured rises by 15-19% at mu = 0.2); "
             "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
 
 
