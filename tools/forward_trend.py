@@ -28,6 +28,7 @@ from propmap.identify.flight_scores import _baseline_columns, _hub_velocities
 from propmap.io.calibration import calibration
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
+from propmap.vehicle.model import rotor_geometry
 
 ROOT = Path(__file__).resolve().parents[1]
 LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
@@ -36,8 +37,8 @@ TERMS = ("thrust", "drag", "kz")
 
 def _design(samples, vehicle) -> np.ndarray:
     """RotorPy's terms and the translational lift k_h |v_ip|^2 along each axis, shape (N * 3, 4)."""
-    axes = np.array([r.axis for r in vehicle.rotors])
-    V = _hub_velocities(samples, vehicle)
+    arms, axes, _, _ = rotor_geometry(vehicle)  # about the centre of mass; unit axes
+    V = _hub_velocities(samples, arms)
     v_ip = V - np.einsum("nkj,kj->nk", V, axes)[..., None] * axes[None]
     kh = np.einsum("nk,kj->nj", (v_ip**2).sum(-1), axes)
     return np.concatenate([_baseline_columns(samples, vehicle, TERMS), kh[..., None]], axis=-1).reshape(-1, 4)

@@ -9,7 +9,9 @@ inflow first, whose area-weighted mean inflow v_u sets the wake skew and so the 
     G(v, x, g) = dT_BET(v (1 + g_x cos psi + g_y sin psi)) - F dT_BEMT(v) = 0,
     g_x = k_x y / R, g_y = k_y y / R
 
-(eq 11 with the linear inflow at every azimuth node). Its loads L(v, x, g) (T, D, Q, M_R, the
+(eq 11 with the linear inflow at every azimuth node; with RotorOptions.inplane_induction the
+blades' in-plane airspeed is V sin(beta) + u_x(v, V sin beta, V cos beta), the skewed wake's
+in-plane induction at the annulus' mean inflow v, as in the kernel). Its loads L(v, x, g) (T, D, Q, M_R, the
 side force Y and the pitching moment M_P, _annulus.annulus_loads) change with an input or a
 section parameter x as (the implicit function theorem on each annulus' converged root, as
 core/_sensitivity.py does for the uniform inflow; A. Ning, "Using blade element momentum
@@ -106,7 +108,8 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
 def _integrands(q, sk, ck, kr):
     """The six loads' integrands at one node (annulus_loads' sums) from the element's (qT, qH,
     C_D,p U) ``q`` or a derivative of it: qT, qH sin psi + kr C_D,p U cos^2 psi, qH, qT sin psi,
-    -qH cos psi + kr C_D,p U cos psi sin psi, -qT cos psi (kr: the radial drag's V sin beta)."""
+    -qH cos psi + kr C_D,p U cos psi sin psi, -qT cos psi (kr: the radial drag's factor times the
+    blades' in-plane airspeed V_b)."""
     return (q[0], q[1] * sk + kr * q[2] * ck * ck, q[1], q[0] * sk, -q[1] * ck + kr * q[2] * ck * sk, -q[0] * ck)
 
 
@@ -116,9 +119,12 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     Omega, V sin beta, V cos beta, the blade angle, g_x and g_y, from one evaluation per node of
     the element with its analytic partials in U_T, U_P, the section constants' slope in U2 and
     the blade angle (core/_tangents.py, as core/_sensitivity._partials for the uniform inflow),
-    over the full circle: at node psi, U_T = Omega y + V sin beta sin psi, U_P = V cos beta +
+    over the full circle: at node psi, U_T = Omega y + V_b sin psi, U_P = V cos beta +
     v (1 + g_x cos psi + g_y sin psi), U2 = (Omega y)^2 + V sin^2 beta / 2 + V cos^2 beta (the
-    constants'), and the radial drag's factor V sin beta. ``op`` = (Omega, V sin beta,
+    constants', with the free stream's V sin beta), and the radial drag's factor V_b, where V_b =
+    V sin beta + u_x(v, V sin beta, V cos beta) is the blades' in-plane airspeed (u_x the skewed
+    wake's in-plane induction at the annulus' mean inflow v, 0 without the option; its partials
+    enter the rows of v, V sin beta and V cos beta by the chain rule). ``op`` = (Omega, V sin beta,
     V cos beta), ``sec`` = (the section constants, their slopes in U2), ``g`` = (g_x, g_y)."""
     Om, Vs, Vc = op
     gx, gy = g

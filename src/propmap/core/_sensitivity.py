@@ -457,7 +457,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         for c in range(8):
             dC[m, c] = pkpm[m][c] - pk[c]
     krad = pk[PK_RADIAL_DRAG]  # the radial flow's drag: D gains krad V sin(beta) times its sums
-    kin = pk[PK_INPLANE]  # the skewed wake's in-plane induced velocity (uniform inflow, no swirl: derivatives.py)
+    kin = pk[PK_INPLANE]  # the skewed wake's in-plane induced velocity (with swirl too: u_x does not depend on u)
     swirl = roots.shape[0] == 2
     for j in range(nr):
         vj = roots[0, i, j]
