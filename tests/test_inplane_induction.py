@@ -112,6 +112,28 @@ def test_at_small_skew_the_blades_meet_three_halves_of_the_in_plane_airspeed(rot
     np.testing.assert_allclose(b.thrust / a.thrust, [1.0035, 1.0108, 1.0192], atol=0.002)
 
 
+def test_the_reverse_flow_radius_takes_the_blades_in_plane_airspeed(rotor):
+    """The retreating blade meets V sin(beta) + u_x - Omega r: reverse flow inside (V sin beta +
+    u_x) / Omega, with u_x at the mean inflow (the flag's approximation of the annuli's own);
+    without the option V sin(beta) / Omega, and 0 in axial flow either way."""
+    prop, p = rotor
+    q = p.replace(inplane_induction=True)
+    om = np.array([300.0, 600.0, 600.0, 600.0, 600.0])
+    V = np.array([8.0, 8.0, 20.0, 8.0, 14.0])  # the last: V sin(beta) / Omega just inside the hub, 0.0233 m
+    b = np.radians([90.0, 60.0, 120.0, 0.0, 90.0])
+    a, r = (pm.rotor_loads(prop, s, om, V, b) for s in (p, q))
+    Vs, Vc = V * np.sin(b), V * np.cos(b)
+    Vs[3] = 0.0
+    np.testing.assert_allclose(a.reverse_flow_radius, Vs / om, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(r.reverse_flow_radius, (Vs + inplane_induction_numpy(r.v_i_mean, Vs, Vc)) / om,
+                               rtol=1e-12, atol=1e-15)
+    moving = Vs > 0
+    assert np.all(r.reverse_flow_radius[moving] > 1.05 * a.reverse_flow_radius[moving])
+    assert r.reverse_flow_radius[3] == 0.0
+    np.testing.assert_array_equal(r.reverse_flow, r.reverse_flow_radius > prop.r_hub)
+    assert np.any(r.reverse_flow & ~a.reverse_flow)  # a point the free stream alone would not flag
+
+
 def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp_path):
     """Implicit derivatives with the uniform inflow, a linear inflow or swirl
     (tests/test_derivatives.py, test_linear_inflow_derivatives.py and test_swirl.py check them
@@ -141,3 +163,10 @@ def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp
     path.write_text("\n".join(line for line in path.read_text().splitlines() if "inplane_induction" not in line))
     with pytest.warns(UserWarning, match="inplane_induction not in the file: taken from the generic set"):
         assert read_params(path).inplane_induction is True
+    # the paper's model without the key: off (the paper's inflow), without a warning
+    import warnings
+
+    path.write_text('section_model = "gill2017"\ncl1 = 5.0\ncl2 = 1.0\ncd = 0.02\nalpha0_deg = 20.0\n')
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read_params(path).inplane_induction is False

@@ -10,8 +10,12 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
+from ._physics import inplane_induction
 
-__all__ = ["CLS_BAND", "CLS_K_WINDMILL", "CLS_R_HUB", "CLS_RADIUS", "CLS_RHO", "point_flags", "working_states"]
+__all__ = ["CLS_BAND", "CLS_INPLANE", "CLS_K_WINDMILL", "CLS_R_HUB", "CLS_RADIUS", "CLS_RHO", "point_flags",
+           "working_states"]
+
+_inplane_induction = numba.njit(inline="always", error_model="numpy")(inplane_induction)
 
 
 @numba.njit(cache=CACHE, error_model="numpy")
@@ -69,7 +73,7 @@ def working_states(T, vx, vz, vbar, rho, radius, band, k_windmill, linear, empir
 
 #: layout of ``cls``, the per-model constants of :func:`point_flags`: rho [kg/m^3], R [m], r_hub [m],
 #: the windmill-brake descent ratio and the vortex-ring band (core/states.py)
-CLS_RHO, CLS_RADIUS, CLS_R_HUB, CLS_K_WINDMILL, CLS_BAND = 0, 1, 2, 3, 4
+CLS_RHO, CLS_RADIUS, CLS_R_HUB, CLS_K_WINDMILL, CLS_INPLANE, CLS_BAND = 0, 1, 2, 3, 4, 5
 
 
 @numba.njit(cache=CACHE, error_model="numpy")
@@ -81,21 +85,27 @@ def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags):
     Reads ``out`` rows 0 (T) and 6 (mean inflow), ``counts`` rows 0 (status) and 1 (annuli
     with multiple roots), ``vx``, ``vz`` = V sin(beta), V cos(beta) and ``om``, the rates the
     loads are for [rad/s]; ``cls`` as ``CLS_*``. Writes ``out`` rows 7-10 (v_h, the descent
-    and in-plane ratios k and m, the reverse-flow radius V sin(beta) / Omega [m]: for a
-    stopped rotor, Omega = 0, inf with in-plane flow, else 0), ``counts`` row 4 (the working
-    state) and ``flags`` shape (N_FLAGS, n): converged (status 0), vortex ring (state 1),
-    multiple roots, reverse flow (radius > r_hub), inflow extrapolated
-    (:func:`working_states`).
+    and in-plane ratios k and m, the reverse-flow radius V_b / Omega [m], V_b the blades'
+    in-plane airspeed: V sin(beta), plus the skewed wake's in-plane induction at the mean
+    inflow where ``cls[CLS_INPLANE]`` is 1 (airfoil.RotorOptions.inplane_induction,
+    _physics.inplane_induction); for a stopped rotor, Omega = 0, inf with in-plane flow, else
+    0), ``counts`` row 4 (the working state) and ``flags`` shape (N_FLAGS, n): converged
+    (status 0), vortex ring (state 1), multiple roots, reverse flow (radius > r_hub), inflow
+    extrapolated (:func:`working_states`).
     """
     working_states(out[0], vx, vz, out[6], cls[CLS_RHO], cls[CLS_RADIUS], cls[CLS_BAND:], cls[CLS_K_WINDMILL],
                    linear, empirical, counts[4], out[7], out[8], out[9], flags[4])
     r_hub = cls[CLS_R_HUB]
+    kin = cls[CLS_INPLANE]
     for i in range(vx.size):
         flags[0, i] = counts[0, i] == 0
         flags[1, i] = counts[4, i] == 1
         flags[2, i] = counts[1, i] > 0
+        vb = vx[i]
+        if kin != 0.0 and vx[i] != 0.0 and out[6, i] == out[6, i]:  # (not where the solve failed: NaN inflow)
+            vb += kin * _inplane_induction(out[6, i], vx[i], vz[i])
         if om[i] > 0.0:
-            r = vx[i] / om[i]
+            r = vb / om[i]
         else:
             r = np.inf if vx[i] > 0.0 else 0.0
         out[10, i] = r

@@ -96,7 +96,10 @@ class RotorLoads:
     reverse_flow : ndarray of bool
         Part of the blade sees reverse flow (U_T < 0) on the retreating side.
     reverse_flow_radius : ndarray
-        V sin(beta) / Omega [m]: radius inside which the retreating blade sees reverse flow.
+        V_b / Omega [m]: radius inside which the retreating blade sees reverse flow, V_b the
+        blades' in-plane airspeed: V sin(beta), plus the skewed wake's in-plane induced
+        velocity at the mean inflow v_i_mean with ``inplane_induction`` (the cambered
+        default; _physics.inplane_induction).
     inflow_extrapolated : ndarray of bool
         The inflow model was used outside the measurements behind it: a linear inflow model
         with the wake above the disk (inflow ratio < 0, the model's mirrored extrapolation;

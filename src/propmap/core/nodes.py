@@ -123,6 +123,7 @@ def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretizat
     cls = np.empty(_flags.CLS_BAND + BAND_ARRAY.size)  # _flags.point_flags' constants
     cls[_flags.CLS_RHO], cls[_flags.CLS_RADIUS], cls[_flags.CLS_R_HUB] = air.rho, propeller.radius, propeller.r_hub
     cls[_flags.CLS_K_WINDMILL], cls[_flags.CLS_BAND:] = K_WINDMILL, BAND_ARRAY
+    cls[_flags.CLS_INPLANE] = pk[ph.PK_INPLANE]  # the reverse-flow radius' in-plane airspeed
     for a in (pk, cam, cls):
         a.setflags(write=False)
     prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]), cls)
