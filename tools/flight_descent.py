@@ -37,6 +37,7 @@ from propmap.identify.flight_scores import _hub_velocities
 from propmap.io.calibration import generic_params
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
+from propmap.vehicle.model import rotor_geometry
 
 ROOT = Path(__file__).resolve().parents[1]
 LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
@@ -58,8 +59,8 @@ def main(cv: bool) -> None:
     body, veh = fitted_body_drag(res), fitted_vehicle(vehicle, res)
     w = predict_flight(s, veh, res.params, body=body)
     e = w.force - s.force
-    V = _hub_velocities(s, veh)
-    axes = np.array([r.axis for r in veh.rotors])
+    arms, axes, _, _ = rotor_geometry(veh)  # about the centre of mass; unit axes
+    V = _hub_velocities(s, arms)
     v_ax = np.einsum("nkj,kj->nk", V, axes)
     v_ip = np.linalg.norm(V - v_ax[..., None] * axes[None], axis=-1)
     va = v_ax.mean(axis=1)
