@@ -59,13 +59,14 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     core = SRC / "core"
     assert _sibling_imports(core / "_kernel.py") | {"_kernel.py"} <= names
     assert _sibling_imports(core / "_annulus.py") <= names
+    assert _sibling_imports(core / "_flags.py") <= names
     assert _sibling_imports(core / "_sensitivity.py") <= sensitivity
     assert _sibling_imports(core / "_momentum_sensitivity.py") <= names
     assert _sibling_imports(core / "_tangents.py") <= names
     assert {p.name for p in _jitcache.LINEAR_SOURCES} == sensitivity | {"_linear_sensitivity.py"}
     assert _sibling_imports(core / "_linear_sensitivity.py") <= sensitivity
     # the kernels' own files are served by the stamping locators, each with its sources
-    assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_sensitivity.py",
+    assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_flags.py", "_sensitivity.py",
                                                           "_momentum_sensitivity.py", "_linear_sensitivity.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"

@@ -8,9 +8,9 @@ kernel (``_sensitivity.py``, calling the momentum side's partials of
 in those and ``_annulus.py``, and the linear inflow models' (``_linear_sensitivity.py``)
 those and ``_sensitivity.py``'s, so an edit there would leave numba serving a kernel compiled
 from the old physics (module constants such as the Reynolds clamp are compiled in). The
-locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``,
-``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``; ``_flags.py``'s
-own functions use numba's, stamped with that file: they use nothing else of propmap) and stamp
+locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``, ``_flags.py``,
+whose reverse-flow radius compiles in ``_physics.py``'s in-plane induction since 2026-11-25,
+``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
 (:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`, :data:`LINEAR_SOURCES`), so that editing
 any of them recompiles. They are registered
@@ -37,7 +37,7 @@ SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity
 #: the files whose code the compiled sensitivity kernel of the linear inflow models contains
 LINEAR_SOURCES = (_HERE / "_linear_sensitivity.py", *SENSITIVITY_SOURCES)
 #: the cached files, each with the sources its stamp covers
-_STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in KERNEL_SOURCES[:2]}
+_STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in (*KERNEL_SOURCES[:2], _HERE / "_flags.py")}
 _STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:2]})
 _STAMPED[os.path.realpath(LINEAR_SOURCES[0])] = LINEAR_SOURCES
 
