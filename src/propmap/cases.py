@@ -390,6 +390,16 @@ def _gill2019_model(prop: Propeller, p: SectionParams, omega: float, air: Air) -
             "torque_rise": float(r.torque[1] / r.torque[0] - 1)}
 
 
+def _gill2019_errors(prop: Propeller, p: SectionParams, data, air: Air) -> dict[str, np.ndarray]:
+    """propmap's loads less the published fits' on their grid (:func:`gill2019_loads`' points),
+    thrust and in-plane force in units of the published static thrust, torque of the static torque."""
+    r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, radial=False)
+    static = data.airspeed == 0
+    T0, Q0 = np.mean(data.measured["thrust"][static]), np.mean(data.measured["torque"][static])
+    return {"thrust": (r.thrust - data.measured["thrust"]) / T0, "drag": (r.drag - data.measured["drag"]) / T0,
+            "torque": (r.torque - data.measured["torque"]) / Q0}
+
+
 def _gill2019(param_sets: dict, air: Air) -> CaseResult:
     from .io.catalogue import load_propeller
 
@@ -397,6 +407,7 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
     names = list(published)
     measured = {q: np.array([_gill2019_published(published[n])[q] for n in names]) for q in GILL2019_QUANTITIES}
     omega = GILL2019_RPM * math.pi / 30
+    grids = {n: gill2019_loads(n, (GILL2019_RPM,), air=air) for n in names}
     pred, metrics = {}, {}
     for label, sets in param_sets.items():
         model = [_gill2019_model(load_propeller(n), sets(n) if callable(sets) else sets, omega, air) for n in names]
@@ -406,6 +417,11 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
             ratio = pred[label][q] / measured[q]
             m.update({f"{q}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
             m[f"{q}_ratio_min"], m[f"{q}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
+        errors = [_gill2019_errors(load_propeller(n), sets(n) if callable(sets) else sets, grids[n], air)
+                  for n in names]
+        for q in ("thrust", "drag", "torque"):  # rms over each propeller's grid, then over all four pooled
+            m.update({f"rms_{q}_{n}": float(np.sqrt(np.mean(e[q] ** 2))) for n, e in zip(names, errors)})
+            m[f"rms_{q}"] = float(np.sqrt(np.mean(np.concatenate([e[q] for e in errors]) ** 2)))
         metrics[label] = m
     return CaseResult("gill2019", "propeller", np.arange(len(names)), measured, pred, CITATIONS["gill2019"],
                       f"{', '.join(names)}; H_slope: k4 / CT_static of the published multinomial fits against "
@@ -414,7 +430,9 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
                       f"(their k5 lambda_c mu is below 1e-6 of k4 mu); "
                       f"thrust_rise, torque_rise: T / T_static - 1 and Q / Q_static - 1 edgewise at mu = "
                       f"{GILL2019_MU_RISE:g} (published: k2 mu^2 / CT_static, k7 mu^2 / CQ_static); "
-                      f"{GILL2019_RPM:.0f} rpm", metrics)
+                      f"rms_thrust, rms_drag, rms_torque: propmap's loads less the published fits' on their grid "
+                      f"(the static point, advance ratios to 0.24 at 0-90 deg), of the static thrust or torque, per "
+                      f"propeller and pooled; {GILL2019_RPM:.0f} rpm", metrics)
 
 
 def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
@@ -443,7 +461,10 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
         H-force slope k4 / CT_static from :func:`multinomial_fit`, with k5 free and with k5 = 0
         (``H_slope_mu_only``, the published fits' form; the published k4 in both), and the edgewise rise of
         thrust and torque at mu = GILL2019_MU_RISE) the ratio of propmap's value to the
-        published one, ``<quantity>_ratio_<name>``, and their ``_min`` and ``_max``;
+        published one, ``<quantity>_ratio_<name>``, and their ``_min`` and ``_max``; and the rms
+        of propmap's loads less the published fits' over their grid (:func:`gill2019_loads` at
+        GILL2019_RPM), thrust and in-plane force of the static thrust, torque of the static
+        torque, ``rms_<thrust|drag|torque>_<name>`` and pooled over the four, ``rms_<...>``;
         ``measured`` and ``predicted`` hold the values per propeller (``x`` indexes the
         propellers, in the file's order).
 
