@@ -407,18 +407,19 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
     names = list(published)
     measured = {q: np.array([_gill2019_published(published[n])[q] for n in names]) for q in GILL2019_QUANTITIES}
     omega = GILL2019_RPM * math.pi / 30
+    props = {n: load_propeller(n) for n in names}
     grids = {n: gill2019_loads(n, (GILL2019_RPM,), air=air) for n in names}
     pred, metrics = {}, {}
     for label, sets in param_sets.items():
-        model = [_gill2019_model(load_propeller(n), sets(n) if callable(sets) else sets, omega, air) for n in names]
+        params = {n: sets(n) if callable(sets) else sets for n in names}
+        model = [_gill2019_model(props[n], params[n], omega, air) for n in names]
         pred[label] = {q: np.array([m[q] for m in model]) for q in GILL2019_QUANTITIES}
         m = {}
         for q in GILL2019_QUANTITIES:
             ratio = pred[label][q] / measured[q]
             m.update({f"{q}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
             m[f"{q}_ratio_min"], m[f"{q}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
-        errors = [_gill2019_errors(load_propeller(n), sets(n) if callable(sets) else sets, grids[n], air)
-                  for n in names]
+        errors = [_gill2019_errors(props[n], params[n], grids[n], air) for n in names]
         for q in ("thrust", "drag", "torque"):  # rms over each propeller's grid, then over all four pooled
             m.update({f"rms_{q}_{n}": float(np.sqrt(np.mean(e[q] ** 2))) for n, e in zip(names, errors)})
             m[f"rms_{q}"] = float(np.sqrt(np.mean(np.concatenate([e[q] for e in errors]) ** 2)))
