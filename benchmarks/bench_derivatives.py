@@ -18,7 +18,8 @@ the median of 5 alternated runs:
   at rest (hover: the rotors' slopes at V = 0 along three rays) and at 3 m/s forward;
 * the same batch with Pitt-Peters inflow (``linear_inflow``): its loads, with the three
   inputs' and the 8 parameters' derivatives (core/_linear_sensitivity.py) and the three
-  inputs' central differences, each ratio to its own loads.
+  inputs' central differences, each ratio to its own loads; and the same with swirl too
+  (``linear_inflow_swirl``, since 2026-11-26, when it gained implicit derivatives).
 
 Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
 inputs), the residual evaluations per annulus of the solve, and the CPU.
@@ -93,14 +94,16 @@ def main() -> dict:
         "residual_evaluations_per_annulus": float(r.n_evaluations.sum() / (N * r.r.size)),
         "cases": _summary(times, "loads"),
     }
-    linear = params.replace(inflow="pitt-peters")
-    out["linear_inflow"] = _summary(_timed({
-        "loads (Pitt-Peters)": lambda: pm.rotor_loads(prop, linear, om, V, b),
-        "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, linear, om, V, b, derivatives=True),
-        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, linear, om, V, b,
-                                                                            derivatives=PARAMS),
-        "central differences of the solver (3 inputs)": lambda: [pm.rotor_loads(prop, linear, *a) for a in steps],
-    }), "loads (Pitt-Peters)")
+    for key, swirl in (("linear_inflow", False), ("linear_inflow_swirl", True)):
+        linear = params.replace(inflow="pitt-peters", swirl=swirl)
+        out[key] = _summary(_timed({
+            "loads (Pitt-Peters)": lambda: pm.rotor_loads(prop, linear, om, V, b),
+            "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, linear, om, V, b, derivatives=True),
+            "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, linear, om, V, b,
+                                                                                derivatives=PARAMS),
+            "central differences of the solver (3 inputs)": lambda: [pm.rotor_loads(prop, linear, *a)
+                                                                     for a in steps],
+        }), "loads (Pitt-Peters)")
     out["vehicle_linearisation"] = vehicle_linearisation()
     path = ROOT / "benchmarks" / "results" / "derivatives.json"
     path.parent.mkdir(parents=True, exist_ok=True)

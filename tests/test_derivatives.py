@@ -181,11 +181,6 @@ def test_derivative_errors(prop):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives=["rpm"])
     with pytest.raises(ValueError, match="derivatives must be True, False or a sequence"):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
-    from dataclasses import replace
-
-    with pytest.raises(ValueError, match="linear inflow model are implemented without swirl.*inflow=.pitt-peters. "
-                                         "with swirl"):
-        pm.rotor_loads(prop, replace(g, inflow="pitt-peters", swirl=True), 800.0, 5.0, 0.5, derivatives=True)
     with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
         pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
 

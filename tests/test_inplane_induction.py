@@ -135,15 +135,14 @@ def test_the_reverse_flow_radius_takes_the_blades_in_plane_airspeed(rotor):
 
 
 def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp_path):
-    """Implicit derivatives with the uniform inflow, a linear inflow or swirl
+    """Implicit derivatives with the uniform inflow, a linear inflow, swirl or both
     (tests/test_derivatives.py, test_linear_inflow_derivatives.py and test_swirl.py check them
     against differences of the solver): the fits take them. A fit of loads at incidence
     recovers the set it was made with."""
     prop, p = rotor
     q = p.replace(inplane_induction=True)
-    for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True)):
+    for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True), q.replace(inflow="pitt-peters", swirl=True)):
         assert differentiable(other, ("cl_alpha",))
-    assert not differentiable(q.replace(inflow="pitt-peters", swirl=True), ("cl_alpha",))
     inc = np.radians(np.repeat([0.0, 30.0, 60.0, 90.0], 4))
     V = np.tile([2.0, 5.0, 8.0, 11.0], 4)
     om = np.full(V.size, 6000 * math.pi / 30)

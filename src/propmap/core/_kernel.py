@@ -67,7 +67,9 @@ def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, az
 #: rows of the packed outputs of solve_batch: ``out`` (N_OUT, n), ``rad`` (N_RAD, rows, nr),
 #: ``counts`` (N_COUNTS, n) and ``flags`` (N_FLAGS, n)
 N_OUT = 11  # T, D, Q, M_R, Y, M_P, mean inflow; v_h, descent ratio k, in-plane ratio m, reverse-flow radius
-N_RAD = 8  # v_i, dT, dD, dQ, dM_R, dY, dM_P, the swirl u (0 without it)
+N_RAD = 9  # v_i, dT, dD, dQ, dM_R, dY, dM_P, the swirl u (0 without it), the uniform solve's roots (linear inflow)
+RAD_SWIRL = 7  # rad's row of the swirl u
+RAD_UNIFORM = 8  # rad's row of the uniform solve's roots (a linear inflow model; else unused)
 N_COUNTS = 5  # status, annuli with multiple roots, annuli in vortex ring, residual evaluations, working state
 N_FLAGS = 5  # converged, vortex ring, multiple roots, reverse flow, inflow extrapolated
 
@@ -110,12 +112,12 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     ``out`` shape (N_OUT, n), the rows T, D, Q, the rolling moment M_R,
     the side force Y, the pitching moment M_P and the area-weighted mean inflow (rows 7-10,
     the flags', are written by :func:`point_flags`); ``rad``
-    shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P and the swirl u the roots
-    were solved with (0 without swirl) per annulus when ``radial``, else unused (pass shape
-    (N_RAD, 1, nr)); with a linear inflow model and no swirl the last row holds instead the
-    uniform solve's roots (NaN where that solve failed; the final ones at an axial point,
-    solved once), whose mean inflow set the gradients (the derivatives' start,
-    core/_linear_sensitivity.py); ``counts`` shape (N_COUNTS, n) int64, the rows status,
+    shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P, the swirl u the roots
+    were solved with (row RAD_SWIRL, 0 without swirl) and, with a linear inflow model, the
+    uniform solve's roots of the last swirl iteration (row RAD_UNIFORM; NaN where that solve
+    failed; the final ones at an axial point, solved once), whose mean inflow set the gradients
+    (the derivatives' start, core/_linear_sensitivity.py), per annulus when ``radial``, else
+    unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the rows status,
     annuli with multiple roots, annuli in vortex ring, residual evaluations (row 4, the
     working state, is :func:`point_flags`').
     ``status`` is 0 when every annulus converged, else 1 + (first failing annulus index) *
@@ -173,7 +175,7 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
             s1[j] = 0.0
             s2[j] = 0.0
             s3[j] = 0.0
-    us = rad[N_RAD - 1, i] if radial else work[10]  # the annuli's swirl [m/s] (kept for the derivatives)
+    us = rad[RAD_SWIRL, i] if radial else work[10]  # the annuli's swirl [m/s] (kept for the derivatives)
     us[:] = 0.0
     ne = 0
     for it in range(SWIRL_MAX_ITER if swirl else 1):
@@ -197,7 +199,7 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
                 gx[j] = kx * y[j] / radius
                 gy[j] = ky * y[j] / radius
             naz = 2 * naz_half
-            if radial and not swirl:  # the uniform roots, kept for the derivatives (into rad's last row below)
+            if radial:  # the uniform roots, kept for the derivatives (into rad's row RAD_UNIFORM below)
                 for j in range(nr):
                     work[9, j] = v[j] if code[j] == OK else np.nan
             solve_annuli(Om[i], Vs[i], Vc[i], nodes, blade, us, sect, azim, grad, naz, model, pk, emp, v, status,
@@ -248,9 +250,9 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
         Pi += w[j] * pm
         vsum += w[j] * y[j] * v[j]
         wsum += w[j] * y[j]
-    if radial and not swirl and inflow != INFLOW_UNIFORM:  # the uniform roots (docstring): the swirl row is free
+    if radial and inflow != INFLOW_UNIFORM:  # the uniform roots (docstring)
         for j in range(nr):
-            us[j] = v[j] if axial else work[9, j]
+            rad[RAD_UNIFORM, i, j] = v[j] if axial else work[9, j]
     out[0, i] = Ti if st == 0 else np.nan
     out[1, i] = Di if st == 0 else np.nan
     out[2, i] = Qi if st == 0 else np.nan

@@ -62,6 +62,8 @@ from ._sensitivity import (
     _node_rows,
     _start_point,
     _stored_state,
+    _swirl_solve,
+    _swirl_system,
 )
 from ._sensitivity import _constants as _constants_inline
 
@@ -71,6 +73,10 @@ LOAD_ROWS = (0, 1, 2, 3, 5, 6)
 N_ROWS = 7
 #: step of the gradients' partials in mu and lambda
 K_STEP = 1e-6
+#: the partials' rows before the section parameters': v, Omega, V sin beta, V cos beta, the blade angle, g_x, g_y, u
+N_FIXED = 8
+#: the partials' row of the swirl u
+ROW_U = 7
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -92,9 +98,10 @@ def _k_partials(mu, lam, inflow):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: compiled once, not 20 times
-def _loads(v, y, Om, Vs, Vc, th, sec, cfac, azim, gx, gy, naz, model, pk):
-    """The annulus' six load densities over the full circle (_annulus.annulus_loads, no swirl)."""
-    return annulus_loads(v, y, Om, 0.0, Vs, Vc, (th, np.sin(th), np.cos(th)), sec, cfac, azim, gx, gy, naz, model, pk,
+def _loads(v, y, Om, us, Vs, Vc, th, sec, cfac, azim, gx, gy, naz, model, pk):
+    """The annulus' six load densities over the nodes of ``azim`` (_annulus.annulus_loads, with
+    the swirl ``us``)."""
+    return annulus_loads(v, y, Om, us, Vs, Vc, (th, np.sin(th), np.cos(th)), sec, cfac, azim, gx, gy, naz, model, pk,
                          False)
 
 
@@ -115,18 +122,21 @@ def _integrands(q, sk, ck, kr):
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
-    """Rows 0-6 of ``P``: the annulus' six load densities' partials at its fixed root in v,
-    Omega, V sin beta, V cos beta, the blade angle, g_x and g_y, from one evaluation per node of
-    the element with its analytic partials in U_T, U_P, the section constants' slope in U2 and
-    the blade angle (core/_tangents.py, as core/_sensitivity._partials for the uniform inflow),
-    over the full circle: at node psi, U_T = Omega y + V_b sin psi, U_P = V cos beta +
+    """Rows 0-7 of ``P``: the annulus' six load densities' partials at its fixed root in v,
+    Omega, V sin beta, V cos beta, the blade angle, g_x, g_y and the swirl u, from one evaluation
+    per node of the element with its analytic partials in U_T, U_P, the section constants' slope
+    in U2 and the blade angle (core/_tangents.py, as core/_sensitivity._partials for the uniform
+    inflow), over the nodes of ``azim`` (the full circle; its first half, [-pi/2, pi/2], for the
+    uniform inflow's g = 0): at node psi, U_T = Omega y - u + V_b sin psi, U_P = V cos beta +
     v (1 + g_x cos psi + g_y sin psi), U2 = (Omega y)^2 + V sin^2 beta / 2 + V cos^2 beta (the
     constants', with the free stream's V sin beta), and the radial drag's factor V_b, where V_b =
     V sin beta + u_x(v, V sin beta, V cos beta) is the blades' in-plane airspeed (u_x the skewed
     wake's in-plane induction at the annulus' mean inflow v, 0 without the option; its partials
     enter the rows of v, V sin beta and V cos beta by the chain rule). ``op`` = (Omega, V sin beta,
-    V cos beta), ``sec`` = (the section constants, their slopes in U2), ``g`` = (g_x, g_y)."""
-    Om, Vs, Vc = op
+    V cos beta, u), ``sec`` = (the section constants, their slopes in U2, at Omega y: the swirl
+    does not enter them, as in the kernel), ``g`` = (g_x, g_y). Returns the annulus' thrust and
+    torque densities at the root (T0, Q0), which the swirl's balance needs."""
+    Om, Vs, Vc, us = op
     gx, gy = g
     s, u = sec
     sinpsi = azim[0]
@@ -140,11 +150,14 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     # the sums of the integrands of the element's partials: 0-2 U_P's (weights 1, cos, sin), 3-4 U_T's (1, sin),
     # 5 the constants' slope's, 6 the blade angle's; 7 the radial drag's base (C_D,p U cos^2, cos sin)
     S = np.zeros((8, 6))
+    t0 = 0.0  # the element at the root: the thrust's and torque's sums
+    q0 = 0.0
     zero = (0.0, 0.0, 0.0)
+    wt = Om * y - us  # the blade speed
     for k in range(naz):
         sk = sinpsi[k]
         ck = cospsi[k]
-        UT = Om * y + vb * sk
+        UT = wt + vb * sk
         UP = Vc + v * (1.0 + gx * ck + gy * sk)
         if model == CAMBERED:
             base, d_t, d_p, d_u, d_c = _cambered_tangent(UT, UP, th, np.sin(th), np.cos(th), (s[0], s[1], s[2], s[3]),
@@ -168,6 +181,8 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
             S[6, q] += lc[q]
         S[7, 1] += base[2] * ck * ck
         S[7, 4] += base[2] * ck * sk
+        t0 += base[0]
+        q0 += base[1]
     cf = cfac / naz
     for q in range(6):
         f = cf * y if q == 2 or q == 3 or q == 5 else cf  # Q, M_R and M_P carry the radius
@@ -179,17 +194,19 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
         P[4, q] = f * S[6, q]
         P[5, q] = f * v * S[1, q]
         P[6, q] = f * v * S[2, q]
+        P[7, q] = -f * S[3, q]  # dU_T/du = -1
+    return cf * t0, cf * y * q0
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g, pk):
-    """Rows 7, 8, ... of ``P``: the cambered element's derivatives along each section parameter's
+    """Rows 8, 9, ... of ``P``: the cambered element's derivatives along each section parameter's
     and the density's direction (row m of ``dS``, shape (n_m, 4), and ``dC``, shape (n_m, 8):
     the stepped value's section constants and polar constants less the base's), divided by the
     step ``spans[m]``, from one evaluation per node (core/_tangents.make_cambered_direction, as
     core/_sensitivity._parameter_partials for the uniform inflow), summed into the six loads over
-    the full circle. ``stw`` shape (N_STATE, >= the node count): scratch for the nodes' states."""
-    Om, Vs, Vc = op
+    the nodes of ``azim``. ``stw`` shape (N_STATE, >= the node count): scratch for the nodes' states."""
+    Om, Vs, Vc, us = op
     gx, gy = g
     sinpsi = azim[0]
     cospsi = azim[1]
@@ -200,7 +217,7 @@ def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g,
     sth = np.sin(th)
     cth = np.cos(th)
     for k in range(naz):
-        st = _cambered_state(Om * y + vb * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
+        st = _cambered_state(Om * y - us + vb * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
                              sec, con)
         for c in range(N_STATE):  # unrolled: the state is a tuple of floats
             stw[c, k] = st[c]
@@ -218,33 +235,34 @@ def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g,
             a4 += l4
             a5 += l5
         f = cf / spans[m]
-        P[7 + m, 0] = f * a0
-        P[7 + m, 1] = f * a1
-        P[7 + m, 2] = f * y * a2
-        P[7 + m, 3] = f * y * a3
-        P[7 + m, 4] = f * a4
-        P[7 + m, 5] = f * y * a5
+        P[N_FIXED + m, 0] = f * a0
+        P[N_FIXED + m, 1] = f * a1
+        P[N_FIXED + m, 2] = f * y * a2
+        P[N_FIXED + m, 3] = f * y * a3
+        P[N_FIXED + m, 4] = f * a4
+        P[N_FIXED + m, 5] = f * y * a5
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
 def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens, stw):
     """The annulus' load partials at its fixed root, into ``P`` (rows: v, Omega, V sin beta,
-    V cos beta, the blade angle, g_x, g_y (:func:`_input_partials`), then each section
+    V cos beta, the blade angle, g_x, g_y, the swirl u (:func:`_input_partials`), then each section
     parameter and the density's Reynolds part: for the cambered section along each one's
     direction (:func:`_direction_partials`), for the paper's one-sided differences of the
-    blade's sums at the stepped constants; columns the six loads of annulus_loads). ``op`` =
-    (Omega, V sin beta, V cos beta), ``ann`` = (y, sc, cy2, cfac, sc at the stepped density),
-    ``g`` = (g_x, g_y), ``dens`` = (the stepped sc of every annulus, the density's step; 0: not
-    asked), ``stw`` the cambered directions' scratch (N_STATE, the node count)."""
-    Om, Vs, Vc = op
+    blade's sums at the stepped constants; columns the six loads of annulus_loads) over the
+    nodes of ``azim``. ``op`` = (Omega, V sin beta, V cos beta, u), ``ann`` = (y, sc, cy2, cfac,
+    sc at the stepped density), ``g`` = (g_x, g_y), ``dens`` = (the stepped sc of every annulus,
+    the density's step; 0: not asked), ``stw`` the cambered directions' scratch (N_STATE, the
+    node count). Returns the thrust and torque densities at the root (:func:`_input_partials`)."""
+    Om, Vs, Vc, us = op
     y, sc, cy2, cfac, scj = ann
     gx, gy = g
     naz = azim.shape[1]
     s, u = _constants_slopes((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
-    _input_partials(P, v, op, y, th, (s, u), cfac, azim, g, model, pk)
-    n_m = P.shape[0] - 7  # the section parameters' and the density's
+    base0 = _input_partials(P, v, op, y, th, (s, u), cfac, azim, g, model, pk)
+    n_m = P.shape[0] - N_FIXED  # the section parameters' and the density's
     if n_m == 0:
-        return
+        return base0
     pkpm, campm, cam_same, hpar = par
     n_par = hpar.shape[0]
     hrho = dens[1]
@@ -264,24 +282,25 @@ def _annulus_partials(P, v, op, th, ann, azim, g, model, pk, cam, par, dens, stw
             for c in range(4):
                 dS[m, c] = sa[c] - s[c]
         _direction_partials(P, dS, dC, spans, stw, v, op, y, th, s, cfac, azim, g, pk)
-        return
-    base = _loads(v, y, Om, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk)
+        return base0
+    base = _loads(v, y, Om, us, Vs, Vc, th, s, cfac, azim, gx, gy, naz, model, pk)
     for m in range(n_m):  # one-sided: the constants at the stepped value
         if m == n_par:  # the density, through the Reynolds constant sc
-            a = _loads(v, y, Om, Vs, Vc, th, _constants(Om, Vs, Vc, y, scj, cy2, model, cam), cfac, azim, gx, gy, naz,
-                       model, pk)
+            a = _loads(v, y, Om, us, Vs, Vc, th, _constants(Om, Vs, Vc, y, scj, cy2, model, cam), cfac, azim, gx, gy,
+                       naz, model, pk)
             span = hrho
         else:
             sa = s if cam_same[m] else _constants(Om, Vs, Vc, y, sc, cy2, model, campm[m])
-            a = _loads(v, y, Om, Vs, Vc, th, sa, cfac, azim, gx, gy, naz, model, pkpm[m])
+            a = _loads(v, y, Om, us, Vs, Vc, th, sa, cfac, azim, gx, gy, naz, model, pkpm[m])
             span = hpar[m]
         for q in range(6):
-            P[7 + m, q] = (a[q] - base[q]) / span
+            P[N_FIXED + m, q] = (a[q] - base[q]) / span
+    return base0
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM, forceinline=True)
 def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens, out):
-    vu, dvu, radius = uni
+    vu_roots, azh, az2, radius = uni
     scpm, hrho = dens
     y, w, th0, sc, cy2, cfac, mfac, ct, ch = _node_rows(nodes)
     nr = y.shape[0]
@@ -291,6 +310,7 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
     wy = _start_point(out, i, ok, N_ROWS, w, y)
     if not ok[i]:
         return
+    swirl = roots.shape[0] == 2
     om, dth = Om[i], coll[i]
     sb, cb, vs, vc = _airspeed_components(V[i], b[i])
     one_sided = V[i] == 0.0
@@ -302,34 +322,67 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
     for k in range(n_cols - n_all):  # the rays beta = 0, pi/2, pi
         e[n_all + k, 1] = 1.0 if k == 1 else 0.0
         e[n_all + k, 2] = 1.0 - k if k != 1 else 0.0
-    # the gradients and their change along every column, through mu, lambda and the uniform mean inflow
+    # the gradients from mu and lambda at the uniform solve's mean inflow v_u, and their change along every
+    # column at a fixed v_u (dk) and per unit change of v_u (kz)
+    vu = 0.0
+    for j in range(nr):
+        vu += w[j] * y[j] * vu_roots[i, j]
+    vu /= wy
     OmR = om * radius
     mu = vs / OmR
-    lam = (vc + vu[i]) / OmR
+    lam = (vc + vu) / OmR
     kx, ky, kx_mu, ky_mu, kx_lam, ky_lam = _k_partials(mu, lam, inflow)
     dk = np.empty((n_cols, 2))
     for c in range(n_cols):
         dmu = e[c, 1] / OmR - mu * e[c, 0] / om
-        dlam = (e[c, 2] + dvu[c, i]) / OmR - lam * e[c, 0] / om
+        dlam = e[c, 2] / OmR - lam * e[c, 0] / om
         dk[c, 0] = kx_mu * dmu + kx_lam * dlam
         dk[c, 1] = ky_mu * dmu + ky_lam * dlam
+    kzx = kx_lam / OmR
+    kzy = ky_lam / OmR
     h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (as _sensitivity)
-    P = np.empty((7 + n_all - n_in, 6))
+    P = np.empty((N_FIXED + n_all - n_in, 6))  # the linear solve's annulus
+    Pu = np.empty((N_FIXED + n_all - n_in, 6))  # the uniform solve's (only its thrust column is used)
     stw = np.empty((N_STATE, azim.shape[1] if model == CAMBERED and n_all > n_in else 0))
-    dL = np.empty(6)
+    # every column is affine in z, the change of v_u along it: the loads' and v_i,mean's sums at z = 0 (acc[0]) and
+    # per unit z (acc[1]); z itself solves z = zs[0] + zs[1] z, the uniform annuli's roots' change weighted as v_u
+    acc = np.zeros((2, N_ROWS, n_cols))
+    zs = np.zeros((2, n_cols))
+    dA = np.empty(6)
+    dB = np.empty(6)
     scj = 0.0
     for j in range(nr):
-        vj = roots[i, j]
+        vj = roots[0, i, j]
+        vuj = vu_roots[i, j]
+        uj = roots[1, i, j] if swirl else 0.0  # the annulus' swirl, the same in both solves (core/_kernel.py)
         yj = y[j]
+        ome = om - uj / yj  # the blade speed's Omega, which the loss factor sees
+        th = th0[j] + dth
         gx = kx * yj / radius
         gy = ky * yj / radius
         if hrho != 0.0:
             scj = scpm[j]
-        _annulus_partials(P, vj, (om, vs, vc), th0[j] + dth, (yj, sc[j], cy2[j], cfac[j], scj), azim, (gx, gy), model,
-                          pk, cam, par, dens, stw)
-        mv, m_om, m_vs, m_vc = _momentum_derivatives(vj, om, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp, one_sided)
+        ann = (yj, sc[j], cy2[j], cfac[j], scj)
+        # the uniform solve's annulus (g = 0; the half circle, or in axial flow, where the thrust's integrand does
+        # not depend on psi, two nodes of opposite sin psi): dv_u = au + bu du, au from the column's partials
+        _annulus_partials(Pu, vuj, (om, vs, vc, uj), th, ann, az2 if vs == 0.0 else azh, (0.0, 0.0), model, pk, cam, par,
+                          dens, stw)
+        mvu, mu_om, mu_vs, mu_vc = _momentum_derivatives(vuj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp,
+                                                         one_sided)
+        Gvu = Pu[0, 0] - mvu
+        bu = -(Pu[ROW_U, 0] + mu_om / yj) / Gvu  # the momentum side's partial in u is -(its Omega partial) / y
+        # the linear solve's annulus, and with swirl its angular momentum balance (core/_sensitivity._swirl_system)
+        T0, Q0 = _annulus_partials(P, vj, (om, vs, vc, uj), th, ann, azim, (gx, gy), model, pk, cam, par, dens, stw)
+        mv, m_om, m_vs, m_vc = _momentum_derivatives(vj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp, one_sided)
         Gv = P[0, 0] - mv
-        m0 = _momentum_side(vj, om, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
+        sw = _swirl_system(swirl, vj, yj, om, T0, Q0, P[0, 0], P[0, 2], -P[ROW_U, 0], -P[ROW_U, 1], -P[ROW_U, 2],
+                           -P[ROW_U, 3], m_om / yj, Gv)
+        if one_sided:  # at rest, the momentum sides there: the base of the one-sided differences along the rays
+            m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
+            m0u = _momentum_side(vuj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
+        else:
+            m0 = m0u = 0.0
+        wv = w[j] * yj / wy  # the mean inflow's weight
         for c in range(n_cols):
             if c == 2 and n_in > 2 and one_sided:
                 continue  # the incidence does nothing at V = 0
@@ -338,40 +391,61 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
                 continue  # the slopes at rest: 0 at the points with V > 0
             par_col = n_in <= c < n_all
             if (c == 1 and n_in > 1 and one_sided) or ray:  # the airspeed from rest along its ray: one-sided
-                dmom = _ray_slope(m0, vj, om, e[c, 1] if ray else sb, e[c, 2] if ray else cb, h_ray, yj, mfac[j],
-                                  ct[j], ch[j], emp)
+                rs = e[c, 1] if ray else sb
+                rc = e[c, 2] if ray else cb
+                dmom = _ray_slope(m0, vj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dmomu = _ray_slope(m0u, vuj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
             else:
                 dmom = m_om * e[c, 0] + m_vs * e[c, 1] + m_vc * e[c, 2]
+                dmomu = mu_om * e[c, 0] + mu_vs * e[c, 1] + mu_vc * e[c, 2]
+            if par_col:
+                au = -(Pu[N_FIXED + c - n_in, 0] - dmomu) / Gvu
+            else:
+                au = -(Pu[1, 0] * e[c, 0] + Pu[2, 0] * e[c, 1] + Pu[3, 0] * e[c, 2] + Pu[4, 0] * e[c, 3] - dmomu) / Gvu
             dgx = dk[c, 0] * yj / radius
             dgy = dk[c, 1] * yj / radius
+            dgxz = kzx * yj / radius
+            dgyz = kzy * yj / radius
             for q in range(6):
                 d = P[5, q] * dgx + P[6, q] * dgy
                 if par_col:
-                    d += P[7 + c - n_in, q]
+                    d += P[N_FIXED + c - n_in, q]
                 else:
                     d += P[1, q] * e[c, 0] + P[2, q] * e[c, 1] + P[3, q] * e[c, 2] + P[4, q] * e[c, 3]
-                dL[q] = d
-            dv = -(dL[0] - dmom) / Gv
+                dA[q] = d
+                dB[q] = P[5, q] * dgxz + P[6, q] * dgyz
+            dv0, du0 = _swirl_solve(sw, dA[0] - dmom, dA[0], dA[2], e[c, 0])
+            dv1, du1 = _swirl_solve(sw, dB[0], dB[0], dB[2], 0.0)
             for q in range(6):
-                out[LOAD_ROWS[q], c, i] += w[j] * (dL[q] + P[0, q] * dv)
-            out[4, c, i] += w[j] * yj * dv / wy
+                acc[0, LOAD_ROWS[q], c] += w[j] * (dA[q] + P[0, q] * dv0 + P[ROW_U, q] * du0)
+                acc[1, LOAD_ROWS[q], c] += w[j] * (dB[q] + P[0, q] * dv1 + P[ROW_U, q] * du1)
+            acc[0, 4, c] += wv * dv0
+            acc[1, 4, c] += wv * dv1
+            zs[0, c] += wv * (au + bu * du0)
+            zs[1, c] += wv * bu * du1
+    for c in range(n_cols):
+        z = zs[0, c] / (1.0 - zs[1, c])  # (zs[1] = 0 without swirl: the swirl's du is 0)
+        for r in range(N_ROWS):
+            out[r, c, i] += acc[0, r, c] + acc[1, r, c] * z
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)
 def linear_sensitivities(Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens,
                          out):
     """d(T, D, Q, M_R, v_i,mean, Y, M_P)/d(Omega, V, beta[, collective], section parameters, rho) at
-    every point, with the linear inflow model ``inflow`` (module docstring).
+    every point, with the linear inflow model ``inflow`` (module docstring), with or without swirl.
 
-    Inputs as core/_sensitivity.sensitivities, with ``roots`` shape (n, nr) the linear
+    Inputs as core/_sensitivity.sensitivities, with ``roots`` shape (1, n, nr) the linear
     inflow's converged roots (the uniform ones at the axial points, where the kernel solves
-    once), ``azim`` the full circle's nodes, and ``uni`` = (v_u, dv_u, R): the uniform solve's
-    mean inflow shape (n,), its derivative along every output column shape (n_cols, n)
-    (core/_sensitivity.sensitivities' row v_i,mean at the uniform roots, the same columns) and
-    the rotor radius [m]. ``out`` shape (7, n_cols, n): the rows T, D, Q, M_R, v_i,mean (as
+    once), or (2, n, nr) with swirl: the roots and the swirl u of every annulus, ``azim`` the
+    full circle's nodes, and ``uni`` = (v_u, azh, az2, R): the uniform solve's roots shape (n, nr)
+    (with swirl, those of the kernel's last swirl iteration, solved at the same u), the half
+    circle's nodes (the first half of ``azim``, [-pi/2, pi/2], contiguous: the uniform inflow's,
+    as the kernel solves it), its first and last (shape (2, 2), of opposite sin psi: enough in
+    axial flow) and the rotor radius [m]. ``out`` shape (7, n_cols, n): the rows T, D, Q, M_R, v_i,mean (as
     core/_sensitivity's), then Y and M_P; ``dens`` = (``scpm``, ``hrho``) of
     core/_sensitivity.sensitivities: the density's column is the Reynolds part (the caller adds
-    L / rho). No swirl.
+    L / rho).
     """
     for i in numba.prange(Om.shape[0]):
         _point(np.int64(i), Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens,

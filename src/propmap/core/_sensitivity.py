@@ -173,7 +173,7 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _swirl_system(swirl, v, y, Om, q0, h0, naz, cf, cq, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
+def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
     """One annulus' linearised equations in its unknowns (v, u), the inflow and the swirl.
 
     The root solves G(v, u, x) = dT_BET - F dT_BEMT = 0 (eq 11) at the blade speed Omega y - u,
@@ -182,20 +182,13 @@ def _swirl_system(swirl, v, y, Om, q0, h0, naz, cf, cq, Tv, Qv, Tt, Dt, Qt, Rt, 
     clip +-SWIRL_LIMIT Omega y. Given the loads' partials at the fixed (v, u): ``Tv``, ``Qv``
     (d/dv of dT, dQ), ``Tt``, ``Dt``, ``Qt``, ``Rt`` (d/dU_T of dT, dD, dQ, dM_R: the swirl's
     partials are their negatives), ``mom_wy`` (d/d(Omega y) of the momentum side: its swirl
-    partial is the negative) and ``Gv``; the base loads from the element at the root per node
-    (``q0``, ``h0``, scaled by ``cf``, ``cq``). Returns (G_u, S_v, S_u, a, T0, Q0 [or the clip's
+    partial is the negative) and ``Gv``; ``T0``, ``Q0`` the thrust and torque densities at the
+    root. Returns (G_u, S_v, S_u, a, T0, Q0 [or the clip's
     dS/dOmega in a's place, T0 = 0], Tt, Dt, Qt, Rt, Gv) for :func:`_swirl_solve`; without swirl
     the identity S = u (u held at 0): G_u = S_v = 0, S_u = 1 and the U_T partials zeroed.
     """
     if not swirl:
         return 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, Gv
-    T0 = 0.0
-    Q0 = 0.0
-    for k in range(naz):
-        T0 += q0[k]
-        Q0 += h0[k]
-    T0 *= cf
-    Q0 *= cq
     Gu = -Tt + mom_wy
     if T0 == 0.0:  # no thrust: the target is 0 (_physics.swirl_target), S = u
         return Gu, 0.0, 1.0, 0.0, 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
@@ -552,8 +545,14 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                                                            one_sided)
         Gv = Lv0 - mv
         # the swirl's balance (without swirl the identity du = 0, which leaves dv = -G_x / G_v)
-        sw = _swirl_system(swirl, vj, yj, om, q0, h0, naz, cf, cq, Lv0, Lv2, tT * cf, (tHs + rr * rT) * cf,
-                           tH * cq, tTs * cq, mom_om / yj, Gv)
+        T0 = 0.0  # the thrust and torque densities at the root (with swirl)
+        Q0 = 0.0
+        if swirl:
+            for k in range(naz):
+                T0 += q0[k]
+                Q0 += h0[k]
+        sw = _swirl_system(swirl, vj, yj, om, T0 * cf, Q0 * cq, Lv0, Lv2, tT * cf, (tHs + rr * rT) * cf, tH * cq,
+                           tTs * cq, mom_om / yj, Gv)
         # at rest, the momentum side there: the base of the one-sided differences along the rays
         m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
         for p in range(n_in):

@@ -48,14 +48,12 @@ def differentiable(params: SectionParams, names) -> bool:
     Returns
     -------
     bool
-        False for a linear inflow model with swirl, or for a name that is not a numeric
-        field entering the section's constants (:data:`NOT_CONSTANTS`, switches, text), other
-        than ``flap_compliance`` (differentiated through the flapping, core/flapping.py, for
-        rigid and flapping blades alike); the rotation rates' range is the caller's to check
-        (>= 0.1 rad/s).
+        False for a name that is not a numeric field entering the section's constants
+        (:data:`NOT_CONSTANTS`, switches, text), other than ``flap_compliance``
+        (differentiated through the flapping, core/flapping.py, for rigid and flapping blades
+        alike); every inflow model, with or without swirl, has them (since 2026-11-26 a linear
+        inflow with swirl too); the rotation rates' range is the caller's to check (>= 0.1 rad/s).
     """
-    if params.inflow != "uniform" and params.swirl:
-        return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
                or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
@@ -79,9 +77,6 @@ def _derivative_inputs(derivatives, params) -> tuple:
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
                              f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
-    if params.inflow != "uniform" and params.swirl:
-        raise ValueError("derivatives with a linear inflow model are implemented without swirl; this set has "
-                         f"inflow={params.inflow!r} with swirl=True")
     return wrt
 
 
@@ -142,10 +137,10 @@ def _parameter_constants(names, params, air):
 def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
               discretization, loads, uniform_roots=None) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
-    the sensitivity kernel (core/_sensitivity.py); with a linear inflow model, of that kernel at
-    ``uniform_roots`` (shape (n, nr): the kernel's uniform solve, core/_kernel._solve_point) and
-    then of core/_linear_sensitivity.py at ``roots``, which also gives the side force and the
-    pitching moment. With :data:`STILL_AIR`, at the points with
+    the sensitivity kernel (core/_sensitivity.py); with a linear inflow model, of
+    core/_linear_sensitivity.py at ``roots`` and ``uniform_roots`` (shape (n, nr): the kernel's
+    uniform solve, core/_kernel._solve_point), which also gives the side force and the pitching
+    moment. ``roots`` shape (1, n, nr), or (2, n, nr) with swirl (the roots and the swirl). With :data:`STILL_AIR`, at the points with
     V = 0 the loads' slopes in the velocity, from the kernel's one-sided airspeed derivatives
     along three rays at the same roots (at rest the root does not depend on the incidence):
     edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that this one-sided slope is
@@ -178,22 +173,17 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     if inflow == ph.INFLOW_UNIFORM:
         _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,
                                    n_in, par, scp, hrho, raw)
-    else:  # the uniform solve's mean inflow and its derivatives, then the linear inflow's (core/_linear_sensitivity.py)
-        # the uniform solve's roots, kept by the kernel (core/_kernel._solve_point), shape (n, nr); its mean inflow
-        # weighted as the kernel's (w y), NaN where that solve failed
-        roots_u = np.ascontiguousarray(uniform_roots)[None]
-        wy = nd.rows[ph.NODE_W] * nd.rows[ph.NODE_Y]
-        vu = uniform_roots @ wy / wy.sum()
-        converged_u = np.isfinite(vu)
-        _sensitivity.sensitivities(om, V, b, coll, roots_u, converged_u, nd.rows, nd.azimuth, model, pk, cam,
-                                   empirical, n_in, par, scp, hrho, raw)
-        lin = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
-        _linear_sensitivity.linear_sensitivities(om, V, b, coll, np.ascontiguousarray(roots[0]),
-                                                 converged & converged_u, (vu, np.ascontiguousarray(raw[4]),
-                                                                           float(propeller.radius)),
-                                                 nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, n_in, par,
-                                                 (scp, hrho), lin)
-        raw = lin
+    else:  # both solves' annuli together, the uniform one's mean inflow setting the gradients
+        # (core/_linear_sensitivity.py) at the uniform solve's roots kept by the kernel (core/_kernel._solve_point),
+        # shape (n, nr), NaN where that solve failed
+        uniform_roots = np.ascontiguousarray(uniform_roots)
+        converged_u = np.isfinite(uniform_roots).all(axis=1)
+        half = np.ascontiguousarray(nd.azimuth[:, :nd.azimuth.shape[1] // 2])  # the uniform solve's half circle
+        raw = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
+        _linear_sensitivity.linear_sensitivities(om, V, b, coll, roots, converged & converged_u,
+                                                 (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]),
+                                                  float(propeller.radius)), nd.rows, nd.azimuth,
+                                                 model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)

@@ -104,8 +104,8 @@ def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
     if radial:
         rad = rad.copy()
         rad[0] *= f[:, None]
-        rad[1:-1] *= f2[None, :, None]
-        rad[-1] *= f[:, None]  # the swirl, a velocity
+        rad[1:_kernel.RAD_SWIRL] *= f2[None, :, None]
+        rad[_kernel.RAD_SWIRL:] *= f[None, :, None]  # the swirl and the uniform roots, velocities
     return (*scaled, rad)
 
 
@@ -327,7 +327,7 @@ def rotor_loads(
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow, v_h, k, m, reverse-flow radius
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
-    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl
+    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl, uniform roots
     counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
     flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
     # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
@@ -381,8 +381,8 @@ def rotor_loads(
     if wrt:
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
         # v_i (and the swirl), contiguous as the kernel is compiled for
-        roots = np.ascontiguousarray(rad[::_kernel.N_RAD - 1]) if params.swirl else rad[:1]
-        uniform = rad[_kernel.N_RAD - 1] if inflow != ph.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
+        roots = rad[[0, _kernel.RAD_SWIRL]] if params.swirl else rad[:1]  # (a copy, contiguous)
+        uniform = rad[_kernel.RAD_UNIFORM] if inflow != ph.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
         raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
                          propeller, discretization, rigid + (out[4], out[5]), uniform) if solved else {})
         if params.flap_compliance > 0:
@@ -399,7 +399,8 @@ def rotor_loads(
                     T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
                     propeller.n_blades, pitching_moment=out[5]))
         jac = {k: s(a) for k, a in raw.items()}
-    radial_out = ([a.reshape(shape + (nr,)) for a in rad[:-1]] if radial else [None] * (_kernel.N_RAD - 1))
+    radial_out = ([a.reshape(shape + (nr,)) for a in rad[:_kernel.RAD_SWIRL]] if radial
+                  else [None] * _kernel.RAD_SWIRL)
     return _new_loads(
         omega=s(om1), airspeed=s(V1), incidence=s(b1),
         thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y), pitching_moment=s(P),

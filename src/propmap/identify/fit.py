@@ -75,7 +75,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     ------
     ValueError
         ``derivatives`` that :func:`propmap.rotor_loads` refuses (an unknown or node-changing
-        name, a linear inflow with swirl, Omega below 0.1 rad/s).
+        name, Omega below 0.1 rad/s).
     SolverError
         From the rotor model.
     """

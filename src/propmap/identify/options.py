@@ -218,7 +218,7 @@ class FitOptions:
         The residual Jacobian: ``"implicit"`` (default) the model's implicit derivatives
         (``rotor_loads``, ``rotor_wrench`` and ``vehicle_wrench`` with ``derivatives``;
         docs/solver.md) where it can give them for every section name (the uniform inflow
-        with or without swirl, a linear inflow without it, rigid or flapping blades, no
+        or a linear inflow, with or without swirl, rigid or flapping blades, no
         node-changing name such as re_ref; the flight
         fit's centre of mass through ``vehicle_wrench``'s "centre_of_mass" Jacobian), the
         body-lift closed form by central differences; else, and always with ``"differences"``,

@@ -258,8 +258,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         and are carried through the vector sums, the arms, the gyroscopic moment and the
         airframe's slipstream (its wash moves with the rotors' induced velocity). Not with
         ``rotor_interference`` (the wakes couple the rotors), nor for a section parameter
-        when a rotor has its own set, nor with the sets ``rotor_loads`` cannot differentiate
-        (a linear inflow with swirl); Omega_i >= 0.1 rad/s. The side force and pitching
+        when a rotor has its own set; Omega_i >= 0.1 rad/s. The side force and pitching
         moment of flapping rotors or of a linear inflow, and ``flap_compliance``, by the
         chain rule (core/flapping.py, core/_linear_sensitivity.py).
 
