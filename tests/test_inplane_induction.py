@@ -141,7 +141,8 @@ def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp
     recovers the set it was made with."""
     prop, p = rotor
     q = p.replace(inplane_induction=True)
-    for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True), q.replace(inflow="pitt-peters", swirl=True)):
+    for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True),
+                  q.replace(inflow="pitt-peters", swirl=True)):
         assert differentiable(other, ("cl_alpha",))
     inc = np.radians(np.repeat([0.0, 30.0, 60.0, 90.0], 4))
     V = np.tile([2.0, 5.0, 8.0, 11.0], 4)

@@ -1,7 +1,7 @@
 """Implicit derivatives with a linear inflow model (Drees, Pitt-Peters; core/_linear_sensitivity.py):
 against central differences of the whole solver across the envelope, for the three inputs,
 section parameters and the density, the side force and pitching moment included; the vehicle's
-Jacobians; a fit reaching the differencing fit's optimum; what stays refused."""
+Jacobians; a fit reaching the differencing fit's optimum; swirl with it (since 2026-11-26)."""
 
 import math
 from pathlib import Path
@@ -159,17 +159,18 @@ def test_vehicle_jacobians_with_pitt_peters_inflow():
                                    atol=1e-5 * np.abs(r.moment_domega).max())
 
 
-def test_level_flight_fit_with_pitt_peters_uses_the_implicit_jacobian():
-    """fit_level_flight with Pitt-Peters inflow (the paper's vehicle and section, synthetic level
-    flight to 14 m/s at pitch to -35 deg): the implicit Jacobian and differences of the solver
-    reach the truth and the same parameters (1e-6 relative), the implicit one in fewer model
-    calls."""
+@pytest.mark.parametrize("swirl", [False, True])
+def test_level_flight_fit_with_pitt_peters_uses_the_implicit_jacobian(swirl):
+    """fit_level_flight with Pitt-Peters inflow, with and without swirl (the paper's vehicle and
+    section, synthetic level flight to 14 m/s at pitch to -35 deg, where the wake skew couples
+    the annuli): the implicit Jacobian and differences of the solver reach the truth and the
+    same parameters (1e-6 relative), the implicit one in fewer model calls."""
     from importlib import resources
 
     from propmap.identify import FitOptions, fit_level_flight, simulate_level_flight
 
     quad = pm.read_vehicle(str(resources.files("propmap") / "data" / "examples" / "quadrotor.toml"))
-    truth = pm.preset("gill2017-apc").replace(M=30.0, inflow="pitt-peters")
+    truth = pm.preset("gill2017-apc").replace(M=30.0, inflow="pitt-peters", swirl=swirl)
     V = np.linspace(0, 14, 12)
     data = simulate_level_flight(quad, truth, V, -2.5 * V)
     fits = {j: fit_level_flight(data, quad, base=truth, options=FitOptions(M=30.0, jacobian=j))

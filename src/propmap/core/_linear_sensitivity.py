@@ -21,10 +21,20 @@ Optimization 64, 2021)
     dL/dx = L_x + L_g dg/dx + L_v dv/dx,    dv/dx = -(G_x + G_g dg/dx) / G_v,
     dg/dx = (y / R) (k_mu dmu/dx + k_lambda dlambda/dx),
 
-with dlambda/dx carrying dv_u/dx, the uniform solve's mean-inflow derivative (row
-``v_i_mean`` of core/_sensitivity.sensitivities at the uniform roots). The partial derivatives
+with dlambda/dx carrying z = dv_u/dx, the uniform solve's mean-inflow derivative: the
+mean's weighted sum (w y / sum w y) of each uniform annulus' dv_u,j/dx, from the implicit
+function theorem on its own residual G^u at its root (kept by the kernel), with the half
+circle's partials (two nodes of opposite sin psi in axial flow, where its thrust does not
+depend on psi). With swirl (RotorOptions.swirl) each annulus' swirl u enters both solves (the
+kernel solves the uniform and then the linear inflow at the same u) and balances the linear
+solve's angular momentum, S(v, u, x, g) = u - v dQ / (y dT) = 0 (core/_sensitivity._swirl_system):
+per annulus dv_u,j = a_j + b_j du_j (a_j = -G^u_x / G^u_v, b_j = -G^u_u / G^u_v), and (dv, du)
+solve the 2 x 2 system of G and S, whose right-hand side is affine in z through dg. So every
+annulus' share is summed at z = 0 and per unit z in one pass, and z = Z_0 + Z_1 z closes it
+(Z_1 the swirl's part: 0 without swirl, where du = 0). The partial derivatives
 at the fixed root (no root solve in them) in v, Omega, V sin beta, V cos beta, the blade angle,
-g_x and g_y are analytic: one evaluation per node of the element with its partials in U_T,
+g_x, g_y and u are analytic (u's those in U_T with the sign changed; the section constants stay
+the annulus' at Omega y, as in the kernel): one evaluation per node of the element with its partials in U_T,
 U_P, the section constants' slope in U2 and the blade angle (core/_tangents.py, as the uniform
 inflow's), weighted by each variable's chain (:func:`_input_partials`). Those in the section
 parameters and the density's Reynolds constant start from the constants stepped by the caller
@@ -32,11 +42,11 @@ parameters and the density's Reynolds constant start from the constants stepped 
 along that change, one evaluation per node (:func:`_direction_partials`), for the paper's the
 annulus' loads at the stepped constants less the base (_annulus.annulus_loads: the blade's
 sums). The momentum side's are _momentum_sensitivity's (analytic but at the empirical descent
-model's switch). The gradients' own partials k_mu, k_lambda are central differences
-of _physics.inflow_gradients (step 1e-6), one-sided (second order) at mu = 0, where they are
-defined for mu >= 0 only: an axial point (V sin beta = 0, solved with the uniform inflow only,
-where g = 0) gets the right-hand slope in V sin beta, the one that the in-plane loads, odd in
-V sin beta, share on both sides.
+model's switch; its loss factor's partial in u is that in Omega divided by -y). The gradients'
+own partials k_mu, k_lambda are central differences of _physics.inflow_gradients (step 1e-6),
+one-sided (second order) at mu = 0, where they are defined for mu >= 0 only: an axial point (V
+sin beta = 0, solved with the uniform inflow only, where g = 0) gets the right-hand slope in V
+sin beta, the one that the in-plane loads, odd in V sin beta, share on both sides.
 """
 
 from __future__ import annotations
@@ -217,8 +227,8 @@ def _direction_partials(P, dS, dC, spans, stw, v, op, y, th, sec, cfac, azim, g,
     sth = np.sin(th)
     cth = np.cos(th)
     for k in range(naz):
-        st = _cambered_state(Om * y - us + vb * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth, cth,
-                             sec, con)
+        st = _cambered_state(Om * y - us + vb * sinpsi[k], Vc + v * (1.0 + gx * cospsi[k] + gy * sinpsi[k]), th, sth,
+                             cth, sec, con)
         for c in range(N_STATE):  # unrolled: the state is a tuple of floats
             stw[c, k] = st[c]
     cf = cfac / naz
@@ -365,8 +375,8 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         ann = (yj, sc[j], cy2[j], cfac[j], scj)
         # the uniform solve's annulus (g = 0; the half circle, or in axial flow, where the thrust's integrand does
         # not depend on psi, two nodes of opposite sin psi): dv_u = au + bu du, au from the column's partials
-        _annulus_partials(Pu, vuj, (om, vs, vc, uj), th, ann, az2 if vs == 0.0 else azh, (0.0, 0.0), model, pk, cam, par,
-                          dens, stw)
+        _annulus_partials(Pu, vuj, (om, vs, vc, uj), th, ann, az2 if vs == 0.0 else azh, (0.0, 0.0), model, pk, cam,
+                          par, dens, stw)
         mvu, mu_om, mu_vs, mu_vc = _momentum_derivatives(vuj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp,
                                                          one_sided)
         Gvu = Pu[0, 0] - mvu

@@ -140,7 +140,8 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     the sensitivity kernel (core/_sensitivity.py); with a linear inflow model, of
     core/_linear_sensitivity.py at ``roots`` and ``uniform_roots`` (shape (n, nr): the kernel's
     uniform solve, core/_kernel._solve_point), which also gives the side force and the pitching
-    moment. ``roots`` shape (1, n, nr), or (2, n, nr) with swirl (the roots and the swirl). With :data:`STILL_AIR`, at the points with
+    moment. ``roots`` shape (1, n, nr), or (2, n, nr) with swirl (the roots and the swirl).
+    With :data:`STILL_AIR`, at the points with
     V = 0 the loads' slopes in the velocity, from the kernel's one-sided airspeed derivatives
     along three rays at the same roots (at rest the root does not depend on the incidence):
     edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that this one-sided slope is

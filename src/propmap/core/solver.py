@@ -105,7 +105,8 @@ def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
         rad = rad.copy()
         rad[0] *= f[:, None]
         rad[1:_kernel.RAD_SWIRL] *= f2[None, :, None]
-        rad[_kernel.RAD_SWIRL:] *= f[None, :, None]  # the swirl and the uniform roots, velocities
+        rad[_kernel.RAD_SWIRL] *= f[:, None]  # the swirl, a velocity (the uniform roots only serve derivatives,
+        # which are refused below OMEGA_MIN; that row is not written for the uniform inflow)
     return (*scaled, rad)
 
 
@@ -253,8 +254,8 @@ def rotor_loads(
         the solver, and for flapping blades the chain rule through the flapping
         (core/flapping.flapping_derivatives); with swirl each annulus' root and angular
         momentum balance together (core/_sensitivity._swirl_system); with a linear inflow
-        model (without swirl) through both of its solves, the gradients' change with the
-        uniform solve's mean inflow included (core/_linear_sensitivity.py); for
+        model through both of its solves, the gradients' change with the uniform solve's mean
+        inflow included, with or without swirl (core/_linear_sensitivity.py); for
         Omega >= 0.1 rad/s. False (default): none.
 
     Returns
@@ -271,8 +272,8 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`~propmap.core.derivatives.NODE_FIELDS`), a linear inflow model with swirl,
-        an Omega below 0.1 rad/s, or with ``"rho"`` a density too small to be stepped.
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`), an Omega below 0.1 rad/s, or with
+        ``"rho"`` a density too small to be stepped.
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
