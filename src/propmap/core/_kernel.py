@@ -114,8 +114,9 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     the flags', are written by :func:`point_flags`); ``rad``
     shape (N_RAD, n, nr), the rows v_i, dT, dD, dQ, dM_R, dY, dM_P, the swirl u the roots
     were solved with (row RAD_SWIRL, 0 without swirl) and, with a linear inflow model, the
-    uniform solve's roots of the last swirl iteration (row RAD_UNIFORM; NaN where that solve
-    failed; the final ones at an axial point, solved once), whose mean inflow set the gradients
+    uniform solve's roots of the last swirl iteration (row RAD_UNIFORM, which the caller need
+    not allocate for the uniform inflow; NaN where that solve failed; the final ones at an
+    axial point, solved once), whose mean inflow set the gradients
     (the derivatives' start, core/_linear_sensitivity.py), per annulus when ``radial``, else
     unused (pass shape (N_RAD, 1, nr)); ``counts`` shape (N_COUNTS, n) int64, the rows status,
     annuli with multiple roots, annuli in vortex ring, residual evaluations (row 4, the
@@ -227,7 +228,7 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
             if st == 0:
                 st = 1 + j * 4 + code[j]
             if radial:
-                for q in range(1, N_RAD):
+                for q in range(1, RAD_SWIRL):  # the loads (the swirl and the uniform roots are kept)
                     rad[q, i, j] = np.nan
             continue
         if Vc[i] < 0.0 and Vc[i] + v[j] > 0.0:

@@ -328,7 +328,8 @@ def rotor_loads(
     n, nr = om1.size, nd.y.size
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow, v_h, k, m, reverse-flow radius
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
-    rad = np.empty((_kernel.N_RAD, rows, nr))  # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl, uniform roots
+    # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl and, with a linear inflow model only, the uniform solve's roots
+    rad = np.empty((_kernel.N_RAD if inflow != ph.INFLOW_UNIFORM else _kernel.RAD_UNIFORM, rows, nr))
     counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
     flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
     # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
