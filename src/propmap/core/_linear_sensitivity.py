@@ -21,25 +21,25 @@ Optimization 64, 2021)
     dL/dx = L_x + L_g dg/dx + L_v dv/dx,    dv/dx = -(G_x + G_g dg/dx) / G_v,
     dg/dx = (y / R) (k_mu dmu/dx + k_lambda dlambda/dx),
 
-with dlambda/dx carrying z = dv_u/dx, the uniform solve's mean-inflow derivative: the
-mean's weighted sum (w y / sum w y) of each uniform annulus' dv_u,j/dx, from the implicit
-function theorem on its own residual G^u at its root (kept by the kernel), with the half
-circle's partials (two nodes of opposite sin psi in axial flow, where its thrust does not
-depend on psi). With swirl (RotorOptions.swirl) each annulus' swirl u enters both solves (the
-kernel solves the uniform and then the linear inflow at the same u) and balances the linear
-solve's angular momentum, S(v, u, x, g) = u - v dQ / (y dT) = 0 (core/_sensitivity._swirl_system):
-per annulus dv_u,j = a_j + b_j du_j (a_j = -G^u_x / G^u_v, b_j = -G^u_u / G^u_v), and (dv, du)
+with dlambda/dx carrying z = dv_u/dx, the uniform solve's mean-inflow derivative: the mean's
+weighted sum (w y / sum w y) of each uniform annulus' dv_u,j/dx, from the implicit function
+theorem on its own residual G^u at its root (kept by the kernel), with the half circle's
+partials (two nodes of opposite sin psi in axial flow, where its thrust does not depend on
+psi). With swirl (RotorOptions.swirl) each annulus' swirl u enters both solves (the kernel
+solves the uniform and then the linear inflow at the same u) and balances the linear solve's
+angular momentum, S(v, u, x, g) = u - v dQ / (y dT) = 0 (core/_sensitivity._swirl_system): per
+annulus dv_u,j = a_j + b_j du_j (a_j = -G^u_x / G^u_v, b_j = -G^u_u / G^u_v), and (dv, du)
 solve the 2 x 2 system of G and S, whose right-hand side is affine in z through dg. So every
 annulus' share is summed at z = 0 and per unit z in one pass, and z = Z_0 + Z_1 z closes it
-(Z_1 the swirl's part: 0 without swirl, where du = 0). The partial derivatives
-at the fixed root (no root solve in them) in v, Omega, V sin beta, V cos beta, the blade angle,
-g_x, g_y and u are analytic (u's those in U_T with the sign changed; the section constants stay
-the annulus' at Omega y, as in the kernel): one evaluation per node of the element with its partials in U_T,
+(Z_1 the swirl's part: 0 without swirl, where du = 0). The partial derivatives at the fixed
+root (no root solve in them) in v, Omega, V sin beta, V cos beta, the blade angle, g_x, g_y and
+u are analytic (u's those in U_T with the sign changed; the section constants stay the annulus'
+at Omega y, as in the kernel): one evaluation per node of the element with its partials in U_T,
 U_P, the section constants' slope in U2 and the blade angle (core/_tangents.py, as the uniform
 inflow's), weighted by each variable's chain (:func:`_input_partials`). Those in the section
 parameters and the density's Reynolds constant start from the constants stepped by the caller
-(one-sided, as for the uniform inflow): for the cambered section the element's derivative
-along that change, one evaluation per node (:func:`_direction_partials`), for the paper's the
+(one-sided, as for the uniform inflow): for the cambered section the element's derivative along
+that change, one evaluation per node (:func:`_direction_partials`), for the paper's the
 annulus' loads at the stepped constants less the base (_annulus.annulus_loads: the blade's
 sums). The momentum side's are _momentum_sensitivity's (analytic but at the empirical descent
 model's switch; its loss factor's partial in u is that in Omega divided by -y). The gradients'
