@@ -121,7 +121,7 @@ SWIRL_POINTS = [  # (omega [rad/s], V [m/s], incidence [deg])
 @pytest.mark.parametrize("model", ["cambered", "gill2017", "cambered_inplane"])
 def test_swirl_implicit_derivatives_match_differences(apc8x6, model):
     """With swirl each annulus solves two equations in (v, u), the root and the angular momentum
-    balance (core/_sensitivity._swirl_system): the implicit derivatives with respect to the
+    balance (core/_swirl_sensitivity._swirl_system): the implicit derivatives with respect to the
     inputs, the collective, a section parameter and the density agree with central differences
     of the whole solver (swirl iteration included) within 2e-5 of the point's thrust (forces) or
     torque (moments) per unit of the input's scale (measured 2026-11-25: at most 2.6e-6 for the

@@ -4,7 +4,8 @@ numba stamps a cached function with a hash of the file that defines it only. The
 kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
 ``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
 kernel (``_sensitivity.py``, calling the momentum side's partials of
-``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py``) compiles
+``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py`` and the
+swirl's linear algebra of ``_swirl_sensitivity.py``) compiles
 in those and ``_annulus.py``, and the linear inflow models' (``_linear_sensitivity.py``)
 those and ``_sensitivity.py``'s, so an edit there would leave numba serving a kernel compiled
 from the old physics (module constants such as the Reynolds clamp are compiled in). The
@@ -33,7 +34,7 @@ KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics
                   _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", _HERE / "_tangents.py",
-                       *KERNEL_SOURCES)
+                       _HERE / "_swirl_sensitivity.py", *KERNEL_SOURCES)
 #: the files whose code the compiled sensitivity kernel of the linear inflow models contains
 LINEAR_SOURCES = (_HERE / "_linear_sensitivity.py", *SENSITIVITY_SOURCES)
 #: the cached files, each with the sources its stamp covers

@@ -27,7 +27,7 @@ theorem on its own residual G^u at its root (kept by the kernel), with the half 
 partials (two nodes of opposite sin psi in axial flow, where its thrust does not depend on
 psi). With swirl (RotorOptions.swirl) each annulus' swirl u enters both solves (the kernel
 solves the uniform and then the linear inflow at the same u) and balances the linear solve's
-angular momentum, S(v, u, x, g) = u - v dQ / (y dT) = 0 (core/_sensitivity._swirl_system): per
+angular momentum, S(v, u, x, g) = u - v dQ / (y dT) = 0 (core/_swirl_sensitivity._swirl_system): per
 annulus dv_u,j = a_j + b_j du_j (a_j = -G^u_x / G^u_v, b_j = -G^u_u / G^u_v), and (dv, du)
 solve the 2 x 2 system of G and S, whose right-hand side is affine in z through dg. So every
 annulus' share is summed at z = 0 and per unit z in one pass, and z = Z_0 + Z_1 z closes it
@@ -72,10 +72,9 @@ from ._sensitivity import (
     _node_rows,
     _start_point,
     _stored_state,
-    _swirl_solve,
-    _swirl_system,
 )
 from ._sensitivity import _constants as _constants_inline
+from ._swirl_sensitivity import _swirl_solve, _swirl_system
 
 #: the loads of annulus_loads, in the rows of the output (row 4 is v_i,mean, as core/_sensitivity's)
 LOAD_ROWS = (0, 1, 2, 3, 5, 6)
@@ -381,7 +380,7 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
                                                          one_sided)
         Gvu = Pu[0, 0] - mvu
         bu = -(Pu[ROW_U, 0] + mu_om / yj) / Gvu  # the momentum side's partial in u is -(its Omega partial) / y
-        # the linear solve's annulus, and with swirl its angular momentum balance (core/_sensitivity._swirl_system)
+        # the linear solve's annulus, and with swirl its angular momentum balance (_swirl_sensitivity._swirl_system)
         T0, Q0 = _annulus_partials(P, vj, (om, vs, vc, uj), th, ann, azim, (gx, gy), model, pk, cam, par, dens, stw)
         mv, m_om, m_vs, m_vc = _momentum_derivatives(vj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp, one_sided)
         Gv = P[0, 0] - mv

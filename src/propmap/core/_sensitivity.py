@@ -76,7 +76,8 @@ from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _el
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
-                       NODE_Y, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT)
+                       NODE_Y, PK_INPLANE, PK_RADIAL_DRAG)
+from ._swirl_sensitivity import _swirl_solve, _swirl_system
 from ._tangents import _loads_tangent as _loads_tangent_py
 from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill_tangent
 
@@ -160,8 +161,9 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
     """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
     blade's sums only (a section parameter, the density's Reynolds part): the differences
     (dt, dd, dq, dr) of its loads over ``span``, G's change being dt's (the loss factor and the
-    momentum side do not depend on p); ``sw`` the annulus' :func:`_swirl_system`; ``wj`` the
-    annulus' weight, ``wvj`` its mean-inflow weight; D and M_R stay 0 in axial flow."""
+    momentum side do not depend on p); ``sw`` the annulus' swirl system
+    (core/_swirl_sensitivity._swirl_system); ``wj`` the annulus' weight, ``wvj`` its mean-inflow
+    weight; D and M_R stay 0 in axial flow."""
     k2 = 1.0 / span
     dv, du = _swirl_solve(sw, dt * k2, dt * k2, dq * k2, 0.0)
     out[0, p, i] += wj * (dt * k2 + Lv[0] * dv - sw[6] * du)
@@ -170,51 +172,6 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
         out[1, p, i] += wj * (dd * k2 + Lv[1] * dv - sw[7] * du)
         out[3, p, i] += wj * (dr * k2 + Lv[3] * dv - sw[9] * du)
     out[4, p, i] += wvj * dv
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
-    """One annulus' linearised equations in its unknowns (v, u), the inflow and the swirl.
-
-    The root solves G(v, u, x) = dT_BET - F dT_BEMT = 0 (eq 11) at the blade speed Omega y - u,
-    and with swirl u balances the angular momentum, S(v, u, x) = u - v dQ / (y dT) = 0
-    (_physics.swirl_target; dT, dQ the annulus' thrust and torque densities), or is held at its
-    clip +-SWIRL_LIMIT Omega y. Given the loads' partials at the fixed (v, u): ``Tv``, ``Qv``
-    (d/dv of dT, dQ), ``Tt``, ``Dt``, ``Qt``, ``Rt`` (d/dU_T of dT, dD, dQ, dM_R: the swirl's
-    partials are their negatives), ``mom_wy`` (d/d(Omega y) of the momentum side: its swirl
-    partial is the negative) and ``Gv``; ``T0``, ``Q0`` the thrust and torque densities at the
-    root. Returns (G_u, S_v, S_u, a, T0, Q0 [or the clip's
-    dS/dOmega in a's place, T0 = 0], Tt, Dt, Qt, Rt, Gv) for :func:`_swirl_solve`; without swirl
-    the identity S = u (u held at 0): G_u = S_v = 0, S_u = 1 and the U_T partials zeroed.
-    """
-    if not swirl:
-        return 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, Gv
-    Gu = -Tt + mom_wy
-    if T0 == 0.0:  # no thrust: the target is 0 (_physics.swirl_target), S = u
-        return Gu, 0.0, 1.0, 0.0, 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
-    target = v * Q0 / (y * T0)
-    lim = SWIRL_LIMIT * Om * y
-    if abs(target) >= lim:  # held at the clip, S = u -+ SWIRL_LIMIT Omega y: it moves with Omega only
-        return Gu, 0.0, 1.0, (-SWIRL_LIMIT * y if target > 0.0 else SWIRL_LIMIT * y), 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
-    a = v / (y * T0 * T0)
-    Sv = -Q0 / (y * T0) - a * (Qv * T0 - Q0 * Tv)
-    Su = 1.0 + a * (Qt * T0 - Q0 * Tt)
-    return Gu, Sv, Su, a, T0, Q0, Tt, Dt, Qt, Rt, Gv
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _swirl_solve(sw, Gx, Tx, Qx, e_om):
-    """(dv/dx, du/dx) of one annulus from its :func:`_swirl_system` ``sw`` and an input's
-    partials at the fixed (v, u): ``Gx`` of the residual, ``Tx``, ``Qx`` of the thrust and
-    torque densities, ``e_om`` the input's Omega component (moves a clipped swirl); without
-    swirl dv = -Gx / G_v, du = 0."""
-    Gu, Sv, Su, a, T0, Q0, _, _, _, _, Gv = sw
-    if T0 != 0.0:
-        Sx = -a * (Qx * T0 - Q0 * Tx)
-    else:  # held at 0 or at its clip (a: the clip's dS/dOmega)
-        Sx = a * e_om
-    det = Gv * Su - Gu * Sv
-    return -(Gx * Su - Gu * Sx) / det, -(Gv * Sx - Sv * Gx) / det
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -607,9 +564,9 @@ def sensitivities(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n
 
     Inputs as _kernel._solve_point but the airspeed V and the incidence beta in place of
     (V sin beta, V cos beta), the blade angles of ``nodes`` without the per-point collective
-    ``coll``; ``roots`` shape (1, n, nr): the converged roots v, or (2, n, nr) with swirl: the roots
-    and the swirl u of every annulus (:func:`_swirl_system`); ``ok`` shape (n,): the points whose
-    every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
+    ``coll``; ``roots`` shape (1, n, nr): the converged roots v, or (2, n, nr) with swirl: the
+    roots and the swirl u of every annulus (core/_swirl_sensitivity._swirl_system); ``ok`` shape
+    (n,): the points whose every annulus converged (the others get NaN); ``n_in`` 0 (parameters only), 3 or 4 (with
     the collective).
     Section parameters, ``par`` = (pkpm, campm, cam_same, hpar) (packed, to keep the argument
     list short): ``pkpm`` shape (n_par, N_PK) and ``campm`` shape (n_par, 8), the element and

@@ -253,7 +253,7 @@ def rotor_loads(
         theorem on each annulus' converged root (core/_sensitivity.py), not by differencing
         the solver, and for flapping blades the chain rule through the flapping
         (core/flapping.flapping_derivatives); with swirl each annulus' root and angular
-        momentum balance together (core/_sensitivity._swirl_system); with a linear inflow
+        momentum balance together (core/_swirl_sensitivity._swirl_system); with a linear inflow
         model through both of its solves, the gradients' change with the uniform solve's mean
         inflow included, with or without swirl (core/_linear_sensitivity.py); for
         Omega >= 0.1 rad/s. False (default): none.
