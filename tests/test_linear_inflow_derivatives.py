@@ -111,11 +111,13 @@ def test_section_parameter_and_density_derivatives(prop, params):
             assert err.max() < 1e-5, (n, q, err)
 
 
-def test_vehicle_jacobians_with_pitt_peters_inflow():
+@pytest.mark.parametrize("swirl", [False, True])
+def test_vehicle_jacobians_with_pitt_peters_inflow(swirl):
     """vehicle_wrench's velocity, angular-velocity and rotor-speed Jacobians with Pitt-Peters
-    inflow (the rotors' side force and pitching moment enter the moments) against central
-    differences of vehicle_wrench (NeuroBEM quadrotor, tilted rotors, airframe drag; forward
-    flight with body rates, slow climb, hover), 5e-5 of the largest entry."""
+    inflow, with and without swirl (the rotors' side force and pitching moment enter the
+    moments) against central differences of vehicle_wrench (NeuroBEM quadrotor, tilted rotors,
+    airframe drag; forward flight with body rates, slow climb, hover), 5e-5 of the largest
+    entry."""
     from dataclasses import replace
 
     from propmap.core.body import BodyDrag
@@ -123,7 +125,7 @@ def test_vehicle_jacobians_with_pitt_peters_inflow():
     veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
     tilts = ([0.2, 0.0, 2.0], [0.0, -0.3, 1.0], [-0.1, 0.1, 3.0], [0.0, 0.0, 1.0])
     veh = replace(veh, rotors=tuple(replace(r, axis=np.array(a)) for r, a in zip(veh.rotors, tilts)))
-    g = pm.generic_params().replace(inflow="pitt-peters")
+    g = pm.generic_params().replace(inflow="pitt-peters", swirl=swirl)
     v = np.array([[6.0, -1.0, -0.5], [0.5, 0.0, 1.0], [0.0, 0.0, 0.0]])
     w = np.array([[0.5, -1.0, 2.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
     om = np.array([[1100.0, 1150.0, 1080.0, 1200.0], [1000.0] * 4, [1000.0] * 4])
