@@ -106,7 +106,7 @@ def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
         rad[0] *= f[:, None]
         rad[1:_kernel.RAD_SWIRL] *= f2[None, :, None]
         rad[_kernel.RAD_SWIRL] *= f[:, None]  # the swirl, a velocity (the uniform roots only serve derivatives,
-        # which are refused below OMEGA_MIN; that row is not written for the uniform inflow)
+        # which are refused below OMEGA_MIN; that row is not allocated for the uniform inflow)
     return (*scaled, rad)
 
 
