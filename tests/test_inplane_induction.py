@@ -144,6 +144,9 @@ def test_derivatives_with_the_uniform_inflow_and_a_fit_that_uses_them(rotor, tmp
     for other in (q, q.replace(inflow="pitt-peters"), q.replace(swirl=True),
                   q.replace(inflow="pitt-peters", swirl=True)):
         assert differentiable(other, ("cl_alpha",))
+        # and rotor_loads gives them: a steeper lift slope makes more thrust in oblique climb
+        d = pm.rotor_loads(prop, other, 600.0, 5.0, math.radians(30.0), derivatives=("cl_alpha",))
+        assert 0.0 < float(d.derivative("thrust", "cl_alpha")) < math.inf
     inc = np.radians(np.repeat([0.0, 30.0, 60.0, 90.0], 4))
     V = np.tile([2.0, 5.0, 8.0, 11.0], 4)
     om = np.full(V.size, 6000 * math.pi / 30)

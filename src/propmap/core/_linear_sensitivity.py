@@ -392,6 +392,8 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         else:
             m0 = m0u = 0.0
         wv = w[j] * yj / wy  # the mean inflow's weight
+        dgxz = kzx * yj / radius  # the annulus' gradients per unit change of v_u
+        dgyz = kzy * yj / radius
         for c in range(n_cols):
             if c == 2 and n_in > 2 and one_sided:
                 continue  # the incidence does nothing at V = 0
@@ -413,8 +415,6 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
                 au = -(Pu[1, 0] * e[c, 0] + Pu[2, 0] * e[c, 1] + Pu[3, 0] * e[c, 2] + Pu[4, 0] * e[c, 3] - dmomu) / Gvu
             dgx = dk[c, 0] * yj / radius
             dgy = dk[c, 1] * yj / radius
-            dgxz = kzx * yj / radius
-            dgyz = kzy * yj / radius
             for q in range(6):
                 d = P[5, q] * dgx + P[6, q] * dgy
                 if par_col:
