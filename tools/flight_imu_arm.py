@@ -22,7 +22,7 @@ import numpy as np
 import propmap as pm
 from propmap.identify.flight import fit_flight, fitted_body_drag, flight_samples, predict_flight
 from propmap.io.flightlog import read_flight_log
-from propmap.vehicle.model import _cross_matrix
+from propmap.vehicle.jacobians import cross_matrix
 
 ROOT = Path(__file__).resolve().parents[1]
 LOGS = sorted((ROOT.parent / "shared" / "data" / "neurobem_flights").glob("*.mat"))
@@ -47,7 +47,7 @@ def main() -> None:
     wdot = np.concatenate(wdot)
     w = s.angular_velocity
     # the measured force's error from an arm r: m (dw/dt x r + w x (w x r)) = A r, A shape (N, 3, 3)
-    A = veh.mass * (_cross_matrix(wdot) + _cross_matrix(w) @ _cross_matrix(w))
+    A = veh.mass * (cross_matrix(wdot) + cross_matrix(w) @ cross_matrix(w))
     air = pm.Air(rho=1.204)
     res = fit_flight(s, veh, air=air)
     err = predict_flight(s, veh, res.params, body=fitted_body_drag(res), air=air).force - s.force

@@ -24,6 +24,8 @@ With ``Vehicle.rotor_interference`` k_I > 0, each rotor also sees the inflow the
 rotors' skewed wakes induce at its disk (core/interference.py): the rotors are solved once
 without it, which gives their induced velocities, and again with it in their hub
 velocities (twice the rotor evaluations).
+
+The derivatives of the wrench (``vehicle_wrench(derivatives=...)``) are in vehicle/jacobians.py.
 """
 
 from __future__ import annotations
@@ -37,7 +39,9 @@ from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
-from ..core.vector import VELOCITY_INPUTS, disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
+from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
+from .jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
+                        requested_derivatives)
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
@@ -297,7 +301,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
-    wrt = _vehicle_derivatives(derivatives, vehicle)
+    wrt = requested_derivatives(derivatives, vehicle)
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
@@ -305,7 +309,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
     rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
-    hub_jac = _hub_velocity_jacobians(vehicle, loads, V_hub, axes, om) if motion else None
+    hub_jac = hub_velocity_jacobians(vehicle, loads, V_hub, axes, om) if motion else None
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
 
@@ -329,191 +333,14 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         body_force = body_drag_force(body, v - wind_a, wash, air.rho)
     dF = dM = jac = None
     if wrt:
-        dF, dM, jac = _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
+        dF, dM, jac = load_derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
         if motion:
             jac = {} if jac is None else jac
-            jac.update(_motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, w, rotor_force.sum(axis=1), body,
+            jac.update(motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, w, rotor_force.sum(axis=1), body,
                                            v - wind_a, wash, air.rho))
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
-
-
-#: the airframe terms vehicle_wrench differentiates (core/body.py)
-BODY_DRAG_NAMES = ("drag_area_x", "drag_area_y", "drag_area_z", "wash_factor")
-#: the vehicle's motion and its centre of mass, whose Jacobians (shape (N, 3, 3)) vehicle_wrench gives
-MOTION_NAMES = ("velocity", "angular_velocity", "centre_of_mass")
-
-
-def _vehicle_derivatives(derivatives, vehicle: Vehicle) -> tuple:
-    """The names ``vehicle_wrench(derivatives=...)`` asks for (() for none); the section
-    parameters' are checked by rotor_loads."""
-    if derivatives is False or derivatives is None:
-        return ()
-    if derivatives is True:
-        return ("omega",)
-    if isinstance(derivatives, str) or not hasattr(derivatives, "__iter__"):
-        raise ValueError(f"derivatives must be True, False or a sequence of names, got {derivatives!r:.60}")
-    wrt = tuple(dict.fromkeys(derivatives))
-    bad = [n for n in wrt if n in ("airspeed", "incidence")]
-    if bad:
-        raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', "
-                         "'velocity', 'angular_velocity', 'centre_of_mass', a section parameter or an airframe term")
-    if any(n not in ("omega", "rho", *BODY_DRAG_NAMES, *MOTION_NAMES) for n in wrt) and any(r.params is not None
-                                                                            for r in vehicle.rotors):
-        raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
-                         "(a rotor of this vehicle has its own)")
-    return wrt
-
-
-def _derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rho):
-    """(dF/dOmega_i, dM/dOmega_i) of shape (N, 3, n_rot) where "omega" is asked (else None), and
-    {("force" | "moment", name): shape (N, 3)} for the other names (else None): the rotors'
-    load derivatives through the vector form (linear in the scalar loads), the arms, the
-    gyroscopic moment -w x (s_i J_i a_i) and the airframe drag (core/body.py)."""
-    N, n_rot = V_hub.shape[0], len(vehicle.rotors)
-    frames = [disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))[:2] for i in range(n_rot)]
-    spins = [np.full(N, 1.0 if r.spin > 0 else -1.0) for r in vehicle.rotors]
-    if any(n in BODY_DRAG_NAMES for n in wrt):  # the drag's derivatives hold at zero drag areas too
-        body = body if body is not None else BodyDrag()
-        if wash is None:
-            wash = np.mean([loads[i].v_i_mean[:, None] * axes[i] for i in range(n_rot)], axis=0)
-    drag_active = wash is not None and body is not None
-    if drag_active:
-        u = v_air + body.wash_factor * wash
-        speed = np.linalg.norm(u, axis=1, keepdims=True)
-        area = np.asarray(body.drag_area)
-        drag_du = _drag_jacobian(u, area, rho)
-
-        def body_du(du):
-            return np.einsum("nij,nj->ni", drag_du, du)
-
-    def rotor_vectors(i, name):
-        ld = loads[i]
-        F, M = wrench_vectors(*(ld.derivative(q, name) for q in ("thrust", "drag", "torque", "rolling_moment")),
-                              *frames[i], spins[i], side_force=ld.derivative("side_force", name),
-                              pitching_moment=ld.derivative("pitching_moment", name))
-        return F, M + np.cross(pos[i], F)
-
-    dF = dM = jac = None
-    if "omega" in wrt:
-        dF = np.empty((N, 3, n_rot))
-        dM = np.empty((N, 3, n_rot))
-        for i, rot in enumerate(vehicle.rotors):
-            F, M = rotor_vectors(i, "omega")
-            if rot.inertia:
-                M = M - np.cross(w, (rot.spin * rot.inertia) * axes[i])
-            if drag_active and body.wash_factor > 0:
-                F = F + body_du((body.wash_factor / n_rot) * loads[i].derivative("v_i_mean", "omega")[:, None]
-                                * axes[i])
-            dF[:, :, i] = F
-            dM[:, :, i] = M
-    others = [n for n in wrt if n != "omega" and n not in MOTION_NAMES]
-    if others:
-        jac = {}
-        for name in others:
-            if name in BODY_DRAG_NAMES:
-                M = np.zeros((N, 3))
-                if not drag_active:
-                    F = np.zeros((N, 3))
-                elif name == "wash_factor":
-                    F = body_du(wash)
-                else:
-                    k = BODY_DRAG_NAMES.index(name)
-                    F = np.zeros((N, 3))
-                    F[:, k] = -0.5 * rho * speed[:, 0] * u[:, k]
-            else:
-                F = np.zeros((N, 3))
-                M = np.zeros((N, 3))
-                dwash = np.zeros((N, 3))
-                for i in range(n_rot):
-                    Fi, Mi = rotor_vectors(i, name)
-                    F += Fi
-                    M += Mi
-                    dwash += loads[i].derivative("v_i_mean", name)[:, None] * axes[i] / n_rot
-                if drag_active and body.wash_factor > 0:
-                    F = F + body_du(body.wash_factor * dwash)
-                if name == "rho" and drag_active:  # the drag's own proportionality to rho
-                    F = F - 0.5 * area * speed * u
-            jac[("force", name)] = F
-            jac[("moment", name)] = M
-    return dF, dM, jac
-
-
-def _drag_jacobian(u: np.ndarray, area: np.ndarray, rho: float) -> np.ndarray:
-    """d(-(rho/2) C |u| u)/du = -(rho/2) C (|u| I + u u^T / |u|), shape (N, 3, 3): the airframe
-    drag's (core/body.py, per-axis drag areas C [m^2]) Jacobian in its air speed u (N, 3) [m/s]
-    (0 at u = 0)."""
-    speed = np.linalg.norm(u, axis=1)[:, None, None]
-    outer = u[:, :, None] * u[:, None, :] / np.where(speed > 0, speed, 1.0)
-    return -0.5 * rho * np.asarray(area)[None, :, None] * (speed * np.eye(3) + outer)
-
-
-def _cross_matrix(r: np.ndarray) -> np.ndarray:
-    """[r]x, shape r.shape + (3,): the matrix with [r]x u = r x u."""
-    m = np.zeros(r.shape + (3,))
-    m[..., 0, 1], m[..., 0, 2], m[..., 1, 2] = -r[..., 2], r[..., 1], -r[..., 0]
-    m[..., 1, 0], m[..., 2, 0], m[..., 2, 1] = r[..., 2], -r[..., 1], r[..., 0]
-    return m
-
-
-def _hub_velocity_jacobians(vehicle, loads, V_hub, axes, om):
-    """Each rotor's (dF_i/dV_i, dtau_i/dV_i, dvbar_i/dV_i), shapes (N, n_rot, 3, 3) twice and
-    (N, n_rot, 3): its force's, hub moment's and mean inflow's derivatives with respect to its
-    hub velocity (core/vector.velocity_jacobian), from its loads' derivatives with respect to
-    VELOCITY_INPUTS (at V_i = 0 the slopes along three rays, core/vector.still_air_slopes)."""
-    N, n_rot = om.shape
-    dF = np.empty((N, n_rot, 3, 3))
-    dtau = np.empty((N, n_rot, 3, 3))
-    dvi = np.empty((N, n_rot, 3))
-    for i, rot in enumerate(vehicle.rotors):
-        Vd, z, _, _ = disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))
-        dF[:, i], dtau[:, i] = velocity_jacobian(loads[i], Vd, z, np.full(N, 1.0 if rot.spin > 0 else -1.0))
-        dvi[:, i] = velocity_gradient(loads[i], "v_i_mean", Vd, z)
-    return dF, dtau, dvi
-
-
-def _motion_derivatives(wrt, hub_jac, axes, pos, h, om, w, rotor_force, body, v_air, wash, rho) -> dict:
-    """{("force" | "moment", name): shape (N, 3, 3)} for the MOTION_NAMES in ``wrt``: the rotors'
-    hub Jacobians through V_i = v + w x r_i - wind with r_i = p_i - c (dV_i/dv = I, dV_i/dw =
-    -[r_i]x, dV_i/dc = -[w]x), the arms (d(r_i x F_i)/dc adds [F_r]x, F_r = ``rotor_force``,
-    the rotors' total force, shape (N, 3)), the gyroscopic moment -w x (s_i J_i Omega_i a_i)
-    and the airframe drag, whose air speed v - wind + k_w (mean of v_i,mean a_i) moves with the
-    rotors' inflow too."""
-    dF_hub, dtau_hub, dvi = hub_jac
-    N, n_rot = om.shape
-    arm = _cross_matrix(pos)  # (n_rot, 3, 3)
-    dM_hub = dtau_hub + arm[None] @ dF_hub  # moment about the centre of mass per unit hub velocity
-    out = {}
-    drag_active = wash is not None and body is not None
-    if drag_active:
-        drag_du = _drag_jacobian(v_air + body.wash_factor * wash, body.drag_area, rho)
-        # d wash/dV_i = a_i (dvbar_i/dV_i)^T / n_rot
-        dwash = axes[None, :, :, None] * dvi[:, :, None, :] / n_rot  # (N, n_rot, 3, 3)
-    for name in MOTION_NAMES:
-        if name not in wrt:
-            continue
-        # dV_i/dx, (N, n_rot, 3, 3): I for the velocity, -[r_i]x for the angular velocity, -[w]x (the same for
-        # every rotor) for the centre of mass
-        if name == "centre_of_mass":
-            dV = -_cross_matrix(np.broadcast_to(w, (N, 3)))[:, None]
-        else:
-            dV = (np.eye(3) if name == "velocity" else -arm)[None]
-        dV = np.broadcast_to(dV, (N, n_rot, 3, 3))
-        F = np.einsum("nrij,nrjk->nik", dF_hub, dV)
-        M = np.einsum("nrij,nrjk->nik", dM_hub, dV)
-        if name == "angular_velocity":  # the gyroscopic moment: d(-w x h_i Omega_i)/dw = [h_i Omega_i]x
-            M = M + _cross_matrix(np.einsum("ri,nr->ni", h, om))
-        if name == "centre_of_mass":  # the arms' moment: d(r_i x F_i)/dc = -dc x F_r
-            M = M + _cross_matrix(rotor_force)
-        if drag_active:
-            du = np.einsum("nrij,nrjk->nik", body.wash_factor * dwash, dV)
-            if name == "velocity":
-                du = du + np.eye(3)
-            F = F + drag_du @ du
-        out[("force", name)] = F
-        out[("moment", name)] = M
-    return out
 
 
 def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure,
