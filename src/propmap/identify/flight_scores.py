@@ -14,7 +14,7 @@ import numpy as np
 from ..vehicle import Vehicle, rotor_geometry
 
 if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
-    from .flight import FlightSamples
+    from .flight_samples import FlightSamples
 
 __all__ = ["flight_errors", "fit_baselines", "baseline_force", "speed_band_errors", "SPEED_BANDS", "BASELINES"]
 
