@@ -86,10 +86,8 @@ made the compressibility term 1/a^2 divide by zero; no gas is slower than about 
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import fields
 from pathlib import Path
-from typing import NamedTuple
 
 import tomli_w
 
@@ -97,6 +95,8 @@ from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_M
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
 from .inputs import show_path
+from .params_tables import (BODY_TABLE, COVERAGE_KEYS, COVERAGE_TABLE, BodyTable, body_from_dict, check_number,
+                            coverage_from_dict, short_repr)
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "params_to_dict",
@@ -109,11 +109,6 @@ AIR_KEYS = ("rho", "mu", "speed_of_sound")
 TEXT_KEYS = ("comment", "source", "section_model", "section")
 #: prefix of the named section presets in ``--params`` (``section:naca0015``)
 SECTION_PREFIX = "section:"
-BODY_TABLE = "body"
-#: the table of what a fitted set's data covered (warnings when the set is used beyond it)
-COVERAGE_TABLE = "coverage"
-COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
-                 "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
 #: keys holding an angle in degrees in files, and the field they set [rad]
 DEG_KEYS = {"alpha0_deg": "alpha0", "alpha_L0_deg": "alpha_L0", "alpha_L0_re_deg": "alpha_L0_re",
             "collective_deg": "collective"}
@@ -136,16 +131,6 @@ FILE_RANGES = {
 
 class ParamsFileError(ValueError):
     """A parameter file is malformed; the message names the file and the key."""
-
-
-class BodyTable(NamedTuple):
-    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag), the
-    centre of mass [m] (shape (3,)) and the rotor interference factor [-] (each of the last
-    two None when the table has none)."""
-
-    drag: object
-    centre_of_mass: object
-    rotor_interference: float | None = None
 
 
 def _record(model: str):
@@ -203,21 +188,21 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
         key and the valid range.
     """
     if not isinstance(data, dict):
-        raise ValueError(f"{where}: expected a table of keys, got {_short(data)}")
+        raise ValueError(f"{where}: expected a table of keys, got {short_repr(data)}")
     fill = fill and "section" not in data and data.get("section_model", "gill2017") == "cambered"
     if "section" in data:  # a named section preset, the file's keys on top
         name = data["section"]
         presets = _section_tables()
         if not isinstance(name, str) or name not in presets:
-            raise ValueError(f"{where}: section must be one of {', '.join(presets)}, got {_short(name)}")
+            raise ValueError(f"{where}: section must be one of {', '.join(presets)}, got {short_repr(name)}")
         if data.get("section_model", "cambered") != "cambered":
             raise ValueError(f"{where}: section = {name!r} is a cambered-model preset; section_model must be "
-                             f"'cambered', got {_short(data.get('section_model'))}")
+                             f"'cambered', got {short_repr(data.get('section_model'))}")
         base = {k: v for k, v in presets[name].items() if k not in ("source", "comment")}
         data = {**base, **{k: v for k, v in data.items() if k != "section"}}
     model = data.get("section_model", "gill2017")
     if not isinstance(model, str) or model not in SECTION_MODELS:
-        raise ValueError(f"{where}: section_model must be one of {', '.join(SECTION_MODELS)}, got {_short(model)}")
+        raise ValueError(f"{where}: section_model must be one of {', '.join(SECTION_MODELS)}, got {short_repr(model)}")
     missing = [k for k in REQUIRED[model] if k not in data]
     if missing:
         raise ValueError(f"{where}: missing key(s) {', '.join(missing)} (required for section_model "
@@ -225,24 +210,21 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     keys = _file_keys(model)
     unknown = sorted(map(str, set(data) - set(keys) - set(AIR_KEYS) - set(TEXT_KEYS) - {BODY_TABLE, COVERAGE_TABLE}))
     if unknown:
-        shown = ", ".join(_short(k, 40) if not k.isidentifier() else k for k in unknown[:5])
+        shown = ", ".join(short_repr(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
         raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}")
     types = {f.name: f.type if isinstance(f.type, str) else f.type.__name__ for f in fields(_record(model))}
     types = {k: types[n] for k, n in keys.items()}  # file key -> "float", "bool" or "str"
     ranges = {**FILE_RANGES[model], **FILE_RANGES["air"]}
+    choices = {"lift_model": LIFT_MODELS, "inflow": INFLOW_MODELS, "descent": DESCENT_MODELS}
     for key in sorted(set(data) & (set(keys) | set(AIR_KEYS))):
         kind = types.get(key, "float")
         if kind == "float":
-            _check_number(data[key], key, where, ranges.get(key))
+            check_number(data[key], key, where, ranges.get(key))
         elif kind == "bool" and not isinstance(data[key], bool):
-            raise ValueError(f"{where}: {key} must be true or false, got {_short(data[key])}")
-        elif key == "lift_model" and data[key] not in LIFT_MODELS:
-            raise ValueError(f"{where}: lift_model must be one of {', '.join(LIFT_MODELS)}, got {_short(data[key])}")
-        elif key == "inflow" and data[key] not in INFLOW_MODELS:
-            raise ValueError(f"{where}: inflow must be one of {', '.join(INFLOW_MODELS)}, got {_short(data[key])}")
-        elif key == "descent" and data[key] not in DESCENT_MODELS:
-            raise ValueError(f"{where}: descent must be one of {', '.join(DESCENT_MODELS)}, got {_short(data[key])}")
+            raise ValueError(f"{where}: {key} must be true or false, got {short_repr(data[key])}")
+        elif key in choices and data[key] not in choices[key]:
+            raise ValueError(f"{where}: {key} must be one of {', '.join(choices[key])}, got {short_repr(data[key])}")
     kw = {}
     if fill:
         kw = _generic_fill(data, keys, where)
@@ -261,45 +243,6 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     body_from_dict(data, where=where)  # validated here too, so that every reader refuses a bad table
     coverage_from_dict(data, where=where)
     return params
-
-
-def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
-    """The ``[coverage]`` table of a file-form dict (what the fitted data covered: J_max,
-    incidence_deg_max, rpm_min, rpm_max, airspeed_max), or None without one.
-
-    Parameters
-    ----------
-    data : dict
-        File form (module docstring); only its ``[coverage]`` table is read.
-    where : str
-        Starts every error message.
-
-    Returns
-    -------
-    dict or None
-        The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
-        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]); None without a table.
-
-    Raises
-    ------
-    ValueError
-        Not a table, an unknown key, a value not a number or out of its range.
-    """
-    table = data.get(COVERAGE_TABLE)
-    if table is None:
-        return None
-    if not isinstance(table, dict):
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] must be a table, got {_short(table)}")
-    unknown = sorted(set(table) - set(COVERAGE_KEYS))
-    if unknown:
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))} (valid: "
-                         f"{', '.join(COVERAGE_KEYS)})")
-    for k, v in table.items():
-        _check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
-    if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
-                         f"{table['rpm_max']:g}")
-    return {k: float(v) for k, v in table.items()}
 
 
 def read_coverage(path) -> dict | None:
@@ -371,93 +314,6 @@ def _generic_fill(data: dict, keys: dict, where: str) -> dict:
         warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
                       f"{', '.join(given) or 'no model key'})", UserWarning, stacklevel=4)
     return {keys[k]: getattr(g, keys[k]) for k in missing}
-
-
-def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
-    """The ``[body]`` table of a file-form dict (module docstring), or None without one.
-
-    Parameters
-    ----------
-    data : dict
-        File form (module docstring); only its ``[body]`` table is read.
-    where : str
-        Starts every error message.
-
-    Returns
-    -------
-    BodyTable or None
-
-    Raises
-    ------
-    ValueError
-        A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
-        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m,
-        rotor_interference in [0, 3]);
-        the message starts with ``where``.
-    """
-    import numpy as np
-
-    from ..core.body import BodyDrag
-
-    if BODY_TABLE not in data:
-        return None
-    table = data[BODY_TABLE]
-    if not isinstance(table, dict):
-        raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {_short(table)}")
-    allowed = ("drag_area", "wash_factor", "centre_of_mass", "rotor_interference", "comment")
-    extra = sorted(str(k) for k in table if k not in allowed)
-    if extra:
-        raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(_short(k, 40) for k in extra[:5])} "
-                         f"(allowed: {', '.join(allowed)})")
-    if "drag_area" not in table:
-        raise ValueError(f"{where}: [body]: missing key 'drag_area'")
-    vectors = {}
-    for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")),
-                     ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
-        if key not in table:
-            continue
-        value = table[key]
-        if not (isinstance(value, list) and len(value) == 3):
-            raise ValueError(f"{where}: [body]: {key} must be 3 numbers [{rng[4]}], got {_short(value)}")
-        for k, v in enumerate(value):
-            _check_number(v, f"[body] {key}[{k}]", where, rng)
-        vectors[key] = [float(v) for v in value]
-    if "wash_factor" in table:
-        _check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
-    drag = BodyDrag(drag_area=tuple(vectors["drag_area"]), wash_factor=float(table.get("wash_factor", 0.0)))
-    cg = np.array(vectors["centre_of_mass"]) if "centre_of_mass" in vectors else None
-    kappa = None
-    if "rotor_interference" in table:
-        _check_number(table["rotor_interference"], "[body] rotor_interference", where, (0.0, 3.0, False, False, ""))
-        kappa = float(table["rotor_interference"])
-    return BodyTable(drag, cg, kappa)
-
-
-def _short(value, n: int = 60) -> str:
-    """``repr(value)`` cut to about ``n`` characters, for messages."""
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
-        return f"an integer of {len(str(abs(value)))} digits"
-    r = repr(value)
-    return r if len(r) <= n else r[: n - 4] + " ..."
-
-
-def _check_number(value, key: str, where: str, rng) -> None:
-    """Refuse a non-number, a non-finite number or one outside ``rng``, naming ``key``."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        hint = " (a quoted string: write the number without quotes)" if isinstance(value, str) else ""
-        raise ValueError(f"{where}: {key} must be a number, got {_short(value)}{hint}")
-    try:
-        x = float(value)
-    except OverflowError:
-        x = math.inf if value > 0 else -math.inf
-    if rng is None:
-        if not math.isfinite(x):
-            raise ValueError(f"{where}: {key} must be a finite number, got {_short(value)}")
-        return
-    lo, hi, lo_open, hi_open, unit = rng
-    if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and (x < hi if hi_open else x <= hi)):
-        interval = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{' ' + unit if unit else ''}"
-        raise ValueError(f"{where}: {key} must be a finite number in {interval}, got {_short(value)}")
 
 
 def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:

@@ -1,0 +1,156 @@
+"""The side tables of a section-parameter file (io/params_file.py): ``[body]`` (the airframe
+drag, the centre of mass and the rotor interference of a flight fit) and ``[coverage]`` (what the
+data behind a fitted set covered), read from the file's dict form; and the number checks that
+every key of the file shares.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from typing import NamedTuple
+
+__all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_TABLE", "BodyTable", "body_from_dict", "check_number",
+           "coverage_from_dict", "short_repr"]
+
+BODY_TABLE = "body"
+#: the table of what a fitted set's data covered (warnings when the set is used beyond it)
+COVERAGE_TABLE = "coverage"
+COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
+                 "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
+
+
+class BodyTable(NamedTuple):
+    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag), the
+    centre of mass [m] (shape (3,)) and the rotor interference factor [-] (each of the last
+    two None when the table has none)."""
+
+    drag: object
+    centre_of_mass: object
+    rotor_interference: float | None = None
+
+
+def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
+    """The ``[coverage]`` table of a file-form dict (what the fitted data covered: J_max,
+    incidence_deg_max, rpm_min, rpm_max, airspeed_max), or None without one.
+
+    Parameters
+    ----------
+    data : dict
+        File form (module docstring); only its ``[coverage]`` table is read.
+    where : str
+        Starts every error message.
+
+    Returns
+    -------
+    dict or None
+        The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
+        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]); None without a table.
+
+    Raises
+    ------
+    ValueError
+        Not a table, an unknown key, a value not a number or out of its range.
+    """
+    table = data.get(COVERAGE_TABLE)
+    if table is None:
+        return None
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] must be a table, got {short_repr(table)}")
+    unknown = sorted(set(table) - set(COVERAGE_KEYS))
+    if unknown:
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))} (valid: "
+                         f"{', '.join(COVERAGE_KEYS)})")
+    for k, v in table.items():
+        check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+    if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
+        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
+                         f"{table['rpm_max']:g}")
+    return {k: float(v) for k, v in table.items()}
+
+
+def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
+    """The ``[body]`` table of a file-form dict (module docstring), or None without one.
+
+    Parameters
+    ----------
+    data : dict
+        File form (module docstring); only its ``[body]`` table is read.
+    where : str
+        Starts every error message.
+
+    Returns
+    -------
+    BodyTable or None
+
+    Raises
+    ------
+    ValueError
+        A ``[body]`` that is not a table, an unknown key in it, a missing ``drag_area``, or
+        values of the wrong type or out of range (core/body.py; centre_of_mass in [-1, 1] m,
+        rotor_interference in [0, 3]);
+        the message starts with ``where``.
+    """
+    import numpy as np
+
+    from ..core.body import BodyDrag
+
+    if BODY_TABLE not in data:
+        return None
+    table = data[BODY_TABLE]
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {short_repr(table)}")
+    allowed = ("drag_area", "wash_factor", "centre_of_mass", "rotor_interference", "comment")
+    extra = sorted(str(k) for k in table if k not in allowed)
+    if extra:
+        raise ValueError(f"{where}: [body]: unknown key(s) {', '.join(short_repr(k, 40) for k in extra[:5])} "
+                         f"(allowed: {', '.join(allowed)})")
+    if "drag_area" not in table:
+        raise ValueError(f"{where}: [body]: missing key 'drag_area'")
+    vectors = {}
+    for key, rng in (("drag_area", (0.0, 10.0, False, False, "m^2")),
+                     ("centre_of_mass", (-1.0, 1.0, False, False, "m"))):
+        if key not in table:
+            continue
+        value = table[key]
+        if not (isinstance(value, list) and len(value) == 3):
+            raise ValueError(f"{where}: [body]: {key} must be 3 numbers [{rng[4]}], got {short_repr(value)}")
+        for k, v in enumerate(value):
+            check_number(v, f"[body] {key}[{k}]", where, rng)
+        vectors[key] = [float(v) for v in value]
+    if "wash_factor" in table:
+        check_number(table["wash_factor"], "[body] wash_factor", where, (0.0, 3.0, False, False, ""))
+    drag = BodyDrag(drag_area=tuple(vectors["drag_area"]), wash_factor=float(table.get("wash_factor", 0.0)))
+    cg = np.array(vectors["centre_of_mass"]) if "centre_of_mass" in vectors else None
+    kappa = None
+    if "rotor_interference" in table:
+        check_number(table["rotor_interference"], "[body] rotor_interference", where, (0.0, 3.0, False, False, ""))
+        kappa = float(table["rotor_interference"])
+    return BodyTable(drag, cg, kappa)
+
+
+def short_repr(value, n: int = 60) -> str:
+    """``repr(value)`` cut to about ``n`` characters, for messages."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    r = repr(value)
+    return r if len(r) <= n else r[: n - 4] + " ..."
+
+
+def check_number(value, key: str, where: str, rng) -> None:
+    """Refuse a non-number, a non-finite number or one outside ``rng``, naming ``key``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        hint = " (a quoted string: write the number without quotes)" if isinstance(value, str) else ""
+        raise ValueError(f"{where}: {key} must be a number, got {short_repr(value)}{hint}")
+    try:
+        x = float(value)
+    except OverflowError:
+        x = math.inf if value > 0 else -math.inf
+    if rng is None:
+        if not math.isfinite(x):
+            raise ValueError(f"{where}: {key} must be a finite number, got {short_repr(value)}")
+        return
+    lo, hi, lo_open, hi_open, unit = rng
+    if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and (x < hi if hi_open else x <= hi)):
+        interval = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}{' ' + unit if unit else ''}"
+        raise ValueError(f"{where}: {key} must be a finite number in {interval}, got {short_repr(value)}")
