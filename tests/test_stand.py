@@ -58,6 +58,81 @@ def test_stopped_rows_and_a_spin_down_are_left_out_with_a_note(tmp_path, truth_p
     assert any("never steady" in n and "_1000us" in n for n in data.notes), data.notes
 
 
+def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_params):
+    """A stand export that ends with a row of an empty rotation speed and empty load cells (the
+    test ended) reads as without it; an empty load cell where the motor runs is still refused."""
+    path = tmp_path / "s.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS[:8])
+    text = path.read_text(encoding="utf-8-sig")
+    header = text.splitlines()[0].split(",")
+    full = read_loads(path)
+    last = ["30.0" if h.startswith("Time") else ("1000" if h.startswith("ESC") else "") for h in header]
+    path.write_text(text.rstrip("\n") + "\n" + ",".join(last) + "\n", encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == full.n
+    np.testing.assert_array_equal(data.measured["thrust"], full.measured["thrust"])
+    # a running row with an empty thrust cell: refused, naming the column
+    rows = text.splitlines()
+    k = header.index(next(h for h in header if h.startswith("Thrust")))
+    cells = rows[-1].split(",")
+    cells[k] = ""
+    path.write_text("\n".join(rows[:-1] + [",".join(cells)]) + "\n", encoding="utf-8")
+    with pytest.raises(DataError, match="thrust.*empty"):
+        read_loads(path)
+
+
+def test_a_negative_rotation_speed_is_its_magnitude_or_refused_where_signs_mix(tmp_path):
+    """A speed column negative in every running row (a probe that reports this sense of
+    rotation negative) is taken as its magnitude, with a note; a column of both signs is
+    refused naming the line (it was once skipped silently as a stopped motor)."""
+    rpm = np.array([3000.0, 4000.0, 5000.0, 6000.0, 7000.0, 8000.0])
+    thrust = 1e-7 * rpm**2
+    torque = 1.5e-9 * rpm**2
+
+    def write(name, r):
+        path = tmp_path / name
+        rows = "".join(f"{a:g},{b:.6g},{c:.6g}\n" for a, b, c in zip(r, thrust, torque))
+        path.write_text("rpm,thrust,torque\n" + rows)
+        return path
+
+    plain = read_loads(write("p.csv", rpm))
+    neg = read_loads(write("n.csv", -rpm))
+    np.testing.assert_array_equal(neg.omega, plain.omega)
+    assert any("negated" in n and "'rpm'" in n for n in neg.notes), neg.notes
+    mixed = rpm.copy()
+    mixed[3] *= -1.0
+    with pytest.raises(DataError, match=r"line 5: 'rpm' is -6000 rpm where other rows are positive"):
+        read_loads(write("m.csv", mixed))
+
+
+@pytest.mark.parametrize("header, scale, label", [("Throttle (%)", 100.0, "step3_34pct"),
+                                                   ("throttle", 1.0, "step3_0.34"),
+                                                   ("ESC signal (us)", None, "step3_1340us")])
+def test_a_throttle_column_keeps_its_unit(tmp_path, header, scale, label):
+    """A throttle in percent or as a fraction (by its unit, else by its values) is not taken for
+    a pulse width in us: a sweep in 2% steps, run twice, keeps every point (before, the steps'
+    2 us tolerance merged neighbouring percents and refused the fractions)."""
+    throttle = np.tile(np.arange(0.30, 0.81, 0.02), 2)
+    rpm = 10000.0 * throttle
+    esc = 1000.0 + 1000.0 * throttle if scale is None else scale * throttle
+    path = tmp_path / "t.csv"
+    path.write_text(f"{header},rpm,thrust,torque\n" + "".join(
+        f"{e:.6g},{r:.6g},{1e-7 * r**2:.6g},{1.5e-9 * r**2:.6g}\n" for e, r in zip(esc, rpm)))
+    data = read_loads(path)
+    assert data.n == rpm.size
+    np.testing.assert_allclose(np.sort(data.omega * 30 / np.pi), np.sort(rpm), rtol=1e-6)
+    assert data.group[2] == label
+    if header == "throttle":
+        assert any("throttle fraction" in n for n in data.notes), data.notes
+
+
+def test_an_unknown_throttle_unit_is_refused(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text("Throttle (V),rpm,thrust\n" + "".join(f"{v},{3000 + 100 * v},{0.5 + v / 100}\n" for v in range(8)))
+    with pytest.raises(DataError, match="Throttle \\(V\\).*unknown unit 'V'"):
+        read_loads(path)
+
+
 def test_electrical_speed_with_pole_pairs(tmp_path, truth_params):
     path = tmp_path / "e.csv"
     truth = write_steps_export(path, params=truth_params, steps=STEPS, electrical_raw=True, pole_pairs=7,

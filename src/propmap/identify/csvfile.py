@@ -152,9 +152,12 @@ class _Csv:
                 msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
-    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=()) -> tuple[dict, dict, np.ndarray]:
+    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=()) -> tuple[dict, dict,
+                                                                                               np.ndarray]:
         """(numbers by column, text by column, line of each row) for the named columns; an
-        empty cell of a column in ``optional`` is NaN instead of an error."""
+        empty cell of a column in ``optional`` is NaN instead of an error, and so is every
+        empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty: a
+        stopped motor's row, e.g. a stand export's last line after the test ended."""
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -167,9 +170,11 @@ class _Csv:
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
+            stopped = bool(stop) and not any(self.index[c] < len(cells) and cells[self.index[c]].strip()
+                                             for c in stop)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
-                if not cell and c in optional:
+                if not cell and (c in optional or stopped):
                     nums[c].append(math.nan)
                     continue
                 if not cell:

@@ -87,9 +87,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     and ``group`` (run label). The exports of RCbenchmark / Tyto thrust stands (Series
     1520, 1580, 1585, 1780) are read as written: the optical or electrical motor speed (the
     choice stated), a "steps" test averaged to one point per ESC step (its settling rows
-    dropped; each step a group for holding out), rows of a stopped motor (rpm 0) skipped,
-    and a stand's reaction torque (negative) turned to the propeller's; every decision is
-    in ``LoadData.notes``. Format and valid ranges in the module docstring.
+    dropped; each step a group for holding out), rows of a stopped motor (rpm 0, or an empty
+    rotation speed, whose load cells may then be empty too) skipped, a rotation speed that is
+    negative in every running row taken as its magnitude, and a stand's reaction torque
+    (negative) turned to the propeller's; an ESC signal as a pulse width [us] or a throttle
+    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.stand.esc_form`);
+    every decision is in ``LoadData.notes``. Format and valid ranges in the module docstring.
 
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
     than 2% of the column's largest magnitude (those below are noise about zero), each
@@ -131,7 +134,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         header), no rotation-speed or no load column (the message lists the columns found
         and what was looked for), a unit it does not know, two columns for one quantity, an
         empty (except a rotation speed: an empty one is a stopped motor, skipped),
-        non-numeric or non-finite value, a value out of range (rpm outside
+        non-numeric or non-finite value, a rotation speed negative in some rows and positive
+        in others, a value out of range (rpm outside
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
         incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
@@ -139,7 +143,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
         identical; the message names the file, the line and the column.
     """
-    from .stand import map_columns, stand_points
+    from .stand import ESC_TOL, esc_form, map_columns, stand_points
 
     what = "load data"
     f = _Csv(path, what)
@@ -157,7 +161,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                              if q in cm.columns), *keys]
     low = {q: cm.column(q).lower() for q in quantities}
     optional = {low[q] for q in speeds} | ({low["time"]} if "time" in low else set())
-    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional)
+    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional,
+                               stop={low[q] for q in speeds})
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
     # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
@@ -165,7 +170,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if use != "rpm":
         if rpm_source is not None:
             use = f"rpm_{rpm_source}"
-        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.nan_to_num(v["rpm_optical"])) > 0:
+        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.abs(np.nan_to_num(v["rpm_optical"]))) > 0:
             use = "rpm_optical"
         elif "rpm_electrical" in v:
             use = "rpm_electrical"
@@ -182,6 +187,18 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     for q in speeds:
         v.pop(q)
     v["rpm"] = rpm
+    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative)
+    neg = np.nan_to_num(rpm) < 0
+    if neg.any():
+        if np.any(np.nan_to_num(rpm) > 0):
+            k = int(np.argmax(neg))
+            raise DataError(f"{what}: {p}, line {lines[k]}: {cm.column(use)!r} is {rpm[k]:g} rpm where other rows "
+                            "are positive; a rotation speed must be positive, in (0, 954929] rpm (0 or empty: a "
+                            "stopped motor, skipped)")
+        rpm = v["rpm"] = -rpm
+        notes.append(f"rotation speed negated: {cm.column(use)!r} is negative in every running row "
+                     f"({int(neg.sum())}), a probe or ESC that reports this sense of rotation negative; propmap's "
+                     "rotation speed is its magnitude")
     # stopped motor: rows skipped
     stopped = ~(np.nan_to_num(rpm) > 0)
     if stopped.any():
@@ -196,12 +213,17 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a "steps" test: one averaged point per ESC step
     group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
              else None)
-    if "esc" in v and n and np.unique(np.round(v["esc"], 1)).size < n:
+    form = None
+    if "esc" in v:
+        form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"], DataError)
+        if note:
+            notes.append(note)
+    if form and n and np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n:
         esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
         if n and np.all(np.isnan(v["rpm"])):
             raise DataError(f"{what}: {p}: no rotation speed in any row")
-        v, group, dropped, unsteady = stand_points(v, esc, time, labels=group)
+        v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
         if not group.size:
             raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
                             "half of the step)")

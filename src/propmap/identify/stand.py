@@ -62,6 +62,7 @@ _NAMES = {
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
     "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
+    # a pulse width [us] or a throttle [%, or a fraction]: its unit is read by esc_form
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
 }
@@ -204,16 +205,38 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
 #: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
 #: its tolerance (a tunnel run at one throttle and several airspeeds)
 ESC_TOL_US = 2.0
+#: the same tolerance for each form of the signal: a pulse width [us] (1000-2000 us), a
+#: throttle in percent or as a fraction (2 us of the 1000 us span: 0.2% or 0.002)
+ESC_TOL = {"us": ESC_TOL_US, "pct": 0.2, "fraction": 0.002}
 CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
+_ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct", "pct": "pct", "percent": "pct"}
 
 
-def _step_starts(esc: np.ndarray, conditions: dict, labels) -> np.ndarray:
-    """Row index where each step starts (see ESC_TOL_US, CONDITION_TOL)."""
+def esc_form(name: str, unit: str | None, esc: np.ndarray, error=ValueError) -> tuple[str, str | None]:
+    """The form of an ESC-signal or throttle column: ("us" | "pct" | "fraction", note or None).
+
+    By its unit where it gives one (us, µs, microseconds; %, pct, percent), else by its values:
+    at most 1 a fraction, at most 100 a percentage, else a pulse width in us (the note says which
+    was taken). ``error`` is raised for another unit, naming the column."""
+    if unit is not None:
+        tok = _token(unit)
+        if tok not in _ESC_UNITS:
+            raise error(f"column {name!r}: unknown unit {unit!r} for an ESC signal or throttle (known: us, %)")
+        return _ESC_UNITS[tok], None
+    top = float(np.nanmax(np.abs(esc))) if esc.size else 0.0
+    form = "fraction" if top <= 1.0 else ("pct" if top <= 100.0 else "us")
+    what = {"fraction": "a throttle fraction (0-1)", "pct": "a throttle in percent", "us": "a pulse width in us"}[form]
+    return form, f"{name!r} read as {what} (its values reach {top:g}; give the unit in its name to say otherwise)"
+
+
+def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:
+    """Row index where each step starts (ESC signal within ``tol`` of the step's first row,
+    CONDITION_TOL, one label)."""
     starts = [0]
     ref = 0
     cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
     for i in range(1, esc.size):
-        if (abs(esc[i] - esc[ref]) > ESC_TOL_US or any(abs(a[i] - a[ref]) > tol for a, tol in cond)
+        if (abs(esc[i] - esc[ref]) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
                 or (labels is not None and labels[i] != labels[ref])):
             starts.append(i)
             ref = i
@@ -221,10 +244,10 @@ def _step_starts(esc: np.ndarray, conditions: dict, labels) -> np.ndarray:
 
 
 def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
-                 steady: float = 0.02, labels=None):
+                 steady: float = 0.02, labels=None, form: str = "us"):
     """One averaged point per ESC step of a thrust-stand "steps" test.
 
-    Consecutive rows with one ESC signal (within ESC_TOL_US of the step's first row) and one
+    Consecutive rows with one ESC signal (within ESC_TOL[form] of the step's first row) and one
     operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
     ``labels``) form a step. Of each step the first ``settle``
     of its duration (its rows, without a time column) is dropped, the motor settling, and of
@@ -238,12 +261,15 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     values : dict
         quantity -> ndarray of shape (N,), rows in file order; must hold ``rpm``.
     esc : ndarray, shape (N,)
-        ESC signal [us].
+        ESC signal: a pulse width [us], or a throttle in percent or as a fraction (``form``).
     time : ndarray, shape (N,), or None
     settle, steady : float
     labels : sequence of str, shape (N,), optional
         A run label per row (a ``group`` column): a step never spans two labels, and its
         label becomes ``<label>_step<k>_<esc>us``.
+    form : {"us", "pct", "fraction"}
+        The ESC signal's form (:func:`esc_form`): its tolerance and the labels' unit
+        (``step<k>_<esc>us``, ``step<k>_<esc>pct``, ``step<k>_<esc>``).
 
     Returns
     -------
@@ -252,13 +278,15 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
         ``step<k>_<esc>us``, the number of rows dropped as transients, and the labels of
         the steps dropped as unsteady.
     """
-    starts = _step_starts(esc, {q: values[q] for q in CONDITION_TOL if q in values}, labels)
+    starts = _step_starts(esc, {q: values[q] for q in CONDITION_TOL if q in values}, labels, ESC_TOL[form])
     stops = np.concatenate([starts[1:], [esc.size]])
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     for k, (a, b) in enumerate(zip(starts, stops)):
         idx = np.arange(a, b)
-        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k + 1}_{np.median(esc[a:b]):.0f}us"
+        m = np.median(esc[a:b])
+        level = {"us": f"{m:.0f}us", "pct": f"{m:.4g}pct", "fraction": f"{m:.4g}"}[form]
+        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k + 1}_{level}"
         if idx.size > 2:
             if time is not None and time[b - 1] > time[a]:
                 keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]
