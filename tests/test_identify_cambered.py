@@ -109,8 +109,35 @@ def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):
     assert any("cd_min ended at its lower bound 0.03" in w for w in r.warnings)
     assert "cd_min" in r.report_text() and "(at bound)" in r.report_text()
     assert r.to_dict()["at_bound"] == ["cd_min"]
+    # held at its bound, it has no linearised uncertainty (once +-4e4 for a compliance at 0)
+    rep = r.to_dict()["identifiability"]
+    assert rep["std_error"]["cd_min"] is None and rep["ci95"]["cd_min"] == [None, None]
+    assert all(v is not None and v > 0 for n, v in rep["std_error"].items() if n != "cd_min")
     short = fit_loads(d, apc8x6, options=FitOptions(prior=False, max_nfev=2))
     assert short.hit_max_nfev and "evaluation limit (2)" in short.report_text()
+
+
+def test_identifiability_holds_parameters_at_a_bound_and_flags_numerically_free_ones():
+    """The covariance with a parameter held at its bound is that of the others alone (its own
+    std error NaN, null in JSON); a column at rounding level (a term that acts only through
+    another held at zero: an airframe's wash factor with no drag area) is not determined
+    (infinite), not a std error of 1e38 as the unguarded inverse gave."""
+    from propmap.identify.result import _identifiability
+
+    rng = np.random.default_rng(3)
+    jac = rng.normal(size=(40, 3))
+    r = 0.01 * rng.normal(size=40)
+    full = _identifiability(("a", "b", "c"), np.ones(3), jac, r)
+    held = _identifiability(("a", "b", "c"), np.ones(3), jac, r, held=("b",))
+    alone = _identifiability(("a", "c"), np.ones(2), jac[:, [0, 2]], r)
+    assert np.isnan(held.std_error[1]) and np.all(np.isnan(held.ci95[1]))
+    np.testing.assert_allclose(held.std_error[[0, 2]], alone.std_error, rtol=1e-12)
+    assert not np.allclose(held.std_error[[0, 2]], full.std_error[[0, 2]], rtol=1e-3)  # b correlated with them
+    tiny = jac.copy()
+    tiny[:, 2] = 1e-40 * rng.normal(size=40)
+    idf = _identifiability(("a", "b", "wash_factor"), np.ones(3), tiny, r)
+    assert idf.std_error[2] == np.inf and np.all(np.isfinite(idf.std_error[:2]))
+    assert any("wash_factor is not determined" in w for w in idf.warnings)
 
 
 def test_report_names_parameters_the_data_do_not_determine(apc8x6):

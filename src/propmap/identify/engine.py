@@ -18,7 +18,8 @@ from dataclasses import fields, replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import AIRFRAME_BOUNDS, BODY_BOUNDS, BODY_X0, BOUNDS, CAMBERED_BOUNDS, ROTOR_BOUNDS, FitOptions, _is_angle
+from .options import (ABSENT_AT_ZERO, AIRFRAME_BOUNDS, BODY_BOUNDS, BODY_X0, BOUNDS, CAMBERED_BOUNDS, ROTOR_BOUNDS,
+                      FitOptions, _is_angle)
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
 
 __all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
@@ -201,7 +202,9 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         residuals, jac = best.fun[:-k], best.jac[:-k]
         extra["prior"]["pseudo_residuals"] = [float(v) for v in best.fun[-k:]]
         extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
-    idf = _identifiability(names, best.x, jac, residuals)
+    tol = 1e-6 * (ub - lb)
+    at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
+    idf = _identifiability(names, best.x, jac, residuals, held=at_bound)
     if "prior" in extra:
         # the posterior: the prior rows were weighted by w = sigma_d * scale (the population's
         # residual level) in the fit; rescaled by sqrt(s2) / w they carry the population
@@ -211,7 +214,8 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
         s2 = float(residuals @ residuals) / max(residuals.size - len(names), 1)
         prior_rows = best.jac[-k:] * (math.sqrt(s2) / w)
-        post = _identifiability(names, best.x, np.vstack([jac, prior_rows]), residuals, dof_rows=residuals.size)
+        post = _identifiability(names, best.x, np.vstack([jac, prior_rows]), residuals, dof_rows=residuals.size,
+                                held=at_bound)
         held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
         # one line for what the prior holds; the data's own word on parameters it does not
         # cover; the posterior's correlations (its std errors are in the report)
@@ -223,15 +227,18 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
              "base set's values (data-only std errors in the report)",) if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac, best.jac))
-    tol = 1e-6 * (ub - lb)
-    at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
             side, b = ("lower", lo) if abs(v - lo) <= abs(v - hi) else ("upper", hi)
             shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
-            warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
-                         "its value is the bound's; suspect the data, the geometry or the model")
+            if side == "lower" and b == 0.0 and n in ABSENT_AT_ZERO:
+                warns.append(f"{n} ended at 0, its lower bound: the data show none of this effect (held at 0; no "
+                             "uncertainty is given for it)")
+            else:
+                warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
+                             "its value is the bound's (held there; no uncertainty is given for it); suspect the "
+                             "data, the geometry or the model")
     hit = int(best.status) == 0
     if hit:
         limit = getattr(best, "nfev_limit", options.max_nfev)

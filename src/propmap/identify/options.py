@@ -15,7 +15,7 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
            "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
            "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT",
-           "FLAP_START"]
+           "FLAP_START", "ABSENT_AT_ZERO"]
 
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
@@ -71,6 +71,10 @@ ROTOR_BOUNDS = {"collective": (math.radians(-15), math.radians(15)), "flap_compl
 AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag_area_z": (0.0, 0.05),
                    "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05),
                    "rotor_interference": (0.0, 3.0)}
+#: parameters whose value 0 is the effect's absence (no flapping, no airframe drag, no slipstream on it, no
+#: interference, no body lift): a fit that ends at that lower bound found none, which is not suspect
+ABSENT_AT_ZERO = ("flap_compliance", "drag_area_x", "drag_area_y", "drag_area_z", "wash_factor", "rotor_interference",
+                  "cl1_body", "cl2_body")
 #: parameters that are angles [rad], reported in degrees
 ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core.airfoil import Air, SectionParams
-from .options import CAMBERED_SCALE, _is_angle
+from .options import AIRFRAME_BOUNDS, BODY_BOUNDS, CAMBERED_SCALE, ROTOR_BOUNDS, _is_angle
 
 __all__ = ["FitResult", "Identifiability", "POOR_REL_STD"]
 
@@ -29,7 +29,12 @@ class Identifiability:
     N - p degrees of freedom. A parameter is "poorly determined" when its std error
     exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
     for cambered parameters whose value may be near zero: CAMBERED_SCALE), i.e. its 95%
-    interval is wider than about +-20%; "not determined" when the std error is not finite.
+    interval is wider than about +-20%; "not determined" when the std error is not finite
+    (also where the parameter moves along a direction J leaves numerically free: a singular
+    value below p max(N, p) machine epsilons of the largest). A parameter that ended at a bound
+    (FitResult.at_bound) is held there: the constraint is active, so the linearised covariance
+    does not describe it; its std error and interval are NaN (null in JSON, "-" in the text
+    report) and the others' are those with it fixed.
     ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
     respect to relative parameter changes.
 
@@ -166,9 +171,12 @@ class FitResult:
             f = math.degrees if deg else float
             lo, hi = idf.ci95[k]
             flag = " (at bound)" if n in self.at_bound else ""
-            extra = f"{f(idf.std_error_data[k]):>12.3g}" if data_only else ""
-            lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{f(idf.std_error[k]):>10.3g}"
-                         f"{'[' + format(f(lo), '.4g') + ', ' + format(f(hi), '.4g') + ']':>24}{extra}{flag}")
+            held = np.isnan(idf.std_error[k])  # held at its bound: no linearised uncertainty
+            extra = (f"{'-' if np.isnan(idf.std_error_data[k]) else format(f(idf.std_error_data[k]), '.3g'):>12}"
+                     if data_only else "")
+            sd = "-" if held else format(f(idf.std_error[k]), ".3g")
+            interval = "-" if held else f"[{f(lo):.4g}, {f(hi):.4g}]"
+            lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{sd:>10}{interval:>24}{extra}{flag}")
         dirs = self.extra.get("directions")
         if dirs:
             lines.append(f"std err and interval: the posterior, the data's along the {dirs['count']} free directions "
@@ -194,10 +202,11 @@ class FitResult:
         elif idf.effective_parameters is not None:
             lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
                          "directions (effective number; the prior holds the others near the base set)")
-        if len(self.names) > 1:
+        if sum(not np.isnan(v) for v in idf.std_error) > 1:
+            free = [k for k in range(len(self.names)) if not np.isnan(idf.std_error[k])]  # (held at a bound: none)
             lines.append("correlation: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
-                for i in range(len(self.names)) for j in range(i + 1, len(self.names))))
+                for a, i in enumerate(free) for j in free[a + 1:]))
         label = "the free directions' Jacobian" if dirs else "scaled Jacobian"
         lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
         level = self.extra.get("kind") in ("level_flight", "flight")
@@ -224,23 +233,49 @@ class FitResult:
 
 
 def _scale_of(name: str) -> float:
-    return CAMBERED_SCALE.get(name, 0.0)
+    """A parameter's natural scale, against which a std error is judged where the estimate is
+    near zero: CAMBERED_SCALE's, else a tenth of its bounds' span (the rotor options, the
+    airframe terms), else 0."""
+    if name in CAMBERED_SCALE:
+        return CAMBERED_SCALE[name]
+    for bounds in (ROTOR_BOUNDS, AIRFRAME_BOUNDS, BODY_BOUNDS):
+        if name in bounds:
+            lo, hi = bounds[name]
+            return 0.1 * (hi - lo)
+    return 0.0
 
 
-def _identifiability(names, x, jac, residuals, dof_rows: int | None = None) -> Identifiability:
+def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held=()) -> Identifiability:
     """Identifiability from ``jac`` (rows: residuals, prior rows included for the posterior);
     the residual variance from ``residuals`` with ``dof_rows`` (default: jac's rows) - p
-    degrees of freedom."""
+    degrees of freedom; the parameters named in ``held`` (at a bound) fixed (class docstring)."""
+    names = tuple(names)
+    if any(n in held for n in names):
+        keep = np.array([n not in held for n in names])
+        sub = _identifiability([n for n, k in zip(names, keep) if k], np.asarray(x)[keep], jac[:, keep], residuals,
+                               dof_rows)
+        p = len(names)
+        std = np.full(p, np.nan)
+        ci = np.full((p, 2), np.nan)
+        corr = np.eye(p)
+        std[keep] = sub.std_error
+        ci[keep] = sub.ci95
+        corr[np.ix_(keep, keep)] = sub.correlation
+        return Identifiability(names, std, ci, corr, sub.singular_values, sub.poorly_determined, sub.warnings)
     N, p = jac.shape
     dof = max((N if dof_rows is None else dof_rows) - p, 1)
     s2 = float(residuals @ residuals) / dof
     # covariance from the SVD of J with no cut-off: a weak direction gets a large
-    # variance (a pseudo-inverse with a cut-off would report it as perfectly known)
+    # variance (a pseudo-inverse with a cut-off would report it as perfectly known); a
+    # direction numerically free (its singular value at rounding level) is infinite for every
+    # parameter that moves along it
     _, sig, Vt = np.linalg.svd(jac, full_matrices=False)
+    null = sig <= (sig[0] if sig.size else 0.0) * p * max(N, p) * np.finfo(float).eps
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        inv_sig2 = np.where(sig > 0, 1.0 / sig**2, np.inf)
+        inv_sig2 = np.where(null, 0.0, 1.0 / sig**2)
         cov = s2 * (Vt.T * inv_sig2) @ Vt
         std = np.sqrt(np.clip(np.diag(cov), 0, None))
+        std[np.any(np.abs(Vt[null]) > 1e-8, axis=0)] = np.inf
         if sig.size < p:  # fewer residuals than parameters: the missing directions are free
             std = np.full(p, np.inf)
         std = np.where(np.isnan(std), np.inf, std)
