@@ -129,6 +129,46 @@ def test_flight_samples_measure_force_and_moment(shared_data):
     np.testing.assert_allclose(s.moment, wd @ veh.inertia + np.cross(w, w @ veh.inertia), rtol=1e-12)
 
 
+def test_a_log_of_motor_speeds_in_rpm_is_refused_naming_the_cause(shared_data):
+    """The shared log's speeds (rad/s, tip Mach 0.2-0.3 on the 5.1 in rotors) pass; the same
+    speeds written in rpm (x 9.55, tip Mach above 1) are refused: they once ran, and printed
+    forces of a kilonewton with a tip-Mach warning."""
+    from dataclasses import replace
+
+    veh = pm.read_vehicle(VEHICLE)
+    log = read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[1])
+    assert flight_samples([log], veh, rate_hz=20).n > 0
+    rpm = replace(log, rotor_omega=log.rotor_omega * 30 / math.pi)
+    with pytest.raises(ValueError, match=r"tip speed of Mach \d.*in rpm\?"):
+        flight_samples([rpm], veh, rate_hz=20)
+
+
+def test_the_error_table_keeps_its_columns_apart_for_large_numbers():
+    from propmap.cli.flight import _table
+
+    row = {"Fx": 11.157, "Fy": 8.839, "Fz": 1787.762, "F": 1032.198, "Mx": 0.1, "My": 118.4855, "Mz": 0.02, "M": 68.4}
+    text = _table([("propmap", row), ("baseline", {"Fx": 0.1, "Fy": 0.2, "Fz": 0.3, "F": 0.2})])
+    values = text.splitlines()[1].split()
+    assert values[1:] == ["11.157", "8.839", "1787.762", "1032.198", "0.1000", "118.4855", "0.0200", "68.4000"]
+    assert text.splitlines()[2].split()[1:] == ["0.100", "0.200", "0.300", "0.200"]
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["--cross-validate", "--holdout", SEGMENTS[1]], "--cross-validate .* needs at least 2 training logs, got 1"),
+    (["--rate-hz", "0.01"], r"--rate-hz 0.01: \d training sample\(s\) at that rate cannot identify 6 parameters"),
+])
+def test_cli_fit_flight_refuses_before_fitting_naming_the_option(tmp_path, capsys, shared_data, extra, message):
+    """Checked before any fit (the cross-validation's was found after a whole fit), one line,
+    exit 2, naming the option."""
+    import re
+
+    logs = [str(shared_data / "neurobem_flights" / s) for s in SEGMENTS]
+    code = main(["fit", "flight", *logs, "--vehicle", str(VEHICLE), "--out", str(tmp_path / "p.toml"), *extra])
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1 and re.search(message, err), err
+    assert not (tmp_path / "p.toml").exists()
+
+
 def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shared_data):
     """Fit one log at 1 Hz holding out another; the parameter file (with its [body] table)
     reads back and drives wrench, whose CSV has the documented columns."""

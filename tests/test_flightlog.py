@@ -117,6 +117,8 @@ def test_malformed_mat_logs(tmp_path, seg, mutate, match):
 @pytest.mark.parametrize("content, name, match", [
     (b"not a mat file at all", "x.mat", "not a readable MATLAB"),
     (b"t,ang acc x\n1,2\n", "x.csv", "header lacks the NeuroBEM column"),
+    ((";".join(NEUROBEM_COLUMNS) + "\n" + ";".join(["0,5"] * 41) + "\n").encode(), "x.csv",
+     "separated by ';'; a flight-log CSV is separated by ','"),
     (b"1,2,3\n4,5,6\n", "x.csv", "3 columns"),
     (b"ULog garbage", "x.ulg", "not a readable ULog"),
     (b"", "x.csv", "empty file"),

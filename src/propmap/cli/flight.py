@@ -71,17 +71,25 @@ def _write_columns(fh, cols: dict) -> None:
 
 
 def _table(rows: list[tuple[str, dict]]) -> str:
-    """Rows of force (and moment) errors as text."""
+    """Rows of force (and moment) errors as text; a column widens for numbers longer than its 7
+    characters, so that they never run together."""
     width = max([44] + [len(label) + 1 for label, _ in rows])  # labels whole: held-out log names are long
-    head = f"{'':<{width}}{'Fx':>7}{'Fy':>7}{'Fz':>7}{'F':>7}"
     moments = any("M" in r for _, r in rows)
+    forces = ("Fx", "Fy", "Fz", "F")
+    keys = forces + (("Mx", "My", "Mz", "M") if moments else ())
+
+    def cell(k, v):
+        return f"{v:.3f}" if k in forces else f"{v:.4f}"
+
+    col = {k: max([7] + [len(cell(k, r[k])) + 1 for _, r in rows if k in r]) for k in keys}
+    head = f"{'':<{width}}" + "".join(f"{k:>{col[k]}}" for k in forces)
     if moments:
-        head += f"   {'Mx':>7}{'My':>7}{'Mz':>7}{'M':>7}"
+        head += "   " + "".join(f"{k:>{col[k]}}" for k in keys[4:])
     lines = [head + ("   [N]; [N m]" if moments else "   [N]")]
     for label, r in rows:
-        line = f"{label:<{width}}" + "".join(f"{r[k]:>7.3f}" for k in ("Fx", "Fy", "Fz", "F"))
+        line = f"{label:<{width}}" + "".join(f"{cell(k, r[k]):>{col[k]}}" for k in forces)
         if moments and "M" in r:
-            line += "   " + "".join(f"{r[k]:>7.4f}" for k in ("Mx", "My", "Mz", "M"))
+            line += "   " + "".join(f"{cell(k, r[k]):>{col[k]}}" for k in keys[4:])
         lines.append(line)
     return "\n".join(lines)
 
@@ -138,15 +146,26 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     held = {Path(h).name for h in held}
     if len(held) == len(names):
         raise InputError("--holdout: every LOG is held out; keep at least one to fit")
+    if cross_validate and len(names) - len(held) < 2:
+        raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
+                         f"got {len(names) - len(held)}")
     samples = _samples(logs, veh, rate_hz)
+    if samples.rate_hz < 0.99 * rate_hz:
+        click.echo(f"propmap: note: --rate-hz {rate_hz:g}: the logs are sampled at {samples.rate_hz:.4g} Hz, so "
+                   "every sample is taken", err=True)
     held_idx = [k for k, n in enumerate(names) if n in held]
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    from ..identify.flight import AIRFRAME_NAMES
+    from ..identify.flight import AIRFRAME_NAMES, FLIGHT_FIT
 
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
+    n_names = len(opts.names) if opts.names else len(FLIGHT_FIT)
+    if 3 * train.n <= n_names:
+        raise InputError(f"--rate-hz {rate_hz:g}: {train.n} training sample(s) at that rate cannot identify {n_names} "
+                         f"parameters; raise --rate-hz (the training logs hold "
+                         f"{sum(lg.n for lg in logs if lg.name not in held)} samples)")
     res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
     veh_in = veh
@@ -179,7 +198,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
     res.extra["flight_report"] = report
-    text = [f"{samples.n} samples at {rate_hz:g} Hz from {len(names)} log(s); fitted on "
+    text = [f"{samples.n} samples at {samples.rate_hz:.4g} Hz from {len(names)} log(s); fitted on "
             f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
     bands = report["training"]["speed_bands"]
     text.append("training F by speed band: " + ", ".join(

@@ -16,6 +16,11 @@ __all__ = ["OMEGA_STOPPED", "FlightSamples", "flight_samples"]
 
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
+#: a log whose rotors' tip speed exceeds this Mach number (at SPEED_OF_SOUND) is refused: no multirotor flies
+#: so, and a log of motor speeds in rpm read as rad/s (9.55x) reaches it
+MAX_TIP_MACH = 1.0
+#: the speed of sound of that check [m/s] (ISA sea level)
+SPEED_OF_SOUND = 340.3
 
 
 @dataclass(frozen=True)
@@ -42,7 +47,8 @@ class FlightSamples:
     reference_force, reference_moment : ndarray, shape (N, 3), or None
         The logs' own model prediction (NeuroBEM's BEM + NN) where every log has one.
     rate_hz : float
-        Sampling rate of the samples [Hz].
+        Sampling rate of the samples [Hz]: the one asked for, or a log's own where it is
+        lower (the median over the logs).
     """
 
     log_names: tuple[str, ...]
@@ -112,8 +118,9 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     Raises
     ------
     ValueError
-        No logs, a log whose motor count differs from the vehicle's rotor count, a bad
-        rate, or no sample left (every rotor stopped).
+        No logs, a log whose motor count differs from the vehicle's rotor count, a rotor
+        whose tip speed exceeds Mach 1 (:data:`MAX_TIP_MACH`: motor speeds in rpm read as
+        rad/s), a bad rate, or no sample left (every rotor stopped).
     """
     logs = list(logs)
     if not logs:
@@ -124,7 +131,8 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     if not (isinstance(tau, (int, float)) and 0 <= tau <= 1):
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
     n_rot = len(vehicle.rotors)
-    parts = []
+    radii = np.array([r.propeller.radius for r in vehicle.rotors])
+    parts, rates = [], []
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
             raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
@@ -133,8 +141,15 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
                              "vehicle file lists its rotors in the log's motor order)")
         dt = float(np.median(np.diff(log.t)))
         step = max(1, int(round(1.0 / (rate_hz * dt))))
+        rates.append(1.0 / (step * dt))
         wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
             log.angular_velocity, log.t, axis=0)
+        tip = np.nanmax(log.rotor_omega, axis=0) * radii if log.n else np.zeros(n_rot)
+        if np.any(tip > MAX_TIP_MACH * SPEED_OF_SOUND):
+            i = int(np.argmax(tip))
+            raise ValueError(f"{log.name}: motor {i + 1}'s speed reaches {np.nanmax(log.rotor_omega[:, i]):.0f} "
+                             f"rad/s, a tip speed of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: "
+                             "are the log's motor speeds in rpm? They are read in rad/s (docs/flight.md)")
         sl = slice(None, None, step)
         om_full, omdot_full = _lagged(log, tau)
         om = om_full[sl]
@@ -157,7 +172,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         out[key] = None if any(v is None for v in vals) else np.concatenate(vals)
     if out["t"].size == 0:
         raise ValueError("no samples left: every rotor is stopped in every sample")
-    return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(rate_hz), **out)
+    return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)), **out)
 
 
 def _lagged(log: FlightLog, tau: float):

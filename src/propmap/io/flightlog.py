@@ -210,6 +210,9 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
+        if missing and len(head) == 1 and lines[first].count(";") >= len(NEUROBEM_COLUMNS[:29]) - 1:
+            raise FlightLogError(f"{name}: the columns are separated by ';'; a flight-log CSV is separated by ','"
+                                 " (the NeuroBEM layout), with '.' as its decimal point") from None
         if missing:
             raise FlightLogError(f"{name}: header lacks the NeuroBEM column(s) {', '.join(missing[:6])}"
                                  f"{' ...' if len(missing) > 6 else ''}; found {', '.join(head)[:200]}") from None
