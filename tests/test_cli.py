@@ -142,6 +142,16 @@ def test_bad_geometry_file_exits_2(capsys, tmp_path, text, match):
     assert code == 2 and match in err and err.count("\n") == 1
 
 
+@pytest.mark.parametrize("args, match", [
+    (("--airspeed", "-5"), "got -5.0 (the airspeed is a magnitude: a flow up through the disk, descent, is incidence "
+                           "180 deg"),
+    (("--airspeed", "600"), "airspeed must be finite and in [0, 500] m/s, got 600.0\n"),
+])
+def test_a_negative_airspeed_points_to_the_descent_incidence(capsys, args, match):
+    code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", *args)
+    assert code == 2 and match in err and err.count("\n") == 1
+
+
 @pytest.mark.parametrize(
     "text, match",
     [

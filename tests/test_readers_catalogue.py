@@ -106,6 +106,20 @@ def test_geometry_without_diameter_needs_one(tmp_path):
     assert p.n_blades == 3 and p.radius == pytest.approx(4.5 * 0.0254)
 
 
+def test_a_diameter_given_against_the_file_names_is_said(tmp_path):
+    """The given diameter wins, with a warning when the file name says another (within 5%: none)."""
+    import warnings
+
+    f = tmp_path / "my_10x5_geom.txt"
+    f.write_text("r/R c/R beta\n0.2 0.1 30\n0.5 0.12 20\n1.0 0.05 10\n")
+    with pytest.warns(UserWarning, match="diameter 9 in as given, not the 10 in of the file name"):
+        p = read_geometry(f, diameter_in=9.0, n_blades=2)
+    assert p.radius == pytest.approx(4.5 * 0.0254)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_geometry(f, diameter_in=10.1, n_blades=2)
+
+
 def test_unrecognised_geometry_format(tmp_path):
     f = tmp_path / "x.txt"
     f.write_text("hello\n")

@@ -133,6 +133,16 @@ def test_an_unknown_throttle_unit_is_refused(tmp_path):
         read_loads(path)
 
 
+def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):
+    path = tmp_path / "u.csv"
+    path.write_text("rpm,thrust,torque\nRPM,N,N m\n3000,0.9,0.01\n4000,1.6,0.02\n")
+    with pytest.raises(DataError, match=r"line 2: column 'rpm': 'RPM' is not a number \(a row of units"):
+        read_loads(path)
+    path.write_text("rpm,thrust,torque\n3000,0.9,0.01\n4000,x1.6,0.02\n")  # a later bad cell: no such hint
+    with pytest.raises(DataError, match=r"'x1.6' is not a number$"):
+        read_loads(path)
+
+
 def test_electrical_speed_with_pole_pairs(tmp_path, truth_params):
     path = tmp_path / "e.csv"
     truth = write_steps_export(path, params=truth_params, steps=STEPS, electrical_raw=True, pole_pairs=7,

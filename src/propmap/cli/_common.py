@@ -201,7 +201,9 @@ def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = 
                "Python API's rotor_loads gives its loads)" if math.isfinite(rpm) and 0 <= rpm < RPM_MIN else "")
         raise InputError(f"{pre}rpm must be finite and in [{RPM_MIN:g}, {RPM_MAX:.0f}], got {rpm!r}{why}")
     if not (math.isfinite(airspeed) and 0 <= airspeed <= AIRSPEED_MAX):
-        raise InputError(f"{pre}airspeed must be finite and in [0, {AIRSPEED_MAX:g}] m/s, got {airspeed!r}")
+        why = (" (the airspeed is a magnitude: a flow up through the disk, descent, is incidence 180 deg; "
+               "docs/conventions.md)" if math.isfinite(airspeed) and -AIRSPEED_MAX <= airspeed < 0 else "")
+        raise InputError(f"{pre}airspeed must be finite and in [0, {AIRSPEED_MAX:g}] m/s, got {airspeed!r}{why}")
     if not (math.isfinite(incidence_deg) and 0 <= incidence_deg <= 180):
         why = (" (the model is symmetric: give the magnitude of a negative incidence)"
                if math.isfinite(incidence_deg) and -180 <= incidence_deg < 0 else "")

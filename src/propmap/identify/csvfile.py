@@ -185,7 +185,10 @@ class _Csv:
                 try:
                     x = parse_number(number)
                 except ValueError:
-                    raise self.error(f"column {_short(c)}: {_short(cell)} is not a number", line) from None
+                    hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
+                            "'thrust (N)', and remove the row)" if not len(lines) and re.search(r"[a-zA-Z%]", cell)
+                            else "")
+                    raise self.error(f"column {_short(c)}: {_short(cell)} is not a number{hint}", line) from None
                 if not math.isfinite(x):
                     raise self.error(f"column {_short(c)} is {_short(cell)}, not a finite number", line)
                 nums[c].append(x)
