@@ -169,6 +169,27 @@ def test_cli_fit_flight_refuses_before_fitting_naming_the_option(tmp_path, capsy
     assert not (tmp_path / "p.toml").exists()
 
 
+def test_cli_fit_flight_notes_a_rate_above_the_logs(tmp_path, capsys, shared_data):
+    """--rate-hz above the logs' 400 Hz: a note that every sample is taken; 150 Hz (every 3rd sample,
+    133 Hz) and 400 Hz: none. (Each run stops at --moments on a vehicle file without inertia, after
+    the samples are taken.)"""
+    import shutil
+
+    folder = VEHICLE.parent
+    for f in folder.iterdir():
+        shutil.copy(f, tmp_path / f.name)
+    no_inertia = tmp_path / VEHICLE.name
+    no_inertia.write_text("\n".join(line for line in no_inertia.read_text().splitlines()
+                                    if not line.startswith("inertia = [")))
+    log = str(shared_data / "neurobem_flights" / SEGMENTS[1])
+    for rate, noted in (("1000", True), ("150", False), ("400", False)):
+        code = main(["fit", "flight", log, "--vehicle", str(no_inertia), "--out", str(tmp_path / "p.toml"),
+                     "--rate-hz", rate, "--moments"])
+        err = capsys.readouterr().err
+        assert code == 2 and "--moments: the vehicle file gives no inertia" in err, err
+        assert ("a log is sampled at 400 Hz, so every sample of it is taken" in err) == noted, (rate, err)
+
+
 def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shared_data):
     """Fit one log at 1 Hz holding out another; the parameter file (with its [body] table)
     reads back and drives wrench, whose CSV has the documented columns."""

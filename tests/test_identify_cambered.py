@@ -138,6 +138,17 @@ def test_identifiability_holds_parameters_at_a_bound_and_flags_numerically_free_
     idf = _identifiability(("a", "b", "wash_factor"), np.ones(3), tiny, r)
     assert idf.std_error[2] == np.inf and np.all(np.isfinite(idf.std_error[:2]))
     assert any("wash_factor is not determined" in w for w in idf.warnings)
+    # a nearly collinear pair (condition 1e7) beside such a column keeps its large but finite std errors, as
+    # without the column (an absolute 1e-8 share rule on the unscaled J made them infinite), and the rule does not
+    # depend on the parameters' units (x in m or in mm)
+    pair = np.column_stack([jac[:, 0], jac[:, 0] + 1e-7 * jac[:, 1], 1e-17 * jac[:, 2]])
+    idf = _identifiability(("a", "b", "c"), np.ones(3), pair, r)
+    alone = _identifiability(("a", "b"), np.ones(2), pair[:, :2], r)
+    assert idf.std_error[2] == np.inf
+    np.testing.assert_allclose(idf.std_error[:2], alone.std_error, rtol=0.05)  # (the pair's own rounding: ~1%)
+    mm = _identifiability(("a", "b", "c"), np.array([1.0, 1.0, 1e3]), pair * [1, 1, 1e-3], r)
+    np.testing.assert_allclose(mm.std_error[:2], idf.std_error[:2], rtol=0.05)
+    assert mm.std_error[2] == np.inf
 
 
 def test_report_names_parameters_the_data_do_not_determine(apc8x6):

@@ -71,6 +71,11 @@ def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_pa
     data = read_loads(path)
     assert data.n == full.n
     np.testing.assert_array_equal(data.measured["thrust"], full.measured["thrust"])
+    # a row whose speed reads 0 with empty loads: the same
+    zero = ["30.0" if h.startswith("Time") else ("1000" if h.startswith("ESC") else
+                                                 ("0" if "Speed" in h else "")) for h in header]
+    path.write_text(text.rstrip("\n") + "\n" + ",".join(zero) + "\n", encoding="utf-8")
+    assert read_loads(path).n == full.n
     # a running row with an empty thrust cell: refused, naming the column
     rows = text.splitlines()
     k = header.index(next(h for h in header if h.startswith("Thrust")))
@@ -86,12 +91,10 @@ def test_a_negative_rotation_speed_is_its_magnitude_or_refused_where_signs_mix(t
     rotation negative) is taken as its magnitude, with a note; a column of both signs is
     refused naming the line (it was once skipped silently as a stopped motor)."""
     rpm = np.array([3000.0, 4000.0, 5000.0, 6000.0, 7000.0, 8000.0])
-    thrust = 1e-7 * rpm**2
-    torque = 1.5e-9 * rpm**2
 
     def write(name, r):
         path = tmp_path / name
-        rows = "".join(f"{a:g},{b:.6g},{c:.6g}\n" for a, b, c in zip(r, thrust, torque))
+        rows = "".join(f"{a:g},{1e-7 * a**2:.6g},{1.5e-9 * a**2:.6g}\n" for a in r)
         path.write_text("rpm,thrust,torque\n" + rows)
         return path
 
@@ -99,6 +102,8 @@ def test_a_negative_rotation_speed_is_its_magnitude_or_refused_where_signs_mix(t
     neg = read_loads(write("n.csv", -rpm))
     np.testing.assert_array_equal(neg.omega, plain.omega)
     assert any("negated" in n and "'rpm'" in n for n in neg.notes), neg.notes
+    noisy = np.concatenate([[-0.5, 0.0], rpm])  # a stopped motor's encoder noise is 0, not a sign
+    assert read_loads(write("z.csv", noisy)).n == rpm.size
     mixed = rpm.copy()
     mixed[3] *= -1.0
     with pytest.raises(DataError, match=r"line 5: 'rpm' is -6000 rpm where other rows are positive"):
@@ -126,11 +131,17 @@ def test_a_throttle_column_keeps_its_unit(tmp_path, header, scale, label):
         assert any("throttle fraction" in n for n in data.notes), data.notes
 
 
-def test_an_unknown_throttle_unit_is_refused(tmp_path):
+@pytest.mark.parametrize("header", ["Throttle (PWM)", "throttle_pct"])
+def test_a_throttle_unit_it_does_not_know_falls_back_to_the_values(tmp_path, header):
+    """``(PWM)`` is not a unit propmap knows for an ESC signal: the values decide (here percent),
+    with a note naming it; ``throttle_pct`` is a throttle in percent (it was once ignored)."""
     path = tmp_path / "t.csv"
-    path.write_text("Throttle (V),rpm,thrust\n" + "".join(f"{v},{3000 + 100 * v},{0.5 + v / 100}\n" for v in range(8)))
-    with pytest.raises(DataError, match="Throttle \\(V\\).*unknown unit 'V'"):
-        read_loads(path)
+    path.write_text(f"{header},rpm,thrust\n" + "".join(f"{30 + 2 * v},{3000 + 100 * v},{0.5 + v / 100}\n"
+                                                      for v in [*range(8), *range(8)]))
+    data = read_loads(path)
+    assert data.n == 16 and data.group[2] == "step3_34pct"
+    if "PWM" in header:
+        assert any("unit 'PWM' not known" in n and "percent" in n for n in data.notes), data.notes
 
 
 def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):

@@ -150,22 +150,25 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
                          f"got {len(names) - len(held)}")
     samples = _samples(logs, veh, rate_hz)
-    if samples.rate_hz < 0.99 * rate_hz:
-        click.echo(f"propmap: note: --rate-hz {rate_hz:g}: the logs are sampled at {samples.rate_hz:.4g} Hz, so "
-                   "every sample is taken", err=True)
+    log_rate = min(1.0 / float(np.median(np.diff(lg.t))) for lg in logs if lg.n > 1) if any(
+        lg.n > 1 for lg in logs) else math.inf
+    if rate_hz > 1.01 * log_rate:  # (flight_samples takes every k-th sample, k = round(log rate / rate) >= 1)
+        click.echo(f"propmap: note: --rate-hz {rate_hz:g}: a log is sampled at {log_rate:.4g} Hz, so every sample of "
+                   "it is taken", err=True)
     held_idx = [k for k, n in enumerate(names) if n in held]
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    from ..identify.flight import AIRFRAME_NAMES, FLIGHT_FIT
+    from ..identify.flight import AIRFRAME_NAMES, default_flight_names
 
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
-    n_names = len(opts.names) if opts.names else len(FLIGHT_FIT)
+    n_names = len(opts.names) if opts.names else len(default_flight_names(base))
     if 3 * train.n <= n_names:
+        total = sum(lg.n for lg in logs if lg.name not in held)
         raise InputError(f"--rate-hz {rate_hz:g}: {train.n} training sample(s) at that rate cannot identify {n_names} "
-                         f"parameters; raise --rate-hz (the training logs hold "
-                         f"{sum(lg.n for lg in logs if lg.name not in held)} samples)")
+                         + (f"parameters; raise --rate-hz (the training logs hold {total} samples)" if train.n < total
+                            else f"parameters: the training logs hold only {total} samples"))
     res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
     veh_in = veh

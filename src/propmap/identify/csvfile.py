@@ -86,6 +86,21 @@ def _interval(rng) -> str:
 _ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
 
 
+#: cells that mark a missing value (no units-row hint for them)
+MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--")
+
+
+def _zero_or_empty(cell: str) -> bool:
+    """A cell that is empty or reads as the number 0 (a stopped motor's speed)."""
+    cell = cell.strip()
+    if not cell:
+        return True
+    try:
+        return parse_number(cell.replace(",", ".")) == 0.0
+    except ValueError:
+        return False
+
+
 class _Csv:
     """A parsed CSV: the header's columns, and numbers or text of the columns asked for.
 
@@ -156,8 +171,8 @@ class _Csv:
                                                                                                np.ndarray]:
         """(numbers by column, text by column, line of each row) for the named columns; an
         empty cell of a column in ``optional`` is NaN instead of an error, and so is every
-        empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty: a
-        stopped motor's row, e.g. a stand export's last line after the test ended."""
+        empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty or 0:
+        a stopped motor's row, e.g. a stand export's last line after the test ended."""
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -170,8 +185,8 @@ class _Csv:
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
-            stopped = bool(stop) and not any(self.index[c] < len(cells) and cells[self.index[c]].strip()
-                                             for c in stop)
+            stopped = bool(stop) and all(_zero_or_empty(cells[self.index[c]] if self.index[c] < len(cells) else "")
+                                         for c in stop)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
                 if not cell and (c in optional or stopped):
@@ -185,9 +200,9 @@ class _Csv:
                 try:
                     x = parse_number(number)
                 except ValueError:
+                    unit_like = re.search(r"[a-zA-Z%]", cell) and cell.lower() not in MISSING_MARKS
                     hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
-                            "'thrust (N)', and remove the row)" if not len(lines) and re.search(r"[a-zA-Z%]", cell)
-                            else "")
+                            "'thrust (N)', and remove the row)" if not len(lines) and unit_like else "")
                     raise self.error(f"column {_short(c)}: {_short(cell)} is not a number{hint}", line) from None
                 if not math.isfinite(x):
                     raise self.error(f"column {_short(c)} is {_short(cell)}, not a finite number", line)

@@ -187,7 +187,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     for q in speeds:
         v.pop(q)
     v["rpm"] = rpm
-    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative)
+    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative);
+    # a negative reading within 1% of the column's largest magnitude is a stopped motor's noise (0)
+    big = np.nanmax(np.abs(rpm)) if rpm.size and not np.all(np.isnan(rpm)) else 0.0
+    rpm = v["rpm"] = np.where((rpm < 0) & (np.abs(rpm) < 0.01 * big), 0.0, rpm)
     neg = np.nan_to_num(rpm) < 0
     if neg.any():
         if np.any(np.nan_to_num(rpm) > 0):
@@ -215,7 +218,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
              else None)
     form = None
     if "esc" in v:
-        form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"], DataError)
+        form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"])
         if note:
             notes.append(note)
     if form and n and np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n:

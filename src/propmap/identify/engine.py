@@ -205,6 +205,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
     tol = 1e-6 * (ub - lb)
     at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
     idf = _identifiability(names, best.x, jac, residuals, held=at_bound)
+    free = np.array([n not in at_bound for n in names], dtype=bool)
     if "prior" in extra:
         # the posterior: the prior rows were weighted by w = sigma_d * scale (the population's
         # residual level) in the fit; rescaled by sqrt(s2) / w they carry the population
@@ -212,7 +213,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         # cov = s2 (J_d^T J_d + s2 Sigma^-1)^-1 = (J_d^T J_d / s2 + Sigma^-1)^-1 (a direction
         # the data leave free keeps the prior's spread, whatever the data's noise)
         w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
-        s2 = float(residuals @ residuals) / max(residuals.size - len(names), 1)
+        s2 = float(residuals @ residuals) / max(residuals.size - len(names) + len(at_bound), 1)
         prior_rows = best.jac[-k:] * (math.sqrt(s2) / w)
         post = _identifiability(names, best.x, np.vstack([jac, prior_rows]), residuals, dof_rows=residuals.size,
                                 held=at_bound)
@@ -226,19 +227,17 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             (f"the data alone leave {', '.join(held)} (nearly) free: the population prior holds them near the "
              "base set's values (data-only std errors in the report)",) if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
-                      effective_parameters=_effective_parameters(jac, best.jac))
+                      effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
             side, b = ("lower", lo) if abs(v - lo) <= abs(v - hi) else ("upper", hi)
             shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
             if side == "lower" and b == 0.0 and n in ABSENT_AT_ZERO:
-                warns.append(f"{n} ended at 0, its lower bound: the data show none of this effect (held at 0; no "
-                             "uncertainty is given for it)")
+                warns.append(f"{n} ended at 0, its lower bound: the data show none of this effect (held at 0)")
             else:
                 warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
-                             "its value is the bound's (held there; no uncertainty is given for it); suspect the "
-                             "data, the geometry or the model")
+                             "its value is the bound's (held there); suspect the data, the geometry or the model")
     hit = int(best.status) == 0
     if hit:
         limit = getattr(best, "nfev_limit", options.max_nfev)
@@ -417,7 +416,8 @@ def _directions_report(result: FitResult) -> FitResult:
     extra["directions"] = {
         "count": k, "names": list(result.names), "units": {n: "deg" for n in result.names if _is_angle(n)},
         "coefficients": [float(v) for v in c],
-        "std_error": [float(v) for v in post.std_error], "std_error_data_only": [float(v) for v in own.std_error],
+        "std_error": [float(v) if np.isfinite(v) else None for v in post.std_error],
+        "std_error_data_only": [float(v) if np.isfinite(v) else None for v in own.std_error],
         "loadings": [[float(v) for v in B[:, i] * deg] for i in range(k)],
         "eigenvalues": [float(v) for v in d["eigenvalues"]],
         "base": [float(v) for v in d["base"] * deg],

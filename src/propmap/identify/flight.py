@@ -44,14 +44,14 @@ from ..core.solver import Discretization, differentiable, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _params_from, _with_prior
-from .flight_samples import FlightSamples, flight_samples
+from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_names
 from .result import FitResult
 
-__all__ = ["FlightSamples", "flight_samples", "predict_flight", "fit_flight", "fitted_body_drag",
-           "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
+__all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
+           "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
            "fit_baselines", "baseline_force", "speed_band_errors", "cross_validate_flight", "hover_torque_check",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
@@ -67,6 +67,13 @@ CG_BOUND = 0.05
 #: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
 #: rotor thrust (docs/flight.md), far inside the flight data's model error
 FLIGHT_DISCRETIZATION = Discretization(24, 8)
+def default_flight_names(base: SectionParams) -> tuple[str, ...]:
+    """The parameters a flight fit frees by default: :data:`FLIGHT_FIT`, less the cambered
+    section's ``cl_alpha`` and ``alpha_L0_re`` for the paper's model."""
+    return FLIGHT_FIT if isinstance(base, CamberedParams) else tuple(
+        n for n in FLIGHT_FIT if n not in ("cl_alpha", "alpha_L0_re"))
+
+
 def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionParams, *, body: BodyDrag | None = None,
                    air: Air | None = None, discretization: Discretization = FLIGHT_DISCRETIZATION,
                    derivatives=False) -> VehicleWrench:
@@ -221,8 +228,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
     else:
-        names = FLIGHT_FIT if isinstance(base, CamberedParams) else tuple(
-            n for n in FLIGHT_FIT if n not in ("cl_alpha", "alpha_L0_re"))
+        names = default_flight_names(base)
     if 3 * samples.n <= len(names):
         raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters")
     body0 = body or vehicle.body_drag or BodyDrag()

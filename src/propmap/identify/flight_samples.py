@@ -16,8 +16,8 @@ __all__ = ["OMEGA_STOPPED", "FlightSamples", "flight_samples"]
 
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
-#: a log whose rotors' tip speed exceeds this Mach number (at SPEED_OF_SOUND) is refused: no multirotor flies
-#: so, and a log of motor speeds in rpm read as rad/s (9.55x) reaches it
+#: a log whose rotors' tip speed (each motor's 99th percentile) exceeds this Mach number (at SPEED_OF_SOUND) is
+#: refused: no multirotor flies so, and a log of motor speeds in rpm read as rad/s (9.55x) reaches it
 MAX_TIP_MACH = 1.0
 #: the speed of sound of that check [m/s] (ISA sea level)
 SPEED_OF_SOUND = 340.3
@@ -119,8 +119,9 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     ------
     ValueError
         No logs, a log whose motor count differs from the vehicle's rotor count, a rotor
-        whose tip speed exceeds Mach 1 (:data:`MAX_TIP_MACH`: motor speeds in rpm read as
-        rad/s), a bad rate, or no sample left (every rotor stopped).
+        whose tip speed (its speed's 99th percentile) exceeds Mach 1 (:data:`MAX_TIP_MACH`:
+        motor speeds in rpm read as rad/s), a bad rate, or no sample left (every rotor
+        stopped).
     """
     logs = list(logs)
     if not logs:
@@ -144,12 +145,16 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         rates.append(1.0 / (step * dt))
         wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
             log.angular_velocity, log.t, axis=0)
-        tip = np.nanmax(log.rotor_omega, axis=0) * radii if log.n else np.zeros(n_rot)
+        # the 99th percentile of each motor's speed: one telemetry spike does not refuse a log
+        om99 = np.percentile(log.rotor_omega, 99, axis=0) if log.n else np.zeros(n_rot)
+        tip = om99 * radii
         if np.any(tip > MAX_TIP_MACH * SPEED_OF_SOUND):
             i = int(np.argmax(tip))
-            raise ValueError(f"{log.name}: motor {i + 1}'s speed reaches {np.nanmax(log.rotor_omega[:, i]):.0f} "
-                             f"rad/s, a tip speed of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: "
-                             "are the log's motor speeds in rpm? They are read in rad/s (docs/flight.md)")
+            cause = ("are the log's motor speeds in rpm? A CSV or .mat log's are read in rad/s" if log.format != "ulog"
+                     else "check the ESC rpm or the motor map (docs/cli.md) and the vehicle's rotors")
+            raise ValueError(f"{log.name}: motor {i + 1} runs at {om99[i]:.0f} rad/s (99th percentile), a tip speed "
+                             f"of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: {cause} "
+                             "(docs/flight.md)")
         sl = slice(None, None, step)
         om_full, omdot_full = _lagged(log, tau)
         om = om_full[sl]

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core.airfoil import Air, SectionParams
-from .options import AIRFRAME_BOUNDS, BODY_BOUNDS, CAMBERED_SCALE, ROTOR_BOUNDS, _is_angle
+from .options import AIRFRAME_BOUNDS, CAMBERED_SCALE, FLAP_START, ROTOR_BOUNDS, _is_angle
 
 __all__ = ["FitResult", "Identifiability", "POOR_REL_STD"]
 
@@ -30,11 +30,12 @@ class Identifiability:
     exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
     for cambered parameters whose value may be near zero: CAMBERED_SCALE), i.e. its 95%
     interval is wider than about +-20%; "not determined" when the std error is not finite
-    (also where the parameter moves along a direction J leaves numerically free: a singular
-    value below p max(N, p) machine epsilons of the largest). A parameter that ended at a bound
-    (FitResult.at_bound) is held there: the constraint is active, so the linearised covariance
-    does not describe it; its std error and interval are NaN (null in JSON, "-" in the text
-    report) and the others' are those with it fixed.
+    (also where the parameter has a share of at least 1e-3 in a direction that J diag(max(|x|,
+    0.1)) leaves numerically free: a singular value within p max(N, p) machine epsilons of the
+    largest). A parameter that ended at a bound (FitResult.at_bound) is held there: the
+    constraint is active, so the linearised covariance does not describe it; its std error and
+    interval are NaN (null in JSON, "-" in the text report), the others' are those with it
+    fixed, and ``singular_values`` are those of the others' columns.
     ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
     respect to relative parameter changes.
 
@@ -196,7 +197,8 @@ class FitResult:
                 unit = dirs["units"]
                 terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if self.names[j] in unit else ''}"
                                   for j in big)
-                lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd:.3f} ({sdd:.3f}): {terms}")
+                sd, sdd = ("inf" if v is None else f"{v:.3f}" for v in (sd, sdd))  # (None: not determined)
+                lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd} ({sdd}): {terms}")
             lines.append(f"the data determine {idf.effective_parameters:.1f} of the {dirs['count']} free directions "
                          f"(effective number; the other {len(self.names) - dirs['count']} held at the base set)")
         elif idf.effective_parameters is not None:
@@ -234,11 +236,13 @@ class FitResult:
 
 def _scale_of(name: str) -> float:
     """A parameter's natural scale, against which a std error is judged where the estimate is
-    near zero: CAMBERED_SCALE's, else a tenth of its bounds' span (the rotor options, the
-    airframe terms), else 0."""
+    near zero: CAMBERED_SCALE's, FLAP_START for the flap compliance, else a tenth of its bounds'
+    span (the collective, the airframe terms), else 0."""
     if name in CAMBERED_SCALE:
         return CAMBERED_SCALE[name]
-    for bounds in (ROTOR_BOUNDS, AIRFRAME_BOUNDS, BODY_BOUNDS):
+    if name == "flap_compliance":
+        return FLAP_START  # (the typical compliance of small propellers, 0.3-4 rad/(N m))
+    for bounds in (ROTOR_BOUNDS, AIRFRAME_BOUNDS):
         if name in bounds:
             lo, hi = bounds[name]
             return 0.1 * (hi - lo)
@@ -265,17 +269,19 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     N, p = jac.shape
     dof = max((N if dof_rows is None else dof_rows) - p, 1)
     s2 = float(residuals @ residuals) / dof
-    # covariance from the SVD of J with no cut-off: a weak direction gets a large
-    # variance (a pseudo-inverse with a cut-off would report it as perfectly known); a
-    # direction numerically free (its singular value at rounding level) is infinite for every
-    # parameter that moves along it
-    _, sig, Vt = np.linalg.svd(jac, full_matrices=False)
+    # covariance from the SVD of J D, D = diag(max(|x|, 0.1)) (relative changes, so that what is
+    # rounding level does not depend on the parameters' units), with no cut-off: a weak direction
+    # gets a large variance (a pseudo-inverse with a cut-off would report it as perfectly known);
+    # a direction numerically free (its singular value within p max(N, p) epsilons of the largest)
+    # is infinite for every parameter with a share of at least 1e-3 in it
+    d = np.maximum(np.abs(np.asarray(x, float)), 0.1)
+    _, sig, Vt = np.linalg.svd(jac * d, full_matrices=False)
     null = sig <= (sig[0] if sig.size else 0.0) * p * max(N, p) * np.finfo(float).eps
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_sig2 = np.where(null, 0.0, 1.0 / sig**2)
-        cov = s2 * (Vt.T * inv_sig2) @ Vt
+        cov = s2 * np.outer(d, d) * ((Vt.T * inv_sig2) @ Vt)
         std = np.sqrt(np.clip(np.diag(cov), 0, None))
-        std[np.any(np.abs(Vt[null]) > 1e-8, axis=0)] = np.inf
+        std[np.any(np.abs(Vt[null]) >= 1e-3, axis=0)] = np.inf
         if sig.size < p:  # fewer residuals than parameters: the missing directions are free
             std = np.full(p, np.inf)
         std = np.where(np.isnan(std), np.inf, std)

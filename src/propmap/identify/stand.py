@@ -91,6 +91,8 @@ def _split(name: str) -> tuple[str, str | None]:
     low = name.lower()
     if low in _NAMES:
         return low, None
+    if "_" in low and low.rsplit("_", 1)[0] in ("throttle", "esc") and _token(low.rsplit("_", 1)[1]) in _ESC_UNITS:
+        return low.rsplit("_", 1)[0], low.rsplit("_", 1)[1]  # throttle_pct, esc_us
     if "_" in low:
         base, unit = low.rsplit("_", 1)
         if base in _NAMES:
@@ -212,21 +214,21 @@ CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
 _ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct", "pct": "pct", "percent": "pct"}
 
 
-def esc_form(name: str, unit: str | None, esc: np.ndarray, error=ValueError) -> tuple[str, str | None]:
+def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | None]:
     """The form of an ESC-signal or throttle column: ("us" | "pct" | "fraction", note or None).
 
     By its unit where it gives one (us, µs, microseconds; %, pct, percent), else by its values:
     at most 1 a fraction, at most 100 a percentage, else a pulse width in us (the note says which
-    was taken). ``error`` is raised for another unit, naming the column."""
-    if unit is not None:
-        tok = _token(unit)
-        if tok not in _ESC_UNITS:
-            raise error(f"column {name!r}: unknown unit {unit!r} for an ESC signal or throttle (known: us, %)")
+    was taken, and names a unit it does not know, e.g. ``(PWM)`` or ``[0-1]``)."""
+    tok = None if unit is None else _token(unit)
+    if tok in _ESC_UNITS:
         return _ESC_UNITS[tok], None
-    top = float(np.nanmax(np.abs(esc))) if esc.size else 0.0
+    top = float(np.nanmax(np.abs(esc))) if esc.size and not np.all(np.isnan(esc)) else 0.0
     form = "fraction" if top <= 1.0 else ("pct" if top <= 100.0 else "us")
     what = {"fraction": "a throttle fraction (0-1)", "pct": "a throttle in percent", "us": "a pulse width in us"}[form]
-    return form, f"{name!r} read as {what} (its values reach {top:g}; give the unit in its name to say otherwise)"
+    unknown = "" if unit is None else f"unit {unit!r} not known for an ESC signal (us or %): "
+    return form, (f"{name!r}: {unknown}read as {what} by its values (they reach {top:g}; write us or % in its name "
+                  "to say otherwise)")
 
 
 def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:

@@ -134,7 +134,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         if not ok:
             raise GeometryFileError(f"{where}: diameter_in must be finite and > 0 in, got {_clip(str(diameter_in))}")
         named = None if D_name is None else (D_name / 25.4 if unit == "mm" else D_name)
-        if named is not None and abs(float(diameter_in) / named - 1.0) > 0.05:  # (130 mm is sold as 5 in)
+        if named is not None and named > 0 and abs(float(diameter_in) / named - 1.0) > 0.05:  # (130 mm is sold as 5 in)
             warnings.warn(f"{where}: diameter {float(diameter_in):g} in as given, not the {D_name:g} {unit} of the "
                           "file name", UserWarning, stacklevel=3)
     pitch_in = None
