@@ -84,6 +84,47 @@ def test_ulog_motor_map(tmp_path):
     np.testing.assert_allclose(log.rotor_omega[0], 12000 * 2 * math.pi / 60, rtol=1e-6)
 
 
+def test_ulog_quaternion_sign_flips_are_one_attitude(tmp_path):
+    """q and -q alternating (PX4 may log either), the attitude sampled between the others: the
+    same body velocity as without flips (the components were interpolated through 0: NaN)."""
+    hover_ulog(tmp_path / "f.ulg")
+    hover_ulog(tmp_path / "q.ulg", q_flip=True)
+    flipped = read_flight_log(tmp_path / "q.ulg").velocity  # (the topics overlap on one sample fewer)
+    np.testing.assert_allclose(flipped, read_flight_log(tmp_path / "f.ulg").velocity[:len(flipped)], atol=1e-6)
+
+
+def test_ulog_motor_map_takes_the_vehicles_motors_of_more_outputs(tmp_path):
+    hover_ulog(tmp_path / "f.ulg", rpm=12000.0, with_esc=False, n_outputs=8)
+    assert read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0)).n_motors == 8
+    log = read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=4)
+    assert log.n_motors == 4
+    np.testing.assert_allclose(log.rotor_omega, 12000 * 2 * math.pi / 60, rtol=1e-6)
+    with pytest.raises(FlightLogError, match="has 8 outputs; the vehicle has 12 rotors"):
+        read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=12)
+
+
+def test_cli_motor_map_reads_a_ulog_without_esc_status(tmp_path, capsys):
+    """--motor-map A,B on wrench (and fit flight): the error that names it, then the option itself."""
+    from pathlib import Path
+
+    import propmap as pm
+    from propmap.cli.main import main
+
+    vehicle = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    hover_ulog(tmp_path / "f.ulg", rpm=12000.0, with_esc=False, n_outputs=8)
+    out = tmp_path / "w.csv"
+    assert main(["wrench", str(tmp_path / "f.ulg"), "--vehicle", str(vehicle), "--out", str(out)]) == 2
+    assert "(--motor-map a,b)" in capsys.readouterr().err
+    for bad, match in (("10", "two numbers A,B"), ("0,0", "B not 0")):
+        assert main(["wrench", str(tmp_path / "f.ulg"), "--vehicle", str(vehicle), "--out", str(out),
+                     "--motor-map", bad]) == 2
+        assert match in capsys.readouterr().err
+    assert main(["wrench", str(tmp_path / "f.ulg"), "--vehicle", str(vehicle), "--out", str(out),
+                 "--motor-map", "0,10"]) == 0
+    capsys.readouterr()
+    assert out.is_file()
+
+
 def test_ulog_missing_topic_is_named_with_those_found(tmp_path):
     from .ulog_writer import write_ulog
 

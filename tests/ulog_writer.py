@@ -62,10 +62,13 @@ def write_ulog(path, topics: dict, nested: dict | None = None) -> None:
 
 
 def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000.0, with_esc: bool = True,
-               n_motors: int = 4, rpm_scale: float = 1.0) -> dict:
+               n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
-    with output = rpm / 10 when ``with_esc`` is False). Returns the truth in propmap's frame."""
+    with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
+    ``n_motors``, the others at 1000). ``q_flip``: the attitude quaternion's sign alternates
+    from sample to sample (q and -q: the same attitude), its timestamps offset by half a
+    sample. Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -77,7 +80,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
         "vehicle_angular_velocity": ([("uint64_t", "timestamp"), ("uint64_t", "timestamp_sample"),
                                       ("float[3]", "xyz"), ("float[3]", "xyz_derivative")],
                                      [(int(ti), int(ti), 0.1, 0.0, 0.0, 0.0, 0.0, 0.0) for ti in t]),
-        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(int(ti), *q) for ti in t]),
+        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")],
+                             [(int(ti) + (int(5e5 / rate_hz) if q_flip else 0),
+                               *(tuple(-qk for qk in q) if q_flip and i % 2 else q)) for i, ti in enumerate(t)]),
         "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
                                    [(int(ti), 2.0, 0.0, 0.0) for ti in t]),
     }
@@ -92,8 +97,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
             rows.append((int(ti), n_motors, *esc))
         topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[8]", "esc")], rows)
     else:
+        n_out = n_motors if n_outputs is None else n_outputs
+        outputs = [rpm / 10.0] * n_motors + [1000.0] * (n_out - n_motors) + [0.0] * (16 - n_out)
         topics["actuator_outputs"] = ([("uint64_t", "timestamp"), ("uint32_t", "noutputs"), ("float[16]", "output")],
-                                      [(int(ti), n_motors, *([rpm / 10.0] * n_motors + [0.0] * (16 - n_motors)))
-                                       for ti in t])
+                                      [(int(ti), n_out, *outputs) for ti in t])
     write_ulog(path, topics, nested)
     return {"yaw": yaw, "pitch": pitch, "v_ned": (2.0, 0.0, 0.0), "rpm": rpm}

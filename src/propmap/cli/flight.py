@@ -20,13 +20,32 @@ def _vehicle(path: Path):
         raise InputError(f"--vehicle: {exc}") from None
 
 
-def _logs(paths):
+MOTOR_MAP_HELP = ("PX4 ULog without esc_status rpm: the motor speed [rpm] = A + B * actuator_outputs output, given "
+                  "as A,B (the ESC's calibration); the motors are the vehicle's first outputs.")
+
+
+def _motor_map(text: str | None):
+    """``--motor-map A,B`` as two finite numbers, B not 0 (None where not given)."""
+    if text is None:
+        return None
+    try:
+        a, b = (float(x) for x in text.split(","))
+    except ValueError:
+        raise InputError(f"--motor-map must be two numbers A,B (rpm = A + B * output), got {text!r:.60}") from None
+    if not (math.isfinite(a) and math.isfinite(b) and b != 0):
+        raise InputError(f"--motor-map: A and B must be finite and B not 0, got {text!r:.60}")
+    return a, b
+
+
+def _logs(paths, motor_map=None, n_motors=None):
     from ..io.flightlog import FlightLogError, read_flight_log
 
+    if motor_map is not None and any(Path(p).suffix.lower() != ".ulg" for p in paths):
+        raise InputError("--motor-map applies to PX4 .ulg logs only (a NeuroBEM log gives the motor speeds)")
     logs = []
     for p in paths:
         try:
-            logs.append(read_flight_log(p))
+            logs.append(read_flight_log(p, motor_map=motor_map, n_motors=n_motors))
         except FlightLogError as exc:
             raise InputError(f"LOG: {exc}") from None
     return logs
@@ -112,10 +131,11 @@ def _flight_out_files(out: Path) -> list:
               help="Fit the measured moments too (I dw/dt + w x I w; the vehicle file needs its inertia).")
 @click.option("--cross-validate", "cross_validate", is_flag=True,
               help="Also leave each training log out in turn (one fit per log) and report the held-out errors.")
+@click.option("--motor-map", "motor_map", default=None, metavar="A,B", help=MOTOR_MAP_HELP)
 @with_fit_options
 @with_air_options
-def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments, cross_validate, out, as_json,
-                       fit_choice, air_choice):
+def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments, cross_validate, motor_map, out,
+                       as_json, fit_choice, air_choice):
     """Fit the rotor and airframe parameters to flight logs (eqs 16-18 in three axes).
 
     LOG: NeuroBEM .mat or .csv, or PX4 .ulg; the vehicle file lists its rotors in the logs'
@@ -135,7 +155,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
     air = resolve_air(air, air_choice)
-    logs = _logs(log_paths)
+    logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
         raise InputError("LOG: two logs have the same file name; give each log once")
@@ -195,7 +215,12 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     for k in held_idx:
         score(f"held out {names[k]}", samples.log_index == k, names[k], report["held_out"])
     report["baselines"] = baselines
-    report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
+    from ..core.trim import TrimError
+
+    try:
+        report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
+    except TrimError as exc:  # a diagnostic: the fit is written without it
+        report["hover_torque"] = {"unavailable": str(exc)}
     report["body_drag"] = res.extra.get("body_drag")
     if cross_validate:
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
@@ -208,7 +233,14 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
         + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
     ht = report["hover_torque"]
-    if ht:
+    if ht and "unavailable" in ht:
+        from dataclasses import replace
+
+        text.append(f"hover torque check unavailable: the generic reference set cannot make the fitted hover thrust "
+                    f"({ht['unavailable']})")
+        res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
+                                                    "cannot make the fitted set's hover thrust",))
+    elif ht:
         text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
                     f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
                     f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
@@ -276,8 +308,9 @@ def _hover_loads(params, veh, samples, air):
                    "else 'generic'.")
 @click.option("--out", type=PathArg(), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
+@click.option("--motor-map", "motor_map", default=None, metavar="A,B", help=MOTOR_MAP_HELP)
 @with_air_options
-def wrench_command(log_path, vehicle, params_spec, out, as_json, air_choice):
+def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_choice):
     """Predicted body force and moment at every sample of a flight log.
 
     Writes t, Fx, Fy, Fz, Mx, My, Mz (body frame: x forward, y left, z up; N, N m) and, when
@@ -308,7 +341,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, air_choice):
                 veh = shift_centre_of_mass(veh, table.centre_of_mass)
             if table.rotor_interference is not None:
                 veh = replace(veh, rotor_interference=table.rotor_interference)
-    (log,) = _logs([log_path])
+    (log,) = _logs([log_path], _motor_map(motor_map), len(veh.rotors))
     samples = _samples([log], veh, 1e4)  # every sample
     from ..vehicle import vehicle_wrench
 

@@ -305,7 +305,8 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         if rel > POOR_REL_STD:
             poor.append(n)
             shown = f"{math.degrees(std[k]):.3g} deg" if _is_angle(n) else f"{std[k]:.3g}"
-            warns.append(f"{n} is poorly determined: std error {shown} is {100 * rel:.0f}% of its "
+            share = f"{100 * rel:.0f}% of" if rel < 10 else f"{rel:.3g} times"
+            warns.append(f"{n} is poorly determined: std error {shown} is {share} its "
                          f"{'estimate' if abs(x[k]) >= _scale_of(n) else 'natural scale'}")
     for i in range(p):
         for j in range(i + 1, p):

@@ -127,7 +127,8 @@ class FlightLog:
         return float(self.t[-1] - self.t[0])
 
 
-def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, float] | None = None) -> FlightLog:
+def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, float] | None = None,
+                    n_motors: int | None = None) -> FlightLog:
     """Read a flight log (module docstring).
 
     Parameters
@@ -137,7 +138,10 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         Default from the suffix: ``.mat`` and ``.csv`` NeuroBEM, ``.ulg`` ULog.
     motor_map : (a, b), optional
         ULog without ``esc_status`` rpm: motor speed [rpm] = a + b * actuator_outputs
-        output (the ESC's calibration, stated by the user).
+        output (the ESC's calibration, stated by the user; the CLI's ``--motor-map a,b``).
+    n_motors : int, optional
+        With ``motor_map``: the motors are the first ``n_motors`` outputs (default: all the
+        topic's ``noutputs``; a flight controller logs 8 or 16).
 
     Returns
     -------
@@ -148,7 +152,7 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     FlightLogError
         Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
         file, a missing topic or column (named, with those found), fewer than 2 samples,
-        time not strictly increasing, non-finite values, motor speeds outside [0, 1e5]
+        time not strictly increasing, non-finite values (named as such), motor speeds outside [0, 1e5]
         rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
         500 m/s (likely a unit mistake).
     """
@@ -164,7 +168,7 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
     if fmt == "ulog":
-        log = _read_ulog(raw, p, name, motor_map)
+        log = _read_ulog(raw, p, name, motor_map, n_motors)
     elif p.suffix.lower() == ".mat":
         log = _neurobem(_mat_array(raw, name), p, name)
     else:
@@ -287,7 +291,7 @@ def _rotate_ned_to_body(q_wxyz: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.einsum("nji,nj->ni", R, v)
 
 
-def _read_ulog(raw: bytes, p: Path, name: str, motor_map) -> FlightLog:
+def _read_ulog(raw: bytes, p: Path, name: str, motor_map, n_motors: int | None = None) -> FlightLog:
     try:
         from pyulog import ULog
     except ImportError:  # pragma: no cover (a declared dependency)
@@ -306,8 +310,13 @@ def _read_ulog(raw: bytes, p: Path, name: str, motor_map) -> FlightLog:
     if d and all(f"xyz_derivative[{k}]" in d[0].data for k in range(3)):
         deriv = _topic(ulog, "vehicle_angular_velocity", [f"xyz_derivative[{k}]" for k in range(3)], name)[1]
     tq, q = _topic(ulog, "vehicle_attitude", ["q[0]", "q[1]", "q[2]", "q[3]"], name)
+    # q and -q are one attitude: make the sequence continuous before interpolating it component by component (a
+    # sign flip between two samples would otherwise interpolate through 0)
+    if q.shape[0] > 1:
+        flips = np.sum(q[1:] * q[:-1], axis=1) < 0
+        q = q * np.concatenate([[1.0], np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)])[:, None]
     tv, vel = _topic(ulog, "vehicle_local_position", ["vx", "vy", "vz"], name)
-    tm, rpm, order = _ulog_motors(ulog, name, motor_map)
+    tm, rpm, order = _ulog_motors(ulog, name, motor_map, n_motors)
     lo = max(t[0], tw[0], tq[0], tv[0], tm[0])
     hi = min(t[-1], tw[-1], tq[-1], tv[-1], tm[-1])
     keep = (t >= lo) & (t <= hi)
@@ -332,8 +341,8 @@ def _read_ulog(raw: bytes, p: Path, name: str, motor_map) -> FlightLog:
                      rotor_acceleration=None, motor_order=order)
 
 
-def _ulog_motors(ulog, name: str, motor_map):
-    """(t, rpm columns, description) of the motor speeds."""
+def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None = None):
+    """(t, rpm columns, description) of the motor speeds (actuator_outputs: the first ``n_motors``)."""
     if _has(ulog, "esc_status") and motor_map is None:
         d = min((s for s in ulog.data_list if s.name == "esc_status"), key=lambda s: s.multi_id)
         cols = sorted((f for f in d.data if f.startswith("esc[") and f.endswith("].esc_rpm")),
@@ -355,6 +364,10 @@ def _ulog_motors(ulog, name: str, motor_map):
         raise FlightLogError(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
     d = min(d, key=lambda s: s.multi_id)
     n = int(np.max(d.data["noutputs"])) if "noutputs" in d.data else 0
+    if n_motors is not None:
+        if n < n_motors:
+            raise FlightLogError(f"{name}: topic 'actuator_outputs' has {n} outputs; the vehicle has {n_motors} rotors")
+        n = n_motors  # (a flight controller logs 8 or 16 outputs; the motors are the first)
     cols = [f"output[{k}]" for k in range(n) if f"output[{k}]" in d.data]
     if not cols:
         raise FlightLogError(f"{name}: topic 'actuator_outputs' has no outputs")
@@ -381,6 +394,9 @@ def _check(log: FlightLog, name: str) -> None:
         bad = ~np.isfinite(a) | (np.abs(a) > limit)
         if bad.any():
             i = int(np.argmax(bad.any(axis=1)))
+            if not np.all(np.isfinite(a[i])):
+                raise FlightLogError(f"{name}: sample {i + 1}: {what} {a[i].round(6).tolist()} is not finite (a gap "
+                                     "in the log: cut it out, or the sample)")
             raise FlightLogError(f"{name}: sample {i + 1}: {what} {a[i].round(6).tolist()} beyond +-{limit:g} {unit} "
                                  "(a unit or column mistake?)")
     if np.any(log.rotor_omega < 0):
