@@ -196,6 +196,17 @@ def test_a_fitted_files_coverage_is_checked_by_every_later_use(tmp_path):
     assert t.exit_code == 0 and "8000 rpm: the data behind" in t.output and "axial data only" in t.output
 
 
+def test_a_calibrated_sets_rpm_span_is_checked_too():
+    """The shipped calibrated sets know their propeller's UIUC rates (apce_8x6: static runs and
+    sweeps 2534-6713 rpm, UIUC vol. 1, Brandt & Selig 2011): a rate beyond them is said, one
+    inside is not (the warning only fired for fitted files before)."""
+    run = CliRunner().invoke
+    out = run(cli, ["loads", "apce_8x6", "--rpm", "20000"])
+    assert out.exit_code == 0 and "20000 rpm: the data behind calibrated:apce_8x6 span 2534-6713 rpm" in out.output
+    inside = run(cli, ["loads", "apce_8x6", "--rpm", "5000"])
+    assert inside.exit_code == 0 and "rpm: the data behind" not in inside.output
+
+
 def test_wrench_checks_the_coverage_once_per_propeller(tmp_path, shared_data):
     """`propmap wrench` on a NeuroBEM log (Bauersfeld et al. 2021) with a static stand fit: the log's
     incidences and rpm lie beyond the fit's data, said once (the quadrotor's four rotors share

@@ -81,7 +81,8 @@ def coverage(label: str) -> dict | None:
     -------
     dict or None
         ``J_max`` (largest advance ratio in the data) and ``incidence_deg_max`` (0: the
-        UIUC data are axial); None for other labels (Table I, and since 2026-11-23 a
+        UIUC data are axial), and for a calibrated set ``rpm_min`` and ``rpm_max`` (its
+        propeller's UIUC static rates and sweeps' nominal rates); None for other labels (Table I, and since 2026-11-23 a
         parameter file's path: :func:`propmap.io.params_file.set_coverage` reads its table),
         whose data this module does not know.
     """
@@ -89,9 +90,25 @@ def coverage(label: str) -> dict | None:
     if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
         return raw["generic"].get("coverage")
     if label.startswith("calibrated:"):
-        entry = raw["propellers"].get(label.split(":", 1)[1])
-        return None if entry is None else entry.get("coverage")
+        name = label.split(":", 1)[1]
+        entry = raw["propellers"].get(name)
+        if entry is None or entry.get("coverage") is None:
+            return None
+        return {**entry["coverage"], **_rpm_span(name)}
     return None
+
+
+@functools.lru_cache(maxsize=64)
+def _rpm_span(name: str) -> dict:
+    """``rpm_min`` and ``rpm_max`` of a catalogue propeller's bundled UIUC runs (its static runs'
+    rates and its sweeps' nominal ones); empty where it has none."""
+    from .catalogue import catalogue
+
+    entry = catalogue().get(name)
+    if entry is None:
+        return {}
+    rates = [float(r) for run in entry.static_runs() for r in run.rpm] + [float(sw.rpm) for sw in entry.sweeps()]
+    return {"rpm_min": min(rates), "rpm_max": max(rates)} if rates else {}
 
 
 @functools.lru_cache(maxsize=1)
