@@ -142,6 +142,16 @@ def test_bad_geometry_file_exits_2(capsys, tmp_path, text, match):
     assert code == 2 and match in err and err.count("\n") == 1
 
 
+def test_points_csv_writes_no_negative_zero(capsys, tmp_path):
+    """A hover point's descent ratio is 0, written "0" (it was "-0": -V cos(incidence) / v_h)."""
+    src = tmp_path / "p.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n6000,0,0\n")
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(tmp_path / "o.csv"))
+    assert code == 0, err
+    row = list(csv.DictReader((tmp_path / "o.csv").open()))[0]
+    assert row["lambda2"] == "0" and row["drag"] == "0" and not any(v == "-0" for v in row.values())
+
+
 @pytest.mark.parametrize("args, match", [
     (("--airspeed", "-5"), "got -5.0 (the airspeed is a magnitude: a flow up through the disk, descent, is incidence "
                            "180 deg"),

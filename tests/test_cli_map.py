@@ -69,10 +69,11 @@ def test_map_csv_long_form_and_c_header(capsys, tmp_path):
     header = (tmp_path / "m.h").read_text()
     assert code == 0 and "static inline int pm_m_loads(" in header and "static const double pm_m_table[" in header
     assert "; linear interpolation." in header
-    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "cub.h", "--format", "c",
-                       "--c-interpolation", "cubic", "--c-name", "rotor_front")
+    code, out, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "cub.h", "--format", "c",
+                         "--c-interpolation", "cubic", "--c-name", "rotor_front")
     header = (tmp_path / "cub.h").read_text()
     assert code == 0 and "; cubic interpolation." in header and "static inline int rotor_front_loads(" in header
+    assert "this C header interpolates cubic" in out  # (it once said "the C header linear" here)
     assert json.loads((tmp_path / "m.h.json").read_text())["propeller"] == "apce_8x6"
 
 

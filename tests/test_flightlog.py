@@ -135,6 +135,16 @@ def test_ulog_missing_topic_is_named_with_those_found(tmp_path):
         read_flight_log(tmp_path / "f.ulg")
 
 
+def test_ulog_without_accelerations_names_both_topics(tmp_path):
+    from .ulog_writer import write_ulog
+
+    write_ulog(tmp_path / "f.ulg", {"vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")],
+                                                         [(1000, 1.0, 0.0, 0.0, 0.0), (2000, 1.0, 0.0, 0.0, 0.0)])})
+    with pytest.raises(FlightLogError, match="neither topic 'vehicle_acceleration' nor 'sensor_combined' is in the "
+                                             r"log \(topics found: vehicle_attitude\)"):
+        read_flight_log(tmp_path / "f.ulg")
+
+
 def _bad_mat(tmp_path, arr, name="bad.mat"):
     scipy.io.savemat(tmp_path / name, {"x": arr})
     return tmp_path / name

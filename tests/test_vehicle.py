@@ -127,6 +127,8 @@ def test_wrench_inputs_are_checked(quad, generic):
         vehicle_wrench(quad, generic, np.zeros((2, 3)), np.zeros((3, 3)), [800] * 4)
     with pytest.raises(ValueError, match="velocity must be finite"):
         vehicle_wrench(quad, generic, [np.nan, 0, 0], [0, 0, 0], [800] * 4)
+    with pytest.raises(ValueError, match=r"rotor_omega must be >= 0 rad/s .* got -5 for rotor 3 \(sample 2\)"):
+        vehicle_wrench(quad, generic, [0, 0, 0], [0, 0, 0], [[800] * 4, [800, 800, -5, 800]])
 
 
 def test_extended_vehicle_file(tmp_path, generic):

@@ -288,7 +288,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
-                    df[c] = res[c].to_numpy()
+                    a = res[c].to_numpy()
+                    df[c] = a + 0.0 if a.dtype.kind == "f" else a  # (+ 0.0: no "-0" written for a zero)
                 df.to_csv(fh, index=False, header=k == 0, float_format="%.10g", lineterminator="\n")
                 bad += int((res.iloc[:, OUTPUT_KEYS.index("converged")] == "false").sum())  # by place: maybe renamed
                 bar.update(len(df))

@@ -262,7 +262,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         else:
             files = write_map(ds, out, fmt)
         files += _plots(ds, plots)
-    _report(ds, files, elapsed, as_json)
+    _report(ds, files, elapsed, as_json, c_header.c_interpolation if fmt == "c" else None)
 
 
 def _axes(propeller, axes: MapAxes, n_props: int = 1):
@@ -408,7 +408,7 @@ def _plots(ds, plots) -> list:
     return [plot_map_contours(ds, node, path, title=title) for node, path in plots]
 
 
-def _report(ds, files, elapsed: float, as_json: bool) -> None:
+def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | None = None) -> None:
     a = ds.attrs
     if as_json:
         echo_json({"files": [str(f) for f in files], "build_seconds": elapsed,
@@ -430,7 +430,9 @@ def _report(ds, files, elapsed: float, as_json: bool) -> None:
             click.echo(f"  {k:<16}{_pct(a[c + '_rms'], 10)}{_pct(a[c + '_max'], 8)}{_pct(a[c + '_max_flagged'], 13, 2)}"
                        f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 8)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
                        f"   {norm}")
-        click.echo("  (propmap.RotorMap interpolates cubic by default, the C header linear)")
+        click.echo("  (propmap.RotorMap interpolates cubic by default; "
+                   + (f"this C header interpolates {c_interpolation})" if c_interpolation
+                      else "a C header linear unless --c-interpolation cubic)"))
     if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the map's against it
         click.echo(f"the model against measurements ({a.get('params_label', '')}): axial: "
                    f"{a['model_uncertainty_axial']}; off-axis: {a['model_uncertainty_off_axis']}")

@@ -301,6 +301,10 @@ def _read_ulog(raw: bytes, p: Path, name: str, motor_map, n_motors: int | None =
     except Exception as exc:  # pyulog raises many types for a corrupt file
         raise FlightLogError(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
     acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
+    if not _has(ulog, acc_topic):
+        found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
+        raise FlightLogError(f"{name}: no accelerations: neither topic 'vehicle_acceleration' nor 'sensor_combined' "
+                             f"is in the log (topics found: {found or 'none'})")
     acc_fields = ["xyz[0]", "xyz[1]", "xyz[2]"] if acc_topic == "vehicle_acceleration" else [
         "accelerometer_m_s2[0]", "accelerometer_m_s2[1]", "accelerometer_m_s2[2]"]
     t, acc = _topic(ulog, acc_topic, acc_fields, name)

@@ -289,6 +289,10 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
     om = _samples("rotor_omega", rotor_omega, n_rot)
+    if np.any(om < 0):
+        n, i = np.argwhere(om < 0)[0]
+        raise ValueError(f"rotor_omega must be >= 0 rad/s (the rate's magnitude; the sense is the rotor's spin), got "
+                         f"{om[n, i]:g} for rotor {i + 1} (sample {n + 1})")
     wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
     acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
     arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
