@@ -37,7 +37,7 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     Parameters
     ----------
     data : dict
-        File form (module docstring); only its ``[coverage]`` table is read.
+        File form (io/params_file.py's module docstring); only its ``[coverage]`` table is read.
     where : str
         Starts every error message.
 
@@ -70,12 +70,13 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
 
 
 def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
-    """The ``[body]`` table of a file-form dict (module docstring), or None without one.
+    """The ``[body]`` table of a file-form dict (io/params_file.py's module docstring), or None
+    without one.
 
     Parameters
     ----------
     data : dict
-        File form (module docstring); only its ``[body]`` table is read.
+        File form (io/params_file.py's module docstring); only its ``[body]`` table is read.
     where : str
         Starts every error message.
 
