@@ -154,6 +154,31 @@ def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):
         read_loads(path)
 
 
+@pytest.mark.parametrize("header, match", [
+    ("rpm,V,alpha,thrust", "column 'V' looks like an airspeed or advance ratio.*taken as static"),
+    ("rpm,airspeed,AoA (deg),thrust", "column 'AoA \\(deg\\)' looks like a flow angle.*incidence_deg.*axial flow"),
+    ("rpm,J,thrust,torque", "column 'J' looks like an airspeed or advance ratio.*airspeed = J n D"),
+    ("rpm,velocity_ms,thrust", "column 'velocity_ms' looks like an airspeed"),
+    ("rpm,J,CT,CP", "no load column, but coefficient column\\(s\\) 'CT', 'CP'"),
+])
+def test_a_wind_tunnel_files_unread_airspeed_or_angle_is_refused(tmp_path, header, match):
+    """A tunnel file's airspeed or angle under a name propmap does not read: refused, naming it
+    (left out, every point was read as static or axial, and fitted so, without a word)."""
+    path = tmp_path / "w.csv"
+    path.write_text(header + "\n" + "".join(f"{3000 + 500 * k},{k},{k},{1 + k}\n" for k in range(8)))
+    with pytest.raises(DataError, match=match):
+        read_loads(path)
+
+
+def test_a_named_airspeed_and_incidence_beside_other_angles_read(tmp_path):
+    """With 'airspeed' and 'incidence_deg' given, other columns (a tunnel's raw angle too) are ignored."""
+    path = tmp_path / "w.csv"
+    path.write_text("rpm,airspeed,incidence_deg,alpha,thrust\n"
+                    + "".join(f"{3000 + 500 * k},{k},30,60,{1 + k / 10}\n" for k in range(8)))
+    data = read_loads(path)
+    assert data.n == 8 and np.allclose(np.degrees(data.incidence), 30.0)
+
+
 def test_electrical_speed_with_pole_pairs(tmp_path, truth_params):
     path = tmp_path / "e.csv"
     truth = write_steps_export(path, params=truth_params, steps=STEPS, electrical_raw=True, pole_pairs=7,

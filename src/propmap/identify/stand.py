@@ -66,6 +66,15 @@ _NAMES = {
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
 }
+#: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
+#: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
+_AIRSPEED_LIKE = ("v", "velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
+                  "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
+                  "flow velocity", "true airspeed", "tas", "v_ms", "speed_ms")
+_ADVANCE_LIKE = ("j", "advance ratio", "advance_ratio", "mu")
+_ANGLE_LIKE = ("alpha", "aoa", "angle", "angle of attack", "angle_of_attack", "inclination", "tilt", "tilt angle",
+               "disk angle", "disc angle", "yaw angle", "yaw")
+_COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq")
 #: the rotation-speed columns, in the order of preference when several are present
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
@@ -161,8 +170,11 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     error
         A recognised quantity in an unknown unit (naming the column and the known units),
         two columns for one quantity, no rotation-speed column or no load column (listing
-        the columns found and what was looked for), an unknown ``rpm_source``, or a
-        ``pole_pairs`` outside [1, 50].
+        the columns found and what was looked for; naming coefficient columns such as CT, CP
+        where they stand instead), a column that looks like an airspeed, advance ratio or flow
+        angle (``V``, ``velocity``, ``J``, ``alpha``, ``AoA``, ...) where no ``airspeed`` or
+        ``incidence_deg`` column is recognised (the points would be read as static or axial),
+        an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
     """
     cm = ColumnMap()
     for name in names:
@@ -195,8 +207,27 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
     if not speeds:
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}")
+    bases = {name: _split(name)[0] for name in names if name.strip()}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
+        coeff = [n for n, b in bases.items() if b in _COEFFICIENT_NAMES]
+        if coeff:
+            raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
+                        "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
+                        "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
         raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+    # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
+    for quantity, similar, what, read_as, default in (
+            ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
+             "'airspeed' [m/s] (an advance ratio as airspeed = J n D)", "static (airspeed 0)"),
+            ("incidence_deg", _ANGLE_LIKE, "a flow angle",
+             "'incidence_deg', the angle between the airspeed and the rotor axis (0 axial climb, 90 edgewise, 180 "
+             "axial descent)", "in axial flow (incidence 0)")):
+        if quantity in cm.columns:
+            continue
+        like = [n for n, b in bases.items() if b in similar or b.split("_")[0] in similar]
+        if like:
+            raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
+                        f"converted, or remove it; left unread, every point would be taken as {default}")
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")
