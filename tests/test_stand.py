@@ -170,6 +170,15 @@ def test_a_wind_tunnel_files_unread_airspeed_or_angle_is_refused(tmp_path, heade
         read_loads(path)
 
 
+def test_a_power_column_without_torque_is_noted(tmp_path):
+    path = tmp_path / "p.csv"
+    path.write_text("rpm,thrust,Mechanical Power (W)\n" + "".join(f"{3000 + 1000 * k},{0.5 + k / 2},{5 + 10 * k}\n"
+                                                                 for k in range(6)))
+    data = read_loads(path)
+    assert "torque" not in data.measured
+    assert any("'Mechanical Power (W)' is not read" in n and "P / Omega" in n for n in data.notes), data.notes
+
+
 def test_a_named_airspeed_and_incidence_beside_other_angles_read(tmp_path):
     """With 'airspeed' and 'incidence_deg' given, other columns (a tunnel's raw angle too) are ignored."""
     path = tmp_path / "w.csv"
