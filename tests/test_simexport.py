@@ -123,6 +123,34 @@ def test_export_sim_bad_input_exits_2(capsys, tmp_path, monkeypatch, argv, match
     assert list(tmp_path.iterdir()) == []
 
 
+def _vehicle_toml(path, n_rotors: int, prop: str = "apce_8x6") -> str:
+    """A flat multirotor with an inertia, n rotors on a 0.2 m circle, alternating spins."""
+    rotors = "".join(f"\n[[rotors]]\nposition = [{0.2 * math.cos(2 * math.pi * k / n_rotors):.6f}, "
+                     f"{0.2 * math.sin(2 * math.pi * k / n_rotors):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
+                     f"spin = \"{'ccw' if k % 2 == 0 else 'cw'}\"\npropeller = \"{prop}\"\n" for k in range(n_rotors))
+    path.write_text(f"mass = {0.25 * n_rotors}\ninertia = [0.01, 0.01, 0.02]\n{rotors}")
+    return str(path)
+
+
+def test_export_sim_refuses_vehicles_it_cannot_describe(capsys, tmp_path):
+    """RotorPy's Multirotor takes 4 rotors (a hexacopter's quad_params once wrote, exit 0, and
+    failed in RotorPy); a vehicle of another propeller than PROP cannot pin PROP's hover rpm
+    (it once gave the hover of the vehicle's geometry with PROP's parameters: 5070 rpm, where
+    the vehicle hovers at 5387)."""
+    hexa = _vehicle_toml(tmp_path / "hexa.toml", 6)
+    code = main(["export-sim", "apce_8x6", "--target", "rotorpy", "--out", str(tmp_path / "h.py"), "--vehicle", hexa])
+    err = capsys.readouterr().err
+    assert code == 2 and "the vehicle has 6 rotors: RotorPy's Multirotor" in err and err.count("\n") == 1, err
+    quad = _vehicle_toml(tmp_path / "quad.toml", 4)
+    code = main(["export-sim", "apce_10x7", "--target", "rotorpy", "--out", str(tmp_path / "q.py"), "--vehicle", quad])
+    err = capsys.readouterr().err
+    assert code == 2 and "its rotors carry apce_8x6, not apce_10x7" in err and "--hover-rpm" in err, err
+    assert not list(tmp_path.glob("*.py"))
+    code = main(["export-sim", "apce_8x6", "--target", "gz-sim", "--out", str(tmp_path / "h.sdf"), "--vehicle", hexa,
+                 "--points", "300"])
+    assert code == 0, capsys.readouterr().err
+
+
 def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):
     code = main(["export-sim", "apce_8x6", "--target", "multinomial", "--out", str(tmp_path / "g.json"), "--points",
                  "300", "--json"])

@@ -115,9 +115,14 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
         names = sorted({r.propeller.name for r in veh.rotors} - {propeller.name})
+        if names and hover_rpm is None:
+            # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
+            raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {propeller.name}, so it cannot pin "
+                             f"{propeller.name}'s hover rpm: export the vehicle's propeller, or give --hover-rpm")
         if names:
-            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {propeller.name}: the hover rpm is "
-                          f"the vehicle's, the coefficients {propeller.name}'s", UserWarning, stacklevel=1)
+            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {propeller.name}: the export gives "
+                          f"{propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
+                          stacklevel=1)
         if hover_rpm is None:
             hover_from = "--vehicle (its hover rpm)"
             from ..core.solver import SolverError

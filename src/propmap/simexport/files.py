@@ -195,15 +195,22 @@ def check_rotorpy_vehicle(vehicle) -> None:
     Raises
     ------
     ValueError
-        No inertia tensor in the vehicle file, or a rotor whose axis is not body +z
-        (RotorPy assumes every rotor thrusts along +z).
+        Not 4 rotors (RotorPy's Multirotor inverts a 4 x n control allocation matrix: a
+        quadrotor's), no inertia tensor in the vehicle file, or a rotor whose axis is not
+        body +z (RotorPy assumes every rotor thrusts along +z).
     """
+    if len(vehicle.rotors) != 4:
+        raise ValueError(f"the vehicle has {len(vehicle.rotors)} rotors: RotorPy's Multirotor (3.0) inverts a 4 x n "
+                         "control allocation matrix, so its quad_params must describe 4 rotors (gz-sim and "
+                         "gazebo-classic take any number)")
     if vehicle.inertia is None:
-        raise ValueError("the vehicle file has no inertia: RotorPy's quad_params needs Ixx ... Izz")
+        raise ValueError("the vehicle file has no inertia: RotorPy's quad_params needs Ixx, Iyy, Izz (the vehicle "
+                         "file's key inertia = [Ixx, Iyy, Izz] or a 3 x 3 list, kg m^2)")
     for k, r in enumerate(vehicle.rotors):
         if not np.allclose(np.asarray(r.axis, float), (0.0, 0.0, 1.0), atol=1e-9):
-            raise ValueError(f"rotor {k + 1}'s axis {list(np.round(r.axis, 6))} is not body +z: RotorPy's Multirotor "
-                             "assumes every rotor thrusts along +z")
+            axis = ", ".join(f"{float(a):.6g}" for a in r.axis)
+            raise ValueError(f"rotor {k + 1}'s axis [{axis}] is not body +z: RotorPy's Multirotor assumes every rotor "
+                             "thrusts along +z")
 
 
 def _gazebo_text(res: SimExport, head: str) -> str:
