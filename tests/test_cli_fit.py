@@ -117,3 +117,16 @@ def test_fit_loads_csv_with_prop_and_holdout(capsys, tmp_path):
     params = pm.read_params(out)
     assert params.cl1 == pytest.approx(TRUE_X[0], rel=1e-5)
     assert (tmp_path / "c.png").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("extra, match", [
+    (["--base", "gill2017-apc"], "--directions applies to the cambered model; --base gill2017-apc"),
+    (["--no-prior"], "with --no-prior there is none"),
+    (["--fit-params", "cl_alpha,cd_min"], "--fit-params chooses the parameters instead"),
+])
+def test_directions_with_options_that_would_ignore_them_are_refused(capsys, tmp_path, extra, match):
+    """They were warned about ("directions ignored") and the fit ran without them."""
+    code = main(["fit", "loads", "apce_8x6", "--directions", "2", *extra, "--out", str(tmp_path / "p.toml")])
+    err = capsys.readouterr().err
+    assert code == 2 and match in err and err.count("\n") == 1, err
+    assert not (tmp_path / "p.toml").exists()

@@ -361,6 +361,17 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
     train = data.subset(~np.isin(data.group, held))
+    if directions:  # (options that would make them ignored are refused, not warned about)
+        from ..core.airfoil import CamberedParams
+
+        if not isinstance(base, CamberedParams):
+            raise InputError(f"--directions applies to the cambered model; --base {base_label} is the paper's model")
+        if fit_choice.no_prior:
+            raise InputError("--directions frees the parameter directions the data know better than the population "
+                             "prior; with --no-prior there is none: give one of them")
+        if fit_choice.fit_params:
+            raise InputError("--directions frees directions of the default parameters; --fit-params chooses the "
+                             "parameters instead: give one of them")
     options = replace(_options(fit_choice, base, base_label),
                       population=population, directions=directions)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
