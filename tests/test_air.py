@@ -83,6 +83,12 @@ def test_cli_air_options(capsys, argv, rho):
     assert main(["loads", "apce_8x6", "--rpm", "8000", "--json", *argv]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["air"]["rho"] == pytest.approx(rho, rel=1e-4) and out["n_blades"] == 2
+    # trim echoes the air it used too (it did not)
+    assert main(["trim", "apce_8x6", "--thrust", "1", "--rpm", "6000", "--json", *argv]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["air"]["rho"] == pytest.approx(rho, rel=1e-4) and out["n_blades"] == 2
+    assert main(["trim", "apce_8x6", "--thrust", "1", "--rpm", "6000", *argv]) == 0
+    assert f"air: rho {rho:.4g} kg/m^3" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("argv, match", [

@@ -7,7 +7,7 @@ import math
 import click
 
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
+                      air_label, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 
@@ -70,12 +70,16 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
            "state": str(d["state"]), "flags": r.flags()}
     if as_json:
-        echo_json({**out, "propeller": propeller.name, "params": label, "rpm": rpm, "airspeed": airspeed,
-                   "incidence_deg": incidence_deg, "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
+        echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
+                   "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
+                   "incidence_deg": incidence_deg, "air": {"rho": air.rho, "mu": air.mu,
+                                                           "speed_of_sound": air.speed_of_sound},
+                   "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W", "collective_deg": "deg"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
+    click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
     click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
                f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg)")
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
