@@ -98,11 +98,34 @@ def test_body_lift_option_reports_it_does_not_matter_when_absent(quad):
     bl = r.extra["body_lift"]
     assert bl["p_value"] > 0.05 and not bl["matters"]
     assert bl["rms_residual_with"] <= bl["rms_residual_without"] + 1e-12
-    # the F-test selects the model without body lift: its rotor parameters are the result
+    # the F-test selects the model without body lift: its rotor parameters are the result, the plain fit's or,
+    # where the full fit reached a better section optimum, the fit without body lift from there (no worse)
     assert bl["selected"] == "without" and r.names == ("cl1", "cl2", "cd", "alpha0")
     without = fit_level_flight(d, quad, options=FitOptions(M=30.0))
-    np.testing.assert_allclose(r.x, without.x, rtol=1e-12)
+    assert r.cost <= without.cost * (1 + 1e-9)
+    if r.cost >= without.cost * (1 - 1e-9):
+        np.testing.assert_allclose(r.x, without.x, rtol=1e-12)
     assert set(bl["body_terms"]) == {"cl1_body", "cl2_body", "alpha0_body_deg"}
+
+
+def test_body_lift_test_compares_the_body_terms_not_two_section_optima():
+    """The bundled level-flight example with --body-lift: the full fit reaches a better section
+    optimum than the fit without body lift, its body lift ending at 1.7e-9 N. The fit without it
+    is then run again from there, so that the test compares the body terms: the selected model's
+    rms is within 0.5% of the full fit's (it was 6% worse: 0.0497 against 0.0468 N, and the
+    worse fit was written)."""
+    from importlib import resources
+
+    from propmap.identify import read_level_flight
+
+    ex = resources.files("propmap") / "data" / "examples"
+    veh = pm.read_vehicle(ex / "quadrotor.toml")
+    data = read_level_flight(ex / "level_flight_synthetic.csv", veh)
+    r = fit_level_flight(data, veh, options=FitOptions(body_lift=True))
+    bl = r.extra["body_lift"]
+    assert bl["max_abs_over_weight"] < 1e-6 and bl["selected"] == "without"
+    assert bl["rms_residual_without"] <= 1.005 * bl["rms_residual_with"], bl
+    assert np.sqrt(np.mean(r.residuals**2)) == pytest.approx(bl["rms_residual_without"], rel=1e-12)
 
 
 def test_simplified_lift_model_fits_two_parameters(quad, high_pitch):
