@@ -130,3 +130,13 @@ def test_directions_with_options_that_would_ignore_them_are_refused(capsys, tmp_
     err = capsys.readouterr().err
     assert code == 2 and match in err and err.count("\n") == 1, err
     assert not (tmp_path / "p.toml").exists()
+
+
+def test_quantities_not_measured_is_refused_naming_the_option(capsys, tmp_path):
+    src = tmp_path / "q.csv"
+    src.write_text("rpm,thrust,torque\n" + "".join(f"{3000 + 1000 * k},{0.5 + k / 2},{0.01 + k / 100}\n"
+                                                   for k in range(6)))
+    code = main(["fit", "loads", str(src), "--prop", "apce_8x6", "--quantities", "drag", "--out",
+                 str(tmp_path / "p.toml")])
+    err = capsys.readouterr().err
+    assert code == 2 and "--quantities: 'drag' is not measured in SOURCE (measured: thrust, torque)" in err, err

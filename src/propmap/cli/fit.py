@@ -354,6 +354,10 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         if base_spec is None:
             base, base_label = generic_without(entry.name)
     qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
+    missing = [q for q in (qty or ()) if q not in data.measured]
+    if missing:
+        raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
+                         f"{', '.join(data.measured)})")
     groups = set(data.group)
     unknown = [h for h in held if h not in groups]
     if unknown:
