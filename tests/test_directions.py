@@ -126,8 +126,8 @@ def test_static_direction_fit_leaving_the_range_falls_back_to_the_full_fit():
 
 def test_cli_static_fit_reports_directions(tmp_path):
     """`propmap fit loads` on a static CSV: the report names the 3 free directions; --directions 0
-    the full fit; --directions N on rich data frees N; with --fit-params it is ignored with a
-    note; out of range exits 2."""
+    the full fit; --directions N on rich data frees N; with --fit-params it is refused (exit 2,
+    since 2026-11-26: it was ignored with a note); out of range exits 2."""
     csv = _static_csv(tmp_path / "static.csv")
     run = CliRunner().invoke
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--out", str(tmp_path / "p.toml")])
@@ -142,7 +142,7 @@ def test_cli_static_fit_reports_directions(tmp_path):
     assert r.exit_code == 0 and "free: 2 directions" in r.output  # (all of UIUC's data: given, it applies)
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "2", "--fit-params",
                   "alpha_L0,cd_min", "--out", str(tmp_path / "f.toml")])
-    assert r.exit_code == 0 and "WARNING: directions ignored" in r.output
+    assert r.exit_code == 2 and "--fit-params chooses the parameters instead" in r.output
     r = run(cli, ["fit", "loads", str(csv), "--prop", "apce_8x6", "--directions", "9",
                   "--out", str(tmp_path / "x.toml")])
     assert r.exit_code == 2 and "--directions" in r.output
