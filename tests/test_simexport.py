@@ -5,6 +5,7 @@ pinned, coefficients carry their physical signs, bad input is refused."""
 import ast
 import json
 import math
+from pathlib import Path
 import warnings
 import xml.etree.ElementTree as ET
 
@@ -149,6 +150,12 @@ def test_export_sim_refuses_vehicles_it_cannot_describe(capsys, tmp_path):
     code = main(["export-sim", "apce_8x6", "--target", "gz-sim", "--out", str(tmp_path / "h.sdf"), "--vehicle", hexa,
                  "--points", "300"])
     assert code == 0, capsys.readouterr().err
+    # the same name, another geometry: the NeuroBEM vehicle's 3-bladed rotors against the file read with 2 blades
+    ex = Path(pm.__file__).parent / "data" / "examples"
+    code = main(["export-sim", str(ex / "neurobem_5.1x4.8_geom.txt"), "--blades", "2", "--target", "gz-sim",
+                 "--out", str(tmp_path / "n.sdf"), "--vehicle", str(ex / "neurobem_quadrotor.toml")])
+    err = capsys.readouterr().err
+    assert code == 2 and "carry neurobem_5.1x4.8 (another geometry), not neurobem_5.1x4.8" in err, err
 
 
 def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):

@@ -155,10 +155,10 @@ def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):
 
 
 @pytest.mark.parametrize("header, match", [
-    ("rpm,V,alpha,thrust", "column 'V' looks like an airspeed or advance ratio.*taken as static"),
+    ("rpm,V_inf,alpha,thrust", "column 'V_inf' looks like an airspeed or advance ratio.*taken as static"),
     ("rpm,airspeed,AoA (deg),thrust", "column 'AoA \\(deg\\)' looks like a flow angle.*incidence_deg.*axial flow"),
-    ("rpm,J,thrust,torque", "column 'J' looks like an airspeed or advance ratio.*airspeed = J n D"),
-    ("rpm,velocity_ms,thrust", "column 'velocity_ms' looks like an airspeed"),
+    ("rpm,advance ratio,thrust,torque", "column 'advance ratio' looks like an airspeed or advance ratio.*J n D"),
+    ("rpm,Velocity (m/s),thrust", "column 'Velocity \\(m/s\\)' looks like an airspeed"),
     ("rpm,J,CT,CP", "no load column, but coefficient column\\(s\\) 'CT', 'CP'"),
 ])
 def test_a_wind_tunnel_files_unread_airspeed_or_angle_is_refused(tmp_path, header, match):
@@ -177,6 +177,29 @@ def test_a_power_column_without_torque_is_noted(tmp_path):
     data = read_loads(path)
     assert "torque" not in data.measured
     assert any("'Mechanical Power (W)' is not read" in n and "P / Omega" in n for n in data.notes), data.notes
+
+
+@pytest.mark.parametrize("header, noted", [
+    ("Throttle (%),RPM,Thrust (g),V,A,W", "column 'V' is not read; if it is an airspeed"),  # a rig's voltage
+    ("rpm,thrust,J", "column 'J' is not read"),
+    ("rpm,thrust,Tilt (deg)", "column 'Tilt (deg)' is not read; if it is a flow angle"),
+    ("rpm,thrust,V (V),v_bat,yaw_torque,angle_pitch", None),  # a voltage in volts and other names: nothing
+])
+def test_names_that_may_mean_an_airspeed_or_angle_are_noted_not_refused(tmp_path, header, noted):
+    """A rig's bare V (a voltage) or a stand's tilt read as before, with a note where the name
+    might be the airspeed or the angle (the review found them refused)."""
+    cols = header.split(",")
+    path = tmp_path / "r.csv"
+    rows = []
+    for k in range(8):
+        vals = {c: f"{1 + k}" for c in cols}
+        vals[cols[0]] = f"{30 + 5 * k}" if cols[0].startswith("Throttle") else f"{3000 + 500 * k}"
+        rows.append(",".join(vals[c] for c in cols))
+    path.write_text(header + "\n" + "\n".join(rows) + "\n")
+    data = read_loads(path)
+    assert data.n == 8 and np.all(data.airspeed == 0)
+    assert (any(noted in n for n in data.notes) if noted else not any("is not read" in n for n in data.notes)), \
+        data.notes
 
 
 def test_a_named_airspeed_and_incidence_beside_other_angles_read(tmp_path):

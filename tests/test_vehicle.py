@@ -176,3 +176,15 @@ def test_rotor_keys_errors(tmp_path, line, match):
                                      f'spin = "ccw"\npropeller = "apce_8x6"\n{line}\n')
     with pytest.raises(VehicleFileError, match=match):
         read_vehicle(tmp_path / "v.toml")
+
+
+def test_the_documented_vehicle_file_reads(tmp_path):
+    """docs/flight.md's vehicle-file example reads as written (it once gave a geometry file's
+    blades and diameter_m to a catalogue propeller, which read_vehicle refuses)."""
+    text = (Path(__file__).resolve().parents[1] / "docs" / "flight.md").read_text(encoding="utf-8")
+    start = text.index("```toml\n") + len("```toml\n")
+    f = tmp_path / "v.toml"
+    f.write_text(text[start:text.index("```", start)])
+    v = read_vehicle(f)
+    assert v.mass == 0.8 and len(v.rotors) == 1 and v.inertia is not None and v.body_drag.wash_factor == 1.0
+    assert v.rotor_interference == 1.0 and v.rotors[0].spin > 0

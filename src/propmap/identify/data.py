@@ -154,10 +154,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         raise DataError(f"{what}: {p}: {exc}") from None
     notes = list(cm.notes)
     power = [c for c in f.header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
-             in ("power", "shaft power", "mechanical power", "power w")]
+             in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
     if power and "torque" not in cm.columns:
-        notes.append(f"{power[0]!r} is not read: propmap fits the torque, Q = P / Omega (give it as a torque column "
-                     "to fit the drag too)")
+        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
+                     "fit uses the torque too)")
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
     if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")

@@ -246,11 +246,17 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             # (a local minimum of that one): the fit without it again from there, so that the test compares
             # the body terms, not two optima of the section
             again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
-            if float(again.residuals @ again.residuals) < rss0:
-                without = replace(again, nfev=again.nfev + without.nfev, elapsed_s=again.elapsed_s + without.elapsed_s)
-                rss0 = float(without.residuals @ without.residuals)
+            spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
+            # (the fit's own objective decides: with the population prior it is more than the data's residual)
+            def objective(r):
+                return r.cost + r.extra.get("prior", {}).get("cost", 0.0)
+
+            without = replace(again if objective(again) < objective(without) else without, **spent)
+            rss0 = float(without.residuals @ without.residuals)
         dof1 = data.n - len(names)
-        F = ((rss0 - rss1) / 3) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
+        # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
+        # not run again from it; no evidence for body lift then)
+        F = max((rss0 - rss1) / 3, 0.0) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
         from scipy import stats
 
         p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")

@@ -68,13 +68,16 @@ _NAMES = {
 }
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
-_AIRSPEED_LIKE = ("v", "velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
+_AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
                   "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
-                  "flow velocity", "true airspeed", "tas", "v_ms", "speed_ms")
-_ADVANCE_LIKE = ("j", "advance ratio", "advance_ratio", "mu")
-_ANGLE_LIKE = ("alpha", "aoa", "angle", "angle of attack", "angle_of_attack", "inclination", "tilt", "tilt angle",
-               "disk angle", "disc angle", "yaw angle", "yaw")
-_COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq")
+                  "flow velocity", "true airspeed")
+_ADVANCE_LIKE = ("advance ratio", "advance_ratio")
+_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle")
+#: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, a stand's tilt): a note
+_AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
+              "tilt": "incidence_deg", "tilt angle": "incidence_deg", "inclination": "incidence_deg",
+              "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
+_COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: the rotation-speed columns, in the order of preference when several are present
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
@@ -172,8 +175,11 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         two columns for one quantity, no rotation-speed column or no load column (listing
         the columns found and what was looked for; naming coefficient columns such as CT, CP
         where they stand instead), a column that looks like an airspeed, advance ratio or flow
-        angle (``V``, ``velocity``, ``J``, ``alpha``, ``AoA``, ...) where no ``airspeed`` or
-        ``incidence_deg`` column is recognised (the points would be read as static or axial),
+        angle (``velocity``, ``V_inf``, ``advance ratio``, ``alpha``, ``AoA``, ...; one in a unit
+        that is neither a speed's nor an angle's is not) where no ``airspeed`` or
+        ``incidence_deg`` column is recognised (the points would be read as static or axial; a
+        name that may mean something else, ``V``, ``J``, ``mu``, ``angle``, ``tilt``, ``yaw``,
+        gets a note instead),
         an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
     """
     cm = ColumnMap()
@@ -207,7 +213,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
     if not speeds:
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}")
-    bases = {name: _split(name)[0] for name in names if name.strip()}
+    split = {name: _split(name) for name in names if name.strip()}
+    # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
+    bases = {name: b for name, (b, u) in split.items()
+             if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
         coeff = [n for n, b in bases.items() if b in _COEFFICIENT_NAMES]
         if coeff:
@@ -224,10 +233,14 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              "axial descent)", "in axial flow (incidence 0)")):
         if quantity in cm.columns:
             continue
-        like = [n for n, b in bases.items() if b in similar or b.split("_")[0] in similar]
+        like = [n for n, b in bases.items() if b in similar]
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")
+        maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]
+        if maybe:
+            cm.notes.append(f"column {maybe[0]!r} is not read; if it is {what}, name it {read_as} (every point is "
+                            f"taken as {default})")
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")

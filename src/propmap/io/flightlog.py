@@ -367,7 +367,8 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None = None):
     if not d:
         raise FlightLogError(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
     d = min(d, key=lambda s: s.multi_id)
-    n = int(np.max(d.data["noutputs"])) if "noutputs" in d.data else 0
+    n = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
+         else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
     if n_motors is not None:
         if n < n_motors:
             raise FlightLogError(f"{name}: topic 'actuator_outputs' has {n} outputs; the vehicle has {n_motors} rotors")

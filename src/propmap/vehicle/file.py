@@ -23,8 +23,9 @@ Format (body frame: x forward, y left, z up; SI units)::
     axis = [0.0, 0.0, 1.0]          # thrust direction (normalised; length in [1e-6, 1e6])
     spin = "ccw"                    # about +axis (right-hand rule), or "cw"
     propeller = "apce_8x6"          # geometry file or catalogue name
-    blades = 3                      # blade count of a geometry file (1 to 100): a UIUC file needs it
-    diameter_m = 0.13               # optional: diameter of a UIUC geometry file [m], in (0, 100]
+    # blades = 3                    # with a geometry file: its blade count (1 to 100); a UIUC file needs it
+    # diameter_m = 0.13             # with a UIUC geometry file, optional: its diameter [m], in (0, 100]
+    #                               # (both refused with a catalogue propeller, whose geometry fixes them)
     params = "generic"              # optional: this rotor's parameter set (a file, relative to
                                     # the vehicle file, or a named set); default the set in use
     inertia = 9.4e-6                # optional: rotor + motor inertia about the axis [kg m^2],
