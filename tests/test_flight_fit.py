@@ -194,23 +194,26 @@ def test_cli_fit_flight_writes_its_fit_when_the_hover_torque_check_cannot_trim(t
                                                                                monkeypatch):
     """The hover torque check trims the generic set to the fitted hover thrust; where it cannot (a
     fit to a ULog whose thrust the generic blade cannot reach), the fit is still written, the
-    check reported unavailable (it once ended the command with exit 2 after the whole fit)."""
-    import propmap.identify.flight as flight
+    check against the reference reported unavailable and the yaw channel still given (it once
+    ended the command with exit 2 after the whole fit)."""
+    import propmap.core.trim as trim
     from propmap.core.trim import TrimError
 
     def no_trim(*args, **kwargs):
         raise TrimError("no collective in [-20, 30] deg makes thrust=9 N")
 
-    monkeypatch.setattr(flight, "hover_torque_check", no_trim)
+    monkeypatch.setattr(trim, "trim_collective", no_trim)
     out = tmp_path / "p.toml"
     code = main(["fit", "flight", str(shared_data / "neurobem_flights" / SEGMENTS[0]), "--vehicle", str(VEHICLE),
                  "--out", str(out), "--rate-hz", "1", "--fit-params", "collective"])
     err = capsys.readouterr().err
     assert code == 0, err
     assert out.is_file() and "hover torque check is unavailable" in err
-    report = json.loads((tmp_path / "p.report.json").read_text())
-    assert report["flight_report"]["hover_torque"] == {"unavailable": "no collective in [-20, 30] deg makes thrust=9 N"}
-    assert "hover torque check unavailable" in (tmp_path / "p.report.txt").read_text()
+    ht = json.loads((tmp_path / "p.report.json").read_text())["flight_report"]["hover_torque"]
+    assert ht["unavailable"] == "no collective in [-20, 30] deg makes thrust=9 N" and "ratio" not in ht
+    assert ht["torque_model"] > 0 and "yaw_r" in ht  # (the log measures moments: the yaw channel needs no trim)
+    text = (tmp_path / "p.report.txt").read_text()
+    assert "the check against the generic reference set is unavailable" in text and "yaw channel" in text
 
 
 def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shared_data):

@@ -215,12 +215,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     for k in held_idx:
         score(f"held out {names[k]}", samples.log_index == k, names[k], report["held_out"])
     report["baselines"] = baselines
-    from ..core.trim import TrimError
-
-    try:
-        report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
-    except TrimError as exc:  # a diagnostic: the fit is written without it
-        report["hover_torque"] = {"unavailable": str(exc)}
+    report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
     report["body_drag"] = res.extra.get("body_drag")
     if cross_validate:
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
@@ -236,18 +231,19 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if ht and "unavailable" in ht:
         from dataclasses import replace
 
-        text.append(f"hover torque check unavailable: the generic reference set cannot make the fitted hover thrust "
-                    f"({ht['unavailable']})")
+        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
+                    f"{ht['torque_model']:.4f} N m; the check against the generic reference set is unavailable: it "
+                    f"cannot make that thrust ({ht['unavailable']})")
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
     elif ht:
         text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
                     f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
                     f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
-        if "yaw_r" in ht:
-            text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
-                        f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
-                                                 if abs(ht["yaw_r"]) < 0.5 else ""))
+    if ht and "yaw_r" in ht:
+        text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
+                    f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
+                                             if abs(ht["yaw_r"]) < 0.5 else ""))
     if cross_validate:
         cv = report["cross_validation"]
         text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "

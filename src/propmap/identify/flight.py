@@ -429,14 +429,12 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
         ``omega_hover`` [rad/s], ``thrust_hover`` [N], ``torque_model`` and
         ``torque_reference`` [N m], ``ratio``, ``reference_collective_deg`` (the trim),
         and, with measured moments, ``torque_yaw_channel`` [N m], ``k_Q`` and ``yaw_r``.
-
-    Raises
-    ------
-    propmap.TrimError
-        No reference collective in [-20, 30] deg makes the fitted hover thrust.
+        Where no reference collective in [-20, 30] deg makes the fitted hover thrust, the
+        three reference entries are replaced by ``unavailable`` (the trim's message); the yaw
+        channel does not need them.
     """
     air = params.air if air is None else air
-    from ..core.trim import trim_collective
+    from ..core.trim import TrimError, trim_collective
     from ..io.calibration import generic_params
 
     reference = reference or generic_params()
@@ -444,10 +442,14 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
     om_h = float(np.median(samples.rotor_omega[slow]))
     prop = vehicle.rotors[0].propeller
     fit = rotor_loads(prop, params, om_h, 0.0, 0.0, air=air, discretization=discretization)
-    ref = trim_collective(prop, reference, float(fit.thrust), om_h, air=air, discretization=discretization)
-    out = {"omega_hover": om_h, "thrust_hover": float(fit.thrust), "torque_model": float(fit.torque),
-           "torque_reference": float(ref.loads.torque), "ratio": float(fit.torque) / float(ref.loads.torque),
-           "reference_collective_deg": math.degrees(float(ref.collective))}
+    out = {"omega_hover": om_h, "thrust_hover": float(fit.thrust), "torque_model": float(fit.torque)}
+    try:
+        ref = trim_collective(prop, reference, float(fit.thrust), om_h, air=air, discretization=discretization)
+    except TrimError as exc:  # the reference cannot make that thrust: the check against it is unavailable
+        out["unavailable"] = str(exc)
+    else:
+        out.update(torque_reference=float(ref.loads.torque), ratio=float(fit.torque) / float(ref.loads.torque),
+                   reference_collective_deg=math.degrees(float(ref.collective)))
     if samples.moment is not None:
         spins = np.array([r.spin for r in vehicle.rotors])
         J = np.array([r.inertia or 0.0 for r in vehicle.rotors])
