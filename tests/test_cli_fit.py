@@ -140,3 +140,25 @@ def test_quantities_not_measured_is_refused_naming_the_option(capsys, tmp_path):
                  str(tmp_path / "p.toml")])
     err = capsys.readouterr().err
     assert code == 2 and "--quantities: 'drag' is not measured in SOURCE (measured: thrust, torque)" in err, err
+
+
+def test_a_fit_to_descent_data_writes_a_file_that_reads_back(tmp_path, capsys):
+    """Data all in descent (incidence 150 deg): the [coverage] table's J_max, the largest climb
+    advance ratio, is 0 (it was the negative V cos(incidence) / (n D), which read_params refuses)."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = []
+    for rpm in (4000.0, 5000.0, 6000.0):
+        for V in (2.0, 4.0, 6.0):
+            r = pm.rotor_loads(prop, pm.default_params("apce_8x6"), rpm * 3.141592653589793 / 30, V,
+                               2.6179938779914944)
+            rows.append(f"{rpm},{V},150,{float(r.thrust):.6g},{float(r.torque):.6g}")
+    src = tmp_path / "descent.csv"
+    src.write_text("rpm,airspeed,incidence_deg,thrust,torque\n" + "\n".join(rows) + "\n")
+    out = tmp_path / "d.toml"
+    assert main(["fit", "loads", str(src), "--prop", "apce_8x6", "--out", str(out)]) == 0, capsys.readouterr().err
+    capsys.readouterr()
+    from propmap.io.params_file import read_coverage
+
+    cov = read_coverage(out)
+    assert cov["J_max"] == 0.0 and cov["incidence_deg_max"] == 150.0
+    pm.read_params(out)

@@ -115,7 +115,8 @@ def _coverage(data, prop) -> dict:
     import numpy as np
 
     n = data.omega / (2 * math.pi)
-    return {"J_max": float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter))),
+    # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
+    return {"J_max": max(0.0, float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter)))),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
             "airspeed_max": float(np.max(data.airspeed))}
