@@ -145,6 +145,9 @@ def test_propeller_validation_errors():
         pm.Propeller("x", 0.1, 0, [0.01, 0.1], [0.01, 0.01], [0.3, 0.2])
     with pytest.raises(ValueError, match="chord"):
         pm.Propeller("x", 0.1, 2, [0.01, 0.1], [0.01, -0.01], [0.3, 0.2])
+    with pytest.raises(ValueError, match="chord must be > 0 m at some station"):  # (gave T = Q = 0 silently)
+        pm.Propeller("x", 0.1, 2, [0.01, 0.1], [0.0, 0.0], [0.3, 0.2])
+    pm.Propeller("x", 0.1, 2, [0.01, 0.1], [0.01, 0.0], [0.3, 0.2])  # a zero chord at the tip is a blade
     with pytest.raises(ValueError, match="equal lengths"):
         pm.Propeller("x", 0.1, 2, [0.01, 0.1], [0.01], [0.3, 0.2])
 

@@ -76,7 +76,7 @@ class Propeller:
         Naming the argument: a value of the wrong type (a bool, a string; a
         non-integer ``n_blades``), non-finite values, ``radius <= 0``, ``n_blades < 1``,
         a non-finite ``pitch``, arrays of different length or fewer than 2 stations, radii not strictly
-        increasing or outside (0, radius], negative chord, blade angle outside
+        increasing or outside (0, radius], negative chord or zero chord at every station, blade angle outside
         [-90, 90] deg.
 
     Notes
@@ -140,6 +140,8 @@ class Propeller:
             raise ValueError(f"r must lie in (0, radius={radius:.6g}] m, got [{r[0]:.6g}, {r[-1]:.6g}]")
         if np.any(chord < 0):
             raise ValueError("chord must be >= 0 m at every station")
+        if not np.any(chord > 0):
+            raise ValueError("chord must be > 0 m at some station: a blade of zero chord everywhere has no loads")
         if np.any(np.abs(theta) > math.pi / 2 + 1e-12):
             raise ValueError("theta must be in [-90, 90] deg at every station")
         object.__setattr__(self, "radius", radius)
