@@ -648,3 +648,25 @@ def test_the_in_plane_force_is_read_by_its_wind_tunnel_names(tmp_path, header):
     with pytest.raises(DataError, match="both give drag"):
         read_loads(_rows_csv(tmp_path / "two.csv", ["rpm", "thrust", "drag", header], [r[:1] + r[3:5] + r[4:5]
                                                                                          for r in rows]))
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"measured": {"thrustt": [1.0] * 3}}, "unknown quantity 'thrustt'"),
+    ({"measured": {"thrust": [1.0] * 2}}, r"measured\['thrust'\] must have the N = 3 points"),
+    ({"omega": [500.0, float("nan"), 700.0]}, r"LoadData.omega must be finite \(point 1"),
+    ({"omega": [0.0, 600.0, 700.0]}, "omega must be > 0 rad/s"),
+    ({"incidence": [0.0, 30.0, 60.0]}, r"incidence must be in \[0, pi\] rad \(radians, not degrees\)"),
+    ({"airspeed": [0.0, 1.0]}, "airspeed must have the N = 3 points"),
+    ({"measured": {}}, "non-empty dict"),
+])
+def test_load_data_built_by_hand_is_checked_naming_the_field(change, match):
+    """A LoadData built in Python (not by a reader) is checked: it gave a bare KeyError, NumPy's
+    broadcast error or a message naming the wrong input."""
+    kw = dict(omega=[500.0, 600.0, 700.0], airspeed=[0.0, 0.0, 0.0], incidence=[0.0, 0.0, 0.0],
+              measured={"thrust": [1.0, 1.4, 2.0]}, group=["a", "a", "a"])
+    kw.update(change)
+    with pytest.raises(ValueError, match=match):
+        LoadData(**kw)
+    ok = LoadData(omega=[500, 600, 700], airspeed=[0, 0, 0], incidence=[0, 0, 0], measured={"thrust": [1, 1.4, 2]},
+                  group=["a"] * 3)  # plain lists of ints: arrays of floats
+    assert ok.omega.dtype == float and ok.n == 3 and ok.subset([True, False, True]).n == 2
