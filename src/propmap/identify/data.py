@@ -51,7 +51,8 @@ class LoadData:
     ------
     ValueError
         Built by hand with an array that is not numbers of shape (N,) (the length of
-        ``omega``), a non-finite value, ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
+        ``omega``), a non-finite value (in ``measured`` NaN marks a load not measured at a
+        point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
         thrust, drag, torque; the message names the field. (The readers check the signs and
         the ranges of the loads themselves.)
@@ -67,14 +68,14 @@ class LoadData:
     notes: tuple = ()
 
     def __post_init__(self):
-        def floats(name, value):
+        def floats(name, value, nan=False):
             try:
                 a = np.asarray(value, dtype=float)
             except (TypeError, ValueError):
                 raise ValueError(f"LoadData.{name} must be numbers, got {value!r:.60}") from None
             if a.ndim != 1:
                 raise ValueError(f"LoadData.{name} must have shape (N,), got {a.shape}")
-            if not np.all(np.isfinite(a)):
+            if not np.all(np.isfinite(a) | (nan & np.isnan(a))):
                 raise ValueError(f"LoadData.{name} must be finite (point {int(np.argmax(~np.isfinite(a)))} is not)")
             return a
 
@@ -99,7 +100,7 @@ class LoadData:
             raise ValueError(f"LoadData.measured: unknown quantity {bad[0]!r} (valid: {', '.join(LOAD_KEYS)})")
         measured = {}
         for k, v in self.measured.items():
-            a = floats(f"measured[{k!r}]", v)
+            a = floats(f"measured[{k!r}]", v, nan=True)  # (NaN: not measured there; the fits refuse it)
             if a.size != n:
                 raise ValueError(f"LoadData.measured[{k!r}] must have the N = {n} points of omega, got {a.size}")
             measured[k] = a
