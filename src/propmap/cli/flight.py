@@ -170,8 +170,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
                          f"got {len(names) - len(held)}")
     samples = _samples(logs, veh, rate_hz)
-    log_rate = min(1.0 / float(np.median(np.diff(lg.t))) for lg in logs if lg.n > 1) if any(
-        lg.n > 1 for lg in logs) else math.inf
+    log_rate = min(lg.rate_hz for lg in logs)
     if rate_hz > 1.01 * log_rate:  # (flight_samples takes every k-th sample, k = round(log rate / rate) >= 1)
         click.echo(f"propmap: note: --rate-hz {rate_hz:g}: a log is sampled at {log_rate:.4g} Hz, so every sample of "
                    "it is taken", err=True)

@@ -140,9 +140,8 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         if log.n_motors != n_rot:
             raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
                              "vehicle file lists its rotors in the log's motor order)")
-        dt = float(np.median(np.diff(log.t)))
-        step = max(1, int(round(1.0 / (rate_hz * dt))))
-        rates.append(1.0 / (step * dt))
+        step = max(1, int(round(log.rate_hz / rate_hz)))
+        rates.append(log.rate_hz / step)
         wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
             log.angular_velocity, log.t, axis=0)
         # the 99th percentile of each motor's speed: one telemetry spike does not refuse a log

@@ -126,6 +126,11 @@ class FlightLog:
         """t[-1] - t[0] [s]."""
         return float(self.t[-1] - self.t[0])
 
+    @property
+    def rate_hz(self) -> float:
+        """The sampling rate, 1 / the median time step [Hz] (a log has at least 2 samples)."""
+        return 1.0 / float(np.median(np.diff(self.t)))
+
 
 def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, float] | None = None,
                     n_motors: int | None = None) -> FlightLog:
