@@ -248,10 +248,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
             spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
             # (the fit's own objective decides: with the population prior it is more than the data's residual)
-            def objective(r):
-                return r.cost + r.extra.get("prior", {}).get("cost", 0.0)
-
-            without = replace(again if objective(again) < objective(without) else without, **spent)
+            better = _objective(again) < _objective(without)
+            without = replace(again if better else without, **spent)
             rss0 = float(without.residuals @ without.residuals)
         dof1 = data.n - len(names)
         # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
@@ -274,6 +272,11 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
                            nfev=without.nfev + nfev, elapsed_s=without.elapsed_s + elapsed)
         result.extra["body_lift"] = {**verdict, "selected": "with"}
     return result
+
+
+def _objective(result: FitResult) -> float:
+    """The objective a fit minimised: 0.5 |residuals|^2 plus the population prior's term, if any."""
+    return result.cost + result.extra.get("prior", {}).get("cost", 0.0)
 
 
 def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None):
