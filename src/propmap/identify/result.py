@@ -292,8 +292,7 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         corr = cov / np.outer(std, std)
     corr = np.where(np.isfinite(corr), corr, 0.0)
     np.fill_diagonal(corr, 1.0)
-    scale = np.maximum(np.abs(x), 0.1)
-    sv = np.linalg.svd(jac * scale, compute_uv=False)
+    sv = sig  # (of J diag(max(|x|, 0.1)), above)
     poor, warns = [], []
     for k, n in enumerate(names):
         if not np.isfinite(std[k]):
