@@ -1,5 +1,5 @@
 """The identification CSV files (level flight, loads): parsing, checks and errors
-(identify/data.py and identify/level_flight.py read them).
+(identify/loads_csv.py and identify/level_flight.py read them).
 
 Readers raise :class:`DataError` (a ValueError) with a one-line message naming the file,
 the line and the column, and for a value out of range the valid range; no other exception

@@ -1,0 +1,109 @@
+"""Direct load measurements of one propeller (:class:`LoadData`): the data kind that
+``fit loads`` identifies from, written by the thrust-stand reader (identify/loads_csv.py) and the
+catalogue's and UIUC files' readers (identify/data.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class LoadData:
+    """Direct load measurements of one propeller.
+
+    Attributes
+    ----------
+    omega, airspeed, incidence : ndarray, shape (N,)
+        Operating points [rad/s, m/s, rad].
+    measured : dict[str, ndarray]
+        Any non-empty subset of ``thrust`` [N], ``drag`` [N], ``torque`` [N m], each shape (N,).
+    group : ndarray of str, shape (N,)
+        Run label of each point (for hold-out).
+    source : str
+    collective : ndarray, shape (N,), or None
+        Blade-angle offset of each point [rad] (a collective sweep of a variable-pitch
+        rotor); None: none.
+    notes : tuple of str
+        What the reader decided (units converted, rows skipped, steps averaged, a sign
+        turned), for the user.
+
+    Raises
+    ------
+    ValueError
+        Built by hand with an array that is not numbers of shape (N,) (the length of
+        ``omega``), a non-finite value (in ``measured`` NaN marks a load not measured at a
+        point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
+        ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
+        thrust, drag, torque; the message names the field. (The readers check the signs and
+        the ranges of the loads themselves.)
+    """
+
+    omega: np.ndarray
+    airspeed: np.ndarray
+    incidence: np.ndarray
+    measured: dict
+    group: np.ndarray
+    source: str = ""
+    collective: np.ndarray | None = None
+    notes: tuple = ()
+
+    def __post_init__(self):
+        def floats(name, value, nan=False):
+            try:
+                a = np.asarray(value, dtype=float)
+            except (TypeError, ValueError):
+                raise ValueError(f"LoadData.{name} must be numbers, got {value!r:.60}") from None
+            if a.ndim != 1:
+                raise ValueError(f"LoadData.{name} must have shape (N,), got {a.shape}")
+            if not np.all(np.isfinite(a) | (nan & np.isnan(a))):
+                raise ValueError(f"LoadData.{name} must be finite (point {int(np.argmax(~np.isfinite(a)))} is not)")
+            return a
+
+        omega = floats("omega", self.omega)
+        n = omega.size
+        fields_ = {"omega": omega}
+        for name in ("airspeed", "incidence") + (("collective",) if self.collective is not None else ()):
+            a = floats(name, getattr(self, name))
+            if a.size != n:
+                raise ValueError(f"LoadData.{name} must have the N = {n} points of omega, got {a.size}")
+            fields_[name] = a
+        if np.any(omega <= 0):
+            raise ValueError(f"LoadData.omega must be > 0 rad/s, got {omega[omega <= 0][0]:g}")
+        if np.any(fields_["airspeed"] < 0):
+            raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
+        if np.any((fields_["incidence"] < 0) | (fields_["incidence"] > np.pi)):
+            raise ValueError("LoadData.incidence must be in [0, pi] rad (radians, not degrees)")
+        if not isinstance(self.measured, dict) or not self.measured:
+            raise ValueError("LoadData.measured must be a non-empty dict of thrust, drag or torque arrays")
+        bad = [k for k in self.measured if k not in LOAD_KEYS]
+        if bad:
+            raise ValueError(f"LoadData.measured: unknown quantity {bad[0]!r} (valid: {', '.join(LOAD_KEYS)})")
+        measured = {}
+        for k, v in self.measured.items():
+            a = floats(f"measured[{k!r}]", v, nan=True)  # (NaN: not measured there; the fits refuse it)
+            if a.size != n:
+                raise ValueError(f"LoadData.measured[{k!r}] must have the N = {n} points of omega, got {a.size}")
+            measured[k] = a
+        group = np.asarray(self.group, dtype=object)
+        if group.shape != (n,):
+            raise ValueError(f"LoadData.group must have shape ({n},), got {group.shape}")
+        for name, a in {**fields_, "measured": measured, "group": group}.items():
+            object.__setattr__(self, name, a)
+
+    @property
+    def n(self) -> int:
+        """Number of points N."""
+        return self.omega.size
+
+    def subset(self, mask) -> "LoadData":
+        """The points where ``mask`` is True."""
+        mask = np.asarray(mask, bool)
+        return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
+                        {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
+                        None if self.collective is None else self.collective[mask], self.notes)
+
+
+LOAD_KEYS = ("thrust", "drag", "torque")

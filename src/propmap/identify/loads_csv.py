@@ -1,0 +1,285 @@
+"""The reader of load measurements as written: a wind-tunnel or thrust-stand CSV
+(:func:`read_loads`), with its sign rules for the thrust and the torque.
+
+It raises :class:`DataError` (a ValueError) with a one-line message naming the file, the line
+and the column, and for a value out of range the valid range; no other exception escapes for
+any file content, and the file is not modified. The CSV rules (size, encoding, quoting,
+column names, number syntax) and the valid ranges of every column are in identify/csvfile.py,
+the thrust stands' exports in identify/stand.py.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .csvfile import DataError, RANGES, RPM, _Csv
+from .load_data import LOAD_KEYS, LoadData
+
+
+#: a point at an airspeed up to this [m/s] is static for the thrust's sign rule (:func:`read_loads`)
+STATIC_AIRSPEED = 0.3
+
+
+def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole_pairs: int | None = None) -> LoadData:
+    """Read load measurements: a wind-tunnel or thrust-stand CSV, as written.
+
+    Columns: a rotation speed and at least one of thrust, torque, drag, each named with or
+    without a unit (``rpm``, ``thrust``, ``torque`` in rpm, N, N m; or ``thrust_kgf``,
+    ``Thrust (gf)``, ``torque_Nmm``, ``Torque (N·m)``, ``speed_rad_s``; the units of
+    :mod:`propmap.identify.stand`); ``airspeed`` [m/s] and ``incidence_deg`` (both default 0:
+    a static thrust stand); optional ``collective_deg`` (blade-angle offset of a
+    variable-pitch rotor, in [-45, 45] deg: a hover collective sweep is a valid data set)
+    and ``group`` (run label). The exports of RCbenchmark / Tyto thrust stands (Series
+    1520, 1580, 1585, 1780) are read as written: the optical or electrical motor speed (the
+    choice stated), a "steps" test averaged to one point per ESC step (its settling rows
+    dropped; each step a group for holding out), rows of a stopped motor (rpm 0, or an empty
+    rotation speed, whose load cells may then be empty too) skipped, a rotation speed that is
+    negative in every running row taken as its magnitude, and a stand's reaction torque
+    (negative) turned to the propeller's; an ESC signal as a pulse width [us] or a throttle
+    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.stand.esc_form`);
+    every decision is in ``LoadData.notes``. Format and valid ranges in the module docstring.
+
+    Signs, decided after the ESC steps are averaged, on the points whose value is larger
+    than 2% of the column's largest magnitude (those below are noise about zero), each
+    decision a note: a torque negative at every static point is negated (the stand's
+    reaction torque; without a static point: negative at every point nearest to static, the
+    smallest axial advance |V cos(incidence)| / rpm, where the thrust, if measured, is
+    positive); a torque of both signs there is refused; a torque of the other sign elsewhere
+    is read as written (windmilling, noted), unless the thrust is positive there in climb or
+    edgewise flow (a propeller that pulls takes power: refused). A thrust negative at every
+    static point
+    (airspeed at most :data:`STATIC_AIRSPEED`, no negative ``collective_deg``) is negated,
+    whatever its sign at the other points: at a standstill a propeller pulls, so it is the
+    sign of a pusher mount or of a stand mounted the other way round (propmap's thrust is
+    positive in the direction the propeller pulls, opposite to its slipstream); a pusher's
+    sweep past its zero-thrust advance ratio, written positive there, is negated as a whole.
+    Any other thrust is read as written: beyond its zero-thrust advance ratio a propeller
+    makes negative thrust, at some points of a sweep or at all of them (UIUC's apcsf_11x3.8
+    run kt0545); a run without a static point keeps its sign (:func:`sanity_check` names a
+    pusher's).
+
+    Parameters
+    ----------
+    path : str or Path
+    min_points : int
+    rpm_source : {"optical", "electrical"}, optional
+        Which speed column of a stand export to use (default: optical where present).
+    pole_pairs : int, optional
+        Divide an electrical speed by the motor's pole pairs (an export of raw electrical rpm).
+
+    Returns
+    -------
+    LoadData
+
+    Raises
+    ------
+    DataError
+        Not a readable regular file (a directory, a device, over 200 MiB or 10,000,000
+        lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
+        header), no rotation-speed or no load column (the message lists the columns found
+        and what was looked for), a unit it does not know, two columns for one quantity, an
+        empty (except a rotation speed: an empty one is a stopped motor, skipped),
+        non-numeric or non-finite value, a rotation speed negative in some rows and positive
+        in others, a value out of range (rpm outside
+        (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
+        incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
+        |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
+        at the static points (or those nearest to static), a negative torque where the
+        thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
+        identical; the message names the file, the line and the column.
+    """
+    from .stand import ESC_TOL, esc_form, map_columns, stand_points
+
+    what = "load data"
+    f = _Csv(path, what)
+    p = f.name
+    try:
+        cm = map_columns(f.header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
+    except DataError as exc:
+        raise DataError(f"{what}: {p}: {exc}") from None
+    notes = list(cm.notes)
+    power = [c for c in f.header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
+             in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
+    if power and "torque" not in cm.columns:
+        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
+                     "fit uses the torque too)")
+    speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
+    if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
+        raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")
+    keys = [k for k in LOAD_KEYS if k in cm.columns]
+    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time")
+                             if q in cm.columns), *keys]
+    low = {q: cm.column(q).lower() for q in quantities}
+    optional = {low[q] for q in speeds} | ({low["time"]} if "time" in low else set())
+    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional,
+                               stop={low[q] for q in speeds})
+    v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
+    group_col = cm.column("group")
+    # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
+    use = speeds[0]
+    if use != "rpm":
+        if rpm_source is not None:
+            use = f"rpm_{rpm_source}"
+        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.abs(np.nan_to_num(v["rpm_optical"]))) > 0:
+            use = "rpm_optical"
+        elif "rpm_electrical" in v:
+            use = "rpm_electrical"
+        notes.append(f"rotation speed from {cm.column(use)!r}" + (
+            " (the optical probe)" if use == "rpm_optical" else
+            (f", divided by {pole_pairs} pole pairs" if pole_pairs else
+             ", as the stand computed it from its motor-pole setting; if the export is raw electrical rpm, give "
+             "the pole pairs (--pole-pairs)")))
+    if pole_pairs and use != "rpm_electrical":
+        raise DataError(f"{what}: {p}: pole_pairs (--pole-pairs) divides an electrical speed, but the rotation "
+                        f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
+                        "to use the electrical one)")
+    rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
+    for q in speeds:
+        v.pop(q)
+    v["rpm"] = rpm
+    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative);
+    # a negative reading within 1% of the column's largest magnitude is a stopped motor's noise (0)
+    big = np.nanmax(np.abs(rpm)) if rpm.size and not np.all(np.isnan(rpm)) else 0.0
+    rpm = v["rpm"] = np.where((rpm < 0) & (np.abs(rpm) < 0.01 * big), 0.0, rpm)
+    neg = np.nan_to_num(rpm) < 0
+    if neg.any():
+        if np.any(np.nan_to_num(rpm) > 0):
+            k = int(np.argmax(neg))
+            raise DataError(f"{what}: {p}, line {lines[k]}: {cm.column(use)!r} is {rpm[k]:g} rpm where other rows "
+                            "are positive; a rotation speed must be positive, in (0, 954929] rpm (0 or empty: a "
+                            "stopped motor, skipped)")
+        rpm = v["rpm"] = -rpm
+        notes.append(f"rotation speed negated: {cm.column(use)!r} is negative in every running row "
+                     f"({int(neg.sum())}), a probe or ESC that reports this sense of rotation negative; propmap's "
+                     "rotation speed is its magnitude")
+    # stopped motor: rows skipped
+    stopped = ~(np.nan_to_num(rpm) > 0)
+    if stopped.any():
+        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor")
+        keep = ~stopped
+        v = {k: a[keep] for k, a in v.items()}
+        lines = lines[keep]
+        texts = {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}
+    n = lines.size
+    for c in ("airspeed", "incidence_deg"):
+        v.setdefault(c, np.zeros(n))  # a static thrust stand
+    # a "steps" test: one averaged point per ESC step
+    group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
+             else None)
+    form = None
+    if "esc" in v:
+        form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"])
+        if note:
+            notes.append(note)
+    if form and n and np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n:
+        esc, time = v.pop("esc"), v.pop("time", None)
+        f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
+        if n and np.all(np.isnan(v["rpm"])):
+            raise DataError(f"{what}: {p}: no rotation speed in any row")
+        v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
+        if not group.size:
+            raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
+                            "half of the step)")
+        notes.append(f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped"
+                     + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
+                     + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
+        lines = np.zeros(group.size, dtype=np.int64)
+        n = group.size
+    else:
+        v.pop("esc", None)
+        v.pop("time", None)
+    # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
+    if "thrust" in v and n:
+        t = v["thrust"]
+        big = _significant(t)
+        static = big & (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(n)) >= 0)
+        if static.any() and np.all(t[static] < 0):
+            v["thrust"] = -t
+            notes.append(f"thrust negated: {cm.column('thrust')!r} is negative at every static point "
+                         f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
+                         "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
+                         "direction the propeller pulls, opposite to its slipstream")
+    if "torque" in v and n:
+        v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
+    named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
+    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
+    if n < min_points:
+        raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
+    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
+    ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
+    if np.all(np.ptp(ops, axis=0) == 0):
+        raise DataError(f"{what}: {p}: all operating points are identical")
+    if group is None:
+        group = np.full(n, "all", dtype=object)
+    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
+                    group, f"{path}", collective, tuple(notes))
+
+
+def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:
+    """The torque column turned to the propeller's sign (read_loads' docstring, the sign rules).
+
+    The reference points are the significant static ones (airspeed at most
+    :data:`STATIC_AIRSPEED`), else those nearest to static, at the smallest axial advance
+    |V cos(incidence)| / rpm. At a standstill a propeller takes power whatever its collective,
+    so a torque negative at every static point is the stand's reaction torque and is negated.
+    Without a static point the same holds where the thrust is significantly positive at the
+    reference points (in axial climb the shaft power is at least T V: a propeller that pulls
+    takes power), and, with no thrust column, a torque negative at all of them is taken for a
+    reaction torque too; where the thrust is negative there (a run beyond its zero-thrust
+    advance ratio) the torque keeps its sign and :func:`sanity_check` judges it. A negative
+    torque elsewhere is windmilling (beyond the zero-torque advance ratio) and kept with a
+    note, but in climb or edgewise flow (V cos(incidence) >= 0) not where the thrust is
+    significantly positive: the torque changes sign after the thrust. That is exact in axial
+    climb; at incidence the in-plane force's work enters the balance (Q Omega >= T V
+    cos(incidence) - H V sin(incidence)) and it is what the model gives (apce_8x6, 0-90 deg,
+    collective -10 to +10 deg, 2-40 m/s: no point with T > 0 and Q < 0). In descent (the
+    windmill-brake state) a rotor may both pull and give power.
+    """
+    q = v["torque"]
+    big = _significant(q)
+    if not big.any():
+        return q
+    static = big & (v["airspeed"] <= STATIC_AIRSPEED)
+    t = v.get("thrust")
+    pulling = None if t is None else _significant(t) & (t > 0)
+    if static.any():
+        ref, where = static, "the static points"
+        reaction = np.all(q[ref] < 0)
+    else:
+        x = np.abs(v["airspeed"] * np.cos(np.radians(v["incidence_deg"]))) / v["rpm"]
+        xmin = np.min(x[big])
+        ref, where = big & (x <= xmin + 1e-9 * xmin), "the points nearest to static (smallest axial advance)"
+        reaction = np.all(q[ref] < 0) and (pulling is None or np.all(pulling[ref]))
+    if np.any(q[ref] < 0) and np.any(q[ref] > 0):
+        raise DataError(f"{what}: {p}: column {column!r} has both signs at {where} ({int(np.sum(q[ref] < 0))} "
+                        f"negative, {int(np.sum(q[ref] > 0))} positive): there a propeller takes power, so one "
+                        "propeller turning one way has one torque sign")
+    if reaction:
+        q = -q
+        notes.append(f"torque negated: it is the stand's reaction torque (negative at {where}"
+                     + ("" if static.any() else ", where the propeller pulls" if t is not None else "")
+                     + "); the propeller's torque opposes its rotation")
+    neg = big & (q < 0)
+    if neg.any():
+        if pulling is not None:
+            climb = np.cos(np.radians(v["incidence_deg"])) >= 0
+            pulls = neg & climb & pulling
+            if pulls.any():
+                raise DataError(f"{what}: {p}: column {column!r} is negative at {int(neg.sum())} points, "
+                                f"{int(pulls.sum())} of them with positive thrust in climb or edgewise flow: a "
+                                "propeller that pulls takes power, so the torque changes sign only beyond the "
+                                "zero-thrust advance ratio (windmilling); is part of the file a reaction torque, "
+                                "or the thrust of the other sign (a pusher mount)?")
+        speeds = v["airspeed"][neg]
+        notes.append(f"torque negative at {int(neg.sum())} of {int(big.sum())} points (airspeed {np.min(speeds):.3g}-"
+                     f"{np.max(speeds):.3g} m/s), read as written: the propeller windmills there, beyond its "
+                     "zero-torque advance ratio" + ("" if static.any() or reaction else
+                                                    " (no static point: the sanity check compares the sign with "
+                                                    "the model's)"))
+    return q
+
+
+def _significant(x: np.ndarray) -> np.ndarray:
+    """Mask of the values larger than 2% of the largest |x| (all False for a column of zeros):
+    the points whose sign counts in the reader's sign rules (values near zero are noise)."""
+    return np.abs(x) > 0.02 * np.max(np.abs(x)) if np.any(x) else np.zeros(x.size, bool)
