@@ -4,11 +4,14 @@ on a dask.distributed LocalCluster (the --scheduler path) giving the local build
 import csv
 import json
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
 
 from propmap.cli.main import main
+from propmap.io.mapfile import map_props
 from propmap.maps import RotorMap
 
 SMALL = ["--rpm", "3000:9000:5", "--airspeed", "0:15:4", "--incidence-deg", "0:180:7", "--check-points", "60"]
@@ -87,6 +90,19 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     assert large.loads(700.0, 5.0, 1.0).thrust > 1.5 * small.loads(700.0, 5.0, 1.0).thrust
     with pytest.raises(ValueError, match="give prop="):
         RotorMap.open(out)
+    import netCDF4
+
+    with netCDF4.Dataset(out) as nc:  # names as fixed-length characters, the sources cited at file level
+        assert nc["prop"].dtype == np.dtype("S1") and nc["prop"].dimensions[0] == "prop"
+        assert "UIUC Propeller Data Site vol. 1" in nc.citation and "APC" in nc.citation
+    assert map_props(out) == ("apce_10x7", "apce_8x6")
+    # a file with variable-length strings, held open lazily by xarray and opened again in the same
+    # process, crashed it (segmentation fault, netCDF4 1.7.5); in a child, so that a crash fails the test
+    script = ("import sys, xarray as xr\nfrom propmap.maps import RotorMap\na = xr.open_dataset(sys.argv[1])\n"
+              "m = RotorMap.open(sys.argv[1], prop='apce_8x6')\nb = xr.open_dataset(sys.argv[1])\n"
+              "print(list(a.prop.values) == list(b.prop.values) == ['apce_10x7', 'apce_8x6'])\n")
+    child = subprocess.run([sys.executable, "-c", script, str(out)], capture_output=True, text=True, timeout=120)
+    assert (child.returncode, child.stdout.strip()) == (0, "True"), child.stderr[-500:]
 
 
 @pytest.mark.parametrize(

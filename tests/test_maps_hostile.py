@@ -161,7 +161,7 @@ def test_damaged_file_gives_a_value_error_naming_it(tmp_path, tiny_bytes, name):
         assert_valid(rm)  # a flip in padding may leave a valid map
 
 
-def _crafted(path, sizes, *, attrs=None, prop=None):
+def _crafted(path, sizes, *, attrs=None, prop=None, name_chars=0):
     """A netCDF file with the map's variables declared over ``sizes`` (no data written:
     the file is small whatever the sizes)."""
     import netCDF4
@@ -173,7 +173,12 @@ def _crafted(path, sizes, *, attrs=None, prop=None):
         for d, (lo, hi) in zip(("rpm", "airspeed", "incidence_deg"), ((1000, 9000), (0, 10), (0, 180))):
             v = nc.createVariable(d, "f8", (d,))
             v[:] = np.linspace(lo, hi, len(nc.dimensions[d]))
-        if prop is not None:
+        if prop is not None and name_chars:  # fixed-length names, as `propmap map --all` writes them
+            nc.createDimension("name_chars", name_chars)
+            v = nc.createVariable("prop", "S1", ("prop", "name_chars"))
+            v._Encoding = "utf-8"
+            v[:] = np.array(prop, dtype=f"U{name_chars}")
+        elif prop is not None:
             v = nc.createVariable("prop", str, ("prop",))
             for k, name in enumerate(prop):
                 v[k] = name
@@ -219,6 +224,12 @@ def test_vector_attribute_and_map_of_several_without_metadata(tmp_path, tiny):
         RotorMap.open(several)
     with pytest.raises(TypeError, match="prop must be a propeller name"):
         RotorMap.open(several, prop=1)
+    for chars, match in ((8, "a map of several propellers needs the attribute per_prop_json"),
+                         (257, r"variable prop of dimensions prop, name_chars \(2 x 257\) is not a map's")):
+        fixed = tmp_path / f"fixed{chars}.nc"  # names as characters: read as the strings above; a 257-long one refused
+        _crafted(fixed, (2, 4, 3, 5), prop=["a", "b"], name_chars=chars)
+        with pytest.raises(ValueError, match=f"fixed{chars}.nc: {match}"):
+            RotorMap.open(fixed, prop="a")
 
 
 def test_a_folder_a_device_or_a_missing_file_is_named(tmp_path):

@@ -40,6 +40,8 @@ MAX_FILE_BYTES = 4 * 2**30
 #: the child read of a map file may take this long [s], plus OPEN_SECONDS_PER_GB per GiB
 OPEN_TIMEOUT = 20.0
 OPEN_SECONDS_PER_GB = 60.0
+#: the longest propeller name of a map over several, written as fixed-length characters
+MAX_NAME_CHARS = 256
 
 
 # ---------------------------------------------------------------- reading a file
@@ -84,6 +86,8 @@ def _layout(path, where: str) -> list[str]:
     for name, dims in variables.items():
         if name not in wanted:
             continue
+        if name == "prop" and len(dims) == 2 and dims[0] == "prop" and sizes.get(dims[1], 0) <= MAX_NAME_CHARS:
+            continue  # names as fixed-length characters (prop, their length), as `propmap map --all` writes them
         n = math.prod(sizes.get(d, 0) for d in dims)
         if n > MAX_NODES or not set(dims) <= {*DIMS, "prop"}:
             raise ValueError(f"{where}: variable {name} of dimensions {', '.join(dims)} "
