@@ -356,10 +356,6 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
             combined = combined.assign_coords(prop=("prop", names))
             for v in combined.variables.values():
                 v.encoding = {}
-            # fixed-length characters, not netCDF-4 variable-length strings: a file with those,
-            # opened lazily by xarray and then again in the same process, crashes the process
-            # (segmentation fault; netCDF4 1.7.5 with netCDF-C 4.10.1, 2026-11-26)
-            combined["prop"].encoding = {"dtype": "S1"}
             combined.attrs = {"title": "propmap rotor maps of the catalogue",
                               "propmap_version": per_prop[names[0]]["propmap_version"],
                               "citation": "; ".join(sorted({str(a.get("citation", "")) for a in per_prop.values()}

@@ -352,7 +352,8 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     path : str or Path
         The map file; its folder is created if missing.
     fmt : {"netcdf", "csv"}
-        netCDF4 with every variable compressed (zlib, level 4), or CSV: one row per node,
+        netCDF4 with every variable compressed (zlib, level 4; the names of a ``prop``
+        coordinate as fixed-length characters), or CSV: one row per node,
         the axes ``rpm``, ``airspeed``, ``incidence_deg`` and every variable as columns
         (the coordinates ``omega`` and ``incidence`` left out), numbers to 10 significant
         digits, flags ``true``/``false``.
@@ -385,6 +386,11 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     def write(tmp):
         if fmt == "netcdf":
             encoding = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
+            if "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
+                # fixed-length characters, not netCDF-4 variable-length strings: a file with those,
+                # held open lazily by xarray and opened again in the same process, crashes Python
+                # (segmentation fault; netCDF4 1.7.5 with netCDF-C 4.10.1, 2026-11-26)
+                encoding["prop"] = {"dtype": "S1"}
             ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
         else:
             table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
