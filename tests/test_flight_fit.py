@@ -347,3 +347,54 @@ def test_fit_flight_centre_of_mass_columns_are_implicit(shared_data):
     np.testing.assert_allclose(a.x, b.x, rtol=1e-3, atol=1e-6)
     assert a.cost == pytest.approx(b.cost, rel=1e-5)
     assert a.nfev < b.nfev / 2
+
+
+def _hand_built_level_flight(n=6, **change):
+    from propmap.identify import LevelFlightData
+
+    ok = dict(airspeed=np.linspace(0, 8, n), pitch=np.radians(np.linspace(0, -10, n)), roll=np.zeros(n),
+              omega=np.full((n, 4), 1100.0), rates=np.zeros((n, 3)))
+    return LevelFlightData(**{**ok, **change})
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"omega": np.full(6, 1100.0)}, r"LevelFlightData.omega must have shape \(6, n_rotors\) \(N = 6 conditions\), "
+                                    r"got \(6,\)"),
+    ({"pitch": -np.linspace(0, 10, 6)}, r"pitch must be in \(-pi/2, pi/2\) rad \(radians, not degrees\), got -2"),
+    ({"rates": np.zeros(6)}, r"rates must have shape \(6, 3\)"),
+    ({"airspeed": [0, 1, np.nan, 3, 4, 5]}, r"airspeed must be finite \(condition 2 is not\)"),
+    ({"airspeed": -np.linspace(0, 8, 6)}, r"airspeed must be >= 0 m/s"),
+    ({"omega": np.zeros((6, 4))}, r"omega must be > 0 rad/s"),
+    ({"roll": "level"}, r"roll must be numbers"),
+    ({"airspeed": np.zeros((6, 1))}, r"airspeed must have shape \(N,\), got \(6, 1\)"),
+])
+def test_level_flight_data_built_by_hand_is_checked(change, match):
+    """A hand-built LevelFlightData gets the reader's checks, each error naming the field (a
+    broadcast error deep in the fit, or a fit of degrees read as radians, before)."""
+    with pytest.raises(ValueError, match=match):
+        _hand_built_level_flight(**change)
+
+
+def test_level_flight_fit_refuses_another_rotor_count():
+    data = _hand_built_level_flight(n=8, omega=np.full((8, 6), 1100.0))
+    with pytest.raises(ValueError, match="data.omega has 6 rotor columns; the vehicle has 4 rotors"):
+        pm.identify.fit_level_flight(data, pm.read_vehicle(VEHICLE))
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"rotor_omega": np.ones((2, 3))}, r"rotor_acceleration must have shape \(2, 3\)"),
+    ({"rotor_omega": np.ones(2)}, r"rotor_omega must have shape \(2, n_rotors\)"),
+    ({"force": np.full((2, 3), np.inf)}, r"force must be finite \(sample 0 is not\)"),
+    ({"rotor_omega": np.zeros((2, 4))}, r"rotor_omega must be > 0 rad/s"),
+    ({"log_index": np.array([0, 1])}, r"log_index must be N = 2 indices into log_names \(1 logs\)"),
+    ({"moment": np.zeros((3, 3))}, r"moment must have shape \(2, 3\)"),
+    ({"rate_hz": 0.0}, r"rate_hz must be a rate > 0 Hz"),
+    ({"t": np.zeros((2, 1))}, r"t must have shape \(N,\)"),
+])
+def test_flight_samples_built_by_hand_are_checked(change, match):
+    ok = dict(log_names=("x",), log_index=np.zeros(2, int), t=np.arange(2.0), velocity=np.zeros((2, 3)),
+              angular_velocity=np.zeros((2, 3)), rotor_omega=np.ones((2, 4)), rotor_acceleration=np.zeros((2, 4)),
+              force=np.zeros((2, 3)), moment=None, reference_force=None, reference_moment=None, rate_hz=1.0)
+    FlightSamples(**ok)
+    with pytest.raises(ValueError, match=match):
+        FlightSamples(**{**ok, **change})

@@ -157,8 +157,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     Raises
     ------
     ValueError
-        Fewer conditions than parameters + 1, an unknown parameter name, or body lift
-        requested without body_area.
+        Fewer conditions than parameters + 1, a rotor count in ``data.omega`` other than the
+        vehicle's, an unknown parameter name, or body lift requested without body_area.
     SolverError
         From the rotor model.
     """
@@ -174,6 +174,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     if data.n <= len(names):
         raise ValueError(f"{data.n} conditions cannot identify {len(names)} parameters; need at least {len(names) + 1}")
     n_rot = len(vehicle.rotors)
+    if data.omega.shape[1] != n_rot:
+        raise ValueError(f"data.omega has {data.omega.shape[1]} rotor columns; the vehicle has {n_rot} rotors")
 
     def make_residual(opts):
         def errors(f, x, p):  # the vertical force balance (eq 16) of the model's forces f

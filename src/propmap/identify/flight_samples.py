@@ -49,6 +49,15 @@ class FlightSamples:
     rate_hz : float
         Sampling rate of the samples [Hz]: the one asked for, or a log's own where it is
         lower (the median over the logs).
+
+    Raises
+    ------
+    ValueError
+        Built by hand with an array that is not numbers of its shape (N the length of
+        ``t``; n_rotors >= 1, the same in both rotor arrays), a non-finite value, a
+        ``rotor_omega`` <= 0 rad/s (:func:`flight_samples` leaves a stopped rotor's samples
+        out), a ``log_index`` that is not an index of ``log_names``, or a ``rate_hz`` not > 0;
+        the message names the field.
     """
 
     log_names: tuple[str, ...]
@@ -63,6 +72,43 @@ class FlightSamples:
     reference_force: np.ndarray | None
     reference_moment: np.ndarray | None
     rate_hz: float
+
+    def __post_init__(self):
+        t = np.asarray(self.t, dtype=float) if np.ndim(self.t) == 1 else None
+        if t is None:
+            raise ValueError(f"FlightSamples.t must have shape (N,), got {np.shape(self.t)}")
+        n = t.size
+        rotors = np.shape(self.rotor_omega)[1] if np.ndim(self.rotor_omega) == 2 else 0
+        rotors = rotors or "n_rotors"  # at least one
+        shapes = {"t": (n,), "velocity": (n, 3), "angular_velocity": (n, 3), "rotor_omega": (n, rotors),
+                  "rotor_acceleration": (n, rotors), "force": (n, 3), "moment": (n, 3), "reference_force": (n, 3),
+                  "reference_moment": (n, 3)}
+        for name, shape in shapes.items():
+            value = getattr(self, name)
+            if value is None and name in ("moment", "reference_force", "reference_moment"):
+                continue
+            try:
+                a = np.asarray(value, dtype=float)
+            except (TypeError, ValueError):
+                raise ValueError(f"FlightSamples.{name} must be numbers, got {value!r:.60}") from None
+            if a.shape != shape:
+                raise ValueError(f"FlightSamples.{name} must have shape ({', '.join(map(str, shape))}) (N = {n} "
+                                 f"samples), got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                row = int(np.argwhere(~np.isfinite(a))[0][0])
+                raise ValueError(f"FlightSamples.{name} must be finite (sample {row} is not)")
+            object.__setattr__(self, name, a)
+        if np.any(self.rotor_omega <= 0):
+            raise ValueError(f"FlightSamples.rotor_omega must be > 0 rad/s, got {self.rotor_omega.min():g} "
+                             "(flight_samples leaves a stopped rotor's samples out)")
+        index = np.asarray(self.log_index)
+        if index.shape != (n,) or (n and (index.dtype.kind not in "iu" or index.min() < 0
+                                          or index.max() >= len(self.log_names))):
+            raise ValueError(f"FlightSamples.log_index must be N = {n} indices into log_names "
+                             f"({len(self.log_names)} logs)")
+        rate = self.rate_hz
+        if isinstance(rate, bool) or not isinstance(rate, (int, float, np.number)) or not 0 < rate < np.inf:
+            raise ValueError(f"FlightSamples.rate_hz must be a rate > 0 Hz, got {rate!r:.60}")
 
     @property
     def n(self) -> int:

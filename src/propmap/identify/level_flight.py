@@ -28,6 +28,14 @@ class LevelFlightData:
         Rotor rotation rates [rad/s], > 0, in the vehicle's rotor order.
     rates : ndarray, shape (N, 3)
         Body rates p, q, r [rad/s] (x forward, y left, z up).
+
+    Raises
+    ------
+    ValueError
+        Built by hand with an array that is not numbers of its shape (N the length of
+        ``airspeed``, at least one rotor), a non-finite value, ``airspeed`` < 0 m/s, |pitch|
+        or |roll| >= pi/2 rad (radians, not degrees) or ``omega`` <= 0 rad/s; the message
+        names the field. (:func:`read_level_flight` checks the file's ranges too.)
     """
 
     airspeed: np.ndarray
@@ -35,6 +43,40 @@ class LevelFlightData:
     roll: np.ndarray
     omega: np.ndarray
     rates: np.ndarray
+
+    def __post_init__(self):
+        arrays = {}
+        for name in ("airspeed", "pitch", "roll", "omega", "rates"):
+            value = getattr(self, name)
+            try:
+                arrays[name] = np.asarray(value, dtype=float)
+            except (TypeError, ValueError):
+                raise ValueError(f"LevelFlightData.{name} must be numbers, got {value!r:.60}") from None
+        if arrays["airspeed"].ndim != 1:
+            raise ValueError(f"LevelFlightData.airspeed must have shape (N,), got {arrays['airspeed'].shape}")
+        n = arrays["airspeed"].size
+        omega = arrays["omega"]
+        shapes = {"pitch": (n,), "roll": (n,), "rates": (n, 3),
+                  "omega": (n, omega.shape[1]) if omega.ndim == 2 and omega.shape[1] >= 1 else (n, "n_rotors")}
+        for name, shape in shapes.items():
+            if arrays[name].shape != shape:
+                raise ValueError(f"LevelFlightData.{name} must have shape ({', '.join(map(str, shape))}) (N = {n} "
+                                 f"conditions), got {arrays[name].shape}")
+        for name, a in arrays.items():
+            if not np.all(np.isfinite(a)):
+                row = int(np.argwhere(~np.isfinite(a))[0][0])
+                raise ValueError(f"LevelFlightData.{name} must be finite (condition {row} is not)")
+        if np.any(arrays["airspeed"] < 0):
+            raise ValueError("LevelFlightData.airspeed must be >= 0 m/s (the speed along the heading)")
+        for name in ("pitch", "roll"):
+            a = arrays[name]
+            if np.any(np.abs(a) >= np.pi / 2):
+                raise ValueError(f"LevelFlightData.{name} must be in (-pi/2, pi/2) rad (radians, not degrees), "
+                                 f"got {a[np.abs(a) >= np.pi / 2][0]:g}")
+        if np.any(omega <= 0):
+            raise ValueError(f"LevelFlightData.omega must be > 0 rad/s, got {omega[omega <= 0][0]:g}")
+        for name, a in arrays.items():
+            object.__setattr__(self, name, a)
 
     @property
     def n(self) -> int:
