@@ -41,7 +41,7 @@ def main() -> None:
     s = flight_samples(logs, veh, rate_hz=RATE_HZ)
     wdot = []  # the angular acceleration at the same samples as flight_samples takes them
     for log in logs:
-        step = max(1, int(round(1.0 / (RATE_HZ * np.median(np.diff(log.t))))))
+        step = max(1, int(round(log.rate_hz / RATE_HZ)))
         wd = log.angular_acceleration
         wdot.append((wd if wd is not None else np.gradient(log.angular_velocity, log.t, axis=0))[::step])
     wdot = np.concatenate(wdot)
