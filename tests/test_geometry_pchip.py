@@ -1,5 +1,5 @@
 """The NumPy PCHIP of the blade geometry is SciPy's PchipInterpolator (written out so that
-a single-point CLI call need not import scipy.interpolate)."""
+a single-point CLI call need not import scipy.interpolate); Propeller.same_geometry."""
 
 import subprocess
 import sys
@@ -53,3 +53,13 @@ def test_everyday_commands_do_not_import_what_they_do_not_need(argv):
         assert not {"scipy.interpolate", "pandas", "matplotlib"} & set(loaded), loaded
     else:
         assert loaded == [], loaded
+
+
+def test_same_geometry_compares_blades_not_names():
+    import dataclasses
+
+    a = pm.load_propeller("apce_8x6")
+    assert a.same_geometry(pm.load_propeller("apce_8x6")) and a.same_geometry(dataclasses.replace(a, name="other"))
+    assert not a.same_geometry(dataclasses.replace(a, n_blades=3))
+    assert not a.same_geometry(dataclasses.replace(a, theta=a.theta + 1e-6))
+    assert not a.same_geometry(pm.load_propeller("apce_10x7"))  # other stations too

@@ -53,16 +53,6 @@ def parse_envelope(text: str | None, propeller):
         raise InputError(f"--envelope: {exc}") from None
 
 
-def _same_geometry(a, b) -> bool:
-    """Whether two propellers are one geometry: blade count, radius and the stations' r, chord and
-    blade angle (a name alone does not say: a geometry file read with another --blades)."""
-    import numpy as np
-
-    return (a.n_blades == b.n_blades and math.isclose(a.radius, b.radius, rel_tol=1e-9)
-            and all(np.shape(x) == np.shape(y) and np.allclose(x, y, rtol=1e-9, atol=0.0)
-                    for x, y in ((a.r, b.r), (a.chord, b.chord), (a.theta, b.theta))))
-
-
 @click.command("export-sim")
 @click.argument("prop")
 @click.option("--target", type=click.Choice(CHOICES), required=True,
@@ -125,7 +115,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
         names = sorted({r.propeller.name if r.propeller.name != propeller.name else f"{r.propeller.name} (another "
-                        "geometry)" for r in veh.rotors if not _same_geometry(r.propeller, propeller)})
+                        "geometry)" for r in veh.rotors if not r.propeller.same_geometry(propeller)})
         if names and hover_rpm is None:
             # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
             raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {propeller.name}, so it cannot pin "

@@ -180,6 +180,23 @@ class Propeller:
         area, _ = quad(lambda y: float(self.chord_at(y)), self.r_hub, self.radius, limit=200)
         return self.n_blades * area / (math.pi * self.radius**2)
 
+    def same_geometry(self, other: "Propeller") -> bool:
+        """Whether ``other`` is the same blade geometry: blade count, radius and the stations'
+        r, chord and blade angle to 1e-9 relative (the name is not compared: a name alone does not
+        say, e.g. a geometry file read with another blade count).
+
+        Parameters
+        ----------
+        other : Propeller
+
+        Returns
+        -------
+        bool
+        """
+        return (self.n_blades == other.n_blades and math.isclose(self.radius, other.radius, rel_tol=1e-9)
+                and all(np.shape(x) == np.shape(y) and np.allclose(x, y, rtol=1e-9, atol=0.0)
+                        for x, y in ((self.r, other.r), (self.chord, other.chord), (self.theta, other.theta))))
+
     def __repr__(self) -> str:
         return (f"Propeller(name={self.name!r}, radius={self.radius:.4g} m, n_blades={self.n_blades}, "
                 f"stations={len(self.r)}, r_hub={self.r_hub / self.radius:.3f} R)")
