@@ -652,11 +652,11 @@ def test_the_in_plane_force_is_read_by_its_wind_tunnel_names(tmp_path, header):
 
 @pytest.mark.parametrize("change, match", [
     ({"measured": {"thrustt": [1.0] * 3}}, "unknown quantity 'thrustt'"),
-    ({"measured": {"thrust": [1.0] * 2}}, r"measured\['thrust'\] must have the N = 3 points"),
+    ({"measured": {"thrust": [1.0] * 2}}, r"measured\['thrust'\] must have shape \(3,\) \(N = 3 points\), got \(2,\)"),
     ({"omega": [500.0, float("nan"), 700.0]}, r"LoadData.omega must be finite \(point 1"),
     ({"omega": [0.0, 600.0, 700.0]}, "omega must be > 0 rad/s"),
     ({"incidence": [0.0, 30.0, 60.0]}, r"incidence must be in \[0, pi\] rad \(radians, not degrees\)"),
-    ({"airspeed": [0.0, 1.0]}, "airspeed must have the N = 3 points"),
+    ({"airspeed": [0.0, 1.0]}, r"airspeed must have shape \(3,\) \(N = 3 points\)"),
     ({"measured": {}}, "non-empty dict"),
 ])
 def test_load_data_built_by_hand_is_checked_naming_the_field(change, match):

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
+from ._checks import first_length, float_array
 
 __all__ = ["OMEGA_STOPPED", "FlightSamples", "flight_samples"]
 
@@ -74,10 +75,7 @@ class FlightSamples:
     rate_hz: float
 
     def __post_init__(self):
-        t = np.asarray(self.t, dtype=float) if np.ndim(self.t) == 1 else None
-        if t is None:
-            raise ValueError(f"FlightSamples.t must have shape (N,), got {np.shape(self.t)}")
-        n = t.size
+        n = first_length("FlightSamples", "t", self.t)
         rotors = np.shape(self.rotor_omega)[1] if np.ndim(self.rotor_omega) == 2 else 0
         rotors = rotors or "n_rotors"  # at least one
         shapes = {"t": (n,), "velocity": (n, 3), "angular_velocity": (n, 3), "rotor_omega": (n, rotors),
@@ -85,19 +83,8 @@ class FlightSamples:
                   "reference_moment": (n, 3)}
         for name, shape in shapes.items():
             value = getattr(self, name)
-            if value is None and name in ("moment", "reference_force", "reference_moment"):
-                continue
-            try:
-                a = np.asarray(value, dtype=float)
-            except (TypeError, ValueError):
-                raise ValueError(f"FlightSamples.{name} must be numbers, got {value!r:.60}") from None
-            if a.shape != shape:
-                raise ValueError(f"FlightSamples.{name} must have shape ({', '.join(map(str, shape))}) (N = {n} "
-                                 f"samples), got {a.shape}")
-            if not np.all(np.isfinite(a)):
-                row = int(np.argwhere(~np.isfinite(a))[0][0])
-                raise ValueError(f"FlightSamples.{name} must be finite (sample {row} is not)")
-            object.__setattr__(self, name, a)
+            if value is not None or name not in ("moment", "reference_force", "reference_moment"):
+                object.__setattr__(self, name, float_array("FlightSamples", name, value, shape, row="sample"))
         if np.any(self.rotor_omega <= 0):
             raise ValueError(f"FlightSamples.rotor_omega must be > 0 rad/s, got {self.rotor_omega.min():g} "
                              "(flight_samples leaves a stopped rotor's samples out)")

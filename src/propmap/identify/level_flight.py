@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..vehicle import Vehicle, rotor_geometry
+from ._checks import first_length, float_array
 from .csvfile import _ROTOR_RE, RANGES, RPM, DataError, _Csv, _short
 
 __all__ = ["LevelFlightData", "read_level_flight", "body_to_world", "rotor_kinematics"]
@@ -45,27 +46,12 @@ class LevelFlightData:
     rates: np.ndarray
 
     def __post_init__(self):
-        arrays = {}
-        for name in ("airspeed", "pitch", "roll", "omega", "rates"):
-            value = getattr(self, name)
-            try:
-                arrays[name] = np.asarray(value, dtype=float)
-            except (TypeError, ValueError):
-                raise ValueError(f"LevelFlightData.{name} must be numbers, got {value!r:.60}") from None
-        if arrays["airspeed"].ndim != 1:
-            raise ValueError(f"LevelFlightData.airspeed must have shape (N,), got {arrays['airspeed'].shape}")
-        n = arrays["airspeed"].size
+        n = first_length("LevelFlightData", "airspeed", self.airspeed)
+        rotors = np.shape(self.omega)[1] if np.ndim(self.omega) == 2 and np.shape(self.omega)[1] >= 1 else "n_rotors"
+        shapes = {"airspeed": (n,), "pitch": (n,), "roll": (n,), "omega": (n, rotors), "rates": (n, 3)}
+        arrays = {name: float_array("LevelFlightData", name, getattr(self, name), shape, row="condition")
+                  for name, shape in shapes.items()}
         omega = arrays["omega"]
-        shapes = {"pitch": (n,), "roll": (n,), "rates": (n, 3),
-                  "omega": (n, omega.shape[1]) if omega.ndim == 2 and omega.shape[1] >= 1 else (n, "n_rotors")}
-        for name, shape in shapes.items():
-            if arrays[name].shape != shape:
-                raise ValueError(f"LevelFlightData.{name} must have shape ({', '.join(map(str, shape))}) (N = {n} "
-                                 f"conditions), got {arrays[name].shape}")
-        for name, a in arrays.items():
-            if not np.all(np.isfinite(a)):
-                row = int(np.argwhere(~np.isfinite(a))[0][0])
-                raise ValueError(f"LevelFlightData.{name} must be finite (condition {row} is not)")
         if np.any(arrays["airspeed"] < 0):
             raise ValueError("LevelFlightData.airspeed must be >= 0 m/s (the speed along the heading)")
         for name in ("pitch", "roll"):

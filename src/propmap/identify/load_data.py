@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._checks import first_length, float_array
 
 @dataclass(frozen=True)
 class LoadData:
@@ -51,25 +52,11 @@ class LoadData:
     notes: tuple = ()
 
     def __post_init__(self):
-        def floats(name, value, nan=False):
-            try:
-                a = np.asarray(value, dtype=float)
-            except (TypeError, ValueError):
-                raise ValueError(f"LoadData.{name} must be numbers, got {value!r:.60}") from None
-            if a.ndim != 1:
-                raise ValueError(f"LoadData.{name} must have shape (N,), got {a.shape}")
-            if not np.all(np.isfinite(a) | (nan & np.isnan(a))):
-                raise ValueError(f"LoadData.{name} must be finite (point {int(np.argmax(~np.isfinite(a)))} is not)")
-            return a
-
-        omega = floats("omega", self.omega)
-        n = omega.size
+        n = first_length("LoadData", "omega", self.omega)
+        omega = float_array("LoadData", "omega", self.omega, (n,), row="point")
         fields_ = {"omega": omega}
         for name in ("airspeed", "incidence") + (("collective",) if self.collective is not None else ()):
-            a = floats(name, getattr(self, name))
-            if a.size != n:
-                raise ValueError(f"LoadData.{name} must have the N = {n} points of omega, got {a.size}")
-            fields_[name] = a
+            fields_[name] = float_array("LoadData", name, getattr(self, name), (n,), row="point")
         if np.any(omega <= 0):
             raise ValueError(f"LoadData.omega must be > 0 rad/s, got {omega[omega <= 0][0]:g}")
         if np.any(fields_["airspeed"] < 0):
@@ -81,12 +68,9 @@ class LoadData:
         bad = [k for k in self.measured if k not in LOAD_KEYS]
         if bad:
             raise ValueError(f"LoadData.measured: unknown quantity {bad[0]!r} (valid: {', '.join(LOAD_KEYS)})")
-        measured = {}
-        for k, v in self.measured.items():
-            a = floats(f"measured[{k!r}]", v, nan=True)  # (NaN: not measured there; the fits refuse it)
-            if a.size != n:
-                raise ValueError(f"LoadData.measured[{k!r}] must have the N = {n} points of omega, got {a.size}")
-            measured[k] = a
+        # NaN: not measured there (the fits refuse it)
+        measured = {k: float_array("LoadData", f"measured[{k!r}]", v, (n,), row="point", nan=True)
+                    for k, v in self.measured.items()}
         group = np.asarray(self.group, dtype=object)
         if group.shape != (n,):
             raise ValueError(f"LoadData.group must have shape ({n},), got {group.shape}")

@@ -1,0 +1,53 @@
+"""The checks of identification data built by hand (LoadData, LevelFlightData, FlightSamples):
+one rule for numbers, shapes and finiteness, each error naming the field."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def float_array(owner: str, name: str, value, shape: tuple, *, row: str, nan: bool = False) -> np.ndarray:
+    """``value`` as a float array of ``shape``, finite (NaN allowed with ``nan``).
+
+    Parameters
+    ----------
+    owner, name : str
+        The class and the field, for the message (``LoadData.omega``).
+    value : array_like
+    shape : tuple of int or str
+        The shape wanted; a str entry (e.g. ``"n_rotors"``) matches nothing and names the
+        dimension in the message (an array that cannot have a valid shape). The first entry is N.
+    row : str
+        What one row is, for the message ("point", "condition", "sample").
+    nan : bool
+        NaN allowed (a value not measured there); infinities never are.
+
+    Returns
+    -------
+    ndarray of float
+
+    Raises
+    ------
+    ValueError
+        Not numbers, another shape, or a non-finite value; the message names ``owner.name``,
+        the shape wanted with N, and the first bad row.
+    """
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{owner}.{name} must be numbers, got {value!r:.60}") from None
+    if a.shape != shape:
+        want = ", ".join(map(str, shape)) + ("," if len(shape) == 1 else "")
+        raise ValueError(f"{owner}.{name} must have shape ({want}) (N = {shape[0]} {row}s), got {a.shape}")
+    bad = ~(np.isfinite(a) | (nan & np.isnan(a)))
+    if bad.any():
+        raise ValueError(f"{owner}.{name} must be finite ({row} {int(np.argwhere(bad)[0][0])} is not)")
+    return a
+
+
+def first_length(owner: str, name: str, value) -> int:
+    """N, the length of the field that defines it (shape (N,)); ValueError naming it otherwise."""
+    shape = np.shape(value)
+    if len(shape) != 1:
+        raise ValueError(f"{owner}.{name} must have shape (N,), got {shape}")
+    return shape[0]
