@@ -265,3 +265,22 @@ def test_a_few_thrust_only_steps_are_enough_for_the_directions():
         fit_loads(six, prop, quantities=("thrust",), options=FitOptions(directions=0))
     with pytest.raises(ValueError, match="3 points of thrust cannot identify 3 parameter directions"):
         fit_loads(six.subset(np.arange(6) < 3), prop, quantities=("thrust",))
+
+
+def test_a_hand_written_coverage_table_may_give_some_keys(tmp_path):
+    """A [coverage] table with only J_max is checked for J alone (every command stopped with an
+    internal KeyError on the missing keys before); rpm_min without rpm_max is refused when read."""
+    base = tmp_path / "p.toml"
+    run = CliRunner().invoke
+    assert run(cli, ["fit", "loads", str(_static_csv(tmp_path / "s.csv")), "--prop", "apce_8x6",
+                     "--out", str(base)]).exit_code == 0
+    text = base.read_text().split("[coverage]")[0]
+    part = tmp_path / "part.toml"
+    part.write_text(text + "[coverage]\nJ_max = 0.5\n")
+    out = run(cli, ["loads", "apce_8x6", "--params", str(part), "--rpm", "5000", "--airspeed", "20"])
+    assert out.exit_code == 0, out.output
+    assert "advance ratio up to 1.18: the data behind" in out.output and "rpm: the data" not in out.output
+    half = tmp_path / "half.toml"
+    half.write_text(text + "[coverage]\nrpm_min = 3000.0\n")
+    bad = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "5000"])
+    assert bad.exit_code == 2 and "[coverage] gives rpm_min without the other" in bad.output

@@ -562,15 +562,16 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     cov = set_coverage(label)
     if cov is None:
         return
-    if J > cov["J_max"]:
+    # each key is optional (a hand-written [coverage] table may give some of them)
+    if "J_max" in cov and J > cov["J_max"]:
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    if incidence_deg > cov["incidence_deg_max"]:
+    if "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"]:
         axial = cov["incidence_deg_max"] == 0
         warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
              + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
                 "gill2019 cases)"
                 if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
-    if rpm is not None and "rpm_min" in cov:
+    if rpm is not None and "rpm_min" in cov and "rpm_max" in cov:
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
         if lo < cov["rpm_min"] or hi > cov["rpm_max"]:
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
