@@ -272,7 +272,36 @@ def test_cli_map_with_a_collective(tmp_path, capsys):
                                collective=math.radians(3.0)).thrust)
     assert T == pytest.approx(ref, rel=1e-6)
     assert main(["map", "apce_8x6", "--collective-deg", "40", "--out", str(tmp_path / "x.nc")]) == 2
-    assert "--collective-deg: collective must be" in capsys.readouterr().err
+    assert ("--collective-deg: the parameter set's collective 0 deg plus 40 deg must be within [-30, 30] deg, got 40"
+            in capsys.readouterr().err)  # (said in radians before)
+
+
+def test_cli_loads_adds_the_parameter_sets_collective_and_says_so(tmp_path, capsys):
+    """A parameter file's collective_deg is applied on top of --collective-deg: loads reports the
+    sum (it printed the option alone, 0 without it), and refuses a sum beyond 45 deg, also in a
+    points file (48 deg was applied)."""
+    import json
+
+    from propmap.io.params_file import write_params
+
+    f = tmp_path / "c.toml"
+    write_params(f, dataclasses.replace(pm.default_params("apce_8x6"), collective=math.radians(3.0)))
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--params", str(f), "--json"]) == 0
+    j = json.loads(capsys.readouterr().out)
+    assert (j["collective_deg"], j["params_collective_deg"]) == (3.0, 3.0)
+    ref = pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6"), 6000 * RPM, 0.0, 0.0,
+                         collective=math.radians(5.0))
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--params", str(f), "--collective-deg", "2", "--json"]) == 0
+    j = json.loads(capsys.readouterr().out)
+    assert j["collective_deg"] == 5.0 and j["thrust"] == pytest.approx(float(ref.thrust), rel=1e-9)
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--params", str(f), "--collective-deg", "2"]) == 0
+    assert "collective 5 deg (3 of the parameter set + 2)" in capsys.readouterr().out
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--params", str(f), "--collective-deg", "45"]) == 2
+    assert "the parameter set's collective 3 deg plus 45 deg must be within [-45, 45] deg" in capsys.readouterr().err
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,44\n")
+    assert main(["loads", "apce_8x6", "--params", str(f), "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
+    assert "line 2: collective_deg must be a finite number in [-48, 42]" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("section", ["naca0012", "naca0015"])

@@ -130,12 +130,13 @@ def _parse_error(path: Path, exc: Exception, sep: str, width: int) -> InputError
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 
-def _chunks(path: Path, chunksize: int):
+def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     """Chunks of the points CSV: the cells as text, and rpm, airspeed, incidence_deg (and
     collective_deg where the file has it) as checked floats.
 
     Yields (DataFrame of the text as read, first line number, dict of the three float
-    arrays); blank lines are dropped. Raises InputError
+    arrays); blank lines are dropped. ``offset_deg``: the parameter set's collective [deg], added
+    to each row's, the sum within [-COLLECTIVE_DEG_MAX, COLLECTIVE_DEG_MAX]. Raises InputError
     naming the line of the first bad value (line numbers count blank lines; a quoted field
     spanning lines shifts them) or the parse error.
     """
@@ -148,7 +149,7 @@ def _chunks(path: Path, chunksize: int):
     lower = [n.lower() for n in names]
     cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in lower}
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
-              COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX, COLLECTIVE_DEG_MAX)}
+              COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2
     rows = 0
     marks = [None, None]  # a ';' file: where a decimal comma and a point were first seen, (line, column)
@@ -174,7 +175,10 @@ def _chunks(path: Path, chunksize: int):
                     if bad.any():
                         i = int(np.argmax(bad))
                         why = (" (the model is symmetric: give the magnitude of a negative incidence)"
-                               if c == "incidence_deg" and -180 <= v[i] < 0 else "")
+                               if c == "incidence_deg" and -180 <= v[i] < 0 else
+                               f" (the parameter set's collective {offset_deg:g} deg is added to it, the sum within "
+                               f"[-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}])"
+                               if c == COLLECTIVE_COLUMN and offset_deg else "")
                         raise InputError(f"--points: {path}, line {lines[i]}: {c} must be a finite number in "
                                          f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}{why}")
                     values[c] = v
@@ -276,13 +280,14 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     from ..io.atomic import atomic_write
 
     # first pass: every value checked before any work, and the extremes for the warnings
-    n, extremes = _scan(prop, path)
+    offset = math.degrees(params.collective)  # the set's collective, added to each row's
+    n, extremes = _scan(prop, path, offset)
     coverage_messages(prop, label, air, *extremes)
 
     def write(fh):
         bad = 0
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
-            for k, (df, _, values) in enumerate(_chunks(path, CHUNK)):  # the input cells are written as read
+            for k, (df, _, values) in enumerate(_chunks(path, CHUNK, offset)):  # the input cells are written as read
                 res = solve_points(prop, params, air, values["rpm"], values["airspeed"], values["incidence_deg"],
                                    values.get(COLLECTIVE_COLUMN))
                 res.columns = _output_names(df.columns, res.columns)
@@ -362,6 +367,12 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
+    # the parameter set's own blade-angle offset, added to the option's (12 digits: no 3.0000000000000004)
+    set_deg = float(f"{math.degrees(params.collective):.12g}")
+    total_deg = set_deg + collective_deg
+    if abs(total_deg) > COLLECTIVE_DEG_MAX:
+        raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus {collective_deg:g} "
+                         f"deg must be within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] deg, got {total_deg:g}")
     coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
     from ..core.solver import SolverError, rotor_loads
 
@@ -377,13 +388,15 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     if as_json:
         echo_json({**result, "propeller": propeller.name, "n_blades": propeller.n_blades,
                    "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
-                   "incidence_deg": incidence_deg, "collective_deg": collective_deg,
+                   "incidence_deg": incidence_deg, "collective_deg": total_deg, "params_collective_deg": set_deg,
                    "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg"
-               + (f", collective {collective_deg:g} deg" if collective_deg else "") + f" (params {label})")
+               + (f", collective {total_deg:g} deg" if total_deg else "")
+               + (f" ({set_deg:g} of the parameter set + {collective_deg:g})" if set_deg and collective_deg else "")
+               + f" (params {label})")
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
@@ -409,10 +422,10 @@ def check_collective(collective_deg):
     return float(collective_deg)
 
 
-def _scan(prop, path: Path) -> tuple[int, tuple[float, float, float]]:
+def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float]]:
     """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
     n, ext = 0, (0.0, 0.0, 0.0)
-    for df, _, values in _chunks(path, CHUNK):
+    for df, _, values in _chunks(path, CHUNK, offset_deg):
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         n += len(df)

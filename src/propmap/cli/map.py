@@ -222,10 +222,15 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         check_section_match(propeller, label)
         data_label = label  # (the set whose data coverage the envelope is checked against)
         if collective_deg is not None:
-            try:
-                params = params.replace(collective=params.collective + math.radians(collective_deg))
-            except (ValueError, OverflowError) as exc:
-                raise InputError(f"--collective-deg: {exc}") from None
+            from ..core.airfoil import COLLECTIVE_MAX
+
+            total = math.degrees(params.collective) + collective_deg
+            limit = math.degrees(COLLECTIVE_MAX)
+            if not (math.isfinite(collective_deg) and abs(total) <= limit):
+                raise InputError(f"--collective-deg: the parameter set's collective "
+                                 f"{math.degrees(params.collective):g} deg plus {collective_deg:g} deg must be "
+                                 f"within [-{limit:g}, {limit:g}] deg, got {total:.6g}")
+            params = params.replace(collective=math.radians(total))
             label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, axes)
         plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs) if plot.plot_dir is not None else []
