@@ -478,10 +478,49 @@ def test_blade_angles_in_radians_warn(tmp_path):
 
 
 def test_stations_short_of_the_tip_warn(tmp_path):
-    # the blade beyond the last station is extrapolated: said, not silent (r/R 0.5 here)
-    p = _write(tmp_path, "half_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.5 0.1 20\n")
-    with pytest.warns(UserWarning, match=f"{re.escape(str(p))}: the stations stop at r/R = 0.5: .*extrapolated"):
+    # the blade beyond the last station is extrapolated: said, not silent (r/R 0.8 here)
+    p = _write(tmp_path, "part_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.8 0.1 20\n")
+    with pytest.warns(UserWarning, match=f"{re.escape(str(p))}: the stations stop at r/R = 0.8: .*extrapolated"):
         read_uiuc_geometry(p)
+    p = _write(tmp_path, "half_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.5 0.1 20\n")
+    refused(GeometryFileError, read_uiuc_geometry, p, match=r"the stations stop at r/R = 0.5: the outer blade, which "
+                                                             r"makes most of the thrust, is not given")
+
+
+def test_stations_far_short_of_the_tip_are_refused(tmp_path):
+    """Radii written in metres in the r/R column (0.0127-0.1016 for an 8 in blade) made the end
+    polynomials carry the blade to c/R 2.8e5 and 4.5e5 deg at the tip, and the loads T = -9 N,
+    P = 7.7 MW with a warning only: refused by the reader (stations inside 0.7 R) and, built by
+    hand, by Propeller (the extrapolation is no blade). A blade measured to 0.84 R still reads,
+    with the warning."""
+    rows = [(0.15, 0.12, 30.0), (0.3, 0.16, 27.0), (0.45, 0.19, 22.0), (0.6, 0.17, 18.0), (0.75, 0.14, 15.0),
+            (0.84, 0.12, 13.0), (1.0, 0.05, 11.0)]
+    metres = "r/R c/R beta\n" + "".join(f"{r * 0.1016:.5f} {c} {b}\n" for r, c, b in rows)
+    p = _write(tmp_path, "m_8x6_geom.txt", metres)
+    refused(GeometryFileError, read_uiuc_geometry, p, match=r"the stations stop at r/R = 0.1016: the outer blade")
+    r, c, b = (np.array(x) for x in zip(*rows))
+    with pytest.raises(ValueError, match=r"the blade from the last station \(r = 0.0103226 m, 0.1016 R\) to the tip "
+                                         r"extrapolates to a chord of .* R and a blade angle of .* deg \(valid: chord "
+                                         r"<= R, \|angle\| <= 90 deg\)"):
+        pm.Propeller("m", 0.1016, 2, r * 0.1016 * 0.1016, c * 0.1016, np.radians(b))  # (the same, built by hand)
+    near = "r/R c/R beta\n" + "".join(f"{r} {c} {b}\n" for r, c, b in rows[:-1])
+    with pytest.warns(UserWarning, match="the stations stop at r/R = 0.84"):
+        read_uiuc_geometry(_write(tmp_path, "n_8x6_geom.txt", near))
+
+
+def test_a_pe0_radius_printed_rounded_reads(shared_data):
+    """APC prints RADIUS to 0.01 in: 42x2-PERF.PE0 has RADIUS 2.09 and a last STATION 2.0915 in
+    (refused as beyond the radius before); the radius is taken at that station."""
+    from propmap.io.geometry_files import read_geometry
+
+    for name in ("42x2-PERF.PE0", "42x4-PERF.PE0"):
+        p = read_apc_pe0(shared_data / "apc_vendor_data" / "geometry_PE0" / name)
+        assert p.radius == pytest.approx(2.0915 * 0.0254, rel=1e-12) and p.r[-1] == pytest.approx(p.radius)
+    path = shared_data / "apc_vendor_data" / "geometry_PE0" / "42x2-PERF.PE0"
+    assert read_geometry(path, diameter_in=4.183).radius == pytest.approx(2.0915 * 0.0254)  # to 1e-3
+    with pytest.raises(GeometryFileError, match=r"diameter_in = 4.2 in, but a PE0 file gives its own radius "
+                                                r"\(diameter 4.183 in\)"):
+        read_geometry(path, diameter_in=4.2)
 
 
 def test_uiuc_geometry_ranges(tmp_path):

@@ -77,7 +77,8 @@ class Propeller:
         non-integer ``n_blades``), non-finite values, ``radius <= 0``, ``n_blades < 1``,
         a non-finite ``pitch``, arrays of different length or fewer than 2 stations, radii not strictly
         increasing or outside (0, radius], negative chord or zero chord at every station, blade angle outside
-        [-90, 90] deg.
+        [-90, 90] deg, or stations that stop short of the tip where the extrapolation of the last
+        ones (PCHIP's end polynomials) to the tip leaves chord <= radius or |theta| <= 90 deg.
 
     Notes
     -----
@@ -150,6 +151,15 @@ class Propeller:
             object.__setattr__(self, key, a)
         object.__setattr__(self, "_chord_spline", Pchip(r, chord))
         object.__setattr__(self, "_theta_spline", Pchip(r, theta))
+        if r[-1] < radius:  # the end polynomials carry the blade to the tip: they must give a blade
+            y = np.linspace(r[-1], radius, 65)
+            c_max, th_max = float(np.max(self._chord_spline(y))), float(np.max(np.abs(self._theta_spline(y))))
+            if c_max > radius or th_max > math.pi / 2:
+                raise ValueError(
+                    f"the blade from the last station (r = {r[-1]:.6g} m, {r[-1] / radius:.4g} R) to the tip "
+                    f"extrapolates to a chord of {c_max / radius:.3g} R and a blade angle of "
+                    f"{math.degrees(th_max):.4g} deg (valid: chord <= R, |angle| <= 90 deg): give stations to the "
+                    "tip (are the radii in another unit?)")
 
     @property
     def diameter(self) -> float:

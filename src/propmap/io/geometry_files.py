@@ -45,6 +45,9 @@ MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
 #: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)
 LAST_STATION_MIN = 0.9
+#: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of
+#: the thrust, would be the end polynomials' guess (a blade measured to 0.49 R made 7 times its thrust)
+LAST_STATION_REFUSED = 0.7
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII)
 
 
@@ -83,8 +86,8 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
     GeometryFileError
         Not a readable regular file (or over 16 MiB), missing columns, non-numeric or
         non-finite values, r/R outside (0, 1], c/R outside [0, 1], beta outside [-90, 90]
-        deg, radii not strictly increasing, fewer than 2 stations, a bad ``diameter_in``
-        or ``n_blades``, or no diameter given or plausibly derivable from the name (the
+        deg, radii not strictly increasing, fewer than 2 stations, a last station inside r/R =
+        0.7, a bad ``diameter_in`` or ``n_blades``, or no diameter given or plausibly derivable from the name (the
         message suggests ``--diameter-in``); each message names the file and the line.
 
     Warns
@@ -95,7 +98,8 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
         r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
         small, nearly untwisted angles in degrees (a collective given separately) do not
         warn. Or the stations stop inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond
-        them is extrapolated to the tip.
+        them is extrapolated to the tip (refused inside r/R = 0.7, LAST_STATION_REFUSED, or
+        where that extrapolation gives no blade: :class:`propmap.core.geometry.Propeller`).
     """
     text = _read_text(path, GeometryFileError)
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
@@ -145,6 +149,10 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     if _looks_like_radians(data[:, 0], data[:, 2]):
         warnings.warn(f"{where}: every blade angle beta is below 1.6 in magnitude: the column looks like radians, "
                       "but UIUC geometry files give degrees (read as degrees)", UserWarning, stacklevel=3)
+    if len(data) >= 2 and data[-1, 0] < LAST_STATION_REFUSED and np.all(np.diff(data[:, 0]) > 0):  # (else: Propeller)
+        raise GeometryFileError(f"{where}: the stations stop at r/R = {data[-1, 0]:.4g}: the outer blade, which makes "
+                                f"most of the thrust, is not given (at least r/R = {LAST_STATION_REFUSED:g} is needed; "
+                                "is the r/R column radii in another unit?)")
     R = 0.5 * float(diameter_in) * INCH
     src = source or f"UIUC Propeller Data Site geometry file {path.name}"
     if note:
@@ -206,7 +214,8 @@ def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propelle
         non-finite table value (naming the line and column), no RADIUS or BLADES line, a
         RADIUS that is not a number in [0.25, 50] in, BLADES not an integer in [1, 100],
         TWIST outside [-90, 90] deg, or invalid geometry (stations not increasing or
-        beyond RADIUS, negative chord).
+        beyond RADIUS (by more than half its last printed digit: APC prints RADIUS rounded, and
+        a last STATION within that is taken as the radius), negative chord).
     """
     text = _read_text(path, GeometryFileError)
     return _apc_pe0(Path(path), text, name=name, source=source)
@@ -274,6 +283,12 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
         i = int(np.argmax(np.abs(twist) > 90))
         raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
     station, chord = data[:, 0], data[:, 1]
+    # RADIUS is printed rounded (42x2-PERF.PE0: RADIUS 2.09 and a last STATION 2.0915 in): a station
+    # beyond it by less than half its last printed digit is the tip, and the radius is taken there
+    digits = r_raw.split(".")[1] if "." in r_raw and r_raw.split(".")[1].isdigit() else ""
+    rounding = 0.5 * 10.0 ** -len(digits) if digits else 0.0
+    if radius_in < station[-1] <= radius_in + rounding:
+        radius_in = float(station[-1])
     for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
                                     ("CHORD", chord, (0.0, radius_in))):
         bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
@@ -338,9 +353,10 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     head = text[:4000]
     if "STATION" in head and "TWIST" in head:
         prop = _apc_pe0(path, text, name=None, source="")
-        if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-9):
-            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:g} in, but a PE0 file gives its "
-                                    f"own radius (diameter {prop.diameter / 0.0254:g} in); diameter_in applies to "
+        # (to the file's own precision: RADIUS is printed to 0.01 in)
+        if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):
+            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives its "
+                                    f"own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in applies to "
                                     "UIUC files")
         if n_blades is not None and n_blades != prop.n_blades:
             raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the PE0 file states BLADES: "
