@@ -138,9 +138,8 @@ def test_vehicle_file_key_and_range(tmp_path, neurobem, generic):
     p.write_text("rotor_interference = 4.0\n" + text)
     with pytest.raises(VehicleFileError, match="rotor_interference must be >= 0 and <= 3"):
         read_vehicle(p)
-    with pytest.raises(ValueError, match=r"rotor_interference must be a number in \[0, 3\]"):
-        vehicle_wrench(replace(neurobem, rotor_interference=-1.0), generic, np.zeros(3), np.zeros(3),
-                       np.full(4, 1000.0))
+    with pytest.raises(ValueError, match=r"Vehicle.rotor_interference must be a finite number in \[0, 3\]"):
+        replace(neurobem, rotor_interference=-1.0)  # (a Vehicle built in Python is checked too)
 
 
 def test_params_file_carries_a_fitted_factor(tmp_path, generic):

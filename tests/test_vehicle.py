@@ -188,3 +188,38 @@ def test_the_documented_vehicle_file_reads(tmp_path):
     v = read_vehicle(f)
     assert v.mass == 0.8 and len(v.rotors) == 1 and v.inertia is not None and v.body_drag.wash_factor == 1.0
     assert v.rotor_interference == 1.0 and v.rotors[0].spin > 0
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"spin": 2.0}, r"Rotor.spin must be \+1 or 'ccw'"),  # (it scaled the torque and rolling moment: 2x)
+    ({"spin": 0}, r"Rotor.spin must be"),  # (the torque vanished)
+    ({"spin": float("nan")}, r"Rotor.spin must be"),
+    ({"inertia": -1.0}, r"Rotor.inertia must be a finite number >= 0"),
+    ({"inertia": float("nan")}, r"Rotor.inertia must be a finite number >= 0"),
+    ({"position": [0.1, float("nan"), 0.0]}, r"Rotor.position must be 3 finite numbers"),
+    ({"position": [0.1, 0.2]}, r"Rotor.position must be 3 finite numbers"),
+    ({"axis": [0, 0, 0]}, r"Rotor.axis must be a direction, got a zero vector"),
+    ({"propeller": "apce_8x6"}, r"Rotor.propeller must be a Propeller, got str"),
+])
+def test_a_rotor_built_in_python_is_checked(change, match):
+    """A Rotor built by hand gets the vehicle file's checks (each gave a silently wrong or NaN
+    wrench, or NumPy's error, before); 'cw'/'ccw' and a non-unit axis are accepted."""
+    prop = pm.load_propeller("apce_8x6")
+    ok = dict(position=[0.1, 0.1, 0.0], axis=[0, 0, 2.0], spin="cw", propeller=prop)
+    r = Rotor(**ok)
+    assert r.spin == -1.0 and np.array_equal(r.axis, [0, 0, 1.0])
+    with pytest.raises(ValueError, match=match):
+        Rotor(**{**ok, **change})
+
+
+def test_a_vehicle_built_in_python_is_checked():
+    prop = pm.load_propeller("apce_8x6")
+    rotor = Rotor([0.1, 0.1, 0.0], [0, 0, 1.0], 1, prop)
+    v = Vehicle(mass=1.0, rotors=[rotor], inertia=[0.01, 0.01, 0.02])
+    assert v.rotors == (rotor,) and v.inertia.shape == (3, 3) and v.inertia[2, 2] == 0.02
+    for kw, match in (({"rotors": ()}, "Vehicle.rotors must be a non-empty sequence of Rotor"),
+                      ({"mass": 0.0}, r"Vehicle.mass must be a finite number > 0"),
+                      ({"inertia": [[1.0, 0.0]]}, "Vehicle.inertia must be a 3x3 tensor or its diagonal"),
+                      ({"centre_of_mass": [0.0, 0.0]}, "Vehicle.centre_of_mass must be 3 finite numbers")):
+        with pytest.raises(ValueError, match=match):
+            Vehicle(**{"mass": 1.0, "rotors": (rotor,), **kw})

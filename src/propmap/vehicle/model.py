@@ -65,6 +65,15 @@ class Rotor:
     inertia : float, optional
         Rotor and motor inertia about the axis J_r [kg m^2] (gyroscopic and spin-up
         moments); None: not modelled.
+
+    Raises
+    ------
+    ValueError
+        Built with a ``position`` or ``axis`` that is not 3 finite numbers, an axis of zero
+        length (a non-unit axis is normalised), a ``spin`` other than +1, -1, "ccw" or "cw"
+        (stored as +1.0 or -1.0), an ``inertia`` that is not a finite number >= 0, a
+        ``propeller`` that is not a Propeller or ``params`` that are not a parameter set; the
+        message names the field. (:func:`propmap.vehicle.read_vehicle` checks a file's ranges.)
     """
 
     position: np.ndarray
@@ -73,6 +82,47 @@ class Rotor:
     propeller: Propeller
     params: SectionParams | None = None
     inertia: float | None = None
+
+    def __post_init__(self):
+        position = _vector3("Rotor.position", self.position)
+        axis = _vector3("Rotor.axis", self.axis)
+        scale = float(np.max(np.abs(axis)))
+        if scale == 0.0:
+            raise ValueError("Rotor.axis must be a direction, got a zero vector")
+        axis = axis / scale
+        axis = axis / float(np.linalg.norm(axis))
+        spin = {"ccw": 1.0, "cw": -1.0}.get(self.spin.lower()) if isinstance(self.spin, str) else (
+            float(self.spin) if _is_number(self.spin) and self.spin in (1, -1) else None)
+        if spin is None:
+            raise ValueError(f"Rotor.spin must be +1 or 'ccw' (counter-clockwise about the axis) or -1 or 'cw', got "
+                             f"{self.spin!r:.40}")
+        if not isinstance(self.propeller, Propeller):
+            raise ValueError(f"Rotor.propeller must be a Propeller, got {type(self.propeller).__name__}")
+        if self.params is not None and not isinstance(self.params, SectionParams):
+            raise ValueError(f"Rotor.params must be a parameter set or None, got {type(self.params).__name__}")
+        if self.inertia is not None and not (_is_number(self.inertia) and 0 <= self.inertia < np.inf):
+            raise ValueError(f"Rotor.inertia must be a finite number >= 0 kg m^2 or None, got {self.inertia!r:.40}")
+        object.__setattr__(self, "position", position)
+        object.__setattr__(self, "axis", axis)
+        object.__setattr__(self, "spin", spin)
+        if self.inertia is not None:
+            object.__setattr__(self, "inertia", float(self.inertia))
+
+
+def _is_number(x) -> bool:
+    """A real number, not a bool."""
+    return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
+
+
+def _vector3(name: str, value) -> np.ndarray:
+    """``value`` as 3 finite floats (a copy); ValueError naming ``name`` otherwise."""
+    try:
+        a = np.array(value, dtype=float).reshape(-1) if np.asarray(value).dtype.kind in "iuf" else None
+    except (TypeError, ValueError):
+        a = None
+    if a is None or a.shape != (3,) or not np.all(np.isfinite(a)):
+        raise ValueError(f"{name} must be 3 finite numbers (body axes), got {value!r:.60}")
+    return a
 
 
 @dataclass(frozen=True, eq=False)
@@ -106,6 +156,16 @@ class Vehicle:
         model as it is).
     name, source : str
         Free text (what the vehicle is, where its numbers come from).
+
+    Raises
+    ------
+    ValueError
+        Built with a mass or gravity not a finite number > 0, a negative body area or motor
+        time constant, a rotor interference outside [0, 3], no rotors or an item of
+        ``rotors`` that is not a Rotor (a list is stored as a tuple), a centre of mass that is
+        not 3 finite numbers, an inertia that is not a finite 3x3 tensor or its diagonal
+        (stored as the 3x3 tensor), or a body drag that is not a BodyDrag; the message
+        names the field. (:func:`propmap.vehicle.read_vehicle` checks a file's ranges.)
     """
 
     mass: float
@@ -119,6 +179,34 @@ class Vehicle:
     rotor_interference: float = 0.0
     name: str = ""
     source: str = ""
+
+    def __post_init__(self):
+        for name, low in (("mass", 0.0), ("gravity", 0.0)):
+            v = getattr(self, name)
+            if not (_is_number(v) and low < v < np.inf):
+                raise ValueError(f"Vehicle.{name} must be a finite number > 0, got {v!r:.40}")
+        for name, (lo, hi) in (("body_area", (0.0, np.inf)), ("motor_time_constant", (0.0, np.inf)),
+                               ("rotor_interference", (0.0, 3.0))):
+            v = getattr(self, name)
+            if not (_is_number(v) and lo <= v <= hi and np.isfinite(v)):
+                raise ValueError(f"Vehicle.{name} must be a finite number in [{lo:g}, {hi:g}], got {v!r:.40}")
+        rotors = tuple(self.rotors) if isinstance(self.rotors, (list, tuple)) else None
+        if not rotors or not all(isinstance(r, Rotor) for r in rotors):
+            raise ValueError(f"Vehicle.rotors must be a non-empty sequence of Rotor, got {self.rotors!r:.60}")
+        object.__setattr__(self, "rotors", rotors)
+        object.__setattr__(self, "centre_of_mass", _vector3("Vehicle.centre_of_mass", self.centre_of_mass))
+        if self.inertia is not None:
+            try:
+                inertia = np.array(self.inertia, dtype=float)
+            except (TypeError, ValueError):
+                inertia = np.full(1, np.nan)
+            inertia = np.diag(inertia) if inertia.shape == (3,) else inertia
+            if inertia.shape != (3, 3) or not np.all(np.isfinite(inertia)):
+                raise ValueError(f"Vehicle.inertia must be a 3x3 tensor or its diagonal (3 numbers) [kg m^2], finite, "
+                                 f"got {self.inertia!r:.60}")
+            object.__setattr__(self, "inertia", inertia)
+        if self.body_drag is not None and not isinstance(self.body_drag, BodyDrag):
+            raise ValueError(f"Vehicle.body_drag must be a BodyDrag or None, got {type(self.body_drag).__name__}")
 
     @property
     def weight(self) -> float:
@@ -283,9 +371,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     """
     air = params.air if air is None else air
     n_rot = len(vehicle.rotors)
-    kappa = vehicle.rotor_interference
-    if isinstance(kappa, (bool, np.bool_)) or not isinstance(kappa, numbers.Real) or not 0.0 <= kappa <= 3.0:
-        raise ValueError(f"vehicle.rotor_interference must be a number in [0, 3], got {kappa!r:.60}")
+    kappa = vehicle.rotor_interference  # (in [0, 3]: Vehicle checks it)
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
     om = _samples("rotor_omega", rotor_omega, n_rot)
