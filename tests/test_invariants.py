@@ -305,3 +305,19 @@ def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
             np.testing.assert_allclose(getattr(whole, f), np.concatenate([getattr(q, f) for q in parts]),
                                        rtol=1e-13, atol=1e-15, err_msg=f)
         assert whole.converged.all()
+
+
+def test_a_bool_inside_an_input_list_is_refused():
+    """NumPy reads [800.0, True] as [800.0, 1.0]: rotor_loads ran a rotor at 1 rad/s (T = -0.057 N);
+    a scalar bool was already refused. Every array input now refuses one, naming it."""
+    from propmap.vehicle import read_vehicle, vehicle_wrench
+
+    p, g = pm.load_propeller("apce_8x6"), pm.generic_params()
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    for call, name in ((lambda: pm.rotor_loads(p, g, [800.0, True], 5.0, 0.3), "omega"),
+                       (lambda: pm.rotor_wrench(p, g, [True, 0, 0], [0, 0, 1], 800.0), "velocity"),
+                       (lambda: vehicle_wrench(veh, g, [0, 0, 0], [True, 0, 0], [900.0] * 4), "angular_velocity"),
+                       (lambda: vehicle_wrench(veh, g, [0, 0, 0], [0, 0, 0], [True, 900.0, 900.0, 900.0]),
+                        "rotor_omega")):
+        with pytest.raises(ValueError, match=f"^{name} must be "):
+            call()

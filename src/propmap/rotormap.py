@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
+from .core.geometry import has_bool
 from .io.mapfile import read_dataset
 
 __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap", "check_map"]
@@ -215,7 +216,7 @@ class RotorMap:
                 a = np.asarray(v)
             except ValueError:  # a ragged list
                 raise ValueError(f"{name} must be a number or a rectangular array of numbers, got {v!r:.60}") from None
-            if a.dtype.kind not in "fiu":
+            if a.dtype.kind not in "fiu" or has_bool(v):
                 raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
             arrays.append(a.astype(float, copy=False))
         try:

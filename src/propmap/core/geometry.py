@@ -31,10 +31,11 @@ def _real(value) -> float | None:
         return None
 
 
-def _has_bool(value) -> bool:
-    """Whether a (nested) list or tuple holds a bool (NumPy would read it as 0 or 1)."""
+def has_bool(value) -> bool:
+    """Whether a (nested) list or tuple holds a bool (NumPy would read it as 0 or 1, so that
+    ``[800.0, True]`` became a rotation rate of 1 rad/s): the array inputs refuse it."""
     if isinstance(value, (list, tuple)):
-        return any(_has_bool(v) for v in value)
+        return any(has_bool(v) for v in value)
     return isinstance(value, (bool, np.bool_))
 
 
@@ -114,7 +115,7 @@ class Propeller:
             value = getattr(self, key)
             try:
                 # no bools, strings or objects read as numbers
-                numeric = np.asarray(value).dtype.kind in "iuf" and not _has_bool(value)
+                numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
                 a = np.array(value, dtype=float, copy=True).reshape(-1)
             except (TypeError, ValueError, OverflowError):
                 numeric = False

@@ -18,7 +18,7 @@ from . import _physics as ph
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, _derivative_inputs, _jacobian, differentiable
 from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
-from .geometry import Propeller
+from .geometry import Propeller, has_bool
 from .loads import RotorLoads, _new_loads
 from .nodes import _lift_slope, _lift_slope_name, _prepared
 
@@ -132,7 +132,7 @@ def _as_array(name: str, value) -> np.ndarray:
             a = a.astype(float)
         except (TypeError, ValueError, OverflowError):
             raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None
-    if a.dtype.kind not in "fiu":
+    if a.dtype.kind not in "fiu" or has_bool(value):
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
     with np.errstate(invalid="ignore"):

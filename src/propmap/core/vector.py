@@ -15,7 +15,7 @@ import numpy as np
 from .airfoil import Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import STILL_AIR
-from .geometry import Propeller
+from .geometry import Propeller, has_bool
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
@@ -91,7 +91,7 @@ def _vectors(name: str, value) -> np.ndarray:
         a = np.asarray(value)
     except ValueError:  # a ragged list
         raise ValueError(f"{name} must be a rectangular array of numbers, got {value!r:.60}") from None
-    if a.dtype.kind not in "iuf":
+    if a.dtype.kind not in "iuf" or has_bool(value):
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
     a = a.astype(float)
     if a.shape[-1:] != (3,):

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
-from ..core.geometry import Propeller
+from ..core.geometry import Propeller, has_bool
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from .jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
@@ -117,7 +117,8 @@ def _is_number(x) -> bool:
 def _vector3(name: str, value) -> np.ndarray:
     """``value`` as 3 finite floats (a copy); ValueError naming ``name`` otherwise."""
     try:
-        a = np.array(value, dtype=float).reshape(-1) if np.asarray(value).dtype.kind in "iuf" else None
+        numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
+        a = np.array(value, dtype=float).reshape(-1) if numeric else None
     except (TypeError, ValueError):
         a = None
     if a is None or a.shape != (3,) or not np.all(np.isfinite(a)):
@@ -289,7 +290,7 @@ def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray
 def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
     """``value`` as a float array of shape (N, n_cols) (a single row is promoted to N = 1)."""
     a = np.asarray(value)
-    if a.dtype.kind not in "iuf":
+    if a.dtype.kind not in "iuf" or has_bool(value):
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
     a = a.astype(float)
     if a.ndim == 1:
