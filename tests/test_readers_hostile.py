@@ -477,6 +477,25 @@ def test_blade_angles_in_radians_warn(tmp_path):
         read_uiuc_geometry(_write(tmp_path, "deg_9x6_geom.txt", GEOM))
 
 
+def test_a_chord_column_in_another_unit_warns(tmp_path, shared_data):
+    """The c/R column written as the chord in inches (8 in blade) or as c/D gave 3.4x or half the
+    thrust without a word; the largest c/R outside [0.12, 0.6] now warns (the catalogue's 147
+    propellers: 0.15-0.39). None of the 218 UIUC geometry files of vol. 1 and 2 warns."""
+    good = "r/R c/R beta\n0.15 0.12 30\n0.5 0.2 20\n1.0 0.06 10\n"
+    for factor, shown in ((4.0, "0.8"), (0.5, "0.1")):
+        rows = [line.split() for line in good.splitlines()[1:]]
+        text = "r/R c/R beta\n" + "".join(f"{r} {float(c) * factor:g} {b}\n" for r, c, b in rows)
+        with pytest.warns(UserWarning, match=f"the largest c/R is {shown}, where the 147 catalogue propellers' lie "
+                                             r"within 0.15-0.39: is the c/R column the chord in another unit, or c/D\?"):
+            read_uiuc_geometry(_write(tmp_path, f"x{factor:g}_9x6_geom.txt", text))
+    files = sorted((shared_data / "uiuc_propdb").glob("*/*geom*.txt"))
+    with warnings.catch_warnings():
+        warnings.filterwarnings("error", message=".*largest c/R")
+        for f in files:
+            read_uiuc_geometry(f, diameter_in=9)
+    assert len(files) > 100
+
+
 def test_stations_short_of_the_tip_warn(tmp_path):
     # the blade beyond the last station is extrapolated: said, not silent (r/R 0.8 here)
     p = _write(tmp_path, "part_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.8 0.1 20\n")

@@ -43,6 +43,9 @@ _SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]
 NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
+#: the largest c/R of a UIUC file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
+#: APC's 66 PE0 files in the shared data: 0.161-0.235): a chord in inches gave 3.4x the thrust, c/D half
+CHORD_MAX_PLAUSIBLE = (0.12, 0.6)
 #: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)
 LAST_STATION_MIN = 0.9
 #: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of
@@ -97,9 +100,11 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
         radians (every one below 1.6, and read as radians they make a near-constant pitch
         r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
         small, nearly untwisted angles in degrees (a collective given separately) do not
-        warn. Or the stations stop inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond
-        them is extrapolated to the tip (refused inside r/R = 0.7, LAST_STATION_REFUSED, or
-        where that extrapolation gives no blade: :class:`propmap.core.geometry.Propeller`).
+        warn. Or the largest c/R lies outside [0.12, 0.6] (CHORD_MAX_PLAUSIBLE; the
+        catalogue's: 0.15-0.39), as a chord in another unit or c/D gives. Or the stations stop
+        inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond them is extrapolated to the tip
+        (refused inside r/R = 0.7, LAST_STATION_REFUSED, or where that extrapolation gives no
+        blade: :class:`propmap.core.geometry.Propeller`).
     """
     text = _read_text(path, GeometryFileError)
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
@@ -146,6 +151,11 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
         if not (math.isfinite(pitch_in) and 0 < pitch_in <= 10 * NAME_DIAMETER_RANGE_IN[1]):
             pitch_in = None  # catalogue information only: an implausible one is dropped
+    c_max = float(np.max(data[:, 1]))
+    if not CHORD_MAX_PLAUSIBLE[0] <= c_max <= CHORD_MAX_PLAUSIBLE[1]:
+        warnings.warn(f"{where}: the largest c/R is {c_max:.3g}, where the 147 catalogue propellers' lie within "
+                      "0.15-0.39: is the c/R column the chord in another unit, or c/D? (read as c/R)", UserWarning,
+                      stacklevel=3)
     if _looks_like_radians(data[:, 0], data[:, 2]):
         warnings.warn(f"{where}: every blade angle beta is below 1.6 in magnitude: the column looks like radians, "
                       "but UIUC geometry files give degrees (read as degrees)", UserWarning, stacklevel=3)
