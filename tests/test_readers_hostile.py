@@ -496,6 +496,20 @@ def test_a_chord_column_in_another_unit_warns(tmp_path, shared_data):
     assert len(files) > 100
 
 
+def test_key_value_lines_of_a_geometry_file_are_said_unread_and_a_title_reads(tmp_path):
+    """``blades = 3`` above the table was dropped silently (run as 2 blades); a title or comment
+    line above the header read with read_uiuc_geometry but not with read_geometry (by content)."""
+    p = _write(tmp_path, "meta_9x6_geom.txt", "diameter_in = 10\nblades = 3\n" + GEOM)
+    with pytest.warns(UserWarning, match=r"diameter_in = 10 \(line 1\), blades = 3 \(line 2\) not read: a UIUC "
+                                         r"geometry file is its r/R c/R beta table"):
+        assert read_uiuc_geometry(p).n_blades == 2
+    titled = _write(tmp_path, "titled_9x6_geom.txt", "# my propeller, measured 2024\nMy prop\n" + GEOM
+                    + "# a comment between rows\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read_geometry(titled, n_blades=2).same_geometry(read_uiuc_geometry(titled))
+
+
 def test_stations_short_of_the_tip_warn(tmp_path):
     # the blade beyond the last station is extrapolated: said, not silent (r/R 0.8 here)
     p = _write(tmp_path, "part_9x6_geom.txt", "r/R c/R beta\n0.15 0.1 30\n0.3 0.12 25\n0.8 0.1 20\n")

@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller
-from .inputs import (_check_column, _check_number, _clip, _line_of, _meta, _read_table, _read_text, parse_number,
+from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, parse_number,
                      show_path)
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "MM_FAMILIES",
@@ -117,6 +117,11 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     _check_column(table, 1, "c/R", 0.0, 1.0, path, GeometryFileError)
     _check_column(table, 2, "beta", -90.0, 90.0, path, GeometryFileError, unit="deg")
     data = table.data
+    if table.meta:  # (a UIUC geometry file has none: its name gives the size, --blades the count)
+        shown = ", ".join(f"{k} = {v} (line {line})" for k, (v, line) in list(table.meta.items())[:4])
+        warnings.warn(f"{where}: {shown} not read: a UIUC geometry file is its r/R c/R beta table (the diameter from "
+                      "the file name or diameter_in, the blade count from n_blades: --diameter-in, --blades)",
+                      UserWarning, stacklevel=3)
     stem = path.name.replace("_geom.txt", "")
     D_name, P_name, unit, family = _size_from_name(stem)
     note = ""
@@ -321,11 +326,12 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
 
 
 def _is_uiuc_geometry(text: str) -> bool:
+    """Whether the text has a UIUC geometry header (``r/R ...``) in its first 64 kB, after any
+    title, comment or ``key = value`` lines (as :func:`read_uiuc_geometry` reads it)."""
     for ln in io.StringIO(text[:65536], newline=None):
         words = ln.split()
-        if not words or _meta(ln.rstrip("\n")):
-            continue
-        return words[0].lower() == "r/r"
+        if words and words[0].lower() == "r/r":
+            return True
     return False
 
 

@@ -235,8 +235,9 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     """Numeric rows of a whitespace table whose header starts with ``expected``.
 
     Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
-    ``RPM average = 4042``) are metadata; any other line that is not numeric is an error
-    naming the file and the line. Every value must be a finite number.
+    ``RPM average = 4042``) are metadata, lines starting with ``#`` comments; any other line
+    that is not numeric is an error naming the file and the line. Every value must be a
+    finite number.
     """
     name = show_path(path)
     meta: dict[str, tuple[str, int]] = {}
@@ -266,7 +267,7 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     n = len(expected)
     for k, ln in enumerate(lines, start=start + 1):
         ln = ln.rstrip("\n")
-        if not ln or ln.isspace():
+        if not ln or ln.isspace() or ln.lstrip().startswith("#"):
             continue
         m = _meta(ln)
         if m:
