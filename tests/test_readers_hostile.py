@@ -630,3 +630,15 @@ def test_propeller_refuses_wrong_types_with_value_error(kw, match):
     assert type(info.value) is ValueError
     p = pm.Propeller(**{**args, "n_blades": 3.0, "radius": np.float32(0.1), "pitch": 0.05})
     assert p.n_blades == 3 and isinstance(p.n_blades, int) and p.pitch == 0.05
+
+
+def test_a_stall_angle_in_radians_warns(tmp_path):
+    """alpha0_deg = 0.36 (20.6 deg in radians) gave 0.40x the thrust of the paper's set without a
+    word; a stall angle below 2 deg now warns (Table I: 20.4-27.5 deg)."""
+    p = _write(tmp_path, "p.toml", PARAMS.replace("alpha0_deg = 20.6", "alpha0_deg = 0.36"))
+    with pytest.warns(UserWarning, match=r"alpha0_deg = 0.36 deg is small for the angle it is: radians\? "
+                                         r"\(0.36 rad = 20.6 deg; read as degrees\)"):
+        read_params(p)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_params(_write(tmp_path, "q.toml", PARAMS))

@@ -225,6 +225,7 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
             raise ValueError(f"{where}: {key} must be true or false, got {short_repr(data[key])}")
         elif key in choices and data[key] not in choices[key]:
             raise ValueError(f"{where}: {key} must be one of {', '.join(choices[key])}, got {short_repr(data[key])}")
+    _radian_like(data, where)
     kw = {}
     if fill:
         kw = _generic_fill(data, keys, where)
@@ -243,6 +244,23 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
     body_from_dict(data, where=where)  # validated here too, so that every reader refuses a bad table
     coverage_from_dict(data, where=where)
     return params
+
+
+#: below these magnitudes [deg] an angle key's value looks like radians (warned): the paper's stall angle
+#: alpha0_deg (its Table I: 20.4-27.5 deg; 0.36 rad is 20.6 deg). (Not alpha_L0_deg: the catalogue's
+#: calibrated sets span -10.1 to +2.2 deg, one at 0.19 deg, so a radian value cannot be told apart.)
+RADIAN_LIKE_DEG = {"alpha0_deg": 2.0}
+
+
+def _radian_like(data: dict, where: str) -> None:
+    """Warn of an angle key whose value looks like radians (RADIAN_LIKE_DEG); it is read as degrees."""
+    import warnings
+
+    for key, small in RADIAN_LIKE_DEG.items():
+        v = data.get(key)
+        if isinstance(v, (int, float)) and not isinstance(v, bool) and 0 < abs(v) < small:
+            warnings.warn(f"{where}: {key} = {v:g} deg is small for the angle it is: radians? ({v:g} rad = "
+                          f"{math.degrees(v):.3g} deg; read as degrees)", UserWarning, stacklevel=4)
 
 
 def read_coverage(path) -> dict | None:
