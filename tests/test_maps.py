@@ -112,7 +112,7 @@ def test_scalar_and_array_queries_agree(small_map, interpolation):
 
 def test_windmilling_negative_torque_and_thrust_are_kept(small_map):
     """At 4000 rpm and 15 m/s of axial climb (J = 1.1) apce_8x6 windmills: the model's torque and thrust are
-    negative (-0.0015 N m, -0.41 N; regression values of the calibrated set). The map holds them as they are
+    negative (-0.0029 N m, -0.39 N with the calibrated set, 2026-11-26). The map holds them as they are
     (the table divides by (Omega R)^2 + V^2, never by a load), in Python and so in the C header."""
     prop, params, ds = small_map
     rm = RotorMap(ds)

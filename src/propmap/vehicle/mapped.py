@@ -153,11 +153,6 @@ class VehicleMap:
             Body rates w [rad/s].
         rotor_omega : array_like, shape (N, n_rotors) or (n_rotors,)
             Rotor speeds Omega_i >= 0 [rad/s], in the vehicle's rotor order.
-
-        Notes
-        -----
-        One RotorMap's scalar path reuses its output buffers: evaluate one VehicleMap from
-        one thread at a time (or give each thread its own maps).
         wind : array_like, shape (N, 3) or (3,), optional
             Wind velocity in body axes [m/s].
         out_of_grid : {"raise", "clip", "nan"}
@@ -174,6 +169,11 @@ class VehicleMap:
             Inputs not numbers, of the wrong shape, non-finite, with sample counts that do
             not match; what the maps raise (a query outside a grid under "raise", naming it;
             Omega < 0).
+
+        Notes
+        -----
+        One RotorMap's scalar path reuses its output buffers: evaluate one VehicleMap from
+        one thread at a time (or give each thread its own maps).
         """
         n_rot = len(self.vehicle.rotors)
         v = _samples("velocity", velocity, 3)
