@@ -321,3 +321,24 @@ def test_a_bool_inside_an_input_list_is_refused():
                         "rotor_omega")):
         with pytest.raises(ValueError, match=f"^{name} must be "):
             call()
+
+
+def test_vehicle_and_rotor_wrench_messages_name_their_own_arguments():
+    """Messages that named rotor_loads' arguments (omega, airspeed, 'omega, airspeed and
+    incidence') for vehicle_wrench's and rotor_wrench's inputs now name those inputs."""
+    from propmap.vehicle import read_vehicle, vehicle_wrench
+
+    p, g = pm.load_propeller("apce_8x6"), pm.generic_params()
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml")
+    with pytest.raises(ValueError, match=r"rotor_omega must be <= 100000 rad/s, got 200000 for rotor 2 \(sample 1"):
+        vehicle_wrench(veh, g, [0, 0, 0], [0, 0, 0], [900.0, 2e5, 900.0, 900.0])
+    with pytest.raises(ValueError, match=r"rotor 1's hub airspeed \|v \+ w x r - wind\| is 600 m/s at sample 1"):
+        vehicle_wrench(veh, g, [600.0, 0, 0], [0, 0, 0], [900.0] * 4)
+    with pytest.raises(ValueError, match="derivatives: unknown name 'foo'; valid for a vehicle: omega, rho"):
+        vehicle_wrench(veh, g, [0, 0, 0], [0, 0, 0], [900.0] * 4, derivatives=["foo"])
+    with pytest.raises(ValueError, match="valid: omega, airspeed, incidence, collective, rho or a numeric field"):
+        pm.rotor_loads(p, g, 800.0, 5.0, 0.3, derivatives=["foo"])
+    with pytest.raises(ValueError, match=r"omega \(shape \(2,\)\) must broadcast with velocity's samples"):
+        pm.rotor_wrench(p, g, np.zeros((3, 3)), [0, 0, 1], [800.0, 900.0])
+    with pytest.raises(TypeError, match="name must be a catalogue propeller's name"):
+        pm.load_propeller(None)

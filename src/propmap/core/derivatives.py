@@ -76,7 +76,8 @@ def _derivative_inputs(derivatives, params) -> tuple:
         bad = [w for w in wrt if w not in DERIVATIVE_INPUTS and w not in own]
         if bad:
             raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: "
-                             f"{', '.join(DERIVATIVE_INPUTS)} or a field of {type(params).__name__}")
+                             f"{', '.join((*DERIVATIVE_INPUTS, RHO))} or a numeric field of "
+                             f"{type(params).__name__}")
     return wrt
 
 

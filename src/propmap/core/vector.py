@@ -163,9 +163,9 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     try:
         shape = np.broadcast_shapes(speed.shape, np.shape(omega))
     except ValueError:
-        shape = None  # rotor_loads names the argument
-    if shape is not None:
-        _check_spin(s, shape)
+        raise ValueError(f"omega (shape {np.shape(omega)}) must broadcast with velocity's samples (shape "
+                         f"{speed.shape}: velocity of shape {speed.shape + (3,)})") from None
+    _check_spin(s, shape)
     if derivatives is True or isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
         raise ValueError(f"derivatives must be a sequence of names, got {derivatives!r:.60}")
     names = tuple(dict.fromkeys(derivatives or ()))

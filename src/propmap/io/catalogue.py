@@ -126,7 +126,11 @@ def get_entry(name: str) -> CatalogueEntry:
     ------
     KeyError
         Unknown name; the message suggests close names.
+    TypeError
+        ``name`` not a str.
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a catalogue propeller's name (str), got {type(name).__name__}")
     cat = catalogue()
     if name not in cat:
         import difflib
@@ -145,6 +149,8 @@ def load_propeller(name: str) -> Propeller:
     ------
     KeyError
         Unknown name.
+    TypeError
+        ``name`` not a str.
     """
     e = get_entry(name)
     path = _data_path(e.geometry_file)

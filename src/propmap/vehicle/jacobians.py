@@ -25,9 +25,10 @@ BODY_DRAG_NAMES = ("drag_area_x", "drag_area_y", "drag_area_z", "wash_factor")
 MOTION_NAMES = ("velocity", "angular_velocity", "centre_of_mass")
 
 
-def requested_derivatives(derivatives, vehicle: Vehicle) -> tuple:
-    """The names ``vehicle_wrench(derivatives=...)`` asks for (() for none); the section
-    parameters' are checked by rotor_loads."""
+def requested_derivatives(derivatives, vehicle: Vehicle, params=None) -> tuple:
+    """The names ``vehicle_wrench(derivatives=...)`` asks for (() for none); with ``params``
+    a name that is neither the vehicle's nor a field of the set is refused here (the section
+    parameters' values are checked by rotor_loads)."""
     if derivatives is False or derivatives is None:
         return ()
     if derivatives is True:
@@ -39,7 +40,15 @@ def requested_derivatives(derivatives, vehicle: Vehicle) -> tuple:
     if bad:
         raise ValueError(f"derivatives: {bad[0]!r} is a rotor's input, not the vehicle's; use 'omega', "
                          "'velocity', 'angular_velocity', 'centre_of_mass', a section parameter or an airframe term")
-    if any(n not in ("omega", "rho", *BODY_DRAG_NAMES, *MOTION_NAMES) for n in wrt) and any(r.params is not None
+    own = ("omega", "rho", *BODY_DRAG_NAMES, *MOTION_NAMES)
+    if params is not None:
+        from dataclasses import fields
+
+        unknown = [n for n in wrt if n not in own and n not in {f.name for f in fields(params)}]
+        if unknown:
+            raise ValueError(f"derivatives: unknown name {unknown[0]!r:.60}; valid for a vehicle: {', '.join(own)} "
+                             f"or a numeric field of {type(params).__name__}")
+    if any(n not in own for n in wrt) and any(r.params is not None
                                                                             for r in vehicle.rotors):
         raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
                          "(a rotor of this vehicle has its own)")

@@ -38,7 +38,8 @@ import numpy as np
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool
-from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, rotor_loads
+from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads,
+                           rotor_loads)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from .jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
@@ -380,6 +381,10 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         n, i = np.argwhere(om < 0)[0]
         raise ValueError(f"rotor_omega must be >= 0 rad/s (the rate's magnitude; the sense is the rotor's spin), got "
                          f"{om[n, i]:g} for rotor {i + 1} (sample {n + 1})")
+    if np.any(om > OMEGA_MAX):
+        n, i = np.argwhere(om > OMEGA_MAX)[0]
+        raise ValueError(f"rotor_omega must be <= {OMEGA_MAX:g} rad/s, got {om[n, i]:g} for rotor {i + 1} (sample "
+                         f"{n + 1}; rpm given for rad/s?)")
     wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
     acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
     arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
@@ -392,7 +397,13 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
-    wrt = requested_derivatives(derivatives, vehicle)
+    speed = np.linalg.norm(V_hub, axis=2)
+    if np.any(speed > AIRSPEED_MAX):
+        n, i = np.argwhere(speed > AIRSPEED_MAX)[0]
+        raise ValueError(f"rotor {i + 1}'s hub airspeed |v + w x r - wind| is {speed[n, i]:.4g} m/s at sample {n + 1}, "
+                         f"beyond the model's {AIRSPEED_MAX:g} m/s (velocity, angular_velocity and wind in m/s and "
+                         "rad/s?)")
+    wrt = requested_derivatives(derivatives, vehicle, params)
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
