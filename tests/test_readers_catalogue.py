@@ -84,7 +84,8 @@ def test_pchip_interpolation_passes_through_stations_without_overshoot(apc8x6):
     [
         ("r/R c/R\n0.2 0.1\n0.5 0.1\n", "expected columns"),
         ("r/R c/R beta\n0.2 0.1 30\n0.5 0.1\n", "line 3"),
-        ("r/R c/R beta\n0.5 0.1 30\n0.2 0.1 20\n", "strictly increasing"),
+        ("r/R c/R beta\n0.5 0.1 30\n0.2 0.1 20\n",
+         r"line 3: r/R = 0.2 does not exceed the previous station's 0.5 \(line 2\): the stations must be strictly"),
         ("r/R c/R beta\n0.2 0.1 30\n0.5 abc 20\n", "non-numeric"),
         ("r/R c/R beta\n0.2 0.1 30\n1.5 0.1 20\n", "radius"),
         ("", "empty"),

@@ -117,6 +117,12 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     _check_column(table, 1, "c/R", 0.0, 1.0, path, GeometryFileError)
     _check_column(table, 2, "beta", -90.0, 90.0, path, GeometryFileError, unit="deg")
     data = table.data
+    step = np.diff(data[:, 0])
+    if np.any(step <= 0):  # (in the file's terms: Propeller would say it in metres, counting from 0)
+        i = int(np.argmax(step <= 0)) + 1
+        raise GeometryFileError(f"{where}, line {int(table.lines[i])}: r/R = {data[i, 0]:g} does not exceed the "
+                                f"previous station's {data[i - 1, 0]:g} (line {int(table.lines[i - 1])}): the stations "
+                                "must be strictly increasing")
     if table.meta:  # (a UIUC geometry file has none: its name gives the size, --blades the count)
         shown = ", ".join(f"{k} = {v} (line {line})" for k, (v, line) in list(table.meta.items())[:4])
         warnings.warn(f"{where}: {shown} not read: a UIUC geometry file is its r/R c/R beta table (the diameter from "
