@@ -179,7 +179,7 @@ def trim_collective(
                 "as an input, and trim)") if stalls else ""
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
-            f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s, "
+            f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, "
             f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
             f"[{(Tg[i] + T1[i]).min():.6g}, {(Tg[i] + T1[i]).max():.6g}] N{peak}")
     j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
@@ -198,7 +198,8 @@ def trim_collective(
             k = int(np.argmax(~res.success))
             i = int(np.flatnonzero(todo)[k])
             raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
-                            f"(omega={om1[i]:.6g} rad/s, thrust={T1[i]:.6g} N; scipy status {int(res.status[k])})")
+                            f"(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, thrust={T1[i]:.6g} N; "
+                            f"scipy status {int(res.status[k])})")
         x[todo] = res.x
     ok = ~missing
     loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
