@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.geometry import INCH, Propeller
+from ..core.geometry import INCH, Propeller, rotor_like
 from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, parse_number,
                      show_path)
 
@@ -101,7 +101,8 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
         r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
         small, nearly untwisted angles in degrees (a collective given separately) do not
         warn. Or the largest c/R lies outside [0.12, 0.6] (CHORD_MAX_PLAUSIBLE; the
-        catalogue's: 0.15-0.39), as a chord in another unit or c/D gives. Or the stations stop
+        catalogue's: 0.15-0.39), as a chord in another unit or c/D gives (below it, not for a
+        helicopter-style rotor's slender blades: :func:`propmap.core.geometry.rotor_like`). Or the stations stop
         inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond them is extrapolated to the tip
         (refused inside r/R = 0.7, LAST_STATION_REFUSED, or where that extrapolation gives no
         blade: :class:`propmap.core.geometry.Propeller`).
@@ -162,11 +163,6 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
         if not (math.isfinite(pitch_in) and 0 < pitch_in <= 10 * NAME_DIAMETER_RANGE_IN[1]):
             pitch_in = None  # catalogue information only: an implausible one is dropped
-    c_max = float(np.max(data[:, 1]))
-    if not CHORD_MAX_PLAUSIBLE[0] <= c_max <= CHORD_MAX_PLAUSIBLE[1]:
-        warnings.warn(f"{where}: the largest c/R is {c_max:.3g}, where the 147 catalogue propellers' lie within "
-                      "0.15-0.39: is the c/R column the chord in another unit, or c/D? (read as c/R)", UserWarning,
-                      stacklevel=3)
     if _looks_like_radians(data[:, 0], data[:, 2]):
         warnings.warn(f"{where}: every blade angle beta is below 1.6 in magnitude: the column looks like radians, "
                       "but UIUC geometry files give degrees (read as degrees)", UserWarning, stacklevel=3)
@@ -184,6 +180,12 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
                          pitch=None if pitch_in is None else pitch_in * INCH, source=src)
     except ValueError as exc:
         raise GeometryFileError(f"{where}: {exc}") from None
+    c_max = float(np.max(data[:, 1]))
+    # (a helicopter-style rotor's slender blades, c/R 0.05-0.1, are not warned: rotor_like)
+    if c_max > CHORD_MAX_PLAUSIBLE[1] or (c_max < CHORD_MAX_PLAUSIBLE[0] and rotor_like(prop) is None):
+        warnings.warn(f"{where}: the largest c/R is {c_max:.3g}, where the 147 catalogue propellers' lie within "
+                      "0.15-0.39: is the c/R column the chord in another unit, or c/D? (read as c/R)", UserWarning,
+                      stacklevel=3)
     if data[-1, 0] < LAST_STATION_MIN:
         warnings.warn(f"{where}: the stations stop at r/R = {data[-1, 0]:.4g}: the blade from there to the tip is "
                       "extrapolated from the last stations (chord and blade angle); give stations to r/R = 1",
