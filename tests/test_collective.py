@@ -383,3 +383,20 @@ def test_cli_fit_loads_of_a_collective_sweep_warns_with_the_generic_base(tmp_pat
     assert "section:NAME" in capsys.readouterr().err
     assert main(args + ["--base", "section:naca0015", "--out", str(tmp_path / "b.toml")]) == 0
     assert "section:NAME" not in capsys.readouterr().err
+
+
+def test_negative_blade_angles_warn_as_a_mirrored_geometry(tmp_path, capsys):
+    """A pusher's or mirrored file (every blade angle negative) made a negative thrust, and the one
+    warning called it a rotor's blade and named the symmetric section presets; in radians it
+    was not warned at all."""
+    rows = [(0.15, 0.12, 30.0), (0.4, 0.18, 24.0), (0.75, 0.14, 15.0), (1.0, 0.05, 11.0)]
+    neg = tmp_path / "neg_8x6_geom.txt"
+    neg.write_text("r/R c/R beta\n" + "".join(f"{r} {c} {-b}\n" for r, c, b in rows))
+    assert main(["loads", str(neg), "--blades", "2", "--rpm", "6000"]) == 0
+    err = capsys.readouterr().err
+    assert "the blade angles are negative (-15.0 deg at 0.75 R): a pusher's or a mirrored geometry?" in err
+    assert "a rotor's blade" not in err
+    rad = tmp_path / "rad_8x6_geom.txt"
+    rad.write_text("r/R c/R beta\n" + "".join(f"{r} {c} {-math.radians(b):.5f}\n" for r, c, b in rows))
+    assert main(["loads", str(rad), "--blades", "2", "--rpm", "6000"]) == 0
+    assert "the column looks like radians" in capsys.readouterr().err

@@ -176,10 +176,20 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
 def check_section_match(propeller, label: str) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
-    its hover thrust is far too high); the warning names the section presets."""
+    its hover thrust is far too high); the warning names the section presets. Blade angles
+    negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead."""
     from ..core.geometry import rotor_like
     from ..io.param_sets import section_presets
 
+    import numpy as np
+
+    b75 = float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0])
+    if b75 < 0 and np.mean(propeller.theta) < 0:
+        warn(f"{propeller.name}: the blade angles are negative ({np.degrees(b75):.1f} deg at 0.75 R): a pusher's or a "
+             "mirrored geometry? propmap takes a propeller's blade angles positive, measured from the disk plane "
+             "(thrust along the axis; the rotation sense is the rotor's spin, docs/conventions.md): with these the "
+             "thrust comes out negative. Give the magnitudes")
+        return
     why = rotor_like(propeller)
     if why and label == "generic":
         warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "

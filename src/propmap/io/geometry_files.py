@@ -204,6 +204,7 @@ def _looks_like_radians(r_over_R, beta) -> bool:
     if not np.all(np.abs(beta) < 1.6):
         return False
     outer = r_over_R >= 0.3
+    beta = np.abs(beta) if np.all(beta[outer] < 0) else beta  # (a pusher's or mirrored file: negative angles)
     if outer.sum() < 2 or np.any(beta[outer] <= 0):
         return False
     q = r_over_R[outer] * np.tan(beta[outer])
