@@ -182,3 +182,17 @@ def test_malformed_points_csv_names_the_line_and_writes_nothing(capsys, tmp_path
     code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
     assert code == 2 and match in err and err.count("\n") == 1
     assert not dst.exists() and list(tmp_path.iterdir()) == [src]
+
+
+def test_hover_incidence_edgewise_lambda2_and_a_file_named_like_a_catalogue_propeller(tmp_path, capsys, monkeypatch):
+    """In still air the incidence means nothing: no 'fitted to axial data only' warning at V = 0;
+    lambda2 edgewise is 0, not cos(90 deg)'s -5.2e-17; a file in the working folder named like a
+    catalogue propeller is said to be passed over."""
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--incidence-deg", "60"]) == 0
+    assert "axial data only" not in capsys.readouterr().err
+    assert main(["loads", "apce_8x6", "--rpm", "6000", "--airspeed", "5", "--incidence-deg", "90", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["lambda2"] == 0.0
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "apce_8x6").write_text("r/R c/R beta\n0.2 0.1 30\n1.0 0.05 10\n")
+    assert main(["loads", "apce_8x6", "--rpm", "6000"]) == 0
+    assert "'apce_8x6' is a catalogue propeller and a file here: the catalogue's is used" in capsys.readouterr().err

@@ -226,8 +226,13 @@ def _flag_strings(r):
 def _descent_outputs(r) -> dict:
     """v_i_over_v_h (mean induced inflow over the hover induced velocity at the thrust made),
     lambda2 (descent rate over v_h, positive descending) and the working state's name; the
-    ratios are NaN (an empty CSV cell) where T <= 0, which has no hover induced velocity."""
-    return {"v_i_over_v_h": r.inflow_ratio, "lambda2": r.descent_ratio, "state": r.state_name}
+    ratios are NaN (an empty CSV cell) where T <= 0, which has no hover induced velocity.
+    lambda2 below 1e-12 is written 0 (cos(90 deg) is 6e-17 in floating point: no -5.2e-17 or -0.0 edgewise)."""
+    import numpy as np
+
+    lam = np.asarray(r.descent_ratio, float)
+    lam = np.where(np.abs(lam) < 1e-12, 0.0, lam) + 0.0
+    return {"v_i_over_v_h": r.inflow_ratio, "lambda2": lam, "state": r.state_name}
 
 
 def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg=None):

@@ -192,9 +192,15 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
     Warns
     -----
     UserWarning
-        As the geometry readers (e.g. stations stopping short of the tip).
+        As the geometry readers (e.g. stations stopping short of the tip); a catalogue name
+        that is also a file in the working folder (the catalogue's propeller is used).
     """
     if spec in catalogue():
+        if Path(spec).is_file():
+            import warnings
+
+            warnings.warn(f"{spec!r} is a catalogue propeller and a file here: the catalogue's is used (give "
+                          f"./{spec} for the file)", UserWarning, stacklevel=2)
         return load_propeller(spec)
     shown = repr(spec if len(spec) <= 120 else spec[:117] + "...")
     if not spec.strip():
