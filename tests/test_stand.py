@@ -670,3 +670,17 @@ def test_load_data_built_by_hand_is_checked_naming_the_field(change, match):
     ok = LoadData(omega=[500, 600, 700], airspeed=[0, 0, 0], incidence=[0, 0, 0], measured={"thrust": [1, 1.4, 2]},
                   group=["a"] * 3)  # plain lists of ints: arrays of floats
     assert ok.omega.dtype == float and ok.n == 3 and ok.subset([True, False, True]).n == 2
+
+
+def test_a_two_rotor_export_is_named_as_such(tmp_path):
+    """A Series 1780 coaxial or dual export (Thrust A, Thrust B, Motor Optical Speed A (RPM), ...)
+    was refused as having no rotation-speed column, listing the columns; the message now says
+    it is a two-rotor export and how to read one rotor."""
+    p = tmp_path / "coax.csv"
+    rows = "".join(f"{k},{0.05 * k},{0.048 * k},{0.005 * k},{-0.005 * k},{2000 + 500 * k},{2000 + 500 * k}\n"
+                   for k in range(1, 9))
+    p.write_text("Time (s),Thrust A (kgf),Thrust B (kgf),Torque A (N·m),Torque B (N·m),"
+                 "Motor Optical Speed A (RPM),Motor Optical Speed B (RPM)\n" + rows, encoding="utf-8")
+    with pytest.raises(DataError, match=r"no rotation-speed column: .* this looks like a two-rotor export \(a coaxial "
+                                        r"or dual stand, columns for rotors A and B\)"):
+        read_loads(p)

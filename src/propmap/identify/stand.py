@@ -212,7 +212,12 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     found = ", ".join(repr(n) for n in names if n.strip())
     speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
     if not speeds:
-        raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}")
+        pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
+        hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
+                "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
+                "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
+                if pair else "")
+        raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
     split = {name: _split(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
     bases = {name: b for name, (b, u) in split.items()
