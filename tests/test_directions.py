@@ -269,7 +269,7 @@ def test_a_few_thrust_only_steps_are_enough_for_the_directions():
 
 def test_a_hand_written_coverage_table_may_give_some_keys(tmp_path):
     """A [coverage] table with only J_max is checked for J alone (every command stopped with an
-    internal KeyError on the missing keys before); rpm_min without rpm_max is refused when read."""
+    internal KeyError on the missing keys before); rpm_min or rpm_max alone checks its end."""
     base = tmp_path / "p.toml"
     run = CliRunner().invoke
     assert run(cli, ["fit", "loads", str(_static_csv(tmp_path / "s.csv")), "--prop", "apce_8x6",
@@ -281,6 +281,9 @@ def test_a_hand_written_coverage_table_may_give_some_keys(tmp_path):
     assert out.exit_code == 0, out.output
     assert "advance ratio up to 1.18: the data behind" in out.output and "rpm: the data" not in out.output
     half = tmp_path / "half.toml"
+    half.write_text(text + "[coverage]\nrpm_max = 4000.0\n")  # (one end of the span: that end is checked)
+    out = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "5000"])
+    assert out.exit_code == 0 and "5000 rpm: the data behind" in out.output and "span 0-4000 rpm" in out.output
     half.write_text(text + "[coverage]\nrpm_min = 3000.0\n")
-    bad = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "5000"])
-    assert bad.exit_code == 2 and "[coverage] gives rpm_min without the other" in bad.output
+    out = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "2000"])
+    assert out.exit_code == 0 and "span from 3000 rpm up" in out.output

@@ -362,7 +362,7 @@ def _hand_built_level_flight(n=6, **change):
                                     r"got \(6,\)"),
     ({"pitch": -np.linspace(0, 10, 6)}, r"pitch must be in \(-pi/2, pi/2\) rad \(radians, not degrees\), got -2"),
     ({"rates": np.zeros(6)}, r"rates must have shape \(6, 3\)"),
-    ({"airspeed": [0, 1, np.nan, 3, 4, 5]}, r"airspeed must be finite \(condition 2 is not\)"),
+    ({"airspeed": [0, 1, np.nan, 3, 4, 5]}, r"airspeed must be finite \(condition 2 is not; from 0\)"),
     ({"airspeed": -np.linspace(0, 8, 6)}, r"airspeed must be >= 0 m/s"),
     ({"omega": np.zeros((6, 4))}, r"omega must be > 0 rad/s"),
     ({"roll": "level"}, r"roll must be numbers"),
@@ -384,7 +384,7 @@ def test_level_flight_fit_refuses_another_rotor_count():
 @pytest.mark.parametrize("change, match", [
     ({"rotor_omega": np.ones((2, 3))}, r"rotor_acceleration must have shape \(2, 3\)"),
     ({"rotor_omega": np.ones(2)}, r"rotor_omega must have shape \(2, n_rotors\)"),
-    ({"force": np.full((2, 3), np.inf)}, r"force must be finite \(sample 0 is not\)"),
+    ({"force": np.full((2, 3), np.inf)}, r"force must be finite \(sample 0 is not; from 0\)"),
     ({"rotor_omega": np.zeros((2, 4))}, r"rotor_omega must be > 0 rad/s"),
     ({"log_index": np.array([0, 1])}, r"log_index must be N = 2 indices into log_names \(1 logs\)"),
     ({"moment": np.zeros((3, 3))}, r"moment must have shape \(2, 3\)"),

@@ -342,3 +342,5 @@ def test_vehicle_and_rotor_wrench_messages_name_their_own_arguments():
         pm.rotor_wrench(p, g, np.zeros((3, 3)), [0, 0, 1], [800.0, 900.0])
     with pytest.raises(TypeError, match="name must be a catalogue propeller's name"):
         pm.load_propeller(None)
+    with pytest.raises(ValueError, match="omega must be a number or a rectangular array"):  # (ragged: rotor_loads')
+        pm.rotor_wrench(p, g, np.zeros((2, 3)), [0, 0, 1], [[800.0, 900.0], [3.0]])

@@ -363,3 +363,13 @@ def test_exactly_in_plane_velocities_are_on_the_incidence_axis_end():
         b = rm.wrench(v[None], np.array([[0.0, 0.0, 1.0]]), np.array([600.0]))
         assert a.loads.inside and b.loads.inside[0] and a.loads.flagged == b.loads.flagged[0]
         np.testing.assert_allclose(a.force, b.force[0], rtol=1e-12, atol=1e-15)
+
+
+def test_a_bool_inside_a_query_list_is_refused(small_map):
+    """RotorMap's queries share the array inputs' rule: [800.0, True] is not a rotation rate of
+    1 rad/s (core.geometry.has_bool)."""
+    rm = RotorMap(small_map[2])
+    with pytest.raises(ValueError, match="omega must be a number or an array of numbers"):
+        rm.loads([800.0, True], 5.0, 0.3)
+    with pytest.raises(ValueError, match="airspeed must be a number or an array of numbers"):
+        rm.loads(800.0, [5.0, np.array(False)], 0.3)

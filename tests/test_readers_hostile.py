@@ -480,7 +480,8 @@ def test_blade_angles_in_radians_warn(tmp_path):
 def test_a_chord_column_in_another_unit_warns(tmp_path, shared_data):
     """The c/R column written as the chord in inches (8 in blade) or as c/D gave 3.4x or half the
     thrust without a word; the largest c/R outside [0.12, 0.6] now warns (the catalogue's 147
-    propellers: 0.15-0.39). None of the 218 UIUC geometry files of vol. 1 and 2 warns."""
+    propellers: 0.15-0.39). None of the UIUC geometry files of vol. 1 and 2 in the shared data warns
+    (nor, checked once, the 138 shipped in the package)."""
     good = "r/R c/R beta\n0.15 0.12 30\n0.5 0.2 20\n1.0 0.06 10\n"
     for factor, shown in ((4.0, "0.8"), (0.5, "0.1")):
         rows = [line.split() for line in good.splitlines()[1:]]
@@ -522,23 +523,24 @@ def test_stations_short_of_the_tip_warn(tmp_path):
 
 
 def test_stations_far_short_of_the_tip_are_refused(tmp_path):
-    """Radii written in metres in the r/R column (0.0127-0.1016 for an 8 in blade) made the end
-    polynomials carry the blade to c/R 2.8e5 and 4.5e5 deg at the tip, and the loads T = -9 N,
-    P = 7.7 MW with a warning only: refused by the reader (stations inside 0.7 R) and, built by
-    hand, by Propeller (the extrapolation is no blade). A blade measured to 0.84 R still reads,
-    with the warning."""
-    rows = [(0.15, 0.12, 30.0), (0.3, 0.16, 27.0), (0.45, 0.19, 22.0), (0.6, 0.17, 18.0), (0.75, 0.14, 15.0),
-            (0.84, 0.12, 13.0), (1.0, 0.05, 11.0)]
-    metres = "r/R c/R beta\n" + "".join(f"{r * 0.1016:.5f} {c} {b}\n" for r, c, b in rows)
+    """The APC 8x6E's stations (its PE0 file, in the catalogue) with the radii written in metres in
+    the r/R column (0.024-0.1016): PCHIP's end polynomials carried the blade to a chord of 2.8e6 R
+    and a blade angle of 4.4e5 deg at the tip, with a warning only (with the chord in metres too,
+    the audit of 2026-11-26 measured T = -9 N and P = 7.7 MW). Refused by the reader (stations
+    inside 0.7 R) and, built by hand, by Propeller (the extrapolation is no blade). The same blade
+    measured to 0.84 R still reads, with the warning."""
+    p8 = pm.load_propeller("apce_8x6")
+    R = p8.radius
+    rows = list(zip(p8.r / R, p8.chord / R, np.degrees(p8.theta)))
+    metres = "r/R c/R beta\n" + "".join(f"{r * R:.6f} {c:.5f} {b:.3f}\n" for r, c, b in rows)
     p = _write(tmp_path, "m_8x6_geom.txt", metres)
     refused(GeometryFileError, read_uiuc_geometry, p, match=r"the stations stop at r/R = 0.1016: the outer blade")
-    r, c, b = (np.array(x) for x in zip(*rows))
     with pytest.raises(ValueError, match=r"the blade from the last station \(r = 0.0103226 m, 0.1016 R\) to the tip "
-                                         r"extrapolates to a chord of .* R and a blade angle of .* deg \(valid: chord "
-                                         r"<= R, \|angle\| <= 90 deg\)"):
-        pm.Propeller("m", 0.1016, 2, r * 0.1016 * 0.1016, c * 0.1016, np.radians(b))  # (the same, built by hand)
-    near = "r/R c/R beta\n" + "".join(f"{r} {c} {b}\n" for r, c, b in rows[:-1])
-    with pytest.warns(UserWarning, match="the stations stop at r/R = 0.84"):
+                                         r"extrapolates to a chord of 2.75e\+06 R and a blade angle of 4.442e\+05 deg "
+                                         r"\(valid: chord <= R, \|angle\| <= 90 deg\)"):
+        pm.Propeller("m", R, 2, p8.r * R, p8.chord, p8.theta)  # (the same, built by hand)
+    near = "r/R c/R beta\n" + "".join(f"{r:.6f} {c:.5f} {b:.3f}\n" for r, c, b in rows if r <= 0.84)
+    with pytest.warns(UserWarning, match="the stations stop at r/R = 0.8"):
         read_uiuc_geometry(_write(tmp_path, "n_8x6_geom.txt", near))
 
 

@@ -16,8 +16,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
 from .core.geometry import has_bool
+from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
 from .io.mapfile import read_dataset
 
 __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap", "check_map"]

@@ -178,10 +178,10 @@ def check_section_match(propeller, label: str) -> None:
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets. Blade angles
     negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead."""
+    import numpy as np
+
     from ..core.geometry import rotor_like
     from ..io.param_sets import section_presets
-
-    import numpy as np
 
     b75 = float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0])
     if b75 < 0 and np.mean(propeller.theta) < 0:
@@ -583,9 +583,11 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
              + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
                 "gill2019 cases)"
                 if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
-    if rpm is not None and "rpm_min" in cov and "rpm_max" in cov:
+    if rpm is not None and ("rpm_min" in cov or "rpm_max" in cov):
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
-        if lo < cov["rpm_min"] or hi > cov["rpm_max"]:
+        low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)
+        if lo < low or hi > high:
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
-            warn(f"{shown} rpm: the data behind {label} span {cov['rpm_min']:.0f}-{cov['rpm_max']:.0f} rpm (Reynolds "
-                 "numbers beyond them are extrapolated)")
+            span = f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up"
+            warn(f"{shown} rpm: the data behind {label} span {span} (Reynolds numbers beyond them are "
+                 "extrapolated)")

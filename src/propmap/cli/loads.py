@@ -285,7 +285,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     from ..io.atomic import atomic_write
 
     # first pass: every value checked before any work, and the extremes for the warnings
-    offset = math.degrees(params.collective)  # the set's collective, added to each row's
+    offset = float(f"{math.degrees(params.collective):.12g}")  # the set's collective, added to each row's (as loads)
     n, extremes = _scan(prop, path, offset)
     coverage_messages(prop, label, air, *extremes)
 

@@ -224,8 +224,9 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         if collective_deg is not None:
             from ..core.airfoil import COLLECTIVE_MAX
 
-            total = math.degrees(params.collective) + collective_deg
-            limit = math.degrees(COLLECTIVE_MAX)
+            # (12 digits: 30 deg is degrees(COLLECTIVE_MAX) = 29.999999999999996, and must pass)
+            total = float(f"{math.degrees(params.collective) + collective_deg:.12g}")
+            limit = float(f"{math.degrees(COLLECTIVE_MAX):.12g}")
             if not (math.isfinite(collective_deg) and abs(total) <= limit):
                 raise InputError(f"--collective-deg: the parameter set's collective "
                                  f"{math.degrees(params.collective):g} deg plus {collective_deg:g} deg must be "

@@ -32,10 +32,18 @@ def _real(value) -> float | None:
 
 
 def has_bool(value) -> bool:
-    """Whether a (nested) list or tuple holds a bool (NumPy would read it as 0 or 1, so that
-    ``[800.0, True]`` became a rotation rate of 1 rad/s): the array inputs refuse it."""
+    """Whether a (nested) list or tuple, or an object array, holds a bool or a boolean array
+    (NumPy would read it as 0 or 1, so that ``[800.0, True]`` became a rotation rate of 1
+    rad/s): the array inputs refuse it. A list is scanned by the types of its items (20 ms for
+    10^6 floats), descending only into the lists, tuples and arrays among them."""
+    if isinstance(value, np.ndarray):
+        return value.dtype.kind == "b" or (value.dtype.kind == "O" and any(has_bool(v) for v in value.flat))
     if isinstance(value, (list, tuple)):
-        return any(has_bool(v) for v in value)
+        types = set(map(type, value))
+        if bool in types or np.bool_ in types:
+            return True
+        nested = types & {list, tuple, np.ndarray}
+        return bool(nested) and any(has_bool(v) for v in value if type(v) in nested)
     return isinstance(value, (bool, np.bool_))
 
 
@@ -191,7 +199,7 @@ class Propeller:
         area, _ = quad(lambda y: float(self.chord_at(y)), self.r_hub, self.radius, limit=200)
         return self.n_blades * area / (math.pi * self.radius**2)
 
-    def same_geometry(self, other: "Propeller") -> bool:
+    def same_geometry(self, other: Propeller) -> bool:
         """Whether ``other`` is the same blade geometry: blade count, radius and the stations'
         r, chord and blade angle to 1e-9 relative (the name is not compared: a name alone does not
         say, e.g. a geometry file read with another blade count).
@@ -203,7 +211,14 @@ class Propeller:
         Returns
         -------
         bool
+
+        Raises
+        ------
+        TypeError
+            ``other`` not a Propeller.
         """
+        if not isinstance(other, Propeller):
+            raise TypeError(f"other must be a Propeller, got {type(other).__name__}")
         return (self.n_blades == other.n_blades and math.isclose(self.radius, other.radius, rel_tol=1e-9)
                 and all(np.shape(x) == np.shape(y) and np.allclose(x, y, rtol=1e-9, atol=0.0)
                         for x, y in ((self.r, other.r), (self.chord, other.chord), (self.theta, other.theta))))

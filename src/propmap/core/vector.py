@@ -161,11 +161,16 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)
     try:
-        shape = np.broadcast_shapes(speed.shape, np.shape(omega))
-    except ValueError:
-        raise ValueError(f"omega (shape {np.shape(omega)}) must broadcast with velocity's samples (shape "
-                         f"{speed.shape}: velocity of shape {speed.shape + (3,)})") from None
-    _check_spin(s, shape)
+        omega_shape = np.shape(omega)
+    except ValueError:  # a ragged list: rotor_loads names it
+        omega_shape = None
+    if omega_shape is not None:
+        try:
+            shape = np.broadcast_shapes(speed.shape, omega_shape)
+        except ValueError:
+            raise ValueError(f"omega (shape {omega_shape}) must broadcast with velocity's samples (shape "
+                             f"{speed.shape}: velocity of shape {speed.shape + (3,)})") from None
+        _check_spin(s, shape)
     if derivatives is True or isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
         raise ValueError(f"derivatives must be a sequence of names, got {derivatives!r:.60}")
     names = tuple(dict.fromkeys(derivatives or ()))

@@ -3,7 +3,11 @@ one rule for numbers, shapes and finiteness, each error naming the field."""
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
+
+from ..core.geometry import has_bool
 
 
 def float_array(owner: str, name: str, value, shape: tuple, *, row: str, nan: bool = False) -> np.ndarray:
@@ -29,19 +33,26 @@ def float_array(owner: str, name: str, value, shape: tuple, *, row: str, nan: bo
     Raises
     ------
     ValueError
-        Not numbers, another shape, or a non-finite value; the message names ``owner.name``,
-        the shape wanted with N, and the first bad row.
+        Not numbers (strings, bools, an int beyond the float range), another shape, or a
+        non-finite value; the message names ``owner.name``, the shape wanted with N, and the
+        first bad row (its index, from 0).
     """
     try:
-        a = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
+        raw = np.asarray(value)
+        numeric = raw.dtype.kind in "iuf" or (raw.dtype.kind == "O" and all(  # (None: NaN, as NumPy reads it)
+            x is None or isinstance(x, numbers.Real) for x in raw.flat))
+        numeric = numeric and not has_bool(value)  # (no strings, no bools read as 0 or 1)
+        a = raw.astype(float) if numeric else None
+    except (TypeError, ValueError, OverflowError):  # ragged, or an int beyond the floats
+        a = None
+    if a is None:
         raise ValueError(f"{owner}.{name} must be numbers, got {value!r:.60}") from None
     if a.shape != shape:
         want = ", ".join(map(str, shape)) + ("," if len(shape) == 1 else "")
         raise ValueError(f"{owner}.{name} must have shape ({want}) (N = {shape[0]} {row}s), got {a.shape}")
     bad = ~(np.isfinite(a) | (nan & np.isnan(a)))
     if bad.any():
-        raise ValueError(f"{owner}.{name} must be finite ({row} {int(np.argwhere(bad)[0][0])} is not)")
+        raise ValueError(f"{owner}.{name} must be finite ({row} {int(np.argwhere(bad)[0][0])} is not; from 0)")
     return a
 
 

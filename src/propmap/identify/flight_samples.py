@@ -93,6 +93,7 @@ class FlightSamples:
                                           or index.max() >= len(self.log_names))):
             raise ValueError(f"FlightSamples.log_index must be N = {n} indices into log_names "
                              f"({len(self.log_names)} logs)")
+        object.__setattr__(self, "log_index", index)
         rate = self.rate_hz
         if isinstance(rate, bool) or not isinstance(rate, (int, float, np.number)) or not 0 < rate < np.inf:
             raise ValueError(f"FlightSamples.rate_hz must be a rate > 0 Hz, got {rate!r:.60}")

@@ -11,6 +11,7 @@ import numpy as np
 
 from ._checks import first_length, float_array
 
+
 @dataclass(frozen=True)
 class LoadData:
     """Direct load measurements of one propeller.
@@ -82,7 +83,7 @@ class LoadData:
         """Number of points N."""
         return self.omega.size
 
-    def subset(self, mask) -> "LoadData":
+    def subset(self, mask) -> LoadData:
         """The points where ``mask`` is True."""
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],

@@ -12,9 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .csvfile import DataError, RANGES, RPM, _Csv
+from .csvfile import RANGES, RPM, DataError, _Csv
 from .load_data import LOAD_KEYS, LoadData
-
 
 #: a point at an airspeed up to this [m/s] is static for the thrust's sign rule (:func:`read_loads`)
 STATIC_AIRSPEED = 0.3

@@ -86,7 +86,8 @@ def _layout(path, where: str) -> list[str]:
     for name, dims in variables.items():
         if name not in wanted:
             continue
-        if name == "prop" and len(dims) == 2 and dims[0] == "prop" and sizes.get(dims[1], 0) <= MAX_NAME_CHARS:
+        if (name == "prop" and len(dims) == 2 and dims[0] == "prop" and dims[1] not in DIMS
+                and sizes.get(dims[1], 0) <= MAX_NAME_CHARS):
             continue  # names as fixed-length characters (prop, their length), as `propmap map --all` writes them
         n = math.prod(sizes.get(d, 0) for d in dims)
         if n > MAX_NODES or not set(dims) <= {*DIMS, "prop"}:
@@ -368,7 +369,8 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     Raises
     ------
     ValueError
-        Unknown format, or an empty path.
+        Unknown format, an empty path, or a name of a ``prop`` coordinate longer than
+        MAX_NAME_CHARS bytes (UTF-8).
     TypeError
         ``ds`` not an xarray Dataset.
     OSError
@@ -382,6 +384,11 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
         raise ValueError("path is empty: give the map file to write")
     if fmt not in ("netcdf", "csv"):
         raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
+    if "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
+        longest = max((len(str(n).encode("utf-8")) for n in ds["prop"].values.ravel()), default=0)
+        if longest > MAX_NAME_CHARS:  # (the reader refuses longer ones)
+            raise ValueError(f"a propeller name of the prop coordinate is {longest} bytes long (UTF-8); a map file "
+                             f"holds names of at most {MAX_NAME_CHARS}")
 
     def write(tmp):
         if fmt == "netcdf":

@@ -50,9 +50,8 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     Raises
     ------
     ValueError
-        Not a table, an unknown key, a value not a number or out of its range, rpm_min
-        without rpm_max or the other way round. (Every key is optional: the warnings check
-        those given.)
+        Not a table, an unknown key, a value not a number or out of its range, rpm_min above
+        rpm_max. (Every key is optional: the warnings check those given.)
     """
     table = data.get(COVERAGE_TABLE)
     if table is None:
@@ -65,9 +64,6 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
                          f"{', '.join(COVERAGE_KEYS)})")
     for k, v in table.items():
         check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
-    if ("rpm_min" in table) != ("rpm_max" in table):
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] gives {'rpm_min' if 'rpm_min' in table else 'rpm_max'} "
-                         "without the other: the data's rpm span is rpm_min and rpm_max together")
     if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
                          f"{table['rpm_max']:g}")

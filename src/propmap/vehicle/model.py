@@ -120,7 +120,7 @@ def _vector3(name: str, value) -> np.ndarray:
     try:
         numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
         a = np.array(value, dtype=float).reshape(-1) if numeric else None
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         a = None
     if a is None or a.shape != (3,) or not np.all(np.isfinite(a)):
         raise ValueError(f"{name} must be 3 finite numbers (body axes), got {value!r:.60}")
