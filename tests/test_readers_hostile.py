@@ -487,7 +487,8 @@ def test_a_chord_column_in_another_unit_warns(tmp_path, shared_data):
         rows = [line.split() for line in good.splitlines()[1:]]
         text = "r/R c/R beta\n" + "".join(f"{r} {float(c) * factor:g} {b}\n" for r, c, b in rows)
         with pytest.warns(UserWarning, match=f"the largest c/R is {shown}, where the 147 catalogue propellers' lie "
-                                             r"within 0.15-0.39: is the c/R column the chord in another unit, or c/D\?"):
+                                             r"within 0.15-0.39: is the c/R column the chord in another unit, or "
+                                             r"c/D\?"):
             read_uiuc_geometry(_write(tmp_path, f"x{factor:g}_9x6_geom.txt", text))
     files = sorted((shared_data / "uiuc_propdb").glob("*/*geom*.txt"))
     with warnings.catch_warnings():
