@@ -441,10 +441,36 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
         click.echo("  (propmap.RotorMap interpolates cubic by default; "
                    + (f"this C header interpolates {c_interpolation})" if c_interpolation
                       else "a C header linear unless --c-interpolation cubic)"))
+    if "per_prop_json" in a:  # a map over several propellers: which of them miss the targets on the shared grid
+        click.echo(_catalogue_summary(a["per_prop_json"]))
     if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the map's against it
         click.echo(f"the model against measurements ({a.get('params_label', '')}): axial: "
                    f"{a['model_uncertainty_axial']}; off-axis: {a['model_uncertainty_off_axis']}")
     click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
+
+
+def _catalogue_summary(per_prop_json: str) -> str:
+    """One paragraph on a map over several propellers: how many miss the map targets (cubic, outside
+    flagged regions: 1% of static thrust and torque, 2% of the largest drag) at their stored check
+    points, and the worst three."""
+    per_prop = json.loads(per_prop_json)
+    limits = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
+    worst = {}
+    for name, attrs in per_prop.items():
+        over = {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in limits}
+        over = {k: v for k, v in over.items() if v > limits[k]}
+        if over:
+            k = max(over, key=lambda q: over[q] / limits[q])
+            worst[name] = (over[k] / limits[k], k, over[k])
+    if not worst:
+        return (f"every one of the {len(per_prop)} propellers' maps meets the targets (cubic, outside flagged regions: "
+                "1% of static thrust and torque, 2% of the largest drag) at its check points")
+    top = sorted(worst.items(), key=lambda kv: -kv[1][0])[:3]
+    shown = ", ".join(f"{n} {q} {v:.1f}%" for n, (_, q, v) in top)
+    return (f"{len(worst)} of the {len(per_prop)} propellers' maps miss the targets at their check points (cubic, "
+            f"outside flagged regions: 1% of static thrust and torque, 2% of the largest drag), worst {shown}: the "
+            "shared grid is coarse for them; map them one by one (its default grid follows the propeller) or refine "
+            "the axes")
 
 
 #: the default pass threshold of --check: 1% of static thrust and torque, 2% of the largest drag
