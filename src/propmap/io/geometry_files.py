@@ -89,9 +89,10 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
     GeometryFileError
         Not a readable regular file (or over 16 MiB), missing columns, non-numeric or
         non-finite values, r/R outside (0, 1], c/R outside [0, 1], beta outside [-90, 90]
-        deg, radii not strictly increasing, fewer than 2 stations, a last station inside r/R =
-        0.7, a bad ``diameter_in`` or ``n_blades``, or no diameter given or plausibly derivable from the name (the
-        message suggests ``--diameter-in``); each message names the file and the line.
+        deg, radii not strictly increasing, fewer than 2 stations, a last station inside
+        r/R = 0.7, a bad ``diameter_in`` or ``n_blades``, or no diameter given or plausibly
+        derivable from the name (the message suggests ``--diameter-in``); each message names
+        the file and the line.
 
     Warns
     -----
@@ -101,11 +102,12 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
         r tan(beta) over 0.3-1 R, as propellers have); they are read as degrees. A rotor's
         small, nearly untwisted angles in degrees (a collective given separately) do not
         warn. Or the largest c/R lies outside [0.12, 0.6] (CHORD_MAX_PLAUSIBLE; the
-        catalogue's: 0.15-0.39), as a chord in another unit or c/D gives (below it, not for a
-        helicopter-style rotor's slender blades: :func:`propmap.core.geometry.rotor_like`). Or the stations stop
-        inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond them is extrapolated to the tip
-        (refused inside r/R = 0.7, LAST_STATION_REFUSED, or where that extrapolation gives no
-        blade: :class:`propmap.core.geometry.Propeller`).
+        catalogue's: 0.15-0.39), as a chord in another unit or c/D gives (below it, not for
+        a helicopter-style rotor's slender blades: :func:`propmap.core.geometry.rotor_like`).
+        Or the stations stop inside r/R = 0.9 (LAST_STATION_MIN): the blade beyond them is
+        extrapolated to the tip (refused inside r/R = 0.7, LAST_STATION_REFUSED, or where
+        that extrapolation gives no blade: :class:`propmap.core.geometry.Propeller`). Or
+        ``key = value`` lines, which a geometry file does not use (not read).
     """
     text = _read_text(path, GeometryFileError)
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
