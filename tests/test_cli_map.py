@@ -84,7 +84,10 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     out = tmp_path / "all.nc"
     code, text, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL, "--out", out)
     assert code == 0, err
-    assert "of the 2 propellers' maps" in text  # the summary of their checks against the targets
+    assert "of the 2 checked propellers' maps" in text  # the summary of their checks against the targets
+    code, text, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL[:-2], "--check-points", "0",
+                          "--out", tmp_path / "unchecked.nc")
+    assert code == 0 and "the 2 propellers' maps were not checked against the model (--check-points 0)" in text
     small, large = RotorMap.open(out, prop="apce_8x6"), RotorMap.open(out, prop="apce_10x7")
     assert small.dataset["thrust"].attrs["units"] == "N" and small.dataset["rpm"].attrs["units"] == "rpm"
     assert json.loads((tmp_path / "all.nc.json").read_text())["variables"]["torque"] == "N m"
@@ -164,5 +167,7 @@ def test_the_catalogue_maps_summary_names_those_that_miss_the_targets():
     ok = {"check_cubic_thrust_max": 0.004, "check_cubic_torque_max": 0.006, "check_cubic_drag_max": 0.01}
     per = {"a": ok, "b": {**ok, "check_cubic_torque_max": 0.05}, "c": {**ok, "check_cubic_drag_max": 0.03}}
     text = _catalogue_summary(json.dumps(per))
-    assert text.startswith("2 of the 3 propellers' maps miss the targets") and "worst b torque 5.0%, c drag 3.0%" in text
-    assert "every one of the 1 propellers' maps meets the targets" in _catalogue_summary(json.dumps({"a": ok}))
+    assert text.startswith("2 of the 3 checked propellers' maps miss the targets")
+    assert "worst b torque 5.0%, c drag 3.0%" in text
+    assert "every one of the 1 checked propellers' maps meets the targets" in _catalogue_summary(json.dumps({"a": ok}))
+    assert "were not checked" in _catalogue_summary(json.dumps({"a": {}}))  # (NaN is no pass)

@@ -302,8 +302,12 @@ def test_cli_loads_adds_the_parameter_sets_collective_and_says_so(tmp_path, caps
     pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,44\n")
     assert main(["loads", "apce_8x6", "--params", str(f), "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
     assert "line 2: collective_deg must be a finite number in [-48, 42]" in capsys.readouterr().err
-    pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,42\n")  # the sum at the limit: 45
+    pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,42\n6000,0,0,-46\n")  # sums 45 and -43
     assert main(["loads", "apce_8x6", "--params", str(f), "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+    got = pd.read_csv(tmp_path / "o.csv")  # (-46 reached the solver, which refused it on its own: 45 deg)
+    ref = pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6"), 6000 * RPM, 0.0, 0.0,
+                         collective=math.radians(-43.0))
+    assert got.thrust[1] == pytest.approx(float(ref.thrust), rel=1e-9)
     capsys.readouterr()
     for c in ("30", "-30"):  # map's limit itself (degrees(COLLECTIVE_MAX) is 29.999999999999996)
         assert main(["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:90:3",

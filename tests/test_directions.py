@@ -283,7 +283,7 @@ def test_a_hand_written_coverage_table_may_give_some_keys(tmp_path):
     half = tmp_path / "half.toml"
     half.write_text(text + "[coverage]\nrpm_max = 4000.0\n")  # (one end of the span: that end is checked)
     out = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "5000"])
-    assert out.exit_code == 0 and "5000 rpm: the data behind" in out.output and "span 0-4000 rpm" in out.output
+    assert out.exit_code == 0 and "5000 rpm: the data behind" in out.output and "span up to 4000 rpm" in out.output
     half.write_text(text + "[coverage]\nrpm_min = 3000.0\n")
     out = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "2000"])
     assert out.exit_code == 0 and "span from 3000 rpm up" in out.output

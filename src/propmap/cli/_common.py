@@ -588,6 +588,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
         low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)
         if lo < low or hi > high:
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
-            span = f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up"
+            span = (f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) and low > 0 else
+                    f"up to {high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up")
             warn(f"{shown} rpm: the data behind {label} span {span} (Reynolds numbers beyond them are "
                  "extrapolated)")

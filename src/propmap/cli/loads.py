@@ -293,8 +293,11 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
         bad = 0
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
             for k, (df, _, values) in enumerate(_chunks(path, CHUNK, offset)):  # the input cells are written as read
-                res = solve_points(prop, params, air, values["rpm"], values["airspeed"], values["incidence_deg"],
-                                   values.get(COLLECTIVE_COLUMN))
+                rows = values.get(COLLECTIVE_COLUMN)
+                # with a collective column the solver gets the sum (the set's offset + the row's), the one limit
+                res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
+                                   values["rpm"], values["airspeed"], values["incidence_deg"],
+                                   None if rows is None else rows + math.degrees(params.collective))
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:

@@ -455,22 +455,26 @@ def _catalogue_summary(per_prop_json: str) -> str:
     points, and the worst three."""
     per_prop = json.loads(per_prop_json)
     limits = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
+    errors = {name: {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in limits}
+              for name, attrs in per_prop.items()}
+    checked = [name for name, e in errors.items() if all(math.isfinite(v) for v in e.values())]
+    if not checked:
+        return f"the {len(per_prop)} propellers' maps were not checked against the model (--check-points 0)"
     worst = {}
-    for name, attrs in per_prop.items():
-        over = {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in limits}
-        over = {k: v for k, v in over.items() if v > limits[k]}
+    for name in checked:
+        over = {k: v for k, v in errors[name].items() if v > limits[k]}
         if over:
             k = max(over, key=lambda q: over[q] / limits[q])
             worst[name] = (over[k] / limits[k], k, over[k])
     if not worst:
-        return (f"every one of the {len(per_prop)} propellers' maps meets the targets (cubic, outside flagged regions: "
-                "1% of static thrust and torque, 2% of the largest drag) at its check points")
+        return (f"every one of the {len(checked)} checked propellers' maps meets the targets (cubic, outside flagged "
+                "regions: 1% of static thrust and torque, 2% of the largest drag) at its check points")
     top = sorted(worst.items(), key=lambda kv: -kv[1][0])[:3]
     shown = ", ".join(f"{n} {q} {v:.1f}%" for n, (_, q, v) in top)
-    return (f"{len(worst)} of the {len(per_prop)} propellers' maps miss the targets at their check points (cubic, "
-            f"outside flagged regions: 1% of static thrust and torque, 2% of the largest drag), worst {shown}: the "
-            "shared grid is coarse for them; map them one by one (its default grid follows the propeller) or refine "
-            "the axes")
+    return (f"{len(worst)} of the {len(checked)} checked propellers' maps miss the targets at their check points "
+            f"(cubic, outside flagged regions: 1% of static thrust and torque, 2% of the largest drag), worst "
+            f"{shown}: the shared grid is coarse for them; map them one by one (its default grid follows the "
+            "propeller) or refine the axes")
 
 
 #: the default pass threshold of --check: 1% of static thrust and torque, 2% of the largest drag

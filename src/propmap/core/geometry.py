@@ -42,8 +42,9 @@ def has_bool(value) -> bool:
         types = set(map(type, value))
         if bool in types or np.bool_ in types:
             return True
-        nested = types & {list, tuple, np.ndarray}
-        return bool(nested) and any(has_bool(v) for v in value if type(v) in nested)
+        if all(t in (float, int, np.float64, np.int64) for t in types):  # the common case: plain numbers
+            return False
+        return any(has_bool(v) for v in value if isinstance(v, (list, tuple, np.ndarray)))
     return isinstance(value, (bool, np.bool_))
 
 

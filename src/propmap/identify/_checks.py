@@ -40,7 +40,7 @@ def float_array(owner: str, name: str, value, shape: tuple, *, row: str, nan: bo
     try:
         raw = np.asarray(value)
         numeric = raw.dtype.kind in "iuf" or (raw.dtype.kind == "O" and all(  # (None: NaN, as NumPy reads it)
-            x is None or isinstance(x, numbers.Real) for x in raw.flat))
+            x is None or (isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))) for x in raw.flat))
         numeric = numeric and not has_bool(value)  # (no strings, no bools read as 0 or 1)
         a = raw.astype(float) if numeric else None
     except (TypeError, ValueError, OverflowError):  # ragged, or an int beyond the floats

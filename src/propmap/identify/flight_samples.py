@@ -88,7 +88,7 @@ class FlightSamples:
         if np.any(self.rotor_omega <= 0):
             raise ValueError(f"FlightSamples.rotor_omega must be > 0 rad/s, got {self.rotor_omega.min():g} "
                              "(flight_samples leaves a stopped rotor's samples out)")
-        index = np.asarray(self.log_index)
+        index = np.array(self.log_index)  # (a copy: the frozen samples do not share the caller's array)
         if index.shape != (n,) or (n and (index.dtype.kind not in "iu" or index.min() < 0
                                           or index.max() >= len(self.log_names))):
             raise ValueError(f"FlightSamples.log_index must be N = {n} indices into log_names "

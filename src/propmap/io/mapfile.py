@@ -369,8 +369,8 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     Raises
     ------
     ValueError
-        Unknown format, an empty path, or a name of a ``prop`` coordinate longer than
-        MAX_NAME_CHARS bytes (UTF-8).
+        Unknown format, an empty path, or (netCDF) a name of a ``prop`` coordinate longer
+        than MAX_NAME_CHARS bytes (UTF-8).
     TypeError
         ``ds`` not an xarray Dataset.
     OSError
@@ -384,7 +384,7 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
         raise ValueError("path is empty: give the map file to write")
     if fmt not in ("netcdf", "csv"):
         raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
-    if "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
+    if fmt == "netcdf" and "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
         longest = max((len(str(n).encode("utf-8")) for n in ds["prop"].values.ravel()), default=0)
         if longest > MAX_NAME_CHARS:  # (the reader refuses longer ones)
             raise ValueError(f"a propeller name of the prop coordinate is {longest} bytes long (UTF-8); a map file "
