@@ -113,6 +113,15 @@ def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):
     rep = r.to_dict()["identifiability"]
     assert rep["std_error"]["cd_min"] is None and rep["ci95"]["cd_min"] == [None, None]
     assert all(v is not None and v > 0 for n, v in rep["std_error"].items() if n != "cd_min")
+    # the angles' std errors and intervals in the units of their estimates (degrees; radians before,
+    # so that the interval of alpha_L0 did not contain its estimate)
+    full = r.to_dict()
+    assert "alpha_L0" in full["units"]
+    for n in full["units"]:
+        lo, hi = full["identifiability"]["ci95"][n]
+        assert lo < full["fitted"][n] < hi, n
+        assert full["identifiability"]["std_error"][n] == pytest.approx(math.degrees(r.identifiability.std_error[
+            r.names.index(n)]))
     short = fit_loads(d, apc8x6, options=FitOptions(prior=False, max_nfev=2))
     assert short.hit_max_nfev and "evaluation limit (2)" in short.report_text()
 

@@ -62,16 +62,18 @@ class Identifiability:
     std_error_data: np.ndarray | None = None
     effective_parameters: float | None = None
 
-    def to_dict(self) -> dict:
-        """JSON-ready form (angles in rad; a non-finite std error is null)."""
-        def num(v):
-            return float(v) if np.isfinite(v) else None
+    def to_dict(self, degrees=()) -> dict:
+        """JSON-ready form (a non-finite std error is null); the parameters named in
+        ``degrees`` in degrees (their std errors and intervals: the fit report's ``units``), the
+        others as fitted (angles in rad)."""
+        def num(v, name):
+            return (math.degrees(float(v)) if name in degrees else float(v)) if np.isfinite(v) else None
 
         return {
-            "std_error": {n: num(v) for n, v in zip(self.names, self.std_error)},
+            "std_error": {n: num(v, n) for n, v in zip(self.names, self.std_error)},
             "std_error_data_only": (None if self.std_error_data is None
-                                    else {n: num(v) for n, v in zip(self.names, self.std_error_data)}),
-            "ci95": {n: [num(a), num(b)] for n, (a, b) in zip(self.names, self.ci95)},
+                                    else {n: num(v, n) for n, v in zip(self.names, self.std_error_data)}),
+            "ci95": {n: [num(a, n), num(b, n)] for n, (a, b) in zip(self.names, self.ci95)},
             "effective_parameters": (None if self.effective_parameters is None
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
@@ -139,7 +141,8 @@ class FitResult:
     extra: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
-        """The JSON report (angles in degrees, as labelled in ``units``)."""
+        """The JSON report (angles in degrees, as labelled in ``units``: estimates, std errors and
+        95% intervals alike; the residuals in their own units)."""
         from ..io.params_file import params_to_dict
 
         return {
@@ -153,7 +156,7 @@ class FitResult:
             "at_bound": list(self.at_bound), "hit_max_nfev": self.hit_max_nfev, "warnings": list(self.warnings),
             "starts": [{k: ([float(a) for a in v] if isinstance(v, np.ndarray) else v) for k, v in s.items()}
                        for s in self.starts],
-            "identifiability": self.identifiability.to_dict(),
+            "identifiability": self.identifiability.to_dict(degrees={n for n in self.names if _is_angle(n)}),
             **self.extra,
         }
 
