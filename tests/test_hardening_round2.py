@@ -2,7 +2,9 @@
 case below was mishandled before (an option that silently meant the default, a map answering
 with absurd loads, a read or a connection that hung, an AttributeError from the API)."""
 
+import os
 import re
+import shutil
 import socket
 import threading
 import time
@@ -188,11 +190,24 @@ def test_fit_loads_refuses_a_file_given_twice_and_warns_of_another_propeller(cap
     sweeps = sorted(uiuc.glob("apce_10x7_pg*_*.txt"))[:2]
     link = tmp_path / "link_static.txt"
     link.symlink_to(static)
-    for twice in (static, link):  # the same path, or another path to the same file
+    hard = tmp_path / "hard_static.txt"
+    os.link(static, hard) if os.stat(tmp_path).st_dev == os.stat(static).st_dev else shutil.copyfile(static, hard)
+    copy = tmp_path / "copy_static.txt"
+    shutil.copyfile(static, copy)
+    # the same path, another path to the same file (a symbolic or a hard link: the hard link counted
+    # twice before), or a byte-identical copy
+    for twice, what in ((static, "is the same file as"), (link, "is the same file as"),
+                        (hard, "its data would count twice"), (copy, "is a copy of")):
         code, _, err = run(capsys, "fit", "loads", static, twice, "--prop", "apce_10x7", "--out", tmp_path / "p.toml")
-        assert one_line_error(code, err, "is the same file as"), err
+        assert one_line_error(code, err, what), err
     code, _, err = run(capsys, "fit", "loads", static, *sweeps, "--prop", "apce_10x5", "--out", tmp_path / "p.toml")
     assert code == 0 and "is named for propeller 'apce_10x7', fitted with --prop 'apce_10x5'" in err
+    # a sweep of another propeller named with a letters-first run id (pg0820: missed before, as 527 of
+    # the 1231 UIUC run files were)
+    other = sorted(uiuc.glob("apce_10x5_pg*_*.txt"))[:1]
+    code, _, err = run(capsys, "fit", "loads", static, *sweeps, *other, "--prop", "apce_10x7", "--out",
+                       tmp_path / "q.toml")
+    assert "is named for propeller 'apce_10x5', fitted with --prop 'apce_10x7'" in err
 
 
 def test_a_plot_folder_name_too_long_for_the_system_is_refused_naming_plot(capsys, tmp_path):

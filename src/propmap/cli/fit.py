@@ -251,10 +251,11 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     seen: dict = {}
     for s in sources:
-        key = os.path.realpath(s)
-        if key in seen:
-            raise InputError(f"SOURCE: {_short(s)} is the same file as {_short(seen[key])}: its data would count twice")
-        seen[key] = s
+        st = os.stat(s)  # (the same file under any path: a symbolic or a hard link)
+        for key, what in (((st.st_dev, st.st_ino), "the same file as"), (_content_digest(s, st), "a copy of")):
+            if key in seen:
+                raise InputError(f"SOURCE: {_short(s)} is {what} {_short(seen[key])}: its data would count twice")
+            seen[key] = s
     prop = prop_choice.load(prop_spec)
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
@@ -270,6 +271,14 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
         raise InputError(f"SOURCE: {exc}") from None
 
 
+def _content_digest(path, st) -> tuple:
+    """(size, SHA-256) of a file's bytes: two SOURCE files with one content are one data set twice."""
+    import hashlib
+
+    with open(path, "rb") as fh:
+        return st.st_size, hashlib.file_digest(fh, "sha256").hexdigest()
+
+
 def _warn_other_propeller(sources, prop) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
     fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run."""
@@ -279,7 +288,8 @@ def _warn_other_propeller(sources, prop) -> None:
 
     base = re.sub(r"_geom$", "", prop.name)
     for s in sources:
-        m = re.match(r"(.+?)_(static_[0-9a-z]+|[0-9]{3,4}[a-z]{2}_[0-9]+)\.txt$", Path(s).name)
+        # the run id: digits then letters (2801rd) or letters then digits (rd0989, pg0812, kt0535)
+        m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$", Path(s).name)
         if m and base and m.group(1) != base:
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, fitted with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
