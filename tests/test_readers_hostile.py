@@ -646,3 +646,18 @@ def test_a_stall_angle_in_radians_warns(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         read_params(_write(tmp_path, "q.toml", PARAMS))
+
+
+def test_a_sweep_whose_eta_is_not_j_ct_over_cp_warns(tmp_path):
+    """CT and CP swapped in a UIUC sweep fitted without a word (exit 0, only a bound warning);
+    eta, computed by UIUC from the file's own J, CT and CP (within 0.34% in the median on all
+    1,917 sweep files of both volumes), now exposes it."""
+    rows = [(0.2, 0.10, 0.050), (0.4, 0.08, 0.046), (0.6, 0.05, 0.038)]
+    good = "J CT CP eta\n" + "".join(f"{j} {ct} {cp} {j * ct / cp:.4f}\n" for j, ct, cp in rows)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_uiuc_sweep(_write(tmp_path, "p_9x6_ab0001_5000.txt", good))
+    swapped = "J CT CP eta\n" + "".join(f"{j} {cp} {ct} {j * ct / cp:.4f}\n" for j, ct, cp in rows)
+    with pytest.warns(UserWarning, match=r"the eta column is .* times J CT / CP in the median: are the CT and CP "
+                                         r"columns swapped or out of order\?"):
+        read_uiuc_sweep(_write(tmp_path, "q_9x6_ab0002_5000.txt", swapped))
