@@ -661,3 +661,11 @@ def test_a_sweep_whose_eta_is_not_j_ct_over_cp_warns(tmp_path):
     with pytest.warns(UserWarning, match=r"the eta column is .* times J CT / CP in the median: are the CT and CP "
                                          r"columns swapped or out of order\?"):
         read_uiuc_sweep(_write(tmp_path, "q_9x6_ab0002_5000.txt", swapped))
+
+
+def test_a_row_with_more_fields_than_the_header_is_refused(tmp_path):
+    """A static row '3211 0.1033 0 .0540' (a value split by a blank) was read as CP = 0, the
+    extra field dropped; no UIUC file of either volume has such a row."""
+    p = _write(tmp_path, "s_9x6_static_ab0001.txt", "RPM CT CP\n3000 0.1030 0.0530\n3211 0.1033 0 .0540\n")
+    refused(MeasurementFileError, read_uiuc_static, p, match=r"line 3: 4 fields where the header has 3 \(a value "
+                                                             r"split by a blank\?\)")

@@ -236,8 +236,8 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
 
     Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
     ``RPM average = 4042``) are metadata, lines starting with ``#`` comments; any other line
-    that is not numeric is an error naming the file and the line. Every value must be a
-    finite number.
+    that is not numeric, or has more fields than the header, is an error naming the file and
+    the line. Every value must be a finite number.
     """
     name = show_path(path)
     meta: dict[str, tuple[str, int]] = {}
@@ -257,7 +257,7 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
             meta[m[0]] = (m[1], k)
             continue
         if [h.lower() for h in ln.split()[: len(expected)]] == want:
-            start = k
+            start, width = k, len(ln.split())
             break
     if start is None:
         if not first:
@@ -276,6 +276,9 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
         parts = ln.split()
         if len(parts) < n:
             raise error(f"{name}, line {k}: expected {n} columns, found {len(parts)}")
+        if len(parts) > width:  # (a value split by a blank, 0 .0540, would shift the columns silently)
+            raise error(f"{name}, line {k}: {len(parts)} fields where the header has {width} (a value split by a "
+                        "blank?)")
         vals = []
         for j, x in enumerate(parts[:n]):
             try:
