@@ -57,7 +57,10 @@ def fit_demo(prop, generic, out_dir: Path):
     # base and prior from the catalogue without PROP's family: nothing of the held-out data leaks
     cambered = fit_loads(train, prop, base=generic, options=FitOptions(population=population(without=PROP)))
     paper = fit_loads(train, prop, base=preset(PAPER), options=FitOptions())
-    write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
+    from .fit import _coverage
+
+    # with the fitted data's [coverage], as `fit loads` writes it: later uses warn beyond it
+    write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air, coverage=_coverage(train, prop),
                  comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
     cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)
     cmp_p = holdout_comparison(entry, prop, paper.params, preset(PAPER), HOLDOUT)
