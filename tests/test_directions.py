@@ -287,3 +287,17 @@ def test_a_hand_written_coverage_table_may_give_some_keys(tmp_path):
     half.write_text(text + "[coverage]\nrpm_min = 3000.0\n")
     out = run(cli, ["loads", "apce_8x6", "--params", str(half), "--rpm", "2000"])
     assert out.exit_code == 0 and "span from 3000 rpm up" in out.output
+
+
+def test_directions_stay_fewer_than_the_residuals():
+    """One J point (thrust and torque: 2 residuals) fitted 2 directions, no degree of freedom left,
+    where docs/identification.md says a fit of K directions needs more than K residuals."""
+    from propmap.identify import LoadData
+
+    prop = pm.load_propeller("apce_8x6")
+    truth = pm.rotor_loads(prop, pm.default_params("apce_8x6"), 4000 * math.pi / 30, 3.0, 0.0)
+    d = LoadData(np.array([4000 * math.pi / 30]), np.array([3.0]), np.array([0.0]),
+                 {"thrust": np.array([float(truth.thrust)]), "torque": np.array([float(truth.torque)])},
+                 np.array(["sweep"], dtype=object))
+    r = fit_loads(d, prop)
+    assert r.extra["directions"]["count"] == 1

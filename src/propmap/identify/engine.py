@@ -336,9 +336,10 @@ def _fit_along_directions(make_data, names, base, options, k):
         return data(x), _jacobian(data, x, lb, ub)
 
     t0 = time.perf_counter()
-    every, lam = leading_directions(data_jac(mu)[1], chol, weight, len(names))
-    if k is None:
-        k = max(1, int(np.sum(lam >= DATA_OVER_PRIOR)))
+    jac0 = data_jac(mu)[1]
+    every, lam = leading_directions(jac0, chol, weight, len(names))
+    if k is None:  # (fewer than the residuals: a fit of K directions needs more than K of them)
+        k = max(1, min(int(np.sum(lam >= DATA_OVER_PRIOR)), jac0.shape[0] - 1))
     B = every[:, :k]
 
     def x_of(c):
