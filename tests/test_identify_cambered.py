@@ -79,7 +79,7 @@ def test_the_prior_keeps_a_static_run_near_the_base_and_changes_rich_data_little
     # leave free are named as held by the prior
     assert shrunk.cost == pytest.approx(0.5 * float(shrunk.residuals @ shrunk.residuals))
     assert shrunk.extra["prior"]["cost"] > 0
-    assert any("population prior holds" in w for w in shrunk.identifiability.warnings)
+    assert any("the population prior weighs on them too" in w for w in shrunk.identifiability.warnings)
     k = CAMBERED_FIT_RE.index("cd2")
     assert abs(shrunk.x[k] - base.cd2) < abs(free.x[k] - base.cd2) + 1e-12
     rich = fit_loads(synthetic(apc8x6, TRUE, noise=0.005, seed=2), apc8x6, base=base)

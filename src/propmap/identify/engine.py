@@ -224,8 +224,9 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         own = tuple(w for w in idf.warnings if any(d in w for d in determined)
                     and w.split(" ", 1)[0] not in extra["prior"]["names"])
         idf_warns = own + tuple(w for w in post.warnings if not any(d in w for d in determined)) + (
-            (f"the data alone leave {', '.join(held)} (nearly) free: the population prior holds them near the "
-             "base set's values (data-only std errors in the report)",) if held else ())
+            (f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
+             "of its natural scale): the population prior weighs on them too (the data-only std errors in the report)",)
+            if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
     warns = list(warns)
