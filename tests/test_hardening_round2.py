@@ -217,3 +217,12 @@ def test_a_plot_folder_name_too_long_for_the_system_is_refused_naming_plot(capsy
                          "--plot", str(tmp_path / ("d" * 300)), "--plot-rpm", "5000")
     assert one_line_error(code, err, "--plot: ") and "too long" in err, err
     assert not (tmp_path / "m.nc").exists()
+
+
+def test_fit_loads_of_a_catalogue_name_beside_files_says_so(capsys, tmp_path):
+    from importlib import resources
+    from pathlib import Path
+
+    static = sorted(Path(str(resources.files("propmap") / "data" / "uiuc_v1")).glob("apce_10x7_static_*.txt"))[0]
+    code, _, err = run(capsys, "fit", "loads", "apce_10x7", static, "--prop", "apce_10x7", "--out", tmp_path / "p.toml")
+    assert one_line_error(code, err, "'apce_10x7' is a catalogue propeller: give it alone"), err
