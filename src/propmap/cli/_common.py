@@ -173,6 +173,13 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     return params, air, spec
 
 
+def set_collective_deg(params) -> float:
+    """A parameter set's own collective (its blade-angle offset) [deg], to 12 digits, so that a
+    whole number of degrees written to a file reads back as one (not 3.0000000000000004 or
+    29.999999999999996) where a command adds its option's collective and checks the sum."""
+    return float(f"{math.degrees(params.collective):.12g}")
+
+
 def check_section_match(propeller, label: str) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor

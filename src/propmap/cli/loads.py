@@ -11,7 +11,7 @@ import click
 
 from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_outputs,
                       check_point, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      resolve_air, with_air_options, with_prop_options)
+                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
@@ -285,7 +285,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     from ..io.atomic import atomic_write
 
     # first pass: every value checked before any work, and the extremes for the warnings
-    offset = float(f"{math.degrees(params.collective):.12g}")  # the set's collective, added to each row's (as loads)
+    offset = set_collective_deg(params)  # the set's collective, added to each row's
     n, extremes = _scan(prop, path, offset)
     coverage_messages(prop, label, air, *extremes)
 
@@ -297,7 +297,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                 # with a collective column the solver gets the sum (the set's offset + the row's), the one limit
                 res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
                                    values["rpm"], values["airspeed"], values["incidence_deg"],
-                                   None if rows is None else rows + math.degrees(params.collective))
+                                   None if rows is None else rows + offset)
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
@@ -375,8 +375,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
-    # the parameter set's own blade-angle offset, added to the option's (12 digits: no 3.0000000000000004)
-    set_deg = float(f"{math.degrees(params.collective):.12g}")
+    set_deg = set_collective_deg(params)  # the parameter set's own blade-angle offset, added to the option's
     total_deg = set_deg + collective_deg
     if abs(total_deg) > COLLECTIVE_DEG_MAX:
         raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus {collective_deg:g} "

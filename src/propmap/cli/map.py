@@ -13,7 +13,8 @@ import click
 
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
                       check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params,
-                      option_group, parse_names, resolve_air, with_air_options, with_prop_options)
+                      option_group, parse_names, resolve_air, set_collective_deg, with_air_options,
+                      with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
@@ -225,12 +226,12 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             from ..core.airfoil import COLLECTIVE_MAX
 
             # (12 digits: 30 deg is degrees(COLLECTIVE_MAX) = 29.999999999999996, and must pass)
-            total = float(f"{math.degrees(params.collective) + collective_deg:.12g}")
+            set_deg = set_collective_deg(params)
+            total = float(f"{set_deg + collective_deg:.12g}")
             limit = float(f"{math.degrees(COLLECTIVE_MAX):.12g}")
             if not (math.isfinite(collective_deg) and abs(total) <= limit):
-                raise InputError(f"--collective-deg: the parameter set's collective "
-                                 f"{math.degrees(params.collective):g} deg plus {collective_deg:g} deg must be "
-                                 f"within [-{limit:g}, {limit:g}] deg, got {total:.6g}")
+                raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus "
+                                 f"{collective_deg:g} deg must be within [-{limit:g}, {limit:g}] deg, got {total:.6g}")
             params = params.replace(collective=math.radians(total))
             label = f"{label} + collective {collective_deg:g} deg"
         rpm, V, inc = _axes(propeller, axes)
