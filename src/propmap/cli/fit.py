@@ -252,10 +252,14 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
+    stats = [(s, os.stat(s)) for s in sources]  # (the same file under any path: a symbolic or a hard link)
+    sizes = [st.st_size for _, st in stats]
     seen: dict = {}
-    for s in sources:
-        st = os.stat(s)  # (the same file under any path: a symbolic or a hard link)
-        for key, what in (((st.st_dev, st.st_ino), "the same file as"), (_content_digest(s, st), "a copy of")):
+    for s, st in stats:
+        keys = [((st.st_dev, st.st_ino), "the same file as")]
+        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
+            keys.append((_content_digest(s), "a copy of"))
+        for key, what in keys:
             if key in seen:
                 raise InputError(f"SOURCE: {_short(s)} is {what} {_short(seen[key])}: its data would count twice")
             seen[key] = s
@@ -274,12 +278,12 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
         raise InputError(f"SOURCE: {exc}") from None
 
 
-def _content_digest(path, st) -> tuple:
-    """(size, SHA-256) of a file's bytes: two SOURCE files with one content are one data set twice."""
+def _content_digest(path) -> str:
+    """SHA-256 of a file's bytes: two SOURCE files with one content are one data set twice."""
     import hashlib
 
     with open(path, "rb") as fh:
-        return st.st_size, hashlib.file_digest(fh, "sha256").hexdigest()
+        return hashlib.file_digest(fh, "sha256").hexdigest()
 
 
 def _warn_other_propeller(sources, prop) -> None:
