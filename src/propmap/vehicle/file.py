@@ -300,7 +300,7 @@ def read_vehicle(path) -> Vehicle:
         prop = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH, blades)
         params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
         j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
-        rotors.append(Rotor(position, axis / length, spin, prop, params=params, inertia=j_r))
+        rotors.append(Rotor(position, axis, spin, prop, params=params, inertia=j_r))  # (Rotor normalises the axis)
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)

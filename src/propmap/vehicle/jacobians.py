@@ -44,12 +44,12 @@ def requested_derivatives(derivatives, vehicle: Vehicle, params=None) -> tuple:
     if params is not None:
         from dataclasses import fields
 
-        unknown = [n for n in wrt if n not in own and n not in {f.name for f in fields(params)}]
+        field_names = {f.name for f in fields(params)}
+        unknown = [n for n in wrt if n not in own and n not in field_names]
         if unknown:
             raise ValueError(f"derivatives: unknown name {unknown[0]!r:.60}; valid for a vehicle: {', '.join(own)} "
                              f"or a numeric field of {type(params).__name__}")
-    if any(n not in own for n in wrt) and any(r.params is not None
-                                                                            for r in vehicle.rotors):
+    if any(n not in own for n in wrt) and any(r.params is not None for r in vehicle.rotors):
         raise ValueError("derivatives with respect to a section parameter need every rotor on the set passed "
                          "(a rotor of this vehicle has its own)")
     return wrt
