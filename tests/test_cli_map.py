@@ -84,7 +84,8 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     out = tmp_path / "all.nc"
     code, text, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL, "--out", out)
     assert code == 0, err
-    assert "of the 2 checked propellers' maps" in text  # the summary of their checks against the targets
+    # the summary of their checks (this 5 x 4 x 7 grid is far too coarse: 3.1% and 2.7% at worst, 2026-11-26)
+    assert "2 of the 2 checked propellers' maps miss the targets" in text
     code, text, err = run(capsys, "map", "--all", "--props", "apce_8x6,apce_10x7", *SMALL[:-2], "--check-points", "0",
                           "--out", tmp_path / "unchecked.nc")
     assert code == 0 and "the 2 propellers' maps were not checked against the model (--check-points 0)" in text

@@ -67,6 +67,8 @@ CG_BOUND = 0.05
 #: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
 #: rotor thrust (docs/flight.md), far inside the flight data's model error
 FLIGHT_DISCRETIZATION = Discretization(24, 8)
+
+
 def default_flight_names(base: SectionParams) -> tuple[str, ...]:
     """The parameters a flight fit frees by default: :data:`FLIGHT_FIT`, less the cambered
     section's ``cl_alpha`` and ``alpha_L0_re`` for the paper's model."""

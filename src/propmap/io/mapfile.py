@@ -384,7 +384,8 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
         raise ValueError("path is empty: give the map file to write")
     if fmt not in ("netcdf", "csv"):
         raise ValueError(f"unknown map format {fmt!r} (netcdf or csv)")
-    if fmt == "netcdf" and "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
+    names_as_text = "prop" in ds.variables and ds["prop"].dtype.kind in "UO"  # a map over several propellers
+    if fmt == "netcdf" and names_as_text:
         longest = max((len(str(n).encode("utf-8")) for n in ds["prop"].values.ravel()), default=0)
         if longest > MAX_NAME_CHARS:  # (the reader refuses longer ones)
             raise ValueError(f"a propeller name of the prop coordinate is {longest} bytes long (UTF-8); a map file "
@@ -393,7 +394,7 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
     def write(tmp):
         if fmt == "netcdf":
             encoding = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
-            if "prop" in ds.variables and ds["prop"].dtype.kind in "UO":
+            if names_as_text:
                 # fixed-length characters, not netCDF-4 variable-length strings: a file with those,
                 # held open lazily by xarray and opened again in the same process, crashes Python
                 # (segmentation fault; netCDF4 1.7.5 with netCDF-C 4.10.1, 2026-11-26)
