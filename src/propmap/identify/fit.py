@@ -35,7 +35,8 @@ from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
-                      MIN_RATES_FOR_RE, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle, param_names)
+                      MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
+                      param_names)
 from .result import FitResult, Identifiability
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
@@ -322,8 +323,8 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 def _data_kind(data: LoadData) -> str:
     """"static" (all airspeeds 0), "collective" (all airspeeds 0, several collectives),
-    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, within 3%, and no
-    static run spanning STATIC_RPM_SPAN) or "rates"."""
+    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, :func:`_sweep_rates`, and
+    no static run spanning STATIC_RPM_SPAN) or "rates"."""
     moving = data.airspeed > 0
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
@@ -345,9 +346,16 @@ def _measures_inplane_force(data: LoadData, keys) -> bool:
 
 
 def _sweep_rates(data: LoadData) -> int:
-    """Distinct rotation rates (3% apart) of the moving points (0 for static data)."""
-    rpm = np.sort(data.omega[data.airspeed > 0])
-    return 0 if rpm.size == 0 else 1 + int(np.sum(np.diff(rpm) > 0.03 * rpm[1:]))
+    """Distinct rotation rates of the moving points (0 for static data): the rates in order,
+    each more than 3% above the last one counted. Measured from that one, not from its
+    neighbour, so that rates in steps finer than 3% (a thrust stand's continuous sweep) count
+    by the span they cover; a UIUC sweep's rpm scatter stays one rate (all 147 catalogue
+    propellers count as before)."""
+    n, last = 0, -math.inf
+    for w in np.sort(data.omega[data.airspeed > 0]):
+        if w > RATE_STEP * last:
+            n, last = n + 1, w
+    return n
 
 
 def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, kind: str, names) -> int | None:

@@ -14,7 +14,7 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
            "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
-           "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT",
+           "RATE_STEP", "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT",
            "FLAP_START", "ABSENT_AT_ZERO"]
 
 
@@ -59,6 +59,8 @@ FLAP_START = 1.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
+#: a rotation rate counts as another one more than this factor above the last one counted
+RATE_STEP = 1.03
 #: ... as does a static run over this ratio of rotation rates (a UIUC static run spans 2-8x):
 #: with the static run and the lowest sweep, leave-one-family-out on both UIUC volumes
 #: (docs/identification.md) gave a held-out median of 3.9% (vol. 1) and 5.0% (vol. 2) with the
