@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import math
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import click
@@ -138,7 +138,11 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
         figure(stem.with_name(stem.name + ".png"))
-    click.echo(json.dumps(report, indent=2, default=float) if as_json else text)
+    # the fit's warnings go to standard error, once: the report on standard output leaves them out
+    # (report.txt keeps them)
+    echoed = {f"WARNING: {w}" for w in result.warnings[:MAX_WARNINGS]}
+    click.echo(json.dumps(report, indent=2, default=float) if as_json else
+               "\n".join(line for line in text.splitlines() if line not in echoed))
     for w in result.warnings[:MAX_WARNINGS]:
         click.echo(f"propmap: warning: {w}", err=True)
     if len(result.warnings) > MAX_WARNINGS:
@@ -190,8 +194,6 @@ def fit() -> None:
 @with_air_options
 def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, air_choice):
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
-    from dataclasses import replace
-
     import numpy as np
 
     from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
@@ -278,6 +280,26 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
         raise InputError(f"SOURCE: {exc}") from None
 
 
+def _file_air(data, air, air_choice):
+    """The fit's air: the file's logged density (LoadData.air_density) where no air option is
+    given (the set's viscosity and speed of sound kept), said in a note; beside an air option
+    that differs from it by more than 2%, a warning."""
+    from ._common import warn
+
+    rho = data.air_density
+    if rho is None:
+        return air
+    given = air_choice.options_given()
+    if not given:
+        click.echo(f"propmap: note: the fit's air density is the file's, {rho:.4g} kg/m^3 (--rho to give another)",
+                   err=True)
+        return replace(air, rho=rho)
+    if abs(air.rho / rho - 1.0) > 0.02:
+        warn(f"the air density from {' '.join(given)}, {air.rho:.4g} kg/m^3, is not the file's {rho:.4g} kg/m^3 "
+             "(fitted at the option's)")
+    return air
+
+
 def _content_digest(path) -> str:
     """SHA-256 of a file's bytes: two SOURCE files with one content are one data set twice."""
     import hashlib
@@ -288,16 +310,31 @@ def _content_digest(path) -> str:
 
 def _warn_other_propeller(sources, prop) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
-    fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run."""
+    fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
+    case. A hub's blade count in the name (vol. 2's ``da4022_5x3.75_3b_...``, the 2-blade
+    geometry file shared) is compared with --blades instead; a family geometry file
+    (``da4002_geom.txt``) covers its family's sizes."""
     import re
 
     from ._common import warn
 
-    base = re.sub(r"_geom$", "", prop.name)
+    base = re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower()
     for s in sources:
         # the run id: digits then letters (2801rd) or letters then digits (rd0989, pg0812, kt0535)
-        m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$", Path(s).name)
-        if m and base and m.group(1) != base:
+        m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$",
+                     Path(s).name, re.IGNORECASE)
+        if not (m and base):
+            continue
+        named = m.group(1).lower()
+        hub = re.fullmatch(r"(.+)_([1-9])b", named)
+        if hub:
+            named, blades = hub.group(1), int(hub.group(2))
+            if blades != prop.n_blades:
+                warn(f"SOURCE: {_short(Path(s).name)} is named for a {blades}-blade hub ('_{blades}b'), fitted with "
+                     f"{prop.n_blades} blades: give --blades {blades} if that is the hub measured (the fitted section "
+                     "would otherwise absorb the blade count)")
+                return
+        if named != base and not named.startswith(base + "_"):
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, fitted with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
@@ -336,8 +373,6 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     thrust stand, or a rotor's hover collective sweep; optional group), an RCbenchmark /
     Tyto thrust-stand export as written, or UIUC-format static and wind-tunnel files.
     """
-    from dataclasses import replace
-
     import numpy as np
 
     from ..identify import fit_loads
@@ -349,6 +384,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
+    air = _file_air(data, air, air_choice)
     check_section_match(prop, base_label)
     if entry is None:
         from ..identify.data import DataError, sanity_check

@@ -119,9 +119,10 @@ class _Csv:
         if n_lines > MAX_LINES:
             raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
         self._raw = raw
-        # ',' or ';' (spreadsheets in locales with a decimal comma), from the header line
-        head = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n \t"), maxsplit=1)[0]
-        self.sep = ";" if head.count(b";") > head.count(b",") else ","
+        # ',', ';' (spreadsheets in locales with a decimal comma) or a tab, from the header line
+        head = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=1)[0]
+        counts = {sep: head.count(sep.encode()) for sep in (",", ";", "\t")}
+        self.sep = max(counts, key=lambda sep: (counts[sep], sep == ","))  # (a tie: the comma)
         self.header_line = 0
         self.columns: list[str] = []
         for line, cells in self._rows():
@@ -163,7 +164,7 @@ class _Csv:
             elif "unexpected end of data" in msg:
                 msg = "unterminated quote: a quoted field is never closed"
             elif "expected after" in msg:
-                mark = "semicolon" if getattr(self, "sep", ",") == ";" else "comma"
+                mark = {";": "semicolon", "\t": "tab"}.get(getattr(self, "sep", ","), "comma")
                 msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
@@ -178,7 +179,7 @@ class _Csv:
         nums = {c: array.array("d") for c in numeric}
         texts = {c: [] for c in text if c in self.index}
         lines = array.array("q")
-        # a ';'-separated file: where a decimal comma and a point were first seen, (line, column)
+        # a ';'- or tab-separated file: where a decimal comma and a point were first seen, (line, column)
         marks = [None, None]
         rows = self._rows()
         next(rows)  # the header
@@ -195,7 +196,7 @@ class _Csv:
                 if not cell:
                     raise self.error(f"column {_short(c)} is empty (missing value)", line)
                 number = cell
-                if self.sep == ";":
+                if self.sep != ",":
                     number = self._decimal_comma(c, cell, line, marks)
                 try:
                     x = parse_number(number)
@@ -215,7 +216,7 @@ class _Csv:
                 np.frombuffer(lines, dtype=np.int64).copy())
 
     def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
-        """A ';'-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).
+        """A ';'- or tab-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).
 
         ``marks`` holds where a decimal comma and a point were first seen, (line, column): a file
         with both is refused, since beside decimal commas a point is a thousands separator

@@ -244,6 +244,17 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                              f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
                              "airspeed (against the disk's in-plane motion); negate the column if the file uses the "
                              "other convention")
+    if "drag" in data.measured:  # an in-plane force without an in-plane airspeed: an incidence the file does not give?
+        Dm = data.measured["drag"]
+        axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)
+        scale = (np.abs(data.measured["thrust"]) if "thrust" in data.measured
+                 else np.full(data.n, np.nanmax(np.abs(Dm), initial=0)))
+        large = axial & (np.abs(Dm) > 0.05 * np.nan_to_num(scale))
+        if large.sum() >= 3 and large.sum() >= 0.5 * axial.sum():
+            of = "thrust" if "thrust" in data.measured else "largest drag"
+            warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
+                             "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
+                             "incidence missing (an 'incidence_deg' column)?")
     ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
         return warnings_

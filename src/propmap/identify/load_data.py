@@ -5,6 +5,7 @@ catalogue's and UIUC files' readers (identify/data.py).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,6 +32,9 @@ class LoadData:
     notes : tuple of str
         What the reader decided (units converted, rows skipped, steps averaged, a sign
         turned), for the user.
+    air_density : float or None
+        The air density the file logged [kg/m^3] (the median of a density column), > 0; None:
+        not logged. ``fit loads`` fits at it where no air option is given.
 
     Raises
     ------
@@ -51,6 +55,7 @@ class LoadData:
     source: str = ""
     collective: np.ndarray | None = None
     notes: tuple = ()
+    air_density: float | None = None
 
     def __post_init__(self):
         n = first_length("LoadData", "omega", self.omega)
@@ -60,6 +65,11 @@ class LoadData:
             fields_[name] = float_array("LoadData", name, getattr(self, name), (n,), row="point")
         if np.any(omega <= 0):
             raise ValueError(f"LoadData.omega must be > 0 rad/s, got {omega[omega <= 0][0]:g}")
+        if self.air_density is not None and not (isinstance(self.air_density, (int, float))
+                                                 and not isinstance(self.air_density, bool)
+                                                 and math.isfinite(self.air_density) and self.air_density > 0):
+            raise ValueError(f"LoadData.air_density must be a finite number > 0 kg/m^3 or None, got "
+                             f"{self.air_density!r:.40}")
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
         if np.any((fields_["incidence"] < 0) | (fields_["incidence"] > np.pi)):
@@ -88,7 +98,7 @@ class LoadData:
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
-                        None if self.collective is None else self.collective[mask], self.notes)
+                        None if self.collective is None else self.collective[mask], self.notes, self.air_density)
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")

@@ -28,7 +28,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     :mod:`propmap.identify.stand`); ``airspeed`` [m/s] and ``incidence_deg`` (both default 0:
     a static thrust stand); optional ``collective_deg`` (blade-angle offset of a
     variable-pitch rotor, in [-45, 45] deg: a hover collective sweep is a valid data set)
-    and ``group`` (run label). The exports of RCbenchmark / Tyto thrust stands (Series
+    and ``group`` (run label); optional ``air density`` [kg/m^3] (``Air Density (kg/m³)``, ``rho``;
+    its median is ``LoadData.air_density``). The exports of RCbenchmark / Tyto thrust stands (Series
     1520, 1580, 1585, 1780) are read as written: the optical or electrical motor speed (the
     choice stated), a "steps" test averaged to one point per ESC step (its settling rows
     dropped; each step a group for holding out), rows of a stopped motor (rpm 0, or an empty
@@ -106,10 +107,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")
     keys = [k for k in LOAD_KEYS if k in cm.columns]
-    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time")
+    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time", "air_density")
                              if q in cm.columns), *keys]
     low = {q: cm.column(q).lower() for q in quantities}
-    optional = {low[q] for q in speeds} | ({low["time"]} if "time" in low else set())
+    optional = {low[q] for q in speeds} | {low[q] for q in ("time", "air_density") if q in low}
     raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional,
                                stop={low[q] for q in speeds})
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
@@ -162,6 +163,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     n = lines.size
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
+    air_density = _air_density(v.pop("air_density", None), cm.column("air_density"), what, p, notes)
     # a "steps" test: one averaged point per ESC step
     group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
              else None)
@@ -211,7 +213,29 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if group is None:
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}", collective, tuple(notes))
+                    group, f"{path}", collective, tuple(notes), air_density)
+
+
+#: the air densities a load file's density column may give [kg/m^3] (sea level 1.225; 5 km 0.74)
+AIR_DENSITY_RANGE = (0.05, 5.0)
+
+
+def _air_density(rho, column, what: str, p: str, notes: list) -> float | None:
+    """The median of a density column's running rows [kg/m^3] (None without one), with a note."""
+    if rho is None:
+        return None
+    rho = rho[np.isfinite(rho)]
+    if not rho.size:
+        return None
+    lo, hi = AIR_DENSITY_RANGE
+    if not (lo <= rho.min() and rho.max() <= hi):
+        bad = rho.min() if rho.min() < lo else rho.max()
+        raise DataError(f"{what}: {p}: {column!r} gives {bad:g} kg/m^3; an air density must be in [{lo:g}, {hi:g}] "
+                        "kg/m^3")
+    med = float(np.median(rho))
+    spread = f" (the rows range {rho.min():.4g}-{rho.max():.4g})" if rho.max() > 1.01 * rho.min() else ""
+    notes.append(f"air density {med:.4g} kg/m^3 from {column!r}, the median of its rows{spread}")
+    return med
 
 
 def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:

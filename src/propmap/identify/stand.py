@@ -14,9 +14,12 @@ Units (a quantity without a unit is SI, rpm for rotation speed):
 
 ==============  ===================================================================
 thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
-torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm, gf·cm, lbf·in, ozf·in, lbf·ft
+torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
+                (lb·in), ozf·in (oz·in, oz-in), lbf·ft (lb·ft)
 rotation speed  rpm, rad/s, Hz (rev/s)
-airspeed        m/s, km/h (kmh), mph, kn (kt, knots)
+airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots)
+angle           deg (degrees, °), rad
+air density     kg/m³ (kg/m^3, g/L), g/cm³
 ==============  ===================================================================
 
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
@@ -41,10 +44,13 @@ UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
               "lb": LBF, "ozf": LBF / 16, "oz": LBF / 16},
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
-               "lbfin": LBF * INCH, "ozfin": LBF / 16 * INCH, "lbfft": LBF * 0.3048},
+               "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
+               "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
     "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
-    "speed": {"ms": 1.0, "kmh": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600, "kt": 1852 / 3600, "knots": 1852 / 3600},
-    "angle": {"deg": 1.0, "rad": 180.0 / math.pi},
+    "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
+              "kt": 1852 / 3600, "knots": 1852 / 3600},
+    "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
+    "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3},
 }
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
@@ -65,6 +71,9 @@ _NAMES = {
     # a pulse width [us] or a throttle [%, or a fraction]: its unit is read by esc_form
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
+    # the air density a stand or tunnel logs (its median is the fit's air where no air option is given)
+    "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
+    "density": ("air_density", "density"), "rho": ("air_density", "density"),
 }
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
@@ -179,7 +188,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         that is neither a speed's nor an angle's is not) where no ``airspeed`` or
         ``incidence_deg`` column is recognised (the points would be read as static or axial; a
         name that may mean something else, ``V``, ``J``, ``mu``, ``angle``, ``tilt``, ``yaw``,
-        gets a note instead),
+        gets a note instead), any column it does not read whose unit is a speed's (``Flight
+        speed (m/s)``) where no airspeed is, or an angle's (``Shaft angle (deg)``) where an
+        airspeed is read and no incidence, a rotation speed in a speed's unit (``Speed (m/s)``),
         an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
     """
     cm = ColumnMap()
@@ -196,6 +207,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 factor = 1.0  # SI (rpm, deg)
             else:
                 tok = _token(unit)
+                if kind == "rotation" and tok in UNITS["speed"]:
+                    raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or "
+                                "Hz): name an airspeed 'airspeed' (with its unit, e.g. 'airspeed (m/s)')")
                 if tok not in UNITS[kind]:
                     raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: "
                                 f"{', '.join(UNITS[kind])})")
@@ -235,10 +249,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              "'airspeed' [m/s] (an advance ratio as airspeed = J n D)", "static (airspeed 0)"),
             ("incidence_deg", _ANGLE_LIKE, "a flow angle",
              "'incidence_deg', the angle between the airspeed and the rotor axis (0 axial climb, 90 edgewise, 180 "
-             "axial descent)", "in axial flow (incidence 0)")):
+             "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
         if quantity in cm.columns:
             continue
         like = [n for n, b in bases.items() if b in similar]
+        # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
+        # points move (Shaft angle (deg) beside an airspeed): its name may be anything
+        kind = "speed" if quantity == "airspeed" else "angle"
+        if quantity == "airspeed" or "airspeed" in cm.columns:
+            like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]]
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")

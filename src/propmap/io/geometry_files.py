@@ -51,7 +51,7 @@ LAST_STATION_MIN = 0.9
 #: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of
 #: the thrust, would be the end polynomials' guess (a blade measured to 0.49 R made 7 times its thrust)
 LAST_STATION_REFUSED = 0.7
-_NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII)
+_NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
 
 
 def _size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
@@ -131,7 +131,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         warnings.warn(f"{where}: {shown} not read: a UIUC geometry file is its r/R c/R beta table (the diameter from "
                       "the file name or diameter_in, the blade count from n_blades: --diameter-in, --blades)",
                       UserWarning, stacklevel=3)
-    stem = path.name.replace("_geom.txt", "")
+    stem = re.sub(r"_geom\.txt$", "", path.name, flags=re.IGNORECASE)
     D_name, P_name, unit, family = _size_from_name(stem)
     note = ""
     if diameter_in is None:
