@@ -269,9 +269,13 @@ def test_wrench_csv_is_written_as_pandas_wrote_it_without_importing_pandas(tmp_p
     cols = {"t": np.array([0.0, 0.0025, 1e-7]), "Fx": np.array([-0.0, 1234567.0, np.nan]),
             "Mz": np.array([np.inf, -2.5e-9, 7.0])}
     ours = io.StringIO()
-    _write_columns(ours, cols)
+    _write_columns(ours, cols, exact=())
     theirs = pd.DataFrame(cols).to_csv(index=False, float_format="%.6g", lineterminator="\n")
     assert ours.getvalue() == theirs == "t,Fx,Mz\n0,-0,inf\n0.0025,1.23457e+06,-2.5e-09\n1e-07,,7\n"
+    # the time to the last digit (a log's 1200 s or a Unix time needs more than six; 2026-11-26)
+    exact = io.StringIO()
+    _write_columns(exact, {"t": np.array([1.6e9 + 0.0025, 1200.0025]), "Fx": np.array([1.0, 2.0])})
+    assert exact.getvalue() == "t,Fx\n1600000000.0025,1\n1200.0025,2\n"
     log = shared_data / "neurobem_flights" / SEGMENTS[1]
     argv = ["wrench", str(log), "--vehicle", str(VEHICLE), "--out", str(tmp_path / "w.csv")]
     script = f"import sys; from propmap.cli.main import main; print(main({argv!r}), 'pandas' in sys.modules)"

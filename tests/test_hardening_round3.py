@@ -187,3 +187,132 @@ def test_the_fits_warnings_are_printed_once(tmp_path, capsys):
     said = [line for line in err.splitlines() if "ended at its lower bound" in line]
     assert len(said) == 1 and "ended at its lower bound" not in out, (err, out)
     assert "ended at its lower bound" in (tmp_path / "p.report.txt").read_text()
+
+
+# ---- flight logs (the audit's second part): NeuroBEM segment bemnn20210223104803seg2 (Bauersfeld et al., RSS 2021)
+
+VEHICLE = Path(str(resources.files("propmap") / "data" / "examples" / "neurobem_quadrotor.toml"))
+
+
+@pytest.fixture(scope="module")
+def slow_rows(shared_data):
+    import scipy.io
+
+    a = scipy.io.loadmat(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat")
+    return np.asarray(next(v for k, v in a.items() if not k.startswith("__")), float)[:1200]  # 3 s at 400 Hz
+
+
+def _write_log(path: Path, rows: np.ndarray) -> Path:
+    from propmap.io.flightlog import NEUROBEM_COLUMNS
+
+    path.write_text(",".join(NEUROBEM_COLUMNS) + "\n" + "\n".join(",".join(repr(float(x)) for x in r) for r in rows)
+                    + "\n")
+    return path
+
+
+def _ground_then(rows: np.ndarray, idle: float = 300.0, seconds: float = 1.0) -> np.ndarray:
+    """The flight ``rows`` preceded by ``seconds`` standing on the ground: rotors at ``idle``
+    rad/s, no motion, the accelerometer reading g along body z (the audit's file)."""
+    n = int(400 * seconds)
+    g = np.zeros((n, rows.shape[1]))
+    g[:, 0] = rows[0, 0] - (n - np.arange(n)) / 400.0
+    g[:, 7] = 1.0  # the attitude quaternion, level
+    g[:, 13] = 9.80665
+    g[:, 20:24] = idle
+    g[:, 29:] = np.nan  # no NeuroBEM prediction there
+    out = np.vstack([g, rows])
+    out[:, 29:] = np.nan
+    return out
+
+
+def test_ground_samples_and_a_logged_stop_are_left_out_with_a_warning(tmp_path, capsys, slow_rows):
+    """A log that starts on the ground: the ground's reaction is no rotor's force (the audit's fit
+    went from F 0.058 to 0.906 N with it). Samples with a logged stop are left out too, not only
+    where the lagged speed has decayed (92 samples after each stop were kept before)."""
+    from propmap.identify.flight import flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    log = read_flight_log(_write_log(tmp_path / "ground.csv", _ground_then(slow_rows)))
+    s = flight_samples([log], veh, rate_hz=1e4)
+    assert s.n == len(slow_rows) and s.t.min() == pytest.approx(slow_rows[0, 0])
+    assert any("400 sample(s) on the ground left out" in n for n in s.notes), s.notes
+    stop = slow_rows.copy()
+    stop[100:200, 21] = 0.0  # motor 2 logged stopped for 0.25 s
+    s = flight_samples([read_flight_log(_write_log(tmp_path / "stop.csv", stop))], veh, rate_hz=1e4)
+    assert s.n == len(slow_rows) - 100 and np.all(np.diff(s.t[99:101]) > 0.2)
+    assert any("100 sample(s) with a stopped rotor" in n for n in s.notes)
+    # the shared logs fly throughout: nothing is left out of them (the race track's braking turns included)
+    code, _, err = run(capsys, "wrench", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out", tmp_path / "w.csv")
+    assert code == 0 and "400 sample(s) on the ground left out" in err
+    code, _, err = run(capsys, "fit", "flight", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out",
+                       tmp_path / "p.toml", "--rate-hz", "100")
+    assert code == 0 and "on the ground left out" in err  # (fit flight said nothing before)
+
+
+def test_the_shared_flights_lose_no_sample_to_the_ground_rule(shared_data):
+    from propmap.identify.flight import flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    for p in sorted((shared_data / "neurobem_flights").glob("*.mat")):
+        log = read_flight_log(p)
+        s = flight_samples([log], veh, rate_hz=1e4)
+        assert s.n == log.n and s.notes == (), p.name
+
+
+def test_flight_logs_given_twice_or_emptied_or_misread_are_refused(tmp_path, capsys, slow_rows):
+    a = _write_log(tmp_path / "a.csv", slow_rows)
+    b = tmp_path / "b.csv"
+    shutil.copyfile(a, b)
+    code, _, err = run(capsys, "fit", "flight", a, b, "--vehicle", VEHICLE, "--out", tmp_path / "p.toml")
+    assert one_line_error(code, err, "b.csv is a copy of") and "held-out log" in err, err
+    stopped = slow_rows.copy()
+    stopped[:, 20:24] = 0.0
+    z = _write_log(tmp_path / "z.csv", stopped)
+    code, _, err = run(capsys, "fit", "flight", a, z, "--holdout", "z.csv", "--vehicle", VEHICLE, "--out",
+                       tmp_path / "p.toml")
+    assert one_line_error(code, err, "z.csv: no samples left"), err  # (NaN rows and NaN in the JSON before)
+    index = tmp_path / "index.csv"  # no header, an index column first: every column shifted by one before
+    index.write_text("\n".join(",".join([str(k)] + [repr(float(x)) for x in r]) for k, r in enumerate(slow_rows)))
+    code, _, err = run(capsys, "wrench", index, "--vehicle", VEHICLE, "--out", tmp_path / "w.csv")
+    assert one_line_error(code, err, "42 columns; the NeuroBEM layout has 41"), err
+    ms = slow_rows.copy()
+    ms[:, 0] *= 1e3  # milliseconds
+    code, _, err = run(capsys, "wrench", _write_log(tmp_path / "ms.csv", ms), "--vehicle", VEHICLE, "--out",
+                       tmp_path / "w.csv")
+    assert one_line_error(code, err, "is it in milliseconds or microseconds?"), err
+
+
+def test_wrench_writes_the_time_to_the_last_digit(tmp_path, capsys, slow_rows):
+    late = slow_rows[:400].copy()
+    late[:, 0] += 1.6e9  # a Unix time: all 400 rows were t = 1.6e+09 before
+    code, _, _ = run(capsys, "wrench", _write_log(tmp_path / "late.csv", late), "--vehicle", VEHICLE, "--out",
+                     tmp_path / "w.csv")
+    assert code == 0
+    t = np.loadtxt(tmp_path / "w.csv", delimiter=",", skiprows=1, usecols=0)
+    np.testing.assert_array_equal(t, late[:, 0])
+
+
+def test_params_reach_every_rotor_and_the_fit_writes_no_centre_of_mass_it_did_not_fit(tmp_path, capsys, slow_rows):
+    """A vehicle whose rotors carry their own sets: --params (and the flight fit's set) replace
+    them, with a warning (they were silently ignored: the fit ended singular, wrench printed
+    --params' name beside the rotors' loads). A fit that did not free the centre of mass writes
+    none, so that the vehicle file's stays (a zero one replaced it)."""
+    text = VEHICLE.read_text()
+    veh_file = tmp_path / "own.toml"
+    veh_file.write_text(text.replace('blades = 3', 'blades = 3\nparams = "generic"'))
+    shutil.copyfile(VEHICLE.parent / "neurobem_5.1x4.8_geom.txt", tmp_path / "neurobem_5.1x4.8_geom.txt")
+    log = _write_log(tmp_path / "a.csv", slow_rows)
+    code, out, err = run(capsys, "fit", "flight", log, "--vehicle", veh_file, "--out", tmp_path / "p.toml",
+                         "--rate-hz", "100")
+    assert code == 0 and "rotor(s) 1, 2, 3, 4 are not used: fit flight fits one set for every rotor" in err
+    assert "centre_of_mass" not in (tmp_path / "p.toml").read_text()
+    code, _, err = run(capsys, "wrench", log, "--vehicle", veh_file, "--params", tmp_path / "p.toml", "--out",
+                       tmp_path / "w1.csv")
+    assert code == 0 and "are not used: --params gives every rotor's set" in err
+    code, _, err = run(capsys, "wrench", log, "--vehicle", VEHICLE, "--params", tmp_path / "p.toml", "--out",
+                       tmp_path / "w2.csv")
+    assert code == 0
+    np.testing.assert_array_equal(np.loadtxt(tmp_path / "w1.csv", delimiter=",", skiprows=1),
+                                  np.loadtxt(tmp_path / "w2.csv", delimiter=",", skiprows=1))

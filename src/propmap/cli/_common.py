@@ -204,6 +204,26 @@ def check_section_match(propeller, label: str) -> None:
              "parameter file fitted to its data")
 
 
+def refuse_copies(paths, option: str, consequence: str) -> None:
+    """Refuse a file given twice under two names: the same file (a symbolic or a hard link) or a
+    byte-identical copy (SHA-256; only files that share a size are read), as ``option: X is the
+    same file as Y: <consequence>``."""
+    import hashlib
+
+    stats = [(p, os.stat(p)) for p in paths]
+    sizes = [st.st_size for _, st in stats]
+    seen: dict = {}
+    for p, st in stats:
+        keys = [((st.st_dev, st.st_ino), "the same file as")]
+        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
+            with open(p, "rb") as fh:
+                keys.append((hashlib.file_digest(fh, "sha256").hexdigest(), "a copy of"))
+        for key, what in keys:
+            if key in seen:
+                raise InputError(f"{option}: {_short(str(p))} is {what} {_short(str(seen[key]))}: {consequence}")
+            seen[key] = p
+
+
 def _short(text, n: int = 80) -> str:
     """``text`` cut to ``n`` characters (a name typed by the user, for a one-line message)."""
     text = str(text)

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import json
 import math
-import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 import click
 
 from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match,
-                      load_params, option_group, parse_names, resolve_air, warn, with_air_options, with_prop_options)
+                      load_params, option_group, parse_names, refuse_copies, resolve_air, warn, with_air_options,
+                      with_prop_options)
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -254,17 +254,7 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
-    stats = [(s, os.stat(s)) for s in sources]  # (the same file under any path: a symbolic or a hard link)
-    sizes = [st.st_size for _, st in stats]
-    seen: dict = {}
-    for s, st in stats:
-        keys = [((st.st_dev, st.st_ino), "the same file as")]
-        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
-            keys.append((_content_digest(s), "a copy of"))
-        for key, what in keys:
-            if key in seen:
-                raise InputError(f"SOURCE: {_short(s)} is {what} {_short(seen[key])}: its data would count twice")
-            seen[key] = s
+    refuse_copies(sources, "SOURCE", "its data would count twice")
     prop = prop_choice.load(prop_spec)
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
@@ -298,14 +288,6 @@ def _file_air(data, air, air_choice):
         warn(f"the air density from {' '.join(given)}, {air.rho:.4g} kg/m^3, is not the file's {rho:.4g} kg/m^3 "
              "(fitted at the option's)")
     return air
-
-
-def _content_digest(path) -> str:
-    """SHA-256 of a file's bytes: two SOURCE files with one content are one data set twice."""
-    import hashlib
-
-    with open(path, "rb") as fh:
-        return hashlib.file_digest(fh, "sha256").hexdigest()
 
 
 def _warn_other_propeller(sources, prop) -> None:

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from ._common import (InputError, PathArg, check_outputs, coverage_messages, envelope_extremes, load_params,
-                      parse_names, resolve_air, with_air_options)
+                      parse_names, refuse_copies, resolve_air, with_air_options)
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
 def _vehicle(path: Path):
@@ -64,18 +64,36 @@ def _vehicle_inputs(vehicle: Path) -> list:
 
 
 def _samples(logs, veh, rate_hz):
+    """flight_samples of the logs, its left-out samples said as warnings (once each)."""
     from ..identify.flight import flight_samples
 
     try:
-        return flight_samples(logs, veh, rate_hz=rate_hz)
+        samples = flight_samples(logs, veh, rate_hz=rate_hz)
     except ValueError as exc:
-        raise InputError(str(exc)) from None
+        raise InputError(f"LOG: {exc}") from None
+    for note in samples.notes:
+        click.echo(f"propmap: warning: {note}", err=True)
+    return samples
 
 
-def _write_columns(fh, cols: dict) -> None:
+def _one_set(veh, why: str):
+    """The vehicle with its rotors' own parameter sets removed (said in a warning), so that one
+    set reaches every rotor."""
+    from dataclasses import replace
+
+    own = [str(k + 1) for k, r in enumerate(veh.rotors) if r.params is not None]
+    if not own:
+        return veh
+    click.echo(f"propmap: warning: the vehicle file's parameter sets of rotor(s) {', '.join(own)} are not used: {why}",
+               err=True)
+    return replace(veh, rotors=[replace(r, params=None) for r in veh.rotors])
+
+
+def _write_columns(fh, cols: dict, exact=("t",)) -> None:
     """Write equal-length float columns as CSV: a header of their names, then one row per sample,
-    each number as %.6g and an empty cell for NaN, as pandas' ``to_csv(float_format="%.6g")`` writes
-    them; the csv module, not pandas, so that ``wrench`` does not import pandas (0.18 s of its 1.9)."""
+    each number as %.6g (those of the ``exact`` columns, the time, to the last digit: a log's
+    time of 1,200 s or a Unix time needs more than six) and an empty cell for NaN; the csv module,
+    not pandas, so that ``wrench`` does not import pandas (0.18 s of its 1.9)."""
     import csv
 
     import numpy as np
@@ -85,7 +103,8 @@ def _write_columns(fh, cols: dict) -> None:
     writer = csv.writer(fh, lineterminator="\n")
     writer.writerow(names)
     nan = np.isnan(table)
-    writer.writerows(["" if miss else f"{x:.6g}" for x, miss in zip(row, nanrow)]
+    form = [repr if n in exact else "{:.6g}".format for n in names]
+    writer.writerows(["" if miss else f(x) for f, x, miss in zip(form, row, nanrow)]
                      for row, nanrow in zip(table.tolist(), nan.tolist()))
 
 
@@ -159,6 +178,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
         raise InputError("LOG: two logs have the same file name; give each log once")
+    refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
+    veh = _one_set(veh, "fit flight fits one set for every rotor")
     held = parse_names("--holdout", holdout, what="log") or ()
     unknown = [h for h in held if Path(h).name not in names]
     if unknown:
@@ -275,7 +296,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
 
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
                    figure_suffixes=(".png", ".speed.png"),
-                   body=BodyTable(body, veh.centre_of_mass,
+                   body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 
 
@@ -325,6 +346,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
     air = resolve_air(air, air_choice)
     body = veh.body_drag
+    if params_spec is not None:
+        veh = _one_set(veh, "--params gives every rotor's set")
     if params_spec is not None and Path(params_spec).is_file():
         try:
             table = read_body(params_spec)
@@ -370,7 +393,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
 
         click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n}, indent=2))
     else:
-        click.echo(f"{samples.n} samples of {log.name} (stopped-rotor samples left out), params {label}, "
+        click.echo(f"{samples.n} samples of {log.name} (stopped or on the ground: left out), params {label}, "
                    f"rho {air.rho:g} kg/m^3")
         click.echo(_table(rows))
         if "M_zero" in err:
@@ -385,7 +408,3 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         coverage_messages(prop, label, air, *envelope_extremes(
             prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())))
-    skipped = log.n - samples.n
-    if skipped:
-        click.echo(f"propmap: warning: {skipped} sample(s) with a stopped rotor (Omega < 1 rad/s) were left out",
-                   err=True)

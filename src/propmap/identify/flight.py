@@ -219,7 +219,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     ------
     ValueError
         Unknown parameter names, fewer residuals than parameters + 1, moments asked for
-        without measured moments.
+        without measured moments, section parameters fitted for a vehicle whose rotors carry
+        their own parameter sets (``Rotor.params``).
     SolverError
         From the rotor model.
     """
@@ -233,6 +234,11 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         names = default_flight_names(base)
     if 3 * samples.n <= len(names):
         raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters")
+    own = [k + 1 for k, r in enumerate(vehicle.rotors) if r.params is not None]
+    if own and any(n not in AIRFRAME_NAMES for n in names):
+        raise ValueError(f"rotor(s) {', '.join(map(str, own))} of the vehicle carry their own parameter sets, which "
+                         "the fitted section parameters would not reach: fit_flight fits one set for every rotor "
+                         "(build the vehicle without the rotors' params)")
     body0 = body or vehicle.body_drag or BodyDrag()
     # airframe terms start small but non-zero, so that every column of the Jacobian is alive
     start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),

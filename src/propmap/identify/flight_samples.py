@@ -13,10 +13,16 @@ from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
 from ._checks import first_length, float_array
 
-__all__ = ["OMEGA_STOPPED", "FlightSamples", "flight_samples"]
+__all__ = ["OMEGA_STOPPED", "GROUND_MARGIN", "GROUND_SPEED", "GROUND_RATE", "FlightSamples", "flight_samples"]
 
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
+#: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
+#: the accelerometer reading g (within 20%) while its rotors turn too slowly to carry it: g over GROUND_MARGIN times
+#: (Omega_rms / Omega_typ)^2 g, Omega_typ the log's median rotor speed (about the hover speed in flight)
+GROUND_MARGIN = 2.0
+GROUND_SPEED = 0.5  # [m/s]
+GROUND_RATE = 0.5  # [rad/s]
 #: a log whose rotors' tip speed (each motor's 99th percentile) exceeds this Mach number (at SPEED_OF_SOUND) is
 #: refused: no multirotor flies so, and a log of motor speeds in rpm read as rad/s (9.55x) reaches it
 MAX_TIP_MACH = 1.0
@@ -50,6 +56,9 @@ class FlightSamples:
     rate_hz : float
         Sampling rate of the samples [Hz]: the one asked for, or a log's own where it is
         lower (the median over the logs).
+    notes : tuple of str
+        The samples :func:`flight_samples` left out, per log and reason (a stopped rotor, the
+        vehicle on the ground).
 
     Raises
     ------
@@ -73,6 +82,7 @@ class FlightSamples:
     reference_force: np.ndarray | None
     reference_moment: np.ndarray | None
     rate_hz: float
+    notes: tuple = ()
 
     def __post_init__(self):
         n = first_length("FlightSamples", "t", self.t)
@@ -154,8 +164,15 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     ValueError
         No logs, a log whose motor count differs from the vehicle's rotor count, a rotor
         whose tip speed (its speed's 99th percentile) exceeds Mach 1 (:data:`MAX_TIP_MACH`:
-        motor speeds in rpm read as rad/s), a bad rate, or no sample left (every rotor
-        stopped).
+        motor speeds in rpm read as rad/s), a bad rate, or a log with no sample left (a rotor
+        stopped, or the vehicle on the ground, in every sample; the message names it).
+
+    Notes
+    -----
+    Samples are left out (``FlightSamples.notes`` says how many, per log) where a rotor is
+    stopped, by its logged speed or through the motor lag (OMEGA_STOPPED), and where the
+    vehicle stands on the ground (GROUND_MARGIN): there the measured force is the ground's
+    reaction, which no rotor model makes (idling rotors with the accelerometer reading g).
     """
     logs = list(logs)
     if not logs:
@@ -167,7 +184,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
     n_rot = len(vehicle.rotors)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
-    parts, rates = [], []
+    parts, rates, notes = [], [], []
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
             raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
@@ -191,7 +208,19 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         sl = slice(None, None, step)
         om_full, omdot_full = _lagged(log, tau)
         om = om_full[sl]
-        keep = np.all(om >= OMEGA_STOPPED, axis=1)
+        # a stopped rotor: the logged speed (the lagged one decays for a few time constants after a stop) or the lag's
+        logged = log.rotor_omega[sl]
+        stopped = ~(np.all(om >= OMEGA_STOPPED, axis=1) & np.all(logged >= OMEGA_STOPPED, axis=1))
+        ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
+                                       stopped)
+        keep = ~(stopped | ground)
+        if stopped.any():
+            notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
+                         "rad/s, logged or through the motor lag) left out")
+        if ground.any():
+            notes.append(f"{log.name}: {int(ground.sum())} sample(s) on the ground left out (standing still, the "
+                         "accelerometer reading g, the rotors too slow to carry the vehicle: the ground's reaction, "
+                         "which no rotor model makes)")
         w = log.angular_velocity[sl][keep]
         if vehicle.inertia is not None:
             inertia = vehicle.inertia
@@ -208,9 +237,30 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     for key in parts[0]:
         vals = [p[key] for p in parts]
         out[key] = None if any(v is None for v in vals) else np.concatenate(vals)
-    if out["t"].size == 0:
-        raise ValueError("no samples left: every rotor is stopped in every sample")
-    return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)), **out)
+    empty = [log.name for k, log in enumerate(logs) if not np.any(out["log_index"] == k)]
+    if empty:
+        raise ValueError(f"{empty[0]}: no samples left: a rotor is stopped (or the vehicle on the ground) in every "
+                         "sample")
+    return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)),
+                         notes=tuple(notes), **out)
+
+
+def _on_ground(omega, specific_force, velocity, angular_velocity, stopped) -> np.ndarray:
+    """Samples where the ground carries the vehicle (GROUND_MARGIN, GROUND_SPEED, GROUND_RATE):
+    standing still with the accelerometer reading g (within 20%) [m/s^2] while the rotors'
+    (Omega_rms / Omega_typ)^2, Omega_typ the median of the running samples' rms rotor speed,
+    stays below 1 / GROUND_MARGIN: in flight at such speeds the rotors could not carry the weight.
+    A log that is mostly on the ground has its Omega_typ there and flags nothing."""
+    g = 9.80665
+    rms = np.sqrt(np.mean(omega**2, axis=1))
+    running = ~stopped
+    if not running.any():
+        return np.zeros(len(rms), dtype=bool)
+    typical = float(np.median(rms[running]))
+    f = np.linalg.norm(specific_force, axis=1)
+    still = ((np.linalg.norm(velocity, axis=1) < GROUND_SPEED)
+             & (np.linalg.norm(angular_velocity, axis=1) < GROUND_RATE))
+    return still & (np.abs(f - g) < 0.2 * g) & (GROUND_MARGIN * (rms / typical) ** 2 < 1.0)
 
 
 def _lagged(log: FlightLog, tau: float):

@@ -40,6 +40,9 @@ from .inputs import MAX_FILE_BYTES, decode_input_text, read_input_bytes, show_pa
 
 __all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
 
+#: a log sampled more slowly than this is refused [Hz]: time in ms or us read as seconds (NeuroBEM logs 400 Hz,
+#: PX4's slowest estimator topics tens of Hz)
+MIN_RATE_HZ = 1.0
 #: the NeuroBEM dataset's 41 columns (the names of the authors' CSV loader)
 NEUROBEM_COLUMNS = (
     "t", "ang acc x", "ang acc y", "ang acc z", "ang vel x", "ang vel y", "ang vel z",
@@ -219,8 +222,10 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
-        if missing and len(head) == 1 and lines[first].count(";") >= len(NEUROBEM_COLUMNS[:29]) - 1:
-            raise FlightLogError(f"{name}: the columns are separated by ';'; a flight-log CSV is separated by ','"
+        sep = max(";\t", key=lines[first].count)
+        if missing and len(head) == 1 and lines[first].count(sep) >= len(NEUROBEM_COLUMNS[:29]) - 1:
+            said = "';'" if sep == ";" else "tabs"
+            raise FlightLogError(f"{name}: the columns are separated by {said}; a flight-log CSV is separated by ','"
                                  " (the NeuroBEM layout), with '.' as its decimal point") from None
         if missing:
             raise FlightLogError(f"{name}: header lacks the NeuroBEM column(s) {', '.join(missing[:6])}"
@@ -234,7 +239,8 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     except ValueError as exc:
         msg = str(exc).splitlines()[0][:160]
         raise FlightLogError(f"{name}: not a numeric CSV after line {skip} ({msg})") from None
-    if a.shape[1] <= max(order):
+    if a.shape[1] <= max(order) or (skip == first and a.shape[1] != len(NEUROBEM_COLUMNS)):
+        # without a header the columns are the layout's by position: another count (an index column) shifts them
         raise FlightLogError(f"{name}: {a.shape[1]} columns; the NeuroBEM layout has {len(NEUROBEM_COLUMNS)} "
                              f"(or a header naming them)")
     out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)
@@ -396,6 +402,10 @@ def _check(log: FlightLog, name: str) -> None:
         i = int(np.argmax(~(dt > 0)))
         raise FlightLogError(f"{name}: time does not increase at sample {i + 2} (t = {log.t[i + 1]:.6g} s after "
                              f"{log.t[i]:.6g} s)")
+    if log.rate_hz < MIN_RATE_HZ:
+        raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.3g} Hz): "
+                             f"is it in milliseconds or microseconds? A log's time is read in seconds, and a flight "
+                             f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion")
     checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
               ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
               ("velocity", log.velocity, SPEED_MAX, "m/s"),
