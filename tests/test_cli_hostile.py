@@ -255,7 +255,7 @@ def test_points_with_single_point_options_is_refused(capsys, tmp_path, points):
         (b"rpm,airspeed,incidence_deg,rpm\n8000,0,0,1\n", "duplicate"),
         (b"rpm,airspeed,incidence_deg\n8000,\"0,0\n8000,1,0\n", "--points"),
         (b"rpm,airspeed,incidence_deg\n8000,0," + b"9" * 131_072 + b"\n", "line 2: incidence_deg"),
-        (b"rpm_\xc2\xb2,airspeed,incidence_deg\n8000,0,0\n", "lacks column(s) rpm"),
+        (b"rpm_\xc2\xb2,airspeed,incidence_deg\n8000,0,0\n", "column 'rpm_²': unknown unit '²' for rpm"),
         (b"", "--points"),
     ],
 )

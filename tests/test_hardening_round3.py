@@ -316,3 +316,23 @@ def test_params_reach_every_rotor_and_the_fit_writes_no_centre_of_mass_it_did_no
     assert code == 0
     np.testing.assert_array_equal(np.loadtxt(tmp_path / "w1.csv", delimiter=",", skiprows=1),
                                   np.loadtxt(tmp_path / "w2.csv", delimiter=",", skiprows=1))
+
+
+def test_a_points_file_takes_the_names_and_units_fit_loads_reads(tmp_path, capsys):
+    """The same tunnel CSV can be fitted and then predicted: ``loads --points`` reads RPM,
+    airspeed (km/h), Incidence (°) as ``fit loads`` does (it wanted the bare names before), and a
+    tab-separated file."""
+    plain, units, tab = tmp_path / "a.csv", tmp_path / "b.csv", tmp_path / "c.tsv"
+    plain.write_text("rpm,airspeed,incidence_deg\n6000,10,90\n7000,0,0\n")
+    units.write_text("RPM,airspeed (km/h),Incidence (°),note\n6000,36,90,x\n7000,0,0,y\n", encoding="utf-8")
+    tab.write_text("rpm\tspeed (m/s)\tincidence_deg\n6000\t10\t90\n")
+    outs = []
+    for p in (plain, units):
+        code, _, err = run(capsys, "loads", "apce_8x6", "--points", p, "--out", tmp_path / f"{p.stem}.out.csv")
+        assert code == 0, err
+        outs.append(np.genfromtxt(tmp_path / f"{p.stem}.out.csv", delimiter=",", names=True, dtype=None,
+                                  encoding="utf-8"))
+    for q in ("thrust", "drag", "torque"):
+        np.testing.assert_array_equal(outs[0][q], outs[1][q])
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", tab, "--out", tmp_path / "c.out.csv")
+    assert one_line_error(code, err, "'speed (m/s)' is in m/s, a linear speed, not a rotation speed"), err

@@ -43,11 +43,14 @@ MAX_HEADER_BYTES = 65536
 
 
 def _points_reader(path: Path, chunksize: int):
-    """(iterator of DataFrame chunks, column names) of the points CSV, all cells as text.
+    """(iterator of DataFrame chunks, column names, separator, operating columns) of the points
+    CSV, all cells as text.
 
-    Comma- or semicolon-separated (detected from the header), header names (quoted or
-    not) matched case-insensitively after stripping blanks and a UTF-8 BOM. Blank lines
-    are kept as empty rows, so that a row's position gives its line number.
+    Comma-, semicolon- or tab-separated (detected from the header), header names (quoted or
+    not) matched case-insensitively after stripping blanks and a UTF-8 BOM, with or without a
+    unit (:func:`propmap.identify.stand.map_operating_columns`: the operating columns map to
+    (name, factor to rpm, m/s or deg)). Blank lines are kept as empty rows, so that a row's
+    position gives its line number.
 
     Raises
     ------
@@ -82,7 +85,8 @@ def _points_reader(path: Path, chunksize: int):
     except UnicodeDecodeError as exc:
         raise InputError(f"{where}, line 1: byte 0x{exc.object[exc.start]:02x} is not UTF-8; save the file as "
                          "UTF-8 CSV") from None
-    sep = ";" if first.count(";") > first.count(",") else ","
+    counts = {c: first.count(c) for c in (",", ";", "\t")}
+    sep = max(counts, key=lambda c: (counts[c], c == ","))  # (a tie: the comma)
     names = [h.strip() for h in next(csv.reader([first], delimiter=sep), [])]
     if not any(names):
         raise InputError(f"{where}: the first line is empty; it must name the columns")
@@ -93,9 +97,16 @@ def _points_reader(path: Path, chunksize: int):
     dup = sorted({n for n in lower if lower.count(n) > 1})
     if dup:
         raise InputError(f"{where}: duplicate column(s) {', '.join(repr(d) for d in dup)}")
-    missing = [c for c in INPUT_COLUMNS if c not in lower]
+    from ..identify.stand import map_operating_columns
+
+    try:
+        mapped = map_operating_columns(names, error=InputError)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
+    missing = [c for c in INPUT_COLUMNS if c not in mapped]
     if missing:
-        raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)})")
+        raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)}, any case, "
+                         "with or without a unit: RPM, airspeed (m/s), airspeed_kmh, incidence (deg))")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", pd.errors.ParserWarning)
@@ -104,7 +115,7 @@ def _points_reader(path: Path, chunksize: int):
     except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
             ValueError) as exc:
         raise _parse_error(path, exc, sep, len(names)) from None
-    return reader, names, sep
+    return reader, names, sep, mapped
 
 
 def _long_row(path: Path, sep: str, width: int) -> str:
@@ -145,9 +156,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     import numpy as np
     import pandas as pd
 
-    reader, names, sep = _points_reader(path, chunksize)
-    lower = [n.lower() for n in names]
-    cols = {c: names[lower.index(c)] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in lower}
+    reader, names, sep, mapped = _points_reader(path, chunksize)
+    cols = {c: mapped[c][0] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in mapped}
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2
@@ -167,9 +177,9 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                 values = {}
                 for c, name in cols.items():
                     text = df[name].str.strip()
-                    if sep == ";":
+                    if sep != ",":
                         text = _decimal_commas(path, c, text, lines, marks)
-                    v = pd.to_numeric(text, errors="coerce").to_numpy(float)
+                    v = pd.to_numeric(text, errors="coerce").to_numpy(float) * mapped[c][1]  # (rpm, m/s, deg)
                     lo, hi = limits[c]
                     bad = ~((v >= lo) & (v <= hi))
                     if bad.any():
@@ -327,8 +337,9 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                    f"[-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] (default 0; a points file takes a "
                    f"{COLLECTIVE_COLUMN} column).")
 @click.option("--points", type=PathArg(),
-              help="CSV (',' or ';') with columns rpm, airspeed, incidence_deg (case-insensitive) and optionally "
-                   "collective_deg; other columns are kept in the output.")
+              help="CSV (',', ';' or tab) with columns rpm, airspeed, incidence_deg (any case, with or without a "
+                   "unit: RPM, airspeed (m/s), incidence (deg)) and optionally collective_deg; other columns are "
+                   "kept in the output.")
 @click.option("--out", help="Output CSV of --points ('-': standard output).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (single point).")
 @with_prop_options

@@ -34,7 +34,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["ColumnMap", "map_columns", "stand_points", "UNITS", "ROTATION_COLUMNS"]
+__all__ = ["ColumnMap", "map_columns", "map_operating_columns", "stand_points", "UNITS", "ROTATION_COLUMNS",
+           "OPERATING"]
 
 G0 = 9.80665
 LBF = 4.4482216152605
@@ -269,6 +270,49 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")
     return cm
+
+
+#: the operating-point quantities of a points file (``propmap loads --points``)
+OPERATING = ("rpm", "airspeed", "incidence_deg", "collective_deg")
+
+
+def map_operating_columns(names, *, error=ValueError) -> dict:
+    """Map a points file's header to its operating-point quantities, by the names and units
+    :func:`map_columns` reads (``RPM``, ``speed_rad_s``, ``airspeed (m/s)``, ``airspeed_kmh``,
+    ``incidence (deg)``, ``Incidence (°)``, ``collective_deg``).
+
+    Returns
+    -------
+    dict
+        quantity (of :data:`OPERATING`) -> (column name as written, factor to rpm, m/s or deg);
+        the other columns left out.
+
+    Raises
+    ------
+    error
+        An operating quantity in a unit it does not know (a rotation speed in a linear speed's
+        unit said as such), or two columns for one quantity.
+    """
+    out: dict = {}
+    for name in names:
+        if not name.strip():
+            continue
+        base, unit = _split(name)
+        quantity, kind = _NAMES.get(base, (None, None))
+        if quantity not in OPERATING:
+            continue
+        factor = 1.0
+        if unit is not None:
+            tok = _token(unit)
+            if kind == "rotation" and tok in UNITS["speed"]:
+                raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or Hz)")
+            if tok not in UNITS[kind]:
+                raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: {', '.join(UNITS[kind])})")
+            factor = UNITS[kind][tok]
+        if quantity in out:
+            raise error(f"columns {out[quantity][0]!r} and {name!r} both give {quantity}: keep one")
+        out[quantity] = (name, factor)
+    return out
 
 
 #: a new step starts where the ESC signal moves more than this from the step's first row [us]
