@@ -336,3 +336,13 @@ def test_a_points_file_takes_the_names_and_units_fit_loads_reads(tmp_path, capsy
         np.testing.assert_array_equal(outs[0][q], outs[1][q])
     code, _, err = run(capsys, "loads", "apce_8x6", "--points", tab, "--out", tmp_path / "c.out.csv")
     assert one_line_error(code, err, "'speed (m/s)' is in m/s, a linear speed, not a rotation speed"), err
+
+
+def test_holding_out_every_run_is_said_to_be_that(tmp_path, capsys):
+    runs = sorted(UIUC_V1.glob("apce_9x6_*_*.txt"))
+    runs = [p for p in runs if "geom" not in p.name][:3]
+    ids = [p.name.removeprefix("apce_9x6_").rsplit("_", 1)[0] if "static" not in p.name
+           else p.name.removeprefix("apce_9x6_").removesuffix(".txt") for p in runs]
+    code, _, err = run(capsys, "fit", "loads", *runs, "--prop", "apce_9x6", "--holdout", ",".join(ids), "--out",
+                       tmp_path / "p.toml")
+    assert one_line_error(code, err, "--holdout: every run of SOURCE is held out"), err  # (a prior-directions error)

@@ -400,6 +400,9 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         raise InputError(f"--holdout: unknown run(s) {', '.join(unknown)}; available: {', '.join(sorted(groups))}")
     if entry is not None and any(h.startswith("static") for h in held):
         raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
+    if held and groups <= set(held):
+        raise InputError(f"--holdout: every run of SOURCE is held out ({', '.join(sorted(groups))}); keep at least one "
+                         "to fit")
     train = data.subset(~np.isin(data.group, held))
     if directions:  # (options that would make them ignored are refused, not warned about)
         from ..core.airfoil import CamberedParams

@@ -171,7 +171,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         fmt = {".mat": "neurobem", ".csv": "neurobem", ".ulg": "ulog"}.get(p.suffix.lower())
         if fmt is None:
             raise FlightLogError(f"{name}: unknown flight-log format (suffix {p.suffix or 'none'!s}); give a NeuroBEM "
-                                 ".mat or .csv file or a PX4 .ulg file, or name the format")
+                                 ".mat or .csv file or a PX4 .ulg file, named with its format's suffix (or, in Python, "
+                                 "read_flight_log's format)")
     if fmt not in FORMATS:
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
