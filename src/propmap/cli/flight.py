@@ -241,7 +241,9 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
     res.extra["flight_report"] = report
-    text = [f"{samples.n} samples at {samples.rate_hz:.4g} Hz from {len(names)} log(s); fitted on "
+    rates = sorted({round(lg.rate_hz / max(1, round(lg.rate_hz / rate_hz)), 4) for lg in logs})  # (flight_samples')
+    rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
+    text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
             f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
     bands = report["training"]["speed_bands"]
     text.append("training F by speed band: " + ", ".join(
