@@ -11,7 +11,9 @@ sign(alpha_dot), K1 = 1 while alpha rises and -1/2 while it falls, gamma = 1.4 -
 t/c) for the lift (about 1.5 at t/c = 0.08). Here it shifts the cambered section's positive
 stall angle by that amount (the attached lift is unchanged), with the section's own rate of
 the uniform-inflow element: alpha_dot = Omega U_P V sin(beta) cos(psi) / W^2 (the in-plane
-induction left out of the rate). Axial flow is unchanged (alpha_dot = 0).
+induction left out of the rate), on the full circle: each of the reference solver's
+half-circle nodes (cos psi > 0, the angle rising) with its mirror azimuth pi - psi (the same
+U_T and U_P, the angle falling). Axial flow is unchanged (alpha_dot = 0).
 
 It patches the NumPy reference solver (core/_reference.py, 48 x 16 nodes; the kernel is
 untouched) and prints, for gamma from the command line (default 1.5):
@@ -28,7 +30,7 @@ untouched) and prints, for gamma from the command line (default 1.5):
 
     .venv/bin/python tools/dynamic_stall_probe.py [GAMMA]     # about 2 s
 
-Measured 2026-11-26 (docs/validation.md, the gill2019 options table; not adopted).
+Measured 2026-11-26 (docs/validation.md, the gill2019 case's bullets; not in propmap yet).
 """
 
 from __future__ import annotations
@@ -51,13 +53,23 @@ _state: dict = {}
 
 
 def _element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk):
-    """The cambered element with the positive stall angle shifted by Gormont's delay (_state set)."""
+    """The cambered element with the positive stall angle shifted by Gormont's delay (_state set),
+    as the mean of the node and its mirror azimuth pi - psi: the reference solver evaluates the
+    half circle cos(psi) > 0 (uniform inflow: the mirror node has the same U_T and U_P), where the
+    angle of attack rises; at the mirror node it falls at the same rate (K1 = -1/2 there)."""
     if not _state.get("gamma") or model != CAMBERED:
         return _static_element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk)
+    rising = _delayed(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, pk, 1.0)
+    falling = _delayed(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, pk, -1.0)
+    return 0.5 * (rising[0] + falling[0]), 0.5 * (rising[1] + falling[1])
+
+
+def _delayed(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, pk, mirror):
+    """The delayed element at the half circle's nodes (mirror 1) or at their mirror azimuths (-1)."""
     alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, a_pos, a_neg = pk[:8]
     W2 = UT * UT + UP * UP + 1e-300
     U = np.sqrt(W2)
-    alpha_dot = UP * _state["omega"] * _state["Vs"] * _state["cospsi"] / W2
+    alpha_dot = mirror * UP * _state["omega"] * _state["Vs"] * _state["cospsi"] / W2
     rate = _state["chord"] * np.abs(alpha_dot) / (2.0 * U)
     delay = _state["gamma"] * np.where(alpha_dot >= 0.0, 1.0, -K1_FALLING) * np.sqrt(rate)
     ae = theta - (alpha_L0 + s3) - np.arctan2(UP, UT)
@@ -106,7 +118,8 @@ def main(gamma: float) -> None:
             k4 = np.linalg.lstsq(mu[1:-1, None], D[1:-1], rcond=None)[0][0]  # D = k4 mu (the normalisation cancels)
             row.append((k4 / T[0], T[-1] / T[0] - 1, Q[-1] / Q[0] - 1))
         meas = (c["k4"] / c["CT_static"], c["k2"] * 0.04 / c["CT_static"], c["k7"] * 0.04 / c["CQ_static"])
-        cells = [f"{lab} {m:.2f} / {r0:.2f} -> {r1:.2f}" for lab, m, r0, r1 in zip(("H", "dT", "dQ"), meas, row[0], row[1])]
+        cells = [f"{lab} {m:.2f} / {r0:.2f} -> {r1:.2f}"
+                 for lab, m, r0, r1 in zip(("H", "dT", "dQ"), meas, row[0], row[1])]
         print(f"  {name:13s} measured / static polar -> delayed: " + "; ".join(cells))
     veh = pm.read_vehicle(pm.__path__[0] + "/data/examples/neurobem_quadrotor.toml")
     prop, p = veh.rotors[0].propeller, pm.generic_params()
