@@ -325,7 +325,7 @@ def test_a_points_file_takes_the_names_and_units_fit_loads_reads(tmp_path, capsy
     plain, units, tab = tmp_path / "a.csv", tmp_path / "b.csv", tmp_path / "c.tsv"
     plain.write_text("rpm,airspeed,incidence_deg\n6000,10,90\n7000,0,0\n")
     units.write_text("RPM,airspeed (km/h),Incidence (°),note\n6000,36,90,x\n7000,0,0,y\n", encoding="utf-8")
-    tab.write_text("rpm\tspeed (m/s)\tincidence_deg\n6000\t10\t90\n")
+    tab.write_text("rpm\tairspeed\tincidence_deg\n6000\t10\t90\n7000\t0\t0\n")
     outs = []
     for p in (plain, units):
         code, _, err = run(capsys, "loads", "apce_8x6", "--points", p, "--out", tmp_path / f"{p.stem}.out.csv")
@@ -335,7 +335,13 @@ def test_a_points_file_takes_the_names_and_units_fit_loads_reads(tmp_path, capsy
     for q in ("thrust", "drag", "torque"):
         np.testing.assert_array_equal(outs[0][q], outs[1][q])
     code, _, err = run(capsys, "loads", "apce_8x6", "--points", tab, "--out", tmp_path / "c.out.csv")
-    assert one_line_error(code, err, "'speed (m/s)' is in m/s, a linear speed, not a rotation speed"), err
+    assert code == 0, err
+    np.testing.assert_array_equal(np.genfromtxt(tmp_path / "c.out.csv", delimiter=",", names=True)["thrust"],
+                                  outs[0]["thrust"])
+    linear = tmp_path / "d.csv"
+    linear.write_text("Speed (m/s),airspeed,incidence_deg\n6000,10,90\n")
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", linear, "--out", tmp_path / "d.out.csv")
+    assert one_line_error(code, err, "'Speed (m/s)' is in m/s, a linear speed, not a rotation speed"), err
 
 
 def test_holding_out_every_run_is_said_to_be_that(tmp_path, capsys):
@@ -346,3 +352,46 @@ def test_holding_out_every_run_is_said_to_be_that(tmp_path, capsys):
     code, _, err = run(capsys, "fit", "loads", *runs, "--prop", "apce_9x6", "--holdout", ",".join(ids), "--out",
                        tmp_path / "p.toml")
     assert one_line_error(code, err, "--holdout: every run of SOURCE is held out"), err  # (a prior-directions error)
+
+
+@pytest.mark.parametrize("extra", ["Fz (kN)", "Tip speed (m/s)", "Slipstream velocity (m/s)", "Blade speed (km/h)"])
+def test_a_static_stands_other_speeds_and_kilonewtons_are_not_airspeeds(extra):
+    """The unit rule's exceptions (a review, 2026-11-26): 'kN' is a force, not knots; a blade's
+    or the slipstream's speed is not the airspeed."""
+    cm = map_columns(["rpm", "thrust (N)", "torque (N m)", extra])
+    assert "airspeed" not in cm.columns and "thrust" in cm.columns
+
+
+def test_points_files_keep_their_extra_columns_and_read_omega_in_rad_s(tmp_path, capsys):
+    """Bare names first; an alias of a quantity a bare name gives stays an extra column (these
+    files ran before 2026-11-26 and were refused for a day); ``omega`` without a unit is rad/s."""
+    for header in ("rpm,airspeed,incidence_deg,omega", "rpm,airspeed,incidence_deg,airspeed_nominal",
+                   "rpm,airspeed,incidence_deg,Motor speed (rad/s)", "rpm,airspeed,incidence_deg,wind speed"):
+        p = tmp_path / "p.csv"
+        p.write_text(f"{header}\n6000,0,0,7\n")
+        code, out, err = run(capsys, "loads", "apce_8x6", "--points", p, "--out", "-")
+        assert code == 0 and out.splitlines()[0].startswith(header + ",thrust"), err
+    p = tmp_path / "o.csv"
+    p.write_text("Omega,airspeed,incidence_deg\n628.3185307179587,0,0\n")
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--points", p, "--out", "-")
+    q = tmp_path / "r.csv"
+    q.write_text("rpm,airspeed,incidence_deg\n6000,0,0\n")
+    code2, out2, _ = run(capsys, "loads", "apce_8x6", "--points", q, "--out", "-")
+    assert code == code2 == 0 and out.splitlines()[1].split(",")[3:] == out2.splitlines()[1].split(",")[3:]
+
+
+def test_a_density_column_of_zeros_is_not_read_and_lb_ft3_is(tmp_path):
+    zero, imperial = tmp_path / "z.csv", tmp_path / "i.csv"
+    _tunnel_csv(zero, NAMES + ["Air density (kg/m³)"], density=0.0)
+    d = read_loads(zero)
+    assert d.air_density is None and any("empty or 0 in every row: not read" in n for n in d.notes)
+    _tunnel_csv(imperial, NAMES + ["Air density (lb/ft³)"], density=0.0765)
+    assert read_loads(imperial).air_density == pytest.approx(0.0765 * 16.018463, rel=1e-6)
+
+
+def test_a_1khz_log_timed_in_milliseconds_is_refused(tmp_path, capsys, slow_rows):
+    ms = slow_rows[:400].copy()
+    ms[:, 0] = np.arange(400) * 1.0  # 1 kHz in ms: a step of 1 "s"
+    code, _, err = run(capsys, "wrench", _write_log(tmp_path / "ms.csv", ms), "--vehicle", VEHICLE, "--out",
+                       tmp_path / "w.csv")
+    assert one_line_error(code, err, "is it in milliseconds or microseconds?"), err

@@ -102,8 +102,8 @@ def test_default_parameters_follow_the_data(apc8x6):
 
 
 def test_rates_in_fine_steps_count_by_their_span(apc8x6):
-    """A sweep whose rpm moves in steps finer than 3% (a thrust stand's continuous sweep in a
-    tunnel) counts the rates it spans: 4000-8000 rpm in 2% steps are 18 distinct rates, not one,
+    """Runs at rates in steps finer than 3% (a thrust stand stepped through its throttle in a
+    tunnel, a run per step) count the rates they span: 4000-8000 rpm in 2% steps are 18 distinct rates, not one,
     so the fit frees the Reynolds terms and recovers the truth's loads (rms residual 0.0005 of
     the coefficient scale; 0.0087 with the Reynolds terms held at the base, as these data were
     fitted before: regression values, 2026-11-26)."""
@@ -123,6 +123,14 @@ def test_rates_in_fine_steps_count_by_their_span(apc8x6):
     # a UIUC-like sweep's rpm scatter (within 3%) stays one rate
     jitter = data.subset(data.omega <= rpm[1] * RPM)  # 4000 and 4080 rpm
     assert _sweep_rates(jitter) == 1
+    # one run at one throttle whose rpm drifts by 25% as the tunnel speeds up is one rate: its Reynolds
+    # effects are confounded with J (counting 3% steps along it freed them, a review found; 2026-11-26)
+    drift = np.linspace(5000.0, 6250.0, 12) * RPM
+    V = np.linspace(1.0, 15.0, 12)
+    r = pm.rotor_loads(apc8x6, TRUE, drift, V, 0.0)
+    one = LoadData(omega=drift, airspeed=V, incidence=np.zeros(12), measured={"thrust": r.thrust},
+                   group=np.full(12, "run1"))
+    assert _sweep_rates(one) == 1 and _data_kind(one) == "few_rates"
 
 
 def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):

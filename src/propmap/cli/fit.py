@@ -138,9 +138,9 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
         figure(stem.with_name(stem.name + ".png"))
-    # the fit's warnings go to standard error, once: the report on standard output leaves them out
-    # (report.txt keeps them)
-    echoed = {f"WARNING: {w}" for w in result.warnings[:MAX_WARNINGS]}
+    # the fit's warnings go to standard error, once (the first MAX_WARNINGS, and how many more): the report on
+    # standard output leaves them all out (report.txt keeps them)
+    echoed = {f"WARNING: {w}" for w in result.warnings}
     click.echo(json.dumps(report, indent=2, default=float) if as_json else
                "\n".join(line for line in text.splitlines() if line not in echoed))
     for w in result.warnings[:MAX_WARNINGS]:
@@ -274,8 +274,6 @@ def _file_air(data, air, air_choice):
     """The fit's air: the file's logged density (LoadData.air_density) where no air option is
     given (the set's viscosity and speed of sound kept), said in a note; beside an air option
     that differs from it by more than 2%, a warning."""
-    from ._common import warn
-
     rho = data.air_density
     if rho is None:
         return air

@@ -69,8 +69,9 @@ def _samples(logs, veh, rate_hz):
 
     try:
         samples = flight_samples(logs, veh, rate_hz=rate_hz)
-    except ValueError as exc:
-        raise InputError(f"LOG: {exc}") from None
+    except ValueError as exc:  # (a log's own error starts with its name)
+        about_a_log = any(str(exc).startswith(f"{lg.name}:") for lg in logs)
+        raise InputError(f"LOG: {exc}" if about_a_log else str(exc)) from None
     for note in samples.notes:
         click.echo(f"propmap: warning: {note}", err=True)
     return samples

@@ -63,6 +63,8 @@ def _points_reader(path: Path, chunksize: int):
 
     import pandas as pd
 
+    from ..io.inputs import header_separator
+
     where = f"--points: {path}"
     try:
         st = path.stat()
@@ -85,8 +87,7 @@ def _points_reader(path: Path, chunksize: int):
     except UnicodeDecodeError as exc:
         raise InputError(f"{where}, line 1: byte 0x{exc.object[exc.start]:02x} is not UTF-8; save the file as "
                          "UTF-8 CSV") from None
-    counts = {c: first.count(c) for c in (",", ";", "\t")}
-    sep = max(counts, key=lambda c: (counts[c], c == ","))  # (a tie: the comma)
+    sep = header_separator(first)
     names = [h.strip() for h in next(csv.reader([first], delimiter=sep), [])]
     if not any(names):
         raise InputError(f"{where}: the first line is empty; it must name the columns")

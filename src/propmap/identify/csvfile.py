@@ -40,7 +40,8 @@ import re
 
 import numpy as np
 
-from ..io.inputs import MAX_FILE_BYTES, decode_input_text, parse_number, read_input_bytes, show_path
+from ..io.inputs import (MAX_FILE_BYTES, decode_input_text, header_separator, parse_number, read_input_bytes,
+                         show_path)
 from ..io.readers import RPM_MAX
 
 __all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
@@ -121,8 +122,7 @@ class _Csv:
         self._raw = raw
         # ',', ';' (spreadsheets in locales with a decimal comma) or a tab, from the header line
         head = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=1)[0]
-        counts = {sep: head.count(sep.encode()) for sep in (",", ";", "\t")}
-        self.sep = max(counts, key=lambda sep: (counts[sep], sep == ","))  # (a tie: the comma)
+        self.sep = header_separator(head.decode("utf-8", "replace"))
         self.header_line = 0
         self.columns: list[str] = []
         for line, cells in self._rows():

@@ -195,7 +195,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     list of str
         Warnings: a tip Mach number above 0.7 in the data; a measured in-plane force (drag)
         of the other sign than the model's at most points at incidence (propmap's D points
-        along the in-plane airspeed, against the disk's in-plane motion: docs/conventions.md).
+        along the in-plane airspeed, against the disk's in-plane motion: docs/conventions.md);
+        a measured drag above 5% of the thrust at most points without an in-plane airspeed
+        (an incidence the file does not give).
 
     Raises
     ------

@@ -346,15 +346,21 @@ def _measures_inplane_force(data: LoadData, keys) -> bool:
 
 
 def _sweep_rates(data: LoadData) -> int:
-    """Distinct rotation rates of the moving points (0 for static data): the rates in order,
-    each more than 3% above the last one counted. Measured from that one, not from its
-    neighbour, so that rates in steps finer than 3% (a thrust stand's continuous sweep) count
-    by the span they cover; a UIUC sweep's rpm scatter stays one rate (all 147 catalogue
-    propellers count as before)."""
+    """Distinct rotation rates of the moving points' runs (0 for static data): each run's
+    (``group``'s) median rate, in order, counted where it lies more than 3% (RATE_STEP) above the
+    last one counted. A run is one rate whatever its spread: a UIUC sweep's rpm scatter, or a
+    sweep at one throttle whose rpm drifts as the tunnel speeds up (its Reynolds effects are
+    confounded with J); runs at rates in steps finer than 3% count by the span they cover (all
+    147 catalogue propellers count as with the neighbouring points compared, the rule before
+    2026-11-26)."""
+    moving = data.airspeed > 0
+    if not moving.any():
+        return 0
+    w, g = data.omega[moving], data.group[moving]
     n, last = 0, -math.inf
-    for w in np.sort(data.omega[data.airspeed > 0]):
-        if w > RATE_STEP * last:
-            n, last = n + 1, w
+    for rate in sorted(float(np.median(w[g == k])) for k in set(g)):
+        if rate > RATE_STEP * last:
+            n, last = n + 1, rate
     return n
 
 

@@ -13,14 +13,15 @@ from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
 from ._checks import first_length, float_array
 
-__all__ = ["OMEGA_STOPPED", "GROUND_MARGIN", "GROUND_SPEED", "GROUND_RATE", "FlightSamples", "flight_samples"]
+__all__ = ["OMEGA_STOPPED", "GROUND_FRACTION", "GROUND_SPEED", "GROUND_RATE", "FlightSamples", "flight_samples"]
 
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
-#: the accelerometer reading g (within 20%) while its rotors turn too slowly to carry it: g over GROUND_MARGIN times
-#: (Omega_rms / Omega_typ)^2 g, Omega_typ the log's median rotor speed (about the hover speed in flight)
-GROUND_MARGIN = 2.0
+#: the accelerometer reading g (within 20%) while its rotors' rms speed is below GROUND_FRACTION of the hover speed
+#: (a quarter of the weight or less: idling), the hover speed the larger of the log's median rms rotor speed and the
+#: generic set's hover speed of the vehicle (so that a log mostly on the ground is judged too)
+GROUND_FRACTION = 0.5
 GROUND_SPEED = 0.5  # [m/s]
 GROUND_RATE = 0.5  # [rad/s]
 #: a log whose rotors' tip speed (each motor's 99th percentile) exceeds this Mach number (at SPEED_OF_SOUND) is
@@ -171,7 +172,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     -----
     Samples are left out (``FlightSamples.notes`` says how many, per log) where a rotor is
     stopped, by its logged speed or through the motor lag (OMEGA_STOPPED), and where the
-    vehicle stands on the ground (GROUND_MARGIN): there the measured force is the ground's
+    vehicle stands on the ground (GROUND_FRACTION): there the measured force is the ground's
     reaction, which no rotor model makes (idling rotors with the accelerometer reading g).
     """
     logs = list(logs)
@@ -185,6 +186,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     n_rot = len(vehicle.rotors)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes = [], [], []
+    hover = _hover_speed(vehicle)
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
             raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
@@ -212,14 +214,14 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         logged = log.rotor_omega[sl]
         stopped = ~(np.all(om >= OMEGA_STOPPED, axis=1) & np.all(logged >= OMEGA_STOPPED, axis=1))
         ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
-                                       stopped)
+                                       stopped, hover)
         keep = ~(stopped | ground)
         if stopped.any():
             notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
                          "rad/s, logged or through the motor lag) left out")
         if ground.any():
             notes.append(f"{log.name}: {int(ground.sum())} sample(s) on the ground left out (standing still, the "
-                         "accelerometer reading g, the rotors too slow to carry the vehicle: the ground's reaction, "
+                         "accelerometer reading g, the rotors below half the hover speed: the ground's reaction, "
                          "which no rotor model makes)")
         w = log.angular_velocity[sl][keep]
         if vehicle.inertia is not None:
@@ -245,22 +247,35 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
                          notes=tuple(notes), **out)
 
 
-def _on_ground(omega, specific_force, velocity, angular_velocity, stopped) -> np.ndarray:
-    """Samples where the ground carries the vehicle (GROUND_MARGIN, GROUND_SPEED, GROUND_RATE):
-    standing still with the accelerometer reading g (within 20%) [m/s^2] while the rotors'
-    (Omega_rms / Omega_typ)^2, Omega_typ the median of the running samples' rms rotor speed,
-    stays below 1 / GROUND_MARGIN: in flight at such speeds the rotors could not carry the weight.
-    A log that is mostly on the ground has its Omega_typ there and flags nothing."""
+def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover) -> np.ndarray:
+    """Samples where the ground carries the vehicle (GROUND_FRACTION, GROUND_SPEED, GROUND_RATE):
+    standing still with the accelerometer reading g (within 20%) [m/s^2] while the rotors' rms
+    speed is below GROUND_FRACTION of the larger of ``hover`` [rad/s] (the model's hover speed,
+    or 0) and the running samples' median rms speed: idling rotors, which cannot carry a quarter
+    of the weight."""
     g = 9.80665
     rms = np.sqrt(np.mean(omega**2, axis=1))
     running = ~stopped
     if not running.any():
         return np.zeros(len(rms), dtype=bool)
-    typical = float(np.median(rms[running]))
+    reference = max(float(np.median(rms[running])), hover)
     f = np.linalg.norm(specific_force, axis=1)
     still = ((np.linalg.norm(velocity, axis=1) < GROUND_SPEED)
              & (np.linalg.norm(angular_velocity, axis=1) < GROUND_RATE))
-    return still & (np.abs(f - g) < 0.2 * g) & (GROUND_MARGIN * (rms / typical) ** 2 < 1.0)
+    return still & (np.abs(f - g) < 0.2 * g) & (rms < GROUND_FRACTION * reference)
+
+
+def _hover_speed(vehicle: Vehicle) -> float:
+    """The generic set's hover speed of the vehicle [rad/s] (24 x 8 nodes, a few ms), 0 where it
+    has none (its propellers cannot carry it, or the solve fails)."""
+    from ..core.solver import Discretization, SolverError
+    from ..io.calibration import generic_params
+    from ..vehicle import hover_omega
+
+    try:
+        return float(hover_omega(vehicle, generic_params(), discretization=Discretization(24, 8)))
+    except (SolverError, ValueError, ArithmeticError):
+        return 0.0
 
 
 def _lagged(log: FlightLog, tau: float):

@@ -43,7 +43,8 @@ class LoadData:
         ``omega``), a non-finite value (in ``measured`` NaN marks a load not measured at a
         point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
-        thrust, drag, torque; the message names the field. (The readers check the signs and
+        thrust, drag, torque, an ``air_density`` that is not a finite number > 0; the message
+        names the field. (The readers check the signs and
         the ranges of the loads themselves.)
     """
 
@@ -65,11 +66,12 @@ class LoadData:
             fields_[name] = float_array("LoadData", name, getattr(self, name), (n,), row="point")
         if np.any(omega <= 0):
             raise ValueError(f"LoadData.omega must be > 0 rad/s, got {omega[omega <= 0][0]:g}")
-        if self.air_density is not None and not (isinstance(self.air_density, (int, float))
-                                                 and not isinstance(self.air_density, bool)
-                                                 and math.isfinite(self.air_density) and self.air_density > 0):
-            raise ValueError(f"LoadData.air_density must be a finite number > 0 kg/m^3 or None, got "
-                             f"{self.air_density!r:.40}")
+        if self.air_density is not None:
+            rho = self.air_density
+            if (isinstance(rho, (bool, np.bool_)) or not isinstance(rho, (int, float, np.integer, np.floating))
+                    or not (math.isfinite(rho) and rho > 0)):
+                raise ValueError(f"LoadData.air_density must be a finite number > 0 kg/m^3 or None, got {rho!r:.40}")
+            object.__setattr__(self, "air_density", float(rho))
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
         if np.any((fields_["incidence"] < 0) | (fields_["incidence"] > np.pi)):

@@ -82,7 +82,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         non-numeric or non-finite value, a rotation speed negative in some rows and positive
         in others, a value out of range (rpm outside
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
-        incidence_deg outside [0, 180], collective_deg outside [-45, 45], |thrust| or
+        incidence_deg outside [0, 180], collective_deg outside [-45, 45], an air density
+        outside [0.05, 5] kg/m^3 (AIR_DENSITY_RANGE), |thrust| or
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
         at the static points (or those nearest to static), a negative torque where the
         thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
@@ -221,11 +222,13 @@ AIR_DENSITY_RANGE = (0.05, 5.0)
 
 
 def _air_density(rho, column, what: str, p: str, notes: list) -> float | None:
-    """The median of a density column's running rows [kg/m^3] (None without one), with a note."""
+    """The median of a density column's running rows [kg/m^3] (None without one, or where it is
+    empty or 0 in every row: a sensor absent), with a note."""
     if rho is None:
         return None
-    rho = rho[np.isfinite(rho)]
+    rho = rho[np.isfinite(rho) & (rho != 0)]  # (empty or 0: a sensor absent from the rows)
     if not rho.size:
+        notes.append(f"{column!r} is empty or 0 in every row: not read")
         return None
     lo, hi = AIR_DENSITY_RANGE
     if not (lo <= rho.min() and rho.max() <= hi):

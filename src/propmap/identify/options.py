@@ -59,7 +59,7 @@ FLAP_START = 1.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
-#: a rotation rate counts as another one more than this factor above the last one counted
+#: a run's rotation rate counts as another one more than this factor above the last one counted (fit._sweep_rates)
 RATE_STEP = 1.03
 #: ... as does a static run over this ratio of rotation rates (a UIUC static run spans 2-8x):
 #: with the static run and the lowest sweep, leave-one-family-out on both UIUC volumes

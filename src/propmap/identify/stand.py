@@ -7,7 +7,8 @@ thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``
 ``Thrust (kgf)`` or ``(gf)``, ``(N)``, ``(lbf)``, ``Torque (N·m)`` (not on the 1520),
 ``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
 mark), as the stand's software writes them; the rotation speed also as ``Motor Speed (RPM)``,
-``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``. This module maps the
+``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``, ``omega`` (rad/s without a
+unit). This module maps the
 columns and turns a "steps" test into one averaged point per ESC step.
 
 Units (a quantity without a unit is SI, rpm for rotation speed):
@@ -19,7 +20,7 @@ torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm)
 rotation speed  rpm, rad/s, Hz (rev/s)
 airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots)
 angle           deg (degrees, °), rad
-air density     kg/m³ (kg/m^3, g/L), g/cm³
+air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 ==============  ===================================================================
 
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
@@ -51,7 +52,8 @@ UNITS = {
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "knots": 1852 / 3600},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
-    "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3},
+    "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
+                "lbft³": 16.018463373960138},
 }
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
@@ -88,6 +90,9 @@ _AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspe
               "tilt": "incidence_deg", "tilt angle": "incidence_deg", "inclination": "incidence_deg",
               "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
+#: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
+#: propeller); a unit 'kN' is a force (kilonewton), not knots
+_NOT_AIRSPEED = re.compile(r"\b(tip|blade|slipstream|induced|exit|wake|jet|outlet|downwash|propwash|rotor)\b")
 #: the rotation-speed columns, in the order of preference when several are present
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
@@ -96,6 +101,24 @@ LOOKED_FOR = {
     "loads": "thrust, torque or drag (or H force, in-plane force, normal force, rotor drag), with or without a unit "
              "(thrust_kgf, Thrust (gf), torque_Nmm, Torque (N·m))",
 }
+
+
+def _factor(name: str, base: str, unit: str | None, error) -> float:
+    """The factor to SI (rpm for a rotation speed, deg for an angle) of column ``name``, whose
+    recognised quantity name is ``base`` (in _NAMES) and unit ``unit`` (None: the quantity's SI,
+    except ``omega``, the field's symbol of a rotation rate in rad/s)."""
+    quantity, kind = _NAMES[base]
+    if kind is None:
+        return 1.0
+    if unit is None:
+        return UNITS["rotation"]["rads"] if base == "omega" else 1.0
+    tok = _token(unit)
+    if kind == "rotation" and tok in UNITS["speed"]:
+        raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or Hz): name an "
+                    "airspeed 'airspeed' (with its unit, e.g. 'airspeed (m/s)')")
+    if tok not in UNITS[kind]:
+        raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: {', '.join(UNITS[kind])})")
+    return UNITS[kind][tok]
 
 
 def _token(unit: str) -> str:
@@ -173,7 +196,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     ColumnMap
         ``columns``: each recognised quantity (``thrust``, ``drag``, ``torque``, ``rpm``,
         ``rpm_optical``, ``rpm_electrical``, ``airspeed``, ``incidence_deg``,
-        ``collective_deg``, ``esc``, ``time``, ``group``; the columns it does not recognise
+        ``collective_deg``, ``esc``, ``time``, ``group``, ``air_density``; the columns it does not recognise
         left out) -> (column name as written, factor to N, N m, rpm, m/s or deg, unit as
         written or None); ``notes``: the units converted. ``pole_pairs`` is only checked
         here: the caller divides the speed (:func:`propmap.identify.read_loads`).
@@ -202,19 +225,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         if base not in _NAMES:
             continue
         quantity, kind = _NAMES[base]
-        factor = 1.0
-        if kind is not None:
-            if unit is None:
-                factor = 1.0  # SI (rpm, deg)
-            else:
-                tok = _token(unit)
-                if kind == "rotation" and tok in UNITS["speed"]:
-                    raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or "
-                                "Hz): name an airspeed 'airspeed' (with its unit, e.g. 'airspeed (m/s)')")
-                if tok not in UNITS[kind]:
-                    raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: "
-                                f"{', '.join(UNITS[kind])})")
-                factor = UNITS[kind][tok]
+        factor = _factor(name, base, unit, error)
         if quantity in cm.columns:
             raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
@@ -258,7 +269,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         # points move (Shaft angle (deg) beside an airspeed): its name may be anything
         kind = "speed" if quantity == "airspeed" else "angle"
         if quantity == "airspeed" or "airspeed" in cm.columns:
-            like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]]
+            like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
+                     and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")
@@ -278,37 +290,40 @@ OPERATING = ("rpm", "airspeed", "incidence_deg", "collective_deg")
 
 def map_operating_columns(names, *, error=ValueError) -> dict:
     """Map a points file's header to its operating-point quantities, by the names and units
-    :func:`map_columns` reads (``RPM``, ``speed_rad_s``, ``airspeed (m/s)``, ``airspeed_kmh``,
-    ``incidence (deg)``, ``Incidence (°)``, ``collective_deg``).
+    :func:`map_columns` reads (``RPM``, ``speed_rad_s``, ``omega`` [rad/s], ``airspeed (m/s)``,
+    ``airspeed_kmh``, ``incidence (deg)``, ``Incidence (°)``, ``collective_deg``).
+
+    Parameters
+    ----------
+    names : sequence of str
+        The header's column names, as written.
+    error : type
+        The exception raised.
 
     Returns
     -------
     dict
-        quantity (of :data:`OPERATING`) -> (column name as written, factor to rpm, m/s or deg);
-        the other columns left out.
+        quantity (of :data:`OPERATING`) -> (column name as written, factor to rpm, m/s or deg).
+        A quantity's bare name (``rpm``, ``airspeed``, ``incidence_deg``, ``collective_deg``,
+        any case) is taken first; another name for a quantity it gives, and every other
+        column, stays an extra column of the file.
 
     Raises
     ------
     error
-        An operating quantity in a unit it does not know (a rotation speed in a linear speed's
-        unit said as such), or two columns for one quantity.
+        An operating quantity, not given by its bare name, in a unit it does not know (a rotation
+        speed in a linear speed's unit said as such), or two such columns for one quantity.
     """
-    out: dict = {}
+    out = {name.strip().lower(): (name, 1.0) for name in names if name.strip().lower() in OPERATING}
+    bare = set(out)
     for name in names:
-        if not name.strip():
+        if not name.strip() or name.strip().lower() in OPERATING:
             continue
         base, unit = _split(name)
-        quantity, kind = _NAMES.get(base, (None, None))
-        if quantity not in OPERATING:
+        quantity = _NAMES.get(base, (None, None))[0]
+        if quantity not in OPERATING or quantity in bare:
             continue
-        factor = 1.0
-        if unit is not None:
-            tok = _token(unit)
-            if kind == "rotation" and tok in UNITS["speed"]:
-                raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or Hz)")
-            if tok not in UNITS[kind]:
-                raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: {', '.join(UNITS[kind])})")
-            factor = UNITS[kind][tok]
+        factor = _factor(name, base, unit, error)
         if quantity in out:
             raise error(f"columns {out[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         out[quantity] = (name, factor)

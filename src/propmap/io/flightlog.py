@@ -36,13 +36,14 @@ from pathlib import Path
 
 import numpy as np
 
-from .inputs import MAX_FILE_BYTES, decode_input_text, read_input_bytes, show_path
+from .inputs import MAX_FILE_BYTES, decode_input_text, header_separator, read_input_bytes, show_path
 
 __all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
 
 #: a log sampled more slowly than this is refused [Hz]: time in ms or us read as seconds (NeuroBEM logs 400 Hz,
-#: PX4's slowest estimator topics tens of Hz)
-MIN_RATE_HZ = 1.0
+#: PX4's slowest estimator topics tens of Hz; a 1 kHz log in ms would read as 1 Hz); dw/dt, differentiated from
+#: the rates, needs the vehicle's motion resolved
+MIN_RATE_HZ = 10.0
 #: the NeuroBEM dataset's 41 columns (the names of the authors' CSV loader)
 NEUROBEM_COLUMNS = (
     "t", "ang acc x", "ang acc y", "ang acc z", "ang vel x", "ang vel y", "ang vel z",
@@ -160,9 +161,11 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     FlightLogError
         Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
         file, a missing topic or column (named, with those found), fewer than 2 samples,
-        time not strictly increasing, non-finite values (named as such), motor speeds outside [0, 1e5]
+        time not strictly increasing or sampled below MIN_RATE_HZ (10 Hz: a time in ms or us),
+        non-finite values (named as such), motor speeds outside [0, 1e5]
         rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
-        500 m/s (likely a unit mistake).
+        500 m/s (likely a unit mistake), a CSV without a header that does not have the 41
+        columns of the NeuroBEM layout.
     """
     p = Path(path)
     name = show_path(p)
@@ -223,8 +226,8 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
-        sep = max(";\t", key=lines[first].count)
-        if missing and len(head) == 1 and lines[first].count(sep) >= len(NEUROBEM_COLUMNS[:29]) - 1:
+        sep = header_separator(lines[first])
+        if missing and sep != "," and lines[first].count(sep) >= len(NEUROBEM_COLUMNS[:29]) - 1:
             said = "';'" if sep == ";" else "tabs"
             raise FlightLogError(f"{name}: the columns are separated by {said}; a flight-log CSV is separated by ','"
                                  " (the NeuroBEM layout), with '.' as its decimal point") from None
@@ -406,7 +409,8 @@ def _check(log: FlightLog, name: str) -> None:
     if log.rate_hz < MIN_RATE_HZ:
         raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.3g} Hz): "
                              f"is it in milliseconds or microseconds? A log's time is read in seconds, and a flight "
-                             f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion")
+                             f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion (its "
+                             "angular acceleration is differentiated from the rates)")
     checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
               ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
               ("velocity", log.velocity, SPEED_MAX, "m/s"),

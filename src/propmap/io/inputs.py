@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["MAX_FILE_BYTES", "MAX_SMALL_FILE_BYTES", "show_path", "read_input_bytes", "decode_input_text",
-           "parse_number"]
+           "parse_number", "header_separator", "SEPARATORS"]
 
 #: the largest data file (loads and level-flight CSVs) a reader accepts [bytes]
 MAX_FILE_BYTES = 200 * 1024 * 1024
@@ -176,6 +176,17 @@ def _line_of(text, pos: int) -> int:
     """The line number (from 1) of position ``pos`` in ``text`` (str or bytes), for LF, CRLF or CR line ends."""
     lf, cr, crlf = ("\n", "\r", "\r\n") if isinstance(text, str) else (b"\n", b"\r", b"\r\n")
     return text.count(lf, 0, pos) + text.count(cr, 0, pos) - text.count(crlf, 0, pos) + 1
+
+
+#: the separators a header line may use, in the order that breaks a tie (a comma first)
+SEPARATORS = (",", ";", "\t")
+
+
+def header_separator(line: str) -> str:
+    """The separator of a CSV from its header line: the most frequent of ',', ';' (spreadsheets in
+    locales with a decimal comma) and a tab (a tie: the comma)."""
+    counts = {c: line.count(c) for c in SEPARATORS}
+    return max(SEPARATORS, key=lambda c: (counts[c], c == ","))
 
 
 def parse_number(text: str) -> float:
