@@ -395,3 +395,25 @@ def test_a_1khz_log_timed_in_milliseconds_is_refused(tmp_path, capsys, slow_rows
     code, _, err = run(capsys, "wrench", _write_log(tmp_path / "ms.csv", ms), "--vehicle", VEHICLE, "--out",
                        tmp_path / "w.csv")
     assert one_line_error(code, err, "is it in milliseconds or microseconds?"), err
+
+
+def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
+    """A simulator's ints and float32 (an audit, 2026-11-26: 10-60x slower through the array
+    path): the scalar path takes them and answers as for floats; a bool is still refused."""
+    from propmap.maps import build_map
+    from propmap.rotormap import RotorMap, _plain, _three
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    rm = RotorMap(build_map(prop, p, np.geomspace(3000, 9000, 4) * RPM, np.linspace(0, 15, 4),
+                            np.radians(np.linspace(0, 180, 7)), air=p.air, params_label=p.label, n_check=0))
+    assert _plain(600) == 600.0 and _plain(np.float32(2.5)) == 2.5 and _plain(True) is None
+    assert _three([0, 0, 1]).dtype == np.float64 and _three(np.array([1, 2, 3], np.int32)) is not None
+    ref = rm.loads(600.0, 3.0, 1.0)
+    for args in ((600, 3, 1), (np.float32(600.0), np.int64(3), 1.0)):
+        got = rm.loads(*args)
+        assert type(got.thrust) is float and got.thrust == ref.thrust
+    w = rm.wrench(np.array([3.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), 600.0, "cw")
+    w2 = rm.wrench(np.array([3, 0, 0], np.float32), [0, 0, 1], 600, "cw")
+    np.testing.assert_array_equal(w2.force, w.force)
+    with pytest.raises(ValueError, match="omega"):
+        rm.loads(True, 3.0, 1.0)

@@ -233,3 +233,23 @@ int main(void) { double out[4] = {0, 0, 0, 0}; printf("%d", pm_rotor_loads(500.0
 ''')
     subprocess.run([CC, "-std=c99", "-o", str(tmp_path / "policy"), str(tmp_path / "policy.c"), "-lm"], check=True)
     assert subprocess.run([str(tmp_path / "policy")], capture_output=True, text=True).stdout == "-1"
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_nan_inputs_are_refused_under_fast_math(tmp_path, rotor_map):
+    """-ffast-math lets the compiler drop x != x, the header's NaN test until 2026-11-26 (a NaN
+    airspeed then returned 2 with the loads at 25 m/s): the test by the bits survives it."""
+    write_c_header(rotor_map, tmp_path / "map.h", dtype="double")
+    for name, driver in (("d", DRIVER), ("w", WRENCH_DRIVER)):
+        (tmp_path / f"{name}.c").write_text(driver)
+        subprocess.run([CC, "-std=c99", "-O2", "-ffast-math", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o",
+                        str(tmp_path / name), str(tmp_path / f"{name}.c"), "-lm"], check=True, capture_output=True,
+                       text=True)
+    loads = subprocess.run([str(tmp_path / "d")], input="nan 5 1 0\n900 nan 1 0\n900 5 nan 0\n900 5 1 0\n",
+                           capture_output=True, text=True, check=True).stdout.split("\n")
+    status = [int(line.split()[0]) for line in loads[:4]]
+    assert status[:3] == [-1, -1, -1] and status[3] >= 0
+    wrench = subprocess.run([str(tmp_path / "w")], input="nan 0 0 0 0 1 500 1 0\n1 0 0 0 nan 1 500 1 0\n"
+                            "1 0 0 0 0 1 500 1 0\n", capture_output=True, text=True, check=True).stdout.split("\n")
+    status = [int(line.split()[0]) for line in wrench[:3]]
+    assert status[:2] == [-1, -1] and status[2] >= 0

@@ -55,6 +55,8 @@ TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
 #define {GUARD}
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #define {PREFIX}_CLIP 0
 #define {PREFIX}_NAN 1
@@ -104,11 +106,28 @@ static inline int {prefix}_locate(const double *ax, int n, double x, double inv_
     return lo;
 }}
 {weights_fn}
+/* 1 for a NaN, 0 else, by its bits: the comparison x != x is optimised away under -ffast-math,
+   this test is not */
+static inline int {prefix}_isnan(double x)
+{{
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    return (b & 0x7fffffffffffffffULL) > 0x7ff0000000000000ULL;
+}}
+
+/* 1 for a finite number, by its bits (as {prefix}_isnan) */
+static inline int {prefix}_isfinite(double x)
+{{
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    return (b & 0x7ff0000000000000ULL) != 0x7ff0000000000000ULL;
+}}
+
 static inline int {prefix}_loads(double omega, double airspeed, double incidence, int policy, double out[4])
 {{
     const double *a0 = {prefix}_omega, *a1 = {prefix}_airspeed, *a2 = {prefix}_incidence;
 {decl}    double fade = 1.0;
-    if (omega != omega || airspeed != airspeed || incidence != incidence || omega < 0.0) return -1;
+    if ({prefix}_isnan(omega) || {prefix}_isnan(airspeed) || {prefix}_isnan(incidence) || omega < 0.0) return -1;
     if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]
              && a2[0] <= incidence && incidence <= a2[{n2} - 1];
@@ -133,10 +152,10 @@ static inline int {prefix}_wrench(const double velocity[3], const double axis[3]
     double z[3], e[3] = {{0.0, 0.0, 0.0}}, ip[3], out[4], amax, n, speed, axial, beta, n_ip;
     int k, status;
     if (spin != 1 && spin != -1) return -1;
-    amax = fmax(fabs(axis[0]), fmax(fabs(axis[1]), fabs(axis[2])));
-    if (!(amax > 0.0 && amax < HUGE_VAL)) return -1;
     for (k = 0; k < 3; k++)
-        if (!(fabs(velocity[k]) < 1e150)) return -1;
+        if (!{prefix}_isfinite(axis[k]) || !{prefix}_isfinite(velocity[k]) || fabs(velocity[k]) >= 1e150) return -1;
+    amax = fmax(fabs(axis[0]), fmax(fabs(axis[1]), fabs(axis[2])));
+    if (!(amax > 0.0)) return -1;
     for (k = 0; k < 3; k++) z[k] = axis[k] / amax;
     n = sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
     for (k = 0; k < 3; k++) z[k] /= n;

@@ -297,8 +297,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     # first pass: every value checked before any work, and the extremes for the warnings
     offset = set_collective_deg(params)  # the set's collective, added to each row's
-    n, extremes = _scan(prop, path, offset)
-    coverage_messages(prop, label, air, *extremes)
+    n, extremes, rpm_range = _scan(prop, path, offset)
+    coverage_messages(prop, label, air, *extremes, rpm=rpm_range)
 
     def write(fh):
         bad = 0
@@ -441,11 +441,12 @@ def check_collective(collective_deg):
     return float(collective_deg)
 
 
-def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float]]:
-    """(points, extremes) of a points file, every value checked (InputError on the first bad one)."""
-    n, ext = 0, (0.0, 0.0, 0.0)
+def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float]]:
+    """(points, extremes, rpm range) of a points file, every value checked (InputError on the first bad one)."""
+    n, ext, lo, hi = 0, (0.0, 0.0, 0.0), math.inf, 0.0
     for df, _, values in _chunks(path, CHUNK, offset_deg):
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
+        lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
         n += len(df)
-    return n, ext
+    return n, ext, (lo, hi)
