@@ -575,6 +575,8 @@ def test_node_fields_are_the_only_ones_the_nodes_read(prop, params):
         x = getattr(params, f.name)
         if f.name in RECORD_META or isinstance(x, (bool, str)) or not isinstance(x, float):
             continue
+        if f.name == "dynamic_stall" and not isinstance(params, pm.CamberedParams):
+            continue  # (the cambered model's only)
         moved = params.replace(**{f.name: x * 1.01 + 1e-3})
         nd = _nodes(prop, 24, 8, params.air, moved)
         same = all(np.array_equal(getattr(nd, k), getattr(base, k)) for k in ("theta", "sc", "ct", "ch", "cfac",

@@ -102,7 +102,7 @@ def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
 
 
 @pytest.mark.parametrize("which", ["gill2017", "gill2017_radial", "cambered_tip_hub", "cambered_stall_terms",
-                                   "gill2017_inplane", "cambered_inplane"])
+                                   "gill2017_inplane", "cambered_inplane", "cambered_dynamic_stall"])
 def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, envelope_points, which):
     # the reference solves Glauert's momentum (the paper's): the cambered sets are asked for it; they
     # carry the radial flow's drag and the skewed wake's in-plane induced velocity (their defaults), and
@@ -118,8 +118,11 @@ def test_kernel_matches_independent_numpy_implementation(apc8x6, apc_params, env
               "cambered_tip_hub": pm.CamberedParams(tip_loss=True, hub_loss=True, descent="glauert",
                                                     inplane_induction=False),
               "cambered_stall_terms": pm.CamberedParams(re_exp_stall=0.2, stall_delay=2.0, descent="glauert",
-                                                        alpha_L0_re=math.radians(-1.5))}[which]
-    assert params.inplane_induction == (which.endswith("_inplane") or which == "cambered_stall_terms")
+                                                        alpha_L0_re=math.radians(-1.5)),
+              # Gormont's dynamic stall: the kernel's node-and-mirror element against the reference's (2026-11-26)
+              "cambered_dynamic_stall": pm.CamberedParams(tip_loss=True, descent="glauert", dynamic_stall=1.5)}[which]
+    assert params.inplane_induction == (which.endswith("_inplane") or which in ("cambered_stall_terms",
+                                                                                 "cambered_dynamic_stall"))
     om, V, b = envelope_points
     r = pm.rotor_loads(apc8x6, params, om, V, b, radial=True)
     nd = _nodes(apc8x6, 48, 16, pm.Air(), params)

@@ -30,7 +30,8 @@ untouched) and prints, for gamma from the command line (default 1.5):
 
     .venv/bin/python tools/dynamic_stall_probe.py [GAMMA]     # about 2 s
 
-Measured 2026-11-26 (docs/validation.md, the gill2019 case's bullets; not in propmap yet).
+Measured 2026-11-26 (docs/validation.md, the gill2019 case's bullets); propmap's option `dynamic_stall` since
+(docs/models.md), which this probe preceded.
 """
 
 from __future__ import annotations

@@ -15,7 +15,9 @@ Prints per row the pooled held-out F [N], the four logs' F and the fitted compli
 Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads cost 2.4x the
 uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes. So does row WN
 (W without the skewed wake's in-plane induced velocity, ``inplane_induction``, the cambered
-default since 2026-11-25: the default before), about 1 minute.
+default since 2026-11-25: the default before), about 1 minute, and row WD (W with Gormont's
+dynamic stall, ``dynamic_stall = 1.5``, differencing the solver: the option has no implicit
+derivatives).
 ``--differences``: the fits' Jacobians by central differences of the solver instead of the
 implicit derivatives (an A/B of the two; the same optimum).
 """
@@ -55,6 +57,7 @@ def rows(g) -> dict:
         "C": (("collective", "flap_compliance"), flap.replace(inflow="pitt-peters")),
         "WP": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inflow="pitt-peters")),
         "WN": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(inplane_induction=False)),
+        "WD": (("collective", "cl_alpha", "alpha_L0_re") + INPLANE, g.replace(dynamic_stall=1.5)),
     }
 
 
@@ -66,7 +69,7 @@ def main() -> None:
     table = rows(pm.generic_params().replace(air=air))
     args = [a for a in sys.argv[1:] if a != "--differences"]
     jacobian = "differences" if "--differences" in sys.argv[1:] else "implicit"
-    for key in args or [k for k in table if k not in ("C", "WP", "WN")]:
+    for key in args or [k for k in table if k not in ("C", "WP", "WN", "WD")]:
         names, base = table[key]
         t = time.perf_counter()
         cv = cross_validate_flight(samples, vehicle, base=base, air=air,

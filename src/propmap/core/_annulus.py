@@ -46,11 +46,11 @@ import numpy as np
 
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_MFAC, NODE_Y, PK_INPLANE,
-                       PK_RADIAL_DRAG, cambered_annulus, empirical_k, inflow_gradients, inplane_induction,
-                       inverse_sin_phi, make_axial_mass_flow,
-                       make_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag,
-                       momentum_scale, momentum_thrust, swirl_step, swirl_target)
+from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_Y, PK_DYNSTALL,
+                       PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, empirical_k, inflow_gradients, inplane_induction,
+                       inverse_sin_phi, make_axial_mass_flow, make_cambered_element, make_delayed_cambered_element,
+                       make_element, make_loss_factor, make_prandtl, make_profile_drag, momentum_scale,
+                       momentum_thrust, swirl_step, swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -77,6 +77,9 @@ _profile_cd = _jit_inline(make_profile_drag(_atan2, _exp_sat))
 # the elements with their profile drag C_D,p U as a third value (the implicit derivatives' radial drag)
 _element_gill_p = _jit_inline(make_element(_atan2, _exp_sat, profile=True))
 _element_cambered_p = _jit_inline(make_cambered_element(_atan2, _exp_sat, profile=True))
+# the cambered element with Gormont's dynamic stall, a node and its mirror node (RotorOptions.dynamic_stall)
+_element_cambered_d = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat))
+_element_cambered_dp = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat, profile=True))
 _prandtl = _jit_inline(make_prandtl(_atan2, _exp_sat))
 _loss_factor = _jit_inline(make_loss_factor(_prandtl))
 _inverse_sin_phi = _jit_inline(inverse_sin_phi)
@@ -102,7 +105,16 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, model, pk, emp):
+def delay_factor(pk, Om, y, cy2):
+    """Gormont's kd = gamma sqrt(c Omega / 2) of an annulus of radius y [m] and (c/y)^2 ``cy2`` at
+    Omega [rad/s] (0 without RotorOptions.dynamic_stall): the delayed element's per-annulus factor."""
+    if pk[PK_DYNSTALL] == 0.0:
+        return 0.0
+    return pk[PK_DYNSTALL] * np.sqrt(0.5 * y * np.sqrt(cy2) * Om)
+
+
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, model, pk, emp, kd):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
 
     ``wy`` = Omega y - u [m/s], the blade's speed less the annulus' swirl u (0 without swirl);
@@ -116,7 +128,9 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
     With ``pk[PK_INPLANE]`` = 1 (airfoil.RotorOptions.inplane_induction) the blades meet the
     in-plane airspeed Vs plus the skewed wake's in-plane induced velocity at v
-    (_physics.inplane_induction); the momentum side keeps Vs.
+    (_physics.inplane_induction); the momentum side keeps Vs. ``kd`` > 0 (:func:`delay_factor`;
+    the cambered model in a uniform inflow, RotorOptions.dynamic_stall): each half-circle node
+    and its mirror node through the delayed element.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -129,7 +143,13 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
         Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)
     # one loop per section model and inflow, so that each compiles to straight-line SIMD code
     if gx == 0.0 and gy == 0.0:
-        if model == CAMBERED:
+        if model == CAMBERED and kd != 0.0 and Vs != 0.0:
+            a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
+            for k in range(naz):
+                qT, _ = _element_cambered_d(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                                            a0, a1, a2, a3, a4, a5, a6, a7, kd, Vs * cospsi[k])
+                acc += qT
+        elif model == CAMBERED:
             a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
             for k in range(naz):
                 qT, _ = _element_cambered(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
@@ -298,6 +318,11 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
     cnt = np.zeros(nr, dtype=np.int64)
     floss = np.ones(nr)
     inv_sin = np.empty(nr)
+    kds = np.zeros(nr)  # Gormont's per-annulus factor (RotorOptions.dynamic_stall), 0 without it
+    if pk[PK_DYNSTALL] != 0.0 and Vs != 0.0:
+        cy2 = nodes[NODE_CY2]
+        for j in range(nr):
+            kds[j] = delay_factor(pk, Om, y[j], cy2[j])
     tip = ct[0] >= 0.0  # the switches hold for all annuli
     hub = ch[0] >= 0.0
     # axial flow (one node, uniform inflow): all annuli's blade elements in one vectorised loop, the solved
@@ -338,7 +363,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                 j = active[q]
                 f[j] = _residual(trial[j], Om * y[j] - us[j], Vs, Vc, (th[j], sth[j], cth[j]),
                                  (s0[j], s1[j], s2[j], s3[j]), cfac[j], mfac[j], floss[j], azim, gx[j], gy[j], naz,
-                                 model, pk, emp)
+                                 model, pk, emp, kds[j])
                 nev[j] += 1
         m = 0
         for q in range(n_active):
@@ -477,7 +502,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, pk, axial):
+def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, pk, axial, kd=0.0):
     """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
     (eqs 5-7, azimuth-averaged; linear inflow, ``bl``, ``sec`` and ``azim`` as ``_residual``);
     ``u`` the annulus' swirl [m/s].
@@ -494,7 +519,8 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     _physics.make_profile_drag) adds its components along the airspeed, cos psi, to dD/dy and
     toward the advancing side, sin psi, to dY/dy; it passes through the shaft. With
     ``pk[PK_INPLANE]`` = 1 the blades' in-plane airspeed, and so u_R, includes the skewed
-    wake's in-plane induced velocity at v, as in ``_residual``.
+    wake's in-plane induced velocity at v, as in ``_residual``. ``kd`` > 0 (:func:`delay_factor`,
+    uniform inflow): each node and its mirror node through the delayed element, as ``_residual``.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
@@ -510,7 +536,16 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     if not axial and pk[PK_INPLANE] != 0.0:
         Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)
     kr = 0.0 if axial else pk[PK_RADIAL_DRAG] * Vs  # the radial flow's drag: u_R = kr cos psi
-    if gx == 0.0 and gy == 0.0:
+    if gx == 0.0 and gy == 0.0 and kd != 0.0 and not axial and model == CAMBERED:
+        for k in range(naz):  # the node and its mirror (the rolling moment's and drag's sin psi is theirs alike)
+            UT = Om * y - u + Vs * sinpsi[k]
+            qT, qH, cdpU = _element_cambered_dp(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2], pk[3],
+                                                pk[4], pk[5], pk[6], pk[7], kd, Vs * cospsi[k])
+            aT += qT
+            aD += qH * sinpsi[k] + kr * cdpU * cospsi[k] * cospsi[k]
+            aQ += qH
+            aR += qT * sinpsi[k]
+    elif gx == 0.0 and gy == 0.0:
         for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
             UT = Om * y - u + Vs * sinpsi[k]
             qT, qH = _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk)

@@ -11,7 +11,7 @@ import numba
 import numpy as np
 
 from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _inflow_gradients, _swirl_step,
-                       _swirl_target, annulus_loads, solve_annuli)
+                       _swirl_target, annulus_loads, delay_factor, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import (INFLOW_UNIFORM, NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y,
@@ -33,6 +33,7 @@ def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, az
     _annulus.solve_annuli."""
     y = nodes[NODE_Y]
     cfac = nodes[NODE_CFAC]
+    cy2 = nodes[NODE_CY2]
     nr = y.shape[0]
     all_done = True
     for j in range(nr):
@@ -40,7 +41,7 @@ def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, az
             continue
         t, _, q, _, _, _ = annulus_loads(v[j], y[j], Om, us[j], Vs, Vc, (blade[0, j], blade[1, j], blade[2, j]),
                                          (sect[0, j], sect[1, j], sect[2, j], sect[3, j]), cfac[j], azim, grad[0, j],
-                                         grad[1, j], naz, model, pk, axial)
+                                         grad[1, j], naz, model, pk, axial, delay_factor(pk, Om, y[j], cy2[j]))
         tol = SWIRL_TOL * Om * y[j]
         lim = SWIRL_LIMIT * Om * y[j]
         u = us[j]
@@ -235,7 +236,8 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
             nv += 1
         t, d, q, rm, yf, pm = annulus_loads(v[j], y[j], Om[i], us[j], Vs[i], Vc[i],
                                             (blade[0, j], blade[1, j], blade[2, j]), (s0[j], s1[j], s2[j], s3[j]),
-                                            cfac[j], azim, gx[j], gy[j], naz, model, pk, axial)
+                                            cfac[j], azim, gx[j], gy[j], naz, model, pk, axial,
+                                            delay_factor(pk, Om[i], y[j], cy2[j]))
         if radial:
             rad[1, i, j] = t
             rad[2, i, j] = d

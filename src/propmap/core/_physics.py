@@ -56,7 +56,10 @@ CAMBERED = 2
 # :func:`inplane_induction`), which the residual and the loads add to the blades' in-plane airspeed
 PK_RADIAL_DRAG = 8
 PK_INPLANE = 9
-N_PK = 10
+# and at PK_DYNSTALL Gormont's factor gamma of the quasi-steady dynamic stall (RotorOptions.dynamic_stall, 0: off;
+# the cambered model in a uniform inflow only), which the residual and the loads pass to the delayed element
+PK_DYNSTALL = 10
+N_PK = 11
 #: rows of the blade's node array (core/nodes._Nodes.rows, shape (N_NODE_ROWS, n_radial)), per annulus:
 #: its radius y [m] and quadrature weight [m], the blade angle [rad] and its sine and cosine, the
 #: section constant, (c/y)^2, the blade and momentum factors N_b rho c / 2 [kg/m^2] and 4 pi rho y
@@ -178,6 +181,54 @@ def make_cambered_element(atan2, exp_sat, profile=False):
     return element_cambered
 
 
+def make_delayed_cambered_element(atan2, exp_sat, profile=False):
+    """Return the cambered element with Gormont's quasi-steady dynamic stall, node and mirror
+    node together (RotorOptions.dynamic_stall; docs/models.md, Dynamic stall).
+
+    Gormont (R. E. Gormont, "A Mathematical Model of Unsteady Aerodynamics and Radial Flow for
+    Application to Helicopter Rotors", USAAMRDL TR 72-67, 1973; J. G. Leishman, Principles of
+    Helicopter Aerodynamics, 2nd ed., 2006, Ch. 9) reads the static polar at
+    alpha - gamma K1 sqrt(|c alpha_dot / (2 U)|) sign(alpha_dot), K1 = 1 while alpha rises and
+    -1/2 while it falls. propmap shifts the stall blend's positive stall angle by that delay
+    (the attached lift is unchanged). With a uniform inflow the nodes psi and pi - psi see the
+    same U_T and U_P, and alpha_dot = Omega U_P (dU_T/dpsi) / U^2 = Omega U_P V_b cos(psi) / U^2
+    of opposite signs: rising at one, falling at the other. The element returns their mean:
+    C_L and C_D are linear in the blend s, so that is the element with the mean of the two
+    blends, s = 1 - (1/(1+p+) + 1/(1+p-)) / (2 (1+q)), p+- = exp(M (ae - g a_pos -+ K d)), K = 1
+    and -1/2, d = kd sqrt(|U_P vcos| / U^3) with kd = gamma sqrt(c Omega / 2) (per annulus) and
+    vcos = V_b cos(psi) (per node). d = 0 gives the static element exactly. With ``profile`` it
+    returns a third value, C_D,p U with the mean blend (the radial flow's drag, as
+    :func:`make_cambered_element`).
+    """
+
+    def element_cambered_delayed(UT, UP, theta, sin_th, cos_th, a, cdf, g, dal0, alpha_L0, cd90, cd_min, cd2,
+                                 cl_cdmin, M, a_stall_pos, a_stall_neg, kd, vcos):
+        """The delayed element's mean over a node and its mirror: ``kd`` = gamma sqrt(c Omega / 2)
+        [m/s^0.5... : sqrt(m rad/s)] per annulus, ``vcos`` = V_b cos psi [m/s] per node; the rest
+        as the cambered element. Returns (qT, qH) [m^2/s^2]."""
+        U = np.sqrt(UT * UT + UP * UP + 1e-300)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
+        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        d = kd * np.sqrt(np.abs(UP * vcos) / (U * U * U))
+        x = ae - g * a_stall_pos
+        p_rise = exp_sat(M * (x - d))
+        p_fall = exp_sat(M * (x + 0.5 * d))
+        q = exp_sat(-M * (ae - g * a_stall_neg))
+        s = 1.0 - 0.5 * (1.0 / (1.0 + p_rise) + 1.0 / (1.0 + p_fall)) / (1.0 + q)
+        cl_att = a * ae
+        dcl = cl_att - cl_cdmin
+        CL = (1.0 - s) * cl_att + s * cd90 * sin_a * cos_a
+        cdp = cdf * (cd_min + (1.0 - s) * cd2 * dcl * dcl)
+        CD = cdp + s * cd90 * sin_a * sin_a
+        if profile:
+            return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT), cdp * U
+        return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT)
+
+    return element_cambered_delayed
+
+
 def make_profile_drag(atan2, exp_sat):
     """Return the profile (attached-flow) drag coefficient of either element, using the given
     arctangent and saturated exp: the part of C_D that the radial flow's drag scales
@@ -208,6 +259,8 @@ def make_profile_drag(atan2, exp_sat):
 
 element_gill = make_element(np.arctan2, exp_sat_numpy)
 element_cambered = make_cambered_element(np.arctan2, exp_sat_numpy)
+element_cambered_delayed = make_delayed_cambered_element(np.arctan2, exp_sat_numpy)
+element_cambered_delayed_p = make_delayed_cambered_element(np.arctan2, exp_sat_numpy, profile=True)
 profile_cd = make_profile_drag(np.arctan2, exp_sat_numpy)
 
 

@@ -12,9 +12,10 @@ from __future__ import annotations
 import numpy as np
 
 from . import _annulus as K
-from ._physics import (CAMBERED, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL,
-                       cambered_annulus, element, inplane_induction_numpy, loss_factor_numpy, momentum_scale,
-                       momentum_thrust, profile_cd, swirl_step, swirl_target)
+from ._physics import (CAMBERED, PK_DYNSTALL, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER,
+                       SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element, element_cambered_delayed_p,
+                       inplane_induction_numpy, loss_factor_numpy, momentum_scale, momentum_thrust, profile_cd,
+                       swirl_step, swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
@@ -92,8 +93,22 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     wy = om1[:, None] * nodes.y[None, :] - (0.0 if u is None else u)
     lossy = bool(np.any(nodes.ct >= 0) or np.any(nodes.ch >= 0))
 
+    # Gormont's dynamic stall (RotorOptions.dynamic_stall): kd = gamma sqrt(c Omega / 2) per point and annulus, the
+    # node and its mirror node through the delayed element (_physics.make_delayed_cambered_element)
+    kd = (pk[PK_DYNSTALL] * np.sqrt(0.5 * nodes.y * np.sqrt(nodes.cy2) * om1[:, None]) * (Vs2 != 0))[..., None]
+    delayed = model == CAMBERED and pk[PK_DYNSTALL] != 0.0
+
+    def elem(UTv, UPv, Vb, profile=True):
+        """(qT, qH, C_D,p U or None) of the nodes; Vb the blades' in-plane airspeed (n, nr, 1)."""
+        if delayed:
+            return element_cambered_delayed_p(UTv, UPv, *geo, *pk[:8], kd, Vb * cospsi)
+        qT, qH = element(UTv, UPv, *geo, *pars)
+        return qT, qH, (profile_cd(UTv, UPv, *geo[:1], *geo[3:], model, pk) * np.sqrt(UTv**2 + UPv**2)
+                        if profile else None)
+
     def F(v):  # v shape (n, nr)
-        qT, _ = element(blade_ut(v) if ux else UT, (Vc2 + v)[:, :, None], *geo, *pars)
+        Vb = (Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2)[:, :, None]) if delayed else Vs3
+        qT = elem(blade_ut(v) if ux else UT, (Vc2 + v)[:, :, None], Vb, profile=False)[0]
         mom = momentum_thrust(v, mfac, Vs2, Vc2)
         if lossy:
             mom = mom * loss_factor_numpy(Vc2 + v, wy, nodes.ct[None, :], nodes.ch[None, :])
@@ -153,13 +168,11 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
         v = np.where(F0 == 0, 0.0, b)
         Vb = Vs3 + ux * inplane_induction_numpy(v, Vs2, Vc2)[:, :, None]  # the blades' in-plane airspeed
         UT = wy3 + Vb * sinpsi
-        qT, qH = element(UT, (Vc2 + v)[:, :, None], *geo, *pars)
+        qT, qH, cdpU = elem(UT, (Vc2 + v)[:, :, None], Vb)
     axial = (np.asarray(Vs) == 0)[:, None]
     dT = cfac * qT.mean(axis=2)
-    UPv = (Vc2 + v)[:, :, None]
     with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus.annulus_loads)
-        radial = (pk[PK_RADIAL_DRAG] * profile_cd(UT, UPv, *geo[:1], *geo[3:], model, pk) * np.sqrt(UT**2 + UPv**2)
-                  * Vb * cospsi**2)
+        radial = pk[PK_RADIAL_DRAG] * cdpU * Vb * cospsi**2
     dD = np.where(axial, 0.0, cfac * (qH * sinpsi + radial).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)
     w = nodes.w

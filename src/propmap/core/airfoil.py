@@ -49,6 +49,7 @@ INFLOW_MODELS = ("uniform", "drees", "pitt-peters")
 DESCENT_MODELS = ("glauert", "empirical")
 #: valid ranges of the rotor options (SI)
 FLAP_COMPLIANCE_MAX = 1e3  # [rad/(N m)]
+DYNAMIC_STALL_MAX = 5.0  # Gormont's gamma [-]
 COLLECTIVE_MAX = math.radians(30.0)  # [rad]
 
 
@@ -132,6 +133,15 @@ class RotorOptions:
         against the wind tunnel's in-plane force, the flight logs and fits at incidence).
         False: momentum theory's inflow, normal to the disk, the default of the paper's section
         model, which stays exactly the paper's.
+    dynamic_stall : float
+        Gormont's factor gamma [-], in [0, 5], of the quasi-steady dynamic stall in edgewise
+        flow (R. E. Gormont, USAAMRDL TR 72-67, 1973; J. G. Leishman, Principles of Helicopter
+        Aerodynamics, 2nd ed., 2006, Ch. 9): the positive stall angle is delayed by
+        gamma sqrt(c |alpha_dot| / (2 U)) where the angle of attack rises once a revolution
+        and advanced by half that where it falls (_physics.make_delayed_cambered_element);
+        1.4 - 6 (0.06 - t/c) for the lift of a section of thickness t/c, about 1.5 at 8%.
+        Axial flow is unchanged (alpha_dot = 0). The cambered model in a uniform inflow only;
+        no implicit derivatives (the fits difference the solver). 0 (default): the static polar.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -145,7 +155,8 @@ class RotorOptions:
     ------
     ValueError
         An unknown inflow or descent model, a value outside its range, an ``air`` that is
-        not an :class:`Air` or a ``label`` that is not text (the message names it).
+        not an :class:`Air` or a ``label`` that is not text (the message names it), a
+        ``dynamic_stall`` with the paper's section model or a linear inflow.
     """
 
     inflow: str = "uniform"
@@ -155,6 +166,7 @@ class RotorOptions:
     swirl: bool = False
     radial_drag: bool = True
     inplane_induction: bool = True
+    dynamic_stall: float = 0.0
     air: Air = field(default_factory=Air)
     label: str = field(default="", compare=False)
 
@@ -171,6 +183,15 @@ class RotorOptions:
                            _check_finite("flap_compliance", self.flap_compliance, low=0.0, high=FLAP_COMPLIANCE_MAX))
         object.__setattr__(self, "collective", _check_finite("collective", self.collective, low=-COLLECTIVE_MAX,
                                                              high=COLLECTIVE_MAX))
+        object.__setattr__(self, "dynamic_stall", _check_finite("dynamic_stall", self.dynamic_stall, low=0.0,
+                                                                high=DYNAMIC_STALL_MAX))
+        if self.dynamic_stall > 0.0:
+            if not isinstance(self, CamberedParams):
+                raise ValueError("dynamic_stall applies to the cambered section model (CamberedParams); the paper's "
+                                 "model has its own stall")
+            if self.inflow != "uniform":
+                raise ValueError(f"dynamic_stall needs the uniform inflow, got inflow={self.inflow!r} (a linear "
+                                 "inflow's angle of attack varies around the azimuth otherwise: not modelled)")
 
 
 @dataclass(frozen=True)
@@ -451,6 +472,7 @@ def _model_constants(params: SectionParams) -> tuple[int, np.ndarray]:
     pk = np.zeros(ph.N_PK)
     pk[ph.PK_RADIAL_DRAG] = 1.0 if params.radial_drag else 0.0
     pk[ph.PK_INPLANE] = 1.0 if params.inplane_induction else 0.0
+    pk[ph.PK_DYNSTALL] = params.dynamic_stall
     if isinstance(params, CamberedParams):
         p = params
         pk[:8] = (p.alpha_L0, p.cd90, p.cd_min, p.cd2, p.cl_cdmin, p.M, p.cl_max / p.cl_alpha,

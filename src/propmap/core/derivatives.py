@@ -53,7 +53,11 @@ def differentiable(params: SectionParams, names) -> bool:
         (differentiated through the flapping, core/flapping.py, for rigid and flapping blades
         alike); every inflow model, with or without swirl, has them (since 2026-11-26 a linear
         inflow with swirl too); the rotation rates' range is the caller's to check (>= 0.1 rad/s).
+        False for every name with the dynamic stall (RotorOptions.dynamic_stall > 0), whose
+        delayed element has no partials.
     """
+    if getattr(params, "dynamic_stall", 0.0) > 0.0:
+        return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
                or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
@@ -64,6 +68,9 @@ def _derivative_inputs(derivatives, params) -> tuple:
     (() for none)."""
     if derivatives is False or derivatives is None:
         return ()
+    if getattr(params, "dynamic_stall", 0.0) > 0.0:
+        raise ValueError("derivatives: not implemented with the dynamic stall (dynamic_stall > 0: its delayed "
+                         "element has no partials); difference the solver, or set dynamic_stall to 0")
     if derivatives is True:
         wrt = DERIVATIVE_INPUTS[:3]
     else:
@@ -86,7 +93,7 @@ def _derivative_inputs(derivatives, params) -> tuple:
 #: that every other numeric field leaves the nodes unchanged)
 NODE_FIELDS = ("collective", "re_ref", "cp_blasius", "tip_loss", "hub_loss")
 #: fields that enter neither the element's nor the annulus' constants: refused as derivatives
-NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance")
+NOT_CONSTANTS = (*NODE_FIELDS, "flap_compliance", "dynamic_stall")
 #: a section parameter's step is _sensitivity.ONE_SIDED of max(|value|, PARAM_FLOOR)
 PARAM_FLOOR = 0.01
 

@@ -55,6 +55,8 @@ that names every key taken from the generic set)::
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
     radial_drag = false       # the radial flow's drag in edgewise flow (in-plane force; not in the paper)
     inplane_induction = false # the skewed wake's in-plane induced velocity (edgewise flow; not in the paper)
+    dynamic_stall = 0.0       # Gormont's gamma of the cambered model's dynamic stall (about 1.5; 0 = off,
+                              # also where the key is absent; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
 ``section = "naca0015"`` takes every key of that section preset (:func:`propmap.io.param_sets.section_preset`;
@@ -318,15 +320,19 @@ def set_coverage(label: str) -> dict | None:
     return coverage(label)
 
 
+#: rotor options a file without the key has off, silently (they came later than the files written before them)
+OFF_WHEN_ABSENT = ("dynamic_stall",)
+
+
 def _generic_fill(data: dict, keys: dict, where: str) -> dict:
     """The generic set's values (field name -> value) of the cambered keys ``data`` lacks,
-    and a warning naming them."""
+    and a warning naming them (OFF_WHEN_ABSENT: left at the record's default, 0, unnamed)."""
     import warnings
 
     from .calibration import generic_params
 
     g = generic_params()
-    missing = [k for k in keys if k not in data]
+    missing = [k for k in keys if k not in data and k not in OFF_WHEN_ABSENT]
     if missing:
         given = sorted(k for k in data if k in keys or k in AIR_KEYS)
         warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
