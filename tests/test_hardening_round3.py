@@ -417,3 +417,11 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     np.testing.assert_array_equal(w2.force, w.force)
     with pytest.raises(ValueError, match="omega"):
         rm.loads(True, 3.0, 1.0)
+
+
+def test_a_map_that_misses_the_targets_says_so(tmp_path, capsys):
+    """One propeller's map with a coarse grid: its own check misses the targets (34% of static
+    thrust, an audit's 5 x 6 x 7 grid), which only `map --check` and `map --all` said."""
+    code, out, err = run(capsys, "map", "apce_8x6", "--rpm", "2000:12000:5", "--airspeed", "0:25:6",
+                         "--incidence-deg", "0:180:7", "--check-points", "200", "--out", tmp_path / "m.nc")
+    assert code == 0 and "the map misses the targets at its check points" in err and "thrust" in err

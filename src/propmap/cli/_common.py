@@ -606,10 +606,11 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
     if "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"]:
         axial = cov["incidence_deg_max"] == 0
+        descent = ("; beyond 90 deg the rotor descends, beyond the climb data: the momentum of rotors in descent, "
+                   "docs/models.md" if incidence_deg > 90 else "")
         warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
              + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
-                "gill2019 cases)"
-                if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
+                f"gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
     if rpm is not None and ("rpm_min" in cov or "rpm_max" in cov):
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
         low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)

@@ -444,6 +444,15 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
                       else "a C header linear unless --c-interpolation cubic)"))
     if "per_prop_json" in a:  # a map over several propellers: which of them miss the targets on the shared grid
         click.echo(_catalogue_summary(a["per_prop_json"]))
+    elif "check_points" in a:  # one propeller's map: the same targets, said as a warning where they are missed
+        limits = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
+        over = {k: 100 * float(a[f"check_cubic_{k}_max"]) for k in limits
+                if 100 * float(a[f"check_cubic_{k}_max"]) > limits[k]}
+        if over:
+            said = ", ".join(f"{k} {v:.1f}%" for k, v in over.items())
+            warn(f"the map misses the targets at its check points (cubic, outside flagged regions: 1% of static "
+                 f"thrust and torque, 2% of the largest drag): {said} (the table above; refine the axes where "
+                 "it matters, and `map --check FILE` measures again at fresh points)")
     if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the map's against it
         click.echo(f"the model against measurements ({a.get('params_label', '')}): axial: "
                    f"{a['model_uncertainty_axial']}; off-axis: {a['model_uncertainty_off_axis']}")
