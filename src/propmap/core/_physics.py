@@ -217,6 +217,8 @@ def make_delayed_cambered_element(atan2, exp_sat, profile=False):
         p_fall = exp_sat(M * (x + 0.5 * d))
         q = exp_sat(-M * (ae - g * a_stall_neg))
         s = 1.0 - 0.5 * (1.0 / (1.0 + p_rise) + 1.0 / (1.0 + p_fall)) / (1.0 + q)
+        # from here the cambered element's own lines, with the mean blend (repeated, not shared: a helper
+        # injected into both factories would change every call of the kernel's hot element)
         cl_att = a * ae
         dcl = cl_att - cl_cdmin
         CL = (1.0 - s) * cl_att + s * cd90 * sin_a * cos_a
