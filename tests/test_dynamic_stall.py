@@ -97,3 +97,54 @@ def test_the_parameter_file_carries_it_and_an_older_file_has_it_off(tmp_path, re
     old = pm.read_params(tmp_path / "old.toml")
     assert old.dynamic_stall == 0.0
     assert not any("dynamic_stall" in str(w.message) for w in recwarn)  # off where absent, unnamed
+
+
+@pytest.mark.parametrize("rpm, mu, incidence_deg", [(6000, 0.2, 90.0), (6000, 0.1, 60.0), (4000, 0.3, 120.0)])
+def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_deg):
+    """The kernel's loads with the dynamic stall against the static element evaluated on the full
+    circle of azimuth nodes at the kernel's own inflow, each node's stall angle moved by
+    +d where alpha_dot = Omega U_P V_b cos(psi) / U^2 > 0 and -d/2 where it is < 0 (Gormont's
+    K1), d bounded at DELAY_MAX: thrust, torque, rolling moment, and the pitching moment and side
+    force that the rising and falling halves make (reported as 0 in a first version: a review,
+    2026-11-26). The descent case (120 deg) has U_P < 0 on most annuli, which turns the halves."""
+    from propmap.core._physics import (CAMBERED, DELAY_MAX, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus,
+                                       exp_sat_numpy, inplane_induction_numpy, make_cambered_element)
+    from propmap.core.airfoil import _model_constants
+    from propmap.core.nodes import _cambered_args, _nodes
+
+    prop, p = apce8x6
+    p = p.replace(dynamic_stall=1.5, descent="glauert")
+    om = rpm * RPM
+    V, inc = mu * om * prop.radius, math.radians(incidence_deg)
+    r = pm.rotor_loads(prop, p, om, V, inc, radial=True)
+    model, pk = _model_constants(p)
+    assert model == CAMBERED
+    nd = _nodes(prop, r.r.size, 16, p.air, p)
+    y, v = nd.y, np.asarray(r.v_i)
+    Vs, Vc = V * math.sin(inc), V * math.cos(inc)
+    cam = _cambered_args(p, p.air)
+    s0, s1, s2, s3 = cambered_annulus((om * y) ** 2 + 0.5 * Vs**2 + Vc**2, nd.sc, nd.cy2, cam[4], cam[0], cam[1], cam[2],
+                                      cam[3] != 0.0, cam[5], cam[6], cam[7])
+    sp, cp = nd.sinpsi[None, :], nd.cospsi[None, :]  # the full circle
+    Vb = (Vs + pk[PK_INPLANE] * inplane_induction_numpy(v, Vs, Vc))[:, None]
+    UT, UP = om * y[:, None] + Vb * sp, (Vc + v)[:, None] + 0.0 * sp
+    U = np.hypot(UT, UP)
+    adot = om * UP * Vb * cp / U**2
+    d = np.minimum(1.5 * np.sqrt(y[:, None] * np.sqrt(nd.cy2)[:, None] * np.abs(adot) / (2 * U)), DELAY_MAX)
+    shift = np.where(adot >= 0, d, -0.5 * d)
+    element = make_cambered_element(np.arctan2, exp_sat_numpy, profile=True)
+    geo = (nd.theta[:, None], nd.sin_th[:, None], nd.cos_th[:, None], s0[:, None], s1[:, None], s2[:, None],
+           s3[:, None])
+    qT, qH, cdpU = element(UT, UP, *geo, *pk[:6], pk[6] + shift / s2[:, None], pk[7])
+    w, cf = nd.w, nd.cfac
+    radial = pk[PK_RADIAL_DRAG] * cdpU * Vb * cp  # the radial flow's drag u_R = V_b cos psi (_annulus.annulus_loads)
+    full = {"thrust": np.sum(w * cf * qT.mean(1)), "torque": np.sum(w * y * cf * qH.mean(1)),
+            "rolling_moment": np.sum(w * y * cf * (qT * sp).mean(1)),
+            "pitching_moment": np.sum(w * y * cf * (-qT * cp).mean(1)),
+            "side_force": np.sum(w * cf * (-qH * cp + radial * sp).mean(1)),
+            "drag": np.sum(w * cf * (qH * sp + radial * cp).mean(1))}
+    T0 = float(r.thrust)
+    for q, x in full.items():
+        scale = T0 if q in ("thrust", "drag", "side_force") else T0 * prop.radius
+        assert float(getattr(r, q)) == pytest.approx(x, abs=2e-6 * scale), q
+    assert abs(full["pitching_moment"]) > 0.05 * abs(full["rolling_moment"])  # the halves differ

@@ -417,6 +417,8 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     np.testing.assert_array_equal(w2.force, w.force)
     with pytest.raises(ValueError, match="omega"):
         rm.loads(True, 3.0, 1.0)
+    with pytest.raises(ValueError, match="omega"):  # an int beyond a float's range: the array path's ValueError
+        rm.loads(10**400, 3.0, 1.0)
 
 
 def test_a_map_that_misses_the_targets_says_so(tmp_path, capsys):

@@ -55,7 +55,10 @@ def _plain(x):
     if type(x) is float:
         return x
     if isinstance(x, (int, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_)):
-        return float(x)
+        try:
+            return float(x)
+        except OverflowError:  # an int beyond a float's range: the array path says what is wrong
+            return None
     return None
 
 

@@ -77,9 +77,10 @@ _profile_cd = _jit_inline(make_profile_drag(_atan2, _exp_sat))
 # the elements with their profile drag C_D,p U as a third value (the implicit derivatives' radial drag)
 _element_gill_p = _jit_inline(make_element(_atan2, _exp_sat, profile=True))
 _element_cambered_p = _jit_inline(make_cambered_element(_atan2, _exp_sat, profile=True))
-# the cambered element with Gormont's dynamic stall, a node and its mirror node (RotorOptions.dynamic_stall)
+# the cambered element with Gormont's dynamic stall, a node and its mirror node (RotorOptions.dynamic_stall): their
+# means, and (the loads') half their differences too
 _element_cambered_d = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat))
-_element_cambered_dp = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat, profile=True))
+_element_cambered_dh = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat, halves=True))
 _prandtl = _jit_inline(make_prandtl(_atan2, _exp_sat))
 _loss_factor = _jit_inline(make_loss_factor(_prandtl))
 _inverse_sin_phi = _jit_inline(inverse_sin_phi)
@@ -106,8 +107,9 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def delay_factor(pk, Om, y, cy2):
-    """Gormont's kd = gamma sqrt(c Omega / 2) of an annulus of radius y [m] and (c/y)^2 ``cy2`` at
-    Omega [rad/s] (0 without RotorOptions.dynamic_stall): the delayed element's per-annulus factor."""
+    """Gormont's kd = gamma sqrt(c Omega / 2) [m^0.5 s^-0.5] of an annulus of radius y [m] and
+    (c/y)^2 ``cy2`` at Omega [rad/s] (0 without RotorOptions.dynamic_stall): the delayed
+    element's per-annulus factor (_physics.make_delayed_cambered_element)."""
     if pk[PK_DYNSTALL] == 0.0:
         return 0.0
     return pk[PK_DYNSTALL] * np.sqrt(0.5 * y * np.sqrt(cy2) * Om)
@@ -146,8 +148,8 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
         if model == CAMBERED and kd != 0.0 and Vs != 0.0:
             a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
             for k in range(naz):
-                qT, _ = _element_cambered_d(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
-                                            a0, a1, a2, a3, a4, a5, a6, a7, kd, Vs * cospsi[k])
+                qT, _, _ = _element_cambered_d(wy + Vs * sinpsi[k], UP, th, sth, cth, s0, s1, s2, s3,
+                                               a0, a1, a2, a3, a4, a5, a6, a7, kd, Vs * cospsi[k])
                 acc += qT
         elif model == CAMBERED:
             a0, a1, a2, a3, a4, a5, a6, a7 = pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7]
@@ -511,8 +513,9 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     y <dT(psi) sin psi>, positive when the advancing side (psi = 90 deg) carries more.
     dY/dy, the side force toward the advancing side, -<dH(psi) cos psi>, and dM_P/dy,
     the pitching moment density -y <dT(psi) cos psi> (positive when the upstream half,
-    psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and are only
-    accumulated with a linear one (gx or gy non-zero, full-circle nodes).
+    psi = 180 deg, carries more), are zero by symmetry with a uniform inflow and the static
+    polar and are only accumulated with a linear one (gx or gy non-zero, full-circle nodes) or
+    with the dynamic stall (``kd``), whose rising and falling halves differ.
 
     With ``pk[PK_RADIAL_DRAG]`` = 1 (airfoil.RotorOptions.radial_drag) the radial flow's drag
     C_D,p U u_R (u_R = V sin beta cos psi, per unit 0.5 rho c; C_D,p the profile drag,
@@ -537,14 +540,20 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
         Vs = Vs + pk[PK_INPLANE] * _inplane_induction(v, Vs, Vc)
     kr = 0.0 if axial else pk[PK_RADIAL_DRAG] * Vs  # the radial flow's drag: u_R = kr cos psi
     if gx == 0.0 and gy == 0.0 and kd != 0.0 and not axial and model == CAMBERED:
-        for k in range(naz):  # the node and its mirror (the rolling moment's and drag's sin psi is theirs alike)
+        # each half-circle node (cos psi > 0) with its mirror pi - psi: the same sin psi, U_T and U_P, the opposite
+        # cos psi and alpha_dot; the node rises where U_P V_b > 0 (sg), so node - mirror = sg (rise - fall), which
+        # gives the fore-aft terms (the pitching moment, the side force) the static polar's symmetry makes zero
+        sg = 1.0 if UP * Vs >= 0.0 else -1.0
+        for k in range(naz):
             UT = Om * y - u + Vs * sinpsi[k]
-            qT, qH, cdpU = _element_cambered_dp(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2], pk[3],
-                                                pk[4], pk[5], pk[6], pk[7], kd, Vs * cospsi[k])
+            qT, qH, cdpU, hT, hH, hC = _element_cambered_dh(UT, UP, th, sth, cth, s0, s1, s2, s3, pk[0], pk[1], pk[2],
+                                                            pk[3], pk[4], pk[5], pk[6], pk[7], kd, Vs * cospsi[k])
             aT += qT
             aD += qH * sinpsi[k] + kr * cdpU * cospsi[k] * cospsi[k]
             aQ += qH
             aR += qT * sinpsi[k]
+            aP -= sg * hT * cospsi[k]
+            aY += sg * (kr * hC * sinpsi[k] - hH) * cospsi[k]
     elif gx == 0.0 and gy == 0.0:
         for k in range(naz):  # once per annulus: the model branch inside the loop costs little here
             UT = Om * y - u + Vs * sinpsi[k]

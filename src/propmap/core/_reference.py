@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _annulus as K
 from ._physics import (CAMBERED, PK_DYNSTALL, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER,
-                       SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element, element_cambered_delayed_p,
+                       SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element, element_cambered_delayed,
                        inplane_induction_numpy, loss_factor_numpy, momentum_scale, momentum_thrust, profile_cd,
                        swirl_step, swirl_target)
 
@@ -101,7 +101,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     def elem(UTv, UPv, Vb, profile=True):
         """(qT, qH, C_D,p U or None) of the nodes; Vb the blades' in-plane airspeed (n, nr, 1)."""
         if delayed:
-            return element_cambered_delayed_p(UTv, UPv, *geo, *pk[:8], kd, Vb * cospsi)
+            return element_cambered_delayed(UTv, UPv, *geo, *pk[:8], kd, Vb * cospsi)
         qT, qH = element(UTv, UPv, *geo, *pars)
         return qT, qH, (profile_cd(UTv, UPv, *geo[:1], *geo[3:], model, pk) * np.sqrt(UTv**2 + UPv**2)
                         if profile else None)

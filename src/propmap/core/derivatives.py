@@ -121,6 +121,9 @@ def _parameter_constants(names, params, air):
     for k, name in enumerate(names):
         if name == COMPLIANCE:  # enters neither pk nor cam: rotor_loads differentiates the flapping itself
             raise ValueError("flap_compliance is not a section constant (core/flapping.flapping_derivatives)")
+        if name == "dynamic_stall":
+            raise ValueError("derivatives with respect to dynamic_stall are not supported: the delayed element has no "
+                             "partials (difference the solver)")
         if name in NOT_CONSTANTS:
             raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
                              "not the section's constants (for the blade angle, use 'collective')")

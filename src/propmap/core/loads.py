@@ -41,17 +41,20 @@ class RotorLoads:
         Computed from the same azimuth nodes as eqs 13-15. Because the inflow v_i(r) does
         not depend on azimuth (paper Section II), every integrand depends on psi through
         sin psi only: the side force and the pitching moment (the cos psi moments) are
-        zero by symmetry in this model.
+        zero by symmetry in this model (not with a linear inflow, flapping or the dynamic
+        stall, below).
     side_force : ndarray
         Y [N], in the disk plane, normal to the in-plane velocity, positive toward the
         advancing side. 0 exactly with the paper's uniform inflow and rigid blades (every
         integrand then depends on psi through sin psi only); non-zero with a linear inflow
-        model or with flapping (:class:`~propmap.core.airfoil.RotorOptions`).
+        model, with flapping or with the dynamic stall, whose angle of attack rises on one half
+        of the disk and falls on the other (:class:`~propmap.core.airfoil.RotorOptions`).
     pitching_moment : ndarray
         M_P [N m], the moment of the thrust distribution about the disk's lateral axis,
         -(N_b / 2 pi) int int r dT(r, psi) cos psi dpsi dr, positive when the upstream half
         (psi = 180 deg) carries more thrust (nose-up for a disk moving forward; the vector
-        is M_P e_ip x z_hat). 0 with the uniform inflow and rigid blades.
+        is M_P e_ip x z_hat). 0 with the uniform inflow and rigid blades, without the dynamic
+        stall.
     v_i_mean : ndarray
         Mean induced inflow over the disk [m/s] (v_i(r) weighted by the annulus area).
     flap_1c, flap_1s : ndarray

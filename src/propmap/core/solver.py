@@ -272,8 +272,9 @@ def rotor_loads(
         An input that is not a number (a string, a bool), outside its range, or of
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
-        (:data:`~propmap.core.derivatives.NODE_FIELDS`), an Omega below 0.1 rad/s, or with
-        ``"rho"`` a density too small to be stepped.
+        (:data:`~propmap.core.derivatives.NODE_FIELDS`), an Omega below 0.1 rad/s, with
+        ``"rho"`` a density too small to be stepped, or a set with the dynamic stall
+        (``dynamic_stall`` > 0: no partials; :func:`~propmap.core.derivatives.differentiable`).
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
