@@ -427,3 +427,16 @@ def test_a_map_that_misses_the_targets_says_so(tmp_path, capsys):
     code, out, err = run(capsys, "map", "apce_8x6", "--rpm", "2000:12000:5", "--airspeed", "0:25:6",
                          "--incidence-deg", "0:180:7", "--check-points", "200", "--out", tmp_path / "m.nc")
     assert code == 0 and "the map misses the targets at its check points" in err and "thrust" in err
+
+
+def test_the_power_has_a_derivative(tmp_path):
+    """An MPC's energy cost (an audit, 2026-11-26: 'power' was refused): dP/dx = Omega dQ/dx (+ Q
+    for Omega), against central differences of the solver."""
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    om, V, b = np.array([600.0, 900.0]), np.array([3.0, 8.0]), np.array([0.3, 1.0])
+    r = pm.rotor_loads(prop, p, om, V, b, derivatives=True)
+    for wrt, h in (("omega", 1e-2), ("airspeed", 1e-4), ("incidence", 1e-5)):
+        step = {"omega": (h, 0.0, 0.0), "airspeed": (0.0, h, 0.0), "incidence": (0.0, 0.0, h)}[wrt]
+        up = pm.rotor_loads(prop, p, om + step[0], V + step[1], b + step[2]).power
+        down = pm.rotor_loads(prop, p, om - step[0], V - step[1], b - step[2]).power
+        np.testing.assert_allclose(r.derivative("power", wrt), (up - down) / (2 * h), rtol=1e-5)

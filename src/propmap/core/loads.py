@@ -161,9 +161,12 @@ class RotorLoads:
 
         Parameters
         ----------
-        quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean", "side_force", "pitching_moment"}
-            The side force and pitching moment are those of flapping blades or of a linear
-            inflow model (0 for rigid blades with the uniform inflow; core/flapping.py).
+        quantity : {"thrust", "drag", "torque", "rolling_moment", "v_i_mean", "side_force", "pitching_moment", \
+"power"}
+            The side force and pitching moment are those of flapping blades, of a linear
+            inflow model or of the dynamic stall (0 for rigid blades with the uniform inflow;
+            core/flapping.py). The power P = Q Omega's by the product rule from the torque's:
+            Omega dQ/dx, plus Q for x = omega [W per unit of x].
         wrt : str
             "omega" [rad/s], "airspeed" [m/s], "incidence" [rad], "collective" [rad], "rho"
             [kg/m^3] or a section parameter's name (in its SI unit); as asked of
@@ -184,8 +187,11 @@ class RotorLoads:
         """
         if self.jacobian is None:
             raise ValueError("these loads have no derivatives: call rotor_loads(..., derivatives=True)")
+        if quantity == "power":  # P = Q Omega: an MPC's energy cost
+            dQ = self.derivative("torque", wrt)
+            return self.omega * dQ + (self.torque if wrt == "omega" else 0.0)
         if quantity not in DERIVATIVE_LOADS + FLAPPING_LOADS:
-            raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS + FLAPPING_LOADS)}, "
+            raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS + FLAPPING_LOADS + ('power',))}, "
                              f"got {quantity!r:.60}")
         if (quantity, wrt) not in self.jacobian:
             have = sorted({w for _, w in self.jacobian if not w.startswith("_")})  # not the internal ones
