@@ -131,6 +131,11 @@ def test_rates_in_fine_steps_count_by_their_span(apc8x6):
     one = LoadData(omega=drift, airspeed=V, incidence=np.zeros(12), measured={"thrust": r.thrust},
                    group=np.full(12, "run1"))
     assert _sweep_rates(one) == 1 and _data_kind(one) == "few_rates"
+    # a CSV without groups at three rates apart counts three (its rates jump by more than 3%)
+    levels = np.repeat(np.array([4000.0, 5000.0, 6000.0]) * RPM, 4)
+    three = LoadData(omega=levels, airspeed=np.tile(np.linspace(2.0, 12.0, 4), 3), incidence=np.zeros(12),
+                     measured={"thrust": np.ones(12)}, group=np.full(12, "all"))
+    assert _sweep_rates(three) == 3 and _data_kind(three) == "rates"
 
 
 def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):

@@ -346,19 +346,25 @@ def _measures_inplane_force(data: LoadData, keys) -> bool:
 
 
 def _sweep_rates(data: LoadData) -> int:
-    """Distinct rotation rates of the moving points' runs (0 for static data): each run's
-    (``group``'s) median rate, in order, counted where it lies more than 3% (RATE_STEP) above the
-    last one counted. A run is one rate whatever its spread: a UIUC sweep's rpm scatter, or a
-    sweep at one throttle whose rpm drifts as the tunnel speeds up (its Reynolds effects are
-    confounded with J); runs at rates in steps finer than 3% count by the span they cover (all
-    147 catalogue propellers count as with the neighbouring points compared, the rule before
-    2026-11-26)."""
+    """Distinct rotation rates of the moving points (0 for static data): each run (``group``)
+    split where its sorted rates jump by more than 3% (RATE_STEP), each part's median rate a
+    level, and the levels counted in order where one lies more than 3% above the last one
+    counted. A run's continuous spread is one rate (a UIUC sweep's rpm scatter; a sweep at one
+    throttle whose rpm drifts as the tunnel speeds up, its Reynolds effects confounded with J),
+    a run at several rates apart (a CSV without groups) counts each, and runs at rates in steps
+    finer than 3% count by the span they cover (all 147 catalogue propellers count as with the
+    neighbouring points compared, the rule before 2026-11-26)."""
     moving = data.airspeed > 0
     if not moving.any():
         return 0
     w, g = data.omega[moving], data.group[moving]
+    levels = []
+    for k in set(g):
+        rates = np.sort(w[g == k])
+        for part in np.split(rates, np.nonzero(rates[1:] > RATE_STEP * rates[:-1])[0] + 1):
+            levels.append(float(np.median(part)))
     n, last = 0, -math.inf
-    for rate in sorted(float(np.median(w[g == k])) for k in set(g)):
+    for rate in sorted(levels):
         if rate > RATE_STEP * last:
             n, last = n + 1, rate
     return n
