@@ -123,8 +123,9 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
     y, v = nd.y, np.asarray(r.v_i)
     Vs, Vc = V * math.sin(inc), V * math.cos(inc)
     cam = _cambered_args(p, p.air)
-    s0, s1, s2, s3 = cambered_annulus((om * y) ** 2 + 0.5 * Vs**2 + Vc**2, nd.sc, nd.cy2, cam[4], cam[0], cam[1], cam[2],
-                                      cam[3] != 0.0, cam[5], cam[6], cam[7])
+    U2 = (om * y) ** 2 + 0.5 * Vs**2 + Vc**2
+    s0, s1, s2, s3 = cambered_annulus(U2, nd.sc, nd.cy2, cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5], cam[6],
+                                      cam[7])
     sp, cp = nd.sinpsi[None, :], nd.cospsi[None, :]  # the full circle
     Vb = (Vs + pk[PK_INPLANE] * inplane_induction_numpy(v, Vs, Vc))[:, None]
     UT, UP = om * y[:, None] + Vb * sp, (Vc + v)[:, None] + 0.0 * sp

@@ -445,9 +445,7 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
     if "per_prop_json" in a:  # a map over several propellers: which of them miss the targets on the shared grid
         click.echo(_catalogue_summary(a["per_prop_json"]))
     elif "check_points" in a:  # one propeller's map: the same targets, said as a warning where they are missed
-        limits = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
-        over = {k: 100 * float(a[f"check_cubic_{k}_max"]) for k in limits
-                if 100 * float(a[f"check_cubic_{k}_max"]) > limits[k]}
+        over = _target_misses(a)
         if over:
             said = ", ".join(f"{k} {v:.1f}%" for k, v in over.items())
             warn(f"the map misses the targets at its check points (cubic, outside flagged regions: 1% of static "
@@ -464,18 +462,16 @@ def _catalogue_summary(per_prop_json: str) -> str:
     flagged regions: 1% of static thrust and torque, 2% of the largest drag) at their stored check
     points, and the worst three."""
     per_prop = json.loads(per_prop_json)
-    limits = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
-    errors = {name: {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in limits}
-              for name, attrs in per_prop.items()}
-    checked = [name for name, e in errors.items() if all(math.isfinite(v) for v in e.values())]
+    checked = [name for name, attrs in per_prop.items()
+               if all(math.isfinite(float(attrs.get(f"check_cubic_{k}_max", float("nan")))) for k in TARGETS_PCT)]
     if not checked:
         return f"the {len(per_prop)} propellers' maps were not checked against the model (--check-points 0)"
     worst = {}
     for name in checked:
-        over = {k: v for k, v in errors[name].items() if v > limits[k]}
+        over = _target_misses(per_prop[name])
         if over:
-            k = max(over, key=lambda q: over[q] / limits[q])
-            worst[name] = (over[k] / limits[k], k, over[k])
+            k = max(over, key=lambda q: over[q] / TARGETS_PCT[q])
+            worst[name] = (over[k] / TARGETS_PCT[k], k, over[k])
     if not worst:
         return (f"every one of the {len(checked)} checked propellers' maps meets the targets (cubic, outside flagged "
                 "regions: 1% of static thrust and torque, 2% of the largest drag) at its check points")
@@ -490,6 +486,17 @@ def _catalogue_summary(per_prop_json: str) -> str:
 #: the default pass threshold of --check: 1% of static thrust and torque, 2% of the largest drag
 #: (the map targets of docs/simulators.md), cubic interpolation outside flagged regions
 CHECK_MAX_ERROR_PCT = 1.0
+#: the map targets per load [% of static thrust, torque; of the largest drag]
+TARGETS_PCT = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
+
+
+def _target_misses(attrs: dict) -> dict:
+    """The loads whose stored cubic check maximum (outside flagged regions) exceeds its target
+    (TARGETS_PCT): load -> error [%]; a load not checked (absent or NaN) is not a miss."""
+    errors = {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in TARGETS_PCT}
+    return {k: v for k, v in errors.items() if v > TARGETS_PCT[k]}
+
+
 #: exit code of a --check whose errors exceed the threshold (0 passes; 2 is bad input)
 CHECK_FAILED = 3
 
