@@ -265,17 +265,35 @@ def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover
     return still & (np.abs(f - g) < 0.2 * g) & (rms < GROUND_FRACTION * reference)
 
 
-def _hover_speed(vehicle: Vehicle) -> float:
-    """The generic set's hover speed of the vehicle [rad/s] (24 x 8 nodes, a few ms), 0 where it
-    has none (its propellers cannot carry it, or the solve fails)."""
-    from ..core.solver import Discretization, SolverError
-    from ..io.calibration import generic_params
-    from ..vehicle import hover_omega
+#: the rotor speeds [rad/s] at which _hover_speed evaluates the static thrust, one batch (steps of 16%)
+HOVER_GRID = np.geomspace(10.0, 1e5, 64)
 
+
+def _hover_speed(vehicle: Vehicle) -> float:
+    """The generic set's hover speed of the vehicle [rad/s], every rotor at one speed: sum_i T_i
+    (a_i . e_z) = m g (as :func:`propmap.vehicle.hover_omega`, on HOVER_GRID's 64 rates, 24 x 8
+    nodes, interpolated in log T against log Omega, within 0.1% for T ~ Omega^2). One batch of the
+    kernel the flight commands load anyway: hover_omega's root finder cost `wrench` 0.25 s of
+    start-up (SciPy's import and the scalar kernel's cache). 0 where the rotors cannot carry the
+    weight within the grid, or a solve fails."""
+    from ..core.solver import Discretization, SolverError, rotor_loads
+    from ..io.calibration import generic_params
+
+    p = generic_params()
+    lift = np.zeros(HOVER_GRID.size)
     try:
-        return float(hover_omega(vehicle, generic_params(), discretization=Discretization(24, 8)))
+        for r in vehicle.rotors:
+            up = float(r.axis[2]) / float(np.linalg.norm(r.axis))
+            if up > 0:
+                lift += up * rotor_loads(r.propeller, r.params or p, HOVER_GRID, 0.0, 0.0,
+                                         discretization=Discretization(24, 8)).thrust
     except (SolverError, ValueError, ArithmeticError):
         return 0.0
+    k = int(np.argmax(lift >= vehicle.weight)) if np.any(lift >= vehicle.weight) else 0
+    if k == 0 or not lift[k - 1] > 0:
+        return 0.0
+    t = np.log(vehicle.weight / lift[k - 1]) / np.log(lift[k] / lift[k - 1])
+    return float(np.exp(np.log(HOVER_GRID[k - 1]) + t * np.log(HOVER_GRID[k] / HOVER_GRID[k - 1])))
 
 
 def _lagged(log: FlightLog, tau: float):
