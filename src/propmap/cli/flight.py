@@ -242,7 +242,10 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
     res.extra["flight_report"] = report
-    rates = sorted({round(lg.rate_hz / max(1, round(lg.rate_hz / rate_hz)), 4) for lg in logs})  # (flight_samples')
+    # each log's samples' own rate (1 / their median step; a log left with one sample has none)
+    rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
+                    for t in (samples.t[samples.log_index == k] for k in range(len(logs))) if t.size > 1}) or [
+                        samples.rate_hz]
     rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
     text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
             f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
