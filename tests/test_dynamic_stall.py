@@ -82,9 +82,85 @@ def test_what_the_option_refuses(apce8x6):
     with pytest.raises(ValueError, match="dynamic_stall"):
         p.replace(dynamic_stall=6.0)
     ds = p.replace(dynamic_stall=1.5)
-    assert not differentiable(ds, ("omega",)) and differentiable(p, ("omega",))
-    with pytest.raises(ValueError, match="not implemented with the dynamic stall"):
-        pm.rotor_loads(prop, ds, 600.0, 5.0, 1.0, derivatives=True)
+    assert differentiable(ds, ("omega", "cl_alpha", "rho")) and not differentiable(ds, ("dynamic_stall",))
+    with pytest.raises(ValueError, match="derivatives with respect to dynamic_stall"):
+        pm.rotor_loads(prop, ds, 600.0, 5.0, 1.0, derivatives=("dynamic_stall",))
+
+
+def test_the_delayed_elements_partials_match_central_differences():
+    """core/_tangents.make_delayed_direction (the NumPy twin of the kernel's) against Richardson-
+    extrapolated central differences of the delayed element with its halves, along random
+    directions in U_T, U_P, the blade angle, ln kd and the section's and polar's constants, on
+    random states over both signs of U_T, U_P and the node's cos psi, through stall and through
+    the delay's bound; the loads it carries are the element's."""
+    from propmap.core._physics import element_cambered_delayed_h
+    from propmap.core._tangents import delayed_direction, delayed_state
+
+    rng = np.random.default_rng(3)
+    n = 2000
+    UT, UP, th = rng.uniform(-20, 120, n), rng.uniform(-30, 30, n), rng.uniform(-0.3, 0.9, n)
+    sec = (rng.uniform(3, 6, n), rng.uniform(0.5, 2, n), rng.uniform(0.5, 1.5, n), rng.uniform(-0.05, 0.05, n))
+    con = (-0.08, 1.8, 0.02, 0.05, 0.3, 12.0, 0.2, -0.15)
+    kd, vcos = rng.uniform(0.0, 3.0, n), rng.uniform(-20, 20, n)
+    dsec = tuple(rng.normal(size=(4, n)) * np.array([0.5, 0.1, 0.1, 0.01])[:, None])
+    dcon = tuple(rng.normal(size=(8, n)) * np.array([0.01, 0.1, 0.005, 0.01, 0.05, 2.0, 0.02, 0.02])[:, None])
+    speed = np.maximum(np.hypot(UT, UP), 1.0)
+    dUT, dUP, dth, dlk = rng.normal(size=(4, n)) * np.array([1.0, 1.0, 0.0, 0.0])[:, None] * speed \
+        + rng.normal(size=(4, n)) * np.array([0.0, 0.0, 1.0, 1.0])[:, None]
+
+    def f(t):
+        tt = th + t * dth
+        return np.array(element_cambered_delayed_h(UT + t * dUT, UP + t * dUP, tt, np.sin(tt), np.cos(tt),
+                                                   *(s + t * d for s, d in zip(sec, dsec)),
+                                                   *(c + t * d for c, d in zip(con, dcon)), kd * np.exp(t * dlk),
+                                                   vcos))
+    st = delayed_state(UT, UP, th, np.sin(th), np.cos(th), sec, con, kd, vcos)
+    f0 = f(0.0)
+    np.testing.assert_allclose(np.array(st[0][:6]), f0, rtol=1e-13, atol=1e-11)
+    assert 0 < np.sum(st[0][6] == 0.0) < n  # some delays at their bound (and their partials 0)
+    got = np.array(delayed_direction(st, dUT, dUP, dth, st[0][6] * dlk, dsec, dcon))
+    h = 1e-5
+    fd = (4 * (f(h / 2) - f(-h / 2)) / h - (f(h) - f(-h)) / (2 * h)) / 3
+    # of each output's largest value over the states (5.6e-8 seen: the square root of |U_P| is steep near U_P = 0)
+    assert np.max(np.abs(got - fd) / (np.abs(f0).max(axis=1, keepdims=True) + 1e-9)) < 2e-7
+
+
+@pytest.mark.parametrize("options", [{}, {"swirl": True}, {"flap_compliance": 0.5}], ids=["rigid", "swirl", "flap"])
+def test_implicit_derivatives_with_the_dynamic_stall(apce8x6, options):
+    """Issue 20's implicit derivatives with the option (core/_delayed_sensitivity.py) against
+    central differences of the solver: T, D, Q, M_R and the side force and pitching moment of the
+    rising and falling halves, with respect to omega, the airspeed, the incidence, section
+    parameters and the air density, at 6000-10000 rpm, mu 0.1-0.3, with the delay active (each
+    within 2e-6 of the point's thrust or torque per unit of the input's scale; the differences
+    carry the root tolerance over their step)."""
+    prop, p = apce8x6
+    p = p.replace(dynamic_stall=1.5, **options)
+    disc = pm.Discretization(24, 8)
+    names = ("cl_alpha", "alpha_L0", "cd_min", "M")
+    loads = ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment")
+    for rpm, mu, inc_deg in ((6000, 0.2, 80.0), (10000, 0.1, 45.0), (7000, 0.3, 100.0)):
+        om = rpm * RPM
+        V, b = mu * om * prop.radius, math.radians(inc_deg)
+        r = pm.rotor_loads(prop, p, om, V, b, discretization=disc,
+                           derivatives=("omega", "airspeed", "incidence", *names, "rho"))
+        assert abs(float(r.pitching_moment)) > 0.01 * float(r.torque)  # the halves are there
+        scale = np.array([float(r.thrust)] * 2 + [float(r.torque)] * 2 + [float(r.thrust), float(r.torque)])
+
+        def at(**kw):
+            x = {"om": om, "V": V, "b": b, "p": p} | kw
+            q = pm.rotor_loads(prop, x["p"], x["om"], x["V"], x["b"], discretization=disc)
+            return np.array([float(getattr(q, k)) for k in loads])
+        steps = {"omega": (lambda d: at(om=om + d), 1e-4 * om, om), "airspeed": (lambda d: at(V=V + d), 1e-4 * V, V),
+                 "incidence": (lambda d: at(b=b + d), 1e-4, 1.0),
+                 "rho": (lambda d: at(p=p.replace(air=pm.Air(rho=p.air.rho + d, mu=p.air.mu))), 1e-4, p.air.rho)}
+        for name in names:
+            x0 = getattr(p, name)
+            steps[name] = (lambda d, name=name, x0=x0: at(p=p.replace(**{name: x0 + d})),
+                           1e-4 * max(abs(x0), 0.01), max(abs(x0), 0.01))
+        for wrt, (f, h, sx) in steps.items():
+            fd = (f(h) - f(-h)) / (2 * h)
+            got = np.array([float(r.derivative(q, wrt)) for q in loads])
+            np.testing.assert_array_less(np.abs(got - fd) * sx / scale, 2e-6, err_msg=f"{rpm} rpm, mu {mu}, {wrt}")
 
 
 def test_the_parameter_file_carries_it_and_an_older_file_has_it_off(tmp_path, recwarn):

@@ -53,7 +53,8 @@ def test_sibling_imports_sees_both_import_forms(tmp_path):
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
     assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_fastmath.py", "_flags.py"}
-    sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py", "_tangents.py", "_swirl_sensitivity.py"}
+    sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py", "_parameter_sensitivity.py",
+                           "_delayed_sensitivity.py", "_tangents.py", "_swirl_sensitivity.py"}
     assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == sensitivity
     # every module the kernels import is in their stamp (a new kernel module must be added there)
     core = SRC / "core"
@@ -64,11 +65,14 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     assert _sibling_imports(core / "_momentum_sensitivity.py") <= names
     assert _sibling_imports(core / "_tangents.py") <= names
     assert _sibling_imports(core / "_swirl_sensitivity.py") <= names
+    assert _sibling_imports(core / "_delayed_sensitivity.py") <= sensitivity
+    assert _sibling_imports(core / "_parameter_sensitivity.py") <= sensitivity
     assert {p.name for p in _jitcache.LINEAR_SOURCES} == sensitivity | {"_linear_sensitivity.py"}
     assert _sibling_imports(core / "_linear_sensitivity.py") <= sensitivity
     # the kernels' own files are served by the stamping locators, each with its sources
     assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_flags.py", "_sensitivity.py",
-                                                          "_momentum_sensitivity.py", "_linear_sensitivity.py"}
+                                                          "_momentum_sensitivity.py", "_parameter_sensitivity.py",
+                                                          "_linear_sensitivity.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"
     a.write_text("x = 1\n")

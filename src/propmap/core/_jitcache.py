@@ -33,13 +33,14 @@ _HERE = Path(__file__).resolve().parent
 KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_fastmath.py",
                   _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
-SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py", _HERE / "_tangents.py",
+SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py",
+                       _HERE / "_parameter_sensitivity.py", _HERE / "_delayed_sensitivity.py", _HERE / "_tangents.py",
                        _HERE / "_swirl_sensitivity.py", *KERNEL_SOURCES)
 #: the files whose code the compiled sensitivity kernel of the linear inflow models contains
 LINEAR_SOURCES = (_HERE / "_linear_sensitivity.py", *SENSITIVITY_SOURCES)
 #: the cached files, each with the sources its stamp covers
 _STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in (*KERNEL_SOURCES[:2], _HERE / "_flags.py")}
-_STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:2]})
+_STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:3]})
 _STAMPED[os.path.realpath(LINEAR_SOURCES[0])] = LINEAR_SOURCES
 
 

@@ -58,20 +58,16 @@ from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, annulus_loa
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
 from ._physics import PK_INPLANE, PK_RADIAL_DRAG
+from ._parameter_sensitivity import N_STATE, _cambered_direction, _cambered_state, _direction, _stored_state
 from ._sensitivity import (
-    N_STATE,
     _airspeed_components,
-    _cambered_direction,
-    _cambered_state,
     _cambered_tangent,
     _constants_slopes,
-    _direction,
     _gill_tangent,
     _inplane_partials,
     _input_directions,
     _node_rows,
     _start_point,
-    _stored_state,
 )
 from ._sensitivity import _constants as _constants_inline
 from ._swirl_sensitivity import _swirl_solve, _swirl_system

@@ -72,27 +72,27 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat, delay_factor
+from ._delayed_sensitivity import (N_EX, add_fixed_root_halves, add_input_halves, delay_partials, delayed_node,
+                                   delayed_rows)
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
+from ._parameter_sensitivity import (N_DSTATE, N_STATE, _cambered_direction, _cambered_state, _parameter_partials,
+                                     delayed_parameter_partials)
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
-                       NODE_Y, PK_INPLANE, PK_RADIAL_DRAG)
+                       NODE_Y, PK_DYNSTALL, PK_INPLANE, PK_RADIAL_DRAG)
 from ._swirl_sensitivity import _swirl_solve, _swirl_system
 from ._tangents import _loads_tangent as _loads_tangent_py
-from ._tangents import make_cambered_direction, make_cambered_tangent, make_gill_tangent
+from ._tangents import make_cambered_tangent, make_gill_tangent
 
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 # the elements with their analytic partials in U_T, U_P, the blade angle and the section constants; the cambered
 # element's state at a node and its derivative along any direction in its constants (the section parameters', one
 # evaluation per node for all)
-_cambered_state, _cambered_direction = (_jit_inline(f) for f in make_cambered_direction(_atan2, _exp_sat,
-                                                                                          _loads_tangent))
 _cambered_tangent = _jit_inline(make_cambered_tangent(_cambered_state, _cambered_direction, _loads_tangent))
 _gill_tangent = _jit_inline(make_gill_tangent(_atan2, _exp_sat, _loads_tangent))
 
-#: the values of the cambered element's state at a node (_tangents.make_cambered_direction)
-N_STATE = 28
 #: relative step of the section parameters' and the density's one-sided differences of the
 #: annulus' and polar's constants (core/derivatives.py)
 ONE_SIDED = 1e-7
@@ -218,7 +218,7 @@ def _add_node(acc, q0, h0, r0, k, sk, base, d_t, d_p, d_u, d_c):
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, model, pk):
+def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, model, pk, dyn):
     """The inputs' partials over the nodes of one annulus, from one evaluation per node of the
     element with its analytic partial derivatives (core/_tangents.py): the base (written into
     ``q0``, ``h0``, ``r0`` for :func:`_pass`) and the derivatives with respect to U_T, U_P, the
@@ -227,12 +227,27 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
     qH sin^2), then the U_P and the U2 sums (qT, qT sin, qH, qH sin each), not divided by the
     node count; the radial drag's (C_D,p U cos^2 psi, from the same evaluations; used only with
     it): its base sum, its U_T sums (plain and sin), its U_P and its U2 sum; and the blade
-    angle's (qT, qT sin, qH, qH sin, the radial drag's).
+    angle's (qT, qT sin, qH, qH sin, the radial drag's). ``dyn`` = (cos psi of the nodes, kd, sg,
+    ex): with the dynamic stall (kd != 0, the annulus' Gormont factor; sg the sign of U_P V_b) the
+    delayed element's, and its own sums added to ``ex`` (core/_delayed_sensitivity.delayed_node).
     """
+    cospsi, kd, sg, ex = dyn
     acc = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
            0.0, 0.0)  # the 24 sums (_add_node)
     UP = Vc + v
-    if model == CAMBERED:
+    if model == CAMBERED and kd != 0.0:
+        con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
+        sec = (s[0], s[1], s[2], s[3])
+        dsec = (u[0], u[1], u[2], u[3])
+        ea = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+              0.0, 0.0, 0.0)  # its own sums (N_EX)
+        for k in range(naz):
+            ea, (base, d_t, d_p, d_u, d_c) = delayed_node(ea, Om * y + Vs * sinpsi[k], UP, th, sth, cth, sec, dsec,
+                                                          con, kd, Vs, sinpsi[k], cospsi[k], sg)
+            acc = _add_node(acc, q0, h0, r0, k, sinpsi[k], base, d_t, d_p, d_u, d_c)
+        for c in range(N_EX):  # unrolled: a tuple of floats
+            ex[c] = ea[c]
+    elif model == CAMBERED:
         con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
         sec = (s[0], s[1], s[2], s[3])
         dsec = (u[0], u[1], u[2], u[3])
@@ -249,60 +264,6 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
      rC) = acc
     return ((tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs), (rB, rT, rTs, rP, rU),
             (cT, cTs, cH, cHs, rC))
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _stored_state(stw, k):
-    """The cambered element's state at node ``k`` (a tuple of N_STATE floats) from the scratch
-    ``stw`` shape (N_STATE, >= k + 1) that :func:`_parameter_partials` fills."""
-    return (stw[0, k], stw[1, k], stw[2, k], stw[3, k], stw[4, k], stw[5, k], stw[6, k],
-            stw[7, k], stw[8, k], stw[9, k], stw[10, k], stw[11, k], stw[12, k], stw[13, k],
-            stw[14, k], stw[15, k], stw[16, k], stw[17, k], stw[18, k], stw[19, k], stw[20, k],
-            stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
-
-
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _direction(dS, dC, m):
-    """Direction ``m`` as (its section constants' change, its polar constants' change): rows m of
-    ``dS`` shape (n, 4) and ``dC`` shape (n, 8) as tuples (:func:`_parameter_partials`)."""
-    return ((dS[m, 0], dS[m, 1], dS[m, 2], dS[m, 3]),
-            (dC[m, 0], dC[m, 1], dC[m, 2], dC[m, 3], dC[m, 4], dC[m, 5], dC[m, 6], dC[m, 7]))
-
-
-@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined (compile time)
-def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, pk):
-    """The cambered element's derivatives along ``n_m`` directions over the nodes of one annulus,
-    from one evaluation per node (core/_tangents.make_cambered_direction): row m of ``dS``
-    (shape (n_m, 4)) and ``dC`` (shape (n_m, 8)) the m-th direction in the annulus' section
-    constants and in the polar's constants pk[:8] (a section parameter's or the density's step,
-    stepped value less base). Writes into row 1 + m of ``ps`` the sums qT, qT sin, qH, qH sin
-    and the radial drag's (C_D,p U cos^2 psi), not divided by the step or the node count, as
-    :func:`_pass` gives them as differences. ``stw`` shape (N_STATE, >= naz): scratch for the
-    nodes' element states, so that each direction's loop runs over the nodes (SIMD), as the
-    element's own loops do."""
-    con = (pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], pk[6], pk[7])
-    sec = (s[0], s[1], s[2], s[3])
-    for k in range(naz):
-        st = _cambered_state(Om * y + Vs * sinpsi[k], UP, th, sth, cth, sec, con)
-        for c in range(N_STATE):  # unrolled: the state is a tuple of floats
-            stw[c, k] = st[c]
-    for m in range(n_m):
-        dsec, dcon = _direction(dS, dC, m)
-        aT = aTs = aH = aHs = aR = 0.0
-        for k in range(naz):
-            sk = sinpsi[k]
-            st = _stored_state(stw, k)
-            dqT, dqH, dgR = _cambered_direction(st, dsec, dcon)
-            aT += dqT
-            aTs += dqT * sk
-            aH += dqH
-            aHs += dqH * sk
-            aR += dgR * (1.0 - sk * sk)
-        ps[1 + m, 0] = aT
-        ps[1 + m, 1] = aTs
-        ps[1 + m, 2] = aH
-        ps[1 + m, 3] = aHs
-        ps[1 + m, 4] = aR
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -373,7 +334,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     n_par = hpar.shape[0]
     n_all = n_in + n_par + (1 if hrho != 0.0 else 0)
     n_rays = out.shape[1] - n_all  # 3: the slopes at rest along three rays in the last columns (sensitivities)
-    wy = _start_point(out, i, ok, 5, w, y)  # the mean inflow's weights
+    wy = _start_point(out, i, ok, out.shape[0], w, y)  # the mean inflow's weights
     if not ok[i]:
         return
     m2 = 0.0  # the mean of sin(psi)^2 over the half circle's nodes (the axial point's one node stands for them)
@@ -384,6 +345,10 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     sb, cb, vs, vc = _airspeed_components(V[i], b[i])
     axial = vs == 0.0
     naz = 1 if axial else naz_half  # in axial flow the integrand does not depend on psi
+    # the dynamic stall (in-plane flow: its rows of Y and M_P, out[5:7]); its per-annulus sums and partials
+    dyn = model == CAMBERED and pk[PK_DYNSTALL] != 0.0 and not axial
+    ex = np.zeros(N_EX)
+    Lvh = np.zeros(6)  # (rows 4, 5: Y's and M_P's partials in v)
     # the nodes' sin psi for the passes; the axial point's one node at psi = 0 (its sin-weighted sums are replaced by
     # the half circle's means below, and its radial-drag weight cos^2 psi is then 1)
     sn = np.zeros(1) if axial else sinpsi
@@ -392,17 +357,17 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (the tip's speed scale)
     # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
     one_sided = V[i] == 0.0
-    dB = np.empty((4, 4))  # d(T, D, Q, R)/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
+    dB = np.empty((6, 4))  # d(T, D, Q, R[, Y, M_P])/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node
     h0 = np.empty(naz_half)
     r0 = np.zeros(naz_half)  # the radial drag's C_D,p U cos^2 psi at the root, per node
-    ps = np.zeros((2 + n_par, 5))  # the sums of the section parameters' and the density's passes (below)
+    ps = np.zeros((2 + n_par, 8))  # the sums of the section parameters' and the density's passes (below)
     # the cambered section's parameter directions: in the section constants (per annulus, below) and in the
     # polar's constants (the same on every annulus)
     n_m = n_par + (1 if hrho != 0.0 else 0)  # the parameters' and the density's directions
     dS = np.zeros((n_par + 1, 4))
     dC = np.zeros((n_par + 1, 8))
-    stw = np.empty((N_STATE, naz_half if model == CAMBERED and n_m > 0 else 0))
+    stw = np.empty((N_DSTATE if dyn else N_STATE, naz_half if model == CAMBERED and n_m > 0 else 0))
     for m in range(n_par):
         for c in range(8):
             dC[m, c] = pkpm[m][c] - pk[c]
@@ -426,9 +391,13 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         # and u_x's partials in V sin beta, in V cos beta and in v; the Reynolds constants and the momentum side keep
         # V sin beta
         vb, uxs, uxc, uxv = _inplane_partials(kin, vj, vs, vc)
+        # the dynamic stall's factor and the sign of its nodes' pitch rate (as _annulus._residual: none at V_b = 0)
+        kd = delay_factor(pk, om, yj, cy2[j]) if dyn and vb != 0.0 else 0.0
+        sg = 1.0 if UP * vb >= 0.0 else -1.0
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node
-        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vb, vc, yj, th, sth, cth, s, u, sn, naz, model, pk)
+        sums, rsums, csums = _partials(q0, h0, r0, vj, ome, vb, vc, yj, th, sth, cth, s, u, sn, naz, model, pk,
+                                       (azim[1], kd, sg, ex))
         tT, tTs, tTs2, tH, tHs, tHs2, pT, pTs, pH, pHs, uT, uTs, uH, uHs = sums
         rB, rT, rTs, rP, rU = rsums
         cT, cTs, cH, cHs, rC = csums
@@ -445,7 +414,11 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                     sa = s
                 for c in range(4):
                     dS[m, c] = sa[c] - s[c]
-            _parameter_partials(ps, dS, dC, n_m, stw, ome, vb, UP, yj, th, sth, cth, s, sn, naz, pk)
+            if kd != 0.0:
+                delayed_parameter_partials(ps, dS, dC, n_m, stw, ome, vb, UP, yj, th, sth, cth, s, sn, azim[1], naz,
+                                           pk, kd, sg)
+            else:
+                _parameter_partials(ps, dS, dC, n_m, stw, ome, vb, UP, yj, th, sth, cth, s, sn, naz, pk)
         elif n_m > 0:
             # the paper's section: one-sided differences, a pass each: 0 the base again (the parameters'
             # differences are then exactly 0 for one that does not enter), 1 + k the k-th section parameter's (the
@@ -471,16 +444,19 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         rr = krad * vb
         # d(T, D, Q, R)/d(the blades' in-plane airspeed) at fixed v: U_T by sin psi, and the radial drag's
         b0, b1, b2, b3 = tTs * cf, (tHs2 + rr * rTs + krad * rB) * cf, tHs * cq, tTs2 * cq
+        # with the dynamic stall: d(T, D, Q, R)/d(ln kd), through V_b (above: as ln kd / 2 V_b) and Omega (below)
+        e0, e1, e2, e3, b0, b1, b2, b3 = delay_partials(ex, cf, cq, rr, vb, kd, b0, b1, b2, b3)
         # d(T, D, Q, R)/dv = d/dU_P, and through u_x (0 without it), and d/dU2 (the loads' scales applied)
         Lv0, Lv1 = pT * cf + uxv * b0, (pHs + rr * rP) * cf + uxv * b1
         Lv2, Lv3 = pH * cq + uxv * b2, pTs * cq + uxv * b3
         uu0, uu1, uu2, uu3 = uT * cf, (uHs + rr * rU) * cf, uH * cq, uTs * cq
         # Omega: U_T by y, U2 by 2 Omega y^2
         f = 2.0 * om * yj * yj
-        dB[0, 0] = yj * tT * cf + f * uu0
-        dB[1, 0] = yj * (tHs + rr * rT) * cf + f * uu1
-        dB[2, 0] = yj * tH * cq + f * uu2
-        dB[3, 0] = yj * tTs * cq + f * uu3
+        ho = 0.5 / om  # (kd grows as sqrt(Omega))
+        dB[0, 0] = yj * tT * cf + f * uu0 + ho * e0
+        dB[1, 0] = yj * (tHs + rr * rT) * cf + f * uu1 + ho * e1
+        dB[2, 0] = yj * tH * cq + f * uu2 + ho * e2
+        dB[3, 0] = yj * tTs * cq + f * uu3 + ho * e3
         # V sin beta: U_T by sin psi (times 1 + du_x/dV sin beta), U2 by V sin beta
         fs = 1.0 + uxs
         dB[0, 1] = fs * b0 + vs * uu0
@@ -497,6 +473,9 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         dB[1, 3] = (cHs + rr * rC) * cf
         dB[2, 3] = cH * cq
         dB[3, 3] = cTs * cq
+        halves_t = (0.0, 0.0)  # Y's and M_P's U_T partials (the swirl's coupling)
+        if kd != 0.0:
+            halves_t = delayed_rows(dB, Lvh, ex, cf, cq, krad, rr, vb, om, yj, uxv, fs, vs, dc, vc)
         # the momentum side's partials (analytic but at the empirical descent model's switch)
         mv, mom_om, mom_vs, mom_vc = _momentum_derivatives(vj, ome, om, vs, vc, yj, mfac[j], ct[j], ch[j], emp,
                                                            one_sided)
@@ -532,6 +511,8 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                 out[1, p, i] += w[j] * (dL1 + Lv1 * dv - sw[7] * du)
                 out[3, p, i] += w[j] * (dL3 + Lv3 * dv - sw[9] * du)
             out[4, p, i] += w[j] * yj * dv / wy
+            if kd != 0.0:
+                add_input_halves(out, p, i, w[j], dB, Lvh, halves_t, e, dv, du)
         if n_rays == 3 and n_in >= 3 and one_sided:  # at rest: the airspeed's one-sided slopes along beta = 0, pi/2, pi
             for k in range(3):
                 rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)
@@ -556,6 +537,8 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                             (ps[1 + k, 3] - ps[0, 3] + rr * (ps[1 + k, 4] - ps[0, 4])) * cf,
                             (ps[1 + k, 2] - ps[0, 2]) * cq,
                             (ps[1 + k, 1] - ps[0, 1]) * cq, span, axial)
+            if kd != 0.0:
+                add_fixed_root_halves(out, n_in + k, i, w[j], Lvh, halves_t, sw, ps, k, (cf, cq, rr), span)
 
 
 @numba.njit(parallel=True, cache=CACHE, error_model="numpy", fastmath=_FM)

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._physics import exp_sat_numpy
+from ._physics import DELAY_MAX, exp_sat_numpy
 
 TWO_PI = 2.0 * np.pi
 
@@ -225,7 +225,173 @@ def make_gill_tangent(atan2, exp_sat, loads_tangent):
     return gill_tangent
 
 
+def make_delayed_direction(atan2, exp_sat, loads_tangent):
+    """Return ``(state, direction)`` for the cambered element with Gormont's dynamic stall
+    (_physics.make_delayed_cambered_element, node and mirror node together), its pair's mean
+    loads and their half difference, along any direction, using the given arctangent,
+    saturated exp and :func:`_loads_tangent`.
+
+    The delayed element reads the static polar with the mean of two blends, s = 1 - A / Q with
+    A = (1 / P1 + 1 / P2) / 2, P1 = 1 + exp(M z1), P2 = 1 + exp(M z2), Q = 1 + exp(-M zq),
+    z1 = ae - g a_pos - d (rising), z2 = ae - g a_pos + d / 2 (falling), zq = ae - g a_neg, and
+    the half difference hs = (1 / P2 - 1 / P1) / (2 Q). Along a direction, with w1 = p1 / (2 P1^2
+    Q), w2 = p2 / (2 P2^2 Q), wq = A q / Q^2 and hq = hA q / Q^2 (hA = (1 / P2 - 1 / P1) / 2):
+    ds = w1 d(M z1) + w2 d(M z2) - wq d(M zq) and dhs = w1 d(M z1) - w2 d(M z2) + hq d(M zq).
+    C_L, C_D and C_D,p are linear in the blend (their slopes in it C_L,s = cd90 sin a cos a -
+    C_L,att, C_D,p,s = -cdf cd2 (C_L,att - cl_cdmin)^2, C_D,s = C_D,p,s + cd90 sin^2 a), so the
+    half difference's coefficients are hs times those slopes. The delay d = kd sqrt(|U_P vcos|)
+    / U^1.5 (below DELAY_MAX; constant above it) moves with U_T by -1.5 d U_T / U^2, with U_P by
+    d (1 / (2 U_P) - 1.5 U_P / U^2) (unbounded as U_P -> 0, where d -> 0: taken as 0 at U_P = 0),
+    and with ln kd and ln vcos by d and d / 2.
+    """
+
+    def state(UT, UP, theta, sin_th, cos_th, sec, con, kd, vcos):
+        """The delayed element's terms at one node (``sec``, ``con`` as :func:`make_cambered_tangent`'s
+        ``cambered_tangent``; ``kd`` [m^0.5 s^-0.5] and ``vcos`` [m/s] as the delayed element's),
+        packed for ``direction`` as three tuples (of 7, 23 and 19 values: a tuple of more than 30
+        compiles to a list in CPython 3.11, which numba does not take back); the first holds the
+        loads (qT, qH, C_D,p U) and their half difference (rising less falling, halved), then the
+        delay's change per unit ln kd (d below DELAY_MAX, else 0) [rad]."""
+        a, cdf, g, dal0 = sec
+        alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
+        U = np.sqrt(UT * UT + UP * UP + 1e-300)
+        ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
+        ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
+        sin_a = (sin_th * UT - cos_th * UP) / U
+        cos_a = (cos_th * UT + sin_th * UP) / U
+        raw = kd * np.sqrt(np.abs(UP * vcos)) / (U * np.sqrt(U))
+        free = 1.0 * (raw < DELAY_MAX)  # the delay's partials vanish where it is bounded
+        d = np.minimum(raw, DELAY_MAX)
+        dfree = d * free
+        d_ut = -1.5 * dfree * UT / (U * U)
+        d_up = dfree * (0.5 / (UP + 1.0 * (UP == 0.0)) - 1.5 * UP / (U * U))
+        x = ae - g * asp
+        z1 = x - d
+        z2 = x + 0.5 * d
+        zq = ae - g * asn
+        p1 = exp_sat(M * z1)
+        p2 = exp_sat(M * z2)
+        q = exp_sat(-M * zq)
+        P1 = 1.0 + p1
+        P2 = 1.0 + p2
+        Q = 1.0 + q
+        A = 0.5 * (1.0 / P1 + 1.0 / P2)
+        hA = 0.5 * (1.0 / P2 - 1.0 / P1)
+        s = 1.0 - A / Q
+        hs = hA / Q
+        w1 = p1 / (2.0 * P1 * P1 * Q)
+        w2 = p2 / (2.0 * P2 * P2 * Q)
+        wq = A * q / (Q * Q)
+        hq = hA * q / (Q * Q)
+        cl_att = a * ae
+        dcl = cl_att - cl_cdmin
+        sc = sin_a * cos_a
+        s2 = sin_a * sin_a
+        CLs = cd90 * sc - cl_att
+        cdps = -cdf * cd2 * dcl * dcl
+        CDs = cdps + cd90 * s2
+        CL = (1.0 - s) * cl_att + s * cd90 * sc
+        inner = cd_min + (1.0 - s) * cd2 * dcl * dcl
+        cdp = cdf * inner
+        CD = cdp + s * cd90 * s2
+        hCL = hs * CLs
+        hcdp = hs * cdps
+        hCD = hs * CDs
+        FT = CL * UT - CD * UP
+        FH = CL * UP + CD * UT
+        hFT = hCL * UT - hCD * UP
+        hFH = hCL * UP + hCD * UT
+        return ((U * FT, U * FH, cdp * U, U * hFT, U * hFH, hcdp * U, dfree),
+                (U, UT, UP, CL, CD, FT, FH, cdp, hCL, hCD, hFT, hFH, hcdp, s, hs, ae, z1, z2, zq, w1, w2, wq, hq),
+                (cl_att, dcl, sc, s2, cos_a * cos_a - s2, inner, CLs, cdps, CDs, a, cdf, g, cd90, cd2, M, asp, asn,
+                 d_ut, d_up))
+
+    def direction(st, dUT, dUP, dth, dd, dsec, dcon):
+        """The derivatives of the loads (qT, qH [m^2/s^2], C_D,p U [m/s]) and of their half
+        difference at the node of ``st`` (``state``'s) along a direction: ``dUT``, ``dUP`` [m/s],
+        ``dth`` [rad] (the blade angle), ``dd`` [rad] (the delay's change beyond U_T's and U_P's:
+        ``st[0][6]`` times the change of ln kd, or of ln vcos over 2), ``dsec`` (4) and ``dcon`` (8)
+        as :func:`make_cambered_direction`'s; per unit of the direction."""
+        U, UT, UP, CL, CD, FT, FH, cdp, hCL, hCD, hFT, hFH, hcdp, s, hs, ae, z1, z2, zq, w1, w2, wq, hq = st[1]
+        cl_att, dcl, sc, s2, c2, inner, CLs, cdps, CDs, a, cdf, g, cd90, cd2, M, asp, asn, d_ut, d_up = st[2]
+        da, dcdf, dg, ddal0 = dsec
+        d_aL0, d_cd90, d_cd_min, d_cd2, d_cl_cdmin, d_M, d_asp, d_asn = dcon
+        dU = (UT * dUT + UP * dUP) / U
+        dal = (UP * dUT - UT * dUP) / (U * U) + dth  # the angle from the chord
+        dae = dal - (d_aL0 + ddal0)
+        ddel = dd + d_ut * dUT + d_up * dUP
+        dx = dae - dg * asp - g * d_asp
+        m1 = d_M * z1 + M * (dx - ddel)
+        m2 = d_M * z2 + M * (dx + 0.5 * ddel)
+        mq = d_M * zq + M * (dae - dg * asn - g * d_asn)
+        ds = w1 * m1 + w2 * m2 - wq * mq
+        dhs = w1 * m1 - w2 * m2 + hq * mq
+        dsc = c2 * dal
+        ds2 = 2.0 * sc * dal
+        dcla = da * ae + a * dae
+        dCL = ds * CLs + (1.0 - s) * dcla + s * (d_cd90 * sc + cd90 * dsc)
+        dinner = d_cd_min - ds * cd2 * dcl * dcl + (1.0 - s) * dcl * (d_cd2 * dcl + 2.0 * cd2 * (dcla - d_cl_cdmin))
+        dcdp = dcdf * inner + cdf * dinner
+        dCD = dcdp + ds * cd90 * s2 + s * (d_cd90 * s2 + cd90 * ds2)
+        dCLs = d_cd90 * sc + cd90 * dsc - dcla
+        dcdps = -(dcdf * cd2 + cdf * d_cd2) * dcl * dcl - 2.0 * cdf * cd2 * dcl * (dcla - d_cl_cdmin)
+        dCDs = dcdps + d_cd90 * s2 + cd90 * ds2
+        full = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, dUT, dUP, dU, dCL, dCD, dcdp)
+        half = loads_tangent(U, UT, UP, hCL, hCD, hFT, hFH, hcdp, dUT, dUP, dU, dhs * CLs + hs * dCLs,
+                             dhs * CDs + hs * dCDs, dhs * cdps + hs * dcdps)
+        return full[0], full[1], full[2], half[0], half[1], half[2]
+
+    return state, direction
+
+
+def make_delayed_tangent(state, direction, loads_tangent):
+    """Return the delayed element with its partials in U_T, U_P, the blade angle, the constants'
+    direction and ln kd, from :func:`make_delayed_direction`'s ``state`` and ``direction`` and
+    :func:`_loads_tangent`: the four moves that change only the angle of attack and the delay
+    share their slopes in both (the constants' direction is ``direction``'s)."""
+
+    def delayed_tangent(UT, UP, theta, sin_th, cos_th, sec, dsec, con, kd, vcos):
+        """The delayed element's loads and half difference (6 values, as ``state``'s first) and
+        their partials: with respect to U_T and U_P (per m/s), along ``dsec`` (per unit), with
+        respect to the blade angle (per rad) and ln kd (6 values each); arguments as ``state``'s
+        and ``dsec`` as :func:`make_cambered_tangent`'s."""
+        st = state(UT, UP, theta, sin_th, cos_th, sec, con, kd, vcos)
+        U, UT, UP, CL, CD, FT, FH, cdp, hCL, hCD, hFT, hFH, hcdp, s, hs, ae, z1, z2, zq, w1, w2, wq, hq = st[1]
+        cl_att, dcl, sc, s2, c2, inner, CLs, cdps, CDs, a, cdf, g, cd90, cd2, M, asp, asn, d_ut, d_up = st[2]
+        # the blends' slopes in the angle of attack (z1, z2, zq alike) and in the delay (z1 by -1, z2 by 1/2)
+        s_a = M * (w1 + w2 - wq)
+        h_a = M * (w1 - w2 + hq)
+        s_d = M * (0.5 * w2 - w1)
+        h_d = -M * (w1 + 0.5 * w2)
+        # the coefficients' slopes at a fixed blend in the angle of attack (sin a cos a by c2, sin^2 a by 2 sc)
+        CL_a = (1.0 - s) * a + s * cd90 * c2
+        cdp_a = cdf * (1.0 - s) * cd2 * 2.0 * dcl * a
+        CD_a = cdp_a + s * cd90 * 2.0 * sc
+        CLs_a = cd90 * c2 - a
+        cdps_a = -2.0 * cdf * cd2 * dcl * a
+        CDs_a = cdps_a + cd90 * 2.0 * sc
+
+        def move(dUT, dUP, dal, ddel):
+            ds = s_a * dal + s_d * ddel
+            dhs = h_a * dal + h_d * ddel
+            dU = (UT * dUT + UP * dUP) / U
+            full = loads_tangent(U, UT, UP, CL, CD, FT, FH, cdp, dUT, dUP, dU, CL_a * dal + ds * CLs,
+                                 CD_a * dal + ds * CDs, cdp_a * dal + ds * cdps)
+            half = loads_tangent(U, UT, UP, hCL, hCD, hFT, hFH, hcdp, dUT, dUP, dU, dhs * CLs + hs * CLs_a * dal,
+                                 dhs * CDs + hs * CDs_a * dal, dhs * cdps + hs * cdps_a * dal)
+            return full[0], full[1], full[2], half[0], half[1], half[2]
+
+        U2 = U * U
+        zero = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        return (st[0], move(1.0, 0.0, UP / U2, d_ut), move(0.0, 1.0, -UT / U2, d_up),
+                direction(st, 0.0, 0.0, 0.0, 0.0, dsec, zero), move(0.0, 0.0, 1.0, 0.0), move(0.0, 0.0, 0.0, st[0][6]))
+
+    return delayed_tangent
+
+
 # the NumPy twins (tests)
 cambered_state, cambered_direction = make_cambered_direction(np.arctan2, exp_sat_numpy, _loads_tangent)
 cambered_tangent = make_cambered_tangent(cambered_state, cambered_direction, _loads_tangent)
 gill_tangent = make_gill_tangent(np.arctan2, exp_sat_numpy, _loads_tangent)
+delayed_state, delayed_direction = make_delayed_direction(np.arctan2, exp_sat_numpy, _loads_tangent)
+delayed_tangent = make_delayed_tangent(delayed_state, delayed_direction, _loads_tangent)

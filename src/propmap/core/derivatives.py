@@ -53,11 +53,8 @@ def differentiable(params: SectionParams, names) -> bool:
         (differentiated through the flapping, core/flapping.py, for rigid and flapping blades
         alike); every inflow model, with or without swirl, has them (since 2026-11-26 a linear
         inflow with swirl too); the rotation rates' range is the caller's to check (>= 0.1 rad/s).
-        False for every name with the dynamic stall (RotorOptions.dynamic_stall > 0), whose
-        delayed element has no partials.
+        False for ``dynamic_stall`` itself (Gormont's gamma is not differentiated).
     """
-    if getattr(params, "dynamic_stall", 0.0) > 0.0:
-        return False
     own = {f.name for f in fields(params)} - set(RECORD_META)
     return all(n in DERIVATIVE_INPUTS or n == RHO or n == COMPLIANCE
                or (n in own and n not in NOT_CONSTANTS and isinstance(getattr(params, n), float)) for n in names)
@@ -68,9 +65,6 @@ def _derivative_inputs(derivatives, params) -> tuple:
     (() for none)."""
     if derivatives is False or derivatives is None:
         return ()
-    if getattr(params, "dynamic_stall", 0.0) > 0.0:
-        raise ValueError("derivatives: not implemented with the dynamic stall (dynamic_stall > 0: its delayed "
-                         "element has no partials); difference the solver, or set dynamic_stall to 0")
     if derivatives is True:
         wrt = DERIVATIVE_INPUTS[:3]
     else:
@@ -122,8 +116,8 @@ def _parameter_constants(names, params, air):
         if name == COMPLIANCE:  # enters neither pk nor cam: rotor_loads differentiates the flapping itself
             raise ValueError("flap_compliance is not a section constant (core/flapping.flapping_derivatives)")
         if name == "dynamic_stall":
-            raise ValueError("derivatives with respect to dynamic_stall are not supported: the delayed element has no "
-                             "partials (difference the solver)")
+            raise ValueError("derivatives with respect to dynamic_stall (Gormont's gamma) are not supported: "
+                             "difference the solver")
         if name in NOT_CONSTANTS:
             raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
                              "not the section's constants (for the blade angle, use 'collective')")
@@ -180,7 +174,9 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     n_cols = n_in + len(names) + (RHO in wrt)
     om, V, b, coll = (np.ascontiguousarray(a, dtype=float) for a in (om, V, b, coll))  # no broadcast views
     scp = np.ascontiguousarray(scp, dtype=float)
-    raw = np.empty((len(DERIVATIVE_LOADS), n_cols + (3 if rays else 0), om.size))
+    # the dynamic stall's rising and falling halves give a side force and a pitching moment: their rows too
+    n_rows = len(DERIVATIVE_LOADS) + (len(FLAPPING_LOADS) if getattr(params, "dynamic_stall", 0.0) > 0.0 else 0)
+    raw = np.empty((n_rows, n_cols + (3 if rays else 0), om.size))
     inflow = ph.INFLOW_CODES[params.inflow]
     if inflow == ph.INFLOW_UNIFORM:
         _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,

@@ -243,8 +243,9 @@ def rotor_loads(
         collective, or a collective sweep of one geometry. Broadcast with ``omega``,
         ``airspeed`` and ``incidence``. None (default): no offset.
     derivatives : bool or sequence of str
-        True: also the derivatives of T, D, Q, M_R, v_i,mean and (flapping blades or a linear
-        inflow; zeros for rigid blades in the uniform inflow) Y and M_P with respect to
+        True: also the derivatives of T, D, Q, M_R, v_i,mean and (flapping blades, a linear
+        inflow or the dynamic stall; zeros for rigid blades in the uniform inflow with the static
+        polar) Y and M_P with respect to
         ``omega``, ``airspeed`` and ``incidence`` (:meth:`RotorLoads.derivative`); a sequence names
         the inputs, ``"collective"`` among them (the blade-angle offset, the same for
         ``params.collective`` and ``collective``), section parameters (numeric fields of
@@ -255,7 +256,8 @@ def rotor_loads(
         (core/flapping.flapping_derivatives); with swirl each annulus' root and angular
         momentum balance together (core/_swirl_sensitivity._swirl_system); with a linear inflow
         model through both of its solves, the gradients' change with the uniform solve's mean
-        inflow included, with or without swirl (core/_linear_sensitivity.py); for
+        inflow included, with or without swirl (core/_linear_sensitivity.py); with the dynamic
+        stall through Gormont's delay as well (core/_delayed_sensitivity.py); for
         Omega >= 0.1 rad/s. False (default): none.
 
     Returns
@@ -273,8 +275,8 @@ def rotor_loads(
         shapes that do not broadcast (the message names it and the range).
         With ``derivatives``: an unknown input name, a node-changing parameter
         (:data:`~propmap.core.derivatives.NODE_FIELDS`), an Omega below 0.1 rad/s, with
-        ``"rho"`` a density too small to be stepped, or a set with the dynamic stall
-        (``dynamic_stall`` > 0: no partials; :func:`~propmap.core.derivatives.differentiable`).
+        ``"rho"`` a density too small to be stepped, or ``dynamic_stall`` itself
+        (:func:`~propmap.core.derivatives.differentiable`).
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
@@ -394,8 +396,8 @@ def rotor_loads(
             raw = flapping_derivatives(raw, T, rigid[3], damping, params.flap_compliance, propeller.n_blades,
                                        omega=om1, rho=air.rho, lift_slope=(_lift_slope_name(params), per_slope),
                                        pitching_moment=out[5])
-        else:  # rigid blades with the uniform inflow: no side force or pitching moment at any input (a linear
-            # inflow's are the kernel's)
+        else:  # rigid blades with the uniform inflow and the static polar: no side force or pitching moment at any
+            # input (a linear inflow's and the dynamic stall's are the kernel's)
             raw.update({(q, w): np.zeros(n) for q in FLAPPING_LOADS for w in solved if (q, w) not in raw})
             if COMPLIANCE in wrt:  # (Y and M_P linear in it; D and M_R too with a linear inflow, else quadratic)
                 raw.update(rigid_compliance_derivatives(
