@@ -19,7 +19,10 @@ the median of 5 alternated runs:
 * the same batch with Pitt-Peters inflow (``linear_inflow``): its loads, with the three
   inputs' and the 8 parameters' derivatives (core/_linear_sensitivity.py) and the three
   inputs' central differences, each ratio to its own loads; and the same with swirl too
-  (``linear_inflow_swirl``, since 2026-11-26, when it gained implicit derivatives).
+  (``linear_inflow_swirl``, since 2026-11-26, when it gained implicit derivatives);
+* the same batch with Gormont's dynamic stall (``dynamic_stall``, gamma 1.5; its implicit
+  derivatives since 2026-11-26, core/_delayed_sensitivity.py): its loads and the three inputs'
+  and 8 parameters' derivatives, each ratio to its own loads.
 
 Reported: seconds and the ratios to the baseline (issue 20's target: <= 1.5x for the three
 inputs), the residual evaluations per annulus of the solve, and the CPU.
@@ -104,6 +107,13 @@ def main() -> dict:
             "central differences of the solver (3 inputs)": lambda: [pm.rotor_loads(prop, linear, *a)
                                                                      for a in steps],
         }), "loads (Pitt-Peters)")
+    stall = params.replace(dynamic_stall=1.5)  # Gormont's dynamic stall (an option; since 2026-11-26 differentiable)
+    out["dynamic_stall"] = _summary(_timed({
+        "loads (dynamic stall)": lambda: pm.rotor_loads(prop, stall, om, V, b),
+        "loads + derivatives (3 inputs)": lambda: pm.rotor_loads(prop, stall, om, V, b, derivatives=True),
+        "loads + derivatives (8 section parameters)": lambda: pm.rotor_loads(prop, stall, om, V, b,
+                                                                            derivatives=PARAMS),
+    }), "loads (dynamic stall)")
     out["vehicle_linearisation"] = vehicle_linearisation()
     path = ROOT / "benchmarks" / "results" / "derivatives.json"
     path.parent.mkdir(parents=True, exist_ok=True)

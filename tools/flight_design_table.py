@@ -16,8 +16,8 @@ Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads 
 uniform inflow's (docs/solver.md); rows C and WP take about 1 and 2 minutes. So does row WN
 (W without the skewed wake's in-plane induced velocity, ``inplane_induction``, the cambered
 default since 2026-11-25: the default before), about 1 minute, and row WD (W with Gormont's
-dynamic stall, ``dynamic_stall = 1.5``, differencing the solver: the option has no implicit
-derivatives).
+dynamic stall, ``dynamic_stall = 1.5``; with its implicit derivatives since 2026-11-26, about as
+long as W).
 ``--differences``: the fits' Jacobians by central differences of the solver instead of the
 implicit derivatives (an A/B of the two; the same optimum).
 """

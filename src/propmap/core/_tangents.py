@@ -254,6 +254,7 @@ def make_delayed_direction(atan2, exp_sat, loads_tangent):
         delay's change per unit ln kd (d below DELAY_MAX, else 0) [rad]."""
         a, cdf, g, dal0 = sec
         alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, asp, asn = con
+        # (the static state's first lines, as every element's: sharing them would need one more injected function)
         U = np.sqrt(UT * UT + UP * UP + 1e-300)
         ae = theta - (alpha_L0 + dal0) - atan2(UP, UT)
         ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)

@@ -141,7 +141,8 @@ class RotorOptions:
         and advanced by half that where it falls (_physics.make_delayed_cambered_element);
         1.4 - 6 (0.06 - t/c) for the lift of a section of thickness t/c, about 1.5 at 8%.
         Axial flow is unchanged (alpha_dot = 0). The cambered model in a uniform inflow only;
-        no implicit derivatives (the fits difference the solver). 0 (default): the static polar.
+        implicit derivatives with respect to every input and section parameter, not gamma itself
+        (core/_delayed_sensitivity.py). 0 (default): the static polar.
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
