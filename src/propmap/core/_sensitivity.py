@@ -65,6 +65,11 @@ constants, as the element does, so the element's partials carry C_D,p U's as a t
 (and the section parameters' passes the element's own, _physics.make_element's ``profile``);
 V sin(beta) enters it once more explicitly (its base sum; in axial flow the one node's value
 times the half circle's mean cos^2 psi, 1 - mean sin^2 psi).
+
+With Gormont's dynamic stall (airfoil.RotorOptions.dynamic_stall, in-plane flow) each node
+and its mirror node pass through the delayed element, whose partials, delay and rows of the
+side force and pitching moment (out[5:7]) come from core/_delayed_sensitivity.py; the section
+parameters' directions of either cambered element from core/_parameter_sensitivity.py.
 """
 
 from __future__ import annotations
