@@ -84,7 +84,6 @@ def _parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, si
         ps[1 + m, 4] = aR
 
 
-
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
 def delayed_parameter_partials(ps, dS, dC, n_m, stw, Om, Vs, UP, y, th, sth, cth, s, sinpsi, cospsi, naz, pk, kd,
                                sg):
