@@ -73,6 +73,26 @@ def test_the_edgewise_thrust_rise_comes_near_the_tunnels(apce8x6):
     assert r1.torque[1] / r1.torque[0] - 1 == pytest.approx(0.103, abs=0.002)
 
 
+def test_below_mu_0_2_the_square_root_overshoots_and_makes_a_cusp_at_hover(apce8x6):
+    """Why the option is not the default (docs/models.md, Dynamic stall): Gormont's delay grows as
+    the square root of the pitch rate, so the thrust gain from hover as sqrt(V) (exponent 0.4-0.65
+    between 0.01 and 0.1 m/s edgewise) where the static polar's grows as V^2; at mu = 0.05 the rise
+    is 7.0% against the tunnel's 1.03% (Gill & D'Andrea 2019's k2 mu^2 / CT_static) and the static
+    polar's 0.79% (regression values, 2026-11-26)."""
+    prop, p = apce8x6
+    om = 6000 * RPM
+    V = np.array([0.0, 0.01, 0.1, 0.05 * om * prop.radius])
+    inc = np.full(4, math.pi / 2)
+    for gamma, lo, hi in ((1.5, 0.4, 0.65), (0.0, 1.9, 2.1)):
+        r = pm.rotor_loads(prop, p.replace(dynamic_stall=gamma), om, V, inc)
+        gain = r.thrust / r.thrust[0] - 1.0
+        assert lo < math.log10(gain[2] / gain[1]) < hi
+        assert gain[3] == pytest.approx(0.0696 if gamma else 0.0079, rel=0.03)
+    assert abs(float(r.side_force[1])) == 0.0
+    ds = pm.rotor_loads(prop, p.replace(dynamic_stall=1.5), om, 0.01, math.pi / 2)
+    assert abs(float(ds.side_force)) > 5 * float(ds.drag)  # at 1 cm/s: a side force ten times the drag
+
+
 def test_what_the_option_refuses(apce8x6):
     prop, p = apce8x6
     with pytest.raises(ValueError, match="dynamic_stall applies to the cambered section model"):

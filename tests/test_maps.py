@@ -373,3 +373,23 @@ def test_a_bool_inside_a_query_list_is_refused(small_map):
         rm.loads([800.0, True], 5.0, 0.3)
     with pytest.raises(ValueError, match="airspeed must be a number or an array of numbers"):
         rm.loads(800.0, [5.0, np.array(False)], 0.3)
+
+
+def test_sets_with_a_side_force_are_named_and_warned_about_by_maps_and_exports():
+    """The options that give a side force and a pitching moment (which maps, the C header and the
+    simulator coefficients leave out) are named, the dynamic stall among them; rigid blades in the
+    uniform inflow with the static polar have none."""
+    from propmap.simexport import export_sim
+
+    g = pm.generic_params()
+    assert g.side_load_sources() == () and pm.preset("gill2017-apc").side_load_sources() == ()
+    assert g.replace(flap_compliance=1.0).side_load_sources() == ("blade flapping",)
+    assert g.replace(inflow="drees").side_load_sources() == ("a linear inflow",)
+    assert g.replace(dynamic_stall=1.5).side_load_sources() == ("the dynamic stall",)
+    prop, ds = pm.load_propeller("apce_8x6"), g.replace(dynamic_stall=1.5)
+    r = pm.rotor_loads(prop, ds, 800.0, 5.0, math.pi / 2)
+    assert abs(float(r.side_force)) > 0.1 * float(r.drag)  # what a map would leave out
+    with pytest.warns(UserWarning, match=r"\(the dynamic stall\); a map holds T, D, Q and M_R only"):
+        build_map(prop, ds, [700.0, 800.0], [0.0, 5.0], [0.0, 1.0], n_check=0)
+    with pytest.warns(UserWarning, match=r"\(the dynamic stall\); the rotorpy model has no term"):
+        export_sim("rotorpy", prop, ds, n_points=50)

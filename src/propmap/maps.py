@@ -212,10 +212,11 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     import xarray as xr
 
     check_model_args(propeller, params, air, discretization)
-    if params.flap_compliance > 0 or getattr(params, "inflow", "uniform") != "uniform":
-        warnings.warn("this parameter set gives a side force and a pitching moment (blade flapping or a linear "
-                      "inflow model); a map holds T, D, Q and M_R only, so RotorMap.wrench, VehicleMap and the C "
-                      "header leave them out", UserWarning, stacklevel=2)
+    side = ", ".join(params.side_load_sources())
+    if side:
+        warnings.warn(f"this parameter set gives a side force and a pitching moment ({side}); a map "
+                      "holds T, D, Q and M_R only, so RotorMap.wrench, VehicleMap and the C header leave them out",
+                      UserWarning, stacklevel=2)
 
     from .io.calibration import params_to_si
 

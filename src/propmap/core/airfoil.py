@@ -142,7 +142,10 @@ class RotorOptions:
         1.4 - 6 (0.06 - t/c) for the lift of a section of thickness t/c, about 1.5 at 8%.
         Axial flow is unchanged (alpha_dot = 0). The cambered model in a uniform inflow only;
         implicit derivatives with respect to every input and section parameter, not gamma itself
-        (core/_delayed_sensitivity.py). 0 (default): the static polar.
+        (core/_delayed_sensitivity.py). 0 (default): the static polar. Not the default because
+        the square root makes the thrust rise as sqrt(mu) from hover (a cusp there, a side
+        force larger than the drag below 1 m/s edgewise) where the wind tunnel's rises as
+        mu^2 (docs/models.md, Dynamic stall).
     air : Air
         The air the set goes with (a parameter file's ``rho``, ``mu``, ``speed_of_sound``;
         the shipped sets: footnote 2's): :func:`propmap.rotor_loads` and every other model
@@ -193,6 +196,23 @@ class RotorOptions:
             if self.inflow != "uniform":
                 raise ValueError(f"dynamic_stall needs the uniform inflow, got inflow={self.inflow!r} (a linear "
                                  "inflow's angle of attack varies around the azimuth otherwise: not modelled)")
+
+    def side_load_sources(self) -> tuple[str, ...]:
+        """The options of this set that give the rotor a side force Y and a pitching moment M_P.
+
+        Rigid blades in the uniform inflow with the static polar have none (by symmetry, paper
+        Section II); maps, the C header and the simulator coefficients tabulate T, D, Q and M_R
+        only, and warn with these names.
+
+        Returns
+        -------
+        tuple of str
+            Among ``"blade flapping"`` (``flap_compliance > 0``), ``"a linear inflow"`` and
+            ``"the dynamic stall"`` (``dynamic_stall > 0``); empty where Y = M_P = 0.
+        """
+        return tuple(name for name, on in (("blade flapping", self.flap_compliance > 0.0),
+                                           ("a linear inflow", self.inflow != "uniform"),
+                                           ("the dynamic stall", self.dynamic_stall > 0.0)) if on)
 
 
 @dataclass(frozen=True)

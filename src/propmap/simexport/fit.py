@@ -529,10 +529,11 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air)
     target = canonical_target(target)
-    if params.flap_compliance > 0 or getattr(params, "inflow", "uniform") != "uniform":
-        warnings.warn(f"this parameter set gives a side force and a pitching moment (blade flapping or a linear "
-                      f"inflow model); the {target} model has no term fitted to them (RotorPy's k_flap is written "
-                      "0), so they are left out and their error is not reported", UserWarning, stacklevel=2)
+    side = ", ".join(params.side_load_sources())
+    if side:
+        warnings.warn(f"this parameter set gives a side force and a pitching moment ({side}); the "
+                      f"{target} model has no term fitted to them (RotorPy's k_flap is written 0), so they are left "
+                      "out and their error is not reported", UserWarning, stacklevel=2)
     for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):
         x = _real(value)
         if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
