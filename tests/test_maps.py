@@ -375,10 +375,11 @@ def test_a_bool_inside_a_query_list_is_refused(small_map):
         rm.loads(800.0, [5.0, np.array(False)], 0.3)
 
 
-def test_sets_with_a_side_force_are_named_and_warned_about_by_maps_and_exports():
-    """The options that give a side force and a pitching moment (which maps, the C header and the
-    simulator coefficients leave out) are named, the dynamic stall among them; rigid blades in the
-    uniform inflow with the static polar have none."""
+def test_sets_with_a_side_force_are_named_and_warned_about_by_the_exports():
+    """The options that give a side force and a pitching moment are named, the dynamic stall among
+    them (rigid blades in the uniform inflow with the static polar have none); the simulator
+    coefficients have no term for them and say so (before 2026-11-26 a set with the dynamic stall
+    was not warned about)."""
     from propmap.simexport import export_sim
 
     g = pm.generic_params()
@@ -388,8 +389,58 @@ def test_sets_with_a_side_force_are_named_and_warned_about_by_maps_and_exports()
     assert g.replace(dynamic_stall=1.5).side_load_sources() == ("the dynamic stall",)
     prop, ds = pm.load_propeller("apce_8x6"), g.replace(dynamic_stall=1.5)
     r = pm.rotor_loads(prop, ds, 800.0, 5.0, math.pi / 2)
-    assert abs(float(r.side_force)) > 0.1 * float(r.drag)  # what a map would leave out
-    with pytest.warns(UserWarning, match=r"\(the dynamic stall\); a map holds T, D, Q and M_R only"):
-        build_map(prop, ds, [700.0, 800.0], [0.0, 5.0], [0.0, 1.0], n_check=0)
+    assert abs(float(r.side_force)) > 0.1 * float(r.drag)  # what the coefficients leave out
     with pytest.warns(UserWarning, match=r"\(the dynamic stall\); the rotorpy model has no term"):
         export_sim("rotorpy", prop, ds, n_points=50)
+
+
+@pytest.fixture(scope="module")
+def flapping_map():
+    """apce_8x6, the generic set with flapping blades (a side force and a pitching moment), 4 x 4 x 7."""
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.generic_params().replace(flap_compliance=2.0)
+    ds = build_map(prop, params, np.linspace(5000, 8000, 4) * RPM, np.linspace(0, 12, 4),
+                   np.radians(np.linspace(0, 180, 7)), n_check=100)
+    return prop, params, ds
+
+
+def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them(flapping_map, small_map, tmp_path):
+    """Blade flapping (as a linear inflow or the dynamic stall) gives Y and M_P: the map tabulates
+    them like the other loads, its wrench carries them (equal to the full model's at the nodes),
+    its check measures them, the file keeps them; a map of rigid blades holds none and gives 0."""
+    from propmap.export_c import c_header_text
+
+    prop, params, ds = flapping_map
+    assert "side_force" in ds and "pitching_moment" in ds
+    assert "side_force" not in small_map[2] and not RotorMap(small_map[2]).side_loads
+    rm = RotorMap(ds)
+    assert rm.side_loads
+    O, V, B = np.meshgrid(rm.omega, rm.airspeed, rm.incidence, indexing="ij")
+    got = rm.loads(O, V, B)
+    full = pm.rotor_loads(prop, params, O, V, B, on_failure="flag", radial=False)
+    for k in ("side_force", "pitching_moment"):
+        np.testing.assert_allclose(getattr(got, k), getattr(full, k), rtol=1e-12, atol=1e-12)
+    assert np.abs(full.side_force).max() > 0.02 and np.abs(full.pitching_moment).max() > 1e-3
+    one = rm.loads(float(O[2, 2, 3]), float(V[2, 2, 3]), float(B[2, 2, 3]))  # the scalar path
+    assert one.side_force == pytest.approx(float(full.side_force[2, 2, 3]), rel=1e-12)
+    assert one.pitching_moment == pytest.approx(float(full.pitching_moment[2, 2, 3]), rel=1e-12)
+    for spin in ("ccw", "cw"):  # the wrench vectors with Y and M_P, as rotor_wrench's
+        speed, beta = float(V[1, 2, 3]), float(B[1, 2, 3])
+        velocity = [speed * math.sin(beta), 0.0, speed * math.cos(beta)]
+        w = rm.wrench(velocity, [0, 0, 1], float(O[1, 2, 3]), spin)
+        ref = pm.rotor_wrench(prop, params, velocity, [0, 0, 1], float(O[1, 2, 3]), spin)
+        np.testing.assert_allclose(w.force, ref.force, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(w.torque, ref.torque, rtol=1e-9, atol=1e-12)
+        assert abs(w.force[1]) > 0.01  # the side force, across the in-plane velocity
+    rigid = RotorMap(small_map[2]).loads([800.0, 900.0], 5.0, 1.0)
+    np.testing.assert_array_equal(rigid.side_force, 0.0)
+    assert rigid.side_force.shape == (2,)
+    for key in ("check_cubic_side_force_max", "check_linear_pitching_moment_rms"):
+        assert 0.0 <= ds.attrs[key] < 0.5
+    write_map(ds, tmp_path / "flap.nc")
+    again = RotorMap.open(tmp_path / "flap.nc")
+    assert again.side_loads and again.loads(800.0, 5.0, 1.0) == rm.loads(800.0, 5.0, 1.0)
+    with pytest.raises(ValueError, match="both of side_force, pitching_moment or neither"):
+        RotorMap(ds.drop_vars("pitching_moment"))
+    with pytest.warns(UserWarning, match="the C header's loads and wrench leave them out"):
+        c_header_text(rm, tmp_path / "flap.h")

@@ -263,12 +263,24 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     TypeError
         ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
         ``RotorMap(ds)``).
+
+    Warns
+    -----
+    UserWarning
+        A map that holds the side force and the pitching moment (``RotorMap.side_loads``):
+        the header's functions give T, D, Q and M_R and leave them out.
     """
     from .maps import RotorMap
 
     if not isinstance(rotor_map, RotorMap):
         raise TypeError(f"rotor_map must be a propmap.RotorMap (RotorMap(ds) or RotorMap.open(path)), "
                         f"got {type(rotor_map).__name__}")
+    if rotor_map.side_loads:
+        import warnings
+
+        warnings.warn("the map holds a side force and a pitching moment (blade flapping, a linear inflow or the "
+                      "dynamic stall); the C header's loads and wrench leave them out (T, D, Q and M_R only)",
+                      UserWarning, stacklevel=2)
     if dtype not in ("float", "double"):
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
     path = Path(path)

@@ -18,7 +18,6 @@ from __future__ import annotations
 import json
 import math
 import re
-import warnings
 
 import numpy as np
 
@@ -26,7 +25,7 @@ from . import __version__
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
-from .io.mapcheck import CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, UNITS, check_integer, check_propeller
+from .io.mapcheck import CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_integer, check_propeller
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.uncertainty import model_uncertainty
 from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
@@ -38,6 +37,10 @@ LONG_NAMES = {"thrust": "thrust T along the rotor axis",
               "drag": "rotor drag D (H-force), against the in-plane velocity",
               "torque": "shaft torque Q opposing the rotation",
               "rolling_moment": "rolling moment M_R (advancing/retreating thrust asymmetry)",
+              "side_force": "side force Y toward the advancing side (flapping blades, a linear inflow or the dynamic "
+                            "stall)",
+              "pitching_moment": "pitching moment M_P about z x e_ip (flapping blades, a linear inflow or the dynamic "
+                                 "stall)",
               "power": "shaft power P = Q Omega", "CT": "thrust coefficient T / (rho n^2 D^4)",
               "CP": "power coefficient P / (rho n^3 D^5)"}
 #: static tip speed [m/s] of the default map's highest rpm (tip Mach 0.44 at sea level)
@@ -146,11 +149,10 @@ def scheduler_client(address: str):
     raise ValueError(f"scheduler: no scheduler answered at {address} within {SCHEDULER_TIMEOUT:g} s ({why})")
 
 
-def _solve_block(propeller, params, air, discretization, om, V, b):
+def _solve_block(propeller, params, air, discretization, loads, om, V, b):
     r = rotor_loads(propeller, params, om, V, b, air=air, discretization=discretization, on_failure="flag",
                     radial=False)
-    return np.stack([r.thrust, r.drag, r.torque, r.rolling_moment,
-                     *(np.asarray(getattr(r, f), float) for f in FLAGS)])
+    return np.stack([*(getattr(r, k) for k in loads), *(np.asarray(getattr(r, f), float) for f in FLAGS)])
 
 
 def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, incidence, *, air: Air | None = None,
@@ -192,7 +194,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     xarray.Dataset
         Dimensions ``rpm`` [rpm], ``airspeed`` [m/s], ``incidence_deg`` [deg] (with the SI
         coordinates ``omega`` [rad/s] and ``incidence`` [rad]); variables thrust, drag,
-        torque, rolling_moment, power, CT, CP and the node flags converged, vortex_ring,
+        torque, rolling_moment (and side_force, pitching_moment where the set makes them:
+        blade flapping, a linear inflow, the dynamic stall; RotorOptions.side_load_sources),
+        power, CT, CP and the node flags converged, vortex_ring,
         multiple_roots, reverse_flow; attributes as described in docs/simulators.md.
 
     Raises
@@ -212,11 +216,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     import xarray as xr
 
     check_model_args(propeller, params, air, discretization)
-    side = ", ".join(params.side_load_sources())
-    if side:
-        warnings.warn(f"this parameter set gives a side force and a pitching moment ({side}); a map "
-                      "holds T, D, Q and M_R only, so RotorMap.wrench, VehicleMap and the C header leave them out",
-                      UserWarning, stacklevel=2)
+    # the side force and the pitching moment where the set makes them (RotorOptions.side_load_sources)
+    loads = LOADS + (SIDE_LOADS if params.side_load_sources() else ())
 
     from .io.calibration import params_to_si
 
@@ -235,8 +236,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     O3, V3, B3 = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))
     chunks = int(chunk_points)
     O3, V3, B3 = (da.from_array(a, chunks=chunks) for a in (O3, V3, B3))
-    parts = da.map_blocks(_solve_block, propeller, params, air, discretization, O3, V3, B3, new_axis=0,
-                          chunks=((4 + len(FLAGS),), O3.chunks[0]), dtype=float)
+    parts = da.map_blocks(_solve_block, propeller, params, air, discretization, loads, O3, V3, B3, new_axis=0,
+                          chunks=((len(loads) + len(FLAGS),), O3.chunks[0]), dtype=float)
     if scheduler is None:
         # one chunk at a time: the model call is parallel over the cores already, and two
         # concurrent numba parallel regions in one process would compete for them
@@ -278,17 +279,17 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         finally:
             if own:
                 client.close()
-    result = np.asarray(result).reshape((4 + len(FLAGS),) + shape)
+    result = np.asarray(result).reshape((len(loads) + len(FLAGS),) + shape)
     dims = ("rpm", "airspeed", "incidence_deg")
     n = om[:, None, None] / (2 * math.pi)
-    data = {k: (dims, result[i], {"units": UNITS[k], "long_name": LONG_NAMES[k]}) for i, k in enumerate(LOADS)}
+    data = {k: (dims, result[i], {"units": UNITS[k], "long_name": LONG_NAMES[k]}) for i, k in enumerate(loads)}
     data["power"] = (dims, result[2] * om[:, None, None], {"units": "W", "long_name": LONG_NAMES["power"]})
     data["CT"] = (dims, result[0] / (air.rho * n**2 * propeller.diameter**4), {"units": "1",
                                                                                "long_name": LONG_NAMES["CT"]})
     data["CP"] = (dims, data["power"][1] / (air.rho * n**3 * propeller.diameter**5),
                   {"units": "1", "long_name": LONG_NAMES["CP"]})
     for i, f in enumerate(FLAGS):
-        data[f] = (dims, result[len(LOADS) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)"})
+        data[f] = (dims, result[len(loads) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)"})
     coords = {"rpm": ("rpm", om / RPM, {"units": "rpm", "long_name": "rotation rate"}),
               "airspeed": ("airspeed", V, {"units": "m/s", "long_name": "speed of the disk relative to the air"}),
               "incidence_deg": ("incidence_deg", np.degrees(b),
@@ -307,7 +308,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         "model": "Gill & D'Andrea, Propeller Thrust and Drag in Forward Flight, IEEE CCTA 2017 "
                  f"(BET/BEMT), section model {params.section_model} (propmap docs/models.md)",
         "citation": citation, "propmap_version": __version__,
-        "interpolation": "of T, D, Q, M_R divided by (Omega R)^2 + V^2 in (rpm, airspeed, incidence), "
+        "interpolation": "of T, D, Q, M_R (and Y, M_P where the map holds them) divided by (Omega R)^2 + V^2 in "
+                         "(rpm, airspeed, incidence), "
                          "multiplied back by (Omega R)^2 + V^2 of the query: cubic Hermite with three-point "
                          "slopes (RotorMap's default) or multilinear (RotorMap(..., 'linear'), the C export's default)",
         "Conventions": "CF-1.8",

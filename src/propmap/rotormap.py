@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .core.geometry import has_bool
-from .io.mapcheck import CHECK_POINTS_MAX, LOADS, check_dataset, check_integer, map_model
+from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
 
 __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap", "check_map"]
@@ -95,6 +95,11 @@ class MapLoads(NamedTuple):
         The query is outside the grid, or a node of its cell or of a neighbour cell (the
         4 x 4 x 4 nodes around it) is flagged vortex_ring or
         multiple_roots or did not converge (the map's measured error does not hold there).
+    side_force, pitching_moment : ndarray or float
+        Y [N] and M_P [N m] as in :class:`propmap.RotorLoads`, interpolated as the other loads
+        where the map holds them (its set has blade flapping, a linear inflow or the dynamic
+        stall; ``RotorMap.side_loads``); 0 where it does not (rigid blades, uniform inflow,
+        static polar: none by symmetry).
     """
 
     thrust: np.ndarray
@@ -104,6 +109,8 @@ class MapLoads(NamedTuple):
     omega: np.ndarray
     inside: np.ndarray
     flagged: np.ndarray
+    side_force: np.ndarray | float = 0.0
+    pitching_moment: np.ndarray | float = 0.0
 
     @property
     def power(self) -> np.ndarray:
@@ -117,7 +124,8 @@ class MapWrench(NamedTuple):
     Attributes
     ----------
     force, torque : ndarray, shape S + (3,)
-        T z - D e_ip [N] and -spin (Q z + M_R e_ip) [N m].
+        T z - D e_ip + Y e_adv [N] and -spin (Q z + M_R e_ip) + M_P (e_ip x z) [N m]
+        (core.vector.wrench_vectors; Y = M_P = 0 where the map holds none).
     loads : MapLoads
     """
 
@@ -150,6 +158,9 @@ class RotorMap:
     attrs : dict
         The map's metadata (propeller, parameters, model, version, citation, measured error).
     interpolation : str
+    side_loads : bool
+        The map holds the side force and the pitching moment (its set has blade flapping, a
+        linear inflow or the dynamic stall); without them :class:`MapLoads` gives 0 for both.
 
     Raises
     ------
@@ -177,8 +188,16 @@ class RotorMap:
         ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
         table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
         self._table = np.ascontiguousarray(table, dtype=float)
+        #: the map holds the side force and the pitching moment (io.mapcheck.SIDE_LOADS)
+        self.side_loads = len(map_loads(ds)) > len(LOADS)
+        finite = np.isfinite(table).all(axis=-1)
+        self._side_table = None
+        if self.side_loads:  # Y, M_P in a second 4-wide table (zeros beside), for the compiled 4-load kernels
+            side = np.stack([ds[k].values for k in SIDE_LOADS], axis=-1) / ref[:, :, None, None]
+            finite &= np.isfinite(side).all(axis=-1)
+            self._side_table = np.ascontiguousarray(np.concatenate([side, np.zeros_like(side)], axis=-1))
         # a node whose loads are not finite is as unreliable as a non-converged one
-        bad = ~ds["converged"].values.astype(bool) | ~np.isfinite(table).all(axis=-1)
+        bad = ~ds["converged"].values.astype(bool) | ~finite
         for f in BAD_FLAGS:
             bad |= ds[f].values.astype(bool)
         # a cell is flagged when a node of it or of its neighbour cells is: the loads bend
@@ -308,10 +327,16 @@ class RotorMap:
         flagged = np.empty(n, dtype=np.bool_)
         _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius,
                              *flat, policy, self._order, out, inside, flagged)
+        side = np.zeros((n, 2))
+        if self.side_loads:  # the same queries in the side table: the same inside and flagged
+            side = np.empty((n, len(LOADS)))
+            _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._side_table, self._cellflag,
+                                 self.radius, *flat, policy, self._order, side, inside, flagged)
         # under "clip" the loads hold at the top row above the grid, at the query's Omega below it (scaled)
         om = np.minimum(q[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
         return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=om,
-                        inside=inside.reshape(shape), flagged=flagged.reshape(shape))
+                        inside=inside.reshape(shape), flagged=flagged.reshape(shape),
+                        side_force=side[:, 0].reshape(shape), pitching_moment=side[:, 1].reshape(shape))
 
     def wrench(self, velocity, axis, omega, spin="ccw", *, out_of_grid: str = "raise") -> MapWrench:
         """Force and moment vectors from the map, as :func:`propmap.rotor_wrench`.
@@ -349,7 +374,8 @@ class RotorMap:
         s = _spin_sign(spin)
         ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
         _check_spin(s, np.shape(ml.thrust))
-        force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s)
+        force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s,
+                                       side_force=ml.side_force, pitching_moment=ml.pitching_moment)
         return MapWrench(force=force, torque=moment, loads=ml)
 
     def _loads1(self, omega: float, airspeed: float, incidence: float, out_of_grid):
@@ -367,10 +393,16 @@ class RotorMap:
                      airspeed, incidence, self._policy[out_of_grid], self._order, self._out1, self._in1,
                      self._fl1)
         t, d, q, m = self._out1[0].tolist()
+        y = mp = 0.0
+        if self.side_loads:
+            self._interp_point(self.omega, self.airspeed, self.incidence, self._side_table, self._cellflag,
+                               self.radius, omega, airspeed, incidence, self._policy[out_of_grid], self._order,
+                               self._out1, self._in1, self._fl1)
+            y, mp = self._out1[0, :2].tolist()
         omega = float(omega)
         if not inside and out_of_grid == "clip":
             omega = min(omega, o1)  # below the grid the loads are scaled to the query's
-        return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]))
+        return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]), y, mp)
 
     def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
         """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
@@ -379,8 +411,8 @@ class RotorMap:
         are not one rotor's plain numbers, or not finite, or outside the grid under
         "raise": the general path then answers (and raises what it raises)."""
         v, a, omega = _three(velocity), _three(axis), _plain(omega)
-        if v is None or a is None or omega is None or omega != omega:
-            return None
+        if v is None or a is None or omega is None or omega != omega or self.side_loads:
+            return None  # (a map with the side loads: the general path, whose vectors carry them)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
             float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
@@ -411,7 +443,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     largest |D| (|M_R|) of the map at the two rpm rows around the point. Points flagged by
     the evaluator (a node within one node of their cell in vortex_ring, with multiple
     roots, or not converged), or that the model flags so, are counted apart ("flagged
-    regions").
+    regions"). A map with the side force and pitching moment has them checked too,
+    normalised as D and M_R by their largest values at the two rpm rows.
 
     Parameters
     ----------
@@ -429,7 +462,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     dict
         ``check_points``, ``check_points_flagged``, ``check_seed``, ``check_normalisation``
         and, per interpolation m (linear, cubic) and variable (thrust, drag, torque,
-        rolling_moment, power), ``check_<m>_<var>_rms`` and ``check_<m>_<var>_max``
+        rolling_moment, side_force and pitching_moment where the map holds them, power),
+        ``check_<m>_<var>_rms`` and ``check_<m>_<var>_max``
         outside flagged regions, and ``check_<m>_<var>_max_flagged`` inside them (NaN if
         there are none); both methods on the same points and flagged regions.
 
@@ -462,12 +496,14 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     static = rotor_loads(prop, params, om, 0.0, 0.0, air=air, discretization=disc, on_failure="flag", radial=False)
     row = np.clip(np.searchsorted(rm.omega, om, side="right") - 1, 0, rm.omega.size - 2)
     norm = {"thrust": np.abs(static.thrust), "torque": np.abs(static.torque), "power": np.abs(static.power)}
-    for k in ("drag", "rolling_moment"):
-        peak = np.max(np.abs(ds[k].values), axis=(1, 2))
+    loads = map_loads(ds)
+    for k in ("drag", "rolling_moment", *loads[len(LOADS):]):
+        peak = np.max(np.abs(ds[k].transpose("rpm", ...).values), axis=(1, 2))
         norm[k] = np.maximum(peak[row], peak[row + 1])
+    peaks = "D, M_R (Y, M_P)" if len(loads) > len(LOADS) else "D and M_R"
     out = {"check_points": int(n_check), "check_seed": int(seed),
            "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
-                                  "torque, D and M_R by the largest |D|, |M_R| of the map at the rpm rows around it; "
+                                  f"torque, {peaks} by their largest magnitude in the map at the rpm rows around it; "
                                   "flagged: the point, or a node within one node of its cell, in vortex ring, "
                                   "with multiple roots or not converged"}
     for method, evaluator in evaluators.items():
@@ -476,7 +512,7 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
         # both methods flag the same cells (RotorMap), so the same points
         flagged = got.flagged | ~full.converged | full.vortex_ring | full.multiple_roots
         out["check_points_flagged"] = int(flagged.sum())
-        for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
+        for k in (*loads, "power"):
             err = np.abs(getattr(got, k) - getattr(full, k)) / np.where(norm[k] > 0, norm[k], np.inf)
             ok = err[~flagged]
             out[f"{prefix}{k}_rms"] = float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan

@@ -143,10 +143,12 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                 max_error_pct, scheduler, plot, as_json, prop_choice, air_choice):
     """Tabulate the model over (rpm, airspeed, incidence) for real-time use.
 
-    The map stores thrust, drag, torque, rolling moment, power, CT, CP and the flags of
-    every node, the propeller, parameters, model and version that made it, and its measured
-    interpolation error (the full model at random off-grid points). Evaluate it with
-    propmap.RotorMap (Python) or the C header (--format c); docs/simulators.md.
+    The map stores thrust, drag, torque, rolling moment (and the side force and pitching
+    moment where the parameter set makes them: flapping blades, a linear inflow, the dynamic
+    stall; the C header leaves those out), power, CT, CP and the flags of every node, the
+    propeller, parameters, model and version that made it, and its measured interpolation
+    error (the full model at random off-grid points). Evaluate it with propmap.RotorMap
+    (Python) or the C header (--format c); docs/simulators.md.
     """
     ctx = click.get_current_context()
     if check_file is not None:
@@ -433,8 +435,9 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
         click.echo(f"  {'':<16}{'cubic rms':>10}{'max':>8}{'max flagged':>13}{'linear rms':>12}{'max':>8}"
                    f"{'max flagged':>13}   normalised by")
         norms = {"thrust": "static thrust", "drag": "largest drag", "torque": "static torque",
-                 "rolling_moment": "largest M_R", "power": "static power"}
-        for k, norm in norms.items():
+                 "rolling_moment": "largest M_R", "side_force": "largest Y", "pitching_moment": "largest M_P",
+                 "power": "static power"}
+        for k, norm in ((k, n) for k, n in norms.items() if f"check_cubic_{k}_rms" in a):
             c, lin = (f"check_{m}_{k}" for m in ("cubic", "linear"))
             click.echo(f"  {k:<16}{_pct(a[c + '_rms'], 10)}{_pct(a[c + '_max'], 8)}{_pct(a[c + '_max_flagged'], 13, 2)}"
                        f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 8)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
@@ -562,6 +565,10 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
         raise click.exceptions.Exit(CHECK_FAILED)
 
 
+#: the variables a map's check measures (the side loads where the map holds them)
+CHECKED = ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "power")
+
+
 def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
     stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
     click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
@@ -573,7 +580,7 @@ def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
     for method in ("cubic", "linear"):
         p = f"check_{method}_"
         click.echo(f" {method}:")
-        for k in ("thrust", "drag", "torque", "rolling_moment", "power"):
+        for k in (k for k in CHECKED if f"{p}{k}_rms" in res):
             click.echo(f"  {k:<16} max {_pct(res[f'{p}{k}_max'])} ({_pct(stored.get(f'{p}{k}_max', nan))}), "
                        f"rms {_pct(res[f'{p}{k}_rms'])} ({_pct(stored.get(f'{p}{k}_rms', nan))})")
 

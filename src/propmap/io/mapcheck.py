@@ -11,7 +11,8 @@ axis incidence_deg          [0, 180] deg
 nodes                       at least 2 per axis, at most 20,000,000 in all (MAX_NODES)
 loads                       finite at every converged node; at least one converged node;
                             |thrust|, |drag| <= 1e5 N, |torque|, |rolling_moment| <= 1e4 N m
-                            (the load data files' ranges)
+                            (the load data files' ranges); side_force (<= 1e5 N) and
+                            pitching_moment (<= 1e4 N m) both or neither (SIDE_LOADS)
 flags                       boolean (or 0/1)
 diameter_m                  [0.0127, 2.54] m (the CLI's --diameter-in range, 0.5-100 in)
 n_blades                    an integer in [1, 100] (the PE0 reader's range)
@@ -38,17 +39,21 @@ import numpy as np
 
 from ..core.geometry import _real
 
-__all__ = ["DIMS", "LOADS", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX", "check_propeller",
-           "check_attributes", "check_dataset", "check_integer", "map_model"]
+__all__ = ["DIMS", "LOADS", "SIDE_LOADS", "map_loads", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX",
+           "check_propeller", "check_attributes", "check_dataset", "check_integer", "map_model"]
 
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
 DIMS = ("rpm", "airspeed", "incidence_deg")
 #: the loads a map interpolates, the derived variables and the node flags
 LOADS = ("thrust", "drag", "torque", "rolling_moment")
+#: the side force and pitching moment, which a map holds where its parameter set makes them (blade flapping, a
+#: linear inflow, the dynamic stall: RotorOptions.side_load_sources); a map without them has none
+SIDE_LOADS = ("side_force", "pitching_moment")
 DERIVED = ("power", "CT", "CP")
 FLAGS = ("converged", "vortex_ring", "multiple_roots", "reverse_flow")
-UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W", "CT": "1", "CP": "1",
+UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "side_force": "N",
+         "pitching_moment": "N m", "power": "W", "CT": "1", "CP": "1",
          "rpm": "rpm", "airspeed": "m/s", "incidence_deg": "degree", "omega": "rad/s", "incidence": "rad"}
 
 
@@ -64,8 +69,10 @@ N_BLADES_RANGE = (1, 100)
 MAX_STATIONS = 10_000
 CHECK_POINTS_MAX = 1_000_000
 #: largest |value| of each load at a node (the load data files' ranges, identify.csvfile.RANGES)
-LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4}
-_CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|power)_(rms|max|max_flagged)")
+LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4, "side_force": 1e5,
+               "pitching_moment": 1e4}
+_CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|side_force|pitching_moment|power)_"
+                        r"(rms|max|max_flagged)")
 _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_label", "params_json", "model",
          "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note",
          "model_uncertainty_axial", "model_uncertainty_off_axis")
@@ -158,9 +165,33 @@ def _check_axis(ds, d: str) -> None:
         raise ValueError(f"axis {d} must be in {UNITS[d]!r}, its units attribute says {_short(units)}")
 
 
+def map_loads(ds) -> tuple[str, ...]:
+    """The loads a map holds: LOADS, and SIDE_LOADS where it has them.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A rotor map.
+
+    Returns
+    -------
+    tuple of str
+
+    Raises
+    ------
+    ValueError
+        One of the side force and the pitching moment without the other.
+    """
+    present = [k for k in SIDE_LOADS if k in ds.data_vars]
+    if present and len(present) != len(SIDE_LOADS):
+        raise ValueError(f"a map holds both of {', '.join(SIDE_LOADS)} or neither, this one {present[0]} only")
+    return LOADS + tuple(present)
+
+
 def _check_variables(ds) -> np.ndarray:
     """The checks of the map's variables; returns its converged-node mask."""
-    for k in (*LOADS, *FLAGS, *(v for v in DERIVED if v in ds)):
+    loads = map_loads(ds)
+    for k in (*loads, *FLAGS, *(v for v in DERIVED if v in ds)):
         if set(ds[k].dims) != set(DIMS) or ds[k].ndim != 3:
             raise ValueError(f"variable {k} must have the dimensions {', '.join(DIMS)}, has {', '.join(ds[k].dims)}")
         kind = ds[k].dtype.kind
@@ -175,7 +206,7 @@ def _check_variables(ds) -> np.ndarray:
     converged = ds["converged"].transpose(*DIMS).values.astype(bool)
     if not converged.any():
         raise ValueError("no node of the map converged: nothing to interpolate")
-    for k in LOADS:
+    for k in loads:
         v = ds[k].transpose(*DIMS).values.astype(float)
         bad = converged & ~np.isfinite(v)
         if bad.any():

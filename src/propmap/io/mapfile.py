@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, _short, check_dataset, check_propeller,
+from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, _short, check_dataset, check_propeller,
                        map_model)
 
 __all__ = ["MAX_NODES", "check_dataset", "check_propeller", "map_model", "map_props", "read_dataset", "read_sidecar",
@@ -79,7 +79,7 @@ def _layout(path, where: str) -> list[str]:
     map's or declares more than MAX_NODES nodes. Returns the variables not to read."""
     import netCDF4
 
-    wanted = {*LOADS, *DERIVED, *FLAGS, *DIMS, "omega", "incidence", "prop"}
+    wanted = {*LOADS, *SIDE_LOADS, *DERIVED, *FLAGS, *DIMS, "omega", "incidence", "prop"}
     with netCDF4.Dataset(path, "r") as nc:
         sizes = {name: len(dim) for name, dim in nc.dimensions.items()}
         variables = {name: tuple(v.dimensions) for name, v in nc.variables.items()}
@@ -107,7 +107,7 @@ def _probe_child(path, conn) -> None:
     try:
         import netCDF4
 
-        wanted = {*LOADS, *DERIVED, *FLAGS, *DIMS, "omega", "incidence", "prop"}
+        wanted = {*LOADS, *SIDE_LOADS, *DERIVED, *FLAGS, *DIMS, "omega", "incidence", "prop"}
         with netCDF4.Dataset(path, "r") as nc:
             for name, var in nc.variables.items():
                 if name in wanted and math.prod(var.shape) <= MAX_NODES:

@@ -16,8 +16,9 @@ radius. Sources of the model forms (each checked against the simulator's source)
   D = k_d Omega V_ip, yaw moment rotor_dir k_m Omega^2 about +z, flapping moment
   -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
   flapping blades); propmap's model with rigid blades and uniform inflow (the defaults) has
-  none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping or a
-  linear inflow model is warned about: its pitching moment and side force are left out),
+  none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping, a linear
+  inflow model or the dynamic stall is warned about: its pitching moment and side force are
+  left out),
   and propmap's rolling moment M_R (about e_ip) has no RotorPy term: its error is reported.
   RotorPy's ``rotor_directions`` entry is the sign of the reaction torque on the body about
   +z: -spin in propmap's convention
