@@ -82,7 +82,7 @@ def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_pa
     cells = rows[-1].split(",")
     cells[k] = ""
     path.write_text("\n".join(rows[:-1] + [",".join(cells)]) + "\n", encoding="utf-8")
-    with pytest.raises(DataError, match="thrust.*empty"):
+    with pytest.raises(DataError, match=r"column .Thrust \(gf\). is empty"):
         read_loads(path)
 
 

@@ -239,9 +239,17 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
     from ..io.catalogue import catalogue, get_entry
     from ..io.readers import looks_like_uiuc
 
+    def refuse_stand_options(what: str) -> None:  # options of a stand's CSV that would be ignored
+        for option, value in (("--rpm-source", rpm_source), ("--pole-pairs", pole_pairs)):
+            if value is not None:
+                raise InputError(f"{option}: applies to a thrust-stand CSV with optical or electrical speed "
+                                 f"columns; SOURCE is {what}, whose rotation speed is the measured rpm")
+
     if len(sources) == 1 and sources[0] in catalogue():
-        if prop_spec is not None and prop_spec != sources[0]:
-            raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller; --prop must be omitted")
+        if prop_spec is not None:
+            raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller, fitted with its own "
+                             "geometry; --prop must be omitted")
+        refuse_stand_options(f"the catalogue propeller {sources[0]!r} (UIUC data)")
         entry = get_entry(sources[0])
         prop = prop_choice.load(sources[0])  # refuses both: the catalogue geometry fixes them
         return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
@@ -259,6 +267,7 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
         if not other:
+            refuse_stand_options("UIUC-format data")
             _warn_other_propeller(sources, prop)
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
         if len(sources) > 1:
@@ -366,11 +375,16 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         click.echo(f"propmap: note: {note}", err=True)
     air = _file_air(data, air, air_choice)
     check_section_match(prop, base_label)
+    qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
+    missing = [q for q in (qty or ()) if q not in data.measured]
+    if missing:
+        raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
+                         f"{', '.join(data.measured)})")
     if entry is None:
         from ..identify.data import DataError, sanity_check
 
         try:
-            for w in sanity_check(data, prop, air=air):
+            for w in sanity_check(data, prop, air=air, quantities=qty):
                 warn(w)
         except DataError as exc:
             if not skip_sanity_check:
@@ -387,11 +401,6 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         population = population_without(without=entry.name)
         if base_spec is None:
             base, base_label = generic_without(entry.name)
-    qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
-    missing = [q for q in (qty or ()) if q not in data.measured]
-    if missing:
-        raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
-                         f"{', '.join(data.measured)})")
     groups = set(data.group)
     unknown = [h for h in held if h not in groups]
     if unknown:

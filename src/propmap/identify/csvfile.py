@@ -138,7 +138,8 @@ class _Csv:
                 raise self.error(f"column {j} has a name of {len(c)} characters (at most {MAX_NAME})",
                                  self.header_line)
             if c and c in seen:
-                raise self.error(f"column {_short(c)} appears twice (columns {seen[c]} and {j}); remove one",
+                raise self.error(f"column {_short(self.header[j - 1])} appears twice (columns {seen[c]} and {j}); "
+                                 "remove one",
                                  self.header_line)
             seen[c] = j
         self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
@@ -194,7 +195,7 @@ class _Csv:
                     nums[c].append(math.nan)
                     continue
                 if not cell:
-                    raise self.error(f"column {_short(c)} is empty (missing value)", line)
+                    raise self.error(f"column {_short(self.header[j])} is empty (missing value)", line)
                 number = cell
                 if self.sep != ",":
                     number = self._decimal_comma(c, cell, line, marks)
@@ -204,9 +205,10 @@ class _Csv:
                     unit_like = re.search(r"[a-zA-Z%]", cell) and cell.lower() not in MISSING_MARKS
                     hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
                             "'thrust (N)', and remove the row)" if not len(lines) and unit_like else "")
-                    raise self.error(f"column {_short(c)}: {_short(cell)} is not a number{hint}", line) from None
+                    raise self.error(f"column {_short(self.header[j])}: {_short(cell)} is not a number{hint}",
+                                     line) from None
                 if not math.isfinite(x):
-                    raise self.error(f"column {_short(c)} is {_short(cell)}, not a finite number", line)
+                    raise self.error(f"column {_short(self.header[j])} is {_short(cell)}, not a finite number", line)
                 nums[c].append(x)
             for c in texts:
                 j = self.index[c]

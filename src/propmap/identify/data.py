@@ -171,7 +171,7 @@ _UNIT_SLIPS = [
 ]
 
 
-def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None) -> list[str]:
+def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None, quantities=None) -> list[str]:
     """Refuse load data that cannot be this propeller's in these units; warn of risks.
 
     The measured thrust and torque are compared with the model's at the measured operating
@@ -189,6 +189,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         The model compared with (default: the generic set).
     air : Air, optional
         Default: the set's.
+    quantities : sequence of str, optional
+        The quantities to be fitted (default: every measured one): a measured quantity left
+        out of the fit (a stand's torque column of zeros) is not held to the model.
 
     Returns
     -------
@@ -210,6 +213,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
 
     params = params or generic_params()
     air = params.air if air is None else air
+    checked = tuple(data.measured) if quantities is None else tuple(quantities)
     warnings_ = []
     tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),
                                 data.airspeed * np.cos(data.incidence))) / air.speed_of_sound)
@@ -227,7 +231,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         r = loads_at(omega) if r is None else r
         out = {}
         for key, model, f in (("thrust", r.thrust, fT), ("torque", r.torque, fQ)):
-            if key not in data.measured:
+            if key not in data.measured or key not in checked:
                 continue
             ok = np.isfinite(model) & (np.abs(model) > 0.05 * np.nanmax(np.abs(model)))
             if ok.sum() >= 2:
@@ -271,6 +275,11 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
                       f"--pole-pairs {pp}, or the optical speed)")
     said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
+    absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
+    if absent:  # a column of zeros: a sensor the stand does not have
+        fit = [k for k in data.measured if k not in absent]
+        causes.insert(0, f"{' and '.join(absent)} not measured ({absent[0]} is 0 at every point: leave it out of the "
+                         f"fit, --quantities {','.join(fit) or 'thrust'})")
     raise DataError(f"load data: {data.source}: the measured {said} what the model predicts for {propeller.name} "
                     f"at the measured rpm (expected within {1 / SANITY_FACTOR:.2g}-{SANITY_FACTOR:g}x): "
                     + (f"likely {' or '.join(causes[:2])}" if causes else

@@ -30,6 +30,7 @@ from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, differentiable, rotor_loads
 from ..core.vector import rotor_wrench
 from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
+from .load_data import STATIC_AIRSPEED
 from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions,
@@ -309,7 +310,9 @@ def _load_norms(data: LoadData, propeller, keys, air: Air):
     scales = {k: float(np.sqrt(np.mean((data.measured[k] / norm[k]) ** 2))) for k in keys}
     for k, s in scales.items():
         if not (np.isfinite(s) and s > 0):
-            raise ValueError(f"measured {k} is zero everywhere or not finite; cannot scale its residuals")
+            others = [q for q in keys if q != k]
+            raise ValueError(f"measured {k} is zero everywhere or not finite, so it cannot be fitted: fit "
+                             f"{', '.join(others) or 'another quantity'} alone (quantities=, the CLI's --quantities)")
     return norm, scales
 
 
@@ -322,16 +325,17 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 
 def _data_kind(data: LoadData) -> str:
-    """"static" (all airspeeds 0), "collective" (all airspeeds 0, several collectives),
-    "few_rates" (moving points at < MIN_RATES_FOR_RE rotation rates, :func:`_sweep_rates`, and
-    no static run spanning STATIC_RPM_SPAN) or "rates"."""
-    moving = data.airspeed > 0
+    """"static" (all airspeeds static: at most STATIC_AIRSPEED, a stand's pitot noise included),
+    "collective" (static, several collectives), "few_rates" (moving points at < MIN_RATES_FOR_RE
+    rotation rates, :func:`_sweep_rates`, and no static run spanning STATIC_RPM_SPAN, within a
+    relative 1e-6 so that a unit's rounding does not decide) or "rates"."""
+    moving = data.airspeed > STATIC_AIRSPEED
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
         return "collective" if swept else "static"
     rates = _sweep_rates(data)
     static = data.omega[~moving]
-    spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN
+    spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN * (1.0 - 1e-6)
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
@@ -353,8 +357,9 @@ def _sweep_rates(data: LoadData) -> int:
     throttle whose rpm drifts as the tunnel speeds up, its Reynolds effects confounded with J),
     a run at several rates apart (a CSV without groups) counts each, and runs at rates in steps
     finer than 3% count by the span they cover (all 147 catalogue propellers count as with the
-    neighbouring points compared, the rule before 2026-11-26)."""
-    moving = data.airspeed > 0
+    neighbouring points compared, the rule before 2026-11-26). Points at most STATIC_AIRSPEED
+    are static."""
+    moving = data.airspeed > STATIC_AIRSPEED
     if not moving.any():
         return 0
     w, g = data.omega[moving], data.group[moving]

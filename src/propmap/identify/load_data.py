@@ -104,3 +104,7 @@ class LoadData:
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")
+#: a point at an airspeed up to this [m/s] is static: for the thrust's sign rule of a CSV
+#: (loads_csv.read_loads) and for which parameters a fit frees (fit._data_kind: a stand's pitot
+#: noise does not make its static run a sweep)
+STATIC_AIRSPEED = 0.3

@@ -13,10 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from .csvfile import RANGES, RPM, DataError, _Csv
-from .load_data import LOAD_KEYS, LoadData
-
-#: a point at an airspeed up to this [m/s] is static for the thrust's sign rule (:func:`read_loads`)
-STATIC_AIRSPEED = 0.3
+from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData
 
 
 def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole_pairs: int | None = None) -> LoadData:
@@ -135,6 +132,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                         f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
                         "to use the electrical one)")
     rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
+    if use == "rpm_optical" and rpm_source is None and "rpm_electrical" in v:
+        rpm = _optical_gaps(rpm, v["rpm_electrical"], cm.column("rpm_optical"), notes)
+    if rpm.size and not np.any(np.nan_to_num(rpm) != 0):
+        raise DataError(f"{what}: {p}: the rotation speed column {cm.column(use)!r} is empty or 0 in every row"
+                        + (f" (chosen by rpm_source={rpm_source!r}, --rpm-source)" if rpm_source else ""))
     for q in speeds:
         v.pop(q)
     v["rpm"] = rpm
@@ -156,7 +158,13 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # stopped motor: rows skipped
     stopped = ~(np.nan_to_num(rpm) > 0)
     if stopped.any():
-        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor")
+        running = 0
+        if "thrust" in v:  # a speed of 0 with a thrust: the reading is missing, not the motor stopped
+            t = np.abs(np.nan_to_num(v["thrust"]))
+            running = int(np.sum(stopped & (t > 0.05 * max(float(t.max(initial=0.0)), 1e-300))))
+        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor"
+                     + (f"; {running} of them with a thrust above 5% of the largest: a speed reading missing while "
+                        "the motor ran (those points are lost)" if running else ""))
         keep = ~stopped
         v = {k: a[keep] for k, a in v.items()}
         lines = lines[keep]
@@ -215,6 +223,31 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes), air_density)
+
+
+#: an optical probe's gaps are filled from the electrical speed where the two agree within this (median ratio)
+OPTICAL_ELECTRICAL_TOL = 0.03
+
+
+def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, notes: list) -> np.ndarray:
+    """The optical speed with its dropouts (0 or empty where the electrical speed runs) taken
+    from the electrical one, where the two agree elsewhere (median ratio within
+    OPTICAL_ELECTRICAL_TOL: the stand's motor-pole setting is right), with a note."""
+    o, e = np.nan_to_num(optical), np.nan_to_num(electrical)
+    gap = (o <= 0) & (e > 0)
+    both = (o > 0) & (e > 0)
+    if not gap.any() or both.sum() < 3:
+        return optical
+    ratio = float(np.median(e[both] / o[both]))
+    if abs(ratio - 1.0) > OPTICAL_ELECTRICAL_TOL:
+        notes.append(f"{column!r} reads 0 or nothing in {int(gap.sum())} rows where the electrical speed runs; not "
+                     f"filled from it, which reads {ratio:.3g} times the optical speed elsewhere (the stand's "
+                     "motor-pole setting?)")
+        return optical
+    notes.append(f"{column!r} reads 0 or nothing in {int(gap.sum())} rows where the electrical speed runs (a probe "
+                 f"dropout): those rows take the electrical speed, within {abs(ratio - 1.0):.1%} of the optical one "
+                 "elsewhere (median)")
+    return np.where(gap, electrical, optical)
 
 
 #: the air densities a load file's density column may give [kg/m^3] (sea level 1.225; 5 km 0.74)

@@ -81,8 +81,10 @@ never converted), finite, and within its range: the cambered keys as ``CamberedP
 the paper's keys and the air within :data:`FILE_RANGES`, which only refuse absurd values
 (``cl1 = 1e300``): ``cl1``, ``cl2``, ``cd``, ``cp_blasius`` in [0, 100], ``cd0`` in
 [0, 10], ``M`` in (0, 1e6], ``alpha0_deg`` in (0, 90); ``rho`` in [0.001, 2000] kg/m^3 (Mars' surface air is 0.02),
-``mu`` in (0, 10] Pa s, ``speed_of_sound`` in [1, 1e4] m/s (a speed of sound near 0, 1e-300,
-made the compressibility term 1/a^2 divide by zero; no gas is slower than about 100 m/s).
+``mu`` in (0, 10] Pa s, ``speed_of_sound`` in [100, 1e4] m/s (no gas is slower than about
+100 m/s: sulphur hexafluoride 134 m/s, dry air at -120 degC 248 m/s; below, the compressibility
+term 1/a^2 grows without meaning, and a speed of sound near 0, 1e-300, divided by zero). The
+text keys (``comment``, ``source``) must be TOML strings.
 """
 
 from __future__ import annotations
@@ -127,7 +129,7 @@ FILE_RANGES = {
     "cambered": {"alpha_L0_deg": (-20.0, 10.0, False, False, "deg"),
                  "alpha_L0_re_deg": (-5.0, 5.0, False, False, "deg"), **_ROTOR_RANGES},
     "air": {"rho": (1e-3, 2000.0, False, False, "kg/m^3"), "mu": (0.0, 10.0, True, False, "Pa s"),
-            "speed_of_sound": (1.0, 1e4, False, False, "m/s")},
+            "speed_of_sound": (100.0, 1e4, False, False, "m/s")},
 }
 
 
@@ -215,6 +217,9 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
         shown = ", ".join(short_repr(k, 40) if not k.isidentifier() else k for k in unknown[:5])
         more = f" and {len(unknown) - 5} more" if len(unknown) > 5 else ""
         raise ValueError(f"{where}: unknown key(s) {shown}{more} for section_model {model!r}")
+    for key in ("comment", "source"):
+        if key in data and not isinstance(data[key], str):
+            raise ValueError(f"{where}: {key} must be text (a TOML string), got {short_repr(data[key])}")
     types = {f.name: f.type if isinstance(f.type, str) else f.type.__name__ for f in fields(_record(model))}
     types = {k: types[n] for k, n in keys.items()}  # file key -> "float", "bool" or "str"
     ranges = {**FILE_RANGES[model], **FILE_RANGES["air"]}
@@ -228,9 +233,9 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
         elif key in choices and data[key] not in choices[key]:
             raise ValueError(f"{where}: {key} must be one of {', '.join(choices[key])}, got {short_repr(data[key])}")
     _radian_like(data, where)
-    kw = {}
+    kw, filled = {}, None
     if fill:
-        kw = _generic_fill(data, keys, where)
+        kw, filled = _generic_fill(data, keys, where)
     for key, name in keys.items():
         if key not in data:
             continue
@@ -245,6 +250,10 @@ def params_from_dict(data: dict, *, where: str = "parameters", label: str = "", 
         raise ValueError(f"{where}: {exc}") from None
     body_from_dict(data, where=where)  # validated here too, so that every reader refuses a bad table
     coverage_from_dict(data, where=where)
+    if filled:  # said once the file is known to be valid (a refused file gets its error alone)
+        import warnings
+
+        warnings.warn(filled, UserWarning, stacklevel=3)
     return params
 
 
@@ -324,20 +333,19 @@ def set_coverage(label: str) -> dict | None:
 OFF_WHEN_ABSENT = ("dynamic_stall",)
 
 
-def _generic_fill(data: dict, keys: dict, where: str) -> dict:
-    """The generic set's values (field name -> value) of the cambered keys ``data`` lacks,
-    and a warning naming them (OFF_WHEN_ABSENT: left at the record's default, 0, unnamed)."""
-    import warnings
-
+def _generic_fill(data: dict, keys: dict, where: str) -> tuple[dict, str | None]:
+    """The generic set's values (field name -> value) of the cambered keys ``data`` lacks, and
+    the warning naming them, or None (OFF_WHEN_ABSENT: left at the record's default, 0, unnamed)."""
     from .calibration import generic_params
 
     g = generic_params()
     missing = [k for k in keys if k not in data and k not in OFF_WHEN_ABSENT]
+    message = None
     if missing:
         given = sorted(k for k in data if k in keys or k in AIR_KEYS)
-        warnings.warn(f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
-                      f"{', '.join(given) or 'no model key'})", UserWarning, stacklevel=4)
-    return {keys[k]: getattr(g, keys[k]) for k in missing}
+        message = (f"{where}: {', '.join(missing)} not in the file: taken from the generic set (the file gives "
+                   f"{', '.join(given) or 'no model key'})")
+    return {keys[k]: getattr(g, keys[k]) for k in missing}, message
 
 
 def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
