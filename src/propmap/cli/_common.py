@@ -268,6 +268,23 @@ def _is_file(p) -> bool:
 _PACKAGE_DATA = os.path.realpath(Path(__file__).resolve().parents[1] / "data")
 
 
+def vehicle_inputs(vehicle) -> list:
+    """The files a vehicle TOML names (its rotors' geometry and parameter files: ``[[rotors]]
+    propeller`` and ``params`` entries that are not catalogue names), resolved relative to the
+    vehicle file: inputs of any command given the vehicle, never to be written over. Best
+    effort: the vehicle reader reports a malformed file; None or a missing file gives []."""
+    import tomllib
+
+    if vehicle is None:
+        return []
+    try:
+        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
+        specs = [r.get(k) for r in rotors if isinstance(r, dict) for k in ("propeller", "params")]
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
+        return []
+    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
+
+
 def check_outputs(outputs, inputs) -> None:
     """Refuse, before any work, output paths that would lose data or fail late.
 

@@ -8,7 +8,7 @@ import click
 
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs,
                       check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      with_prop_options)
+                      vehicle_inputs, with_prop_options)
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
 #: --target choices: the targets and their former names (gazebo: the PX4 classic plugin; gill2019: the multinomial)
@@ -97,7 +97,8 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
     if not 20 <= n_points <= 1_000_000:
         raise InputError(f"--points must be in [20, 1000000], got {n_points}")
-    check_outputs([("--out", out), ("--out (report)", report_path(out))], [params_spec, prop, vehicle])
+    check_outputs([("--out", out), ("--out (report)", report_path(out))],
+                  [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
@@ -108,7 +109,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         from .flight import _vehicle
         from ..vehicle import hover_omega
 
-        veh = _vehicle(vehicle)
+        veh = _vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (RotorPy's c_D)
         if target == "rotorpy":
             try:
                 check_rotorpy_vehicle(veh)

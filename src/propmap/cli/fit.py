@@ -10,8 +10,8 @@ from pathlib import Path
 import click
 
 from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match,
-                      load_params, option_group, parse_names, refuse_copies, resolve_air, warn, with_air_options,
-                      with_prop_options)
+                      load_params, option_group, parse_names, refuse_copies, resolve_air, vehicle_inputs, warn,
+                      with_air_options, with_prop_options)
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -152,20 +152,6 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     return report
 
 
-def _vehicle_geometry_files(vehicle: Path) -> list:
-    """The geometry files a vehicle TOML names (its ``[[rotors]] propeller`` entries that are
-    not catalogue names), resolved relative to the vehicle file; best effort (the vehicle
-    reader reports malformed files)."""
-    import tomllib
-
-    try:
-        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
-        specs = [r.get("propeller") for r in rotors if isinstance(r, dict)]
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
-        return []
-    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
-
-
 def _run_fit(fn, *args, **kwargs):
     from ..core.solver import SolverError
 
@@ -207,7 +193,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
     # the vehicle's propellers may be geometry files (relative to the vehicle file): inputs too
-    check_outputs(_out_files(out), _vehicle_geometry_files(vehicle))
+    check_outputs(_out_files(out), vehicle_inputs(vehicle))
     try:
         d = read_level_flight(data, veh)
     except DataError as exc:

@@ -8,16 +8,38 @@ from pathlib import Path
 import click
 
 from ._common import (InputError, PathArg, check_outputs, coverage_messages, envelope_extremes, load_params,
-                      parse_names, refuse_copies, resolve_air, with_air_options)
+                      parse_names, refuse_copies, resolve_air, vehicle_inputs, with_air_options)
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
-def _vehicle(path: Path):
+def _vehicle(path: Path, params_spec=None):
+    """The vehicle file's vehicle; with ``params_spec`` a parameter file whose ``[body]`` table a
+    flight fit wrote (the airframe drag, the centre of mass, the rotors' wake interference), the
+    vehicle with those in place of the vehicle file's (what `wrench`, `export-sim --vehicle` and
+    the C vehicle export all model)."""
+    from dataclasses import replace
+
+    from ..identify.flight import shift_centre_of_mass
+    from ..io.params_file import ParamsFileError, read_body
     from ..vehicle import VehicleFileError, read_vehicle
 
     try:
-        return read_vehicle(path)
+        veh = read_vehicle(path)
     except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
+    if params_spec is None or not Path(params_spec).is_file():
+        return veh
+    try:
+        table = read_body(params_spec)
+    except ParamsFileError as exc:
+        raise InputError(f"--params: {exc}") from None
+    if table is None:
+        return veh
+    veh = replace(veh, body_drag=table.drag)
+    if table.centre_of_mass is not None:
+        veh = shift_centre_of_mass(veh, table.centre_of_mass)
+    if table.rotor_interference is not None:
+        veh = replace(veh, rotor_interference=table.rotor_interference)
+    return veh
 
 
 MOTOR_MAP_HELP = ("PX4 ULog without esc_status rpm: the motor speed [rpm] = A + B * actuator_outputs output, given "
@@ -49,18 +71,6 @@ def _logs(paths, motor_map=None, n_motors=None):
         except FlightLogError as exc:
             raise InputError(f"LOG: {exc}") from None
     return logs
-
-
-def _vehicle_inputs(vehicle: Path) -> list:
-    """The files a vehicle TOML names (geometry and parameter files), relative to it: inputs too."""
-    import tomllib
-
-    try:
-        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
-        specs = [r.get(k) for r in rotors if isinstance(r, dict) for k in ("propeller", "params")]
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
-        return []
-    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
 
 
 def _samples(logs, veh, rate_hz):
@@ -170,16 +180,19 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
 
     check_outputs(_flight_out_files(out), [*log_paths, vehicle, base_spec])
     veh = _vehicle(vehicle)
-    check_outputs(_flight_out_files(out), _vehicle_inputs(vehicle))
+    check_outputs(_flight_out_files(out), vehicle_inputs(vehicle))
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
     air = resolve_air(air, air_choice)
     logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))
+    refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
     names = [lg.name for lg in logs]
     if len(set(names)) != len(names):
-        raise InputError("LOG: two logs have the same file name; give each log once")
-    refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
+        twin = next(n for n in names if names.count(n) > 1)
+        where = ", ".join(str(p) for p, n in zip(log_paths, names) if n == twin)
+        raise InputError(f"LOG: two logs are named {twin!r} ({where}): the logs are told apart by their file name "
+                         "(--holdout, the report's per-log rows); link or copy one under another name")
     veh = _one_set(veh, "fit flight fits one set for every rotor")
     held = parse_names("--holdout", holdout, what="log") or ()
     unknown = [h for h in held if Path(h).name not in names]
@@ -340,31 +353,20 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     the rms errors. The rotors are solved at the flight fit's 24 x 8 nodes (within 0.1% of
     the rotors' thrust of 48 x 16; docs/flight.md).
     """
-    from dataclasses import replace
-
     from ..io.atomic import atomic_write
-    from ..identify.flight import flight_errors, shift_centre_of_mass
-    from ..io.params_file import ParamsFileError, read_body
+    from ..identify.flight import flight_errors
 
+    if str(out) == "-":
+        raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
+                         "a file (PRED.csv)")
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
-    veh = _vehicle(vehicle)
-    check_outputs([("--out", out)], _vehicle_inputs(vehicle))
+    veh = _vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag and centre of mass
+    check_outputs([("--out", out)], vehicle_inputs(vehicle))
     params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
     air = resolve_air(air, air_choice)
     body = veh.body_drag
     if params_spec is not None:
         veh = _one_set(veh, "--params gives every rotor's set")
-    if params_spec is not None and Path(params_spec).is_file():
-        try:
-            table = read_body(params_spec)
-        except ParamsFileError as exc:
-            raise InputError(f"--params: {exc}") from None
-        if table is not None:
-            body = table.drag
-            if table.centre_of_mass is not None:
-                veh = shift_centre_of_mass(veh, table.centre_of_mass)
-            if table.rotor_interference is not None:
-                veh = replace(veh, rotor_interference=table.rotor_interference)
     (log,) = _logs([log_path], _motor_map(motor_map), len(veh.rotors))
     samples = _samples([log], veh, 1e4)  # every sample
     from ..vehicle import vehicle_wrench

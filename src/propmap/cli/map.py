@@ -13,7 +13,7 @@ import click
 
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
                       check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params,
-                      option_group, parse_names, resolve_air, set_collective_deg, with_air_options,
+                      option_group, parse_names, resolve_air, set_collective_deg, vehicle_inputs, with_air_options,
                       with_prop_options)
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
@@ -195,13 +195,13 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         raise InputError("--plot-rpm applies to --plot")
     if out.suffix.lower() != FORMATS[fmt]:
         raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} (or choose --format)")
-    inputs = [params_spec, prop, c_header.vehicle]
+    inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
     if c_header.vehicle is not None:
         from .flight import _vehicle
 
-        veh = _vehicle(c_header.vehicle)
+        veh = _vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
 
     import numpy as np
 

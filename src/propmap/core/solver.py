@@ -7,8 +7,10 @@ docs/numerics.md and are listed in docs/conventions.md.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import operator
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -156,6 +158,19 @@ def _scalar(name: str, value) -> float:
 
 _REAL_SCALARS = (float, int, np.floating, np.integer)
 
+#: the start of rotor_loads' warning of a supersonic blade tip (supersonic_tips_allowed filters it)
+SUPERSONIC_TIP = "a blade tip meets the air at Mach"
+
+
+@contextlib.contextmanager
+def supersonic_tips_allowed():
+    """Silence :func:`rotor_loads`' warning of a supersonic blade tip, for callers that probe
+    rotation rates on purpose (a hover search doubling its bracket, a check of the units of
+    measured data, which says its own): the user's rates are warned of, theirs are not."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=SUPERSONIC_TIP, category=UserWarning)
+        yield
+
 
 _UNCHECKED = object()
 
@@ -280,6 +295,13 @@ def rotor_loads(
     SolverError
         A root solve failed and ``on_failure="raise"``; the message names the point,
         the radius and the reason.
+
+    Warns
+    -----
+    UserWarning
+        A blade tip meets the air above Mach 1 (Omega R + V sin(beta) and V cos(beta)): the
+        model's compressibility stops at Mach 0.9, and such a rate is most often one in rpm
+        given as rad/s.
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
@@ -296,6 +318,7 @@ def rotor_loads(
             vs0 = 0.0
         x = np.array([w0, v0, b0, 0.0 if collective is None else _scalar("collective", collective), vs0, vc0])
         om1, V1, b1, c1, Vs, Vc = x[0:1], x[1:2], x[2:3], x[3:4], x[4:5], x[5:6]  # one-point views
+        tip = math.hypot(w0 * propeller.radius + abs(vs0), vc0)  # the blade tip's airspeed, for the Mach check
     else:
         arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
         if collective is not None:
@@ -319,7 +342,11 @@ def rotor_loads(
         Vs = np.ascontiguousarray(V1 * np.sin(b1))
         Vc = np.ascontiguousarray(V1 * np.cos(b1))
         Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
-
+        tip = float(np.max(np.hypot(om1 * propeller.radius + np.abs(Vs), Vc), initial=0.0))
+    if tip > air.speed_of_sound:  # a rate given in rpm for rad/s, most likely (the model has no supersonic physics)
+        warnings.warn(f"{SUPERSONIC_TIP} {tip / air.speed_of_sound:.2g} (> 1): the model's "
+                      "compressibility stops at Prandtl-Glauert's Mach 0.9, so these loads mean nothing; is omega "
+                      "given in rpm? it is in rad/s (rpm * pi / 30)", UserWarning, stacklevel=2)
     wrt = _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")

@@ -208,7 +208,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         The data are off by more than :data:`SANITY_FACTOR` (the message gives the factor and
         the likely cause).
     """
-    from ..core.solver import rotor_loads
+    from ..core.solver import rotor_loads, supersonic_tips_allowed
     from ..io.calibration import generic_params
 
     params = params or generic_params()
@@ -221,9 +221,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
 
-    def loads_at(omega):
-        return rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                           collective=data.collective)
+    def loads_at(omega):  # (rates in the data's unit, right or wrong: the tip Mach number is said above)
+        with supersonic_tips_allowed():
+            return rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                               collective=data.collective)
 
     at_rpm = loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
 

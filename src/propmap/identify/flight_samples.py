@@ -276,17 +276,18 @@ def _hover_speed(vehicle: Vehicle) -> float:
     kernel the flight commands load anyway: hover_omega's root finder cost `wrench` 0.25 s of
     start-up (SciPy's import and the scalar kernel's cache). 0 where the rotors cannot carry the
     weight within the grid, or a solve fails."""
-    from ..core.solver import Discretization, SolverError, rotor_loads
+    from ..core.solver import Discretization, SolverError, rotor_loads, supersonic_tips_allowed
     from ..io.calibration import generic_params
 
     p = generic_params()
     lift = np.zeros(HOVER_GRID.size)
     try:
-        for r in vehicle.rotors:
-            up = float(r.axis[2]) / float(np.linalg.norm(r.axis))
-            if up > 0:
-                lift += up * rotor_loads(r.propeller, r.params or p, HOVER_GRID, 0.0, 0.0,
-                                         discretization=Discretization(24, 8)).thrust
+        with supersonic_tips_allowed():  # the search grid's top reaches supersonic tips: not a hover, not the user's
+            for r in vehicle.rotors:
+                up = float(r.axis[2]) / float(np.linalg.norm(r.axis))
+                if up > 0:
+                    lift += up * rotor_loads(r.propeller, r.params or p, HOVER_GRID, 0.0, 0.0,
+                                             discretization=Discretization(24, 8)).thrust
     except (SolverError, ValueError, ArithmeticError):
         return 0.0
     k = int(np.argmax(lift >= vehicle.weight)) if np.any(lift >= vehicle.weight) else 0

@@ -110,6 +110,9 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
     quantity, kind = _NAMES[base]
     if kind is None:
         return 1.0
+    if unit is None and kind == "angle" and base != quantity:  # 'incidence': degrees or radians? (1.0 is either)
+        raise error(f"column {name!r} gives no unit: name it {quantity!r} (degrees) or give its unit, e.g. "
+                    f"'{base} (deg)' or '{base} (rad)'")
     if unit is None:
         return UNITS["rotation"]["rads"] if base == "omega" else 1.0
     tok = _token(unit)

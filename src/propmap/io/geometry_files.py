@@ -37,8 +37,9 @@ class GeometryFileError(ValueError):
     """A geometry file is malformed; the message names the file and the problem."""
 
 
-_SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the size from a file name "
-              "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and vp families)")
+#: what a diameter-less geometry file needs (a vehicle file says it in its own key: vehicle/file.py)
+SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the size from a file name "
+             "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and vp families)")
 #: UIUC families whose file names give the diameter and pitch in millimetres
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]
@@ -136,17 +137,17 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     note = ""
     if diameter_in is None:
         if D_name is None:
-            raise GeometryFileError(f"{where}: diameter unknown; {_SIZE_HINT}")
+            raise GeometryFileError(f"{where}: diameter unknown; {SIZE_HINT}")
         lo, hi = NAME_DIAMETER_RANGE_IN
         diameter_in = D_name / 25.4 if unit == "mm" else D_name
         if not (lo <= diameter_in <= hi):
             raise GeometryFileError(
                 f"{where}: diameter {D_name:g} {unit} from the file name is not plausible (a diameter from a name "
-                f"must be in [{lo:g}, {hi:g}] in); {_SIZE_HINT}")
+                f"must be in [{lo:g}, {hi:g}] in); {SIZE_HINT}")
         if unit == "mm":
             note = (f"diameter {D_name:g} mm = {diameter_in:.4g} in from the file name (UIUC family "
                     f"{family!r} gives sizes in millimetres)")
-            warnings.warn(f"{where}: {note}; if that is wrong, {_SIZE_HINT}", UserWarning,
+            warnings.warn(f"{where}: {note}; if that is wrong, {SIZE_HINT}", UserWarning,
                           stacklevel=3)
     else:
         _check_number(diameter_in, "diameter_in", GeometryFileError, where)

@@ -156,7 +156,8 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
                             f"({Path(label).name or 'vehicle file'})."),
            "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; "
            "parasitic drag",
-           f"# c_D = rho (C_D A) / 2 from the vehicle file's drag areas at rho = {rho!r} kg/m^3 (the slipstream",
+           f"# c_D = rho (C_D A) / 2 from the vehicle's drag areas (a flight fit's [body] table where --params gives "
+           f"one) at rho = {rho!r} kg/m^3 (the slipstream",
            "# factor has no RotorPy term).",
            "quad_params = {",
            f"    'mass': {float(vehicle.mass)!r},  # kg",

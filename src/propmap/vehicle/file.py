@@ -204,10 +204,15 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
     except (OSError, ValueError):
         exists = False
     if exists:
+        from ..io.geometry_files import SIZE_HINT
+
         try:
             return read_geometry(local, diameter_in=diameter_in, n_blades=n_blades)
-        except ValueError as exc:
-            raise VehicleFileError(f"{where}: propeller: {exc}") from None
+        except ValueError as exc:  # (the reader's hint names the CLI's size option: a rotor's key is diameter_m)
+            msg = str(exc).replace(SIZE_HINT, "give the rotor's diameter_m [m] (or name the file "
+                                              "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and "
+                                              "vp families)")
+            raise VehicleFileError(f"{where}: propeller: {msg}") from None
     if spec in catalogue():
         if diameter_in is not None or n_blades is not None:
             raise VehicleFileError(f"{where}: blades and diameter_m are for geometry files; {spec!r} is a catalogue "

@@ -39,7 +39,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads,
-                           rotor_loads)
+                           rotor_loads, supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from .jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
@@ -526,9 +526,11 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
 
     def lift(om: float) -> float:
         total = 0.0
-        for r, u in zip(vehicle.rotors, up):
-            p = r.params if r.params is not None else params
-            total += u * float(rotor_loads(r.propeller, p, om, 0.0, 0.0, air=air, discretization=discretization).thrust)
+        with supersonic_tips_allowed():  # the bracket doubles past the hover rate on purpose
+            for r, u in zip(vehicle.rotors, up):
+                p = r.params if r.params is not None else params
+                total += u * float(rotor_loads(r.propeller, p, om, 0.0, 0.0, air=air,
+                                               discretization=discretization).thrust)
         return total - vehicle.weight
 
     hi = 100.0

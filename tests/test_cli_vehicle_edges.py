@@ -1,0 +1,125 @@
+"""Edges of the vehicle commands found by a user-level audit (2026-11-26): a vehicle's own
+propeller file is an input of every command given the vehicle; a flight fit's [body] table
+reaches the simulator exports; `wrench --out -`; two logs of one name; a rate in rpm given as
+rad/s through the API; a diameter-less geometry file in a vehicle file; an angle column
+without its unit."""
+
+import math
+import shutil
+import warnings
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.core.body import BodyDrag
+from propmap.io.params_file import BodyTable, write_params
+from propmap.vehicle import VehicleFileError, hover_omega
+
+EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
+VEHICLE = EXAMPLES / "neurobem_quadrotor.toml"
+GEOMETRY = "neurobem_5.1x4.8_geom.txt"
+
+
+@pytest.fixture()
+def own_vehicle(tmp_path):
+    """The NeuroBEM vehicle beside a copy of its geometry file (the file the audit overwrote)."""
+    shutil.copy(EXAMPLES / GEOMETRY, tmp_path / GEOMETRY)
+    shutil.copy(VEHICLE, tmp_path / "v.toml")
+    return tmp_path / "v.toml", tmp_path / GEOMETRY
+
+
+def test_exports_refuse_to_write_over_the_vehicles_propeller_file(own_vehicle, capsys):
+    vehicle, geometry = own_vehicle
+    before = geometry.read_bytes()
+    # (the geometry renamed with the export's suffix, as a user might have it)
+    json_geom = geometry.with_name("geom.json")
+    shutil.copy(geometry, json_geom)
+    text = vehicle.read_text().replace(GEOMETRY, "geom.json").replace("blades = 3", "blades = 3\ndiameter_m = 0.12954")
+    vehicle.write_text(text)
+    assert main(["export-sim", "apce_8x6", "--target", "multinomial", "--vehicle", str(vehicle), "--hover-rpm",
+                 "8000", "--out", str(json_geom)]) == 2
+    assert "refusing to overwrite an input" in capsys.readouterr().err
+    assert json_geom.read_bytes() == before
+    header = geometry.with_name("nb_geom.h")
+    shutil.copy(geometry, header)
+    vehicle.write_text(text.replace("geom.json", "nb_geom.h"))
+    assert main(["map", str(EXAMPLES / GEOMETRY), "--blades", "3", "--format", "c", "--vehicle", str(vehicle),
+                 "--rpm", "8000:20000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:3", "--out",
+                 str(header)]) == 2
+    assert "refusing to overwrite an input" in capsys.readouterr().err
+    assert header.read_bytes() == before
+
+
+def test_a_flight_fits_airframe_drag_reaches_rotorpys_quad_params(tmp_path, capsys):
+    """export-sim --vehicle --params FIT.toml: the fit's [body] drag areas are RotorPy's c_D, as
+    `wrench` takes them (they were the vehicle file's, 0 here, without a word)."""
+    fit = tmp_path / "fit.toml"
+    write_params(fit, pm.generic_params(), body=BodyTable(BodyDrag((0.05, 0.02, 0.0), 1.0), None, None))
+    out = {}
+    for name, params in (("file", []), ("fit", ["--params", str(fit)])):
+        assert main(["export-sim", str(EXAMPLES / GEOMETRY), "--blades", "3",
+                     "--target", "rotorpy", "--vehicle", str(VEHICLE), *params,
+                     "--out", str(tmp_path / f"{name}.py")]) == 0
+        ns: dict = {}
+        exec((tmp_path / f"{name}.py").read_text(), ns)
+        out[name] = ns["quad_params"]
+    capsys.readouterr()
+    rho = out["fit"]["c_Dx"] / 0.05 * 2
+    assert 1.0 < rho < 1.3
+    assert out["fit"]["c_Dy"] == pytest.approx(0.5 * rho * 0.02) and out["fit"]["c_Dz"] == 0.0
+    assert out["file"]["c_Dx"] != out["fit"]["c_Dx"]
+
+
+def test_wrench_refuses_standard_output_and_twin_log_names_are_explained(tmp_path, capsys, shared_data):
+    log = shared_data / "neurobem_flights" / "bemnn20210218170320seg2.mat"
+    assert main(["wrench", str(log), "--vehicle", str(VEHICLE), "--out", "-"]) == 2
+    assert "'-' (standard output) is not taken here" in capsys.readouterr().err
+    assert not Path("-").exists()
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    other = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    (tmp_path / "a" / "x.mat").symlink_to(log)
+    (tmp_path / "b" / "x.mat").symlink_to(other)
+    assert main(["fit", "flight", str(tmp_path / "a" / "x.mat"), str(tmp_path / "b" / "x.mat"), "--vehicle",
+                 str(VEHICLE), "--out", str(tmp_path / "p.toml")]) == 2
+    err = capsys.readouterr().err
+    assert "two logs are named 'x.mat'" in err and "another name" in err
+
+
+def test_a_supersonic_tip_is_warned_of_by_the_api():
+    """8000 given as rad/s for rpm: the tip at Mach 2.4, loads of 972 N from a 2.5 N propeller;
+    the API said nothing (the CLI warns above Mach 0.7)."""
+    prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    with pytest.warns(UserWarning, match=r"Mach 2.4 \(> 1\).*is omega given in rpm"):
+        pm.rotor_loads(prop, params, 8000.0, 0.0, 0.0)
+    with pytest.warns(UserWarning, match="Mach"):
+        pm.rotor_loads(prop, params, np.array([800.0, 8000.0]), 0.0, 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.rotor_loads(prop, params, 800.0, 20.0, 1.0)
+        heavy = replace(pm.read_vehicle(VEHICLE), mass=40.0)  # hovers near Mach 0.9: its bracket probes past 1
+        assert hover_omega(heavy, pm.generic_params()) * 0.0648 / 340.3 > 0.5
+
+
+def test_a_vehicles_diameter_less_geometry_names_the_vehicle_key(own_vehicle):
+    vehicle, geometry = own_vehicle
+    geometry.rename(geometry.with_name("geom.txt"))
+    vehicle.write_text(vehicle.read_text().replace(GEOMETRY, "geom.txt"))
+    with pytest.raises(VehicleFileError, match=r"give the rotor's diameter_m \[m\]") as info:
+        pm.read_vehicle(vehicle)
+    assert "diameter_in" not in str(info.value)
+
+
+def test_an_angle_column_without_its_unit_is_refused(tmp_path, capsys):
+    (tmp_path / "p.csv").write_text("rpm,airspeed,incidence\n8000,10,1.0\n")
+    assert main(["loads", "apce_8x6", "--points", str(tmp_path / "p.csv"), "--out", str(tmp_path / "o.csv")]) == 2
+    assert "'incidence' gives no unit" in capsys.readouterr().err
+    (tmp_path / "q.csv").write_text("rpm,airspeed,incidence (rad)\n8000,10,1.0\n")
+    assert main(["loads", "apce_8x6", "--points", str(tmp_path / "q.csv"), "--out", str(tmp_path / "o.csv")]) == 0
+    capsys.readouterr()
+    row = (tmp_path / "o.csv").read_text().splitlines()
+    assert len(row) == 2 and math.isclose(float(row[1].split(",")[2]), 1.0)
