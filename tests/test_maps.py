@@ -427,11 +427,15 @@ def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them
     for spin in ("ccw", "cw"):  # the wrench vectors with Y and M_P, as rotor_wrench's
         speed, beta = float(V[1, 2, 3]), float(B[1, 2, 3])
         velocity = [speed * math.sin(beta), 0.0, speed * math.cos(beta)]
-        w = rm.wrench(velocity, [0, 0, 1], float(O[1, 2, 3]), spin)
+        w = rm.wrench(velocity, [0, 0, 1], float(O[1, 2, 3]), spin)  # one rotor: the compiled scalar path
         ref = pm.rotor_wrench(prop, params, velocity, [0, 0, 1], float(O[1, 2, 3]), spin)
         np.testing.assert_allclose(w.force, ref.force, rtol=1e-9, atol=1e-12)
         np.testing.assert_allclose(w.torque, ref.torque, rtol=1e-9, atol=1e-12)
         assert abs(w.force[1]) > 0.01  # the side force, across the in-plane velocity
+        assert w.loads.side_force == pytest.approx(float(ref.loads.side_force), rel=1e-9)
+        both = rm.wrench(np.array([velocity, velocity]), [0, 0, 1], float(O[1, 2, 3]), spin)  # the array path
+        np.testing.assert_allclose(both.force, [w.force, w.force], rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(both.torque, [w.torque, w.torque], rtol=1e-12, atol=1e-15)
     rigid = RotorMap(small_map[2]).loads([800.0, 900.0], 5.0, 1.0)
     np.testing.assert_array_equal(rigid.side_force, 0.0)
     assert rigid.side_force.shape == (2,)

@@ -411,23 +411,27 @@ class RotorMap:
         are not one rotor's plain numbers, or not finite, or outside the grid under
         "raise": the general path then answers (and raises what it raises)."""
         v, a, omega = _three(velocity), _three(axis), _plain(omega)
-        if v is None or a is None or omega is None or omega != omega or self.side_loads:
-            return None  # (a map with the side loads: the general path, whose vectors carry them)
+        if v is None or a is None or omega is None or omega != omega:
+            return None
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
             float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
         if s is None or policy is None:
             return None
         out = self._out1w
-        if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, v, a,
-                              omega, s, policy, out_of_grid == "raise", self._order, out, self._in1, self._fl1):
+        side = self._out1
+        if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table,
+                              self._table if self._side_table is None else self._side_table, self.side_loads,
+                              self._cellflag, self.radius, v, a, omega, s, policy, out_of_grid == "raise", self._order,
+                              out, side, self._in1, self._fl1):
             return None
         t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
+        y, mp = side[0, :2].tolist() if self.side_loads else (0.0, 0.0)
         inside = bool(self._in1[0])
         if not inside and out_of_grid == "clip":
             omega = min(omega, self._box[1])  # below the grid: scaled to the query's
         return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
-                         MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0])))
+                         MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0]), y, mp))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """:func:`check_map` with the model recorded in the map."""

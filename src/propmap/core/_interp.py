@@ -204,15 +204,18 @@ def snap_edge(x, lo, hi):
 
 
 @numba.njit(**_FLAGS)
-def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, spin, policy, strict, order, out,
-                 inside, flagged):
+def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, velocity, axis, omega, spin, policy,
+                 strict, order, out, side, inside, flagged):
     """One rotor's force and moment vectors from the map (maps.RotorMap.wrench's scalar path).
 
     The disk frame and the vectors as core.vector.disk_frame and wrench_vectors: the axis
     scaled by its largest component and normalised, speed |V|, incidence
     beta = arccos(V . z / |V|) (0 where V = 0), e_ip the in-plane unit velocity (0 where the
-    in-plane speed is below 1e-12 of the speed), force T z - D e_ip, moment
-    -spin (Q z + M_R e_ip). out[0, :] receives T, D, Q, M_R, the force (3) and the moment (3).
+    in-plane speed is below 1e-12 of the speed), force T z - D e_ip - spin Y (z x e_ip), moment
+    -spin (Q z + M_R e_ip) - M_P (z x e_ip). out[0, :] receives T, D, Q, M_R, the force (3) and
+    the moment (3); with ``has_side`` (a map with the side force and pitching moment, in
+    ``side_table``'s first two of four columns) side[0, :2] receives Y and M_P (else untouched:
+    ``side_table`` may be any table then).
 
     Returns
     -------
@@ -245,6 +248,12 @@ def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, 
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2
     _one(ax0, ax1, ax2, table, cellflag, radius, omega, speed, beta, policy, order, out, 0, inside, flagged)
+    Y = 0.0
+    P = 0.0
+    if has_side:  # the same query in the side table (the same inside and flagged)
+        _one(ax0, ax1, ax2, side_table, cellflag, radius, omega, speed, beta, policy, order, side, 0, inside, flagged)
+        Y = side[0, 0]
+        P = side[0, 1]
     ix = vx - axial * zx
     iy = vy - axial * zy
     iz = vz - axial * zz
@@ -260,10 +269,13 @@ def wrench_point(ax0, ax1, ax2, table, cellflag, radius, velocity, axis, omega, 
     D = out[0, 1]
     Q = out[0, 2]
     M = out[0, 3]
-    out[0, 4] = T * zx - D * ex
-    out[0, 5] = T * zy - D * ey
-    out[0, 6] = T * zz - D * ez
-    out[0, 7] = -spin * (Q * zx + M * ex)
-    out[0, 8] = -spin * (Q * zy + M * ey)
-    out[0, 9] = -spin * (Q * zz + M * ez)
+    lx = zy * ez - zz * ey  # z x e_ip
+    ly = zz * ex - zx * ez
+    lz = zx * ey - zy * ex
+    out[0, 4] = T * zx - D * ex - spin * Y * lx
+    out[0, 5] = T * zy - D * ey - spin * Y * ly
+    out[0, 6] = T * zz - D * ez - spin * Y * lz
+    out[0, 7] = -spin * (Q * zx + M * ex) - P * lx
+    out[0, 8] = -spin * (Q * zy + M * ey) - P * ly
+    out[0, 9] = -spin * (Q * zz + M * ez) - P * lz
     return 0
