@@ -16,6 +16,7 @@ import pytest
 import propmap as pm
 from propmap.cli.main import main
 from propmap.core.body import BodyDrag
+from propmap.core.solver import supersonic_tips_allowed
 from propmap.io.params_file import BodyTable, write_params
 from propmap.vehicle import VehicleFileError, hover_omega
 
@@ -74,6 +75,24 @@ def test_a_flight_fits_airframe_drag_reaches_rotorpys_quad_params(tmp_path, caps
     assert out["file"]["c_Dx"] != out["fit"]["c_Dx"]
 
 
+def test_a_flight_fits_airframe_drag_reaches_the_c_vehicle_export(tmp_path, capsys):
+    fit = tmp_path / "fit.toml"
+    write_params(fit, pm.generic_params(), body=BodyTable(BodyDrag((0.05, 0.02, 0.0), 1.0), None, None))
+    rho = pm.generic_params().air.rho
+    for name, params, cd in (("file", [], None), ("fit", ["--params", str(fit)], 0.5 * rho * 0.05)):
+        assert main(["map", str(EXAMPLES / GEOMETRY), "--blades", "3", "--format", "c", "--vehicle", str(VEHICLE),
+                     *params, "--rpm", "8000:20000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5",
+                     "--check-points", "0", "--out", str(tmp_path / f"{name}.h")]) == 0
+        text = (tmp_path / f"{name}.h").read_text()
+        line = next(row for row in text.splitlines() if "_body_cd[3]" in row)
+        values = [float(x) for x in line.split("{")[1].split("}")[0].split(",")]
+        if cd is not None:
+            assert values[0] == pytest.approx(cd, rel=1e-12) and values[2] == 0.0
+        else:
+            assert values[0] != pytest.approx(0.5 * rho * 0.05, rel=1e-6)
+    capsys.readouterr()
+
+
 def test_wrench_refuses_standard_output_and_twin_log_names_are_explained(tmp_path, capsys, shared_data):
     log = shared_data / "neurobem_flights" / "bemnn20210218170320seg2.mat"
     assert main(["wrench", str(log), "--vehicle", str(VEHICLE), "--out", "-"]) == 2
@@ -94,8 +113,12 @@ def test_a_supersonic_tip_is_warned_of_by_the_api():
     """8000 given as rad/s for rpm: the tip at Mach 2.4, loads of 972 N from a 2.5 N propeller;
     the API said nothing (the CLI warns above Mach 0.7)."""
     prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
-    with pytest.warns(UserWarning, match=r"Mach 2.4 \(> 1\).*is omega given in rpm"):
+    with pytest.warns(UserWarning, match=r"Mach 2.[34]\d? \(> 1\).*is omega given in rpm"):
         pm.rotor_loads(prop, params, 8000.0, 0.0, 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with supersonic_tips_allowed():  # on purpose: silent
+            pm.rotor_loads(prop, params, 8000.0, 0.0, 0.0)
     with pytest.warns(UserWarning, match="Mach"):
         pm.rotor_loads(prop, params, np.array([800.0, 8000.0]), 0.0, 0.0)
     with warnings.catch_warnings():
@@ -103,6 +126,14 @@ def test_a_supersonic_tip_is_warned_of_by_the_api():
         pm.rotor_loads(prop, params, 800.0, 20.0, 1.0)
         heavy = replace(pm.read_vehicle(VEHICLE), mass=40.0)  # hovers near Mach 0.9: its bracket probes past 1
         assert hover_omega(heavy, pm.generic_params()) * 0.0648 / 340.3 > 0.5
+
+
+def test_the_cli_says_a_high_tip_mach_number_once_in_its_own_terms(tmp_path, capsys):
+    """The commands take rpm and warn from Mach 0.7 themselves: the API's "rpm for rad/s?" hint
+    would be wrong there, and a second line."""
+    assert main(["loads", "apce_8x6", "--rpm", "60000"]) == 0
+    err = capsys.readouterr().err
+    assert "tip Mach number up to" in err and "blade tip meets the air" not in err
 
 
 def test_a_vehicles_diameter_less_geometry_names_the_vehicle_key(own_vehicle):

@@ -436,6 +436,18 @@ def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them
         both = rm.wrench(np.array([velocity, velocity]), [0, 0, 1], float(O[1, 2, 3]), spin)  # the array path
         np.testing.assert_allclose(both.force, [w.force, w.force], rtol=1e-12, atol=1e-15)
         np.testing.assert_allclose(both.torque, [w.torque, w.torque], rtol=1e-12, atol=1e-15)
+    tilted = np.array([0.3, -0.2, 0.93])  # a tilted axis and an oblique velocity: the cross products' order
+    velocity = np.array([6.0, 2.5, -1.5])
+    for spin in ("ccw", "cw"):
+        w = rm.wrench(velocity, tilted, 650.0, spin)
+        ref = pm.rotor_wrench(prop, params, velocity, tilted, 650.0, spin)
+        np.testing.assert_allclose(w.force, ref.force, rtol=0.02, atol=2e-3)  # (between nodes: the map's error)
+        np.testing.assert_allclose(w.torque, ref.torque, rtol=0.02, atol=2e-4)
+        arrays = rm.wrench(velocity[None, :], tilted, np.array([650.0]), spin)
+        np.testing.assert_allclose(arrays.force[0], w.force, rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(arrays.torque[0], w.torque, rtol=1e-12, atol=1e-15)
+    with pytest.warns(UserWarning, match=r"which this map does not hold \(built before 2026-11-26\)"):
+        RotorMap(ds.drop_vars(["side_force", "pitching_moment"]))
     rigid = RotorMap(small_map[2]).loads([800.0, 900.0], 5.0, 1.0)
     np.testing.assert_array_equal(rigid.side_force, 0.0)
     assert rigid.side_force.shape == (2,)

@@ -39,8 +39,8 @@ LONG_NAMES = {"thrust": "thrust T along the rotor axis",
               "rolling_moment": "rolling moment M_R (advancing/retreating thrust asymmetry)",
               "side_force": "side force Y toward the advancing side (flapping blades, a linear inflow or the dynamic "
                             "stall)",
-              "pitching_moment": "pitching moment M_P about z x e_ip (flapping blades, a linear inflow or the dynamic "
-                                 "stall)",
+              "pitching_moment": "pitching moment M_P about e_ip x z, positive nose-up for a disk moving along e_ip "
+                                 "(flapping blades, a linear inflow or the dynamic stall)",
               "power": "shaft power P = Q Omega", "CT": "thrust coefficient T / (rho n^2 D^4)",
               "CP": "power coefficient P / (rho n^3 D^5)"}
 #: static tip speed [m/s] of the default map's highest rpm (tip Mach 0.44 at sea level)

@@ -1,7 +1,7 @@
 """Evaluating a rotor map: :class:`RotorMap` (built by :func:`propmap.maps.build_map`).
 
-Cubic (default) or multilinear interpolation of T, D, Q and M_R divided by
-(Omega R)^2 + V^2 (compiled, core/_interp.py), multiplied back, with an explicit out-of-grid
+Cubic (default) or multilinear interpolation of T, D, Q and M_R (and Y, M_P where the map
+holds them) divided by (Omega R)^2 + V^2 (compiled, core/_interp.py), multiplied back, with an explicit out-of-grid
 policy; scalar fast paths for one point and for one rotor's force and moment vectors.
 docs/simulators.md has the conventions and the measured speeds. :func:`check_map` measures
 a map's interpolation error against the model that made it (here, so that
@@ -134,6 +134,21 @@ class MapWrench(NamedTuple):
     loads: MapLoads
 
 
+def _warn_side_loads_missing(attrs: dict) -> None:
+    """Warn where a map's recorded set makes a side force and pitching moment that the map
+    does not hold (a map built before 2026-11-26, when maps left them out)."""
+    try:
+        sources = map_model(attrs)[1].side_load_sources()
+    except (ValueError, KeyError, TypeError):  # a map that does not record its model: nothing to say
+        return
+    if sources:
+        import warnings
+
+        warnings.warn(f"the map's parameter set gives a side force and a pitching moment ({', '.join(sources)}), "
+                      "which this map does not hold (built before 2026-11-26): its loads and wrench give 0 for "
+                      "them; build it again to have them", UserWarning, stacklevel=3)
+
+
 class RotorMap:
     """A rotor map ready to evaluate: ``RotorMap.open("map.nc").loads(omega, V, beta)``.
 
@@ -190,6 +205,8 @@ class RotorMap:
         self._table = np.ascontiguousarray(table, dtype=float)
         #: the map holds the side force and the pitching moment (io.mapcheck.SIDE_LOADS)
         self.side_loads = len(map_loads(ds)) > len(LOADS)
+        if not self.side_loads:
+            _warn_side_loads_missing(ds.attrs)
         finite = np.isfinite(table).all(axis=-1)
         self._side_table = None
         if self.side_loads:  # Y, M_P in a second 4-wide table (zeros beside), for the compiled 4-load kernels

@@ -201,8 +201,9 @@ class RotorOptions:
         """The options of this set that give the rotor a side force Y and a pitching moment M_P.
 
         Rigid blades in the uniform inflow with the static polar have none (by symmetry, paper
-        Section II); maps, the C header and the simulator coefficients tabulate T, D, Q and M_R
-        only, and warn with these names.
+        Section II). A map of such a set holds Y and M_P too (``side_force``,
+        ``pitching_moment``); the simulator coefficients (``export-sim``), which have no terms
+        for them, warn with these names, and the C header says it leaves them out.
 
         Returns
         -------

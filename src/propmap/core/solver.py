@@ -8,6 +8,7 @@ docs/numerics.md and are listed in docs/conventions.md.
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import math
 import operator
 import warnings
@@ -158,18 +159,30 @@ def _scalar(name: str, value) -> float:
 
 _REAL_SCALARS = (float, int, np.floating, np.integer)
 
-#: the start of rotor_loads' warning of a supersonic blade tip (supersonic_tips_allowed filters it)
+#: the start of rotor_loads' warning of a supersonic blade tip (the CLI filters it: it warns from Mach 0.7 itself)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
+#: set by supersonic_tips_allowed (per thread and task: a context variable, not the global warning filters)
+_SUPERSONIC_ALLOWED = contextvars.ContextVar("propmap_supersonic_tips_allowed", default=False)
 
 
 @contextlib.contextmanager
 def supersonic_tips_allowed():
-    """Silence :func:`rotor_loads`' warning of a supersonic blade tip, for callers that probe
-    rotation rates on purpose (a hover search doubling its bracket, a check of the units of
-    measured data, which says its own): the user's rates are warned of, theirs are not."""
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=SUPERSONIC_TIP, category=UserWarning)
+    """Within the block, :func:`rotor_loads` does not warn of a supersonic blade tip.
+
+    For callers that evaluate such rates on purpose: a hover search doubling its bracket
+    (:func:`propmap.vehicle.hover_omega`), a unit check of measured data that says its own
+    (:func:`propmap.identify.data.sanity_check`), a user sweeping past Mach 1 knowingly. The
+    flag is a context variable, so other threads keep their warning.
+
+    Yields
+    ------
+    None
+    """
+    token = _SUPERSONIC_ALLOWED.set(True)
+    try:
         yield
+    finally:
+        _SUPERSONIC_ALLOWED.reset(token)
 
 
 _UNCHECKED = object()
@@ -343,10 +356,10 @@ def rotor_loads(
         Vc = np.ascontiguousarray(V1 * np.cos(b1))
         Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
         tip = float(np.max(np.hypot(om1 * propeller.radius + np.abs(Vs), Vc), initial=0.0))
-    if tip > air.speed_of_sound:  # a rate given in rpm for rad/s, most likely (the model has no supersonic physics)
-        warnings.warn(f"{SUPERSONIC_TIP} {tip / air.speed_of_sound:.2g} (> 1): the model's "
-                      "compressibility stops at Prandtl-Glauert's Mach 0.9, so these loads mean nothing; is omega "
-                      "given in rpm? it is in rad/s (rpm * pi / 30)", UserWarning, stacklevel=2)
+    if tip > air.speed_of_sound and not _SUPERSONIC_ALLOWED.get():  # a rate in rpm given as rad/s, most likely
+        warnings.warn(f"{SUPERSONIC_TIP} {tip / air.speed_of_sound:.3g} (> 1): the model has no transonic or "
+                      "supersonic physics (its Prandtl-Glauert factor stops at Mach 0.9), so these loads mean "
+                      "nothing; is omega given in rpm? it is in rad/s (rpm * pi / 30)", UserWarning, stacklevel=2)
     wrt = _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")

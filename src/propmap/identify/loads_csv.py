@@ -60,7 +60,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     path : str or Path
     min_points : int
     rpm_source : {"optical", "electrical"}, optional
-        Which speed column of a stand export to use (default: optical where present).
+        Which speed column of a stand export to use (default: optical where present, its
+        dropouts, 0 or empty while the electrical speed runs, taken from the electrical speed
+        where the two agree within 3% elsewhere, with a note).
     pole_pairs : int, optional
         Divide an electrical speed by the motor's pole pairs (an export of raw electrical rpm).
 
@@ -230,13 +232,17 @@ OPTICAL_ELECTRICAL_TOL = 0.03
 
 
 def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, notes: list) -> np.ndarray:
-    """The optical speed with its dropouts (0 or empty where the electrical speed runs) taken
-    from the electrical one, where the two agree elsewhere (median ratio within
-    OPTICAL_ELECTRICAL_TOL: the stand's motor-pole setting is right), with a note."""
+    """The optical speed with its dropouts (0 or empty where the electrical speed runs: above
+    5% of its median where both read) taken from the electrical one, where the two agree
+    elsewhere (median ratio within OPTICAL_ELECTRICAL_TOL: the stand's motor-pole setting is
+    right), with a note. Only where the optical speed was chosen by default (no rpm_source)."""
     o, e = np.nan_to_num(optical), np.nan_to_num(electrical)
-    gap = (o <= 0) & (e > 0)
     both = (o > 0) & (e > 0)
-    if not gap.any() or both.sum() < 3:
+    if both.sum() < 3:
+        return optical
+    # running: above 5% of the typical electrical speed (a stopped motor's ESC may report a few rpm of noise)
+    gap = (o <= 0) & (e > 0.05 * float(np.median(e[both])))
+    if not gap.any():
         return optical
     ratio = float(np.median(e[both] / o[both]))
     if abs(ratio - 1.0) > OPTICAL_ELECTRICAL_TOL:

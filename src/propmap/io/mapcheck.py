@@ -258,7 +258,7 @@ def check_attributes(attrs: dict) -> None:
     _number(attrs, "n_blades", *N_BLADES_RANGE, integer=True)
     _number(attrs, "rho_kg_m3", 1e-3, 2000.0, "kg/m^3")
     _number(attrs, "mu_Pa_s", 0.0, 10.0, "Pa s", lo_open=True)
-    _number(attrs, "speed_of_sound_m_s", 100.0, 1e4, "m/s")  # (as parameter files, io.params_file.FILE_RANGES)
+    _number(attrs, "speed_of_sound_m_s", 1.0, 1e4, "m/s")
     _number(attrs, "n_radial", 2, 10000, integer=True)
     _number(attrs, "n_azimuth", 2, 1000, integer=True)
     _number(attrs, "build_seconds", 0.0, math.inf, "s")

@@ -3,7 +3,8 @@
 The same sums as :func:`propmap.vehicle.vehicle_wrench` (module ``model``): rotor i at hub
 position r_i (from the centre of mass) with axis a_i sees the air at V_i = v + w x r_i -
 v_wind, its force F_i and hub moment M_i come from its map (``RotorMap.wrench``: T z - D e_ip
-and -s_i (Q z + M_R e_ip)) instead of the full model, and
++ Y e_adv and -s_i (Q z + M_R e_ip) + M_P (e_ip x z), Y and M_P where the map holds them)
+instead of the full model, and
 
     F = sum_i F_i + F_body,    M = sum_i (r_i x F_i + M_i - w x h_i),
 
