@@ -185,9 +185,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
     air = resolve_air(air, air_choice)
-    logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))
     refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
-    names = [lg.name for lg in logs]
+    names = [Path(p).name for p in log_paths]  # (a log's name, FlightLog.name, is its file name)
     if len(set(names)) != len(names):
         twin = next(n for n in names if names.count(n) > 1)
         where = ", ".join(str(p) for p, n in zip(log_paths, names) if n == twin)
@@ -204,6 +203,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if cross_validate and len(names) - len(held) < 2:
         raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
                          f"got {len(names) - len(held)}")
+    logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))  # (the names' checks before the reads)
     samples = _samples(logs, veh, rate_hz)
     log_rate = min(lg.rate_hz for lg in logs)
     if rate_hz > 1.01 * log_rate:  # (flight_samples takes every k-th sample, k = round(log rate / rate) >= 1)
