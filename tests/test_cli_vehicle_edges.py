@@ -73,6 +73,8 @@ def test_a_flight_fits_airframe_drag_reaches_rotorpys_quad_params(tmp_path, caps
     assert 1.0 < rho < 1.3
     assert out["fit"]["c_Dy"] == pytest.approx(0.5 * rho * 0.02) and out["fit"]["c_Dz"] == 0.0
     assert out["file"]["c_Dx"] != out["fit"]["c_Dx"]
+    assert "drag areas of the [body] table of fit.toml" in (tmp_path / "fit.py").read_text()
+    assert "drag areas of the vehicle file" in (tmp_path / "file.py").read_text()
 
 
 def test_a_flight_fits_airframe_drag_reaches_the_c_vehicle_export(tmp_path, capsys):

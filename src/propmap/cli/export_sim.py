@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import click
 
@@ -150,8 +151,14 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     coverage_messages(propeller, label, air, *envelope_extremes(
         propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
         rpm=tuple(env.rpm))
+    airframe = ""
+    if veh is not None and params_spec is not None and Path(params_spec).is_file():
+        from ..io.params_file import read_body
+
+        if read_body(params_spec) is not None:  # (read and checked by _vehicle already)
+            airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
-                         vehicle_label=str(vehicle) if vehicle is not None else "")
+                         vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:
         echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
                    "held_at_sign_bound": res.held,

@@ -119,7 +119,7 @@ def rotorpy_directions(spins) -> list[int]:
     return out
 
 
-def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str) -> str:
+def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str, airframe_label: str = "") -> str:
     c = res.coefficients
     rotor = [f"    'k_eta': {c['k_eta']!r},  # thrust coefficient N/(rad/s)**2",
              f"    'k_m': {c['k_m']!r},  # yaw moment coefficient Nm/(rad/s)**2",
@@ -136,11 +136,11 @@ def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str) -> str
              "# (propmap spin 'ccw'), +1 for cw: the sign of its reaction torque on the body about +z.",
              "import numpy as np", "", "rotor_params = {", *rotor, "}"]
     if vehicle is not None:
-        lines += _quad_params(res, vehicle, vehicle_label)
+        lines += _quad_params(res, vehicle, vehicle_label, airframe_label)
     return "\n".join(lines) + "\n"
 
 
-def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
+def _quad_params(res: SimExport, vehicle, label: str, airframe_label: str = "") -> list[str]:
     """A complete RotorPy ``quad_params`` for ``vehicle`` (checked by :func:`check_rotorpy_vehicle`)."""
     inertia = np.asarray(vehicle.inertia, float).tolist()  # Python floats: their repr is plain
     rho = float(res.meta["rho"])
@@ -156,8 +156,8 @@ def _quad_params(res: SimExport, vehicle, label: str) -> list[str]:
                             f"({Path(label).name or 'vehicle file'})."),
            "# Body axes x forward, y left, z up (RotorPy's and propmap's); rotor positions from the centre of mass; "
            "parasitic drag",
-           f"# c_D = rho (C_D A) / 2 from the vehicle's drag areas (a flight fit's [body] table where --params gives "
-           f"one) at rho = {rho!r} kg/m^3 (the slipstream",
+           "# " + _text(f"c_D = rho (C_D A) / 2 from the drag areas of {airframe_label or 'the vehicle file'}"),
+           f"# at rho = {rho!r} kg/m^3 (the slipstream",
            "# factor has no RotorPy term).",
            "quad_params = {",
            f"    'mass': {float(vehicle.mass)!r},  # kg",
@@ -240,7 +240,8 @@ def _gazebo_text(res: SimExport, head: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "") -> list[Path]:
+def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
+                 airframe_label: str = "") -> list[Path]:
     """Write the coefficients in the target's own format (atomically), and a JSON report
     ``<stem>.report.json`` with the coefficients, the envelope and the errors.
 
@@ -260,6 +261,9 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "")
         rotorpy only: write ``quad_params`` for it (:func:`check_rotorpy_vehicle`).
     vehicle_label : str
         Where the vehicle came from, for the file's comment.
+    airframe_label : str
+        Where the vehicle's airframe drag areas came from where not its file (a flight fit's
+        parameter file with a ``[body]`` table), for the comment on RotorPy's c_D.
 
     Returns
     -------
@@ -281,7 +285,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "")
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")
         check_rotorpy_vehicle(vehicle)
     if res.target == "rotorpy":
-        text = _rotorpy_text(res, head, vehicle, vehicle_label)
+        text = _rotorpy_text(res, head, vehicle, vehicle_label, airframe_label)
     elif res.target in ("gazebo-classic", "gz-sim"):
         text = _gazebo_text(res, head)
     else:
