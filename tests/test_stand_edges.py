@@ -56,7 +56,7 @@ def test_a_static_run_spanning_the_rule_within_rounding_counts_as_spanning():
 def test_a_torque_the_stand_does_not_measure_is_checked_only_when_fitted():
     prop, data = _static(np.linspace(3000, 9000, 8), torque=False)
     assert sanity_check(data, prop, quantities=("thrust",)) == []
-    with pytest.raises(DataError, match=r"torque not measured .*--quantities thrust"):
+    with pytest.raises(DataError, match=r"torque is 0 at every point: not measured\? .*--quantities thrust"):
         sanity_check(data, prop)
 
 

@@ -275,12 +275,13 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if miss[pp] < math.log(1.6):
         causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
                       f"--pole-pairs {pp}, or the optical speed)")
-    said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
     absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
-    if absent:  # a column of zeros: a sensor the stand does not have
+    if absent:  # a column of zeros: a sensor the stand does not have, said first
         fit = [k for k in data.measured if k not in absent]
-        causes.insert(0, f"{' and '.join(absent)} not measured ({absent[0]} is 0 at every point: leave it out of the "
-                         f"fit, --quantities {','.join(fit) or 'thrust'})")
+        raise DataError(f"load data: {data.source}: the measured {' and '.join(absent)} is 0 at every point: not "
+                        f"measured? leave it out of the fit (--quantities {','.join(fit) or 'thrust'}, or quantities= "
+                        "in the API)")
+    said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
     raise DataError(f"load data: {data.source}: the measured {said} what the model predicts for {propeller.name} "
                     f"at the measured rpm (expected within {1 / SANITY_FACTOR:.2g}-{SANITY_FACTOR:g}x): "
                     + (f"likely {' or '.join(causes[:2])}" if causes else
