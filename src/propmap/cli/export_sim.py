@@ -105,12 +105,14 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
-    veh, hover_from = None, "--hover-rpm"
+    veh, hover_from, airframe = None, "--hover-rpm", ""
     if vehicle is not None:
-        from .flight import _vehicle
+        from .flight import _fitted_vehicle
         from ..vehicle import hover_omega
 
-        veh = _vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (RotorPy's c_D)
+        veh, fitted = _fitted_vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (c_D)
+        if fitted:
+            airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
         if target == "rotorpy":
             try:
                 check_rotorpy_vehicle(veh)
@@ -151,12 +153,6 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     coverage_messages(propeller, label, air, *envelope_extremes(
         propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
         rpm=tuple(env.rpm))
-    airframe = ""
-    if veh is not None and params_spec is not None and Path(params_spec).is_file():
-        from ..io.params_file import read_body
-
-        if read_body(params_spec) is not None:  # (read and checked by _vehicle already)
-            airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:

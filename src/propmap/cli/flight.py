@@ -11,35 +11,40 @@ from ._common import (InputError, PathArg, check_outputs, coverage_messages, env
                       parse_names, refuse_copies, resolve_air, vehicle_inputs, with_air_options)
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
-def _vehicle(path: Path, params_spec=None):
-    """The vehicle file's vehicle; with ``params_spec`` a parameter file whose ``[body]`` table a
-    flight fit wrote (the airframe drag, the centre of mass, the rotors' wake interference), the
-    vehicle with those in place of the vehicle file's (what `wrench`, `export-sim --vehicle` and
-    the C vehicle export all model)."""
+def _vehicle(path: Path):
+    from ..vehicle import VehicleFileError, read_vehicle
+
+    try:
+        return read_vehicle(path)
+    except VehicleFileError as exc:
+        raise InputError(f"--vehicle: {exc}") from None
+
+
+def _fitted_vehicle(path: Path, params_spec):
+    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` is a parameter
+    file with the ``[body]`` table a flight fit writes (the airframe drag, the centre of mass,
+    the rotors' wake interference), the vehicle with those in place of the file's, and whether
+    it had one (what `wrench`, `export-sim --vehicle` and the C vehicle export all model)."""
     from dataclasses import replace
 
     from ..identify.flight import shift_centre_of_mass
     from ..io.params_file import ParamsFileError, read_body
-    from ..vehicle import VehicleFileError, read_vehicle
 
-    try:
-        veh = read_vehicle(path)
-    except VehicleFileError as exc:
-        raise InputError(f"--vehicle: {exc}") from None
+    veh = _vehicle(path)
     if params_spec is None or not Path(params_spec).is_file():
-        return veh
+        return veh, False
     try:
         table = read_body(params_spec)
     except ParamsFileError as exc:
         raise InputError(f"--params: {exc}") from None
     if table is None:
-        return veh
+        return veh, False
     veh = replace(veh, body_drag=table.drag)
     if table.centre_of_mass is not None:
         veh = shift_centre_of_mass(veh, table.centre_of_mass)
     if table.rotor_interference is not None:
         veh = replace(veh, rotor_interference=table.rotor_interference)
-    return veh
+    return veh, True
 
 
 MOTOR_MAP_HELP = ("PX4 ULog without esc_status rpm: the motor speed [rpm] = A + B * actuator_outputs output, given "
@@ -360,7 +365,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
                          "a file (PRED.csv)")
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
-    veh = _vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag and centre of mass
+    veh, _ = _fitted_vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag, centre of mass
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
     params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
     air = resolve_air(air, air_choice)

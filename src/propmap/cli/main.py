@@ -11,6 +11,7 @@ import warnings
 
 import click
 
+from ..core.air import SUPERSONIC_TIP
 from .. import __version__
 from .demo import demo
 from .export_sim import export_sim_command
@@ -104,9 +105,9 @@ def _main(argv: list[str] | None) -> int:
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            # the API's supersonic-tip warning (core.solver.SUPERSONIC_TIP, with its "rpm for rad/s?" hint): the
-            # commands take rpm and warn from tip Mach 0.7 themselves (cli._common.coverage_messages)
-            warnings.filterwarnings("ignore", message="a blade tip meets the air at Mach")
+            # the API's supersonic-tip warning (with its "rpm for rad/s?" hint): the commands take rpm and warn
+            # from tip Mach 0.7 themselves (cli._common.coverage_messages)
+            warnings.filterwarnings("ignore", message=SUPERSONIC_TIP)
             code = cli.main(args=argv, prog_name="propmap", standalone_mode=False)
         if isinstance(code, int) and code:  # click returns (not raises) an Exit's code in this mode
             return code

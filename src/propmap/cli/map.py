@@ -199,9 +199,9 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
     if c_header.vehicle is not None:
-        from .flight import _vehicle
+        from .flight import _fitted_vehicle
 
-        veh = _vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
+        veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
 
     import numpy as np
 

@@ -18,6 +18,7 @@ import numpy as np
 
 from . import _flags, _kernel
 from . import _physics as ph
+from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, _derivative_inputs, _jacobian, differentiable
 from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
@@ -159,8 +160,6 @@ def _scalar(name: str, value) -> float:
 
 _REAL_SCALARS = (float, int, np.floating, np.integer)
 
-#: the start of rotor_loads' warning of a supersonic blade tip (the CLI filters it: it warns from Mach 0.7 itself)
-SUPERSONIC_TIP = "a blade tip meets the air at Mach"
 #: set by supersonic_tips_allowed (per thread and task: a context variable, not the global warning filters)
 _SUPERSONIC_ALLOWED = contextvars.ContextVar("propmap_supersonic_tips_allowed", default=False)
 

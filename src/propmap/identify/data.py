@@ -266,6 +266,12 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if plausible(ratio):
         return warnings_
     bad = {k: v for k, v in ratio.items() if not (1 / SANITY_FACTOR <= v <= SANITY_FACTOR)}
+    absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
+    if absent:  # a column of zeros (a sensor the stand lacks): said before the 13 solves of the unit-slip search
+        fit = [k for k in data.measured if k not in absent]
+        raise DataError(f"load data: {data.source}: the measured {' and '.join(absent)} is 0 at every point: not "
+                        f"measured? leave it out of the fit (--quantities {','.join(fit) or 'thrust'}, or quantities= "
+                        "in the API)")
     causes = [why for fT, fQ, why in _UNIT_SLIPS
               if plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
     # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
@@ -275,12 +281,6 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if miss[pp] < math.log(1.6):
         causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
                       f"--pole-pairs {pp}, or the optical speed)")
-    absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
-    if absent:  # a column of zeros: a sensor the stand does not have, said first
-        fit = [k for k in data.measured if k not in absent]
-        raise DataError(f"load data: {data.source}: the measured {' and '.join(absent)} is 0 at every point: not "
-                        f"measured? leave it out of the fit (--quantities {','.join(fit) or 'thrust'}, or quantities= "
-                        "in the API)")
     said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
     raise DataError(f"load data: {data.source}: the measured {said} what the model predicts for {propeller.name} "
                     f"at the measured rpm (expected within {1 / SANITY_FACTOR:.2g}-{SANITY_FACTOR:g}x): "
