@@ -7,7 +7,8 @@ et al., RSS 2021). Writes benchmarks/results/flight.json atomically and prints i
 
 * ``propmap wrench`` on the 29.4 s, 400 Hz segment bemnn20210223104803seg2 (11,749 samples
   x 4 rotors) as a whole process (median, min, max of 5 runs after a warm-up), beside
-  ``propmap props`` (the CLI's start-up, the same run) so that the ratio carries over.
+  ``propmap props`` (the CLI's start-up, the same run) so that the ratio carries over; both
+  with the bytecode cache a normal install has (PYTHONDONTWRITEBYTECODE removed for them).
 * ``vehicle_wrench`` in-process on the same samples: seconds, rotor evaluations per
   second, residual evaluations per annulus, for the default (48 x 16) and the flight-fit
   (24 x 8) discretizations, uniform inflow and Pitt-Peters.
@@ -23,7 +24,6 @@ from __future__ import annotations
 
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -42,16 +42,6 @@ LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
 VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
 SEGMENT = "bemnn20210223104803seg2.mat"
 BIN = Path(sys.executable).parent
-
-
-def wall(argv, runs=5):
-    subprocess.run(argv, capture_output=True, check=True)
-    times = []
-    for _ in range(runs):
-        t = time.perf_counter()
-        subprocess.run(argv, capture_output=True, check=True)
-        times.append(time.perf_counter() - t)
-    return {"min_s": min(times), "median_s": float(np.median(times)), "max_s": max(times)}
 
 
 def in_process(params, disc, runs=3):
@@ -77,13 +67,14 @@ def main() -> None:
     if not LOGS.is_dir():
         sys.exit(f"needs {LOGS}")
     sys.path.insert(0, str(Path(__file__).parent))
+    from bench_everyday import wall
     from bench_solver import cpu_name
 
     out = {"cpu": cpu_name(), "cores": os.cpu_count(), "load_average": os.getloadavg()}
     with tempfile.TemporaryDirectory() as tmp:
         out["wrench_cli"] = wall([str(BIN / "propmap"), "wrench", str(LOGS / SEGMENT), "--vehicle", str(VEHICLE),
-                                  "--out", str(Path(tmp) / "p.csv")])
-        out["props_cli"] = wall([str(BIN / "propmap"), "props"])
+                                  "--out", str(Path(tmp) / "p.csv")], runs=5)
+        out["props_cli"] = wall([str(BIN / "propmap"), "props"], runs=5)
     out["wrench_cli"]["ratio_to_props"] = out["wrench_cli"]["median_s"] / out["props_cli"]["median_s"]
     g = pm.generic_params()
     out["vehicle_wrench"] = {

@@ -243,8 +243,9 @@ def test_ground_samples_and_a_logged_stop_are_left_out_with_a_warning(tmp_path, 
     assert s.n == len(slow_rows) - 100 and np.all(np.diff(s.t[99:101]) > 0.2)
     assert any("100 sample(s) with a stopped rotor" in n for n in s.notes)
     # the shared logs fly throughout: nothing is left out of them (the race track's braking turns included)
-    code, _, err = run(capsys, "wrench", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out", tmp_path / "w.csv")
+    code, out, err = run(capsys, "wrench", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out", tmp_path / "w.csv")
     assert code == 0 and "400 sample(s) on the ground left out" in err
+    assert out.startswith(f"{len(slow_rows)} samples of ground.csv (400 left out: a rotor stopped or the vehicle on")
     code, _, err = run(capsys, "fit", "flight", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out",
                        tmp_path / "p.toml", "--rate-hz", "100")
     assert code == 0 and "on the ground left out" in err  # (fit flight said nothing before)

@@ -22,7 +22,7 @@ import numpy as np
 import propmap as pm
 from propmap.identify.flight import fit_flight, fitted_body_drag, flight_samples, predict_flight
 from propmap.io.flightlog import read_flight_log
-from propmap.vehicle.jacobians import cross_matrix
+from propmap.vehicle._jacobians import cross_matrix
 
 ROOT = Path(__file__).resolve().parents[1]
 LOGS = sorted((ROOT.parent / "shared" / "data" / "neurobem_flights").glob("*.mat"))

@@ -406,8 +406,9 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
 
         click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n}, indent=2))
     else:
-        click.echo(f"{samples.n} samples of {log.name} (stopped or on the ground: left out), params {label}, "
-                   f"rho {air.rho:g} kg/m^3")
+        left = log.n - samples.n
+        click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
+                   f"ground), params {label}, rho {air.rho:g} kg/m^3")
         click.echo(_table(rows))
         if "M_zero" in err:
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")

@@ -70,8 +70,20 @@ FLIGHT_DISCRETIZATION = Discretization(24, 8)
 
 
 def default_flight_names(base: SectionParams) -> tuple[str, ...]:
-    """The parameters a flight fit frees by default: :data:`FLIGHT_FIT`, less the cambered
-    section's ``cl_alpha`` and ``alpha_L0_re`` for the paper's model."""
+    """The parameters a flight fit frees by default.
+
+    Parameters
+    ----------
+    base : SectionParams
+        The set the fit starts from (``CamberedParams`` or the paper's ``BemtParams``).
+
+    Returns
+    -------
+    tuple of str
+        :data:`FLIGHT_FIT` (chosen by leave-one-log-out cross-validation, docs/flight.md), less
+        the cambered section's ``cl_alpha`` and ``alpha_L0_re`` for the paper's model, which has
+        neither.
+    """
     return FLIGHT_FIT if isinstance(base, CamberedParams) else tuple(
         n for n in FLIGHT_FIT if n not in ("cl_alpha", "alpha_L0_re"))
 

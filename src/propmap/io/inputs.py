@@ -183,8 +183,19 @@ SEPARATORS = (",", ";", "\t")
 
 
 def header_separator(line: str) -> str:
-    """The separator of a CSV from its header line: the most frequent of ',', ';' (spreadsheets in
-    locales with a decimal comma) and a tab (a tie: the comma)."""
+    """The separator of a CSV from its header line.
+
+    Parameters
+    ----------
+    line : str
+        The header line (column names).
+
+    Returns
+    -------
+    str
+        The most frequent of ``','``, ``';'`` (spreadsheets in locales with a decimal comma) and a
+        tab; a tie (a one-column header included) gives the comma.
+    """
     counts = {c: line.count(c) for c in SEPARATORS}
     return max(SEPARATORS, key=lambda c: (counts[c], c == ","))
 

@@ -132,7 +132,19 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
 
 
 def short_repr(value, n: int = 60) -> str:
-    """``repr(value)`` cut to about ``n`` characters, for messages."""
+    """``repr(value)`` cut to about ``n`` characters, for messages.
+
+    Parameters
+    ----------
+    value : object
+        What to show; an integer of 30 or more digits is described by its length instead.
+    n : int, optional
+        The longest result, in characters (a cut one ends in ``' ...'``).
+
+    Returns
+    -------
+    str
+    """
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
         return f"an integer of {len(str(abs(value)))} digits"
     r = repr(value)
@@ -140,7 +152,26 @@ def short_repr(value, n: int = 60) -> str:
 
 
 def check_number(value, key: str, where: str, rng) -> None:
-    """Refuse a non-number, a non-finite number or one outside ``rng``, naming ``key``."""
+    """Refuse a non-number, a non-finite number or one outside ``rng``, naming ``key``.
+
+    Parameters
+    ----------
+    value : object
+        The value read from a file (a bool is not a number here).
+    key : str
+        Its key, named in the error.
+    where : str
+        The file or table it came from, the error's prefix.
+    rng : tuple or None
+        ``(lo, hi, lo_open, hi_open, unit)``: the valid interval, each end open where its flag
+        is true, and the unit the message names; None: any finite number.
+
+    Raises
+    ------
+    ValueError
+        ``value`` is not a real number, is not finite, or lies outside ``rng``; a quoted number
+        is told to be written without quotes.
+    """
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         hint = " (a quoted string: write the number without quotes)" if isinstance(value, str) else ""
         raise ValueError(f"{where}: {key} must be a number, got {short_repr(value)}{hint}")

@@ -25,7 +25,7 @@ rotors' skewed wakes induce at its disk (core/interference.py): the rotors are s
 without it, which gives their induced velocities, and again with it in their hub
 velocities (twice the rotor evaluations).
 
-The derivatives of the wrench (``vehicle_wrench(derivatives=...)``) are in vehicle/jacobians.py.
+The derivatives of the wrench (``vehicle_wrench(derivatives=...)``) are in vehicle/_jacobians.py.
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ from ..core.geometry import Propeller, has_bool
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads,
                            rotor_loads, supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
-from .jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
+from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
