@@ -341,10 +341,12 @@ def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rot
 @pytest.mark.parametrize("section", ["naca0012", "naca0015"])
 def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(section, twist_deg):
     """Axial descent of a model rotor (NACA 0012, 0015) at 8 deg collective from hover to 3 v_h in steps of
-    0.005 v_h: no annulus with several inflow roots and no thrust step above 0.6% of the hover
-    thrust. Before, a sharper preset stall (M = 38) and a tip-loss angle taken from U_P (which
-    passes through 0 near an annulus' ideal autorotation) gave 400-800 multiple-root points and
-    steps of 2-3% (the annuli switching branch one by one)."""
+    0.005 v_h: no annulus flagged with several inflow roots and no thrust step above 0.6% of the
+    hover thrust (near 2.9 v_h a section about its stall gives the untwisted rotor a torque step of
+    about 1% of hover torque, unflagged: docs/models.md). Before, a sharper preset stall (M = 38)
+    and a tip-loss angle taken from U_P (which passes through 0 near an annulus' ideal
+    autorotation) gave 400-800 multiple-root points and steps of 2-3% (the annuli switching
+    branch one by one)."""
     R = 0.6
     x = np.linspace(0.15, 1.0, 12)
     rot = pm.Propeller(name="twisted", radius=R, n_blades=3, r=x * R, chord=np.full(x.size, 0.05),

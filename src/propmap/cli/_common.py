@@ -619,9 +619,11 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     if cov is None:
         return
     # each key is optional (a hand-written [coverage] table may give some of them)
-    if "J_max" in cov and J > cov["J_max"]:
+    # beyond the data by more than rounding: J by its printed 0.01 (cos 90 deg is 6e-17, not 0), the rates by 1e-6
+    # relative (the file's 6999.999999999999 rpm from rad/s)
+    if "J_max" in cov and J > cov["J_max"] + 0.005:
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    if "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"]:
+    if "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + 1e-6:
         axial = cov["incidence_deg_max"] == 0
         descent = ("; beyond 90 deg the rotor descends, beyond the climb data: the momentum of rotors in descent, "
                    "docs/models.md" if incidence_deg > 90 else "")
@@ -631,7 +633,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     if rpm is not None and ("rpm_min" in cov or "rpm_max" in cov):
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
         low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)
-        if lo < low or hi > high:
+        if lo < low * (1 - 1e-6) or hi > high * (1 + 1e-6):
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
             span = (f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) and low > 0 else
                     f"up to {high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up")

@@ -367,7 +367,17 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
     veh, _ = _fitted_vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag, centre of mass
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
-    params, air, label = load_params("generic" if params_spec is None else params_spec, option="--params")
+    from ..io.inputs import show_path
+
+    spec = params_spec
+    if spec is None:  # the vehicle's rotor sets: one set for all (its label, air and coverage) or a list
+        from ..vehicle.file import rotor_param_specs
+
+        own = rotor_param_specs(vehicle)
+        spec = own[0] if own[0] is not None and len(set(own)) == 1 else None
+    params, air, label = load_params("generic" if spec is None else spec, option="--params")
+    if params_spec is None and spec is None and any(own):
+        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) if s else "generic" for s in own))
     air = resolve_air(air, air_choice)
     body = veh.body_drag
     if params_spec is not None:

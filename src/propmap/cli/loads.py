@@ -443,10 +443,23 @@ def check_collective(collective_deg):
 
 def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float]]:
     """(points, extremes, rpm range) of a points file, every value checked (InputError on the first bad one)."""
+    import warnings
+
+    import numpy as np
+
+    from ..identify.load_data import STATIC_AIRSPEED, radians_hint
+
     n, ext, lo, hi = 0, (0.0, 0.0, 0.0), math.inf, 0.0
+    seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
     for df, _, values in _chunks(path, CHUNK, offset_deg):
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
         n += len(df)
+        inc = values["incidence_deg"][values["airspeed"] > STATIC_AIRSPEED]
+        if inc.size:
+            seen += [inc.max(), *inc[np.abs(inc - np.round(inc)) > 1e-6][:1]]
+    hint = radians_hint(seen, np.full(len(seen), np.inf))
+    if hint:
+        warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
     return n, ext, (lo, hi)

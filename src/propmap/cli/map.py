@@ -448,10 +448,11 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
     if "per_prop_json" in a:  # a map over several propellers: which of them miss the targets on the shared grid
         click.echo(_catalogue_summary(a["per_prop_json"]))
     elif "check_points" in a:  # one propeller's map: the same targets, said as a warning where they are missed
-        over = _target_misses(a)
+        method = c_interpolation or "cubic"  # what the written file interpolates
+        over = _target_misses(a, method)
         if over:
             said = ", ".join(f"{k} {v:.1f}%" for k, v in over.items())
-            warn(f"the map misses the targets at its check points (cubic, outside flagged regions: 1% of static "
+            warn(f"the map misses the targets at its check points ({method}, outside flagged regions: 1% of static "
                  f"thrust and torque, 2% of the largest drag): {said} (the table above; refine the axes where "
                  "it matters, and `map --check FILE` measures again at fresh points)")
     if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the map's against it
@@ -493,10 +494,11 @@ CHECK_MAX_ERROR_PCT = 1.0
 TARGETS_PCT = {"thrust": CHECK_MAX_ERROR_PCT, "torque": CHECK_MAX_ERROR_PCT, "drag": 2 * CHECK_MAX_ERROR_PCT}
 
 
-def _target_misses(attrs: dict) -> dict:
-    """The loads whose stored cubic check maximum (outside flagged regions) exceeds its target
-    (TARGETS_PCT): load -> error [%]; a load not checked (absent or NaN) is not a miss."""
-    errors = {k: 100 * float(attrs.get(f"check_cubic_{k}_max", float("nan"))) for k in TARGETS_PCT}
+def _target_misses(attrs: dict, method: str = "cubic") -> dict:
+    """The loads whose stored check maximum of ``method`` ("cubic" or "linear" interpolation;
+    outside flagged regions) exceeds its target (TARGETS_PCT): load -> error [%]; a load not
+    checked (absent or NaN) is not a miss."""
+    errors = {k: 100 * float(attrs.get(f"check_{method}_{k}_max", float("nan"))) for k in TARGETS_PCT}
     return {k: v for k, v in errors.items() if v > TARGETS_PCT[k]}
 
 

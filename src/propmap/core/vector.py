@@ -140,10 +140,10 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     Raises
     ------
     ValueError
-        Non-numeric inputs, shapes not ending in 3, a zero or non-finite axis, a non-finite
-        velocity, a bad spin (a bool included, or an array that does not broadcast to the
-        loads' shape S), or the ranges of :func:`rotor_loads`
-        (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
+        Non-numeric inputs, shapes not ending in 3, a velocity and an axis whose shapes do not
+        broadcast, a zero or non-finite axis, a non-finite velocity, a bad spin (a bool
+        included, or an array that does not broadcast to the loads' shape S), or the ranges
+        of :func:`rotor_loads` (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
         naming "airspeed" or "incidence" (ask for "velocity"), or refused by
         :func:`rotor_loads`.
     SolverError
@@ -438,7 +438,8 @@ def disk_frame(velocity, axis):
     Raises
     ------
     ValueError
-        As :func:`rotor_wrench` (non-numeric, not ending in 3, non-finite, zero axis).
+        As :func:`rotor_wrench` (non-numeric, not ending in 3, non-finite, zero axis, shapes
+        that do not broadcast).
     """
     V = _vectors("velocity", velocity)
     z = _vectors("axis", axis)
@@ -449,7 +450,11 @@ def disk_frame(velocity, axis):
         raise ValueError("axis must be non-zero")
     z = z / zmax
     z = z / np.linalg.norm(z, axis=-1, keepdims=True)
-    V, z = np.broadcast_arrays(V, z)
+    try:
+        V, z = np.broadcast_arrays(V, z)
+    except ValueError:
+        raise ValueError(f"velocity (shape {V.shape}) and axis (shape {z.shape}) must broadcast together: N x 3 "
+                         "beside N x 3 or 3") from None
     # |V| without overflow (a speed beyond float range is refused by rotor_loads as such)
     vmax = np.max(np.abs(V), axis=-1)
     with np.errstate(over="ignore"):

@@ -108,3 +108,30 @@ LOAD_KEYS = ("thrust", "drag", "torque")
 #: (loads_csv.read_loads) and for which parameters a fit frees (fit._data_kind: a stand's pitot
 #: noise does not make its static run a sweep)
 STATIC_AIRSPEED = 0.3
+
+
+def radians_hint(incidence_deg, airspeed, column: str = "incidence_deg") -> str | None:
+    """A warning for incidences that look like radians in a degrees column, or None.
+
+    Parameters
+    ----------
+    incidence_deg, airspeed : array_like, the same shape
+        The file's incidences as read [deg] and airspeeds [m/s].
+    column : str, optional
+        The column's name as written, for the message.
+
+    Returns
+    -------
+    str or None
+        The message where the points with an airspeed above :data:`STATIC_AIRSPEED` (two or
+        more) have incidences no larger than pi rounded up to 3.15, some above 0 and some not
+        whole degrees (0-1.5708 "deg": a tunnel's 0-90 deg written in radians); None otherwise.
+    """
+    inc = np.asarray(incidence_deg, float)[np.asarray(airspeed, float) > STATIC_AIRSPEED]
+    if inc.size < 2 or not 0.0 < inc.max() <= 3.15:
+        return None
+    if not np.any(np.abs(inc - np.round(inc)) > 1e-6):
+        return None
+    top = float(inc.max())
+    return (f"{column}: incidences up to {top:g} deg at airspeed: radians? ({top:g} rad = {math.degrees(top):.4g} "
+            "deg); give degrees, or say the unit in the header, e.g. 'incidence (rad)'")

@@ -10,10 +10,12 @@ the thrust stands' exports in identify/stand.py.
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from .csvfile import RANGES, RPM, DataError, _Csv
-from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData
+from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 
 
 def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole_pairs: int | None = None) -> LoadData:
@@ -217,6 +219,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
     if n < min_points:
         raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
+    if "incidence_deg" in cm.columns and cm.columns["incidence_deg"][2] is None:  # a unit given is believed
+        hint = radians_hint(v["incidence_deg"], v["airspeed"], cm.column("incidence_deg"))
+        if hint:
+            warnings.warn(f"{p}: {hint}", stacklevel=2)
     collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
     if np.all(np.ptp(ops, axis=0) == 0):

@@ -139,10 +139,14 @@ def _split(name: str) -> tuple[str, str | None]:
     low = name.lower()
     if low in _NAMES:
         return low, None
+    if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
+        return low.replace("_", " "), None
     if "_" in low and low.rsplit("_", 1)[0] in ("throttle", "esc") and _token(low.rsplit("_", 1)[1]) in _ESC_UNITS:
         return low.rsplit("_", 1)[0], low.rsplit("_", 1)[1]  # throttle_pct, esc_us
     if "_" in low:
         base, unit = low.rsplit("_", 1)
+        if base not in _NAMES and base.replace("_", " ") in _NAMES:  # wind_speed_mps
+            base = base.replace("_", " ")
         if base in _NAMES:
             kind = _NAMES[base][1]
             if kind is not None and _token(unit) in UNITS[kind]:
@@ -156,6 +160,26 @@ def _split(name: str) -> tuple[str, str | None]:
         if base in _NAMES and _NAMES[base][1] is not None:
             return base, name.strip().rsplit("_", 1)[1]
     return low, None
+
+
+def _split_unread(name: str) -> tuple[str, str | None]:
+    """:func:`_split` for a column propmap does not read, also taking a trailing speed or angle
+    unit after an underscore (``freestream_mps``, ``tunnel_speed_m_s``, ``alpha_deg``), the
+    quantity text with underscores as spaces (``disk_angle_deg`` -> ``disk angle``)."""
+    base, unit = _split(name)
+    if unit is not None or base in _NAMES:
+        return base, unit
+    parts = base.split("_")
+    for k in (1, 2):  # m_s, km_h
+        u = "_".join(parts[-k:])
+        if len(parts) > k and any(_token(u) in UNITS[kind] for kind in ("speed", "angle")):
+            return " ".join(parts[:-k]), name.strip()[-len(u):]
+    return base.replace("_", " "), None
+
+
+def _loose(names) -> frozenset:
+    """Names compared with underscores as spaces."""
+    return frozenset(n.replace("_", " ") for n in names)
 
 
 @dataclass
@@ -217,7 +241,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         name that may mean something else, ``V``, ``J``, ``mu``, ``angle``, ``tilt``, ``yaw``,
         gets a note instead), any column it does not read whose unit is a speed's (``Flight
         speed (m/s)``) where no airspeed is, or an angle's (``Shaft angle (deg)``) where an
-        airspeed is read and no incidence, a rotation speed in a speed's unit (``Speed (m/s)``),
+        airspeed is read and no incidence, a wind tunnel's ``lift`` column (the loads are read in
+        the rotor's axes; the message gives the conversion), a rotation speed in a speed's unit (``Speed (m/s)``),
         an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
     """
     cm = ColumnMap()
@@ -247,17 +272,26 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
                 if pair else "")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
-    split = {name: _split(name) for name in names if name.strip()}
+    split = {name: _split_unread(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
     bases = {name: b for name, (b, u) in split.items()
              if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
-        coeff = [n for n, b in bases.items() if b in _COEFFICIENT_NAMES]
+        coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
         if coeff:
             raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
                         "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
                         "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
         raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+    # a tunnel's wind-axis lift and drag are not the rotor's thrust and in-plane force (lift = T sin i + H cos i,
+    # drag = H sin i - T cos i at incidence i, the lift positive towards the rotor axis' side)
+    lift = [n for n, (b, _) in split.items()
+            if re.fullmatch(r"(wind[ _])?lift([ _]force)?([ _](n|mn|kn|kgf|kg|gf|g|lbf|lb|ozf|oz))?", b)]
+    if lift:
+        raise error(f"column {lift[0]!r}: propmap reads the loads in the rotor's axes (thrust along the axis, 'drag' "
+                    "the in-plane force); a wind tunnel's lift L and drag D convert with the incidence i as thrust = "
+                    "L sin(i) - D cos(i), in-plane force = L cos(i) + D sin(i) (the lift positive towards the rotor "
+                    "axis' side): write those columns instead")
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
@@ -267,7 +301,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
         if quantity in cm.columns:
             continue
-        like = [n for n, b in bases.items() if b in similar]
+        like = [n for n, b in bases.items() if b in _loose(similar)]
         # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
         # points move (Shaft angle (deg) beside an airspeed): its name may be anything
         kind = "speed" if quantity == "airspeed" else "angle"
@@ -277,7 +311,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")
-        maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]
+        maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
         if maybe:
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is {what}, name it {read_as} (every point is "
                             f"taken as {default})")

@@ -52,6 +52,9 @@ LAST_STATION_MIN = 0.9
 #: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of
 #: the thrust, would be the end polynomials' guess (a blade measured to 0.49 R made 7 times its thrust)
 LAST_STATION_REFUSED = 0.7
+#: a UIUC file whose first station lies outside this r/R is warned: the blade inside it makes no load (the
+#: 147 catalogue propellers' files start at 0.15-0.30; a 10 in blade from 0.85 R: 20% of its thrust)
+FIRST_STATION_MAX = 0.4
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
 
 
@@ -193,6 +196,10 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         warnings.warn(f"{where}: the stations stop at r/R = {data[-1, 0]:.4g}: the blade from there to the tip is "
                       "extrapolated from the last stations (chord and blade angle); give stations to r/R = 1",
                       UserWarning, stacklevel=3)
+    if data[0, 0] > FIRST_STATION_MAX:
+        warnings.warn(f"{where}: the stations start at r/R = {data[0, 0]:.4g}: the blade inside it makes no load "
+                      "(the loads integrate from the first station; the catalogue's files start at 0.15-0.30); give "
+                      "stations from the hub", UserWarning, stacklevel=3)
     return prop
 
 
@@ -399,5 +406,10 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
                                     "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
                                     "read as 2: -26% in hover)")
         return prop
+    first = next((ln.strip() for ln in io.StringIO(text[:65536], newline=None) if ln.strip()), "")
+    hint = ("; its columns are separated by commas or semicolons: a UIUC file's are separated by blanks or tabs"
+            if re.match(r"r/r\s*[,;]", first, re.I) else
+            "; a UIUC file's table starts with its header line 'r/R c/R beta' (radius / R, chord / R, blade angle in "
+            "degrees), then one station per line")
     raise GeometryFileError(f"{show_path(path)}: unrecognised geometry format (expected UIUC 'r/R c/R beta' or an "
-                            "APC PE0 file)")
+                            f"APC PE0 file){hint}")

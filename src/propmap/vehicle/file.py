@@ -60,7 +60,7 @@ from ..io.inputs import show_path
 from ..io.toml_file import load_toml
 from .model import Rotor, Vehicle
 
-__all__ = ["VehicleFileError", "read_vehicle"]
+__all__ = ["VehicleFileError", "read_vehicle", "rotor_param_specs"]
 
 #: valid ranges (low, high, low open) of the vehicle's numbers
 MASS_RANGE = (0.0, 1e4, True)  # [kg]
@@ -309,3 +309,36 @@ def read_vehicle(path) -> Vehicle:
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
+
+
+def rotor_param_specs(path) -> tuple[str | None, ...]:
+    """Each rotor's own parameter set as the vehicle file names it, for labels and coverage.
+
+    Parameters
+    ----------
+    path : str or Path
+        A vehicle file that :func:`read_vehicle` reads.
+
+    Returns
+    -------
+    tuple of (str or None)
+        Per rotor, in the file's order: the ``params`` file's path (relative to the vehicle's
+        folder, as :func:`read_vehicle` resolves it) or the named set, None where the rotor
+        has no ``params`` (it takes the set passed to the model).
+
+    Raises
+    ------
+    VehicleFileError
+        The file cannot be read as TOML (read it with :func:`read_vehicle` first for the full check).
+    """
+    path = Path(path)
+    data = load_toml(path, VehicleFileError)
+    out = []
+    for r in data.get("rotors", ()):
+        spec = r.get("params") if isinstance(r, dict) else None
+        if not isinstance(spec, str) or not spec.strip():
+            out.append(None)
+            continue
+        local = path.parent / spec
+        out.append(str(local) if "\x00" not in spec and os.path.lexists(local) else spec)
+    return tuple(out)

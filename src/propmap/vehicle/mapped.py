@@ -65,8 +65,9 @@ class VehicleMap:
     ----------
     vehicle : Vehicle
     maps : RotorMap or sequence of RotorMap
-        One map for every rotor, or one per rotor in the vehicle's order (each built for
-        that rotor's propeller and parameter set; not checked here).
+        One map for every rotor, or one per rotor in the vehicle's order, each built for that
+        rotor's propeller (its diameter and blade count are checked) and parameter set (not
+        checked).
     rho : float, optional
         Air density for the airframe drag [kg/m^3]; default the first map's
         (``attrs["rho_kg_m3"]``).
@@ -74,7 +75,8 @@ class VehicleMap:
     Raises
     ------
     ValueError
-        ``vehicle`` not a Vehicle, or a number of maps other than 1 or the number of rotors.
+        ``vehicle`` not a Vehicle, a number of maps other than 1 or the number of rotors, or a
+        map of another diameter (by more than 1%) or blade count than its rotor's propeller.
 
     Warns
     -----
@@ -89,6 +91,13 @@ class VehicleMap:
         maps = [maps] * n if hasattr(maps, "wrench") else list(maps)
         if len(maps) != n or not all(hasattr(m, "wrench") for m in maps):
             raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
+        for i, (m, r) in enumerate(zip(maps, vehicle.rotors)):
+            d, b = float(m.attrs.get("diameter_m", np.nan)), m.attrs.get("n_blades")
+            if not abs(d / r.propeller.diameter - 1.0) <= 0.01 or (b is not None and int(b) != r.propeller.n_blades):
+                raise ValueError(f"maps: rotor {i + 1}'s map is of {m.attrs.get('propeller', '?')} ({d:.4g} m, "
+                                 f"{b} blades), its propeller {r.propeller.name} is {r.propeller.diameter:.4g} m with "
+                                 f"{r.propeller.n_blades} blades: build the map for the vehicle's propeller "
+                                 "(propmap map ... --vehicle)")
         self.vehicle = vehicle
         self.maps = maps
         self._pos, self._axes, self._spins, self._h = rotor_geometry(vehicle)

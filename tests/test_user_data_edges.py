@@ -1,0 +1,194 @@
+"""Edges of a user's own measurements and geometry found by two user-level audits (2026-11-26):
+a wind tunnel's airspeed and angle columns with an underscore unit, its wind-axis lift and drag,
+incidences in radians under a degrees name, a vehicle whose rotors name their own parameter
+file, coverage warnings at the data's own edge, geometry files with commas or stations that
+start far out, a vehicle map of another propeller and shapes that do not broadcast."""
+
+import math
+import shutil
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.identify import DataError, read_loads
+from propmap.identify.load_data import radians_hint
+from propmap.identify.stand import map_columns
+from propmap.io.geometry_files import FIRST_STATION_MAX, GeometryFileError, read_geometry
+
+EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
+
+
+@pytest.mark.parametrize("name", ["freestream_mps", "V_inf_ms", "tunnel_speed_m_s", "freestream_kmh"])
+def test_an_airspeed_under_another_name_with_an_underscore_unit_is_refused(name):
+    """Every point would have been read as static (the audit's tunnel sweep fitted as a static run)."""
+    with pytest.raises(ValueError, match=f"column '{name}' looks like an airspeed"):
+        map_columns(["rpm", name, "thrust_kgf", "Torque (N m)"])
+
+
+@pytest.mark.parametrize("name", ["alpha_deg", "aoa_deg", "disk_angle_deg", "AoA_rad", "incidence_angle_deg"])
+def test_a_flow_angle_under_another_name_with_an_underscore_unit_is_refused(name):
+    with pytest.raises(ValueError, match=f"column '{name}' looks like a flow angle"):
+        map_columns(["rpm", "airspeed", name, "thrust"])
+
+
+def test_a_known_name_written_with_underscores_is_read():
+    cm = map_columns(["rpm", "wind_speed_mps", "thrust_kgf"])
+    assert cm.columns["airspeed"][:2] == ("wind_speed_mps", 1.0)
+    assert cm.columns["thrust"][1] == pytest.approx(9.80665)
+    cm = map_columns(["rpm", "air_speed_kmh", "thrust"])
+    assert cm.columns["airspeed"][1] == pytest.approx(1 / 3.6)
+
+
+@pytest.mark.parametrize("name", ["lift (N)", "Lift_N", "lift"])
+def test_a_wind_axis_lift_column_is_refused_with_the_conversion(name):
+    """A tunnel's lift and drag were read as... the drag as the rotor's in-plane force and the lift
+    not at all (the fit ran to its bounds, exit 0)."""
+    with pytest.raises(ValueError, match=r"thrust = L sin\(i\) - D cos\(i\), in-plane force = L cos\(i\) \+ D sin"):
+        map_columns(["rpm", "airspeed", "incidence_deg", name, "drag (N)", "torque (N m)"])
+
+
+def test_the_lift_and_drag_conversion_inverts_the_wind_axes():
+    """The message's conversion: the rotor's loads in wind axes (drag along the freestream, lift
+    normal to it on the rotor axis' side, 90 deg: the thrust) and back give T and H."""
+    prop = pm.load_propeller("apce_8x6")
+    i = np.radians([0.0, 30.0, 60.0, 90.0, 120.0])
+    r = pm.rotor_loads(prop, pm.generic_params(), 700.0, 8.0, i)
+    a, e = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])  # rotor axis; in-plane direction of motion
+    u = np.cos(i)[:, None] * a + np.sin(i)[:, None] * e  # direction of motion
+    F = r.thrust[:, None] * a - r.drag[:, None] * e
+    n = np.sin(i)[:, None] * a - np.cos(i)[:, None] * e
+    L, D = np.sum(F * n, axis=1), -np.sum(F * u, axis=1)
+    assert L[-2] == pytest.approx(r.thrust[-2])  # edgewise: the lift is the thrust
+    assert D[0] == pytest.approx(-r.thrust[0])  # axial: the thrust is a negative drag
+    np.testing.assert_allclose(L * np.sin(i) - D * np.cos(i), r.thrust, rtol=1e-12)
+    np.testing.assert_allclose(L * np.cos(i) + D * np.sin(i), r.drag, rtol=1e-9, atol=1e-12)
+
+
+def _tunnel_csv(path: Path, incidences, header="incidence_deg") -> Path:
+    rows = ["rpm,airspeed," + header + ",thrust,drag,torque"]
+    prop = pm.load_propeller("apce_8x6")
+    for rpm in (5000.0, 7000.0):
+        for V in (0.0, 5.0, 10.0):
+            for inc in incidences:
+                r = pm.rotor_loads(prop, pm.generic_params(), rpm * math.pi / 30, V, math.radians(inc))
+                rows.append(f"{rpm},{V},{inc},{float(r.thrust)},{float(r.drag)},{float(r.torque)}")
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+def test_incidences_in_radians_under_a_degrees_name_are_warned(tmp_path):
+    rad = np.radians([0.0, 30.0, 60.0, 90.0])
+    with pytest.warns(UserWarning, match=r"incidences up to 1.5708 deg at airspeed: radians\? \(1.5708 rad = 90 deg"):
+        read_loads(_tunnel_csv(tmp_path / "rad.csv", rad))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_loads(_tunnel_csv(tmp_path / "deg.csv", [0.0, 30.0, 60.0, 90.0]))  # degrees: nothing said
+        read_loads(_tunnel_csv(tmp_path / "unit.csv", rad, "incidence (deg)"))  # a unit given is believed
+    assert radians_hint([0.0, 1.0], [5.0, 5.0]) is None  # whole degrees
+    assert radians_hint([0.5, 1.2], [0.0, 0.0]) is None  # static: the angle does not matter
+    assert radians_hint([0.5, 1.2, 45.0], [5.0] * 3) is None
+    assert "up to 3.142 deg" in radians_hint([0.0, 1.571, 3.142], [5.0] * 3)  # to axial descent, rounded
+
+
+def test_points_with_incidences_in_radians_are_warned(tmp_path, capsys):
+    pts = tmp_path / "pts.csv"
+    pts.write_text("rpm,airspeed,incidence_deg\n6000,5,0\n6000,5,0.5236\n6000,5,1.5708\n")
+    assert main(["loads", "apce_8x6", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+    assert "incidence_deg: incidences up to 1.5708 deg at airspeed: radians?" in capsys.readouterr().err
+
+
+def test_wrench_names_the_rotors_own_parameter_file(tmp_path, capsys, shared_data):
+    """The vehicle file's rotors name their set: wrench used it but printed 'generic' and gave the
+    generic set's coverage warnings, none of the file's."""
+    shutil.copy(EXAMPLES / "neurobem_quadrotor.toml", tmp_path / "v.toml")
+    shutil.copy(EXAMPLES / "neurobem_5.1x4.8_geom.txt", tmp_path / "neurobem_5.1x4.8_geom.txt")
+    pm.write_params(tmp_path / "mine.toml", pm.generic_params().replace(cl_alpha=5.5))
+    text = (tmp_path / "v.toml").read_text()
+    (tmp_path / "v.toml").write_text(text.replace('propeller = "neurobem_5.1x4.8_geom.txt"',
+                                                  'propeller = "neurobem_5.1x4.8_geom.txt"\nparams = "mine.toml"'))
+    assert pm.vehicle.file.rotor_param_specs(tmp_path / "v.toml") == (str(tmp_path / "mine.toml"),) * 4
+    log = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    assert main(["wrench", str(log), "--vehicle", str(tmp_path / "v.toml"), "--out", str(tmp_path / "w.csv")]) == 0
+    out = capsys.readouterr().out
+    assert f"params {tmp_path / 'mine.toml'}" in out and "mine.toml)" in out and "generic" not in out
+    assert main(["wrench", str(log), "--vehicle", str(tmp_path / "v.toml"), "--params", str(tmp_path / "mine.toml"),
+                 "--out", str(tmp_path / "w2.csv")]) == 0
+    capsys.readouterr()
+    assert (tmp_path / "w.csv").read_bytes() == (tmp_path / "w2.csv").read_bytes()
+
+
+def test_no_coverage_warning_at_the_datas_own_edges(tmp_path, capsys):
+    """A fit's [coverage] holds 6999.999999999999 rpm (from rad/s) and J = 0 for static data:
+    7000 rpm, and exactly edgewise flight (cos 90 deg = 6e-17), are not beyond them."""
+    p = tmp_path / "p.toml"
+    pm.write_params(p, pm.default_params("apce_8x6"), coverage={"rpm_min": 3999.9999999999995, "J_max": 0.0,
+                                                               "rpm_max": 6999.999999999999, "incidence_deg_max": 90.0})
+    assert main(["loads", "apce_8x6", "--params", str(p), "--rpm", "7000", "--airspeed", "5", "--incidence-deg",
+                 "90"]) == 0
+    assert "warning" not in capsys.readouterr().err
+    assert main(["loads", "apce_8x6", "--params", str(p), "--rpm", "7100", "--airspeed", "5", "--incidence-deg",
+                 "80"]) == 0
+    err = capsys.readouterr().err
+    assert "7100 rpm: the data behind" in err and "advance ratio up to 0.04" in err  # 5 cos(80 deg) / (n D)
+
+
+def test_geometry_with_commas_or_without_its_header_says_what_is_expected(tmp_path):
+    g = tmp_path / "g.csv"
+    g.write_text("r/R,c/R,beta\n0.15,0.1,30\n0.5,0.15,20\n1.0,0.05,10\n")
+    with pytest.raises(GeometryFileError, match="separated by commas or semicolons: a UIUC file's are separated by "
+                                                "blanks"):
+        read_geometry(g, diameter_in=10, n_blades=2)
+    g.write_text("0.15 0.1 30\n0.5 0.15 20\n1.0 0.05 10\n")
+    with pytest.raises(GeometryFileError, match="starts with its header line 'r/R c/R beta'"):
+        read_geometry(g, diameter_in=10, n_blades=2)
+
+
+def test_geometry_starting_far_out_is_warned(tmp_path):
+    g = tmp_path / "g_geom.txt"
+    g.write_text("r/R c/R beta\n0.6 0.15 20\n0.8 0.12 15\n1.0 0.05 10\n")
+    with pytest.warns(UserWarning, match="the stations start at r/R = 0.6: the blade inside it makes no load"):
+        read_geometry(g, diameter_in=10, n_blades=2)
+    g.write_text(f"r/R c/R beta\n{FIRST_STATION_MAX} 0.15 20\n0.8 0.12 15\n1.0 0.05 10\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_geometry(g, diameter_in=10, n_blades=2)
+
+
+def test_a_vehicle_map_of_another_propeller_is_refused():
+    """The NeuroBEM vehicle (5.1 in, 3 blades) with an APC 8x6E map gave 38 N at 1200 rad/s, 6x its rotors'."""
+    prop = pm.load_propeller("apce_8x6")
+    m = pm.build_map(prop, pm.generic_params(), np.linspace(400, 800, 4), np.linspace(0, 10, 4),
+                     np.radians(np.linspace(0, 180, 4)), n_check=0)
+    rm = pm.RotorMap(m)
+    with pytest.raises(ValueError, match=r"rotor 1's map is of apce_8x6 \(0.2032 m, 2 blades\), its propeller "
+                                         r"neurobem_5.1x4.8 is 0.1295 m with 3 blades"):
+        pm.VehicleMap(pm.read_vehicle(EXAMPLES / "neurobem_quadrotor.toml"), rm)
+    pm.VehicleMap(pm.read_vehicle(EXAMPLES / "quadrotor.toml"), rm)  # its APC 8x6E rotors
+
+
+def test_rotor_wrench_names_shapes_that_do_not_broadcast():
+    with pytest.raises(ValueError, match=r"velocity \(shape \(5, 3\)\) and axis \(shape \(4, 3\)\) must broadcast"):
+        pm.rotor_wrench(pm.load_propeller("apce_8x6"), pm.generic_params(), np.zeros((5, 3)),
+                        np.tile([0.0, 0.0, 1.0], (4, 1)), 800.0)
+
+
+def test_the_c_headers_map_warning_uses_its_own_interpolation():
+    from propmap.cli.map import _target_misses
+
+    attrs = {"check_cubic_torque_max": 0.014, "check_linear_torque_max": 0.0131, "check_cubic_thrust_max": 0.002,
+             "check_linear_thrust_max": 0.012}
+    assert _target_misses(attrs) == {"torque": pytest.approx(1.4)}
+    assert _target_misses(attrs, "linear") == {"thrust": pytest.approx(1.2), "torque": pytest.approx(1.31)}
+
+
+def test_read_loads_refuses_a_lift_column_with_exit_2(tmp_path, capsys):
+    f = tmp_path / "wind.csv"
+    f.write_text("rpm,airspeed,incidence_deg,lift (N),drag (N),torque (N m)\n5000,5,30,3,1,0.05\n6000,5,60,4,1,0.06\n")
+    with pytest.raises(DataError, match="column 'lift \\(N\\)'"):
+        read_loads(f)
+    assert main(["fit", "loads", str(f), "--prop", "apce_8x6", "--out", str(tmp_path / "o.toml")]) == 2
+    assert not (tmp_path / "o.toml").exists()
