@@ -229,6 +229,8 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
+    # a linearised interval past a bound (cd_min below 0, a compliance below 0) is cut at it
+    idf = replace(idf, ci95=np.clip(np.asarray(idf.ci95, float), lb[:, None], ub[:, None]))
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
@@ -373,7 +375,7 @@ def _fit_along_directions(make_data, names, base, options, k):
     return best, log, count["n"], elapsed, [], extra
 
 
-def _directions_report(result: FitResult) -> FitResult:
+def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
     """The identifiability of a fit along directions: the k free directions' posterior
     (covariance (J_c^T J_c / s^2 + I)^-1, c in prior standard deviations) and the data's
     alone (s^2 (J_c^T J_c)^-1), in ``extra["directions"]``. The parameters' posterior
@@ -382,8 +384,8 @@ def _directions_report(result: FitResult) -> FitResult:
     they have no data-only figure (the data determine the directions, not a parameter alone:
     ``std_error_data`` None), ``singular_values`` are the free directions' Jacobian's and
     ``poorly_determined`` is empty (a direction the data know less well than the prior is
-    named in the warnings). Angles in the JSON loadings and base are in degrees, as
-    ``fitted``."""
+    named in the warnings; the intervals are cut at the parameters' bounds). Angles in the JSON
+    loadings and base are in degrees, as ``fitted``."""
     d = result.extra["directions"]
     k, B, Jc, c = d["count"], d["loadings"], d["jac_c"], d["c"]
     dnames = tuple(f"direction_{i + 1}" for i in range(k))
@@ -411,8 +413,10 @@ def _directions_report(result: FitResult) -> FitResult:
     warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
                   f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
                   for n, sd in zip(dnames, own.std_error) if n in weak)
-    idf = Identifiability(result.names, std, np.column_stack([result.x - t * std, result.x + t * std]), corr,
-                          own.singular_values, (), warns, std_error_data=None, effective_parameters=eff)
+    lb, ub = _bounds(result.names, options)
+    ci = np.clip(np.column_stack([result.x - t * std, result.x + t * std]), lb[:, None], ub[:, None])
+    idf = Identifiability(result.names, std, ci, corr, own.singular_values, (), warns, std_error_data=None,
+                          effective_parameters=eff)
     extra = dict(result.extra)
     deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")
     extra["directions"] = {
