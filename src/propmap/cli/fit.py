@@ -148,7 +148,7 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     if len(result.warnings) > MAX_WARNINGS:
         click.echo(f"propmap: warning: {len(result.warnings) - MAX_WARNINGS} more in {stem.name}.report.txt", err=True)
     figures = "".join(f", {stem.name}{suffix}" for suffix in figure_suffixes)
-    click.echo(f"wrote {out}, {stem.name}.report.json, {stem.name}.report.txt{figures}", err=True)
+    click.echo(f"wrote {out} and beside it {stem.name}.report.json, {stem.name}.report.txt{figures}", err=True)
     return report
 
 
