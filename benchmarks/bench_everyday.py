@@ -12,7 +12,8 @@ Writes benchmarks/results/everyday.json atomically and prints it.
 * One ``rotor_loads`` call (one operating point, paper's and generic sets), median of
   2,000 calls, split into the compiled kernel alone (``_kernel.solve_batch_serial`` on
   prepared arrays) and the Python wrapper around it (input checks, nodes, the result); their
-  ratio (issue 20's target: the call within 1.3x of the kernel alone).
+  ratio (issue 20's target: the call within 1.3x of the kernel alone); one ``rotor_wrench`` call
+  at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call.
 * Memory: bytes per operating point held by a ``RotorLoads`` with and without the
   per-annulus fields (``radial``), tracemalloc peak over 100,000 points (machine-
   independent); the peak resident memory of ``propmap loads --points`` on 100,000 points
@@ -87,17 +88,21 @@ def single_call(params, n=2000):
             model, pk, cam, inflow, empirical, params.swirl, prop.radius, False, cls, np.empty((_kernel.N_OUT, 1)),
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((_kernel.N_COUNTS, 1), np.int64),
             np.empty((_kernel.N_FLAGS, 1), np.bool_))
-    total, kernel = [], []
-    for _ in range(n):  # interleaved, so that drift of the machine's speed hits both alike
+    vel, axis = np.array([V * math.sin(b), 0.0, V * math.cos(b)]), np.array([0.0, 0.0, 1.0])  # the same point
+    total, kernel, wrench = [], [], []
+    for _ in range(n):  # interleaved, so that drift of the machine's speed hits all alike
         t = time.perf_counter()
         pm.rotor_loads(prop, params, om, V, b)
         total.append(time.perf_counter() - t)
         t = time.perf_counter()
         _kernel.solve_batch_serial(*args)
         kernel.append(time.perf_counter() - t)
-    tot, ker = float(np.median(total)), float(np.median(kernel))
+        t = time.perf_counter()
+        pm.rotor_wrench(prop, params, vel, axis, om)
+        wrench.append(time.perf_counter() - t)
+    tot, ker, wr = float(np.median(total)), float(np.median(kernel)), float(np.median(wrench))
     return {"rotor_loads_us_median": 1e6 * tot, "kernel_us_median": 1e6 * ker, "wrapper_us": 1e6 * (tot - ker),
-            "ratio_call_to_kernel": tot / ker}
+            "ratio_call_to_kernel": tot / ker, "rotor_wrench_us_median": 1e6 * wr, "ratio_wrench_to_loads": wr / tot}
 
 
 def bytes_per_point(n=100_000):

@@ -8,6 +8,7 @@ in the disk plane along the projection of V, against the motion (Fig. 1).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -158,6 +159,10 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
+    if not derivatives:
+        one = _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure)
+        if one is not None:
+            return one
     V, z, speed, beta = disk_frame(velocity, axis)
     s = _spin_sign(spin)
     try:
@@ -194,6 +199,54 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         if "velocity" in names:
             jac[("force", "velocity")], jac[("torque", "velocity")] = velocity_jacobian(loads, V, z, s)
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
+
+
+def _plain3(value):
+    """A plain sequence or 1-D array of three real numbers (not bools) as floats, else None."""
+    if isinstance(value, np.ndarray):
+        if value.shape != (3,) or value.dtype.kind not in "iuf":
+            return None
+        return value.tolist()
+    if isinstance(value, (list, tuple)) and len(value) == 3 and all(
+            isinstance(c, (int, float, np.floating, np.integer)) and not isinstance(c, (bool, np.bool_))
+            for c in value):
+        return [float(c) for c in value]
+    return None
+
+
+def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure):
+    """:func:`rotor_wrench` at one operating point in Python floats (a controller's call: the
+    array path's frame and vectors cost twice the loads' own call), or None where the inputs are
+    not one velocity, one axis, one rate and one spin (the array path takes them, and its errors).
+    The same arithmetic as :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
+    Vv, zv = _plain3(velocity), _plain3(axis)
+    if Vv is None or zv is None or isinstance(omega, (bool, np.bool_)) or not isinstance(
+            omega, (int, float, np.floating, np.integer)) or not isinstance(spin, (str, int, float)):
+        return None
+    if not all(math.isfinite(c) for c in Vv + zv):
+        return None  # (the array path names it)
+    s = float(_spin_sign(spin))
+    zmax = max(abs(zv[0]), abs(zv[1]), abs(zv[2]))
+    if zmax == 0.0:
+        raise ValueError("axis must be non-zero")
+    z = [c / zmax for c in zv]
+    n = math.sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2])
+    z = [c / n for c in z]
+    vmax = max(abs(Vv[0]), abs(Vv[1]), abs(Vv[2]))
+    speed = vmax * math.sqrt(sum((c / vmax) ** 2 for c in Vv)) if vmax > 0 else 0.0
+    axial = Vv[0] * z[0] + Vv[1] * z[1] + Vv[2] * z[2]
+    beta = math.acos(min(max(axial / speed, -1.0), 1.0)) if speed > 0 else 0.0
+    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
+                        on_failure=on_failure)
+    v_ip = [Vv[i] - axial * z[i] for i in range(3)]
+    n_ip = math.sqrt(v_ip[0] ** 2 + v_ip[1] ** 2 + v_ip[2] ** 2)
+    e = [c / n_ip for c in v_ip] if n_ip > 1e-12 * max(speed, 1e-300) else [0.0, 0.0, 0.0]
+    T, D, Q, MR = float(loads.thrust), float(loads.drag), float(loads.torque), float(loads.rolling_moment)
+    Y, MP = float(loads.side_force), float(loads.pitching_moment)
+    lat = [z[1] * e[2] - z[2] * e[1], z[2] * e[0] - z[0] * e[2], z[0] * e[1] - z[1] * e[0]]  # z x e_ip
+    force = np.array([T * z[i] - D * e[i] - (s * Y * lat[i] if Y else 0.0) for i in range(3)])
+    torque = np.array([-s * (Q * z[i] + MR * e[i]) - (MP * lat[i] if MP else 0.0) for i in range(3)])
+    return RotorWrench(force=force, torque=torque, loads=loads, jacobian=None)
 
 
 #: the loads whose slopes at rest :func:`still_air_slopes` gives (the odd ones edgewise, the even ones axially)
