@@ -242,3 +242,24 @@ def test_a_determined_flap_compliance_keeps_its_interval():
     lo, hi = res.identifiability.ci95[j]
     assert lo < 1.0 < hi < 5.0 and res.x[j] == pytest.approx(1.0, rel=0.2)
     assert not any("saturates" in w for w in res.warnings)
+
+
+def test_a_flight_fit_records_its_coverage_and_a_faster_log_is_warned(tmp_path, capsys, shared_data):
+    """A flight fit's file had no [coverage]: `wrench` on a faster flight than the fit's logs said
+    nothing. Fitted on the slow figure-8 (985-1250 rad/s, 3.5 m/s), the race track (to 1912 rad/s)
+    is warned of."""
+    from propmap.io.params_file import set_coverage
+
+    logs = shared_data / "neurobem_flights"
+    out = tmp_path / "slow.toml"
+    vehicle = str(EXAMPLES / "neurobem_quadrotor.toml")
+    assert main(["fit", "flight", str(logs / "bemnn20210223104803seg2.mat"), "--vehicle", vehicle, "--rate-hz",
+                 "10", "--out", str(out)]) == 0
+    cov = set_coverage(str(out))
+    assert 9000 < cov["rpm_min"] < cov["rpm_max"] < 12000 and 3.0 < cov["airspeed_max"] < 4.0
+    assert 90 < cov["incidence_deg_max"] < 180 and 0 < cov["J_max"] < 0.1
+    capsys.readouterr()
+    assert main(["wrench", str(logs / "bemnn20210218171908seg2.mat"), "--vehicle", vehicle, "--params", str(out),
+                 "--out", str(tmp_path / "race.csv")]) == 0
+    err = capsys.readouterr().err
+    assert f"rpm: the data behind {out} span" in err and "advance ratio up to" in err

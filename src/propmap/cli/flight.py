@@ -318,10 +318,26 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
+    train_mask = ~np.isin(samples.log_index, held_idx)
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
-                   figure_suffixes=(".png", ".speed.png"),
+                   figure_suffixes=(".png", ".speed.png"), coverage=_flight_coverage(pred.loads, veh, train_mask),
                    body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
+
+
+def _flight_coverage(loads, veh, mask) -> dict:
+    """What the training samples' rotors covered (every rotor's operating points), for the written
+    file's [coverage] table: `wrench` and `loads` with the file then warn of faster flights."""
+    import numpy as np
+
+    om = np.concatenate([lo.omega[mask] for lo in loads])
+    V = np.concatenate([lo.airspeed[mask] for lo in loads])
+    inc = np.concatenate([lo.incidence[mask] for lo in loads])
+    D = np.concatenate([np.full(int(mask.sum()), r.propeller.diameter) for r in veh.rotors])
+    n = om / (2 * math.pi)
+    return {"J_max": max(0.0, float(np.max(V * np.cos(inc) / (n * D)))),
+            "incidence_deg_max": float(np.degrees(np.max(inc))), "rpm_min": float(np.min(n) * 60),
+            "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(V))}
 
 
 def _hover_loads(params, veh, samples, air):
