@@ -263,3 +263,11 @@ def test_a_flight_fit_records_its_coverage_and_a_faster_log_is_warned(tmp_path, 
                  "--out", str(tmp_path / "race.csv")]) == 0
     err = capsys.readouterr().err
     assert f"rpm: the data behind {out} span" in err and "advance ratio up to" in err
+
+
+def test_a_converted_value_out_of_range_is_named_as_written(tmp_path):
+    f = tmp_path / "t.csv"
+    f.write_text("rpm,airspeed,incidence (rad),thrust\n5000,5,0,3\n5000,5,15,2\n")
+    with pytest.raises(DataError, match=r"line 3: incidence_deg must be in \[0, 180\] deg, got 'incidence \(rad\)' = "
+                                        r"15, i.e. incidence_deg = 859.4"):
+        read_loads(f)

@@ -235,8 +235,10 @@ class _Csv:
                              "save the numbers without one", line)
         return cell
 
-    def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict) -> None:
-        """Refuse the first value outside its column's range, naming the line and the range."""
+    def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict, written: dict | None = None) -> None:
+        """Refuse the first value outside its column's range, naming the line and the range;
+        ``written``: quantity -> (column name as written, factor to SI) of converted columns, whose
+        value is then named as written too."""
         for c, x in values.items():
             key = "rpm" if (c == "rpm" or _ROTOR_RE.fullmatch(c)) else c
             if key not in ranges:
@@ -248,4 +250,6 @@ class _Csv:
                 if key == "rpm":  # rpm_1 .. rpm_n too
                     raise self.error(f"rpm must be > 0 and <= {hi:.0f} (the solver's limit of 1e5 rad/s), got "
                                      f"{c} = {x[i]:g}", int(lines[i]))
-                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {x[i]:g}", int(lines[i]))
+                name, factor = (written or {}).get(c, (c, 1.0))
+                shown = (f"{name!r} = {x[i] / factor:g}, i.e. {c} = {x[i]:g}" if factor != 1.0 else f"{x[i]:g}")
+                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {shown}", int(lines[i]))

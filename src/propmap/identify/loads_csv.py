@@ -216,7 +216,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if "torque" in v and n:
         v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
     named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
-    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES)
+    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES,
+                   written={q: cm.columns[q][:2] for q in cm.columns})
     if n < min_points:
         raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
     if "incidence_deg" in cm.columns and cm.columns["incidence_deg"][2] is None:  # a unit given is believed
