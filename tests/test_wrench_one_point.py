@@ -48,3 +48,30 @@ def test_one_point_has_the_array_paths_errors():
     # D = 0 in hover and axial flow, the thrust along the axis
     w = pm.rotor_wrench(prop, params, [0.0, 0.0, 3.0], [0.0, 0.0, 2.0], 800.0)
     assert w.force[0] == 0.0 and w.force[1] == 0.0 and w.force[2] == pytest.approx(float(w.loads.thrust))
+
+
+def test_the_one_point_path_is_taken_and_the_odd_inputs_go_the_array_way(monkeypatch):
+    """One velocity, axis, rate and spin never reach disk_frame; an integer beyond int64, a masked
+    array, an array spin or derivatives do, with the array path's own errors."""
+    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+
+    def no(*args):
+        raise AssertionError("the array path")
+
+    with monkeypatch.context() as m:
+        m.setattr(vector, "disk_frame", no)
+        w = pm.rotor_wrench(prop, params, np.array([6.0, 0.0, 0.0]), (0, 0, 1), 800, "cw")  # exactly edgewise
+        assert w.force[0] == pytest.approx(-float(w.loads.drag)) and w.loads.incidence == pytest.approx(math.pi / 2)
+        pm.rotor_wrench(prop, params, [1, 2, 3], [0.0, 1.0, 1.0], np.float64(700.0), -1, derivatives=())
+    for bad, match in (([10**20, 0, 0], "velocity must be numbers"), ([10**400, 0, 0], "velocity must be numbers")):
+        with pytest.raises(ValueError, match=match):
+            pm.rotor_wrench(prop, params, bad, [0.0, 0.0, 1.0], 800.0)
+    with pytest.raises(ValueError, match="omega must be a number"):
+        pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 10**400)
+    with pytest.raises(ValueError, match="axis must be non-zero"):  # before the spin, as the array path
+        pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0], 800.0, spin="left")
+    with pytest.raises(ValueError, match="derivatives must be a sequence of names"):
+        pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives="")
+    masked = pm.rotor_wrench(prop, params, np.ma.array([5.0, 0.0, 1.0]), [0.0, 0.0, 1.0], 800.0)
+    np.testing.assert_allclose(masked.force, pm.rotor_wrench(prop, params, [5.0, 0.0, 1.0], [0.0, 0.0, 1.0],
+                                                              800.0).force, rtol=1e-13)

@@ -385,15 +385,16 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
     from ..io.inputs import show_path
 
-    spec = params_spec
-    if spec is None:  # the vehicle's rotor sets: one set for all (its label, air and coverage) or a list
-        from ..vehicle.file import rotor_param_specs
+    from ..vehicle.file import rotor_param_specs
 
-        own = rotor_param_specs(vehicle)
-        spec = own[0] if own[0] is not None and len(set(own)) == 1 else None
+    # the vehicle's rotor sets where no --params: one set for all (its label, air and coverage), or each its own
+    own = rotor_param_specs(vehicle) if params_spec is None else ()
+    spec = params_spec if params_spec is not None else (
+        own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
     params, air, label = load_params("generic" if spec is None else spec, option="--params")
-    if params_spec is None and spec is None and any(own):
-        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) if s else "generic" for s in own))
+    sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
+    if len(set(sets)) > 1:
+        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
     air = resolve_air(air, air_choice)
     body = veh.body_drag
     if params_spec is not None:
@@ -442,9 +443,10 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     # the log's rotor operating points beyond the data behind the parameters (a fitted file's [coverage])
     import numpy as np
 
-    for name, prop in {r.propeller.name: r.propeller for r in veh.rotors}.items():  # once per propeller
-        ld = [w.loads[i] for i, r in enumerate(veh.rotors) if r.propeller.name == name]
+    # each rotor's own set where the vehicle file names one (with its coverage), once per propeller and set
+    for (name, set_label), prop in {(r.propeller.name, k): r.propeller for r, k in zip(veh.rotors, sets)}.items():
+        ld = [w.loads[i] for i, r in enumerate(veh.rotors) if r.propeller.name == name and sets[i] == set_label]
         rpm = np.concatenate([x.omega for x in ld]) * 30 / np.pi
-        coverage_messages(prop, label, air, *envelope_extremes(
+        coverage_messages(prop, set_label, air, *envelope_extremes(
             prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())))

@@ -457,9 +457,14 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
         lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
         n += len(df)
         inc = values["incidence_deg"][values["airspeed"] > STATIC_AIRSPEED]
-        if inc.size:
-            seen += [inc.max(), *inc[np.abs(inc - np.round(inc)) > 1e-6][:1]]
-    hint = radians_hint(seen, np.full(len(seen), np.inf))
+        if inc.size:  # (and the one farthest from a whole degree read as radians)
+            far = np.abs(np.degrees(inc) - np.round(np.degrees(inc)))
+            seen += [inc.max(), *inc[np.abs(inc - np.round(inc)) > 1e-6][:1], inc[int(np.argmax(far))]]
+    reader, _, _, mapped = _points_reader(path, CHUNK)
+    reader.close()
+    name = mapped["incidence_deg"][0] if "incidence_deg" in mapped else ""
+    # a unit stated in the header is believed (incidence (deg), Incidence (°)); the bare incidence_deg is checked
+    hint = radians_hint(seen, np.full(len(seen), np.inf), name) if name.strip().lower() == "incidence_deg" else None
     if hint:
         warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
     return n, ext, (lo, hi)

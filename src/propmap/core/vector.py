@@ -159,7 +159,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
-    if not derivatives:
+    if derivatives is None or derivatives is False or (isinstance(derivatives, (tuple, list)) and not derivatives):
         one = _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure)
         if one is not None:
             return one
@@ -201,15 +201,19 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
 
 
+def _plain_number(c) -> bool:
+    """A real number NumPy reads as one (not a bool, not an integer beyond int64)."""
+    return (isinstance(c, (int, float, np.floating, np.integer)) and not isinstance(c, (bool, np.bool_))
+            and not (isinstance(c, int) and abs(c) >= 2**63))
+
+
 def _plain3(value):
-    """A plain sequence or 1-D array of three real numbers (not bools) as floats, else None."""
-    if isinstance(value, np.ndarray):
+    """A plain sequence or 1-D array (not a subclass) of three real numbers as floats, else None."""
+    if type(value) is np.ndarray:
         if value.shape != (3,) or value.dtype.kind not in "iuf":
             return None
-        return value.tolist()
-    if isinstance(value, (list, tuple)) and len(value) == 3 and all(
-            isinstance(c, (int, float, np.floating, np.integer)) and not isinstance(c, (bool, np.bool_))
-            for c in value):
+        return [float(c) for c in value.tolist()]
+    if isinstance(value, (list, tuple)) and len(value) == 3 and all(_plain_number(c) for c in value):
         return [float(c) for c in value]
     return None
 
@@ -220,15 +224,14 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     not one velocity, one axis, one rate and one spin (the array path takes them, and its errors).
     The same arithmetic as :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
     Vv, zv = _plain3(velocity), _plain3(axis)
-    if Vv is None or zv is None or isinstance(omega, (bool, np.bool_)) or not isinstance(
-            omega, (int, float, np.floating, np.integer)) or not isinstance(spin, (str, int, float)):
+    if Vv is None or zv is None or not _plain_number(omega) or not isinstance(spin, (str, int, float)):
         return None
     if not all(math.isfinite(c) for c in Vv + zv):
         return None  # (the array path names it)
-    s = float(_spin_sign(spin))
     zmax = max(abs(zv[0]), abs(zv[1]), abs(zv[2]))
     if zmax == 0.0:
         raise ValueError("axis must be non-zero")
+    s = float(_spin_sign(spin))
     z = [c / zmax for c in zv]
     n = math.sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2])
     z = [c / n for c in z]

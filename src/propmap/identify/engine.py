@@ -230,7 +230,8 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
     # a linearised interval past a bound (cd_min below 0, a compliance below 0) is cut at it
-    idf = replace(idf, ci95=np.clip(np.asarray(idf.ci95, float), lb[:, None], ub[:, None]))
+    ci = np.asarray(idf.ci95, float)  # (an undetermined parameter's infinite interval stays: null in the report)
+    idf = replace(idf, ci95=np.where(np.isfinite(ci), np.clip(ci, lb[:, None], ub[:, None]), ci))
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
@@ -238,6 +239,10 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
             if side == "lower" and b == 0.0 and n in ABSENT_AT_ZERO:
                 warns.append(f"{n} ended at 0, its lower bound: the data show none of this effect (held at 0)")
+            elif side == "upper" and n == "flap_compliance":
+                warns.append(f"{n} ended at its upper bound {shown} rad/(N m): the blades flap as freely as the model "
+                             "allows, and a larger compliance would change the loads little (the flapping saturates; "
+                             "held there)")
             else:
                 warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
                              "its value is the bound's (held there); suspect the data, the geometry or the model")

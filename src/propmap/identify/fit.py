@@ -536,67 +536,92 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
 
 
 def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitResult:
-    """The flap compliance's 95% interval reaches its upper bound where the data do not tell
-    the fitted compliance from the bound's.
+    """The flap compliance's upper 95% limit from the profile likelihood where the linearised
+    one is too narrow.
 
     The flapping saturates: beyond a few rad/(N m) a propeller's blades flap nearly as an
     articulated blade's (the centrifugal stiffening), so the loads change little and the
     linearised interval, from the local slope, is far too narrow (a user-level audit,
-    2026-11-26: 12 fits of one propeller's loads at incidence with 1% noise gave 7-50 for a
-    true 15, each with an interval of about +-10%). The profile likelihood decides: the other
-    parameters refitted (``residual``, with the prior's rows where the fit had them) with the
-    compliance at its upper bound; where the cost rises by less than the 95% criterion,
-    (t_{0.975, N-p})^2 / 2 times the data's residual variance, the interval's upper end is set
-    to the bound and a warning says so (D. J. Venzon and S. H. Moolgavkar, "A method for
-    computing profile-likelihood-based confidence intervals", Applied Statistics 37(1), 1988).
-    A refit of p - 1 parameters from the optimum, at most 40 model calls.
+    2026-11-26: fits of loads made with a compliance of 15 and 1% noise gave 7-50, each with
+    an interval of about +-10%). The profile likelihood decides (D. J. Venzon and S. H.
+    Moolgavkar, "A method for computing profile-likelihood-based confidence intervals",
+    Applied Statistics 37(1), 1988): the other parameters refitted (``residual``, with the
+    prior's rows where the fit had them) with the compliance held, the upper limit is where
+    the cost has risen by the 95% criterion, (t_{0.975, N-p})^2 / 2 times the data's residual
+    variance. Held at the upper bound first: a smaller rise puts the limit at the bound;
+    else held at the linearised limit: a smaller rise there means that limit is too narrow,
+    and five bisections (geometric) between it and the bound place the profile's. The limit
+    and a warning replace the linearised ones; the lower limit stays linearised. 1-7 refits
+    from the optimum, each at most 40 residual evaluations (with the implicit Jacobian).
     """
     names = result.names
     if "flap_compliance" not in names or "flap_compliance" in result.at_bound:
         return result
     from scipy import optimize, stats
 
+    from ..core.solver import SolverError
+
     j = names.index("flap_compliance")
     lb, ub = _bounds(names, options)
     top = float(ub[j])
+    x_opt = np.asarray(result.x, float)
+    if not (math.isfinite(top) and x_opt[j] < top):
+        return result
     keep = np.array([i != j for i in range(len(names))])
     both = getattr(residual, "with_jacobian", None)
-    seen = {}
-
-    def at(z):
-        return np.insert(np.asarray(z, float), j, top)
-
-    def fun(z):
-        if both is None:
-            return residual(at(z))
-        r, J = both(at(z))
-        seen["z"], seen["J"] = np.array(z, float), J[:, keep]
-        return r
-
-    def jac(z):
-        if "z" in seen and np.array_equal(seen["z"], np.asarray(z, float)):
-            return seen["J"]
-        fun(z)
-        return seen["J"]
-
-    z0 = np.clip(np.asarray(result.x, float)[keep], lb[keep], ub[keep])
-    sol = optimize.least_squares(fun, z0, jac=jac if both is not None else "2-point", bounds=(lb[keep], ub[keep]),
-                                 method="trf", x_scale="jac", max_nfev=40)
     dof = max(result.residuals.size - len(names), 1)
     s2 = float(result.residuals @ result.residuals) / dof
     optimum = result.cost + float(result.extra.get("prior", {}).get("cost", 0.0))
-    rise = float(sol.cost) - optimum
     edge = 0.5 * float(stats.t.ppf(0.975, dof)) ** 2 * s2
-    if not rise < edge:
-        return result
+
+    def rise(k: float) -> float:
+        """The profile's cost at compliance k, less the optimum's."""
+        seen = {}
+
+        def at(z):
+            return np.insert(np.asarray(z, float), j, k)
+
+        def fun(z):
+            if both is None:
+                return residual(at(z))
+            r, J = both(at(z))
+            seen["z"], seen["J"] = np.array(z, float), J[:, keep]
+            return r
+
+        def jac(z):
+            if "z" not in seen or not np.array_equal(seen["z"], np.asarray(z, float)):
+                fun(z)
+            return seen["J"]
+
+        sol = optimize.least_squares(fun, np.clip(x_opt[keep], lb[keep], ub[keep]),
+                                     jac=jac if both is not None else "2-point", bounds=(lb[keep], ub[keep]),
+                                     method="trf", x_scale="jac", max_nfev=40)
+        return float(sol.cost) - optimum
+
     idf = result.identifiability
     ci = np.array(idf.ci95, dtype=float)
-    ci[j, 1] = top
-    warn = (f"flap_compliance: the data hardly tell {result.x[j]:.3g} from the bound {top:g} rad/(N m) (refitted "
-            f"with it there, the cost rises by {rise / s2:.2g} residual variances, the 95% edge {edge / s2:.2g}): the "
-            "blades' flapping saturates, so the 95% interval reaches the bound (the data say the blades flap at "
-            "least about this much, not how much more)")
-    return replace(result, identifiability=replace(idf, ci95=ci), warnings=(*result.warnings, warn))
+    linear = float(ci[j, 1])
+    try:
+        at_top = rise(top)
+        if at_top < edge:
+            limit, why = top, (f"the data hardly tell {x_opt[j]:.3g} from the bound {top:g} rad/(N m) (refitted with "
+                               f"it there, the cost rises by {at_top / s2:.2g} residual variances, the 95% edge "
+                               f"{edge / s2:.2g}): the blades' flapping saturates, so the 95% interval reaches the "
+                               "bound (the data say the blades flap at least about this much, not how much more)")
+        elif math.isfinite(linear) and x_opt[j] < linear < top and rise(linear) < edge:
+            lo_k, hi_k = linear, top
+            for _ in range(5):
+                mid = math.sqrt(lo_k * hi_k)
+                lo_k, hi_k = (mid, hi_k) if rise(mid) < edge else (lo_k, mid)
+            limit, why = hi_k, (f"its 95% interval's upper end is {hi_k:.3g} rad/(N m) by the profile likelihood "
+                                f"(the linearised one, {linear:.3g}, is too narrow: the flapping saturates)")
+        else:
+            return result
+    except (SolverError, ValueError, FloatingPointError):  # a refit that fails leaves the linearised interval
+        return result
+    ci[j, 1] = limit
+    warns = (*result.warnings, f"flap_compliance: {why}")
+    return replace(result, identifiability=replace(idf, ci95=ci), warnings=warns)
 
 
 def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,

@@ -125,12 +125,17 @@ def radians_hint(incidence_deg, airspeed, column: str = "incidence_deg") -> str 
     str or None
         The message where the points with an airspeed above :data:`STATIC_AIRSPEED` (two or
         more) have incidences no larger than pi rounded up to 3.15, some above 0 and some not
-        whole degrees (0-1.5708 "deg": a tunnel's 0-90 deg written in radians); None otherwise.
+        whole degrees, and every one of them, read as radians, within 0.035 deg of a whole degree
+        (0-1.5708 "deg": a tunnel's 0-90 deg written in radians, to 3-4 decimals); None otherwise
+        (a measured misalignment of 0.12 deg, a sweep of 0.5-2.5 deg).
     """
     inc = np.asarray(incidence_deg, float)[np.asarray(airspeed, float) > STATIC_AIRSPEED]
     if inc.size < 2 or not 0.0 < inc.max() <= 3.15:
         return None
     if not np.any(np.abs(inc - np.round(inc)) > 1e-6):
+        return None
+    as_deg = np.degrees(inc)
+    if np.any(np.abs(as_deg - np.round(as_deg)) > 0.035):
         return None
     top = float(inc.max())
     return (f"{column}: incidences up to {top:g} deg at airspeed: radians? ({top:g} rad = {math.degrees(top):.4g} "

@@ -84,7 +84,8 @@ _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "f
                   "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
                   "flow velocity", "true airspeed")
 _ADVANCE_LIKE = ("advance ratio", "advance_ratio")
-_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle")
+_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "incidence angle",
+               "angle of incidence")
 #: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, a stand's tilt): a note
 _AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
               "tilt": "incidence_deg", "tilt angle": "incidence_deg", "inclination": "incidence_deg",
@@ -141,8 +142,9 @@ def _split(name: str) -> tuple[str, str | None]:
         return low, None
     if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
         return low.replace("_", " "), None
-    if "_" in low and low.rsplit("_", 1)[0] in ("throttle", "esc") and _token(low.rsplit("_", 1)[1]) in _ESC_UNITS:
-        return low.rsplit("_", 1)[0], low.rsplit("_", 1)[1]  # throttle_pct, esc_us
+    if "_" in low and low.rsplit("_", 1)[0].replace("_", " ") in ("throttle", "esc", "esc signal") and _token(
+            low.rsplit("_", 1)[1]) in _ESC_UNITS:
+        return low.rsplit("_", 1)[0].replace("_", " "), low.rsplit("_", 1)[1]  # throttle_pct, esc_us, esc_signal_us
     if "_" in low:
         base, unit = low.rsplit("_", 1)
         if base not in _NAMES and base.replace("_", " ") in _NAMES:  # wind_speed_mps
@@ -151,10 +153,11 @@ def _split(name: str) -> tuple[str, str | None]:
             kind = _NAMES[base][1]
             if kind is not None and _token(unit) in UNITS[kind]:
                 return base, unit
-        # e.g. speed_rad_s: the unit itself holds an underscore
+        # e.g. speed_rad_s, wind_speed_m_s: the unit itself holds an underscore (a known name's blanks as underscores)
         for k in sorted(_NAMES, key=len, reverse=True):
-            if low.startswith(k + "_") and _NAMES[k][1] is not None and _token(low[len(k) + 1:]) in UNITS[_NAMES[k][1]]:
-                return k, low[len(k) + 1:]
+            stem = k.replace(" ", "_") + "_"
+            if low.startswith(stem) and _NAMES[k][1] is not None and _token(low[len(stem):]) in UNITS[_NAMES[k][1]]:
+                return k, low[len(stem):]
         # a known quantity with a unit suffix propmap does not know (torque_Ncm): returned
         # as such, so that the unit is refused rather than the column silently ignored
         if base in _NAMES and _NAMES[base][1] is not None:
@@ -162,19 +165,21 @@ def _split(name: str) -> tuple[str, str | None]:
     return low, None
 
 
-def _split_unread(name: str) -> tuple[str, str | None]:
-    """:func:`_split` for a column propmap does not read, also taking a trailing speed or angle
-    unit after an underscore (``freestream_mps``, ``tunnel_speed_m_s``, ``alpha_deg``), the
-    quantity text with underscores as spaces (``disk_angle_deg`` -> ``disk angle``)."""
+def _name_stems(name: str) -> frozenset:
+    """The quantity texts of a column propmap does not read, for comparing it with the names of
+    airspeeds and flow angles: :func:`_split`'s, and that less a trailing speed or angle unit
+    after an underscore (``freestream_mps``, ``tunnel_speed_m_s``, ``V_inf_ms``, ``alpha_deg``),
+    underscores as blanks (``disk_angle_deg`` -> ``disk angle``). Only a stem that is such a name
+    counts (``timestamp_ms`` is no airspeed: ms there is a millisecond)."""
     base, unit = _split(name)
     if unit is not None or base in _NAMES:
-        return base, unit
+        return frozenset((base,))
     parts = base.split("_")
+    out = {base.replace("_", " ")}
     for k in (1, 2):  # m_s, km_h
-        u = "_".join(parts[-k:])
-        if len(parts) > k and any(_token(u) in UNITS[kind] for kind in ("speed", "angle")):
-            return " ".join(parts[:-k]), name.strip()[-len(u):]
-    return base.replace("_", " "), None
+        if len(parts) > k and any(_token("_".join(parts[-k:])) in UNITS[kind] for kind in ("speed", "angle")):
+            out.add(" ".join(parts[:-k]))
+    return frozenset(out)
 
 
 def _loose(names) -> frozenset:
@@ -272,10 +277,11 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
                 if pair else "")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
-    split = {name: _split_unread(name) for name in names if name.strip()}
+    split = {name: _split(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
     bases = {name: b for name, (b, u) in split.items()
              if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
+    stems = {name: _name_stems(name) for name in bases}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
         coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
         if coeff:
@@ -286,12 +292,17 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     # a tunnel's wind-axis lift and drag are not the rotor's thrust and in-plane force (lift = T sin i + H cos i,
     # drag = H sin i - T cos i at incidence i, the lift positive towards the rotor axis' side)
     lift = [n for n, (b, _) in split.items()
-            if re.fullmatch(r"(wind[ _])?lift([ _]force)?([ _](n|mn|kn|kgf|kg|gf|g|lbf|lb|ozf|oz))?", b)]
-    if lift:
+            if re.fullmatch(r"(wind[ _])?lift([ _]force)?([ _](n|mn|kn|kgf|kg|gf|g|lbf|lbs|lb|ozf|oz))?", b)]
+    moving = "airspeed" in cm.columns or "incidence_deg" in cm.columns or any(
+        stems[n] & _loose(_AIRSPEED_LIKE + _ADVANCE_LIKE + _ANGLE_LIKE) for n in stems)
+    if lift and moving:
         raise error(f"column {lift[0]!r}: propmap reads the loads in the rotor's axes (thrust along the axis, 'drag' "
                     "the in-plane force); a wind tunnel's lift L and drag D convert with the incidence i as thrust = "
                     "L sin(i) - D cos(i), in-plane force = L cos(i) + D sin(i) (the lift positive towards the rotor "
                     "axis' side): write those columns instead")
+    if lift and "thrust" not in cm.columns:
+        raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
+                    "(with its unit) to fit it")
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
@@ -301,7 +312,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
         if quantity in cm.columns:
             continue
-        like = [n for n, b in bases.items() if b in _loose(similar)]
+        like = [n for n in bases if stems[n] & _loose(similar)]
         # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
         # points move (Shaft angle (deg) beside an airspeed): its name may be anything
         kind = "speed" if quantity == "airspeed" else "angle"
