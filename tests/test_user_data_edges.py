@@ -306,3 +306,41 @@ def test_a_converted_value_out_of_range_is_named_as_written(tmp_path):
     with pytest.raises(DataError, match=r"line 3: incidence_deg must be in \[0, 180\] deg, got 'incidence \(rad\)' = "
                                         r"15, i.e. incidence_deg = 859.4"):
         read_loads(f)
+
+
+def test_validate_takes_a_users_own_load_file(tmp_path, capsys):
+    """`propmap validate DATA --prop GEOM [--params P]`: a set against one's own measurements, in
+    coefficient form, per group: the data made by the calibrated set give zero thrust and torque
+    error; the generic set gives its own, and the in-plane force of flapping blades is what a
+    rigid set misses."""
+    import json
+
+    prop = pm.load_propeller("apce_8x6")
+    truth = pm.default_params("apce_8x6").replace(flap_compliance=5.0)
+    rows = ["rpm,airspeed,incidence_deg,thrust (N),drag (N),torque (N m),group"]
+    for rpm in (4000.0, 6000.0):
+        for V, inc in ((0.0, 0.0), (5.0, 45.0), (10.0, 90.0)):
+            r = pm.rotor_loads(prop, truth, rpm * math.pi / 30, V, math.radians(inc))
+            rows.append(f"{rpm},{V},{inc},{float(r.thrust)!r},{float(r.drag)!r},{float(r.torque)!r},r{rpm:.0f}")
+    f = tmp_path / "tunnel.csv"
+    f.write_text("\n".join(rows) + "\n")
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--json"]) == 0
+    e = json.loads(capsys.readouterr().out)
+    assert e["params_label"] == "calibrated:apce_8x6" and e["n_points"] == 6 and set(e["groups"]) == {"r4000", "r6000"}
+    assert e["overall"]["thrust"]["rms"] < 1e-9 and e["overall"]["torque"]["rms"] < 1e-9  # flapping: T, Q alike
+    assert 0.01 < e["overall"]["drag"]["rms"] < 0.5 and e["overall"]["drag"]["bias"] < 0  # the rigid set's H short
+    assert e["reference"]["drag"][0] == "mean static CT"
+    rigid = pm.rotor_loads(prop, pm.default_params("apce_8x6"), 6000 * math.pi / 30, 10.0, math.pi / 2)
+    flap = pm.rotor_loads(prop, truth, 6000 * math.pi / 30, 10.0, math.pi / 2)
+    n = 100.0
+    ct0 = e["reference"]["thrust"][1]
+    assert e["groups"]["r6000"]["drag"]["max"] == pytest.approx(
+        abs(float(rigid.drag - flap.drag)) / (1.225 * n**2 * prop.diameter**4) / ct0, rel=1e-6)
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--params", "generic"]) == 0
+    out = capsys.readouterr().out
+    assert "params generic" in out and "all points" in out and "r4000" in out
+    assert main(["validate", str(f)]) == 2
+    assert "--prop: a file SOURCE needs the propeller" in capsys.readouterr().err
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--figure", str(tmp_path / "x.png")]) == 2
+    assert main(["validate", "apce_8x6", "--blades", "2"]) == 2
+    assert "--blades applies to SOURCE files" in capsys.readouterr().err

@@ -10,6 +10,8 @@
   |dCP| / static CP.
 * :func:`holdout_loads`: held-out errors of fits to load data at incidence (thrust, in-plane
   force, torque), each fold's training points fitted with the defaults or given names.
+* :func:`load_errors`: a parameter set against a user's own load data (a thrust stand's, a
+  wind tunnel's), overall and per group (``propmap validate DATA --prop GEOM``).
 
 Measurements: UIUC Propeller Data Site vol. 1 (Brandt & Selig, AIAA 2011-1255).
 """
@@ -27,7 +29,7 @@ from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
 from .io.catalogue import CatalogueEntry
 
 __all__ = ["SweepComparison", "Validation", "validate", "coefficient_errors", "cross_validate", "holdout_loads",
-           "PROTOCOLS"]
+           "load_errors", "PROTOCOLS"]
 
 
 @dataclass(frozen=True)
@@ -441,3 +443,80 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
             err[k].append((getattr(r, k) - data.measured[k][~train]) / scale)
     out = {f"rms_{k}": float(np.sqrt(np.mean(np.concatenate(v) ** 2))) for k, v in err.items()}
     return {**out, "flap_compliance": compliance, "n_points": int(sum(len(v) for v in err["thrust"]))}
+
+
+def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air | None = None,
+                discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """A parameter set against load measurements, in coefficient form, overall and per group.
+
+    Each measured load is compared as a coefficient, so that every rate weighs alike: thrust
+    and in-plane force as F / (rho n^2 D^4), torque as Q / (rho n^2 D^5); the errors are in
+    units of a reference coefficient: the mean measured static thrust coefficient for thrust
+    and in-plane force and the static torque coefficient for torque (the points at an airspeed
+    up to 0.3 m/s), as the catalogue's metric (docs/validation.md), or, without static points,
+    the rms of the measured coefficient.
+
+    Parameters
+    ----------
+    data : LoadData
+        From :func:`propmap.identify.read_loads` or the UIUC readers; any of thrust, drag
+        (the in-plane force), torque measured.
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    air : Air, optional
+        Default: ``params.air``.
+    discretization : Discretization, optional
+
+    Returns
+    -------
+    dict
+        ``reference``: quantity -> (what it is, its value); ``overall`` and ``groups`` (group
+        label -> the same): quantity -> {``rms``, ``bias`` (mean model - measured), ``max``
+        (largest magnitude), in units of the reference [-]; ``rms_si``, the rms error in N or
+        N m; ``n``}; ``n_points``; ``converged`` (points the solver converged on).
+
+    Raises
+    ------
+    ValueError
+        No load measured, or a reference of zero (every measured value 0).
+    SolverError
+        From the model.
+    """
+    from .identify.load_data import STATIC_AIRSPEED
+
+    air = params.air if air is None else air
+    keys = [k for k in ("thrust", "drag", "torque") if k in data.measured]
+    if not keys:
+        raise ValueError("no load measured (thrust, drag or torque)")
+    r = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air,
+                    discretization=discretization, collective=data.collective, on_failure="flag")
+    n = data.omega / (2 * math.pi)
+    D = propeller.diameter
+    scale = {"thrust": air.rho * n**2 * D**4, "drag": air.rho * n**2 * D**4, "torque": air.rho * n**2 * D**5}
+    model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+    static = data.airspeed <= STATIC_AIRSPEED
+    coeff = {k: data.measured[k] / scale[k] for k in keys}
+    reference = {}
+    for k in keys:
+        own = "thrust" if k in ("thrust", "drag") and "thrust" in coeff else k
+        if static.any():
+            value, what = float(np.mean(coeff[own][static])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
+        else:
+            value, what = float(np.sqrt(np.mean(coeff[own] ** 2))), f"rms measured {own} coefficient"
+        if not (math.isfinite(value) and value != 0.0):
+            raise ValueError(f"the {what} is {value:g}: no reference for the {k} errors")
+        reference[k] = (what, value)
+
+    def summary(mask) -> dict:
+        out = {}
+        for k in keys:
+            e = (model[k][mask] / scale[k][mask] - coeff[k][mask]) / reference[k][1]
+            si = model[k][mask] - data.measured[k][mask]
+            out[k] = {"rms": float(np.sqrt(np.mean(e**2))), "bias": float(np.mean(e)),
+                      "max": float(np.max(np.abs(e))), "rms_si": float(np.sqrt(np.mean(si**2))), "n": int(mask.sum())}
+        return out
+
+    everything = np.ones(data.n, bool)
+    groups = {str(g): summary(data.group == g) for g in dict.fromkeys(data.group)} if len(set(data.group)) > 1 else {}
+    return {"reference": reference, "overall": summary(everything), "groups": groups, "n_points": data.n,
+            "converged": int(np.sum(r.converged))}

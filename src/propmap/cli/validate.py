@@ -1,11 +1,14 @@
-"""``propmap validate``: the model against bundled measurements, one propeller or the whole catalogue."""
+"""``propmap validate``: the model against measurements: a catalogue propeller's bundled ones, the
+whole catalogue's, or a user's own load files."""
 
 from __future__ import annotations
+
+import os
 
 import click
 
 from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params,
-                      parse_names, resolve_air, with_air_options)
+                      parse_names, resolve_air, with_air_options, with_prop_options)
 from .validate_all import PROTOCOLS
 
 
@@ -25,31 +28,62 @@ def print_table(v) -> None:
 
 
 @click.command("validate")
-@click.argument("prop", required=False)
+@click.argument("sources", metavar="[PROP | SOURCE...]", nargs=-1)
 @click.option("--all", "all_props", is_flag=True,
               help="Cross-validate every catalogue propeller with measurements (about 1 minute on 2 cores).")
-@click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Single propeller only.")
+@click.option("--prop", "prop_spec", default=None,
+              help="The propeller (catalogue name or geometry file) of SOURCE files.")
+@with_prop_options
+@click.option("--params", "params_spec", default=None, help=PARAMS_HELP + " Not with --all.")
+@click.option("--rpm-source", type=click.Choice(["optical", "electrical"]), default=None,
+              help="A thrust-stand export's speed column (default: the optical one where present).")
+@click.option("--pole-pairs", type=int, default=None,
+              help="Divide a stand's electrical speed by the motor's pole pairs (raw electrical rpm), in [1, 50].")
 @click.option("--protocols", default=None,
-              help=f"With --all: comma-separated subset of {', '.join(PROTOCOLS)} (default: all).")
+              help="With --all: comma-separated subset of loso, loro, lowest, static, blind (default: all).")
 @click.option("--props", "only", default=None, help="With --all: comma-separated catalogue names to restrict to.")
 @click.option("--out-dir", type=PathArg(), default=None,
               help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")
 @click.option("--json", "as_json", is_flag=True, help="Print the errors as JSON.")
 @click.option("--figure", type=PathArg(), default=None,
-              help="Single propeller: figure (.png, .pdf or .svg) of the model against the measurements "
-                   "(default: none written).")
+              help="A catalogue PROP: figure (.png, .pdf or .svg) of the model against the measurements (default: "
+                   "none written).")
 @with_air_options
-def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, figure, air_choice):
-    """The model against bundled measurements.
+def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source, pole_pairs, protocols, only,
+             out_dir, as_json, figure, air_choice):
+    """The model against measurements.
 
     PROP: the model and the hover model against that catalogue propeller's UIUC static
-    and J-sweep data. --all: held-out errors of every calibration protocol over the
-    catalogue, and the published cases (APC 10x7E, DJI 9443, Beaver propeller at
-    incidence, four catalogue propellers in oblique flow).
+    and J-sweep data. SOURCE... with --prop: a parameter set (--params; default the
+    propeller's calibrated set if it is a catalogue one, else the generic set) against your
+    own load measurements, read as `fit loads` reads them (a loads CSV, a thrust-stand
+    export, UIUC-format files): errors overall and per group, in coefficient form. --all:
+    held-out errors of every calibration protocol over the catalogue, and the published
+    cases (APC 10x7E, DJI 9443, Beaver propeller at incidence, four catalogue propellers in
+    oblique flow).
     """
+    from ..io.catalogue import catalogue
+
+    prop = sources[0] if len(sources) == 1 and prop_spec is None and sources[0] in catalogue() else None
+    files = bool(sources) and prop is None
+    if files and len(sources) == 1 and prop_spec is None and not os.path.lexists(sources[0]):
+        from ..io.catalogue import get_entry
+
+        try:  # a misspelt catalogue name: its suggestions
+            get_entry(sources[0])
+        except KeyError as exc:
+            raise InputError(f"PROP: {exc.args[0]} (validate needs a catalogue propeller with measurements, or "
+                             "SOURCE files with --prop)") from None
+    if not files:
+        for option, value in (("--prop", prop_spec), ("--rpm-source", rpm_source), ("--pole-pairs", pole_pairs)):
+            if value is not None:
+                raise InputError(f"{option} applies to SOURCE files (give --prop with them)")
+        for option, value in (("--diameter-in", prop_choice.diameter_in), ("--blades", prop_choice.blades)):
+            if value is not None:
+                raise InputError(f"{option} applies to SOURCE files with a geometry file as --prop")
     if all_props:
-        if prop:
-            raise InputError("give PROP or --all, not both")
+        if sources:
+            raise InputError("give PROP (or SOURCE files) or --all, not both")
         if params_spec is not None:
             raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
         air_given = air_choice.options_given()
@@ -66,12 +100,17 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
             check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
         run_all(list(protocols), list(only), out_dir, as_json)
         return
-    if not prop:
-        raise InputError("give PROP (a catalogue propeller) or --all")
+    if not sources:
+        raise InputError("give PROP (a catalogue propeller), SOURCE files with --prop, or --all")
     for option, value in (("--protocols", protocols is not None),
                           ("--props", only is not None), ("--out-dir", out_dir is not None)):
         if value:
             raise InputError(f"{option} applies to --all")
+    if files:
+        if figure is not None:
+            raise InputError("--figure applies to a catalogue PROP")
+        _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, pole_pairs, as_json, air_choice)
+        return
     if figure is not None:
         if figure.suffix.lower() not in (".png", ".pdf", ".svg"):
             raise InputError(f"--figure: {figure}: give a .png, .pdf or .svg file name (the format follows it)")
@@ -104,3 +143,40 @@ def validate(prop, all_props, params_spec, protocols, only, out_dir, as_json, fi
         print_table(v)
         if fig is not None:
             click.echo(f"figure: {fig}")
+
+
+def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, pole_pairs, as_json, air_choice):
+    """``validate SOURCE... --prop P``: a parameter set against the user's own load files."""
+    from ..core.solver import SolverError
+    from ..validation import load_errors
+    from .fit import _file_air, _read_sources
+
+    params, air, label = load_params(params_spec, prop_spec, option="--params")
+    air = resolve_air(air, air_choice)
+    data, prop, _, what = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+    for note in data.notes:
+        click.echo(f"propmap: note: {note}", err=True)
+    air = _file_air(data, air, air_choice)
+    try:
+        e = load_errors(data, prop, params, air=air)
+    except ValueError as exc:
+        raise InputError(f"SOURCE: {exc}") from None
+    except SolverError as exc:
+        raise click.ClickException(str(exc)) from None
+    if as_json:
+        echo_json({**e, "params_label": label, "propeller": prop.name, "data": [str(s) for s in sources],
+                   "rho": air.rho})
+        return
+    keys = list(e["overall"])
+    click.echo(f"{what} ({e['n_points']} points) against {prop.name}, params {label}, rho {air.rho:g} kg/m^3")
+    click.echo("errors of the coefficients, model - measured, in % of the reference: "
+               + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items()))
+    click.echo(f"{'':<24}" + "".join(f"{k + ' rms':>13}{'bias':>8}{'max':>8}" for k in keys) + f"{'n':>6}")
+    rows = [("all points", e["overall"])] + list(e["groups"].items())
+    for name, row in rows:
+        click.echo(f"{name[:23]:<24}" + "".join(f"{100 * row[k]['rms']:>12.2f}%{100 * row[k]['bias']:>+7.2f}%"
+                                                  f"{100 * row[k]['max']:>7.2f}%" for k in keys)
+                   + f"{row[keys[0]]['n']:>6}")
+    si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys)
+    click.echo(f"rms errors in SI: {si}" + (f"; the solver did not converge on {e['n_points'] - e['converged']} "
+                                            "points" if e["converged"] < e["n_points"] else ""))
