@@ -40,7 +40,7 @@ def print_table(v) -> None:
 @click.option("--pole-pairs", type=int, default=None,
               help="Divide a stand's electrical speed by the motor's pole pairs (raw electrical rpm), in [1, 50].")
 @click.option("--protocols", default=None,
-              help="With --all: comma-separated subset of loso, loro, lowest, static, blind (default: all).")
+              help=f"With --all: comma-separated subset of {', '.join(PROTOCOLS)} (default: all).")
 @click.option("--props", "only", default=None, help="With --all: comma-separated catalogue names to restrict to.")
 @click.option("--out-dir", type=PathArg(), default=None,
               help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")

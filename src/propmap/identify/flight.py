@@ -75,7 +75,7 @@ def default_flight_names(base: SectionParams) -> tuple[str, ...]:
     Parameters
     ----------
     base : SectionParams
-        The set the fit starts from (``CamberedParams`` or the paper's ``BemtParams``).
+        The set the fit starts from (``CamberedParams`` or the paper's ``AirfoilParams``).
 
     Returns
     -------
