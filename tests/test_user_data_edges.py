@@ -298,6 +298,14 @@ def test_a_flight_fit_records_its_coverage_and_a_faster_log_is_warned(tmp_path, 
                  "--out", str(tmp_path / "race.csv")]) == 0
     err = capsys.readouterr().err
     assert f"rpm: the data behind {out} span" in err and "advance ratio up to" in err
+    # its own log at the full rate is within the coverage (recorded from every sample, not the fit's 10 Hz)
+    assert main(["wrench", str(logs / "bemnn20210223104803seg2.mat"), "--vehicle", vehicle, "--params", str(out),
+                 "--out", str(tmp_path / "own.csv")]) == 0
+    assert "the data behind" not in capsys.readouterr().err
+    # edgewise faster than the logs: no advance ratio or incidence says it, the airspeed does
+    assert main(["loads", str(EXAMPLES / "neurobem_5.1x4.8_geom.txt"), "--blades", "3", "--params", str(out), "--rpm",
+                 "11000", "--airspeed", "25", "--incidence-deg", "90"]) == 0
+    assert f"airspeed up to 25 m/s: the data behind {out} reach 3.4" in capsys.readouterr().err
 
 
 def test_a_converted_value_out_of_range_is_named_as_written(tmp_path):
@@ -344,3 +352,64 @@ def test_validate_takes_a_users_own_load_file(tmp_path, capsys):
     assert main(["validate", str(f), "--prop", "apce_8x6", "--figure", str(tmp_path / "x.png")]) == 2
     assert main(["validate", "apce_8x6", "--blades", "2"]) == 2
     assert "--blades applies to SOURCE files" in capsys.readouterr().err
+
+
+def test_validate_compares_a_few_or_repeated_points_and_says_a_unit_slip(tmp_path, capsys):
+    """A comparison needs no six distinct points (a fit does): four points, or one hover point
+    repeated, are compared; loads in gf and N mm under SI names are warned of (the comparison
+    goes on: a fit refuses them); long group names are not cut."""
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.default_params("apce_8x6")
+
+    def row(rpm, V=0.0, group="g"):
+        r = pm.rotor_loads(prop, params, rpm * math.pi / 30, V, 0.0)
+        return f"{rpm},{V},{float(r.thrust)!r},{float(r.torque)!r},{group}"
+
+    f = tmp_path / "few.csv"
+    f.write_text("rpm,airspeed,thrust,torque,group\n" + "\n".join(
+        [row(5000), row(6000), row(6000, 5.0, "tunnel_2026-11-22_morning_A"),
+         row(7000, 5.0, "tunnel_2026-11-22_morning_B")]) + "\n")
+    assert main(["validate", str(f), "--prop", "apce_8x6"]) == 0
+    out = capsys.readouterr().out
+    assert "tunnel_2026-11-22_morning_A " in out and "tunnel_2026-11-22_morning_B " in out
+    assert "(4 points)" in out and "0.00%" in out
+    f.write_text("rpm,thrust,torque\n" + "\n".join(",".join(row(6000).split(",")[:1] + row(6000).split(",")[2:4])
+                                                  for _ in range(5)) + "\n")
+    assert main(["validate", str(f), "--prop", "apce_8x6"]) == 0
+    assert "(5 points)" in capsys.readouterr().out
+    grams = tmp_path / "grams.csv"  # thrust in gf and torque in N mm, the header saying N and N m
+    r = pm.rotor_loads(prop, params, np.array([5000.0, 6000.0, 7000.0]) * math.pi / 30, 0.0, 0.0)
+    grams.write_text("rpm,thrust,torque\n" + "\n".join(
+        f"{rpm},{float(t) / 9.80665e-3!r},{float(q) * 1e3!r}"
+        for rpm, t, q in zip((5000, 6000, 7000), r.thrust, r.torque)) + "\n")
+    assert main(["validate", str(grams), "--prop", "apce_8x6"]) == 0
+    captured = capsys.readouterr()
+    assert "check the units" in captured.err and "the comparison below takes the file as written" in captured.err
+
+
+def test_load_errors_leave_out_unconverged_points_and_score_the_in_plane_force_at_incidence(monkeypatch):
+    from propmap import validation
+    from propmap.identify import LoadData
+
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    om = np.full(4, 600.0)
+    V = np.array([0.0, 5.0, 5.0, 5.0])
+    inc = np.radians([0.0, 0.0, 60.0, 90.0])
+    r = pm.rotor_loads(prop, params, om, V, inc)
+    measured = {"thrust": r.thrust.copy(), "drag": r.drag + np.array([0.3, 0.3, 0.0, 0.0]), "torque": r.torque.copy()}
+    data = LoadData(om, V, inc, measured, np.array(["a", "a", "b", "b"], dtype=object), "synthetic")
+    e = validation.load_errors(data, prop, params)
+    assert e["overall"]["drag"]["n"] == 2 and e["overall"]["drag"]["rms"] < 1e-9  # the axial points' 0.3 N not scored
+    assert e["groups"]["a"]["drag"]["n"] == 0 and e["groups"]["a"]["drag"]["rms"] is None
+    real = validation.rotor_loads
+
+    def one_fails(*args, **kwargs):
+        out = real(*args, **kwargs)
+        out.thrust[2] = np.nan
+        out.converged[2] = False
+        return out
+
+    monkeypatch.setattr(validation, "rotor_loads", one_fails)
+    e = validation.load_errors(data, prop, params)
+    assert e["converged"] == 3 and e["overall"]["thrust"]["n"] == 3 and np.isfinite(e["overall"]["thrust"]["rms"])

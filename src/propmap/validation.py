@@ -454,7 +454,9 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     units of a reference coefficient: the mean measured static thrust coefficient for thrust
     and in-plane force and the static torque coefficient for torque (the points at an airspeed
     up to 0.3 m/s), as the catalogue's metric (docs/validation.md), or, without static points,
-    the rms of the measured coefficient.
+    the rms of the measured coefficient. The in-plane force is scored where the rotor has an
+    in-plane airspeed above 0.3 m/s (elsewhere model and measurement should both be zero; all
+    points where none has one); points where the solver did not converge are left out (counted).
 
     Parameters
     ----------
@@ -473,7 +475,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
         ``reference``: quantity -> (what it is, its value); ``overall`` and ``groups`` (group
         label -> the same): quantity -> {``rms``, ``bias`` (mean model - measured), ``max``
         (largest magnitude), in units of the reference [-]; ``rms_si``, the rms error in N or
-        N m; ``n``}; ``n_points``; ``converged`` (points the solver converged on).
+        N m; ``n``, the points scored}; ``n_points``; ``converged`` (points the solver converged
+        on; the others are left out of every figure).
 
     Raises
     ------
@@ -507,13 +510,19 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
             raise ValueError(f"the {what} is {value:g}: no reference for the {k} errors")
         reference[k] = (what, value)
 
+    ok = np.asarray(r.converged, bool) & np.all([np.isfinite(model[k]) for k in keys], axis=0)
+    inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
+    where = {k: ok & inplane if k == "drag" and inplane.any() else ok for k in keys}
+
     def summary(mask) -> dict:
         out = {}
         for k in keys:
-            e = (model[k][mask] / scale[k][mask] - coeff[k][mask]) / reference[k][1]
-            si = model[k][mask] - data.measured[k][mask]
-            out[k] = {"rms": float(np.sqrt(np.mean(e**2))), "bias": float(np.mean(e)),
-                      "max": float(np.max(np.abs(e))), "rms_si": float(np.sqrt(np.mean(si**2))), "n": int(mask.sum())}
+            m = mask & where[k]
+            e = (model[k][m] / scale[k][m] - coeff[k][m]) / reference[k][1]
+            si = model[k][m] - data.measured[k][m]
+            out[k] = ({"rms": float(np.sqrt(np.mean(e**2))), "bias": float(np.mean(e)), "max": float(np.max(np.abs(e))),
+                       "rms_si": float(np.sqrt(np.mean(si**2))), "n": int(m.sum())} if m.any() else
+                      {"rms": None, "bias": None, "max": None, "rms_si": None, "n": 0})
         return out
 
     everything = np.ones(data.n, bool)

@@ -586,7 +586,7 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
             float(np.max(incidences)) if incidences.size else 0.0)
 
 
-def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -> None:
+def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, airspeed=None) -> None:
     """One warning line per risk of a model run beyond its data (docs/cli.md, Warnings).
 
     Parameters
@@ -602,12 +602,17 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
         The run's extremes (:func:`envelope_extremes`) [m/s, -, deg].
     rpm : float or (float, float), optional
         One rate or a (low, high) range [rpm], checked against the data's rpm span.
+    airspeed : float, optional
+        The run's largest airspeed [m/s], checked against the data's (``airspeed_max``; a flight
+        fit's edgewise speed shows in no advance ratio; said only where the advance ratio and
+        the incidence are within the data's).
 
     Notes
     -----
     Warns: tip Mach number above 0.7 (compressibility beyond Prandtl-Glauert), advance
     ratio beyond the data's largest, incidence beyond the data's (axial data: the off-axis
-    loads rest on the BET/BEMT physics), rates outside the data's span.
+    loads rest on the BET/BEMT physics), rates outside the data's span, an airspeed beyond
+    the data's largest (by more than 1% and 0.1 m/s).
     """
     from ..io.params_file import set_coverage
 
@@ -621,15 +626,21 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None) -
     # each key is optional (a hand-written [coverage] table may give some of them)
     # beyond the data by more than rounding: J by its printed 0.01 (cos 90 deg is 6e-17, not 0), the rates by 1e-6
     # relative (the file's 6999.999999999999 rpm from rad/s)
-    if "J_max" in cov and J > cov["J_max"] + 0.005:
+    beyond_J = "J_max" in cov and J > cov["J_max"] + 0.005
+    if beyond_J:
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
-    if "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + 1e-6:
+    beyond_incidence = "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + 1e-6
+    if beyond_incidence:
         axial = cov["incidence_deg_max"] == 0
         descent = ("; beyond 90 deg the rotor descends, beyond the climb data: the momentum of rotors in descent, "
                    "docs/models.md" if incidence_deg > 90 else "")
         warn(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
              + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
                 f"gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
+    # (said where neither line above is: a flight fit's edgewise speed shows in no advance ratio)
+    if (airspeed is not None and "airspeed_max" in cov and airspeed > 1.01 * cov["airspeed_max"] + 0.1
+            and not (beyond_J or beyond_incidence)):
+        warn(f"airspeed up to {airspeed:.3g} m/s: the data behind {label} reach {cov['airspeed_max']:.3g} m/s")
     if rpm is not None and ("rpm_min" in cov or "rpm_max" in cov):
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
         low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)

@@ -152,7 +152,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     inc = np.unique(np.clip([env.incidence_deg[0], 90.0, env.incidence_deg[1]], *env.incidence_deg))
     coverage_messages(propeller, label, air, *envelope_extremes(
         propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
-        rpm=tuple(env.rpm))
+        rpm=tuple(env.rpm), airspeed=float(env.airspeed[1]))
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:

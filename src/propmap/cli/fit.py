@@ -219,8 +219,10 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
-def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None):
-    """(data, propeller, catalogue entry or None, label) from the SOURCE arguments."""
+def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,
+                  min_points: int = 6):
+    """(data, propeller, catalogue entry or None, label) from the SOURCE arguments (a CSV of at
+    least ``min_points`` points: 6 to fit, 1 to compare)."""
     from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
     from ..io.catalogue import catalogue, get_entry
     from ..io.readers import looks_like_uiuc
@@ -259,8 +261,8 @@ def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=N
         if len(sources) > 1:
             raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
                              "(J CT CP eta) file; several files must all be, or give one CSV at a time")
-        return (read_loads(sources[0], rpm_source=rpm_source, pole_pairs=pole_pairs), prop, None,
-                Path(sources[0]).name)
+        data = read_loads(sources[0], min_points=min_points, rpm_source=rpm_source, pole_pairs=pole_pairs)
+        return data, prop, None, Path(sources[0]).name
     except DataError as exc:
         raise InputError(f"SOURCE: {exc}") from None
 

@@ -318,26 +318,33 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
-    train_mask = ~np.isin(samples.log_index, held_idx)
+    coverage = _flight_coverage([lg for lg in logs if lg.name not in held], veh)
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
-                   figure_suffixes=(".png", ".speed.png"), coverage=_flight_coverage(pred.loads, veh, train_mask),
+                   figure_suffixes=(".png", ".speed.png"), coverage=coverage,
                    body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 
 
-def _flight_coverage(loads, veh, mask) -> dict:
-    """What the training samples' rotors covered (every rotor's operating points), for the written
-    file's [coverage] table: `wrench` and `loads` with the file then warn of faster flights."""
+def _flight_coverage(logs, veh) -> dict:
+    """What the training logs' rotors covered, every sample at the logs' own rate (as `wrench` runs
+    them; the fit's samples are a subsample), for the written file's [coverage] table: `wrench` and
+    `loads` with the file then warn of faster flights. The rotors' operating points as
+    vehicle_wrench forms them: hub velocity v + w x r_i, its incidence to the axis, the lagged speed."""
     import numpy as np
 
-    om = np.concatenate([lo.omega[mask] for lo in loads])
-    V = np.concatenate([lo.airspeed[mask] for lo in loads])
-    inc = np.concatenate([lo.incidence[mask] for lo in loads])
-    D = np.concatenate([np.full(int(mask.sum()), r.propeller.diameter) for r in veh.rotors])
-    n = om / (2 * math.pi)
-    return {"J_max": max(0.0, float(np.max(V * np.cos(inc) / (n * D)))),
-            "incidence_deg_max": float(np.degrees(np.max(inc))), "rpm_min": float(np.min(n) * 60),
-            "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(V))}
+    from ..identify.flight import flight_samples
+    from ..vehicle import rotor_geometry
+
+    s = flight_samples(logs, veh, rate_hz=1e4)
+    arms, axes, _, _ = rotor_geometry(veh)
+    V_hub = s.velocity[:, None, :] + np.cross(s.angular_velocity[:, None, :], arms[None, :, :])  # (N, n_rot, 3)
+    speed = np.linalg.norm(V_hub, axis=2)
+    axial = np.einsum("nij,ij->ni", V_hub, axes)
+    inc = np.where(speed > 0, np.arccos(np.clip(axial / np.where(speed > 0, speed, 1.0), -1.0, 1.0)), 0.0)
+    n = s.rotor_omega / (2 * math.pi)
+    D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
+    return {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
+            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed))}
 
 
 def _hover_loads(params, veh, samples, air):
@@ -449,4 +456,4 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         rpm = np.concatenate([x.omega for x in ld]) * 30 / np.pi
         coverage_messages(prop, set_label, air, *envelope_extremes(
             prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
-            rpm=(float(rpm.min()), float(rpm.max())))
+            rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))

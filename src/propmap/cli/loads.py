@@ -297,8 +297,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     # first pass: every value checked before any work, and the extremes for the warnings
     offset = set_collective_deg(params)  # the set's collective, added to each row's
-    n, extremes, rpm_range = _scan(prop, path, offset)
-    coverage_messages(prop, label, air, *extremes, rpm=rpm_range)
+    n, extremes, rpm_range, v_max = _scan(prop, path, offset)
+    coverage_messages(prop, label, air, *extremes, rpm=rpm_range, airspeed=v_max)
 
     def write(fh):
         bad = 0
@@ -392,7 +392,8 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     if abs(total_deg) > COLLECTIVE_DEG_MAX:
         raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus {collective_deg:g} "
                          f"deg must be within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] deg, got {total_deg:g}")
-    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
+    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm,
+                      airspeed=airspeed)
     from ..core.solver import SolverError, rotor_loads
 
     try:
@@ -441,20 +442,23 @@ def check_collective(collective_deg):
     return float(collective_deg)
 
 
-def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float]]:
-    """(points, extremes, rpm range) of a points file, every value checked (InputError on the first bad one)."""
+def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float],
+                                                              float]:
+    """(points, extremes, rpm range, largest airspeed) of a points file, every value checked (InputError on the
+    first bad one)."""
     import warnings
 
     import numpy as np
 
     from ..identify.load_data import STATIC_AIRSPEED, radians_hint
 
-    n, ext, lo, hi = 0, (0.0, 0.0, 0.0), math.inf, 0.0
+    n, ext, lo, hi, v_max = 0, (0.0, 0.0, 0.0), math.inf, 0.0, 0.0
     seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
     for df, _, values in _chunks(path, CHUNK, offset_deg):
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
+        v_max = max(v_max, float(values["airspeed"].max()))
         n += len(df)
         inc = values["incidence_deg"][values["airspeed"] > STATIC_AIRSPEED]
         if inc.size:  # (and the one farthest from a whole degree read as radians)
@@ -467,4 +471,4 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
     hint = radians_hint(seen, np.full(len(seen), np.inf), name) if name.strip().lower() == "incidence_deg" else None
     if hint:
         warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
-    return n, ext, (lo, hi)
+    return n, ext, (lo, hi), v_max

@@ -251,7 +251,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             # after every input check, the scheduler's included (an error is the only line)
             coverage_messages(propeller, data_label, air, *envelope_extremes(
                 propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
-                rpm=(float(rpm[0]), float(rpm[-1])))
+                rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]))
             ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
                            citation=_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0

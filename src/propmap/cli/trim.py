@@ -61,7 +61,8 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
         raise InputError(f"--thrust: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm)
+    coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm,
+                      airspeed=airspeed)
     r = res.loads
     d = _descent_outputs(r)
     out = {"collective_deg": math.degrees(float(res.collective)), "branch": res.branch,

@@ -7,8 +7,8 @@ import os
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, check_out_dir, check_outputs, echo_json, load_params,
-                      parse_names, resolve_air, with_air_options, with_prop_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, air_label, check_out_dir, check_outputs, echo_json,
+                      load_params, parse_names, resolve_air, warn, with_air_options, with_prop_options)
 from .validate_all import PROTOCOLS
 
 
@@ -153,10 +153,17 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
 
     params, air, label = load_params(params_spec, prop_spec, option="--params")
     air = resolve_air(air, air_choice)
-    data, prop, _, what = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+    data, prop, _, what = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs, min_points=1)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
     air = _file_air(data, air, air_choice)
+    from ..identify.data import DataError, sanity_check
+
+    try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
+        for w in sanity_check(data, prop, air=air):
+            warn(w)
+    except DataError as exc:
+        warn(f"{exc} (the comparison below takes the file as written)")
     try:
         e = load_errors(data, prop, params, air=air)
     except ValueError as exc:
@@ -164,19 +171,28 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
     if as_json:
-        echo_json({**e, "params_label": label, "propeller": prop.name, "data": [str(s) for s in sources],
-                   "rho": air.rho})
+        echo_json({**e, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
+                   "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
+                   "speed_of_sound": air.speed_of_sound})
         return
     keys = list(e["overall"])
-    click.echo(f"{what} ({e['n_points']} points) against {prop.name}, params {label}, rho {air.rho:g} kg/m^3")
-    click.echo("errors of the coefficients, model - measured, in % of the reference: "
-               + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items()))
-    click.echo(f"{'':<24}" + "".join(f"{k + ' rms':>13}{'bias':>8}{'max':>8}" for k in keys) + f"{'n':>6}")
+    click.echo(f"{what} ({e['n_points']} points) against {prop.name} ({prop.n_blades} blades, D = "
+               f"{prop.diameter:.4g} m), params {label}; air {air_label(air)}")
+    click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
+               + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
+               + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else ""))
     rows = [("all points", e["overall"])] + list(e["groups"].items())
+    width = min(max(len(name) for name, _ in rows) + 2, 60)
+    click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>8}{'max':>8}{'n':>5}" for k in keys))
+
+    def pct(v, w, sign=""):
+        return f"{'-':>{w}}" if v is None else f"{100 * v:>{sign}{w - 1}.2f}%"
+
     for name, row in rows:
-        click.echo(f"{name[:23]:<24}" + "".join(f"{100 * row[k]['rms']:>12.2f}%{100 * row[k]['bias']:>+7.2f}%"
-                                                  f"{100 * row[k]['max']:>7.2f}%" for k in keys)
-                   + f"{row[keys[0]]['n']:>6}")
-    si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys)
+        click.echo(f"{name[:width - 1]:<{width}}" + "".join(
+            pct(row[k]["rms"], 13) + pct(row[k]["bias"], 8, "+") + pct(row[k]["max"], 8) + f"{row[k]['n']:>5}"
+            for k in keys))
+    si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys
+                   if e["overall"][k]["rms_si"] is not None)
     click.echo(f"rms errors in SI: {si}" + (f"; the solver did not converge on {e['n_points'] - e['converged']} "
-                                            "points" if e["converged"] < e["n_points"] else ""))
+                                            "points, left out" if e["converged"] < e["n_points"] else ""))

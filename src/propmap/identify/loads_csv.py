@@ -61,6 +61,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     ----------
     path : str or Path
     min_points : int
+        The fewest points accepted (6 for a fit); with 1 (a comparison, ``propmap validate``)
+        every operating point may also be the same one (a repeatability run).
     rpm_source : {"optical", "electrical"}, optional
         Which speed column of a stand export to use (default: optical where present, its
         dropouts, 0 or empty while the electrical speed runs, taken from the electrical speed
@@ -88,7 +90,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
         at the static points (or those nearest to static), a negative torque where the
         thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
-        identical; the message names the file, the line and the column.
+        identical (where ``min_points`` > 1); the message names the file, the line and the column.
     """
     from .stand import ESC_TOL, esc_form, map_columns, stand_points
 
@@ -226,7 +228,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             warnings.warn(f"{p}: {hint}", stacklevel=2)
     collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
-    if np.all(np.ptp(ops, axis=0) == 0):
+    if min_points > 1 and np.all(np.ptp(ops, axis=0) == 0):
         raise DataError(f"{what}: {p}: all operating points are identical")
     if group is None:
         group = np.full(n, "all", dtype=object)
