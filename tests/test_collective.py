@@ -342,8 +342,8 @@ def test_trimmed_descent_is_continuous_and_autorotates_where_model_rotors_do(rot
 def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(section, twist_deg):
     """Axial descent of a model rotor (NACA 0012, 0015) at 8 deg collective from hover to 3 v_h in steps of
     0.005 v_h: no annulus flagged with several inflow roots and no thrust step above 0.6% of the
-    hover thrust (near 2.9 v_h a section about its stall gives the untwisted rotor a torque step of
-    about 1% of hover torque, unflagged: docs/models.md). Before, a sharper preset stall (M = 38)
+    hover thrust (near 2.9 v_h a fold of an annulus' residual gives the untwisted rotor a torque
+    step of about 1% of hover torque, unflagged: docs/models.md). Before, a sharper preset stall (M = 38)
     and a tip-loss angle taken from U_P (which passes through 0 near an annulus' ideal
     autorotation) gave 400-800 multiple-root points and steps of 2-3% (the annuli switching
     branch one by one)."""
