@@ -201,13 +201,13 @@ def test_fit_loads_refuses_a_file_given_twice_and_warns_of_another_propeller(cap
         code, _, err = run(capsys, "fit", "loads", static, twice, "--prop", "apce_10x7", "--out", tmp_path / "p.toml")
         assert one_line_error(code, err, what), err
     code, _, err = run(capsys, "fit", "loads", static, *sweeps, "--prop", "apce_10x5", "--out", tmp_path / "p.toml")
-    assert code == 0 and "is named for propeller 'apce_10x7', fitted with --prop 'apce_10x5'" in err
+    assert code == 0 and "is named for propeller 'apce_10x7', used with --prop 'apce_10x5'" in err
     # a sweep of another propeller named with a letters-first run id (pg0820: missed before, as 527 of
     # the 1231 UIUC run files were)
     other = sorted(uiuc.glob("apce_10x5_pg*_*.txt"))[:1]
     code, _, err = run(capsys, "fit", "loads", static, *sweeps, *other, "--prop", "apce_10x7", "--out",
                        tmp_path / "q.toml")
-    assert "is named for propeller 'apce_10x5', fitted with --prop 'apce_10x7'" in err
+    assert "is named for propeller 'apce_10x5', used with --prop 'apce_10x7'" in err
 
 
 def test_a_plot_folder_name_too_long_for_the_system_is_refused_naming_plot(capsys, tmp_path):

@@ -166,7 +166,7 @@ def test_a_hub_blade_count_in_the_run_names_is_checked_against_blades(tmp_path, 
     geom = tmp_path / "apce_9x6_geom.txt"
     shutil.copyfile(UIUC_V1 / "apce_9x6_geom.txt", geom)
     code, _, err = run(capsys, "fit", "loads", *files, "--prop", geom, "--blades", "2", "--out", tmp_path / "a.toml")
-    assert code == 0 and "is named for a 3-blade hub ('_3b'), fitted with 2 blades: give --blades 3" in err
+    assert code == 0 and "is named for a 3-blade hub ('_3b'), used with 2 blades: give --blades 3" in err
     code, _, err = run(capsys, "fit", "loads", *files, "--prop", geom, "--blades", "3", "--out", tmp_path / "b.toml")
     assert code == 0 and "named for" not in err, err
     family = tmp_path / "apce_geom.txt"  # a family geometry file covers its sizes

@@ -413,3 +413,15 @@ def test_load_errors_leave_out_unconverged_points_and_score_the_in_plane_force_a
     monkeypatch.setattr(validation, "rotor_loads", one_fails)
     e = validation.load_errors(data, prop, params)
     assert e["converged"] == 3 and e["overall"]["thrust"]["n"] == 3 and np.isfinite(e["overall"]["thrust"]["rms"])
+
+
+def test_a_two_blade_uiuc_run_used_with_three_blades_is_warned(capsys, shared_data):
+    """UIUC's 2-blade runs carry no '_2b' in their names: a catalogue propeller's name tells the
+    blade count (a 3-blade geometry with a 2-blade run gave +56% thrust error, silently)."""
+    v2 = shared_data / "uiuc_propdb" / "v2"
+    run, geom = str(v2 / "da4022_5x3.75_static_0642rb.txt"), str(v2 / "da4022_5x3.75_geom.txt")
+    assert main(["validate", run, "--prop", geom, "--blades", "3"]) == 0
+    assert ("named for the catalogue's 'da4022_5x3.75', a 2-blade propeller, used with 3 blades: give --blades 2"
+            in capsys.readouterr().err)
+    assert main(["validate", run, "--prop", geom, "--blades", "2"]) == 0
+    assert "blade" not in capsys.readouterr().err

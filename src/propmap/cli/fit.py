@@ -289,10 +289,12 @@ def _warn_other_propeller(sources, prop) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
     fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
     case. A hub's blade count in the name (vol. 2's ``da4022_5x3.75_3b_...``, the 2-blade
-    geometry file shared) is compared with --blades instead; a family geometry file
-    (``da4002_geom.txt``) covers its family's sizes."""
+    geometry file shared), or a catalogue propeller's without one (``da4022_5x3.75_static_...``:
+    2 blades), is compared with --blades instead; a family geometry file (``da4002_geom.txt``)
+    covers its family's sizes."""
     import re
 
+    from ..io.catalogue import catalogue
     from ._common import warn
 
     base = re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower()
@@ -304,15 +306,21 @@ def _warn_other_propeller(sources, prop) -> None:
             continue
         named = m.group(1).lower()
         hub = re.fullmatch(r"(.+)_([1-9])b", named)
+        entry = catalogue().get(named)
         if hub:
             named, blades = hub.group(1), int(hub.group(2))
             if blades != prop.n_blades:
-                warn(f"SOURCE: {_short(Path(s).name)} is named for a {blades}-blade hub ('_{blades}b'), fitted with "
-                     f"{prop.n_blades} blades: give --blades {blades} if that is the hub measured (the fitted section "
+                warn(f"SOURCE: {_short(Path(s).name)} is named for a {blades}-blade hub ('_{blades}b'), used with "
+                     f"{prop.n_blades} blades: give --blades {blades} if that is the hub measured (a fitted section "
                      "would otherwise absorb the blade count)")
                 return
+        elif entry is not None and entry.n_blades != prop.n_blades:  # (UIUC's 2-blade runs carry no suffix)
+            warn(f"SOURCE: {_short(Path(s).name)} is named for the catalogue's {named!r}, a {entry.n_blades}-blade "
+                 f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
+                 "measured (the thrust scales nearly with the blade count)")
+            return
         if named != base and not named.startswith(base + "_"):
-            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, fitted with --prop "
+            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
 
