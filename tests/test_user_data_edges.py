@@ -425,3 +425,49 @@ def test_a_two_blade_uiuc_run_used_with_three_blades_is_warned(capsys, shared_da
             in capsys.readouterr().err)
     assert main(["validate", run, "--prop", geom, "--blades", "2"]) == 0
     assert "blade" not in capsys.readouterr().err
+
+
+def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
+    """A fit's [coverage] records its data and the groups it fitted and held out; `validate` on
+    the same data labels them (its in-sample rows are the fit's residual, not a held-out error)."""
+    from propmap.io.params_file import read_coverage
+
+    prop = pm.load_propeller("apce_8x6")
+    truth = pm.default_params("apce_8x6")
+    rows = ["rpm,airspeed,thrust (N),torque (N m),group"]
+    for rpm, group in ((3000.0, "s0"), (4000.0, "s0"), (5000.0, "s1"), (6000.0, "s1"), (7000.0, "s2"), (8000.0, "s2")):
+        for V in (0.0, 4.0, 8.0):
+            r = pm.rotor_loads(prop, truth, rpm * math.pi / 30, V, 0.0)
+            rows.append(f"{rpm},{V},{float(r.thrust)!r},{float(r.torque)!r},{group}")
+    f = tmp_path / "runs.csv"
+    f.write_text("\n".join(rows) + "\n")
+    out = tmp_path / "p.toml"
+    assert main(["fit", "loads", str(f), "--prop", "apce_8x6", "--holdout", "s2", "--out", str(out)]) == 0
+    cov = read_coverage(out)
+    assert cov["data"] == "runs.csv" and cov["groups"] == ("s0", "s1") and cov["held_out"] == ("s2",)
+    capsys.readouterr()
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--params", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "s0 (fitted)" in text and "s2 (held out)" in text
+    assert f"{out} was fitted to this data: s0, s1 in-sample (the fit's residual), held out: s2" in text
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--params", str(out), "--json"]) == 0
+    import json
+
+    assert json.loads(capsys.readouterr().out)["in_fit"] == {"s0": "fitted", "s1": "fitted", "s2": "held out"}
+    # another file of the same group names is not labelled (the data's label differs)
+    g = tmp_path / "other.csv"
+    g.write_text(f.read_text())
+    assert main(["validate", str(g), "--prop", "apce_8x6", "--params", str(out)]) == 0
+    assert "(fitted)" not in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("bad, match", [('data = 5', "data must be a text"), ('groups = "s0"', "groups must be a list"),
+                                        ('held_out = [1, 2]', "held_out must be a list of texts")])
+def test_coverage_text_keys_are_checked(tmp_path, bad, match):
+    from propmap.io.params_file import ParamsFileError, read_coverage
+
+    p = tmp_path / "p.toml"
+    pm.write_params(p, pm.generic_params())
+    p.write_text(p.read_text() + f"\n[coverage]\nJ_max = 0.5\n{bad}\n")
+    with pytest.raises((ParamsFileError, ValueError), match=match):
+        read_coverage(p)

@@ -462,6 +462,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 for name in model)
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
-    _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=_coverage(train, prop),
+    coverage = {**_coverage(train, prop), "data": label, "groups": [str(g) for g in dict.fromkeys(train.group)],
+                "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample)
+    _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
                           f"{air.rho:.4g} kg/m^3")

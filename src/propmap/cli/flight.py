@@ -318,7 +318,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
-    coverage = _flight_coverage([lg for lg in logs if lg.name not in held], veh)
+    coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh), "data": "flight logs",
+                "groups": [n for n in names if n not in held], "held_out": sorted(held)}
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
                    body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,

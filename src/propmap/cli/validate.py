@@ -170,8 +170,16 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         raise InputError(f"SOURCE: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
+    # which groups the parameter file's fit saw or held out (its [coverage] table), where it was fitted to this data
+    from ..io.params_file import set_coverage
+
+    cov = (set_coverage(label) or {}) if params_spec is not None else {}
+    in_fit = {}
+    if cov.get("data") == what:
+        in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in
+                  (e["groups"] or {"all": None}) if g in cov.get("held_out", ()) or g in cov.get("groups", ())}
     if as_json:
-        echo_json({**e, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
+        echo_json({**e, "in_fit": in_fit, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
                    "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
                    "speed_of_sound": air.speed_of_sound})
         return
@@ -181,7 +189,8 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
                + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
                + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else ""))
-    rows = [("all points", e["overall"])] + list(e["groups"].items())
+    rows = [("all points", e["overall"])] + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row)
+                                             for g, row in e["groups"].items()]
     width = min(max(len(name) for name, _ in rows) + 2, 60)
     click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>8}{'max':>8}{'n':>5}" for k in keys))
 
@@ -192,6 +201,11 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         click.echo(f"{name[:width - 1]:<{width}}" + "".join(
             pct(row[k]["rms"], 13) + pct(row[k]["bias"], 8, "+") + pct(row[k]["max"], 8) + f"{row[k]['n']:>5}"
             for k in keys))
+    if in_fit:
+        fitted = sorted(g for g, v in in_fit.items() if v == "fitted")
+        click.echo(f"{label} was fitted to this data: " + (f"{', '.join(fitted)} in-sample (the fit's residual), "
+                                                           if fitted else "")
+                   + "held out: " + (", ".join(sorted(g for g, v in in_fit.items() if v == "held out")) or "none"))
     si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys
                    if e["overall"][k]["rms_si"] is not None)
     click.echo(f"rms errors in SI: {si}" + (f"; the solver did not converge on {e['n_points'] - e['converged']} "

@@ -10,7 +10,8 @@ import math
 import numbers
 from typing import NamedTuple
 
-__all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_TABLE", "BodyTable", "body_from_dict", "check_number",
+__all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_TEXT_KEYS", "COVERAGE_TABLE", "BodyTable", "body_from_dict",
+           "check_number",
            "coverage_from_dict", "short_repr"]
 
 BODY_TABLE = "body"
@@ -18,6 +19,11 @@ BODY_TABLE = "body"
 COVERAGE_TABLE = "coverage"
 COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
                  "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
+#: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
+#: saw and held out, so that `propmap validate` can say which of its rows are in-sample
+COVERAGE_TEXT_KEYS = ("data", "groups", "held_out")
+#: the longest text and list of the [coverage] table's text keys
+COVERAGE_TEXT_MAX, COVERAGE_LIST_MAX = 1000, 100_000
 
 
 class BodyTable(NamedTuple):
@@ -32,7 +38,8 @@ class BodyTable(NamedTuple):
 
 def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     """The ``[coverage]`` table of a file-form dict (what the fitted data covered: J_max,
-    incidence_deg_max, rpm_min, rpm_max, airspeed_max), or None without one.
+    incidence_deg_max, rpm_min, rpm_max, airspeed_max; and, as text, the data fitted and the
+    groups it saw and held out), or None without one.
 
     Parameters
     ----------
@@ -45,29 +52,43 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     -------
     dict or None
         The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
-        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]); None without a table.
+        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]), ``data`` as a str and
+        ``groups`` and ``held_out`` as tuples of str; None without a table.
 
     Raises
     ------
     ValueError
         Not a table, an unknown key, a value not a number or out of its range, rpm_min above
-        rpm_max. (Every key is optional: the warnings check those given.)
+        rpm_max, ``data`` not a text of at most 1,000 characters, ``groups`` or ``held_out`` not
+        a list of such texts (at most 100,000). (Every key is optional: the warnings check those
+        given.)
     """
     table = data.get(COVERAGE_TABLE)
     if table is None:
         return None
     if not isinstance(table, dict):
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] must be a table, got {short_repr(table)}")
-    unknown = sorted(set(table) - set(COVERAGE_KEYS))
+    unknown = sorted(set(table) - set(COVERAGE_KEYS) - set(COVERAGE_TEXT_KEYS))
     if unknown:
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] unknown key(s) {', '.join(map(str, unknown[:5]))} (valid: "
-                         f"{', '.join(COVERAGE_KEYS)})")
+                         f"{', '.join([*COVERAGE_KEYS, *COVERAGE_TEXT_KEYS])})")
+    text = {}
     for k, v in table.items():
-        check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+        if k not in COVERAGE_TEXT_KEYS:
+            check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+            continue
+        items = [v] if k == "data" else v
+        if not (isinstance(items, list) and len(items) <= COVERAGE_LIST_MAX
+                and all(isinstance(x, str) and len(x) <= COVERAGE_TEXT_MAX for x in items)):
+            raise ValueError(f"{where}: [{COVERAGE_TABLE}] {k} must be "
+                             + ("a text" if k == "data" else "a list of texts")
+                             + f" of at most {COVERAGE_TEXT_MAX} characters, got {short_repr(v)}")
+        text[k] = v if k == "data" else tuple(v)
+    table = {k: v for k, v in table.items() if k not in COVERAGE_TEXT_KEYS}
     if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
                          f"{table['rpm_max']:g}")
-    return {k: float(v) for k, v in table.items()}
+    return {**{k: float(v) for k, v in table.items()}, **text}
 
 
 def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
