@@ -203,19 +203,60 @@ def snap_edge(x, lo, hi):
     return x
 
 
+@numba.njit(inline="always", **_FLAGS)
+def point_frame(vx, vy, vz, a0, a1, a2):
+    """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
+    scaled by its largest component and normalised to (zx, zy, zz); the speed |V| (V below 1e150
+    m/s in every component: no overflow), the axial speed V . z and the incidence
+    beta = arccos(V . z / |V|) (0 where V = 0). Returns (zx, zy, zz, speed, axial, beta)."""
+    amax = max(abs(a0), abs(a1), abs(a2))
+    a0 /= amax
+    a1 /= amax
+    a2 /= amax
+    n = np.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
+    zx = a0 / n
+    zy = a1 / n
+    zz = a2 / n
+    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+    axial = vx * zx + vy * zy + vz * zz
+    beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
+    return zx, zy, zz, speed, axial, beta
+
+
+@numba.njit(inline="always", **_FLAGS)
+def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
+    """One rotor's force and moment vectors from its loads, as core.vector.wrench_vectors: e_ip
+    the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed), force
+    T z - D e_ip - spin Y (z x e_ip), moment -spin (Q z + M_R e_ip) - M_P (z x e_ip), with
+    (zx, zy, zz, speed, axial) from :func:`point_frame`. Returns (Fx, Fy, Fz, Mx, My, Mz)."""
+    ix = vx - axial * zx
+    iy = vy - axial * zy
+    iz = vz - axial * zz
+    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
+    ex = 0.0
+    ey = 0.0
+    ez = 0.0
+    if n_ip > 1e-12 * max(speed, 1e-300):
+        ex = ix / n_ip
+        ey = iy / n_ip
+        ez = iz / n_ip
+    lx = zy * ez - zz * ey  # z x e_ip
+    ly = zz * ex - zx * ez
+    lz = zx * ey - zy * ex
+    return (T * zx - D * ex - spin * Y * lx, T * zy - D * ey - spin * Y * ly, T * zz - D * ez - spin * Y * lz,
+            -spin * (Q * zx + M * ex) - P * lx, -spin * (Q * zy + M * ey) - P * ly, -spin * (Q * zz + M * ez) - P * lz)
+
+
 @numba.njit(**_FLAGS)
 def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, velocity, axis, omega, spin, policy,
                  strict, order, out, side, inside, flagged):
     """One rotor's force and moment vectors from the map (maps.RotorMap.wrench's scalar path).
 
-    The disk frame and the vectors as core.vector.disk_frame and wrench_vectors: the axis
-    scaled by its largest component and normalised, speed |V|, incidence
-    beta = arccos(V . z / |V|) (0 where V = 0), e_ip the in-plane unit velocity (0 where the
-    in-plane speed is below 1e-12 of the speed), force T z - D e_ip - spin Y (z x e_ip), moment
-    -spin (Q z + M_R e_ip) - M_P (z x e_ip). out[0, :] receives T, D, Q, M_R, the force (3) and
-    the moment (3); with ``has_side`` (a map with the side force and pitching moment, in
-    ``side_table``'s first two of four columns) side[0, :2] receives Y and M_P (else untouched:
-    ``side_table`` may be any table then).
+    The disk frame and the vectors as core.vector.disk_frame and wrench_vectors
+    (:func:`point_frame`, :func:`point_vectors`, which core.vector's one-point path calls too).
+    out[0, :] receives T, D, Q, M_R, the force (3) and the moment (3); with ``has_side`` (a map
+    with the side force and pitching moment, in ``side_table``'s first two of four columns)
+    side[0, :2] receives Y and M_P (else untouched: ``side_table`` may be any table then).
 
     Returns
     -------
@@ -234,16 +275,7 @@ def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, v
     vmax = max(abs(vx), abs(vy), abs(vz))
     if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
         return 1
-    a0 /= amax
-    a1 /= amax
-    a2 /= amax
-    n = np.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
-    zx = a0 / n
-    zy = a1 / n
-    zz = a2 / n
-    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
-    axial = vx * zx + vy * zy + vz * zz
-    beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
+    zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
     beta = snap_edge(beta, ax2[0], ax2[-1])
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2
@@ -254,28 +286,12 @@ def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, v
         _one(ax0, ax1, ax2, side_table, cellflag, radius, omega, speed, beta, policy, order, side, 0, inside, flagged)
         Y = side[0, 0]
         P = side[0, 1]
-    ix = vx - axial * zx
-    iy = vy - axial * zy
-    iz = vz - axial * zz
-    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
-    ex = 0.0
-    ey = 0.0
-    ez = 0.0
-    if n_ip > 1e-12 * max(speed, 1e-300):
-        ex = ix / n_ip
-        ey = iy / n_ip
-        ez = iz / n_ip
-    T = out[0, 0]
-    D = out[0, 1]
-    Q = out[0, 2]
-    M = out[0, 3]
-    lx = zy * ez - zz * ey  # z x e_ip
-    ly = zz * ex - zx * ez
-    lz = zx * ey - zy * ex
-    out[0, 4] = T * zx - D * ex - spin * Y * lx
-    out[0, 5] = T * zy - D * ey - spin * Y * ly
-    out[0, 6] = T * zz - D * ez - spin * Y * lz
-    out[0, 7] = -spin * (Q * zx + M * ex) - P * lx
-    out[0, 8] = -spin * (Q * zy + M * ey) - P * ly
-    out[0, 9] = -spin * (Q * zz + M * ez) - P * lz
+    fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, out[0, 0], out[0, 1], out[0, 2],
+                                           out[0, 3], Y, P, spin)
+    out[0, 4] = fx
+    out[0, 5] = fy
+    out[0, 6] = fz
+    out[0, 7] = mx
+    out[0, 8] = my
+    out[0, 9] = mz
     return 0

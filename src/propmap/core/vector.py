@@ -219,37 +219,27 @@ def _plain3(value):
 
 
 def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure):
-    """:func:`rotor_wrench` at one operating point in Python floats (a controller's call: the
-    array path's frame and vectors cost twice the loads' own call), or None where the inputs are
-    not one velocity, one axis, one rate and one spin (the array path takes them, and its errors).
-    The same arithmetic as :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
+    """:func:`rotor_wrench` at one operating point (a controller's call: the array path's frame and
+    vectors cost twice the loads' own call), or None where the inputs are not one velocity, one
+    axis, one rate and one spin (the array path takes them, and its errors). The frame and the
+    vectors are the map's one-point ones (core/_interp.py ``point_frame``, ``point_vectors``),
+    the arithmetic of :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
+    from ._interp import point_frame, point_vectors
+
     Vv, zv = _plain3(velocity), _plain3(axis)
     if Vv is None or zv is None or not _plain_number(omega) or not isinstance(spin, (str, int, float)):
         return None
-    if not all(math.isfinite(c) for c in Vv + zv):
-        return None  # (the array path names it)
-    zmax = max(abs(zv[0]), abs(zv[1]), abs(zv[2]))
-    if zmax == 0.0:
+    if not all(math.isfinite(c) for c in zv) or not all(abs(c) < 1e150 for c in Vv):
+        return None  # (the array path names a non-finite axis or velocity; a huge one is no airspeed)
+    if max(abs(c) for c in zv) == 0.0:
         raise ValueError("axis must be non-zero")
     s = float(_spin_sign(spin))
-    z = [c / zmax for c in zv]
-    n = math.sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2])
-    z = [c / n for c in z]
-    vmax = max(abs(Vv[0]), abs(Vv[1]), abs(Vv[2]))
-    speed = vmax * math.sqrt(sum((c / vmax) ** 2 for c in Vv)) if vmax > 0 else 0.0
-    axial = Vv[0] * z[0] + Vv[1] * z[1] + Vv[2] * z[2]
-    beta = math.acos(min(max(axial / speed, -1.0), 1.0)) if speed > 0 else 0.0
+    zx, zy, zz, speed, axial, beta = point_frame(*Vv, *zv)
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure)
-    v_ip = [Vv[i] - axial * z[i] for i in range(3)]
-    n_ip = math.sqrt(v_ip[0] ** 2 + v_ip[1] ** 2 + v_ip[2] ** 2)
-    e = [c / n_ip for c in v_ip] if n_ip > 1e-12 * max(speed, 1e-300) else [0.0, 0.0, 0.0]
-    T, D, Q, MR = float(loads.thrust), float(loads.drag), float(loads.torque), float(loads.rolling_moment)
-    Y, MP = float(loads.side_force), float(loads.pitching_moment)
-    lat = [z[1] * e[2] - z[2] * e[1], z[2] * e[0] - z[0] * e[2], z[0] * e[1] - z[1] * e[0]]  # z x e_ip
-    force = np.array([T * z[i] - D * e[i] - (s * Y * lat[i] if Y else 0.0) for i in range(3)])
-    torque = np.array([-s * (Q * z[i] + MR * e[i]) - (MP * lat[i] if MP else 0.0) for i in range(3)])
-    return RotorWrench(force=force, torque=torque, loads=loads, jacobian=None)
+    F_M = point_vectors(*Vv, zx, zy, zz, speed, axial, float(loads.thrust), float(loads.drag), float(loads.torque),
+                        float(loads.rolling_moment), float(loads.side_force), float(loads.pitching_moment), s)
+    return RotorWrench(force=np.array(F_M[:3]), torque=np.array(F_M[3:]), loads=loads, jacobian=None)
 
 
 #: the loads whose slopes at rest :func:`still_air_slopes` gives (the odd ones edgewise, the even ones axially)
