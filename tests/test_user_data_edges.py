@@ -117,7 +117,9 @@ def test_wrench_names_the_rotors_own_parameter_file(tmp_path, capsys, shared_dat
     text = (tmp_path / "v.toml").read_text()
     (tmp_path / "v.toml").write_text(text.replace('propeller = "neurobem_5.1x4.8_geom.txt"',
                                                   'propeller = "neurobem_5.1x4.8_geom.txt"\nparams = "mine.toml"'))
-    assert pm.vehicle.file.rotor_param_specs(tmp_path / "v.toml") == (str(tmp_path / "mine.toml"),) * 4
+    assert pm.vehicle.file.rotor_file_specs(tmp_path / "v.toml") == (str(tmp_path / "mine.toml"),) * 4
+    geometry = str(tmp_path / "neurobem_5.1x4.8_geom.txt")
+    assert pm.vehicle.file.rotor_file_specs(tmp_path / "v.toml", "propeller") == (geometry,) * 4
     log = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
     assert main(["wrench", str(log), "--vehicle", str(tmp_path / "v.toml"), "--out", str(tmp_path / "w.csv")]) == 0
     out = capsys.readouterr().out

@@ -270,19 +270,19 @@ _PACKAGE_DATA = os.path.realpath(Path(__file__).resolve().parents[1] / "data")
 
 def vehicle_inputs(vehicle) -> list:
     """The files a vehicle TOML names (its rotors' geometry and parameter files: ``[[rotors]]
-    propeller`` and ``params`` entries that are not catalogue names), resolved relative to the
-    vehicle file: inputs of any command given the vehicle, never to be written over. Best
-    effort: the vehicle reader reports a malformed file; None or a missing file gives []."""
-    import tomllib
+    propeller`` and ``params`` entries that are files, as the vehicle reader resolves them,
+    :func:`propmap.vehicle.file.rotor_file_specs`): inputs of any command given the vehicle,
+    never to be written over. Best effort: the vehicle reader reports a malformed file; None
+    or an unreadable file gives []."""
+    from ..vehicle.file import VehicleFileError, rotor_file_specs
 
     if vehicle is None:
         return []
     try:
-        rotors = tomllib.loads(Path(vehicle).read_text(encoding="utf-8")).get("rotors", [])
-        specs = [r.get(k) for r in rotors if isinstance(r, dict) for k in ("propeller", "params")]
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, AttributeError):
+        specs = [s for key in ("propeller", "params") for s in rotor_file_specs(vehicle, key)]
+    except VehicleFileError:
         return []
-    return [Path(vehicle).parent / s for s in specs if isinstance(s, str)]
+    return [Path(s) for s in specs if s is not None and os.path.lexists(s)]
 
 
 def check_outputs(outputs, inputs) -> None:

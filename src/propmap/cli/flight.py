@@ -393,10 +393,10 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
     from ..io.inputs import show_path
 
-    from ..vehicle.file import rotor_param_specs
+    from ..vehicle.file import rotor_file_specs
 
     # the vehicle's rotor sets where no --params: one set for all (its label, air and coverage), or each its own
-    own = rotor_param_specs(vehicle) if params_spec is None else ()
+    own = rotor_file_specs(vehicle) if params_spec is None else ()
     spec = params_spec if params_spec is not None else (
         own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
     params, air, label = load_params("generic" if spec is None else spec, option="--params")

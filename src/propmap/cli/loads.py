@@ -454,7 +454,9 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
 
     n, ext, lo, hi, v_max = 0, (0.0, 0.0, 0.0), math.inf, 0.0, 0.0
     seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
+    bare = False  # the incidence under its bare name incidence_deg (taken first), no unit stated in the header
     for df, _, values in _chunks(path, CHUNK, offset_deg):
+        bare = any(str(c).strip().lower() == "incidence_deg" for c in df.columns)
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
@@ -464,11 +466,8 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
         if inc.size:  # (and the one farthest from a whole degree read as radians)
             far = np.abs(np.degrees(inc) - np.round(np.degrees(inc)))
             seen += [inc.max(), *inc[np.abs(inc - np.round(inc)) > 1e-6][:1], inc[int(np.argmax(far))]]
-    reader, _, _, mapped = _points_reader(path, CHUNK)
-    reader.close()
-    name = mapped["incidence_deg"][0] if "incidence_deg" in mapped else ""
     # a unit stated in the header is believed (incidence (deg), Incidence (°)); the bare incidence_deg is checked
-    hint = radians_hint(seen, np.full(len(seen), np.inf), name) if name.strip().lower() == "incidence_deg" else None
+    hint = radians_hint(seen, np.full(len(seen), np.inf)) if bare else None
     if hint:
         warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
     return n, ext, (lo, hi), v_max

@@ -60,7 +60,7 @@ from ..io.inputs import show_path
 from ..io.toml_file import load_toml
 from .model import Rotor, Vehicle
 
-__all__ = ["VehicleFileError", "read_vehicle", "rotor_param_specs"]
+__all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
 
 #: valid ranges (low, high, low open) of the vehicle's numbers
 MASS_RANGE = (0.0, 1e4, True)  # [kg]
@@ -171,6 +171,16 @@ def _blades(value, where: str) -> int:
     return value
 
 
+def _local_file(spec: str, folder: Path) -> Path | None:
+    """The file a rotor's ``propeller`` or ``params`` entry names, relative to the vehicle file's
+    ``folder`` (or absolute), where one exists; None: the entry is a name (catalogue, named set)."""
+    local = folder / spec
+    try:
+        return local if "\x00" not in spec and os.path.lexists(local) else None
+    except (OSError, ValueError):
+        return None
+
+
 def _rotor_params(spec, folder: Path, where: str):
     """A rotor's own parameter set: a file relative to ``folder`` (or absolute), else a named set."""
     from ..io.param_sets import resolve_params
@@ -179,11 +189,9 @@ def _rotor_params(spec, folder: Path, where: str):
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: params must be a parameter file or a named set (a string), "
                                f"got {_short(spec)}")
-    local = folder / spec
+    local = _local_file(spec, folder)
     try:
-        if "\x00" not in spec and os.path.lexists(local):
-            return read_params(local)
-        return resolve_params(spec)
+        return read_params(local) if local is not None else resolve_params(spec)
     except (ParamsFileError, KeyError, ValueError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         raise VehicleFileError(f"{where}: params: {msg}") from None
@@ -198,12 +206,8 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "
                                f"got {_short(spec)}")
-    local = folder / spec
-    try:
-        exists = "\x00" not in spec and os.path.lexists(local)
-    except (OSError, ValueError):
-        exists = False
-    if exists:
+    local = _local_file(spec, folder)
+    if local is not None:
         from ..io.geometry_files import SIZE_HINT
 
         try:
@@ -220,7 +224,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
         return load_propeller(spec)
     near = difflib.get_close_matches(spec, list(catalogue()), n=3)
     hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
-    shown = show_path(local)
+    shown = show_path(folder / spec)
     shown = shown if len(shown) <= 300 else shown[:290] + "..."
     raise VehicleFileError(f"{where}: propeller {_short(spec)} is neither a file ({shown}: a relative "
                            f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
@@ -311,34 +315,36 @@ def read_vehicle(path) -> Vehicle:
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
 
 
-def rotor_param_specs(path) -> tuple[str | None, ...]:
-    """Each rotor's own parameter set as the vehicle file names it, for labels and coverage.
+def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
+    """Each rotor's ``params`` (or ``propeller``) entry as :func:`read_vehicle` resolves it, for
+    labels, coverage and the inputs a command must not write over.
 
     Parameters
     ----------
     path : str or Path
-        A vehicle file that :func:`read_vehicle` reads.
+        A vehicle file (read it with :func:`read_vehicle` for the full check).
+    key : {"params", "propeller"}
 
     Returns
     -------
     tuple of (str or None)
-        Per rotor, in the file's order: the ``params`` file's path (relative to the vehicle's
-        folder, as :func:`read_vehicle` resolves it) or the named set, None where the rotor
-        has no ``params`` (it takes the set passed to the model).
+        Per rotor, in the file's order: the file's path (relative to the vehicle's folder,
+        where it exists) or the name (a named set, a catalogue propeller); None where the rotor
+        has no such entry (``params``: it takes the set passed to the model).
 
     Raises
     ------
     VehicleFileError
-        The file cannot be read as TOML (read it with :func:`read_vehicle` first for the full check).
+        The file cannot be read as TOML.
     """
     path = Path(path)
-    data = load_toml(path, VehicleFileError)
+    rotors = load_toml(path, VehicleFileError).get("rotors")
     out = []
-    for r in data.get("rotors", ()):
-        spec = r.get("params") if isinstance(r, dict) else None
+    for r in rotors if isinstance(rotors, list) else ():
+        spec = r.get(key) if isinstance(r, dict) else None
         if not isinstance(spec, str) or not spec.strip():
             out.append(None)
             continue
-        local = path.parent / spec
-        out.append(str(local) if "\x00" not in spec and os.path.lexists(local) else spec)
+        local = _local_file(spec, path.parent)
+        out.append(spec if local is None else str(local))
     return tuple(out)
