@@ -186,6 +186,14 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
     return best, log, counter["n"], time.perf_counter() - t0, warns
 
 
+def _cut_at_bounds(ci: np.ndarray, lb: np.ndarray, ub: np.ndarray) -> np.ndarray:
+    """95% intervals, shape (p, 2), cut at the parameters' bounds (a linearised interval reaches
+    past them: cd_min below 0, a compliance below 0); an infinite one (a parameter the data do
+    not determine) stays, null in the report."""
+    ci = np.asarray(ci, float)
+    return np.where(np.isfinite(ci), np.clip(ci, lb[:, None], ub[:, None]), ci)
+
+
 def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
     """Assemble the FitResult: identifiability, parameters at a bound, evaluation limit.
 
@@ -229,9 +237,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
-    # a linearised interval past a bound (cd_min below 0, a compliance below 0) is cut at it
-    ci = np.asarray(idf.ci95, float)  # (an undetermined parameter's infinite interval stays: null in the report)
-    idf = replace(idf, ci95=np.where(np.isfinite(ci), np.clip(ci, lb[:, None], ub[:, None]), ci))
+    idf = replace(idf, ci95=_cut_at_bounds(idf.ci95, lb, ub))
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
@@ -418,8 +424,7 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
     warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
                   f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
                   for n, sd in zip(dnames, own.std_error) if n in weak)
-    lb, ub = _bounds(result.names, options)
-    ci = np.clip(np.column_stack([result.x - t * std, result.x + t * std]), lb[:, None], ub[:, None])
+    ci = _cut_at_bounds(np.column_stack([result.x - t * std, result.x + t * std]), *_bounds(result.names, options))
     idf = Identifiability(result.names, std, ci, corr, own.singular_values, (), warns, std_error_data=None,
                           effective_parameters=eff)
     extra = dict(result.extra)

@@ -33,7 +33,7 @@ from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
 from .load_data import STATIC_AIRSPEED
 from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
-from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fit_along_directions,
+from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fit_along_directions, _solve,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
@@ -551,13 +551,13 @@ def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitRes
     variance. Held at the upper bound first: a smaller rise puts the limit at the bound;
     else held at the linearised limit: a smaller rise there means that limit is too narrow,
     and five bisections (geometric) between it and the bound place the profile's. The limit
-    and a warning replace the linearised ones; the lower limit stays linearised. 1-7 refits
-    from the optimum, each at most 40 residual evaluations (with the implicit Jacobian).
+    and a warning replace the linearised ones; the lower limit stays linearised. 1-7 refits of
+    the other parameters from the optimum, by the fit engine (engine._solve, one start).
     """
     names = result.names
     if "flap_compliance" not in names or "flap_compliance" in result.at_bound:
         return result
-    from scipy import optimize, stats
+    from scipy import stats
 
     from ..core.solver import SolverError
 
@@ -568,6 +568,8 @@ def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitRes
     if not (math.isfinite(top) and x_opt[j] < top):
         return result
     keep = np.array([i != j for i in range(len(names))])
+    others = tuple(n for n in names if n != "flap_compliance")
+    refit = replace(options, multistart=0)  # (from the optimum: one local refit)
     both = getattr(residual, "with_jacobian", None)
     dof = max(result.residuals.size - len(names), 1)
     s2 = float(result.residuals @ result.residuals) / dof
@@ -575,28 +577,18 @@ def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitRes
     edge = 0.5 * float(stats.t.ppf(0.975, dof)) ** 2 * s2
 
     def rise(k: float) -> float:
-        """The profile's cost at compliance k, less the optimum's."""
-        seen = {}
+        """The profile's cost at compliance k, less the optimum's: the fit engine's refit of the others."""
+        def held(z):
+            return residual(np.insert(np.asarray(z, float), j, k))
 
-        def at(z):
-            return np.insert(np.asarray(z, float), j, k)
+        if both is not None:
+            def held_with_jacobian(z):
+                r, J = both(np.insert(np.asarray(z, float), j, k))
+                return r, J[:, keep]
 
-        def fun(z):
-            if both is None:
-                return residual(at(z))
-            r, J = both(at(z))
-            seen["z"], seen["J"] = np.array(z, float), J[:, keep]
-            return r
-
-        def jac(z):
-            if "z" not in seen or not np.array_equal(seen["z"], np.asarray(z, float)):
-                fun(z)
-            return seen["J"]
-
-        sol = optimize.least_squares(fun, np.clip(x_opt[keep], lb[keep], ub[keep]),
-                                     jac=jac if both is not None else "2-point", bounds=(lb[keep], ub[keep]),
-                                     method="trf", x_scale="jac", max_nfev=40)
-        return float(sol.cost) - optimum
+            _attach_jacobian(held, held_with_jacobian)
+        best = _solve(held, others, refit, "profile", x_opt[keep])[0]
+        return float(best.cost) - optimum
 
     idf = result.identifiability
     ci = np.array(idf.ci95, dtype=float)
