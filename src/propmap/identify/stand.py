@@ -312,7 +312,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
              "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
         if quantity in cm.columns:
             continue
-        like = [n for n in bases if stems[n] & _loose(similar)]
+        similar = _loose(similar)
+        like = [n for n in bases if stems[n] & similar]
         # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
         # points move (Shaft angle (deg) beside an airspeed): its name may be anything
         kind = "speed" if quantity == "airspeed" else "angle"
