@@ -1,0 +1,93 @@
+"""Issue 15: can a fit of the static run and the lowest-rpm sweeps learn a propeller's own washout?
+
+Each propeller is fitted as `propmap validate --all`'s static + lowest protocol fits it (the CLI
+defaults, from the generic set and prior without its family; UIUC Propeller Data Site vol. 1,
+Brandt & Selig AIAA 2011-1255, and the bundled part of vol. 2, Deters, Ananda & Selig AIAA
+2014-2151), with a blade-angle change -K Z held at each K of a grid (the per-point collective of
+`rotor_loads`), Z one of
+
+* ``omega``: (Omega R / 100 m/s)^2, the washout of a blade twisted by its aerodynamic moment
+  against a torsional stiffness (W. Johnson, Helicopter Theory, 1980, Ch. 9);
+* ``airspeed``: (V / 10 m/s)^2, a loss that grows with the tunnel speed and leaves the static
+  run alone.
+
+For every K it records the training objective (data + prior) and the held-out rms CT error (% of
+static CT over the other sweeps). "chosen" takes each propeller's K of least training objective
+(what a fit freeing K would find, to the grid's resolution), "oracle" the K of least held-out
+error (not available to a user: the ceiling), "fixed" one K for every propeller.
+
+    .venv/bin/python tools/washout_fit.py omega      # about 90 s on 2 cores
+    .venv/bin/python tools/washout_fit.py airspeed
+
+Findings (2026-11-26): docs/validation.md, "Flexible and thin-section propellers".
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import sys
+import warnings
+from concurrent.futures import ProcessPoolExecutor
+from functools import partial
+
+import numpy as np
+
+import propmap as pm
+from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from propmap.identify.fit import _objective
+from propmap.io.calibration import generic_without, population
+from propmap.io.catalogue import catalogue
+from propmap.validation import _coefficients, rpm_groups
+
+K_DEG = (0.0, 0.5, 1.0, 2.0, 3.0, 5.0)  # blade-angle change at Z = 1 [deg]
+
+
+def _z(data, prop, law: str) -> np.ndarray:
+    if law == "omega":
+        return (data.omega * prop.radius / 100.0) ** 2
+    return (data.airspeed / 10.0) ** 2
+
+
+def grid(name: str, law: str) -> tuple:
+    """(volume, [(K, training objective, held-out rms dCT / CT0)] for K in K_DEG)."""
+    warnings.simplefilter("ignore")  # the catalogue's coverage notes
+    entry, prop = catalogue()[name], pm.load_propeller(name)
+    data = loads_from_catalogue(entry, prop.diameter)
+    generic, pop = generic_without(name)[0], population(without=name)
+    static, groups = data.airspeed == 0, rpm_groups(data)
+    train = static | np.isin(data.group, groups[0])
+    CT = _coefficients(data, prop, generic.air)[0]
+    CT0, z = CT[static].mean(), _z(data, prop, law)
+    out = []
+    for K in K_DEG:
+        coll = -math.radians(K) * z
+        res = fit_loads(dataclasses.replace(data, collective=coll).subset(train), prop, base=generic,
+                        options=FitOptions(population=pop))
+        r = pm.rotor_loads(prop, res.params, data.omega[~train], data.airspeed[~train], data.incidence[~train],
+                           collective=coll[~train])
+        out.append((K, _objective(res), float(np.sqrt(np.mean(((r.CT - CT[~train]) / CT0) ** 2)))))
+    return entry.volume, out
+
+
+def _stats(v) -> str:
+    v = 100 * np.asarray(v)
+    return f"{np.median(v):.1f} / {np.percentile(v, 90):.1f} / {v.max():.1f}%"
+
+
+def main(law: str) -> None:
+    names = sorted(n for n, e in catalogue().items() if e.static_files and e.sweep_files)
+    with ProcessPoolExecutor(2) as ex:
+        rows = list(ex.map(partial(grid, law=law), names))
+    print(f"washout law {law}: held-out CT rms median / 90th percentile / worst (static + lowest)")
+    for volume in (1, 2):
+        errs = np.array([[e for _, _, e in out] for v, out in rows if v == volume])
+        cost = np.array([[c for _, c, _ in out] for v, out in rows if v == volume])
+        chosen = errs[np.arange(len(errs)), cost.argmin(axis=1)]
+        print(f"vol. {volume} ({len(errs)}): K = 0 {_stats(errs[:, 0])}; chosen {_stats(chosen)} "
+              f"(K > 0 for {np.mean(cost.argmin(axis=1) > 0):.0%}); oracle {_stats(errs.min(axis=1))}")
+        print("  fixed: " + "; ".join(f"K {K:g} deg {_stats(errs[:, j])}" for j, K in enumerate(K_DEG)))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "omega")
