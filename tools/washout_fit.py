@@ -35,7 +35,7 @@ import numpy as np
 
 import propmap as pm
 from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
-from propmap.identify.fit import _objective
+from propmap.identify.engine import _objective
 from propmap.io.calibration import generic_without, population
 from propmap.io.catalogue import catalogue
 from propmap.validation import _coefficients, rpm_groups

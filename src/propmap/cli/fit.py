@@ -184,7 +184,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
 
     from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
                             read_vehicle)
-    from ..identify.fit import hover_vertical_force
+    from ..identify.level_flight_fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
 
     check_outputs(_out_files(out), [data, vehicle, base_spec])

@@ -440,3 +440,8 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
         "prior_std": [float(v) for v in d["prior_std"] * deg],
     }
     return replace(result, identifiability=idf, extra=extra)
+
+
+def _objective(result: FitResult) -> float:
+    """The objective a fit minimised: 0.5 |residuals|^2 plus the population prior's term, if any."""
+    return result.cost + result.extra.get("prior", {}).get("cost", 0.0)

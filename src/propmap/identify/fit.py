@@ -6,13 +6,12 @@ Either section model can be identified: the paper's (c_l1, c_l2, c_d, alpha_0), 
 from the paper's x0, or a subset of the cambered polar's parameters, started from the
 base set (normally the catalogue-fitted ``generic`` set).
 
-* Level flight (eqs 16-18): residual_j = vertical component of the summed rotor forces
-  (+ optional body lift, Sec. III-A) - m g, per steady condition j.
 * Loads: residuals (model - measured) / RMS(measured) for each measured quantity; several
   propellers can be fitted jointly (:func:`fit_loads_joint`), each weighted alike.
 
-This module holds these two data kinds' residuals; they, and the flight logs'
-(identify/flight.py), share one engine: identify/options.py (what is fitted, bounds,
+This module holds the load data's residuals; they, level flight's (eqs 16-18,
+identify/level_flight_fit.py, re-exported here) and the flight logs' (identify/flight.py)
+share one engine: identify/options.py (what is fitted, bounds,
 :class:`FitOptions`), identify/engine.py (prior, solve, directions, report),
 identify/continuation.py (the continuation in M) and identify/result.py
 (:class:`FitResult`, identifiability).
@@ -25,283 +24,20 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..core.airfoil import Air, CamberedParams, SectionParams, sigmoid_blend
-from ..core.hover import HoverModel
-from ..core.solver import DEFAULT_DISCRETIZATION, OMEGA_MIN, Discretization, differentiable, rotor_loads
-from ..core.vector import rotor_wrench
-from .data import LevelFlightData, LoadData, body_to_world, rotor_kinematics
+from ..core.airfoil import Air, CamberedParams, SectionParams
+from ..core.solver import OMEGA_MIN, differentiable, rotor_loads
+from .data import LoadData
 from .load_data import STATIC_AIRSPEED
-from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fit_along_directions, _solve,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
-from .options import (BODY_X0, CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
+from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
 from .result import FitResult, Identifiability
 
-__all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_level_flight", "fit_loads",
-           "fit_loads_joint", "level_flight_forces", "param_names", "CAMBERED_FIT", "CAMBERED_FIT_STATIC",
-           "CAMBERED_FIT_RE"]
-
-
-def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None,
-                        discretization: Discretization = DEFAULT_DISCRETIZATION, derivatives=()) -> dict:
-    """Rotor loads of every rotor at every condition and the net vertical force (eq 16).
-
-    Uses the vector form (:func:`rotor_wrench`) on V_i = V_vehicle + omega x r_i; for rotor
-    axes along body z, no rates and no roll this is exactly eq 16,
-    sum_i T_i sin(beta_i) + D_i cos(beta_i).
-
-    Parameters
-    ----------
-    params : AirfoilParams or CamberedParams
-        The section set of every rotor.
-    data : LevelFlightData
-    vehicle : Vehicle
-    air : Air, optional
-        Default: the parameter set's own (``.air``).
-    discretization : Discretization
-    derivatives : sequence of str
-        Section parameters' names (and ``"collective"``) to differentiate the vertical
-        force with respect to, as :func:`propmap.rotor_loads` takes them; () (default): none.
-
-    Returns
-    -------
-    dict with ``thrust``, ``drag``, ``torque`` (shape (N, n_rotors)) [N, N, N m],
-    ``vertical`` (shape (N,)) [N] and ``beta`` (shape (N, n_rotors)) [rad]; with
-    ``derivatives`` (section parameters' names) also ``vertical_jacobian``, shape (N, len(names)):
-    d vertical / d p by the implicit function theorem (rotor_wrench's derivatives).
-
-    Raises
-    ------
-    ValueError
-        ``derivatives`` that :func:`propmap.rotor_loads` refuses (an unknown or node-changing
-        name, Omega below 0.1 rad/s).
-    SolverError
-        From the rotor model.
-    """
-    air = params.air if air is None else air
-    R, vel = rotor_kinematics(data, vehicle)
-    n_rot = len(vehicle.rotors)
-    T = np.empty((data.n, n_rot))
-    D = np.empty_like(T)
-    Q = np.empty_like(T)
-    vertical = np.zeros(data.n)
-    names = tuple(derivatives or ())
-    dvert = np.zeros((data.n, len(names)))
-    groups: dict[int, list[int]] = {}
-    for i, rotor in enumerate(vehicle.rotors):
-        groups.setdefault(id(rotor.propeller), []).append(i)
-    for idx in groups.values():
-        prop = vehicle.rotors[idx[0]].propeller
-        axes = np.stack([vehicle.rotors[i].axis for i in idx])
-        spins = np.array([vehicle.rotors[i].spin for i in idx])
-        w = rotor_wrench(prop, params, vel[:, idx, :], np.broadcast_to(axes, (data.n, len(idx), 3)),
-                         data.omega[:, idx], np.broadcast_to(spins, (data.n, len(idx))), air=air,
-                         discretization=discretization, derivatives=names)
-        T[:, idx], D[:, idx], Q[:, idx] = w.loads.thrust, w.loads.drag, w.loads.torque
-        vertical += np.einsum("nj,nkj->n", R[:, 2, :], w.force)
-        for c, n in enumerate(names):
-            dvert[:, c] += np.einsum("nj,nkj->n", R[:, 2, :], w.jacobian[("force", n)])
-    beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, rotor_geometry(vehicle)[1])  # unit axes
-                             / np.maximum(np.linalg.norm(vel, axis=-1), 1e-300), -1, 1))
-    out = {"thrust": T, "drag": D, "torque": Q, "vertical": vertical, "beta": beta}
-    if names:
-        out["vertical_jacobian"] = dvert
-    return out
-
-
-def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -> np.ndarray:
-    """Body lift of Sec. III-A [N], shape (N,): 0.5 rho V^2 C_L^body(beta_body - pi/2) S_body.
-
-    C_L^body has eq 3's form with ``xb`` = (cl1_body, cl2_body, alpha0_body [rad]) and
-    sharpness M [1/rad]; the angle of attack is that of the body's z axis against the
-    flight direction.
-    """
-    cl1b, cl2b, a0b = xb
-    z_world = body_to_world(data.pitch, data.roll)[:, :, 2]  # body z in world
-    beta_body = np.arccos(np.clip(z_world[:, 0], -1, 1))  # angle between velocity (world x) and body z
-    a = beta_body - math.pi / 2
-    s = sigmoid_blend(a, a0b, M)
-    CL = (1 - s) * cl1b * a + s * cl2b * np.sin(a) * np.cos(a)
-    return 0.5 * air.rho * data.airspeed**2 * CL * vehicle.body_area
-
-
-def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionParams | None = None,
-                     air: Air | None = None, options: FitOptions = FitOptions(), start=None) -> FitResult:
-    """Identify section parameters from steady level flight, eqs (16)-(18).
-
-    Parameters
-    ----------
-    data : LevelFlightData
-    vehicle : Vehicle
-    base : AirfoilParams or CamberedParams, optional
-        The model and the constants not fitted; gill2017-apc (the paper's model and
-        footnote 2 values) by default. Paper's model: the fit starts from the paper's x0
-        and, when the base M exceeds 30, continues in M (FitOptions). Cambered: the fit
-        starts from ``base``.
-    air : Air, optional
-        Default: the parameter set's own (``.air``).
-    options : FitOptions
-    start : array_like, optional
-        The start of the fitted parameters, in the fit's order (default: above). With body
-        lift, the fit without it starts there.
-
-    Returns
-    -------
-    FitResult
-        ``residuals`` is eq 17 per condition [N]; ``extra`` holds, with
-        ``options.body_lift``, the body-lift verdict. With body lift ``params`` are those
-        of the model the F-test selects: the fit with body lift when it matters
-        (p < 0.05), else the fit without it.
-
-    Raises
-    ------
-    ValueError
-        Fewer conditions than parameters + 1, a rotor count in ``data.omega`` other than the
-        vehicle's, an unknown parameter name, or body lift requested without body_area.
-    SolverError
-        From the rotor model.
-    """
-    from ..core.airfoil import preset
-
-    base = base or preset("gill2017-apc")
-    air = base.air if air is None else air
-    names = _default_names(base, options)
-    if options.body_lift:
-        if vehicle.body_area <= 0:
-            raise ValueError("body_lift needs the vehicle's body_area > 0 m^2")
-        names = names + ("cl1_body", "cl2_body", "alpha0_body")
-    if data.n <= len(names):
-        raise ValueError(f"{data.n} conditions cannot identify {len(names)} parameters; need at least {len(names) + 1}")
-    n_rot = len(vehicle.rotors)
-    if data.omega.shape[1] != n_rot:
-        raise ValueError(f"data.omega has {data.omega.shape[1]} rotor columns; the vehicle has {n_rot} rotors")
-
-    def make_residual(opts):
-        def errors(f, x, p):  # the vertical force balance (eq 16) of the model's forces f
-            r = f["vertical"] - vehicle.weight
-            if opts.body_lift:
-                r = r + body_lift(x[-3:], data, vehicle, p.M, air)
-            return r
-
-        def residual(x, opts=opts):
-            p = _params_from(x, names, base, opts)
-            return errors(level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization), x, p)
-
-        def with_jacobian(x):
-            """The residual and its Jacobian from one model call: the rotors' columns from the
-            implicit derivatives; the body-lift terms (a closed form, no solve) by central
-            differences."""
-            x = np.asarray(x, float)
-            p = _params_from(x, names, base, opts)
-            section = names[:-3] if opts.body_lift else names
-            f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
-                                    derivatives=section)
-            r = errors(f, x, p)
-            cols = [f["vertical_jacobian"]]
-            if opts.body_lift:
-                for k in range(3):
-                    h = 1e-6 * max(abs(x[-3 + k]), 0.1)
-                    hi, lo = x[-3:].copy(), x[-3:].copy()
-                    hi[k] += h
-                    lo[k] -= h
-                    cols.append(((body_lift(hi, data, vehicle, p.M, air) - body_lift(lo, data, vehicle, p.M, air))
-                                 / (2 * h))[:, None])
-                if "M" in section and opts.M is None:  # the body lift's blend shares the section's M
-                    k, h = names.index("M"), 1e-6 * p.M
-                    cols[0][:, k] += (body_lift(x[-3:], data, vehicle, p.M + h, air)
-                                      - body_lift(x[-3:], data, vehicle, p.M - h, air)) / (2 * h)
-            return r, np.hstack(cols)
-
-        section_names = names[:-3] if opts.body_lift else names
-        if opts.jacobian == "implicit" and differentiable(base, section_names):
-            _attach_jacobian(residual, with_jacobian)
-        return residual
-
-    make_data = make_residual
-    make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
-    x0 = _x0(names, options, base) if start is None else np.asarray(start, float)
-    without = None
-    no_body = replace(options, body_lift=False, progress=False, names=names[:-3])
-    if options.body_lift:
-        # the model without body lift first; the full fit starts from its optimum with
-        # zero body lift (BODY_X0), so that it can only improve on it (nested models)
-        without = fit_level_flight(data, vehicle, base=base, air=air, options=no_body,
-                                   start=None if start is None else x0[:-3])
-        x0 = np.concatenate([without.x, BODY_X0])
-    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
-                                                                    "fit level-flight", x0)
-    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight, **extra,
-             **_m_effect(make_data, best, base, options)}
-    if prior:
-        extra["prior"] = prior
-    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
-                     nfev * data.n * n_rot, air, extra)
-    if options.body_lift:
-        M_used = result.params.M
-        L = body_lift(best.x[-3:], data, vehicle, M_used, air)
-        # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
-        # fitting noise would? (the paper's Sec. III-A check, made quantitative)
-        rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
-        if rss1 < (1 - 1e-6) * rss0:
-            # the full fit reached a better optimum of the section parameters than the fit without body lift
-            # (a local minimum of that one): the fit without it again from there, so that the test compares
-            # the body terms, not two optima of the section
-            again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
-            spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
-            # (the fit's own objective decides: with the population prior it is more than the data's residual)
-            better = _objective(again) < _objective(without)
-            without = replace(again if better else without, **spent)
-            rss0 = float(without.residuals @ without.residuals)
-        dof1 = data.n - len(names)
-        # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
-        # not run again from it; no evidence for body lift then)
-        F = max((rss0 - rss1) / 3, 0.0) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
-        from scipy import stats
-
-        p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")
-        matters = bool(p_value < 0.05)
-        verdict = {
-            "max_abs_N": float(np.max(np.abs(L))), "max_abs_over_weight": float(np.max(np.abs(L)) / vehicle.weight),
-            "rms_residual_with": float(np.sqrt(rss1 / data.n)), "rms_residual_without": float(np.sqrt(rss0 / data.n)),
-            "F": float(F), "p_value": p_value, "matters": matters,
-            "body_terms": {"cl1_body": float(best.x[-3]), "cl2_body": float(best.x[-2]),
-                           "alpha0_body_deg": math.degrees(best.x[-1])},
-        }
-        if not matters:
-            # the F-test selects the model without body lift: report and write that one
-            return replace(without, extra={**without.extra, "body_lift": {**verdict, "selected": "without"}},
-                           nfev=without.nfev + nfev, elapsed_s=without.elapsed_s + elapsed)
-        result.extra["body_lift"] = {**verdict, "selected": "with"}
-    return result
-
-
-def _objective(result: FitResult) -> float:
-    """The objective a fit minimised: 0.5 |residuals|^2 plus the population prior's term, if any."""
-    return result.cost + result.extra.get("prior", {}).get("cost", 0.0)
-
-
-def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: Vehicle, *, air: Air | None = None):
-    """Vertical force of the hover model (T = k_T Omega^2 along each rotor axis, D = 0) [N], shape (N,).
-
-    k_T of each propeller from the model at V = 0 at the mean rotor speed of the
-    slowest condition (the hover point of the data set).
-
-    Raises
-    ------
-    SolverError
-        From the rotor model.
-    """
-    air = params.air if air is None else air
-    R = body_to_world(data.pitch, data.roll)
-    j0 = int(np.argmin(data.airspeed))
-    out = np.zeros(data.n)
-    for i, rotor in enumerate(vehicle.rotors):
-        h = HoverModel.from_model(rotor.propeller, params, float(np.mean(data.omega[j0])), air=air)
-        out += h.thrust(data.omega[:, i]) * np.einsum("nj,j->n", R[:, 2, :], rotor.axis)
-    return out
+__all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_loads", "fit_loads_joint", "param_names",
+           "CAMBERED_FIT", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_RE"]
 
 
 def _load_norms(data: LoadData, propeller, keys, air: Air):

@@ -14,7 +14,7 @@ import numpy as np
 from ..core.airfoil import Air, AirfoilParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 from .data import LevelFlightData
-from .fit import level_flight_forces
+from .level_flight_fit import level_flight_forces
 from ..vehicle import Vehicle
 
 __all__ = ["simulate_level_flight"]
