@@ -216,7 +216,8 @@ def _ground_then(rows: np.ndarray, idle: float = 300.0, seconds: float = 1.0) ->
     n = int(400 * seconds)
     g = np.zeros((n, rows.shape[1]))
     g[:, 0] = rows[0, 0] - (n - np.arange(n)) / 400.0
-    g[:, 7] = 1.0  # the attitude quaternion, level
+    g[:, 10] = 1.0  # the attitude quaternion (x, y, z, w), level (it was x = 1, upside down, until the reader
+    # judged the accelerometer against the attitude, 2026-11-26)
     g[:, 13] = 9.80665
     g[:, 20:24] = idle
     g[:, 29:] = np.nan  # no NeuroBEM prediction there

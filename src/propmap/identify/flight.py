@@ -380,12 +380,15 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
     Raises
     ------
     ValueError
-        Fewer than 2 logs.
+        Samples of fewer than 2 logs (a log of ``log_names`` without samples, one held out
+        by :meth:`FlightSamples.select`, is not a fold).
     """
-    if len(samples.log_names) < 2:
-        raise ValueError("cross-validation needs at least 2 logs")
+    present = np.unique(samples.log_index)
+    if present.size < 2:
+        raise ValueError(f"cross-validation needs samples of at least 2 logs, got {present.size}")
     folds = []
-    for k, name in enumerate(samples.log_names):
+    for k in present:
+        k, name = int(k), samples.log_names[int(k)]
         train = samples.select(samples.log_index != k)
         test = samples.of_log(k)
         res = fit_flight(train, vehicle, base=base, air=air, options=options, moments=moments,

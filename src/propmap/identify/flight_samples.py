@@ -19,9 +19,13 @@ __all__ = ["OMEGA_STOPPED", "GROUND_FRACTION", "GROUND_SPEED", "GROUND_RATE", "F
 OMEGA_STOPPED = 1.0
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
 #: the accelerometer reading g (within 20%) while its rotors' rms speed is below GROUND_FRACTION of the hover speed
-#: (a quarter of the weight or less: idling), the hover speed the larger of the log's median rms rotor speed and the
-#: generic set's hover speed of the vehicle (so that a log mostly on the ground is judged too)
-GROUND_FRACTION = 0.5
+#: (about half the weight or less, so that in flight the accelerometer would read 0.6 g or less: idling or spooling
+#: up), the hover speed the generic set's of the vehicle (else the log's median rms rotor speed)
+GROUND_FRACTION = 0.7
+#: a log whose rotors' rms speed stays below HOVER_RANGE[0] of the vehicle's hover speed (in its 95th percentile), or
+#: runs above HOVER_RANGE[1] of it in the median, is refused: a mass in grams, motor speeds in rev/s (the generic
+#: set's hover speed of the NeuroBEM vehicle is 1.16 times its logs' median)
+HOVER_RANGE = (0.5, 2.5)
 GROUND_SPEED = 0.5  # [m/s]
 GROUND_RATE = 0.5  # [rad/s]
 #: a log whose rotors' tip speed (each motor's 99th percentile) exceeds this Mach number (at SPEED_OF_SOUND) is
@@ -165,15 +169,17 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     ValueError
         No logs, a log whose motor count differs from the vehicle's rotor count, a rotor
         whose tip speed (its speed's 99th percentile) exceeds Mach 1 (:data:`MAX_TIP_MACH`:
-        motor speeds in rpm read as rad/s), a bad rate, or a log with no sample left (a rotor
-        stopped, or the vehicle on the ground, in every sample; the message names it).
+        motor speeds in rpm read as rad/s), a log whose rotors run far from the vehicle's hover
+        speed (:data:`HOVER_RANGE`: a mass in grams, motor speeds in rev/s), a bad rate, or a
+        log with no sample left (a rotor stopped, or the vehicle on the ground, in every
+        sample; the message names it).
 
     Notes
     -----
     Samples are left out (``FlightSamples.notes`` says how many, per log) where a rotor is
     stopped, by its logged speed or through the motor lag (OMEGA_STOPPED), and where the
     vehicle stands on the ground (GROUND_FRACTION): there the measured force is the ground's
-    reaction, which no rotor model makes (idling rotors with the accelerometer reading g).
+    reaction, which no rotor model makes (idling or spooling-up rotors with the accelerometer reading g).
     """
     logs = list(logs)
     if not logs:
@@ -207,6 +213,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
             raise ValueError(f"{log.name}: motor {i + 1} runs at {om99[i]:.0f} rad/s (99th percentile), a tip speed "
                              f"of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: {cause} "
                              "(docs/flight.md)")
+        _check_hover(log, vehicle, hover)
         sl = slice(None, None, step)
         om_full, omdot_full = _lagged(log, tau)
         om = om_full[sl]
@@ -221,8 +228,8 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
                          "rad/s, logged or through the motor lag) left out")
         if ground.any():
             notes.append(f"{log.name}: {int(ground.sum())} sample(s) on the ground left out (standing still, the "
-                         "accelerometer reading g, the rotors below half the hover speed: the ground's reaction, "
-                         "which no rotor model makes)")
+                         f"accelerometer reading g, the rotors below {GROUND_FRACTION:g} of the hover speed: the "
+                         "ground's reaction, which no rotor model makes)")
         w = log.angular_velocity[sl][keep]
         if vehicle.inertia is not None:
             inertia = vehicle.inertia
@@ -250,19 +257,34 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
 def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover) -> np.ndarray:
     """Samples where the ground carries the vehicle (GROUND_FRACTION, GROUND_SPEED, GROUND_RATE):
     standing still with the accelerometer reading g (within 20%) [m/s^2] while the rotors' rms
-    speed is below GROUND_FRACTION of the larger of ``hover`` [rad/s] (the model's hover speed,
-    or 0) and the running samples' median rms speed: idling rotors, which cannot carry a quarter
-    of the weight."""
+    speed is below GROUND_FRACTION of ``hover`` [rad/s] (the model's hover speed; where that is
+    0, the running samples' median rms speed): rotors idling or spooling up, which cannot carry
+    half the weight."""
     g = 9.80665
     rms = np.sqrt(np.mean(omega**2, axis=1))
     running = ~stopped
     if not running.any():
         return np.zeros(len(rms), dtype=bool)
-    reference = max(float(np.median(rms[running])), hover)
+    reference = hover if hover > 0 else float(np.median(rms[running]))
     f = np.linalg.norm(specific_force, axis=1)
     still = ((np.linalg.norm(velocity, axis=1) < GROUND_SPEED)
              & (np.linalg.norm(angular_velocity, axis=1) < GROUND_RATE))
     return still & (np.abs(f - g) < 0.2 * g) & (rms < GROUND_FRACTION * reference)
+
+
+def _check_hover(log: FlightLog, vehicle: Vehicle, hover: float) -> None:
+    """Refuse a log whose running rotors' rms speed is far from the vehicle's hover speed
+    ``hover`` [rad/s] (HOVER_RANGE; not judged where that is 0)."""
+    running = np.all(log.rotor_omega >= OMEGA_STOPPED, axis=1)
+    if hover <= 0 or not running.any():
+        return
+    rms = np.sqrt(np.mean(log.rotor_omega[running] ** 2, axis=1))
+    high, median = float(np.percentile(rms, 95)), float(np.median(rms))
+    if high < HOVER_RANGE[0] * hover or median > HOVER_RANGE[1] * hover:
+        raise ValueError(f"{log.name}: the rotors' rms speed is {median:.4g} rad/s in the median and {high:.4g} in "
+                         f"its 95th percentile, {median / hover:.2g} and {high / hover:.2g} times the vehicle's hover "
+                         f"speed {hover:.4g} rad/s (its mass {vehicle.mass:g} kg, the generic set): is the mass in kg "
+                         "and are the motor speeds in rad/s (not rev/s)? (docs/flight.md)")
 
 
 #: the rotor speeds [rad/s] at which _hover_speed evaluates the static thrust, one batch (steps of 16%)

@@ -59,6 +59,18 @@ ACC_MAX = 2000.0  # [m/s^2]
 RATE_MAX = 200.0  # [rad/s]
 SPEED_MAX = 500.0  # [m/s]
 MIN_SAMPLES = 2
+G = 9.80665  # [m/s^2]
+#: the attitude quaternion's norm may differ from 1 by this (a logged one is normalised to about 1e-3)
+QUAT_TOLERANCE = 0.05
+#: the accelerometer's mean upward reading must lie within these fractions of g plus the log's mean vertical
+#: acceleration (the four NeuroBEM segments: 0.9998-1.0006); accelerations in g read 0.10, without gravity about 0,
+#: in a z-down frame -1
+GRAVITY_RANGE = (0.8, 1.25)
+#: the rates are judged against the attitude's change where that turns at this rms or more [rad/s] (the NeuroBEM
+#: segments: ratios 0.996-1.022 at 0.36-1.11 rad/s; 0.71 in hover, at 0.05 rad/s, where the attitude's noise rules)
+RATE_JUDGED = 0.2
+#: logged rates this many times the attitude's are refused as deg/s (180 / pi = 57.3)
+RATE_RATIO_DEG = (20.0, 150.0)
 
 
 class FlightLogError(ValueError):
@@ -165,7 +177,10 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         non-finite values (named as such), motor speeds outside [0, 1e5]
         rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
         500 m/s (likely a unit mistake), a CSV without a header that does not have the 41
-        columns of the NeuroBEM layout.
+        columns of the NeuroBEM layout; an attitude quaternion not of unit norm, an
+        accelerometer whose mean upward reading is not g plus the log's mean vertical
+        acceleration (accelerations in g, gravity removed, a z-down frame), rates that are
+        57 times or the negative of the attitude's change (deg/s, another frame).
     """
     p = Path(path)
     name = show_path(p)
@@ -428,3 +443,47 @@ def _check(log: FlightLog, name: str) -> None:
         i = int(np.argmax((log.rotor_omega < 0).any(axis=1)))
         raise FlightLogError(f"{name}: sample {i + 1}: negative motor speed {log.rotor_omega[i].tolist()} rad/s "
                              "(give speeds as magnitudes; the spin is the vehicle file's)")
+    _check_frames(log, name)
+
+
+def _check_frames(log: FlightLog, name: str) -> None:
+    """The attitude, the accelerometer and the rate gyro against each other: a unit quaternion
+    (QUAT_TOLERANCE); the accelerometer's mean vertical reading, turned into the world frame with
+    the attitude, against g plus the mean vertical acceleration the logged velocity asks for
+    (GRAVITY_RANGE: accelerations in g, gravity removed, a z-down frame); the rates against the
+    attitude's change (RATE_RATIO_DEG: rates in deg/s; a negative ratio: another frame), judged
+    where the attitude turns at RATE_JUDGED rad/s rms or more."""
+    from scipy.spatial.transform import Rotation
+
+    norm = np.linalg.norm(log.attitude, axis=1)
+    bad = np.abs(norm - 1.0) > QUAT_TOLERANCE
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise FlightLogError(f"{name}: sample {i + 1}: attitude quaternion {log.attitude[i].round(6).tolist()} has "
+                             f"norm {norm[i]:.4g}, not 1 (within {QUAT_TOLERANCE:g}): a column mistake?")
+    turn = Rotation.from_quat(log.attitude / norm[:, None])  # (x, y, z, w), body -> z-up world
+    up = float(np.mean(turn.apply(log.specific_force)[:, 2]))
+    v_up = turn.apply(log.velocity)[:, 2]
+    expected = G + (v_up[-1] - v_up[0]) / log.duration
+    if not GRAVITY_RANGE[0] * expected <= up <= GRAVITY_RANGE[1] * expected:
+        raise FlightLogError(f"{name}: the accelerometer reads {up:.4g} m/s^2 upwards on average (its readings turned "
+                             f"into the world frame with the logged attitude), where the log's vertical speed asks for "
+                             f"{expected:.4g} (g plus its mean vertical acceleration): accelerations in g, gravity "
+                             "removed, a z-down (FRD) body frame, or a quaternion not (x, y, z, w) from body to world? "
+                             "(docs/flight.md, Flight logs)")
+    q = log.attitude / norm[:, None]
+    q = q * np.where(np.concatenate([[False], np.cumsum(np.sum(q[1:] * q[:-1], axis=1) < 0) % 2 == 1]), -1.0,
+                     1.0)[:, None]  # (q and -q are one attitude)
+    x, y, z, w = q.T
+    dx, dy, dz, dw = np.gradient(q, log.t, axis=0).T
+    w_att = 2 * np.column_stack([w * dx - x * dw - y * dz + z * dy, w * dy + x * dz - y * dw - z * dx,
+                                 w * dz - x * dy + y * dx - z * dw])  # body rates of the attitude: 2 conj(q) dq/dt
+    if np.sqrt(np.mean(w_att**2)) < RATE_JUDGED:
+        return
+    ratio = float(np.sum(log.angular_velocity * w_att) / np.sum(w_att * w_att))
+    if RATE_RATIO_DEG[0] <= ratio <= RATE_RATIO_DEG[1]:
+        raise FlightLogError(f"{name}: the logged body rates are {ratio:.3g} times those of the logged attitude's "
+                             "change: are they in deg/s? A log's rates are read in rad/s")
+    if ratio < 0:
+        raise FlightLogError(f"{name}: the logged body rates turn against the logged attitude (ratio {ratio:.3g}): "
+                             "rates in another body frame (z down?) or a quaternion from world to body?")

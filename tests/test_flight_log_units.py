@@ -1,0 +1,129 @@
+"""A flight log in the wrong units or frame is refused naming the likely cause, not fitted
+(user-level audit, 2026-11-26): accelerations in g, gravity removed, a z-down frame, rates in
+deg/s, a zero quaternion, a mass in grams, motor speeds in rev/s; ground samples while the rotors
+spool up are left out; cross-validation with a held-out log folds over the training logs only.
+Data: the NeuroBEM segments (Bauersfeld et al., RSS 2021), ../shared/data/neurobem_flights."""
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import scipy.io
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.identify.flight_samples import GROUND_FRACTION, _on_ground, flight_samples
+from propmap.io.flightlog import FlightLogError, read_flight_log
+
+VEHICLE = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+SEGMENTS = ("bemnn20210218170320seg2.mat", "bemnn20210218171908seg2.mat", "bemnn20210223104803seg2.mat")
+
+
+def _array(shared_data, k=0):
+    a = scipy.io.loadmat(shared_data / "neurobem_flights" / SEGMENTS[k])
+    return next(v for key, v in a.items() if not key.startswith("__")).astype(float)
+
+
+def _write(tmp_path, arr, name="log.mat"):
+    path = tmp_path / name
+    scipy.io.savemat(path, {"log": arr})
+    return path
+
+
+def _in_g(a):
+    a[:, 11:14] /= 9.80665
+
+
+def _without_gravity(a):
+    x, y, z, w = a[:, 7:11].T  # body -> world (x, y, z, w): gravity's reading in the body frame is g R^T e_z
+    a[:, 11:14] -= 9.80665 * np.column_stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)])
+
+
+def _frd(a):
+    a[:, 12:14] *= -1  # an FRD accelerometer: y and z negated
+
+
+def _deg_per_s(a):
+    a[:, 4:7] *= 180 / math.pi
+
+
+def _zero_quaternion(a):
+    a[:, 7:11] = 0.0
+
+
+@pytest.mark.parametrize("change, match", [
+    (_in_g, r"reads 0\.99\d* m/s\^2 upwards .* accelerations in g"),
+    (_without_gravity, r"reads -?0\.\d+ m/s\^2 upwards .* gravity removed"),
+    (_frd, r"reads -9\.\d+ m/s\^2 upwards .* a z-down \(FRD\) body frame"),
+    (_deg_per_s, r"5\d\.\d times those of the logged attitude's change: are they in deg/s"),
+    (_zero_quaternion, r"sample 1: attitude quaternion \[0\.0, 0\.0, 0\.0, 0\.0\] has norm 0"),
+])
+def test_a_log_in_other_units_or_frames_is_refused_naming_the_cause(tmp_path, shared_data, change, match):
+    """Each mistake read as the layout says gave a fit with exit 0 (accelerations in g: F 0.003 N
+    and a hover thrust of 0.19 N per rotor; rates in deg/s: a better F than the right log)."""
+    a = _array(shared_data)
+    read_flight_log(_write(tmp_path, a, "right.mat"))  # (the segment as shared reads)
+    change(a)
+    with pytest.raises(FlightLogError, match=match):
+        read_flight_log(_write(tmp_path, a))
+
+
+def test_a_hovering_log_is_not_judged_on_its_rates(tmp_path, shared_data):
+    """The hover segment turns at 0.05 rad/s rms, where the attitude's noise rules (the rates'
+    ratio to it is 0.71): its rates are not judged, so deg/s there are not caught (stated)."""
+    a = _array(shared_data, 2)
+    a[:, 4:7] *= 180 / math.pi
+    assert read_flight_log(_write(tmp_path, a)).n == a.shape[0]
+
+
+@pytest.mark.parametrize("mass_scale, omega_scale, ratio", [(1000.0, 1.0, r"0\.0\d"), (1.0, 1 / (2 * math.pi),
+                                                                                        r"0\.1\d")])
+def test_a_mass_in_grams_or_motor_speeds_in_rev_per_s_is_refused(tmp_path, shared_data, mass_scale, omega_scale,
+                                                                  ratio):
+    """Once reported as hundreds of samples 'on the ground' and a fit at its bounds (exit 0)."""
+    a = _array(shared_data, 0)[:4000]
+    a[:, 20:28] *= omega_scale
+    text = VEHICLE.read_text()
+    vehicle = pm.read_vehicle(VEHICLE)
+    for f in VEHICLE.parent.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    (tmp_path / VEHICLE.name).write_text(text.replace(f"mass = {vehicle.mass:g}",
+                                                      f"mass = {vehicle.mass * mass_scale:g}"))
+    veh = pm.read_vehicle(tmp_path / VEHICLE.name)
+    assert veh.mass == pytest.approx(vehicle.mass * mass_scale)
+    said = rf"rms speed is .*, {ratio}\d* and .* times the vehicle's hover speed .*mass in kg"
+    with pytest.raises(ValueError, match=said):
+        flight_samples([read_flight_log(_write(tmp_path, a))], veh)
+    flight_samples([read_flight_log(_write(tmp_path, _array(shared_data, 0)[:4000], "right.mat"))], vehicle)
+
+
+def test_spooling_up_on_the_ground_is_left_out():
+    """Standing still with the accelerometer reading g: rotors at 0.65 of the hover speed make
+    0.42 of the weight (in flight the accelerometer would read 0.42 g), so the ground carries
+    the rest (left out; with half the hover speed as the limit, they were fitted); at 0.75 (0.56
+    g in flight) they are kept, and a hover (1.0) is never ground."""
+    hover = 1200.0
+    n = 3
+    for frac, ground in ((0.65, True), (GROUND_FRACTION * 1.07, False), (1.0, False)):
+        omega = np.full((n, 4), frac * hover)
+        got = _on_ground(omega, np.tile([0.0, 0.0, 9.80665], (n, 1)), np.zeros((n, 3)), np.zeros((n, 3)),
+                         np.zeros(n, bool), hover)
+        assert got.tolist() == [ground] * n, frac
+
+
+def test_cross_validation_with_a_held_out_log_folds_over_the_training_logs(tmp_path, capsys, shared_data):
+    """--holdout with --cross-validate once added a fold for the held-out log (no samples): every
+    pooled figure NaN, and bare NaN in the JSON report."""
+    logs = [str(shared_data / "neurobem_flights" / s) for s in SEGMENTS]
+    out = tmp_path / "p.toml"
+    code = main(["fit", "flight", *logs, "--vehicle", str(VEHICLE), "--out", str(out), "--rate-hz", "1",
+                 "--holdout", SEGMENTS[2], "--cross-validate", "--fit-params", "collective"])
+    err = capsys.readouterr().err
+    assert code == 0, err
+    text = (tmp_path / "p.report.json").read_text()
+    assert "NaN" not in text
+    cv = json.loads(text)["flight_report"]["cross_validation"]
+    assert [f["log"] for f in cv["folds"]] == list(SEGMENTS[:2])
+    assert all(0.05 < v < 5 for v in cv["pooled"].values()), cv["pooled"]
