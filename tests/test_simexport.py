@@ -145,7 +145,8 @@ def test_export_sim_refuses_vehicles_it_cannot_describe(capsys, tmp_path):
     quad = _vehicle_toml(tmp_path / "quad.toml", 4)
     code = main(["export-sim", "apce_10x7", "--target", "rotorpy", "--out", str(tmp_path / "q.py"), "--vehicle", quad])
     err = capsys.readouterr().err
-    assert code == 2 and "its rotors carry apce_8x6, not apce_10x7" in err and "--hover-rpm" in err, err
+    assert code == 2 and "--hover-rpm" in err, err
+    assert "its rotors carry apce_8x6 (0.2032 m, 2 blades), not apce_10x7 (0.254 m, 2 blades)" in err
     assert not list(tmp_path.glob("*.py"))
     code = main(["export-sim", "apce_8x6", "--target", "gz-sim", "--out", str(tmp_path / "h.sdf"), "--vehicle", hexa,
                  "--points", "300"])
@@ -155,7 +156,8 @@ def test_export_sim_refuses_vehicles_it_cannot_describe(capsys, tmp_path):
     code = main(["export-sim", str(ex / "neurobem_5.1x4.8_geom.txt"), "--blades", "2", "--target", "gz-sim",
                  "--out", str(tmp_path / "n.sdf"), "--vehicle", str(ex / "neurobem_quadrotor.toml")])
     err = capsys.readouterr().err
-    assert code == 2 and "carry neurobem_5.1x4.8 (another geometry), not neurobem_5.1x4.8" in err, err
+    assert code == 2, err
+    assert "carry neurobem_5.1x4.8 (0.1295 m, 3 blades), not neurobem_5.1x4.8 (0.1295 m, 2 blades)" in err, err
 
 
 def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):

@@ -473,3 +473,24 @@ def test_coverage_text_keys_are_checked(tmp_path, bad, match):
     p.write_text(p.read_text() + f"\n[coverage]\nJ_max = 0.5\n{bad}\n")
     with pytest.raises((ParamsFileError, ValueError), match=match):
         read_coverage(p)
+
+
+@pytest.mark.parametrize("blades, diameter", [(2, None), (3, 5.3)])
+def test_c_header_for_a_vehicle_whose_rotors_are_another_reading_of_the_geometry_is_refused(tmp_path, capsys,
+                                                                                          blades, diameter):
+    """The NeuroBEM rotors are 3-blade 5.1 in; a header built from their geometry file read with 2
+    blades (or as 5.3 in) was written with its vehicle wrench: 4.10 N at 4 x 1115 rad/s against the
+    3-blade header's 5.57 N, status 0 (user-level audit, 2026-11-26). Only the name was compared."""
+    from propmap.cli.main import main
+
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    args = ["map", str(examples / "neurobem_5.1x4.8_geom.txt"), "--blades", str(blades), "--rpm", "4000:20000:3",
+            "--airspeed", "0:10:2", "--incidence-deg", "0:180:3", "--check-points", "0", "--format", "c",
+            "--vehicle", str(examples / "neurobem_quadrotor.toml"), "--out", str(tmp_path / "nb.h")]
+    if diameter:
+        args += ["--diameter-in", str(diameter)]
+    code = main(args)
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1, err
+    assert "rotor 1 carries neurobem_5.1x4.8 (0.1295 m, 3 blades)" in err and f"{blades} blades): a C header" in err
+    assert not list(tmp_path.iterdir())

@@ -215,11 +215,13 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     else:
         propeller = prop_choice.load(prop)
         if veh is not None:  # refused before the build, not after it
-            for k, r in enumerate(veh.rotors):
-                if r.propeller.name != propeller.name or r.params is not None:
-                    raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name}"
+            for k, r in enumerate(veh.rotors):  # (the geometry, not the name: a geometry file read with other blades)
+                if not r.propeller.same_geometry(propeller) or r.params is not None:
+                    raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} "
+                                     f"m, {r.propeller.n_blades} blades)"
                                      f"{' with its own parameters' if r.params is not None else ''}, not the map's "
-                                     f"{propeller.name}: a C header holds one map")
+                                     f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades): a "
+                                     "C header holds one map")
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, air_choice)
         check_section_match(propeller, label)
