@@ -94,3 +94,20 @@ def test_a_stopped_rotor_and_bad_input(setup):
         vm.wrench([0, 0, 0], [0, 0, 0], [900.0, 900.0])
     with pytest.warns(UserWarning, match="slipstream factor"):
         VehicleMap(Vehicle(mass=1.0, rotors=veh.rotors, body_drag=BodyDrag((0.01, 0.01, 0.0), 1.2)), rm)
+
+
+def test_a_velocity_beyond_1e150_is_refused_as_the_c_header_refuses_it(setup):
+    """Under "clip" a hub velocity of 1e160 m/s once returned the thrust alone: the drag and rolling
+    moment vectors overflowed to zero (W.force [0, 0, 5.6] beside loads.drag 0.61; user-level
+    audit, 2026-11-26). The C header's wrench returns -1 there; Python refuses it, one point or
+    many, and through VehicleMap (body rates of 1e200 rad/s)."""
+    veh, params, rm = setup
+    for velocity in ([1e160, 0.0, 0.0], np.array([[1e160, 0.0, 0.0], [1.0, 0.0, 0.0]])):
+        with pytest.raises(ValueError, match=r"velocity: a component of 1e\+160 m/s; a hub velocity must be below"):
+            rm.wrench(velocity, [0.0, 0.0, 1.0], 600.0, "cw", out_of_grid="clip")
+    below = rm.wrench([0.99e150, 0.0, 0.0], [0.0, 0.0, 1.0], 600.0, "cw", out_of_grid="clip")
+    assert np.all(np.isfinite(below.force)) and below.loads.drag > 0
+    vm = VehicleMap(veh, rm)
+    for n in (1, 2):
+        with pytest.raises(ValueError, match="a hub velocity must be below 1e\\+150 m/s"):
+            vm.wrench(np.zeros((n, 3)), np.tile([1e200, 0.0, 0.0], (n, 1)), np.full((n, 4), 900.0), out_of_grid="clip")

@@ -24,6 +24,9 @@ __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
 POLICIES = ("raise", "clip", "nan")
+#: :meth:`RotorMap.wrench` refuses a velocity component this large or larger [m/s] (no airspeed: its force and
+#: moment vectors would overflow), as the C header's wrench does
+VELOCITY_MAX = 1e150
 #: interpolation methods of RotorMap and of the C export
 INTERPOLATIONS = ("linear", "cubic")
 #: the model flags that make a cell's interpolation unreliable (reverse flow is not one:
@@ -375,7 +378,8 @@ class RotorMap:
         Raises
         ------
         ValueError
-            As :func:`propmap.rotor_wrench` and :meth:`loads`.
+            As :func:`propmap.rotor_wrench` and :meth:`loads`; a velocity component of
+            :data:`VELOCITY_MAX` (1e150 m/s) or more.
         """
         fast = self._wrench1(velocity, axis, omega, spin, out_of_grid)
         if fast is not None:
@@ -383,6 +387,10 @@ class RotorMap:
         from .core.vector import _check_spin, _spin_sign, disk_frame, wrench_vectors
 
         V, z, speed, beta = disk_frame(velocity, axis)
+        if np.any(np.abs(V) >= VELOCITY_MAX):
+            big = float(np.max(np.abs(V)))
+            raise ValueError(f"velocity: a component of {big:.6g} m/s; a hub velocity must be below {VELOCITY_MAX:g} "
+                             "m/s (its force and moment vectors would overflow)")
         from .core._interp import EDGE_SNAP
 
         lo, hi = self._box[4], self._box[5]  # an incidence a few ulp beyond an end of the axis is on it
@@ -430,6 +438,9 @@ class RotorMap:
         v, a, omega = _three(velocity), _three(axis), _plain(omega)
         if v is None or a is None or omega is None or omega != omega:
             return None
+        vx, vy, vz = v.tolist()
+        if not (abs(vx) < VELOCITY_MAX and abs(vy) < VELOCITY_MAX and abs(vz) < VELOCITY_MAX):
+            return None  # (a huge or non-finite velocity: the general path refuses it, naming it)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
             float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
