@@ -111,3 +111,16 @@ def test_a_velocity_beyond_1e150_is_refused_as_the_c_header_refuses_it(setup):
     for n in (1, 2):
         with pytest.raises(ValueError, match="a hub velocity must be below 1e\\+150 m/s"):
             vm.wrench(np.zeros((n, 3)), np.tile([1e200, 0.0, 0.0], (n, 1)), np.full((n, 4), 900.0), out_of_grid="clip")
+
+
+def test_a_query_just_outside_the_grid_is_shown_against_its_ends_in_full(setup):
+    """omega = nextafter(the grid's top) was refused as 'outside [209.44, 1047.2]', which reads as
+    inside (user-level audit, 2026-11-26): where rounding would hold the value, the ends are shown
+    whole."""
+    rm = setup[2]
+    top = float(rm.omega[-1])
+    with pytest.raises(ValueError, match=rf"omega = {float(np.nextafter(top, 2 * top))!r} is outside the map's grid "
+                                         rf"\[{float(rm.omega[0])!r}, {top!r}\] rad/s"):
+        rm.loads(np.nextafter(top, 2 * top), 1.0, 0.5)
+    with pytest.raises(ValueError, match=r"airspeed = 13.0 is outside the map's grid \[0, 12\] m/s"):
+        rm.loads(top, 13.0, 0.5)

@@ -296,7 +296,10 @@ class RotorMap:
                     bad = ~((a >= ax[0]) & (a <= ax[-1]))
                 if bad.any():
                     v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
-                    raise ValueError(f"{name} = {v!r} is outside the map's grid [{ax[0]:g}, {ax[-1]:g}] {unit} "
+                    lo, hi = f"{ax[0]:g}", f"{ax[-1]:g}"
+                    if float(lo) <= v <= float(hi):  # (rounded, the ends would hold the value: shown whole)
+                        lo, hi = repr(float(ax[0])), repr(float(ax[-1]))
+                    raise ValueError(f"{name} = {v!r} is outside the map's grid [{lo}, {hi}] {unit} "
                                      "(out_of_grid='clip' or 'nan' to flag instead)")
         return q
 
