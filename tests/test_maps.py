@@ -459,4 +459,8 @@ def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them
     with pytest.raises(ValueError, match="both of side_force, pitching_moment or neither"):
         RotorMap(ds.drop_vars("pitching_moment"))
     with pytest.warns(UserWarning, match="the C header's loads and wrench leave them out"):
-        c_header_text(rm, tmp_path / "flap.h")
+        text = c_header_text(rm, tmp_path / "flap.h")
+    # the header says so itself (its reader never saw the warning; user-level audit, 2026-11-26)
+    comment = " ".join(line.lstrip(" *") for line in text.split("*/")[0].splitlines())
+    assert "side force Y and a pitching moment M_P as well" in comment and "leave them out" in comment
+    assert "side force Y" not in c_header_text(RotorMap(small_map[2]), tmp_path / "rigid.h")

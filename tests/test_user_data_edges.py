@@ -494,3 +494,16 @@ def test_c_header_for_a_vehicle_whose_rotors_are_another_reading_of_the_geometry
     assert code == 2 and len(err.strip().splitlines()) == 1, err
     assert "rotor 1 carries neurobem_5.1x4.8 (0.1295 m, 3 blades)" in err and f"{blades} blades): a C header" in err
     assert not list(tmp_path.iterdir())
+
+
+def test_map_out_of_another_format_says_which_suffix_the_format_takes(tmp_path, capsys):
+    """The README's map line with --format c and --out X.nc said '(or choose --format)' to a user who
+    had chosen it (user-level audit, 2026-11-26)."""
+    from propmap.cli.main import main
+
+    code = main(["map", "apce_8x6", "--out", str(tmp_path / "a.nc"), "--format", "c"])
+    err = capsys.readouterr().err
+    assert code == 2 and "a c map is named *.h (--format c)" in err and len(err.strip().splitlines()) == 1, err
+    code = main(["map", "apce_8x6", "--out", str(tmp_path / "a.txt")])
+    err = capsys.readouterr().err
+    assert code == 2 and "(or choose --format)" in err, err

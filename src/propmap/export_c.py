@@ -315,6 +315,11 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         words = (f"The model against measurements: axial: {a['model_uncertainty_axial']}. "
                  f"Off-axis: {a['model_uncertainty_off_axis']}.")
         unc = "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
+    if rm.side_loads:  # (said in the header itself, not only in the warning at its build)
+        words = ("This map's model makes a side force Y and a pitching moment M_P as well (blade flapping, a linear "
+                 "inflow or the dynamic stall): the functions below leave them out, so the wrench differs from "
+                 "propmap.rotor_wrench and RotorMap.wrench by them.")
+        unc += "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
     text = template.format(
         name=path.stem, propeller=_comment(a.get("propeller", "")), version=_comment(a.get("propmap_version", "")),
         model=_comment(a.get("model", "")), uncertainty=unc,

@@ -194,7 +194,8 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     if plot.plot_rpm is not None and plot.plot_dir is None:
         raise InputError("--plot-rpm applies to --plot")
     if out.suffix.lower() != FORMATS[fmt]:
-        raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} (or choose --format)")
+        hint = f"--format {fmt}" if given(ctx, "fmt") else "or choose --format"
+        raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} ({hint})")
     inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
