@@ -123,7 +123,7 @@ def test_export_sim_all_flagged_envelope_says_n_a(capsys, tmp_path):
                           "--envelope", "rpm=5000:6000,airspeed=3:5,incidence_deg=170:180", "--points", "60")
     assert code == 0, err
     assert "nan" not in text.lower() and "rms     n/a  max     n/a" in text
-    assert "propmap: warning: every one of the 60 points of the envelope is flagged" in err
+    assert "propmap: warning: every one of the 60 check points of the envelope is flagged" in err
     report = json.loads((tmp_path / "c.report.json").read_text(), parse_constant=pytest.fail)
     assert report["errors"]["thrust"]["rms"] is None and report["errors"]["thrust"]["max_flagged"] > 0
 

@@ -15,7 +15,7 @@ import pytest
 import propmap as pm
 from propmap.cli.main import main
 from propmap.simexport import Envelope, export_sim, predict, write_export
-from propmap.simexport.fit import _errors, _samples
+from propmap.simexport.fit import _errors, _samples, check_seed
 
 
 @pytest.fixture(scope="module")
@@ -51,11 +51,16 @@ def test_written_coefficients_reproduce_their_stated_error(tmp_path, model, targ
     coefficients = _read(target, files[0])
     report = json.loads(files[1].read_text())
     assert report["target"] == target and report["propeller"] == "apce_8x6" and report["n_points"] == res.n_points
-    samples = _samples(prop, params, air, env, 600, 3)
+    samples = _samples(prop, params, air, env, 600, check_seed(3))  # (the errors' points, not the fitted)
     again = _errors(target, coefficients, samples)
+    on_fit = _errors(target, coefficients, _samples(prop, params, air, env, 600, 3))
     for k in ("thrust", "drag", "torque", "rolling_moment"):
         for stat in ("rms", "max"):
             assert again[k][stat] == pytest.approx(report["errors"][k][stat], rel=1e-9, abs=1e-15)
+            assert on_fit[k][stat] == pytest.approx(report["errors"]["fitted_points"][k][stat], rel=1e-9, abs=1e-15)
+    # the errors are measured on other points than the fitted ones (they were the same until 2026-11-26)
+    assert report["check_seed"] == 4 and report["check_points"] == samples["omega"].size
+    assert again["thrust"]["rms"] != on_fit["thrust"]["rms"]
     # hover pinned: the written coefficients give the model's static thrust and torque at the hover rpm
     assert report["errors"]["hover"]["thrust_error"] < 1e-12 and report["errors"]["hover"]["torque_error"] < 1e-12
     assert report["envelope"]["hover_rpm"] == pytest.approx(math.sqrt(4000 * 9000))

@@ -160,6 +160,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     if as_json:
         echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
                    "held_at_sign_bound": res.held,
+                   "check_points": res.meta.get("check_points"),
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:

@@ -69,10 +69,14 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
              f"over rpm {env.rpm[0]:g}-{env.rpm[1]:g}",
              f"{comment} error against the full model over the envelope (rpm {env.rpm[0]:g}-{env.rpm[1]:g}, "
              f"V {env.airspeed[0]:g}-{env.airspeed[1]:g} m/s, incidence {env.incidence_deg[0]:g}-"
-             f"{env.incidence_deg[1]:g} deg; {res.n_points} points, {e['points_flagged']} flagged):"]
+             f"{env.incidence_deg[1]:g} deg), on {res.meta.get('check_points', res.n_points)} check points other "
+             f"than the {res.n_points} fitted ({e['points_flagged']} flagged):"]
+    fitted = e.get("fitted_points", {})
     for k in ("thrust", "drag", "torque", "rolling_moment"):
+        on_fit = (f"; fitted points: rms {_pct(fitted[k]['rms'])}, max {_pct(fitted[k]['max'])}" if k in fitted
+                  else "")
         lines.append(f"{comment}   {k:<15} rms {_pct(e[k]['rms']):>7}  max {_pct(e[k]['max']):>7}  "
-                     f"(flagged: rms {_pct(e[k]['rms_flagged'])}, max {_pct(e[k]['max_flagged'])})")
+                     f"(flagged: rms {_pct(e[k]['rms_flagged'])}, max {_pct(e[k]['max_flagged'])}{on_fit})")
     lines.append(f"{comment} normalised: {e['normalisation']}")
     for name, why in res.fixed.items():
         lines.append(f"{comment} {name} fixed at 0: {why}")

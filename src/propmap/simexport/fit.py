@@ -5,8 +5,9 @@ fitted to the full model (propmap's BET/BEMT) over an envelope of operating poin
 hover pinned: the static coefficients (thrust and torque at V = 0) are set so that the
 simple model's hover thrust and torque equal the full model's at the envelope's hover rpm,
 and the speed terms are then fitted by least squares to what remains, each within its
-physical sign. The error against the full model over the envelope is reported, so that a
-user sees what the simple model costs. Notation: Omega [rad/s], V [m/s], incidence beta,
+physical sign. The error against the full model is measured on other points of the envelope
+than the fitted ones and reported, so that a user sees what the simple model costs.
+Notation: Omega [rad/s], V [m/s], incidence beta,
 V_ip = V sin(beta) (in-plane), V_z = V cos(beta) (axial, positive in climb), R the tip
 radius. Sources of the model forms (each checked against the simulator's source):
 
@@ -62,7 +63,8 @@ from ..core.geometry import _real
 from ..core.solver import check_model_args, rotor_loads
 from ..io.uncertainty import model_uncertainty
 
-__all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "default_envelope", "export_sim", "predict"]
+__all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "check_seed", "default_envelope", "export_sim",
+           "predict"]
 
 TARGETS = ("rotorpy", "gazebo-classic", "gz-sim", "multinomial")
 #: former names, still accepted: "gazebo" (the PX4 classic plugin) and "gill2019" (propmap's
@@ -184,7 +186,10 @@ class SimExport:
     coefficients : dict
         Name -> value in SI units (as the target's file writes them).
     errors : dict
-        Per load (thrust, drag, torque, rolling_moment): rms and max of |simple - full|,
+        Measured on check points of the envelope other than the fitted ones (``n_points`` of
+        them, seeded by :func:`check_seed`; ``fitted_points``: each load's rms and max on the
+        fitted points, for comparison). Per load (thrust, drag, torque, rolling_moment): rms
+        and max of |simple - full|,
         normalised per point by the static thrust or torque at its Omega (T, Q) or the
         largest |D| or |M_R| of the envelope's points (D, M_R); over the points outside
         vortex ring and multiple roots, and apart (``rms_flagged``, ``max_flagged``) over
@@ -435,6 +440,16 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
             q * R * poly(c["CR"], odd))
 
 
+#: the loads whose error against the full model is reported
+LOADS = ("thrust", "drag", "torque", "rolling_moment")
+
+
+def check_seed(seed: int) -> int:
+    """The seed of the check points on which :func:`export_sim` measures its errors: ``seed`` + 1
+    (the coefficients are fitted on the points of ``seed``; the check points are others)."""
+    return seed + 1
+
+
 def _rel(a: float, b: float) -> float:
     return float(abs(a - b) / abs(b))
 
@@ -445,7 +460,7 @@ def _errors(target: str, coefficients: dict, s) -> dict:
             "drag": np.full_like(T, max(float(np.max(np.abs(s["drag"]))), 1e-300)),
             "rolling_moment": np.full_like(T, max(float(np.max(np.abs(s["rolling_moment"]))), 1e-300))}
     out = {}
-    for k, pred in (("thrust", T), ("drag", D), ("torque", Q), ("rolling_moment", MR)):
+    for k, pred in zip(LOADS, (T, D, Q, MR)):
         e = np.abs(pred - s[k]) / norm[k]
         ok, bad = e[~s["flagged"]], e[s["flagged"]]
         out[k] = {"rms": float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan,
@@ -502,8 +517,10 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     envelope : Envelope, optional
         Default: :func:`default_envelope`.
     n_points : int
-        Random operating points in the envelope (seeded), >= 20.
+        Random operating points in the envelope (seeded), >= 20: as many to fit and, others,
+        to measure the errors on.
     seed : int
+        The fitted points' seed; the check points' is :func:`check_seed` (``seed`` + 1).
     params_label : str
         Recorded in the result.
 
@@ -552,13 +569,18 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         warnings.warn(f"{name} fixed at 0: {why}", UserWarning, stacklevel=2)
     for name, why in held.items():
         warnings.warn(f"{name} {why}", UserWarning, stacklevel=2)
-    errors = _errors(target, coefficients, s)
-    if errors["points_flagged"] == s["omega"].size:
-        warnings.warn(f"every one of the {s['omega'].size} points of the envelope is flagged (vortex ring or multiple "
-                      "roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
+    # the error on fresh points of the envelope (as a map's check), the fitted points' beside it
+    check = _samples(propeller, params, air, envelope, int(n_points), check_seed(int(seed)))
+    errors = _errors(target, coefficients, check)
+    fitted = _errors(target, coefficients, s)
+    errors["fitted_points"] = {k: {"rms": fitted[k]["rms"], "max": fitted[k]["max"]} for k in LOADS}
+    if errors["points_flagged"] == check["omega"].size:
+        warnings.warn(f"every one of the {check['omega'].size} check points of the envelope is flagged (vortex ring or "
+                      "multiple roots): no error outside flagged regions to report (n/a)", UserWarning, stacklevel=2)
     meta = {"propeller": propeller.name, "params": params_label or params.section_model,
             "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,
-            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed), "rho": float(air.rho)}
+            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed),
+            "check_seed": check_seed(int(seed)), "check_points": int(check["omega"].size), "rho": float(air.rho)}
     return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed, held)
