@@ -507,3 +507,33 @@ def test_map_out_of_another_format_says_which_suffix_the_format_takes(tmp_path, 
     code = main(["map", "apce_8x6", "--out", str(tmp_path / "a.txt")])
     err = capsys.readouterr().err
     assert code == 2 and "(or choose --format)" in err, err
+
+
+@pytest.mark.parametrize("argv", [
+    ["wrench", "{log}", "--vehicle", "{vehicle}", "--out", "{d}/w_dir/"],
+    ["fit", "flight", "{log}", "--vehicle", "{vehicle}", "--out", "{d}/newfit/"],
+    ["fit", "loads", "apce_8x6", "--out", "{d}/p/"],
+    ["map", "apce_8x6", "--out", "{d}/m/"],
+    ["export-sim", "apce_8x6", "--target", "rotorpy", "--out", "{d}/e/"],
+    ["loads", "apce_8x6", "--points", "{points}", "--out", "{d}/l/"],
+])
+def test_an_output_named_as_a_folder_that_does_not_exist_is_refused(tmp_path, capsys, shared_data, argv):
+    """`--out DIR/` for a folder that does not exist wrote a file named DIR (and DIR.report.json ...):
+    the trailing separator was dropped (user-level audit, 2026-11-26). Refused, one line, exit 2,
+    nothing written."""
+    from propmap.cli.main import main
+
+    points = tmp_path / "pts.csv"
+    points.write_text("rpm,airspeed,incidence_deg\n5000,5,90\n")
+    subs = {"{log}": str(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"), "{d}": str(tmp_path),
+            "{vehicle}": str(Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"),
+            "{points}": str(points)}
+    args = []
+    for a in argv:
+        for k, v in subs.items():
+            a = a.replace(k, v)
+        args.append(a)
+    code = main(args)
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "names a folder (it ends with '/')" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["pts.csv"]

@@ -28,17 +28,23 @@ class InputError(click.ClickException):
     exit_code = 2
 
 
+_SEPARATORS = tuple(c for c in (os.sep, os.altsep, "/") if c)
+
+
 class PathArg(click.Path):
     """``click.Path`` giving a ``pathlib.Path`` that refuses an empty or all-blank value: click
     alone turns ``--out ''`` into ``Path('.')``, the working folder (a name of blanks is a
     typing slip, not a file anyone wants)."""
 
-    def __init__(self, **kwargs) -> None:
+    def __init__(self, *, file: bool = False, **kwargs) -> None:
         super().__init__(path_type=Path, **kwargs)
+        self.file = file  # an output file: a value ending in a separator names a folder (Path() would drop it)
 
     def convert(self, value, param, ctx):
         if isinstance(value, str) and not value.strip():
             self.fail("the path is empty" if value == "" else f"the path {value!r} is only blanks", param, ctx)
+        if self.file and isinstance(value, str) and value.endswith(_SEPARATORS):
+            self.fail(f"{value} names a folder (it ends with {value[-1]!r}): give a file's name", param, ctx)
         return super().convert(value, param, ctx)
 
 
@@ -313,6 +319,8 @@ def check_outputs(outputs, inputs) -> None:
             continue
         if str(path) == "":
             raise InputError(f"{option}: the path is empty")
+        if isinstance(path, str) and path.endswith(_SEPARATORS):  # (a Path has dropped the separator)
+            raise InputError(f"{option}: {path} names a folder (it ends with {path[-1]!r}): give a file's name")
         p = Path(path)
         try:
             _check_output(option, p, ins)

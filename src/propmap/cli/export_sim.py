@@ -61,7 +61,7 @@ def parse_envelope(text: str | None, propeller):
                    "gazebo_motor_model SDF elements), gz-sim (MulticopterMotorModel SDF elements) or multinomial "
                    "(in mu and lambda_c, JSON); gazebo and gill2019 are the former names of gazebo-classic and "
                    "multinomial.")
-@click.option("--out", type=PathArg(), required=True,
+@click.option("--out", type=PathArg(file=True), required=True,
               help="Coefficient file (.py, .sdf or .json by target); a JSON report <stem>.report.json beside it.")
 @click.option("--envelope", default=None,
               help="Fit envelope rpm=A:B,airspeed=A:B,incidence_deg=A:B (default: tip speeds 50-150 m/s, "

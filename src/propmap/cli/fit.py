@@ -17,7 +17,7 @@ from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_o
 MAX_WARNINGS = 3
 
 output_options = [
-    click.option("--out", type=PathArg(), required=True, help="Parameter TOML to write."),
+    click.option("--out", type=PathArg(file=True), required=True, help="Parameter TOML to write."),
     click.option("--json", "as_json", is_flag=True, help="Print the JSON report instead of the text report."),
 ]
 fit_options = [

@@ -115,7 +115,7 @@ with_plot_options = option_group("plot", PlotChoice, plot_options)
 @click.option("--collective-deg", type=float, default=None,
               help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
                    "(the sum within [-30, 30]); stored with the map's parameters.")
-@click.option("--out", type=PathArg(), default=None,
+@click.option("--out", type=PathArg(file=True), default=None,
               help="Map file; a JSON sidecar OUT.json of its metadata is written beside it.")
 @click.option("--format", "fmt", type=click.Choice(list(FORMATS)), default="netcdf", show_default=True,
               help="netcdf (xarray Dataset), csv (long form) or c (a C99 header).")
