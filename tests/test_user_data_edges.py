@@ -7,6 +7,7 @@ start far out, a vehicle map of another propeller and shapes that do not broadca
 import math
 import shutil
 import warnings
+import os
 from pathlib import Path
 
 import numpy as np
@@ -537,3 +538,39 @@ def test_an_output_named_as_a_folder_that_does_not_exist_is_refused(tmp_path, ca
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1 and "names a folder (it ends with '/')" in err, err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pts.csv"]
+
+
+def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
+    """A read-only install run without a writable home (as nobody) ended every command with an
+    internal error, "cannot cache function ...: no locator available" (user-level audit,
+    2026-11-26): numba is then given a private folder in the temporary folder. Simulated here
+    (as root every folder is writable) by locators that find no place, in a fresh process."""
+    import subprocess
+    import sys
+    import textwrap
+
+    module = tmp_path / "tiny_kernel.py"
+    module.write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
+    code = textwrap.dedent(f"""
+        import os, sys, tempfile
+        from numba.core import caching
+        for c in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
+            c.from_function = classmethod(lambda cls, f, p: None)
+        import propmap.core._jitcache as j
+        import numba
+        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR, (j.CACHE_FALLBACK, numba.config.CACHE_DIR)
+        assert j.CACHE_FALLBACK.startswith(tempfile.gettempdir())
+        assert oct(os.stat(j.CACHE_FALLBACK).st_mode)[-3:] == "700"
+        sys.path.insert(0, {str(tmp_path)!r})
+        import tiny_kernel
+        assert tiny_kernel.twice(21) == 42
+        print("ok")
+    """)
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr[-2000:]
+    # without the fallback the same tiny kernel is refused as the audit saw
+    bare = code.replace("import propmap.core._jitcache as j", "j = None").split("assert j.CACHE_FALLBACK")[0]
+    bare += f"\nsys.path.insert(0, {str(tmp_path)!r})\nimport tiny_kernel\n"
+    out = subprocess.run([sys.executable, "-c", bare], capture_output=True, text=True, env=env, timeout=120)
+    assert out.returncode != 0 and "no locator available" in out.stderr, out.stderr[-2000:]

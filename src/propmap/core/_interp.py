@@ -31,6 +31,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from . import _jitcache  # noqa: F401 (a writable cache folder for numba before the kernels below are cached)
+
 CLIP = 0
 NAN = 1
 

@@ -17,7 +17,8 @@ each one's cache with a SHA-256 over the contents of every file it compiles in
 any of them recompiles. They are registered
 ahead of numba's own locators (numba.core.caching, an internal API); if that API is not found,
 :data:`CACHE` is False and the kernels are compiled in every process instead of risking a
-stale one.
+stale one. Where numba can write no cache folder, one in the temporary folder is given to it
+(:func:`_writable_cache`).
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ import hashlib
 import os
 from pathlib import Path
 
-__all__ = ["CACHE", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
+__all__ = ["CACHE", "CACHE_FALLBACK", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
@@ -85,5 +86,39 @@ def _install() -> bool:
     return True
 
 
+def _probe() -> None:  # a function of this folder, whose cache locations _writable_cache tries
+    pass
+
+
+def _writable_cache() -> str | None:
+    """Give numba a cache folder where it has none: where neither the package's folder nor the
+    user's cache folder can be written (a read-only install run without a home, e.g. as
+    ``nobody``: "cannot cache function ...: no locator available", an internal error of every
+    command), and NUMBA_CACHE_DIR is not set, numba's CACHE_DIR is set to
+    ``<temp folder>/propmap-numba-<uid>`` (created private). Returns the folder set, or None."""
+    import tempfile
+
+    import numba
+    from numba.core import caching
+
+    if numba.config.CACHE_DIR:
+        return None
+    for locator in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
+        try:
+            if locator.from_function(_probe, __file__) is not None:
+                return None
+        except Exception:  # noqa: BLE001 (a locator that fails is one that cannot serve)
+            continue
+    folder = os.path.join(tempfile.gettempdir(), f"propmap-numba-{os.getuid() if hasattr(os, 'getuid') else 0}")
+    try:
+        os.makedirs(folder, mode=0o700, exist_ok=True)
+    except OSError:
+        return None
+    numba.config.CACHE_DIR = folder
+    return folder
+
+
 #: whether the kernel may use numba's disk cache (only with the stamping locators installed)
 CACHE = _install()
+#: the cache folder set where numba had no writable one (None: numba's own)
+CACHE_FALLBACK = _writable_cache()
