@@ -127,3 +127,36 @@ def test_cross_validation_with_a_held_out_log_folds_over_the_training_logs(tmp_p
     cv = json.loads(text)["flight_report"]["cross_validation"]
     assert [f["log"] for f in cv["folds"]] == list(SEGMENTS[:2])
     assert all(0.05 < v < 5 for v in cv["pooled"].values()), cv["pooled"]
+
+
+def test_csv_errors_name_the_files_line_and_more_motors_are_refused(tmp_path, shared_data):
+    """An empty cell on file line 202 was reported as 'row 200' (loadtxt's count of data rows from
+    0), a NaN as 'sample 301' without its line; columns mot 5 and mot 6 of a hexacopter's CSV were
+    dropped (user-level audit, 2026-11-26)."""
+    from propmap.io.flightlog import NEUROBEM_COLUMNS
+
+    a = _array(shared_data, 0)[:400]
+    rows = [",".join(repr(float(x)) for x in r) for r in a]
+    header = ",".join(NEUROBEM_COLUMNS)
+    bad = list(rows)
+    cells = bad[200].split(",")
+    cells[4] = ""
+    bad[200] = ",".join(cells)  # data row 201: file line 203 below the header and a blank line
+    path = tmp_path / "gap.csv"
+    path.write_text("\n".join([header, "", *bad]) + "\n")
+    with pytest.raises(FlightLogError, match=r"gap.csv: line 203: not numeric \(could not convert string '' to "
+                                             r"float64, column 5\)"):
+        read_flight_log(path)
+    cells[4] = "nan"
+    bad[200] = ",".join(cells)
+    path.write_text("\n".join([header, *bad]) + "\n")
+    with pytest.raises(FlightLogError, match=r"sample 201 \(line 202\), column 'ang vel x': not a finite number"):
+        read_flight_log(path)
+    path = tmp_path / "hexa.csv"
+    path.write_text("\n".join([header + ",mot 5,mot 6", *(r + ",1000.0,1000.0" for r in rows)]) + "\n")
+    with pytest.raises(FlightLogError, match=r"column\(s\) mot 5, mot 6: the NeuroBEM layout carries 4 motor speeds"):
+        read_flight_log(path)
+    folder = tmp_path / "logs"
+    folder.mkdir()
+    with pytest.raises(FlightLogError, match="logs: a folder, not a flight log"):
+        read_flight_log(folder)

@@ -213,10 +213,16 @@ def check_section_match(propeller, label: str) -> None:
 def refuse_copies(paths, option: str, consequence: str) -> None:
     """Refuse a file given twice under two names: the same file (a symbolic or a hard link) or a
     byte-identical copy (SHA-256; only files that share a size are read), as ``option: X is the
-    same file as Y: <consequence>``."""
+    same file as Y: <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
     import hashlib
 
-    stats = [(p, os.stat(p)) for p in paths]
+    stats = []
+    for p in paths:
+        try:
+            stats.append((p, os.stat(p)))
+        except OSError as exc:  # (named as the option's, as its reader would)
+            why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
+            raise InputError(f"{option}: {_short(str(p))}: {why}") from None
     sizes = [st.st_size for _, st in stats]
     seen: dict = {}
     for p, st in stats:

@@ -197,8 +197,10 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         if not isinstance(log, FlightLog):
             raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
         if log.n_motors != n_rot:
+            layout = ("; the NeuroBEM layout carries 4 motors, a vehicle of more rotors needs a PX4 ULog"
+                      if log.format == "neurobem" and n_rot > 4 else "")
             raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
-                             "vehicle file lists its rotors in the log's motor order)")
+                             f"vehicle file lists its rotors in the log's motor order{layout})")
         step = max(1, int(round(log.rate_hz / rate_hz)))
         rates.append(log.rate_hz / step)
         wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(

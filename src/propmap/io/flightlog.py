@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -185,6 +186,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     p = Path(path)
     name = show_path(p)
     fmt = format
+    if p.is_dir():
+        raise FlightLogError(f"{name}: a folder, not a flight log (give its log files)")
     if fmt is None:
         fmt = {".mat": "neurobem", ".csv": "neurobem", ".ulg": "ulog"}.get(p.suffix.lower())
         if fmt is None:
@@ -199,7 +202,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     elif p.suffix.lower() == ".mat":
         log = _neurobem(_mat_array(raw, name), p, name)
     else:
-        log = _neurobem(_csv_array(raw, p, name), p, name)
+        arr, lines = _csv_array(raw, p, name)
+        log = _neurobem(arr, p, name, lines)
     _check(log, name)
     return log
 
@@ -249,14 +253,25 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
         if missing:
             raise FlightLogError(f"{name}: header lacks the NeuroBEM column(s) {', '.join(missing[:6])}"
                                  f"{' ...' if len(missing) > 6 else ''}; found {', '.join(head)[:200]}") from None
+        more = [c for c in head if re.fullmatch(r"d?mot \d+", c) and c not in NEUROBEM_COLUMNS]
+        if more:  # (read as the layout, they would be dropped: a hexacopter fitted as a quadrotor)
+            raise FlightLogError(f"{name}: column(s) {', '.join(more[:4])}: the NeuroBEM layout carries 4 motor "
+                                 "speeds (mot 1-4); a vehicle of more rotors needs a PX4 ULog") from None
         dup = sorted({c for c in head if head.count(c) > 1 and c in NEUROBEM_COLUMNS})
         if dup:
             raise FlightLogError(f"{name}: column(s) {', '.join(dup)} appear twice in the header") from None
         order = [head.index(c) if c in head else -1 for c in NEUROBEM_COLUMNS]
+    # the data lines with their numbers in the file (1-based), so that an error names the file's line
+    numbered = [(k + 1, line) for k, line in enumerate(lines) if k >= skip and line.strip()
+                and not line.lstrip().startswith("#")]
     try:
-        a = np.loadtxt(io.StringIO("\n".join(lines[skip:])), delimiter=",", ndmin=2)
+        a = np.loadtxt(io.StringIO("\n".join(line for _, line in numbered)), delimiter=",", ndmin=2, comments=None)
     except ValueError as exc:
         msg = str(exc).splitlines()[0][:160]
+        row = re.search(r" at row (\d+)", msg)
+        if row and int(row.group(1)) < len(numbered):
+            raise FlightLogError(f"{name}: line {numbered[int(row.group(1))][0]}: not numeric "
+                                 f"({msg.replace(row.group(0), '').rstrip('.')})") from None
         raise FlightLogError(f"{name}: not a numeric CSV after line {skip} ({msg})") from None
     if a.shape[1] <= max(order) or (skip == first and a.shape[1] != len(NEUROBEM_COLUMNS)):
         # without a header the columns are the layout's by position: another count (an index column) shifts them
@@ -266,16 +281,18 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     for k, j in enumerate(order):
         if j >= 0:
             out[:, k] = a[:, j]
-    return out
+    return out, [n for n, _ in numbered]
 
 
-def _neurobem(a: np.ndarray, p: Path, name: str) -> FlightLog:
+def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
+    """The NeuroBEM array ``a`` as a FlightLog (``lines``: each sample's line in a CSV, for messages)."""
     if a.shape[0] < MIN_SAMPLES:
         raise FlightLogError(f"{name}: {a.shape[0]} sample(s); a log needs at least {MIN_SAMPLES}")
     core = a[:, :29]
     if not np.all(np.isfinite(core)):
         i, j = np.argwhere(~np.isfinite(core))[0]
-        raise FlightLogError(f"{name}: sample {i + 1}, column {NEUROBEM_COLUMNS[j]!r}: not a finite number")
+        at = "" if lines is None else f" (line {lines[i]})"
+        raise FlightLogError(f"{name}: sample {i + 1}{at}, column {NEUROBEM_COLUMNS[j]!r}: not a finite number")
     ref = a[:, 29:35]
     has_ref = bool(np.all(np.isfinite(ref)))
     return FlightLog(
