@@ -7,6 +7,7 @@ Loads are propmap's own (the calibrated apce_8x6 set, UIUC vol. 1, Brandt & Seli
 2011-1255), labelled as such: these tests check what is read, not the model.
 """
 
+import json
 import math
 import re
 import shutil
@@ -247,6 +248,10 @@ def test_ground_samples_and_a_logged_stop_are_left_out_with_a_warning(tmp_path, 
     code, out, err = run(capsys, "wrench", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out", tmp_path / "w.csv")
     assert code == 0 and "400 sample(s) on the ground left out" in err
     assert out.startswith(f"{len(slow_rows)} samples of ground.csv (400 left out: a rotor stopped or the vehicle on")
+    code, out, err = run(capsys, "wrench", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out", tmp_path / "w.csv",
+                         "--json")
+    report = json.loads(out)  # (the JSON said how many samples were kept, not how many were left out)
+    assert code == 0 and report["samples"] == len(slow_rows) and report["left_out"] == 400
     code, _, err = run(capsys, "fit", "flight", tmp_path / "ground.csv", "--vehicle", VEHICLE, "--out",
                        tmp_path / "p.toml", "--rate-hz", "100")
     assert code == 0 and "on the ground left out" in err  # (fit flight said nothing before)

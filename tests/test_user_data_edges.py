@@ -574,3 +574,29 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
     bare += f"\nsys.path.insert(0, {str(tmp_path)!r})\nimport tiny_kernel\n"
     out = subprocess.run([sys.executable, "-c", bare], capture_output=True, text=True, env=env, timeout=120)
     assert out.returncode != 0 and "no locator available" in out.stderr, out.stderr[-2000:]
+
+
+@pytest.mark.parametrize("change, match", [
+    (("position = [-0.078, -0.100, -0.027]", "position = [-78.0, -100.0, -27.0]"),
+     r"rotor 1's hub lies 129.7 m from the centre of mass, 2e\+03 of its radii: are the positions in metres\?"),
+    (("inertia = [0.0025, 0.0021, 0.0043]", "inertia = [25000.0, 21000.0, 43000.0]"),
+     r"largest principal moment is 3.31e\+06 times the mass .* is it in kg m\^2\?"),
+    (("position = [-0.078, -0.100, -0.027]", "position = [0.078, -0.100, -0.027]"),
+     r"rotors 1 and 2 have the same position \[0.078, -0.1, -0.027\] m"),
+])
+def test_a_vehicle_layout_in_other_units_is_warned_about(tmp_path, change, match):
+    """Arms in mm, an inertia in g cm^2 and two rotors at one place were read without a word and
+    made every moment wrong (moment errors of 47 N m; user-level audit, 2026-11-26)."""
+    import warnings
+
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    for f in examples.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    text = (examples / "neurobem_quadrotor.toml").read_text()
+    assert change[0] in text
+    (tmp_path / "v.toml").write_text(text.replace(change[0], change[1], 1))
+    with pytest.warns(UserWarning, match=match):
+        pm.read_vehicle(tmp_path / "v.toml")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.read_vehicle(examples / "neurobem_quadrotor.toml")

@@ -439,7 +439,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     if as_json:
         import json
 
-        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n}, indent=2))
+        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n,
+                               "left_out": log.n - samples.n}, indent=2))
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "

@@ -257,7 +257,10 @@ def read_vehicle(path) -> Vehicle:
     Warns
     -----
     UserWarning
-        As :func:`propmap.io.geometry_files.read_uiuc_geometry` for a rotor's geometry file.
+        As :func:`propmap.io.geometry_files.read_uiuc_geometry` for a rotor's geometry file; a
+        rotor more than ARM_RADII_MAX of its radii from the centre of mass (positions in mm?),
+        two rotors at one position, an inertia whose largest principal moment lies outside
+        INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?).
     """
     path = Path(path)
     name = show_path(path)
@@ -311,8 +314,47 @@ def read_vehicle(path) -> Vehicle:
         j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
         rotors.append(Rotor(position, axis, spin, prop, params=params, inertia=j_r))  # (Rotor normalises the axis)
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
+    _warn_implausible(name, rotors, mass, inertia, cg)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
+
+
+#: a rotor farther from the centre of mass than this many of its radii is warned about (a multirotor's arms are
+#: 1-3 radii long: the NeuroBEM quadrotor's 2.0; positions in mm read as m are 1000 times that)
+ARM_RADII_MAX = 10.0
+#: the inertia's largest principal moment is warned about outside these multiples of mass x (largest arm)^2 (a
+#: quadrotor's 0.2-0.6: the NeuroBEM vehicle's 0.35; an inertia in g cm^2 is 1e7 times kg m^2)
+INERTIA_ARM_RANGE = (1e-3, 10.0)
+
+
+def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
+    """Warn about a layout in other units than the file's (ARM_RADII_MAX, INERTIA_ARM_RANGE) and
+    rotors at one position: read as given, they make every moment wrong without an error."""
+    import warnings
+
+    arms = [float(np.linalg.norm(r.position - cg)) for r in rotors]
+    far = False
+    for k, (r, arm) in enumerate(zip(rotors, arms), start=1):
+        if arm > ARM_RADII_MAX * r.propeller.radius:
+            far = True
+            warnings.warn(f"{name}: rotor {k}'s hub lies {arm:.4g} m from the centre of mass, "
+                          f"{arm / r.propeller.radius:.3g} of its radii: are the positions in metres?", UserWarning,
+                          stacklevel=3)
+            break
+    for k in range(len(rotors)):
+        for j in range(k + 1, len(rotors)):
+            if np.array_equal(rotors[k].position, rotors[j].position):
+                warnings.warn(f"{name}: rotors {k + 1} and {j + 1} have the same position "
+                              f"{rotors[k].position.tolist()} m (a coaxial pair lies apart along its axis)",
+                              UserWarning, stacklevel=3)
+    reach = max(arms)
+    if inertia is not None and reach > 0 and not far:  # (beside arms in other units, the inertia's ratio says nothing)
+        ratio = float(np.max(np.linalg.eigvalsh(inertia))) / (mass * reach**2)
+        lo, hi = INERTIA_ARM_RANGE
+        if not lo <= ratio <= hi:
+            warnings.warn(f"{name}: the inertia's largest principal moment is {ratio:.3g} times the mass times the "
+                          f"largest arm squared ({mass:g} kg x ({reach:.4g} m)^2), where a multirotor's is "
+                          "0.2-0.6: is it in kg m^2?", UserWarning, stacklevel=3)
 
 
 def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
