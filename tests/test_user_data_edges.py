@@ -600,3 +600,21 @@ def test_a_vehicle_layout_in_other_units_is_warned_about(tmp_path, change, match
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         pm.read_vehicle(examples / "neurobem_quadrotor.toml")
+
+
+def test_a_c_headers_sidecar_says_its_interpolation_table_type_and_prefix(tmp_path, capsys):
+    """The sidecar of a C header carried the map's attributes only, not what the header chose
+    (user-level audit, 2026-11-26)."""
+    import json
+
+    from propmap.cli.main import main
+
+    out = tmp_path / "rotor.h"
+    code = main(["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:90:3",
+                 "--check-points", "0", "--format", "c", "--c-interpolation", "cubic", "--c-type", "double",
+                 "--out", str(out)])
+    assert code == 0, capsys.readouterr().err
+    side = json.loads((tmp_path / "rotor.h.json").read_text())
+    attrs = side.get("attrs", side)
+    assert (attrs["c_interpolation"], attrs["c_type"], attrs["c_prefix"]) == ("cubic", "double", "pm_rotor")
+    assert "int pm_rotor_loads(double omega" in out.read_text()

@@ -270,6 +270,11 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                                      name=c_header.c_name, vehicle=veh)
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
+            from ..export_c import c_prefix
+
+            # the sidecar describes the header: its interpolation, table type and identifiers' prefix
+            ds.attrs.update(c_interpolation=c_header.c_interpolation, c_type=c_header.c_type,
+                            c_prefix=c_prefix(out, c_header.c_name))
             files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text, encoding="utf-8"))
         else:
             files = write_map(ds, out, fmt)
