@@ -618,3 +618,22 @@ def test_a_c_headers_sidecar_says_its_interpolation_table_type_and_prefix(tmp_pa
     attrs = side.get("attrs", side)
     assert (attrs["c_interpolation"], attrs["c_type"], attrs["c_prefix"]) == ("cubic", "double", "pm_rotor")
     assert "int pm_rotor_loads(double omega" in out.read_text()
+
+
+@pytest.mark.parametrize("argv, said", [
+    (["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:3.14:5",
+      "--check-points", "0", "--out", "{d}/m.nc"], "--incidence-deg: the incidences end at 3.14 deg: radians?"),
+    (["export-sim", "apce_8x6", "--target", "multinomial", "--envelope", "incidence_deg=0:1.5708", "--points", "200",
+      "--out", "{d}/e.json"], "--envelope incidence_deg: the incidences end at 1.5708 deg: radians?"),
+])
+def test_an_incidence_range_ending_at_pi_is_warned_about_as_radians(tmp_path, capsys, argv, said):
+    """`--incidence-deg 0:3.14:5` built a map of 0-3.14 deg without a word (user-level audit,
+    2026-11-26); 0:90:7 and 0:3:4 are believed."""
+    from propmap.cli.main import main
+
+    code = main([a.replace("{d}", str(tmp_path)) for a in argv])
+    err = capsys.readouterr().err
+    assert code == 0 and said in err, err
+    code = main(["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:3:4",
+                 "--check-points", "0", "--out", str(tmp_path / "w.nc")])
+    assert code == 0 and "radians?" not in capsys.readouterr().err

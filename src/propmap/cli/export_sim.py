@@ -48,6 +48,10 @@ def parse_envelope(text: str | None, propeller):
         except ValueError:
             raise InputError(f"--envelope: {part.strip()!r}: LOW and HIGH must be numbers") from None
         changes[key] = (lo, hi)
+    if "incidence_deg" in changes:
+        from .map import radians_note
+
+        radians_note("--envelope incidence_deg", changes["incidence_deg"][1])
     try:
         return replace(env, **changes)
     except ValueError as exc:

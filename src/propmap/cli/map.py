@@ -48,6 +48,14 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
     return np.geomspace(a, b, n) if log else np.linspace(a, b, n)
 
 
+def radians_note(option: str, stop: float) -> None:
+    """Warn where an incidence range in degrees ends at pi / 2 or pi to 2-5 digits (1.57, 3.14,
+    3.1416: radians typed into a degrees option); a whole number of degrees is believed."""
+    if stop != round(stop) and any(abs(stop - k * math.pi / 2) < 0.005 for k in (1, 2)):
+        warn(f"{option}: the incidences end at {stop:g} deg: radians? ({stop:g} rad = {math.degrees(stop):.4g} deg; "
+             "the option takes degrees)")
+
+
 @dataclass(frozen=True)
 class MapAxes:
     """The grid's axes as given: --rpm, --airspeed [m/s], --incidence-deg, each
@@ -294,6 +302,7 @@ def _axes(propeller, axes: MapAxes, n_props: int = 1):
         V = parse_axis("--airspeed", axes.airspeed_axis, 0.0, 500.0, "m/s")
     if axes.incidence_axis is not None:
         inc = parse_axis("--incidence-deg", axes.incidence_axis, 0.0, 180.0, "deg")
+        radians_note("--incidence-deg", float(inc[-1]))
     n = rpm.size * V.size * inc.size
     if n * n_props > MAX_NODES:
         each = f" for each of {n_props} propellers" if n_props > 1 else ""
