@@ -70,14 +70,6 @@ def test_a_log_in_other_units_or_frames_is_refused_naming_the_cause(tmp_path, sh
         read_flight_log(_write(tmp_path, a))
 
 
-def test_a_hovering_log_is_not_judged_on_its_rates(tmp_path, shared_data):
-    """The hover segment turns at 0.05 rad/s rms, where the attitude's noise rules (the rates'
-    ratio to it is 0.71): its rates are not judged, so deg/s there are not caught (stated)."""
-    a = _array(shared_data, 2)
-    a[:, 4:7] *= 180 / math.pi
-    assert read_flight_log(_write(tmp_path, a)).n == a.shape[0]
-
-
 @pytest.mark.parametrize("mass_scale, omega_scale, ratio", [(1000.0, 1.0, r"0\.0\d"), (1.0, 1 / (2 * math.pi),
                                                                                         r"0\.1\d")])
 def test_a_mass_in_grams_or_motor_speeds_in_rev_per_s_is_refused(tmp_path, shared_data, mass_scale, omega_scale,
@@ -156,6 +148,14 @@ def test_csv_errors_name_the_files_line_and_more_motors_are_refused(tmp_path, sh
     path.write_text("\n".join([header + ",mot 5,mot 6", *(r + ",1000.0,1000.0" for r in rows)]) + "\n")
     with pytest.raises(FlightLogError, match=r"column\(s\) mot 5, mot 6: the NeuroBEM layout carries 4 motor speeds"):
         read_flight_log(path)
+    short = list(rows)
+    short[10] = ",".join(short[10].split(",")[:40])
+    path = tmp_path / "short.csv"
+    path.write_text("\n".join([header, *short]) + "\n")
+    with pytest.raises(FlightLogError, match=r"short.csv: line 12 has 40 columns where the data's first line has 41"):
+        read_flight_log(path)
+    path.write_text("\n".join([header, "# a note", *(r + "  # ok" for r in rows)]) + "\n")
+    assert read_flight_log(path).n == len(rows)  # (comment lines and trailing comments, as before)
     folder = tmp_path / "logs"
     folder.mkdir()
     with pytest.raises(FlightLogError, match="logs: a folder, not a flight log"):

@@ -517,6 +517,7 @@ def test_map_out_of_another_format_says_which_suffix_the_format_takes(tmp_path, 
     ["map", "apce_8x6", "--out", "{d}/m/"],
     ["export-sim", "apce_8x6", "--target", "rotorpy", "--out", "{d}/e/"],
     ["loads", "apce_8x6", "--points", "{points}", "--out", "{d}/l/"],
+    ["validate", "apce_8x6", "--figure", "{d}/v/x.png/"],
 ])
 def test_an_output_named_as_a_folder_that_does_not_exist_is_refused(tmp_path, capsys, shared_data, argv):
     """`--out DIR/` for a folder that does not exist wrote a file named DIR (and DIR.report.json ...):
@@ -543,8 +544,9 @@ def test_an_output_named_as_a_folder_that_does_not_exist_is_refused(tmp_path, ca
 def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
     """A read-only install run without a writable home (as nobody) ended every command with an
     internal error, "cannot cache function ...: no locator available" (user-level audit,
-    2026-11-26): numba is then given a private folder in the temporary folder. Simulated here
-    (as root every folder is writable) by locators that find no place, in a fresh process."""
+    2026-11-26): numba is then given a private folder in the temporary folder (here tmp_path),
+    never one another user can write (numba's index is a pickle). Simulated (as root every
+    folder is writable) by locators that find no place, in fresh processes."""
     import subprocess
     import sys
     import textwrap
@@ -558,17 +560,24 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
             c.from_function = classmethod(lambda cls, f, p: None)
         import propmap.core._jitcache as j
         import numba
-        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR, (j.CACHE_FALLBACK, numba.config.CACHE_DIR)
-        assert j.CACHE_FALLBACK.startswith(tempfile.gettempdir())
+        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"]
+        assert os.path.dirname(j.CACHE_FALLBACK) == {str(tmp_path)!r}
         assert oct(os.stat(j.CACHE_FALLBACK).st_mode)[-3:] == "700"
         sys.path.insert(0, {str(tmp_path)!r})
         import tiny_kernel
         assert tiny_kernel.twice(21) == 42
-        print("ok")
+        print(os.path.basename(j.CACHE_FALLBACK))
     """)
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env["TMPDIR"] = str(tmp_path)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
-    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr[-2000:]
+    assert out.returncode == 0 and out.stdout.strip() == f"propmap-numba-{os.getuid()}", out.stderr[-2000:]
+    # a folder of that name that others may write is not used: a new private one instead
+    shared = tmp_path / f"propmap-numba-{os.getuid()}"
+    shared.chmod(0o777)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert out.returncode == 0 and out.stdout.strip().startswith("propmap-numba-"), out.stderr[-2000:]
+    assert out.stdout.strip() != shared.name
     # without the fallback the same tiny kernel is refused as the audit saw
     bare = code.replace("import propmap.core._jitcache as j", "j = None").split("assert j.CACHE_FALLBACK")[0]
     bare += f"\nsys.path.insert(0, {str(tmp_path)!r})\nimport tiny_kernel\n"
@@ -580,7 +589,7 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
     (("position = [-0.078, -0.100, -0.027]", "position = [-78.0, -100.0, -27.0]"),
      r"rotor 1's hub lies 129.7 m from the centre of mass, 2e\+03 of its radii: are the positions in metres\?"),
     (("inertia = [0.0025, 0.0021, 0.0043]", "inertia = [25000.0, 21000.0, 43000.0]"),
-     r"largest principal moment is 3.31e\+06 times the mass .* is it in kg m\^2\?"),
+     r"largest principal moment is 3.31e\+06 times the mass .* is the mass in kg and the inertia in kg m\^2\?"),
     (("position = [-0.078, -0.100, -0.027]", "position = [0.078, -0.100, -0.027]"),
      r"rotors 1 and 2 have the same position \[0.078, -0.1, -0.027\] m"),
 ])

@@ -16,7 +16,7 @@ static CT over the other sweeps). "chosen" takes each propeller's K of least tra
 (what a fit freeing K would find, to the grid's resolution), "oracle" the K of least held-out
 error (not available to a user: the ceiling), "fixed" one K for every propeller.
 
-    .venv/bin/python tools/washout_fit.py omega      # about 90 s on 2 cores
+    .venv/bin/python tools/washout_fit.py omega      # about 150 s on 2 cores
     .venv/bin/python tools/washout_fit.py airspeed
 
 Findings (2026-11-26): docs/validation.md, "Flexible and thin-section propellers".
@@ -90,4 +90,7 @@ def main(law: str) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "omega")
+    law = sys.argv[1] if len(sys.argv) > 1 else "omega"
+    if law not in ("omega", "airspeed"):
+        sys.exit(f"washout_fit.py: the law must be omega or airspeed, got {law!r}")
+    main(law)

@@ -24,8 +24,8 @@ __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "
 
 RPM = 2 * math.pi / 60  # rad/s per rpm
 POLICIES = ("raise", "clip", "nan")
-#: :meth:`RotorMap.wrench` refuses a velocity component this large or larger [m/s] (no airspeed: its force and
-#: moment vectors would overflow), as the C header's wrench does
+#: :meth:`RotorMap.wrench` refuses a velocity component this large or larger [m/s], as the C header does
+#: (core.vector.VELOCITY_MAX, not imported: that module loads the solver, 0.3 s of a map's import)
 VELOCITY_MAX = 1e150
 #: interpolation methods of RotorMap and of the C export
 INTERPOLATIONS = ("linear", "cubic")

@@ -122,17 +122,19 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                 check_rotorpy_vehicle(veh)
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
-        def shown(p):  # (a name alone does not tell two readings of one geometry file apart)
-            return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades)"
+        def shown(p, rotor=True):  # (a name alone does not tell two readings of one geometry file apart)
+            same = rotor and p.n_blades == propeller.n_blades and abs(p.diameter / propeller.diameter - 1) < 5e-5
+            return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades{', another chord or blade angle' * same})"
 
         names = sorted({shown(r.propeller) for r in veh.rotors if not r.propeller.same_geometry(propeller)})
         if names and hover_rpm is None:
             # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
-            raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller)}, so it cannot "
-                             f"pin {propeller.name}'s hover rpm: export the vehicle's propeller, or give --hover-rpm")
+            raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}, so it "
+                             f"cannot pin {propeller.name}'s hover rpm: export the vehicle's propeller, or give "
+                             "--hover-rpm")
         if names:
-            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller)}: the export gives "
-                          f"{propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
+            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}: the export "
+                          f"gives {propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
                           stacklevel=1)
         if hover_rpm is None:
             hover_from = "--vehicle (its hover rpm)"

@@ -45,7 +45,7 @@ def print_table(v) -> None:
 @click.option("--out-dir", type=PathArg(), default=None,
               help="With --all: folder for the tables (CSV, JSON) and figures (default: none written).")
 @click.option("--json", "as_json", is_flag=True, help="Print the errors as JSON.")
-@click.option("--figure", type=PathArg(), default=None,
+@click.option("--figure", type=PathArg(file=True), default=None,
               help="A catalogue PROP: figure (.png, .pdf or .svg) of the model against the measurements (default: "
                    "none written).")
 @with_air_options

@@ -94,26 +94,42 @@ def _writable_cache() -> str | None:
     """Give numba a cache folder where it has none: where neither the package's folder nor the
     user's cache folder can be written (a read-only install run without a home, e.g. as
     ``nobody``: "cannot cache function ...: no locator available", an internal error of every
-    command), and NUMBA_CACHE_DIR is not set, numba's CACHE_DIR is set to
-    ``<temp folder>/propmap-numba-<uid>`` (created private). Returns the folder set, or None."""
+    command), and NUMBA_CACHE_DIR is not set, NUMBA_CACHE_DIR (the environment's, which numba
+    reads again when its configuration is reloaded, and numba's CACHE_DIR) is set to
+    ``<temp folder>/propmap-numba-<uid>``, a folder of this user's only (created mode 700; one
+    that exists is used only where it is this user's, not a link, and private: numba's cache
+    index is a pickle, so a folder another user can write is never used), else to a new private
+    folder (tempfile.mkdtemp). Returns the folder set, or None (numba's own locations serve, or
+    numba's internals are not the ones known: the kernels then fail as numba says)."""
+    import stat
     import tempfile
 
-    import numba
-    from numba.core import caching
+    try:
+        import numba
+        from numba.core import caching
 
-    if numba.config.CACHE_DIR:
+        if numba.config.CACHE_DIR:
+            return None
+        for locator in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
+            try:
+                if locator.from_function(_probe, __file__) is not None:
+                    return None
+            except Exception:  # noqa: BLE001 (a locator that fails is one that cannot serve)
+                continue
+    except (ImportError, AttributeError):
         return None
-    for locator in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
-        try:
-            if locator.from_function(_probe, __file__) is not None:
-                return None
-        except Exception:  # noqa: BLE001 (a locator that fails is one that cannot serve)
-            continue
-    folder = os.path.join(tempfile.gettempdir(), f"propmap-numba-{os.getuid() if hasattr(os, 'getuid') else 0}")
+    uid = os.getuid() if hasattr(os, "getuid") else None
+    folder = os.path.join(tempfile.gettempdir(), f"propmap-numba-{uid if uid is not None else 'user'}")
     try:
         os.makedirs(folder, mode=0o700, exist_ok=True)
+        st = os.lstat(folder)
+        private = (stat.S_ISDIR(st.st_mode) and (uid is None or st.st_uid == uid)
+                   and not st.st_mode & (stat.S_IRWXG | stat.S_IRWXO))
+        if not private:
+            folder = tempfile.mkdtemp(prefix="propmap-numba-")
     except OSError:
         return None
+    os.environ["NUMBA_CACHE_DIR"] = folder
     numba.config.CACHE_DIR = folder
     return folder
 

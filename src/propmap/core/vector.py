@@ -21,6 +21,11 @@ from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_mo
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
 
+#: a hub velocity component this large or larger [m/s] is no airspeed: the one-point path leaves it to the array
+#: path's checks, and the maps' wrench (RotorMap, VehicleMap) and the C header refuse it (its force and moment
+#: vectors would overflow)
+VELOCITY_MAX = 1e150
+
 
 #: what ``rotor_loads`` differentiates for the velocity vector's Jacobian: the airspeed, the incidence and, at
 #: the points at rest, the slopes along three rays from the same roots (:func:`still_air_slopes`)
@@ -229,7 +234,7 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     Vv, zv = _plain3(velocity), _plain3(axis)
     if Vv is None or zv is None or not _plain_number(omega) or not isinstance(spin, (str, int, float)):
         return None
-    if not all(math.isfinite(c) for c in zv) or not all(abs(c) < 1e150 for c in Vv):
+    if not all(math.isfinite(c) for c in zv) or not all(abs(c) < VELOCITY_MAX for c in Vv):
         return None  # (the array path names a non-finite axis or velocity; a huge one is no airspeed)
     if max(abs(c) for c in zv) == 0.0:
         raise ValueError("axis must be non-zero")

@@ -5,6 +5,7 @@ M = I dw/dt + w x I w at a chosen rate, and the rotor speeds through the motors'
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -20,7 +21,7 @@ OMEGA_STOPPED = 1.0
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
 #: the accelerometer reading g (within 20%) while its rotors' rms speed is below GROUND_FRACTION of the hover speed
 #: (about half the weight or less, so that in flight the accelerometer would read 0.6 g or less: idling or spooling
-#: up), the hover speed the generic set's of the vehicle (else the log's median rms rotor speed)
+#: up), the hover speed the log's own (_log_hover) where it lies within HOVER_RANGE of the generic set's, else that
 GROUND_FRACTION = 0.7
 #: a log whose rotors' rms speed stays below HOVER_RANGE[0] of the vehicle's hover speed (in its 95th percentile), or
 #: runs above HOVER_RANGE[1] of it in the median, is refused: a mass in grams, motor speeds in rev/s (the generic
@@ -215,7 +216,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
             raise ValueError(f"{log.name}: motor {i + 1} runs at {om99[i]:.0f} rad/s (99th percentile), a tip speed "
                              f"of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: {cause} "
                              "(docs/flight.md)")
-        _check_hover(log, vehicle, hover)
+        reference = _ground_reference(log, hover)
         sl = slice(None, None, step)
         om_full, omdot_full = _lagged(log, tau)
         om = om_full[sl]
@@ -223,8 +224,9 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         logged = log.rotor_omega[sl]
         stopped = ~(np.all(om >= OMEGA_STOPPED, axis=1) & np.all(logged >= OMEGA_STOPPED, axis=1))
         ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
-                                       stopped, hover)
+                                       stopped, reference)
         keep = ~(stopped | ground)
+        _check_hover(log, logged[keep], vehicle, hover)
         if stopped.any():
             notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
                          "rad/s, logged or through the motor lag) left out")
@@ -259,9 +261,9 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
 def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover) -> np.ndarray:
     """Samples where the ground carries the vehicle (GROUND_FRACTION, GROUND_SPEED, GROUND_RATE):
     standing still with the accelerometer reading g (within 20%) [m/s^2] while the rotors' rms
-    speed is below GROUND_FRACTION of ``hover`` [rad/s] (the model's hover speed; where that is
-    0, the running samples' median rms speed): rotors idling or spooling up, which cannot carry
-    half the weight."""
+    speed is below GROUND_FRACTION of ``hover`` [rad/s] (:func:`_ground_reference`; where that
+    is 0, the running samples' median rms speed): rotors idling or spooling up, which cannot
+    carry half the weight."""
     g = 9.80665
     rms = np.sqrt(np.mean(omega**2, axis=1))
     running = ~stopped
@@ -274,19 +276,47 @@ def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover
     return still & (np.abs(f - g) < 0.2 * g) & (rms < GROUND_FRACTION * reference)
 
 
-def _check_hover(log: FlightLog, vehicle: Vehicle, hover: float) -> None:
-    """Refuse a log whose running rotors' rms speed is far from the vehicle's hover speed
-    ``hover`` [rad/s] (HOVER_RANGE; not judged where that is 0)."""
+def _log_hover(log: FlightLog) -> float:
+    """The log's own hover speed [rad/s]: the rms rotor speed at which the rotors would carry the
+    vehicle, from the accelerometer's reading |f| against sum_i Omega_i^2 in the fastest quarter
+    of the running samples (in flight |f| m = k sum_i Omega_i^2, whatever the mass; on the ground
+    the reading is g at any speed, so the fastest samples are the flight's): sqrt(g / (n k)). 0
+    without running samples."""
     running = np.all(log.rotor_omega >= OMEGA_STOPPED, axis=1)
-    if hover <= 0 or not running.any():
+    if not running.any():
+        return 0.0
+    sq = np.sum(log.rotor_omega[running] ** 2, axis=1)
+    fast = sq >= np.percentile(sq, 75)
+    k = float(np.median(np.linalg.norm(log.specific_force[running][fast], axis=1) / sq[fast]))
+    return math.sqrt(9.80665 / (log.n_motors * k)) if k > 0 else 0.0
+
+
+def _ground_reference(log: FlightLog, hover: float) -> float:
+    """The hover speed the ground rule compares with [rad/s]: the log's own (:func:`_log_hover`)
+    where it lies within HOVER_RANGE of the model's ``hover`` (the generic set's, 1.16 times the
+    NeuroBEM logs' own), else the model's (a log all on the ground, or a mass in other units,
+    which :func:`_check_hover` then refuses); the log's own where the model gives none."""
+    own = _log_hover(log)
+    if hover <= 0:
+        return own
+    return own if HOVER_RANGE[0] * hover <= own <= HOVER_RANGE[1] * hover else hover
+
+
+def _check_hover(log: FlightLog, omega, vehicle: Vehicle, hover: float) -> None:
+    """Refuse a log whose kept samples' rms rotor speed (``omega``, shape (N, n_rotors) [rad/s],
+    neither stopped nor on the ground) is far from the vehicle's hover speed ``hover`` [rad/s]
+    (HOVER_RANGE; not judged where that is 0)."""
+    if hover <= 0 or not len(omega):
         return
-    rms = np.sqrt(np.mean(log.rotor_omega[running] ** 2, axis=1))
+    rms = np.sqrt(np.mean(np.asarray(omega) ** 2, axis=1))
     high, median = float(np.percentile(rms, 95)), float(np.median(rms))
     if high < HOVER_RANGE[0] * hover or median > HOVER_RANGE[1] * hover:
+        units = ("are the motor speeds in rad/s (not rev/s)" if log.format != "ulog" else
+                 "are the ESC rpm mechanical (electrical rpm is pole pairs times it) or the --motor-map right")
         raise ValueError(f"{log.name}: the rotors' rms speed is {median:.4g} rad/s in the median and {high:.4g} in "
                          f"its 95th percentile, {median / hover:.2g} and {high / hover:.2g} times the vehicle's hover "
                          f"speed {hover:.4g} rad/s (its mass {vehicle.mass:g} kg, the generic set): is the mass in kg "
-                         "and are the motor speeds in rad/s (not rev/s)? (docs/flight.md)")
+                         f"and {units}? (docs/flight.md)")
 
 
 #: the rotor speeds [rad/s] at which _hover_speed evaluates the static thrust, one batch (steps of 16%)

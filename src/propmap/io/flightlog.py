@@ -63,15 +63,20 @@ MIN_SAMPLES = 2
 G = 9.80665  # [m/s^2]
 #: the attitude quaternion's norm may differ from 1 by this (a logged one is normalised to about 1e-3)
 QUAT_TOLERANCE = 0.05
-#: the accelerometer's mean upward reading must lie within these fractions of g plus the log's mean vertical
-#: acceleration (the four NeuroBEM segments: 0.9998-1.0006); accelerations in g read 0.10, without gravity about 0,
-#: in a z-down frame -1
-GRAVITY_RANGE = (0.8, 1.25)
-#: the rates are judged against the attitude's change where that turns at this rms or more [rad/s] (the NeuroBEM
-#: segments: ratios 0.996-1.022 at 0.36-1.11 rad/s; 0.71 in hover, at 0.05 rad/s, where the attitude's noise rules)
+#: the accelerometer's time-mean upward reading must lie within this fraction of g (plus three standard errors of
+#: the mean) of g plus the log's mean vertical acceleration (the four NeuroBEM segments: within 0.006 m/s^2);
+#: accelerations in g read 0.10 g, without gravity about 0, in a z-down frame -g; judged over logs of
+#: GRAVITY_JUDGED s or more (a short window of a flip is all acceleration)
+GRAVITY_TOLERANCE = 0.2
+GRAVITY_JUDGED = 1.0  # [s]
+#: the rates are judged against the attitude's change over RATE_WINDOW where both turn at this rms or more [rad/s]
+#: (the NeuroBEM segments: ratios 0.996-1.022 at 0.36-1.11 rad/s; 0.71 in hover, at 0.05 rad/s, not judged)
 RATE_JUDGED = 0.2
-#: logged rates this many times the attitude's are refused as deg/s (180 / pi = 57.3)
+RATE_WINDOW = 0.02  # [s]
+#: logged rates this many times the attitude's are refused as deg/s (180 / pi = 57.3); below RATE_RATIO_AGAINST, as
+#: turning against it (another frame)
 RATE_RATIO_DEG = (20.0, 150.0)
+RATE_RATIO_AGAINST = -0.5
 
 
 class FlightLogError(ValueError):
@@ -265,11 +270,15 @@ def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
     numbered = [(k + 1, line) for k, line in enumerate(lines) if k >= skip and line.strip()
                 and not line.lstrip().startswith("#")]
     try:
-        a = np.loadtxt(io.StringIO("\n".join(line for _, line in numbered)), delimiter=",", ndmin=2, comments=None)
+        a = np.loadtxt(io.StringIO("\n".join(line for _, line in numbered)), delimiter=",", ndmin=2)
     except ValueError as exc:
         msg = str(exc).splitlines()[0][:160]
+        changed = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", msg)
         row = re.search(r" at row (\d+)", msg)
-        if row and int(row.group(1)) < len(numbered):
+        if changed and 0 < int(changed.group(3)) <= len(numbered):  # (NumPy counts this row from 1)
+            raise FlightLogError(f"{name}: line {numbered[int(changed.group(3)) - 1][0]} has {changed.group(2)} "
+                                 f"columns where the data's first line has {changed.group(1)}") from None
+        if row and int(row.group(1)) < len(numbered):  # (a cell it cannot convert: counted from 0)
             raise FlightLogError(f"{name}: line {numbered[int(row.group(1))][0]}: not numeric "
                                  f"({msg.replace(row.group(0), '').rstrip('.')})") from None
         raise FlightLogError(f"{name}: not a numeric CSV after line {skip} ({msg})") from None
@@ -465,11 +474,12 @@ def _check(log: FlightLog, name: str) -> None:
 
 def _check_frames(log: FlightLog, name: str) -> None:
     """The attitude, the accelerometer and the rate gyro against each other: a unit quaternion
-    (QUAT_TOLERANCE); the accelerometer's mean vertical reading, turned into the world frame with
-    the attitude, against g plus the mean vertical acceleration the logged velocity asks for
-    (GRAVITY_RANGE: accelerations in g, gravity removed, a z-down frame); the rates against the
-    attitude's change (RATE_RATIO_DEG: rates in deg/s; a negative ratio: another frame), judged
-    where the attitude turns at RATE_JUDGED rad/s rms or more."""
+    (QUAT_TOLERANCE); over a log of GRAVITY_JUDGED s or more, the accelerometer's time-mean upward
+    reading, turned into the world frame with the attitude, against g plus the mean vertical
+    acceleration that the logged velocity's change asks for (within GRAVITY_TOLERANCE g plus three
+    standard errors of the mean: accelerations in g, gravity removed, a z-down frame); the rates
+    against the attitude's change over RATE_WINDOW s (RATE_RATIO_DEG: rates in deg/s; below
+    RATE_RATIO_AGAINST: another frame), judged where both turn at RATE_JUDGED rad/s rms or more."""
     from scipy.spatial.transform import Rotation
 
     norm = np.linalg.norm(log.attitude, axis=1)
@@ -478,29 +488,37 @@ def _check_frames(log: FlightLog, name: str) -> None:
         i = int(np.argmax(bad))
         raise FlightLogError(f"{name}: sample {i + 1}: attitude quaternion {log.attitude[i].round(6).tolist()} has "
                              f"norm {norm[i]:.4g}, not 1 (within {QUAT_TOLERANCE:g}): a column mistake?")
-    turn = Rotation.from_quat(log.attitude / norm[:, None])  # (x, y, z, w), body -> z-up world
-    up = float(np.mean(turn.apply(log.specific_force)[:, 2]))
-    v_up = turn.apply(log.velocity)[:, 2]
-    expected = G + (v_up[-1] - v_up[0]) / log.duration
-    if not GRAVITY_RANGE[0] * expected <= up <= GRAVITY_RANGE[1] * expected:
-        raise FlightLogError(f"{name}: the accelerometer reads {up:.4g} m/s^2 upwards on average (its readings turned "
-                             f"into the world frame with the logged attitude), where the log's vertical speed asks for "
-                             f"{expected:.4g} (g plus its mean vertical acceleration): accelerations in g, gravity "
-                             "removed, a z-down (FRD) body frame, or a quaternion not (x, y, z, w) from body to world? "
-                             "(docs/flight.md, Flight logs)")
     q = log.attitude / norm[:, None]
+    if log.duration >= GRAVITY_JUDGED:
+        turn = Rotation.from_quat(q)  # (x, y, z, w), body -> z-up world
+        f_up = turn.apply(log.specific_force)[:, 2]
+        v_up = turn.apply(log.velocity)[:, 2]
+        up = float(np.sum(0.5 * (f_up[1:] + f_up[:-1]) * np.diff(log.t))) / log.duration  # (the time mean)
+        expected = G + (v_up[-1] - v_up[0]) / log.duration
+        tolerance = GRAVITY_TOLERANCE * G + 3.0 * float(np.std(f_up)) / math.sqrt(log.n)
+        if abs(up - expected) > tolerance:
+            raise FlightLogError(f"{name}: the accelerometer reads {up:.4g} m/s^2 upwards on average (its readings "
+                                 "turned into the world frame with the logged attitude), where the log's vertical "
+                                 f"speed asks for {expected:.4g} (g plus its mean vertical acceleration; within "
+                                 f"{tolerance:.3g}): accelerations in g, gravity removed, a z-down (FRD) body frame, "
+                                 "or a quaternion not (x, y, z, w) from body to world? (docs/flight.md, Flight logs)")
     q = q * np.where(np.concatenate([[False], np.cumsum(np.sum(q[1:] * q[:-1], axis=1) < 0) % 2 == 1]), -1.0,
                      1.0)[:, None]  # (q and -q are one attitude)
-    x, y, z, w = q.T
-    dx, dy, dz, dw = np.gradient(q, log.t, axis=0).T
+    k = max(1, int(round(RATE_WINDOW * log.rate_hz)))  # (a derivative over one sample step is the noise's)
+    if log.n <= k:
+        return
+    dq = (q[k:] - q[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    x, y, z, w = (0.5 * (q[k:] + q[:-k])).T
+    dx, dy, dz, dw = dq.T
     w_att = 2 * np.column_stack([w * dx - x * dw - y * dz + z * dy, w * dy + x * dz - y * dw - z * dx,
                                  w * dz - x * dy + y * dx - z * dw])  # body rates of the attitude: 2 conj(q) dq/dt
-    if np.sqrt(np.mean(w_att**2)) < RATE_JUDGED:
+    w_log = 0.5 * (log.angular_velocity[k:] + log.angular_velocity[:-k])
+    if min(np.sqrt(np.mean(w_att**2)), np.sqrt(np.mean(w_log**2))) < RATE_JUDGED:
         return
-    ratio = float(np.sum(log.angular_velocity * w_att) / np.sum(w_att * w_att))
+    ratio = float(np.sum(w_log * w_att) / np.sum(w_att * w_att))
     if RATE_RATIO_DEG[0] <= ratio <= RATE_RATIO_DEG[1]:
         raise FlightLogError(f"{name}: the logged body rates are {ratio:.3g} times those of the logged attitude's "
                              "change: are they in deg/s? A log's rates are read in rad/s")
-    if ratio < 0:
+    if ratio < RATE_RATIO_AGAINST:
         raise FlightLogError(f"{name}: the logged body rates turn against the logged attitude (ratio {ratio:.3g}): "
                              "rates in another body frame (z down?) or a quaternion from world to body?")

@@ -320,8 +320,9 @@ def read_vehicle(path) -> Vehicle:
 
 
 #: a rotor farther from the centre of mass than this many of its radii is warned about (a multirotor's arms are
-#: 1-3 radii long: the NeuroBEM quadrotor's 2.0; positions in mm read as m are 1000 times that)
-ARM_RADII_MAX = 10.0
+#: 1-3 radii long, the NeuroBEM quadrotor's 2.0, a helicopter's tail rotor about 11; positions in mm read as m are
+#: 1000 times that)
+ARM_RADII_MAX = 20.0
 #: the inertia's largest principal moment is warned about outside these multiples of mass x (largest arm)^2 (a
 #: quadrotor's 0.2-0.6: the NeuroBEM vehicle's 0.35; an inertia in g cm^2 is 1e7 times kg m^2)
 INERTIA_ARM_RANGE = (1e-3, 10.0)
@@ -354,7 +355,7 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
         if not lo <= ratio <= hi:
             warnings.warn(f"{name}: the inertia's largest principal moment is {ratio:.3g} times the mass times the "
                           f"largest arm squared ({mass:g} kg x ({reach:.4g} m)^2), where a multirotor's is "
-                          "0.2-0.6: is it in kg m^2?", UserWarning, stacklevel=3)
+                          "0.2-0.6: is the mass in kg and the inertia in kg m^2?", UserWarning, stacklevel=3)
 
 
 def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.body import body_drag_force
+from ..core.vector import VELOCITY_MAX
 from .model import Vehicle, _samples, rotor_geometry
 
 __all__ = ["VehicleMap", "VehicleMapWrench"]
@@ -195,6 +196,11 @@ class VehicleMap:
             raise ValueError("velocity, angular_velocity, rotor_omega and wind must have the same number of samples "
                              f"(or one), got {[a.shape[0] for a in (v, w, om, wind_a)]}")
         N = counts.pop() if counts else 1
+        reach = float(np.max(np.linalg.norm(self._pos, axis=1))) if len(self._pos) else 0.0
+        hub = np.max(np.abs(v - wind_a)) + np.max(np.abs(w)) * reach  # (a bound on every hub's velocity component)
+        if not hub < VELOCITY_MAX:
+            raise ValueError(f"velocity, wind and angular_velocity make a rotor hub's velocity of up to {hub:.3g} m/s "
+                             f"(velocity - wind + angular_velocity x arm); it must stay below {VELOCITY_MAX:g} m/s")
         air_v = np.broadcast_to(v - wind_a, (N, 3))
         w = np.broadcast_to(w, (N, 3))
         om = np.broadcast_to(om, (N, n_rot))
