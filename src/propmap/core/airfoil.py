@@ -292,13 +292,32 @@ class AirfoilParams(RotorOptions):
             raise ValueError(f"lift_model must be one of {LIFT_MODELS}, got {self.lift_model!r}")
 
     def replace(self, **changes) -> "AirfoilParams":
-        """Return a copy with ``changes`` applied (validated again)."""
-        return replace(self, **changes)
+        """Return a copy with ``changes`` applied (validated again).
+
+        Raises
+        ------
+        ValueError
+            A name that is not a field (the message lists them), or a value out of its range.
+        """
+        return _replace(self, changes)
 
     def as_dict(self) -> dict:
         """Return the section and rotor fields as a plain dict (SI units, alpha0 in rad; without
         ``air`` and ``label``, :data:`RECORD_META`)."""
         return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
+
+
+def _replace(p, changes: dict):
+    """``dataclasses.replace`` with an unknown name refused as a ValueError naming the valid ones
+    (a TypeError of ``__init__`` before; ``cl_alpah``, or a file's ``alpha_L0_deg``)."""
+    valid = [f.name for f in fields(p) if f.init]
+    unknown = [k for k in changes if k not in valid]
+    if unknown:
+        hint = " (angles are in rad here; the _deg names are the parameter files')" if any(
+            k.endswith("_deg") for k in unknown) else ""
+        raise ValueError(f"unknown parameter(s) {', '.join(unknown)} of {type(p).__name__}{hint}; valid: "
+                         f"{', '.join(valid)}")
+    return replace(p, **changes)
 
 
 def _check_flags(p) -> None:
@@ -415,8 +434,14 @@ class CamberedParams(RotorOptions):
             raise ValueError("cl_min must be in [-4, 0), got 0.0")
 
     def replace(self, **changes) -> "CamberedParams":
-        """Return a copy with ``changes`` applied (validated again)."""
-        return replace(self, **changes)
+        """Return a copy with ``changes`` applied (validated again).
+
+        Raises
+        ------
+        ValueError
+            A name that is not a field (the message lists them), or a value out of its range.
+        """
+        return _replace(self, changes)
 
     def as_dict(self) -> dict:
         """Return the section and rotor fields as a plain dict (SI units, alpha_L0 in rad; without

@@ -13,7 +13,7 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, _as_array, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
 
@@ -28,16 +28,27 @@ class HoverModel:
         Thrust constant [N s^2/rad^2], finite.
     k_Q : float
         Torque constant [N m s^2/rad^2], finite.
+    rho : float, optional
+        The air density [kg/m^3] the constants hold for (recorded by :meth:`from_model` and
+        :meth:`from_coefficients`); :meth:`CT` and :meth:`CP` use it unless given another air.
+    diameter : float, optional
+        The rotor diameter [m] (recorded likewise); the default of :meth:`CT` and :meth:`CP`.
     """
 
     k_T: float
     k_Q: float
+    rho: float | None = None
+    diameter: float | None = None
 
     def __post_init__(self) -> None:
         for name in ("k_T", "k_Q"):
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")
+        for name in ("rho", "diameter"):
+            v = getattr(self, name)
+            if v is not None and (isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 < v < math.inf):
+                raise ValueError(f"{name} must be a positive finite number or None, got {v!r}")
 
     @classmethod
     def from_model(cls, propeller: Propeller, params: AirfoilParams, omega: float, *,
@@ -64,7 +75,8 @@ class HoverModel:
             raise ValueError(f"omega must be at least 1 rad/s to calibrate a hover model "
                              f"(k_T = T / Omega^2), got {float(omega)!r}")
         r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
-        return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2)
+        return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2, rho=float(air.rho),
+                   diameter=float(propeller.diameter))
 
     @classmethod
     def from_coefficients(cls, CT: float, CP: float, diameter: float, *, air: Air = Air()) -> "HoverModel":
@@ -86,20 +98,33 @@ class HoverModel:
         if not (abs(CT) <= 1e3 and abs(CP) <= 1e3):
             raise ValueError(f"CT and CP must be within [-1000, 1000], got {CT!r}, {CP!r}")
         return cls(float(CT) * air.rho * diameter**4 / (2 * math.pi) ** 2,
-                   float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3)
+                   float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3, rho=float(air.rho), diameter=float(diameter))
 
     def thrust(self, omega) -> np.ndarray:
-        """T [N] at Omega [rad/s] (any shape)."""
-        return self.k_T * np.asarray(omega, float) ** 2
+        """T [N] at Omega [rad/s] (any shape; checked as :func:`propmap.rotor_loads` checks it:
+        a number in [0, 1e5] rad/s, else ValueError)."""
+        return self.k_T * _as_array("omega", omega) ** 2
 
     def torque(self, omega) -> np.ndarray:
-        """Q [N m] at Omega [rad/s] (any shape)."""
-        return self.k_Q * np.asarray(omega, float) ** 2
+        """Q [N m] at Omega [rad/s] (any shape; checked as :meth:`thrust`)."""
+        return self.k_Q * _as_array("omega", omega) ** 2
 
-    def CT(self, diameter: float, *, air: Air = Air()) -> float:
-        """The (constant) thrust coefficient of this model for a rotor of ``diameter`` [m]."""
-        return self.k_T * (2 * math.pi) ** 2 / (air.rho * diameter**4)
+    def _conditions(self, diameter, air) -> tuple[float, float]:
+        d = self.diameter if diameter is None else diameter
+        if d is None:
+            raise ValueError("diameter is needed: this model records none (build it with from_model or "
+                             "from_coefficients, or give it)")
+        rho = (self.rho if self.rho is not None else Air().rho) if air is None else air.rho
+        return float(d), float(rho)
 
-    def CP(self, diameter: float, *, air: Air = Air()) -> float:
-        """The (constant) power coefficient of this model for a rotor of ``diameter`` [m]."""
-        return self.k_Q * (2 * math.pi) ** 3 / (air.rho * diameter**5)
+    def CT(self, diameter: float | None = None, *, air: Air | None = None) -> float:
+        """The (constant) thrust coefficient of this model for a rotor of ``diameter`` [m] (default:
+        the one recorded) in ``air`` (default: the density recorded, else ISA sea level; before
+        2026-11-26 always sea level, 26% off for a model built at 3,000 m)."""
+        d, rho = self._conditions(diameter, air)
+        return self.k_T * (2 * math.pi) ** 2 / (rho * d**4)
+
+    def CP(self, diameter: float | None = None, *, air: Air | None = None) -> float:
+        """The (constant) power coefficient of this model, as :meth:`CT`."""
+        d, rho = self._conditions(diameter, air)
+        return self.k_Q * (2 * math.pi) ** 3 / (rho * d**5)

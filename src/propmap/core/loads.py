@@ -14,7 +14,7 @@ from .states import STATES
 __all__ = ["RotorLoads"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # (== of the arrays' fields raised NumPy's "truth value ... ambiguous": identity)
 class RotorLoads:
     """Loads of one propeller at a batch of operating points.
 
@@ -266,6 +266,12 @@ class RotorLoads:
             if not (index == () or (isinstance(index, (int, np.integer)) and index in (0, -1))):
                 raise IndexError(f"index {index!r} into loads of one point (shape ()): give () or 0")
             index = ()
+        else:
+            full = index if isinstance(index, tuple) else (index,)
+            if len(full) != conv.ndim or not all(isinstance(i, (int, np.integer)) for i in full):
+                raise IndexError(f"index {index!r} into loads of shape {conv.shape}: give one integer per axis "
+                                 f"({conv.ndim})")
+            index = full
         names = []
         if not bool(conv[index]):
             names.append("not_converged")

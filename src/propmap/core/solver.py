@@ -87,6 +87,9 @@ PARALLEL_MIN_POINTS = 32
 OMEGA_MIN = 0.1
 OMEGA_MAX = 1e5
 AIRSPEED_MAX = 500.0
+#: rotor_loads warns where a blade tip meets the air beyond this Mach number (an 11 in propeller at 1500-2400 "rad/s",
+#: rpm given as rad/s, reaches Mach 0.6-0.98 and 106-137 times the thrust; until 2026-11-26 only Mach 1 was warned)
+TIP_MACH_WARN = 0.8
 #: the per-point collective's range [rad] (the blade-angle offset of ``rotor_loads(collective=)``)
 COLLECTIVE_RANGE = math.radians(45.0)
 _RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
@@ -131,6 +134,9 @@ def _as_array(name: str, value) -> np.ndarray:
         a = np.asarray(value)
     except (ValueError, OverflowError) as exc:  # ragged nesting, ints beyond int64
         raise ValueError(f"{name} must be a number or a rectangular array of numbers ({exc})") from None
+    if isinstance(value, np.ma.MaskedArray) and np.ma.getmaskarray(value).any():
+        raise ValueError(f"{name}: a masked array with masked entries (they would be computed as if given); pass "
+                         "the points to compute, e.g. its .compressed()")
     if a.dtype.kind == "O":
         try:
             a = a.astype(float)
@@ -311,9 +317,9 @@ def rotor_loads(
     Warns
     -----
     UserWarning
-        A blade tip meets the air above Mach 1 (Omega R + V sin(beta) and V cos(beta)): the
-        model's compressibility stops at Mach 0.9, and such a rate is most often one in rpm
-        given as rad/s.
+        A blade tip meets the air above Mach 0.8 (:data:`TIP_MACH_WARN`; Omega R + V sin(beta)
+        and V cos(beta)): the model's compressibility stops at Mach 0.9, and such a rate is
+        most often one in rpm given as rad/s.
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
@@ -345,9 +351,11 @@ def rotor_loads(
             raise
         om = arrays[0]
         shape = om.shape
-        om1 = np.ascontiguousarray(om.reshape(-1))
-        V1 = arrays[1].reshape(-1)
-        b1 = arrays[2].reshape(-1)
+        # copies: the result keeps omega, airspeed and incidence, and must not share the caller's memory (a
+        # later om *= 2 on the input changed r.power and r.CT; user-level audit, 2026-11-26)
+        om1 = np.array(om.reshape(-1), dtype=float)
+        V1 = np.array(arrays[1].reshape(-1), dtype=float)
+        b1 = np.array(arrays[2].reshape(-1), dtype=float)
         c1 = (np.ascontiguousarray(arrays[3].reshape(-1), dtype=float) if collective is not None
               else np.zeros(om1.size))
         any_slow = bool((om1 < OMEGA_MIN).any())
@@ -355,10 +363,14 @@ def rotor_loads(
         Vc = np.ascontiguousarray(V1 * np.cos(b1))
         Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
         tip = float(np.max(np.hypot(om1 * propeller.radius + np.abs(Vs), Vc), initial=0.0))
-    if tip > air.speed_of_sound and not _SUPERSONIC_ALLOWED.get():  # a rate in rpm given as rad/s, most likely
-        warnings.warn(f"{SUPERSONIC_TIP} {tip / air.speed_of_sound:.3g} (> 1): the model has no transonic or "
-                      "supersonic physics (its Prandtl-Glauert factor stops at Mach 0.9), so these loads mean "
-                      "nothing; is omega given in rpm? it is in rad/s (rpm * pi / 30)", UserWarning, stacklevel=2)
+    if tip > TIP_MACH_WARN * air.speed_of_sound and not _SUPERSONIC_ALLOWED.get():  # a rate in rpm, most likely
+        mach = tip / air.speed_of_sound
+        said = ("the model has no transonic or supersonic physics (its Prandtl-Glauert factor stops at Mach 0.9), "
+                "so these loads mean nothing" if mach > 1 else
+                "near the end of the model's compressibility (its Prandtl-Glauert factor stops at Mach 0.9; small "
+                "UAV propellers run below 0.7)")
+        warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} (> {TIP_MACH_WARN:g}): {said}; is omega given in rpm? it is in "
+                      "rad/s (rpm * pi / 30)", UserWarning, stacklevel=2)
     wrt = _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")

@@ -52,7 +52,41 @@ def _load_norms(data: LoadData, propeller, keys, air: Air):
     return norm, scales
 
 
+#: the static CT and CQ (propeller convention) outside which fit_loads warns of a unit or sign mistake: the 147
+#: catalogue propellers' static medians are CT 0.054-0.246 and CQ 0.0037-0.027 (thrust in gf reads 102 times, in
+#: kgf 0.102 times; torque in N cm 100 times)
+STATIC_CT_RANGE = (0.02, 0.6)
+STATIC_CQ_RANGE = (0.001, 0.1)
+
+
+def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
+    """Warnings where the static points' median measured CT or CQ lies outside STATIC_CT_RANGE or
+    STATIC_CQ_RANGE, or is negative: a quantity in other units than N and N m (the fit divides each
+    quantity by its own RMS, so such a quantity fits without an error and is, in effect, left out)
+    or of the other sign."""
+    static = (data.airspeed <= STATIC_AIRSPEED) & (data.omega >= OMEGA_MIN)
+    notes = []
+    if not static.any():
+        return notes
+    n = data.omega[static] / (2 * math.pi)
+    for key, power, (lo, hi), sym, unit in (("thrust", 4, STATIC_CT_RANGE, "CT", "N"),
+                                            ("torque", 5, STATIC_CQ_RANGE, "CQ", "N m")):
+        if key not in keys:
+            continue
+        c = float(np.median(data.measured[key][static] / (air.rho * n**2 * propeller.diameter**power)))
+        if c < 0:
+            notes.append(f"the measured static {key} is negative ({sym} {c:.3g} in the median): give its magnitude "
+                         f"(propmap's {key} is positive in hover)")
+        elif not lo <= c <= hi:
+            notes.append(f"the measured static {sym} is {c:.3g} in the median, outside the {lo:g}-{hi:g} of propellers "
+                         f"(the catalogue's: CT 0.054-0.246, CQ 0.0037-0.027): is the {key} in {unit}? (the fit "
+                         f"divides each quantity by its own size, so a {key} in other units fits without an error)")
+    return notes
+
+
 def _load_keys(data: LoadData, quantities) -> list:
+    if isinstance(quantities, str):  # (iterated, 'thrust' was the quantities 't', 'h', ...)
+        raise ValueError(f"quantities must be a tuple of names, e.g. ({quantities!r},), got the string {quantities!r}")
     keys = list(quantities or data.measured)
     for k in keys:
         if k not in data.measured:
@@ -260,7 +294,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     if inplane:
         notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure the in-plane force at incidence "
                      "(docs/identification.md)")
-    warns = [*notes, *warns]
+    warns = [*_unit_notes(data, propeller, keys, air), *notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}
     if prior:

@@ -312,8 +312,29 @@ def default_params(name: str) -> SectionParams:
         The propeller's calibrated set if the catalogue has one (``.label``
         ``"calibrated:<name>"``), else the generic set (``.label`` ``"generic"``); either
         carries its air (``.air``).
+
+    Warns
+    -----
+    UserWarning
+        A name that is not a catalogue propeller's but close to one (another case, blanks
+        around it, a near spelling: ``difflib``'s ratio 0.8 or more): the generic set is
+        returned, and the message names the catalogue's near names (a typo once gave the
+        generic set without a word).
     """
     c = calibrated(name)
     if c is not None:
         return c.params
+    if isinstance(name, str) and name.strip():
+        import difflib
+        import warnings
+
+        from .catalogue import catalogue
+
+        names = list(catalogue())
+        if name not in names:
+            near = [n for n in names if n.lower() == name.strip().lower()] or difflib.get_close_matches(
+                name.strip(), names, n=3, cutoff=0.8)
+            if near:
+                warnings.warn(f"default_params: {name!r} is not a catalogue propeller, so this is the generic set; "
+                              f"did you mean {', '.join(near)}?", UserWarning, stacklevel=2)
     return calibration()["generic"].params

@@ -1,0 +1,128 @@
+"""The Python API used as a researcher uses it in a notebook (user-level audit, 2026-11-26):
+results that shared the caller's arrays, rpm given as rad/s below tip Mach 1, load data in other
+units fitted without a word, a hover model's coefficients at the wrong air, typos that returned
+the generic set or a TypeError, and result objects that could not be indexed or compared."""
+
+import copy
+import dataclasses
+import math
+import re
+import warnings
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from propmap.io.catalogue import catalogue
+
+
+@pytest.fixture(scope="module")
+def apc():
+    return pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+
+
+def test_results_do_not_share_the_callers_arrays(apc):
+    """om *= 2 after the call changed r.power from [66.6, 95.2] to [133, 190] and r.CT 4x."""
+    prop, params = apc
+    om = np.array([800.0, 900.0])
+    r = pm.rotor_loads(prop, params, om, 10.0, 1.0)
+    power, ct = r.power.copy(), r.CT.copy()
+    om *= 2
+    assert not np.shares_memory(r.omega, om)
+    np.testing.assert_array_equal(r.power, power)
+    np.testing.assert_array_equal(r.CT, ct)
+    np.testing.assert_array_equal(r.omega, [800.0, 900.0])
+
+
+def test_rpm_given_as_rad_per_s_is_warned_from_tip_mach_0_8():
+    """An 11 in propeller at 1500-2400 'rad/s' (rpm) made 106-137 times the thrust at tip Mach
+    0.6-0.98 without a warning (only Mach 1 was warned); at its true 157-251 rad/s, none."""
+    prop = pm.load_propeller("apce_11x10")
+    params = pm.default_params("apce_11x10")
+    with pytest.warns(UserWarning, match=r"at Mach 0\.98\d? \(> 0\.8\): .*is omega given in rpm"):
+        pm.rotor_loads(prop, params, np.array([1500.0, 2000.0, 2400.0]), 0.0, 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.rotor_loads(prop, params, np.array([1500.0, 2000.0, 2400.0]) * math.pi / 30, 0.0, 0.0)
+
+
+def test_a_masked_array_with_masked_entries_is_refused(apc):
+    prop, params = apc
+    with pytest.raises(ValueError, match=r"omega: a masked array with masked entries"):
+        pm.rotor_loads(prop, params, np.ma.masked_array([800.0, 900.0], mask=[0, 1]), 10.0, 1.0)
+    r = pm.rotor_loads(prop, params, np.ma.masked_array([800.0, 900.0], mask=[0, 0]), 10.0, 1.0)
+    assert r.thrust.shape == (2,)
+
+
+@pytest.mark.parametrize("key, scale, said", [
+    ("torque", 100.0, r"measured static CQ is 0\.\d+ in the median, outside the 0\.001-0\.1 .* is the torque in N m\?"),
+    ("thrust", 1000 / 9.80665, r"measured static CT is \d+\.?\d* in the median, .* is the thrust in N\?"),
+    ("torque", -1.0, r"measured static torque is negative .* give its magnitude"),
+])
+def test_load_data_in_other_units_is_warned_about(key, scale, said):
+    """Torque in N cm fitted with success=True and no warning (the fit divides each quantity by its
+    own RMS, so it was in effect left out); the 147 catalogue propellers' static CT 0.054-0.246 and
+    CQ 0.0037-0.027 are not warned about (UIUC Propeller Data Site vol. 1, apce_9x6)."""
+    entry = catalogue()["apce_9x6"]
+    prop = pm.load_propeller("apce_9x6")
+    data = loads_from_catalogue(entry, prop.diameter)
+    static = data.airspeed == 0
+    data = data.subset(static)
+    right = fit_loads(data, prop, options=FitOptions(multistart=0))
+    assert not any("measured static" in w for w in right.warnings), right.warnings
+    measured = dict(data.measured)
+    measured[key] = measured[key] * scale
+    wrong = fit_loads(dataclasses.replace(data, measured=measured), prop, options=FitOptions(multistart=0))
+    assert any(re.search(said, w) for w in wrong.warnings), wrong.warnings
+
+
+def test_quantities_given_as_one_string_is_refused():
+    entry = catalogue()["apce_9x6"]
+    prop = pm.load_propeller("apce_9x6")
+    data = loads_from_catalogue(entry, prop.diameter)
+    with pytest.raises(ValueError, match=r"quantities must be a tuple of names, e\.g\. \('thrust',\)"):
+        fit_loads(data, prop, quantities="thrust")
+
+
+def test_hover_model_keeps_its_air_and_checks_its_rates(apc):
+    """CT of a model built at 3,000 m was computed at sea level (0.0827 against 0.1115); thrust of
+    NaN, -800 and '800' rad/s returned numbers."""
+    prop, params = apc
+    air = pm.Air.isa(3000.0)
+    h = pm.HoverModel.from_model(prop, params, 1000.0, air=air)
+    r = pm.rotor_loads(prop, params, 1000.0, 0.0, 0.0, air=air)
+    assert h.CT() == pytest.approx(float(r.CT), rel=1e-12) and h.CP() == pytest.approx(float(r.CP), rel=1e-12)
+    assert h.CT(prop.diameter, air=pm.Air()) == pytest.approx(float(r.CT) * air.rho / pm.Air().rho, rel=1e-12)
+    for bad in (float("nan"), -800.0, "800"):
+        with pytest.raises(ValueError, match="omega"):
+            h.thrust(bad)
+    with pytest.raises(ValueError, match="diameter is needed"):
+        pm.HoverModel(1e-5, 1e-7).CT()
+
+
+def test_near_names_and_unknown_fields_are_said(apc):
+    """'APCE_8x6', 'apce_8x6 ' and 'apce_8x7' returned the generic set without a word; replace()
+    with a typo raised __init__'s TypeError."""
+    for name, near in (("APCE_8x6", "apce_8x6"), ("apce_8x6 ", "apce_8x6"), ("apce_8x7", "apce_8x6")):
+        with pytest.warns(UserWarning, match=rf"{name!r} is not a catalogue propeller.*did you mean .*{near}"):
+            assert pm.default_params(name).label == "generic"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert pm.default_params("neurobem_5.1x4.8").label == "generic"
+    params = apc[1]
+    with pytest.raises(ValueError, match=r"unknown parameter\(s\) cl_alpah of CamberedParams; valid: .*cl_alpha"):
+        params.replace(cl_alpah=5.0)
+    with pytest.raises(ValueError, match=r"alpha_L0_deg .*angles are in rad here"):
+        params.replace(alpha_L0_deg=-3.0)
+    with pytest.raises(ValueError, match=r"unknown parameter\(s\) cl_alpha of AirfoilParams"):
+        pm.preset("gill2017-apc").replace(cl_alpha=3.0)
+
+
+def test_loads_of_several_axes_are_indexed_whole_and_compared_by_identity(apc):
+    prop, params = apc
+    r = pm.rotor_loads(prop, params, np.full((2, 3), 800.0), 5.0, 1.0)
+    assert r.flags((1, 2)) == []
+    with pytest.raises(IndexError, match=r"index 0 into loads of shape \(2, 3\): give one integer per axis"):
+        r.flags(0)
+    assert r == r and not (r == copy.deepcopy(r))
