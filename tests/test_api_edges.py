@@ -126,3 +126,18 @@ def test_loads_of_several_axes_are_indexed_whole_and_compared_by_identity(apc):
     with pytest.raises(IndexError, match=r"index 0 into loads of shape \(2, 3\): give one integer per axis"):
         r.flags(0)
     assert r == r and not (r == copy.deepcopy(r))
+
+
+def test_loads_become_a_dataframe_and_print_as_a_summary(apc):
+    """pd.DataFrame(vars(r)) failed (the radial nodes beside the points) and a one-point repr ran
+    to 1.5k characters of radial arrays."""
+    prop, params = apc
+    r = pm.rotor_loads(prop, params, np.full((2, 3), 800.0), np.array([0.0, 5.0, 10.0]), 1.0)
+    df = r.to_dataframe()
+    assert df.shape == (6, 24) and df.attrs["units"]["torque"] == "N m" and df.attrs["diameter"] == prop.diameter
+    np.testing.assert_array_equal(df["thrust"], r.thrust.reshape(-1))
+    np.testing.assert_array_equal(df["CT"], r.CT.reshape(-1))
+    assert list(df["state"]) == list(r.state_name.reshape(-1))
+    assert (df.loc[df.airspeed == 0, "drag"] == 0).all()  # (D = 0 in hover)
+    one = repr(pm.rotor_loads(prop, params, 800.0, 0.0, 0.0))
+    assert one.startswith("RotorLoads(shape (), thrust 4.0") and "flags raised: none" in one and len(one) < 200

@@ -252,6 +252,46 @@ class RotorLoads:
         """V / (n D) [-], total airspeed, shape S."""
         return self._per_n(self.airspeed, self._n * self.diameter)
 
+    def to_dataframe(self):
+        """The per-point quantities as a pandas DataFrame, one row per point (shape S flattened
+        in C order), SI units as the fields: omega [rad/s], airspeed [m/s], incidence [rad],
+        thrust, drag, side_force [N], torque, rolling_moment, pitching_moment [N m], power [W],
+        CT, CQ, CP, J [-], v_i_mean [m/s], flap_1c, flap_1s [rad], state (its name), the flags
+        (converged, vortex_ring, multiple_roots, reverse_flow, inflow_extrapolated) and
+        n_evaluations. The per-annulus arrays and the derivatives are left out; ``rho``
+        [kg/m^3], ``diameter`` [m] and the columns' ``units`` are in ``DataFrame.attrs``.
+
+        Returns
+        -------
+        pandas.DataFrame
+        """
+        import pandas as pd
+
+        cols = {name: np.asarray(getattr(self, name)).reshape(-1) for name in _FRAME_COLUMNS}
+        cols["state"] = np.asarray(self.state_name).reshape(-1)
+        frame = pd.DataFrame(cols)
+        frame.attrs.update(rho=self.rho, diameter=self.diameter,
+                           units={k: u for k, u in _FRAME_UNITS.items() if k in frame.columns})
+        return frame
+
+    def __repr__(self) -> str:
+        """A summary (shape, ranges of T, D, Q, the flags raised), not every array."""
+        shape = np.shape(self.thrust)
+
+        def span(a, unit):
+            a = np.asarray(a)
+            if a.size == 0:
+                return "none"
+            lo, hi = float(np.nanmin(a)), float(np.nanmax(a))
+            return f"{lo:.4g} {unit}" if lo == hi else f"{lo:.4g} to {hi:.4g} {unit}"
+
+        raised = [k for k in ("vortex_ring", "multiple_roots", "reverse_flow", "inflow_extrapolated")
+                  if np.any(getattr(self, k))]
+        if not np.all(self.converged):
+            raised.insert(0, "not_converged")
+        return (f"RotorLoads(shape {shape}, thrust {span(self.thrust, 'N')}, drag {span(self.drag, 'N')}, torque "
+                f"{span(self.torque, 'N m')}, flags raised: {', '.join(raised) or 'none'})")
+
     def flags(self, index=()) -> list[str]:
         """Names of the raised status flags at one point (``index`` into shape S; on scalar
         loads, shape (), ``()`` or ``0``).
@@ -282,6 +322,15 @@ class RotorLoads:
 
 
 _LOADS_FIELDS = frozenset(f.name for f in fields(RotorLoads))
+#: RotorLoads.to_dataframe's numeric columns and every column's unit
+_FRAME_COLUMNS = ("omega", "airspeed", "incidence", "thrust", "drag", "side_force", "torque", "rolling_moment",
+                  "pitching_moment", "power", "CT", "CQ", "CP", "J", "v_i_mean", "flap_1c", "flap_1s", "converged",
+                  "vortex_ring", "multiple_roots", "reverse_flow", "inflow_extrapolated", "n_evaluations")
+_FRAME_UNITS = {"omega": "rad/s", "airspeed": "m/s", "incidence": "rad", "thrust": "N", "drag": "N",
+                "side_force": "N", "torque": "N m", "rolling_moment": "N m", "pitching_moment": "N m", "power": "W",
+                "CT": "-", "CQ": "-", "CP": "-", "J": "-", "v_i_mean": "m/s", "flap_1c": "rad", "flap_1s": "rad",
+                "converged": "-", "vortex_ring": "-", "multiple_roots": "-", "reverse_flow": "-",
+                "inflow_extrapolated": "-", "n_evaluations": "-", "state": "-"}
 
 
 def _new_loads(**kw) -> RotorLoads:
