@@ -27,17 +27,27 @@ from propmap.io.catalogue import catalogue
 from propmap.validation import _coefficients, rpm_groups
 
 
-def biases(name: str) -> list:
-    """(name, family, "fit" or "blind", ln rpm ratio, mean signed dCT / CT0) per held-out rpm group."""
+def static_lowest_case(name: str) -> dict:
+    """One catalogue propeller as the static + lowest protocol sees it: entry, prop, data, the
+    generic set and prior without its family, the static mask, the rpm groups, the training mask
+    (static run and lowest sweeps), the measured CT and the mean static CT0."""
     warnings.simplefilter("ignore")  # the catalogue's coverage notes
     entry, prop = catalogue()[name], pm.load_propeller(name)
     data = loads_from_catalogue(entry, prop.diameter)
     generic, pop = generic_without(name)[0], population(without=name)
     static, groups = data.airspeed == 0, rpm_groups(data)
-    train = static | np.isin(data.group, groups[0])
-    fitted = fit_loads(data.subset(train), prop, base=generic, options=FitOptions(population=pop)).params
     CT = _coefficients(data, prop, generic.air)[0]
-    CT0, rpm0 = CT[static].mean(), np.mean(data.omega[np.isin(data.group, groups[0])])
+    return dict(entry=entry, prop=prop, data=data, generic=generic, pop=pop, static=static, groups=groups,
+                train=static | np.isin(data.group, groups[0]), CT=CT, CT0=CT[static].mean())
+
+
+def biases(name: str) -> list:
+    """(name, family, "fit" or "blind", ln rpm ratio, mean signed dCT / CT0) per held-out rpm group."""
+    c = static_lowest_case(name)
+    entry, prop, data, generic, groups, CT, CT0 = (c[k] for k in ("entry", "prop", "data", "generic", "groups", "CT",
+                                                                   "CT0"))
+    fitted = fit_loads(data.subset(c["train"]), prop, base=generic, options=FitOptions(population=c["pop"])).params
+    rpm0 = np.mean(data.omega[np.isin(data.group, groups[0])])
     rows = []
     for grp in groups[1:]:
         m = np.isin(data.group, grp)

@@ -27,18 +27,17 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
-import warnings
 from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 
 import numpy as np
 
 import propmap as pm
-from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from rpm_drift import static_lowest_case  # tools/rpm_drift.py: the protocol's case of one propeller
+
+from propmap.identify import FitOptions, fit_loads
 from propmap.identify.engine import _objective
-from propmap.io.calibration import generic_without, population
 from propmap.io.catalogue import catalogue
-from propmap.validation import _coefficients, rpm_groups
 
 K_DEG = (0.0, 0.5, 1.0, 2.0, 3.0, 5.0)  # blade-angle change at Z = 1 [deg]
 
@@ -51,14 +50,10 @@ def _z(data, prop, law: str) -> np.ndarray:
 
 def grid(name: str, law: str) -> tuple:
     """(volume, [(K, training objective, held-out rms dCT / CT0)] for K in K_DEG)."""
-    warnings.simplefilter("ignore")  # the catalogue's coverage notes
-    entry, prop = catalogue()[name], pm.load_propeller(name)
-    data = loads_from_catalogue(entry, prop.diameter)
-    generic, pop = generic_without(name)[0], population(without=name)
-    static, groups = data.airspeed == 0, rpm_groups(data)
-    train = static | np.isin(data.group, groups[0])
-    CT = _coefficients(data, prop, generic.air)[0]
-    CT0, z = CT[static].mean(), _z(data, prop, law)
+    c = static_lowest_case(name)
+    entry, prop, data, generic, train, CT, CT0 = (c[k] for k in ("entry", "prop", "data", "generic", "train", "CT",
+                                                                  "CT0"))
+    pop, z = c["pop"], _z(data, prop, law)
     out = []
     for K in K_DEG:
         coll = -math.radians(K) * z
