@@ -236,7 +236,9 @@ def _mat_array(raw: bytes, name: str) -> np.ndarray:
     return a.astype(float)
 
 
-def _csv_array(raw: bytes, p: Path, name: str) -> np.ndarray:
+def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
+    """The N x 41 array of a NeuroBEM CSV (columns by its header, else by position) and each row's
+    line in the file (1-based, for messages)."""
     text = decode_input_text(raw, p, FlightLogError)
     lines = text.splitlines()
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
