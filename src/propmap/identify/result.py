@@ -46,7 +46,11 @@ class Identifiability:
     covariance (what data and prior together determine; a direction the data leave free
     keeps the population's spread), and ``std_error_data`` holds the data's alone beside them (None without a
     prior, and in a fit along directions, FitResult.extra["directions"]); ``poorly_determined``
-    is still judged on the data alone. ``effective_parameters``
+    is still judged on the data alone, except in a fit along directions (the default for a
+    static run or sweeps at one rotation rate), where it is empty: there the data determine
+    directions, not parameters, and a direction the data know less well than the prior is
+    named in the warnings (each parameter's posterior ``std_error`` then says how well it is
+    known). ``effective_parameters``
     is how many parameter directions the data determine against the prior, the trace of the
     posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
     the prior's): p without a prior, fewer as the prior holds directions the data leave free
