@@ -119,8 +119,12 @@ def _parameter_constants(names, params, air):
             raise ValueError("derivatives with respect to dynamic_stall (Gormont's gamma) are not supported: "
                              "difference the solver")
         if name in NOT_CONSTANTS:
-            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes, "
-                             "not the section's constants (for the blade angle, use 'collective')")
+            hint = {"collective": " (the blade angle: give the input 'collective')",
+                    "re_ref": " (the Reynolds reference: the Reynolds terms' own slopes are re_exp, re_exp_lift, "
+                              "re_exp_stall and alpha_L0_re; difference the solver for re_ref)"}.get(
+                name, " (difference the solver)")
+            raise ValueError(f"derivatives with respect to {name} are not supported: it changes the blade's nodes "
+                             f"(their precomputed Reynolds factors or losses), not the section's constants{hint}")
         x = getattr(params, name)
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise ValueError(f"derivatives: {name} is not a number of the parameter set ({x!r:.40})")
