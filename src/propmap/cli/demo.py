@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, check_out_dir
+from ._common import InputError, PathArg
+from ._paths import check_out_dir
 
 PROP = "apce_8x6"
 PAPER = "gill2017-apc"

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import click
 
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_outputs,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      vehicle_inputs, with_prop_options)
+from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_section_match,
+                      coverage_messages, echo_json, envelope_extremes, load_params, with_prop_options)
+from ._paths import check_outputs, vehicle_inputs
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
 #: --target choices: the targets and their former names (gazebo: the PX4 classic plugin; gill2019: the multinomial)

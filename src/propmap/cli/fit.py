@@ -9,9 +9,9 @@ from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, PropChoice, _is_file, _short, check_outputs, check_section_match,
-                      load_params, option_group, parse_names, refuse_copies, resolve_air, vehicle_inputs, warn,
-                      with_air_options, with_prop_options)
+from ._common import (InputError, PathArg, PropChoice, _short, check_section_match, load_params, option_group,
+                      parse_names, resolve_air, warn, with_air_options, with_prop_options)
+from ._paths import _is_file, check_outputs, refuse_copies, vehicle_inputs
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3

@@ -7,8 +7,9 @@ from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, check_outputs, coverage_messages, envelope_extremes, load_params,
-                      parse_names, refuse_copies, resolve_air, vehicle_inputs, with_air_options)
+from ._common import (InputError, PathArg, coverage_messages, envelope_extremes, load_params, parse_names,
+                      resolve_air, with_air_options)
+from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from .fit import _options, _run_fit, _write_outputs, with_fit_options
 
 def _vehicle(path: Path):

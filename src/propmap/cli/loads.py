@@ -9,9 +9,10 @@ from pathlib import Path
 
 import click
 
-from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_outputs,
-                      check_point, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
+from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_point,
+                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, resolve_air,
+                      set_collective_deg, with_air_options, with_prop_options)
+from ._paths import check_outputs
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",

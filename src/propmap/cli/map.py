@@ -11,10 +11,10 @@ from pathlib import Path
 
 import click
 
-from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_out_dir, check_outputs,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, given, load_params,
-                      option_group, parse_names, resolve_air, set_collective_deg, vehicle_inputs, with_air_options,
-                      with_prop_options)
+from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match,
+                      coverage_messages, echo_json, envelope_extremes, given, load_params, option_group, parse_names,
+                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
+from ._paths import check_out_dir, check_outputs, vehicle_inputs
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000

@@ -7,8 +7,9 @@ import os
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, air_label, check_out_dir, check_outputs, echo_json,
-                      load_params, parse_names, resolve_air, warn, with_air_options, with_prop_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, air_label, echo_json, load_params, parse_names, resolve_air,
+                      warn, with_air_options, with_prop_options)
+from ._paths import check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
 
 

@@ -1,0 +1,190 @@
+"""What a command may write and must not: its outputs checked before any work (never an input,
+the package's own files, a folder, a path the system refuses), a file given twice, and the files a
+vehicle file names (inputs too). The checks of docs/cli.md, "Outputs are never inputs"."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from ._common import _SEPARATORS, InputError, _short
+
+__all__ = ["check_out_dir", "check_outputs", "refuse_copies", "vehicle_inputs"]
+
+
+def refuse_copies(paths, option: str, consequence: str) -> None:
+    """Refuse a file given twice under two names: the same file (a symbolic or a hard link) or a
+    byte-identical copy (SHA-256; only files that share a size are read), as ``option: X is the
+    same file as Y: <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
+    import hashlib
+
+    stats = []
+    for p in paths:
+        try:
+            stats.append((p, os.stat(p)))
+        except OSError as exc:  # (named as the option's, as its reader would)
+            why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
+            raise InputError(f"{option}: {_short(str(p))}: {why}") from None
+    sizes = [st.st_size for _, st in stats]
+    seen: dict = {}
+    for p, st in stats:
+        keys = [((st.st_dev, st.st_ino), "the same file as")]
+        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
+            with open(p, "rb") as fh:
+                keys.append((hashlib.file_digest(fh, "sha256").hexdigest(), "a copy of"))
+        for key, what in keys:
+            if key in seen:
+                raise InputError(f"{option}: {_short(str(p))} is {what} {_short(str(seen[key]))}: {consequence}")
+            seen[key] = p
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        if os.path.realpath(a) == os.path.realpath(b):
+            return True
+        return a.exists() and b.exists() and os.path.samefile(a, b)  # hard links
+    except (OSError, ValueError):
+        return False
+
+
+def _is_file(p) -> bool:
+    """Path.is_file() that says False for names the system refuses (too long, NUL)."""
+    try:
+        return Path(p).is_file()
+    except (OSError, ValueError):
+        return False
+
+
+#: the package's own files (catalogue, calibration): never an output
+_PACKAGE_DATA = os.path.realpath(Path(__file__).resolve().parents[1] / "data")
+
+
+def vehicle_inputs(vehicle) -> list:
+    """The files a vehicle TOML names (its rotors' geometry and parameter files: ``[[rotors]]
+    propeller`` and ``params`` entries that are files, as the vehicle reader resolves them,
+    :func:`propmap.vehicle.file.rotor_file_specs`): inputs of any command given the vehicle,
+    never to be written over. Best effort: the vehicle reader reports a malformed file; None
+    or an unreadable file gives []."""
+    from ..vehicle.file import VehicleFileError, rotor_file_specs
+
+    if vehicle is None:
+        return []
+    try:
+        specs = [s for key in ("propeller", "params") for s in rotor_file_specs(vehicle, key)]
+    except VehicleFileError:
+        return []
+    return [Path(s) for s in specs if s is not None and os.path.lexists(s)]
+
+
+def check_outputs(outputs, inputs) -> None:
+    """Refuse, before any work, output paths that would lose data or fail late.
+
+    Parameters
+    ----------
+    outputs : iterable of (str, str or Path)
+        (option, path) of every file a command will write, including files written beside
+        ``--out`` (reports, figures) or inside ``--out-dir``.
+    inputs : iterable of str or Path
+        Every file the command reads (missing ones are ignored).
+
+    Raises
+    ------
+    InputError
+        An empty path, a name the system refuses (too long), an existing folder or other
+        non-regular file (a device such as /dev/null, a pipe), a symbolic link to nothing,
+        a path below a regular file or a dangling link, a folder that cannot be written,
+        a file of the propmap package (its catalogue and calibration), two outputs that
+        are the same file, or a path that resolves to an input file (also through ``..``,
+        symbolic links or hard links).
+    """
+    ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
+    seen: dict[str, str] = {}
+    for option, path in outputs:
+        if path is None:
+            continue
+        if str(path) == "":
+            raise InputError(f"{option}: the path is empty")
+        if isinstance(path, str) and path.endswith(_SEPARATORS):  # (a Path has dropped the separator)
+            raise InputError(f"{option}: {path} names a folder (it ends with {path[-1]!r}): give a file's name")
+        p = Path(path)
+        try:
+            _check_output(option, p, ins)
+            real = os.path.realpath(p)
+        except OSError as exc:
+            raise InputError(f"{option}: {exc.strerror or exc} ({str(p)[:80]}{'...' if len(str(p)) > 80 else ''})") \
+                from None
+        if real in seen:
+            raise InputError(f"{option}: {p} is also the file of {seen[real]}; give outputs different names")
+        seen[real] = option
+
+
+def _check_output(option: str, p: Path, ins) -> None:
+    for inp in ins:
+        if _same_file(p, inp):
+            raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")
+    real = os.path.realpath(p)
+    if real == _PACKAGE_DATA or real.startswith(_PACKAGE_DATA + os.sep):
+        raise InputError(f"{option}: {p} is a file of the propmap package (its bundled data); refusing to write it")
+    if p.is_dir():
+        raise InputError(f"{option}: {p} is a folder; give a file name")
+    if os.path.lexists(p):
+        if p.is_symlink() and not p.exists():
+            raise InputError(f"{option}: {p} is a symbolic link to a missing file; give a file name")
+        if not p.is_file():
+            raise InputError(f"{option}: {p} exists and is not a regular file (a device, pipe or socket); "
+                             "give a file name")
+    parent = p.parent
+    while not os.path.lexists(parent):
+        parent = parent.parent
+    if parent.is_symlink() and not parent.exists():
+        raise InputError(f"{option}: {p} lies below {parent}, a symbolic link to a missing folder")
+    if not parent.is_dir():
+        raise InputError(f"{option}: {p} lies below {parent}, which is a file, not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise InputError(f"{option}: cannot write in {parent} (permission denied)")
+    _probe(option, parent, p.name)
+
+
+def _probe(option: str, folder: Path, name: str) -> None:
+    """Create and remove, in ``folder``, the temporary file that writing ``name`` will use
+    (io.atomic): what the access bits do not tell (a read-only file system, /proc, root on
+    a folder without write permission), and a name too long once the temporary file's
+    prefix and suffix are added, found now instead of after the work."""
+    import errno
+    import tempfile
+
+    from ..io.atomic import temp_affixes
+
+    prefix, suffix = temp_affixes(name)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=folder)
+    except OSError as exc:
+        if exc.errno == errno.ENAMETOOLONG:
+            try:
+                name_max = os.pathconf(folder, "PC_NAME_MAX")
+            except (OSError, ValueError):
+                name_max = 255
+            most = name_max - (len(prefix) + len(suffix) + 8 - len(name))  # mkstemp adds 8 characters
+            raise InputError(f"{option}: the name {_short(name)!r} ({len(name)} characters) is too long with the "
+                             f"temporary file's affixes; give at most {most} characters") from None
+        raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
+    try:
+        os.close(fd)
+    finally:
+        os.unlink(tmp)
+
+
+def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
+    """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
+    if out_dir is None or str(out_dir) == "":
+        raise InputError(f"{option}: the path is empty")
+    try:
+        exists = out_dir.exists()
+    except OSError as exc:  # a name too long for the system, a loop of links
+        raise InputError(f"{option}: {str(out_dir)[:80]}{'...' if len(str(out_dir)) > 80 else ''}: "
+                         f"{exc.strerror or exc}") from None
+    if exists and not out_dir.is_dir():
+        raise InputError(f"{option}: {out_dir} exists and is not a folder")
+    paths = [out_dir / n for n in names]
+    check_outputs([(option, p) for p in paths], inputs)
+    return paths
