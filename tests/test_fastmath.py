@@ -12,7 +12,7 @@ import pytest
 from propmap.core import _annulus, _fastmath
 import propmap as pm
 from propmap.core._physics import element, loss_factor_numpy
-from propmap.core.airfoil import _model_constants
+from propmap.core.polar import _model_constants
 
 ROOT = Path(__file__).resolve().parents[1]
 

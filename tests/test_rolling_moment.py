@@ -13,7 +13,7 @@ import pytest
 
 import propmap as pm
 from propmap.core._physics import element
-from propmap.core.airfoil import _model_constants
+from propmap.core.polar import _model_constants
 from propmap.core.nodes import _nodes
 
 from .conftest import RPM

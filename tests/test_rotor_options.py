@@ -85,7 +85,7 @@ def test_radial_drag_of_a_linear_inflow_against_a_numpy_quadrature(prop, generic
     np.testing.assert_array_equal(r_on.v_i, r_off.v_i)
     vbar = pm.rotor_loads(prop, generic, om, V, b).v_i_mean  # the uniform solution sets the wake skew
     nd = _nodes(prop, 48, 16, generic.air, on)
-    from propmap.core.airfoil import _model_constants
+    from propmap.core.polar import _model_constants
     from propmap.core.nodes import _cambered_args
 
     model, pk = _model_constants(on)

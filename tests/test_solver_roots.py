@@ -15,7 +15,7 @@ import pytest
 import propmap as pm
 from propmap.core._physics import NODE_TH, element, momentum_thrust
 from propmap.core._reference import solve_reference
-from propmap.core.airfoil import _model_constants
+from propmap.core.polar import _model_constants
 from propmap.core.nodes import _nodes
 
 from .conftest import RPM

@@ -43,7 +43,7 @@ from propmap.core import _annulus as K
 from propmap.core.nodes import _cambered_args, _nodes
 from propmap.core._physics import (PK_INPLANE, cambered_annulus, element, inplane_induction_numpy,
                                    loss_factor_numpy, momentum_scale, momentum_thrust)
-from propmap.core.airfoil import _model_constants
+from propmap.core.polar import _model_constants
 from propmap.core._reference import solve_reference
 
 prop = pm.load_propeller("apce_8x6")

@@ -26,7 +26,7 @@ import pandas as pd
 from scipy.optimize import least_squares
 
 import propmap as pm
-from propmap.core.airfoil import drag_coefficient, lift_coefficient
+from propmap.core.polar import drag_coefficient, lift_coefficient
 from propmap.io.atomic import atomic_write
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -17,8 +17,8 @@ __version__ = "0.1.0"
 
 _EXPORTS = {
     "Air": "core.air", "AirfoilParams": "core.airfoil", "CamberedParams": "core.airfoil",
-    "PRESETS": "core.airfoil", "preset": "core.airfoil", "lift_coefficient": "core.airfoil",
-    "drag_coefficient": "core.airfoil", "Propeller": "core.geometry", "HoverModel": "core.hover",
+    "PRESETS": "core.airfoil", "preset": "core.airfoil", "lift_coefficient": "core.polar",
+    "drag_coefficient": "core.polar", "Propeller": "core.geometry", "HoverModel": "core.hover",
     "Discretization": "core.solver", "DEFAULT_DISCRETIZATION": "core.solver", "RotorLoads": "core.solver",
     "SolverError": "core.solver", "rotor_loads": "core.solver", "RotorWrench": "core.vector",
     "rotor_wrench": "core.vector", "catalogue": "io.catalogue", "load_propeller": "io.catalogue",

@@ -9,7 +9,7 @@ from .._lazy import lazy_exports
 
 _EXPORTS = {
     "Air": "air", "AirfoilParams": "airfoil", "CamberedParams": "airfoil", "PRESETS": "airfoil",
-    "preset": "airfoil", "lift_coefficient": "airfoil", "drag_coefficient": "airfoil", "Propeller": "geometry",
+    "preset": "airfoil", "lift_coefficient": "polar", "drag_coefficient": "polar", "Propeller": "geometry",
     "HoverModel": "hover", "Discretization": "solver", "DEFAULT_DISCRETIZATION": "solver", "RotorLoads": "solver",
     "SolverError": "solver", "rotor_loads": "solver", "RotorWrench": "vector", "rotor_wrench": "vector",
 }

@@ -57,7 +57,8 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
     """(T, D, Q, v_i, converged, dT/dy, dQ/dy) with the annuli's swirl ``u`` (n, nr) [m/s] or None."""
     if p.inflow != "uniform" or p.flap_compliance > 0:
         raise ValueError("the NumPy reference solves the uniform inflow of rigid blades only")
-    from .airfoil import Air, _model_constants
+    from .airfoil import Air
+    from .polar import _model_constants
     from .nodes import _cambered_args
 
     air = air or Air()

@@ -11,7 +11,8 @@ from dataclasses import replace as dc_replace
 import numpy as np
 
 from . import _physics as ph
-from .airfoil import RECORD_META, SectionParams, _model_constants
+from .airfoil import RECORD_META, SectionParams
+from .polar import _model_constants
 from .flapping import COMPLIANCE
 from .nodes import _cambered_args, _nodes
 

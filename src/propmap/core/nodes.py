@@ -12,7 +12,8 @@ import numpy as np
 
 from . import _flags
 from . import _physics as ph
-from .airfoil import Air, CamberedParams, SectionParams, _model_constants
+from .airfoil import Air, CamberedParams, SectionParams
+from .polar import _model_constants
 from .geometry import Propeller
 from .states import BAND_ARRAY, K_WINDMILL
 
