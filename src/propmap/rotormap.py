@@ -440,10 +440,7 @@ class RotorMap:
         "raise": the general path then answers (and raises what it raises)."""
         v, a, omega = _three(velocity), _three(axis), _plain(omega)
         if v is None or a is None or omega is None or omega != omega:
-            return None
-        vx, vy, vz = v.tolist()
-        if not (abs(vx) < VELOCITY_MAX and abs(vy) < VELOCITY_MAX and abs(vz) < VELOCITY_MAX):
-            return None  # (a huge or non-finite velocity: the general path refuses it, naming it)
+            return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
             float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
