@@ -10,7 +10,7 @@ base set (normally the catalogue-fitted ``generic`` set).
   propellers can be fitted jointly (:func:`fit_loads_joint`), each weighted alike.
 
 This module holds the load data's residuals; they, level flight's (eqs 16-18,
-identify/level_flight_fit.py, re-exported here) and the flight logs' (identify/flight.py)
+identify/level_flight_fit.py; propmap.identify exports both) and the flight logs' (identify/flight.py)
 share one engine: identify/options.py (what is fitted, bounds,
 :class:`FitOptions`), identify/engine.py (prior, solve, directions, report),
 identify/continuation.py (the continuation in M) and identify/result.py
