@@ -104,6 +104,7 @@ class VehicleMap:
         self._pos, self._axes, self._spins, self._h = rotor_geometry(vehicle)
         # the same as Python floats and lists, for the one-step path
         self._pos_list = self._pos.tolist()
+        self._reach = float(np.max(np.linalg.norm(self._pos, axis=1))) if len(self._pos) else 0.0  # the longest arm
         self._h_list = self._h.tolist()
         self._spin_list = [float(x) for x in self._spins]
         groups: dict[int, list[int]] = {}
@@ -120,6 +121,14 @@ class VehicleMap:
                           "holds no induced velocity; each rotor is evaluated in the freestream", UserWarning,
                           stacklevel=2)
         self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else float(rho)
+
+    @staticmethod
+    def _check_hub(hub: float) -> None:
+        """Refuse inputs whose bound ``hub`` [m/s] on a rotor hub's velocity component reaches
+        VELOCITY_MAX (the rotors' wrench vectors would overflow; the C header refuses it too)."""
+        if not hub < VELOCITY_MAX:
+            raise ValueError(f"velocity, wind and angular_velocity make a rotor hub's velocity of up to {hub:.3g} m/s "
+                             f"(velocity - wind + angular_velocity x arm); it must stay below {VELOCITY_MAX:g} m/s")
 
     def _step(self, air_v: list, w: list, om: list, out_of_grid: str):
         """One step's (force, moment, flagged), shapes (1, 3), (1, 3), (1,): the sums of
@@ -196,17 +205,15 @@ class VehicleMap:
             raise ValueError("velocity, angular_velocity, rotor_omega and wind must have the same number of samples "
                              f"(or one), got {[a.shape[0] for a in (v, w, om, wind_a)]}")
         N = counts.pop() if counts else 1
-        reach = float(np.max(np.linalg.norm(self._pos, axis=1))) if len(self._pos) else 0.0
-        hub = np.max(np.abs(v - wind_a)) + np.max(np.abs(w)) * reach  # (a bound on every hub's velocity component)
-        if not hub < VELOCITY_MAX:
-            raise ValueError(f"velocity, wind and angular_velocity make a rotor hub's velocity of up to {hub:.3g} m/s "
-                             f"(velocity - wind + angular_velocity x arm); it must stay below {VELOCITY_MAX:g} m/s")
         air_v = np.broadcast_to(v - wind_a, (N, 3))
         w = np.broadcast_to(w, (N, 3))
         om = np.broadcast_to(om, (N, n_rot))
         if N == 1:  # one step (a simulator's call): each rotor through its map's one-rotor path, in floats
-            force, moment, flagged = self._step(air_v[0].tolist(), w[0].tolist(), om[0].tolist(), out_of_grid)
+            v1, w1 = air_v[0].tolist(), w[0].tolist()
+            self._check_hub(max(map(abs, v1)) + max(map(abs, w1)) * self._reach)
+            force, moment, flagged = self._step(v1, w1, om[0].tolist(), out_of_grid)
         else:
+            self._check_hub(float(np.max(np.abs(air_v))) + float(np.max(np.abs(w))) * self._reach)
             v_hub = air_v[:, None, :] + _cross(w[:, None, :], self._pos[None, :, :])  # (N, n_rot, 3)
             force = np.zeros((N, 3))
             moment = np.zeros((N, 3))
