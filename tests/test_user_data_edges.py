@@ -646,3 +646,38 @@ def test_an_incidence_range_ending_at_pi_is_warned_about_as_radians(tmp_path, ca
     code = main(["map", "apce_8x6", "--rpm", "4000:8000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:3:4",
                  "--check-points", "0", "--out", str(tmp_path / "w.nc")])
     assert code == 0 and "radians?" not in capsys.readouterr().err
+
+
+def test_a_designers_slips_are_said(tmp_path, capsys):
+    """A vehicle designer's audit (2026-11-26): a narrow --range-deg ended in an internal
+    'grid_step' error; a thrust in grams got the stall's diagnosis; trim's text left out the
+    descent ratios that docs/cli.md lists; map --json printed no propeller, set or grid; another
+    propeller's calibrated set ran without a word; a mass in grams hovered at tip Mach 3.7 silently."""
+    import dataclasses
+    import json
+
+    from propmap.cli.main import main
+    from propmap.vehicle import hover_omega
+
+    assert main(["trim", "apce_10x5", "--thrust", "3.2", "--rpm", "4816", "--range-deg", "-1", "1"]) == 0
+    assert "collective" in capsys.readouterr().out
+    assert main(["trim", "apce_10x5", "--thrust", "300", "--rpm", "4816"]) == 2
+    err = capsys.readouterr().err
+    assert "spans [-0.243082, 3.84921] N: 77.9 times the most it reaches; is the thrust in grams?" in err
+    assert "stalls" not in err
+    assert main(["trim", "apce_10x5", "--thrust", "2.9", "--rpm", "4816", "--airspeed", "4", "--incidence-deg",
+                 "180"]) == 0
+    assert "state: vortex ring (v_i/v_h = 1.6" in capsys.readouterr().out
+    assert main(["map", "apce_8x6", "--rpm", "3000:8000:3", "--airspeed", "0:15:4", "--incidence-deg", "0:180:5",
+                 "--check-points", "0", "--out", str(tmp_path / "m.nc"), "--json"]) == 0
+    meta = json.loads(capsys.readouterr().out)["metadata"]
+    assert (meta["propeller"], meta["params_label"]) == ("apce_8x6", "calibrated:apce_8x6")
+    assert meta["dims"] == {"rpm": 3, "airspeed": 4, "incidence_deg": 5} and meta["rho_kg_m3"] == pytest.approx(1.225)
+    assert main(["loads", "apce_10x7", "--rpm", "5000", "--params", "calibrated:apce_10x5"]) == 0
+    said = capsys.readouterr().err
+    assert "apce_10x7 runs with calibrated:apce_10x5, the set calibrated on another propeller" in said
+    assert main(["loads", "apce_10x5", "--rpm", "5000", "--params", "calibrated:apce_10x5"]) == 0
+    assert "another propeller" not in capsys.readouterr().err
+    vehicle = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    with pytest.warns(UserWarning, match=r"at Mach 3\.\d+ in this hover .* is the vehicle's mass 1200 kg in kg"):
+        hover_omega(dataclasses.replace(vehicle, mass=1200.0), pm.generic_params())

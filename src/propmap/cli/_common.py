@@ -190,7 +190,8 @@ def check_section_match(propeller, label: str) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets. Blade angles
-    negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead."""
+    negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead. A
+    set calibrated on another catalogue propeller (``calibrated:NAME``) is warned of too."""
     import numpy as np
 
     from ..core.geometry import rotor_like
@@ -208,6 +209,12 @@ def check_section_match(propeller, label: str) -> None:
         warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "
              f"for a symmetric-section rotor give --params section:NAME ({', '.join(section_presets())}) or a "
              "parameter file fitted to its data")
+    owner = label[len("calibrated:"):] if label.startswith("calibrated:") else None
+    if owner is not None and owner != propeller.name:
+        warn(f"{propeller.name} runs with {label}, the set calibrated on another propeller: such a set predicts even a "
+             "pitch sibling's data to 6.6% of static CT in the median, no better than the generic set (6.2%; "
+             "docs/models.md, The calibrated sets do not pin the response to the collective); give 'generic' or a "
+             "set fitted to this propeller's data")
 
 
 def _short(text, n: int = 80) -> str:

@@ -442,10 +442,13 @@ def _plots(ds, plots) -> list:
 
 def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | None = None) -> None:
     a = ds.attrs
-    if as_json:
+    if as_json:  # (the sidecar's metadata beside the measured error: propeller, set, air, grid; once only the error)
+        from ..io.mapfile import map_metadata
+
         echo_json({"files": [str(f) for f in files], "build_seconds": elapsed,
                    **{k: v for k, v in a.items() if (k.startswith("check_") or k.startswith("model_uncertainty_"))
-                      and not (isinstance(v, float) and math.isnan(v))}})
+                      and not (isinstance(v, float) and math.isnan(v))},
+                   "metadata": map_metadata(ds) if "propeller" in a else None})
         return
     dims = " x ".join(f"{n} {d}" for d, n in ds.sizes.items())
     click.echo(f"map of {a.get('propeller', 'the catalogue')}: {dims} = {math.prod(ds.sizes.values()):,} nodes "

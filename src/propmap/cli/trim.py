@@ -86,7 +86,10 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
     if dcq is not None:
         click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
-    click.echo(f"  state: {out['state']}  flags: {', '.join(out['flags']) or 'none'}")
+    ratios = (f" (v_i/v_h = {out['v_i_over_v_h']:.3f}, lambda2 = V_descent/v_h = "
+              f"{round(out['lambda2'], 3) + 0.0:.3f})" if out["v_i_over_v_h"] is not None and out["lambda2"] is not None
+              else "")  # (as loads says them; no "-0.000")
+    click.echo(f"  state: {out['state']}{ratios}  flags: {', '.join(out['flags']) or 'none'}")
     for f in out["flags"]:
         click.echo(f"    {f}: {FLAG_MEANINGS[f]}")
 

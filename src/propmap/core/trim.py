@@ -33,6 +33,8 @@ from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, R
 
 __all__ = ["TrimError", "TrimResult", "trim_collective", "torque_change_at_constant_thrust"]
 
+#: the bracketing grid's default spacing [rad] (narrowed to the bounds' width where they are narrower)
+GRID_STEP = math.radians(2.5)
 #: the branch :func:`trim_collective` returns, in words (reported with every result)
 BRANCH = "lowest collective that makes the thrust (the first upward crossing on the grid)"
 
@@ -92,7 +94,7 @@ def trim_collective(
     air: Air | None = None,
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     bounds=(-math.radians(20.0), math.radians(30.0)),
-    grid_step: float = math.radians(2.5),
+    grid_step: float | None = None,
     thrust_tol: float = 1e-6,
     on_missing: str = "raise",
 ) -> TrimResult:
@@ -112,8 +114,9 @@ def trim_collective(
     discretization : Discretization, optional
     bounds : (float, float)
         The collectives searched [rad], within [-pi/4, pi/4]; default -20 to +30 deg.
-    grid_step : float
-        Spacing of the bracketing grid [rad] (default 2.5 deg), in (0, bounds width].
+    grid_step : float, optional
+        Spacing of the bracketing grid [rad], in (0, bounds width]; default 2.5 deg, or the
+        bounds' width where that is narrower.
     thrust_tol : float
         Absolute tolerance on T [N] (default 1e-6 N); the collective is also converged to
         1e-10 rad.
@@ -144,6 +147,8 @@ def trim_collective(
     if on_missing not in ("raise", "nan"):
         raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
     lo, hi = _check_bounds(bounds)
+    if grid_step is None:  # (a narrow --range-deg once met 'grid_step must be in (0, 0.0349] rad')
+        grid_step = min(GRID_STEP, hi - lo)
     if not (isinstance(grid_step, (int, float)) and 0 < grid_step <= hi - lo):
         raise ValueError(f"grid_step must be in (0, {hi - lo:.6g}] rad, got {grid_step!r}")
     if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
@@ -173,10 +178,13 @@ def trim_collective(
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
         k = int(np.argmax(Tg[i]))
+        top = float((Tg[i] + T1[i]).max())
         stalls = Tg[i, k] < 0 and 0 < k < m - 1 and Tg[i, k + 1] < Tg[i, k]  # short of the target at a peak inside
         peak = (f", highest near a collective of {round(math.degrees(grid[k]), 6) + 0.0:.4g} deg (grid step "
                 f"{math.degrees(grid[1] - grid[0]):.3g} deg), where the set stalls (docs/models.md, Collective pitch "
                 "as an input, and trim)") if stalls else ""
+        if top > 0 and T1[i] > 10 * top:  # (a thrust in grams or gf: 300 for 2.9 N once got the stall's diagnosis)
+            peak = f": {T1[i] / top:.3g} times the most it reaches; is the thrust in grams? It is in N"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, "

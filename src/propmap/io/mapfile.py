@@ -294,15 +294,23 @@ def _json_safe(value):
     return value
 
 
-def _sidecar_text(ds, describes: dict | None) -> str:
+def map_metadata(ds) -> dict:
+    """A map's metadata as its sidecar holds it (strict JSON values): its attributes (propeller,
+    parameter set, air, model, measured error), ``dims`` (axis sizes), ``axes`` (each axis'
+    first and last value, SI units) and ``variables`` (each variable's unit)."""
     meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
             for k, v in ds.attrs.items()}
     meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
     meta["axes"] = {d: [float(ds[d].values[0]), float(ds[d].values[-1])] for d in DIMS}
     meta["variables"] = {k: ds[k].attrs.get("units", "") for k in ds.data_vars}
+    return _json_safe(meta)
+
+
+def _sidecar_text(ds, describes: dict | None) -> str:
+    meta = map_metadata(ds)
     if describes is not None:
         meta["describes"] = describes
-    return json.dumps(_json_safe(meta), indent=2, allow_nan=False)
+    return json.dumps(meta, indent=2, allow_nan=False)
 
 
 def write_with_sidecar(ds, path, write) -> list[Path]:

@@ -38,7 +38,8 @@ import numpy as np
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool
-from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads,
+from ..core.air import SUPERSONIC_TIP
+from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, TIP_MACH_WARN, Discretization, RotorLoads,
                            rotor_loads, supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
@@ -514,6 +515,12 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     ValueError
         The rotors give no upward thrust (axes with a_i . e_z <= 0), or the weight needs
         more than the solver's 1e5 rad/s.
+
+    Warns
+    -----
+    UserWarning
+        A hover whose blade tips meet the air beyond Mach 0.8 (the solver's TIP_MACH_WARN: a
+        mass in grams, 1200 for 1.2 kg, hovered at tip Mach 3.7 without a word).
     SolverError
         A static solve fails (as :func:`propmap.rotor_loads`).
     """
@@ -540,4 +547,12 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
             raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than {hi / 2:.4g} rad/s of its "
                              "rotors (the solver's limit is 1e5): "
                              "check its mass and propellers")
-    return float(brentq(lift, 0.1 if hi == 100.0 else hi / 2, hi, xtol=1e-9, rtol=1e-12))
+    omega = float(brentq(lift, 0.1 if hi == 100.0 else hi / 2, hi, xtol=1e-9, rtol=1e-12))
+    mach = omega * max(r.propeller.radius for r in vehicle.rotors) / air.speed_of_sound
+    if mach > TIP_MACH_WARN:  # (the search turned the solver's tip check off: the answer is checked here)
+        import warnings
+
+        warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this hover (Omega {omega:.4g} rad/s, {omega * 30 / np.pi:.0f} "
+                      f"rpm): is the vehicle's mass {vehicle.mass:g} kg in kg, and its rotors the ones it flies?",
+                      UserWarning, stacklevel=2)
+    return omega
