@@ -325,16 +325,12 @@ def default_params(name: str) -> SectionParams:
     if c is not None:
         return c.params
     if isinstance(name, str) and name.strip():
-        import difflib
         import warnings
 
-        from .catalogue import catalogue
+        from .catalogue import catalogue, near
 
-        names = list(catalogue())
-        if name not in names:
-            near = [n for n in names if n.lower() == name.strip().lower()] or difflib.get_close_matches(
-                name.strip(), names, n=3, cutoff=0.8)
-            if near:
-                warnings.warn(f"default_params: {name!r} is not a catalogue propeller, so this is the generic set; "
-                              f"did you mean {', '.join(near)}?", UserWarning, stacklevel=2)
+        found = [] if name in catalogue() else near(name, catalogue(), cutoff=0.8)
+        if found:
+            warnings.warn(f"default_params: {name!r} is not a catalogue propeller, so this is the generic set; "
+                          f"did you mean {', '.join(found)}?", UserWarning, stacklevel=2)
     return calibration()["generic"].params

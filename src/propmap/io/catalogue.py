@@ -18,7 +18,8 @@ from ..core.geometry import INCH, Propeller
 from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
-__all__ = ["CatalogueEntry", "catalogue", "get_entry", "load_propeller", "resolve_propeller"]
+__all__ = ["CatalogueEntry", "catalogue", "get_entry", "load_propeller", "near", "near_names",
+           "resolve_propeller"]
 
 UIUC_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255")
 UIUC_V2_CITATION = ("UIUC Propeller Data Site vol. 2, Deters, Ananda & Selig, AIAA 2014-2151")
@@ -133,12 +134,25 @@ def get_entry(name: str) -> CatalogueEntry:
         raise TypeError(f"name must be a catalogue propeller's name (str), got {type(name).__name__}")
     cat = catalogue()
     if name not in cat:
-        import difflib
-
-        near = difflib.get_close_matches(name, cat, n=3)
-        hint = f"; did you mean {', '.join(near)}?" if near else "; run 'propmap props' for the list"
-        raise KeyError(f"unknown propeller {name!r}{hint}")
+        raise KeyError(f"unknown propeller {name!r}{near_names(name, cat)}")
     return cat[name]
+
+
+def near(name: str, names, cutoff: float = 0.6) -> list[str]:
+    """The ``names`` near ``name``: the same but for case and blanks, else difflib's close
+    matches (at most 3, ratio ``cutoff`` or more)."""
+    import difflib
+
+    names = list(names)
+    return [n for n in names if n.lower() == name.strip().lower()] or difflib.get_close_matches(
+        name.strip(), names, n=3, cutoff=cutoff)
+
+
+def near_names(name: str, names) -> str:
+    """'; did you mean A, B?' for the ``names`` :func:`near` ``name``, else a pointer to
+    ``propmap props``."""
+    found = near(name, names)
+    return f"; did you mean {', '.join(found)}?" if found else "; run 'propmap props' for the list"
 
 
 @functools.lru_cache(maxsize=256)

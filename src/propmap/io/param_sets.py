@@ -106,8 +106,10 @@ def resolve_params(spec: str) -> SectionParams:
     if spec.startswith("calibrated:"):
         c = calibrated(spec.split(":", 1)[1])
         if c is None:
-            raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set "
-                           "('propmap props' lists the calibrated propellers)")
+            from .catalogue import catalogue, near_names
+
+            raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set"
+                           f"{near_names(spec.split(':', 1)[1], catalogue())}")
         return c.params
     if Path(spec).is_file():
         return read_params(spec)
