@@ -681,3 +681,25 @@ def test_a_designers_slips_are_said(tmp_path, capsys):
     vehicle = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
     with pytest.warns(UserWarning, match=r"at Mach 3\.\d+ in this hover .* is the vehicle's mass 1200 kg in kg"):
         hover_omega(dataclasses.replace(vehicle, mass=1200.0), pm.generic_params())
+
+
+def test_uiuc_format_files_of_one_run_name_are_one_group_each(tmp_path, shared_data, capsys):
+    """The docs' own example, `fit loads static.txt sweep_4000.txt sweep_6000.txt`, merged both
+    sweeps into one group 'sweep' (the run name of <fam>_<D>x<P>_<run>_<RPM>.txt), so that
+    --holdout sweep_6000 was refused and --holdout sweep left a static-only fit (audit,
+    2026-11-26). Data: UIUC Propeller Data Site vol. 1, apce_9x6."""
+    import shutil
+
+    from propmap.cli.main import main
+    from propmap.identify import loads_from_uiuc_files
+
+    src = shared_data / "uiuc_propdb" / "v1"
+    for name, new in (("apce_9x6_static_rd0987.txt", "static.txt"), ("apce_9x6_rd0988_4003.txt", "sweep_4000.txt"),
+                      ("apce_9x6_rd0992_6015.txt", "sweep_6000.txt")):
+        shutil.copy(src / name, tmp_path / new)
+    files = [tmp_path / f for f in ("static.txt", "sweep_4000.txt", "sweep_6000.txt")]
+    data = loads_from_uiuc_files(files, 9 * 0.0254)
+    assert sorted(set(data.group)) == ["static_static", "sweep_4000", "sweep_6000"]
+    code = main(["fit", "loads", *map(str, files), "--prop", "apce_9x6", "--out", str(tmp_path / "p.toml"),
+                 "--holdout", "sweep_6000"])
+    assert code == 0, capsys.readouterr().err

@@ -13,6 +13,7 @@ identify/csvfile.py.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 import numbers
 
 import numpy as np
@@ -129,13 +130,17 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
 def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -> LoadData:
     """Thrust and torque from the runs' coefficients; ``files``: each run's file (statics, then sweeps)."""
     om, V, T, Q, grp = [], [], [], [], []
-    for s in statics:
+    labels = [f"static_{s.run_id}" for s in statics] + [w.run_id for w in sweeps]
+    if files is not None and len(set(labels)) < len(labels):  # (two files of one run name, e.g. sweep_4000.txt and
+        # sweep_6000.txt, both run 'sweep': each file its own group, named by its stem, so that one can be held out)
+        labels = [Path(f).stem if labels.count(lab) > 1 else lab for lab, f in zip(labels, files)]
+    for s, label in zip(statics, labels):
         n = s.rpm / 60
-        om.append(2 * math.pi * n), V.append(0 * n), grp.append(np.full(n.size, f"static_{s.run_id}"))
+        om.append(2 * math.pi * n), V.append(0 * n), grp.append(np.full(n.size, label))
         T.append(s.CT * air.rho * n**2 * diameter**4), Q.append(s.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
-    for w in sweeps:
+    for w, label in zip(sweeps, labels[len(statics):]):
         n = np.full(w.J.size, w.rpm / 60)
-        om.append(2 * math.pi * n), V.append(w.J * n * diameter), grp.append(np.full(n.size, w.run_id))
+        om.append(2 * math.pi * n), V.append(w.J * n * diameter), grp.append(np.full(n.size, label))
         T.append(w.CT * air.rho * n**2 * diameter**4), Q.append(w.CP * air.rho * n**2 * diameter**5 / (2 * math.pi))
     if not om:
         raise DataError(f"{name} has no measurements")
