@@ -462,6 +462,13 @@ def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
     g.write_text(f.read_text())
     assert main(["validate", str(g), "--prop", "apce_8x6", "--params", str(out)]) == 0
     assert "(fitted)" not in capsys.readouterr().out
+    # nor another day's file of the same name (the audit's otherday/runs.csv read as in-sample): its content differs
+    other_day = tmp_path / "otherday"
+    other_day.mkdir()
+    (other_day / "runs.csv").write_text(f.read_text().replace("\n3000.0,0.0,", "\n3000.0,0.0,1", 1))
+    assert len(cov["data_sha256"]) == 64
+    assert main(["validate", str(other_day / "runs.csv"), "--prop", "apce_8x6", "--params", str(out)]) == 0
+    assert "(fitted)" not in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("bad, match", [('data = 5', "data must be a text"), ('groups = "s0"', "groups must be a list"),

@@ -219,6 +219,22 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
+def data_digest(sources) -> str:
+    """SHA-256 over the SOURCE arguments' contents in their order (a catalogue name: its name):
+    what tells a fit's data from another file of the same name (``[coverage] data_sha256``)."""
+    import hashlib
+
+    h = hashlib.sha256()
+    for s in sources:
+        p = Path(s)
+        if _is_file(p):
+            with open(p, "rb") as fh:
+                h.update(hashlib.file_digest(fh, "sha256").digest())
+        else:
+            h.update(str(s).encode())
+    return h.hexdigest()
+
+
 def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,
                   min_points: int = 6):
     """(data, propeller, catalogue entry or None, label) from the SOURCE arguments (a CSV of at
@@ -462,8 +478,9 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 for name in model)
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
-    coverage = {**_coverage(train, prop), "data": label, "groups": [str(g) for g in dict.fromkeys(train.group)],
-                "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample)
+    coverage = {**_coverage(train, prop), "data": label, "data_sha256": data_digest(sources),
+                "groups": [str(g) for g in dict.fromkeys(train.group)],
+                "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
                           f"{air.rho:.4g} kg/m^3")

@@ -174,9 +174,13 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     # which groups the parameter file's fit saw or held out (its [coverage] table), where it was fitted to this data
     from ..io.params_file import set_coverage
 
+    from .fit import data_digest
+
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
     in_fit = {}
-    if cov.get("data") == what:
+    digest = data_digest(sources)
+    if cov.get("data") == what and cov.get("data_sha256", digest) == digest:  # (by content: another day's file of
+        # the same name once read as this fit's data; a file written before 2026-11-26 has the name only)
         in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in
                   (e["groups"] or {"all": None}) if g in cov.get("held_out", ()) or g in cov.get("groups", ())}
     if as_json:

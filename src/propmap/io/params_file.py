@@ -99,8 +99,8 @@ from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_M
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
 from .inputs import show_path
-from .params_tables import (BODY_TABLE, COVERAGE_KEYS, COVERAGE_TABLE, COVERAGE_TEXT_KEYS, BodyTable, body_from_dict,
-                            check_number, coverage_from_dict, short_repr)
+from .params_tables import (BODY_TABLE, COVERAGE_KEYS, COVERAGE_SINGLE_TEXTS, COVERAGE_TABLE, COVERAGE_TEXT_KEYS,
+                            BodyTable, body_from_dict, check_number, coverage_from_dict, short_repr)
 from .toml_file import load_toml
 
 __all__ = ["ParamsFileError", "BodyTable", "read_params", "read_body", "write_params", "params_to_dict",
@@ -451,8 +451,8 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
             data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
     if coverage:
         data[COVERAGE_TABLE] = {**{k: float(v) for k, v in coverage.items() if k in COVERAGE_KEYS},
-                                **{k: (str(v) if k == "data" else [str(x) for x in v]) for k, v in coverage.items()
-                                   if k in COVERAGE_TEXT_KEYS}}
+                                **{k: (str(v) if k in COVERAGE_SINGLE_TEXTS else [str(x) for x in v])
+                                   for k, v in coverage.items() if k in COVERAGE_TEXT_KEYS}}
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
 

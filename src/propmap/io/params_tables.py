@@ -10,9 +10,8 @@ import math
 import numbers
 from typing import NamedTuple
 
-__all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_TEXT_KEYS", "COVERAGE_TABLE", "BodyTable", "body_from_dict",
-           "check_number",
-           "coverage_from_dict", "short_repr"]
+__all__ = ["BODY_TABLE", "COVERAGE_KEYS", "COVERAGE_SINGLE_TEXTS", "COVERAGE_TEXT_KEYS", "COVERAGE_TABLE", "BodyTable",
+           "body_from_dict", "check_number", "coverage_from_dict", "short_repr"]
 
 BODY_TABLE = "body"
 #: the table of what a fitted set's data covered (warnings when the set is used beyond it)
@@ -21,7 +20,9 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
                  "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
 #: saw and held out, so that `propmap validate` can say which of its rows are in-sample
-COVERAGE_TEXT_KEYS = ("data", "groups", "held_out")
+COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out")
+#: the [coverage] text keys that hold one text (the others a list of texts)
+COVERAGE_SINGLE_TEXTS = ("data", "data_sha256")
 #: the longest text and list of the [coverage] table's text keys
 COVERAGE_TEXT_MAX, COVERAGE_LIST_MAX = 1000, 100_000
 
@@ -59,7 +60,7 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     ------
     ValueError
         Not a table, an unknown key, a value not a number or out of its range, rpm_min above
-        rpm_max, ``data`` not a text of at most 1,000 characters, ``groups`` or ``held_out`` not
+        rpm_max, ``data`` or ``data_sha256`` not a text of at most 1,000 characters, ``groups`` or ``held_out`` not
         a list of such texts (at most 100,000). (Every key is optional: the warnings check those
         given.)
     """
@@ -77,13 +78,13 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
         if k not in COVERAGE_TEXT_KEYS:
             check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
             continue
-        items = [v] if k == "data" else v
+        items = [v] if k in COVERAGE_SINGLE_TEXTS else v
         if not (isinstance(items, list) and len(items) <= COVERAGE_LIST_MAX
                 and all(isinstance(x, str) and len(x) <= COVERAGE_TEXT_MAX for x in items)):
             raise ValueError(f"{where}: [{COVERAGE_TABLE}] {k} must be "
-                             + ("a text" if k == "data" else "a list of texts")
+                             + ("a text" if k in COVERAGE_SINGLE_TEXTS else "a list of texts")
                              + f" of at most {COVERAGE_TEXT_MAX} characters, got {short_repr(v)}")
-        text[k] = v if k == "data" else tuple(v)
+        text[k] = v if k in COVERAGE_SINGLE_TEXTS else tuple(v)
     table = {k: v for k, v in table.items() if k not in COVERAGE_TEXT_KEYS}
     if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
         raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
