@@ -710,3 +710,27 @@ def test_uiuc_format_files_of_one_run_name_are_one_group_each(tmp_path, shared_d
     code = main(["fit", "loads", *map(str, files), "--prop", "apce_9x6", "--out", str(tmp_path / "p.toml"),
                  "--holdout", "sweep_6000"])
     assert code == 0, capsys.readouterr().err
+
+
+@pytest.mark.parametrize("columns, cells, rho", [
+    ("Temperature (C),Pressure (Pa)", "25,90000", 90000 / (287.05 * 298.15)),
+    ("temp,baro", "298.15,900", 90000 / (287.05 * 298.15)),
+    ("air temperature [F],pressure (inHg)", "59,29.92", 1.2250),
+])
+def test_a_load_files_temperature_and_pressure_give_its_air(tmp_path, columns, cells, rho):
+    """A tunnel export's temperature and pressure were ignored: fitted at 1.225 kg/m^3 where they
+    meant 1.052 (identification audit, 2026-11-26)."""
+    from propmap.identify import read_loads
+
+    rows = [f"rpm,airspeed,thrust (N),torque (N m),{columns}"]
+    for rpm in (3000.0, 4000.0, 5000.0, 6000.0, 7000.0, 8000.0):
+        rows.append(f"{rpm},0,{(rpm / 3000) ** 2},{(rpm / 3000) ** 2 / 50},{cells}")
+    f = tmp_path / "tunnel.csv"
+    f.write_text("\n".join(rows) + "\n")
+    data = read_loads(f)
+    assert data.air_density == pytest.approx(rho, rel=2e-3)
+    assert any("air density" in n and "287.05" in n for n in data.notes)
+    one = tmp_path / "one.csv"
+    one.write_text("\n".join(r.rsplit(",", 1)[0] for r in rows) + "\n")
+    data = read_loads(one)
+    assert data.air_density is None and any("is not read without the other" in n for n in data.notes)

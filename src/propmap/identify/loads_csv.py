@@ -179,6 +179,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
     air_density = _air_density(v.pop("air_density", None), cm.column("air_density"), what, p, notes)
+    if air_density is None:  # (a tunnel's temperature and pressure columns were once ignored: sea-level air)
+        air_density = _conditions_density(f, what, p, notes)
     # a "steps" test: one averaged point per ESC step
     group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
              else None)
@@ -287,6 +289,90 @@ def _air_density(rho, column, what: str, p: str, notes: list) -> float | None:
     spread = f" (the rows range {rho.min():.4g}-{rho.max():.4g})" if rho.max() > 1.01 * rho.min() else ""
     notes.append(f"air density {med:.4g} kg/m^3 from {column!r}, the median of its rows{spread}")
     return med
+
+
+#: the names of a load file's air temperature and pressure columns (before a unit in brackets or after '_')
+_T_NAMES = ("temperature", "temp", "air temperature", "air temp", "ambient temperature", "ambient temp", "t air",
+            "tunnel temperature")
+_P_NAMES = ("pressure", "air pressure", "ambient pressure", "barometric pressure", "baro", "barometer",
+            "static pressure", "atmospheric pressure", "p atm", "tunnel static pressure")
+#: their units: name -> (scale, offset) to K and Pa
+_T_UNITS = {"c": (1.0, 273.15), "°c": (1.0, 273.15), "degc": (1.0, 273.15), "deg c": (1.0, 273.15),
+            "celsius": (1.0, 273.15), "k": (1.0, 0.0), "kelvin": (1.0, 0.0), "f": (5 / 9, 255.3722222222222),
+            "°f": (5 / 9, 255.3722222222222), "degf": (5 / 9, 255.3722222222222)}
+_P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
+            "inhg": 3386.389, "mmhg": 133.322387415, "atm": 101325.0}
+
+
+def _split_unit(column: str) -> tuple[str, str | None]:
+    """(name, unit) of a header such as 'Temperature (C)', 'pressure [hPa]' or 'temp_c' (lower case)."""
+    c = column.strip().lower()
+    for o, e in (("(", ")"), ("[", "]")):
+        if o in c and c.endswith(e):
+            return c[:c.index(o)].strip().replace("_", " "), c[c.index(o) + 1:-1].strip()
+    name, _, unit = c.rpartition("_")
+    return (name.replace("_", " "), unit) if name and (unit in _T_UNITS or unit in _P_UNITS) else (c.replace("_", " "),
+                                                                                                    None)
+
+
+def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
+    """The air density [kg/m^3] of a file's temperature and pressure columns (their medians,
+    rho = p / (R T), R = 287.05 J/(kg K)), with a note; None where it has not both. A column
+    without a unit is read by its values' size (T: 150-350 K, else -60-60 degC; p: 5e4-1.1e5 Pa,
+    500-1100 hPa, 50-110 kPa) and said so; a unit not known, or a result outside the air
+    densities of AIR_DENSITY_RANGE, is refused naming the column."""
+    found = {}
+    for c in f.header:
+        name, unit = _split_unit(c)
+        kind = "T" if name in _T_NAMES else "p" if name in _P_NAMES else None
+        if kind and kind not in found:
+            found[kind] = (c, unit)
+    if len(found) < 2:
+        if found:
+            (c, _), = found.values()
+            notes.append(f"{c!r} is not read without the other of temperature and pressure (or a density column): "
+                         "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
+                         "--rho say otherwise")
+        return None
+    raw, _, _ = f.read([found["T"][0].lower(), found["p"][0].lower()], optional={found["T"][0].lower(),
+                                                                                   found["p"][0].lower()})
+    vals = {}
+    for kind, (c, unit) in found.items():
+        x = raw[c.lower()]
+        x = x[np.isfinite(x)]
+        if not x.size:
+            notes.append(f"{c!r} is empty in every row: not read")
+            return None
+        med = float(np.median(x))
+        if kind == "T":
+            if unit is None:
+                unit = "k" if 150 <= med <= 350 else "c" if -60 <= med <= 60 else None
+                if unit is not None:
+                    notes.append(f"{c!r} read in {'K' if unit == 'k' else 'degC'} (its values; no unit in the header)")
+            if unit not in _T_UNITS:
+                raise DataError(f"{what}: {p}: {c!r}: a temperature unit propmap does not know (give degC, K or degF "
+                                "in the header, e.g. 'temperature (C)')")
+            scale, offset = _T_UNITS[unit]
+            vals[kind] = med * scale + offset
+        else:
+            if unit is None:
+                unit = next((u for u, (lo, hi) in (("pa", (5e4, 1.1e5)), ("hpa", (500, 1100)), ("kpa", (50, 110)))
+                             if lo <= med <= hi), None)
+                if unit is not None:
+                    shown = {"pa": "Pa", "hpa": "hPa", "kpa": "kPa"}[unit]
+                    notes.append(f"{c!r} read in {shown} (its values; no unit in the header)")
+            if unit not in _P_UNITS:
+                raise DataError(f"{what}: {p}: {c!r}: a pressure unit propmap does not know (give Pa, hPa, kPa, mbar, "
+                                "bar, psi, inHg or mmHg in the header, e.g. 'pressure (Pa)')")
+            vals[kind] = med * _P_UNITS[unit]
+    rho = vals["p"] / (287.05 * vals["T"])
+    lo, hi = AIR_DENSITY_RANGE
+    if not lo <= rho <= hi:
+        raise DataError(f"{what}: {p}: {found['T'][0]!r} and {found['p'][0]!r} give an air density of {rho:.4g} kg/m^3 "
+                        f"(T {vals['T']:.5g} K, p {vals['p']:.6g} Pa), outside [{lo:g}, {hi:g}]: check their units")
+    notes.append(f"air density {rho:.4g} kg/m^3 from {found['T'][0]!r} and {found['p'][0]!r} (medians, T "
+                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / (287.05 T))")
+    return rho
 
 
 def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:
