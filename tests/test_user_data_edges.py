@@ -734,3 +734,26 @@ def test_a_load_files_temperature_and_pressure_give_its_air(tmp_path, columns, c
     one.write_text("\n".join(r.rsplit(",", 1)[0] for r in rows) + "\n")
     data = read_loads(one)
     assert data.air_density is None and any("is not read without the other" in n for n in data.notes)
+
+
+@pytest.mark.parametrize("factor, unit", [(1 / 0.44704, "mph"), (1 / 0.514444, "knots")])
+def test_an_unlabelled_airspeed_in_mph_or_knots_is_said(tmp_path, factor, unit):
+    """An airspeed column in mph or knots without a unit was fitted with exit 0, six parameters at
+    their bounds and J_max 1.87 in [coverage] for a 9x6 (identification audit, 2026-11-26). None
+    of the 143 catalogue propellers' own data gets this warning (checked 2026-11-26)."""
+    from propmap.identify import read_loads
+    from propmap.identify.data import sanity_check
+
+    prop, params = pm.load_propeller("apce_9x6"), pm.default_params("apce_9x6")
+    rows = ["rpm,airspeed,thrust (N),torque (N m)"]
+    for rpm in (3000.0, 4000.0, 5000.0, 6000.0):
+        for V in (0.0, 3.0, 6.0, 9.0, 12.0):
+            r = pm.rotor_loads(prop, params, rpm * math.pi / 30, V, 0.0)
+            rows.append(f"{rpm},{V * factor},{float(r.thrust)!r},{float(r.torque)!r}")
+    f = tmp_path / "v.csv"
+    f.write_text("\n".join(rows) + "\n")
+    said = sanity_check(read_loads(f), prop)
+    assert any(f"airspeed read as {unit} (is the airspeed column in {unit}?" in w for w in said), said
+    f.write_text("\n".join(r if i == 0 else ",".join([r.split(",")[0], repr(float(r.split(",")[1]) / factor),
+                                                       *r.split(",")[2:]]) for i, r in enumerate(rows)) + "\n")
+    assert not any("airspeed read as" in w for w in sanity_check(read_loads(f), prop))

@@ -23,7 +23,7 @@ from ..io.catalogue import CatalogueEntry
 from ..io.inputs import show_path
 from .csvfile import DataError, RANGES
 from .level_flight import LevelFlightData, body_to_world, read_level_flight, rotor_kinematics
-from .load_data import LoadData
+from .load_data import STATIC_AIRSPEED, LoadData
 from .loads_csv import read_loads
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
@@ -176,6 +176,35 @@ _UNIT_SLIPS = [
 ]
 
 
+#: airspeed units an unlabelled airspeed column may be in, as m/s per unit (mph and knots read as m/s fitted with
+#: exit 0 and six parameters at their bounds; identification audit, 2026-11-26)
+_AIRSPEED_SLIPS = ((0.44704, "mph"), (0.514444, "knots"), (1 / 3.6, "km/h"), (0.3048, "ft/s"))
+
+
+def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
+    """The unit of _AIRSPEED_SLIPS in which the moving points' measured thrust matches the model
+    best, where that is less than half the misfit of m/s (rms of (model - measured) over the
+    largest measured thrust, at 3 moving points or more) and the misfit in m/s exceeds 0.1; else
+    None."""
+    moving = data.airspeed > STATIC_AIRSPEED
+    if "thrust" not in data.measured or "thrust" not in checked or moving.sum() < 3:
+        return None
+    measured = data.measured["thrust"][moving]
+    scale = float(np.nanmax(np.abs(measured), initial=0.0))
+    if not scale > 0:
+        return None
+
+    def misfit(r) -> float:
+        return float(np.sqrt(np.nanmean(((r.thrust[moving] - measured) / scale) ** 2)))
+
+    base = misfit(at_rpm)
+    if not base > 0.1:
+        return None
+    found = {unit: misfit(loads_at(data.omega, data.airspeed * f)) for f, unit in _AIRSPEED_SLIPS}
+    unit = min(found, key=found.get)
+    return unit if found[unit] < 0.5 * base else None
+
+
 def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None, quantities=None) -> list[str]:
     """Refuse load data that cannot be this propeller's in these units; warn of risks.
 
@@ -226,10 +255,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
 
-    def loads_at(omega):  # (rates in the data's unit, right or wrong: the tip Mach number is said above)
+    def loads_at(omega, airspeed=None):  # (rates in the data's unit, right or wrong: the tip Mach number is said above)
         with supersonic_tips_allowed():
-            return rotor_loads(propeller, params, omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                               collective=data.collective)
+            return rotor_loads(propeller, params, omega, data.airspeed if airspeed is None else airspeed,
+                               data.incidence, air=air, on_failure="flag", collective=data.collective)
 
     at_rpm = loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
 
@@ -267,9 +296,12 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
             warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
                              "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
                              "incidence missing (an 'incidence_deg' column)?")
+    speed_slip = _airspeed_slip(data, at_rpm, loads_at, checked)
     ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
-        return warnings_
+        return warnings_ + ([f"the measured thrust at airspeed matches the model far better with the airspeed read as "
+                             f"{speed_slip} (is the airspeed column in {speed_slip}? name its unit, e.g. "
+                             f"'airspeed ({speed_slip})'; it is read in m/s)"] if speed_slip else [])
     bad = {k: v for k, v in ratio.items() if not (1 / SANITY_FACTOR <= v <= SANITY_FACTOR)}
     absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
     if absent:  # a column of zeros (a sensor the stand lacks): said before the 13 solves of the unit-slip search
@@ -279,6 +311,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                         "in the API)")
     causes = [why for fT, fQ, why in _UNIT_SLIPS
               if plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
+    if speed_slip:
+        causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
     # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
     miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
             for pp in range(2, 15)}

@@ -325,8 +325,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                         f"converted, or remove it; left unread, every point would be taken as {default}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
         if maybe:
-            cm.notes.append(f"column {maybe[0]!r} is not read; if it is {what}, name it {read_as} (every point is "
-                            f"taken as {default})")
+            ratio = bases[maybe[0]] in ("j", "mu")  # (an advance ratio is no airspeed: it converts, V = J n D)
+            cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
+                            + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
+                               f"{what}, name it {read_as}") + f" (every point is taken as {default})")
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")
