@@ -197,14 +197,14 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     rows = [("all points", e["overall"])] + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row)
                                              for g, row in e["groups"].items()]
     width = min(max(len(name) for name, _ in rows) + 2, 60)
-    click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>8}{'max':>8}{'n':>5}" for k in keys))
+    click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>10}{'max':>10}{'n':>6}" for k in keys))
 
-    def pct(v, w, sign=""):
-        return f"{'-':>{w}}" if v is None else f"{100 * v:>{sign}{w - 1}.2f}%"
+    def pct(v, w, sign=""):  # (a blank ahead of every number: 121.63% does not run into the next column)
+        return f"{'-':>{w}}" if v is None else " " + f"{100 * v:>{sign}{w - 2}.2f}%"
 
     for name, row in rows:
         click.echo(f"{name[:width - 1]:<{width}}" + "".join(
-            pct(row[k]["rms"], 13) + pct(row[k]["bias"], 8, "+") + pct(row[k]["max"], 8) + f"{row[k]['n']:>5}"
+            pct(row[k]["rms"], 13) + pct(row[k]["bias"], 10, "+") + pct(row[k]["max"], 10) + f"{row[k]['n']:>6}"
             for k in keys))
     if in_fit:
         fitted = sorted(g for g, v in in_fit.items() if v == "fitted")

@@ -267,7 +267,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
     if pole_pairs is not None and not (isinstance(pole_pairs, int) and 1 <= pole_pairs <= 50):
-        raise error(f"pole_pairs must be an integer in [1, 50], got {pole_pairs!r}")
+        raise error(f"pole_pairs (--pole-pairs) must be an integer in [1, 50], got {pole_pairs!r}")
     found = ", ".join(repr(n) for n in names if n.strip())
     speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
     if not speeds:

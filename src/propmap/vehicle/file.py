@@ -295,7 +295,7 @@ def read_vehicle(path) -> Vehicle:
         position = _vec3(r["position"], f"{where} position")
         if np.any(np.abs(position) > POSITION_MAX):
             raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
-                                   f"m, got {_short(r['position'])}")
+                                   f"m, got {_short(r['position'])} (are the positions in metres?)")
         axis = _vec3(r["axis"], f"{where} axis")
         lo, hi = AXIS_LENGTH_RANGE
         scale = float(np.max(np.abs(axis)))
