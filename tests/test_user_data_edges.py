@@ -757,3 +757,24 @@ def test_an_unlabelled_airspeed_in_mph_or_knots_is_said(tmp_path, factor, unit):
     f.write_text("\n".join(r if i == 0 else ",".join([r.split(",")[0], repr(float(r.split(",")[1]) / factor),
                                                        *r.split(",")[2:]]) for i, r in enumerate(rows)) + "\n")
     assert not any("airspeed read as" in w for w in sanity_check(read_loads(f), prop))
+
+
+def test_a_fits_residuals_name_their_points_and_outliers_are_warned(tmp_path):
+    """Residuals were listed as '#5 -0.615' (an index into the stacked vector), and three outliers
+    at 7x the rms passed without a word (identification audit, 2026-11-26)."""
+    from propmap.identify import FitOptions, fit_loads, read_loads
+
+    prop, truth = pm.load_propeller("apce_9x6"), pm.default_params("apce_9x6")
+    rows = ["rpm,airspeed,thrust (N),torque (N m),group"]
+    for rpm in (3000.0, 4000.0, 5000.0, 6000.0):
+        for V in (0.0, 2.0, 4.0, 6.0, 8.0, 10.0):
+            r = pm.rotor_loads(prop, truth, rpm * math.pi / 30, V, 0.0)
+            T = float(r.thrust) * (1.6 if (rpm, V) == (5000.0, 4.0) else 1.0)  # one outlier
+            rows.append(f"{rpm},{V},{T!r},{float(r.torque)!r},r{rpm:.0f}")
+    f = tmp_path / "runs.csv"
+    f.write_text("\n".join(rows) + "\n")
+    res = fit_loads(read_loads(f), prop, options=FitOptions(multistart=0))
+    said = [w for w in res.warnings if "likely outliers" in w]
+    assert said and "thrust, r5000, 5000 rpm, 4 m/s" in said[0], res.warnings
+    assert res.extra["residual_labels"][0] == "thrust, r3000, 3000 rpm, 0 m/s"
+    assert "(thrust, r5000, 5000 rpm, 4 m/s)" in res.report_text()

@@ -300,9 +300,35 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     if prior:
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * data.n, air, extra)
+    result = _traced_residuals(result, data, keys)
     if inplane:
         result = _flap_saturation(result, make_residual(options), options)
     return result if k_dirs == 0 else _directions_report(result, options)
+
+
+#: a data residual beyond this many times the rms residual is named in a warning (a likely outlier)
+OUTLIER_FACTOR = 4.0
+
+
+def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
+    """The fit with each data residual's point named (``extra["residual_labels"]``: the quantity,
+    the group, the rpm and the airspeed; the residual vector stacks the quantities ``keys`` over
+    the data's points), which the text report shows beside the largest, and a warning naming the
+    residuals beyond OUTLIER_FACTOR times the rms (likely outliers: 3 of them at 7x the rms once
+    passed without a word)."""
+    n = data.n
+    r = np.asarray(result.residuals, float)[:n * len(keys)]
+    labels = [f"{k}, {data.group[j]}, {data.omega[j] * 30 / math.pi:.0f} rpm, {data.airspeed[j]:.3g} m/s"
+              for k in keys for j in range(n)]
+    rms = float(np.sqrt(np.mean(r**2))) if r.size else 0.0
+    out = [i for i in np.argsort(-np.abs(r)) if rms > 0 and abs(r[i]) > OUTLIER_FACTOR * rms]
+    warns = list(result.warnings)
+    if out and r.size >= 10:
+        shown = "; ".join(f"{labels[i]} ({r[i] / rms:+.1f}x)" for i in out[:3])
+        warns.append(f"{len(out)} residual(s) beyond {OUTLIER_FACTOR:g} times the rms residual, likely outliers: "
+                     f"{shown}{' ...' if len(out) > 3 else ''} (leave them out of the data, or hold their group out)")
+    return replace(result, warnings=tuple(warns) if isinstance(result.warnings, tuple) else warns,
+                   extra={**result.extra, "residual_labels": labels})
 
 
 def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitResult:

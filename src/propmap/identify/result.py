@@ -225,7 +225,10 @@ class FitResult:
         r = self.residuals
         order = np.argsort(-np.abs(r))[:max_residuals]
         shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
-        lines.append(f"residuals{unit}{shown}: " + ", ".join(f"#{i} {r[i]:+.3g}" for i in order))
+        labels = self.extra.get("residual_labels")  # (load fits: each residual's quantity, group and point)
+        lines.append(f"residuals{unit}{shown}: " + ", ".join(
+            f"#{i} {r[i]:+.3g}" + (f" ({labels[i]})" if labels is not None and i < len(labels) else "")
+            for i in order))
         u = " N" if level else " [-]"
         lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {self.nfev} evaluations "
                      f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
