@@ -167,7 +167,10 @@ _UNIT_SLIPS = [
     (4.4482216152605, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
     (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
+    (1.0, 0.01, "torque in N cm read as N m (name the column 'torque (N cm)')"),
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
+    (1.0, 0.112984829, "torque in lbf in read as N m (name the column 'torque (lbf in)')"),
+    (1.0, 0.00706155181, "torque in ozf in read as N m (name the column 'torque (oz in)')"),
     (1.0, -1.0, ("a torque of the opposite sign, in a run the reader could not orient (no static point, and "
                  "no positive thrust where the propeller is nearest to static): negate the torque column")),
     (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
@@ -313,6 +316,11 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
               if plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
     if speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
+    # a rate in rpm read as rad/s (an omega column holding rpm): 9.55 times too fast, said before the pole pairs
+    rpm_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * math.pi / 30).values()),
+                   default=math.inf)
+    if rpm_miss < math.log(1.6):
+        causes.append("a rotation rate in rpm read as rad/s (an 'omega' column holding rpm: name it rpm)")
     # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
     miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
             for pp in range(2, 15)}
