@@ -802,3 +802,28 @@ def test_the_sanity_checks_causes_name_rpm_as_rad_per_s_and_small_torque_units(t
     f.write_text("\n".join(rows) + "\n")
     with pytest.raises(DataError, match=re.escape(cause)):
         sanity_check(read_loads(f), prop)
+
+
+def test_a_held_out_group_predicted_worse_than_by_the_base_set_is_said(tmp_path, capsys):
+    """A CSV fit's held-out rmse against the base set was printed without comment where the fitted
+    set did worse (identification audit, 2026-11-26). UIUC Propeller Data Site vol. 1, apce_9x6,
+    written as a stand's CSV: the 5000-rpm sweep rd0990's torque (the fit's rmse 3.8x the
+    generic set's) is, the 6038-rpm sweep rd0991 (better on both) is not."""
+    from propmap.cli.main import main
+    from propmap.identify import loads_from_catalogue
+    from propmap.io.catalogue import catalogue
+
+    prop = pm.load_propeller("apce_9x6")
+    d = loads_from_catalogue(catalogue()["apce_9x6"], prop.diameter)
+    rows = ["rpm,airspeed,thrust (N),torque (N m),group"]
+    rows += [f"{float(w * 30 / math.pi)!r},{float(V)!r},{float(T)!r},{float(Q)!r},{g}" for w, V, T, Q, g in
+             zip(d.omega, d.airspeed, d.measured["thrust"], d.measured["torque"], d.group)]
+    f = tmp_path / "runs.csv"
+    f.write_text("\n".join(rows) + "\n")
+    assert main(["fit", "loads", str(f), "--prop", "apce_9x6", "--out", str(tmp_path / "a.toml"),
+                 "--holdout", "rd0990"]) == 0
+    err = capsys.readouterr().err
+    assert "the fitted set predicts the held-out rd0990 25% or more worse than generic does (torque rmse" in err
+    assert main(["fit", "loads", str(f), "--prop", "apce_9x6", "--out", str(tmp_path / "b.toml"),
+                 "--holdout", "rd0991"]) == 0
+    assert "worse than" not in capsys.readouterr().err

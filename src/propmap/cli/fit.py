@@ -477,6 +477,12 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 f"{name}: " + ", ".join(f"{k} {v:.4g} {units[k.removesuffix('_rmse')]}" for k, v in
                                         res.extra["holdout"][name].items())
                 for name in model)
+            fitted, blind = res.extra["holdout"]["fitted"], res.extra["holdout"][base_label]
+            worse = [k.removesuffix("_rmse") for k in fitted if fitted[k] > 1.25 * blind[k]]  # (by 25%: not noise)
+            if worse:  # (said: a fit that predicts its held-out groups worse than its unfitted base learned the others)
+                said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
+                warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
+                     f"({said}): what it learned from the fitted groups does not carry to these")
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
     coverage = {**_coverage(train, prop), "data": label, "data_sha256": data_digest(sources),
