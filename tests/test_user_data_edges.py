@@ -827,3 +827,18 @@ def test_a_held_out_group_predicted_worse_than_by_the_base_set_is_said(tmp_path,
     assert main(["fit", "loads", str(f), "--prop", "apce_9x6", "--out", str(tmp_path / "b.toml"),
                  "--holdout", "rd0991"]) == 0
     assert "worse than" not in capsys.readouterr().err
+
+
+def test_a_stands_thrust_at_rest_is_said_where_its_rows_are_skipped(tmp_path):
+    """A stand's non-zero thrust at 0 rpm (a tare of 0.021 N, about 5% of the lowest step) was
+    dropped with the stopped rows without a word (identification audit, 2026-11-26)."""
+    from propmap.identify import read_loads
+
+    rows = ["rpm,thrust (N),torque (N m)", "0,0.021,0", "0,0.020,0"]
+    rows += [f"{r},{(r / 3000) ** 2 + 0.021},{(r / 3000) ** 2 / 50}" for r in range(3000, 9000, 1000)]
+    f = tmp_path / "stand.csv"
+    f.write_text("\n".join(rows) + "\n")
+    said = [n for n in read_loads(f).notes if "rpm 0" in n]
+    assert said and "their thrust reads 0.0205 N in the median" in said[0] and "tare it first" in said[0]
+    f.write_text("\n".join(r.replace("0,0.021,0", "0,0,0").replace("0,0.020,0", "0,0,0") for r in rows) + "\n")
+    assert not any("tare" in n for n in read_loads(f).notes)

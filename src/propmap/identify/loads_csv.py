@@ -168,9 +168,19 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         if "thrust" in v:  # a speed of 0 with a thrust: the reading is missing, not the motor stopped
             t = np.abs(np.nan_to_num(v["thrust"]))
             running = int(np.sum(stopped & (t > 0.05 * max(float(t.max(initial=0.0)), 1e-300))))
+        tare = ""
+        if "thrust" in v and not running:  # (a stand's zero: its thrust at rest, which propmap does not subtract)
+            thrust = np.asarray(v["thrust"], float)
+            rest, moving = thrust[stopped], np.abs(thrust[~stopped])
+            rest, moving = rest[np.isfinite(rest)], moving[np.isfinite(moving)]
+            zero = float(np.median(rest)) if rest.size else 0.0
+            low = float(np.percentile(moving, 10)) if moving.size else 0.0  # (the lowest steps: a tare hurts them most)
+            if low > 0 and abs(zero) > 0.01 * low:
+                tare = (f"; their thrust reads {zero:.4g} N in the median ({abs(zero) / low:.1%} of the lowest running "
+                        "steps'), a stand's zero offset? propmap fits the thrust as written: tare it first")
         notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor"
                      + (f"; {running} of them with a thrust above 5% of the largest: a speed reading missing while "
-                        "the motor ran (those points are lost)" if running else ""))
+                        "the motor ran (those points are lost)" if running else "") + tare)
         keep = ~stopped
         v = {k: a[keep] for k, a in v.items()}
         lines = lines[keep]
