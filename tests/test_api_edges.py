@@ -87,16 +87,18 @@ def test_quantities_given_as_one_string_is_refused():
 
 def test_hover_model_keeps_its_air_and_checks_its_rates(apc):
     """CT of a model built at 3,000 m was computed at sea level (0.0827 against 0.1115); thrust of
-    NaN, -800 and '800' rad/s returned numbers."""
+    NaN and '800' rad/s returned numbers."""
     prop, params = apc
     air = pm.Air.isa(3000.0)
     h = pm.HoverModel.from_model(prop, params, 1000.0, air=air)
     r = pm.rotor_loads(prop, params, 1000.0, 0.0, 0.0, air=air)
     assert h.CT() == pytest.approx(float(r.CT), rel=1e-12) and h.CP() == pytest.approx(float(r.CP), rel=1e-12)
     assert h.CT(prop.diameter, air=pm.Air()) == pytest.approx(float(r.CT) * air.rho / pm.Air().rho, rel=1e-12)
-    for bad in (float("nan"), -800.0, "800"):
+    for bad in (float("nan"), "800", [800.0, float("inf")]):
         with pytest.raises(ValueError, match="omega"):
             h.thrust(bad)
+    assert h.thrust(-800.0) == h.thrust(800.0)  # (a simulator's signed rate: its magnitude)
+    assert h == pm.HoverModel(h.k_T, h.k_Q)  # (the recorded air and diameter are context, not the model)
     with pytest.raises(ValueError, match="diameter is needed"):
         pm.HoverModel(1e-5, 1e-7).CT()
 

@@ -220,6 +220,14 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 
+def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[str]:
+    """The fitted ``quantities`` whose held-out rmse (``fitted[q + '_rmse']``) exceeds the base
+    set's by 25% and by more than 2% of the quantity's largest measured magnitude (``largest``):
+    what ``fit loads --holdout`` warns of (not noise: below either margin it is not said)."""
+    return [q for q in quantities if q + "_rmse" in fitted and fitted[q + "_rmse"] > 1.25 * base[q + "_rmse"]
+            and fitted[q + "_rmse"] - base[q + "_rmse"] > 0.02 * largest[q]]
+
+
 def data_digest(sources) -> str:
     """SHA-256 over the SOURCE arguments' contents in their order (a catalogue name: its name):
     what tells a fit's data from another file of the same name (``[coverage] data_sha256``)."""
@@ -478,7 +486,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                                         res.extra["holdout"][name].items())
                 for name in model)
             fitted, blind = res.extra["holdout"]["fitted"], res.extra["holdout"][base_label]
-            worse = [k.removesuffix("_rmse") for k in fitted if fitted[k] > 1.25 * blind[k]]  # (by 25%: not noise)
+            top = {k: float(np.nanmax(np.abs(data.measured[k]), initial=0.0)) for k in data.measured}
+            worse = held_out_worse(fitted, blind, top, res.extra.get("quantities", list(data.measured)))
             if worse:  # (said: a fit that predicts its held-out groups worse than its unfitted base learned the others)
                 said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
                 warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "

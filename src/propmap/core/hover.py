@@ -7,15 +7,26 @@ approximation"); propmap keeps it for the same comparison.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller
-from .solver import DEFAULT_DISCRETIZATION, Discretization, _as_array, check_model_args, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
+
+
+def _finite_rates(omega) -> np.ndarray:
+    """``omega`` as a float array, refused (ValueError naming it) where not all finite numbers."""
+    try:
+        w = np.asarray(omega, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"omega must be a number or an array of numbers [rad/s], got {omega!r:.60}") from None
+    if isinstance(omega, str) or not np.all(np.isfinite(w)):
+        raise ValueError(f"omega must be finite numbers [rad/s], got {omega!r:.60}")
+    return w
 
 
 @dataclass(frozen=True)
@@ -37,8 +48,8 @@ class HoverModel:
 
     k_T: float
     k_Q: float
-    rho: float | None = None
-    diameter: float | None = None
+    rho: float | None = field(default=None, compare=False)  # (the constants make the model; these are context)
+    diameter: float | None = field(default=None, compare=False)
 
     def __post_init__(self) -> None:
         for name in ("k_T", "k_Q"):
@@ -101,19 +112,21 @@ class HoverModel:
                    float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3, rho=float(air.rho), diameter=float(diameter))
 
     def thrust(self, omega) -> np.ndarray:
-        """T [N] at Omega [rad/s] (any shape; checked as :func:`propmap.rotor_loads` checks it:
-        a number in [0, 1e5] rad/s, else ValueError)."""
-        return self.k_T * _as_array("omega", omega) ** 2
+        """T [N] at Omega [rad/s] (any shape; a signed rate gives its magnitude's thrust). Raises
+        ValueError for a value that is not a finite number (NaN, a string)."""
+        return self.k_T * _finite_rates(omega) ** 2
 
     def torque(self, omega) -> np.ndarray:
         """Q [N m] at Omega [rad/s] (any shape; checked as :meth:`thrust`)."""
-        return self.k_Q * _as_array("omega", omega) ** 2
+        return self.k_Q * _finite_rates(omega) ** 2
 
     def _conditions(self, diameter, air) -> tuple[float, float]:
         d = self.diameter if diameter is None else diameter
         if d is None:
             raise ValueError("diameter is needed: this model records none (build it with from_model or "
                              "from_coefficients, or give it)")
+        if isinstance(d, bool) or not isinstance(d, (int, float)) or not 0 < d < math.inf:
+            raise ValueError(f"diameter must be a positive finite number [m], got {d!r}")
         rho = (self.rho if self.rho is not None else Air().rho) if air is None else air.rho
         return float(d), float(rho)
 

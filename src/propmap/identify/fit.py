@@ -306,8 +306,10 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     return result if k_dirs == 0 else _directions_report(result, options)
 
 
-#: a data residual beyond this many times the rms residual is named in a warning (a likely outlier)
-OUTLIER_FACTOR = 4.0
+#: a data residual beyond this many times the rms residual is named in a warning: an outlier in the data, or where
+#: the model is weakest (at 4x, 31 of the 147 catalogue fits warned, mostly of low-rpm static points: the review of
+#: 2026-11-26)
+OUTLIER_FACTOR = 5.0
 
 
 def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
@@ -325,8 +327,9 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     warns = list(result.warnings)
     if out and r.size >= 10:
         shown = "; ".join(f"{labels[i]} ({r[i] / rms:+.1f}x)" for i in out[:3])
-        warns.append(f"{len(out)} residual(s) beyond {OUTLIER_FACTOR:g} times the rms residual, likely outliers: "
-                     f"{shown}{' ...' if len(out) > 3 else ''} (leave them out of the data, or hold their group out)")
+        warns.append(f"{len(out)} residual(s) beyond {OUTLIER_FACTOR:g} times the rms residual, the largest misfits: "
+                     f"{shown}{' ...' if len(out) > 3 else ''} (outliers in the data, or where the model is weakest: "
+                     "check those points)")
     return replace(result, warnings=tuple(warns) if isinstance(result.warnings, tuple) else warns,
                    extra={**result.extra, "residual_labels": labels})
 

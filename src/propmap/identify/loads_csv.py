@@ -301,17 +301,24 @@ def _air_density(rho, column, what: str, p: str, notes: list) -> float | None:
     return med
 
 
-#: the names of a load file's air temperature and pressure columns (before a unit in brackets or after '_')
-_T_NAMES = ("temperature", "temp", "air temperature", "air temp", "ambient temperature", "ambient temp", "t air",
-            "tunnel temperature")
+#: the names of a load file's air temperature and pressure columns (before a unit in brackets or after '_'): names
+#: of the air's state only (a bare 'temp' may be a motor's, a bare 'pressure' a tunnel's dynamic pressure)
+_T_NAMES = ("temperature", "air temperature", "air temp", "ambient temperature", "ambient temp", "tunnel temperature")
 _P_NAMES = ("pressure", "air pressure", "ambient pressure", "barometric pressure", "baro", "barometer",
             "static pressure", "atmospheric pressure", "p atm", "tunnel static pressure")
-#: their units: name -> (scale, offset) to K and Pa
-_T_UNITS = {"c": (1.0, 273.15), "°c": (1.0, 273.15), "degc": (1.0, 273.15), "deg c": (1.0, 273.15),
-            "celsius": (1.0, 273.15), "k": (1.0, 0.0), "kelvin": (1.0, 0.0), "f": (5 / 9, 255.3722222222222),
-            "°f": (5 / 9, 255.3722222222222), "degf": (5 / 9, 255.3722222222222)}
-_P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
-            "inhg": 3386.389, "mmhg": 133.322387415, "atm": 101325.0}
+#: names read only with a unit in the header (a bare 'pressure' of 735 may be a tunnel's dynamic pressure in Pa,
+#: which read as hPa would give 0.87 kg/m^3)
+_UNIT_NEEDED = ("pressure",)
+#: their units: name -> (scale, offset) to K, and -> scale to Pa
+_C, _F = (1.0, 273.15), (5 / 9, 255.3722222222222)
+_T_UNITS = {"c": _C, "°c": _C, "ºc": _C, "degc": _C, "deg c": _C, "celsius": _C, "k": (1.0, 0.0), "kelvin": (1.0, 0.0),
+            "f": _F, "°f": _F, "ºf": _F, "degf": _F, "deg f": _F, "fahrenheit": _F}
+_P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "mb": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
+            "psia": 6894.757293168, "inhg": 3386.389, "in hg": 3386.389, "mmhg": 133.322387415, "torr": 133.322368421,
+            "atm": 101325.0}
+#: the air densities a temperature and a pressure column are believed to give without a warning [kg/m^3]
+#: (sea level at -20 to 45 degC; 3,000 m; beyond them a column is more likely another quantity)
+PLAUSIBLE_DENSITY = (0.85, 1.4)
 
 
 def _split_unit(column: str) -> tuple[str, str | None]:
@@ -326,11 +333,12 @@ def _split_unit(column: str) -> tuple[str, str | None]:
 
 
 def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
-    """The air density [kg/m^3] of a file's temperature and pressure columns (their medians,
-    rho = p / (R T), R = 287.05 J/(kg K)), with a note; None where it has not both. A column
-    without a unit is read by its values' size (T: 150-350 K, else -60-60 degC; p: 5e4-1.1e5 Pa,
-    500-1100 hPa, 50-110 kPa) and said so; a unit not known, or a result outside the air
-    densities of AIR_DENSITY_RANGE, is refused naming the column."""
+    """The air density [kg/m^3] of a file's air temperature and pressure columns (their medians,
+    rho = p / (R T), R = 287.05 J/(kg K)), with a note; None where it has not both, where a unit
+    cannot be told (not in the header and not unambiguous from the values: T 200-350 K or -40 to
+    31 degC; p 5e4-1.1e5 Pa, 500-1100 hPa, 50-110 kPa), or where the density would lie outside
+    AIR_DENSITY_RANGE: then a note says the columns are not read (never a refusal: the air
+    options still serve). A density outside PLAUSIBLE_DENSITY is used and said to be checked."""
     found = {}
     for c in f.header:
         name, unit = _split_unit(c)
@@ -344,44 +352,51 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
                          "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
                          "--rho say otherwise")
         return None
-    raw, _, _ = f.read([found["T"][0].lower(), found["p"][0].lower()], optional={found["T"][0].lower(),
-                                                                                   found["p"][0].lower()})
+    skip = (f"; {found['T'][0]!r} and {found['p'][0]!r} are not read (give the air with --temperature-c/--pressure-pa, "
+            "--rho or a density column)")
+    try:
+        raw, _, _ = f.read([found["T"][0].lower(), found["p"][0].lower()],
+                           optional={found["T"][0].lower(), found["p"][0].lower()})
+    except DataError:  # (a column of text: not the air's state)
+        notes.append("a temperature or pressure column is not numeric" + skip)
+        return None
     vals = {}
     for kind, (c, unit) in found.items():
         x = raw[c.lower()]
         x = x[np.isfinite(x)]
         if not x.size:
-            notes.append(f"{c!r} is empty in every row: not read")
+            notes.append(f"{c!r} is empty in every row" + skip)
             return None
         med = float(np.median(x))
-        if kind == "T":
+        table = _T_UNITS if kind == "T" else _P_UNITS
+        if unit is None and _split_unit(c)[0] in _UNIT_NEEDED:
+            notes.append(f"{c!r} has no unit in its name (a dynamic pressure?)" + skip)
+            return None
+        if unit is None:  # (only where the values leave one reading: 32-60 may be degF as well as degC)
+            spans = ((("k", 200, 350), ("c", -40, 31)) if kind == "T" else
+                     (("pa", 5e4, 1.1e5), ("hpa", 500, 1100), ("kpa", 50, 110)))
+            unit = next((u for u, lo, hi in spans if lo <= med <= hi), None)
             if unit is None:
-                unit = "k" if 150 <= med <= 350 else "c" if -60 <= med <= 60 else None
-                if unit is not None:
-                    notes.append(f"{c!r} read in {'K' if unit == 'k' else 'degC'} (its values; no unit in the header)")
-            if unit not in _T_UNITS:
-                raise DataError(f"{what}: {p}: {c!r}: a temperature unit propmap does not know (give degC, K or degF "
-                                "in the header, e.g. 'temperature (C)')")
-            scale, offset = _T_UNITS[unit]
-            vals[kind] = med * scale + offset
-        else:
-            if unit is None:
-                unit = next((u for u, (lo, hi) in (("pa", (5e4, 1.1e5)), ("hpa", (500, 1100)), ("kpa", (50, 110)))
-                             if lo <= med <= hi), None)
-                if unit is not None:
-                    shown = {"pa": "Pa", "hpa": "hPa", "kpa": "kPa"}[unit]
-                    notes.append(f"{c!r} read in {shown} (its values; no unit in the header)")
-            if unit not in _P_UNITS:
-                raise DataError(f"{what}: {p}: {c!r}: a pressure unit propmap does not know (give Pa, hPa, kPa, mbar, "
-                                "bar, psi, inHg or mmHg in the header, e.g. 'pressure (Pa)')")
-            vals[kind] = med * _P_UNITS[unit]
+                notes.append(f"{c!r} has no unit in its name and its values ({med:g} in the median) do not tell it"
+                             + skip)
+                return None
+            notes.append(f"{c!r} read in {dict(k='K', c='degC', pa='Pa', hpa='hPa', kpa='kPa')[unit]} (its values; "
+                         "no unit in the header)")
+        if unit not in table:
+            notes.append(f"{c!r}: a unit propmap does not know" + skip)
+            return None
+        vals[kind] = med * table[unit][0] + table[unit][1] if kind == "T" else med * table[unit]
     rho = vals["p"] / (287.05 * vals["T"])
     lo, hi = AIR_DENSITY_RANGE
-    if not lo <= rho <= hi:
-        raise DataError(f"{what}: {p}: {found['T'][0]!r} and {found['p'][0]!r} give an air density of {rho:.4g} kg/m^3 "
-                        f"(T {vals['T']:.5g} K, p {vals['p']:.6g} Pa), outside [{lo:g}, {hi:g}]: check their units")
+    if not lo <= rho <= hi or vals["T"] <= 0:
+        notes.append(f"they would give an air density of {rho:.4g} kg/m^3 (T {vals['T']:.5g} K, p {vals['p']:.6g} Pa)"
+                     + skip)
+        return None
+    check = ("" if PLAUSIBLE_DENSITY[0] <= rho <= PLAUSIBLE_DENSITY[1] else
+             f"; outside the {PLAUSIBLE_DENSITY[0]:g}-{PLAUSIBLE_DENSITY[1]:g} kg/m^3 of air near the ground: check "
+             "that these columns are the air's temperature and static pressure")
     notes.append(f"air density {rho:.4g} kg/m^3 from {found['T'][0]!r} and {found['p'][0]!r} (medians, T "
-                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / (287.05 T))")
+                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / (287.05 T)){check}")
     return rho
 
 

@@ -18,7 +18,7 @@ thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
 torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
                 (lb·in), ozf·in (oz·in, oz-in), lbf·ft (lb·ft)
 rotation speed  rpm, rad/s, Hz (rev/s)
-airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots)
+airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots), ft/s (fps)
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 ==============  ===================================================================
@@ -50,7 +50,7 @@ UNITS = {
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
     "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
-              "kt": 1852 / 3600, "knots": 1852 / 3600},
+              "kt": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
                 "lbft³": 16.018463373960138},

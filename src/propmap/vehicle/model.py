@@ -515,14 +515,14 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     ValueError
         The rotors give no upward thrust (axes with a_i . e_z <= 0), or the weight needs
         more than the solver's 1e5 rad/s.
+    SolverError
+        A static solve fails (as :func:`propmap.rotor_loads`).
 
     Warns
     -----
     UserWarning
         A hover whose blade tips meet the air beyond Mach 0.8 (the solver's TIP_MACH_WARN: a
         mass in grams, 1200 for 1.2 kg, hovered at tip Mach 3.7 without a word).
-    SolverError
-        A static solve fails (as :func:`propmap.rotor_loads`).
     """
     from scipy.optimize import brentq
 
