@@ -229,19 +229,15 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 
 
 def data_digest(sources) -> str:
-    """SHA-256 over the SOURCE arguments' contents in their order (a catalogue name: its name):
-    what tells a fit's data from another file of the same name (``[coverage] data_sha256``)."""
+    """SHA-256 over the SOURCE arguments' contents, whatever their order (each file's digest, the
+    digests sorted; a catalogue name: its name): what tells a fit's data from another file of
+    the same name (``[coverage] data_sha256``)."""
     import hashlib
 
-    h = hashlib.sha256()
-    for s in sources:
-        p = Path(s)
-        if _is_file(p):
-            with open(p, "rb") as fh:
-                h.update(hashlib.file_digest(fh, "sha256").digest())
-        else:
-            h.update(str(s).encode())
-    return h.hexdigest()
+    from ..io.atomic import file_sha256
+
+    parts = sorted(bytes.fromhex(file_sha256(Path(s))) if _is_file(Path(s)) else str(s).encode() for s in sources)
+    return hashlib.sha256(b"".join(parts)).hexdigest()
 
 
 def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,

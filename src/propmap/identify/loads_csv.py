@@ -14,6 +14,7 @@ import warnings
 
 import numpy as np
 
+from ..core.air import R_AIR, Air
 from .csvfile import RANGES, RPM, DataError, _Csv
 from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 
@@ -175,7 +176,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             rest, moving = rest[np.isfinite(rest)], moving[np.isfinite(moving)]
             zero = float(np.median(rest)) if rest.size else 0.0
             low = float(np.percentile(moving, 10)) if moving.size else 0.0  # (the lowest steps: a tare hurts them most)
-            if low > 0 and abs(zero) > 0.01 * low:
+            scatter = float(np.std(rest)) if rest.size > 1 else 0.0  # (a tared stand's rest rows scatter about 0)
+            if low > 0 and abs(zero) > 0.01 * low and abs(zero) > 2 * scatter:
                 tare = (f"; their thrust reads {zero:.4g} N in the median ({abs(zero) / low:.1%} of the lowest running "
                         "steps'), a stand's zero offset? propmap fits the thrust as written: tare it first")
         notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor"
@@ -333,21 +335,22 @@ def _split_unit(column: str) -> tuple[str, str | None]:
 
 
 def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
-    """The air density [kg/m^3] of a file's air temperature and pressure columns (their medians,
-    rho = p / (R T), R = 287.05 J/(kg K)), with a note; None where it has not both, where a unit
-    cannot be told (not in the header and not unambiguous from the values: T 200-350 K or -40 to
-    31 degC; p 5e4-1.1e5 Pa, 500-1100 hPa, 50-110 kPa), or where the density would lie outside
-    AIR_DENSITY_RANGE: then a note says the columns are not read (never a refusal: the air
-    options still serve). A density outside PLAUSIBLE_DENSITY is used and said to be checked."""
+    """The air density [kg/m^3] of a file's air temperature and pressure columns (their medians;
+    rho = p / (R T) as :meth:`propmap.Air.from_conditions` gives it, within its ranges of T and
+    p), with a note; None where it has not both, where a unit cannot be told (not in the header
+    and not unambiguous from the values: T 200-350 K or -40 to 31 degC; p 5e4-1.1e5 Pa, 500-1100
+    hPa, 50-110 kPa), or where the density would lie outside AIR_DENSITY_RANGE: then a note says
+    the columns are not read (never a refusal: the air options still serve). A density outside
+    PLAUSIBLE_DENSITY is used and said to be checked."""
     found = {}
     for c in f.header:
         name, unit = _split_unit(c)
         kind = "T" if name in _T_NAMES else "p" if name in _P_NAMES else None
         if kind and kind not in found:
-            found[kind] = (c, unit)
+            found[kind] = (c, unit, name)
     if len(found) < 2:
         if found:
-            (c, _), = found.values()
+            (c, _, _), = found.values()
             notes.append(f"{c!r} is not read without the other of temperature and pressure (or a density column): "
                          "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
                          "--rho say otherwise")
@@ -361,7 +364,7 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
         notes.append("a temperature or pressure column is not numeric" + skip)
         return None
     vals = {}
-    for kind, (c, unit) in found.items():
+    for kind, (c, unit, name) in found.items():
         x = raw[c.lower()]
         x = x[np.isfinite(x)]
         if not x.size:
@@ -369,7 +372,7 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
             return None
         med = float(np.median(x))
         table = _T_UNITS if kind == "T" else _P_UNITS
-        if unit is None and _split_unit(c)[0] in _UNIT_NEEDED:
+        if unit is None and name in _UNIT_NEEDED:
             notes.append(f"{c!r} has no unit in its name (a dynamic pressure?)" + skip)
             return None
         if unit is None:  # (only where the values leave one reading: 32-60 may be degF as well as degC)
@@ -386,9 +389,13 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
             notes.append(f"{c!r}: a unit propmap does not know" + skip)
             return None
         vals[kind] = med * table[unit][0] + table[unit][1] if kind == "T" else med * table[unit]
-    rho = vals["p"] / (287.05 * vals["T"])
+    try:  # (the air of --temperature-c/--pressure-pa: its gas constant and its ranges of T and p)
+        rho = Air.from_conditions(vals["T"], vals["p"]).rho
+    except ValueError as exc:
+        notes.append(f"they give {exc}" + skip)
+        return None
     lo, hi = AIR_DENSITY_RANGE
-    if not lo <= rho <= hi or vals["T"] <= 0:
+    if not lo <= rho <= hi:
         notes.append(f"they would give an air density of {rho:.4g} kg/m^3 (T {vals['T']:.5g} K, p {vals['p']:.6g} Pa)"
                      + skip)
         return None
@@ -396,7 +403,7 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
              f"; outside the {PLAUSIBLE_DENSITY[0]:g}-{PLAUSIBLE_DENSITY[1]:g} kg/m^3 of air near the ground: check "
              "that these columns are the air's temperature and static pressure")
     notes.append(f"air density {rho:.4g} kg/m^3 from {found['T'][0]!r} and {found['p'][0]!r} (medians, T "
-                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / (287.05 T)){check}")
+                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / ({R_AIR:g} T)){check}")
     return rho
 
 
