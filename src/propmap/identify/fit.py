@@ -68,12 +68,11 @@ def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
     notes = []
     if not static.any():
         return notes
-    n = data.omega[static] / (2 * math.pi)
-    for key, power, (lo, hi), sym, unit in (("thrust", 4, STATIC_CT_RANGE, "CT", "N"),
-                                            ("torque", 5, STATIC_CQ_RANGE, "CQ", "N m")):
+    norm = _load_norms(data, propeller, keys, air)[0]  # (rho n^2 D^4 for thrust, rho n^2 D^5 for torque)
+    for key, (lo, hi), sym, unit in (("thrust", STATIC_CT_RANGE, "CT", "N"), ("torque", STATIC_CQ_RANGE, "CQ", "N m")):
         if key not in keys:
             continue
-        c = float(np.median(data.measured[key][static] / (air.rho * n**2 * propeller.diameter**power)))
+        c = float(np.median(data.measured[key][static] / norm[key][static]))
         if c < 0:
             notes.append(f"the measured static {key} is negative ({sym} {c:.3g} in the median): give its magnitude "
                          f"(propmap's {key} is positive in hover)")
