@@ -862,3 +862,15 @@ def test_a_stands_thrust_at_rest_is_said_where_its_rows_are_skipped(tmp_path):
     # a tared stand's rest rows scatter about 0 (the review's 0.3 gf drift in 0.5 gf of noise): not said
     f.write_text("\n".join([rows[0], "0,0.020,0", "0,-0.011,0", "0,0.018,0", "0,-0.010,0"] + rows[3:]) + "\n")
     assert not any("tare" in n for n in read_loads(f).notes)
+
+
+def test_coverage_is_written_to_12_digits(tmp_path):
+    """A fit's [coverage] read rpm_min = 1974.9999999999998 (rad/s and back; identification audit,
+    2026-11-26): written to 12 digits for every producer (loads and flight fits)."""
+    from propmap.io.params_file import read_coverage, write_params
+
+    params = pm.generic_params()
+    write_params(tmp_path / "p.toml", params, params.air, coverage={"rpm_min": 1974.9999999999998, "rpm_max": 6038.0,
+                                                                    "J_max": 0.8040000000000001})
+    cov = read_coverage(tmp_path / "p.toml")
+    assert (cov["rpm_min"], cov["rpm_max"], cov["J_max"]) == (1975.0, 6038.0, 0.804)

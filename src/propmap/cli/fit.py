@@ -118,8 +118,7 @@ def _coverage(data, prop) -> dict:
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
     return {"J_max": max(0.0, float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter)))),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
-            # (to 12 digits: 1975 rpm, not the 1974.9999999999998 of rad/s and back)
-            "rpm_min": float(f"{np.min(n) * 60:.12g}"), "rpm_max": float(f"{np.max(n) * 60:.12g}"),
+            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
             "airspeed_max": float(np.max(data.airspeed))}
 
 

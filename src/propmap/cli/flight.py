@@ -334,15 +334,15 @@ def _flight_coverage(logs, veh) -> dict:
     vehicle_wrench forms them: hub velocity v + w x r_i, its incidence to the axis, the lagged speed."""
     import numpy as np
 
+    from ..core.vector import disk_frame
     from ..identify.flight import flight_samples
     from ..vehicle import rotor_geometry
 
     s = flight_samples(logs, veh, rate_hz=1e4)
     arms, axes, _, _ = rotor_geometry(veh)
     V_hub = s.velocity[:, None, :] + np.cross(s.angular_velocity[:, None, :], arms[None, :, :])  # (N, n_rot, 3)
-    speed = np.linalg.norm(V_hub, axis=2)
-    axial = np.einsum("nij,ij->ni", V_hub, axes)
-    inc = np.where(speed > 0, np.arccos(np.clip(axial / np.where(speed > 0, speed, 1.0), -1.0, 1.0)), 0.0)
+    _, _, speed, inc = disk_frame(V_hub, axes[None, :, :])  # (the hub's airspeed and incidence, as rotor_wrench's)
+    axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
     return {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),

@@ -150,7 +150,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     """``validate SOURCE... --prop P``: a parameter set against the user's own load files."""
     from ..core.solver import SolverError
     from ..validation import load_errors
-    from .fit import _file_air, _read_sources
+    from .fit import _file_air, _read_sources, data_digest
 
     params, air, label = load_params(params_spec, prop_spec, option="--params")
     air = resolve_air(air, air_choice)
@@ -173,8 +173,6 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         raise click.ClickException(str(exc)) from None
     # which groups the parameter file's fit saw or held out (its [coverage] table), where it was fitted to this data
     from ..io.params_file import set_coverage
-
-    from .fit import data_digest
 
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
     in_fit = {}
