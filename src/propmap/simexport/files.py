@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
-from .fit import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS, SimExport
+from .fit import EVEN_TERMS, GAZEBO_AXIAL_SPEED, LOADS, ODD_TERMS, SimExport
 
 __all__ = ["check_rotorpy_vehicle", "error_lines", "report_path", "rotorpy_directions", "write_export"]
 
@@ -72,7 +72,7 @@ def error_lines(res: SimExport, comment: str = "") -> list[str]:
              f"{env.incidence_deg[1]:g} deg), on {res.meta.get('check_points', res.n_points)} check points other "
              f"than the {res.n_points} fitted ({e['points_flagged']} flagged):"]
     fitted = e.get("fitted_points", {})
-    for k in ("thrust", "drag", "torque", "rolling_moment"):
+    for k in LOADS:
         on_fit = (f"; fitted points: rms {_pct(fitted[k]['rms'])}, max {_pct(fitted[k]['max'])}" if k in fitted
                   else "")
         lines.append(f"{comment}   {k:<15} rms {_pct(e[k]['rms']):>7}  max {_pct(e[k]['max']):>7}  "
