@@ -143,3 +143,22 @@ def test_loads_become_a_dataframe_and_print_as_a_summary(apc):
     assert (df.loc[df.airspeed == 0, "drag"] == 0).all()  # (D = 0 in hover)
     one = repr(pm.rotor_loads(prop, params, 800.0, 0.0, 0.0))
     assert one.startswith("RotorLoads(shape (), thrust 4.0") and "flags raised: none" in one and len(one) < 200
+
+
+def test_a_changed_set_is_not_labelled_as_the_named_one(apc):
+    """replace() kept the label: a calibrated set with another cl_alpha still reported the
+    catalogue's validation figures for that propeller's set (io.uncertainty, by label)."""
+    from propmap.io.uncertainty import model_uncertainty
+
+    params = apc[1]
+    assert params.label == "calibrated:apce_8x6"
+    changed = params.replace(cl_alpha=params.cl_alpha + 0.5)
+    assert changed.label == "modified calibrated:apce_8x6"
+    assert "in-sample" in model_uncertainty(params.label)["axial"]
+    assert model_uncertainty(changed.label)["axial"].startswith("unknown")
+    assert changed.replace(cd_min=0.02).label == "modified calibrated:apce_8x6"  # (not "modified modified")
+    # the same values, the air, or a label given: the name stays or is the caller's
+    assert params.replace(cl_alpha=params.cl_alpha).label == params.label
+    assert params.replace(air=pm.Air(rho=1.1)).label == params.label
+    assert params.replace(cl_alpha=5.0, label="mine").label == "mine"
+    assert pm.preset("gill2017-apc").replace(M=30.0).label == "modified gill2017-apc"

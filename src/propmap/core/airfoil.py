@@ -291,7 +291,9 @@ class AirfoilParams(RotorOptions):
             raise ValueError(f"lift_model must be one of {LIFT_MODELS}, got {self.lift_model!r}")
 
     def replace(self, **changes) -> "AirfoilParams":
-        """Return a copy with ``changes`` applied (validated again).
+        """Return a copy with ``changes`` applied (validated again). A copy whose model fields
+        differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
+        validation figures and coverage are not its own.
 
         Raises
         ------
@@ -306,6 +308,14 @@ class AirfoilParams(RotorOptions):
         return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
 
+def _differs(a, b) -> bool:
+    """Whether a field's new value ``a`` differs from ``b`` (True where they do not compare)."""
+    try:
+        return bool(a != b)
+    except (TypeError, ValueError):
+        return True
+
+
 def _replace(p, changes: dict):
     """``dataclasses.replace`` with an unknown name refused as a ValueError naming the valid ones
     (a TypeError of ``__init__`` before; ``cl_alpah``, or a file's ``alpha_L0_deg``)."""
@@ -316,6 +326,11 @@ def _replace(p, changes: dict):
             k.endswith("_deg") for k in unknown) else ""
         raise ValueError(f"unknown parameter(s) {', '.join(unknown)} of {type(p).__name__}{hint}; valid: "
                          f"{', '.join(valid)}")
+    moved = [k for k, v in changes.items() if k not in RECORD_META and _differs(v, getattr(p, k))]
+    if moved and "label" not in changes and p.label and not p.label.startswith("modified "):
+        # a changed set is no longer the named one: its validation figures and coverage
+        # (io.uncertainty, io.calibration.coverage, looked up by label) are not its own
+        changes = {**changes, "label": f"modified {p.label}"}
     return replace(p, **changes)
 
 
@@ -433,7 +448,9 @@ class CamberedParams(RotorOptions):
             raise ValueError("cl_min must be in [-4, 0), got 0.0")
 
     def replace(self, **changes) -> "CamberedParams":
-        """Return a copy with ``changes`` applied (validated again).
+        """Return a copy with ``changes`` applied (validated again). A copy whose model fields
+        differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
+        validation figures and coverage are not its own.
 
         Raises
         ------
