@@ -274,6 +274,11 @@ def test_section_parameter_derivatives(prop, model):
         assert abs(float(getattr(a, q)) / h - slope) < 1e-3 * abs(slope), q
     with pytest.raises(ValueError, match="must be a sequence of names"):
         pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
+    # a misspelt or a vehicle's name: rotor_wrench's own valid names (it listed rotor_loads' airspeed and
+    # incidence, which it refuses, and not velocity)
+    for wrong in ("velocty", "angular_velocity"):
+        with pytest.raises(ValueError, match=rf"'{wrong}'; valid: velocity, omega, collective, rho or a numeric field"):
+            pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=(wrong,))
 
 
 def test_loads_fit_with_the_implicit_jacobian_reaches_the_same_optimum(prop):

@@ -245,3 +245,25 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
         scale = T0 if q in ("thrust", "drag", "side_force") else T0 * prop.radius
         assert float(getattr(r, q)) == pytest.approx(x, abs=2e-6 * scale), q
     assert abs(full["pitching_moment"]) > 0.05 * abs(full["rolling_moment"])  # the halves differ
+
+
+def test_derivatives_across_the_cusp_of_axial_flow_are_warned_of(apce8x6):
+    """With the option the loads grow as sqrt(V sin(beta)) from axial flow: dT/dbeta at 180 deg is
+    unbounded (one-sided differences -0.15, -0.49, -1.58 N/rad at h = 1e-2, 1e-3, 1e-4: a
+    user-level audit), where the kernel returns the static section's ~0. Said, not silent."""
+    import warnings
+
+    prop, p = apce8x6
+    ds = p.replace(dynamic_stall=1.5)
+    with pytest.warns(UserWarning, match=r"dynamic_stall: 1 point\(s\) have no in-plane airspeed"):
+        r = pm.rotor_loads(prop, ds, 1250.0, 3.0, math.pi, derivatives=True)
+    steps = [abs(float(pm.rotor_loads(prop, ds, 1250.0, 3.0, math.pi - h).thrust - r.thrust)) / h
+             for h in (1e-2, 1e-4)]
+    assert steps[1] > 5 * steps[0] > 0  # the one-sided slope grows as h^-1/2
+    with pytest.warns(UserWarning, match="no in-plane airspeed"):  # the wrench's velocity Jacobian at rest
+        pm.rotor_wrench(prop, ds, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1250.0, derivatives=("velocity",))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.rotor_loads(prop, ds, 1250.0, 3.0, 1.0, derivatives=True)  # in-plane flow: smooth
+        pm.rotor_loads(prop, ds, 1250.0, 3.0, math.pi, derivatives=("omega",))  # not across the cusp
+        pm.rotor_loads(prop, p, 1250.0, 3.0, math.pi, derivatives=True)  # without the option

@@ -20,7 +20,7 @@ from . import _flags, _kernel
 from . import _physics as ph
 from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
-from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, _derivative_inputs, _jacobian, differentiable
+from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
 from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
 from .geometry import Propeller, has_bool
 from .loads import RotorLoads, _new_loads
@@ -219,6 +219,22 @@ def check_model_args(propeller, params, air=_UNCHECKED, discretization=_UNCHECKE
         raise TypeError(f"discretization must be a propmap.Discretization, got {type(discretization).__name__}")
 
 
+def _warn_dynamic_stall_cusp(V, Vs, wrt) -> None:
+    """Warn of derivatives asked where the dynamic stall's loads have a cusp: with no in-plane
+    airspeed (axial flow or rest) Gormont's delay grows as the square root of the in-plane
+    airspeed, so the loads' slopes across it (the incidence in axial flow, the airspeed from
+    rest, the in-plane velocity's at rest) are unbounded; the kernel returns the static
+    section's there (docs/solver.md, Dynamic stall)."""
+    axial = (Vs == 0.0) & (V > 0.0) if "incidence" in wrt else np.zeros(V.shape, bool)
+    rest = (V == 0.0) if ({"airspeed", STILL_AIR} & set(wrt)) else np.zeros(V.shape, bool)
+    n = int(np.count_nonzero(axial | rest))
+    if n:
+        warnings.warn(f"dynamic_stall: {n} point(s) have no in-plane airspeed (axial flow or rest), where the loads "
+                      "grow as the square root of the in-plane airspeed (Gormont's delay): their derivatives across "
+                      "it (incidence in axial flow, airspeed and in-plane velocity at rest) are unbounded; the values "
+                      "returned are the static section's (docs/solver.md, Dynamic stall)", UserWarning, stacklevel=3)
+
+
 def rotor_loads(
     propeller: Propeller,
     params: SectionParams,
@@ -374,6 +390,8 @@ def rotor_loads(
     wrt = _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")
+    if getattr(params, "dynamic_stall", 0.0) > 0.0 and ({"incidence", "airspeed", STILL_AIR} & set(wrt)):
+        _warn_dynamic_stall_cusp(V1, Vs, wrt)
     keep_radial = radial or bool(wrt)  # the derivatives need the roots
     om_in = om1
     if any_slow:  # spin-up and stopped rotors: solved at OMEGA_MIN, scaled below

@@ -9,13 +9,13 @@ in the disk plane along the projection of V, against the motion (Fig. 1).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
-from .airfoil import Air, AirfoilParams
+from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
-from .derivatives import STILL_AIR
+from .derivatives import RHO, STILL_AIR
 from .geometry import Propeller, has_bool
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -187,6 +187,11 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
                          f"'velocity', the velocity vector's Jacobian), got {derivatives!r:.60}")
+    own = {f.name for f in fields(params)} - set(RECORD_META)
+    bad = [n for n in names if n not in ("velocity", "omega", "collective", RHO) and n not in own]
+    if bad:  # (rotor_loads' own message lists its airspeed and incidence, which this function refuses)
+        raise ValueError(f"derivatives: unknown input or parameter {bad[0]!r:.60}; valid: velocity, omega, "
+                         f"collective, {RHO} or a numeric field of {type(params).__name__}")
     solve = dict(air=air, discretization=discretization, on_failure=on_failure)
     scalar = tuple(n for n in names if n != "velocity")
     wrt = scalar + (VELOCITY_INPUTS if "velocity" in names else ())

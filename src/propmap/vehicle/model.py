@@ -492,9 +492,12 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
                 discretization: Discretization = DEFAULT_DISCRETIZATION) -> float:
     """The rotor speed at which the vehicle hovers in still air, every rotor at the same speed.
 
-    Solves sum_i T_i(Omega) (a_i . e_z) = m g for Omega, T_i the static thrust of rotor i's
-    propeller (:func:`propmap.rotor_loads` at V = 0; a rotor's own ``params`` where it has
-    them), a_i its axis, e_z body up; the airframe drag is zero in still air.
+    Solves F_z(Omega) = m g for Omega, F_z the body-up force of :func:`vehicle_wrench` at rest
+    in still air with every rotor at Omega: sum_i T_i (a_i . e_z), T_i the static thrust of
+    rotor i's propeller (a rotor's own ``params`` where it has them), a_i its axis, e_z body
+    up, plus the airframe's drag in the rotors' slipstream (``BodyDrag.wash_factor`` > 0: a
+    downward force in hover, which the rotors must also carry) and the rotors' interference
+    (``Vehicle.rotor_interference``), as the vehicle model has them.
 
     Parameters
     ----------
@@ -531,14 +534,13 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     if not np.any(up > 0):
         raise ValueError("no rotor's axis has an upward component: the vehicle cannot hover")
 
+    rest = np.zeros(3)
+
     def lift(om: float) -> float:
-        total = 0.0
         with supersonic_tips_allowed():  # the bracket doubles past the hover rate on purpose
-            for r, u in zip(vehicle.rotors, up):
-                p = r.params if r.params is not None else params
-                total += u * float(rotor_loads(r.propeller, p, om, 0.0, 0.0, air=air,
-                                               discretization=discretization).thrust)
-        return total - vehicle.weight
+            w = vehicle_wrench(vehicle, params, rest, rest, np.full(len(vehicle.rotors), om), air=air,
+                               discretization=discretization)
+        return float(w.force[0, 2]) - vehicle.weight
 
     hi = 100.0
     while lift(hi) < 0:
