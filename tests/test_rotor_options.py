@@ -171,6 +171,28 @@ def test_inflow_gradients_match_their_published_formulas():
                                                                                        ph.INFLOW_PITT_PETERS)
 
 
+def test_drees_is_held_at_its_advance_ratio_bound_and_flagged_beyond(prop, generic):
+    """Drees's k_y = -2 mu is unbounded: a parked or slow rotor in a flow (mu of hundreds) gave
+    D = -761 N (0.1 rad/s, 5 m/s) and -9349 N (1 rad/s, 30 m/s) on the APC 8x6E, converged and
+    unflagged (a user-level audit, 2026-11-26). Its mu terms are held at 0.5, flagged beyond."""
+    assert ph.DREES_MU_MAX == 0.5
+    lam = 0.02
+    held = ph.inflow_gradients(0.5, lam, ph.INFLOW_DREES)
+    beyond = ph.inflow_gradients(3.0, lam, ph.INFLOW_DREES)
+    assert beyond[1] == held[1] == -1.0
+    chi = math.atan2(3.0, lam)  # (the skew is the flow's own)
+    assert beyond[0] == max(4 / 3 * (1 - math.cos(chi) - 1.8 * 0.25) / math.sin(chi), 0.0)
+    drees = generic.replace(inflow="drees")
+    om = np.array([0.1, 1.0, 300.0, 800.0])
+    V = np.array([5.0, 30.0, 20.0, 20.0])
+    b = np.array([1.0, 1.0, 1.5, 1.5])
+    r = pm.rotor_loads(prop, drees, om, V, b)
+    u = pm.rotor_loads(prop, generic, om, V, b)
+    mu = V * np.sin(b) / (np.maximum(om, 0.1) * prop.radius)
+    np.testing.assert_array_equal(r.inflow_extrapolated, mu > 0.5)  # mu 414, 248, 0.66, 0.25
+    assert np.all(np.abs(r.drag - u.drag) < 0.1 * np.abs(u.drag) + 0.01)  # within 10% of the uniform inflow's
+
+
 def test_linear_inflow_is_continuous_in_incidence(prop, generic):
     """No jump through edgewise flight (the mirrored skew angle) nor near axial flow."""
     b = np.radians(np.linspace(0.0, 130.0, 27))

@@ -10,7 +10,7 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import inplane_induction
+from ._physics import DREES_MU_MAX, inplane_induction
 
 __all__ = ["CLS_BAND", "CLS_INPLANE", "CLS_K_WINDMILL", "CLS_R_HUB", "CLS_RADIUS", "CLS_RHO", "point_flags",
            "working_states"]
@@ -77,7 +77,7 @@ CLS_RHO, CLS_RADIUS, CLS_R_HUB, CLS_K_WINDMILL, CLS_INPLANE, CLS_BAND = 0, 1, 2,
 
 
 @numba.njit(cache=CACHE, error_model="numpy")
-def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags):
+def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags, drees=False):
     """The result's per-point states and flags from the loads, written into the packed outputs
     (compiled after the solve: one NumPy comparison on a one-point array costs as much as this
     whole loop; no fastmath, as :func:`working_states`).
@@ -91,7 +91,9 @@ def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags):
     _physics.inplane_induction); for a stopped rotor, Omega = 0, inf with in-plane flow, else
     0), ``counts`` row 4 (the working state) and ``flags`` shape (N_FLAGS, n): converged
     (status 0), vortex ring (state 1), multiple roots, reverse flow (radius > r_hub), inflow
-    extrapolated (:func:`working_states`).
+    extrapolated (:func:`working_states`; with ``drees``, Drees's linear inflow, also where the
+    advance ratio V sin(beta) / (Omega R) exceeds _physics.DREES_MU_MAX, at which its gradients
+    are held).
     """
     working_states(out[0], vx, vz, out[6], cls[CLS_RHO], cls[CLS_RADIUS], cls[CLS_BAND:], cls[CLS_K_WINDMILL],
                    linear, empirical, counts[4], out[7], out[8], out[9], flags[4])
@@ -110,3 +112,5 @@ def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags):
             r = np.inf if vx[i] > 0.0 else 0.0
         out[10, i] = r
         flags[3, i] = r > r_hub
+        if drees and vx[i] > DREES_MU_MAX * om[i] * cls[CLS_RADIUS]:  # Drees's gradients held at mu = 0.5
+            flags[4, i] = True

@@ -14,8 +14,8 @@ from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _
                        _swirl_target, annulus_loads, delay_factor, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (INFLOW_UNIFORM, NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y,
-                       SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL)
+from ._physics import (INFLOW_DREES, INFLOW_UNIFORM, NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W,
+                       NODE_Y, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL)
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -277,7 +277,7 @@ def solve_batch(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swir
     for i in numba.prange(Om.shape[0]):  # i is unsigned here: cast, so that one compiled _solve_point serves both
         _solve_point(np.int64(i), Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial,
                      out, rad, counts)
-    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
+    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags, inflow == INFLOW_DREES)
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
@@ -289,4 +289,4 @@ def solve_batch_serial(Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, em
     for i in range(Om.shape[0]):
         _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, swirl, radius, radial, out, rad,
                      counts)
-    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags)
+    point_flags(out, counts, Vs, Vc, Om, cls, inflow != INFLOW_UNIFORM, emp, flags, inflow == INFLOW_DREES)

@@ -502,6 +502,12 @@ INFLOW_CODES = {"uniform": INFLOW_UNIFORM, "drees": INFLOW_DREES, "pitt-peters":
 # momentum in descent (``descent`` of the section records): Glauert's everywhere (the paper's),
 # or the empirical curve in the vortex-ring and turbulent-wake states (axial_mass_flow)
 DESCENT_CODES = {"glauert": 0, "empirical": 1}
+#: the advance ratio at which Drees's gradients are held (propmap's bound): his model is one of
+#: helicopter rotors in forward flight (mu up to about 0.5), and its k_y = -2 mu is unbounded,
+#: so that a slow or parked rotor in a flow (mu of hundreds) had inflows hundreds of times its
+#: mean across the disk and in-plane loads of kN (a user-level audit, 2026-11-26); beyond it
+#: RotorLoads.inflow_extrapolated is set
+DREES_MU_MAX = 0.5
 
 
 def inflow_gradients(mu, lam, model):
@@ -523,14 +529,16 @@ def inflow_gradients(mu, lam, model):
     pi - chi, so that the gradient vanishes again in axial descent (the modification of
     Coleman's model used by wind-turbine codes for skew beyond 90 deg), an extrapolation
     that ``RotorLoads.inflow_extrapolated`` flags. k_x is held >= 0 (a wake skewed
-    backwards has the larger inflow at the rear). Scalars only (once per operating point).
+    backwards has the larger inflow at the rear). Drees's mu terms are held at
+    ``DREES_MU_MAX`` (0.5) beyond it, also flagged. Scalars only (once per operating point).
     """
     if model == INFLOW_UNIFORM or mu <= 0.0:
         return 0.0, 0.0
     chi = np.arctan2(mu, abs(lam))  # in [0, pi/2]: the mirrored angle where lam < 0
     if model == INFLOW_DREES:
-        kx = (4.0 / 3.0) * (1.0 - np.cos(chi) - 1.8 * mu * mu) / max(np.sin(chi), 1e-12)
-        return max(kx, 0.0), -2.0 * mu
+        m = min(mu, DREES_MU_MAX)
+        kx = (4.0 / 3.0) * (1.0 - np.cos(chi) - 1.8 * m * m) / max(np.sin(chi), 1e-12)
+        return max(kx, 0.0), -2.0 * m
     return (15.0 * np.pi / 32.0) * np.tan(0.5 * chi), 0.0
 
 

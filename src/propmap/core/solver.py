@@ -439,7 +439,8 @@ def rotor_loads(
         # the states and flags again, for the scaled thrust and inflow and the rates asked for (a stopped
         # rotor: its whole retreating side in reverse flow, radius inf, with in-plane flow)
         out[0], out[6] = T, vbar
-        _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags)
+        _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags,
+                           inflow == ph.INFLOW_DREES)
     # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
     # upflow; the empirical descent curve blended in forward flight by propmap's fade)
     converged, vring, multiple, reverse, extrapolated = flags
