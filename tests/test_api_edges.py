@@ -98,6 +98,9 @@ def test_hover_model_keeps_its_air_and_checks_its_rates(apc):
         with pytest.raises(ValueError, match="omega"):
             h.thrust(bad)
     assert h.thrust(-800.0) == h.thrust(800.0)  # (a simulator's signed rate: its magnitude)
+    for flag in (True, [800.0, True]):  # (True was 1 rad/s: k_T returned)
+        with pytest.raises(ValueError, match="not booleans"):
+            h.thrust(flag)
     assert h == pm.HoverModel(h.k_T, h.k_Q)  # (the recorded air and diameter are context, not the model)
     with pytest.raises(ValueError, match="diameter is needed"):
         pm.HoverModel(1e-5, 1e-7).CT()

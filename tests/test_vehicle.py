@@ -96,6 +96,15 @@ def test_hover_carries_the_airframe_drag_in_the_slipstream(generic):
     assert hover_omega(dry, generic) == pytest.approx(bare, rel=1e-12)
 
 
+def test_derivatives_with_a_stopped_rotor_name_it(generic):
+    """A motor-failure linearisation: the refusal named no rotor (rotor_loads' message)."""
+    veh = read_vehicle(NEUROBEM)
+    with pytest.raises(ValueError, match=r"every rotor_omega >= 0.1 rad/s .* got 0 for rotor 3 \(sample 2\)"):
+        vehicle_wrench(veh, generic, [0, 0, 0], [0, 0, 0], [[1200.0] * 4, [1200.0, 1200.0, 0.0, 1200.0]],
+                       derivatives=True)
+    vehicle_wrench(veh, generic, [0, 0, 0], [0, 0, 0], [1200.0, 1200.0, 0.0, 1200.0])  # (without derivatives: fine)
+
+
 def test_gyroscopic_and_spin_up_moments():
     """A single rotor with inertia J: M = ... - w x h - s J dOmega/dt a, h = s J Omega a."""
     prop = pm.load_propeller("apce_8x6")

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .airfoil import Air, AirfoilParams
-from .geometry import Propeller
+from .geometry import Propeller, has_bool
 from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
@@ -26,6 +26,8 @@ def _finite_rates(omega) -> np.ndarray:
         raise ValueError(f"omega must be a number or an array of numbers [rad/s], got {omega!r:.60}") from None
     if isinstance(omega, str) or not np.all(np.isfinite(w)):
         raise ValueError(f"omega must be finite numbers [rad/s], got {omega!r:.60}")
+    if has_bool(omega):  # (True read as 1 rad/s; from_model refuses it too)
+        raise ValueError(f"omega must be numbers [rad/s], not booleans, got {omega!r:.60}")
     return w
 
 

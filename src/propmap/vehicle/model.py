@@ -39,8 +39,8 @@ from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool
 from ..core.air import SUPERSONIC_TIP
-from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, TIP_MACH_WARN, Discretization, RotorLoads,
-                           rotor_loads, supersonic_tips_allowed)
+from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
+                           RotorLoads, rotor_loads, supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
@@ -408,6 +408,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
                          "their speeds); set the vehicle's rotor_interference to 0")
+    if wrt and np.any(om < OMEGA_MIN):
+        n, i = np.argwhere(om < OMEGA_MIN)[0]
+        raise ValueError(f"derivatives need every rotor_omega >= {OMEGA_MIN:g} rad/s (below it a rotor's blades are "
+                         f"parked and its loads are not differentiated), got {om[n, i]:g} for rotor {i + 1} (sample "
+                         f"{n + 1})")
     motion = any(n in MOTION_NAMES for n in wrt)
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
