@@ -864,3 +864,27 @@ def test_element_partials_match_central_differences(model):
         fd = (4 * diff(h / 2) - diff(h)) / 3
         scale = np.abs(f0).max(axis=0) / (speed if mt or mp else 1.0) + 1e-9
         assert np.max(np.abs(np.array(got) - fd) / scale) < 1e-7, (model, mt, mp, mth, mc)
+
+
+def test_section_parameter_constants_are_remembered_not_shared(prop):
+    """The stepped sets' constants are remembered per (names, set, air) (68 us per parameter
+    of validation on every call before; a user-level audit); each call gets its own copies,
+    and another set or air gets its own constants."""
+    from propmap.core.derivatives import _parameter_constants, _stepped_constants
+
+    g = pm.generic_params()
+    names = ("cl_alpha", "cd_min")
+    a = _parameter_constants(names, g, g.air)
+    b = _parameter_constants(names, g, g.air)
+    for x, y, z in zip(a, b, _stepped_constants(names, g, g.air)):
+        np.testing.assert_array_equal(x, z)
+        assert x is not y and not np.shares_memory(x, y)
+    a[0][:] = 0.0  # a caller's change does not reach the next call
+    np.testing.assert_array_equal(_parameter_constants(names, g, g.air)[0], b[0])
+    other = _parameter_constants(names, g.replace(cl_alpha=g.cl_alpha + 0.5), g.air)
+    assert not np.array_equal(other[0], b[0]) or not np.array_equal(other[1], b[1])
+    thin = pm.Air(rho=0.9)
+    np.testing.assert_array_equal(_parameter_constants(names, g, thin)[1], _stepped_constants(names, g, thin)[1])
+    r1 = pm.rotor_loads(prop, g, 1100.0, 8.0, 1.2, derivatives=names)
+    r2 = pm.rotor_loads(prop, g, 1100.0, 8.0, 1.2, derivatives=names)
+    assert float(r1.derivative("thrust", "cl_alpha")) == float(r2.derivative("thrust", "cl_alpha")) != 0.0

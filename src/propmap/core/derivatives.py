@@ -5,6 +5,7 @@ call of the sensitivity kernel (core/_sensitivity.py) at the converged roots.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import fields
 from dataclasses import replace as dc_replace
 
@@ -94,6 +95,23 @@ PARAM_FLOOR = 0.01
 
 
 def _parameter_constants(names, params, air):
+    """:func:`_stepped_constants`, remembered for the last 64 (names, parameter set, air): a
+    controller or a fit asks for the same parameters' derivatives call after call, and the
+    stepped sets' validation cost about 68 us per parameter, more than a single point's solve
+    (a user-level audit, 2026-11-26). Copies, so that no caller shares the remembered arrays."""
+    try:
+        pks, cams, step = _stepped_constants_cached(tuple(names), params, air)
+    except TypeError:  # (an unhashable field: not remembered)
+        return _stepped_constants(names, params, air)
+    return pks.copy(), cams.copy(), step.copy()
+
+
+@functools.lru_cache(maxsize=64)
+def _stepped_constants_cached(names, params, air):
+    return _stepped_constants(names, params, air)
+
+
+def _stepped_constants(names, params, air):
     """(pk, cam, step) of each section parameter in ``names``: the element and annulus
     constants at the parameter's value + its step (- its step where + leaves the parameter's
     range), and that step (either sign), for the kernel's one-sided differences.
