@@ -458,10 +458,12 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
     samples together."""
     N, n_rot = om.shape
     spins = np.array([r.spin for r in vehicle.rotors])
-    groups: dict[tuple[int, int], list[int]] = {}
+    groups: dict[tuple[int, int], list[int]] = {}  # rotors of one propeller and set, solved in one batch
     for i, r in enumerate(vehicle.rotors):
         p = r.params if r.params is not None else params
-        groups.setdefault((id(r.propeller), id(p)), []).append(i)
+        key = next((k for k, idx in groups.items() if _same_rotor_model(vehicle.rotors[idx[0]], r, params)),
+                   (id(r.propeller), id(p)))
+        groups.setdefault(key, []).append(i)
     rotor_force = np.empty((N, n_rot, 3))
     rotor_moment = np.empty((N, n_rot, 3))
     loads: list[RotorLoads | None] = [None] * n_rot
@@ -479,6 +481,27 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
         for k, i in enumerate(idx):
             loads[i] = _column(r, k)
     return rotor_force, rotor_moment, loads
+
+
+def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
+    """Whether rotors ``a`` and ``b`` have the same propeller and parameter set by value (a
+    vehicle file reads each rotor's propeller on its own, so that grouping by identity solved
+    the NeuroBEM quadrotor's four rotors in four batches: 1.6 ms a sample)."""
+    pa = a.params if a.params is not None else params
+    pb = b.params if b.params is not None else params
+    if not (pa is pb or (pa == pb and pa.air == pb.air)):
+        return False
+    if a.propeller is b.propeller:
+        return True
+    for f in fields(a.propeller):
+        if not f.init:  # (derived from the others: the splines)
+            continue
+        x, y = getattr(a.propeller, f.name), getattr(b.propeller, f.name)
+        same = (np.array_equal(x, y) if isinstance(x, np.ndarray) or isinstance(y, np.ndarray) else
+                type(x) is type(y) and x == y)
+        if not same:
+            return False
+    return True
 
 
 def _column(r: RotorLoads, k: int) -> RotorLoads:
