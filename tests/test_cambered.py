@@ -129,7 +129,7 @@ def test_invariants_with_the_cambered_section_and_losses(apc8x6, params, envelop
     Vs, Vc = (V * np.sin(b))[:, None], (V * np.cos(b))[:, None]
     # eq (10)'s axial mass flow: Glauert's |Vc + v|, or the empirical one in descent (the default),
     # which also sets the loss factor's inflow angle there
-    from propmap.core._physics import axial_mass_flow
+    from propmap.core._momentum import axial_mass_flow
 
     W_ax = np.vectorize(axial_mass_flow)(e.v_i, Vc, Vs) if params.descent == "empirical" else np.abs(Vc + e.v_i)
     F = loss_factor_numpy(W_ax, o[:, None] * nd.y[None, :], nd.ct[None, :], nd.ch[None, :])

@@ -203,8 +203,9 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
     K1), d bounded at DELAY_MAX: thrust, torque, rolling moment, and the pitching moment and side
     force that the rising and falling halves make (reported as 0 in a first version: a review,
     2026-11-26). The descent case (120 deg) has U_P < 0 on most annuli, which turns the halves."""
-    from propmap.core._physics import (CAMBERED, DELAY_MAX, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus,
-                                       exp_sat_numpy, inplane_induction_numpy, make_cambered_element)
+    from propmap.core._physics import (CAMBERED, DELAY_MAX, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, exp_sat_numpy,
+                                       make_cambered_element)
+    from propmap.core._momentum import inplane_induction_numpy
     from propmap.core.polar import _model_constants
     from propmap.core.nodes import _cambered_args, _nodes
 

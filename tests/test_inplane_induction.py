@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.core._physics import inplane_induction_numpy
+from propmap.core._momentum import inplane_induction_numpy
 from propmap.core.derivatives import differentiable
 from propmap.identify import FitOptions, LoadData, fit_loads
 from propmap.io.params_file import read_params, write_params

@@ -14,6 +14,7 @@ import pytest
 
 import propmap as pm
 from propmap.core import _physics as ph
+from propmap.core import _momentum as mo
 from propmap.core.flapping import flap_damping, flapping
 
 RPM = 2 * math.pi / 60
@@ -94,9 +95,9 @@ def test_radial_drag_of_a_linear_inflow_against_a_numpy_quadrature(prop, generic
     y = nd.y[None, :, None]
     Vs, Vc = (V * np.sin(b))[:, None, None], (V * np.cos(b))[:, None, None]
     OmR = om * prop.radius
-    kx, ky = np.array([ph.inflow_gradients(m, lam, ph.INFLOW_CODES[inflow])  # scalars only
+    kx, ky = np.array([mo.inflow_gradients(m, lam, mo.INFLOW_CODES[inflow])  # scalars only
                        for m, lam in zip(V * np.sin(b) / OmR, (V * np.cos(b) + vbar) / OmR)]).T
-    Vb = Vs + ph.inplane_induction_numpy(r_on.v_i[:, :, None], Vs, Vc) if on.inplane_induction else Vs
+    Vb = Vs + mo.inplane_induction_numpy(r_on.v_i[:, :, None], Vs, Vc) if on.inplane_induction else Vs
     UT = om[:, None, None] * y + Vb * psi_s
     UP = Vc + r_on.v_i[:, :, None] * (1 + (kx[:, None, None] * psi_c + ky[:, None, None] * psi_s) * y / prop.radius)
     U2 = (om[:, None] * nd.y[None, :]) ** 2 + 0.5 * Vs[:, :, 0] ** 2 + Vc[:, :, 0] ** 2
@@ -156,29 +157,29 @@ def test_inflow_gradients_match_their_published_formulas():
     1.8 mu^2) / sin chi, k_y = -2 mu (Leishman 2006, Sec. 3.4); chi = atan(mu / lambda)."""
     mu, lam = 0.1, 0.05
     chi = math.atan2(mu, lam)
-    kx, ky = ph.inflow_gradients(mu, lam, ph.INFLOW_PITT_PETERS)
+    kx, ky = mo.inflow_gradients(mu, lam, mo.INFLOW_PITT_PETERS)
     assert kx == pytest.approx(15 * math.pi / 32 * math.tan(chi / 2), rel=1e-14) and ky == 0.0
-    kx, ky = ph.inflow_gradients(mu, lam, ph.INFLOW_DREES)
+    kx, ky = mo.inflow_gradients(mu, lam, mo.INFLOW_DREES)
     assert kx == pytest.approx(4 / 3 * (1 - math.cos(chi) - 1.8 * mu**2) / math.sin(chi), rel=1e-14)
     assert ky == pytest.approx(-2 * mu)
     # edgewise (lambda = 0): chi = 90 deg
-    assert ph.inflow_gradients(0.2, 0.0, ph.INFLOW_PITT_PETERS)[0] == pytest.approx(15 * math.pi / 32)
+    assert mo.inflow_gradients(0.2, 0.0, mo.INFLOW_PITT_PETERS)[0] == pytest.approx(15 * math.pi / 32)
     # hover and the uniform model: no gradient
-    assert ph.inflow_gradients(0.0, 0.05, ph.INFLOW_DREES) == (0.0, 0.0)
-    assert ph.inflow_gradients(0.1, 0.05, ph.INFLOW_UNIFORM) == (0.0, 0.0)
+    assert mo.inflow_gradients(0.0, 0.05, mo.INFLOW_DREES) == (0.0, 0.0)
+    assert mo.inflow_gradients(0.1, 0.05, mo.INFLOW_UNIFORM) == (0.0, 0.0)
     # a wake above the disk: the mirrored angle (continuous through edgewise, 0 in axial descent)
-    assert ph.inflow_gradients(0.1, -0.05, ph.INFLOW_PITT_PETERS) == ph.inflow_gradients(0.1, 0.05,
-                                                                                       ph.INFLOW_PITT_PETERS)
+    assert mo.inflow_gradients(0.1, -0.05, mo.INFLOW_PITT_PETERS) == mo.inflow_gradients(0.1, 0.05,
+                                                                                       mo.INFLOW_PITT_PETERS)
 
 
 def test_drees_is_held_at_its_advance_ratio_bound_and_flagged_beyond(prop, generic):
     """Drees's k_y = -2 mu is unbounded: a parked or slow rotor in a flow (mu of hundreds) gave
     D = -761 N (0.1 rad/s, 5 m/s) and -9349 N (1 rad/s, 30 m/s) on the APC 8x6E, converged and
     unflagged (a user-level audit, 2026-11-26). Its mu terms are held at 0.5, flagged beyond."""
-    assert ph.DREES_MU_MAX == 0.5
+    assert mo.DREES_MU_MAX == 0.5
     lam = 0.02
-    held = ph.inflow_gradients(0.5, lam, ph.INFLOW_DREES)
-    beyond = ph.inflow_gradients(3.0, lam, ph.INFLOW_DREES)
+    held = mo.inflow_gradients(0.5, lam, mo.INFLOW_DREES)
+    beyond = mo.inflow_gradients(3.0, lam, mo.INFLOW_DREES)
     assert beyond[1] == held[1] == -1.0
     chi = math.atan2(3.0, lam)  # (the skew is the flow's own)
     assert beyond[0] == max(4 / 3 * (1 - math.cos(chi) - 1.8 * 0.25) / math.sin(chi), 0.0)
@@ -276,7 +277,7 @@ def test_rotor_options_out_of_range_are_refused(generic, kw, match):
 def _curve(k):
     """Leishman (2006) fit to Castles & Gray (NACA TN 2474): v/v_h at k = -V_c/v_h, with propmap's
     shift that meets the windmill-brake branch at k = 2."""
-    return 1 + (1.125 - ph.EMPIRICAL_SHIFT) * k - 1.372 * k**2 + 1.718 * k**3 - 0.655 * k**4
+    return 1 + (1.125 - mo.EMPIRICAL_SHIFT) * k - 1.372 * k**2 + 1.718 * k**3 - 0.655 * k**4
 
 
 @pytest.mark.parametrize("k", [0.05, 0.3, 0.8, 1.2, 1.6, 1.9, 2.0])
@@ -284,23 +285,23 @@ def test_empirical_mass_flow_reproduces_the_published_curve(k):
     """On the curve, v = v_h f(k) with d = k v_h: the momentum thrust v W_ax is v_h^2."""
     vh = 3.0
     d, v = k * vh, vh * _curve(k)
-    w = ph.axial_mass_flow(v, -d, 0.0)
+    w = mo.axial_mass_flow(v, -d, 0.0)
     assert v * w == pytest.approx(vh**2, rel=1e-12)
 
 
 def test_empirical_mass_flow_is_glauert_outside_the_vortex_ring_band():
-    assert ph.axial_mass_flow(2.0, 3.0, 0.0) == 5.0  # climb
-    assert ph.axial_mass_flow(1.0, -5.0, 0.0) == 4.0  # windmill brake, v < |Vc|/2
-    assert ph.axial_mass_flow(-1.0, -5.0, 0.0) == 6.0  # negative thrust in descent
+    assert mo.axial_mass_flow(2.0, 3.0, 0.0) == 5.0  # climb
+    assert mo.axial_mass_flow(1.0, -5.0, 0.0) == 4.0  # windmill brake, v < |Vc|/2
+    assert mo.axial_mass_flow(-1.0, -5.0, 0.0) == 6.0  # negative thrust in descent
     # continuous at the band's edges: hover (Vc -> 0) and v = |Vc|/2
-    assert ph.axial_mass_flow(4.0, -1e-9, 0.0) == pytest.approx(4.0, rel=1e-6)
-    assert ph.axial_mass_flow(2.5 + 1e-9, -5.0, 0.0) == pytest.approx(2.5, rel=1e-6)
+    assert mo.axial_mass_flow(4.0, -1e-9, 0.0) == pytest.approx(4.0, rel=1e-6)
+    assert mo.axial_mass_flow(2.5 + 1e-9, -5.0, 0.0) == pytest.approx(2.5, rel=1e-6)
     # fast forward flight: Glauert's form again
-    assert ph.axial_mass_flow(4.0, -3.0, 40.0) == pytest.approx(1.0, rel=1e-12)
+    assert mo.axial_mass_flow(4.0, -3.0, 40.0) == pytest.approx(1.0, rel=1e-12)
     # the momentum thrust v sqrt(Vs^2 + W^2) grows with v (one root per annulus)
     v = np.linspace(0.01, 20, 400)
     for Vs in (0.0, 0.5, 2.0, 8.0):
-        m = np.array([x * math.hypot(Vs, ph.axial_mass_flow(x, -6.0, Vs)) for x in v])
+        m = np.array([x * math.hypot(Vs, mo.axial_mass_flow(x, -6.0, Vs)) for x in v])
         assert np.all(np.diff(m) > 0)
 
 

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.core._physics import NODE_TH, element, momentum_thrust
+from propmap.core._physics import NODE_TH, element
+from propmap.core._momentum import momentum_thrust
 from propmap.core._reference import solve_reference
 from propmap.core.polar import _model_constants
 from propmap.core.nodes import _nodes

@@ -13,7 +13,8 @@ import pytest
 from scipy.optimize import fsolve
 
 import propmap as pm
-from propmap.core._physics import NODE_TH, element, momentum_thrust
+from propmap.core._physics import NODE_TH, element
+from propmap.core._momentum import momentum_thrust
 from propmap.core._reference import solve_reference
 from propmap.core.polar import _model_constants
 from propmap.core.nodes import _nodes
@@ -193,7 +194,7 @@ def test_swirl_gives_up_with_its_own_code(apc8x6, apc_params):
     # one swirl step on an axial point's annuli from u = 0 (out of balance): an intermediate step
     # moves u to the balance's target; the last allowed step marks the annuli NO_SWIRL_BALANCE
     from propmap.core import _kernel
-    from propmap.core._physics import SWIRL_MAX_ITER
+    from propmap.core._momentum import SWIRL_MAX_ITER
 
     p = apc_params.replace(swirl=True)
     r = pm.rotor_loads(apc8x6, apc_params, 900.0, 0.0, 0.0, discretization=pm.Discretization(6, 2), radial=True)

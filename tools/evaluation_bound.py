@@ -41,8 +41,8 @@ from scipy.optimize.elementwise import find_root
 import propmap as pm
 from propmap.core import _annulus as K
 from propmap.core.nodes import _cambered_args, _nodes
-from propmap.core._physics import (PK_INPLANE, cambered_annulus, element, inplane_induction_numpy,
-                                   loss_factor_numpy, momentum_scale, momentum_thrust)
+from propmap.core._physics import PK_INPLANE, cambered_annulus, element, loss_factor_numpy
+from propmap.core._momentum import inplane_induction_numpy, momentum_scale, momentum_thrust
 from propmap.core.polar import _model_constants
 from propmap.core._reference import solve_reference
 

@@ -47,10 +47,10 @@ import numpy as np
 from ._fastmath import atan2_poly, exp_sat
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_Y, PK_DYNSTALL,
-                       PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, empirical_k, inflow_gradients, inplane_induction,
-                       inverse_sin_phi, make_axial_mass_flow, make_cambered_element, make_delayed_cambered_element,
-                       make_element, make_loss_factor, make_prandtl, make_profile_drag, momentum_scale,
-                       momentum_thrust, swirl_step, swirl_target)
+                       PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, inverse_sin_phi, make_cambered_element,
+                       make_delayed_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag)
+from ._momentum import (empirical_k, inflow_gradients, inplane_induction, make_axial_mass_flow, momentum_scale,
+                        momentum_thrust, swirl_step, swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -64,7 +64,7 @@ FTOL = 1e-9
 OK = 0
 NO_BRACKET = 1
 NO_CONVERGENCE = 2
-NO_SWIRL_BALANCE = 3  # the swirl iteration (_physics.swirl_target) did not balance within SWIRL_MAX_ITER solves
+NO_SWIRL_BALANCE = 3  # the swirl iteration (_momentum.swirl_target) did not balance within SWIRL_MAX_ITER solves
 
 _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
 _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -127,10 +127,10 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     ``v`` is the annulus' mean inflow; with a linear inflow model (gx or gy non-zero) the
     element at azimuth psi_k sees v (1 + gx cos psi_k + gy sin psi_k), gx = k_x y/R,
     gy = k_y y/R, over the full circle of ``naz`` nodes. ``emp``: the momentum side uses the
-    empirical axial mass flow in descent (_physics.axial_mass_flow) instead of Glauert's.
+    empirical axial mass flow in descent (_momentum.axial_mass_flow) instead of Glauert's.
     With ``pk[PK_INPLANE]`` = 1 (airfoil.RotorOptions.inplane_induction) the blades meet the
     in-plane airspeed Vs plus the skewed wake's in-plane induced velocity at v
-    (_physics.inplane_induction); the momentum side keeps Vs. ``kd`` > 0 (:func:`delay_factor`;
+    (_momentum.inplane_induction); the momentum side keeps Vs. ``kd`` > 0 (:func:`delay_factor`;
     the cambered model in a uniform inflow, RotorOptions.dynamic_stall): each half-circle node
     and its mirror node through the delayed element.
     """
@@ -343,7 +343,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
             # chain). Annuli already solved are recomputed harmlessly.
             if emp and Vc < 0.0:
                 # empirical descent: the vortex sheets are carried by the mass-flow velocity of
-                # the closure (_physics.axial_mass_flow), not by U_P, which passes through 0 near
+                # the closure (_momentum.axial_mass_flow), not by U_P, which passes through 0 near
                 # the annulus' ideal autorotation and would make F(v) jump there (several roots)
                 for j in range(nr):
                     inv_sin[j] = _inverse_sin_phi(_axial_mass_flow(trial[j], Vc, Vs), Om * y[j] - us[j])

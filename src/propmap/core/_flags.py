@@ -10,7 +10,7 @@ import numba
 import numpy as np
 
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import DREES_MU_MAX, inplane_induction
+from ._momentum import DREES_MU_MAX, inplane_induction
 
 __all__ = ["CLS_BAND", "CLS_INPLANE", "CLS_K_WINDMILL", "CLS_R_HUB", "CLS_RADIUS", "CLS_RHO", "point_flags",
            "working_states"]
@@ -88,11 +88,11 @@ def point_flags(out, counts, vx, vz, om, cls, linear, empirical, flags, drees=Fa
     and in-plane ratios k and m, the reverse-flow radius V_b / Omega [m], V_b the blades'
     in-plane airspeed: V sin(beta), plus the skewed wake's in-plane induction at the mean
     inflow where ``cls[CLS_INPLANE]`` is 1 (airfoil.RotorOptions.inplane_induction,
-    _physics.inplane_induction); for a stopped rotor, Omega = 0, inf with in-plane flow, else
+    _momentum.inplane_induction); for a stopped rotor, Omega = 0, inf with in-plane flow, else
     0), ``counts`` row 4 (the working state) and ``flags`` shape (N_FLAGS, n): converged
     (status 0), vortex ring (state 1), multiple roots, reverse flow (radius > r_hub), inflow
     extrapolated (:func:`working_states`; with ``drees``, Drees's linear inflow, also where the
-    advance ratio V sin(beta) / (Omega R) exceeds _physics.DREES_MU_MAX, at which its gradients
+    advance ratio V sin(beta) / (Omega R) exceeds _momentum.DREES_MU_MAX, at which its gradients
     are held).
     """
     working_states(out[0], vx, vz, out[6], cls[CLS_RHO], cls[CLS_RADIUS], cls[CLS_BAND:], cls[CLS_K_WINDMILL],

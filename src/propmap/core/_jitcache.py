@@ -2,7 +2,7 @@
 
 numba stamps a cached function with a hash of the file that defines it only. The solver
 kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
-``_physics.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
+``_physics.py``, ``_momentum.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
 kernel (``_sensitivity.py``, calling the momentum side's partials of
 ``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py`` and the
 swirl's linear algebra of ``_swirl_sensitivity.py``) compiles
@@ -10,7 +10,7 @@ in those and ``_annulus.py``, and the linear inflow models' (``_linear_sensitivi
 those and ``_sensitivity.py``'s, so an edit there would leave numba serving a kernel compiled
 from the old physics (module constants such as the Reynolds clamp are compiled in). The
 locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``, ``_flags.py``,
-whose reverse-flow radius compiles in ``_physics.py``'s in-plane induction since 2026-11-25,
+whose reverse-flow radius compiles in ``_momentum.py``'s in-plane induction since 2026-11-25,
 ``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
 (:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`, :data:`LINEAR_SOURCES`), so that editing
@@ -31,8 +31,8 @@ __all__ = ["CACHE", "CACHE_FALLBACK", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSI
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
-KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_fastmath.py",
-                  _HERE / "_flags.py")
+KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_momentum.py",
+                  _HERE / "_fastmath.py", _HERE / "_flags.py")
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py",
                        _HERE / "_parameter_sensitivity.py", _HERE / "_delayed_sensitivity.py", _HERE / "_tangents.py",

@@ -1,7 +1,7 @@
 """Compiled (numba) BEMT kernel over a batch of operating points: per point the annuli's
 section constants, their root solves (core/_annulus.py: eq 11 by the root-selection rule,
 documented there and in docs/solver.md), the linear inflow's second solve and the swirl's
-iteration (_physics.swirl_target) around them, then the loads integrated over the annuli
+iteration (_momentum.swirl_target) around them, then the loads integrated over the annuli
 (eqs 13-15) and the point's states and flags (core/_flags.py).
 """
 
@@ -14,19 +14,19 @@ from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _
                        _swirl_target, annulus_loads, delay_factor, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
-from ._physics import (INFLOW_DREES, INFLOW_UNIFORM, NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W,
-                       NODE_Y, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL)
+from ._physics import NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y
+from ._momentum import INFLOW_DREES, INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, azim, grad, naz, model, pk, axial, it):
     """One swirl step of an operating point after its root solve with the swirl ``us``: every
-    annulus' target (_physics.swirl_target, from its loads at the roots ``v``) and imbalance
+    annulus' target (_momentum.swirl_target, from its loads at the roots ``v``) and imbalance
     g. An annulus is done when it balances to SWIRL_TOL Omega y, or when the iterates with
     g > 0 and g < 0 close in on each other to that width without a balance: the selected root
     jumps between branches there as u moves (a fold of eq 11), no balance exists on it, and
     the annulus keeps that u with its ``multiple`` flag raised. Others move to the next
-    iterate (_physics.swirl_step); ``sw`` (4, nr) keeps each annulus' previous iterate, its
+    iterate (_momentum.swirl_step); ``sw`` (4, nr) keeps each annulus' previous iterate, its
     imbalance and the bracket's ends (NaN until known). True when every annulus is done (``us``
     is then the swirl the roots were solved with); on the last iteration those that are not
     get NO_SWIRL_BALANCE. ``nodes``, ``blade``, ``sect``, ``azim``, ``grad`` as
@@ -100,11 +100,11 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     depends on psi through sin psi only). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
     re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. ``inflow``: the inflow
-    model (_physics.INFLOW_*); ``emp``: the empirical momentum in descent (_physics.DESCENT_CODES);
+    model (_physics.INFLOW_*); ``emp``: the empirical momentum in descent (_momentum.DESCENT_CODES);
     with a linear model each point is solved twice: with the
     uniform inflow, whose mean inflow gives the wake skew angle and the gradients
-    (_physics.inflow_gradients), then with the linear inflow over the full circle.
-    ``swirl``: the annuli's swirl u (_physics.swirl_target) is iterated around these solves,
+    (_momentum.inflow_gradients), then with the linear inflow over the full circle.
+    ``swirl``: the annuli's swirl u (_momentum.swirl_target) is iterated around these solves,
     by a bracketed secant per annulus from u = 0, until every annulus' angular momentum balances
     to SWIRL_TOL Omega y or its selected root is found to jump there (flagged as multiple roots;
     :func:`_swirl_iterate`); an annulus that does neither within SWIRL_MAX_ITER solves fails

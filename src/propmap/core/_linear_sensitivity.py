@@ -1,5 +1,5 @@
 """Compiled (numba) implicit derivatives of the loads with a linear inflow model (Drees,
-Pitt-Peters; _physics.inflow_gradients).
+Pitt-Peters; _momentum.inflow_gradients).
 
 With a linear inflow each operating point is solved twice (core/_kernel.py): the uniform
 inflow first, whose area-weighted mean inflow v_u sets the wake skew and so the gradients
@@ -43,7 +43,7 @@ that change, one evaluation per node (:func:`_direction_partials`), for the pape
 annulus' loads at the stepped constants less the base (_annulus.annulus_loads: the blade's
 sums). The momentum side's are _momentum_sensitivity's (analytic but at the empirical descent
 model's switch; its loss factor's partial in u is that in Omega divided by -y). The gradients'
-own partials k_mu, k_lambda are central differences of _physics.inflow_gradients (step 1e-6),
+own partials k_mu, k_lambda are central differences of _momentum.inflow_gradients (step 1e-6),
 one-sided (second order) at mu = 0, where they are defined for mu >= 0 only: an axial point (V
 sin beta = 0, solved with the uniform inflow only, where g = 0) gets the right-hand slope in V
 sin beta, the one that the in-plane loads, odd in V sin beta, share on both sides.
@@ -149,7 +149,7 @@ def _input_partials(P, v, op, y, th, sec, cfac, azim, g, model, pk):
     naz = sinpsi.shape[0]
     krad = pk[PK_RADIAL_DRAG]
     # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, V cos beta) at the annulus' mean inflow v
-    # (_physics.inplane_induction, 0 without the option) and u_x's partials; the constants keep V sin beta
+    # (_momentum.inplane_induction, 0 without the option) and u_x's partials; the constants keep V sin beta
     vb, uxs, uxc, uxv = _inplane_partials(pk[PK_INPLANE], v, Vs, Vc)
     kr = krad * vb
     # the sums of the integrands of the element's partials: 0-2 U_P's (weights 1, cos, sin), 3-4 U_T's (1, sin),

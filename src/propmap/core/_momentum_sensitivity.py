@@ -4,7 +4,7 @@ inflow: the part of the implicit derivatives (core/_sensitivity.py) that has no 
 
 The momentum side is one expression per annulus, so it is differentiated analytically:
 through Glauert's |V cos beta + v|, through the empirical descent curve's inversion
-(dk/dr = k / (f'(k) - r), _physics.axial_mass_flow), and through Prandtl's factor of
+(dk/dr = k / (f'(k) - r), _momentum.axial_mass_flow), and through Prandtl's factor of
 1/sin phi = sqrt(w^2 + (Omega y)^2) / w (w the axial mass-flow velocity; with swirl the
 caller passes Omega less u / y, the blade speed the loss factor sees). Where the empirical
 model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) the caller differences
@@ -19,7 +19,8 @@ import numpy as np
 
 from ._annulus import _FM, _axial_mass_flow, _empirical_k, _inverse_sin_phi, _momentum_thrust, _prandtl
 from ._jitcache import CACHE
-from ._physics import EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO, TWO_OVER_PI
+from ._physics import TWO_OVER_PI
+from ._momentum import EMPIRICAL_C1, EMPIRICAL_C2, EMPIRICAL_C3, EMPIRICAL_C4, EMPIRICAL_HOVER_RATIO
 
 #: relative step of the momentum side's central differences at the fixed root
 STEP = 1e-5
@@ -68,7 +69,7 @@ def _mass_flow_partials(v, Vc, Vs, emp):
     (inflow v and speeds [m/s]).
 
     Glauert's w = |Vc + v|, or with ``emp`` in the vortex-ring and turbulent-wake states the
-    empirical curve of _physics.axial_mass_flow, w = g + (v_h^2 / v - g) exp(-(Vs/v)^2),
+    empirical curve of _momentum.axial_mass_flow, w = g + (v_h^2 / v - g) exp(-(Vs/v)^2),
     g = |Vc + v|, v_h = d / k, d = -Vc, where k solves f(k) = (v/d) k: differentiated
     through that equation (dk/dr = k / (f'(k) - r), r = v/d), not by differences.
     """

@@ -3,7 +3,7 @@
 It exists for two reasons: it is the baseline that benchmarks/ times beside the
 compiled kernel (the brief's "straightforward vectorised NumPy implementation"), and it
 is an independent check of the kernel's control flow in the tests (same element
-physics from ``_physics.py``, same root-selection rule, but array masks instead of
+physics from ``_physics.py`` and ``_momentum.py``, same root-selection rule, but array masks instead of
 scalar loops). Not part of the public API.
 """
 
@@ -12,10 +12,10 @@ from __future__ import annotations
 import numpy as np
 
 from . import _annulus as K
-from ._physics import (CAMBERED, PK_DYNSTALL, PK_INPLANE, PK_RADIAL_DRAG, SWIRL_LIMIT, SWIRL_MAX_ITER,
-                       SWIRL_SECANT_ITER, SWIRL_TOL, cambered_annulus, element, element_cambered_delayed,
-                       inplane_induction_numpy, loss_factor_numpy, momentum_scale, momentum_thrust, profile_cd,
-                       swirl_step, swirl_target)
+from ._physics import (CAMBERED, PK_DYNSTALL, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, element,
+                       element_cambered_delayed, loss_factor_numpy, profile_cd)
+from ._momentum import (SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL, inplane_induction_numpy,
+                        momentum_scale, momentum_thrust, swirl_step, swirl_target)
 
 
 def solve_reference(om, Vs, Vc, nodes, p, air=None):
@@ -24,7 +24,7 @@ def solve_reference(om, Vs, Vc, nodes, p, air=None):
     ``nodes`` from ``nodes._nodes`` for the same parameters ``p`` and ``air``. The paper's
     uniform inflow and rigid blades only (``p.inflow == "uniform"``, no flapping); with
     ``p.swirl`` the swirl is iterated around the root solve by the kernel's bracketed secant,
-    annulus by annulus (_physics.swirl_target, swirl_step; _kernel._swirl_iterate), with NumPy
+    annulus by annulus (_momentum.swirl_target, swirl_step; _kernel._swirl_iterate), with NumPy
     arrays.
     """
     if not p.swirl:

@@ -110,7 +110,7 @@ LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 def _inplane_partials(kin, v, vs, vc):
     """The blades' in-plane airspeed vb = vs + kin u_x (u_x = v vs / (sqrt(vs^2 + W^2) + |W|),
-    W = vc + v, or v in descent: _physics.inplane_induction; kin 1 with the option, 0
+    W = vc + v, or v in descent: _momentum.inplane_induction; kin 1 with the option, 0
     without) and kin times u_x's partial derivatives in vs, in vc at fixed v and in v at
     fixed vc. At vc = 0, where u_x's slope in vc has a kink, the two sides' mean (as for the
     empirical descent model's switch); where vs = W = 0 the partials are taken as 0."""
@@ -392,7 +392,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         U2 = (om * yj) ** 2 + 0.5 * vs * vs + vc * vc
         s, u = _constants_slopes(U2, sc[j], cy2[j], model, cam)
         UP = vc + vj
-        # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, V cos beta) (_physics.inplane_induction)
+        # the blades' in-plane airspeed vb = V sin beta + u_x(v, V sin beta, V cos beta) (_momentum.inplane_induction)
         # and u_x's partials in V sin beta, in V cos beta and in v; the Reynolds constants and the momentum side keep
         # V sin beta
         vb, uxs, uxc, uxv = _inplane_partials(kin, vj, vs, vc)

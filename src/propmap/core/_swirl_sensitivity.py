@@ -4,7 +4,7 @@ inflow v and swirl u, linearised at the converged (v, u), and their solution for
 
 With ``RotorOptions.swirl`` the root solves eq 11 at the blade speed Omega y - u, G(v, u, x) =
 0, and the swirl balances the annulus' angular momentum, S(v, u, x) = u - v dQ / (y dT) = 0
-(_physics.swirl_target: the rotational interference factor a' = u / (Omega y) of blade-element
+(_momentum.swirl_target: the rotational interference factor a' = u / (Omega y) of blade-element
 momentum theory; H. Glauert, "Airplane Propellers", in W. F. Durand (ed.), Aerodynamic Theory,
 vol. IV, div. L, Springer, 1935), or is held at its clip +-SWIRL_LIMIT Omega y. The implicit
 function theorem on both (A. Ning, "Using blade element momentum methods with gradient-based
@@ -18,7 +18,7 @@ from __future__ import annotations
 import numba
 
 from ._annulus import _FM
-from ._physics import SWIRL_LIMIT
+from ._momentum import SWIRL_LIMIT
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -27,7 +27,7 @@ def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
 
     The root solves G(v, u, x) = dT_BET - F dT_BEMT = 0 (eq 11) at the blade speed Omega y - u,
     and with swirl u balances the angular momentum, S(v, u, x) = u - v dQ / (y dT) = 0
-    (_physics.swirl_target; dT, dQ the annulus' thrust and torque densities), or is held at its
+    (_momentum.swirl_target; dT, dQ the annulus' thrust and torque densities), or is held at its
     clip +-SWIRL_LIMIT Omega y. Given the loads' partials at the fixed (v, u): ``Tv``, ``Qv``
     (d/dv of dT, dQ), ``Tt``, ``Dt``, ``Qt``, ``Rt`` (d/dU_T of dT, dD, dQ, dM_R: the swirl's
     partials are their negatives), ``mom_wy`` (d/d(Omega y) of the momentum side: its swirl
@@ -39,7 +39,7 @@ def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
     if not swirl:
         return 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, Gv
     Gu = -Tt + mom_wy
-    if T0 == 0.0:  # no thrust: the target is 0 (_physics.swirl_target), S = u
+    if T0 == 0.0:  # no thrust: the target is 0 (_momentum.swirl_target), S = u
         return Gu, 0.0, 1.0, 0.0, 0.0, 0.0, Tt, Dt, Qt, Rt, Gv
     target = v * Q0 / (y * T0)
     lim = SWIRL_LIMIT * Om * y

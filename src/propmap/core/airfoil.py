@@ -42,9 +42,9 @@ __all__ = [
 ]
 
 LIFT_MODELS = ("sigmoid", "sincos")
-#: inflow models (``RotorOptions.inflow``; _physics.inflow_gradients)
+#: inflow models (``RotorOptions.inflow``; _momentum.inflow_gradients)
 INFLOW_MODELS = ("uniform", "drees", "pitt-peters")
-#: momentum in descent (``RotorOptions.descent``; _physics.axial_mass_flow)
+#: momentum in descent (``RotorOptions.descent``; _momentum.axial_mass_flow)
 DESCENT_MODELS = ("glauert", "empirical")
 #: valid ranges of the rotor options (SI)
 FLAP_COMPLIANCE_MAX = 1e3  # [rad/(N m)]
@@ -67,7 +67,7 @@ class RotorOptions:
         azimuth, so that the side force and the pitching moment vanish. The linear models
         give every annulus v0(r) (1 + k_x (r/R) cos psi + k_y (r/R) sin psi), with the
         gradients of Drees (1949) or Pitt & Peters (1981) from the wake skew angle
-        (_physics.inflow_gradients; Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
+        (_momentum.inflow_gradients; Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
         2006, Sec. 3.4); v0(r) is still the root of eq 11 (costs two root solves and twice
         the azimuth nodes per non-axial point).
     flap_compliance : float
@@ -88,7 +88,7 @@ class RotorOptions:
         ``"empirical"``: in the vortex-ring and turbulent-wake states the measured induced
         velocity of rotors in axial descent (Leishman 2006, Ch. 2, fitted to Castles & Gray,
         NACA TN 2474, 1951), written as an axial mass flow that fades into Glauert's with the
-        in-plane speed (_physics.axial_mass_flow; docs/models.md); climb and hover unchanged;
+        in-plane speed (_momentum.axial_mass_flow; docs/models.md); climb and hover unchanged;
         the default of the cambered model.
     swirl : bool
         The annuli's swirl: the tangential induced velocity u that the torque leaves in the
@@ -124,7 +124,7 @@ class RotorOptions:
         velocity along the in-plane airspeed, v tan(chi / 2) on the azimuthal mean, chi the
         wake's skew (tan chi = V sin(beta) / |V cos(beta) + v|, in descent V sin(beta) / |v|):
         from V sin(beta) / 2 at small skew in hover to v as the skew nears 90 deg
-        (_physics.inplane_induction, docs/models.md; in descent propmap's interpolation, not
+        (_momentum.inplane_induction, docs/models.md; in descent propmap's interpolation, not
         the model's sign where the flow through the disk is upward). The blades meet
         V sin(beta) + v tan(chi / 2) in the disk plane; the momentum balance keeps Glauert's.
         Zero in axial flow and hover; implicit derivatives with every inflow model and swirl.

@@ -12,6 +12,7 @@ from dataclasses import replace as dc_replace
 import numpy as np
 
 from . import _physics as ph
+from . import _momentum as mo
 from .airfoil import RECORD_META, SectionParams
 from .polar import _model_constants
 from .flapping import COMPLIANCE
@@ -200,8 +201,8 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     # the dynamic stall's rising and falling halves give a side force and a pitching moment: their rows too
     n_rows = len(DERIVATIVE_LOADS) + (len(FLAPPING_LOADS) if getattr(params, "dynamic_stall", 0.0) > 0.0 else 0)
     raw = np.empty((n_rows, n_cols + (3 if rays else 0), om.size))
-    inflow = ph.INFLOW_CODES[params.inflow]
-    if inflow == ph.INFLOW_UNIFORM:
+    inflow = mo.INFLOW_CODES[params.inflow]
+    if inflow == mo.INFLOW_UNIFORM:
         _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,
                                    n_in, par, scp, hrho, raw)
     else:  # both solves' annuli together, the uniform one's mean inflow setting the gradients

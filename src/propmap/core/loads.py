@@ -102,11 +102,11 @@ class RotorLoads:
         V_b / Omega [m]: radius inside which the retreating blade sees reverse flow, V_b the
         blades' in-plane airspeed: V sin(beta), plus the skewed wake's in-plane induced
         velocity at the mean inflow v_i_mean with ``inplane_induction`` (the cambered
-        default; _physics.inplane_induction).
+        default; _momentum.inplane_induction).
     inflow_extrapolated : ndarray of bool
         The inflow model was used outside the measurements behind it: a linear inflow model
         with the wake above the disk (inflow ratio < 0, the model's mirrored extrapolation;
-        _physics.inflow_gradients), or the empirical descent momentum (``descent =
+        _momentum.inflow_gradients), or the empirical descent momentum (``descent =
         "empirical"``) in the vortex-ring or turbulent-wake range (0.45 <= lambda2 < 2) with an
         in-plane speed that puts its fade with V sin(beta) (propmap's, not measured) between
         5% and 95%.

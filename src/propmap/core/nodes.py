@@ -12,6 +12,7 @@ import numpy as np
 
 from . import _flags
 from . import _physics as ph
+from . import _momentum as mo
 from .airfoil import Air, CamberedParams, SectionParams
 from .polar import _model_constants
 from .geometry import Propeller
@@ -127,7 +128,7 @@ def _prepared(propeller: Propeller, params: SectionParams, air: Air, discretizat
     cls[_flags.CLS_INPLANE] = pk[ph.PK_INPLANE]  # the reverse-flow radius' in-plane airspeed
     for a in (pk, cam, cls):
         a.setflags(write=False)
-    prep = (nd, model, pk, cam, ph.INFLOW_CODES[params.inflow], bool(ph.DESCENT_CODES[params.descent]), cls)
+    prep = (nd, model, pk, cam, mo.INFLOW_CODES[params.inflow], bool(mo.DESCENT_CODES[params.descent]), cls)
     if len(_PREPARED) >= _PREPARED_MAX:
         _PREPARED.clear()
     _PREPARED[key] = (propeller, params, air, discretization, prep)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
-from . import _physics as ph
+from . import _momentum as mo
 from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
@@ -401,7 +401,7 @@ def rotor_loads(
     out = np.empty((_kernel.N_OUT, n))  # T, D, Q, M_R, Y, M_P, mean inflow, v_h, k, m, reverse-flow radius
     rows = n if keep_radial else 1  # unused (1, nr) scratch when the per-annulus outputs are not kept
     # v_i, dT, dD, dQ, dM_R, dY, dM_P, swirl and, with a linear inflow model only, the uniform solve's roots
-    rad = np.empty((_kernel.N_RAD if inflow != ph.INFLOW_UNIFORM else _kernel.RAD_UNIFORM, rows, nr))
+    rad = np.empty((_kernel.N_RAD if inflow != mo.INFLOW_UNIFORM else _kernel.RAD_UNIFORM, rows, nr))
     counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
     flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
     # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
@@ -418,7 +418,7 @@ def rotor_loads(
         code = int(status[i]) - 1
         j, reason = divmod(code, 4)
         why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
-               3: f"the swirl did not balance the annulus' angular momentum within {ph.SWIRL_MAX_ITER} root solves, "
+               3: f"the swirl did not balance the annulus' angular momentum within {mo.SWIRL_MAX_ITER} root solves, "
                   "nor close in on a jump of its selected root"}[reason]
         raise SolverError(
             f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
@@ -439,8 +439,8 @@ def rotor_loads(
         # the states and flags again, for the scaled thrust and inflow and the rates asked for (a stopped
         # rotor: its whole retreating side in reverse flow, radius inf, with in-plane flow)
         out[0], out[6] = T, vbar
-        _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != ph.INFLOW_UNIFORM, empirical, flags,
-                           inflow == ph.INFLOW_DREES)
+        _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != mo.INFLOW_UNIFORM, empirical, flags,
+                           inflow == mo.INFLOW_DREES)
     # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
     # upflow; the empirical descent curve blended in forward flight by propmap's fade)
     converged, vring, multiple, reverse, extrapolated = flags
@@ -457,7 +457,7 @@ def rotor_loads(
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
         # v_i (and the swirl), contiguous as the kernel is compiled for
         roots = rad[[0, _kernel.RAD_SWIRL]] if params.swirl else rad[:1]  # (a copy, contiguous)
-        uniform = rad[_kernel.RAD_UNIFORM] if inflow != ph.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
+        uniform = rad[_kernel.RAD_UNIFORM] if inflow != mo.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
         raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
                          propeller, discretization, rigid + (out[4], out[5]), uniform) if solved else {})
         if params.flap_compliance > 0:
