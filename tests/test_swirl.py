@@ -260,6 +260,28 @@ def test_swirl_where_the_selected_root_jumps_is_kept_at_the_jump_and_flagged():
     assert 0.9 * plain.thrust < r.thrust < plain.thrust
 
 
+def test_swirl_balances_past_a_jump_with_imbalance_of_one_sign():
+    """gwsdd_4x2.5 with the paper's section windmilling in axial climb (12000 rpm, 12 m/s): at
+    the hub annulus the selected root jumps (v -3.80 -> -2.11 m/s at u = -0.078 Omega y) with
+    the imbalance g < 0 on both sides, and the balance lies past the jump (u = -0.22 Omega y).
+    The secant through iterates on either side pointed back and the iteration failed after 40
+    solves on 91 of 1505 axial points (a user-level audit, 2026-11-26); without a bracket a
+    step against g's sign now takes the plain step."""
+    from propmap.core._reference import solve_reference
+    from propmap.core.nodes import _nodes
+
+    prop = pm.load_propeller("gwsdd_4x2.5")
+    p = pm.preset("gill2017-apc").replace(swirl=True)
+    om = 12000 * RPM
+    r = pm.rotor_loads(prop, p, om, np.arange(11.9, 13.0, 0.1), 0.0, on_failure="flag")
+    assert r.converged.all() and r.thrust.max() < 0  # (windmilling)
+    nd = _nodes(prop, 48, 16, pm.Air(), p)
+    T, D, Q, vi, ok = solve_reference(np.array([om]), np.array([0.0]), np.array([12.0]), nd, p)
+    assert ok.all()  # the NumPy reference, with the same step rule, balances too and agrees
+    assert abs(float(T[0]) - float(r.thrust[1])) < 1e-6 * abs(float(r.thrust[1]))
+    assert abs(float(Q[0]) - float(r.torque[1])) < 1e-6 * abs(float(r.torque[1]))
+
+
 def test_swirl_with_a_linear_inflow_and_in_descent(apc8x6):
     # Pitt-Peters' gradient vanishes in axial flow: there the linear inflow with swirl is the
     # uniform one with swirl, exactly; in forward flight swirl still takes thrust. The default

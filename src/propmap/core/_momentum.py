@@ -234,14 +234,21 @@ def swirl_step(u, g, u_prev, g_prev, lo, hi, first, bisect, limit):
     bracket is replaced by its midpoint, as is every step with ``bisect`` (from iteration
     SWIRL_SECANT_ITER on: a secant creeps along a jump of g), so that the bracket shrinks to a
     balance or, where the selected root jumps between branches as u moves, to the jump.
+    Until both are known, a secant step against the sign of g is replaced by the plain step:
+    the target's slope in u is below 1 (0.015-0.25, docs/models.md), so g falls with u and a
+    balance lies on g's side; a secant through iterates on either side of a jump of the
+    selected root can point back, and iterating between the branches it never brackets the
+    balance beyond the jump (a windmilling annulus of gwsdd_4x2.5 with the paper's section, where
+    g < 0 on both sides of the jump and the balance lies past it: a user-level audit, 2026-11-26).
     Clipped to [-limit, limit]."""
     nxt = u + g
+    bracket = lo == lo and hi == hi
     if not first:
         den = g - g_prev
         if den != 0.0:
             sec = u - g * (u - u_prev) / den
-            if sec == sec and abs(sec) < 1e300:
+            if sec == sec and abs(sec) < 1e300 and (bracket or (sec - u) * g >= 0.0):
                 nxt = sec
-    if lo == lo and hi == hi and (bisect or not (min(lo, hi) < nxt < max(lo, hi))):
+    if bracket and (bisect or not (min(lo, hi) < nxt < max(lo, hi))):
         nxt = 0.5 * (lo + hi)
     return min(max(nxt, -limit), limit)
