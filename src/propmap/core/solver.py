@@ -219,14 +219,17 @@ def check_model_args(propeller, params, air=_UNCHECKED, discretization=_UNCHECKE
         raise TypeError(f"discretization must be a propmap.Discretization, got {type(discretization).__name__}")
 
 
-def _warn_dynamic_stall_cusp(V, Vs, wrt) -> None:
+def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:
     """Warn of derivatives asked where the dynamic stall's loads have a cusp: with no in-plane
     airspeed (axial flow or rest) Gormont's delay grows as the square root of the in-plane
     airspeed, so the loads' slopes across it (the incidence in axial flow, the airspeed from
     rest, the in-plane velocity's at rest) are unbounded; the kernel returns the static
     section's there (docs/solver.md, Dynamic stall)."""
-    axial = (Vs == 0.0) & (V > 0.0) if "incidence" in wrt else np.zeros(V.shape, bool)
-    rest = (V == 0.0) if ({"airspeed", STILL_AIR} & set(wrt)) else np.zeros(V.shape, bool)
+    none = np.zeros(V.shape, bool)
+    axial = (Vs == 0.0) & (V > 0.0) if "incidence" in wrt else none
+    # from rest: along a ray with an in-plane part (airspeed), or the in-plane slopes (STILL_AIR)
+    rest = (V == 0.0) & ((np.sin(b) != 0.0) if "airspeed" in wrt else none) | (
+        (V == 0.0) if STILL_AIR in wrt else none)
     n = int(np.count_nonzero(axial | rest))
     if n:
         warnings.warn(f"dynamic_stall: {n} point(s) have no in-plane airspeed (axial flow or rest), where the loads "
@@ -391,7 +394,7 @@ def rotor_loads(
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")
     if getattr(params, "dynamic_stall", 0.0) > 0.0 and ({"incidence", "airspeed", STILL_AIR} & set(wrt)):
-        _warn_dynamic_stall_cusp(V1, Vs, wrt)
+        _warn_dynamic_stall_cusp(V1, Vs, b1, wrt)
     keep_radial = radial or bool(wrt)  # the derivatives need the roots
     om_in = om1
     if any_slow:  # spin-up and stopped rotors: solved at OMEGA_MIN, scaled below
