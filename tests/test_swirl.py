@@ -280,6 +280,11 @@ def test_swirl_balances_past_a_jump_with_imbalance_of_one_sign():
     assert ok.all()  # the NumPy reference, with the same step rule, balances too and agrees
     assert abs(float(T[0]) - float(r.thrust[1])) < 1e-6 * abs(float(r.thrust[1]))
     assert abs(float(Q[0]) - float(r.torque[1])) < 1e-6 * abs(float(r.torque[1]))
+    # near an annulus of zero thrust the target's slope exceeds 1 and g has a maximum just below 0
+    # before the balance: plain steps u + g crawled there and the point failed (a review of the first
+    # version); the step along g grows. Regression value of the rule before either change: -1.122840 N
+    nr = pm.rotor_loads(pm.load_propeller("nr640_5_15deg_4b"), p, 6000 * RPM, 20.5, 0.0, on_failure="flag")
+    assert nr.converged and float(nr.thrust) == pytest.approx(-1.122840, abs=2e-6)
 
 
 def test_swirl_with_a_linear_inflow_and_in_descent(apc8x6):

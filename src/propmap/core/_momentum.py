@@ -234,12 +234,15 @@ def swirl_step(u, g, u_prev, g_prev, lo, hi, first, bisect, limit):
     bracket is replaced by its midpoint, as is every step with ``bisect`` (from iteration
     SWIRL_SECANT_ITER on: a secant creeps along a jump of g), so that the bracket shrinks to a
     balance or, where the selected root jumps between branches as u moves, to the jump.
-    Until both are known, a secant step against the sign of g is replaced by the plain step:
-    the target's slope in u is below 1 (0.015-0.25, docs/models.md), so g falls with u and a
-    balance lies on g's side; a secant through iterates on either side of a jump of the
-    selected root can point back, and iterating between the branches it never brackets the
-    balance beyond the jump (a windmilling annulus of gwsdd_4x2.5 with the paper's section, where
-    g < 0 on both sides of the jump and the balance lies past it: a user-level audit, 2026-11-26).
+    Until both are known, a secant step against the sign of g is replaced by a step along g of
+    at least twice the last step's length: where the target's slope in u is below 1 (0.015-0.25
+    mostly, docs/models.md) g falls with u and a balance lies on g's side, and a secant through
+    iterates on either side of a jump of the selected root can point back, so that iterating
+    between the branches it never bracketed the balance beyond the jump (a windmilling annulus
+    of gwsdd_4x2.5 with the paper's section, g < 0 on both sides of the jump: a user-level
+    audit, 2026-11-26); near an annulus of zero thrust the slope can exceed 1 (g with a maximum
+    just below 0 before the balance: a review found nr640_5_15deg_4b at 6000 rpm, 20.5 m/s),
+    where plain steps u + g would crawl, so the step grows until g changes sign.
     Clipped to [-limit, limit]."""
     nxt = u + g
     bracket = lo == lo and hi == hi
@@ -247,8 +250,11 @@ def swirl_step(u, g, u_prev, g_prev, lo, hi, first, bisect, limit):
         den = g - g_prev
         if den != 0.0:
             sec = u - g * (u - u_prev) / den
-            if sec == sec and abs(sec) < 1e300 and (bracket or (sec - u) * g >= 0.0):
-                nxt = sec
+            if sec == sec and abs(sec) < 1e300:
+                if bracket or (sec - u) * g >= 0.0:
+                    nxt = sec
+                else:  # against g without a bracket: along g, growing
+                    nxt = u + np.copysign(max(abs(g), 2.0 * abs(u - u_prev)), g)
     if bracket and (bisect or not (min(lo, hi) < nxt < max(lo, hi))):
         nxt = 0.5 * (lo + hi)
     return min(max(nxt, -limit), limit)
