@@ -269,5 +269,6 @@ def test_derivatives_across_the_cusp_of_axial_flow_are_warned_of(apce8x6):
         pm.rotor_loads(prop, ds, 1250.0, 3.0, math.pi, derivatives=("omega",))  # not across the cusp
         pm.rotor_loads(prop, p, 1250.0, 3.0, math.pi, derivatives=True)  # without the option
         pm.rotor_loads(prop, ds, 1250.0, 0.0, 0.0, derivatives=True)  # from rest along the axis: smooth
+        pm.rotor_loads(prop, ds, 1250.0, 0.0, math.pi, derivatives=("airspeed",))  # (sin pi = 1.2e-16)
     with pytest.warns(UserWarning, match="no in-plane airspeed"):  # from rest along a ray with an in-plane part
         pm.rotor_loads(prop, ds, 1250.0, 0.0, 1.0, derivatives=("airspeed",))

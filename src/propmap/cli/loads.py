@@ -31,8 +31,8 @@ FLAG_MEANINGS = {
     "multiple_roots": "an annulus had several inflow roots; the selection rule of docs/solver.md picked one",
     "reverse_flow": "part of the blade root sees the air from behind (the blades' in-plane airspeed > Omega r_hub)",
     "inflow_extrapolated": "the inflow model was used beyond the measurements behind it (a linear inflow model "
-                           "with net upflow through the disk, or the empirical descent curve blended with "
-                           "forward speed)",
+                           "with net upflow through the disk, Drees's beyond an advance ratio of 0.5, or the "
+                           "empirical descent curve blended with forward speed)",
 }
 CHUNK = 20000
 MAX_POINTS_FILE_BYTES = 2 * 1024**3  # a points file larger than this is refused

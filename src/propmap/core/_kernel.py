@@ -100,7 +100,7 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
     depends on psi through sin psi only). ``model``, ``pk``: section model and
     constants (_physics); ``cam`` = (cl_alpha, re_exp, re_exp_lift, compressible, 1/a^2,
     re_exp_stall, stall_delay, alpha_L0_re) of the cambered model. ``inflow``: the inflow
-    model (_physics.INFLOW_*); ``emp``: the empirical momentum in descent (_momentum.DESCENT_CODES);
+    model (_momentum.INFLOW_*); ``emp``: the empirical momentum in descent (_momentum.DESCENT_CODES);
     with a linear model each point is solved twice: with the
     uniform inflow, whose mean inflow gives the wake skew angle and the gradients
     (_momentum.inflow_gradients), then with the linear inflow over the full circle.

@@ -253,7 +253,8 @@ class AirfoilParams(RotorOptions):
 
     Notes
     -----
-    Immutable; use :func:`dataclasses.replace` to derive variants.
+    Immutable; derive variants with :meth:`replace` (which labels a changed set ``"modified
+    <label>"``; :func:`dataclasses.replace` keeps the label).
     """
 
     cl1: float

@@ -228,7 +228,7 @@ def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:
     none = np.zeros(V.shape, bool)
     axial = (Vs == 0.0) & (V > 0.0) if "incidence" in wrt else none
     # from rest: along a ray with an in-plane part (airspeed), or the in-plane slopes (STILL_AIR)
-    rest = (V == 0.0) & ((np.sin(b) != 0.0) if "airspeed" in wrt else none) | (
+    rest = (V == 0.0) & ((np.abs(np.sin(b)) > 1e-12) if "airspeed" in wrt else none) | (
         (V == 0.0) if STILL_AIR in wrt else none)
     n = int(np.count_nonzero(axial | rest))
     if n:

@@ -325,7 +325,8 @@ HOVER_GRID = np.geomspace(10.0, 1e5, 64)
 
 def _hover_speed(vehicle: Vehicle) -> float:
     """The generic set's hover speed of the vehicle [rad/s], every rotor at one speed: sum_i T_i
-    (a_i . e_z) = m g (as :func:`propmap.vehicle.hover_omega`, on HOVER_GRID's 64 rates, 24 x 8
+    (a_i . e_z) = m g (:func:`propmap.vehicle.hover_omega` without an airframe in the slipstream
+    or the rotors' interference, which it includes; on HOVER_GRID's 64 rates, 24 x 8
     nodes, interpolated in log T against log Omega, within 0.1% for T ~ Omega^2). One batch of the
     kernel the flight commands load anyway: hover_omega's root finder cost `wrench` 0.25 s of
     start-up (SciPy's import and the scalar kernel's cache). 0 where the rotors cannot carry the
