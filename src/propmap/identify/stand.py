@@ -320,6 +320,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         if quantity == "airspeed" or "airspeed" in cm.columns:
             like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
                      and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
+        if kind == "angle" and "airspeed" in cm.columns:  # an angle's unit after an underscore (tilt_deg, beta_rad)
+            like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
+                     and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like]
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")
