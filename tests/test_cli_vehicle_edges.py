@@ -158,3 +158,75 @@ def test_an_angle_column_without_its_unit_is_refused(tmp_path, capsys):
     capsys.readouterr()
     row = (tmp_path / "o.csv").read_text().splitlines()
     assert len(row) == 2 and math.isclose(float(row[1].split(",")[2]), 1.0)
+
+
+def _vehicle_text(rotor_lines: dict, body: str = "") -> str:
+    """The NeuroBEM vehicle file with extra lines in the rotors numbered in ``rotor_lines``."""
+    text = VEHICLE.read_text()
+    parts = text.split("[[rotors]]")
+    for k, extra in rotor_lines.items():
+        parts[k] = parts[k].rstrip("\n") + "\n" + extra + "\n\n"
+    return "[[rotors]]".join(parts) + body
+
+
+def test_heterogeneous_vehicle_exports_say_what_they_leave_out(tmp_path, capsys):
+    """A second user-level audit (2026-11-26): export-sim pinned the hover of a vehicle whose rotor
+    had its own set (+14% thrust in RotorPy's model); the C header compared rotor names only (a
+    blade-count mismatch passed through the API, an identical geometry copy was refused after
+    the build); the airframe's drag in the slipstream left the C function and RotorPy's model
+    without a word (+39% of the weight at hover)."""
+    shutil.copy(EXAMPLES / GEOMETRY, tmp_path / GEOMETRY)
+    own = tmp_path / "own.toml"
+    own.write_text(_vehicle_text({2: 'params = "section:naca0015"'}))
+    args = ["export-sim", str(tmp_path / GEOMETRY), "--blades", "3", "--target", "rotorpy", "--vehicle", str(own)]
+    assert main([*args, "--out", str(tmp_path / "a.py")]) == 2
+    assert "rotor(s) 2 carry their own parameter set" in capsys.readouterr().err
+    assert main([*args, "--hover-rpm", "12000", "--out", str(tmp_path / "b.py")]) == 0
+    assert "warning: --vehicle: rotor(s) 2 carry their own parameter set" in capsys.readouterr().err
+    # an identical copy of the geometry under another name: the header is written (the geometry compared)
+    shutil.copy(EXAMPLES / GEOMETRY, tmp_path / "copy_geom.txt")
+    twin = tmp_path / "twin.toml"
+    twin.write_text(VEHICLE.read_text().replace(GEOMETRY, "copy_geom.txt", 1))
+    grid = ["--rpm", "8000:20000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5", "--check-points", "0"]
+    assert main(["map", str(tmp_path / GEOMETRY), "--blades", "3", "--format", "c", "--vehicle", str(twin), *grid,
+                 "--out", str(tmp_path / "twin.h")]) == 0
+    # the slipstream's download: said by both exports
+    washed = tmp_path / "washed.toml"
+    washed.write_text(_vehicle_text({}, "\n[body]\ndrag_area = [0.01, 0.012, 0.03]\nwash_factor = 2.0\n"))
+    assert main(["map", str(tmp_path / GEOMETRY), "--blades", "3", "--format", "c", "--vehicle", str(washed),
+                 *grid, "--out", str(tmp_path / "w.h")]) == 0
+    assert "(wash_factor 2) is left out of the C vehicle function" in capsys.readouterr().err
+    assert main(["export-sim", str(tmp_path / GEOMETRY), "--blades", "3", "--target", "rotorpy", "--vehicle",
+                 str(washed), "--out", str(tmp_path / "w.py")]) == 0
+    err = capsys.readouterr().err
+    assert "(wash_factor 2) pushes it down by" in err and "% of its weight)" in err
+
+
+def test_the_c_header_compares_the_maps_diameter_and_blades(tmp_path):
+    from propmap.export_c import c_header_text
+    from propmap.maps import build_map
+
+    veh = pm.read_vehicle(VEHICLE)
+    prop = veh.rotors[0].propeller
+    g = pm.generic_params()
+    rm = pm.RotorMap(build_map(prop, g, np.array([900.0, 1500.0, 2100.0]), np.array([0.0, 10.0]),
+                               np.radians([0.0, 90.0, 180.0]), n_check=0))
+    two = replace(veh, rotors=(replace(veh.rotors[0], propeller=replace(prop, n_blades=2)), *veh.rotors[1:]))
+    with pytest.raises(ValueError, match=r"rotor 1 carries .* 2 blades\), not the map's .* 3 blades\)"):
+        c_header_text(rm, tmp_path / "x.h", vehicle=two)
+    renamed = replace(veh, rotors=tuple(replace(r, propeller=replace(prop, name="other")) for r in veh.rotors))
+    with pytest.warns(UserWarning, match="chord and blade angle are not compared"):
+        c_header_text(rm, tmp_path / "x.h", vehicle=renamed)
+
+
+def test_a_rotors_own_set_in_other_air_is_warned_of():
+    veh = pm.read_vehicle(VEHICLE)
+    g = pm.generic_params()
+    thin = replace(veh, rotors=(veh.rotors[0], replace(veh.rotors[1], params=g.replace(air=pm.Air(rho=1.0))),
+                                *veh.rotors[2:]))
+    with pytest.warns(UserWarning, match=r"rotor 2 has its own parameter set in other air \(rho 1 kg/m\^3\)"):
+        pm.vehicle_wrench(thin, g, [0, 0, 0], [0, 0, 0], [1200.0] * 4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.vehicle_wrench(replace(veh, rotors=(veh.rotors[0], replace(veh.rotors[1], params=g), *veh.rotors[2:])),
+                          g, [0, 0, 0], [0, 0, 0], [1200.0] * 4)

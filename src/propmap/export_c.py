@@ -199,19 +199,38 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
     Raises
     ------
     ValueError
-        A rotor with another propeller (a header holds one map), or a rotor with its own
-        parameter set.
+        A rotor with another propeller than the map's by its diameter (beyond 1%) or blade
+        count, as :class:`propmap.vehicle.VehicleMap` (a header holds one map), or a rotor with
+        its own parameter set.
+
+    Warns
+    -----
+    UserWarning
+        A rotor whose propeller has another name than the map's, at the same diameter and
+        blade count: their chord and blade angle are not in the map to compare (``propmap map
+        --vehicle`` compares the geometry itself before it builds the map).
     """
+    import warnings
+
     name = rm.attrs.get("propeller", "")
+    d, b = float(rm.attrs.get("diameter_m", np.nan)), rm.attrs.get("n_blades")
     for k, r in enumerate(vehicle.rotors):
-        if r.propeller.name != name:
-            raise ValueError(f"rotor {k + 1} carries {r.propeller.name}, not the map's {name}: a C header holds "
-                             "one map (use VehicleMap in Python, with one map per rotor)")
+        if not abs(d / r.propeller.diameter - 1.0) <= 0.01 or (b is not None and int(b) != r.propeller.n_blades):
+            raise ValueError(f"rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} m, "
+                             f"{r.propeller.n_blades} blades), not the map's {name} ({d:.4g} m, {b} blades): a C "
+                             "header holds one map (use VehicleMap in Python, with one map per rotor)")
         if r.params is not None:
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
+        if r.propeller.name != name:
+            warnings.warn(f"rotor {k + 1} carries {r.propeller.name}, the map is of {name}: the same diameter and "
+                          "blade count, but their chord and blade angle are not compared (the map does not hold "
+                          "them)", UserWarning, stacklevel=3)
+    if vehicle.body_drag is not None and vehicle.body_drag.wash_factor > 0:
+        warnings.warn(f"the airframe's drag in the rotors' slipstream (wash_factor {vehicle.body_drag.wash_factor:g}) "
+                      "is left out of the C vehicle function, which has the freestream's drag only: a map holds no "
+                      "induced velocity (in hover the slipstream pushes the airframe down; VehicleMap leaves it out "
+                      "too)", UserWarning, stacklevel=3)
     if vehicle.rotor_interference > 0:
-        import warnings
-
         warnings.warn(f"the rotors' interference (factor {vehicle.rotor_interference:g}) is left out of the C "
                       "vehicle function: a map holds no induced velocity", UserWarning, stacklevel=2)
     rho = float(rm.attrs["rho_kg_m3"])
