@@ -231,14 +231,15 @@ def _incidence_data(compliance: float, noise: float, seed: int = 1):
 
 
 def test_a_saturated_flap_compliance_has_its_interval_to_the_bound():
-    """Beyond a few rad/(N m) the blades flap nearly as articulated ones: 1% noise on loads made with
-    a compliance of 20 cannot tell the fitted 26 from 50 (the profile likelihood's cost rises by
-    0.03 residual variances there, 2026-11-26), and the interval says so instead of the local
-    slope's (a user-level audit: 7-50 fitted for a true 15, each with about +-10%)."""
+    """Beyond a few rad/(N m) the blades flap nearly as articulated ones: 0.5% noise on loads made
+    with a compliance of 20 cannot tell the fitted 30 from 50, and the interval says so instead of
+    the local slope's (a user-level audit: 7-50 fitted for a true 15, each with about +-10%).
+    (1% noise and seed 2 fitted 26 until the in-plane force's residuals left the axial points out,
+    2026-11-26; since then 50, the bound: the case moved to 0.5%.)"""
     from propmap.identify import fit_loads
     from propmap.identify.engine import _bounds
 
-    prop, data = _incidence_data(20.0, 0.01, seed=2)
+    prop, data = _incidence_data(20.0, 0.005, seed=2)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         res = fit_loads(data, prop, base=pm.default_params("apce_10x7"))

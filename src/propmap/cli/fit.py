@@ -123,24 +123,30 @@ def _coverage(data, prop) -> dict:
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
-                   body=None, coverage=None, header: str = "", figure_suffixes=(".png",)) -> dict:
+                   body=None, coverage=None, header: str = "", figure_suffixes=(".png",), data_warnings=()) -> dict:
+    """Write the parameter file and its reports, and print the report. ``data_warnings``: what
+    reading and checking the data warned of (already printed as they arose), kept in both
+    reports (``data_warnings`` in the JSON; they were on standard error only: a user-level audit)."""
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
-    report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage}
+    report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage,
+              "data_warnings": list(data_warnings)}
     write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body,
                  coverage=coverage)
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
-    text = (header + "\n" if header else "") + result.report_text() + ("\n" + extra_text if extra_text else "")
+    said = [f"DATA WARNING: {w}" for w in data_warnings]
+    text = ((header + "\n" if header else "") + result.report_text() + ("\n" + extra_text if extra_text else "")
+            + "".join("\n" + line for line in said))
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
         figure(stem.with_name(stem.name + ".png"))
     # the fit's warnings go to standard error, once (the first MAX_WARNINGS, and how many more): the report on
     # standard output leaves them all out (report.txt keeps them)
-    echoed = {f"WARNING: {w}" for w in result.warnings}
+    echoed = {f"WARNING: {w}" for w in result.warnings} | set(said)
     click.echo(json.dumps(report, indent=2, default=float) if as_json else
                "\n".join(line for line in text.splitlines() if line not in echoed))
     for w in result.warnings[:MAX_WARNINGS]:
@@ -386,9 +392,16 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
     air = resolve_air(air, air_choice)
-    data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:  # (said now, before the fit, and kept for the reports)
+        warnings.simplefilter("always")
+        data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+    data_warnings = list(dict.fromkeys(str(w.message) for w in caught))
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
+    for w in data_warnings:
+        warn(w)
     air = _file_air(data, air, air_choice)
     check_section_match(prop, base_label)
     qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
@@ -402,10 +415,12 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         try:
             for w in sanity_check(data, prop, air=air, quantities=qty):
                 warn(w)
+                data_warnings.append(w)
         except DataError as exc:
             if not skip_sanity_check:
                 raise InputError(f"SOURCE: {exc} (--skip-sanity-check fits it anyway)") from None
             warn(str(exc))
+            data_warnings.append(str(exc))
     held = parse_names("--holdout", holdout, what="run") or ()
     population = None
     if entry is not None and held:
@@ -494,4 +509,4 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
-                          f"{air.rho:.4g} kg/m^3")
+                          f"{air.rho:.4g} kg/m^3", data_warnings=data_warnings)

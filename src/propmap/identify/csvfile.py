@@ -252,4 +252,8 @@ class _Csv:
                                      f"{c} = {x[i]:g}", int(lines[i]))
                 name, factor = (written or {}).get(c, (c, 1.0))
                 shown = (f"{name!r} = {x[i] / factor:g}, i.e. {c} = {x[i]:g}" if factor != 1.0 else f"{x[i]:g}")
-                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {shown}", int(lines[i]))
+                hint = ("; the incidence is the angle between the airspeed and the rotor axis, whose sign the "
+                        "model does not see: give its magnitude, and where the file's in-plane (normal) force is "
+                        "body-fixed, negate it on those rows (propmap's drag points along the in-plane airspeed)"
+                        if key == "incidence_deg" and x[i] < 0 else "")
+                raise self.error(f"{c} must be in {_interval(ranges[key])}, got {shown}{hint}", int(lines[i]))

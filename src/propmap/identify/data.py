@@ -208,6 +208,11 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     return unit if found[unit] < 0.5 * base else None
 
 
+#: the share of the points at incidence where a measured in-plane force of the other sign than the model's is refused
+#: (from 0.8 of them it is warned of)
+DRAG_SIGN_REFUSED = 0.95
+
+
 def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None, quantities=None) -> list[str]:
     """Refuse load data that cannot be this propeller's in these units; warn of risks.
 
@@ -216,7 +221,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     docs/validation.md): a median ratio beyond 1/3 to 3, or a thrust or torque of the other
     sign, is refused with the likely cause (thrust in kgf, gf or lbf read as N, torque in
     N mm, the electrical rpm of a motor with pole pairs, a reaction torque, a pusher's
-    thrust in data the reader left as written).
+    thrust in data the reader left as written); so is a fitted in-plane force (drag) of the
+    other sign than the model's at DRAG_SIGN_REFUSED of the points at incidence.
 
     Parameters
     ----------
@@ -283,6 +289,14 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         D = at_rpm.drag
         sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
         opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
+        if "drag" in checked and sure.sum() >= 3 and opposite >= DRAG_SIGN_REFUSED * sure.sum():
+            # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit)
+            raise DataError(f"load data: {data.source}: the measured drag has the other sign than the model's "
+                            f"in-plane force at {opposite} of {int(sure.sum())} points at incidence: propmap's drag "
+                            "points along the in-plane airspeed (against the disk's in-plane motion, "
+                            "docs/conventions.md); negate the column if the file uses the other convention (a normal "
+                            "force of a body-fixed balance, or a sweep through negative angles given as magnitudes, "
+                            "has it on one side)")
         if sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
             warnings_.append(f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
                              f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "

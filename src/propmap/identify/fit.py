@@ -40,10 +40,22 @@ __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_loads"
            "CAMBERED_FIT", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_RE"]
 
 
+def _fitted_rows(data: LoadData, keys) -> dict:
+    """Each quantity's points in the fit: every point, but the in-plane force ``drag`` only
+    where the rotor has an in-plane airspeed above STATIC_AIRSPEED (elsewhere model and
+    measurement should both be zero: a tunnel's normal force at axial points is its noise,
+    which as a residual scaled by its own rms came out near 1 at every such point and swamped
+    the fit's uncertainty report, a user-level audit, 2026-11-26; as ``validate`` scores it;
+    data without such points do not fit it, :func:`_load_keys`)."""
+    inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
+    return {k: inplane if k == "drag" else np.ones(data.n, bool) for k in keys}
+
+
 def _load_norms(data: LoadData, propeller, keys, air: Air):
     n = data.omega / (2 * math.pi)
     norm = {k: air.rho * n**2 * propeller.diameter ** (5 if k == "torque" else 4) for k in keys}
-    scales = {k: float(np.sqrt(np.mean((data.measured[k] / norm[k]) ** 2))) for k in keys}
+    rows = _fitted_rows(data, keys)
+    scales = {k: float(np.sqrt(np.mean((data.measured[k][rows[k]] / norm[k][rows[k]]) ** 2))) for k in keys}
     for k, s in scales.items():
         if not (np.isfinite(s) and s > 0):
             others = [q for q in keys if q != k]
@@ -90,6 +102,11 @@ def _load_keys(data: LoadData, quantities) -> list:
     for k in keys:
         if k not in data.measured:
             raise ValueError(f"quantity {k!r} is not measured; measured: {', '.join(data.measured)}")
+    if "drag" in keys and not _fitted_rows(data, ["drag"])["drag"].any():
+        if quantities is not None or len(keys) == 1:
+            raise ValueError(f"the in-plane force (drag) cannot be fitted: no point has an in-plane airspeed above "
+                             f"{STATIC_AIRSPEED:g} m/s, where the model's is 0 (is the incidence missing?)")
+        keys.remove("drag")  # (its measurement there is noise: sanity_check says so where it is large)
     return keys
 
 
@@ -172,6 +189,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     theorem: core/_sensitivity.py); the fit then uses it instead of differencing the solver.
     """
     norm, scales = _load_norms(data, propeller, keys, air)
+    rows = _fitted_rows(data, keys)
 
     def make(opts):
         def loads(x, derivatives=False):
@@ -182,15 +200,16 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
 
         def errors(r):
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
-            return weight * np.concatenate([(model[k] - data.measured[k]) / norm[k] / scales[k] for k in keys])
+            return weight * np.concatenate([((model[k] - data.measured[k]) / norm[k] / scales[k])[rows[k]]
+                                            for k in keys])
 
         def residual(x, opts=opts):
             return errors(loads(x))
 
         def with_jacobian(x):
             r = loads(x, derivatives=True)
-            return errors(r), weight * np.vstack([np.column_stack([r.derivative(k, n) for n in names])
-                                                  / norm[k][:, None] / scales[k] for k in keys])
+            return errors(r), weight * np.vstack([(np.column_stack([r.derivative(k, n) for n in names])
+                                                   / norm[k][:, None] / scales[k])[rows[k]] for k in keys])
 
         if (opts.jacobian == "implicit" and differentiable(base, names)
                 and np.all(data.omega >= OMEGA_MIN)):
@@ -265,7 +284,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
             base = base.replace(flap_compliance=FLAP_START)
     k_dirs = _direction_count(options, base, data, kind, names)
     free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
-    if data.n * len(keys) <= free:
+    if sum(int(m.sum()) for m in _fitted_rows(data, keys).values()) <= free:
         raise ValueError(f"{data.n} points cannot identify {free} parameters" if k_dirs == 0 else
                          f"{data.n} points of {', '.join(keys)} cannot identify {free} parameter directions")
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
@@ -293,6 +312,9 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     if inplane:
         notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure the in-plane force at incidence "
                      "(docs/identification.md)")
+    if "drag" in data.measured and "drag" not in keys and quantities is None:
+        notes.append(f"the measured drag is not fitted: no point has an in-plane airspeed above {STATIC_AIRSPEED:g} "
+                     "m/s, where the model's in-plane force is 0")
     warns = [*_unit_notes(data, propeller, keys, air), *notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}
@@ -313,14 +335,17 @@ OUTLIER_FACTOR = 5.0
 
 def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     """The fit with each data residual's point named (``extra["residual_labels"]``: the quantity,
-    the group, the rpm and the airspeed; the residual vector stacks the quantities ``keys`` over
-    the data's points), which the text report shows beside the largest, and a warning naming the
+    the group, the rpm, the airspeed and, in data at incidence, the incidence; the residual vector stacks
+    the quantities ``keys`` over their fitted points, :func:`_fitted_rows`), which the text report
+    shows beside the largest, and a warning naming the
     residuals beyond OUTLIER_FACTOR times the rms (likely outliers: 3 of them at 7x the rms once
     passed without a word)."""
-    n = data.n
-    r = np.asarray(result.residuals, float)[:n * len(keys)]
+    rows = _fitted_rows(data, keys)
+    r = np.asarray(result.residuals, float)[:sum(int(m.sum()) for m in rows.values())]
+    moving = (data.airspeed > STATIC_AIRSPEED) & bool(np.any(data.incidence > 0))  # (axial data: no angle said)
     labels = [f"{k}, {data.group[j]}, {data.omega[j] * 30 / math.pi:.0f} rpm, {data.airspeed[j]:.3g} m/s"
-              for k in keys for j in range(n)]
+              + (f" at {math.degrees(data.incidence[j]):.3g} deg" if moving[j] else "")
+              for k in keys for j in np.flatnonzero(rows[k])]
     rms = float(np.sqrt(np.mean(r**2))) if r.size else 0.0
     out = [i for i in np.argsort(-np.abs(r)) if rms > 0 and abs(r[i]) > OUTLIER_FACTOR * rms]
     warns = list(result.warnings)

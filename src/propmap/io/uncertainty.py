@@ -91,4 +91,15 @@ def model_uncertainty(label: str) -> dict:
     else:
         out["axial"] = "unknown: propmap has no validation figure for this parameter set"
     out["off_axis"] = OFF_AXIS
+    if label and Path(label).suffix.lower() == ".toml":
+        from .params_file import set_coverage
+
+        try:
+            top = float((set_coverage(label) or {}).get("incidence_deg_max", 0.0))
+        except (OSError, ValueError):  # (an unreadable file: its reader says why where it is read)
+            top = 0.0
+        if top > 0.0:  # a fit to load data at incidence (a map's sidecar called it 'not validated at incidence')
+            out["off_axis"] = (f"fitted to load data at incidence up to {top:g} deg (the file's [coverage]); its "
+                               "fit report states its errors there, held-out ones where groups were held out; "
+                               "beyond that range: " + OFF_AXIS)
     return out

@@ -1,0 +1,109 @@
+"""A wind-tunnel user's load data at incidence (a user-level audit, 2026-11-26): an in-plane
+force measured at axial points is not fitted there (its noise, scaled by its own rms, swamped
+the uncertainty report), a normal force of the other sign is refused, the residuals name the
+incidence, the data's warnings reach the fit reports, a negative incidence says what to do,
+and a parameter file fitted at incidence is not called unvalidated there."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.identify import FitOptions, fit_loads
+from propmap.identify.data import DataError, sanity_check
+from propmap.identify.load_data import LoadData
+
+
+@pytest.fixture(scope="module")
+def tunnel():
+    """APC 10x7E with its calibrated set and flapping blades (3 rad/(N m)): 4000-8000 rpm, a
+    static point and 5-15 m/s at 0-90 deg each, 0.7% noise of the static loads (the audit's)."""
+    prop = pm.load_propeller("apce_10x7")
+    true = pm.resolve_params("calibrated:apce_10x7").replace(flap_compliance=3.0)
+    rng = np.random.default_rng(0)
+    om, V, inc = [], [], []
+    for rpm in (4000, 6000, 8000):
+        for v, a in [(0.0, 0.0)] + [(v, a) for v in (5.0, 10.0, 15.0) for a in range(0, 91, 15)]:
+            om.append(rpm * math.pi / 30), V.append(v), inc.append(math.radians(a))
+    om, V, inc = map(np.array, (om, V, inc))
+    r = pm.rotor_loads(prop, true, om, V, inc)
+    st = pm.rotor_loads(prop, true, om, 0.0, 0.0)
+    noise = lambda s: 0.007 * s * rng.standard_normal(om.size)  # noqa: E731
+    measured = {"thrust": r.thrust + noise(st.thrust), "drag": r.drag + noise(st.thrust),
+                "torque": r.torque + noise(st.torque)}
+    return prop, LoadData(om, V, inc, measured, np.array(["tunnel"] * om.size), source="tunnel.csv")
+
+
+def _subset(data, keep):
+    return LoadData(data.omega[keep], data.airspeed[keep], data.incidence[keep],
+                    {k: v[keep] for k, v in data.measured.items()}, data.group[keep], source=data.source)
+
+
+def test_a_normal_force_at_axial_points_only_is_not_fitted(tunnel):
+    prop, data = tunnel
+    axial = _subset(data, data.incidence == 0.0)
+    opts = FitOptions(multistart=0)
+    with_drag = fit_loads(axial, prop, options=opts)
+    without = fit_loads(axial, prop, quantities=("thrust", "torque"), options=opts)
+    assert with_drag.extra["quantities"] == ["thrust", "torque"]
+    assert any("drag is not fitted" in w for w in with_drag.warnings)
+    np.testing.assert_allclose(with_drag.x, without.x, rtol=1e-6)  # (cl_alpha std error 1.29 before, 0.16 now)
+    with pytest.raises(ValueError, match="drag\\) cannot be fitted: no point has an in-plane airspeed"):
+        fit_loads(axial, prop, quantities=("drag",), options=opts)
+    # at incidence the drag residuals are its in-plane points only, each named with its incidence
+    res = fit_loads(data, prop, options=opts)
+    labels = res.extra["residual_labels"]
+    inplane = int(np.sum(data.airspeed * np.abs(np.sin(data.incidence)) > 0.3))
+    assert sum(lab.startswith("drag") for lab in labels) == inplane == 54
+    assert len(labels) == 2 * data.n + inplane
+    assert any(lab.endswith("at 45 deg") for lab in labels)
+    assert float(np.sqrt(np.mean(np.asarray(res.residuals)[:len(labels)] ** 2))) < 0.05
+
+
+def test_a_normal_force_of_the_other_sign_is_refused(tunnel):
+    prop, data = tunnel
+    flipped = LoadData(data.omega, data.airspeed, data.incidence, {**data.measured, "drag": -data.measured["drag"]},
+                       data.group, source="flip.csv")
+    with pytest.raises(DataError, match=r"the measured drag has the other sign .* at 4\d of 4\d points"):
+        sanity_check(flipped, prop)
+    sanity_check(flipped, prop, quantities=("thrust", "torque"))  # (not fitted: not held to the model)
+
+
+def test_the_data_warnings_reach_the_reports_and_incidence_fits_are_said(tunnel, tmp_path, capsys):
+    prop, data = tunnel
+    f = tmp_path / "rad.csv"
+    keep = data.incidence <= math.radians(60)
+    rows = np.column_stack([data.omega[keep] * 30 / math.pi, data.airspeed[keep], data.incidence[keep],
+                            data.measured["thrust"][keep], data.measured["drag"][keep], data.measured["torque"][keep]])
+    np.savetxt(f, rows, delimiter=",", header="rpm,airspeed,incidence_deg,thrust,drag,torque", comments="",
+               fmt="%.10g")  # (the incidences in radians under a degrees header)
+    assert main(["fit", "loads", str(f), "--prop", "apce_10x7", "--out", str(tmp_path / "p.toml")]) == 0
+    err = capsys.readouterr().err
+    assert err.index("radians?") < err.index("wrote ")  # said before the fit, not after its files
+    assert "DATA WARNING: " in (tmp_path / "p.report.txt").read_text()
+    import json
+
+    assert any("radians?" in w for w in json.loads((tmp_path / "p.report.json").read_text())["data_warnings"])
+    # a file fitted at incidence: its own fit speaks for it there
+    from propmap.io.uncertainty import model_uncertainty
+
+    good = tmp_path / "good.csv"
+    rows[:, 2] = np.degrees(rows[:, 2])
+    np.savetxt(good, rows, delimiter=",", header="rpm,airspeed,incidence_deg,thrust,drag,torque", comments="",
+               fmt="%.10g")
+    assert main(["fit", "loads", str(good), "--prop", "apce_10x7", "--out", str(tmp_path / "g.toml")]) == 0
+    capsys.readouterr()
+    assert model_uncertainty(str(tmp_path / "g.toml"))["off_axis"].startswith(
+        "fitted to load data at incidence up to 60 deg")
+    assert model_uncertainty("calibrated:apce_10x7")["off_axis"].startswith("not validated at incidence")
+
+
+def test_a_negative_incidence_says_what_to_do(tmp_path, capsys):
+    f = tmp_path / "neg.csv"
+    f.write_text("rpm,airspeed,incidence_deg,thrust,drag,torque\n6000,0,0,3.0,0,0.05\n6000,5,-30,3.1,0.1,0.05\n")
+    assert main(["fit", "loads", str(f), "--prop", "apce_10x7", "--out", str(tmp_path / "n.toml")]) == 2
+    err = capsys.readouterr().err
+    assert "got -30; the incidence is the angle between the airspeed and the rotor axis" in err
+    assert "negate it on those rows" in err
