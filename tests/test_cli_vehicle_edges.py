@@ -147,6 +147,11 @@ def test_a_vehicles_diameter_less_geometry_names_the_vehicle_key(own_vehicle):
     with pytest.raises(VehicleFileError, match=r"give the rotor's diameter_m \[m\]") as info:
         pm.read_vehicle(vehicle)
     assert "diameter_in" not in str(info.value)
+    # and a blade-less one the vehicle's blades key (it named the CLI's --blades and n_blades)
+    geometry.with_name("geom.txt").rename(geometry.with_name("own_5.1x4.8_geom.txt"))
+    vehicle.write_text(vehicle.read_text().replace("geom.txt", "own_5.1x4.8_geom.txt").replace("blades = 3\n", ""))
+    with pytest.raises(VehicleFileError, match=r"does not state the blade count: give the rotor's blades;"):
+        pm.read_vehicle(vehicle)
 
 
 def test_an_angle_column_without_its_unit_is_refused(tmp_path, capsys):
@@ -230,3 +235,16 @@ def test_a_rotors_own_set_in_other_air_is_warned_of():
         warnings.simplefilter("error")
         pm.vehicle_wrench(replace(veh, rotors=(veh.rotors[0], replace(veh.rotors[1], params=g), *veh.rotors[2:])),
                           g, [0, 0, 0], [0, 0, 0], [1200.0] * 4)
+
+
+def test_flight_commands_check_each_rotors_set(capsys):
+    """wrench and fit flight never asked whether a rotor's set was calibrated on another propeller
+    (`loads` does for one; a user-level audit read it in the code)."""
+    from propmap.cli.flight import _check_rotor_sets
+
+    veh = pm.read_vehicle(VEHICLE)
+    _check_rotor_sets(veh, ["calibrated:apce_8x6"] * 4)
+    err = capsys.readouterr().err
+    assert err.count("runs with calibrated:apce_8x6, the set calibrated on another propeller") == 1  # (once)
+    _check_rotor_sets(veh, ["generic"] * 4)
+    assert "calibrated on another" not in capsys.readouterr().err

@@ -21,6 +21,16 @@ def _vehicle(path: Path):
         raise InputError(f"--vehicle: {exc}") from None
 
 
+def _check_rotor_sets(veh, labels) -> None:
+    """check_section_match for each rotor's propeller and set label, once per pair (a set
+    calibrated on another propeller, the generic set on a rotor-like blade: said as `loads` says
+    it for one propeller)."""
+    from ._common import check_section_match
+
+    for prop, label in dict.fromkeys((r.propeller.name, lab) for r, lab in zip(veh.rotors, labels)):
+        check_section_match(next(r.propeller for r in veh.rotors if r.propeller.name == prop), label)
+
+
 def _fitted_vehicle(path: Path, params_spec):
     """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` is a parameter
     file with the ``[body]`` table a flight fit writes (the airframe drag, the centre of mass,
@@ -190,6 +200,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
+    _check_rotor_sets(veh, [base_label] * len(veh.rotors))
     air = resolve_air(air, air_choice)
     refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
     names = [Path(p).name for p in log_paths]  # (a log's name, FlightLog.name, is its file name)
@@ -404,6 +415,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
     if len(set(sets)) > 1:
         label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
+    _check_rotor_sets(veh, sets)
     air = resolve_air(air, air_choice)
     body = veh.body_drag
     if params_spec is not None:

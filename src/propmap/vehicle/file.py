@@ -215,7 +215,8 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
         except ValueError as exc:  # (the reader's hint names the CLI's size option: a rotor's key is diameter_m)
             msg = str(exc).replace(SIZE_HINT, "give the rotor's diameter_m [m] (or name the file "
                                               "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and "
-                                              "vp families)")
+                                              "vp families)").replace("give it (--blades, n_blades)",
+                                                                      "give the rotor's blades")
             raise VehicleFileError(f"{where}: propeller: {msg}") from None
     if spec in catalogue():
         if diameter_in is not None or n_blades is not None:

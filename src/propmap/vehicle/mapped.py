@@ -98,7 +98,7 @@ class VehicleMap:
                 raise ValueError(f"maps: rotor {i + 1}'s map is of {m.attrs.get('propeller', '?')} ({d:.4g} m, "
                                  f"{b} blades), its propeller {r.propeller.name} is {r.propeller.diameter:.4g} m with "
                                  f"{r.propeller.n_blades} blades: build the map for the vehicle's propeller "
-                                 "(propmap map ... --vehicle)")
+                                 "(propmap map PROP, PROP the rotor's propeller, one map per propeller)")
         self.vehicle = vehicle
         self.maps = maps
         self._pos, self._axes, self._spins, self._h = rotor_geometry(vehicle)
