@@ -201,7 +201,8 @@ def test_c_vehicle_wrench_equals_the_python_vehicle_map(tmp_path, rotor_map):
     np.testing.assert_allclose(out[:, 1:4], ref.force, rtol=1e-10, atol=1e-12)
     np.testing.assert_allclose(out[:, 4:7], ref.moment, rtol=1e-10, atol=1e-12)
     np.testing.assert_array_equal(out[:, 0] > 0, ref.flagged)
-    with pytest.raises(ValueError, match="rotor 1 carries apce_9x6, not the map's apce_8x6"):
+    with pytest.raises(ValueError, match=r"rotor 1 carries apce_9x6 \(0.2286 m, 2 blades\), not the map's apce_8x6 "
+                                         r"\(0.2032 m"):
         write_c_header(rotor_map, tmp_path / "x.h", vehicle=Vehicle(mass=1.0, rotors=(
             Rotor(np.zeros(3), np.array([0.0, 0.0, 1.0]), 1, pm.load_propeller("apce_9x6")),)))
 
