@@ -207,7 +207,9 @@ def test_heterogeneous_vehicle_exports_say_what_they_leave_out(tmp_path, capsys)
     assert "(wash_factor 2) pushes it down by" in err and "% of its weight)" in err
 
 
-def test_the_c_header_compares_the_maps_diameter_and_blades(tmp_path):
+def test_the_c_header_compares_the_maps_geometry(tmp_path):
+    """The C vehicle block compared rotor names only: a blade-count mismatch passed through the
+    API. It compares the blade geometry the map records (not the name)."""
     from propmap.export_c import c_header_text
     from propmap.maps import build_map
 
@@ -219,9 +221,14 @@ def test_the_c_header_compares_the_maps_diameter_and_blades(tmp_path):
     two = replace(veh, rotors=(replace(veh.rotors[0], propeller=replace(prop, n_blades=2)), *veh.rotors[1:]))
     with pytest.raises(ValueError, match=r"rotor 1 carries .* 2 blades\), not the map's .* 3 blades\)"):
         c_header_text(rm, tmp_path / "x.h", vehicle=two)
+    twisted = replace(veh, rotors=(veh.rotors[0], replace(veh.rotors[1], propeller=replace(
+        prop, theta=prop.theta + 0.02)), *veh.rotors[2:]))
+    with pytest.raises(ValueError, match=r"rotor 2 carries .* 3 blades, another chord or blade angle\)"):
+        c_header_text(rm, tmp_path / "x.h", vehicle=twisted)
     renamed = replace(veh, rotors=tuple(replace(r, propeller=replace(prop, name="other")) for r in veh.rotors))
-    with pytest.warns(UserWarning, match="chord and blade angle are not compared"):
-        c_header_text(rm, tmp_path / "x.h", vehicle=renamed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert "_vehicle_wrench" in c_header_text(rm, tmp_path / "x.h", vehicle=renamed)  # (the same blade)
 
 
 def test_a_rotors_own_set_in_other_air_is_warned_of():
@@ -235,6 +242,7 @@ def test_a_rotors_own_set_in_other_air_is_warned_of():
         warnings.simplefilter("error")
         pm.vehicle_wrench(replace(veh, rotors=(veh.rotors[0], replace(veh.rotors[1], params=g), *veh.rotors[2:])),
                           g, [0, 0, 0], [0, 0, 0], [1200.0] * 4)
+        pm.vehicle_wrench(thin, g, [0, 0, 0], [0, 0, 0], [1200.0] * 4, air=pm.Air(rho=1.1))  # (air chosen)
 
 
 def test_flight_commands_check_each_rotors_set(capsys):

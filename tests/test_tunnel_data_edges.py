@@ -107,3 +107,23 @@ def test_a_negative_incidence_says_what_to_do(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "got -30; the incidence is the angle between the airspeed and the rotor axis" in err
     assert "negate it on those rows" in err
+
+
+def test_a_joint_fit_reports_each_propellers_residuals_over_its_own_rows(tunnel):
+    """fit_loads_joint sliced n x quantities residuals per propeller: with the in-plane force at its
+    in-plane points only, a dataset after one with drag was scored on the other's residuals (a
+    review)."""
+    from propmap.identify import fit_loads_joint
+
+    prop, data = tunnel
+    a = _subset(data, data.omega < 5000 * math.pi / 30)  # 4000 rpm: 22 points, 18 with an in-plane airspeed
+    b = LoadData(a.omega, a.airspeed, a.incidence, {k: a.measured[k] for k in ("thrust", "torque")}, a.group)
+    res = fit_loads_joint([(a, prop), (b, prop)], options=FitOptions(multistart=0))
+    assert np.asarray(res.residuals).size >= 22 * 2 + 18 + 22 * 2
+    per = res.extra["per_propeller"]
+    r = np.asarray(res.residuals)
+    mb = 22 * 2
+    # the second dataset's rms from the last of its own rows (the data residuals come first)
+    k0 = 22 * 2 + 18
+    rms_b = float(np.sqrt(np.mean((r[k0:k0 + mb] * math.sqrt(b.n)) ** 2)))
+    assert per[1]["rms_residual"] == pytest.approx(rms_b, rel=1e-12)

@@ -38,6 +38,11 @@ def test_a_flow_angle_under_another_name_with_an_underscore_unit_is_refused(name
         map_columns(["rpm", "airspeed", name, "thrust"])
 
 
+def test_a_temperature_in_degrees_is_not_a_flow_angle():
+    cm = map_columns(["rpm", "airspeed", "temp_deg", "motor_temp_degrees", "thrust"])
+    assert "incidence_deg" not in cm.columns
+
+
 def test_a_known_name_written_with_underscores_is_read():
     cm = map_columns(["rpm", "wind_speed_mps", "thrust_kgf"])
     assert cm.columns["airspeed"][:2] == ("wind_speed_mps", 1.0)

@@ -199,32 +199,36 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
     Raises
     ------
     ValueError
-        A rotor with another propeller than the map's by its diameter (beyond 1%) or blade
-        count, as :class:`propmap.vehicle.VehicleMap` (a header holds one map), or a rotor with
-        its own parameter set.
-
-    Warns
-    -----
-    UserWarning
-        A rotor whose propeller has another name than the map's, at the same diameter and
-        blade count: their chord and blade angle are not in the map to compare (``propmap map
-        --vehicle`` compares the geometry itself before it builds the map).
+        A rotor with another propeller than the map's: another blade geometry than the one the
+        map records (``Propeller.same_geometry``; the name is not compared), or, for a map
+        without that record, another diameter (beyond 1%) or blade count, as
+        :class:`propmap.vehicle.VehicleMap` (a header holds one map); a rotor with its own
+        parameter set.
     """
     import warnings
 
+    from .io.mapcheck import map_model
+
     name = rm.attrs.get("propeller", "")
     d, b = float(rm.attrs.get("diameter_m", np.nan)), rm.attrs.get("n_blades")
+    try:
+        recorded = map_model(rm.attrs)[0]  # (the map's blade geometry: its stations, chords and blade angles)
+    except ValueError:
+        recorded = None
     for k, r in enumerate(vehicle.rotors):
-        if not abs(d / r.propeller.diameter - 1.0) <= 0.01 or (b is not None and int(b) != r.propeller.n_blades):
-            raise ValueError(f"rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} m, "
-                             f"{r.propeller.n_blades} blades), not the map's {name} ({d:.4g} m, {b} blades): a C "
-                             "header holds one map (use VehicleMap in Python, with one map per rotor)")
+        p = r.propeller
+        if recorded is not None and not p.same_geometry(recorded):
+            other = (", another chord or blade angle" if p.n_blades == recorded.n_blades
+                     and abs(p.diameter / recorded.diameter - 1) < 5e-5 else "")
+            raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades{other}), not "
+                             f"the map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
+                             "Python, with one map per rotor)")
+        if recorded is None and (not abs(d / p.diameter - 1.0) <= 0.01 or (b is not None and int(b) != p.n_blades)):
+            raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades), not the "
+                             f"map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
+                             "Python, with one map per rotor)")
         if r.params is not None:
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
-        if r.propeller.name != name:
-            warnings.warn(f"rotor {k + 1} carries {r.propeller.name}, the map is of {name}: the same diameter and "
-                          "blade count, but their chord and blade angle are not compared (the map does not hold "
-                          "them)", UserWarning, stacklevel=3)
     if vehicle.body_drag is not None and vehicle.body_drag.wash_factor > 0:
         warnings.warn(f"the airframe's drag in the rotors' slipstream (wash_factor {vehicle.body_drag.wash_factor:g}) "
                       "is left out of the C vehicle function, which has the freestream's drag only: a map holds no "

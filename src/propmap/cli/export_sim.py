@@ -136,7 +136,9 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}: the export "
                           f"gives {propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
                           stacklevel=1)
-        own = [k + 1 for k, r in enumerate(veh.rotors) if r.params is not None and r.params != params]
+        # (a rotor's own set equal to PARAMS but for its air is PARAMS: every rotor is solved in one air)
+        own = [k + 1 for k, r in enumerate(veh.rotors)
+               if r.params is not None and replace(r.params, air=params.air) != params]
         if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
             raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
                              f"{label}, so the vehicle's hover is not {propeller.name}'s with it: give --hover-rpm, "
@@ -152,19 +154,18 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                 hover_rpm = hover_omega(veh, params, air=air) * 30 / math.pi
             except (ValueError, SolverError) as exc:
                 raise InputError(f"--vehicle: its hover rpm: {exc}") from None
-            if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
-                import numpy as np
+    if vehicle is not None and target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
+        import numpy as np
 
-                from ..vehicle import vehicle_wrench
+        from ..vehicle import vehicle_wrench
 
-                down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
-                                             np.full(len(veh.rotors), hover_rpm * math.pi / 30),
-                                             air=air).body_force[0, 2])
-                warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
-                              f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N in hover "
-                              f"({100 * down / veh.weight:.1f}% of its weight), which the hover rpm carries and "
-                              "RotorPy's quad_params (drag of the freestream only) leave out: there the exported "
-                              "vehicle's thrust at this rpm exceeds its weight by as much", UserWarning, stacklevel=1)
+        down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
+                                     np.full(len(veh.rotors), hover_rpm * math.pi / 30), air=air).body_force[0, 2])
+        warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
+                      f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
+                      f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of the "
+                      "freestream only) leave out: there the exported vehicle's thrust at that rpm exceeds its weight "
+                      "by as much", UserWarning, stacklevel=1)
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)

@@ -397,7 +397,10 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     with warnings.catch_warnings(record=True) as caught:  # (said now, before the fit, and kept for the reports)
         warnings.simplefilter("always")
         data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
-    data_warnings = list(dict.fromkeys(str(w.message) for w in caught))
+    data_warnings = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, UserWarning)))
+    for w in caught:  # (a library's own warnings go the usual way, under the command's filters)
+        if not issubclass(w.category, UserWarning):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
     for w in data_warnings:

@@ -285,19 +285,21 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     def plausible(rat, lo=1 / SANITY_FACTOR, hi=SANITY_FACTOR):
         return all(lo <= v <= hi for v in rat.values())
 
+    drag_refused = None
     if "drag" in data.measured:  # the sign convention of the in-plane force (a fit of the other sign is nonsense)
         D = at_rpm.drag
         sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
         opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
         if "drag" in checked and sure.sum() >= 3 and opposite >= DRAG_SIGN_REFUSED * sure.sum():
-            # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit)
-            raise DataError(f"load data: {data.source}: the measured drag has the other sign than the model's "
+            # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit;
+            # raised after the thrust and torque checks, whose unit slips are said first)
+            drag_refused = DataError(f"load data: {data.source}: the measured drag has the other sign than the model's "
                             f"in-plane force at {opposite} of {int(sure.sum())} points at incidence: propmap's drag "
                             "points along the in-plane airspeed (against the disk's in-plane motion, "
                             "docs/conventions.md); negate the column if the file uses the other convention (a normal "
                             "force of a body-fixed balance, or a sweep through negative angles given as magnitudes, "
                             "has it on one side)")
-        if sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
+        elif sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
             warnings_.append(f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
                              f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
                              "airspeed (against the disk's in-plane motion); negate the column if the file uses the "
@@ -316,6 +318,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     speed_slip = _airspeed_slip(data, at_rpm, loads_at, checked)
     ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
+        if drag_refused is not None:
+            raise drag_refused
         return warnings_ + ([f"the measured thrust at airspeed matches the model far better with the airspeed read as "
                              f"{speed_slip} (is the airspeed column in {speed_slip}? name its unit, e.g. "
                              f"'airspeed ({speed_slip})'; it is read in m/s)"] if speed_slip else [])

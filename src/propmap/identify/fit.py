@@ -314,7 +314,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
                      "(docs/identification.md)")
     if "drag" in data.measured and "drag" not in keys and quantities is None:
         notes.append(f"the measured drag is not fitted: no point has an in-plane airspeed above {STATIC_AIRSPEED:g} "
-                     "m/s, where the model's in-plane force is 0")
+                     "m/s (below it model and measurement are near 0, the measurement a balance's noise)")
     warns = [*_unit_notes(data, propeller, keys, air), *notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}
@@ -511,7 +511,8 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
                      nfev * sum(d.n for d, _ in datasets), air, {"kind": "loads_joint", **extra})
     per, k = [], 0
     for (data, prop), wk in zip(datasets, w):
-        m = data.n * len(data.measured)
+        rows = _fitted_rows(data, _load_keys(data, None))  # (the in-plane force at in-plane points only)
+        m = sum(int(v.sum()) for v in rows.values())
         r = best.fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
         per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2)))})
         k += m

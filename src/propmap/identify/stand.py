@@ -322,7 +322,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                      and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
         if kind == "angle" and "airspeed" in cm.columns:  # an angle's unit after an underscore (tilt_deg, beta_rad)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
-                     and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like]
+                     and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
+                     and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
         if like:
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}")

@@ -95,9 +95,11 @@ def model_uncertainty(label: str) -> dict:
         from .params_file import set_coverage
 
         try:
-            top = float((set_coverage(label) or {}).get("incidence_deg_max", 0.0))
+            cov = set_coverage(label) or {}
         except (OSError, ValueError):  # (an unreadable file: its reader says why where it is read)
-            top = 0.0
+            cov = {}
+        # (a flight fit's incidences are its rotors' in flight, near 180 deg in any sink: not load data at incidence)
+        top = float(cov.get("incidence_deg_max", 0.0)) if cov.get("data") != "flight logs" else 0.0
         if top > 0.0:  # a fit to load data at incidence (a map's sidecar called it 'not validated at incidence')
             out["off_axis"] = (f"fitted to load data at incidence up to {top:g} deg (the file's [coverage]); its "
                                "fit report states its errors there, held-out ones where groups were held out; "

@@ -372,8 +372,9 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     SolverError
         As :func:`propmap.rotor_loads`.
     """
-    air = params.air if air is None else air
-    _warn_rotor_air(vehicle, air)
+    if air is None:  # (an air given is the caller's choice for every rotor: not warned of)
+        air = params.air
+        _warn_rotor_air(vehicle, air)
     n_rot = len(vehicle.rotors)
     kappa = vehicle.rotor_interference  # (in [0, 3]: Vehicle checks it)
     v = _samples("velocity", velocity, 3)
@@ -486,8 +487,8 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
 
 def _warn_rotor_air(vehicle: Vehicle, air: Air) -> None:
     """Warn where a rotor's own parameter set carries another air than the one every rotor is
-    solved in (the vehicle's: ``air``, else the parameter set's); it was dropped silently (a
-    rotor's set at rho 1.0 made 25% more thrust than in its own air: a user-level audit)."""
+    solved in, the parameter set's where no air is given (it was dropped silently: a rotor's set
+    at rho 1.0 made 25% more thrust than in its own air, a user-level audit)."""
     other = [(k + 1, r.params.air.rho) for k, r in enumerate(vehicle.rotors)
              if r.params is not None and getattr(r.params, "air", air) != air]
     if other:
@@ -496,8 +497,8 @@ def _warn_rotor_air(vehicle: Vehicle, air: Air) -> None:
         k, rho = other[0]
         warnings.warn(f"rotor {k} has its own parameter set in other air (rho {rho:.4g} kg/m^3"
                       f"{f', and {len(other) - 1} more rotor(s)' if len(other) > 1 else ''}): every rotor is solved in "
-                      f"the vehicle's air (rho {air.rho:.4g} kg/m^3, the air given or the parameter set's); give air= "
-                      "to choose it", UserWarning, stacklevel=3)
+                      f"one air, the parameter set's (rho {air.rho:.4g} kg/m^3); give air= to choose it",
+                      UserWarning, stacklevel=3)
 
 
 def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
