@@ -105,7 +105,8 @@ def _load_keys(data: LoadData, quantities) -> list:
     if "drag" in keys and not _fitted_rows(data, ["drag"])["drag"].any():
         if quantities is not None or len(keys) == 1:
             raise ValueError(f"the in-plane force (drag) cannot be fitted: no point has an in-plane airspeed above "
-                             f"{STATIC_AIRSPEED:g} m/s, where the model's is 0 (is the incidence missing?)")
+                             f"{STATIC_AIRSPEED:g} m/s (below it model and measurement are near 0; is the incidence "
+                             "missing?)")
         keys.remove("drag")  # (its measurement there is noise: sanity_check says so where it is large)
     return keys
 
