@@ -371,6 +371,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         interference, or where :func:`propmap.rotor_loads` refuses them.
     SolverError
         As :func:`propmap.rotor_loads`.
+
+    Warns
+    -----
+    UserWarning
+        Without ``air``: a rotor whose own parameter set carries other air than ``params``
+        (every rotor is solved in one air, ``params``'s).
     """
     if air is None:  # (an air given is the caller's choice for every rotor: not warned of)
         air = params.air
