@@ -127,3 +127,27 @@ def test_a_joint_fit_reports_each_propellers_residuals_over_its_own_rows(tunnel)
     k0 = 22 * 2 + 18
     rms_b = float(np.sqrt(np.mean((r[k0:k0 + mb] * math.sqrt(b.n)) ** 2)))
     assert per[1]["rms_residual"] == pytest.approx(rms_b, rel=1e-12)
+
+
+def test_a_fitted_file_says_which_propeller_and_warns_on_another(tmp_path, capsys):
+    """A fitted file recorded no propeller, and ran another one without a word (a user-level
+    audit: an 8x6E, a 10x7E and a 12 in three-blade propeller with a 9 in fit)."""
+    from propmap.io.params_file import read_coverage
+
+    prop = pm.load_propeller("apce_10x7")
+    p = pm.default_params("apce_10x7")
+    rows = ["rpm,airspeed,thrust,torque"]
+    for rpm in (3000, 4000, 5000, 6000):
+        for V in (0.0, 3.0, 6.0, 9.0):
+            r = pm.rotor_loads(prop, p, rpm * math.pi / 30, V, 0.0)
+            rows.append(f"{rpm},{V},{float(r.thrust)!r},{float(r.torque)!r}")
+    (tmp_path / "st.csv").write_text("\n".join(rows) + "\n")
+    fit = tmp_path / "f.toml"
+    assert main(["fit", "loads", str(tmp_path / "st.csv"), "--prop", "apce_10x7", "--out", str(fit)]) == 0
+    cov = read_coverage(fit)
+    assert (cov["propeller"], cov["diameter_m"], cov["n_blades"]) == ("apce_10x7", pytest.approx(0.254), 2.0)
+    capsys.readouterr()
+    assert main(["loads", "apce_8x6", "--params", str(fit), "--rpm", "5000"]) == 0
+    assert "runs with f.toml, fitted to data of apce_10x7 (0.254 m, 2 blades)" in capsys.readouterr().err
+    assert main(["loads", "apce_10x7", "--params", str(fit), "--rpm", "5000"]) == 0
+    assert "fitted to data of" not in capsys.readouterr().err

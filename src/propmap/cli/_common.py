@@ -186,12 +186,43 @@ def set_collective_deg(params) -> float:
     return float(f"{math.degrees(params.collective):.12g}")
 
 
+def _check_fitted_propeller(propeller, label: str) -> None:
+    """Warn where a parameter file fitted to load data of one propeller (its [coverage]
+    ``propeller``, ``diameter_m``, ``n_blades``, written since 2026-11-26) runs another one: of
+    another diameter (beyond 1%) or blade count (a user-level audit: such a file ran an 8x6E,
+    a 10x7E and a 12 in three-blade propeller without a word)."""
+    from pathlib import Path
+
+    if not label or Path(label).suffix.lower() != ".toml":
+        return
+    from ..io.params_file import set_coverage
+
+    try:
+        cov = set_coverage(label) or {}
+    except (OSError, ValueError):  # (its reader says what is wrong where it is read)
+        return
+    d, b = cov.get("diameter_m"), cov.get("n_blades")
+    if d is None and b is None:
+        return
+    other = (d is not None and abs(propeller.diameter / d - 1.0) > 0.01) or (
+        b is not None and int(round(b)) != propeller.n_blades)
+    if other:
+        shown = ", ".join(x for x in (f"{d:.4g} m" if d is not None else "",
+                                      f"{int(round(b))} blades" if b is not None else "") if x)
+        warn(f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades) runs with "
+             f"{Path(label).name}, fitted to data of {cov.get('propeller', 'another propeller')} ({shown}): its "
+             "section parameters absorb that propeller's geometry and data, so they do not carry to another one "
+             "reliably (a set "
+             "calibrated on a pitch sibling predicts its data no better than the generic set, docs/models.md)")
+
+
 def check_section_match(propeller, label: str) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets. Blade angles
     negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead. A
-    set calibrated on another catalogue propeller (``calibrated:NAME``) is warned of too."""
+    set calibrated on another catalogue propeller (``calibrated:NAME``), or a parameter file fitted to
+    another propeller's load data (:func:`_check_fitted_propeller`), is warned of too."""
     import numpy as np
 
     from ..core.geometry import rotor_like
@@ -209,6 +240,7 @@ def check_section_match(propeller, label: str) -> None:
         warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "
              f"for a symmetric-section rotor give --params section:NAME ({', '.join(section_presets())}) or a "
              "parameter file fitted to its data")
+    _check_fitted_propeller(propeller, label)
     owner = label[len("calibrated:"):] if label.startswith("calibrated:") else None
     if owner is not None and owner != propeller.name:
         warn(f"{propeller.name} runs with {label}, the set calibrated on another propeller: such a set predicts even a "

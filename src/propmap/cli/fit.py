@@ -508,6 +508,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
     coverage = {**_coverage(train, prop), "data": label, "data_sha256": data_digest(sources),
+                "propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

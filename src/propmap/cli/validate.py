@@ -7,8 +7,8 @@ import os
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, air_label, echo_json, load_params, parse_names, resolve_air,
-                      warn, with_air_options, with_prop_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, air_label, check_section_match, echo_json, load_params,
+                      parse_names, resolve_air, warn, with_air_options, with_prop_options)
 from ._paths import check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
 
@@ -126,6 +126,7 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
         raise InputError(f"PROP: {exc.args[0]} (validate needs a catalogue propeller with measurements)") from None
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
+    check_section_match(load_propeller(prop), label)
     try:
         v = run_validation(entry, load_propeller(prop), params, air=air)
     except ValueError as exc:
@@ -157,6 +158,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     data, prop, _, what = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs, min_points=1)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
+    check_section_match(prop, label)
     air = _file_air(data, air, air_choice)
     from ..identify.data import DataError, sanity_check
 

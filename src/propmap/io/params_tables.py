@@ -17,12 +17,14 @@ BODY_TABLE = "body"
 #: the table of what a fitted set's data covered (warnings when the set is used beyond it)
 COVERAGE_TABLE = "coverage"
 COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
-                 "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0)}
+                 "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0),
+                 # the propeller the data are of (a load fit's; since 2026-11-26): its diameter [m] and blade count
+                 "diameter_m": (0.0, 100.0), "n_blades": (1.0, 100.0)}
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
 #: saw and held out, so that `propmap validate` can say which of its rows are in-sample
-COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out")
+COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out", "propeller")
 #: the [coverage] text keys that hold one text (the others a list of texts)
-COVERAGE_SINGLE_TEXTS = ("data", "data_sha256")
+COVERAGE_SINGLE_TEXTS = ("data", "data_sha256", "propeller")
 #: the longest text and list of the [coverage] table's text keys
 COVERAGE_TEXT_MAX, COVERAGE_LIST_MAX = 1000, 100_000
 
