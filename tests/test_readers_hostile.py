@@ -669,3 +669,44 @@ def test_a_row_with_more_fields_than_the_header_is_refused(tmp_path):
     p = _write(tmp_path, "s_9x6_static_ab0001.txt", "RPM CT CP\n3000 0.1030 0.0530\n3211 0.1033 0 .0540\n")
     refused(MeasurementFileError, read_uiuc_static, p, match=r"line 3: 4 fields where the header has 3 \(a value "
                                                              r"split by a blank\?\)")
+
+
+def test_a_pe0_files_stations_are_checked_as_a_uiuc_files(tmp_path):
+    """The PE0 reader skipped the station checks: the APC 8x6E cut at 0.59 R read silently with
+    20% more thrust (a user-level audit)."""
+    from propmap.io.geometry_files import read_geometry
+
+    src = resources.files("propmap") / "data" / "apc_pe0" / "8x6E-PERF.PE0"
+    text = src.read_text()
+    lines = text.splitlines(keepends=True)
+    head = next(i for i, ln in enumerate(lines) if "STATION" in ln.split() and "TWIST" in ln.split())
+    radius = 4.0  # [in] (the 8x6E's RADIUS)
+
+    def cut(lo, hi):  # the station table kept between lo and hi r/R (the units line under the header kept)
+        out = lines[:head + 2]
+        for ln in lines[head + 2:]:
+            parts = ln.split()
+            try:
+                x = float(parts[0]) / radius if len(parts) >= 13 else None
+            except ValueError:
+                x = None
+            if x is None:
+                out.append(ln)
+            elif lo <= x <= hi:
+                out.append(ln)
+        return "".join(out)
+
+    short = tmp_path / "to060-PERF.PE0"
+    short.write_text(cut(0.0, 0.60))
+    refused(GeometryFileError, read_geometry, short, match=r"the stations stop at r/R = 0\.5\d+: the outer blade")
+    part = tmp_path / "to080-PERF.PE0"
+    part.write_text(cut(0.0, 0.80))
+    with pytest.warns(UserWarning, match=r"the stations stop at r/R = 0\.7\d+: .*extrapolated"):
+        read_geometry(part)
+    late = tmp_path / "from050-PERF.PE0"
+    late.write_text(cut(0.5, 1.0))
+    with pytest.warns(UserWarning, match=r"the stations start at r/R = 0\.5\d*: the blade inside it makes no load"):
+        read_geometry(late)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_geometry(src)  # (the whole file: quiet)
