@@ -420,7 +420,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         if n_blades is None:
             raise GeometryFileError(f"{show_path(path)}: a UIUC geometry file (r/R c/R beta) does not state the blade "
                                     "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
-                                    "read as 2: -26% in hover)")
+                                    "read as 2: -30% of static thrust on the APC 8x6E)")
         return prop
     first = next((ln.strip() for ln in io.StringIO(text[:65536], newline=None) if ln.strip()), "")
     hint = ("; its columns are separated by commas or semicolons: a UIUC file's are separated by blanks or tabs"
