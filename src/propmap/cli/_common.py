@@ -212,8 +212,8 @@ def _check_fitted_propeller(propeller, label: str) -> None:
         warn(f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades) runs with "
              f"{Path(label).name}, fitted to data of {cov.get('propeller', 'another propeller')} ({shown}): its "
              "section parameters absorb that propeller's geometry and data, so they do not carry to another one "
-             "reliably (a set "
-             "calibrated on a pitch sibling predicts its data no better than the generic set, docs/models.md)")
+             "reliably (a set calibrated on a pitch sibling predicts its data no better than the generic set, "
+             "docs/models.md)")
 
 
 def check_section_match(propeller, label: str) -> None:
