@@ -146,8 +146,26 @@ def test_a_fitted_file_says_which_propeller_and_warns_on_another(tmp_path, capsy
     assert main(["fit", "loads", str(tmp_path / "st.csv"), "--prop", "apce_10x7", "--out", str(fit)]) == 0
     cov = read_coverage(fit)
     assert (cov["propeller"], cov["diameter_m"], cov["n_blades"]) == ("apce_10x7", pytest.approx(0.254), 2.0)
+    assert cov["re75_max"] / cov["re75_min"] == pytest.approx(2.0)  # (3000-6000 rpm)
     capsys.readouterr()
     assert main(["loads", "apce_8x6", "--params", str(fit), "--rpm", "5000"]) == 0
     assert "runs with f.toml, fitted to data of apce_10x7 (0.254 m, 2 blades)" in capsys.readouterr().err
     assert main(["loads", "apce_10x7", "--params", str(fit), "--rpm", "5000"]) == 0
     assert "fitted to data of" not in capsys.readouterr().err
+
+
+def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
+    """Only the rpm span was checked: a set used at 10,000 m ran at a third of its data's Reynolds
+    number without a word (a user-level audit). The chord Reynolds number at 0.75 R is checked
+    against the data's: a calibrated set's rpm span on its own propeller in its own air."""
+    from propmap.cli._common import reynolds_75
+
+    prop = pm.load_propeller("apce_10x7")
+    air = pm.default_params("apce_10x7").air
+    assert reynolds_75(prop, air, 1975.0) == pytest.approx(19937, rel=1e-3)  # (regression value: the data's low end)
+    assert main(["loads", "apce_10x7", "--rpm", "2600", "--altitude-m", "10000"]) == 0
+    err = capsys.readouterr().err
+    assert "Reynolds number at 0.75 R 1.2e+04 in this air and on apce_10x7: the data behind calibrated:apce_10x7 " \
+           "span 1.99e+04-6.6e+04" in err
+    assert main(["loads", "apce_10x7", "--rpm", "2600"]) == 0  # (sea level: within the data's)
+    assert "Reynolds number" not in capsys.readouterr().err

@@ -525,3 +525,45 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
                     f"up to {high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up")
             warn(f"{shown} rpm: the data behind {label} span {span} (Reynolds numbers beyond them are "
                  "extrapolated)")
+        else:  # (the rates within the data's: in other air or on another propeller the Reynolds number need not be)
+            _check_reynolds(prop, label, air, cov, (lo, hi))
+
+
+def reynolds_75(prop, air, rpm) -> float:
+    """The chord Reynolds number at 0.75 R in static rotation, rho (0.75 Omega R) c(0.75 R) / mu,
+    at ``rpm`` [rpm] (the catalogue's measure, docs/validation.md)."""
+    import numpy as np
+
+    y = 0.75 * prop.radius
+    c = float(np.asarray(prop.chord_at(np.array([y])))[0])
+    return air.rho * (rpm * math.pi / 30) * y * c / air.mu
+
+
+def _check_reynolds(prop, label: str, air, cov: dict, rpm_span) -> None:
+    """Warn where the run's Reynolds numbers at 0.75 R leave the span of the data behind the set
+    (beyond 5%): its [coverage] ``re75_min``, ``re75_max`` (a load fit's, since 2026-11-26), or a
+    calibrated set's rpm span on its own propeller in its own air. The rpm check alone missed a
+    set used at altitude or on another size (a user-level audit: at 10,000 m the same rpm ran at
+    a third of the data's Reynolds number without a word)."""
+    if "re75_min" in cov and "re75_max" in cov:
+        span = (cov["re75_min"], cov["re75_max"])
+    elif label.startswith("calibrated:") and "rpm_min" in cov and "rpm_max" in cov:
+        from ..io.calibration import calibrated
+        from ..io.catalogue import load_propeller
+
+        owner = label.split(":", 1)[1]
+        entry = calibrated(owner)
+        try:
+            own = load_propeller(owner)
+        except (KeyError, ValueError):
+            return
+        set_air = entry.air if entry is not None else air
+        span = (reynolds_75(own, set_air, cov["rpm_min"]), reynolds_75(own, set_air, cov["rpm_max"]))
+    else:
+        return
+    lo, hi = (reynolds_75(prop, air, r) for r in rpm_span)
+    if lo < span[0] / 1.05 or hi > span[1] * 1.05:
+        shown = f"{lo:.3g}" if lo == hi else f"{lo:.3g}-{hi:.3g}"
+        warn(f"Reynolds number at 0.75 R {shown} in this air and on {prop.name}: the data behind {label} span "
+             f"{span[0]:.3g}-{span[1]:.3g} (the section's Reynolds terms are extrapolated; another air or another "
+             "propeller size than the data's)")

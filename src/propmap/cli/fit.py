@@ -110,6 +110,15 @@ def _out_files(out: Path) -> list:
                                      for s in (".report.json", ".report.txt", ".png")]
 
 
+def _reynolds_span(data, prop, air) -> dict:
+    """The data's chord Reynolds numbers at 0.75 R in static rotation (re75_min, re75_max) in the
+    fit's air: what a run of the file in other air or on another size is checked against."""
+    from ._common import reynolds_75
+
+    rpm = data.omega * 30 / math.pi
+    return {"re75_min": reynolds_75(prop, air, float(rpm.min())), "re75_max": reynolds_75(prop, air, float(rpm.max()))}
+
+
 def _coverage(data, prop) -> dict:
     """What load data cover, for the written file's [coverage] table."""
     import numpy as np
@@ -509,6 +518,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
     coverage = {**_coverage(train, prop), "data": label, "data_sha256": data_digest(sources),
                 "propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
+                **_reynolds_span(train, prop, air),
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

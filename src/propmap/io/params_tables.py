@@ -19,7 +19,9 @@ COVERAGE_TABLE = "coverage"
 COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_min": (0.0, 1e7),
                  "rpm_max": (0.0, 1e7), "airspeed_max": (0.0, 500.0),
                  # the propeller the data are of (a load fit's; since 2026-11-26): its diameter [m] and blade count
-                 "diameter_m": (0.0, 100.0), "n_blades": (1.0, 100.0)}
+                 "diameter_m": (0.0, 100.0), "n_blades": (1.0, 100.0),
+                 # the chord Reynolds numbers at 0.75 R of the data's rates, in the fit's air (since 2026-11-26)
+                 "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9)}
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
 #: saw and held out, so that `propmap validate` can say which of its rows are in-sample
 COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out", "propeller")
