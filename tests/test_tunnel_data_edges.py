@@ -158,11 +158,10 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
     """Only the rpm span was checked: a set used at 10,000 m ran at a third of its data's Reynolds
     number without a word (a user-level audit). The chord Reynolds number at 0.75 R is checked
     against the data's: a calibrated set's rpm span on its own propeller in its own air."""
-    from propmap.cli._common import reynolds_75
-
     prop = pm.load_propeller("apce_10x7")
     air = pm.default_params("apce_10x7").air
-    assert reynolds_75(prop, air, 1975.0) == pytest.approx(19937, rel=1e-3)  # (regression value: the data's low end)
+    # (regression value: the data's low end, 1975 rpm)
+    assert float(prop.reynolds_75(1975.0 * math.pi / 30, air)) == pytest.approx(19937, rel=1e-3)
     assert main(["loads", "apce_10x7", "--rpm", "2600", "--altitude-m", "10000"]) == 0
     err = capsys.readouterr().err
     assert "Reynolds number at 0.75 R 1.2e+04 in this air and on apce_10x7: the data behind calibrated:apce_10x7 " \

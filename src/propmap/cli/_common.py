@@ -529,16 +529,6 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
             _check_reynolds(prop, label, air, cov, (lo, hi))
 
 
-def reynolds_75(prop, air, rpm) -> float:
-    """The chord Reynolds number at 0.75 R in static rotation, rho (0.75 Omega R) c(0.75 R) / mu,
-    at ``rpm`` [rpm] (the catalogue's measure, docs/validation.md)."""
-    import numpy as np
-
-    y = 0.75 * prop.radius
-    c = float(np.asarray(prop.chord_at(np.array([y])))[0])
-    return air.rho * (rpm * math.pi / 30) * y * c / air.mu
-
-
 def _check_reynolds(prop, label: str, air, cov: dict, rpm_span) -> None:
     """Warn where the run's Reynolds numbers at 0.75 R leave the span of the data behind the set
     (beyond 5%): its [coverage] ``re75_min``, ``re75_max`` (a load fit's, since 2026-11-26), or a
@@ -558,10 +548,10 @@ def _check_reynolds(prop, label: str, air, cov: dict, rpm_span) -> None:
         except (KeyError, ValueError):
             return
         set_air = entry.air if entry is not None else air
-        span = (reynolds_75(own, set_air, cov["rpm_min"]), reynolds_75(own, set_air, cov["rpm_max"]))
+        span = tuple(float(own.reynolds_75(cov[k] * math.pi / 30, set_air)) for k in ("rpm_min", "rpm_max"))
     else:
         return
-    lo, hi = (reynolds_75(prop, air, r) for r in rpm_span)
+    lo, hi = (float(prop.reynolds_75(r * math.pi / 30, air)) for r in rpm_span)
     if lo < span[0] / 1.05 or hi > span[1] * 1.05:
         shown = f"{lo:.3g}" if lo == hi else f"{lo:.3g}-{hi:.3g}"
         warn(f"Reynolds number at 0.75 R {shown} in this air and on {prop.name}: the data behind {label} span "

@@ -61,7 +61,8 @@ def fit_demo(prop, generic, out_dir: Path):
     from .fit import _coverage
 
     # with the fitted data's [coverage], as `fit loads` writes it: later uses warn beyond it
-    write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air, coverage=_coverage(train, prop),
+    write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
+                 coverage=_coverage(train, prop, cambered.air),
                  comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
     cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)
     cmp_p = holdout_comparison(entry, prop, paper.params, preset(PAPER), HOLDOUT)

@@ -110,25 +110,21 @@ def _out_files(out: Path) -> list:
                                      for s in (".report.json", ".report.txt", ".png")]
 
 
-def _reynolds_span(data, prop, air) -> dict:
-    """The data's chord Reynolds numbers at 0.75 R in static rotation (re75_min, re75_max) in the
-    fit's air: what a run of the file in other air or on another size is checked against."""
-    from ._common import reynolds_75
-
-    rpm = data.omega * 30 / math.pi
-    return {"re75_min": reynolds_75(prop, air, float(rpm.min())), "re75_max": reynolds_75(prop, air, float(rpm.max()))}
-
-
-def _coverage(data, prop) -> dict:
-    """What load data cover, for the written file's [coverage] table."""
+def _coverage(data, prop, air) -> dict:
+    """What load data cover, for the written file's [coverage] table: their advance ratios,
+    incidences, rates and airspeeds, the propeller they are of, and their chord Reynolds numbers
+    at 0.75 R in the fit's air (what a run in other air or on another size is checked against)."""
     import numpy as np
 
     n = data.omega / (2 * math.pi)
+    re75 = prop.reynolds_75(np.array([data.omega.min(), data.omega.max()]), air)
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
     return {"J_max": max(0.0, float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter)))),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
-            "airspeed_max": float(np.max(data.airspeed))}
+            "airspeed_max": float(np.max(data.airspeed)),
+            "propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
+            "re75_min": float(re75[0]), "re75_max": float(re75[1])}
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
@@ -516,9 +512,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                      f"({said}): what it learned from the fitted groups does not carry to these")
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
-    coverage = {**_coverage(train, prop), "data": label, "data_sha256": data_digest(sources),
-                "propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
-                **_reynolds_span(train, prop, air),
+    coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources),
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

@@ -193,6 +193,25 @@ class Propeller:
         """Blade angle theta(y) [rad] at radii ``y`` [m] (PCHIP through the stations)."""
         return self._theta_spline(np.asarray(y, dtype=float))
 
+    def reynolds_75(self, omega, air) -> np.ndarray:
+        """The chord Reynolds number at 0.75 R in static rotation, rho (0.75 Omega R) c(0.75 R) / mu
+        [-], the catalogue's measure of a propeller's Reynolds number (docs/validation.md).
+
+        Parameters
+        ----------
+        omega : float or array_like
+            Omega [rad/s], any shape.
+        air : Air
+            Its density rho [kg/m^3] and dynamic viscosity mu [Pa s].
+
+        Returns
+        -------
+        ndarray
+            Shaped like ``omega``.
+        """
+        y = 0.75 * self.radius
+        return air.rho * np.asarray(omega, dtype=float) * y * float(self.chord_at(y)) / air.mu
+
     def solidity(self) -> float:
         """Rotor solidity sigma = N_b * (blade area) / (pi R^2) [-]."""
         from scipy.integrate import quad

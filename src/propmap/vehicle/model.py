@@ -508,24 +508,15 @@ def _warn_rotor_air(vehicle: Vehicle, air: Air) -> None:
 
 
 def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
-    """Whether rotors ``a`` and ``b`` have the same propeller and parameter set by value (a
-    vehicle file reads each rotor's propeller on its own, so that grouping by identity solved
-    the NeuroBEM quadrotor's four rotors in four batches: 1.6 ms a sample)."""
+    """Whether rotors ``a`` and ``b`` have the same parameter set by value and the same blade
+    geometry (:meth:`Propeller.same_geometry`; a vehicle file reads each rotor's propeller on its
+    own, so that grouping by identity solved the NeuroBEM quadrotor's four rotors in four
+    batches: 1.6 ms a sample)."""
     pa = a.params if a.params is not None else params
     pb = b.params if b.params is not None else params
     if not (pa is pb or (pa == pb and pa.air == pb.air)):
         return False
-    if a.propeller is b.propeller:
-        return True
-    for f in fields(a.propeller):
-        if not f.init:  # (derived from the others: the splines)
-            continue
-        x, y = getattr(a.propeller, f.name), getattr(b.propeller, f.name)
-        same = (np.array_equal(x, y) if isinstance(x, np.ndarray) or isinstance(y, np.ndarray) else
-                type(x) is type(y) and x == y)
-        if not same:
-            return False
-    return True
+    return a.propeller is b.propeller or a.propeller.same_geometry(b.propeller)
 
 
 def _column(r: RotorLoads, k: int) -> RotorLoads:
