@@ -104,6 +104,10 @@ def test_rotors_of_one_propeller_are_solved_together(generic, monkeypatch):
     import propmap.vehicle.model as vm
 
     veh = read_vehicle(NEUROBEM)
+    assert all(r.propeller is veh.rotors[0].propeller for r in veh.rotors)  # (the file's reader shares it now)
+    # rotors built apart (the file's reader gave each its own object before): grouped by value
+    veh = dataclasses.replace(veh, rotors=tuple(dataclasses.replace(r, propeller=dataclasses.replace(r.propeller))
+                                                for r in veh.rotors))
     assert veh.rotors[0].propeller is not veh.rotors[1].propeller
     calls = []
     real = vm.rotor_loads

@@ -487,7 +487,9 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     Warns: tip Mach number above 0.7 (compressibility beyond Prandtl-Glauert), advance
     ratio beyond the data's largest, incidence beyond the data's (axial data: the off-axis
     loads rest on the BET/BEMT physics), rates outside the data's span, an airspeed beyond
-    the data's largest (by more than 1% and 0.1 m/s).
+    the data's largest (by more than 1% and 0.1 m/s), and, with the rates within the span, a
+    chord Reynolds number at 0.75 R beyond the data's by 5% (:meth:`Propeller.reynolds_75`
+    of ``prop`` in ``air``: another air or size, :func:`_check_reynolds`).
     """
     from ..io.params_file import set_coverage
 

@@ -231,9 +231,24 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
 
 
 def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[str]:
-    """The fitted ``quantities`` whose held-out rmse (``fitted[q + '_rmse']``) exceeds the base
-    set's by 25% and by more than 2% of the quantity's largest measured magnitude (``largest``):
-    what ``fit loads --holdout`` warns of (not noise: below either margin it is not said)."""
+    """The fitted ``quantities`` whose held-out rmse exceeds the base set's by 25% and by more
+    than 2% of the quantity's largest measured magnitude: what ``fit loads --holdout`` warns of
+    (not noise: below either margin it is not said).
+
+    Parameters
+    ----------
+    fitted, base : dict
+        ``{q + "_rmse": rmse}`` of the fitted and the base set on the held-out groups [N, N m].
+    largest : dict
+        ``{q: largest measured |value|}`` [N, N m].
+    quantities : iterable of str
+        The fitted quantities (``thrust``, ``drag``, ``torque``).
+
+    Returns
+    -------
+    list of str
+        Those quantities, in order.
+    """
     return [q for q in quantities if q + "_rmse" in fitted and fitted[q + "_rmse"] > 1.25 * base[q + "_rmse"]
             and fitted[q + "_rmse"] - base[q + "_rmse"] > 0.02 * largest[q]]
 
@@ -241,7 +256,23 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 def data_digest(sources) -> str:
     """SHA-256 over the SOURCE arguments' contents, whatever their order (each file's digest, the
     digests sorted; a catalogue name: its name): what tells a fit's data from another file of
-    the same name (``[coverage] data_sha256``)."""
+    the same name (``[coverage] data_sha256``).
+
+    Parameters
+    ----------
+    sources : iterable of str or Path
+        The files (or a catalogue name) a fit read.
+
+    Returns
+    -------
+    str
+        64 hexadecimal digits.
+
+    Raises
+    ------
+    OSError
+        A file that cannot be read.
+    """
     import hashlib
 
     from ..io.atomic import file_sha256

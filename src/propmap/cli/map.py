@@ -6,7 +6,7 @@ import contextlib
 import json
 import math
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 import click
@@ -235,8 +235,6 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                                      f"m, {r.propeller.n_blades} blades{other}){own}, not the map's "
                                      f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades)"
                                      f"{' and its set' if own else ''}: a C header holds one map and one set")
-            # (the same geometry under another name, a copy of the file: the map's propeller on every rotor)
-            veh = replace(veh, rotors=tuple(replace(r, propeller=propeller) for r in veh.rotors))
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, air_choice)
         check_section_match(propeller, label)

@@ -290,20 +290,17 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         D = at_rpm.drag
         sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
         opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
+        said = (f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
+                f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane airspeed (against "
+                "the disk's in-plane motion, docs/conventions.md); negate the column if the file uses the other "
+                "convention")
         if "drag" in checked and sure.sum() >= 3 and opposite >= DRAG_SIGN_REFUSED * sure.sum():
             # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit;
             # raised after the thrust and torque checks, whose unit slips are said first)
-            drag_refused = DataError(
-                f"load data: {data.source}: the measured drag has the other sign than the model's in-plane force at "
-                f"{opposite} of {int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
-                "airspeed (against the disk's in-plane motion, docs/conventions.md); negate the column if the file "
-                "uses the other convention (a normal force of a body-fixed balance, or a sweep through negative "
-                "angles given as magnitudes, has it on one side)")
+            drag_refused = DataError(f"load data: {data.source}: {said} (a normal force of a body-fixed balance, or a "
+                                     "sweep through negative angles given as magnitudes, has it on one side)")
         elif sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
-            warnings_.append(f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
-                             f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane "
-                             "airspeed (against the disk's in-plane motion); negate the column if the file uses the "
-                             "other convention")
+            warnings_.append(said)
     if "drag" in data.measured:  # an in-plane force without an in-plane airspeed: an incidence the file does not give?
         Dm = data.measured["drag"]
         axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)

@@ -191,6 +191,8 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     """
     norm, scales = _load_norms(data, propeller, keys, air)
     rows = _fitted_rows(data, keys)
+    # each quantity's fitted rows, measured value and divisor, once (not at every residual evaluation)
+    fitted = {k: (rows[k], data.measured[k][rows[k]], norm[k][rows[k]] * scales[k]) for k in keys}
 
     def make(opts):
         def loads(x, derivatives=False):
@@ -201,16 +203,15 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
 
         def errors(r):
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
-            return weight * np.concatenate([((model[k] - data.measured[k]) / norm[k] / scales[k])[rows[k]]
-                                            for k in keys])
+            return weight * np.concatenate([(model[k][m] - meas) / div for k, (m, meas, div) in fitted.items()])
 
         def residual(x, opts=opts):
             return errors(loads(x))
 
         def with_jacobian(x):
             r = loads(x, derivatives=True)
-            return errors(r), weight * np.vstack([(np.column_stack([r.derivative(k, n) for n in names])
-                                                   / norm[k][:, None] / scales[k])[rows[k]] for k in keys])
+            return errors(r), weight * np.vstack([np.column_stack([r.derivative(k, n)[m] for n in names]) / div[:, None]
+                                                  for k, (m, _, div) in fitted.items()])
 
         if (opts.jacobian == "implicit" and differentiable(base, names)
                 and np.all(data.omega >= OMEGA_MIN)):

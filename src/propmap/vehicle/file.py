@@ -281,7 +281,7 @@ def read_vehicle(path) -> Vehicle:
                                f"m, got {_short(data['centre_of_mass'])}")
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
-    rotors = []
+    rotors, props = [], {}
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
     for k, r in enumerate(data["rotors"], start=1):
@@ -310,7 +310,12 @@ def read_vehicle(path) -> Vehicle:
             raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {_short(r['spin'])}")
         blades = _blades(r["blades"], where) if "blades" in r else None
         diameter = _number(r["diameter_m"], f"{where} diameter_m", "m", DIAMETER_RANGE) if "diameter_m" in r else None
-        prop = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH, blades)
+        # (one object per propeller of the file: vehicle_wrench solves a propeller's rotors together by identity)
+        spec = (repr(r["propeller"]), diameter, blades)
+        if spec not in props:
+            props[spec] = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH,
+                                     blades)
+        prop = props[spec]
         params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
         j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
         rotors.append(Rotor(position, axis, spin, prop, params=params, inertia=j_r))  # (Rotor normalises the axis)

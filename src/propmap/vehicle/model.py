@@ -469,8 +469,9 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
     groups: dict[tuple[int, int], list[int]] = {}  # rotors of one propeller and set, solved in one batch
     for i, r in enumerate(vehicle.rotors):
         p = r.params if r.params is not None else params
-        key = next((k for k, idx in groups.items() if _same_rotor_model(vehicle.rotors[idx[0]], r, params)),
-                   (id(r.propeller), id(p)))
+        key = (id(r.propeller), id(p))  # (the same objects: no comparison, the common case of a file's rotors)
+        if key not in groups:
+            key = next((k for k, idx in groups.items() if _same_rotor_model(vehicle.rotors[idx[0]], r, params)), key)
         groups.setdefault(key, []).append(i)
     rotor_force = np.empty((N, n_rot, 3))
     rotor_moment = np.empty((N, n_rot, 3))
@@ -514,7 +515,7 @@ def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
     batches: 1.6 ms a sample)."""
     pa = a.params if a.params is not None else params
     pb = b.params if b.params is not None else params
-    if not (pa is pb or (pa == pb and pa.air == pb.air)):
+    if not (pa is pb or pa == pb):  # (the sets' air is one of their fields)
         return False
     return a.propeller is b.propeller or a.propeller.same_geometry(b.propeller)
 
