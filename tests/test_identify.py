@@ -110,8 +110,11 @@ def test_body_lift_option_reports_it_does_not_matter_when_absent(quad):
 
 def test_body_lift_test_compares_the_body_terms_not_two_section_optima():
     """The bundled level-flight example with --body-lift: the full fit reaches a better section
-    optimum than the fit without body lift, its body lift ending at 1.7e-9 N. The fit without it
-    is then run again from there, so that the test compares the body terms: the selected model's
+    optimum than the fit without body lift, its body lift ending near zero (the data have none:
+    1.7e-9 N until 2026-11-25; in a fresh environment of 2026-11-26, SciPy 1.17.1 and NumPy 2.4.6,
+    0.0085 N, 1.1e-3 of the weight, along the body terms' flat direction cl2_body -> 5,
+    alpha0_body -> 42 deg, with the same verdict). The fit without
+    it is then run again from there, so that the test compares the body terms: the selected model's
     rms is within 0.5% of the full fit's (it was 6% worse: 0.0497 against 0.0468 N, and the
     worse fit was written)."""
     from importlib import resources
@@ -123,7 +126,7 @@ def test_body_lift_test_compares_the_body_terms_not_two_section_optima():
     data = read_level_flight(ex / "level_flight_synthetic.csv", veh)
     r = fit_level_flight(data, veh, options=FitOptions(body_lift=True))
     bl = r.extra["body_lift"]
-    assert bl["max_abs_over_weight"] < 1e-6 and bl["selected"] == "without"
+    assert bl["max_abs_over_weight"] < 5e-3 and not bl["matters"] and bl["selected"] == "without"
     assert bl["rms_residual_without"] <= 1.005 * bl["rms_residual_with"], bl
     assert np.sqrt(np.mean(r.residuals**2)) == pytest.approx(bl["rms_residual_without"], rel=1e-12)
 
