@@ -140,7 +140,22 @@ def get_entry(name: str) -> CatalogueEntry:
 
 def near(name: str, names, cutoff: float = 0.6) -> list[str]:
     """The ``names`` near ``name``: the same but for case and blanks, else difflib's close
-    matches (at most 3, ratio ``cutoff`` or more)."""
+    matches (at most 3, ratio ``cutoff`` or more).
+
+    Parameters
+    ----------
+    name : str
+        What the user typed (a propeller, a parameter set, a column name).
+    names : iterable of str
+        The valid names.
+    cutoff : float, optional
+        :func:`difflib.get_close_matches`' similarity ratio, 0-1.
+
+    Returns
+    -------
+    list of str
+        The matches, best first; empty if none.
+    """
     import difflib
 
     names = list(names)
@@ -150,7 +165,20 @@ def near(name: str, names, cutoff: float = 0.6) -> list[str]:
 
 def near_names(name: str, names) -> str:
     """'; did you mean A, B?' for the ``names`` :func:`near` ``name``, else a pointer to
-    ``propmap props``."""
+    ``propmap props``: the tail of an unknown-propeller message.
+
+    Parameters
+    ----------
+    name : str
+        The unknown name.
+    names : iterable of str
+        The valid names.
+
+    Returns
+    -------
+    str
+        The tail, starting with ``"; "``.
+    """
     found = near(name, names)
     return f"; did you mean {', '.join(found)}?" if found else "; run 'propmap props' for the list"
 

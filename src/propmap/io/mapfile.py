@@ -297,7 +297,24 @@ def _json_safe(value):
 def map_metadata(ds) -> dict:
     """A map's metadata as its sidecar holds it (strict JSON values): its attributes (propeller,
     parameter set, air, model, measured error), ``dims`` (axis sizes), ``axes`` (each axis'
-    first and last value, SI units) and ``variables`` (each variable's unit)."""
+    first and last value, SI units) and ``variables`` (each variable's unit).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A map as :func:`propmap.maps.build_map` writes it, with the axes ``rpm``, ``airspeed``
+        and ``incidence_deg``.
+
+    Returns
+    -------
+    dict
+        JSON-safe: NumPy values as Python ones, non-finite floats as None.
+
+    Raises
+    ------
+    KeyError
+        An axis of the map is missing.
+    """
     meta = {k: (v.tolist() if isinstance(v, np.ndarray) else v.item() if isinstance(v, np.generic) else v)
             for k, v in ds.attrs.items()}
     meta["dims"] = {d: int(n) for d, n in ds.sizes.items()}
