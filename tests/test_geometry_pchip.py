@@ -63,3 +63,11 @@ def test_same_geometry_compares_blades_not_names():
     assert not a.same_geometry(dataclasses.replace(a, n_blades=3))
     assert not a.same_geometry(dataclasses.replace(a, theta=a.theta + 1e-6))
     assert not a.same_geometry(pm.load_propeller("apce_10x7"))  # other stations too
+
+
+def test_same_size_compares_a_recorded_diameter_and_blade_count():
+    a = pm.load_propeller("apce_8x6")  # 0.2032 m, 2 blades
+    assert a.same_size(0.2032, 2) and a.same_size(0.2032 * 1.009, 2.0) and a.same_size(None, None)
+    assert a.same_size(float("nan"), 2)  # an unknown diameter is not compared
+    assert not a.same_size(0.2032 * 1.011, 2) and not a.same_size(0.2032, 3) and not a.same_size(0.254, None)
+    assert a.same_size(0.2032 * 1.04, 2, rtol=0.05)

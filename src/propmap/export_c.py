@@ -223,7 +223,7 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
             raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades{other}), not "
                              f"the map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
                              "Python, with one map per rotor)")
-        if recorded is None and (not abs(d / p.diameter - 1.0) <= 0.01 or (b is not None and int(b) != p.n_blades)):
+        if recorded is None and (not np.isfinite(d) or not p.same_size(d, b)):
             raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades), not the "
                              f"map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
                              "Python, with one map per rotor)")

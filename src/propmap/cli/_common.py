@@ -204,9 +204,7 @@ def _check_fitted_propeller(propeller, label: str) -> None:
     d, b = cov.get("diameter_m"), cov.get("n_blades")
     if d is None and b is None:
         return
-    other = (d is not None and abs(propeller.diameter / d - 1.0) > 0.01) or (
-        b is not None and int(round(b)) != propeller.n_blades)
-    if other:
+    if not propeller.same_size(d, b):
         shown = ", ".join(x for x in (f"{d:.4g} m" if d is not None else "",
                                       f"{int(round(b))} blades" if b is not None else "") if x)
         warn(f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades) runs with "

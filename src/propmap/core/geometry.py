@@ -243,6 +243,28 @@ class Propeller:
                 and all(np.shape(x) == np.shape(y) and np.allclose(x, y, rtol=1e-9, atol=0.0)
                         for x, y in ((self.r, other.r), (self.chord, other.chord), (self.theta, other.theta))))
 
+    def same_size(self, diameter: float | None, n_blades: float | None, rtol: float = 0.01) -> bool:
+        """Whether a recorded diameter and blade count (a map's or a fitted file's, either
+        possibly unknown: None or NaN) are this propeller's: the diameter within ``rtol``, the
+        blade count equal (rounded).
+
+        Parameters
+        ----------
+        diameter : float or None
+            [m]. None or NaN: not compared.
+        n_blades : float or None
+            None: not compared.
+        rtol : float, optional
+            Relative tolerance on the diameter (default 1%).
+
+        Returns
+        -------
+        bool
+        """
+        d = float("nan") if diameter is None else float(diameter)
+        d_ok = not math.isfinite(d) or abs(self.diameter / d - 1.0) <= rtol
+        return d_ok and (n_blades is None or int(round(float(n_blades))) == self.n_blades)
+
     def __repr__(self) -> str:
         return (f"Propeller(name={self.name!r}, radius={self.radius:.4g} m, n_blades={self.n_blades}, "
                 f"stations={len(self.r)}, r_hub={self.r_hub / self.radius:.3f} R)")

@@ -94,7 +94,7 @@ class VehicleMap:
             raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
         for i, (m, r) in enumerate(zip(maps, vehicle.rotors)):
             d, b = float(m.attrs.get("diameter_m", np.nan)), m.attrs.get("n_blades")
-            if not abs(d / r.propeller.diameter - 1.0) <= 0.01 or (b is not None and int(b) != r.propeller.n_blades):
+            if not np.isfinite(d) or not r.propeller.same_size(d, b):
                 raise ValueError(f"maps: rotor {i + 1}'s map is of {m.attrs.get('propeller', '?')} ({d:.4g} m, "
                                  f"{b} blades), its propeller {r.propeller.name} is {r.propeller.diameter:.4g} m with "
                                  f"{r.propeller.n_blades} blades: build the map for the vehicle's propeller "
