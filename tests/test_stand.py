@@ -7,6 +7,8 @@ with loads from propmap's calibrated apce_8x6 set (UIUC vol. 1, Brandt & Selig A
 2011-1255) plus 0.4% noise and the motor's settling at each step.
 """
 
+import math
+
 import numpy as np
 import pytest
 
@@ -256,6 +258,63 @@ def test_wrong_units_are_refused_with_the_cause(tmp_path, truth_params, thrust_f
     (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
     with pytest.raises(DataError, match=cause):
         sanity_check(read_loads(tmp_path / "w.csv"), prop)
+
+
+@pytest.mark.parametrize("header, row, cause", [
+    ("rpm,thrust_kgf,torque", lambda n, T, Q: (n, T / 9.80665e-3, Q), "gf declared as kgf"),
+    ("rpm,thrust,torque_Nmm", lambda n, T, Q: (n, T, Q), "N m declared as N mm"),
+    ("rpm,thrust,torque", lambda n, T, Q: (n / 60, T, Q), r"rev/s \(Hz\) read as rpm"),
+    ("rpm,thrust,torque", lambda n, T, Q: (n, Q, T), "thrust and torque columns swapped"),
+    ("rpm,thrust_kgf,torque", lambda n, T, Q: (n, Q, T), "thrust and torque columns swapped"),
+])
+def test_more_slips_are_refused_with_the_cause(tmp_path, truth_params, header, row, cause):
+    """A user-level audit (2026-11-26): these were refused with the fallback hint "a 3-blade
+    propeller given as 2?" (the swapped columns also under a unit: a torque in N m read as kgf)."""
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = [header] + [",".join(f"{x:.8g}" for x in row(n, T, Q)) for n, T, Q in zip(rpm, r.thrust, r.torque)]
+    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(DataError, match=cause):
+        sanity_check(read_loads(tmp_path / "w.csv"), prop)
+
+
+def test_a_diameter_in_mm_given_as_inches_is_named(tmp_path, truth_params):
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = ["rpm,thrust,torque"] + [f"{n:.1f},{T:.8g},{Q:.8g}" for n, T, Q in zip(rpm, r.thrust, r.torque)]
+    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
+    (tmp_path / "g.txt").write_text("r/R c/R beta\n" + "".join(
+        f"{x:.4f} {c:.4f} {math.degrees(t):.3f}\n" for x, c, t in zip(prop.r / prop.radius, prop.chord / prop.radius,
+                                                                       prop.theta)))
+    big = pm.read_geometry(tmp_path / "g.txt", diameter_in=203.2, n_blades=2)  # 203.2 mm given as inches
+    with pytest.raises(DataError, match="mm given as inches"):
+        sanity_check(read_loads(tmp_path / "w.csv"), big)
+
+
+def test_a_wrong_blade_or_pole_pair_count_inside_the_refused_range_is_warned_of(tmp_path, truth_params):
+    """Inside 1/3-3x nothing was said, and a fit absorbed a 3-blade propeller given as 4 blades
+    (a user-level audit, 2026-11-26). Beyond 1.4x the warning names the count that fits."""
+    import dataclasses
+
+    two = pm.load_propeller("apce_8x6")
+    three = dataclasses.replace(two, n_blades=3)
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(three, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = ["rpm,thrust,torque"] + [f"{n:.1f},{T:.8g},{Q:.8g}" for n, T, Q in zip(rpm, r.thrust, r.torque)]
+    (tmp_path / "b.csv").write_text("\n".join(lines) + "\n")
+    data = read_loads(tmp_path / "b.csv")
+    assert sanity_check(data, three) == []  # the right count: nothing to say
+    (w,) = [w for w in sanity_check(data, two) if "blade count" in w]
+    assert "3 blades would give" in w and "1 blades" not in w
+    path = tmp_path / "e.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS, electrical_raw=True, pole_pairs=7, optical=False)
+    data = read_loads(path, rpm_source="electrical", pole_pairs=5)  # (7/5)^2: the thrust 2x the model's
+    (w,) = [w for w in sanity_check(data, two, pole_pairs=5) if "blade count" in w]
+    assert "--pole-pairs 7 would give" in w
+    assert not [w for w in sanity_check(read_loads(path, rpm_source="electrical", pole_pairs=7), two, pole_pairs=7)
+                if "blade count" in w]
 
 
 def test_the_cli_refuses_wrong_units_in_one_line(tmp_path, truth_params):

@@ -452,7 +452,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         from ..identify.data import DataError, sanity_check
 
         try:
-            for w in sanity_check(data, prop, air=air, quantities=qty):
+            for w in sanity_check(data, prop, air=air, quantities=qty, pole_pairs=pole_pairs):
                 warn(w)
                 data_warnings.append(w)
         except DataError as exc:
