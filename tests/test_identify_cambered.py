@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.identify import FitOptions, LoadData, fit_level_flight, fit_loads, read_vehicle, simulate_level_flight
+from propmap.identify import (FitOptions, LoadData, fit_level_flight, fit_loads, loads_from_catalogue, read_vehicle,
+                              simulate_level_flight)
 from propmap.identify.fit import CAMBERED_FIT, CAMBERED_FIT_RE, _data_kind, _sweep_rates
 from propmap.io.calibration import generic_params
 
@@ -161,6 +162,29 @@ def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):
             r.names.index(n)]))
     short = fit_loads(d, apc8x6, options=FitOptions(prior=False, max_nfev=2))
     assert short.hit_max_nfev and "evaluation limit (2)" in short.report_text()
+    assert short.warnings[0].startswith("the fit stopped at its evaluation limit (2)")  # first: not an optimum
+
+
+def test_a_fit_that_does_not_describe_its_data_says_so_first(apc8x6):
+    """Two propellers' data in one set (apce_8x6 and apce_10x7, UIUC vol. 1, fitted as the 8x6E):
+    an rms residual of 0.38 of the measured coefficients' rms, where the catalogue's own fits
+    leave 0.03-0.10; said before the bound warnings (a user-level audit: a stand export of two
+    propellers was fitted with exit 0, the evaluation limit fourth in the report). One
+    propeller's own data are not warned of."""
+    from propmap.io.catalogue import get_entry
+
+    d1 = loads_from_catalogue(get_entry("apce_8x6"), apc8x6.diameter)
+    d2 = loads_from_catalogue(get_entry("apce_10x7"), pm.load_propeller("apce_10x7").diameter)
+
+    def cat(f):
+        return np.concatenate([f(d1), f(d2)])
+
+    both = LoadData(cat(lambda d: d.omega), cat(lambda d: d.airspeed), cat(lambda d: d.incidence),
+                    {k: cat(lambda d: d.measured[k]) for k in ("thrust", "torque")}, cat(lambda d: d.group))
+    r = fit_loads(both, apc8x6)
+    assert np.sqrt(np.mean(r.residuals**2)) > 0.3
+    assert r.warnings[0].startswith("the fit leaves an rms residual of 0.3")
+    assert not any("rms residual of" in w for w in fit_loads(d1, apc8x6).warnings)
 
 
 def test_identifiability_holds_parameters_at_a_bound_and_flags_numerically_free_ones():

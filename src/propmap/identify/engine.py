@@ -255,7 +255,10 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
     hit = int(best.status) == 0
     if hit:
         limit = getattr(best, "nfev_limit", options.max_nfev)
-        warns.append(f"the fit stopped at its evaluation limit ({limit}) before converging")
+        # (first: the warnings after it are of a fit that did not end; a user-level audit found it fourth, behind
+        # the data's heuristics, and hidden in the report)
+        warns.insert(0, f"the fit stopped at its evaluation limit ({limit}) before converging: its parameters are "
+                        "where it stopped, not an optimum")
     cost = 0.5 * float(residuals @ residuals)
     return FitResult(params, air, names, best.x, residuals, cost, nfev, n_points, elapsed,
                      bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
