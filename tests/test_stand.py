@@ -743,3 +743,28 @@ def test_a_two_rotor_export_is_named_as_such(tmp_path):
     with pytest.raises(DataError, match=r"no rotation-speed column: .* this looks like a two-rotor export \(a coaxial "
                                         r"or dual stand, columns for rotors A and B\)"):
         read_loads(p)
+
+
+def test_an_export_saved_as_windows_1252_reads_as_the_utf8_one(tmp_path, truth_params):
+    """Excel on Windows saves 'µs', 'N·m' and '°C' as single bytes: refused as not UTF-8 before
+    2026-11-26 (a user-level audit); read as Windows-1252, with a note."""
+    path = tmp_path / "u.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS)
+    text = path.read_text(encoding="utf-8-sig")
+    (tmp_path / "w.csv").write_bytes(text.encode("cp1252"))
+    a, b = read_loads(path), read_loads(tmp_path / "w.csv")
+    np.testing.assert_array_equal(a.omega, b.omega)
+    np.testing.assert_array_equal(a.measured["thrust"], b.measured["thrust"])
+    np.testing.assert_array_equal(a.measured["torque"], b.measured["torque"])
+    assert any("read as Windows-1252" in n for n in b.notes) and not any("1252" in n for n in a.notes)
+
+
+def test_a_force_column_of_another_name_is_said_not_to_be_read(tmp_path, truth_params):
+    """'Force (N)' instead of 'Thrust (N)': a torque-only fit ran without a word (a user-level audit)."""
+    path = tmp_path / "u.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS, thrust_unit="N")
+    text = path.read_text(encoding="utf-8-sig").replace("Thrust (N)", "Force (N)", 1)
+    (tmp_path / "f.csv").write_text(text, encoding="utf-8")
+    d = read_loads(tmp_path / "f.csv")
+    assert set(d.measured) == {"torque"}
+    assert any("column 'Force (N)' (a force) is not read" in n and "only the torque is fitted" in n for n in d.notes)

@@ -111,9 +111,13 @@ class _Csv:
 
     def __init__(self, path, what: str):
         self.what, self.name = what, show_path(path)
+        self.notes: list[str] = []  # (what reading the bytes decided, for the reader's notes)
         try:
             raw = read_input_bytes(path, DataError, limit=MAX_FILE_BYTES)
-            decode_input_text(raw, path, DataError)  # refuses UTF-16, NUL bytes, non-UTF-8 (naming the line)
+            try:
+                decode_input_text(raw, path, DataError)  # refuses UTF-16, NUL bytes, non-UTF-8 (naming the line)
+            except DataError as exc:
+                raw = self._windows_1252(raw, exc)
         except DataError as exc:
             raise DataError(f"{what}: {exc}") from None
         n_lines = raw.count(b"\n") + raw.count(b"\r") - raw.count(b"\r\n")
@@ -143,6 +147,19 @@ class _Csv:
                                  self.header_line)
             seen[c] = j
         self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
+
+    def _windows_1252(self, raw: bytes, exc: DataError) -> bytes:
+        """Text that is not UTF-8 but Windows-1252 (a spreadsheet saved on Windows: 'µs', 'N·m',
+        '°C' as single bytes), re-encoded as UTF-8 with a note; else ``exc`` raised. A user-level
+        audit: a stand export re-saved by Excel was refused."""
+        if "is not UTF-8" not in str(exc):
+            raise exc
+        try:
+            text = raw.decode("cp1252")
+        except UnicodeDecodeError:  # (bytes Windows-1252 leaves undefined: another encoding)
+            raise exc from None
+        self.notes.append(f"{self.name} is not UTF-8: read as Windows-1252 (a spreadsheet's save on Windows)")
+        return text.encode("utf-8")
 
     def error(self, message: str, line: int | None = None) -> DataError:
         at = f", line {line}" if line else ""

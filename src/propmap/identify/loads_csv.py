@@ -102,7 +102,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         cm = map_columns(f.header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
     except DataError as exc:
         raise DataError(f"{what}: {p}: {exc}") from None
-    notes = list(cm.notes)
+    notes = [*f.notes, *cm.notes]
     power = [c for c in f.header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
              in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
     if power and "torque" not in cm.columns:
@@ -201,7 +201,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"])
         if note:
             notes.append(note)
-    if form and n and np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n:
+    averaged = bool(form and n and (np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n
+                                    # (an export of one row per step, already averaged: each row its step, so that
+                                    # the steps are groups; a ramp's rows, a few us apart, are not steps)
+                                    or (n <= 40 and np.all(np.abs(np.diff(v["esc"])) >= 5 * ESC_TOL[form]))))
+    if averaged:
         esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
         if n and np.all(np.isnan(v["rpm"])):
@@ -210,7 +214,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         if not group.size:
             raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
                             "half of the step)")
-        notes.append(f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped"
+        notes.append((f"each of the {n} rows is an ESC step (an export already averaged" if group.size == n else
+                      f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped")
                      + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
                      + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
         lines = np.zeros(group.size, dtype=np.int64)
@@ -235,7 +240,14 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES,
                    written={q: cm.columns[q][:2] for q in cm.columns})
     if n < min_points:
-        raise DataError(f"{what}: {p} has {n} points; at least {min_points} are needed")
+        steps = " (one per ESC step: its rows averaged)" if averaged else ""
+        raise DataError(f"{what}: {p} has {n} points{steps}; a fit needs at least {min_points} distinct operating "
+                        "points (propmap validate compares any number)")
+    if "airspeed" in cm.columns and n and np.all(v["airspeed"] > STATIC_AIRSPEED) and np.max(v["airspeed"]) < 1.5:
+        warnings.warn(f"{p}: {cm.column('airspeed')!r} reads {np.min(v['airspeed']):.2g}-"
+                      f"{np.max(v['airspeed']):.2g} m/s at every point: a static stand's pitot offset or noise? Every "
+                      f"point is read as moving (static up to {STATIC_AIRSPEED:g} m/s), which changes what a fit "
+                      "frees; zero or drop the column for a static test", stacklevel=2)
     if "incidence_deg" in cm.columns and cm.columns["incidence_deg"][2] is None:  # a unit given is believed
         hint = radians_hint(v["incidence_deg"], v["airspeed"], cm.column("incidence_deg"))
         if hint:

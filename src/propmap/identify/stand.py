@@ -263,7 +263,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
-            cm.notes.append(f"{name!r} converted from {unit} ({factor:.6g} SI per {unit})")
+            target = {"rotation": "rpm", "angle": "deg"}.get(kind, "SI")  # (rates are read in rpm, angles in deg)
+            cm.notes.append(f"{name!r} converted from {unit} ({factor:.6g} {target} per {unit})")
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
     if pole_pairs is not None and not (isinstance(pole_pairs, int) and 1 <= pole_pairs <= 50):
@@ -333,6 +334,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
                             + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
+    if "thrust" not in cm.columns:  # (a force under a name propmap does not read: 'Force (N)' was left out unsaid,
+        # and a torque-only fit ran: a user-level audit)
+        forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
+                  and _token(u) in ("n", "mn", "kn", "kgf", "gf", "lbf", "ozf")]
+        if forces:
+            cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
+                            "force) with its unit to fit it; without a thrust column "
+                            + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
+                               + " is fitted" if {"drag", "torque"} & set(cm.columns) else "nothing is fitted"))
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
                     f"found {found}")
