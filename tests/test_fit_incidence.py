@@ -163,3 +163,13 @@ def test_a_drag_column_of_the_other_sign_is_warned_of(apc8x6):
     mostly = LoadData(d.omega, d.airspeed, d.incidence, {**d.measured, "drag": D}, d.group)
     warns = sanity_check(mostly, apc8x6, air=AIR)
     assert len(warns) == 1 and "other sign than the model's in-plane force at 21 of 23" in warns[0]
+
+
+def test_rigid_blades_fit_a_compliance_of_exactly_zero(apc8x6):
+    """Data from rigid blades at incidence: the flap compliance ends at its lower bound, said to be
+    absent, and is written as 0 (the optimiser's value was kept: 1.08e-14 in the file while the
+    report said "held at 0", a user-level audit, 2026-11-26)."""
+    d = synthetic(apc8x6, generic_params())
+    r = fit_loads(d, apc8x6, base=generic_params(), air=AIR, options=FitOptions(prior=False))
+    assert "flap_compliance" in r.at_bound and any("flap_compliance ended at 0" in w for w in r.warnings)
+    assert r.params.flap_compliance == 0.0 and r.x[r.names.index("flap_compliance")] == 0.0

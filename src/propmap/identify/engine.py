@@ -203,7 +203,6 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
     said to be held near the base by the prior.
     """
     lb, ub = _bounds(names, options)
-    params = _params_from(best.x, names, base, options)
     residuals, jac = best.fun, best.jac
     if "prior" in extra:
         k = len(extra["prior"]["names"])
@@ -212,6 +211,11 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         extra["prior"]["cost"] = 0.5 * float(best.fun[-k:] @ best.fun[-k:])
     tol = 1e-6 * (ub - lb)
     at_bound = tuple(n for n, v, lo, hi, t in zip(names, best.x, lb, ub, tol) if v <= lo + t or v >= hi - t)
+    # an effect that ends at its absence is written as absent: 0, not the optimiser's 1e-14 (a user-level audit: the
+    # report said "held at 0" and the file held flap_compliance = 1.08e-14)
+    x = np.array([0.0 if (n in at_bound and n in ABSENT_AT_ZERO and lo == 0.0 and v <= lo + t) else v
+                  for n, v, lo, t in zip(names, best.x, lb, tol)])
+    params = _params_from(x, names, base, options)
     idf = _identifiability(names, best.x, jac, residuals, held=at_bound)
     free = np.array([n not in at_bound for n in names], dtype=bool)
     if "prior" in extra:
@@ -260,7 +264,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         warns.insert(0, f"the fit stopped at its evaluation limit ({limit}) before converging: its parameters are "
                         "where it stopped, not an optimum")
     cost = 0.5 * float(residuals @ residuals)
-    return FitResult(params, air, names, best.x, residuals, cost, nfev, n_points, elapsed,
+    return FitResult(params, air, names, x, residuals, cost, nfev, n_points, elapsed,
                      bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
 
 
