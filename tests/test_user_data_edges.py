@@ -881,3 +881,33 @@ def test_coverage_is_written_to_12_digits(tmp_path):
                                                                     "J_max": 0.8040000000000001})
     cov = read_coverage(tmp_path / "p.toml")
     assert (cov["rpm_min"], cov["rpm_max"], cov["J_max"]) == (1975.0, 6038.0, 0.804)
+
+
+def test_descent_data_in_the_vortex_ring_are_warned_of_and_scored_by_state():
+    """Axial descent of the APC 10x7E through the vortex ring (a descent audit, 2026-11-26: such
+    data were fitted and scored without a word, the fit moving the static thrust by -2.4%). The
+    sanity check says how many points lie in the vortex-ring or turbulent-wake state; the
+    errors are given by the model's working state too."""
+    from propmap.identify import LoadData
+    from propmap.identify.data import sanity_check
+    from propmap.validation import load_errors
+
+    prop, params = pm.load_propeller("apce_10x7"), pm.default_params("apce_10x7")
+    V = np.linspace(0.0, 14.0, 29)
+    om = np.full(V.size, 5000 * math.pi / 30)
+    inc = np.where(V > 0, math.pi, 0.0)
+    r = pm.rotor_loads(prop, params, om, V, inc)
+    assert set(r.state_name) >= {"normal working", "vortex ring", "windmill brake"}
+    data = LoadData(om, V, inc, {"thrust": r.thrust, "torque": r.torque}, np.array(["descent"] * V.size, dtype=object))
+    (w,) = [w for w in sanity_check(data, prop) if "vortex-ring or turbulent-wake" in w]
+    g = pm.rotor_loads(prop, pm.generic_params(), om, V, inc)  # (the check's model)
+    n = int(np.sum(np.isin(g.state_name, ("vortex ring", "turbulent wake"))))
+    assert w.startswith(f"{n} of {V.size} points")
+    e = load_errors(data, prop, params)
+    assert list(e["states"]) == [s for s in ("normal working", "vortex ring", "turbulent wake", "windmill brake")
+                                 if s in set(r.state_name)]
+    assert sum(row["thrust"]["n"] for row in e["states"].values()) == e["overall"]["thrust"]["n"] == V.size
+    assert all(row["thrust"]["rms"] < 1e-9 for row in e["states"].values())  # (the model's own loads)
+    climb = data.subset(V <= 2.0)  # (normal working only: no state table)
+    climb = LoadData(climb.omega, climb.airspeed, np.zeros(climb.n), climb.measured, climb.group)
+    assert load_errors(climb, prop, params)["states"] == {}

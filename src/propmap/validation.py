@@ -26,6 +26,7 @@ import numpy as np
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from .core.states import STATES
 from .io.catalogue import CatalogueEntry
 
 __all__ = ["SweepComparison", "Validation", "validate", "coefficient_errors", "cross_validate", "holdout_loads",
@@ -472,11 +473,13 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     Returns
     -------
     dict
-        ``reference``: quantity -> (what it is, its value); ``overall`` and ``groups`` (group
-        label -> the same): quantity -> {``rms``, ``bias`` (mean model - measured), ``max``
-        (largest magnitude), in units of the reference [-]; ``rms_si``, the rms error in N or
-        N m; ``n``, the points scored}; ``n_points``; ``converged`` (points the solver converged
-        on; the others are left out of every figure).
+        ``reference``: quantity -> (what it is, its value); ``overall``, ``groups`` (group
+        label -> the same) and ``states`` (the model's working state, :data:`propmap.core.states.STATES`,
+        -> the same; empty where every converged point is in normal working): quantity ->
+        {``rms``, ``bias`` (mean model - measured), ``max`` (largest magnitude), in units of the
+        reference [-]; ``rms_si``, the rms error in N or N m; ``n``, the points scored};
+        ``n_points``; ``converged`` (points the solver converged on; the others are left out of
+        every figure).
 
     Raises
     ------
@@ -527,5 +530,10 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
 
     everything = np.ones(data.n, bool)
     groups = {str(g): summary(data.group == g) for g in dict.fromkeys(data.group)} if len(set(data.group)) > 1 else {}
-    return {"reference": reference, "overall": summary(everything), "groups": groups, "n_points": data.n,
-            "converged": int(np.sum(r.converged))}
+    # by the model's working state, where the data reach beyond normal working (descent: where momentum theory is
+    # not predictive, the vortex ring and the turbulent wake, a descent audit asked to see the errors apart)
+    names = r.state_name
+    states = ({str(s): summary(ok & (names == s)) for s in STATES if np.any(ok & (names == s))}
+              if np.any(ok & (names != STATES[0])) else {})
+    return {"reference": reference, "overall": summary(everything), "groups": groups, "states": states,
+            "n_points": data.n, "converged": int(np.sum(r.converged))}

@@ -194,8 +194,9 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
                + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
                + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else ""))
-    rows = [("all points", e["overall"])] + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row)
-                                             for g, row in e["groups"].items()]
+    rows = ([("all points", e["overall"])] + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row)
+                                              for g, row in e["groups"].items()]
+            + [(f"state: {s}", row) for s, row in e["states"].items()])
     width = min(max(len(name) for name, _ in rows) + 2, 60)
     click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>10}{'max':>10}{'n':>6}" for k in keys))
 

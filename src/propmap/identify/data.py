@@ -378,6 +378,14 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
             warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
                              "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
                              "incidence missing (an 'incidence_deg' column)?")
+    vrs = np.isin(at_rpm.state_name, ("vortex ring", "turbulent wake")) & np.asarray(at_rpm.converged, bool)
+    if vrs.sum() >= max(2, 0.1 * data.n):  # (a descent audit: such data were fitted and scored without a word)
+        groups = list(dict.fromkeys(str(g) for g in data.group[vrs]))
+        warnings_.append(f"{int(vrs.sum())} of {data.n} points lie in the vortex-ring or turbulent-wake state by the "
+                         f"model (groups {', '.join(groups[:4])}{' ...' if len(groups) > 4 else ''}), where momentum "
+                         "theory is not predictive (docs/models.md): a fit's section parameters would absorb their "
+                         "errors at every other point; hold them out or leave them out of a fit (validate lists the "
+                         "errors by state)")
     speed_slip = _airspeed_slip(data, at_rpm, loads_at, checked)
     ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
