@@ -254,3 +254,33 @@ def test_nan_inputs_are_refused_under_fast_math(tmp_path, rotor_map):
                             "1 0 0 0 0 1 500 1 0\n", capture_output=True, text=True, check=True).stdout.split("\n")
     status = [int(line.split()[0]) for line in wrench[:3]]
     assert status[:2] == [-1, -1] and status[2] >= 0
+
+
+def test_a_map_of_descent_only_gives_hover_at_any_incidence(tmp_path):
+    """At airspeed 0 the incidence names the same still air: a map whose incidence axis leaves
+    out 0 (descent only, 90-180 deg) refused hover (V = 0, incidence 0) under "raise" and the C
+    ERROR policy, and gave it outside and flagged under "clip" (a descent audit, 2026-11-26). It
+    is the map's airspeed-0 row, inside, at every incidence and in every path (flagged as the
+    cell at 90 deg is: this coarse grid's first airspeed cell holds the vortex ring)."""
+    prop = pm.load_propeller("apce_8x6")
+    rm = RotorMap(build_map(prop, pm.default_params("apce_8x6"), np.array([3000.0, 6000.0, 9000.0]) * RPM,
+                            np.array([0.0, 5.0, 10.0]), np.radians([90.0, 135.0, 180.0]), n_check=0))
+    om = 6000.0 * RPM
+    ref = rm.loads(om, 0.0, math.pi / 2)
+    for beta in (0.0, 0.3, math.pi):
+        for out_of_grid in ("raise", "clip", "nan"):
+            ml = rm.loads(om, 0.0, beta, out_of_grid=out_of_grid)
+            assert ml.inside and ml.flagged == ref.flagged and ml.thrust == ref.thrust and ml.torque == ref.torque
+        batch = rm.loads(np.full(2, om), np.zeros(2), np.full(2, beta))
+        assert np.all(batch.inside) and np.all(batch.thrust == ref.thrust)
+    w = rm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], om)
+    assert w.loads.inside and w.force[2] == pytest.approx(float(ref.thrust), rel=1e-12)
+    with pytest.raises(ValueError, match="incidence = 0.2 is outside"):  # (moving air: the axis holds)
+        rm.loads(om, 1.0, 0.2)
+    if CC is not None:
+        exe = _compile(tmp_path, rm, "double")
+        out = subprocess.run([str(exe)], input=f"{om!r} 0 0 2\n{om!r} 1 0 2\n", capture_output=True, text=True,
+                             check=True).stdout.split("\n")
+        status, thrust = int(out[0].split()[0]), float(out[0].split()[1])
+        assert status == int(ref.flagged) and thrust == pytest.approx(float(ref.thrust), rel=1e-12)  # (not 2: inside)
+        assert int(out[1].split()[0]) == -1

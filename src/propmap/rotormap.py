@@ -294,6 +294,8 @@ class RotorMap:
                                       ("incidence", q[2], self.incidence, "rad")):
                 with np.errstate(invalid="ignore"):
                     bad = ~((a >= ax[0]) & (a <= ax[-1]))
+                if name == "incidence" and self.airspeed[0] == 0.0:  # (still air: any incidence, core._interp)
+                    bad &= q[1] != 0.0
                 if bad.any():
                     v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
                     lo, hi = f"{ax[0]:g}", f"{ax[-1]:g}"
@@ -411,7 +413,7 @@ class RotorMap:
         broadcasting. None where the general path must answer (an unknown policy, a NaN, or
         a query outside the grid under "raise"), which then raises what it raises."""
         o0, o1, v0, v1, b0, b1 = self._box
-        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and b0 <= incidence <= b1
+        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (b0 <= incidence <= b1 or (airspeed == 0.0 == v0))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
                            or math.isnan(incidence) or omega < 0):
             return None

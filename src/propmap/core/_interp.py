@@ -96,8 +96,19 @@ def _cubic_weights(ax, x):
 
 
 @numba.njit(inline="always", **_FLAGS)
+def hover_incidence(ax1, ax2, q1, q2):
+    """The incidence at airspeed q1 = 0 on a grid whose airspeed axis starts at 0: any incidence
+    names the same still air, so it is taken into the incidence axis [ax2[0], ax2[-1]] (a map of
+    descent only, 90-180 deg, refused the hover of every simulator: a user-level audit)."""
+    if q1 == 0.0 and ax1[0] == 0.0:
+        return min(max(q2, ax2[0]), ax2[-1])
+    return q2
+
+
+@numba.njit(inline="always", **_FLAGS)
 def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, i, inside, flagged):
     nvar = table.shape[3]
+    q2 = hover_incidence(ax1, ax2, q1, q2)
     ok = ax0[0] <= q0 <= ax0[-1] and ax1[0] <= q1 <= ax1[-1] and ax2[0] <= q2 <= ax2[-1]
     inside[i] = ok
     fade = 1.0
@@ -278,7 +289,7 @@ def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, v
     if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
         return 1
     zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
-    beta = snap_edge(beta, ax2[0], ax2[-1])
+    beta = hover_incidence(ax1, ax2, speed, snap_edge(beta, ax2[0], ax2[-1]))
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2
     _one(ax0, ax1, ax2, table, cellflag, radius, omega, speed, beta, policy, order, out, 0, inside, flagged)
