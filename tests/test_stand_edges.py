@@ -85,6 +85,15 @@ def test_an_optical_probes_dropouts_take_the_electrical_speed(tmp_path, monkeypa
     np.testing.assert_allclose(b.omega, a.omega, rtol=1e-12)
     import propmap.identify.loads_csv as loads_csv
 
+    # a raw electrical rpm (7 pole pairs) beside the optical one: the dropouts take it divided by 7
+    raw = [list(r) for r in rows]
+    for r, r_full in zip(raw, (x.split(",") for x in text[1:])):
+        r[e] = f"{7 * float(r_full[k]):.1f}"
+    seven = tmp_path / "seven.csv"
+    seven.write_text("\n".join([text[0]] + [",".join(r) for r in raw]) + "\n", encoding="utf-8")
+    c = read_loads(seven)
+    assert c.n == a.n and any("divided by 7, the motor's pole pairs" in n for n in c.notes)
+    np.testing.assert_allclose(c.omega, a.omega, rtol=1e-4)
     monkeypatch.setattr(loads_csv, "_optical_gaps", lambda optical, *args: optical)
     biased = read_loads(gaps)  # the step's settling rows alone: its speed 1.6% low
     assert abs(biased.omega[2] / a.omega[2] - 1) > 0.01

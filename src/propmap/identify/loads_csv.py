@@ -270,7 +270,9 @@ def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, note
     """The optical speed with its dropouts (0 or empty where the electrical speed runs: above
     5% of its median where both read) taken from the electrical one, where the two agree
     elsewhere (median ratio within OPTICAL_ELECTRICAL_TOL: the stand's motor-pole setting is
-    right), with a note. Only where the optical speed was chosen by default (no rpm_source)."""
+    right) or the ratio is that close to a whole number of pole pairs (a raw electrical rpm,
+    divided by it), with a note. Only where the optical speed was chosen by default (no
+    rpm_source)."""
     o, e = np.nan_to_num(optical), np.nan_to_num(electrical)
     both = (o > 0) & (e > 0)
     if both.sum() < 3:
@@ -280,6 +282,13 @@ def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, note
     if not gap.any():
         return optical
     ratio = float(np.median(e[both] / o[both]))
+    pp = max(round(ratio), 1)
+    if pp >= 2 and abs(ratio / pp - 1.0) <= OPTICAL_ELECTRICAL_TOL:  # raw electrical rpm: pp pole pairs times (a
+        # user-level audit: the dropouts were left out although the ratio said how to fill them)
+        notes.append(f"{column!r} reads 0 or nothing in {int(gap.sum())} rows where the electrical speed runs (a probe "
+                     f"dropout): those rows take the electrical speed divided by {pp}, the motor's pole pairs by the "
+                     f"two speeds' median ratio elsewhere ({ratio:.4g}: a raw electrical rpm)")
+        return np.where(gap, electrical / pp, optical)
     if abs(ratio - 1.0) > OPTICAL_ELECTRICAL_TOL:
         notes.append(f"{column!r} reads 0 or nothing in {int(gap.sum())} rows where the electrical speed runs; not "
                      f"filled from it, which reads {ratio:.3g} times the optical speed elsewhere (the stand's "
