@@ -71,3 +71,4 @@ def test_same_size_compares_a_recorded_diameter_and_blade_count():
     assert a.same_size(float("nan"), 2)  # an unknown diameter is not compared
     assert not a.same_size(0.2032 * 1.011, 2) and not a.same_size(0.2032, 3) and not a.same_size(0.254, None)
     assert a.same_size(0.2032 * 1.04, 2, rtol=0.05)
+    assert a.same_size(0.0, float("nan")) and not a.same_size(0.0, 3)  # (0, NaN: not compared)

@@ -392,3 +392,16 @@ def test_level_flight_with_the_cambered_model_and_its_prior():
     # weaker direction near the base, and the data are still met closely
     assert abs(r.identifiability.correlation[0, 1]) > 0.9
     assert np.sqrt(np.mean(r.residuals**2)) < 0.005 * veh.weight
+
+
+def test_a_poor_fit_that_did_not_converge_says_the_limit_first(apc8x6):
+    from propmap.io.catalogue import get_entry
+
+    d1 = loads_from_catalogue(get_entry("apce_8x6"), apc8x6.diameter)
+    d2 = loads_from_catalogue(get_entry("apce_10x7"), pm.load_propeller("apce_10x7").diameter)
+    both = LoadData(*(np.concatenate([getattr(d1, k), getattr(d2, k)]) for k in ("omega", "airspeed", "incidence")),
+                    {k: np.concatenate([d1.measured[k], d2.measured[k]]) for k in ("thrust", "torque")},
+                    np.concatenate([d1.group, d2.group]))
+    r = fit_loads(both, apc8x6, options=FitOptions(max_nfev=2))
+    assert r.warnings[0].startswith("the fit stopped at its evaluation limit (2)")
+    assert r.warnings[1].startswith("the fit leaves an rms residual") and "did not converge" in r.warnings[1]

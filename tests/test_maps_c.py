@@ -257,7 +257,7 @@ def test_nan_inputs_are_refused_under_fast_math(tmp_path, rotor_map):
 
 
 def test_a_map_of_descent_only_gives_hover_at_any_incidence(tmp_path):
-    """At airspeed 0 the incidence names the same still air: a map whose incidence axis leaves
+    """At airspeed 0 (up to 1e-6 m/s) the incidence names the same still air: a map whose incidence axis leaves
     out 0 (descent only, 90-180 deg) refused hover (V = 0, incidence 0) under "raise" and the C
     ERROR policy, and gave it outside and flagged under "clip" (a descent audit, 2026-11-26). It
     is the map's airspeed-0 row, inside, at every incidence and in every path (flagged as the
@@ -275,6 +275,12 @@ def test_a_map_of_descent_only_gives_hover_at_any_incidence(tmp_path):
         assert np.all(batch.inside) and np.all(batch.thrust == ref.thrust)
     w = rm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], om)
     assert w.loads.inside and w.force[2] == pytest.approx(float(ref.thrust), rel=1e-12)
+    for vz in (1e-9, -1e-9):  # (a simulator's rest is rarely exactly 0: up to 1e-6 m/s is still air)
+        w = rm.wrench([0.0, 0.0, vz], [0.0, 0.0, 1.0], om)
+        assert w.loads.inside and w.force[2] == pytest.approx(float(ref.thrust), rel=1e-6)
+    for out_of_grid in ("raise", "clip", "nan"):  # (a NaN incidence at rest is refused, as anywhere: a review)
+        with pytest.raises(ValueError, match="incidence must not be NaN"):
+            rm.loads(om, 0.0, float("nan"), out_of_grid=out_of_grid)
     with pytest.raises(ValueError, match="incidence = 0.2 is outside"):  # (moving air: the axis holds)
         rm.loads(om, 1.0, 0.2)
     if CC is not None:

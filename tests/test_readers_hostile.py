@@ -715,3 +715,11 @@ def test_a_pe0_files_stations_are_checked_as_a_uiuc_files(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         read_geometry(src)  # (the whole file: quiet)
+
+
+def test_a_windows_1252_level_flight_csv_is_still_refused(tmp_path, quad):
+    """Only load data are read as Windows-1252 (with a note in their notes); a level-flight CSV,
+    whose data carry no notes, stays refused naming the byte."""
+    p = _write(tmp_path, "d.csv", b"airspeed,pitch_deg,rpm_1,rpm_2,rpm_3,rpm_4,note\n"
+               + b"1,-1,5000,5000,5000,5000,caf\xe9\n" * 8)
+    refused(DataError, read_level_flight, p, quad, match="line 2: byte 0xe9")

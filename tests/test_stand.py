@@ -768,3 +768,55 @@ def test_a_force_column_of_another_name_is_said_not_to_be_read(tmp_path, truth_p
     d = read_loads(tmp_path / "f.csv")
     assert set(d.measured) == {"torque"}
     assert any("column 'Force (N)' (a force) is not read" in n and "only the torque is fitted" in n for n in d.notes)
+
+
+def test_imperial_units_on_both_columns_are_not_called_swapped(tmp_path, truth_params):
+    """Thrust in lbf and torque in lbf in under SI names: thrust low and torque high, as swapped
+    columns would be; named as the units (a review: the swap was said)."""
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = ["rpm,thrust,torque"] + [f"{n:.1f},{T / 4.4482216152605:.8g},{Q / 0.112984829:.8g}"
+                                     for n, T, Q in zip(rpm, r.thrust, r.torque)]
+    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(DataError, match="likely thrust in lbf and torque in lbf in read as N and N m") as e:
+        sanity_check(read_loads(tmp_path / "w.csv"), prop)
+    assert "swapped" not in str(e.value)
+
+
+def test_a_diameter_in_m_given_as_inches_is_named_as_such(tmp_path, truth_params):
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 7)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = ["rpm,thrust,torque"] + [f"{n:.1f},{T:.8g},{Q:.8g}" for n, T, Q in zip(rpm, r.thrust, r.torque)]
+    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
+    (tmp_path / "g.txt").write_text("r/R c/R beta\n" + "".join(
+        f"{x:.4f} {c:.4f} {math.degrees(t):.3f}\n" for x, c, t in zip(prop.r / prop.radius, prop.chord / prop.radius,
+                                                                       prop.theta)))
+    tiny = pm.read_geometry(tmp_path / "g.txt", diameter_in=0.5, n_blades=2)  # (0.2032 m given as inches, clipped)
+    with pytest.raises(DataError, match="one in m or cm given as inches"):
+        sanity_check(read_loads(tmp_path / "w.csv"), tiny)
+
+
+def test_a_files_own_groups_are_kept_beside_a_throttle_column(tmp_path, truth_params):
+    """A hand-made table of one row per throttle setting with its own group column: the groups stay
+    (a review: the one-row-per-step rule renamed every row)."""
+    prop = pm.load_propeller("apce_8x6")
+    rpm = np.linspace(3000, 9000, 8)
+    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+    lines = ["Throttle (%),rpm,thrust,torque,group"] + [
+        f"{45 + 7 * k},{n:.1f},{T:.8g},{Q:.8g},{'a' if k < 4 else 'b'}"
+        for k, (n, T, Q) in enumerate(zip(rpm, r.thrust, r.torque))]
+    (tmp_path / "g.csv").write_text("\n".join(lines) + "\n")
+    d = read_loads(tmp_path / "g.csv")
+    assert list(d.group) == ["a"] * 4 + ["b"] * 4 and d.n == 8
+
+
+def test_utf8_with_a_stray_byte_is_not_read_as_windows_1252(tmp_path, truth_params):
+    path = tmp_path / "u.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS)
+    raw = path.read_bytes()
+    cut = raw.index(b"\n", raw.index(b"\n") + 1)
+    (tmp_path / "s.csv").write_bytes(raw[:cut] + b"\xe9" + raw[cut:])
+    with pytest.raises(DataError, match="byte 0xe9 .* not UTF-8"):
+        read_loads(tmp_path / "s.csv")

@@ -137,3 +137,4 @@ def test_a_pulse_width_under_a_percent_header_is_read_as_one():
     form, note = esc_form("Throttle (%)", "%", np.array([1100.0, 1500.0, 1900.0]))
     assert form == "us" and "not percent" in note
     assert esc_form("Throttle (%)", "%", np.array([10.0, 50.0, 100.0])) == ("pct", None)
+    assert esc_form("Throttle (%)", "%", np.array([10.0, 50.0, 100.5])) == ("pct", None)  # (an overshoot)

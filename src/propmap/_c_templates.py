@@ -129,7 +129,7 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
 {decl}    double fade = 1.0;
     if ({prefix}_isnan(omega) || {prefix}_isnan(airspeed) || {prefix}_isnan(incidence) || omega < 0.0) return -1;
     if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
-    if (airspeed == 0.0 && a1[0] == 0.0)  /* still air: any incidence is on the incidence axis */
+    if (airspeed <= 1e-6 && a1[0] == 0.0)  /* still air (up to 1e-6 m/s): any incidence is on the incidence axis */
         incidence = incidence < a2[0] ? a2[0] : (incidence > a2[{n2} - 1] ? a2[{n2} - 1] : incidence);
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]
              && a2[0] <= incidence && incidence <= a2[{n2} - 1];

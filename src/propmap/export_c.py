@@ -218,8 +218,8 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
     for k, r in enumerate(vehicle.rotors):
         p = r.propeller
         if recorded is not None and not p.same_geometry(recorded):
-            other = (", another chord or blade angle" if p.n_blades == recorded.n_blades
-                     and abs(p.diameter / recorded.diameter - 1) < 5e-5 else "")
+            other = (", another chord or blade angle" if recorded.same_size(p.diameter, p.n_blades, rtol=5e-5)
+                     else "")
             raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades{other}), not "
                              f"the map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
                              "Python, with one map per rotor)")

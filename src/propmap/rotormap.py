@@ -230,6 +230,7 @@ class RotorMap:
 
         # the scalar paths' kernels and policies, looked up once
         self._interp_point, self._wrench_point = _interp.interp_point, _interp.wrench_point
+        self._hover_speed = _interp.HOVER_SPEED  # (below it, on an airspeed axis from 0, any incidence is inside)
         self._policy = {"raise": _interp.CLIP, "clip": _interp.CLIP, "nan": _interp.NAN}
         self._out1 = np.empty((1, len(LOADS)))
         self._out1w = np.empty((1, len(LOADS) + 6))
@@ -295,7 +296,7 @@ class RotorMap:
                 with np.errstate(invalid="ignore"):
                     bad = ~((a >= ax[0]) & (a <= ax[-1]))
                 if name == "incidence" and self.airspeed[0] == 0.0:  # (still air: any incidence, core._interp)
-                    bad &= q[1] != 0.0
+                    bad &= q[1] > self._hover_speed
                 if bad.any():
                     v = float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))])
                     lo, hi = f"{ax[0]:g}", f"{ax[-1]:g}"
@@ -413,7 +414,8 @@ class RotorMap:
         broadcasting. None where the general path must answer (an unknown policy, a NaN, or
         a query outside the grid under "raise"), which then raises what it raises."""
         o0, o1, v0, v1, b0, b1 = self._box
-        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (b0 <= incidence <= b1 or (airspeed == 0.0 == v0))
+        inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (
+            b0 <= incidence <= b1 or (airspeed <= self._hover_speed and v0 == 0.0 and incidence == incidence))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
                            or math.isnan(incidence) or omega < 0):
             return None

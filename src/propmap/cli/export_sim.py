@@ -123,7 +123,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             except ValueError as exc:
                 raise InputError(f"--vehicle: {exc}") from None
         def shown(p, rotor=True):  # (a name alone does not tell two readings of one geometry file apart)
-            same = rotor and p.n_blades == propeller.n_blades and abs(p.diameter / propeller.diameter - 1) < 5e-5
+            same = rotor and propeller.same_size(p.diameter, p.n_blades, rtol=5e-5)
             return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades{', another chord or blade angle' * same})"
 
         names = sorted({shown(r.propeller) for r in veh.rotors if not r.propeller.same_geometry(propeller)})

@@ -227,9 +227,8 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         if veh is not None:  # refused before the build, not after it
             for k, r in enumerate(veh.rotors):  # (the geometry, not the name: a geometry file read with other blades)
                 if not r.propeller.same_geometry(propeller) or r.params is not None:
-                    other = ("" if r.propeller.same_geometry(propeller) else ", another chord or blade angle" if (
-                        r.propeller.n_blades == propeller.n_blades
-                        and abs(r.propeller.diameter / propeller.diameter - 1) < 5e-5) else "")
+                    other = ("" if r.propeller.same_geometry(propeller) else ", another chord or blade angle" if
+                             propeller.same_size(r.propeller.diameter, r.propeller.n_blades, rtol=5e-5) else "")
                     own = " with its own parameters" if r.params is not None else ""
                     raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} "
                                      f"m, {r.propeller.n_blades} blades{other}){own}, not the map's "

@@ -95,12 +95,18 @@ def _cubic_weights(ax, x):
             h10 * a3 + h11 * b3)
 
 
+#: an airspeed up to this [m/s] is still air for a map whose airspeed axis starts at 0: any incidence is on its
+#: incidence axis (the loads at 1e-6 m/s differ from hover's by far less than the interpolation's error)
+HOVER_SPEED = 1e-6
+
+
 @numba.njit(inline="always", **_FLAGS)
 def hover_incidence(ax1, ax2, q1, q2):
-    """The incidence at airspeed q1 = 0 on a grid whose airspeed axis starts at 0: any incidence
-    names the same still air, so it is taken into the incidence axis [ax2[0], ax2[-1]] (a map of
-    descent only, 90-180 deg, refused the hover of every simulator: a user-level audit)."""
-    if q1 == 0.0 and ax1[0] == 0.0:
+    """The incidence at an airspeed q1 up to HOVER_SPEED on a grid whose airspeed axis starts at
+    0: any incidence names the same still air, so it is taken into the incidence axis [ax2[0],
+    ax2[-1]] (a map of descent only, 90-180 deg, refused the hover of every simulator: a
+    user-level audit). A NaN stays NaN (refused or flagged by the caller)."""
+    if q1 <= HOVER_SPEED and ax1[0] == 0.0 and q2 == q2:
         return min(max(q2, ax2[0]), ax2[-1])
     return q2
 

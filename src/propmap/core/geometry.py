@@ -251,9 +251,9 @@ class Propeller:
         Parameters
         ----------
         diameter : float or None
-            [m]. None or NaN: not compared.
+            [m]. None, NaN or <= 0: not compared.
         n_blades : float or None
-            None: not compared.
+            None or NaN: not compared.
         rtol : float, optional
             Relative tolerance on the diameter (default 1%).
 
@@ -262,8 +262,9 @@ class Propeller:
         bool
         """
         d = float("nan") if diameter is None else float(diameter)
-        d_ok = not math.isfinite(d) or abs(self.diameter / d - 1.0) <= rtol
-        return d_ok and (n_blades is None or int(round(float(n_blades))) == self.n_blades)
+        b = float("nan") if n_blades is None else float(n_blades)
+        d_ok = not (math.isfinite(d) and d > 0) or abs(self.diameter / d - 1.0) <= rtol
+        return d_ok and (not math.isfinite(b) or int(round(b)) == self.n_blades)
 
     def __repr__(self) -> str:
         return (f"Propeller(name={self.name!r}, radius={self.radius:.4g} m, n_blades={self.n_blades}, "

@@ -109,7 +109,7 @@ class _Csv:
     costs 8 bytes a value; every message names the file, the line and the column.
     """
 
-    def __init__(self, path, what: str):
+    def __init__(self, path, what: str, *, windows_1252: bool = False):
         self.what, self.name = what, show_path(path)
         self.notes: list[str] = []  # (what reading the bytes decided, for the reader's notes)
         try:
@@ -117,6 +117,8 @@ class _Csv:
             try:
                 decode_input_text(raw, path, DataError)  # refuses UTF-16, NUL bytes, non-UTF-8 (naming the line)
             except DataError as exc:
+                if not windows_1252:
+                    raise
                 raw = self._windows_1252(raw, exc)
         except DataError as exc:
             raise DataError(f"{what}: {exc}") from None
@@ -151,8 +153,10 @@ class _Csv:
     def _windows_1252(self, raw: bytes, exc: DataError) -> bytes:
         """Text that is not UTF-8 but Windows-1252 (a spreadsheet saved on Windows: 'µs', 'N·m',
         '°C' as single bytes), re-encoded as UTF-8 with a note; else ``exc`` raised. A user-level
-        audit: a stand export re-saved by Excel was refused."""
-        if "is not UTF-8" not in str(exc):
+        audit: a stand export re-saved by Excel was refused). Not a file with a UTF-8 byte-order
+        mark or a UTF-8 multi-byte sequence: UTF-8 with a stray byte stays refused, naming it."""
+        if ("is not UTF-8" not in str(exc) or raw.startswith(b"\xef\xbb\xbf")
+                or re.search(rb"[\xc2-\xf4][\x80-\xbf]", raw)):
             raise exc
         try:
             text = raw.decode("cp1252")

@@ -170,6 +170,7 @@ _UNIT_SLIPS = [
     (4.4482216152605, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
     (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
     (1e-3, 1.0, "thrust in gf declared as kgf (g as kg)"),
+    (4.4482216152605, 0.112984829, "thrust in lbf and torque in lbf in read as N and N m"),
     (1.0, 1e3, "torque in N m declared as N mm"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.01, "torque in N cm read as N m (name the column 'torque (N cm)')"),
@@ -261,10 +262,12 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
     if not off:
         return []
     found = _other_counts(ratio, data, propeller, ratios, loads_at, pole_pairs, loaded)
-    said = " and ".join(f"{k} is {v:.2f} times (beyond {SANITY_WARN[k]:g}x)" for k, v in off.items())
-    return [f"the measured {said} what {label} predicts for {propeller.name} in the median (the generic set is "
-            f"beyond these for 5% of the catalogue's propellers): check the blade count, the diameter "
-            f"({propeller.diameter:.4g} m) and the rpm"
+    said = " and ".join(f"{k} is {v:.2f} times (outside {1 / SANITY_WARN[k]:.2g}-{SANITY_WARN[k]:g}x)"
+                        for k, v in off.items())
+    catalogue = (" (the generic set is outside these for 5% of the catalogue's propellers)"
+                 if label == "the generic set" else "")
+    return [f"the measured {said} what {label} predicts for {propeller.name} in the median{catalogue}: check the "
+            f"blade count, the diameter ({propeller.diameter:.4g} m) and the rpm"
             + (f" ({'; '.join(found)})" if found else "")
             + "; a fit would absorb the difference into the section parameters"]
 
@@ -343,7 +346,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         for key, model, f in (("thrust", r.thrust, fT), ("torque", r.torque, fQ)):
             if key not in data.measured or key not in checked:
                 continue
-            ok = np.isfinite(model) & (np.abs(model) > 0.05 * np.nanmax(np.abs(model))) & where
+            ok = (np.isfinite(model) & np.isfinite(data.measured[key])
+                  & (np.abs(model) > 0.05 * np.nanmax(np.abs(model))) & where)
             if ok.sum() >= 2:
                 out[key] = float(np.median(f * data.measured[key][ok] / model[ok]))
         return out
@@ -414,15 +418,6 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     hz_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 60).values()), default=math.inf)
     if hz_miss < math.log(1.6):
         causes.append("a rotation rate in rev/s (Hz) read as rpm (name its unit, e.g. 'rotation speed (Hz)')")
-    if bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
-        # the columns swapped: each near the other's model, to within a unit slip (a torque in N m under 'Thrust
-        # (kgf)' reads 9.8 times large), so both cross ratios together, as their geometric mean
-        T, Q = at_rpm.thrust, at_rpm.torque
-        ok = np.isfinite(T) & np.isfinite(Q) & (np.abs(T) > 0.05 * np.nanmax(np.abs(T))) & (np.abs(Q) > 0)
-        cross = (float(np.median(data.measured["thrust"][ok] / Q[ok]) * np.median(data.measured["torque"][ok] / T[ok]))
-                 if ok.sum() >= 2 else -1.0)
-        if cross > 0 and plausible({"both": math.sqrt(cross)}, 0.25, 4.0):
-            causes.insert(0, "the thrust and torque columns swapped (then check their units too)")
     # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
     miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
             for pp in range(2, 15)}
@@ -430,10 +425,20 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if miss[pp] < math.log(1.6):
         causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
                       f"--pole-pairs {pp}, or the optical speed)")
+    if not causes and bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
+        # the columns swapped (no unit slip explains the two): each near the other's model, to within a unit slip
+        # of its own (a torque in N m under 'Thrust (kgf)' reads 9.8 times large)
+        T, Q = at_rpm.thrust, at_rpm.torque
+        ok = np.isfinite(T) & np.isfinite(Q) & (np.abs(T) > 0.05 * np.nanmax(np.abs(T))) & (np.abs(Q) > 0)
+        if ok.sum() >= 2 and all(1 / 12 <= float(np.median(m[ok] / other[ok])) <= 12
+                                 for m, other in ((data.measured["thrust"], Q), (data.measured["torque"], T))):
+            causes.append("the thrust and torque columns swapped (then check their units too)")
     if not causes:
         far = max(abs(math.log(max(abs(v), 1e-300))) for v in bad.values())
         if far > math.log(1e4):  # (thrust ~ D^4: a diameter 25.4 times off is 4e5)
-            causes.append(f"a diameter far off ({propeller.diameter:.4g} m: one in mm given as inches?)")
+            small = max(bad.values(), key=lambda v: abs(math.log(max(abs(v), 1e-300)))) < 1  # (the model too large)
+            causes.append(f"a diameter far off ({propeller.diameter:.4g} m: "
+                          + ("one in mm given as inches?)" if small else "one in m or cm given as inches?)"))
     said = "; ".join(f"{k} {v:.3g} times" for k, v in bad.items())
     raise DataError(f"load data: {data.source}: the measured {said} what the model predicts for {propeller.name} "
                     f"at the measured rpm (expected within {1 / SANITY_FACTOR:.2g}-{SANITY_FACTOR:g}x): "

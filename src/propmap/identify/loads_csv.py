@@ -96,7 +96,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     from .stand import ESC_TOL, esc_form, map_columns, stand_points
 
     what = "load data"
-    f = _Csv(path, what)
+    f = _Csv(path, what, windows_1252=True)
     p = f.name
     try:
         cm = map_columns(f.header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
@@ -203,8 +203,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             notes.append(note)
     averaged = bool(form and n and (np.unique(np.round(v["esc"] / (0.05 * ESC_TOL[form]))).size < n
                                     # (an export of one row per step, already averaged: each row its step, so that
-                                    # the steps are groups; a ramp's rows, a few us apart, are not steps)
-                                    or (n <= 40 and np.all(np.abs(np.diff(v["esc"])) >= 5 * ESC_TOL[form]))))
+                                    # the steps are groups; a ramp's rows, a few us apart, are not steps; a file's
+                                    # own group column keeps its groups)
+                                    or (group is None and n <= 40
+                                        and np.all(np.abs(np.diff(v["esc"])) >= 5 * ESC_TOL[form]))))
     if averaged:
         esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)

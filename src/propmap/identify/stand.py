@@ -410,15 +410,15 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
     """The form of an ESC-signal or throttle column: ("us" | "pct" | "fraction", note or None).
 
     By its unit where it gives one (us, µs, microseconds; %, pct, percent; a percentage whose
-    values exceed 100 is a pulse width, with a note), else by its values: at most 1 a fraction,
+    values reach 500 is a pulse width, with a note), else by its values: at most 1 a fraction,
     at most 100 a percentage, else a pulse width in us (the note says which was taken, and names
     a unit it does not know, e.g. ``(PWM)`` or ``[0-1]``)."""
     tok = None if unit is None else _token(unit)
     top = float(np.nanmax(np.abs(esc))) if esc.size and not np.all(np.isnan(esc)) else 0.0
     if tok in _ESC_UNITS:
-        if _ESC_UNITS[tok] == "pct" and top > 100.0:  # (a pulse width under a '%' header: a user-level audit)
+        if _ESC_UNITS[tok] == "pct" and top >= 500.0:  # (a pulse width under a '%' header: a user-level audit)
             return "us", (f"{name!r}: read as a pulse width in us, not percent: its values reach {top:g} (a "
-                          "percentage stays within 0-100)")
+                          "percentage stays near 0-100)")
         return _ESC_UNITS[tok], None
     form = "fraction" if top <= 1.0 else ("pct" if top <= 100.0 else "us")
     what = {"fraction": "a throttle fraction (0-1)", "pct": "a throttle in percent", "us": "a pulse width in us"}[form]
