@@ -362,6 +362,7 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
     import xarray as xr
     from tqdm import tqdm
 
+    from ..io.atomic import signals_held
     from ..io.calibration import default_params
     from ..io.catalogue import catalogue
     from ..maps import build_map
@@ -377,7 +378,8 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
             per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
             parts.append(Path(tmp) / f"{k:04d}.nc")
             ds.attrs = {}
-            ds.to_netcdf(parts[-1], engine="netcdf4")
+            with signals_held():  # (a signal raised inside HDF5's write deadlocked it: io.atomic.signals_held)
+                ds.to_netcdf(parts[-1], engine="netcdf4")
             del ds
         combined = xr.open_mfdataset(parts, combine="nested", concat_dim="prop", engine="netcdf4", data_vars="all",
                                      coords="minimal", compat="override", combine_attrs="override")

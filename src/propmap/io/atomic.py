@@ -13,11 +13,45 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
+import signal
 import stat
 import tempfile
+import threading
 from pathlib import Path
 
-__all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal_mode", "temp_affixes"]
+__all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal_mode", "signals_held",
+           "temp_affixes"]
+
+
+@contextlib.contextmanager
+def signals_held():
+    """Hold SIGINT and SIGTERM while the block runs, then deliver the first that arrived to the
+    handlers of before (the CLI's turn them into KeyboardInterrupt and SystemExit).
+
+    For a library call that must not be interrupted by a Python exception: netCDF's HDF5
+    writer holds a lock, and an exception raised inside ``Dataset.to_netcdf`` by a signal
+    handler deadlocked ``propmap map`` in 5 of 6 SIGTERMs that landed there (a user-level
+    audit, 2026-11-26: the process hung, its temporary files left). Outside the main thread
+    (where signals cannot be handled) the block runs as it is.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    pending: list[int] = []
+
+    def hold(signum, frame):
+        pending.append(signum)
+
+    before = {}
+    try:
+        for s in (signal.SIGINT, signal.SIGTERM):
+            before[s] = signal.signal(s, hold)
+        yield
+    finally:
+        for s, handler in before.items():
+            signal.signal(s, handler)
+        if pending:
+            signal.raise_signal(pending[0])  # (the handler of before runs now, outside the library)
 
 
 def normal_mode(path: Path) -> int:

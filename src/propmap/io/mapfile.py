@@ -424,7 +424,10 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
                 # held open lazily by xarray and opened again in the same process, crashes Python
                 # (segmentation fault; netCDF4 1.7.5 with netCDF-C 4.10.1, 2026-11-26)
                 encoding["prop"] = {"dtype": "S1"}
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+            from .atomic import signals_held
+
+            with signals_held():  # (a signal raised inside HDF5's write deadlocked it: atomic.signals_held)
+                ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
         else:
             table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
             for f in FLAGS:
