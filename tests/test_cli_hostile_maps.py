@@ -442,3 +442,17 @@ def test_concurrent_writers_leave_a_matching_pair(tmp_path, tiny_map):
     assert all(p.wait(timeout=300) == 0 for p in procs)
     assert read_sidecar(path)["params_label"] == RotorMap.open(path).attrs["params_label"]
     assert sorted(p.name for p in path.parent.iterdir()) == ["m.nc", "m.nc.json"]
+
+
+def test_a_check_that_measures_nothing_does_not_pass(capsys, tmp_path):
+    """A grid whose every cell is flagged (3 nodes an axis, the vortex ring within reach of all):
+    --check measured nothing and said "passed", exit 0 (a CLI audit, 2026-11-26)."""
+    path = tmp_path / "m.nc"
+    assert main(["map", "apce_8x6", "--rpm", "3000:6000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:3",
+                 "--check-points", "20", "--out", str(path)]) == 0
+    capsys.readouterr()
+    code, out, err = run(capsys, "map", "--check", path, "--check-points", "30")
+    assert code == 3 and "not tested, every check point in a flagged cell" in out, out
+    code, out, err = run(capsys, "map", "--check", path, "--check-points", "30", "--json")
+    rep = json.loads(out)
+    assert code == 3 and rep["passed"] is False and rep["untested"] is True and rep["exceeded"] == []

@@ -34,7 +34,8 @@ CHECK_FAILED = 3
 
 def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
     """``--check``: recompute a map's error at fresh points, per propeller of a map over several;
-    exit CHECK_FAILED when a cubic maximum outside the flagged regions exceeds the threshold."""
+    exit CHECK_FAILED when a cubic maximum outside the flagged regions exceeds the threshold, or
+    when every point lies in a flagged cell (nothing measured: not a pass; a user-level audit)."""
     from ..io.mapfile import map_props
     from ..maps import RotorMap
 
@@ -71,20 +72,23 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
             raise InputError(f"--check: {str(path)[:80]}{'' if prop is None else f' [{prop}]'}: {exc}") from None
         worst = {k: res[f"check_cubic_{k}_max"] / (2.0 if k == "drag" else 1.0) for k in ("thrust", "torque", "drag")}
         over = [k for k, v in worst.items() if not math.isnan(v) and v > limit / 100]
-        if over:
-            failed.append(f"{rm.attrs.get('propeller')}: {', '.join(over)}")
-        results.append((prop, rm, seed, res, over))
+        untested = all(math.isnan(v) for v in worst.values())  # (every point flagged: nothing measured, no pass)
+        if over or untested:
+            failed.append(f"{rm.attrs.get('propeller')}: " + (", ".join(over) if over else
+                                                              "not tested, every check point in a flagged cell"))
+        results.append((prop, rm, seed, res, over, untested))
     if as_json:
         out = []
-        for prop, rm, seed, res, over in results:
+        for prop, rm, seed, res, over, untested in results:
             stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
-            out.append({"propeller": rm.attrs.get("propeller"), "passed": not over, "exceeded": over,
+            out.append({"propeller": rm.attrs.get("propeller"), "passed": not (over or untested), "exceeded": over,
+                        "untested": untested,
                         "recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
                         "stored": {k: v for k, v in stored.items() if not (isinstance(v, float) and math.isnan(v))}})
         echo_json({"max_error_pct": limit, "passed": not failed, "maps": out} if props is not None
                   else {"max_error_pct": limit, "passed": not failed, **{k: v for k, v in out[0].items()}})
     else:
-        for prop, rm, seed, res, over in results:
+        for prop, rm, seed, res, over, untested in results:
             _print_check(path, rm, n, seed, res)
         verdict = "passed" if not failed else f"FAILED ({'; '.join(failed)})"
         click.echo(f"threshold: cubic max outside flagged regions <= {limit:g}% of static thrust and torque, "
