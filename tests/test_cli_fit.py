@@ -88,6 +88,7 @@ def test_fit_level_flight_bad_data_exits_2(capsys, tmp_path, text, match):
         (["fit", "loads", "apce_8x6", "--holdout", "static_2797rd"], "static run"),
         (["fit", "loads", "nosuch.csv"], "neither a catalogue propeller nor a file"),
         (["fit", "loads", "apce_8x6", "--M", "-3"], "--M"),
+        (["fit", "loads", "apce_8x6", "--M", "5000"], "--M must be in (0, 1000] 1/rad for the cambered model"),
         (["fit", "level-flight", FLIGHT, "--vehicle", "missing.toml"], "--vehicle"),
     ],
 )

@@ -23,7 +23,8 @@ output_options = [
 fit_options = [
     click.option("--M", "M", type=float, default=None,
                  help="Stall-blend sharpness used while fitting (default: that of --base; the paper's model at "
-                      "M = 50 is fitted at M = 30 first and continued to 50); in (0, 1e6] 1/rad."),
+                      "M = 50 is fitted at M = 30 first and continued to 50); in (0, 1e6] 1/rad for the paper's "
+                      "model, (0, 1000] for the cambered one."),
     click.option("--lift-model", type=click.Choice(["sigmoid", "sincos"]), default=None,
                  help="Paper's model only: eq 3 (sigmoid, the default), or footnote 1's C_L = c_l sin a cos a "
                       "(sincos; fits cl2, cd only)."),
@@ -86,6 +87,10 @@ def _options(choice: FitChoice, base=None, base_label="", extra_names=()):
         raise InputError(f"--multistart must be in [0, {MULTISTART_MAX}] (each start is a whole fit), "
                          f"got {multistart}")
     cambered = isinstance(base, CamberedParams)
+    top = CamberedParams.RANGES["M"][1]
+    if base is not None and cambered and M is not None and M > top:  # (the cambered set's own range: a CLI audit)
+        raise InputError(f"--M must be in (0, {top:g}] 1/rad for the cambered model (--base "
+                         f"{_short(base_label, 40)}), got {M!r}")
     if base is not None and cambered and lift_model is not None:
         raise InputError(f"--lift-model applies to the paper's model; --base {_short(base_label, 40)} is the cambered "
                          "model (give a Table I set, e.g. --base gill2017-apc)")
