@@ -101,6 +101,24 @@ def body_lift(xb, data: LevelFlightData, vehicle: Vehicle, M: float, air: Air) -
     C_L^body has eq 3's form with ``xb`` = (cl1_body, cl2_body, alpha0_body [rad]) and
     sharpness M [1/rad]; the angle of attack is that of the body's z axis against the
     flight direction.
+
+    Parameters
+    ----------
+    xb : sequence of 3 floats
+        cl1_body [1/rad], cl2_body [-], alpha0_body [rad].
+    data : LevelFlightData
+        N level-flight conditions (airspeed, pitch, roll).
+    vehicle : Vehicle
+        Its ``body_area`` S_body [m^2].
+    M : float
+        Stall-blend sharpness [1/rad], > 0.
+    air : Air
+        The density rho [kg/m^3].
+
+    Returns
+    -------
+    ndarray, shape (N,)
+        The body lift [N] along the world vertical.
     """
     cl1b, cl2b, a0b = xb
     z_world = body_to_world(data.pitch, data.roll)[:, :, 2]  # body z in world
@@ -266,6 +284,22 @@ def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: 
 
     k_T of each propeller from the model at V = 0 at the mean rotor speed of the
     slowest condition (the hover point of the data set).
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+        The section set the hover thrust coefficient comes from.
+    data : LevelFlightData
+        N level-flight conditions (rotor speeds, attitude).
+    vehicle : Vehicle
+        Rotor positions, axes and propellers.
+    air : Air, optional
+        Default: ``params.air``.
+
+    Returns
+    -------
+    ndarray, shape (N,)
+        The vertical force [N] (world frame, up positive) of the hover model.
 
     Raises
     ------

@@ -33,6 +33,15 @@ def signals_held():
     handler deadlocked ``propmap map`` in 5 of 6 SIGTERMs that landed there (a user-level
     audit, 2026-11-26: the process hung, its temporary files left). Outside the main thread
     (where signals cannot be handled) the block runs as it is.
+
+    Yields
+    ------
+    None
+
+    Raises
+    ------
+    KeyboardInterrupt, SystemExit
+        After the block, from the handlers of before, when a signal arrived during it.
     """
     if threading.current_thread() is not threading.main_thread():
         yield

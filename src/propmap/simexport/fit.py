@@ -446,7 +446,18 @@ LOADS = ("thrust", "drag", "torque", "rolling_moment")
 
 def check_seed(seed: int) -> int:
     """The seed of the check points on which :func:`export_sim` measures its errors: ``seed`` + 1
-    (the coefficients are fitted on the points of ``seed``; the check points are others)."""
+    (the coefficients are fitted on the points of ``seed``; the check points are others).
+
+    Parameters
+    ----------
+    seed : int
+        The fit points' seed, >= 0.
+
+    Returns
+    -------
+    int
+        The check points' seed.
+    """
     return seed + 1
 
 
