@@ -392,7 +392,7 @@ def test_damaged_bytes_give_a_valid_map_or_a_value_error(tmp_path_factory, tiny_
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(edits=st.dictionaries(st.sampled_from(ATTRS), ANY, min_size=1, max_size=2),
        flip=st.one_of(st.none(), st.integers(0, 10**6)))
-def test_map_check_of_a_hostile_file_exits_0_or_2_with_one_line(capsys, tmp_path_factory, tiny, edits, flip):
+def test_map_check_of_a_hostile_file_exits_0_2_or_3_with_one_line(capsys, tmp_path_factory, tiny, edits, flip):
     path = tmp_path_factory.mktemp("check") / "m.nc"
     try:
         tiny.copy().assign_attrs(edits).to_netcdf(path)
@@ -409,6 +409,8 @@ def test_map_check_of_a_hostile_file_exits_0_or_2_with_one_line(capsys, tmp_path
     errors = [line for line in err.splitlines() if line.startswith("propmap: error:")]
     if code == 0:
         assert errors == [] and "nan" not in out.lower()
+    elif code == 3:  # (a check that measured nothing, every point flagged, or over its threshold: not a pass)
+        assert errors == [] and "FAILED" in out, out
     else:
         assert code == 2 and len(errors) == 1 and errors[0].startswith(f"propmap: error: --check: {path}"), err
 
