@@ -911,3 +911,25 @@ def test_descent_data_in_the_vortex_ring_are_warned_of_and_scored_by_state():
     climb = data.subset(V <= 2.0)  # (normal working only: no state table)
     climb = LoadData(climb.omega, climb.airspeed, np.zeros(climb.n), climb.measured, climb.group)
     assert load_errors(climb, prop, params)["states"] == {}
+
+
+def test_a_run_with_its_rpm_in_rev_per_s_is_warned_of(tmp_path):
+    """A UIUC static file whose RPM column holds rev/s keeps CT and CP, so the load check cannot
+    see it; it was fitted without a word, alone or beside sweeps at the right rpm (a user-level
+    audit, 2026-11-26). Its chord Reynolds number at 0.75 R (414-1240 here) is warned of."""
+    from propmap.identify import loads_from_uiuc_files
+    from propmap.identify.data import sanity_check
+    from propmap.io.catalogue import _data_path, get_entry
+
+    prop = pm.load_propeller("apce_10x7")
+    e = get_entry("apce_10x7")
+    static, sweep = _data_path(e.static_files[0]), _data_path(e.sweep_files[0])
+    lines = static.read_text().splitlines()
+    rows = (ln.split() for ln in lines[1:] if ln.strip())
+    slow = [lines[0]] + [" ".join([f"{float(w[0]) / 60:.4f}", *w[1:]]) for w in rows]
+    (tmp_path / "apce_10x7_static_9999rd.txt").write_text("\n".join(slow) + "\n")
+    data = loads_from_uiuc_files([tmp_path / "apce_10x7_static_9999rd.txt", sweep], prop.diameter)
+    (w,) = [w for w in sanity_check(data, prop) if "Reynolds" in w]
+    assert "in static_9999rd" in w and "rev/s (Hz) read as rpm" in w
+    assert not [w for w in sanity_check(loads_from_uiuc_files([static, sweep], prop.diameter), prop)
+                if "Reynolds" in w]

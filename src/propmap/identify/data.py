@@ -160,6 +160,9 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -
 
 #: measured over predicted (generic set, the data's geometry) beyond which load data are refused
 SANITY_FACTOR = 3.0
+#: a chord Reynolds number at 0.75 R below this at every point is warned of (UIUC vol. 2's lowest is 3,600; a
+#: static run with its rpm in rev/s read as rpm, 60 times slow, was fitted without a word: a user-level audit)
+RE75_FLOOR = 2000.0
 #: beyond these factors (inside SANITY_FACTOR) a median load ratio to the model is warned of: the generic set's
 #: ratios to the catalogue's own data lie beyond them for 7 of its 147 propellers (2026-11-26)
 SANITY_WARN = {"thrust": 1.4, "torque": 1.5}
@@ -330,6 +333,15 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if tip > 0.7:
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
+    re75 = propeller.reynolds_75(data.omega, air)
+    slow = [g for g in dict.fromkeys(data.group) if np.max(re75[data.group == g]) < RE75_FLOOR]
+    if slow:  # (an rpm column in rev/s keeps CT and CP: the load check cannot see it), per run: one such run among
+        at = np.isin(data.group, slow)  # sweeps at the right rpm was fitted too
+        warnings_.append(f"the chord Reynolds number at 0.75 R is {np.min(re75[at]):.3g}-{np.max(re75[at]):.3g} "
+                         f"({np.min(data.omega[at]) * 30 / math.pi:.4g}-{np.max(data.omega[at]) * 30 / math.pi:.4g} "
+                         f"rpm) in {', '.join(map(str, slow[:3]))}{' ...' if len(slow) > 3 else ''}, below "
+                         f"{RE75_FLOOR:g} (the catalogue's lowest data: 3,600): is the rotation speed in rev/s (Hz) "
+                         "read as rpm? Name its unit; UIUC files give rpm")
 
     def loads_at(omega, airspeed=None, prop=propeller):  # (rates in the data's unit, right or wrong: the tip Mach
         with supersonic_tips_allowed():                    # number is said above)
