@@ -723,3 +723,14 @@ def test_a_windows_1252_level_flight_csv_is_still_refused(tmp_path, quad):
     p = _write(tmp_path, "d.csv", b"airspeed,pitch_deg,rpm_1,rpm_2,rpm_3,rpm_4,note\n"
                + b"1,-1,5000,5000,5000,5000,caf\xe9\n" * 8)
     refused(DataError, read_level_flight, p, quad, match="line 2: byte 0xe9")
+
+
+def test_uiuc_columns_in_another_order_are_named(tmp_path):
+    """A UIUC static file with its columns reordered, or a sweep without its eta column, fell to the
+    CSV reader, which said it found no rotation speed (a user-level audit, 2026-11-26)."""
+    p = _write(tmp_path, "x_9x6_static_0001rd.txt", b"RPM  CP  CT\n3000 0.05 0.11\n4000 0.05 0.11\n")
+    q = _write(tmp_path, "x_9x6_0002rd_4000.txt", b"J CT CP\n0.2 0.09 0.05\n0.4 0.06 0.045\n")
+    for path, header in ((p, "RPM  CP  CT"), (q, "J CT CP")):
+        assert looks_like_uiuc(path)
+        refused(DataError, lambda f, d: loads_from_uiuc_files([f], d), path, 0.2286,
+                match=f"not a UIUC static .* its header is '{header}'; UIUC's columns come in that order")

@@ -118,8 +118,10 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
                     if "expected columns" in str(sweep_exc) and "expected columns" not in str(static_exc):
                         raise static_exc from None
                     if "expected columns" in str(sweep_exc):
+                        found = str(sweep_exc).partition("found header ")[2]
                         raise DataError(f"{show_path(p)}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) "
-                                        "file") from None
+                                        "file" + (f": its header is {found}; UIUC's columns come in that order, "
+                                                  "a wind-tunnel run with its eta column" if found else "")) from None
                     raise
         except MeasurementFileError as exc:
             raise DataError(str(exc)) from None

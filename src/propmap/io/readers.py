@@ -237,6 +237,8 @@ def looks_like_uiuc(path) -> bool:
     head = raw.decode("latin-1")
     for ln in head.splitlines()[:50]:
         words = [w.lower() for w in ln.split()]
-        if words[:3] == ["rpm", "ct", "cp"] or words[:4] == ["j", "ct", "cp", "eta"]:
+        # (also UIUC's columns in another order, or a sweep without eta: read as UIUC, so that its reader says
+        # which columns it expects, rather than the CSV reader that it found no rotation speed: a user-level audit)
+        if sorted(words[:3]) in (["cp", "ct", "rpm"], ["cp", "ct", "j"]):
             return True
     return False
