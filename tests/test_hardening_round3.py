@@ -175,6 +175,9 @@ def test_a_hub_blade_count_in_the_run_names_is_checked_against_blades(tmp_path, 
     code, _, err = run(capsys, "fit", "loads", static, "--prop", family, "--blades", "2", "--diameter-in", "9", "--out",
                        tmp_path / "c.toml")
     assert code == 0 and "named for" not in err, err
+    # but the size its data's name gives is compared (a new-family audit: 9 in given for a 5 in file, unsaid)
+    code, _, err = run(capsys, "validate", static, "--prop", family, "--blades", "2", "--diameter-in", "7")
+    assert code == 0 and "is named for a 9 in propeller, used with a 7 in one (apce): give --diameter-in 9" in err, err
 
 
 def test_the_fits_warnings_are_printed_once(tmp_path, capsys):

@@ -390,6 +390,14 @@ def _warn_other_propeller(sources, prop) -> None:
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
+        size = re.search(r"_(\d+(?:\.\d+)?)x\d", named)  # (a family geometry file covers its sizes: the size
+        if size:                                            # the name gives is compared, in or, above 30, mm)
+            d_in = float(size.group(1)) / (25.4 if float(size.group(1)) > 30 else 1.0)
+            if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
+                warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
+                     f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "
+                     "the propeller measured")
+                return
 
 
 @fit.command("loads")
