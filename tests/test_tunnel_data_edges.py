@@ -152,6 +152,10 @@ def test_a_fitted_file_says_which_propeller_and_warns_on_another(tmp_path, capsy
     assert "runs with f.toml, fitted to data of apce_10x7 (0.254 m, 2 blades)" in capsys.readouterr().err
     assert main(["loads", "apce_10x7", "--params", str(fit), "--rpm", "5000"]) == 0
     assert "fitted to data of" not in capsys.readouterr().err
+    # a pitch sibling of the same size (a new-family audit: unsaid, where calibrated:apce_10x7 was warned of)
+    assert main(["loads", "apce_10x5", "--params", str(fit), "--rpm", "5000"]) == 0
+    assert ("apce_10x5 runs with f.toml, fitted to data of apce_10x7 (the same diameter and blade count): if that "
+            "is another propeller (a pitch sibling)") in capsys.readouterr().err
 
 
 def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):

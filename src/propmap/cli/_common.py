@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -202,6 +203,18 @@ def _check_fitted_propeller(propeller, label: str) -> None:
     except (OSError, ValueError):  # (its reader says what is wrong where it is read)
         return
     d, b = cov.get("diameter_m"), cov.get("n_blades")
+    named = cov.get("propeller")
+
+    def plain(name: str) -> str:  # (a geometry file's name and a catalogue name alike)
+        return re.sub(r"(_geom)?(\.txt|\.pe0)?$", "", str(name).strip().lower())
+
+    if named and propeller.same_size(d, b) and plain(named) != plain(propeller.name):
+        # (another propeller of one size: a pitch sibling; a user-level audit found it unsaid where a calibrated
+        # set of the sibling was warned of)
+        warn(f"{propeller.name} runs with {Path(label).name}, fitted to data of {named} (the same diameter and blade "
+             "count): if that is another propeller (a pitch sibling), its section parameters carry that propeller's "
+             "data and predict this one's no better than the generic set (docs/models.md)")
+        return
     if d is None and b is None:
         return
     if not propeller.same_size(d, b):
