@@ -465,11 +465,11 @@ def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
     import json
 
     assert json.loads(capsys.readouterr().out)["in_fit"] == {"s0": "fitted", "s1": "fitted", "s2": "held out"}
-    # another file of the same group names is not labelled (the data's label differs)
+    # a copy under another name is the same data, by content (files_sha256, since 2026-11-26; by the name before)
     g = tmp_path / "other.csv"
     g.write_text(f.read_text())
     assert main(["validate", str(g), "--prop", "apce_8x6", "--params", str(out)]) == 0
-    assert "(fitted)" not in capsys.readouterr().out
+    assert "s0 (fitted)" in capsys.readouterr().out
     # nor another day's file of the same name (the audit's otherday/runs.csv read as in-sample): its content differs
     other_day = tmp_path / "otherday"
     other_day.mkdir()
@@ -933,3 +933,24 @@ def test_a_run_with_its_rpm_in_rev_per_s_is_warned_of(tmp_path):
     assert "in static_9999rd" in w and "rev/s (Hz) read as rpm" in w
     assert not [w for w in sanity_check(loads_from_uiuc_files([static, sweep], prop.diameter), prop)
                 if "Reynolds" in w]
+
+
+def test_validate_labels_the_fits_runs_among_other_files(tmp_path, capsys):
+    """UIUC runs: a fit's files given in part, or among others, were not labelled (one digest over
+    all files; a user-level audit, 2026-11-26): each file's digest tells its runs, and a mixed
+    'all points' row is said to be one."""
+    from propmap.io.catalogue import _data_path, get_entry
+
+    e = get_entry("apce_10x7")
+    files = [_data_path(e.static_files[0]), *(_data_path(f) for f in e.sweep_files[:3])]
+    out = tmp_path / "p.toml"
+    assert main(["fit", "loads", *map(str, files[:2]), "--prop", "apce_10x7", "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["validate", *map(str, files), "--prop", "apce_10x7", "--params", str(out)]) == 0
+    text = capsys.readouterr().out
+    static_run, first_sweep = files[0].stem.split("_static_")[1], files[1].stem.split("_")[2]
+    assert f"static_{static_run} (fitted)" in text and f"{first_sweep} (fitted)" in text, text
+    assert "mixes the fit's own groups with others" in text and "was fitted to part of this data" in text
+    assert main(["validate", str(files[1]), "--prop", "apce_10x7", "--params", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "all points (fitted)" in text and f"was fitted to this data: {first_sweep} in-sample" in text, text

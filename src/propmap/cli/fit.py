@@ -258,6 +258,28 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
             and fitted[q + "_rmse"] - base[q + "_rmse"] > 0.02 * largest[q]]
 
 
+def file_digests(sources) -> list[str]:
+    """Each SOURCE file's SHA-256 (64 hexadecimal digits; a catalogue name gives none), in order:
+    ``[coverage] files_sha256``, which tells ``validate`` which of its files a fit read.
+
+    Parameters
+    ----------
+    sources : iterable of str or Path
+
+    Returns
+    -------
+    list of str
+
+    Raises
+    ------
+    OSError
+        A file that cannot be read.
+    """
+    from ..io.atomic import file_sha256
+
+    return [file_sha256(Path(s)) for s in sources if _is_file(Path(s))]
+
+
 def data_digest(sources) -> str:
     """SHA-256 over the SOURCE arguments' contents, whatever their order (each file's digest, the
     digests sorted; a catalogue name: its name): what tells a fit's data from another file of
@@ -557,6 +579,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
     coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources),
+                "files_sha256": file_digests(sources),
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

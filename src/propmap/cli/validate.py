@@ -4,12 +4,13 @@ whole catalogue's, or a user's own load files."""
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
 import click
 
 from ._common import (PARAMS_HELP, InputError, PathArg, air_label, check_section_match, echo_json, load_params,
                       parse_names, resolve_air, warn, with_air_options, with_prop_options)
-from ._paths import check_out_dir, check_outputs
+from ._paths import _is_file, check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
 
 
@@ -151,7 +152,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     """``validate SOURCE... --prop P``: a parameter set against the user's own load files."""
     from ..core.solver import SolverError
     from ..validation import load_errors
-    from .fit import _file_air, _read_sources, data_digest
+    from .fit import _file_air, _read_sources, data_digest, file_digests
 
     params, air, label = load_params(params_spec, prop_spec, option="--params")
     air = resolve_air(air, air_choice)
@@ -178,11 +179,23 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
 
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
     in_fit = {}
-    digest = data_digest(sources)
-    if cov.get("data") == what and cov.get("data_sha256", digest) == digest:  # (by content: another day's file of
-        # the same name once read as this fit's data; a file written before 2026-11-26 has the name only)
-        in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in
-                  (e["groups"] or {"all": None}) if g in cov.get("held_out", ()) or g in cov.get("groups", ())}
+    seen = set(cov.get("held_out", ())) | set(cov.get("groups", ()))
+    every = [str(g) for g in dict.fromkeys(data.group)]  # (the data's groups, one or more)
+    fit_files = set(cov.get("files_sha256", ()))
+    if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
+        mine = dict(zip([s for s in sources if _is_file(Path(s))], file_digests(sources)))
+        matched = [s for s, h in mine.items() if h in fit_files]
+        if len(matched) == len(sources):
+            groups = every
+        else:  # (UIUC runs: each file is a run, read alone for its group)
+            from ..identify import loads_from_uiuc_files
+
+            groups = [str(g) for s in matched for g in dict.fromkeys(loads_from_uiuc_files([s], prop.diameter).group)]
+        in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in groups if g in seen}
+    elif cov.get("data") == what and cov.get("data_sha256", data_digest(sources)) == data_digest(sources):
+        # (by content: another day's file of the same name once read as this fit's data; a file written before
+        # 2026-11-26 has the name and the files' joint digest only)
+        in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in every if g in seen}
     if as_json:
         echo_json({**e, "in_fit": in_fit, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
                    "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
@@ -194,8 +207,9 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
                + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
                + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else ""))
-    rows = ([("all points", e["overall"])] + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row)
-                                              for g, row in e["groups"].items()]
+    one = every[0] if len(every) == 1 and every[0] in in_fit else None  # (one group: the all-points row is it)
+    rows = ([("all points" + (f" ({in_fit[one]})" if one else ""), e["overall"])]
+            + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row) for g, row in e["groups"].items()]
             + [(f"state: {s}", row) for s, row in e["states"].items()])
     width = min(max(len(name) for name, _ in rows) + 2, 60)
     click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>10}{'max':>10}{'n':>6}" for k in keys))
@@ -207,10 +221,13 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         click.echo(f"{name[:width - 1]:<{width}}" + "".join(
             pct(row[k]["rms"], 13) + pct(row[k]["bias"], 10, "+") + pct(row[k]["max"], 10) + f"{row[k]['n']:>6}"
             for k in keys))
+    part = bool(in_fit) and set(in_fit) != set(every)
+    if in_fit and (part or len(set(in_fit.values())) > 1):
+        click.echo("the 'all points' row mixes the fit's own groups with others: read the rows by group")
     if in_fit:
         fitted = sorted(g for g, v in in_fit.items() if v == "fitted")
-        click.echo(f"{label} was fitted to this data: " + (f"{', '.join(fitted)} in-sample (the fit's residual), "
-                                                           if fitted else "")
+        click.echo(f"{label} was fitted to {'part of ' if part else ''}this data: "
+                   + (f"{', '.join(fitted)} in-sample (the fit's residual), " if fitted else "")
                    + "held out: " + (", ".join(sorted(g for g, v in in_fit.items() if v == "held out")) or "none"))
     si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys
                    if e["overall"][k]["rms_si"] is not None)

@@ -23,8 +23,9 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
                  # the chord Reynolds numbers at 0.75 R of the data's rates, in the fit's air (since 2026-11-26)
                  "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9)}
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
-#: saw and held out, so that `propmap validate` can say which of its rows are in-sample
-COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out", "propeller")
+#: saw and held out, so that `propmap validate` can say which of its rows are in-sample; each data file's SHA-256
+#: (files_sha256, since 2026-11-26), so that it can say so for a part of them too
+COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out", "propeller", "files_sha256")
 #: the [coverage] text keys that hold one text (the others a list of texts)
 COVERAGE_SINGLE_TEXTS = ("data", "data_sha256", "propeller")
 #: the longest text and list of the [coverage] table's text keys
