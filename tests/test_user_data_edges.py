@@ -780,6 +780,37 @@ def test_an_unlabelled_airspeed_in_mph_or_knots_is_said(tmp_path, factor, unit):
     assert not any("airspeed read as" in w for w in sanity_check(read_loads(f), prop))
 
 
+
+GEOM_15X45 = ("r/R c/R beta\n" + "".join(f"{x} {c} {b}\n" for x, c, b in zip(
+    (0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 1.0),
+    (0.12, 0.1367, 0.1533, 0.17, 0.175, 0.18, 0.185, 0.19, 0.1825, 0.175, 0.1675, 0.16, 0.145, 0.13, 0.115, 0.1,
+     0.075, 0.05),
+    (32.48, 25.52, 20.91, 17.66, 15.26, 13.43, 11.98, 10.81, 9.85, 9.04, 8.36, 7.77, 7.26, 6.81, 6.41, 6.06, 5.74,
+     5.45))))
+
+
+def test_an_airspeed_in_m_per_s_is_not_called_knots_where_the_level_differs(tmp_path):
+    """A 15 in slow flyer (a new-family audit's geometry) whose loads come from the APC slow flyer's
+    calibrated set: the generic set under-predicts its thrust, and m/s data were said to match
+    better in knots (the model then runs at half the airspeed). Compared at the data's static
+    level, the shape decides: nothing said; the same data in knots still are."""
+    from propmap.identify import read_loads
+    from propmap.identify.data import sanity_check
+
+    (tmp_path / "g.txt").write_text(GEOM_15X45)
+    prop = pm.read_geometry(tmp_path / "g.txt", n_blades=2, diameter_in=15)
+    params = pm.default_params("apcsf_10x4.7")
+    for factor, said in ((1.0, False), (1 / 0.514444, True)):
+        rows = ["rpm,airspeed,thrust (N),torque (N m)"]
+        for V in (0.0, 3.0, 6.0, 9.0):
+            for rpm in np.arange(2000.0, 5600.0, 400.0):
+                r = pm.rotor_loads(prop, params, rpm * math.pi / 30, V, 0.0)
+                rows.append(f"{rpm},{V * factor},{float(r.thrust)!r},{float(r.torque)!r}")
+        (tmp_path / "v.csv").write_text("\n".join(rows) + "\n")
+        warned = [w for w in sanity_check(read_loads(tmp_path / "v.csv"), prop) if "airspeed read as" in w]
+        assert bool(warned) == said, warned
+
+
 def test_a_fits_residuals_name_their_points_and_outliers_are_warned(tmp_path):
     """Residuals were listed as '#5 -0.615' (an index into the stacked vector), and three outliers
     at 7x the rms passed without a word (identification audit, 2026-11-26)."""

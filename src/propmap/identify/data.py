@@ -198,8 +198,8 @@ _AIRSPEED_SLIPS = ((0.44704, "mph"), (0.514444, "knots"), (1 / 3.6, "km/h"), (0.
 def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     """The unit of _AIRSPEED_SLIPS in which the moving points' measured thrust matches the model
     best, where that is less than half the misfit of m/s (rms of (model - measured) over the
-    largest measured thrust, at 3 moving points or more) and the misfit in m/s exceeds 0.1; else
-    None."""
+    largest measured thrust, at 3 moving points or more, the model scaled to the data's static
+    thrust where the data have static points) and the misfit in m/s exceeds 0.1; else None."""
     moving = data.airspeed > STATIC_AIRSPEED
     if "thrust" not in data.measured or "thrust" not in checked or moving.sum() < 3:
         return None
@@ -208,8 +208,14 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     if not scale > 0:
         return None
 
+    # the model at the data's static level (the measured static thrust over the model's, in the median): a propeller
+    # the generic set under-predicts was told its m/s airspeed matched better in knots (a user-level audit)
+    static = (data.airspeed <= STATIC_AIRSPEED) & np.isfinite(data.measured["thrust"]) & (np.abs(at_rpm.thrust) > 0)
+    level = float(np.median(data.measured["thrust"][static] / at_rpm.thrust[static])) if static.any() else 1.0
+    level = level if math.isfinite(level) and level > 0 else 1.0
+
     def misfit(r) -> float:
-        return float(np.sqrt(np.nanmean(((r.thrust[moving] - measured) / scale) ** 2)))
+        return float(np.sqrt(np.nanmean(((level * r.thrust[moving] - measured) / scale) ** 2)))
 
     base = misfit(at_rpm)
     if not base > 0.1:
