@@ -734,3 +734,17 @@ def test_uiuc_columns_in_another_order_are_named(tmp_path):
         assert looks_like_uiuc(path)
         refused(DataError, lambda f, d: loads_from_uiuc_files([f], d), path, 0.2286,
                 match=f"not a UIUC static .* its header is '{header}'; UIUC's columns come in that order")
+
+
+@pytest.mark.parametrize("stem", ["hq_6x4.5x3", "hq_6x4.5_3b"])
+def test_a_blade_count_in_a_geometry_files_name_is_compared(tmp_path, stem):
+    """A tri-blade's geometry named 'hq_6x4.5x3_geom.txt' or '..._3b_geom.txt' ran with --blades 2
+    unwarned (a new-family audit, 2026-11-26)."""
+    import warnings
+
+    p = _write(tmp_path, f"{stem}_geom.txt", b"r/R c/R beta\n0.2 0.15 30\n0.5 0.2 20\n0.75 0.18 14\n1.0 0.08 10\n")
+    with pytest.warns(UserWarning, match="2 blades as given, not the 3 of the file name"):
+        read_geometry(p, n_blades=2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read_geometry(p, n_blades=3).diameter == pytest.approx(6 * 0.0254)

@@ -12,7 +12,9 @@ in [1, 100], TWIST in [-90, 90] deg, every table value finite; a diameter from t
 Diameters in file names: UIUC names are ``<family>_<D>x<P>``, D and P in inches, except
 the families whose sizes are in millimetres (:data:`MM_FAMILIES`: ``ef``, ``kpf``, ``pl``,
 ``vp``, e.g. ``ef_130x70`` is 130 mm = 5.118 in). :func:`read_uiuc_geometry` reads those
-as millimetres, says so in ``Propeller.source`` and warns (``UserWarning``).
+as millimetres, says so in ``Propeller.source`` and warns (``UserWarning``). A blade count
+in the name (a UIUC hub's ``_3b``, or a third figure, ``hq_6x4.5x3``) other than ``n_blades``
+is warned of too.
 """
 
 from __future__ import annotations
@@ -164,6 +166,13 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         if named is not None and named > 0 and abs(float(diameter_in) / named - 1.0) > 0.05:  # (130 mm is sold as 5 in)
             warnings.warn(f"{where}: diameter {float(diameter_in):g} in as given, not the {D_name:g} {unit} of the "
                           "file name", UserWarning, stacklevel=3)
+    # a blade count in the name: a UIUC hub's "_3b", or a third size figure ("6x4.5x3", as HQProp names its
+    # tri-blades); a user-level audit ran such files with --blades 2 unwarned
+    count = re.search(r"_([1-9])b(?:_|$)", stem, re.IGNORECASE) or re.search(
+        r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", stem, re.IGNORECASE)
+    if count and isinstance(n_blades, int) and int(count.group(1)) != n_blades:
+        warnings.warn(f"{where}: {n_blades} blades as given, not the {count.group(1)} of the file name", UserWarning,
+                      stacklevel=3)
     pitch_in = None
     if P_name is not None:
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
