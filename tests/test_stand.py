@@ -279,7 +279,10 @@ def test_more_slips_are_refused_with_the_cause(tmp_path, truth_params, header, r
         sanity_check(read_loads(tmp_path / "w.csv"), prop)
 
 
-def test_a_diameter_in_mm_given_as_inches_is_named(tmp_path, truth_params):
+@pytest.mark.parametrize("diameter_in, cause", [(203.2, "one in mm given as inches"),
+                                                   (0.5, "one in m or cm given as inches")])
+def test_a_diameter_far_off_is_named_by_its_direction(tmp_path, truth_params, diameter_in, cause):
+    """8 in data against the geometry read at 203.2 in (mm given as inches) or 0.5 in (m or cm)."""
     prop = pm.load_propeller("apce_8x6")
     rpm = np.linspace(3000, 9000, 7)
     r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
@@ -288,9 +291,9 @@ def test_a_diameter_in_mm_given_as_inches_is_named(tmp_path, truth_params):
     (tmp_path / "g.txt").write_text("r/R c/R beta\n" + "".join(
         f"{x:.4f} {c:.4f} {math.degrees(t):.3f}\n" for x, c, t in zip(prop.r / prop.radius, prop.chord / prop.radius,
                                                                        prop.theta)))
-    big = pm.read_geometry(tmp_path / "g.txt", diameter_in=203.2, n_blades=2)  # 203.2 mm given as inches
-    with pytest.raises(DataError, match="mm given as inches"):
-        sanity_check(read_loads(tmp_path / "w.csv"), big)
+    other = pm.read_geometry(tmp_path / "g.txt", diameter_in=diameter_in, n_blades=2)
+    with pytest.raises(DataError, match=cause):
+        sanity_check(read_loads(tmp_path / "w.csv"), other)
 
 
 def test_a_wrong_blade_or_pole_pair_count_inside_the_refused_range_is_warned_of(tmp_path, truth_params):
@@ -782,20 +785,6 @@ def test_imperial_units_on_both_columns_are_not_called_swapped(tmp_path, truth_p
     with pytest.raises(DataError, match="likely thrust in lbf and torque in lbf in read as N and N m") as e:
         sanity_check(read_loads(tmp_path / "w.csv"), prop)
     assert "swapped" not in str(e.value)
-
-
-def test_a_diameter_in_m_given_as_inches_is_named_as_such(tmp_path, truth_params):
-    prop = pm.load_propeller("apce_8x6")
-    rpm = np.linspace(3000, 9000, 7)
-    r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
-    lines = ["rpm,thrust,torque"] + [f"{n:.1f},{T:.8g},{Q:.8g}" for n, T, Q in zip(rpm, r.thrust, r.torque)]
-    (tmp_path / "w.csv").write_text("\n".join(lines) + "\n")
-    (tmp_path / "g.txt").write_text("r/R c/R beta\n" + "".join(
-        f"{x:.4f} {c:.4f} {math.degrees(t):.3f}\n" for x, c, t in zip(prop.r / prop.radius, prop.chord / prop.radius,
-                                                                       prop.theta)))
-    tiny = pm.read_geometry(tmp_path / "g.txt", diameter_in=0.5, n_blades=2)  # (0.2032 m given as inches, clipped)
-    with pytest.raises(DataError, match="one in m or cm given as inches"):
-        sanity_check(read_loads(tmp_path / "w.csv"), tiny)
 
 
 def test_a_files_own_groups_are_kept_beside_a_throttle_column(tmp_path, truth_params):
