@@ -178,6 +178,23 @@ def test_a_hub_blade_count_in_the_run_names_is_checked_against_blades(tmp_path, 
     # but the size its data's name gives is compared (a new-family audit: 9 in given for a 5 in file, unsaid)
     code, _, err = run(capsys, "validate", static, "--prop", family, "--blades", "2", "--diameter-in", "7")
     assert code == 0 and "is named for a 9 in propeller, used with a 7 in one (apce): give --diameter-in 9" in err, err
+    # read as the geometry reader reads a name (a review: "above 30, mm" made a 32 in name 1.26 in)
+    big = [tmp_path / "tm_32x11_static_0001rd.txt", tmp_path / "tm_32x11_geom.txt"]
+    shutil.copyfile(static, big[0])
+    shutil.copyfile(UIUC_V1 / "apce_9x6_geom.txt", big[1])
+    code, _, err = run(capsys, "validate", big[0], "--prop", big[1], "--blades", "2")
+    assert code == 0 and "named for a" not in err, err
+
+
+def test_a_hub_propellers_own_files_are_not_said_to_be_anothers(capsys):
+    """The 3-blade hub's catalogue propeller with its own '_3b' files: 'named for propeller
+    da4022_5x3.75_3b, used with --prop da4022_5x3.75_3b' (a review, 2026-11-26)."""
+    from propmap.io.catalogue import _data_path, get_entry
+
+    e = get_entry("da4022_5x3.75_3b")
+    files = [str(_data_path(f)) for f in (*e.static_files, *e.sweep_files[:1])]
+    code, _, err = run(capsys, "validate", *files, "--prop", "da4022_5x3.75_3b")
+    assert code == 0 and "named for" not in err, err
 
 
 def test_the_fits_warnings_are_printed_once(tmp_path, capsys):

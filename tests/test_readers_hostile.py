@@ -730,21 +730,27 @@ def test_uiuc_columns_in_another_order_are_named(tmp_path):
     CSV reader, which said it found no rotation speed (a user-level audit, 2026-11-26)."""
     p = _write(tmp_path, "x_9x6_static_0001rd.txt", b"RPM  CP  CT\n3000 0.05 0.11\n4000 0.05 0.11\n")
     q = _write(tmp_path, "x_9x6_0002rd_4000.txt", b"J CT CP\n0.2 0.09 0.05\n0.4 0.06 0.045\n")
+    csv = _write(tmp_path, "t.tsv", b"J\tCT\tCP\tRPM\tthrust (N)\n0.2\t0.09\t0.05\t4000\t3.1\n")
+    assert not looks_like_uiuc(csv)  # (those columns first, then a CSV's own: a CSV, read by the CSV reader)
     for path, header in ((p, "RPM  CP  CT"), (q, "J CT CP")):
         assert looks_like_uiuc(path)
         refused(DataError, lambda f, d: loads_from_uiuc_files([f], d), path, 0.2286,
                 match=f"not a UIUC static .* its header is '{header}'; UIUC's columns come in that order")
 
 
-@pytest.mark.parametrize("stem", ["hq_6x4.5x3", "hq_6x4.5_3b"])
+@pytest.mark.parametrize("stem", ["hq_6x4.5x3_geom", "hq_6x4.5_3b_geom", "hq_6x4.5x3"])
 def test_a_blade_count_in_a_geometry_files_name_is_compared(tmp_path, stem):
     """A tri-blade's geometry named 'hq_6x4.5x3_geom.txt' or '..._3b_geom.txt' ran with --blades 2
     unwarned (a new-family audit, 2026-11-26)."""
     import warnings
 
-    p = _write(tmp_path, f"{stem}_geom.txt", b"r/R c/R beta\n0.2 0.15 30\n0.5 0.2 20\n0.75 0.18 14\n1.0 0.08 10\n")
-    with pytest.warns(UserWarning, match="2 blades as given, not the 3 of the file name"):
+    p = _write(tmp_path, f"{stem}.txt", b"r/R c/R beta\n0.2 0.15 30\n0.5 0.2 20\n0.75 0.18 14\n1.0 0.08 10\n")
+    with pytest.warns(UserWarning, match=r"2 blades \(n_blades, --blades\), not the 3 of the file name"):
         read_geometry(p, n_blades=2)
+    with pytest.raises(GeometryFileError, match="does not state the blade"):  # (no count given: refused, unwarned)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            read_geometry(p)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert read_geometry(p, n_blades=3).diameter == pytest.approx(6 * 0.0254)

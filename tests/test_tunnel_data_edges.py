@@ -156,6 +156,12 @@ def test_a_fitted_file_says_which_propeller_and_warns_on_another(tmp_path, capsy
     assert main(["loads", "apce_10x5", "--params", str(fit), "--rpm", "5000"]) == 0
     assert ("apce_10x5 runs with f.toml, fitted to data of apce_10x7 (the same diameter and blade count): if that "
             "is another propeller (a pitch sibling)") in capsys.readouterr().err
+    # a propeller of the same size and pitch under another name (APC's PE0 file of a 10x7) is no sibling (a review)
+    from importlib import resources
+
+    pe0 = resources.files("propmap") / "data" / "apc_pe0" / "10x7-PERF.PE0"
+    assert main(["loads", str(pe0), "--params", str(fit), "--rpm", "5000"]) == 0
+    assert "pitch sibling" not in capsys.readouterr().err
 
 
 def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):

@@ -964,6 +964,17 @@ def test_a_run_with_its_rpm_in_rev_per_s_is_warned_of(tmp_path):
     assert "in static_9999rd" in w and "rev/s (Hz) read as rpm" in w
     assert not [w for w in sanity_check(loads_from_uiuc_files([static, sweep], prop.diameter), prop)
                 if "Reynolds" in w]
+    # a 45 mm propeller's low ESC step, 1500 rpm (Re75 1.4e3), is no slip (a review): not below 1000 rpm
+    from propmap.identify import LoadData
+
+    small = pm.load_propeller("cfnq_45p1")
+    rpm = np.arange(1500.0, 22600.0, 1500.0)
+    r = pm.rotor_loads(small, pm.default_params("cfnq_45p1"), rpm * math.pi / 30, 0.0, 0.0)
+    steps = LoadData(rpm * math.pi / 30, np.zeros(rpm.size), np.zeros(rpm.size),
+                     {"thrust": r.thrust, "torque": r.torque},
+                     np.array([f"step{k + 1}" for k in range(rpm.size)], dtype=object))
+    assert small.reynolds_75(rpm[0] * math.pi / 30, pm.Air()) < 2000
+    assert not [w for w in sanity_check(steps, small) if "Reynolds" in w]
 
 
 def test_validate_labels_the_fits_runs_among_other_files(tmp_path, capsys):
@@ -985,3 +996,24 @@ def test_validate_labels_the_fits_runs_among_other_files(tmp_path, capsys):
     assert main(["validate", str(files[1]), "--prop", "apce_10x7", "--params", str(out)]) == 0
     text = capsys.readouterr().out
     assert "all points (fitted)" in text and f"was fitted to this data: {first_sweep} in-sample" in text, text
+
+
+def test_validate_labels_runs_named_by_their_files_where_two_share_a_run_id(tmp_path, capsys):
+    """Two sweeps copied as 'x_sweep_4007.txt' and 'x_sweep_6020.txt' share the run id 'sweep', so each
+    is named by its stem; validated with a file the fit did not read, the fit's file was labelled
+    by a run id the table did not have (a review, 2026-11-26)."""
+    import json
+    import shutil
+
+    from propmap.io.catalogue import _data_path, get_entry
+
+    e = get_entry("apce_10x7")
+    static = _data_path(e.static_files[0])
+    a, b = tmp_path / "apce_10x7_sweep_4007.txt", tmp_path / "apce_10x7_sweep_6020.txt"
+    shutil.copyfile(_data_path(e.sweep_files[0]), a)
+    shutil.copyfile(_data_path(e.sweep_files[1]), b)
+    out = tmp_path / "f.toml"
+    assert main(["fit", "loads", str(static), str(a), "--prop", "apce_10x7", "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["validate", str(a), str(b), "--prop", "apce_10x7", "--params", str(out), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["in_fit"] == {"apce_10x7_sweep_4007": "fitted"}

@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import re
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -204,13 +203,13 @@ def _check_fitted_propeller(propeller, label: str) -> None:
         return
     d, b = cov.get("diameter_m"), cov.get("n_blades")
     named = cov.get("propeller")
+    from ..io.geometry_files import size_from_name
 
-    def plain(name: str) -> str:  # (a geometry file's name and a catalogue name alike)
-        return re.sub(r"(_geom)?(\.txt|\.pe0)?$", "", str(name).strip().lower())
-
-    if named and propeller.same_size(d, b) and plain(named) != plain(propeller.name):
-        # (another propeller of one size: a pitch sibling; a user-level audit found it unsaid where a calibrated
-        # set of the sibling was warned of)
+    # another propeller of one size: a pitch sibling, by the pitch both names give (apce_11x7 on apce_11x8; a
+    # user-level audit found it unsaid where a calibrated set of the sibling was warned of). Names without a size,
+    # or of the same size written otherwise (the catalogue's apce_8x6 and its PE0 file 8x6E), are not compared
+    pitch = [size_from_name(str(n))[1] for n in (named or "", propeller.name)]
+    if named and propeller.same_size(d, b) and None not in pitch and abs(pitch[0] / pitch[1] - 1.0) > 0.02:
         warn(f"{propeller.name} runs with {Path(label).name}, fitted to data of {named} (the same diameter and blade "
              "count): if that is another propeller (a pitch sibling), its section parameters carry that propeller's "
              "data and predict this one's no better than the generic set (docs/models.md)")

@@ -380,13 +380,17 @@ def _warn_other_propeller(sources, prop) -> None:
     case. A hub's blade count in the name (vol. 2's ``da4022_5x3.75_3b_...``, the 2-blade
     geometry file shared), or a catalogue propeller's without one (``da4022_5x3.75_static_...``:
     2 blades), is compared with --blades instead; a family geometry file (``da4002_geom.txt``)
-    covers its family's sizes."""
+    covers its family's sizes, the size a data file's name gives compared with the geometry's
+    diameter (within 5%; read as io.geometry_files.size_from_name reads it)."""
     import re
 
     from ..io.catalogue import catalogue
+    from ..io.geometry_files import size_from_name
     from ._common import warn
 
-    base = re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower()
+    # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
+    # another propeller")
+    base = re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower())
     for s in sources:
         # the run id: digits then letters (2801rd) or letters then digits (rd0989, pg0812, kt0535)
         m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$",
@@ -412,9 +416,9 @@ def _warn_other_propeller(sources, prop) -> None:
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
-        size = re.search(r"_(\d+(?:\.\d+)?)x\d", named)  # (a family geometry file covers its sizes: the size
-        if size:                                            # the name gives is compared, in or, above 30, mm)
-            d_in = float(size.group(1)) / (25.4 if float(size.group(1)) > 30 else 1.0)
+        D, _, unit, _ = size_from_name(named)  # (a family geometry file covers its sizes: the size the name gives
+        if D:                                   # is compared, read as the geometry reader reads a name)
+            d_in = D / 25.4 if unit == "mm" else D
             if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
                 warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
                      f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "

@@ -185,13 +185,18 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
         mine = dict(zip([s for s in sources if _is_file(Path(s))], file_digests(sources)))
         matched = [s for s, h in mine.items() if h in fit_files]
-        if len(matched) == len(sources):
-            groups = every
-        else:  # (UIUC runs: each file is a run, read alone for its group)
+        if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
+            pairs = {g: g for g in every if g in seen} if matched else {}  # (a row's label -> the fit's label)
+        else:  # (UIUC runs: each file a run, named by its run id, or by its stem where two files share one id, in the
+            # fit's read and in this one alike: the label of each that the fit and this table know)
             from ..identify import loads_from_uiuc_files
 
-            groups = [str(g) for s in matched for g in dict.fromkeys(loads_from_uiuc_files([s], prop.diameter).group)]
-        in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in groups if g in seen}
+            pairs = {}
+            for f in matched:
+                names = {str(g) for g in loads_from_uiuc_files([f], prop.diameter).group} | {Path(f).stem}
+                if names & seen and names & set(every):
+                    pairs[min(names & set(every))] = min(names & seen)
+        in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted") for g, f in pairs.items()}
     elif cov.get("data") == what and cov.get("data_sha256", data_digest(sources)) == data_digest(sources):
         # (by content: another day's file of the same name once read as this fit's data; a file written before
         # 2026-11-26 has the name and the files' joint digest only)

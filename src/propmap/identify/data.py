@@ -162,8 +162,8 @@ def _loads_from_runs(statics, sweeps, diameter, air, name, source, files=None) -
 
 #: measured over predicted (generic set, the data's geometry) beyond which load data are refused
 SANITY_FACTOR = 3.0
-#: a chord Reynolds number at 0.75 R below this at every point is warned of (UIUC vol. 2's lowest is 3,600; a
-#: static run with its rpm in rev/s read as rpm, 60 times slow, was fitted without a word: a user-level audit)
+#: a run whose chord Reynolds number at 0.75 R stays below this, below 1000 rpm, is warned of (UIUC vol. 2's lowest is
+#: 3,600; a static run with its rpm in rev/s read as rpm, 60 times slow, was fitted without a word: a user-level audit)
 RE75_FLOOR = 2000.0
 #: beyond these factors (inside SANITY_FACTOR) a median load ratio to the model is warned of: the generic set's
 #: ratios to the catalogue's own data lie beyond them for 7 of its 147 propellers (2026-11-26)
@@ -313,7 +313,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     Returns
     -------
     list of str
-        Warnings: a thrust or torque beyond :data:`SANITY_WARN` (1.4x, 1.5x) times the
+        Warnings: a run below :data:`RE75_FLOOR` in chord Reynolds number at 0.75 R and below
+        1000 rpm (a rotation speed in rev/s read as rpm?); 10% of the points or more in the
+        vortex-ring or turbulent-wake state by the model; a thrust or torque beyond
+        :data:`SANITY_WARN` (1.4x, 1.5x) times the
         model's in the median, inside the refused range (a wrong blade count, diameter or
         pole-pair count is no unit slip; the generic set is within them for 95% of the
         catalogue's propellers, docs/identification.md); a tip Mach number above 0.7 in the
@@ -342,7 +345,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
     re75 = propeller.reynolds_75(data.omega, air)
-    slow = [g for g in dict.fromkeys(data.group) if np.max(re75[data.group == g]) < RE75_FLOOR]
+    slow = [g for g in dict.fromkeys(data.group) if np.max(re75[data.group == g]) < RE75_FLOOR
+            and np.max(data.omega[data.group == g]) * 30 / math.pi < 1000]  # (a small propeller's low ESC step is no
+    # slip: rev/s read as rpm is 60 times slow, below 1000 "rpm" for any propeller up to 60,000 rpm; a review)
     if slow:  # (an rpm column in rev/s keeps CT and CP: the load check cannot see it), per run: one such run among
         at = np.isin(data.group, slow)  # sweeps at the right rpm was fitted too
         warnings_.append(f"the chord Reynolds number at 0.75 R is {np.min(re75[at]):.3g}-{np.max(re75[at]):.3g} "

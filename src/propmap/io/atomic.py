@@ -54,7 +54,8 @@ def signals_held():
     before = {}
     try:
         for s in (signal.SIGINT, signal.SIGTERM):
-            before[s] = signal.signal(s, hold)
+            if signal.getsignal(s) is not None:  # (None: a handler not installed from Python, which cannot be put back)
+                before[s] = signal.signal(s, hold)
         yield
     finally:
         for s, handler in before.items():

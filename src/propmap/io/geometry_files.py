@@ -60,8 +60,20 @@ FIRST_STATION_MAX = 0.4
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
 
 
-def _size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
-    """(diameter, pitch, unit, family) from ``<family>_<D>x<P>``; unit ``"in"``, or ``"mm"`` for MM_FAMILIES."""
+def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
+    """(diameter, pitch, unit, family) from a UIUC-style name ``<family>_<D>x<P>``.
+
+    Parameters
+    ----------
+    name : str
+        A propeller's or a file's name (``apce_10x7``, ``ef_130x70_geom``, ``8x6E``).
+
+    Returns
+    -------
+    tuple
+        D and P as written (None, None without a size), the unit ``"in"``, or ``"mm"`` for
+        :data:`MM_FAMILIES`, and the family.
+    """
     m = _NAME_RE.search(name)
     if not m:
         return None, None, "in", ""
@@ -119,7 +131,7 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
 
 
-def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source) -> Propeller:
+def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source, blades_given=True) -> Propeller:
     where = show_path(path)
     table = _read_table(path, text, ["r/R", "c/R", "beta"], GeometryFileError)
     _check_column(table, 0, "r/R (station radius / tip radius)", 0.0, 1.0, path, GeometryFileError, lo_open=True)
@@ -138,7 +150,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
                       "the file name or diameter_in, the blade count from n_blades: --diameter-in, --blades)",
                       UserWarning, stacklevel=3)
     stem = re.sub(r"_geom\.txt$", "", path.name, flags=re.IGNORECASE)
-    D_name, P_name, unit, family = _size_from_name(stem)
+    D_name, P_name, unit, family = size_from_name(stem)
     note = ""
     if diameter_in is None:
         if D_name is None:
@@ -168,11 +180,12 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
                           "file name", UserWarning, stacklevel=3)
     # a blade count in the name: a UIUC hub's "_3b", or a third size figure ("6x4.5x3", as HQProp names its
     # tri-blades); a user-level audit ran such files with --blades 2 unwarned
-    count = re.search(r"_([1-9])b(?:_|$)", stem, re.IGNORECASE) or re.search(
-        r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", stem, re.IGNORECASE)
-    if count and isinstance(n_blades, int) and int(count.group(1)) != n_blades:
-        warnings.warn(f"{where}: {n_blades} blades as given, not the {count.group(1)} of the file name", UserWarning,
-                      stacklevel=3)
+    bare = re.sub(r"(_geom)?(\.[a-z0-9]+)?$", "", path.name, flags=re.IGNORECASE)
+    count = re.search(r"_([1-9])b(?:_|$)", bare, re.IGNORECASE) or re.search(
+        r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", bare, re.IGNORECASE)
+    if count and blades_given and int(count.group(1)) != n_blades:
+        warnings.warn(f"{where}: {n_blades} blades (n_blades, --blades), not the {count.group(1)} of the file name",
+                      UserWarning, stacklevel=3)
     pitch_in = None
     if P_name is not None:
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
@@ -425,7 +438,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         return prop
     if _is_uiuc_geometry(text):
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
-                              name=None, source="")  # the file's own errors first
+                              name=None, source="", blades_given=n_blades is not None)  # the file's own errors first
         if n_blades is None:
             raise GeometryFileError(f"{show_path(path)}: a UIUC geometry file (r/R c/R beta) does not state the blade "
                                     "count: give it (--blades, n_blades); a wrong count scales the thrust (3 blades "
