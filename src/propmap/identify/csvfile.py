@@ -152,7 +152,7 @@ class _Csv:
 
     def _windows_1252(self, raw: bytes, exc: DataError) -> bytes:
         """Text that is not UTF-8 but Windows-1252 (a spreadsheet saved on Windows: 'µs', 'N·m',
-        '°C' as single bytes), re-encoded as UTF-8 with a note; else ``exc`` raised. A user-level
+        '°C' as single bytes), re-encoded as UTF-8 with a note; else ``exc`` raised (a user-level
         audit: a stand export re-saved by Excel was refused). Not a file with a UTF-8 byte-order
         mark or a UTF-8 multi-byte sequence: UTF-8 with a stray byte stays refused, naming it."""
         if ("is not UTF-8" not in str(exc) or raw.startswith(b"\xef\xbb\xbf")
