@@ -319,7 +319,8 @@ def set_coverage(label: str) -> dict | None:
         ``J_max``, ``incidence_deg_max`` and, for a fitted file, ``rpm_min``, ``rpm_max``
         [rpm], ``airspeed_max`` [m/s], a load fit's ``propeller``, ``diameter_m`` [m],
         ``n_blades``, ``re75_min``, ``re75_max`` [-] (since 2026-11-26) and the text keys
-        (``data``, ``data_sha256``, ``groups``, ``held_out``), each where the file gives it; None
+        (``data``, ``data_sha256``, ``files_sha256``, ``groups``, ``held_out``), each where the
+        file gives it; None
         where propmap does not know the data (Table I, other files).
     """
     from .calibration import coverage

@@ -58,16 +58,18 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     -------
     dict or None
         The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
-        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s]), ``data`` as a str and
-        ``groups`` and ``held_out`` as tuples of str; None without a table.
+        ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s], ``diameter_m`` [m],
+        ``n_blades``, ``re75_min``, ``re75_max``), ``data``, ``data_sha256`` and ``propeller``
+        as str and ``groups``, ``held_out`` and ``files_sha256`` as tuples of str; None without
+        a table.
 
     Raises
     ------
     ValueError
         Not a table, an unknown key, a value not a number or out of its range, rpm_min above
-        rpm_max, ``data`` or ``data_sha256`` not a text of at most 1,000 characters, ``groups`` or ``held_out`` not
-        a list of such texts (at most 100,000). (Every key is optional: the warnings check those
-        given.)
+        rpm_max, ``data``, ``data_sha256`` or ``propeller`` not a text of at most 1,000
+        characters, ``groups``, ``held_out`` or ``files_sha256`` not a list of such texts (at
+        most 100,000). (Every key is optional: the warnings check those given.)
     """
     table = data.get(COVERAGE_TABLE)
     if table is None:
