@@ -214,6 +214,16 @@ def test_cli_fit_flight_writes_its_fit_when_the_hover_torque_check_cannot_trim(t
     assert ht["torque_model"] > 0 and "yaw_r" in ht  # (the log measures moments: the yaw channel needs no trim)
     text = (tmp_path / "p.report.txt").read_text()
     assert "the check against the generic reference set is unavailable" in text and "yaw channel" in text
+    # the file records the vehicle's propeller as a load fit's does, so that it warns on another one (a JSON audit,
+    # 2026-11-26: it ran an 8 in 2-blade propeller unwarned)
+    from propmap.io.params_file import read_coverage
+
+    cov = read_coverage(out)
+    prop = pm.read_vehicle(VEHICLE).rotors[0].propeller
+    assert (cov["propeller"], cov["diameter_m"], cov["n_blades"]) == (prop.name, prop.diameter, prop.n_blades)
+    assert 0 < cov["re75_min"] <= cov["re75_max"]
+    assert main(["loads", "apce_8x6", "--params", str(out), "--rpm", "5000"]) == 0
+    assert f"fitted to data of {prop.name}" in capsys.readouterr().err
 
 
 def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shared_data):

@@ -483,7 +483,12 @@ def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("bad, match", [('data = 5', "data must be a text"), ('groups = "s0"', "groups must be a list"),
-                                        ('held_out = [1, 2]', "held_out must be a list of texts")])
+                                        ('held_out = [1, 2]', "held_out must be a list of texts"),
+                                        # (hand edits that silenced the checks: a JSON/pipeline audit, 2026-11-26)
+                                        ('diameter_m = 0', r"diameter_m must be a finite number in \(0, 100\]"),
+                                        ('n_blades = 2.5', "n_blades must be a whole number"),
+                                        ('re75_min = 1e9\nre75_max = 5e4', "re75_min 1e\\+09 exceeds re75_max"),
+                                        ('files_sha256 = "ab"', "files_sha256 must be a list")])
 def test_coverage_text_keys_are_checked(tmp_path, bad, match):
     from propmap.io.params_file import ParamsFileError, read_coverage
 

@@ -330,7 +330,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
-    coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh), "data": "flight logs",
+    coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
                 "groups": [n for n in names if n not in held], "held_out": sorted(held)}
     _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
@@ -338,11 +338,15 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 
 
-def _flight_coverage(logs, veh) -> dict:
+def _flight_coverage(logs, veh, air) -> dict:
     """What the training logs' rotors covered, every sample at the logs' own rate (as `wrench` runs
     them; the fit's samples are a subsample), for the written file's [coverage] table: `wrench` and
     `loads` with the file then warn of faster flights. The rotors' operating points as
-    vehicle_wrench forms them: hub velocity v + w x r_i, its incidence to the axis, the lagged speed."""
+    vehicle_wrench forms them: hub velocity v + w x r_i, its incidence to the axis, the lagged speed.
+    Where every rotor carries one propeller geometry, also that propeller (name, diameter, blade
+    count) and its chord Reynolds numbers at 0.75 R in the fit's ``air``, as a load fit records
+    them: a file fitted to a quadrotor's 5.1 in rotors ran an 8 in propeller unwarned (a user-level
+    audit, 2026-11-26)."""
     import numpy as np
 
     from ..core.vector import disk_frame
@@ -356,8 +360,14 @@ def _flight_coverage(logs, veh) -> dict:
     axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
-    return {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
-            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed))}
+    out = {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
+           "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed))}
+    prop = veh.rotors[0].propeller
+    if all(r.propeller.same_geometry(prop) for r in veh.rotors):
+        re75 = prop.reynolds_75(np.array([np.min(s.rotor_omega), np.max(s.rotor_omega)]), air)
+        out.update(propeller=prop.name, diameter_m=prop.diameter, n_blades=float(prop.n_blades),
+                   re75_min=float(re75[0]), re75_max=float(re75[1]))
+    return out
 
 
 def _hover_loads(params, veh, samples, air):

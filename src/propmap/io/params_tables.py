@@ -22,6 +22,8 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
                  "diameter_m": (0.0, 100.0), "n_blades": (1.0, 100.0),
                  # the chord Reynolds numbers at 0.75 R of the data's rates, in the fit's air (since 2026-11-26)
                  "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9)}
+#: the [coverage] keys whose lower end is open (a hand-edited diameter_m = 0 silenced the size check: an audit)
+COVERAGE_OPEN_LOW = ("diameter_m", "re75_min", "re75_max")
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
 #: saw and held out, so that `propmap validate` can say which of its rows are in-sample; each data file's SHA-256
 #: (files_sha256, since 2026-11-26), so that it can say so for a part of them too
@@ -82,8 +84,10 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
                          f"{', '.join([*COVERAGE_KEYS, *COVERAGE_TEXT_KEYS])})")
     text = {}
     for k, v in table.items():
-        if k not in COVERAGE_TEXT_KEYS:
-            check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], False, False, ""))
+        if k not in COVERAGE_TEXT_KEYS:  # (a diameter and a Reynolds number of 0 are no data's: open below)
+            check_number(v, f"{COVERAGE_TABLE}.{k}", where, (*COVERAGE_KEYS[k], k in COVERAGE_OPEN_LOW, False, ""))
+            if k == "n_blades" and float(v) != round(float(v)):
+                raise ValueError(f"{where}: [{COVERAGE_TABLE}] n_blades must be a whole number, got {short_repr(v)}")
             continue
         items = [v] if k in COVERAGE_SINGLE_TEXTS else v
         if not (isinstance(items, list) and len(items) <= COVERAGE_LIST_MAX
@@ -93,9 +97,9 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
                              + f" of at most {COVERAGE_TEXT_MAX} characters, got {short_repr(v)}")
         text[k] = v if k in COVERAGE_SINGLE_TEXTS else tuple(v)
     table = {k: v for k, v in table.items() if k not in COVERAGE_TEXT_KEYS}
-    if "rpm_min" in table and "rpm_max" in table and table["rpm_min"] > table["rpm_max"]:
-        raise ValueError(f"{where}: [{COVERAGE_TABLE}] rpm_min {table['rpm_min']:g} exceeds rpm_max "
-                         f"{table['rpm_max']:g}")
+    for lo, hi in (("rpm_min", "rpm_max"), ("re75_min", "re75_max")):
+        if lo in table and hi in table and table[lo] > table[hi]:
+            raise ValueError(f"{where}: [{COVERAGE_TABLE}] {lo} {table[lo]:g} exceeds {hi} {table[hi]:g}")
     return {**{k: float(v) for k, v in table.items()}, **text}
 
 
