@@ -298,6 +298,16 @@ def test_cli_loads_adds_the_parameter_sets_collective_and_says_so(tmp_path, caps
     assert "collective 5 deg (3 of the parameter set + 2)" in capsys.readouterr().out
     assert main(["loads", "apce_8x6", "--rpm", "6000", "--params", str(f), "--collective-deg", "45"]) == 2
     assert "the parameter set's collective 3 deg plus 45 deg must be within [-45, 45] deg" in capsys.readouterr().err
+    # trim's collective_deg is the same total (it was the part added to the set's: a JSON audit, 2026-11-26); the
+    # thrust of the set at a total of 0 deg, below its static peak near +1 deg (trim takes the rising branch)
+    zero = float(pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6"), 6000 * RPM, 0.0,
+                                0.0).thrust)
+    assert main(["trim", "apce_8x6", "--rpm", "6000", "--params", str(f), "--thrust", f"{zero!r}", "--range-deg", "-5",
+                 "0", "--json"]) == 0
+    t = json.loads(capsys.readouterr().out)
+    assert t["params_collective_deg"] == 3.0 and t["added_collective_deg"] == pytest.approx(-3.0, abs=1e-6)
+    assert t["collective_deg"] == pytest.approx(0.0, abs=1e-6) and t["thrust_target"] == zero
+    assert t["range_deg"] == [-5.0, 0.0]
     pts = tmp_path / "p.csv"
     pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,44\n")
     assert main(["loads", "apce_8x6", "--params", str(f), "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2

@@ -8,7 +8,7 @@ import click
 
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
                       air_label, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      with_prop_options)
+                      set_collective_deg, with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
 
 
@@ -65,7 +65,10 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
                       airspeed=airspeed)
     r = res.loads
     d = _descent_outputs(r)
-    out = {"collective_deg": math.degrees(float(res.collective)), "branch": res.branch,
+    added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
+    set_deg = set_collective_deg(params)
+    out = {"collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
+           "branch": res.branch,
            "solutions_seen": int(res.n_solutions), "thrust": float(r.thrust), "drag": float(r.drag),
            "torque": float(r.torque), "power": float(r.power), "CT": float(r.CT), "CQ": float(r.CQ),
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
@@ -73,7 +76,8 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     if as_json:
         echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
                    "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
-                   "incidence_deg": incidence_deg, "air": {"rho": air.rho, "mu": air.mu,
+                   "incidence_deg": incidence_deg, "thrust_target": thrust, "range_deg": [lo, hi],
+                   "air": {"rho": air.rho, "mu": air.mu,
                                                            "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W", "collective_deg": "deg"}})
@@ -82,7 +86,8 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
                f"(params {label})")
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
     click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
-               f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg)")
+               + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
+               + f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg added)")
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
     if dcq is not None:
         click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
