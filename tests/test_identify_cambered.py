@@ -168,7 +168,7 @@ def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):
 def test_a_fit_that_does_not_describe_its_data_says_so_first(apc8x6):
     """Two propellers' data in one set (apce_8x6 and apce_10x7, UIUC vol. 1, fitted as the 8x6E):
     an rms residual of 0.38 of the measured coefficients' rms, where the catalogue's own fits
-    leave 0.03-0.10; said before the bound warnings (a user-level audit: a stand export of two
+    leave 0.012-0.104; said before the bound warnings (a user-level audit: a stand export of two
     propellers was fitted with exit 0, the evaluation limit fourth in the report). One
     propeller's own data are not warned of."""
     from propmap.io.catalogue import get_entry

@@ -273,7 +273,7 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
     if not off:
         return []
     found = _other_counts(ratio, data, propeller, ratios, loads_at, pole_pairs, loaded)
-    said = " and ".join(f"{k} is {v:.2f} times (outside {1 / SANITY_WARN[k]:.2g}-{SANITY_WARN[k]:g}x)"
+    said = " and ".join(f"{k} is {v:.3g} times (outside {1 / SANITY_WARN[k]:.3g}-{SANITY_WARN[k]:g}x)"
                         for k, v in off.items())
     catalogue = (" (the generic set is outside these for 5% of the catalogue's propellers)"
                  if label == "the generic set" else "")
