@@ -449,3 +449,11 @@ def test_pe0_chord_beyond_the_radius_is_refused_naming_the_line(capsys, tmp_path
     bad.write_text("".join(lines), encoding="latin-1")
     code, _, err = run(capsys, "loads", bad, "--rpm", "8000")
     assert one_line_error(code, err, f"line {k + 1}: CHORD = 1e+300 in is outside"), err
+
+
+def test_a_long_non_ascii_name_is_measured_in_bytes(capsys, tmp_path):
+    """The name limit is in bytes: 120 accented characters (240 bytes) were said to be '120
+    characters ... give at most 241 characters' (a JSON/pipeline audit, 2026-11-26)."""
+    code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / ("é" * 120 + ".toml"))
+    assert one_line_error(code, err, "--out: ") and "(245 bytes, 125 characters) is too long" in err, err
+    assert "bytes" in err.split("give at most")[1]

@@ -164,9 +164,12 @@ def _probe(option: str, folder: Path, name: str) -> None:
                 name_max = os.pathconf(folder, "PC_NAME_MAX")
             except (OSError, ValueError):
                 name_max = 255
-            most = name_max - (len(prefix) + len(suffix) + 8 - len(name))  # mkstemp adds 8 characters
-            raise InputError(f"{option}: the name {_short(name)!r} ({len(name)} characters) is too long with the "
-                             f"temporary file's affixes; give at most {most} characters") from None
+            # (the limit is in bytes of the file system's encoding: a name of 127 accented characters once read as
+            # "at most 241 characters"; mkstemp adds 8 characters)
+            size = len(os.fsencode(name))
+            most = name_max - (len(os.fsencode(prefix)) + len(os.fsencode(suffix)) + 8 - size)
+            raise InputError(f"{option}: the name {_short(name)!r} ({size} bytes, {len(name)} characters) is too "
+                             f"long with the temporary file's affixes; give at most {most} bytes") from None
         raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
     try:
         os.close(fd)
