@@ -48,6 +48,7 @@ def test_fit_loads_catalogue_with_holdout(capsys, tmp_path):
     assert "held-out (2801rd, 2802rd) CT rmse: fitted 0.002" in stdout
     rep = json.loads((tmp_path / "f.report.json").read_text())
     assert rep["holdout"]["fitted"]["ct_rmse"] < 0.5 * rep["holdout"]["baseline"]["ct_rmse"]
+    assert rep["propmap_version"] == pm.__version__  # (recorded as maps and exports do: a JSON audit)
     # judging held-out runs, the base (and the prior) come from the catalogue half without apce_8x6
     from propmap.io.calibration import generic_without
 

@@ -140,8 +140,10 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     from ..io.atomic import atomic_write
     from ..io.params_file import write_params
 
+    from .. import __version__
+
     report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage,
-              "data_warnings": list(data_warnings)}
+              "data_warnings": list(data_warnings), "propmap_version": __version__}  # (as maps and exports record it)
     write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body,
                  coverage=coverage)
     stem = out.with_suffix("")
