@@ -368,8 +368,13 @@ def test_the_package_data_is_never_an_output(capsys, tmp_path, points):
 
 
 def test_two_outputs_of_one_command_may_not_be_the_same_file(capsys, tmp_path):
-    code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / "f.png")
-    assert one_line_error(code, err, "give outputs different names") and list(tmp_path.iterdir()) == []
+    """A fit's --out f.png was its own figure (refused as two outputs of one name); since 2026-11-26 a
+    parameter file's name must end in .toml, so no fit output can be another's (--out f.report.json
+    wrote TOML over another fit's report: a JSON audit)."""
+    for name in ("f.png", "g.report.json"):
+        code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / name)
+        assert one_line_error(code, err, "--out: a parameter file is TOML: give a name ending in .toml")
+    assert list(tmp_path.iterdir()) == []
 
 
 @pytest.mark.parametrize(

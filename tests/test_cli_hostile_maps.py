@@ -248,7 +248,7 @@ def test_out_name_too_long_for_its_temporary_file_is_refused_before_solving(caps
     name = "a" * 250 + ".csv"  # a valid name, too long once the temporary file's affixes are added
     code, _, err = run(capsys, "loads", "apce_8x6", "--points", src, "--out", tmp_path / name)
     assert one_line_error(code, err, "--out: the name 'aaaa"), err
-    assert "too long with the temporary file's affixes; give at most 241 characters" in err
+    assert "too long with the temporary file's affixes; give at most 241 bytes" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.csv"]
 
 

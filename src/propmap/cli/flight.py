@@ -10,7 +10,7 @@ import click
 from ._common import (InputError, PathArg, coverage_messages, envelope_extremes, load_params, parse_names,
                       resolve_air, with_air_options)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
-from .fit import _options, _run_fit, _write_outputs, with_fit_options
+from .fit import _options, _out_files, _run_fit, _write_outputs, with_fit_options
 
 def _vehicle(path: Path):
     from ..vehicle import VehicleFileError, read_vehicle
@@ -160,9 +160,9 @@ def _table(rows: list[tuple[str, dict]]) -> str:
 
 
 def _flight_out_files(out: Path) -> list:
+    """fit._out_files and the speed figure beside them."""
     stem = Path(out).with_suffix("")
-    return [("--out", Path(out))] + [("--out (report/figure beside it)", stem.with_name(stem.name + s))
-                                     for s in (".report.json", ".report.txt", ".png", ".speed.png")]
+    return _out_files(out) + [("--out (report/figure beside it)", stem.with_name(stem.name + ".speed.png"))]
 
 
 @click.command("flight")
