@@ -37,6 +37,12 @@ def test_fit_level_flight_writes_params_report_and_figure(capsys, tmp_path):
     # the fitted file is accepted back by loads and validate
     assert run(capsys, "loads", "apce_8x6", "--rpm", "6000", "--params", str(out))[0] == 0
     assert run(capsys, "validate", "apce_8x6", "--params", str(out), "--figure", str(tmp_path / "v.png"))[0] == 0
+    # and records what its data covered (it wrote no [coverage]: a JSON audit, 2026-11-26): the vehicle's
+    # propeller, its rates and airspeeds, so that another propeller and other rates are warned of
+    assert rep["coverage"]["propeller"] == "apce_8x6" and rep["coverage"]["airspeed_max"] == 14.0
+    assert 80 < rep["coverage"]["incidence_deg_max"] < 90  # (level flight: near edgewise; hover rows not counted)
+    code, _, err = run(capsys, "loads", "apce_10x7", "--rpm", "9000", "--params", str(out))
+    assert code == 0 and "fitted to data of apce_8x6" in err and "the data behind" in err, err
 
 
 def test_fit_loads_catalogue_with_holdout(capsys, tmp_path):

@@ -136,6 +136,22 @@ def _coverage(data, prop, air) -> dict:
             "re75_min": float(re75[0]), "re75_max": float(re75[1])}
 
 
+def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:
+    """The [coverage] keys of a vehicle's propeller, where every rotor carries one geometry (its
+    name, diameter, blade count and the chord Reynolds numbers at 0.75 R of the rates
+    ``omega_min``..``omega_max`` [rad/s] in ``air``), as a load fit records its propeller; {}
+    where the rotors differ (a flight fit's file ran an 8 in propeller unwarned: a user-level
+    audit, 2026-11-26)."""
+    import numpy as np
+
+    prop = veh.rotors[0].propeller
+    if not all(r.propeller.same_geometry(prop) for r in veh.rotors):
+        return {}
+    re75 = prop.reynolds_75(np.array([omega_min, omega_max]), air)
+    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
+            "re75_min": float(re75[0]), "re75_max": float(re75[1])}
+
+
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
                    body=None, coverage=None, header: str = "", figure_suffixes=(".png",), data_warnings=()) -> dict:
     """Write the parameter file and its reports, and print the report. ``data_warnings``: what
@@ -227,6 +243,16 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     forces = level_flight_forces(res.params, d, veh, air=air)
     hover = hover_vertical_force(res.params, d, veh, air=air)
     rms_model = np.sqrt(np.mean((forces['vertical'] - veh.weight) ** 2))
+    n = d.omega / (2 * math.pi)  # (N, n_rotors); what the data cover, as a load fit's and a flight fit's files record
+    V_axial = d.airspeed[:, None] * np.cos(forces["beta"])
+    D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
+    moving = d.airspeed > 0.3  # (a hover row's incidence names no flow)
+    coverage = {"J_max": max(0.0, float(np.max(V_axial / (n * D)))),
+                "incidence_deg_max": float(np.degrees(np.max(forces["beta"][moving]))) if moving.any() else 0.0,
+                "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
+                "airspeed_max": float(np.max(d.airspeed)),
+                **_vehicle_propeller(veh, float(np.min(d.omega)), float(np.max(d.omega)), air),
+                "data": Path(data).name, "data_sha256": data_digest([data]), "files_sha256": file_digests([data])}
     extra = (f"vertical-force error rms (rotors only): model {rms_model:.4f} N, "
              f"hover model {np.sqrt(np.mean((hover - veh.weight) ** 2)):.4f} N (weight {veh.weight:.3f} N)")
     if body_lift:
@@ -237,7 +263,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
                   + ("it matters (p < 0.05): the parameters written are those fitted with body lift"
                      if bl["matters"] else "not significant (p >= 0.05): the parameters written are those fitted "
                                            "without body lift"))
-    _write_outputs(res, out, base_label, as_json, extra, figure=lambda png: plot_level_flight_fit(
+    _write_outputs(res, out, base_label, as_json, extra, coverage=coverage, figure=lambda png: plot_level_flight_fit(
         d, forces, hover, veh.weight, png, title=f"level-flight fit of {data.name}: BET+BEMT (fitted) vs hover model"))
 
 

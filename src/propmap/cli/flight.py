@@ -10,7 +10,7 @@ import click
 from ._common import (InputError, PathArg, coverage_messages, envelope_extremes, load_params, parse_names,
                       resolve_air, with_air_options)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
-from .fit import _options, _out_files, _run_fit, _write_outputs, with_fit_options
+from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
 
 def _vehicle(path: Path):
     from ..vehicle import VehicleFileError, read_vehicle
@@ -360,14 +360,9 @@ def _flight_coverage(logs, veh, air) -> dict:
     axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
-    out = {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
-           "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed))}
-    prop = veh.rotors[0].propeller
-    if all(r.propeller.same_geometry(prop) for r in veh.rotors):
-        re75 = prop.reynolds_75(np.array([np.min(s.rotor_omega), np.max(s.rotor_omega)]), air)
-        out.update(propeller=prop.name, diameter_m=prop.diameter, n_blades=float(prop.n_blades),
-                   re75_min=float(re75[0]), re75_max=float(re75[1]))
-    return out
+    return {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
+            "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed)),
+            **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}
 
 
 def _hover_loads(params, veh, samples, air):
