@@ -126,30 +126,31 @@ def _coverage(data, prop, air) -> dict:
     import numpy as np
 
     n = data.omega / (2 * math.pi)
-    re75 = prop.reynolds_75(np.array([data.omega.min(), data.omega.max()]), air)
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
     return {"J_max": max(0.0, float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter)))),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
             "airspeed_max": float(np.max(data.airspeed)),
-            "propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
+            **_propeller_keys(prop, float(data.omega.min()), float(data.omega.max()), air)}
+
+
+def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
+    """The [coverage] keys of the propeller fitted: its name, diameter [m], blade count and the
+    chord Reynolds numbers at 0.75 R of the rates ``omega_min``..``omega_max`` [rad/s] in
+    ``air`` (:meth:`Propeller.reynolds_75`)."""
+    re75 = prop.reynolds_75([omega_min, omega_max], air)
+    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
             "re75_min": float(re75[0]), "re75_max": float(re75[1])}
 
 
 def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:
-    """The [coverage] keys of a vehicle's propeller, where every rotor carries one geometry (its
-    name, diameter, blade count and the chord Reynolds numbers at 0.75 R of the rates
-    ``omega_min``..``omega_max`` [rad/s] in ``air``), as a load fit records its propeller; {}
-    where the rotors differ (a flight fit's file ran an 8 in propeller unwarned: a user-level
+    """:func:`_propeller_keys` of a vehicle's propeller where every rotor carries one geometry;
+    {} where the rotors differ (a flight fit's file ran an 8 in propeller unwarned: a user-level
     audit, 2026-11-26)."""
-    import numpy as np
-
     prop = veh.rotors[0].propeller
     if not all(r.propeller.same_geometry(prop) for r in veh.rotors):
         return {}
-    re75 = prop.reynolds_75(np.array([omega_min, omega_max]), air)
-    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
-            "re75_min": float(re75[0]), "re75_max": float(re75[1])}
+    return _propeller_keys(prop, omega_min, omega_max, air)
 
 
 def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text: str = "", figure=None,
@@ -252,7 +253,8 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
                 "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
                 "airspeed_max": float(np.max(d.airspeed)),
                 **_vehicle_propeller(veh, float(np.min(d.omega)), float(np.max(d.omega)), air),
-                "data": Path(data).name, "data_sha256": data_digest([data]), "files_sha256": file_digests([data])}
+                "data": Path(data).name, "files_sha256": file_digests([data])}
+    coverage["data_sha256"] = data_digest([data], coverage["files_sha256"])
     extra = (f"vertical-force error rms (rotors only): model {rms_model:.4f} N, "
              f"hover model {np.sqrt(np.mean((hover - veh.weight) ** 2)):.4f} N (weight {veh.weight:.3f} N)")
     if body_lift:
@@ -312,15 +314,18 @@ def file_digests(sources) -> list[str]:
     return [file_sha256(Path(s)) for s in sources if _is_file(Path(s))]
 
 
-def data_digest(sources) -> str:
+def data_digest(sources, files=None) -> str:
     """SHA-256 over the SOURCE arguments' contents, whatever their order (each file's digest, the
     digests sorted; a catalogue name: its name): what tells a fit's data from another file of
     the same name (``[coverage] data_sha256``).
 
     Parameters
     ----------
-    sources : iterable of str or Path
+    sources : sequence of str or Path
         The files (or a catalogue name) a fit read.
+    files : list of str, optional
+        :func:`file_digests` of ``sources``, where already computed (the files are not read
+        again).
 
     Returns
     -------
@@ -334,9 +339,8 @@ def data_digest(sources) -> str:
     """
     import hashlib
 
-    from ..io.atomic import file_sha256
-
-    parts = sorted(bytes.fromhex(file_sha256(Path(s))) if _is_file(Path(s)) else str(s).encode() for s in sources)
+    each = iter(file_digests(sources) if files is None else files)  # (in the order of the file sources)
+    parts = sorted(bytes.fromhex(next(each)) if _is_file(Path(s)) else str(s).encode() for s in sources)
     return hashlib.sha256(b"".join(parts)).hexdigest()
 
 
@@ -614,8 +618,9 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                      f"({said}): what it learned from the fitted groups does not carry to these")
         def figure(png):
             plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
-    coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources),
-                "files_sha256": file_digests(sources),
+    files = file_digests(sources)  # (each file read once for both digests)
+    coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources, files),
+                "files_sha256": files,
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

@@ -72,14 +72,12 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
             raise InputError(f"--check: {str(path)[:80]}{'' if prop is None else f' [{prop}]'}: {exc}") from None
         worst = {k: res[f"check_cubic_{k}_max"] / (2.0 if k == "drag" else 1.0) for k in ("thrust", "torque", "drag")}
         over = [k for k, v in worst.items() if not math.isnan(v) and v > limit / 100]
-        untested = res["check_points_flagged"] >= n  # (every point flagged: nothing measured, no pass)
-        nan = not untested and all(math.isnan(v) for v in worst.values())  # (unflagged points, no finite error)
-        if over or untested or nan:
-            failed.append(f"{rm.attrs.get('propeller')}: " + (
-                ", ".join(over) if over else "not tested, every check point in a flagged cell" if untested else
-                "no finite error at the unflagged check points"))
-        untested = untested or nan
-        results.append((prop, rm, seed, res, over, untested))
+        # nothing measured is no pass: every point flagged, or no finite error at the unflagged ones
+        why = ("every check point in a flagged cell" if res["check_points_flagged"] >= n else
+               "no finite error at the unflagged check points" if all(math.isnan(v) for v in worst.values()) else None)
+        if over or why:
+            failed.append(f"{rm.attrs.get('propeller')}: " + (", ".join(over) if over else f"not tested, {why}"))
+        results.append((prop, rm, seed, res, over, why is not None))
     if as_json:
         out = []
         for prop, rm, seed, res, over, untested in results:

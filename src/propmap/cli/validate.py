@@ -182,8 +182,9 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     seen = set(cov.get("held_out", ())) | set(cov.get("groups", ()))
     every = [str(g) for g in dict.fromkeys(data.group)]  # (the data's groups, one or more)
     fit_files = set(cov.get("files_sha256", ()))
+    files = file_digests(sources) if cov else []  # (each file read once, for either rule)
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
-        mine = dict(zip([s for s in sources if _is_file(Path(s))], file_digests(sources)))
+        mine = dict(zip([s for s in sources if _is_file(Path(s))], files))
         matched = [s for s, h in mine.items() if h in fit_files]
         if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
             pairs = {g: g for g in every if g in seen} if matched else {}  # (a row's label -> the fit's label)
@@ -197,7 +198,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
                 if names & seen and names & set(every):
                     pairs[min(names & set(every))] = min(names & seen)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted") for g, f in pairs.items()}
-    elif cov.get("data") == what and cov.get("data_sha256", data_digest(sources)) == data_digest(sources):
+    elif cov.get("data") == what and cov.get("data_sha256") in (None, data_digest(sources, files)):
         # (by content: another day's file of the same name once read as this fit's data; a file written before
         # 2026-11-26 has the name and the files' joint digest only)
         in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in every if g in seen}

@@ -89,6 +89,7 @@ text keys (``comment``, ``source``) must be TOML strings.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import fields
 from pathlib import Path
@@ -326,11 +327,22 @@ def set_coverage(label: str) -> dict | None:
     from .calibration import coverage
 
     if label and Path(label).is_file():
-        try:
-            return read_coverage(label)
-        except ValueError:
-            return None
+        st = Path(label).stat()  # (by content's stamp: a command reads it for several checks, once)
+        found = _file_coverage(str(Path(label).resolve()), st.st_mtime_ns, st.st_size)
+        return None if found is None else dict(found)
     return coverage(label)
+
+
+@functools.lru_cache(maxsize=16)
+def _file_coverage(path: str, mtime_ns: int, size: int) -> dict | None:
+    """:func:`read_coverage` of ``path`` (None for a file that does not read), remembered for its
+    modification time and size: a command's checks (the fitted propeller, the envelope, the
+    model uncertainty, validate's labels) each asked for it, and the file was read up to four
+    times."""
+    try:
+        return read_coverage(path)
+    except ValueError:
+        return None
 
 
 #: rotor options a file without the key has off, silently (they came later than the files written before them)
