@@ -337,8 +337,8 @@ def set_coverage(label: str) -> dict | None:
 def _file_coverage(path: str, mtime_ns: int, size: int) -> dict | None:
     """:func:`read_coverage` of ``path`` (None for a file that does not read), remembered for its
     modification time and size: a command's checks (the fitted propeller, the envelope, the
-    model uncertainty, validate's labels) each asked for it, and the file was read up to four
-    times."""
+    model uncertainty, validate's labels) each asked for it (``loads`` and ``validate`` with a
+    fitted file read it twice, once since; measured 2026-11-26)."""
     try:
         return read_coverage(path)
     except ValueError:
