@@ -62,7 +62,7 @@ def test_stopped_rows_and_a_spin_down_are_left_out_with_a_note(tmp_path, truth_p
 
 def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_params):
     """A stand export that ends with a row of an empty rotation speed and empty load cells (the
-    test ended) reads as without it; an empty load cell where the motor runs is still refused."""
+    test ended) reads as without it."""
     path = tmp_path / "s.csv"
     write_steps_export(path, params=truth_params, steps=STEPS[:8])
     text = path.read_text(encoding="utf-8-sig")
@@ -78,14 +78,53 @@ def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_pa
                                                  ("0" if "Speed" in h else "")) for h in header]
     path.write_text(text.rstrip("\n") + "\n" + ",".join(zero) + "\n", encoding="utf-8")
     assert read_loads(path).n == full.n
-    # a running row with an empty thrust cell: refused, naming the column
-    rows = text.splitlines()
+
+
+@pytest.mark.parametrize("cell", ["", "NaN", "n/a"])
+def test_a_running_rows_missing_load_is_a_dropout_skipped_with_a_note(tmp_path, truth_params, cell):
+    """A sample whose thrust or torque cell is empty or NaN where the motor runs (a load cell's
+    dropout in a stand's log) is skipped with a note naming the column and the first line; the
+    steps' averages are those of the other samples. A table of points (no ESC or time column:
+    each row a point) still refuses such a cell."""
+    path = tmp_path / "s.csv"
+    truth = write_steps_export(path, params=truth_params, steps=STEPS[:8])
+    full = read_loads(path)
+    rows = path.read_text(encoding="utf-8-sig").splitlines()
+    header = rows[0].split(",")
     k = header.index(next(h for h in header if h.startswith("Thrust")))
-    cells = rows[-1].split(",")
-    cells[k] = ""
-    path.write_text("\n".join(rows[:-1] + [",".join(cells)]) + "\n", encoding="utf-8")
-    with pytest.raises(DataError, match=r"column .Thrust \(gf\). is empty"):
-        read_loads(path)
+    q = header.index("Torque (N·m)")
+    for i, j in ((-1, k), (-5, q), (40, k)):  # the last step's steady samples; a stopped or settling row
+        cells = rows[i].split(",")
+        cells[j] = cell
+        rows[i] = ",".join(cells)
+    path.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == full.n == len(truth)
+    note = next(n for n in data.notes if "running rows skipped" in n)
+    assert "'Thrust (gf)'" in note and "'Torque (N·m)'" in note and "dropout" in note, note
+    # the last step averaged over its other samples: within its noise of the full average
+    np.testing.assert_allclose(data.measured["thrust"], full.measured["thrust"], rtol=2e-3)
+    np.testing.assert_allclose(data.measured["torque"], full.measured["torque"], rtol=2e-3)
+    np.testing.assert_allclose(data.measured["thrust"], truth[:, 1], rtol=0.01)
+    assert not np.array_equal(data.measured["thrust"], full.measured["thrust"])  # the sample was dropped
+    # a torque cell the stand left empty in every row: the torque not read, with a note
+    rows = path.read_text(encoding="utf-8").splitlines()
+    blank = []
+    for r in rows[1:]:
+        cells = r.split(",")
+        cells[q] = cell
+        blank.append(",".join(cells))
+    path.write_text("\n".join(rows[:1] + blank) + "\n", encoding="utf-8")
+    data = read_loads(path)
+    assert "torque" not in data.measured and data.n == full.n
+    assert any("'Torque (N·m)' empty (or NaN) in every running row: not read" in n for n in data.notes), data.notes
+    # a table of points: each row is a point, a missing thrust refused naming its line and column
+    table = tmp_path / "points.csv"
+    lines = [f"{r},{r / 3000:.3f},{r / 1e5:.4f}" for r in range(3000, 9001, 1000)]
+    lines[2] = f"5000,{cell},0.0500"
+    table.write_text("rpm,thrust_N,torque_Nm\n" + "\n".join(lines) + "\n", encoding="utf-8")
+    with pytest.raises(DataError, match=r"line 4: column 'thrust_N'"):
+        read_loads(table)
 
 
 def test_a_negative_rotation_speed_is_its_magnitude_or_refused_where_signs_mix(tmp_path):

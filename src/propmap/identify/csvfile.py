@@ -190,12 +190,14 @@ class _Csv:
                 msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
-    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=()) -> tuple[dict, dict,
-                                                                                               np.ndarray]:
+    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=(), gaps=()) -> tuple[
+            dict, dict, np.ndarray]:
         """(numbers by column, text by column, line of each row) for the named columns; an
         empty cell of a column in ``optional`` is NaN instead of an error, and so is every
         empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty or 0:
-        a stopped motor's row, e.g. a stand export's last line after the test ended."""
+        a stopped motor's row, e.g. a stand export's last line after the test ended. A cell of a
+        column in ``gaps`` that is empty or a missing-value mark (``NaN``, ``n/a``, ``-``, ...;
+        MISSING_MARKS) is NaN too: a sensor's dropout in a sampled log, which the caller drops."""
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -212,7 +214,7 @@ class _Csv:
                                          for c in stop)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
-                if not cell and (c in optional or stopped):
+                if (not cell and (c in optional or stopped)) or (c in gaps and cell.lower() in ("", *MISSING_MARKS)):
                     nums[c].append(math.nan)
                     continue
                 if not cell:

@@ -82,7 +82,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         lines), not UTF-8, a malformed CSV (unterminated quote, more fields than the
         header), no rotation-speed or no load column (the message lists the columns found
         and what was looked for), a unit it does not know, two columns for one quantity, an
-        empty (except a rotation speed: an empty one is a stopped motor, skipped),
+        empty (except a rotation speed: an empty one is a stopped motor, skipped; and a load
+        cell of a sampled log, a file with an ESC or time column, empty or NaN: that row is
+        skipped with a note, a load column empty in every running row not read),
         non-numeric or non-finite value, a rotation speed negative in some rows and positive
         in others, a value out of range (rpm outside
         (0, 954929] once stopped rows are skipped, airspeed outside [0, 500] m/s,
@@ -116,8 +118,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                              if q in cm.columns), *keys]
     low = {q: cm.column(q).lower() for q in quantities}
     optional = {low[q] for q in speeds} | {low[q] for q in ("time", "air_density") if q in low}
+    # a sampled log (a stand export, a time column): a load cell empty or NaN in a row is a sensor's dropout, that
+    # row skipped below; in a table of points each row is a point and such a cell is refused
+    sampled = "esc" in cm.columns or "time" in cm.columns
     raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional,
-                               stop={low[q] for q in speeds})
+                               stop={low[q] for q in speeds}, gaps={low[q] for q in keys} if sampled else ())
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
     # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
@@ -187,6 +192,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         v = {k: a[keep] for k, a in v.items()}
         lines = lines[keep]
         texts = {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}
+    if sampled:
+        v, lines, texts, keys = _skip_dropouts(v, lines, texts, keys, cm, what, p, notes)
     n = lines.size
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
@@ -266,6 +273,32 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
 #: an optical probe's gaps are filled from the electrical speed where the two agree within this (median ratio)
 OPTICAL_ELECTRICAL_TOL = 0.03
+
+
+def _skip_dropouts(v: dict, lines: np.ndarray, texts: dict, keys: list, cm, what: str, p: str, notes: list):
+    """A sampled log's running rows with a load cell empty or NaN skipped, with a note (the
+    first line named); a load column with no value in any running row is not read (a sensor
+    the stand lacks), unless it is the only one. Returns (v, lines, texts, keys)."""
+    empty = [k for k in keys if lines.size and np.isnan(v[k]).all()]
+    if empty and len(empty) == len(keys):
+        raise DataError(f"{what}: {p}: {', '.join(repr(cm.column(k)) for k in empty)} empty (or NaN) in every running "
+                        "row: no loads to read")
+    if empty:
+        notes.append(f"{', '.join(repr(cm.column(k)) for k in empty)} empty (or NaN) in every running row: not read "
+                     "(a sensor the stand lacks?)")
+        v = {k: a for k, a in v.items() if k not in empty}
+        keys = [k for k in keys if k not in empty]
+    gap = np.zeros(lines.size, dtype=bool)
+    for k in keys:
+        gap |= np.isnan(v[k])
+    if not gap.any():
+        return v, lines, texts, keys
+    names = ", ".join(repr(cm.column(k)) for k in keys if np.isnan(v[k]).any())
+    notes.append(f"{int(gap.sum())} of {gap.size} running rows skipped: {names} empty or NaN there (a sensor's "
+                 f"dropout; the first at line {lines[int(np.argmax(gap))]})")
+    keep = ~gap
+    return ({k: a[keep] for k, a in v.items()}, lines[keep],
+            {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}, keys)
 
 
 def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, notes: list) -> np.ndarray:
