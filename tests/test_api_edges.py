@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
+from propmap.identify import FitOptions, LoadData, fit_loads, loads_from_catalogue
 from propmap.io.catalogue import catalogue
 
 
@@ -52,6 +52,30 @@ def test_rpm_given_as_rad_per_s_is_warned_from_tip_mach_0_8():
     with pytest.warns(UserWarning, match=r"at Mach 0\.8[12] \(> 0\.8\)") as caught:
         pm.rotor_loads(rotor.propeller, pm.generic_params(), 35000 * math.pi / 30, 40.0, math.pi / 2)
     assert not any("rpm" in str(w.message) for w in caught)
+
+
+def test_a_fit_of_data_past_tip_mach_0_8_warns_once_not_at_every_evaluation():
+    """Load data of a 10 in propeller at 2300-2800 rpm given as rad/s (blade tips at Mach 0.9-1.1):
+    fit_loads warned at each of its model evaluations under an "always" filter (7 warnings);
+    now once, naming the data, with the rpm hint past Mach 1. Data below Mach 0.8: none."""
+    prop = pm.load_propeller("apce_10x7")
+    params = pm.default_params("apce_10x7")
+    zero = np.zeros(8)
+    for omega, said in ((np.linspace(2300.0, 2800.0, 8), True), (np.linspace(300.0, 900.0, 8), False)):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            r = pm.rotor_loads(prop, params, omega, zero, zero)
+        data = LoadData(omega, zero, zero, {"thrust": r.thrust, "torque": r.torque}, np.full(8, "a", dtype=object),
+                        "stand.csv")
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            fit_loads(data, prop)
+        tips = [str(w.message) for w in caught if "Mach" in str(w.message)]
+        if said:
+            assert len(tips) == 1 and re.search(r"at Mach 1(\.\d+)? \(> 0\.8\) in stand\.csv: .*said once for the fit; "
+                                                r"is the rotation speed given in rpm", tips[0]), tips
+        else:
+            assert tips == []
 
 
 def test_a_masked_array_with_masked_entries_is_refused(apc):

@@ -19,13 +19,16 @@ identify/continuation.py (the continuation in M) and identify/result.py
 
 from __future__ import annotations
 
+import contextlib
 import math
+import warnings
 from dataclasses import replace
 
 import numpy as np
 
 from ..core.airfoil import Air, CamberedParams, SectionParams
-from ..core.solver import OMEGA_MIN, differentiable, rotor_loads
+from ..core.air import SUPERSONIC_TIP
+from ..core.solver import OMEGA_MIN, TIP_MACH_WARN, differentiable, rotor_loads, supersonic_tips_allowed
 from .data import LoadData
 from .load_data import STATIC_AIRSPEED
 from .continuation import _fit_with_continuation
@@ -191,15 +194,25 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     """
     norm, scales = _load_norms(data, propeller, keys, air)
     rows = _fitted_rows(data, keys)
+    # blade tips past TIP_MACH_WARN in the data: said once here, not by every evaluation of the fit (7-100 of them)
+    tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),
+                                data.airspeed * np.cos(data.incidence)), initial=0.0)) / air.speed_of_sound
+    quiet = tip > TIP_MACH_WARN
+    if quiet:
+        warnings.warn(f"{SUPERSONIC_TIP} {tip:.2g} (> {TIP_MACH_WARN:g}) in {data.source or 'the data'}: near or "
+                      "past the end of the model's compressibility (its Prandtl-Glauert factor stops at Mach 0.9); "
+                      "said once for the fit" + ("; is the rotation speed given in rpm where rad/s is meant?"
+                                                 if tip > 1 else ""), UserWarning, stacklevel=3)
     # each quantity's fitted rows, measured value and divisor, once (not at every residual evaluation)
     fitted = {k: (rows[k], data.measured[k][rows[k]], norm[k][rows[k]] * scales[k]) for k in keys}
 
     def make(opts):
         def loads(x, derivatives=False):
             p = _params_from(x, names, base, opts)
-            return rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
-                               discretization=opts.discretization, collective=data.collective,
-                               derivatives=names if derivatives else False)
+            with supersonic_tips_allowed() if quiet else contextlib.nullcontext():
+                return rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
+                                   discretization=opts.discretization, collective=data.collective,
+                                   derivatives=names if derivatives else False)
 
         def errors(r):
             model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
@@ -266,6 +279,12 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         parameters + 1, or a measured quantity that is zero everywhere.
     SolverError
         From the rotor model.
+
+    Warns
+    -----
+    UserWarning
+        Once, where the data's blade tips pass Mach 0.8 (the solver's TIP_MACH_WARN; its own
+        warning is held during the fit's evaluations).
 
     Notes
     -----
