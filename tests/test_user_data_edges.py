@@ -475,7 +475,7 @@ def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
     other_day.mkdir()
     (other_day / "runs.csv").write_text(f.read_text().replace("\n3000.0,0.0,", "\n3000.0,0.0,1", 1))
     assert len(cov["data_sha256"]) == 64
-    from propmap.cli.fit import data_digest
+    from propmap.cli._sources import data_digest
 
     assert data_digest([f, g]) == data_digest([g, f]) != data_digest([f])  # (whatever the files' order)
     assert main(["validate", str(other_day / "runs.csv"), "--prop", "apce_8x6", "--params", str(out)]) == 0

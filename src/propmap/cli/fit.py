@@ -9,9 +9,10 @@ from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, PropChoice, _short, check_section_match, load_params, option_group,
+from ._common import (InputError, PathArg, _short, check_section_match, load_params, option_group,
                       parse_names, resolve_air, warn, with_air_options, with_prop_options)
-from ._paths import _is_file, check_outputs, refuse_copies, vehicle_inputs
+from ._paths import check_outputs, vehicle_inputs
+from ._sources import data_digest, file_air, file_digests, read_sources
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -292,176 +293,6 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
             and fitted[q + "_rmse"] - base[q + "_rmse"] > 0.02 * largest[q]]
 
 
-def file_digests(sources) -> list[str]:
-    """Each SOURCE file's SHA-256 (64 hexadecimal digits; a catalogue name gives none), in order:
-    ``[coverage] files_sha256``, which tells ``validate`` which of its files a fit read.
-
-    Parameters
-    ----------
-    sources : iterable of str or Path
-
-    Returns
-    -------
-    list of str
-
-    Raises
-    ------
-    OSError
-        A file that cannot be read.
-    """
-    from ..io.atomic import file_sha256
-
-    return [file_sha256(Path(s)) for s in sources if _is_file(Path(s))]
-
-
-def data_digest(sources, files=None) -> str:
-    """SHA-256 over the SOURCE arguments' contents, whatever their order (each file's digest, the
-    digests sorted; a catalogue name: its name): what tells a fit's data from another file of
-    the same name (``[coverage] data_sha256``).
-
-    Parameters
-    ----------
-    sources : sequence of str or Path
-        The files (or a catalogue name) a fit read.
-    files : list of str, optional
-        :func:`file_digests` of ``sources``, where already computed (the files are not read
-        again).
-
-    Returns
-    -------
-    str
-        64 hexadecimal digits.
-
-    Raises
-    ------
-    OSError
-        A file that cannot be read.
-    """
-    import hashlib
-
-    each = iter(file_digests(sources) if files is None else files)  # (in the order of the file sources)
-    parts = sorted(bytes.fromhex(next(each)) if _is_file(Path(s)) else str(s).encode() for s in sources)
-    return hashlib.sha256(b"".join(parts)).hexdigest()
-
-
-def _read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,
-                  min_points: int = 6):
-    """(data, propeller, catalogue entry or None, label) from the SOURCE arguments (a CSV of at
-    least ``min_points`` points: 6 to fit, 1 to compare)."""
-    from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
-    from ..io.catalogue import catalogue, get_entry
-    from ..io.readers import looks_like_uiuc
-
-    def refuse_stand_options(what: str) -> None:  # options of a stand's CSV that would be ignored
-        for option, value in (("--rpm-source", rpm_source), ("--pole-pairs", pole_pairs)):
-            if value is not None:
-                raise InputError(f"{option}: applies to a thrust-stand CSV with optical or electrical speed "
-                                 f"columns; SOURCE is {what}, whose rotation speed is the measured rpm")
-
-    if len(sources) == 1 and sources[0] in catalogue():
-        if prop_spec is not None:
-            raise InputError(f"--prop: SOURCE {sources[0]!r} is a catalogue propeller, fitted with its own "
-                             "geometry; --prop must be omitted")
-        refuse_stand_options(f"the catalogue propeller {sources[0]!r} (UIUC data)")
-        entry = get_entry(sources[0])
-        prop = prop_choice.load(sources[0])  # refuses both: the catalogue geometry fixes them
-        return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
-    missing = [s for s in sources if not _is_file(s)]
-    if missing and missing[0] in catalogue():
-        raise InputError(f"SOURCE: {_short(missing[0])!r} is a catalogue propeller: give it alone (its UIUC data), or "
-                         "files only (a catalogue propeller's data and files are not fitted together)")
-    if missing:
-        raise InputError(f"SOURCE: {_short(missing[0])!r} is neither a catalogue propeller nor a file"
-                         + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
-    if prop_spec is None:
-        raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
-    refuse_copies(sources, "SOURCE", "its data would count twice")
-    prop = prop_choice.load(prop_spec)
-    try:
-        other = [s for s in sources if not looks_like_uiuc(s)]
-        if not other:
-            refuse_stand_options("UIUC-format data")
-            _warn_other_propeller(sources, prop)
-            return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
-        if len(sources) > 1:
-            raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
-                             "(J CT CP eta) file; several files must all be, or give one CSV at a time")
-        data = read_loads(sources[0], min_points=min_points, rpm_source=rpm_source, pole_pairs=pole_pairs)
-        return data, prop, None, Path(sources[0]).name
-    except DataError as exc:
-        raise InputError(f"SOURCE: {exc}") from None
-
-
-def _file_air(data, air, air_choice):
-    """The fit's air: the file's logged density (LoadData.air_density) where no air option is
-    given (the set's viscosity and speed of sound kept), said in a note; beside an air option
-    that differs from it by more than 2%, a warning."""
-    rho = data.air_density
-    if rho is None:
-        return air
-    given = air_choice.options_given()
-    if not given:
-        click.echo(f"propmap: note: the fit's air density is the file's, {rho:.4g} kg/m^3 (--rho to give another)",
-                   err=True)
-        return replace(air, rho=rho)
-    if abs(air.rho / rho - 1.0) > 0.02:
-        warn(f"the air density from {' '.join(given)}, {air.rho:.4g} kg/m^3, is not the file's {rho:.4g} kg/m^3 "
-             "(fitted at the option's)")
-    return air
-
-
-def _warn_other_propeller(sources, prop) -> None:
-    """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
-    fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
-    case. A hub's blade count in the name (vol. 2's ``da4022_5x3.75_3b_...``, the 2-blade
-    geometry file shared), or a catalogue propeller's without one (``da4022_5x3.75_static_...``:
-    2 blades), is compared with --blades instead; a family geometry file (``da4002_geom.txt``)
-    covers its family's sizes, the size a data file's name gives compared with the geometry's
-    diameter (within 5%; read as io.geometry_files.size_from_name reads it)."""
-    import re
-
-    from ..io.catalogue import catalogue
-    from ..io.geometry_files import size_from_name
-    from ._common import warn
-
-    # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
-    # another propeller")
-    base = re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower())
-    for s in sources:
-        # the run id: digits then letters (2801rd) or letters then digits (rd0989, pg0812, kt0535)
-        m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$",
-                     Path(s).name, re.IGNORECASE)
-        if not (m and base):
-            continue
-        named = m.group(1).lower()
-        hub = re.fullmatch(r"(.+)_([1-9])b", named)
-        entry = catalogue().get(named)
-        if hub:
-            named, blades = hub.group(1), int(hub.group(2))
-            if blades != prop.n_blades:
-                warn(f"SOURCE: {_short(Path(s).name)} is named for a {blades}-blade hub ('_{blades}b'), used with "
-                     f"{prop.n_blades} blades: give --blades {blades} if that is the hub measured (a fitted section "
-                     "would otherwise absorb the blade count)")
-                return
-        elif entry is not None and entry.n_blades != prop.n_blades:  # (UIUC's 2-blade runs carry no suffix)
-            warn(f"SOURCE: {_short(Path(s).name)} is named for the catalogue's {named!r}, a {entry.n_blades}-blade "
-                 f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
-                 "measured (the thrust scales nearly with the blade count)")
-            return
-        if named != base and not named.startswith(base + "_"):
-            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
-                 f"{prop.name!r}; check that they are the same propeller")
-            return
-        D, _, unit, _ = size_from_name(named)  # (a family geometry file covers its sizes: the size the name gives
-        if D:                                   # is compared, read as the geometry reader reads a name)
-            d_in = D / 25.4 if unit == "mm" else D
-            if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
-                warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
-                     f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "
-                     "the propeller measured")
-                return
-
-
 @fit.command("loads")
 @click.argument("sources", metavar="SOURCE...", nargs=-1, required=True)
 @click.option("--holdout", default=None, help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
@@ -507,7 +338,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
 
     with warnings.catch_warnings(record=True) as caught:  # (said now, before the fit, and kept for the reports)
         warnings.simplefilter("always")
-        data, prop, entry, label = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+        data, prop, entry, label = read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
     data_warnings = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, UserWarning)))
     for w in caught:  # (a library's own warnings go the usual way, under the command's filters)
         if not issubclass(w.category, UserWarning):
@@ -516,7 +347,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         click.echo(f"propmap: note: {note}", err=True)
     for w in data_warnings:
         warn(w)
-    air = _file_air(data, air, air_choice)
+    air = file_air(data, air, air_choice)
     check_section_match(prop, base_label)
     qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
     missing = [q for q in (qty or ()) if q not in data.measured]

@@ -152,15 +152,15 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     """``validate SOURCE... --prop P``: a parameter set against the user's own load files."""
     from ..core.solver import SolverError
     from ..validation import load_errors
-    from .fit import _file_air, _read_sources, data_digest, file_digests
+    from ._sources import data_digest, file_air, file_digests, read_sources
 
     params, air, label = load_params(params_spec, prop_spec, option="--params")
     air = resolve_air(air, air_choice)
-    data, prop, _, what = _read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs, min_points=1)
+    data, prop, _, what = read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs, min_points=1)
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
     check_section_match(prop, label)
-    air = _file_air(data, air, air_choice)
+    air = file_air(data, air, air_choice)
     from ..identify.data import DataError, sanity_check
 
     try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
