@@ -76,6 +76,45 @@ def test_trim_round_trip(rotor, naca0015):
     assert np.all(res.n_solutions >= 1) and "lowest collective" in res.branch
 
 
+def test_a_thrust_reached_only_between_the_grids_nodes_near_the_peak_is_trimmed():
+    """A thrust a collective inside the bounds makes, but above every node of the 2.5 deg grid
+    (10.6228 N at 12,068 rpm in descent, its peak 10.623 N between the nodes -2.5 and 0 deg):
+    refused as unreachable, 'spanning' up to 10.6192 N (a property-based audit). The peak is
+    refined and the lowest collective making the thrust returned, the one past the peak counted."""
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    point = (1263.786092180499, 7.350400089194109, 2.79621214705679)
+    T = float(pm.rotor_loads(prop, p8, *point, collective=-0.03675873457264517).thrust)  # past the peak
+    res = trim_collective(prop, p8, T, *point)
+    assert float(res.n_solutions) == 2 and float(res.collective) < math.radians(-2.17)  # below the peak
+    np.testing.assert_allclose(float(res.loads.thrust), T, atol=1e-6)
+    grid = np.radians(np.arange(-20.0, 30.1, 2.5))
+    assert np.max(pm.rotor_loads(prop, p8, *point, collective=grid).thrust) < T  # the grid alone misses it
+    with pytest.raises(TrimError, match=r"spans \[3.44848, 10.623\] N, highest near a collective of -2.17\d* deg"):
+        trim_collective(prop, p8, T + 0.01, *point)
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(thrust="4"), r"thrust must be a number or an array of numbers \[N\], got '4'"),
+    (dict(thrust=True), r"thrust must be a number .*got True"),
+    (dict(thrust=4.0, grid_step=1e-300), r"grid_step must be in \[8.72665e-05, 0.872665\] rad .*got 1e-300"),
+])
+def test_trim_refuses_a_string_or_bool_thrust_and_a_grid_finer_than_10000_steps(kw, match):
+    """A string thrust ran as its number and True as 1 N; a grid step of 1e-300 rad failed inside
+    NumPy (a property-based audit)."""
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    t = kw.pop("thrust")
+    with pytest.raises(ValueError, match=match):
+        trim_collective(prop, p8, t, 800.0, **kw)
+
+
+def test_a_parked_rotors_zero_thrust_is_one_solution():
+    """At Omega = 0 every collective makes 0 N: the lowest is returned, counted as a solution
+    (n_solutions was 0, which the docstring uses for 'none')."""
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    res = trim_collective(prop, p8, 0.0, 0.0)
+    assert float(res.collective) == -math.radians(20.0) and int(res.n_solutions) == 1
+
+
 def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     with pytest.raises(TrimError, match=r"no collective in \[-20, 30\] deg makes thrust=10000 N at operating point "
                                         r"\(omega=100 rad/s.*spans \["):
@@ -84,7 +123,9 @@ def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     # a set past stall at rest: the message names the collective where the thrust peaks
     # (apce_8x6's calibrated set, fitted at collective 0: docs/models.md, Collective pitch)
     prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
-    with pytest.raises(TrimError, match=r"highest near a collective of 0 deg \(grid step 2.5 deg\), where the set"):
+    # (the peak refined between the grid's nodes: 4.48045 N at 0.2286 deg, the grid's highest node 0 deg)
+    with pytest.raises(TrimError, match=r"spans \[0.856396, 4.48045\] N, highest near a collective of 0.2286 deg, "
+                                        r"where the set"):
         trim_collective(prop, p8, 5.0, 8000 * math.pi / 30)
     # a thrust below the range, or a peak at a bound, is not called a stall
     for thrust, bounds in ((0.1, (-math.radians(5), math.radians(10))), (5.0, (math.radians(5), math.radians(20)))):

@@ -9,9 +9,12 @@ stall it falls again), so T(collective) = T* can have several solutions. The one
 is the **lowest collective** that makes the thrust: the thrust is tabulated on a grid of
 collectives (``grid_step``, 2.5 deg by default) across ``bounds``, the first upward
 crossing of T* is bracketed and refined by Chandrupatla's method
-(:func:`scipy.optimize.elementwise.find_root`). For a rotor below stall this is the only
-solution; ``n_solutions`` counts the crossings the grid saw, so that a second (stalled)
-branch is reported, not hidden.
+(:func:`scipy.optimize.elementwise.find_root`). Where no node of the grid reaches T* and the
+thrust peaks inside the bounds (a stalling set), the peak between the highest node's
+neighbours is refined first (:func:`scipy.optimize.elementwise.find_minimum`): where it
+reaches T*, the crossing below it is returned. For a rotor below stall this is the only
+solution; ``n_solutions`` counts the crossings the grid saw (two about a refined peak), so
+that a second (stalled) branch is reported, not hidden.
 
 :func:`torque_change_at_constant_thrust` gives the descent literature's dCQ: the torque
 coefficient at an operating point minus the one in hover at the same thrust and rotation
@@ -35,6 +38,8 @@ __all__ = ["TrimError", "TrimResult", "trim_collective", "torque_change_at_const
 
 #: the bracketing grid's default spacing [rad] (narrowed to the bounds' width where they are narrower)
 GRID_STEP = math.radians(2.5)
+#: the most steps of the bracketing grid across the bounds (a grid_step of 1e-300 rad failed inside NumPy)
+GRID_NODES_MAX = 10_000
 #: the branch :func:`trim_collective` returns, in words (reported with every result)
 BRANCH = "lowest collective that makes the thrust (the first upward crossing on the grid)"
 
@@ -115,8 +120,8 @@ def trim_collective(
     bounds : (float, float)
         The collectives searched [rad], within [-pi/4, pi/4]; default -20 to +30 deg.
     grid_step : float, optional
-        Spacing of the bracketing grid [rad], in (0, bounds width]; default 2.5 deg, or the
-        bounds' width where that is narrower.
+        Spacing of the bracketing grid [rad], in [bounds width / 10,000, bounds width];
+        default 2.5 deg, or the bounds' width where that is narrower.
     thrust_tol : float
         Absolute tolerance on T [N] (default 1e-6 N); the collective is also converged to
         1e-10 rad.
@@ -137,7 +142,7 @@ def trim_collective(
     TrimError
         At some point no collective in ``bounds`` makes the thrust: the message names the
         point and the thrust range the bounds reach there, and where a thrust too high peaks
-        inside the bounds, the grid collective of the peak (the set stalls beyond it).
+        inside the bounds, the collective of the peak, refined (the set stalls beyond it).
     propmap.SolverError
         The inflow solve failed at some collective (the message names where).
     """
@@ -149,11 +154,16 @@ def trim_collective(
     lo, hi = _check_bounds(bounds)
     if grid_step is None:  # (a narrow --range-deg once met 'grid_step must be in (0, 0.0349] rad')
         grid_step = min(GRID_STEP, hi - lo)
-    if not (isinstance(grid_step, (int, float)) and 0 < grid_step <= hi - lo):
-        raise ValueError(f"grid_step must be in (0, {hi - lo:.6g}] rad, got {grid_step!r}")
+    if not (isinstance(grid_step, (int, float)) and not isinstance(grid_step, bool)
+            and (hi - lo) / GRID_NODES_MAX <= grid_step <= hi - lo):
+        raise ValueError(f"grid_step must be in [{(hi - lo) / GRID_NODES_MAX:.6g}, {hi - lo:.6g}] rad (the bounds' "
+                         f"width over 1 to {GRID_NODES_MAX:,} steps), got {grid_step!r}")
     if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
-    T_star = np.asarray(thrust, dtype=float)
+    T_star = np.asarray(thrust)
+    if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
+        raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
+    T_star = T_star.astype(float)
     if not np.all(np.isfinite(T_star)):
         raise ValueError("thrust must be finite [N]")
     # the operating points are checked by rotor_loads; broadcast them with the thrust here
@@ -172,27 +182,46 @@ def trim_collective(
                      **kw).thrust - T1[:, None]  # (n, m)
     up = (Tg[:, :-1] <= 0) & (Tg[:, 1:] > 0)  # upward crossings
     down = (Tg[:, :-1] > 0) & (Tg[:, 1:] <= 0)
-    n_solutions = up.sum(axis=1) + down.sum(axis=1)
     exact = Tg == 0
+    # (a node that makes the thrust exactly is a solution: a parked rotor's 0 N at every collective counted 0)
+    n_solutions = np.maximum(up.sum(axis=1) + down.sum(axis=1), exact.any(axis=1))
     missing = ~up.any(axis=1) & ~exact.any(axis=1)
+    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
+    xl, xr = grid[j], grid[j + 1]
+    on_node = exact.any(axis=1) & ~up.any(axis=1)
+    # a thrust the grid misses only near the peak of T(collective) (a stalling set): the peak between the grid's
+    # neighbours of its highest node refined first, and where it reaches the thrust, the crossing below it
+    k_top = np.argmax(Tg, axis=1)
+    top, at_top = (Tg + T1[:, None]).max(axis=1), grid[k_top]
+    inner = missing & (k_top > 0) & (k_top < m - 1)
+    if inner.any():
+        idx, kk = np.flatnonzero(inner), k_top[inner]
+
+        def minus(c, om_, V_, b_, T_):
+            return T_ - rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust
+
+        peak = elementwise.find_minimum(minus, (grid[kk - 1], grid[kk], grid[kk + 1]),
+                                        args=(om1[idx], V1[idx], b1[idx], T1[idx]),
+                                        tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=0.1 * thrust_tol, frtol=0.0))
+        top[idx], at_top[idx] = T1[idx] - peak.f_x, peak.x
+        reached = peak.f_x <= 0
+        hit = idx[reached]
+        missing[hit] = False
+        n_solutions[hit] += 2  # (an upward and a downward crossing about the peak)
+        xl[hit], xr[hit] = grid[kk[reached] - 1], peak.x[reached]
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
-        k = int(np.argmax(Tg[i]))
-        top = float((Tg[i] + T1[i]).max())
-        stalls = Tg[i, k] < 0 and 0 < k < m - 1 and Tg[i, k + 1] < Tg[i, k]  # short of the target at a peak inside
-        peak = (f", highest near a collective of {round(math.degrees(grid[k]), 6) + 0.0:.4g} deg (grid step "
-                f"{math.degrees(grid[1] - grid[0]):.3g} deg), where the set stalls (docs/models.md, Collective pitch "
-                "as an input, and trim)") if stalls else ""
-        if top > 0 and T1[i] > 10 * top:  # (a thrust in grams or gf: 300 for 2.9 N once got the stall's diagnosis)
-            peak = f": {T1[i] / top:.3g} times the most it reaches; is the thrust in grams? It is in N"
+        k = int(k_top[i])
+        stalls = 0 < k < m - 1  # short of the target at a peak inside
+        peak_at = (f", highest near a collective of {round(math.degrees(at_top[i]), 4) + 0.0:.4g} deg, where the set "
+                   "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
+        if top[i] > 0 and T1[i] > 10 * top[i]:  # (a thrust in grams or gf: 300 for 2.9 N once got the stall's diagnosis)
+            peak_at = f": {T1[i] / top[i]:.3g} times the most it reaches; is the thrust in grams? It is in N"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, "
             f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
-            f"[{(Tg[i] + T1[i]).min():.6g}, {(Tg[i] + T1[i]).max():.6g}] N{peak}")
-    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
-    xl, xr = grid[j], grid[j + 1]
-    on_node = exact.any(axis=1) & ~up.any(axis=1)
+            f"[{(Tg[i] + T1[i]).min():.6g}, {top[i]:.6g}] N{peak_at}")
     x = np.full(n, np.nan)
     x[on_node] = grid[np.argmax(exact[on_node], axis=1)]
     todo = ~on_node & ~missing
