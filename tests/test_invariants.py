@@ -227,6 +227,15 @@ def test_discretization_rejects_counts_outside_their_range(nr, naz, match):
         pm.Discretization(nr, naz)
 
 
+def test_a_whole_float_count_is_kept_as_an_int(apc8x6, apc_params):
+    """Discretization(48.0, 16) was accepted and then failed inside NumPy's Gauss-Legendre nodes
+    (a property-based audit): the counts are ints, the loads those of (48, 16)."""
+    d = pm.Discretization(48.0, np.int64(16))
+    assert type(d.n_radial) is int and type(d.n_azimuth) is int and d == pm.Discretization()
+    assert pm.rotor_loads(apc8x6, apc_params, 800.0, 10.0, 1.0, discretization=d).thrust == \
+        pm.rotor_loads(apc8x6, apc_params, 800.0, 10.0, 1.0).thrust
+
+
 def test_api_edge_cases_raise_value_errors_naming_the_argument(apc8x6, apc_params):
     """Regression tests of the hardening audit: each was a wrong result or another exception."""
     import warnings

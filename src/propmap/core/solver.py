@@ -47,7 +47,8 @@ class Discretization:
     Parameters
     ----------
     n_radial : int
-        Gauss-Legendre nodes on [r_hub, R], in [2, 10000].
+        Gauss-Legendre nodes on [r_hub, R], in [2, 10000] (a whole number of another type,
+        48.0 or numpy.int64(48), is kept as an int).
     n_azimuth : int
         Midpoint nodes on psi in [-pi/2, pi/2], in [2, 1000]. Every integrand depends on
         psi only through sin(psi), so n midpoints there equal a 2n-point periodic
@@ -72,6 +73,8 @@ class Discretization:
             x = _real(v)
             if x is None or not (math.isfinite(x) and x.is_integer() and 2 <= x <= hi):
                 raise ValueError(f"{name} must be an integer in [2, {hi}], got {v!r:.60}")
+            # (a whole float such as 48.0 kept as it was failed inside NumPy's Gauss-Legendre nodes)
+            object.__setattr__(self, name, int(x))
 
 
 DEFAULT_DISCRETIZATION = Discretization()
