@@ -84,6 +84,23 @@ def test_a_masked_array_with_masked_entries_is_refused(apc):
         pm.rotor_loads(prop, params, np.ma.masked_array([800.0, 900.0], mask=[0, 1]), 10.0, 1.0)
     r = pm.rotor_loads(prop, params, np.ma.masked_array([800.0, 900.0], mask=[0, 0]), 10.0, 1.0)
     assert r.thrust.shape == (2,)
+    # the wrenches and a map: they computed masked entries as if given (a property-based audit)
+    M = np.ma.masked_array
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    rm = pm.RotorMap(pm.build_map(prop, params, [500.0, 1000.0], [0.0, 10.0], [0.0, math.pi], n_check=0))
+    for name, call in (
+            ("velocity", lambda: pm.rotor_wrench(prop, params, M([5.0, 0, -1], mask=[1, 0, 0]), [0, 0, 1], 800.0)),
+            ("axis", lambda: pm.rotor_wrench(prop, params, [5.0, 0, -1], M([0, 0, 1.0], mask=[0, 1, 0]), 800.0)),
+            ("omega", lambda: pm.rotor_wrench(prop, params, [5.0, 0, -1], [0, 0, 1], M([800.0, 900], mask=[0, 1]))),
+            ("velocity", lambda: pm.vehicle_wrench(veh, params, M([1.0, 0, 0], mask=[1, 0, 0]), [0, 0, 0],
+                                                   [900.0] * 4)),
+            ("rotor_omega", lambda: pm.vehicle_wrench(veh, params, [1.0, 0, 0], [0, 0, 0],
+                                                      M([900.0] * 4, mask=[0, 0, 0, 1]))),
+            ("omega", lambda: rm.loads(M([800.0, 900], mask=[0, 1]), 5.0, 1.0)),
+            ("velocity", lambda: rm.wrench(M([5.0, 0, -1], mask=[1, 0, 0]), [0, 0, 1], 800.0)),
+            ("omega", lambda: rm.wrench([5.0, 0, -1], [0, 0, 1], M(800.0, mask=True)))):
+        with pytest.raises(ValueError, match=rf"^{name}: a masked array with masked entries"):
+            call()
 
 
 @pytest.mark.parametrize("key, scale, said", [

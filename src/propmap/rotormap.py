@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .core.geometry import has_bool
+from .core.geometry import has_bool, refuse_masked
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
 
@@ -272,6 +272,7 @@ class RotorMap:
     def _queries(self, omega, airspeed, incidence, out_of_grid):
         arrays = []
         for name, v in (("omega", omega), ("airspeed", airspeed), ("incidence", incidence)):
+            refuse_masked(name, v)
             try:
                 a = np.asarray(v)
             except ValueError:  # a ragged list

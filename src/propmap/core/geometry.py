@@ -31,6 +31,14 @@ def _real(value) -> float | None:
         return None
 
 
+def refuse_masked(name: str, value) -> None:
+    """Refuse a masked array with masked entries, naming the input: NumPy would compute them
+    as if given (``np.asarray`` drops the mask)."""
+    if isinstance(value, np.ma.MaskedArray) and np.ma.getmaskarray(value).any():
+        raise ValueError(f"{name}: a masked array with masked entries (they would be computed as if given); pass "
+                         "the points to compute, e.g. its .compressed()")
+
+
 def has_bool(value) -> bool:
     """Whether a (nested) list or tuple, or an object array, holds a bool or a boolean array
     (NumPy would read it as 0 or 1, so that ``[800.0, True]`` became a rotation rate of 1

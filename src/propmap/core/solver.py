@@ -22,7 +22,7 @@ from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
 from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
-from .geometry import Propeller, has_bool
+from .geometry import Propeller, has_bool, refuse_masked
 from .loads import RotorLoads, _new_loads
 from .nodes import _lift_slope, _lift_slope_name, _prepared
 
@@ -137,9 +137,7 @@ def _as_array(name: str, value) -> np.ndarray:
         a = np.asarray(value)
     except (ValueError, OverflowError) as exc:  # ragged nesting, ints beyond int64
         raise ValueError(f"{name} must be a number or a rectangular array of numbers ({exc})") from None
-    if isinstance(value, np.ma.MaskedArray) and np.ma.getmaskarray(value).any():
-        raise ValueError(f"{name}: a masked array with masked entries (they would be computed as if given); pass "
-                         "the points to compute, e.g. its .compressed()")
+    refuse_masked(name, value)
     if a.dtype.kind == "O":
         try:
             a = a.astype(float)

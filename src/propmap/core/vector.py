@@ -16,7 +16,7 @@ import numpy as np
 from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
-from .geometry import Propeller, has_bool
+from .geometry import Propeller, has_bool, refuse_masked
 from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
@@ -93,6 +93,7 @@ def _check_spin(s: np.ndarray, shape: tuple) -> None:
 
 
 def _vectors(name: str, value) -> np.ndarray:
+    refuse_masked(name, value)
     try:
         a = np.asarray(value)
     except ValueError:  # a ragged list

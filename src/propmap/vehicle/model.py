@@ -37,7 +37,7 @@ import numpy as np
 
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
-from ..core.geometry import Propeller, has_bool
+from ..core.geometry import Propeller, has_bool, refuse_masked
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            RotorLoads, rotor_loads, supersonic_tips_allowed)
@@ -291,6 +291,7 @@ def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray
 
 def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
     """``value`` as a float array of shape (N, n_cols) (a single row is promoted to N = 1)."""
+    refuse_masked(name, value)
     a = np.asarray(value)
     if a.dtype.kind not in "iuf" or has_bool(value):
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
