@@ -78,6 +78,30 @@ def test_a_fit_of_data_past_tip_mach_0_8_warns_once_not_at_every_evaluation():
             assert tips == []
 
 
+@pytest.mark.parametrize("kw, said", [
+    (dict(body_drag=0.1), "body_drag must be a propmap.BodyDrag or None, got float"),
+    (dict(vehicle=None), "vehicle must be a propmap Vehicle .*got NoneType"),
+    (dict(params=None), "params must be AirfoilParams or CamberedParams .*got NoneType"),
+    (dict(air=1.2), "air must be a propmap.Air, got float"),
+])
+def test_vehicle_wrench_names_an_argument_of_the_wrong_type(kw, said):
+    """Each was an AttributeError from inside ('float' object has no attribute 'active'; a
+    property-based audit)."""
+    args = {"vehicle": pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml"),
+            "params": pm.generic_params(), **kw}
+    with pytest.raises(TypeError, match=said):
+        pm.vehicle_wrench(args.pop("vehicle"), args.pop("params"), [5.0, 0, 0], [0, 0, 0], [1200.0] * 4, **args)
+
+
+@pytest.mark.parametrize("axis", [[0, 0, 1e-320], [0, 0, 1e-310], [0, 0, 1e300]])
+def test_rotor_wrench_scales_a_tiny_or_huge_axis(apc, axis):
+    """A one-point rotor_wrench with the axis [0, 0, 1e-320] refused an 'incidence nan' (its
+    length underflowed); the array path scaled it: both now give the unit axis' wrench."""
+    prop, params = apc
+    np.testing.assert_array_equal(pm.rotor_wrench(prop, params, [1.0, 0, 0], axis, 800.0).force,
+                                  pm.rotor_wrench(prop, params, [1.0, 0, 0], [0, 0, 1.0], 800.0).force)
+
+
 def test_a_masked_array_with_masked_entries_is_refused(apc):
     prop, params = apc
     with pytest.raises(ValueError, match=r"omega: a masked array with masked entries"):

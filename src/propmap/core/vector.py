@@ -242,8 +242,11 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
         return None
     if not all(math.isfinite(c) for c in zv) or not all(abs(c) < VELOCITY_MAX for c in Vv):
         return None  # (the array path names a non-finite axis or velocity; a huge one is no airspeed)
-    if max(abs(c) for c in zv) == 0.0:
+    zmax = max(abs(c) for c in zv)
+    if zmax == 0.0:
         raise ValueError("axis must be non-zero")
+    if not 1e-100 < zmax < 1e100:  # (scaled first, as disk_frame does: |z| of a 1e-310 axis underflowed to 0)
+        zv = tuple(c / zmax for c in zv)
     s = float(_spin_sign(spin))
     zx, zy, zz, speed, axial, beta = point_frame(*Vv, *zv)
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,

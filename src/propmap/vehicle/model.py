@@ -40,7 +40,7 @@ from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool, refuse_masked
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
-                           RotorLoads, rotor_loads, supersonic_tips_allowed)
+                           RotorLoads, check_model_args, rotor_loads, supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
@@ -370,6 +370,9 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         do not match, a ``vehicle.rotor_interference`` outside [0, 3], or the ranges of
         :func:`propmap.rotor_loads` (naming the input); ``derivatives`` with rotor
         interference, or where :func:`propmap.rotor_loads` refuses them.
+    TypeError
+        ``vehicle`` not a Vehicle, ``body_drag`` not a BodyDrag, or a model argument of the
+        wrong type (:func:`propmap.core.solver.check_model_args`).
     SolverError
         As :func:`propmap.rotor_loads`.
 
@@ -379,6 +382,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         Without ``air``: a rotor whose own parameter set carries other air than ``params``
         (every rotor is solved in one air, ``params``'s).
     """
+    if not isinstance(vehicle, Vehicle):
+        raise TypeError(f"vehicle must be a propmap Vehicle (propmap.read_vehicle), got {type(vehicle).__name__}")
+    check_model_args(vehicle.rotors[0].propeller, params, **({} if air is None else {"air": air}),
+                     discretization=discretization)
+    if body_drag is not None and not isinstance(body_drag, BodyDrag):
+        raise TypeError(f"body_drag must be a propmap.BodyDrag or None, got {type(body_drag).__name__}")
     if air is None:  # (an air given is the caller's choice for every rotor: not warned of)
         air = params.air
         _warn_rotor_air(vehicle, air)
