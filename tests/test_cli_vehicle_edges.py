@@ -256,3 +256,31 @@ def test_flight_commands_check_each_rotors_set(capsys):
     assert err.count("runs with calibrated:apce_8x6, the set calibrated on another propeller") == 1  # (once)
     _check_rotor_sets(veh, ["generic"] * 4)
     assert "calibrated on another" not in capsys.readouterr().err
+
+
+def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_path, monkeypatch, capsys):
+    """An installed user had no path to the example vehicles (they live in site-packages; the
+    README's `read_vehicle("src/propmap/data/examples/...")` worked only in a checkout: a
+    packaging audit). `example_file` gives an example's path, `read_vehicle` and `--vehicle`
+    take a bundled vehicle's bare name where no such file exists; a local file of that name wins."""
+    names = pm.example_files()
+    assert {"quadrotor.toml", "neurobem_quadrotor.toml", "level_flight_synthetic.csv"} <= set(names)
+    assert pm.example_file("neurobem_quadrotor") == pm.example_file("neurobem_quadrotor.toml")
+    assert pm.example_file("level_flight_synthetic.csv").is_file()
+    with pytest.raises(ValueError, match=r"'quad' is not a bundled example; they are level_flight_synthetic.csv, "):
+        pm.example_file("quad")
+    monkeypatch.chdir(tmp_path)
+    assert pm.read_vehicle("neurobem_quadrotor").mass == 0.772
+    assert pm.read_vehicle(Path("quadrotor.toml")).mass == 0.8
+    with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quad: no such file \(nor a bundled example vehicle: "
+                                                         r"neurobem_quadrotor, quadrotor\)"):
+        pm.read_vehicle("quad")
+    with pytest.raises(pm.vehicle.VehicleFileError, match=r"no such file$"):  # a path is a path
+        pm.read_vehicle(tmp_path / "quadrotor.toml")
+    data = pm.example_file("level_flight_synthetic.csv")
+    assert main(["fit", "level-flight", str(data), "--vehicle", "quadrotor", "--out", "lf.toml"]) == 0
+    capsys.readouterr()
+    local = pm.example_file("quadrotor.toml").read_text(encoding="utf-8").replace("mass = 0.8", "mass = 0.9")
+    assert "mass = 0.9" in local
+    (tmp_path / "quadrotor").write_text(local, encoding="utf-8")  # a file of that name here: it is read
+    assert pm.read_vehicle("quadrotor").mass == 0.9

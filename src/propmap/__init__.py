@@ -28,7 +28,7 @@ _EXPORTS = {
     "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle", "VehicleMap": "vehicle",
     "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim",
     "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.param_sets",
-    "rotor_like": "core.geometry",
+    "rotor_like": "core.geometry", "example_file": "io.catalogue", "example_files": "io.catalogue",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

@@ -18,8 +18,8 @@ from ..core.geometry import INCH, Propeller
 from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
-__all__ = ["CatalogueEntry", "catalogue", "get_entry", "load_propeller", "near", "near_names",
-           "resolve_propeller"]
+__all__ = ["CatalogueEntry", "catalogue", "example_file", "example_files", "get_entry", "load_propeller", "near",
+           "near_names", "resolve_propeller"]
 
 UIUC_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255")
 UIUC_V2_CITATION = ("UIUC Propeller Data Site vol. 2, Deters, Ananda & Selig, AIAA 2014-2151")
@@ -30,6 +30,51 @@ APC_CITATION = "APC Propellers PE0 geometry (v2022-0915)"
 
 def _data_path(rel: str) -> Path:
     return Path(str(resources.files("propmap") / "data" / rel))
+
+
+def example_files() -> tuple[str, ...]:
+    """The names of the example files bundled with propmap (``data/examples``): the example
+    vehicles (``quadrotor.toml``; ``neurobem_quadrotor.toml``, the NeuroBEM quadrotor of Bauersfeld
+    et al., RSS 2021, with its lumped blade ``neurobem_5.1x4.8_geom.txt``) and synthetic
+    level-flight data (``level_flight_synthetic.csv``); their sources in data/CITATION.md.
+
+    Returns
+    -------
+    tuple of str
+        Sorted file names.
+    """
+    return tuple(sorted(p.name for p in _data_path("examples").iterdir() if p.is_file()))
+
+
+def example_file(name: str) -> Path:
+    """The path of a bundled example file, wherever propmap is installed (a wheel's files live
+    in site-packages, not in a source tree).
+
+    Parameters
+    ----------
+    name : str
+        A name of :func:`example_files`, or one without its extension (``"neurobem_quadrotor"``).
+
+    Returns
+    -------
+    pathlib.Path
+        The installed file (read it, never write to it).
+
+    Raises
+    ------
+    ValueError
+        Not the name of a bundled example (the message lists them).
+
+    Examples
+    --------
+    >>> import propmap as pm
+    >>> veh = pm.read_vehicle(pm.example_file("neurobem_quadrotor.toml"))
+    """
+    names = example_files()
+    found = [n for n in names if isinstance(name, str) and name in (n, n.rsplit(".", 1)[0])]
+    if len(found) != 1:
+        raise ValueError(f"name: {name!r:.80} is not a bundled example; they are {', '.join(names)}")
+    return _data_path("examples") / found[0]
 
 
 @dataclass(frozen=True)

@@ -231,12 +231,37 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                            f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
 
 
+def _example_vehicles() -> tuple[str, ...]:
+    from ..io.catalogue import example_files
+
+    return tuple(n for n in example_files() if n.endswith(".toml"))
+
+
+def vehicle_path(path) -> Path:
+    """``path`` as a Path; where no such file exists and it is a bare name of a bundled example
+    vehicle (``quadrotor``, ``neurobem_quadrotor``, with or without ``.toml``;
+    :func:`propmap.example_file`), that example's installed file."""
+    given = Path(path)
+    if len(given.parts) == 1 and not os.path.lexists(given):
+        from ..io.catalogue import example_file
+
+        try:
+            found = example_file(given.name)
+        except ValueError:
+            return given
+        if found.suffix == ".toml":
+            return found
+    return given
+
+
 def read_vehicle(path) -> Vehicle:
     """Read a vehicle TOML file (format, ranges and propeller resolution in the module docstring).
 
     Parameters
     ----------
     path : str or Path
+        The file; where no such file exists, a bare name of a bundled example vehicle
+        (``"quadrotor"``, ``"neurobem_quadrotor"``: :func:`vehicle_path`).
 
     Returns
     -------
@@ -263,9 +288,15 @@ def read_vehicle(path) -> Vehicle:
         two rotors at one position, an inertia whose largest principal moment lies outside
         INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?).
     """
-    path = Path(path)
+    path = vehicle_path(path)
     name = show_path(path)
-    data = load_toml(path, VehicleFileError)
+    try:
+        data = load_toml(path, VehicleFileError)
+    except VehicleFileError as exc:
+        if os.path.lexists(path) or len(path.parts) > 1:
+            raise
+        raise VehicleFileError(f"{exc} (nor a bundled example vehicle: "
+                               f"{', '.join(n[:-5] for n in _example_vehicles())})") from None
     for key in ("mass", "rotors"):
         if key not in data:
             raise VehicleFileError(f"{name}: missing key {key!r}")
@@ -386,7 +417,7 @@ def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
     VehicleFileError
         The file cannot be read as TOML.
     """
-    path = Path(path)
+    path = vehicle_path(path)
     rotors = load_toml(path, VehicleFileError).get("rotors")
     out = []
     for r in rotors if isinstance(rotors, list) else ():
