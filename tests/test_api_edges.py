@@ -237,3 +237,17 @@ def test_a_changed_set_is_not_labelled_as_the_named_one(apc):
     assert params.replace(air=pm.Air(rho=1.1)).label == params.label
     assert params.replace(cl_alpha=5.0, label="mine").label == "mine"
     assert pm.preset("gill2017-apc").replace(M=30.0).label == "modified gill2017-apc"
+
+
+def test_a_derivative_is_a_new_array_and_power_a_0d_one_like_the_others(apc):
+    """derivative() returned the stored array: setting it to 0 changed every later call; the
+    power's derivative of one point was a NumPy scalar where the others are 0-d arrays (a
+    property-based audit)."""
+    prop, params = apc
+    r = pm.rotor_loads(prop, params, 800.0, 10.0, 1.0, derivatives=True)
+    first = float(r.derivative("thrust", "omega"))
+    d = r.derivative("thrust", "omega")
+    d[...] = 0.0
+    assert float(r.derivative("thrust", "omega")) == first != 0.0
+    for q in ("thrust", "power"):
+        assert isinstance(r.derivative(q, "airspeed"), np.ndarray) and r.derivative(q, "airspeed").shape == ()

@@ -176,7 +176,8 @@ class RotorLoads:
         Returns
         -------
         ndarray, shape S
-            [N or N m per unit of ``wrt``]; NaN where the point did not converge. At
+            [N or N m per unit of ``wrt``], a new array (0-d for one point); NaN where the
+            point did not converge. At
             points with ``multiple_roots`` the derivative is that of the selected root's
             branch; the loads jump where the selection changes.
 
@@ -190,7 +191,7 @@ class RotorLoads:
             raise ValueError("these loads have no derivatives: call rotor_loads(..., derivatives=True)")
         if quantity == "power":  # P = Q Omega: an MPC's energy cost
             dQ = self.derivative("torque", wrt)
-            return self.omega * dQ + (self.torque if wrt == "omega" else 0.0)
+            return np.asarray(self.omega * dQ + (self.torque if wrt == "omega" else 0.0))  # (0-d as the others)
         if quantity not in DERIVATIVE_LOADS + FLAPPING_LOADS:
             raise ValueError(f"quantity must be one of {', '.join(DERIVATIVE_LOADS + FLAPPING_LOADS + ('power',))}, "
                              f"got {quantity!r:.60}")
@@ -201,7 +202,7 @@ class RotorLoads:
                                  "derivatives=...) for it")
             raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads), "
                              f"got {wrt!r:.60}")
-        return self.jacobian[(quantity, wrt)]
+        return self.jacobian[(quantity, wrt)].copy()  # (a view let a caller's edit change the stored derivative)
 
     @property
     def state_name(self) -> np.ndarray:
