@@ -251,3 +251,45 @@ def test_a_derivative_is_a_new_array_and_power_a_0d_one_like_the_others(apc):
     assert float(r.derivative("thrust", "omega")) == first != 0.0
     for q in ("thrust", "power"):
         assert isinstance(r.derivative(q, "airspeed"), np.ndarray) and r.derivative(q, "airspeed").shape == ()
+
+
+@pytest.mark.parametrize("name, error, said", [
+    (None, TypeError, r"name must be a propeller's name \(str\), got NoneType"),
+    (5, TypeError, r"got int"),
+    ("", ValueError, r"got an empty one"),
+    ("  ", ValueError, r"got an empty one"),
+])
+def test_default_params_refuses_a_name_that_is_none(name, error, said):
+    """default_params(None), (5) and ("") returned the generic set without a word (a
+    property-based audit); a Propeller is named as such. Any other name still gets the generic set."""
+    with pytest.raises(error, match=said):
+        pm.default_params(name)
+    with pytest.raises(TypeError, match=r"a Propeller: give its \.name"):
+        pm.default_params(pm.load_propeller("apce_8x6"))
+    assert pm.default_params("my_own_prop").label == "generic"
+
+
+@pytest.mark.parametrize("call, error, said", [
+    (lambda p: pm.resolve_params(None), TypeError, r"spec must be a set's name or a parameter file's path .*NoneType"),
+    (lambda p: pm.resolve_params(5), TypeError, r"spec must be .*got int"),
+    (lambda p: pm.read_params(None), TypeError, r"path must be a file path \(str or os.PathLike\), got NoneType"),
+    (lambda p: pm.read_geometry(None), TypeError, r"path must be a file path .*got NoneType"),
+    (lambda p: pm.read_vehicle(5), TypeError, r"path must be a file path .*got int"),
+    (lambda p: pm.rotor_like(None), TypeError, r"propeller must be a Propeller, got NoneType"),
+    (lambda p: pm.lift_coefficient(0.1, None), TypeError, r"params must be AirfoilParams or CamberedParams"),
+    (lambda p: pm.lift_coefficient("a", p), ValueError, r"alpha must be a number or an array of numbers, got 'a'"),
+    (lambda p: pm.lift_coefficient(True, p), ValueError, r"alpha must be a number"),
+    (lambda p: pm.lift_coefficient(np.nan, p), ValueError, r"alpha must be finite \[rad\] everywhere, got nan"),
+    (lambda p: pm.lift_coefficient(0.1, p, mach=-1), ValueError, r"mach must be finite and >= 0 everywhere, got -1"),
+    (lambda p: pm.lift_coefficient(0.1, p, reynolds=np.inf), ValueError, r"reynolds must be finite and > 0"),
+    (lambda p: pm.lift_coefficient(0.1, p, reynolds="1e5"), ValueError, r"reynolds must be a number"),
+    (lambda p: pm.drag_coefficient([0.1, 0.2], [1e5, 2e5, 3e5], p), ValueError,
+     r"alpha, reynolds and mach must broadcast together, got shapes \(2,\), \(3,\), \(\)"),
+])
+def test_helpers_name_an_argument_of_the_wrong_type_or_value(apc, call, error, said, tmp_path):
+    """Each was an AttributeError, pathlib's or NumPy's error naming nothing, or a silent NaN,
+    or a negative Mach number read as 0.9's factor (a property-based audit)."""
+    with pytest.raises(error, match=said):
+        call(apc[1])
+    pm.write_params(Path(tmp_path) / "g.toml", pm.generic_params())  # a Path is read as a parameter file
+    assert pm.resolve_params(Path(tmp_path) / "g.toml").label.endswith("g.toml")

@@ -162,10 +162,11 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     if isinstance(spec, str) and not spec.strip():
         raise InputError(f"{option}: the value is empty; leave the option out for the default")
     if spec is None:
-        from ..io.calibration import default_params
+        from ..io.calibration import default_params, generic_params
         from ..io.catalogue import catalogue
 
-        p = default_params(prop_spec if prop_spec in catalogue() else "")
+        # (a geometry file's propeller: the generic set, not a near name's warning)
+        p = default_params(prop_spec) if prop_spec in catalogue() else generic_params()
         return p, p.air, p.label
     try:
         params = resolve_params(spec)

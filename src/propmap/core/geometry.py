@@ -303,7 +303,14 @@ def rotor_like(propeller: Propeller) -> str | None:
     -------
     str or None
         A sentence naming the angles, or None for a propeller-like blade.
+
+    Raises
+    ------
+    TypeError
+        ``propeller`` not a Propeller.
     """
+    if not isinstance(propeller, Propeller):
+        raise TypeError(f"propeller must be a Propeller, got {type(propeller).__name__}")
     R = propeller.radius
     root = max(0.3 * R, propeller.r_hub)
     b75, broot, btip = (float(propeller.theta_at(np.array([y]))[0]) for y in (0.75 * R, root, R))

@@ -35,7 +35,7 @@ def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
 
     With U_T = 1, U_P = 0 the element's outputs are exactly C_L and C_D (theta = alpha).
     """
-    alpha, reynolds, mach = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (alpha, reynolds, mach)))
+    alpha, reynolds, mach = _polar_inputs(alpha, reynolds, mach, params)
     model, pk = _model_constants(params)
     if model == ph.CAMBERED:
         # the solver's per-annulus factors with U = 1: Re / Re_ref = exp(ln_re_c), Ma^2 = mach2_c
@@ -49,9 +49,35 @@ def _section_cd_cl(alpha, reynolds, mach, params: SectionParams):
     return CL, CD
 
 
-def _check_reynolds(reynolds) -> None:
-    if np.any(~(np.asarray(reynolds, dtype=float) > 0)):
-        raise ValueError("reynolds must be > 0 everywhere")
+def _polar_inputs(alpha, reynolds, mach, params) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """alpha, reynolds and mach as float arrays of their broadcast shape, checked: numbers (no
+    strings or bools), finite, Re > 0, Ma >= 0; params a section set (a property-based audit
+    found NaN returned silently, a negative Mach number read as 0.9's factor, and errors from
+    inside for the wrong types)."""
+    from .airfoil import AirfoilParams
+    from .geometry import has_bool
+
+    if not isinstance(params, (AirfoilParams, CamberedParams)):
+        raise TypeError(f"params must be AirfoilParams or CamberedParams, got {type(params).__name__}")
+    out = []
+    for name, v, ok, rule in (("alpha", alpha, lambda a: np.isfinite(a), "finite [rad]"),
+                              ("reynolds", reynolds, lambda a: np.isfinite(a) & (a > 0), "finite and > 0"),
+                              ("mach", mach, lambda a: np.isfinite(a) & (a >= 0), "finite and >= 0")):
+        try:
+            a = np.asarray(v)
+        except ValueError:  # a ragged list
+            a = np.asarray(None)
+        if a.dtype.kind not in "iuf" or has_bool(v):
+            raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
+        a = a.astype(float)
+        if not np.all(ok(a)):
+            raise ValueError(f"{name} must be {rule} everywhere, got {float(a.reshape(-1)[np.argmin(ok(a))])!r}")
+        out.append(a)
+    try:
+        return tuple(np.broadcast_arrays(*out))
+    except ValueError:
+        raise ValueError(f"alpha, reynolds and mach must broadcast together, got shapes "
+                         f"{', '.join(str(a.shape) for a in out)}") from None
 
 
 def lift_coefficient(alpha, params: SectionParams, reynolds=None, mach=0.0):
@@ -76,11 +102,13 @@ def lift_coefficient(alpha, params: SectionParams, reynolds=None, mach=0.0):
     Raises
     ------
     ValueError
-        If a Reynolds number is not positive.
+        An input that is not numbers or not finite, a Reynolds number not positive, a
+        negative Mach number, shapes that do not broadcast.
+    TypeError
+        ``params`` not a section set.
     """
     if reynolds is None:
         reynolds = getattr(params, "re_ref", 1e5)
-    _check_reynolds(reynolds)
     return _section_cd_cl(alpha, reynolds, mach, params)[0]
 
 
@@ -108,7 +136,9 @@ def drag_coefficient(alpha, reynolds, params: SectionParams, mach=0.0):
     Raises
     ------
     ValueError
-        If any Reynolds number is not positive.
+        An input that is not numbers or not finite, a Reynolds number not positive, a
+        negative Mach number, shapes that do not broadcast.
+    TypeError
+        ``params`` not a section set.
     """
-    _check_reynolds(reynolds)
     return _section_cd_cl(alpha, reynolds, mach, params)[1]

@@ -215,7 +215,7 @@ def trim_collective(
         stalls = 0 < k < m - 1  # short of the target at a peak inside
         peak_at = (f", highest near a collective of {round(math.degrees(at_top[i]), 4) + 0.0:.4g} deg, where the set "
                    "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
-        if top[i] > 0 and T1[i] > 10 * top[i]:  # (a thrust in grams or gf: 300 for 2.9 N once got the stall's diagnosis)
+        if top[i] > 0 and T1[i] > 10 * top[i]:  # (a thrust in gf: 300 for 2.9 N got the stall's diagnosis)
             peak_at = f": {T1[i] / top[i]:.3g} times the most it reaches; is the thrust in grams? It is in N"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "

@@ -313,6 +313,13 @@ def default_params(name: str) -> SectionParams:
         ``"calibrated:<name>"``), else the generic set (``.label`` ``"generic"``); either
         carries its air (``.air``).
 
+    Raises
+    ------
+    TypeError
+        ``name`` not a string (a Propeller: give its ``.name``).
+    ValueError
+        An empty or blank name.
+
     Warns
     -----
     UserWarning
@@ -321,6 +328,11 @@ def default_params(name: str) -> SectionParams:
         returned, and the message names the catalogue's near names (a typo once gave the
         generic set without a word).
     """
+    if not isinstance(name, str):  # (None, 5 and a Propeller got the generic set without a word)
+        hint = " (a Propeller: give its .name)" if hasattr(name, "diameter") else ""
+        raise TypeError(f"name must be a propeller's name (str){hint}, got {type(name).__name__}")
+    if not name.strip():
+        raise ValueError("name must be a propeller's name, got an empty one")
     c = calibrated(name)
     if c is not None:
         return c.params

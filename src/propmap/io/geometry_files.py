@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller, rotor_like
-from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, parse_number,
-                     show_path)
+from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, as_path,
+                     parse_number, show_path)
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "MM_FAMILIES",
            "NAME_DIAMETER_RANGE_IN"]
@@ -411,6 +411,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
 
     Raises
     ------
+    TypeError
+        ``path`` not a str or os.PathLike.
     GeometryFileError
         As the chosen reader; also if the file is not a readable regular file or the format
         is not recognised, a UIUC file without ``n_blades``, or a PE0 file with a
@@ -421,7 +423,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     UserWarning
         As :func:`read_uiuc_geometry`.
     """
-    path = Path(path)
+    path = as_path(path)
     text = _read_text(path, GeometryFileError)
     head = text[:4000]
     if "STATION" in head and "TWIST" in head:

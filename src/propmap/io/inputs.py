@@ -52,6 +52,15 @@ def show_path(path) -> str:
     return s if s.isprintable() else repr(s)
 
 
+def as_path(path, name: str = "path") -> Path:
+    """``path`` (str or PathLike) as a Path; anything else refused with a TypeError naming
+    the argument (pathlib's own said "expected str, bytes or os.PathLike object, not
+    NoneType", naming nothing)."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"{name} must be a file path (str or os.PathLike), got {type(path).__name__}")
+    return Path(path)
+
+
 def _clip(text: str, n: int = 60) -> str:
     """``repr(text)`` cut to about ``n`` characters (for echoing user input in messages)."""
     r = repr(text)

@@ -9,6 +9,7 @@ or a parameter file's path (io/params_file.py reads and writes the files).
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from ..core.airfoil import PRESETS, CamberedParams, SectionParams
@@ -91,12 +92,19 @@ def resolve_params(spec: str) -> SectionParams:
     ------
     KeyError
         Neither a named set nor an existing file.
+    TypeError
+        ``spec`` neither a string nor a path (a PathLike is read as a parameter file).
     ParamsFileError
         Malformed file.
     """
     from ..core.airfoil import preset
     from .calibration import GENERIC, calibrated, generic_params
 
+    if isinstance(spec, os.PathLike):  # (a parameter file as a Path)
+        return read_params(spec)
+    if not isinstance(spec, str):
+        raise TypeError(f"spec must be a set's name or a parameter file's path (str or os.PathLike), got "
+                        f"{type(spec).__name__}")
     if spec in PRESETS:
         return preset(spec)
     if spec == GENERIC:

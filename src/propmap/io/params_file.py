@@ -99,7 +99,7 @@ import tomli_w
 from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_META, Air, AirfoilParams,
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
-from .inputs import show_path
+from .inputs import as_path, show_path
 from .params_tables import (BODY_TABLE, COVERAGE_KEYS, COVERAGE_SINGLE_TEXTS, COVERAGE_TABLE, COVERAGE_TEXT_KEYS,
                             BodyTable, body_from_dict, check_number, coverage_from_dict, short_repr)
 from .toml_file import load_toml
@@ -417,8 +417,10 @@ def read_params(path) -> SectionParams:
         invalid TOML, a missing required key, an unknown key, a value of the wrong type (a
         quoted number, a bool for a number), non-finite or out of range (ranges in the
         module docstring); the message names the file and the key.
+    TypeError
+        ``path`` not a str or os.PathLike.
     """
-    path = Path(path)
+    path = as_path(path)
     data = load_toml(path, ParamsFileError)
     try:
         return params_from_dict(data, where=show_path(path), label=str(path), fill=True)

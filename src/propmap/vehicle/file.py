@@ -56,7 +56,7 @@ import numpy as np
 
 from ..core.geometry import INCH, Propeller
 from ..core.body import BodyDrag
-from ..io.inputs import show_path
+from ..io.inputs import as_path, show_path
 from ..io.toml_file import load_toml
 from .model import Rotor, Vehicle
 
@@ -241,7 +241,7 @@ def vehicle_path(path) -> Path:
     """``path`` as a Path; where no such file exists and it is a bare name of a bundled example
     vehicle (``quadrotor``, ``neurobem_quadrotor``, with or without ``.toml``;
     :func:`propmap.example_file`), that example's installed file."""
-    given = Path(path)
+    given = as_path(path)
     if len(given.parts) == 1 and not os.path.lexists(given):
         from ..io.catalogue import example_file
 
@@ -269,6 +269,8 @@ def read_vehicle(path) -> Vehicle:
 
     Raises
     ------
+    TypeError
+        ``path`` not a str or os.PathLike.
     VehicleFileError
         Not a readable regular file (a directory, a device, over 16 MiB), not UTF-8,
         invalid TOML, missing ``mass`` or ``rotors``, an unknown key, a value of the wrong
