@@ -463,3 +463,11 @@ def test_negative_blade_angles_warn_as_a_mirrored_geometry(tmp_path, capsys):
     rad.write_text("r/R c/R beta\n" + "".join(f"{r} {c} {-math.radians(b):.5f}\n" for r, c, b in rows))
     assert main(["loads", str(rad), "--blades", "2", "--rpm", "6000"]) == 0
     assert "the column looks like radians" in capsys.readouterr().err
+
+
+def test_the_torque_change_of_a_stopped_rotor_is_refused_not_nan():
+    """At Omega = 0, dCQ came back NaN without a word (CQ is undefined; a property-based audit)."""
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    with pytest.raises(ValueError, match=r"omega must be > 0 rad/s: the torque coefficient of a stopped rotor"):
+        pm.torque_change_at_constant_thrust(prop, p8, np.array([0.0, 800.0]), 0.0, 0.0)
+    assert np.isfinite(pm.torque_change_at_constant_thrust(prop, p8, 800.0, 2.0, 0.0)[0])

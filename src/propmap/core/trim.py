@@ -285,11 +285,14 @@ def torque_change_at_constant_thrust(
     ------
     ValueError, TrimError, propmap.SolverError
         As :func:`trim_collective` (a thrust that no hover collective in ``bounds`` makes,
-        e.g. a negative thrust in the windmill brake, raises TrimError).
+        e.g. a negative thrust in the windmill brake, raises TrimError); ValueError also for
+        an ``omega`` of 0 (CQ undefined).
     """
     air = params.air if air is None else air
     loads = rotor_loads(propeller, params, omega, airspeed, incidence, collective=collective, air=air,
                         discretization=discretization)
+    if np.any(loads.omega <= 0):  # (CQ = Q / (rho n^2 D^5) has no value at rest: a silent NaN once)
+        raise ValueError("omega must be > 0 rad/s: the torque coefficient of a stopped rotor is undefined")
     hover = trim_collective(propeller, params, loads.thrust, loads.omega, 0.0, 0.0, air=air,
                             discretization=discretization, bounds=bounds)
     return loads.CQ - hover.loads.CQ, loads, hover
