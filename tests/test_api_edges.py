@@ -293,3 +293,11 @@ def test_helpers_name_an_argument_of_the_wrong_type_or_value(apc, call, error, s
         call(apc[1])
     pm.write_params(Path(tmp_path) / "g.toml", pm.generic_params())  # a Path is read as a parameter file
     assert pm.resolve_params(Path(tmp_path) / "g.toml").label.endswith("g.toml")
+
+
+def test_radial_must_be_a_bool(apc):
+    """radial='yes' was read as True (a property-based audit)."""
+    prop, params = apc
+    with pytest.raises(ValueError, match=r"radial must be True or False, got 'yes'"):
+        pm.rotor_loads(prop, params, 800.0, 1.0, 1.0, radial="yes")
+    assert pm.rotor_loads(prop, params, 800.0, 1.0, 1.0, radial=np.True_).v_i.shape == (48,)

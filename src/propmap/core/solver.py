@@ -345,6 +345,8 @@ def rotor_loads(
     check_model_args(propeller, params, air, discretization)
     if on_failure not in ("raise", "flag"):
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
+    if radial is not False and radial is not True and not isinstance(radial, np.bool_):  # ('yes' was read as True)
+        raise ValueError(f"radial must be True or False, got {radial!r:.60}")
     if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
             and type(incidence) in _REAL_SCALARS and (collective is None or type(collective) in _REAL_SCALARS)):
         shape = ()
