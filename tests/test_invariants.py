@@ -353,3 +353,16 @@ def test_vehicle_and_rotor_wrench_messages_name_their_own_arguments():
         pm.load_propeller(None)
     with pytest.raises(ValueError, match="omega must be a number or a rectangular array"):  # (ragged: rotor_loads')
         pm.rotor_wrench(p, g, np.zeros((2, 3)), [0, 0, 1], [[800.0, 900.0], [3.0]])
+
+
+def test_a_propellers_name_is_a_string_and_its_stations_one_dimensional(apc8x6):
+    """name=None or 5 was accepted, and an r of shape (1, n) flattened without a word (a
+    property-based audit)."""
+    import dataclasses
+
+    for kw, said in ((dict(name=None), "name must be a string, got NoneType"),
+                     (dict(name=5), "name must be a string, got int"),
+                     (dict(r=apc8x6.r[None, :]), r"r must be a 1-D array \(one value per blade station\), got 2")):
+        with pytest.raises(ValueError, match=said):
+            dataclasses.replace(apc8x6, **kw)
+    np.testing.assert_array_equal(dataclasses.replace(apc8x6, r=list(apc8x6.r)).r, apc8x6.r)

@@ -92,7 +92,7 @@ class Propeller:
     ------
     ValueError
         Naming the argument: a value of the wrong type (a bool, a string; a
-        non-integer ``n_blades``), non-finite values, ``radius <= 0``, ``n_blades < 1``,
+        non-integer ``n_blades``; a ``name`` that is not a string; stations not 1-D), non-finite values, ``radius <= 0``, ``n_blades < 1``,
         a non-finite ``pitch``, arrays of different length or fewer than 2 stations, radii not strictly
         increasing or outside (0, radius], negative chord or zero chord at every station, blade angle outside
         [-90, 90] deg, or stations that stop short of the tip where the extrapolation of the last
@@ -115,6 +115,8 @@ class Propeller:
     _theta_spline: Pchip = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
+        if not isinstance(self.name, str):  # (None or 5 reached maps and reports as a name)
+            raise ValueError(f"name must be a string, got {type(self.name).__name__}")
         radius = _real(self.radius)
         if radius is None or not (math.isfinite(radius) and radius > 0):
             raise ValueError(f"radius must be finite and > 0 m, got {_short(self.radius)}")
@@ -133,11 +135,14 @@ class Propeller:
             try:
                 # no bools, strings or objects read as numbers
                 numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
+                ndim = np.ndim(value)
                 a = np.array(value, dtype=float, copy=True).reshape(-1)
             except (TypeError, ValueError, OverflowError):
                 numeric = False
             if not numeric:
                 raise ValueError(f"{key} must be an array of numbers, got {_short(value)}")
+            if ndim != 1:  # (a (1, n) array was flattened without a word)
+                raise ValueError(f"{key} must be a 1-D array (one value per blade station), got {ndim} dimensions")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"{key} must be finite at every blade station")
             a.setflags(write=False)
