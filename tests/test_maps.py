@@ -464,3 +464,15 @@ def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them
     comment = " ".join(line.lstrip(" *") for line in text.split("*/")[0].splitlines())
     assert "side force Y and a pitching moment M_P as well" in comment and "leave them out" in comment
     assert "side force Y" not in c_header_text(RotorMap(small_map[2]), tmp_path / "rigid.h")
+
+
+def test_the_check_of_a_map_whose_nodes_all_hold_zero_drag_is_not_zero():
+    """A map whose incidence axis is only 0 and 180 deg holds D = M_R = 0 at every node and so
+    gives D = 0 at 90 deg, where the model's is 0.28 N: its check divided by the nodes' largest
+    |D|, 0, and reported 0% (a property-based audit). The model's own value bounds the norm."""
+    prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.array([5000.0, 6000.0]) * RPM, [0.0, 10.0], [0.0, math.pi], n_check=30)
+    assert float(RotorMap(ds).loads(5500 * RPM, 10.0, math.pi / 2).drag) == 0.0
+    for method in ("cubic", "linear"):
+        assert ds.attrs[f"check_{method}_drag_max"] == pytest.approx(1.0)  # 100%: the map gives 0
+        assert ds.attrs[f"check_{method}_rolling_moment_max"] == pytest.approx(1.0)

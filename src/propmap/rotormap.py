@@ -477,7 +477,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
 
     Points are uniform in the grid's box. Errors are normalised per point: T and P by the
     static thrust and power at the point's Omega, Q by the static torque, D and M_R by the
-    largest |D| (|M_R|) of the map at the two rpm rows around the point. Points flagged by
+    largest |D| (|M_R|) of the map at the two rpm rows around the point, or the model's own
+    |D| (|M_R|) there where that is larger. Points flagged by
     the evaluator (a node within one node of their cell in vortex_ring, with multiple
     roots, or not converged), or that the model flags so, are counted apart ("flagged
     regions"). A map with the side force and pitching moment has them checked too,
@@ -536,11 +537,14 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     loads = map_loads(ds)
     for k in ("drag", "rolling_moment", *loads[len(LOADS):]):
         peak = np.max(np.abs(ds[k].transpose("rpm", ...).values), axis=(1, 2))
-        norm[k] = np.maximum(peak[row], peak[row + 1])
+        # (not below the model's own value at the point: a map whose nodes all hold D = 0, its incidence axis
+        # only 0 and 180 deg, divided every error by an infinite norm and reported 0% where it gave D = 0)
+        norm[k] = np.maximum(np.maximum(peak[row], peak[row + 1]), np.abs(getattr(full, k)))
     peaks = "D, M_R (Y, M_P)" if len(loads) > len(LOADS) else "D and M_R"
     out = {"check_points": int(n_check), "check_seed": int(seed),
            "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
-                                  f"torque, {peaks} by their largest magnitude in the map at the rpm rows around it; "
+                                  f"torque, {peaks} by their largest magnitude in the map at the rpm rows around it (or "
+                                  "the model's at the point where larger); "
                                   "flagged: the point, or a node within one node of its cell, in vortex ring, "
                                   "with multiple roots or not converged"}
     for method, evaluator in evaluators.items():

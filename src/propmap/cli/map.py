@@ -457,15 +457,15 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
     if "check_points" in a:
         click.echo(f"interpolation error against the full model at {a['check_points']} random points "
                    f"({a['check_points_flagged']} in flagged cells, reported apart):")
-        click.echo(f"  {'':<16}{'cubic rms':>10}{'max':>8}{'max flagged':>13}{'linear rms':>12}{'max':>8}"
+        click.echo(f"  {'':<16}{'cubic rms':>10}{'max':>9}{'max flagged':>13}{'linear rms':>12}{'max':>9}"
                    f"{'max flagged':>13}   normalised by")
         norms = {"thrust": "static thrust", "drag": "largest drag", "torque": "static torque",
                  "rolling_moment": "largest M_R", "side_force": "largest Y", "pitching_moment": "largest M_P",
                  "power": "static power"}
         for k, norm in ((k, n) for k, n in norms.items() if f"check_cubic_{k}_rms" in a):
             c, lin = (f"check_{m}_{k}" for m in ("cubic", "linear"))
-            click.echo(f"  {k:<16}{_pct(a[c + '_rms'], 10)}{_pct(a[c + '_max'], 8)}{_pct(a[c + '_max_flagged'], 13, 2)}"
-                       f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 8)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
+            click.echo(f"  {k:<16}{_pct(a[c + '_rms'], 10)}{_pct(a[c + '_max'], 9)}{_pct(a[c + '_max_flagged'], 13, 2)}"
+                       f"{_pct(a[lin + '_rms'], 12)}{_pct(a[lin + '_max'], 9)}{_pct(a[lin + '_max_flagged'], 13, 2)}"
                        f"   {norm}")
         click.echo("  (propmap.RotorMap interpolates cubic by default; "
                    + (f"this C header interpolates {c_interpolation})" if c_interpolation
