@@ -467,7 +467,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     propeller : Propeller
     params : AirfoilParams or CamberedParams
     air : Air, optional
-        Default: ``params.air``.
+        Default: ``params.air`` at the density the data logged (``LoadData.air_density``)
+        where they logged one.
     discretization : Discretization, optional
 
     Returns
@@ -479,7 +480,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
         {``rms``, ``bias`` (mean model - measured), ``max`` (largest magnitude), in units of the
         reference [-]; ``rms_si``, the rms error in N or N m; ``n``, the points scored};
         ``n_points``; ``converged`` (points the solver converged on; the others are left out of
-        every figure).
+        every figure). A load not measured at a point (NaN in ``data.measured``) is left out
+        of that quantity's figures (``n`` counts the points scored).
 
     Raises
     ------
@@ -490,7 +492,9 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     """
     from .identify.load_data import STATIC_AIRSPEED
 
-    air = params.air if air is None else air
+    from .identify.load_data import data_air
+
+    air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     keys = [k for k in ("thrust", "drag", "torque") if k in data.measured]
     if not keys:
         raise ValueError("no load measured (thrust, drag or torque)")
@@ -505,17 +509,19 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     reference = {}
     for k in keys:
         own = "thrust" if k in ("thrust", "drag") and "thrust" in coeff else k
-        if static.any():
-            value, what = float(np.mean(coeff[own][static])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
+        known = np.isfinite(coeff[own])  # (NaN: not measured at that point)
+        if np.any(static & known):
+            value, what = float(np.mean(coeff[own][static & known])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
         else:
-            value, what = float(np.sqrt(np.mean(coeff[own] ** 2))), f"rms measured {own} coefficient"
+            value, what = float(np.sqrt(np.mean(coeff[own][known] ** 2))), f"rms measured {own} coefficient"
         if not (math.isfinite(value) and value != 0.0):
             raise ValueError(f"the {what} is {value:g}: no reference for the {k} errors")
         reference[k] = (what, value)
 
     ok = np.asarray(r.converged, bool) & np.all([np.isfinite(model[k]) for k in keys], axis=0)
     inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
-    where = {k: ok & inplane if k == "drag" and inplane.any() else ok for k in keys}
+    # a load not measured at a point (NaN in LoadData.measured) is left out of its errors (it gave NaN rms)
+    where = {k: (ok & inplane if k == "drag" and inplane.any() else ok) & np.isfinite(data.measured[k]) for k in keys}
 
     def summary(mask) -> dict:
         out = {}

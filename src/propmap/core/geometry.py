@@ -91,12 +91,13 @@ class Propeller:
     Raises
     ------
     ValueError
-        Naming the argument: a value of the wrong type (a bool, a string; a
-        non-integer ``n_blades``; a ``name`` that is not a string; stations not 1-D), non-finite values, ``radius <= 0``, ``n_blades < 1``,
-        a non-finite ``pitch``, arrays of different length or fewer than 2 stations, radii not strictly
-        increasing or outside (0, radius], negative chord or zero chord at every station, blade angle outside
-        [-90, 90] deg, or stations that stop short of the tip where the extrapolation of the last
-        ones (PCHIP's end polynomials) to the tip leaves chord <= radius or |theta| <= 90 deg.
+        Naming the argument: a value of the wrong type (a bool, a string; a non-integer
+        ``n_blades``; a ``name`` that is not a string; stations not 1-D), non-finite values,
+        ``radius <= 0``, ``n_blades < 1``, a non-finite ``pitch``, arrays of different length
+        or fewer than 2 stations, radii not strictly increasing or outside (0, radius],
+        negative chord or zero chord at every station, blade angle outside [-90, 90] deg, or
+        stations that stop short of the tip where the extrapolation of the last ones (PCHIP's
+        end polynomials) to the tip leaves chord <= radius or |theta| <= 90 deg.
 
     Notes
     -----

@@ -23,7 +23,7 @@ from ..io.catalogue import CatalogueEntry
 from ..io.inputs import show_path
 from .csvfile import DataError, RANGES
 from .level_flight import LevelFlightData, body_to_world, read_level_flight, rotor_kinematics
-from .load_data import STATIC_AIRSPEED, LoadData
+from .load_data import STATIC_AIRSPEED, LoadData, data_air
 from .loads_csv import read_loads
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
@@ -302,7 +302,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     params : SectionParams, optional
         The model compared with (default: the generic set).
     air : Air, optional
-        Default: the set's.
+        Default: the set's, at the density the data logged (``LoadData.air_density``) where
+        they logged one.
     quantities : sequence of str, optional
         The quantities to be fitted (default: every measured one): a measured quantity left
         out of the fit (a stand's torque column of zeros) is not held to the model.
@@ -336,7 +337,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
 
     label = "the model" if params else "the generic set"
     params = params or generic_params()
-    air = params.air if air is None else air
+    air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     checked = tuple(data.measured) if quantities is None else tuple(quantities)
     warnings_ = []
     tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),

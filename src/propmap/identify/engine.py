@@ -361,6 +361,14 @@ def _fit_along_directions(make_data, names, base, options, k):
     every, lam = leading_directions(jac0, chol, weight, len(names))
     if k is None:  # (fewer than the residuals: a fit of K directions needs more than K of them)
         k = max(1, min(int(np.sum(lam >= DATA_OVER_PRIOR)), jac0.shape[0] - 1))
+    warns = []
+    # not beyond the directions the data know at all (a static run at one rpm: eigenvalues 929, 153 and 3.7e-13; the
+    # third, freed by the default 3, left the data's information on the other two misreported: an audit)
+    known = max(1, int(np.sum(lam > lam[0] * 1e-9))) if lam.size and lam[0] > 0 else 1
+    if k > known:
+        warns.append(f"{known} parameter direction(s) fitted, not {k}: the data have no information on the others "
+                     f"(eigenvalues {', '.join(f'{v:.3g}' for v in lam[known:k])} of the data against the prior)")
+        k = known
     B = every[:, :k]
 
     def x_of(c):
@@ -390,7 +398,7 @@ def _fit_along_directions(make_data, names, base, options, k):
              "directions": {"count": k, "c": sol.x, "loadings": B, "eigenvalues": lam, "base": mu,
                             "jac_c": J @ B, "prior_std": np.sqrt(np.sum(chol**2, axis=1)), "held": every[:, k:]}}
     log = [{"x0": mu, "x": x, "cost": 0.5 * float(r @ r), "nfev": int(sol.nfev)}]
-    return best, log, count["n"], elapsed, [], extra
+    return best, log, count["n"], elapsed, warns, extra
 
 
 def _directions_report(result: FitResult, options: FitOptions) -> FitResult:

@@ -30,7 +30,7 @@ from ..core.airfoil import Air, CamberedParams, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import OMEGA_MIN, TIP_MACH_WARN, differentiable, rotor_loads, supersonic_tips_allowed
 from .data import LoadData
-from .load_data import STATIC_AIRSPEED
+from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fit_along_directions, _solve,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
@@ -60,6 +60,13 @@ def _load_norms(data: LoadData, propeller, keys, air: Air):
     rows = _fitted_rows(data, keys)
     scales = {k: float(np.sqrt(np.mean((data.measured[k][rows[k]] / norm[k][rows[k]]) ** 2))) for k in keys}
     for k, s in scales.items():
+        gaps = np.flatnonzero(rows[k] & ~np.isfinite(data.measured[k]))
+        if gaps.size:  # (NaN: not measured there; it was called 'zero everywhere or not finite')
+            i = int(gaps[0])
+            raise ValueError(f"measured {k} is NaN (not measured) at {gaps.size} point(s), the first #{i} "
+                             f"({data.group[i]}, {data.omega[i] * 30 / math.pi:.5g} rpm, {data.airspeed[i]:.4g} m/s): "
+                             "give the data "
+                             f"without those points (LoadData.subset), or fit the other quantities (quantities=)")
         if not (np.isfinite(s) and s > 0):
             others = [q for q in keys if q != k]
             raise ValueError(f"measured {k} is zero everywhere or not finite, so it cannot be fitted: fit "
@@ -101,7 +108,11 @@ def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
 def _load_keys(data: LoadData, quantities) -> list:
     if isinstance(quantities, str):  # (iterated, 'thrust' was the quantities 't', 'h', ...)
         raise ValueError(f"quantities must be a tuple of names, e.g. ({quantities!r},), got the string {quantities!r}")
-    keys = list(quantities or data.measured)
+    if quantities is not None and (not len(quantities) or len(set(quantities)) != len(quantities)):
+        # (() meant all of them, and ('thrust', 'thrust') dropped the torque and weighed the thrust twice)
+        raise ValueError(f"quantities must name each fitted quantity once (or be None: all measured), got "
+                         f"{tuple(quantities)!r:.80}")
+    keys = list(data.measured if quantities is None else quantities)
     for k in keys:
         if k not in data.measured:
             raise ValueError(f"quantity {k!r} is not measured; measured: {', '.join(data.measured)}")
@@ -251,7 +262,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         The model, the start and the constants not fitted; the catalogue-fitted
         ``generic`` cambered set by default (``gill2017-apc`` for the paper's model).
     air : Air, optional
-        Default: the parameter set's own (``.air``).
+        Default: the parameter set's own (``.air``), at the density the data logged
+        (``LoadData.air_density``) where they logged one (said in the result's warnings).
     quantities : tuple of str, optional
         Which measured quantities to fit (default: all in ``data.measured``).
     options : FitOptions
@@ -294,7 +306,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     from ..io.calibration import generic_params
 
     base = base or generic_params()
-    air = base.air if air is None else air
+    air, air_note = data_air(data, air, base.air)
     kind = _data_kind(data)
     names = _default_names(base, options, kind)
     keys = _load_keys(data, quantities)
@@ -310,7 +322,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
                          f"{data.n} points of {', '.join(keys)} cannot identify {free} parameter directions")
     make_data, scales = _load_residual(data, propeller, keys, air, names, base)
     make_residual, prior = _with_prior(make_data, names, base, options)
-    notes, outside, spent = [], [], (0, 0.0)
+    notes, outside, spent = [air_note] if air_note else [], [], (0, 0.0)
     if options.directions is not None and k_dirs == 0 and options.directions != 0:
         notes.append("directions ignored: they apply to the cambered model under the population prior with the "
                      "default parameters (not with the flapping freed for the in-plane force), on load data other "
@@ -485,7 +497,12 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     ----------
     datasets : sequence of (LoadData, Propeller)
     base, air, options
-        As :func:`fit_loads`.
+        As :func:`fit_loads`, except that the parameters fitted are ``options.names`` or the
+        model's full default (the cambered CAMBERED_FIT_RE), whatever the data: no fit along
+        the data's directions and no flapping freed for data at incidence. The population
+        prior applies where ``options.prior`` (the calibration fits without it). Without
+        ``air``, each data set is solved at the density it logged (``LoadData.air_density``),
+        else at ``base``'s.
     weights : sequence of float, optional
         One positive, finite weight per dataset, its share of the sum of squares (default:
         1 each).
@@ -499,8 +516,8 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     Raises
     ------
     ValueError
-        No datasets, ``weights`` not one positive finite number per dataset, or as
-        :func:`fit_loads`.
+        No datasets, ``weights`` not one positive finite number per dataset, no more fitted
+        load values than parameters, or as :func:`fit_loads`.
     SolverError
         From the rotor model.
     """
@@ -517,14 +534,20 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         raise ValueError(f"weights must be {len(datasets)} positive finite numbers (one per dataset), got "
                          f"{weights!r:.80}")
     base = base or generic_params()
-    air = base.air if air is None else air
     names = _default_names(base, options)
-    makers = []
+    rows = sum(int(m.sum()) for data, _ in datasets for m in _fitted_rows(data, _load_keys(data, None)).values())
+    if rows <= len(names):
+        raise ValueError(f"{rows} fitted load values cannot identify {len(names)} parameters")
+    makers, notes = [], []
     for (data, prop), wk in zip(datasets, w):
-        makers.append(_load_residual(data, prop, _load_keys(data, None), air, names, base,
+        data_air_k, note = data_air(data, air, base.air)  # (each data set at the density it logged)
+        if note:
+            notes.append(f"{prop.name}: {note}")
+        makers.append(_load_residual(data, prop, _load_keys(data, None), data_air_k, names, base,
                                      weight=math.sqrt(wk) / math.sqrt(data.n))[0])
+    air = base.air if air is None else air
 
-    def make_residual(opts):
+    def make_data(opts):
         parts = [m(opts) for m in makers]
 
         def residual(x, opts=opts):
@@ -538,10 +561,12 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
             _attach_jacobian(residual, with_jacobian)
         return residual
 
+    make_residual, prior = _with_prior(make_data, names, base, options)
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                     "fit loads (joint)", _x0(names, options, base))
-    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
-                     nfev * sum(d.n for d, _ in datasets), air, {"kind": "loads_joint", **extra})
+    result = _finish(names, base, options, best, log, nfev, elapsed, [*notes, *warns],
+                     nfev * sum(d.n for d, _ in datasets), air,
+                     {"kind": "loads_joint", **extra, **({"prior": prior} if prior else {})})
     per, k = [], 0
     for (data, prop), wk in zip(datasets, w):
         rows = _fitted_rows(data, _load_keys(data, None))  # (the in-plane force at in-plane points only)

@@ -6,11 +6,18 @@ catalogue's and UIUC files' readers (identify/data.py).
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
 from ._checks import first_length, float_array
+
+
+def _short(value) -> str:
+    r = repr(value).replace("\n", " ")
+    return r if len(r) <= 60 else r[:55] + " ..."
 
 
 @dataclass(frozen=True)
@@ -44,8 +51,9 @@ class LoadData:
         point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
         thrust, drag, torque, an ``air_density`` that is not a finite number > 0; the message
-        names the field. (The readers check the signs and
-        the ranges of the loads themselves.)
+        names the field; ``omega`` above 1e5 rad/s, a ``collective`` beyond +-pi/4 rad (degrees?),
+        a ``group`` label that is not a string or a number (or is NaN). (The readers check the
+        signs and the ranges of the loads themselves.)
     """
 
     omega: np.ndarray
@@ -84,9 +92,21 @@ class LoadData:
         # NaN: not measured there (the fits refuse it)
         measured = {k: float_array("LoadData", f"measured[{k!r}]", v, (n,), row="point", nan=True)
                     for k, v in self.measured.items()}
-        group = np.asarray(self.group, dtype=object)
-        if group.shape != (n,):
-            raise ValueError(f"LoadData.group must have shape ({n},), got {group.shape}")
+        group = np.empty(n, dtype=object)  # (a tuple label was spread over an axis of its own)
+        try:
+            if isinstance(self.group, (str, bytes)):  # (a string would be spread into its characters)
+                raise TypeError
+            group[:] = list(self.group)
+        except (TypeError, ValueError):
+            raise ValueError(f"LoadData.group must be {n} labels (one per point), got {_short(self.group)}") from None
+        for g in group:  # (NaN labels, e.g. pandas' empty cells, never equal themselves: the rate count fell to 0)
+            if isinstance(g, (bool, np.bool_)) or not isinstance(g, (str, numbers.Real)) or g != g:
+                raise ValueError(f"LoadData.group: each label must be a string or a number (not NaN), got {g!r:.40}")
+        if "collective" in fields_ and np.any(np.abs(fields_["collective"]) > COLLECTIVE_RANGE):
+            raise ValueError(f"LoadData.collective must be in [-{COLLECTIVE_RANGE:.6g}, {COLLECTIVE_RANGE:.6g}] rad "
+                             "(radians, not degrees)")
+        if np.any(omega > OMEGA_MAX):
+            raise ValueError(f"LoadData.omega must be <= {OMEGA_MAX:g} rad/s, got {omega.max():g}")
         for name, a in {**fields_, "measured": measured, "group": group}.items():
             object.__setattr__(self, name, a)
 
@@ -101,6 +121,25 @@ class LoadData:
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
                         None if self.collective is None else self.collective[mask], self.notes, self.air_density)
+
+
+def data_air(data: LoadData, air, base_air):
+    """The air a fit or comparison of ``data`` uses, and a note or None: ``air`` where given;
+    else ``base_air`` (the parameter set's) with the density the data logged
+    (``LoadData.air_density``) where they logged one, said in the note (the command line fitted
+    at the file's density, the Python functions at the set's: a user-level audit, 2026-11-26).
+
+    Returns
+    -------
+    (Air, str or None)
+    """
+    from dataclasses import replace
+
+    if air is not None or data.air_density is None:
+        return (base_air if air is None else air), None
+    return (replace(base_air, rho=data.air_density),
+            f"the air density is the data's, {data.air_density:.4g} kg/m^3 (LoadData.air_density; give air= for "
+            "another)")
 
 
 LOAD_KEYS = ("thrust", "drag", "torque")

@@ -5,7 +5,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -74,9 +74,10 @@ AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag
                    "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05),
                    "rotor_interference": (0.0, 3.0)}
 #: parameters whose value 0 is the effect's absence (no flapping, no airframe drag, no slipstream on it, no
-#: interference, no body lift): a fit that ends at that lower bound found none, which is not suspect
+#: interference, no body lift, no rotational stall delay): a fit that ends at that lower bound found none, which is
+#: not suspect
 ABSENT_AT_ZERO = ("flap_compliance", "drag_area_x", "drag_area_y", "drag_area_z", "wash_factor", "rotor_interference",
-                  "cl1_body", "cl2_body")
+                  "cl1_body", "cl2_body", "stall_delay")
 #: parameters that are angles [rad], reported in degrees
 ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 
@@ -116,6 +117,27 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
             return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
     return param_names(options.lift_model)
+
+
+def _check_bounds(bounds) -> None:
+    """Refuse a ``FitOptions.bounds`` that is not name -> (low, high) with finite low < high and
+    a known name (a typo was ignored; inverted, equal or NaN bounds failed in SciPy without the
+    name; a 3-tuple was cut to its first two values)."""
+    known = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS}
+    if not isinstance(bounds, dict):
+        raise ValueError(f"bounds must be a dict of name -> (low, high), got {type(bounds).__name__}")
+    for name, b in bounds.items():
+        if not isinstance(name, str):
+            raise ValueError(f"bounds: a name must be a string, got {name!r:.40}")
+        try:
+            lo, hi = (float(v) for v in b)
+        except (TypeError, ValueError):
+            raise ValueError(f"bounds[{name!r}] must be two numbers (low, high), got {b!r:.60}") from None
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ValueError(f"bounds[{name!r}] must be finite with low < high, got ({lo!r}, {hi!r})")
+        if name not in known and not any(name == f.name for f in fields(CamberedParams)):
+            raise ValueError(f"bounds: unknown parameter {name!r}; fitted parameters are "
+                             f"{', '.join(sorted(known))} (and the cambered set's other fields)")
 
 
 def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) -> tuple[str, ...]:
@@ -233,7 +255,10 @@ class FitOptions:
     Raises
     ------
     ValueError
-        A ``lift_model``, ``jacobian`` or ``directions`` outside the values above.
+        A ``lift_model``, ``jacobian`` or ``directions`` outside the values above;
+        ``max_nfev`` not an integer in [1, 1e7], ``multistart`` not one in [0, 256], ``seed``
+        not one >= 0; ``bounds`` not name -> (low, high) with finite low < high and a name
+        the fits know; ``x0`` not four finite numbers.
     """
 
     x0: tuple = X0_PAPER
@@ -260,3 +285,16 @@ class FitOptions:
         d = self.directions
         if d is not None and (isinstance(d, bool) or not isinstance(d, (int, np.integer)) or d < 0):
             raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")
+        # (max_nfev=2.5 ran SciPy's least_squares without end; multistart=-1 counted as 0, 1.5 failed inside)
+        for name, lo, hi in (("max_nfev", 1, 10**7), ("multistart", 0, 256), ("seed", 0, 2**63 - 1)):
+            v = getattr(self, name)
+            if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) or not lo <= v <= hi:
+                raise ValueError(f"{name} must be an integer in [{lo}, {hi:,}], got {v!r:.40}")
+        if self.bounds is not None:
+            _check_bounds(self.bounds)
+        try:
+            x0 = tuple(float(v) for v in self.x0)
+        except (TypeError, ValueError):
+            x0 = ()
+        if len(x0) != 4 or not all(math.isfinite(v) for v in x0):
+            raise ValueError(f"x0 must be 4 finite numbers (cl1, cl2, cd, alpha0 [rad]), got {self.x0!r:.60}")

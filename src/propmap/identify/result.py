@@ -291,7 +291,8 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     null = sig <= (sig[0] if sig.size else 0.0) * p * max(N, p) * np.finfo(float).eps
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_sig2 = np.where(null, 0.0, 1.0 / sig**2)
-        cov = s2 * np.outer(d, d) * ((Vt.T * inv_sig2) @ Vt)
+        shape = np.outer(d, d) * ((Vt.T * inv_sig2) @ Vt)  # the covariance per unit residual variance
+        cov = s2 * shape
         std = np.sqrt(np.clip(np.diag(cov), 0, None))
         std[np.any(np.abs(Vt[null]) >= 1e-3, axis=0)] = np.inf
         if sig.size < p:  # fewer residuals than parameters: the missing directions are free
@@ -301,11 +302,17 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
 
         t = stats.t.ppf(0.975, dof)
         ci = np.column_stack([x - t * std, x + t * std])
-        corr = cov / np.outer(std, std)
+        unit = np.sqrt(np.clip(np.diag(shape), 0, None))
+        # (from the shape alone, not s2: an exact fit, s2 = 0, gave 0/0 and reported every correlation as 0)
+        corr = shape / np.outer(unit, unit)
     corr = np.where(np.isfinite(corr), corr, 0.0)
     np.fill_diagonal(corr, 1.0)
     sv = sig  # (of J diag(max(|x|, 0.1)), above)
     poor, warns = [], []
+    if s2 == 0.0:
+        warns.append("the fit reproduces the data exactly (residual 0: noise-free data?): the std errors and "
+                     "intervals are 0 and say nothing of how well the data determine the parameters; the "
+                     "correlations below do")
     for k, n in enumerate(names):
         if not np.isfinite(std[k]):
             poor.append(n)

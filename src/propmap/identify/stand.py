@@ -17,7 +17,7 @@ Units (a quantity without a unit is SI, rpm for rotation speed):
 thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
 torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
                 (lb·in), ozf·in (oz·in, oz-in), lbf·ft (lb·ft)
-rotation speed  rpm, rad/s, Hz (rev/s)
+rotation speed  rpm, rad/s, Hz (rev/s, rps)
 airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots), ft/s (fps)
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
@@ -48,7 +48,7 @@ UNITS = {
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
                "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
-    "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0},
+    "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
@@ -127,7 +127,7 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
 
 def _token(unit: str) -> str:
     """A unit written any usual way, as a lookup token: 'N·m' -> 'nm', 'rad/s' -> 'rads', 'µs' -> 'us'."""
-    return re.sub(r"[\s·*./_\-^]", "", unit.lower().replace("µ", "u").replace("μ", "u"))
+    return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("µ", "u").replace("μ", "u"))
 
 
 def _split(name: str) -> tuple[str, str | None]:
