@@ -182,3 +182,21 @@ def test_rev_per_second_as_rps_and_a_dot_operator_in_n_m(tmp_path):
     np.testing.assert_allclose(db.omega, da.omega, rtol=1e-12)
     np.testing.assert_array_equal(db.measured["torque"], da.measured["torque"])
     assert dataclasses.replace(da).n == 7
+
+
+def test_the_fits_name_an_argument_of_the_wrong_type():
+    """Each was an AttributeError from inside (options as a dict, base as a set's name, a
+    propeller's name, a (Propeller, LoadData) pair the wrong way round)."""
+    om = np.linspace(400.0, 900.0, 8)
+    z = np.zeros(8)
+    d = LoadData(om, z, z, {"thrust": pm.rotor_loads(PROP, TRUE, om, z, z).thrust}, ["a"] * 8)
+    for call, said in ((lambda: fit_loads(d, PROP, options={}), "options must be a FitOptions, got dict"),
+                       (lambda: fit_loads(d, PROP, base="generic"), "base must be AirfoilParams or CamberedParams "
+                                                                    r"\(a set's name"),
+                       (lambda: fit_loads(d, PROP, air=1.2), "air must be a propmap.Air, got float"),
+                       (lambda: fit_loads(d, "apce_8x6"), "propeller must be a Propeller"),
+                       (lambda: fit_loads({}, PROP), r"data must be a LoadData \(propmap.identify.read_loads\)"),
+                       (lambda: fit_loads_joint([(PROP, d)]), r"datasets\[0\]: data must be a LoadData"),
+                       (lambda: fit_loads_joint([d]), r"datasets\[0\] must be a \(LoadData, Propeller\) pair")):
+        with pytest.raises(TypeError, match=said):
+            call()

@@ -26,7 +26,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..core.airfoil import Air, CamberedParams, SectionParams
+from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import OMEGA_MIN, TIP_MACH_WARN, differentiable, rotor_loads, supersonic_tips_allowed
 from .data import LoadData
@@ -103,6 +103,21 @@ def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
                          f"(the catalogue's: CT 0.054-0.246, CQ 0.0037-0.027): is the {key} in {unit}? (the fit "
                          f"divides each quantity by its own size, so a {key} in other units fits without an error)")
     return notes
+
+
+def _check_fit_args(data, propeller, base, air, options, where: str = "") -> None:
+    """TypeErrors naming an argument of the wrong type (each was an AttributeError from inside:
+    options as a dict, base as a set's name, a propeller's name for the Propeller)."""
+    from ..core.solver import check_model_args
+
+    if not isinstance(data, LoadData):
+        raise TypeError(f"{where}data must be a LoadData (propmap.identify.read_loads), got {type(data).__name__}")
+    if not isinstance(base, (AirfoilParams, CamberedParams)):
+        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(base, str) else ""
+        raise TypeError(f"base must be AirfoilParams or CamberedParams{hint}, got {type(base).__name__}")
+    check_model_args(propeller, base, **({} if air is None else {"air": air}))
+    if not isinstance(options, FitOptions):
+        raise TypeError(f"options must be a FitOptions, got {type(options).__name__}")
 
 
 def _load_keys(data: LoadData, quantities) -> list:
@@ -287,8 +302,11 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     Raises
     ------
     ValueError
-        Unknown or unmeasured quantity, an unknown parameter name, fewer residuals than
-        parameters + 1, or a measured quantity that is zero everywhere.
+        Unknown or unmeasured quantity (or one named twice), an unknown parameter name, fewer
+        residuals than parameters + 1, a measured quantity that is zero everywhere or NaN
+        (not measured) at a fitted point.
+    TypeError
+        ``data``, ``propeller``, ``base``, ``air`` or ``options`` of the wrong type.
     SolverError
         From the rotor model.
 
@@ -306,6 +324,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     from ..io.calibration import generic_params
 
     base = base or generic_params()
+    _check_fit_args(data, propeller, base, air, options)
     air, air_note = data_air(data, air, base.air)
     kind = _data_kind(data)
     names = _default_names(base, options, kind)
@@ -526,6 +545,11 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     datasets = list(datasets)
     if not datasets:
         raise ValueError("fit_loads_joint needs at least one (data, propeller) pair")
+    base = base or generic_params()
+    for k, pair in enumerate(datasets):
+        if not (isinstance(pair, (tuple, list)) and len(pair) == 2):
+            raise TypeError(f"datasets[{k}] must be a (LoadData, Propeller) pair, got {type(pair).__name__}")
+        _check_fit_args(*pair, base, air, options, where=f"datasets[{k}]: ")
     try:
         w = np.ones(len(datasets)) if weights is None else np.asarray(weights, dtype=float)
     except (TypeError, ValueError):
@@ -533,7 +557,6 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     if w.shape != (len(datasets),) or not np.all(np.isfinite(w) & (w > 0)):
         raise ValueError(f"weights must be {len(datasets)} positive finite numbers (one per dataset), got "
                          f"{weights!r:.80}")
-    base = base or generic_params()
     names = _default_names(base, options)
     rows = sum(int(m.sum()) for data, _ in datasets for m in _fitted_rows(data, _load_keys(data, None)).values())
     if rows <= len(names):
