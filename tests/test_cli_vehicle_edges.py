@@ -271,7 +271,9 @@ def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_pa
         pm.example_file("quad")
     monkeypatch.chdir(tmp_path)
     assert pm.read_vehicle("neurobem_quadrotor").mass == 0.772
-    assert pm.read_vehicle(Path("quadrotor.toml")).mass == 0.8
+    assert pm.read_vehicle(Path("quadrotor")).mass == 0.8
+    with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quadrotor.toml: no such file$"):  # a file's name
+        pm.read_vehicle("quadrotor.toml")
     with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quad: no such file \(nor a bundled example vehicle: "
                                                          r"neurobem_quadrotor, quadrotor\)"):
         pm.read_vehicle("quad")

@@ -76,6 +76,16 @@ def test_ulog_from_esc_status(tmp_path):
     assert "esc_status" in log.motor_order
 
 
+def test_ulog_a_nan_logged_angular_acceleration_is_refused_naming_the_file(tmp_path):
+    """A NaN in vehicle_angular_velocity's xyz_derivative passed the reader and surfaced as
+    'FlightSamples.moment must be finite (sample 500 ...)', naming neither the file nor the
+    sample of the log (a flight audit)."""
+    hover_ulog(tmp_path / "f.ulg", rpm=12000.0, nan_derivative_at=57)
+    with pytest.raises(FlightLogError, match=r"f\.ulg: sample 58: angular_acceleration \[nan, -?0\.0, -?0\.0\] is not "
+                                             r"finite"):
+        read_flight_log(tmp_path / "f.ulg")
+
+
 def test_ulog_motor_map(tmp_path):
     hover_ulog(tmp_path / "f.ulg", rpm=12000.0, with_esc=False)
     with pytest.raises(FlightLogError, match="esc_status' not in the log.*--motor-map"):

@@ -80,7 +80,7 @@ def test_a_last_row_without_speed_or_loads_is_a_stopped_motor(tmp_path, truth_pa
     assert read_loads(path).n == full.n
 
 
-@pytest.mark.parametrize("cell", ["", "NaN", "n/a"])
+@pytest.mark.parametrize("cell", ["", "NaN", "n/a", "-nan"])
 def test_a_running_rows_missing_load_is_a_dropout_skipped_with_a_note(tmp_path, truth_params, cell):
     """A sample whose thrust or torque cell is empty or NaN where the motor runs (a load cell's
     dropout in a stand's log) is skipped with a note naming the column and the first line; the
@@ -120,6 +120,15 @@ def test_a_running_rows_missing_load_is_a_dropout_skipped_with_a_note(tmp_path, 
     assert any("'Torque (N·m)' empty (or NaN) in every running row: not read" in n for n in data.notes), data.notes
     # a table of points: each row is a point, a missing thrust refused naming its line and column
     table = tmp_path / "points.csv"
+    # sensors written on alternate rows: no row holds both loads (it read as 'has 0 points')
+    alternate = [rows[0]]
+    for i, r in enumerate(rows[1:]):
+        cells = r.split(",")
+        cells[k if i % 2 else q] = cell
+        alternate.append(",".join(cells))
+    path.write_text("\n".join(alternate) + "\n", encoding="utf-8")
+    with pytest.raises(DataError, match=r"every running row lacks one of 'Thrust \(gf\)', 'Torque \(N·m\)'"):
+        read_loads(path)
     lines = [f"{r},{r / 3000:.3f},{r / 1e5:.4f}" for r in range(3000, 9001, 1000)]
     lines[2] = f"5000,{cell},0.0500"
     table.write_text("rpm,thrust_N,torque_Nm\n" + "\n".join(lines) + "\n", encoding="utf-8")

@@ -9,6 +9,7 @@ needs; nested types are written as their own formats ("esc_report[8] esc").
 
 from __future__ import annotations
 
+import math
 import struct
 
 import numpy as np
@@ -62,13 +63,15 @@ def write_ulog(path, topics: dict, nested: dict | None = None) -> None:
 
 
 def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000.0, with_esc: bool = True,
-               n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False) -> dict:
+               n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False,
+               nan_derivative_at: int | None = None) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
     with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
     ``n_motors``, the others at 1000). ``q_flip``: the attitude quaternion's sign alternates
     from sample to sample (q and -q: the same attitude), its timestamps offset by half a
-    sample. Returns the truth in propmap's frame."""
+    sample. ``nan_derivative_at``: that sample's logged angular acceleration (xyz_derivative)
+    NaN. Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -79,7 +82,8 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
                                  [(int(ti), int(ti), 0.5, 0.2, -9.9) for ti in t]),
         "vehicle_angular_velocity": ([("uint64_t", "timestamp"), ("uint64_t", "timestamp_sample"),
                                       ("float[3]", "xyz"), ("float[3]", "xyz_derivative")],
-                                     [(int(ti), int(ti), 0.1, 0.0, 0.0, 0.0, 0.0, 0.0) for ti in t]),
+                                     [(int(ti), int(ti), 0.1, 0.0, 0.0, math.nan if i == nan_derivative_at else 0.0,
+                                       0.0, 0.0) for i, ti in enumerate(t)]),
         "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")],
                              [(int(ti) + (int(5e5 / rate_hz) if q_flip else 0),
                                *(tuple(-qk for qk in q) if q_flip and i % 2 else q)) for i, ti in enumerate(t)]),

@@ -490,9 +490,7 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     SolverError
         From the model.
     """
-    from .identify.load_data import STATIC_AIRSPEED
-
-    from .identify.load_data import data_air
+    from .identify.load_data import STATIC_AIRSPEED, data_air
 
     air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     keys = [k for k in ("thrust", "drag", "torque") if k in data.measured]

@@ -69,7 +69,16 @@ def data_digest(sources, files=None) -> str:
 def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,
                   min_points: int = 6):
     """(data, propeller, catalogue entry or None, label) from the SOURCE arguments (a CSV of at
-    least ``min_points`` points: 6 to fit, 1 to compare)."""
+    least ``min_points`` points: 6 to fit, 1 to compare).
+
+    Raises
+    ------
+    InputError
+        A catalogue name beside files or ``--prop``, a SOURCE that is neither a catalogue
+        propeller nor a file, a file SOURCE without ``--prop``, copies of one file, stand
+        options (``--rpm-source``, ``--pole-pairs``) for data that are no stand export, several
+        files that are not all UIUC-format, or the readers' DataError (one line).
+    """
     from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
     from ..io.catalogue import catalogue, get_entry
     from ..io.readers import looks_like_uiuc
@@ -117,7 +126,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
 def file_air(data, air, air_choice):
     """The fit's air: the file's logged density (LoadData.air_density) where no air option is
     given (the set's viscosity and speed of sound kept), said in a note; beside an air option
-    that differs from it by more than 2%, a warning."""
+    that differs from it by more than 2%, a warning. Raises nothing."""
     rho = data.air_density
     if rho is None:
         return air

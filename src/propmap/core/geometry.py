@@ -33,7 +33,20 @@ def _real(value) -> float | None:
 
 def refuse_masked(name: str, value) -> None:
     """Refuse a masked array with masked entries, naming the input: NumPy would compute them
-    as if given (``np.asarray`` drops the mask)."""
+    as if given (``np.asarray`` drops the mask).
+
+    Parameters
+    ----------
+    name : str
+        The input's name, for the message.
+    value : object
+        Anything; only a ``numpy.ma.MaskedArray`` with a masked entry is refused.
+
+    Raises
+    ------
+    ValueError
+        ``value`` a masked array with masked entries.
+    """
     if isinstance(value, np.ma.MaskedArray) and np.ma.getmaskarray(value).any():
         raise ValueError(f"{name}: a masked array with masked entries (they would be computed as if given); pass "
                          "the points to compute, e.g. its .compressed()")

@@ -325,8 +325,9 @@ def rotor_loads(
         (:func:`check_model_args`).
     ValueError
         An input that is not a number (a string, a bool), outside its range, or of
-        shapes that do not broadcast (the message names it and the range).
-        With ``derivatives``: an unknown input name, a node-changing parameter
+        shapes that do not broadcast (the message names it and the range); a masked
+        array with masked entries; ``on_failure`` or ``radial`` (True or False) of
+        another value. With ``derivatives``: an unknown input name, a node-changing parameter
         (:data:`~propmap.core.derivatives.NODE_FIELDS`), an Omega below 0.1 rad/s, with
         ``"rho"`` a density too small to be stepped, or ``dynamic_stall`` itself
         (:func:`~propmap.core.derivatives.differentiable`).

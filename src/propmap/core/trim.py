@@ -193,7 +193,8 @@ def trim_collective(
     # neighbours of its highest node refined first, and where it reaches the thrust, the crossing below it
     k_top = np.argmax(Tg, axis=1)
     top, at_top = (Tg + T1[:, None]).max(axis=1), grid[k_top]
-    inner = missing & (k_top > 0) & (k_top < m - 1)
+    # (every node below the thrust: one above them all, or below them all, has no peak to refine, a review found)
+    inner = missing & (k_top > 0) & (k_top < m - 1) & (Tg.max(axis=1) < 0)
     if inner.any():
         idx, kk = np.flatnonzero(inner), k_top[inner]
 
@@ -212,7 +213,7 @@ def trim_collective(
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
         k = int(k_top[i])
-        stalls = 0 < k < m - 1  # short of the target at a peak inside
+        stalls = bool(inner[i])  # short of the target at a peak inside
         peak_at = (f", highest near a collective of {round(math.degrees(at_top[i]), 4) + 0.0:.4g} deg, where the set "
                    "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
         if top[i] > 0 and T1[i] > 10 * top[i]:  # (a thrust in gf: 300 for 2.9 N got the stall's diagnosis)

@@ -214,7 +214,8 @@ class _Csv:
                                          for c in stop)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
-                if (not cell and (c in optional or stopped)) or (c in gaps and cell.lower() in ("", *MISSING_MARKS)):
+                if (not cell and (c in optional or stopped)) or (c in gaps and cell.lower().lstrip("+-") in
+                                                                  ("", *MISSING_MARKS)):  # (C's printf: -nan)
                     nums[c].append(math.nan)
                     continue
                 if not cell:

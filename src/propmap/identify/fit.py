@@ -123,6 +123,7 @@ def _check_fit_args(data, propeller, base, air, options, where: str = "") -> Non
 def _load_keys(data: LoadData, quantities) -> list:
     if isinstance(quantities, str):  # (iterated, 'thrust' was the quantities 't', 'h', ...)
         raise ValueError(f"quantities must be a tuple of names, e.g. ({quantities!r},), got the string {quantities!r}")
+    quantities = None if quantities is None else tuple(quantities)  # (a generator as well)
     if quantities is not None and (not len(quantities) or len(set(quantities)) != len(quantities)):
         # (() meant all of them, and ('thrust', 'thrust') dropped the torque and weighed the thrust twice)
         raise ValueError(f"quantities must name each fitted quantity once (or be None: all measured), got "
@@ -530,7 +531,9 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     -------
     FitResult
         ``residuals`` stacked over the propellers in order; ``extra["per_propeller"]``
-        gives each propeller's name, point count and rms (unweighted) residual.
+        gives each propeller's name, point count, rms (unweighted) residual and the air
+        density it was solved at (``rho``); the result's air is the one every data set was
+        solved at, else ``air`` or the base's.
 
     Raises
     ------
@@ -560,15 +563,20 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     names = _default_names(base, options)
     rows = sum(int(m.sum()) for data, _ in datasets for m in _fitted_rows(data, _load_keys(data, None)).values())
     if rows <= len(names):
-        raise ValueError(f"{rows} fitted load values cannot identify {len(names)} parameters")
-    makers, notes = [], []
-    for (data, prop), wk in zip(datasets, w):
+        raise ValueError(f"datasets: {rows} fitted load values cannot identify {len(names)} parameters")
+    makers, notes, airs = [], [], []
+    for k, ((data, prop), wk) in enumerate(zip(datasets, w)):
         data_air_k, note = data_air(data, air, base.air)  # (each data set at the density it logged)
+        airs.append(data_air_k)
         if note:
             notes.append(f"{prop.name}: {note}")
-        makers.append(_load_residual(data, prop, _load_keys(data, None), data_air_k, names, base,
-                                     weight=math.sqrt(wk) / math.sqrt(data.n))[0])
-    air = base.air if air is None else air
+        try:
+            makers.append(_load_residual(data, prop, _load_keys(data, None), data_air_k, names, base,
+                                         weight=math.sqrt(wk) / math.sqrt(data.n))[0])
+        except ValueError as exc:
+            raise ValueError(f"datasets[{k}] ({prop.name}): {exc}") from None
+    # the air recorded with the set: the one every data set was solved at, else the base's (each in per_propeller)
+    air = airs[0] if all(a == airs[0] for a in airs) else (base.air if air is None else air)
 
     def make_data(opts):
         parts = [m(opts) for m in makers]
@@ -595,7 +603,8 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         rows = _fitted_rows(data, _load_keys(data, None))  # (the in-plane force at in-plane points only)
         m = sum(int(v.sum()) for v in rows.values())
         r = best.fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
-        per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2)))})
+        per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2))),
+                    "rho": airs[len(per)].rho})
         k += m
     result.extra["per_propeller"] = per
     return result

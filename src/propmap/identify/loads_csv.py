@@ -294,6 +294,9 @@ def _skip_dropouts(v: dict, lines: np.ndarray, texts: dict, keys: list, cm, what
     if not gap.any():
         return v, lines, texts, keys
     names = ", ".join(repr(cm.column(k)) for k in keys if np.isnan(v[k]).any())
+    if gap.all():  # (sensors written on alternate rows: 'has 0 points', the reason lost with the notes)
+        raise DataError(f"{what}: {p}: every running row lacks one of {names} (empty or NaN): no row holds all the "
+                        "loads; give them in one row per sample, or one load's columns alone")
     notes.append(f"{int(gap.sum())} of {gap.size} running rows skipped: {names} empty or NaN there (a sensor's "
                  f"dropout; the first at line {lines[int(np.argmax(gap))]})")
     keep = ~gap

@@ -306,6 +306,9 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         # (from the shape alone, not s2: an exact fit, s2 = 0, gave 0/0 and reported every correlation as 0)
         corr = shape / np.outer(unit, unit)
     corr = np.where(np.isfinite(corr), corr, 0.0)
+    free = ~np.isfinite(std)  # (a parameter in a null direction: the pseudo-inverse's shape says nothing of it)
+    corr[free, :] = 0.0
+    corr[:, free] = 0.0
     np.fill_diagonal(corr, 1.0)
     sv = sig  # (of J diag(max(|x|, 0.1)), above)
     poor, warns = [], []

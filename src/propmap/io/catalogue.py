@@ -62,6 +62,8 @@ def example_file(name: str) -> Path:
 
     Raises
     ------
+    TypeError
+        ``name`` not a string.
     ValueError
         Not the name of a bundled example (the message lists them).
 
@@ -70,8 +72,10 @@ def example_file(name: str) -> Path:
     >>> import propmap as pm
     >>> veh = pm.read_vehicle(pm.example_file("neurobem_quadrotor.toml"))
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a bundled example's file name (str), got {type(name).__name__}")
     names = example_files()
-    found = [n for n in names if isinstance(name, str) and name in (n, n.rsplit(".", 1)[0])]
+    found = [n for n in names if name in (n, n.rsplit(".", 1)[0])]
     if len(found) != 1:
         raise ValueError(f"name: {name!r:.80} is not a bundled example; they are {', '.join(names)}")
     return _data_path("examples") / found[0]

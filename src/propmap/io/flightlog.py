@@ -458,6 +458,8 @@ def _check(log: FlightLog, name: str) -> None:
               ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
               ("velocity", log.velocity, SPEED_MAX, "m/s"),
               ("rotor_omega", log.rotor_omega, OMEGA_MAX, "rad/s")]
+    if log.angular_acceleration is not None:  # (a logged derivative's NaN surfaced later as 'FlightSamples.moment')
+        checks.append(("angular_acceleration", log.angular_acceleration, math.inf, "rad/s^2"))
     for what, a, limit, unit in checks:
         bad = ~np.isfinite(a) | (np.abs(a) > limit)
         if bad.any():

@@ -53,9 +53,24 @@ def show_path(path) -> str:
 
 
 def as_path(path, name: str = "path") -> Path:
-    """``path`` (str or PathLike) as a Path; anything else refused with a TypeError naming
-    the argument (pathlib's own said "expected str, bytes or os.PathLike object, not
-    NoneType", naming nothing)."""
+    """``path`` (str or PathLike) as a Path (pathlib's own error said "expected str, bytes or
+    os.PathLike object, not NoneType", naming nothing).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    name : str
+        The argument's name, for the message.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    TypeError
+        ``path`` neither a str nor an os.PathLike.
+    """
     if not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"{name} must be a file path (str or os.PathLike), got {type(path).__name__}")
     return Path(path)

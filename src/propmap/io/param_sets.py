@@ -93,7 +93,12 @@ def resolve_params(spec: str) -> SectionParams:
     KeyError
         Neither a named set nor an existing file.
     TypeError
-        ``spec`` neither a string nor a path (a PathLike is read as a parameter file).
+        ``spec`` neither a string nor a path.
+
+    Notes
+    -----
+    A PathLike is read as a parameter file (:func:`read_params`: ParamsFileError where it is
+    not one or does not exist).
     ParamsFileError
         Malformed file.
     """

@@ -238,11 +238,27 @@ def _example_vehicles() -> tuple[str, ...]:
 
 
 def vehicle_path(path) -> Path:
-    """``path`` as a Path; where no such file exists and it is a bare name of a bundled example
-    vehicle (``quadrotor``, ``neurobem_quadrotor``, with or without ``.toml``;
-    :func:`propmap.example_file`), that example's installed file."""
+    """The vehicle file ``path`` names: itself, or where no such file exists and it is the bare
+    name of a bundled example vehicle, without a folder or an extension (``quadrotor``,
+    ``neurobem_quadrotor``; :func:`propmap.example_files`), that example's installed file. A
+    name with ``.toml`` is a file name, never an example's (a user in another folder would get
+    the example's vehicle without a word: a review).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    TypeError
+        ``path`` not a str or os.PathLike.
+    """
     given = as_path(path)
-    if len(given.parts) == 1 and not os.path.lexists(given):
+    if len(given.parts) == 1 and not given.suffix and not os.path.lexists(given):
         from ..io.catalogue import example_file
 
         try:
@@ -260,8 +276,8 @@ def read_vehicle(path) -> Vehicle:
     Parameters
     ----------
     path : str or Path
-        The file; where no such file exists, a bare name of a bundled example vehicle
-        (``"quadrotor"``, ``"neurobem_quadrotor"``: :func:`vehicle_path`).
+        The file; where no such file exists, the bare name of a bundled example vehicle,
+        without ``.toml`` (``"quadrotor"``, ``"neurobem_quadrotor"``: :func:`vehicle_path`).
 
     Returns
     -------
@@ -295,7 +311,7 @@ def read_vehicle(path) -> Vehicle:
     try:
         data = load_toml(path, VehicleFileError)
     except VehicleFileError as exc:
-        if os.path.lexists(path) or len(path.parts) > 1:
+        if os.path.lexists(path) or len(path.parts) > 1 or path.suffix:
             raise
         raise VehicleFileError(f"{exc} (nor a bundled example vehicle: "
                                f"{', '.join(n[:-5] for n in _example_vehicles())})") from None
