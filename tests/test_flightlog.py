@@ -183,6 +183,7 @@ def test_malformed_mat_logs(tmp_path, seg, mutate, match):
     (b"1,2,3\n4,5,6\n", "x.csv", "3 columns"),
     (b"ULog garbage", "x.ulg", "not a readable ULog"),
     (b"", "x.csv", "empty file"),
+    ((",".join(NEUROBEM_COLUMNS) + "\n").encode(), "x.csv", r"no data rows after the header \(line 1\)"),
     (b"1,2", "x.bin", "unknown flight-log format"),
 ])
 def test_malformed_files(tmp_path, content, name, match):

@@ -271,6 +271,8 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     # the data lines with their numbers in the file (1-based), so that an error names the file's line
     numbered = [(k + 1, line) for k, line in enumerate(lines) if k >= skip and line.strip()
                 and not line.lstrip().startswith("#")]
+    if not numbered:  # (a header alone read as '1 columns', and NumPy's own warning came as a second line)
+        raise FlightLogError(f"{name}: no data rows after the header (line {skip})")
     try:
         a = np.loadtxt(io.StringIO("\n".join(line for _, line in numbered)), delimiter=",", ndmin=2)
     except ValueError as exc:
