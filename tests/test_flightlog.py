@@ -201,3 +201,22 @@ def test_cli_bad_log_exits_2_with_one_line(tmp_path, capsys, shared_data):
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1 and err[0].startswith("propmap: error:")
     assert not (tmp_path / "p.csv").exists()
+
+
+def test_fit_flight_refuses_one_flight_given_as_a_mat_and_its_csv(tmp_path, capsys, seg, shared_data):
+    """A .mat and its CSV form are no byte copies, yet a held-out one trained its own fit (the
+    in-sample error reported as held out; a flight audit): the same times and motor speeds are
+    refused as one flight."""
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:1200]
+    mat = tmp_path / "one.mat"
+    scipy.io.savemat(mat, {"data": arr})
+    csv = tmp_path / "one.csv"
+    csv.write_text(",".join(NEUROBEM_COLUMNS) + "\n" + "\n".join(",".join(f"{x:.9g}" for x in row) for row in arr)
+                   + "\n")
+    other = shared_data / "neurobem_flights" / SEGMENTS[0]
+    code = main(["fit", "flight", str(mat), str(csv), str(other), "--vehicle", "neurobem_quadrotor", "--holdout",
+                 "one.csv", "--rate-hz", "5", "--out", str(tmp_path / "p.toml")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and err[-1].startswith("propmap: error: LOG: one.csv and one.mat hold the same flight")
+    assert not (tmp_path / "p.toml").exists()

@@ -89,6 +89,23 @@ def _logs(paths, motor_map=None, n_motors=None):
     return logs
 
 
+def _refuse_same_flight(logs) -> None:
+    """Refuse two logs of one flight in other forms (a .mat and its .csv: not copies by their
+    bytes, yet a held-out one would train its own fit; a flight audit): the same times and motor
+    speeds, to a CSV's rounding)."""
+    import numpy as np
+
+    seen = {}
+    for lg in logs:
+        key = lg.n
+        for other in seen.get(key, ()):
+            if (np.allclose(lg.t, other.t, rtol=0, atol=1e-6)
+                    and np.allclose(lg.rotor_omega, other.rotor_omega, rtol=1e-6, atol=1e-9)):
+                raise InputError(f"LOG: {lg.name} and {other.name} hold the same flight (times and motor speeds): its "
+                                 "samples would count twice (and a held-out log would train its own fit)")
+        seen.setdefault(key, []).append(lg)
+
+
 def _samples(logs, veh, rate_hz):
     """flight_samples of the logs, its left-out samples said as warnings (once each)."""
     from ..identify.flight import flight_samples
@@ -221,6 +238,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
                          f"got {len(names) - len(held)}")
     logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))  # (the names' checks before the reads)
+    _refuse_same_flight(logs)
     samples = _samples(logs, veh, rate_hz)
     log_rate = min(lg.rate_hz for lg in logs)
     if rate_hz > 1.01 * log_rate:  # (flight_samples takes every k-th sample, k = round(log rate / rate) >= 1)
