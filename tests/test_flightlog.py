@@ -220,3 +220,15 @@ def test_fit_flight_refuses_one_flight_given_as_a_mat_and_its_csv(tmp_path, caps
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and err[-1].startswith("propmap: error: LOG: one.csv and one.mat hold the same flight")
     assert not (tmp_path / "p.toml").exists()
+
+
+def test_a_gap_in_a_logs_time_is_warned_of(tmp_path, seg):
+    """A 5 s jump inside a log was read without a word (a flight audit)."""
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:400].copy()
+    arr[200:, 0] += 5.0
+    path = tmp_path / "gap.csv"
+    path.write_text(",".join(NEUROBEM_COLUMNS) + "\n" + "\n".join(",".join(repr(float(x)) for x in row) for row in arr)
+                    + "\n")
+    with pytest.warns(UserWarning, match=r"gap\.csv: a gap of 5 s in the log's time at t = .* the samples either side"):
+        read_flight_log(path)

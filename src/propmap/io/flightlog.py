@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import io
 import math
+import warnings
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -57,6 +58,8 @@ FORMATS = ("neurobem", "ulog")
 #: plausibility limits of logged values (refused beyond: a unit or column mistake)
 OMEGA_MAX = 1e5  # [rad/s], the solver's limit
 ACC_MAX = 2000.0  # [m/s^2]
+#: a time step this many times the log's median is a gap, warned of (NeuroBEM's 400 Hz logs: at most 1.0)
+GAP_STEPS = 20
 RATE_MAX = 200.0  # [rad/s]
 SPEED_MAX = 500.0  # [m/s]
 MIN_SAMPLES = 2
@@ -451,6 +454,12 @@ def _check(log: FlightLog, name: str) -> None:
         i = int(np.argmax(~(dt > 0)))
         raise FlightLogError(f"{name}: time does not increase at sample {i + 2} (t = {log.t[i + 1]:.6g} s after "
                              f"{log.t[i]:.6g} s)")
+    big = int(np.argmax(dt))
+    if dt[big] > GAP_STEPS * np.median(dt):  # (a 5 s jump inside a 2 s log was read without a word: a flight audit)
+        warnings.warn(f"{name}: a gap of {dt[big]:.3g} s in the log's time at t = {log.t[big]:.6g} s "
+                      f"({dt[big] * log.rate_hz:.0f} median steps): the samples either side are read as they are"
+                      + ("; the angular acceleration is differentiated across it: cut the log there"
+                         if log.angular_acceleration is None else ""), UserWarning, stacklevel=3)
     if log.rate_hz < MIN_RATE_HZ:
         raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.3g} Hz): "
                              f"is it in milliseconds or microseconds? A log's time is read in seconds, and a flight "
