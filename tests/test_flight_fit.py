@@ -156,6 +156,9 @@ def test_the_error_table_keeps_its_columns_apart_for_large_numbers():
 @pytest.mark.parametrize("extra, message", [
     (["--cross-validate", "--holdout", SEGMENTS[1]], "--cross-validate .* needs at least 2 training logs, got 1"),
     (["--rate-hz", "0.01"], r"--rate-hz 0.01: \d training sample\(s\) at that rate cannot identify 6 parameters"),
+    # 7 samples (0.1 Hz, some on the ground): 21 residuals for 6 parameters, but 2 samples per parameter at least
+    # (3 samples of three short logs fitted, a flight audit)
+    (["--rate-hz", "0.1"], r"--rate-hz 0.1: 7 training sample\(s\) at that rate cannot identify 6 parameters"),
 ])
 def test_cli_fit_flight_refuses_before_fitting_naming_the_option(tmp_path, capsys, shared_data, extra, message):
     """Checked before any fit (the cross-validation's was found after a whole fit), one line,

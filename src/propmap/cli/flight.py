@@ -248,12 +248,12 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    from ..identify.flight import AIRFRAME_NAMES, default_flight_names
+    from ..identify.flight import AIRFRAME_NAMES, SAMPLES_PER_PARAMETER, default_flight_names
 
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
     n_names = len(opts.names) if opts.names else len(default_flight_names(base))
-    if 3 * train.n <= n_names:
+    if train.n <= SAMPLES_PER_PARAMETER * n_names:
         total = sum(lg.n for lg in logs if lg.name not in held)
         raise InputError(f"--rate-hz {rate_hz:g}: {train.n} training sample(s) at that rate cannot identify {n_names} "
                          + (f"parameters; raise --rate-hz (the training logs hold {total} samples)" if train.n < total

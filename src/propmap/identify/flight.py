@@ -69,6 +69,11 @@ CG_BOUND = 0.05
 FLIGHT_DISCRETIZATION = Discretization(24, 8)
 
 
+#: a flight fit needs more than this many samples per fitted parameter (three force components a
+#: sample; 3 samples of three 8 s logs at 0.1 Hz fitted 6 parameters, the report itself saying the
+#: data determine 2 of them: a flight audit, 2026-11-26)
+SAMPLES_PER_PARAMETER = 2
+
 def default_flight_names(base: SectionParams) -> tuple[str, ...]:
     """The parameters a flight fit frees by default.
 
@@ -244,8 +249,9 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
     else:
         names = default_flight_names(base)
-    if 3 * samples.n <= len(names):
-        raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters")
+    if samples.n <= SAMPLES_PER_PARAMETER * len(names):
+        raise ValueError(f"{samples.n} samples cannot identify {len(names)} parameters (at least "
+                         f"{SAMPLES_PER_PARAMETER * len(names) + 1}: {SAMPLES_PER_PARAMETER} per parameter)")
     own = [k + 1 for k, r in enumerate(vehicle.rotors) if r.params is not None]
     if own and any(n not in AIRFRAME_NAMES for n in names):
         raise ValueError(f"rotor(s) {', '.join(map(str, own))} of the vehicle carry their own parameter sets, which "
