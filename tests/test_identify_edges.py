@@ -216,3 +216,14 @@ def test_a_parameter_in_a_null_direction_has_no_correlation_reported():
     assert not any("strongly correlated" in w for w in idf.warnings)
     near = _identifiability(("a", "b", "c"), np.ones(3), np.column_stack([c, c * (1 + 1e-3 * t), t]), r)
     assert near.correlation[0, 1] == pytest.approx(-1.0, abs=1e-3)
+
+
+def test_options_the_cambered_fit_would_ignore_are_refused():
+    """lift_model='sincos' with a cambered base and population={} were ignored without a word."""
+    om = np.linspace(400.0, 900.0, 8)
+    z = np.zeros(8)
+    d = LoadData(om, z, z, {"thrust": pm.rotor_loads(PROP, TRUE, om, z, z).thrust}, ["a"] * 8)
+    with pytest.raises(ValueError, match=r"lift_model='sincos' applies to the paper's model"):
+        fit_loads(d, PROP, options=FitOptions(lift_model="sincos"))
+    with pytest.raises(ValueError, match=r"population must be None or a dict with names, covariance, sigma_data"):
+        FitOptions(population={})

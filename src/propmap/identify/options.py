@@ -108,6 +108,9 @@ def param_names(lift_model: str) -> tuple[str, ...]:
 def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
     """The parameters fitted: ``options.names`` (checked), else the default for
     ``data_kind`` "static", "collective" (a static collective sweep), "few_rates" or "rates"."""
+    if isinstance(base, CamberedParams) and options.lift_model != "sigmoid":  # (it was ignored without a word)
+        raise ValueError(f"lift_model={options.lift_model!r} applies to the paper's model (AirfoilParams), not the "
+                         "cambered set given as the base")
     if options.names is not None:
         return _check_names(options.names, base, options)
     if isinstance(base, CamberedParams):
@@ -292,6 +295,11 @@ class FitOptions:
                 raise ValueError(f"{name} must be an integer in [{lo}, {hi:,}], got {v!r:.40}")
         if self.bounds is not None:
             _check_bounds(self.bounds)
+        need = ("names", "covariance", "sigma_data")  # (an empty dict was the shipped prior without a word)
+        if self.population is not None and not (isinstance(self.population, dict)
+                                                and all(k in self.population for k in need)):
+            raise ValueError(f"population must be None or a dict with {', '.join(need)} (io.calibration.population), "
+                             f"got {self.population!r:.60}")
         try:
             x0 = tuple(float(v) for v in self.x0)
         except (TypeError, ValueError):
