@@ -212,7 +212,6 @@ def trim_collective(
         xl[hit], xr[hit] = grid[kk[reached] - 1], peak.x[reached]
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
-        k = int(k_top[i])
         stalls = bool(inner[i])  # short of the target at a peak inside
         peak_at = (f", highest near a collective of {round(math.degrees(at_top[i]), 4) + 0.0:.4g} deg, where the set "
                    "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
