@@ -462,3 +462,29 @@ def test_a_long_non_ascii_name_is_measured_in_bytes(capsys, tmp_path):
     code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / ("é" * 120 + ".toml"))
     assert one_line_error(code, err, "--out: ") and "(245 bytes, 125 characters) is too long" in err, err
     assert "bytes" in err.split("give at most")[1]
+
+
+def test_an_output_that_is_a_link_is_written_through_and_the_package_and_blanks_are_refused(tmp_path, capsys,
+                                                                                            monkeypatch):
+    """--out naming a symbolic link to a file replaced the link with a regular file and left its
+    target as it was (/dev/stdout too, run as root); an --out under the package's code (cli/main.py)
+    was written over (only data/ was protected); loads --out ' ' wrote a file named with a blank
+    (a CLI audit)."""
+    import propmap
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "in.csv").write_text("rpm,airspeed,incidence_deg\n5000,0,0\n", encoding="utf-8")
+    (tmp_path / "target.csv").write_text("old\n", encoding="utf-8")
+    (tmp_path / "link.csv").symlink_to("target.csv")
+    assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", "link.csv"]) == 0
+    assert (tmp_path / "link.csv").is_symlink()
+    assert (tmp_path / "target.csv").read_text(encoding="utf-8").startswith("rpm,airspeed,incidence_deg,thrust")
+    code = Path(propmap.__file__).parent / "cli" / "main.py"
+    before = code.read_bytes()
+    for out, said in ((str(code), "is a file of the propmap package (its code or bundled data)"),
+                      (" ", "the path ' ' is only blanks"), ("\t", "the path '\\t' is only blanks")):
+        capsys.readouterr()
+        assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", out]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and said in err[0], err
+    assert code.read_bytes() == before and not (tmp_path / " ").exists()

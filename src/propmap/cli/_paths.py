@@ -56,7 +56,9 @@ def _is_file(p) -> bool:
 
 
 #: the package's own files (catalogue, calibration): never an output
-_PACKAGE_DATA = os.path.realpath(Path(__file__).resolve().parents[1] / "data")
+#: the propmap package's folder (its code and bundled data): never an output (a mistyped --out once wrote a CSV
+#: over cli/main.py; only data/ was protected)
+_PACKAGE = os.path.realpath(Path(__file__).resolve().parents[1])
 
 
 def vehicle_inputs(vehicle) -> list:
@@ -90,12 +92,13 @@ def check_outputs(outputs, inputs) -> None:
     Raises
     ------
     InputError
-        An empty path, a name the system refuses (too long), an existing folder or other
+        An empty or all-blank path, a name the system refuses (too long), an existing folder or other
         non-regular file (a device such as /dev/null, a pipe), a symbolic link to nothing,
         a path below a regular file or a dangling link, a folder that cannot be written,
-        a file of the propmap package (its catalogue and calibration), two outputs that
+        a file of the propmap package (its code, catalogue and calibration), two outputs that
         are the same file, or a path that resolves to an input file (also through ``..``,
-        symbolic links or hard links).
+        symbolic links or hard links). A symbolic link to a file is checked, and written,
+        as that file.
     """
     ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
     seen: dict[str, str] = {}
@@ -104,6 +107,8 @@ def check_outputs(outputs, inputs) -> None:
             continue
         if str(path) == "":
             raise InputError(f"{option}: the path is empty")
+        if not str(path).strip():  # (loads --out ' ' wrote a file named with a blank)
+            raise InputError(f"{option}: the path {str(path)!r} is only blanks")
         if isinstance(path, str) and path.endswith(_SEPARATORS):  # (a Path has dropped the separator)
             raise InputError(f"{option}: {path} names a folder (it ends with {path[-1]!r}): give a file's name")
         p = Path(path)
@@ -123,8 +128,9 @@ def _check_output(option: str, p: Path, ins) -> None:
         if _same_file(p, inp):
             raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")
     real = os.path.realpath(p)
-    if real == _PACKAGE_DATA or real.startswith(_PACKAGE_DATA + os.sep):
-        raise InputError(f"{option}: {p} is a file of the propmap package (its bundled data); refusing to write it")
+    if real == _PACKAGE or real.startswith(_PACKAGE + os.sep):
+        raise InputError(f"{option}: {p} is a file of the propmap package (its code or bundled data); refusing to "
+                         "write it")
     if p.is_dir():
         raise InputError(f"{option}: {p} is a folder; give a file name")
     if os.path.lexists(p):
@@ -133,6 +139,8 @@ def _check_output(option: str, p: Path, ins) -> None:
         if not p.is_file():
             raise InputError(f"{option}: {p} exists and is not a regular file (a device, pipe or socket); "
                              "give a file name")
+        if p.is_symlink():  # (written through: its target is the file replaced, in the target's folder)
+            p = Path(real)
     parent = p.parent
     while not os.path.lexists(parent):
         parent = parent.parent

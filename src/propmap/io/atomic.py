@@ -214,7 +214,9 @@ def atomic_paths(paths):
     Parameters
     ----------
     paths : sequence of str or Path
-        The targets; their folders are created if missing.
+        The targets; their folders are created if missing. A target that is a symbolic link
+        to an existing file is written through: the file it points to is replaced, the link
+        kept.
 
     Yields
     ------
@@ -226,7 +228,9 @@ def atomic_paths(paths):
     OSError
         As :func:`atomic_write`.
     """
-    paths = [Path(p) for p in paths]
+    # a symbolic link to a file is written through: its target replaced, the link kept (the rename replaced the
+    # link itself with a regular file and left the target as it was; /dev/stdout too, run as root: an audit)
+    paths = [Path(os.path.realpath(p)) if os.path.islink(p) and os.path.exists(p) else Path(p) for p in paths]
     tmps = []
     try:
         for path in paths:
