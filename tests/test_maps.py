@@ -476,3 +476,15 @@ def test_the_check_of_a_map_whose_nodes_all_hold_zero_drag_is_not_zero():
     for method in ("cubic", "linear"):
         assert ds.attrs[f"check_{method}_drag_max"] == pytest.approx(1.0)  # 100%: the map gives 0
         assert ds.attrs[f"check_{method}_rolling_moment_max"] == pytest.approx(1.0)
+
+
+def test_a_map_past_the_files_limits_is_refused_without_its_check_points_too(tmp_path):
+    """With n_check = 0 a map whose loads exceed what a map file holds (|T| up to 1e5 N; a 40 in
+    rotor at 900,000 rpm) was written, and `map --check` then refused the file `map` wrote (a
+    docs audit): refused once solved, checked or not."""
+    prop = pm.Propeller("big", 0.508, 2, np.array([0.08, 0.25, 0.508]), np.array([0.05, 0.05, 0.025]),
+                        np.radians([30.0, 20.0, 10.0]))
+    with pytest.raises(ValueError, match=r"the solved map cannot be recorded: variable thrust must lie within "
+                                         r"\+-100000 N"):
+        build_map(prop, pm.generic_params(), np.array([900000.0, 954929.0]) * RPM, [0.0, 1.0], [0.0, 1.0],
+                  n_check=0)

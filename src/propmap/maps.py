@@ -25,7 +25,8 @@ from . import __version__
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
-from .io.mapcheck import CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_integer, check_propeller
+from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset, check_integer,
+                          check_propeller)
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.uncertainty import model_uncertainty
 from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
@@ -207,7 +208,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         (refused before any work); a propeller a map cannot record (diameter outside
         0.5-100 in, more than 100 blades; io.mapcheck); ``chunk_points`` not an integer
         in [1, MAX_NODES]; ``n_check`` not an integer in [0, 1,000,000]; ``seed`` not an
-        integer >= 0; a scheduler address that cannot be reached within 10 s.
+        integer >= 0; a scheduler address that cannot be reached within 10 s; once solved, a
+        map a file cannot hold (loads beyond the file's limits, |T| up to 1e5 N: the top of
+        an rpm axis for a large propeller; io.mapcheck.check_dataset).
     TypeError
         A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
     """
@@ -319,6 +322,12 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     attrs["model_uncertainty_axial"] = unc["axial"]
     attrs["model_uncertainty_off_axis"] = unc["off_axis"]
     ds = xr.Dataset(data, coords=coords, attrs=attrs)
+    # what a map file may hold, checked whether or not the map is checked against the model (with n_check = 0 a
+    # map past the loads' limits was written, and `map --check` then refused the file `map` had just written)
+    try:
+        check_dataset(ds)
+    except ValueError as exc:
+        raise ValueError(f"the solved map cannot be recorded: {exc} (narrow its rpm or airspeed axis)") from None
     if n_check:
         ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
                                   discretization=discretization))

@@ -280,7 +280,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                 text = c_header_text(RotorMap(ds, c_header.c_interpolation), out, dtype=c_header.c_type,
                                      name=c_header.c_name, vehicle=veh)
             except ValueError as exc:
-                raise InputError(f"--vehicle: {exc}") from None
+                raise InputError(f"{'--vehicle' if veh is not None else '--format c'}: {exc}") from None
             from ..export_c import c_prefix
 
             # the sidecar describes the header: its interpolation, table type and identifiers' prefix

@@ -129,9 +129,22 @@ def data_air(data: LoadData, air, base_air):
     (``LoadData.air_density``) where they logged one, said in the note (the command line fitted
     at the file's density, the Python functions at the set's: a user-level audit, 2026-11-26).
 
+    Parameters
+    ----------
+    data : LoadData
+    air : Air or None
+        The air the caller gave (None: none).
+    base_air : Air
+        The parameter set's air (its viscosity and speed of sound are kept).
+
     Returns
     -------
     (Air, str or None)
+        The air, and a note saying the data's density is used (None where it is not).
+
+    Raises
+    ------
+    Nothing: ``LoadData`` has checked its density.
     """
     from dataclasses import replace
 
