@@ -274,6 +274,8 @@ def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_pa
     assert pm.read_vehicle(Path("quadrotor")).mass == 0.8
     with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quadrotor.toml: no such file$"):  # a file's name
         pm.read_vehicle("quadrotor.toml")
+    with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quadrotor: no such file$"):  # a folder given (a review)
+        pm.read_vehicle("./quadrotor")
     with pytest.raises(pm.vehicle.VehicleFileError, match=r"^quad: no such file \(nor a bundled example vehicle: "
                                                          r"neurobem_quadrotor, quadrotor\)"):
         pm.read_vehicle("quad")

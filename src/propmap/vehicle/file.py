@@ -237,6 +237,13 @@ def _example_vehicles() -> tuple[str, ...]:
     return tuple(n for n in example_files() if n.endswith(".toml"))
 
 
+def _bare(path) -> bool:
+    """Whether ``path`` is a name without a folder as written (pathlib reads './quadrotor' as
+    'quadrotor': a folder given, a file meant, a review found)."""
+    text = os.fspath(path)
+    return isinstance(text, str) and "/" not in text and os.sep not in text
+
+
 def vehicle_path(path) -> Path:
     """The vehicle file ``path`` names: itself, or where no such file exists and it is the bare
     name of a bundled example vehicle, without a folder or an extension (``quadrotor``,
@@ -258,7 +265,7 @@ def vehicle_path(path) -> Path:
         ``path`` not a str or os.PathLike.
     """
     given = as_path(path)
-    if len(given.parts) == 1 and not given.suffix and not os.path.lexists(given):
+    if _bare(path) and not given.suffix and not os.path.lexists(given):
         from ..io.catalogue import example_file
 
         try:
@@ -306,12 +313,12 @@ def read_vehicle(path) -> Vehicle:
         two rotors at one position, an inertia whose largest principal moment lies outside
         INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?).
     """
-    path = vehicle_path(path)
+    given, path = path, vehicle_path(path)
     name = show_path(path)
     try:
         data = load_toml(path, VehicleFileError)
     except VehicleFileError as exc:
-        if os.path.lexists(path) or len(path.parts) > 1 or path.suffix:
+        if os.path.lexists(path) or not _bare(given) or path.suffix:
             raise
         raise VehicleFileError(f"{exc} (nor a bundled example vehicle: "
                                f"{', '.join(n[:-5] for n in _example_vehicles())})") from None
