@@ -113,8 +113,8 @@ def test_demo_writes_figures(capsys, tmp_path):
         (["loads", "apce_8x6", "--rpm", "nan"], "rpm"),
         (["loads", "apce_8x6", "--rpm", "8000", "--airspeed", "-1"], "airspeed"),
         (["loads", "apce_8x6", "--rpm", "8000", "--airspeed", "inf"], "airspeed"),
-        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "190"], "incidence_deg"),
-        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "-5"], "incidence_deg"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "190"], "--incidence-deg"),
+        (["loads", "apce_8x6", "--rpm", "8000", "--incidence-deg", "-5"], "--incidence-deg"),
         (["loads", "nosuchprop", "--rpm", "8000"], "unknown propeller"),
         (["loads", "no/such/geom.txt", "--rpm", "8000"], "no file 'no/such/geom.txt'"),
         (["loads", "missing_9x6_geom.txt", "--rpm", "8000"], "no file 'missing_9x6_geom.txt'"),
@@ -161,7 +161,7 @@ def test_points_csv_writes_no_negative_zero(capsys, tmp_path):
 @pytest.mark.parametrize("args, match", [
     (("--airspeed", "-5"), "got -5.0 (the airspeed is a magnitude: a flow up through the disk, descent, is incidence "
                            "180 deg"),
-    (("--airspeed", "600"), "airspeed must be finite and in [0, 500] m/s, got 600.0\n"),
+    (("--airspeed", "600"), "--airspeed must be finite and in [0, 500] m/s, got 600.0\n"),
 ])
 def test_a_negative_airspeed_points_to_the_descent_incidence(capsys, args, match):
     code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", *args)

@@ -267,8 +267,9 @@ def _short(text, n: int = 80) -> str:
 
 
 def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = "") -> None:
-    """Raise InputError naming the input and its valid range (the solver's ranges)."""
-    pre = f"{where}: " if where else ""
+    """Raise InputError naming the input (the option, ``--rpm``, where no ``where`` is given)
+    and its valid range (the solver's ranges)."""
+    pre = f"{where}: " if where else "--"  # (the options were named 'rpm', 'incidence_deg': a CLI audit)
     if not (math.isfinite(rpm) and RPM_MIN <= rpm <= RPM_MAX):
         why = (" (a parked propeller, rpm 0, has no coefficients: they are referred to the rotation rate; the "
                "Python API's rotor_loads gives its loads)" if math.isfinite(rpm) and 0 <= rpm < RPM_MIN else "")
@@ -280,7 +281,8 @@ def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = 
     if not (math.isfinite(incidence_deg) and 0 <= incidence_deg <= 180):
         why = (" (the model is symmetric: give the magnitude of a negative incidence)"
                if math.isfinite(incidence_deg) and -180 <= incidence_deg < 0 else "")
-        raise InputError(f"{pre}incidence_deg must be finite and in [0, 180] deg, got {incidence_deg!r}{why}")
+        raise InputError(f"{pre}{'incidence_deg' if where else 'incidence-deg'} must be finite and in [0, 180] deg, "
+                         f"got {incidence_deg!r}{why}")
 
 
 def echo_json(obj) -> None:
