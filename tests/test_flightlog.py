@@ -232,3 +232,20 @@ def test_a_gap_in_a_logs_time_is_warned_of(tmp_path, seg):
                     + "\n")
     with pytest.warns(UserWarning, match=r"gap\.csv: a gap of 5 s in the log's time at t = .* the samples either side"):
         read_flight_log(path)
+
+
+@pytest.mark.parametrize("form", ["comment", "trailing comma", "trailing comma, header without"])
+def test_a_leading_comment_and_a_trailing_comma_read_as_the_plain_csv(tmp_path, seg, form):
+    """A leading '# comment' line was taken as the header, and a trailing comma on every line (a
+    spreadsheet's) refused as a 42nd column (a flight audit)."""
+    a = scipy.io.loadmat(seg)
+    arr = next(v for k, v in a.items() if not k.startswith("__"))[:300]
+    header = ",".join(NEUROBEM_COLUMNS)
+    rows = [",".join(repr(float(x)) for x in row) for row in arr]
+    if form == "comment":
+        text = "# a NeuroBEM log\n# exported by hand\n" + header + "\n" + "\n".join(rows)
+    else:
+        text = header + ("" if form.endswith("without") else ",") + "\n" + "\n".join(r + "," for r in rows)
+    (tmp_path / "x.csv").write_text(text + "\n")
+    np.testing.assert_array_equal(read_flight_log(tmp_path / "x.csv").rotor_omega,
+                                  read_flight_log(seg).rotor_omega[:300])

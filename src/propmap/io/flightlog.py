@@ -244,9 +244,16 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     line in the file (1-based, for messages)."""
     text = decode_input_text(raw, p, FlightLogError)
     lines = text.splitlines()
-    first = next((i for i, line in enumerate(lines) if line.strip()), None)
+    # (a leading '# comment' line was taken as the header; '#' lines are skipped among the data too)
+    first = next((i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")), None)
     if first is None:
-        raise FlightLogError(f"{name}: empty file")
+        raise FlightLogError(f"{name}: empty file" if not any(line.strip() for line in lines) else
+                             f"{name}: only comment lines ('#')")
+    body = [line for line in lines[first:] if line.strip() and not line.lstrip().startswith("#")]
+    if len(body) > 1 and all(line.rstrip().endswith(",") for line in body[1:]):
+        # (a spreadsheet's trailing comma on every line, the header's too or not: it was refused as a 42nd column)
+        lines = lines[:first] + [line.rstrip()[:-1] if line.rstrip().endswith(",") and not line.lstrip().startswith("#")
+                                 else line for line in lines[first:]]
     head = [c.strip().strip('"').lower() for c in lines[first].split(",")]
     skip = first
     order = list(range(len(NEUROBEM_COLUMNS)))
