@@ -227,3 +227,15 @@ def test_options_the_cambered_fit_would_ignore_are_refused():
         fit_loads(d, PROP, options=FitOptions(lift_model="sincos"))
     with pytest.raises(ValueError, match=r"population must be None or a dict with names, covariance, sigma_data"):
         FitOptions(population={})
+
+
+def test_a_drag_only_file_is_scored_against_its_rms_in_plane_drag():
+    """With a drag column and no thrust, the reference was the mean static drag coefficient
+    (about 0), labelled 'mean static CQ', and the errors read 19,077% (a validation audit)."""
+    om = np.full(8, 800.0)
+    V = np.r_[0.0, 0.0, np.linspace(2.0, 12.0, 6)]
+    b = np.full(8, 1.2)
+    r = pm.rotor_loads(PROP, TRUE, om, V, b)
+    e = load_errors(LoadData(om, V, b, {"drag": r.drag * 1.01}, ["a"] * 8), PROP, TRUE)
+    assert e["reference"]["drag"][0] == "rms measured drag coefficient"
+    assert e["overall"]["drag"]["n"] == 6 and e["overall"]["drag"]["rms"] == pytest.approx(0.0099, rel=0.01)

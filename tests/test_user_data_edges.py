@@ -1022,3 +1022,26 @@ def test_validate_labels_runs_named_by_their_files_where_two_share_a_run_id(tmp_
     capsys.readouterr()
     assert main(["validate", str(a), str(b), "--prop", "apce_10x7", "--params", str(out), "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["in_fit"] == {"apce_10x7_sweep_4007": "fitted"}
+
+
+def test_validate_labels_the_catalogues_own_data_as_in_sample(tmp_path, capsys, shared_data):
+    """`validate apce_8x6` with its calibrated set (fitted to all 131 points) printed the fit's
+    residual as a plain error; a fit of the catalogue name labelled nothing when its bundled UIUC
+    files were given, nor under `validate PROP --params` (a validation audit)."""
+    from propmap.cli.main import main
+
+    assert main(["validate", "apce_8x6"]) == 0
+    assert "calibrated:apce_8x6 was fitted to these runs: in-sample" in capsys.readouterr().out
+    fit = tmp_path / "fit.toml"
+    assert main(["fit", "loads", "apce_8x6", "--holdout", "2803rd,2804rd", "--out", str(fit)]) == 0
+    capsys.readouterr()
+    assert main(["validate", "apce_8x6", "--params", str(fit)]) == 0
+    out = capsys.readouterr().out
+    assert "was fitted to runs 2797rd, 2798rd, 2799rd, 2800rd, 2801rd, 2802rd: in-sample" in out
+    assert "held out: 2803rd, 2804rd" in out
+    files = sorted(str(p) for p in (shared_data / "uiuc_propdb" / "v1").glob("apce_8x6_*.txt"))
+    assert main(["validate", *files, "--prop", "apce_8x6", "--params", str(fit)]) == 0
+    out = capsys.readouterr().out
+    assert "2803rd (held out)" in out and "2798rd (fitted)" in out
+    assert main(["validate", *files, "--prop", "apce_8x6"]) == 0
+    assert "2804rd (fitted)" in capsys.readouterr().out  # (the calibrated set saw every run)

@@ -139,13 +139,70 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
         from ..plots import plot_validation
 
         fig = plot_validation(v, figure, title=f"{prop}, params {label}: model vs measured\nData: {entry.citation}")
+    in_fit = _catalogue_in_fit(entry, label, params_spec, v.runs)
     if as_json:
-        echo_json({**v.to_dict(), "params_label": label, "figure": None if fig is None else str(fig)})
+        echo_json({**v.to_dict(), "params_label": label, "in_fit": in_fit, "figure": None if fig is None else str(fig)})
     else:
         click.echo(f"{prop}, params {label}")
         print_table(v)
+        if in_fit:  # (the default calibrated set's residual once read as a prediction: a validation audit)
+            fitted = [r for r, how in in_fit.items() if how == "fitted"]
+            held = [r for r, how in in_fit.items() if how == "held out"]
+            which = "these runs" if len(fitted) == len(v.runs) else "runs " + ", ".join(fitted)
+            click.echo(f"{label} was fitted to {which}: in-sample (the fit's residual, not a prediction)"
+                       + (f"; held out: {', '.join(held)}" if held else "")
+                       + ("; `propmap validate --all` gives held-out errors" if not held else ""))
         if fig is not None:
             click.echo(f"figure: {fig}")
+
+
+def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
+    """{run id: "fitted" or "held out"} of a catalogue propeller's runs that the parameter set
+    was fitted to: every run for its own calibrated set, the [coverage] groups of a fit of the
+    catalogue name or of its bundled files ({} for any other set)."""
+    ids = {r.run_id: (f"static_{r.run_id}" if r.kind == "static" else r.run_id) for r in runs}
+    if label == f"calibrated:{entry.name}":
+        return {r: "fitted" for r in ids}
+    from ..io.params_file import set_coverage
+
+    cov = (set_coverage(label) or {}) if params_spec is not None else {}
+    if not cov:
+        return {}
+    from ..io.atomic import file_sha256
+
+    if cov.get("data") != entry.name and not set(cov.get("files_sha256", ())) & {file_sha256(f)
+                                                                                  for f in entry.data_paths()}:
+        return {}
+    held, fitted = set(cov.get("held_out", ())), set(cov.get("groups", ()))
+    return {r: ("held out" if g in held else "fitted") for r, g in ids.items() if g in held | fitted}
+
+
+def _catalogue_runs(sources, prop, what: str) -> list:
+    """The SOURCE files that are the catalogue's own UIUC files of ``prop`` (by content)."""
+    if what != "UIUC files":
+        return []
+    from ..io.atomic import file_sha256
+    from ..io.catalogue import catalogue
+
+    entry = catalogue().get(prop.name)
+    if entry is None:
+        return []
+    bundled = {file_sha256(f) for f in entry.data_paths()}
+    return [s for s in sources if _is_file(Path(s)) and file_sha256(Path(s)) in bundled]
+
+
+def _run_pairs(files, prop, seen: set, every: list) -> dict:
+    """UIUC runs: each file a run, named by its run id, or by its stem where two files share
+    one id, in a fit's read and in this one alike: {this table's label: the fit's label} of
+    each run that both know."""
+    from ..identify import loads_from_uiuc_files
+
+    pairs = {}
+    for f in files:
+        names = {str(g) for g in loads_from_uiuc_files([f], prop.diameter).group} | {Path(f).stem}
+        if names & seen and names & set(every):
+            pairs[min(names & set(every))] = min(names & seen)
+    return pairs
 
 
 def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, pole_pairs, as_json, air_choice):
@@ -182,22 +239,21 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     seen = set(cov.get("held_out", ())) | set(cov.get("groups", ()))
     every = [str(g) for g in dict.fromkeys(data.group)]  # (the data's groups, one or more)
     fit_files = set(cov.get("files_sha256", ()))
+    own = _catalogue_runs(sources, prop, what)  # (the catalogue's own files of this propeller among the sources)
     files = file_digests(sources) if cov else []  # (each file read once, for either rule)
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
         mine = dict(zip([s for s in sources if _is_file(Path(s))], files))
         matched = [s for s, h in mine.items() if h in fit_files]
         if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
             pairs = {g: g for g in every if g in seen} if matched else {}  # (a row's label -> the fit's label)
-        else:  # (UIUC runs: each file a run, named by its run id, or by its stem where two files share one id, in the
-            # fit's read and in this one alike: the label of each that the fit and this table know)
-            from ..identify import loads_from_uiuc_files
-
-            pairs = {}
-            for f in matched:
-                names = {str(g) for g in loads_from_uiuc_files([f], prop.diameter).group} | {Path(f).stem}
-                if names & seen and names & set(every):
-                    pairs[min(names & set(every))] = min(names & seen)
+        else:
+            pairs = _run_pairs(matched, prop, seen, every)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted") for g, f in pairs.items()}
+    elif own and cov.get("data") == prop.name:  # (a fit of the catalogue name: its runs are the bundled files)
+        in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted")
+                  for g, f in _run_pairs(own, prop, seen, every).items()}
+    elif own and label == f"calibrated:{prop.name}":  # (the calibration saw every run of the catalogue's data)
+        in_fit = {g: "fitted" for g in _run_pairs(own, prop, set(every), every)}
     elif cov.get("data") == what and cov.get("data_sha256") in (None, data_digest(sources, files)):
         # (by content: another day's file of the same name once read as this fit's data; a file written before
         # 2026-11-26 has the name and the files' joint digest only)

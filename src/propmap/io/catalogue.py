@@ -144,6 +144,10 @@ class CatalogueEntry:
         """The bundled UIUC wind-tunnel J-sweeps (may be empty)."""
         return [read_uiuc_sweep(_data_path(f)) for f in self.sweep_files]
 
+    def data_paths(self) -> list[Path]:
+        """The installed paths of the bundled UIUC files (static runs, then sweeps)."""
+        return [_data_path(f) for f in (*self.static_files, *self.sweep_files)]
+
 
 @functools.lru_cache(maxsize=1)
 def catalogue() -> dict[str, CatalogueEntry]:
