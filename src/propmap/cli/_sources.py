@@ -123,21 +123,22 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         raise InputError(f"SOURCE: {exc}") from None
 
 
-def file_air(data, air, air_choice):
-    """The fit's air: the file's logged density (LoadData.air_density) where no air option is
-    given (the set's viscosity and speed of sound kept), said in a note; beside an air option
-    that differs from it by more than 2%, a warning. Raises nothing."""
+def file_air(data, air, air_choice, what: str = "fit"):
+    """The air of a fit (``what``) or a comparison: the file's logged density
+    (LoadData.air_density) where no air option is given (the set's viscosity and speed of sound
+    kept), said in a note; beside an air option that differs from it by more than 2%, a
+    warning. Raises nothing."""
     rho = data.air_density
     if rho is None:
         return air
     given = air_choice.options_given()
     if not given:
-        click.echo(f"propmap: note: the fit's air density is the file's, {rho:.4g} kg/m^3 (--rho to give another)",
+        click.echo(f"propmap: note: the {what}'s air density is the file's, {rho:.4g} kg/m^3 (--rho to give another)",
                    err=True)
         return replace(air, rho=rho)
     if abs(air.rho / rho - 1.0) > 0.02:
         warn(f"the air density from {' '.join(given)}, {air.rho:.4g} kg/m^3, is not the file's {rho:.4g} kg/m^3 "
-             "(fitted at the option's)")
+             f"(the {what} takes the option's)")
     return air
 
 

@@ -217,7 +217,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     for note in data.notes:
         click.echo(f"propmap: note: {note}", err=True)
     check_section_match(prop, label)
-    air = file_air(data, air, air_choice)
+    air = file_air(data, air, air_choice, what="comparison")
     from ..identify.data import DataError, sanity_check
 
     try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
