@@ -479,12 +479,27 @@ def test_an_output_that_is_a_link_is_written_through_and_the_package_and_blanks_
     assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", "link.csv"]) == 0
     assert (tmp_path / "link.csv").is_symlink()
     assert (tmp_path / "target.csv").read_text(encoding="utf-8").startswith("rpm,airspeed,incidence_deg,thrust")
-    code = Path(propmap.__file__).parent / "cli" / "main.py"
+    code = Path(propmap.__file__).parent / "cli" / "main.py"  # (protected; the test aims at a new name beside it,
+    new = code.with_name("not_an_output.csv")                 # so that a regression writes no source file over)
     before = code.read_bytes()
-    for out, said in ((str(code), "is a file of the propmap package (its code or bundled data)"),
+    for out, said in ((str(new), "is a file of the propmap package (its code or bundled data)"),
                       (" ", "the path ' ' is only blanks"), ("\t", "the path '\\t' is only blanks")):
         capsys.readouterr()
         assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", out]) == 2
         err = capsys.readouterr().err.strip().splitlines()
         assert len(err) == 1 and said in err[0], err
-    assert code.read_bytes() == before and not (tmp_path / " ").exists()
+    assert code.read_bytes() == before and not new.exists() and not (tmp_path / " ").exists()
+
+
+def test_an_output_that_is_a_standard_stream_is_refused(tmp_path, capsys, monkeypatch):
+    """Written through, `--out /dev/stdout >> log.txt` replaced log.txt (an atomic rename of the
+    file the stream was redirected to; a review): a stream or an open descriptor, or a link to
+    one, is refused, pointing to '-'."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "in.csv").write_text("rpm,airspeed,incidence_deg\n5000,0,0\n", encoding="utf-8")
+    (tmp_path / "mystd").symlink_to("/proc/self/fd/1")
+    for out in ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1", "mystd"):
+        capsys.readouterr()
+        assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", out]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and "is a standard stream or an open file descriptor" in err[0], err

@@ -284,6 +284,9 @@ def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_pa
     data = pm.example_file("level_flight_synthetic.csv")
     assert main(["fit", "level-flight", str(data), "--vehicle", "quadrotor", "--out", "lf.toml"]) == 0
     capsys.readouterr()
+    # './quadrotor' on the command line is a file (click's Path made it 'quadrotor': a review)
+    assert main(["fit", "level-flight", str(data), "--vehicle", "./quadrotor", "--out", "lf2.toml"]) == 2
+    assert "--vehicle: quadrotor: no such file" in capsys.readouterr().err
     local = pm.example_file("quadrotor.toml").read_text(encoding="utf-8").replace("mass = 0.8", "mass = 0.9")
     assert "mass = 0.9" in local
     (tmp_path / "quadrotor").write_text(local, encoding="utf-8")  # a file of that name here: it is read

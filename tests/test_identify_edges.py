@@ -239,3 +239,24 @@ def test_a_drag_only_file_is_scored_against_its_rms_in_plane_drag():
     e = load_errors(LoadData(om, V, b, {"drag": r.drag * 1.01}, ["a"] * 8), PROP, TRUE)
     assert e["reference"]["drag"][0] == "rms measured drag coefficient"
     assert e["overall"]["drag"]["n"] == 6 and e["overall"]["drag"]["rms"] == pytest.approx(0.0099, rel=0.01)
+
+
+def test_a_drag_only_file_without_an_in_plane_airspeed_keeps_its_rms_reference():
+    """The in-plane reference left no point at axial data: 'the rms measured drag coefficient is
+    nan' (a review); without in-plane points every point is scored, as the docstring says."""
+    om = np.linspace(600.0, 900.0, 6)
+    V = np.linspace(0.0, 5.0, 6)
+    e = load_errors(LoadData(om, V, np.zeros(6), {"drag": np.full(6, 0.01)}, ["a"] * 6), PROP, TRUE)
+    assert e["overall"]["drag"]["n"] == 6 and np.isfinite(e["reference"]["drag"][1])
+
+
+def test_a_flight_fit_refuses_lift_model_sincos_with_a_cambered_base(shared_data):
+    """fit_flight ignored lift_model='sincos' with the cambered generic set (the check lived in
+    the load fit's names only; a review)."""
+    from propmap.identify.flight import fit_flight, flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    log = read_flight_log(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat")
+    samples = flight_samples([log], pm.read_vehicle("neurobem_quadrotor"), rate_hz=2.0)
+    with pytest.raises(ValueError, match=r"lift_model='sincos' applies to the paper's model"):
+        fit_flight(samples, pm.read_vehicle("neurobem_quadrotor"), options=FitOptions(lift_model="sincos"))

@@ -1037,7 +1037,7 @@ def test_validate_labels_the_catalogues_own_data_as_in_sample(tmp_path, capsys, 
     capsys.readouterr()
     assert main(["validate", "apce_8x6", "--params", str(fit)]) == 0
     out = capsys.readouterr().out
-    assert "was fitted to runs 2797rd, 2798rd, 2799rd, 2800rd, 2801rd, 2802rd: in-sample" in out
+    assert "was fitted to runs static_2797rd, 2798rd, 2799rd, 2800rd, 2801rd, 2802rd: in-sample" in out
     assert "held out: 2803rd, 2804rd" in out
     files = sorted(str(p) for p in (shared_data / "uiuc_propdb" / "v1").glob("apce_8x6_*.txt"))
     assert main(["validate", *files, "--prop", "apce_8x6", "--params", str(fit)]) == 0

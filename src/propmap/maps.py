@@ -327,7 +327,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     try:
         check_dataset(ds)
     except ValueError as exc:
-        raise ValueError(f"the solved map cannot be recorded: {exc} (narrow its rpm or airspeed axis)") from None
+        raise ValueError(f"the solved map cannot be recorded: {exc} (narrow its rpm or airspeed axis: --rpm, "
+                         "--airspeed)") from None
     if n_check:
         ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
                                   discretization=discretization))

@@ -508,8 +508,9 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     for k in keys:
         own = "thrust" if k in ("thrust", "drag") and "thrust" in coeff else k
         known = np.isfinite(coeff[own])  # (NaN: not measured at that point)
-        if own == "drag":  # (a drag without a thrust: its static mean is 0, once read as 'mean static CQ')
-            known &= data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
+        moving = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
+        if own == "drag" and moving.any():  # (a drag without a thrust: its static mean is 0, once 'mean static CQ')
+            known &= moving
         if own != "drag" and np.any(static & known):
             value, what = float(np.mean(coeff[own][static & known])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
         else:

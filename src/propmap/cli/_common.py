@@ -36,8 +36,10 @@ class PathArg(click.Path):
     alone turns ``--out ''`` into ``Path('.')``, the working folder (a name of blanks is a
     typing slip, not a file anyone wants)."""
 
-    def __init__(self, *, file: bool = False, **kwargs) -> None:
-        super().__init__(path_type=Path, **kwargs)
+    def __init__(self, *, file: bool = False, text: bool = False, **kwargs) -> None:
+        # (text: the value as typed, a str: a vehicle's './quadrotor' is a file, 'quadrotor' a bundled example's name,
+        # which Path() would make the same)
+        super().__init__(path_type=str if text else Path, **kwargs)
         self.file = file  # an output file: a value ending in a separator names a folder (Path() would drop it)
 
     def convert(self, value, param, ctx):

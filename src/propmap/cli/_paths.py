@@ -123,7 +123,24 @@ def check_outputs(outputs, inputs) -> None:
         seen[real] = option
 
 
+def _stream(p: Path) -> bool:
+    """Whether ``p`` names a standard stream or an open descriptor (/dev/stdout, /dev/fd/1,
+    /proc/self/fd/1, or a link to one): written through, an atomic write would replace the
+    redirected file (`--out /dev/stdout >> log.txt` emptied log.txt: a review)."""
+    text = os.path.abspath(p)
+    if text in ("/dev/stdin", "/dev/stdout", "/dev/stderr") or text.startswith(("/dev/fd/", "/proc/")):
+        return True
+    try:
+        target = os.readlink(p) if os.path.islink(p) else ""
+    except OSError:
+        return False
+    return bool(target) and _stream(Path(os.path.join(os.path.dirname(text), target)))
+
+
 def _check_output(option: str, p: Path, ins) -> None:
+    if _stream(p):
+        raise InputError(f"{option}: {p} is a standard stream or an open file descriptor; give a file name (or '-' "
+                         "for standard output, where the command takes it)")
     for inp in ins:
         if _same_file(p, inp):
             raise InputError(f"{option}: {p} is the input file {inp}; refusing to overwrite an input")

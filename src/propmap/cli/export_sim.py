@@ -73,7 +73,7 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--hover-rpm", "hover_rpm", type=float, default=None,
               help="Where hover thrust and torque are pinned to the model's [rpm] (default: the vehicle's hover with "
                    "--vehicle, else the geometric mean of the envelope's rpm).")
-@click.option("--vehicle", type=PathArg(), default=None,
+@click.option("--vehicle", type=PathArg(text=True), default=None,
               help="Vehicle TOML: its hover rpm pins the fit; with --target rotorpy a whole quad_params is written.")
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")

@@ -210,7 +210,7 @@ def fit() -> None:
 
 @fit.command("level-flight")
 @click.argument("data", type=PathArg())
-@click.option("--vehicle", type=PathArg(), required=True, help="Vehicle TOML.")
+@click.option("--vehicle", type=PathArg(text=True), required=True, help="Vehicle TOML.")
 @click.option("--body-lift", is_flag=True,
               help="Append the body-lift term of Sec. III-A and report whether it matters.")
 @click.option("--base", "base_spec", default="gill2017-apc", show_default=True,

@@ -102,7 +102,7 @@ c_options = [
                  help="Interpolation of the --format c function (linear: 22-23 ns a call; cubic, the Python "
                       "evaluator's default: 92-97 ns, 3-9x smaller largest errors; docs/simulators.md)."),
     click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>)."),
-    click.option("--vehicle", type=PathArg(), default=None,
+    click.option("--vehicle", type=PathArg(text=True), default=None,
                  help="With --format c: add <prefix>_vehicle_wrench, the body force and moment of this vehicle TOML "
                       "(every rotor this map's propeller)."),
 ]

@@ -149,7 +149,8 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
             fitted = [r for r, how in in_fit.items() if how == "fitted"]
             held = [r for r, how in in_fit.items() if how == "held out"]
             which = "these runs" if len(fitted) == len(v.runs) else "runs " + ", ".join(fitted)
-            click.echo(f"{label} was fitted to {which}: in-sample (the fit's residual, not a prediction)"
+            whole = " (with the whole catalogue's)" if label == "generic" else ""
+            click.echo(f"{label} was fitted to {which}{whole}: in-sample (the fit's residual, not a prediction)"
                        + (f"; held out: {', '.join(held)}" if held else "")
                        + ("; `propmap validate --all` gives held-out errors" if not held else ""))
         if fig is not None:
@@ -157,12 +158,14 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
 
 
 def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
-    """{run id: "fitted" or "held out"} of a catalogue propeller's runs that the parameter set
-    was fitted to: every run for its own calibrated set, the [coverage] groups of a fit of the
-    catalogue name or of its bundled files ({} for any other set)."""
-    ids = {r.run_id: (f"static_{r.run_id}" if r.kind == "static" else r.run_id) for r in runs}
-    if label == f"calibrated:{entry.name}":
-        return {r: "fitted" for r in ids}
+    """{run label: "fitted" or "held out"} of a catalogue propeller's runs (labelled as `fit
+    loads` groups them: ``static_2797rd``, ``2798rd``) that the parameter set was fitted to:
+    every run for its own calibrated set and for the generic set (fitted to the whole
+    catalogue), the [coverage] groups of a fit of the catalogue name or of its bundled files
+    ({} for any other set)."""
+    ids = {(f"static_{r.run_id}" if r.kind == "static" else r.run_id): None for r in runs}
+    if label in (f"calibrated:{entry.name}", "generic"):
+        return {g: "fitted" for g in ids}
     from ..io.params_file import set_coverage
 
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
@@ -174,7 +177,7 @@ def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
                                                                                   for f in entry.data_paths()}:
         return {}
     held, fitted = set(cov.get("held_out", ())), set(cov.get("groups", ()))
-    return {r: ("held out" if g in held else "fitted") for r, g in ids.items() if g in held | fitted}
+    return {g: ("held out" if g in held else "fitted") for g in ids if g in held | fitted}
 
 
 def _catalogue_runs(sources, prop, what: str) -> list:
@@ -252,7 +255,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     elif own and cov.get("data") == prop.name:  # (a fit of the catalogue name: its runs are the bundled files)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted")
                   for g, f in _run_pairs(own, prop, seen, every).items()}
-    elif own and label == f"calibrated:{prop.name}":  # (the calibration saw every run of the catalogue's data)
+    elif own and label in (f"calibrated:{prop.name}", "generic"):  # (the calibration saw every run of these data)
         in_fit = {g: "fitted" for g in _run_pairs(own, prop, set(every), every)}
     elif cov.get("data") == what and cov.get("data_sha256") in (None, data_digest(sources, files)):
         # (by content: another day's file of the same name once read as this fit's data; a file written before

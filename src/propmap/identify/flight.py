@@ -47,7 +47,7 @@ from .engine import _attach_jacobian, _finish, _params_from, _with_prior
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
-from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_names
+from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_lift_model, _check_names
 from .result import FitResult
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
@@ -73,6 +73,7 @@ FLIGHT_DISCRETIZATION = Discretization(24, 8)
 #: sample; 3 samples of three 8 s logs at 0.1 Hz fitted 6 parameters, the report itself saying the
 #: data determine 2 of them: a flight audit, 2026-11-26)
 SAMPLES_PER_PARAMETER = 2
+
 
 def default_flight_names(base: SectionParams) -> tuple[str, ...]:
     """The parameters a flight fit frees by default.
@@ -235,9 +236,10 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     Raises
     ------
     ValueError
-        Unknown parameter names, fewer residuals than parameters + 1, moments asked for
-        without measured moments, section parameters fitted for a vehicle whose rotors carry
-        their own parameter sets (``Rotor.params``).
+        Unknown parameter names, :data:`SAMPLES_PER_PARAMETER` samples per fitted parameter
+        or fewer, moments asked for without measured moments, section parameters fitted for a
+        vehicle whose rotors carry their own parameter sets (``Rotor.params``), a
+        ``lift_model`` other than the sigmoid with a cambered base.
     SolverError
         From the rotor model.
     """
@@ -245,6 +247,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
     base = base or generic_params()
     air = base.air if air is None else air
+    _check_lift_model(base, options)
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
     else:

@@ -108,9 +108,7 @@ def param_names(lift_model: str) -> tuple[str, ...]:
 def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
     """The parameters fitted: ``options.names`` (checked), else the default for
     ``data_kind`` "static", "collective" (a static collective sweep), "few_rates" or "rates"."""
-    if isinstance(base, CamberedParams) and options.lift_model != "sigmoid":  # (it was ignored without a word)
-        raise ValueError(f"lift_model={options.lift_model!r} applies to the paper's model (AirfoilParams), not the "
-                         "cambered set given as the base")
+    _check_lift_model(base, options)
     if options.names is not None:
         return _check_names(options.names, base, options)
     if isinstance(base, CamberedParams):
@@ -120,6 +118,13 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
             return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
     return param_names(options.lift_model)
+
+
+def _check_lift_model(base: SectionParams, options: "FitOptions") -> None:
+    """Refuse ``options.lift_model`` "sincos" with a cambered base (ignored without a word)."""
+    if isinstance(base, CamberedParams) and options.lift_model != "sigmoid":
+        raise ValueError(f"lift_model={options.lift_model!r} applies to the paper's model (AirfoilParams), not the "
+                         "cambered set given as the base")
 
 
 def _check_bounds(bounds) -> None:

@@ -341,7 +341,8 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
         The map: the sidecar holds its attributes, sizes, axis ranges (``rpm``,
         ``airspeed``, ``incidence_deg``) and variable units.
     path : str or Path
-        The map file; the sidecar is :func:`sidecar_path` of it.
+        The map file; the sidecar is :func:`sidecar_path` of it (of the file a symbolic link
+        points to, which is written through).
     write : callable
         ``write(tmp)`` writes the map file's content to the temporary path ``tmp``
         (a :class:`~pathlib.Path` beside ``path``, existing and empty).
@@ -359,6 +360,8 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
     from .atomic import atomic_paths, file_sha256
 
     path = Path(path)
+    if path.is_symlink() and path.exists():  # (written through, io.atomic: its sidecar beside the file it points to,
+        path = Path(os.path.realpath(path))  # not beside the link, where opening the file found none: a review)
     side = sidecar_path(path)
     with atomic_paths([path, side]) as (tmp, tmp_side):
         write(tmp)
