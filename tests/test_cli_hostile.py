@@ -498,6 +498,10 @@ def test_an_output_that_is_a_standard_stream_is_refused(tmp_path, capsys, monkey
     monkeypatch.chdir(tmp_path)
     (tmp_path / "in.csv").write_text("rpm,airspeed,incidence_deg\n5000,0,0\n", encoding="utf-8")
     (tmp_path / "mystd").symlink_to("/proc/self/fd/1")
+    (tmp_path / "la").symlink_to("lb")  # (a loop of links: the stream check follows at most 40)
+    (tmp_path / "lb").symlink_to("la")
+    assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", "la"]) == 2
+    assert "a symbolic link to a missing file" in capsys.readouterr().err
     for out in ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1", "mystd"):
         capsys.readouterr()
         assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", out]) == 2

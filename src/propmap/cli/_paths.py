@@ -123,7 +123,7 @@ def check_outputs(outputs, inputs) -> None:
         seen[real] = option
 
 
-def _stream(p: Path) -> bool:
+def _stream(p: Path, depth: int = 0) -> bool:
     """Whether ``p`` names a standard stream or an open descriptor (/dev/stdout, /dev/fd/1,
     /proc/self/fd/1, or a link to one): written through, an atomic write would replace the
     redirected file (`--out /dev/stdout >> log.txt` emptied log.txt: a review)."""
@@ -134,7 +134,8 @@ def _stream(p: Path) -> bool:
         target = os.readlink(p) if os.path.islink(p) else ""
     except OSError:
         return False
-    return bool(target) and _stream(Path(os.path.join(os.path.dirname(text), target)))
+    # (a loop of links ends here: 40 hops, the kernel's own limit; the later checks refuse it)
+    return bool(target) and depth < 40 and _stream(Path(os.path.join(os.path.dirname(text), target)), depth + 1)
 
 
 def _check_output(option: str, p: Path, ins) -> None:
