@@ -507,3 +507,13 @@ def test_an_output_that_is_a_standard_stream_is_refused(tmp_path, capsys, monkey
         assert main(["loads", "apce_8x6", "--points", "in.csv", "--out", out]) == 2
         err = capsys.readouterr().err.strip().splitlines()
         assert len(err) == 1 and "is a standard stream or an open file descriptor" in err[0], err
+
+
+def test_a_params_path_that_is_no_regular_file_is_named_as_such(tmp_path, capsys):
+    """--params /dev/null or a folder read as 'not a named set nor an existing file' (a CLI audit)."""
+    for spec, said in (("/dev/null", "/dev/null: not a regular file (a device, pipe or socket)"),
+                       (str(tmp_path), "is a directory, not a file")):
+        capsys.readouterr()
+        assert main(["loads", "apce_8x6", "--rpm", "5000", "--params", spec]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and said in err[0], err

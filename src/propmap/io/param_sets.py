@@ -98,7 +98,9 @@ def resolve_params(spec: str) -> SectionParams:
     Notes
     -----
     A PathLike is read as a parameter file (:func:`read_params`: ParamsFileError where it is
-    not one or does not exist).
+    not one or does not exist), and so is a name that exists but is no regular file (a folder,
+    a device, a pipe: the reader names what it is; they read as "not a named set nor an existing
+    file" until 2026-11-26).
     ParamsFileError
         Malformed file.
     """
@@ -125,5 +127,7 @@ def resolve_params(spec: str) -> SectionParams:
                            f"{near_names(spec.split(':', 1)[1], catalogue())}")
         return c.params
     if Path(spec).is_file():
+        return read_params(spec)
+    if os.path.lexists(spec):  # (/dev/null, a folder, a FIFO: read by the file reader, which names what it is)
         return read_params(spec)
     raise KeyError(f"unknown parameters {spec!r}: not a named set ({', '.join(named_sets())}) nor an existing file")
