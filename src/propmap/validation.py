@@ -504,13 +504,13 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
     static = data.airspeed <= STATIC_AIRSPEED
     coeff = {k: data.measured[k] / scale[k] for k in keys}
+    inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
     reference = {}
     for k in keys:
         own = "thrust" if k in ("thrust", "drag") and "thrust" in coeff else k
         known = np.isfinite(coeff[own])  # (NaN: not measured at that point)
-        moving = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
-        if own == "drag" and moving.any():  # (a drag without a thrust: its static mean is 0, once 'mean static CQ')
-            known &= moving
+        if own == "drag" and inplane.any():  # (a drag without a thrust: its static mean is 0, once 'mean static CQ')
+            known &= inplane
         if own != "drag" and np.any(static & known):
             value, what = float(np.mean(coeff[own][static & known])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
         else:
@@ -520,7 +520,6 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
         reference[k] = (what, value)
 
     ok = np.asarray(r.converged, bool) & np.all([np.isfinite(model[k]) for k in keys], axis=0)
-    inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
     # a load not measured at a point (NaN in LoadData.measured) is left out of its errors (it gave NaN rms)
     where = {k: (ok & inplane if k == "drag" and inplane.any() else ok) & np.isfinite(data.measured[k]) for k in keys}
 

@@ -55,7 +55,6 @@ def _is_file(p) -> bool:
         return False
 
 
-#: the package's own files (catalogue, calibration): never an output
 #: the propmap package's folder (its code and bundled data): never an output (a mistyped --out once wrote a CSV
 #: over cli/main.py; only data/ was protected)
 _PACKAGE = os.path.realpath(Path(__file__).resolve().parents[1])

@@ -97,14 +97,13 @@ def _refuse_same_flight(logs) -> None:
 
     seen = {}
     for lg in logs:
-        key = lg.n
-        for other in seen.get(key, ()):
-            step = float(np.median(np.diff(lg.t)))  # (a '%g' export rounds speeds by 4e-6 and times past 100 s)
+        step = float(np.median(np.diff(lg.t)))  # (a '%g' export rounds speeds by 4e-6 and times past 100 s)
+        for other in seen.get(lg.n, ()):
             if (np.allclose(lg.t, other.t, rtol=0, atol=0.1 * step)
                     and np.allclose(lg.rotor_omega, other.rotor_omega, rtol=1e-4, atol=1e-6)):
                 raise InputError(f"LOG: {lg.name} and {other.name} hold the same flight (times and motor speeds): its "
                                  "samples would count twice (and a held-out log would train its own fit)")
-        seen.setdefault(key, []).append(lg)
+        seen.setdefault(lg.n, []).append(lg)
 
 
 def _samples(logs, veh, rate_hz):

@@ -163,7 +163,7 @@ def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
     every run for its own calibrated set and for the generic set (fitted to the whole
     catalogue), the [coverage] groups of a fit of the catalogue name or of its bundled files
     ({} for any other set)."""
-    ids = {(f"static_{r.run_id}" if r.kind == "static" else r.run_id): None for r in runs}
+    ids = [f"static_{r.run_id}" if r.kind == "static" else r.run_id for r in runs]
     if label in (f"calibrated:{entry.name}", "generic"):
         return {g: "fitted" for g in ids}
     from ..io.params_file import set_coverage
@@ -171,27 +171,19 @@ def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
     if not cov:
         return {}
-    from ..io.atomic import file_sha256
-
-    if cov.get("data") != entry.name and not set(cov.get("files_sha256", ())) & {file_sha256(f)
-                                                                                  for f in entry.data_paths()}:
+    if cov.get("data") != entry.name and not set(cov.get("files_sha256", ())) & _bundled_digests(entry.name):
         return {}
     held, fitted = set(cov.get("held_out", ())), set(cov.get("groups", ()))
     return {g: ("held out" if g in held else "fitted") for g in ids if g in held | fitted}
 
 
-def _catalogue_runs(sources, prop, what: str) -> list:
-    """The SOURCE files that are the catalogue's own UIUC files of ``prop`` (by content)."""
-    if what != "UIUC files":
-        return []
+def _bundled_digests(name: str) -> set:
+    """The SHA-256 of each bundled UIUC file of catalogue propeller ``name`` (none for another)."""
     from ..io.atomic import file_sha256
     from ..io.catalogue import catalogue
 
-    entry = catalogue().get(prop.name)
-    if entry is None:
-        return []
-    bundled = {file_sha256(f) for f in entry.data_paths()}
-    return [s for s in sources if _is_file(Path(s)) and file_sha256(Path(s)) in bundled]
+    entry = catalogue().get(name)
+    return set() if entry is None else {file_sha256(f) for f in entry.data_paths()}
 
 
 def _run_pairs(files, prop, seen: set, every: list) -> dict:
@@ -242,10 +234,12 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     seen = set(cov.get("held_out", ())) | set(cov.get("groups", ()))
     every = [str(g) for g in dict.fromkeys(data.group)]  # (the data's groups, one or more)
     fit_files = set(cov.get("files_sha256", ()))
-    own = _catalogue_runs(sources, prop, what)  # (the catalogue's own files of this propeller among the sources)
-    files = file_digests(sources) if cov else []  # (each file read once, for either rule)
+    uiuc = what == "UIUC files"
+    files = file_digests(sources) if cov or uiuc else []  # (each file read once, for every rule below)
+    mine = dict(zip([s for s in sources if _is_file(Path(s))], files))
+    bundled = _bundled_digests(prop.name) if uiuc else set()
+    own = [s for s, h in mine.items() if h in bundled]  # (the catalogue's own files of this propeller, by content)
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
-        mine = dict(zip([s for s in sources if _is_file(Path(s))], files))
         matched = [s for s, h in mine.items() if h in fit_files]
         if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
             pairs = {g: g for g in every if g in seen} if matched else {}  # (a row's label -> the fit's label)

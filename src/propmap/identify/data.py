@@ -340,8 +340,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     checked = tuple(data.measured) if quantities is None else tuple(quantities)
     warnings_ = []
-    tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),
-                                data.airspeed * np.cos(data.incidence))) / air.speed_of_sound)
+    tip = data.tip_mach(propeller, air)
     if tip > 0.7:
         warnings_.append(f"tip Mach number up to {tip:.2f} in the data (> 0.7): compressibility beyond "
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))

@@ -18,8 +18,7 @@ from dataclasses import fields, replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import (ABSENT_AT_ZERO, AIRFRAME_BOUNDS, BODY_BOUNDS, BODY_X0, BOUNDS, CAMBERED_BOUNDS, ROTOR_BOUNDS,
-                      FitOptions, _is_angle)
+from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FitOptions, _is_angle
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
 
 __all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
@@ -31,7 +30,7 @@ DIFFERENT_X_RTOL = 0.05  # ... but 5% apart in a parameter: the data do not dete
 
 
 def _bounds(names, options: FitOptions):
-    table = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS, **(options.bounds or {})}
+    table = {**ALL_BOUNDS, **(options.bounds or {})}
     unknown = [n for n in names if n not in table]
     if unknown:
         raise ValueError(f"cannot fit {', '.join(unknown)}: valid names are {', '.join(table)}")

@@ -28,7 +28,8 @@ import numpy as np
 
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from ..core.air import SUPERSONIC_TIP
-from ..core.solver import OMEGA_MIN, TIP_MACH_WARN, differentiable, rotor_loads, supersonic_tips_allowed
+from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
+                           supersonic_tips_allowed)
 from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
@@ -65,8 +66,8 @@ def _load_norms(data: LoadData, propeller, keys, air: Air):
             i = int(gaps[0])
             raise ValueError(f"measured {k} is NaN (not measured) at {gaps.size} point(s), the first #{i} "
                              f"({data.group[i]}, {data.omega[i] * 30 / math.pi:.5g} rpm, {data.airspeed[i]:.4g} m/s): "
-                             "give the data "
-                             f"without those points (LoadData.subset), or fit the other quantities (quantities=)")
+                             "give the data without those points (LoadData.subset), or fit the other quantities "
+                             "(quantities=)")
         if not (np.isfinite(s) and s > 0):
             others = [q for q in keys if q != k]
             raise ValueError(f"measured {k} is zero everywhere or not finite, so it cannot be fitted: fit "
@@ -108,8 +109,6 @@ def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
 def _check_fit_args(data, propeller, base, air, options, where: str = "") -> None:
     """TypeErrors naming an argument of the wrong type (each was an AttributeError from inside:
     options as a dict, base as a set's name, a propeller's name for the Propeller)."""
-    from ..core.solver import check_model_args
-
     if not isinstance(data, LoadData):
         raise TypeError(f"{where}data must be a LoadData (propmap.identify.read_loads), got {type(data).__name__}")
     if not isinstance(base, (AirfoilParams, CamberedParams)):
@@ -222,8 +221,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     norm, scales = _load_norms(data, propeller, keys, air)
     rows = _fitted_rows(data, keys)
     # blade tips past TIP_MACH_WARN in the data: said once here, not by every evaluation of the fit (7-100 of them)
-    tip = float(np.max(np.hypot(data.omega * propeller.radius + data.airspeed * np.sin(data.incidence),
-                                data.airspeed * np.cos(data.incidence)), initial=0.0)) / air.speed_of_sound
+    tip = data.tip_mach(propeller, air)
     quiet = tip > TIP_MACH_WARN
     if quiet:
         warnings.warn(f"{SUPERSONIC_TIP} {tip:.2g} (> {TIP_MACH_WARN:g}) in {data.source or 'the data'}: near or "

@@ -11,13 +11,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.geometry import _short
 from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
 from ._checks import first_length, float_array
-
-
-def _short(value) -> str:
-    r = repr(value).replace("\n", " ")
-    return r if len(r) <= 60 else r[:55] + " ..."
 
 
 @dataclass(frozen=True)
@@ -114,6 +110,25 @@ class LoadData:
     def n(self) -> int:
         """Number of points N."""
         return self.omega.size
+
+    def tip_mach(self, propeller, air) -> float:
+        """The largest Mach number at a blade tip over the points, |(Omega R + V sin beta,
+        V cos beta)| / a: the measure of the solver's TIP_MACH_WARN (core/solver.py).
+
+        Parameters
+        ----------
+        propeller : Propeller
+            Its radius R [m].
+        air : Air
+            Its speed of sound a [m/s].
+
+        Returns
+        -------
+        float
+            Mach number [-]; 0 for data without points.
+        """
+        return float(np.max(np.hypot(self.omega * propeller.radius + self.airspeed * np.sin(self.incidence),
+                                     self.airspeed * np.cos(self.incidence)), initial=0.0)) / air.speed_of_sound
 
     def subset(self, mask) -> LoadData:
         """The points where ``mask`` is True."""

@@ -73,6 +73,8 @@ ROTOR_BOUNDS = {"collective": (math.radians(-15), math.radians(15)), "flap_compl
 AIRFRAME_BOUNDS = {"drag_area_x": (0.0, 0.05), "drag_area_y": (0.0, 0.05), "drag_area_z": (0.0, 0.05),
                    "wash_factor": (0.0, 3.0), "cg_x": (-0.05, 0.05), "cg_y": (-0.05, 0.05),
                    "rotor_interference": (0.0, 3.0)}
+#: every fitted name's default bounds (a fit's table, FitOptions.bounds on top)
+ALL_BOUNDS = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS}
 #: parameters whose value 0 is the effect's absence (no flapping, no airframe drag, no slipstream on it, no
 #: interference, no body lift, no rotational stall delay): a fit that ends at that lower bound found none, which is
 #: not suspect
@@ -131,7 +133,7 @@ def _check_bounds(bounds) -> None:
     """Refuse a ``FitOptions.bounds`` that is not name -> (low, high) with finite low < high and
     a known name (a typo was ignored; inverted, equal or NaN bounds failed in SciPy without the
     name; a 3-tuple was cut to its first two values)."""
-    known = {**BOUNDS, **CAMBERED_BOUNDS, **BODY_BOUNDS, **ROTOR_BOUNDS, **AIRFRAME_BOUNDS}
+    known = ALL_BOUNDS
     if not isinstance(bounds, dict):
         raise ValueError(f"bounds must be a dict of name -> (low, high), got {type(bounds).__name__}")
     for name, b in bounds.items():

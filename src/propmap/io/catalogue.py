@@ -145,7 +145,13 @@ class CatalogueEntry:
         return [read_uiuc_sweep(_data_path(f)) for f in self.sweep_files]
 
     def data_paths(self) -> list[Path]:
-        """The installed paths of the bundled UIUC files (static runs, then sweeps)."""
+        """The installed paths of the bundled UIUC files.
+
+        Returns
+        -------
+        list of pathlib.Path
+            The static runs' files, then the sweeps' (empty for a propeller without data).
+        """
         return [_data_path(f) for f in (*self.static_files, *self.sweep_files)]
 
 

@@ -94,6 +94,8 @@ def resolve_params(spec: str) -> SectionParams:
         Neither a named set nor an existing file.
     TypeError
         ``spec`` neither a string nor a path.
+    ParamsFileError
+        Malformed file.
 
     Notes
     -----
@@ -101,8 +103,6 @@ def resolve_params(spec: str) -> SectionParams:
     not one or does not exist), and so is a name that exists but is no regular file (a folder,
     a device, a pipe: the reader names what it is; they read as "not a named set nor an existing
     file" until 2026-11-26).
-    ParamsFileError
-        Malformed file.
     """
     from ..core.airfoil import preset
     from .calibration import GENERIC, calibrated, generic_params
@@ -126,8 +126,8 @@ def resolve_params(spec: str) -> SectionParams:
             raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set"
                            f"{near_names(spec.split(':', 1)[1], catalogue())}")
         return c.params
-    if Path(spec).is_file():
-        return read_params(spec)
-    if os.path.lexists(spec):  # (/dev/null, a folder, a FIFO: read by the file reader, which names what it is)
+    # a file; /dev/null, a folder, a FIFO too: the file reader names what it is (is_file raises on a name too long,
+    # which the command line says as such; lexists would call it no file)
+    if Path(spec).is_file() or os.path.lexists(spec):
         return read_params(spec)
     raise KeyError(f"unknown parameters {spec!r}: not a named set ({', '.join(named_sets())}) nor an existing file")
