@@ -225,9 +225,10 @@ def snap_edge(x, lo, hi):
 @numba.njit(inline="always", **_FLAGS)
 def point_frame(vx, vy, vz, a0, a1, a2):
     """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
-    scaled by its largest component and normalised to (zx, zy, zz); the speed |V| (V below 1e150
-    m/s in every component: no overflow), the axial speed V . z and the incidence
-    beta = arccos(V . z / |V|) (0 where V = 0). Returns (zx, zy, zz, speed, axial, beta)."""
+    scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, scaled by V's
+    largest component too (neither overflow nor underflow: a speed of 1e-200 m/s squared is 0),
+    the axial speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0).
+    Returns (zx, zy, zz, speed, axial, beta)."""
     amax = max(abs(a0), abs(a1), abs(a2))
     a0 /= amax
     a1 /= amax
@@ -236,7 +237,13 @@ def point_frame(vx, vy, vz, a0, a1, a2):
     zx = a0 / n
     zy = a1 / n
     zz = a2 / n
-    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+    vmax = max(abs(vx), abs(vy), abs(vz))
+    speed = 0.0
+    if vmax > 0.0:
+        sx = vx / vmax
+        sy = vy / vmax
+        sz = vz / vmax
+        speed = vmax * np.sqrt(sx * sx + sy * sy + sz * sz)
     axial = vx * zx + vy * zy + vz * zz
     beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
     return zx, zy, zz, speed, axial, beta
