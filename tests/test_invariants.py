@@ -366,3 +366,20 @@ def test_a_propellers_name_is_a_string_and_its_stations_one_dimensional(apc8x6):
         with pytest.raises(ValueError, match=said):
             dataclasses.replace(apc8x6, **kw)
     np.testing.assert_array_equal(dataclasses.replace(apc8x6, r=list(apc8x6.r)).r, apc8x6.r)
+
+
+def test_single_precision_pi_is_axial_descent():
+    """np.float32(np.pi), 8.7e-8 rad above pi, was refused as outside [0, pi] (a physics audit,
+    2026-11-27); it is read as pi, scalar and array alike, and the caller's array is not written."""
+    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+    ref = pm.rotor_loads(prop, params, 900.0, 10.0, math.pi)
+    b = np.deg2rad(np.array([180.0, 90.0], dtype=np.float32))
+    kept = b.copy()
+    for inc in (np.float32(np.pi), float(np.float32(np.pi))):
+        r = pm.rotor_loads(prop, params, 900.0, 10.0, inc)
+        assert float(r.incidence) == math.pi and float(r.thrust) == float(ref.thrust) and float(r.drag) == 0.0
+    arr = pm.rotor_loads(prop, params, 900.0, 10.0, b)
+    assert arr.incidence[0] == math.pi and arr.thrust[0] == float(ref.thrust)
+    np.testing.assert_array_equal(b, kept)
+    with pytest.raises(ValueError, match="incidence must be finite and in"):  # beyond float32's rounding
+        pm.rotor_loads(prop, params, 900.0, 10.0, math.pi + 1e-6)

@@ -97,6 +97,10 @@ TIP_MACH_WARN = 0.8
 COLLECTIVE_RANGE = math.radians(45.0)
 _RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
            "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
+#: an incidence above pi by at most this [rad] is read as pi: single precision's nearest value to pi
+#: (np.float32(np.pi), np.deg2rad(np.float32(180))) lies 8.7e-8 rad above it (a physics audit,
+#: 2026-11-27: refused as out of [0, pi]); the snap is one float32 spacing there
+INCIDENCE_SNAP = 2.5e-7
 
 
 #: a 1-element array's 0-d view (a[0, ...])
@@ -146,6 +150,8 @@ def _as_array(name: str, value) -> np.ndarray:
     if a.dtype.kind not in "fiu" or has_bool(value):
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
+    if name == "incidence":  # (a new array where it snaps: the caller's is never written)
+        a = np.where((a > hi) & (a <= hi + INCIDENCE_SNAP), hi, a) if np.any(a > hi) else a
     with np.errstate(invalid="ignore"):
         bad = ~((a >= lo) & (a <= hi))  # also catches NaN
     if bad.any():
@@ -160,6 +166,8 @@ def _scalar(name: str, value) -> float:
         x = float(value)
     except OverflowError:  # an int beyond the float range
         raise _range_error(name, math.inf) from None
+    if name == "incidence" and hi < x <= hi + INCIDENCE_SNAP:
+        return hi
     if not lo <= x <= hi:
         raise _range_error(name, x)
     return x
@@ -279,7 +287,8 @@ def rotor_loads(
     incidence : float or array_like
         beta [rad] in [0, pi]: the angle between the freestream seen by the disk
         and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
-        docs/numerics.md item 1. Irrelevant when V = 0.
+        docs/numerics.md item 1. Irrelevant when V = 0. A value above pi by at most 2.5e-7
+        (single precision's pi, 8.7e-8 above it) is taken as pi.
     air : Air, optional
         Density, viscosity, speed of sound. Default: the parameter set's (``params.air``).
     discretization : Discretization, optional
