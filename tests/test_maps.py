@@ -488,3 +488,39 @@ def test_a_map_past_the_files_limits_is_refused_without_its_check_points_too(tmp
                                          r"\+-100000 N"):
         build_map(prop, pm.generic_params(), np.array([900000.0, 954929.0]) * RPM, [0.0, 1.0], [0.0, 1.0],
                   n_check=0)
+
+
+def test_threads_sharing_a_map_get_their_own_answers(small_map):
+    """The scalar paths' output buffers are per thread (a simulator-developer audit, 2026-11-27:
+    two threads' one-point calls on one map, or on shallow copies of it, got each other's loads
+    about once in 200 calls); a pickled or copied map evaluates as the original."""
+    import copy
+    import pickle
+    import sys
+    from concurrent.futures import ThreadPoolExecutor
+
+    rm = RotorMap(small_map[2])
+    pts = [(5000 * RPM, 2.0, 0.3), (8500 * RPM, 12.0, 2.0)]
+    v = [np.array([pts[k][1] * math.sin(pts[k][2]), 0.0, pts[k][1] * math.cos(pts[k][2])]) for k in range(2)]
+    ref = [(rm.loads(*p).thrust, rm.wrench(v[k], [0.0, 0.0, 1.0], pts[k][0]).force[2]) for k, p in enumerate(pts)]
+    assert ref[0][0] != ref[1][0]
+
+    def job(k):
+        m = copy.copy(rm) if k >= 2 else rm
+        p, w = pts[k % 2], v[k % 2]
+        wrong = 0
+        for _ in range(600):
+            wrong += m.loads(*p).thrust != ref[k % 2][0]
+            wrong += m.wrench(w, [0.0, 0.0, 1.0], p[0]).force[2] != ref[k % 2][1]
+        return wrong
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)  # switch threads as often as the interpreter can
+    try:
+        with ThreadPoolExecutor(4) as pool:
+            assert list(pool.map(job, range(4))) == [0, 0, 0, 0]
+    finally:
+        sys.setswitchinterval(interval)
+    for other in (copy.copy(rm), copy.deepcopy(rm), pickle.loads(pickle.dumps(rm))):
+        assert other.loads(*pts[1]).thrust == ref[1][0]
+        assert other.wrench(v[1], [0.0, 0.0, 1.0], pts[1][0]).force[2] == ref[1][1]

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 from typing import NamedTuple
 
 import numpy as np
@@ -152,6 +153,17 @@ def _warn_side_loads_missing(attrs: dict) -> None:
                       "them; build it again to have them", UserWarning, stacklevel=3)
 
 
+class _Buffers(threading.local):
+    """The scalar paths' output arrays, one set per thread (a simulator-developer audit,
+    2026-11-27: shared by the whole map, two threads' one-point calls returned each other's
+    loads, about 1 in 200 calls)."""
+
+    def __init__(self) -> None:
+        #: (loads, wrench, inside, flagged): one attribute, one lookup in the thread's dict
+        self.arrays = (np.empty((1, len(LOADS))), np.empty((1, len(LOADS) + 6)), np.empty(1, dtype=np.bool_),
+                       np.empty(1, dtype=np.bool_))
+
+
 class RotorMap:
     """A rotor map ready to evaluate: ``RotorMap.open("map.nc").loads(omega, V, beta)``.
 
@@ -232,10 +244,17 @@ class RotorMap:
         self._interp_point, self._wrench_point = _interp.interp_point, _interp.wrench_point
         self._hover_speed = _interp.HOVER_SPEED  # (below it, on an airspeed axis from 0, any incidence is inside)
         self._policy = {"raise": _interp.CLIP, "clip": _interp.CLIP, "nan": _interp.NAN}
-        self._out1 = np.empty((1, len(LOADS)))
-        self._out1w = np.empty((1, len(LOADS) + 6))
-        self._in1 = np.empty(1, dtype=np.bool_)
-        self._fl1 = np.empty(1, dtype=np.bool_)
+        self._buffers = _Buffers()
+
+    def __getstate__(self) -> dict:
+        """Pickle and copy without the per-thread buffers (a copy makes its own)."""
+        state = self.__dict__.copy()
+        del state["_buffers"]
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._buffers = _Buffers()
 
     @classmethod
     def open(cls, path, prop: str | None = None, interpolation: str = "cubic") -> "RotorMap":
@@ -422,20 +441,20 @@ class RotorMap:
             return None
         if out_of_grid not in POLICIES:
             return None
+        out, _, in1, fl1 = self._buffers.arrays
         self._interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, omega,
-                     airspeed, incidence, self._policy[out_of_grid], self._order, self._out1, self._in1,
-                     self._fl1)
-        t, d, q, m = self._out1[0].tolist()
+                           airspeed, incidence, self._policy[out_of_grid], self._order, out, in1, fl1)
+        t, d, q, m = out[0].tolist()
         y = mp = 0.0
         if self.side_loads:
             self._interp_point(self.omega, self.airspeed, self.incidence, self._side_table, self._cellflag,
                                self.radius, omega, airspeed, incidence, self._policy[out_of_grid], self._order,
-                               self._out1, self._in1, self._fl1)
-            y, mp = self._out1[0, :2].tolist()
+                               out, in1, fl1)
+            y, mp = out[0, :2].tolist()
         omega = float(omega)
         if not inside and out_of_grid == "clip":
             omega = min(omega, o1)  # below the grid the loads are scaled to the query's
-        return MapLoads(t, d, q, m, omega, bool(self._in1[0]), bool(self._fl1[0]), y, mp)
+        return MapLoads(t, d, q, m, omega, bool(in1[0]), bool(fl1[0]), y, mp)
 
     def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
         """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
@@ -451,20 +470,19 @@ class RotorMap:
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
         if s is None or policy is None:
             return None
-        out = self._out1w
-        side = self._out1
+        side, out, in1, fl1 = self._buffers.arrays
         if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table,
                               self._table if self._side_table is None else self._side_table, self.side_loads,
                               self._cellflag, self.radius, v, a, omega, s, policy, out_of_grid == "raise", self._order,
-                              out, side, self._in1, self._fl1):
+                              out, side, in1, fl1):
             return None
         t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
         y, mp = side[0, :2].tolist() if self.side_loads else (0.0, 0.0)
-        inside = bool(self._in1[0])
+        inside = bool(in1[0])
         if not inside and out_of_grid == "clip":
             omega = min(omega, self._box[1])  # below the grid: scaled to the query's
         return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
-                         MapLoads(t, d, q, m, float(omega), inside, bool(self._fl1[0]), y, mp))
+                         MapLoads(t, d, q, m, float(omega), inside, bool(fl1[0]), y, mp))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """:func:`check_map` with the model recorded in the map."""

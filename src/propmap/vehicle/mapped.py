@@ -192,8 +192,8 @@ class VehicleMap:
 
         Notes
         -----
-        One RotorMap's scalar path reuses its output buffers: evaluate one VehicleMap from
-        one thread at a time (or give each thread its own maps).
+        Threads may share a VehicleMap: a RotorMap's scalar path keeps its output buffers per
+        thread.
         """
         n_rot = len(self.vehicle.rotors)
         v = _samples("velocity", velocity, 3)
