@@ -524,3 +524,17 @@ def test_threads_sharing_a_map_get_their_own_answers(small_map):
     for other in (copy.copy(rm), copy.deepcopy(rm), pickle.loads(pickle.dumps(rm))):
         assert other.loads(*pts[1]).thrust == ref[1][0]
         assert other.wrench(v[1], [0.0, 0.0, 1.0], pts[1][0]).force[2] == ref[1][1]
+
+
+@pytest.mark.parametrize("policy", ["raise", "clip", "nan"])
+def test_a_subnormal_axis_or_velocity_in_the_scalar_wrench(small_map, policy):
+    """An axis of 1e-320 (1 / 1e-320 overflows under fastmath's reciprocal) gave NaN loads under
+    "clip" and "nan" on the scalar path (a simulator-developer audit, 2026-11-27); the array path
+    and "raise" gave the loads. A velocity of 1e-320 m/s is the rotor at rest in both paths."""
+    rm = RotorMap(small_map[2])
+    for v, a in (([1.0, 0.0, 0.0], [0.0, 0.0, 1e-320]), ([1e-320, 0.0, 1e-321], [0.0, 0.0, 1.0])):
+        one = rm.wrench(v, a, 500.0, out_of_grid=policy)
+        arr = rm.wrench(np.array([v]), np.array([a]), np.array([500.0]), out_of_grid=policy)
+        assert np.isfinite(one.force).all() and one.force[2] > 1.0 and bool(one.loads.inside)
+        np.testing.assert_allclose(one.force, arr.force[0], rtol=1e-12, atol=1e-12)
+

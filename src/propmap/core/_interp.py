@@ -222,14 +222,27 @@ def snap_edge(x, lo, hi):
     return x
 
 
+#: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
+#: or underflow, and 1 / its largest component overflow under fastmath's reciprocal ("arcp")
+TINY = 1e-150
+POW2 = 2.0 ** 600
+
+
 @numba.njit(inline="always", **_FLAGS)
 def point_frame(vx, vy, vz, a0, a1, a2):
     """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
-    scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, scaled by V's
-    largest component too (neither overflow nor underflow: a speed of 1e-200 m/s squared is 0),
-    the axial speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0).
+    scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, the axial
+    speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0). A vector below
+    TINY is scaled by the power of two POW2 first, so that neither a velocity of 1e-200 m/s
+    (its squares 0) nor an axis of 1e-320 (1 / 1e-320 overflows) is lost (a physics audit and a
+    simulator-developer audit, 2026-11-27: the speed 0, and NaN loads under "clip").
     Returns (zx, zy, zz, speed, axial, beta)."""
     amax = max(abs(a0), abs(a1), abs(a2))
+    if amax < TINY:
+        a0 *= POW2
+        a1 *= POW2
+        a2 *= POW2
+        amax *= POW2
     a0 /= amax
     a1 /= amax
     a2 /= amax
@@ -237,15 +250,19 @@ def point_frame(vx, vy, vz, a0, a1, a2):
     zx = a0 / n
     zy = a1 / n
     zz = a2 / n
-    vmax = max(abs(vx), abs(vy), abs(vz))
-    speed = 0.0
-    if vmax > 0.0:
-        sx = vx / vmax
-        sy = vy / vmax
-        sz = vz / vmax
-        speed = vmax * np.sqrt(sx * sx + sy * sy + sz * sz)
+    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+    if speed < TINY:
+        sx = vx * POW2
+        sy = vy * POW2
+        sz = vz * POW2
+        ns = np.sqrt(sx * sx + sy * sy + sz * sz)
+        cs = sx * zx + sy * zy + sz * zz
+        speed = ns * (1.0 / POW2)
+        axial = cs * (1.0 / POW2)
+        beta = np.arccos(min(max(cs / ns, -1.0), 1.0)) if ns > 0.0 else 0.0
+        return zx, zy, zz, speed, axial, beta
     axial = vx * zx + vy * zy + vz * zz
-    beta = np.arccos(min(max(axial / speed, -1.0), 1.0)) if speed > 0.0 else 0.0
+    beta = np.arccos(min(max(axial / speed, -1.0), 1.0))
     return zx, zy, zz, speed, axial, beta
 
 
