@@ -137,6 +137,8 @@ def test_c_wrench_equals_the_python_wrench(tmp_path, rotor_map):
             v = np.zeros(3)
         if i == 1:
             v = 3.0 * a / np.linalg.norm(a)  # axial: e_ip = 0
+        if 2 <= i < 40:  # nearly axial, climb and descent: the incidence's rounding (arccos of a cosine
+            v = a * rng.uniform(-4.0, 4.0)  # rounded to 1 - 1e-16 was 1.5e-8 rad; an audit, 2026-11-27)
         rows.append((*v, *a, float(rng.uniform(rotor_map.omega[0], rotor_map.omega[-1])), int(rng.choice([1, -1]))))
     bad = [(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 500.0, 1), (math.nan, 0.0, 0.0, 0.0, 0.0, 1.0, 500.0, 1),
            (1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 500.0, 2), (1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -5.0, 1)]

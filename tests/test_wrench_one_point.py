@@ -94,3 +94,20 @@ def test_one_point_speed_does_not_underflow(speed):
         np.testing.assert_allclose(one.force, arr.force[0], rtol=1e-13, atol=1e-13 * abs(float(arr.force[0, 2])))
         assert one.force[2] > 0.0  # the parked rotor's thrust in a flow, not still air's 0
 
+
+
+def test_a_velocity_along_the_axis_has_zero_incidence_to_the_last_digits():
+    """beta = arccos(V . z / |V|) is computed as atan2(|V - (V . z) z|, V . z): the arccos of a cosine
+    rounded to 1 - 1e-16 was 1.5e-8 rad, the scalar and array paths' roundings 1e-8 rad apart (a
+    simulator-developer audit, 2026-11-27, with the C header's wrench)."""
+    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+    rng = np.random.default_rng(11)
+    for _ in range(30):
+        a = rng.normal(size=3) * rng.uniform(0.1, 5.0)
+        c = rng.uniform(-4.0, 4.0)
+        v = a * c
+        one = pm.rotor_wrench(prop, params, v, a, 700.0)
+        arr = pm.rotor_wrench(prop, params, v[None], a[None], np.array([700.0]))
+        axial = 0.0 if c > 0 else math.pi
+        for b in (float(one.loads.incidence), float(arr.loads.incidence[0])):
+            assert abs(b - axial) < 1e-14

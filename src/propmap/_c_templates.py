@@ -163,7 +163,10 @@ static inline int {prefix}_wrench(const double velocity[3], const double axis[3]
     for (k = 0; k < 3; k++) z[k] /= n;
     speed = sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
     axial = velocity[0] * z[0] + velocity[1] * z[1] + velocity[2] * z[2];
-    beta = speed > 0.0 ? acos(fmin(fmax(axial / speed, -1.0), 1.0)) : 0.0;
+    for (k = 0; k < 3; k++) ip[k] = velocity[k] - axial * z[k];
+    n_ip = sqrt(ip[0] * ip[0] + ip[1] * ip[1] + ip[2] * ip[2]);
+    /* arccos(axial / speed) as atan2: the arccos of a cosine rounded to 1 - 1e-16 is 1.5e-8 rad */
+    beta = speed > 0.0 ? atan2(n_ip, axial) : 0.0;
     /* an incidence a few ulp beyond an end of the axis is on it (an exactly in-plane velocity) */
     if (beta > {prefix}_incidence[{n2} - 1] && beta <= {prefix}_incidence[{n2} - 1] + 1e-12)
         beta = {prefix}_incidence[{n2} - 1];
@@ -171,8 +174,6 @@ static inline int {prefix}_wrench(const double velocity[3], const double axis[3]
         beta = {prefix}_incidence[0];
     status = {prefix}_loads(omega, speed, beta, policy, out);
     if (status < 0) return status;
-    for (k = 0; k < 3; k++) ip[k] = velocity[k] - axial * z[k];
-    n_ip = sqrt(ip[0] * ip[0] + ip[1] * ip[1] + ip[2] * ip[2]);
     if (n_ip > 1e-12 * fmax(speed, 1e-300))
         for (k = 0; k < 3; k++) e[k] = ip[k] / n_ip;
     for (k = 0; k < 3; k++) {{

@@ -232,7 +232,9 @@ POW2 = 2.0 ** 600
 def point_frame(vx, vy, vz, a0, a1, a2):
     """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
     scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, the axial
-    speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0). A vector below
+    speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0), computed as
+    atan2(|V - (V . z) z|, V . z), which keeps its digits near axial flow (the arccos of a cosine
+    rounded to 1 - 1e-16 is 1.5e-8 rad: a simulator-developer audit, 2026-11-27). A vector below
     TINY is scaled by the power of two POW2 first, so that neither a velocity of 1e-200 m/s
     (its squares 0) nor an axis of 1e-320 (1 / 1e-320 overflows) is lost (a physics audit and a
     simulator-developer audit, 2026-11-27: the speed 0, and NaN loads under "clip").
@@ -259,11 +261,22 @@ def point_frame(vx, vy, vz, a0, a1, a2):
         cs = sx * zx + sy * zy + sz * zz
         speed = ns * (1.0 / POW2)
         axial = cs * (1.0 / POW2)
-        beta = np.arccos(min(max(cs / ns, -1.0), 1.0)) if ns > 0.0 else 0.0
-        return zx, zy, zz, speed, axial, beta
+        return zx, zy, zz, speed, axial, incidence(sx, sy, sz, zx, zy, zz, cs)
     axial = vx * zx + vy * zy + vz * zz
-    beta = np.arccos(min(max(axial / speed, -1.0), 1.0))
-    return zx, zy, zz, speed, axial, beta
+    return zx, zy, zz, speed, axial, incidence(vx, vy, vz, zx, zy, zz, axial)
+
+
+@numba.njit(inline="always", **_FLAGS)
+def incidence(vx, vy, vz, zx, zy, zz, axial):
+    """beta = atan2(|V - axial z|, axial) for the velocity V, the unit axis z and axial = V . z
+    (0 where V = 0; core.vector.disk_frame's arithmetic)."""
+    ix = vx - axial * zx
+    iy = vy - axial * zy
+    iz = vz - axial * zz
+    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
+    if n_ip == 0.0 and axial == 0.0:  # V = 0 (atan2(0, -0.0) would be pi)
+        return 0.0
+    return np.arctan2(n_ip, axial)
 
 
 @numba.njit(inline="always", **_FLAGS)

@@ -520,8 +520,13 @@ def disk_frame(velocity, axis):
     with np.errstate(over="ignore"):
         speed = vmax * np.linalg.norm(V / np.where(vmax > 0, vmax, 1.0)[..., None], axis=-1)
     axial = np.einsum("...i,...i->...", V, z)
-    safe = np.where(speed > 0, speed, 1.0)
-    beta = np.where(speed > 0, np.arccos(np.clip(axial / safe, -1.0, 1.0)), 0.0)
+    # beta = arccos(axial / speed) as atan2(|V - axial z|, axial): the arccos of a cosine rounded to
+    # 1 - 1e-16 is 1.5e-8 rad, atan2 keeps the digits near axial flow (0 where V = 0); V scaled by
+    # its largest component, as the speed
+    scale = np.where(vmax > 0, vmax, 1.0)
+    Vs = V / scale[..., None]
+    ax_s = axial / scale
+    beta = np.where(speed > 0, np.arctan2(np.linalg.norm(Vs - ax_s[..., None] * z, axis=-1), ax_s), 0.0)
     return V, z, speed, beta
 
 
