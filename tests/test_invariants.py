@@ -383,3 +383,43 @@ def test_single_precision_pi_is_axial_descent():
     np.testing.assert_array_equal(b, kept)
     with pytest.raises(ValueError, match="incidence must be finite and in"):  # beyond float32's rounding
         pm.rotor_loads(prop, params, 900.0, 10.0, math.pi + 1e-6)
+
+
+@pytest.mark.parametrize("beta_deg", [90.0, 60.0, 30.0])
+def test_rotor_drag_at_small_mu_is_the_first_order_blade_element_h_force(beta_deg):
+    """At small in-plane speed V_s = mu Omega R the rotor drag is, to first order in mu,
+    D = (V_s / 2) sum_annuli (rho/2) N_b c dq_H/dU_T dr, with q_H = U (C_L U_P + C_D U_T) the
+    element's in-plane load (the lift's tilt and the profile drag; eqs 1-4 of Gill & D'Andrea
+    2017, averaged over the azimuth: U_T = Omega r + V_s sin psi) at the annulus' inflow U_P.
+    The section loads are computed here from eqs (3)-(4) on their own; the error is O(mu^2).
+    (A check that the forward-flight H-force is the blade-element theory's: measured at mu =
+    0.002-0.02 within 8e-6 to 1.9e-3, 2026-11-27; the wind tunnels' larger H, docs/validation.md,
+    is not a quadrature error.)"""
+    prop = pm.load_propeller("apce_8x6")
+    p = pm.preset("gill2017-apc").replace(cp_blasius=0.0)
+    nd = _nodes(prop, 48, 16, p.air, p)
+    om = 8000 * RPM
+    b = math.radians(beta_deg)
+
+    def q_H(UT, UP):
+        alpha = nd.theta - np.arctan2(UP, UT)
+        e1 = np.exp(np.clip(p.M * (alpha - p.alpha0), -40, 40))
+        e2 = np.exp(np.clip(-p.M * (alpha + p.alpha0), -40, 40))
+        s = 1.0 - 1.0 / ((1.0 + e1) * (1.0 + e2))
+        CL = (1.0 - s) * p.cl1 * alpha + s * p.cl2 * np.sin(alpha) * np.cos(alpha)
+        CD = p.cd * np.sin(alpha) ** 2 + p.cd0
+        return np.hypot(UT, UP) * (CL * UP + CD * UT)
+
+    err = []
+    for mu in (0.005, 0.01):
+        Vs = mu * om * prop.radius
+        V = Vs / math.sin(b)
+        r = pm.rotor_loads(prop, p, om, V, b, radial=True)
+        UP = V * math.cos(b) + np.asarray(r.v_i).reshape(-1)
+        UT = om * nd.y
+        h = 1e-5 * UT
+        dq = (q_H(UT + h, UP) - q_H(UT - h, UP)) / (2 * h)
+        D1 = float(np.sum(nd.cfac * 0.5 * Vs * dq * nd.w))
+        err.append(float(r.drag) / D1 - 1.0)
+    assert abs(err[0]) < 2e-4 and abs(err[1]) < 8e-4
+    assert 2.5 < err[1] / err[0] < 5.5  # O(mu^2): doubling mu quadruples it
