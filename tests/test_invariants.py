@@ -383,6 +383,18 @@ def test_single_precision_pi_is_axial_descent():
     np.testing.assert_array_equal(b, kept)
     with pytest.raises(ValueError, match="incidence must be finite and in"):  # beyond float32's rounding
         pm.rotor_loads(prop, params, 900.0, 10.0, math.pi + 1e-6)
+    # a map's incidence axis and load data in single precision (a review, 2026-11-27: refused)
+    from propmap.identify.load_data import LoadData
+    from propmap.maps import build_map
+
+    axis32 = np.deg2rad(np.linspace(0, 180, 3, dtype=np.float32))
+    ds = build_map(prop, params, np.array([800.0, 900.0]), np.array([0.0, 10.0]), axis32, n_check=0)
+    assert float(ds["incidence_deg"].values[-1]) == 180.0
+    d = LoadData(np.array([900.0]), np.array([10.0]), b[:1], {"thrust": np.array([1.0])}, np.array(["a"], dtype=object))
+    assert d.incidence[0] == math.pi
+    with pytest.raises(ValueError, match="incidence must be in"):
+        LoadData(np.array([900.0]), np.array([10.0]), np.array([math.pi + 1e-6]), {"thrust": np.array([1.0])},
+                 np.array(["a"], dtype=object))
 
 
 @pytest.mark.parametrize("beta_deg", [90.0, 60.0, 30.0])
@@ -393,7 +405,7 @@ def test_rotor_drag_at_small_mu_is_the_first_order_blade_element_h_force(beta_de
     2017, averaged over the azimuth: U_T = Omega r + V_s sin psi) at the annulus' inflow U_P.
     The section loads are computed here from eqs (3)-(4) on their own; the error is O(mu^2).
     (A check that the forward-flight H-force is the blade-element theory's: measured at mu =
-    0.002-0.02 within 8e-6 to 1.9e-3, 2026-11-27; the wind tunnels' larger H, docs/validation.md,
+    0.002-0.02 within 8.4e-6 to 1.9e-3, 2026-11-27; the wind tunnels' larger H, docs/validation.md,
     is not a quadrature error.)"""
     prop = pm.load_propeller("apce_8x6")
     p = pm.preset("gill2017-apc").replace(cp_blasius=0.0)
@@ -422,4 +434,4 @@ def test_rotor_drag_at_small_mu_is_the_first_order_blade_element_h_force(beta_de
         D1 = float(np.sum(nd.cfac * 0.5 * Vs * dq * nd.w))
         err.append(float(r.drag) / D1 - 1.0)
     assert abs(err[0]) < 2e-4 and abs(err[1]) < 8e-4
-    assert 2.5 < err[1] / err[0] < 5.5  # O(mu^2): doubling mu quadruples it
+    assert 2.5 < err[1] / err[0] < 7.0  # O(mu^2) (measured 3.97-5.24): doubling mu about quadruples it

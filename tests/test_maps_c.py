@@ -149,8 +149,8 @@ def test_c_wrench_equals_the_python_wrench(tmp_path, rotor_map):
         w = rotor_map.wrench(np.array(r[:3]), np.array(r[3:6]), r[6], r[7], out_of_grid="clip")
         expect = 2 if not w.loads.inside else (1 if w.loads.flagged else 0)
         assert int(o[0]) == expect
-        np.testing.assert_allclose(o[1:4], w.force, rtol=1e-10, atol=1e-12)
-        np.testing.assert_allclose(o[4:7], w.torque, rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(o[1:4], w.force, rtol=1e-12, atol=1e-13)
+        np.testing.assert_allclose(o[4:7], w.torque, rtol=1e-12, atol=1e-13)
     assert np.all(out[len(rows):, 0] == -1) and np.all(out[len(rows):, 1:] == -12345.0)
     header = (tmp_path / "map.h").read_text()
     assert "force = T z - D e_ip; moment = -spin (Q z + M_R e_ip)" in header
@@ -292,3 +292,44 @@ def test_a_map_of_descent_only_gives_hover_at_any_incidence(tmp_path):
         status, thrust = int(out[0].split()[0]), float(out[0].split()[1])
         assert status == int(ref.flagged) and thrust == pytest.approx(float(ref.thrust), rel=1e-12)  # (not 2: inside)
         assert int(out[1].split()[0]) == -1
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_tiny_velocities_and_single_precision_pi_in_c_and_python(tmp_path):
+    """A review, 2026-11-27: on a map whose airspeed axis starts above 0 (clipped there), a hub
+    velocity below 1e-162 m/s had its speed and e_ip underflow: the C wrench took still air's
+    incidence (Fz 0.8% off Python's) and both dropped the drag from the force (-Fx / D 0 instead of
+    1). Single precision's pi (8.7e-8 rad above pi) was outside the grid in C and RotorMap.loads."""
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    rm = RotorMap(build_map(prop, params, np.array([5000.0, 8000.0]) * RPM, np.array([2.0, 8.0, 15.0]),
+                            np.radians(np.linspace(0, 180, 7)), params_label=params.label, n_check=0))
+    write_c_header(rm, tmp_path / "map.h", dtype="double")
+    (tmp_path / "w.c").write_text(WRENCH_DRIVER)
+    exe = tmp_path / "w"
+    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
+                    str(tmp_path / "w.c"), "-lm"], check=True, capture_output=True, text=True)
+    rows = [((s, 0.0, 0.0), (0.0, 0.0, 1.0)) for s in (1e-150, 1e-160, 1e-200, 1e-320)]
+    rows += [((-1.38e-321, -6.02e-321, -5.24e-322), (1.78192639, -1.15807171, -0.31791111))]
+    stdin = "".join(" ".join(repr(float(x)) for x in v + a) + " 700.0 1 0\n" for v, a in rows)
+    out = np.array([line.split() for line in subprocess.run([str(exe)], input=stdin, capture_output=True, text=True,
+                                                            check=True).stdout.splitlines()], dtype=float)
+    for (v, a), o in zip(rows, out):
+        one = rm.wrench(list(v), list(a), 700.0, out_of_grid="clip")
+        arr = rm.wrench(np.array([v]), np.array([a]), np.array([700.0]), out_of_grid="clip")
+        np.testing.assert_allclose(o[1:4], one.force, rtol=1e-12, atol=1e-13)
+        np.testing.assert_allclose(arr.force[0], one.force, rtol=1e-12, atol=1e-13)
+        if v[1] == 0.0:  # along x: the drag along -x, the whole of it
+            assert float(one.loads.drag) > 0.05 and -one.force[0] / float(one.loads.drag) == pytest.approx(1.0, 1e-12)
+    # single precision's pi: on the incidence axis's end in C and in Python (under "raise" too)
+    (tmp_path / "driver.c").write_text(DRIVER)
+    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(tmp_path / "d"),
+                    str(tmp_path / "driver.c"), "-lm"], check=True, capture_output=True, text=True)
+    pi32 = float(np.float32(np.pi))
+    res = subprocess.run([str(tmp_path / "d")], input=f"{600.0!r} 8.0 {pi32!r} 2\n{600.0!r} 8.0 {math.pi!r} 2\n",
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    c32, c64 = (np.array(r.split(), dtype=float) for r in res)
+    assert c32[0] in (0, 1) and np.array_equal(c32, c64)
+    for L in (rm.loads(600.0, 8.0, pi32), rm.loads(600.0, 8.0, np.float32(np.pi), out_of_grid="clip"),
+              rm.loads(np.array([600.0]), 8.0, np.deg2rad(np.array([180.0], dtype=np.float32)))):
+        assert bool(np.all(L.inside)) and np.all(L.thrust == rm.loads(600.0, 8.0, math.pi).thrust)

@@ -129,6 +129,10 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
 {decl}    double fade = 1.0;
     if ({prefix}_isnan(omega) || {prefix}_isnan(airspeed) || {prefix}_isnan(incidence) || omega < 0.0) return -1;
     if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
+    /* an incidence within 2.5e-7 rad of an end of the axis is on it: single precision's pi (8.7e-8
+       above pi), an incidence from vectors a few ulp beyond pi/2 (0, pi) */
+    if (incidence > a2[{n2} - 1] && incidence <= a2[{n2} - 1] + 2.5e-7) incidence = a2[{n2} - 1];
+    else if (incidence < a2[0] && incidence >= a2[0] - 2.5e-7) incidence = a2[0];
     if (airspeed <= 1e-6 && a1[0] == 0.0)  /* still air (up to 1e-6 m/s): any incidence is on the incidence axis */
         incidence = incidence < a2[0] ? a2[0] : (incidence > a2[{n2} - 1] ? a2[{n2} - 1] : incidence);
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]
@@ -151,7 +155,7 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
 static inline int {prefix}_wrench(const double velocity[3], const double axis[3], double omega, int spin,
                                   int policy, double force[3], double moment[3])
 {{
-    double z[3], e[3] = {{0.0, 0.0, 0.0}}, ip[3], out[4], amax, n, speed, axial, beta, n_ip;
+    double z[3], e[3] = {{0.0, 0.0, 0.0}}, vs[3], ip[3], out[4], amax, n, speed, sc, axial, beta, n_ip;
     int k, status;
     if (spin != 1 && spin != -1) return -1;
     for (k = 0; k < 3; k++)
@@ -162,19 +166,19 @@ static inline int {prefix}_wrench(const double velocity[3], const double axis[3]
     n = sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
     for (k = 0; k < 3; k++) z[k] /= n;
     speed = sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
-    axial = velocity[0] * z[0] + velocity[1] * z[1] + velocity[2] * z[2];
-    for (k = 0; k < 3; k++) ip[k] = velocity[k] - axial * z[k];
+    /* a velocity below 1e-150 m/s scaled by 2^600 first (exact): its squares would underflow */
+    sc = speed < 1e-150 ? 4.149515568880993e180 : 1.0;  /* 2^600 */
+    for (k = 0; k < 3; k++) vs[k] = velocity[k] * sc;
+    n = sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]);
+    speed = n * (1.0 / sc);
+    axial = vs[0] * z[0] + vs[1] * z[1] + vs[2] * z[2];
+    for (k = 0; k < 3; k++) ip[k] = vs[k] - axial * z[k];
     n_ip = sqrt(ip[0] * ip[0] + ip[1] * ip[1] + ip[2] * ip[2]);
     /* arccos(axial / speed) as atan2: the arccos of a cosine rounded to 1 - 1e-16 is 1.5e-8 rad */
-    beta = speed > 0.0 ? atan2(n_ip, axial) : 0.0;
-    /* an incidence a few ulp beyond an end of the axis is on it (an exactly in-plane velocity) */
-    if (beta > {prefix}_incidence[{n2} - 1] && beta <= {prefix}_incidence[{n2} - 1] + 1e-12)
-        beta = {prefix}_incidence[{n2} - 1];
-    else if (beta < {prefix}_incidence[0] && beta >= {prefix}_incidence[0] - 1e-12)
-        beta = {prefix}_incidence[0];
+    beta = n > 0.0 ? atan2(n_ip, axial) : 0.0;
     status = {prefix}_loads(omega, speed, beta, policy, out);
     if (status < 0) return status;
-    if (n_ip > 1e-12 * fmax(speed, 1e-300))
+    if (n_ip > 1e-12 * fmax(n, 1e-300))
         for (k = 0; k < 3; k++) e[k] = ip[k] / n_ip;
     for (k = 0; k < 3; k++) {{
         force[k] = out[0] * z[k] - out[1] * e[k];

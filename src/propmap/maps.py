@@ -22,6 +22,7 @@ import re
 import numpy as np
 
 from . import __version__
+from .core._interp import snap_incidence
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
@@ -75,7 +76,7 @@ def default_axes(propeller: Propeller):
     return np.geomspace(top / 6, top, 21), np.linspace(0.0, 25.0, 26), np.linspace(0.0, 180.0, 73)
 
 
-def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
+def _check_axis(name: str, a, lo: float, hi: float, unit: str, snap: bool = False) -> np.ndarray:
     try:
         a = np.asarray(a)
         numeric = a.dtype.kind in "iuf"
@@ -84,6 +85,8 @@ def _check_axis(name: str, a, lo: float, hi: float, unit: str) -> np.ndarray:
     if not numeric:
         raise ValueError(f"{name} must be a 1-D array of numbers [{unit}], got {a!r:.60}")
     a = a.astype(float)
+    if snap:  # an end within INCIDENCE_SNAP of [lo, hi] is on it (float32's pi)
+        a = snap_incidence(a, lo, hi)
     if a.ndim != 1 or a.size < 2:
         raise ValueError(f"{name} must be a 1-D axis of at least 2 values, got shape {a.shape}")
     if not np.all(np.isfinite(a)) or a[0] < lo or a[-1] > hi:
@@ -226,7 +229,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
 
     om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
     V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
-    b = _check_axis("incidence", incidence, 0.0, math.pi, "rad")
+    b = _check_axis("incidence", incidence, 0.0, math.pi, "rad", snap=True)
     chunk_points = check_integer("chunk_points", chunk_points, 1, MAX_NODES)
     n_check = check_integer("n_check", n_check, 0, CHECK_POINTS_MAX)
     seed = check_integer("seed", seed, 0, 2**63 - 1)

@@ -17,6 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .core._interp import INCIDENCE_SNAP, snap_incidence
 from .core.geometry import has_bool, refuse_masked
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
@@ -249,7 +250,7 @@ class RotorMap:
     def __getstate__(self) -> dict:
         """Pickle and copy without the per-thread buffers (a copy makes its own)."""
         state = self.__dict__.copy()
-        del state["_buffers"]
+        state.pop("_buffers", None)
         return state
 
     def __setstate__(self, state: dict) -> None:
@@ -307,6 +308,8 @@ class RotorMap:
         for name, a in zip(("omega", "airspeed", "incidence"), q):
             if np.isnan(a).any():
                 raise ValueError(f"{name} must not be NaN")
+        # an incidence within INCIDENCE_SNAP of an end of the axis is on it (float32's pi)
+        q = [q[0], q[1], snap_incidence(q[2], self._box[4], self._box[5])]
         if (q[0] < 0).any():
             raise ValueError(f"omega must be >= 0 rad/s, the rotation rate's magnitude (the sense is the spin), got "
                              f"{float(q[0][q[0] < 0].reshape(-1)[0])!r}")
@@ -332,7 +335,8 @@ class RotorMap:
         Parameters
         ----------
         omega, airspeed, incidence : float or array_like
-            Broadcast together to a shape S.
+            Broadcast together to a shape S. An incidence within 2.5e-7 rad of an end of the
+            grid's incidence axis is on it (single precision's pi, 8.7e-8 rad above pi).
         out_of_grid : {"raise", "clip", "nan"}
             A query outside the grid raises ValueError ("raise", the default), takes the
             value at the nearest boundary point ("clip"), or gets NaN ("nan"); the last two
@@ -417,11 +421,6 @@ class RotorMap:
             big = float(np.max(np.abs(V)))
             raise ValueError(f"velocity: a component of {big:.6g} m/s; a hub velocity must be below {VELOCITY_MAX:g} "
                              "m/s (its force and moment vectors would overflow)")
-        from .core._interp import EDGE_SNAP
-
-        lo, hi = self._box[4], self._box[5]  # an incidence a few ulp beyond an end of the axis is on it
-        beta = np.where((beta > hi) & (beta <= hi + EDGE_SNAP), hi, np.where((beta < lo) & (beta >= lo - EDGE_SNAP),
-                                                                            lo, beta))
         s = _spin_sign(spin)
         ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
         _check_spin(s, np.shape(ml.thrust))
@@ -434,6 +433,9 @@ class RotorMap:
         broadcasting. None where the general path must answer (an unknown policy, a NaN, or
         a query outside the grid under "raise"), which then raises what it raises."""
         o0, o1, v0, v1, b0, b1 = self._box
+        if not b0 <= incidence <= b1:  # within INCIDENCE_SNAP of an end: on it (float32's pi)
+            incidence = b1 if b1 < incidence <= b1 + INCIDENCE_SNAP else (
+                b0 if b0 - INCIDENCE_SNAP <= incidence < b0 else incidence)
         inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (
             b0 <= incidence <= b1 or (airspeed <= self._hover_speed and v0 == 0.0 and incidence == incidence))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)

@@ -205,19 +205,33 @@ def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, ord
     _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, 0, inside, flagged)
 
 
-#: an incidence within this of an end of the grid's axis [rad] is taken on it: the arccos of an
-#: exactly in-plane (or axial) velocity lands a few ulp either side of pi/2 (0, pi) depending on
-#: the arithmetic, which must not decide between "inside" and "outside" (RotorMap.wrench's scalar
-#: and array paths, the C header)
-EDGE_SNAP = 1e-12
+#: an incidence within this of an end of the grid's axis (or of [0, pi]) [rad] is taken on it:
+#: single precision's nearest value to pi lies 8.7e-8 rad above pi (np.float32(np.pi),
+#: np.deg2rad(np.float32(180)); refused or flagged outside until 2026-11-27: a physics audit and
+#: a review), and an incidence from vectors lands a few ulp either side of pi/2 (0, pi)
+#: depending on the arithmetic; neither may decide between "inside" and "outside"
+#: (rotor_loads, RotorMap's paths, build_map's axis, LoadData, the C header). One float32
+#: spacing at pi.
+INCIDENCE_SNAP = 2.5e-7
+
+
+def snap_incidence(a, lo=0.0, hi=np.pi):
+    """The float array ``a`` with values outside [lo, hi] by at most INCIDENCE_SNAP moved onto
+    the end (a new array where any moves: the caller's is never written; NaN kept)."""
+    with np.errstate(invalid="ignore"):
+        high = (a > hi) & (a <= hi + INCIDENCE_SNAP)
+        low = (a < lo) & (a >= lo - INCIDENCE_SNAP)
+    if not (high.any() or low.any()):
+        return a
+    return np.where(high, hi, np.where(low, lo, a))
 
 
 @numba.njit(inline="always", **_FLAGS)
 def snap_edge(x, lo, hi):
-    """``x`` moved onto ``lo`` or ``hi`` when outside by less than EDGE_SNAP."""
-    if hi < x <= hi + EDGE_SNAP:
+    """``x`` moved onto ``lo`` or ``hi`` when outside by at most INCIDENCE_SNAP."""
+    if hi < x <= hi + INCIDENCE_SNAP:
         return hi
-    if lo - EDGE_SNAP <= x < lo:
+    if lo - INCIDENCE_SNAP <= x < lo:
         return lo
     return x
 
@@ -284,7 +298,15 @@ def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
     """One rotor's force and moment vectors from its loads, as core.vector.wrench_vectors: e_ip
     the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed), force
     T z - D e_ip - spin Y (z x e_ip), moment -spin (Q z + M_R e_ip) - M_P (z x e_ip), with
-    (zx, zy, zz, speed, axial) from :func:`point_frame`. Returns (Fx, Fy, Fz, Mx, My, Mz)."""
+    (zx, zy, zz, speed, axial) from :func:`point_frame`; a velocity below TINY scaled by POW2
+    first, as there (else e_ip's squares underflow: the drag dropped below 1e-162 m/s; a review,
+    2026-11-27). Returns (Fx, Fy, Fz, Mx, My, Mz)."""
+    if speed < TINY:  # (axial from the scaled V: a subnormal axial speed has lost its digits)
+        vx *= POW2
+        vy *= POW2
+        vz *= POW2
+        axial = vx * zx + vy * zy + vz * zz
+        speed *= POW2
     ix = vx - axial * zx
     iy = vy - axial * zy
     iz = vz - axial * zz

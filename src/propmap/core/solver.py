@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
+from ._interp import INCIDENCE_SNAP, snap_incidence
 from . import _momentum as mo
 from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
@@ -97,10 +98,6 @@ TIP_MACH_WARN = 0.8
 COLLECTIVE_RANGE = math.radians(45.0)
 _RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
            "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
-#: an incidence above pi by at most this [rad] is read as pi: single precision's nearest value to pi
-#: (np.float32(np.pi), np.deg2rad(np.float32(180))) lies 8.7e-8 rad above it (a physics audit,
-#: 2026-11-27: refused as out of [0, pi]); the snap is one float32 spacing there
-INCIDENCE_SNAP = 2.5e-7
 
 
 #: a 1-element array's 0-d view (a[0, ...])
@@ -151,7 +148,7 @@ def _as_array(name: str, value) -> np.ndarray:
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
     if name == "incidence":  # (a new array where it snaps: the caller's is never written)
-        a = np.where((a > hi) & (a <= hi + INCIDENCE_SNAP), hi, a) if np.any(a > hi) else a
+        a = snap_incidence(a)
     with np.errstate(invalid="ignore"):
         bad = ~((a >= lo) & (a <= hi))  # also catches NaN
     if bad.any():

@@ -519,13 +519,11 @@ def disk_frame(velocity, axis):
     vmax = np.max(np.abs(V), axis=-1)
     with np.errstate(over="ignore"):
         speed = vmax * np.linalg.norm(V / np.where(vmax > 0, vmax, 1.0)[..., None], axis=-1)
-    axial = np.einsum("...i,...i->...", V, z)
-    # beta = arccos(axial / speed) as atan2(|V - axial z|, axial): the arccos of a cosine rounded to
+    # beta = arccos(V . z / speed) as atan2(|V - (V . z) z|, V . z): the arccos of a cosine rounded to
     # 1 - 1e-16 is 1.5e-8 rad, atan2 keeps the digits near axial flow (0 where V = 0); V scaled by
-    # its largest component, as the speed
-    scale = np.where(vmax > 0, vmax, 1.0)
-    Vs = V / scale[..., None]
-    ax_s = axial / scale
+    # its largest component, as the speed (a subnormal V keeps its direction)
+    Vs = V / np.where(vmax > 0, vmax, 1.0)[..., None]
+    ax_s = np.einsum("...i,...i->...", Vs, z)
     beta = np.where(speed > 0, np.arctan2(np.linalg.norm(Vs - ax_s[..., None] * z, axis=-1), ax_s), 0.0)
     return V, z, speed, beta
 
@@ -541,9 +539,12 @@ def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin, *, side_for
     shape = np.shape(thrust)
     z = np.broadcast_to(z, shape + (3,))
     V = np.broadcast_to(V, shape + (3,))
-    v_ip = V - np.einsum("...i,...i->...", V, z)[..., None] * z
+    # V scaled by its largest component first: a subnormal V's squares would underflow to e_ip = 0
+    vmax = np.max(np.abs(V), axis=-1, keepdims=True)
+    Vs = V / np.where(vmax > 0, vmax, 1.0)
+    v_ip = Vs - np.einsum("...i,...i->...", Vs, z)[..., None] * z
     n_ip = np.linalg.norm(v_ip, axis=-1, keepdims=True)
-    e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(V, axis=-1, keepdims=True), 1e-300),
+    e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(Vs, axis=-1, keepdims=True), 1e-300),
                     v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
     s = np.broadcast_to(spin, shape)[..., None]
     lateral = np.cross(z, e_ip)  # z x e_ip

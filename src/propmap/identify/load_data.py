@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.geometry import _short
+from ..core._interp import snap_incidence
 from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
 from ._checks import first_length, float_array
 
@@ -23,7 +24,8 @@ class LoadData:
     Attributes
     ----------
     omega, airspeed, incidence : ndarray, shape (N,)
-        Operating points [rad/s, m/s, rad].
+        Operating points [rad/s, m/s, rad]; an incidence within 2.5e-7 rad of 0 or pi is
+        stored as it (single precision's pi).
     measured : dict[str, ndarray]
         Any non-empty subset of ``thrust`` [N], ``drag`` [N], ``torque`` [N m], each shape (N,).
     group : ndarray of str, shape (N,)
@@ -78,6 +80,7 @@ class LoadData:
             object.__setattr__(self, "air_density", float(rho))
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
+        fields_["incidence"] = snap_incidence(fields_["incidence"])  # (float32's pi: 8.7e-8 rad above pi)
         if np.any((fields_["incidence"] < 0) | (fields_["incidence"] > np.pi)):
             raise ValueError("LoadData.incidence must be in [0, pi] rad (radians, not degrees)")
         if not isinstance(self.measured, dict) or not self.measured:
