@@ -286,3 +286,123 @@ def test_the_same_flight_as_a_mat_and_a_six_digit_csv_is_one_flight(tmp_path, ca
     code = main(["fit", "flight", str(tmp_path / "one.mat"), str(tmp_path / "one.csv"), str(other), "--vehicle",
                  "neurobem_quadrotor", "--rate-hz", "5", "--out", str(tmp_path / "p.toml")])
     assert code == 2 and "hold the same flight" in capsys.readouterr().err
+
+
+def _px4_topics(n=400, hz=100.0):
+    """The four topics besides the motors of a level, steady ULog (timestamps in us from 1 s)."""
+    t = [1_000_000 + int(i * 1e6 / hz) for i in range(n)]
+    xyz = [("uint64_t", "timestamp"), ("float[3]", "xyz")]
+    return t, {
+        "vehicle_acceleration": (xyz, [(ti, 0.0, 0.0, -9.80665) for ti in t]),
+        "vehicle_angular_velocity": (xyz, [(ti, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")], [(ti, 1.0, 0.0, 0.0, 0.0) for ti in t]),
+        "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
+                                   [(ti, 1.0, 0.0, 0.0) for ti in t])}
+
+
+def _esc(t, rpm_of, functions=None, keep=lambda ti: True):
+    """esc_status of four ESCs: channel k at rpm_of(ti, k), esc[k].actuator_function = functions[k]."""
+    fields = [("uint64_t", "timestamp"), ("int32_t", "esc_rpm")] + ([("uint8_t", "actuator_function")]
+                                                                     if functions else [])
+    rows = [(ti, 4, *sum(([ti, rpm_of(ti, k)] + ([functions[k]] if functions else []) for k in range(4)), []))
+            for ti in t if keep(ti)]
+    return ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[4]", "esc")], rows), \
+        {"esc_report": fields}
+
+
+def test_ulog_motor_order_follows_the_escs_actuator_function(tmp_path):
+    """PX4 fills esc[] by output channel and names each channel's motor in actuator_function
+    (101 = Motor1): outputs MAIN1-4 driving motors 4, 1, 2, 3 were read as [5400, 5100, 5200,
+    5300] rpm for motors 1-4 (a PX4 audit, 2026-11-27)."""
+    from .ulog_writer import write_ulog
+
+    t, topics = _px4_topics()
+    fn = [104, 101, 102, 103]
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000 + 100 * (fn[k] - 100), fn)
+    write_ulog(tmp_path / "f.ulg", topics, nested)
+    log = read_flight_log(tmp_path / "f.ulg")
+    np.testing.assert_allclose(log.rotor_omega[0] * 30 / math.pi, [5100, 5200, 5300, 5400], rtol=1e-12)
+    assert "actuator_function" in log.motor_order and "channels 1, 2, 3, 0" in log.motor_order
+    fn2 = [101, 102, 0, 0]  # (motor 3 assigned to no channel)
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, fn2)
+    write_ulog(tmp_path / "g.ulg", topics, nested)
+    with pytest.raises(FlightLogError, match="assigns motor.s. 1, 2 to its channels, not motor 3 of the 4"):
+        read_flight_log(tmp_path / "g.ulg", n_motors=4)
+
+
+def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
+    """Only the accelerations' gaps and time order were checked (a PX4 audit, 2026-11-27): a 1.7 s
+    dropout of esc_status was interpolated across without a word, a message stamped 0 fed
+    np.interp decreasing times (an rpm of 11 read for 0.5 above the truth)."""
+    import struct
+
+    from .ulog_writer import write_ulog
+
+    t, topics = _px4_topics()
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: not 1.9e6 < ti < 3.6e6)
+    write_ulog(tmp_path / "gap.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"topic 'esc_status': a gap of 1.7 s at 1.9 s since boot"):
+        read_flight_log(tmp_path / "gap.ulg")
+    t, topics = _px4_topics()
+    rows = topics["vehicle_local_position"][1]
+    rows[250] = (rows[250][0], 9.0, 9.0, 9.0)  # to be stamped 0 below, out of time order in the file
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000 + 10 * k)
+    write_ulog(tmp_path / "stale.ulg", topics, nested)
+    raw = bytearray((tmp_path / "stale.ulg").read_bytes())
+    pos, seen, topic_id = 16, 0, list(topics).index("vehicle_local_position")
+    while pos < len(raw):  # the 251st data message of the topic: its timestamp (after the message id) set to 0
+        size, kind = struct.unpack_from("<HB", raw, pos)
+        if kind == ord("D") and struct.unpack_from("<H", raw, pos + 3)[0] == topic_id:
+            seen += 1
+            if seen == 251:
+                raw[pos + 5:pos + 13] = bytes(8)
+                break
+        pos += 3 + size
+    (tmp_path / "stale.ulg").write_bytes(bytes(raw))
+    with pytest.warns(UserWarning, match=r"'vehicle_local_position': 1 message.s. stamped at or before an earlier one "
+                                         r"left out \(the first at message 251, t = 0 s since boot\)"):
+        log = read_flight_log(tmp_path / "stale.ulg")
+    np.testing.assert_allclose(log.velocity, np.tile([1.0, 0.0, 0.0], (log.n, 1)), atol=1e-6)  # (NED north: x)
+    t, topics = _px4_topics()
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: (ti - 1_000_000) % 250_000 == 0)
+    write_ulog(tmp_path / "slow.ulg", topics, nested)
+    with pytest.warns(UserWarning, match=r"topic 'esc_status' logged at 4 Hz"):
+        read_flight_log(tmp_path / "slow.ulg")
+
+
+def test_ulog_a_damaged_file_is_refused_or_warned_of_never_hangs(tmp_path, capsys):
+    """A damaged message header (size 0xffff) hung the reader at full CPU: pyulog stepped back
+    before the start of an in-memory file, which io.BytesIO allows, and read the definitions again
+    without end (a PX4 audit, 2026-11-27); a damaged data section printed pyulog's notices on
+    standard output (the CLI's --json) and was read without a word."""
+    import struct
+    import threading
+
+    from propmap.cli.main import main
+
+    bad = tmp_path / "hang.ulg"
+    bad.write_bytes(b"ULog\x01\x125\x01" + bytes(8) + struct.pack("<HB", 0xFFFF, 0xFF))
+    result = {}
+
+    def read():
+        try:
+            read_flight_log(bad)
+        except FlightLogError as exc:
+            result["error"] = str(exc)
+
+    worker = threading.Thread(target=read, daemon=True)
+    worker.start()
+    worker.join(60.0)
+    assert not worker.is_alive() and "not a readable ULog file" in result["error"]
+    assert main(["wrench", str(bad), "--vehicle", "quadrotor", "--out", str(tmp_path / "o.csv")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "hang.ulg: not a readable ULog file" in err[0]
+    # zeros over part of the data section: pyulog reads on; warned of, nothing on standard output
+    hover_ulog(tmp_path / "f.ulg")
+    raw = bytearray((tmp_path / "f.ulg").read_bytes())
+    raw[len(raw) // 2:len(raw) // 2 + 64] = bytes(64)
+    (tmp_path / "d.ulg").write_bytes(bytes(raw))
+    capsys.readouterr()
+    with pytest.warns(UserWarning, match=r"d.ulg: a damaged ULog file \("):
+        read_flight_log(tmp_path / "d.ulg")
+    assert capsys.readouterr().out == ""

@@ -58,8 +58,9 @@ def _fitted_vehicle(path: Path, params_spec):
     return veh, True
 
 
-MOTOR_MAP_HELP = ("PX4 ULog without esc_status rpm: the motor speed [rpm] = A + B * actuator_outputs output, given "
-                  "as A,B (the ESC's calibration); the motors are the vehicle's first outputs.")
+MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
+                  "calibration; used even where the log has esc_status rpm); the motors are the vehicle's first "
+                  "outputs.")
 
 
 def _motor_map(text: str | None):

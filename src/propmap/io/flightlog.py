@@ -202,7 +202,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
     if fmt == "ulog":
-        fields = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES)
+        fields = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES,
+                           gap_steps=GAP_STEPS)
         log = FlightLog(name=p.name, path=str(p), format="ulog", **fields)
     elif p.suffix.lower() == ".mat":
         log = _neurobem(_mat_array(raw, name), p, name)

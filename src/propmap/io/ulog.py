@@ -10,8 +10,10 @@ negated) and the velocity rotated into the body frame with the attitude
 
 from __future__ import annotations
 
+import contextlib
 import io
 import math
+import warnings
 
 import numpy as np
 
@@ -32,6 +34,49 @@ def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueErro
     return d.data["timestamp"] * 1e-6, np.column_stack([np.asarray(d.data[f], float) for f in fields])
 
 
+#: a gap in a topic other than the accelerations' longer than this [s] is warned of, whatever its rate
+GAP_S = 1.0
+#: a topic other than the accelerations' logged more slowly than this [Hz] is warned of (PX4's default logging
+#: profile records esc_status at 4 Hz): interpolated to the accelerations' timestamps, it misses what changes faster
+SLOW_TOPIC_HZ = 10.0
+
+
+def _in_time_order(topic: str, name: str, t: np.ndarray, *columns):
+    """(t, *columns) without the messages stamped at or before an earlier one of the topic (a
+    stale or zero timestamp, a duplicate), warned of: np.interp needs increasing times, and one
+    such message read an rpm of 11 for 0.5 (a PX4 audit, 2026-11-27)."""
+    keep = np.ones(t.size, dtype=bool)
+    if t.size > 1:
+        keep[1:] = t[1:] > np.maximum.accumulate(t)[:-1]
+    if keep.all():
+        return (t, *columns)
+    i = int(np.argmax(~keep))
+    warnings.warn(f"{name}: topic {topic!r}: {int((~keep).sum())} message(s) stamped at or before an earlier one "
+                  f"left out (the first at message {i + 1}, t = {t[i]:.6g} s since boot)", UserWarning,
+                  stacklevel=4)
+    return (t[keep], *(None if c is None else c[keep] for c in columns))
+
+
+def _check_steps(topic: str, t: np.ndarray, lo: float, hi: float, name: str, gap_steps: float) -> None:
+    """Warn of a topic's gap (a step longer than ``gap_steps`` median steps or GAP_S) and of a rate
+    below SLOW_TOPIC_HZ within [lo, hi], the time every topic covers: it is interpolated across (a
+    2 s hole in the attitude read 20 deg off, a 1.5 s dropout of esc_status 3000 rpm off, without a
+    word; only the accelerations' gaps were warned of: a PX4 audit, 2026-11-27)."""
+    inside = (t >= lo) & (t <= hi)
+    i0, i1 = max(int(np.argmax(inside)) - 1, 0), min(t.size - 1 - int(np.argmax(inside[::-1])) + 1, t.size - 1)
+    dt = np.diff(t[i0:i1 + 1])  # (with the messages either side of the window: a hole across its edge counts)
+    if dt.size == 0:
+        return
+    step = float(np.median(dt))
+    big = int(np.argmax(dt))
+    if dt[big] > min(gap_steps * step, GAP_S):
+        warnings.warn(f"{name}: topic {topic!r}: a gap of {dt[big]:.3g} s at {t[i0 + big]:.6g} s since boot "
+                      f"({dt[big] / step:.0f} median steps): interpolated across", UserWarning, stacklevel=4)
+    elif step > 1.0 / SLOW_TOPIC_HZ:
+        warnings.warn(f"{name}: topic {topic!r} logged at {1.0 / step:.3g} Hz: interpolated to the accelerations' "
+                      "timestamps, it misses what changes faster (log it faster)", UserWarning, stacklevel=4)
+
+
 def _has(ulog, name: str) -> bool:
     return any(d.name == name for d in ulog.data_list)
 
@@ -47,8 +92,21 @@ def _rotate_ned_to_body(q_wxyz: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.einsum("nji,nj->ni", R, v)
 
 
+class _FileBytes(io.BytesIO):
+    """A file's bytes as pyulog reads a file: a seek before the start raises OSError, as a
+    file's does. io.BytesIO moves a relative seek there to the start instead, and pyulog, stepping
+    back over a damaged message, read the definitions again from the start without end: a
+    damaged header hung `propmap wrench` at full CPU (a PX4 audit, 2026-11-27)."""
+
+    def seek(self, pos, whence=0):
+        target = pos if whence == 0 else (self.tell() + pos if whence == 1 else len(self.getbuffer()) + pos)
+        if target < 0:
+            raise OSError(f"seek to {target}, before the start of the file")
+        return super().seek(pos, whence)
+
+
 def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, error: type[ValueError],
-              min_samples: int) -> dict:
+              min_samples: int, gap_steps: float) -> dict:
     """The fields of a :class:`propmap.io.flightlog.FlightLog` (``t``, ``angular_velocity``,
     ``angular_acceleration``, ``specific_force``, ``velocity``, ``attitude``, ``rotor_omega``,
     ``rotor_acceleration``, ``motor_order``) read from the ULog file's bytes ``raw``: every topic
@@ -68,15 +126,33 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         Raised, with one line naming the file, for what cannot be read.
     min_samples : int
         The fewest samples of the acceleration topic the topics' overlap must hold.
+    gap_steps : float
+        A step of another topic longer than this many of its median steps, or than GAP_S, within
+        the time the topics cover is warned of (the acceleration topic's: io/flightlog.py).
+
+    Warns
+    -----
+    UserWarning
+        A damaged file; another topic's messages out of time order (left out), a gap in it, or
+        a rate below SLOW_TOPIC_HZ (all interpolated to the acceleration topic's timestamps).
     """
     try:
         from pyulog import ULog
     except ImportError:  # pragma: no cover (a declared dependency)
         raise error("reading ULog files needs the package pyulog (pip install pyulog)") from None
+    notices = io.StringIO()
     try:
-        ulog = ULog(io.BytesIO(raw))
+        with contextlib.redirect_stdout(notices):  # (pyulog prints its notices: stdout is the CLI's --json)
+            ulog = ULog(_FileBytes(raw))
     except Exception as exc:  # pyulog raises many types for a corrupt file
         raise error(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
+    lines = [x.strip() for x in notices.getvalue().splitlines() if x.strip()]
+    if ulog.file_corruption or lines:
+        said = f"pyulog: {lines[0][:100]}" + (f" and {len(lines) - 1} more notice(s)" if len(lines) > 1 else "") \
+            if lines else "pyulog found corrupt data"
+        warnings.warn(f"{name}: a damaged ULog file ({said}); what pyulog skipped is missing from the log",
+                      UserWarning, stacklevel=3)
+        name = f"{name} (a damaged file)"  # (a topic lost to the damage is named missing: said so)
     acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
     if not _has(ulog, acc_topic):
         found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
@@ -90,16 +166,23 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     d = [s for s in ulog.data_list if s.name == "vehicle_angular_velocity"]
     if d and all(f"xyz_derivative[{k}]" in d[0].data for k in range(3)):
         deriv = _topic(ulog, "vehicle_angular_velocity", [f"xyz_derivative[{k}]" for k in range(3)], name, error)[1]
+    tw, rates, deriv = _in_time_order("vehicle_angular_velocity", name, tw, rates, deriv)
     tq, q = _topic(ulog, "vehicle_attitude", ["q[0]", "q[1]", "q[2]", "q[3]"], name, error)
+    tq, q = _in_time_order("vehicle_attitude", name, tq, q)
     # q and -q are one attitude: make the sequence continuous before interpolating it component by component (a
     # sign flip between two samples would otherwise interpolate through 0)
     if q.shape[0] > 1:
         flips = np.sum(q[1:] * q[:-1], axis=1) < 0
         q = q * np.concatenate([[1.0], np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)])[:, None]
     tv, vel = _topic(ulog, "vehicle_local_position", ["vx", "vy", "vz"], name, error)
-    tm, rpm, order = _ulog_motors(ulog, name, motor_map, n_motors, error)
+    tv, vel = _in_time_order("vehicle_local_position", name, tv, vel)
+    tm, rpm, order, motor_topic = _ulog_motors(ulog, name, motor_map, n_motors, error)
+    tm, rpm = _in_time_order(motor_topic, name, tm, rpm)
     lo = max(t[0], tw[0], tq[0], tv[0], tm[0])
     hi = min(t[-1], tw[-1], tq[-1], tv[-1], tm[-1])
+    for topic, tt in (("vehicle_angular_velocity", tw), ("vehicle_attitude", tq), ("vehicle_local_position", tv),
+                      (motor_topic, tm)):
+        _check_steps(topic, tt, lo, hi, name, gap_steps)
     keep = (t >= lo) & (t <= hi)
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
@@ -122,18 +205,55 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
                 rotor_acceleration=None, motor_order=order)
 
 
+#: PX4's output function of motor 1 (Motor1 = 101 ... Motor12 = 112; PX4-Autopilot,
+#: src/lib/mixer_module/output_functions.yaml), which esc_status' esc[k].actuator_function holds
+MOTOR1_FUNCTION = 101
+MOTOR_FUNCTIONS = 12
+
+
+def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type[ValueError]):
+    """(esc_rpm columns in motor order, description). PX4 fills esc[] by output channel and, since
+    v1.14, names each channel's motor in esc[k].actuator_function (101 = Motor1): where it does,
+    motor m is the channel whose function is 100 + m (read in channel order, a quadrotor whose
+    outputs MAIN1-4 drive motors 4, 1, 2, 3 had its speeds read as [5400, 5100, 5200, 5300] rpm for
+    [5100, ..., 5400]: a PX4 audit, 2026-11-27). Channel order where the field is absent or all 0."""
+    channels = [int(f[4:f.index("]")]) for f in cols]
+    fields = [f"esc[{k}].actuator_function" for k in channels]
+    plain = f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm in channel order (no actuator_function)"
+    if not cols or not all(f in d.data for f in fields):
+        return cols, plain
+    codes = []
+    for f in fields:  # each channel's function: its most frequent nonzero value (0 before the mixer assigns it)
+        v = np.asarray(d.data[f]).astype(int)
+        v = v[v != 0]
+        codes.append(int(np.bincount(v).argmax()) if v.size else 0)
+    motors = {c - MOTOR1_FUNCTION + 1: k for k, c in enumerate(codes)
+              if MOTOR1_FUNCTION <= c < MOTOR1_FUNCTION + MOTOR_FUNCTIONS}
+    if not motors:
+        return cols, plain
+    n = n_motors if n_motors is not None else max(motors)
+    missing = [m for m in range(1, n + 1) if m not in motors]
+    if missing:
+        raise error(f"{name}: esc_status' actuator_function assigns motor(s) {', '.join(map(str, sorted(motors)))} to "
+                    f"its channels, not motor {missing[0]} of the {n}")
+    return ([cols[motors[m]] for m in range(1, n + 1)],
+            f"PX4 esc_status esc_rpm of Motor1..Motor{n} by actuator_function (channels "
+            f"{', '.join(str(channels[motors[m]]) for m in range(1, n + 1))})")
+
+
 def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[ValueError]):
-    """(t, rpm columns, description) of the motor speeds (actuator_outputs: the first ``n_motors``)."""
+    """(t, rpm columns, description, topic) of the motor speeds (actuator_outputs: the first ``n_motors``)."""
     if _has(ulog, "esc_status") and motor_map is None:
         d = min((s for s in ulog.data_list if s.name == "esc_status"), key=lambda s: s.multi_id)
         cols = sorted((f for f in d.data if f.startswith("esc[") and f.endswith("].esc_rpm")),
                       key=lambda f: int(f[4:f.index("]")]))
         count = int(np.max(d.data["esc_count"])) if "esc_count" in d.data else len(cols)
         cols = cols[:count]
+        cols, order = _esc_motor_order(d, cols, name, n_motors, error)
         if cols:
             t, rpm = _topic(ulog, "esc_status", cols, name, error)
             if np.any(np.abs(rpm) > 0):
-                return t, np.abs(rpm), f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm (motor numbering)"
+                return t, np.abs(rpm), order, "esc_status"
         raise error(f"{name}: topic 'esc_status' carries no motor rpm (esc_rpm all zero or absent); give "
                              "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     if motor_map is None:
@@ -143,6 +263,11 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
     d = [s for s in ulog.data_list if s.name == "actuator_outputs"]
     if not d:
         raise error(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
+    if len(d) > 1:  # one instance per output driver (px4io's MAIN, the FMU's AUX), numbered by boot order
+        warnings.warn(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
+                      "per output driver): the motor speeds are read from instance "
+                      f"{min(s.multi_id for s in d)}'s first outputs; check that they drive the motors",
+                      UserWarning, stacklevel=4)
     d = min(d, key=lambda s: s.multi_id)
     n = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
          else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
@@ -155,4 +280,4 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
         raise error(f"{name}: topic 'actuator_outputs' has no outputs")
     t, u = _topic(ulog, "actuator_outputs", cols, name, error)
     return (t, np.maximum(a + b * u, 0.0),
-            f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u")
+            f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u", "actuator_outputs")
