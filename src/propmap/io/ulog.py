@@ -30,7 +30,7 @@ def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueErro
     missing = [f for f in fields if f not in d.data]
     if missing:
         raise error(f"{where}: topic {name!r} lacks field(s) {', '.join(missing)} (fields: "
-                             f"{', '.join(sorted(d.data))[:300]})")
+                    f"{', '.join(sorted(d.data))[:300]})")
     return d.data["timestamp"] * 1e-6, np.column_stack([np.asarray(d.data[f], float) for f in fields])
 
 
@@ -157,7 +157,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     if not _has(ulog, acc_topic):
         found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
         raise error(f"{name}: no accelerations: neither topic 'vehicle_acceleration' nor 'sensor_combined' "
-                             f"is in the log (topics found: {found or 'none'})")
+                    f"is in the log (topics found: {found or 'none'})")
     acc_fields = ["xyz[0]", "xyz[1]", "xyz[2]"] if acc_topic == "vehicle_acceleration" else [
         "accelerometer_m_s2[0]", "accelerometer_m_s2[1]", "accelerometer_m_s2[2]"]
     t, acc = _topic(ulog, acc_topic, acc_fields, name, error)
@@ -186,7 +186,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     keep = (t >= lo) & (t <= hi)
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
-                             f"{min_samples}")
+                    f"{min_samples}")
     t, acc = t[keep], acc[keep]
 
     def at(tt, a):
@@ -255,10 +255,10 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
             if np.any(np.abs(rpm) > 0):
                 return t, np.abs(rpm), order, "esc_status"
         raise error(f"{name}: topic 'esc_status' carries no motor rpm (esc_rpm all zero or absent); give "
-                             "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
+                    "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     if motor_map is None:
         raise error(f"{name}: no motor speeds: topic 'esc_status' not in the log; give the mapping "
-                             "rpm = a + b * output of actuator_outputs (--motor-map a,b)")
+                    "rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     a, b = motor_map
     d = [s for s in ulog.data_list if s.name == "actuator_outputs"]
     if not d:
