@@ -4,6 +4,8 @@ synthetic PX4 ULogs, and malformed logs (one-line errors; exit 2 from the CLI)."
 import math
 from pathlib import Path
 
+import warnings
+
 import numpy as np
 import pytest
 import scipy.io
@@ -322,11 +324,11 @@ def test_ulog_motor_order_follows_the_escs_actuator_function(tmp_path):
     write_ulog(tmp_path / "f.ulg", topics, nested)
     log = read_flight_log(tmp_path / "f.ulg")
     np.testing.assert_allclose(log.rotor_omega[0] * 30 / math.pi, [5100, 5200, 5300, 5400], rtol=1e-12)
-    assert "actuator_function" in log.motor_order and "channels 1, 2, 3, 0" in log.motor_order
+    assert "actuator_function" in log.motor_order and "entries 1, 2, 3, 0" in log.motor_order
     fn2 = [101, 102, 0, 0]  # (motor 3 assigned to no channel)
     topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, fn2)
     write_ulog(tmp_path / "g.ulg", topics, nested)
-    with pytest.raises(FlightLogError, match="assigns motor.s. 1, 2 to its channels, not motor 3 of the 4"):
+    with pytest.raises(FlightLogError, match="assigns motor.s. 1, 2 to its entries, not motor 3 of the 4"):
         read_flight_log(tmp_path / "g.ulg", n_motors=4)
 
 
@@ -359,10 +361,25 @@ def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
                 break
         pos += 3 + size
     (tmp_path / "stale.ulg").write_bytes(bytes(raw))
-    with pytest.warns(UserWarning, match=r"'vehicle_local_position': 1 message.s. stamped at or before an earlier one "
-                                         r"left out \(the first at message 251, t = 0 s since boot\)"):
+    with pytest.warns(UserWarning, match=r"'vehicle_local_position': 1 message.s. out of time order left out "
+                                         r"\(the first, message 251, stamped 0 s since boot\)"):
         log = read_flight_log(tmp_path / "stale.ulg")
     np.testing.assert_allclose(log.velocity, np.tile([1.0, 0.0, 0.0], (log.n, 1)), atol=1e-6)  # (NED north: x)
+    # one stamped forward (1001 s) is left out alone (it left out the rest of its topic: a review)
+    raw[pos + 5:pos + 13] = struct.pack("<Q", 1_001_000_000)
+    (tmp_path / "fwd.ulg").write_bytes(bytes(raw))
+    with pytest.warns(UserWarning, match=r"1 message.s. out of time order left out \(the first, message 251, "
+                                         r"stamped 1001 s"):
+        log = read_flight_log(tmp_path / "fwd.ulg")
+    np.testing.assert_allclose(log.velocity, np.tile([1.0, 0.0, 0.0], (log.n, 1)), atol=1e-6)
+    # PX4 logs topics at exactly 10 Hz (a review: warned of as slow by a microsecond's jitter)
+    t, topics = _px4_topics()
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: (ti - 1_000_000) % 100_000 == 0)
+    topics["esc_status"][1][:] = [(r[0] + (3 if i % 2 else 0),) + r[1:] for i, r in enumerate(topics["esc_status"][1])]
+    write_ulog(tmp_path / "ten.ulg", topics, nested)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_flight_log(tmp_path / "ten.ulg")
     t, topics = _px4_topics()
     topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: (ti - 1_000_000) % 250_000 == 0)
     write_ulog(tmp_path / "slow.ulg", topics, nested)
@@ -406,3 +423,75 @@ def test_ulog_a_damaged_file_is_refused_or_warned_of_never_hangs(tmp_path, capsy
     with pytest.warns(UserWarning, match=r"d.ulg: a damaged ULog file \("):
         read_flight_log(tmp_path / "d.ulg")
     assert capsys.readouterr().out == ""
+
+
+def test_ulog_esc_functions_that_do_not_match_the_vehicle_are_refused(tmp_path):
+    """Six ESCs assigned Motor1-6 read against a quadrotor were accepted as its four (a review,
+    2026-11-27; refused before the actuator_function order), a motor on two channels kept the last."""
+    from .ulog_writer import write_ulog
+
+    t, topics = _px4_topics()
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, [101, 102, 103, 105])
+    write_ulog(tmp_path / "five.ulg", topics, nested)
+    with pytest.raises(FlightLogError, match="assigns motors up to 5; the vehicle has 4 rotors"):
+        read_flight_log(tmp_path / "five.ulg", n_motors=4)
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, [101, 101, 102, 103])
+    write_ulog(tmp_path / "twice.ulg", topics, nested)
+    with pytest.raises(FlightLogError, match="assigns motor 1 to two entries"):
+        read_flight_log(tmp_path / "twice.ulg")
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000 + 100 * k, [0, 102, 101, 0])  # (no vehicle: 2 motors)
+    write_ulog(tmp_path / "two.ulg", topics, nested)
+    np.testing.assert_allclose(read_flight_log(tmp_path / "two.ulg").rotor_omega[0] * 30 / math.pi, [5200, 5100])
+
+
+def test_ulog_large_damaged_file_notices_and_warnings_after_refusals(tmp_path, capsys):
+    """A damaged header more than 64 KiB into the definitions hung pyulog (it steps back by the
+    message's size field, here within the file); a notice that is not damage (a newer format
+    version) was called a damaged file; a refused log printed its warnings too (a review,
+    2026-11-27). pyulog's notices never reach standard output, which stays the caller's."""
+    import struct
+    import sys
+    import threading
+
+    from .ulog_writer import _msg
+
+    raw = bytearray(b"ULog\x01\x125\x01" + bytes(8))
+    for k in range(400):
+        raw += _msg(b"I", bytes([11]) + b"char[8] k%05d" % k + b"x" * 200)
+    raw += struct.pack("<HB", 0xFFFF, 0xFF)
+    assert len(raw) > 65536
+    (tmp_path / "big.ulg").write_bytes(bytes(raw))
+    result = {}
+
+    def read():
+        try:
+            read_flight_log(tmp_path / "big.ulg")
+        except FlightLogError as exc:
+            result["error"] = str(exc)
+
+    worker = threading.Thread(target=read, daemon=True)
+    worker.start()
+    worker.join(60.0)
+    assert not worker.is_alive() and "not a readable ULog file" in result["error"]
+    hover_ulog(tmp_path / "f.ulg")
+    v2 = bytearray((tmp_path / "f.ulg").read_bytes())
+    v2[7] = 2  # the format version
+    (tmp_path / "v2.ulg").write_bytes(bytes(v2))
+    stdout = sys.stdout
+    with pytest.warns(UserWarning, match=r"v2.ulg: pyulog: Warning: unknown file version") as rec:
+        read_flight_log(tmp_path / "v2.ulg")
+    assert not any("a damaged ULog" in str(w.message) for w in rec) and sys.stdout is stdout
+    assert capsys.readouterr().out == ""
+    # accelerations in g and esc_status at 4 Hz: the refusal alone
+    t, topics = _px4_topics()
+    topics["vehicle_acceleration"][1][:] = [(r[0], 0.0, 0.0, -1.0) for r in topics["vehicle_acceleration"][1]]
+    topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: (ti - 1_000_000) % 250_000 == 0)
+    from .ulog_writer import write_ulog
+
+    write_ulog(tmp_path / "g.ulg", topics, nested)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        with pytest.raises(FlightLogError, match="accelerometer reads"):
+            read_flight_log(tmp_path / "g.ulg")
+    assert not rec
+

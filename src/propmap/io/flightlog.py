@@ -201,9 +201,10 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     if fmt not in FORMATS:
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
+    said = []
     if fmt == "ulog":
-        fields = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES,
-                           gap_steps=GAP_STEPS)
+        fields, said = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES,
+                                 gap_steps=GAP_STEPS)
         log = FlightLog(name=p.name, path=str(p), format="ulog", **fields)
     elif p.suffix.lower() == ".mat":
         log = _neurobem(_mat_array(raw, name), p, name)
@@ -211,6 +212,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         arr, lines = _csv_array(raw, p, name)
         log = _neurobem(arr, p, name, lines)
     _check(log, name)
+    for text in said:  # (after the refusals: a refused log printed these too, a review)
+        warnings.warn(text, UserWarning, stacklevel=2)
     return log
 
 

@@ -10,10 +10,10 @@ negated) and the velocity rotated into the body frame with the attitude
 
 from __future__ import annotations
 
-import contextlib
+import builtins
 import io
 import math
-import warnings
+import threading
 
 import numpy as np
 
@@ -41,27 +41,52 @@ GAP_S = 1.0
 SLOW_TOPIC_HZ = 10.0
 
 
-def _in_time_order(topic: str, name: str, t: np.ndarray, *columns):
-    """(t, *columns) without the messages stamped at or before an earlier one of the topic (a
-    stale or zero timestamp, a duplicate), warned of: np.interp needs increasing times, and one
-    such message read an rpm of 11 for 0.5 (a PX4 audit, 2026-11-27)."""
-    keep = np.ones(t.size, dtype=bool)
-    if t.size > 1:
-        keep[1:] = t[1:] > np.maximum.accumulate(t)[:-1]
-    if keep.all():
+def _out_of_order(t: np.ndarray) -> np.ndarray:
+    """Mask of the messages whose timestamps break the topic's time order: a repeat of the one
+    before; then, in up to 8 passes, one that lies outside its neighbours' interval where they are
+    in order (a stale, zero or forward stamp; at either end, one out of order with the next two in
+    order); then any at or before an earlier kept one."""
+    bad = np.zeros(t.size, dtype=bool)
+    bad[1:] = t[1:] == t[:-1]
+    for _ in range(8):
+        idx = np.flatnonzero(~bad)
+        u = t[idx]
+        if u.size < 3 or np.all(np.diff(u) > 0):
+            break
+        a, b, c = u[:-2], u[1:-1], u[2:]
+        lone = np.concatenate([[u[0] >= u[1] and u[1] < u[2]], (a < c) & ~((a < b) & (b < c)),
+                               [u[-1] <= u[-2] and u[-3] < u[-2]]])
+        if not lone.any():
+            break
+        bad[idx[lone]] = True
+    idx = np.flatnonzero(~bad)
+    u = t[idx]
+    later = np.zeros(u.size, dtype=bool)
+    later[1:] = u[1:] <= np.maximum.accumulate(u)[:-1]
+    bad[idx[later]] = True
+    return bad
+
+
+def _in_time_order(topic: str, name: str, said: list, t: np.ndarray, *columns):
+    """(t, *columns) without the messages out of the topic's time order (:func:`_out_of_order`),
+    said in ``said``: np.interp needs increasing times, and one stamped 0 read an rpm of 11 for 0.5
+    (a PX4 audit, 2026-11-27); one stamped forward left out the rest of its topic (a review)."""
+    bad = _out_of_order(t)
+    if not bad.any():
         return (t, *columns)
-    i = int(np.argmax(~keep))
-    warnings.warn(f"{name}: topic {topic!r}: {int((~keep).sum())} message(s) stamped at or before an earlier one "
-                  f"left out (the first at message {i + 1}, t = {t[i]:.6g} s since boot)", UserWarning,
-                  stacklevel=4)
+    i = int(np.argmax(bad))
+    said.append(f"{name}: topic {topic!r}: {int(bad.sum())} message(s) out of time order left out (the first, "
+                f"message {i + 1}, stamped {t[i]:.6g} s since boot)")
+    keep = ~bad
     return (t[keep], *(None if c is None else c[keep] for c in columns))
 
 
-def _check_steps(topic: str, t: np.ndarray, lo: float, hi: float, name: str, gap_steps: float) -> None:
-    """Warn of a topic's gap (a step longer than ``gap_steps`` median steps or GAP_S) and of a rate
-    below SLOW_TOPIC_HZ within [lo, hi], the time every topic covers: it is interpolated across (a
-    2 s hole in the attitude read 20 deg off, a 1.5 s dropout of esc_status 3000 rpm off, without a
-    word; only the accelerations' gaps were warned of: a PX4 audit, 2026-11-27)."""
+def _check_steps(topic: str, t: np.ndarray, lo: float, hi: float, name: str, gap_steps: float, said: list) -> None:
+    """Say in ``said`` a topic's gap (a step longer than ``gap_steps`` median steps or GAP_S) or
+    its rate below SLOW_TOPIC_HZ (by more than 10%: PX4 logs topics at exactly 10 Hz) within [lo,
+    hi], the time every topic covers: it is interpolated across (a 2 s hole in the attitude read
+    20 deg off, a 1.5 s dropout of esc_status 3000 rpm off, without a word; only the
+    accelerations' gaps were warned of: a PX4 audit, 2026-11-27)."""
     inside = (t >= lo) & (t <= hi)
     i0, i1 = max(int(np.argmax(inside)) - 1, 0), min(t.size - 1 - int(np.argmax(inside[::-1])) + 1, t.size - 1)
     dt = np.diff(t[i0:i1 + 1])  # (with the messages either side of the window: a hole across its edge counts)
@@ -70,11 +95,11 @@ def _check_steps(topic: str, t: np.ndarray, lo: float, hi: float, name: str, gap
     step = float(np.median(dt))
     big = int(np.argmax(dt))
     if dt[big] > min(gap_steps * step, GAP_S):
-        warnings.warn(f"{name}: topic {topic!r}: a gap of {dt[big]:.3g} s at {t[i0 + big]:.6g} s since boot "
-                      f"({dt[big] / step:.0f} median steps): interpolated across", UserWarning, stacklevel=4)
-    elif step > 1.0 / SLOW_TOPIC_HZ:
-        warnings.warn(f"{name}: topic {topic!r} logged at {1.0 / step:.3g} Hz: interpolated to the accelerations' "
-                      "timestamps, it misses what changes faster (log it faster)", UserWarning, stacklevel=4)
+        said.append(f"{name}: topic {topic!r}: a gap of {dt[big]:.3g} s at {t[i0 + big]:.6g} s since boot "
+                    f"({dt[big] / step:.0f} median steps): interpolated across")
+    elif step > 1.1 / SLOW_TOPIC_HZ:
+        said.append(f"{name}: topic {topic!r} logged at {1.0 / step:.3g} Hz: interpolated to the accelerations' "
+                    "timestamps, it misses what changes faster (log it faster)")
 
 
 def _has(ulog, name: str) -> bool:
@@ -93,29 +118,51 @@ def _rotate_ned_to_body(q_wxyz: np.ndarray, v: np.ndarray) -> np.ndarray:
 
 
 class _FileBytes(io.BytesIO):
-    """A file's bytes as pyulog reads a file: a seek before the start raises OSError, as a
-    file's does. io.BytesIO moves a relative seek there to the start instead, and pyulog, stepping
-    back over a damaged message, read the definitions again from the start without end: a
-    damaged header hung `propmap wrench` at full CPU (a PX4 audit, 2026-11-27)."""
+    """A ULog file's bytes for pyulog, which steps back over a damaged message by its size field:
+    where that message was cut short by the end of the file, the step lands before the message,
+    and pyulog read the definitions again from there without end (a damaged header hung
+    `propmap wrench` at full CPU: a PX4 audit, 2026-11-27; at the file's start, where io.BytesIO
+    clamps the seek, and in a file of more than 64 KiB, where it does not: a review). A relative
+    seek back before the earlier of the last two reads' starts (a message's header and payload)
+    raises OSError, as a seek before a file's start does; pyulog never steps back further."""
+
+    _starts = (0, 0)
+
+    def read(self, size=-1):
+        self._starts = (self._starts[1], self.tell())
+        return super().read(size)
 
     def seek(self, pos, whence=0):
         target = pos if whence == 0 else (self.tell() + pos if whence == 1 else len(self.getbuffer()) + pos)
-        if target < 0:
-            raise OSError(f"seek to {target}, before the start of the file")
+        if target < 0 or (whence == 1 and pos < 0 and target < min(self._starts)):
+            raise OSError(f"a damaged message: a step back to byte {target}, before the message read at byte "
+                          f"{min(self._starts)}")
         return super().seek(pos, whence)
 
 
+#: the notices pyulog prints while this thread parses a file (pyulog prints them on standard output, the CLI's
+#: --json; a review found redirecting sys.stdout caught other threads' prints and, from two threads, lost it)
+_PARSING = threading.local()
+
+
+def _pyulog_print(*args, **kwargs):
+    """pyulog's print: into the parsing thread's list of notices, elsewhere the built-in print."""
+    sink = getattr(_PARSING, "notices", None)
+    if sink is None or kwargs.get("file") is not None:
+        return builtins.print(*args, **kwargs)
+    sink.append(" ".join(str(a) for a in args))
+
+
 def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, error: type[ValueError],
-              min_samples: int, gap_steps: float) -> dict:
-    """The fields of a :class:`propmap.io.flightlog.FlightLog` (``t``, ``angular_velocity``,
-    ``angular_acceleration``, ``specific_force``, ``velocity``, ``attitude``, ``rotor_omega``,
-    ``rotor_acceleration``, ``motor_order``) read from the ULog file's bytes ``raw``: every topic
-    interpolated to the acceleration topic's timestamps over the time they all cover, turned into
-    propmap's body frame (module docstring).
+              min_samples: int, gap_steps: float) -> tuple[dict, list]:
+    """The fields of a :class:`propmap.io.flightlog.FlightLog` read from a ULog file's bytes:
+    every topic interpolated to the acceleration topic's timestamps over the time they all
+    cover, turned into propmap's body frame (module docstring).
 
     Parameters
     ----------
     raw : bytes
+        The file's content.
     name : str
         The file as shown in messages.
     motor_map : (float, float) or None
@@ -128,31 +175,50 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         The fewest samples of the acceleration topic the topics' overlap must hold.
     gap_steps : float
         A step of another topic longer than this many of its median steps, or than GAP_S, within
-        the time the topics cover is warned of (the acceleration topic's: io/flightlog.py).
+        the time the topics cover is said (the acceleration topic's: io/flightlog.py).
 
-    Warns
-    -----
-    UserWarning
-        A damaged file; another topic's messages out of time order (left out), a gap in it, or
-        a rate below SLOW_TOPIC_HZ (all interpolated to the acceleration topic's timestamps).
+    Returns
+    -------
+    fields : dict
+        ``t`` [s] from 0 at the first acceleration sample every topic covers (shape (N,)),
+        ``angular_velocity`` [rad/s], ``angular_acceleration`` [rad/s^2] (None where not logged),
+        ``specific_force`` [m/s^2], ``velocity`` [m/s] (body frame, (N, 3)), ``attitude``
+        (x, y, z, w), ``rotor_omega`` [rad/s] (N, n_motors), ``rotor_acceleration`` (None) and
+        ``motor_order`` (str).
+    said : list of str
+        What the caller warns of once the log is accepted: a damaged file pyulog read on (or its
+        other notices); a topic's messages out of time order (left out), a gap in it or a rate
+        below SLOW_TOPIC_HZ; several actuator_outputs instances.
+
+    Raises
+    ------
+    error
+        A file pyulog cannot read, a topic or field missing, motors the ESCs' actuator_function
+        does not assign, too short an overlap of the topics.
     """
     try:
+        import pyulog.core
         from pyulog import ULog
     except ImportError:  # pragma: no cover (a declared dependency)
         raise error("reading ULog files needs the package pyulog (pip install pyulog)") from None
-    notices = io.StringIO()
+    pyulog.core.print = _pyulog_print  # (its module-level name: pyulog's notices into the list below)
+    said = []
+    _PARSING.notices = notices = []
     try:
-        with contextlib.redirect_stdout(notices):  # (pyulog prints its notices: stdout is the CLI's --json)
-            ulog = ULog(_FileBytes(raw))
+        ulog = ULog(_FileBytes(raw))
     except Exception as exc:  # pyulog raises many types for a corrupt file
         raise error(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
-    lines = [x.strip() for x in notices.getvalue().splitlines() if x.strip()]
-    if ulog.file_corruption or lines:
-        said = f"pyulog: {lines[0][:100]}" + (f" and {len(lines) - 1} more notice(s)" if len(lines) > 1 else "") \
-            if lines else "pyulog found corrupt data"
-        warnings.warn(f"{name}: a damaged ULog file ({said}); what pyulog skipped is missing from the log",
-                      UserWarning, stacklevel=3)
+    finally:
+        _PARSING.notices = None
+    lines = [x.strip() for x in notices if x.strip()]
+    first = (f"pyulog: {lines[0][:100]}" + (f" and {len(lines) - 1} more notice(s)" if len(lines) > 1 else "")
+             if lines else "")
+    if ulog.file_corruption:
+        said.append(f"{name}: a damaged ULog file ({first or 'pyulog found corrupt data'}); what pyulog skipped is "
+                    "missing from the log")
         name = f"{name} (a damaged file)"  # (a topic lost to the damage is named missing: said so)
+    elif lines:
+        said.append(f"{name}: {first}")
     acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
     if not _has(ulog, acc_topic):
         found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
@@ -166,23 +232,23 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     d = [s for s in ulog.data_list if s.name == "vehicle_angular_velocity"]
     if d and all(f"xyz_derivative[{k}]" in d[0].data for k in range(3)):
         deriv = _topic(ulog, "vehicle_angular_velocity", [f"xyz_derivative[{k}]" for k in range(3)], name, error)[1]
-    tw, rates, deriv = _in_time_order("vehicle_angular_velocity", name, tw, rates, deriv)
+    tw, rates, deriv = _in_time_order("vehicle_angular_velocity", name, said, tw, rates, deriv)
     tq, q = _topic(ulog, "vehicle_attitude", ["q[0]", "q[1]", "q[2]", "q[3]"], name, error)
-    tq, q = _in_time_order("vehicle_attitude", name, tq, q)
+    tq, q = _in_time_order("vehicle_attitude", name, said, tq, q)
     # q and -q are one attitude: make the sequence continuous before interpolating it component by component (a
     # sign flip between two samples would otherwise interpolate through 0)
     if q.shape[0] > 1:
         flips = np.sum(q[1:] * q[:-1], axis=1) < 0
         q = q * np.concatenate([[1.0], np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)])[:, None]
     tv, vel = _topic(ulog, "vehicle_local_position", ["vx", "vy", "vz"], name, error)
-    tv, vel = _in_time_order("vehicle_local_position", name, tv, vel)
-    tm, rpm, order, motor_topic = _ulog_motors(ulog, name, motor_map, n_motors, error)
-    tm, rpm = _in_time_order(motor_topic, name, tm, rpm)
+    tv, vel = _in_time_order("vehicle_local_position", name, said, tv, vel)
+    tm, rpm, order, motor_topic = _ulog_motors(ulog, name, motor_map, n_motors, error, said)
+    tm, rpm = _in_time_order(motor_topic, name, said, tm, rpm)
     lo = max(t[0], tw[0], tq[0], tv[0], tm[0])
     hi = min(t[-1], tw[-1], tq[-1], tv[-1], tm[-1])
     for topic, tt in (("vehicle_angular_velocity", tw), ("vehicle_attitude", tq), ("vehicle_local_position", tv),
                       (motor_topic, tm)):
-        _check_steps(topic, tt, lo, hi, name, gap_steps)
+        _check_steps(topic, tt, lo, hi, name, gap_steps, said)
     keep = (t >= lo) & (t <= hi)
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
@@ -202,7 +268,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     return dict(t=t - t[0], angular_velocity=w,
                 angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
                 specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,
-                rotor_acceleration=None, motor_order=order)
+                rotor_acceleration=None, motor_order=order), said
 
 
 #: PX4's output function of motor 1 (Motor1 = 101 ... Motor12 = 112; PX4-Autopilot,
@@ -212,36 +278,44 @@ MOTOR_FUNCTIONS = 12
 
 
 def _esc_motor_order(d, cols: list, name: str, n_motors: int | None, error: type[ValueError]):
-    """(esc_rpm columns in motor order, description). PX4 fills esc[] by output channel and, since
-    v1.14, names each channel's motor in esc[k].actuator_function (101 = Motor1): where it does,
-    motor m is the channel whose function is 100 + m (read in channel order, a quadrotor whose
+    """(esc_rpm columns in motor order, description). PX4 numbers esc[] in its own output order
+    and, since v1.14, names each entry's motor in esc[k].actuator_function (101 = Motor1): where it
+    does, motor m is the entry whose function is 100 + m (read in entry order, a quadrotor whose
     outputs MAIN1-4 drive motors 4, 1, 2, 3 had its speeds read as [5400, 5100, 5200, 5300] rpm for
-    [5100, ..., 5400]: a PX4 audit, 2026-11-27). Channel order where the field is absent or all 0."""
+    [5100, ..., 5400]: a PX4 audit, 2026-11-27). Entry order where the field is absent or all 0;
+    a motor on two entries, or missing, or beyond ``n_motors``, is refused."""
     channels = [int(f[4:f.index("]")]) for f in cols]
     fields = [f"esc[{k}].actuator_function" for k in channels]
-    plain = f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm in channel order (no actuator_function)"
+    plain = f"PX4 esc_status esc[0..{len(cols) - 1}].esc_rpm in entry order (no actuator_function)"
     if not cols or not all(f in d.data for f in fields):
         return cols, plain
     codes = []
-    for f in fields:  # each channel's function: its most frequent nonzero value (0 before the mixer assigns it)
+    for f in fields:  # each entry's function: its most frequent nonzero value (0 before the mixer assigns it)
         v = np.asarray(d.data[f]).astype(int)
         v = v[v != 0]
         codes.append(int(np.bincount(v).argmax()) if v.size else 0)
+    numbers = [c - MOTOR1_FUNCTION + 1 for c in codes if MOTOR1_FUNCTION <= c < MOTOR1_FUNCTION + MOTOR_FUNCTIONS]
+    if not numbers:
+        return cols, plain
+    if len(set(numbers)) < len(numbers):
+        twice = next(m for m in numbers if numbers.count(m) > 1)
+        raise error(f"{name}: esc_status' actuator_function assigns motor {twice} to two entries")
     motors = {c - MOTOR1_FUNCTION + 1: k for k, c in enumerate(codes)
               if MOTOR1_FUNCTION <= c < MOTOR1_FUNCTION + MOTOR_FUNCTIONS}
-    if not motors:
-        return cols, plain
     n = n_motors if n_motors is not None else max(motors)
+    if max(motors) > n:
+        raise error(f"{name}: esc_status' actuator_function assigns motors up to {max(motors)}; the vehicle has "
+                    f"{n} rotors")
     missing = [m for m in range(1, n + 1) if m not in motors]
     if missing:
         raise error(f"{name}: esc_status' actuator_function assigns motor(s) {', '.join(map(str, sorted(motors)))} to "
-                    f"its channels, not motor {missing[0]} of the {n}")
+                    f"its entries, not motor {missing[0]} of the {n}")
     return ([cols[motors[m]] for m in range(1, n + 1)],
-            f"PX4 esc_status esc_rpm of Motor1..Motor{n} by actuator_function (channels "
+            f"PX4 esc_status esc_rpm of Motor1..Motor{n} by actuator_function (entries "
             f"{', '.join(str(channels[motors[m]]) for m in range(1, n + 1))})")
 
 
-def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[ValueError]):
+def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[ValueError], said: list):
     """(t, rpm columns, description, topic) of the motor speeds (actuator_outputs: the first ``n_motors``)."""
     if _has(ulog, "esc_status") and motor_map is None:
         d = min((s for s in ulog.data_list if s.name == "esc_status"), key=lambda s: s.multi_id)
@@ -264,10 +338,9 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
     if not d:
         raise error(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
     if len(d) > 1:  # one instance per output driver (px4io's MAIN, the FMU's AUX), numbered by boot order
-        warnings.warn(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
-                      "per output driver): the motor speeds are read from instance "
-                      f"{min(s.multi_id for s in d)}'s first outputs; check that they drive the motors",
-                      UserWarning, stacklevel=4)
+        said.append(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
+                    "per output driver): the motor speeds are read from instance "
+                    f"{min(s.multi_id for s in d)}'s first outputs; check that they drive the motors")
     d = min(d, key=lambda s: s.multi_id)
     n = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
          else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
