@@ -538,3 +538,44 @@ def test_a_subnormal_axis_or_velocity_in_the_scalar_wrench(small_map, policy):
         assert np.isfinite(one.force).all() and one.force[2] > 1.0 and bool(one.loads.inside)
         np.testing.assert_allclose(one.force, arr.force[0], rtol=1e-12, atol=1e-12)
 
+
+
+def test_map_files_from_threads_and_in_pool_workers(small_map, tmp_path):
+    """The netCDF/HDF5 libraries are not thread-safe: two threads opening map files crashed the
+    interpreter (SIGSEGV) and writing them left temporary files (a parallel-use audit, 2026-11-27);
+    a pool's (daemonic) worker could not open one (its read-ahead child: "daemonic processes are
+    not allowed to have children"). Threads run in a fresh process, so that a crash fails the test
+    and not the session."""
+    import multiprocessing as mp
+    import subprocess
+    import sys
+    import textwrap
+
+    path = tmp_path / "m.nc"
+    write_map(small_map[2], path)
+    code = textwrap.dedent(f"""
+        import threading, propmap as pm
+        from propmap.maps import write_map
+        ref = pm.RotorMap.open({str(path)!r}).loads(700.0, 5.0, 1.0).thrust
+        bad = []
+        def work(k):
+            for i in range(6):
+                rm = pm.RotorMap.open({str(path)!r})
+                bad.append(rm.loads(700.0, 5.0, 1.0).thrust != ref)
+                write_map(rm.dataset, {str(tmp_path)!r} + f"/w{{k}}_{{i}}.nc")
+        threads = [threading.Thread(target=work, args=(k,)) for k in range(3)]
+        [t.start() for t in threads]
+        [t.join() for t in threads]
+        assert len(bad) == 18 and not any(bad)
+    """)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, (out.returncode, out.stderr[-2000:])
+    assert not [p.name for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
+    with mp.get_context("spawn").Pool(1) as pool:
+        thrust = pool.apply(_open_map_thrust, (str(path),))
+    assert thrust == RotorMap.open(path).loads(700.0, 5.0, 1.0).thrust
+
+
+def _open_map_thrust(path):
+    """(A pool worker's task: open a map file and evaluate it.)"""
+    return RotorMap.open(path).loads(700.0, 5.0, 1.0).thrust

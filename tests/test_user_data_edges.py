@@ -608,6 +608,33 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
     assert out.returncode != 0 and "no locator available" in out.stderr, out.stderr[-2000:]
 
 
+def test_an_unwritable_numba_cache_dir_falls_back_too(tmp_path):
+    """NUMBA_CACHE_DIR naming a folder that cannot be written ended every command with an internal
+    error, "no locator available" (a parallel-use audit, 2026-11-27: propmap's fallback was skipped
+    whenever the variable was set). Simulated, as above, by numba's locator for it finding no place."""
+    import subprocess
+    import sys
+    import textwrap
+
+    module = tmp_path / "tiny_kernel2.py"
+    module.write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
+    code = textwrap.dedent(f"""
+        import os, sys
+        from numba.core import caching
+        caching.UserProvidedCacheLocator.from_function = classmethod(lambda cls, f, p: None)
+        import propmap.core._jitcache as j
+        import numba
+        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"] != {str(tmp_path / "ro")!r}
+        sys.path.insert(0, {str(tmp_path)!r})
+        import tiny_kernel2
+        assert tiny_kernel2.twice(21) == 42
+        print(os.path.basename(j.CACHE_FALLBACK))
+    """)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "ro"), TMPDIR=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert out.returncode == 0 and out.stdout.strip() == f"propmap-numba-{os.getuid()}", out.stderr[-2000:]
+
+
 @pytest.mark.parametrize("change, match", [
     (("position = [-0.078, -0.100, -0.027]", "position = [-78.0, -100.0, -27.0]"),
      r"rotor 1's hub lies 129.7 m from the centre of mass, 2e\+03 of its radii: are the positions in metres\?"),

@@ -94,9 +94,9 @@ def _writable_cache() -> str | None:
     """Give numba a cache folder where it has none: where neither the package's folder nor the
     user's cache folder can be written (a read-only install run without a home, e.g. as
     ``nobody``: "cannot cache function ...: no locator available", an internal error of every
-    command), and NUMBA_CACHE_DIR is not set, NUMBA_CACHE_DIR (the environment's, which numba
-    reads again when its configuration is reloaded, and numba's CACHE_DIR) is set to
-    ``<temp folder>/propmap-numba-<uid>``, a folder of this user's only (created mode 700; one
+    command), or NUMBA_CACHE_DIR names a folder that cannot be written, NUMBA_CACHE_DIR (the
+    environment's, which numba reads again when its configuration is reloaded, and numba's
+    CACHE_DIR) is set to ``<temp folder>/propmap-numba-<uid>``, a folder of this user's only (created mode 700; one
     that exists is used only where it is this user's, not a link, and private: numba's cache
     index is a pickle, so a folder another user can write is never used), else to a new private
     folder (tempfile.mkdtemp). Returns the folder set, or None (numba's own locations serve, or
@@ -108,9 +108,11 @@ def _writable_cache() -> str | None:
         import numba
         from numba.core import caching
 
-        if numba.config.CACHE_DIR:
-            return None
-        for locator in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
+        # NUMBA_CACHE_DIR where it is set (and can be written: one that cannot ended every command with an
+        # internal error, a parallel-use audit, 2026-11-27), else the package's folder or the user's cache
+        locators = ((caching.UserProvidedCacheLocator,) if numba.config.CACHE_DIR
+                    else (caching.InTreeCacheLocator, caching.UserWideCacheLocator))
+        for locator in locators:
             try:
                 if locator.from_function(_probe, __file__) is not None:
                     return None

@@ -16,7 +16,11 @@ A damaged file can make the netCDF/HDF5 libraries loop forever inside a C call, 
 signal reaches Python (a file with one byte changed was seen to). :func:`read_dataset`
 therefore reads the file first in a child process (``fork``) and refuses it when that read
 does not finish within :func:`open_timeout`: the caller never hangs, and SIGTERM and
-Ctrl-C keep working meanwhile.
+Ctrl-C keep working meanwhile. A daemonic process (a multiprocessing pool's or a Dask
+worker) may start no child: there the file is read in-process, without that guard.
+
+Threads: the netCDF-C and HDF5 libraries are not thread-safe; every read and write here
+holds :data:`NETCDF_LOCK`, so one process's map files are read and written one at a time.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ import json
 import math
 import os
 import stat
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -42,6 +47,10 @@ OPEN_TIMEOUT = 20.0
 OPEN_SECONDS_PER_GB = 60.0
 #: the longest propeller name of a map over several, written as fixed-length characters
 MAX_NAME_CHARS = 256
+#: held around every read and write of a map file: the netCDF-C and HDF5 libraries are not thread-safe (two
+#: threads opening map files crashed the interpreter, SIGSEGV, in 3 of 3 runs, and writing them in 1 of 2: a
+#: parallel-use audit, 2026-11-27); one process's map files are read and written one at a time
+NETCDF_LOCK = threading.RLock()
 
 
 # ---------------------------------------------------------------- reading a file
@@ -128,6 +137,8 @@ def _probe(path, where: str, size: int) -> None:
     which names them as usual."""
     import multiprocessing as mp
 
+    if mp.current_process().daemon:  # (a pool's or Dask's worker may start no child: AssertionError, "daemonic
+        return  # processes are not allowed to have children"; a parallel-use audit, 2026-11-27) read in-process
     methods = mp.get_all_start_methods()
     ctx = mp.get_context("fork" if "fork" in methods else methods[0])
     recv, send = ctx.Pipe(duplex=False)
@@ -175,11 +186,12 @@ def map_props(path) -> tuple[str, ...] | None:
     where, st = _stat_regular(path)
     _probe(path, where, st.st_size)
     try:
-        _layout(path, where)
-        with netCDF4.Dataset(path, "r") as nc:
-            if "prop" not in nc.variables:
-                return None
-            names = [str(n) for n in np.asarray(nc.variables["prop"][:]).ravel()]
+        with NETCDF_LOCK:
+            _layout(path, where)
+            with netCDF4.Dataset(path, "r") as nc:
+                if "prop" not in nc.variables:
+                    return None
+                names = [str(n) for n in np.asarray(nc.variables["prop"][:]).ravel()]
     except ValueError:
         raise
     except Exception as exc:  # noqa: BLE001 -- the netCDF/HDF5 libraries raise anything on a damaged file
@@ -226,13 +238,14 @@ def read_dataset(path, prop: str | None = None):
     where, st = _stat_regular(path)
     _probe(path, where, st.st_size)
     try:
-        unused = _layout(path, where)
-        with xr.open_dataset(path, engine="netcdf4", drop_variables=unused) as ds:
-            if "prop" in ds.dims:
-                ds = _select(ds, prop, where)
-            elif prop is not None and prop != ds.attrs.get("propeller"):
-                raise ValueError(f"{where}: a map of {_short(ds.attrs.get('propeller'))}, not of {prop!r}")
-            return ds.load()
+        with NETCDF_LOCK:
+            unused = _layout(path, where)
+            with xr.open_dataset(path, engine="netcdf4", drop_variables=unused) as ds:
+                if "prop" in ds.dims:
+                    ds = _select(ds, prop, where)
+                elif prop is not None and prop != ds.attrs.get("propeller"):
+                    raise ValueError(f"{where}: a map of {_short(ds.attrs.get('propeller'))}, not of {prop!r}")
+                return ds.load()
     except ValueError as exc:
         msg = str(exc)
         raise ValueError(msg if msg.startswith(where) else f"{where}: not a readable netCDF rotor map ({msg})") \
@@ -429,7 +442,7 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
                 encoding["prop"] = {"dtype": "S1"}
             from .atomic import signals_held
 
-            with signals_held():  # (a signal raised inside HDF5's write deadlocked it: atomic.signals_held)
+            with signals_held(), NETCDF_LOCK:  # (a signal inside HDF5's write deadlocked it: atomic.signals_held)
                 ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
         else:
             table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
