@@ -387,30 +387,38 @@ def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
         read_flight_log(tmp_path / "slow.ulg")
 
 
+def _refusal_within(path, seconds: float) -> str:
+    """The FlightLogError message of reading ``path`` in a thread that must end within ``seconds``
+    (a reader that hangs fails the test instead of the session; the thread is a daemon)."""
+    import threading
+
+    result = {"error": ""}
+
+    def read():
+        try:
+            read_flight_log(path)
+        except FlightLogError as exc:
+            result["error"] = str(exc)
+
+    worker = threading.Thread(target=read, daemon=True)
+    worker.start()
+    worker.join(seconds)
+    assert not worker.is_alive(), f"reading {path} did not end within {seconds} s"
+    return result["error"]
+
+
 def test_ulog_a_damaged_file_is_refused_or_warned_of_never_hangs(tmp_path, capsys):
     """A damaged message header (size 0xffff) hung the reader at full CPU: pyulog stepped back
     before the start of an in-memory file, which io.BytesIO allows, and read the definitions again
     without end (a PX4 audit, 2026-11-27); a damaged data section printed pyulog's notices on
     standard output (the CLI's --json) and was read without a word."""
     import struct
-    import threading
 
     from propmap.cli.main import main
 
     bad = tmp_path / "hang.ulg"
     bad.write_bytes(b"ULog\x01\x125\x01" + bytes(8) + struct.pack("<HB", 0xFFFF, 0xFF))
-    result = {}
-
-    def read():
-        try:
-            read_flight_log(bad)
-        except FlightLogError as exc:
-            result["error"] = str(exc)
-
-    worker = threading.Thread(target=read, daemon=True)
-    worker.start()
-    worker.join(60.0)
-    assert not worker.is_alive() and "not a readable ULog file" in result["error"]
+    assert "not a readable ULog file" in _refusal_within(bad, 60.0)
     assert main(["wrench", str(bad), "--vehicle", "quadrotor", "--out", str(tmp_path / "o.csv")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "hang.ulg: not a readable ULog file" in err[0]
@@ -451,7 +459,6 @@ def test_ulog_large_damaged_file_notices_and_warnings_after_refusals(tmp_path, c
     2026-11-27). pyulog's notices never reach standard output, which stays the caller's."""
     import struct
     import sys
-    import threading
 
     from .ulog_writer import _msg
 
@@ -461,18 +468,7 @@ def test_ulog_large_damaged_file_notices_and_warnings_after_refusals(tmp_path, c
     raw += struct.pack("<HB", 0xFFFF, 0xFF)
     assert len(raw) > 65536
     (tmp_path / "big.ulg").write_bytes(bytes(raw))
-    result = {}
-
-    def read():
-        try:
-            read_flight_log(tmp_path / "big.ulg")
-        except FlightLogError as exc:
-            result["error"] = str(exc)
-
-    worker = threading.Thread(target=read, daemon=True)
-    worker.start()
-    worker.join(60.0)
-    assert not worker.is_alive() and "not a readable ULog file" in result["error"]
+    assert "not a readable ULog file" in _refusal_within(tmp_path / "big.ulg", 60.0)
     hover_ulog(tmp_path / "f.ulg")
     v2 = bytearray((tmp_path / "f.ulg").read_bytes())
     v2[7] = 2  # the format version
