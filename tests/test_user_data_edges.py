@@ -609,28 +609,33 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
 
 
 def test_an_unwritable_numba_cache_dir_falls_back_too(tmp_path):
-    """NUMBA_CACHE_DIR naming a folder that cannot be written ended every command with an internal
-    error, "no locator available" (a parallel-use audit, 2026-11-27: propmap's fallback was skipped
-    whenever the variable was set). Simulated, as above, by numba's locator for it finding no place."""
+    """NUMBA_CACHE_DIR naming what cannot be a cache folder (here a regular file), where the
+    package's folder and the user's cache cannot be written either, ended every command with an
+    internal error, "no locator available" (a parallel-use audit, 2026-11-27: propmap's fallback
+    was skipped whenever the variable was set). The kernels are cached in the fallback folder."""
     import subprocess
     import sys
     import textwrap
 
+    (tmp_path / "not_a_folder").write_text("x")
     module = tmp_path / "tiny_kernel2.py"
     module.write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
     code = textwrap.dedent(f"""
         import os, sys
         from numba.core import caching
-        caching.UserProvidedCacheLocator.from_function = classmethod(lambda cls, f, p: None)
+        for c in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
+            c.from_function = classmethod(lambda cls, f, p: None)
         import propmap.core._jitcache as j
         import numba
-        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"] != {str(tmp_path / "ro")!r}
+        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"]
         sys.path.insert(0, {str(tmp_path)!r})
         import tiny_kernel2
         assert tiny_kernel2.twice(21) == 42
+        cached = [f for _, _, fs in os.walk(j.CACHE_FALLBACK) for f in fs if f.startswith("tiny_kernel2")]
+        assert any(f.endswith(".nbi") for f in cached), cached
         print(os.path.basename(j.CACHE_FALLBACK))
     """)
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "ro"), TMPDIR=str(tmp_path))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "not_a_folder"), TMPDIR=str(tmp_path))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
     assert out.returncode == 0 and out.stdout.strip() == f"propmap-numba-{os.getuid()}", out.stderr[-2000:]
 

@@ -364,6 +364,7 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
 
     from ..io.atomic import signals_held
     from ..io.calibration import default_params
+    from ..io.mapfile import NETCDF_LOCK, to_netcdf_here
     from ..io.catalogue import catalogue
     from ..maps import build_map
 
@@ -378,11 +379,13 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
             per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
             parts.append(Path(tmp) / f"{k:04d}.nc")
             ds.attrs = {}
-            with signals_held():  # (a signal raised inside HDF5's write deadlocked it: io.atomic.signals_held)
-                ds.to_netcdf(parts[-1], engine="netcdf4")
+            with NETCDF_LOCK, signals_held():  # (a signal inside HDF5's write deadlocked it: io.atomic.signals_held)
+                to_netcdf_here(ds, parts[-1])
             del ds
-        combined = xr.open_mfdataset(parts, combine="nested", concat_dim="prop", engine="netcdf4", data_vars="all",
-                                     coords="minimal", compat="override", combine_attrs="override")
+        with NETCDF_LOCK:
+            combined = xr.open_mfdataset(parts, combine="nested", concat_dim="prop", engine="netcdf4",
+                                         data_vars="all", coords="minimal", compat="override",
+                                         combine_attrs="override")
         try:
             combined = combined.assign_coords(prop=("prop", names))
             for v in combined.variables.values():
@@ -395,7 +398,8 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
                               "note": "RotorMap.open(path, prop=NAME) evaluates one propeller's map"}
             yield combined
         finally:
-            combined.close()
+            with NETCDF_LOCK:
+                combined.close()
 
 
 def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs) -> list:

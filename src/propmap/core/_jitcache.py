@@ -96,11 +96,12 @@ def _writable_cache() -> str | None:
     ``nobody``: "cannot cache function ...: no locator available", an internal error of every
     command), or NUMBA_CACHE_DIR names a folder that cannot be written, NUMBA_CACHE_DIR (the
     environment's, which numba reads again when its configuration is reloaded, and numba's
-    CACHE_DIR) is set to ``<temp folder>/propmap-numba-<uid>``, a folder of this user's only (created mode 700; one
-    that exists is used only where it is this user's, not a link, and private: numba's cache
-    index is a pickle, so a folder another user can write is never used), else to a new private
-    folder (tempfile.mkdtemp). Returns the folder set, or None (numba's own locations serve, or
-    numba's internals are not the ones known: the kernels then fail as numba says)."""
+    CACHE_DIR) is set to ``<temp folder>/propmap-numba-<uid>``, a folder of this user's only
+    (created mode 700; one that exists is used only where it is this user's, not a link, and
+    private: numba's cache index is a pickle, so a folder another user can write is never used),
+    else to a new private folder (tempfile.mkdtemp). Returns the folder set, or None (numba's own
+    locations serve, or numba's internals are not the ones known: the kernels then fail as numba
+    says)."""
     import stat
     import tempfile
 
@@ -108,10 +109,11 @@ def _writable_cache() -> str | None:
         import numba
         from numba.core import caching
 
-        # NUMBA_CACHE_DIR where it is set (and can be written: one that cannot ended every command with an
-        # internal error, a parallel-use audit, 2026-11-27), else the package's folder or the user's cache
-        locators = ((caching.UserProvidedCacheLocator,) if numba.config.CACHE_DIR
-                    else (caching.InTreeCacheLocator, caching.UserWideCacheLocator))
+        # NUMBA_CACHE_DIR where it is set, then (as numba falls through) the package's folder or the user's
+        # cache: where none can be written, an unwritable NUMBA_CACHE_DIR ended every command with an internal
+        # error (a parallel-use audit, 2026-11-27)
+        locators = (((caching.UserProvidedCacheLocator,) if numba.config.CACHE_DIR else ())
+                    + (caching.InTreeCacheLocator, caching.UserWideCacheLocator))
         for locator in locators:
             try:
                 if locator.from_function(_probe, __file__) is not None:

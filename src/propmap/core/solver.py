@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
-from ._interp import INCIDENCE_SNAP, snap_incidence
 from . import _momentum as mo
+from ._interp import INCIDENCE_SNAP, snap_incidence
 from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable

@@ -19,8 +19,12 @@ does not finish within :func:`open_timeout`: the caller never hangs, and SIGTERM
 Ctrl-C keep working meanwhile. A daemonic process (a multiprocessing pool's or a Dask
 worker) may start no child: there the file is read in-process, without that guard.
 
-Threads: the netCDF-C and HDF5 libraries are not thread-safe; every read and write here
-holds :data:`NETCDF_LOCK`, so one process's map files are read and written one at a time.
+Threads: the netCDF-C and HDF5 libraries are not thread-safe; every read and write of a map
+by propmap holds :data:`NETCDF_LOCK`, so that propmap's own reads and writes in one process run
+one at a time (a caller's own netCDF or HDF5 calls from other threads, xarray's included, are
+not serialised with them unless the caller holds the lock too). A fork while a thread holds
+the libraries leaves the child's copy of them in that state: a fork-based pool started while
+a thread reads a map may hang its workers (use ``spawn`` or ``forkserver``).
 """
 
 from __future__ import annotations
@@ -131,6 +135,14 @@ def _probe_child(path, conn) -> None:
         conn.close()
 
 
+def to_netcdf_here(ds, path, **kwargs) -> None:
+    """``ds.to_netcdf(path, engine="netcdf4", **kwargs)`` with a lazy (dask) dataset's tasks run in
+    this thread, which holds :data:`NETCDF_LOCK` (the caller's): on dask's threads or a cluster's
+    workers they read and store outside it, and a task that reads a map waited for the lock
+    without end, SIGTERM held (a review, 2026-11-27)."""
+    ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
+
+
 def _probe(path, where: str, size: int) -> None:
     """Read the file in a child process first (module docstring); refuse it when the read
     does not end within :func:`open_timeout`. Errors found there are left to the reader,
@@ -143,7 +155,8 @@ def _probe(path, where: str, size: int) -> None:
     ctx = mp.get_context("fork" if "fork" in methods else methods[0])
     recv, send = ctx.Pipe(duplex=False)
     child = ctx.Process(target=_probe_child, args=(os.fspath(path), send), daemon=True)
-    child.start()
+    with NETCDF_LOCK:  # (a fork while another thread is inside HDF5 hung the child: a good file refused, a review)
+        child.start()
     send.close()
     limit = open_timeout(size)
     try:
@@ -442,8 +455,8 @@ def write_map(ds, path, fmt: str = "netcdf", *, sidecar: bool = True) -> list[Pa
                 encoding["prop"] = {"dtype": "S1"}
             from .atomic import signals_held
 
-            with signals_held(), NETCDF_LOCK:  # (a signal inside HDF5's write deadlocked it: atomic.signals_held)
-                ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+            with NETCDF_LOCK, signals_held():  # (a signal inside HDF5's write deadlocked it: atomic.signals_held)
+                to_netcdf_here(ds, tmp, encoding=encoding)
         else:
             table = ds.drop_vars(["omega", "incidence"]).to_dataframe().reset_index()
             for f in FLAGS:
