@@ -364,8 +364,8 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
 
     from ..io.atomic import signals_held
     from ..io.calibration import default_params
-    from ..io.mapfile import NETCDF_LOCK, to_netcdf_here
     from ..io.catalogue import catalogue
+    from ..io.mapfile import NETCDF_LOCK, to_netcdf_here
     from ..maps import build_map
 
     out.parent.mkdir(parents=True, exist_ok=True)
