@@ -36,8 +36,9 @@ def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueErro
 
 #: a gap in a topic other than the accelerations' longer than this [s] is warned of, whatever its rate
 GAP_S = 1.0
-#: a topic other than the accelerations' logged more slowly than this [Hz] is warned of (PX4's default logging
-#: profile records esc_status at 4 Hz): interpolated to the accelerations' timestamps, it misses what changes faster
+#: a topic other than the accelerations' logged more slowly than this [Hz] (by more than 10%: PX4 logs many topics at
+#: exactly 10 Hz) is warned of (older PX4 releases' default logging profile records esc_status at 4 Hz): interpolated
+#: to the accelerations' timestamps, it misses what changes faster
 SLOW_TOPIC_HZ = 10.0
 
 
