@@ -564,19 +564,15 @@ def test_an_output_named_as_a_folder_that_does_not_exist_is_refused(tmp_path, ca
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pts.csv"]
 
 
-def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
-    """A read-only install run without a writable home (as nobody) ended every command with an
-    internal error, "cannot cache function ...: no locator available" (user-level audit,
-    2026-11-26): numba is then given a private folder in the temporary folder (here tmp_path),
-    never one another user can write (numba's index is a pickle). Simulated (as root every
-    folder is writable) by locators that find no place, in fresh processes."""
-    import subprocess
-    import sys
+def _fallback_probe(tmp_path, module: str, checks: str = "") -> str:
+    """Python code for a fresh process: numba's package-folder and user-cache locators find no
+    place (as for a read-only install run as nobody; as root every folder is writable), propmap's
+    cache fallback is asserted to be numba's cache folder, a tiny cached kernel ``module`` in
+    tmp_path is compiled and called, ``checks`` run, and the fallback's folder name printed."""
     import textwrap
 
-    module = tmp_path / "tiny_kernel.py"
-    module.write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
-    code = textwrap.dedent(f"""
+    (tmp_path / f"{module}.py").write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
+    return textwrap.dedent(f"""
         import os, sys, tempfile
         from numba.core import caching
         for c in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
@@ -585,12 +581,22 @@ def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
         import numba
         assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"]
         assert os.path.dirname(j.CACHE_FALLBACK) == {str(tmp_path)!r}
-        assert oct(os.stat(j.CACHE_FALLBACK).st_mode)[-3:] == "700"
         sys.path.insert(0, {str(tmp_path)!r})
-        import tiny_kernel
-        assert tiny_kernel.twice(21) == 42
-        print(os.path.basename(j.CACHE_FALLBACK))
-    """)
+        import {module}
+        assert {module}.twice(21) == 42
+    """) + textwrap.dedent(checks) + "\nprint(os.path.basename(j.CACHE_FALLBACK))\n"
+
+
+def test_kernels_are_cached_where_numba_can_write_no_cache_folder(tmp_path):
+    """A read-only install run without a writable home (as nobody) ended every command with an
+    internal error, "cannot cache function ...: no locator available" (user-level audit,
+    2026-11-26): numba is then given a private folder in the temporary folder (here tmp_path),
+    never one another user can write (numba's index is a pickle). Simulated (as root every
+    folder is writable) by locators that find no place, in fresh processes."""
+    import subprocess
+    import sys
+
+    code = _fallback_probe(tmp_path, "tiny_kernel", 'assert oct(os.stat(j.CACHE_FALLBACK).st_mode)[-3:] == "700"')
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     env["TMPDIR"] = str(tmp_path)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
@@ -615,25 +621,11 @@ def test_an_unwritable_numba_cache_dir_falls_back_too(tmp_path):
     was skipped whenever the variable was set). The kernels are cached in the fallback folder."""
     import subprocess
     import sys
-    import textwrap
 
     (tmp_path / "not_a_folder").write_text("x")
-    module = tmp_path / "tiny_kernel2.py"
-    module.write_text("import numba\n\n@numba.njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
-    code = textwrap.dedent(f"""
-        import os, sys
-        from numba.core import caching
-        for c in (caching.InTreeCacheLocator, caching.UserWideCacheLocator):
-            c.from_function = classmethod(lambda cls, f, p: None)
-        import propmap.core._jitcache as j
-        import numba
-        assert j.CACHE_FALLBACK == numba.config.CACHE_DIR == os.environ["NUMBA_CACHE_DIR"]
-        sys.path.insert(0, {str(tmp_path)!r})
-        import tiny_kernel2
-        assert tiny_kernel2.twice(21) == 42
+    code = _fallback_probe(tmp_path, "tiny_kernel2", """
         cached = [f for _, _, fs in os.walk(j.CACHE_FALLBACK) for f in fs if f.startswith("tiny_kernel2")]
         assert any(f.endswith(".nbi") for f in cached), cached
-        print(os.path.basename(j.CACHE_FALLBACK))
     """)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "not_a_folder"), TMPDIR=str(tmp_path))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)

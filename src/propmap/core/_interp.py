@@ -217,7 +217,20 @@ INCIDENCE_SNAP = 2.5e-7
 
 def snap_incidence(a, lo=0.0, hi=np.pi):
     """The float array ``a`` with values outside [lo, hi] by at most INCIDENCE_SNAP moved onto
-    the end (a new array where any moves: the caller's is never written; NaN kept)."""
+    the end (a new array where any moves: the caller's is never written; NaN kept).
+
+    Parameters
+    ----------
+    a : ndarray of float
+        Incidences [rad], any shape.
+    lo, hi : float
+        The ends [rad]: 0 and pi, or a map's incidence axis.
+
+    Returns
+    -------
+    ndarray
+        Shape of ``a``; ``a`` itself where nothing moves.
+    """
     with np.errstate(invalid="ignore"):
         high = (a > hi) & (a <= hi + INCIDENCE_SNAP)
         low = (a < lo) & (a >= lo - INCIDENCE_SNAP)

@@ -515,14 +515,14 @@ def disk_frame(velocity, axis):
     except ValueError:
         raise ValueError(f"velocity (shape {V.shape}) and axis (shape {z.shape}) must broadcast together: N x 3 "
                          "beside N x 3 or 3") from None
-    # |V| without overflow (a speed beyond float range is refused by rotor_loads as such)
+    # V scaled by its largest component: |V| without overflow (a speed beyond float range is refused by
+    # rotor_loads as such), and a subnormal V keeps its direction
     vmax = np.max(np.abs(V), axis=-1)
-    with np.errstate(over="ignore"):
-        speed = vmax * np.linalg.norm(V / np.where(vmax > 0, vmax, 1.0)[..., None], axis=-1)
-    # beta = arccos(V . z / speed) as atan2(|V - (V . z) z|, V . z): the arccos of a cosine rounded to
-    # 1 - 1e-16 is 1.5e-8 rad, atan2 keeps the digits near axial flow (0 where V = 0); V scaled by
-    # its largest component, as the speed (a subnormal V keeps its direction)
     Vs = V / np.where(vmax > 0, vmax, 1.0)[..., None]
+    with np.errstate(over="ignore"):
+        speed = vmax * np.linalg.norm(Vs, axis=-1)
+    # beta = arccos(V . z / speed) as atan2(|V - (V . z) z|, V . z): the arccos of a cosine one or two ulp
+    # below 1 is 1.5e-8 or 2.1e-8 rad, atan2 keeps the digits near axial flow (0 where V = 0)
     ax_s = np.einsum("...i,...i->...", Vs, z)
     beta = np.where(speed > 0, np.arctan2(np.linalg.norm(Vs - ax_s[..., None] * z, axis=-1), ax_s), 0.0)
     return V, z, speed, beta

@@ -139,7 +139,22 @@ def to_netcdf_here(ds, path, **kwargs) -> None:
     """``ds.to_netcdf(path, engine="netcdf4", **kwargs)`` with a lazy (dask) dataset's tasks run in
     this thread, which holds :data:`NETCDF_LOCK` (the caller's): on dask's threads or a cluster's
     workers they read and store outside it, and a task that reads a map waited for the lock
-    without end, SIGTERM held (a review, 2026-11-27)."""
+    without end, SIGTERM held (a review, 2026-11-27).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        In memory or lazy (dask arrays).
+    path : str or os.PathLike
+        The netCDF file written (a temporary one: the callers replace the output atomically).
+    **kwargs
+        Passed to ``xarray.Dataset.to_netcdf`` (e.g. ``encoding``).
+
+    Raises
+    ------
+    Exception
+        Whatever xarray and the netCDF/HDF5 libraries raise.
+    """
     ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
 
 
