@@ -383,6 +383,10 @@ def test_single_precision_pi_is_axial_descent():
     np.testing.assert_array_equal(b, kept)
     with pytest.raises(ValueError, match="incidence must be finite and in"):  # beyond float32's rounding
         pm.rotor_loads(prop, params, 900.0, 10.0, math.pi + 1e-6)
+    # the scalar path snaps the low end as the array path does (it refused -1e-8, the array took it as 0)
+    zero = pm.rotor_loads(prop, params, 900.0, 10.0, 0.0)
+    for r in (pm.rotor_loads(prop, params, 900.0, 10.0, -1e-8), pm.rotor_loads(prop, params, 900.0, 10.0, [-1e-8])):
+        assert float(np.ravel(r.incidence)[0]) == 0.0 and float(np.ravel(r.thrust)[0]) == float(zero.thrust)
     # a map's incidence axis and load data in single precision (a review, 2026-11-27: refused)
     from propmap.identify.load_data import LoadData
     from propmap.maps import build_map

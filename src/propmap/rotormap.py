@@ -17,7 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .core._interp import INCIDENCE_SNAP, snap_incidence
+from .core._interp import snap_incidence, snap_incidence_scalar
 from .core.geometry import has_bool, refuse_masked
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
@@ -434,8 +434,7 @@ class RotorMap:
         a query outside the grid under "raise"), which then raises what it raises."""
         o0, o1, v0, v1, b0, b1 = self._box
         if not b0 <= incidence <= b1:  # within INCIDENCE_SNAP of an end: on it (float32's pi)
-            incidence = b1 if b1 < incidence <= b1 + INCIDENCE_SNAP else (
-                b0 if b0 - INCIDENCE_SNAP <= incidence < b0 else incidence)
+            incidence = snap_incidence_scalar(incidence, b0, b1)
         inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (
             b0 <= incidence <= b1 or (airspeed <= self._hover_speed and v0 == 0.0 and incidence == incidence))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)

@@ -239,6 +239,28 @@ def snap_incidence(a, lo=0.0, hi=np.pi):
     return np.where(high, hi, np.where(low, lo, a))
 
 
+def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float:
+    """:func:`snap_incidence` for one Python float (the one-point paths: no arrays built).
+
+    Parameters
+    ----------
+    x : float
+        Incidence [rad].
+    lo, hi : float
+        The ends [rad].
+
+    Returns
+    -------
+    float
+        ``lo`` or ``hi`` where ``x`` lies outside by at most INCIDENCE_SNAP, else ``x``.
+    """
+    if hi < x <= hi + INCIDENCE_SNAP:
+        return hi
+    if lo - INCIDENCE_SNAP <= x < lo:
+        return lo
+    return x
+
+
 @numba.njit(inline="always", **_FLAGS)
 def snap_edge(x, lo, hi):
     """``x`` moved onto ``lo`` or ``hi`` when outside by at most INCIDENCE_SNAP."""

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import _flags, _kernel
 from . import _momentum as mo
-from ._interp import INCIDENCE_SNAP, snap_incidence
+from ._interp import snap_incidence, snap_incidence_scalar
 from .air import SUPERSONIC_TIP
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
@@ -163,8 +163,8 @@ def _scalar(name: str, value) -> float:
         x = float(value)
     except OverflowError:  # an int beyond the float range
         raise _range_error(name, math.inf) from None
-    if name == "incidence" and hi < x <= hi + INCIDENCE_SNAP:
-        return hi
+    if name == "incidence":  # (as the array path: within INCIDENCE_SNAP of 0 or pi, on it)
+        x = snap_incidence_scalar(x, lo, hi)
     if not lo <= x <= hi:
         raise _range_error(name, x)
     return x
@@ -284,8 +284,8 @@ def rotor_loads(
     incidence : float or array_like
         beta [rad] in [0, pi]: the angle between the freestream seen by the disk
         and the rotor axis (0 axial climb, pi/2 edgewise, pi axial descent);
-        docs/numerics.md item 1. Irrelevant when V = 0. A value above pi by at most 2.5e-7
-        (single precision's pi, 8.7e-8 above it) is taken as pi.
+        docs/numerics.md item 1. Irrelevant when V = 0. A value outside [0, pi] by at most
+        2.5e-7 (single precision's pi, 8.7e-8 above it) is taken as that end.
     air : Air, optional
         Density, viscosity, speed of sound. Default: the parameter set's (``params.air``).
     discretization : Discretization, optional
