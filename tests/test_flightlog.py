@@ -491,3 +491,68 @@ def test_ulog_large_damaged_file_notices_and_warnings_after_refusals(tmp_path, c
             read_flight_log(tmp_path / "g.ulg")
     assert not rec
 
+
+
+# PX4's output functions (control allocation): motor m on output i where <PREFIX>_FUNC<i> = 100 + m
+_OUT = [510.0, 520.0, 530.0, 540.0] + [0.0] * 12  # rpm / 10 on outputs 1-4: 5100, 5200, 5300, 5400 rpm
+
+
+def _rpm(log):
+    return np.round(log.rotor_omega[0] * 60 / (2 * math.pi), 3).tolist()
+
+
+def test_ulog_actuator_outputs_follow_the_logs_output_functions(tmp_path):
+    """Motor m is read from the output whose PWM_MAIN_FUNC is PX4's Motor m (101 = Motor1), not
+    from output m: a quadrotor whose outputs 1-4 drive motors 2, 1, 4, 3 was read as [5100,
+    5200, 5300, 5400] rpm for [5200, 5100, 5400, 5300] (a leftover of the PX4 audit: the first
+    outputs were taken as the motors)."""
+    params = {"PWM_MAIN_FUNC1": 102, "PWM_MAIN_FUNC2": 101, "PWM_MAIN_FUNC3": 104, "PWM_MAIN_FUNC4": 103,
+              "PWM_MAIN_FUNC5": 0, "PWM_AUX_FUNC1": 201}
+    hover_ulog(tmp_path / "f.ulg", with_esc=False, n_outputs=8, outputs=_OUT, params=params)
+    log = read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=4)
+    assert _rpm(log) == [5200.0, 5100.0, 5400.0, 5300.0]
+    assert "output[1, 0, 3, 2] for Motor1..Motor4 (by PWM_MAIN_FUNCn)" in log.motor_order
+    # motors on outputs 5-8, servos on 1-4 (a VTOL's layout): the first outputs are not motors
+    out = [1500.0] * 4 + _OUT[:4] + [0.0] * 8
+    params = {f"PWM_MAIN_FUNC{i}": 200 + i for i in range(1, 5)} | {f"PWM_MAIN_FUNC{i}": 96 + i for i in range(5, 9)}
+    hover_ulog(tmp_path / "v.ulg", with_esc=False, n_outputs=8, outputs=out, params=params)
+    assert _rpm(read_flight_log(tmp_path / "v.ulg", motor_map=(0.0, 10.0), n_motors=4)) == [5100.0, 5200.0,
+                                                                                              5300.0, 5400.0]
+    # without the vehicle's rotor count: the motors the parameters assign
+    assert read_flight_log(tmp_path / "v.ulg", motor_map=(0.0, 10.0)).n_motors == 4
+
+
+def test_ulog_output_functions_that_cannot_be_read_are_refused(tmp_path):
+    def read(params, n_motors=4, changed=None):
+        hover_ulog(tmp_path / "f.ulg", with_esc=False, n_outputs=8, outputs=_OUT, params=params, changed=changed)
+        return read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=n_motors)
+
+    quad = {f"PWM_MAIN_FUNC{i}": 100 + i for i in range(1, 5)}
+    with pytest.raises(FlightLogError, match=r"no output driver carries motors 1\.\.4 \(PWM_AUX_FUNCn: motor\(s\) "
+                                             r"3, 4; PWM_MAIN_FUNCn: motor\(s\) 1, 2\)"):
+        read({"PWM_MAIN_FUNC1": 101, "PWM_MAIN_FUNC2": 102, "PWM_AUX_FUNC1": 103, "PWM_AUX_FUNC2": 104})
+    with pytest.raises(FlightLogError, match=r"PWM_MAIN_FUNCn assign\(s\) motors up to 6; the vehicle has 4"):
+        read(quad | {"PWM_MAIN_FUNC5": 105, "PWM_MAIN_FUNC6": 106})
+    with pytest.raises(FlightLogError, match=r"assign no output a motor \(Motor1\.\.Motor12 = 101\.\.112\)"):
+        read({f"PWM_MAIN_FUNC{i}": 200 + i for i in range(1, 9)})
+    with pytest.raises(FlightLogError, match=r"puts a motor on output 12; topic 'actuator_outputs' \(instance 0\) "
+                                             r"has 8 outputs"):
+        read({"PWM_MAIN_FUNC1": 101, "PWM_MAIN_FUNC2": 102, "PWM_MAIN_FUNC3": 103, "PWM_MAIN_FUNC12": 104})
+    with pytest.raises(FlightLogError, match="parameter PWM_MAIN_FUNC2 changes during the log"):
+        read(quad, changed=[(1_500_000, "PWM_MAIN_FUNC2", 103)])
+    # a parameter logged again with its value is no change
+    assert _rpm(read(quad, changed=[(1_500_000, "PWM_MAIN_FUNC2", 102)])) == [5100.0, 5200.0, 5300.0, 5400.0]
+
+
+def test_ulog_mixer_files_read_the_first_outputs_or_betaflights_order(tmp_path):
+    """PX4 v1.13 with SYS_CTRL_ALLOC = 0 (mixer files) ignores the FUNC parameters: the first
+    outputs are the motors, in Betaflight's order with MOT_ORDERING = 1 (PX4's
+    MixingOutput::reorderOutputs puts motor 4 on output 1, motors 1-3 on outputs 2-4)."""
+    legacy = {"SYS_CTRL_ALLOC": 0, "PWM_MAIN_FUNC1": 104, "PWM_MAIN_FUNC4": 101}
+    hover_ulog(tmp_path / "f.ulg", with_esc=False, n_outputs=8, outputs=_OUT, params=legacy)
+    assert _rpm(read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=4)) == [5100.0, 5200.0,
+                                                                                              5300.0, 5400.0]
+    hover_ulog(tmp_path / "b.ulg", with_esc=False, n_outputs=8, outputs=_OUT, params={"MOT_ORDERING": 1})
+    log = read_flight_log(tmp_path / "b.ulg", motor_map=(0.0, 10.0), n_motors=4)
+    assert _rpm(log) == [5200.0, 5300.0, 5400.0, 5100.0]
+    assert "MOT_ORDERING = 1" in log.motor_order

@@ -21,16 +21,28 @@ def _msg(kind: bytes, payload: bytes) -> bytes:
     return struct.pack("<HB", len(payload), kind[0]) + payload
 
 
-def write_ulog(path, topics: dict, nested: dict | None = None) -> None:
+def _param(name: str, value) -> bytes:
+    """A 'P' message: uint8 key length, key "int32_t NAME" (or "float NAME"), the value."""
+    key = f"{'int32_t' if isinstance(value, int) else 'float'} {name}".encode()
+    return _msg(b"P", bytes([len(key)]) + key + struct.pack("<i" if isinstance(value, int) else "<f", value))
+
+
+def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | None = None,
+               changed: list | None = None) -> None:
     """Write ``topics``: name -> (fields, rows).
 
     ``fields`` is a list of (type, name) with type a C type, an array "float[3]", or a
     nested format name from ``nested`` (name -> list of (type, name)) with a count
     ("esc_report[8]"). ``rows`` is a list of flat tuples of values in field order (arrays
     and nested fields flattened). The first field must be ``uint64_t timestamp``.
+    ``params`` (name -> int or float) are written in the definitions (pyulog's
+    ``initial_parameters``), ``changed`` ((timestamp [us], name, value)) among the data
+    (``changed_parameters``).
     """
     nested = nested or {}
     out = bytearray(b"ULog\x01\x12\x35" + bytes([0]) + struct.pack("<Q", 0))
+    for pname, value in (params or {}).items():
+        out += _param(pname, value)
 
     def fmt_text(name, fields):
         return f"{name}:" + "".join(f"{t} {n};" for t, n in fields)
@@ -56,22 +68,26 @@ def write_ulog(path, topics: dict, nested: dict | None = None) -> None:
         for row in rows:
             payload = b"".join(struct.pack(t, v) for t, v in zip(types, row))
             events.append((row[0], msg_id, payload))
+    for ts, pname, value in changed or []:
+        events.append((ts, -1, _param(pname, value)))
     for ts, msg_id, payload in sorted(events, key=lambda e: (e[0], e[1])):
-        out += _msg(b"D", struct.pack("<H", msg_id) + payload)
+        out += payload if msg_id < 0 else _msg(b"D", struct.pack("<H", msg_id) + payload)
     with open(path, "wb") as fh:
         fh.write(bytes(out))
 
 
 def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000.0, with_esc: bool = True,
                n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False,
-               nan_derivative_at: int | None = None) -> dict:
+               nan_derivative_at: int | None = None, outputs: list | None = None, params: dict | None = None,
+               changed: list | None = None) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
     with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
     ``n_motors``, the others at 1000). ``q_flip``: the attitude quaternion's sign alternates
     from sample to sample (q and -q: the same attitude), its timestamps offset by half a
     sample. ``nan_derivative_at``: that sample's logged angular acceleration (xyz_derivative)
-    NaN. Returns the truth in propmap's frame."""
+    NaN. ``outputs``: actuator_outputs' values (16, rpm / 10 for a motor) instead; ``params`` and
+    ``changed``: as :func:`write_ulog`'s. Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -102,8 +118,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
         topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[8]", "esc")], rows)
     else:
         n_out = n_motors if n_outputs is None else n_outputs
-        outputs = [rpm / 10.0] * n_motors + [1000.0] * (n_out - n_motors) + [0.0] * (16 - n_out)
+        if outputs is None:
+            outputs = [rpm / 10.0] * n_motors + [1000.0] * (n_out - n_motors) + [0.0] * (16 - n_out)
         topics["actuator_outputs"] = ([("uint64_t", "timestamp"), ("uint32_t", "noutputs"), ("float[16]", "output")],
                                       [(int(ti), n_out, *outputs) for ti in t])
-    write_ulog(path, topics, nested)
+    write_ulog(path, topics, nested, params, changed)
     return {"yaw": yaw, "pitch": pitch, "v_ned": (2.0, 0.0, 0.0), "rpm": rpm}

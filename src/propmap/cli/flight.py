@@ -59,8 +59,8 @@ def _fitted_vehicle(path: Path, params_spec):
 
 
 MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
-                  "calibration; used even where the log has esc_status rpm); the motors are the vehicle's first "
-                  "outputs.")
+                  "calibration; used even where the log has esc_status rpm); motor m is the output the log's "
+                  "PWM_MAIN_FUNCn (or another driver's FUNCn) parameters assign Motor m, else output m.")
 
 
 def _motor_map(text: str | None):
@@ -87,6 +87,8 @@ def _logs(paths, motor_map=None, n_motors=None):
             logs.append(read_flight_log(p, motor_map=motor_map, n_motors=n_motors))
         except FlightLogError as exc:
             raise InputError(f"LOG: {exc}") from None
+        if logs[-1].motor_order.startswith("PX4"):  # (which output or ESC entry is which motor: checkable)
+            click.echo(f"propmap: note: {logs[-1].name}: motor speeds from {logs[-1].motor_order}", err=True)
     return logs
 
 

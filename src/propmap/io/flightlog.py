@@ -166,8 +166,11 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         ULog without ``esc_status`` rpm: motor speed [rpm] = a + b * actuator_outputs
         output (the ESC's calibration, stated by the user; the CLI's ``--motor-map a,b``).
     n_motors : int, optional
-        With ``motor_map``: the motors are the first ``n_motors`` outputs (default: all the
-        topic's ``noutputs``; a flight controller logs 8 or 16).
+        With ``motor_map``: the vehicle's rotor count. Motor m is read from the output the
+        log's parameters assign PX4's Motor m (``PWM_MAIN_FUNC<i>`` = 100 + m and the other
+        drivers' ``<PREFIX>_FUNC<i>``; ``MOT_ORDERING`` = 1 with mixer files), else from
+        output m (default: the motors the parameters assign, else all the topic's
+        ``noutputs``; a flight controller logs 8 or 16).
 
     Returns
     -------

@@ -13,6 +13,7 @@ from __future__ import annotations
 import builtins
 import io
 import math
+import re
 import threading
 
 import numpy as np
@@ -169,7 +170,8 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     motor_map : (float, float) or None
         rpm = a + b * actuator_outputs; None: ``esc_status``'s rpm.
     n_motors : int, optional
-        The vehicle's rotor count (the first outputs of ``actuator_outputs``).
+        The vehicle's rotor count (``actuator_outputs``: the outputs of motors 1..n_motors,
+        :func:`_output_motor_order`, else the first outputs).
     error : type of ValueError
         Raised, with one line naming the file, for what cannot be read.
     min_samples : int
@@ -195,7 +197,8 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     ------
     error
         A file pyulog cannot read, a topic or field missing, motors the ESCs' actuator_function
-        does not assign, too short an overlap of the topics.
+        or the output functions do not assign (or assign beyond ``n_motors``, or change during the
+        log), too short an overlap of the topics.
     """
     try:
         import pyulog.core
@@ -343,15 +346,83 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
                     "per output driver): the motor speeds are read from instance "
                     f"{min(s.multi_id for s in d)}'s first outputs; check that they drive the motors")
     d = min(d, key=lambda s: s.multi_id)
-    n = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
-         else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
-    if n_motors is not None:
-        if n < n_motors:
-            raise error(f"{name}: topic 'actuator_outputs' has {n} outputs; the vehicle has {n_motors} rotors")
-        n = n_motors  # (a flight controller logs 8 or 16 outputs; the motors are the first)
-    cols = [f"output[{k}]" for k in range(n) if f"output[{k}]" in d.data]
-    if not cols:
-        raise error(f"{name}: topic 'actuator_outputs' has no outputs")
+    n_out = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
+             else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
+    outputs, how = _output_motor_order(ulog, n_motors, name, error)
+    if outputs is None:  # no output functions in the log: the first outputs are the motors
+        n = n_out
+        if n_motors is not None:
+            if n < n_motors:
+                raise error(f"{name}: topic 'actuator_outputs' has {n} outputs; the vehicle has {n_motors} rotors")
+            n = n_motors  # (a flight controller logs 8 or 16 outputs; the motors are the first)
+        outputs = list(range(n))
+    elif max(outputs) >= n_out:
+        raise error(f"{name}: {how} puts a motor on output {max(outputs) + 1}; topic 'actuator_outputs' (instance "
+                    f"{d.multi_id}) has {n_out} outputs")
+    cols = [f"output[{k}]" for k in outputs]
+    if not cols or any(c not in d.data for c in cols):
+        raise error(f"{name}: topic 'actuator_outputs' has no outputs" if not cols else
+                    f"{name}: topic 'actuator_outputs' lacks field {next(c for c in cols if c not in d.data)}")
     t, u = _topic(ulog, "actuator_outputs", cols, name, error)
-    return (t, np.maximum(a + b * u, 0.0),
-            f"PX4 actuator_outputs output[0..{len(cols) - 1}] mapped rpm = {a:g} + {b:g} u", "actuator_outputs")
+    where = (f"output[0..{len(cols) - 1}]" if outputs == list(range(len(outputs))) and how is None else
+             f"output[{', '.join(map(str, outputs))}] for Motor1..Motor{len(outputs)} ({how})")
+    return (t, np.maximum(a + b * u, 0.0), f"PX4 actuator_outputs {where} mapped rpm = {a:g} + {b:g} u",
+            "actuator_outputs")
+
+
+#: a PX4 output driver's parameter assigning output i (from 1) a function (control allocation, PX4 v1.13 with
+#: SYS_CTRL_ALLOC = 1 and every release since: PWM_MAIN_FUNC1, PWM_AUX_FUNC1, UAVCAN_EC_FUNC1, ...;
+#: PX4-Autopilot, Tools/module_config/generate_params.py and the drivers' module.yaml)
+_FUNC_PARAMETER = re.compile(r"([A-Z][A-Z0-9_]*)_FUNC(\d+)")
+
+
+def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[ValueError]):
+    """(output index of motor 1..n, description) from the log's parameters, or (None, None)
+    where they say nothing (no output function logged: mixer files, where the first outputs are
+    the motors; PX4 logs every parameter in use, defaults included).
+
+    Control allocation: motor m is on output i where ``<PREFIX>_FUNC<i>`` = 100 + m (PX4's
+    Motor1 = 101, :data:`MOTOR1_FUNCTION`); one driver (prefix) must carry motors 1..n, as
+    actuator_outputs is read from one instance (several that do: the first prefix in name
+    order). Mixer files (no FUNC parameter, or SYS_CTRL_ALLOC = 0 in v1.13) with
+    ``MOT_ORDERING`` = 1 (Betaflight's order; PX4's MixingOutput::reorderOutputs writes motor 4
+    on output 1 and motors 1-3 on outputs 2-4 before it publishes actuator_outputs): motors
+    1-4 on outputs 2, 3, 4, 1. A parameter of these that changes value during the log, motors
+    split over drivers, missing or beyond ``n_motors`` are refused."""
+    p = dict(ulog.initial_parameters)
+    changed = sorted({k for _, k, v in ulog.changed_parameters if k in p and p[k] != v})
+    funcs = {k: int(v) for k, v in p.items() if _FUNC_PARAMETER.fullmatch(k)}
+    if funcs and p.get("SYS_CTRL_ALLOC", 1) != 0:
+        motors = {}  # prefix -> {motor: lowest output index}
+        for k, v in sorted(funcs.items(), key=lambda kv: (_FUNC_PARAMETER.fullmatch(kv[0]).group(1),
+                                                          int(_FUNC_PARAMETER.fullmatch(kv[0]).group(2)))):
+            prefix, i = _FUNC_PARAMETER.fullmatch(k).groups()
+            if MOTOR1_FUNCTION <= v < MOTOR1_FUNCTION + MOTOR_FUNCTIONS:
+                motors.setdefault(prefix, {}).setdefault(v - MOTOR1_FUNCTION + 1, int(i) - 1)
+        if not motors:
+            raise error(f"{name}: the log's output functions ({', '.join(sorted(funcs)[:3])}"
+                        f"{' ...' if len(funcs) > 3 else ''}) assign no output a motor (Motor1..Motor12 = "
+                        f"{MOTOR1_FUNCTION}..{MOTOR1_FUNCTION + MOTOR_FUNCTIONS - 1})")
+        n = n_motors if n_motors is not None else max(max(m) for m in motors.values())
+        whole = [q for q, m in motors.items() if all(k in m for k in range(1, n + 1))]
+        if not whole:
+            said = "; ".join(f"{q}_FUNCn: motor(s) {', '.join(map(str, sorted(m)))}" for q, m in motors.items())
+            raise error(f"{name}: no output driver carries motors 1..{n} ({said}); the motor speeds are read "
+                        "from one actuator_outputs instance")
+        prefix = whole[0]
+        if max(motors[prefix]) > n:
+            raise error(f"{name}: {prefix}_FUNCn assign(s) motors up to {max(motors[prefix])}; the vehicle has {n} "
+                        "rotors")
+        used = [k for k in changed if k.startswith(prefix + "_FUNC") or k == "SYS_CTRL_ALLOC"]
+        if used:
+            raise error(f"{name}: parameter {used[0]} changes during the log (the motors' outputs with it)")
+        return [motors[prefix][m] for m in range(1, n + 1)], f"by {prefix}_FUNCn"
+    if p.get("MOT_ORDERING", 0) == 1:
+        if "MOT_ORDERING" in changed:
+            raise error(f"{name}: parameter MOT_ORDERING changes during the log (the motors' outputs with it)")
+        n = n_motors if n_motors is not None else 4
+        if n < 4:
+            raise error(f"{name}: MOT_ORDERING = 1 (Betaflight's order of a quadrotor's 4 motors); the vehicle has "
+                        f"{n} rotors")
+        return [1, 2, 3, 0] + list(range(4, n)), "MOT_ORDERING = 1, Betaflight's order"
+    return None, None
