@@ -116,9 +116,18 @@ def test_cross_validation_with_a_held_out_log_folds_over_the_training_logs(tmp_p
     assert code == 0, err
     text = (tmp_path / "p.report.json").read_text()
     assert "NaN" not in text
-    cv = json.loads(text)["flight_report"]["cross_validation"]
+    rep = json.loads(text)
+    cv = rep["flight_report"]["cross_validation"]
     assert [f["log"] for f in cv["folds"]] == list(SEGMENTS[:2])
     assert all(0.05 < v < 5 for v in cv["pooled"].values()), cv["pooled"]
+    # the folds' spread as the collective's jackknife std error (2 logs: |x1 - x2| / 2), in the report's degrees
+    x = [f["x"]["collective"] for f in cv["folds"]]
+    assert cv["jackknife_std_error"]["collective"] == pytest.approx(abs(x[0] - x[1]) / 2, rel=1e-12)
+    assert rep["jackknife"]["std_error"]["collective"] == pytest.approx(math.degrees(abs(x[0] - x[1]) / 2))
+    assert rep["jackknife"]["groups"] == list(SEGMENTS[:2]) and rep["jackknife"]["by"] == "log"
+    auto = rep["residual_autocorrelation"]  # (the training samples' force residuals, within each log)
+    assert auto["n"] == rep["n_samples"] and -1 < auto["lag1"] < 1
+    assert "jackknife: the std error from the 2 fits leaving one log out" in (tmp_path / "p.report.txt").read_text()
 
 
 def test_csv_errors_name_the_files_line_and_more_motors_are_refused(tmp_path, shared_data):

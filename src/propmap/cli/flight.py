@@ -213,6 +213,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
                                    fitted_body_drag, fitted_vehicle, flight_errors, hover_torque_check,
                                    predict_flight, speed_band_errors)
+    from ..identify.result import jackknife_report
     from ..io.params_file import BodyTable
 
     check_outputs(_flight_out_files(out), [*log_paths, vehicle, base_spec])
@@ -300,6 +301,9 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if cross_validate:
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
+        if set(cv["folds"][0]["x"]) == set(res.names):  # (the report's jackknife column: the spread between logs)
+            res.extra["jackknife"] = jackknife_report(res, [f["x"] for f in cv["folds"]], "log",
+                                                      [f["log"] for f in cv["folds"]])
     res.extra["flight_report"] = report
     # each log's samples' own rate (1 / their median step; a log left with one sample has none)
     rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)

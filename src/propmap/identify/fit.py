@@ -38,7 +38,7 @@ from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fi
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
-from .result import FitResult, Identifiability
+from .result import FitResult, Identifiability, lag1_autocorrelation
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_loads", "fit_loads_joint", "param_names",
            "CAMBERED_FIT", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_RE"]
@@ -417,8 +417,14 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
         warns.append(f"{len(out)} residual(s) beyond {OUTLIER_FACTOR:g} times the rms residual, the largest misfits: "
                      f"{shown}{' ...' if len(out) > 3 else ''} (outliers in the data, or where the model is weakest: "
                      "check those points)")
+    # the residuals' dependence along each quantity's group (a sweep along J, a static run along the rpm): the std
+    # errors assume none
+    idx = [(k, j) for k in keys for j in np.flatnonzero(rows[k])]
+    key = np.array([f"{k}\x00{data.group[j]}" for k, j in idx])
+    order = np.lexsort(([data.airspeed[j] for _, j in idx], [data.omega[j] for _, j in idx], key))
+    auto = lag1_autocorrelation(r[order], key[order]) if r.size else None
     return replace(result, warnings=tuple(warns) if isinstance(result.warnings, tuple) else warns,
-                   extra={**result.extra, "residual_labels": labels})
+                   extra={**result.extra, "residual_labels": labels, "residual_autocorrelation": auto})
 
 
 def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitResult:

@@ -48,7 +48,7 @@ from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_lift_model, _check_names
-from .result import FitResult
+from .result import FitResult, jackknife_std_error, lag1_autocorrelation
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
            "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
@@ -340,6 +340,9 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
                      air, extra)
+    # the force residuals' dependence from sample to sample within each log (the std errors assume none)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(
+        result.residuals[:3 * samples.n].reshape(samples.n, 3), samples.log_index)
     return result
 
 
@@ -384,7 +387,12 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
         ``folds``: per held-out log its name and the errors (:func:`flight_errors`) of the
         model, of each baseline and of the log's reference prediction where it has one;
         ``pooled``: the pooled F over all folds (root mean of the folds' mean squares,
-        weighted by samples) for the model and each baseline.
+        weighted by samples) for the model and each baseline; each fold's ``x`` (its fitted
+        parameters, as fitted: angles in rad) and ``at_bound``; ``jackknife_std_error``: the
+        parameters' delete-a-log jackknife std error from the folds
+        (:func:`propmap.identify.result.jackknife_std_error`, as fitted: angles in rad), the
+        spread between flights that the fit's linearised std errors, which take the samples
+        as independent, miss.
 
     Raises
     ------
@@ -405,7 +413,7 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
         w = predict_flight(test, fitted_vehicle(vehicle, res), res.params,
                            body=fitted_body_drag(res), air=air, discretization=discretization)
         row = {"log": name, "model": flight_errors(w.force, test, w.moment),
-               "x": {n: float(v) for n, v in zip(res.names, res.x)}}
+               "x": {n: float(v) for n, v in zip(res.names, res.x)}, "at_bound": list(res.at_bound)}
         for key, bl in fit_baselines(train, vehicle).items():
             row[key] = flight_errors(baseline_force(bl, test, vehicle), test)
         if test.reference_force is not None:
@@ -417,7 +425,9 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
     for key in ["model"] + [b[0] for b in BASELINES] + (["reference"] if "reference" in folds[0] else []):
         ms = np.array([f[key]["F"] ** 2 * f[key]["n"] for f in folds])
         pooled[key] = float(np.sqrt(ms.sum() / sum(f[key]["n"] for f in folds)))
-    return {"folds": folds, "pooled": pooled}
+    names = list(folds[0]["x"])
+    se = jackknife_std_error([[f["x"][n] for n in names] for f in folds])
+    return {"folds": folds, "pooled": pooled, "jackknife_std_error": dict(zip(names, map(float, se)))}
 
 
 def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightSamples, *, air: Air | None = None,

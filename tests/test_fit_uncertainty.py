@@ -1,0 +1,112 @@
+"""A fit's parameter uncertainty beside its linearised std errors: the residuals' dependence
+(lag-1 autocorrelation) and the delete-a-group jackknife (identify/result.py; an audit,
+2026-11-27, found the flight fit's std errors 1.4-7x and apce_8x6's load fit's 1.2-3.1x
+below the spread between logs and sweeps)."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from propmap.cli.main import main
+from propmap.identify.result import jackknife_report, jackknife_std_error, lag1_autocorrelation
+
+
+def _apce_8x6():
+    """Its UIUC data (UIUC Propeller Data Site vol. 1) and geometry."""
+    from propmap.identify import loads_from_catalogue
+    from propmap.io.catalogue import get_entry, load_propeller
+
+    prop = load_propeller("apce_8x6")
+    return loads_from_catalogue(get_entry("apce_8x6"), prop.diameter), prop
+
+
+def _ar1(rho, n, rng):
+    e = rng.standard_normal(n)
+    x = np.empty(n)
+    x[0] = e[0] / math.sqrt(1 - rho**2)
+    for t in range(1, n):
+        x[t] = rho * x[t - 1] + e[t]
+    return x
+
+
+def test_lag1_autocorrelation_of_known_series():
+    rng = np.random.default_rng(1)
+    a = np.column_stack([_ar1(0.7, 20000, rng), _ar1(0.0, 20000, rng)])
+    got = lag1_autocorrelation(a, np.zeros(20000))
+    assert got["lag1_per_column"][0] == pytest.approx(0.7, abs=0.02)
+    assert got["lag1_per_column"][1] == pytest.approx(0.0, abs=0.02)
+    assert got["n"] == 20000
+    # the AR(1) effective sample size n (1 - rho) / (1 + rho) of the pooled rho
+    assert got["n_effective"] == pytest.approx(20000 * (1 - got["lag1"]) / (1 + got["lag1"]))
+    # groups are not bridged: two independent white series at different levels are not correlated
+    b = np.concatenate([rng.standard_normal(5000), 10 + rng.standard_normal(5000)])
+    assert abs(lag1_autocorrelation(b, np.repeat([0, 1], 5000))["lag1"]) < 0.05
+    assert lag1_autocorrelation(b, np.zeros(10000))["lag1"] > 0.9  # (as one group: the step reads as dependence)
+    # anti-correlated residuals carry no less than their count
+    assert lag1_autocorrelation(_ar1(-0.5, 4000, rng), np.zeros(4000))["n_effective"] == 4000
+    with pytest.raises(ValueError, match="one entry per residual row"):
+        lag1_autocorrelation(np.zeros(4), np.zeros(3))
+    with pytest.raises(ValueError, match="finite"):
+        lag1_autocorrelation([0.0, np.nan], [0, 0])
+    assert lag1_autocorrelation([1.0, 2.0], [0, 1])["lag1"] is None  # (no group of two rows)
+
+
+def test_jackknife_std_error_of_a_mean_is_its_standard_error():
+    """The delete-one jackknife of a sample mean is exactly s / sqrt(n) (Efron & Tibshirani
+    1993, Sec. 11.2)."""
+    rng = np.random.default_rng(2)
+    y = rng.normal(3.0, 2.0, size=(9, 2))
+    loo = np.array([np.delete(y, i, axis=0).mean(axis=0) for i in range(9)])
+    np.testing.assert_allclose(jackknife_std_error(loo), y.std(axis=0, ddof=1) / 3.0, rtol=1e-12)
+    with pytest.raises(ValueError, match="g >= 2"):
+        jackknife_std_error([[1.0, 2.0]])
+    with pytest.raises(ValueError, match="finite"):
+        jackknife_std_error([[1.0], [np.inf]])
+
+
+def test_fit_loads_jackknife_leaves_the_sweeps_out(tmp_path, capsys):
+    """apce_8x6 (UIUC Propeller Data Site vol. 1, its static run and 7 sweeps): the folds leave one
+    sweep out each, the static run kept; the spread between sweeps exceeds the linearised std
+    errors (the residuals along J correlate at about 0.8). Regression values (2026-11-27, the
+    calibration of that day): cd_min's jackknife std error 0.00325 against 0.00139."""
+    out = tmp_path / "p.toml"
+    assert main(["fit", "loads", "apce_8x6", "--jackknife", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "jackknife: the std error from the 7 fits leaving one run out" in text
+    rep = json.loads((tmp_path / "p.report.json").read_text())
+    jk, auto = rep["jackknife"], rep["residual_autocorrelation"]
+    assert jk["by"] == "run" and len(jk["groups"]) == 7 and not any(g.startswith("static") for g in jk["groups"])
+    assert jk["std_error"]["cd_min"] == pytest.approx(0.00325, rel=0.05)
+    assert jk["ratio"]["cd_min"] == pytest.approx(jk["std_error"]["cd_min"] / rep["identifiability"]["std_error"]
+                                                   ["cd_min"], rel=1e-9)
+    assert 0.6 < auto["lag1"] < 0.95 and auto["n_effective"] < auto["n"] / 4
+    lo, hi = jk["ci95"]["alpha_L0"]  # (degrees, as the report's: estimate +- t(6) se)
+    assert (lo + hi) / 2 == pytest.approx(rep["fitted"]["alpha_L0"], abs=1e-9)
+    assert (hi - lo) / 2 == pytest.approx(2.4469 * jk["std_error"]["alpha_L0"], rel=1e-4)
+    assert "std err and interval assume independent residuals" in text
+
+
+def test_fit_loads_jackknife_needs_three_runs(tmp_path, capsys):
+    """Two sweeps left to fit beside the static run: no jackknife (the static run is not left out)."""
+    sweeps = [g for g in dict.fromkeys(_apce_8x6()[0].group) if not g.startswith("static")]
+    code = main(["fit", "loads", "apce_8x6", "--jackknife", "--holdout", ",".join(sweeps[2:]),
+                 "--out", str(tmp_path / "p.toml")])
+    assert code == 2
+    err = capsys.readouterr().err
+    assert f"needs at least 3; SOURCE has 2 ({sweeps[0]}, {sweeps[1]})" in err, err
+
+
+def test_jackknife_report_units_and_folds():
+    from propmap.identify import FitOptions, fit_loads
+
+    data, prop = _apce_8x6()
+    res = fit_loads(data, prop, options=FitOptions(names=("cl_alpha", "alpha_L0")))
+    folds = [{"cl_alpha": res.x[0] + d, "alpha_L0": res.x[1] - d} for d in (-0.01, 0.0, 0.01)]
+    rep = jackknife_report(res, folds, "run", ["a", "b", "c"])
+    se = math.sqrt(2 / 3 * 2e-4)
+    assert rep["std_error"]["cl_alpha"] == pytest.approx(se)
+    assert rep["std_error"]["alpha_L0"] == pytest.approx(math.degrees(se))  # (angles in degrees, as the report)
+    with pytest.raises(ValueError, match="lacks the fitted parameter alpha_L0"):
+        jackknife_report(res, [{"cl_alpha": 1.0}] * 3, "run", ["a", "b", "c"])
