@@ -110,3 +110,20 @@ def test_jackknife_report_units_and_folds():
     assert rep["std_error"]["alpha_L0"] == pytest.approx(math.degrees(se))  # (angles in degrees, as the report)
     with pytest.raises(ValueError, match="lacks the fitted parameter alpha_L0"):
         jackknife_report(res, [{"cl_alpha": 1.0}] * 3, "run", ["a", "b", "c"])
+
+
+def test_jackknife_loads_from_python_is_the_commands():
+    """identify.jackknife: the same folds from Python (the sweeps; fewer than 3 refused)."""
+    from propmap.identify import fit_loads
+    from propmap.identify.jackknife import jackknife_loads, jackknife_runs
+
+    data, prop = _apce_8x6()
+    runs = jackknife_runs(data)
+    assert len(runs) == 7 and not any(r.startswith("static") for r in runs)
+    res = fit_loads(data, prop)
+    rep = jackknife_loads(res, data, prop)
+    assert rep is res.extra["jackknife"] and rep["groups"] == runs
+    assert rep["std_error"]["cd_min"] == pytest.approx(0.00325, rel=0.05)  # (as the command's: regression value)
+    two = data.subset(np.isin(data.group, [g for g in data.group if g.startswith("static")] + runs[:2]))
+    with pytest.raises(ValueError, match="needs at least 3; the data have 2"):
+        jackknife_loads(fit_loads(two, prop), two, prop)

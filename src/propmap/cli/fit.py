@@ -192,44 +192,6 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     return report
 
 
-def _jackknife_runs(train) -> list:
-    """The runs ``--jackknife`` leaves out: every fitted run, or only the sweeps (a run with an
-    airspeed) where static runs are fitted too: the static run is not one of a kind with them
-    (it alone holds J = 0), and a fit without it is another estimator, not the same one on less
-    data (a sweep jackknife of apce_8x6 gives cd_min 0.0033, one leaving the static run out too
-    0.0068, 2026-11-27)."""
-    import numpy as np
-
-    from ..identify.load_data import STATIC_AIRSPEED
-
-    runs = list(dict.fromkeys(train.group))
-    moving = [r for r in runs if np.any(train.airspeed[np.asarray(train.group) == r] > STATIC_AIRSPEED)]
-    return moving if moving and len(moving) < len(runs) else runs
-
-
-def _jackknife_loads(res, train, runs, prop, base, air, qty, options) -> None:
-    """``fit loads --jackknife``: the fit again without each run, the spread of the estimates as
-    ``res.extra["jackknife"]`` (identify.result.jackknife_report). The folds free as many
-    directions as the fit did (where it fitted along directions), so that they are the same
-    estimator on less data."""
-    import numpy as np
-
-    from ..identify import fit_loads
-    from ..identify.result import jackknife_report
-
-    dirs = res.extra.get("directions")
-    fold_options = replace(options, directions=dirs["count"] if dirs else options.directions)
-    folds = []
-    for run in runs:
-        try:
-            f = _run_fit(fit_loads, train.subset(np.asarray(train.group) != run), prop, base=base, air=air,
-                         quantities=qty, options=fold_options)
-        except InputError as exc:
-            raise InputError(f"--jackknife: the fit without run {run} fails: {exc}") from None
-        folds.append({n: float(v) for n, v in zip(f.names, f.x)})
-    res.extra["jackknife"] = jackknife_report(res, folds, "run", runs)
-
-
 def _run_fit(fn, *args, **kwargs):
     from ..core.solver import SolverError
 
@@ -441,13 +403,19 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                              "parameters instead: give one of them")
     options = replace(_options(fit_choice, base, base_label),
                       population=population, directions=directions)
-    runs = _jackknife_runs(train)
-    if jackknife and len(runs) < 3:
-        raise InputError(f"--jackknife leaves each fitted run out in turn (the sweeps where static runs are fitted "
-                         f"too) and needs at least 3; SOURCE has {len(runs)} ({', '.join(map(str, runs)) or 'none'})")
+    if jackknife:  # (refused before the fit)
+        from ..identify.jackknife import jackknife_runs
+
+        runs = jackknife_runs(train)
+        if len(runs) < 3:
+            raise InputError(f"--jackknife leaves each fitted run out in turn (the sweeps where static runs are "
+                             f"fitted too) and needs at least 3; SOURCE has {len(runs)} "
+                             f"({', '.join(map(str, runs)) or 'none'})")
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     if jackknife:
-        _jackknife_loads(res, train, runs, prop, base, air, qty, options)
+        from ..identify.jackknife import jackknife_loads
+
+        _run_fit(jackknife_loads, res, train, prop, base=base, air=air, quantities=qty, options=options)
     extra = ""
     if entry is not None:
         from ..plots import plot_load_fit

@@ -205,7 +205,9 @@ class FitResult:
         auto = self.extra.get("residual_autocorrelation")
         if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
             flight = self.extra.get("kind") == "flight"
-            hint = "; the leave-one-log-out jackknife (--cross-validate) measures it" if flight and not jk else ""
+            hint = "" if jk else {"flight": "; the leave-one-log-out jackknife (--cross-validate) measures it",
+                                  "loads": "; the jackknife of the runs (fit loads --jackknife) measures it"}.get(
+                self.extra.get("kind"), "")
             lines.append(f"std err and interval assume independent residuals; consecutive residuals within each "
                          f"{'log' if flight else 'run'} correlate at {auto['lag1']:.2f} (lag 1: the information "
                          f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): the uncertainty is "
