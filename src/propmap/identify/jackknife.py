@@ -10,6 +10,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..core.solver import SolverError
 from .fit import fit_loads
 from .load_data import STATIC_AIRSPEED, LoadData
 from .result import FitResult, jackknife_report
@@ -91,8 +92,8 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
         try:
             f = fit_loads(data.subset(group != run), prop, base=base, air=air, quantities=quantities,
                           options=fold_options)
-        except ValueError as exc:
-            raise ValueError(f"the jackknife's fit without run {run} fails: {exc}") from None
+        except (ValueError, SolverError) as exc:
+            raise type(exc)(f"the jackknife's fit without run {run} fails: {exc}") from None
         folds.append({n: float(v) for n, v in zip(f.names, f.x)})
     result.extra["jackknife"] = report = jackknife_report(result, folds, "run", runs)
     return report

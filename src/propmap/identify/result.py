@@ -205,13 +205,16 @@ class FitResult:
         auto = self.extra.get("residual_autocorrelation")
         if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
             flight = self.extra.get("kind") == "flight"
-            hint = "" if jk else {"flight": "; the leave-one-log-out jackknife (--cross-validate) measures it",
-                                  "loads": "; the jackknife of the runs (fit loads --jackknife) measures it"}.get(
-                self.extra.get("kind"), "")
+            several = not flight or len(self.extra.get("logs", ())) > 1
+            hint = ({"flight": "; the leave-one-log-out jackknife (fit flight --cross-validate) measures the spread "
+                               "between logs",
+                     "loads": "; the jackknife of the runs (fit loads --jackknife) measures the spread between runs"}
+                    .get(self.extra.get("kind"), "") if several else "")
+            said = (f"the jackknife below measures the spread between {jk['by']}s" if jk else
+                    f"the uncertainty is likely larger{hint}")
             lines.append(f"std err and interval assume independent residuals; consecutive residuals within each "
                          f"{'log' if flight else 'run'} correlate at {auto['lag1']:.2f} (lag 1: the information "
-                         f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): the uncertainty is "
-                         f"likely larger{hint}")
+                         f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): {said}")
         if jk:
             g = len(jk["groups"])
             ratios = [v for v in jk["ratio"].values() if v is not None]
