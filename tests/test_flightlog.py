@@ -556,3 +556,25 @@ def test_ulog_mixer_files_read_the_first_outputs_or_betaflights_order(tmp_path):
     log = read_flight_log(tmp_path / "b.ulg", motor_map=(0.0, 10.0), n_motors=4)
     assert _rpm(log) == [5200.0, 5300.0, 5400.0, 5100.0]
     assert "MOT_ORDERING = 1" in log.motor_order
+
+
+def test_ulog_the_motors_instance_is_the_one_whose_outputs_vary(tmp_path):
+    """Two actuator_outputs instances (the log does not say which driver is which): the motors on
+    PWM_AUX (instance 1), PWM_MAIN driving servos at a constant 1500 us (instance 0). The
+    motors were read from instance 0: [1500, 1500, 1500, 1500] rpm (a review); now from the
+    lowest instance whose motor outputs vary, with a warning naming it."""
+    servos = [150.0] * 4 + [0.0] * 12
+    params = {f"PWM_MAIN_FUNC{i}": 200 + i for i in range(1, 5)} | {f"PWM_AUX_FUNC{i}": 100 + i for i in range(1, 5)}
+    hover_ulog(tmp_path / "f.ulg", with_esc=False, n_outputs=8, outputs=servos, params=params, second_outputs=_OUT)
+    with pytest.warns(UserWarning, match=r"read from instance 1, the lowest whose motor outputs vary"):
+        log = read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=4)
+    np.testing.assert_allclose(log.rotor_omega * 60 / (2 * math.pi), [[5100, 5200, 5300, 5400]] * log.n, rtol=1e-4)
+
+
+def test_ulog_betaflight_order_is_the_mixer_files_only(tmp_path):
+    """MOT_ORDERING acts with mixer files; with SYS_CTRL_ALLOC = 1 (v1.13's dynamic mixing) it
+    does not (a review: it was applied there)."""
+    hover_ulog(tmp_path / "f.ulg", with_esc=False, n_outputs=8, outputs=_OUT,
+               params={"SYS_CTRL_ALLOC": 1, "MOT_ORDERING": 1})
+    assert _rpm(read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0), n_motors=4)) == [5100.0, 5200.0,
+                                                                                              5300.0, 5400.0]

@@ -34,7 +34,8 @@ def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | No
     ``fields`` is a list of (type, name) with type a C type, an array "float[3]", or a
     nested format name from ``nested`` (name -> list of (type, name)) with a count
     ("esc_report[8]"). ``rows`` is a list of flat tuples of values in field order (arrays
-    and nested fields flattened). The first field must be ``uint64_t timestamp``.
+    and nested fields flattened). The first field must be ``uint64_t timestamp``. A name
+    ``"topic#k"`` writes instance (multi_id) k of a topic given as ``"topic"`` too.
     ``params`` (name -> int or float) are written in the definitions (pyulog's
     ``initial_parameters``), ``changed`` ((timestamp [us], name, value)) among the data
     (``changed_parameters``).
@@ -50,7 +51,8 @@ def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | No
     for name, fields in nested.items():
         out += _msg(b"F", fmt_text(name, fields).encode())
     for name, (fields, _) in topics.items():
-        out += _msg(b"F", fmt_text(name, fields).encode())
+        if "#" not in name:  # ("name#k": instance k of a topic whose format instance 0 gave)
+            out += _msg(b"F", fmt_text(name, fields).encode())
 
     def flat_types(fields):
         types = []
@@ -61,7 +63,8 @@ def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | No
         return types
 
     for msg_id, name in enumerate(topics):
-        out += _msg(b"A", struct.pack("<BH", 0, msg_id) + name.encode())
+        topic, _, multi_id = name.partition("#")
+        out += _msg(b"A", struct.pack("<BH", int(multi_id or 0), msg_id) + topic.encode())
     events = []
     for msg_id, (name, (fields, rows)) in enumerate(topics.items()):
         types = flat_types(fields)
@@ -79,7 +82,7 @@ def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | No
 def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000.0, with_esc: bool = True,
                n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False,
                nan_derivative_at: int | None = None, outputs: list | None = None, params: dict | None = None,
-               changed: list | None = None) -> dict:
+               changed: list | None = None, second_outputs: list | None = None) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
     with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
@@ -87,7 +90,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
     from sample to sample (q and -q: the same attitude), its timestamps offset by half a
     sample. ``nan_derivative_at``: that sample's logged angular acceleration (xyz_derivative)
     NaN. ``outputs``: actuator_outputs' values (16, rpm / 10 for a motor) instead; ``params`` and
-    ``changed``: as :func:`write_ulog`'s. Returns the truth in propmap's frame."""
+    ``changed``: as :func:`write_ulog`'s. ``second_outputs``: a second actuator_outputs
+    instance (multi_id 1) with these values, each + 0.01 on every other sample (motors that
+    vary; the first instance's do not). Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -122,5 +127,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
             outputs = [rpm / 10.0] * n_motors + [1000.0] * (n_out - n_motors) + [0.0] * (16 - n_out)
         topics["actuator_outputs"] = ([("uint64_t", "timestamp"), ("uint32_t", "noutputs"), ("float[16]", "output")],
                                       [(int(ti), n_out, *outputs) for ti in t])
+        if second_outputs is not None:
+            topics["actuator_outputs#1"] = (topics["actuator_outputs"][0],
+                                            [(int(ti), n_out, *(v + 0.01 * (i % 2) for v in second_outputs))
+                                             for i, ti in enumerate(t)])
     write_ulog(path, topics, nested, params, changed)
     return {"yaw": yaw, "pitch": pitch, "v_ned": (2.0, 0.0, 0.0), "rpm": rpm}

@@ -60,7 +60,8 @@ def _fitted_vehicle(path: Path, params_spec):
 
 MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
                   "calibration; used even where the log has esc_status rpm); motor m is the output the log's "
-                  "PWM_MAIN_FUNCn (or another driver's FUNCn) parameters assign Motor m, else output m.")
+                  "PWM_MAIN_FUNCn (or another driver's FUNCn) parameters assign Motor m, else output m (in "
+                  "Betaflight's order with MOT_ORDERING=1).")
 
 
 def _motor_map(text: str | None):

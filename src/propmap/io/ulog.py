@@ -21,9 +21,10 @@ import numpy as np
 _FRD_TO_FLU = np.array([1.0, -1.0, -1.0])
 
 
-def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueError]):
-    """(t [s], columns) of the first instance of topic ``name``; the error names what is missing."""
-    sets = [d for d in ulog.data_list if d.name == name]
+def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueError], instance: int | None = None):
+    """(t [s], columns) of topic ``name``'s instance ``instance`` (multi_id; default the
+    lowest); the error names what is missing."""
+    sets = [d for d in ulog.data_list if d.name == name and (instance is None or d.multi_id == instance)]
     if not sets:
         found = sorted({d.name for d in ulog.data_list})
         raise error(f"{where}: topic {name!r} not in the log (topics found: {', '.join(found)[:300]})")
@@ -341,29 +342,43 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
     d = [s for s in ulog.data_list if s.name == "actuator_outputs"]
     if not d:
         raise error(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
-    if len(d) > 1:  # one instance per output driver (px4io's MAIN, the FMU's AUX), numbered by boot order
-        said.append(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
-                    "per output driver): the motor speeds are read from instance "
-                    f"{min(s.multi_id for s in d)}'s first outputs; check that they drive the motors")
-    d = min(d, key=lambda s: s.multi_id)
-    n_out = (int(np.max(d.data["noutputs"])) if "noutputs" in d.data
-             else sum(f"output[{k}]" in d.data for k in range(len(d.data))))  # (without the field: those logged)
     outputs, how = _output_motor_order(ulog, n_motors, name, error)
-    if outputs is None:  # no output functions in the log: the first outputs are the motors
-        n = n_out
-        if n_motors is not None:
-            if n < n_motors:
-                raise error(f"{name}: topic 'actuator_outputs' has {n} outputs; the vehicle has {n_motors} rotors")
-            n = n_motors  # (a flight controller logs 8 or 16 outputs; the motors are the first)
-        outputs = list(range(n))
-    elif max(outputs) >= n_out:
-        raise error(f"{name}: {how} puts a motor on output {max(outputs) + 1}; topic 'actuator_outputs' (instance "
-                    f"{d.multi_id}) has {n_out} outputs")
-    cols = [f"output[{k}]" for k in outputs]
-    if not cols or any(c not in d.data for c in cols):
-        raise error(f"{name}: topic 'actuator_outputs' has no outputs" if not cols else
-                    f"{name}: topic 'actuator_outputs' lacks field {next(c for c in cols if c not in d.data)}")
-    t, u = _topic(ulog, "actuator_outputs", cols, name, error)
+
+    def motor_columns(s):  # (instance s's columns of motors 1..n; the error a reading of it would raise)
+        n_out = (int(np.max(s.data["noutputs"])) if "noutputs" in s.data
+                 else sum(f"output[{k}]" in s.data for k in range(len(s.data))))  # (without the field: those logged)
+        if outputs is not None:
+            if max(outputs) >= n_out:
+                return None, (f"{name}: {how} puts a motor on output {max(outputs) + 1}; topic 'actuator_outputs' "
+                              f"(instance {s.multi_id}) has {n_out} outputs")
+            k = outputs
+        elif n_motors is not None and n_out < n_motors:
+            return None, f"{name}: topic 'actuator_outputs' has {n_out} outputs; the vehicle has {n_motors} rotors"
+        else:  # no output functions in the log: the first outputs are the motors (a flight controller logs 8 or 16)
+            k = list(range(n_out if n_motors is None else n_motors))
+        cols = [f"output[{j}]" for j in k]
+        if not cols or any(c not in s.data for c in cols):
+            return None, (f"{name}: topic 'actuator_outputs' has no outputs" if not cols else
+                          f"{name}: topic 'actuator_outputs' lacks field {next(c for c in cols if c not in s.data)}")
+        return k, cols
+
+    d = sorted(d, key=lambda s: s.multi_id)
+    chosen = d[0]
+    if len(d) > 1:  # one instance per output driver (px4io's MAIN, the FMU's AUX, UAVCAN), numbered by boot order,
+        # which the log does not name: the lowest whose motor outputs vary (a review: the motors on AUX, instance 1,
+        # were read from MAIN's servos at 1500 us, instance 0)
+        varying = [s for s in d if motor_columns(s)[0] is not None
+                   and all(np.ptp(np.asarray(s.data[c], float)) > 0 for c in motor_columns(s)[1])]
+        chosen = varying[0] if varying else d[0]
+        said.append(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
+                    f"per output driver; the log does not say which is which): the motor speeds are read from instance "
+                    f"{chosen.multi_id}, " + ("the lowest whose motor outputs vary" if varying else
+                                               "the lowest (no instance's motor outputs vary)")
+                    + "; check that they drive the motors")
+    outputs, cols = motor_columns(chosen)
+    if outputs is None:
+        raise error(cols)
+    t, u = _topic(ulog, "actuator_outputs", cols, name, error, instance=chosen.multi_id)
     where = (f"output[0..{len(cols) - 1}]" if outputs == list(range(len(outputs))) and how is None else
              f"output[{', '.join(map(str, outputs))}] for Motor1..Motor{len(outputs)} ({how})")
     return (t, np.maximum(a + b * u, 0.0), f"PX4 actuator_outputs {where} mapped rpm = {a:g} + {b:g} u",
@@ -384,7 +399,8 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
     Control allocation: motor m is on output i where ``<PREFIX>_FUNC<i>`` = 100 + m (PX4's
     Motor1 = 101, :data:`MOTOR1_FUNCTION`); one driver (prefix) must carry motors 1..n, as
     actuator_outputs is read from one instance (several that do: the first prefix in name
-    order). Mixer files (no FUNC parameter, or SYS_CTRL_ALLOC = 0 in v1.13) with
+    order, the others named in the description). Mixer files (no FUNC parameter, or
+    SYS_CTRL_ALLOC = 0 in v1.13; not SYS_CTRL_ALLOC = 1, whose dynamic mixing ignores it) with
     ``MOT_ORDERING`` = 1 (Betaflight's order; PX4's MixingOutput::reorderOutputs writes motor 4
     on output 1 and motors 1-3 on outputs 2-4 before it publishes actuator_outputs): motors
     1-4 on outputs 2, 3, 4, 1. A parameter of these that changes value during the log, motors
@@ -413,11 +429,12 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
         if max(motors[prefix]) > n:
             raise error(f"{name}: {prefix}_FUNCn assign(s) motors up to {max(motors[prefix])}; the vehicle has {n} "
                         "rotors")
-        used = [k for k in changed if k.startswith(prefix + "_FUNC") or k == "SYS_CTRL_ALLOC"]
+        used = [k for k in changed if k.startswith(prefix + "_FUNC")]  # (SYS_CTRL_ALLOC acts after a reboot)
         if used:
             raise error(f"{name}: parameter {used[0]} changes during the log (the motors' outputs with it)")
-        return [motors[prefix][m] for m in range(1, n + 1)], f"by {prefix}_FUNCn"
-    if p.get("MOT_ORDERING", 0) == 1:
+        also = "".join(f"; {q}_FUNCn assign(s) them too" for q in whole[1:])
+        return [motors[prefix][m] for m in range(1, n + 1)], f"by {prefix}_FUNCn{also}"
+    if p.get("MOT_ORDERING", 0) == 1 and p.get("SYS_CTRL_ALLOC", 0) == 0:  # (dynamic mixing ignores it)
         if "MOT_ORDERING" in changed:
             raise error(f"{name}: parameter MOT_ORDERING changes during the log (the motors' outputs with it)")
         n = n_motors if n_motors is not None else 4
