@@ -456,3 +456,21 @@ def test_a_check_that_measures_nothing_does_not_pass(capsys, tmp_path):
     code, out, err = run(capsys, "map", "--check", path, "--check-points", "30", "--json")
     rep = json.loads(out)
     assert code == 3 and rep["passed"] is False and rep["untested"] is True and rep["exceeded"] == []
+
+
+def test_a_map_built_twice_is_the_same_file(tmp_path):
+    """The wall-clock build time was stored in the map (`build_seconds`): two builds of one map
+    differed in 8-10 bytes and in the sidecar's digest (a reproducibility audit, 2026-11-27). It
+    is reported, not stored."""
+    import hashlib
+
+    import xarray as xr
+
+    digests = []
+    for k in range(2):
+        out = tmp_path / f"m{k}.nc"
+        assert main(["map", "apce_8x6", *TINY[:-2], "--check-points", "20", "--out", str(out)]) == 0
+        digests.append(hashlib.sha256(out.read_bytes()).hexdigest())
+        with xr.open_dataset(out) as ds:
+            assert "build_seconds" not in ds.attrs
+    assert digests[0] == digests[1]

@@ -293,7 +293,8 @@ def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
     one (solver.PARALLEL_MIN_POINTS); both run the same compiled point (_kernel._solve_point,
     inlined by LLVM into each loop), so the same points take the same iterations and give the
     same loads to rounding (reassociation may differ between the two loops: 2.3e-16 relative
-    measured with the paper's APC set, 2026-11-25), in hover, axial climb and descent and
+    measured with the paper's APC set, 2026-11-25; up to 9e-16 with the cambered sets,
+    2026-11-27, docs/numerics.md, Reproducibility), in hover, axial climb and descent and
     oblique flow, with that set and the generic cambered one."""
     from propmap.core import solver
 

@@ -345,7 +345,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         unc += "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
     text = template.format(
         name=path.stem, propeller=_comment(a.get("propeller", "")), version=_comment(a.get("propmap_version", "")),
-        model=_comment(a.get("model", "")), uncertainty=unc,
+        source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
+        uncertainty=unc,
         params_label=_comment(a.get("params_label", "") or a.get("section_model", "")),
         citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] * 30 / np.pi,
         rpm1=rm.omega[-1] * 30 / np.pi, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),

@@ -29,6 +29,7 @@ from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_arg
 from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset, check_integer,
                           check_propeller)
 from .io.mapfile import read_sidecar, write_map, write_sidecar
+from .io.provenance import source_digest
 from .io.uncertainty import model_uncertainty
 from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
 
@@ -313,7 +314,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         "n_radial": discretization.n_radial, "n_azimuth": discretization.n_azimuth,
         "model": "Gill & D'Andrea, Propeller Thrust and Drag in Forward Flight, IEEE CCTA 2017 "
                  f"(BET/BEMT), section model {params.section_model} (propmap docs/models.md)",
-        "citation": citation, "propmap_version": __version__,
+        "citation": citation, "propmap_version": __version__, "propmap_source_sha256": source_digest(),
         "interpolation": "of T, D, Q, M_R (and Y, M_P where the map holds them) divided by (Omega R)^2 + V^2 in "
                          "(rpm, airspeed, incidence), "
                          "multiplied back by (Omega R)^2 + V^2 of the query: cubic Hermite with three-point "

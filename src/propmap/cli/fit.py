@@ -163,11 +163,14 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     from ..io.params_file import write_params
 
     from .. import __version__
+    from ..io.provenance import source_digest
 
     report = {**result.to_dict(), "base": base_label, "params_file": str(out), "coverage": coverage,
-              "data_warnings": list(data_warnings), "propmap_version": __version__}  # (as maps and exports record it)
-    write_params(out, result.params, result.air, comment=f"fitted by propmap fit ({report.get('kind')})", body=body,
-                 coverage=coverage)
+              "data_warnings": list(data_warnings), "propmap_version": __version__,  # (as maps and exports record it)
+              "propmap_source_sha256": source_digest()}
+    write_params(out, result.params, result.air, body=body, coverage=coverage,
+                 comment=f"fitted by propmap {__version__} fit ({report.get('kind')}); source sha256 "
+                         f"{report['propmap_source_sha256']}")
     stem = out.with_suffix("")
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)

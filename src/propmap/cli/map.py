@@ -258,7 +258,6 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             air_of = (lambda a: resolve_air(a, air_choice))
             air_of(load_params("generic")[1])  # options checked before any work
             with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client, air_of) as ds:
-                ds.attrs["build_seconds"] = time.perf_counter() - t0
                 files = write_map(ds, out, fmt)
         else:
             # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
@@ -269,8 +268,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
                            citation=_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0
-    if not all_props:
-        ds.attrs["build_seconds"] = elapsed
+    if not all_props:  # (the build time is reported, not stored: a map built twice is the same file, a review)
         if fmt == "c":
             from ..export_c import c_header_text
             from ..io.mapfile import write_with_sidecar
@@ -392,6 +390,7 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
                 v.encoding = {}
             combined.attrs = {"title": "propmap rotor maps of the catalogue",
                               "propmap_version": per_prop[names[0]]["propmap_version"],
+                              "propmap_source_sha256": per_prop[names[0]]["propmap_source_sha256"],
                               "citation": "; ".join(sorted({str(a.get("citation", "")) for a in per_prop.values()}
                                                            - {""})),
                               "per_prop_json": json.dumps(per_prop, default=float),

@@ -74,7 +74,8 @@ LOAD_LIMITS = {"thrust": 1e5, "drag": 1e5, "torque": 1e4, "rolling_moment": 1e4,
 _CHECK_KEY = re.compile(r"check_(linear|cubic)_(thrust|drag|torque|rolling_moment|side_force|pitching_moment|power)_"
                         r"(rms|max|max_flagged)")
 _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_label", "params_json", "model",
-         "citation", "propmap_version", "interpolation", "Conventions", "check_normalisation", "note",
+         "citation", "propmap_version", "propmap_source_sha256", "interpolation", "Conventions", "check_normalisation",
+         "note",
          "model_uncertainty_axial", "model_uncertainty_off_axis")
 
 

@@ -61,6 +61,7 @@ from .. import __version__
 from ..core.airfoil import Air
 from ..core.geometry import _real
 from ..core.solver import check_model_args, rotor_loads
+from ..io.provenance import source_digest
 from ..io.uncertainty import model_uncertainty
 
 __all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "check_seed", "default_envelope", "export_sim",
@@ -592,6 +593,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
             "model_uncertainty": {**model_uncertainty(params_label or getattr(params, "label", "")),
                                   "edgewise_trend": _edgewise_trend(propeller, params, air, envelope)},
             "section_model": params.section_model, "propmap_version": __version__,
-            "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)", "seed": int(seed),
+            "propmap_source_sha256": source_digest(), "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)",
+            "seed": int(seed),
             "check_seed": check_seed(int(seed)), "check_points": int(check["omega"].size), "rho": float(air.rho)}
     return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed, held)

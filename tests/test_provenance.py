@@ -1,0 +1,58 @@
+"""What produced an output: the version alone named 757 commits' builds (the calibration and
+the defaults changed under "0.1.0"); every map, C header, simulator export and fit records the
+installed package's source digest (io/provenance.py; a reproducibility audit, 2026-11-27)."""
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+
+import propmap as pm
+from propmap.cli.main import main
+from propmap.io.provenance import source_digest
+from propmap.maps import build_map
+
+RPM = np.pi / 30
+
+
+def test_the_digest_is_of_the_packages_code_and_data():
+    d = source_digest()
+    assert re.fullmatch(r"[0-9a-f]{64}", d) and source_digest() == d
+    # a change to a module's source changes it (the digest of a copy of the package, one byte edited)
+    import hashlib
+
+    root = Path(pm.__file__).resolve().parent
+    files = sorted(p for p in root.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+                   and not p.name.endswith((".pyc", ".pyo", ".nbi", ".nbc")))
+
+    def digest(edit=None):
+        h = hashlib.sha256()
+        for p in files:
+            rel = p.relative_to(root).as_posix().encode()
+            data = p.read_bytes()
+            if edit is not None and p.name == edit:
+                data = data + b"#"
+            h.update(len(rel).to_bytes(8, "little") + rel + len(data).to_bytes(8, "little") + data)
+        return h.hexdigest()
+
+    assert digest() == d  # (the rule as documented)
+    assert digest("solver.py") != d
+
+
+def test_outputs_record_it(tmp_path, capsys):
+    prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.array([4000.0, 8000.0]) * RPM, np.array([0.0, 10.0]), np.radians([0.0, 90.0]),
+                   n_check=0)
+    assert ds.attrs["propmap_source_sha256"] == source_digest()
+    from propmap.export_c import c_header_text
+    from propmap.maps import RotorMap
+
+    assert f"(source sha256 {source_digest()})" in c_header_text(RotorMap(ds), tmp_path / "m.h")
+    from propmap.simexport import export_sim
+
+    res = export_sim("rotorpy", prop, params, n_points=200)
+    assert res.meta["propmap_source_sha256"] == source_digest()
+    assert main(["fit", "loads", "apce_8x6", "--fit-params", "alpha_L0", "--out", str(tmp_path / "p.toml")]) == 0
+    assert json.loads((tmp_path / "p.report.json").read_text())["propmap_source_sha256"] == source_digest()
+    assert f"source sha256 {source_digest()}" in (tmp_path / "p.toml").read_text()
