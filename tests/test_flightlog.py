@@ -372,6 +372,22 @@ def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
                                          r"stamped 1001 s"):
         log = read_flight_log(tmp_path / "fwd.ulg")
     np.testing.assert_allclose(log.velocity, np.tile([1.0, 0.0, 0.0], (log.n, 1)), atol=1e-6)
+    # the accelerations' own stale stamp: left out as the other topics' (it was refused, the others filtered)
+    acc = list(topics).index(next(k for k in topics if k in ("vehicle_acceleration", "sensor_combined")))
+    raw = bytearray((tmp_path / "gap.ulg").read_bytes())
+    pos, seen = 16, 0
+    while pos < len(raw):
+        size, kind = struct.unpack_from("<HB", raw, pos)
+        if kind == ord("D") and struct.unpack_from("<H", raw, pos + 3)[0] == acc:
+            seen += 1
+            if seen == 251:
+                raw[pos + 5:pos + 13] = bytes(8)
+                break
+        pos += 3 + size
+    (tmp_path / "acc.ulg").write_bytes(bytes(raw))
+    with pytest.warns(UserWarning, match=r"1 message.s. out of time order left out \(the first, message 251, "
+                                         r"stamped 0 s"):
+        assert read_flight_log(tmp_path / "acc.ulg").n == 399  # (the 400 samples but the stale one)
     # PX4 logs topics at exactly 10 Hz (a review: warned of as slow by a microsecond's jitter)
     t, topics = _px4_topics()
     topics["esc_status"], nested = _esc(t, lambda ti, k: 5000, keep=lambda ti: (ti - 1_000_000) % 100_000 == 0)

@@ -232,6 +232,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     acc_fields = ["xyz[0]", "xyz[1]", "xyz[2]"] if acc_topic == "vehicle_acceleration" else [
         "accelerometer_m_s2[0]", "accelerometer_m_s2[1]", "accelerometer_m_s2[2]"]
     t, acc = _topic(ulog, acc_topic, acc_fields, name, error)
+    t, acc = _in_time_order(acc_topic, name, said, t, acc)  # (as every topic: it was refused, the others filtered)
     tw, rates = _topic(ulog, "vehicle_angular_velocity", ["xyz[0]", "xyz[1]", "xyz[2]"], name, error)
     deriv = None
     d = [s for s in ulog.data_list if s.name == "vehicle_angular_velocity"]
