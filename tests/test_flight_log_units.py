@@ -169,3 +169,24 @@ def test_csv_errors_name_the_files_line_and_more_motors_are_refused(tmp_path, sh
     folder.mkdir()
     with pytest.raises(FlightLogError, match="logs: a folder, not a flight log"):
         read_flight_log(folder)
+
+
+def test_running_out_of_memory_and_a_log_over_the_size_limit_say_what_to_do(tmp_path, capsys, monkeypatch,
+                                                                              shared_data):
+    """A MemoryError (an hour's log, 1e6 points with derivatives) was 'internal error ...; please
+    report it' (exit 1); a log over the 200 MiB limit did not say to split it (a scale audit,
+    2026-11-27)."""
+    import propmap.cli.props as props_cli
+    import propmap.io.flightlog as flightlog
+
+    def short_of_memory():
+        raise MemoryError("Unable to allocate 36.6 MiB for an array with shape (4800000,) and data type float64")
+
+    monkeypatch.setattr(props_cli, "catalogue", short_of_memory)
+    assert main(["props"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("propmap: error: out of memory (Unable to allocate 36.6 MiB") and "a shorter log" in err
+    assert "internal error" not in err and len(err.splitlines()) == 1
+    monkeypatch.setattr(flightlog, "MAX_FILE_BYTES", 1000)
+    with pytest.raises(FlightLogError, match=r"the limit for this kind of file: split the flight into logs under it"):
+        read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[0])

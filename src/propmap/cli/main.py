@@ -138,6 +138,11 @@ def _main(argv: list[str] | None) -> int:
         return 2
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 1
+    except MemoryError as exc:  # (an input too large for this machine, not a bug: it read "please report it")
+        click.echo(f"propmap: error: out of memory ({_one_line(exc) or 'MemoryError'}): the input is too large for "
+                   "this machine's memory; give less at once (a shorter log, fewer points, a lower --rate-hz or a "
+                   "smaller grid)", err=True)
+        return 2
     except Exception as exc:  # a bug: still one line, and how to report it
         click.echo(f"propmap: error: internal error ({type(exc).__name__}: {_one_line(exc)}); "
                    "please report it with the command line", err=True)

@@ -203,7 +203,9 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
                                  "read_flight_log's format)")
     if fmt not in FORMATS:
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
-    raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES)
+    raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES,
+                           too_large=": split the flight into logs under it (a NeuroBEM .mat at 400 Hz holds about "
+                                     "26 minutes; fit flight takes several logs)")
     said = []
     if fmt == "ulog":
         fields, said = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES,

@@ -86,7 +86,7 @@ def _mb(n: int) -> str:
     return f"{n / 2**20:.0f} MiB" if n >= 2**20 else f"{n} bytes"
 
 
-def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYTES) -> bytes:
+def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYTES, too_large: str = "") -> bytes:
     """The content of the regular file ``path``, refusing anything else.
 
     Parameters
@@ -96,6 +96,8 @@ def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYT
         Raised with a one-line message naming the file.
     limit : int
         Largest size accepted [bytes].
+    too_large : str
+        Appended to the message of a file over ``limit`` (what to do instead).
 
     Returns
     -------
@@ -121,7 +123,7 @@ def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYT
         raise error(f"{name}: cannot read ({exc.strerror or type(exc).__name__})") from None
     except ValueError:
         raise error(f"{name}: not a valid file name (it contains a NUL character)") from None
-    _check_stat(st, name, error, limit)
+    _check_stat(st, name, error, limit, too_large)
     # O_NONBLOCK: if the name was swapped for a pipe after the stat, opening it does not block
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0)
     try:
@@ -129,7 +131,7 @@ def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYT
     except OSError as exc:
         raise error(f"{name}: cannot read ({exc.strerror or type(exc).__name__})") from None
     try:
-        _check_stat(os.fstat(fd), name, error, limit)
+        _check_stat(os.fstat(fd), name, error, limit, too_large)
         with os.fdopen(fd, "rb", closefd=True) as fh:
             fd = None
             data = fh.read(limit + 1)
@@ -139,17 +141,18 @@ def read_input_bytes(path, error: type[ValueError], *, limit: int = MAX_FILE_BYT
         if fd is not None:
             os.close(fd)
     if len(data) > limit:
-        raise error(f"{name}: larger than {_mb(limit)}, the limit for this kind of file")
+        raise error(f"{name}: larger than {_mb(limit)}, the limit for this kind of file{too_large}")
     return data
 
 
-def _check_stat(st, name: str, error, limit: int) -> None:
+def _check_stat(st, name: str, error, limit: int, too_large: str = "") -> None:
     if stat.S_ISDIR(st.st_mode):
         raise error(f"{name}: is a directory, not a file")
     if not stat.S_ISREG(st.st_mode):
         raise error(f"{name}: not a regular file (a device, pipe or socket); give a file")
     if st.st_size > limit:
-        raise error(f"{name}: {_mb(st.st_size)} is larger than {_mb(limit)}, the limit for this kind of file")
+        raise error(f"{name}: {_mb(st.st_size)} is larger than {_mb(limit)}, the limit for this kind of file"
+                    f"{too_large}")
 
 
 def decode_input_text(raw: bytes, path, error: type[ValueError], *, latin1: bool = False) -> str:
