@@ -56,3 +56,36 @@ def test_outputs_record_it(tmp_path, capsys):
     assert main(["fit", "loads", "apce_8x6", "--fit-params", "alpha_L0", "--out", str(tmp_path / "p.toml")]) == 0
     assert json.loads((tmp_path / "p.report.json").read_text())["propmap_source_sha256"] == source_digest()
     assert f"source sha256 {source_digest()}" in (tmp_path / "p.toml").read_text()
+
+
+def test_an_unreadable_file_enters_the_digest_as_such(monkeypatch):
+    """A file under the package that cannot be read made every map, export and fit fail after
+    its work (a review): it enters the digest as unreadable."""
+    from pathlib import Path as P
+
+    real = P.read_bytes
+
+    def read_bytes(self):
+        if self.name == "CITATION.md":
+            raise PermissionError(13, "Permission denied", str(self))
+        return real(self)
+
+    before = source_digest.__wrapped__()
+    monkeypatch.setattr(P, "read_bytes", read_bytes)
+    after = source_digest.__wrapped__()
+    assert re.fullmatch(r"[0-9a-f]{64}", after) and after != before
+
+
+def test_out_of_memory_while_reading_a_log_is_said_so(tmp_path, capsys, monkeypatch, shared_data):
+    """A MemoryError inside the .mat reader was 'not a readable MATLAB v5 file' (a review)."""
+    import scipy.io
+
+    def loadmat(*a, **k):
+        raise MemoryError("Unable to allocate 1.9 GiB for an array")
+
+    monkeypatch.setattr(scipy.io, "loadmat", loadmat)
+    vehicle = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    log = shared_data / "neurobem_flights" / "bemnn20210218170320seg2.mat"
+    assert main(["wrench", str(log), "--vehicle", str(vehicle), "--out", str(tmp_path / "w.csv")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("propmap: error: out of memory (Unable to allocate 1.9 GiB"), err

@@ -44,11 +44,13 @@ def fit_demo(prop, generic, out_dir: Path):
     """Both models fitted to UIUC apce_8x6 with HOLDOUT held out; returns (figure path, text table)."""
     import numpy as np
 
+    from .. import __version__
     from ..core.airfoil import preset
     from ..identify import FitOptions, fit_loads, loads_from_catalogue
     from ..io.calibration import population
     from ..io.catalogue import get_entry
     from ..io.params_file import write_params
+    from ..io.provenance import source_digest
     from ..plots import plot_load_fit
     from ..validation import holdout_comparison
 
@@ -63,7 +65,8 @@ def fit_demo(prop, generic, out_dir: Path):
     # with the fitted data's [coverage], as `fit loads` writes it: later uses warn beyond it
     write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
                  coverage=_coverage(train, prop, cambered.air),
-                 comment=f"propmap demo: cambered model fitted to UIUC {PROP}, sweeps {', '.join(HOLDOUT)} held out")
+                 comment=f"propmap {__version__} demo: cambered model fitted to UIUC {PROP}, sweeps "
+                         f"{', '.join(HOLDOUT)} held out; source sha256 {source_digest()}")
     cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)
     cmp_p = holdout_comparison(entry, prop, paper.params, preset(PAPER), HOLDOUT)
     rows = [f"   held-out {cmp_c['fitted']['n_points']} points, rms error of the coefficients [-]:",

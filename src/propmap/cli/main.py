@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
     """Run the CLI with ``argv``; return the exit code.
 
     0 ok; 1 a solver failure, an unexpected internal error or standard output closed by
-    its reader; 2 bad input or an unusable file; 130 interrupted; 128 + n stopped by
+    its reader; 2 bad input, an unusable file or out of memory; 130 interrupted; 128 + n stopped by
     signal n. Every error is one line
     ``propmap: error: ...`` on stderr, never a traceback. propmap's own warnings are printed
     as ``propmap: warning: ...`` lines; other libraries' warnings (NumPy's and SciPy's
@@ -92,8 +92,17 @@ def main(argv: list[str] | None = None) -> int:
     code calls back into Python, as numba's compiler does, is delivered again after it).
     """
     _terminated.clear()
+    words = sys.argv[1:] if argv is None else list(argv)
+    if words and words[0] in _RECORDING:  # (the source digest they record: of the code that runs, taken now)
+        from ..io.provenance import source_digest
+
+        source_digest()
     code = _main(argv)
     return 128 + _terminated[-1] if _terminated else code
+
+
+#: the commands whose outputs record the package's source digest (io/provenance.py)
+_RECORDING = ("map", "export-sim", "fit", "demo")
 
 
 def _main(argv: list[str] | None) -> int:

@@ -204,8 +204,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     if fmt not in FORMATS:
         raise FlightLogError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     raw = read_input_bytes(p, FlightLogError, limit=MAX_FILE_BYTES,
-                           too_large=": split the flight into logs under it (a NeuroBEM .mat at 400 Hz holds about "
-                                     "26 minutes; fit flight takes several logs)")
+                           too_large=": split the flight into logs under it (at 400 Hz an uncompressed NeuroBEM .mat "
+                                     "holds about 26 minutes; fit flight takes several logs)")
     said = []
     if fmt == "ulog":
         fields, said = read_ulog(raw, name, motor_map, n_motors, error=FlightLogError, min_samples=MIN_SAMPLES,
@@ -231,6 +231,8 @@ def _mat_array(raw: bytes, name: str) -> np.ndarray:
         data = loadmat(io.BytesIO(raw))
     except NotImplementedError:
         raise FlightLogError(f"{name}: MATLAB v7.3 (HDF5) file; save it as MATLAB v5 (-v7 or older)") from None
+    except MemoryError:  # (the input too large for the memory, not a damaged file: the CLI says so)
+        raise
     except Exception as exc:  # scipy raises many types for a corrupt file
         raise FlightLogError(f"{name}: not a readable MATLAB v5 file ({type(exc).__name__}: "
                              f"{str(exc)[:120]})") from None

@@ -222,6 +222,8 @@ def map_props(path) -> tuple[str, ...] | None:
                 names = [str(n) for n in np.asarray(nc.variables["prop"][:]).ravel()]
     except ValueError:
         raise
+    except MemoryError:  # (too large for the memory, not a damaged file: the CLI says so)
+        raise
     except Exception as exc:  # noqa: BLE001 -- the netCDF/HDF5 libraries raise anything on a damaged file
         raise ValueError(f"{where}: not a readable netCDF rotor map ({type(exc).__name__}: "
                          f"{' '.join(str(exc).split())[:200]})") from None
@@ -278,6 +280,8 @@ def read_dataset(path, prop: str | None = None):
         msg = str(exc)
         raise ValueError(msg if msg.startswith(where) else f"{where}: not a readable netCDF rotor map ({msg})") \
             from None
+    except MemoryError:  # (too large for the memory, not a damaged file: the CLI says so)
+        raise
     except Exception as exc:  # noqa: BLE001 -- the netCDF/HDF5 libraries raise anything on a damaged file
         raise ValueError(f"{where}: not a readable netCDF rotor map ({type(exc).__name__}: "
                          f"{' '.join(str(exc).split())[:200]})") from None

@@ -21,10 +21,13 @@ _SKIPPED_SUFFIXES = (".pyc", ".pyo", ".nbi", ".nbc")
 def source_digest() -> str:
     """SHA-256 of the installed package's code and bundled data.
 
-    Every file under the package's folder (sorted by its path relative to it, "/"-separated),
-    its path and its bytes, except byte-code and the compiled kernels' cache
-    (``__pycache__`` folders, ``.pyc``, ``.nbi``, ``.nbc``). Computed once per process (about
-    7 MB read).
+    Every file under the package's folder (sorted by its path relative to it, "/"-separated,
+    as a string), its path and its bytes, except byte-code and the compiled kernels' cache
+    (``__pycache__`` folders, ``.pyc``, ``.nbi``, ``.nbc``); a file that cannot be read
+    enters as its path and the word "unreadable" (a digest that says so, not a failed
+    output). Computed once per process (about 1,300 files, 3 MB, 0.03 s); the commands that
+    record it compute it when they start, so that it is of the code that runs. The bytes as
+    installed: a checkout with other line endings gives another digest.
 
     Returns
     -------
@@ -33,11 +36,13 @@ def source_digest() -> str:
     """
     root = Path(__file__).resolve().parents[1]
     h = hashlib.sha256()
-    files = sorted(p for p in root.rglob("*") if p.is_file() and "__pycache__" not in p.parts
-                   and not p.name.endswith(_SKIPPED_SUFFIXES))
-    for p in files:
-        rel = p.relative_to(root).as_posix().encode()
-        h.update(len(rel).to_bytes(8, "little") + rel)
-        data = p.read_bytes()
+    files = sorted((p.relative_to(root).as_posix(), p) for p in root.rglob("*")
+                   if p.is_file() and "__pycache__" not in p.parts and not p.name.endswith(_SKIPPED_SUFFIXES))
+    for rel, p in files:
+        h.update(len(rel.encode()).to_bytes(8, "little") + rel.encode())
+        try:
+            data = p.read_bytes()
+        except OSError:  # (a file made unreadable or removed since: said in the digest, not a lost output)
+            data = b"unreadable"
         h.update(len(data).to_bytes(8, "little") + data)
     return h.hexdigest()

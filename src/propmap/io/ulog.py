@@ -211,6 +211,8 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     _PARSING.notices = notices = []
     try:
         ulog = ULog(_FileBytes(raw))
+    except MemoryError:  # (the input too large for the memory, not a damaged file: the CLI says so)
+        raise
     except Exception as exc:  # pyulog raises many types for a corrupt file
         raise error(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
     finally:

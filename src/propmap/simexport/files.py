@@ -282,8 +282,9 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         The files cannot be written.
     """
     path = Path(path)
-    head = _text(f"propmap {__version__}: {res.target} coefficients of {res.meta.get('propeller')} "
-                 f"({res.meta.get('params')}), fitted to the full model")
+    head = _text(f"propmap {__version__} (source sha256 {res.meta.get('propmap_source_sha256', 'not recorded')}): "
+                 f"{res.target} coefficients of {res.meta.get('propeller')} ({res.meta.get('params')}), fitted to the "
+                 "full model")
     if vehicle is not None:
         if res.target != "rotorpy":
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")
