@@ -25,6 +25,7 @@ def test_the_digest_is_of_the_packages_code_and_data():
     root = Path(pm.__file__).resolve().parent
     files = sorted(p for p in root.rglob("*") if p.is_file() and "__pycache__" not in p.parts
                    and not p.name.endswith((".pyc", ".pyo", ".nbi", ".nbc")))
+    files.sort(key=lambda p: p.relative_to(root).as_posix())  # (by the path string, whatever the platform)
 
     def digest(edit=None):
         h = hashlib.sha256()
