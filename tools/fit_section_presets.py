@@ -175,7 +175,9 @@ def main() -> None:
         print(key, {k: round(v, 4) for k, v in d.items()}, err)
     with atomic_write(OUT, "wb") as fh:
         fh.write(("# Symmetric-section presets (propmap --params section:NAME, or section = \"NAME\" in a\n"
-                  "# parameter file); written by tools/fit_section_presets.py, do not edit by hand.\n").encode())
+                  "# parameter file); written by tools/fit_section_presets.py, do not edit by hand. Fitted to the\n"
+                  "# tables of R. E. Sheldahl and P. C. Klimas, SAND80-2114, Sandia National Laboratories, 1981\n"
+                  "# (sheldahl_klimas_1981.csv; CITATION.md).\n").encode())
         tomli_w.dump(dict(sorted(out.items())), fh)
 
 
