@@ -90,3 +90,22 @@ def test_out_of_memory_while_reading_a_log_is_said_so(tmp_path, capsys, monkeypa
     assert main(["wrench", str(log), "--vehicle", str(vehicle), "--out", str(tmp_path / "w.csv")]) == 2
     err = capsys.readouterr().err
     assert err.startswith("propmap: error: out of memory (Unable to allocate 1.9 GiB"), err
+
+
+def test_outputs_cite_their_data(tmp_path, capsys, shared_data):
+    """fit loads' reports, export-sim's file and report, and the flight tables' 'log's own' rows
+    cited nothing (a citation audit, 2026-11-27)."""
+    assert main(["fit", "loads", "apce_8x6", "--fit-params", "alpha_L0", "--out", str(tmp_path / "p.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "Data: geometry: APC Propellers PE0 geometry" in out and "Brandt & Selig, AIAA 2011-1255" in out
+    assert "Brandt & Selig" in json.loads((tmp_path / "p.report.json").read_text())["data_citation"]
+    assert main(["export-sim", "apce_8x6", "--target", "rotorpy", "--points", "200",
+                 "--out", str(tmp_path / "r.py")]) == 0
+    assert "data: geometry: APC Propellers PE0" in (tmp_path / "r.py").read_text().splitlines()[0]
+    assert "Brandt & Selig" in json.loads((tmp_path / "r.report.json").read_text())["citation"]
+    capsys.readouterr()
+    vehicle = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    log = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    assert main(["wrench", str(log), "--vehicle", str(vehicle), "--out", str(tmp_path / "w.csv")]) == 0
+    assert "NeuroBEM: Hybrid Aerodynamic Quadrotor Model\", Robotics: Science and Systems 2021" in \
+        capsys.readouterr().out

@@ -183,6 +183,11 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     coverage_messages(propeller, label, air, *envelope_extremes(
         propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
         rpm=tuple(env.rpm), airspeed=float(env.airspeed[1]))
+    from ..io.catalogue import catalogue
+
+    entry = catalogue().get(propeller.name)
+    if entry is not None:  # (the catalogue's geometry and data behind the set: cited in the file and the report)
+        res.meta["citation"] = entry.citation
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:
@@ -192,7 +197,8 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:
-        click.echo(f"{target} coefficients of {propeller.name} ({label}):")
+        click.echo(f"{target} coefficients of {propeller.name} ({label}):"
+                   + (f"\n  (data: {entry.citation})" if entry is not None else ""))
         for k, v in res.coefficients.items():
             click.echo(f"  {k} = {v}")
         from ..simexport import error_lines

@@ -472,6 +472,9 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 "files_sha256": files,
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
+    if entry is not None:  # (the catalogue's data: cited in the reports as in the figure)
+        res.extra["data_citation"] = entry.citation
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
-                          f"{air.rho:.4g} kg/m^3", data_warnings=data_warnings)
+                          f"{air.rho:.4g} kg/m^3" + (f"\nData: {entry.citation}" if entry is not None else ""),
+                   data_warnings=data_warnings)

@@ -58,6 +58,12 @@ def _fitted_vehicle(path: Path, params_spec):
     return veh, True
 
 
+#: said under a table with the "log's own" rows: what those columns are, and whose
+NEUROBEM_REFERENCE = ("log's own: the prediction in the log's columns, NeuroBEM's BEM + neural network (L. Bauersfeld, "
+                      "E. Kaufmann, P. Foehn, S. Sun and D. Scaramuzza, \"NeuroBEM: Hybrid Aerodynamic Quadrotor "
+                      "Model\", Robotics: Science and Systems 2021)")
+
+
 MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
                   "calibration; used even where the log has esc_status rpm); motor m is the output the log's "
                   "PWM_MAIN_FUNCn (or another driver's FUNCn) parameters assign Motor m, else output m (in "
@@ -313,6 +319,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
     text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
             f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
+    if samples.reference_force is not None:
+        text.append(NEUROBEM_REFERENCE)
     bands = report["training"]["speed_bands"]
     text.append("training F by speed band: " + ", ".join(
         f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
@@ -500,6 +508,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
                    f"ground), params {label}, rho {air.rho:g} kg/m^3")
         click.echo(_table(rows))
+        if samples.reference_force is not None:
+            click.echo(NEUROBEM_REFERENCE)
         if "M_zero" in err:
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
     click.echo(f"wrote {out}", err=True)

@@ -12,7 +12,11 @@ Two section models, selected by the parameter record (``section_model``):
   sigmoid blend into flat-plate post-stall behaviour (C_L = C_D90 sin a cos a,
   C_D = C_D90 sin^2 a; Hoerner, Fluid-Dynamic Drag, 1965, ch. 3) so that 90 deg and
   reverse flow stay physical. Sources: M. Drela, "QPROP Formulation", MIT, 2006;
-  M. Drela, XROTOR User Guide, 2003.
+  M. Drela, XROTOR User Guide, 2003 (the drag's Reynolds exponent and Prandtl-Glauert). The
+  lift slope's and the stall's Reynolds power laws, the zero-lift angle's drift with ln Re
+  and the stall delay's 1 + k (c/r)^2 on the stall angle (the (c/r)^2 of Snel, Houwink and
+  Bosschers, ECN-C--94-107, 1994) are propmap's own empirical terms (docs/models.md, The
+  cambered section).
 
 Both records also carry the switches of Prandtl's tip and hub loss (``tip_loss``,
 ``hub_loss``; ``_physics.loss_factor``) and the rotor-level options of :class:`RotorOptions`

@@ -284,7 +284,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     path = Path(path)
     head = _text(f"propmap {__version__} (source sha256 {res.meta.get('propmap_source_sha256', 'not recorded')}): "
                  f"{res.target} coefficients of {res.meta.get('propeller')} ({res.meta.get('params')}), fitted to the "
-                 "full model")
+                 "full model" + (f"; data: {res.meta['citation']}" if res.meta.get("citation") else ""))
     if vehicle is not None:
         if res.target != "rotorpy":
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")
