@@ -114,7 +114,8 @@ def demo(out_dir: Path, rpm: float):
     generic, generic_label = generic_without(PROP)
     paper = preset(PAPER)
     click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric; {prop.source})")
-    click.echo(f"models: the paper's eqs 3-4 with Table I ({PAPER}); the cambered section with Prandtl tip loss "
+    click.echo(f"models: the paper's eqs 3-4 with Table I (Gill & D'Andrea, IEEE CCTA 2017; {PAPER}); the cambered "
+               "section with Prandtl tip loss "
                f"and the {generic_label} set (fitted to the catalogue without {PROP}'s family)\n")
 
     from ..core.airfoil import Air
@@ -135,7 +136,9 @@ def demo(out_dir: Path, rpm: float):
         click.echo(f"   {row['airspeed']:>8.0f}{row['incidence_deg']:>8.0f}{row['thrust']:>9.3f}{row['drag']:>8.3f}"
                    f"{row['torque']:>10.4f}{err:>+9.3f} N {100 * err / row['thrust_hover']:>+4.0f}%  {row['flags']}")
     fig1 = plot_envelope(table, out_dir / "envelope.png",
-                         title=f"{PROP} at {rpm:g} rpm, cambered model ({generic_label}) vs hover model")
+                         title=f"{PROP} at {rpm:g} rpm, cambered model ({generic_label}) vs hover model\n"
+                               f"{prop.source}; the set fitted to UIUC vol. 1 and 2 (Brandt & Selig 2011; "
+                               "Deters et al. 2014)")
 
     entry = get_entry(PROP)
     click.echo(f"\n2. Against UIUC measurements of {PROP}, no fitting (rms error of CT and CP [-]; {entry.citation}):")

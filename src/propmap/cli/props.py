@@ -27,7 +27,8 @@ def props(as_json: bool) -> None:
                      "geometry": "UIUC" if e.geometry_format == "uiuc" else "APC PE0",
                      "static_runs": len(e.static_files), "sweeps": len(e.sweep_files),
                      "calibrated": c is not None,
-                     "fit_rms_ct": None if c is None else c.rms_ct, "fit_rms_cp": None if c is None else c.rms_cp})
+                     "fit_rms_ct": None if c is None else c.rms_ct, "fit_rms_cp": None if c is None else c.rms_cp,
+                     "citation": e.citation})
     if as_json:
         echo_json(rows)
         return
