@@ -408,7 +408,10 @@ def plot_flight_timeseries(t_by_log: dict, measured: dict, predicted: dict, path
         axes[0, j].set_title(name, fontsize=8)
         axes[2, j].set_xlabel("t [s]")
     axes[0, 0].legend(fontsize=7)
-    fig.suptitle(title, fontsize=9)
+    import textwrap
+
+    # (wrapped: a vehicle's name with its citation ran off both edges, a citation audit)
+    fig.suptitle("\n".join(textwrap.wrap(title, max(40, int(12 * fig.get_size_inches()[0])))), fontsize=9)
     return _save(fig, path)
 
 
