@@ -160,6 +160,10 @@ def test_validate_all_on_two_propellers(capsys, tmp_path):
         assert min(default["flap_compliance"]) > 0.5 and max(rigid["flap_compliance"]) == 0.0
     for name in ("validation.json", "validation_per_propeller.csv", "cross_validation.png", "published_cases.png"):
         assert (tmp_path / "v" / name).stat().st_size > 100
+    # the data cited in the report and on every row of the table (a citation audit: neither did)
+    assert "Brandt & Selig AIAA 2011-1255" in rep["citation"] and "Deters, Ananda & Selig" in rep["citation"]
+    table = (tmp_path / "v" / "validation_per_propeller.csv").read_text().splitlines()
+    assert table[0].endswith(",citation") and all("UIUC Propeller Data Site" in line for line in table[1:])
 
 
 @pytest.mark.parametrize("argv, match", [

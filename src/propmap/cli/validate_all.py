@@ -12,6 +12,9 @@ from ._common import InputError, echo_json
 #: tests check the two agree)
 PROTOCOLS = ("loso", "loro", "lowest", "static", "blind")
 #: the files ``--out-dir`` receives
+#: the measurements and geometry behind the catalogue's protocols (their report and per-propeller table cite them)
+CATALOGUE_CITATION = ("UIUC Propeller Data Site vol. 1, Brandt & Selig AIAA 2011-1255; vol. 2, Deters, Ananda & Selig "
+                      "AIAA 2014-2151; APC Propellers PE0 geometry v2022-0915 where UIUC has none")
 OUTPUT_FILES = ("validation.json", "validation_per_propeller.csv", "cross_validation.png", "published_cases.png")
 
 #: the project's accuracy targets, rms |dCT| / static CT (docs/validation.md)
@@ -234,9 +237,9 @@ def print_report(cat: dict, cases: dict, incidence: dict | None = None) -> None:
     from ..validation import PROTOCOL_TEXT
 
     protos = [k for k in PROTOCOLS if k in cat["summary"]]
-    click.echo("rms |dCT| / static CT and |dCP| / static CP on held-out data, per propeller (UIUC vol. 1, Brandt & "
-               "Selig AIAA 2011-1255; vol. 2, Deters, Ananda & Selig AIAA 2014-2151). Every protocol's generic set "
-               "and prior were derived without the propeller's family (leave-one-family-out):")
+    click.echo(f"rms |dCT| / static CT and |dCP| / static CP on held-out data, per propeller ({CATALOGUE_CITATION}). "
+               "Every protocol's generic set and prior were derived without the propeller's family "
+               "(leave-one-family-out):")
     head = "".join(f"{p + ' CT':>11}{p + ' CP':>11}" for p in protos)
     click.echo(f"{'propeller':<16}{head}{'paper CT':>10}{'hover CT':>10}")
     for r in cat["propellers"]:
@@ -276,7 +279,9 @@ def _csv(path: Path, cat: dict) -> None:
     import pandas as pd
 
     from ..io.atomic import atomic_write
+    from ..io.catalogue import catalogue
 
+    entries = catalogue()
     rows = []
     for r in cat["propellers"]:
         row = {"propeller": r["propeller"], "volume": r.get("volume"), "family": r.get("family"),
@@ -284,6 +289,8 @@ def _csv(path: Path, cat: dict) -> None:
         for k, v in r.items():
             if isinstance(v, dict):
                 row.update({f"{k}_{m}": v[m] for m in ("rms_ct", "rms_cp") if m in v})
+        e = entries.get(r["propeller"])
+        row["citation"] = "" if e is None else e.citation  # (each row's geometry and measurements)
         rows.append(row)
     with atomic_write(path, "w", newline="") as fh:
         pd.DataFrame(rows).to_csv(fh, index=False, float_format="%.6g")
@@ -317,7 +324,8 @@ def run_all(protocols, only, out_dir: Path | None, as_json: bool) -> None:
     case_json = {c: {"metrics": r.metrics, "citation": r.citation, "notes": r.notes} for c, r in cases.items()}
     report = {"catalogue": cat, "cases": case_json, "incidence_fits": incidence, "targets": TARGETS,
               "protocols": {k: PROTOCOL_TEXT[k] for k in protocols},
-              "units": "rms errors as fractions of the propeller's measured static CT / CP"}
+              "units": "rms errors as fractions of the propeller's measured static CT / CP",
+              "citation": CATALOGUE_CITATION}
     if out_dir is not None:
         from ..plots import plot_cases, plot_cv_summary
 
