@@ -163,3 +163,14 @@ def test_jackknife_folds_fit_the_fits_parameters(tmp_path, capsys):
     rep = json.loads((tmp_path / "q.report.json").read_text())
     assert set(rep["jackknife"]["std_error"]) == set(rep["fitted"]) and len(rep["fitted"]) == 8
     assert "the jackknife below measures the spread between runs" in capsys.readouterr().out
+
+
+def test_a_fold_at_a_bound_is_said():
+    from propmap.identify import FitOptions, fit_loads
+
+    data, prop = _apce_8x6()
+    res = fit_loads(data, prop, options=FitOptions(names=("cl_alpha", "alpha_L0")))
+    folds = [{"cl_alpha": res.x[0] + d, "alpha_L0": res.x[1]} for d in (-0.01, 0.0, 0.01)]
+    res.extra["jackknife"] = jackknife_report(res, folds, "run", ["a", "b", "c"], [(), ("cl_alpha",), ()])
+    assert res.extra["jackknife"]["at_bound"] == {"b": ["cl_alpha"]}
+    assert "without b: cl_alpha at a bound (its spread understated)" in res.report_text()

@@ -310,7 +310,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         report["cross_validation"] = cv
         if set(cv["folds"][0]["x"]) == set(res.names):  # (the report's jackknife column: the spread between logs)
             res.extra["jackknife"] = jackknife_report(res, [f["x"] for f in cv["folds"]], "log",
-                                                      [f["log"] for f in cv["folds"]])
+                                                      [f["log"] for f in cv["folds"]],
+                                                      [f["at_bound"] for f in cv["folds"]])
     res.extra["flight_report"] = report
     # each log's samples' own rate (1 / their median step; a log left with one sample has none)
     rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)

@@ -87,7 +87,7 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
     fold_options = (replace(options, directions=dirs["count"]) if dirs else
                     replace(options, names=tuple(result.names), directions=None))
     group = np.asarray(data.group)
-    folds = []
+    folds, bound = [], []
     for run in runs:
         try:
             f = fit_loads(data.subset(group != run), prop, base=base, air=air, quantities=quantities,
@@ -95,5 +95,6 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
         except (ValueError, SolverError) as exc:
             raise type(exc)(f"the jackknife's fit without run {run} fails: {exc}") from None
         folds.append({n: float(v) for n, v in zip(f.names, f.x)})
-    result.extra["jackknife"] = report = jackknife_report(result, folds, "run", runs)
+        bound.append(f.at_bound)
+    result.extra["jackknife"] = report = jackknife_report(result, folds, "run", runs, bound)
     return report

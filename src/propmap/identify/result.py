@@ -221,7 +221,9 @@ class FitResult:
             lines.append(f"jackknife: the std error from the {g} fits leaving one {jk['by']} out (the spread between "
                          f"{jk['by']}s; {g} {jk['by']}s make it itself uncertain, 95%: about "
                          f"{_jackknife_band(g)[0]:.2g}-{_jackknife_band(g)[1]:.2g} times it)"
-                         + (f"; {min(ratios):.2g}-{max(ratios):.2g} times the linearised std err" if ratios else ""))
+                         + (f"; {min(ratios):.2g}-{max(ratios):.2g} times the linearised std err" if ratios else "")
+                         + "".join(f"; without {g}: {', '.join(b)} at a bound (its spread understated)"
+                                   for g, b in jk.get("at_bound", {}).items()))
         if dirs:
             lines.append(f"free: {dirs['count']} directions of the {len(self.names)} parameters, those the data "
                          "determine best against the population prior\n  (the others held at the base set); "
@@ -462,7 +464,7 @@ def jackknife_std_error(estimates) -> np.ndarray:
     return np.sqrt((g - 1) / g * np.sum((e - e.mean(axis=0)) ** 2, axis=0))
 
 
-def jackknife_report(result: FitResult, fold_x, by: str, groups) -> dict:
+def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) -> dict:
     """The delete-a-group jackknife of a fit (:func:`jackknife_std_error`), for its report.
 
     Parameters
@@ -476,13 +478,17 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups) -> dict:
         What a group is ("log", "sweep").
     groups : sequence of str
         The groups left out, in ``fold_x``'s order.
+    at_bound : sequence of sequence of str, optional
+        Per fold, its parameters that ended at a bound (their value there is the bound's, so
+        the spread understates theirs): said in the report.
 
     Returns
     -------
     dict
         ``by``, ``groups``, ``std_error`` and ``ci95`` (estimate +- Student's t with g - 1
         degrees of freedom times it) per parameter, in the report's units (angles in deg), and
-        ``ratio`` to the linearised std error (None where that is not finite). The report
+        ``ratio`` to the linearised std error (None where that is not finite), ``at_bound``
+        (group -> parameters at a bound in the fit without it, where any). The report
         (``FitResult.report_text``, ``to_dict``) shows it where ``result.extra["jackknife"]``
         holds it.
 
@@ -509,7 +515,8 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups) -> dict:
             "std_error": {n: unit(n, s) for n, s in zip(result.names, se)},
             "ci95": {n: [unit(n, x - t * s), unit(n, x + t * s)] for n, x, s in zip(result.names, result.x, se)},
             "ratio": {n: (float(s / v) if np.isfinite(v) and v > 0 else None)
-                      for n, s, v in zip(result.names, se, lin)}}
+                      for n, s, v in zip(result.names, se, lin)},
+            "at_bound": {str(g): list(b) for g, b in zip(groups, at_bound or ()) if b}}
 
 
 def _jackknife_band(g: int) -> tuple[float, float]:
