@@ -92,9 +92,10 @@ def test_out_of_memory_while_reading_a_log_is_said_so(tmp_path, capsys, monkeypa
     assert err.startswith("propmap: error: out of memory (Unable to allocate 1.9 GiB"), err
 
 
-def test_outputs_cite_their_data(tmp_path, capsys, shared_data):
-    """fit loads' reports, export-sim's file and report, and the flight tables' 'log's own' rows
-    cited nothing (a citation audit, 2026-11-27)."""
+def test_outputs_cite_their_data(tmp_path, capsys):
+    """fit loads' reports, export-sim's file and report cited nothing (a citation audit,
+    2026-11-27); a geometry file of a catalogue propeller's name is the user's, not cited as the
+    catalogue's (a review)."""
     assert main(["fit", "loads", "apce_8x6", "--fit-params", "alpha_L0", "--out", str(tmp_path / "p.toml")]) == 0
     out = capsys.readouterr().out
     assert "Data: geometry: APC Propellers PE0 geometry" in out and "Brandt & Selig, AIAA 2011-1255" in out
@@ -103,7 +104,16 @@ def test_outputs_cite_their_data(tmp_path, capsys, shared_data):
                  "--out", str(tmp_path / "r.py")]) == 0
     assert "data: geometry: APC Propellers PE0" in (tmp_path / "r.py").read_text().splitlines()[0]
     assert "Brandt & Selig" in json.loads((tmp_path / "r.report.json").read_text())["citation"]
-    capsys.readouterr()
+    own = tmp_path / "apce_8x6_geom.txt"  # (the user's file under a catalogue propeller's name)
+    own.write_text("r/R c/R beta\n0.15 0.16 31.0\n0.5 0.18 22.0\n0.75 0.14 16.0\n1.0 0.06 11.0\n")
+    assert main(["export-sim", str(own), "--blades", "2", "--target", "rotorpy", "--points", "200",
+                 "--out", str(tmp_path / "u.py")]) == 0
+    assert "data:" not in (tmp_path / "u.py").read_text().splitlines()[0]
+    assert json.loads((tmp_path / "u.report.json").read_text()).get("citation") is None
+
+
+def test_flight_tables_cite_neurobem(tmp_path, capsys, shared_data):
+    """The flight tables' 'log's own' rows named no source (a citation audit, 2026-11-27)."""
     vehicle = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
     log = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
     assert main(["wrench", str(log), "--vehicle", str(vehicle), "--out", str(tmp_path / "w.csv")]) == 0

@@ -185,13 +185,16 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         rpm=tuple(env.rpm), airspeed=float(env.airspeed[1]))
     from ..io.catalogue import catalogue
 
-    entry = catalogue().get(propeller.name)
-    if entry is not None:  # (the catalogue's geometry and data behind the set: cited in the file and the report)
+    # (PROP a catalogue name: its geometry and data behind the set, cited in the file and the report; a file of a
+    # catalogue propeller's name is the user's own geometry, cited by nothing: a review)
+    entry = catalogue().get(prop) if isinstance(prop, str) else None
+    if entry is not None:
         res.meta["citation"] = entry.citation
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:
         echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
+                   "citation": res.meta.get("citation"),
                    "held_at_sign_bound": res.held,
                    "check_points": res.meta.get("check_points"),
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}

@@ -15,7 +15,7 @@ Two section models, selected by the parameter record (``section_model``):
   M. Drela, XROTOR User Guide, 2003 (the drag's Reynolds exponent and Prandtl-Glauert). The
   lift slope's and the stall's Reynolds power laws, the zero-lift angle's drift with ln Re
   and the stall delay's 1 + k (c/r)^2 on the stall angle (the (c/r)^2 of Snel, Houwink and
-  Bosschers, ECN-C--94-107, 1994) are propmap's own empirical terms (docs/models.md, The
+  Bosschers, ECN-C--93-052, 1994) are propmap's own empirical terms (docs/models.md, The
   cambered section).
 
 Both records also carry the switches of Prandtl's tip and hub loss (``tip_loss``,
