@@ -332,6 +332,23 @@ def test_ulog_motor_order_follows_the_escs_actuator_function(tmp_path):
         read_flight_log(tmp_path / "g.ulg", n_motors=4)
 
 
+def _restamp(raw: bytearray, topic_id: int, k: int, stamp_us: int) -> int:
+    """Set the timestamp (after the message id) of topic ``topic_id``'s k-th data message in the
+    ULog bytes ``raw`` to ``stamp_us``; return the message's offset."""
+    import struct
+
+    pos, seen = 16, 0
+    while pos < len(raw):
+        size, kind = struct.unpack_from("<HB", raw, pos)
+        if kind == ord("D") and struct.unpack_from("<H", raw, pos + 3)[0] == topic_id:
+            seen += 1
+            if seen == k:
+                raw[pos + 5:pos + 13] = struct.pack("<Q", stamp_us)
+                return pos
+        pos += 3 + size
+    raise AssertionError(f"topic {topic_id} has fewer than {k} data messages")
+
+
 def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
     """Only the accelerations' gaps and time order were checked (a PX4 audit, 2026-11-27): a 1.7 s
     dropout of esc_status was interpolated across without a word, a message stamped 0 fed
@@ -351,15 +368,7 @@ def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
     topics["esc_status"], nested = _esc(t, lambda ti, k: 5000 + 10 * k)
     write_ulog(tmp_path / "stale.ulg", topics, nested)
     raw = bytearray((tmp_path / "stale.ulg").read_bytes())
-    pos, seen, topic_id = 16, 0, list(topics).index("vehicle_local_position")
-    while pos < len(raw):  # the 251st data message of the topic: its timestamp (after the message id) set to 0
-        size, kind = struct.unpack_from("<HB", raw, pos)
-        if kind == ord("D") and struct.unpack_from("<H", raw, pos + 3)[0] == topic_id:
-            seen += 1
-            if seen == 251:
-                raw[pos + 5:pos + 13] = bytes(8)
-                break
-        pos += 3 + size
+    pos = _restamp(raw, list(topics).index("vehicle_local_position"), 251, 0)
     (tmp_path / "stale.ulg").write_bytes(bytes(raw))
     with pytest.warns(UserWarning, match=r"'vehicle_local_position': 1 message.s. out of time order left out "
                                          r"\(the first, message 251, stamped 0 s since boot\)"):
@@ -375,15 +384,7 @@ def test_ulog_other_topics_gaps_and_stale_stamps(tmp_path):
     # the accelerations' own stale stamp: left out as the other topics' (it was refused, the others filtered)
     acc = list(topics).index(next(k for k in topics if k in ("vehicle_acceleration", "sensor_combined")))
     raw = bytearray((tmp_path / "gap.ulg").read_bytes())
-    pos, seen = 16, 0
-    while pos < len(raw):
-        size, kind = struct.unpack_from("<HB", raw, pos)
-        if kind == ord("D") and struct.unpack_from("<H", raw, pos + 3)[0] == acc:
-            seen += 1
-            if seen == 251:
-                raw[pos + 5:pos + 13] = bytes(8)
-                break
-        pos += 3 + size
+    _restamp(raw, acc, 251, 0)
     (tmp_path / "acc.ulg").write_bytes(bytes(raw))
     with pytest.warns(UserWarning, match=r"1 message.s. out of time order left out \(the first, message 251, "
                                          r"stamped 0 s"):
