@@ -174,3 +174,15 @@ def test_a_fold_at_a_bound_is_said():
     res.extra["jackknife"] = jackknife_report(res, folds, "run", ["a", "b", "c"], [(), ("cl_alpha",), ()])
     assert res.extra["jackknife"]["at_bound"] == {"b": ["cl_alpha"]}
     assert "without b: cl_alpha at a bound (its spread understated)" in res.report_text()
+
+
+def test_flight_residual_runs_end_where_samples_were_left_out():
+    """Samples left out of a log (a stopped rotor, the ground) made the samples either side
+    neighbours in the lag-1 (a review): a run ends at a step over 1.5 median steps and at each log."""
+    from types import SimpleNamespace
+
+    from propmap.identify.flight import _consecutive_runs
+
+    s = SimpleNamespace(n=10, log_index=np.array([0] * 5 + [1] * 5),
+                        t=np.array([0.0, 0.04, 0.08, 0.20, 0.24, 0.0, 0.04, 0.08, 0.12, 0.16]))
+    assert _consecutive_runs(s).tolist() == [0, 0, 0, 1, 1, 2, 2, 2, 2, 2]

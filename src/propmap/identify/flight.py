@@ -340,10 +340,25 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
                      air, extra)
-    # the force residuals' dependence from sample to sample within each log (the std errors assume none)
+    # the force residuals' dependence from sample to sample within each log (the std errors assume none), in runs of
+    # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(
-        result.residuals[:3 * samples.n].reshape(samples.n, 3), samples.log_index)
+        result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
     return result
+
+
+def _consecutive_runs(samples: FlightSamples) -> np.ndarray:
+    """Per sample, the index of its run of consecutive samples: a new run at each log and
+    after a step longer than 1.5 times the log's median step."""
+    runs = np.zeros(samples.n, dtype=int)
+    k = 0
+    for log in np.unique(samples.log_index):
+        idx = np.flatnonzero(samples.log_index == log)
+        dt = np.diff(samples.t[idx])
+        breaks = np.concatenate([[0], (dt > 1.5 * np.median(dt)).astype(int)]) if dt.size else np.zeros(1, int)
+        runs[idx] = k + np.cumsum(breaks)
+        k = runs[idx].max() + 1
+    return runs
 
 
 def fitted_body_drag(result: FitResult) -> BodyDrag | None:
