@@ -104,6 +104,14 @@ def test_outputs_cite_their_data(tmp_path, capsys):
                  "--out", str(tmp_path / "r.py")]) == 0
     assert "data: geometry: APC Propellers PE0" in (tmp_path / "r.py").read_text().splitlines()[0]
     assert "Brandt & Selig" in json.loads((tmp_path / "r.report.json").read_text())["citation"]
+    # a user's data on a catalogue geometry: the geometry cited, not the catalogue's measurements
+    rows = ["rpm,thrust_N,torque_Nm"] + [f"{r},{2.4 * (r / 6000) ** 2:.5g},{0.048 * (r / 6000) ** 2:.5g}"
+                                         for r in range(3000, 8001, 500)]
+    (tmp_path / "stand.csv").write_text("\n".join(rows) + "\n")
+    assert main(["fit", "loads", str(tmp_path / "stand.csv"), "--prop", "apce_8x6", "--out",
+                 str(tmp_path / "s.toml")]) == 0
+    cited = json.loads((tmp_path / "s.report.json").read_text())["data_citation"]
+    assert cited == "geometry: APC Propellers PE0 geometry (v2022-0915)", cited
     own = tmp_path / "apce_8x6_geom.txt"  # (the user's file under a catalogue propeller's name)
     own.write_text("r/R c/R beta\n0.15 0.16 31.0\n0.5 0.18 22.0\n0.75 0.14 16.0\n1.0 0.06 11.0\n")
     assert main(["export-sim", str(own), "--blades", "2", "--target", "rotorpy", "--points", "200",

@@ -195,6 +195,15 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     return report
 
 
+def _geometry_citation(prop_spec) -> str:
+    """The catalogue geometry's citation where ``--prop`` names a catalogue propeller (the data
+    are the user's: its measurements are not cited), else ""."""
+    from ..io.catalogue import catalogue
+
+    entry = catalogue().get(prop_spec) if isinstance(prop_spec, str) else None
+    return "" if entry is None else entry.citation.split("; measurements:")[0]
+
+
 def _run_fit(fn, *args, **kwargs):
     from ..core.solver import SolverError
 
@@ -472,9 +481,10 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 "files_sha256": files,
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
-    if entry is not None:  # (the catalogue's data: cited in the reports as in the figure)
-        res.extra["data_citation"] = entry.citation
+    cited = entry.citation if entry is not None else _geometry_citation(prop_spec)
+    if cited:  # (the catalogue's data, or the catalogue geometry under a user's data: cited in the reports)
+        res.extra["data_citation"] = cited
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
-                          f"{air.rho:.4g} kg/m^3" + (f"\nData: {entry.citation}" if entry is not None else ""),
+                          f"{air.rho:.4g} kg/m^3" + (f"\nData: {cited}" if cited else ""),
                    data_warnings=data_warnings)
