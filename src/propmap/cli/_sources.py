@@ -14,6 +14,18 @@ from ._common import InputError, PropChoice, _short, warn
 from ._paths import _is_file, refuse_copies
 
 
+def catalogue_citation(spec, *, geometry_only: bool = False) -> str:
+    """The citation of the catalogue propeller a PROP/--prop argument names ("" for a file or
+    none): its geometry's and measurements' sources, or its geometry's alone (``geometry_only``:
+    the user's own data on a catalogue geometry)."""
+    from ..io.catalogue import catalogue
+
+    entry = catalogue().get(spec) if isinstance(spec, str) else None
+    if entry is None:
+        return ""
+    return entry.citation.split("; measurements:")[0] if geometry_only else entry.citation
+
+
 def file_digests(sources) -> list[str]:
     """Each SOURCE file's SHA-256 (64 hexadecimal digits; a catalogue name gives none), in order:
     ``[coverage] files_sha256``, which tells ``validate`` which of its files a fit read.

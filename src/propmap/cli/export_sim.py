@@ -10,6 +10,7 @@ import click
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_section_match,
                       coverage_messages, echo_json, envelope_extremes, load_params, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
+from ._sources import catalogue_citation
 
 SUFFIX = {"rotorpy": ".py", "gazebo-classic": ".sdf", "gz-sim": ".sdf", "multinomial": ".json"}
 #: --target choices: the targets and their former names (gazebo: the PX4 classic plugin; gill2019: the multinomial)
@@ -183,13 +184,11 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     coverage_messages(propeller, label, air, *envelope_extremes(
         propeller, np.array(env.rpm)[:, None, None], np.array(env.airspeed)[None, :, None], inc[None, None, :]),
         rpm=tuple(env.rpm), airspeed=float(env.airspeed[1]))
-    from ..io.catalogue import catalogue
-
     # (PROP a catalogue name: its geometry and data behind the set, cited in the file and the report; a file of a
     # catalogue propeller's name is the user's own geometry, cited by nothing: a review)
-    entry = catalogue().get(prop) if isinstance(prop, str) else None
-    if entry is not None:
-        res.meta["citation"] = entry.citation
+    cited = catalogue_citation(prop)
+    if cited:
+        res.meta["citation"] = cited
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
     if as_json:
@@ -201,7 +200,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:
         click.echo(f"{target} coefficients of {propeller.name} ({label}):"
-                   + (f"\n  (data: {entry.citation})" if entry is not None else ""))
+                   + (f"\n  (data: {cited})" if cited else ""))
         for k, v in res.coefficients.items():
             click.echo(f"  {k} = {v}")
         from ..simexport import error_lines

@@ -12,7 +12,7 @@ import click
 from ._common import (InputError, PathArg, _short, check_section_match, load_params, option_group,
                       parse_names, resolve_air, warn, with_air_options, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
-from ._sources import data_digest, file_air, file_digests, read_sources
+from ._sources import catalogue_citation, data_digest, file_air, file_digests, read_sources
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -193,15 +193,6 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     figures = "".join(f", {stem.name}{suffix}" for suffix in figure_suffixes)
     click.echo(f"wrote {out} and beside it {stem.name}.report.json, {stem.name}.report.txt{figures}", err=True)
     return report
-
-
-def _geometry_citation(prop_spec) -> str:
-    """The catalogue geometry's citation where ``--prop`` names a catalogue propeller (the data
-    are the user's: its measurements are not cited), else ""."""
-    from ..io.catalogue import catalogue
-
-    entry = catalogue().get(prop_spec) if isinstance(prop_spec, str) else None
-    return "" if entry is None else entry.citation.split("; measurements:")[0]
 
 
 def _run_fit(fn, *args, **kwargs):
@@ -481,7 +472,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                 "files_sha256": files,
                 "groups": [str(g) for g in dict.fromkeys(train.group)],
                 "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
-    cited = entry.citation if entry is not None else _geometry_citation(prop_spec)
+    cited = entry.citation if entry is not None else catalogue_citation(prop_spec, geometry_only=True)
     if cited:  # (the catalogue's data, or the catalogue geometry under a user's data: cited in the reports)
         res.extra["data_citation"] = cited
     _write_outputs(res, out, base_label, as_json, extra, figure=figure, coverage=coverage,

@@ -15,6 +15,7 @@ from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, 
                       coverage_messages, echo_json, envelope_extremes, given, load_params, option_group, parse_names,
                       resolve_air, set_collective_deg, with_air_options, with_prop_options)
 from ._paths import check_out_dir, check_outputs, vehicle_inputs
+from ._sources import catalogue_citation
 from .map_check import TARGETS_PCT, _check, _pct, _target_misses
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
@@ -266,7 +267,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                 propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
                 rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]))
             ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
-                           citation=_citation(prop), scheduler=client, progress=True, n_check=check_points)
+                           citation=catalogue_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0
     if not all_props:  # (the build time is reported, not stored: a map built twice is the same file, a review)
         if fmt == "c":
@@ -328,13 +329,6 @@ def _scheduler(address):
         yield client
     finally:
         client.close()
-
-
-def _citation(prop: str) -> str:
-    from ..io.catalogue import catalogue
-
-    entry = catalogue().get(prop)
-    return entry.citation if entry is not None else ""
 
 
 def _catalogue(only):
