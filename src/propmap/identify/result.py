@@ -218,9 +218,10 @@ class FitResult:
         if jk:
             g = len(jk["groups"])
             ratios = [v for v in jk["ratio"].values() if v is not None]
+            band_lo, band_hi = _jackknife_band(g)
             lines.append(f"jackknife: the std error from the {g} fits leaving one {jk['by']} out (the spread between "
                          f"{jk['by']}s; {g} {jk['by']}s make it itself uncertain, 95%: about "
-                         f"{_jackknife_band(g)[0]:.2g}-{_jackknife_band(g)[1]:.2g} times it)"
+                         f"{band_lo:.2g}-{band_hi:.2g} times it)"
                          + (f"; {min(ratios):.2g}-{max(ratios):.2g} times the linearised std err" if ratios else "")
                          + "".join(f"; without {g}: {', '.join(b)} at a bound (its spread understated)"
                                    for g, b in jk.get("at_bound", {}).items()))

@@ -220,9 +220,7 @@ def map_props(path) -> tuple[str, ...] | None:
                 if "prop" not in nc.variables:
                     return None
                 names = [str(n) for n in np.asarray(nc.variables["prop"][:]).ravel()]
-    except ValueError:
-        raise
-    except MemoryError:  # (too large for the memory, not a damaged file: the CLI says so)
+    except (ValueError, MemoryError):  # (MemoryError: too large for the memory, not a damaged file; the CLI says so)
         raise
     except Exception as exc:  # noqa: BLE001 -- the netCDF/HDF5 libraries raise anything on a damaged file
         raise ValueError(f"{where}: not a readable netCDF rotor map ({type(exc).__name__}: "

@@ -370,8 +370,8 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
     if len(d) > 1:  # one instance per output driver (px4io's MAIN, the FMU's AUX, UAVCAN), numbered by boot order,
         # which the log does not name: the lowest whose motor outputs vary (a review: the motors on AUX, instance 1,
         # were read from MAIN's servos at 1500 us, instance 0)
-        varying = [s for s in d if motor_columns(s)[0] is not None
-                   and all(np.ptp(np.asarray(s.data[c], float)) > 0 for c in motor_columns(s)[1])]
+        varying = [s for s, (k, cols) in ((s, motor_columns(s)) for s in d)
+                   if k is not None and all(np.ptp(np.asarray(s.data[c], float)) > 0 for c in cols)]
         chosen = varying[0] if varying else d[0]
         said.append(f"{name}: topic 'actuator_outputs' has instances {', '.join(str(s.multi_id) for s in d)} (one "
                     f"per output driver; the log does not say which is which): the motor speeds are read from instance "
@@ -410,16 +410,15 @@ def _output_motor_order(ulog, n_motors: int | None, name: str, error: type[Value
     split over drivers, missing or beyond ``n_motors`` are refused."""
     p = dict(ulog.initial_parameters)
     changed = sorted({k for _, k, v in ulog.changed_parameters if k in p and p[k] != v})
-    funcs = {k: int(v) for k, v in p.items() if _FUNC_PARAMETER.fullmatch(k)}
+    funcs = sorted((m.group(1), int(m.group(2)), int(v), k) for k, v in p.items()
+                   if (m := _FUNC_PARAMETER.fullmatch(k)))  # (prefix, output from 1, function, name)
     if funcs and p.get("SYS_CTRL_ALLOC", 1) != 0:
         motors = {}  # prefix -> {motor: lowest output index}
-        for k, v in sorted(funcs.items(), key=lambda kv: (_FUNC_PARAMETER.fullmatch(kv[0]).group(1),
-                                                          int(_FUNC_PARAMETER.fullmatch(kv[0]).group(2)))):
-            prefix, i = _FUNC_PARAMETER.fullmatch(k).groups()
+        for prefix, i, v, _ in funcs:
             if MOTOR1_FUNCTION <= v < MOTOR1_FUNCTION + MOTOR_FUNCTIONS:
-                motors.setdefault(prefix, {}).setdefault(v - MOTOR1_FUNCTION + 1, int(i) - 1)
+                motors.setdefault(prefix, {}).setdefault(v - MOTOR1_FUNCTION + 1, i - 1)
         if not motors:
-            raise error(f"{name}: the log's output functions ({', '.join(sorted(funcs)[:3])}"
+            raise error(f"{name}: the log's output functions ({', '.join(sorted(f[3] for f in funcs)[:3])}"
                         f"{' ...' if len(funcs) > 3 else ''}) assign no output a motor (Motor1..Motor12 = "
                         f"{MOTOR1_FUNCTION}..{MOTOR1_FUNCTION + MOTOR_FUNCTIONS - 1})")
         n = n_motors if n_motors is not None else max(max(m) for m in motors.values())
