@@ -261,14 +261,8 @@ def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float
     return x
 
 
-@numba.njit(inline="always", **_FLAGS)
-def snap_edge(x, lo, hi):
-    """``x`` moved onto ``lo`` or ``hi`` when outside by at most INCIDENCE_SNAP."""
-    if hi < x <= hi + INCIDENCE_SNAP:
-        return hi
-    if lo - INCIDENCE_SNAP <= x < lo:
-        return lo
-    return x
+#: :func:`snap_incidence_scalar` compiled for the kernels (one rule, one body)
+snap_edge = numba.njit(inline="always", **_FLAGS)(snap_incidence_scalar)
 
 
 #: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
