@@ -1,8 +1,8 @@
 """Rotor maps: the model tabulated over (rpm, airspeed, incidence) for real-time use (this
 module builds them; rotormap.py evaluates and checks them, and its names are re-exported here).
 
-The paper ends with "since the computation time is in the order of seconds, a
-look-up-table can be used for real-time purposes" (Gill & D'Andrea 2017, Sec. V). A map is
+The paper closes its Sec. V with "since the computation time is in the order of seconds, a
+look-up-table can be used for real-time purposes" (Gill & D'Andrea 2017). A map is
 an xarray Dataset (written as netCDF) with the loads on a rectilinear grid, the flags of
 every node, what made it (propeller geometry, parameters, model, propmap version, data
 citation) and its measured interpolation error: :func:`build_map` evaluates the full model

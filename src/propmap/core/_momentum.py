@@ -1,6 +1,6 @@
 """The momentum side of the blade-element momentum balance, and the wake's induced velocities.
 
-Glauert's mass flow of eq (10) (:func:`momentum_thrust`; Gill & D'Andrea 2017), its empirical
+Glauert's mass flow in eq (10) (:func:`momentum_thrust`; Gill & D'Andrea 2017), its empirical
 replacement in the vortex-ring and turbulent-wake states of descent (:func:`axial_mass_flow`),
 the inflow scale that sizes the root march (:func:`momentum_scale`), the linear inflow models'
 gradients (:func:`inflow_gradients`), the skewed wake's in-plane induced velocity

@@ -261,7 +261,7 @@ def rotor_loads(
     """Thrust, rotor drag and torque of a propeller at any operating point.
 
     Hybrid BET/BEMT of Gill & D'Andrea (2017), Section II: for every radial node the
-    induced inflow v_i solves dT_BET = dT_BEMT (eq 11, Glauert mass flow eq 10,
+    induced inflow v_i solves dT_BET = dT_BEMT (eq 11; eq 10 with Glauert's mass flow,
     root-selection rule in docs/solver.md), then eqs (13)-(15) are integrated over the
     blade [r_hub, R] with Gauss-Legendre in r and midpoints in azimuth. The section
     model is the paper's (eqs 3-4, :class:`AirfoilParams`) or the cambered polar

@@ -3,7 +3,8 @@
 From the disk velocity vector V (velocity of the rotor hub relative to the air), the
 rotor axis z (the thrust direction) and the spin, Gill & D'Andrea (2017) Section II
 gives beta = arccos(<V, z>/|V|) (docs/numerics.md item 1), thrust along z and rotor drag
-in the disk plane along the projection of V, against the motion (Fig. 1).
+in the disk plane along the projection of V (Fig. 1); propmap's drag is positive
+against the motion (docs/conventions.md).
 """
 
 from __future__ import annotations

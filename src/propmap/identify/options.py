@@ -85,7 +85,7 @@ ANGLES = ("alpha0", "alpha0_body", "alpha_L0", "alpha_L0_re", "collective")
 
 
 def param_names(lift_model: str) -> tuple[str, ...]:
-    """Fitted parameters of the paper's model: all four for eq 3, (cl2, cd) for footnote 1's sin-cos lift.
+    """Fitted parameters of the paper's model: all four of eqs 3-4, (cl2, cd) for footnote 1's sin-cos lift.
 
     Parameters
     ----------
