@@ -301,3 +301,38 @@ def test_radial_must_be_a_bool(apc):
     with pytest.raises(ValueError, match=r"radial must be True or False, got 'yes'"):
         pm.rotor_loads(prop, params, 800.0, 1.0, 1.0, radial="yes")
     assert pm.rotor_loads(prop, params, 800.0, 1.0, 1.0, radial=np.True_).v_i.shape == (48,)
+
+
+from propmap.vehicle.model import hover_omega  # noqa: E402 (beside its test)
+
+
+@pytest.mark.parametrize("call, said", [
+    (lambda p: pm.trim_collective(p[0], None, 5.0, 800.0), r"^params must be AirfoilParams or CamberedParams"),
+    (lambda p: pm.trim_collective(p[0], {"cl_alpha": 5.0}, 5.0, 800.0), r"^params must be .*got dict"),
+    (lambda p: pm.trim_collective(p[0], "generic", 5.0, 800.0), r"^params must be .*resolve it with"),
+    (lambda p: pm.trim_collective(p[0], p[1], 5.0, 800.0, air=1.2), r"^air must be a propmap.Air, got float"),
+    (lambda p: hover_omega(pm.read_vehicle("quadrotor"), None), r"^params must be AirfoilParams"),
+])
+def test_a_parameter_set_of_the_wrong_type_is_named(apc, call, said):
+    """Each was an AttributeError ("'NoneType' object has no attribute 'air'") from the line that
+    takes the set's air (a docstring audit, 2026-11-27): core.solver.model_air checks it first."""
+    with pytest.raises(TypeError, match=said):
+        call(apc)
+
+
+def test_validation_errors_refuse_an_unknown_model_or_run(apc):
+    """``which`` other than "model" silently gave the hover model's errors, and run ids that name
+    no run NumPy's "need at least one array to concatenate" (a docstring audit, 2026-11-27)."""
+    from propmap.io.catalogue import get_entry
+    from propmap.validation import validate
+    v = validate(get_entry("apce_8x6"), apc[0], apc[1])
+    with pytest.raises(ValueError, match=r"which must be 'model' or 'hover_model', got 'modle'"):
+        v.summary("modle")
+    with pytest.raises(ValueError, match=r"which must be 'model' or 'hover_model', got 'hover'"):
+        v.runs[0].errors("hover")
+    with pytest.raises(ValueError, match=r"run_ids \['2801'\] name no run of apce_8x6 \(its runs: .*2801rd"):
+        v.summary("model", ["2801"])
+    one = v.summary("model", "2801rd")  # one id as text is that run, not its characters
+    assert one == v.summary("model", ["2801rd"])
+    assert one["n_points"] == sum(r.CT.size for r in v.runs if r.run_id == "2801rd")
+    assert v.summary("hover_model")["ct_rmse"] != v.summary("model")["ct_rmse"]

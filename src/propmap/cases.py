@@ -31,7 +31,7 @@ import numpy as np
 from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
 from .core.hover import HoverModel
-from .core.solver import rotor_loads
+from .core.solver import model_air, rotor_loads
 
 __all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller", "gill2019_coefficients",
            "multinomial_fit"]
@@ -317,7 +317,7 @@ def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -
     return out
 
 
-def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air = Air()) -> dict[str, float]:
+def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air | None = None) -> dict[str, float]:
     """propmap's loads fitted with Gill & D'Andrea's (2019, Sec. 5) multinomial model.
 
     The model's loads on a grid of total advance ratio (GILL2019_ADVANCE) and incidence
@@ -333,6 +333,9 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     p : AirfoilParams or CamberedParams
     omega : float
         Rotation rate [rad/s], in [1, 1e5].
+    air : Air, optional
+        Default: the parameter set's own (``p.air``); the coefficients depend on it through
+        the Reynolds and Mach numbers only.
 
     Returns
     -------
@@ -349,9 +352,12 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     ------
     ValueError
         ``omega`` not a number in range.
+    TypeError
+        A propeller, parameter set or air of the wrong type.
     SolverError
         From the model.
     """
+    air = model_air(p, air, name="p")
     if isinstance(omega, (bool, np.bool_)) or not isinstance(omega, (int, float)) or not 1.0 <= omega <= 1e5:
         raise ValueError(f"omega must be a rotation rate in [1, 100000] rad/s, got {omega!r:.60}")
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
@@ -446,6 +452,9 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
         label -> parameters (e.g. the paper's Table I, the generic set); for ``gill2019``
         a value may also be a callable, catalogue name -> parameters (e.g.
         ``propmap.default_params``: each propeller's calibrated set).
+    air : Air, optional
+        The viscosity and speed of sound of every set's model (default ISA sea level); the
+        density is each test's own (below).
 
     Returns
     -------

@@ -173,7 +173,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
 
     Raises
     ------
-    ValueError
+    ValueError, TypeError
         As :func:`c_header_text`.
     OSError
         The file cannot be written.

@@ -486,7 +486,25 @@ class RotorMap:
                          MapLoads(t, d, q, m, float(omega), inside, bool(fl1[0]), y, mp))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
-        """:func:`check_map` with the model recorded in the map."""
+        """The map's interpolation error against the model recorded in it (:func:`check_map`).
+
+        Parameters
+        ----------
+        n_check : int
+            Number of random off-grid points, in [1, 1,000,000].
+        seed : int
+            Seed of the points (NumPy's ``default_rng``), >= 0.
+
+        Returns
+        -------
+        dict
+            As :func:`check_map`.
+
+        Raises
+        ------
+        ValueError, SolverError
+            As :func:`check_map`.
+        """
         return check_map(self.dataset, n_check, seed=seed)
 
 

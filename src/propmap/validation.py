@@ -25,7 +25,7 @@ import numpy as np
 
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
-from .core.solver import DEFAULT_DISCRETIZATION, Discretization, rotor_loads
+from .core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
 from .core.states import STATES
 from .io.catalogue import CatalogueEntry
 
@@ -74,10 +74,34 @@ class SweepComparison:
         return f"{self.run_id} @ {np.median(self.rpm):.0f} rpm"
 
     def errors(self, which: str) -> dict:
-        """RMSE and max |error| of CT and CP for ``which`` in {"model", "hover_model"}."""
-        ct = self.CT_model if which == "model" else self.CT_hover
-        cp = self.CP_model if which == "model" else self.CP_hover
+        """The errors of the model or the hover model on this run, in coefficient units.
+
+        Parameters
+        ----------
+        which : {"model", "hover_model"}
+
+        Returns
+        -------
+        dict
+            ``ct_rmse``, ``cp_rmse`` (rms of predicted - measured CT, CP), ``ct_max_abs``,
+            ``cp_max_abs`` (largest |error|) and ``ct_bias``, ``cp_bias`` (mean error).
+
+        Raises
+        ------
+        ValueError
+            If ``which`` is neither.
+        """
+        ct, cp = _predicted(self, which)
         return _errors(ct - self.CT, cp - self.CP)
+
+
+def _predicted(run: SweepComparison, which: str) -> tuple[np.ndarray, np.ndarray]:
+    """CT, CP of ``which`` ("model" or "hover_model") on ``run``."""
+    if which == "model":
+        return run.CT_model, run.CP_model
+    if which == "hover_model":
+        return run.CT_hover, run.CP_hover
+    raise ValueError(f"which must be 'model' or 'hover_model', got {which!r}")
 
 
 def _errors(dct, dcp) -> dict:
@@ -93,7 +117,22 @@ def _errors(dct, dcp) -> dict:
 
 @dataclass(frozen=True)
 class Validation:
-    """Result of :func:`validate`."""
+    """Result of :func:`validate`: a propeller's measured runs beside the model and the hover model.
+
+    Attributes
+    ----------
+    propeller : str
+        Catalogue name.
+    runs : list of SweepComparison
+        Every bundled run of the propeller (static runs and J-sweeps), in the catalogue's order.
+    CT_hover, CP_hover : float
+        The hover model's constant coefficients: the measured static CT and CP, averaged over
+        every point of the static runs.
+    citation : str
+        Source of the measurements.
+    params : dict
+        The section parameters the model used (their file form).
+    """
 
     propeller: str
     runs: list[SweepComparison]
@@ -103,13 +142,33 @@ class Validation:
     params: dict = field(default_factory=dict)
 
     def summary(self, which: str, run_ids=None) -> dict:
-        """Errors pooled over the measured points, for "model" or "hover_model".
+        """Errors pooled over the measured points, for the model or the hover model.
 
-        ``run_ids`` (optional): pool only the runs with these ids (e.g. held-out sweeps).
+        Parameters
+        ----------
+        which : {"model", "hover_model"}
+        run_ids : iterable of str, optional
+            Pool only the runs with these ids (e.g. held-out sweeps); default every run.
+
+        Returns
+        -------
+        dict
+            The keys of :meth:`SweepComparison.errors` over the pooled points, and
+            ``n_points``.
+
+        Raises
+        ------
+        ValueError
+            If ``which`` is neither, or ``run_ids`` names no run of the propeller.
         """
-        runs = [r for r in self.runs if run_ids is None or r.run_id in set(run_ids)]
-        ct = np.concatenate([(r.CT_model if which == "model" else r.CT_hover) - r.CT for r in runs])
-        cp = np.concatenate([(r.CP_model if which == "model" else r.CP_hover) - r.CP for r in runs])
+        ids = None if run_ids is None else ({run_ids} if isinstance(run_ids, str) else set(run_ids))
+        runs = [r for r in self.runs if ids is None or r.run_id in ids]
+        if not runs:
+            raise ValueError(f"run_ids {sorted(ids)} name no run of {self.propeller} "
+                             f"(its runs: {', '.join(dict.fromkeys(r.run_id for r in self.runs))})")
+        pred = [_predicted(r, which) for r in runs]
+        ct = np.concatenate([ct - r.CT for (ct, _), r in zip(pred, runs)])
+        cp = np.concatenate([cp - r.CP for (_, cp), r in zip(pred, runs)])
         out = _errors(ct, cp)
         out["n_points"] = int(ct.size)
         return out
@@ -145,6 +204,8 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
         Default: the parameter set's own (``.air``).
         Density used to convert coefficients; UIUC coefficients are density-normalised,
         so air only enters through the Reynolds term.
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
 
     Returns
     -------
@@ -157,7 +218,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
     SolverError
         From the solver.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     statics = entry.static_runs()
     sweeps = entry.sweeps()
     if not statics:
@@ -202,7 +263,7 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
     SolverError
         From the model.
     """
-    air = fitted.air if air is None else air
+    air = model_air(fitted, air, name="fitted")
     vf = validate(entry, propeller, fitted, air=air, discretization=discretization)
     vb = validate(entry, propeller, baseline, air=air, discretization=discretization)
     held = sorted(set(holdout))
@@ -249,6 +310,11 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
         Must contain static points with thrust and torque.
     propeller : Propeller
     params : AirfoilParams or CamberedParams
+    air : Air, optional
+        The air of the model and of the coefficients' normalisation (default: the parameter
+        set's own ``.air``).
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
     mask : array_like of bool, optional
         Points to evaluate (default all).
 
@@ -265,7 +331,7 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     SolverError
         From the model.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     CT, CP = _coefficients(data, propeller, air)
     static = data.airspeed == 0
     if not static.any():
@@ -339,6 +405,11 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     population : dict, optional
         The fits' prior statistics (io.calibration.population); for honest numbers, those
         of the catalogue without this propeller's family (``population(without=name)``).
+    air : Air, optional
+        The air of the model and of the coefficients' normalisation (default: the parameter
+        set's own ``.air``).
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
 
     Returns
     -------
@@ -352,7 +423,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     SolverError
         From the model.
     """
-    air = generic.air if air is None else air
+    air = model_air(generic, air, name="generic")
     from .identify import FitOptions, fit_loads
 
     bad = [p for p in protocols if p not in PROTOCOLS]
@@ -422,7 +493,7 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     """
     from .identify import FitOptions, fit_loads
 
-    air = base.air if air is None else air
+    air = model_air(base, air, name="base")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
     static = data.airspeed == 0
     if missing or not static.any():

@@ -8,10 +8,11 @@ from __future__ import annotations
 from .._lazy import lazy_exports
 
 _EXPORTS = {
-    "Air": "air", "AirfoilParams": "airfoil", "CamberedParams": "airfoil", "PRESETS": "airfoil",
-    "preset": "airfoil", "lift_coefficient": "polar", "drag_coefficient": "polar", "Propeller": "geometry",
-    "HoverModel": "hover", "Discretization": "solver", "DEFAULT_DISCRETIZATION": "solver", "RotorLoads": "solver",
-    "SolverError": "solver", "rotor_loads": "solver", "RotorWrench": "vector", "rotor_wrench": "vector",
+    "Air": "air", "AirfoilParams": "airfoil", "CamberedParams": "airfoil", "RotorOptions": "airfoil",
+    "PRESETS": "airfoil", "preset": "airfoil", "lift_coefficient": "polar", "drag_coefficient": "polar",
+    "Propeller": "geometry", "HoverModel": "hover", "Discretization": "solver", "DEFAULT_DISCRETIZATION": "solver",
+    "RotorLoads": "solver", "SolverError": "solver", "rotor_loads": "solver", "RotorWrench": "vector",
+    "rotor_wrench": "vector",
 }
 
 __all__ = list(_EXPORTS)

@@ -247,8 +247,25 @@ class AirfoilParams(RotorOptions):
     tip_loss, hub_loss : bool
         Prandtl's tip / hub loss factor in the momentum balance (not in the paper;
         default False, so that the model is exactly the paper's).
-    inflow, flap_compliance, collective
-        Keyword-only rotor options (:class:`RotorOptions`); their defaults are the paper's.
+    inflow : {"uniform", "drees", "pitt-peters"}, keyword-only
+        Default ``"uniform"`` (the paper's v_i(r)).
+    flap_compliance : float, keyword-only
+        1 / K_beta [rad/(N m)], in [0, 1e3]; default 0 (rigid blades, the paper's).
+    collective : float, keyword-only
+        Blade-angle offset [rad], in [-30, 30] deg; default 0.
+    descent : {"glauert", "empirical"}, keyword-only
+        Default ``"glauert"`` (the paper's momentum in every state).
+    swirl, radial_drag, inplane_induction : bool, keyword-only
+        Default False (the paper's model has none of them).
+    dynamic_stall : float, keyword-only
+        Must stay 0 (the cambered model only).
+    air : Air, keyword-only
+        The air the set goes with; default :class:`Air` () (footnote 2's).
+    label : str, keyword-only
+        Where the set comes from, for outputs; not part of equality.
+
+    The keyword-only fields are the rotor options of :class:`RotorOptions`, where each is
+    described with its source; the defaults here keep the model exactly the paper's.
 
     Raises
     ------
@@ -401,9 +418,28 @@ class CamberedParams(RotorOptions):
         Prandtl-Glauert factor on the lift.
     tip_loss, hub_loss : bool
         Prandtl's tip / hub loss factor in the momentum balance.
-    inflow, flap_compliance, collective
-        Keyword-only rotor options (:class:`RotorOptions`); the defaults are the paper's
-        uniform inflow and rigid blades.
+    inflow : {"uniform", "drees", "pitt-peters"}, keyword-only
+        Default ``"uniform"`` (the paper's v_i(r)).
+    flap_compliance : float, keyword-only
+        1 / K_beta [rad/(N m)], in [0, 1e3]; default 0 (rigid blades).
+    collective : float, keyword-only
+        Blade-angle offset [rad], in [-30, 30] deg; default 0.
+    descent : {"glauert", "empirical"}, keyword-only
+        Default ``"empirical"`` (the measured induced velocity of rotors in axial descent in
+        the vortex-ring and turbulent-wake states).
+    swirl : bool, keyword-only
+        Default False.
+    radial_drag, inplane_induction : bool, keyword-only
+        Default True (docs/models.md: measured against the wind tunnel's in-plane force).
+    dynamic_stall : float, keyword-only
+        Gormont's gamma [-], in [0, 5]; default 0 (the static polar).
+    air : Air, keyword-only
+        The air the set goes with; default :class:`Air` ().
+    label : str, keyword-only
+        Where the set comes from, for outputs; not part of equality.
+
+    The keyword-only fields are the rotor options of :class:`RotorOptions`, where each is
+    described with its source.
 
     Raises
     ------

@@ -46,6 +46,12 @@ class HoverModel:
         :meth:`from_coefficients`); :meth:`CT` and :meth:`CP` use it unless given another air.
     diameter : float, optional
         The rotor diameter [m] (recorded likewise); the default of :meth:`CT` and :meth:`CP`.
+
+    Raises
+    ------
+    ValueError
+        ``k_T`` or ``k_Q`` not a finite number, ``rho`` or ``diameter`` not a positive finite
+        number (or None).
     """
 
     k_T: float
@@ -70,6 +76,22 @@ class HoverModel:
 
         Then ``HoverModel.thrust(omega)`` equals the full model's T at V = 0 exactly at
         that ``omega`` (and within the Reynolds-number dependence elsewhere).
+
+        Parameters
+        ----------
+        propeller : Propeller
+        params : AirfoilParams or CamberedParams
+        omega : float
+            The rotation rate to calibrate at [rad/s], >= 1.
+        air : Air, optional
+            Default: the parameter set's own (``params.air``); recorded as ``rho``.
+        discretization : Discretization, optional
+            The model's nodes (default 48 x 16).
+
+        Returns
+        -------
+        HoverModel
+            With ``rho`` and ``diameter`` recorded.
 
         Raises
         ------
@@ -98,6 +120,19 @@ class HoverModel:
         k_T = CT rho D^4 / (2 pi)^2 and k_Q = CP rho D^5 / (2 pi)^3, since
         T = CT rho n^2 D^4, Q = P/Omega = CP rho n^2 D^5 / (2 pi), n = Omega/(2 pi).
 
+        Parameters
+        ----------
+        CT, CP : float
+            Static thrust and power coefficients (propeller convention) [-].
+        diameter : float
+            Rotor diameter D [m].
+        air : Air, optional
+            The air the coefficients were measured in (default ISA sea level); recorded as ``rho``.
+
+        Returns
+        -------
+        HoverModel
+
         Raises
         ------
         ValueError
@@ -114,12 +149,27 @@ class HoverModel:
                    float(CP) * air.rho * diameter**5 / (2 * math.pi) ** 3, rho=float(air.rho), diameter=float(diameter))
 
     def thrust(self, omega) -> np.ndarray:
-        """T [N] at Omega [rad/s] (any shape; a signed rate gives its magnitude's thrust). Raises
-        ValueError for a value that is not a finite number (NaN, a string)."""
+        """T = k_T Omega^2 [N].
+
+        Parameters
+        ----------
+        omega : float or array_like
+            Rotation rate Omega [rad/s], any shape (a signed rate gives its magnitude's thrust).
+
+        Returns
+        -------
+        ndarray
+            Shaped like ``omega``.
+
+        Raises
+        ------
+        ValueError
+            A value that is not a finite number (NaN, a string, a bool).
+        """
         return self.k_T * _finite_rates(omega) ** 2
 
     def torque(self, omega) -> np.ndarray:
-        """Q [N m] at Omega [rad/s] (any shape; checked as :meth:`thrust`)."""
+        """Q = k_Q Omega^2 [N m]; ``omega`` [rad/s], shapes and errors as :meth:`thrust`."""
         return self.k_Q * _finite_rates(omega) ** 2
 
     def _conditions(self, diameter, air) -> tuple[float, float]:
@@ -133,13 +183,29 @@ class HoverModel:
         return float(d), float(rho)
 
     def CT(self, diameter: float | None = None, *, air: Air | None = None) -> float:
-        """The (constant) thrust coefficient of this model for a rotor of ``diameter`` [m] (default:
-        the one recorded) in ``air`` (default: the density recorded, else ISA sea level; before
-        2026-11-26 always sea level, 26% off for a model built at 3,000 m)."""
+        """The (constant) thrust coefficient of this model, CT = k_T (2 pi)^2 / (rho D^4).
+
+        Parameters
+        ----------
+        diameter : float, optional
+            Rotor diameter D [m]; default the one recorded.
+        air : Air, optional
+            Default: the density recorded, else ISA sea level (before 2026-11-26 always sea
+            level, 26% off for a model built at 3,000 m).
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        ValueError
+            No diameter given and none recorded, or one that is not a positive finite number.
+        """
         d, rho = self._conditions(diameter, air)
         return self.k_T * (2 * math.pi) ** 2 / (rho * d**4)
 
     def CP(self, diameter: float | None = None, *, air: Air | None = None) -> float:
-        """The (constant) power coefficient of this model, as :meth:`CT`."""
+        """The (constant) power coefficient, CP = k_Q (2 pi)^3 / (rho D^5); arguments, errors as :meth:`CT`."""
         d, rho = self._conditions(diameter, air)
         return self.k_Q * (2 * math.pi) ** 3 / (rho * d**5)

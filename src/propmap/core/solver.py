@@ -215,14 +215,44 @@ def check_model_args(propeller, params, air=_UNCHECKED, discretization=_UNCHECKE
     if not isinstance(propeller, Propeller):
         raise TypeError(f"propeller must be a Propeller (propmap.load_propeller, read_geometry), "
                         f"got {type(propeller).__name__}")
-    if not isinstance(params, (AirfoilParams, CamberedParams)):
-        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(params, str) else ""
-        raise TypeError(f"params must be AirfoilParams or CamberedParams (propmap.default_params, generic_params, "
-                        f"read_params){hint}, got {type(params).__name__}")
+    _check_params(params)
     if air is not _UNCHECKED and not isinstance(air, Air):
         raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
     if discretization is not _UNCHECKED and not isinstance(discretization, Discretization):
         raise TypeError(f"discretization must be a propmap.Discretization, got {type(discretization).__name__}")
+
+
+def _check_params(params, name: str = "params") -> None:
+    if not isinstance(params, (AirfoilParams, CamberedParams)):
+        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(params, str) else ""
+        raise TypeError(f"{name} must be AirfoilParams or CamberedParams (propmap.default_params, generic_params, "
+                        f"read_params){hint}, got {type(params).__name__}")
+
+
+def model_air(params, air=None, *, name: str = "params") -> Air:
+    """The air of a model call: ``air`` where given, else the parameter set's own.
+
+    Parameters
+    ----------
+    params : AirfoilParams or CamberedParams
+    air : Air, optional
+    name : str
+        The argument's name in the caller, for the message.
+
+    Returns
+    -------
+    Air
+
+    Raises
+    ------
+    TypeError
+        ``params`` not a parameter set (a set's name included), or ``air`` not an :class:`Air`.
+    """
+    _check_params(params, name)
+    air = params.air if air is None else air
+    if not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    return air
 
 
 def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:

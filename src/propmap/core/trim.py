@@ -31,7 +31,7 @@ import numpy as np
 
 from .airfoil import Air, SectionParams
 from .geometry import Propeller
-from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads,
+from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, model_air,
                      rotor_loads)
 
 __all__ = ["TrimError", "TrimResult", "trim_collective", "torque_change_at_constant_thrust"]
@@ -146,7 +146,7 @@ def trim_collective(
     propmap.SolverError
         The inflow solve failed at some collective (the message names where).
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     from scipy.optimize import elementwise
 
     if on_missing not in ("raise", "nan"):
@@ -288,7 +288,7 @@ def torque_change_at_constant_thrust(
         e.g. a negative thrust in the windmill brake, raises TrimError); ValueError also for
         an ``omega`` of 0 (CQ undefined).
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     loads = rotor_loads(propeller, params, omega, airspeed, incidence, collective=collective, air=air,
                         discretization=discretization)
     if np.any(loads.omega <= 0):  # (CQ = Q / (rho n^2 D^5) has no value at rest: a silent NaN once)

@@ -117,7 +117,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     Parameters
     ----------
     propeller : Propeller
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
     velocity : array_like, shape S + (3,)
         Hub velocity relative to the air [m/s] (the negative of the wind seen by the
         rotor). V = 0 is allowed (beta is then irrelevant; D = 0).
@@ -154,6 +154,9 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         of :func:`rotor_loads` (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
         naming "airspeed" or "incidence" (ask for "velocity"), or refused by
         :func:`rotor_loads`.
+    TypeError
+        A propeller, parameter set, air or discretization of the wrong type
+        (:func:`propmap.core.solver.check_model_args`).
     SolverError
         As :func:`rotor_loads`.
 

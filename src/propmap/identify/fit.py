@@ -544,6 +544,9 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
     ValueError
         No datasets, ``weights`` not one positive finite number per dataset, no more fitted
         load values than parameters, or as :func:`fit_loads`.
+    TypeError
+        A dataset that is not a (LoadData, Propeller) pair, or a model argument of the wrong
+        type (as :func:`fit_loads`).
     SolverError
         From the rotor model.
     """

@@ -40,7 +40,7 @@ import numpy as np
 
 from ..core.airfoil import Air, CamberedParams, SectionParams
 from ..core.body import BodyDrag
-from ..core.solver import Discretization, differentiable, rotor_loads
+from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _params_from, _with_prior
@@ -127,7 +127,7 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
     SolverError
         From the rotor model.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     return vehicle_wrench(vehicle, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
                           rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air,
                           discretization=discretization, derivatives=derivatives)
@@ -246,7 +246,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     from ..io.calibration import generic_params
 
     base = base or generic_params()
-    air = base.air if air is None else air
+    air = model_air(base, air, name="base")
     _check_lift_model(base, options)
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
@@ -490,7 +490,7 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
         three reference entries are replaced by ``unavailable`` (the trim's message); the yaw
         channel does not need them.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     from ..core.trim import TrimError, trim_collective
     from ..io.calibration import generic_params
 

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..core.airfoil import Air, SectionParams, sigmoid_blend
 from ..core.hover import HoverModel
-from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, differentiable
+from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, differentiable, model_air
 from ..core.vector import rotor_wrench
 from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
@@ -64,7 +64,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     SolverError
         From the rotor model.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     R, vel = rotor_kinematics(data, vehicle)
     n_rot = len(vehicle.rotors)
     T = np.empty((data.n, n_rot))
@@ -168,7 +168,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     from ..core.airfoil import preset
 
     base = base or preset("gill2017-apc")
-    air = base.air if air is None else air
+    air = model_air(base, air, name="base")
     names = _default_names(base, options)
     if options.body_lift:
         if vehicle.body_area <= 0:
@@ -306,7 +306,7 @@ def hover_vertical_force(params: SectionParams, data: LevelFlightData, vehicle: 
     SolverError
         From the rotor model.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     R = body_to_world(data.pitch, data.roll)
     j0 = int(np.argmin(data.airspeed))
     out = np.zeros(data.n)

@@ -60,6 +60,28 @@ class Identifiability:
     the prior's): p without a prior, fewer as the prior holds directions the data leave free
     (the effective degrees of freedom of a ridge fit: Hastie, Tibshirani & Friedman, The
     Elements of Statistical Learning, 2nd ed. 2009, eq 3.50).
+
+    Attributes
+    ----------
+    names : tuple of str, length p
+        The fitted parameters, in the order of every array below.
+    std_error : ndarray, shape (p,)
+        Standard errors, in the parameters' SI units (angles in rad); NaN where held at a
+        bound or not determined.
+    ci95 : ndarray, shape (p, 2)
+        95% intervals (low, high), same units.
+    correlation : ndarray, shape (p, p)
+        Correlation matrix of the estimates.
+    singular_values : ndarray
+        Of J diag(max(|x|, 0.1)) (the parameters not at a bound), descending.
+    poorly_determined : tuple of str
+        Parameters whose std error exceeds POOR_REL_STD of their scale, or not finite.
+    warnings : tuple of str
+        What the report says of the identifiability.
+    std_error_data : ndarray, shape (p,), or None
+        The data's std errors alone, beside a prior's posterior ones.
+    effective_parameters : float or None
+        The trace of the posterior hat matrix (p without a prior).
     """
 
     names: tuple[str, ...]

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ..core.airfoil import Air, AirfoilParams
-from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, supersonic_tips_allowed
+from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, supersonic_tips_allowed
 from .data import LevelFlightData
 from .level_flight_fit import level_flight_forces
 from ..vehicle import Vehicle
@@ -28,7 +28,7 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
     Parameters
     ----------
     vehicle : Vehicle
-    params : AirfoilParams
+    params : AirfoilParams or CamberedParams
         The "true" parameters.
     airspeed : array_like, shape (N,)
         [m/s].
@@ -52,7 +52,7 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
     ValueError
         If no rotor speed in ``omega_bounds`` balances the weight at some condition.
     """
-    air = params.air if air is None else air
+    air = model_air(params, air)
     V = np.asarray(airspeed, float)
     pitch = np.radians(np.asarray(pitch_deg, float))
     n_rot = len(vehicle.rotors)

@@ -146,6 +146,12 @@ class Envelope:
         [rpm], within ``rpm``: where the simple model's static thrust and torque are pinned
         to the full model's. None: the geometric mean of ``rpm`` (give the vehicle's hover
         rpm where it is known; ``propmap export-sim --vehicle`` computes it).
+
+    Raises
+    ------
+    ValueError
+        A range that is not two finite numbers with low < high within rpm [1, 954929],
+        airspeed [0, 500] m/s, incidence [0, 180] deg, or a ``hover_rpm`` outside ``rpm``.
     """
 
     rpm: tuple
@@ -547,6 +553,9 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         integer >= 0; ``envelope`` not an Envelope; fewer than 10 converged points; an
         envelope where gazebo-classic's thrust fade is 0 at every point (|V_z| >= 25 m/s),
         or terms it cannot separate (:data:`MAX_CONDITION`).
+    TypeError
+        A propeller, parameter set or air of the wrong type
+        (:func:`propmap.core.solver.check_model_args`).
 
     Warns
     -----

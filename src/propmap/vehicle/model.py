@@ -40,7 +40,8 @@ from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import Propeller, has_bool, refuse_masked
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
-                           RotorLoads, check_model_args, rotor_loads, supersonic_tips_allowed)
+                           RotorLoads, check_model_args, model_air, rotor_loads,
+                           supersonic_tips_allowed)
 from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
@@ -583,7 +584,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     """
     from scipy.optimize import brentq
 
-    air = params.air if air is None else air
+    air = model_air(params, air)
     up = np.array([float(r.axis[2]) / float(np.linalg.norm(r.axis)) for r in vehicle.rotors])  # a_i . e_z, a_i unit
     if not np.any(up > 0):
         raise ValueError("no rotor's axis has an upward component: the vehicle cannot hover")
