@@ -312,6 +312,7 @@ from propmap.vehicle.model import hover_omega  # noqa: E402 (beside its test)
     (lambda p: pm.trim_collective(p[0], "generic", 5.0, 800.0), r"^params must be .*resolve it with"),
     (lambda p: pm.trim_collective(p[0], p[1], 5.0, 800.0, air=1.2), r"^air must be a propmap.Air, got float"),
     (lambda p: hover_omega(pm.read_vehicle("quadrotor"), None), r"^params must be AirfoilParams"),
+    (lambda p: pm.HoverModel.from_coefficients(0.1, 0.05, 0.2, air=1.2), r"^air must be a propmap.Air, got float"),
 ])
 def test_a_parameter_set_of_the_wrong_type_is_named(apc, call, said):
     """Each was an AttributeError ("'NoneType' object has no attribute 'air'") from the line that

@@ -137,7 +137,11 @@ class HoverModel:
         ------
         ValueError
             CT or CP not a finite number in [-1000, 1000], or the diameter not in (0, 1000] m.
+        TypeError
+            ``air`` not an :class:`Air`.
         """
+        if not isinstance(air, Air):
+            raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
         for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")
