@@ -476,3 +476,28 @@ def test_the_torque_change_of_a_stopped_rotor_is_refused_not_nan():
     with pytest.raises(ValueError, match=r"omega must be > 0 rad/s: the torque coefficient of a stopped rotor"):
         pm.torque_change_at_constant_thrust(prop, p8, np.array([0.0, 800.0]), 0.0, 0.0)
     assert np.isfinite(pm.torque_change_at_constant_thrust(prop, p8, 800.0, 2.0, 0.0)[0])
+
+
+def test_the_papers_model_fits_a_collective_offset(tmp_path, rotor, naca0015):
+    """Naming the collective (or the flap compliance) among the fitted parameters of the paper's
+    model ended in an internal error (KeyError: 'collective'): its start vector knew the four
+    section parameters only (a structural review, 2026-11-27). Synthetic data made with a
+    collective of 3 deg are fitted back to it."""
+    from propmap.identify import FitOptions, fit_loads
+    from propmap.identify.engine import _x0
+    base = pm.preset("gill2017-apc")
+    start = _x0(("cl1", "collective", "flap_compliance"), FitOptions(), base)
+    assert list(start) == [2 * math.pi, 0.0, 1.0]  # the paper's x0, the base's collective, FLAP_START at rigid
+    with pytest.raises(ValueError, match="no start for cl_alpha: not a parameter of the gill2017 model"):
+        _x0(("cl_alpha",), FitOptions(), base)
+    prop = pm.load_propeller("apce_8x6")
+    true = base.replace(collective=math.radians(3.0))
+    om = np.repeat([500.0, 700.0, 900.0], 4)
+    V = np.tile([0.0, 4.0, 8.0, 12.0], 3)
+    r = pm.rotor_loads(prop, true, om, V, 0.0)
+    data = tmp_path / "loads.csv"
+    pd.DataFrame({"rpm": om * 60 / (2 * math.pi), "airspeed": V, "thrust": r.thrust, "torque": r.torque}).to_csv(
+        data, index=False)
+    res = fit_loads(read_loads(data), prop, base=base, options=FitOptions(names=("cl1", "cd", "collective")))
+    assert math.degrees(res.x[2]) == pytest.approx(3.0, abs=1e-3)
+    assert res.x[0] == pytest.approx(true.cl1, rel=1e-4) and res.x[1] == pytest.approx(true.cd, rel=1e-3)

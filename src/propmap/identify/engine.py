@@ -18,7 +18,7 @@ from dataclasses import fields, replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FitOptions, _is_angle
+from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FLAP_START, FitOptions, _is_angle
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
 
 __all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
@@ -39,14 +39,26 @@ def _bounds(names, options: FitOptions):
     return lb, ub
 
 
-def _x0(names, options: FitOptions, base: SectionParams):
-    """Start vector: the paper's x0 for its model, the base parameters for the cambered one."""
-    if isinstance(base, CamberedParams):
-        full = {n: getattr(base, n) for n in names if hasattr(base, n)}
-    else:
-        full = dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
+def _x0(names, options: FitOptions, base: SectionParams, overrides=None) -> np.ndarray:
+    """Start vector of every fit, by precedence: ``overrides`` (a fit's own terms: the flight
+    fit's airframe), the paper's x0 for its model's four section parameters (options.x0), the
+    body-lift terms' BODY_X0, the flap compliance at the base's value or FLAP_START where that is
+    0 (its derivatives vanish at 0: the rigid blade is a flat point), every other name at the
+    base's value (the cambered parameters, the collective).
+
+    Raises
+    ------
+    ValueError
+        A name that is none of these (the message lists it).
+    """
+    full = {} if isinstance(base, CamberedParams) else dict(zip(("cl1", "cl2", "cd", "alpha0"), options.x0))
     full.update(zip(("cl1_body", "cl2_body", "alpha0_body"), BODY_X0))
-    return np.array([full[n] for n in names], float)
+    full["flap_compliance"] = base.flap_compliance or FLAP_START
+    full.update(overrides or {})
+    unknown = [n for n in names if n not in full and not hasattr(base, n)]
+    if unknown:
+        raise ValueError(f"no start for {', '.join(unknown)}: not a parameter of the {base.section_model} model")
+    return np.array([full[n] if n in full else getattr(base, n) for n in names], float)
 
 
 def _m_effect(make_data_residual, best, base: SectionParams, options: FitOptions) -> dict:

@@ -43,11 +43,11 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .continuation import _fit_with_continuation
-from .engine import _attach_jacobian, _finish, _params_from, _with_prior
+from .engine import _attach_jacobian, _finish, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
-from .options import AIRFRAME_BOUNDS, FLAP_START, FitOptions, _check_lift_model, _check_names
+from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names
 from .result import FitResult, jackknife_std_error, lag1_autocorrelation
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
@@ -263,13 +263,12 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     body0 = body or vehicle.body_drag or BodyDrag()
     # airframe terms start small but non-zero, so that every column of the Jacobian is alive
     start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),
-             "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0,
-             "flap_compliance": base.flap_compliance or FLAP_START}
+             "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0}
     if moments and samples.moment is None:
         raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
     start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]),
                  rotor_interference=vehicle.rotor_interference or 1.0)
-    x0 = np.array([start[n] if n in start else getattr(base, n) for n in names], float)
+    x0 = _x0(names, options, base, start)
     measured = samples.force
     arm = _mean_arm(vehicle)
     cg_idx = [names.index(n) if n in names else None for n in CG_NAMES]
