@@ -415,3 +415,25 @@ def test_flight_samples_built_by_hand_are_checked(change, match):
     FlightSamples(**ok)
     with pytest.raises(ValueError, match=match):
         FlightSamples(**{**ok, **change})
+
+
+def test_an_airframe_term_that_ends_at_zero_is_reported_and_written_as_zero():
+    """Data made with no lateral drag area: the fit ends drag_area_y at its bound 0, and the
+    fitted body (what the parameter file's [body] gets) holds 0 as the report does, not the
+    optimiser's last iterate (the extras were built before the engine zeroed it; a structural
+    review, 2026-11-27)."""
+    from dataclasses import replace
+
+    veh = pm.read_vehicle(VEHICLE)
+    truth = pm.generic_params().replace(collective=math.radians(5.0))
+    body = BodyDrag(drag_area=(0.01, 0.0, 0.02), wash_factor=0.0)
+    s = _synthetic(veh, truth, body, noise=0.0, n=40)
+    push = np.zeros_like(s.force)  # a lateral force along the lateral motion: a negative drag area's
+    push[:, 1] = 0.5 * 1.225 * 0.004 * s.velocity[:, 1] * np.abs(s.velocity[:, 1])
+    s = replace(s, force=s.force + push)
+    names = ("collective", "drag_area_x", "drag_area_y", "drag_area_z")
+    res = fit_flight(s, veh, options=FitOptions(names=names, prior=False), discretization=COARSE)
+    k = names.index("drag_area_y")
+    assert "drag_area_y" in res.at_bound and res.x[k] == 0.0 and fitted_body_drag(res).drag_area[1] == 0.0
+    assert res.extra["body_drag"]["drag_area"][1] == 0.0
+    assert fitted_body_drag(res).drag_area[0] == res.x[names.index("drag_area_x")]
