@@ -1069,3 +1069,29 @@ def test_validate_labels_the_catalogues_own_data_as_in_sample(tmp_path, capsys, 
     assert "2803rd (held out)" in out and "2798rd (fitted)" in out
     assert main(["validate", *files, "--prop", "apce_8x6"]) == 0
     assert "2804rd (fitted)" in capsys.readouterr().out  # (the calibrated set saw every run)
+
+
+def test_a_value_under_an_unnamed_column_is_refused_not_dropped(tmp_path, capsys):
+    """A comma-separated file with decimal commas and a trailing separator in its header
+    (``RPM,Thrust (gf),`` then ``1975,55,27``) was read as 55 gf, the decimals dropped in the
+    unnamed column; a points file likewise read 10,5 m/s as 10 m/s (an input fuzzing audit,
+    2026-11-27). A trailing separator with nothing under it, and a first unnamed column (a row
+    index), stay read."""
+    bad = tmp_path / "gf.csv"
+    bad.write_text("RPM,Thrust (gf),\n1975,55,27\n2292,75,95\n")
+    with pytest.raises(DataError, match=r"line 2: column 3 has no name in the header but holds '27' \(a number "
+                                        r"with a decimal comma in a comma-separated file\?"):
+        read_loads(bad)
+    ok = tmp_path / "ok.csv"
+    rpm, gf = np.arange(2000, 8000, 1000), np.arange(40.25, 46.25)
+    ok.write_text(",RPM,Thrust (gf),\n" + "".join(f"{k},{r},{t},\n" for k, (r, t) in enumerate(zip(rpm, gf))))
+    np.testing.assert_allclose(read_loads(ok).measured["thrust"], gf * 9.80665e-3)
+    pts = tmp_path / "pts.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,\n5000,10,5,30\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
+    assert capsys.readouterr().err.strip().endswith(
+        "line 2: column 4 has no name in the header but holds '30' (a number with a decimal comma in a "
+        "comma-separated file? save it with decimal points, or with ';' as the separator): name the column or "
+        "remove it")
+    pts.write_text(",rpm,airspeed,incidence_deg,\n0,5000,10.5,30,\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0

@@ -96,7 +96,7 @@ def _points_reader(path: Path, chunksize: int):
     if long:
         raise InputError(f"{where}, line 1: a column name of {len(long[0])} characters (at most {MAX_NAME})")
     lower = [n.lower() for n in names]
-    dup = sorted({n for n in lower if lower.count(n) > 1})
+    dup = sorted({n for n in lower if n and lower.count(n) > 1})  # (unnamed ones: checked for values per row)
     if dup:
         raise InputError(f"{where}: duplicate column(s) {', '.join(repr(d) for d in dup)}")
     from ..identify.stand import map_operating_columns
@@ -113,7 +113,8 @@ def _points_reader(path: Path, chunksize: int):
         with warnings.catch_warnings():
             warnings.simplefilter("error", pd.errors.ParserWarning)
             reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
-                                 skip_blank_lines=False, header=0, names=names, index_col=False, chunksize=chunksize)
+                                 skip_blank_lines=False, header=0, index_col=False, chunksize=chunksize,
+                                 names=[n or f"(unnamed {j})" for j, n in enumerate(names)])  # (pandas: unique)
     except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
             ValueError) as exc:
         raise _parse_error(path, exc, sep, len(names)) from None
@@ -159,7 +160,10 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     import pandas as pd
 
     reader, names, sep, mapped = _points_reader(path, chunksize)
+    from ..identify.csvfile import unnamed_value_message
+
     cols = {c: mapped[c][0] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in mapped}
+    unnamed = [j for j, name in enumerate(names) if not name and j > 0]  # (the first: a row index)
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2
@@ -176,6 +180,12 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                     df, lines = df[~blank], lines[~blank]
                 if len(df) == 0:
                     continue
+                for j in unnamed:
+                    held = (df.iloc[:, j].str.strip() != "").to_numpy()
+                    if held.any():
+                        i = int(np.argmax(held))
+                        raise InputError(f"--points: {path}, line {lines[i]}: "
+                                         + unnamed_value_message(j, df.iloc[i, j].strip(), sep))
                 values = {}
                 for c, name in cols.items():
                     text = df[name].str.strip()
