@@ -754,3 +754,32 @@ def test_a_blade_count_in_a_geometry_files_name_is_compared(tmp_path, stem):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert read_geometry(p, n_blades=3).diameter == pytest.approx(6 * 0.0254)
+
+
+@pytest.mark.parametrize("name, want", [("roll (deg)", "roll_deg"), ("roll", "roll_deg"), ("Roll_rad", "roll_deg"),
+                                        ("airspeed_kmh", "airspeed"), ("p (deg/s)", "p, q, r"),
+                                        ("pitch_rate", "p, q, r")])
+def test_level_flight_refuses_a_known_quantity_under_another_name(tmp_path, quad, name, want):
+    """A roll or a body rate under another name or with a unit was ignored and read as 0 (a roll
+    of 10 deg fitted as level flight; an input fuzzing audit, 2026-11-27)."""
+    lines = FLIGHT.strip().splitlines()
+    text = "\n".join([lines[0] + f",{name}"] + [ln + ",10" for ln in lines[1:]]) + "\n"
+    msg = refused(DataError, read_level_flight, _write(tmp_path, "d.csv", text), quad,
+                  match=f"line 1: column '{re.escape(name)}' is not read")
+    assert f"give this one as {want}" in msg
+
+
+def test_level_flight_warns_of_a_mistyped_rotor_and_of_speeds_far_from_hover(tmp_path, quad):
+    """A truncated value (646 among 6470 rpm) and rotor speeds in rad/s were fitted without a word
+    (an input fuzzing audit, 2026-11-27); the bundled example gets no warning."""
+    from propmap.identify.level_flight import level_flight_warnings
+    assert level_flight_warnings(read_level_flight(DATA / "examples" / "level_flight_synthetic.csv", quad), quad) == []
+    lines = FLIGHT.strip().splitlines()
+    cut = lines[:4] + [lines[4].rsplit(",", 1)[0] + ",529"] + lines[5:]
+    w = level_flight_warnings(read_level_flight(_write(tmp_path, "d.csv", "\n".join(cut) + "\n"), quad), quad)
+    assert len(w) == 1 and w[0].startswith("data row 4: rpm_4 = 529 is 0.1 times the row's median rotor speed")
+    head, rows = lines[0], [ln.split(",") for ln in lines[1:]]
+    radps = [",".join(r[:2] + [f"{float(x) * math.pi / 30:.3f}" for x in r[2:]]) for r in rows]
+    w = level_flight_warnings(read_level_flight(_write(tmp_path, "r.csv", "\n".join([head] + radps) + "\n"), quad),
+                              quad)
+    assert len(w) == 1 and "0.11 times the vehicle's hover speed" in w[0] and "(not rad/s or rev/s)" in w[0]

@@ -227,6 +227,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
 
     from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
                             read_vehicle)
+    from ..identify.level_flight import level_flight_warnings
     from ..identify.level_flight_fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
 
@@ -241,6 +242,8 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
         d = read_level_flight(data, veh)
     except DataError as exc:
         raise InputError(f"DATA: {exc}") from None
+    for w in level_flight_warnings(d, veh):
+        warn(f"DATA: {w}")
     base, air, base_label = load_params(base_spec, option="--base")
     air = resolve_air(air, air_choice)
     opts = replace(_options(fit_choice, base, base_label), body_lift=body_lift)

@@ -4,6 +4,7 @@ the rotors' kinematics (the CSV rules and errors: identify/csvfile.py).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -76,6 +77,27 @@ def _rotor_order(column: str):
     return (0, int(m.group(1)), column) if m else (1, 0, column)
 
 
+#: the columns read, and what a column named otherwise for the same quantity must be called
+_READ = {"airspeed": "airspeed [m/s]", "pitch": "pitch_deg", "roll": "roll_deg", "p": "p, q, r [rad/s]",
+         "q": "p, q, r [rad/s]", "r": "p, q, r [rad/s]", "rpm": "rpm_1 .. rpm_n"}
+
+
+def _refuse_near_misses(f: _Csv, rpm_cols, what: str) -> None:
+    """Refuse a column that names a quantity the file is read for under another name or with a
+    unit (``roll (deg)``, ``roll``, ``p (deg/s)``, ``airspeed_kmh``): it was ignored, its values
+    read as 0 (an input fuzzing audit, 2026-11-27: a roll of 10 deg fitted as level)."""
+    known = {"airspeed", "pitch_deg", "roll_deg", "p", "q", "r", *rpm_cols}
+    for j, c in enumerate(f.columns):
+        if not c or c in known:
+            continue
+        stem = re.split(r"[\s(\[_/]", c, maxsplit=1)[0]
+        if stem in _READ:
+            want = "p, q, r [rad/s]" if "rate" in c else _READ[stem]
+            raise f.error(f"column {f.header[j]!r} is not read: the level-flight columns are airspeed [m/s], "
+                          f"pitch_deg and roll_deg [deg], p, q, r [rad/s] and rpm_1 .. rpm_n [rpm], without other "
+                          f"units; give this one as {want}", f.header_line)
+
+
 def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> LevelFlightData:
     """Read level-flight conditions: columns ``airspeed, pitch_deg, rpm_1 .. rpm_n``,
     optional ``roll_deg`` and body rates ``p, q, r`` [rad/s] (all three or none).
@@ -116,6 +138,7 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
     missing = [c for c in ("airspeed", "pitch_deg") if c not in f.index]
     if missing:
         raise DataError(f"{what}: {p} lacks column(s) {', '.join(missing)}")
+    _refuse_near_misses(f, rpm_cols, what)
     rates_given = [c for c in ("p", "q", "r") if c in f.index]
     if rates_given and len(rates_given) < 3:
         raise DataError(f"{what}: {p} has body-rate column(s) {', '.join(rates_given)} but not "
@@ -133,6 +156,48 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
     rates = np.column_stack([v[c] for c in "pqr"]) if rates_given else np.zeros((n, 3))
     rpm = base[:, 2:]
     return LevelFlightData(v["airspeed"], np.radians(v["pitch_deg"]), np.radians(roll), rpm * RPM, rates)
+
+
+#: a rotor this many times slower or faster than its condition's median rotor speed is named
+ROTOR_SPREAD = 3.0
+
+
+def level_flight_warnings(data: LevelFlightData, vehicle: Vehicle) -> list[str]:
+    """What in level-flight data looks mistyped, as warnings (none of it is refused: a vehicle
+    may carry rotors of different sizes, a condition may be flown far from hover).
+
+    Parameters
+    ----------
+    data : LevelFlightData
+    vehicle : Vehicle
+
+    Returns
+    -------
+    list of str
+        A condition with a rotor more than ROTOR_SPREAD times slower or faster than the
+        condition's median rotor speed (a truncated or mistyped value: 646 among 6470 rpm, an
+        input fuzzing audit, 2026-11-27); rotor speeds whose rms over the conditions lies
+        outside HOVER_RANGE (0.5-2.5) times the vehicle's hover speed with the generic set
+        (rad/s in the rpm columns, the mass in grams), as the flight logs' check.
+    """
+    from .flight_samples import HOVER_RANGE, _hover_speed
+
+    out = []
+    om = np.asarray(data.omega, float)
+    ratio = om / np.median(om, axis=1, keepdims=True)
+    odd = np.argwhere((ratio > ROTOR_SPREAD) | (ratio < 1 / ROTOR_SPREAD))
+    if odd.size:
+        i, k = (int(v) for v in odd[0])
+        out.append(f"data row {i + 1}: rpm_{k + 1} = {om[i, k] / RPM:.6g} is {ratio[i, k]:.2g} times the row's "
+                   f"median rotor speed ({odd.shape[0]} such value(s)): a truncated or mistyped value?")
+    hover = _hover_speed(vehicle)
+    if hover > 0:
+        rms = float(np.sqrt(np.mean(om**2)))
+        if not HOVER_RANGE[0] * hover <= rms <= HOVER_RANGE[1] * hover:
+            out.append(f"the rotors' rms speed is {rms / RPM:.5g} rpm, {rms / hover:.2g} times the vehicle's hover "
+                       f"speed {hover / RPM:.5g} rpm (its mass {vehicle.mass:g} kg, the generic set): are the rpm "
+                       "columns in rpm (not rad/s or rev/s) and the mass in kg?")
+    return out
 
 
 def body_to_world(pitch, roll) -> np.ndarray:
