@@ -1095,3 +1095,19 @@ def test_a_value_under_an_unnamed_column_is_refused_not_dropped(tmp_path, capsys
         "remove it")
     pts.write_text(",rpm,airspeed,incidence_deg,\n0,5000,10.5,30,\n")
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+
+
+@pytest.mark.parametrize("name", ["Pitch (deg)", "pitch", "blade_angle_deg", "Blade angle (°)", "pitch_angle_rad"])
+def test_a_blade_pitch_column_under_another_name_is_refused(tmp_path, name):
+    """A collective sweep whose blade angle was written as 'Pitch (deg)', 'pitch' or
+    'blade_angle_deg' was fitted at collective 0 without a word (an input fuzzing audit,
+    2026-11-27); a propeller's geometric pitch in inches is not a setting and stays unread."""
+    rows = "".join(f"6000,{c},{1 + 0.1 * c},{0.02 + 0.001 * c}\n" for c in range(0, 12, 2))
+    f = tmp_path / "sweep.csv"
+    f.write_text(f"rpm,{name},thrust,torque\n" + rows)
+    with pytest.raises(DataError, match=f"column '{re.escape(name)}' looks like a blade pitch setting, which "
+                                        "propmap reads only as 'collective_deg'"):
+        read_loads(f)
+    f.write_text("rpm,pitch (in),thrust,torque\n" + "".join(f"{3000 + 500 * k},6,{1 + 0.1 * k},0.02\n"
+                                                            for k in range(6)))
+    assert read_loads(f).collective is None

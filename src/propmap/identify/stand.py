@@ -86,6 +86,10 @@ _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "f
 _ADVANCE_LIKE = ("advance ratio", "advance_ratio")
 _ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "incidence angle",
                "angle of incidence")
+#: a blade pitch setting under another name than collective_deg (its points were fitted at collective 0: an input
+#: fuzzing audit, 2026-11-27)
+_PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective pitch", "pitch setting",
+               "blade pitch angle", "blade setting", "blade setting angle", "pitch_angle", "blade_angle", "blade_pitch")
 #: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, a stand's tilt): a note
 _AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
               "tilt": "incidence_deg", "tilt angle": "incidence_deg", "inclination": "incidence_deg",
@@ -334,6 +338,14 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
                             + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
+    if "collective_deg" not in cm.columns:  # a blade pitch setting under another name, in degrees, radians or none
+        pitch = [n for n, (b, u) in split.items() if b not in _NAMES and (u is None or _token(u) in UNITS["angle"])
+                 and stems.get(n, frozenset({b})) & _loose(_PITCH_LIKE)]
+        if pitch:
+            raise error(f"column {pitch[0]!r} looks like a blade pitch setting, which propmap reads only as "
+                        "'collective_deg' (the angle added to the geometry's blade angles at every station, "
+                        "[deg]): rename it, converted, or remove it; left unread, every point would be taken at the "
+                        "geometry's blade angles (collective 0)")
     if "thrust" not in cm.columns:  # (a force under a name propmap does not read: 'Force (N)' was left out unsaid,
         # and a torque-only fit ran: a user-level audit)
         forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
