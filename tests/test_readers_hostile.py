@@ -783,3 +783,20 @@ def test_level_flight_warns_of_a_mistyped_rotor_and_of_speeds_far_from_hover(tmp
     w = level_flight_warnings(read_level_flight(_write(tmp_path, "r.csv", "\n".join([head] + radps) + "\n"), quad),
                               quad)
     assert len(w) == 1 and "0.11 times the vehicle's hover speed" in w[0] and "(not rad/s or rev/s)" in w[0]
+
+
+@pytest.mark.parametrize("damage", ["blank", "short", "decimal commas"])
+def test_a_pe0_station_table_cut_short_by_a_damaged_row_is_refused(tmp_path, damage):
+    """A blank, short or decimal-comma row near the tip ended the station table there: the rows
+    after it were dropped and the tip extrapolated, +0.4% thrust, without a word (an input
+    fuzzing audit, 2026-11-27). The intact file reads all its stations."""
+    lines = PE0.splitlines(keepends=True)
+    rows = [k for k, ln in enumerate(lines) if len(ln.split()) >= 13 and ln.split()[0][0].isdigit()]
+    whole = read_apc_pe0(_write(tmp_path, "8x6-PERF.PE0", PE0))
+    assert whole.r.size == len(rows)
+    k = rows[-3]
+    cut = {"blank": "\n", "short": " ".join(lines[k].split()[:12]) + "\n",
+           "decimal commas": lines[k].replace(".", ",")}[damage]
+    bad = _write(tmp_path, "8x6b-PERF.PE0", "".join(lines[:k] + [cut] + lines[k + 1:]))
+    refused(GeometryFileError, read_apc_pe0, bad, match=f"line {k + 1}: the station table breaks off here .* goes "
+                                                        f"on at line {k + 2}: repair line {k + 1}")

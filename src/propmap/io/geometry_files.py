@@ -290,6 +290,24 @@ def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propelle
     return _apc_pe0(Path(path), text, name=name, source=source)
 
 
+def _pe0_table_continues(lines, end: int, where: str) -> None:
+    """Refuse a station table that a damaged row (blank, short, decimal commas) cut short: a
+    station row of 13 numbers after the line ``end`` that ended it, before the file's next
+    header-like line (an input fuzzing audit, 2026-11-27: the rows after a blank line near the
+    tip were dropped and the tip extrapolated without a word)."""
+    for k in range(end + 1, len(lines) + 1):
+        parts = lines[k - 1].split()
+        if any(re.match(r"[A-Za-z]", x) for x in parts):
+            return  # the next section
+        try:
+            vals = [parse_number(x) for x in parts]
+        except ValueError:
+            continue
+        if len(vals) >= 13:
+            raise GeometryFileError(f"{where}, line {end}: the station table breaks off here (a blank, short or "
+                                    f"malformed row) and goes on at line {k}: repair line {end}")
+
+
 def _pe0_summary(text: str, key: str, where: str) -> tuple[str, int]:
     m = re.search(rf"{key}:[ \t]*(\S*)", text)
     if not m:
@@ -301,7 +319,9 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
     where = show_path(path)
     rows, row_lines, header = [], [], []
     in_table = False
-    for k, ln in enumerate(io.StringIO(text, newline=None), start=1):
+    lines = io.StringIO(text, newline=None).readlines()
+    end = None  # the line that ended the station table
+    for k, ln in enumerate(lines, start=1):
         parts = ln.split()
         if "STATION" in parts and "TWIST" in parts:
             in_table, header = True, parts
@@ -320,6 +340,7 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
             if len(parts) >= 13 and vals:  # a station row (it starts with a number) with a bad value
                 raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
             if rows:
+                end = k
                 break
             continue  # the units line under the header
         if len(vals) >= 13:
@@ -331,9 +352,12 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
             rows.append(vals[:13])
             row_lines.append(k)
         elif rows:
+            end = k
             break
     if not rows:
         raise GeometryFileError(f"{where}: no STATION/CHORD/.../TWIST table found")
+    if end is not None:
+        _pe0_table_continues(lines, end, where)
     r_raw, r_line = _pe0_summary(text, "RADIUS", where)
     b_raw, b_line = _pe0_summary(text, "BLADES", where)
     try:
