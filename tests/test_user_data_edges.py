@@ -1111,3 +1111,15 @@ def test_a_blade_pitch_column_under_another_name_is_refused(tmp_path, name):
     f.write_text("rpm,pitch (in),thrust,torque\n" + "".join(f"{3000 + 500 * k},6,{1 + 0.1 * k},0.02\n"
                                                             for k in range(6)))
     assert read_loads(f).collective is None
+
+
+def test_a_points_file_below_100_rpm_is_warned_of(tmp_path, capsys):
+    """A ';'-separated points file written with thousands separators (5.000 for 5000 rpm) was
+    solved at 5 rpm without a word (an input fuzzing audit, 2026-11-27)."""
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm;airspeed;incidence_deg\n5.000;0;0\n6.500;0;0\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+    assert "rpm as low as 5, below 100 rpm: a thousands separator read as a decimal point" in capsys.readouterr().err
+    pts.write_text("rpm;airspeed;incidence_deg\n5000;0;0\n6500;0;0\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+    assert "below 100 rpm" not in capsys.readouterr().err

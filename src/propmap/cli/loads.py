@@ -453,6 +453,10 @@ def check_collective(collective_deg):
     return float(collective_deg)
 
 
+#: a points file's rotation rate below which a misread is suspected [rpm]
+SLOW_RPM = 100.0
+
+
 def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float],
                                                               float]:
     """(points, extremes, rpm range, largest airspeed) of a points file, every value checked (InputError on the
@@ -481,4 +485,8 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
     hint = radians_hint(seen, np.full(len(seen), np.inf)) if bare else None
     if hint:
         warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
+    if lo < SLOW_RPM:  # (a ';' file's 5.000 for 5000 read as 5 rpm, an input fuzzing audit: Re of about 40)
+        warnings.warn(f"--points: {path}: rpm as low as {lo:g}, below {SLOW_RPM:g} rpm: a thousands separator read "
+                      "as a decimal point ('5.000' for 5000), or rev/s? (a propeller there makes almost no thrust)",
+                      stacklevel=2)
     return n, ext, (lo, hi), v_max
