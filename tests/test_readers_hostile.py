@@ -800,3 +800,22 @@ def test_a_pe0_station_table_cut_short_by_a_damaged_row_is_refused(tmp_path, dam
     bad = _write(tmp_path, "8x6b-PERF.PE0", "".join(lines[:k] + [cut] + lines[k + 1:]))
     refused(GeometryFileError, read_apc_pe0, bad, match=f"line {k + 1}: the station table breaks off here .* goes "
                                                         f"on at line {k + 2}: repair line {k + 1}")
+
+
+@pytest.mark.parametrize("line", ["RPM average = 4,998", "RPM average = 4998 rpm", "rpm: 4 998"])
+def test_a_sweep_rate_line_that_is_not_a_plain_number_is_refused(tmp_path, line):
+    """'RPM average = 4,998' was not read as the rate, and the file name's nominal rpm (0.4% off)
+    taken without a word (an input fuzzing audit, 2026-11-27)."""
+    body = (UIUC / "apce_8x6_2798rd_4009.txt").read_text()
+    f = _write(tmp_path, "apce_8x6_2801rd_4004.txt", line + "\n" + body)
+    refused(MeasurementFileError, read_uiuc_sweep, f, match=f"line 1: '{re.escape(line)}': the rate must be a plain "
+                                                            "number")
+    assert read_uiuc_sweep(_write(tmp_path, "b_8x6_r_4004.txt", "RPM average = 4998\n" + body)).rpm == 4998
+
+
+def test_a_copy_suffix_in_a_sweep_file_name_is_not_its_rate(tmp_path):
+    """apce_10x7_pg0813_5018_2.txt was read at 2 rpm (an input fuzzing audit, 2026-11-27)."""
+    body = (UIUC / "apce_8x6_2798rd_4009.txt").read_text()
+    f = _write(tmp_path, "apce_8x6_2801rd_4004_2.txt", body)
+    refused(MeasurementFileError, read_uiuc_sweep, f, match=r"the rpm '2' at the end of the file name is 2, below "
+                                                            r"100 rpm: not a sweep's rate \(a copy's suffix\?\)")

@@ -14,8 +14,10 @@ here.
 from __future__ import annotations
 
 import codecs
+import io
 import math
 import os
+import re
 import stat
 from dataclasses import dataclass
 from pathlib import Path
@@ -160,7 +162,9 @@ def read_uiuc_sweep(path) -> Sweep:
     """
     path = Path(path)
     where = show_path(path)
-    t = _read_table(path, _read_text(path, MeasurementFileError), ["J", "CT", "CP", "eta"], MeasurementFileError)
+    text = _read_text(path, MeasurementFileError)
+    t = _read_table(path, text, ["J", "CT", "CP", "eta"], MeasurementFileError)
+    _check_rpm_lines(text, t, where)
     _check_column(t, 0, "J", 0.0, J_MAX, path, MeasurementFileError)
     _check_column(t, 1, "CT", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     _check_column(t, 2, "CP", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
@@ -183,9 +187,32 @@ def read_uiuc_sweep(path) -> Sweep:
                                    "the end of the file name (<fam>_<D>x<P>_<run>_<RPM>.txt)") from None
     if not (math.isfinite(rpm) and 0 < rpm <= RPM_MAX):
         raise MeasurementFileError(f"{what} is outside (0, {RPM_MAX:.0f}] rpm")
+    if item is None and rpm < NAME_RPM_MIN:  # (apce_10x7_pg0813_5018_2.txt, a copy's suffix, was read at 2 rpm)
+        raise MeasurementFileError(f"{what} is {rpm:g}, below {NAME_RPM_MIN:g} rpm: not a sweep's rate (a copy's "
+                                   "suffix?); name the file <fam>_<D>x<P>_<run>_<RPM>.txt or give the rate in an "
+                                   "'RPM average = N' line")
     run = parts[-2] if len(parts) >= 2 else path.stem
     _check_efficiency(d, where)
     return Sweep(run, rpm, d[:, 0], d[:, 1], d[:, 2], d[:, 3], f"UIUC Propeller Data Site, {path.name}")
+
+
+#: the lowest rpm taken from a sweep file's name (UIUC's nominal rates: 1,500 rpm and up)
+NAME_RPM_MIN = 100.0
+#: a line that gives a sweep's measured rate, whatever its value's form
+_RPM_LINE = re.compile(r"\s*(rpm\s*average|average\s*rpm|rpm)\s*[=:]\s*(.*?)\s*$", re.I)
+
+
+def _check_rpm_lines(text: str, table, where: str) -> None:
+    """Refuse an 'RPM average = N' line whose value is not a plain number (``4,998``, ``4998
+    rpm``): it was not read as the rate and the file name's nominal rpm was taken instead, 0.4%
+    off, without a word (an input fuzzing audit, 2026-11-27)."""
+    if any(k.lower().replace(" ", "") in ("rpmaverage", "averagerpm", "rpm") for k in table.meta):
+        return
+    for k, ln in enumerate(io.StringIO(text, newline=None), start=1):
+        m = _RPM_LINE.fullmatch(ln.rstrip("\n"))
+        if m:
+            raise MeasurementFileError(f"{where}, line {k}: {_clip(ln.strip(), 60)}: the rate must be a plain number "
+                                       "(4998: no thousands separator, no unit)")
 
 
 #: a sweep whose eta departs from J CT / CP by more than this in the median is warned (the 1,917 UIUC
