@@ -517,3 +517,20 @@ def test_a_params_path_that_is_no_regular_file_is_named_as_such(tmp_path, capsys
         assert main(["loads", "apce_8x6", "--rpm", "5000", "--params", spec]) == 2
         err = capsys.readouterr().err.strip().splitlines()
         assert len(err) == 1 and said in err[0], err
+
+
+def test_the_error_is_the_last_line_after_the_warnings(capsys, tmp_path):
+    """A vehicle file's warning was printed after the command's error line, so that stderr's last
+    line was a warning (an input fuzzing audit, 2026-11-27: a mass in grams)."""
+    from propmap.cli.main import main
+
+    veh = (Path(__file__).parents[1] / "src" / "propmap" / "data" / "examples" / "quadrotor.toml").read_text()
+    assert "mass = 0.8" in veh
+    v = tmp_path / "veh.toml"
+    v.write_text(veh.replace("mass = 0.8", "mass = 800"))  # grams: warned of
+    data = tmp_path / "lf.csv"
+    data.write_text("airspeed,pitch_deg,rpm_1,rpm_2,rpm_3,rpm_4\n1,0,5000,5000,5000,5000\n")  # one row: refused
+    assert main(["fit", "level-flight", str(data), "--vehicle", str(v), "--out", str(tmp_path / "p.toml")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) >= 2 and err[-1].startswith("propmap: error: ") and all(
+        ln.startswith("propmap: warning: ") for ln in err[:-1]), err

@@ -111,6 +111,7 @@ def _main(argv: list[str] | None) -> int:
     except ValueError:  # not the main thread
         previous = None
     caught: list = []
+    said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -123,38 +124,38 @@ def _main(argv: list[str] | None) -> int:
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except click.exceptions.Abort:
-        click.echo("propmap: aborted", err=True)
+        said.append("propmap: aborted")
         return 130
     except click.exceptions.NoArgsIsHelpError as exc:  # `propmap` or `propmap fit` alone: the help
         click.echo(exc.ctx.get_help() if exc.ctx else cli.get_help(click.Context(cli)))
         return 0
     except click.UsageError as exc:  # unknown option, bad type, missing argument: exit 2
-        click.echo(f"propmap: error: {_one_line(exc.format_message())}", err=True)
+        said.append(f"propmap: error: {_one_line(exc.format_message())}")
         return 2
     except click.ClickException as exc:
-        click.echo(f"propmap: error: {_one_line(exc.format_message())}", err=True)
+        said.append(f"propmap: error: {_one_line(exc.format_message())}")
         return exc.exit_code
     except KeyboardInterrupt:
-        click.echo("propmap: interrupted", err=True)
+        said.append("propmap: interrupted")
         return 130
     except OSError as exc:  # an unusable file the commands did not name (the system's reason and the file)
         name = str(exc.filename or "")
         name = name if len(name) <= 80 else name[:77] + "..."
-        click.echo(f"propmap: error: {exc.strerror or _one_line(exc)}{': ' + name if name else ''}", err=True)
+        said.append(f"propmap: error: {exc.strerror or _one_line(exc)}{': ' + name if name else ''}")
         return 2
     except ValueError as exc:  # bad input that reached the library
-        click.echo(f"propmap: error: {_one_line(exc)}", err=True)
+        said.append(f"propmap: error: {_one_line(exc)}")
         return 2
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 1
     except MemoryError as exc:  # (an input too large for this machine, not a bug: it read "please report it")
-        click.echo(f"propmap: error: out of memory ({_one_line(exc) or 'MemoryError'}): the input is too large for "
-                   "this machine's memory; give less at once (a shorter log, fewer points, a lower --rate-hz or a "
-                   "smaller grid)", err=True)
+        said.append(f"propmap: error: out of memory ({_one_line(exc) or 'MemoryError'}): the input is too large for "
+                    "this machine's memory; give less at once (a shorter log, fewer points, a lower --rate-hz or a "
+                    "smaller grid)")
         return 2
     except Exception as exc:  # a bug: still one line, and how to report it
-        click.echo(f"propmap: error: internal error ({type(exc).__name__}: {_one_line(exc)}); "
-                   "please report it with the command line", err=True)
+        said.append(f"propmap: error: internal error ({type(exc).__name__}: {_one_line(exc)}); "
+                    "please report it with the command line")
         return 1
     finally:
         for timer in _redelivery:
@@ -169,6 +170,8 @@ def _main(argv: list[str] | None) -> int:
                 continue
             seen.add(str(w.message))
             click.echo(f"propmap: warning: {_one_line(w.message)}", err=True)
+        for line in said:
+            click.echo(line, err=True)
     return 0
 
 
