@@ -1123,3 +1123,17 @@ def test_a_points_file_below_100_rpm_is_warned_of(tmp_path, capsys):
     pts.write_text("rpm;airspeed;incidence_deg\n5000;0;0\n6500;0;0\n")
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
     assert "below 100 rpm" not in capsys.readouterr().err
+
+
+def test_messages_for_an_empty_file_and_a_long_row_name_them(tmp_path, capsys):
+    """'a fit needs at least 1 distinct operating points (propmap validate compares any number)'
+    from validate itself, and pandas' 'C error: Expected 3 fields in line 4, saw 4' (an input
+    fuzzing audit, 2026-11-27)."""
+    empty = tmp_path / "e.csv"
+    empty.write_text("rpm,airspeed,thrust,torque\n")
+    assert main(["validate", str(empty), "--prop", "apce_10x7"]) == 2
+    assert capsys.readouterr().err.strip().endswith("has 0 points; no data rows under the header")
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm,airspeed,incidence_deg\n3000,0,0\n5000,5,0\n5000,10,30,7\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
+    assert capsys.readouterr().err.strip().endswith(": line 4 has 4 fields, but the header has 3")

@@ -141,6 +141,10 @@ def _parse_error(path: Path, exc: Exception, sep: str, width: int) -> InputError
                           "save it as UTF-8 CSV")
     if isinstance(exc, Warning):  # pandas' ParserWarning: a row with more fields than the header
         return InputError(f"--points: {path}: {_long_row(path, sep, width)}has more fields than the header")
+    m = re.search(r"Expected (\d+) fields in line (\d+), saw (\d+)", str(exc))
+    if m:  # (pandas' C parser: a row longer than the first data row, the header's width)
+        return InputError(f"--points: {path}: line {m.group(2)} has {m.group(3)} fields, but the header has "
+                          f"{m.group(1)}")
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 

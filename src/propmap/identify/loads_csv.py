@@ -250,8 +250,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                    written={q: cm.columns[q][:2] for q in cm.columns})
     if n < min_points:
         steps = " (one per ESC step: its rows averaged)" if averaged else ""
-        raise DataError(f"{what}: {p} has {n} points{steps}; a fit needs at least {min_points} distinct operating "
-                        "points (propmap validate compares any number)")
+        raise DataError(f"{what}: {p} has {n} points{steps}; " + (
+            "no data rows under the header" if n == 0 else
+            f"a fit needs at least {min_points} distinct operating points (propmap validate compares any number)"))
     if "airspeed" in cm.columns and n and np.all(v["airspeed"] > STATIC_AIRSPEED) and np.max(v["airspeed"]) < 1.5:
         warnings.warn(f"{p}: {cm.column('airspeed')!r} reads {np.min(v['airspeed']):.2g}-"
                       f"{np.max(v['airspeed']):.2g} m/s at every point: a static stand's pitot offset or noise? Every "
