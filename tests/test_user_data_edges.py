@@ -1137,3 +1137,14 @@ def test_messages_for_an_empty_file_and_a_long_row_name_them(tmp_path, capsys):
     pts.write_text("rpm,airspeed,incidence_deg\n3000,0,0\n5000,5,0\n5000,10,30,7\n")
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
     assert capsys.readouterr().err.strip().endswith(": line 4 has 4 fields, but the header has 3")
+
+
+@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-le"])
+def test_a_utf16_points_file_is_named_as_such(tmp_path, capsys, encoding):
+    """Without a byte-order mark a UTF-16 points file was refused as lacking its columns (an input
+    fuzzing audit, 2026-11-27)."""
+    pts = tmp_path / "p.csv"
+    pts.write_bytes("rpm,airspeed,incidence_deg\n5000,0,0\n".encode(encoding))
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
+    assert capsys.readouterr().err.strip().endswith("NUL bytes in the text; it looks like UTF-16: save the file as "
+                                                    "UTF-8 CSV")

@@ -81,6 +81,10 @@ def _points_reader(path: Path, chunksize: int):
             head = fh.read(MAX_HEADER_BYTES + 1)
     except OSError as exc:
         raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+    if b"\x00" in head[:4096]:  # (UTF-16 without a byte-order mark decodes as UTF-8 with NULs: "lacks column(s)")
+        utf16 = head[:2] in (b"\xff\xfe", b"\xfe\xff") or head[1:2] == b"\x00" or head[:1] == b"\x00"
+        raise InputError(f"{where}: NUL bytes in the text" + ("; it looks like UTF-16" if utf16 else "")
+                         + ": save the file as UTF-8 CSV")
     if b"\n" not in head and len(head) > MAX_HEADER_BYTES:
         raise InputError(f"{where}: the header line is longer than {MAX_HEADER_BYTES} bytes")
     try:
