@@ -333,6 +333,8 @@ def test_validation_errors_refuse_an_unknown_model_or_run(apc):
         v.runs[0].errors("hover")
     with pytest.raises(ValueError, match=r"run_ids \['2801'\] name no run of apce_8x6 \(its runs: .*2801rd"):
         v.summary("model", ["2801"])
+    with pytest.raises(ValueError, match=r"run_ids \['2801'\] name no run"):  # beside a good one, not dropped
+        v.summary("model", ["2801rd", "2801"])
     one = v.summary("model", "2801rd")  # one id as text is that run, not its characters
     assert one == v.summary("model", ["2801rd"])
     assert one["n_points"] == sum(r.CT.size for r in v.runs if r.run_id == "2801rd")

@@ -757,13 +757,21 @@ def test_a_blade_count_in_a_geometry_files_name_is_compared(tmp_path, stem):
 
 
 @pytest.mark.parametrize("name, want", [("roll (deg)", "roll_deg"), ("roll", "roll_deg"), ("Roll_rad", "roll_deg"),
-                                        ("airspeed_kmh", "airspeed"), ("p (deg/s)", "p, q, r"),
-                                        ("pitch_rate", "p, q, r")])
+                                        ("q [deg/s]", "p, q, r"), ("p (deg/s)", "p, q, r"), ("p_deg_s", "p, q, r"),
+                                        ("pitch_rate", "p, q, r"), ("roll rate (deg/s)", "p, q, r"),
+                                        ("q (Pa)", None), ("q_dyn", None), ("pitch_cmd", None), ("roll_sp", None),
+                                        ("airspeed_std", None), ("airspeed_kmh", None), ("r_hub", None),
+                                        ("pitch", None)])
 def test_level_flight_refuses_a_known_quantity_under_another_name(tmp_path, quad, name, want):
-    """A roll or a body rate under another name or with a unit was ignored and read as 0 (a roll
-    of 10 deg fitted as level flight; an input fuzzing audit, 2026-11-27)."""
+    """A roll or a body rate under its bare stem or in another unit was ignored and read as 0 (a
+    roll of 10 deg fitted as level flight; an input fuzzing audit, 2026-11-27). Other names on
+    those stems (a command, a dynamic pressure, a spread) or a column whose right name is there
+    (airspeed beside airspeed_kmh, pitch_deg beside pitch) stay unread (a review)."""
     lines = FLIGHT.strip().splitlines()
     text = "\n".join([lines[0] + f",{name}"] + [ln + ",10" for ln in lines[1:]]) + "\n"
+    if want is None:
+        assert read_level_flight(_write(tmp_path, "d.csv", text), quad).n == len(lines) - 1
+        return
     msg = refused(DataError, read_level_flight, _write(tmp_path, "d.csv", text), quad,
                   match=f"line 1: column '{re.escape(name)}' is not read")
     assert f"give this one as {want}" in msg

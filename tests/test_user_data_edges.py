@@ -1095,6 +1095,10 @@ def test_a_value_under_an_unnamed_column_is_refused_not_dropped(tmp_path, capsys
         "remove it")
     pts.write_text(",rpm,airspeed,incidence_deg,\n0,5000,10.5,30,\n")
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+    assert (tmp_path / "o.csv").read_text().startswith(",rpm,airspeed,incidence_deg,,thrust,")  # the names as written
+    multi = tmp_path / "mi.csv"  # a pandas MultiIndex's two unnamed columns first
+    multi.write_text(",,RPM,Thrust (gf)\n" + "".join(f"run1,{k},{r},{t}\n" for k, (r, t) in enumerate(zip(rpm, gf))))
+    assert read_loads(multi).n == 6
 
 
 @pytest.mark.parametrize("name", ["Pitch (deg)", "pitch", "blade_angle_deg", "Blade angle (°)", "pitch_angle_rad"])
@@ -1148,3 +1152,13 @@ def test_a_utf16_points_file_is_named_as_such(tmp_path, capsys, encoding):
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
     assert capsys.readouterr().err.strip().endswith("NUL bytes in the text; it looks like UTF-16: save the file as "
                                                     "UTF-8 CSV")
+
+
+def test_a_points_file_with_a_blade_pitch_column_under_another_name_is_refused(tmp_path, capsys):
+    """loads --points solved a 'pitch (deg)' column's rows at collective 0 (a review, 2026-11-27)."""
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,pitch (deg)\n5000,0,0,4\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 2
+    assert "column 'pitch (deg)' looks like a blade pitch setting" in capsys.readouterr().err
+    pts.write_text("rpm,airspeed,incidence_deg,pitch (in)\n5000,0,0,7\n")
+    assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0

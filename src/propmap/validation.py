@@ -159,12 +159,13 @@ class Validation:
         Raises
         ------
         ValueError
-            If ``which`` is neither, or ``run_ids`` names no run of the propeller.
+            If ``which`` is neither, or an id of ``run_ids`` names no run of the propeller.
         """
         ids = None if run_ids is None else ({run_ids} if isinstance(run_ids, str) else set(run_ids))
         runs = [r for r in self.runs if ids is None or r.run_id in ids]
-        if not runs:
-            raise ValueError(f"run_ids {sorted(ids)} name no run of {self.propeller} "
+        unknown = sorted(ids - {r.run_id for r in self.runs}) if ids is not None else []
+        if unknown or not runs:
+            raise ValueError(f"run_ids {unknown or sorted(ids)} name no run of {self.propeller} "
                              f"(its runs: {', '.join(dict.fromkeys(r.run_id for r in self.runs))})")
         pred = [_predicted(r, which) for r in runs]
         ct = np.concatenate([ct - r.CT for (ct, _), r in zip(pred, runs)])

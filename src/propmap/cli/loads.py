@@ -171,7 +171,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     from ..identify.csvfile import unnamed_value_message
 
     cols = {c: mapped[c][0] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in mapped}
-    unnamed = [j for j, name in enumerate(names) if not name and j > 0]  # (the first: a row index)
+    lead = next((j for j, name in enumerate(names) if name), len(names))  # (unnamed ones before it: row indexes)
+    unnamed = [j for j, name in enumerate(names) if not name and j > lead]
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2
@@ -193,7 +194,7 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                     if held.any():
                         i = int(np.argmax(held))
                         raise InputError(f"--points: {path}, line {lines[i]}: "
-                                         + unnamed_value_message(j, df.iloc[i, j].strip(), sep))
+                                         + unnamed_value_message(j, df.iloc[i, j].strip(), sep, bool(names[j - 1])))
                 values = {}
                 for c, name in cols.items():
                     text = df[name].str.strip()
@@ -213,6 +214,7 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                                          f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}{why}")
                     values[c] = v
                 rows += len(df)
+                df.columns = names  # (as written: the unnamed ones had placeholders for pandas only)
                 yield df, int(lines[0]), values
     except (pd.errors.ParserError, pd.errors.ParserWarning, UnicodeDecodeError, ValueError) as exc:
         raise _parse_error(path, exc, sep, len(names)) from None

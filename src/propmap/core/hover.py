@@ -114,7 +114,7 @@ class HoverModel:
                    diameter=float(propeller.diameter))
 
     @classmethod
-    def from_coefficients(cls, CT: float, CP: float, diameter: float, *, air: Air = Air()) -> "HoverModel":
+    def from_coefficients(cls, CT: float, CP: float, diameter: float, *, air: Air | None = None) -> "HoverModel":
         """From static propeller-convention coefficients (e.g. a measured static run).
 
         k_T = CT rho D^4 / (2 pi)^2 and k_Q = CP rho D^5 / (2 pi)^3, since
@@ -138,8 +138,9 @@ class HoverModel:
         ValueError
             CT or CP not a finite number in [-1000, 1000], or the diameter not in (0, 1000] m.
         TypeError
-            ``air`` not an :class:`Air`.
+            ``air`` neither None nor an :class:`Air`.
         """
+        air = Air() if air is None else air
         if not isinstance(air, Air):
             raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
         for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):

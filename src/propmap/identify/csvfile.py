@@ -16,8 +16,8 @@ LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in
 (an unterminated quote is an error). Column names are stripped of spaces, at most 255
 characters, each at most once (a duplicated column is an error, never "the first wins");
 columns not listed are ignored, and so are unnamed ones that hold nothing (a trailing
-separator) or come first (a spreadsheet's or pandas' row index); an unnamed column after the
-first that holds a value is an error (the decimals of ``55,27`` in a comma-separated file
+separator) or come before the first named one (a spreadsheet's or pandas' row index); an
+unnamed column after a named one that holds a value is an error (the decimals of ``55,27`` in a comma-separated file
 land there). Numbers are plain ASCII decimals
 (``1e3``; not ``1_000``, not NaN or inf). Valid ranges:
 
@@ -76,12 +76,13 @@ class DataError(ValueError):
     """Bad identification data; the message names the problem."""
 
 
-def unnamed_value_message(j: int, cell: str, sep: str) -> str:
-    """What a value in column ``j`` (0-based, after the first) with no name in the header is
-    likely to be: the decimals of a number split by its decimal comma, in a file whose separator
-    is the comma (a user-level audit: ``RPM,Thrust (gf),`` with ``1975,55,27`` read 55 gf)."""
+def unnamed_value_message(j: int, cell: str, sep: str, after_named: bool = True) -> str:
+    """What a value in column ``j`` (0-based, after the first named one) with no name in the
+    header is likely to be: beside a named column, the decimals of a number split by its decimal
+    comma, in a file whose separator is the comma (a user-level audit: ``RPM,Thrust (gf),`` with
+    ``1975,55,27`` read 55 gf)."""
     why = (" (a number with a decimal comma in a comma-separated file? save it with decimal points, or "
-           "with ';' as the separator)" if sep == "," else "")
+           "with ';' as the separator)" if sep == "," and after_named else "")
     return f"column {j + 1} has no name in the header but holds {_short(cell)}{why}: name the column or remove it"
 
 
@@ -219,13 +220,15 @@ class _Csv:
         marks = [None, None]
         rows = self._rows()
         next(rows)  # the header
-        unnamed = [j for j, c in enumerate(self.columns) if not c and j > 0]
+        lead = next((j for j, c in enumerate(self.columns) if c), n)  # (unnamed ones before it: row indexes)
+        unnamed = [j for j, c in enumerate(self.columns) if not c and j > lead]
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
             for j in unnamed:
                 if j < len(cells) and cells[j].strip():
-                    raise self.error(unnamed_value_message(j, cells[j].strip(), self.sep), line)
+                    raise self.error(unnamed_value_message(j, cells[j].strip(), self.sep, bool(self.columns[j - 1])),
+                                     line)
             stopped = bool(stop) and all(_zero_or_empty(cells[self.index[c]] if self.index[c] < len(cells) else "")
                                          for c in stop)
             for c, j in cols:

@@ -268,6 +268,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
     start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]),
                  rotor_interference=vehicle.rotor_interference or 1.0)
+    # every section parameter starts at the base's (the paper's model too: --base is the start, as documented)
+    start.update({n: getattr(base, n) for n in names if n not in start and n != "flap_compliance" and hasattr(base, n)})
     x0 = _x0(names, options, base, start)
     measured = samples.force
     arm = _mean_arm(vehicle)

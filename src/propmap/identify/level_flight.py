@@ -77,22 +77,30 @@ def _rotor_order(column: str):
     return (0, int(m.group(1)), column) if m else (1, 0, column)
 
 
-#: the columns read, and what a column named otherwise for the same quantity must be called
+#: the quantities read, and what a column of one of them in another unit or under its bare stem must be called
 _READ = {"airspeed": "airspeed [m/s]", "pitch": "pitch_deg", "roll": "roll_deg", "p": "p, q, r [rad/s]",
-         "q": "p, q, r [rad/s]", "r": "p, q, r [rad/s]", "rpm": "rpm_1 .. rpm_n"}
+         "q": "p, q, r [rad/s]", "r": "p, q, r [rad/s]"}
+#: units after a stem that make a column one of those quantities (roll (deg), p_deg_s, airspeed_kmh)
+_UNIT_SUFFIX = re.compile(r"[\s_(\[]*(deg|degs|degrees|°|rad|rads|radians|deg/s|degs/s|rad/s|deg_s|rad_s|dps|rps|"
+                          r"km/?h|kmh|kph|mph|kn|kt|knots|m/s|ms|mps|ft/s|fps)[\s)\]]*")
 
 
-def _refuse_near_misses(f: _Csv, rpm_cols, what: str) -> None:
-    """Refuse a column that names a quantity the file is read for under another name or with a
-    unit (``roll (deg)``, ``roll``, ``p (deg/s)``, ``airspeed_kmh``): it was ignored, its values
-    read as 0 (an input fuzzing audit, 2026-11-27: a roll of 10 deg fitted as level)."""
-    known = {"airspeed", "pitch_deg", "roll_deg", "p", "q", "r", *rpm_cols}
+def _refuse_near_misses(f: _Csv, what: str) -> None:
+    """Refuse a column that is one of the quantities read in another unit or under its bare stem
+    (``roll (deg)``, ``roll``, ``p (deg/s)``, ``airspeed_kmh``): it was ignored, its values read
+    as 0 (an input fuzzing audit, 2026-11-27: a roll of 10 deg fitted as level). Other names on
+    those stems (``pitch_cmd``, ``q (Pa)``, ``airspeed_std``) are not the quantity and stay
+    unread, as is a column whose right name is already there."""
     for j, c in enumerate(f.columns):
-        if not c or c in known:
+        m = re.match(r"(airspeed|pitch|roll|p|q|r)(?![a-z0-9])(.*)", c)
+        if not m or c in ("airspeed", "pitch_deg", "roll_deg", "p", "q", "r"):
             continue
-        stem = re.split(r"[\s(\[_/]", c, maxsplit=1)[0]
-        if stem in _READ:
-            want = "p, q, r [rad/s]" if "rate" in c else _READ[stem]
+        stem, rest = m.groups()
+        want = _READ[stem]
+        if "rate" in c:  # (pitch_rate, roll rate (deg/s): a body rate)
+            stem, rest, want = "q", re.sub(r"[\s_]*rate", "", rest), _READ["p"]
+        present = {"airspeed": "airspeed", "pitch": "pitch_deg", "roll": "roll_deg"}.get(stem, stem)
+        if (rest == "" or _UNIT_SUFFIX.fullmatch(rest)) and present not in f.index:
             raise f.error(f"column {f.header[j]!r} is not read: the level-flight columns are airspeed [m/s], "
                           f"pitch_deg and roll_deg [deg], p, q, r [rad/s] and rpm_1 .. rpm_n [rpm], without other "
                           f"units; give this one as {want}", f.header_line)
@@ -138,7 +146,7 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
     missing = [c for c in ("airspeed", "pitch_deg") if c not in f.index]
     if missing:
         raise DataError(f"{what}: {p} lacks column(s) {', '.join(missing)}")
-    _refuse_near_misses(f, rpm_cols, what)
+    _refuse_near_misses(f, what)
     rates_given = [c for c in ("p", "q", "r") if c in f.index]
     if rates_given and len(rates_given) < 3:
         raise DataError(f"{what}: {p} has body-rate column(s) {', '.join(rates_given)} but not "

@@ -338,14 +338,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
                             + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
-    if "collective_deg" not in cm.columns:  # a blade pitch setting under another name, in degrees, radians or none
-        pitch = [n for n, (b, u) in split.items() if b not in _NAMES and (u is None or _token(u) in UNITS["angle"])
-                 and stems.get(n, frozenset({b})) & _loose(_PITCH_LIKE)]
-        if pitch:
-            raise error(f"column {pitch[0]!r} looks like a blade pitch setting, which propmap reads only as "
-                        "'collective_deg' (the angle added to the geometry's blade angles at every station, "
-                        "[deg]): rename it, converted, or remove it; left unread, every point would be taken at the "
-                        "geometry's blade angles (collective 0)")
+    if "collective_deg" not in cm.columns:
+        _refuse_pitch_like(names, error)
     if "thrust" not in cm.columns:  # (a force under a name propmap does not read: 'Force (N)' was left out unsaid,
         # and a torque-only fit ran: a user-level audit)
         forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
@@ -363,6 +357,24 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
 
 #: the operating-point quantities of a points file (``propmap loads --points``)
 OPERATING = ("rpm", "airspeed", "incidence_deg", "collective_deg")
+
+
+def _refuse_pitch_like(names, error) -> None:
+    """Refuse a blade pitch setting under another name than collective_deg, in degrees, radians or
+    no unit (``Pitch (deg)``, ``pitch``, ``blade_angle_deg``): left unread, every point was taken at
+    collective 0 (an input fuzzing audit, 2026-11-27); a pitch in inches is not one."""
+    for name in names:
+        if not name.strip():
+            continue
+        b, u = _split(name)
+        if b in _NAMES or not (u is None or _token(u) in UNITS["angle"]):
+            continue
+        if (_name_stems(name) | {b}) & _loose(_PITCH_LIKE):
+            raise error(f"column {name!r} looks like a blade pitch setting, which propmap reads only as "
+                        "'collective_deg' (the angle added to the geometry's blade angles at every station, "
+                        "[deg]; a tunnel sting's pitch, the flow's angle to the rotor axis, is 'incidence_deg'): "
+                        "rename it, converted, or remove it; left unread, every point would be taken at the "
+                        "geometry's blade angles (collective 0)")
 
 
 def map_operating_columns(names, *, error=ValueError) -> dict:
@@ -389,7 +401,8 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
     ------
     error
         An operating quantity, not given by its bare name, in a unit it does not know (a rotation
-        speed in a linear speed's unit said as such), or two such columns for one quantity.
+        speed in a linear speed's unit said as such), two such columns for one quantity, or a
+        blade pitch setting under another name than ``collective_deg`` (``Pitch (deg)``).
     """
     out = {name.strip().lower(): (name, 1.0) for name in names if name.strip().lower() in OPERATING}
     bare = set(out)
@@ -404,6 +417,8 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
         if quantity in out:
             raise error(f"columns {out[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         out[quantity] = (name, factor)
+    if "collective_deg" not in out:
+        _refuse_pitch_like(names, error)
     return out
 
 
