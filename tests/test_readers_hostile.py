@@ -819,6 +819,7 @@ def test_a_sweep_rate_line_that_is_not_a_plain_number_is_refused(tmp_path, line)
     refused(MeasurementFileError, read_uiuc_sweep, f, match=f"line 1: '{re.escape(line)}': the rate must be a plain "
                                                             "number")
     assert read_uiuc_sweep(_write(tmp_path, "b_8x6_r_4004.txt", "RPM average = 4998\n" + body)).rpm == 4998
+    assert read_uiuc_sweep(_write(tmp_path, "c_8x6_r_4004.txt", "RPM_average = 4998\n" + body)).rpm == 4998
 
 
 def test_a_copy_suffix_in_a_sweep_file_name_is_not_its_rate(tmp_path):

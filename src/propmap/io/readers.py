@@ -171,7 +171,7 @@ def read_uiuc_sweep(path) -> Sweep:
     d = t.data
     parts = path.stem.split("_")
     rpm_keys = ("rpmaverage", "averagerpm", "rpm")
-    item = next(((k, v) for k, v in t.meta.items() if k.lower().replace(" ", "") in rpm_keys), None)
+    item = next(((k, v) for k, v in t.meta.items() if re.sub(r"[\s_]", "", k.lower()) in rpm_keys), None)
     if item is not None:
         key, (raw, line) = item
         what = f"{where}, line {line}: {key} = {_clip(raw, 40)}"
@@ -199,14 +199,14 @@ def read_uiuc_sweep(path) -> Sweep:
 #: the lowest rpm taken from a sweep file's name (UIUC's nominal rates: 1,500 rpm and up)
 NAME_RPM_MIN = 100.0
 #: a line that gives a sweep's measured rate, whatever its value's form
-_RPM_LINE = re.compile(r"\s*(rpm\s*average|average\s*rpm|rpm)\s*[=:]\s*(.*?)\s*$", re.I)
+_RPM_LINE = re.compile(r"\s*(rpm[\s_]*average|average[\s_]*rpm|rpm)\s*[=:]\s*(.*?)\s*$", re.I)
 
 
 def _check_rpm_lines(text: str, table, where: str) -> None:
     """Refuse an 'RPM average = N' line whose value is not a plain number (``4,998``, ``4998
     rpm``): it was not read as the rate and the file name's nominal rpm was taken instead, 0.4%
     off, without a word (an input fuzzing audit, 2026-11-27)."""
-    if any(k.lower().replace(" ", "") in ("rpmaverage", "averagerpm", "rpm") for k in table.meta):
+    if any(re.sub(r"[\s_]", "", k.lower()) in ("rpmaverage", "averagerpm", "rpm") for k in table.meta):
         return
     for k, ln in enumerate(io.StringIO(text, newline=None), start=1):
         m = _RPM_LINE.fullmatch(ln.rstrip("\n"))
