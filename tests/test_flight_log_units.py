@@ -53,12 +53,44 @@ def _zero_quaternion(a):
     a[:, 7:11] = 0.0
 
 
+def _velocity_in_world(a):
+    from scipy.spatial.transform import Rotation
+    a[:, 14:17] = Rotation.from_quat(a[:, 7:11]).apply(a[:, 14:17])
+
+
+def _velocity_frd(a):
+    a[:, 15:17] *= -1
+
+
+def _velocity_kmh(a):
+    a[:, 14:17] *= 3.6
+
+
+def _angular_acceleration_deg(a):
+    a[:, 1:4] *= 180 / math.pi
+
+
+def _angular_acceleration_zero(a):
+    a[:, 1:4] = 0.0
+
+
+def _angular_acceleration_negated(a):
+    a[:, 1:4] *= -1
+
+
 @pytest.mark.parametrize("change, match", [
     (_in_g, r"reads 0\.99\d* m/s\^2 upwards .* accelerations in g"),
     (_without_gravity, r"reads -?0\.\d+ m/s\^2 upwards .* gravity removed"),
     (_frd, r"reads -9\.\d+ m/s\^2 upwards .* a z-down \(FRD\) body frame"),
     (_deg_per_s, r"5\d\.\d times those of the logged attitude's change: are they in deg/s"),
     (_zero_quaternion, r"sample 1: attitude quaternion \[0\.0, 0\.0, 0\.0, 0\.0\] has norm 0"),
+    # (the velocity and the angular acceleration, each read without a word until 2026-11-27: an input fuzzing audit)
+    (_velocity_in_world, r"the logged velocity's change .* misses the accelerometer's .* in the body frame"),
+    (_velocity_frd, r"the logged velocity's change .* misses the accelerometer's"),
+    (_velocity_kmh, r"the logged velocity's change .* misses the accelerometer's .* and in m/s\?"),
+    (_angular_acceleration_deg, r"angular acceleration is [45]\d\.?\d* times the logged rates' change .* deg/s\^2\?"),
+    (_angular_acceleration_zero, r"angular acceleration is 0 times .* zeros or another quantity\?"),
+    (_angular_acceleration_negated, r"angular acceleration is -\d\.\d+ times .* another frame or sign\?"),
 ])
 def test_a_log_in_other_units_or_frames_is_refused_naming_the_cause(tmp_path, shared_data, change, match):
     """Each mistake read as the layout says gave a fit with exit 0 (accelerations in g: F 0.003 N

@@ -14,7 +14,8 @@ import struct
 
 import numpy as np
 
-_TYPES = {"uint64_t": "<Q", "float": "<f", "uint8_t": "<B", "int32_t": "<i", "uint16_t": "<H", "uint32_t": "<I"}
+_TYPES = {"uint64_t": "<Q", "float": "<f", "uint8_t": "<B", "int32_t": "<i", "uint16_t": "<H", "uint32_t": "<I",
+          "bool": "<B"}
 
 
 def _msg(kind: bytes, payload: bytes) -> bytes:
@@ -82,7 +83,7 @@ def write_ulog(path, topics: dict, nested: dict | None = None, params: dict | No
 def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000.0, with_esc: bool = True,
                n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False,
                nan_derivative_at: int | None = None, outputs: list | None = None, params: dict | None = None,
-               changed: list | None = None, second_outputs: list | None = None) -> dict:
+               changed: list | None = None, second_outputs: list | None = None, velocity_valid=None) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
     with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
@@ -92,7 +93,8 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
     NaN. ``outputs``: actuator_outputs' values (16, rpm / 10 for a motor) instead; ``params`` and
     ``changed``: as :func:`write_ulog`'s. ``second_outputs``: a second actuator_outputs
     instance (multi_id 1) with these values, each + 0.01 on every other sample (motors that
-    vary; the first instance's do not). Returns the truth in propmap's frame."""
+    vary; the first instance's do not). ``velocity_valid``: per sample, the estimator's v_xy_valid
+    and v_z_valid flags (logged then; an invalid sample's velocity 0). Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -111,6 +113,10 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
         "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
                                    [(int(ti), 2.0, 0.0, 0.0) for ti in t]),
     }
+    if velocity_valid is not None:
+        topics["vehicle_local_position"] = (
+            topics["vehicle_local_position"][0] + [("bool", "v_xy_valid"), ("bool", "v_z_valid")],
+            [(int(ti), 2.0 if ok else 0.0, 0.0, 0.0, int(ok), int(ok)) for ti, ok in zip(t, velocity_valid)])
     nested = {}
     if with_esc:
         nested["esc_report"] = [("uint64_t", "timestamp"), ("int32_t", "esc_rpm"), ("float", "esc_voltage")]

@@ -76,6 +76,17 @@ RATE_WINDOW = 0.02  # [s]
 #: turning against it (another frame)
 RATE_RATIO_DEG = (20.0, 150.0)
 RATE_RATIO_AGAINST = -0.5
+#: the body-frame kinematics dv/dt + w x v = a_s + R^T g, each side averaged over KINEMATIC_WINDOW s: refused where
+#: the rms difference exceeds KINEMATIC_TOLERANCE m/s^2 and KINEMATIC_RATIO times the rms acceleration (the four
+#: NeuroBEM segments: 0.04-0.28 m/s^2, 0.02-0.08 of it; their velocities in the world frame, the z-down frame or km/h:
+#: 4.2-16 m/s^2, 1.1-2.6 of it; an input fuzzing audit, 2026-11-27)
+KINEMATIC_WINDOW = 0.2  # [s]
+#: a logged angular acceleration over the rates' change (least squares, over RATE_WINDOW) must lie within this, judged
+#: where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more (the NeuroBEM segments: 0.97)
+ANGULAR_ACCELERATION_RATIO = (0.5, 2.0)
+ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
+KINEMATIC_TOLERANCE = 1.0  # [m/s^2]
+KINEMATIC_RATIO = 0.5
 
 
 class FlightLogError(ValueError):
@@ -419,6 +430,39 @@ def _check_frames(log: FlightLog, name: str) -> None:
                                  f"speed asks for {expected:.4g} (g plus its mean vertical acceleration; within "
                                  f"{tolerance:.3g}): accelerations in g, gravity removed, a z-down (FRD) body frame, "
                                  "or a quaternion not (x, y, z, w) from body to world? (docs/flight.md, Flight logs)")
+    _check_rates(log, q, name)
+    _check_angular_acceleration(log, name)
+    if log.duration >= GRAVITY_JUDGED:  # (after the rates: rates in deg/s would miss here first, naming the velocity)
+        _check_kinematics(log, Rotation.from_quat(q), name)
+
+
+def _check_angular_acceleration(log: FlightLog, name: str) -> None:
+    """A logged angular acceleration (NeuroBEM's columns 2-4, the measured moments' I dw/dt) against
+    the logged rates' change over RATE_WINDOW s: the least-squares ratio must lie within
+    ANGULAR_ACCELERATION_RATIO where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or
+    more (the four NeuroBEM segments: 0.97; in deg/s^2 55, zeros 0, negated -1, each read without a
+    word, the measured moments 57 times too large: an input fuzzing audit, 2026-11-27)."""
+    if log.angular_acceleration is None:
+        return
+    k = max(1, int(round(RATE_WINDOW * log.rate_hz)))
+    if log.n <= k:
+        return
+    dw = (log.angular_velocity[k:] - log.angular_velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    logged = 0.5 * (log.angular_acceleration[k:] + log.angular_acceleration[:-k])
+    if np.sqrt(np.mean(dw**2)) < ANGULAR_ACCELERATION_JUDGED:
+        return
+    ratio = float(np.sum(logged * dw) / np.sum(dw * dw))
+    lo, hi = ANGULAR_ACCELERATION_RATIO
+    if not lo <= ratio <= hi:
+        why = ("in deg/s^2?" if 20 <= ratio <= 150 else "zeros or another quantity?" if abs(ratio) < lo else
+               "another frame or sign?" if ratio < 0 else "another unit or column?")
+        raise FlightLogError(f"{name}: the logged angular acceleration is {ratio:.3g} times the logged rates' change "
+                             f"(within {lo:g}-{hi:g} expected): {why} It is read in rad/s^2, body axes (the measured "
+                             "moment is I dw/dt + w x I w)")
+
+
+def _check_rates(log: FlightLog, q, name: str) -> None:
+    """The logged rates against the unit attitude quaternions ``q``' change (_check_frames)."""
     q = q * np.where(np.concatenate([[False], np.cumsum(np.sum(q[1:] * q[:-1], axis=1) < 0) % 2 == 1]), -1.0,
                      1.0)[:, None]  # (q and -q are one attitude)
     k = max(1, int(round(RATE_WINDOW * log.rate_hz)))  # (a derivative over one sample step is the noise's)
@@ -439,3 +483,29 @@ def _check_frames(log: FlightLog, name: str) -> None:
     if ratio < RATE_RATIO_AGAINST:
         raise FlightLogError(f"{name}: the logged body rates turn against the logged attitude (ratio {ratio:.3g}): "
                              "rates in another body frame (z down?) or a quaternion from world to body?")
+
+
+def _check_kinematics(log: FlightLog, turn, name: str) -> None:
+    """The logged body-frame velocity against the accelerometer: dv/dt + w x v = a_s + R^T g in the
+    body frame, both sides averaged over KINEMATIC_WINDOW s (the accelerometer's vibration and the
+    differentiated velocity's noise averaged out); refused beyond KINEMATIC_TOLERANCE and
+    KINEMATIC_RATIO times the rms acceleration: a velocity in the world frame, the z-down body
+    frame or km/h was read without a word, its force errors up to 7.7 N (an input fuzzing audit)."""
+    k = max(1, int(round(KINEMATIC_WINDOW * log.rate_hz)))
+    if log.n <= k:
+        return
+    accel = log.specific_force + turn.inv().apply(np.array([0.0, 0.0, -G]))  # a_s + R^T g: dv/dt + w x v
+
+    def window_mean(a):
+        c = np.concatenate([np.zeros((1, a.shape[1])), np.cumsum(a, axis=0)])
+        return (c[k:] - c[:-k])[:-1] / k  # (means over samples i .. i+k-1, beside the change over [t_i, t_i+k])
+
+    dv = (log.velocity[k:] - log.velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    lhs = dv + window_mean(np.cross(log.angular_velocity, log.velocity))
+    rhs = window_mean(accel)
+    miss, size = float(np.sqrt(np.mean((lhs - rhs) ** 2))), float(np.sqrt(np.mean(rhs**2)))
+    if miss > max(KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
+        raise FlightLogError(f"{name}: the logged velocity's change (dv/dt + w x v in the body frame) misses the "
+                             f"accelerometer's (a_s + R^T g) by {miss:.3g} m/s^2 rms, where the acceleration is "
+                             f"{size:.3g} m/s^2 rms: is the velocity in the body frame (x forward, y left, z up), "
+                             "not the world's or a z-down one, and in m/s? (docs/flight.md, Flight logs)")

@@ -249,6 +249,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         flips = np.sum(q[1:] * q[:-1], axis=1) < 0
         q = q * np.concatenate([[1.0], np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)])[:, None]
     tv, vel = _topic(ulog, "vehicle_local_position", ["vx", "vy", "vz"], name, error)
+    tv, vel = _valid_velocity(ulog, name, said, tv, vel, error)
     tv, vel = _in_time_order("vehicle_local_position", name, said, tv, vel)
     tm, rpm, order, motor_topic = _ulog_motors(ulog, name, motor_map, n_motors, error, said)
     tm, rpm = _in_time_order(motor_topic, name, said, tm, rpm)
@@ -277,6 +278,23 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
                 angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
                 specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,
                 rotor_acceleration=None, motor_order=order), said
+
+
+def _valid_velocity(ulog, name: str, said: list, tv, vel, error):
+    """The velocity messages the estimator flags valid (``v_xy_valid`` and ``v_z_valid`` of
+    vehicle_local_position, where logged), the others left out with a note: an invalid estimate
+    (no GPS, indoors) of 0 m/s was read as the velocity (an input fuzzing audit, 2026-11-27)."""
+    d = min((s for s in ulog.data_list if s.name == "vehicle_local_position"), key=lambda s: s.multi_id)
+    if not all(f in d.data for f in ("v_xy_valid", "v_z_valid")):
+        return tv, vel
+    ok = (np.asarray(d.data["v_xy_valid"]) != 0) & (np.asarray(d.data["v_z_valid"]) != 0)
+    if not ok.any():
+        raise error(f"{name}: topic 'vehicle_local_position': the velocity estimate is flagged invalid (v_xy_valid, "
+                    f"v_z_valid) in all {ok.size} messages: no velocity to read")
+    if not ok.all():
+        said.append(f"{name}: vehicle_local_position: {int((~ok).sum())} of {ok.size} velocity messages flagged "
+                    "invalid (v_xy_valid, v_z_valid) left out; the velocity is interpolated across them")
+    return tv[ok], vel[ok]
 
 
 #: PX4's output function of motor 1 (Motor1 = 101 ... Motor12 = 112; PX4-Autopilot,
