@@ -41,12 +41,15 @@ def test_the_shared_neurobem_segments_read(shared_data):
                                                                                                               abs=0.1)
 
 
-@pytest.mark.parametrize("header", [True, False])
+@pytest.mark.parametrize("header", [True, False, "numbers"])
 def test_csv_form_reads_as_the_mat(tmp_path, seg, header):
+    """With the NeuroBEM names, without a header, or under pandas' header of column numbers 0-40
+    (read as data and refused for its 'quaternion' [7, 8, 9, 10] until 2026-11-27)."""
     a = scipy.io.loadmat(seg)
     arr = next(v for k, v in a.items() if not k.startswith("__"))[:500]
     path = tmp_path / "log.csv"
-    lines = ([",".join(NEUROBEM_COLUMNS)] if header else []) + [",".join(repr(float(x)) for x in row) for row in arr]
+    top = {True: [",".join(NEUROBEM_COLUMNS)], False: [], "numbers": [",".join(map(str, range(41)))]}[header]
+    lines = top + [",".join(repr(float(x)) for x in row) for row in arr]
     path.write_text("\n".join(lines) + "\n")
     log = read_flight_log(path)
     ref = read_flight_log(seg)

@@ -288,7 +288,10 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     skip = first
     order = list(range(len(NEUROBEM_COLUMNS)))
     try:
-        [float(c) for c in head]
+        numbers = [float(c) for c in head]
+        if len(numbers) == len(NEUROBEM_COLUMNS) and numbers in (list(range(41)), list(range(1, 42))):
+            skip = first + 1  # (a header of column numbers, pandas' to_csv of an unnamed frame: it was read as
+            # data and refused for its 'quaternion' [7, 8, 9, 10]: a flight-log fuzzing audit)
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
