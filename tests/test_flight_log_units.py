@@ -222,3 +222,19 @@ def test_running_out_of_memory_and_a_log_over_the_size_limit_say_what_to_do(tmp_
     monkeypatch.setattr(flightlog, "MAX_FILE_BYTES", 1000)
     with pytest.raises(FlightLogError, match=r"the limit for this kind of file: split the flight into logs under it"):
         read_flight_log(shared_data / "neurobem_flights" / SEGMENTS[0])
+
+
+def test_normalised_motor_speeds_and_empty_prediction_columns(tmp_path, shared_data):
+    """Motor speeds normalised to 0-1 were refused as 'a rotor is stopped ... in every sample',
+    naming neither the motor nor the cause; columns 30-41 left at zero (a log without NeuroBEM's
+    prediction) were scored as its prediction, F 4.4 N (a flight-log fuzzing audit, 2026-11-27)."""
+    from propmap.identify.flight import flight_samples
+
+    a = _array(shared_data)
+    a[:, 29:41] = 0.0
+    assert read_flight_log(_write(tmp_path, a, "zero.mat")).reference_force is None
+    a[:, 20:24] /= a[:, 20:24].max()
+    log = read_flight_log(_write(tmp_path, a, "norm.mat"))
+    with pytest.raises(ValueError, match=r"norm\.mat: no samples left: motor\(s\) [1-4, ]+ below 1 rad/s in every "
+                                         r"sample .*normalised to 0-1"):
+        flight_samples([log], pm.read_vehicle(VEHICLE))

@@ -226,6 +226,12 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
                                        stopped, reference)
         keep = ~(stopped | ground)
+        if not keep.any() and stopped.all():  # name the motor and the likely cause (a fuzzing audit: 0-1 speeds)
+            low = np.max(logged, axis=0) < OMEGA_STOPPED
+            which = (f"motor(s) {', '.join(str(i + 1) for i in np.flatnonzero(low))} below {OMEGA_STOPPED:g} rad/s "
+                     "in every sample" if low.any() else "some rotor stopped in every sample")
+            raise ValueError(f"{log.name}: no samples left: {which} (largest logged speed {float(logged.max()):.3g} "
+                             "rad/s): motor speeds normalised to 0-1, a throttle, or a motor not logged?")
         _check_hover(log, logged[keep], vehicle, hover)
         if stopped.any():
             notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "

@@ -350,7 +350,8 @@ def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
         at = "" if lines is None else f" (line {lines[i]})"
         raise FlightLogError(f"{name}: sample {i + 1}{at}, column {NEUROBEM_COLUMNS[j]!r}: not a finite number")
     ref = a[:, 29:35]
-    has_ref = bool(np.all(np.isfinite(ref)))
+    # (zeros throughout: a user's log without NeuroBEM's prediction, scored as its F 4.4 N: a flight-log fuzzing audit)
+    has_ref = bool(np.all(np.isfinite(ref))) and bool(np.any(ref != 0.0))
     return FlightLog(
         name=p.name, path=str(p), format="neurobem", t=a[:, 0].copy(), angular_acceleration=a[:, 1:4].copy(),
         angular_velocity=a[:, 4:7].copy(), attitude=a[:, 7:11].copy(), specific_force=a[:, 11:14].copy(),
