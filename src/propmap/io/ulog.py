@@ -283,14 +283,19 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
 def _valid_velocity(ulog, name: str, said: list, tv, vel, error):
     """The velocity messages the estimator flags valid (``v_xy_valid`` and ``v_z_valid`` of
     vehicle_local_position, where logged), the others left out with a note: an invalid estimate
-    (no GPS, indoors) of 0 m/s was read as the velocity (an input fuzzing audit, 2026-11-27)."""
+    (no GPS, indoors) of 0 m/s was read as the velocity (an input fuzzing audit, 2026-11-27).
+    Where every message is flagged, all are read, with a note: PX4's EKF2 sets the flags with the
+    horizontal position's validity, so a flight without position aiding (no GPS, vision or optical
+    flow) has none valid (a review); the kinematic check then judges the velocity."""
     d = min((s for s in ulog.data_list if s.name == "vehicle_local_position"), key=lambda s: s.multi_id)
     if not all(f in d.data for f in ("v_xy_valid", "v_z_valid")):
         return tv, vel
     ok = (np.asarray(d.data["v_xy_valid"]) != 0) & (np.asarray(d.data["v_z_valid"]) != 0)
     if not ok.any():
-        raise error(f"{name}: topic 'vehicle_local_position': the velocity estimate is flagged invalid (v_xy_valid, "
-                    f"v_z_valid) in all {ok.size} messages: no velocity to read")
+        said.append(f"{name}: vehicle_local_position: the velocity estimate is flagged invalid (v_xy_valid, "
+                    f"v_z_valid) in all {ok.size} messages (a flight without position aiding: no GPS, vision or "
+                    "optical flow?): read as logged")
+        return tv, vel
     if not ok.all():
         said.append(f"{name}: vehicle_local_position: {int((~ok).sum())} of {ok.size} velocity messages flagged "
                     "invalid (v_xy_valid, v_z_valid) left out; the velocity is interpolated across them")
