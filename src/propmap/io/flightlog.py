@@ -80,13 +80,13 @@ RATE_RATIO_AGAINST = -0.5
 #: refused where the rms difference exceeds KINEMATIC_TOLERANCE m/s^2 and KINEMATIC_RATIO times the rms acceleration
 #: over windows of both KINEMATIC_WINDOWS (an input fuzzing audit, 2026-11-27; figures in docs/flight.md)
 KINEMATIC_WINDOWS = (0.2, 0.5)  # [s]: refused where both windows miss
+KINEMATIC_TOLERANCE = 1.0  # [m/s^2]
+KINEMATIC_RATIO = 0.5
 #: a logged angular acceleration over the rates' change (least squares, both ways, over ANGULAR_ACCELERATION_WINDOW)
 #: must reach into this, judged where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more
 ANGULAR_ACCELERATION_RATIO = (0.3, 3.0)
 ANGULAR_ACCELERATION_WINDOW = 0.05  # [s]
 ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
-KINEMATIC_TOLERANCE = 1.0  # [m/s^2]
-KINEMATIC_RATIO = 0.5
 
 
 class FlightLogError(ValueError):
@@ -447,7 +447,7 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
     noise in one or the other pulls apart) both lie outside ANGULAR_ACCELERATION_RATIO, or they
     correlate negatively, where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more
     (in deg/s^2 57, zeros 0, negated -1, each read without a word, the measured moments 57 times
-    too large: an input fuzzing audit, 2026-11-27; the NeuroBEM segments 0.92-0.99, and a review's
+    too large: an input fuzzing audit, 2026-11-27; the NeuroBEM segments 0.97-0.99, and a review's
     vibration, gyro noise and logs at 20 Hz 0.5-1)."""
     if log.angular_acceleration is None:
         return
