@@ -185,6 +185,8 @@ def test_malformed_mat_logs(tmp_path, seg, mutate, match):
     (b"t,ang acc x\n1,2\n", "x.csv", "header lacks the NeuroBEM column"),
     ((";".join(NEUROBEM_COLUMNS) + "\n" + ";".join(["0,5"] * 41) + "\n").encode(), "x.csv",
      "separated by ';'; a flight-log CSV is separated by ','"),
+    (("\n".join(" ".join(["0.5"] * 41) for _ in range(3)) + "\n").encode(), "x.csv",  # (it named the data as the
+     "separated by blanks; a flight-log CSV is separated by ','"),  # header's missing columns: a fuzzing audit)
     (b"1,2,3\n4,5,6\n", "x.csv", "3 columns"),
     (b"ULog garbage", "x.ulg", "not a readable ULog"),
     (b"", "x.csv", "empty file"),

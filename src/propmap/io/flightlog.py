@@ -296,6 +296,10 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
         sep = header_separator(lines[first])
+        blanks = lines[first].split()
+        if missing and sep == "," and "," not in lines[first] and len(blanks) >= len(NEUROBEM_COLUMNS[:29]):
+            raise FlightLogError(f"{name}: the columns are separated by blanks; a flight-log CSV is separated by ','"
+                                 " (the NeuroBEM layout), with '.' as its decimal point") from None
         if missing and sep != "," and lines[first].count(sep) >= len(NEUROBEM_COLUMNS[:29]) - 1:
             said = "';'" if sep == ";" else "tabs"
             raise FlightLogError(f"{name}: the columns are separated by {said}; a flight-log CSV is separated by ','"
