@@ -87,6 +87,10 @@ def test_noisy_recovery_and_identifiability_report(quad, high_pitch):
     # the error of the well-determined c_l1 is consistent with its reported std error
     assert abs(cl1 - TRUE.cl1) < 3 * idf.std_error[0]
     assert idf.singular_values[0] / idf.singular_values[-1] > 100  # ill-conditioned, as docs/numerics.md
+    # the residuals' lag-1 autocorrelation over the conditions, as load and flight fits report (since 2026-11-27)
+    auto = r.extra["residual_autocorrelation"]
+    res = r.residuals[:high_pitch.n] - np.mean(r.residuals[:high_pitch.n])
+    assert auto["n"] == high_pitch.n and auto["lag1"] == pytest.approx(res[1:] @ res[:-1] / (res @ res), rel=1e-12)
     # c_l2 and c_d trade off along a flat valley (measured |r| = 0.82 at this optimum;
     # the value depends on where along the valley the fit stops)
     assert abs(idf.correlation[1, 2]) > 0.75

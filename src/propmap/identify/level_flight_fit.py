@@ -23,7 +23,7 @@ from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
 from .engine import _attach_jacobian, _finish, _m_effect, _objective, _params_from, _with_prior, _x0
 from .options import BODY_X0, FitOptions, _default_names
-from .result import FitResult
+from .result import FitResult, lag1_autocorrelation
 
 __all__ = ["body_lift", "fit_level_flight", "hover_vertical_force", "level_flight_forces"]
 
@@ -240,6 +240,9 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns,
                      nfev * data.n * n_rot, air, extra)
+    # the residuals' dependence from condition to condition, in the data's order (the std errors assume none; load and
+    # flight fits report it since 2026-11-27, this fit did not: a structural review)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(result.residuals[:data.n], np.zeros(data.n))
     if options.body_lift:
         M_used = result.params.M
         L = body_lift(best.x[-3:], data, vehicle, M_used, air)
