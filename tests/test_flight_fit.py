@@ -437,3 +437,16 @@ def test_an_airframe_term_that_ends_at_zero_is_reported_and_written_as_zero():
     assert "drag_area_y" in res.at_bound and res.x[k] == 0.0 and fitted_body_drag(res).drag_area[1] == 0.0
     assert res.extra["body_drag"]["drag_area"][1] == 0.0
     assert fitted_body_drag(res).drag_area[0] == res.x[names.index("drag_area_x")]
+
+
+def test_a_smoother_stall_blend_reports_its_cost():
+    """A flight fit at another M than the base set's said nothing of what that cost at the base
+    M, where load and level-flight fits report it (a structural review, 2026-11-27)."""
+    veh = pm.read_vehicle(VEHICLE)
+    truth = pm.generic_params().replace(collective=math.radians(5.0))
+    s = _synthetic(veh, truth, None, noise=0.0, n=30)
+    res = fit_flight(s, veh, options=FitOptions(names=("collective",), prior=False, M=6.0), discretization=COARSE)
+    eff = res.extra["M_effect"]
+    assert eff["M_fit"] == 6.0 and eff["M_base"] == truth.M and res.extra["M_used"] == 6.0
+    assert eff["rms_residual_at_M_fit"] > 0 and eff["rms_residual_at_M_base"] != eff["rms_residual_at_M_fit"]
+    assert "stall-blend smoothing: fitted with M = 6" in res.report_text()

@@ -43,7 +43,7 @@ from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from .continuation import _fit_with_continuation
-from .engine import _attach_jacobian, _finish, _params_from, _with_prior, _x0
+from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             speed_band_errors)
@@ -326,12 +326,14 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
             _attach_jacobian(residual, with_jacobian)
         return residual
 
-    make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
+    make_data = make_residual
+    make_residual, prior = _with_prior(make_data, names, base, options, scale=vehicle.weight)
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit flight",
                                                                     x0)
     extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
              "centre_of_mass": None, "rotor_interference": None, "moments_fitted": bool(moments), "moment_arm_m": arm,
-             "discretization": [discretization.n_radial, discretization.n_azimuth], "body_drag": None, **extra}
+             "discretization": [discretization.n_radial, discretization.n_azimuth], "body_drag": None, **extra,
+             **_m_effect(make_data, best, base, options)}  # (what a smoother --M cost: loads and level flight said)
     if prior:
         extra["prior"] = prior
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
