@@ -33,7 +33,7 @@ from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, different
 from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
-from .engine import (_attach_jacobian, _bounds, _directions_report, _finish, _fit_along_directions, _solve,
+from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_saturation,
                      _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
@@ -425,87 +425,6 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     auto = lag1_autocorrelation(r[order], key[order]) if r.size else None
     return replace(result, warnings=tuple(warns) if isinstance(result.warnings, tuple) else warns,
                    extra={**result.extra, "residual_labels": labels, "residual_autocorrelation": auto})
-
-
-def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitResult:
-    """The flap compliance's upper 95% limit from the profile likelihood where the linearised
-    one is too narrow.
-
-    The flapping saturates: beyond a few rad/(N m) a propeller's blades flap nearly as an
-    articulated blade's (the centrifugal stiffening), so the loads change little and the
-    linearised interval, from the local slope, is far too narrow (a user-level audit,
-    2026-11-26: fits of loads made with a compliance of 15 and 1% noise gave 7-50, each with
-    an interval of about +-10%). The profile likelihood decides (D. J. Venzon and S. H.
-    Moolgavkar, "A method for computing profile-likelihood-based confidence intervals",
-    Applied Statistics 37(1), 1988): the other parameters refitted (``residual``, with the
-    prior's rows where the fit had them) with the compliance held, the upper limit is where
-    the cost has risen by the 95% criterion, (t_{0.975, N-p})^2 / 2 times the data's residual
-    variance. Held at the upper bound first: a smaller rise puts the limit at the bound;
-    else held at the linearised limit: a smaller rise there means that limit is too narrow,
-    and five bisections (geometric) between it and the bound place the profile's. The limit
-    and a warning replace the linearised ones; the lower limit stays linearised. 1-7 refits of
-    the other parameters from the optimum, by the fit engine (engine._solve, one start).
-    """
-    names = result.names
-    if "flap_compliance" not in names or "flap_compliance" in result.at_bound:
-        return result
-    from scipy import stats
-
-    from ..core.solver import SolverError
-
-    j = names.index("flap_compliance")
-    lb, ub = _bounds(names, options)
-    top = float(ub[j])
-    x_opt = np.asarray(result.x, float)
-    if not (math.isfinite(top) and x_opt[j] < top):
-        return result
-    keep = np.array([i != j for i in range(len(names))])
-    others = tuple(n for n in names if n != "flap_compliance")
-    refit = replace(options, multistart=0)  # (from the optimum: one local refit)
-    both = getattr(residual, "with_jacobian", None)
-    dof = max(result.residuals.size - len(names), 1)
-    s2 = float(result.residuals @ result.residuals) / dof
-    optimum = result.cost + float(result.extra.get("prior", {}).get("cost", 0.0))
-    edge = 0.5 * float(stats.t.ppf(0.975, dof)) ** 2 * s2
-
-    def rise(k: float) -> float:
-        """The profile's cost at compliance k, less the optimum's: the fit engine's refit of the others."""
-        def held(z):
-            return residual(np.insert(np.asarray(z, float), j, k))
-
-        if both is not None:
-            def held_with_jacobian(z):
-                r, J = both(np.insert(np.asarray(z, float), j, k))
-                return r, J[:, keep]
-
-            _attach_jacobian(held, held_with_jacobian)
-        best = _solve(held, others, refit, "profile", x_opt[keep])[0]
-        return float(best.cost) - optimum
-
-    idf = result.identifiability
-    ci = np.array(idf.ci95, dtype=float)
-    linear = float(ci[j, 1])
-    try:
-        at_top = rise(top)
-        if at_top < edge:
-            limit, why = top, (f"the data hardly tell {x_opt[j]:.3g} from the bound {top:g} rad/(N m) (refitted with "
-                               f"it there, the cost rises by {at_top / s2:.2g} residual variances, the 95% edge "
-                               f"{edge / s2:.2g}): the blades' flapping saturates, so the 95% interval reaches the "
-                               "bound (the data say the blades flap at least about this much, not how much more)")
-        elif math.isfinite(linear) and x_opt[j] < linear < top and rise(linear) < edge:
-            lo_k, hi_k = linear, top
-            for _ in range(5):
-                mid = math.sqrt(lo_k * hi_k)
-                lo_k, hi_k = (mid, hi_k) if rise(mid) < edge else (lo_k, mid)
-            limit, why = hi_k, (f"its 95% interval's upper end is {hi_k:.3g} rad/(N m) by the profile likelihood "
-                                f"(the linearised one, {linear:.3g}, is too narrow: the flapping saturates)")
-        else:
-            return result
-    except (SolverError, ValueError, FloatingPointError):  # a refit that fails leaves the linearised interval
-        return result
-    ci[j, 1] = limit
-    warns = (*result.warnings, f"flap_compliance: {why}")
-    return replace(result, identifiability=replace(idf, ci95=ci), warnings=warns)
 
 
 def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | None = None,

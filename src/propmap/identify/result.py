@@ -32,7 +32,7 @@ class Identifiability:
     SVD of J, no cut-off) with s^2 = |r|^2 / (N - p); 95% intervals use Student's t with
     N - p degrees of freedom, cut at the parameter's bounds (a fit's report; the flap
     compliance's reaches its upper bound where the profile likelihood says so:
-    fit._flap_saturation). A parameter is "poorly determined" when its std error
+    engine._flap_saturation). A parameter is "poorly determined" when its std error
     exceeds POOR_REL_STD (10%) of max(|estimate|, its natural scale) (the scale matters
     for cambered parameters whose value may be near zero: CAMBERED_SCALE), i.e. its 95%
     interval is wider than about +-20%; "not determined" when the std error is not finite
