@@ -623,3 +623,20 @@ def test_ulog_velocity_messages_flagged_invalid_are_left_out(tmp_path):
         read_flight_log(tmp_path / "g.ulg")
     assert any("flagged invalid (v_xy_valid, v_z_valid) in all 200 messages (a flight without position aiding"
                in str(w.message) for w in caught)
+
+
+def test_an_integer_or_sparse_mat_log_is_named_as_such(tmp_path):
+    """An int16 log (time truncated to whole seconds) was refused as 'time does not increase at
+    sample 2', and a sparse matrix as 'found 0 variable(s) (none)' (a flight-log fuzzing audit,
+    2026-11-27)."""
+    import scipy.sparse
+
+    a = np.arange(41 * 5, dtype=np.int16).reshape(5, 41)
+    scipy.io.savemat(tmp_path / "i.mat", {"x": a})
+    with pytest.raises(FlightLogError, match=r"i\.mat: variable 'x' holds int16 values; a flight log's are "
+                                             r"floating-point"):
+        read_flight_log(tmp_path / "i.mat")
+    scipy.io.savemat(tmp_path / "s.mat", {"x": scipy.sparse.csc_matrix(a.astype(float))})
+    with pytest.raises(FlightLogError, match=r"s\.mat: expected one N x 41 array, found 0 variable\(s\) \(none\); "
+                                             r"not read: x \(a sparse matrix\)"):
+        read_flight_log(tmp_path / "s.mat")

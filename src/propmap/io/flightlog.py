@@ -248,13 +248,20 @@ def _mat_array(raw: bytes, name: str) -> np.ndarray:
         raise FlightLogError(f"{name}: not a readable MATLAB v5 file ({type(exc).__name__}: "
                              f"{str(exc)[:120]})") from None
     arrays = {k: v for k, v in data.items() if not k.startswith("__") and isinstance(v, np.ndarray)}
+    other = [f"{k} ({'a sparse matrix' if hasattr(v, 'toarray') else type(v).__name__})" for k, v in data.items()
+             if not k.startswith("__") and not isinstance(v, np.ndarray)]  # (a sparse one was reported as none)
     if len(arrays) != 1:
         raise FlightLogError(f"{name}: expected one N x {len(NEUROBEM_COLUMNS)} array, found "
-                             f"{len(arrays)} variable(s) ({', '.join(sorted(arrays))[:200] or 'none'})")
+                             f"{len(arrays)} variable(s) ({', '.join(sorted(arrays))[:200] or 'none'})"
+                             + (f"; not read: {', '.join(other)[:200]} (save it as a full double array)" if other
+                                else ""))
     (key, a), = arrays.items()
     if a.ndim != 2 or a.shape[1] != len(NEUROBEM_COLUMNS) or a.dtype.kind not in "iuf":
         raise FlightLogError(f"{name}: variable {key!r} must be an N x {len(NEUROBEM_COLUMNS)} numeric array "
                              f"(the NeuroBEM layout), got shape {a.shape} of {a.dtype}")
+    if a.dtype.kind != "f":  # (int16 time truncated to whole seconds was refused as 'time does not increase')
+        raise FlightLogError(f"{name}: variable {key!r} holds {a.dtype} values; a flight log's are floating-point "
+                             "(its time in seconds, its rates in rad/s): save it as double")
     return a.astype(float)
 
 
