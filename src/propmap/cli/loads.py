@@ -168,11 +168,10 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     import pandas as pd
 
     reader, names, sep, mapped = _points_reader(path, chunksize)
-    from ..identify.csvfile import unnamed_value_message
+    from ..identify.csvfile import unnamed_columns, unnamed_value_message
 
     cols = {c: mapped[c][0] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in mapped}
-    lead = next((j for j, name in enumerate(names) if name), len(names))  # (unnamed ones before it: row indexes)
-    unnamed = [j for j, name in enumerate(names) if not name and j > lead]
+    unnamed = unnamed_columns(names)
     limits = {"rpm": (RPM_MIN, RPM_MAX), "airspeed": (0.0, AIRSPEED_MAX), "incidence_deg": (0.0, 180.0),
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2

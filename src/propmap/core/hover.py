@@ -13,7 +13,7 @@ import numpy as np
 
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller, has_bool
-from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, check_air, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
 
@@ -141,8 +141,7 @@ class HoverModel:
             ``air`` neither None nor an :class:`Air`.
         """
         air = Air() if air is None else air
-        if not isinstance(air, Air):
-            raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+        check_air(air)
         for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")

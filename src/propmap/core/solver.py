@@ -216,8 +216,8 @@ def check_model_args(propeller, params, air=_UNCHECKED, discretization=_UNCHECKE
         raise TypeError(f"propeller must be a Propeller (propmap.load_propeller, read_geometry), "
                         f"got {type(propeller).__name__}")
     _check_params(params)
-    if air is not _UNCHECKED and not isinstance(air, Air):
-        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    if air is not _UNCHECKED:
+        check_air(air)
     if discretization is not _UNCHECKED and not isinstance(discretization, Discretization):
         raise TypeError(f"discretization must be a propmap.Discretization, got {type(discretization).__name__}")
 
@@ -250,9 +250,24 @@ def model_air(params, air=None, *, name: str = "params") -> Air:
     """
     _check_params(params, name)
     air = params.air if air is None else air
+    check_air(air)
+    return air
+
+
+def check_air(air) -> None:
+    """Refuse an ``air`` that is not an :class:`Air`.
+
+    Parameters
+    ----------
+    air : object
+
+    Raises
+    ------
+    TypeError
+        ``air`` not an :class:`Air` (the message names its type).
+    """
     if not isinstance(air, Air):
         raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
-    return air
 
 
 def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:

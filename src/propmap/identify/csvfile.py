@@ -17,8 +17,8 @@ LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in
 characters, each at most once (a duplicated column is an error, never "the first wins");
 columns not listed are ignored, and so are unnamed ones that hold nothing (a trailing
 separator) or come before the first named one (a spreadsheet's or pandas' row index); an
-unnamed column after a named one that holds a value is an error (the decimals of ``55,27`` in a comma-separated file
-land there). Numbers are plain ASCII decimals
+unnamed column after a named one that holds a value is an error (the decimals of ``55,27``
+in a comma-separated file land there). Numbers are plain ASCII decimals
 (``1e3``; not ``1_000``, not NaN or inf). Valid ranges:
 
 =====================  ======================================================
@@ -74,6 +74,13 @@ MAX_LINES = 10_000_000
 
 class DataError(ValueError):
     """Bad identification data; the message names the problem."""
+
+
+def unnamed_columns(names) -> list[int]:
+    """The 0-based indexes of a header's unnamed columns after its first named one (those before
+    it are a row index, read as nothing); a value under one is refused (unnamed_value_message)."""
+    lead = next((j for j, c in enumerate(names) if c), len(names))
+    return [j for j, c in enumerate(names) if not c and j > lead]
 
 
 def unnamed_value_message(j: int, cell: str, sep: str, after_named: bool = True) -> str:
@@ -220,8 +227,7 @@ class _Csv:
         marks = [None, None]
         rows = self._rows()
         next(rows)  # the header
-        lead = next((j for j, c in enumerate(self.columns) if c), n)  # (unnamed ones before it: row indexes)
-        unnamed = [j for j, c in enumerate(self.columns) if not c and j > lead]
+        unnamed = unnamed_columns(self.columns)
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)

@@ -290,9 +290,13 @@ def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propelle
     return _apc_pe0(Path(path), text, name=name, source=source)
 
 
+#: the columns of a PE0 station row (STATION, CHORD, ..., TWIST)
+PE0_COLUMNS = 13
+
+
 def _pe0_table_continues(lines, end: int, where: str) -> None:
     """Refuse a station table that a damaged row (blank, short, decimal commas) cut short: a
-    station row of 13 numbers after the line ``end`` that ended it, before the file's next
+    station row of PE0_COLUMNS numbers after the line ``end`` that ended it, before the file's next
     header-like line (an input fuzzing audit, 2026-11-27: the rows after a blank line near the
     tip were dropped and the tip extrapolated without a word)."""
     for k in range(end + 1, len(lines) + 1):
@@ -303,7 +307,7 @@ def _pe0_table_continues(lines, end: int, where: str) -> None:
             vals = [parse_number(x) for x in parts]
         except ValueError:
             continue
-        if len(vals) >= 13:
+        if len(vals) >= PE0_COLUMNS:
             raise GeometryFileError(f"{where}, line {end}: the station table breaks off here (a blank, short or "
                                     f"malformed row) and goes on at line {k}: repair line {end}")
 
@@ -337,19 +341,19 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
                 bad = x
                 break
         if bad is not None:
-            if len(parts) >= 13 and vals:  # a station row (it starts with a number) with a bad value
+            if len(parts) >= PE0_COLUMNS and vals:  # a station row (it starts with a number) with a bad value
                 raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
             if rows:
                 end = k
                 break
             continue  # the units line under the header
-        if len(vals) >= 13:
+        if len(vals) >= PE0_COLUMNS:
             for j, v in enumerate(vals):
                 if not math.isfinite(v):
                     col = header[j][:20] if j < len(header) else "?"
                     raise GeometryFileError(f"{where}, line {k}: column {j + 1} ({col}) is {_clip(parts[j], 40)}, "
                                             "not a finite number")
-            rows.append(vals[:13])
+            rows.append(vals[:PE0_COLUMNS])
             row_lines.append(k)
         elif rows:
             end = k

@@ -164,14 +164,14 @@ def read_uiuc_sweep(path) -> Sweep:
     where = show_path(path)
     text = _read_text(path, MeasurementFileError)
     t = _read_table(path, text, ["J", "CT", "CP", "eta"], MeasurementFileError)
-    _check_rpm_lines(text, t, where)
     _check_column(t, 0, "J", 0.0, J_MAX, path, MeasurementFileError)
     _check_column(t, 1, "CT", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     _check_column(t, 2, "CP", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     d = t.data
     parts = path.stem.split("_")
-    rpm_keys = ("rpmaverage", "averagerpm", "rpm")
-    item = next(((k, v) for k, v in t.meta.items() if re.sub(r"[\s_]", "", k.lower()) in rpm_keys), None)
+    item = next(((k, v) for k, v in t.meta.items() if _is_rpm_key(k)), None)
+    if item is None:
+        _check_rpm_lines(text, where)
     if item is not None:
         key, (raw, line) = item
         what = f"{where}, line {line}: {key} = {_clip(raw, 40)}"
@@ -202,12 +202,15 @@ NAME_RPM_MIN = 100.0
 _RPM_LINE = re.compile(r"\s*(rpm[\s_]*average|average[\s_]*rpm|rpm)\s*[=:]\s*(.*?)\s*$", re.I)
 
 
-def _check_rpm_lines(text: str, table, where: str) -> None:
+def _is_rpm_key(key: str) -> bool:
+    """A metadata key that gives a sweep's measured rate (``RPM average``, ``RPM_average``, ``rpm``)."""
+    return re.sub(r"[\s_]", "", key.lower()) in ("rpmaverage", "averagerpm", "rpm")
+
+
+def _check_rpm_lines(text: str, where: str) -> None:
     """Refuse an 'RPM average = N' line whose value is not a plain number (``4,998``, ``4998
-    rpm``): it was not read as the rate and the file name's nominal rpm was taken instead, 0.4%
-    off, without a word (an input fuzzing audit, 2026-11-27)."""
-    if any(re.sub(r"[\s_]", "", k.lower()) in ("rpmaverage", "averagerpm", "rpm") for k in table.meta):
-        return
+    rpm``), in a file whose metadata gave no rate: it was not read as the rate and the file name's
+    nominal rpm was taken instead, 0.4% off, without a word (an input fuzzing audit, 2026-11-27)."""
     for k, ln in enumerate(io.StringIO(text, newline=None), start=1):
         m = _RPM_LINE.fullmatch(ln.rstrip("\n"))
         if m:
