@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
-from .fit import EVEN_TERMS, GAZEBO_AXIAL_SPEED, LOADS, ODD_TERMS, SimExport
+from .fit import LOADS, SimExport
+from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS
 
 __all__ = ["check_rotorpy_vehicle", "error_lines", "report_path", "rotorpy_directions", "write_export"]
 

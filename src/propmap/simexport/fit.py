@@ -7,46 +7,7 @@ simple model's hover thrust and torque equal the full model's at the envelope's 
 and the speed terms are then fitted by least squares to what remains, each within its
 physical sign. The error against the full model is measured on other points of the envelope
 than the fitted ones and reported, so that a user sees what the simple model costs.
-Notation: Omega [rad/s], V [m/s], incidence beta,
-V_ip = V sin(beta) (in-plane), V_z = V cos(beta) (axial, positive in climb), R the tip
-radius. Sources of the model forms (each checked against the simulator's source):
-
-* ``rotorpy`` -- RotorPy (Folk et al., "RotorPy: a Python-based multirotor simulator with
-  aerodynamics", 2023; ``rotorpy/vehicles/multirotor.py``, ``Multirotor.compute_body_wrench``
-  of release 3.0.0): T = k_eta Omega^2 + k_h V_ip^2 - k_z Omega V_z, rotor drag
-  D = k_d Omega V_ip, yaw moment rotor_dir k_m Omega^2 about +z, flapping moment
-  -k_flap Omega (v x z). The flapping moment acts about z x e_ip (a pitch-back moment of
-  flapping blades); propmap's model with rigid blades and uniform inflow (the defaults) has
-  none about that axis (docs/conventions.md), so k_flap = 0 (a set with flapping, a linear
-  inflow model or the dynamic stall is warned about: its pitching moment and side force are
-  left out),
-  and propmap's rolling moment M_R (about e_ip) has no RotorPy term: its error is reported.
-  RotorPy's ``rotor_directions`` entry is the sign of the reaction torque on the body about
-  +z: -spin in propmap's convention
-  (a "ccw" rotor, spin +1 about its thrust axis, is -1 there).
-* ``gazebo-classic`` -- PX4-SITL_gazebo-classic's motor model
-  (``src/gazebo_motor_model.cpp``, ``GazeboMotorModel::UpdateForcesAndMoments``):
-  T = motorConstant Omega^2 clamp(1 - |V_z| / 25 m/s, 0, 1) (the plugin's fixed axial
-  fade), drag torque -turning_direction momentConstant motorConstant Omega^2 (the unfaded
-  thrust), D = rotorDragCoefficient |Omega| V_ip, rolling moment
-  -|Omega| turning_direction rollingMomentCoefficient V_perp (turning_direction +1 for
-  ccw; the turning direction since the plugin's pull request #809, 2021): propmap's
-  -spin M_R e_ip for both turning directions.
-* ``gz-sim`` -- gz-sim's MulticopterMotorModel system
-  (``src/systems/multicopter_motor_model/MulticopterMotorModel.cc``): the same formulas
-  without the axial fade (T = motorConstant Omega^2) and with the rolling moment
-  -|Omega| rollingMomentCoefficient V_perp, not multiplied by the turning direction:
-  right for a ccw rotor; a cw rotor needs the coefficient's negative (the written file
-  gives both).
-* ``multinomial`` -- a multinomial in the rotorcraft advance ratio mu = V_ip / (Omega R)
-  and inflow ratio lambda_c = V_z / (Omega R), of the form of Gill & D'Andrea,
-  "Computationally efficient force and moment models for propellers in UAV forward flight
-  applications", Drones 3(4) 77, 2019 (a Taylor expansion of a BEMT model). Coefficients
-  in the rotorcraft normalisation X = rho pi R^2 (Omega R)^2 C_X (R C_X for moments). The
-  term set is propmap's choice from the symmetry of the azimuth-averaged model, not the
-  paper's list (which this repository does not carry): C_T and C_Q even in mu,
-  {1, lambda, lambda^2, mu^2, lambda^3, lambda mu^2}; C_H and C_R odd in mu,
-  mu {1, lambda, lambda^2, mu^2}. (``gill2019``, its former name, is still accepted.)
+The targets' model forms and their sources: :mod:`propmap.simexport.forms`.
 """
 
 from __future__ import annotations
@@ -63,15 +24,10 @@ from ..core.geometry import _real
 from ..core.solver import check_model_args, rotor_loads
 from ..io.provenance import source_digest
 from ..io.uncertainty import model_uncertainty
+from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS, TARGETS, canonical_target, predict
 
-__all__ = ["Envelope", "SimExport", "TARGETS", "canonical_target", "check_seed", "default_envelope", "export_sim",
-           "predict"]
+__all__ = ["Envelope", "SimExport", "check_seed", "default_envelope", "export_sim"]
 
-TARGETS = ("rotorpy", "gazebo-classic", "gz-sim", "multinomial")
-#: former names, still accepted: "gazebo" (the PX4 classic plugin) and "gill2019" (propmap's
-#: multinomial, whose term set is not that paper's)
-ALIASES = {"gazebo": "gazebo-classic", "gill2019": "multinomial"}
-GAZEBO_AXIAL_SPEED = 25.0  # [m/s] PX4-SITL_gazebo-classic's fixed thrust fade with axial speed
 #: a term is fitted only if its dimensionless size (1; the advance ratio mu = V_ip/(Omega R),
 #: the inflow ratio lambda_c = V_z/(Omega R), their powers and products; Gazebo's thrust
 #: fade) reaches this somewhere in the envelope: a term below it changes its load by less
@@ -95,39 +51,6 @@ PHYSICAL_SIGN = {
     "rotorDragCoefficient": "rotor drag acts against the in-plane motion",
     "rollingMomentCoefficient": "more thrust on the advancing side than on the retreating side",
 }
-
-
-def canonical_target(target: str) -> str:
-    """``target``'s current name (a former name, :data:`ALIASES`, is mapped to it).
-
-    Parameters
-    ----------
-    target : str
-        One of :data:`TARGETS` or :data:`ALIASES`.
-
-    Returns
-    -------
-    str
-        One of :data:`TARGETS`.
-
-    Warns
-    -----
-    FutureWarning
-        For "gill2019".
-
-    Raises
-    ------
-    ValueError
-        Not a target.
-    """
-    if isinstance(target, str) and target in ALIASES:
-        if target == "gill2019":
-            warnings.warn("target 'gill2019' is now called 'multinomial': its term set is propmap's, not the list of "
-                          "Gill & D'Andrea 2019", FutureWarning, stacklevel=3)
-        return ALIASES[target]
-    if target not in TARGETS:
-        raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r:.60}")
-    return target
 
 
 @dataclass(frozen=True)
@@ -342,11 +265,6 @@ def _mu_lambda(s, R):
     return s["V"] * np.sin(s["beta"]) / tip, s["V"] * np.cos(s["beta"]) / tip
 
 
-#: the multinomial's terms (names as in the JSON file's terms_even / terms_odd)
-EVEN_TERMS = ("1", "lambda", "lambda^2", "mu^2", "lambda^3", "lambda mu^2")
-ODD_TERMS = ("mu", "mu lambda", "mu lambda^2", "mu^3")
-
-
 def _fit(target: str, s, R: float, rho: float, fixed: dict, held: dict) -> dict:
     om, V, b = s["omega"], s["V"], s["beta"]
     Vip, Vz = V * np.sin(b), V * np.cos(b)
@@ -394,57 +312,6 @@ def _fit(target: str, s, R: float, rho: float, fixed: dict, held: dict) -> dict:
             out[key] = [c0, *fitted] if c0 is not None else fitted
         return out
     raise ValueError(f"target must be one of {', '.join(TARGETS)}, got {target!r}")
-
-
-def predict(target: str, coefficients: dict, omega, airspeed, incidence):
-    """The simple model's (T, D, Q, M_R) [N, N, N m, N m] at Omega [rad/s], V [m/s], beta [rad].
-
-    The formulas are those of the module docstring (what the target simulator evaluates),
-    in propmap's scalar convention: D against the in-plane motion, Q opposing the rotation,
-    M_R positive for more thrust on the advancing side; Omega > 0.
-
-    Parameters
-    ----------
-    target : str
-        One of :data:`TARGETS` (or a former name).
-    coefficients : dict
-        As :attr:`SimExport.coefficients` (or as read back from the written file).
-    omega, airspeed, incidence : float or array_like
-        Omega [rad/s], V [m/s], beta [rad]; broadcast together to a shape S.
-
-    Returns
-    -------
-    tuple of 4 ndarray
-        T, D, Q, M_R, shape S (M_R is zeros for rotorpy, which has no such term).
-
-    Raises
-    ------
-    ValueError
-        Unknown target.
-    """
-    target = canonical_target(target)
-    om, V, b = (np.asarray(x, float) for x in (omega, airspeed, incidence))
-    Vip, Vz = V * np.sin(b), V * np.cos(b)
-    c = coefficients
-    if target == "rotorpy":
-        T = c["k_eta"] * om**2 + c["k_h"] * Vip**2 - c["k_z"] * om * Vz
-        return T, c["k_d"] * om * Vip, c["k_m"] * om**2, 0.0 * om
-    if target in ("gazebo-classic", "gz-sim"):
-        fade = np.clip(1.0 - np.abs(Vz) / GAZEBO_AXIAL_SPEED, 0.0, 1.0) if target == "gazebo-classic" else 1.0
-        T0 = c["motorConstant"] * om**2
-        return (T0 * fade, c["rotorDragCoefficient"] * om * Vip, c["momentConstant"] * T0,
-                c["rollingMomentCoefficient"] * om * Vip)
-    R, rho = c["R"], c["rho"]
-    mu, lam = Vip / (om * R), Vz / (om * R)
-    q = rho * math.pi * R**2 * (om * R) ** 2
-    even = [np.ones_like(mu), lam, lam**2, mu**2, lam**3, lam * mu**2]
-    odd = [mu, mu * lam, mu * lam**2, mu**3]
-
-    def poly(coef, terms):
-        return sum(k * t for k, t in zip(coef, terms))
-
-    return (q * poly(c["CT"], even), q * poly(c["CH"], odd), q * R * poly(c["CQ"], even),
-            q * R * poly(c["CR"], odd))
 
 
 #: the loads whose error against the full model is reported
