@@ -179,7 +179,7 @@ def test_c_vehicle_wrench_equals_the_python_vehicle_map(tmp_path, rotor_map):
     airframe) against propmap.VehicleMap.wrench on the same map: random velocities, rates and rotor speeds."""
     from propmap.core.body import BodyDrag
     from propmap.vehicle import VehicleMap
-    from propmap.vehicle.model import Rotor, Vehicle
+    from propmap.vehicle import Rotor, Vehicle
 
     prop = pm.load_propeller("apce_8x6")
     d = 0.106

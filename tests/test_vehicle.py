@@ -10,7 +10,7 @@ import pytest
 import propmap as pm
 from propmap.core.body import BodyDrag, body_drag_force
 from propmap.vehicle import VehicleFileError, hover_omega, read_vehicle, vehicle_wrench
-from propmap.vehicle.model import Rotor, Vehicle
+from propmap.vehicle import Rotor, Vehicle
 
 DATA = Path(pm.__file__).parent / "data"
 NEUROBEM = DATA / "examples" / "neurobem_quadrotor.toml"

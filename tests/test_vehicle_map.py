@@ -12,7 +12,7 @@ import propmap as pm
 from propmap.core.body import BodyDrag
 from propmap.maps import RotorMap, build_map
 from propmap.vehicle import VehicleMap, read_vehicle, vehicle_wrench
-from propmap.vehicle.model import Rotor, Vehicle
+from propmap.vehicle import Rotor, Vehicle
 
 DATA = Path(pm.__file__).parent / "data"
 RPM = math.pi / 30

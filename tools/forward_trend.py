@@ -28,7 +28,7 @@ from propmap.identify.flight_scores import _baseline_columns, _hub_velocities
 from propmap.io.calibration import calibration
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
-from propmap.vehicle.model import rotor_geometry
+from propmap.vehicle import rotor_geometry
 
 ROOT = Path(__file__).resolve().parents[1]
 LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"

@@ -5,8 +5,9 @@ and io only.
 """
 
 from .file import VehicleFileError, read_vehicle
+from .layout import Rotor, Vehicle, rotor_geometry
 from .mapped import VehicleMap, VehicleMapWrench
-from .model import Rotor, Vehicle, VehicleWrench, hover_omega, rotor_geometry, vehicle_wrench
+from .model import VehicleWrench, hover_omega, vehicle_wrench
 
 __all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleWrench", "VehicleFileError", "hover_omega",
            "read_vehicle", "rotor_geometry", "vehicle_wrench"]

@@ -14,7 +14,7 @@ from ..core.body import BodyDrag
 from ..core.vector import disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
 
 if TYPE_CHECKING:  # (model.py imports this module)
-    from .model import Vehicle
+    from .layout import Vehicle
 
 __all__ = ["BODY_DRAG_NAMES", "MOTION_NAMES", "cross_matrix", "drag_jacobian", "hub_velocity_jacobians",
            "load_derivatives", "motion_derivatives", "requested_derivatives"]

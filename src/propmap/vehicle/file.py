@@ -58,7 +58,7 @@ from ..core.geometry import INCH, Propeller
 from ..core.body import BodyDrag
 from ..io.inputs import as_path, show_path
 from ..io.toml_file import load_toml
-from .model import Rotor, Vehicle
+from .layout import Rotor, Vehicle
 
 __all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
 

@@ -26,7 +26,8 @@ import numpy as np
 
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX
-from .model import Vehicle, _samples, rotor_geometry
+from .layout import Vehicle, rotor_geometry
+from .model import _samples
 
 __all__ = ["VehicleMap", "VehicleMapWrench"]
 
