@@ -399,7 +399,7 @@ def test_validate_compares_a_few_or_repeated_points_and_says_a_unit_slip(tmp_pat
 
 
 def test_load_errors_leave_out_unconverged_points_and_score_the_in_plane_force_at_incidence(monkeypatch):
-    from propmap import validation
+    from propmap.validation import loads as validation
     from propmap.identify import LoadData
 
     prop = pm.load_propeller("apce_8x6")

@@ -41,7 +41,7 @@ def blind_cases():
     from propmap.identify import loads_from_catalogue
     from propmap.io.calibration import generic_without
     from propmap.io.catalogue import catalogue, load_propeller
-    from propmap.validation import _coefficients
+    from propmap.validation.catalogue import _coefficients
 
     air = Air()
     cat = catalogue()

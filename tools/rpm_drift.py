@@ -24,7 +24,7 @@ import propmap as pm
 from propmap.identify import FitOptions, fit_loads, loads_from_catalogue
 from propmap.io.calibration import generic_without, population
 from propmap.io.catalogue import catalogue
-from propmap.validation import _coefficients, rpm_groups
+from propmap.validation.catalogue import _coefficients, rpm_groups
 
 
 def static_lowest_case(name: str) -> dict:

@@ -48,7 +48,7 @@ def _reference_errors(data, prop, air):
     import numpy as np
 
     from ..core.airfoil import preset
-    from ..validation import _coefficients, coefficient_errors
+    from ..validation.catalogue import _coefficients, coefficient_errors
 
     static = data.airspeed == 0
     paper = coefficient_errors(data, prop, preset("gill2017-apc"), air=air, mask=~static)

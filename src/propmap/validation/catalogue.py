@@ -1,0 +1,194 @@
+"""Held-out errors of the calibration protocols on load data in the catalogue's metric (rms |dCT| /
+static CT, |dCP| / static CP): :func:`coefficient_errors`, :func:`cross_validate`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.airfoil import Air, SectionParams
+from ..core.geometry import Propeller
+from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
+
+__all__ = ["PROTOCOLS", "PROTOCOL_TEXT", "coefficient_errors", "cross_validate", "rpm_groups"]
+
+PROTOCOLS = ("loso", "loro", "lowest", "static", "blind")
+PROTOCOL_TEXT = {
+    "loso": "leave one sweep out: fit on the static run and the other sweeps, predict the held-out sweep",
+    "loro": "leave one rpm out: fit on the static run and the sweeps at other rpm, predict all sweeps at that rpm",
+    "lowest": "fit on the static run and the lowest-rpm sweeps, predict the sweeps at higher rpm",
+    "static": "fit on the static run only, predict the sweeps",
+    "blind": "no fit: the generic set derived without this propeller's family, predict the sweeps",
+}
+#: sweeps whose mean rotation rates differ by less than this fraction form one rpm group
+SAME_RPM = 0.03
+
+
+def _coefficients(data, propeller: Propeller, air: Air):
+    """Measured CT, CP (propeller convention) of load data; NaN where not measured."""
+    n = data.omega / (2 * math.pi)
+    D = propeller.diameter
+    CT = data.measured["thrust"] / (air.rho * n**2 * D**4) if "thrust" in data.measured else np.full(data.n, np.nan)
+    CP = (data.measured["torque"] * 2 * math.pi / (air.rho * n**2 * D**5) if "torque" in data.measured
+          else np.full(data.n, np.nan))
+    return CT, CP
+
+
+def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air | None = None, mask=None,
+                       discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """rms |dCT| / static CT and rms |dCP| / static CP of ``params`` on load data.
+
+    The normalisation is the mean measured CT and CP of the static points (airspeed 0)
+    of ``data`` (all of them, also when ``mask`` selects other points), so that errors of
+    propellers of any size and pitch compare.
+
+    Parameters
+    ----------
+    data : LoadData
+        Must contain static points with thrust and torque.
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    air : Air, optional
+        The air of the model and of the coefficients' normalisation (default: the parameter
+        set's own ``.air``).
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
+    mask : array_like of bool, optional
+        Points to evaluate (default all).
+
+    Returns
+    -------
+    dict
+        ``rms_ct``, ``rms_cp`` [-], ``bias_ct``, ``bias_cp`` [-] (mean signed error over
+        the same normalisation), ``n_points``.
+
+    Raises
+    ------
+    ValueError
+        No static points, or the mask selects none.
+    SolverError
+        From the model.
+    """
+    air = model_air(params, air)
+    CT, CP = _coefficients(data, propeller, air)
+    static = data.airspeed == 0
+    if not static.any():
+        raise ValueError("coefficient_errors needs static points (airspeed 0) to normalise by")
+    CT0, CP0 = float(np.nanmean(CT[static])), float(np.nanmean(CP[static]))
+    m = np.ones(data.n, bool) if mask is None else np.asarray(mask, bool)
+    if not m.any():
+        raise ValueError("the mask selects no point")
+    r = rotor_loads(propeller, params, data.omega[m], data.airspeed[m], data.incidence[m], air=air,
+                    discretization=discretization)
+    dct = (r.CT - CT[m]) / CT0
+    dcp = (r.CP - CP[m]) / CP0
+    return {"rms_ct": float(np.sqrt(np.nanmean(dct**2))), "rms_cp": float(np.sqrt(np.nanmean(dcp**2))),
+            "bias_ct": float(np.nanmean(dct)), "bias_cp": float(np.nanmean(dcp)), "n_points": int(m.sum())}
+
+
+def rpm_groups(data) -> list[list[str]]:
+    """The sweeps of load data grouped by rotation rate (within SAME_RPM), lowest first.
+
+    UIUC often measures two sweeps at one rpm that split the advance-ratio range.
+    """
+    static = data.airspeed == 0
+    sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
+    rate = {g: float(np.mean(data.omega[data.group == g])) for g in sweeps}
+    groups: list[list[str]] = []
+    for g in sorted(sweeps, key=rate.get):
+        if groups and rate[g] <= rate[groups[-1][0]] * (1 + SAME_RPM):
+            groups[-1].append(g)
+        else:
+            groups.append([g])
+    return groups
+
+
+def _splits(data, protocol: str):
+    """(train mask, test mask) pairs of a protocol (every test mask holds sweep points only)."""
+    static = data.airspeed == 0
+    groups = rpm_groups(data)
+    if protocol == "loso":
+        return [(data.group != g, data.group == g) for grp in groups for g in grp]
+    if protocol == "loro":
+        return [(~np.isin(data.group, grp), np.isin(data.group, grp)) for grp in groups]
+    if protocol == "lowest":
+        train = static | np.isin(data.group, groups[0])
+        return [(train, ~train)]
+    if protocol == "static":
+        return [(static, ~static)]
+    return [(None, ~static)]
+
+
+def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protocols=PROTOCOLS, air: Air | None = None,
+                   population: dict | None = None,
+                   discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
+    """Held-out errors of the calibration protocols for one propeller's static run and sweeps.
+
+    Every fit uses :func:`propmap.identify.fit_loads` with its defaults for the data it
+    sees (parameters chosen by the data, population prior) and ``generic`` as start,
+    prior mean and constants; the errors are pooled over all held-out points of the
+    protocol (``loso``: every sweep held out in turn).
+
+    Parameters
+    ----------
+    data : LoadData
+        Static points (airspeed 0) and axial sweeps at two rotation rates at least, with
+        thrust and torque; ``group`` labels the runs.
+    propeller : Propeller
+    generic : SectionParams
+        The set used blind and as the fits' base. For honest numbers it must not have
+        been fitted to this propeller's data (the shipped ``generic_folds``).
+    protocols : sequence of str
+        Any of :data:`PROTOCOLS`.
+    population : dict, optional
+        The fits' prior statistics (io.calibration.population); for honest numbers, those
+        of the catalogue without this propeller's family (``population(without=name)``).
+    air : Air, optional
+        The air of the model and of the coefficients' normalisation (default: the parameter
+        set's own ``.air``).
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
+
+    Returns
+    -------
+    dict
+        protocol -> ``{"rms_ct", "rms_cp", "bias_ct", "bias_cp", "n_points", "n_fits"}``.
+
+    Raises
+    ------
+    ValueError
+        An unknown protocol, no static points or fewer than two sweeps.
+    SolverError
+        From the model.
+    """
+    air = model_air(generic, air, name="generic")
+    from ..identify import FitOptions, fit_loads
+
+    bad = [p for p in protocols if p not in PROTOCOLS]
+    if bad:
+        raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
+    static = data.airspeed == 0
+    if not static.any() or len(rpm_groups(data)) < 2:
+        raise ValueError("cross_validate needs static points and sweeps at two rotation rates at least")
+    CT, CP = _coefficients(data, propeller, air)
+    CT0, CP0 = float(np.mean(CT[static])), float(np.mean(CP[static]))
+    out = {}
+    for protocol in protocols:
+        dct, dcp = [], []
+        splits = _splits(data, protocol)
+        for train, test in splits:
+            params = generic
+            if train is not None:
+                params = fit_loads(data.subset(train), propeller, base=generic, air=air,
+                                   options=FitOptions(population=population, discretization=discretization)).params
+            r = rotor_loads(propeller, params, data.omega[test], data.airspeed[test], data.incidence[test], air=air,
+                            discretization=discretization)
+            dct.append((r.CT - CT[test]) / CT0)
+            dcp.append((r.CP - CP[test]) / CP0)
+        dct, dcp = np.concatenate(dct), np.concatenate(dcp)
+        out[protocol] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "rms_cp": float(np.sqrt(np.mean(dcp**2))),
+                         "bias_ct": float(np.mean(dct)), "bias_cp": float(np.mean(dcp)), "n_points": int(dct.size),
+                         "n_fits": sum(t is not None for t, _ in splits)}
+    return out
