@@ -75,8 +75,8 @@ def test_fit_loads_from_a_static_thrust_stand_csv(capsys, tmp_path):
     assert code == 0, err
     rep = json.loads(stdout)
     # static data: the 8 parameters with the population prior (docs/identification.md)
-    assert set(rep["fitted"]) == {"cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp",
-                                  "alpha_L0_re"}
+    assert set(rep["fitted"]) == {"cl_alpha", "alpha_L0_deg", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp",
+                                  "alpha_L0_re_deg"}
     assert "prior" in rep
     p = pm.read_params(out)
     r = pm.rotor_loads(prop, p, st.rpm * math.pi / 30, 0.0, 0.0)

@@ -25,7 +25,7 @@ def test_fit_level_flight_writes_params_report_and_figure(capsys, tmp_path):
                             "--M", "30", "--json")
     assert code == 0, err
     rep = json.loads(stdout)
-    assert set(rep["fitted"]) == {"cl1", "cl2", "cd", "alpha0"}
+    assert set(rep["fitted"]) == {"cl1", "cl2", "cd", "alpha0_deg"}
     idf = rep["identifiability"]
     assert "cd" in idf["poorly_determined"]  # noisy synthetic data: cd poorly determined,
     assert any("cl2" in w for w in idf["warnings"])  # cl2 named (here via its -1.00 correlation with alpha0)

@@ -68,7 +68,8 @@ def test_static_fit_frees_three_directions_with_finite_intervals():
     r = fit_loads(st, prop)
     d = r.extra["directions"]
     assert d["count"] == STATIC_DIRECTIONS == 3
-    to_si = np.array([math.radians(1.0) if n in d["units"] else 1.0 for n in r.names])  # (angles in degrees)
+    assert d["names"] == [n + "_deg" if n in ("alpha_L0", "alpha_L0_re") else n for n in r.names]
+    to_si = np.array([math.radians(1.0) if n in d["units"] else 1.0 for n in d["names"]])  # (angles in degrees)
     base = np.array(d["base"]) * to_si
     B = np.array(d["loadings"]).T * to_si[:, None]
     np.testing.assert_allclose(r.x, base + B @ np.array(d["coefficients"]), rtol=1e-12, atol=1e-15)
@@ -77,14 +78,14 @@ def test_static_fit_frees_three_directions_with_finite_intervals():
     assert np.all(np.isfinite(idf.std_error)) and idf.std_error_data is None  # the data determine directions
     assert np.all(np.array(d["std_error_data_only"]) < 0.2)  # in prior standard deviations: well determined
     # the parameters' posterior keeps the population's spread along the held directions: within it, above 0
-    pop_sd = np.array(d["prior_std"]) / np.array([math.degrees(1.0) if n in d["units"] else 1.0 for n in r.names])
+    pop_sd = np.array(d["prior_std"]) / np.array([math.degrees(1.0) if n in d["units"] else 1.0 for n in d["names"]])
     assert np.all(idf.std_error <= pop_sd * (1 + 1e-9)) and np.all(idf.std_error > 0.05 * pop_sd)
     assert not idf.warnings and not r.warnings
     text = r.report_text()
     assert "free: 3 directions of the 8 parameters" in text and "direction_3" in text
     assert "the data determine 3.0 of the 3 free directions" in text
     json.dumps(r.to_dict())  # JSON-ready (angles in degrees, as "fitted")
-    assert r.to_dict()["directions"]["units"] == {"alpha_L0": "deg", "alpha_L0_re": "deg"}
+    assert r.to_dict()["directions"]["units"] == {"alpha_L0_deg": "deg", "alpha_L0_re_deg": "deg"}
     diff = fit_loads(st, prop, options=FitOptions(jacobian="differences"))  # the same fit, differencing the solver
     np.testing.assert_allclose(diff.x, r.x, rtol=1e-5, atol=1e-8)
     # in-sample: the static thrust and torque within 2% rms (the measured scatter is about 1%)

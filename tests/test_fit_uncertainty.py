@@ -82,9 +82,9 @@ def test_fit_loads_jackknife_leaves_the_sweeps_out(tmp_path, capsys):
     assert jk["ratio"]["cd_min"] == pytest.approx(jk["std_error"]["cd_min"] / rep["identifiability"]["std_error"]
                                                    ["cd_min"], rel=1e-9)
     assert 0.6 < auto["lag1"] < 0.95 and auto["n_effective"] < auto["n"] / 4
-    lo, hi = jk["ci95"]["alpha_L0"]  # (degrees, as the report's: estimate +- t(6) se)
-    assert (lo + hi) / 2 == pytest.approx(rep["fitted"]["alpha_L0"], abs=1e-9)
-    assert (hi - lo) / 2 == pytest.approx(2.4469 * jk["std_error"]["alpha_L0"], rel=1e-4)
+    lo, hi = jk["ci95"]["alpha_L0_deg"]  # (degrees, as the report's: estimate +- t(6) se)
+    assert (lo + hi) / 2 == pytest.approx(rep["fitted"]["alpha_L0_deg"], abs=1e-9)
+    assert (hi - lo) / 2 == pytest.approx(2.4469 * jk["std_error"]["alpha_L0_deg"], rel=1e-4)
     assert "std err and interval assume independent residuals" in text
 
 
@@ -107,9 +107,10 @@ def test_jackknife_report_units_and_folds():
     rep = jackknife_report(res, folds, "run", ["a", "b", "c"])
     se = math.sqrt(2 / 3 * 2e-4)
     assert rep["std_error"]["cl_alpha"] == pytest.approx(se)
-    assert rep["std_error"]["alpha_L0"] == pytest.approx(math.degrees(se))  # (angles in degrees, as the report)
+    assert rep["std_error"]["alpha_L0_deg"] == pytest.approx(math.degrees(se))  # (angles in degrees, as the report)
+    assert "alpha_L0" not in rep["std_error"] and "alpha_L0" not in rep["ci95"]
     with pytest.raises(ValueError, match="lacks the fitted parameter alpha_L0"):
-        jackknife_report(res, [{"cl_alpha": 1.0}] * 3, "run", ["a", "b", "c"])
+        jackknife_report(res, [{"cl_alpha": 1.0}] * 3, "run", ["a", "b", "c"])  # (the folds: SI names, rad)
 
 
 def test_jackknife_loads_from_python_is_the_commands():

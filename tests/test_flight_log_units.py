@@ -155,7 +155,7 @@ def test_cross_validation_with_a_held_out_log_folds_over_the_training_logs(tmp_p
     # the folds' spread as the collective's jackknife std error (2 logs: |x1 - x2| / 2), in the report's degrees
     x = [f["x"]["collective"] for f in cv["folds"]]
     assert cv["jackknife_std_error"]["collective"] == pytest.approx(abs(x[0] - x[1]) / 2, rel=1e-12)
-    assert rep["jackknife"]["std_error"]["collective"] == pytest.approx(math.degrees(abs(x[0] - x[1]) / 2))
+    assert rep["jackknife"]["std_error"]["collective_deg"] == pytest.approx(math.degrees(abs(x[0] - x[1]) / 2))
     assert rep["jackknife"]["groups"] == list(SEGMENTS[:2]) and rep["jackknife"]["by"] == "log"
     auto = rep["residual_autocorrelation"]  # (the training samples' force residuals, within each log)
     assert auto["n"] == rep["n_samples"] and -1 < auto["lag1"] < 1

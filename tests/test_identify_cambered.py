@@ -152,14 +152,18 @@ def test_report_names_parameters_at_a_bound_and_the_evaluation_limit(apc8x6):
     assert rep["std_error"]["cd_min"] is None and rep["ci95"]["cd_min"] == [None, None]
     assert all(v is not None and v > 0 for n, v in rep["std_error"].items() if n != "cd_min")
     # the angles' std errors and intervals in the units of their estimates (degrees; radians before,
-    # so that the interval of alpha_L0 did not contain its estimate)
+    # so that the interval of alpha_L0 did not contain its estimate), under names that say so
+    # (alpha_L0_deg, as in a parameter file; "alpha_L0" in degrees before 2026-11-27)
     full = r.to_dict()
-    assert "alpha_L0" in full["units"]
+    assert full["units"] == {"alpha_L0_deg": "deg", "alpha_L0_re_deg": "deg"}
+    assert "alpha_L0" not in full["fitted"] and "alpha_L0" not in full["identifiability"]["ci95"]
     for n in full["units"]:
         lo, hi = full["identifiability"]["ci95"][n]
         assert lo < full["fitted"][n] < hi, n
-        assert full["identifiability"]["std_error"][n] == pytest.approx(math.degrees(r.identifiability.std_error[
-            r.names.index(n)]))
+        k = r.names.index(n.removesuffix("_deg"))
+        assert full["fitted"][n] == pytest.approx(math.degrees(r.x[k]), rel=1e-12)
+        assert full["identifiability"]["std_error"][n] == pytest.approx(math.degrees(r.identifiability.std_error[k]))
+    assert full["fitted"]["cl_alpha"] == r.x[r.names.index("cl_alpha")]  # (the others as fitted: SI)
     short = fit_loads(d, apc8x6, options=FitOptions(prior=False, max_nfev=2))
     assert short.hit_max_nfev and "evaluation limit (2)" in short.report_text()
     assert short.warnings[0].startswith("the fit stopped at its evaluation limit (2)")  # first: not an optimum

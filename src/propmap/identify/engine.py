@@ -18,7 +18,7 @@ from dataclasses import fields, replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FLAP_START, FitOptions, _is_angle
+from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FLAP_START, FitOptions, _is_angle, report_name
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
 
 __all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
@@ -456,7 +456,8 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
     extra = dict(result.extra)
     deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")
     extra["directions"] = {
-        "count": k, "names": list(result.names), "units": {n: "deg" for n in result.names if _is_angle(n)},
+        "count": k, "names": [report_name(n) for n in result.names],
+        "units": {report_name(n): "deg" for n in result.names if _is_angle(n)},
         "coefficients": [float(v) for v in c],
         "std_error": [float(v) if np.isfinite(v) else None for v in post.std_error],
         "std_error_data_only": [float(v) if np.isfinite(v) else None for v in own.std_error],

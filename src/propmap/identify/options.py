@@ -192,6 +192,21 @@ def _is_angle(name: str) -> bool:
     return name in ANGLES
 
 
+def report_name(name: str) -> str:
+    """A fitted parameter's name in a report (JSON keys, text): an angle's with its unit, as in
+    a parameter file (``alpha_L0`` -> ``alpha_L0_deg``), the others' as fitted (SI)."""
+    return f"{name}_deg" if _is_angle(name) else name
+
+
+def report_value(name: str, value) -> float | None:
+    """``value`` of the fitted parameter ``name`` (SI: angles in rad) in the report's unit
+    (:func:`report_name`: degrees for an angle); None where it is not finite (JSON null)."""
+    v = float(value)
+    if not math.isfinite(v):
+        return None
+    return math.degrees(v) if _is_angle(name) else v
+
+
 @dataclass(frozen=True)
 class FitOptions:
     """Options of a fit.

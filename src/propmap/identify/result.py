@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core.airfoil import Air, SectionParams
-from .options import AIRFRAME_BOUNDS, CAMBERED_SCALE, FLAP_START, ROTOR_BOUNDS, _is_angle
+from .options import AIRFRAME_BOUNDS, CAMBERED_SCALE, FLAP_START, ROTOR_BOUNDS, _is_angle, report_name, report_value
 
 __all__ = ["FitResult", "Identifiability", "POOR_REL_STD", "jackknife_report", "jackknife_std_error",
            "lag1_autocorrelation"]
@@ -94,18 +94,18 @@ class Identifiability:
     std_error_data: np.ndarray | None = None
     effective_parameters: float | None = None
 
-    def to_dict(self, degrees=()) -> dict:
-        """JSON-ready form (a non-finite std error is null); the parameters named in
-        ``degrees`` in degrees (their std errors and intervals: the fit report's ``units``), the
-        others as fitted (angles in rad)."""
+    def to_dict(self) -> dict:
+        """JSON-ready form (a non-finite std error is null), keyed and in units as the fit
+        report's: an angle's under its name with ``_deg``, in degrees
+        (:func:`~propmap.identify.options.report_name`), the others as fitted (SI)."""
         def num(v, name):
-            return (math.degrees(float(v)) if name in degrees else float(v)) if np.isfinite(v) else None
+            return report_value(name, v)
 
         return {
-            "std_error": {n: num(v, n) for n, v in zip(self.names, self.std_error)},
+            "std_error": {report_name(n): num(v, n) for n, v in zip(self.names, self.std_error)},
             "std_error_data_only": (None if self.std_error_data is None
-                                    else {n: num(v, n) for n, v in zip(self.names, self.std_error_data)}),
-            "ci95": {n: [num(a, n), num(b, n)] for n, (a, b) in zip(self.names, self.ci95)},
+                                    else {report_name(n): num(v, n) for n, v in zip(self.names, self.std_error_data)}),
+            "ci95": {report_name(n): [num(a, n), num(b, n)] for n, (a, b) in zip(self.names, self.ci95)},
             "effective_parameters": (None if self.effective_parameters is None
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
@@ -173,14 +173,18 @@ class FitResult:
     extra: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
-        """The JSON report (angles in degrees, as labelled in ``units``: estimates, std errors and
-        95% intervals alike; the residuals in their own units)."""
+        """The JSON report: an angle under its name with ``_deg`` (``alpha_L0_deg``, as in a
+        parameter file), in degrees, and listed in ``units`` (estimates, std errors, 95% intervals
+        and the jackknife's alike); the other parameters as fitted (SI); the residuals in their
+        own units. ``starts`` holds each start's vectors as fitted (SI, in the order of
+        ``names``)."""
         from ..io.params_file import params_to_dict
 
         return {
             "params": params_to_dict(self.params, self.air),
-            "fitted": {n: (math.degrees(v) if _is_angle(n) else float(v)) for n, v in zip(self.names, self.x)},
-            "units": {n: "deg" for n in self.names if _is_angle(n)},
+            "fitted": {report_name(n): report_value(n, v) for n, v in zip(self.names, self.x)},
+            "names": list(self.names),
+            "units": {report_name(n): "deg" for n in self.names if _is_angle(n)},
             "cost": self.cost, "rms_residual": float(np.sqrt(np.mean(self.residuals**2))),
             "residuals": [float(r) for r in self.residuals],
             "nfev": self.nfev, "n_model_points": self.n_model_points, "elapsed_s": self.elapsed_s,
@@ -188,7 +192,7 @@ class FitResult:
             "at_bound": list(self.at_bound), "hit_max_nfev": self.hit_max_nfev, "warnings": list(self.warnings),
             "starts": [{k: ([float(a) for a in v] if isinstance(v, np.ndarray) else v) for k, v in s.items()}
                        for s in self.starts],
-            "identifiability": self.identifiability.to_dict(degrees={n for n in self.names if _is_angle(n)}),
+            "identifiability": self.identifiability.to_dict(),
             **self.extra,
         }
 
@@ -214,7 +218,7 @@ class FitResult:
             sd = "-" if held else format(f(idf.std_error[k]), ".3g")
             interval = "-" if held else f"[{f(lo):.4g}, {f(hi):.4g}]"
             if jk:
-                extra += f"{format(jk['std_error'][n], '.3g'):>12}"
+                extra += f"{format(jk['std_error'][report_name(n)], '.3g'):>12}"
             lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{sd:>10}{interval:>24}{extra}{flag}")
         dirs = self.extra.get("directions")
         if dirs:
@@ -256,7 +260,7 @@ class FitResult:
                                                         dirs["std_error_data_only"], dirs["loadings"])):
                 big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
                 unit = dirs["units"]
-                terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if self.names[j] in unit else ''}"
+                terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if dirs['names'][j] in unit else ''}"
                                   for j in big)
                 sd, sdd = ("inf" if v is None else f"{v:.3f}" for v in (sd, sdd))  # (None: not determined)
                 lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd} ({sdd}): {terms}")
@@ -509,7 +513,8 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
     -------
     dict
         ``by``, ``groups``, ``std_error`` and ``ci95`` (estimate +- Student's t with g - 1
-        degrees of freedom times it) per parameter, in the report's units (angles in deg), and
+        degrees of freedom times it) per parameter, keyed and in units as the report's (an
+        angle's as ``alpha_L0_deg``, in deg: :func:`~propmap.identify.options.report_name`), and
         ``ratio`` to the linearised std error (None where that is not finite), ``at_bound``
         (group -> parameters at a bound in the fit without it, where any). The report
         (``FitResult.report_text``, ``to_dict``) shows it where ``result.extra["jackknife"]``
@@ -530,14 +535,13 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
     g = est.shape[0]
     t = float(stats.t.ppf(0.975, g - 1))
 
-    def unit(n, v):
-        return math.degrees(v) if _is_angle(n) else float(v)
-
+    unit = report_value
     lin = result.identifiability.std_error
     return {"by": by, "groups": [str(x) for x in groups],
-            "std_error": {n: unit(n, s) for n, s in zip(result.names, se)},
-            "ci95": {n: [unit(n, x - t * s), unit(n, x + t * s)] for n, x, s in zip(result.names, result.x, se)},
-            "ratio": {n: (float(s / v) if np.isfinite(v) and v > 0 else None)
+            "std_error": {report_name(n): unit(n, s) for n, s in zip(result.names, se)},
+            "ci95": {report_name(n): [unit(n, x - t * s), unit(n, x + t * s)]
+                     for n, x, s in zip(result.names, result.x, se)},
+            "ratio": {report_name(n): (float(s / v) if np.isfinite(v) and v > 0 else None)
                       for n, s, v in zip(result.names, se, lin)},
             "at_bound": {str(g): list(b) for g, b in zip(groups, at_bound or ()) if b}}
 
