@@ -202,3 +202,40 @@ def test_hover_incidence_edgewise_lambda2_and_a_file_named_like_a_catalogue_prop
     (tmp_path / "apce_8x6").write_text("r/R c/R beta\n0.2 0.1 30\n1.0 0.05 10\n")
     assert main(["loads", "apce_8x6", "--rpm", "6000"]) == 0
     assert "'apce_8x6' is a catalogue propeller and a file here: the catalogue's is used" in capsys.readouterr().err
+
+
+def test_loads_and_trim_give_the_side_force_and_pitching_moment_where_the_set_makes_them(tmp_path, capsys):
+    """A set with flapping blades and the Drees inflow has a side force Y and a pitching moment
+    M_P edgewise (Y -0.050 N against D 0.18 N at 5000 rpm, 5 m/s, 90 deg): `loads` (text, JSON,
+    --points) and `trim` gave neither, without a word, where a map and rotor_loads have them (a
+    user-level audit, 2026-11-27); a set without them writes the columns as before."""
+    params = pm.default_params("apce_8x6").replace(inflow="drees", flap_compliance=2.0)
+    f = tmp_path / "drees.toml"
+    pm.write_params(f, params)
+    r = pm.rotor_loads(pm.load_propeller("apce_8x6"), params, 5000 * math.pi / 30, 5.0, math.pi / 2)
+    assert float(r.side_force) < -0.03 and float(r.pitching_moment) > 0.005  # (not zero: the test can fail)
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--params", str(f), "--rpm", "5000", "--airspeed", "5",
+                       "--incidence-deg", "90", "--json")
+    rep = json.loads(out)
+    assert code == 0 and rep["side_force"] == pytest.approx(float(r.side_force), rel=1e-9)
+    assert rep["pitching_moment"] == pytest.approx(float(r.pitching_moment), rel=1e-9)
+    assert rep["units"]["side_force"] == "N" and rep["units"]["pitching_moment"] == "N m"
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--params", str(f), "--rpm", "5000", "--airspeed", "5",
+                       "--incidence-deg", "90")
+    assert code == 0 and "side force Y = -0.0" in out and "(blade flapping, a linear inflow)" in out
+    pts = tmp_path / "p.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,converged\n5000,5,90,x\n5000,0,0,y\n")
+    code, out, err = run(capsys, "loads", "apce_8x6", "--params", str(f), "--points", str(pts), "--out", "-")
+    rows = list(csv.DictReader(out.splitlines()))
+    header = out.splitlines()[0].split(",")
+    assert header[7:10] == ["rolling_moment", "side_force", "pitching_moment"]
+    assert float(rows[0]["side_force"]) == pytest.approx(float(r.side_force), rel=1e-8)
+    assert float(rows[1]["side_force"]) == 0.0 and float(rows[1]["pitching_moment"]) == 0.0  # (hover: none)
+    assert "did not converge" not in err  # (the converged count found its column beside the input's 'converged')
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--points", str(pts), "--out", "-")
+    assert "side_force" not in out.splitlines()[0]  # the default set makes none: the columns as before
+    code, out, _ = run(capsys, "trim", "apce_8x6", "--params", str(f), "--rpm", "5000", "--airspeed", "5",
+                       "--incidence-deg", "90", "--thrust", "1.5", "--json")
+    rep = json.loads(out)
+    assert code == 0 and rep["thrust"] == pytest.approx(1.5, rel=1e-6)
+    assert rep["side_force"] < -0.02 and rep["pitching_moment"] > 0.005 and rep["rolling_moment"] > 0.005

@@ -18,6 +18,18 @@ from ._paths import check_outputs
 OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
                "converged", "flags")
 NUMERIC_KEYS = OUTPUT_KEYS[:7]
+#: the side force Y [N] and the pitching moment M_P [N m], after rolling_moment where the parameter
+#: set makes them (RotorOptions.side_load_sources: blade flapping, a linear inflow, the dynamic
+#: stall), as a map holds them; absent (0 by symmetry) otherwise
+SIDE_KEYS = ("side_force", "pitching_moment")
+UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "side_force": "N",
+         "pitching_moment": "N m", "power": "W"}
+
+
+def numeric_keys(params) -> tuple[str, ...]:
+    """The RotorLoads attributes written for ``params``: NUMERIC_KEYS, with SIDE_KEYS after
+    rolling_moment where the set makes them."""
+    return NUMERIC_KEYS[:4] + SIDE_KEYS + NUMERIC_KEYS[4:] if params.side_load_sources() else NUMERIC_KEYS
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
 #: optional input column: the blade-angle offset of a variable-pitch rotor [deg]
 COLLECTIVE_COLUMN = "collective_deg"
@@ -271,7 +283,8 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg
     the collective [deg]).
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
-    outputs, one row per input row: thrust, drag, torque, rolling_moment, power, CT, CP,
+    outputs, one row per input row: thrust, drag, torque, rolling_moment (side_force,
+    pitching_moment where the set makes them: :func:`numeric_keys`), power, CT, CP,
     v_i_over_v_h, lambda2, state, converged ("true"/"false"), flags.
     """
     import numpy as np
@@ -282,7 +295,7 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg
     r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, airspeed, np.radians(incidence_deg), air=air,
                     on_failure="flag", radial=False,
                     collective=None if collective_deg is None else np.radians(collective_deg))
-    res = pd.DataFrame({k: getattr(r, k) for k in NUMERIC_KEYS})
+    res = pd.DataFrame({k: getattr(r, k) for k in numeric_keys(params)})
     for k, v in _descent_outputs(r).items():
         res[k] = v
     res["converged"] = np.where(r.converged, "true", "false")
@@ -329,13 +342,14 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                 res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
                                    values["rpm"], values["airspeed"], values["incidence_deg"],
                                    None if rows is None else rows + offset)
+                converged = list(res.columns).index("converged")  # (by place: it may be renamed below)
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
                     a = res[c].to_numpy()
                     df[c] = a + 0.0 if a.dtype.kind == "f" else a  # (+ 0.0: no "-0" written for a zero)
                 df.to_csv(fh, index=False, header=k == 0, float_format="%.10g", lineterminator="\n")
-                bad += int((res.iloc[:, OUTPUT_KEYS.index("converged")] == "false").sum())  # by place: maybe renamed
+                bad += int((res.iloc[:, converged] == "false").sum())
                 bar.update(len(df))
         return bad
 
@@ -421,7 +435,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
                         radial=False, collective=math.radians(collective_deg) if collective_deg else None)
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    result = {k: float(getattr(r, k)) for k in NUMERIC_KEYS}
+    result = {k: float(getattr(r, k)) for k in numeric_keys(params)}
     d = _descent_outputs(r)
     ratio = {k: (float(d[k]) if math.isfinite(float(d[k])) else None) for k in ("v_i_over_v_h", "lambda2")}
     result.update(ratio, state=str(d["state"]), converged=bool(r.converged), flags=r.flags())
@@ -431,7 +445,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
                    "incidence_deg": incidence_deg, "collective_deg": total_deg, "params_collective_deg": set_deg,
                    "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
-                   "units": {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "power": "W"}})
+                   "units": {k: u for k, u in UNITS.items() if k in result}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg"
                + (f", collective {total_deg:g} deg" if total_deg else "")
@@ -441,6 +455,9 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
     click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
     click.echo(f"  rolling moment M_R = {result['rolling_moment']:.5f} N m")
+    if "side_force" in result:
+        click.echo(f"  side force Y = {result['side_force']:.4f} N  pitching moment M_P = "
+                   f"{result['pitching_moment']:.5f} N m  ({', '.join(params.side_load_sources())})")
     click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}")
     if ratio["v_i_over_v_h"] is not None:
         click.echo(f"  state: {result['state']}  (v_i/v_h = {ratio['v_i_over_v_h']:.3f}, "

@@ -9,7 +9,7 @@ import click
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
                       air_label, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       set_collective_deg, with_prop_options)
-from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, _descent_outputs
+from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
 
 @click.command("trim")
@@ -69,8 +69,8 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     set_deg = set_collective_deg(params)
     out = {"collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
            "branch": res.branch,
-           "solutions_seen": int(res.n_solutions), "thrust": float(r.thrust), "drag": float(r.drag),
-           "torque": float(r.torque), "power": float(r.power), "CT": float(r.CT), "CQ": float(r.CQ),
+           "solutions_seen": int(res.n_solutions), **{k: float(getattr(r, k)) for k in numeric_keys(params)},
+           "CQ": float(r.CQ),
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
            "state": str(d["state"]), "flags": r.flags()}
     if as_json:
@@ -80,7 +80,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
                    "air": {"rho": air.rho, "mu": air.mu,
                                                            "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
-                   "units": {"thrust": "N", "drag": "N", "torque": "N m", "power": "W", "collective_deg": "deg"}})
+                   "units": {**{k: u for k, u in UNITS.items() if k in out}, "collective_deg": "deg"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
@@ -89,6 +89,9 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
                + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
                + f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg added)")
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
+    click.echo(f"  drag D = {out['drag']:.4f} N  rolling moment M_R = {out['rolling_moment']:.5f} N m"
+               + (f"  side force Y = {out['side_force']:.4f} N  pitching moment M_P = {out['pitching_moment']:.5f} N m"
+                  if "side_force" in out else ""))
     if dcq is not None:
         click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
     ratios = (f" (v_i/v_h = {out['v_i_over_v_h']:.3f}, lambda2 = V_descent/v_h = "
