@@ -173,6 +173,13 @@ def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):
     d = json.loads(out)
     assert set(d["errors"]["thrust"]) >= {"rms", "max"} and len(d["coefficients"]["CT"]) == 6
     assert np.isfinite(json.loads((tmp_path / "g.json").read_text())["CQ"]).all()
+    # a coefficient file named like a report wrote over g.json's report (g.report.json) and left a
+    # g.report.report.json beside it (a user-level audit, 2026-11-27): refused, nothing written
+    before = (tmp_path / "g.report.json").read_bytes()
+    code = main(["export-sim", "apce_8x6", "--target", "multinomial", "--out", str(tmp_path / "g.Report.json")])
+    err = capsys.readouterr().err
+    assert code == 2 and "a name ending in .report.json is an export's report" in err and err.count("\n") == 1
+    assert (tmp_path / "g.report.json").read_bytes() == before and not (tmp_path / "g.Report.report.json").exists()
 
 
 @pytest.mark.parametrize("target, name", [("rotorpy", "c.py"), ("gazebo-classic", "c.sdf")])
