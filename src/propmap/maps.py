@@ -160,6 +160,15 @@ def _solve_block(propeller, params, air, discretization, loads, om, V, b):
     return np.stack([*(getattr(r, k) for k in loads), *(np.asarray(getattr(r, f), float) for f in FLAGS)])
 
 
+def _rounded(x: np.ndarray) -> np.ndarray:
+    """An axis converted to rpm or degrees, rounded to 12 significant digits where that keeps it
+    strictly increasing: 6000 rpm through rad/s came back 6000.000000000001 (and 15 deg
+    14.999999999999998), which ``Dataset.sel(rpm=6000)`` did not find. The rounding moves a node
+    by at most 5e-13 of its value."""
+    r = np.array([float(f"{v:.12g}") for v in x])
+    return r if np.all(np.diff(r) > 0) else x
+
+
 def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, incidence, *, air: Air | None = None,
               discretization: Discretization = DEFAULT_DISCRETIZATION, params_label: str = "",
               citation: str = "", chunk_points: int = 20_000, scheduler=None, progress: bool = False,
@@ -297,9 +306,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
                   {"units": "1", "long_name": LONG_NAMES["CP"]})
     for i, f in enumerate(FLAGS):
         data[f] = (dims, result[len(loads) + i] != 0, {"long_name": f"model flag {f} (docs/solver.md)"})
-    coords = {"rpm": ("rpm", om / RPM, {"units": "rpm", "long_name": "rotation rate"}),
+    coords = {"rpm": ("rpm", _rounded(om / RPM), {"units": "rpm", "long_name": "rotation rate"}),
               "airspeed": ("airspeed", V, {"units": "m/s", "long_name": "speed of the disk relative to the air"}),
-              "incidence_deg": ("incidence_deg", np.degrees(b),
+              "incidence_deg": ("incidence_deg", _rounded(np.degrees(b)),
                                 {"units": "degree", "long_name": "incidence beta (0 climb, 90 edgewise, 180 descent)"}),
               "omega": ("rpm", om, {"units": "rad/s", "long_name": "rotation rate Omega"}),
               "incidence": ("incidence_deg", b, {"units": "rad", "long_name": "incidence beta"})}
