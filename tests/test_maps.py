@@ -46,6 +46,7 @@ def test_stored_error_bound_holds_on_fresh_points(small_map):
             assert 0 < stored < 1 and math.isfinite(fresh[f"check_{m}_{k}_max"])
             # another random sample of the same size sees errors of the same size
             assert fresh[f"check_{m}_{k}_rms"] < 3 * ds.attrs[f"check_{m}_{k}_rms"] + 1e-4
+    assert ds.attrs["check_normalisation"].startswith("fractions (0.01 is 1%)")  # (the unit, beside the %-tables)
 
 
 def test_netcdf_round_trip_keeps_values_flags_and_attributes(small_map, tmp_path):

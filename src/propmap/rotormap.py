@@ -579,7 +579,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
         norm[k] = np.maximum(np.maximum(peak[row], peak[row + 1]), np.abs(getattr(full, k)))
     peaks = "D, M_R (Y, M_P)" if len(loads) > len(LOADS) else "D and M_R"
     out = {"check_points": int(n_check), "check_seed": int(seed),
-           "check_normalisation": "per point: T, P by the static thrust and power at its Omega, Q by the static "
+           "check_normalisation": "fractions (0.01 is 1%), per point: T, P by the static thrust and power at its "
+                                  "Omega, Q by the static "
                                   f"torque, {peaks} by their largest magnitude in the map at the rpm rows around it "
                                   "(or the model's at the point where larger); "
                                   "flagged: the point, or a node within one node of its cell, in vortex ring, "
