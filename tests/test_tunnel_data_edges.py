@@ -145,7 +145,8 @@ def test_a_fitted_file_says_which_propeller_and_warns_on_another(tmp_path, capsy
     fit = tmp_path / "f.toml"
     assert main(["fit", "loads", str(tmp_path / "st.csv"), "--prop", "apce_10x7", "--out", str(fit)]) == 0
     cov = read_coverage(fit)
-    assert (cov["propeller"], cov["diameter_m"], cov["n_blades"]) == ("apce_10x7", pytest.approx(0.254), 2.0)
+    assert (cov["propeller"], cov["diameter_m"], cov["n_blades"]) == ("apce_10x7", pytest.approx(0.254), 2)
+    assert type(cov["n_blades"]) is int and "\nn_blades = 2\n" in fit.read_text()  # (a count: 2.0 was written)
     assert cov["re75_max"] / cov["re75_min"] == pytest.approx(2.0)  # (3000-6000 rpm)
     capsys.readouterr()
     assert main(["loads", "apce_8x6", "--params", str(fit), "--rpm", "5000"]) == 0

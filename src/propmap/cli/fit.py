@@ -140,7 +140,7 @@ def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
     chord Reynolds numbers at 0.75 R of the rates ``omega_min``..``omega_max`` [rad/s] in
     ``air`` (:meth:`Propeller.reynolds_75`)."""
     re75 = prop.reynolds_75([omega_min, omega_max], air)
-    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": float(prop.n_blades),
+    return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": int(prop.n_blades),
             "re75_min": float(re75[0]), "re75_max": float(re75[1])}
 
 

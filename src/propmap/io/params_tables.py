@@ -100,7 +100,7 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     for lo, hi in (("rpm_min", "rpm_max"), ("re75_min", "re75_max")):
         if lo in table and hi in table and table[lo] > table[hi]:
             raise ValueError(f"{where}: [{COVERAGE_TABLE}] {lo} {table[lo]:g} exceeds {hi} {table[hi]:g}")
-    return {**{k: float(v) for k, v in table.items()}, **text}
+    return {**{k: (int(v) if k == "n_blades" else float(v)) for k, v in table.items()}, **text}
 
 
 def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None:
