@@ -469,7 +469,8 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
             data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
     if coverage:
         # (to 12 digits, for every producer: 1975 rpm, not the 1974.9999999999998 of rad/s and back)
-        data[COVERAGE_TABLE] = {**{k: (int(v) if k == "n_blades" and float(v).is_integer() else float(f"{float(v):.12g}"))
+        data[COVERAGE_TABLE] = {**{k: (int(v) if k == "n_blades" and float(v).is_integer()
+                                       else float(f"{float(v):.12g}"))
                                    for k, v in coverage.items() if k in COVERAGE_KEYS},
                                 **{k: (str(v) if k in COVERAGE_SINGLE_TEXTS else [str(x) for x in v])
                                    for k, v in coverage.items() if k in COVERAGE_TEXT_KEYS}}
