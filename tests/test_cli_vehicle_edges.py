@@ -100,6 +100,9 @@ def test_wrench_refuses_standard_output_and_twin_log_names_are_explained(tmp_pat
     assert main(["wrench", str(log), "--vehicle", str(VEHICLE), "--out", "-"]) == 2
     assert "'-' (standard output) is not taken here" in capsys.readouterr().err
     assert not Path("-").exists()
+    # a CSV named .nc (a user-level audit, 2026-11-27; map, export-sim and fit hold their formats' names)
+    assert main(["wrench", str(log), "--vehicle", str(VEHICLE), "--out", str(tmp_path / "w.nc")]) == 2
+    assert "wrench writes a CSV, named *.csv" in capsys.readouterr().err and not (tmp_path / "w.nc").exists()
     (tmp_path / "a").mkdir()
     (tmp_path / "b").mkdir()
     other = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"

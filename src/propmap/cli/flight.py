@@ -450,6 +450,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     if str(out) == "-":
         raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
                          "a file (PRED.csv)")
+    if Path(out).suffix.lower() != ".csv":  # (as map, export-sim and fit hold their outputs to their format)
+        raise InputError(f"--out: {out}: wrench writes a CSV, named *.csv")
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
     veh, _ = _fitted_vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag, centre of mass
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
