@@ -336,6 +336,15 @@ def test_joint_fit_weights_propellers_alike(apc8x6):
         assert np.sqrt(np.mean(unscaled**2)) == pytest.approx(r.extra["per_propeller"][k]["rms_residual"], rel=1e-9)
     # the compromise lies between the two truths
     assert other.cl_alpha < r.params.cl_alpha < TRUE.cl_alpha
+    # the residuals' dependence along the runs and the stall blend used, as fit_loads reports them (the
+    # joint fit had neither: an engine review, 2026-11-27); one propeller alone: fit_loads's figure
+    auto = r.extra["residual_autocorrelation"]
+    assert auto["n"] == 144 and -1 <= auto["lag1"] <= 1 and r.extra["M_used"] == base.M
+    one_opts = FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=1)
+    one = fit_loads_joint([(big, apc8x6)], base=r.params, options=one_opts)
+    own = fit_loads(big, apc8x6, base=r.params, options=one_opts)
+    assert one.extra["residual_autocorrelation"]["lag1"] == pytest.approx(own.extra["residual_autocorrelation"]["lag1"],
+                                                                          rel=1e-9, abs=1e-12)
 
 
 def test_joint_fit_weights_move_the_compromise_toward_the_heavier_propeller(apc8x6):

@@ -456,7 +456,9 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         ``residuals`` stacked over the propellers in order; ``extra["per_propeller"]``
         gives each propeller's name, point count, rms (unweighted) residual and the air
         density it was solved at (``rho``); the result's air is the one every data set was
-        solved at, else ``air`` or the base's.
+        solved at, else ``air`` or the base's. As :func:`fit_loads`'s, ``extra`` holds
+        ``residual_autocorrelation`` (within each propeller's runs, of its unweighted
+        residuals) and ``M_used`` (with ``M_effect`` where the fit's M is not the base's).
 
     Raises
     ------
@@ -523,14 +525,23 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
                                                                     "fit loads (joint)", _x0(names, options, base))
     result = _finish(names, base, options, best, log, nfev, elapsed, [*notes, *warns],
                      nfev * sum(d.n for d, _ in datasets), air,
-                     {"kind": "loads_joint", **extra, **({"prior": prior} if prior else {})})
-    per, k = [], 0
-    for (data, prop), wk in zip(datasets, w):
-        rows = _fitted_rows(data, _load_keys(data, None))  # (the in-plane force at in-plane points only)
+                     {"kind": "loads_joint", **extra, **({"prior": prior} if prior else {}),
+                      **_m_effect(make_data, best, base, options)})
+    per, k, runs, run_keys = [], 0, [], []
+    for i, ((data, prop), wk) in enumerate(zip(datasets, w)):
+        keys = _load_keys(data, None)
+        rows = _fitted_rows(data, keys)  # (the in-plane force at in-plane points only)
         m = sum(int(v.sum()) for v in rows.values())
         r = best.fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
         per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2))),
                     "rho": airs[len(per)].rho})
         k += m
+        # each quantity's runs in the data's order, as fit_loads's (_traced_residuals)
+        key = np.array([f"{i}\x00{q}\x00{data.group[j]}" for q in keys for j in np.flatnonzero(rows[q])])
+        order = np.argsort(key, kind="stable")
+        runs.append(r[order])
+        run_keys.append(key[order])
     result.extra["per_propeller"] = per
+    r = np.concatenate(runs)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(r, np.concatenate(run_keys)) if r.size else None
     return result
