@@ -270,6 +270,10 @@ class RotorMap:
         interpolation : {"cubic", "linear"}
             As in :class:`RotorMap`.
 
+        Returns
+        -------
+        RotorMap
+
         Raises
         ------
         TypeError

@@ -86,6 +86,11 @@ class Air:
         pressure : float
             Static pressure p [Pa], in [1e3, 1.2e5].
 
+        Returns
+        -------
+        Air
+            rho [kg/m^3], mu [Pa s], speed_of_sound [m/s] of that air.
+
         Raises
         ------
         ValueError
@@ -110,6 +115,11 @@ class Air:
         ----------
         altitude : float
             h [m], in [-500, 20000].
+
+        Returns
+        -------
+        Air
+            The standard atmosphere's air at ``altitude``.
 
         Raises
         ------

@@ -317,6 +317,10 @@ class AirfoilParams(RotorOptions):
         differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
         validation figures and coverage are not its own.
 
+        Returns
+        -------
+        same type as self
+
         Raises
         ------
         ValueError
@@ -492,6 +496,10 @@ class CamberedParams(RotorOptions):
         """Return a copy with ``changes`` applied (validated again). A copy whose model fields
         differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
         validation figures and coverage are not its own.
+
+        Returns
+        -------
+        same type as self
 
         Raises
         ------

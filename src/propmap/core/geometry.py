@@ -212,12 +212,33 @@ class Propeller:
         """Chord c(y) [m] at radii ``y`` [m] (PCHIP through the stations).
 
         Outside the stations PCHIP extrapolates its end polynomial (the solver only
-        evaluates [r_hub, R]); clipped at 0. Any shape; returns the same shape.
+        evaluates [r_hub, R]); clipped at 0.
+
+        Parameters
+        ----------
+        y : float or array_like
+            Radii [m], any shape.
+
+        Returns
+        -------
+        ndarray
+            c(y) [m] >= 0, shaped like ``y``.
         """
         return np.maximum(self._chord_spline(np.asarray(y, dtype=float)), 0.0)
 
     def theta_at(self, y) -> np.ndarray:
-        """Blade angle theta(y) [rad] at radii ``y`` [m] (PCHIP through the stations)."""
+        """Blade angle theta(y) [rad] at radii ``y`` [m] (PCHIP through the stations).
+
+        Parameters
+        ----------
+        y : float or array_like
+            Radii [m], any shape (outside the stations PCHIP extrapolates its end polynomial).
+
+        Returns
+        -------
+        ndarray
+            theta(y) [rad], from the blade-angle datum of the geometry, shaped like ``y``.
+        """
         return self._theta_spline(np.asarray(y, dtype=float))
 
     def reynolds_75(self, omega, air) -> np.ndarray:
@@ -240,7 +261,14 @@ class Propeller:
         return air.rho * np.asarray(omega, dtype=float) * y * float(self.chord_at(y)) / air.mu
 
     def solidity(self) -> float:
-        """Rotor solidity sigma = N_b * (blade area) / (pi R^2) [-]."""
+        """Rotor solidity sigma = N_b * (blade area) / (pi R^2) [-].
+
+        Returns
+        -------
+        float
+            sigma, the blade area the integral of c(y) from r_hub to R (adaptive quadrature of
+            :meth:`chord_at`).
+        """
         from scipy.integrate import quad
 
         area, _ = quad(lambda y: float(self.chord_at(y)), self.r_hub, self.radius, limit=200)

@@ -173,7 +173,23 @@ class HoverModel:
         return self.k_T * _finite_rates(omega) ** 2
 
     def torque(self, omega) -> np.ndarray:
-        """Q = k_Q Omega^2 [N m]; ``omega`` [rad/s], shapes and errors as :meth:`thrust`."""
+        """Q = k_Q Omega^2 [N m].
+
+        Parameters
+        ----------
+        omega : float or array_like
+            Omega [rad/s], any shape.
+
+        Returns
+        -------
+        ndarray
+            Q [N m], shaped like ``omega``.
+
+        Raises
+        ------
+        ValueError
+            As :meth:`thrust`.
+        """
         return self.k_Q * _finite_rates(omega) ** 2
 
     def _conditions(self, diameter, air) -> tuple[float, float]:
@@ -210,6 +226,23 @@ class HoverModel:
         return self.k_T * (2 * math.pi) ** 2 / (rho * d**4)
 
     def CP(self, diameter: float | None = None, *, air: Air | None = None) -> float:
-        """The (constant) power coefficient, CP = k_Q (2 pi)^3 / (rho D^5); arguments, errors as :meth:`CT`."""
+        """The (constant) power coefficient, CP = k_Q (2 pi)^3 / (rho D^5) (propeller convention).
+
+        Parameters
+        ----------
+        diameter : float, optional
+            As :meth:`CT`.
+        air : Air, optional
+            As :meth:`CT`.
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        ValueError
+            As :meth:`CT`.
+        """
         d, rho = self._conditions(diameter, air)
         return self.k_Q * (2 * math.pi) ** 3 / (rho * d**5)

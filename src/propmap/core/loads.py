@@ -298,6 +298,12 @@ class RotorLoads:
         """Names of the raised status flags at one point (``index`` into shape S; on scalar
         loads, shape (), ``()`` or ``0``).
 
+        Returns
+        -------
+        list of str
+            Among "not_converged", "vortex_ring", "multiple_roots", "reverse_flow" and
+            "inflow_extrapolated" (docs/solver.md), in that order; empty where none is raised.
+
         Raises
         ------
         IndexError

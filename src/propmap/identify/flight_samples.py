@@ -125,7 +125,17 @@ class FlightSamples:
         return np.linalg.norm(self.velocity, axis=1)
 
     def select(self, mask) -> "FlightSamples":
-        """The samples where ``mask`` (shape (N,) bool) holds."""
+        """The samples where ``mask`` holds.
+
+        Parameters
+        ----------
+        mask : array_like of bool, shape (N,)
+
+        Returns
+        -------
+        FlightSamples
+            Every per-sample array cut to the samples kept (the rest as they are).
+        """
         m = np.asarray(mask, bool)
         kw = {}
         for name in ("log_index", "t", "velocity", "angular_velocity", "rotor_omega", "rotor_acceleration", "force",
@@ -135,7 +145,12 @@ class FlightSamples:
         return replace(self, **kw)
 
     def of_log(self, k: int) -> "FlightSamples":
-        """The samples of log ``k``."""
+        """The samples of log ``k`` (an index into ``log_names``).
+
+        Returns
+        -------
+        FlightSamples
+        """
         return self.select(self.log_index == k)
 
 

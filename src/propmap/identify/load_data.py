@@ -134,7 +134,17 @@ class LoadData:
                                      self.airspeed * np.cos(self.incidence)), initial=0.0)) / air.speed_of_sound
 
     def subset(self, mask) -> LoadData:
-        """The points where ``mask`` is True."""
+        """The points where ``mask`` is True.
+
+        Parameters
+        ----------
+        mask : array_like of bool, shape (N,)
+
+        Returns
+        -------
+        LoadData
+            Every per-point array cut to those points; source, notes and air density kept.
+        """
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,

@@ -137,11 +137,23 @@ class CatalogueEntry:
         return f"geometry: {geo}{extra}; measurements: {data}"
 
     def static_runs(self) -> list[StaticRun]:
-        """The bundled UIUC static runs (may be empty)."""
+        """The bundled UIUC static runs.
+
+        Returns
+        -------
+        list of StaticRun
+            Read from the package's files (empty for a propeller without static data).
+        """
         return [read_uiuc_static(_data_path(f)) for f in self.static_files]
 
     def sweeps(self) -> list[Sweep]:
-        """The bundled UIUC wind-tunnel J-sweeps (may be empty)."""
+        """The bundled UIUC wind-tunnel J-sweeps.
+
+        Returns
+        -------
+        list of Sweep
+            Read from the package's files (empty for a propeller without sweeps).
+        """
         return [read_uiuc_sweep(_data_path(f)) for f in self.sweep_files]
 
     def data_paths(self) -> list[Path]:
@@ -158,7 +170,14 @@ class CatalogueEntry:
 @functools.lru_cache(maxsize=1)
 def catalogue() -> dict[str, CatalogueEntry]:
     """All bundled propellers, by name (147 entries: vol. 1, 79 UIUC geometries and 29 APC PE0;
-    vol. 2, 39)."""
+    vol. 2, 39).
+
+    Returns
+    -------
+    dict of str to CatalogueEntry
+        Read once per process (cached); the data: UIUC Propeller Data Site vol. 1 and 2 and
+        APC's PE0 geometry (each entry's ``citation``).
+    """
     raw = json.loads(_data_path("catalogue.json").read_text())
     return {
         e["name"]: CatalogueEntry(e["name"], e["family"], e["diameter_in"], e["pitch_in"], e["n_blades"],
@@ -245,6 +264,16 @@ def near_names(name: str, names) -> str:
 @functools.lru_cache(maxsize=256)
 def load_propeller(name: str) -> Propeller:
     """The geometry of a catalogue propeller as a :class:`Propeller`.
+
+    Parameters
+    ----------
+    name : str
+        A catalogue name (:func:`catalogue`, ``propmap props``).
+
+    Returns
+    -------
+    Propeller
+        Its blade stations (SI: r, chord [m], theta [rad]) with ``source`` the entry's citation.
 
     Raises
     ------

@@ -92,6 +92,16 @@ def rpm_groups(data) -> list[list[str]]:
     """The sweeps of load data grouped by rotation rate (within SAME_RPM), lowest first.
 
     UIUC often measures two sweeps at one rpm that split the advance-ratio range.
+
+    Parameters
+    ----------
+    data : LoadData
+        Load data; a group whose points are all static (airspeed 0) is not a sweep.
+
+    Returns
+    -------
+    list of list of str
+        The sweeps' group names, one list per rotation rate.
     """
     static = data.airspeed == 0
     sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]

@@ -159,7 +159,16 @@ class Validation:
         return out
 
     def to_dict(self) -> dict:
-        """The JSON form printed by ``propmap validate --json``."""
+        """The JSON form printed by ``propmap validate --json``.
+
+        Returns
+        -------
+        dict
+            ``propeller``, ``citation``, ``params``; ``model`` and ``hover_model``, the error
+            summaries (:meth:`summary`; the hover model's with its CT and CP); ``sweeps``, per
+            run its kind, id, median rpm, point count, source and both models' errors
+            (:meth:`SweepComparison.errors`).
+        """
         return {
             "propeller": self.propeller,
             "citation": self.citation,
