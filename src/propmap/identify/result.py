@@ -199,8 +199,16 @@ class FitResult:
     def report_text(self, *, max_residuals: int = 20) -> str:
         """Plain-text report: estimates, 95% intervals, correlations, warnings.
 
-        At most ``max_residuals`` residuals are listed (the largest in magnitude), with
-        their count; the JSON report has them all.
+        Parameters
+        ----------
+        max_residuals : int, optional
+            At most this many residuals are listed (the largest in magnitude), with their
+            count; the JSON report (:meth:`to_dict`) has them all.
+
+        Returns
+        -------
+        str
+            Lines; angles in degrees, marked ``[deg]``, the other parameters as fitted (SI).
         """
         idf = self.identifiability
         data_only = idf.std_error_data is not None

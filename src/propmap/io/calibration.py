@@ -175,6 +175,11 @@ def _entry(name: str, d: dict, source: str) -> Calibration:
 def calibration() -> dict:
     """The shipped calibration: ``{"generic": Calibration, "propellers": {name: Calibration}, ...}``.
 
+    Returns
+    -------
+    dict
+        Read once per process (cached) from the package's calibration file.
+
     Raises
     ------
     ValueError
