@@ -884,6 +884,25 @@ def test_the_sanity_checks_causes_name_rpm_as_rad_per_s_and_small_torque_units(t
         sanity_check(read_loads(f), prop)
 
 
+def test_the_sanity_check_names_rates_written_in_thousands(tmp_path):
+    """1.975 for 1975 rpm (a thousands separator read as a decimal point) was blamed on 'a diameter
+    far off' (a fuzzing audit, 2026-11-27)."""
+    from propmap.identify import DataError, read_loads
+    from propmap.identify.data import sanity_check
+
+    prop, params = pm.load_propeller("apce_9x6"), pm.default_params("apce_9x6")
+    rows = ["rpm,airspeed,thrust (N),torque (N m)"]
+    for rpm in (3000.0, 4000.0, 5000.0, 6000.0):
+        for V in (0.0, 4.0, 8.0):
+            r = pm.rotor_loads(prop, params, rpm * math.pi / 30, V, 0.0)
+            rows.append(f"{rpm / 1000:.3f},{V},{float(r.thrust)!r},{float(r.torque)!r}")
+    f = tmp_path / "k.csv"
+    f.write_text("\n".join(rows) + "\n")
+    with pytest.raises(DataError, match=re.escape("rotation rates in thousands read as rpm (1.975 for 1975")) as e:
+        sanity_check(read_loads(f), prop)
+    assert "diameter far off" not in str(e.value)
+
+
 def test_a_held_out_group_predicted_worse_than_by_the_base_set_is_said(tmp_path, capsys):
     """A CSV fit's held-out rmse against the base set was printed without comment where the fitted
     set did worse (identification audit, 2026-11-26). UIUC Propeller Data Site vol. 1, apce_9x6,

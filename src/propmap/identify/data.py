@@ -443,6 +443,12 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     hz_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 60).values()), default=math.inf)
     if hz_miss < math.log(1.6):
         causes.append("a rotation rate in rev/s (Hz) read as rpm (name its unit, e.g. 'rotation speed (Hz)')")
+    # rates in thousands: 1.975 for 1975 rpm (a thousands separator read as a decimal point, or krpm; the message
+    # blamed the diameter: a fuzzing audit, 2026-11-27)
+    k_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 1000).values()), default=math.inf)
+    if k_miss < math.log(1.6):
+        causes.append("rotation rates in thousands read as rpm (1.975 for 1975: a thousands separator read as a "
+                      "decimal point, or krpm; write the rpm in full)")
     # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
     miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
             for pp in range(2, 15)}
