@@ -95,6 +95,11 @@ def test_ulog_motor_map(tmp_path):
     hover_ulog(tmp_path / "f.ulg", rpm=12000.0, with_esc=False)
     with pytest.raises(FlightLogError, match="esc_status' not in the log.*--motor-map"):
         read_flight_log(tmp_path / "f.ulg")
+    # declared but never logged: said so (it read 'not in the log' where the topic list names it; a fuzzing audit)
+    hover_ulog(tmp_path / "e.ulg", rpm=12000.0, esc_empty=True)
+    with pytest.raises(FlightLogError, match=r"esc_status' has no message in the log \(its format is declared\).*"
+                                             "--motor-map"):
+        read_flight_log(tmp_path / "e.ulg")
     log = read_flight_log(tmp_path / "f.ulg", motor_map=(0.0, 10.0))
     np.testing.assert_allclose(log.rotor_omega[0], 12000 * 2 * math.pi / 60, rtol=1e-6)
 

@@ -21,13 +21,20 @@ import numpy as np
 _FRD_TO_FLU = np.array([1.0, -1.0, -1.0])
 
 
+def _missing(ulog, name: str) -> str:
+    """How topic ``name`` is missing from a log: declared (its format is in the log) without a
+    message, or not at all (a zero-message topic was said to be 'not in the log')."""
+    formats = getattr(ulog, "message_formats", None) or {}
+    return "has no message in the log (its format is declared)" if name in formats else "not in the log"
+
+
 def _topic(ulog, name: str, fields: list[str], where: str, error: type[ValueError], instance: int | None = None):
     """(t [s], columns) of topic ``name``'s instance ``instance`` (multi_id; default the
     lowest); the error names what is missing."""
     sets = [d for d in ulog.data_list if d.name == name and (instance is None or d.multi_id == instance)]
     if not sets:
         found = sorted({d.name for d in ulog.data_list})
-        raise error(f"{where}: topic {name!r} not in the log (topics found: {', '.join(found)[:300]})")
+        raise error(f"{where}: topic {name!r} {_missing(ulog, name)} (topics found: {', '.join(found)[:300]})")
     d = min(sets, key=lambda s: s.multi_id)
     missing = [f for f in fields if f not in d.data]
     if missing:
@@ -362,12 +369,13 @@ def _ulog_motors(ulog, name: str, motor_map, n_motors: int | None, error: type[V
         raise error(f"{name}: topic 'esc_status' carries no motor rpm (esc_rpm all zero or absent); give "
                     "the mapping rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     if motor_map is None:
-        raise error(f"{name}: no motor speeds: topic 'esc_status' not in the log; give the mapping "
+        raise error(f"{name}: no motor speeds: topic 'esc_status' {_missing(ulog, 'esc_status')}; give the mapping "
                     "rpm = a + b * output of actuator_outputs (--motor-map a,b)")
     a, b = motor_map
     d = [s for s in ulog.data_list if s.name == "actuator_outputs"]
     if not d:
-        raise error(f"{name}: topic 'actuator_outputs' not in the log (needed with a motor map)")
+        raise error(f"{name}: topic 'actuator_outputs' {_missing(ulog, 'actuator_outputs')} (needed with a motor "
+                    "map)")
     outputs, how = _output_motor_order(ulog, n_motors, name, error)
 
     def motor_columns(s):  # (instance s's columns of motors 1..n; the error a reading of it would raise)
