@@ -164,7 +164,7 @@ def _rounded(x: np.ndarray) -> np.ndarray:
     """An axis converted to rpm or degrees, rounded to 12 significant digits where that keeps it
     strictly increasing: 6000 rpm through rad/s came back 6000.000000000001 (and 15 deg
     14.999999999999998), which ``Dataset.sel(rpm=6000)`` did not find. The rounding moves a node
-    by at most 5e-13 of its value."""
+    by at most 5e-12 of its value."""
     r = np.array([float(f"{v:.12g}") for v in x])
     return r if np.all(np.diff(r) > 0) else x
 

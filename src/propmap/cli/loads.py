@@ -25,11 +25,6 @@ SIDE_KEYS = ("side_force", "pitching_moment")
 UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m", "side_force": "N",
          "pitching_moment": "N m", "power": "W"}
 
-
-def numeric_keys(params) -> tuple[str, ...]:
-    """The RotorLoads attributes written for ``params``: NUMERIC_KEYS, with SIDE_KEYS after
-    rolling_moment where the set makes them."""
-    return NUMERIC_KEYS[:4] + SIDE_KEYS + NUMERIC_KEYS[4:] if params.side_load_sources() else NUMERIC_KEYS
 INPUT_COLUMNS = ("rpm", "airspeed", "incidence_deg")
 #: optional input column: the blade-angle offset of a variable-pitch rotor [deg]
 COLLECTIVE_COLUMN = "collective_deg"
@@ -276,6 +271,12 @@ def _descent_outputs(r) -> dict:
     lam = np.asarray(r.descent_ratio, float)
     lam = np.where(np.abs(lam) < 1e-12, 0.0, lam) + 0.0
     return {"v_i_over_v_h": r.inflow_ratio, "lambda2": lam, "state": r.state_name}
+
+
+def numeric_keys(params) -> tuple[str, ...]:
+    """The RotorLoads attributes written for ``params``: NUMERIC_KEYS, with SIDE_KEYS after
+    rolling_moment where the set makes them."""
+    return NUMERIC_KEYS[:4] + SIDE_KEYS + NUMERIC_KEYS[4:] if params.side_load_sources() else NUMERIC_KEYS
 
 
 def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg=None):

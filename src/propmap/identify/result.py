@@ -98,14 +98,13 @@ class Identifiability:
         """JSON-ready form (a non-finite std error is null), keyed and in units as the fit
         report's: an angle's under its name with ``_deg``, in degrees
         (:func:`~propmap.identify.options.report_name`), the others as fitted (SI)."""
-        def num(v, name):
-            return report_value(name, v)
+        num = report_value
 
         return {
-            "std_error": {report_name(n): num(v, n) for n, v in zip(self.names, self.std_error)},
+            "std_error": {report_name(n): num(n, v) for n, v in zip(self.names, self.std_error)},
             "std_error_data_only": (None if self.std_error_data is None
-                                    else {report_name(n): num(v, n) for n, v in zip(self.names, self.std_error_data)}),
-            "ci95": {report_name(n): [num(a, n), num(b, n)] for n, (a, b) in zip(self.names, self.ci95)},
+                                    else {report_name(n): num(n, v) for n, v in zip(self.names, self.std_error_data)}),
+            "ci95": {report_name(n): [num(n, a), num(n, b)] for n, (a, b) in zip(self.names, self.ci95)},
             "effective_parameters": (None if self.effective_parameters is None
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
