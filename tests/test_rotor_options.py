@@ -167,9 +167,37 @@ def test_inflow_gradients_match_their_published_formulas():
     # hover and the uniform model: no gradient
     assert mo.inflow_gradients(0.0, 0.05, mo.INFLOW_DREES) == (0.0, 0.0)
     assert mo.inflow_gradients(0.1, 0.05, mo.INFLOW_UNIFORM) == (0.0, 0.0)
-    # a wake above the disk: the mirrored angle (continuous through edgewise, 0 in axial descent)
+    # lambda < 0 (a rotor windmilling in climb): the mirrored angle
     assert mo.inflow_gradients(0.1, -0.05, mo.INFLOW_PITT_PETERS) == mo.inflow_gradients(0.1, 0.05,
                                                                                        mo.INFLOW_PITT_PETERS)
+    # the skew's inflow ratio: the flow through the disk in climb and edgewise, the induced inflow alone in descent
+    # (continuous at V_c = 0)
+    assert mo.skew_inflow_ratio(3.0, 5.0, 100.0) == 0.08 and mo.skew_inflow_ratio(0.0, 5.0, 100.0) == 0.05
+    assert mo.skew_inflow_ratio(-4.9, 5.0, 100.0) == 0.05 and mo.skew_inflow_ratio(-1e-9, 5.0, 100.0) == 0.05
+
+
+@pytest.mark.parametrize("inflow", ["drees", "pitt-peters"])
+def test_a_linear_inflow_is_continuous_into_axial_descent_near_autorotation(inflow):
+    """With the flow through the disk in the wake skew, a descent near the rotor's own
+    autorotation (V cos beta + v_mean ~ 0) put the skew at 90 deg for any in-plane speed and at
+    0 with none: gwsdd_5x3 (generic set, Pitt-Peters, 12,000 rpm, 15.05 m/s) made 2.1223 N at 180
+    deg and 1.9421 N at 179.99 deg, and apce_8x6's torque (calibrated set, 179.5 deg) spiked by
+    11% over 0.2 m/s of descent rate (an envelope audit, 2026-11-27). The skew of a hovering disk
+    in descent (_momentum.skew_inflow_ratio, as the in-plane induction's) is continuous there."""
+    om = 12000 * RPM
+    prop = pm.load_propeller("gwsdd_5x3")
+    r = pm.rotor_loads(prop, pm.generic_params().replace(inflow=inflow), om, 15.05,
+                       np.radians([180.0, 179.99, 179.9, 179.0]), on_failure="flag")
+    assert np.all(r.converged)
+    np.testing.assert_allclose(r.thrust[1:3], r.thrust[0], rtol=1e-4)
+    assert abs(r.thrust[3] / r.thrust[0] - 1) < 2e-3  # (1 deg off axis: the in-plane speed's own effect)
+    assert np.all(np.abs(r.side_force[1:3]) < 1e-3 * r.drag[1:3] + 1e-4 * r.thrust[0])
+    prop = pm.load_propeller("apce_8x6")
+    V = np.arange(20.6, 21.21, 0.02)
+    q = pm.rotor_loads(prop, pm.default_params("apce_8x6").replace(inflow=inflow), om, V, np.radians(179.5),
+                       on_failure="flag").torque
+    steps = np.abs(np.diff(q))
+    assert steps.max() < 3 * np.median(steps) and q.max() / q.min() < 1.02  # (a spike was 80 x the median step)
 
 
 def test_drees_is_held_at_its_advance_ratio_bound_and_flagged_beyond(prop, generic):

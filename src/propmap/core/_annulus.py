@@ -50,7 +50,7 @@ from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_
                        PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, inverse_sin_phi, make_cambered_element,
                        make_delayed_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag)
 from ._momentum import (empirical_k, inflow_gradients, inplane_induction, make_axial_mass_flow, momentum_scale,
-                        momentum_thrust, swirl_step, swirl_target)
+                        momentum_thrust, skew_inflow_ratio, swirl_step, swirl_target)
 
 MARCH_STEPS = 3.0
 MAX_MARCH = 64
@@ -88,6 +88,7 @@ _momentum_thrust = _jit_inline(momentum_thrust)
 _momentum_scale = _jit_inline(momentum_scale)
 _cambered_annulus = _jit_inline(cambered_annulus)
 _inflow_gradients = _jit_inline(inflow_gradients)
+_skew_inflow_ratio = _jit_inline(skew_inflow_ratio)
 _empirical_k = _jit_inline(empirical_k)
 _axial_mass_flow = _jit_inline(make_axial_mass_flow(_empirical_k))
 _swirl_target = _jit_inline(swirl_target)

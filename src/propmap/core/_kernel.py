@@ -10,8 +10,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _inflow_gradients, _swirl_step,
-                       _swirl_target, annulus_loads, delay_factor, solve_annuli)
+from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _inflow_gradients, _skew_inflow_ratio,
+                       _swirl_step, _swirl_target, annulus_loads, delay_factor, solve_annuli)
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y
@@ -196,7 +196,7 @@ def _solve_point(i, Om, Vs, Vc, coll, nodes, azim, model, pk, cam, inflow, emp, 
                 vsum += w[j] * y[j] * v[j]
                 wsum += w[j] * y[j]
             OmR = Om[i] * radius
-            kx, ky = _inflow_gradients(Vs[i] / OmR, (Vc[i] + vsum / wsum) / OmR, inflow)
+            kx, ky = _inflow_gradients(Vs[i] / OmR, _skew_inflow_ratio(Vc[i], vsum / wsum, OmR), inflow)
             for j in range(nr):
                 gx[j] = kx * y[j] / radius
                 gy[j] = ky * y[j] / radius

@@ -4,7 +4,8 @@ Pitt-Peters; _momentum.inflow_gradients).
 With a linear inflow each operating point is solved twice (core/_kernel.py): the uniform
 inflow first, whose area-weighted mean inflow v_u sets the wake skew and so the gradients
 (k_x, k_y) = k(mu, lambda), mu = V sin(beta) / (Omega R), lambda = (V cos(beta) + v_u) /
-(Omega R); then, on the full circle, every annulus' mean inflow v solves
+(Omega R) in climb and edgewise, v_u / (Omega R) in descent (_momentum.skew_inflow_ratio; its
+slope in V cos beta the two sides' mean at V cos beta = 0); then, on the full circle, every annulus' mean inflow v solves
 
     G(v, x, g) = dT_BET(v (1 + g_x cos psi + g_y sin psi)) - F dT_BEMT(v) = 0,
     g_x = k_x y / R, g_y = k_y y / R
@@ -54,7 +55,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, annulus_loads
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, _skew_inflow_ratio, annulus_loads
 from ._jitcache import CACHE
 from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
 from ._physics import PK_INPLANE, PK_RADIAL_DRAG
@@ -335,12 +336,15 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
     vu /= wy
     OmR = om * radius
     mu = vs / OmR
-    lam = (vc + vu) / OmR
+    lam = _skew_inflow_ratio(vc, vu, OmR)
+    # lambda's slope in V cos beta: 1 / (Omega R) in climb, 0 in descent (v_u alone), the two sides' mean at
+    # V cos beta = 0 (as the in-plane induction's: _sensitivity._inplane_partials)
+    lam_c = (1.0 if vc > 0.0 else (0.5 if vc == 0.0 else 0.0)) / OmR
     kx, ky, kx_mu, ky_mu, kx_lam, ky_lam = _k_partials(mu, lam, inflow)
     dk = np.empty((n_cols, 2))
     for c in range(n_cols):
         dmu = e[c, 1] / OmR - mu * e[c, 0] / om
-        dlam = e[c, 2] / OmR - lam * e[c, 0] / om
+        dlam = e[c, 2] * lam_c - lam * e[c, 0] / om
         dk[c, 0] = kx_mu * dmu + kx_lam * dlam
         dk[c, 1] = ky_mu * dmu + ky_lam * dlam
     kzx = kx_lam / OmR

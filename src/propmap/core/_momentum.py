@@ -162,25 +162,41 @@ DESCENT_CODES = {"glauert": 0, "empirical": 1}
 DREES_MU_MAX = 0.5
 
 
+def skew_inflow_ratio(Vc, v_mean, OmR):
+    """The inflow ratio that sets a linear inflow model's wake skew [-].
+
+    lambda = (Vc + v_mean) / (Omega R), the flow through the disk, in climb and edgewise flight
+    (Vc >= 0); v_mean / (Omega R) in descent (Vc < 0): the skew of a hovering disk at the same
+    in-plane speed, the rule of :func:`inplane_induction`. With the flow through the disk
+    itself, a descent near the rotor's own autorotation (Vc + v_mean ~ 0) put the skew at 90
+    deg for any in-plane speed and 0 at none: the loads jumped between axial descent and 0.01
+    deg off it (thrust -8.5%, gwsdd_5x3 at 12,000 rpm and 15.05 m/s with Pitt-Peters) and the
+    torque spiked by 11% over 0.2 m/s of descent rate (an envelope audit, 2026-11-27). Continuous
+    at Vc = 0, where its slope in Vc has a kink (as u_x's). Scalars.
+    """
+    return (Vc + v_mean if Vc >= 0.0 else v_mean) / OmR
+
+
 def inflow_gradients(mu, lam, model):
     """First-harmonic gradients (k_x, k_y) of a linear inflow model [-].
 
     v(r, psi) = v0(r) (1 + k_x (r/R) cos psi + k_y (r/R) sin psi), psi = 0 downstream
     (the blade parallel to the in-plane velocity, trailing), psi = 90 deg the advancing
     blade; v0(r) is the annulus' mean (the root of eq 11). The wake skew angle is
-    chi = atan2(mu, lambda), lambda = (V cos beta + v_mean) / (Omega R) the inflow ratio
-    through the disk and mu = V sin beta / (Omega R).
+    chi = atan2(mu, lambda), lambda the inflow ratio of :func:`skew_inflow_ratio` ((V cos beta
+    + v_mean) / (Omega R) through the disk; v_mean / (Omega R) in descent) and mu = V sin beta
+    / (Omega R).
 
     * Drees (1949): k_x = (4/3) (1 - cos chi - 1.8 mu^2) / sin chi, k_y = -2 mu;
     * Pitt & Peters (1981): k_x = (15 pi / 32) tan(chi / 2), k_y = 0;
 
     both as tabulated by J. G. Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
     Cambridge University Press, 2006, Sec. 3.4 (linear inflow models). Both are derived for
-    a wake skewed behind the rotor (chi <= 90 deg, the normal working state); for a wake
-    above the disk (lambda < 0, descent) propmap evaluates them at the mirrored skew angle
-    pi - chi, so that the gradient vanishes again in axial descent (the modification of
-    Coleman's model used by wind-turbine codes for skew beyond 90 deg), an extrapolation
-    that ``RotorLoads.inflow_extrapolated`` flags. k_x is held >= 0 (a wake skewed
+    a wake skewed behind the rotor (chi <= 90 deg, the normal working state); a lambda < 0
+    (a rotor windmilling in climb, its v_mean < 0) is evaluated at the mirrored skew angle
+    pi - chi (the modification of Coleman's model used by wind-turbine codes for skew beyond
+    90 deg). Where the flow through the disk is upward, ``RotorLoads.inflow_extrapolated``
+    flags the point. k_x is held >= 0 (a wake skewed
     backwards has the larger inflow at the rear). Drees's mu terms are held at
     ``DREES_MU_MAX`` (0.5) beyond it, also flagged. Scalars only (once per operating point).
     """

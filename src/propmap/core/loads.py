@@ -105,8 +105,9 @@ class RotorLoads:
         default; _momentum.inplane_induction).
     inflow_extrapolated : ndarray of bool
         The inflow model was used outside the measurements behind it: a linear inflow model
-        with the wake above the disk (inflow ratio < 0, the model's mirrored extrapolation;
-        _momentum.inflow_gradients), Drees's model beyond an advance ratio of 0.5, where its
+        with the flow through the disk upward (V cos(beta) + v_i_mean < 0; in descent the
+        wake skew is that of a hovering disk, propmap's extension: _momentum.skew_inflow_ratio,
+        inflow_gradients), Drees's model beyond an advance ratio of 0.5, where its
         gradients are held (_momentum.DREES_MU_MAX), or the empirical descent momentum (``descent =
         "empirical"``) in the vortex-ring or turbulent-wake range (0.45 <= lambda2 < 2) with an
         in-plane speed that puts its fade with V sin(beta) (propmap's, not measured) between
