@@ -216,7 +216,16 @@ def test_axes_in_rpm_and_degrees_are_the_values_given():
                    n_check=0)
     assert list(ds["rpm"].values) == list(rpm) and list(ds["incidence_deg"].values) == list(range(0, 181, 15))
     assert float(ds.sel(rpm=6000.0, incidence_deg=15.0, airspeed=5.0)["thrust"]) > 0
-    np.testing.assert_allclose(RotorMap(ds).omega, om, rtol=5e-12, atol=0)
+    np.testing.assert_array_equal(RotorMap(ds).omega, om)  # (evaluated at the nodes as solved: the SI coordinate)
+    # an axis in rad/s keeps its rpm as they are, and the map answers at its own end nodes (a first version rounded
+    # 400 rad/s to 3819.71863421 rpm, and RotorMap refused omega = 400 as outside [400.0000000004724, ...]: a review)
+    params = pm.default_params("apce_8x6")
+    ds = build_map(prop, params, [400.0, 600.0, 1000.0], [0.0, 5.0, 10.0], [0.0, 1.0, 2.0], n_check=0)
+    assert ds["rpm"].values[0] == 400.0 / RPM
+    rm = RotorMap(ds)
+    for om_end in (400.0, 1000.0):
+        got = rm.loads(om_end, 10.0, 2.0).thrust
+        assert got == pytest.approx(float(pm.rotor_loads(prop, params, om_end, 10.0, 2.0).thrust), rel=1e-12)
 
 
 def test_bad_axes_are_refused():

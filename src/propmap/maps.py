@@ -161,11 +161,13 @@ def _solve_block(propeller, params, air, discretization, loads, om, V, b):
 
 
 def _rounded(x: np.ndarray) -> np.ndarray:
-    """An axis converted to rpm or degrees, rounded to 12 significant digits where that keeps it
-    strictly increasing: 6000 rpm through rad/s came back 6000.000000000001 (and 15 deg
-    14.999999999999998), which ``Dataset.sel(rpm=6000)`` did not find. The rounding moves a node
-    by at most 5e-12 of its value."""
+    """An axis converted to rpm or degrees without the conversion's round-off: a value within 4
+    units in the last place of one of 12 significant digits is that one (6000 rpm through rad/s
+    came back 6000.000000000001, 15 deg 14.999999999999998, which ``Dataset.sel(rpm=6000)`` did
+    not find); others, and an axis the rounding would not keep strictly increasing, as they are.
+    RotorMap evaluates at the stored SI coordinates, the nodes as solved."""
     r = np.array([float(f"{v:.12g}") for v in x])
+    r = np.where(np.abs(r - x) <= 4 * np.spacing(np.abs(x)), r, x)
     return r if np.all(np.diff(r) > 0) else x
 
 

@@ -212,9 +212,13 @@ class RotorMap:
         ds = dataset.transpose("rpm", "airspeed", "incidence_deg")
         self.dataset = ds
         self.attrs = dict(ds.attrs)
-        self.omega = np.ascontiguousarray(ds["rpm"].values, dtype=float) * RPM
+        # the nodes where the map was solved: its SI coordinates omega and incidence where it has them (equal to the
+        # rpm and degree axes to 1e-9, io.mapcheck; those are for people and may be rounded), else the axes converted
+        self.omega = np.ascontiguousarray(ds["omega"].values if "omega" in ds.coords or "omega" in ds
+                                          else ds["rpm"].values * RPM, dtype=float)
         self.airspeed = np.ascontiguousarray(ds["airspeed"].values, dtype=float)
-        self.incidence = np.ascontiguousarray(np.radians(ds["incidence_deg"].values), dtype=float)
+        self.incidence = np.ascontiguousarray(ds["incidence"].values if "incidence" in ds.coords or "incidence" in ds
+                                              else np.radians(ds["incidence_deg"].values), dtype=float)
         self.radius = float(ds.attrs["diameter_m"]) / 2
         ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
         table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]

@@ -5,7 +5,8 @@ With a linear inflow each operating point is solved twice (core/_kernel.py): the
 inflow first, whose area-weighted mean inflow v_u sets the wake skew and so the gradients
 (k_x, k_y) = k(mu, lambda), mu = V sin(beta) / (Omega R), lambda = (V cos(beta) + v_u) /
 (Omega R) in climb and edgewise, v_u / (Omega R) in descent (_momentum.skew_inflow_ratio; its
-slope in V cos beta the two sides' mean at V cos beta = 0); then, on the full circle, every annulus' mean inflow v solves
+slope in V cos beta the two sides' mean at V cos beta = 0); then, on the full circle, every
+annulus' mean inflow v solves
 
     G(v, x, g) = dT_BET(v (1 + g_x cos psi + g_y sin psi)) - F dT_BEMT(v) = 0,
     g_x = k_x y / R, g_y = k_y y / R

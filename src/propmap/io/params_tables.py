@@ -61,7 +61,7 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
     dict or None
         The table's keys, each as a float (``J_max`` [-], ``incidence_deg_max`` [deg],
         ``rpm_min``, ``rpm_max`` [rpm], ``airspeed_max`` [m/s], ``diameter_m`` [m],
-        ``n_blades``, ``re75_min``, ``re75_max``), ``data``, ``data_sha256`` and ``propeller``
+        ``re75_min``, ``re75_max``), ``n_blades`` as int, ``data``, ``data_sha256`` and ``propeller``
         as str and ``groups``, ``held_out`` and ``files_sha256`` as tuples of str; None without
         a table.
 
