@@ -109,6 +109,12 @@ def test_jackknife_report_units_and_folds():
     assert rep["std_error"]["cl_alpha"] == pytest.approx(se)
     assert rep["std_error"]["alpha_L0_deg"] == pytest.approx(math.degrees(se))  # (angles in degrees, as the report)
     assert "alpha_L0" not in rep["std_error"] and "alpha_L0" not in rep["ci95"]
+    # the name lists name an angle as the value keys do (a review, 2026-11-27: fitted[at_bound[i]] failed)
+    bound = jackknife_report(res, folds, "run", ["a", "b", "c"], [["alpha_L0"], [], ["cl_alpha"]])["at_bound"]
+    assert bound == {"a": ["alpha_L0_deg"], "c": ["cl_alpha"]}
+    from dataclasses import replace
+    d = replace(res, at_bound=("alpha_L0",)).to_dict()
+    assert d["at_bound"] == ["alpha_L0_deg"] and all(n in d["fitted"] for n in d["at_bound"])
     with pytest.raises(ValueError, match="lacks the fitted parameter alpha_L0"):
         jackknife_report(res, [{"cl_alpha": 1.0}] * 3, "run", ["a", "b", "c"])  # (the folds: SI names, rad)
 

@@ -109,7 +109,7 @@ class Identifiability:
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
             "singular_values": [float(s) for s in self.singular_values],
-            "poorly_determined": list(self.poorly_determined),
+            "poorly_determined": [report_name(n) for n in self.poorly_determined],
             "warnings": list(self.warnings),
         }
 
@@ -188,7 +188,8 @@ class FitResult:
             "residuals": [float(r) for r in self.residuals],
             "nfev": self.nfev, "n_model_points": self.n_model_points, "elapsed_s": self.elapsed_s,
             "success": self.success, "message": self.message,
-            "at_bound": list(self.at_bound), "hit_max_nfev": self.hit_max_nfev, "warnings": list(self.warnings),
+            "at_bound": [report_name(n) for n in self.at_bound], "hit_max_nfev": self.hit_max_nfev,
+            "warnings": list(self.warnings),
             "starts": [{k: ([float(a) for a in v] if isinstance(v, np.ndarray) else v) for k, v in s.items()}
                        for s in self.starts],
             "identifiability": self.identifiability.to_dict(),
@@ -550,7 +551,7 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
                      for n, x, s in zip(result.names, result.x, se)},
             "ratio": {report_name(n): (float(s / v) if np.isfinite(v) and v > 0 else None)
                       for n, s, v in zip(result.names, se, lin)},
-            "at_bound": {str(g): list(b) for g, b in zip(groups, at_bound or ()) if b}}
+            "at_bound": {str(g): [report_name(n) for n in b] for g, b in zip(groups, at_bound or ()) if b}}
 
 
 def _jackknife_band(g: int) -> tuple[float, float]:
