@@ -194,6 +194,8 @@ def test_a_label_cannot_inject_into_the_written_file(tmp_path, model, target, na
                          params_label="x\nprint('INJECTED')  # --> <motorConstant>1</motorConstant>")
     path, _ = write_export(res, tmp_path / name)
     coefficients = _read(target, path)  # parses: the label stayed inside the comment
+    with pytest.raises(ValueError, match="a name ending in .report.json is an export's report"):
+        write_export(res, tmp_path / "c.report.json")  # (the API as the CLI: a review, 2026-11-27)
     assert "INJECTED" not in capsys.readouterr().out
     assert set(coefficients) >= ({"k_eta", "k_m"} if target == "rotorpy" else {"motorConstant", "momentConstant"})
     if target != "rotorpy":

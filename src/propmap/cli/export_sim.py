@@ -101,7 +101,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     target = ALIASES.get(target, target)
     if out.suffix.lower() != SUFFIX[target]:
         raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
-    if out.name.lower().endswith(".report.json"):  # (it wrote over another export's report, beside a stray one)
+    if out.name.lower().endswith(".report.json"):  # (it wrote over another export's report; write_export says so too)
         raise InputError(f"--out: {out}: a name ending in .report.json is an export's report (written beside its "
                          "coefficient file); name the coefficient file otherwise")
     if not 20 <= n_points <= 1_000_000:

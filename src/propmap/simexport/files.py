@@ -278,11 +278,15 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     Raises
     ------
     ValueError
-        ``vehicle`` with another target, or one RotorPy cannot represent.
+        ``vehicle`` with another target, or one RotorPy cannot represent; a ``path`` named
+        ``*.report.json`` (an export's report: it would replace another export's).
     OSError
         The files cannot be written.
     """
     path = Path(path)
+    if path.name.lower().endswith(".report.json"):
+        raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "
+                         "coefficient file); name the coefficient file otherwise")
     head = _text(f"propmap {__version__} (source sha256 {res.meta.get('propmap_source_sha256', 'not recorded')}): "
                  f"{res.target} coefficients of {res.meta.get('propeller')} ({res.meta.get('params')}), fitted to the "
                  "full model" + (f"; data: {res.meta['citation']}" if res.meta.get("citation") else ""))
