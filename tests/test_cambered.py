@@ -189,3 +189,27 @@ def test_reynolds_corrections_are_held_beyond_the_calibrated_range():
     assert pm.lift_coefficient(a, p, 1e3) == pytest.approx(pm.lift_coefficient(a, p, 1e4), rel=1e-12)
     assert pm.drag_coefficient(a, 5e6, p) == pytest.approx(pm.drag_coefficient(a, 5e5, p), rel=1e-12)
     assert pm.drag_coefficient(a, 2e5, p) != pytest.approx(pm.drag_coefficient(a, 1e5, p), rel=1e-3)
+
+
+def test_the_rotational_stall_delay_scales_the_stall_angles_by_c_over_r_squared(apc8x6):
+    """The stall delay's factor is 1 + stall_delay (c/r)^2 (Snel's (c/r)^2 dependence,
+    docs/models.md), per annulus, with c and r from the geometry itself; at a collective that
+    stalls the blade it raises the thrust. No test held the exponent (a mutation audit,
+    2026-11-27: (c/r) in its place passed the suite)."""
+    from propmap.core._physics import cambered_annulus
+
+    generic = pm.generic_params()
+    nd = _nodes(apc8x6, 24, 8, generic.air, generic)
+    cy2 = (apc8x6.chord_at(nd.y) / nd.y) ** 2  # (independent of the nodes' own row)
+    U2 = (800.0 * nd.y) ** 2
+    args = (nd.sc, cy2, 0.0, 6.0, -0.5, 0.1, False, 0.0)
+    g0 = cambered_annulus(U2, *args, 0.0, 0.0)[2]
+    g2 = cambered_annulus(U2, *args, 2.0, 0.0)[2]
+    np.testing.assert_allclose(g0, 1.0, rtol=0, atol=0)
+    np.testing.assert_allclose(g2, 1.0 + 2.0 * cy2, rtol=1e-14)
+    # the rotor (regression values of 2026-11-27, generic set, collective 10 deg, 8000 rpm: hover and 10 m/s edgewise)
+    om = 8000 * RPM
+    T = [pm.rotor_loads(apc8x6, generic.replace(collective=math.radians(10.0), stall_delay=sd), om, [0.0, 10.0],
+                        [0.0, math.pi / 2]).thrust for sd in (0.0, 2.0)]
+    np.testing.assert_allclose(T[0], [4.5030, 4.4780], rtol=2e-4)
+    np.testing.assert_allclose(T[1], [6.1799, 5.7331], rtol=2e-4)
