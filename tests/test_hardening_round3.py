@@ -86,6 +86,12 @@ def test_an_angle_on_a_static_stand_is_not_an_incidence():
      (1.0, 1.0, 1.0, 9.80665e-2)),
     (["rpm", "airspeed (m/s)", "incidence (deg)", "thrust (N)", "drag (N)", "Torque (lb-in)"],
      (1.0, 1.0, 1.0, 4.4482216152605 * 0.0254)),
+    # the spellings of knots, ft/s and lbf in (the last the one propmap's own hint names): no test read them, and
+    # wrong factors for each passed the suite (a mutation audit, 2026-11-27)
+    (["rpm", "airspeed (kn)", "incidence (deg)", "thrust (N)", "drag (N)", "Torque (lbf in)"],
+     (1.0, 1852.0 / 3600.0, 1.0, 4.4482216152605 * 0.0254)),
+    (["rpm", "airspeed (ft/s)", "incidence (deg)", "thrust (N)", "drag (N)", "torque (N m)"],
+     (1.0, 0.3048, 1.0, 1.0)),
 ])
 def test_common_unit_spellings_are_read(tmp_path, header, scale):
     path = tmp_path / "t.csv"
