@@ -268,3 +268,22 @@ def test_catalogue_loads_refuse_a_bad_diameter(diameter):
 def test_bad_vehicle_files(tmp_path, text, match):
     with pytest.raises(VehicleFileError, match=match):
         read_vehicle(_write(tmp_path, text, "v.toml"))
+
+
+def test_body_to_world_pitches_then_rolls_as_the_attitude_says():
+    """R = Ry(-pitch) Rx(roll) (x forward, y left, z up): nose-up pitch lifts the body's x axis,
+    right-wing-down roll lifts its y axis (the left wing). No test combined roll with pitch: the
+    product in the other order passed the suite (a mutation audit, 2026-11-27)."""
+    from scipy.spatial.transform import Rotation
+
+    from propmap.identify.level_flight import body_to_world
+
+    pitch, roll = math.radians(10.0), math.radians(20.0)
+    R = body_to_world(pitch, roll)
+    np.testing.assert_allclose(R @ [1.0, 0.0, 0.0], [math.cos(pitch), 0.0, math.sin(pitch)], atol=1e-15)
+    np.testing.assert_allclose(R @ [0.0, 1.0, 0.0], [-math.sin(pitch) * math.sin(roll), math.cos(roll),
+                                                     math.cos(pitch) * math.sin(roll)], atol=1e-15)
+    # intrinsic rotations: about y by -pitch, then about the new x by roll (scipy, independently)
+    np.testing.assert_allclose(R, Rotation.from_euler("YX", [-pitch, roll]).as_matrix(), atol=1e-15)
+    Rs = body_to_world(np.array([pitch, 0.0]), np.array([roll, 0.0]))
+    assert Rs.shape == (2, 3, 3) and np.array_equal(Rs[1], np.eye(3))
