@@ -79,6 +79,15 @@ def test_ulog_from_esc_status(tmp_path):
     np.testing.assert_allclose(log.angular_velocity[0], [0.1, 0.0, 0.0], atol=1e-7)
     np.testing.assert_allclose(log.rotor_omega[0], 12000 * 2 * math.pi / 60)
     assert "esc_status" in log.motor_order
+    # the attitude (body to a z-up world: north, west, up): the nose 30 deg east of north, 5 deg up (untested before:
+    # a quaternion component of the wrong sign passed the suite; a mutation audit, 2026-11-27)
+    from scipy.spatial.transform import Rotation
+
+    nose = Rotation.from_quat(log.attitude[0]).apply([1.0, 0.0, 0.0])
+    np.testing.assert_allclose(nose, [math.cos(yaw) * math.cos(pitch), -math.sin(yaw) * math.cos(pitch),
+                                      math.sin(pitch)], atol=1e-6)
+    left = Rotation.from_quat(log.attitude[0]).apply([0.0, 1.0, 0.0])
+    np.testing.assert_allclose(left, [math.sin(yaw), math.cos(yaw), 0.0], atol=1e-6)  # (no roll: level wings)
 
 
 def test_ulog_a_nan_logged_angular_acceleration_is_refused_naming_the_file(tmp_path):
