@@ -276,6 +276,21 @@ def test_interpolation_is_exact_for_its_polynomials(small_map, interpolation, f)
         assert np.max(np.abs(quad.thrust / ((O * R) ** 2 + V**2) / 1e-3 - (1 + 0.3 * B**2))) > 1e-3
 
 
+def test_the_cubic_weights_reproduce_quadratics_on_a_non_uniform_axis():
+    """The three-point slopes at the ends and inside, on an axis of unequal cells, reproduce 1, x
+    and x^2 in every cell (the maps above have uniform axes, where the end slope's two cell
+    widths are equal: their weights swapped passed every Python test; a mutation audit,
+    2026-11-27)."""
+    from propmap.core._interp import _cubic_weights
+
+    ax = np.array([0.0, 1.0, 3.0, 4.0, 7.0])
+    for x in (0.25, 0.5, 2.0, 3.5, 5.0, 6.9):
+        i, *w = _cubic_weights(ax, x)
+        nodes = ax[np.clip(np.arange(i - 1, i + 3), 0, ax.size - 1)]
+        for f in (np.ones_like, lambda a: a, lambda a: a**2):
+            assert float(np.dot(w, f(nodes))) == pytest.approx(float(f(np.array(x))), rel=1e-13, abs=1e-13), (x, i)
+
+
 def test_cubic_equals_the_model_at_nodes_and_beats_linear_off_grid(small_map):
     prop, params, ds = small_map
     rm = RotorMap(ds)
