@@ -18,6 +18,13 @@ def test_drag_is_zero_in_hover_and_axial_flow(apc8x6, apc_params):
     r = pm.rotor_loads(apc8x6, apc_params, om, [0.0, 10.0, 10.0, 3.0], [1.0, 0.0, math.pi, math.pi], radial=True)
     assert np.all(r.drag == 0.0)
     assert np.all(r.converged)
+    # and it goes to 0 there, linearly in the incidence (the exact zeros above are the solver's axial shortcut; this
+    # is the physics on either side of it)
+    b = np.array([1e-3, 2e-3, math.pi - 2e-3, math.pi - 1e-3])
+    d = pm.rotor_loads(apc8x6, apc_params, om, 10.0, b).drag
+    edgewise = float(pm.rotor_loads(apc8x6, apc_params, om, 10.0, math.pi / 2).drag)
+    assert np.all(d > 0) and np.all(d < 0.01 * edgewise)
+    assert d[1] / d[0] == pytest.approx(2.0, rel=1e-3) and d[2] / d[3] == pytest.approx(2.0, rel=1e-3)
 
 
 def test_drag_positive_and_linear_at_low_edgewise_speed(apc8x6, apc_params):
@@ -66,7 +73,11 @@ def test_momentum_consistency_sum_dT_BEMT_equals_T(apc8x6, apc_params, envelope_
     nd = _nodes(apc8x6, 48, 16, pm.Air(), apc_params)
     Vs = (V * np.sin(b))[:, None]
     Vc = (V * np.cos(b))[:, None]
-    dT_bemt = nd.mfac * r.v_i * np.sqrt(Vs**2 + (Vc + r.v_i) ** 2)
+    # eq (10)'s factor 4 pi rho y written here, not taken from the solver's nodes (a momentum factor 2 pi rho y in the
+    # solver passed this test when it used the nodes' own: a mutation audit, 2026-11-27)
+    mfac = 4 * math.pi * pm.Air().rho * nd.y
+    np.testing.assert_allclose(nd.mfac, mfac, rtol=1e-14)
+    dT_bemt = mfac * r.v_i * np.sqrt(Vs**2 + (Vc + r.v_i) ** 2)
     T_bemt = dT_bemt @ nd.w
     T0 = float(pm.rotor_loads(apc8x6, apc_params, 12000 * RPM, 0, 0, radial=True).thrust)
     assert np.max(np.abs(T_bemt - r.thrust)) < 1e-6 * T0
@@ -87,6 +98,9 @@ def test_hover_model_equals_full_model_at_zero_speed(apc8x6, apc_params):
 
 def test_hover_model_from_coefficients_roundtrip():
     h = HoverModel.from_coefficients(0.11, 0.074, 0.2032)
+    # k_T = CT rho D^4 / (2 pi)^2, k_Q = CP rho D^5 / (2 pi)^3 (propeller convention, ISA sea level)
+    assert h.k_T == pytest.approx(0.11 * 1.225 * 0.2032**4 / (2 * math.pi) ** 2, rel=1e-12)
+    assert h.k_Q == pytest.approx(0.074 * 1.225 * 0.2032**5 / (2 * math.pi) ** 3, rel=1e-12)
     assert h.CT(0.2032) == pytest.approx(0.11)
     assert h.CP(0.2032) == pytest.approx(0.074)
 
