@@ -193,7 +193,7 @@ def inflow_gradients(mu, lam, model):
     both as tabulated by J. G. Leishman, Principles of Helicopter Aerodynamics, 2nd ed.,
     Cambridge University Press, 2006, Sec. 3.4 (linear inflow models). Both are derived for
     a wake skewed behind the rotor (chi <= 90 deg, the normal working state); a lambda < 0
-    (a rotor windmilling in climb, its v_mean < 0) is evaluated at the mirrored skew angle
+    (a rotor making negative thrust, its v_mean < 0) is evaluated at the mirrored skew angle
     pi - chi (the modification of Coleman's model used by wind-turbine codes for skew beyond
     90 deg). Where the flow through the disk is upward, ``RotorLoads.inflow_extrapolated``
     flags the point. k_x is held >= 0 (a wake skewed
