@@ -101,7 +101,7 @@ c_options = [
                  help="Table type of --format c."),
     click.option("--c-interpolation", type=click.Choice(["linear", "cubic"]), default="linear", show_default=True,
                  help="Interpolation of the --format c function (linear: 22-23 ns a call; cubic, the Python "
-                      "evaluator's default: 92-97 ns, 3-9x smaller largest errors; docs/simulators.md)."),
+                      "evaluator's default: 92-97 ns, 2.6-5.4x smaller largest errors; docs/simulators.md)."),
     click.option("--c-name", default=None, help="C identifier prefix of --format c (default: pm_<file name>)."),
     click.option("--vehicle", type=PathArg(text=True), default=None,
                  help="With --format c: add <prefix>_vehicle_wrench, the body force and moment of this vehicle TOML "
