@@ -318,10 +318,15 @@ def read_vehicle(path) -> Vehicle:
     try:
         data = load_toml(path, VehicleFileError)
     except VehicleFileError as exc:
-        if os.path.lexists(path) or not _bare(given) or path.suffix:
+        if os.path.lexists(path) or not _bare(given):
             raise
-        raise VehicleFileError(f"{exc} (nor a bundled example vehicle: "
-                               f"{', '.join(n[:-5] for n in _example_vehicles())})") from None
+        examples = [n[:-5] for n in _example_vehicles()]
+        if path.suffix:  # (a file name: the bundled example of that stem is named without .toml, docs/flight.md)
+            if path.suffix.lower() == ".toml" and path.stem in examples:
+                raise VehicleFileError(f"{exc} here (the bundled example vehicle of that name is given without "
+                                       f".toml: {path.stem})") from None
+            raise
+        raise VehicleFileError(f"{exc} (nor a bundled example vehicle: {', '.join(examples)})") from None
     for key in ("mass", "rotors"):
         if key not in data:
             raise VehicleFileError(f"{name}: missing key {key!r}")
