@@ -287,6 +287,10 @@ def test_a_plain_csv_with_unit_suffixes_is_converted(tmp_path, truth_params):
     np.testing.assert_allclose(data.measured["thrust"], r.thrust, rtol=1e-6)
     np.testing.assert_allclose(data.measured["torque"], r.torque, rtol=1e-6)
     assert sanity_check(data, prop) == []
+    # each conversion said in the target's unit ('converted from nmm' named a token: a docs audit, 2026-11-27)
+    assert "'torque_Nmm' converted to N m (x 0.001)" in data.notes
+    assert "'Thrust (lbf)' converted to N (x 4.44822)" in data.notes
+    assert "'speed_rad_s' converted to rpm (x 9.5493)" in data.notes
 
 
 @pytest.mark.parametrize("thrust_factor, torque_factor, cause", [

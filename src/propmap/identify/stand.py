@@ -267,8 +267,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
-            target = {"rotation": "rpm", "angle": "deg"}.get(kind, "SI")  # (rates are read in rpm, angles in deg)
-            cm.notes.append(f"{name!r} converted from {unit} ({factor:.6g} {target} per {unit})")
+            # (rates are read in rpm, angles in deg; the note named the unit's token, 'converted from nmm': a docs audit)
+            target = {"rotation": "rpm", "angle": "deg", "force": "N", "torque": "N m", "speed": "m/s",
+                      "density": "kg/m^3"}.get(kind, "SI")
+            cm.notes.append(f"{name!r} converted to {target} (x {factor:.6g})")
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
     if pole_pairs is not None and not (isinstance(pole_pairs, int) and 1 <= pole_pairs <= 50):
