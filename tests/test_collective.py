@@ -91,6 +91,24 @@ def test_a_thrust_reached_only_between_the_grids_nodes_near_the_peak_is_trimmed(
     assert np.max(pm.rotor_loads(prop, p8, *point, collective=grid).thrust) < T  # the grid alone misses it
     with pytest.raises(TrimError, match=r"spans \[3.44848, 10.623\] N, highest near a collective of -2.17\d* deg"):
         trim_collective(prop, p8, T + 0.01, *point)
+    # the grid shifted so that its highest node (-1.4 deg) lies past the peak: the bracket still starts at the node
+    # before the peak, and the rising branch is returned (a bracket from the highest node found the stalled one,
+    # -2.106 deg: a mutation audit, 2026-11-27)
+    shifted = trim_collective(prop, p8, T, *point, bounds=(math.radians(-18.9), math.radians(31.1)))
+    assert math.degrees(float(shifted.collective)) == pytest.approx(-2.2390, abs=2e-4)
+
+
+def test_trim_returns_the_first_upward_crossing_and_counts_every_crossing():
+    """apce_8x6's calibrated set at 8000 rpm in hover: its static thrust rises, falls past the stall
+    and rises again with the collective, so 3.76 N is made at three collectives and 4.0 N at two.
+    The lowest (the first upward crossing) is returned, and every crossing counted (n_solutions
+    counted only the upward ones, and the last crossing returned 20.86 deg, passed: a mutation
+    audit, 2026-11-27; regression values of that day)."""
+    prop, p8 = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    res = trim_collective(prop, p8, np.array([3.76, 4.0]), 8000 * math.pi / 30)
+    np.testing.assert_allclose(np.degrees(res.collective), [-6.9904, -5.5957], atol=2e-4)
+    assert list(res.n_solutions) == [3, 2]
+    np.testing.assert_allclose(res.loads.thrust, [3.76, 4.0], atol=1e-6)
 
 
 @pytest.mark.parametrize("kw, match", [
@@ -138,7 +156,9 @@ def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     low = trim_collective(prop, p8, np.array([0.356, 2.0]), 8000 * math.pi / 30, on_missing="nan")
     assert np.isnan(low.collective[0]) and np.isfinite(low.collective[1])
     assert np.isfinite(res.collective[0]) and np.isnan(res.collective[1]) and np.isnan(res.loads.thrust[1])
-    assert list(res.n_solutions) == [1, 0] or res.n_solutions[1] == 0
+    # 40 N is made at three collectives (rising, past the stall falling, rising again in the deep stall; regression
+    # value of 2026-11-27: the assertion "[1, 0] or ...[1] == 0" here never read the first count)
+    assert list(res.n_solutions) == [3, 0]
     with pytest.raises(ValueError, match="bounds must satisfy"):
         trim_collective(rotor, naca0015, 50.0, 100.0, bounds=(0.2, 0.1))
     with pytest.raises(ValueError, match="on_missing must be"):

@@ -179,3 +179,20 @@ def test_descending_wake_is_the_mirror_image():
     assert f_climb == pytest.approx(wake_ratio(chi, (2.4, 0.0, h)), abs=0.003)
     assert f_descent == pytest.approx(wake_ratio(chi, (2.4, 0.0, -h)), abs=0.003)
     assert f_descent - f_climb > 0.02
+
+
+def test_inflow_pairs_each_wake_with_its_own_rotor_size_and_strength():
+    """Rotors of unequal size (R 0.05 m in front at x = +0.1 m, 0.10 m behind at -0.1 m), 5 m/s
+    forward, mean inflows 8 and 4 m/s: each rotor sees -k_I f v_i of the OTHER rotor's wake, f
+    from that rotor's skew, with the offset and radius ratio in that rotor's radii. Rotors of one
+    size and one inflow hid swapped sources, an inverted radius ratio and the offset in the wrong
+    rotor's radii (a mutation audit, 2026-11-27: -0.1425, -0.0995 and -1.882 m/s there)."""
+    out = interference_inflow(np.array([[0.1, 0.0, 0.0], [-0.1, 0.0, 0.0]]), np.array([[0.0, 0.0, 1.0]] * 2),
+                              np.array([0.05, 0.10]), np.array([[[5.0, 0.0, 0.0], [5.0, 0.0, 0.0]]]),
+                              np.array([[8.0, 4.0]]), 1.0)
+    # the rear rotor in the front one's wake (offset 4 front radii, twice its radius): pushed down
+    assert out[0, 1, 2] == pytest.approx(-8.0 * wake_ratio(math.atan2(5.0, 8.0), (4.0, 0.0, 0.0), 2.0), rel=0.02)
+    assert out[0, 1, 2] == pytest.approx(-0.2850, rel=1e-3)  # (regression value, the interpolated table)
+    # the front rotor ahead of the rear one's wake (offset 2 rear radii upstream, half its radius): an upwash
+    assert out[0, 0, 2] == pytest.approx(-4.0 * wake_ratio(math.atan2(5.0, 4.0), (-2.0, 0.0, 0.0), 0.5), rel=0.02)
+    assert out[0, 0, 2] > 0 and np.all(out[0, :, :2] == 0.0)
