@@ -10,6 +10,7 @@ import sys
 import numpy as np
 import pytest
 
+import propmap as pm
 from propmap.cli.main import main
 from propmap.io.mapfile import map_props
 from propmap.maps import RotorMap
@@ -32,6 +33,8 @@ def test_map_netcdf_with_sidecar_check_and_plot(capsys, tmp_path):
     side = json.loads((tmp_path / "m.nc.json").read_text())
     assert side["propeller"] == "apce_8x6" and side["params_label"] == "calibrated:apce_8x6"
     assert side["dims"] == {"rpm": 5, "airspeed": 4, "incidence_deg": 7} and side["check_points"] == 60
+    # the axes' ends (a sidecar that gave the next-to-last nodes passed: a mutation audit, 2026-11-27)
+    assert side["axes"] == {"rpm": [3000.0, 9000.0], "airspeed": [0.0, 15.0], "incidence_deg": [0.0, 180.0]}
     assert "UIUC Propeller Data Site" in side["citation"]
     rm = RotorMap.open(out)
     np.testing.assert_allclose(rm.dataset["rpm"].values, np.linspace(3000, 9000, 5))
@@ -67,11 +70,22 @@ def test_map_csv_long_form_and_c_header(capsys, tmp_path):
     assert len(rows) == 5 * 4 * 7 and {"rpm", "airspeed", "incidence_deg", "thrust", "rolling_moment",
                                        "vortex_ring"} <= set(rows[0])
     assert rows[0]["vortex_ring"] in ("true", "false")
+    # the values and flags as the model's (the CSV at 5 digits, or its flags inverted, passed: a mutation audit)
+    from propmap.maps import FLAGS
+
+    rpm, V, inc = (np.array([float(r[k]) for r in rows]) for k in ("rpm", "airspeed", "incidence_deg"))
+    params = pm.default_params("apce_8x6")
+    full = pm.rotor_loads(pm.load_propeller("apce_8x6"), params, rpm * np.pi / 30, V, np.radians(inc),
+                          on_failure="flag", air=params.air)
+    np.testing.assert_allclose([float(r["thrust"]) for r in rows], full.thrust, rtol=1e-9, atol=1e-12)
+    for f in FLAGS:
+        np.testing.assert_array_equal([r[f] == "true" for r in rows], np.asarray(getattr(full, f)), err_msg=f)
+    assert any(r["vortex_ring"] == "true" for r in rows) and all(r["converged"] == "true" for r in rows)
     code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "m.h", "--format", "c",
                        "--c-type", "double")
     header = (tmp_path / "m.h").read_text()
     assert code == 0 and "static inline int pm_m_loads(" in header and "static const double pm_m_table[" in header
-    assert "; linear interpolation." in header
+    assert "; linear interpolation." in header and "(3000-9000 rpm)" in header  # (the grid named in rpm)
     code, out, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", tmp_path / "cub.h", "--format", "c",
                          "--c-interpolation", "cubic", "--c-name", "rotor_front")
     header = (tmp_path / "cub.h").read_text()
@@ -93,6 +107,12 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     assert small.dataset["thrust"].attrs["units"] == "N" and small.dataset["rpm"].attrs["units"] == "rpm"
     assert json.loads((tmp_path / "all.nc.json").read_text())["variables"]["torque"] == "N m"
     assert large.loads(700.0, 5.0, 1.0).thrust > 1.5 * small.loads(700.0, 5.0, 1.0).thrust
+    # the rpm axis as given, and a node equal to the model (a rad/s conversion off by 3% passed: a mutation audit)
+    np.testing.assert_array_equal(small.dataset["rpm"].values, [3000.0, 4500.0, 6000.0, 7500.0, 9000.0])
+    p8 = pm.default_params("apce_8x6")
+    node = float(pm.rotor_loads(pm.load_propeller("apce_8x6"), p8, 6000 * np.pi / 30, 5.0, np.pi / 2,
+                                air=p8.air).thrust)
+    assert small.loads(6000 * np.pi / 30, 5.0, np.pi / 2).thrust == pytest.approx(node, rel=1e-12)
     with pytest.raises(ValueError, match="give prop="):
         RotorMap.open(out)
     import netCDF4

@@ -267,7 +267,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
-            # (rates are read in rpm, angles in deg; the note named the unit's token, 'converted from nmm': a docs audit)
+            # (rates are read in rpm, angles in deg; the note named the unit's token, 'from nmm': a docs audit)
             target = {"rotation": "rpm", "angle": "deg", "force": "N", "torque": "N m", "speed": "m/s",
                       "density": "kg/m^3"}.get(kind, "SI")
             cm.notes.append(f"{name!r} converted to {target} (x {factor:.6g})")
