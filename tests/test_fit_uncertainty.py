@@ -193,3 +193,30 @@ def test_flight_residual_runs_end_where_samples_were_left_out():
     s = SimpleNamespace(n=10, log_index=np.array([0] * 5 + [1] * 5),
                         t=np.array([0.0, 0.04, 0.08, 0.20, 0.24, 0.0, 0.04, 0.08, 0.12, 0.16]))
     assert _consecutive_runs(s).tolist() == [0, 0, 0, 1, 1, 2, 2, 2, 2, 2]
+
+
+def test_the_jackknife_band_is_the_chi_square_interval_of_a_std_error():
+    """The 95% band of a std error from g groups: sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) /
+    chi2_0.025) times it, 0.57-3.7 for 4 groups and 0.64-2.2 for 7 (docs/identification.md; the
+    quantiles swapped passed the suite: a mutation audit, 2026-11-27)."""
+    from propmap.identify.result import _jackknife_band
+
+    lo, hi = _jackknife_band(4)
+    assert (lo, hi) == (pytest.approx(0.5665, abs=1e-4), pytest.approx(3.7285, abs=1e-4))
+    lo, hi = _jackknife_band(7)
+    assert (lo, hi) == (pytest.approx(0.6444, abs=1e-4), pytest.approx(2.2021, abs=1e-4))
+
+
+def test_the_population_prior_without_a_propeller_is_the_fold_without_its_family():
+    """population(without=NAME) is the statistics of the generic fold that excludes NAME's family
+    (a fold that contained the propeller passed the suite: a mutation audit, 2026-11-27).
+    Regression values of the shipped calibration: sigma_data 0.02873 without apce_8x6 (the fold
+    'generic without apce'), 0.03118 over all."""
+    from propmap.io.calibration import calibration, population
+
+    folds = calibration()["generic_folds"]
+    names = [cal.name for cal, members, _ in folds if "apce_8x6" not in members]
+    assert names[0] == "generic without apce"
+    assert all("apce_8x6" in members for cal, members, _ in folds if cal.name == "generic without apc29ff")
+    assert population(without="apce_8x6")["sigma_data"] == pytest.approx(0.0287266, rel=1e-5)
+    assert population()["sigma_data"] == pytest.approx(0.0311762, rel=1e-5)

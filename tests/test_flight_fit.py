@@ -342,6 +342,8 @@ def test_fit_flight_implicit_jacobian_reaches_the_same_optimum(shared_data):
     np.testing.assert_allclose(a.x, b.x, rtol=1e-3, atol=1e-6)
     assert a.cost == pytest.approx(b.cost, rel=1e-5)
     assert a.nfev < b.nfev / 2
+    # the population prior weighs in newtons: its scale the vehicle's weight (the mass passed: a mutation audit)
+    assert a.extra["prior"]["scale"] == pytest.approx(veh.weight, rel=1e-12) and veh.weight > 7.5
 
 
 def test_fit_flight_centre_of_mass_columns_are_implicit(shared_data):

@@ -287,3 +287,26 @@ def test_body_to_world_pitches_then_rolls_as_the_attitude_says():
     np.testing.assert_allclose(R, Rotation.from_euler("YX", [-pitch, roll]).as_matrix(), atol=1e-15)
     Rs = body_to_world(np.array([pitch, 0.0]), np.array([roll, 0.0]))
     assert Rs.shape == (2, 3, 3) and np.array_equal(Rs[1], np.eye(3))
+
+
+def test_level_flight_reads_the_roll_and_moves_the_hubs_with_the_body_rates(tmp_path):
+    """roll_deg is read right-wing-down positive, in rad; with a yaw rate r the hubs move by
+    w x r_i (a rotor at (0.106, 0.106, 0) m moves at (-0.106, 0.106, 0) m/s at r = 1 rad/s and no
+    airspeed). Neither was checked: the roll's sign flipped and r_i x w in place of w x r_i passed
+    (a mutation audit, 2026-11-27)."""
+    from propmap.identify.level_flight import read_level_flight, rotor_kinematics
+
+    veh = pm.read_vehicle("quadrotor")
+    rows = ["airspeed,pitch_deg,roll_deg,rpm_1,rpm_2,rpm_3,rpm_4,p,q,r"]
+    rows += [f"{V},0,10,6000,6000,6000,6000,0,0,1" for V in (0.0, 1.0, 2.0, 3.0, 4.0, 5.0)]
+    (tmp_path / "lf.csv").write_text("\n".join(rows) + "\n")
+    data = read_level_flight(tmp_path / "lf.csv", veh)
+    np.testing.assert_allclose(data.roll, math.radians(10.0), rtol=1e-12)
+    R, vel = rotor_kinematics(data, veh)
+    arms = pm.vehicle.rotor_geometry(veh)[0]
+    np.testing.assert_allclose(vel[0], np.cross([0.0, 0.0, 1.0], arms), atol=1e-12)  # airspeed 0: w x r_i alone
+    k = int(np.argmin(np.abs(arms[:, 0] - np.abs(arms[:, 0]).max()) + np.abs(arms[:, 1] - np.abs(arms[:, 1]).max())))
+    a = arms[k]  # the front-left rotor (x > 0, y > 0)
+    np.testing.assert_allclose(vel[0, k], [-a[1], a[0], 0.0], atol=1e-12)
+    # with airspeed, the body sees the world's x velocity rotated by the roll (no pitch: along body x)
+    np.testing.assert_allclose(vel[5, k] - vel[0, k], [5.0, 0.0, 0.0], atol=1e-12)
