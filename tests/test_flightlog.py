@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import scipy.io
 
+import propmap as pm
 from propmap.cli.main import main
 from propmap.io.flightlog import NEUROBEM_COLUMNS, FlightLogError, read_flight_log
 
@@ -39,6 +40,19 @@ def test_the_shared_neurobem_segments_read(shared_data):
     assert np.mean(log.specific_force[:, 2]) == pytest.approx(9.84, abs=0.05)
     assert log.rotor_omega.min() == pytest.approx(985.1, abs=0.1) and log.rotor_omega.max() == pytest.approx(1250.0,
                                                                                                               abs=0.1)
+    # the logged motor accelerations are the motor speeds' rate of change, and the log's own moment prediction
+    # follows the measured I dw/dt + w x I w (columns four and three places off passed: a mutation audit, 2026-11-27)
+    win = 40  # 0.1 s means at 400 Hz: the logged dOmega/dt is noisy sample to sample
+    n = log.n // win * win
+    mean = lambda a: a[:n].reshape(-1, win, *a.shape[1:]).mean(axis=1)  # noqa: E731
+    d_log, d_num = mean(log.rotor_acceleration), mean(np.gradient(log.rotor_omega, log.t, axis=0))
+    ratio = np.sum(d_log * d_num, axis=0) / np.sum(d_num * d_num, axis=0)
+    np.testing.assert_allclose(ratio, 1.0, atol=0.05)
+    veh = pm.read_vehicle("neurobem_quadrotor")
+    w, dw = log.angular_velocity, log.angular_acceleration
+    measured = dw @ veh.inertia.T + np.cross(w, w @ veh.inertia.T)
+    corr = [np.corrcoef(mean(log.reference_moment)[:, k], mean(measured)[:, k])[0, 1] for k in range(3)]
+    assert min(corr) > 0.4, corr
 
 
 @pytest.mark.parametrize("header", [True, False, "numbers"])
