@@ -220,3 +220,25 @@ def test_the_population_prior_without_a_propeller_is_the_fold_without_its_family
     assert all("apce_8x6" in members for cal, members, _ in folds if cal.name == "generic without apc29ff")
     assert population(without="apce_8x6")["sigma_data"] == pytest.approx(0.0287266, rel=1e-5)
     assert population()["sigma_data"] == pytest.approx(0.0311762, rel=1e-5)
+
+
+def test_the_prior_rows_are_the_scaled_whitened_deviation():
+    """The population prior's pseudo-residuals: scale sigma_d L^-1 (x - mu) on the covered names,
+    after the data's (the scale, the residuals' unit, dropped from the weight passed the suite: a
+    mutation audit, 2026-11-27)."""
+    import propmap as pm
+    from propmap.identify.engine import _prior_stats, _with_prior
+    from propmap.identify.options import FitOptions
+
+    base = pm.generic_params()
+    names = ("cl_alpha", "alpha_L0", "cd_min")
+    opts = FitOptions(names=names)
+    data = np.array([0.1, -0.2, 0.3])
+    make, info = _with_prior(lambda o: (lambda x, opts=None: data.copy()), names, base, opts, scale=7.5)
+    sel, mu, chol, pop = _prior_stats(names, base, opts)
+    x = np.array([base.cl_alpha + 0.2, base.alpha_L0 - 0.01, base.cd_min + 0.002])
+    r = make(opts)(x)
+    np.testing.assert_array_equal(r[:3], data)
+    want = 7.5 * pop["sigma_data"] * np.linalg.solve(chol, x[sel] - mu)
+    np.testing.assert_allclose(r[3:], want, rtol=1e-12)
+    assert info["sigma_data"] == pop["sigma_data"] and info["scale"] == 7.5

@@ -452,3 +452,25 @@ def test_a_smoother_stall_blend_reports_its_cost():
     assert eff["M_fit"] == 6.0 and eff["M_base"] == truth.M and res.extra["M_used"] == 6.0
     assert eff["rms_residual_at_M_fit"] > 0 and eff["rms_residual_at_M_base"] != eff["rms_residual_at_M_fit"]
     assert "stall-blend smoothing: fitted with M = 6" in res.report_text()
+
+
+def test_the_motor_lag_is_the_first_order_step_response():
+    """A speed step from 1000 to 1100 rad/s held from t = 0.05 s, 400 Hz, tau 33 ms: the lagged
+    speed is 1100 - 100 exp(-(t - t_0) / tau) (t_0 the last sample before the step) and its rate
+    of change (1100 - Omega) / tau, rising 2809 rad/s^2 at the step sample (its sign flipped
+    passed the suite: a mutation audit, 2026-11-27)."""
+    from types import SimpleNamespace
+
+    from propmap.identify.flight_samples import _lagged
+
+    t = np.arange(80) * 0.0025
+    om = np.where(t < 0.05 - 1e-9, 1000.0, 1100.0)[:, None] * np.ones((1, 4))
+    log = SimpleNamespace(t=t, rotor_omega=om, n=t.size, rotor_acceleration=None)
+    tau = 0.033
+    lag, rate = _lagged(log, tau)
+    k = int(np.argmax(t > 0.05 - 1e-9))  # the step sample
+    want = 1100.0 - 100.0 * np.exp(-(t[k:] - t[k - 1]) / tau)
+    np.testing.assert_allclose(lag[k:, 0], want, rtol=1e-12)
+    np.testing.assert_allclose(lag[:k], 1000.0, rtol=0, atol=0)
+    assert lag[k, 0] == pytest.approx(1007.30, abs=0.01) and rate[k, 0] == pytest.approx(2809.2, abs=0.1)
+    np.testing.assert_allclose(rate[k:, 0], 100.0 / tau * np.exp(-(t[k:] - t[k - 1]) / tau), rtol=1e-9)
