@@ -44,8 +44,8 @@ def test_every_series_and_thrust_unit_is_read_as_written(tmp_path, series, unit,
         assert any("reaction torque" in n for n in data.notes)
     assert len(set(data.group)) == data.n and all(g.startswith("step") for g in data.group)
     assert any("ESC steps" in n for n in data.notes)
-    if unit != "N":
-        assert any(f"from {unit}" in n for n in data.notes)
+    if unit != "N":  # the conversion said, in the target's unit
+        assert any(f"({unit})' converted to N (x " in n for n in data.notes), data.notes
 
 
 def test_stopped_rows_and_a_spin_down_are_left_out_with_a_note(tmp_path, truth_params):
