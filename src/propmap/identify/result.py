@@ -98,13 +98,14 @@ class Identifiability:
         """JSON-ready form (a non-finite std error is null), keyed and in units as the fit
         report's: an angle's under its name with ``_deg``, in degrees
         (:func:`~propmap.identify.options.report_name`), the others as fitted (SI)."""
-        num = report_value
+        def per_name(values):
+            return {report_name(n): report_value(n, v) for n, v in zip(self.names, values)}
 
         return {
-            "std_error": {report_name(n): num(n, v) for n, v in zip(self.names, self.std_error)},
-            "std_error_data_only": (None if self.std_error_data is None
-                                    else {report_name(n): num(n, v) for n, v in zip(self.names, self.std_error_data)}),
-            "ci95": {report_name(n): [num(n, a), num(n, b)] for n, (a, b) in zip(self.names, self.ci95)},
+            "std_error": per_name(self.std_error),
+            "std_error_data_only": None if self.std_error_data is None else per_name(self.std_error_data),
+            "ci95": {report_name(n): [report_value(n, lo), report_value(n, hi)]
+                     for n, (lo, hi) in zip(self.names, self.ci95)},
             "effective_parameters": (None if self.effective_parameters is None
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
@@ -543,11 +544,10 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
     g = est.shape[0]
     t = float(stats.t.ppf(0.975, g - 1))
 
-    unit = report_value
     lin = result.identifiability.std_error
     return {"by": by, "groups": [str(x) for x in groups],
-            "std_error": {report_name(n): unit(n, s) for n, s in zip(result.names, se)},
-            "ci95": {report_name(n): [unit(n, x - t * s), unit(n, x + t * s)]
+            "std_error": {report_name(n): report_value(n, s) for n, s in zip(result.names, se)},
+            "ci95": {report_name(n): [report_value(n, x - t * s), report_value(n, x + t * s)]
                      for n, x, s in zip(result.names, result.x, se)},
             "ratio": {report_name(n): (float(s / v) if np.isfinite(v) and v > 0 else None)
                       for n, s, v in zip(result.names, se, lin)},
