@@ -1,15 +1,14 @@
 """Shared bank of named propellers, parameters and operating points for the tests."""
 
-import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import propmap as pm
+from propmap.core.units import RPM  # noqa: F401  (rad/s per rpm, for the tests)
 
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data"
-RPM = 2 * math.pi / 60  # rad/s per rpm
 
 
 @pytest.fixture(scope="session")

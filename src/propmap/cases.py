@@ -28,6 +28,7 @@ from importlib import resources
 
 import numpy as np
 
+from .core.units import RPM
 from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
 from .core.hover import HoverModel
@@ -252,7 +253,7 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
     c, R = published[name], load_propeller(name).radius
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
-    omega = np.repeat(rpm * math.pi / 30, adv.size)
+    omega = np.repeat(rpm * RPM, adv.size)
     adv, inc = np.tile(adv, rpm.size), np.tile(inc, rpm.size)
     mu, lam = adv * np.sin(inc), adv * np.cos(inc)
     q = 0.5 * air.rho * math.pi * R**2 * (omega * R) ** 2
@@ -412,7 +413,7 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
     published = gill2019_coefficients()
     names = list(published)
     measured = {q: np.array([_gill2019_published(published[n])[q] for n in names]) for q in GILL2019_QUANTITIES}
-    omega = GILL2019_RPM * math.pi / 30
+    omega = GILL2019_RPM * RPM
     props = {n: load_propeller(n) for n in names}
     grids = {n: gill2019_loads(n, (GILL2019_RPM,), air=air) for n in names}
     pred, metrics = {}, {}

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .core.units import RPM
 from ._c_templates import CUBIC_BODY, CUBIC_DECL, CUBIC_WEIGHTS, LINEAR_BODY, LINEAR_DECL, TEMPLATE, VEHICLE
 
 __all__ = ["c_header_text", "c_prefix", "write_c_header"]
@@ -348,8 +349,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
         uncertainty=unc,
         params_label=_comment(a.get("params_label", "") or a.get("section_model", "")),
-        citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] * 30 / np.pi,
-        rpm1=rm.omega[-1] * 30 / np.pi, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
+        citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] / RPM,
+        rpm1=rm.omega[-1] / RPM, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),
         eQ=_pct(a.get(check + "torque_max")), eD=_pct(a.get(check + "drag_max")),
         interpolation=rm.interpolation,

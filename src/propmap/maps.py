@@ -31,7 +31,8 @@ from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS,
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.provenance import source_digest
 from .io.uncertainty import model_uncertainty
-from .rotormap import RPM, MapLoads, MapWrench, RotorMap, check_map
+from .core.units import RPM
+from .rotormap import MapLoads, MapWrench, RotorMap, check_map
 
 __all__ = ["MAX_NODES", "MapLoads", "MapWrench", "RotorMap", "build_map", "check_map", "default_axes", "read_sidecar",
            "scheduler_client", "write_map", "write_sidecar"]

@@ -17,6 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .core.units import RPM
 from .core._interp import snap_incidence, snap_incidence_scalar
 from .core.geometry import has_bool, refuse_masked
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
@@ -24,7 +25,6 @@ from .io.mapfile import read_dataset
 
 __all__ = ["BAD_FLAGS", "INTERPOLATIONS", "MapLoads", "MapWrench", "POLICIES", "RPM", "RotorMap", "check_map"]
 
-RPM = 2 * math.pi / 60  # rad/s per rpm
 POLICIES = ("raise", "clip", "nan")
 #: :meth:`RotorMap.wrench` refuses a velocity component this large or larger [m/s], as the C header does
 #: (core.vector.VELOCITY_MAX, not imported: that module loads the solver, 0.3 s of a map's import)

@@ -14,10 +14,11 @@ from pathlib import Path
 
 import click
 
-#: the solver's range of the rotation rate, 0 < Omega <= 1e5 rad/s, in whole rpm (954,929,
-#: so that the bound printed is the bound checked); below RPM_MIN the propeller-convention
-#: coefficients (referred to n^2) overflow
-RPM_MAX = float(math.floor(1e5 * 60 / (2 * math.pi)))
+from ..core.units import RPM, RPM_MAX
+
+#: the solver's range of the rotation rate, 0 < Omega <= 1e5 rad/s, is RPM_MAX in whole rpm
+#: (954,929, so that the bound printed is the bound checked); below RPM_MIN the
+#: propeller-convention coefficients (referred to n^2) overflow
 RPM_MIN = 1.0
 AIRSPEED_MAX = 500.0
 
@@ -565,10 +566,10 @@ def _check_reynolds(prop, label: str, air, cov: dict, rpm_span) -> None:
         except (KeyError, ValueError):
             return
         set_air = entry.air if entry is not None else air
-        span = tuple(float(own.reynolds_75(cov[k] * math.pi / 30, set_air)) for k in ("rpm_min", "rpm_max"))
+        span = tuple(float(own.reynolds_75(cov[k] * RPM, set_air)) for k in ("rpm_min", "rpm_max"))
     else:
         return
-    lo, hi = (float(prop.reynolds_75(r * math.pi / 30, air)) for r in rpm_span)
+    lo, hi = (float(prop.reynolds_75(r * RPM, air)) for r in rpm_span)
     if lo < span[0] / 1.05 or hi > span[1] * 1.05:
         shown = f"{lo:.3g}" if lo == hi else f"{lo:.3g}-{hi:.3g}"
         warn(f"Reynolds number at 0.75 R {shown} in this air and on {prop.name}: the data behind {label} span "

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._common import InputError, PathArg
 from ._paths import check_out_dir
 
@@ -28,7 +29,7 @@ def envelope_table(prop, params, rpm: float):
     V = np.linspace(0.0, 20.0, 21)
     inc = np.array([0.0, 30.0, 60.0, 90.0])
     VV, BB = np.meshgrid(V, inc)
-    om = rpm * 2 * math.pi / 60
+    om = rpm * RPM
     r = rotor_loads(prop, params, om, VV, np.radians(BB))
     hover = HoverModel.from_model(prop, params, om)
     return pd.DataFrame({

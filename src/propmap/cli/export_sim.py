@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_section_match,
                       coverage_messages, echo_json, envelope_extremes, load_params, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
@@ -155,7 +156,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             from ..core.solver import SolverError
 
             try:
-                hover_rpm = hover_omega(veh, params, air=air) * 30 / math.pi
+                hover_rpm = hover_omega(veh, params, air=air) / RPM
             except (ValueError, SolverError) as exc:
                 raise InputError(f"--vehicle: its hover rpm: {exc}") from None
     if vehicle is not None and target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
@@ -164,7 +165,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         from ..vehicle import vehicle_wrench
 
         down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
-                                     np.full(len(veh.rotors), hover_rpm * math.pi / 30), air=air).body_force[0, 2])
+                                     np.full(len(veh.rotors), hover_rpm * RPM), air=air).body_force[0, 2])
         warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
                       f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
                       f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of the "

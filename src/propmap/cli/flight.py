@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._common import (InputError, PathArg, coverage_messages, envelope_extremes, load_params, parse_names,
                       resolve_air, with_air_options)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
@@ -522,7 +523,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     # each rotor's own set where the vehicle file names one (with its coverage), once per propeller and set
     for (name, set_label), prop in {(r.propeller.name, k): r.propeller for r, k in zip(veh.rotors, sets)}.items():
         ld = [w.loads[i] for i, r in enumerate(veh.rotors) if r.propeller.name == name and sets[i] == set_label]
-        rpm = np.concatenate([x.omega for x in ld]) * 30 / np.pi
+        rpm = np.concatenate([x.omega for x in ld]) / RPM
         coverage_messages(prop, set_label, air, *envelope_extremes(
             prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_point,
                       check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, resolve_air,
                       set_collective_deg, with_air_options, with_prop_options)
@@ -293,7 +294,7 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg
 
     from ..core.solver import rotor_loads
 
-    r = rotor_loads(prop, params, rpm * 2 * math.pi / 60, airspeed, np.radians(incidence_deg), air=air,
+    r = rotor_loads(prop, params, rpm * RPM, airspeed, np.radians(incidence_deg), air=air,
                     on_failure="flag", radial=False,
                     collective=None if collective_deg is None else np.radians(collective_deg))
     res = pd.DataFrame({k: getattr(r, k) for k in numeric_keys(params)})
@@ -432,7 +433,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     from ..core.solver import SolverError, rotor_loads
 
     try:
-        r = rotor_loads(propeller, params, rpm * 2 * math.pi / 60, airspeed, math.radians(incidence_deg), air=air,
+        r = rotor_loads(propeller, params, rpm * RPM, airspeed, math.radians(incidence_deg), air=air,
                         radial=False, collective=math.radians(collective_deg) if collective_deg else None)
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import click
 
+from ..core.units import RPM
 from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match,
                       coverage_messages, echo_json, envelope_extremes, given, load_params, option_group, parse_names,
                       resolve_air, set_collective_deg, with_air_options, with_prop_options)
@@ -266,7 +267,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             coverage_messages(propeller, data_label, air, *envelope_extremes(
                 propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
                 rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]))
-            ds = build_map(propeller, params, rpm * math.pi / 30, V, np.radians(inc), air=air, params_label=label,
+            ds = build_map(propeller, params, rpm * RPM, V, np.radians(inc), air=air, params_label=label,
                            citation=catalogue_citation(prop), scheduler=client, progress=True, n_check=check_points)
     elapsed = time.perf_counter() - t0
     if not all_props:  # (the build time is reported, not stored: a map built twice is the same file, a review)
@@ -366,7 +367,7 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
         for k, (name, p) in enumerate(tqdm(list(zip(names, props)), unit="prop", leave=False, disable=None)):
             params = default_params(name)
             air, label = params.air, params.label
-            ds = build_map(p, params, rpm * math.pi / 30, V, np.radians(inc), air=air_of(air), params_label=label,
+            ds = build_map(p, params, rpm * RPM, V, np.radians(inc), air=air_of(air), params_label=label,
                            citation=catalogue()[name].citation, scheduler=client, n_check=check_points)
             per_prop[name] = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in ds.attrs.items()}
             parts.append(Path(tmp) / f"{k:04d}.nc")

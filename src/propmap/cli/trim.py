@@ -6,6 +6,7 @@ import math
 
 import click
 
+from ..core.units import RPM
 from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
                       air_label, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
                       set_collective_deg, with_prop_options)
@@ -48,7 +49,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_re
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
-    omega, beta = rpm * 2 * math.pi / 60, math.radians(incidence_deg)
+    omega, beta = rpm * RPM, math.radians(incidence_deg)
     bounds = (math.radians(lo), math.radians(hi))
     try:
         res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .units import RPM
 from .airfoil import Air, SectionParams
 from .geometry import Propeller
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, model_air,
@@ -219,7 +220,7 @@ def trim_collective(
             peak_at = f": {T1[i] / top[i]:.3g} times the most it reaches; is the thrust in grams? It is in N"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
-            f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, "
+            f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, "
             f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
             f"[{(Tg[i] + T1[i]).min():.6g}, {top[i]:.6g}] N{peak_at}")
     x = np.full(n, np.nan)
@@ -235,7 +236,7 @@ def trim_collective(
             k = int(np.argmax(~res.success))
             i = int(np.flatnonzero(todo)[k])
             raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
-                            f"(omega={om1[i]:.6g} rad/s = {om1[i] * 30 / math.pi:.6g} rpm, thrust={T1[i]:.6g} N; "
+                            f"(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, thrust={T1[i]:.6g} N; "
                             f"scipy status {int(res.status[k])})")
         x[todo] = res.x
     ok = ~missing

@@ -45,12 +45,11 @@ import numpy as np
 
 from ..io.inputs import (MAX_FILE_BYTES, decode_input_text, header_separator, parse_number, read_input_bytes,
                          show_path)
-from ..io.readers import RPM_MAX
+from ..core.units import RPM_MAX
 
 __all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
 
 
-RPM = 2 * math.pi / 60
 #: valid ranges of the CSV columns: (low, high, low open, high open, unit)
 RANGES = {
     "rpm": (0.0, RPM_MAX, True, False, "rpm"),

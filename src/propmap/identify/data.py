@@ -18,6 +18,7 @@ import numbers
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry
 from ..io.inputs import show_path
@@ -346,12 +347,12 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                          "Prandtl-Glauert is not modelled" + (" - or is the rpm electrical?" if tip > 1 else ""))
     re75 = propeller.reynolds_75(data.omega, air)
     slow = [g for g in dict.fromkeys(data.group) if np.max(re75[data.group == g]) < RE75_FLOOR
-            and np.max(data.omega[data.group == g]) * 30 / math.pi < 1000]  # (a small propeller's low ESC step is no
+            and np.max(data.omega[data.group == g]) / RPM < 1000]  # (a small propeller's low ESC step is no
     # slip: rev/s read as rpm is 60 times slow, below 1000 "rpm" for any propeller up to 60,000 rpm; a review)
     if slow:  # (an rpm column in rev/s keeps CT and CP: the load check cannot see it), per run: one such run among
         at = np.isin(data.group, slow)  # sweeps at the right rpm was fitted too
         warnings_.append(f"the chord Reynolds number at 0.75 R is {np.min(re75[at]):.3g}-{np.max(re75[at]):.3g} "
-                         f"({np.min(data.omega[at]) * 30 / math.pi:.4g}-{np.max(data.omega[at]) * 30 / math.pi:.4g} "
+                         f"({np.min(data.omega[at]) / RPM:.4g}-{np.max(data.omega[at]) / RPM:.4g} "
                          f"rpm) in {', '.join(map(str, slow[:3]))}{' ...' if len(slow) > 3 else ''}, below "
                          f"{RE75_FLOOR:g} (the catalogue's lowest data: 3,600): is the rotation speed in rev/s (Hz) "
                          "read as rpm? Name its unit; UIUC files give rpm")
@@ -436,7 +437,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
     # a rate in rpm read as rad/s (an omega column holding rpm): 9.55 times too fast, said before the pole pairs
-    rpm_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * math.pi / 30).values()),
+    rpm_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * RPM).values()),
                    default=math.inf)
     if rpm_miss < math.log(1.6):
         causes.append("a rotation rate in rpm read as rad/s (an 'omega' column holding rpm: name it rpm)")

@@ -26,6 +26,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
@@ -65,7 +66,7 @@ def _load_norms(data: LoadData, propeller, keys, air: Air):
         if gaps.size:  # (NaN: not measured there; it was called 'zero everywhere or not finite')
             i = int(gaps[0])
             raise ValueError(f"measured {k} is NaN (not measured) at {gaps.size} point(s), the first #{i} "
-                             f"({data.group[i]}, {data.omega[i] * 30 / math.pi:.5g} rpm, {data.airspeed[i]:.4g} m/s): "
+                             f"({data.group[i]}, {data.omega[i] / RPM:.5g} rpm, {data.airspeed[i]:.4g} m/s): "
                              "give the data without those points (LoadData.subset), or fit the other quantities "
                              "(quantities=)")
         if not (np.isfinite(s) and s > 0):
@@ -400,7 +401,7 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     rows = _fitted_rows(data, keys)
     r = np.asarray(result.residuals, float)[:sum(int(m.sum()) for m in rows.values())]
     moving = (data.airspeed > STATIC_AIRSPEED) & bool(np.any(data.incidence > 0))  # (axial data: no angle said)
-    labels = [f"{k}, {data.group[j]}, {data.omega[j] * 30 / math.pi:.0f} rpm, {data.airspeed[j]:.3g} m/s"
+    labels = [f"{k}, {data.group[j]}, {data.omega[j] / RPM:.0f} rpm, {data.airspeed[j]:.3g} m/s"
               + (f" at {math.degrees(data.incidence[j]):.3g} deg" if moving[j] else "")
               for k in keys for j in np.flatnonzero(rows[k])]
     rms = float(np.sqrt(np.mean(r**2))) if r.size else 0.0

@@ -11,7 +11,8 @@ import numpy as np
 
 from ..vehicle import Vehicle, rotor_geometry
 from ._checks import first_length, float_array
-from .csvfile import _ROTOR_RE, RANGES, RPM, DataError, _Csv, _short
+from ..core.units import RPM
+from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv, _short
 
 __all__ = ["LevelFlightData", "read_level_flight", "body_to_world", "rotor_kinematics"]
 

@@ -15,7 +15,8 @@ import warnings
 import numpy as np
 
 from ..core.air import R_AIR, Air
-from .csvfile import RANGES, RPM, DataError, _Csv
+from ..core.units import RPM
+from .csvfile import RANGES, DataError, _Csv
 from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 
 

@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.units import RPM
+
 __all__ = ["ColumnMap", "map_columns", "map_operating_columns", "stand_points", "UNITS", "ROTATION_COLUMNS",
            "OPERATING"]
 
@@ -48,7 +50,7 @@ UNITS = {
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
                "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
-    "rotation": {"rpm": 1.0, "rads": 60.0 / (2 * math.pi), "hz": 60.0, "revs": 60.0, "rps": 60.0},
+    "rotation": {"rpm": 1.0, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},

@@ -37,13 +37,13 @@ import re
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core.geometry import _real
 
 __all__ = ["DIMS", "LOADS", "SIDE_LOADS", "map_loads", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX",
            "check_propeller", "check_attributes", "check_dataset", "check_integer", "map_model"]
 
 
-RPM = 2 * math.pi / 60  # rad/s per rpm
 DIMS = ("rpm", "airspeed", "incidence_deg")
 #: the loads a map interpolates, the derived variables and the node flags
 LOADS = ("thrust", "drag", "torque", "rolling_moment")

@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.units import RPM_MAX
 from .geometry_files import MM_FAMILIES, GeometryFileError, read_apc_pe0, read_geometry, read_uiuc_geometry
 from .inputs import (MAX_FILE_BYTES, MAX_SMALL_FILE_BYTES, _check_column, _clip, _read_table, _read_text,
                      decode_input_text, parse_number, read_input_bytes, show_path)
@@ -56,7 +57,6 @@ class MeasurementFileError(ValueError):
 
 
 #: the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
-RPM_MAX = 954929.0
 
 
 @dataclass(frozen=True)

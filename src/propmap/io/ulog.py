@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import builtins
 import io
-import math
 import re
 import threading
 
 import numpy as np
+
+from ..core.units import RPM
 
 _FRD_TO_FLU = np.array([1.0, -1.0, -1.0])
 
@@ -280,7 +281,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     w = at(tw, rates) * _FRD_TO_FLU
     # attitude as (x, y, z, w) of FLU body -> ENU-like z-up world: FRD->NED conjugated by the flips
     quat = np.column_stack([q_i[:, 1], -q_i[:, 2], -q_i[:, 3], q_i[:, 0]])
-    omega = at(tm, rpm) * (2 * math.pi / 60)
+    omega = at(tm, rpm) * RPM
     return dict(t=t - t[0], angular_velocity=w,
                 angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
                 specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,

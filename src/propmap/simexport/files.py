@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.units import RPM
 from .. import __version__
 from .fit import LOADS, SimExport
 from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS
@@ -181,7 +182,7 @@ def _quad_params(res: SimExport, vehicle, label: str, airframe_label: str = "") 
              "    'tau_m': 0.005,  # s: NOT in the vehicle file (motor_time_constant = 0); RotorPy needs one > 0, "
              "set yours"),
             "    'rotor_speed_min': 0.0,  # rad/s",
-            f"    'rotor_speed_max': {rpm_max * math.pi / 30!r},  # rad/s, the envelope's highest rpm",
+            f"    'rotor_speed_max': {rpm_max * RPM!r},  # rad/s, the envelope's highest rpm",
             "    'motor_noise_std': 0.0,  # rad/s",
             "}"]
     return out

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.units import RPM
 from .. import __version__
 from ..core.airfoil import Air
 from ..core.geometry import _real
@@ -170,11 +171,11 @@ def default_envelope(propeller) -> Envelope:
 
 def _samples(propeller, params, air, envelope: Envelope, n: int, seed: int):
     rng = np.random.default_rng(seed)
-    om = rng.uniform(*envelope.rpm, n) * math.pi / 30
+    om = rng.uniform(*envelope.rpm, n) * RPM
     V = rng.uniform(*envelope.airspeed, n)
     b = np.radians(rng.uniform(*envelope.incidence_deg, n))
     full = rotor_loads(propeller, params, om, V, b, air=air, on_failure="flag")
-    om_h = envelope.hover * math.pi / 30
+    om_h = envelope.hover * RPM
     static = rotor_loads(propeller, params, np.append(om, om_h), 0.0, 0.0, air=air)
     ok = full.converged
     if ok.sum() < MIN_POINTS:
@@ -357,7 +358,7 @@ def _errors(target: str, coefficients: dict, s) -> dict:
                             "multiple roots")
     out["points_flagged"] = int(np.sum(s["flagged"]))
     Th, _, Qh, _ = predict(target, coefficients, s["omega_h"], 0.0, 0.0)
-    out["hover"] = {"rpm": s["omega_h"] * 30 / math.pi, "thrust": s["T_h"], "torque": s["Q_h"],
+    out["hover"] = {"rpm": s["omega_h"] / RPM, "thrust": s["T_h"], "torque": s["Q_h"],
                     "thrust_export": float(Th), "torque_export": float(Qh),
                     "thrust_error": _rel(float(Th), s["T_h"]), "torque_error": _rel(float(Qh), s["Q_h"])}
     T0, _, Q0, _ = predict(target, coefficients, s["omega"], 0.0, 0.0)
@@ -372,7 +373,7 @@ def _edgewise_trend(propeller, params, air, envelope: Envelope) -> dict:
     forward flight, where no measurement of the propeller arbitrates (docs/simulators.md)."""
     from ..io.calibration import generic_params
 
-    om, V = envelope.hover * math.pi / 30, float(envelope.airspeed[1])
+    om, V = envelope.hover * RPM, float(envelope.airspeed[1])
     out = {"rpm": envelope.hover, "airspeed": V}
     for key, p in (("this_set", params), ("generic", generic_params())):
         r = rotor_loads(propeller, p, np.array([om, om]), np.array([0.0, V]), math.pi / 2, air=air,

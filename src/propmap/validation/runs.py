@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
@@ -222,7 +223,7 @@ def validate(entry: CatalogueEntry, propeller: Propeller, params: SectionParams,
     D = propeller.diameter
     runs = []
     for s in statics:
-        om = s.rpm * 2 * math.pi / 60
+        om = s.rpm * RPM
         r = rotor_loads(propeller, params, om, 0.0, 0.0, air=air, discretization=discretization)
         runs.append(SweepComparison("static", s.run_id, s.rpm, np.zeros_like(s.rpm), s.CT, s.CP,
                                     r.CT, r.CP, np.full_like(s.CT, CT_h), np.full_like(s.CP, CP_h), s.source))

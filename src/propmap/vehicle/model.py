@@ -35,6 +35,7 @@ from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
+from ..core.units import RPM
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.geometry import has_bool, refuse_masked
@@ -414,7 +415,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     if mach > TIP_MACH_WARN:  # (the search turned the solver's tip check off: the answer is checked here)
         import warnings
 
-        warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this hover (Omega {omega:.4g} rad/s, {omega * 30 / np.pi:.0f} "
+        warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this hover (Omega {omega:.4g} rad/s, {omega / RPM:.0f} "
                       f"rpm): is the vehicle's mass {vehicle.mass:g} kg in kg, and its rotors the ones it flies?",
                       UserWarning, stacklevel=2)
     return omega
