@@ -178,3 +178,20 @@ def test_no_function_takes_20_arguments():
     worst.sort(reverse=True)
     assert len(worst) > 500  # every module was read
     assert worst[0][0] < 20, worst[:3]
+
+
+def test_rpm_is_converted_in_one_place():
+    """Every rpm <-> rad/s conversion goes through propmap.core.units.RPM (docs/nomenclature.md):
+    23 inline forms (pi / 30, 2 pi / 60, 30 / pi) once differed in the last bit, so a map's rpm
+    axis came back 6000.000000000001."""
+    import re
+
+    from propmap.core.units import RPM, RPM_MAX
+
+    assert RPM == 2 * 3.141592653589793 / 60 and RPM_MAX == 954929.0
+    assert RPM_MAX * RPM <= 1e5 < (RPM_MAX + 1) * RPM  # the solver's Omega bound in whole rpm
+    inline = re.compile(r"((math|np)\.pi\s*/\s*30|2\s*\*\s*(math|np)\.pi\s*/\s*60|30(\.0)?\s*/\s*(math|np)\.pi|"
+                        r"60(\.0)?\s*/\s*\(2\s*\*\s*(math|np)\.pi\))")
+    found = [f"{p.relative_to(ROOT)}:{i}" for p in ROOT.rglob("*.py") if p.name != "units.py"
+             for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1) if inline.search(line)]
+    assert not found, found
