@@ -176,3 +176,21 @@ def test_validate_all_on_two_propellers(capsys, tmp_path):
 def test_validate_bad_arguments_exit_2(capsys, argv, match):
     code, _, err = run(capsys, *argv)
     assert code == 2 and match in err and err.count("\n") == 1
+
+
+def test_validate_all_table_stays_aligned_with_long_names(capsys):
+    """A name longer than the first column (gwsdd_2.5x0.8_spec2, 19 characters) shifted its row's
+    cells one place right of the header's (seen in `validate --all`, 2026-11-27)."""
+    from propmap.cli.validate_all import print_report
+
+    cell = {"rms_ct": 0.0123, "rms_cp": 0.0456}
+    rows = [{"propeller": name, "static": cell, "paper_table_i": cell, "hover_model": cell}
+            for name in ("apce_8x6", "gwsdd_2.5x0.8_spec2")]
+    stat = {"median": 0.01, "p90": 0.02, "worst": 0.03, "n_propellers": 2}
+    print_report({"propellers": rows, "summary": {"static": {"ct": stat, "cp": stat}}}, {})
+    lines = capsys.readouterr().out.splitlines()
+    head, first, second = lines[1], lines[2], lines[3]
+    assert second.startswith("gwsdd_2.5x0.8_spec2 ")
+    ends = [len(line) for line in (head, first, second)]
+    assert ends[0] == ends[1] == ends[2], (head, first, second)
+    assert first.index("1.2%") == second.index("1.2%") and head.index("static CT") + 9 == first.index("1.2%") + 4

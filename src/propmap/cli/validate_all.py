@@ -241,10 +241,11 @@ def print_report(cat: dict, cases: dict, incidence: dict | None = None) -> None:
                "Every protocol's generic set and prior were derived without the propeller's family "
                "(leave-one-family-out):")
     head = "".join(f"{p + ' CT':>11}{p + ' CP':>11}" for p in protos)
-    click.echo(f"{'propeller':<16}{head}{'paper CT':>10}{'hover CT':>10}")
+    wide = max([16] + [len(r["propeller"]) + 1 for r in cat["propellers"]])  # the columns stay aligned
+    click.echo(f"{'propeller':<{wide}}{head}{'paper CT':>10}{'hover CT':>10}")
     for r in cat["propellers"]:
         cells = "".join(f"{_pct(r[p]['rms_ct']):>11}{_pct(r[p]['rms_cp']):>11}" for p in protos)
-        click.echo(f"{r['propeller']:<16}{cells}{_pct(r['paper_table_i']['rms_ct']):>10}"
+        click.echo(f"{r['propeller']:<{wide}}{cells}{_pct(r['paper_table_i']['rms_ct']):>10}"
                    f"{_pct(r['hover_model']['rms_ct']):>10}")
     click.echo("\nsummary over the propellers (median / 90th percentile / worst):")
     texts = {**PROTOCOL_TEXT, "paper_table_i": "the paper's Table I APC parameters, no fit, the sweeps",
