@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
+from propmap.core.units import RPM
 
 from propmap.identify import DataError, FitOptions, LoadData, fit_loads, read_loads
 from propmap.identify.data import sanity_check
@@ -432,17 +433,121 @@ def test_a_step_is_split_where_the_airspeed_changes_at_one_throttle(tmp_path, tr
     np.testing.assert_allclose(np.sort(data.airspeed), [0, 0, 5, 5, 10, 10])
 
 
-def test_a_jittering_esc_signal_still_gives_one_point_per_step(tmp_path, truth_params):
+@pytest.mark.parametrize("jitter", [0.8, 2.0])
+def test_a_jittering_esc_signal_still_gives_one_point_per_step(tmp_path, truth_params, jitter):
+    """A readback jittering by +-2 us, the steps' tolerance, was split where a row sat at the
+    jitter's far side from the step's first row (a thrust-stand export audit, 2026-11-27: 16
+    steps read as 104): whole microseconds here, as a stand logs them."""
     rng = np.random.default_rng(1)
     prop = pm.load_propeller("apce_8x6")
     rows = []
     for esc, rpm in zip(range(1200, 1900, 100), range(3000, 10000, 1000)):
-        r = pm.rotor_loads(prop, truth_params, rpm * np.pi / 30, 0.0, 0.0)
+        r = pm.rotor_loads(prop, truth_params, rpm * RPM, 0.0, 0.0)
         for k in range(20):
-            rows.append((esc + rng.uniform(-0.8, 0.8), rpm, float(r.thrust), float(r.torque)))
+            e = esc + rng.uniform(-jitter, jitter)
+            rows.append((round(e) if jitter >= 1 else e, rpm, float(r.thrust), float(r.torque)))
     data = read_loads(_rows_csv(tmp_path / "j.csv", ["ESC signal (µs)", "rpm", "thrust", "torque"], rows))
     assert data.n == 7
-    np.testing.assert_allclose(data.omega * 30 / np.pi, range(3000, 10000, 1000))
+    np.testing.assert_allclose(data.omega / RPM, range(3000, 10000, 1000))
+
+
+def test_the_rows_of_a_ramp_between_steps_are_no_points(tmp_path, truth_params):
+    """A steps test whose signal ramps between the steps (4 rows of 10 us each): each ramp row
+    was a one-row step of its own, fitted with the motor still accelerating (a thrust-stand
+    export audit: 76 points from 16 steps, the fitted torque +7%); they are transients now."""
+    prop = pm.load_propeller("apce_8x6")
+    rows = []
+    for k, (esc, rpm) in enumerate(zip(range(1200, 1900, 50), range(3000, 10000, 500))):
+        if k:
+            rows += [(esc - 50 + 10 * j, rpm - 500 + 100 * j, 0.0, 0.0) for j in range(1, 5)]  # (loads off: not fitted)
+        r = pm.rotor_loads(prop, truth_params, rpm * RPM, 0.0, 0.0)
+        rows += [(esc, rpm, float(r.thrust), float(r.torque))] * 12
+    data = read_loads(_rows_csv(tmp_path / "r.csv", ["ESC signal (µs)", "rpm", "thrust", "torque"], rows))
+    assert data.n == 14
+    np.testing.assert_allclose(data.omega / RPM, range(3000, 10000, 500))
+    assert data.group[2] == "step3_1300us"
+    # an export of one row per step, already averaged, keeps every row (its steps are all that short)
+    one = read_loads(_rows_csv(tmp_path / "one.csv", ["ESC signal (µs)", "rpm", "thrust", "torque"], rows[::12][:9]))
+    assert one.n == 9 and any("each of the 9 rows is an ESC step" in n for n in one.notes), one.notes
+
+
+@pytest.mark.parametrize("header", ["PWM (µs)", "pulse_width_us", "Pulse width (us)"])
+def test_a_pulse_width_by_other_names_averages_the_steps(tmp_path, truth_params, header):
+    """'PWM (µs)' was not read as the ESC signal: all 380 raw samples of a steps test were fitted
+    as points, without a word (a thrust-stand export audit, 2026-11-27)."""
+    path = tmp_path / "s.csv"
+    truth = write_steps_export(path, params=truth_params, steps=STEPS[:6])
+    path.write_text(path.read_text(encoding="utf-8-sig").replace("ESC signal (µs)", header, 1), encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == 6
+    np.testing.assert_allclose(data.omega / RPM, truth[:, 0], rtol=2e-3)
+    # without any signal column the rows are points, and the note says why they are not averaged
+    text = path.read_text(encoding="utf-8").splitlines()
+    col = text[0].split(",").index(header)
+    path.write_text("\n".join(",".join(c for j, c in enumerate(line.split(",")) if j != col) for line in text))
+    raw = read_loads(path)
+    assert raw.n > 100 and any("no ESC signal column" in n for n in raw.notes), raw.notes
+
+
+def test_a_torque_cells_zero_offset_is_noted_as_the_thrusts(tmp_path, truth_params):
+    """The stopped motor's rows read the stand's zero: a thrust offset was noted, a torque offset
+    (+0.003 N m: the fitted torque +22% at 3000 rpm in the audit) fitted without a word."""
+    path = tmp_path / "s.csv"
+    write_steps_export(path, series="1585", params=truth_params, steps=(1000, *STEPS[:6]), reaction_torque=False)
+    lines = path.read_text(encoding="utf-8-sig").splitlines()
+    col = lines[0].split(",").index("Torque (N·m)")
+    out = [lines[0]] + [",".join(f"{float(c) + 0.003:.6g}" if j == col else c for j, c in enumerate(line.split(",")))
+                        for line in lines[1:]]
+    path.write_text("\n".join(out) + "\n", encoding="utf-8")
+    notes = read_loads(path).notes
+    assert any("their torque reads 0.003 N m in the median" in n and "tare it first" in n for n in notes), notes
+    assert not any("their thrust reads" in n for n in notes), notes
+
+
+def test_a_nan_speed_or_a_c_runtimes_nan_load_is_a_missing_reading(tmp_path, truth_params):
+    """'NaN' in a speed column refused the file where the same column left empty was read (the
+    other speed used); MSVC's '-nan(ind)' in a load column was refused as not a number."""
+    path = tmp_path / "s.csv"
+    truth = write_steps_export(path, params=truth_params, steps=STEPS[:6], optical=False)
+    lines = path.read_text(encoding="utf-8-sig").splitlines()
+    head = lines[0].split(",")
+    opt, thr = head.index("Motor Optical Speed (RPM)"), head.index("Thrust (gf)")
+    rows = [line.split(",") for line in lines[1:]]
+    for k, r in enumerate(rows):
+        r[opt] = "NaN"
+        if k % 10 == 5:
+            r[thr] = "-nan(ind)" if k % 20 == 5 else "1.#QNAN"
+    path.write_text("\n".join([lines[0]] + [",".join(r) for r in rows]) + "\n", encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == 6
+    np.testing.assert_allclose(data.omega / RPM, truth[:, 0], rtol=2e-3)
+    assert any("from 'Motor Electrical Speed (RPM)'" in n for n in data.notes), data.notes
+    assert any("'Thrust (gf)' empty or NaN" in n for n in data.notes), data.notes
+
+
+@pytest.mark.parametrize("header, values, form", [("ESC signal (µs)", (0.3, 0.9), "fraction"),
+                                                  ("Throttle (%)", (0.3, 0.9), "fraction"),
+                                                  ("ESC signal (µs)", (30.0, 90.0), "in percent")])
+def test_a_throttle_under_another_forms_unit_is_read_by_its_values(tmp_path, header, values, form):
+    """0.3-0.9 under '(µs)' was one 2-us step that never settled, and under '(%)' the 0.2% tolerance
+    merged the steps (a thrust-stand export audit): their values decide, with a note."""
+    lo, hi = values
+    throttle = np.linspace(lo, hi, 7)
+    path = tmp_path / "t.csv"
+    path.write_text(f"{header},rpm,thrust\n" + "".join(f"{e:.6g},{3000 + 5000 * (e - lo) / (hi - lo):.6g},1.0\n"
+                                                       for e in throttle for _ in range(8)))
+    data = read_loads(path)
+    assert data.n == 7
+    assert any(f"read as a throttle {form}" in n and f"reach only {hi:g}" in n for n in data.notes), data.notes
+
+
+def test_a_constant_esc_column_is_refused_with_its_cause(tmp_path):
+    path = tmp_path / "c.csv"
+    path.write_text("ESC signal (µs),rpm,thrust\n" + "".join(f"0,{3000 + 500 * k},{0.5 + 0.1 * k}\n"
+                                                              for k in range(8) for _ in range(6)))
+    with pytest.raises(DataError, match=r"'ESC signal \(µs\)' stays within 0 us over the whole log .* rotation speed "
+                                        r"runs 3000-6500 rpm: it is not the signal that set the steps"):
+        read_loads(path)
 
 
 @pytest.mark.parametrize("header, match", [

@@ -108,6 +108,15 @@ _ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
 
 #: cells that mark a missing value (no units-row hint for them)
 MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--")
+#: the not-a-number forms C runtimes print (glibc '-nan', MSVC '-nan(ind)', '1.#QNAN', '1.#IND')
+_C_NAN = re.compile(r"nan(\([a-z0-9_]*\))?|1\.#(qnan|snan|ind)0*", re.ASCII)
+
+
+def missing_mark(cell: str) -> bool:
+    """A cell that marks a missing value: empty, one of MISSING_MARKS or a C runtime's NaN
+    (``-nan``, ``-nan(ind)``, ``1.#QNAN``), in any case and sign."""
+    low = cell.strip().lower().lstrip("+-")
+    return low in ("", *MISSING_MARKS) or _C_NAN.fullmatch(low) is not None
 
 
 def _zero_or_empty(cell: str) -> bool:
@@ -215,8 +224,11 @@ class _Csv:
         empty cell of a column in ``optional`` is NaN instead of an error, and so is every
         empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty or 0:
         a stopped motor's row, e.g. a stand export's last line after the test ended. A cell of a
-        column in ``gaps`` that is empty or a missing-value mark (``NaN``, ``n/a``, ``-``, ...;
-        MISSING_MARKS) is NaN too: a sensor's dropout in a sampled log, which the caller drops."""
+        column in ``gaps`` or ``optional`` that is empty or a missing-value mark (``NaN``,
+        ``n/a``, ``-``, ``-nan(ind)``, ...; :func:`missing_mark`) is NaN too: a sensor's dropout in
+        a sampled log, which the caller drops, or an optional column's missing reading (a stand's
+        optical speed ``NaN`` in every row was refused while the same column left empty was read:
+        a thrust-stand export audit, 2026-11-27)."""
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -238,8 +250,7 @@ class _Csv:
                                          for c in stop)
             for c, j in cols:
                 cell = cells[j].strip() if j < len(cells) else ""
-                if (not cell and (c in optional or stopped)) or (c in gaps and cell.lower().lstrip("+-") in
-                                                                  ("", *MISSING_MARKS)):  # (C's printf: -nan)
+                if (not cell and stopped) or ((c in gaps or c in optional) and missing_mark(cell)):
                     nums[c].append(math.nan)
                     continue
                 if not cell:
@@ -250,7 +261,7 @@ class _Csv:
                 try:
                     x = parse_number(number)
                 except ValueError:
-                    unit_like = re.search(r"[a-zA-Z%]", cell) and cell.lower() not in MISSING_MARKS
+                    unit_like = re.search(r"[a-zA-Z%]", cell) and not missing_mark(cell)
                     hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
                             "'thrust (N)', and remove the row)" if not len(lines) and unit_like else "")
                     raise self.error(f"column {_short(self.header[j])}: {_short(cell)} is not a number{hint}",

@@ -175,18 +175,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         if "thrust" in v:  # a speed of 0 with a thrust: the reading is missing, not the motor stopped
             t = np.abs(np.nan_to_num(v["thrust"]))
             running = int(np.sum(stopped & (t > 0.05 * max(float(t.max(initial=0.0)), 1e-300))))
-        tare = ""
-        if "thrust" in v and not running:  # (a stand's zero: its thrust at rest, which propmap does not subtract)
-            thrust = np.asarray(v["thrust"], float)
-            rest, moving = thrust[stopped], np.abs(thrust[~stopped])
-            rest, moving = rest[np.isfinite(rest)], moving[np.isfinite(moving)]
-            zero = float(np.median(rest)) if rest.size else 0.0
-            low = float(np.percentile(moving, 10)) if moving.size else 0.0  # (the lowest steps: a tare hurts them most)
-            scatter = float(np.std(rest)) if rest.size > 1 else 0.0  # (a tared stand's rest rows scatter about 0)
-            if low > 0 and abs(zero) > 0.01 * low and abs(zero) > 2 * scatter:
-                tare = (f"; their thrust reads {zero:.4g} N in the median ({abs(zero) / low:.1%} of the lowest running "
-                        "steps'), a stand's zero offset? propmap fits the thrust as written: tare it first")
-        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty) skipped: a stopped motor"
+        # a stand's zero: its load at rest, which propmap does not subtract (the torque's too since 2026-11-27: a
+        # thrust-stand export audit, +0.003 N m on every row moved the fitted torque by +22%)
+        tare = "" if running else "".join(_tare(v[q], stopped, q, unit) for q, unit in (("thrust", "N"),
+                                                                                       ("torque", "N m")) if q in v)
+        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty or NaN) skipped: a stopped motor"
                      + (f"; {running} of them with a thrust above 5% of the largest: a speed reading missing while "
                         "the motor ran (those points are lost)" if running else "") + tare)
         keep = ~stopped
@@ -220,6 +213,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
         if n and np.all(np.isnan(v["rpm"])):
             raise DataError(f"{what}: {p}: no rotation speed in any row")
+        _one_signal(esc, v, group, form, cm.column("esc"), f"{what}: {p}")
         v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
         if not group.size:
             raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
@@ -232,7 +226,12 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         n = group.size
     else:
         v.pop("esc", None)
-        v.pop("time", None)
+        if v.pop("time", None) is not None and "esc" not in cm.columns and n > 40:
+            # (a stand log whose signal column went unread, 'PWM (µs)', had its 380 raw samples fitted as points with
+            # no word: a thrust-stand export audit, 2026-11-27)
+            notes.append(f"each of the {n} rows is a point: the file has a time column ({cm.column('time')!r}) but no "
+                         "ESC signal column, by which a stand's steps test is averaged (name it 'ESC signal (µs)' or "
+                         "'Throttle (%)' for that)")
     # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
     if "thrust" in v and n:
         t = v["thrust"]
@@ -275,6 +274,40 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
 #: an optical probe's gaps are filled from the electrical speed where the two agree within this (median ratio)
 OPTICAL_ELECTRICAL_TOL = 0.03
+
+
+def _one_signal(esc: np.ndarray, v: dict, group, form: str, name: str, where: str) -> None:
+    """Refuse a steps log whose ESC signal stays within one step's tolerance while the rotation
+    speed runs over a range, at one operating condition (a constant column, or a throttle
+    fraction under a pulse width's unit: the log was one "step" that never settled, and the
+    error said so, not why: a thrust-stand export audit, 2026-11-27)."""
+    from .stand import CONDITION_TOL, ESC_TOL
+
+    span = float(np.nanmax(esc) - np.nanmin(esc)) if esc.size else 0.0
+    rpm = v["rpm"][np.isfinite(v["rpm"])]
+    moving = any(np.ptp(v[q]) > tol for q, tol in CONDITION_TOL.items() if q in v and v[q].size)
+    if group is None and not moving and rpm.size and span <= 2 * ESC_TOL[form] and rpm.max() > 1.1 * rpm.min():
+        unit = {"us": " us", "pct": "%", "fraction": ""}[form]
+        raise DataError(f"{where}: the ESC signal {name!r} stays within {span:g}{unit} over the whole log (one "
+                        f"step's tolerance) while the rotation speed runs {rpm.min():.0f}-{rpm.max():.0f} rpm: it is "
+                        "not the signal that set the steps (a constant column, or a unit its name does not say); "
+                        "name its unit, or remove the column to fit each row as a point")
+
+
+def _tare(load: np.ndarray, stopped: np.ndarray, name: str, unit: str) -> str:
+    """A note where a load reads a zero offset at rest: its median over the stopped motor's rows
+    above 1% of the lowest running steps' (the 10th percentile of its magnitude there) and twice
+    the rest rows' scatter (a tared stand's rest rows scatter about 0); else ''."""
+    load = np.asarray(load, float)
+    rest, moving = load[stopped], np.abs(load[~stopped])
+    rest, moving = rest[np.isfinite(rest)], moving[np.isfinite(moving)]
+    zero = float(np.median(rest)) if rest.size else 0.0
+    low = float(np.percentile(moving, 10)) if moving.size else 0.0  # (the lowest steps: a tare hurts them most)
+    scatter = float(np.std(rest)) if rest.size > 1 else 0.0
+    if low > 0 and abs(zero) > 0.01 * low and abs(zero) > 2 * scatter:
+        return (f"; their {name} reads {zero:.4g} {unit} in the median ({abs(zero) / low:.1%} of the lowest running "
+                f"steps'), a stand's zero offset? propmap fits the {name} as written: tare it first")
+    return ""
 
 
 def _skip_dropouts(v: dict, lines: np.ndarray, texts: dict, keys: list, cm, what: str, p: str, notes: list):

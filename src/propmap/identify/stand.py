@@ -75,11 +75,17 @@ _NAMES = {
     "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
     # a pulse width [us] or a throttle [%, or a fraction]: its unit is read by esc_form
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
+    # (a stand or logger naming the pulse width otherwise: 'PWM (µs)' was left unread and every raw sample fitted as a
+    # point, a thrust-stand export audit, 2026-11-27)
+    **{name: ("esc", None) for name in ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width",
+                                        "throttle signal")},
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
     # the air density a stand or tunnel logs (its median is the fit's air where no air option is given)
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
     "density": ("air_density", "density"), "rho": ("air_density", "density"),
 }
+#: the names of an ESC signal (a pulse width or a throttle), which take an ESC unit after an underscore (esc_us, pwm_us)
+_ESC_NAMES = frozenset(k for k, (q, _) in _NAMES.items() if q == "esc")
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
 _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
@@ -148,7 +154,7 @@ def _split(name: str) -> tuple[str, str | None]:
         return low, None
     if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
         return low.replace("_", " "), None
-    if "_" in low and low.rsplit("_", 1)[0].replace("_", " ") in ("throttle", "esc", "esc signal") and _token(
+    if "_" in low and low.rsplit("_", 1)[0].replace("_", " ") in _ESC_NAMES and _token(
             low.rsplit("_", 1)[1]) in _ESC_UNITS:
         return low.rsplit("_", 1)[0].replace("_", " "), low.rsplit("_", 1)[1]  # throttle_pct, esc_us, esc_signal_us
     if "_" in low:
@@ -426,7 +432,7 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
     return out
 
 
-#: a new step starts where the ESC signal moves more than this from the step's first row [us]
+#: a new step starts where the ESC signal moves more than this from the step's level [us]
 #: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
 #: its tolerance (a tunnel run at one throttle and several airspeeds)
 ESC_TOL_US = 2.0
@@ -440,8 +446,10 @@ _ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct",
 def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | None]:
     """The form of an ESC-signal or throttle column: ("us" | "pct" | "fraction", note or None).
 
-    By its unit where it gives one (us, µs, microseconds; %, pct, percent; a percentage whose
-    values reach 500 is a pulse width, with a note), else by its values: at most 1 a fraction,
+    By its unit where it gives one (us, µs, microseconds; %, pct, percent), unless the values
+    contradict it (a note says so): a percentage whose values reach 500 is a pulse width, one
+    whose values stay within (0, 1] a fraction, and a pulse width whose values stay within
+    (0, 100] a throttle (by the rule below; an ESC's pulse is 1000-2000 us). Else by its values: at most 1 a fraction,
     at most 100 a percentage, else a pulse width in us (the note says which was taken, and names
     a unit it does not know, e.g. ``(PWM)`` or ``[0-1]``)."""
     tok = None if unit is None else _token(unit)
@@ -450,6 +458,13 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
         if _ESC_UNITS[tok] == "pct" and top >= 500.0:  # (a pulse width under a '%' header: a user-level audit)
             return "us", (f"{name!r}: read as a pulse width in us, not percent: its values reach {top:g} (a "
                           "percentage stays near 0-100)")
+        if _ESC_UNITS[tok] == "pct" and 0 < top <= 1.0:  # (0.15-0.90 under '%': a thrust-stand export audit)
+            return "fraction", (f"{name!r}: read as a throttle fraction (0-1), not percent: its values reach only "
+                                f"{top:g}")
+        if _ESC_UNITS[tok] == "us" and 0 < top <= 100.0:  # (no ESC takes a pulse of 100 us: a throttle under 'us')
+            form = "fraction" if top <= 1.0 else "pct"
+            return form, (f"{name!r}: read as a throttle {'fraction (0-1)' if form == 'fraction' else 'in percent'}, "
+                          f"not a pulse width in us: its values reach only {top:g} (an ESC's pulse is 1000-2000 us)")
         return _ESC_UNITS[tok], None
     form = "fraction" if top <= 1.0 else ("pct" if top <= 100.0 else "us")
     what = {"fraction": "a throttle fraction (0-1)", "pct": "a throttle in percent", "us": "a pulse width in us"}[form]
@@ -459,31 +474,56 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
 
 
 def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:
-    """Row index where each step starts (ESC signal within ``tol`` of the step's first row,
-    CONDITION_TOL, one label)."""
+    """Row index where each step starts: the ESC signal more than ``tol`` from the mean of the
+    step's rows so far (a readback jittering by +-tol about the step's level stays one step; from
+    the step's first row, as until 2026-11-27, one that sat at the jitter's edge split it), an
+    operating condition more than CONDITION_TOL from the step's first row, or another label."""
     starts = [0]
-    ref = 0
+    ref, total, count = 0, float(esc[0]) if esc.size else 0.0, 1
     cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
     for i in range(1, esc.size):
-        if (abs(esc[i] - esc[ref]) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
+        if (abs(esc[i] - total / count) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
                 or (labels is not None and labels[i] != labels[ref])):
             starts.append(i)
-            ref = i
+            ref, total, count = i, 0.0, 0
+        total += float(esc[i])
+        count += 1
     return np.array(starts)
+
+
+def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: float) -> list:
+    """Neighbouring steps (row ranges [a, b)) joined where their medians agree within ``2 tol``
+    (the ESC signal: two pieces of one step whose readback jitters by +-tol) and CONDITION_TOL
+    (the operating conditions) and their label is one: a +-2 us jitter split 16 steps into 104
+    (a thrust-stand export audit, 2026-11-27; 16 again since). Steps closer than 2 tol are one."""
+    merged = [steps[0]] if steps else []
+    for a, b in steps[1:]:
+        pa, pb = merged[-1]
+        if ((labels is None or labels[a] == labels[pa]) and abs(np.median(esc[a:b]) - np.median(esc[pa:pb])) <= 2 * tol
+                and all(abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= CONDITION_TOL[q]
+                        for q, x in conditions.items())):
+            merged[-1] = (pa, b)
+        else:
+            merged.append((a, b))
+    return merged
 
 
 def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
                  steady: float = 0.02, labels=None, form: str = "us"):
     """One averaged point per ESC step of a thrust-stand "steps" test.
 
-    Consecutive rows with one ESC signal (within ESC_TOL[form] of the step's first row) and one
+    Consecutive rows with one ESC signal (within ESC_TOL[form] of the mean of the step's rows
+    before them) and one
     operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
-    ``labels``) form a step. Of each step the first ``settle``
+    ``labels``) form a step; neighbouring steps whose medians agree within twice those
+    tolerances are one (a jittering readback). Of each step the first ``settle``
     of its duration (its rows, without a time column) is dropped, the motor settling, and of
     the rest the rows whose rotation speed is within ``steady`` of the step's median;
     what remains is averaged. A step where fewer than half of the rows after settling are
     steady (a spin-down, a step too short for the motor) gives no point. A step of one or
-    two rows (an export that already averaged them) is taken whole.
+    two rows is taken whole where most steps are that short (an export that already averaged
+    them) and dropped, its rows counted as transients, where most rows are in steps of five rows
+    or more (a sampled log: the signal ramping between two steps).
 
     Parameters
     ----------
@@ -507,15 +547,26 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
         ``step<k>_<esc>us``, the number of rows dropped as transients, and the labels of
         the steps dropped as unsteady.
     """
-    starts = _step_starts(esc, {q: values[q] for q in CONDITION_TOL if q in values}, labels, ESC_TOL[form])
-    stops = np.concatenate([starts[1:], [esc.size]])
+    conditions = {q: np.asarray(values[q], float) for q in CONDITION_TOL if q in values}
+    starts = _step_starts(esc, conditions, labels, ESC_TOL[form])
+    steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form])
+    # a sampled log's steps hold many rows; a step of one or two rows between them is the signal ramping from one
+    # step to the next (each of its rows a "step" of its own, with the motor's inertial torque: a thrust-stand
+    # export audit, 2026-11-27), not a point; where most rows are in steps that short, the export averaged them
+    sizes = np.array([b - a for a, b in steps])
+    sampled = sizes[sizes >= 5].sum() >= 0.5 * sizes.sum()
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
-    for k, (a, b) in enumerate(zip(starts, stops)):
+    k = 0
+    for a, b in steps:
+        if sampled and b - a <= 2:
+            dropped += b - a
+            continue
+        k += 1
         idx = np.arange(a, b)
         m = np.median(esc[a:b])
         level = {"us": f"{m:.0f}us", "pct": f"{m:.4g}pct", "fraction": f"{m:.4g}"}[form]
-        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k + 1}_{level}"
+        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k}_{level}"
         if idx.size > 2:
             if time is not None and time[b - 1] > time[a]:
                 keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]
