@@ -956,3 +956,46 @@ def test_utf8_with_a_stray_byte_is_not_read_as_windows_1252(tmp_path, truth_para
     (tmp_path / "s.csv").write_bytes(raw[:cut] + b"\xe9" + raw[cut:])
     with pytest.raises(DataError, match="byte 0xe9 .* not UTF-8"):
         read_loads(tmp_path / "s.csv")
+
+
+@pytest.mark.parametrize("header, sep", [
+    (["RPM", "Thrust, N", "Torque, N*m"], ";"),
+    (["Speed (rev/min)", "Thrust (N)", "Torque (NÂ·m)"], ","),
+    (["rpm", "thrust_N", "thrust_std", "torque_Nm", "torque_err"], ","),
+])
+def test_more_ways_of_writing_a_name_and_unit_are_read(tmp_path, header, sep):
+    """Names from a thrust-stand export audit (2026-11-27), each refused before: a unit after a
+    comma in a ';'-separated file (split at its commas: the tie of 2 commas and 2 semicolons went
+    to the comma), 'rev/min', UTF-8 read as Windows-1252 and saved so ('NÂ·m'), a statistic's
+    column beside its quantity (an unknown unit 'std')."""
+    rpm = np.arange(3000.0, 9000.0, 1000.0)
+    rows = [(r, 1e-7 * r**2, 0.0123, 1.5e-9 * r**2, 1e-4)[:len(header)] for r in rpm]
+    if len(header) == 3:
+        rows = [(r, 1e-7 * r**2, 1.5e-9 * r**2) for r in rpm]
+    path = tmp_path / "h.csv"
+    path.write_text("\n".join([sep.join(header)] + [sep.join(f"{v:.6g}" for v in r) for r in rows]) + "\n",
+                    encoding="utf-8")
+    data = read_loads(path)
+    np.testing.assert_allclose(data.omega / RPM, rpm)
+    np.testing.assert_allclose(data.measured["thrust"], 1e-7 * rpm**2, rtol=1e-5)
+    np.testing.assert_allclose(data.measured["torque"], 1.5e-9 * rpm**2, rtol=1e-5)
+    from propmap.identify.stand import UNITS
+
+    assert UNITS["speed"]["kts"] == pytest.approx(0.514444, rel=1e-6)  # (airspeed_kts: knots)
+
+
+@pytest.mark.parametrize("text, match", [
+    ("RCbenchmark Steps Test\nTime (s),ESC signal (µs),Thrust (N),Motor Optical Speed (RPM)\n0,1000,0,0\n",
+     r"found 'RCbenchmark Steps Test'; lines above the header \(a title, the test's settings\)\? remove them"),
+    ("rpm,thrust,App message,\n3000,0.5,ok,\n4000,0.9,Warning: current 30 A, check ESC\n",
+     r"column 4 has no name in the header but holds 'check ESC' \(text with a ',' in a field without quotes\?"),
+    ("RPM,Thrust (gf),\n1975,55,27\n",
+     r"holds '27' \(a number with a decimal comma in a comma-separated file\?"),
+])
+def test_a_preamble_or_an_unquoted_text_is_named_as_such(tmp_path, text, match):
+    """A title line above the header was named only as the column found; text with a comma in an
+    unquoted message cell was called a number with a decimal comma (an audit, 2026-11-27)."""
+    path = tmp_path / "p.csv"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(DataError, match=match):
+        read_loads(path)

@@ -88,7 +88,10 @@ def unnamed_value_message(j: int, cell: str, sep: str, after_named: bool = True)
     comma, in a file whose separator is the comma (a user-level audit: ``RPM,Thrust (gf),`` with
     ``1975,55,27`` read 55 gf)."""
     why = (" (a number with a decimal comma in a comma-separated file? save it with decimal points, or "
-           "with ';' as the separator)" if sep == "," and after_named else "")
+           "with ';' as the separator)" if sep == "," and after_named and re.fullmatch(r"[0-9]+", cell) else
+           # (text: 'Warning: current 30 A, check ESC' in an unquoted message cell was called a decimal comma)
+           f" (text with a '{sep}' in a field without quotes? quote the field, or remove the column)"
+           if re.search(r"[A-Za-z]", cell) else "")
     return f"column {j + 1} has no name in the header but holds {_short(cell)}{why}: name the column or remove it"
 
 

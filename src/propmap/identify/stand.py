@@ -17,14 +17,16 @@ Units (a quantity without a unit is SI, rpm for rotation speed):
 thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
 torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
                 (lb·in), ozf·in (oz·in, oz-in), lbf·ft (lb·ft)
-rotation speed  rpm, rad/s, Hz (rev/s, rps)
-airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, knots), ft/s (fps)
+rotation speed  rpm (rev/min, r/min), rad/s, Hz (rev/s, rps)
+airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps)
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 ==============  ===================================================================
 
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
-1 ozf = lbf / 16; 1 in = 0.0254 m.
+1 ozf = lbf / 16; 1 in = 0.0254 m. A unit follows the name in brackets, after a comma
+(``Thrust, N``) or after an underscore (``thrust_kgf``); a statistic's column beside its
+quantity (``thrust_std``, ``torque_err``, ``rpm_max``) is not read.
 """
 
 from __future__ import annotations
@@ -50,9 +52,9 @@ UNITS = {
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
                "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
-    "rotation": {"rpm": 1.0, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
+    "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
-              "kt": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
+              "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
                 "lbft³": 16.018463373960138},
@@ -86,6 +88,9 @@ _NAMES = {
 }
 #: the names of an ESC signal (a pulse width or a throttle), which take an ESC unit after an underscore (esc_us, pwm_us)
 _ESC_NAMES = frozenset(k for k, (q, _) in _NAMES.items() if q == "esc")
+#: suffixes of a column that gives a statistic of a quantity, not the quantity (thrust_std): not read
+_STATISTICS = frozenset(("std", "sd", "stdev", "stddev", "sigma", "err", "error", "unc", "uncertainty", "var",
+                         "variance", "min", "max", "count", "ci", "se", "sem"))
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
 _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
@@ -138,13 +143,15 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
 
 
 def _token(unit: str) -> str:
-    """A unit written any usual way, as a lookup token: 'N·m' -> 'nm', 'rad/s' -> 'rads', 'µs' -> 'us'."""
-    return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("µ", "u").replace("μ", "u"))
+    """A unit written any usual way, as a lookup token: 'N·m' -> 'nm', 'rad/s' -> 'rads', 'µs' -> 'us';
+    also UTF-8 read as Windows-1252 and saved so ('NÂ·m', 'Â°', 'Âµs': an 'Â' before each of those
+    characters)."""
+    return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("â", "").replace("µ", "u").replace("μ", "u"))
 
 
 def _split(name: str) -> tuple[str, str | None]:
     """(quantity text, unit text or None) of a column name: ``Thrust (kgf)``, ``thrust [N]``,
-    ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one."""
+    ``Thrust, N``, ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one."""
     name = name.strip()
     m = re.fullmatch(r"(.*?)\s*[(\[]([^()\[\]]*)[)\]]\s*", name)
     if m:
@@ -152,6 +159,8 @@ def _split(name: str) -> tuple[str, str | None]:
     low = name.lower()
     if low in _NAMES:
         return low, None
+    if "," in low and low.rsplit(",", 1)[0].strip() in _NAMES:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
+        return low.rsplit(",", 1)[0].strip(), name.rsplit(",", 1)[1].strip()
     if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
         return low.replace("_", " "), None
     if "_" in low and low.rsplit("_", 1)[0].replace("_", " ") in _ESC_NAMES and _token(
@@ -170,6 +179,9 @@ def _split(name: str) -> tuple[str, str | None]:
             stem = k.replace(" ", "_") + "_"
             if low.startswith(stem) and _NAMES[k][1] is not None and _token(low[len(stem):]) in UNITS[_NAMES[k][1]]:
                 return k, low[len(stem):]
+        # a statistic of a quantity beside it (thrust_std, torque_err): not read (it was refused as an unknown unit)
+        if base in _NAMES and unit in _STATISTICS:
+            return low, None
         # a known quantity with a unit suffix propmap does not know (torque_Ncm): returned
         # as such, so that the unit is refused rather than the column silently ignored
         if base in _NAMES and _NAMES[base][1] is not None:
@@ -291,6 +303,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
                 "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
                 if pair else "")
+        if not pair and len([n for n in names if n.strip()]) <= 2:  # ('RCbenchmark Steps Test' above the header)
+            hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
+                    "are the file's first line")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
     split = {name: _split(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them

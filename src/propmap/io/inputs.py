@@ -221,10 +221,12 @@ def header_separator(line: str) -> str:
     -------
     str
         The most frequent of ``','``, ``';'`` (spreadsheets in locales with a decimal comma) and a
-        tab; a tie (a one-column header included) gives the comma.
+        tab; a tie of ``';'`` and ``','`` gives ``';'`` (names such as ``Thrust, N`` hold a comma,
+        few a semicolon: ``RPM;Thrust, N;Torque, N*m`` was split at its commas, an audit of
+        thrust-stand exports, 2026-11-27), any other tie (a one-column header included) the comma.
     """
     counts = {c: line.count(c) for c in SEPARATORS}
-    return max(SEPARATORS, key=lambda c: (counts[c], c == ","))
+    return max(SEPARATORS, key=lambda c: (counts[c], c == ";" and counts[c] > 0, c == ","))
 
 
 def parse_number(text: str) -> float:
