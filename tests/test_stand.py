@@ -375,6 +375,13 @@ def test_a_wrong_blade_or_pole_pair_count_inside_the_refused_range_is_warned_of(
     assert "--pole-pairs 7 would give" in w
     assert not [w for w in sanity_check(read_loads(path, rpm_source="electrical", pole_pairs=7), two, pole_pairs=7)
                 if "blade count" in w]
+    # a thrust in lbf under a kgf name, 2.2 times (a thrust-stand export audit, 2026-11-27: the warning named the blade
+    # count and the diameter only)
+    lbf = tmp_path / "lbf.csv"
+    write_steps_export(lbf, params=truth_params, steps=STEPS, thrust_unit="lbf")
+    lbf.write_text(lbf.read_text(encoding="utf-8-sig").replace("Thrust (lbf)", "Thrust (kgf)"), encoding="utf-8")
+    (w,) = [w for w in sanity_check(read_loads(lbf), two) if "blade count" in w]
+    assert "the measured thrust is 2.03 times" in w and "a thrust in lbf under a kgf name (name its unit lbf)" in w
 
 
 def test_the_cli_refuses_wrong_units_in_one_line(tmp_path, truth_params):

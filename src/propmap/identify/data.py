@@ -23,6 +23,7 @@ from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry
 from ..io.inputs import show_path
 from .csvfile import DataError, RANGES
+from .stand import G0, LBF
 from .level_flight import LevelFlightData, body_to_world, read_level_flight, rotor_kinematics
 from .load_data import STATIC_AIRSPEED, LoadData, data_air
 from .loads_csv import read_loads
@@ -175,6 +176,7 @@ _UNIT_SLIPS = [
     (9.80665e-3, 1.0, "thrust in gf read as N (name the column thrust_gf or 'Thrust (gf)')"),
     (4.4482216152605, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
     (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
+    (1 / 4.4482216152605, 1.0, "thrust in N declared as lbf"),
     (1e-3, 1.0, "thrust in gf declared as kgf (g as kg)"),
     (4.4482216152605, 0.112984829, "thrust in lbf and torque in lbf in read as N and N m"),
     (1.0, 1e3, "torque in N m declared as N mm"),
@@ -234,7 +236,9 @@ DRAG_SIGN_REFUSED = 0.95
 def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, where) -> list[str]:
     """What would bring the median thrust and torque ratios within 1.15x: one blade more or
     fewer (the model solved again), another pole-pair count (with ``pole_pairs``, the count the
-    data's electrical rpm was divided by); e.g. ["3 blades would give 0.98/1.02x"] (thrust/torque)."""
+    data's electrical rpm was divided by), a thrust in lbf under a kgf name or the reverse (2.2
+    times, inside the refused range: a thrust-stand export audit, 2026-11-27, found it warned of
+    as a blade count or diameter); e.g. ["3 blades would give 0.98/1.02x"] (thrust/torque)."""
     from dataclasses import replace
 
     keys = [k for k in ("thrust", "torque") if k in ratio]
@@ -246,6 +250,12 @@ def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, wh
         return "/".join(f"{rat[k]:.2f}" for k in keys) + "x"
 
     found = []
+    for factor, why in ((LBF / G0, "a thrust in lbf under a kgf name (name its unit lbf)"),
+                        (G0 / LBF, "a thrust in kgf under an lbf name (name its unit kgf)")):
+        if "thrust" in ratio:
+            rat = {**ratio, "thrust": ratio["thrust"] * factor}
+            if miss(rat) < math.log(1.15):
+                found.append(f"{why} would give {shown(rat)}")
     for b in (propeller.n_blades - 1, propeller.n_blades + 1):
         if b >= 1:
             rat = ratios(data.omega, r=loads_at(data.omega, prop=replace(propeller, n_blades=b)), where=where)
