@@ -301,6 +301,7 @@ def test_a_plain_csv_with_unit_suffixes_is_converted(tmp_path, truth_params):
     (1.0, 1e3, "N mm read as N m"),
     (1.0, 1 / 0.0980665, "kgf cm read as N m"),
     (1 / 4.4482216152605, 1 / 0.112984829, "thrust in lbf and torque in lbf in read as N and N m"),
+    (4.4482216152605, 1.0, "thrust in N declared as lbf"),
 ])
 def test_wrong_units_are_refused_with_the_cause(tmp_path, truth_params, thrust_factor, torque_factor, cause):
     """Thrust and torque written in another unit under the plain (SI) column names. Both in
