@@ -1007,3 +1007,55 @@ def test_a_preamble_or_an_unquoted_text_is_named_as_such(tmp_path, text, match):
     path.write_text(text, encoding="utf-8")
     with pytest.raises(DataError, match=match):
         read_loads(path)
+
+
+def _a(values):
+    return np.array(values, float)
+
+
+def test_stand_points_settles_averages_and_drops_as_documented():
+    """The step averaging's rules, each with the numbers it gives (a mutation audit, 2026-11-27:
+    none of them was held by a test): without a time column the first half of a step's rows
+    is dropped as the motor settling; the steady rows are averaged (a mean, not a median); a step
+    whose rows after settling are mostly off the median speed gives no point; a new airspeed is
+    a new step at one signal; a step of two rows in an export of such steps is taken whole; the
+    label gives the step's median signal."""
+    from propmap.identify.stand import stand_points
+
+    settling = {"rpm": _a([5900, 5920, 5950, 5980] + [6000] * 6), "thrust": _a([2.8, 2.85, 2.9, 2.95] + [3.0] * 6)}
+    v, group, dropped, unsteady = stand_points(settling, _a([1500] * 10), None)
+    assert v["thrust"].tolist() == [3.0] and dropped == 5 and unsteady == () and group.tolist() == ["step1_1500us"]
+    v, _, dropped, _ = stand_points({"rpm": _a([6000] * 8), "thrust": _a([0, 0, 0, 0, 3, 3, 3, 3.6])},
+                                    _a([1500] * 8), None)
+    assert v["thrust"] == pytest.approx([3.15]) and dropped == 4  # the mean of the last four rows
+    spin_up = {"rpm": _a([0] * 10 + [4500, 4700, 5000, 5000, 5000, 5000, 5300, 5500, 5700, 5900]),
+               "thrust": _a([13.5] * 20)}
+    v, group, dropped, unsteady = stand_points(spin_up, _a([1500] * 20), None)
+    assert group.size == 0 and dropped == 20 and unsteady == ("step1_1500us",)
+    tunnel = {"rpm": _a([6000] * 12), "thrust": _a([3] * 12), "airspeed": _a([0] * 4 + [2] * 4 + [4] * 4)}
+    v, group, _, _ = stand_points(tunnel, _a([1500] * 12), None)
+    assert group.tolist() == ["step1_1500us", "step2_1500us", "step3_1500us"] and v["airspeed"].tolist() == [0, 2, 4]
+    v, group, dropped, _ = stand_points({"rpm": _a([3000, 3050, 5000, 5040]), "thrust": _a([1, 1.1, 2, 2.2])},
+                                        _a([1200, 1200, 1400, 1400]), None)
+    assert v["rpm"].tolist() == [3025, 5020] and v["thrust"] == pytest.approx([1.05, 2.1]) and dropped == 0
+    _, group, _, _ = stand_points({"rpm": _a([6000] * 6), "thrust": _a([3] * 6)},
+                                  _a([1149, 1150, 1150, 1151, 1150, 1150]), None)
+    assert group.tolist() == ["step1_1150us"]  # (the median signal, not the first row's 1149)
+
+
+def test_a_throttle_reaching_one_is_a_fraction_and_close_percents_stay_points(tmp_path):
+    """A throttle fraction that reaches 1.0 is a fraction (not percent), and a table of points at
+    throttles 0.04% apart (within 0.05 of the step tolerance of each other) keeps every row as
+    its point (mutation audit survivors, 2026-11-27)."""
+    from propmap.identify.stand import esc_form
+
+    assert esc_form("throttle", None, _a([0, 0.5, 1.0]))[0] == "fraction"
+    frac = tmp_path / "f.csv"
+    frac.write_text("rpm,thrust,throttle\n" + "".join(f"{1000 + 1000 * k},{0.5 + 0.2 * k:.6g},{0.1 * (k + 1):.6g}\n"
+                                                     for k in range(10)))
+    assert read_loads(frac).group.tolist() == [f"step{k + 1}_{0.1 * (k + 1):.4g}" for k in range(10)]
+    close = tmp_path / "c.csv"
+    close.write_text("rpm,thrust,Throttle (%)\n" + "".join(f"{3000 + 500 * k},{0.5 + 0.2 * k:.6g},{50 + 0.04 * k:.2f}\n"
+                                                           for k in range(8)))
+    data = read_loads(close)
+    assert data.n == 8 and set(data.group) == {"all"}
