@@ -452,3 +452,76 @@ def test_text_outputs_name_their_encoding(tmp_path):
                          capture_output=True, text=True, timeout=600)
     assert run.returncode == 0 and run.stdout.strip().endswith("written"), run.stderr[-3000:]
     assert (tmp_path / "t.txt").read_bytes() == "\u00b5".encode("utf-8")
+
+
+# ---- a mutation audit's survivors (2026-11-27): the map file's round trips, the check's normalisation ----
+
+def test_a_map_without_its_si_coordinates_converts_its_axes(tiny):
+    """A map holding only its rpm and degree axes (omega and incidence dropped, as a hand-made or
+    older file) is evaluated at those axes converted to rad/s and rad, the loads the same."""
+    rm, bare = RotorMap(tiny), RotorMap(tiny.drop_vars(["omega", "incidence"]))
+    np.testing.assert_allclose(bare.omega, tiny["rpm"].values * RPM, rtol=1e-15)
+    np.testing.assert_allclose(bare.incidence, np.radians(tiny["incidence_deg"].values), rtol=1e-15)
+    assert bare.omega[0] == pytest.approx(3000 * math.pi / 30, rel=1e-15)
+    for point in ((600.0, 5.0, 0.3), (850.0, 2.5, 2.0)):
+        assert bare.loads(*point).thrust == pytest.approx(rm.loads(*point).thrust, rel=1e-12)
+        assert bare.loads(*point).torque == pytest.approx(rm.loads(*point).torque, rel=1e-12)
+
+
+def test_a_map_of_several_propellers_gives_each_its_own_attributes(tmp_path, tiny):
+    """Each propeller's own metadata (per_prop_json) wins over the file-wide attributes of the
+    same name (its citation, title); a name of MAX_NAME_CHARS bytes is written and read back,
+    one byte more is refused at writing."""
+    import json
+
+    import xarray as xr
+
+    from propmap.io.mapfile import MAX_NAME_CHARS, read_dataset
+
+    def several(names):
+        ds = xr.concat([tiny, tiny], dim="prop").assign_coords(prop=("prop", names))
+        per = {n: {**{k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in tiny.attrs.items()},
+                   "citation": f"cite-{k}", "title": f"propmap rotor map of {n}"} for k, n in enumerate(names)}
+        return ds.assign_attrs({"title": "propmap rotor maps of the catalogue", "citation": "cite-0; cite-1",
+                                "per_prop_json": json.dumps(per, default=float)})
+
+    long = "p" * MAX_NAME_CHARS
+    path = tmp_path / "two.nc"
+    write_map(several([long, "b"]), path, sidecar=False)
+    b = read_dataset(path, "b")
+    assert b.attrs["citation"] == "cite-1" and b.attrs["title"] == "propmap rotor map of b"
+    assert "per_prop_json" not in b.attrs and b.attrs["diameter_m"] == tiny.attrs["diameter_m"]
+    assert read_dataset(path, long).attrs["citation"] == "cite-0"
+    assert RotorMap.open(path, prop="b").loads(600.0, 5.0, 0.3).thrust == pytest.approx(
+        RotorMap(tiny).loads(600.0, 5.0, 0.3).thrust, rel=1e-12)
+    with pytest.raises(ValueError, match=f"is {MAX_NAME_CHARS + 1} bytes long"):
+        write_map(several([long + "p", "b"]), tmp_path / "long.nc", sidecar=False)
+
+
+def test_a_maps_csv_has_one_row_per_node_and_the_documented_columns(tmp_path, tiny):
+    """The CSV export: the axes in rpm and degrees (not the SI coordinates omega and incidence
+    as extra columns), the loads, the derived coefficients and the flags as true/false."""
+    import pandas as pd
+
+    path = tmp_path / "m.csv"
+    write_map(tiny, path, "csv", sidecar=False)
+    table = pd.read_csv(path)
+    assert list(table.columns) == ["rpm", "airspeed", "incidence_deg", "thrust", "drag", "torque", "rolling_moment",
+                                   "power", "CT", "CP", "converged", "vortex_ring", "multiple_roots", "reverse_flow"]
+    assert len(table) == tiny["thrust"].size and set(table["converged"]) <= {True, False}
+
+
+def test_the_maps_check_normalises_by_the_rows_around_each_point():
+    """check_map's errors, regression values (2026-11-27; the rows around each point set the
+    in-plane loads' norm, and the rms is a root mean square, not a mean: a mutation audit found
+    neither held): apce_8x6's calibrated set on a 4 x 4 x 7 map, 300 points, seed 1."""
+    from propmap.rotormap import check_map
+
+    p = pm.default_params("apce_8x6")
+    ds = build_map(pm.load_propeller("apce_8x6"), p, np.geomspace(3000, 9000, 4) * RPM, np.linspace(0, 15, 4),
+                   np.radians(np.linspace(0, 180, 7)), air=p.air, params_label=p.label, n_check=0)
+    c = check_map(ds, 300, seed=1)
+    assert c["check_linear_drag_max"] == pytest.approx(0.039047, rel=1e-4)
+    assert c["check_linear_rolling_moment_max"] == pytest.approx(0.051538, rel=1e-4)
+    assert c["check_linear_thrust_rms"] == pytest.approx(0.024186, rel=1e-4)
+    assert c["check_linear_thrust_max"] == pytest.approx(0.103672, rel=1e-4)

@@ -304,7 +304,9 @@ def _select(ds, prop, where: str):
                          f"with an object for {prop!r}")
     attrs = {k: (np.asarray(v) if isinstance(v, list) else v) for k, v in per_prop[prop].items()}
     kept = {k: v for k, v in ds.attrs.items() if k != "per_prop_json"}
-    return ds.sel(prop=prop, drop=True).assign_attrs({**kept, **attrs})
+    out = ds.sel(prop=prop, drop=True)
+    out.attrs = {**kept, **attrs}  # (assign_attrs updates: the JSON of every propeller stayed on each one's map)
+    return out
 
 
 # ---------------------------------------------------------------- writing
