@@ -310,3 +310,30 @@ def test_level_flight_reads_the_roll_and_moves_the_hubs_with_the_body_rates(tmp_
     np.testing.assert_allclose(vel[0, k], [-a[1], a[0], 0.0], atol=1e-12)
     # with airspeed, the body sees the world's x velocity rotated by the roll (no pitch: along body x)
     np.testing.assert_allclose(vel[5, k] - vel[0, k], [5.0, 0.0, 0.0], atol=1e-12)
+
+
+def test_body_lift_is_the_papers_section_iii_a_form():
+    """Sec. III-A's body lift 0.5 rho V^2 C_L^body S_body at the body z axis' angle to the flight
+    direction (a mutation audit, 2026-11-27: the fit's verdict was tested, never the value). With
+    a sharp blend far below alpha0_body C_L is cl1_body a, a = asin(sin(pitch) cos(roll)) (body z
+    up, pitch nose-up positive); regression values at M = 30 labelled as such."""
+    import dataclasses
+
+    from propmap.identify.level_flight import LevelFlightData
+    from propmap.identify.level_flight_fit import body_lift
+
+    veh = dataclasses.replace(pm.read_vehicle("quadrotor"), body_area=0.02)
+    air = pm.Air()
+    V = np.array([5.0, 10.0, 15.0])
+
+    def data(pitch_deg, roll_deg):
+        return LevelFlightData(V, np.radians(pitch_deg), np.radians(roll_deg), np.full((3, len(veh.rotors)), 1000.0),
+                               np.zeros((3, 3)))
+
+    theta, phi = np.radians([-5.0, -10.0, -8.0]), np.radians([0.0, 5.0, 20.0])
+    linear = 0.5 * air.rho * V**2 * 0.02 * 2.0 * np.arcsin(np.sin(theta) * np.cos(phi))
+    np.testing.assert_allclose(body_lift((2.0, 1.0, math.radians(30)), data([-5, -10, -8], [0, 5, 20]), veh, 200.0,
+                                         air), linear, rtol=1e-12)
+    # (regression, 2026-11-27: the blend towards cl2_body sin a cos a beyond alpha0_body = 15 deg)
+    np.testing.assert_allclose(body_lift((2.0, 1.0, math.radians(15)), data([-5, -10, -20], [0, 5, 0]), veh, 30.0, air),
+                               [-0.05330777, -0.41146566, -0.95644067], rtol=1e-7)
