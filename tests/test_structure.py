@@ -182,8 +182,8 @@ def test_no_function_takes_20_arguments():
 
 def test_rpm_is_converted_in_one_place():
     """Every rpm <-> rad/s conversion goes through propmap.core.units.RPM (docs/nomenclature.md):
-    23 inline forms (pi / 30, 2 pi / 60, 30 / pi) once differed in the last bit, so a map's rpm
-    axis came back 6000.000000000001."""
+    23 inline forms (x * pi / 30, x * 2 * pi / 60, x * 30 / pi), evaluated in different orders,
+    could differ from x * RPM in the last bit."""
     import re
 
     from propmap.core.units import RPM, RPM_MAX

@@ -100,7 +100,8 @@ def _points_reader(path: Path, chunksize: int):
     except UnicodeDecodeError as exc:
         raise InputError(f"{where}, line 1: byte 0x{exc.object[exc.start]:02x} is not UTF-8; save the file as "
                          "UTF-8 CSV") from None
-    sep = header_separator(first)
+    sep = header_separator(first, next((r.decode("utf-8-sig", "replace") for r in re.split(rb"\r\n|\r|\n", head)[1:9]
+                                        if r.strip()), None))
     names = [h.strip() for h in next(csv.reader([first], delimiter=sep), [])]
     if not any(names):
         raise InputError(f"{where}: the first line is empty; it must name the columns")

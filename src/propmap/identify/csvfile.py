@@ -158,8 +158,10 @@ class _Csv:
             raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
         self._raw = raw
         # ',', ';' (spreadsheets in locales with a decimal comma) or a tab, from the header line
-        head = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=1)[0]
-        self.sep = header_separator(head.decode("utf-8", "replace"))
+        # (and its first data row: a separator that occurs as often in both)
+        lines = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=8)[:8]
+        head, *rows = [r.decode("utf-8", "replace") for r in lines if r.strip()][:2] or [""]
+        self.sep = header_separator(head, rows[0] if rows else None)
         self.header_line = 0
         self.columns: list[str] = []
         for line, cells in self._rows():

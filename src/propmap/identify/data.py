@@ -250,9 +250,12 @@ def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, wh
         return "/".join(f"{rat[k]:.2f}" for k in keys) + "x"
 
     found = []
-    for factor, why in ((LBF / G0, "a thrust in lbf under a kgf name (name its unit lbf)"),
-                        (G0 / LBF, "a thrust in kgf under an lbf name (name its unit kgf)")):
-        if "thrust" in ratio:
+    # (only where the thrust column was declared in the unit: a 'Thrust (N)' 2.2 times off was told of lbf under kgf)
+    declared = {u: any(f"converted to N (x {f:.6g})" in n and "thrust" in n.lower() for n in data.notes)
+                for u, f in (("kgf", G0), ("lbf", LBF))}
+    for factor, why, unit in ((LBF / G0, "a thrust in lbf under a kgf name (name its unit lbf)", "kgf"),
+                              (G0 / LBF, "a thrust in kgf under an lbf name (name its unit kgf)", "lbf")):
+        if "thrust" in ratio and declared[unit]:
             rat = {**ratio, "thrust": ratio["thrust"] * factor}
             if miss(rat) < math.log(1.15):
                 found.append(f"{why} would give {shown(rat)}")

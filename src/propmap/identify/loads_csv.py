@@ -219,7 +219,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
                             "half of the step)")
         notes.append((f"each of the {n} rows is an ESC step (an export already averaged" if group.size == n else
-                      f"{n} rows averaged into {group.size} ESC steps ({dropped} settling or unsteady rows dropped")
+                      f"{n} rows averaged into {group.size} ESC steps ({dropped} settling, ramp or unsteady rows "
+                      "dropped")
                      + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
                      + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
         lines = np.zeros(group.size, dtype=np.int64)

@@ -45,6 +45,9 @@ __all__ = ["ColumnMap", "map_columns", "map_operating_columns", "stand_points", 
 G0 = 9.80665
 LBF = 4.4482216152605
 INCH = 0.0254
+#: other names of the ESC signal, read where no 'ESC signal' or 'throttle' column is ('PWM (µs)' was left unread and
+#: every raw sample of a steps test fitted as a point: a thrust-stand export audit, 2026-11-27)
+_ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width", "throttle signal")
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
@@ -77,10 +80,7 @@ _NAMES = {
     "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
     # a pulse width [us] or a throttle [%, or a fraction]: its unit is read by esc_form
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
-    # (a stand or logger naming the pulse width otherwise: 'PWM (µs)' was left unread and every raw sample fitted as a
-    # point, a thrust-stand export audit, 2026-11-27)
-    **{name: ("esc", None) for name in ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width",
-                                        "throttle signal")},
+    **{name: ("esc", None) for name in _ESC_ALIASES},
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
     # the air density a stand or tunnel logs (its median is the fit's air where no air option is given)
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
@@ -283,7 +283,14 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             continue
         quantity, kind = _NAMES[base]
         factor = _factor(name, base, unit, error)
-        if quantity in cm.columns:
+        if quantity == "esc" and quantity in cm.columns and (base in _ESC_ALIASES) != (
+                _split(cm.columns[quantity][0])[0] in _ESC_ALIASES):  # (an alias gives way to the signal's own name)
+            alias = name if base in _ESC_ALIASES else cm.columns[quantity][0]
+            cm.notes.append(f"column {alias!r} is not read: the ESC signal is read from "
+                            f"{(cm.columns[quantity][0] if alias == name else name)!r}")
+            if base in _ESC_ALIASES:
+                continue
+        elif quantity in cm.columns:
             raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
@@ -303,7 +310,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
                 "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
                 if pair else "")
-        if not pair and len([n for n in names if n.strip()]) <= 2:  # ('RCbenchmark Steps Test' above the header)
+        if not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
             hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
                     "are the file's first line")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
@@ -447,7 +454,7 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
     return out
 
 
-#: a new step starts where the ESC signal moves more than this from the step's level [us]
+#: a new step starts where the ESC signal moves more than this from the step's first row [us]
 #: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
 #: its tolerance (a tunnel run at one throttle and several airspeeds)
 ESC_TOL_US = 2.0
@@ -489,28 +496,25 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
 
 
 def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:
-    """Row index where each step starts: the ESC signal more than ``tol`` from the mean of the
-    step's rows so far (a readback jittering by +-tol about the step's level stays one step; from
-    the step's first row, as until 2026-11-27, one that sat at the jitter's edge split it), an
-    operating condition more than CONDITION_TOL from the step's first row, or another label."""
+    """Row index where each step starts (ESC signal within ``tol`` of the step's first row,
+    CONDITION_TOL, one label); :func:`_merge_steps` joins the pieces of a jittering one."""
     starts = [0]
-    ref, total, count = 0, float(esc[0]) if esc.size else 0.0, 1
+    ref = 0
     cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
     for i in range(1, esc.size):
-        if (abs(esc[i] - total / count) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
+        if (abs(esc[i] - esc[ref]) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
                 or (labels is not None and labels[i] != labels[ref])):
             starts.append(i)
-            ref, total, count = i, 0.0, 0
-        total += float(esc[i])
-        count += 1
+            ref = i
     return np.array(starts)
 
 
 def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: float) -> list:
     """Neighbouring steps (row ranges [a, b)) joined where their medians agree within ``2 tol``
-    (the ESC signal: two pieces of one step whose readback jitters by +-tol) and CONDITION_TOL
-    (the operating conditions) and their label is one: a +-2 us jitter split 16 steps into 104
-    (a thrust-stand export audit, 2026-11-27; 16 again since). Steps closer than 2 tol are one."""
+    (the ESC signal: two pieces of one step whose readback jitters by +-tol) and within
+    CONDITION_TOL (the operating conditions) and their label is one: a +-2 us jitter split 16
+    steps into 104 (a thrust-stand export audit, 2026-11-27; 16 again since). So signal levels
+    closer than 2 tol (4 us, 0.4%, 0.004) are one step."""
     merged = [steps[0]] if steps else []
     for a, b in steps[1:]:
         pa, pb = merged[-1]
@@ -523,22 +527,52 @@ def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: fl
     return merged
 
 
+def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels) -> set:
+    """The indexes of the steps that are the signal ramping from one step to the next: a run of
+    steps of one or two rows between two steps of five rows or more, at their operating
+    condition and label, whose signals lie between the two's (each ramp row was a "step" of its
+    own, taken with the motor still accelerating: 76 points from 16 steps in a thrust-stand
+    export audit, 2026-11-27). Short steps anywhere else (an export that averaged its steps, a
+    tunnel run's short airspeed steps after a long static one) stay points."""
+    size = [b - a for a, b in steps]
+    level = [float(np.median(esc[a:b])) for a, b in steps]
+    out = set()
+    j = 0
+    while j < len(steps):
+        if size[j] > 2:
+            j += 1
+            continue
+        end = j
+        while end < len(steps) and size[end] <= 2:
+            end += 1
+        before, after = j - 1, end  # the long steps around the run [j, end)
+        if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
+            lo, hi = sorted((level[before], level[after]))
+            first = steps[before][0]
+            same = ((labels is None or len({labels[steps[i][0]] for i in range(before, after + 1)}) == 1)
+                    and all(np.ptp(x[first:steps[after][1]]) <= CONDITION_TOL[q] for q, x in conditions.items()))
+            if same and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
+                out.update(range(j, end))
+        j = end
+    return out
+
+
 def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
                  steady: float = 0.02, labels=None, form: str = "us"):
     """One averaged point per ESC step of a thrust-stand "steps" test.
 
-    Consecutive rows with one ESC signal (within ESC_TOL[form] of the mean of the step's rows
-    before them) and one
+    Consecutive rows with one ESC signal (within ESC_TOL[form] of the step's first row) and one
     operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
-    ``labels``) form a step; neighbouring steps whose medians agree within twice those
-    tolerances are one (a jittering readback). Of each step the first ``settle``
+    ``labels``) form a step; neighbouring steps whose signals' medians agree within twice its
+    tolerance (a jittering readback) and whose conditions agree within theirs are one. Of each
+    step the first ``settle``
     of its duration (its rows, without a time column) is dropped, the motor settling, and of
     the rest the rows whose rotation speed is within ``steady`` of the step's median;
     what remains is averaged. A step where fewer than half of the rows after settling are
     steady (a spin-down, a step too short for the motor) gives no point. A step of one or
-    two rows is taken whole where most steps are that short (an export that already averaged
-    them) and dropped, its rows counted as transients, where most rows are in steps of five rows
-    or more (a sampled log: the signal ramping between two steps).
+    two rows is taken whole (an export that already averaged its steps), unless it is part of a
+    ramp between two steps of five rows or more (:func:`_ramps`): then its rows are dropped as
+    transients.
 
     Parameters
     ----------
@@ -565,16 +599,12 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     conditions = {q: np.asarray(values[q], float) for q in CONDITION_TOL if q in values}
     starts = _step_starts(esc, conditions, labels, ESC_TOL[form])
     steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form])
-    # a sampled log's steps hold many rows; a step of one or two rows between them is the signal ramping from one
-    # step to the next (each of its rows a "step" of its own, with the motor's inertial torque: a thrust-stand
-    # export audit, 2026-11-27), not a point; where most rows are in steps that short, the export averaged them
-    sizes = np.array([b - a for a, b in steps])
-    sampled = sizes[sizes >= 5].sum() >= 0.5 * sizes.sum()
+    ramp = _ramps(steps, esc, conditions, labels)
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     k = 0
-    for a, b in steps:
-        if sampled and b - a <= 2:
+    for j, (a, b) in enumerate(steps):
+        if j in ramp:
             dropped += b - a
             continue
         k += 1

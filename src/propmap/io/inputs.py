@@ -209,24 +209,29 @@ def _line_of(text, pos: int) -> int:
 SEPARATORS = (",", ";", "\t")
 
 
-def header_separator(line: str) -> str:
-    """The separator of a CSV from its header line.
+def header_separator(line: str, row: str | None = None) -> str:
+    """The separator of a CSV from its header line (and its first data row).
 
     Parameters
     ----------
     line : str
         The header line (column names).
+    row : str, optional
+        The first data row: where given, only a separator that occurs in the header as often
+        as in it is a candidate (names with a unit after a comma, ``Speed, rev/min;Thrust, N``
+        in a ';'-separated file, or ``Thrust, N`` in a tab-separated one, were split at their
+        commas: an audit of thrust-stand exports, 2026-11-27), unless none is.
 
     Returns
     -------
     str
-        The most frequent of ``','``, ``';'`` (spreadsheets in locales with a decimal comma) and a
-        tab; a tie of ``';'`` and ``','`` gives ``';'`` (names such as ``Thrust, N`` hold a comma,
-        few a semicolon: ``RPM;Thrust, N;Torque, N*m`` was split at its commas, an audit of
-        thrust-stand exports, 2026-11-27), any other tie (a one-column header included) the comma.
+        The most frequent candidate of ``','``, ``';'`` (spreadsheets in locales with a decimal
+        comma) and a tab; a tie of ``';'`` and ``','`` gives ``';'`` (names such as ``Thrust, N``
+        hold a comma, few a semicolon), any other tie (a one-column header included) the comma.
     """
     counts = {c: line.count(c) for c in SEPARATORS}
-    return max(SEPARATORS, key=lambda c: (counts[c], c == ";" and counts[c] > 0, c == ","))
+    both = [c for c in SEPARATORS if counts[c] and row is not None and row.count(c) == counts[c]]
+    return max(both or SEPARATORS, key=lambda c: (counts[c], c == ";" and counts[c] > 0, c == ","))
 
 
 def parse_number(text: str) -> float:

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.units import RPM_MAX
+from ..core.units import RPM_MAX  # the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
 from .geometry_files import MM_FAMILIES, GeometryFileError, read_apc_pe0, read_geometry, read_uiuc_geometry
 from .inputs import (MAX_FILE_BYTES, MAX_SMALL_FILE_BYTES, _check_column, _clip, _read_table, _read_text,
                      decode_input_text, parse_number, read_input_bytes, show_path)
@@ -54,9 +54,6 @@ __all__ = [
 
 class MeasurementFileError(ValueError):
     """A measurement file is malformed; the message names the file and the problem."""
-
-
-#: the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
 
 
 @dataclass(frozen=True)
