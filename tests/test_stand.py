@@ -232,9 +232,8 @@ def test_a_power_column_without_torque_is_noted(tmp_path):
 
 @pytest.mark.parametrize("header, noted", [
     ("Throttle (%),RPM,Thrust (g),V,A,W", "column 'V' is not read; if it is an airspeed"),  # a rig's voltage
-    ("rpm,thrust,J", "column 'J' is not read; if it is an advance ratio, give the airspeed instead (V = J n D"),
     ("rpm,thrust,Tilt (deg)", "column 'Tilt (deg)' is not read; if it is a flow angle"),
-    ("rpm,thrust,V (V),v_bat,yaw_torque,angle_pitch", None),  # a voltage in volts and other names: nothing
+    ("rpm,thrust,V (V),v_bat,yaw_torque,angle_pitch,J (J)", None),  # a voltage in volts, an energy, other names
 ])
 def test_names_that_may_mean_an_airspeed_or_angle_are_noted_not_refused(tmp_path, header, noted):
     """A rig's bare V (a voltage) or a stand's tilt read as before, with a note where the name

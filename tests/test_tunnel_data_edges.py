@@ -11,7 +11,8 @@ import pytest
 
 import propmap as pm
 from propmap.cli.main import main
-from propmap.identify import FitOptions, fit_loads
+from propmap.core.units import RPM
+from propmap.identify import FitOptions, fit_loads, read_loads
 from propmap.identify.data import DataError, sanity_check
 from propmap.identify.load_data import LoadData
 
@@ -179,3 +180,47 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
            "span 1.99e+04-6.6e+04" in err
     assert main(["loads", "apce_10x7", "--rpm", "2600"]) == 0  # (sea level: within the data's)
     assert "Reynolds number" not in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("header, match", [
+    ("rpm,J,thrust,torque", r"column 'J' looks like an airspeed or advance ratio, .* airspeed = J n D"),
+    ("rpm,mu,incidence_deg,thrust,drag,torque", r"column 'mu' looks like an airspeed or advance ratio"),
+    ("rpm,Vz,thrust,torque", r"column 'Vz' looks like a climb or descent rate, which propmap reads only as "
+                             r"'airspeed' \[m/s\] \(its magnitude\) with 'incidence_deg' 0 \(climb\) or 180"),
+    ("rpm,airspeed,descent_rate,thrust,torque", r"column 'descent_rate' looks like a climb or descent rate"),
+    ("rpm,V_c,thrust,torque", r"column 'V_c' looks like a climb or descent rate"),
+    ("rpm,airspeed,flow angle,thrust,torque", r"column 'flow angle' looks like a flow angle"),
+    ("rpm,airspeed,alpha_p,thrust,torque", r"column 'alpha_p' looks like a flow angle"),
+    ("rpm,airspeed,tilt angle,thrust,torque", r"column 'tilt angle' looks like a flow angle"),
+    ("propeller,rpm,thrust,torque", r"column 'propeller' names 2 propellers \(apce_10x7, apce_8x6\): propmap fits "
+                                    r"one propeller's loads"),
+])
+def test_a_tunnel_files_unread_advance_ratio_rate_angle_or_propellers_are_refused(tmp_path, header, match):
+    """Each was read with at most a note and fitted with exit 0 (a wind-tunnel data audit,
+    2026-11-27): an axial sweep's J as static (thrust 11-23% off), a descent rate as static or a
+    climb, an angle without a unit as axial flow, two propellers' rows as one propeller (the
+    audit's figures)."""
+    names = header.split(",")
+    rows = []
+    for k in range(8):
+        cells = {"rpm": f"{4000 + 500 * k}", "thrust": f"{1.0 + 0.1 * k}", "torque": f"{0.02 + 0.001 * k}",
+                 "drag": "0.01", "incidence_deg": "45", "airspeed": "5", "propeller": ("apce_8x6", "apce_10x7")[k % 2]}
+        rows.append(",".join(cells.get(n, f"{0.1 * k:.2f}") for n in names))
+    path = tmp_path / "t.csv"
+    path.write_text("\n".join([header, *rows]) + "\n")
+    with pytest.raises(DataError, match=match):
+        read_loads(path)
+
+
+def test_a_negative_airspeed_or_an_rpm_column_in_rad_s_says_what_it_is(tmp_path, tunnel):
+    """A descent as a negative airspeed was refused with the range only; an rpm column holding
+    rad/s was blamed on an airspeed in km/h (a wind-tunnel data audit, 2026-11-27)."""
+    path = tmp_path / "neg.csv"
+    path.write_text("rpm,airspeed,thrust,torque\n" + "".join(f"{5000 + 100 * k},{-k},1.0,0.02\n" for k in range(8)))
+    with pytest.raises(DataError, match=r"airspeed must be in \[0, 500\] m/s, got -1; a descent given as a negative "
+                                        r"airspeed\? give its magnitude with incidence_deg 180"):
+        read_loads(path)
+    prop, data = tunnel
+    as_rpm = LoadData(data.omega * RPM, data.airspeed, data.incidence, data.measured, data.group, source="rads.csv")
+    with pytest.raises(DataError, match=r"likely a rotation rate in rad/s read as rpm \(an rpm column holding rad/s"):
+        sanity_check(as_rpm, prop)

@@ -319,5 +319,8 @@ class _Csv:
                 hint = ("; the incidence is the angle between the airspeed and the rotor axis, whose sign the "
                         "model does not see: give its magnitude, and where the file's in-plane (normal) force is "
                         "body-fixed, negate it on those rows (propmap's drag points along the in-plane airspeed)"
-                        if key == "incidence_deg" and x[i] < 0 else "")
+                        if key == "incidence_deg" and x[i] < 0 else
+                        # (a descent in a climb-positive convention: a wind-tunnel data audit, 2026-11-27)
+                        "; a descent given as a negative airspeed? give its magnitude with incidence_deg 180 (axial "
+                        "descent; 0 is climb, 90 edgewise)" if key == "airspeed" and x[i] < 0 else "")
                 raise self.error(f"{c} must be in {_interval(ranges[key])}, got {shown}{hint}", int(lines[i]))

@@ -454,6 +454,13 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                    default=math.inf)
     if rpm_miss < math.log(1.6):
         causes.append("a rotation rate in rpm read as rad/s (an 'omega' column holding rpm: name it rpm)")
+    # and the reverse, an rpm column holding rad/s (9.55 times slow: blamed on an airspeed in km/h, a wind-tunnel data
+    # audit, 2026-11-27)
+    rads_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / RPM).values()),
+                    default=math.inf)
+    if rads_miss < math.log(1.6):
+        causes.insert(0, "a rotation rate in rad/s read as rpm (an rpm column holding rad/s: name it omega or "
+                      "'speed (rad/s)')")
     hz_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 60).values()), default=math.inf)
     if hz_miss < math.log(1.6):
         causes.append("a rotation rate in rev/s (Hz) read as rpm (name its unit, e.g. 'rotation speed (Hz)')")

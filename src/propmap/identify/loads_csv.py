@@ -122,8 +122,20 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a sampled log (a stand export, a time column): a load cell empty or NaN in a row is a sensor's dropout, that
     # row skipped below; in a table of points each row is a point and such a cell is refused
     sampled = "esc" in cm.columns or "time" in cm.columns
-    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"),), optional=optional,
-                               stop={low[q] for q in speeds}, gaps={low[q] for q in keys} if sampled else ())
+    # a column naming the propeller of each row: several in one file were fitted as one (a wind-tunnel data audit,
+    # 2026-11-27: the thrust 44-64% off, exit 0)
+    named = [c for c in f.header if c.strip().lower().replace("_", " ") in PROPELLER_COLUMNS]
+    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"), *(c.lower() for c in named)),
+                               optional=optional, stop={low[q] for q in speeds},
+                               gaps={low[q] for q in keys} if sampled else ())
+    for c in named:
+        props = sorted({t for t in texts[c.lower()] if t})
+        if len(props) > 1:
+            raise DataError(f"{what}: {p}: column {c!r} names {len(props)} propellers ({', '.join(props[:4])}"
+                            f"{' ...' if len(props) > 4 else ''}): propmap fits one propeller's loads; write each "
+                            "propeller's rows to a file of its own")
+        if props:
+            notes.append(f"column {c!r} names {props[0]} on every row (the geometry is the one given to the fit)")
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
     # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
@@ -275,6 +287,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
 #: an optical probe's gaps are filled from the electrical speed where the two agree within this (median ratio)
 OPTICAL_ELECTRICAL_TOL = 0.03
+
+
+#: column names that name the propeller of each row (lower case, blanks for underscores)
+PROPELLER_COLUMNS = ("propeller", "prop", "propeller name", "propeller model", "prop name", "propeller id")
 
 
 def _one_signal(esc: np.ndarray, v: dict, group, form: str, name: str, where: str) -> None:

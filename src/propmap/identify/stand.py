@@ -54,7 +54,8 @@ UNITS = {
               "lb": LBF, "ozf": LBF / 16, "oz": LBF / 16},
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
                "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
-               "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048},
+               "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048,
+               "inlbf": LBF * INCH, "inlb": LBF * INCH, "inozf": LBF / 16 * INCH, "inoz": LBF / 16 * INCH},
     "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
@@ -96,16 +97,25 @@ _STATISTICS = frozenset(("std", "sd", "stdev", "stddev", "sigma", "err", "error"
 _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
                   "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
                   "flow velocity", "true airspeed")
-_ADVANCE_LIKE = ("advance ratio", "advance_ratio")
+#: (a bare J or mu, the field's symbols, since 2026-11-27: an axial sweep's 'J' was read as static with a note, the
+#: thrust 11-23% off: a wind-tunnel data audit; with a unit, 'J (J)', it is not one)
+_ADVANCE_LIKE = ("advance ratio", "advance_ratio", "j", "mu")
 _ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "incidence angle",
-               "angle of incidence")
+               "angle of incidence", "flow angle", "disk tilt", "disc tilt", "tilt angle", "rotor tilt", "shaft tilt",
+               "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft", "alpha tpp")
+#: a climb or descent rate, which propmap reads as the airspeed with incidence 0 or 180 deg: refused with or without an
+#: airspeed column (left unread, an axial sweep was fitted as static, or a descent as a climb: a wind-tunnel data
+#: audit, 2026-11-27); not a bare 'w' (a power in watts)
+_AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "descent rate", "descent speed",
+                    "rate of climb", "rate of descent", "sink rate", "vertical speed", "vertical velocity",
+                    "axial velocity", "axial speed", "axial flow speed")
 #: a blade pitch setting under another name than collective_deg (its points were fitted at collective 0: an input
 #: fuzzing audit, 2026-11-27)
 _PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective pitch", "pitch setting",
                "blade pitch angle", "blade setting", "blade setting angle", "pitch_angle", "blade_angle", "blade_pitch")
 #: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, a stand's tilt): a note
-_AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
-              "tilt": "incidence_deg", "tilt angle": "incidence_deg", "inclination": "incidence_deg",
+_AMBIGUOUS = {"v": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
+              "tilt": "incidence_deg", "inclination": "incidence_deg",
               "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
@@ -340,6 +350,11 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     if lift and "thrust" not in cm.columns:
         raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
                     "(with its unit) to fit it")
+    rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)]
+    if rate:
+        raise error(f"column {rate[0]!r} looks like a climb or descent rate, which propmap reads only as 'airspeed' "
+                    "[m/s] (its magnitude) with 'incidence_deg' 0 (climb) or 180 (descent): convert it, or remove "
+                    "it; left unread, its points would be taken as static or in the airspeed's direction")
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
@@ -362,8 +377,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
                      and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
         if like:
+            joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
-                        f"converted, or remove it; left unread, every point would be taken as {default}")
+                        f"converted, or remove it; left unread, every point would be taken as {default}{joule}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
         if maybe:
             ratio = bases[maybe[0]] in ("j", "mu")  # (an advance ratio is no airspeed: it converts, V = J n D)
