@@ -473,3 +473,57 @@ def test_the_power_has_a_derivative(tmp_path):
         up = pm.rotor_loads(prop, p, om + step[0], V + step[1], b + step[2]).power
         down = pm.rotor_loads(prop, p, om - step[0], V - step[1], b - step[2]).power
         np.testing.assert_allclose(r.derivative("power", wrt), (up - down) / (2 * h), rtol=1e-5)
+
+
+# ---- a flight-log audit (2026-11-27): variants of the NeuroBEM logs ----
+
+def test_a_held_out_piece_of_a_training_log_is_refused(tmp_path, capsys, slow_rows):
+    """A piece of a training log, its time shifted to 0, was scored as held-out data (F 0.17 N,
+    in-sample in truth): its motor speeds repeat the other's sample by sample."""
+    whole = _write_log(tmp_path / "whole.csv", slow_rows)
+    piece_rows = slow_rows[300:900].copy()
+    piece_rows[:, 0] -= piece_rows[0, 0]
+    piece = _write_log(tmp_path / "piece.csv", piece_rows)
+    code, _, err = run(capsys, "fit", "flight", whole, piece, "--holdout", "piece.csv", "--vehicle", VEHICLE, "--out",
+                       tmp_path / "p.toml")
+    assert one_line_error(code, err, "piece.csv repeats the motor speeds of whole.csv from its sample 301 on"), err
+
+
+def test_unused_columns_may_be_missing_or_nan_and_repeated_times_are_explained(tmp_path, capsys, slow_rows):
+    """The position and the battery voltage are not read: a motion-capture dropout (NaN) or a CSV
+    without vbat was refused. Rows with one time stamp are explained; a 10 Hz log is read."""
+    from propmap.io.flightlog import NEUROBEM_COLUMNS, read_flight_log
+
+    rows = slow_rows.copy()
+    rows[500:503, 17:20] = np.nan
+    rows[:, 28] = np.nan
+    assert read_flight_log(_write_log(tmp_path / "nan.csv", rows)).n == 1200
+    keep = [j for j, c in enumerate(NEUROBEM_COLUMNS) if c != "vbat"]
+    (tmp_path / "novbat.csv").write_text(",".join(NEUROBEM_COLUMNS[j] for j in keep) + "\n" + "\n".join(
+        ",".join(repr(float(r[j])) for j in keep) for r in slow_rows) + "\n")
+    assert read_flight_log(tmp_path / "novbat.csv").n == 1200
+    twice = np.repeat(slow_rows, 2, axis=0)
+    code, _, err = run(capsys, "wrench", _write_log(tmp_path / "twice.csv", twice), "--vehicle", VEHICLE, "--out",
+                       tmp_path / "w.csv")
+    assert one_line_error(code, err, "1200 sample(s) repeat the time before them: remove rows written twice"), err
+    ten = slow_rows[::40].copy()  # 400 Hz -> 10 Hz, 30 samples
+    ten[:, 0] = np.arange(ten.shape[0]) * 0.1
+    assert read_flight_log(_write_log(tmp_path / "ten.csv", ten)).rate_hz == pytest.approx(10.0)
+
+
+def test_a_vehicle_whose_axes_point_down_is_refused_and_one_way_spins_warned(tmp_path):
+    """Every axis [0, 0, -1] (a z-down frame's habit) was scored and fitted without a word; four
+    rotors of one spin too."""
+    from propmap.vehicle import VehicleFileError
+
+    text = VEHICLE.read_text()
+    geometry = Path(VEHICLE).parent
+    down = tmp_path / "down.toml"
+    down.write_text(re.sub(r"axis = \[[^\]]*\]", "axis = [0.0, 0.0, -1.0]", text).replace(
+        'propeller = "', f'propeller = "{geometry}/'))
+    with pytest.raises(VehicleFileError, match=r"the rotors' axes point down \(the sum of their z components is -4\)"):
+        pm.read_vehicle(down)
+    ccw = tmp_path / "ccw.toml"
+    ccw.write_text(re.sub(r'spin = "cw"', 'spin = "ccw"', text).replace('propeller = "', f'propeller = "{geometry}/'))
+    with pytest.warns(UserWarning, match="every rotor spins ccw: their torques cannot balance in yaw"):
+        pm.read_vehicle(ccw)

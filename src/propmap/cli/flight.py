@@ -103,7 +103,8 @@ def _logs(paths, motor_map=None, n_motors=None):
 def _refuse_same_flight(logs) -> None:
     """Refuse two logs of one flight in other forms (a .mat and its .csv: not copies by their
     bytes, yet a held-out one would train its own fit; a flight audit): the same times and motor
-    speeds, to a CSV's rounding)."""
+    speeds, to a CSV's rounding; or a log whose motor speeds are a stretch of another's, sample
+    by sample, whatever its time (a piece of it, or it with its time shifted)."""
     import numpy as np
 
     seen = {}
@@ -115,6 +116,20 @@ def _refuse_same_flight(logs) -> None:
                 raise InputError(f"LOG: {lg.name} and {other.name} hold the same flight (times and motor speeds): its "
                                  "samples would count twice (and a held-out log would train its own fit)")
         seen.setdefault(lg.n, []).append(lg)
+    # a piece of another log, or the same with its time shifted (a held-out piece of a training log was scored as new
+    # data: a flight-log audit, 2026-11-27): its motor speeds, sample by sample, inside the other's
+    for k, short in enumerate(logs):
+        for j, long in enumerate(logs):
+            if j == k or long.n < short.n or (long.n == short.n and j > k):
+                continue
+            first = np.flatnonzero(np.all(np.isclose(long.rotor_omega[: long.n - short.n + 1], short.rotor_omega[0],
+                                                     rtol=1e-4, atol=1e-6), axis=1))
+            for i in first[:100]:
+                if np.allclose(long.rotor_omega[i:i + short.n], short.rotor_omega, rtol=1e-4, atol=1e-6):
+                    raise InputError(f"LOG: {short.name} repeats the motor speeds of {long.name} from its sample "
+                                     f"{i + 1} on, sample by sample ({short.n} samples: a piece or a copy of it, its "
+                                     "time shifted?): its samples would count twice (and a held-out log would train "
+                                     "its own fit)")
 
 
 def _samples(logs, veh, rate_hz):

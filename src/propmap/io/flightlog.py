@@ -51,6 +51,10 @@ NEUROBEM_COLUMNS = (
     "residual_fx", "residual_fy", "residual_fz", "residual_tx", "residual_ty", "residual_tz",
 )
 FORMATS = ("neurobem", "ulog")
+#: columns of the layout propmap does not use (the position, the battery voltage): a header may leave them out and
+#: a sample may hold NaN there (motion capture losing the vehicle for 3 samples refused the log: a flight-log audit,
+#: 2026-11-27)
+UNUSED_COLUMNS = ("pos x", "pos y", "pos z", "vbat")
 #: plausibility limits of logged values (refused beyond: a unit or column mistake)
 OMEGA_MAX = 1e5  # [rad/s], the solver's limit
 ACC_MAX = 2000.0  # [m/s^2]
@@ -301,7 +305,7 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
             # data and refused for its 'quaternion' [7, 8, 9, 10]: a flight-log fuzzing audit)
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
-        missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head]
+        missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head and c not in UNUSED_COLUMNS]
         sep = header_separator(lines[first])
         blanks = lines[first].split()
         if missing and sep == "," and "," not in lines[first] and len(blanks) >= len(NEUROBEM_COLUMNS[:29]):
@@ -355,7 +359,8 @@ def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
     """The NeuroBEM array ``a`` as a FlightLog (``lines``: each sample's line in a CSV, for messages)."""
     if a.shape[0] < MIN_SAMPLES:
         raise FlightLogError(f"{name}: {a.shape[0]} sample(s); a log needs at least {MIN_SAMPLES}")
-    core = a[:, :29]
+    core = a[:, :29].copy()
+    core[:, [NEUROBEM_COLUMNS.index(c) for c in UNUSED_COLUMNS]] = 0.0  # (not read: NaN allowed)
     if not np.all(np.isfinite(core)):
         i, j = np.argwhere(~np.isfinite(core))[0]
         at = "" if lines is None else f" (line {lines[i]})"
@@ -380,11 +385,15 @@ def _check(log: FlightLog, name: str) -> None:
     dt = np.diff(log.t)
     if not np.all(dt > 0):
         i = int(np.argmax(~(dt > 0)))
+        same = int(np.sum(dt == 0))  # (repeated stamps: rows written twice, or a time rounded: a flight-log audit)
+        why = ("" if not same else f"; {same} sample(s) repeat the time before them: remove rows written twice, or "
+               "give the time to its full precision (a time rounded coarser than the sampling repeats)")
         raise FlightLogError(f"{name}: time does not increase at sample {i + 2} (t = {log.t[i + 1]:.6g} s after "
-                             f"{log.t[i]:.6g} s)")
-    if log.rate_hz < MIN_RATE_HZ:
+                             f"{log.t[i]:.6g} s){why}")
+    if log.rate_hz < (1 - 1e-3) * MIN_RATE_HZ:  # (a 10 Hz log's rounded steps: refused at 9.99 Hz, an audit)
+        units = "is it in milliseconds or microseconds? " if log.rate_hz <= 2.0 else ""
         raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.3g} Hz): "
-                             f"is it in milliseconds or microseconds? A log's time is read in seconds, and a flight "
+                             f"{units}a log's time is read in seconds, and a flight "
                              f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion (its "
                              "angular acceleration is differentiated from the rates)")
     checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
