@@ -251,6 +251,11 @@ def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     om_r = 10000 * math.pi / 30 * prop.radius
     assert tip == pytest.approx(om_r + 20.0) and inc == 180.0
     assert J == pytest.approx(20.0 / (10000 / 60 * prop.diameter))
+    # the incidence of points whose airspeed is below 1% of the tip speed means nothing (a hovering vehicle's drift:
+    # every real flight log warned of its 179.97 deg, 2026-11-27); 0.5 m/s at 10000 rpm is 0.6% of 106 m/s
+    inc = envelope_extremes(prop, np.array([10000.0]), np.array([0.5, 20.0]), np.array([180.0, 30.0]))[2]
+    assert inc == 30.0
+    assert envelope_extremes(prop, np.array([10000.0]), np.array([1.5, 20.0]), np.array([180.0, 30.0]))[2] == 180.0
 
 
 def test_a_few_thrust_only_steps_are_enough_for_the_directions():

@@ -463,15 +463,19 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
     -------
     tuple of float
         The largest advancing-tip speed [m/s], advance ratio of the axial flow V cos(beta) /
-        (n D) [-] and incidence [deg] (of the points with an airspeed: 0 where none has one).
+        (n D) [-] and incidence [deg] (of the points whose airspeed exceeds 1% of the tip speed
+        Omega R: 0 where none does).
     """
     import numpy as np
 
     rpm, airspeed, incidence_deg = (np.atleast_1d(np.asarray(a, float)) for a in (rpm, airspeed, incidence_deg))
     n = rpm / 60
     b = np.radians(incidence_deg)
-    moving = np.broadcast_to(airspeed, np.broadcast_shapes(airspeed.shape, incidence_deg.shape)) > 0
-    incidences = np.broadcast_to(incidence_deg, moving.shape)[moving]  # (in still air the incidence means nothing)
+    # (in still air the incidence means nothing; nor at an airspeed below 1% of the tip speed, where a hovering
+    # vehicle's drift turns it anywhere: every real flight log warned of its 179.97 deg, a flight-log audit)
+    shape = np.broadcast_shapes(rpm.shape, airspeed.shape, incidence_deg.shape)
+    moving = np.broadcast_to(airspeed, shape) > np.broadcast_to(0.01 * 2 * math.pi * n * prop.radius, shape)
+    incidences = np.broadcast_to(incidence_deg, shape)[moving]
     return (float(np.max(np.hypot(2 * math.pi * n * prop.radius + airspeed * np.sin(b), airspeed * np.cos(b)))),
             float(np.max(airspeed * np.cos(np.radians(incidence_deg)) / (n * prop.diameter))),
             float(np.max(incidences)) if incidences.size else 0.0)
