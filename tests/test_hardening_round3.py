@@ -544,3 +544,19 @@ def test_one_motor_far_from_the_others_is_warned_of(tmp_path, slow_rows):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         read_flight_log(_write_log(tmp_path / "ok.csv", slow_rows))
+
+
+def test_spikes_in_the_accelerometer_or_a_motor_speed_are_warned_of(tmp_path, slow_rows):
+    """Two accelerometer samples at 300 m/s^2 took a log's Fz rms from 0.27 to 2.6 N without a word
+    (a flight-log audit, 2026-11-27); they are read as logged, with a warning that counts them."""
+    from propmap.io.flightlog import read_flight_log
+
+    acc = slow_rows.copy()
+    acc[[500, 700], 13] = 300.0
+    with pytest.warns(UserWarning, match=r"2 sample\(s\) of the accelerometer lie far from their neighbours \(spikes; "
+                                         r"the first at sample 501"):
+        assert read_flight_log(_write_log(tmp_path / "acc.csv", acc)).n == 1200
+    mot = slow_rows.copy()
+    mot[[100, 101, 900], 22] = 30000.0
+    with pytest.warns(UserWarning, match=r"3 sample\(s\) of the motor speed lie far"):
+        read_flight_log(_write_log(tmp_path / "mot.csv", mot))

@@ -61,6 +61,11 @@ ACC_MAX = 2000.0  # [m/s^2]
 #: one motor's median speed beyond this factor of the motors' median over a log is warned of (the four NeuroBEM
 #: segments: 0.976-1.021)
 MOTOR_SPREAD = 1.4
+#: spikes (:func:`_warn_spikes`): a sample this far from the median of the SPIKE_WINDOW samples around it, an
+#: accelerometer's [m/s^2] (5 g; the four shared segments: none), a motor speed's as a fraction of it (and 100 rad/s)
+SPIKE_WINDOW = 9
+SPIKE_ACC = 49.0
+SPIKE_OMEGA = 0.3
 #: a time step this many times the log's median is a gap, warned of (NeuroBEM's 400 Hz logs: at most 1.0)
 GAP_STEPS = 20
 RATE_MAX = 200.0  # [rad/s]
@@ -425,6 +430,7 @@ def _check(log: FlightLog, name: str) -> None:
                       f"({dt[big] * log.rate_hz:.0f} median steps): the samples either side are read as they are"
                       + ("; the angular acceleration is differentiated across it: cut the log there"
                          if log.angular_acceleration is None else ""), UserWarning, stacklevel=3)
+    _warn_spikes(log, name)
     running = np.all(log.rotor_omega > 0, axis=1)
     if log.rotor_omega.shape[1] >= 3 and running.sum() >= MIN_SAMPLES:
         # one motor's speed far from the others' over the whole log (a sensor at half speed, a pole-pair count, scored
@@ -437,6 +443,28 @@ def _check(log: FlightLog, name: str) -> None:
             warnings.warn(f"{name}: motor {k + 1}'s median speed is {ratio[k]:.3g} times the motors' median over the "
                           "log (a speed sensor or pole-pair count of its own, another rotor's number?): it is read as "
                           "logged", UserWarning, stacklevel=3)
+
+
+def _warn_spikes(log: FlightLog, name: str) -> None:
+    """Warn of isolated samples far from their neighbours (SPIKE_WINDOW samples' median): an
+    accelerometer reading SPIKE_ACC beyond it, a motor speed SPIKE_OMEGA of it and 100 rad/s
+    beyond (telemetry glitches: two samples at 300 m/s^2 took a log's Fz rms from 0.27 to 2.6 N
+    without a word, a flight-log audit, 2026-11-27). They are read as logged: the warning says
+    how many and where."""
+    from scipy.ndimage import median_filter
+
+    if log.n < SPIKE_WINDOW:
+        return
+    for what, a, far in (("accelerometer", log.specific_force, lambda d, m: d > SPIKE_ACC),
+                         ("motor speed", log.rotor_omega,
+                          lambda d, m: (d > SPIKE_OMEGA * np.abs(m)) & (d > 100.0))):
+        med = median_filter(a, size=(SPIKE_WINDOW, 1), mode="nearest")
+        bad = np.any(far(np.abs(a - med), med), axis=1)
+        if bad.any():
+            i = int(np.argmax(bad))
+            warnings.warn(f"{name}: {int(bad.sum())} sample(s) of the {what} lie far from their neighbours (spikes; "
+                          f"the first at sample {i + 1}, t = {log.t[i]:.6g} s): they are read as logged and weigh in "
+                          "the fit and the rms; cut them out if they are glitches", UserWarning, stacklevel=4)
 
 
 def _check_frames(log: FlightLog, name: str) -> None:
