@@ -560,3 +560,13 @@ def test_spikes_in_the_accelerometer_or_a_motor_speed_are_warned_of(tmp_path, sl
     mot[[100, 101, 900], 22] = 30000.0
     with pytest.warns(UserWarning, match=r"3 sample\(s\) of the motor speed lie far"):
         read_flight_log(_write_log(tmp_path / "mot.csv", mot))
+
+
+def test_a_log_on_the_ground_throughout_is_said_to_be_so(tmp_path, capsys, slow_rows):
+    """Rotors idling at 200 rad/s on the ground were called 'a rotor is stopped (or the vehicle on
+    the ground)' (a flight-log audit, 2026-11-27): the counts of each are said."""
+    ground = _ground_then(slow_rows[:1], idle=200.0, seconds=2.0)[:-1]  # (the ground part alone, 800 samples)
+    code, _, err = run(capsys, "wrench", _write_log(tmp_path / "g.csv", ground), "--vehicle", VEHICLE, "--out",
+                       tmp_path / "w.csv")
+    assert one_line_error(code, err, "g.csv: no samples left: 0 with a rotor stopped (below 1 rad/s) and 800 on the "
+                                     "ground"), err

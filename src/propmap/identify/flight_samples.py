@@ -207,7 +207,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
     n_rot = len(vehicle.rotors)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
-    parts, rates, notes = [], [], []
+    parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
@@ -247,6 +247,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
                      "in every sample" if low.any() else "some rotor stopped in every sample")
             raise ValueError(f"{log.name}: no samples left: {which} (largest logged speed {float(logged.max()):.3g} "
                              "rad/s): motor speeds normalised to 0-1, a throttle, or a motor not logged?")
+        left_out[log.name] = (int(stopped.sum()), int(ground.sum()))
         _check_hover(log, logged[keep], vehicle, hover)
         if stopped.any():
             notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
@@ -272,9 +273,11 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         vals = [p[key] for p in parts]
         out[key] = None if any(v is None for v in vals) else np.concatenate(vals)
     empty = [log.name for k, log in enumerate(logs) if not np.any(out["log_index"] == k)]
-    if empty:
-        raise ValueError(f"{empty[0]}: no samples left: a rotor is stopped (or the vehicle on the ground) in every "
-                         "sample")
+    if empty:  # (said which: idling rotors on the ground were called stopped, a flight-log audit, 2026-11-27)
+        n_stopped, n_ground = left_out.get(empty[0], (0, 0))
+        raise ValueError(f"{empty[0]}: no samples left: {n_stopped} with a rotor stopped (below {OMEGA_STOPPED:g} "
+                         f"rad/s) and {n_ground} on the ground (standing still, the accelerometer reading g, the "
+                         f"rotors below {GROUND_FRACTION:g} of the hover speed)")
     return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)),
                          notes=tuple(notes), **out)
 
