@@ -183,8 +183,10 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
 
 
 @pytest.mark.parametrize("header, match", [
-    ("rpm,J,thrust,torque", r"column 'J' looks like an airspeed or advance ratio, .* airspeed = J n D"),
-    ("rpm,mu,incidence_deg,thrust,drag,torque", r"column 'mu' looks like an airspeed or advance ratio"),
+    ("rpm,J,thrust,torque", r"column 'J' looks like an advance ratio, which propmap reads only as 'airspeed' "
+                            r"\[m/s\] \(V = J n D"),
+    ("rpm,mu,incidence_deg,thrust,drag,torque", r"lacks column airspeed \(is 'mu' an advance ratio\? give the "
+                                                r"airspeed, V = J n D"),
     ("rpm,Vz,thrust,torque", r"column 'Vz' looks like a climb or descent rate, which propmap reads only as "
                              r"'airspeed' \[m/s\] \(its magnitude\) with 'incidence_deg' 0 \(climb\) or 180"),
     ("rpm,airspeed,descent_rate,thrust,torque", r"column 'descent_rate' looks like a climb or descent rate"),
@@ -224,3 +226,26 @@ def test_a_negative_airspeed_or_an_rpm_column_in_rad_s_says_what_it_is(tmp_path,
     as_rpm = LoadData(data.omega * RPM, data.airspeed, data.incidence, data.measured, data.group, source="rads.csv")
     with pytest.raises(DataError, match=r"likely a rotation rate in rad/s read as rpm \(an rpm column holding rad/s"):
         sanity_check(as_rpm, prop)
+
+
+@pytest.mark.parametrize("header, values, noted", [
+    ("rpm,J,thrust,torque", {"J": "0"}, "column 'J' is not read; if it is an advance ratio"),
+    ("rpm,rho,mu,thrust,torque", {"rho": "1.2", "mu": "1.8e-5"}, "column 'mu' is not read"),
+    ("rpm,tilt angle,thrust,torque", {"tilt angle": "5"}, "column 'tilt angle' is not read; if it is a flow angle"),
+    ("rpm,airspeed,incidence_deg,Vz,thrust,drag,torque", {"airspeed": "5", "incidence_deg": "60", "Vz": "2.5"},
+     "column 'Vz' (a climb or descent rate) is not read: the airspeed and the incidence give the flow"),
+])
+def test_harmless_columns_beside_a_static_or_complete_file_are_noted(tmp_path, header, values, noted):
+    """A review (2026-11-27) of the refusals above: a static file's J of 0, a viscosity mu, a
+    stand's tilt angle in still air, or a climb rate beside the airspeed and incidence that
+    give it, are read with a note, as before."""
+    names = header.split(",")
+    rows = []
+    for k in range(8):
+        cells = {"rpm": f"{4000 + 500 * k}", "thrust": f"{1.0 + 0.1 * k}", "torque": f"{0.02 + 0.001 * k}",
+                 "drag": "0.01", **values}
+        rows.append(",".join(cells[n] for n in names))
+    path = tmp_path / "h.csv"
+    path.write_text("\n".join([header, *rows]) + "\n")
+    data = read_loads(path)
+    assert data.n == 8 and any(noted in n for n in data.notes), data.notes

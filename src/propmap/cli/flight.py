@@ -103,8 +103,9 @@ def _logs(paths, motor_map=None, n_motors=None):
 def _refuse_same_flight(logs) -> None:
     """Refuse two logs of one flight in other forms (a .mat and its .csv: not copies by their
     bytes, yet a held-out one would train its own fit; a flight audit): the same times and motor
-    speeds, to a CSV's rounding; or a log whose motor speeds are a stretch of another's, sample
-    by sample, whatever its time (a piece of it, or it with its time shifted)."""
+    speeds, to a CSV's rounding; or a log whose motor speeds and accelerometer are a stretch of
+    another's, sample by sample, whatever its time (a piece of it, or it with its time shifted:
+    :func:`_repeated_in`)."""
     import numpy as np
 
     seen = {}
@@ -117,19 +118,46 @@ def _refuse_same_flight(logs) -> None:
                                  "samples would count twice (and a held-out log would train its own fit)")
         seen.setdefault(lg.n, []).append(lg)
     # a piece of another log, or the same with its time shifted (a held-out piece of a training log was scored as new
-    # data: a flight-log audit, 2026-11-27): its motor speeds, sample by sample, inside the other's
+    # data: a flight-log audit, 2026-11-27): its motor speeds and accelerometer, sample by sample, inside the other's
     for k, short in enumerate(logs):
-        for j, long in enumerate(logs):
-            if j == k or long.n < short.n or (long.n == short.n and j > k):
+        piece = _repeated_in(short, [lg for j, lg in enumerate(logs) if j != k and
+                                     (lg.n > short.n or (lg.n == short.n and j < k))])
+        if piece is not None:
+            long, i = piece
+            raise InputError(f"LOG: {short.name} repeats the motor speeds and accelerations of {long.name} from its "
+                             f"sample {i + 1} on, sample by sample ({short.n} samples: a piece or a copy of it, its "
+                             "time shifted?): its samples would count twice (and a held-out log would train its own "
+                             "fit)")
+
+
+def _repeated_in(short, others):
+    """(other log, its sample index) where ``short``'s motor speeds and specific force recur
+    sample by sample (to a CSV's rounding) in one of ``others``, or None. Anchored at the sample
+    where ``short``'s motor speeds change most (a log at constant speeds, two runs of one
+    commanded speed, is never one: its speeds do not vary); the first 64 samples around the
+    anchor are compared before the whole."""
+    import numpy as np
+
+    om = short.rotor_omega
+    step = np.max(np.abs(np.diff(om, axis=0)), axis=1) if short.n > 1 else np.zeros(0)
+    if not step.size or step.max() <= 1e-3 * max(float(np.max(np.abs(om))), 1e-300):
+        return None
+    a = int(np.argmax(step)) + 1  # the anchor: the sample after the largest change
+
+    def same(x, y):
+        return np.allclose(x, y, rtol=1e-4, atol=1e-6)
+
+    for long in others:
+        lo = long.rotor_omega
+        cand = np.flatnonzero(np.all(np.isclose(lo[a: long.n - short.n + a + 1], om[a], rtol=1e-4, atol=1e-6), axis=1))
+        for c in cand[:1000]:
+            i = int(c)  # the piece would start at sample i of the long log
+            head = slice(max(0, a - 32), min(short.n, a + 32))
+            if not same(lo[i + head.start:i + head.stop], om[head]):
                 continue
-            first = np.flatnonzero(np.all(np.isclose(long.rotor_omega[: long.n - short.n + 1], short.rotor_omega[0],
-                                                     rtol=1e-4, atol=1e-6), axis=1))
-            for i in first[:100]:
-                if np.allclose(long.rotor_omega[i:i + short.n], short.rotor_omega, rtol=1e-4, atol=1e-6):
-                    raise InputError(f"LOG: {short.name} repeats the motor speeds of {long.name} from its sample "
-                                     f"{i + 1} on, sample by sample ({short.n} samples: a piece or a copy of it, its "
-                                     "time shifted?): its samples would count twice (and a held-out log would train "
-                                     "its own fit)")
+            if same(lo[i:i + short.n], om) and same(long.specific_force[i:i + short.n], short.specific_force):
+                return long, i
+    return None
 
 
 def _samples(logs, veh, rate_hz):
@@ -420,7 +448,10 @@ def _flight_coverage(logs, veh, air) -> dict:
     axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
-    return {"J_max": max(0.0, float(np.max(axial / (n * D)))), "incidence_deg_max": float(np.degrees(np.max(inc))),
+    # (the incidence of samples whose airspeed exceeds 1% of the tip speed, as _common.envelope_extremes reads it)
+    moving = speed > 0.01 * s.rotor_omega * D / 2
+    return {"J_max": max(0.0, float(np.max(axial / (n * D)))),
+            "incidence_deg_max": float(np.degrees(np.max(inc[moving]))) if moving.any() else 0.0,
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed)),
             **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}
 

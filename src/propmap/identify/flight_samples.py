@@ -18,6 +18,33 @@ __all__ = ["OMEGA_STOPPED", "GROUND_FRACTION", "GROUND_SPEED", "GROUND_RATE", "F
 
 #: rotation rates below this are taken as a stopped rotor and the sample is left out [rad/s]
 OMEGA_STOPPED = 1.0
+#: a motor whose median speed over a log lies beyond this factor of the median of the motors that turn the same
+#: propeller is warned of (the four NeuroBEM segments: 0.976-1.021)
+MOTOR_SPREAD = 1.4
+
+
+def _motor_spread(log, omega: np.ndarray, vehicle) -> list[str]:
+    """A note per log where a motor's median speed (over the samples kept) lies beyond
+    MOTOR_SPREAD of the median of the three or more rotors that turn the same propeller (a
+    sensor at half speed, a pole-pair count of its own, was scored without a word: a flight-log
+    audit, 2026-11-27; a quadplane's pusher, another propeller, is not compared)."""
+    if omega.shape[0] < 10:
+        return []
+    med = np.median(omega, axis=0)
+    groups = {}
+    for i, r in enumerate(vehicle.rotors):
+        groups.setdefault(id(r.propeller), []).append(i)
+    for members in groups.values():
+        if len(members) < 3:
+            continue
+        ratio = med[members] / np.median(med[members])
+        far = np.flatnonzero((ratio < 1 / MOTOR_SPREAD) | (ratio > MOTOR_SPREAD))
+        if far.size:
+            k = int(far[np.argmax(np.abs(np.log(ratio[far])))])
+            return [f"{log.name}: motor {members[k] + 1}'s median speed is {ratio[k]:.3g} times the median of the "
+                    "motors that turn its propeller (a speed sensor or pole-pair count of its own, another rotor's "
+                    "number?): it is read as logged"]
+    return []
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
 #: the accelerometer reading g (within 20%) while its rotors' rms speed is below GROUND_FRACTION of the hover speed
 #: (about half the weight or less, so that in flight the accelerometer would read 0.6 g or less: idling or spooling
@@ -248,6 +275,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
             raise ValueError(f"{log.name}: no samples left: {which} (largest logged speed {float(logged.max()):.3g} "
                              "rad/s): motor speeds normalised to 0-1, a throttle, or a motor not logged?")
         left_out[log.name] = (int(stopped.sum()), int(ground.sum()))
+        notes += _motor_spread(log, logged[keep], vehicle)
         _check_hover(log, logged[keep], vehicle, hover)
         if stopped.any():
             notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "

@@ -94,7 +94,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
         at the static points (or those nearest to static), a negative torque where the
         thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
-        identical (where ``min_points`` > 1); the message names the file, the line and the column.
+        identical (where ``min_points`` > 1), a column of PROPELLER_COLUMNS that names several
+        propellers, a bare ``J`` or ``mu`` of values other than 0 where no airspeed is read (an
+        advance ratio), a steps log whose ESC signal stays within one tolerance while the speed
+        varies; the message names the file, the line and the column.
     """
     from .stand import ESC_TOL, esc_form, map_columns, stand_points
 
@@ -113,7 +116,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                      "fit uses the torque too)")
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
     if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
-        raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed")
+        ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")]  # (an advance ratio: say how, an audit)
+        raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed" + (
+            f" (is {ratio[0]!r} an advance ratio? give the airspeed, V = J n D; mu n D for mu)" if ratio else ""))
     keys = [k for k in LOAD_KEYS if k in cm.columns]
     quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time", "air_density")
                              if q in cm.columns), *keys]
@@ -125,11 +130,21 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a column naming the propeller of each row: several in one file were fitted as one (a wind-tunnel data audit,
     # 2026-11-27: the thrust 44-64% off, exit 0)
     named = [c for c in f.header if c.strip().lower().replace("_", " ") in PROPELLER_COLUMNS]
-    raw, texts, lines = f.read([low[q] for q in quantities], (low.get("group", "group"), *(c.lower() for c in named)),
-                               optional=optional, stop={low[q] for q in speeds},
+    # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
+    ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
+    raw, texts, lines = f.read([low[q] for q in quantities] + [c.lower() for c in ratio],
+                               (low.get("group", "group"), *(c.lower() for c in named)),
+                               optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
                                gaps={low[q] for q in keys} if sampled else ())
+    for c in ratio:
+        if np.nanmax(np.abs(raw[c.lower()]), initial=0.0) > 1e-3:  # (an axial sweep's J read as static: the thrust
+            # 11-23% off, a wind-tunnel data audit, 2026-11-27)
+            raise DataError(f"{what}: {p}: column {c!r} looks like an advance ratio, which propmap reads only as "
+                            "'airspeed' [m/s] (V = J n D; mu n D for mu): convert it, or remove it; left unread, "
+                            "every point would be taken as static (airspeed 0)")
     for c in named:
-        props = sorted({t for t in texts[c.lower()] if t})
+        props = sorted({t for t in texts[c.lower()] if t}, key=str.casefold)
+        props = sorted({t.casefold(): t for t in props}.values())
         if len(props) > 1:
             raise DataError(f"{what}: {p}: column {c!r} names {len(props)} propellers ({', '.join(props[:4])}"
                             f"{' ...' if len(props) > 4 else ''}): propmap fits one propeller's loads; write each "

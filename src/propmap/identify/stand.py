@@ -97,15 +97,13 @@ _STATISTICS = frozenset(("std", "sd", "stdev", "stddev", "sigma", "err", "error"
 _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
                   "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
                   "flow velocity", "true airspeed")
-#: (a bare J or mu, the field's symbols, since 2026-11-27: an axial sweep's 'J' was read as static with a note, the
-#: thrust 11-23% off: a wind-tunnel data audit; with a unit, 'J (J)', it is not one)
-_ADVANCE_LIKE = ("advance ratio", "advance_ratio", "j", "mu")
+_ADVANCE_LIKE = ("advance ratio", "advance_ratio")
 _ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "incidence angle",
-               "angle of incidence", "flow angle", "disk tilt", "disc tilt", "tilt angle", "rotor tilt", "shaft tilt",
-               "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft", "alpha tpp")
-#: a climb or descent rate, which propmap reads as the airspeed with incidence 0 or 180 deg: refused with or without an
-#: airspeed column (left unread, an axial sweep was fitted as static, or a descent as a climb: a wind-tunnel data
-#: audit, 2026-11-27); not a bare 'w' (a power in watts)
+               "angle of incidence", "flow angle", "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft",
+               "alpha tpp")
+#: a climb or descent rate, which propmap reads as the airspeed with incidence 0 or 180 deg: refused unless both the
+#: airspeed and the incidence are read (left unread, an axial sweep was fitted as static, or a descent as a climb: a
+#: wind-tunnel data audit, 2026-11-27); not a bare 'w' (a power in watts)
 _AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "descent rate", "descent speed",
                     "rate of climb", "rate of descent", "sink rate", "vertical speed", "vertical velocity",
                     "axial velocity", "axial speed", "axial flow speed")
@@ -113,9 +111,14 @@ _AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "desc
 #: fuzzing audit, 2026-11-27)
 _PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective pitch", "pitch setting",
                "blade pitch angle", "blade setting", "blade setting angle", "pitch_angle", "blade_angle", "blade_pitch")
-#: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, a stand's tilt): a note
-_AMBIGUOUS = {"v": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
-              "tilt": "incidence_deg", "inclination": "incidence_deg",
+#: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, mu a viscosity, a stand's
+#: tilt): a note; an angle's is refused beside an airspeed (the points move: an unread angle leaves them axial, a
+#: wind-tunnel data audit, 2026-11-27), and a J's or mu's where its values are not all 0 and no airspeed is read
+#: (loads_csv.read_loads: an axial sweep's J was read as static, the thrust 11-23% off)
+_AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
+              "tilt": "incidence_deg", "tilt angle": "incidence_deg", "disk tilt": "incidence_deg",
+              "disc tilt": "incidence_deg", "rotor tilt": "incidence_deg", "shaft tilt": "incidence_deg",
+              "inclination": "incidence_deg",
               "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
 _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
@@ -278,7 +281,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         that is neither a speed's nor an angle's is not) where no ``airspeed`` or
         ``incidence_deg`` column is recognised (the points would be read as static or axial; a
         name that may mean something else, ``V``, ``J``, ``mu``, ``angle``, ``tilt``, ``yaw``,
-        gets a note instead), any column it does not read whose unit is a speed's (``Flight
+        gets a note instead, except an angle's beside an airspeed), a climb or descent rate
+        (``Vz``, ``V_c``, ``descent_rate``) unless both the airspeed and the incidence are read,
+        any column it does not read whose unit is a speed's (``Flight
         speed (m/s)``) where no airspeed is, or an angle's (``Shaft angle (deg)``) where an
         airspeed is read and no incidence, a wind tunnel's ``lift`` column (the loads are read in
         the rotor's axes; the message gives the conversion), a rotation speed in a speed's unit (``Speed (m/s)``),
@@ -351,7 +356,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
                     "(with its unit) to fit it")
     rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)]
-    if rate:
+    if rate and "airspeed" in cm.columns and "incidence_deg" in cm.columns:
+        cm.notes.append(f"column {rate[0]!r} (a climb or descent rate) is not read: the airspeed and the incidence "
+                        "give the flow")
+    elif rate:
         raise error(f"column {rate[0]!r} looks like a climb or descent rate, which propmap reads only as 'airspeed' "
                     "[m/s] (its magnitude) with 'incidence_deg' 0 (climb) or 180 (descent): convert it, or remove "
                     "it; left unread, its points would be taken as static or in the airspeed's direction")
@@ -381,6 +389,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
                         f"converted, or remove it; left unread, every point would be taken as {default}{joule}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
+        if maybe and quantity == "incidence_deg" and "airspeed" in cm.columns:
+            raise error(f"column {maybe[0]!r} looks like {what} beside the airspeed, which propmap reads only as "
+                        f"{read_as}: rename it, converted, or remove it; left unread, every point would be taken "
+                        f"as {default}")
         if maybe:
             ratio = bases[maybe[0]] in ("j", "mu")  # (an advance ratio is no airspeed: it converts, V = J n D)
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "

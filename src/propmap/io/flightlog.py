@@ -58,9 +58,6 @@ UNUSED_COLUMNS = ("pos x", "pos y", "pos z", "vbat")
 #: plausibility limits of logged values (refused beyond: a unit or column mistake)
 OMEGA_MAX = 1e5  # [rad/s], the solver's limit
 ACC_MAX = 2000.0  # [m/s^2]
-#: one motor's median speed beyond this factor of the motors' median over a log is warned of (the four NeuroBEM
-#: segments: 0.976-1.021)
-MOTOR_SPREAD = 1.4
 #: spikes (:func:`_warn_spikes`): a sample this far from the median of the SPIKE_WINDOW samples around it, an
 #: accelerometer's [m/s^2] (5 g; the four shared segments: none), a motor speed's as a fraction of it (and 100 rad/s)
 SPIKE_WINDOW = 9
@@ -431,18 +428,6 @@ def _check(log: FlightLog, name: str) -> None:
                       + ("; the angular acceleration is differentiated across it: cut the log there"
                          if log.angular_acceleration is None else ""), UserWarning, stacklevel=3)
     _warn_spikes(log, name)
-    running = np.all(log.rotor_omega > 0, axis=1)
-    if log.rotor_omega.shape[1] >= 3 and running.sum() >= MIN_SAMPLES:
-        # one motor's speed far from the others' over the whole log (a sensor at half speed, a pole-pair count, scored
-        # without a word: a flight-log audit, 2026-11-27); a multirotor's motors stay within 15% of each other
-        med = np.median(log.rotor_omega[running], axis=0)
-        ratio = med / np.median(med)
-        far = np.flatnonzero((ratio < 1 / MOTOR_SPREAD) | (ratio > MOTOR_SPREAD))
-        if far.size:
-            k = int(far[np.argmax(np.abs(np.log(ratio[far])))])
-            warnings.warn(f"{name}: motor {k + 1}'s median speed is {ratio[k]:.3g} times the motors' median over the "
-                          "log (a speed sensor or pole-pair count of its own, another rotor's number?): it is read as "
-                          "logged", UserWarning, stacklevel=3)
 
 
 def _warn_spikes(log: FlightLog, name: str) -> None:

@@ -302,9 +302,9 @@ def read_vehicle(path) -> Vehicle:
         inertia out of range, an inertia that is not symmetric positive definite, an axis
         of zero, non-finite or overflowing length, a bad spin, a propeller that is neither a
         readable geometry file nor a catalogue name, or a rotor ``params`` that is neither a
-        readable parameter file nor a named set, or rotor axes whose z components sum to 0 or
-        less (the thrust down in the body frame x forward, y left, z up: a z-down frame's
-        axes); the message names the file, the rotor and the key.
+        readable parameter file nor a named set, or every rotor axis pointing down (z < 0 in
+        the body frame x forward, y left, z up: a z-down frame's axes); the message names the
+        file, the rotor and the key.
 
     Warns
     -----
@@ -312,7 +312,8 @@ def read_vehicle(path) -> Vehicle:
         As :func:`propmap.io.geometry_files.read_uiuc_geometry` for a rotor's geometry file; a
         rotor more than ARM_RADII_MAX of its radii from the centre of mass (positions in mm?),
         two rotors at one position, an inertia whose largest principal moment lies outside
-        INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?), every rotor spinning one way.
+        INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?), four or more rotors of
+        parallel axes (within 10 deg) all spinning one way.
     """
     given, path = path, vehicle_path(path)
     name = show_path(path)
@@ -382,12 +383,11 @@ def read_vehicle(path) -> Vehicle:
         j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
         rotors.append(Rotor(position, axis, spin, prop, params=params, inertia=j_r))  # (Rotor normalises the axis)
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
-    lift = float(sum(r.axis[2] for r in rotors))
-    if lift <= 0:  # (every axis [0, 0, -1], a z-down frame's habit: wrench scored it, a fit wrote a file: an audit)
-        raise VehicleFileError(f"{name}: the rotors' axes point down (the sum of their z components is {lift:.3g}): "
-                               "each rotor's thrust acts along its axis in the body frame x forward, y left, z up, so "
-                               "this vehicle cannot lift itself; a z-down frame's (FRD, PX4's) axis [0, 0, -1] is "
-                               "[0, 0, 1] here")
+    if all(r.axis[2] < 0 for r in rotors):  # (every axis [0, 0, -1], a z-down frame's habit: wrench scored it, a fit
+        # wrote a file: a flight-log audit, 2026-11-27; a horizontal axis, a fixed wing's or a tilt-rotor's, is read)
+        raise VehicleFileError(f"{name}: every rotor's axis points down (z < 0): each rotor's thrust acts along its "
+                               "axis in the body frame x forward, y left, z up, so this vehicle cannot lift itself; a "
+                               "z-down frame's (FRD, PX4's) axis [0, 0, -1] is [0, 0, 1] here")
     _warn_implausible(name, rotors, mass, inertia, cg)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
@@ -422,7 +422,10 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
                 warnings.warn(f"{name}: rotors {k + 1} and {j + 1} have the same position "
                               f"{rotors[k].position.tolist()} m (a coaxial pair lies apart along its axis)",
                               UserWarning, stacklevel=3)
-    if len(rotors) > 1 and len({r.spin for r in rotors}) == 1:  # (all one way: a yaw it cannot balance, an audit)
+    axes = np.array([r.axis for r in rotors])
+    parallel = bool(np.all(axes @ axes[0] > math.cos(math.radians(10.0))))
+    if len(rotors) >= 4 and parallel and len({r.spin for r in rotors}) == 1:  # (a multirotor all one way: an audit;
+        # not a helicopter's tail rotor or a tricopter's tilting one, which balance yaw by thrust)
         warnings.warn(f"{name}: every rotor spins {'ccw' if rotors[0].spin > 0 else 'cw'}: their torques cannot "
                       "balance in yaw (a multirotor's alternate, cw and ccw); is a spin mistyped?", UserWarning,
                       stacklevel=3)
