@@ -61,6 +61,7 @@ ACC_MAX = 2000.0  # [m/s^2]
 #: spikes (:func:`_warn_spikes`): a sample this far from the median of the SPIKE_WINDOW samples around it, an
 #: accelerometer's [m/s^2] (5 g; the four shared segments: none), a motor speed's as a fraction of it (and 100 rad/s)
 SPIKE_WINDOW = 9
+SPIKE_RATE_HZ = 200.0
 SPIKE_ACC = 49.0
 SPIKE_OMEGA = 0.3
 #: a time step this many times the log's median is a gap, warned of (NeuroBEM's 400 Hz logs: at most 1.0)
@@ -431,15 +432,15 @@ def _check(log: FlightLog, name: str) -> None:
 
 
 def _warn_spikes(log: FlightLog, name: str) -> None:
-    """Warn of isolated samples far from their neighbours (SPIKE_WINDOW samples' median): an
-    accelerometer reading SPIKE_ACC beyond it, a motor speed SPIKE_OMEGA of it and 100 rad/s
-    beyond (telemetry glitches: two samples at 300 m/s^2 took a log's Fz rms from 0.27 to 2.6 N
-    without a word, a flight-log audit, 2026-11-27). They are read as logged: the warning says
-    how many and where."""
+    """Warn of isolated samples far from their neighbours (SPIKE_WINDOW samples' median, in logs
+    sampled at SPIKE_RATE_HZ or faster): an accelerometer reading SPIKE_ACC beyond it, a motor
+    speed SPIKE_OMEGA of it and 100 rad/s beyond (telemetry glitches: two samples at 300 m/s^2
+    took a log's Fz rms from 0.27 to 2.6 N without a word, a flight-log audit, 2026-11-27). They
+    are read as logged: the warning says how many and where."""
     from scipy.ndimage import median_filter
 
-    if log.n < SPIKE_WINDOW:
-        return
+    if log.n < SPIKE_WINDOW or log.rate_hz < SPIKE_RATE_HZ:  # (slower, a sample's neighbours are too far away in time
+        return  # to tell a glitch from the motion: a consistent agile log at 20 Hz had one, a test's)
     for what, a, far in (("accelerometer", log.specific_force, lambda d, m: d > SPIKE_ACC),
                          ("motor speed", log.rotor_omega,
                           lambda d, m: (d > SPIKE_OMEGA * np.abs(m)) & (d > 100.0))):
