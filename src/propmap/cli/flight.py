@@ -134,8 +134,8 @@ def _repeated_in(short, others):
     """(other log, its sample index) where ``short``'s motor speeds and specific force recur
     sample by sample (to a CSV's rounding) in one of ``others``, or None. Anchored at the sample
     where ``short``'s motor speeds change most (a log at constant speeds, two runs of one
-    commanded speed, is never one: its speeds do not vary); the first 64 samples around the
-    anchor are compared before the whole."""
+    commanded speed, is never one: its speeds do not vary); the 64 samples around the anchor
+    are compared before the whole."""
     import numpy as np
 
     om = short.rotor_omega

@@ -45,6 +45,8 @@ def _motor_spread(log, omega: np.ndarray, vehicle) -> list[str]:
                     "motors that turn its propeller (a speed sensor or pole-pair count of its own, another rotor's "
                     "number?): it is read as logged"]
     return []
+
+
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with
 #: the accelerometer reading g (within 20%) while its rotors' rms speed is below GROUND_FRACTION of the hover speed
 #: (about half the weight or less, so that in flight the accelerometer would read 0.6 g or less: idling or spooling
