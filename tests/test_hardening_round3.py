@@ -517,6 +517,10 @@ def test_unused_columns_may_be_missing_or_nan_and_repeated_times_are_explained(t
     code, _, err = run(capsys, "wrench", _write_log(tmp_path / "twice.csv", twice), "--vehicle", VEHICLE, "--out",
                        tmp_path / "w.csv")
     assert one_line_error(code, err, "1200 sample(s) repeat the time before them: remove rows written twice"), err
+    quoted = tmp_path / "quoted.csv"  # every field quoted, as some exporters write numbers (refused before)
+    quoted.write_text(",".join(f'"{c}"' for c in NEUROBEM_COLUMNS) + "\n" + "\n".join(
+        ",".join(f'"{float(x)!r}"' for x in r) for r in slow_rows) + "\n")
+    np.testing.assert_array_equal(read_flight_log(quoted).rotor_omega, slow_rows[:, 20:24])
     ten = slow_rows[::40].copy()  # 400 Hz -> 10 Hz, 30 samples
     ten[:, 0] = np.arange(ten.shape[0]) * 0.1
     assert read_flight_log(_write_log(tmp_path / "ten.csv", ten)).rate_hz == pytest.approx(10.0)

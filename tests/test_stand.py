@@ -885,7 +885,8 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
 
 
 @pytest.mark.parametrize("header, factor", [("Motor Speed (RPM)", 1.0), ("Rotational speed (rad/s)", 30 / np.pi),
-                                            ("rotor_speed_hz", 60.0), ("Propeller speed [rpm]", 1.0)])
+                                            ("rotor_speed_hz", 60.0), ("Propeller speed [rpm]", 1.0),
+                                            ("RPS", 60.0), ("rev/s", 60.0)])  # (the last two refused before)
 def test_the_rotation_speed_is_read_by_other_names_exports_give_it(tmp_path, header, factor):
     """Stand software and hand-made tables also name the rotation speed motor, rotor, propeller or
     rotational speed (with a unit): each is read as the rpm (converted); before, "Motor Speed

@@ -72,7 +72,7 @@ _NAMES = {
     "normal force": ("drag", "force"), "normal_force": ("drag", "force"), "rotor drag": ("drag", "force"),
     "rotor_drag": ("drag", "force"),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
-    "omega": ("rpm", "rotation"),
+    "omega": ("rpm", "rotation"), "rps": ("rpm", "rotation"), "rev/s": ("rpm", "rotation"),
     **{f"{who}{sep}speed": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "rotational")
        for sep in " _"},
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
@@ -137,15 +137,16 @@ LOOKED_FOR = {
 def _factor(name: str, base: str, unit: str | None, error) -> float:
     """The factor to SI (rpm for a rotation speed, deg for an angle) of column ``name``, whose
     recognised quantity name is ``base`` (in _NAMES) and unit ``unit`` (None: the quantity's SI,
-    except ``omega``, the field's symbol of a rotation rate in rad/s)."""
+    except ``omega``, the field's symbol of a rotation rate in rad/s, and ``rps`` or ``rev/s``,
+    revolutions per second)."""
     quantity, kind = _NAMES[base]
     if kind is None:
         return 1.0
     if unit is None and kind == "angle" and base != quantity:  # 'incidence': degrees or radians? (1.0 is either)
         raise error(f"column {name!r} gives no unit: name it {quantity!r} (degrees) or give its unit, e.g. "
                     f"'{base} (deg)' or '{base} (rad)'")
-    if unit is None:
-        return UNITS["rotation"]["rads"] if base == "omega" else 1.0
+    if unit is None:  # (a bare 'RPS' or 'rev/s' names its unit: it was not found as a speed, an audit, 2026-11-27)
+        return UNITS["rotation"]["rads"] if base == "omega" else (60.0 if base in ("rps", "rev/s") else 1.0)
     tok = _token(unit)
     if kind == "rotation" and tok in UNITS["speed"]:
         raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or Hz): name an "

@@ -338,7 +338,8 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     if not numbered:  # (a header alone read as '1 columns', and NumPy's own warning came as a second line)
         raise FlightLogError(f"{name}: no data rows after the header (line {skip})")
     try:
-        a = np.loadtxt(io.StringIO("\n".join(line for _, line in numbered)), delimiter=",", ndmin=2)
+        # (every field quoted, '"9.33"', as some exporters write numbers: refused as not numeric, a flight-log audit)
+        a = np.loadtxt(io.StringIO("\n".join(line.replace('"', "") for _, line in numbered)), delimiter=",", ndmin=2)
     except ValueError as exc:
         msg = str(exc).splitlines()[0][:160]
         changed = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", msg)
