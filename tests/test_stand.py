@@ -1009,9 +1009,10 @@ def test_more_ways_of_writing_a_name_and_unit_are_read(tmp_path, header, sep):
     to the comma), 'rev/min', UTF-8 read as Windows-1252 and saved so ('NÂ·m'), a statistic's
     column beside its quantity (an unknown unit 'std')."""
     rpm = np.arange(3000.0, 9000.0, 1000.0)
-    rows = [(r, 1e-7 * r**2, 0.0123, 1.5e-9 * r**2, 1e-4)[:len(header)] for r in rpm]
-    if len(header) == 3:
+    if len(header) == 3:  # rpm, thrust, torque
         rows = [(r, 1e-7 * r**2, 1.5e-9 * r**2) for r in rpm]
+    else:  # rpm, thrust, its statistic, torque, its statistic
+        rows = [(r, 1e-7 * r**2, 0.0123, 1.5e-9 * r**2, 1e-4) for r in rpm]
     path = tmp_path / "h.csv"
     path.write_text("\n".join([sep.join(header)] + [sep.join(f"{v:.6g}" for v in r) for r in rows]) + "\n",
                     encoding="utf-8")

@@ -116,8 +116,19 @@ _C_NAN = re.compile(r"nan(\([a-z0-9_]*\))?|1\.#(qnan|snan|ind)0*", re.ASCII)
 
 
 def missing_mark(cell: str) -> bool:
-    """A cell that marks a missing value: empty, one of MISSING_MARKS or a C runtime's NaN
-    (``-nan``, ``-nan(ind)``, ``1.#QNAN``), in any case and sign."""
+    """Whether a CSV cell marks a missing value.
+
+    Parameters
+    ----------
+    cell : str
+        One field as read; surrounding whitespace is ignored.
+
+    Returns
+    -------
+    bool
+        True for an empty cell, one of MISSING_MARKS or a C runtime's not-a-number (glibc
+        ``-nan``, MSVC ``-nan(ind)``, ``1.#QNAN``, ``1.#IND``), in any case and sign.
+    """
     low = cell.strip().lower().lstrip("+-")
     return low in ("", *MISSING_MARKS) or _C_NAN.fullmatch(low) is not None
 

@@ -115,8 +115,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
                      "fit uses the torque too)")
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
-    if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:
-        ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")]  # (an advance ratio: say how, an audit)
+    # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
+    ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
+    if "airspeed" not in cm.columns and "incidence_deg" in cm.columns:  # (with J or mu: say how, an audit)
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed" + (
             f" (is {ratio[0]!r} an advance ratio? give the airspeed, V = J n D; mu n D for mu)" if ratio else ""))
     keys = [k for k in LOAD_KEYS if k in cm.columns]
@@ -130,8 +131,6 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a column naming the propeller of each row: several in one file were fitted as one (a wind-tunnel data audit,
     # 2026-11-27: the thrust 44-64% off, exit 0)
     named = [c for c in f.header if c.strip().lower().replace("_", " ") in PROPELLER_COLUMNS]
-    # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
-    ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
     raw, texts, lines = f.read([low[q] for q in quantities] + [c.lower() for c in ratio],
                                (low.get("group", "group"), *(c.lower() for c in named)),
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
@@ -143,8 +142,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                             "'airspeed' [m/s] (V = J n D; mu n D for mu): convert it, or remove it; left unread, "
                             "every point would be taken as static (airspeed 0)")
     for c in named:
-        props = sorted({t for t in texts[c.lower()] if t}, key=str.casefold)
-        props = sorted({t.casefold(): t for t in props}.values())
+        props = sorted({t.casefold(): t for t in texts[c.lower()] if t}.values())  # (APC 10x7 and apc 10x7 are one)
         if len(props) > 1:
             raise DataError(f"{what}: {p}: column {c!r} names {len(props)} propellers ({', '.join(props[:4])}"
                             f"{' ...' if len(props) > 4 else ''}): propmap fits one propeller's loads; write each "

@@ -299,15 +299,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             continue
         quantity, kind = _NAMES[base]
         factor = _factor(name, base, unit, error)
-        if quantity == "esc" and quantity in cm.columns and (base in _ESC_ALIASES) != (
-                _split(cm.columns[quantity][0])[0] in _ESC_ALIASES):  # (an alias gives way to the signal's own name)
-            alias = name if base in _ESC_ALIASES else cm.columns[quantity][0]
-            cm.notes.append(f"column {alias!r} is not read: the ESC signal is read from "
-                            f"{(cm.columns[quantity][0] if alias == name else name)!r}")
-            if base in _ESC_ALIASES:
+        if quantity in cm.columns:
+            first = cm.columns[quantity][0]
+            if quantity != "esc" or (base in _ESC_ALIASES) == (_split(first)[0] in _ESC_ALIASES):
+                raise error(f"columns {first!r} and {name!r} both give {quantity}: keep one")
+            # an alias (PWM) gives way to the signal's own name (ESC signal, throttle)
+            alias, signal = (name, first) if base in _ESC_ALIASES else (first, name)
+            cm.notes.append(f"column {alias!r} is not read: the ESC signal is read from {signal!r}")
+            if alias == name:
                 continue
-        elif quantity in cm.columns:
-            raise error(f"columns {cm.columns[quantity][0]!r} and {name!r} both give {quantity}: keep one")
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
             # (rates are read in rpm, angles in deg; the note named the unit's token, 'from nmm': a docs audit)
