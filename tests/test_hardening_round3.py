@@ -563,6 +563,24 @@ def test_one_motor_far_from_the_others_is_warned_of(tmp_path, slow_rows):
     assert any(re.search(r"motor 2's median speed is 0.5\d* times the median of the motors that turn its propeller", n)
                for n in notes), notes
     notes = flight_samples([read_flight_log(_write_log(tmp_path / "ok.csv", slow_rows))], veh).notes
+    assert not any("median speed" in n or "frozen" in n for n in notes), notes
+
+
+def test_one_motor_frozen_at_one_value_is_warned_of(tmp_path, slow_rows):
+    """A motor speed held at one value while the others fly the vehicle (a frozen telemetry
+    channel) was scored without a word; the shared segments' motors vary 0.69-1.30 times as much
+    as their median, and read without this warning (test above)."""
+    from propmap.identify.flight import flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    still = slow_rows.copy()
+    still[:, 22] = np.median(still[:, 22])  # mot 3
+    notes = flight_samples([read_flight_log(_write_log(tmp_path / "still.csv", still))], veh).notes
+    said = [m for n in notes for m in re.finditer(r"motor 3's speed varies (\S+) times as much as those of the motors "
+                                                  r"that turn its propeller \(standard deviation \S+ against (\S+) "
+                                                  r"rad/s\): a reading frozen or held at one value\?", n)]
+    assert len(said) == 1 and float(said[0][1]) < 1e-9 and float(said[0][2]) > 1.0, notes
     assert not any("median speed" in n for n in notes), notes
 
 
@@ -590,3 +608,19 @@ def test_a_log_on_the_ground_throughout_is_said_to_be_so(tmp_path, capsys, slow_
                        tmp_path / "w.csv")
     assert one_line_error(code, err, "g.csv: no samples left: 0 with a rotor stopped (below 1 rad/s) and 800 on the "
                                      "ground"), err
+
+
+def test_a_log_whose_own_prediction_has_gaps_says_it_is_not_scored(tmp_path, slow_rows):
+    """NaN in some rows of NeuroBEM's prediction (columns 30-35) dropped the tables' "log's own"
+    rows without a word; the log's own measurements are still read."""
+    from propmap.io.flightlog import read_flight_log
+
+    whole = read_flight_log(_write_log(tmp_path / "whole.csv", slow_rows))
+    assert whole.reference_force is not None
+    np.testing.assert_array_equal(whole.reference_force, slow_rows[:, 29:32])
+    gaps = slow_rows.copy()
+    gaps[100:110, 30] = np.nan
+    with pytest.warns(UserWarning, match=r"gaps.csv: 10 sample\(s\) of the log's own prediction \(columns 30-35, "
+                                         r"NeuroBEM's BEM \+ neural network\) are not finite numbers"):
+        log = read_flight_log(_write_log(tmp_path / "gaps.csv", gaps))
+    assert log.reference_force is None and log.n == len(slow_rows)

@@ -21,30 +21,44 @@ OMEGA_STOPPED = 1.0
 #: a motor whose median speed over a log lies beyond this factor of the median of the motors that turn the same
 #: propeller is warned of (the four NeuroBEM segments: 0.976-1.021)
 MOTOR_SPREAD = 1.4
+#: a motor whose speed's standard deviation over a log is below this fraction of the median of those motors' is warned
+#: of as a frozen or held reading (the four NeuroBEM segments: 0.69-1.30 of the median)
+MOTOR_STILL = 0.1
 
 
 def _motor_spread(log, omega: np.ndarray, vehicle) -> list[str]:
-    """A note per log where a motor's median speed (over the samples kept) lies beyond
+    """Notes for a log where a motor's median speed (over the samples kept) lies beyond
     MOTOR_SPREAD of the median of the three or more rotors that turn the same propeller (a
     sensor at half speed, a pole-pair count of its own, was scored without a word: a flight-log
-    audit, 2026-11-27; a quadplane's pusher, another propeller, is not compared)."""
+    audit, 2026-11-27; a quadplane's pusher, another propeller, is not compared), and where a
+    motor's speed varies less than MOTOR_STILL of theirs (a reading frozen or held at one value
+    while the others fly the vehicle: scored without a word before, 2026-11-27)."""
     if omega.shape[0] < 10:
         return []
     med = np.median(omega, axis=0)
+    spread = np.std(omega, axis=0)
     groups = {}
     for i, r in enumerate(vehicle.rotors):
         groups.setdefault(id(r.propeller), []).append(i)
+    far_note = still_note = None  # (one of each per log)
     for members in groups.values():
         if len(members) < 3:
             continue
         ratio = med[members] / np.median(med[members])
         far = np.flatnonzero((ratio < 1 / MOTOR_SPREAD) | (ratio > MOTOR_SPREAD))
-        if far.size:
+        if far.size and far_note is None:
             k = int(far[np.argmax(np.abs(np.log(ratio[far])))])
-            return [f"{log.name}: motor {members[k] + 1}'s median speed is {ratio[k]:.3g} times the median of the "
-                    "motors that turn its propeller (a speed sensor or pole-pair count of its own, another rotor's "
-                    "number?): it is read as logged"]
-    return []
+            far_note = (f"{log.name}: motor {members[k] + 1}'s median speed is {ratio[k]:.3g} times the median of the "
+                        "motors that turn its propeller (a speed sensor or pole-pair count of its own, another rotor's "
+                        "number?): it is read as logged")
+        typical = np.median(spread[members])
+        still = [i for i in members if spread[i] < MOTOR_STILL * typical]
+        if still and still_note is None:
+            k = still[0]
+            still_note = (f"{log.name}: motor {k + 1}'s speed varies {spread[k] / typical:.2g} times as much as those "
+                          f"of the motors that turn its propeller (standard deviation {spread[k]:.3g} against "
+                          f"{typical:.3g} rad/s): a reading frozen or held at one value? It is read as logged")
+    return [n for n in (far_note, still_note) if n is not None]
 
 
 #: a sample is on the ground where the vehicle stands still (speed below GROUND_SPEED, rates below GROUND_RATE) with

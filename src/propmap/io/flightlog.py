@@ -375,6 +375,11 @@ def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
     ref = a[:, 29:35]
     # (zeros throughout: a user's log without NeuroBEM's prediction, scored as its F 4.4 N: a flight-log fuzzing audit)
     has_ref = bool(np.all(np.isfinite(ref))) and bool(np.any(ref != 0.0))
+    gaps = int(np.sum(~np.isfinite(ref).all(axis=1)))
+    if gaps and np.any(np.isfinite(ref) & (ref != 0.0)):  # (its row left out of the tables without a word before)
+        warnings.warn(f"{name}: {gaps} sample(s) of the log's own prediction (columns 30-35, NeuroBEM's BEM + neural "
+                      "network) are not finite numbers: that prediction is not read, nor scored beside propmap's",
+                      UserWarning, stacklevel=3)
     return FlightLog(
         name=p.name, path=str(p), format="neurobem", t=a[:, 0].copy(), angular_acceleration=a[:, 1:4].copy(),
         angular_velocity=a[:, 4:7].copy(), attitude=a[:, 7:11].copy(), specific_force=a[:, 11:14].copy(),
