@@ -67,6 +67,11 @@ def test_loads_points_csv(capsys, tmp_path):
     assert float(rows[0]["drag"]) == 0.0 and float(rows[1]["drag"]) > 0
     assert rows[1]["converged"] == "true"
     assert "vortex_ring" in rows[2]["flags"].split(";")  # axial descent at 5 m/s, 6000 rpm: k = 0.92
+    flagged = {f: sum(f in r["flags"].split(";") for r in rows) for f in ("vortex_ring", "reverse_flow")}
+    assert flagged["vortex_ring"] == 1
+    assert (f"wrote 3 points to {dst} (params calibrated:apce_8x6); flagged: 1 vortex_ring"
+            + (f", {flagged['reverse_flow']} reverse_flow" if flagged["reverse_flow"] else "")
+            + " (column flags, docs/cli.md)") in err, err
 
 
 def test_loads_points_with_semicolons_and_decimal_commas(capsys, tmp_path):

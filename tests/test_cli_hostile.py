@@ -3,6 +3,7 @@ computed for bad input, files written with normal permissions (regression tests 
 hardening audit: each case below was mishandled before)."""
 
 import csv
+import io
 import json
 import os
 from pathlib import Path
@@ -300,10 +301,14 @@ def test_points_stream_in_chunks_gives_the_same_table(capsys, tmp_path, monkeypa
     src = tmp_path / "in.csv"
     src.write_text("rpm,airspeed,incidence_deg\n" + "".join(f"{5000 + 100 * i},{i % 13},{(17 * i) % 181}\n"
                                                              for i in range(57)))
-    code, whole, _ = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    code, whole, said = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
     monkeypatch.setattr(cl, "CHUNK", 10)
-    code2, chunked, _ = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
+    code2, chunked, said2 = run(capsys, "loads", "apce_8x6", "--points", src, "--out", "-")
     assert code == code2 == 0 and chunked == whole and len(whole.splitlines()) == 58
+    # the closing line counts each flag over every chunk
+    table = list(csv.DictReader(io.StringIO(whole)))
+    n_vrs = sum("vortex_ring" in r["flags"].split(";") for r in table)
+    assert n_vrs > 0 and f"{n_vrs} vortex_ring" in said.splitlines()[-1] and said2 == said, said
 
 
 # ---- only propmap's own warnings reach stderr, each once ----
@@ -386,6 +391,10 @@ def test_two_outputs_of_one_command_may_not_be_the_same_file(capsys, tmp_path):
         ("rpm,airspeed,incidence_deg\n\n\n5000,5,0\n\n6000,5,-1\n", "line 6: incidence_deg"),
         ("rpm,airspeed," + "x" * 256 + ",incidence_deg\n5000,5,1,0\n", "a column name of 256 characters"),
         ("rpm,airspeed,incidence_deg\n5000,5,-30\n", "symmetric"),
+        # (a disk angle of attack, negative in forward flight, is not a negative incidence)
+        ("rpm,airspeed,incidence_deg\n5000,5,-10\n", "a disk angle of attack alpha_d, 0 edgewise and positive "
+                                                        "with the disk tilted back against the airspeed, is "
+                                                        "incidence 90 + alpha_d deg"),
     ],
 )
 def test_points_rows_are_checked_field_by_field_with_true_line_numbers(capsys, tmp_path, text, match):

@@ -196,6 +196,7 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
     ("rpm,airspeed,tilt angle,thrust,torque", r"column 'tilt angle' looks like a flow angle"),
     ("propeller,rpm,thrust,torque", r"column 'propeller' names 2 propellers \(apce_10x7, apce_8x6\): propmap fits "
                                     r"one propeller's loads"),
+    ("Propeller (name),rpm,thrust,torque", r"column 'Propeller \(name\)' names 2 propellers"),
 ])
 def test_a_tunnel_files_unread_advance_ratio_rate_angle_or_propellers_are_refused(tmp_path, header, match):
     """Each was read with at most a note and fitted with exit 0 (a wind-tunnel data audit,
@@ -207,6 +208,7 @@ def test_a_tunnel_files_unread_advance_ratio_rate_angle_or_propellers_are_refuse
     for k in range(8):
         cells = {"rpm": f"{4000 + 500 * k}", "thrust": f"{1.0 + 0.1 * k}", "torque": f"{0.02 + 0.001 * k}",
                  "drag": "0.01", "incidence_deg": "45", "airspeed": "5", "propeller": ("apce_8x6", "apce_10x7")[k % 2]}
+        cells["Propeller (name)"] = cells["propeller"]
         rows.append(",".join(cells.get(n, f"{0.1 * k:.2f}") for n in names))
     path = tmp_path / "t.csv"
     path.write_text("\n".join([header, *rows]) + "\n")
@@ -221,6 +223,13 @@ def test_a_negative_airspeed_or_an_rpm_column_in_rad_s_says_what_it_is(tmp_path,
     path.write_text("rpm,airspeed,thrust,torque\n" + "".join(f"{5000 + 100 * k},{-k},1.0,0.02\n" for k in range(8)))
     with pytest.raises(DataError, match=r"airspeed must be in \[0, 500\] m/s, got -1; a descent given as a negative "
                                         r"airspeed\? give its magnitude with incidence_deg 180"):
+        read_loads(path)
+    # a negative incidence: its magnitude, or 90 + a disk angle of attack (not "its magnitude" alone)
+    path.write_text("rpm,airspeed,incidence_deg,thrust,torque\n" + "".join(f"{5000 + 100 * k},5,{-5 * k},1.0,0.02\n"
+                                                                        for k in range(8)))
+    with pytest.raises(DataError, match=r"line 3: incidence_deg must be in \[0, 180\] deg, got -5; .* give its "
+                                        r"magnitude.*a disk angle of attack alpha_d \(0 edgewise, positive with the "
+                                        r"disk tilted back against the airspeed\) is incidence_deg = 90 \+ alpha_d"):
         read_loads(path)
     prop, data = tunnel
     as_rpm = LoadData(data.omega * RPM, data.airspeed, data.incidence, data.measured, data.group, source="rads.csv")

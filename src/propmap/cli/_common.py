@@ -21,6 +21,10 @@ from ..core.units import RPM, RPM_MAX
 #: propeller-convention coefficients (referred to n^2) overflow
 RPM_MIN = 1.0
 AIRSPEED_MAX = 500.0
+#: why a negative incidence is refused, and what a disk angle of attack is (docs/conventions.md)
+NEGATIVE_INCIDENCE = (" (the model is symmetric: give the magnitude of a negative incidence; a disk angle of attack "
+                      "alpha_d, 0 edgewise and positive with the disk tilted back against the airspeed, is incidence "
+                      "90 + alpha_d deg)")
 
 
 class InputError(click.ClickException):
@@ -282,8 +286,7 @@ def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = 
                "docs/conventions.md)" if math.isfinite(airspeed) and -AIRSPEED_MAX <= airspeed < 0 else "")
         raise InputError(f"{pre}airspeed must be finite and in [0, {AIRSPEED_MAX:g}] m/s, got {airspeed!r}{why}")
     if not (math.isfinite(incidence_deg) and 0 <= incidence_deg <= 180):
-        why = (" (the model is symmetric: give the magnitude of a negative incidence)"
-               if math.isfinite(incidence_deg) and -180 <= incidence_deg < 0 else "")
+        why = (NEGATIVE_INCIDENCE if math.isfinite(incidence_deg) and -180 <= incidence_deg < 0 else "")
         raise InputError(f"{pre}{'incidence_deg' if where else 'incidence-deg'} must be finite and in [0, 180] deg, "
                          f"got {incidence_deg!r}{why}")
 

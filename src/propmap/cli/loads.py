@@ -10,9 +10,9 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._common import (AIRSPEED_MAX, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label, check_point,
-                      check_section_match, coverage_messages, echo_json, envelope_extremes, load_params, resolve_air,
-                      set_collective_deg, with_air_options, with_prop_options)
+from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label,
+                      check_point, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
+                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
 from ._paths import check_outputs
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
@@ -213,8 +213,7 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                     bad = ~((v >= lo) & (v <= hi))
                     if bad.any():
                         i = int(np.argmax(bad))
-                        why = (" (the model is symmetric: give the magnitude of a negative incidence)"
-                               if c == "incidence_deg" and -180 <= v[i] < 0 else
+                        why = (NEGATIVE_INCIDENCE if c == "incidence_deg" and -180 <= v[i] < 0 else
                                f" (the parameter set's collective {offset_deg:g} deg is added to it, the sum within "
                                f"[-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}])"
                                if c == COLLECTIVE_COLUMN and offset_deg else "")
@@ -320,12 +319,12 @@ def _output_names(inputs, outputs) -> list[str]:
     return names
 
 
-def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, int]:
+def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, dict]:
     """Validate the whole points file, then solve and write it chunk by chunk.
 
     Memory stays bounded by the chunk size whatever the file's length (the output goes to a
-    temporary file renamed at the end, or to standard output). Returns (points, not
-    converged).
+    temporary file renamed at the end, or to standard output). Returns (points, the number
+    of points carrying each flag of FLAG_MEANINGS, in its order).
     """
     from tqdm import tqdm
 
@@ -337,7 +336,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     coverage_messages(prop, label, air, *extremes, rpm=rpm_range, airspeed=v_max)
 
     def write(fh):
-        bad = 0
+        counts = dict.fromkeys(FLAG_MEANINGS, 0)
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
             for k, (df, _, values) in enumerate(_chunks(path, CHUNK, offset)):  # the input cells are written as read
                 rows = values.get(COLLECTIVE_COLUMN)
@@ -345,16 +344,18 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                 res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
                                    values["rpm"], values["airspeed"], values["incidence_deg"],
                                    None if rows is None else rows + offset)
-                converged = list(res.columns).index("converged")  # (by place: it may be renamed below)
+                flags = list(res.columns).index("flags")  # (by place: it may be renamed below)
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
                 for c in res.columns:
                     a = res[c].to_numpy()
                     df[c] = a + 0.0 if a.dtype.kind == "f" else a  # (+ 0.0: no "-0" written for a zero)
                 df.to_csv(fh, index=False, header=k == 0, float_format="%.10g", lineterminator="\n")
-                bad += int((res.iloc[:, converged] == "false").sum())
+                for names, count in res.iloc[:, flags].value_counts().items():
+                    for name in filter(None, names.split(";")):
+                        counts[name] += int(count)
                 bar.update(len(df))
-        return bad
+        return counts
 
     if str(out) == "-":
         return n, write(sys.stdout)
@@ -407,10 +408,13 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, air_choice)
         check_section_match(propeller, label)
-        n, n_bad = _run_points(propeller, params, air, label, points, out, progress=out != "-")
+        n, counts = _run_points(propeller, params, air, label, points, out, progress=out != "-")
         where = "standard output" if out == "-" else out
+        n_bad = counts.pop("not_converged")
+        flagged = ", ".join(f"{c} {name}" for name, c in counts.items() if c)  # (the vortex ring's rows unsaid before)
         click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label})"
-                   + (f"; {n_bad} did not converge (see flags)" if n_bad else ""), err=True)
+                   + (f"; {n_bad} did not converge (see flags)" if n_bad else "")
+                   + (f"; flagged: {flagged} (column flags, docs/cli.md)" if flagged else ""), err=True)
         return
     if out is not None:
         raise InputError("--out applies to --points; a single point is printed")

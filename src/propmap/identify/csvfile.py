@@ -329,7 +329,9 @@ class _Csv:
                 shown = (f"{name!r} = {x[i] / factor:g}, i.e. {c} = {x[i]:g}" if factor != 1.0 else f"{x[i]:g}")
                 hint = ("; the incidence is the angle between the airspeed and the rotor axis, whose sign the "
                         "model does not see: give its magnitude, and where the file's in-plane (normal) force is "
-                        "body-fixed, negate it on those rows (propmap's drag points along the in-plane airspeed)"
+                        "body-fixed, negate it on those rows (propmap's drag points along the in-plane airspeed); a "
+                        "disk angle of attack alpha_d (0 edgewise, positive with the disk tilted back against the "
+                        "airspeed) is incidence_deg = 90 + alpha_d"
                         if key == "incidence_deg" and x[i] < 0 else
                         # (a descent in a climb-positive convention: a wind-tunnel data audit, 2026-11-27)
                         "; a descent given as a negative airspeed? give its magnitude with incidence_deg 180 (axial "
