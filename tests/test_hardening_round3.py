@@ -624,3 +624,26 @@ def test_a_log_whose_own_prediction_has_gaps_says_it_is_not_scored(tmp_path, slo
                                          r"NeuroBEM's BEM \+ neural network\) are not finite numbers"):
         log = read_flight_log(_write_log(tmp_path / "gaps.csv", gaps))
     assert log.reference_force is None and log.n == len(slow_rows)
+
+
+def test_a_rotor_order_or_spins_against_the_logged_moments_is_warned_of(shared_data):
+    """Rotors listed out of the log's motor order (left and right swapped) or with every spin
+    reversed were scored without a word. The measured moment regressed on what the layout makes
+    of the motor speeds: t +2.1 to +16.6 in the right order on the four segments (none warned
+    of), -16.6 about x and -4.3 about z here (measured, 2026-11-27)."""
+    import dataclasses
+
+    from propmap.identify.flight import flight_samples
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    log = read_flight_log(shared_data / "neurobem_flights" / "bemnn20210218171908seg2.mat")
+    assert not any("rotor layout" in n for n in flight_samples([log], veh).notes)
+    swapped = dataclasses.replace(log, rotor_omega=log.rotor_omega[:, [2, 3, 0, 1]],
+                                  rotor_acceleration=log.rotor_acceleration[:, [2, 3, 0, 1]])
+    said = [n for n in flight_samples([swapped], veh).notes if "rotor layout" in n]
+    assert len(said) == 1 and re.search(r"the measured moment about body x \(t = -1\d\.\d\), z \(t = -4\.\d\) falls "
+                                        r"where the vehicle's rotor layout makes it rise", said[0]), said
+    reversed_spins = dataclasses.replace(veh, rotors=[dataclasses.replace(r, spin=-r.spin) for r in veh.rotors])
+    said = [n for n in flight_samples([log], reversed_spins).notes if "rotor layout" in n]
+    assert len(said) == 1 and "about body z (t = -4." in said[0] and "x (" not in said[0], said
