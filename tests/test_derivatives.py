@@ -183,6 +183,13 @@ def test_derivative_errors(prop):
         pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, derivatives="omega")
     with pytest.raises(ValueError, match=r"omega >= 0.1 rad/s"):
         pm.rotor_loads(prop, g, 0.0, 5.0, 0.5, derivatives=True)
+    # NumPy's booleans are booleans (np.True_ was refused as not a sequence: a derivative audit, 2026-11-27)
+    r = pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=np.True_)
+    assert r.derivative("thrust", "omega") > 0
+    assert not pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=np.False_).jacobian
+    with pytest.raises(ValueError, match=r"wrt must be one of .*\(the derivatives asked of rotor_loads; ask for others with "
+                                         r"derivatives=\[\.\.\.\]\), got 'rho'"):
+        r.derivative("thrust", "rho")
 
 
 def test_mean_inflow_derivative(prop):

@@ -138,6 +138,15 @@ def test_derivatives_with_a_stopped_rotor_name_it(generic):
     vehicle_wrench(veh, generic, [0, 0, 0], [0, 0, 0], [1200.0, 1200.0, 0.0, 1200.0])  # (without derivatives: fine)
 
 
+def test_numpy_booleans_ask_for_the_derivatives_as_python_ones(generic):
+    """np.True_ was refused as 'not a sequence of names' (a derivative audit, 2026-11-27)."""
+    veh = read_vehicle(NEUROBEM)
+    args = (veh, generic, [3.0, 0.0, 0.0], [0, 0, 0], [1200.0] * 4)
+    np.testing.assert_array_equal(vehicle_wrench(*args, derivatives=np.True_).force_domega,
+                                  vehicle_wrench(*args, derivatives=True).force_domega)
+    assert vehicle_wrench(*args, derivatives=np.False_).force_domega is None
+
+
 def test_gyroscopic_and_spin_up_moments():
     """A single rotor with inertia J: M = ... - w x h - s J dOmega/dt a, h = s J Omega a."""
     prop = pm.load_propeller("apce_8x6")

@@ -66,6 +66,8 @@ def differentiable(params: SectionParams, names) -> bool:
 def _derivative_inputs(derivatives, params) -> tuple:
     """The inputs and section parameters ``rotor_loads(derivatives=...)`` asks for, checked
     (() for none)."""
+    if isinstance(derivatives, np.bool_):  # (np.True_ was refused as not a sequence: an audit)
+        derivatives = bool(derivatives)
     if derivatives is False or derivatives is None:
         return ()
     if derivatives is True:

@@ -201,8 +201,8 @@ class RotorLoads:
             if not have:
                 raise ValueError(f"these loads have no derivative with respect to {wrt!r:.60}: ask rotor_loads(..., "
                                  "derivatives=...) for it")
-            raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads), "
-                             f"got {wrt!r:.60}")
+            raise ValueError(f"wrt must be one of {', '.join(have)} (the derivatives asked of rotor_loads; ask "
+                             f"for others with derivatives=[...]), got {wrt!r:.60}")
         return self.jacobian[(quantity, wrt)].copy()  # (a view let a caller's edit change the stored derivative)
 
     @property

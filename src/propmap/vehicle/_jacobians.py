@@ -29,6 +29,8 @@ def requested_derivatives(derivatives, vehicle: Vehicle, params=None) -> tuple:
     """The names ``vehicle_wrench(derivatives=...)`` asks for (() for none); with ``params``
     a name that is neither the vehicle's nor a field of the set is refused here (the section
     parameters' values are checked by rotor_loads)."""
+    if isinstance(derivatives, np.bool_):  # (np.True_ was refused as not a sequence: an audit)
+        derivatives = bool(derivatives)
     if derivatives is False or derivatives is None:
         return ()
     if derivatives is True:
