@@ -187,8 +187,8 @@ def test_derivative_errors(prop):
     r = pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=np.True_)
     assert r.derivative("thrust", "omega") > 0
     assert not pm.rotor_loads(prop, g, 800.0, 5.0, 0.5, discretization=DISC, derivatives=np.False_).jacobian
-    with pytest.raises(ValueError, match=r"wrt must be one of .*\(the derivatives asked of rotor_loads; ask for others with "
-                                         r"derivatives=\[\.\.\.\]\), got 'rho'"):
+    with pytest.raises(ValueError, match=r"wrt must be one of .*\(the derivatives asked of rotor_loads; ask for "
+                                         r"others with derivatives=\[\.\.\.\]\), got 'rho'"):
         r.derivative("thrust", "rho")
 
 

@@ -38,9 +38,9 @@ from propmap.io.calibration import generic_params
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
 from propmap.vehicle import rotor_geometry
+from _neurobem import log_paths  # (tools/, the script's folder)
 
 ROOT = Path(__file__).resolve().parents[1]
-LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
 VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
 BINS = ((-20, -4), (-4, -2), (-2, -1), (-1, 0), (0, 1), (1, 2), (2, 4), (4, 20))
 
@@ -52,7 +52,7 @@ def rms(a) -> float:
 
 def main(cv: bool) -> None:
     vehicle = read_vehicle(VEHICLE)
-    logs = [read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))]
+    logs = [read_flight_log(p) for p in log_paths()]
     s = flight_samples(logs, vehicle)
     base = generic_params()
     res = fit_flight(s, vehicle, base=base)

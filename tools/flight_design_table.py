@@ -34,9 +34,9 @@ from propmap.identify.flight import cross_validate_flight, flight_samples
 from propmap.identify.options import FLAP_START
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
+from _neurobem import log_paths  # (tools/, the script's folder)
 
 ROOT = Path(__file__).resolve().parents[1]
-LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
 VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
 INPLANE = ("drag_area_x", "drag_area_y", "wash_factor")
 
@@ -64,7 +64,7 @@ def rows(g) -> dict:
 def main() -> None:
     warnings.simplefilter("ignore")  # the catalogue's coverage notes
     vehicle = read_vehicle(VEHICLE)
-    samples = flight_samples([read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))], vehicle)
+    samples = flight_samples([read_flight_log(p) for p in log_paths()], vehicle)
     air = Air(rho=1.204)
     table = rows(pm.generic_params().replace(air=air))
     args = [a for a in sys.argv[1:] if a != "--differences"]

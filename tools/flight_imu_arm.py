@@ -23,9 +23,9 @@ import propmap as pm
 from propmap.identify.flight import fit_flight, fitted_body_drag, flight_samples, predict_flight
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle._jacobians import cross_matrix
+from _neurobem import log_paths  # (tools/, the script's folder)
 
 ROOT = Path(__file__).resolve().parents[1]
-LOGS = sorted((ROOT.parent / "shared" / "data" / "neurobem_flights").glob("*.mat"))
 VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
 RATE_HZ = 25.0
 
@@ -37,7 +37,8 @@ def pooled(e: np.ndarray) -> float:
 
 def main() -> None:
     veh = pm.read_vehicle(VEHICLE)
-    logs = [read_flight_log(p) for p in LOGS]
+    paths = log_paths()
+    logs = [read_flight_log(p) for p in paths]
     s = flight_samples(logs, veh, rate_hz=RATE_HZ)
     wdot = []  # the angular acceleration at the same samples as flight_samples takes them
     for log in logs:
@@ -56,7 +57,7 @@ def main() -> None:
     r, *_ = np.linalg.lstsq(A.reshape(-1, 3), -err.reshape(-1), rcond=None)
     print(f"in sample: F {pooled(err):.3f} N -> {pooled(err + A @ r):.3f} N with the arm "
           f"({', '.join(f'{1000 * x:+.1f}' for x in r)}) mm")
-    for k, path in enumerate(LOGS):
+    for k, path in enumerate(paths):
         train, test = s.log_index != k, s.log_index == k
         rk, *_ = np.linalg.lstsq(A[train].reshape(-1, 3), -err[train].reshape(-1), rcond=None)
         print(f"held out {path.stem}: arm ({', '.join(f'{1000 * x:+.1f}' for x in rk)}) mm, "

@@ -42,9 +42,9 @@ import numpy as np
 from propmap.identify.flight import fit_flight, fitted_body_drag, fitted_vehicle, flight_samples, predict_flight
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
+from _neurobem import log_paths  # (tools/, the script's folder)
 
 ROOT = Path(__file__).resolve().parents[1]
-LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
 VEHICLE = ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml"
 
 
@@ -55,7 +55,7 @@ def rms(a) -> float:
 
 def main() -> None:
     vehicle = read_vehicle(VEHICLE)
-    logs = [read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))]
+    logs = [read_flight_log(p) for p in log_paths()]
     s = flight_samples(logs, vehicle)
     res = fit_flight(s, vehicle)
     body, veh = fitted_body_drag(res), fitted_vehicle(vehicle, res)

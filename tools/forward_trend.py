@@ -1,7 +1,7 @@
 """Which way does thrust go in edgewise flight at a fixed rotation rate? The measurements
 propmap holds, and the shipped parameter sets' predictions.
 
-1. NeuroBEM quadrotor flight logs (Bauersfeld et al., RSS 2021; the bundled four segments,
+1. NeuroBEM quadrotor flight logs (Bauersfeld et al., RSS 2021; the four segments, not bundled:
    ../shared/data/neurobem_flights, vehicle data/examples/neurobem_quadrotor.toml): the body
    force fitted by linear least squares to k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's
    terms) plus k_h |v_ip|^2 along each rotor axis (RotorPy's translational lift), leaving each
@@ -29,9 +29,9 @@ from propmap.io.calibration import calibration
 from propmap.io.flightlog import read_flight_log
 from propmap.vehicle import read_vehicle
 from propmap.vehicle import rotor_geometry
+from _neurobem import log_paths  # (tools/, the script's folder)
 
 ROOT = Path(__file__).resolve().parents[1]
-LOGS = ROOT.parent / "shared" / "data" / "neurobem_flights"
 TERMS = ("thrust", "drag", "kz")
 
 
@@ -46,7 +46,7 @@ def _design(samples, vehicle) -> np.ndarray:
 
 def flight_logs() -> None:
     veh = read_vehicle(ROOT / "src" / "propmap" / "data" / "examples" / "neurobem_quadrotor.toml")
-    logs = [read_flight_log(p) for p in sorted(LOGS.glob("*.mat"))]
+    logs = [read_flight_log(p) for p in log_paths()]
     s = flight_samples(logs, veh)
     folds = []
     for k in range(len(logs)):
