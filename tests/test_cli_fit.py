@@ -170,3 +170,27 @@ def test_a_fit_to_descent_data_writes_a_file_that_reads_back(tmp_path, capsys):
     cov = read_coverage(out)
     assert cov["J_max"] == 0.0 and cov["incidence_deg_max"] == 150.0
     pm.read_params(out)
+
+
+def test_the_load_figure_says_open_markers_are_held_out_only_where_some_are(monkeypatch, tmp_path):
+    """The title said "(open markers: held out)" of a fit that held nothing out (a new-user
+    audit, 2026-11-27)."""
+    import numpy as np
+
+    import propmap.plots as plots
+    from propmap.identify.load_data import LoadData
+
+    titles = []
+
+    def keep(fig, path):
+        titles.append(fig._suptitle.get_text())
+        plots._pyplot().close(fig)
+        return path
+
+    monkeypatch.setattr(plots, "_save", keep)
+    data = LoadData(np.full(4, 800.0), np.zeros(4), np.zeros(4), {"thrust": np.array([1.0, 1.1, 1.2, 1.3])},
+                    np.zeros(4, int))
+    model = {"fitted": {"thrust": np.array([1.0, 1.12, 1.18, 1.31])}}
+    plots.plot_load_parity(data, model, np.zeros(4, bool), tmp_path / "a.png", title="load fit")
+    plots.plot_load_parity(data, model, np.array([False, False, True, True]), tmp_path / "b.png", title="load fit")
+    assert titles == ["load fit", "load fit (open markers: held out)"]

@@ -157,6 +157,19 @@ def test_a_vehicles_diameter_less_geometry_names_the_vehicle_key(own_vehicle):
         pm.read_vehicle(vehicle)
 
 
+def test_a_diameter_less_geometry_file_says_how_to_give_the_size(tmp_path, capsys):
+    """`loads` named a vehicle file's rule, not the command's option first (a new-user audit,
+    2026-11-27)."""
+    geometry = tmp_path / "mygeom.txt"
+    geometry.write_text("r/R c/R beta\n0.15 0.14 40\n0.5 0.2 20\n1.0 0.07 10\n")
+    assert main(["loads", str(geometry), "--rpm", "9000"]) == 2
+    err = capsys.readouterr().err
+    assert ("mygeom.txt: diameter unknown; give the diameter (--diameter-in; read_geometry's diameter_in) or name "
+            "the file <family>_<D>x<P>_geom.txt (D in inches, in mm for the ef, kpf, pl and vp families)") in err, err
+    assert "vehicle" not in err
+    assert main(["loads", str(geometry), "--rpm", "9000", "--diameter-in", "5", "--blades", "3"]) == 0
+
+
 def test_an_angle_column_without_its_unit_is_refused(tmp_path, capsys):
     (tmp_path / "p.csv").write_text("rpm,airspeed,incidence\n8000,10,1.0\n")
     assert main(["loads", "apce_8x6", "--points", str(tmp_path / "p.csv"), "--out", str(tmp_path / "o.csv")]) == 2

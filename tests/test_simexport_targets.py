@@ -67,6 +67,10 @@ def test_rotorpy_itself_hovers_the_vehicle_and_reproduces_the_reported_error(tmp
     ns = runpy.run_path(str(path))
     quad = Multirotor(ns["quad_params"])
     assert list(ns["quad_params"]["rotor_directions"]) == [-1, 1, -1, 1]
+    # its rotor_speed_max is the envelope's top, where RotorPy saturates: the file says so (a new-user audit)
+    assert ns["quad_params"]["rotor_speed_max"] == pytest.approx(ENV.rpm[1] * math.pi / 30, rel=1e-15)
+    assert ("# rad/s, the envelope's highest rpm, not your motors': RotorPy saturates there (set theirs; --envelope "
+            "rpm=LOW:HIGH fits up to it)") in path.read_text()
 
     # hover: RotorPy's total thrust at the vehicle's hover speed is its weight, as propmap's (to 0.5%: round-off)
     F, M = quad.compute_body_wrench(np.zeros(3), np.full(4, om_h), np.zeros(3))

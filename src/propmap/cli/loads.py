@@ -37,7 +37,8 @@ FLAG_MEANINGS = {
                    "descent 0.45-1.5 v_h, closing at 0.95 v_h in-plane; thrust unsteady there, the loads are "
                    "the empirical mean)",
     "multiple_roots": "an annulus had several inflow roots; the selection rule of docs/solver.md picked one",
-    "reverse_flow": "part of the blade root sees the air from behind (the blades' in-plane airspeed > Omega r_hub)",
+    "reverse_flow": "part of the blade root sees the air from behind (the blades' in-plane airspeed > Omega r_hub; "
+                    "that airspeed includes the skewed wake's in-plane induction, docs/solver.md)",
     "inflow_extrapolated": "the inflow model was used beyond the measurements behind it (a linear inflow model "
                            "with net upflow through the disk, Drees's beyond an advance ratio of 0.5, or the "
                            "empirical descent curve blended with forward speed)",

@@ -40,8 +40,8 @@ class GeometryFileError(ValueError):
 
 
 #: what a diameter-less geometry file needs (a vehicle file says it in its own key: vehicle/file.py)
-SIZE_HINT = ("give diameter_in (--diameter-in; a vehicle file's rotor takes the size from a file name "
-             "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and vp families)")
+SIZE_HINT = ("give the diameter (--diameter-in; read_geometry's diameter_in) or name the file "
+             "<family>_<D>x<P>_geom.txt (D in inches, in mm for the ef, kpf, pl and vp families)")
 #: UIUC families whose file names give the diameter and pitch in millimetres
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]

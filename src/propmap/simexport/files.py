@@ -182,7 +182,8 @@ def _quad_params(res: SimExport, vehicle, label: str, airframe_label: str = "") 
              "    'tau_m': 0.005,  # s: NOT in the vehicle file (motor_time_constant = 0); RotorPy needs one > 0, "
              "set yours"),
             "    'rotor_speed_min': 0.0,  # rad/s",
-            f"    'rotor_speed_max': {rpm_max * RPM!r},  # rad/s, the envelope's highest rpm",
+            f"    'rotor_speed_max': {rpm_max * RPM!r},  # rad/s, the envelope's highest rpm, not your motors': "
+            "RotorPy saturates there (set theirs; --envelope rpm=LOW:HIGH fits up to it)",
             "    'motor_noise_std': 0.0,  # rad/s",
             "}"]
     return out
