@@ -257,6 +257,13 @@ def test_a_saturated_flap_compliance_has_its_interval_to_the_bound():
     lb, ub = _bounds(res.names, pm.identify.FitOptions())
     ci = res.identifiability.ci95
     assert np.all((ci[:, 0] >= lb) & (ci[:, 1] <= ub) | np.isnan(ci[:, 0]))
+    # the report marks an end that is the bound's, not the data's (a new-user audit read "[7.565, 9]" as the data's)
+    cut = res.identifiability.ci95_cut
+    assert cut[j, 1] and cut[j, 0] == (lo == lb[j])
+    assert np.all(~cut[:, 0] | (ci[:, 0] == lb)) and np.all(~cut[:, 1] | (ci[:, 1] == ub))
+    text = res.report_text()
+    assert ", 50*]" in text and "*: the interval ends at the parameter's bound, which it reaches" in text
+    assert res.identifiability.to_dict()["ci95_cut_at_bound"]["flap_compliance"][1] is True
 
 
 def test_a_determined_flap_compliance_keeps_its_interval():
@@ -268,6 +275,7 @@ def test_a_determined_flap_compliance_keeps_its_interval():
         res = fit_loads(data, prop, base=pm.default_params("apce_10x7"))
     j = res.names.index("flap_compliance")
     lo, hi = res.identifiability.ci95[j]
+    assert not res.identifiability.ci95_cut[j].any() and "*: the interval ends" not in res.report_text()
     assert res.x[j] == pytest.approx(1.0, rel=0.05) and lo <= res.x[j] <= hi < 2.0
     assert not any(w.startswith("flap_compliance:") for w in res.warnings)  # the linearised interval stands
 

@@ -197,12 +197,14 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
     return best, log, counter["n"], time.perf_counter() - t0, warns
 
 
-def _cut_at_bounds(ci: np.ndarray, lb: np.ndarray, ub: np.ndarray) -> np.ndarray:
-    """95% intervals, shape (p, 2), cut at the parameters' bounds (a linearised interval reaches
-    past them: cd_min below 0, a compliance below 0); an infinite one (a parameter the data do
-    not determine) stays, null in the report."""
-    ci = np.asarray(ci, float)
-    return np.where(np.isfinite(ci), np.clip(ci, lb[:, None], ub[:, None]), ci)
+def _cut_at_bounds(idf, lb: np.ndarray, ub: np.ndarray):
+    """``idf`` with its 95% intervals, shape (p, 2), cut at the parameters' bounds (a linearised
+    interval reaches past them: cd_min below 0, a compliance below 0) and the cut ends marked
+    (``ci95_cut``); an infinite one (a parameter the data do not determine) stays, null in the
+    report."""
+    ci = np.asarray(idf.ci95, float)
+    cut = np.where(np.isfinite(ci), np.clip(ci, lb[:, None], ub[:, None]), ci)
+    return replace(idf, ci95=cut, ci95_cut=np.isfinite(ci) & (cut != ci))
 
 
 def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air, extra):
@@ -252,7 +254,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             if held else ())
         idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
-    idf = replace(idf, ci95=_cut_at_bounds(idf.ci95, lb, ub))
+    idf = _cut_at_bounds(idf, lb, ub)
     warns = list(warns)
     for n, v, lo, hi in zip(names, best.x, lb, ub):
         if n in at_bound:
@@ -450,9 +452,10 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
     warns = tuple(f"{n} is determined less well by the data than by the prior (data-only std error "
                   f"{sd:.3g} prior standard deviations): fewer directions (--directions) would do"
                   for n, sd in zip(dnames, own.std_error) if n in weak)
-    ci = _cut_at_bounds(np.column_stack([result.x - t * std, result.x + t * std]), *_bounds(result.names, options))
-    idf = Identifiability(result.names, std, ci, corr, own.singular_values, (), warns, std_error_data=None,
-                          effective_parameters=eff)
+    ci = np.column_stack([result.x - t * std, result.x + t * std])
+    idf = _cut_at_bounds(Identifiability(result.names, std, ci, corr, own.singular_values, (), warns,
+                                         std_error_data=None, effective_parameters=eff),
+                         *_bounds(result.names, options))
     extra = dict(result.extra)
     deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")
     extra["directions"] = {
@@ -551,5 +554,7 @@ def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitRes
     except (SolverError, ValueError, FloatingPointError):  # a refit that fails leaves the linearised interval
         return result
     ci[j, 1] = limit
+    cut = np.zeros(ci.shape, bool) if idf.ci95_cut is None else np.array(idf.ci95_cut, bool)
+    cut[j, 1] = limit >= top  # (the profile's end at the bound is the bound's: marked as a cut end)
     warns = (*result.warnings, f"flap_compliance: {why}")
-    return replace(result, identifiability=replace(idf, ci95=ci), warnings=warns)
+    return replace(result, identifiability=replace(idf, ci95=ci, ci95_cut=cut), warnings=warns)

@@ -82,6 +82,9 @@ class Identifiability:
         The data's std errors alone, beside a prior's posterior ones.
     effective_parameters : float or None
         The trace of the posterior hat matrix (p without a prior).
+    ci95_cut : ndarray of bool, shape (p, 2), or None
+        Where an interval's end is a parameter's bound, not the linearised end (a fit's
+        report marks it ``*``).
     """
 
     names: tuple[str, ...]
@@ -93,6 +96,7 @@ class Identifiability:
     warnings: tuple[str, ...]
     std_error_data: np.ndarray | None = None
     effective_parameters: float | None = None
+    ci95_cut: np.ndarray | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready form (a non-finite std error is null), keyed and in units as the fit
@@ -106,6 +110,9 @@ class Identifiability:
             "std_error_data_only": None if self.std_error_data is None else per_name(self.std_error_data),
             "ci95": {report_name(n): [report_value(n, lo), report_value(n, hi)]
                      for n, (lo, hi) in zip(self.names, self.ci95)},
+            "ci95_cut_at_bound": (None if self.ci95_cut is None else
+                                  {report_name(n): [bool(a), bool(b)] for n, (a, b) in zip(self.names, self.ci95_cut)
+                                   if a or b}),
             "effective_parameters": (None if self.effective_parameters is None
                                      else float(self.effective_parameters)),
             "correlation": [[float(c) for c in row] for row in self.correlation],
@@ -225,10 +232,14 @@ class FitResult:
             extra = (f"{'-' if np.isnan(idf.std_error_data[k]) else format(f(idf.std_error_data[k]), '.3g'):>12}"
                      if data_only else "")
             sd = "-" if held else format(f(idf.std_error[k]), ".3g")
-            interval = "-" if held else f"[{f(lo):.4g}, {f(hi):.4g}]"
+            cut = idf.ci95_cut[k] if idf.ci95_cut is not None else (False, False)
+            interval = "-" if held else f"[{f(lo):.4g}{'*' if cut[0] else ''}, {f(hi):.4g}{'*' if cut[1] else ''}]"
             if jk:
                 extra += f"{format(jk['std_error'][report_name(n)], '.3g'):>12}"
             lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{sd:>10}{interval:>24}{extra}{flag}")
+        if idf.ci95_cut is not None and idf.ci95_cut[~np.isnan(idf.std_error)].any():
+            lines.append("*: the interval ends at the parameter's bound, which it reaches (the interval the data "
+                         "give goes past it)")
         dirs = self.extra.get("directions")
         if dirs:
             lines.append(f"std err and interval: the posterior, the data's along the {dirs['count']} free directions "
