@@ -166,13 +166,15 @@ def test_inflow_gradients_match_their_published_formulas():
     kx, ky = mo.inflow_gradients(mu, lam, mo.INFLOW_DREES)
     assert kx == pytest.approx(4 / 3 * (1 - math.cos(chi) - 1.8 * mu**2) / math.sin(chi), rel=1e-14)
     assert ky == pytest.approx(-2 * mu)
-    # a small advance ratio: 1 - cos chi cancelled to 0 below mu ~ 1e-8 (k_x 0 at mu = 1e-9, 9e-5 off at 1e-7; a
-    # derivative audit, 2026-11-27); k_x -> (4/3) mu (1 / (2 lambda) - 1.8 lambda) as mu -> 0
+    # a small skew: 1 - cos chi lost its digits as chi -> 0 (here k_x 11% off at mu = 1e-9, 2.2e-5 at 1e-7; 0 where chi
+    # < 1e-8: a derivative audit, 2026-11-27); k_x -> (4/3) mu (1 / (2 lambda) - 1.8 lambda) as mu -> 0, to (mu /
+    # lambda)^2
     for mu in (1e-9, 1e-7, 1e-4):
         chi = math.atan2(mu, lam)
         exact = 4 / 3 * (2 * math.sin(chi / 2) ** 2 - 1.8 * mu**2) / math.sin(chi)
         assert mo.inflow_gradients(mu, lam, mo.INFLOW_DREES)[0] == pytest.approx(exact, rel=1e-13)
-        assert exact == pytest.approx(4 / 3 * mu * (1 / (2 * lam) - 1.8 * lam), rel=1e-6)
+        assert exact == pytest.approx(4 / 3 * mu * (1 / (2 * lam) - 1.8 * lam), rel=1e-11 + 2 * (mu / lam) ** 2)
+    assert mo.inflow_gradients(1e-9, lam, mo.INFLOW_DREES)[0] == pytest.approx(1.3213333333e-8, rel=1e-9)
     # edgewise (lambda = 0): chi = 90 deg
     assert mo.inflow_gradients(0.2, 0.0, mo.INFLOW_PITT_PETERS)[0] == pytest.approx(15 * math.pi / 32)
     # hover and the uniform model: no gradient

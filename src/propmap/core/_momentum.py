@@ -205,7 +205,7 @@ def inflow_gradients(mu, lam, model):
     chi = np.arctan2(mu, abs(lam))  # in [0, pi/2]: the mirrored angle where lam < 0
     if model == INFLOW_DREES:
         m = min(mu, DREES_MU_MAX)
-        # 1 - cos chi as 2 sin^2(chi / 2): it cancelled to 0 below mu ~ 1e-8 (k_x 100% off at mu 1e-9, an audit)
+        # 1 - cos chi as 2 sin^2(chi / 2): it lost its digits as chi -> 0 (0 below chi ~ 1e-8; an audit, 2026-11-27)
         kx = (4.0 / 3.0) * (2.0 * np.sin(0.5 * chi) ** 2 - 1.8 * m * m) / max(np.sin(chi), 1e-12)
         return max(kx, 0.0), -2.0 * m
     return (15.0 * np.pi / 32.0) * np.tan(0.5 * chi), 0.0
