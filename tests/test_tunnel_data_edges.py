@@ -216,6 +216,16 @@ def test_a_tunnel_files_unread_advance_ratio_rate_angle_or_propellers_are_refuse
         read_loads(path)
 
 
+def test_a_propeller_size_column_is_not_a_propeller_name(tmp_path):
+    """'Prop (in)' holds a size: read as a name column, two sizes were refused as two propellers
+    (a review of 'Propeller (name)' matching)."""
+    path = tmp_path / "sizes.csv"
+    path.write_text("rpm,Prop (in),thrust,torque\n" + "".join(f"{4000 + 500 * k},{(8, 10)[k % 2]},{1 + 0.1 * k},"
+                                                               f"{0.02 + 0.001 * k}\n" for k in range(8)))
+    data = read_loads(path)
+    assert data.omega.size == 8
+
+
 def test_a_negative_airspeed_or_an_rpm_column_in_rad_s_says_what_it_is(tmp_path, tunnel):
     """A descent as a negative airspeed was refused with the range only; an rpm column holding
     rad/s was blamed on an airspeed in km/h (a wind-tunnel data audit, 2026-11-27)."""

@@ -21,8 +21,8 @@ OMEGA_STOPPED = 1.0
 #: a motor whose median speed over a log lies beyond this factor of the median of the motors that turn the same
 #: propeller is warned of (the four NeuroBEM segments: 0.976-1.021)
 MOTOR_SPREAD = 1.4
-#: a motor whose speed's standard deviation over a log is below this fraction of the median of those motors' is warned
-#: of as a frozen or held reading (the four NeuroBEM segments: 0.69-1.30 of the median)
+#: a motor whose speed's standard deviation over a log is below this fraction of the largest of those motors' is
+#: warned of as a frozen or held reading (the four NeuroBEM segments: 0.53-1 of the largest)
 MOTOR_STILL = 0.1
 
 
@@ -31,8 +31,9 @@ def _motor_spread(log, omega: np.ndarray, vehicle) -> list[str]:
     MOTOR_SPREAD of the median of the three or more rotors that turn the same propeller (a
     sensor at half speed, a pole-pair count of its own, was scored without a word: a flight-log
     audit, 2026-11-27; a quadplane's pusher, another propeller, is not compared), and where a
-    motor's speed varies less than MOTOR_STILL of theirs (a reading frozen or held at one value
-    while the others fly the vehicle: scored without a word before, 2026-11-27)."""
+    motor's speed varies less than MOTOR_STILL as much as the most varying of them (a reading
+    frozen or held at one value while the others fly the vehicle: scored without a word before,
+    2026-11-27)."""
     if omega.shape[0] < 10:
         return []
     med = np.median(omega, axis=0)
@@ -51,45 +52,59 @@ def _motor_spread(log, omega: np.ndarray, vehicle) -> list[str]:
             far_note = (f"{log.name}: motor {members[k] + 1}'s median speed is {ratio[k]:.3g} times the median of the "
                         "motors that turn its propeller (a speed sensor or pole-pair count of its own, another rotor's "
                         "number?): it is read as logged")
-        typical = np.median(spread[members])
+        typical = np.max(spread[members])  # (the median was a frozen one's where most are frozen: a review)
         still = [i for i in members if spread[i] < MOTOR_STILL * typical]
         if still and still_note is None:
             k = still[0]
-            still_note = (f"{log.name}: motor {k + 1}'s speed varies {spread[k] / typical:.2g} times as much as those "
-                          f"of the motors that turn its propeller (standard deviation {spread[k]:.3g} against "
-                          f"{typical:.3g} rad/s): a reading frozen or held at one value? It is read as logged")
+            still_note = (f"{log.name}: motor {k + 1}'s speed varies {spread[k] / typical:.2g} times as much as the "
+                          f"most varying of the motors that turn its propeller (standard deviation {spread[k]:.3g} "
+                          f"against {typical:.3g} rad/s): a reading frozen or held at one value? It is read as logged")
     return [n for n in (far_note, still_note) if n is not None]
 
 
 #: a log whose measured moment about a body axis falls with what the rotor layout makes of its motor speeds, at a
-#: t-statistic below this, is warned of (rotors listed out of the log's motor order, or a spin reversed; the four
-#: NeuroBEM segments: t +2.1 to +16.6 in the right order, -4.2 to -16.6 about x with the left and right motors
-#: swapped, -4.3 and -4.4 about z on two of them with every spin reversed)
-LAYOUT_T = -3.0
+#: t-statistic below this (its samples' correlation in time accounted for: _layout_note), is warned of. The four
+#: NeuroBEM segments at 25 Hz (2026-11-27): +2.1 to +12.5 in the right order, and in windows of 5, 10 and 20 s of them
+#: at 25, 100 and 400 Hz no lower than -3.2 (pitch, 5 s at 25 Hz: the rear rotors run faster at speed while the
+#: measured pitching moment stays near 0, docs/flight.md); with the left and right motors swapped -4.2 to -12.5 about x
+LAYOUT_T = -4.0
 
 
-def _layout_note(log, omega: np.ndarray, moment: np.ndarray, vehicle, hover: float) -> list[str]:
-    """A note where the log's measured moment runs against the rotor layout: about each body
-    axis, the measured moment regressed on z = sum_k G_k Omega_k^2, G_k the moment per Omega^2
-    that rotor k makes in hover by the vehicle file (its thrust's r_k x a_k k_T and its torque's
-    reaction -spin_k a_k k_Q, the generic set's coefficients or the rotor's own), has a slope
-    whose t-statistic lies below LAYOUT_T (a wrong motor order was scored without a word before,
-    2026-11-27). The samples are correlated in time, so t overstates the evidence: the note
-    asks, it does not refuse."""
+def _layout_moments(vehicle, hover: float) -> np.ndarray | None:
+    """G, shape (n_rotors, 3): the moment about the centre of mass per Omega^2 [N m s^2] that
+    each rotor makes in hover by the vehicle file, its thrust's r_i x a_i k_T and its torque's
+    reaction -s_i a_i k_Q (k_T, k_Q at the hover speed, the rotor's own set or the generic
+    one); None where there is no hover speed or a solve fails."""
     from ..core.solver import SolverError, rotor_loads
     from ..io.calibration import generic_params
+    from ..vehicle import rotor_geometry
 
-    if omega.shape[0] < 50 or not hover > 0:
-        return []
-    g = np.zeros((len(vehicle.rotors), 3))
+    if not hover > 0:
+        return None
+    arms, axes, spins, _ = rotor_geometry(vehicle)
+    per_omega2 = np.zeros((len(vehicle.rotors), 3))
     try:
         for k, r in enumerate(vehicle.rotors):
-            loads = rotor_loads(r.propeller, r.params or generic_params(), hover, 0.0, 0.0)
-            a = np.asarray(r.axis, float) / np.linalg.norm(r.axis)
-            g[k] = (float(loads.thrust) * np.cross(r.position, a) - r.spin * float(loads.torque) * a) / hover**2
+            loads = rotor_loads(r.propeller, r.params if r.params is not None else generic_params(), hover, 0.0, 0.0)
+            per_omega2[k] = (float(loads.thrust) * np.cross(arms[k], axes[k])
+                             - spins[k] * float(loads.torque) * axes[k]) / hover**2
     except (SolverError, ValueError, ArithmeticError):
+        return None
+    return per_omega2
+
+
+def _layout_note(log, omega: np.ndarray, moment: np.ndarray, per_omega2: np.ndarray | None) -> list[str]:
+    """A note where the log's measured moment runs against the rotor layout: about each body
+    axis, the measured moment regressed on z = sum_i G_i Omega_i^2 (:func:`_layout_moments`)
+    has a slope whose t-statistic lies below LAYOUT_T (a wrong motor order was scored without a
+    word before, 2026-11-27). The samples are correlated in time, so the t-statistic is taken
+    with the effective sample count of the residuals' lag-1 autocorrelation rho, n (1 - rho) /
+    (1 + rho) (that of an AR(1) series), which keeps it from growing with the sampling rate (a
+    review found a correct log's 10 s at -2.4 at 25 Hz, -3.6 at 100 Hz, -7.3 at 400 Hz with n
+    alone). The note asks, it does not refuse."""
+    if per_omega2 is None or omega.shape[0] < 50:
         return []
-    z = omega**2 @ g
+    z = omega**2 @ per_omega2
     z = z - z.mean(axis=0)
     m = moment - moment.mean(axis=0)
     against = []
@@ -101,7 +116,9 @@ def _layout_note(log, omega: np.ndarray, moment: np.ndarray, vehicle, hover: flo
         rest = m[:, i] - slope * z[:, i]
         scatter = float(rest @ rest)  # (0 for a synthetic log's exact moments: no ZeroDivisionError, a test's)
         if scatter > 0:
-            t = slope / math.sqrt(scatter / (len(z) - 2) / zz)
+            rho = min(max(float(rest[1:] @ rest[:-1]) / scatter, 0.0), 0.99)
+            n_eff = max(len(z) * (1 - rho) / (1 + rho), 3.0)
+            t = slope / math.sqrt(scatter / (len(z) - 2) / zz * len(z) / n_eff)  # (the slope's variance x n / n_eff)
         else:
             t = -math.inf if slope < 0 else 0.0
         if t < LAYOUT_T:
@@ -291,6 +308,11 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     stopped, by its logged speed or through the motor lag (OMEGA_STOPPED), and where the
     vehicle stands on the ground (GROUND_FRACTION): there the measured force is the ground's
     reaction, which no rotor model makes (idling or spooling-up rotors with the accelerometer reading g).
+    The notes also name, per log, a motor whose median speed lies beyond MOTOR_SPREAD of its
+    propeller's other motors' or whose speed varies less than MOTOR_STILL as much as the most
+    varying of them (a frozen reading), and, where the vehicle has an inertia, a measured
+    moment that falls where the rotor layout makes it rise (LAYOUT_T: motor order, positions or
+    spins); the samples are read as logged.
     """
     logs = list(logs)
     if not logs:
@@ -304,6 +326,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)
+    layout = _layout_moments(vehicle, hover) if vehicle.inertia is not None else None
     for k, log in enumerate(logs):
         if not isinstance(log, FlightLog):
             raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
@@ -356,7 +379,7 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
         if vehicle.inertia is not None:
             inertia = vehicle.inertia
             moment = wdot[sl][keep] @ inertia.T + np.cross(w, w @ inertia.T)
-            notes += _layout_note(log, logged[keep], moment, vehicle, hover)
+            notes += _layout_note(log, logged[keep], moment, layout)
         else:
             moment = None
         acc = omdot_full[sl][keep] if omdot_full is not None else np.zeros((keep.sum(), n_rot))

@@ -99,7 +99,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         advance ratio), a steps log whose ESC signal stays within one tolerance while the speed
         varies; the message names the file, the line and the column.
     """
-    from .stand import ESC_TOL, _split, esc_form, map_columns, stand_points
+    from .stand import ESC_TOL, esc_form, map_columns, split_header, stand_points
 
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
@@ -130,7 +130,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     sampled = "esc" in cm.columns or "time" in cm.columns
     # a column naming the propeller of each row: several in one file were fitted as one (a wind-tunnel data audit,
     # 2026-11-27: the thrust 44-64% off, exit 0)
-    named = [c for c in f.header if _split(c)[0].replace("_", " ") in PROPELLER_COLUMNS]  # ('Propeller (name)' too)
+    named = [c for c in f.header if _propeller_column(*split_header(c))]
     raw, texts, lines = f.read([low[q] for q in quantities] + [c.lower() for c in ratio],
                                (low.get("group", "group"), *(c.lower() for c in named)),
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
@@ -304,6 +304,15 @@ OPTICAL_ELECTRICAL_TOL = 0.03
 
 #: column names that name the propeller of each row (lower case, blanks for underscores)
 PROPELLER_COLUMNS = ("propeller", "prop", "propeller name", "propeller model", "prop name", "propeller id")
+#: what may stand in brackets after such a name: 'Propeller (name)' names the propeller, 'Prop (in)' or 'Propeller
+#: (rpm)' is a size or a speed, not a name (a review)
+PROPELLER_COLUMN_UNITS = (None, "name", "id", "model", "type", "-")
+
+
+def _propeller_column(base: str, unit: str | None) -> bool:
+    """Whether a column split into (name, unit) names the propeller of each row."""
+    written = None if unit is None else unit.strip().lower()
+    return base.replace("_", " ") in PROPELLER_COLUMNS and written in PROPELLER_COLUMN_UNITS
 
 
 def _one_signal(esc: np.ndarray, v: dict, group, form: str, name: str, where: str) -> None:

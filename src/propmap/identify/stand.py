@@ -163,7 +163,7 @@ def _token(unit: str) -> str:
     return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("â", "").replace("µ", "u").replace("μ", "u"))
 
 
-def _split(name: str) -> tuple[str, str | None]:
+def split_header(name: str) -> tuple[str, str | None]:
     """(quantity text, unit text or None) of a column name: ``Thrust (kgf)``, ``thrust [N]``,
     ``Thrust, N``, ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one."""
     name = name.strip()
@@ -205,11 +205,11 @@ def _split(name: str) -> tuple[str, str | None]:
 
 def _name_stems(name: str) -> frozenset:
     """The quantity texts of a column propmap does not read, for comparing it with the names of
-    airspeeds and flow angles: :func:`_split`'s, and that less a trailing speed or angle unit
+    airspeeds and flow angles: :func:`split_header`'s, and that less a trailing speed or angle unit
     after an underscore (``freestream_mps``, ``tunnel_speed_m_s``, ``V_inf_ms``, ``alpha_deg``),
     underscores as blanks (``disk_angle_deg`` -> ``disk angle``). Only a stem that is such a name
     counts (``timestamp_ms`` is no airspeed: ms there is a millisecond)."""
-    base, unit = _split(name)
+    base, unit = split_header(name)
     if unit is not None or base in _NAMES:
         return frozenset((base,))
     parts = base.split("_")
@@ -294,14 +294,14 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     for name in names:
         if not name.strip():
             continue
-        base, unit = _split(name)
+        base, unit = split_header(name)
         if base not in _NAMES:
             continue
         quantity, kind = _NAMES[base]
         factor = _factor(name, base, unit, error)
         if quantity in cm.columns:
             first = cm.columns[quantity][0]
-            if quantity != "esc" or (base in _ESC_ALIASES) == (_split(first)[0] in _ESC_ALIASES):
+            if quantity != "esc" or (base in _ESC_ALIASES) == (split_header(first)[0] in _ESC_ALIASES):
                 raise error(f"columns {first!r} and {name!r} both give {quantity}: keep one")
             # an alias (PWM) gives way to the signal's own name (ESC signal, throttle)
             alias, signal = (name, first) if base in _ESC_ALIASES else (first, name)
@@ -330,7 +330,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
                     "are the file's first line")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
-    split = {name: _split(name) for name in names if name.strip()}
+    split = {name: split_header(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
     bases = {name: b for name, (b, u) in split.items()
              if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
@@ -427,7 +427,7 @@ def _refuse_pitch_like(names, error) -> None:
     for name in names:
         if not name.strip():
             continue
-        b, u = _split(name)
+        b, u = split_header(name)
         if b in _NAMES or not (u is None or _token(u) in UNITS["angle"]):
             continue
         if (_name_stems(name) | {b}) & _loose(_PITCH_LIKE):
@@ -470,7 +470,7 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
     for name in names:
         if not name.strip() or name.strip().lower() in OPERATING:
             continue
-        base, unit = _split(name)
+        base, unit = split_header(name)
         quantity = _NAMES.get(base, (None, None))[0]
         if quantity not in OPERATING or quantity in bare:
             continue

@@ -376,7 +376,9 @@ def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
     # (zeros throughout: a user's log without NeuroBEM's prediction, scored as its F 4.4 N: a flight-log fuzzing audit)
     has_ref = bool(np.all(np.isfinite(ref))) and bool(np.any(ref != 0.0))
     gaps = int(np.sum(~np.isfinite(ref).all(axis=1)))
-    if gaps and np.any(np.isfinite(ref) & (ref != 0.0)):  # (its row left out of the tables without a word before)
+    # (its rows left out of the tables without a word before; a column absent throughout, NaN in every sample, is not
+    # a gap: a CSV with the prediction's force and not its moment, a review)
+    if gaps and np.isfinite(ref).any(axis=0).all() and np.any(np.isfinite(ref) & (ref != 0.0)):
         warnings.warn(f"{name}: {gaps} sample(s) of the log's own prediction (columns 30-35, NeuroBEM's BEM + neural "
                       "network) are not finite numbers: that prediction is not read, nor scored beside propmap's",
                       UserWarning, stacklevel=3)
