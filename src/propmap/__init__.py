@@ -26,7 +26,8 @@ _EXPORTS = {
     "write_params": "io.params_file", "default_params": "io.calibration", "generic_params": "io.calibration",
     "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
     "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "VehicleWrench": "vehicle", "VehicleMap": "vehicle",
-    "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim",
+    "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim", "trim_omega": "core.trim",
+    "OmegaTrimResult": "core.trim",
     "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.param_sets",
     "rotor_like": "core.geometry", "example_file": "io.catalogue", "example_files": "io.catalogue",
 }

@@ -1,4 +1,5 @@
-"""``propmap trim``: the collective that makes a given thrust at one operating point."""
+"""``propmap trim``: the collective (or the rotation rate) that makes a given thrust at one
+operating point."""
 
 from __future__ import annotations
 
@@ -12,83 +13,122 @@ from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_M
                       set_collective_deg, with_prop_options)
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
+#: the collectives searched by default [deg] (trim_collective's default bounds)
+RANGE_DEG = (-20.0, 30.0)
+
 
 @click.command("trim")
 @click.argument("prop")
 @click.option("--thrust", type=float, required=True, help="Thrust to make [N].")
-@click.option("--rpm", type=float, required=True, help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}].")
+@click.option("--rpm", type=float, default=None,
+              help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}]: the collective is trimmed. Without it the "
+                   "rpm is trimmed, at the parameter set's collective.")
 @click.option("--airspeed", type=float, default=0.0, show_default=True, help="Airspeed V [m/s], in [0, 500].")
 @click.option("--incidence-deg", type=float, default=0.0, show_default=True,
               help="Angle between freestream and rotor axis [deg]: 0 climb, 90 edgewise, 180 descent.")
-@click.option("--range-deg", nargs=2, type=float, default=(-20.0, 30.0), show_default=True,
-              help=f"Collectives searched [deg], within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}].")
+@click.option("--range-deg", nargs=2, type=float, default=None,
+              help=f"Collectives searched [deg], within [-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}] (with --rpm; "
+                   f"default {RANGE_DEG[0]:g} {RANGE_DEG[1]:g}).")
+@click.option("--rpm-range", nargs=2, type=float, default=None,
+              help=f"Rotation rates searched [rpm], within (0, {RPM_MAX:.0f}] (without --rpm; default the rates of a "
+                   "tip speed of 1 m/s to Mach 0.9).")
 @click.option("--hover-reference", is_flag=True,
               help="Also trim hover to the same thrust and rpm and report dCQ = CQ - CQ_hover.")
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @with_prop_options
 @with_air_options
-def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, hover_reference, params_spec, as_json,
-                 prop_choice, air_choice):
-    """Collective (blade-angle offset) at which PROP makes --thrust.
+def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_range, hover_reference, params_spec,
+                 as_json, prop_choice, air_choice):
+    """Collective (blade-angle offset) at which PROP makes --thrust at --rpm; without --rpm,
+    the rpm at which it makes --thrust.
 
-    The lowest collective in --range-deg that makes the thrust is returned (below stall the
-    only one); the output states the branch and how many solutions the search saw.
+    The lowest collective in --range-deg (or the lowest rpm in --rpm-range) that makes the
+    thrust is returned (below stall, and in still air or climb, the only one); the output
+    states the branch and how many solutions the search saw.
     """
     from ..core.solver import SolverError
-    from ..core.trim import TrimError, torque_change_at_constant_thrust, trim_collective
+    from ..core.trim import (TrimError, default_omega_bounds, torque_change_at_constant_thrust, trim_collective,
+                             trim_omega)
 
-    check_point(rpm, airspeed, incidence_deg)
+    solve_rpm = rpm is None
+    check_point(RPM_MIN if solve_rpm else rpm, airspeed, incidence_deg)  # (no --rpm: the rate is solved below)
     if not math.isfinite(thrust) or abs(thrust) > 1e5:
         raise InputError(f"--thrust must be finite and in [-1e5, 1e5] N, got {thrust!r}")
-    lo, hi = range_deg
+    if solve_rpm and range_deg is not None:
+        raise InputError("--range-deg: the collective is trimmed only at a given --rpm; without --rpm the rpm is "
+                         "trimmed (search range: --rpm-range)")
+    if not solve_rpm and rpm_range is not None:
+        raise InputError("--rpm-range: with --rpm the collective is trimmed (search range: --range-deg); leave "
+                         "--rpm out to trim the rpm")
+    lo, hi = range_deg if range_deg is not None else RANGE_DEG
     if not (-COLLECTIVE_DEG_MAX <= lo < hi <= COLLECTIVE_DEG_MAX):
         raise InputError(f"--range-deg must be two angles LOW < HIGH within [-{COLLECTIVE_DEG_MAX:g}, "
                          f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
+    if rpm_range is not None and not (0 < rpm_range[0] < rpm_range[1] <= RPM_MAX):
+        raise InputError(f"--rpm-range must be two rates LOW < HIGH within (0, {RPM_MAX:.0f}] rpm, got "
+                         f"{rpm_range[0]!r} {rpm_range[1]!r}")
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
-    omega, beta = rpm * RPM, math.radians(incidence_deg)
+    beta = math.radians(incidence_deg)
     bounds = (math.radians(lo), math.radians(hi))
     try:
-        res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
+        if solve_rpm:
+            res = trim_omega(propeller, params, thrust, airspeed, beta, air=air,
+                             bounds=None if rpm_range is None else (rpm_range[0] * RPM, rpm_range[1] * RPM))
+            omega, added = float(res.omega), 0.0
+        else:
+            omega = rpm * RPM
+            res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
+            added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
         dcq = None
         if hover_reference:
             d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
-                                                       collective=float(res.collective), air=air, bounds=bounds)
+                                                       collective=math.radians(added), air=air, bounds=bounds)
             dcq = float(d)
     except TrimError as exc:
         raise InputError(f"--thrust: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
+    rpm = omega / RPM if solve_rpm else rpm
     coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm,
                       airspeed=airspeed)
     r = res.loads
     d = _descent_outputs(r)
-    added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
     set_deg = set_collective_deg(params)
-    out = {"collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
+    out = {"solved_for": "rpm" if solve_rpm else "collective", "rpm": rpm,
+           "collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
            "branch": res.branch,
            "solutions_seen": int(res.n_solutions), **{k: float(getattr(r, k)) for k in numeric_keys(params)},
            "CQ": float(r.CQ),
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
            "state": str(d["state"]), "flags": r.flags()}
+    searched = ({"rpm_range": list(rpm_range) if rpm_range is not None else
+                 [w / RPM for w in default_omega_bounds(propeller, air)]} if solve_rpm else {"range_deg": [lo, hi]})
     if as_json:
         echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
-                   "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
-                   "incidence_deg": incidence_deg, "thrust_target": thrust, "range_deg": [lo, hi],
+                   "diameter_m": propeller.diameter, "params": label, "airspeed": airspeed,
+                   "incidence_deg": incidence_deg, "thrust_target": thrust, **searched,
                    "air": {"rho": air.rho, "mu": air.mu,
                                                            "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
-                   "units": {**{k: u for k, u in UNITS.items() if k in out}, "collective_deg": "deg"}})
+                   "units": {**{k: u for k, u in UNITS.items() if k in out}, "collective_deg": "deg",
+                             "rpm": "rpm"}})
         return
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
-    click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
-               + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
-               + f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg added)")
+    if solve_rpm:
+        a, b = searched["rpm_range"]
+        click.echo(f"  {rpm:.1f} rpm ({omega:.4g} rad/s) makes T = {out['thrust']:.4f} N at collective "
+                   f"{set_deg:g} deg ({res.branch}; {out['solutions_seen']} solution(s) seen in [{a:.6g}, {b:.6g}] "
+                   "rpm)")
+    else:
+        click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
+                   + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
+                   + f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg added)")
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
     click.echo(f"  drag D = {out['drag']:.4f} N  rolling moment M_R = {out['rolling_moment']:.5f} N m"
                + (f"  side force Y = {out['side_force']:.4f} N  pitching moment M_P = {out['pitching_moment']:.5f} N m"

@@ -1,8 +1,11 @@
-"""Trim: the collective that makes a given thrust, and the torque change at constant thrust.
+"""Trim: the collective (or the rotation rate) that makes a given thrust, and the torque change
+at constant thrust.
 
 A variable-pitch rotor is flown by its collective: at a given rotation rate and velocity the
 blade-angle offset is set so that the rotor makes the thrust wanted. :func:`trim_collective`
-finds it with the full model (:func:`propmap.rotor_loads` with its ``collective`` input).
+finds it with the full model (:func:`propmap.rotor_loads` with its ``collective`` input). A
+fixed-pitch rotor is flown by its rate: :func:`trim_omega` finds the rate, by the same rule on
+a grid of rates.
 
 Which solution: the thrust need not be monotonic in the collective (past the sections'
 stall it falls again), so T(collective) = T* can have several solutions. The one returned
@@ -35,7 +38,8 @@ from .geometry import Propeller
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, model_air,
                      rotor_loads)
 
-__all__ = ["TrimError", "TrimResult", "trim_collective", "torque_change_at_constant_thrust"]
+__all__ = ["TrimError", "TrimResult", "OmegaTrimResult", "trim_collective", "trim_omega", "default_omega_bounds",
+           "torque_change_at_constant_thrust"]
 
 #: the bracketing grid's default spacing [rad] (narrowed to the bounds' width where they are narrower)
 GRID_STEP = math.radians(2.5)
@@ -43,6 +47,14 @@ GRID_STEP = math.radians(2.5)
 GRID_NODES_MAX = 10_000
 #: the branch :func:`trim_collective` returns, in words (reported with every result)
 BRANCH = "lowest collective that makes the thrust (the first upward crossing on the grid)"
+#: the branch :func:`trim_omega` returns, in words
+OMEGA_BRANCH = "lowest rotation rate that makes the thrust (the first upward crossing on the grid)"
+#: nodes of trim_omega's bracketing grid, spaced geometrically across its bounds
+OMEGA_GRID_NODES = 64
+#: trim_omega's default bounds as tip speeds: from this [m/s] ...
+OMEGA_TIP_SPEED_MIN = 1.0
+#: ... to this Mach number of the air's speed of sound (where the model's Prandtl-Glauert factor stops)
+OMEGA_TIP_MACH_MAX = 0.9
 
 
 class TrimError(ValueError):
@@ -73,6 +85,30 @@ class TrimResult:
     branch: str = BRANCH
 
 
+@dataclass(frozen=True)
+class OmegaTrimResult:
+    """The trimmed rotation rate and the loads there (:func:`trim_omega`).
+
+    Attributes
+    ----------
+    omega : ndarray
+        Rotation rate Omega [rad/s], broadcast shape of the inputs (NaN where no rate in the
+        bounds makes the thrust, with ``on_missing="nan"``).
+    loads : RotorLoads
+        The full model's loads at that rate (same shape).
+    n_solutions : ndarray of int
+        Crossings of the thrust asked for that the rate grid saw (1: a unique solution in
+        the bounds).
+    branch : str
+        Which solution is returned, in words (:data:`OMEGA_BRANCH`).
+    """
+
+    omega: np.ndarray
+    loads: RotorLoads
+    n_solutions: np.ndarray
+    branch: str = OMEGA_BRANCH
+
+
 def _check_bounds(bounds) -> tuple[float, float]:
     try:
         lo, hi = (float(b) for b in bounds)
@@ -87,6 +123,76 @@ def _check_bounds(bounds) -> tuple[float, float]:
 def _where(i: int, shape) -> str:
     """The index of point ``i`` for a message ('' for a single point)."""
     return f"{tuple(int(k) for k in np.unravel_index(i, shape))} " if shape else ""
+
+
+class _RefineFailed(Exception):
+    """The root refinement of :func:`_first_crossing` failed at point ``index`` (SciPy ``status``)."""
+
+    def __init__(self, index: int, status: int):
+        super().__init__(index, status)
+        self.index, self.status = index, status
+
+
+def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: float = 0.0, xrtol: float = 0.0):
+    """The first upward crossing of T* = ``T1`` along ``grid`` for every point (the rule of the
+    module docstring, for the collective or the rotation rate alike).
+
+    ``thrust_at(x, *cols)`` is the thrust [N] at the variable's values ``x`` (shape (k,) or
+    (k, m)) for the points whose ``columns`` (each shape (n,), the other inputs) are ``cols``.
+    Returns ``(x, n_solutions, missing, reach)``: the solution (NaN where missing), the
+    crossings seen, where none is, and (lowest thrust, highest thrust, the variable where it is
+    highest, whether that peak lies inside the grid) per point for messages. Raises
+    _RefineFailed (its point's index and SciPy's status) where the refinement fails.
+    """
+    from scipy.optimize import elementwise
+
+    n, m = T1.size, grid.size
+    Tg = thrust_at(grid[None, :], *(c[:, None] for c in columns)) - T1[:, None]  # (n, m)
+    up = (Tg[:, :-1] <= 0) & (Tg[:, 1:] > 0)  # upward crossings
+    down = (Tg[:, :-1] > 0) & (Tg[:, 1:] <= 0)
+    exact = Tg == 0
+    # (a node that makes the thrust exactly is a solution: a parked rotor's 0 N at every collective counted 0)
+    n_solutions = np.maximum(up.sum(axis=1) + down.sum(axis=1), exact.any(axis=1))
+    missing = ~up.any(axis=1) & ~exact.any(axis=1)
+    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
+    xl, xr = grid[j], grid[j + 1]
+    on_node = exact.any(axis=1) & ~up.any(axis=1)
+    # a thrust the grid misses only near the peak of T(x) (a stalling set): the peak between the grid's neighbours of
+    # its highest node refined first, and where it reaches the thrust, the crossing below it
+    k_top = np.argmax(Tg, axis=1)
+    top, at_top = (Tg + T1[:, None]).max(axis=1), grid[k_top]
+    # (every node below the thrust: one above them all, or below them all, has no peak to refine, a review found)
+    inner = missing & (k_top > 0) & (k_top < m - 1) & (Tg.max(axis=1) < 0)
+    if inner.any():
+        idx, kk = np.flatnonzero(inner), k_top[inner]
+
+        def minus(x, T_, *cols):
+            return T_ - thrust_at(x, *cols)
+
+        peak = elementwise.find_minimum(minus, (grid[kk - 1], grid[kk], grid[kk + 1]),
+                                        args=(T1[idx], *(c[idx] for c in columns)),
+                                        tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=0.1 * thrust_tol, frtol=0.0))
+        top[idx], at_top[idx] = T1[idx] - peak.f_x, peak.x
+        reached = peak.f_x <= 0
+        hit = idx[reached]
+        missing[hit] = False
+        n_solutions[hit] += 2  # (an upward and a downward crossing about the peak)
+        xl[hit], xr[hit] = grid[kk[reached] - 1], peak.x[reached]
+    reach = ((Tg + T1[:, None]).min(axis=1), top, at_top, inner)
+    x = np.full(n, np.nan)
+    x[on_node] = grid[np.argmax(exact[on_node], axis=1)]
+    todo = ~on_node & ~missing
+    if todo.any():
+        def f(x_, T_, *cols):
+            return thrust_at(x_, *cols) - T_
+
+        res = elementwise.find_root(f, (xl[todo], xr[todo]), args=(T1[todo], *(c[todo] for c in columns)),
+                                    tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=thrust_tol, frtol=0.0))
+        if not np.all(res.success):
+            k = int(np.argmax(~res.success))
+            raise _RefineFailed(int(np.flatnonzero(todo)[k]), int(res.status[k]))
+        x[todo] = res.x
+    return x, n_solutions, missing, reach
 
 
 def trim_collective(
@@ -148,8 +254,6 @@ def trim_collective(
         The inflow solve failed at some collective (the message names where).
     """
     air = model_air(params, air)
-    from scipy.optimize import elementwise
-
     if on_missing not in ("raise", "nan"):
         raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
     lo, hi = _check_bounds(bounds)
@@ -174,71 +278,33 @@ def trim_collective(
         raise ValueError(f"thrust, omega, airspeed and incidence must broadcast together: {exc}") from None
     shape = T_star.shape
     T1, om1, V1, b1 = (np.ascontiguousarray(a.reshape(-1)) for a in (T_star, om, V, b))
-    n = T1.size
 
     m = max(2, int(math.ceil((hi - lo) / grid_step)) + 1)
     grid = np.linspace(lo, hi, m)
     kw = dict(air=air, discretization=discretization)
-    Tg = rotor_loads(propeller, params, om1[:, None], V1[:, None], b1[:, None], collective=grid[None, :],
-                     **kw).thrust - T1[:, None]  # (n, m)
-    up = (Tg[:, :-1] <= 0) & (Tg[:, 1:] > 0)  # upward crossings
-    down = (Tg[:, :-1] > 0) & (Tg[:, 1:] <= 0)
-    exact = Tg == 0
-    # (a node that makes the thrust exactly is a solution: a parked rotor's 0 N at every collective counted 0)
-    n_solutions = np.maximum(up.sum(axis=1) + down.sum(axis=1), exact.any(axis=1))
-    missing = ~up.any(axis=1) & ~exact.any(axis=1)
-    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
-    xl, xr = grid[j], grid[j + 1]
-    on_node = exact.any(axis=1) & ~up.any(axis=1)
-    # a thrust the grid misses only near the peak of T(collective) (a stalling set): the peak between the grid's
-    # neighbours of its highest node refined first, and where it reaches the thrust, the crossing below it
-    k_top = np.argmax(Tg, axis=1)
-    top, at_top = (Tg + T1[:, None]).max(axis=1), grid[k_top]
-    # (every node below the thrust: one above them all, or below them all, has no peak to refine, a review found)
-    inner = missing & (k_top > 0) & (k_top < m - 1) & (Tg.max(axis=1) < 0)
-    if inner.any():
-        idx, kk = np.flatnonzero(inner), k_top[inner]
 
-        def minus(c, om_, V_, b_, T_):
-            return T_ - rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust
+    def thrust_at(c, om_, V_, b_):
+        return rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust
 
-        peak = elementwise.find_minimum(minus, (grid[kk - 1], grid[kk], grid[kk + 1]),
-                                        args=(om1[idx], V1[idx], b1[idx], T1[idx]),
-                                        tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=0.1 * thrust_tol, frtol=0.0))
-        top[idx], at_top[idx] = T1[idx] - peak.f_x, peak.x
-        reached = peak.f_x <= 0
-        hit = idx[reached]
-        missing[hit] = False
-        n_solutions[hit] += 2  # (an upward and a downward crossing about the peak)
-        xl[hit], xr[hit] = grid[kk[reached] - 1], peak.x[reached]
+    try:
+        x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (om1, V1, b1), thrust_tol, xatol=1e-10)
+    except _RefineFailed as exc:
+        i = exc.index
+        raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
+                        f"(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, thrust={T1[i]:.6g} N; scipy status "
+                        f"{exc.status})") from None
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
-        stalls = bool(inner[i])  # short of the target at a peak inside
-        peak_at = (f", highest near a collective of {round(math.degrees(at_top[i]), 4) + 0.0:.4g} deg, where the set "
+        low, top, at_top, stalls = reach[0][i], reach[1][i], reach[2][i], bool(reach[3][i])
+        peak_at = (f", highest near a collective of {round(math.degrees(at_top), 4) + 0.0:.4g} deg, where the set "
                    "stalls (docs/models.md, Collective pitch as an input, and trim)") if stalls else ""
-        if top[i] > 0 and T1[i] > 10 * top[i]:  # (a thrust in gf: 300 for 2.9 N got the stall's diagnosis)
-            peak_at = f": {T1[i] / top[i]:.3g} times the most it reaches; is the thrust in grams? It is in N"
+        if top > 0 and T1[i] > 10 * top:  # (a thrust in gf: 300 for 2.9 N got the stall's diagnosis)
+            peak_at = f": {T1[i] / top:.3g} times the most it reaches; is the thrust in grams? It is in N"
         raise TrimError(
             f"no collective in [{math.degrees(lo):.4g}, {math.degrees(hi):.4g}] deg makes thrust={T1[i]:.6g} N at "
             f"operating point {_where(i, shape)}(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, "
             f"airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg): the thrust there spans "
-            f"[{(Tg[i] + T1[i]).min():.6g}, {top[i]:.6g}] N{peak_at}")
-    x = np.full(n, np.nan)
-    x[on_node] = grid[np.argmax(exact[on_node], axis=1)]
-    todo = ~on_node & ~missing
-    if todo.any():
-        def f(c, om_, V_, b_, T_):
-            return rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust - T_
-
-        res = elementwise.find_root(f, (xl[todo], xr[todo]), args=(om1[todo], V1[todo], b1[todo], T1[todo]),
-                                    tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=thrust_tol, frtol=0.0))
-        if not np.all(res.success):
-            k = int(np.argmax(~res.success))
-            i = int(np.flatnonzero(todo)[k])
-            raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
-                            f"(omega={om1[i]:.6g} rad/s = {om1[i] / RPM:.6g} rpm, thrust={T1[i]:.6g} N; "
-                            f"scipy status {int(res.status[k])})")
-        x[todo] = res.x
+            f"[{low:.6g}, {top:.6g}] N{peak_at}")
     ok = ~missing
     loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=np.where(ok, x, 0.0).reshape(shape), **kw)
@@ -247,6 +313,153 @@ def trim_collective(
         for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean"):
             np.asarray(getattr(loads, f))[bad] = np.nan
     return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
+
+
+def default_omega_bounds(propeller: Propeller, air: Air) -> tuple[float, float]:
+    """:func:`trim_omega`'s default bounds [rad/s]: the rates of a tip speed of
+    OMEGA_TIP_SPEED_MIN (1 m/s) and of OMEGA_TIP_MACH_MAX (0.9) of ``air``'s speed of sound,
+    the latter at most the solver's 1e5 rad/s."""
+    from .solver import OMEGA_MAX
+
+    return (OMEGA_TIP_SPEED_MIN / propeller.radius,
+            min(OMEGA_TIP_MACH_MAX * air.speed_of_sound / propeller.radius, OMEGA_MAX))
+
+
+def trim_omega(
+    propeller: Propeller,
+    params: SectionParams,
+    thrust,
+    airspeed=0.0,
+    incidence=0.0,
+    *,
+    collective=None,
+    air: Air | None = None,
+    discretization: Discretization = DEFAULT_DISCRETIZATION,
+    bounds=None,
+    thrust_tol: float = 1e-6,
+    on_missing: str = "raise",
+) -> OmegaTrimResult:
+    """The rotation rate at which the rotor makes ``thrust`` (a fixed-pitch rotor's trim:
+    the hover rpm of a given load, or the rpm that makes a thrust in climb, edgewise flight
+    or descent).
+
+    The rule is :func:`trim_collective`'s with Omega for the collective: the thrust is
+    tabulated on OMEGA_GRID_NODES rates spaced geometrically across ``bounds``, the first
+    upward crossing of T* is bracketed and refined by Chandrupatla's method, and a peak
+    between the grid's nodes is refined where the grid misses T* (module docstring). In
+    still air and in climb the thrust rises with Omega from a windmilling rotor's (negative
+    in climb) and the solution is unique; in descent the flow alone makes thrust on a slowly
+    turning rotor, so a thrust below that has no solution on the rising branch and the
+    vortex-ring state can add crossings (``n_solutions`` counts them).
+
+    Parameters
+    ----------
+    propeller : Propeller
+    params : AirfoilParams or CamberedParams
+    thrust : float or array_like
+        The thrust wanted T* [N], finite.
+    airspeed, incidence : float or array_like
+        V [m/s] and beta [rad] as in :func:`propmap.rotor_loads`; broadcast with ``thrust``
+        and ``collective``.
+    collective : float or array_like, optional
+        Blade-angle offset [rad] (added to ``params.collective``), as in
+        :func:`propmap.rotor_loads`.
+    air : Air, optional
+        Default: the parameter set's own (``.air``).
+    discretization : Discretization, optional
+    bounds : (float, float), optional
+        The rates searched [rad/s], 0 < low < high <= 1e5; default the rates of a tip speed
+        of OMEGA_TIP_SPEED_MIN (1 m/s) to OMEGA_TIP_MACH_MAX (0.9) of the air's speed of
+        sound.
+    thrust_tol : float
+        Absolute tolerance on T [N] (default 1e-6 N); Omega is also converged to 1e-12 of
+        itself.
+    on_missing : {"raise", "nan"}
+        Where no rate in ``bounds`` makes the thrust: raise TrimError (default), or return
+        NaN rate and loads there (``n_solutions`` 0 tells them).
+
+    Returns
+    -------
+    OmegaTrimResult
+        ``omega`` [rad/s] and ``loads`` at it, of the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        A bad argument (the message names it and its range).
+    TrimError
+        At some point no rate in ``bounds`` makes the thrust: the message names the point and
+        the thrust range the bounds reach there.
+    propmap.SolverError
+        The inflow solve failed at some rate.
+
+    Warns
+    -----
+    UserWarning
+        The solution's blade tips meet the air beyond Mach 0.8 (as :func:`propmap.rotor_loads`;
+        the search itself does not warn).
+    """
+    from .solver import OMEGA_MAX, supersonic_tips_allowed
+
+    air = model_air(params, air)
+    if on_missing not in ("raise", "nan"):
+        raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
+    if bounds is None:
+        bounds = default_omega_bounds(propeller, air)
+    try:
+        lo, hi = (float(b) for b in bounds)
+    except (TypeError, ValueError):
+        raise ValueError(f"bounds must be two rotation rates [rad/s], got {bounds!r}") from None
+    if not (0 < lo < hi <= OMEGA_MAX):
+        raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
+    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
+        raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
+    T_star = np.asarray(thrust)
+    if T_star.dtype.kind not in "iuf":
+        raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
+    if not np.all(np.isfinite(T_star)):
+        raise ValueError("thrust must be finite [N]")
+    try:
+        T_star, V, b, c = np.broadcast_arrays(T_star.astype(float), *(np.asarray(a, float) for a in (
+            airspeed, incidence, 0.0 if collective is None else collective)))
+    except ValueError as exc:
+        raise ValueError(f"thrust, airspeed, incidence and collective must broadcast together: {exc}") from None
+    shape = T_star.shape
+    T1, V1, b1, c1 = (np.ascontiguousarray(a.reshape(-1)) for a in (T_star, V, b, c))
+    grid = np.geomspace(lo, hi, OMEGA_GRID_NODES)
+    kw = dict(air=air, discretization=discretization)
+
+    def thrust_at(om, V_, b_, c_):
+        return rotor_loads(propeller, params, om, V_, b_, collective=c_, **kw).thrust
+
+    try:
+        with supersonic_tips_allowed():  # the grid's top reaches Mach 0.9 on purpose: the answer is checked below
+            x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (V1, b1, c1), thrust_tol,
+                                                             xrtol=1e-12)
+    except _RefineFailed as exc:
+        i = exc.index
+        raise TrimError(f"the rotation-rate refinement did not converge at operating point {_where(i, shape)}"
+                        f"(thrust={T1[i]:.6g} N, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} "
+                        f"deg; scipy status {exc.status})") from None
+    if missing.any() and on_missing == "raise":
+        i = int(np.argmax(missing))
+        low, top = reach[0][i], reach[1][i]
+        why = (f" (the rotor makes T <= {top:.6g} N up to tip Mach {hi * propeller.radius / air.speed_of_sound:.2g}:"
+               " is the thrust in grams? It is in N)" if T1[i] > top else
+               " (in descent the flow alone makes that much on a slowly turning rotor)" if T1[i] < low else "")
+        raise TrimError(
+            f"no rotation rate in [{lo:.6g}, {hi:.6g}] rad/s ({lo / RPM:.6g}-{hi / RPM:.6g} rpm) makes "
+            f"thrust={T1[i]:.6g} N at operating point {_where(i, shape)}(airspeed={V1[i]:.6g} m/s, "
+            f"incidence={math.degrees(b1[i]):.6g} deg, collective={math.degrees(c1[i]):.6g} deg): the thrust there "
+            f"spans [{low:.6g}, {top:.6g}] N{why}")
+    ok = ~missing
+    loads = rotor_loads(propeller, params, np.where(ok, x, lo).reshape(shape), V1.reshape(shape), b1.reshape(shape),
+                        collective=None if collective is None else c1.reshape(shape), **kw)
+    if not ok.all():  # NaN loads where no rate makes the thrust
+        bad = ~ok.reshape(shape)
+        for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean", "omega"):
+            np.asarray(getattr(loads, f))[bad] = np.nan
+    return OmegaTrimResult(omega=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
 
 
 def torque_change_at_constant_thrust(
