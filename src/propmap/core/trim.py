@@ -125,6 +125,19 @@ def _where(i: int, shape) -> str:
     return f"{tuple(int(k) for k in np.unravel_index(i, shape))} " if shape else ""
 
 
+def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
+    """The thrust wanted as a float array, and its tolerance, checked (ValueError naming each)."""
+    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
+        raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
+    T_star = np.asarray(thrust)
+    if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
+        raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
+    T_star = T_star.astype(float)
+    if not np.all(np.isfinite(T_star)):
+        raise ValueError("thrust must be finite [N]")
+    return T_star
+
+
 class _RefineFailed(Exception):
     """The root refinement of :func:`_first_crossing` failed at point ``index`` (SciPy ``status``)."""
 
@@ -263,14 +276,7 @@ def trim_collective(
             and (hi - lo) / GRID_NODES_MAX <= grid_step <= hi - lo):
         raise ValueError(f"grid_step must be in [{(hi - lo) / GRID_NODES_MAX:.6g}, {hi - lo:.6g}] rad (the bounds' "
                          f"width over 1 to {GRID_NODES_MAX:,} steps), got {grid_step!r}")
-    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
-        raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
-    T_star = np.asarray(thrust)
-    if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
-        raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
-    T_star = T_star.astype(float)
-    if not np.all(np.isfinite(T_star)):
-        raise ValueError("thrust must be finite [N]")
+    T_star = _checked_thrust(thrust, thrust_tol)
     # the operating points are checked by rotor_loads; broadcast them with the thrust here
     try:
         T_star, om, V, b = np.broadcast_arrays(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
@@ -412,15 +418,9 @@ def trim_omega(
         raise ValueError(f"bounds must be two rotation rates [rad/s], got {bounds!r}") from None
     if not (0 < lo < hi <= OMEGA_MAX):
         raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
-    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
-        raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
-    T_star = np.asarray(thrust)
-    if T_star.dtype.kind not in "iuf":
-        raise ValueError(f"thrust must be a number or an array of numbers [N], got {thrust!r:.60}")
-    if not np.all(np.isfinite(T_star)):
-        raise ValueError("thrust must be finite [N]")
+    T_star = _checked_thrust(thrust, thrust_tol)
     try:
-        T_star, V, b, c = np.broadcast_arrays(T_star.astype(float), *(np.asarray(a, float) for a in (
+        T_star, V, b, c = np.broadcast_arrays(T_star, *(np.asarray(a, float) for a in (
             airspeed, incidence, 0.0 if collective is None else collective)))
     except ValueError as exc:
         raise ValueError(f"thrust, airspeed, incidence and collective must broadcast together: {exc}") from None
