@@ -37,7 +37,7 @@ import numba
 import numpy as np
 
 import propmap as pm
-from propmap.core import _annulus
+from propmap.core import _annulus, _physics
 from propmap.core._reference import solve_reference
 from propmap.core.nodes import _nodes
 from propmap.io.atomic import atomic_write
@@ -113,8 +113,10 @@ def simd_widths():
     fresh = numba.njit(error_model="numpy", fastmath=_annulus._FM)(_annulus._residual.py_func)
     # the dispatcher loaded from the disk cache holds no IR: compile a copy for one call
     psi = np.linspace(-1.0, 1.0, 16)
+    pk = np.zeros(_physics.N_PK)  # (the section constants, then the options' switches off)
+    pk[:8] = 0.5
     fresh(1.0, 0.1, 0.1, 0.1, (0.1, 0.1, 0.1), (0.1, 0.1, 0.1, 0.1), 0.1, 0.1, 0.1, np.stack([psi, psi]), 0.0, 0.0, 16,
-          0, np.full(8, 0.5), False)
+          0, pk, False, 0.0)
     ir = "".join(fresh.inspect_llvm().values())
     return sorted({int(w) for w in re.findall(r"<(\d+) x double>", ir)})
 

@@ -1,0 +1,23 @@
+"""The benchmarks' own code against the package it measures (not a timing: benchmarks/README.md
+gives those). `make bench` failed at its first step, bench_solver's SIMD probe calling the
+residual without its newest argument (found 2026-11-27; the figures it reports had not been
+re-measured since the signature changed)."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
+
+
+def _module(name: str):
+    spec = importlib.util.spec_from_file_location(name, BENCHMARKS / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_solver_benchmarks_simd_probe_compiles_the_residual_as_the_kernel_calls_it():
+    widths = _module("bench_solver").simd_widths()
+    assert widths and set(widths) <= {2, 4, 8}  # doubles per vector: SSE2, AVX2, AVX-512
