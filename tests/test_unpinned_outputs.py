@@ -319,29 +319,3 @@ def test_validate_files_percent_units_and_convergence(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "9.09%    -9.09%     9.22%     3        5.26%    +5.26%     5.27%     3" in out
     assert "torque 0.002584 N m" in out and "did not converge" not in out
-
-
-def test_validate_legacy_coverage_checks_the_data_digest(tmp_path, capsys):
-    prop = pm.load_propeller("apce_8x6")
-    truth = pm.default_params("apce_8x6")
-    rows = ["rpm,airspeed,thrust (N),torque (N m),group"]
-    for rpm, group in ((3000.0, "s0"), (4000.0, "s0"), (5000.0, "s1"), (6000.0, "s1"), (7000.0, "s2"), (8000.0, "s2")):
-        for V in (0.0, 4.0, 8.0):
-            r = pm.rotor_loads(prop, truth, rpm * math.pi / 30, V, 0.0)
-            rows.append(f"{rpm},{V},{float(r.thrust)!r},{float(r.torque)!r},{group}")
-    f = tmp_path / "runs.csv"
-    f.write_text("\n".join(rows) + "\n")
-    out = tmp_path / "p.toml"
-    assert main(["fit", "loads", str(f), "--prop", "apce_8x6", "--holdout", "s2", "--out", str(out)]) == 0
-    legacy = tmp_path / "legacy.toml"
-    legacy.write_text(
-        re.sub(r"(?ms)^files_sha256 = \[.*?\]\n", "", out.read_text())
-    )  # a file written before files_sha256
-    (tmp_path / "otherday").mkdir()
-    od = tmp_path / "otherday" / "runs.csv"
-    od.write_text(f.read_text().replace("\n3000.0,0.0,", "\n3000.0,0.0,1", 1))
-    capsys.readouterr()
-    assert main(["validate", str(f), "--prop", "apce_8x6", "--params", str(legacy)]) == 0
-    assert "s0 (fitted)" in capsys.readouterr().out
-    assert main(["validate", str(od), "--prop", "apce_8x6", "--params", str(legacy)]) == 0
-    assert "(fitted)" not in capsys.readouterr().out

@@ -446,11 +446,8 @@ def test_a_two_blade_uiuc_run_used_with_three_blades_is_warned(capsys, shared_da
     assert "blade" not in capsys.readouterr().err
 
 
-def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
-    """A fit's [coverage] records its data and the groups it fitted and held out; `validate` on
-    the same data labels them (its in-sample rows are the fit's residual, not a held-out error)."""
-    from propmap.io.params_file import read_coverage
-
+def _fitted_runs(tmp_path):
+    """(runs.csv: three groups of apce_8x6's own loads, p.toml: its fit holding s2 out)."""
     prop = pm.load_propeller("apce_8x6")
     truth = pm.default_params("apce_8x6")
     rows = ["rpm,airspeed,thrust (N),torque (N m),group"]
@@ -462,6 +459,15 @@ def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
     f.write_text("\n".join(rows) + "\n")
     out = tmp_path / "p.toml"
     assert main(["fit", "loads", str(f), "--prop", "apce_8x6", "--holdout", "s2", "--out", str(out)]) == 0
+    return f, out
+
+
+def test_validate_says_which_groups_a_parameter_files_fit_saw(tmp_path, capsys):
+    """A fit's [coverage] records its data and the groups it fitted and held out; `validate` on
+    the same data labels them (its in-sample rows are the fit's residual, not a held-out error)."""
+    from propmap.io.params_file import read_coverage
+
+    f, out = _fitted_runs(tmp_path)
     cov = read_coverage(out)
     assert cov["data"] == "runs.csv" and cov["groups"] == ("s0", "s1") and cov["held_out"] == ("s2",)
     capsys.readouterr()
@@ -1174,3 +1180,19 @@ def test_a_points_file_with_a_blade_pitch_column_under_another_name_is_refused(t
     assert "column 'pitch (deg)' looks like a blade pitch setting" in capsys.readouterr().err
     pts.write_text("rpm,airspeed,incidence_deg,pitch (in)\n5000,0,0,7\n")
     assert main(["loads", "apce_10x7", "--points", str(pts), "--out", str(tmp_path / "o.csv")]) == 0
+
+
+def test_validate_with_an_older_parameter_file_checks_the_data_digest(tmp_path, capsys):
+    """A parameter file written before files_sha256: the fit's groups are labelled only where the
+    file's data are the same (a mutation audit, 2026-11-27: the digest check removed passed)."""
+    f, out = _fitted_runs(tmp_path)
+    legacy = tmp_path / "legacy.toml"
+    legacy.write_text(re.sub(r"(?ms)^files_sha256 = \[.*?\]\n", "", out.read_text()))
+    (tmp_path / "otherday").mkdir()
+    od = tmp_path / "otherday" / "runs.csv"
+    od.write_text(f.read_text().replace("\n3000.0,0.0,", "\n3000.0,0.0,1", 1))
+    capsys.readouterr()
+    assert main(["validate", str(f), "--prop", "apce_8x6", "--params", str(legacy)]) == 0
+    assert "s0 (fitted)" in capsys.readouterr().out
+    assert main(["validate", str(od), "--prop", "apce_8x6", "--params", str(legacy)]) == 0
+    assert "(fitted)" not in capsys.readouterr().out
