@@ -35,8 +35,8 @@ import numpy as np
 from .units import RPM
 from .airfoil import Air, SectionParams
 from .geometry import Propeller
-from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, model_air,
-                     rotor_loads)
+from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads, model_air,
+                     rotor_loads, supersonic_tips_allowed)
 
 __all__ = ["TrimError", "TrimResult", "OmegaTrimResult", "trim_collective", "trim_omega", "default_omega_bounds",
            "torque_change_at_constant_thrust"]
@@ -322,11 +322,21 @@ def trim_collective(
 
 
 def default_omega_bounds(propeller: Propeller, air: Air) -> tuple[float, float]:
-    """:func:`trim_omega`'s default bounds [rad/s]: the rates of a tip speed of
-    OMEGA_TIP_SPEED_MIN (1 m/s) and of OMEGA_TIP_MACH_MAX (0.9) of ``air``'s speed of sound,
-    the latter at most the solver's 1e5 rad/s."""
-    from .solver import OMEGA_MAX
+    """:func:`trim_omega`'s default bounds: the rates of a tip speed of OMEGA_TIP_SPEED_MIN
+    (1 m/s) and of OMEGA_TIP_MACH_MAX (0.9) of ``air``'s speed of sound.
 
+    Parameters
+    ----------
+    propeller : Propeller
+        Its radius R [m] turns the tip speeds into rates.
+    air : Air
+        Its speed of sound [m/s].
+
+    Returns
+    -------
+    (float, float)
+        Omega low and high [rad/s], the high one at most the solver's OMEGA_MAX (1e5 rad/s).
+    """
     return (OMEGA_TIP_SPEED_MIN / propeller.radius,
             min(OMEGA_TIP_MACH_MAX * air.speed_of_sound / propeller.radius, OMEGA_MAX))
 
@@ -405,8 +415,6 @@ def trim_omega(
         The solution's blade tips meet the air beyond Mach 0.8 (as :func:`propmap.rotor_loads`;
         the search itself does not warn).
     """
-    from .solver import OMEGA_MAX, supersonic_tips_allowed
-
     air = model_air(params, air)
     if on_missing not in ("raise", "nan"):
         raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")

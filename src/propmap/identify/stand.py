@@ -164,8 +164,20 @@ def _token(unit: str) -> str:
 
 
 def split_header(name: str) -> tuple[str, str | None]:
-    """(quantity text, unit text or None) of a column name: ``Thrust (kgf)``, ``thrust [N]``,
-    ``Thrust, N``, ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one."""
+    """The quantity and the unit of a column name: ``Thrust (kgf)``, ``thrust [N]``,
+    ``Thrust, N``, ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one.
+
+    Parameters
+    ----------
+    name : str
+        A CSV header's column name, as written.
+
+    Returns
+    -------
+    (str, str or None)
+        The quantity's text in lower case (blanks trimmed) and the unit as written, or None
+        where the name carries none.
+    """
     name = name.strip()
     m = re.fullmatch(r"(.*?)\s*[(\[]([^()\[\]]*)[)\]]\s*", name)
     if m:
