@@ -53,11 +53,17 @@ COMPLIANCE = "flap_compliance"
 
 
 class FlapResult(NamedTuple):
-    """Loads of a flapping rotor (arrays of the input shape).
+    """Loads of a flapping rotor (arrays of the input shape S).
 
-    drag, side_force [N], rolling_moment, pitching_moment [N m]: as RotorLoads, with the
-    tilted thrust and the spring moments; beta_1c, beta_1s [rad]: the longitudinal and
-    lateral flapping (beta_1c < 0: tip-path plane tilted away from the in-plane motion).
+    Attributes
+    ----------
+    drag, side_force : ndarray
+        [N], as :class:`RotorLoads`, with the thrust tilted by the flapping.
+    rolling_moment, pitching_moment : ndarray
+        [N m], as :class:`RotorLoads`, the flap springs' moments.
+    beta_1c, beta_1s : ndarray
+        [rad] the longitudinal and lateral flapping (beta_1c < 0: tip-path plane tilted
+        away from the in-plane motion).
     """
 
     drag: np.ndarray

@@ -35,9 +35,17 @@ COVERAGE_TEXT_MAX, COVERAGE_LIST_MAX = 1000, 100_000
 
 
 class BodyTable(NamedTuple):
-    """A parameter file's ``[body]`` table: the airframe drag (core/body.BodyDrag), the
-    centre of mass [m] (shape (3,)) and the rotor interference factor [-] (each of the last
-    two None when the table has none)."""
+    """A parameter file's ``[body]`` table.
+
+    Attributes
+    ----------
+    drag : BodyDrag
+        The airframe drag (core/body.BodyDrag).
+    centre_of_mass : ndarray of shape (3,) or None
+        The centre of mass [m] in the vehicle frame; None when the table has none.
+    rotor_interference : float or None
+        The rotor interference factor [-]; None when the table has none.
+    """
 
     drag: object
     centre_of_mass: object

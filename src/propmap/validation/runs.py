@@ -242,7 +242,23 @@ def holdout_comparison(entry: CatalogueEntry, propeller: Propeller, fitted: Sect
                        discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """Held-out CT and CP errors of a fitted model, a baseline parameter set and the hover model.
 
-    The hover model uses the measured static CT and CP. ``holdout`` names UIUC run ids.
+    The hover model uses the measured static CT and CP.
+
+    Parameters
+    ----------
+    entry : CatalogueEntry
+        Gives the measurements (UIUC static runs and J-sweeps).
+    propeller : Propeller
+        The geometry to use (normally ``load_propeller(entry.name)``).
+    fitted, baseline : AirfoilParams or CamberedParams
+        The fitted set and the set it is compared with (e.g. the generic set).
+    holdout : iterable of str
+        The UIUC run ids whose errors are pooled (the runs the fit did not see); duplicates
+        are read once.
+    air : Air, optional
+        Default: the fitted set's own (``.air``); used for both sets.
+    discretization : Discretization, optional
+        The model's radial and azimuthal nodes (default 48 x 16).
 
     Returns
     -------
