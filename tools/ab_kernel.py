@@ -11,6 +11,7 @@ apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set)
 
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] [--serial]   # ~2 min for 30 rounds
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial]
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --single   # ~1 min for 30 rounds
 
 ``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
 raised above the batch) instead of the parallel one on one thread. ``--derivatives`` times
@@ -18,7 +19,9 @@ the implicit derivatives instead, on benchmarks/bench_derivatives.py's batch (2,
 apce_8x6, generic set, a fifth axial; or all forward-flight or all axial): the loads alone,
 with the three inputs' derivatives, with the collective too and with the 8 section
 parameters, each tree's ratio to its loads and the paired new / old of each (~2 min for 10
-rounds).
+rounds). ``--single`` times one scalar call (bench_everyday.py's point: 8000 rpm, 10 m/s, 45 deg,
+the paper's Table I set and the generic set), the median of 200 calls per tree and round: the
+wrapper's cost, which the kernel's spread between processes hides.
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -103,8 +106,35 @@ def derivatives_ab(trees: dict, rounds: int, batch: str) -> None:
               f"{1e3 * np.median(bb):.1f} ms ({np.median(rb):.3f}x); B / A paired median {np.median(bb / a):.3f}")
 
 
+def single_ab(trees: dict, rounds: int) -> None:
+    """The paired timing of one scalar ``rotor_loads`` call (``--single``)."""
+    om, V, b = 8000 * np.pi / 30, 10.0, np.radians(45.0)
+    for label in ("paper", "generic"):
+        args = {}
+        for k, pm in trees.items():
+            use(pm)
+            args[k] = (pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc") if label == "paper" else
+                       pm.generic_params())
+            pm.rotor_loads(*args[k], om, V, b)
+        t = {"A": [], "B": []}
+        for i in range(rounds):
+            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+                use(trees[k])
+                f, a = trees[k].rotor_loads, args[k]
+                calls = []
+                for _ in range(200):
+                    t0 = time.perf_counter()
+                    f(*a, om, V, b)
+                    calls.append(time.perf_counter() - t0)
+                t[k].append(np.median(calls))
+        a, bb = np.array(t["A"]), np.array(t["B"])
+        q = np.percentile(bb / a, [25, 50, 75])
+        print(f"one call, {label} set: A {1e6 * np.median(a):.2f} us, B {1e6 * np.median(bb):.2f} us; B - A "
+              f"{1e6 * np.median(bb - a):+.2f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+
+
 def main() -> None:
-    flags = ("--serial", "--derivatives", "forward", "axial")
+    flags = ("--serial", "--derivatives", "forward", "axial", "--single")
     argv = [a for a in sys.argv[1:] if a not in flags]
     if len(argv) < 2:
         raise SystemExit(__doc__)
@@ -114,6 +144,9 @@ def main() -> None:
     rounds = int(argv[2]) if len(argv) > 2 else 30
     if "--derivatives" in sys.argv:
         derivatives_ab(trees, rounds, next((a for a in ("forward", "axial") if a in sys.argv), "mixed"))
+        return
+    if "--single" in sys.argv:
+        single_ab(trees, rounds)
         return
     rng = np.random.default_rng(5)
     n = 4000

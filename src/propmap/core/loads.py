@@ -342,10 +342,10 @@ _FRAME_UNITS = {"omega": "rad/s", "airspeed": "m/s", "incidence": "rad", "thrust
                 "inflow_extrapolated": "-", "n_evaluations": "-", "state": "-"}
 
 
-def _new_loads(**kw) -> RotorLoads:
-    """A RotorLoads from all its fields, without the frozen dataclass's per-field
+def _new_loads(fields: dict) -> RotorLoads:
+    """A RotorLoads from a dict of all its fields, without the frozen dataclass's per-field
     ``object.__setattr__`` (a few microseconds of a single point's call); the fields must be
     exactly :class:`RotorLoads`'s (checked by tests/test_invariants.py)."""
     obj = object.__new__(RotorLoads)
-    obj.__dict__.update(kw)
+    obj.__dict__.update(fields)
     return obj

@@ -102,6 +102,34 @@ _RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "
 
 #: a 1-element array's 0-d view (a[0, ...])
 _ZERO_D = operator.itemgetter((0, Ellipsis))
+#: the result's fields that are rows of the kernel's packed outputs: (row, field) of ``out``, ``counts`` and
+#: ``flags`` (core/_kernel.solve_batch; out's row 9, the in-plane ratio m, and counts' rows 0-2 are not returned)
+_OUT_FIELDS = ((0, "thrust"), (1, "drag"), (2, "torque"), (3, "rolling_moment"), (4, "side_force"),
+               (5, "pitching_moment"), (6, "v_i_mean"), (7, "v_h"), (8, "descent_ratio"), (10, "reverse_flow_radius"))
+_COUNTS_FIELDS = ((3, "n_evaluations"), (4, "state"))
+_FLAGS_FIELDS = ((0, "converged"), (1, "vortex_ring"), (2, "multiple_roots"), (3, "reverse_flow"),
+                 (4, "inflow_extrapolated"))
+_ROW_FIELDS = tuple(f for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS) for _, f in fields)
+#: each packed output's rows (1-d views) and, for one point, their 0-d views: one C-level call per array
+_ROWS = tuple(operator.itemgetter(*(i for i, _ in fields)) for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS))
+_ROWS_0D = tuple(operator.itemgetter(*((i, 0, Ellipsis) for i, _ in fields))
+                 for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS))
+#: one point's inputs as 1-element views of one array (omega, V, beta, collective, V_s, V_c)
+_ONE_POINT = operator.itemgetter(*(slice(i, i + 1) for i in range(6)))
+#: the per-annulus fields, None unless ``radial``
+_NO_RADIAL = dict.fromkeys(("v_i", "dT_dr", "dD_dr", "dQ_dr", "dMR_dr", "dY_dr", "dMP_dr"))
+
+
+def _row_fields(shape: tuple, out: np.ndarray, counts: np.ndarray, flags: np.ndarray) -> dict:
+    """The result's fields that are rows of the kernel's packed outputs, as views shaped ``shape``
+    (for one point 0-d views, got by three C-level getters: a third of the cost of one per field)."""
+    if shape == ():
+        rows = _ROWS_0D[0](out) + _ROWS_0D[1](counts) + _ROWS_0D[2](flags)
+    else:
+        rows = _ROWS[0](out) + _ROWS[1](counts) + _ROWS[2](flags)
+        if len(shape) != 1:
+            rows = [a.reshape(shape) for a in rows]
+    return dict(zip(_ROW_FIELDS, rows))
 
 
 def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
@@ -413,7 +441,7 @@ def rotor_loads(
         if abs(vs0) < 1e-12 * max(v0, 1e-300):  # exact axial flow at beta = 0, pi
             vs0 = 0.0
         x = np.array([w0, v0, b0, 0.0 if collective is None else _scalar("collective", collective), vs0, vc0])
-        om1, V1, b1, c1, Vs, Vc = x[0:1], x[1:2], x[2:3], x[3:4], x[4:5], x[5:6]  # one-point views
+        om1, V1, b1, c1, Vs, Vc = _ONE_POINT(x)  # one-point views
         tip = math.hypot(w0 * propeller.radius + abs(vs0), vc0)  # the blade tip's airspeed, for the Mach check
     else:
         arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
@@ -452,10 +480,10 @@ def rotor_loads(
         # not warn at every step)
         hint = "; is omega given in rpm? it is in rad/s (rpm * pi / 30)" if mach > 0.9 else ""
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.2g} (> {TIP_MACH_WARN:g}): {said}{hint}", UserWarning, stacklevel=2)
-    wrt = _derivative_inputs(derivatives, params)
+    wrt = () if derivatives is False else _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")
-    if getattr(params, "dynamic_stall", 0.0) > 0.0 and ({"incidence", "airspeed", STILL_AIR} & set(wrt)):
+    if wrt and getattr(params, "dynamic_stall", 0.0) > 0.0 and ({"incidence", "airspeed", STILL_AIR} & set(wrt)):
         _warn_dynamic_stall_cusp(V1, Vs, b1, wrt)
     keep_radial = radial or bool(wrt)  # the derivatives need the roots
     om_in = om1
@@ -470,7 +498,6 @@ def rotor_loads(
     counts = np.empty((_kernel.N_COUNTS, n), dtype=np.int64)  # status, multiple, in vortex ring, evaluations, state
     flags = np.empty((_kernel.N_FLAGS, n), dtype=np.bool_)  # converged, vortex ring, multiple, reverse, extrapolated
     # (row 1 of counts, the annuli with multiple roots, is read by point_flags; row 2, those in vortex ring, unused)
-    (T, D, Q, R, Y, P, vbar, v_h, k_desc, _, rfr), (status, _, _, nev, state) = out, counts
     # a small batch runs on the calling thread: starting the parallel region would cost more
     # than the work (and a single call need not load the thread pool at all). The kernel also
     # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
@@ -478,6 +505,7 @@ def rotor_loads(
     batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
     batch(om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
           keep_radial, cls, out, rad, counts, flags)
+    status = counts[0]
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
         i = int(np.argmax(status != 0))
         code = int(status[i]) - 1
@@ -490,8 +518,21 @@ def rotor_loads(
             f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
             f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
         )
-    rigid = (T, D, Q, R)  # (rows of out: flapping below returns new arrays)
-    if params.flap_compliance > 0:
+    if len(shape) == 1:  # the common case: no reshaping
+        def s(a):
+            return a
+    elif shape == ():  # one point: 0-d views, by a C-level getter (half a reshape's cost)
+        s = _ZERO_D
+    else:
+        def s(a):
+            return a.reshape(shape)
+    # the rows of out, counts and flags as the result's fields (views: the spin-up's flags below write into them)
+    fields = _row_fields(shape, out, counts, flags)
+    flapping_blades = params.flap_compliance > 0
+    if flapping_blades or any_slow or wrt:
+        T, D, Q, R, Y, P, vbar = out[:7]
+        rigid = (T, D, Q, R)  # (rows of out: flapping below returns new arrays)
+    if flapping_blades:
         per_slope = flap_damping(air.rho, 1.0, float(nd.chord_r3), om1)  # dD_beta / d(lift slope)
         damping = _lift_slope(params) * per_slope
         D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
@@ -506,24 +547,18 @@ def rotor_loads(
         out[0], out[6] = T, vbar
         _flags.point_flags(out, counts, Vs, Vc, om1, cls, inflow != mo.INFLOW_UNIFORM, empirical, flags,
                            inflow == mo.INFLOW_DREES)
-    # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
-    # upflow; the empirical descent curve blended in forward flight by propmap's fade)
-    converged, vring, multiple, reverse, extrapolated = flags
-    if len(shape) == 1:  # the common case: no reshaping
-        def s(a):
-            return a
-    elif shape == ():  # one point: 0-d views, by a C-level getter (half a reshape's cost; 22 fields)
-        s = _ZERO_D
-    else:
-        def s(a):
-            return a.reshape(shape)
+        # (working state, v_h, descent ratio and the inflow-validity flag: a linear inflow model with net
+        # upflow; the empirical descent curve blended in forward flight by propmap's fade)
+    if flapping_blades or any_slow:  # (new arrays, not the rows of out)
+        fields.update(thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y),
+                      pitching_moment=s(P), v_i_mean=s(vbar))
     jac = None
     if wrt:
         solved = tuple(w for w in wrt if w != COMPLIANCE)  # the compliance enters the flapping only
         # v_i (and the swirl), contiguous as the kernel is compiled for
         roots = rad[[0, _kernel.RAD_SWIRL]] if params.swirl else rad[:1]  # (a copy, contiguous)
         uniform = rad[_kernel.RAD_UNIFORM] if inflow != mo.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
-        raw = (_jacobian(solved, om1, V1, b1, c1, roots, converged, nd, model, pk, cam, empirical, params, air,
+        raw = (_jacobian(solved, om1, V1, b1, c1, roots, flags[0], nd, model, pk, cam, empirical, params, air,
                          propeller, discretization, rigid + (out[4], out[5]), uniform) if solved else {})
         if params.flap_compliance > 0:
             if COMPLIANCE in wrt:
@@ -539,19 +574,12 @@ def rotor_loads(
                     T, rigid[3], _lift_slope(params) * flap_damping(air.rho, 1.0, float(nd.chord_r3), om1),
                     propeller.n_blades, pitching_moment=out[5]))
         jac = {k: s(a) for k, a in raw.items()}
-    radial_out = ([a.reshape(shape + (nr,)) for a in rad[:_kernel.RAD_SWIRL]] if radial
-                  else [None] * _kernel.RAD_SWIRL)
-    return _new_loads(
-        omega=s(om1), airspeed=s(V1), incidence=s(b1),
-        thrust=s(T), drag=s(D), torque=s(Q), rolling_moment=s(R), side_force=s(Y), pitching_moment=s(P),
-        v_i_mean=s(vbar), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,
-        v_i=radial_out[0], dT_dr=radial_out[1], dD_dr=radial_out[2], dQ_dr=radial_out[3], dMR_dr=radial_out[4],
-        dY_dr=radial_out[5], dMP_dr=radial_out[6],
-        converged=s(converged), vortex_ring=s(vring), multiple_roots=s(multiple),
-        reverse_flow=s(reverse), reverse_flow_radius=s(rfr), inflow_extrapolated=s(extrapolated),
-        state=s(state), v_h=s(v_h), descent_ratio=s(k_desc),
-        n_evaluations=s(nev),
-        rho=air.rho, diameter=propeller.diameter, jacobian=jac,
-    )
+    if radial:
+        fields.update(zip(_NO_RADIAL, [a.reshape(shape + (nr,)) for a in rad[:_kernel.RAD_SWIRL]]))
+    else:
+        fields.update(_NO_RADIAL)
+    fields.update(omega=s(om1), airspeed=s(V1), incidence=s(b1), flap_1c=s(b1c), flap_1s=s(b1s), r=nd.y,
+                  rho=air.rho, diameter=propeller.diameter, jacobian=jac)
+    return _new_loads(fields)
 
 
