@@ -1055,7 +1055,7 @@ def test_stand_points_settles_averages_and_drops_as_documented():
     whose rows after settling are mostly off the median speed gives no point; a new airspeed is
     a new step at one signal; a step of two rows in an export of such steps is taken whole; the
     label gives the step's median signal."""
-    from propmap.identify.stand import stand_points
+    from propmap.identify.steps import stand_points
 
     settling = {"rpm": _a([5900, 5920, 5950, 5980] + [6000] * 6), "thrust": _a([2.8, 2.85, 2.9, 2.95] + [3.0] * 6)}
     v, group, dropped, unsteady = stand_points(settling, _a([1500] * 10), None)
@@ -1082,7 +1082,7 @@ def test_a_throttle_reaching_one_is_a_fraction_and_close_percents_stay_points(tm
     """A throttle fraction that reaches 1.0 is a fraction (not percent), and a table of points at
     throttles 0.04% apart (within 0.05 of the step tolerance of each other) keeps every row as
     its point (mutation audit survivors, 2026-11-27)."""
-    from propmap.identify.stand import esc_form
+    from propmap.identify.steps import esc_form
 
     assert esc_form("throttle", None, _a([0, 0.5, 1.0]))[0] == "fraction"
     frac = tmp_path / "f.csv"

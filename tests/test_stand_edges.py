@@ -132,7 +132,7 @@ def test_a_refused_parameter_file_gets_its_error_alone(tmp_path, body, match):
 def test_a_pulse_width_under_a_percent_header_is_read_as_one():
     """'Throttle (%)' holding 1100-1900 was read as percent (labels step1_1100pct, a 0.2 tolerance):
     a user-level audit, 2026-11-26."""
-    from propmap.identify.stand import esc_form
+    from propmap.identify.steps import esc_form
 
     form, note = esc_form("Throttle (%)", "%", np.array([1100.0, 1500.0, 1900.0]))
     assert form == "us" and "not percent" in note

@@ -37,7 +37,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     rotation speed, whose load cells may then be empty too) skipped, a rotation speed that is
     negative in every running row taken as its magnitude, and a stand's reaction torque
     (negative) turned to the propeller's; an ESC signal as a pulse width [us] or a throttle
-    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.stand.esc_form`);
+    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.steps.esc_form`);
     every decision is in ``LoadData.notes``. Format and valid ranges in the module docstring.
 
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
@@ -99,7 +99,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         advance ratio), a steps log whose ESC signal stays within one tolerance while the speed
         varies; the message names the file, the line and the column.
     """
-    from .stand import ESC_TOL, esc_form, map_columns, split_header, stand_points
+    from .stand import map_columns, split_header
+    from .steps import ESC_TOL, esc_form, stand_points
 
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
@@ -320,7 +321,7 @@ def _one_signal(esc: np.ndarray, v: dict, group, form: str, name: str, where: st
     speed runs over a range, at one operating condition (a constant column, or a throttle
     fraction under a pulse width's unit: the log was one "step" that never settled, and the
     error said so, not why: a thrust-stand export audit, 2026-11-27)."""
-    from .stand import CONDITION_TOL, ESC_TOL
+    from .steps import CONDITION_TOL, ESC_TOL
 
     span = float(np.nanmax(esc) - np.nanmin(esc)) if esc.size else 0.0
     rpm = v["rpm"][np.isfinite(v["rpm"])]

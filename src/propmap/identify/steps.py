@@ -1,0 +1,210 @@
+"""A thrust stand's "steps" test as one averaged point per ESC step.
+
+A thrust stand's software (RCbenchmark / Tyto Robotics; :mod:`propmap.identify.stand` maps
+its columns) logs every sample of a test that holds the ESC signal at a sequence of levels.
+:func:`stand_points` splits the rows into steps (one signal level and one operating
+condition each), drops each step's settling and unsteady rows and the ramps between steps,
+and averages the rest; :func:`esc_form` reads whether the signal is a pulse width [us] or a
+throttle in percent or as a fraction.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .stand import _ESC_UNITS, _token
+
+__all__ = ["esc_form", "stand_points", "ESC_TOL", "CONDITION_TOL"]
+
+#: a new step starts where the ESC signal moves more than this from the step's first row [us]
+#: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
+#: its tolerance (a tunnel run at one throttle and several airspeeds)
+ESC_TOL_US = 2.0
+#: the same tolerance for each form of the signal: a pulse width [us] (1000-2000 us), a
+#: throttle in percent or as a fraction (2 us of the 1000 us span: 0.2% or 0.002)
+ESC_TOL = {"us": ESC_TOL_US, "pct": 0.2, "fraction": 0.002}
+CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
+
+
+def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | None]:
+    """The form of an ESC-signal or throttle column: ("us" | "pct" | "fraction", note or None).
+
+    By its unit where it gives one (us, µs, microseconds; %, pct, percent), unless the values
+    contradict it (a note says so): a percentage whose values reach 500 is a pulse width, one
+    whose values stay within (0, 1] a fraction, and a pulse width whose values stay within
+    (0, 100] a throttle (by the rule below; an ESC's pulse is 1000-2000 us). Else by its values: at most 1 a fraction,
+    at most 100 a percentage, else a pulse width in us (the note says which was taken, and names
+    a unit it does not know, e.g. ``(PWM)`` or ``[0-1]``).
+
+    Parameters
+    ----------
+    name : str
+        The column's header as written (for the note).
+    unit : str or None
+        The unit its header gives (:func:`propmap.identify.stand.split_header`), or None.
+    esc : ndarray
+        The column's values (NaN ignored).
+
+    Returns
+    -------
+    (str, str or None)
+        The form, ``"us"``, ``"pct"`` or ``"fraction"``, and a note for the user where the
+        form was read from the values or contradicts the unit, else None.
+    """
+    tok = None if unit is None else _token(unit)
+    top = float(np.nanmax(np.abs(esc))) if esc.size and not np.all(np.isnan(esc)) else 0.0
+    if tok in _ESC_UNITS:
+        if _ESC_UNITS[tok] == "pct" and top >= 500.0:  # (a pulse width under a '%' header: a user-level audit)
+            return "us", (f"{name!r}: read as a pulse width in us, not percent: its values reach {top:g} (a "
+                          "percentage stays near 0-100)")
+        if _ESC_UNITS[tok] == "pct" and 0 < top <= 1.0:  # (0.15-0.90 under '%': a thrust-stand export audit)
+            return "fraction", (f"{name!r}: read as a throttle fraction (0-1), not percent: its values reach only "
+                                f"{top:g}")
+        if _ESC_UNITS[tok] == "us" and 0 < top <= 100.0:  # (no ESC takes a pulse of 100 us: a throttle under 'us')
+            form = "fraction" if top <= 1.0 else "pct"
+            return form, (f"{name!r}: read as a throttle {'fraction (0-1)' if form == 'fraction' else 'in percent'}, "
+                          f"not a pulse width in us: its values reach only {top:g} (an ESC's pulse is 1000-2000 us)")
+        return _ESC_UNITS[tok], None
+    form = "fraction" if top <= 1.0 else ("pct" if top <= 100.0 else "us")
+    what = {"fraction": "a throttle fraction (0-1)", "pct": "a throttle in percent", "us": "a pulse width in us"}[form]
+    unknown = "" if unit is None else f"unit {unit!r} not known for an ESC signal (us or %): "
+    return form, (f"{name!r}: {unknown}read as {what} by its values (they reach {top:g}; write us or % in its name "
+                  "to say otherwise)")
+
+
+def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:
+    """Row index where each step starts (ESC signal within ``tol`` of the step's first row,
+    CONDITION_TOL, one label); :func:`_merge_steps` joins the pieces of a jittering one."""
+    starts = [0]
+    ref = 0
+    cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
+    for i in range(1, esc.size):
+        if (abs(esc[i] - esc[ref]) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
+                or (labels is not None and labels[i] != labels[ref])):
+            starts.append(i)
+            ref = i
+    return np.array(starts)
+
+
+def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: float) -> list:
+    """Neighbouring steps (row ranges [a, b)) joined where their medians agree within ``2 tol``
+    (the ESC signal: two pieces of one step whose readback jitters by +-tol) and within
+    CONDITION_TOL (the operating conditions) and their label is one: a +-2 us jitter split 16
+    steps into 104 (a thrust-stand export audit, 2026-11-27; 16 again since). So signal levels
+    closer than 2 tol (4 us, 0.4%, 0.004) are one step."""
+    merged = [steps[0]] if steps else []
+    for a, b in steps[1:]:
+        pa, pb = merged[-1]
+        if ((labels is None or labels[a] == labels[pa]) and abs(np.median(esc[a:b]) - np.median(esc[pa:pb])) <= 2 * tol
+                and all(abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= CONDITION_TOL[q]
+                        for q, x in conditions.items())):
+            merged[-1] = (pa, b)
+        else:
+            merged.append((a, b))
+    return merged
+
+
+def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels) -> set:
+    """The indexes of the steps that are the signal ramping from one step to the next: a run of
+    steps of one or two rows between two steps of five rows or more, at their operating
+    condition and label, whose signals lie between the two's (each ramp row was a "step" of its
+    own, taken with the motor still accelerating: 76 points from 16 steps in a thrust-stand
+    export audit, 2026-11-27). Short steps anywhere else (an export that averaged its steps, a
+    tunnel run's short airspeed steps after a long static one) stay points."""
+    size = [b - a for a, b in steps]
+    level = [float(np.median(esc[a:b])) for a, b in steps]
+    out = set()
+    j = 0
+    while j < len(steps):
+        if size[j] > 2:
+            j += 1
+            continue
+        end = j
+        while end < len(steps) and size[end] <= 2:
+            end += 1
+        before, after = j - 1, end  # the long steps around the run [j, end)
+        if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
+            lo, hi = sorted((level[before], level[after]))
+            first = steps[before][0]
+            same = ((labels is None or len({labels[steps[i][0]] for i in range(before, after + 1)}) == 1)
+                    and all(np.ptp(x[first:steps[after][1]]) <= CONDITION_TOL[q] for q, x in conditions.items()))
+            if same and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
+                out.update(range(j, end))
+        j = end
+    return out
+
+
+def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
+                 steady: float = 0.02, labels=None, form: str = "us"):
+    """One averaged point per ESC step of a thrust-stand "steps" test.
+
+    Consecutive rows with one ESC signal (within ESC_TOL[form] of the step's first row) and one
+    operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
+    ``labels``) form a step; neighbouring steps whose signals' medians agree within twice its
+    tolerance (a jittering readback) and whose conditions agree within theirs are one. Of each
+    step the first ``settle``
+    of its duration (its rows, without a time column) is dropped, the motor settling, and of
+    the rest the rows whose rotation speed is within ``steady`` of the step's median;
+    what remains is averaged. A step where fewer than half of the rows after settling are
+    steady (a spin-down, a step too short for the motor) gives no point. A step of one or
+    two rows is taken whole (an export that already averaged its steps), unless it is part of a
+    ramp between two steps of five rows or more (:func:`_ramps`): then its rows are dropped as
+    transients.
+
+    Parameters
+    ----------
+    values : dict
+        quantity -> ndarray of shape (N,), rows in file order; must hold ``rpm``.
+    esc : ndarray, shape (N,)
+        ESC signal: a pulse width [us], or a throttle in percent or as a fraction (``form``).
+    time : ndarray, shape (N,), or None
+    settle, steady : float
+    labels : sequence of str, shape (N,), optional
+        A run label per row (a ``group`` column): a step never spans two labels, and its
+        label becomes ``<label>_step<k>_<esc>us``.
+    form : {"us", "pct", "fraction"}
+        The ESC signal's form (:func:`esc_form`): its tolerance and the labels' unit
+        (``step<k>_<esc>us``, ``step<k>_<esc>pct``, ``step<k>_<esc>``).
+
+    Returns
+    -------
+    (dict, ndarray of str, int, tuple of str)
+        The averaged values (quantity -> shape (K,)), each step's group label
+        ``step<k>_<esc>us``, the number of rows dropped as transients, and the labels of
+        the steps dropped as unsteady.
+    """
+    conditions = {q: np.asarray(values[q], float) for q in CONDITION_TOL if q in values}
+    starts = _step_starts(esc, conditions, labels, ESC_TOL[form])
+    steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form])
+    ramp = _ramps(steps, esc, conditions, labels)
+    out = {k: [] for k in values}
+    groups, dropped, unsteady = [], 0, []
+    k = 0
+    for j, (a, b) in enumerate(steps):
+        if j in ramp:
+            dropped += b - a
+            continue
+        k += 1
+        idx = np.arange(a, b)
+        m = np.median(esc[a:b])
+        level = {"us": f"{m:.0f}us", "pct": f"{m:.4g}pct", "fraction": f"{m:.4g}"}[form]
+        label = (f"{labels[a]}_" if labels is not None else "") + f"step{k}_{level}"
+        if idx.size > 2:
+            if time is not None and time[b - 1] > time[a]:
+                keep = idx[time[idx] >= time[a] + settle * (time[b - 1] - time[a])]
+            else:
+                keep = idx[int(settle * idx.size):]
+            rpm = values["rpm"][keep]
+            med = np.median(rpm)
+            steady_rows = keep[np.abs(rpm - med) <= steady * max(abs(med), 1e-9)] if med > 0 else keep
+            if steady_rows.size < 0.5 * keep.size:
+                # the speed never settled (a spin-down, a step too short): no steady point
+                unsteady.append(label)
+                dropped += idx.size
+                continue
+            dropped += idx.size - steady_rows.size
+            idx = steady_rows
+        for q in values:
+            out[q].append(float(np.mean(values[q][idx])))
+        groups.append(label)
+    return {q: np.array(v) for q, v in out.items()}, np.array(groups, dtype=object), dropped, tuple(unsteady)
