@@ -277,6 +277,11 @@ def test_default_params_refuses_a_name_that_is_none(name, error, said):
     (lambda p: pm.read_vehicle(5), TypeError, r"path must be a file path .*got int"),
     (lambda p: pm.rotor_like(None), TypeError, r"propeller must be a Propeller, got NoneType"),
     (lambda p: pm.lift_coefficient(0.1, None), TypeError, r"params must be AirfoilParams or CamberedParams"),
+    # the two orders differ: a swapped call says so (a nomenclature audit, 2026-11-27)
+    (lambda p: pm.drag_coefficient(0.1, pm.generic_params(), 1e5), TypeError,
+     r"got float \(the orders are lift_coefficient\(alpha, params, reynolds\) and drag_coefficient\(alpha, reynolds, "
+     r"params\)\)"),
+    (lambda p: pm.lift_coefficient(0.1, 1e5, pm.generic_params()), TypeError, r"the orders are lift_coefficient"),
     (lambda p: pm.lift_coefficient("a", p), ValueError, r"alpha must be a number or an array of numbers, got 'a'"),
     (lambda p: pm.lift_coefficient(True, p), ValueError, r"alpha must be a number"),
     (lambda p: pm.lift_coefficient(np.nan, p), ValueError, r"alpha must be finite \[rad\] everywhere, got nan"),

@@ -58,7 +58,10 @@ def _polar_inputs(alpha, reynolds, mach, params) -> tuple[np.ndarray, np.ndarray
     from .geometry import has_bool
 
     if not isinstance(params, (AirfoilParams, CamberedParams)):
-        raise TypeError(f"params must be AirfoilParams or CamberedParams, got {type(params).__name__}")
+        # the two take their arguments in different orders (the Reynolds number is optional for the lift only)
+        swapped = (" (the orders are lift_coefficient(alpha, params, reynolds) and drag_coefficient(alpha, "
+                   "reynolds, params))" if isinstance(reynolds, (AirfoilParams, CamberedParams)) else "")
+        raise TypeError(f"params must be AirfoilParams or CamberedParams, got {type(params).__name__}{swapped}")
     out = []
     for name, v, ok, rule in (("alpha", alpha, lambda a: np.isfinite(a), "finite [rad]"),
                               ("reynolds", reynolds, lambda a: np.isfinite(a) & (a > 0), "finite and > 0"),
