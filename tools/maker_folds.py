@@ -8,7 +8,7 @@ tool measures what that is worth: for each maker with two families or more it re
 generic set and the population prior without all of the maker's families (the calibration's
 steps 2-3, tools/calibrate_catalogue.py, from the shipped single-propeller fits), then scores
 the maker's propellers blind and with static + lowest sweep fits under both folds. Run from
-the repository root (about 5 minutes on the 2-core machine):
+the repository root (about 2 minutes on the 2-core machine):
 
     .venv/bin/python tools/maker_folds.py
 
