@@ -161,6 +161,8 @@ def test_trim_reports_no_solution_and_the_reachable_range(rotor, naca0015):
     assert list(res.n_solutions) == [3, 0]
     with pytest.raises(ValueError, match="bounds must satisfy"):
         trim_collective(rotor, naca0015, 50.0, 100.0, bounds=(0.2, 0.1))
+    with pytest.raises(ValueError, match="bounds must satisfy"):  # (an empty range was a ZeroDivisionError with
+        trim_collective(rotor, naca0015, 50.0, 100.0, bounds=(0.1, 0.1))  # '<=': a mutation audit, 2026-11-27)
     with pytest.raises(ValueError, match="on_missing must be"):
         trim_collective(rotor, naca0015, 50.0, 100.0, on_missing="zero")
 

@@ -238,6 +238,10 @@ def test_vehicle_rotor_speed_derivatives():
     assert pm.vehicle_wrench(veh, g, v, w, om, discretization=DISC).force_domega is None
     with pytest.raises(ValueError, match="not implemented with rotor_interference"):
         pm.vehicle_wrench(replace(veh, rotor_interference=1.0), g, v, w, om, derivatives=True)
+    # two rotors couple too (a mutation audit, 2026-11-27: the refusal from three rotors on survived)
+    with pytest.raises(ValueError, match="not implemented with rotor_interference"):
+        pm.vehicle_wrench(replace(veh, rotors=veh.rotors[:2], rotor_interference=1.0), g, v, w, om[:, :2],
+                          derivatives=True)
 
 
 @pytest.mark.parametrize("model", ["generic", "paper", "generic_inplane", "paper_inplane"])

@@ -1094,3 +1094,42 @@ def test_a_throttle_reaching_one_is_a_fraction_and_close_percents_stay_points(tm
                                                            for k in range(8)))
     data = read_loads(close)
     assert data.n == 8 and set(data.group) == {"all"}
+
+
+def test_esc_forms_at_the_ends_of_their_ranges():
+    """A '%' column within (0, 1] is a fraction and a 'us' column within (0, 100] a throttle in
+    percent, both ends included as esc_form documents; just beyond each end the unit holds (a
+    mutation audit, 2026-11-27: '<= 1' and '<= 100' made strict survived the suite)."""
+    from propmap.identify.steps import esc_form
+
+    assert esc_form("Throttle (%)", "%", _a([0.15, 0.5, 1.0]))[0] == "fraction"
+    assert esc_form("Throttle (%)", "%", _a([0.15, 1.01]))[0] == "pct"
+    assert esc_form("ESC (us)", "us", _a([0, 50, 100]))[0] == "pct"
+    assert esc_form("ESC (us)", "us", _a([0, 100.5]))[0] == "us"
+
+
+def test_step_rules_at_their_documented_thresholds():
+    """stand_points' rules, each at the number its docstring gives (mutation audit survivors,
+    2026-11-27): a step is within ESC_TOL of its FIRST row, so a slow drift (1.5 us per row) is
+    cut every few rows, not merged into one point (regression value: 10 steps of 40 rows); a
+    ramp is a run of steps of one or two rows between steps of five rows or more; the steady
+    band is 2% of the step's median speed; percent levels 0.5% apart (more than twice the
+    0.2% tolerance) are two steps."""
+    from propmap.identify.steps import stand_points
+
+    def points(esc, rpm=None, form="us"):
+        n = len(esc)
+        rpm = [6000] * n if rpm is None else rpm
+        return stand_points({"rpm": _a(rpm), "thrust": _a([3] * n)}, _a(esc), None, form=form)
+
+    _, group, dropped, _ = points(1000 + 1.5 * np.arange(40))
+    assert group.size == 10 and group.tolist()[:3] == ["step1_1002us", "step2_1008us", "step3_1014us"]
+    assert dropped == 20  # the first half of each step's four rows, settling
+    _, group, dropped, _ = points([1000] * 10 + [1200] * 2 + [1350] * 2 + [1500] * 10)
+    assert group.tolist() == ["step1_1000us", "step2_1500us"] and dropped == 14  # two 2-row ramp steps + settling
+    _, group, dropped, _ = points([1000] * 5 + [1250] + [1500] * 5)
+    assert group.tolist() == ["step1_1000us", "step2_1500us"] and dropped == 5  # between two 5-row steps: a ramp
+    v, _, dropped, _ = points([1500] * 10, rpm=[5000] * 9 + [5150])
+    assert v["rpm"].tolist() == [5000.0] and dropped == 6  # 5150 is 3% off the median: not steady
+    _, group, _, _ = points([10.0] * 10 + [10.5] * 10, form="pct")
+    assert group.tolist() == ["step1_10pct", "step2_10.5pct"]

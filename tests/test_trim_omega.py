@@ -85,6 +85,7 @@ def test_a_thrust_out_of_reach_is_refused_or_nan(rotor):
     (dict(thrust=np.nan), "thrust must be finite"),
     (dict(thrust=2.0, bounds=(100.0, 50.0)), r"bounds must satisfy 0 < low < high <= 100000 rad/s"),
     (dict(thrust=2.0, bounds=(0.0, 50.0)), r"bounds must satisfy 0 < low"),
+    (dict(thrust=2.0, bounds=(50.0, 50.0)), r"bounds must satisfy 0 < low < high"),
     (dict(thrust=2.0, bounds="fast"), "bounds must be two rotation rates"),
     (dict(thrust=2.0, on_missing="clip"), "on_missing must be 'raise' or 'nan'"),
     (dict(thrust=[1.0, 2.0], airspeed=[1.0, 2.0, 3.0]), "must broadcast together"),
