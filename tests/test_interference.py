@@ -196,3 +196,33 @@ def test_inflow_pairs_each_wake_with_its_own_rotor_size_and_strength():
     # the front rotor ahead of the rear one's wake (offset 2 rear radii upstream, half its radius): an upwash
     assert out[0, 0, 2] == pytest.approx(-4.0 * wake_ratio(math.atan2(5.0, 4.0), (-2.0, 0.0, 0.0), 0.5), rel=0.02)
     assert out[0, 0, 2] > 0 and np.all(out[0, :, :2] == 0.0)
+
+
+def test_a_failed_rotor_induces_nothing_on_the_others(monkeypatch, generic):
+    """A rotor whose solve failed (on_failure="flag": NaN loads) puts no wake on the others: its
+    NaN inflow is taken as 0, so the others' loads are those with its inflow set to 0, not NaN
+    spread to every rotor (a mutation audit, 2026-11-27: the guard's removal survived the
+    suite). The failure is injected into the first solve's loads, whose inflow the wakes carry."""
+    import propmap.vehicle.model as model
+
+    veh = replace(read_vehicle("quadrotor"), rotor_interference=1.0)
+    v, w, om = np.array([[4.0, 0.0, -0.5]]), np.zeros((1, 3)), np.full((1, 4), 1000.0)
+    real = model._rotor_wrenches
+
+    def run(fill):
+        first = []
+
+        def injected(*args, **kw):
+            F, M, loads = real(*args, **kw)
+            if fill is not None and not first:
+                loads = list(loads)
+                loads[0] = replace(loads[0], v_i_mean=np.full_like(loads[0].v_i_mean, fill))
+            first.append(True)
+            return F, M, loads
+
+        monkeypatch.setattr(model, "_rotor_wrenches", injected)
+        return vehicle_wrench(veh, generic, v, w, om, on_failure="flag").rotor_force
+
+    failed, silent, normal = run(np.nan), run(0.0), run(None)
+    assert np.all(np.isfinite(failed)) and np.array_equal(failed, silent)
+    assert np.abs(silent - normal).max() > 1e-4  # rotor 0's wake matters to the others here
