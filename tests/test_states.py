@@ -110,7 +110,11 @@ def test_states_through_an_axial_descent():
     first = {n: names.index(n) for n in set(names)}
     assert first["normal working"] < first["vortex ring"] < first["windmill brake"]
     assert np.all(np.diff(r.descent_ratio) > 0)
-    assert r.inflow_ratio[0] == pytest.approx(float(r.v_i_mean[0] / r.v_h[0]))
+    assert r.v_i_over_v_h[0] == pytest.approx(float(r.v_i_mean[0] / r.v_h[0]))
+    # the former name, which rotorcraft usage gives to lambda = (V cos(beta) + v_i) / (Omega R), warns
+    # (a nomenclature audit, 2026-11-27)
+    with pytest.warns(DeprecationWarning, match="not the inflow ratio lambda"):
+        assert np.array_equal(r.inflow_ratio, r.v_i_over_v_h, equal_nan=True)
 
 
 def test_the_empirical_descent_flags_its_blend_with_forward_speed_only():

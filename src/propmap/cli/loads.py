@@ -272,7 +272,7 @@ def _descent_outputs(r) -> dict:
 
     lam = np.asarray(r.descent_ratio, float)
     lam = np.where(np.abs(lam) < 1e-12, 0.0, lam) + 0.0
-    return {"v_i_over_v_h": r.inflow_ratio, "lambda2": lam, "state": r.state_name}
+    return {"v_i_over_v_h": r.v_i_over_v_h, "lambda2": lam, "state": r.state_name}
 
 
 def numeric_keys(params) -> tuple[str, ...]:

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields
 
+import warnings
+
 import numpy as np
 
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS
@@ -211,10 +213,20 @@ class RotorLoads:
         return np.asarray(STATES, dtype=object)[np.asarray(self.state)]
 
     @property
-    def inflow_ratio(self) -> np.ndarray:
-        """v_i,mean / v_h [-], shape S (NaN where T <= 0)."""
+    def v_i_over_v_h(self) -> np.ndarray:
+        """v_i,mean / v_h [-], shape S (NaN where T <= 0): the mean induced inflow in units of the
+        hover induced velocity at the thrust made (the CLI's ``v_i_over_v_h``)."""
         with np.errstate(invalid="ignore", divide="ignore"):
             return np.where(self.v_h > 0, self.v_i_mean / np.where(self.v_h > 0, self.v_h, 1.0), np.nan)
+
+    @property
+    def inflow_ratio(self) -> np.ndarray:
+        """Deprecated name of :attr:`v_i_over_v_h` (warns): in rotorcraft usage the inflow ratio
+        is lambda = (V cos(beta) + v_i) / (Omega R), which this never was."""
+        warnings.warn("RotorLoads.inflow_ratio is v_i,mean / v_h, not the inflow ratio lambda = (V cos(beta) + v_i) / "
+                      "(Omega R): use RotorLoads.v_i_over_v_h (the name inflow_ratio will be removed)",
+                      DeprecationWarning, stacklevel=2)
+        return self.v_i_over_v_h
 
     @property
     def power(self) -> np.ndarray:
