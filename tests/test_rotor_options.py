@@ -400,3 +400,36 @@ def test_empirical_descent_moves_ideal_autorotation_into_the_measured_range():
         out[d] = V[i] / vh[i]
     assert out["empirical"] == pytest.approx(1.81, abs=0.03)
     assert out["glauert"] == pytest.approx(2.07, abs=0.03)
+
+
+def test_flapping_derivatives_keys_do_not_depend_on_the_hash_seed():
+    """A flapping rotor's derivatives are keyed in the order asked for, the same in every process:
+    the flapping's chain rule walked a set of the names, whose order followed PYTHONHASHSEED (a
+    review, 2026-11-27: seeds 0-4 gave five different key orders, the same values)."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import numpy as np, propmap as pm\n"
+            "p = pm.preset('gill2017-apc').replace(flap_compliance=2.0)\n"
+            "r = pm.rotor_loads(pm.load_propeller('apce_8x6'), p, np.array([800.0]), np.array([8.0]), "
+            "np.array([1.2]), derivatives=('omega', 'collective', 'cl1', 'rho', 'flap_compliance'))\n"
+            "print([w for q, w in r.jacobian if q == 'side_force'])\n")
+    orders = set()
+    for seed in ("0", "1", "2"):
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+        orders.add(out.stdout.strip().splitlines()[-1])
+    assert orders == {"['omega', 'collective', 'cl1', 'rho', 'flap_compliance']"}
+
+
+def test_rigid_blades_flapping_fields_share_no_memory(prop, generic):
+    """For rigid blades flap_1c and flap_1s were one zeros array: writing into one changed the
+    other (a review, 2026-11-27); no two fields of a result share memory."""
+    r = pm.rotor_loads(prop, generic, np.array([800.0, 900.0]), np.array([5.0, 8.0]), np.array([1.0, 1.2]))
+    r.flap_1s[0] = 1.0
+    assert r.flap_1c[0] == 0.0
+    arrays = [getattr(r, f) for f in ("omega", "airspeed", "incidence", "thrust", "drag", "torque", "rolling_moment",
+                                      "side_force", "pitching_moment", "v_i_mean", "flap_1c", "flap_1s", "v_h",
+                                      "descent_ratio", "reverse_flow_radius", "converged", "state")]
+    assert not any(np.shares_memory(a, b) for i, a in enumerate(arrays) for b in arrays[i + 1:])

@@ -196,7 +196,7 @@ def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance:
     half = 0.5 * n_blades
     # dD_beta/dx of what it depends on
     a = {"omega": 2.0 * Db / np.asarray(omega), "rho": Db / rho, lift_slope[0]: np.asarray(lift_slope[1])}
-    names = {w for (_, w) in jac}
+    names = list(dict.fromkeys(w for (_, w) in jac))  # (in the caller's order: a set's depended on the hash seed)
     for w in names:
         if w == COMPLIANCE:
             kk = -K * K  # dK/dc

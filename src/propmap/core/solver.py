@@ -536,8 +536,8 @@ def rotor_loads(
         per_slope = flap_damping(air.rho, 1.0, float(nd.chord_r3), om1)  # dD_beta / d(lift slope)
         damping = _lift_slope(params) * per_slope
         D, Y, R, P, b1c, b1s = flapping(T, D, Y, R, P, damping, params.flap_compliance, propeller.n_blades)
-    else:
-        b1c = b1s = np.zeros(n)
+    else:  # (two arrays: the result's fields share no memory, so writing into one changes no other)
+        b1c, b1s = np.zeros(n), np.zeros(n)
     if any_slow:
         T, D, Q, R, Y, P, vbar, b1c, b1s, rad = _spin_up_scaled(om_in, V1, T, D, Q, R, Y, P, vbar, b1c, b1s, rad,
                                                                 radial)
