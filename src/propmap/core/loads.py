@@ -4,9 +4,8 @@ returns them: :class:`RotorLoads`, with its derived quantities and derivatives.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
-
 import warnings
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -354,10 +353,10 @@ _FRAME_UNITS = {"omega": "rad/s", "airspeed": "m/s", "incidence": "rad", "thrust
                 "inflow_extrapolated": "-", "n_evaluations": "-", "state": "-"}
 
 
-def _new_loads(fields: dict) -> RotorLoads:
+def _new_loads(values: dict) -> RotorLoads:
     """A RotorLoads from a dict of all its fields, without the frozen dataclass's per-field
     ``object.__setattr__`` (a few microseconds of a single point's call); the fields must be
     exactly :class:`RotorLoads`'s (checked by tests/test_invariants.py)."""
     obj = object.__new__(RotorLoads)
-    obj.__dict__.update(fields)
+    obj.__dict__.update(values)
     return obj
