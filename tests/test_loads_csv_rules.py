@@ -1,0 +1,50 @@
+"""read_loads' documented rules at their edges (a third mutation audit, 2026-11-27: the static
+airspeed's "at most", the 1% stop-noise rule, the density column's median and the mmHg factor
+each survived the suite)."""
+
+import numpy as np
+import pytest
+
+from propmap.identify import DataError, read_loads
+from propmap.identify.load_data import STATIC_AIRSPEED
+
+
+def _csv(tmp_path, header, rows):
+    p = tmp_path / "loads.csv"
+    p.write_text(header + "\n" + "\n".join(",".join(f"{x:g}" for x in r) for r in rows) + "\n")
+    return p
+
+
+RPM = [3000.0, 4000.0, 5000.0, 6000.0, 7000.0, 8000.0]
+
+
+def test_thrust_negative_at_exactly_static_airspeed_is_negated(tmp_path):
+    """Documented rule: points with airspeed *at most* STATIC_AIRSPEED are static, so a thrust
+    negative at all of them is negated."""
+    rows = [(r, STATIC_AIRSPEED, -1e-7 * r**2) for r in RPM]
+    d = read_loads(_csv(tmp_path, "rpm,airspeed,thrust", rows))
+    assert np.all(d.measured["thrust"] > 0)
+    np.testing.assert_allclose(d.measured["thrust"], [1e-7 * r**2 for r in RPM])
+
+
+def test_negative_rpm_beyond_one_percent_of_the_largest_is_refused(tmp_path):
+    """Documented rule: a rotation speed negative in some rows and positive in others is refused;
+    only |rpm| < 1% of the largest is stop noise."""
+    rows = [(r, 1e-7 * r**2) for r in RPM] + [(-0.05 * 8000.0, 0.0)]
+    with pytest.raises(DataError, match="rotation speed must be positive"):
+        read_loads(_csv(tmp_path, "rpm,thrust", rows))
+
+
+def test_air_density_column_is_read_as_its_median(tmp_path):
+    """Documented rule (read_loads docstring): LoadData.air_density is the median of the density column."""
+    rhos = [1.2, 1.2, 1.2, 1.2, 1.2, 2.0]
+    rows = [(r, 1e-7 * r**2, rho) for r, rho in zip(RPM, rhos)]
+    d = read_loads(_csv(tmp_path, "rpm,thrust,air density", rows))
+    assert d.air_density == pytest.approx(1.2, rel=1e-12)
+
+
+def test_temperature_and_pressure_in_mmhg_give_standard_sea_level_density(tmp_path):
+    """Physical value: 15 degC and 760 mmHg (101325 Pa) is the ISA sea-level density, rho = p / (R T) = 1.225 kg/m^3."""
+    rows = [(r, 1e-7 * r**2, 15.0, 760.0) for r in RPM]
+    d = read_loads(_csv(tmp_path, "rpm,thrust,temperature (C),pressure (mmHg)", rows))
+    assert d.air_density == pytest.approx(1.225, rel=2e-3)
