@@ -4,9 +4,9 @@ Every fit whose residual has no implicit derivatives (identify/engine._solve wit
 ``residual.jacobian``) steps with ``_jacobian``: central differences of step
 1e-4 max(|x|, 0.1), one-sided at a bound. And a multistart fit whose two best optima reach
 the same cost with parameters 5% apart warns that the data do not determine them. No test
-held either (a mutation audit, 2026-11-27: a step without its floor, a difference past
-the bound and the warning's removal all survived the suite). Analytic residuals here, so
-every expected value is exact.
+held either (a mutation audit, 2026-11-27, left the Jacobian's step and the multistart
+thresholds without a test; each of seven mutants of them fails the tests here). Analytic
+residuals, so every expected value is exact.
 """
 
 import math

@@ -37,7 +37,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import calibrate_catalogue as cc  # noqa: E402
 
-from propmap.io.calibration import generic_without, params_from_si, population  # noqa: E402
+from propmap.io.calibration import generic_without, params_from_si, population, population_from_dict  # noqa: E402
 from propmap.io.catalogue import catalogue  # noqa: E402
 from propmap.validation import cross_validate  # noqa: E402
 
@@ -59,12 +59,17 @@ def _stats(x) -> str:
     return f"{np.median(x):.1f} / {np.percentile(x, 90):.1f} / {x.max():.1f}%"
 
 
+def _setup():
+    """The calibration file (its single-propeller fits are the raw file's), the catalogue, the
+    calibrated propellers' names and their data."""
+    cal = json.loads(cc.OUT.read_text())
+    names = sorted(cal["propellers"])
+    return cal, catalogue(), names, {n: cc._data(n) for n in names}
+
+
 def control(seed: int = 1) -> None:
     """APC's blind error with a generic set of the maker fold's size that keeps APC's other lines."""
-    cal = json.loads(cc.OUT.read_text())
-    cat = catalogue()
-    names = sorted(cal["propellers"])
-    data = {n: cc._data(n) for n in names}
+    cal, cat, names, data = _setup()
     apc = MAKERS["APC"]
     rng = np.random.default_rng(seed)
     size = sum(cat[n].family not in apc for n in names)  # the maker fold's
@@ -83,11 +88,8 @@ def control(seed: int = 1) -> None:
 
 
 def main() -> None:
-    cal = json.loads(cc.OUT.read_text())  # (the single-propeller fits are the raw file's)
-    cat = catalogue()
+    cal, cat, names, data = _setup()
     single = cal["single_fits"]
-    names = sorted(cal["propellers"])
-    data = {n: cc._data(n) for n in names}
     print("maker (propellers): protocol, family folds -> maker fold, CT median / 90th percentile / worst")
     for maker, families in MAKERS.items():
         t0 = time.perf_counter()
@@ -95,8 +97,7 @@ def main() -> None:
         members = [n for n in names if n not in held]
         p, pop, *_ = cc._generic(members, single, data)
         generic_m = params_from_si(p)
-        pop_m = {"names": pop["names"], "covariance": np.asarray(pop["covariance"], float),
-                 "sigma_data": float(pop["sigma_data"]), "source": pop["source"]}
+        pop_m = population_from_dict(pop)
         errs = {(k, q): [] for k in ("family", "maker") for q in PROTOCOLS}
         for n in held:
             d, prop = data[n]

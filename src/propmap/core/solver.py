@@ -109,11 +109,11 @@ _OUT_FIELDS = ((0, "thrust"), (1, "drag"), (2, "torque"), (3, "rolling_moment"),
 _COUNTS_FIELDS = ((3, "n_evaluations"), (4, "state"))
 _FLAGS_FIELDS = ((0, "converged"), (1, "vortex_ring"), (2, "multiple_roots"), (3, "reverse_flow"),
                  (4, "inflow_extrapolated"))
-_ROW_FIELDS = tuple(f for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS) for _, f in fields)
+_PACKED_FIELDS = (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS)
+_ROW_FIELDS = tuple(f for fields in _PACKED_FIELDS for _, f in fields)
 #: each packed output's rows (1-d views) and, for one point, their 0-d views: one C-level call per array
-_ROWS = tuple(operator.itemgetter(*(i for i, _ in fields)) for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS))
-_ROWS_0D = tuple(operator.itemgetter(*((i, 0, Ellipsis) for i, _ in fields))
-                 for fields in (_OUT_FIELDS, _COUNTS_FIELDS, _FLAGS_FIELDS))
+_ROWS = tuple(operator.itemgetter(*(i for i, _ in fields)) for fields in _PACKED_FIELDS)
+_ROWS_0D = tuple(operator.itemgetter(*((i, 0, Ellipsis) for i, _ in fields)) for fields in _PACKED_FIELDS)
 #: one point's inputs as 1-element views of one array (omega, V, beta, collective, V_s, V_c)
 _ONE_POINT = operator.itemgetter(*(slice(i, i + 1) for i in range(6)))
 #: the per-annulus fields, None unless ``radial``

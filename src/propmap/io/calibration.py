@@ -33,7 +33,7 @@ from importlib import resources
 from ..core.airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 
 __all__ = ["Calibration", "calibration", "generic_params", "generic_without", "calibrated", "default_params",
-           "population", "coverage", "params_to_si", "params_from_si", "GENERIC"]
+           "population", "population_from_dict", "coverage", "params_to_si", "params_from_si", "GENERIC"]
 
 #: name of the generic set (``--params generic``)
 GENERIC = "generic"
@@ -265,8 +265,6 @@ def population(without: str | None = None) -> dict:
     ValueError
         The shipped calibration has no population statistics.
     """
-    import numpy as np
-
     cal = calibration()
     raw = cal["population"]
     if without is not None:
@@ -276,6 +274,31 @@ def population(without: str | None = None) -> dict:
                 break
     if raw is None:
         raise ValueError("the shipped calibration has no population statistics (run tools/calibrate_catalogue.py)")
+    return population_from_dict(raw)
+
+
+def population_from_dict(raw: dict) -> dict:
+    """The population prior's statistics from their file form (calibration.json's
+    ``population``, a fold's, or tools/calibrate_catalogue.py's), as :func:`population` returns them.
+
+    Parameters
+    ----------
+    raw : dict
+        ``names`` (sequence of str), ``covariance`` (nested lists, shape (k, k), SI units,
+        angles in rad), ``sigma_data`` (number), ``source`` (str).
+
+    Returns
+    -------
+    dict
+        The same keys: ``names`` a list, ``covariance`` an ndarray of float, ``sigma_data`` a float.
+
+    Raises
+    ------
+    KeyError
+        A key missing from ``raw``.
+    """
+    import numpy as np
+
     return {"names": list(raw["names"]), "covariance": np.asarray(raw["covariance"], float),
             "sigma_data": float(raw["sigma_data"]), "source": raw["source"]}
 
