@@ -3,6 +3,7 @@
 import csv
 import json
 import math
+import re
 
 import pytest
 
@@ -42,6 +43,30 @@ def test_loads_single_point_json_matches_api(capsys):
     assert d["thrust"] == pytest.approx(float(r.thrust), rel=1e-12)
     assert d["drag"] == pytest.approx(float(r.drag), rel=1e-12)
     assert d["converged"] is True and d["flags"] == []
+
+
+def test_loads_writes_the_torque_coefficient(capsys, tmp_path):
+    """CQ beside CT and CP in every loads output (JSON, text, points file): the propeller convention's
+    CQ = Q / (rho n^2 D^5), so CP = 2 pi CQ at every point (the torque of the API at the same point)."""
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--rpm", "8000", "--airspeed", "10", "--incidence-deg", "60",
+                       "--json")
+    d = json.loads(out)
+    assert code == 0
+    r = pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.resolve_params("calibrated:apce_8x6"), 8000 * math.pi / 30,
+                       10.0, math.radians(60))
+    n, D = 8000 / 60, pm.load_propeller("apce_8x6").diameter
+    assert d["CQ"] == pytest.approx(float(r.torque) / (d["air"]["rho"] * n**2 * D**5), rel=1e-12)
+    assert d["CP"] == pytest.approx(2 * math.pi * d["CQ"], rel=1e-12)
+    code, out, _ = run(capsys, "loads", "apce_8x6", "--rpm", "8000")
+    assert code == 0 and re.search(r"CT = 0\.\d{4}  CQ = 0\.\d{5}  CP = 0\.\d{4}", out), out
+    src, dst = tmp_path / "in.csv", tmp_path / "out.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n8000,0,0\n6000,12,90\n")
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
+    assert code == 0, err
+    rows = list(csv.DictReader(dst.open()))
+    assert [c for c in rows[0] if c.startswith("C")] == ["CT", "CQ", "CP"]
+    for row in rows:
+        assert float(row["CP"]) == pytest.approx(2 * math.pi * float(row["CQ"]), rel=1e-9)
 
 
 def test_loads_with_params_file_and_geometry_file(capsys, tmp_path, shared_data):

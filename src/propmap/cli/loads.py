@@ -16,9 +16,9 @@ from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RP
 from ._paths import check_outputs
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags
-OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CP", "v_i_over_v_h", "lambda2", "state",
-               "converged", "flags")
-NUMERIC_KEYS = OUTPUT_KEYS[:7]
+OUTPUT_KEYS = ("thrust", "drag", "torque", "rolling_moment", "power", "CT", "CQ", "CP", "v_i_over_v_h", "lambda2",
+               "state", "converged", "flags")
+NUMERIC_KEYS = OUTPUT_KEYS[:8]
 #: the side force Y [N] and the pitching moment M_P [N m], after rolling_moment where the parameter
 #: set makes them (RotorOptions.side_load_sources: blade flapping, a linear inflow, the dynamic
 #: stall), as a map holds them; absent (0 by symmetry) otherwise
@@ -287,7 +287,7 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
     outputs, one row per input row: thrust, drag, torque, rolling_moment (side_force,
-    pitching_moment where the set makes them: :func:`numeric_keys`), power, CT, CP,
+    pitching_moment where the set makes them: :func:`numeric_keys`), power, CT, CQ, CP,
     v_i_over_v_h, lambda2, state, converged ("true"/"false"), flags.
     """
     import numpy as np
@@ -466,7 +466,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     if "side_force" in result:
         click.echo(f"  side force Y = {result['side_force']:.4f} N  pitching moment M_P = "
                    f"{result['pitching_moment']:.5f} N m  ({', '.join(params.side_load_sources())})")
-    click.echo(f"  CT = {result['CT']:.4f}  CP = {result['CP']:.4f}")
+    click.echo(f"  CT = {result['CT']:.4f}  CQ = {result['CQ']:.5f}  CP = {result['CP']:.4f}")
     if ratio["v_i_over_v_h"] is not None:
         click.echo(f"  state: {result['state']}  (v_i/v_h = {ratio['v_i_over_v_h']:.3f}, "
                    f"lambda2 = V_descent/v_h = {round(ratio['lambda2'], 3) + 0.0:.3f})")  # no "-0.000"
