@@ -14,6 +14,11 @@ Writes benchmarks/results/everyday.json atomically and prints it.
   prepared arrays) and the Python wrapper around it (input checks, nodes, the result); their
   ratio (issue 20's target: the call within 1.3x of the kernel alone); one ``rotor_wrench`` call
   at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call.
+  Each set is timed in :data:`PROCESSES` fresh processes (``--single-call SET``, run by
+  :func:`single_call_processes`): the median over processes of each figure, with the
+  processes' range of the wrapper and the ratio. One process' figures moved by a factor of 2
+  between runs on a 2-core Intel Xeon VM (the wrapper 6-27 us, 2026-11-27), more than any
+  change to the wrapper.
 * Memory: bytes per operating point held by a ``RotorLoads`` with and without the
   per-annulus fields (``radial``), tracemalloc peak over 100,000 points (machine-
   independent); the peak resident memory of ``propmap loads --points`` on 100,000 points
@@ -42,6 +47,8 @@ from propmap.io.atomic import atomic_write
 
 BIN = Path(sys.executable).parent
 RUNS = 10
+#: fresh processes per parameter set for the single call (:func:`single_call_processes`)
+PROCESSES = 5
 
 
 #: the commands run as on a user's machine, where Python caches the modules' bytecode: an
@@ -105,6 +112,27 @@ def single_call(params, n=2000):
             "ratio_call_to_kernel": tot / ker, "rotor_wrench_us_median": 1e6 * wr, "ratio_wrench_to_loads": wr / tot}
 
 
+def _single_params(name: str):
+    from propmap.io.calibration import generic_params
+
+    return {"paper": pm.preset("gill2017-apc"), "generic": generic_params()}[name]
+
+
+def single_call_processes(name: str, k: int = PROCESSES) -> dict:
+    """:func:`single_call` of the set ``name`` ("paper" or "generic") in ``k`` fresh processes:
+    each figure's median over the processes, and the range of the wrapper and the ratio."""
+    runs = []
+    for _ in range(k):
+        res = subprocess.run([sys.executable, __file__, "--single-call", name], capture_output=True, check=True,
+                             text=True, env=USER_ENV)
+        runs.append(json.loads(res.stdout))
+    out = {key: float(np.median([r[key] for r in runs])) for key in runs[0]}
+    out["processes"] = k
+    for key in ("wrapper_us", "ratio_call_to_kernel"):
+        out[key + "_range"] = [min(r[key] for r in runs), max(r[key] for r in runs)]
+    return out
+
+
 def bytes_per_point(n=100_000):
     prop, params = pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc")
     rng = np.random.default_rng(3)
@@ -138,8 +166,6 @@ def points_file_peak_rss(n):
 
 
 def main() -> None:
-    from propmap.io.calibration import generic_params
-
     from bench_solver import cpu_name
 
     # first: ru_maxrss of the children is the largest child so far
@@ -147,8 +173,8 @@ def main() -> None:
     res = {
         "cpu": cpu_name(),
         "cli": cli_times(),
-        "single_call_paper": single_call(pm.preset("gill2017-apc")),
-        "single_call_generic": single_call(generic_params()),
+        "single_call_paper": single_call_processes("paper"),
+        "single_call_generic": single_call_processes("generic"),
         "bytes_per_point": bytes_per_point(),
         "loads_points_file": points,
     }
@@ -160,4 +186,7 @@ def main() -> None:
 
 if __name__ == "__main__":
     sys.path.insert(0, str(Path(__file__).parent))
-    main()
+    if "--single-call" in sys.argv:  # one process of single_call_processes
+        print(json.dumps(single_call(_single_params(sys.argv[sys.argv.index("--single-call") + 1]))))
+    else:
+        main()
