@@ -303,8 +303,8 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
     code = status[0]
     nev = status[1]
     nr = y.shape[0]
-    # the annuli's state in two blocks: two allocations per call instead of 20 (2026-11-27: forward flight
-    # 1-3% and axial flow 2-3% faster per point, tools/ab_kernel.py)
+    # the annuli's state in two blocks: two allocations per call instead of 20 (2026-11-27: forward flight and
+    # axial flow 1-3% faster per point, paired in one process by tools/ab_kernel.py)
     fw = np.empty((15, nr))
     trial, f, a, fa, b, fb, c, fc, sgn, h, xtol, ftol, floss, inv_sin, kds = fw
     iw = np.zeros((5, nr), dtype=np.int64)
