@@ -388,7 +388,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
           air_choice):
     """Thrust, rotor drag, torque and power of PROP (catalogue name or geometry file).
 
-    Outputs are SI: N, N m, W; CT and CP in the propeller convention; in descent the
+    Outputs are SI: N, N m, W; CT, CQ and CP in the propeller convention; in descent the
     mean induced inflow over the hover induced velocity at that thrust (v_i_over_v_h),
     the descent ratio lambda2 = -V cos(incidence) / v_h and the rotor's working state.
     """

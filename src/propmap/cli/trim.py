@@ -102,7 +102,6 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
            "collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
            "branch": res.branch,
            "solutions_seen": int(res.n_solutions), **{k: float(getattr(r, k)) for k in numeric_keys(params)},
-           "CQ": float(r.CQ),
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
            "state": str(d["state"]), "flags": r.flags()}
     searched = ({"rpm_range": list(rpm_range) if rpm_range is not None else

@@ -303,12 +303,14 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
     code = status[0]
     nev = status[1]
     nr = y.shape[0]
-    # the annuli's state in two blocks: two allocations per call instead of 20 (2026-11-27: forward flight and
-    # axial flow 1-3% faster per point, paired in one process by tools/ab_kernel.py)
+    # the annuli's state in two blocks: two allocations per call instead of 20 (2026-11-27, tools/ab_kernel.py in
+    # six processes: axial flow 0.96-0.98 the cost per point, forward flight 0.98-1.02, within the processes' spread)
+    # (rows by index, not by unpacking the block: numba types an unpacked row as non-contiguous)
     fw = np.empty((15, nr))
-    trial, f, a, fa, b, fb, c, fc, sgn, h, xtol, ftol, floss, inv_sin, kds = fw
+    trial, f, a, fa, b, fb, c, fc = fw[0], fw[1], fw[2], fw[3], fw[4], fw[5], fw[6], fw[7]
+    sgn, h, xtol, ftol, floss, inv_sin, kds = fw[8], fw[9], fw[10], fw[11], fw[12], fw[13], fw[14]
     iw = np.zeros((5, nr), dtype=np.int64)
-    phase, k, kb, cnt, active = iw
+    phase, k, kb, cnt, active = iw[0], iw[1], iw[2], iw[3], iw[4]
     for j in range(nr):
         trial[j] = 0.0
         a[j] = 0.0
