@@ -16,9 +16,10 @@ Writes benchmarks/results/everyday.json atomically and prints it.
   at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call.
   Each set is timed in :data:`PROCESSES` fresh processes (``--single-call SET``, run by
   :func:`single_call_processes`): the median over processes of each figure, with the
-  processes' range of the wrapper and the ratio. One process' figures moved by a factor of 2
-  between runs on a 2-core Intel Xeon VM (the wrapper 6-27 us, 2026-11-27), more than any
-  change to the wrapper.
+  processes' range of the wrapper and the ratio (each figure is its own median, so the
+  medians of the call and the kernel differ from the wrapper's median by a little). One
+  process' wrapper came out 10.9-27.3 us in runs minutes apart on a 2-core Intel Xeon VM,
+  fresh processes 6.0-14.8 us (2026-11-27), more than any change to the wrapper.
 * Memory: bytes per operating point held by a ``RotorLoads`` with and without the
   per-annulus fields (``radial``), tracemalloc peak over 100,000 points (machine-
   independent); the peak resident memory of ``propmap loads --points`` on 100,000 points
@@ -123,8 +124,10 @@ def single_call_processes(name: str, k: int = PROCESSES) -> dict:
     each figure's median over the processes, and the range of the wrapper and the ratio."""
     runs = []
     for _ in range(k):
-        res = subprocess.run([sys.executable, __file__, "--single-call", name], capture_output=True, check=True,
-                             text=True, env=USER_ENV)
+        res = subprocess.run([sys.executable, __file__, "--single-call", name], capture_output=True, text=True,
+                             env=USER_ENV)
+        if res.returncode != 0:
+            raise SystemExit(f"the single call's process failed:\n{res.stderr}")
         runs.append(json.loads(res.stdout))
     out = {key: float(np.median([r[key] for r in runs])) for key in runs[0]}
     out["processes"] = k
