@@ -306,18 +306,13 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
     # the annuli's state in two blocks: two allocations per call instead of 20 (2026-11-27, tools/ab_kernel.py in
     # six processes: axial flow 0.96-0.98 the cost per point, forward flight 0.98-1.02, within the processes' spread)
     # (rows by index, not by unpacking the block: numba types an unpacked row as non-contiguous)
-    fw = np.empty((15, nr))
+    fw = np.zeros((15, nr))
     trial, f, a, fa, b, fb, c, fc = fw[0], fw[1], fw[2], fw[3], fw[4], fw[5], fw[6], fw[7]
     sgn, h, xtol, ftol, floss, inv_sin, kds = fw[8], fw[9], fw[10], fw[11], fw[12], fw[13], fw[14]
+    floss[:] = 1.0  # kds: Gormont's per-annulus factor (RotorOptions.dynamic_stall), 0 without it
     iw = np.zeros((5, nr), dtype=np.int64)
     phase, k, kb, cnt, active = iw[0], iw[1], iw[2], iw[3], iw[4]
     for j in range(nr):
-        trial[j] = 0.0
-        a[j] = 0.0
-        b[j] = 0.0
-        c[j] = 0.0
-        floss[j] = 1.0
-        kds[j] = 0.0  # Gormont's per-annulus factor (RotorOptions.dynamic_stall), 0 without it
         active[j] = j
     if pk[PK_DYNSTALL] != 0.0 and Vs != 0.0:
         cy2 = nodes[NODE_CY2]
