@@ -19,7 +19,7 @@ Writes benchmarks/results/everyday.json atomically and prints it.
   processes' range of the wrapper and the ratio (each figure is its own median, so the
   medians of the call and the kernel differ from the wrapper's median by a little). One
   process' wrapper came out 10.9-27.3 us in runs minutes apart on a 2-core Intel Xeon VM,
-  fresh processes 6.0-14.8 us (2026-11-27), more than any change to the wrapper.
+  fresh processes 5.6-14.8 us (2026-11-27), more than any change to the wrapper.
 * Memory: bytes per operating point held by a ``RotorLoads`` with and without the
   per-annulus fields (``radial``), tracemalloc peak over 100,000 points (machine-
   independent); the peak resident memory of ``propmap loads --points`` on 100,000 points

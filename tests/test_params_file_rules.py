@@ -3,11 +3,14 @@ overrode the file's keys, dynamic_stall warned of when absent, mu = 0 accepted, 
 table's centre of mass not written, read_body checking only its table: each survived)."""
 
 import math
+import warnings
+
 import numpy as np
 import pytest
+
 import propmap as pm
-from propmap.io.params_file import params_from_dict, read_body, write_params, BodyTable
 from propmap.core.body import BodyDrag
+from propmap.io.params_file import BodyTable, params_from_dict, params_to_dict, read_body, write_params
 
 
 def test_a_files_keys_override_the_section_preset():
@@ -19,8 +22,7 @@ def test_a_files_keys_override_the_section_preset():
 
 def test_a_cambered_file_without_dynamic_stall_is_filled_silently():
     """OFF_WHEN_ABSENT: dynamic_stall is off where the key is absent, unnamed by the fill warning"""
-    import warnings
-    d = pm.io.params_file.params_to_dict(pm.generic_params())
+    d = params_to_dict(pm.generic_params())
     d.pop("dynamic_stall")
     with warnings.catch_warnings():
         warnings.simplefilter("error")

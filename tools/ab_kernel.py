@@ -29,7 +29,7 @@ e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, t
 One process is one draw of memory layout: where a tree's arrays and the thread's stack lie
 modulo 4 KiB moved a forward-flight point's cost by up to 18% on an Intel Xeon
 (2026-11-27, docs/solver.md, Speed), so one run can show a change of that size that is not
-there (0.797, 1.167 and 1.193 were seen between trees that differ by about 1%). Run it in
+there (0.797, 1.167 and 1.193 were seen between trees whose other runs differ by 0-2%). Run it in
 several processes, the trees' order alternated, and report the median with the range.
 """
 
