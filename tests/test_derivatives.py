@@ -821,14 +821,14 @@ def test_element_partials_match_central_differences(model):
     Richardson-extrapolated central differences of the element itself (_physics), on random
     states over both signs of U_T and U_P (reverse flow and windmilling) and through stall; the
     loads they carry are the element's."""
-    from propmap.core._physics import exp_sat_numpy, make_cambered_element, make_element
+    from propmap.core._physics import make_cambered_element, make_element, stall_blend_numpy
     from propmap.core._tangents import cambered_tangent, gill_tangent
 
     rng = np.random.default_rng(11)
     n = 400
     UT, UP, th = rng.uniform(-20, 120, n), rng.uniform(-30, 30, n), rng.uniform(-0.3, 0.9, n)
     if model == "cambered":
-        el = make_cambered_element(np.arctan2, exp_sat_numpy, profile=True)
+        el = make_cambered_element(np.arctan2, stall_blend_numpy, profile=True)
         sec = (rng.uniform(3, 6, n), rng.uniform(0.5, 2, n), rng.uniform(0.5, 1.5, n), rng.uniform(-0.05, 0.05, n))
         dsec = tuple(rng.normal(size=(4, n)) * np.array([0.5, 0.1, 0.1, 0.01])[:, None])
         con = (-0.08, 1.8, 0.02, 0.05, 0.3, 12.0, 0.2, -0.15)
@@ -839,7 +839,7 @@ def test_element_partials_match_central_differences(model):
         moves = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 0, 1), (0, 0, 1, 0))  # U_T, U_P, the constants, theta
     else:
         sincos = model == "gill2017_sincos"
-        el = make_element(np.arctan2, exp_sat_numpy, profile=True)
+        el = make_element(np.arctan2, stall_blend_numpy, profile=True)
         kre = rng.uniform(0, 0.3, n)
         con = (5.3, 1.7, 1.8, math.radians(20.6), 50.0, 0.03)
         base, *partials = gill_tangent(UT, UP, th, np.sin(th), np.cos(th), kre, con, sincos)

@@ -203,8 +203,8 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
     K1), d bounded at DELAY_MAX: thrust, torque, rolling moment, and the pitching moment and side
     force that the rising and falling halves make (reported as 0 in a first version: a review,
     2026-11-26). The descent case (120 deg) has U_P < 0 on most annuli, which turns the halves."""
-    from propmap.core._physics import (CAMBERED, DELAY_MAX, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, exp_sat_numpy,
-                                       make_cambered_element)
+    from propmap.core._physics import (CAMBERED, DELAY_MAX, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus,
+                                       make_cambered_element, stall_blend_numpy)
     from propmap.core._momentum import inplane_induction_numpy
     from propmap.core.polar import _model_constants
     from propmap.core.nodes import _cambered_args, _nodes
@@ -230,7 +230,7 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
     adot = om * UP * Vb * cp / U**2
     d = np.minimum(1.5 * np.sqrt(y[:, None] * np.sqrt(nd.cy2)[:, None] * np.abs(adot) / (2 * U)), DELAY_MAX)
     shift = np.where(adot >= 0, d, -0.5 * d)
-    element = make_cambered_element(np.arctan2, exp_sat_numpy, profile=True)
+    element = make_cambered_element(np.arctan2, stall_blend_numpy, profile=True)
     geo = (nd.theta[:, None], nd.sin_th[:, None], nd.cos_th[:, None], s0[:, None], s1[:, None], s2[:, None],
            s3[:, None])
     qT, qH, cdpU = element(UT, UP, *geo, *pk[:6], pk[6] + shift / s2[:, None], pk[7])

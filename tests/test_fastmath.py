@@ -15,6 +15,7 @@ from propmap.core._physics import element, loss_factor_numpy
 from propmap.core.polar import _model_constants
 
 ROOT = Path(__file__).resolve().parents[1]
+_exp_wide = numba.njit(_fastmath.make_exp_wide(_annulus._exp_sat))
 
 
 @numba.njit
@@ -27,6 +28,18 @@ def _atan2_all(y, x, out):
 def _exp_all(z, out):
     for i in range(z.size):
         out[i] = _annulus._exp_sat(z[i])
+
+
+@numba.njit
+def _exp_wide_all(z, out):
+    for i in range(z.size):
+        out[i] = _exp_wide(z[i])
+
+
+@numba.njit
+def _blend_all(z, h, out):
+    for i in range(z.size):
+        out[i] = _annulus._stall_blend(z[i], h[i])
 
 
 @numba.njit
@@ -88,6 +101,41 @@ def test_exp_sat_is_exp_of_the_clipped_argument():
     assert np.max(np.abs(out / ref - 1)) <= 5e-13
     assert out[-5] == out[0] and out[-4] == out[-1]  # saturated beyond +-40
     assert out[-3] == pytest.approx(1.0, rel=1e-13)
+
+
+def test_exp_wide_is_exp_of_the_clipped_argument():
+    z = np.concatenate([np.linspace(-400, 400, 400_001), [-320.0, 320.0, 0.0, -1e300, 1e300]])
+    out = np.empty_like(z)
+    _exp_wide_all(z, out)
+    ref = np.exp(np.clip(z, -320, 320))
+    assert np.max(np.abs(out / ref - 1)) <= 2e-12
+    assert out[-5] == out[0] and out[-4] == out[-1]  # saturated beyond +-320
+    assert out[-3] == pytest.approx(1.0, rel=1e-15)
+    assert np.all(np.isfinite(out)) and np.all(out > 0)
+
+
+def test_stall_blend_with_one_exponential_is_eq_3s_sigmoid():
+    """_physics.make_stall_blend (compiled and NumPy) against eq (3)'s two exponentials, 1 - 1/((1 + p)(1 + q)),
+    p = exp(z - h), q = exp(-z - h) (airfoil.sigmoid_blend, overflow-safe), from attached flow to deep stall and
+    for the paper's sharp M = 50; even in z, 0 at z = 0 for a wide band, 1 beyond it."""
+    from propmap.core._physics import stall_blend_numpy
+    from propmap.core.airfoil import sigmoid_blend
+
+    rng = np.random.default_rng(13)
+    n = 200_000
+    M = rng.choice([5.0, 12.0, 50.0, 200.0], n)
+    alpha = rng.uniform(-np.pi, np.pi, n)
+    a0 = rng.uniform(0.0, 0.6, n)  # half the stall band [rad]
+    z, h = M * alpha, M * a0
+    ref = sigmoid_blend(alpha, a0, M)
+    out = np.empty(n)
+    _blend_all(z, h, out)
+    assert np.max(np.abs(out - ref)) < 1e-12
+    assert np.max(np.abs(stall_blend_numpy(z, h) - ref)) < 1e-14
+    assert np.all((out >= 0.0) & (out <= 1.0))
+    np.testing.assert_array_equal(stall_blend_numpy(-z, h), stall_blend_numpy(z, h))
+    assert stall_blend_numpy(0.0, 40.0) < 1e-17 and stall_blend_numpy(300.0, 5.0) == 1.0
+    assert stall_blend_numpy(-300.0, 5.0) == 1.0 and stall_blend_numpy(1e300, 5.0) == 1.0
 
 
 @pytest.mark.parametrize("params", [pm.preset("gill2017-apc").replace(M=50.0),

@@ -44,11 +44,12 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._fastmath import atan2_poly, exp_sat
+from ._fastmath import atan2_poly, exp_sat, make_exp_wide
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import (CAMBERED, GILL_SINCOS, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_Y, PK_DYNSTALL,
                        PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, inverse_sin_phi, make_cambered_element,
-                       make_delayed_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag)
+                       make_delayed_cambered_element, make_element, make_loss_factor, make_prandtl, make_profile_drag,
+                       make_stall_blend)
 from ._momentum import (empirical_k, inflow_gradients, inplane_induction, make_axial_mass_flow, momentum_scale,
                         momentum_thrust, skew_inflow_ratio, swirl_step, swirl_target)
 
@@ -71,12 +72,14 @@ _jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
 # polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
 _atan2 = _jit_inline(atan2_poly)
 _exp_sat = _jit_inline(exp_sat)
-_element_gill = _jit_inline(make_element(_atan2, _exp_sat))
-_element_cambered = _jit_inline(make_cambered_element(_atan2, _exp_sat))
-_profile_cd = _jit_inline(make_profile_drag(_atan2, _exp_sat))
+# eq (3)'s stall blend with one exponential per element (_physics.make_stall_blend)
+_stall_blend = _jit_inline(make_stall_blend(_jit_inline(make_exp_wide(_exp_sat))))
+_element_gill = _jit_inline(make_element(_atan2, _stall_blend))
+_element_cambered = _jit_inline(make_cambered_element(_atan2, _stall_blend))
+_profile_cd = _jit_inline(make_profile_drag(_atan2, _stall_blend))
 # the elements with their profile drag C_D,p U as a third value (the implicit derivatives' radial drag)
-_element_gill_p = _jit_inline(make_element(_atan2, _exp_sat, profile=True))
-_element_cambered_p = _jit_inline(make_cambered_element(_atan2, _exp_sat, profile=True))
+_element_gill_p = _jit_inline(make_element(_atan2, _stall_blend, profile=True))
+_element_cambered_p = _jit_inline(make_cambered_element(_atan2, _stall_blend, profile=True))
 # the cambered element with Gormont's dynamic stall, a node and its mirror node (RotorOptions.dynamic_stall): their
 # means, and (the loads') half their differences too
 _element_cambered_d = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sat))

@@ -28,9 +28,9 @@ Two section models share the element (``model`` selects, see ``SECTION_*``):
 The compiled kernel chooses the model once per residual, outside the azimuth loop: a
 branch inside it stops LLVM from vectorising cleanly (measured: +30% per point).
 
-The elements are built by ``make_element`` / ``make_cambered_element(atan2, exp_sat)`` so
-that each back end supplies its own angle and exponential: NumPy's ufuncs here, the branch-free polynomials of
-``_fastmath.py`` in the compiled kernel (so that its azimuth loop vectorises).
+The elements are built by ``make_element`` / ``make_cambered_element(atan2, stall_blend)`` so
+that each back end supplies its own angle and exponential (the blend's, ``make_stall_blend``): NumPy's ufuncs here,
+the branch-free polynomials of ``_fastmath.py`` in the compiled kernel (so that its azimuth loop vectorises).
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ import math
 
 import numpy as np
 
-from ._fastmath import EXP_CLIP  # |exponent| beyond which the stall blend equals its limit
+from ._fastmath import EXP_CLIP, EXP_WIDE  # |exponent| beyond which exp_sat / exp_wide saturate
 
 TWO_PI = 2.0 * np.pi
 TWO_OVER_PI = 2.0 / np.pi
@@ -77,8 +77,51 @@ def exp_sat_numpy(z):
     return np.exp(np.clip(z, -EXP_CLIP, EXP_CLIP))
 
 
-def make_element(atan2, exp_sat, profile=False):
-    """Return the paper's element (eqs 3-4) using the given arctangent and saturated exp; with
+def exp_wide_numpy(z):
+    """``exp(clip(z, -320, 320))`` elementwise (the NumPy twin of ``_fastmath.make_exp_wide``'s)."""
+    return np.exp(np.clip(z, -EXP_WIDE, EXP_WIDE))
+
+
+def make_stall_blend(exp_wide):
+    """Return eq (3)'s sigmoid ``stall_blend(z, h)`` using the given ``exp(clip(z, -320, 320))``.
+
+    Gill & D'Andrea (2017), eq (3): sigma = 1 - 1 / ((1 + p)(1 + q)) with p = exp(z - h),
+    q = exp(-z - h), where z = M (alpha - centre) is the angle from the middle of the two stall
+    angles and h = M (half their distance) (the paper's section: centre 0, h = M alpha_0; the
+    cambered polar: centre and half-width of g a_stall+ and g a_stall-). p q = exp(-2 h) is
+    constant, so the product is (1 + E K)(E + K) / E with E = exp(|z|) (sigma is even in z)
+    and K = exp(-h), and sigma = 1 - E / ((1 + E K)(E + K)): one exponential per element
+    instead of two (K is per annulus; the compiled residual hoists it out of the azimuth loop).
+    Measured 2026-11-27: forward-flight batches 0.75-0.80x the two exponentials' cost
+    (docs/solver.md, Speed). With E clipped at exp(320) the blend equals its limit in double
+    precision while h < 280 (the two exponentials were clipped at +-40 each, where it equals
+    its limits too), and (1 + E K)(E + K) <= exp(640) stays finite for h >= 0.
+
+    Parameters
+    ----------
+    z, h : float or ndarray
+        M (alpha - centre) and M (half-width) [-].
+
+    Returns
+    -------
+    float or ndarray
+        sigma in [0, 1] [-].
+    """
+
+    def stall_blend(z, h):
+        E = exp_wide(abs(z))
+        K = exp_wide(-h)
+        return 1.0 - E / ((1.0 + E * K) * (E + K))
+
+    return stall_blend
+
+
+stall_blend_numpy = make_stall_blend(exp_wide_numpy)
+
+
+def make_element(atan2, stall_blend, profile=False):
+    """Return the paper's element (eqs 3-4) using the given arctangent and stall blend
+    (:func:`make_stall_blend`); with
     ``profile`` it returns a third value, the profile drag's C_D,p U (:func:`make_profile_drag`,
     computed with the element's own terms; the implicit derivatives' radial drag)."""
 
@@ -115,11 +158,8 @@ def make_element(atan2, exp_sat, profile=False):
         if sincos:
             CL = post
         else:
-            # eq (3), sigma = 1 - 1/((1+p)(1+q)), p = exp(M(a - a0)), q = exp(-M(a + a0));
-            # the exponents are clipped to +-40, where sigma equals its limits in double.
-            p = exp_sat(M * (alpha - alpha0))
-            q = exp_sat(-M * (alpha + alpha0))
-            s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
+            # eq (3), sigma = 1 - 1/((1+p)(1+q)), p = exp(M(a - a0)), q = exp(-M(a + a0))
+            s = stall_blend(M * alpha, M * alpha0)
             CL = (1.0 - s) * cl1 * alpha + s * post
         cdp = kre / np.sqrt(U) + cd0
         CD = cd * sin_a * sin_a + cdp  # eq (4)
@@ -130,8 +170,9 @@ def make_element(atan2, exp_sat, profile=False):
     return element_gill
 
 
-def make_cambered_element(atan2, exp_sat, profile=False):
-    """Return the cambered-polar element using the given arctangent and saturated exp; with
+def make_cambered_element(atan2, stall_blend, profile=False):
+    """Return the cambered-polar element using the given arctangent and stall blend
+    (:func:`make_stall_blend`); with
     ``profile`` it returns a third value, C_D,p U (as :func:`make_element`)."""
 
     def element_cambered(UT, UP, theta, sin_th, cos_th, a, cdf, g, dal0, alpha_L0, cd90, cd_min, cd2, cl_cdmin, M,
@@ -167,10 +208,9 @@ def make_cambered_element(atan2, exp_sat, profile=False):
         ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
         sin_a = (sin_th * UT - cos_th * UP) / U
         cos_a = (cos_th * UT + sin_th * UP) / U
-        # eq (3)'s blend, with separate positive and negative stall angles
-        p = exp_sat(M * (ae - g * a_stall_pos))
-        q = exp_sat(-M * (ae - g * a_stall_neg))
-        s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
+        # eq (3)'s blend, with separate positive and negative stall angles: p = exp(M (ae - g a_stall_pos)),
+        # q = exp(-M (ae - g a_stall_neg))
+        s = stall_blend(M * (ae - 0.5 * g * (a_stall_pos + a_stall_neg)), 0.5 * M * g * (a_stall_pos - a_stall_neg))
         cl_att = a * ae
         dcl = cl_att - cl_cdmin
         CL = (1.0 - s) * cl_att + s * cd90 * sin_a * cos_a
@@ -247,9 +287,9 @@ def make_delayed_cambered_element(atan2, exp_sat, halves=False):
     return element_cambered_delayed
 
 
-def make_profile_drag(atan2, exp_sat):
+def make_profile_drag(atan2, stall_blend):
     """Return the profile (attached-flow) drag coefficient of either element, using the given
-    arctangent and saturated exp: the part of C_D that the radial flow's drag scales
+    arctangent and stall blend (:func:`make_stall_blend`): the part of C_D that the radial flow's drag scales
     (airfoil.RotorOptions.radial_drag; _annulus.annulus_loads)."""
 
     def profile_cd(UT, UP, theta, s0, s1, s2, s3, model, pk):
@@ -265,9 +305,7 @@ def make_profile_drag(atan2, exp_sat):
         if model == CAMBERED:
             ae = theta - (pk[0] + s3) - atan2(UP, UT)
             ae = ae - TWO_PI * (ae > np.pi) + TWO_PI * (ae < -np.pi)
-            p = exp_sat(pk[5] * (ae - s2 * pk[6]))
-            q = exp_sat(-pk[5] * (ae - s2 * pk[7]))
-            s = 1.0 - 1.0 / ((1.0 + p) * (1.0 + q))
+            s = stall_blend(pk[5] * (ae - 0.5 * s2 * (pk[6] + pk[7])), 0.5 * pk[5] * s2 * (pk[6] - pk[7]))
             dcl = s0 * ae - pk[4]
             return s1 * (pk[2] + (1.0 - s) * pk[3] * dcl * dcl)
         return s0 / np.sqrt(np.sqrt(UT * UT + UP * UP + 1e-300)) + pk[5]
@@ -275,11 +313,11 @@ def make_profile_drag(atan2, exp_sat):
     return profile_cd
 
 
-element_gill = make_element(np.arctan2, exp_sat_numpy)
-element_cambered = make_cambered_element(np.arctan2, exp_sat_numpy)
+element_gill = make_element(np.arctan2, stall_blend_numpy)
+element_cambered = make_cambered_element(np.arctan2, stall_blend_numpy)
 element_cambered_delayed = make_delayed_cambered_element(np.arctan2, exp_sat_numpy)
 element_cambered_delayed_h = make_delayed_cambered_element(np.arctan2, exp_sat_numpy, halves=True)
-profile_cd = make_profile_drag(np.arctan2, exp_sat_numpy)
+profile_cd = make_profile_drag(np.arctan2, stall_blend_numpy)
 
 
 def element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk):
