@@ -114,28 +114,52 @@ def test_exp_wide_is_exp_of_the_clipped_argument():
     assert np.all(np.isfinite(out)) and np.all(out > 0)
 
 
-def test_stall_blend_with_one_exponential_is_eq_3s_sigmoid():
+@pytest.mark.parametrize("sharpness, half_width", [((5.0, 12.0, 50.0, 200.0), 0.6), ((500.0, 1000.0), np.pi / 2)],
+                         ids=["usual", "M to its bound"])
+def test_stall_blend_with_one_exponential_is_eq_3s_sigmoid(sharpness, half_width):
     """_physics.make_stall_blend (compiled and NumPy) against eq (3)'s two exponentials, 1 - 1/((1 + p)(1 + q)),
-    p = exp(z - h), q = exp(-z - h) (airfoil.sigmoid_blend, overflow-safe), from attached flow to deep stall and
-    for the paper's sharp M = 50; even in z, 0 at z = 0 for a wide band, 1 beyond it."""
+    p = exp(z - h), q = exp(-z - h) (airfoil.sigmoid_blend, overflow-safe), from attached flow to deep stall, for
+    the paper's sharp M = 50 and up to M's bound 1000 (h = M times the half-width to 1571: a first version clipped
+    exp(|z|) and exp(-h) at 320 each and gave 1/2 beyond h = 320, a review, 2026-11-27); even in z, 0 at z = 0
+    for a wide band, 1 beyond it, no overflow for any h."""
     from propmap.core._physics import stall_blend_numpy
     from propmap.core.airfoil import sigmoid_blend
 
     rng = np.random.default_rng(13)
     n = 200_000
-    M = rng.choice([5.0, 12.0, 50.0, 200.0], n)
+    M = rng.choice(sharpness, n)
     alpha = rng.uniform(-np.pi, np.pi, n)
-    a0 = rng.uniform(0.0, 0.6, n)  # half the stall band [rad]
+    a0 = rng.uniform(0.0, half_width, n)  # half the stall band [rad]
     z, h = M * alpha, M * a0
     ref = sigmoid_blend(alpha, a0, M)
     out = np.empty(n)
     _blend_all(z, h, out)
     assert np.max(np.abs(out - ref)) < 1e-12
-    assert np.max(np.abs(stall_blend_numpy(z, h) - ref)) < 1e-14
+    with np.errstate(all="raise"):
+        assert np.max(np.abs(stall_blend_numpy(z, h) - ref)) < 1e-13
+        np.testing.assert_array_equal(stall_blend_numpy(-z, h), stall_blend_numpy(z, h))
+        assert stall_blend_numpy(0.0, 40.0) < 1e-17 and stall_blend_numpy(300.0, 5.0) == 1.0
+        assert stall_blend_numpy(-300.0, 5.0) == 1.0 and stall_blend_numpy(1e300, 5.0) == 1.0
+        assert stall_blend_numpy(0.0, 2000.0) == 0.0 and stall_blend_numpy(2500.0, 2000.0) == 1.0
+        assert stall_blend_numpy(0.0, -400.0) == 1.0  # a band of negative width: stalled everywhere
     assert np.all((out >= 0.0) & (out <= 1.0))
-    np.testing.assert_array_equal(stall_blend_numpy(-z, h), stall_blend_numpy(z, h))
-    assert stall_blend_numpy(0.0, 40.0) < 1e-17 and stall_blend_numpy(300.0, 5.0) == 1.0
-    assert stall_blend_numpy(-300.0, 5.0) == 1.0 and stall_blend_numpy(1e300, 5.0) == 1.0
+
+
+@pytest.mark.parametrize("params", [pm.preset("gill2017-apc").replace(M=1000.0),
+                                    pm.CamberedParams(M=1000.0, cl_max=2.0, cl_min=-2.0)], ids=["gill2017", "cambered"])
+def test_a_sharp_blend_past_stall_and_its_derivatives(params):
+    """M at its bound with a wide stall band (h = M alpha_0 = 360, or M g (a+ - a-) / 2 = 350): at 90 deg the
+    section is stalled (lift of the flat plate's cd90 sin a cos a = 0, as eq (3)'s blend -> 1), and the rotor's
+    implicit dT/dOmega (whose element partials, core/_tangents.py, take the blend's two exponentials) equals central
+    differences of the loads (the one-exponential blend's first version put C_L(90 deg) at 4.2-4.7 and these 16-37%
+    apart; a review, 2026-11-27)."""
+    assert abs(float(pm.lift_coefficient(np.pi / 2, params))) < 1e-12
+    prop = pm.load_propeller("apce_8x6")
+    om, V, b = 400.0, 15.0, np.pi / 2
+    r = pm.rotor_loads(prop, params, om, V, b, derivatives=True)
+    step = 1e-3 * om
+    fd = (pm.rotor_loads(prop, params, om + step, V, b).thrust - pm.rotor_loads(prop, params, om - step, V, b).thrust)
+    assert r.derivative("thrust", "omega") == pytest.approx(fd / (2 * step), rel=1e-4)
 
 
 @pytest.mark.parametrize("params", [pm.preset("gill2017-apc").replace(M=50.0),

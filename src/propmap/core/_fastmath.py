@@ -1,7 +1,7 @@
 """Branch-free polynomial atan2 and saturated exp for the compiled kernel.
 
 Why: numba compiles ``np.arctan2`` and ``np.exp`` on scalars to scalar libm calls,
-which stop LLVM from vectorising the azimuth loop of the residual (eq 11). The two
+which stop LLVM from vectorising the azimuth loop of the residual (eq 11). The
 functions below use only arithmetic, ``abs``, ``min``/``max`` and selects, so the
 loop over azimuth nodes compiles to SIMD code (measured in benchmarks/README.md).
 
@@ -13,12 +13,12 @@ Accuracy (asserted by tests/test_fastmath.py against NumPy on 10^6 random inputs
   equal to them in double precision; it is applied identically in the NumPy
   reference (``_physics.exp_sat_numpy``).
 * ``exp_wide`` (``make_exp_wide``): ``exp(clip(z, -320, 320))`` as ``exp_sat(z / 8)^8``, to a
-  relative error <= 2e-12. The stall blend evaluates its two exponentials as one
-  (``_physics.make_stall_blend``), whose argument reaches M pi (157 for the paper's M = 50);
-  at 320 the blend equals its limit in double precision for any stall angle that keeps
-  M times it below 280. NumPy twin: ``_physics.exp_wide_numpy``.
+  relative error <= 2e-12: the stall blend's per-annulus constant exp(-2h)
+  (``_physics.make_stall_blend``, which takes its two exponentials as one exp_sat and this).
+  NumPy twin: ``_physics.exp_wide_numpy``.
 
-Both are plain Python functions of scalars; ``_annulus.py`` compiles them inline.
+They are plain Python functions of scalars (``make_exp_wide`` a factory of one);
+``_annulus.py`` compiles them inline.
 The coefficients are monomial forms of Chebyshev interpolants (numpy.polynomial):
 ``atan(x) = x P(x^2)`` with P of degree 18 interpolating atan(sqrt t)/sqrt t on
 t in [0, 1], and ``exp(y)`` of degree 12 on y in [-0.625, 0.625];
@@ -32,7 +32,7 @@ import math
 HALF_PI = 0.5 * math.pi
 PI = math.pi
 EXP_CLIP = 40.0
-EXP_WIDE = 320.0
+EXP_WIDE = 8.0 * EXP_CLIP  # make_exp_wide's exp_sat(z / 8)^8
 
 ATAN = (1.000000000000002, -0.33333333333421167, 0.2000000000643493, -0.14285714479457498,
         0.11111114175207791, -0.09090936926888635, 0.0769244729865118, -0.06666856734869056,

@@ -82,41 +82,45 @@ def exp_wide_numpy(z):
     return np.exp(np.clip(z, -EXP_WIDE, EXP_WIDE))
 
 
-def make_stall_blend(exp_wide):
-    """Return eq (3)'s sigmoid ``stall_blend(z, h)`` using the given ``exp(clip(z, -320, 320))``.
+def make_stall_blend(exp_sat, exp_wide):
+    """Return eq (3)'s sigmoid with one exponential per element, using the given saturated exps.
 
     Gill & D'Andrea (2017), eq (3): sigma = 1 - 1 / ((1 + p)(1 + q)) with p = exp(z - h),
     q = exp(-z - h), where z = M (alpha - centre) is the angle from the middle of the two stall
     angles and h = M (half their distance) (the paper's section: centre 0, h = M alpha_0; the
-    cambered polar: centre and half-width of g a_stall+ and g a_stall-). p q = exp(-2 h) is
-    constant, so the product is (1 + E K)(E + K) / E with E = exp(|z|) (sigma is even in z)
-    and K = exp(-h), and sigma = 1 - E / ((1 + E K)(E + K)): one exponential per element
-    instead of two (K is per annulus; the compiled residual hoists it out of the azimuth loop).
-    Measured 2026-11-27: forward-flight batches 0.75-0.80x the two exponentials' cost
-    (docs/solver.md, Speed). With E clipped at exp(320) the blend equals its limit in double
-    precision while h < 280 (the two exponentials were clipped at +-40 each, where it equals
-    its limits too), and (1 + E K)(E + K) <= exp(640) stays finite for h >= 0.
+    cambered polar: centre and half-width of g a_stall+ and g a_stall-). sigma is even in z
+    and p q = exp(-2 h) = K2 depends on the annulus only, so with p the larger of the two,
+    p = exp(|z| - h), and q = K2 / p: sigma = 1 - p / ((1 + p)(p + K2)). One exponential per
+    element instead of two (K2 is computed once per annulus in the compiled residual's azimuth
+    loop, which hoists it). The saturations keep every limit: p is clipped at exp(+-40) as
+    each exponential was before (beyond, sigma equals 1, or is within exp(-40) of 0 as before,
+    since |z| - h < -40 means h > 40 and K2 / p < exp(-40)), and K2 at exp(+-320), where it
+    is negligible against p >= exp(-40) (or sigma = 1 for h < 0), with no overflow for any h
+    (a first version, clipping exp(|z|) and exp(-h) at 320 each, gave sigma = 1/2 for h >= 320,
+    reachable with M near its bound; a review, 2026-11-27).
 
     Parameters
     ----------
-    z, h : float or ndarray
-        M (alpha - centre) and M (half-width) [-].
+    exp_sat, exp_wide : callable
+        ``exp(clip(z, -40, 40))`` and ``exp(clip(z, -320, 320))`` (_fastmath.exp_sat and
+        make_exp_wide's in the compiled kernel, :func:`exp_sat_numpy` and :func:`exp_wide_numpy`
+        for NumPy).
 
     Returns
     -------
-    float or ndarray
-        sigma in [0, 1] [-].
+    callable
+        ``stall_blend(z, h)`` -> sigma in [0, 1]: z = M (alpha - centre) and h = M (half-width)
+        [-], floats or arrays that broadcast.
     """
 
     def stall_blend(z, h):
-        E = exp_wide(abs(z))
-        K = exp_wide(-h)
-        return 1.0 - E / ((1.0 + E * K) * (E + K))
+        p = exp_sat(abs(z) - h)
+        return 1.0 - p / ((1.0 + p) * (p + exp_wide(-2.0 * h)))
 
     return stall_blend
 
 
-stall_blend_numpy = make_stall_blend(exp_wide_numpy)
+stall_blend_numpy = make_stall_blend(exp_sat_numpy, exp_wide_numpy)
 
 
 def make_element(atan2, stall_blend, profile=False):
@@ -246,7 +250,8 @@ def make_delayed_cambered_element(atan2, exp_sat, halves=False):
     blend, so the pair's mean loads are the element's with the mean of the two blends,
     s = 1 - (1/(1+p+) + 1/(1+p-)) / (2 (1+q)), p+- = exp(M (ae - g a_pos -+ K d)), K = 1 and
     -1/2, d = min(kd sqrt(|U_P vcos| / U^3), DELAY_MAX) with kd = gamma sqrt(c Omega / 2) (per
-    annulus) and vcos = V_b cos(psi) (per node). d = 0 gives the static element exactly.
+    annulus) and vcos = V_b cos(psi) (per node). d = 0 gives the static element to rounding (1 ulp:
+    its blend is evaluated with two exponentials per blend, the static element's with one, :func:`make_stall_blend`).
 
     Returns ``element(UT, UP, theta, sin_th, cos_th, a, cdf, g, dal0, alpha_L0, cd90, cd_min,
     cd2, cl_cdmin, M, a_stall_pos, a_stall_neg, kd, vcos)`` [m/s, rad, the cambered element's
