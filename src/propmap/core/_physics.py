@@ -91,11 +91,12 @@ def make_stall_blend(exp_sat, exp_wide):
     cambered polar: centre and half-width of g a_stall+ and g a_stall-). sigma is even in z
     and p q = exp(-2 h) = K2 depends on the annulus only, so with p the larger of the two,
     p = exp(|z| - h), and q = K2 / p: sigma = 1 - p / ((1 + p)(p + K2)). One exponential per
-    element instead of two (K2 is computed once per annulus in the compiled residual's azimuth
-    loop, which hoists it). The saturations keep every limit: p is clipped at exp(+-40) as
-    each exponential was before (beyond, sigma equals 1, or is within exp(-40) of 0 as before,
+    element instead of two (K2 depends on the annulus only: the compiled residual's azimuth
+    loop hoists it). The saturations keep every limit: p is clipped at exp(+-40) as each
+    exponential was before (beyond, sigma equals 1, or is within exp(-40) of 0 as before,
     since |z| - h < -40 means h > 40 and K2 / p < exp(-40)), and K2 at exp(+-320), where it
-    is negligible against p >= exp(-40) (or sigma = 1 for h < 0), with no overflow for any h
+    is negligible against p >= exp(-40) (or, for h < -160, sigma is 1 in double either way),
+    with no overflow for any h
     (a first version, clipping exp(|z|) and exp(-h) at 320 each, gave sigma = 1/2 for h >= 320,
     reachable with M near its bound; a review, 2026-11-27).
 

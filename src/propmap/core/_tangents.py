@@ -27,7 +27,7 @@ The stall blend s = 1 - 1 / ((1 + p)(1 + q)) moves by (dp (1 + q) + (1 + p) dq) 
 (1 + q))^2 with dp = M p (da_e - dg a_stall+), dq = -M q (da_e - dg a_stall-); where the
 exponential saturates (|exponent| >= 40, _fastmath.exp_sat) this is M e^-40 of the blend's
 range instead of 0. The blend is evaluated here as p and q, two exponentials (the element
-since 2026-11-27 takes one, _physics.make_stall_blend: the same sigma to 3e-13); beyond them
+since 2026-11-27 takes one, _physics.make_stall_blend: the same sigma to 1e-13); beyond them
 one atan2 and one sqrt (the paper's section's Blasius term one more sqrt), so the partials
 cost arithmetic only (the tangent-linear, or forward, mode of A. Griewank and A. Walther,
 "Evaluating Derivatives", 2nd ed., SIAM, 2008, Ch. 3, applied by hand). Checked against
