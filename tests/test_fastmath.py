@@ -15,7 +15,6 @@ from propmap.core._physics import element, loss_factor_numpy
 from propmap.core.polar import _model_constants
 
 ROOT = Path(__file__).resolve().parents[1]
-_exp_wide = numba.njit(_fastmath.make_exp_wide(_annulus._exp_sat))
 
 
 @numba.njit
@@ -33,7 +32,7 @@ def _exp_all(z, out):
 @numba.njit
 def _exp_wide_all(z, out):
     for i in range(z.size):
-        out[i] = _exp_wide(z[i])
+        out[i] = _annulus._exp_wide(z[i])
 
 
 @numba.njit

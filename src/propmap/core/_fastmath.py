@@ -96,8 +96,18 @@ def exp_sat(z):
 
 
 def make_exp_wide(exp_sat):
-    """Return ``exp_wide(z)`` = ``exp(min(max(z, -320), 320))`` of a scalar, as ``exp_sat(z / 8)^8``
-    (built on the given ``exp_sat``, so that the kernel's compiled one is inlined)."""
+    """Return ``exp_wide(z)`` = ``exp(min(max(z, -320), 320))`` of a scalar, as ``exp_sat(z / 8)^8``.
+
+    Parameters
+    ----------
+    exp_sat : callable
+        :func:`exp_sat` or its compiled form (so that the kernel's compiled one is inlined).
+
+    Returns
+    -------
+    callable
+        ``exp_wide(z)`` of a float z [-], relative error <= 2e-12 (tests/test_fastmath.py).
+    """
 
     def exp_wide(z):
         p = exp_sat(min(max(z, -EXP_WIDE), EXP_WIDE) * 0.125)
