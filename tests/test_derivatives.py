@@ -55,6 +55,8 @@ def _finite_difference(prop, params, base, key, h):
 
 @pytest.mark.parametrize("om, V, beta_deg", [
     (800.0, 0.0, 0.0),  # hover
+    (800.0, 0.0, 180.0),  # hover, the airspeed's slope along the descent ray: the empirical curve's at hover
+    (800.0, 0.0, 130.0),  # hover, an oblique descending ray (the curve's fade flat at rest)
     (800.0, 5.0, 0.0),  # axial climb
     (800.0, 3.0, 180.0),  # axial descent (empirical momentum)
     (800.0, 12.0, 100.0),  # edgewise, descending

@@ -62,6 +62,8 @@ def _differences(prop, params, base, key, h):
 
 @pytest.mark.parametrize("om, V, beta_deg", [
     (800.0, 0.0, 0.0),  # hover: solved with the uniform inflow (no gradient), its slopes one-sided
+    (800.0, 0.0, 180.0),  # hover, along the descent ray: the empirical curve's slope at hover
+    (800.0, 0.0, 130.0),  # hover, an oblique descending ray: the gradients' and the curve's slopes from rest
     (800.0, 5.0, 0.0),  # axial climb, likewise
     (800.0, 3.0, 180.0),  # axial descent (empirical momentum)
     (800.0, 6.0, 80.0),  # edgewise, climbing slightly: the wake skew near its largest

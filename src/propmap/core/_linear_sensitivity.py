@@ -58,7 +58,7 @@ import numpy as np
 
 from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, _skew_inflow_ratio, annulus_loads
 from ._jitcache import CACHE
-from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
+from ._momentum_sensitivity import _momentum_derivatives, _rest_slope
 from ._physics import PK_INPLANE, PK_RADIAL_DRAG
 from ._parameter_sensitivity import N_STATE, _cambered_direction, _cambered_state, _direction, _stored_state
 from ._sensitivity import (
@@ -350,7 +350,6 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         dk[c, 1] = ky_mu * dmu + ky_lam * dlam
     kzx = kx_lam / OmR
     kzy = ky_lam / OmR
-    h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (as _sensitivity)
     P = np.empty((N_FIXED + n_all - n_in, 6))  # the linear solve's annulus
     Pu = np.empty((N_FIXED + n_all - n_in, 6))  # the uniform solve's (only its thrust column is used)
     stw = np.empty((N_STATE, azim.shape[1] if model == CAMBERED and n_all > n_in else 0))
@@ -387,11 +386,6 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
         Gv = P[0, 0] - mv
         sw = _swirl_system(swirl, vj, yj, om, T0, Q0, P[0, 0], P[0, 2], -P[ROW_U, 0], -P[ROW_U, 1], -P[ROW_U, 2],
                            -P[ROW_U, 3], m_om / yj, Gv)
-        if one_sided:  # at rest, the momentum sides there: the base of the one-sided differences along the rays
-            m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
-            m0u = _momentum_side(vuj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp)
-        else:
-            m0 = m0u = 0.0
         wv = w[j] * yj / wy  # the mean inflow's weight
         dgxz = kzx * yj / radius  # the annulus' gradients per unit change of v_u
         dgyz = kzy * yj / radius
@@ -405,8 +399,8 @@ def _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflo
             if (c == 1 and n_in > 1 and one_sided) or ray:  # the airspeed from rest along its ray: one-sided
                 rs = e[c, 1] if ray else sb
                 rc = e[c, 2] if ray else cb
-                dmom = _ray_slope(m0, vj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
-                dmomu = _ray_slope(m0u, vuj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = _rest_slope(m_vs, m_vc, vj, rs, rc, emp)
+                dmomu = _rest_slope(mu_vs, mu_vc, vuj, rs, rc, emp)
             else:
                 dmom = m_om * e[c, 0] + m_vs * e[c, 1] + m_vc * e[c, 2]
                 dmomu = mu_om * e[c, 0] + mu_vs * e[c, 1] + mu_vc * e[c, 2]

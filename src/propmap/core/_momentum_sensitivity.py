@@ -8,8 +8,9 @@ through Glauert's |V cos beta + v|, through the empirical descent curve's invers
 1/sin phi = sqrt(w^2 + (Omega y)^2) / w (w the axial mass-flow velocity; with swirl the
 caller passes Omega less u / y, the blade speed the loss factor sees). Where the empirical
 model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) the caller differences
-:func:`_momentum_side` centrally instead; at V = 0 the airspeed's slope is one-sided along a
-ray (:func:`_ray_slope`).
+:func:`_momentum_side` centrally instead. At V = 0 the airspeed's one-sided slope along a ray is
+the analytic partials' chain rule, with the empirical curve's slope at hover on a descending
+ray (:func:`_rest_slope`).
 """
 
 from __future__ import annotations
@@ -47,13 +48,18 @@ def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
-def _ray_slope(m0, v, Om, sb, cb, h, y, mfac, ct, ch, emp):
-    """d(F_loss dT_BEMT/dy)/dV from rest along the ray (V sin beta, V cos beta) = V (sb, cb):
-    one-sided, second order, step ``h`` [m/s], ``m0`` the momentum side at V = 0 (the
-    empirical descent model switches on at V cos beta = 0, so only this side is defined)."""
-    m1 = _momentum_side(v, Om, h * sb, h * cb, y, mfac, ct, ch, emp)
-    m2 = _momentum_side(v, Om, 2.0 * h * sb, 2.0 * h * cb, y, mfac, ct, ch, emp)
-    return (4.0 * m1 - m2 - 3.0 * m0) / (2.0 * h)
+def _rest_slope(m_vs, m_vc, v, sb, cb, emp):
+    """d(F_loss dT_BEMT/dy)/dV from rest (V = 0) along the ray (V sin beta, V cos beta) = V (sb, cb),
+    one-sided (V >= 0), from the analytic partials ``m_vs``, ``m_vc`` at V = 0 (Glauert's there:
+    :func:`_momentum_partials`): their chain rule m_vs sb + m_vc cb, but on a descending ray (cb < 0)
+    with the empirical descent curve (``emp``) and v > 0, which it switches on at once (for
+    v <= EMPIRICAL_HOVER_RATIO d, d = -V cos beta): there the mass-flow velocity is v_h^2 / v =
+    v / f(k)^2 with k = d / v_h -> d / v, so dw/dd = -2 f'(0) = -2 EMPIRICAL_C1 (the curve's
+    slope at hover, _momentum.axial_mass_flow; the in-plane fade exp(-(V sb / v)^2) is flat at
+    V = 0) instead of Glauert's -1, and m_vc, linear in dw/dV cos beta, scales by 2 EMPIRICAL_C1."""
+    if emp and cb < 0.0 and v > 0.0:
+        return m_vs * sb + 2.0 * EMPIRICAL_C1 * m_vc * cb
+    return m_vs * sb + m_vc * cb
 
 
 @numba.njit(inline="always", error_model="numpy", fastmath=_FM)
@@ -140,8 +146,8 @@ def _momentum_derivatives(v, Om_e, Om, Vs, Vc, y, mfac, ct, ch, emp, one_sided):
     centrally in v, Omega, V sin beta and V cos beta with steps :data:`STEP` of each variable's
     scale (not of the incidence, whose step would move V cos beta by only V STEP: at small
     airspeeds that stays on one side of the switch). At V = 0 (``one_sided``) the empirical model
-    is Glauert's (d = -V cos beta = 0): analytic in v and Omega; the airspeed's is then the
-    caller's, one-sided along its ray (:func:`_ray_slope`). ``Om_e``: the blade speed's Omega
+    is Glauert's (d = -V cos beta = 0): analytic in all four; the airspeed's one-sided slope along
+    a ray is then the caller's (:func:`_rest_slope`). ``Om_e``: the blade speed's Omega
     (Omega - u / y with swirl), ``Om`` the rotation rate (the step's scale)."""
     if not emp or one_sided or (Vc != 0.0 and abs(v + 0.5 * Vc) > 1e-6 * (abs(v) + abs(Vc))):
         return _momentum_partials(v, Om_e, Vs, Vc, y, mfac, ct, ch, emp)

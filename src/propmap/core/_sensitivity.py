@@ -34,9 +34,17 @@ core/_momentum_sensitivity.py); where the
 empirical model switches on at V > 0 (V cos beta = 0, v = -V cos beta / 2) it is differenced
 centrally in v, Omega, V sin beta and V cos beta with steps 1e-5 of their scales, whatever
 the airspeed, so that the two sides of the switch are averaged. At V = 0, where the empirical
-model is Glauert's, the partials in v and Omega are analytic and the airspeed's is one-sided
-along its ray (second order), for the point's ray and, when the output has three columns
-more, for the rays beta = 0, pi/2 and pi (the slopes at rest, core/derivatives.py).
+model is Glauert's, all four are analytic, and the airspeed's slope along a ray (V sin beta,
+V cos beta) = V (sin beta, cos beta) from rest, for the point's ray and, when the output has
+three columns more, for the rays beta = 0, pi/2 and pi (the slopes at rest,
+core/derivatives.py), is their chain rule (the momentum side is even in V sin beta, and
+Glauert's |V cos beta + v| is smooth at v != 0), with the empirical descent curve's slope at
+hover on a descending ray, where that curve switches on at once
+(_momentum_sensitivity._rest_slope). Until 2026-11-28 those slopes were
+one-sided second-order differences of the momentum side (two more of its evaluations per ray
+and annulus, and one at the base: nine per annulus at rest with the three rays, where the
+element itself is one evaluation), agreeing with the analytic ones to 2e-9 of the largest
+derivative (apce_8x6, 50 rates at rest, the paper's, generic and calibrated sets).
 
 A section parameter enters through the element's constants (pk) and the annulus'
 Reynolds constants (cam) only, the density through the Reynolds constant sc: its step
@@ -81,7 +89,7 @@ from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _el
 from ._delayed_sensitivity import (N_EX, add_fixed_root_halves, add_input_halves, delay_partials, delayed_node,
                                    delayed_rows)
 from ._jitcache import CACHE
-from ._momentum_sensitivity import STEP, _momentum_derivatives, _momentum_side, _ray_slope
+from ._momentum_sensitivity import _momentum_derivatives, _rest_slope
 from ._parameter_sensitivity import (N_DSTATE, N_STATE, _cambered_direction, _cambered_state, _parameter_partials,
                                      delayed_parameter_partials)
 from ._physics import (LN_RE_MAX, LN_RE_MIN, NODE_CFAC, NODE_CH, NODE_CT, NODE_CY2, NODE_MFAC, NODE_SC, NODE_TH, NODE_W,
@@ -359,8 +367,8 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     sn = np.zeros(1) if axial else sinpsi
     e = np.zeros((4, 4))  # each input's direction in (Omega, V sin beta, V cos beta, collective)
     _input_directions(e, 4, V[i], sb, cb, vs)
-    h_ray = STEP * (om * y[nr - 1] + V[i])  # at V = 0: the momentum side's step along the ray (the tip's speed scale)
-    # at V = 0 the airspeed only grows: its momentum side differenced one-sided (second order) along the ray
+    # at V = 0 the airspeed only grows: its derivative is the one-sided slope along the ray (the momentum side's
+    # from its analytic partials: _momentum_derivatives)
     one_sided = V[i] == 0.0
     dB = np.empty((6, 4))  # d(T, D, Q, R[, Y, M_P])/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node
@@ -494,15 +502,13 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
                 Q0 += h0[k]
         sw = _swirl_system(swirl, vj, yj, om, T0 * cf, Q0 * cq, Lv0, Lv2, tT * cf, (tHs + rr * rT) * cf, tH * cq,
                            tTs * cq, mom_om / yj, Gv)
-        # at rest, the momentum side there: the base of the one-sided differences along the rays
-        m0 = _momentum_side(vj, ome, 0.0, 0.0, yj, mfac[j], ct[j], ch[j], emp) if one_sided else 0.0
         for p in range(n_in):
             if p == 2 and V[i] == 0.0:
                 continue  # the incidence does nothing at V = 0
             if p == 3:  # the collective moves no momentum side
                 dmom = 0.0
             elif p == 1 and one_sided:  # along the airspeed's ray from rest
-                dmom = _ray_slope(m0, vj, ome, sb, cb, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = _rest_slope(mom_vs, mom_vc, vj, sb, cb, emp)
             else:  # analytic or differenced above: the chain rule
                 dmom = mom_om * e[p, 0] + mom_vs * e[p, 1] + mom_vc * e[p, 2]
             dL0 = dB[0, 0] * e[p, 0] + dB[0, 1] * e[p, 1] + dB[0, 2] * e[p, 2] + dB[0, 3] * e[p, 3]
@@ -522,7 +528,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
             for k in range(3):
                 rs = 1.0 if k == 1 else 0.0  # the ray's sin(beta), cos(beta)
                 rc = 1.0 - k if k != 1 else 0.0
-                dmom = _ray_slope(m0, vj, ome, rs, rc, h_ray, yj, mfac[j], ct[j], ch[j], emp)
+                dmom = _rest_slope(mom_vs, mom_vc, vj, rs, rc, emp)
                 dT = dB[0, 1] * rs + dB[0, 2] * rc
                 dQ = dB[2, 1] * rs + dB[2, 2] * rc
                 dv, du = _swirl_solve(sw, dT - dmom, dT, dQ, 0.0)
