@@ -10,13 +10,13 @@ benchmarks/bench_solver.py's envelope (rpm 3000-12000, V 0-25 m/s, incidence 0-9
 apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set).
 
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] [--serial]   # ~2 min for 30 rounds
-    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial]
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial|hover]
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --single   # ~1 min for 30 rounds
 
 ``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
 raised above the batch) instead of the parallel one on one thread. ``--derivatives`` times
 the implicit derivatives instead, on benchmarks/bench_derivatives.py's batch (2,000 points of
-apce_8x6, generic set, a fifth axial; or all forward-flight or all axial): the loads alone,
+apce_8x6, generic set, a fifth axial; or all forward-flight, all axial or all at rest, V = 0): the loads alone,
 with the three inputs' derivatives, with the collective too and with the 8 section
 parameters, each tree's ratio to its loads and the paired new / old of each (~2 min for 10
 rounds). ``--single`` times one scalar call (bench_everyday.py's point: 8000 rpm, 10 m/s, 45 deg,
@@ -89,6 +89,9 @@ def derivatives_ab(trees: dict, rounds: int, batch: str) -> None:
         b = np.radians(rng.uniform(1, 179, n))
     elif batch == "axial":
         b = 0.0 * V
+    elif batch == "hover":  # at rest: the airspeed's slope one-sided along its ray
+        V = 0.0 * V
+        b = 0.0 * V
     cases = {"loads": None, "3 inputs": True, "with the collective": ("omega", "airspeed", "incidence", "collective"),
              "8 parameters": PARAMS}
     args = {}
@@ -140,7 +143,7 @@ def single_ab(trees: dict, rounds: int) -> None:
 
 
 def main() -> None:
-    flags = ("--serial", "--derivatives", "forward", "axial", "--single")
+    flags = ("--serial", "--derivatives", "forward", "axial", "hover", "--single")
     argv = [a for a in sys.argv[1:] if a not in flags]
     if len(argv) < 2:
         raise SystemExit(__doc__)
@@ -149,7 +152,7 @@ def main() -> None:
     trees = {"A": load(argv[0], serial), "B": load(argv[1], serial)}
     rounds = int(argv[2]) if len(argv) > 2 else 30
     if "--derivatives" in sys.argv:
-        derivatives_ab(trees, rounds, next((a for a in ("forward", "axial") if a in sys.argv), "mixed"))
+        derivatives_ab(trees, rounds, next((a for a in ("forward", "axial", "hover") if a in sys.argv), "mixed"))
         return
     if "--single" in sys.argv:
         single_ab(trees, rounds)
