@@ -43,8 +43,9 @@ hover on a descending ray, where that curve switches on at once
 (_momentum_sensitivity._rest_slope). Until 2026-11-28 those slopes were
 one-sided second-order differences of the momentum side (two more of its evaluations per ray
 and annulus, and one at the base: nine per annulus at rest with the three rays, where the
-element itself is one evaluation), agreeing with the analytic ones to 2e-9 of the largest
-derivative (apce_8x6, 50 rates at rest, the paper's, generic and calibrated sets).
+element itself is one evaluation), agreeing with the analytic ones to 1.1e-7 of each
+derivative's largest value (apce_8x6, 21 rates at rest, rays 0-180 deg and the three rays; the
+paper's, generic and calibrated sets, a linear inflow, swirl; docs/solver.md).
 
 A section parameter enters through the element's constants (pk) and the annulus'
 Reynolds constants (cam) only, the density through the Reynolds constant sc: its step
