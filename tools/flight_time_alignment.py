@@ -17,7 +17,11 @@ Prints the numbers of docs/flight.md, "Not a time offset":
    least-squares gain (measured on predicted) at 0 and at that shift; a positive shift means the
    measured signal lags the motor speeds;
 2. the logs' angular acceleration against the central difference of their rates: gain and delay
-   by frequency (the logs' own filtering);
+   by frequency (the logs' own filtering); the measured m a_z against k sum Omega^2 (amplitude
+   ratio by frequency) and the vertical force's rms in sample with the prediction as it is, through
+   the vehicle file's 33 ms first-order lag and through a zero-phase smoothing of 120 ms (the same
+   first-order filter forward and backward); the coherence of the measured and predicted moments
+   by frequency;
 3. each log predicted with the shift, or a first-order low-pass of 5-60 ms, chosen per axis on
    the other three logs, with and without a gain per axis fitted there: roll and pitch rms against
    the zero predictor's.
@@ -151,6 +155,27 @@ def main() -> None:
         i = int(np.argmin(np.abs(f - fq)))
         delay = -np.angle(pxy[i]) / (2 * np.pi * f[i]) * 1e3
         print(f"   {f[i]:5.1f} Hz: gain {abs(pxy[i]) / pxx[i]:.2f}, delay {delay:+.1f} ms")
+    spectra = {}  # (cross, predicted, measured) power spectra summed over the logs, per channel
+    for lg in logs:
+        for name, x, y in (("m a_z", k * lg["Fk"], lg["Fz"]), ("roll", k * lg["Mk"][:, 0], lg["M"][:, 0]),
+                           ("pitch", k * lg["Mk"][:, 1], lg["M"][:, 1])):
+            f, c = signal.csd(x, y, fs=RATE, nperseg=512, detrend="linear")
+            px = signal.welch(x, fs=RATE, nperseg=512, detrend="linear")[1]
+            py = signal.welch(y, fs=RATE, nperseg=512, detrend="linear")[1]
+            spectra[name] = tuple(a + b for a, b in zip(spectra.get(name, (0.0, 0.0, 0.0)), (c, px, py)))
+    c, px, _ = spectra["m a_z"]
+    print("   m a_z over k sum Omega^2: " + ", ".join(
+        f"{abs(c[i]) / px[i]:.2f} at {f[i]:.1f} Hz" for i in (int(np.argmin(np.abs(f - q))) for q in (5, 10, 15, 20))))
+    for name in ("roll", "pitch"):
+        c, px, py = spectra[name]
+        coh = np.abs(c) ** 2 / (px * py)
+        print(f"   {name} moment coherence: below 1 Hz {coh[(f > 0) & (f < 1.0)].mean():.2f}, "
+              f"3-12 Hz {coh[(f >= 3.0) & (f <= 12.0)].min():.2f}-{coh[(f >= 3.0) & (f <= 12.0)].max():.2f}")
+    fz = np.concatenate([lg["Fz"] for lg in logs])
+    for label, filt in (("as it is", lambda x: x), ("33 ms lag", lambda x: lowpass(x, 0.033)),
+                        ("120 ms zero-phase", lambda x: lowpass(lowpass(x, 0.12)[::-1], 0.12)[::-1])):
+        pred = np.concatenate([filt(k * lg["Fk"]) for lg in logs])
+        print(f"   m a_z rms in sample, the prediction {label}: {rms(pred - fz):.3f} N")
     print("3. each log predicted with what the other three choose: roll / pitch rms [N m]")
     zero = np.concatenate([interior(lg["M"]) for lg in logs])
     print(f"   zero predictor: {rms(zero[:, 0]):.4f} / {rms(zero[:, 1]):.4f}")
