@@ -454,3 +454,12 @@ def linear_sensitivities(Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk,
     for i in numba.prange(Om.shape[0]):
         _point(np.int64(i), Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens,
                out)
+
+
+@numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
+def linear_sensitivities_serial(Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par,
+                                dens, out):
+    """:func:`linear_sensitivities` on the calling thread, for small batches (as
+    core/_sensitivity.sensitivities_serial)."""
+    for i in range(Om.shape[0]):
+        _point(i, Om, V, b, coll, roots, ok, uni, nodes, azim, model, pk, cam, inflow, emp, n_in, par, dens, out)

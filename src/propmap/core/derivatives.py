@@ -166,7 +166,7 @@ def _stepped_constants(names, params, air):
 
 
 def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empirical, params, air, propeller,
-              discretization, loads, uniform_roots=None) -> dict:
+              discretization, loads, uniform_roots=None, *, serial=False) -> dict:
     """{(load, input or parameter): derivative} at every point (flat arrays), from one call of
     the sensitivity kernel (core/_sensitivity.py); with a linear inflow model, of
     core/_linear_sensitivity.py at ``roots`` and ``uniform_roots`` (shape (n, nr): the kernel's
@@ -178,7 +178,8 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     edgewise (beta = pi/2) for D and M_R, odd in V sin(beta), so that this one-sided slope is
     the derivative; for T, Q and v_i,mean the mean of the climb (beta = 0) and descent
     (beta = pi) slopes, the limit of central differences (core/vector.still_air_slopes); 0 at
-    the points with V > 0."""
+    the points with V > 0. ``serial``: run the kernel on the calling thread (a small batch:
+    solver.PARALLEL_MIN_POINTS)."""
     from . import _linear_sensitivity, _sensitivity
 
     rays = STILL_AIR in wrt
@@ -205,8 +206,8 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     raw = np.empty((n_rows, n_cols + (3 if rays else 0), om.size))
     inflow = mo.INFLOW_CODES[params.inflow]
     if inflow == mo.INFLOW_UNIFORM:
-        _sensitivity.sensitivities(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical,
-                                   n_in, par, scp, hrho, raw)
+        run = _sensitivity.sensitivities_serial if serial else _sensitivity.sensitivities
+        run(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in, par, scp, hrho, raw)
     else:  # both solves' annuli together, the uniform one's mean inflow setting the gradients
         # (core/_linear_sensitivity.py) at the uniform solve's roots kept by the kernel (core/_kernel._solve_point),
         # shape (n, nr), NaN where that solve failed
@@ -214,10 +215,10 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
         converged_u = np.isfinite(uniform_roots).all(axis=1)
         half = np.ascontiguousarray(nd.azimuth[:, :nd.azimuth.shape[1] // 2])  # the uniform solve's half circle
         raw = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
-        _linear_sensitivity.linear_sensitivities(om, V, b, coll, roots, converged & converged_u,
-                                                 (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]),
-                                                  float(propeller.radius)), nd.rows, nd.azimuth,
-                                                 model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)
+        run = _linear_sensitivity.linear_sensitivities_serial if serial else _linear_sensitivity.linear_sensitivities
+        run(om, V, b, coll, roots, converged & converged_u,
+            (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]), float(propeller.radius)), nd.rows,
+            nd.azimuth, model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)

@@ -502,7 +502,8 @@ def rotor_loads(
     # than the work (and a single call need not load the thread pool at all). The kernel also
     # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
     # (_flags.point_flags: no NumPy calls on one-point arrays here)
-    batch = _kernel.solve_batch if n >= PARALLEL_MIN_POINTS else _kernel.solve_batch_serial
+    serial = n < PARALLEL_MIN_POINTS
+    batch = _kernel.solve_batch_serial if serial else _kernel.solve_batch
     batch(om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
           keep_radial, cls, out, rad, counts, flags)
     status = counts[0]
@@ -559,7 +560,7 @@ def rotor_loads(
         roots = rad[[0, _kernel.RAD_SWIRL]] if params.swirl else rad[:1]  # (a copy, contiguous)
         uniform = rad[_kernel.RAD_UNIFORM] if inflow != mo.INFLOW_UNIFORM else None  # (core/_kernel._solve_point)
         raw = (_jacobian(solved, om1, V1, b1, c1, roots, flags[0], nd, model, pk, cam, empirical, params, air,
-                         propeller, discretization, rigid + (out[4], out[5]), uniform) if solved else {})
+                         propeller, discretization, rigid + (out[4], out[5]), uniform, serial=serial) if solved else {})
         if params.flap_compliance > 0:
             if COMPLIANCE in wrt:
                 raw.update({(q, COMPLIANCE): np.zeros(n) for q in DERIVATIVE_LOADS})
