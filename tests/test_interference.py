@@ -213,12 +213,12 @@ def test_a_failed_rotor_induces_nothing_on_the_others(monkeypatch, generic):
         first = []
 
         def injected(*args, **kw):
-            F, M, loads = real(*args, **kw)
+            F, M, loads, batches = real(*args, **kw)
             if fill is not None and not first:
                 loads = list(loads)
                 loads[0] = replace(loads[0], v_i_mean=np.full_like(loads[0].v_i_mean, fill))
             first.append(True)
-            return F, M, loads
+            return F, M, loads, batches
 
         monkeypatch.setattr(model, "_rotor_wrenches", injected)
         return vehicle_wrench(veh, generic, v, w, om, on_failure="flag").rotor_force

@@ -241,8 +241,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     motion = any(n in MOTION_NAMES for n in wrt)
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
-    rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
-    hub_jac = hub_velocity_jacobians(vehicle, loads, V_hub, axes, om) if motion else None
+    rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
+    hub_jac = hub_velocity_jacobians(vehicle, batches, om) if motion else None
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
 
@@ -250,7 +250,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
         v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
         wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
-        rotor_force, rotor_moment, loads = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
+        rotor_force, rotor_moment, loads, _ = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
     rotor_moment += np.cross(pos[None, :, :], rotor_force)
     for i in range(n_rot):  # the gyroscopic and spin-up moments of the rotors with a known inertia
         if not np.any(h_spin[i]):
@@ -280,7 +280,8 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
                     derivatives=()):
     """Each rotor's force and hub moment (body axes) and loads at hub velocities ``V_hub``
     (N, n_rot, 3): one solver call per distinct (propeller, parameter set), all its rotors'
-    samples together."""
+    samples together; and those calls as (rotor indices, their loads of shape (N, k), the disk
+    frames' in-plane velocity and axis, shape (N, k, 3)), for the Jacobians' batched algebra."""
     N, n_rot = om.shape
     spins = np.array([r.spin for r in vehicle.rotors])
     groups: dict[tuple[int, int], list[int]] = {}  # rotors of one propeller and set, solved in one batch
@@ -293,6 +294,7 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
     rotor_force = np.empty((N, n_rot, 3))
     rotor_moment = np.empty((N, n_rot, 3))
     loads: list[RotorLoads | None] = [None] * n_rot
+    batches = []
     for idx in groups.values():
         rot = vehicle.rotors[idx[0]]
         p = rot.params if rot.params is not None else params
@@ -306,7 +308,8 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
         rotor_moment[:, idx, :] = M
         for k, i in enumerate(idx):
             loads[i] = _column(r, k)
-    return rotor_force, rotor_moment, loads
+        batches.append((idx, r, Vd, z))
+    return rotor_force, rotor_moment, loads, batches
 
 
 def _warn_rotor_air(vehicle: Vehicle, air: Air) -> None:
