@@ -361,6 +361,19 @@ def test_the_parallel_and_the_serial_derivative_kernels_agree(apc8x6, inflow):
     assert np.any(whole.derivative("thrust", STILL_AIR) != 0.0)
 
 
+def test_a_ragged_vehicle_input_is_named():
+    """A ragged velocity list gave NumPy's own error, which names no argument (a user-level
+    audit, 2026-11-28): vehicle_wrench names it and the shape it wants."""
+    from propmap.vehicle import read_vehicle, vehicle_wrench
+
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    for name, bad in (("velocity", [[1.0, 0.0, 0.0], [1.0, 0.0]]), ("rotor_omega", [[800.0] * 4, [800.0] * 3])):
+        args = {"velocity": [0.0, 0.0, 0.0], "angular_velocity": [0.0, 0.0, 0.0], "rotor_omega": [800.0] * 4}
+        args[name] = bad
+        with pytest.raises(ValueError, match=rf"^{name} must be a rectangular array of numbers of shape \(N, \d\)"):
+            vehicle_wrench(veh, pm.generic_params(), **args)
+
+
 def test_a_bool_inside_an_input_list_is_refused():
     """NumPy reads [800.0, True] as [800.0, 1.0]: rotor_loads ran a rotor at 1 rad/s (T = -0.057 N);
     a scalar bool was already refused. Every array input now refuses one, naming it."""

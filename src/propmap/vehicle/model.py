@@ -99,7 +99,11 @@ class VehicleWrench:
 def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
     """``value`` as a float array of shape (N, n_cols) (a single row is promoted to N = 1)."""
     refuse_masked(name, value)
-    a = np.asarray(value)
+    try:
+        a = np.asarray(value)
+    except (ValueError, OverflowError):  # ragged nesting, ints beyond int64 (NumPy's message named no argument)
+        raise ValueError(f"{name} must be a rectangular array of numbers of shape (N, {n_cols}) or ({n_cols},), "
+                         f"got {value!r:.60}") from None
     if a.dtype.kind not in "iuf" or has_bool(value):
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
     a = a.astype(float)
