@@ -334,8 +334,9 @@ def test_the_parallel_and_the_serial_kernel_agree(apc8x6, apc_params):
 @pytest.mark.parametrize("inflow", ["uniform", "pitt-peters"])
 def test_the_parallel_and_the_serial_derivative_kernels_agree(apc8x6, inflow):
     """The implicit derivatives of a small batch (under solver.PARALLEL_MIN_POINTS) run on the
-    calling thread (core/_sensitivity.sensitivities_serial, _linear_sensitivity's likewise; one
-    point's took 2.2 ms with two threads against 0.2 ms on one, 2026-11-28), a large batch's in
+    calling thread (core/_sensitivity.sensitivities_serial, _linear_sensitivity's likewise: one
+    point's took 0.30-1.67 ms in parallel with the second core busy, 0.14-0.30 ms serial,
+    2026-11-28), a large batch's in
     parallel: the same compiled point, so the same derivatives to rounding, at rest (with the
     three rays of a velocity Jacobian), in hover, climb, descent and oblique flow, with the
     collective and a section parameter."""

@@ -22,7 +22,7 @@ SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K, _sensiti
           "p, s = pm.load_propeller('apce_8x6'), pm.preset('gill2017-apc'); "
           "r = pm.rotor_loads(p, s, 800.0, 5.0, 1.0, derivatives=('omega',)); "
           "fd = (pm.rotor_loads(p, s, 801.0, 5.0, 1.0).torque - pm.rotor_loads(p, s, 799.0, 5.0, 1.0).torque) / 2; "
-          "k, d = K.solve_batch_serial.stats, S.sensitivities.stats; "
+          "k, d = K.solve_batch_serial.stats, S.sensitivities_serial.stats; "
           "print(repr(float(r.torque)), repr(float(r.derivative('torque', 'omega'))), repr(float(fd)), "
           "sum(k.cache_hits.values()), sum(k.cache_misses.values()), "
           "sum(d.cache_hits.values()), sum(d.cache_misses.values()))")
@@ -30,7 +30,7 @@ SCRIPT = ("import propmap as pm; from propmap.core import _kernel as K, _sensiti
 #: own loader, numba.core.caching.IndexDataCacheFile: none when the index's stamp differs from
 #: the sources'); it compiles nothing
 SERVED = ("from propmap.core import _kernel as K, _sensitivity as S; "
-          "print(*(len(f._cache._cache_file._load_index()) for f in (K.solve_batch_serial, S.sensitivities)))")
+          "print(*(len(f._cache._cache_file._load_index()) for f in (K.solve_batch_serial, S.sensitivities_serial)))")
 
 
 def _sibling_imports(path: Path) -> set[str]:

@@ -586,6 +586,7 @@ def sensitivities(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n
 def sensitivities_serial(Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out):
     """:func:`sensitivities` on the calling thread: for small batches (solver.PARALLEL_MIN_POINTS, as
     _kernel.solve_batch_serial), where starting the parallel region costs more than the work (one
-    point's derivatives: 0.2 ms on one thread, 2.2 ms with two, 2-core AMD EPYC, 2026-11-28)."""
+    point's loads with derivatives, the second core held by another process: 0.14-0.30 ms here,
+    0.30-1.67 ms in parallel; 2-core AMD EPYC, 2026-11-28)."""
     for i in range(Om.shape[0]):
         _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in, par, scpm, hrho, out)
