@@ -43,7 +43,7 @@ from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            RotorLoads, check_model_args, model_air, rotor_loads,
                            supersonic_tips_allowed)
-from ..core.vector import VELOCITY_INPUTS, disk_frame, wrench_vectors
+from ..core.vector import VELOCITY_INPUTS, cross3, disk_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
 from .layout import Rotor, Vehicle, rotor_geometry
@@ -226,7 +226,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
     om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
-    V_hub = (v - wind_a)[:, None, :] + np.cross(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
+    V_hub = (v - wind_a)[:, None, :] + cross3(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
     speed = np.linalg.norm(V_hub, axis=2)
     if np.any(speed > AIRSPEED_MAX):
         n, i = np.argwhere(speed > AIRSPEED_MAX)[0]
@@ -255,11 +255,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
         wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
         rotor_force, rotor_moment, loads, _ = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
-    rotor_moment += np.cross(pos[None, :, :], rotor_force)
+    rotor_moment += cross3(pos[None, :, :], rotor_force)
     for i in range(n_rot):  # the gyroscopic and spin-up moments of the rotors with a known inertia
         if not np.any(h_spin[i]):
             continue
-        rotor_moment[:, i, :] -= np.cross(w, om[:, i, None] * h_spin[i])
+        rotor_moment[:, i, :] -= cross3(w, om[:, i, None] * h_spin[i])
         if acc is not None:
             rotor_moment[:, i, :] -= np.broadcast_to(acc, (N, n_rot))[:, i, None] * h_spin[i]
     body = vehicle.body_drag if body_drag is None else body_drag
@@ -310,8 +310,8 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
                               side_force=r.side_force, pitching_moment=r.pitching_moment)
         rotor_force[:, idx, :] = F
         rotor_moment[:, idx, :] = M
-        for k, i in enumerate(idx):
-            loads[i] = _column(r, k)
+        for i, column in zip(idx, _columns(r)):
+            loads[i] = column
         batches.append((idx, r, Vd, z))
     return rotor_force, rotor_moment, loads, batches
 
@@ -344,16 +344,18 @@ def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
     return a.propeller is b.propeller or a.propeller.same_geometry(b.propeller)
 
 
-def _column(r: RotorLoads, k: int) -> RotorLoads:
-    """Column k of loads of shape (N, k_rotors): one rotor's RotorLoads of shape (N,)."""
-    kw = {}
-    for f in fields(r):
-        a = getattr(r, f.name)
-        if isinstance(a, np.ndarray) and a.ndim >= 2 and f.name != "r":
-            kw[f.name] = a[:, k]
-    if r.jacobian is not None:
-        kw["jacobian"] = {key: a[:, k] for key, a in r.jacobian.items()}
-    return replace(r, **kw)
+def _columns(r: RotorLoads) -> list[RotorLoads]:
+    """The columns of loads of shape (N, k_rotors): each rotor's RotorLoads of shape (N,) (the
+    fields to split found once, not per rotor)."""
+    names = [f.name for f in fields(r) if f.name != "r" and isinstance(getattr(r, f.name), np.ndarray)
+             and getattr(r, f.name).ndim >= 2]
+    out = []
+    for k in range(np.shape(r.thrust)[1]):
+        kw = {n: getattr(r, n)[:, k] for n in names}
+        if r.jacobian is not None:
+            kw["jacobian"] = {key: a[:, k] for key, a in r.jacobian.items()}
+        out.append(replace(r, **kw))
+    return out
 
 
 def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = None,
