@@ -369,7 +369,7 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
     e = np.zeros((4, 4))  # each input's direction in (Omega, V sin beta, V cos beta, collective)
     _input_directions(e, 4, V[i], sb, cb, vs)
     # at V = 0 the airspeed only grows: its derivative is the one-sided slope along the ray (the momentum side's
-    # from its analytic partials: _momentum_derivatives)
+    # from its analytic partials: _momentum_sensitivity._rest_slope)
     one_sided = V[i] == 0.0
     dB = np.empty((6, 4))  # d(T, D, Q, R[, Y, M_P])/d(Omega, Vs, Vc, collective) at the fixed root, per annulus
     q0 = np.empty(naz_half)  # the element at the root, per node

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..core.body import BodyDrag
-from ..core.vector import disk_frame, velocity_gradient, velocity_jacobian, wrench_vectors
+from ..core.vector import velocity_gradient, velocity_jacobian, wrench_vectors
 
 if TYPE_CHECKING:  # (model.py imports this module)
     from .layout import Vehicle
@@ -57,16 +57,21 @@ def requested_derivatives(derivatives, vehicle: Vehicle, params=None) -> tuple:
     return wrt
 
 
-def load_derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v_air, wash, rho):
+def load_derivatives(wrt, vehicle, loads, batches, axes, pos, w, body, v_air, wash, rho):
     """(dF/dOmega_i, dM/dOmega_i) of shape (N, 3, n_rot) where "omega" is asked (else None), and
     {("force" | "moment", name): shape (N, 3)} for the other names (else None): the rotors'
     load derivatives through the vector form (linear in the scalar loads), the arms, the
-    gyroscopic moment -w x (s_i J_i a_i) and the airframe drag (core/body.py)."""
-    N, n_rot = V_hub.shape[0], len(vehicle.rotors)
+    gyroscopic moment -w x (s_i J_i a_i) and the airframe drag (core/body.py). ``batches`` as
+    :func:`hub_velocity_jacobians`: each rotor's disk frame is its batch's column."""
+    n_rot = len(vehicle.rotors)
     others = [n for n in wrt if n != "omega" and n not in MOTION_NAMES]
     if "omega" not in wrt and not others:  # the motion names only: motion_derivatives
         return None, None, None
-    frames = [disk_frame(V_hub[:, i, :], np.broadcast_to(axes[i], (N, 3)))[:2] for i in range(n_rot)]
+    frames = [None] * n_rot
+    for idx, _, Vd, z in batches:
+        for k, i in enumerate(idx):
+            frames[i] = (Vd[:, k], z[:, k])
+    N = frames[0][0].shape[0]
     spins = [np.full(N, 1.0 if r.spin > 0 else -1.0) for r in vehicle.rotors]
     if any(n in BODY_DRAG_NAMES for n in wrt):  # the drag's derivatives hold at zero drag areas too
         body = body if body is not None else BodyDrag()

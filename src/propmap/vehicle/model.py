@@ -254,7 +254,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
         v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
         wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
-        rotor_force, rotor_moment, loads, _ = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
+        rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
     rotor_moment += cross3(pos[None, :, :], rotor_force)
     for i in range(n_rot):  # the gyroscopic and spin-up moments of the rotors with a known inertia
         if not np.any(h_spin[i]):
@@ -270,7 +270,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         body_force = body_drag_force(body, v - wind_a, wash, air.rho)
     dF = dM = jac = None
     if wrt:
-        dF, dM, jac = load_derivatives(wrt, vehicle, loads, V_hub, axes, pos, w, body, v - wind_a, wash, air.rho)
+        dF, dM, jac = load_derivatives(wrt, vehicle, loads, batches, axes, pos, w, body, v - wind_a, wash, air.rho)
         if motion:
             jac = {} if jac is None else jac
             jac.update(motion_derivatives(wrt, hub_jac, axes, pos, h_spin, om, w, rotor_force.sum(axis=1), body,
