@@ -285,8 +285,18 @@ def test_section_parameter_derivatives(prop, model):
         slope = float(r.derivative(q, "flap_compliance"))
         assert float(getattr(r, q)) == 0.0 and abs(slope) > 1e-4  # the blades of this set would flap
         assert abs(float(getattr(a, q)) / h - slope) < 1e-3 * abs(slope), q
-    with pytest.raises(ValueError, match="must be a sequence of names"):
-        pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
+    # True: the operating point's inputs, as rotor_loads(derivatives=True) gives its own (np.True_ alike)
+    for flag in (True, np.True_):
+        every = pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=flag)
+        named = pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=("omega", "velocity"))
+        assert set(every.jacobian) == {(v, n) for v in ("force", "torque") for n in ("omega", "velocity")}
+        for key, value in named.jacobian.items():
+            np.testing.assert_array_equal(every.jacobian[key], value, err_msg=str(key))
+    for flag in (False, np.False_, None, ()):
+        assert pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=flag).jacobian is None
+    for wrong in ("velocity", 1, 2.0):
+        with pytest.raises(ValueError, match="must be True, False or a sequence of names"):
+            pm.rotor_wrench(prop, g, [5.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=wrong)
     # a misspelt or a vehicle's name: rotor_wrench's own valid names (it listed rotor_loads' airspeed and
     # incidence, which it refuses, and not velocity)
     for wrong in ("velocty", "angular_velocity"):

@@ -70,7 +70,7 @@ def test_the_one_point_path_is_taken_and_the_odd_inputs_go_the_array_way(monkeyp
         pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 10**400)
     with pytest.raises(ValueError, match="axis must be non-zero"):  # before the spin, as the array path
         pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0], 800.0, spin="left")
-    with pytest.raises(ValueError, match="derivatives must be a sequence of names"):
+    with pytest.raises(ValueError, match="derivatives must be True, False or a sequence of names"):
         pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives="")
     masked = pm.rotor_wrench(prop, params, np.ma.array([5.0, 0.0, 1.0]), [0.0, 0.0, 1.0], 800.0)
     np.testing.assert_allclose(masked.force, pm.rotor_wrench(prop, params, [5.0, 0.0, 1.0], [0.0, 0.0, 1.0],

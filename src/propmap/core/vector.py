@@ -131,8 +131,10 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         +axis (counter-clockwise seen from the tip of the axis looking back at the disk).
     air, discretization, on_failure
         As for :func:`rotor_loads`.
-    derivatives : sequence of str
-        Names to differentiate the force and torque vectors with respect to: "omega", the
+    derivatives : bool or sequence of str
+        True for the operating point's inputs, ("omega", "velocity") (as ``rotor_loads``'
+        True gives its omega, airspeed and incidence); False, None or () for none; or the
+        names to differentiate the force and torque vectors with respect to: "omega", the
         "collective", "rho" or section parameters (as :func:`rotor_loads` takes them; the
         loads' derivatives by the implicit function theorem, carried through the vector
         form, which is linear in them), and "velocity": the Jacobians dF/dV and dtau/dV
@@ -151,8 +153,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         Non-numeric inputs, shapes not ending in 3, a velocity and an axis whose shapes do not
         broadcast, a zero or non-finite axis, a non-finite velocity, a bad spin (a bool
         included, or an array that does not broadcast to the loads' shape S), or the ranges
-        of :func:`rotor_loads` (the speed |velocity| at most 500 m/s); ``derivatives`` not a sequence of names,
-        naming "airspeed" or "incidence" (ask for "velocity"), or refused by
+        of :func:`rotor_loads` (the speed |velocity| at most 500 m/s); ``derivatives`` neither a bool nor a
+        sequence of names, naming "airspeed" or "incidence" (ask for "velocity"), or refused by
         :func:`rotor_loads`.
     TypeError
         A propeller, parameter set, air or discretization of the wrong type
@@ -169,6 +171,10 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     check_model_args(propeller, params, air, discretization)
+    if isinstance(derivatives, np.bool_):
+        derivatives = bool(derivatives)
+    if derivatives is True:  # the operating point's inputs, as rotor_loads(derivatives=True)
+        derivatives = ("omega", "velocity")
     if derivatives is None or derivatives is False or (isinstance(derivatives, (tuple, list)) and not derivatives):
         one = _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure)
         if one is not None:
@@ -186,8 +192,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
             raise ValueError(f"omega (shape {omega_shape}) must broadcast with velocity's samples (shape "
                              f"{speed.shape}: velocity of shape {speed.shape + (3,)})") from None
         _check_spin(s, shape)
-    if derivatives is True or isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
-        raise ValueError(f"derivatives must be a sequence of names, got {derivatives!r:.60}")
+    if isinstance(derivatives, str) or not hasattr(derivatives or (), "__iter__"):
+        raise ValueError(f"derivatives must be True, False or a sequence of names, got {derivatives!r:.60}")
     names = tuple(dict.fromkeys(derivatives or ()))
     if any(n in ("airspeed", "incidence") for n in names):
         raise ValueError("derivatives must be a sequence of names other than 'airspeed' and 'incidence' (ask for "
