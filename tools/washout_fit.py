@@ -18,8 +18,16 @@ error (not available to a user: the ceiling), "fixed" one K for every propeller.
 
     .venv/bin/python tools/washout_fit.py omega      # about 150 s on 2 cores
     .venv/bin/python tools/washout_fit.py airspeed
+    .venv/bin/python tools/washout_fit.py omega --hold-reynolds
 
-Findings (2026-11-26): docs/validation.md, "Flexible and thin-section propellers".
+``--hold-reynolds`` fits with the Reynolds terms (re_exp_lift, re_exp, alpha_L0_re) held at the
+generic set's values, as the fit's own rule does for a static run spanning less than 1.5x in rpm
+(``identify.fit.STATIC_RPM_SPAN``, set to infinity in the workers), so that the static run's rise
+of thrust with rpm is carried by K alone; its grid adds K = -1 and -0.5 deg (a blade that
+untwists). "K = 0" is then the fit without the Reynolds terms, not the shipped one.
+
+Findings (2026-11-26, --hold-reynolds 2026-11-28): docs/validation.md, "Flexible and
+thin-section propellers".
 """
 
 from __future__ import annotations
@@ -35,11 +43,13 @@ import numpy as np
 import propmap as pm
 from rpm_drift import static_lowest_case  # tools/rpm_drift.py: the protocol's case of one propeller
 
+import propmap.identify.fit as fit_module
 from propmap.identify import FitOptions, fit_loads
 from propmap.identify.engine import _objective
 from propmap.io.catalogue import catalogue
 
 K_DEG = (0.0, 0.5, 1.0, 2.0, 3.0, 5.0)  # blade-angle change at Z = 1 [deg]
+K_DEG_HELD = (-1.0, -0.5) + K_DEG  # with the Reynolds terms held
 
 
 def _z(data, prop, law: str) -> np.ndarray:
@@ -48,14 +58,16 @@ def _z(data, prop, law: str) -> np.ndarray:
     return (data.airspeed / 10.0) ** 2
 
 
-def grid(name: str, law: str) -> tuple:
-    """(volume, [(K, training objective, held-out rms dCT / CT0)] for K in K_DEG)."""
+def grid(name: str, law: str, hold_reynolds: bool = False) -> tuple:
+    """(volume, [(K, training objective, held-out rms dCT / CT0)] for K in the grid)."""
+    if hold_reynolds:  # (a worker process of its own: the rule's span, never restored, is this run's)
+        fit_module.STATIC_RPM_SPAN = math.inf
     c = static_lowest_case(name)
     entry, prop, data, generic, train, CT, CT0 = (c[k] for k in ("entry", "prop", "data", "generic", "train", "CT",
                                                                   "CT0"))
     pop, z = c["pop"], _z(data, prop, law)
     out = []
-    for K in K_DEG:
+    for K in K_DEG_HELD if hold_reynolds else K_DEG:
         coll = -math.radians(K) * z
         res = fit_loads(dataclasses.replace(data, collective=coll).subset(train), prop, base=generic,
                         options=FitOptions(population=pop))
@@ -70,22 +82,33 @@ def _stats(v) -> str:
     return f"{np.median(v):.1f} / {np.percentile(v, 90):.1f} / {v.max():.1f}%"
 
 
-def main(law: str) -> None:
+def main(law: str, hold_reynolds: bool = False) -> None:
     names = sorted(n for n, e in catalogue().items() if e.static_files and e.sweep_files)
     with ProcessPoolExecutor(2) as ex:
-        rows = list(ex.map(partial(grid, law=law), names))
-    print(f"washout law {law}: held-out CT rms median / 90th percentile / worst (static + lowest)")
+        rows = list(ex.map(partial(grid, law=law, hold_reynolds=hold_reynolds), names))
+    grid_deg = K_DEG_HELD if hold_reynolds else K_DEG
+    print(f"washout law {law}{', Reynolds terms held' if hold_reynolds else ''}: held-out CT rms median / 90th "
+          "percentile / worst (static + lowest)")
     for volume in (1, 2):
         errs = np.array([[e for _, _, e in out] for v, out in rows if v == volume])
         cost = np.array([[c for _, c, _ in out] for v, out in rows if v == volume])
+        best = np.array(grid_deg)[cost.argmin(axis=1)]
         chosen = errs[np.arange(len(errs)), cost.argmin(axis=1)]
-        print(f"vol. {volume} ({len(errs)}): K = 0 {_stats(errs[:, 0])}; chosen {_stats(chosen)} "
-              f"(K > 0 for {np.mean(cost.argmin(axis=1) > 0):.0%}); oracle {_stats(errs.min(axis=1))}")
-        print("  fixed: " + "; ".join(f"K {K:g} deg {_stats(errs[:, j])}" for j, K in enumerate(K_DEG)))
+        print(f"vol. {volume} ({len(errs)}): K = 0 {_stats(errs[:, grid_deg.index(0.0)])}; chosen {_stats(chosen)} "
+              f"(K > 0 for {np.mean(best > 0):.0%}, < 0 for {np.mean(best < 0):.0%}); oracle "
+              f"{_stats(errs.min(axis=1))}")
+        if hold_reynolds:
+            nonneg = np.array(grid_deg) >= 0
+            pick = cost[:, nonneg].argmin(axis=1)
+            print(f"  chosen among K >= 0: {_stats(errs[:, nonneg][np.arange(len(errs)), pick])}")
+        print("  fixed: " + "; ".join(f"K {K:g} deg {_stats(errs[:, j])}" for j, K in enumerate(grid_deg)))
 
 
 if __name__ == "__main__":
-    law = sys.argv[1] if len(sys.argv) > 1 else "omega"
-    if law not in ("omega", "airspeed"):
-        sys.exit(f"washout_fit.py: the law must be omega or airspeed, got {law!r}")
-    main(law)
+    args = sys.argv[1:]
+    hold = "--hold-reynolds" in args
+    args = [a for a in args if a != "--hold-reynolds"]
+    law = args[0] if args else "omega"
+    if law not in ("omega", "airspeed") or len(args) > 1:
+        sys.exit(f"washout_fit.py: usage: washout_fit.py [omega|airspeed] [--hold-reynolds], got {sys.argv[1:]}")
+    main(law, hold)

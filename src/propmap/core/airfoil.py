@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass, field, fields, replace
+from typing import Self
 
 import numpy as np
 
@@ -218,6 +219,27 @@ class RotorOptions:
                                            ("a linear inflow", self.inflow != "uniform"),
                                            ("the dynamic stall", self.dynamic_stall > 0.0)) if on)
 
+    def replace(self, **changes) -> Self:
+        """Return a copy with ``changes`` applied (validated again). A copy whose model fields
+        differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
+        validation figures and coverage are not its own.
+
+        Returns
+        -------
+        same type as self
+
+        Raises
+        ------
+        ValueError
+            A name that is not a field (the message lists them), or a value out of its range.
+        """
+        return _replace(self, changes)
+
+    def as_dict(self) -> dict:
+        """Return the section and rotor fields as a plain dict (SI units, angles in rad; without
+        ``air`` and ``label``, :data:`RECORD_META`)."""
+        return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
+
 
 @dataclass(frozen=True)
 class AirfoilParams(RotorOptions):
@@ -311,27 +333,6 @@ class AirfoilParams(RotorOptions):
         object.__setattr__(self, "alpha0", a0)
         if self.lift_model not in LIFT_MODELS:
             raise ValueError(f"lift_model must be one of {LIFT_MODELS}, got {self.lift_model!r}")
-
-    def replace(self, **changes) -> "AirfoilParams":
-        """Return a copy with ``changes`` applied (validated again). A copy whose model fields
-        differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
-        validation figures and coverage are not its own.
-
-        Returns
-        -------
-        same type as self
-
-        Raises
-        ------
-        ValueError
-            A name that is not a field (the message lists them), or a value out of its range.
-        """
-        return _replace(self, changes)
-
-    def as_dict(self) -> dict:
-        """Return the section and rotor fields as a plain dict (SI units, alpha0 in rad; without
-        ``air`` and ``label``, :data:`RECORD_META`)."""
-        return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
 
 def _differs(a, b) -> bool:
@@ -491,27 +492,6 @@ class CamberedParams(RotorOptions):
             object.__setattr__(self, name, x)
         if self.cl_min == 0.0:
             raise ValueError("cl_min must be in [-4, 0), got 0.0")
-
-    def replace(self, **changes) -> "CamberedParams":
-        """Return a copy with ``changes`` applied (validated again). A copy whose model fields
-        differ is labelled ``"modified <label>"`` unless ``label`` is given: the named set's
-        validation figures and coverage are not its own.
-
-        Returns
-        -------
-        same type as self
-
-        Raises
-        ------
-        ValueError
-            A name that is not a field (the message lists them), or a value out of its range.
-        """
-        return _replace(self, changes)
-
-    def as_dict(self) -> dict:
-        """Return the section and rotor fields as a plain dict (SI units, alpha_L0 in rad; without
-        ``air`` and ``label``, :data:`RECORD_META`)."""
-        return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
 
 #: either section model's parameter record

@@ -53,10 +53,11 @@ class RotorWrench:
     loads : RotorLoads
         The scalar loads and flags behind them, shape S.
     jacobian : dict or None
-        With ``rotor_wrench(..., derivatives=names)``: {("force", name): dF/dp, ("torque",
-        name): dtau/dp}, shape S + (3,), for each name (the rotation rate "omega", the
-        "collective", "rho" or a section parameter); for "velocity" shape S + (3, 3), entry
-        [..., i, j] = dF_i/dV_j [N s/m] (dtau_i/dV_j [N s]); else None.
+        With ``rotor_wrench(..., derivatives=names)`` (True: "omega" and "velocity"):
+        {("force", name): dF/dp, ("torque", name): dtau/dp}, shape S + (3,), for each name
+        (the rotation rate "omega", the "collective", "rho" or a section parameter); for
+        "velocity" shape S + (3, 3), entry [..., i, j] = dF_i/dV_j [N s/m] (dtau_i/dV_j
+        [N s]); else None.
     """
 
     force: np.ndarray
