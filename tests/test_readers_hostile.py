@@ -655,8 +655,8 @@ def test_a_stall_angle_in_radians_warns(tmp_path):
 
 def test_a_sweep_whose_eta_is_not_j_ct_over_cp_warns(tmp_path):
     """CT and CP swapped in a UIUC sweep fitted without a word (exit 0, only a bound warning);
-    eta, computed by UIUC from the file's own J, CT and CP (within 0.34% in the median on all
-    1,917 sweep files of both volumes), now exposes it."""
+    eta, computed by UIUC from the file's own J, CT and CP (within 0.33% in the median on the
+    1,051 sweep files of both volumes that have two points or more to judge), now exposes it."""
     rows = [(0.2, 0.10, 0.050), (0.4, 0.08, 0.046), (0.6, 0.05, 0.038)]
     good = "J CT CP eta\n" + "".join(f"{j} {ct} {cp} {j * ct / cp:.4f}\n" for j, ct, cp in rows)
     with warnings.catch_warnings():

@@ -398,7 +398,7 @@ def read_vehicle(path) -> Vehicle:
 #: 1000 times that)
 ARM_RADII_MAX = 20.0
 #: the inertia's largest principal moment is warned about outside these multiples of mass x (largest arm)^2 (a
-#: quadrotor's 0.2-0.6: the NeuroBEM vehicle's 0.35; an inertia in g cm^2 is 1e7 times kg m^2)
+#: quadrotor's 0.2-0.6: the NeuroBEM vehicle's 0.33; an inertia in g cm^2 is 1e7 times kg m^2)
 INERTIA_ARM_RANGE = (1e-3, 10.0)
 
 
