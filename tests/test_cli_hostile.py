@@ -344,6 +344,10 @@ def test_the_console_entry_point_exits_fast_with_complete_output_and_the_exit_co
     bad = subprocess.run([sys.executable, "-m", "propmap", "loads", "apce_8x6", "--rpm", "-1"],
                          capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and bad.stdout == ""
+    # the module path too (it ran nothing and exited 0 whatever the arguments: a user-level audit, 2026-11-28)
+    bad = subprocess.run([sys.executable, "-m", "propmap.cli.main", "loads", "apce_8x6", "--rpm", "-1"],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and bad.stdout == ""
     src = tmp_path / "in.csv"
     src.write_text("rpm,airspeed,incidence_deg\n" + "8000,5,30\n" * 3000)
     piped = subprocess.run(f"{sys.executable} -m propmap loads apce_8x6 --points {src} --out - | head -2",

@@ -133,6 +133,9 @@ def test_a_supersonic_tip_is_warned_of_by_the_api():
         assert 0.5 < hover_omega(heavy, pm.generic_params()) * 0.0648 / 340.3 < 0.8
     with pytest.warns(UserWarning, match=r"Mach 1\.\d+ in this hover"):  # (the hover itself beyond Mach 0.8 is said)
         hover_omega(replace(pm.read_vehicle(VEHICLE), mass=40.0), pm.generic_params())
+    # a hover below the solver's 0.1 rad/s: named, not SciPy's "f(a) and f(b) must have different signs"
+    with pytest.raises(ValueError, match=r"weight 9\.81e-09 N is carried below 0\.1 rad/s .* check its mass \(1e-09 kg\)"):
+        hover_omega(replace(pm.read_vehicle(VEHICLE), mass=1e-9), pm.generic_params())
 
 
 def test_the_cli_says_a_high_tip_mach_number_once_in_its_own_terms(tmp_path, capsys):
@@ -221,6 +224,12 @@ def test_heterogeneous_vehicle_exports_say_what_they_leave_out(tmp_path, capsys)
                  str(washed), "--out", str(tmp_path / "w.py")]) == 0
     err = capsys.readouterr().err
     assert "(wash_factor 2) pushes it down by" in err and "% of its weight)" in err
+    # no vertical drag area, no download: not warned of as "pushes it down by 0 N" (a user-level audit, 2026-11-28)
+    flat = tmp_path / "flat.toml"
+    flat.write_text(_vehicle_text({}, "\n[body]\ndrag_area = [0.01, 0.012, 0.0]\nwash_factor = 2.0\n"))
+    assert main(["export-sim", str(tmp_path / GEOMETRY), "--blades", "3", "--target", "rotorpy", "--vehicle",
+                 str(flat), "--out", str(tmp_path / "f.py")]) == 0
+    assert "pushes it down" not in capsys.readouterr().err
 
 
 def test_the_c_header_compares_the_maps_geometry(tmp_path):

@@ -154,6 +154,9 @@ def test_spin_up_below_the_grid_and_a_stopped_rotor(small_map):
                 rm.loads(om, V, b, out_of_grid=policy)
         with pytest.raises(ValueError, match="omega must be >= 0 rad/s"):
             rm.wrench((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), -500.0, out_of_grid=policy)
+        for v in (-1.0, np.array([5.0, -1e-9])):  # a speed is a magnitude too (it was clipped to still air)
+            with pytest.raises(ValueError, match=r"airspeed must be >= 0 m/s, the speed's magnitude .* got -1"):
+                rm.loads(900.0, v, b, out_of_grid=policy)
 
 
 @pytest.mark.parametrize("spin", ["ccw", "cw", -1, 1.0])

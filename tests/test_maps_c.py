@@ -248,10 +248,13 @@ def test_nan_inputs_are_refused_under_fast_math(tmp_path, rotor_map):
         subprocess.run([CC, "-std=c99", "-O2", "-ffast-math", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o",
                         str(tmp_path / name), str(tmp_path / f"{name}.c"), "-lm"], check=True, capture_output=True,
                        text=True)
-    loads = subprocess.run([str(tmp_path / "d")], input="nan 5 1 0\n900 nan 1 0\n900 5 nan 0\n900 5 1 0\n",
-                           capture_output=True, text=True, check=True).stdout.split("\n")
-    status = [int(line.split()[0]) for line in loads[:4]]
-    assert status[:3] == [-1, -1, -1] and status[3] >= 0
+    loads = subprocess.run([str(tmp_path / "d")], input="nan 5 1 0\n900 nan 1 0\n900 5 nan 0\n900 5 1 0\n"
+                           "-900 5 1 0\n900 -1 1 0\n900 -1 1 1\n", capture_output=True, text=True,
+                           check=True).stdout.split("\n")
+    status = [int(line.split()[0]) for line in loads[:7]]
+    # a negative rate or airspeed (magnitudes): refused under every policy, as the Python map (the airspeed was
+    # clipped to still air, the hover's loads returned with status 2, until 2026-11-28: a user-level audit)
+    assert status[:3] == [-1, -1, -1] and status[3] >= 0 and status[4:] == [-1, -1, -1]
     wrench = subprocess.run([str(tmp_path / "w")], input="nan 0 0 0 0 1 500 1 0\n1 0 0 0 nan 1 500 1 0\n"
                             "1 0 0 0 0 1 500 1 0\n", capture_output=True, text=True, check=True).stdout.split("\n")
     status = [int(line.split()[0]) for line in wrench[:3]]

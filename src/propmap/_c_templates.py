@@ -25,8 +25,8 @@ TEMPLATE = r"""/* {name}.h: propmap rotor map of {propeller}, as C99.
  *   returns 0 inside an unflagged cell, 1 inside a flagged cell (vortex ring or multiple
  *   roots at a node of the cell or of a neighbour cell: the measured error does not hold),
  *   2 outside the grid (clipped or NaN),
- *   -1 outside with {PREFIX}_ERROR, a NaN argument, omega < 0 (give its magnitude) or an
- *   unknown policy.
+ *   -1 outside with {PREFIX}_ERROR, a NaN argument, omega < 0 (give its magnitude),
+ *   airspeed < 0 (a magnitude: the direction is the incidence) or an unknown policy.
  *
  * int {prefix}_wrench(const double velocity[3], const double axis[3], double omega, int spin,
  *                     int policy, double force[3], double moment[3]);
@@ -127,7 +127,8 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
 {{
     const double *a0 = {prefix}_omega, *a1 = {prefix}_airspeed, *a2 = {prefix}_incidence;
 {decl}    double fade = 1.0;
-    if ({prefix}_isnan(omega) || {prefix}_isnan(airspeed) || {prefix}_isnan(incidence) || omega < 0.0) return -1;
+    if ({prefix}_isnan(omega) || {prefix}_isnan(airspeed) || {prefix}_isnan(incidence) || omega < 0.0
+        || airspeed < 0.0) return -1;
     if (policy != {PREFIX}_CLIP && policy != {PREFIX}_NAN && policy != {PREFIX}_ERROR) return -1;
     /* an incidence within 2.5e-7 rad of an end of the axis is on it: single precision's pi (8.7e-8
        above pi), an incidence from vectors a few ulp beyond pi/2 (0, pi) */

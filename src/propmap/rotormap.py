@@ -321,6 +321,9 @@ class RotorMap:
         if (q[0] < 0).any():
             raise ValueError(f"omega must be >= 0 rad/s, the rotation rate's magnitude (the sense is the spin), got "
                              f"{float(q[0][q[0] < 0].reshape(-1)[0])!r}")
+        if (q[1] < 0).any():  # (clipped to still air under "clip" until 2026-11-28: a user-level audit)
+            raise ValueError(f"airspeed must be >= 0 m/s, the speed's magnitude (its direction is the incidence), "
+                             f"got {float(q[1][q[1] < 0].reshape(-1)[0])!r}")
         if out_of_grid == "raise":
             for name, a, ax, unit in (("omega", q[0], self.omega, "rad/s"), ("airspeed", q[1], self.airspeed, "m/s"),
                                       ("incidence", q[2], self.incidence, "rad")):
@@ -363,7 +366,8 @@ class RotorMap:
         ------
         ValueError
             Non-numeric or NaN queries, Omega < 0 (a signed rate: give its magnitude, the
-            sense is the spin of :meth:`wrench`), an unknown policy, or (policy "raise") a
+            sense is the spin of :meth:`wrench`), an airspeed < 0 (a speed is a magnitude; its
+            direction is the incidence), an unknown policy, or (policy "raise") a
             query outside the grid, naming the argument and the grid's range.
         """
         o, v, b = _plain(omega), _plain(airspeed), _plain(incidence)
@@ -446,7 +450,7 @@ class RotorMap:
         inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (
             b0 <= incidence <= b1 or (airspeed <= self._hover_speed and v0 == 0.0 and incidence == incidence))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)
-                           or math.isnan(incidence) or omega < 0):
+                           or math.isnan(incidence) or omega < 0 or airspeed < 0):
             return None
         if out_of_grid not in POLICIES:
             return None

@@ -166,11 +166,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
 
         down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
                                      np.full(len(veh.rotors), hover_rpm * RPM), air=air).body_force[0, 2])
-        warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
-                      f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
-                      f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of the "
-                      "freestream only) leave out: there the exported vehicle's thrust at that rpm exceeds its weight "
-                      "by as much", UserWarning, stacklevel=1)
+        if down > 5e-4 * veh.weight:  # (a zero vertical drag area makes none: "pushes it down by 0 N", an audit)
+            warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
+                          f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
+                          f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of "
+                          "the freestream only) leave out: there the exported vehicle's thrust at that rpm exceeds "
+                          "its weight by as much", UserWarning, stacklevel=1)
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)

@@ -198,3 +198,7 @@ def run() -> None:
         sys.exit(code)
     run_exitfuncs()
     os._exit(code)
+
+
+if __name__ == "__main__":  # ``python -m propmap.cli.main`` as ``python -m propmap`` (it ran nothing and exited 0)
+    run()

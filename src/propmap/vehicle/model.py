@@ -387,7 +387,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     ------
     ValueError
         The rotors give no upward thrust (axes with a_i . e_z <= 0), or the weight needs
-        more than the solver's 1e5 rad/s.
+        more than the solver's 1e5 rad/s or less than 0.1 rad/s.
     SolverError
         A static solve fails (as :func:`propmap.rotor_loads`).
 
@@ -419,7 +419,12 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
             raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than {hi / 2:.4g} rad/s of its "
                              "rotors (the solver's limit is 1e5): "
                              "check its mass and propellers")
-    omega = float(brentq(lift, 0.1 if hi == 100.0 else hi / 2, hi, xtol=1e-9, rtol=1e-12))
+    lo = 0.1 if hi == 100.0 else hi / 2
+    if hi == 100.0 and lift(lo) >= 0:  # (brentq's own message named no input: a user-level audit, 2026-11-28)
+        raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N is carried below {lo:g} rad/s of its rotors, "
+                         "where a rotor is a parked blade (the solver's rates start at 0.1 rad/s): check its mass "
+                         f"({vehicle.mass:g} kg) and propellers")
+    omega = float(brentq(lift, lo, hi, xtol=1e-9, rtol=1e-12))
     mach = omega * max(r.propeller.radius for r in vehicle.rotors) / air.speed_of_sound
     if mach > TIP_MACH_WARN:  # (the search turned the solver's tip check off: the answer is checked here)
         import warnings
