@@ -454,11 +454,17 @@ def test_a_smoother_stall_blend_reports_its_cost():
     assert "stall-blend smoothing: fitted with M = 6" in res.report_text()
 
 
-def test_the_motor_lag_is_the_first_order_step_response():
-    """A speed step from 1000 to 1100 rad/s held from t = 0.05 s, 400 Hz, tau 33 ms: the lagged
-    speed is 1100 - 100 exp(-(t - t_0) / tau) (t_0 the last sample before the step) and its rate
-    of change (1100 - Omega) / tau, rising 2809 rad/s^2 at the step sample (its sign flipped
-    passed the suite: a mutation audit, 2026-11-27)."""
+def test_the_motor_lag_is_the_first_order_response_to_the_interpolated_speed():
+    """The lag d Omega/dt = (x - Omega) / tau with x the logged speed linear between samples
+    (a first-order hold). A step from 1000 to 1100 rad/s logged from t = 0.05 s, 400 Hz, tau 33
+    ms, is a ramp over the sample step h before it: after it the lagged speed is 1100 - 100
+    (tau / h)(exp(h / tau) - 1) exp(-(t - t_0) / tau) (t_0 the last sample before the step), 1003.69
+    rad/s at the step sample, and its rate of change (1100 - Omega) / tau, 2918 rad/s^2 there (its
+    sign flipped passed the suite: a mutation audit, 2026-11-27). A ramp's steady lag is tau times
+    its slope. And the same smooth speeds logged at 400 and 50 Hz give the same lagged speeds at
+    the common instants within 3.0 rad/s, the linear interpolation's own error at 50 Hz (the
+    step's form until 2026-11-28, which applied each logged speed over the interval before it,
+    gave 37 rad/s here: a lag half a sample short, a flight-log audit)."""
     from types import SimpleNamespace
 
     from propmap.identify.flight_samples import _lagged
@@ -466,11 +472,24 @@ def test_the_motor_lag_is_the_first_order_step_response():
     t = np.arange(80) * 0.0025
     om = np.where(t < 0.05 - 1e-9, 1000.0, 1100.0)[:, None] * np.ones((1, 4))
     log = SimpleNamespace(t=t, rotor_omega=om, n=t.size, rotor_acceleration=None)
-    tau = 0.033
+    tau, h = 0.033, 0.0025
     lag, rate = _lagged(log, tau)
     k = int(np.argmax(t > 0.05 - 1e-9))  # the step sample
-    want = 1100.0 - 100.0 * np.exp(-(t[k:] - t[k - 1]) / tau)
+    want = 1100.0 - 100.0 * (tau / h) * np.expm1(h / tau) * np.exp(-(t[k:] - t[k - 1]) / tau)
     np.testing.assert_allclose(lag[k:, 0], want, rtol=1e-12)
     np.testing.assert_allclose(lag[:k], 1000.0, rtol=0, atol=0)
-    assert lag[k, 0] == pytest.approx(1007.30, abs=0.01) and rate[k, 0] == pytest.approx(2809.2, abs=0.1)
-    np.testing.assert_allclose(rate[k:, 0], 100.0 / tau * np.exp(-(t[k:] - t[k - 1]) / tau), rtol=1e-9)
+    assert lag[k, 0] == pytest.approx(1003.69, abs=0.01) and rate[k, 0] == pytest.approx(2918.4, abs=0.1)
+    np.testing.assert_allclose(rate[k:, 0], (1100.0 - want) / tau, rtol=1e-9)
+    # a ramp of 2000 rad/s^2 from rest: it lags by tau x 2000 (1 - exp(-t / tau)), 66 rad/s at length
+    t2 = np.arange(200) * 0.0025
+    ramp = 1000.0 + 2000.0 * t2[:, None] * np.ones((1, 4))
+    lag, rate = _lagged(SimpleNamespace(t=t2, rotor_omega=ramp, n=t2.size, rotor_acceleration=None), tau)
+    assert ramp[-1, 0] - lag[-1, 0] == pytest.approx(tau * 2000.0 * (1 - np.exp(-t2[-1] / tau)), rel=1e-9)
+    assert rate[-1, 0] == pytest.approx(2000.0 * (1 - np.exp(-t2[-1] / tau)), rel=1e-9)
+    # the sampling rate: smooth speeds (a 3 Hz swing of 300 rad/s) at 400 Hz and every 8th sample (50 Hz)
+    t4 = np.arange(1601) * 0.0025
+    swing = (1200.0 + 300.0 * np.sin(2 * np.pi * 3.0 * t4))[:, None] * np.ones((1, 4))
+    fine, _ = _lagged(SimpleNamespace(t=t4, rotor_omega=swing, n=t4.size, rotor_acceleration=None), tau)
+    coarse, _ = _lagged(SimpleNamespace(t=t4[::8], rotor_omega=swing[::8], n=t4[::8].size, rotor_acceleration=None),
+                        tau)
+    assert np.max(np.abs(coarse[25:, 0] - fine[::8][25:, 0])) < 3.0

@@ -498,20 +498,26 @@ def _hover_speed(vehicle: Vehicle) -> float:
 
 def _lagged(log: FlightLog, tau: float):
     """(Omega, dOmega/dt) of the rotors: the logged speeds through a first-order lag of time
-    constant ``tau`` (exact for a speed held between samples: the lag's step response)."""
+    constant ``tau``, d Omega/dt = (x - Omega) / tau, x the logged speed taken linear between
+    samples (the lag's exact response to that input, a first-order hold)."""
     if tau == 0:
         return log.rotor_omega, log.rotor_acceleration
-    # om_i = om_{i-1} + a_i (x_i - om_{i-1}), a_i = 1 - exp(-dt_i / tau): sample by sample in Python floats, 15 ms
-    # for a 30 s log at 400 Hz (scipy.signal.lfilter would need scipy.signal, whose import alone takes 0.3-0.9 s of
-    # `propmap wrench`; NumPy row operations take 20x the loop)
-    dt = np.diff(log.t, prepend=log.t[0])
-    a = (1.0 - np.exp(-dt / tau)).tolist()
+    # om_i = e om_{i-1} + (1 - e) x_{i-1} + b (x_i - x_{i-1}), e = exp(-h / tau), b = 1 - tau (1 - e) / h, h the step:
+    # exact for x linear over the step (a ramp's steady lag is tau times its slope). Until 2026-11-28 the step applied
+    # x_i over the whole interval before it (om_i = om_{i-1} + (1 - e)(x_i - om_{i-1})): a lag half a sample short, and
+    # a log's prediction that moved with its sampling rate (a 50 Hz copy of a 400 Hz log: the lagged speeds 3.3 rad/s
+    # rms apart, 0.9 with this form; a flight-log audit). Sample by sample in Python floats, 15-20 ms for a 30 s log
+    # at 400 Hz (scipy.signal.lfilter would need scipy.signal, whose import alone takes 0.3-0.9 s of `propmap
+    # wrench`; NumPy row operations take 20x the loop)
+    h = np.diff(log.t)
+    e = np.exp(-h / tau)
+    b = 1.0 - tau * (1.0 - e) / h
     rows = log.rotor_omega.tolist()
     prev = rows[0]
     out = [prev]
-    for i in range(1, log.n):
-        ai = a[i]
-        prev = [p + ai * (x - p) for p, x in zip(prev, rows[i])]
+    for i, (ei, bi) in enumerate(zip(e.tolist(), b.tolist()), start=1):
+        x0, x1 = rows[i - 1], rows[i]
+        prev = [ei * p + (1.0 - ei) * u + bi * (v - u) for p, u, v in zip(prev, x0, x1)]
         out.append(prev)
     om = np.array(out)
     return om, (log.rotor_omega - om) / tau
