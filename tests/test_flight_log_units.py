@@ -102,6 +102,17 @@ def test_a_log_in_other_units_or_frames_is_refused_naming_the_cause(tmp_path, sh
         read_flight_log(_write(tmp_path, a))
 
 
+def test_a_short_log_in_a_z_down_frame_is_refused(tmp_path, shared_data):
+    """The gravity test needs a second of log: 0.9 s in an FRD body frame was scored with exit 0
+    and an Fz error of 13 N (a flight-log audit, 2026-11-28); the accelerometer's reading along
+    body z, where the rotors push, says it at any length. The same 0.9 s as shared read."""
+    a = _array(shared_data)[:360]
+    read_flight_log(_write(tmp_path, a.copy(), "short.mat"))
+    _frd(a)
+    with pytest.raises(FlightLogError, match=r"reads -9\.\d+ m/s\^2 along body z in the median, .* a z-down \(FRD\)"):
+        read_flight_log(_write(tmp_path, a))
+
+
 @pytest.mark.parametrize("mass_scale, omega_scale, ratio", [(1000.0, 1.0, r"0\.0\d"), (1.0, 1 / (2 * math.pi),
                                                                                         r"0\.1\d")])
 def test_a_mass_in_grams_or_motor_speeds_in_rev_per_s_is_refused(tmp_path, shared_data, mass_scale, omega_scale,

@@ -463,7 +463,9 @@ def _warn_spikes(log: FlightLog, name: str) -> None:
 
 def _check_frames(log: FlightLog, name: str) -> None:
     """The attitude, the accelerometer and the rate gyro against each other: a unit quaternion
-    (QUAT_TOLERANCE); over a log of GRAVITY_JUDGED s or more, the accelerometer's time-mean upward
+    (QUAT_TOLERANCE); in a shorter log, the accelerometer's median reading along body z, where the
+    rotors push, not below -g/2 (a z-down body frame); over a log of GRAVITY_JUDGED s or more, the
+    accelerometer's time-mean upward
     reading, turned into the world frame with the attitude, against g plus the mean vertical
     acceleration that the logged velocity's change asks for (within GRAVITY_TOLERANCE g plus three
     standard errors of the mean: accelerations in g, gravity removed, a z-down frame); the rates
@@ -478,6 +480,13 @@ def _check_frames(log: FlightLog, name: str) -> None:
         raise FlightLogError(f"{name}: sample {i + 1}: attitude quaternion {log.attitude[i].round(6).tolist()} has "
                              f"norm {norm[i]:.4g}, not 1 (within {QUAT_TOLERANCE:g}): a column mistake?")
     q = log.attitude / norm[:, None]
+    if log.duration < GRAVITY_JUDGED and float(np.median(log.specific_force[:, 2])) < -0.5 * G:
+        # (the gravity test below needs a second of log; a 0.9 s log in a z-down frame was scored with exit 0 and an
+        # Fz error of 13 N: a flight-log audit, 2026-11-28. A multirotor's rotors push along body z: its accelerometer
+        # reads up along it, in hover g, whatever the log's length)
+        raise FlightLogError(f"{name}: the accelerometer reads {float(np.median(log.specific_force[:, 2])):.4g} m/s^2 "
+                             "along body z in the median, where the rotors push (g in hover): a z-down (FRD) body "
+                             "frame? (docs/flight.md, Flight logs)")
     if log.duration >= GRAVITY_JUDGED:
         turn = Rotation.from_quat(q)  # (x, y, z, w), body -> z-up world
         f_up = turn.apply(log.specific_force)[:, 2]
