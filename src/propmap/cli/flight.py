@@ -335,7 +335,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         rows.append((f"{label}: propmap", e["model"]))
         for k, bl in baselines.items():
             e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
-            rows.append((f"{label}: {bl['label'][:30]}", e[k]))
+            rows.append((f"{label}: {bl['label']}", e[k]))
         if sub.reference_force is not None:
             e["reference"] = flight_errors(sub.reference_force, sub, sub.reference_moment)
             rows.append((f"{label}: log's own (NeuroBEM BEM+NN)", e["reference"]))
