@@ -680,3 +680,11 @@ def test_a_rotor_order_or_spins_against_the_logged_moments_is_warned_of(shared_d
                                             "specific_force", "velocity", "rotor_omega", "rotor_acceleration")})
     for rate in (25.0, 100.0, 400.0):
         assert not any("rotor layout" in n for n in flight_samples([first], veh, rate_hz=rate).notes)
+    # and a swap is named at every rate, `propmap wrench`'s 400 Hz included: the test runs at 25 Hz whatever the
+    # samples' rate (at 400 Hz its t about x was -1.9 on the slow figure-8, -4.2 at 25 Hz: a flight-log audit)
+    slow = read_flight_log(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat")
+    slow = dataclasses.replace(slow, rotor_omega=slow.rotor_omega[:, [2, 3, 0, 1]],
+                               rotor_acceleration=slow.rotor_acceleration[:, [2, 3, 0, 1]])
+    for rate in (25.0, 100.0, 400.0):
+        said = [n for n in flight_samples([slow], veh, rate_hz=rate).notes if "rotor layout" in n]
+        assert len(said) == 1 and re.search(r"about body x \(t = -4\.\d\)", said[0]), (rate, said)
