@@ -668,3 +668,37 @@ def test_an_integer_or_sparse_mat_log_is_named_as_such(tmp_path):
     with pytest.raises(FlightLogError, match=r"s\.mat: expected one N x 41 array, found 0 variable\(s\) \(none\); "
                                              r"not read: x \(a sparse matrix\)"):
         read_flight_log(tmp_path / "s.mat")
+
+
+def test_the_mass_a_logs_own_prediction_was_made_for(shared_data, tmp_path):
+    """NeuroBEM's prediction plus its residual is 0.752 kg times the specific force (the mass first
+    published; the vehicle file has the corrected 0.772 kg) to 1.4e-6 N: the reader gives that mass,
+    and the scores scale the prediction to the vehicle's mass (0.244 N pooled on the melon log as
+    logged, 0.151 N scaled: a flight-log audit, 2026-11-28). Without the residual columns, or with
+    columns that are not a mass times the specific force, no mass; at the vehicle's own mass (within
+    0.5%) no scaled row."""
+    import dataclasses
+
+    import scipy.io
+
+    from propmap.identify.flight import flight_samples, reference_at_vehicle_mass
+
+    path = shared_data / "neurobem_flights" / "bemnn20210223114138seg3.mat"
+    log = read_flight_log(path)
+    assert log.reference_mass == pytest.approx(0.752, abs=1e-5)
+    veh = pm.read_vehicle("neurobem_quadrotor")
+    s = flight_samples([log], veh)
+    scaled, masses = reference_at_vehicle_mass(s, veh.mass)
+    np.testing.assert_allclose(scaled, s.reference_force * veh.mass / log.reference_mass, rtol=1e-12)
+    assert masses == (pytest.approx(0.752, abs=1e-5),)
+    assert reference_at_vehicle_mass(s, log.reference_mass * 1.004) is None
+    a = scipy.io.loadmat(path)
+    a = next(v for k, v in a.items() if not k.startswith("__")).astype(float)
+    for change in ("zero residual", "noise"):
+        b = a.copy()
+        b[:, 35:38] = 0.0 if change == "zero residual" else np.random.default_rng(0).normal(size=(len(b), 3))
+        scipy.io.savemat(tmp_path / "b.mat", {"log": b})
+        other = read_flight_log(tmp_path / "b.mat")
+        assert other.reference_force is not None and other.reference_mass is None
+        assert reference_at_vehicle_mass(flight_samples([other], veh), veh.mass) is None
+    assert reference_at_vehicle_mass(dataclasses.replace(s, reference_mass=()), veh.mass) is None

@@ -65,6 +65,15 @@ NEUROBEM_REFERENCE = ("log's own: the prediction in the log's columns, NeuroBEM'
                       "Model\", Robotics: Science and Systems 2021)")
 
 
+def _reference_mass_note(masses, mass: float) -> str:
+    """The line under a table with a "log's own, at <mass> kg" row: why that row is there."""
+    made = " and ".join(f"{m:.4g}" for m in sorted(masses))
+    return (f"log's own, at {mass:g} kg: the log's prediction was made for {made} kg (its force plus its residual "
+            f"columns is that mass times the specific force), where the vehicle file says {mass:g} kg and the "
+            f"measured force is {mass:g} kg times the specific force: this row scales its force by {mass:g} / {made}, "
+            "scoring it in acceleration as propmap's; the row above scores it as logged (docs/flight.md)")
+
+
 MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
                   "calibration; used even where the log has esc_status rpm); motor m is the output the log's "
                   "PWM_MAIN_FUNCn (or another driver's FUNCn) parameters assign Motor m, else output m (in "
@@ -263,7 +272,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
 
     from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
                                    fitted_body_drag, fitted_vehicle, flight_errors, hover_torque_check,
-                                   predict_flight, speed_band_errors)
+                                   predict_flight, reference_at_vehicle_mass, speed_band_errors)
     from ..identify.result import jackknife_report
     from ..io.params_file import BodyTable
 
@@ -328,6 +337,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     pred = predict_flight(samples, veh, res.params, body=body, air=air)
     baselines = fit_baselines(train, veh)
     rows, report = [], {"training": {}, "held_out": {}}
+    reference_masses = set()  # the masses the logs' own predictions were made for, where not the vehicle's
 
     def score(label, mask, key, store):
         sub = samples.select(mask)
@@ -339,6 +349,11 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         if sub.reference_force is not None:
             e["reference"] = flight_errors(sub.reference_force, sub, sub.reference_moment)
             rows.append((f"{label}: log's own (NeuroBEM BEM+NN)", e["reference"]))
+            scaled = reference_at_vehicle_mass(sub, veh.mass)
+            if scaled is not None:
+                e["reference_at_vehicle_mass"] = flight_errors(scaled[0], sub, sub.reference_moment)
+                rows.append((f"{label}: log's own, at {veh.mass:g} kg", e["reference_at_vehicle_mass"]))
+                reference_masses.update(scaled[1])
         e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
         store[key] = e
 
@@ -366,6 +381,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
             f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
     if samples.reference_force is not None:
         text.append(NEUROBEM_REFERENCE)
+    if reference_masses:
+        text.append(_reference_mass_note(reference_masses, veh.mass))
     bands = report["training"]["speed_bands"]
     text.append("training F by speed band: " + ", ".join(
         f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
@@ -492,7 +509,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     the rotors' thrust of 48 x 16; docs/flight.md).
     """
     from ..io.atomic import atomic_write
-    from ..identify.flight import flight_errors
+    from ..identify.flight import flight_errors, reference_at_vehicle_mass
 
     if str(out) == "-":
         raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
@@ -545,9 +562,14 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         _write_columns(fh, cols)
     err = flight_errors(w.force, samples, w.moment)
     rows = [(f"propmap ({label})", err)]
+    scaled = None
     if samples.reference_force is not None:
         rows.append(("log's own prediction (NeuroBEM BEM+NN)",
                      flight_errors(samples.reference_force, samples, samples.reference_moment)))
+        scaled = reference_at_vehicle_mass(samples, veh.mass)
+        if scaled is not None:
+            rows.append((f"log's own prediction, at {veh.mass:g} kg",
+                         flight_errors(scaled[0], samples, samples.reference_moment)))
     if as_json:
         import json
 
@@ -560,6 +582,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         click.echo(_table(rows))
         if samples.reference_force is not None:
             click.echo(NEUROBEM_REFERENCE)
+        if scaled is not None:
+            click.echo(_reference_mass_note(set(scaled[1]), veh.mass))
         if "M_zero" in err:
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
     click.echo(f"wrote {out}", err=True)

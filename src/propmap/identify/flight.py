@@ -46,13 +46,14 @@ from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
-                            speed_band_errors)
+                            reference_at_vehicle_mass, speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names
 from .result import FitResult, jackknife_std_error, lag1_autocorrelation
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
            "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
-           "fit_baselines", "baseline_force", "speed_band_errors", "cross_validate_flight", "hover_torque_check",
+           "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass",
+           "cross_validate_flight", "hover_torque_check",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
 #: parameters fitted by default (docs/flight.md: chosen by leave-one-log-out cross-validation on the
@@ -438,11 +439,15 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
             row[key] = flight_errors(baseline_force(bl, test, vehicle), test)
         if test.reference_force is not None:
             row["reference"] = flight_errors(test.reference_force, test, test.reference_moment)
+            scaled = reference_at_vehicle_mass(test, vehicle.mass)
+            if scaled is not None:
+                row["reference_at_vehicle_mass"] = flight_errors(scaled[0], test, test.reference_moment)
         folds.append(row)
         if progress:
             progress(row)
     pooled = {}
-    for key in ["model"] + [b[0] for b in BASELINES] + (["reference"] if "reference" in folds[0] else []):
+    extra = [k for k in ("reference", "reference_at_vehicle_mass") if all(k in f for f in folds)]
+    for key in ["model"] + [b[0] for b in BASELINES] + extra:
         ms = np.array([f[key]["F"] ** 2 * f[key]["n"] for f in folds])
         pooled[key] = float(np.sqrt(ms.sum() / sum(f[key]["n"] for f in folds)))
     names = list(folds[0]["x"])

@@ -181,6 +181,9 @@ class FlightSamples:
         Measured moment I dw/dt + w x I w [N m] (None without the vehicle's inertia).
     reference_force, reference_moment : ndarray, shape (N, 3), or None
         The logs' own model prediction (NeuroBEM's BEM + NN) where every log has one.
+    reference_mass : tuple of float
+        Per log (as ``log_names``), the mass [kg] its prediction was made for
+        (``FlightLog.reference_mass``), NaN where unknown; () for samples built by hand.
     rate_hz : float
         Sampling rate of the samples [Hz]: the one asked for, or a log's own where it is
         lower (the median over the logs).
@@ -211,6 +214,7 @@ class FlightSamples:
     reference_moment: np.ndarray | None
     rate_hz: float
     notes: tuple = ()
+    reference_mass: tuple = ()
 
     def __post_init__(self):
         n = first_length("FlightSamples", "t", self.t)
@@ -409,7 +413,8 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
                          f"rad/s) and {n_ground} on the ground (standing still, the accelerometer reading g, the "
                          f"rotors below {GROUND_FRACTION:g} of the hover speed)")
     return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)),
-                         notes=tuple(notes), **out)
+                         notes=tuple(notes), reference_mass=tuple(math.nan if log.reference_mass is None else
+                                                                  float(log.reference_mass) for log in logs), **out)
 
 
 def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover) -> np.ndarray:

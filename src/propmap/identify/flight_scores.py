@@ -16,7 +16,8 @@ from ..vehicle import Vehicle, rotor_geometry
 if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
     from .flight_samples import FlightSamples
 
-__all__ = ["flight_errors", "fit_baselines", "baseline_force", "speed_band_errors", "SPEED_BANDS", "BASELINES"]
+__all__ = ["flight_errors", "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass",
+           "SPEED_BANDS", "BASELINES"]
 
 #: speed bands of the report [m/s]
 SPEED_BANDS = ((0.0, 3.0), (3.0, 6.0), (6.0, 9.0), (9.0, math.inf))
@@ -54,6 +55,37 @@ def flight_errors(predicted_force, samples: FlightSamples, predicted_moment=None
                     "M": float(np.sqrt(np.mean(mm))),
                     "M_zero": float(np.sqrt(np.mean(samples.moment**2)))})
     return out
+
+
+def reference_at_vehicle_mass(samples: FlightSamples, mass: float):
+    """The logs' own prediction (``samples.reference_force``) scaled to the vehicle's mass, where
+    it was made for another: F_ref m / m_ref per log, so that it is scored, as propmap's force,
+    against m a_s (a comparison in acceleration). The NeuroBEM segments' columns were made for
+    0.752 kg, the mass first published, where the vehicle file has the corrected 0.772 kg:
+    scored as logged they carry a 2.6% error of scale, 0.244 N pooled on the melon log against
+    0.151 N scaled (a flight-log audit, 2026-11-28).
+
+    Parameters
+    ----------
+    samples : FlightSamples
+        With ``reference_force`` and ``reference_mass`` (per log).
+    mass : float
+        The vehicle's mass m [kg], the one ``samples.force`` was made with.
+
+    Returns
+    -------
+    (ndarray, shape (N, 3), tuple of float) or None
+        The scaled force [N] and the masses [kg] the logs' predictions were made for; None
+        where there is no prediction, a log's mass is unknown, or every one lies within 0.5%
+        of ``mass``.
+    """
+    if samples.reference_force is None or len(samples.reference_mass) != len(samples.log_names):
+        return None
+    m_ref = np.asarray(samples.reference_mass, float)[samples.log_index]
+    if samples.n == 0 or not np.all(np.isfinite(m_ref)) or np.all(np.abs(mass / m_ref - 1.0) <= 0.005):
+        return None
+    used = tuple(sorted({float(f"{m:.4g}") for m in m_ref}))  # (to the digits said: 0.752 from every segment)
+    return samples.reference_force * (mass / m_ref)[:, None], used
 
 
 def _hub_velocities(samples: FlightSamples, arms: np.ndarray) -> np.ndarray:

@@ -134,6 +134,11 @@ class FlightLog:
     reference_force, reference_moment : ndarray, shape (N, 3), or None
         A model's prediction carried by the log (NeuroBEM's BEM + neural network, columns
         30-35), for comparison on the same samples; None otherwise.
+    reference_mass : float or None
+        The mass [kg] the prediction was made for, where the log carries its residual too
+        (NeuroBEM's columns 36-38) and the two add up to a mass times the specific force
+        (within 1e-3 of it rms; the NeuroBEM segments: 0.752 kg, the mass first published, to
+        1.4e-6 N): the least-squares m in prediction + residual = m a_s. None otherwise.
     motor_order : str
         What the motor columns are.
     """
@@ -151,6 +156,7 @@ class FlightLog:
     rotor_acceleration: np.ndarray | None
     reference_force: np.ndarray | None = None
     reference_moment: np.ndarray | None = None
+    reference_mass: float | None = None
     motor_order: str = ""
 
     @property
@@ -384,11 +390,30 @@ def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
                       UserWarning, stacklevel=3)
     return FlightLog(
         name=p.name, path=str(p), format="neurobem", t=a[:, 0].copy(), angular_acceleration=a[:, 1:4].copy(),
+        reference_mass=_reference_mass(a) if has_ref else None,
         angular_velocity=a[:, 4:7].copy(), attitude=a[:, 7:11].copy(), specific_force=a[:, 11:14].copy(),
         velocity=a[:, 14:17].copy(), rotor_omega=a[:, 20:24].copy(), rotor_acceleration=a[:, 24:28].copy(),
         reference_force=a[:, 29:32].copy() if has_ref else None,
         reference_moment=a[:, 32:35].copy() if has_ref else None,
         motor_order="NeuroBEM: back-right, front-right, back-left, front-left")
+
+
+def _reference_mass(a: np.ndarray) -> float | None:
+    """The mass the NeuroBEM array's prediction (columns 30-32) was made for: its force plus its
+    residual (columns 36-38) is that mass times the specific force (columns 12-14). None where the
+    residual is missing or the sum is not a mass times the specific force within 1e-3 rms."""
+    if a.shape[1] < 38:
+        return None
+    total, f = a[:, 29:32] + a[:, 35:38], a[:, 11:14]
+    if not (np.all(np.isfinite(total)) and np.any(a[:, 35:38] != 0.0)):
+        return None
+    ff = float(np.sum(f * f))
+    if not ff > 0:
+        return None
+    m = float(np.sum(total * f)) / ff
+    miss = float(np.sqrt(np.mean((total - m * f) ** 2)))
+    scale = float(np.sqrt(np.mean(total**2)))
+    return m if m > 0 and miss <= 1e-3 * scale else None
 
 
 # ---------------------------------------------------------------------------- checks
