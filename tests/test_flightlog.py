@@ -481,6 +481,18 @@ def test_ulog_a_damaged_file_is_refused_or_warned_of_never_hangs(tmp_path, capsy
     with pytest.warns(UserWarning, match=r"d.ulg: a damaged ULog file \("):
         read_flight_log(tmp_path / "d.ulg")
     assert capsys.readouterr().out == ""
+    # cut inside a message (power lost, a full card): pyulog stops there without a flag; warned of, the whole
+    # messages before the cut read as logged (a flight-log audit, 2026-11-28: exit 0 and a third of a log unsaid)
+    whole = read_flight_log(tmp_path / "f.ulg")
+    raw = (tmp_path / "f.ulg").read_bytes()
+    (tmp_path / "cut.ulg").write_bytes(raw[:int(len(raw) * 0.7)])
+    with pytest.warns(UserWarning, match=r"cut.ulg: the file ends inside a message \(cut short"):
+        cut = read_flight_log(tmp_path / "cut.ulg")
+    assert 0 < cut.n < whole.n
+    np.testing.assert_array_equal(cut.rotor_omega[:cut.n // 2], whole.rotor_omega[:cut.n // 2])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_flight_log(tmp_path / "f.ulg")  # (the whole file: not said)
 
 
 def test_ulog_esc_functions_that_do_not_match_the_vehicle_are_refused(tmp_path):

@@ -135,13 +135,20 @@ class _FileBytes(io.BytesIO):
     `propmap wrench` at full CPU: a PX4 audit, 2026-11-27; at the file's start, where io.BytesIO
     clamps the seek, and in a file of more than 64 KiB, where it does not: a review). A relative
     seek back before the earlier of the last two reads' starts (a message's header and payload)
-    raises OSError, as a seek before a file's start does; pyulog never steps back further."""
+    raises OSError, as a seek before a file's start does; pyulog never steps back further.
+    ``cut`` records a read the file's end cut short (some bytes, fewer than asked): a file that
+    ends inside a message, which pyulog stops at without a word (power lost, a full card: a
+    flight-log audit, 2026-11-28)."""
 
     _starts = (0, 0)
+    cut = False
 
     def read(self, size=-1):
         self._starts = (self._starts[1], self.tell())
-        return super().read(size)
+        data = super().read(size)
+        if size is not None and size > 0 and 0 < len(data) < size:
+            self.cut = True
+        return data
 
     def seek(self, pos, whence=0):
         target = pos if whence == 0 else (self.tell() + pos if whence == 1 else len(self.getbuffer()) + pos)
@@ -199,8 +206,8 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         ``motor_order`` (str).
     said : list of str
         What the caller warns of once the log is accepted: a damaged file pyulog read on (or its
-        other notices); a topic's messages out of time order (left out), a gap in it or a rate
-        below SLOW_TOPIC_HZ; several actuator_outputs instances.
+        other notices); a file that ends inside a message; a topic's messages out of time order
+        (left out), a gap in it or a rate below SLOW_TOPIC_HZ; several actuator_outputs instances.
 
     Raises
     ------
@@ -217,8 +224,9 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     pyulog.core.print = _pyulog_print  # (its module-level name: pyulog's notices into the list below)
     said = []
     _PARSING.notices = notices = []
+    source = _FileBytes(raw)
     try:
-        ulog = ULog(_FileBytes(raw))
+        ulog = ULog(source)
     except MemoryError:  # (the input too large for the memory, not a damaged file: the CLI says so)
         raise
     except Exception as exc:  # pyulog raises many types for a corrupt file
@@ -234,6 +242,9 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         name = f"{name} (a damaged file)"  # (a topic lost to the damage is named missing: said so)
     elif lines:
         said.append(f"{name}: {first}")
+    if source.cut and not ulog.file_corruption:
+        said.append(f"{name}: the file ends inside a message (cut short: power lost, a full card, a partial copy?); "
+                    "the log is read up to its last whole message")
     acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
     if not _has(ulog, acc_topic):
         found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
