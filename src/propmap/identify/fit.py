@@ -143,16 +143,17 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 def _data_kind(data: LoadData) -> str:
     """"static" (all airspeeds static: at most STATIC_AIRSPEED, a stand's pitot noise included),
-    "collective" (static, several collectives), "few_rates" (moving points at < MIN_RATES_FOR_RE
+    "collective" (static, several collectives; "collective_rates" where those points span
+    STATIC_RPM_SPAN in rpm), "few_rates" (moving points at < MIN_RATES_FOR_RE
     rotation rates, :func:`_sweep_rates`, and no static run spanning STATIC_RPM_SPAN, within a
     relative 1e-6 so that a unit's rounding does not decide) or "rates"."""
     moving = data.airspeed > STATIC_AIRSPEED
-    if not moving.any():
-        swept = data.collective is not None and np.ptp(data.collective) > 0
-        return "collective" if swept else "static"
-    rates = _sweep_rates(data)
     static = data.omega[~moving]
     spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN * (1.0 - 1e-6)
+    if not moving.any():
+        swept = data.collective is not None and np.ptp(data.collective) > 0
+        return ("collective_rates" if spans else "collective") if swept else "static"
+    rates = _sweep_rates(data)
     return "rates" if rates >= MIN_RATES_FOR_RE or spans else "few_rates"
 
 
@@ -203,7 +204,7 @@ def _direction_count(options: FitOptions, base: SectionParams, data: LoadData, k
     from .directions import STATIC_DIRECTIONS
 
     stats = _prior_stats(names, base, options)
-    if kind == "collective" or options.names is not None or stats is None or len(stats[0]) != len(names):
+    if kind.startswith("collective") or options.names is not None or stats is None or len(stats[0]) != len(names):
         return 0
     if options.directions is not None:
         return min(int(options.directions), len(names))

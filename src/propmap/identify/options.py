@@ -42,8 +42,13 @@ CAMBERED_FIT_RE = CAMBERED_FIT + ("re_exp_lift", "re_exp", "alpha_L0_re")
 #: of freedom; fitted freely, more parameters chase them)
 CAMBERED_FIT_STATIC = ("alpha_L0", "cd_min")
 #: a hover collective sweep (static points at several collectives) spans the angles of
-#: attack: the lift slope and the drag polar are identified too
-CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
+#: attack: the lift slope, the stall and the drag polar are identified too (with the Reynolds
+#: terms where its points span STATIC_RPM_SPAN in rpm, as a static run's). Until 2026-11-28
+#: without cl_max: a sweep into the stall of a set whose cl_max differed from the base's put
+#: cl_alpha at its bound (9 against 5.5) with 14 times the noise left, and sweeps from two
+#: catalogue sets (apce_10x7, magf_10x8) came out 7-14 standard errors off with loads 1-3% off
+#: and no warning (a user-level audit; the eight freed recovered them within their intervals)
+CAMBERED_FIT_COLLECTIVE = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2")
 #: freed besides the section's parameters (cambered model, default names) when the data measure the
 #: in-plane force D at incidence: the blades' flapping tilts the thrust and carries the in-plane
 #: force that a rigid rotor under-predicts, instead of a section drag distorted to chase it.
@@ -109,13 +114,16 @@ def param_names(lift_model: str) -> tuple[str, ...]:
 
 def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = "rates") -> tuple[str, ...]:
     """The parameters fitted: ``options.names`` (checked), else the default for
-    ``data_kind`` "static", "collective" (a static collective sweep), "few_rates" or "rates"."""
+    ``data_kind`` "static", "collective" (a static collective sweep; "collective_rates" at rates
+    spanning STATIC_RPM_SPAN), "few_rates" or "rates"."""
     _check_lift_model(base, options)
     if options.names is not None:
         return _check_names(options.names, base, options)
     if isinstance(base, CamberedParams):
         if data_kind == "collective":
             return CAMBERED_FIT_COLLECTIVE
+        if data_kind == "collective_rates":
+            return CAMBERED_FIT_RE
         if data_kind == "static" and not options.prior:
             return CAMBERED_FIT_STATIC
         return CAMBERED_FIT if data_kind == "few_rates" else CAMBERED_FIT_RE
