@@ -48,3 +48,23 @@ def test_temperature_and_pressure_in_mmhg_give_standard_sea_level_density(tmp_pa
     rows = [(r, 1e-7 * r**2, 15.0, 760.0) for r in RPM]
     d = read_loads(_csv(tmp_path, "rpm,thrust,temperature (C),pressure (mmHg)", rows))
     assert d.air_density == pytest.approx(1.225, rel=2e-3)
+
+
+def test_points_are_counted_as_distinct_operating_points_and_a_repeated_row_is_said(tmp_path):
+    """The minimum of six is of distinct operating points (rows were counted: three points written
+    twice were fitted); a row that repeats another to every digit is warned of (a table pasted
+    twice fitted without a word, its standard errors shrunk by sqrt(2): a user-level audit,
+    2026-11-28), a replicate measurement at the same point (other loads) is not."""
+    import warnings
+
+    three = [(r, 1e-7 * r**2, 1e-9 * r**2) for r in RPM[:3]]
+    with pytest.raises(DataError, match=r"has 6 points at 3 distinct operating points; a fit needs at least 6 "
+                                        r"distinct operating points"):
+        read_loads(_csv(tmp_path, "rpm,thrust,torque", three + three))
+    six = [(r, 1e-7 * r**2, 1e-9 * r**2) for r in RPM]
+    with pytest.warns(UserWarning, match=r"loads.csv: 2 row\(s\) repeat another row to every digit .* pasted twice"):
+        d = read_loads(_csv(tmp_path, "rpm,thrust,torque", six + six[:2]))
+    assert d.omega.size == 8
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_loads(_csv(tmp_path, "rpm,thrust,torque", six + [(r, 1.01e-7 * r**2, 1e-9 * r**2) for r in RPM[:2]]))

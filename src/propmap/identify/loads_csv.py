@@ -293,6 +293,18 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
     if min_points > 1 and np.all(np.ptp(ops, axis=0) == 0):
         raise DataError(f"{what}: {p}: all operating points are identical")
+    # (rows were counted, not operating points: 3 points written twice were fitted, and a table pasted twice fitted
+    # without a word with every standard error shrunk by sqrt(2): a user-level audit, 2026-11-28)
+    distinct = int(np.unique(ops, axis=0).shape[0])
+    if min_points > 1 and distinct < min_points:
+        raise DataError(f"{what}: {p} has {n} points at {distinct} distinct operating points; a fit needs at least "
+                        f"{min_points} distinct operating points (propmap validate compares any number)")
+    whole = np.nan_to_num(np.column_stack([ops] + [v[k] for k in keys]), nan=np.inf)  # (a missing value alike)
+    repeated = n - int(np.unique(whole, axis=0).shape[0])
+    if repeated:
+        warnings.warn(f"{p}: {repeated} row(s) repeat another row to every digit (operating point and loads): a table "
+                      "pasted twice? Each row counts as a measurement, and a repeated one shrinks the fit's standard "
+                      "errors as if it were another", stacklevel=2)
     if group is None:
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
