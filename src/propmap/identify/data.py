@@ -470,13 +470,18 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if k_miss < math.log(1.6):
         causes.append("rotation rates in thousands read as rpm (1.975 for 1975: a thousands separator read as a "
                       "decimal point, or krpm; write the rpm in full)")
-    # the electrical speed of a motor with pp pole pairs: the pp that brings the loads closest
-    miss = {pp: max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values())
-            for pp in range(2, 15)}
-    pp = min(miss, key=miss.get)
-    if miss[pp] < math.log(1.6):
-        causes.append(f"the electrical rpm of a motor with {pp} pole pairs read as the propeller's (give "
-                      f"--pole-pairs {pp}, or the optical speed)")
+    # the electrical speed of a motor with pp pole pairs: every pp that brings the loads as close as a unit slip (the
+    # model's own error spans neighbouring counts, whose thrusts differ by (8/7)^2 = 1.31: the best one alone named 8
+    # for a 7-pole-pair motor, and its advice, --pole-pairs on a plain rpm column, was refused: a user-level audit)
+    close = [pp for pp in range(2, 15)
+             if max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values()) < math.log(1.6)]
+    if close:
+        counts = (f"{close[0]}" if len(close) == 1 else f"{close[0]}-{close[-1]}" if close[-1] - close[0] == len(
+            close) - 1 else ", ".join(map(str, close)))
+        causes.append(f"the electrical rpm of a motor with {counts} pole pairs read as the propeller's (the loads "
+                      "cannot tell neighbouring counts apart: count the motor's magnets, half of them; then name the "
+                      "column 'Motor Electrical Speed (RPM)' and give --pole-pairs, divide it by the count, or give "
+                      "the optical speed)")
     if not causes and bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
         # the columns swapped (no unit slip explains the two): each near the other's model, to within a unit slip
         # of its own (a torque in N m under 'Thrust (kgf)' reads 9.8 times large)
