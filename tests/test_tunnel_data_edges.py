@@ -188,7 +188,8 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
     ("rpm,mu,incidence_deg,thrust,drag,torque", r"lacks column airspeed \(is 'mu' an advance ratio\? give the "
                                                 r"airspeed, V = J n D"),
     ("rpm,Vz,thrust,torque", r"column 'Vz' looks like a climb or descent rate, which propmap reads only as "
-                             r"'airspeed' \[m/s\] \(its magnitude\) with 'incidence_deg' 0 \(climb\) or 180"),
+                             r"'airspeed' \(its magnitude, in its unit: 'airspeed \(mph\)' is read as such\) with "
+                             r"'incidence_deg' 0 \(climb\) or 180"),
     ("rpm,airspeed,descent_rate,thrust,torque", r"column 'descent_rate' looks like a climb or descent rate"),
     ("rpm,V_c,thrust,torque", r"column 'V_c' looks like a climb or descent rate"),
     ("rpm,airspeed,flow angle,thrust,torque", r"column 'flow angle' looks like a flow angle"),

@@ -374,8 +374,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                         "give the flow")
     elif rate:
         raise error(f"column {rate[0]!r} looks like a climb or descent rate, which propmap reads only as 'airspeed' "
-                    "[m/s] (its magnitude) with 'incidence_deg' 0 (climb) or 180 (descent): convert it, or remove "
-                    "it; left unread, its points would be taken as static or in the airspeed's direction")
+                    "(its magnitude, in its unit: 'airspeed (mph)' is read as such) with 'incidence_deg' 0 (climb) "
+                    "or 180 (descent): write those columns, or remove it; left unread, its points would be taken as "
+                    "static or in the airspeed's direction")
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
