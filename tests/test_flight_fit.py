@@ -499,3 +499,9 @@ def test_the_motor_lag_is_the_first_order_response_to_the_interpolated_speed():
     coarse, _ = _lagged(SimpleNamespace(t=t4[::8], rotor_omega=swing[::8], n=t4[::8].size, rotor_acceleration=None),
                         tau)
     assert np.max(np.abs(coarse[25:, 0] - fine[::8][25:, 0])) < 3.0
+    # a repeated time (h = 0, which the readers refuse; a log built by hand) holds the speed: it made every later
+    # sample NaN, each then left out as a stopped rotor (a review)
+    t5 = t4[:100].copy()
+    t5[50] = t5[49]
+    held, _ = _lagged(SimpleNamespace(t=t5, rotor_omega=swing[:100], n=100, rotor_acceleration=None), tau)
+    assert np.all(np.isfinite(held)) and held[50, 0] == held[49, 0]

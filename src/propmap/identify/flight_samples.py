@@ -525,8 +525,10 @@ def _lagged(log: FlightLog, tau: float):
     # at 400 Hz (scipy.signal.lfilter would need scipy.signal, whose import alone takes 0.3-0.9 s of `propmap
     # wrench`; NumPy row operations take 20x the loop)
     h = np.diff(log.t)
-    e = np.exp(-h / tau)
-    b = 1.0 - tau * (1.0 - e) / h
+    one_minus_e = -np.expm1(-h / tau)  # (1 - e without the cancellation of a step far shorter than tau)
+    e = 1.0 - one_minus_e
+    with np.errstate(divide="ignore", invalid="ignore"):  # (a repeated time, h = 0, holds the speed: b = 0, e = 1)
+        b = np.where(h > 0, 1.0 - tau * one_minus_e / np.where(h > 0, h, 1.0), 0.0)
     rows = log.rotor_omega.tolist()
     prev = rows[0]
     out = [prev]

@@ -63,8 +63,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     ----------
     path : str or Path
     min_points : int
-        The fewest points accepted (6 for a fit); with 1 (a comparison, ``propmap validate``)
-        every operating point may also be the same one (a repeatability run).
+        The fewest distinct operating points accepted (6 for a fit); with 1 (a comparison,
+        ``propmap validate``) every operating point may also be the same one (a repeatability
+        run).
     rpm_source : {"optical", "electrical"}, optional
         Which speed column of a stand export to use (default: optical where present, its
         dropouts, 0 or empty while the electrical speed runs, taken from the electrical speed
@@ -93,11 +94,19 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         outside [0.05, 5] kg/m^3 (AIR_DENSITY_RANGE), |thrust| or
         |drag| > 1e5 N, |torque| > 1e4 N m, all in SI after conversion), a torque of both signs
         at the static points (or those nearest to static), a negative torque where the
-        thrust is positive in climb or edgewise flow, fewer than ``min_points`` points, or all operating points
-        identical (where ``min_points`` > 1), a column of PROPELLER_COLUMNS that names several
-        propellers, a bare ``J`` or ``mu`` of values other than 0 where no airspeed is read (an
-        advance ratio), a steps log whose ESC signal stays within one tolerance while the speed
-        varies; the message names the file, the line and the column.
+        thrust is positive in climb or edgewise flow, fewer than ``min_points`` points or distinct
+        operating points, or all operating points identical (where ``min_points`` > 1), a
+        column of PROPELLER_COLUMNS that names several propellers, a bare ``J`` or ``mu`` of
+        values other than 0 where no airspeed is read (an advance ratio), a steps log whose ESC
+        signal stays within one tolerance while the speed varies; the message names the file,
+        the line and the column.
+
+    Warns
+    -----
+    UserWarning
+        Rows that repeat another row to every digit, operating point and loads (a table
+        pasted twice); an airspeed column reading 0.3-1.5 m/s at every point (a static
+        stand's pitot); an incidence column without a unit that looks like radians.
     """
     from .stand import map_columns, split_header
     from .steps import ESC_TOL, esc_form, stand_points

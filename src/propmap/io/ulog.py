@@ -136,8 +136,9 @@ class _FileBytes(io.BytesIO):
     clamps the seek, and in a file of more than 64 KiB, where it does not: a review). A relative
     seek back before the earlier of the last two reads' starts (a message's header and payload)
     raises OSError, as a seek before a file's start does; pyulog never steps back further.
-    ``cut`` records a read the file's end cut short (some bytes, fewer than asked): a file that
-    ends inside a message, which pyulog stops at without a word (power lost, a full card: a
+    ``cut`` records a read the file's end cut short (fewer bytes than asked, but for a header's
+    3 bytes met with none, a whole file's end): a file that ends inside a message, which pyulog
+    stops at without a word (power lost, a full card: a
     flight-log audit, 2026-11-28)."""
 
     _starts = (0, 0)
@@ -146,7 +147,9 @@ class _FileBytes(io.BytesIO):
     def read(self, size=-1):
         self._starts = (self._starts[1], self.tell())
         data = super().read(size)
-        if size is not None and size > 0 and 0 < len(data) < size:
+        # (pyulog meets a whole file's end reading a 3-byte message header and getting nothing; a payload that gets
+        # nothing after its header is a cut as well: a review)
+        if size is not None and size > 0 and len(data) < size and (data or size != 3):
             self.cut = True
         return data
 
