@@ -185,8 +185,9 @@ _UNIT_SLIPS = [
     (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
     (1.0, 0.112984829, "torque in lbf in read as N m (name the column 'torque (lbf in)')"),
     (1.0, 0.00706155181, "torque in ozf in read as N m (name the column 'torque (oz in)')"),
-    (1.0, -1.0, ("a torque of the opposite sign, in a run the reader could not orient (no static point, and "
-                 "no positive thrust where the propeller is nearest to static): negate the torque column")),
+    (1.0, -1.0, ("a torque of the opposite sign (a CSV's reader turns it only in a run it can orient: a static "
+                 "point, or positive thrust where the propeller is nearest to static; a UIUC file's CP is read as "
+                 "written): negate the torque column")),
     (-1.0, 1.0, ("thrust of the opposite sign (a pusher mount, or a stand mounted the other way round; the reader "
                  "negates it only where it is negative at every static point): negate the "
                  "thrust column")),
