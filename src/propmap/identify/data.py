@@ -25,7 +25,7 @@ from ..io.inputs import show_path
 from .csvfile import DataError, RANGES
 from .stand import G0, LBF
 from .level_flight import LevelFlightData, body_to_world, read_level_flight, rotor_kinematics
-from .load_data import STATIC_AIRSPEED, LoadData, data_air
+from .load_data import STATIC_AIRSPEED, LoadData, data_air, radians_hint
 from .loads_csv import read_loads
 
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
@@ -430,7 +430,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
                          "theory is not predictive (docs/models.md): a fit's section parameters would absorb their "
                          "errors at every other point; hold them out or leave them out of a fit (validate lists the "
                          "errors by state)")
-    speed_slip = _airspeed_slip(data, at_rpm, loads_at, checked)
+    # (incidences that look like radians, which the reader warns of, make the thrust at airspeed misfit too: the
+    # airspeed's unit was blamed as a second cause, km/h, a user-level audit)
+    speed_slip = (None if radians_hint(np.degrees(data.incidence), data.airspeed)
+                  else _airspeed_slip(data, at_rpm, loads_at, checked))
     ratio = ratios(data.omega, r=at_rpm)
     if plausible(ratio):
         if drag_refused is not None:
