@@ -517,24 +517,22 @@ def _lagged(log: FlightLog, tau: float):
     samples (the lag's exact response to that input, a first-order hold)."""
     if tau == 0:
         return log.rotor_omega, log.rotor_acceleration
-    # om_i = e om_{i-1} + (1 - e) x_{i-1} + b (x_i - x_{i-1}), e = exp(-h / tau), b = 1 - tau (1 - e) / h, h the step:
-    # exact for x linear over the step (a ramp's steady lag is tau times its slope). Until 2026-11-28 the step applied
-    # x_i over the whole interval before it (om_i = om_{i-1} + (1 - e)(x_i - om_{i-1})): a lag half a sample short, and
-    # a log's prediction that moved with its sampling rate (a 50 Hz copy of a 400 Hz log: the lagged speeds 3.3 rad/s
-    # rms apart, 0.9 with this form; a flight-log audit). Sample by sample in Python floats, 15-20 ms for a 30 s log
-    # at 400 Hz (scipy.signal.lfilter would need scipy.signal, whose import alone takes 0.3-0.9 s of `propmap
-    # wrench`; NumPy row operations take 20x the loop)
+    # om_i = om_{i-1} + a (x_{i-1} - om_{i-1}) + b (x_i - x_{i-1}), a = 1 - exp(-h / tau), b = 1 - tau a / h, h the
+    # step: exact for x linear over the step (a ramp's steady lag is tau times its slope). Until 2026-11-28 the step
+    # applied x_i over the whole interval before it (om_i = om_{i-1} + a (x_i - om_{i-1})): a lag half a sample short,
+    # and a log's prediction that moved with its sampling rate (the melon log at 50 Hz against 400 Hz: the lagged
+    # speeds 3.3 rad/s rms apart, a flight-log audit; 0.77 rad/s rms, 5.7 at most, with this form). Sample by sample
+    # in Python floats, 15-20 ms for a 30 s log at 400 Hz (scipy.signal.lfilter would need scipy.signal, whose import
+    # alone takes 0.3-0.9 s of `propmap wrench`; NumPy row operations take 20x the loop)
     h = np.diff(log.t)
-    one_minus_e = -np.expm1(-h / tau)  # (1 - e without the cancellation of a step far shorter than tau)
-    e = 1.0 - one_minus_e
-    with np.errstate(divide="ignore", invalid="ignore"):  # (a repeated time, h = 0, holds the speed: b = 0, e = 1)
-        b = np.where(h > 0, 1.0 - tau * one_minus_e / np.where(h > 0, h, 1.0), 0.0)
+    a = -np.expm1(-h / tau)  # (without the cancellation of 1 - exp for a step far shorter than tau)
+    with np.errstate(divide="ignore", invalid="ignore"):  # (a repeated time, h = 0, holds the speed: a = b = 0)
+        b = np.where(h > 0, 1.0 - tau * a / np.where(h > 0, h, 1.0), 0.0)
     rows = log.rotor_omega.tolist()
     prev = rows[0]
     out = [prev]
-    for i, (ei, bi) in enumerate(zip(e.tolist(), b.tolist()), start=1):
-        x0, x1 = rows[i - 1], rows[i]
-        prev = [ei * p + (1.0 - ei) * u + bi * (v - u) for p, u, v in zip(prev, x0, x1)]
+    for i, (ai, bi) in enumerate(zip(a.tolist(), b.tolist()), start=1):
+        prev = [p + ai * (u - p) + bi * (v - u) for p, u, v in zip(prev, rows[i - 1], rows[i])]
         out.append(prev)
     om = np.array(out)
     return om, (log.rotor_omega - om) / tau

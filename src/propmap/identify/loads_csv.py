@@ -300,11 +300,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             warnings.warn(f"{p}: {hint}", stacklevel=2)
     collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
-    if min_points > 1 and np.all(np.ptp(ops, axis=0) == 0):
-        raise DataError(f"{what}: {p}: all operating points are identical")
     # (rows were counted, not operating points: 3 points written twice were fitted, and a table pasted twice fitted
     # without a word with every standard error shrunk by sqrt(2): a user-level audit, 2026-11-28)
     distinct = int(np.unique(ops, axis=0).shape[0])
+    if min_points > 1 and distinct == 1:
+        raise DataError(f"{what}: {p}: all operating points are identical")
     if min_points > 1 and distinct < min_points:
         raise DataError(f"{what}: {p} has {n} points at {distinct} distinct operating points; a fit needs at least "
                         f"{min_points} distinct operating points (propmap validate compares any number)")

@@ -138,8 +138,7 @@ class _FileBytes(io.BytesIO):
     raises OSError, as a seek before a file's start does; pyulog never steps back further.
     ``cut`` records a read the file's end cut short (fewer bytes than asked, but for a header's
     3 bytes met with none, a whole file's end): a file that ends inside a message, which pyulog
-    stops at without a word (power lost, a full card: a
-    flight-log audit, 2026-11-28)."""
+    stops at without a word (power lost, a full card: a flight-log audit, 2026-11-28)."""
 
     _starts = (0, 0)
     cut = False

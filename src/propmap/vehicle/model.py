@@ -406,11 +406,16 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
 
     rest = np.zeros(3)
 
+    solved = {}  # (the bracket's ends, each solved once: the search's and brentq's)
+
     def lift(om: float) -> float:
+        if om in solved:
+            return solved[om]
         with supersonic_tips_allowed():  # the bracket doubles past the hover rate on purpose
             w = vehicle_wrench(vehicle, params, rest, rest, np.full(len(vehicle.rotors), om), air=air,
                                discretization=discretization)
-        return float(w.force[0, 2]) - vehicle.weight
+        solved[om] = float(w.force[0, 2]) - vehicle.weight
+        return solved[om]
 
     hi = 100.0
     while lift(hi) < 0:
@@ -420,7 +425,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
                              "rotors (the solver's limit is 1e5): "
                              "check its mass and propellers")
     lo = 0.1 if hi == 100.0 else hi / 2
-    if hi == 100.0 and lift(lo) >= 0:  # (brentq's own message named no input: a user-level audit, 2026-11-28)
+    if lift(lo) >= 0:  # (brentq's own message named no input: a user-level audit, 2026-11-28)
         raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N is carried below {lo:g} rad/s of its rotors, "
                          "where a rotor is a parked blade (the solver's rates start at 0.1 rad/s): check its mass "
                          f"({vehicle.mass:g} kg) and propellers")
