@@ -296,9 +296,10 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     -------
     FitResult
         With a fit along directions ``extra["directions"]``: their count, coefficients and
-        std errors (posterior and data only) in prior standard deviations, loadings, the
+        std errors (data and prior, and data only) in prior standard deviations, loadings, the
         eigenvalues and the base (angles in degrees, ``units``); the parameters' std errors
-        are the posterior's with the held directions at the population's spread.
+        are the free directions' (Identifiability) with the held directions at the population's
+        spread.
 
     Raises
     ------

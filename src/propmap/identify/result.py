@@ -45,10 +45,13 @@ class Identifiability:
     ``singular_values`` are those of J diag(max(|x|, 0.1)), i.e. of the Jacobian with
     respect to relative parameter changes.
 
-    With the population prior, ``std_error``, ``ci95`` and ``correlation`` are the
-    posterior's, covariance (J_d^T J_d / s^2 + Sigma^-1)^-1 with Sigma the population
-    covariance (what data and prior together determine; a direction the data leave free
-    keeps the population's spread), and ``std_error_data`` holds the data's alone beside them (None without a
+    With the population prior, ``std_error``, ``ci95`` and ``correlation`` are those of the
+    estimate's error over the data's noise and the population's propellers, covariance
+    (J^T J)^-1 (s^2 J_d^T J_d + w^2 J_p^T J_p) (J^T J)^-1, J = [J_d; J_p] (J_p the prior's rows,
+    weighted by w, the population's residual level sigma_d; the shrinkage's bias included:
+    engine._shrinkage_meat); where s = w that is the posterior (J_d^T J_d / s^2 + Sigma^-1)^-1,
+    Sigma the population covariance, and a direction the data leave free keeps the population's
+    spread. ``std_error_data`` holds the data's alone beside them (None without a
     prior, and in a fit along directions, FitResult.extra["directions"]); ``poorly_determined``
     is still judged on the data alone, except in a fit along directions (the default for a
     static run or sweeps at one rotation rate), where it is empty: there the data determine
@@ -242,12 +245,13 @@ class FitResult:
                          "give goes past it)")
         dirs = self.extra.get("directions")
         if dirs:
-            lines.append(f"std err and interval: the posterior, the data's along the {dirs['count']} free directions "
-                         "and the population's spread along the held ones (the data determine the directions, not a "
-                         "parameter alone: their own figures are the directions', below)")
+            lines.append(f"std err and interval: data and population prior together along the {dirs['count']} free "
+                         "directions (the prior's pull included) and the population's spread along the held ones (the "
+                         "data determine the directions, not a parameter alone: their own figures are the "
+                         "directions', below)")
         elif data_only:
-            lines.append("std err and interval: data and population prior together (the posterior); 'data only': "
-                         "the data's alone")
+            lines.append("std err and interval: data and population prior together (the prior's pull on the estimate "
+                         "included); 'data only': the data's alone")
         auto = self.extra.get("residual_autocorrelation")
         if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
             flight = self.extra.get("kind") == "flight"
@@ -337,15 +341,20 @@ def _scale_of(name: str) -> float:
     return 0.0
 
 
-def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held=()) -> Identifiability:
+def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held=(),
+                     meat=None) -> Identifiability:
     """Identifiability from ``jac`` (rows: residuals, prior rows included for the posterior);
     the residual variance from ``residuals`` with ``dof_rows`` (default: jac's rows) - p
-    degrees of freedom; the parameters named in ``held`` (at a bound) fixed (class docstring)."""
+    degrees of freedom; the parameters named in ``held`` (at a bound) fixed (class docstring).
+
+    ``meat``: rows K of a sandwich covariance (J^T J)^+ K^T K (J^T J)^+, J = ``jac`` (in the
+    covariance's own units, no residual variance applied): the error of a penalised estimate
+    whose penalty rows are in ``jac`` (``_shrinkage_rows``); None, the usual s^2 (J^T J)^+."""
     names = tuple(names)
     if any(n in held for n in names):
         keep = np.array([n not in held for n in names])
         sub = _identifiability([n for n, k in zip(names, keep) if k], np.asarray(x)[keep], jac[:, keep], residuals,
-                               dof_rows)
+                               dof_rows, meat=None if meat is None else meat[:, keep])
         p = len(names)
         std = np.full(p, np.nan)
         ci = np.full((p, 2), np.nan)
@@ -368,6 +377,9 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_sig2 = np.where(null, 0.0, 1.0 / sig**2)
         shape = np.outer(d, d) * ((Vt.T * inv_sig2) @ Vt)  # the covariance per unit residual variance
+        if meat is not None:  # the sandwich: (J^T J)^+ K^T K (J^T J)^+
+            shape = shape @ (meat.T @ meat) @ shape
+            s2 = 1.0
         cov = s2 * shape
         std = np.sqrt(np.clip(np.diag(cov), 0, None))
         std[np.any(np.abs(Vt[null]) >= 1e-3, axis=0)] = np.inf
@@ -388,7 +400,7 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     np.fill_diagonal(corr, 1.0)
     sv = sig  # (of J diag(max(|x|, 0.1)), above)
     poor, warns = [], []
-    if s2 == 0.0:
+    if s2 == 0.0 and meat is None:
         warns.append("the fit reproduces the data exactly (residual 0: noise-free data?): the std errors and "
                      "intervals are 0 and say nothing of how well the data determine the parameters; the "
                      "correlations below do")
