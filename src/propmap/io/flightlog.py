@@ -25,7 +25,6 @@ missing topic or column, what was looked for and what was found.
 from __future__ import annotations
 
 import io
-import math
 import re
 import warnings
 from dataclasses import dataclass
@@ -33,15 +32,12 @@ from pathlib import Path
 
 import numpy as np
 
+from .flightlog_checks import GAP_STEPS, MIN_SAMPLES, FlightLogError, check_log
 from .inputs import MAX_FILE_BYTES, decode_input_text, header_separator, read_input_bytes, show_path
 from .ulog import read_ulog
 
 __all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
 
-#: a log sampled more slowly than this is refused [Hz]: time in ms or us read as seconds (NeuroBEM logs 400 Hz,
-#: PX4's slowest estimator topics tens of Hz; a 1 kHz log in ms would read as 1 Hz); dw/dt, differentiated from
-#: the rates, needs the vehicle's motion resolved
-MIN_RATE_HZ = 10.0
 #: the NeuroBEM dataset's 41 columns (the names of the authors' CSV loader)
 NEUROBEM_COLUMNS = (
     "t", "ang acc x", "ang acc y", "ang acc z", "ang vel x", "ang vel y", "ang vel z",
@@ -55,54 +51,6 @@ FORMATS = ("neurobem", "ulog")
 #: a sample may hold NaN there (motion capture losing the vehicle for 3 samples refused the log: a flight-log audit,
 #: 2026-11-27)
 UNUSED_COLUMNS = ("pos x", "pos y", "pos z", "vbat")
-#: plausibility limits of logged values (refused beyond: a unit or column mistake)
-OMEGA_MAX = 1e5  # [rad/s], the solver's limit
-ACC_MAX = 2000.0  # [m/s^2]
-#: spikes (:func:`_warn_spikes`): a sample this far from the median of the SPIKE_WINDOW samples around it, an
-#: accelerometer's [m/s^2] (5 g; the four shared segments: none), a motor speed's as a fraction of it (and 100 rad/s)
-SPIKE_WINDOW = 9
-SPIKE_RATE_HZ = 200.0
-SPIKE_ACC = 49.0
-SPIKE_OMEGA = 0.3
-#: a time step this many times the log's median is a gap, warned of (NeuroBEM's 400 Hz logs: at most 1.0)
-GAP_STEPS = 20
-RATE_MAX = 200.0  # [rad/s]
-SPEED_MAX = 500.0  # [m/s]
-MIN_SAMPLES = 2
-G = 9.80665  # [m/s^2]
-#: the attitude quaternion's norm may differ from 1 by this (a logged one is normalised to about 1e-3)
-QUAT_TOLERANCE = 0.05
-#: the accelerometer's time-mean upward reading must lie within this fraction of g (plus three standard errors of
-#: the mean) of g plus the log's mean vertical acceleration (the four NeuroBEM segments: within 0.006 m/s^2);
-#: accelerations in g read 0.10 g, without gravity about 0, in a z-down frame -g; judged over logs of
-#: GRAVITY_JUDGED s or more (a short window of a flip is all acceleration)
-GRAVITY_TOLERANCE = 0.2
-GRAVITY_JUDGED = 1.0  # [s]
-#: the rates are judged against the attitude's change over RATE_WINDOW where both turn at this rms or more [rad/s]
-#: (the NeuroBEM segments: ratios 0.996-1.022 at 0.36-1.11 rad/s; 0.71 in hover, at 0.05 rad/s, not judged)
-RATE_JUDGED = 0.2
-RATE_WINDOW = 0.02  # [s]
-#: logged rates this many times the attitude's are refused as deg/s (180 / pi = 57.3); below RATE_RATIO_AGAINST, as
-#: turning against it (another frame)
-RATE_RATIO_DEG = (20.0, 150.0)
-RATE_RATIO_AGAINST = -0.5
-#: the body-frame kinematics dv/dt = a_s + R^T g - w x v, the velocity's change over a window against the integral:
-#: refused where the rms difference exceeds KINEMATIC_TOLERANCE m/s^2 and KINEMATIC_RATIO times the rms acceleration
-#: over windows of both KINEMATIC_WINDOWS (an input fuzzing audit, 2026-11-27; figures in docs/flight.md)
-KINEMATIC_WINDOWS = (0.2, 0.5)  # [s]: refused where both windows miss
-KINEMATIC_TOLERANCE = 1.0  # [m/s^2]
-KINEMATIC_RATIO = 0.5
-#: a logged angular acceleration over the rates' change (least squares, both ways, over ANGULAR_ACCELERATION_WINDOW)
-#: must reach into this, judged where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more
-ANGULAR_ACCELERATION_RATIO = (0.3, 3.0)
-ANGULAR_ACCELERATION_WINDOW = 0.05  # [s]
-ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
-
-
-class FlightLogError(ValueError):
-    """A flight log that cannot be read; the message names the file and the problem."""
-
-
 @dataclass(frozen=True)
 class FlightLog:
     """One flight log in propmap's body frame (x forward, y left, z up), N samples.
@@ -243,7 +191,7 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
     else:
         arr, lines = _csv_array(raw, p, name)
         log = _neurobem(arr, p, name, lines)
-    _check(log, name)
+    check_log(log, name)
     for text in said:  # (after the refusals: a refused log printed these too, a review)
         warnings.warn(text, UserWarning, stacklevel=2)
     return log
@@ -414,209 +362,3 @@ def _reference_mass(a: np.ndarray) -> float | None:
     miss = float(np.sqrt(np.mean((total - m * f) ** 2)))
     scale = float(np.sqrt(np.mean(total**2)))
     return m if m > 0 and miss <= 1e-3 * scale else None
-
-
-# ---------------------------------------------------------------------------- checks
-
-def _check(log: FlightLog, name: str) -> None:
-    if log.n < MIN_SAMPLES:
-        raise FlightLogError(f"{name}: {log.n} sample(s); a log needs at least {MIN_SAMPLES}")
-    dt = np.diff(log.t)
-    if not np.all(dt > 0):
-        i = int(np.argmax(~(dt > 0)))
-        same = int(np.sum(dt == 0))  # (repeated stamps: rows written twice, or a time rounded: a flight-log audit)
-        why = ("" if not same else f"; {same} sample(s) repeat the time before them: remove rows written twice, or "
-               "give the time to its full precision (a time rounded coarser than the sampling repeats)")
-        raise FlightLogError(f"{name}: time does not increase at sample {i + 2} (t = {log.t[i + 1]:.6g} s after "
-                             f"{log.t[i]:.6g} s){why}")
-    if log.rate_hz < (1 - 1e-3) * MIN_RATE_HZ:  # (a 10 Hz log's rounded steps: refused at 9.99 Hz, an audit)
-        units = "is it in milliseconds or microseconds? " if log.rate_hz <= 2.0 else ""
-        raise FlightLogError(f"{name}: the time steps by {1 / log.rate_hz:.6g} s in the median ({log.rate_hz:.3g} Hz): "
-                             f"{units}a log's time is read in seconds, and a flight "
-                             f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion (its "
-                             "angular acceleration is differentiated from the rates)")
-    checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
-              ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
-              ("velocity", log.velocity, SPEED_MAX, "m/s"),
-              ("rotor_omega", log.rotor_omega, OMEGA_MAX, "rad/s")]
-    if log.angular_acceleration is not None:  # (a logged derivative's NaN surfaced later as 'FlightSamples.moment')
-        checks.append(("angular_acceleration", log.angular_acceleration, math.inf, "rad/s^2"))
-    for what, a, limit, unit in checks:
-        bad = ~np.isfinite(a) | (np.abs(a) > limit)
-        if bad.any():
-            i = int(np.argmax(bad.any(axis=1)))
-            if not np.all(np.isfinite(a[i])):
-                raise FlightLogError(f"{name}: sample {i + 1}: {what} {a[i].round(6).tolist()} is not finite (a gap "
-                                     "in the log: cut it out, or the sample)")
-            raise FlightLogError(f"{name}: sample {i + 1}: {what} {a[i].round(6).tolist()} beyond +-{limit:g} {unit} "
-                                 "(a unit or column mistake?)")
-    if np.any(log.rotor_omega < 0):
-        i = int(np.argmax((log.rotor_omega < 0).any(axis=1)))
-        raise FlightLogError(f"{name}: sample {i + 1}: negative motor speed {log.rotor_omega[i].tolist()} rad/s "
-                             "(give speeds as magnitudes; the spin is the vehicle file's)")
-    _check_frames(log, name)
-    big = int(np.argmax(dt))  # (warned after the refusals: a refused log printed the warning too, a review)
-    if dt[big] > GAP_STEPS * np.median(dt):  # (a 5 s jump inside a 2 s log was read without a word: a flight audit)
-        warnings.warn(f"{name}: a gap of {dt[big]:.3g} s in the log's time at t = {log.t[big]:.6g} s "
-                      f"({dt[big] * log.rate_hz:.0f} median steps): the samples either side are read as they are"
-                      + ("; the angular acceleration is differentiated across it: cut the log there"
-                         if log.angular_acceleration is None else ""), UserWarning, stacklevel=3)
-    _warn_spikes(log, name)
-
-
-def _warn_spikes(log: FlightLog, name: str) -> None:
-    """Warn of isolated samples far from their neighbours (SPIKE_WINDOW samples' median, in logs
-    sampled at SPIKE_RATE_HZ or faster): an accelerometer reading SPIKE_ACC beyond it, a motor
-    speed SPIKE_OMEGA of it and 100 rad/s beyond (telemetry glitches: two samples at 300 m/s^2
-    took a log's Fz rms from 0.27 to 2.6 N without a word, a flight-log audit, 2026-11-27). They
-    are read as logged: the warning says how many and where."""
-    from scipy.ndimage import median_filter
-
-    if log.n < SPIKE_WINDOW or log.rate_hz < SPIKE_RATE_HZ:  # (slower, a sample's neighbours are too far away in time
-        return  # to tell a glitch from the motion: a consistent agile log at 20 Hz had one, a test's)
-    for what, a, far in (("accelerometer", log.specific_force, lambda d, m: d > SPIKE_ACC),
-                         ("motor speed", log.rotor_omega,
-                          lambda d, m: (d > SPIKE_OMEGA * np.abs(m)) & (d > 100.0))):
-        med = median_filter(a, size=(SPIKE_WINDOW, 1), mode="nearest")
-        bad = np.any(far(np.abs(a - med), med), axis=1)
-        if bad.any():
-            i = int(np.argmax(bad))
-            warnings.warn(f"{name}: {int(bad.sum())} sample(s) of the {what} lie far from their neighbours (spikes; "
-                          f"the first at sample {i + 1}, t = {log.t[i]:.6g} s): they are read as logged and weigh in "
-                          "the fit and the rms; cut them out if they are glitches", UserWarning, stacklevel=4)
-
-
-def _check_frames(log: FlightLog, name: str) -> None:
-    """The attitude, the accelerometer and the rate gyro against each other: a unit quaternion
-    (QUAT_TOLERANCE); in a shorter log, the accelerometer's median reading along body z, where the
-    rotors push, not below -g/2 (a z-down body frame); over a log of GRAVITY_JUDGED s or more, the
-    accelerometer's time-mean upward
-    reading, turned into the world frame with the attitude, against g plus the mean vertical
-    acceleration that the logged velocity's change asks for (within GRAVITY_TOLERANCE g plus three
-    standard errors of the mean: accelerations in g, gravity removed, a z-down frame); the rates
-    against the attitude's change over RATE_WINDOW s (RATE_RATIO_DEG: rates in deg/s; below
-    RATE_RATIO_AGAINST: another frame), judged where both turn at RATE_JUDGED rad/s rms or more."""
-    from scipy.spatial.transform import Rotation
-
-    norm = np.linalg.norm(log.attitude, axis=1)
-    bad = np.abs(norm - 1.0) > QUAT_TOLERANCE
-    if bad.any():
-        i = int(np.argmax(bad))
-        raise FlightLogError(f"{name}: sample {i + 1}: attitude quaternion {log.attitude[i].round(6).tolist()} has "
-                             f"norm {norm[i]:.4g}, not 1 (within {QUAT_TOLERANCE:g}): a column mistake?")
-    q = log.attitude / norm[:, None]
-    if log.duration < GRAVITY_JUDGED and float(np.median(log.specific_force[:, 2])) < -0.5 * G:
-        # (the gravity test below needs a second of log; a 0.9 s log in a z-down frame was scored with exit 0 and an
-        # Fz error of 13 N: a flight-log audit, 2026-11-28. A multirotor's rotors push along body z: its accelerometer
-        # reads up along it, in hover g, whatever the log's length)
-        raise FlightLogError(f"{name}: the accelerometer reads {float(np.median(log.specific_force[:, 2])):.4g} m/s^2 "
-                             "along body z in the median, where the rotors push (g in hover): a z-down (FRD) body "
-                             "frame? (docs/flight.md, Flight logs)")
-    if log.duration >= GRAVITY_JUDGED:
-        turn = Rotation.from_quat(q)  # (x, y, z, w), body -> z-up world
-        f_up = turn.apply(log.specific_force)[:, 2]
-        v_up = turn.apply(log.velocity)[:, 2]
-        up = float(np.sum(0.5 * (f_up[1:] + f_up[:-1]) * np.diff(log.t))) / log.duration  # (the time mean)
-        expected = G + (v_up[-1] - v_up[0]) / log.duration
-        tolerance = GRAVITY_TOLERANCE * G + 3.0 * float(np.std(f_up)) / math.sqrt(log.n)
-        if abs(up - expected) > tolerance:
-            raise FlightLogError(f"{name}: the accelerometer reads {up:.4g} m/s^2 upwards on average (its readings "
-                                 "turned into the world frame with the logged attitude), where the log's vertical "
-                                 f"speed asks for {expected:.4g} (g plus its mean vertical acceleration; within "
-                                 f"{tolerance:.3g}): accelerations in g, gravity removed, a z-down (FRD) body frame, "
-                                 "or a quaternion not (x, y, z, w) from body to world? (docs/flight.md, Flight logs)")
-    _check_rates(log, q, name)
-    _check_angular_acceleration(log, name)
-    if log.duration >= GRAVITY_JUDGED:  # (after the rates: rates in deg/s would miss here first, naming the velocity)
-        _check_kinematics(log, Rotation.from_quat(q), name)
-
-
-def _check_angular_acceleration(log: FlightLog, name: str) -> None:
-    """A logged angular acceleration (NeuroBEM's columns 2-4, the measured moments' I dw/dt) against
-    the logged rates' change over ANGULAR_ACCELERATION_WINDOW s, the logged one's trapezoid mean over
-    the same windows: refused where the two least-squares ratios (of either on the other, which
-    noise in one or the other pulls apart) both lie outside ANGULAR_ACCELERATION_RATIO, or they
-    correlate negatively, where the rates change by ANGULAR_ACCELERATION_JUDGED rad/s^2 rms or more
-    (in deg/s^2 57, zeros 0, negated -1, each read without a word, the measured moments 57 times
-    too large: an input fuzzing audit, 2026-11-27; the NeuroBEM segments 0.97-0.99, a review's
-    consistent logs at 20-50 Hz 0.98-0.997 and its noisy-gyro one 0.90 and 0.97)."""
-    if log.angular_acceleration is None:
-        return
-    k = max(1, int(round(ANGULAR_ACCELERATION_WINDOW * log.rate_hz)))
-    if log.n <= k:
-        return
-    d = (log.angular_velocity[k:] - log.angular_velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
-    if np.sqrt(np.mean(d**2)) < ANGULAR_ACCELERATION_JUDGED:
-        return
-    logged = _window_means(log.t, log.angular_acceleration, k)
-    ld, dd, ll = float(np.sum(logged * d)), float(np.sum(d * d)), float(np.sum(logged * logged))
-    lo, hi = ANGULAR_ACCELERATION_RATIO
-    b1 = ld / dd
-    if ld > 0 and (ll / ld >= lo and b1 <= hi):  # ([b1, b2] meets [lo, hi]: b1 <= b2 where they correlate)
-        return
-    why = ("in deg/s^2?" if 20 <= b1 <= 150 else "zeros or another quantity?" if abs(b1) < lo else
-           "another frame or sign?" if b1 < 0 else "another unit or column?")
-    raise FlightLogError(f"{name}: the logged angular acceleration is {b1:.3g} times the logged rates' change "
-                         f"(within {lo:g}-{hi:g} expected): {why} It is read in rad/s^2, body axes (the measured "
-                         "moment is I dw/dt + w x I w)")
-
-
-def _check_rates(log: FlightLog, q, name: str) -> None:
-    """The logged rates against the unit attitude quaternions ``q``' change (_check_frames)."""
-    q = q * np.where(np.concatenate([[False], np.cumsum(np.sum(q[1:] * q[:-1], axis=1) < 0) % 2 == 1]), -1.0,
-                     1.0)[:, None]  # (q and -q are one attitude)
-    k = max(1, int(round(RATE_WINDOW * log.rate_hz)))  # (a derivative over one sample step is the noise's)
-    if log.n <= k:
-        return
-    dq = (q[k:] - q[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
-    x, y, z, w = (0.5 * (q[k:] + q[:-k])).T
-    dx, dy, dz, dw = dq.T
-    w_att = 2 * np.column_stack([w * dx - x * dw - y * dz + z * dy, w * dy + x * dz - y * dw - z * dx,
-                                 w * dz - x * dy + y * dx - z * dw])  # body rates of the attitude: 2 conj(q) dq/dt
-    w_log = 0.5 * (log.angular_velocity[k:] + log.angular_velocity[:-k])
-    if min(np.sqrt(np.mean(w_att**2)), np.sqrt(np.mean(w_log**2))) < RATE_JUDGED:
-        return
-    ratio = float(np.sum(w_log * w_att) / np.sum(w_att * w_att))
-    if RATE_RATIO_DEG[0] <= ratio <= RATE_RATIO_DEG[1]:
-        raise FlightLogError(f"{name}: the logged body rates are {ratio:.3g} times those of the logged attitude's "
-                             "change: are they in deg/s? A log's rates are read in rad/s")
-    if ratio < RATE_RATIO_AGAINST:
-        raise FlightLogError(f"{name}: the logged body rates turn against the logged attitude (ratio {ratio:.3g}): "
-                             "rates in another body frame (z down?) or a quaternion from world to body?")
-
-
-def _window_means(t: np.ndarray, a: np.ndarray, k: int) -> np.ndarray:
-    """The trapezoid-rule mean of ``a`` (rows at times ``t``) over each window [t_i, t_i+k]."""
-    c = np.concatenate([np.zeros((1, a.shape[1])),
-                        np.cumsum(0.5 * (a[1:] + a[:-1]) * np.diff(t)[:, None], axis=0)])
-    return (c[k:] - c[:-k]) / (t[k:] - t[:-k])[:, None]
-
-
-def _check_kinematics(log: FlightLog, turn, name: str) -> None:
-    """The logged body-frame velocity against the accelerometer: the velocity's change over a
-    window against the trapezoid integral of dv/dt = a_s + R^T g - w x v over the same window (the
-    accelerometer's vibration and the velocity's noise averaged out); refused where it misses by
-    more than KINEMATIC_TOLERANCE and KINEMATIC_RATIO times the rms acceleration over windows of
-    both KINEMATIC_WINDOWS: a velocity in the world frame, the z-down body frame or km/h was read
-    without a word, its force errors up to 7.7 N (an input fuzzing audit, 2026-11-27; a review
-    measured consistent logs at 20-400 Hz with a 5 cm lever arm, 50 ms of velocity delay, 3 m/s^2
-    of accelerometer noise and differentiated motion-capture positions at most 0.84 of the limit)."""
-    accel = log.specific_force + turn.inv().apply(np.array([0.0, 0.0, -G]))  # a_s + R^T g = dv/dt + w x v
-    rate = accel - np.cross(log.angular_velocity, log.velocity)  # dv/dt
-    worst = None
-    for window in KINEMATIC_WINDOWS:
-        k = max(1, int(round(window * log.rate_hz)))
-        if log.n <= k:
-            return
-        change = (log.velocity[k:] - log.velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
-        miss = float(np.sqrt(np.mean((change - _window_means(log.t, rate, k)) ** 2)))
-        size = float(np.sqrt(np.mean(_window_means(log.t, accel, k) ** 2)))
-        if miss <= max(KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
-            return
-        worst = worst or (miss, size, window)
-    miss, size, window = worst
-    raise FlightLogError(f"{name}: the logged velocity's change (in the body frame) misses what the accelerometer "
-                         f"and the rates make of it (dv/dt = a_s + R^T g - w x v) by {miss:.3g} m/s^2 rms over "
-                         f"{window:g} s, where the acceleration is {size:.3g} m/s^2 rms: is the velocity in the body "
-                         "frame (x forward, y left, z up), not the world's or a z-down one, and in m/s? "
-                         "(docs/flight.md, Flight logs)")
