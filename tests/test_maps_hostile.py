@@ -525,3 +525,17 @@ def test_the_maps_check_normalises_by_the_rows_around_each_point():
     assert c["check_linear_rolling_moment_max"] == pytest.approx(0.051538, rel=1e-4)
     assert c["check_linear_thrust_rms"] == pytest.approx(0.024186, rel=1e-4)
     assert c["check_linear_thrust_max"] == pytest.approx(0.103672, rel=1e-4)
+
+
+def test_map_check_percentages_stay_apart_when_huge():
+    """A map of 1-2 rpm at 0-5 m/s (its errors normalised by a static torque near 0) printed
+    6206691.925%21494689.740%: past 1000% the check's table gives three figures, and a text wider
+    than its column keeps a space before it."""
+    from propmap.cli.map_check import _pct
+
+    assert _pct(0.0123456, 9) == "   1.235%"
+    assert _pct(62066.91925, 9) == " 6.21e+06%"
+    assert _pct(float("nan"), 5) == "  n/a"
+    row = _pct(62066.91925, 9) + _pct(214946.8974, 9)
+    assert row.split() == ["6.21e+06%", "2.15e+07%"]
+    assert _pct(0.5) == "50.000%"  # (no width: no padding)
