@@ -77,9 +77,29 @@ class FlightLogError(ValueError):
 
 
 def check_log(log: FlightLog, name: str) -> None:
-    """Refuse (FlightLogError) or warn of what the module docstring names, in that order:
-    the sample count, the time, the values' ranges, the frames and units, then gaps and
-    spikes (warned)."""
+    """Refuse or warn of what the module docstring names, in that order: the sample count, the
+    time, the values' ranges, the frames and units, then gaps and spikes (warned).
+
+    Parameters
+    ----------
+    log : FlightLog
+        As a reader made it (io/flightlog.py).
+    name : str
+        The file as messages show it.
+
+    Raises
+    ------
+    FlightLogError
+        Fewer than MIN_SAMPLES samples, time not strictly increasing or sampled below
+        MIN_RATE_HZ, a value not finite or beyond its limit (RATE_MAX, ACC_MAX, SPEED_MAX,
+        OMEGA_MAX), a negative motor speed, or frames and units that the attitude, gravity,
+        kinematics and angular-acceleration checks refuse (one line naming the file and sample).
+
+    Warns
+    -----
+    UserWarning
+        A gap of GAP_STEPS median steps or more in the time; isolated spikes.
+    """
     if log.n < MIN_SAMPLES:
         raise FlightLogError(f"{name}: {log.n} sample(s); a log needs at least {MIN_SAMPLES}")
     dt = np.diff(log.t)
