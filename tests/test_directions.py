@@ -77,7 +77,7 @@ def test_static_fit_frees_three_directions_with_finite_intervals():
     assert 2.5 < idf.effective_parameters <= 3.0
     assert np.all(np.isfinite(idf.std_error)) and idf.std_error_data is None  # the data determine directions
     assert np.all(np.array(d["std_error_data_only"]) < 0.2)  # in prior standard deviations: well determined
-    # the parameters' posterior keeps the population's spread along the held directions: within it, above 0
+    # the parameters' error keeps the population's spread along the held directions: within it, above 0
     pop_sd = np.array(d["prior_std"]) / np.array([math.degrees(1.0) if n in d["units"] else 1.0 for n in d["names"]])
     assert np.all(idf.std_error <= pop_sd * (1 + 1e-9)) and np.all(idf.std_error > 0.05 * pop_sd)
     assert not idf.warnings and not r.warnings

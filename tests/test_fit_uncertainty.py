@@ -310,3 +310,51 @@ def test_intervals_under_the_prior_hold_the_truth_of_clean_data():
         missed_by_data_alone += abs(res.x[k] - getattr(truth, n)) > t * idf.std_error_data[k]
     assert missed_by_data_alone >= 1  # (the prior's pull is larger than the data's own spread: the test can fail)
     assert res.x[res.names.index("re_exp")] == pytest.approx(-0.5415, abs=0.003)  # regression value (2026-11-28)
+    # regression values (2026-11-28): the errors' size, 4.8-5.7x the data's alone here (intervals several times
+    # narrower would still hold this truth: a review)
+    sd = dict(zip(res.names, idf.std_error))
+    assert sd["cl_alpha"] == pytest.approx(0.127, rel=0.05) and sd["re_exp"] == pytest.approx(0.0688, rel=0.05)
+    assert math.degrees(sd["alpha_L0"]) == pytest.approx(math.degrees(0.00442), rel=0.05)
+    # pairs the data alone correlate at 0.92-0.94 are not said to be "strongly correlated" (> 0.95), as the
+    # estimate's correlations with the prior's pull (0.97-0.99) would say of them
+    assert not [w for w in idf.warnings if "strongly correlated" in w]
+
+
+def test_the_fit_report_feeds_the_sandwich_the_fit_s_own_weights():
+    """engine._finish: the prior rows' weight w = sigma_d times the residuals' scale (a vehicle's
+    weight for flight fits), s^2 from the data's residuals over N - p + (parameters at a bound)
+    degrees of freedom, a parameter at its bound left out of both the bread and the meat; the
+    std errors as the sandwich computed here by hand (a review found halving the held path's
+    errors passed the suite)."""
+    from scipy import optimize
+
+    import propmap as pm
+    from propmap.identify.engine import _finish, _prior_stats, _with_prior
+    from propmap.identify.options import FitOptions
+
+    base = pm.generic_params()
+    names = ("cl_alpha", "alpha_L0", "cd_min", "cd2")
+    opts = FitOptions(names=names)
+    rng = np.random.default_rng(11)
+    N = 12
+    Jd = 0.05 * rng.standard_normal((N, len(names)))
+    e = 0.01 * rng.standard_normal(N)
+    make, info = _with_prior(lambda o: (lambda x, opts=None: Jd @ (np.asarray(x) - 1.0) + e), names, base, opts,
+                             scale=7.5)
+    sel, mu, chol, pop = _prior_stats(names, base, opts)
+    for held in ((), ("cd_min",)):
+        x = np.array([base.cl_alpha + 0.3, base.alpha_L0 - 0.02, 0.002 if held else 0.02, base.cd2])
+        fun = make(opts)(x)
+        jac = np.vstack([Jd, 7.5 * pop["sigma_data"] * np.linalg.inv(chol)])
+        best = optimize.OptimizeResult(x=x, fun=fun, jac=jac, status=1, success=True, message="by hand")
+        res = _finish(names, base, opts, best, [], 1, 0.0, [], N, base.air, {"prior": dict(info)})
+        assert res.at_bound == held
+        keep = np.array([n not in held for n in names])
+        r = fun[:N]
+        s2 = float(r @ r) / (N - len(names) + len(held))
+        w = 7.5 * pop["sigma_data"]
+        J, Jp = jac[:, keep], jac[N:, keep]
+        bread = np.linalg.inv(J.T @ J)
+        cov = bread @ (s2 * Jd[:, keep].T @ Jd[:, keep] + w**2 * Jp.T @ Jp) @ bread
+        np.testing.assert_allclose(res.identifiability.std_error[keep], np.sqrt(np.diag(cov)), rtol=1e-9)
+        assert np.all(np.isnan(res.identifiability.std_error[~keep]))

@@ -233,19 +233,26 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
     free = np.array([n not in at_bound for n in names], dtype=bool)
     if "prior" in extra:
         # the estimate's error over the population and the noise (_shrinkage_meat): the fit
-        # weighed the prior rows J_p by w = sigma_d * scale (the population's residual level)
-        # whatever this fit's residual variance s2 is
+        # weighed the prior rows J_p by w = sigma_d * scale (the population's residual level;
+        # scale the vehicle's weight for level-flight and flight-log fits) whatever this fit's
+        # residual variance s2 is
         w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
         s2 = float(residuals @ residuals) / max(residuals.size - len(names) + len(at_bound), 1)
         post = _identifiability(names, best.x, best.jac, residuals, dof_rows=residuals.size, held=at_bound,
                                 meat=_shrinkage_meat(jac, best.jac[-k:], s2, w))
         held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
         # one line for what the prior holds; the data's own word on parameters it does not
-        # cover; the posterior's correlations (its std errors are in the report)
+        # cover and on the pairs they determine only together (the correlations of the data
+        # alone among the parameters they determine: the estimate's, with the prior's pull,
+        # said "the data constrain mainly a combination" of pairs the data do not, a review);
+        # the fit's own rows' singular values (the report's line says so)
         determined = ("poorly determined", "not determined")
         own = tuple(w for w in idf.warnings if any(d in w for d in determined)
                     and w.split(" ", 1)[0] not in extra["prior"]["names"])
-        idf_warns = own + tuple(w for w in post.warnings if not any(d in w for d in determined)) + (
+        pairs = tuple(w for w in idf.warnings if "strongly correlated" in w
+                      and not any(n in idf.poorly_determined for n in w.split(" are strongly", 1)[0].split(" and ")))
+        idf_warns = own + pairs + tuple(w for w in post.warnings if not any(d in w for d in determined)
+                                        and "strongly correlated" not in w) + (
             (f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
              "of its natural scale): the population prior weighs on them too (the data-only std errors in the report)",)
             if held else ())

@@ -48,15 +48,18 @@ class Identifiability:
     With the population prior, ``std_error``, ``ci95`` and ``correlation`` are those of the
     estimate's error over the data's noise and the population's propellers, covariance
     (J^T J)^-1 (s^2 J_d^T J_d + w^2 J_p^T J_p) (J^T J)^-1, J = [J_d; J_p] (J_p the prior's rows,
-    weighted by w, the population's residual level sigma_d; the shrinkage's bias included:
-    engine._shrinkage_meat); where s = w that is the posterior (J_d^T J_d / s^2 + Sigma^-1)^-1,
-    Sigma the population covariance, and a direction the data leave free keeps the population's
-    spread. ``std_error_data`` holds the data's alone beside them (None without a
+    weighted by w, the population's residual level sigma_d, times the vehicle's weight for
+    level-flight and flight-log fits; the shrinkage's bias included: engine._shrinkage_meat, an
+    average over the population, docs/identification.md); where s = w that is the posterior
+    (J_d^T J_d / s^2 + Sigma^-1)^-1, Sigma the population covariance, and a direction the data
+    leave free keeps the population's spread (in the limit; where s > w a little more).
+    ``std_error_data`` holds the data's alone beside them (None without a
     prior, and in a fit along directions, FitResult.extra["directions"]); ``poorly_determined``
-    is still judged on the data alone, except in a fit along directions (the default for a
+    and the strong-correlation warnings (pairs of parameters the data determine) are still judged
+    on the data alone, except in a fit along directions (the default for a
     static run or sweeps at one rotation rate), where it is empty: there the data determine
     directions, not parameters, and a direction the data know less well than the prior is
-    named in the warnings (each parameter's posterior ``std_error`` then says how well it is
+    named in the warnings (each parameter's ``std_error`` then says how well it is
     known). ``effective_parameters``
     is how many parameter directions the data determine against the prior, the trace of the
     posterior hat matrix, tr[J_d^T J_d (J_d^T J_d + J_p^T J_p)^-1] (J_d the data's rows, J_p
@@ -82,7 +85,7 @@ class Identifiability:
     warnings : tuple of str
         What the report says of the identifiability.
     std_error_data : ndarray, shape (p,), or None
-        The data's std errors alone, beside a prior's posterior ones.
+        The data's std errors alone, beside those of data and prior together.
     effective_parameters : float or None
         The trace of the posterior hat matrix (p without a prior).
     ci95_cut : ndarray of bool, shape (p, 2), or None
@@ -298,7 +301,8 @@ class FitResult:
             lines.append("correlation: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
                 for a, i in enumerate(free) for j in free[a + 1:]))
-        label = "the free directions' Jacobian" if dirs else "scaled Jacobian"
+        label = ("the free directions' Jacobian" if dirs else "scaled Jacobian (data and prior rows, as fitted)"
+                 if data_only else "scaled Jacobian")
         lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
         level = self.extra.get("kind") in ("level_flight", "flight")
         unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
@@ -343,13 +347,15 @@ def _scale_of(name: str) -> float:
 
 def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held=(),
                      meat=None) -> Identifiability:
-    """Identifiability from ``jac`` (rows: residuals, prior rows included for the posterior);
+    """Identifiability from ``jac`` (rows: residuals, a prior's rows included where it has one);
     the residual variance from ``residuals`` with ``dof_rows`` (default: jac's rows) - p
     degrees of freedom; the parameters named in ``held`` (at a bound) fixed (class docstring).
 
     ``meat``: rows K of a sandwich covariance (J^T J)^+ K^T K (J^T J)^+, J = ``jac`` (in the
     covariance's own units, no residual variance applied): the error of a penalised estimate
-    whose penalty rows are in ``jac`` (``_shrinkage_rows``); None, the usual s^2 (J^T J)^+."""
+    whose penalty rows are in ``jac`` (engine._shrinkage_meat); None, the usual s^2 (J^T J)^+.
+    A parameter held at a bound is left out of J and K alike: the others' error as if it were
+    known there (its distance from its true value is not propagated), as without ``meat``."""
     names = tuple(names)
     if any(n in held for n in names):
         keep = np.array([n not in held for n in names])
