@@ -14,9 +14,9 @@ import warnings
 
 import numpy as np
 
-from ..core.air import R_AIR, Air
 from ..core.units import RPM
 from .csvfile import RANGES, DataError, _Csv
+from .loads_air import _air_density, _conditions_density
 from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 
 
@@ -161,66 +161,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             notes.append(f"column {c!r} names {props[0]} on every row (the geometry is the one given to the fit)")
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
-    # the rotation speed: a plain rpm column, else the stand's optical, else its electrical
-    use = speeds[0]
-    if use != "rpm":
-        if rpm_source is not None:
-            use = f"rpm_{rpm_source}"
-        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.abs(np.nan_to_num(v["rpm_optical"]))) > 0:
-            use = "rpm_optical"
-        elif "rpm_electrical" in v:
-            use = "rpm_electrical"
-        notes.append(f"rotation speed from {cm.column(use)!r}" + (
-            " (the optical probe)" if use == "rpm_optical" else
-            (f", divided by {pole_pairs} pole pairs" if pole_pairs else
-             ", as the stand computed it from its motor-pole setting; if the export is raw electrical rpm, give "
-             "the pole pairs (--pole-pairs)")))
-    if pole_pairs and use != "rpm_electrical":
-        raise DataError(f"{what}: {p}: pole_pairs (--pole-pairs) divides an electrical speed, but the rotation "
-                        f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
-                        "to use the electrical one)")
-    rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
-    if use == "rpm_optical" and rpm_source is None and "rpm_electrical" in v:
-        rpm = _optical_gaps(rpm, v["rpm_electrical"], cm.column("rpm_optical"), notes)
-    if rpm.size and not np.any(np.nan_to_num(rpm) != 0):
-        raise DataError(f"{what}: {p}: the rotation speed column {cm.column(use)!r} is empty or 0 in every row"
-                        + (f" (chosen by rpm_source={rpm_source!r}, --rpm-source)" if rpm_source else ""))
-    for q in speeds:
-        v.pop(q)
-    v["rpm"] = rpm
-    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative);
-    # a negative reading within 1% of the column's largest magnitude is a stopped motor's noise (0)
-    big = np.nanmax(np.abs(rpm)) if rpm.size and not np.all(np.isnan(rpm)) else 0.0
-    rpm = v["rpm"] = np.where((rpm < 0) & (np.abs(rpm) < 0.01 * big), 0.0, rpm)
-    neg = np.nan_to_num(rpm) < 0
-    if neg.any():
-        if np.any(np.nan_to_num(rpm) > 0):
-            k = int(np.argmax(neg))
-            raise DataError(f"{what}: {p}, line {lines[k]}: {cm.column(use)!r} is {rpm[k]:g} rpm where other rows "
-                            "are positive; a rotation speed must be positive, in (0, 954929] rpm (0 or empty: a "
-                            "stopped motor, skipped)")
-        rpm = v["rpm"] = -rpm
-        notes.append(f"rotation speed negated: {cm.column(use)!r} is negative in every running row "
-                     f"({int(neg.sum())}), a probe or ESC that reports this sense of rotation negative; propmap's "
-                     "rotation speed is its magnitude")
-    # stopped motor: rows skipped
-    stopped = ~(np.nan_to_num(rpm) > 0)
-    if stopped.any():
-        running = 0
-        if "thrust" in v:  # a speed of 0 with a thrust: the reading is missing, not the motor stopped
-            t = np.abs(np.nan_to_num(v["thrust"]))
-            running = int(np.sum(stopped & (t > 0.05 * max(float(t.max(initial=0.0)), 1e-300))))
-        # a stand's zero: its load at rest, which propmap does not subtract (the torque's too since 2026-11-27: a
-        # thrust-stand export audit, +0.003 N m on every row moved the fitted torque by +22%)
-        tare = "" if running else "".join(_tare(v[q], stopped, q, unit) for q, unit in (("thrust", "N"),
-                                                                                       ("torque", "N m")) if q in v)
-        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty or NaN) skipped: a stopped motor"
-                     + (f"; {running} of them with a thrust above 5% of the largest: a speed reading missing while "
-                        "the motor ran (those points are lost)" if running else "") + tare)
-        keep = ~stopped
-        v = {k: a[keep] for k, a in v.items()}
-        lines = lines[keep]
-        texts = {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}
+    v, use = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
+    v, lines, texts = _skip_stopped(v, lines, texts, notes)
     if sampled:
         v, lines, texts, keys = _skip_dropouts(v, lines, texts, keys, cm, what, p, notes)
     n = lines.size
@@ -318,6 +260,80 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes), air_density)
+
+
+def _rotation_speed(v: dict, speeds: list, cm, rpm_source, pole_pairs, lines, what: str, p: str,
+                    notes: list) -> tuple[dict, str]:
+    """(v with the rotation speed under "rpm", the speed columns removed; the column used): a plain
+    rpm column, else the stand's optical, else its electrical (divided by ``pole_pairs``), the
+    optical probe's dropouts filled from the electrical speed, one sign (its magnitude), with
+    notes; DataError for a choice that cannot hold (read_loads' docstring)."""
+    use = speeds[0]
+    if use != "rpm":
+        if rpm_source is not None:
+            use = f"rpm_{rpm_source}"
+        elif "rpm_optical" in v and v["rpm_optical"].size and np.nanmax(np.abs(np.nan_to_num(v["rpm_optical"]))) > 0:
+            use = "rpm_optical"
+        elif "rpm_electrical" in v:
+            use = "rpm_electrical"
+        notes.append(f"rotation speed from {cm.column(use)!r}" + (
+            " (the optical probe)" if use == "rpm_optical" else
+            (f", divided by {pole_pairs} pole pairs" if pole_pairs else
+             ", as the stand computed it from its motor-pole setting; if the export is raw electrical rpm, give "
+             "the pole pairs (--pole-pairs)")))
+    if pole_pairs and use != "rpm_electrical":
+        raise DataError(f"{what}: {p}: pole_pairs (--pole-pairs) divides an electrical speed, but the rotation "
+                        f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
+                        "to use the electrical one)")
+    rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
+    if use == "rpm_optical" and rpm_source is None and "rpm_electrical" in v:
+        rpm = _optical_gaps(rpm, v["rpm_electrical"], cm.column("rpm_optical"), notes)
+    if rpm.size and not np.any(np.nan_to_num(rpm) != 0):
+        raise DataError(f"{what}: {p}: the rotation speed column {cm.column(use)!r} is empty or 0 in every row"
+                        + (f" (chosen by rpm_source={rpm_source!r}, --rpm-source)" if rpm_source else ""))
+    for q in speeds:
+        v.pop(q)
+    v["rpm"] = rpm
+    # a rotation speed of one sign: propmap's is its magnitude (a probe or ESC that reports the other sense negative);
+    # a negative reading within 1% of the column's largest magnitude is a stopped motor's noise (0)
+    big = np.nanmax(np.abs(rpm)) if rpm.size and not np.all(np.isnan(rpm)) else 0.0
+    rpm = v["rpm"] = np.where((rpm < 0) & (np.abs(rpm) < 0.01 * big), 0.0, rpm)
+    neg = np.nan_to_num(rpm) < 0
+    if neg.any():
+        if np.any(np.nan_to_num(rpm) > 0):
+            k = int(np.argmax(neg))
+            raise DataError(f"{what}: {p}, line {lines[k]}: {cm.column(use)!r} is {rpm[k]:g} rpm where other rows "
+                            "are positive; a rotation speed must be positive, in (0, 954929] rpm (0 or empty: a "
+                            "stopped motor, skipped)")
+        rpm = v["rpm"] = -rpm
+        notes.append(f"rotation speed negated: {cm.column(use)!r} is negative in every running row "
+                     f"({int(neg.sum())}), a probe or ESC that reports this sense of rotation negative; propmap's "
+                     "rotation speed is its magnitude")
+    return v, use
+
+
+def _skip_stopped(v: dict, lines, texts: dict, notes: list):
+    """(v, lines, texts) without the rows of a stopped motor (rpm 0, empty or NaN), with a note
+    of how many, of those whose thrust says the motor ran, and of the stand's load at rest."""
+    rpm = v["rpm"]
+    stopped = ~(np.nan_to_num(rpm) > 0)
+    if stopped.any():
+        running = 0
+        if "thrust" in v:  # a speed of 0 with a thrust: the reading is missing, not the motor stopped
+            t = np.abs(np.nan_to_num(v["thrust"]))
+            running = int(np.sum(stopped & (t > 0.05 * max(float(t.max(initial=0.0)), 1e-300))))
+        # a stand's zero: its load at rest, which propmap does not subtract (the torque's too since 2026-11-27: a
+        # thrust-stand export audit, +0.003 N m on every row moved the fitted torque by +22%)
+        tare = "" if running else "".join(_tare(v[q], stopped, q, unit) for q, unit in (("thrust", "N"),
+                                                                                       ("torque", "N m")) if q in v)
+        notes.append(f"{int(stopped.sum())} rows with rpm 0 (or empty or NaN) skipped: a stopped motor"
+                     + (f"; {running} of them with a thrust above 5% of the largest: a speed reading missing while "
+                        "the motor ran (those points are lost)" if running else "") + tare)
+        keep = ~stopped
+        v = {k: a[keep] for k, a in v.items()}
+        lines = lines[keep]
+        texts = {k: [t for t, m in zip(col, keep) if m] for k, col in texts.items()}
+    return v, lines, texts
 
 
 #: an optical probe's gaps are filled from the electrical speed where the two agree within this (median ratio)
@@ -432,134 +448,6 @@ def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, note
                  f"dropout): those rows take the electrical speed, within {abs(ratio - 1.0):.1%} of the optical one "
                  "elsewhere (median)")
     return np.where(gap, electrical, optical)
-
-
-#: the air densities a load file's density column may give [kg/m^3] (sea level 1.225; 5 km 0.74)
-AIR_DENSITY_RANGE = (0.05, 5.0)
-
-
-def _air_density(rho, column, what: str, p: str, notes: list) -> float | None:
-    """The median of a density column's running rows [kg/m^3] (None without one, or where it is
-    empty or 0 in every row: a sensor absent), with a note."""
-    if rho is None:
-        return None
-    rho = rho[np.isfinite(rho) & (rho != 0)]  # (empty or 0: a sensor absent from the rows)
-    if not rho.size:
-        notes.append(f"{column!r} is empty or 0 in every row: not read")
-        return None
-    lo, hi = AIR_DENSITY_RANGE
-    if not (lo <= rho.min() and rho.max() <= hi):
-        bad = rho.min() if rho.min() < lo else rho.max()
-        raise DataError(f"{what}: {p}: {column!r} gives {bad:g} kg/m^3; an air density must be in [{lo:g}, {hi:g}] "
-                        "kg/m^3")
-    med = float(np.median(rho))
-    spread = f" (the rows range {rho.min():.4g}-{rho.max():.4g})" if rho.max() > 1.01 * rho.min() else ""
-    notes.append(f"air density {med:.4g} kg/m^3 from {column!r}, the median of its rows{spread}")
-    return med
-
-
-#: the names of a load file's air temperature and pressure columns (before a unit in brackets or after '_'): names
-#: of the air's state only (a bare 'temp' may be a motor's, a bare 'pressure' a tunnel's dynamic pressure)
-_T_NAMES = ("temperature", "air temperature", "air temp", "ambient temperature", "ambient temp", "tunnel temperature")
-_P_NAMES = ("pressure", "air pressure", "ambient pressure", "barometric pressure", "baro", "barometer",
-            "static pressure", "atmospheric pressure", "p atm", "tunnel static pressure")
-#: names read only with a unit in the header (a bare 'pressure' of 735 may be a tunnel's dynamic pressure in Pa,
-#: which read as hPa would give 0.87 kg/m^3)
-_UNIT_NEEDED = ("pressure",)
-#: their units: name -> (scale, offset) to K, and -> scale to Pa
-_C, _F = (1.0, 273.15), (5 / 9, 255.3722222222222)
-_T_UNITS = {"c": _C, "°c": _C, "ºc": _C, "degc": _C, "deg c": _C, "celsius": _C, "k": (1.0, 0.0), "kelvin": (1.0, 0.0),
-            "f": _F, "°f": _F, "ºf": _F, "degf": _F, "deg f": _F, "fahrenheit": _F}
-_P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "mb": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
-            "psia": 6894.757293168, "inhg": 3386.389, "in hg": 3386.389, "mmhg": 133.322387415, "torr": 133.322368421,
-            "atm": 101325.0}
-#: the air densities a temperature and a pressure column are believed to give without a warning [kg/m^3]
-#: (sea level at -20 to 45 degC; 3,000 m; beyond them a column is more likely another quantity)
-PLAUSIBLE_DENSITY = (0.85, 1.4)
-
-
-def _split_unit(column: str) -> tuple[str, str | None]:
-    """(name, unit) of a header such as 'Temperature (C)', 'pressure [hPa]' or 'temp_c' (lower case)."""
-    c = column.strip().lower()
-    for o, e in (("(", ")"), ("[", "]")):
-        if o in c and c.endswith(e):
-            return c[:c.index(o)].strip().replace("_", " "), c[c.index(o) + 1:-1].strip()
-    name, _, unit = c.rpartition("_")
-    return (name.replace("_", " "), unit) if name and (unit in _T_UNITS or unit in _P_UNITS) else (c.replace("_", " "),
-                                                                                                    None)
-
-
-def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
-    """The air density [kg/m^3] of a file's air temperature and pressure columns (their medians;
-    rho = p / (R T) as :meth:`propmap.Air.from_conditions` gives it, within its ranges of T and
-    p), with a note; None where it has not both, where a unit cannot be told (not in the header
-    and not unambiguous from the values: T 200-350 K or -40 to 31 degC; p 5e4-1.1e5 Pa, 500-1100
-    hPa, 50-110 kPa), or where the density would lie outside AIR_DENSITY_RANGE: then a note says
-    the columns are not read (never a refusal: the air options still serve). A density outside
-    PLAUSIBLE_DENSITY is used and said to be checked."""
-    found = {}
-    for c in f.header:
-        name, unit = _split_unit(c)
-        kind = "T" if name in _T_NAMES else "p" if name in _P_NAMES else None
-        if kind and kind not in found:
-            found[kind] = (c, unit, name)
-    if len(found) < 2:
-        if found:
-            (c, _, _), = found.values()
-            notes.append(f"{c!r} is not read without the other of temperature and pressure (or a density column): "
-                         "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
-                         "--rho say otherwise")
-        return None
-    skip = (f"; {found['T'][0]!r} and {found['p'][0]!r} are not read (give the air with --temperature-c/--pressure-pa, "
-            "--rho or a density column)")
-    try:
-        raw, _, _ = f.read([found["T"][0].lower(), found["p"][0].lower()],
-                           optional={found["T"][0].lower(), found["p"][0].lower()})
-    except DataError:  # (a column of text: not the air's state)
-        notes.append("a temperature or pressure column is not numeric" + skip)
-        return None
-    vals = {}
-    for kind, (c, unit, name) in found.items():
-        x = raw[c.lower()]
-        x = x[np.isfinite(x)]
-        if not x.size:
-            notes.append(f"{c!r} is empty in every row" + skip)
-            return None
-        med = float(np.median(x))
-        table = _T_UNITS if kind == "T" else _P_UNITS
-        if unit is None and name in _UNIT_NEEDED:
-            notes.append(f"{c!r} has no unit in its name (a dynamic pressure?)" + skip)
-            return None
-        if unit is None:  # (only where the values leave one reading: 32-60 may be degF as well as degC)
-            spans = ((("k", 200, 350), ("c", -40, 31)) if kind == "T" else
-                     (("pa", 5e4, 1.1e5), ("hpa", 500, 1100), ("kpa", 50, 110)))
-            unit = next((u for u, lo, hi in spans if lo <= med <= hi), None)
-            if unit is None:
-                notes.append(f"{c!r} has no unit in its name and its values ({med:g} in the median) do not tell it"
-                             + skip)
-                return None
-            notes.append(f"{c!r} read in {dict(k='K', c='degC', pa='Pa', hpa='hPa', kpa='kPa')[unit]} (its values; "
-                         "no unit in the header)")
-        if unit not in table:
-            notes.append(f"{c!r}: a unit propmap does not know" + skip)
-            return None
-        vals[kind] = med * table[unit][0] + table[unit][1] if kind == "T" else med * table[unit]
-    try:  # (the air of --temperature-c/--pressure-pa: its gas constant and its ranges of T and p)
-        rho = Air.from_conditions(vals["T"], vals["p"]).rho
-    except ValueError as exc:
-        notes.append(f"they give {exc}" + skip)
-        return None
-    lo, hi = AIR_DENSITY_RANGE
-    if not lo <= rho <= hi:
-        notes.append(f"they would give an air density of {rho:.4g} kg/m^3 (T {vals['T']:.5g} K, p {vals['p']:.6g} Pa)"
-                     + skip)
-        return None
-    check = ("" if PLAUSIBLE_DENSITY[0] <= rho <= PLAUSIBLE_DENSITY[1] else
-             f"; outside the {PLAUSIBLE_DENSITY[0]:g}-{PLAUSIBLE_DENSITY[1]:g} kg/m^3 of air near the ground: check "
-             "that these columns are the air's temperature and static pressure")
-    notes.append(f"air density {rho:.4g} kg/m^3 from {found['T'][0]!r} and {found['p'][0]!r} (medians, T "
-                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / ({R_AIR:g} T)){check}")
-    return rho
 
 
 def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:
