@@ -831,7 +831,7 @@ def test_a_pushers_tunnel_run_without_a_static_point_is_refused_with_its_cause(t
         sanity_check(flipped, prop)
 
 
-def test_posterior_errors_of_prior_held_parameters_keep_the_population_spread(tmp_path, truth_params):
+def test_reported_errors_of_prior_held_parameters_keep_the_population_spread(tmp_path, truth_params):
     """A direction the data leave free keeps the prior's spread in the reported error, whatever
     the data's residual level (engine._shrinkage_meat: the population term carries it)."""
     from propmap.io.calibration import population

@@ -17,7 +17,7 @@ For every parameter it counts how often the reported 95% interval holds the draw
 intervals too narrow) and gives the median ratio of the interval's half-width to the data-only
 one.
 
-    .venv/bin/python tools/prior_coverage.py tunnel 0.003 24   # level, draws; about 4 min on 2 cores
+    .venv/bin/python tools/prior_coverage.py tunnel 0.003 24   # level, draws; about 10 s with the kernel cache warm
     .venv/bin/python tools/prior_coverage.py static 0.003 40
 
 Findings (2026-11-28): docs/identification.md, "Intervals under the prior".

@@ -121,8 +121,8 @@ def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
 def _pct(value, width: int = 0, digits: int = 3) -> str:
     """``value`` as a percentage, or n/a when there was no point to measure it (NaN); one past
     1000% to three figures (a map's 1-2 rpm rows, normalised by a static torque near 0, gave
-    6206691.925%21494689.740%: the columns ran together), and a space before a text wider
-    than ``width``."""
+    6206691.925%21494689.740%: the columns ran together), and a space before a text at least
+    as wide as ``width``."""
     if value is None or math.isnan(value):
         text = "n/a"
     else:

@@ -247,12 +247,12 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         # said "the data constrain mainly a combination" of pairs the data do not, a review);
         # the fit's own rows' singular values (the report's line says so)
         determined = ("poorly determined", "not determined")
-        own = tuple(w for w in idf.warnings if any(d in w for d in determined)
-                    and w.split(" ", 1)[0] not in extra["prior"]["names"])
-        pairs = tuple(w for w in idf.warnings if "strongly correlated" in w
-                      and not any(n in idf.poorly_determined for n in w.split(" are strongly", 1)[0].split(" and ")))
-        idf_warns = own + pairs + tuple(w for w in post.warnings if not any(d in w for d in determined)
-                                        and "strongly correlated" not in w) + (
+        own = tuple(t for t in idf.warnings if any(d in t for d in determined)
+                    and t.split(" ", 1)[0] not in extra["prior"]["names"])
+        pairs = tuple(t for t in idf.warnings if "strongly correlated" in t
+                      and not any(n in idf.poorly_determined for n in t.split(" are strongly", 1)[0].split(" and ")))
+        idf_warns = own + pairs + tuple(t for t in post.warnings if not any(d in t for d in determined)
+                                        and "strongly correlated" not in t) + (
             (f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
              "of its natural scale): the population prior weighs on them too (the data-only std errors in the report)",)
             if held else ())

@@ -5,7 +5,8 @@ It raises :class:`DataError` (a ValueError) with a one-line message naming the f
 and the column, and for a value out of range the valid range; no other exception escapes for
 any file content, and the file is not modified. The CSV rules (size, encoding, quoting,
 column names, number syntax) and the valid ranges of every column are in identify/csvfile.py,
-the thrust stands' exports in identify/stand.py.
+the thrust stands' exports in identify/stand.py, the air a file's columns give in
+identify/loads_air.py.
 """
 
 from __future__ import annotations
@@ -161,7 +162,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             notes.append(f"column {c!r} names {props[0]} on every row (the geometry is the one given to the fit)")
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
-    v, use = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
+    v, _ = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
     v, lines, texts = _skip_stopped(v, lines, texts, notes)
     if sampled:
         v, lines, texts, keys = _skip_dropouts(v, lines, texts, keys, cm, what, p, notes)

@@ -298,7 +298,8 @@ class FitResult:
                          "directions (effective number; the prior holds the others near the base set)")
         if sum(not np.isnan(v) for v in idf.std_error) > 1:
             free = [k for k in range(len(self.names)) if not np.isnan(idf.std_error[k])]  # (held at a bound: none)
-            lines.append("correlation: " + "; ".join(
+            said = " (data and prior together)" if data_only or dirs else ""
+            lines.append(f"correlation{said}: " + "; ".join(
                 f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
                 for a, i in enumerate(free) for j in free[a + 1:]))
         label = ("the free directions' Jacobian" if dirs else "scaled Jacobian (data and prior rows, as fitted)"

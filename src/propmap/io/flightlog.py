@@ -51,6 +51,8 @@ FORMATS = ("neurobem", "ulog")
 #: a sample may hold NaN there (motion capture losing the vehicle for 3 samples refused the log: a flight-log audit,
 #: 2026-11-27)
 UNUSED_COLUMNS = ("pos x", "pos y", "pos z", "vbat")
+
+
 @dataclass(frozen=True)
 class FlightLog:
     """One flight log in propmap's body frame (x forward, y left, z up), N samples.

@@ -71,14 +71,14 @@ ANGULAR_ACCELERATION_WINDOW = 0.05  # [s]
 ANGULAR_ACCELERATION_JUDGED = 1.0  # [rad/s^2]
 
 
-
 class FlightLogError(ValueError):
     """A flight log that cannot be read; the message names the file and the problem."""
 
 
 def check_log(log: FlightLog, name: str) -> None:
-    """Refuse or warn of what the module docstring names, in that order: the sample count, the
-    time, the values' ranges, the frames and units, then gaps and spikes (warned).
+    """Refuse or warn of what the module docstring names: the sample count, the time, the
+    values' ranges, the frames and units (attitude, gravity, rates, angular acceleration, then
+    the kinematics), then gaps and spikes (warned).
 
     Parameters
     ----------
@@ -93,7 +93,8 @@ def check_log(log: FlightLog, name: str) -> None:
         Fewer than MIN_SAMPLES samples, time not strictly increasing or sampled below
         MIN_RATE_HZ, a value not finite or beyond its limit (RATE_MAX, ACC_MAX, SPEED_MAX,
         OMEGA_MAX), a negative motor speed, or frames and units that the attitude, gravity,
-        kinematics and angular-acceleration checks refuse (one line naming the file and sample).
+        rates (deg/s, another frame), angular-acceleration and kinematics checks refuse (one
+        line naming the file and sample).
 
     Warns
     -----
