@@ -249,12 +249,14 @@ class FitResult:
         dirs = self.extra.get("directions")
         if dirs:
             lines.append(f"std err and interval: data and population prior together along the {dirs['count']} free "
-                         "directions (the prior's pull included) and the population's spread along the held ones (the "
+                         "directions (the prior's pull included, as an average over the catalogue's propellers) and "
+                         "the population's spread along the held ones (the "
                          "data determine the directions, not a parameter alone: their own figures are the "
                          "directions', below)")
         elif data_only:
             lines.append("std err and interval: data and population prior together (the prior's pull on the estimate "
-                         "included); 'data only': the data's alone")
+                         "included, as an average over the catalogue's propellers: one far from the base set is "
+                         "pulled more; compare --no-prior); 'data only': the data's alone")
         auto = self.extra.get("residual_autocorrelation")
         if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
             flight = self.extra.get("kind") == "flight"
