@@ -46,3 +46,20 @@ def test_per3_blocks_and_their_interpolation(shared_data):
     # APC's static prediction against UIUC's measured 0.107-0.118 (PROVENANCE of the shared data): well above
     ct, _ = t.apc_coefficients(blocks, np.array([4000.0, 6000.0]), np.zeros(2))
     assert np.all((ct > 0.13) & (ct < 0.15))
+
+
+def test_apc_predictions_against_uiuc_and_propmap_blind(shared_data):
+    """docs/validation.md, A vendor's prediction as a baseline: on the 54 catalogue APC
+    propellers with a file, APC's predictions over-predict UIUC's measured thrust (signed
+    medians +6.7% of static CT on the sweeps, +14.3% at rest) and propmap blind is closer on
+    the sweeps' thrust (medians, regression values of 2026-11-28: 8.8% against 7.0%)."""
+    from propmap.io.catalogue import catalogue
+
+    t = _tool()
+    names = sorted(n for n, e in catalogue().items() if t.per3_name(n) and e.static_files and e.sweep_files)
+    rows = [r for r in map(t.one, names) if r is not None]
+    assert len(rows) == 54
+    med = {k: np.median([r[part][k] for r in rows]) for part in ("sweeps",) for k in ("apc_ct", "propmap_ct")}
+    assert med["apc_ct"] == pytest.approx(0.088, abs=0.001) and med["propmap_ct"] == pytest.approx(0.070, abs=0.001)
+    assert np.median([r["sweeps"]["apc_bias_ct"] for r in rows]) == pytest.approx(0.067, abs=0.002)
+    assert np.median([r["static"]["apc_bias_ct"] for r in rows]) == pytest.approx(0.143, abs=0.002)

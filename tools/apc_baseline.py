@@ -89,7 +89,8 @@ def apc_coefficients(blocks: dict, rpm: np.ndarray, J: np.ndarray) -> tuple[np.n
 
 def one(name: str) -> dict | None:
     warnings.simplefilter("ignore")
-    sys.path.insert(0, str(Path(__file__).parent))
+    if str(Path(__file__).parent) not in sys.path:
+        sys.path.insert(0, str(Path(__file__).parent))
     from rpm_drift import static_lowest_case  # (tools/rpm_drift.py: the propeller as the protocols see it)
 
     import propmap as pm
