@@ -5,6 +5,7 @@ call of the sensitivity kernel (core/_sensitivity.py) at the converged roots.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 from dataclasses import fields
 from dataclasses import replace as dc_replace
@@ -13,6 +14,7 @@ import numpy as np
 
 from . import _physics as ph
 from . import _momentum as mo
+from ._parallel import PARALLEL_LOCK
 from .airfoil import RECORD_META, SectionParams
 from .polar import _model_constants
 from .flapping import COMPLIANCE
@@ -207,7 +209,9 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     inflow = mo.INFLOW_CODES[params.inflow]
     if inflow == mo.INFLOW_UNIFORM:
         run = _sensitivity.sensitivities_serial if serial else _sensitivity.sensitivities
-        run(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in, par, scp, hrho, raw)
+        with contextlib.nullcontext() if serial else PARALLEL_LOCK:  # (core/_parallel.py)
+            run(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in, par, scp, hrho,
+                raw)
     else:  # both solves' annuli together, the uniform one's mean inflow setting the gradients
         # (core/_linear_sensitivity.py) at the uniform solve's roots kept by the kernel (core/_kernel._solve_point),
         # shape (n, nr), NaN where that solve failed
@@ -216,9 +220,10 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
         half = np.ascontiguousarray(nd.azimuth[:, :nd.azimuth.shape[1] // 2])  # the uniform solve's half circle
         raw = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
         run = _linear_sensitivity.linear_sensitivities_serial if serial else _linear_sensitivity.linear_sensitivities
-        run(om, V, b, coll, roots, converged & converged_u,
-            (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]), float(propeller.radius)), nd.rows,
-            nd.azimuth, model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)
+        with contextlib.nullcontext() if serial else PARALLEL_LOCK:  # (core/_parallel.py)
+            run(om, V, b, coll, roots, converged & converged_u,
+                (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]), float(propeller.radius)), nd.rows,
+                nd.azimuth, model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)
     col = {w: DERIVATIVE_INPUTS.index(w) for w in inputs} | {w: n_in + k for k, w in enumerate(names)}
     if RHO in wrt:
         col[RHO] = n_in + len(names)

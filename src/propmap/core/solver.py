@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
+from ._parallel import PARALLEL_LOCK
 from . import _momentum as mo
 from ._interp import snap_incidence, snap_incidence_scalar
 from .air import SUPERSONIC_TIP
@@ -502,10 +503,14 @@ def rotor_loads(
     # than the work (and a single call need not load the thread pool at all). The kernel also
     # writes the working state, v_h, the descent ratio, the reverse-flow radius and the flags
     # (_flags.point_flags: no NumPy calls on one-point arrays here)
+    args = (om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
+            keep_radial, cls, out, rad, counts, flags)
     serial = n < PARALLEL_MIN_POINTS
-    batch = _kernel.solve_batch_serial if serial else _kernel.solve_batch
-    batch(om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
-          keep_radial, cls, out, rad, counts, flags)
+    if serial:
+        _kernel.solve_batch_serial(*args)
+    else:
+        with PARALLEL_LOCK:  # (numba's workqueue layer aborts on two threads' parallel regions: core/_parallel.py)
+            _kernel.solve_batch(*args)
     status = counts[0]
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
         i = int(np.argmax(status != 0))
