@@ -1,12 +1,19 @@
-"""Calls from several Python threads at once (core/_parallel.py): with numba's workqueue
-threading layer, which numba falls back to where neither OpenMP nor TBB is installed, two
-threads launching parallel regions at once aborted the process ("Concurrent access has been
-detected", exit by SIGABRT); every launch now holds one lock, whatever the layer."""
+"""Calls from several Python threads, and from forked processes (core/_parallel.py). With
+numba's workqueue threading layer, which numba falls back to where neither OpenMP nor TBB is
+installed, two threads launching parallel regions at once aborted the process ("Concurrent
+access has been detected", exit by SIGABRT); every launch now holds one lock, whatever the
+layer. With the OpenMP layer a child forked after its parent ran a parallel region was
+terminated by its own first one ("fork() called from a process already using GNU OpenMP"),
+and a multiprocessing pool with the fork start method waited on it forever; such a child now
+runs every batch serially."""
 
+import multiprocessing
 import os
 import subprocess
 import sys
 import textwrap
+
+import pytest
 
 SCRIPT = textwrap.dedent("""
     import concurrent.futures as cf
@@ -38,3 +45,32 @@ def test_threads_calling_the_parallel_kernels_at_once_with_the_workqueue_layer()
     assert run.returncode == 0, run.stderr[-2000:]
     layer, worst = run.stdout.split()
     assert layer == "workqueue" and float(worst) == 0.0  # the same loads and slopes as one thread's, to the bit
+
+
+FORK = textwrap.dedent("""
+    import multiprocessing as mp
+    import numpy as np
+    import propmap as pm
+
+    prop = pm.load_propeller("apce_8x6")
+    p = pm.generic_params()
+    om = np.linspace(300.0, 1200.0, 64)
+    V, b = np.full(64, 5.0), np.full(64, 0.7)
+    ref = pm.rotor_loads(prop, p, om, V, b, derivatives=("omega",))  # (the parent's parallel regions)
+
+    def call(k):
+        r = pm.rotor_loads(prop, p, om, V, b, derivatives=("omega",))
+        return max(float(np.max(np.abs(r.thrust - ref.thrust))),
+                   float(np.max(np.abs(r.derivative("thrust", "omega") - ref.derivative("thrust", "omega")))))
+
+    if __name__ == "__main__":
+        with mp.get_context("fork").Pool(2) as pool:
+            print(max(pool.map(call, range(4))))
+""")
+
+
+@pytest.mark.skipif("fork" not in multiprocessing.get_all_start_methods(), reason="no fork start method here")
+def test_a_fork_pool_after_the_parent_ran_the_parallel_kernel():
+    run = subprocess.run([sys.executable, "-c", FORK], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0 and "Terminating" not in run.stderr, run.stderr[-2000:]
+    assert float(run.stdout) == 0.0  # the serial kernels' loads and slopes, the parallel ones' to the bit

@@ -14,7 +14,7 @@ import numpy as np
 
 from . import _physics as ph
 from . import _momentum as mo
-from ._parallel import PARALLEL_LOCK
+from ._parallel import parallel_region
 from .airfoil import RECORD_META, SectionParams
 from .polar import _model_constants
 from .flapping import COMPLIANCE
@@ -209,7 +209,7 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
     inflow = mo.INFLOW_CODES[params.inflow]
     if inflow == mo.INFLOW_UNIFORM:
         run = _sensitivity.sensitivities_serial if serial else _sensitivity.sensitivities
-        with contextlib.nullcontext() if serial else PARALLEL_LOCK:  # (core/_parallel.py)
+        with contextlib.nullcontext() if serial else parallel_region():  # (core/_parallel.py)
             run(om, V, b, coll, roots, converged, nd.rows, nd.azimuth, model, pk, cam, empirical, n_in, par, scp, hrho,
                 raw)
     else:  # both solves' annuli together, the uniform one's mean inflow setting the gradients
@@ -220,7 +220,7 @@ def _jacobian(wrt, om, V, b, coll, roots, converged, nd, model, pk, cam, empiric
         half = np.ascontiguousarray(nd.azimuth[:, :nd.azimuth.shape[1] // 2])  # the uniform solve's half circle
         raw = np.empty((_linear_sensitivity.N_ROWS,) + raw.shape[1:])
         run = _linear_sensitivity.linear_sensitivities_serial if serial else _linear_sensitivity.linear_sensitivities
-        with contextlib.nullcontext() if serial else PARALLEL_LOCK:  # (core/_parallel.py)
+        with contextlib.nullcontext() if serial else parallel_region():  # (core/_parallel.py)
             run(om, V, b, coll, roots, converged & converged_u,
                 (uniform_roots, half, np.ascontiguousarray(half[:, [0, -1]]), float(propeller.radius)), nd.rows,
                 nd.azimuth, model, pk, cam, inflow, empirical, n_in, par, (scp, hrho), raw)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
-from ._parallel import PARALLEL_LOCK
+from ._parallel import parallel_region, serial_only
 from . import _momentum as mo
 from ._interp import snap_incidence, snap_incidence_scalar
 from .air import SUPERSONIC_TIP
@@ -505,11 +505,11 @@ def rotor_loads(
     # (_flags.point_flags: no NumPy calls on one-point arrays here)
     args = (om1, Vs, Vc, c1, nd.rows, nd.azimuth, model, pk, cam, inflow, empirical, params.swirl, propeller.radius,
             keep_radial, cls, out, rad, counts, flags)
-    serial = n < PARALLEL_MIN_POINTS
+    serial = n < PARALLEL_MIN_POINTS or serial_only()  # (a child forked after a parallel region: core/_parallel.py)
     if serial:
         _kernel.solve_batch_serial(*args)
     else:
-        with PARALLEL_LOCK:  # (numba's workqueue layer aborts on two threads' parallel regions: core/_parallel.py)
+        with parallel_region():  # (numba's workqueue layer aborts on two threads' parallel regions: core/_parallel.py)
             _kernel.solve_batch(*args)
     status = counts[0]
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
