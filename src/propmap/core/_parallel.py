@@ -54,4 +54,5 @@ def _after_fork_in_child() -> None:
     _STATE["forked_after_launch"] = _STATE["launched"]
 
 
-os.register_at_fork(after_in_child=_after_fork_in_child)
+if hasattr(os, "register_at_fork"):  # (POSIX; Windows has no fork)
+    os.register_at_fork(after_in_child=_after_fork_in_child)
