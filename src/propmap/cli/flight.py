@@ -65,6 +65,13 @@ NEUROBEM_REFERENCE = ("log's own: the prediction in the log's columns, NeuroBEM'
                       "Model\", Robotics: Science and Systems 2021)")
 
 
+def _reference_rows(refs: dict, mass: float, own: str) -> list:
+    """Table rows of the logs' own prediction (identify.flight.reference_errors' dict), labelled
+    ``own`` as logged and at the vehicle's ``mass`` [kg]."""
+    labels = {"reference": f"{own} (NeuroBEM BEM+NN)", "reference_at_vehicle_mass": f"{own}, at {mass:g} kg"}
+    return [(labels[k], e) for k, e in refs.items()]
+
+
 def _reference_mass_note(masses, mass: float) -> str:
     """The line under a table with a "log's own, at <mass> kg" row: why that row is there."""
     made = " and ".join(f"{m:.4g}" for m in sorted(masses))
@@ -272,7 +279,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
 
     from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
                                    fitted_body_drag, fitted_vehicle, flight_errors, hover_torque_check,
-                                   predict_flight, reference_at_vehicle_mass, speed_band_errors)
+                                   predict_flight, reference_errors, speed_band_errors)
     from ..identify.result import jackknife_report
     from ..io.params_file import BodyTable
 
@@ -346,14 +353,10 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         for k, bl in baselines.items():
             e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
             rows.append((f"{label}: {bl['label']}", e[k]))
-        if sub.reference_force is not None:
-            e["reference"] = flight_errors(sub.reference_force, sub, sub.reference_moment)
-            rows.append((f"{label}: log's own (NeuroBEM BEM+NN)", e["reference"]))
-            scaled = reference_at_vehicle_mass(sub, veh.mass)
-            if scaled is not None:
-                e["reference_at_vehicle_mass"] = flight_errors(scaled[0], sub, sub.reference_moment)
-                rows.append((f"{label}: log's own, at {veh.mass:g} kg", e["reference_at_vehicle_mass"]))
-                reference_masses.update(scaled[1])
+        refs, masses = reference_errors(sub, veh.mass)
+        e.update(refs)
+        rows.extend((f"{label}: {name}", errs) for name, errs in _reference_rows(refs, veh.mass, "log's own"))
+        reference_masses.update(masses)
         e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
         store[key] = e
 
@@ -509,7 +512,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     the rotors' thrust of 48 x 16; docs/flight.md).
     """
     from ..io.atomic import atomic_write
-    from ..identify.flight import flight_errors, reference_at_vehicle_mass
+    from ..identify.flight import flight_errors, reference_errors
 
     if str(out) == "-":
         raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
@@ -561,15 +564,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     with atomic_write(out, "w", newline="") as fh:
         _write_columns(fh, cols)
     err = flight_errors(w.force, samples, w.moment)
-    rows = [(f"propmap ({label})", err)]
-    scaled = None
-    if samples.reference_force is not None:
-        rows.append(("log's own prediction (NeuroBEM BEM+NN)",
-                     flight_errors(samples.reference_force, samples, samples.reference_moment)))
-        scaled = reference_at_vehicle_mass(samples, veh.mass)
-        if scaled is not None:
-            rows.append((f"log's own prediction, at {veh.mass:g} kg",
-                         flight_errors(scaled[0], samples, samples.reference_moment)))
+    refs, masses = reference_errors(samples, veh.mass)
+    rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
     if as_json:
         import json
 
@@ -582,8 +578,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         click.echo(_table(rows))
         if samples.reference_force is not None:
             click.echo(NEUROBEM_REFERENCE)
-        if scaled is not None:
-            click.echo(_reference_mass_note(set(scaled[1]), veh.mass))
+        if masses:
+            click.echo(_reference_mass_note(set(masses), veh.mass))
         if "M_zero" in err:
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
     click.echo(f"wrote {out}", err=True)

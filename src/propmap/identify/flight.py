@@ -46,13 +46,13 @@ from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
-                            reference_at_vehicle_mass, speed_band_errors)
+                            reference_at_vehicle_mass, reference_errors, speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names
 from .result import FitResult, jackknife_std_error, lag1_autocorrelation
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
            "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
-           "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass",
+           "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass", "reference_errors",
            "cross_validate_flight", "hover_torque_check",
            "FLIGHT_FIT", "FLIGHT_DISCRETIZATION", "SPEED_BANDS", "AIRFRAME_NAMES", "BASELINES"]
 
@@ -437,11 +437,7 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
                "x": {n: float(v) for n, v in zip(res.names, res.x)}, "at_bound": list(res.at_bound)}
         for key, bl in fit_baselines(train, vehicle).items():
             row[key] = flight_errors(baseline_force(bl, test, vehicle), test)
-        if test.reference_force is not None:
-            row["reference"] = flight_errors(test.reference_force, test, test.reference_moment)
-            scaled = reference_at_vehicle_mass(test, vehicle.mass)
-            if scaled is not None:
-                row["reference_at_vehicle_mass"] = flight_errors(scaled[0], test, test.reference_moment)
+        row.update(reference_errors(test, vehicle.mass)[0])
         folds.append(row)
         if progress:
             progress(row)

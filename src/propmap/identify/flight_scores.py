@@ -17,7 +17,7 @@ if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
     from .flight_samples import FlightSamples
 
 __all__ = ["flight_errors", "fit_baselines", "baseline_force", "speed_band_errors", "reference_at_vehicle_mass",
-           "SPEED_BANDS", "BASELINES"]
+           "reference_errors", "SPEED_BANDS", "BASELINES"]
 
 #: speed bands of the report [m/s]
 SPEED_BANDS = ((0.0, 3.0), (3.0, 6.0), (6.0, 9.0), (9.0, math.inf))
@@ -86,6 +86,33 @@ def reference_at_vehicle_mass(samples: FlightSamples, mass: float):
         return None
     used = tuple(sorted({float(f"{m:.4g}") for m in m_ref}))  # (to the digits said: 0.752 from every segment)
     return samples.reference_force * (mass / m_ref)[:, None], used
+
+
+def reference_errors(samples: FlightSamples, mass: float) -> tuple[dict, tuple]:
+    """The logs' own prediction scored as :func:`flight_errors` scores a model: as logged
+    ("reference") and, where it was made for another mass, at the vehicle's
+    ("reference_at_vehicle_mass", :func:`reference_at_vehicle_mass`).
+
+    Parameters
+    ----------
+    samples : FlightSamples
+    mass : float
+        The vehicle's mass [kg].
+
+    Returns
+    -------
+    (dict, tuple of float)
+        key -> :func:`flight_errors`' dict ({} where the samples have no prediction), and the
+        masses [kg] the predictions were made for where one is scaled (else ()).
+    """
+    if samples.reference_force is None:
+        return {}, ()
+    out = {"reference": flight_errors(samples.reference_force, samples, samples.reference_moment)}
+    scaled = reference_at_vehicle_mass(samples, mass)
+    if scaled is None:
+        return out, ()
+    out["reference_at_vehicle_mass"] = flight_errors(scaled[0], samples, samples.reference_moment)
+    return out, scaled[1]
 
 
 def _hub_velocities(samples: FlightSamples, arms: np.ndarray) -> np.ndarray:
