@@ -261,7 +261,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         h = om[:, :, None] * h_spin[None, :, :]  # (N, n_rot, 3)
         rotor_moment -= cross3(w[:, None, :], h)
         if acc is not None:
-            rotor_moment -= np.broadcast_to(acc, (N, n_rot))[:, :, None] * h_spin[None, :, :]
+            rotor_moment -= acc[:, :, None] * h_spin[None, :, :]  # (acc (1 or N, n_rot): broadcast)
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
     wash = None
