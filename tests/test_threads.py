@@ -5,7 +5,8 @@ access has been detected", exit by SIGABRT); every launch now holds one lock, wh
 layer. With the OpenMP layer a child forked after its parent ran a parallel region was
 terminated by its own first one ("fork() called from a process already using GNU OpenMP"),
 and a multiprocessing pool with the fork start method waited on it forever; such a child now
-runs every batch serially."""
+runs every batch serially (the serial kernels' loads within an ulp or two of the parallel ones': to the
+bit on an AVX-512 CPU, not on an AVX2 one)."""
 
 import multiprocessing
 import os
@@ -58,10 +59,12 @@ FORK = textwrap.dedent("""
     V, b = np.full(64, 5.0), np.full(64, 0.7)
     ref = pm.rotor_loads(prop, p, om, V, b, derivatives=("omega",))  # (the parent's parallel regions)
 
-    def call(k):
+    def call(k):  # the largest difference from the parent's, in units of each quantity's largest magnitude
         r = pm.rotor_loads(prop, p, om, V, b, derivatives=("omega",))
-        return max(float(np.max(np.abs(r.thrust - ref.thrust))),
-                   float(np.max(np.abs(r.derivative("thrust", "omega") - ref.derivative("thrust", "omega")))))
+        return max(max(float(np.max(np.abs(getattr(r, q) - getattr(ref, q))) / np.max(np.abs(getattr(ref, q)))),
+                       float(np.max(np.abs(r.derivative(q, "omega") - ref.derivative(q, "omega")))
+                             / np.max(np.abs(ref.derivative(q, "omega")))))
+                   for q in ("thrust", "drag", "torque"))
 
     if __name__ == "__main__":
         with mp.get_context("fork").Pool(2) as pool:
@@ -73,4 +76,7 @@ FORK = textwrap.dedent("""
 def test_a_fork_pool_after_the_parent_ran_the_parallel_kernel():
     run = subprocess.run([sys.executable, "-c", FORK], capture_output=True, text=True, timeout=120)
     assert run.returncode == 0 and "Terminating" not in run.stderr, run.stderr[-2000:]
-    assert float(run.stdout) == 0.0  # the serial kernels' loads and slopes, the parallel ones' to the bit
+    # the serial kernels' loads and slopes, the parallel ones' to the last bits: to the bit on an AVX-512 CPU,
+    # 1 ulp apart on an AVX2 one (2026-11-28: thrust 1.8e-15 N of 10.3 N at 9 of 64 points; the two kernels'
+    # loops are vectorised differently), a hung or terminated worker failing above
+    assert float(run.stdout) <= 1e-14
