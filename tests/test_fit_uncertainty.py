@@ -375,7 +375,7 @@ def test_under_the_prior_a_pair_is_strongly_correlated_by_the_data_alone():
     names = ("cl_alpha", "cd_min", "cd2")
     opts = FitOptions(names=names)
     _, _, chol, pop = _prior_stats(names, base, opts)
-    said = {}
+    said, kinds = {}, {}
     for apart, cd_min, noise in ((0.1, 0.02, 1e-5), (0.1, 0.002, 1e-5), (1e-3, 0.02, 1e-3)):  # 0.002: a bound
         rng = np.random.default_rng(5)
         N = 30
@@ -389,9 +389,38 @@ def test_under_the_prior_a_pair_is_strongly_correlated_by_the_data_alone():
         best = optimize.OptimizeResult(x=x, fun=make(opts)(x), jac=jac, status=1, success=True, message="by hand")
         res = _finish(names, base, opts, best, [], 1, 0.0, [], N, base.air, {"prior": dict(info)})
         said[apart, cd_min] = res.identifiability.warnings
+        kinds[apart, cd_min] = res.identifiability.warning_kinds
+        assert len(kinds[apart, cd_min]) == len(said[apart, cd_min])  # (one kind per warning, in order)
     pair = "cd_min and cd2 are strongly correlated (-1.00): the data constrain mainly a combination of them"
     assert [w for w in said[0.1, 0.02] if "strongly" in w] == [pair]
+    assert ("correlated", ("cd_min", "cd2")) in kinds[0.1, 0.02]
+    assert ("prior_holds", ("cd_min", "cd2")) in kinds[1e-3, 0.02]
+    assert not [k for k in kinds[0.1, 0.002] + kinds[1e-3, 0.02] if k[0] == "correlated"]
     assert not [w for w in said[0.1, 0.002] if "strongly" in w]  # held at its bound: no pair
     # nearly collinear: each poorly determined by the data alone, said as such, and not as a pair
     assert not [w for w in said[1e-3, 0.02] if "strongly" in w]
     assert any("the data alone determine" in w and "cd_min, cd2" in w for w in said[1e-3, 0.02])
+
+
+def test_each_identifiability_warning_carries_its_kind_and_parameters():
+    """Identifiability.warning_kinds: one (kind, parameters) per warning, in order, so that
+    callers (the prior's filter in engine._finish) choose warnings without parsing their text:
+    a parameter no residual depends on, one the data barely move, a collinear pair."""
+    from propmap.identify.result import _identifiability
+
+    rng = np.random.default_rng(2)
+    N = 40
+    a, b = rng.standard_normal(N), rng.standard_normal(N)
+    J = np.column_stack([a, b, b + 1e-3 * rng.standard_normal(N), 1e-5 * rng.standard_normal(N), np.zeros(N)])
+    names = ("cl_alpha", "cd_min", "cd2", "alpha_L0", "re_exp")
+    idf = _identifiability(names, np.array([5.5, 0.02, 0.05, -0.08, -0.5]), J, 1e-3 * rng.standard_normal(N))
+    assert len(idf.warning_kinds) == len(idf.warnings)
+    kinds = dict(zip(idf.warning_kinds, idf.warnings))
+    assert "re_exp is not determined" in kinds["not_determined", ("re_exp",)]
+    assert "alpha_L0 is poorly determined" in kinds["poorly_determined", ("alpha_L0",)]
+    assert "cd_min and cd2 are strongly correlated (-1.00)" in kinds["correlated", ("cd_min", "cd2")]
+    assert not [k for k in idf.warning_kinds if "cl_alpha" in k[1]]
+    held = _identifiability(names, np.array([5.5, 0.02, 0.05, -0.08, -0.5]), J, 1e-3 * rng.standard_normal(N),
+                            held=("cd2",))  # (cd2 at a bound: the pair goes, the kinds stay aligned)
+    assert len(held.warning_kinds) == len(held.warnings)
+    assert not [k for k in held.warning_kinds if k[0] == "correlated"]

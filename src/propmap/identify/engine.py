@@ -246,17 +246,19 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
         # alone among the parameters they determine: the estimate's, with the prior's pull,
         # said "the data constrain mainly a combination" of pairs the data do not, a review);
         # the fit's own rows' singular values (the report's line says so)
-        determined = ("poorly determined", "not determined")
-        own = tuple(t for t in idf.warnings if any(d in t for d in determined)
-                    and t.split(" ", 1)[0] not in extra["prior"]["names"])
-        pairs = tuple(t for t in idf.warnings if "strongly correlated" in t
-                      and not any(n in idf.poorly_determined for n in t.split(" are strongly", 1)[0].split(" and ")))
-        idf_warns = own + pairs + tuple(t for t in post.warnings if not any(d in t for d in determined)
-                                        and "strongly correlated" not in t) + (
-            (f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
-             "of its natural scale): the population prior weighs on them too (the data-only std errors in the report)",)
-            if held else ())
-        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=idf_warns, std_error_data=idf.std_error,
+        determined = ("poorly_determined", "not_determined")
+        own = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
+               if kind[0] in determined and kind[1][0] not in extra["prior"]["names"]]
+        pairs = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
+                 if kind[0] == "correlated" and not any(n in idf.poorly_determined for n in kind[1])]
+        rest = [(w, kind) for w, kind in zip(post.warnings, post.warning_kinds)
+                if kind[0] not in determined and kind[0] != "correlated"]
+        said = own + pairs + rest + (
+            [(f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
+              "of its natural scale): the population prior weighs on them too (the data-only std errors in the "
+              "report)", ("prior_holds", tuple(held)))] if held else [])
+        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=tuple(w for w, _ in said),
+                      warning_kinds=tuple(kind for _, kind in said), std_error_data=idf.std_error,
                       effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
     idf = _cut_at_bounds(idf, lb, ub)
     warns = list(warns)
@@ -482,7 +484,8 @@ def _directions_report(result: FitResult, options: FitOptions) -> FitResult:
                   for n, sd in zip(dnames, own.std_error) if n in weak)
     ci = np.column_stack([result.x - t * std, result.x + t * std])
     idf = _cut_at_bounds(Identifiability(result.names, std, ci, corr, own.singular_values, (), warns,
-                                         std_error_data=None, effective_parameters=eff),
+                                         std_error_data=None, effective_parameters=eff,
+                                         warning_kinds=tuple(("weak_direction", (n,)) for n in weak)),
                          *_bounds(result.names, options))
     extra = dict(result.extra)
     deg = np.array([math.degrees(1.0) if _is_angle(n) else 1.0 for n in result.names])  # (as FitResult "fitted")

@@ -91,6 +91,12 @@ class Identifiability:
     ci95_cut : ndarray of bool, shape (p, 2), or None
         Where an interval's end is a parameter's bound, not the linearised end (a fit's
         report marks it ``*``).
+    warning_kinds : tuple of (str, tuple of str)
+        What each of ``warnings`` is about, in the same order: its kind and the parameters (or
+        directions) it names. Kinds: ``"exact"`` (a residual of 0), ``"not_determined"``,
+        ``"poorly_determined"``, ``"correlated"`` (a pair), ``"singular"`` (the Jacobian),
+        ``"prior_holds"`` (parameters the prior weighs on), ``"weak_direction"`` (a fit along
+        directions). Empty where the warnings were given without it.
     """
 
     names: tuple[str, ...]
@@ -103,6 +109,7 @@ class Identifiability:
     std_error_data: np.ndarray | None = None
     effective_parameters: float | None = None
     ci95_cut: np.ndarray | None = None
+    warning_kinds: tuple[tuple[str, tuple[str, ...]], ...] = ()
 
     def to_dict(self) -> dict:
         """JSON-ready form (a non-finite std error is null), keyed and in units as the fit
@@ -371,7 +378,8 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         std[keep] = sub.std_error
         ci[keep] = sub.ci95
         corr[np.ix_(keep, keep)] = sub.correlation
-        return Identifiability(names, std, ci, corr, sub.singular_values, sub.poorly_determined, sub.warnings)
+        return Identifiability(names, std, ci, corr, sub.singular_values, sub.poorly_determined, sub.warnings,
+                               warning_kinds=sub.warning_kinds)
     N, p = jac.shape
     dof = max((N if dof_rows is None else dof_rows) - p, 1)
     s2 = float(residuals @ residuals) / dof
@@ -408,32 +416,35 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     corr[:, free] = 0.0
     np.fill_diagonal(corr, 1.0)
     sv = sig  # (of J diag(max(|x|, 0.1)), above)
-    poor, warns = [], []
+    poor, notes = [], []  # notes: (kind, parameters, text), Identifiability.warning_kinds
     if s2 == 0.0 and meat is None:
-        warns.append("the fit reproduces the data exactly (residual 0: noise-free data?): the std errors and "
-                     "intervals are 0 and say nothing of how well the data determine the parameters; the "
-                     "correlations below do")
+        notes.append(("exact", (), "the fit reproduces the data exactly (residual 0: noise-free data?): the std "
+                      "errors and intervals are 0 and say nothing of how well the data determine the parameters; "
+                      "the correlations below do"))
     for k, n in enumerate(names):
         if not np.isfinite(std[k]):
             poor.append(n)
-            warns.append(f"{n} is not determined by the data: its std error is not finite (no residual "
-                         "changes with it at the optimum)")
+            notes.append(("not_determined", (n,), f"{n} is not determined by the data: its std error is not "
+                          "finite (no residual changes with it at the optimum)"))
             continue
         rel = std[k] / max(abs(x[k]), _scale_of(n), 1e-12)
         if rel > POOR_REL_STD:
             poor.append(n)
             shown = f"{math.degrees(std[k]):.3g} deg" if _is_angle(n) else f"{std[k]:.3g}"
             share = f"{100 * rel:.0f}% of" if rel < 10 else f"{rel:.3g} times"
-            warns.append(f"{n} is poorly determined: std error {shown} is {share} its "
-                         f"{'estimate' if abs(x[k]) >= _scale_of(n) else 'natural scale'}")
+            notes.append(("poorly_determined", (n,), f"{n} is poorly determined: std error {shown} is {share} its "
+                          f"{'estimate' if abs(x[k]) >= _scale_of(n) else 'natural scale'}"))
     for i in range(p):
         for j in range(i + 1, p):
             if abs(corr[i, j]) > 0.95:
-                warns.append(f"{names[i]} and {names[j]} are strongly correlated ({corr[i, j]:+.2f}): "
-                             "the data constrain mainly a combination of them")
+                notes.append(("correlated", (names[i], names[j]),
+                              f"{names[i]} and {names[j]} are strongly correlated ({corr[i, j]:+.2f}): "
+                              "the data constrain mainly a combination of them"))
     if sv.size and sv[-1] < 1e-6 * sv[0]:
-        warns.append("the Jacobian is nearly singular: some direction in parameter space is not identifiable")
-    return Identifiability(tuple(names), std, ci, corr, sv, tuple(poor), tuple(warns))
+        notes.append(("singular", (), "the Jacobian is nearly singular: some direction in parameter space is not "
+                      "identifiable"))
+    return Identifiability(tuple(names), std, ci, corr, sv, tuple(poor), tuple(t for _, _, t in notes),
+                           warning_kinds=tuple((k, s) for k, s, _ in notes))
 
 
 def _effective_parameters(jac_data, jac_all) -> float:
