@@ -68,6 +68,17 @@ def test_the_one_point_path_is_taken_and_the_odd_inputs_go_the_array_way(monkeyp
             pm.rotor_wrench(prop, params, bad, [0.0, 0.0, 1.0], 800.0)
     with pytest.raises(ValueError, match="omega must be a number"):
         pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 10**400)
+    # a speed past the model's 500 m/s names velocity, this function's argument, on both paths (it said
+    # "airspeed must be finite and in [0, 500] m/s", rotor_loads' argument: a physics audit, 2026-11-28)
+    for velocity, derivatives in (([600.0, 0.0, 0.0], ()), ([[300.0, 0.0, 0.0], [0.0, 450.0, 300.0]], ()),
+                                  ([600.0, 0.0, 0.0], True)):
+        with pytest.raises(ValueError, match=r"^velocity: the rotor's airspeed \|velocity\| must be at most 500 "
+                                             r"m/s \(the model's range\); got (600|540.833) m/s$"):
+            pm.rotor_wrench(prop, params, velocity, [0.0, 0.0, 1.0], 800.0, derivatives=derivatives)
+    # a None among the rates is no number (it read "got nan": the array's None cast to NaN)
+    for omega in (None, [800.0, None], np.array([800.0, None])):
+        with pytest.raises(ValueError, match="omega must be a number or an array of numbers, got .*None"):
+            pm.rotor_loads(prop, params, omega, 2.0, 1.0)
     with pytest.raises(ValueError, match="axis must be non-zero"):  # before the spin, as the array path
         pm.rotor_wrench(prop, params, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0], 800.0, spin="left")
     with pytest.raises(ValueError, match="derivatives must be True, False or a sequence of names"):

@@ -170,6 +170,8 @@ def _as_array(name: str, value) -> np.ndarray:
     refuse_masked(name, value)
     if a.dtype.kind == "O":
         try:
+            if any(v is None for v in a.reshape(-1)):  # (float(None) fails, but an array's None casts to NaN)
+                raise TypeError
             a = a.astype(float)
         except (TypeError, ValueError, OverflowError):
             raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None

@@ -18,7 +18,7 @@ from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
 from .geometry import Propeller, has_bool, refuse_masked
-from .solver import DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
+from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
 
@@ -181,6 +181,7 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
         if one is not None:
             return one
     V, z, speed, beta = disk_frame(velocity, axis)
+    _check_speed(speed)
     s = _spin_sign(spin)
     try:
         omega_shape = np.shape(omega)
@@ -223,6 +224,16 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     return RotorWrench(force=force, torque=torque, loads=loads, jacobian=jac)
 
 
+def _check_speed(speed) -> None:
+    """Refuse a rotor speed |velocity| beyond rotor_loads' airspeed range, naming ``velocity``
+    (rotor_loads' own message names its ``airspeed``, an argument this function does not have:
+    a physics audit, 2026-11-28)."""
+    if np.any(np.asarray(speed) > AIRSPEED_MAX):
+        worst = float(np.max(speed))
+        raise ValueError(f"velocity: the rotor's airspeed |velocity| must be at most {AIRSPEED_MAX:g} m/s (the "
+                         f"model's range); got {worst:.6g} m/s")
+
+
 def _plain_number(c) -> bool:
     """A real number NumPy reads as one (not a bool, not an integer beyond int64)."""
     return (isinstance(c, (int, float, np.floating, np.integer)) and not isinstance(c, (bool, np.bool_))
@@ -260,6 +271,7 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
         zv = tuple(c / zmax for c in zv)
     s = float(_spin_sign(spin))
     zx, zy, zz, speed, axial, beta = point_frame(*Vv, *zv)
+    _check_speed(speed)
     loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure)
     F_M = point_vectors(*Vv, zx, zy, zz, speed, axial, float(loads.thrust), float(loads.drag), float(loads.torque),
