@@ -130,9 +130,10 @@ def test_export_sim_bad_input_exits_2(capsys, tmp_path, monkeypatch, argv, match
 
 
 def _vehicle_toml(path, n_rotors: int, prop: str = "apce_8x6") -> str:
-    """A flat multirotor with an inertia, n rotors on a 0.2 m circle, alternating spins."""
-    rotors = "".join(f"\n[[rotors]]\nposition = [{0.2 * math.cos(2 * math.pi * k / n_rotors):.6f}, "
-                     f"{0.2 * math.sin(2 * math.pi * k / n_rotors):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
+    """A flat multirotor with an inertia, n rotors on a 0.25 m circle (on a 0.2 m one a hexacopter's 8 in
+    disks reached 3 mm into each other), alternating spins."""
+    rotors = "".join(f"\n[[rotors]]\nposition = [{0.25 * math.cos(2 * math.pi * k / n_rotors):.6f}, "
+                     f"{0.25 * math.sin(2 * math.pi * k / n_rotors):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
                      f"spin = \"{'ccw' if k % 2 == 0 else 'cw'}\"\npropeller = \"{prop}\"\n" for k in range(n_rotors))
     path.write_text(f"mass = {0.25 * n_rotors}\ninertia = [0.01, 0.01, 0.02]\n{rotors}")
     return str(path)

@@ -676,6 +676,14 @@ def test_an_unwritable_numba_cache_dir_falls_back_too(tmp_path):
      r"largest principal moment is 3.31e\+06 times the mass .* is the mass in kg and the inertia in kg m\^2\?"),
     (("position = [-0.078, -0.100, -0.027]", "position = [0.078, -0.100, -0.027]"),
      r"rotors 1 and 2 have the same position \[0.078, -0.1, -0.027\] m"),
+    # disks closer than the sum of their radii: in one plane a strike, apart along the axis a coaxial pair that the
+    # model solved as isolated rotors without a word (a vehicle-designer audit, 2026-11-28)
+    (("position = [-0.078, -0.100, -0.027]", "position = [0.030, -0.100, -0.027]"),
+     r"the disks of rotors 1 and 2 \(0.048 m apart across the axis, 0 m along it\) overlap in one plane, .*blades "
+     r"would strike: is a diameter or a position in another unit\?"),
+    (("position = [-0.078, -0.100, -0.027]", "position = [0.078, -0.100, 0.030]"),
+     r"rotors 1 and 2 \(0 m apart across the axis, 0.057 m along it\) overlap seen along the axis \(a coaxial .*"
+     r"each rotor is solved as if alone .* induced power 26-41% above"),
 ])
 def test_a_vehicle_layout_in_other_units_is_warned_about(tmp_path, change, match):
     """Arms in mm, an inertia in g cm^2 and two rotors at one place were read without a word and
@@ -693,6 +701,18 @@ def test_a_vehicle_layout_in_other_units_is_warned_about(tmp_path, change, match
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         pm.read_vehicle(examples / "neurobem_quadrotor.toml")
+        pm.read_vehicle("quadrotor")
+
+
+def test_a_coaxial_pair_with_the_interference_model_is_said_to_be_outside_its_accuracy(tmp_path):
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    for f in examples.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    text = (examples / "neurobem_quadrotor.toml").read_text()
+    text = text.replace("position = [-0.078, -0.100, -0.027]", "position = [0.078, -0.100, 0.030]", 1)
+    (tmp_path / "v.toml").write_text(text.replace("mass = 0.772", "mass = 0.772\nrotor_interference = 1.0", 1))
+    with pytest.warns(UserWarning, match=r"rotor_interference models such pairs outside its accuracy"):
+        assert pm.read_vehicle(tmp_path / "v.toml").rotor_interference == 1.0
 
 
 def test_a_c_headers_sidecar_says_its_interpolation_table_type_and_prefix(tmp_path, capsys):

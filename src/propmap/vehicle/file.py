@@ -388,7 +388,7 @@ def read_vehicle(path) -> Vehicle:
         raise VehicleFileError(f"{name}: every rotor's axis points down (z < 0): each rotor's thrust acts along its "
                                "axis in the body frame x forward, y left, z up, so this vehicle cannot lift itself; a "
                                "z-down frame's (FRD, PX4's) axis [0, 0, -1] is [0, 0, 1] here")
-    _warn_implausible(name, rotors, mass, inertia, cg)
+    _warn_implausible(name, rotors, mass, inertia, cg, kappa)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
 
@@ -402,9 +402,10 @@ ARM_RADII_MAX = 20.0
 INERTIA_ARM_RANGE = (1e-3, 10.0)
 
 
-def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
-    """Warn about a layout in other units than the file's (ARM_RADII_MAX, INERTIA_ARM_RANGE) and
-    rotors at one position: read as given, they make every moment wrong without an error."""
+def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference: float = 0.0) -> None:
+    """Warn about a layout in other units than the file's (ARM_RADII_MAX, INERTIA_ARM_RANGE),
+    rotors at one position, and rotors whose disks overlap (_warn_overlap): read as given, they make
+    every moment, or the hover's power, wrong without an error."""
     import warnings
 
     arms = [float(np.linalg.norm(r.position - cg)) for r in rotors]
@@ -422,6 +423,7 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
                 warnings.warn(f"{name}: rotors {k + 1} and {j + 1} have the same position "
                               f"{rotors[k].position.tolist()} m (a coaxial pair lies apart along its axis)",
                               UserWarning, stacklevel=3)
+    _warn_overlap(name, rotors, interference)
     axes = np.array([r.axis for r in rotors])
     parallel = bool(np.all(axes @ axes[0] > math.cos(math.radians(10.0))))
     if len(rotors) >= 4 and parallel and len({r.spin for r in rotors}) == 1:  # (a multirotor all one way: an audit;
@@ -437,6 +439,42 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg) -> None:
             warnings.warn(f"{name}: the inertia's largest principal moment is {ratio:.3g} times the mass times the "
                           f"largest arm squared ({mass:g} kg x ({reach:.4g} m)^2), where a multirotor's is "
                           "0.2-0.6: is the mass in kg and the inertia in kg m^2?", UserWarning, stacklevel=3)
+
+
+def _warn_overlap(name: str, rotors, interference: float) -> None:
+    """Warn once about the pairs of rotors whose disks overlap seen along the first one's axis
+    (hubs closer across it than the sum of their radii; rotors at one position are warned of
+    apart): in one plane their blades would strike (a diameter or a position in another unit);
+    apart along the axis, a coaxial or overlapping pair, which the vehicle model solves as
+    isolated rotors (a vehicle-designer audit, 2026-11-28: an X8's lower rotors made the thrust
+    of isolated ones, without a word)."""
+    import warnings
+
+    strike, stacked = [], []
+    for k in range(len(rotors)):
+        for j in range(k + 1, len(rotors)):
+            a, b = rotors[k], rotors[j]
+            d = b.position - a.position
+            along = float(d @ a.axis)
+            across = float(np.linalg.norm(d - along * a.axis))
+            reach = a.propeller.radius + b.propeller.radius
+            if np.array_equal(a.position, b.position) or across >= reach:
+                continue
+            pair = f"{k + 1} and {j + 1} ({across:.3g} m apart across the axis, {abs(along):.3g} m along it)"
+            (strike if abs(along) < 0.05 * reach else stacked).append(pair)
+    if strike:
+        warnings.warn(f"{name}: the disks of rotors {'; '.join(strike)} overlap in one plane, closer than the sum of "
+                      "their radii, so their blades would strike: is a diameter or a position in another unit?",
+                      UserWarning, stacklevel=4)
+    if stacked:
+        how = ("rotor_interference models such pairs outside its accuracy (their disks cut each other's wake wall: "
+               "docs/models.md)" if interference else
+               "each rotor is solved as if alone (rotor_interference, off here, models them only roughly)")
+        warnings.warn(f"{name}: rotors {'; '.join(stacked)} overlap seen along the axis (a coaxial or overlapping "
+                      f"pair): {how}, so the downstream rotor's loss in the other's wake is missing or rough, and "
+                      "the hover power comes out low (momentum theory puts a coaxial pair's induced power 26-41% "
+                      "above that of two isolated rotors: J. G. Leishman, Principles of Helicopter Aerodynamics, "
+                      "2nd ed., 2006, Ch. 2)", UserWarning, stacklevel=4)
 
 
 def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
