@@ -5,6 +5,7 @@ rad/s through the API; a diameter-less geometry file in a vehicle file; an angle
 without its unit."""
 
 import math
+import re
 import shutil
 import warnings
 from dataclasses import replace
@@ -321,3 +322,26 @@ def test_a_bundled_example_is_found_by_name_wherever_propmap_is_installed(tmp_pa
     assert "mass = 0.9" in local
     (tmp_path / "quadrotor").write_text(local, encoding="utf-8")  # a file of that name here: it is read
     assert pm.read_vehicle("quadrotor").mass == 0.9
+
+
+def test_export_sim_names_a_vehicle_mass_in_grams_and_an_unused_vehicle(own_vehicle, capsys):
+    """A vehicle-designer audit (2026-11-28): a mass in grams failed on the envelope ("hover_rpm
+    must be within [...]; widen --envelope"), whose advice wrote coefficients pinned at tip Mach
+    4.3 (the CLI keeps the API's tip-Mach hint, which names the mass, to itself); --hover-rpm with
+    --vehicle for gz-sim dropped the vehicle without a word."""
+    vehicle, _ = own_vehicle
+    grams = vehicle.with_name("grams.toml")
+    grams.write_text(vehicle.read_text().replace("mass = 0.772", "mass = 772.0", 1))
+    out = vehicle.with_name("o.sdf")
+    base = ["export-sim", str(EXAMPLES / GEOMETRY), "--blades", "3", "--target", "gz-sim", "--out", str(out)]
+    assert main([*base, "--vehicle", str(grams), "--envelope", "rpm=1000:900000"]) == 2
+    err = capsys.readouterr().err.splitlines()[-1]
+    assert re.fullmatch(r"propmap: error: --vehicle: it hovers at \d+ rpm, a blade tip Mach number of [\d.]+ "
+                        r"\(> 0.8, beyond the model's physics\): is its mass \(772 kg\) in kg, and are its rotors "
+                        r"the ones it flies\?", err), err
+    assert main([*base, "--vehicle", str(vehicle), "--hover-rpm", "20000"]) == 2
+    err = capsys.readouterr().err
+    assert "--vehicle: with --hover-rpm it has nothing to do in a gz-sim export" in err, err
+    assert not out.exists()
+    assert main([*base, "--vehicle", str(vehicle), "--points", "300"]) == 0  # (the vehicle alone pins the hover)
+    assert out.exists()

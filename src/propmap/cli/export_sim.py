@@ -115,6 +115,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
     veh, hover_from, airframe = None, "--hover-rpm", ""
+    if vehicle is not None and hover_rpm is not None and target != "rotorpy":
+        # (cli.md: an option with nothing to do is refused; gz-sim's export pinned 7000 rpm and dropped the vehicle,
+        # whose hover is 5140 rpm, without a word: a vehicle-designer audit, 2026-11-28)
+        raise InputError(f"--vehicle: with --hover-rpm it has nothing to do in a {target} export (a vehicle pins "
+                         "the hover rpm, which --hover-rpm gives; only rotorpy's export writes the vehicle itself): "
+                         "give one of them")
     if vehicle is not None:
         from .flight import _fitted_vehicle
         from ..vehicle import hover_omega
@@ -159,6 +165,14 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                 hover_rpm = hover_omega(veh, params, air=air) / RPM
             except (ValueError, SolverError) as exc:
                 raise InputError(f"--vehicle: its hover rpm: {exc}") from None
+            from ..core.solver import TIP_MACH_WARN
+
+            mach = hover_rpm * RPM * max(r.propeller.radius for r in veh.rotors) / air.speed_of_sound
+            if mach > TIP_MACH_WARN:  # (the envelope's error said "widen --envelope", which wrote coefficients
+                # pinned at tip Mach 4.3 for a mass in grams: a vehicle-designer audit, 2026-11-28)
+                raise InputError(f"--vehicle: it hovers at {hover_rpm:.0f} rpm, a blade tip Mach number of "
+                                 f"{mach:.3g} (> {TIP_MACH_WARN:g}, beyond the model's physics): is its mass "
+                                 f"({veh.mass:g} kg) in kg, and are its rotors the ones it flies?")
     if vehicle is not None and target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
         import numpy as np
 
