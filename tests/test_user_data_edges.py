@@ -1239,3 +1239,27 @@ def test_validate_with_an_older_parameter_file_checks_the_data_digest(tmp_path, 
     assert "s0 (fitted)" in capsys.readouterr().out
     assert main(["validate", str(od), "--prop", "apce_8x6", "--params", str(legacy)]) == 0
     assert "(fitted)" not in capsys.readouterr().out
+
+
+def test_validate_labels_a_catalogue_propellers_runs_under_a_geometry_of_another_name(tmp_path, capsys):
+    """The bundled runs of apce_10x7 validated against the same blade under another name (an APC
+    PE0 file, here a copy of the catalogue's geometry) were shown without '(fitted)' and without
+    the in-sample line, so the generic set's residual (2.8%) read as a prediction (a
+    vehicle-designer audit, 2026-11-28); the runs are now told by their content."""
+    import shutil
+
+    from propmap.io.catalogue import _data_path, get_entry
+
+    e = get_entry("apce_10x7")
+    geom = tmp_path / "my_ten_by_seven.txt"
+    shutil.copy(_data_path(e.geometry_file), geom)
+    files = [str(_data_path(e.static_files[0])), str(_data_path(e.sweep_files[0]))]
+    base = ["validate", *files, "--prop", str(geom), "--diameter-in", "10", "--blades", "2"]
+    sweep = Path(files[1]).stem.split("_")[2]
+    for params in ("generic", "calibrated:apce_10x7"):
+        assert main([*base, "--params", params]) == 0
+        text = capsys.readouterr().out
+        assert f"{sweep} (fitted)" in text and f"{params} was fitted to this data:" in text, text
+    assert main([*base, "--params", "calibrated:apce_8x6"]) == 0  # (another propeller's set: a prediction)
+    text = capsys.readouterr().out
+    assert "(fitted)" not in text and "was fitted to" not in text, text

@@ -186,6 +186,20 @@ def _bundled_digests(name: str) -> set:
     return set() if entry is None else {file_sha256(f) for f in entry.data_paths()}
 
 
+def _bundled_owner(digests) -> str | None:
+    """The catalogue propeller whose bundled UIUC files include every one of ``digests`` (the
+    files a user gave with a geometry of another name, an APC PE0 file, say), or None (about 1,000
+    files hashed: 0.1 s)."""
+    from ..io.atomic import file_sha256
+    from ..io.catalogue import catalogue
+
+    digests = set(digests)
+    for name, entry in catalogue().items():
+        if digests and digests <= {file_sha256(f) for f in entry.data_paths()}:
+            return name
+    return None
+
+
 def _run_pairs(files, prop, seen: set, every: list) -> dict:
     """UIUC runs: each file a run, named by its run id, or by its stem where two files share
     one id, in a fit's read and in this one alike: {this table's label: the fit's label} of
@@ -239,6 +253,11 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     mine = dict(zip([s for s in sources if _is_file(Path(s))], files))
     bundled = _bundled_digests(prop.name) if uiuc else set()
     own = [s for s, h in mine.items() if h in bundled]  # (the catalogue's own files of this propeller, by content)
+    owner = prop.name
+    if uiuc and not own and mine:  # (a catalogue propeller's bundled runs with a geometry of another name, its APC
+        # PE0 file: the generic set's in-sample errors read as a prediction, a vehicle-designer audit, 2026-11-28)
+        owner = _bundled_owner(mine.values()) or prop.name
+        own = list(mine) if owner != prop.name else []
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
         matched = [s for s, h in mine.items() if h in fit_files]
         if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
@@ -246,10 +265,10 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         else:
             pairs = _run_pairs(matched, prop, seen, every)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted") for g, f in pairs.items()}
-    elif own and cov.get("data") == prop.name:  # (a fit of the catalogue name: its runs are the bundled files)
+    elif own and cov.get("data") == owner:  # (a fit of the catalogue name: its runs are the bundled files)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted")
                   for g, f in _run_pairs(own, prop, seen, every).items()}
-    elif own and label in (f"calibrated:{prop.name}", "generic"):  # (the calibration saw every run of these data)
+    elif own and label in (f"calibrated:{owner}", "generic"):  # (the calibration saw every run of these data)
         in_fit = {g: "fitted" for g in _run_pairs(own, prop, set(every), every)}
     elif cov.get("data") == what and cov.get("data_sha256") in (None, data_digest(sources, files)):
         # (by content: another day's file of the same name once read as this fit's data; a file written before
