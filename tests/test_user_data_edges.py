@@ -782,6 +782,18 @@ def test_a_designers_slips_are_said(tmp_path, capsys):
     assert "apce_10x7 runs with calibrated:apce_10x5, the set calibrated on another propeller" in said
     assert main(["loads", "apce_10x5", "--rpm", "5000", "--params", "calibrated:apce_10x5"]) == 0
     assert "another propeller" not in capsys.readouterr().err
+    # the same blade under another name (the catalogue's APC PE0 file, copied) is no other propeller (a
+    # vehicle-designer audit, 2026-11-28: it was warned of as one)
+    import shutil
+
+    from propmap.io.catalogue import _data_path, get_entry
+
+    mine = tmp_path / "mine.PE0"
+    shutil.copy(_data_path(get_entry("apce_8x6").geometry_file), mine)
+    assert main(["loads", str(mine), "--rpm", "5000", "--params", "calibrated:apce_8x6"]) == 0
+    assert "another propeller" not in capsys.readouterr().err
+    assert main(["loads", str(mine), "--rpm", "5000", "--params", "calibrated:apce_10x5"]) == 0
+    assert "mine.PE0 runs with calibrated:apce_10x5, the set calibrated on another propeller" in capsys.readouterr().err
     vehicle = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
     with pytest.warns(UserWarning, match=r"at Mach 3\.\d+ in this hover .* is the vehicle's mass 1200 kg in kg"):
         hover_omega(dataclasses.replace(vehicle, mass=1200.0), pm.generic_params())

@@ -260,11 +260,23 @@ def check_section_match(propeller, label: str) -> None:
              "parameter file fitted to its data")
     _check_fitted_propeller(propeller, label)
     owner = label[len("calibrated:"):] if label.startswith("calibrated:") else None
-    if owner is not None and owner != propeller.name:
+    if owner is not None and owner != propeller.name and not _catalogue_geometry(owner, propeller):
         warn(f"{propeller.name} runs with {label}, the set calibrated on another propeller: such a set predicts even a "
              "pitch sibling's data to 6.6% of static CT in the median, no better than the generic set (6.2%; "
              "docs/models.md, The calibrated sets do not pin the response to the collective); give 'generic' or a "
              "set fitted to this propeller's data")
+
+
+def _catalogue_geometry(name: str, propeller) -> bool:
+    """Whether ``propeller`` is catalogue propeller ``name``'s blade geometry under another name
+    (its APC PE0 file, which the catalogue reads for the APC propellers UIUC gives no geometry
+    of, was warned of as "another propeller": a vehicle-designer audit, 2026-11-28)."""
+    from ..io.catalogue import load_propeller
+
+    try:
+        return load_propeller(name).same_geometry(propeller)
+    except (ValueError, KeyError, OSError):
+        return False
 
 
 def _short(text, n: int = 80) -> str:
