@@ -4,6 +4,7 @@ on a dask.distributed LocalCluster (the --scheduler path) giving the local build
 import csv
 import json
 import math
+import re
 import subprocess
 import sys
 
@@ -192,3 +193,23 @@ def test_the_catalogue_maps_summary_names_those_that_miss_the_targets():
     assert "worst b torque 5.0%, c drag 3.0%" in text
     assert "every one of the 1 checked propellers' maps meets the targets" in _catalogue_summary(json.dumps({"a": ok}))
     assert "were not checked" in _catalogue_summary(json.dumps({"a": {}}))  # (NaN is no pass)
+
+
+def test_a_missed_target_is_said_with_where_the_check_found_it(capsys, tmp_path):
+    """A map that misses the targets said "refine the axes where it matters" and nothing of where
+    (a vehicle-designer audit, 2026-11-28): the stored check and --check name the worst point's
+    rpm, airspeed and incidence, a point inside the map's box."""
+    out = tmp_path / "m.nc"
+    code, _, err = run(capsys, "map", "apce_8x6", *SMALL, "--out", out)
+    assert code == 0
+    said = re.search(r"the map misses the targets .*?: (\w+) [\d.]+% at (\d+) rpm, ([\d.]+) m/s, ([\d.]+) deg", err)
+    assert said, err
+    rm = RotorMap.open(out)
+    at = [float(v) for v in rm.attrs[f"check_cubic_{said.group(1)}_max_at"]]
+    assert at == pytest.approx([float(said.group(k)) for k in (2, 3, 4)], rel=0.05)
+    assert 3000 <= at[0] <= 9000 and 0 <= at[1] <= 15 and 0 <= at[2] <= 180
+    code, text, _ = run(capsys, "map", "--check", out, "--check-points", "60")
+    assert code == 3 and re.search(r"FAILED \(apce_8x6: \w+ at \d+ rpm, [\d.]+ m/s, [\d.]+ deg", text), text
+    code, text, _ = run(capsys, "map", "--check", out, "--check-points", "60", "--json")
+    got = json.loads(text)
+    assert len(got["recomputed"]["check_cubic_torque_max_at"]) == len(got["stored"]["check_cubic_torque_max_at"]) == 3

@@ -551,7 +551,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
         and, per interpolation m (linear, cubic) and variable (thrust, drag, torque,
         rolling_moment, side_force and pitching_moment where the map holds them, power),
         ``check_<m>_<var>_rms`` and ``check_<m>_<var>_max``
-        outside flagged regions, and ``check_<m>_<var>_max_flagged`` inside them (NaN if
+        outside flagged regions, with ``check_<m>_<var>_max_at`` the maximum's point [rpm,
+        m/s, deg] (where there is one), and ``check_<m>_<var>_max_flagged`` inside them (NaN if
         there are none); both methods on the same points and flagged regions.
 
     Raises
@@ -608,5 +609,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
             ok = err[~flagged]
             out[f"{prefix}{k}_rms"] = float(np.sqrt(np.mean(ok**2))) if ok.size else math.nan
             out[f"{prefix}{k}_max"] = float(np.max(ok)) if ok.size else math.nan
+            if ok.size:  # (where: the axis to refine)
+                at = int(np.flatnonzero(~flagged)[np.argmax(ok)])
+                out[f"{prefix}{k}_max_at"] = [float(om[at] / RPM), float(V[at]), math.degrees(b[at])]
             out[f"{prefix}{k}_max_flagged"] = float(np.nanmax(err[flagged])) if flagged.any() else math.nan
     return out

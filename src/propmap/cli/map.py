@@ -17,7 +17,7 @@ from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, 
                       resolve_air, set_collective_deg, with_air_options, with_prop_options)
 from ._paths import check_out_dir, check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
-from .map_check import TARGETS_PCT, _check, _pct, _target_misses
+from .map_check import TARGETS_PCT, _check, _pct, _target_misses, _where
 
 FORMATS = {"netcdf": ".nc", "csv": ".csv", "c": ".h"}
 MAX_AXIS = 2000
@@ -474,7 +474,7 @@ def _report(ds, files, elapsed: float, as_json: bool, c_interpolation: str | Non
         method = c_interpolation or "cubic"  # what the written file interpolates
         over = _target_misses(a, method)
         if over:
-            said = ", ".join(f"{k} {v:.1f}%" for k, v in over.items())
+            said = ", ".join(f"{k} {v:.1f}%{_where(a, method, k)}" for k, v in over.items())
             warn(f"the map misses the targets at its check points ({method}, outside flagged regions: 1% of static "
                  f"thrust and torque, 2% of the largest drag): {said} (the table above; refine the axes where "
                  "it matters, and `map --check FILE` measures again at fresh points)")

@@ -28,6 +28,15 @@ def _target_misses(attrs: dict, method: str = "cubic") -> dict:
     return {k: v for k, v in errors.items() if v > TARGETS_PCT[k]}
 
 
+def _where(attrs: dict, method: str, load: str) -> str:
+    """Where the check's maximum of ``load`` lies ("at 2150 rpm, 3.1 m/s, 174 deg"; a user-level
+    audit, 2026-11-28: "refine the axes where it matters" said nothing of where), or ""."""
+    at = attrs.get(f"check_{method}_{load}_max_at")
+    if at is None or len(at) != 3:
+        return ""
+    return f" at {float(at[0]):.0f} rpm, {float(at[1]):.3g} m/s, {float(at[2]):.3g} deg"
+
+
 #: exit code of a --check whose errors exceed the threshold (0 passes; 2 is bad input)
 CHECK_FAILED = 3
 
@@ -76,12 +85,14 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
         why = ("every check point in a flagged cell" if res["check_points_flagged"] >= n else
                "no finite error at the unflagged check points" if all(math.isnan(v) for v in worst.values()) else None)
         if over or why:
-            failed.append(f"{rm.attrs.get('propeller')}: " + (", ".join(over) if over else f"not tested, {why}"))
+            failed.append(f"{rm.attrs.get('propeller')}: " + (", ".join(k + _where(res, "cubic", k) for k in over)
+                                                             if over else f"not tested, {why}"))
         results.append((prop, rm, seed, res, over, why is not None))
     if as_json:
         out = []
         for prop, rm, seed, res, over, untested in results:
-            stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
+            stored = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in rm.attrs.items()
+                      if k.startswith("check_")}
             out.append({"propeller": rm.attrs.get("propeller"), "passed": not (over or untested), "exceeded": over,
                         "untested": untested,
                         "recomputed": {k: v for k, v in res.items() if not (isinstance(v, float) and math.isnan(v))},
@@ -103,7 +114,7 @@ CHECKED = ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching
 
 
 def _print_check(path, rm, n: int, seed: int, res: dict) -> None:
-    stored = {k: (v.item() if hasattr(v, "item") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
+    stored = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in rm.attrs.items() if k.startswith("check_")}
     click.echo(f"{path}: {rm.attrs.get('propeller')} ({rm.attrs.get('params_label')}), recomputed at {n} fresh "
                f"points (seed {seed}; stored values in brackets):")
     nan = float("nan")
