@@ -8,8 +8,8 @@ from pathlib import Path
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, air_label, check_section_match, echo_json, load_params,
-                      parse_names, resolve_air, warn, with_air_options, with_prop_options)
+from ._common import (PARAMS_HELP, InputError, PathArg, _catalogue_geometry, air_label, check_section_match,
+                      echo_json, load_params, parse_names, resolve_air, warn, with_air_options, with_prop_options)
 from ._paths import _is_file, check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
 
@@ -257,7 +257,9 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     if uiuc and not own and mine:  # (a catalogue propeller's bundled runs with a geometry of another name, its APC
         # PE0 file: the generic set's in-sample errors read as a prediction, a vehicle-designer audit, 2026-11-28)
         owner = _bundled_owner(mine.values()) or prop.name
-        own = list(mine) if owner != prop.name else []
+        # (only where the geometry given is that propeller's: another blade's errors are no residual, a review)
+        own = list(mine) if owner != prop.name and _catalogue_geometry(owner, prop) else []
+        owner = owner if own else prop.name
     if fit_files:  # (by each file's content: a part of the fit's files, or them among others, labelled too)
         matched = [s for s, h in mine.items() if h in fit_files]
         if what != "UIUC files":  # (a CSV: its groups are the fit's, where it is the fit's file)
