@@ -441,19 +441,28 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
                           "0.2-0.6: is the mass in kg and the inertia in kg m^2?", UserWarning, stacklevel=3)
 
 
+#: rotors whose axes lie within this angle of parallel (or antiparallel) are checked for overlapping disks (the
+#: interference model's own limit for rotors that interact, docs/models.md)
+OVERLAP_AXES_DEG = 8.0
+
+
 def _warn_overlap(name: str, rotors, interference: float) -> None:
-    """Warn once about the pairs of rotors whose disks overlap seen along the first one's axis
-    (hubs closer across it than the sum of their radii; rotors at one position are warned of
-    apart): in one plane their blades would strike (a diameter or a position in another unit);
-    apart along the axis, a coaxial or overlapping pair, which the vehicle model solves as
-    isolated rotors (a vehicle-designer audit, 2026-11-28: an X8's lower rotors made the thrust
-    of isolated ones, without a word)."""
+    """Warn once about the pairs of rotors with (anti)parallel axes, within OVERLAP_AXES_DEG, whose
+    disks overlap seen along them (hubs closer across the axis than the sum of their radii;
+    rotors at one position are warned of apart): in one plane their blades would strike (a
+    diameter or a position in another unit); apart along the axis, a coaxial or overlapping
+    pair, which the vehicle model solves as isolated rotors (a vehicle-designer audit,
+    2026-11-28: an X8's lower rotors made the thrust of isolated ones, without a word). Pairs
+    of other axes (a lift rotor and a pusher) are not judged: seen along one axis or the other
+    they overlap or not (a review)."""
     import warnings
 
     strike, stacked = [], []
     for k in range(len(rotors)):
         for j in range(k + 1, len(rotors)):
             a, b = rotors[k], rotors[j]
+            if abs(float(a.axis @ b.axis)) < math.cos(math.radians(OVERLAP_AXES_DEG)):
+                continue
             d = b.position - a.position
             along = float(d @ a.axis)
             across = float(np.linalg.norm(d - along * a.axis))
