@@ -343,5 +343,12 @@ def test_export_sim_names_a_vehicle_mass_in_grams_and_an_unused_vehicle(own_vehi
     err = capsys.readouterr().err
     assert "--vehicle: with --hover-rpm it has nothing to do in a gz-sim export" in err, err
     assert not out.exists()
+    # the advice of a vehicle that cannot pin the hover runs for either kind of target (a review: gz-sim's said
+    # "give --hover-rpm", which then refused the vehicle beside it)
+    quad = ["export-sim", "apce_10x7", "--vehicle", "quadrotor"]
+    assert main([*quad, "--target", "gz-sim", "--out", str(out)]) == 2
+    assert capsys.readouterr().err.rstrip().endswith("or give --hover-rpm instead of --vehicle")
+    assert main([*quad, "--target", "rotorpy", "--out", str(out.with_suffix(".py"))]) == 2
+    assert capsys.readouterr().err.rstrip().endswith("or give --hover-rpm")
     assert main([*base, "--vehicle", str(vehicle), "--points", "300"]) == 0  # (the vehicle alone pins the hover)
     assert out.exists()

@@ -138,11 +138,13 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
             return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades{', another chord or blade angle' * same})"
 
         names = sorted({shown(r.propeller) for r in veh.rotors if not r.propeller.same_geometry(propeller)})
+        # (the other targets take the rpm without the vehicle: a vehicle with nothing to do is refused above)
+        instead = "give --hover-rpm" if target == "rotorpy" else "give --hover-rpm instead of --vehicle"
         if names and hover_rpm is None:
             # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
             raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}, so it "
-                             f"cannot pin {propeller.name}'s hover rpm: export the vehicle's propeller, or give "
-                             "--hover-rpm")
+                             f"cannot pin {propeller.name}'s hover rpm: export the vehicle's propeller, or "
+                             f"{instead}")
         if names:
             warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}: the export "
                           f"gives {propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
@@ -152,7 +154,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                if r.params is not None and replace(r.params, air=params.air) != params]
         if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
             raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
-                             f"{label}, so the vehicle's hover is not {propeller.name}'s with it: give --hover-rpm, "
+                             f"{label}, so the vehicle's hover is not {propeller.name}'s with it: {instead}, "
                              "or a vehicle without the rotors' params")
         if own:
             warnings.warn(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set: the export "

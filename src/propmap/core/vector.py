@@ -229,7 +229,7 @@ def _check_speed(speed) -> None:
     (rotor_loads' own message names its ``airspeed``, an argument this function does not have:
     a physics audit, 2026-11-28)."""
     if np.any(np.asarray(speed) > AIRSPEED_MAX):
-        worst = float(np.max(speed))
+        worst = float(np.nanmax(speed))
         raise ValueError(f"velocity: the rotor's airspeed |velocity| must be at most {AIRSPEED_MAX:g} m/s (the "
                          f"model's range); got {worst:.6g} m/s")
 
