@@ -8,6 +8,7 @@ from .file import VehicleFileError, read_vehicle
 from .layout import Rotor, Vehicle, rotor_geometry
 from .mapped import VehicleMap, VehicleMapWrench
 from .model import VehicleWrench, hover_omega, vehicle_wrench
+from .trim import VehicleTrim, trim_vehicle
 
-__all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleWrench", "VehicleFileError", "hover_omega",
-           "read_vehicle", "rotor_geometry", "vehicle_wrench"]
+__all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleTrim", "VehicleWrench", "VehicleFileError",
+           "hover_omega", "read_vehicle", "rotor_geometry", "trim_vehicle", "vehicle_wrench"]

@@ -1,0 +1,184 @@
+"""A multirotor trimmed in steady straight flight: the attitude and rotor speeds at which the
+vehicle model's force balances the weight and its moment about the centre of mass vanishes.
+
+Body frame x forward, y left, z up (vehicle/model.py); the flight path along the world's x
+axis (the vehicle flies nose first), climbing at ``climb_rate``, in still air. The attitude is
+roll phi (right side down positive) and pitch theta (nose up positive), yaw 0: the body axes
+are R = R_y(-theta) R_x(phi) of the world's (R_y(-theta) pitches the nose up about the left
+axis y). The equations, six, are the steady-flight case of a rigid body's equations of motion
+(B. Etkin and L. D. Reid, Dynamics of Flight: Stability and Control, 3rd ed., 1996), with the
+rotors' forces and moments of :func:`~propmap.vehicle.vehicle_wrench` in place of an
+aircraft's:
+
+    F(v_b, Omega) + m R^T g = 0,    M(v_b, Omega) = 0,    v_b = R^T (V, 0, V_c),
+
+in the unknowns phi, theta and the n rotor speeds Omega_i. A quadrotor has as many unknowns
+as equations; a vehicle with more rotors has more, and the solution taken is the one nearest
+(in the least-squares steps of SciPy's trust-region solver) to every rotor at the hover speed
+of :func:`~propmap.vehicle.hover_omega`, from which the search starts.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.airfoil import Air, SectionParams
+from ..core.air import SUPERSONIC_TIP
+from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
+                           model_air, supersonic_tips_allowed)
+from .layout import Vehicle
+from .model import VehicleWrench, hover_omega, vehicle_wrench
+
+__all__ = ["VehicleTrim", "trim_vehicle"]
+
+#: the balance a trim must reach: force within this fraction of the weight, moment within it times the weight
+#: times the largest arm
+TRIM_TOL = 1e-7
+#: the attitude's search range [rad] (a multirotor beyond 80 deg of tilt is not in steady flight)
+TILT_MAX = math.radians(80.0)
+
+
+@dataclass(frozen=True)
+class VehicleTrim:
+    """A trimmed steady flight (:func:`trim_vehicle`).
+
+    Attributes
+    ----------
+    airspeed, climb_rate : float
+        The flight [m/s]: speed along the path and its vertical part (the path along the
+        world's x axis).
+    roll, pitch : float
+        Attitude [rad]: roll right side down positive, pitch nose up positive (a vehicle
+        flying forward pitches nose down: negative).
+    rotor_omega : ndarray, shape (n_rotors,)
+        Rotor speeds [rad/s], in the vehicle's rotor order.
+    velocity : ndarray, shape (3,)
+        The flight's velocity in body axes [m/s] (vehicle_wrench's ``velocity``).
+    power : float
+        Shaft power of the rotors, sum of Q_i Omega_i [W].
+    wrench : VehicleWrench
+        The vehicle model at the trim (one sample): its force balances the weight, its
+        moment vanishes, within TRIM_TOL.
+    """
+
+    airspeed: float
+    climb_rate: float
+    roll: float
+    pitch: float
+    rotor_omega: np.ndarray
+    velocity: np.ndarray
+    power: float
+    wrench: VehicleWrench
+
+
+def _attitude(phi: float, theta: float) -> np.ndarray:
+    """Body to world, R = R_y(-theta) R_x(phi) (module docstring)."""
+    c, s = math.cos(phi), math.sin(phi)
+    Rx = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    c, s = math.cos(-theta), math.sin(-theta)
+    Ry = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+    return Ry @ Rx
+
+
+def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb_rate: float = 0.0, *,
+                 air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> VehicleTrim:
+    """Attitude and rotor speeds of steady straight flight (module docstring).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        Its airframe drag (``vehicle.body_drag``) and rotor interference are those of the file.
+    params : AirfoilParams or CamberedParams
+        The rotors' parameter set (a rotor with its own ``params`` uses those).
+    airspeed : float
+        Speed along the flight path [m/s], in [0, 100] (still air: airspeed and ground speed
+        alike).
+    climb_rate : float
+        Its vertical part [m/s], |climb_rate| <= airspeed (0: level flight; negative:
+        descent). The horizontal part is sqrt(airspeed^2 - climb_rate^2).
+    air : Air, optional
+        Default: the parameter set's.
+    discretization : Discretization
+
+    Returns
+    -------
+    VehicleTrim
+
+    Raises
+    ------
+    ValueError
+        ``airspeed`` or ``climb_rate`` not a finite number in range (the message names it);
+        the vehicle cannot hover (:func:`~propmap.vehicle.hover_omega`); no attitude within 80
+        deg and rotor speeds within the solver's range balance it (the message gives the
+        balance reached).
+    SolverError
+        A rotor solve fails (:func:`propmap.rotor_loads`).
+
+    Notes
+    -----
+    Costs about 10-30 vehicle_wrench calls of one sample (n_rotors + 3 each iteration of the
+    differenced Jacobian). The balance leaves out what the vehicle model leaves out: the
+    airframe's aerodynamic moment (its drag acts at the centre of mass) and, unless the vehicle
+    file sets ``rotor_interference``, the rotors' wakes on each other.
+    """
+    from scipy.optimize import least_squares
+
+    V = _number("airspeed", airspeed, 0.0, 100.0)
+    Vc = _number("climb_rate", climb_rate, -V, V, f"[-airspeed, airspeed] = [{-V:g}, {V:g}]")
+    Vh = math.sqrt(max(V * V - Vc * Vc, 0.0))
+    n = len(vehicle.rotors)
+    om_h = hover_omega(vehicle, params, air=air, discretization=discretization)
+    weight = vehicle.weight
+    arm = max(float(np.linalg.norm(r.position - vehicle.centre_of_mass)) for r in vehicle.rotors) or 1.0
+    still = np.zeros(3)
+
+    def state(x):
+        R = _attitude(x[0], x[1])
+        v_b = R.T @ np.array([Vh, 0.0, Vc])
+        g_b = R.T @ np.array([0.0, 0.0, -weight])
+        return v_b, g_b
+
+    def residual(x):
+        v_b, g_b = state(x)
+        w = vehicle_wrench(vehicle, params, v_b, still, x[2:] * om_h, air=air, discretization=discretization)
+        return np.concatenate([(w.force[0] + g_b) / weight, w.moment[0] / (weight * arm)])
+
+    x0 = np.concatenate([[0.0, 0.0], np.ones(n)])
+    lo = np.concatenate([[-TILT_MAX, -TILT_MAX], np.full(n, OMEGA_MIN / om_h)])
+    hi = np.concatenate([[TILT_MAX, TILT_MAX], np.full(n, OMEGA_MAX / om_h)])
+    with supersonic_tips_allowed():  # (the search may try fast rotors on its way; the trim is checked below)
+        x = least_squares(residual, x0, bounds=(lo, hi), method="trf",
+                          x_scale=np.concatenate([[0.1, 0.1], np.ones(n)]), xtol=1e-14, ftol=1e-14, gtol=1e-14,
+                          max_nfev=200).x
+        r = residual(x)
+    if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
+        raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found (the force balance reached "
+                         f"{np.max(np.abs(r[:3])):.3g} of the weight, the moment {np.max(np.abs(r[3:])):.3g} of the "
+                         f"weight times the largest arm, at roll {math.degrees(x[0]):.3g} deg, pitch "
+                         f"{math.degrees(x[1]):.3g} deg): beyond what the rotors can balance")
+    v_b, _ = state(x)
+    omega = x[2:] * om_h
+    w = vehicle_wrench(vehicle, params, v_b, still, omega, air=air, discretization=discretization)
+    power = float(sum(float(ld.power[0]) for ld in w.loads))
+    tip = max(om * rot.propeller.radius + V for om, rot in zip(omega, vehicle.rotors))  # (the advancing tip's)
+    mach = tip / model_air(params, air).speed_of_sound
+    if mach > TIP_MACH_WARN:
+        import warnings
+
+        warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
+                      "rad/s): these loads mean little", UserWarning, stacklevel=2)
+    return VehicleTrim(V, Vc, float(x[0]), float(x[1]), omega, v_b, power, w)
+
+
+def _number(name: str, value, lo: float, hi: float, shown: str | None = None) -> float:
+    """``value`` as a float in [lo, hi], else ValueError naming ``name`` and the range."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        v = math.nan
+    if isinstance(value, (bool, np.bool_)) or not (math.isfinite(v) and lo <= v <= hi):
+        raise ValueError(f"{name} must be a number in {shown or f'[{lo:g}, {hi:g}]'} m/s, got {value!r:.60}")
+    return v

@@ -1,0 +1,98 @@
+"""trim_vehicle: a multirotor's attitude and rotor speeds in steady straight flight (vehicle/trim.py),
+against the balance it solves, the hover limit and the physics of climb and descent."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.vehicle.trim import TRIM_TOL, _attitude
+
+
+@pytest.fixture(scope="module")
+def neurobem():
+    return pm.read_vehicle("neurobem_quadrotor"), pm.generic_params()
+
+
+def _balance(vehicle, trim):
+    """The force (with the weight) and moment of the vehicle model at the trim, in units of the
+    weight and of the weight times the largest arm."""
+    R = _attitude(trim.roll, trim.pitch)
+    w = pm.vehicle_wrench(vehicle, pm.generic_params(), trim.velocity, np.zeros(3), trim.rotor_omega)
+    arm = max(float(np.linalg.norm(r.position - vehicle.centre_of_mass)) for r in vehicle.rotors)
+    force = w.force[0] + R.T @ np.array([0.0, 0.0, -vehicle.weight])
+    return force / vehicle.weight, w.moment[0] / (vehicle.weight * arm)
+
+
+def test_at_rest_the_trim_is_the_hover(neurobem):
+    vehicle, params = neurobem
+    trim = pm.trim_vehicle(vehicle, params, 0.0)
+    assert trim.roll == pytest.approx(0.0, abs=1e-9) and trim.pitch == pytest.approx(0.0, abs=1e-9)
+    np.testing.assert_allclose(trim.rotor_omega, pm.hover_omega(vehicle, params), rtol=1e-9)
+    assert trim.power == pytest.approx(sum(float(ld.power[0]) for ld in trim.wrench.loads))
+    assert trim.power == pytest.approx(sum(float(ld.torque[0]) for ld in trim.wrench.loads) * trim.rotor_omega[0])
+
+
+def test_forward_flight_balances_the_weight_nose_down(neurobem):
+    """At 10 m/s the model's force balances the weight and its moment vanishes; the vehicle
+    pitches nose down (the rotors' thrust tilted forward against their in-plane drag); the
+    symmetric vehicle does not roll; the flight's velocity in body axes has the airspeed's size.
+    Regression values (generic set, 2026-11-28): pitch -4.12 deg, power 72.1 W against 87.2 W in
+    hover (translational lift)."""
+    vehicle, params = neurobem
+    trim = pm.trim_vehicle(vehicle, params, 10.0)
+    force, moment = _balance(vehicle, trim)
+    assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
+    assert np.linalg.norm(trim.velocity) == pytest.approx(10.0, rel=1e-12)
+    assert trim.roll == pytest.approx(0.0, abs=1e-6)
+    assert math.degrees(trim.pitch) == pytest.approx(-4.12, abs=0.02)
+    assert trim.power == pytest.approx(72.1, abs=0.2)
+    assert trim.power < pm.trim_vehicle(vehicle, params, 0.0).power
+    # a rotor pair mirrored left-right turns at one speed (rotors 1 and 3: back, 2 and 4: front)
+    assert trim.rotor_omega[0] == pytest.approx(trim.rotor_omega[2], rel=1e-6)
+    assert trim.rotor_omega[1] == pytest.approx(trim.rotor_omega[3], rel=1e-6)
+
+
+def test_climbing_costs_power_and_descending_saves_it(neurobem):
+    """At 6 m/s along the path: climbing at 2 m/s takes more shaft power than level flight, by
+    more than half of m g V_c (momentum theory's least, at small climb rates in hover: J. G.
+    Leishman, Principles of Helicopter Aerodynamics, 2nd ed., 2006, Ch. 2; in fast flight it
+    nears m g V_c over the rotors' efficiency) and less than three times it; descending at 2 m/s
+    takes less. Measured 2026-11-28 (generic set): 79.9 W level, +10.1 W (0.67 m g V_c) climbing,
+    -6.2 W descending."""
+    vehicle, params = neurobem
+    level, up, down = (pm.trim_vehicle(vehicle, params, 6.0, vc) for vc in (0.0, 2.0, -2.0))
+    mgv = vehicle.weight * 2.0
+    assert 0.5 * mgv < up.power - level.power < 3.0 * mgv
+    assert 0.0 < level.power - down.power < 3.0 * mgv
+    for t in (up, down):
+        force, moment = _balance(vehicle, t)
+        assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
+        assert np.linalg.norm(t.velocity) == pytest.approx(6.0, rel=1e-12)
+
+
+def test_a_hexacopter_trims_too(tmp_path):
+    """More rotors than the six equations: a solution is taken, and it balances."""
+    rotors = "".join(f"\n[[rotors]]\nposition = [{0.3 * math.cos(math.pi / 3 * k):.6f}, "
+                     f"{0.3 * math.sin(math.pi / 3 * k):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
+                     f"spin = \"{'ccw' if k % 2 == 0 else 'cw'}\"\npropeller = \"apce_8x6\"\n" for k in range(6))
+    (tmp_path / "hexa.toml").write_text(f"mass = 2.0\ninertia = [0.05, 0.05, 0.09]\n{rotors}")
+    vehicle = pm.read_vehicle(tmp_path / "hexa.toml")
+    trim = pm.trim_vehicle(vehicle, pm.generic_params(), 8.0)
+    force, moment = _balance(vehicle, trim)
+    assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
+    assert trim.pitch < 0 and trim.rotor_omega.shape == (6,)
+
+
+@pytest.mark.parametrize("args, match", [
+    ((-1.0,), r"airspeed must be a number in \[0, 100\] m/s, got -1.0"),
+    ((math.nan,), r"airspeed must be a number in \[0, 100\] m/s"),
+    ((True,), r"airspeed must be a number"),
+    ((5.0, 6.0), r"climb_rate must be a number in \[-airspeed, airspeed\] = \[-5, 5\] m/s, got 6.0"),
+    ((100.0,), r"airspeed 100 m/s, climb_rate 0 m/s: no trim found .* beyond what the rotors can balance"),
+])
+def test_bad_flights_are_refused_naming_the_input(neurobem, args, match):
+    vehicle, params = neurobem
+    with pytest.raises(ValueError, match=match):
+        pm.trim_vehicle(vehicle, params, *args)
