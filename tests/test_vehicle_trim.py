@@ -2,12 +2,14 @@
 against the balance it solves, the hover limit and the physics of climb and descent."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.vehicle.trim import TRIM_TOL, _attitude
+from propmap.vehicle.layout import body_to_world
+from propmap.vehicle.trim import TRIM_TOL
 
 
 @pytest.fixture(scope="module")
@@ -18,7 +20,7 @@ def neurobem():
 def _balance(vehicle, trim):
     """The force (with the weight) and moment of the vehicle model at the trim, in units of the
     weight and of the weight times the largest arm."""
-    R = _attitude(trim.roll, trim.pitch)
+    R = body_to_world(trim.pitch, trim.roll)
     w = pm.vehicle_wrench(vehicle, pm.generic_params(), trim.velocity, np.zeros(3), trim.rotor_omega)
     arm = max(float(np.linalg.norm(r.position - vehicle.centre_of_mass)) for r in vehicle.rotors)
     force = w.force[0] + R.T @ np.array([0.0, 0.0, -vehicle.weight])
@@ -52,6 +54,25 @@ def test_forward_flight_balances_the_weight_nose_down(neurobem):
     # a rotor pair mirrored left-right turns at one speed (rotors 1 and 3: back, 2 and 4: front)
     assert trim.rotor_omega[0] == pytest.approx(trim.rotor_omega[2], rel=1e-6)
     assert trim.rotor_omega[1] == pytest.approx(trim.rotor_omega[3], rel=1e-6)
+
+
+@pytest.mark.parametrize("axis, roll_deg, pitch_deg", [
+    ("[0.0, 0.17364817766693033, 0.984807753012208]", 10.0, 0.0),  # every rotor canted 10 deg to the left
+    ("[0.17364817766693033, 0.0, 0.984807753012208]", 0.0, 10.0),  # forward
+])
+def test_canted_rotors_set_the_attitude_at_rest(tmp_path, axis, roll_deg, pitch_deg):
+    """The attitude's signs, by the vehicle's balance alone, not by the function's own rotation
+    (a review found a roll of the wrong sign passing every test of symmetric vehicles): rotors
+    canted 10 deg to the left must hover rolled right side down by 10 deg so that they thrust
+    straight up; canted forward, pitched nose up by 10 deg (docs/nomenclature.md's signs)."""
+    text = (Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml").read_text()
+    assert text.count("axis = [0.0, 0.0, 1.0]") == 4
+    for f in ("neurobem_5.1x4.8_geom.txt",):
+        (tmp_path / f).write_bytes((Path(pm.__file__).parent / "data" / "examples" / f).read_bytes())
+    (tmp_path / "v.toml").write_text(text.replace("axis = [0.0, 0.0, 1.0]", f"axis = {axis}"))
+    trim = pm.trim_vehicle(pm.read_vehicle(tmp_path / "v.toml"), pm.generic_params(), 0.0)
+    assert math.degrees(trim.roll) == pytest.approx(roll_deg, abs=1e-5)
+    assert math.degrees(trim.pitch) == pytest.approx(pitch_deg, abs=1e-5)
 
 
 def test_climbing_costs_power_and_descending_saves_it(neurobem):
@@ -90,9 +111,18 @@ def test_a_hexacopter_trims_too(tmp_path):
     ((math.nan,), r"airspeed must be a number in \[0, 100\] m/s"),
     ((True,), r"airspeed must be a number"),
     ((5.0, 6.0), r"climb_rate must be a number in \[-airspeed, airspeed\] = \[-5, 5\] m/s, got 6.0"),
-    ((100.0,), r"airspeed 100 m/s, climb_rate 0 m/s: no trim found .* beyond what the rotors can balance"),
+    ((100.0,), r"airspeed 100 m/s, climb_rate 0 m/s: no trim found from the hover .* where the search ended"),
+    ((0.0, 2.0), r"climb_rate must be a number in \[-airspeed, airspeed\] = \[0, 0\] m/s, got 2.0"),
 ])
 def test_bad_flights_are_refused_naming_the_input(neurobem, args, match):
     vehicle, params = neurobem
     with pytest.raises(ValueError, match=match):
         pm.trim_vehicle(vehicle, params, *args)
+
+
+def test_a_vehicle_name_is_no_vehicle_and_a_vortex_ring_trim_is_warned_of(neurobem):
+    vehicle, params = neurobem
+    with pytest.raises(TypeError, match="vehicle must be a propmap Vehicle"):
+        pm.trim_vehicle("neurobem_quadrotor", params, 5.0)
+    with pytest.warns(UserWarning, match=r"trim in the vortex-ring state \(climb_rate -6 m/s\)"):
+        pm.trim_vehicle(vehicle, params, 6.0, -6.0)  # (straight down at 6 m/s: a review found it trimmed silently)

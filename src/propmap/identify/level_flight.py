@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..vehicle import Vehicle, rotor_geometry
+from ..vehicle.layout import body_to_world  # (re-exported: the level-flight fit's)
 from ._checks import first_length, float_array
 from ..core.units import RPM
 from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv, _short
@@ -207,33 +208,6 @@ def level_flight_warnings(data: LevelFlightData, vehicle: Vehicle) -> list[str]:
                        f"speed {hover / RPM:.5g} rpm (its mass {vehicle.mass:g} kg, the generic set): are the rpm "
                        "columns in rpm (not rad/s or rev/s) and the mass in kg?")
     return out
-
-
-def body_to_world(pitch, roll) -> np.ndarray:
-    """Rotation matrices R (shape (N, 3, 3)) taking body vectors to the level world frame.
-
-    Frames: x forward, y left, z up (heading along world x). Nose-up pitch is a rotation
-    about +y by -pitch; right-wing-down roll a rotation about +x by +roll; R = Ry(-pitch) Rx(roll).
-
-    Parameters
-    ----------
-    pitch, roll : array_like, shape (N,)
-        Attitude [rad] (as :class:`LevelFlightData`), nose-up and right-wing-down positive.
-        Any shape, the two the same (they do not broadcast against each other; scalars
-        give one matrix).
-
-    Returns
-    -------
-    ndarray, shape (N, 3, 3)
-        R, with ``v_world = R @ v_body`` (``pitch.shape + (3, 3)`` in general).
-    """
-    p = -np.asarray(pitch, float)
-    r = np.asarray(roll, float)
-    cp, sp, cr, sr = np.cos(p), np.sin(p), np.cos(r), np.sin(r)
-    z, o = np.zeros_like(p), np.ones_like(p)
-    Ry = np.stack([np.stack([cp, z, sp], -1), np.stack([z, o, z], -1), np.stack([-sp, z, cp], -1)], -2)
-    Rx = np.stack([np.stack([o, z, z], -1), np.stack([z, cr, -sr], -1), np.stack([z, sr, cr], -1)], -2)
-    return Ry @ Rx
 
 
 def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):

@@ -15,7 +15,7 @@ from ..core.airfoil import SectionParams
 from ..core.body import BodyDrag
 from ..core.geometry import Propeller, has_bool
 
-__all__ = ["Rotor", "Vehicle", "rotor_geometry"]
+__all__ = ["Rotor", "Vehicle", "body_to_world", "rotor_geometry"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -212,3 +212,30 @@ def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray
     spins = np.array([1.0 if r.spin > 0 else -1.0 for r in vehicle.rotors])
     h = np.array([(r.spin * r.inertia if r.inertia else 0.0) for r in vehicle.rotors])[:, None] * axes
     return arms, axes, spins, h
+
+
+def body_to_world(pitch, roll) -> np.ndarray:
+    """Rotation matrices R (shape (N, 3, 3)) taking body vectors to the level world frame.
+
+    Frames: x forward, y left, z up (heading along world x). Nose-up pitch is a rotation
+    about +y by -pitch; right-wing-down roll a rotation about +x by +roll; R = Ry(-pitch) Rx(roll).
+
+    Parameters
+    ----------
+    pitch, roll : array_like, shape (N,)
+        Attitude [rad] (as :class:`LevelFlightData`), nose-up and right-wing-down positive.
+        Any shape, the two the same (they do not broadcast against each other; scalars
+        give one matrix).
+
+    Returns
+    -------
+    ndarray, shape (N, 3, 3)
+        R, with ``v_world = R @ v_body`` (``pitch.shape + (3, 3)`` in general).
+    """
+    p = -np.asarray(pitch, float)
+    r = np.asarray(roll, float)
+    cp, sp, cr, sr = np.cos(p), np.sin(p), np.cos(r), np.sin(r)
+    z, o = np.zeros_like(p), np.ones_like(p)
+    Ry = np.stack([np.stack([cp, z, sp], -1), np.stack([z, o, z], -1), np.stack([-sp, z, cp], -1)], -2)
+    Rx = np.stack([np.stack([o, z, z], -1), np.stack([z, cr, -sr], -1), np.stack([z, sr, cr], -1)], -2)
+    return Ry @ Rx

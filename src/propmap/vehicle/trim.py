@@ -13,9 +13,10 @@ aircraft's:
     F(v_b, Omega) + m R^T g = 0,    M(v_b, Omega) = 0,    v_b = R^T (V, 0, V_c),
 
 in the unknowns phi, theta and the n rotor speeds Omega_i. A quadrotor has as many unknowns
-as equations; a vehicle with more rotors has more, and the solution taken is the one nearest
-(in the least-squares steps of SciPy's trust-region solver) to every rotor at the hover speed
-of :func:`~propmap.vehicle.hover_omega`, from which the search starts.
+as equations; a vehicle with more rotors has more, and the solution taken is the one SciPy's
+trust-region least squares reaches from every rotor at the hover speed of
+:func:`~propmap.vehicle.hover_omega` (not the nearest to it: how a redundant vehicle splits the
+load among its rotors depends on the search, a review, 2026-11-28).
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            model_air, supersonic_tips_allowed)
-from .layout import Vehicle
+from .layout import Vehicle, body_to_world
 from .model import VehicleWrench, hover_omega, vehicle_wrench
 
 __all__ = ["VehicleTrim", "trim_vehicle"]
@@ -74,15 +75,6 @@ class VehicleTrim:
     wrench: VehicleWrench
 
 
-def _attitude(phi: float, theta: float) -> np.ndarray:
-    """Body to world, R = R_y(-theta) R_x(phi) (module docstring)."""
-    c, s = math.cos(phi), math.sin(phi)
-    Rx = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-    c, s = math.cos(-theta), math.sin(-theta)
-    Ry = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-    return Ry @ Rx
-
-
 def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb_rate: float = 0.0, *,
                  air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> VehicleTrim:
     """Attitude and rotor speeds of steady straight flight (module docstring).
@@ -106,16 +98,27 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     Returns
     -------
     VehicleTrim
+        The attitude, rotor speeds, body-axis velocity, shaft power and the model's wrench at
+        the trim.
 
     Raises
     ------
+    TypeError
+        ``vehicle`` not a Vehicle (read a file or a bundled name with :func:`read_vehicle`).
     ValueError
         ``airspeed`` or ``climb_rate`` not a finite number in range (the message names it);
         the vehicle cannot hover (:func:`~propmap.vehicle.hover_omega`); no attitude within 80
-        deg and rotor speeds within the solver's range balance it (the message gives the
-        balance reached).
+        deg and rotor speeds within the solver's range balance it as far as the search from the
+        hover goes (the message gives the balance reached).
     SolverError
         A rotor solve fails (:func:`propmap.rotor_loads`).
+
+    Warns
+    -----
+    UserWarning
+        A trim whose advancing blade tips meet the air beyond Mach 0.8, or with a rotor in the
+        vortex-ring state (descent: momentum theory is not predictive there, docs/models.md);
+        :func:`hover_omega`'s warnings.
 
     Notes
     -----
@@ -126,8 +129,10 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     """
     from scipy.optimize import least_squares
 
+    if not isinstance(vehicle, Vehicle):
+        raise TypeError(f"vehicle must be a propmap Vehicle (read_vehicle), got {type(vehicle).__name__}")
     V = _number("airspeed", airspeed, 0.0, 100.0)
-    Vc = _number("climb_rate", climb_rate, -V, V, f"[-airspeed, airspeed] = [{-V:g}, {V:g}]")
+    Vc = _number("climb_rate", climb_rate, -V, V, f"[-airspeed, airspeed] = [{-V if V else 0.0:g}, {V:g}]")
     Vh = math.sqrt(max(V * V - Vc * Vc, 0.0))
     n = len(vehicle.rotors)
     om_h = hover_omega(vehicle, params, air=air, discretization=discretization)
@@ -136,7 +141,7 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     still = np.zeros(3)
 
     def state(x):
-        R = _attitude(x[0], x[1])
+        R = body_to_world(x[1], x[0])
         v_b = R.T @ np.array([Vh, 0.0, Vc])
         g_b = R.T @ np.array([0.0, 0.0, -weight])
         return v_b, g_b
@@ -155,19 +160,26 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
                           max_nfev=200).x
         r = residual(x)
     if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
-        raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found (the force balance reached "
+        raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found from the hover (the force "
+                         "balance reached "
                          f"{np.max(np.abs(r[:3])):.3g} of the weight, the moment {np.max(np.abs(r[3:])):.3g} of the "
                          f"weight times the largest arm, at roll {math.degrees(x[0]):.3g} deg, pitch "
-                         f"{math.degrees(x[1]):.3g} deg): beyond what the rotors can balance")
+                         f"{math.degrees(x[1]):.3g} deg), where the search ended: beyond what the rotors balance, "
+                         "or a trim the search does not reach")
     v_b, _ = state(x)
     omega = x[2:] * om_h
     w = vehicle_wrench(vehicle, params, v_b, still, omega, air=air, discretization=discretization)
     power = float(sum(float(ld.power[0]) for ld in w.loads))
     tip = max(om * rot.propeller.radius + V for om, rot in zip(omega, vehicle.rotors))  # (the advancing tip's)
     mach = tip / model_air(params, air).speed_of_sound
-    if mach > TIP_MACH_WARN:
-        import warnings
+    import warnings
 
+    ring = [k + 1 for k, ld in enumerate(w.loads) if bool(np.asarray(ld.vortex_ring).reshape(-1)[0])]
+    if ring:
+        warnings.warn(f"rotor(s) {', '.join(map(str, ring))} trim in the vortex-ring state (climb_rate {Vc:g} m/s): "
+                      "momentum theory is not predictive there (docs/models.md), so this trim is rough",
+                      UserWarning, stacklevel=2)
+    if mach > TIP_MACH_WARN:
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
                       "rad/s): these loads mean little", UserWarning, stacklevel=2)
     return VehicleTrim(V, Vc, float(x[0]), float(x[1]), omega, v_b, power, w)
