@@ -126,3 +126,29 @@ def test_a_vehicle_name_is_no_vehicle_and_a_vortex_ring_trim_is_warned_of(neurob
         pm.trim_vehicle("neurobem_quadrotor", params, 5.0)
     with pytest.warns(UserWarning, match=r"trim in the vortex-ring state \(climb_rate -6 m/s\)"):
         pm.trim_vehicle(vehicle, params, 6.0, -6.0)  # (straight down at 6 m/s: a review found it trimmed silently)
+
+
+def test_the_command_gives_the_functions_trims(neurobem, capsys):
+    """`propmap trim-vehicle`: the table and the JSON are trim_vehicle's (rpm = Omega * 30 / pi);
+    bad speeds and a flight it cannot trim end with one line, exit 2."""
+    import json
+
+    from propmap.cli.main import main
+
+    vehicle, params = neurobem
+    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "0,10", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    want = pm.trim_vehicle(vehicle, params, 10.0)
+    row = got["trims"][1]
+    assert row["pitch_deg"] == pytest.approx(math.degrees(want.pitch), abs=1e-9)
+    np.testing.assert_allclose(row["rotor_rpm"], want.rotor_omega * 30 / math.pi, rtol=1e-12)
+    assert row["power_W"] == pytest.approx(want.power, rel=1e-12) and got["params"] == "generic"
+    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "10"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[1].split()[:3] == ["V", "[m/s]", "roll"] and lines[2].split()[:3] == ["10", "0.000", "-4.124"]
+    for args, said in ((["--airspeed", "5,x"], "--airspeed must be 1 to 200 comma-separated speeds"),
+                       (["--airspeed", "5", "--climb-rate", "7"], "--climb-rate must be a speed within [-5, 5] m/s"),
+                       (["--airspeed", "100"], "--airspeed 100: airspeed 100 m/s, climb_rate 0 m/s: no trim found")):
+        assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", *args]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and err.startswith(f"propmap: error: {said}"), err

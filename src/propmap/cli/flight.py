@@ -190,6 +190,29 @@ def _samples(logs, veh, rate_hz):
     return samples
 
 
+def _vehicle_sets(veh, vehicle, params_spec, air_choice):
+    """(vehicle, params, air, label, sets) of a command given a vehicle file and --params: with
+    --params one set for every rotor (the rotors' own sets dropped, said), else the vehicle's
+    rotor sets (one label for all where they are one, each its own otherwise) and 'generic' for
+    a rotor without one (``sets``: each rotor's label); each rotor's propeller and set checked as
+    `loads` checks them."""
+    from ..io.inputs import show_path
+    from ..vehicle.file import rotor_file_specs
+
+    own = rotor_file_specs(vehicle) if params_spec is None else ()
+    spec = params_spec if params_spec is not None else (
+        own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
+    params, air, label = load_params("generic" if spec is None else spec, option="--params")
+    sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
+    if len(set(sets)) > 1:
+        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
+    _check_rotor_sets(veh, sets)
+    air = resolve_air(air, air_choice)
+    if params_spec is not None:
+        veh = _one_set(veh, "--params gives every rotor's set")
+    return veh, params, air, label, sets
+
+
 def _one_set(veh, why: str):
     """The vehicle with its rotors' own parameter sets removed (said in a warning), so that one
     set reaches every rotor."""
@@ -522,23 +545,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
     veh, _ = _fitted_vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag, centre of mass
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
-    from ..io.inputs import show_path
-
-    from ..vehicle.file import rotor_file_specs
-
-    # the vehicle's rotor sets where no --params: one set for all (its label, air and coverage), or each its own
-    own = rotor_file_specs(vehicle) if params_spec is None else ()
-    spec = params_spec if params_spec is not None else (
-        own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
-    params, air, label = load_params("generic" if spec is None else spec, option="--params")
-    sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
-    if len(set(sets)) > 1:
-        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
-    _check_rotor_sets(veh, sets)
-    air = resolve_air(air, air_choice)
+    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)
     body = veh.body_drag
-    if params_spec is not None:
-        veh = _one_set(veh, "--params gives every rotor's set")
     (log,) = _logs([log_path], _motor_map(motor_map), len(veh.rotors))
     samples = _samples([log], veh, 1e4)  # every sample
     from ..vehicle import vehicle_wrench

@@ -21,6 +21,7 @@ from .loads import loads
 from .map import map_command
 from .props import props
 from .trim import trim_command
+from .trim_vehicle import trim_vehicle_command
 from .validate import validate
 
 
@@ -30,7 +31,8 @@ def cli() -> None:
     """Thrust, rotor drag and torque of small propellers (Gill & D'Andrea 2017)."""
 
 
-for _cmd in (props, loads, trim_command, wrench_command, map_command, export_sim_command, validate, fit, demo):
+for _cmd in (props, loads, trim_command, trim_vehicle_command, wrench_command, map_command, export_sim_command,
+             validate, fit, demo):
     cli.add_command(_cmd)
 fit.add_command(fit_flight_command)
 

@@ -1,0 +1,82 @@
+"""``propmap trim-vehicle``: a multirotor's attitude, rotor speeds and power in steady straight
+flight at one or more airspeeds (:func:`propmap.trim_vehicle`)."""
+
+from __future__ import annotations
+
+import math
+
+import click
+
+from ..core.units import RPM
+from ._common import InputError, PathArg, echo_json, with_air_options
+
+#: the most airspeeds one call trims (each about 0.1 s)
+MAX_SPEEDS = 200
+
+
+def _speeds(text: str) -> list:
+    """--airspeed's comma-separated speeds [m/s]."""
+    try:
+        out = [float(v) for v in str(text).split(",") if v.strip()]
+    except ValueError:
+        out = []
+    if not out or len(out) > MAX_SPEEDS or not all(math.isfinite(v) and 0.0 <= v <= 100.0 for v in out):
+        raise InputError(f"--airspeed must be 1 to {MAX_SPEEDS} comma-separated speeds in [0, 100] m/s (e.g. "
+                         f"0,5,10), got {str(text)[:60]!r}")
+    return out
+
+
+@click.command("trim-vehicle")
+@click.option("--vehicle", type=PathArg(text=True), required=True,
+              help="Vehicle TOML, or a bundled example's name (quadrotor, neurobem_quadrotor).")
+@click.option("--airspeed", "airspeed", default="0", show_default=True,
+              help="Speed(s) along the flight path [m/s], comma-separated, each in [0, 100].")
+@click.option("--climb-rate", "climb_rate", type=float, default=0.0, show_default=True,
+              help="Vertical part of the speed [m/s], up positive, |climb rate| <= each airspeed.")
+@click.option("--params", "params_spec", default=None,
+              help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
+                   "else 'generic'.")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@with_air_options
+def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, air_choice):
+    """Roll, pitch, rotor speeds and shaft power of the --vehicle in steady straight flight,
+    nose first, in still air (docs/flight.md, Hover and trim in steady flight).
+
+    Roll is right side down positive, pitch nose up positive; the rotors in the file's order.
+    """
+    from ..core.solver import SolverError, model_air
+    from ..vehicle import trim_vehicle
+    from .flight import _fitted_vehicle, _vehicle_sets
+
+    speeds = _speeds(airspeed)
+    if not math.isfinite(climb_rate) or abs(climb_rate) > min(speeds):
+        slow = min(speeds)
+        raise InputError(f"--climb-rate must be a speed within [{-slow if slow else 0.0:g}, {slow:g}] m/s (at most "
+                         f"the slowest --airspeed), got {climb_rate!r}")
+    veh, _ = _fitted_vehicle(vehicle, params_spec)  # (a flight fit's [body] table: its airframe, as wrench takes it)
+    veh, params, air, label, _ = _vehicle_sets(veh, vehicle, params_spec, air_choice)
+    rows = []
+    for V in speeds:
+        try:
+            t = trim_vehicle(veh, params, V, climb_rate, air=air)
+        except ValueError as exc:
+            raise InputError(f"--airspeed {V:g}: {exc}") from None
+        except SolverError as exc:
+            raise click.ClickException(str(exc)) from None
+        rows.append({"airspeed": V, "climb_rate": climb_rate, "roll_deg": math.degrees(t.roll),
+                     "pitch_deg": math.degrees(t.pitch), "rotor_rpm": [float(w) / RPM for w in t.rotor_omega],
+                     "power_W": t.power})
+    if as_json:
+        echo_json({"vehicle": str(vehicle), "params": label, "mass_kg": veh.mass,
+                   "rho_kg_m3": model_air(params, air).rho, "trims": rows,
+                   "units": {"airspeed": "m/s", "climb_rate": "m/s", "roll_deg": "deg", "pitch_deg": "deg",
+                             "rotor_rpm": "rpm", "power_W": "W"}})
+        return
+    n = len(veh.rotors)
+    click.echo(f"{veh.name or vehicle}: {veh.mass:g} kg, {n} rotors (params {label}); steady flight, climb rate "
+               f"{climb_rate:g} m/s")
+    click.echo(f"{'V [m/s]':>8}{'roll [deg]':>12}{'pitch [deg]':>13}" + "".join(f"{f'rotor {k + 1} [rpm]':>16}"
+                                                                            for k in range(n)) + f"{'power [W]':>11}")
+    for r in rows:
+        click.echo(f"{r['airspeed']:>8g}{round(r['roll_deg'], 3) + 0.0:>12.3f}{round(r['pitch_deg'], 3) + 0.0:>13.3f}"
+                   + "".join(f"{w:>16.1f}" for w in r["rotor_rpm"]) + f"{r['power_W']:>11.2f}")
