@@ -152,3 +152,20 @@ def test_the_command_gives_the_functions_trims(neurobem, capsys):
         assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", *args]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and err.startswith(f"propmap: error: {said}"), err
+
+
+def test_the_command_warns_of_rotors_beyond_their_data(tmp_path, capsys):
+    """The command keeps the API's tip-Mach warning to itself, as every command does, and says
+    its own (coverage_messages, as wrench says it per rotor set): the vehicle at 10 kg instead of
+    0.772 hovers at tip Mach 0.77."""
+    from propmap.cli.main import main
+
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    for f in examples.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    text = (examples / "neurobem_quadrotor.toml").read_text().replace("mass = 0.772", "mass = 10.0", 1)
+    (tmp_path / "heavy.toml").write_text(text.replace("inertia = [0.0025, 0.0021, 0.0043]",
+                                                      "inertia = [0.03, 0.027, 0.055]", 1))
+    assert main(["trim-vehicle", "--vehicle", str(tmp_path / "heavy.toml")]) == 0
+    err = capsys.readouterr().err
+    assert "warning: tip Mach number up to 0.7" in err and err.count("Mach") == 1, err

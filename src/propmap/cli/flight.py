@@ -592,12 +592,20 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
             click.echo(f"zero-moment predictor: M {err['M_zero']:.4f} N m")
     click.echo(f"wrote {out}", err=True)
     # the log's rotor operating points beyond the data behind the parameters (a fitted file's [coverage])
+    _rotor_coverage(veh, sets, [[ld] for ld in w.loads], air)
+
+
+def _rotor_coverage(veh, sets, loads, air) -> None:
+    """coverage_messages for the rotors' operating points (``loads``: per rotor, a list of its
+    RotorLoads), once per propeller and set (each rotor's own set where the vehicle file names
+    one, with its coverage)."""
     import numpy as np
 
-    # each rotor's own set where the vehicle file names one (with its coverage), once per propeller and set
     for (name, set_label), prop in {(r.propeller.name, k): r.propeller for r, k in zip(veh.rotors, sets)}.items():
-        ld = [w.loads[i] for i, r in enumerate(veh.rotors) if r.propeller.name == name and sets[i] == set_label]
-        rpm = np.concatenate([x.omega for x in ld]) / RPM
+        ld = [x for i, r in enumerate(veh.rotors) if r.propeller.name == name and sets[i] == set_label
+              for x in loads[i]]
+        rpm = np.concatenate([np.ravel(x.omega) for x in ld]) / RPM
         coverage_messages(prop, set_label, air, *envelope_extremes(
-            prop, rpm, np.concatenate([x.airspeed for x in ld]), np.degrees(np.concatenate([x.incidence for x in ld]))),
+            prop, rpm, np.concatenate([np.ravel(x.airspeed) for x in ld]),
+            np.degrees(np.concatenate([np.ravel(x.incidence) for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))

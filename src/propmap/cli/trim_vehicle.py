@@ -46,7 +46,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     """
     from ..core.solver import SolverError, model_air
     from ..vehicle import trim_vehicle
-    from .flight import _fitted_vehicle, _vehicle_sets
+    from .flight import _fitted_vehicle, _rotor_coverage, _vehicle_sets
 
     speeds = _speeds(airspeed)
     if not math.isfinite(climb_rate) or abs(climb_rate) > min(speeds):
@@ -54,8 +54,8 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
         raise InputError(f"--climb-rate must be a speed within [{-slow if slow else 0.0:g}, {slow:g}] m/s (at most "
                          f"the slowest --airspeed), got {climb_rate!r}")
     veh, _ = _fitted_vehicle(vehicle, params_spec)  # (a flight fit's [body] table: its airframe, as wrench takes it)
-    veh, params, air, label, _ = _vehicle_sets(veh, vehicle, params_spec, air_choice)
-    rows = []
+    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)
+    rows, trims = [], []
     for V in speeds:
         try:
             t = trim_vehicle(veh, params, V, climb_rate, air=air)
@@ -63,9 +63,14 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
             raise InputError(f"--airspeed {V:g}: {exc}") from None
         except SolverError as exc:
             raise click.ClickException(str(exc)) from None
+        trims.append(t)
         rows.append({"airspeed": V, "climb_rate": climb_rate, "roll_deg": math.degrees(t.roll),
                      "pitch_deg": math.degrees(t.pitch), "rotor_rpm": [float(w) / RPM for w in t.rotor_omega],
                      "power_W": t.power})
+    # the rotors' operating points beyond the data behind their sets, and a fast tip (the CLI keeps the API's
+    # tip-Mach warning to itself: _common.coverage_messages says it, from Mach 0.7)
+    _rotor_coverage(veh, sets, [[t.wrench.loads[i] for t in trims] for i in range(len(veh.rotors))],
+                    model_air(params, air))
     if as_json:
         echo_json({"vehicle": str(vehicle), "params": label, "mass_kg": veh.mass,
                    "rho_kg_m3": model_air(params, air).rho, "trims": rows,
