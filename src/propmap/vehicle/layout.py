@@ -223,7 +223,8 @@ def body_to_world(pitch, roll) -> np.ndarray:
     Parameters
     ----------
     pitch, roll : array_like, shape (N,)
-        Attitude [rad] (as :class:`LevelFlightData`), nose-up and right-wing-down positive.
+        Attitude [rad], nose-up and right-wing-down positive (a level-flight data set's, a
+        trim's: docs/nomenclature.md).
         Any shape, the two the same (they do not broadcast against each other; scalars
         give one matrix).
 

@@ -22,6 +22,7 @@ load among its rotors depends on the search, a review, 2026-11-28).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -122,8 +123,9 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
 
     Notes
     -----
-    Costs about 10-30 vehicle_wrench calls of one sample (n_rotors + 3 each iteration of the
-    differenced Jacobian). The balance leaves out what the vehicle model leaves out: the
+    Costs 15-50 vehicle_wrench calls of one sample (n_rotors + 3 each iteration of the
+    differenced Jacobian), besides hover_omega's: the NeuroBEM quadrotor 15 at rest and 43-50 at
+    5-15 m/s, 0.04-0.12 s (2-core AMD EPYC, 2026-11-28). The balance leaves out what the vehicle model leaves out: the
     airframe's aerodynamic moment (its drag acts at the centre of mass) and, unless the vehicle
     file sets ``rotor_interference``, the rotors' wakes on each other.
     """
@@ -146,19 +148,19 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         g_b = R.T @ np.array([0.0, 0.0, -weight])
         return v_b, g_b
 
-    def residual(x):
+    def balance(x):
         v_b, g_b = state(x)
         w = vehicle_wrench(vehicle, params, v_b, still, x[2:] * om_h, air=air, discretization=discretization)
-        return np.concatenate([(w.force[0] + g_b) / weight, w.moment[0] / (weight * arm)])
+        return np.concatenate([(w.force[0] + g_b) / weight, w.moment[0] / (weight * arm)]), v_b, w
 
     x0 = np.concatenate([[0.0, 0.0], np.ones(n)])
     lo = np.concatenate([[-TILT_MAX, -TILT_MAX], np.full(n, OMEGA_MIN / om_h)])
     hi = np.concatenate([[TILT_MAX, TILT_MAX], np.full(n, OMEGA_MAX / om_h)])
     with supersonic_tips_allowed():  # (the search may try fast rotors on its way; the trim is checked below)
-        x = least_squares(residual, x0, bounds=(lo, hi), method="trf",
+        x = least_squares(lambda x: balance(x)[0], x0, bounds=(lo, hi), method="trf",
                           x_scale=np.concatenate([[0.1, 0.1], np.ones(n)]), xtol=1e-14, ftol=1e-14, gtol=1e-14,
                           max_nfev=200).x
-        r = residual(x)
+        r, v_b, w = balance(x)  # (the trim's wrench, kept)
     if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
         raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found from the hover (the force "
                          "balance reached "
@@ -166,14 +168,10 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
                          f"weight times the largest arm, at roll {math.degrees(x[0]):.3g} deg, pitch "
                          f"{math.degrees(x[1]):.3g} deg), where the search ended: beyond what the rotors balance, "
                          "or a trim the search does not reach")
-    v_b, _ = state(x)
     omega = x[2:] * om_h
-    w = vehicle_wrench(vehicle, params, v_b, still, omega, air=air, discretization=discretization)
     power = float(sum(float(ld.power[0]) for ld in w.loads))
     tip = max(om * rot.propeller.radius + V for om, rot in zip(omega, vehicle.rotors))  # (the advancing tip's)
     mach = tip / model_air(params, air).speed_of_sound
-    import warnings
-
     ring = [k + 1 for k, ld in enumerate(w.loads) if bool(np.asarray(ld.vortex_ring).reshape(-1)[0])]
     if ring:
         warnings.warn(f"rotor(s) {', '.join(map(str, ring))} trim in the vortex-ring state (climb_rate {Vc:g} m/s): "
