@@ -17,8 +17,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from propmap.cli.main import main
+from propmap.io.inputs import short_path
 
 #: a tiny grid: a map in well under a second
 TINY = ["--rpm", "3000:9000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5", "--check-points", "0"]
@@ -262,11 +265,32 @@ def test_fit_out_empty_and_long_source_are_named(capsys, tmp_path):
 
 
 def test_several_sources_name_the_one_that_is_not_uiuc(capsys, tmp_path):
-    csv = tmp_path / "loads.csv"
+    # in a folder deep enough that the path is longer than a message shows (before 2026-11-28 the message
+    # cut the path's end: "SOURCE: /tmp/.../loads... is not", without the file's name)
+    folder = tmp_path / "wind_tunnel_campaign_2026" / "stand_exports_after_calibration"
+    folder.mkdir(parents=True)
+    csv = folder / "loads.csv"
     csv.write_text("rpm,thrust\n5000,1.0\n6000,1.5\n")
+    assert len(str(csv)) > 80
     code, _, err = run(capsys, "fit", "loads", UIUC / "apce_10x5_static_pg0819.txt", csv, "--prop", "apce_10x5",
                        "--out", tmp_path / "f.toml")
-    assert one_line_error(code, err, f"SOURCE: {csv} is not a UIUC-format static"), err
+    assert one_line_error(code, err, f"SOURCE: {str(csv)[:19]}"), err
+    assert "...el_campaign_2026/stand_exports_after_calibration/loads.csv is not a UIUC-format static" in err, err
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(st.characters(codec="utf-8"), max_size=300).filter(str.isprintable), st.integers(8, 200))
+def test_a_path_in_a_message_keeps_its_start_and_its_end(path, n):
+    from propmap.io.inputs import short_path
+
+    s = short_path(path, n)
+    if len(path) <= n:
+        assert s == path
+    else:
+        head = (n - 3) // 4
+        assert len(s) == n and s == path[:head] + "..." + path[len(path) - (n - 3 - head):]
+    assert short_path("/home/alice/" + "campaign/" * 9 + "apce_10x7.nc").endswith("/campaign/apce_10x7.nc")
+    assert short_path("a\nb.nc") == repr("a\nb.nc")  # a control character: quoted, as show_path does
 
 
 @pytest.mark.parametrize("address, match", [
@@ -316,9 +340,21 @@ def test_edited_map_is_refused_by_check_naming_the_file(capsys, tmp_path, tiny_m
     edit(tiny_map.copy(deep=True)).to_netcdf(path)
     before = path.read_bytes()
     code, out, err = run(capsys, "map", "--check", path, "--check-points", "10")
-    assert one_line_error(code, err, f"--check: {path}: "), err
+    assert one_line_error(code, err, f"--check: {short_path(path)}: "), err
     assert match in err, err
     assert out == "" and path.read_bytes() == before
+
+
+def test_check_of_a_map_in_a_deep_folder_names_the_file(capsys, tmp_path, tiny_map):
+    folder = tmp_path / "quadrotor_maps_2026" / "campaign_3_after_the_new_motors"
+    folder.mkdir(parents=True)
+    path = folder / "apce_10x7_map.nc"
+    tiny_map.assign_attrs(rho_kg_m3=-1.0).to_netcdf(path)
+    assert len(str(path)) > 80
+    code, out, err = run(capsys, "map", "--check", path, "--check-points", "10")
+    # the name kept (before 2026-11-28: "campaign_3_after_the_new_motors/apce_10x7_m: attribute ...")
+    assert one_line_error(code, err, "...maps_2026/campaign_3_after_the_new_motors/apce_10x7_map.nc: attribute "
+                                     "rho_kg_m3"), err
 
 
 # ---- (13) SIGTERM of validate --all: no resource-tracker noise ----

@@ -11,7 +11,6 @@ a map's interpolation error against the model that made it (here, so that
 from __future__ import annotations
 
 import math
-import os
 import threading
 from typing import NamedTuple
 
@@ -20,6 +19,7 @@ import numpy as np
 from .core.units import RPM
 from .core._interp import snap_incidence, snap_incidence_scalar
 from .core.geometry import has_bool, refuse_masked
+from .io.inputs import short_path
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
 
@@ -295,7 +295,7 @@ class RotorMap:
         try:
             return cls(ds, interpolation)
         except ValueError as exc:
-            raise ValueError(f"{os.fspath(path)!s:.80}: {exc}") from None
+            raise ValueError(f"{short_path(path)}: {exc}") from None
 
     def _queries(self, omega, airspeed, incidence, out_of_grid):
         arrays = []

@@ -139,7 +139,9 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
         except ValueError as exc:
             raise InputError(f"PROP: {exc}") from None
         except OSError as exc:
-            raise InputError(f"PROP: {_short(spec)}: {exc.strerror or exc}") from None
+            from ..io.inputs import short_path
+
+            raise InputError(f"PROP: {short_path(spec)}: {exc.strerror or exc}") from None
     for w in caught:
         if issubclass(w.category, UserWarning):
             warn(str(w.message))
@@ -183,7 +185,9 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
     except ValueError as exc:
         raise InputError(f"{option}: {exc}") from None
     except OSError as exc:
-        raise InputError(f"{option}: {_short(spec)}: {exc.strerror or exc}") from None
+        from ..io.inputs import short_path
+
+        raise InputError(f"{option}: {short_path(spec)}: {exc.strerror or exc}") from None
     return params, air, spec
 
 

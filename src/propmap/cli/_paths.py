@@ -18,13 +18,15 @@ def refuse_copies(paths, option: str, consequence: str) -> None:
     same file as Y: <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
     import hashlib
 
+    from ..io.inputs import short_path
+
     stats = []
     for p in paths:
         try:
             stats.append((p, os.stat(p)))
         except OSError as exc:  # (named as the option's, as its reader would)
             why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
-            raise InputError(f"{option}: {_short(str(p))}: {why}") from None
+            raise InputError(f"{option}: {short_path(p)}: {why}") from None
     sizes = [st.st_size for _, st in stats]
     seen: dict = {}
     for p, st in stats:
@@ -34,7 +36,7 @@ def refuse_copies(paths, option: str, consequence: str) -> None:
                 keys.append((hashlib.file_digest(fh, "sha256").hexdigest(), "a copy of"))
         for key, what in keys:
             if key in seen:
-                raise InputError(f"{option}: {_short(str(p))} is {what} {_short(str(seen[key]))}: {consequence}")
+                raise InputError(f"{option}: {short_path(p)} is {what} {short_path(seen[key])}: {consequence}")
             seen[key] = p
 
 
@@ -99,6 +101,8 @@ def check_outputs(outputs, inputs) -> None:
         symbolic links or hard links). A symbolic link to a file is checked, and written,
         as that file.
     """
+    from ..io.inputs import short_path
+
     ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
     seen: dict[str, str] = {}
     for option, path in outputs:
@@ -115,7 +119,7 @@ def check_outputs(outputs, inputs) -> None:
             _check_output(option, p, ins)
             real = os.path.realpath(p)
         except OSError as exc:
-            raise InputError(f"{option}: {exc.strerror or exc} ({str(p)[:80]}{'...' if len(str(p)) > 80 else ''})") \
+            raise InputError(f"{option}: {exc.strerror or exc} ({short_path(p)})") \
                 from None
         if real in seen:
             raise InputError(f"{option}: {p} is also the file of {seen[real]}; give outputs different names")
@@ -204,12 +208,14 @@ def _probe(option: str, folder: Path, name: str) -> None:
 
 def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
     """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
+    from ..io.inputs import short_path
+
     if out_dir is None or str(out_dir) == "":
         raise InputError(f"{option}: the path is empty")
     try:
         exists = out_dir.exists()
     except OSError as exc:  # a name too long for the system, a loop of links
-        raise InputError(f"{option}: {str(out_dir)[:80]}{'...' if len(str(out_dir)) > 80 else ''}: "
+        raise InputError(f"{option}: {short_path(out_dir)}: "
                          f"{exc.strerror or exc}") from None
     if exists and not out_dir.is_dir():
         raise InputError(f"{option}: {out_dir} exists and is not a folder")

@@ -93,6 +93,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     """
     from ..identify import DataError, loads_from_catalogue, loads_from_uiuc_files, read_loads
     from ..io.catalogue import catalogue, get_entry
+    from ..io.inputs import short_path
     from ..io.readers import looks_like_uiuc
 
     def refuse_stand_options(what: str) -> None:  # options of a stand's CSV that would be ignored
@@ -127,7 +128,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
             warn_other_propeller(sources, prop)
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
         if len(sources) > 1:
-            raise InputError(f"SOURCE: {_short(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
+            raise InputError(f"SOURCE: {short_path(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
                              "(J CT CP eta) file; several files must all be, or give one CSV at a time")
         data = read_loads(sources[0], min_points=min_points, rpm_source=rpm_source, pole_pairs=pole_pairs)
         return data, prop, None, Path(sources[0]).name

@@ -141,8 +141,9 @@ def _main(argv: list[str] | None) -> int:
         said.append("propmap: interrupted")
         return 130
     except OSError as exc:  # an unusable file the commands did not name (the system's reason and the file)
-        name = str(exc.filename or "")
-        name = name if len(name) <= 80 else name[:77] + "..."
+        from ..io.inputs import short_path
+
+        name = short_path(exc.filename) if exc.filename else ""
         said.append(f"propmap: error: {exc.strerror or _one_line(exc)}{': ' + name if name else ''}")
         return 2
     except ValueError as exc:  # bad input that reached the library

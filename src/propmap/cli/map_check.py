@@ -45,6 +45,7 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
     """``--check``: recompute a map's error at fresh points, per propeller of a map over several;
     exit CHECK_FAILED when a cubic maximum outside the flagged regions exceeds the threshold, or
     when every point lies in a flagged cell (nothing measured: not a pass; a user-level audit)."""
+    from ..io.inputs import short_path
     from ..io.mapfile import map_props
     from ..maps import RotorMap
 
@@ -58,11 +59,12 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
     except ValueError as exc:
         raise InputError(f"--check: {exc}") from None
     if props is None and only is not None:
-        raise InputError(f"--props: {str(path)[:80]} is a map of one propeller; --props applies to a map over several")
+        raise InputError(f"--props: {short_path(path)} is a map of one propeller; --props applies to a map over "
+                         "several")
     if props is not None and only is not None:
         unknown = [p for p in only if p not in props]
         if unknown:
-            raise InputError(f"--props: {', '.join(unknown)} not in {str(path)[:80]} (it holds {len(props)}: "
+            raise InputError(f"--props: {', '.join(unknown)} not in {short_path(path)} (it holds {len(props)}: "
                              f"{', '.join(props[:4])}{', ...' if len(props) > 4 else ''})")
     selected = [None] if props is None else list(only or props)
     maps = []
@@ -78,7 +80,7 @@ def _check(path: Path, n: int, as_json: bool, only, max_error_pct) -> None:
         try:
             res = rm.check(n, seed=seed)
         except ValueError as exc:
-            raise InputError(f"--check: {str(path)[:80]}{'' if prop is None else f' [{prop}]'}: {exc}") from None
+            raise InputError(f"--check: {short_path(path)}{'' if prop is None else f' [{prop}]'}: {exc}") from None
         worst = {k: res[f"check_cubic_{k}_max"] / (2.0 if k == "drag" else 1.0) for k in ("thrust", "torque", "drag")}
         over = [k for k, v in worst.items() if not math.isnan(v) and v > limit / 100]
         # nothing measured is no pass: every point flagged, or no finite error at the unflagged ones

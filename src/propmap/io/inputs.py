@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["MAX_FILE_BYTES", "MAX_SMALL_FILE_BYTES", "show_path", "read_input_bytes", "decode_input_text",
+__all__ = ["MAX_FILE_BYTES", "MAX_SMALL_FILE_BYTES", "show_path", "short_path", "read_input_bytes", "decode_input_text",
            "parse_number", "header_separator", "SEPARATORS"]
 
 #: the largest data file (loads and level-flight CSVs) a reader accepts [bytes]
@@ -50,6 +50,33 @@ def show_path(path) -> str:
     """
     s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
     return s if s.isprintable() else repr(s)
+
+
+def short_path(path, n: int = 80) -> str:
+    """``path`` as :func:`show_path` gives it, cut to at most ``n`` characters in its middle.
+
+    The end of a path, the file's name, is what a message must show: a path longer than ``n``
+    keeps its first quarter and its end with "..." between (``/home/alice/...
+    /campaign_3/maps/apce_10x7.nc``), where cutting its end lost the name (``.../maps/apce_10``
+    in messages before 2026-11-28).
+
+    Parameters
+    ----------
+    path : str, bytes or PathLike
+    n : int
+        The longest text returned, at least 8.
+
+    Returns
+    -------
+    str
+        The path as written where it fits, else its first ``(n - 3) // 4`` characters, "..."
+        and its last ones, ``n`` characters in all.
+    """
+    s = show_path(path)
+    if len(s) <= n:
+        return s
+    head = (n - 3) // 4
+    return s[:head] + "..." + s[len(s) - (n - 3 - head):]
 
 
 def as_path(path, name: str = "path") -> Path:

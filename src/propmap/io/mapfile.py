@@ -38,6 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .inputs import short_path
 from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, _short, check_dataset, check_propeller,
                        map_model)
 
@@ -60,9 +61,7 @@ NETCDF_LOCK = threading.RLock()
 # ---------------------------------------------------------------- reading a file
 
 def _where(path) -> str:
-    s = os.fspath(path)
-    s = s if isinstance(s, str) else os.fsdecode(s)
-    return s if len(s) <= 80 else s[:77] + "..."
+    return short_path(path)
 
 
 def _stat_regular(path):
