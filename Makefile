@@ -21,8 +21,11 @@ demo: $(STAMP)
 # so it is kept between runs: the first propmap call after make test or make demo is fast
 NUMBA_CACHE := find src -name '*.nbi' -o -name '*.nbc'
 
+# the suite in parallel processes, one per logical CPU, at most 4 (pytest-xdist): the kernels'
+# first compile is most of a fresh checkout's time, and each worker compiles what it needs
+# before another has cached it (benchmarks/README.md, Compile time)
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n logical --maxprocesses 4
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_solver.py
