@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 
 import propmap as pm
 from propmap.cli.main import main
+from propmap.io.inputs import short_path
 from propmap.maps import RotorMap, build_map, write_map
 
 FUZZ = settings(derandomize=True, database=None, deadline=None, max_examples=150, print_blob=True,
@@ -156,7 +157,7 @@ def test_damaged_file_gives_a_value_error_naming_it(tmp_path, tiny_bytes, name):
     try:
         rm = RotorMap.open(path)
     except ValueError as exc:
-        assert str(exc).startswith(str(path)), str(exc)
+        assert str(exc).startswith(short_path(path) + ":"), str(exc)  # the path, cut in its middle if long
     else:
         assert_valid(rm)  # a flip in padding may leave a valid map
 
@@ -383,7 +384,7 @@ def test_damaged_bytes_give_a_valid_map_or_a_value_error(tmp_path_factory, tiny_
     try:
         rm = RotorMap.open(path)
     except ValueError as exc:
-        assert str(exc).startswith(str(path)), str(exc)
+        assert str(exc).startswith(short_path(path) + ":"), str(exc)  # the path, cut in its middle if long
         return
     assert_valid(rm)
 
