@@ -274,7 +274,7 @@ def test_a_rotors_own_set_in_other_air_is_warned_of():
 def test_flight_commands_check_each_rotors_set(capsys):
     """wrench and fit flight never asked whether a rotor's set was calibrated on another propeller
     (`loads` does for one; a user-level audit read it in the code)."""
-    from propmap.cli.flight import _check_rotor_sets
+    from propmap.cli._vehicle import _check_rotor_sets
 
     veh = pm.read_vehicle(VEHICLE)
     _check_rotor_sets(veh, ["calibrated:apce_8x6"] * 4)

@@ -122,7 +122,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                          "the hover rpm, which --hover-rpm gives; only rotorpy's export writes the vehicle itself): "
                          "give one of them")
     if vehicle is not None:
-        from .flight import _fitted_vehicle
+        from ._vehicle import _fitted_vehicle
         from ..vehicle import hover_omega
 
         veh, fitted = _fitted_vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (c_D)

@@ -211,7 +211,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
     if c_header.vehicle is not None:
-        from .flight import _fitted_vehicle
+        from ._vehicle import _fitted_vehicle
 
         veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
 

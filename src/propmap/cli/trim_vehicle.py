@@ -46,7 +46,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     """
     from ..core.solver import SolverError, model_air
     from ..vehicle import trim_vehicle
-    from .flight import _fitted_vehicle, _rotor_coverage, _vehicle_sets
+    from ._vehicle import _fitted_vehicle, _rotor_coverage, _vehicle_sets
 
     speeds = _speeds(airspeed)
     if not math.isfinite(climb_rate) or abs(climb_rate) > min(speeds):

@@ -1,0 +1,112 @@
+"""The vehicle file and its parameter sets as the vehicle commands take them (``fit flight``,
+``wrench``, ``trim-vehicle``, ``export-sim --vehicle``, ``map --vehicle``): the
+file read with its errors as the option's, a flight fit's ``[body]`` table, the rotors' sets
+and their coverage."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..core.units import RPM
+from ._common import InputError, coverage_messages, envelope_extremes, load_params, resolve_air
+
+
+def _vehicle(path: Path):
+    from ..vehicle import VehicleFileError, read_vehicle
+
+    try:
+        return read_vehicle(path)
+    except VehicleFileError as exc:
+        raise InputError(f"--vehicle: {exc}") from None
+
+
+def _check_rotor_sets(veh, labels) -> None:
+    """check_section_match for each rotor's propeller and set label, once per pair (a set
+    calibrated on another propeller, the generic set on a rotor-like blade: said as `loads` says
+    it for one propeller)."""
+    from ._common import check_section_match
+
+    for prop, label in dict.fromkeys((r.propeller.name, lab) for r, lab in zip(veh.rotors, labels)):
+        check_section_match(next(r.propeller for r in veh.rotors if r.propeller.name == prop), label)
+
+
+def _fitted_vehicle(path: Path, params_spec):
+    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` is a parameter
+    file with the ``[body]`` table a flight fit writes (the airframe drag, the centre of mass,
+    the rotors' wake interference), the vehicle with those in place of the file's, and whether
+    it had one (what `wrench`, `export-sim --vehicle` and the C vehicle export all model)."""
+    from dataclasses import replace
+
+    from ..identify.flight import shift_centre_of_mass
+    from ..io.params_file import ParamsFileError, read_body
+
+    veh = _vehicle(path)
+    if params_spec is None or not Path(params_spec).is_file():
+        return veh, False
+    try:
+        table = read_body(params_spec)
+    except ParamsFileError as exc:
+        raise InputError(f"--params: {exc}") from None
+    if table is None:
+        return veh, False
+    veh = replace(veh, body_drag=table.drag)
+    if table.centre_of_mass is not None:
+        veh = shift_centre_of_mass(veh, table.centre_of_mass)
+    if table.rotor_interference is not None:
+        veh = replace(veh, rotor_interference=table.rotor_interference)
+    return veh, True
+
+
+def _vehicle_sets(veh, vehicle, params_spec, air_choice):
+    """(vehicle, params, air, label, sets) of a command given a vehicle file and --params: with
+    --params one set for every rotor (the rotors' own sets dropped, said), else the vehicle's
+    rotor sets (one label for all where they are one, each its own otherwise) and 'generic' for
+    a rotor without one (``sets``: each rotor's label); each rotor's propeller and set checked as
+    `loads` checks them."""
+    from ..io.inputs import show_path
+    from ..vehicle.file import rotor_file_specs
+
+    own = rotor_file_specs(vehicle) if params_spec is None else ()
+    spec = params_spec if params_spec is not None else (
+        own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
+    params, air, label = load_params("generic" if spec is None else spec, option="--params")
+    sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
+    if len(set(sets)) > 1:
+        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
+    _check_rotor_sets(veh, sets)
+    air = resolve_air(air, air_choice)
+    if params_spec is not None:
+        veh = _one_set(veh, "--params gives every rotor's set")
+    return veh, params, air, label, sets
+
+
+def _one_set(veh, why: str):
+    """The vehicle with its rotors' own parameter sets removed (said in a warning), so that one
+    set reaches every rotor."""
+    from dataclasses import replace
+
+    own = [str(k + 1) for k, r in enumerate(veh.rotors) if r.params is not None]
+    if not own:
+        return veh
+    click.echo(f"propmap: warning: the vehicle file's parameter sets of rotor(s) {', '.join(own)} are not used: {why}",
+               err=True)
+    return replace(veh, rotors=[replace(r, params=None) for r in veh.rotors])
+
+
+def _rotor_coverage(veh, sets, loads, air) -> None:
+    """coverage_messages for the rotors' operating points (``loads``: per rotor, a list of its
+    RotorLoads), once per propeller and set (each rotor's own set where the vehicle file names
+    one, with its coverage)."""
+    import numpy as np
+
+    for (name, set_label), prop in {(r.propeller.name, k): r.propeller for r, k in zip(veh.rotors, sets)}.items():
+        ld = [x for i, r in enumerate(veh.rotors) if r.propeller.name == name and sets[i] == set_label
+              for x in loads[i]]
+        rpm = np.concatenate([np.ravel(x.omega) for x in ld]) / RPM
+        coverage_messages(prop, set_label, air, *envelope_extremes(
+            prop, rpm, np.concatenate([np.ravel(x.airspeed) for x in ld]),
+            np.degrees(np.concatenate([np.ravel(x.incidence) for x in ld]))),
+            rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))
+
