@@ -547,3 +547,33 @@ def test_the_error_is_the_last_line_after_the_warnings(capsys, tmp_path):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) >= 2 and err[-1].startswith("propmap: error: ") and all(
         ln.startswith("propmap: warning: ") for ln in err[:-1]), err
+
+
+# ---- a fresh installation's first model command compiles for minutes: said on a terminal ----
+
+def test_a_terminal_is_told_once_when_the_kernels_compile_and_a_pipe_is_not(monkeypatch, capsys):
+    import numba
+
+    from propmap.cli.main import COMPILE_NOTICE, _compile_notice
+
+    def kernel(x):  # compiled in the test, as a kernel of propmap's (the notice is for propmap's own compiles)
+        return x + 1.0
+
+    def other(x):
+        return x - 1.0
+
+    kernel.__module__ = "propmap.core._probe"
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    with _compile_notice(["loads", "apce_8x6", "--rpm", "5000"]):
+        numba.njit(other)(1.0)  # another package's compile: nothing
+        assert capsys.readouterr().err == ""
+        assert numba.njit(kernel)(1.0) == 2.0
+        numba.njit(kernel)(1)  # a second compile (another function object, another signature): said once
+    assert capsys.readouterr().err == COMPILE_NOTICE + "\n"
+    assert "once" in COMPILE_NOTICE and "cache" in COMPILE_NOTICE
+    with _compile_notice(["props"]):  # a command that never runs the model: no listener
+        numba.njit(kernel)(2.0)
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: False)
+    with _compile_notice(["loads", "apce_8x6", "--rpm", "5000"]):  # a pipe or a file: scripts get nothing
+        numba.njit(kernel)(3.0)
+    assert capsys.readouterr().err == ""

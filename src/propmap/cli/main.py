@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import atexit
+import contextlib
 import os
 import signal
 import sys
@@ -99,8 +100,54 @@ def main(argv: list[str] | None = None) -> int:
         from ..io.provenance import source_digest
 
         source_digest()
-    code = _main(argv)
+    with _compile_notice(words):
+        code = _main(argv)
     return 128 + _terminated[-1] if _terminated else code
+
+
+#: said once, on a terminal, when a run compiles the model's kernels: a fresh installation's first model command
+#: compiles for 1-3 minutes on a 2-core machine (README, benchmarks/README.md), silent until then, which a user
+#: could take for a hang
+COMPILE_NOTICE = ("propmap: compiling the model's kernels for this machine, once (a few minutes; later runs load "
+                  "them from the cache)")
+#: the commands and options that never run the model: no listener (numba's import, 0.3 s) for them
+_NO_MODEL = ("props", "-h", "--help", "--version")
+
+
+@contextlib.contextmanager
+def _compile_notice(words):
+    """While the run lasts, :data:`COMPILE_NOTICE` on stderr at the first compile of a propmap
+    kernel (numba's compile event, which a kernel served from the cache does not raise), when
+    stderr is a terminal; nothing for a pipe or a file (scripts, tests), nothing where numba's
+    event API is missing."""
+    try:
+        interactive = sys.stderr.isatty()
+    except (AttributeError, ValueError, OSError):  # (closed or replaced)
+        interactive = False
+    if not interactive or not words or any(w in _NO_MODEL for w in words):
+        yield
+        return
+    try:
+        from numba.core import event
+    except ImportError:  # pragma: no cover (numba without its event API)
+        yield
+        return
+
+    class Notice(event.Listener):
+        said = False
+
+        def on_start(self, ev):
+            dispatcher = ev.data.get("dispatcher") if isinstance(ev.data, dict) else None
+            module = getattr(getattr(dispatcher, "py_func", None), "__module__", "") or ""
+            if not self.said and module.startswith("propmap."):
+                self.said = True
+                click.echo(COMPILE_NOTICE, err=True)
+
+        def on_end(self, ev):
+            pass
+
+    with event.install_listener("numba:compile", Notice()):
+        yield
 
 
 #: the commands whose outputs record the package's source digest (io/provenance.py)
