@@ -12,11 +12,15 @@ aircraft's:
 
     F(v_b, Omega) + m R^T g = 0,    M(v_b, Omega) = 0,    v_b = R^T (V, 0, V_c),
 
-in the unknowns phi, theta and the n rotor speeds Omega_i. A quadrotor has as many unknowns
-as equations; a vehicle with more rotors has more, and the solution taken is the one SciPy's
-trust-region least squares reaches from every rotor at the hover speed of
-:func:`~propmap.vehicle.hover_omega` (not the nearest to it: how a redundant vehicle splits the
-load among its rotors depends on the search, a review, 2026-11-28).
+in the unknowns phi, theta and the n rotor speeds Omega_i, solved by SciPy's trust-region
+least squares from every rotor at the hover speed Omega_h of :func:`~propmap.vehicle.hover_omega`.
+A quadrotor has as many unknowns as equations. A vehicle with more rotors has more, and many
+trims: the one returned is the nearest to the hover speed, the least sum of (Omega_i / Omega_h -
+1)^2 under the six equations (SciPy's SLSQP from the least-squares solution), as a flight
+controller's pseudo-inverse allocation shares a load among redundant rotors to first order.
+Until 2026-11-28 it was wherever the least-squares search ended: for a hexacopter with its
+centre of mass 5 cm forward, 2 cm left, a sum of 0.226 at 15 m/s against 0.124, one rotor at
+0.66 Omega_h where the nearest trim has 0.86 (a review had found it).
 """
 
 from __future__ import annotations
@@ -56,7 +60,8 @@ class VehicleTrim:
         Attitude [rad]: roll right side down positive, pitch nose up positive (a vehicle
         flying forward pitches nose down: negative).
     rotor_omega : ndarray, shape (n_rotors,)
-        Rotor speeds [rad/s], in the vehicle's rotor order.
+        Rotor speeds [rad/s], in the vehicle's rotor order (with more than four rotors, the trim
+        nearest the hover speed: module docstring).
     velocity : ndarray, shape (3,)
         The flight's velocity in body axes [m/s] (vehicle_wrench's ``velocity``).
     power : float
@@ -125,9 +130,12 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     -----
     Costs 15-50 vehicle_wrench calls of one sample (n_rotors + 3 each iteration of the
     differenced Jacobian), besides hover_omega's: the NeuroBEM quadrotor 15 at rest and 43-50 at
-    5-15 m/s, 0.04-0.12 s (2-core AMD EPYC, 2026-11-28). The balance leaves out what the vehicle model leaves out: the
-    airframe's aerodynamic moment (its drag acts at the centre of mass) and, unless the vehicle
-    file sets ``rotor_interference``, the rotors' wakes on each other.
+    5-15 m/s, 0.04-0.12 s (2-core AMD EPYC, 2026-11-28). With more than four rotors the search
+    for the nearest trim adds about 10 calls per SLSQP iteration: a hexacopter with an offset
+    centre of mass 74-93 calls in 7-9 iterations, 0.16-0.22 s. The balance leaves out what the
+    vehicle model leaves out: the airframe's aerodynamic moment (its drag acts at the centre of
+    mass) and, unless the vehicle file sets ``rotor_interference``, the rotors' wakes on each
+    other.
     """
     from scipy.optimize import least_squares
 
@@ -160,6 +168,8 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         x = least_squares(lambda x: balance(x)[0], x0, bounds=(lo, hi), method="trf",
                           x_scale=np.concatenate([[0.1, 0.1], np.ones(n)]), xtol=1e-14, ftol=1e-14, gtol=1e-14,
                           max_nfev=200).x
+        if n > 4 and np.max(np.abs(balance(x)[0])) <= TRIM_TOL:  # more unknowns than equations: the nearest trim
+            x = _nearest_trim(lambda x: balance(x)[0], x, lo, hi)
         r, v_b, w = balance(x)  # (the trim's wrench, kept)
     if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
         raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found from the hover (the force "
@@ -181,6 +191,22 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
                       "rad/s): these loads mean little", UserWarning, stacklevel=2)
     return VehicleTrim(V, Vc, float(x[0]), float(x[1]), omega, v_b, power, w)
+
+
+def _nearest_trim(balance, x, lo, hi):
+    """Of the trims of a vehicle with more rotors than four (unknowns x = roll, pitch, Omega_i /
+    Omega_h), the one of least sum (Omega_i / Omega_h - 1)^2, by SciPy's SLSQP from the trim
+    ``x`` under the balance's six equations (``balance(x) = 0``) and the bounds; ``x`` itself where
+    SLSQP does not end on a trim within TRIM_TOL."""
+    from scipy.optimize import minimize
+
+    res = minimize(lambda x: float(np.sum((x[2:] - 1.0) ** 2)), x, method="SLSQP",
+                   jac=lambda x: np.concatenate([[0.0, 0.0], 2.0 * (x[2:] - 1.0)]),
+                   constraints={"type": "eq", "fun": balance}, bounds=list(zip(lo, hi)),
+                   options={"ftol": 1e-14, "maxiter": 50})
+    if res.success and np.all(np.isfinite(res.x)) and np.max(np.abs(balance(res.x))) <= TRIM_TOL:
+        return res.x
+    return x
 
 
 def _number(name: str, value, lo: float, hi: float, shown: str | None = None) -> float:
