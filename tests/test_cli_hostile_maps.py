@@ -291,6 +291,13 @@ def test_a_path_in_a_message_keeps_its_start_and_its_end(path, n):
         assert len(s) == n and s == path[:head] + "..." + path[len(path) - (n - 3 - head):]
     assert short_path("/home/alice/" + "campaign/" * 9 + "apce_10x7.nc").endswith("/campaign/apce_10x7.nc")
     assert short_path("a\nb.nc") == repr("a\nb.nc")  # a control character: quoted, as show_path does
+    long = "/data/" + "x" * 100 + "/b\x1b[2J.nc"  # a long one with a terminal escape: its repr, cut, both quotes kept
+    assert short_path(long) == repr(long)[:19] + "..." + repr(long)[-58:] and short_path(long).endswith(".nc'")
+    assert short_path(Path("/d") / ("y" * 90) / "m.nc").endswith("yyy/m.nc")  # a Path, as its text
+    assert short_path(os.fsencode("/d/" + "z" * 90 + "/m.nc")).endswith("zzz/m.nc")  # bytes, decoded
+    assert short_path(b"/d/\xff" + b"z" * 90).startswith("'/d/\\udcff")  # undecodable bytes: escaped in a repr
+    with pytest.raises(ValueError, match="n must be at least 8"):
+        short_path("/tmp/x.nc", 2)
 
 
 @pytest.mark.parametrize("address, match", [
@@ -436,7 +443,7 @@ def test_a_sigterm_during_the_netcdf_write_is_held_until_it_ends(tmp_path):
     2026-11-26). It is held until the write returns, then stops the run; nothing is left."""
     (tmp_path / "out").mkdir()
     out = subprocess.run([sys.executable, "-c", HELD, str(tmp_path / "out" / "m.nc")], capture_output=True, text=True,
-                         timeout=120, cwd=tmp_path)
+                         timeout=600, cwd=tmp_path)  # (minutes: the child compiles the kernels the cache lacks)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split("\n")[:2] == ["write finished", "stopped 143 []"], out.stdout
 

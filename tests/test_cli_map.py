@@ -127,7 +127,8 @@ def test_map_all_has_a_prop_dimension(capsys, tmp_path):
     script = ("import sys, xarray as xr\nfrom propmap.maps import RotorMap\na = xr.open_dataset(sys.argv[1])\n"
               "m = RotorMap.open(sys.argv[1], prop='apce_8x6')\nb = xr.open_dataset(sys.argv[1])\n"
               "print(list(a.prop.values) == list(b.prop.values) == ['apce_10x7', 'apce_8x6'])\n")
-    child = subprocess.run([sys.executable, "-c", script, str(out)], capture_output=True, text=True, timeout=120)
+    child = subprocess.run([sys.executable, "-c", script, str(out)], capture_output=True, text=True,
+                           timeout=600)  # (minutes: the child compiles the kernels the cache lacks)
     assert (child.returncode, child.stdout.strip()) == (0, "True"), child.stderr[-500:]
 
 

@@ -87,12 +87,15 @@ def test_editing_the_physics_recompiles_instead_of_serving_the_cached_kernels(tm
     solver's nor the sensitivities' (which was stamped with its own file only until 2026-11-23
     and then served the old model's derivatives), is served from the cache any more.
 
-    The copy takes the package's cache files along (the suite has compiled both kernels by
-    now; the stamp is over the sources' contents, so the copy's cache is warm), and after the
+    The copy takes the package's cache files along (warm where the suite has compiled both
+    kernels by now, which another test process under pytest-xdist may not have: then the first
+    run compiles them; the stamp is over the sources' contents, so a copied cache is warm),
+    leaving out the temporary files numba writes a cache file through (another process's,
+    mid-write), and after the
     edit it asks numba's own index loader what it would serve instead of compiling both kernels
     again (that took 216 of the suite's 338 s, 2026-11-24)."""
     pkg = tmp_path / "propmap"
-    shutil.copytree(SRC, pkg)
+    shutil.copytree(SRC, pkg, ignore=shutil.ignore_patterns("*.tmp.*"))
     env = {**os.environ, "PYTHONPATH": str(tmp_path), "NUMBA_CACHE_DIR": ""}
 
     def run(script):

@@ -413,7 +413,8 @@ def test_map_check_of_a_hostile_file_exits_0_2_or_3_with_one_line(capsys, tmp_pa
     elif code == 3:  # (a check that measured nothing, every point flagged, or over its threshold: not a pass)
         assert errors == [] and "FAILED" in out, out
     else:
-        assert code == 2 and len(errors) == 1 and errors[0].startswith(f"propmap: error: --check: {path}"), err
+        assert code == 2 and len(errors) == 1, err
+        assert errors[0].startswith(f"propmap: error: --check: {short_path(path)}"), err
 
 
 WRITERS_SCRIPT = r"""

@@ -74,7 +74,8 @@ FORK = textwrap.dedent("""
 
 @pytest.mark.skipif("fork" not in multiprocessing.get_all_start_methods(), reason="no fork start method here")
 def test_a_fork_pool_after_the_parent_ran_the_parallel_kernel():
-    run = subprocess.run([sys.executable, "-c", FORK], capture_output=True, text=True, timeout=120)
+    # (a timeout of minutes: the child compiles the kernels the cache lacks)
+    run = subprocess.run([sys.executable, "-c", FORK], capture_output=True, text=True, timeout=600)
     assert run.returncode == 0 and "Terminating" not in run.stderr, run.stderr[-2000:]
     # the serial kernels' loads and slopes, the parallel ones' to the last bits: to the bit on an AVX-512 CPU,
     # 1 ulp apart on an AVX2 one (2026-11-28: thrust 1.8e-15 N of 10.3 N at 9 of 64 points; the two kernels'

@@ -113,8 +113,10 @@ def _out_files(out: Path) -> list:
     """(option, path) of every file a fit writes: the parameters and, beside them, reports and figure.
     A parameter file's name ends in .toml (``--out f.report.json`` wrote TOML over another fit's
     report: a user-level audit; the commands tell a parameter file by that suffix)."""
+    from ..io.inputs import short_path
+
     if Path(out).suffix.lower() != ".toml":
-        raise InputError(f"--out: a parameter file is TOML: give a name ending in .toml, got {_short(str(out))!r}")
+        raise InputError(f"--out: a parameter file is TOML: give a name ending in .toml, got {short_path(out)!r}")
     stem = Path(out).with_suffix("")
     return [("--out", Path(out))] + [("--out (report/figure beside it)", stem.with_name(stem.name + s))
                                      for s in (".report.json", ".report.txt", ".png")]

@@ -93,6 +93,8 @@ def main(argv: list[str] | None = None) -> int:
     own flags). SIGTERM stops the run like an
     exception, so that no temporary output file is left behind (one that arrives while C
     code calls back into Python, as numba's compiler does, is delivered again after it).
+    On a terminal a run that compiles the model's kernels (a fresh installation's first) says
+    so first, in one line that is neither a warning nor an error (:data:`COMPILE_NOTICE`).
     """
     _terminated.clear()
     words = sys.argv[1:] if argv is None else list(argv)
@@ -119,7 +121,8 @@ def _compile_notice(words):
     """While the run lasts, :data:`COMPILE_NOTICE` on stderr at the first compile of a propmap
     kernel (numba's compile event, which a kernel served from the cache does not raise), when
     stderr is a terminal; nothing for a pipe or a file (scripts, tests), nothing where numba's
-    event API is missing."""
+    event API is missing. Compiles in other processes (``validate --all --jobs``' workers, a
+    dask cluster's) are not seen."""
     try:
         interactive = sys.stderr.isatty()
     except (AttributeError, ValueError, OSError):  # (closed or replaced)
@@ -141,7 +144,10 @@ def _compile_notice(words):
             module = getattr(getattr(dispatcher, "py_func", None), "__module__", "") or ""
             if not self.said and module.startswith("propmap."):
                 self.said = True
-                click.echo(COMPILE_NOTICE, err=True)
+                try:
+                    click.echo(COMPILE_NOTICE, err=True)
+                except OSError:  # (the terminal gone: the run goes on, as the compile does)
+                    pass
 
         def on_end(self, ev):
             pass

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller
+from .inputs import short_path
 from .geometry_files import read_apc_pe0, read_geometry, read_uiuc_geometry
 from .readers import StaticRun, Sweep, read_uiuc_static, read_uiuc_sweep
 
@@ -332,7 +333,7 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
             warnings.warn(f"{spec!r} is a catalogue propeller and a file here: the catalogue's is used (give "
                           f"./{spec} for the file)", UserWarning, stacklevel=2)
         return load_propeller(spec)
-    shown = repr(spec if len(spec) <= 120 else spec[:117] + "...")
+    shown = repr(short_path(spec, 120))
     if not spec.strip():
         raise KeyError("the propeller is empty: give a catalogue name or a geometry file")
     path = Path(spec)

@@ -71,7 +71,14 @@ def short_path(path, n: int = 80) -> str:
     str
         The path as written where it fits, else its first ``(n - 3) // 4`` characters, "..."
         and its last ones, ``n`` characters in all.
+
+    Raises
+    ------
+    ValueError
+        ``n`` below 8.
     """
+    if n < 8:
+        raise ValueError(f"n must be at least 8 (characters), got {n!r}")
     s = show_path(path)
     if len(s) <= n:
         return s

@@ -56,7 +56,7 @@ import numpy as np
 
 from ..core.geometry import INCH, Propeller
 from ..core.body import BodyDrag
-from ..io.inputs import as_path, show_path
+from ..io.inputs import as_path, short_path, show_path
 from ..io.toml_file import load_toml
 from .layout import Rotor, Vehicle
 
@@ -225,9 +225,8 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
         return load_propeller(spec)
     near = difflib.get_close_matches(spec, list(catalogue()), n=3)
     hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
-    shown = show_path(folder / spec)
-    shown = shown if len(shown) <= 300 else shown[:290] + "..."
-    raise VehicleFileError(f"{where}: propeller {_short(spec)} is neither a file ({shown}: a relative "
+    shown = short_path(folder / spec, 300)
+    raise VehicleFileError(f"{where}: propeller {short_path(spec)!r} is neither a file ({shown}: a relative "
                            f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
 
 
