@@ -296,6 +296,10 @@ def test_a_path_in_a_message_keeps_its_start_and_its_end(path, n):
     assert short_path(Path("/d") / ("y" * 90) / "m.nc").endswith("yyy/m.nc")  # a Path, as its text
     assert short_path(os.fsencode("/d/" + "z" * 90 + "/m.nc")).endswith("zzz/m.nc")  # bytes, decoded
     assert short_path(b"/d/\xff" + b"z" * 90).startswith("'/d/\\udcff")  # undecodable bytes: escaped in a repr
+    assert short_path("/tmp/x.nc", quote=True) == "'/tmp/x.nc'"  # quoted, for a name beside other text
+    assert short_path("a\nb.nc", quote=True) == repr("a\nb.nc")  # (not quoted twice)
+    q = short_path("/d/" + "q" * 100 + "/m.nc", 40, quote=True)
+    assert len(q) == 40 and q.startswith("'/d/") and q.endswith("/m.nc'")
     with pytest.raises(ValueError, match="n must be at least 8"):
         short_path("/tmp/x.nc", 2)
 

@@ -119,8 +119,7 @@ def check_outputs(outputs, inputs) -> None:
             _check_output(option, p, ins)
             real = os.path.realpath(p)
         except OSError as exc:
-            raise InputError(f"{option}: {exc.strerror or exc} ({short_path(p)})") \
-                from None
+            raise InputError(f"{option}: {exc.strerror or exc} ({short_path(p)})") from None
         if real in seen:
             raise InputError(f"{option}: {p} is also the file of {seen[real]}; give outputs different names")
         seen[real] = option
@@ -215,8 +214,7 @@ def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
     try:
         exists = out_dir.exists()
     except OSError as exc:  # a name too long for the system, a loop of links
-        raise InputError(f"{option}: {short_path(out_dir)}: "
-                         f"{exc.strerror or exc}") from None
+        raise InputError(f"{option}: {short_path(out_dir)}: {exc.strerror or exc}") from None
     if exists and not out_dir.is_dir():
         raise InputError(f"{option}: {out_dir} exists and is not a folder")
     paths = [out_dir / n for n in names]

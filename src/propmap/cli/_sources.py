@@ -112,10 +112,10 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         return loads_from_catalogue(entry, prop.diameter, air=air), prop, entry, sources[0]
     missing = [s for s in sources if not _is_file(s)]
     if missing and missing[0] in catalogue():
-        raise InputError(f"SOURCE: {short_path(missing[0])!r} is a catalogue propeller: give it alone (its UIUC "
-                         "data), or files only (a catalogue propeller's data and files are not fitted together)")
+        raise InputError(f"SOURCE: {missing[0]!r} is a catalogue propeller: give it alone (its UIUC data), or "
+                         "files only (a catalogue propeller's data and files are not fitted together)")
     if missing:
-        raise InputError(f"SOURCE: {short_path(missing[0])!r} is neither a catalogue propeller nor a file"
+        raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")

@@ -109,4 +109,3 @@ def _rotor_coverage(veh, sets, loads, air) -> None:
             prop, rpm, np.concatenate([np.ravel(x.airspeed) for x in ld]),
             np.degrees(np.concatenate([np.ravel(x.incidence) for x in ld]))),
             rpm=(float(rpm.min()), float(rpm.max())), airspeed=float(max(np.max(x.airspeed) for x in ld)))
-

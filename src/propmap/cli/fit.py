@@ -116,7 +116,8 @@ def _out_files(out: Path) -> list:
     from ..io.inputs import short_path
 
     if Path(out).suffix.lower() != ".toml":
-        raise InputError(f"--out: a parameter file is TOML: give a name ending in .toml, got {short_path(out)!r}")
+        raise InputError("--out: a parameter file is TOML: give a name ending in .toml, got "
+                         f"{short_path(out, quote=True)}")
     stem = Path(out).with_suffix("")
     return [("--out", Path(out))] + [("--out (report/figure beside it)", stem.with_name(stem.name + s))
                                      for s in (".report.json", ".report.txt", ".png")]

@@ -511,5 +511,3 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     click.echo(f"wrote {out}", err=True)
     # the log's rotor operating points beyond the data behind the parameters (a fitted file's [coverage])
     _rotor_coverage(veh, sets, [[ld] for ld in w.loads], air)
-
-

@@ -333,7 +333,7 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
             warnings.warn(f"{spec!r} is a catalogue propeller and a file here: the catalogue's is used (give "
                           f"./{spec} for the file)", UserWarning, stacklevel=2)
         return load_propeller(spec)
-    shown = repr(short_path(spec, 120))
+    shown = short_path(spec, 120, quote=True)
     if not spec.strip():
         raise KeyError("the propeller is empty: give a catalogue name or a geometry file")
     path = Path(spec)

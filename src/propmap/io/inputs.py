@@ -52,7 +52,7 @@ def show_path(path) -> str:
     return s if s.isprintable() else repr(s)
 
 
-def short_path(path, n: int = 80) -> str:
+def short_path(path, n: int = 80, *, quote: bool = False) -> str:
     """``path`` as :func:`show_path` gives it, cut to at most ``n`` characters in its middle.
 
     The end of a path, the file's name, is what a message must show: a path longer than ``n``
@@ -65,6 +65,8 @@ def short_path(path, n: int = 80) -> str:
     path : str, bytes or PathLike
     n : int
         The longest text returned, at least 8.
+    quote : bool
+        The path's ``repr`` (quoted, control characters escaped) in every case, cut likewise.
 
     Returns
     -------
@@ -79,7 +81,8 @@ def short_path(path, n: int = 80) -> str:
     """
     if n < 8:
         raise ValueError(f"n must be at least 8 (characters), got {n!r}")
-    s = show_path(path)
+    s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
+    s = repr(s) if quote or not s.isprintable() else s  # (show_path's text, or the quoted one)
     if len(s) <= n:
         return s
     head = (n - 3) // 4

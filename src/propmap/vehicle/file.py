@@ -226,7 +226,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
     near = difflib.get_close_matches(spec, list(catalogue()), n=3)
     hint = f"; did you mean {', '.join(near)}?" if near else " ('propmap props' lists the catalogue)"
     shown = short_path(folder / spec, 300)
-    raise VehicleFileError(f"{where}: propeller {short_path(spec)!r} is neither a file ({shown}: a relative "
+    raise VehicleFileError(f"{where}: propeller {short_path(spec, quote=True)} is neither a file ({shown}: a relative "
                            f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
 
 
