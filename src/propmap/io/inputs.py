@@ -48,8 +48,13 @@ def show_path(path) -> str:
         The path as written, or its ``repr`` where it is not printable (a newline, a
         terminal escape).
     """
-    s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
+    s = _path_text(path)
     return s if s.isprintable() else repr(s)
+
+
+def _path_text(path) -> str:
+    """``path`` as text: bytes and path objects decoded with the file-system encoding."""
+    return os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
 
 
 def short_path(path, n: int = 80, *, quote: bool = False) -> str:
@@ -81,8 +86,7 @@ def short_path(path, n: int = 80, *, quote: bool = False) -> str:
     """
     if n < 8:
         raise ValueError(f"n must be at least 8 (characters), got {n!r}")
-    s = os.fsdecode(path) if isinstance(path, (bytes, os.PathLike)) else str(path)
-    s = repr(s) if quote or not s.isprintable() else s  # (show_path's text, or the quoted one)
+    s = repr(_path_text(path)) if quote else show_path(path)
     if len(s) <= n:
         return s
     head = (n - 3) // 4

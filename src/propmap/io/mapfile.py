@@ -60,10 +60,6 @@ NETCDF_LOCK = threading.RLock()
 
 # ---------------------------------------------------------------- reading a file
 
-def _where(path) -> str:
-    return short_path(path)
-
-
 def _stat_regular(path):
     """(the path as shown in messages, its os.stat) of a map file that must be a regular file
     of at most MAX_FILE_BYTES.
@@ -74,7 +70,7 @@ def _stat_regular(path):
         The path cannot be stat-ed, is a folder, device or pipe, or is larger than
         MAX_FILE_BYTES.
     """
-    where = _where(path)
+    where = short_path(path)
     try:
         st = os.stat(path)
     except (OSError, ValueError) as exc:
@@ -549,10 +545,10 @@ def read_sidecar(path) -> dict:
             meta = json.load(fh)
         digest = file_sha256(path)
     except (OSError, ValueError) as exc:
-        raise ValueError(f"{_where(side)}: cannot read the sidecar of {_where(path)} "
+        raise ValueError(f"{short_path(side)}: cannot read the sidecar of {short_path(path)} "
                          f"({getattr(exc, 'strerror', None) or exc})") from None
     described = meta.get("describes") if isinstance(meta, dict) else None
     if not isinstance(described, dict) or described.get("sha256") != digest:
-        raise ValueError(f"{_where(side)} does not describe {_where(path)} as it is now (SHA-256 differs): the map "
-                         "was rewritten without it, or the pair is being replaced; read both again")
+        raise ValueError(f"{short_path(side)} does not describe {short_path(path)} as it is now (SHA-256 differs): "
+                         "the map was rewritten without it, or the pair is being replaced; read both again")
     return meta

@@ -168,9 +168,13 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         x = least_squares(lambda x: balance(x)[0], x0, bounds=(lo, hi), method="trf",
                           x_scale=np.concatenate([[0.1, 0.1], np.ones(n)]), xtol=1e-14, ftol=1e-14, gtol=1e-14,
                           max_nfev=200).x
-        if n > 4 and np.max(np.abs(balance(x)[0])) <= TRIM_TOL:  # more unknowns than equations: the nearest trim
-            x = _nearest_trim(lambda x: balance(x)[0], x, lo, hi)
         r, v_b, w = balance(x)  # (the trim's wrench, kept)
+        if n > 4 and np.max(np.abs(r)) <= TRIM_TOL:  # more unknowns than equations: the nearest trim, if it balances
+            y = _nearest_trim(lambda x: balance(x)[0], x, lo, hi)
+            if y is not None:
+                ry, vy, wy = balance(y)
+                if np.all(np.isfinite(ry)) and np.max(np.abs(ry)) <= TRIM_TOL:
+                    x, r, v_b, w = y, ry, vy, wy
     if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
         raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found from the hover (the force "
                          "balance reached "
@@ -196,17 +200,15 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
 def _nearest_trim(balance, x, lo, hi):
     """Of the trims of a vehicle with more rotors than four (unknowns x = roll, pitch, Omega_i /
     Omega_h), the one of least sum (Omega_i / Omega_h - 1)^2, by SciPy's SLSQP from the trim
-    ``x`` under the balance's six equations (``balance(x) = 0``) and the bounds; ``x`` itself where
-    SLSQP does not end on a trim within TRIM_TOL."""
+    ``x`` under the balance's six equations (``balance(x) = 0``) and the bounds; None where SLSQP
+    fails (the caller keeps ``x`` where the result does not balance within TRIM_TOL)."""
     from scipy.optimize import minimize
 
     res = minimize(lambda x: float(np.sum((x[2:] - 1.0) ** 2)), x, method="SLSQP",
                    jac=lambda x: np.concatenate([[0.0, 0.0], 2.0 * (x[2:] - 1.0)]),
                    constraints={"type": "eq", "fun": balance}, bounds=list(zip(lo, hi)),
                    options={"ftol": 1e-14, "maxiter": 50})
-    if res.success and np.all(np.isfinite(res.x)) and np.max(np.abs(balance(res.x))) <= TRIM_TOL:
-        return res.x
-    return x
+    return res.x if res.success and np.all(np.isfinite(res.x)) else None
 
 
 def _number(name: str, value, lo: float, hi: float, shown: str | None = None) -> float:
