@@ -95,19 +95,6 @@ def test_climbing_costs_power_and_descending_saves_it(neurobem):
         assert np.linalg.norm(t.velocity) == pytest.approx(6.0, rel=1e-12)
 
 
-def test_a_hexacopter_trims_too(tmp_path):
-    """More rotors than the six equations: a solution is taken, and it balances."""
-    rotors = "".join(f"\n[[rotors]]\nposition = [{0.3 * math.cos(math.pi / 3 * k):.6f}, "
-                     f"{0.3 * math.sin(math.pi / 3 * k):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
-                     f"spin = \"{'ccw' if k % 2 == 0 else 'cw'}\"\npropeller = \"apce_8x6\"\n" for k in range(6))
-    (tmp_path / "hexa.toml").write_text(f"mass = 2.0\ninertia = [0.05, 0.05, 0.09]\n{rotors}")
-    vehicle = pm.read_vehicle(tmp_path / "hexa.toml")
-    trim = pm.trim_vehicle(vehicle, pm.generic_params(), 8.0)
-    force, moment = _balance(vehicle, trim)
-    assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
-    assert trim.pitch < 0 and trim.rotor_omega.shape == (6,)
-
-
 def _hexacopter(tmp_path, centre_of_mass="[0.05, 0.02, 0.0]"):
     rotors = "".join(f"\n[[rotors]]\nposition = [{0.3 * math.cos(math.pi / 3 * k):.6f}, "
                      f"{0.3 * math.sin(math.pi / 3 * k):.6f}, 0.0]\naxis = [0.0, 0.0, 1.0]\n"
@@ -115,6 +102,15 @@ def _hexacopter(tmp_path, centre_of_mass="[0.05, 0.02, 0.0]"):
     (tmp_path / "hexa.toml").write_text(f"mass = 2.0\ninertia = [0.05, 0.05, 0.09]\ncentre_of_mass = {centre_of_mass}"
                                         f"\n{rotors}")
     return pm.read_vehicle(tmp_path / "hexa.toml")
+
+
+def test_a_hexacopter_trims_too(tmp_path):
+    """More rotors than the six equations, the centre of mass at the centre: a trim, and it balances."""
+    vehicle = _hexacopter(tmp_path, "[0.0, 0.0, 0.0]")
+    trim = pm.trim_vehicle(vehicle, pm.generic_params(), 8.0)
+    force, moment = _balance(vehicle, trim)
+    assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
+    assert trim.pitch < 0 and trim.rotor_omega.shape == (6,)
 
 
 @pytest.mark.parametrize("airspeed", [0.0, 15.0])
