@@ -6,10 +6,10 @@ root solve and the point's body), of a large batch (the parallel kernel, the sam
 implicit derivatives of a small and a large batch (core/_sensitivity.py), and those of the
 linear inflow model (Pitt-Peters, core/_linear_sensitivity.py). apce_8x6 (the APC 8x6E of the
 UIUC Propeller Data Site), the generic set. Wall and process CPU seconds per step; the
-numbers are those of the machine it runs on (the kernels' compile is mostly LLVM's
-optimisation, so they scale with the CPU's speed, not its vector width).
+numbers are those of the machine it runs on (the compile is numba's own passes, then LLVM's,
+on one core: they scale with the CPU's speed, not its vector width).
 
-    NUMBA_CACHE_DIR=$(mktemp -d) .venv/bin/python tools/compile_times.py   # about 7 minutes on a 2-core AMD EPYC
+    NUMBA_CACHE_DIR=$(mktemp -d) .venv/bin/python tools/compile_times.py   # about 3 minutes on a 2-core AMD EPYC
 
 An empty ``NUMBA_CACHE_DIR`` is what makes the compile happen: with the in-tree cache warm,
 each step takes a second or less.

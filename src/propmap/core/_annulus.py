@@ -68,7 +68,13 @@ NO_CONVERGENCE = 2
 NO_SWIRL_BALANCE = 3  # the swirl iteration (_momentum.swirl_target) did not balance within SWIRL_MAX_ITER solves
 
 _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
-_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+# The helpers are compiled once each and inlined by LLVM (forceinline), not copied into their callers' numba IR
+# (inline="always"), which numba redid at every call site and which was most of the kernels' first compile (2026-11-28,
+# 2-core AMD EPYC: 429 -> 174 s for the six kernel families, tools/compile_times.py; benchmarks/README.md). Kept in
+# numba's IR: the helpers that take arrays and run inside the vectorised loops (_element, _residual here,
+# _sensitivity._add_node, _parameter_sensitivity._stored_state): as calls, even inlined by LLVM, they ran forward
+# flight 1.75x slower.
+_jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 # polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
 _atan2 = _jit_inline(atan2_poly)
 _exp_sat = _jit_inline(exp_sat)
@@ -100,7 +106,7 @@ _swirl_step = _jit_inline(swirl_step)
 _inplane_induction = _jit_inline(inplane_induction)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)  # in numba's IR: above
 def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
     """Either model's element (scalar): the loads pass and the tests; the residual loops
     branch outside the element instead (docs/models.md, Cost)."""
@@ -110,7 +116,7 @@ def _element(UT, UP, th, sth, cth, s0, s1, s2, s3, model, pk):
     return _element_gill(UT, UP, th, sth, cth, s0, pk[0], pk[1], pk[2], pk[3], pk[4], pk[5], model == GILL_SINCOS)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def delay_factor(pk, Om, y, cy2):
     """Gormont's kd = gamma sqrt(c Omega / 2) [m^0.5 s^-0.5] of an annulus of radius y [m] and
     (c/y)^2 ``cy2`` at Omega [rad/s] (0 without RotorOptions.dynamic_stall): the delayed
@@ -120,7 +126,7 @@ def delay_factor(pk, Om, y, cy2):
     return pk[PK_DYNSTALL] * np.sqrt(0.5 * y * np.sqrt(cy2) * Om)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)  # in numba's IR: above
 def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, model, pk, emp, kd):
     """F(v) = dT_BET/dy - F_loss dT_BEMT/dy [N/m] on one annulus (eq 11); ``floss`` = F_loss(v).
 
@@ -188,7 +194,7 @@ def _residual(v, wy, Vs, Vc, bl, sec, cfac, mfac, floss, azim, gx, gy, naz, mode
     return cfac * acc / naz - floss * _momentum_thrust(v, mfac, Vm, Vc)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _annulus_rows(nodes, blade, sect):
     """The per-annulus arrays of :func:`solve_annuli`'s packed arguments: y, cfac, mfac (rows
     of ``nodes``), theta, sin theta, cos theta (``blade``) and s0 ... s3 (``sect``)."""
@@ -196,7 +202,7 @@ def _annulus_rows(nodes, blade, sect):
             sect[3])
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk, emp, active, n_active):
     """``_residual`` of every annulus at its trial inflow in axial flow (V sin beta = 0: one
     azimuth node), the annuli already solved included: branch-free loops over contiguous
@@ -236,13 +242,13 @@ def _residuals_axial(f, trial, nodes, blade, Om, us, Vc, sect, floss, model, pk,
             f[j] -= floss[j] * _momentum_thrust(trial[j], mfac[j], 0.0, Vc)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _false_position(a, fa, b, fb):
     """Zero of the secant through (a, fa), (b, fb); fa * fb < 0."""
     return (a * fb - b * fa) / (fb - fa)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _chandrupatla_t(x1, f1, x2, f2, x3, f3, tol):
     """Fraction t of the next iterate x1 + t (x2 - x1) in Chandrupatla's method.
 
@@ -263,7 +269,7 @@ def _chandrupatla_t(x1, f1, x2, f2, x3, f3, tol):
     return min(max(t, tl), 1.0 - tl)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _secant_error(x1, f1, x2, f2, x3, f3, est, step):
     """Error estimate of the secant's root through (x1, f1), (x2, f2): |F''/(2 F')| est (est +
     |step|), F''/2 the second divided difference through the three points, est the root's
@@ -499,7 +505,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
         n_active = m
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, pk, axial, kd=0.0):
     """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
     (eqs 5-7, azimuth-averaged; linear inflow, ``bl``, ``sec`` and ``azim`` as ``_residual``);

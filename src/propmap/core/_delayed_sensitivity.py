@@ -32,7 +32,7 @@ from ._swirl_sensitivity import _swirl_solve
 from ._tangents import _loads_tangent as _loads_tangent_py
 from ._tangents import make_delayed_direction, make_delayed_tangent
 
-_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+_jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 _delayed_state, _delayed_direction = (_jit_inline(f) for f in make_delayed_direction(_atan2, _exp_sat,
                                                                                         _loads_tangent))
@@ -48,7 +48,7 @@ H_UT, H_UP, H_U2, H_TH, H_E, H_UTS, H_C0 = 5, 8, 11, 14, 17, 20, 23
 N_EX = 24
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def delayed_node(ea, UT, UP, th, sth, cth, sec, dsec, con, kd, vb, sk, ck, sg):
     """One node of the delayed element (node and mirror node) with its partials: returns the
     ln kd sums and the half differences' sums ``ea`` (a tuple of N_EX, carried through the node
@@ -72,7 +72,7 @@ def delayed_node(ea, UT, UP, th, sth, cth, sec, dsec, con, kd, vb, sk, ck, sg):
                 (d_u[0], d_u[1], d_u[2]), (d_c[0], d_c[1], d_c[2]))
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def delay_partials(ex, cf, cq, kr, vb, kd, b0, b1, b2, b3):
     """d(T, D, Q, M_R)/d(ln kd) of one annulus [N/m, N/m, N, N] from its sums ``ex``
     (:func:`delayed_node`; ``cf`` = cfac / naz, ``cq`` = y cf, ``kr`` the radial drag's
@@ -86,13 +86,13 @@ def delay_partials(ex, cf, cq, kr, vb, kd, b0, b1, b2, b3):
     return e0, e1, e2, e3, b0 + hv * e0, b1 + hv * e1, b2 + hv * e2, b3 + hv * e3
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _halves_row(ex, at, cf, cq, kr):
     """(dY/dy, dM_P/dy)'s partials along the direction whose sums start at ``ex[at]``."""
     return cf * (kr * ex[at + 2] - ex[at + 1]), -cq * ex[at]
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def delayed_rows(dB, Lv, ex, cf, cq, krad, kr, vb, om, y, uxv, fs, vs, dc, vc):
     """Rows 4 (Y) and 5 (M_P) of an annulus' partials at its fixed root: ``dB[4:6]`` in (Omega,
     V sin beta, V cos beta, the blade angle) and ``Lv[4:6]`` in its inflow v, as
@@ -112,7 +112,7 @@ def delayed_rows(dB, Lv, ex, cf, cq, krad, kr, vb, om, y, uxv, fs, vs, dc, vc):
     return Yt, Pt
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _chain_row(dB, Lv, q, b, t, p, u, c, e, om, y, uxv, fs, vs, dc, vc):
     """Row ``q`` of :func:`delayed_rows` from the load's partials in V_b (``b``), U_T, U_P, U2, the
     blade angle and ln kd (as core/_sensitivity._point's rows 0-3)."""
@@ -124,7 +124,7 @@ def _chain_row(dB, Lv, q, b, t, p, u, c, e, om, y, uxv, fs, vs, dc, vc):
     dB[q, 3] = c
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def add_input_halves(out, p, i, wj, dB, Lv, halves_t, e, dv, du):
     """Add annulus' share (weight ``wj``) of dY/dx and dM_P/dx to ``out[5:7, p, i]`` for input p
     of direction ``e[p]`` in (Omega, V sin beta, V cos beta, collective), from :func:`delayed_rows`'
@@ -134,7 +134,7 @@ def add_input_halves(out, p, i, wj, dB, Lv, halves_t, e, dv, du):
         out[5 + q, p, i] += wj * (dL + Lv[4 + q] * dv - halves_t[q] * du)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def add_fixed_root_halves(out, p, i, wj, Lv, halves_t, sw, ps, k, scales, span):
     """_sensitivity._add_fixed_root's rows for Y and M_P (``out`` rows 5 and 6): the k-th section
     parameter (or the density) moves the blade's sums only, by the differences of row 1 + k of

@@ -15,7 +15,7 @@ from ._momentum import DREES_MU_MAX, inplane_induction
 __all__ = ["CLS_BAND", "CLS_INPLANE", "CLS_K_WINDMILL", "CLS_R_HUB", "CLS_RADIUS", "CLS_RHO", "point_flags",
            "working_states"]
 
-_inplane_induction = numba.njit(inline="always", error_model="numpy")(inplane_induction)
+_inplane_induction = numba.njit(error_model="numpy", forceinline=True)(inplane_induction)
 
 
 @numba.njit(cache=CACHE, error_model="numpy")

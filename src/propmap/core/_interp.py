@@ -37,9 +37,12 @@ CLIP = 0
 NAN = 1
 
 _FLAGS = dict(cache=True, error_model="numpy", fastmath={"nsz", "arcp", "contract", "afn", "reassoc"})
+# the helpers below are compiled once each and inlined by LLVM (forceinline), not copied into each caller's numba IR
+# (inline="always"): the three kernels' first compile 29 -> 8 s, lookups as fast (2026-11-28, 2-core AMD EPYC;
+# benchmarks/README.md, "Compile time")
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def _locate(ax, x):
     """(cell index, fraction in [0, 1]) of x in the increasing axis ax (x within its range)."""
     n = ax.shape[0]
@@ -54,7 +57,7 @@ def _locate(ax, x):
     return lo, (x - ax[lo]) / (ax[lo + 1] - ax[lo])
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def _cubic_weights(ax, x):
     """(cell index i, weights of the nodes i-1, i, i+1, i+2) of the cubic at x in axis ax.
 
@@ -100,7 +103,7 @@ def _cubic_weights(ax, x):
 HOVER_SPEED = 1e-6
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def hover_incidence(ax1, ax2, q1, q2):
     """The incidence at an airspeed q1 up to HOVER_SPEED on a grid whose airspeed axis starts at
     0: any incidence names the same still air, so it is taken into the incidence axis [ax2[0],
@@ -111,7 +114,7 @@ def hover_incidence(ax1, ax2, q1, q2):
     return q2
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, i, inside, flagged):
     nvar = table.shape[3]
     q2 = hover_incidence(ax1, ax2, q1, q2)
@@ -262,7 +265,7 @@ def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float
 
 
 #: :func:`snap_incidence_scalar` compiled for the kernels (one rule, one body)
-snap_edge = numba.njit(inline="always", **_FLAGS)(snap_incidence_scalar)
+snap_edge = numba.njit(forceinline=True, **_FLAGS)(snap_incidence_scalar)
 
 
 #: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
@@ -271,7 +274,7 @@ TINY = 1e-150
 POW2 = 2.0 ** 600
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def point_frame(vx, vy, vz, a0, a1, a2):
     """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
     scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, the axial
@@ -309,7 +312,7 @@ def point_frame(vx, vy, vz, a0, a1, a2):
     return zx, zy, zz, speed, axial, incidence(vx, vy, vz, zx, zy, zz, axial)
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def incidence(vx, vy, vz, zx, zy, zz, axial):
     """beta = atan2(|V - axial z|, axial) for the velocity V, the unit axis z and axial = V . z
     (0 where V = 0; core.vector.disk_frame's arithmetic)."""
@@ -322,7 +325,7 @@ def incidence(vx, vy, vz, zx, zy, zz, axial):
     return np.arctan2(n_ip, axial)
 
 
-@numba.njit(inline="always", **_FLAGS)
+@numba.njit(forceinline=True, **_FLAGS)
 def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
     """One rotor's force and moment vectors from its loads, as core.vector.wrench_vectors: e_ip
     the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed), force

@@ -18,7 +18,7 @@ from ._physics import NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH,
 from ._momentum import INFLOW_DREES, INFLOW_UNIFORM, SWIRL_LIMIT, SWIRL_MAX_ITER, SWIRL_SECANT_ITER, SWIRL_TOL
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _swirl_iterate(us, sw, v, code, multiple, nodes, blade, Om, Vs, Vc, sect, azim, grad, naz, model, pk, axial, it):
     """One swirl step of an operating point after its root solve with the swirl ``us``: every
     annulus' target (_momentum.swirl_target, from its loads at the roots ``v``) and imbalance

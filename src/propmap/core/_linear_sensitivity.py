@@ -86,7 +86,7 @@ N_FIXED = 8
 ROW_U = 7
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _k_partials(mu, lam, inflow):
     """(k_x, k_y) and their partials in mu and lambda: (kx, ky, kx_mu, ky_mu, kx_lam, ky_lam)."""
     kx, ky = _inflow_gradients(mu, lam, inflow)
@@ -118,7 +118,7 @@ def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
     return _constants_inline(Om, Vs, Vc, y, sc, cy2, model, cam)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _integrands(q, sk, ck, kr):
     """The six loads' integrands at one node (annulus_loads' sums) from the element's (qT, qH,
     C_D,p U) ``q`` or a derivative of it: qT, qH sin psi + kr C_D,p U cos^2 psi, qH, qT sin psi,

@@ -47,7 +47,7 @@ def _momentum_side(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
     return floss * _momentum_thrust(v, mfac, Vs, Vc)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _rest_slope(m_vs, m_vc, v, sb, cb, emp):
     """d(F_loss dT_BEMT/dy)/dV from rest (V = 0) along the ray (V sin beta, V cos beta) = V (sb, cb),
     one-sided (V >= 0), from the analytic partials ``m_vs``, ``m_vc`` at V = 0 (Glauert's there:
@@ -62,14 +62,14 @@ def _rest_slope(m_vs, m_vc, v, sb, cb, emp):
     return m_vs * sb + m_vc * cb
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _prandtl_slope(c, inv_sin):
     """dF/d(1/sin phi) of Prandtl's factor F = (2/pi) acos(exp(-c / sin phi)) (_physics.make_prandtl)."""
     x = min(np.exp(-c * inv_sin), 1.0 - 1e-16)
     return TWO_OVER_PI * c * x / np.sqrt(1.0 - x * x)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _mass_flow_partials(v, Vc, Vs, emp):
     """The axial mass-flow velocity w [m/s] of one annulus and dw/d(v, V cos beta, V sin beta) [-]
     (inflow v and speeds [m/s]).
@@ -138,7 +138,7 @@ def _momentum_partials(v, Om, Vs, Vc, y, mfac, ct, ch, emp):
     return (floss * m_v + f_w * w_v * m, f_wy * y * m, floss * m_vs + f_w * w_vs * m, floss * m_vc + f_w * w_vc * m)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _momentum_derivatives(v, Om_e, Om, Vs, Vc, y, mfac, ct, ch, emp, one_sided):
     """d(F_loss dT_BEMT/dy)/d(v, Omega, V sin beta, V cos beta) of one annulus at its fixed root:
     :func:`_momentum_partials` (analytic), except where the empirical descent model switches on

@@ -17,7 +17,7 @@ from ._jitcache import CACHE
 from ._tangents import _loads_tangent as _loads_tangent_py
 from ._tangents import make_cambered_direction
 
-_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+_jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 # the cambered element's state at a node and its derivative along any direction in its constants (the section
 # parameters', one evaluation per node for all; core/_sensitivity's element with its partials is built on them)
@@ -30,7 +30,7 @@ N_STATE = 28
 N_DSTATE = 49
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)  # in numba's IR: _annulus._jit_inline
 def _stored_state(stw, k):
     """The cambered element's state at node ``k`` (a tuple of N_STATE floats) from the scratch
     ``stw`` shape (N_STATE, >= k + 1) that :func:`_parameter_partials` fills."""
@@ -40,7 +40,7 @@ def _stored_state(stw, k):
             stw[21, k], stw[22, k], stw[23, k], stw[24, k], stw[25, k], stw[26, k], stw[27, k])
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _direction(dS, dC, m):
     """Direction ``m`` as (its section constants' change, its polar constants' change): rows m of
     ``dS`` shape (n, 4) and ``dC`` shape (n, 8) as tuples (:func:`_parameter_partials`)."""

@@ -99,7 +99,7 @@ from ._swirl_sensitivity import _swirl_solve, _swirl_system
 from ._tangents import _loads_tangent as _loads_tangent_py
 from ._tangents import make_cambered_tangent, make_gill_tangent
 
-_jit_inline = numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+_jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 _loads_tangent = _jit_inline(_loads_tangent_py)
 # the elements with their analytic partials in U_T, U_P, the blade angle and the section constants; the cambered
 # element's state at a node and its derivative along any direction in its constants (the section parameters', one
@@ -116,7 +116,7 @@ INPUTS = ("omega", "airspeed", "incidence", "collective")
 LOADS = ("thrust", "drag", "torque", "rolling_moment", "v_i_mean")
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _inplane_partials(kin, v, vs, vc):
     """The blades' in-plane airspeed vb = vs + kin u_x (u_x = v vs / (sqrt(vs^2 + W^2) + |W|),
     W = vc + v, or v in descent: _momentum.inplane_induction; kin 1 with the option, 0
@@ -138,7 +138,7 @@ def _inplane_partials(kin, v, vs, vc):
     return vs + kin * g, kin * g_s, kin * g_c, kin * (vs / d + g_w)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _constants_u2(U2, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as _kernel._solve_point)."""
     if model == CAMBERED:
@@ -146,7 +146,7 @@ def _constants_u2(U2, sc, cy2, model, cam):
     return sc, 0.0, 0.0, 0.0
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _constants_slopes(U2, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus of mean square speed U2 (as
     :func:`_constants_u2`) and their derivatives with respect to U2 [1/(m/s)^2 times each
@@ -164,13 +164,13 @@ def _constants_slopes(U2, sc, cy2, model, cam):
     return (a, cdf, g, dal0), (da, cdf * cam[1] * dln, g * cam[5] * dln, cam[7] * dln)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _constants(Om, Vs, Vc, y, sc, cy2, model, cam):
     """The section constants (s0, s1, s2, s3) of an annulus at the inputs (as _kernel._solve_point)."""
     return _constants_u2((Om * y) ** 2 + 0.5 * Vs * Vs + Vc * Vc, sc, cy2, model, cam)
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
     """Add one annulus' share of d(loads)/dp to ``out[:, p, i]`` for a quantity p that moves the
     blade's sums only (a section parameter, the density's Reynolds part): the differences
@@ -188,7 +188,7 @@ def _add_fixed_root(out, p, i, wj, wvj, Lv, sw, dt, dd, dq, dr, span, axial):
     out[4, p, i] += wvj * dv
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     """One perturbed pass over the nodes of one annulus for the paper's section (the cambered
     one takes its parameters' derivatives from :func:`_parameter_partials`): the element at the
@@ -213,7 +213,7 @@ def _pass(q0, h0, r0, Om, Vs, UP, y, th, sth, cth, s, sinpsi, naz, model, pk):
     return aT, aTs, aH, aHs, aR
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(inline="always", error_model="numpy", fastmath=_FM)  # in numba's IR: _annulus._jit_inline
 def _add_node(acc, q0, h0, r0, k, sk, base, d_t, d_p, d_u, d_c):
     """One node's element (``base``, written into ``q0``, ``h0``, ``r0``) and partials (in U_T, U_P,
     the constants' direction and the blade angle, each (qT, qH, C_D,p U)) added to the 24 sums
@@ -280,7 +280,7 @@ def _partials(q0, h0, r0, v, Om, Vs, Vc, y, th, sth, cth, s, u, sinpsi, naz, mod
             (cT, cTs, cH, cHs, rC))
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _node_rows(nodes):
     """The rows of the blade's node array (shape (N_NODE_ROWS, n_radial), _physics.NODE_*) that
     the sensitivity passes read, each shape (n_radial,): y [m], the quadrature weight w [m],
@@ -290,7 +290,7 @@ def _node_rows(nodes):
             nodes[NODE_MFAC], nodes[NODE_CT], nodes[NODE_CH])
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _start_point(out, i, ok, n_rows, w, y):
     """Column ``i`` of rows 0 ... n_rows - 1 of ``out`` set to 0, or to NaN where the point did not
     converge (``ok[i]`` False: returns 0.0, nothing more to do); else the mean inflow's weight
@@ -307,7 +307,7 @@ def _start_point(out, i, ok, n_rows, w, y):
     return wy
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _airspeed_components(V, b):
     """(sin beta, cos beta, V sin beta, V cos beta), each speed snapped to 0 where it is below
     1e-12 V: exact axial flow at beta = 0, pi and exactly edgewise flow at pi/2 (cos(pi/2) is
@@ -323,7 +323,7 @@ def _airspeed_components(V, b):
     return sb, cb, vs, vc
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _input_directions(e, n, V, sb, cb, vs):
     """Rows 0 ... n - 1 (n = 3 or 4) of ``e``: the directions of omega, the airspeed, the
     incidence (and the collective) in (Omega, V sin beta, V cos beta, the blade angle); along

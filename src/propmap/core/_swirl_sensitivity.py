@@ -21,7 +21,7 @@ from ._annulus import _FM
 from ._momentum import SWIRL_LIMIT
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
     """One annulus' linearised equations in its unknowns (v, u), the inflow and the swirl.
 
@@ -51,7 +51,7 @@ def _swirl_system(swirl, v, y, Om, T0, Q0, Tv, Qv, Tt, Dt, Qt, Rt, mom_wy, Gv):
     return Gu, Sv, Su, a, T0, Q0, Tt, Dt, Qt, Rt, Gv
 
 
-@numba.njit(inline="always", error_model="numpy", fastmath=_FM)
+@numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def _swirl_solve(sw, Gx, Tx, Qx, e_om):
     """(dv/dx, du/dx) of one annulus from its :func:`_swirl_system` ``sw`` and an input's
     partials at the fixed (v, u): ``Gx`` of the residual, ``Tx``, ``Qx`` of the thrust and
