@@ -72,8 +72,8 @@ _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
 # (inline="always"), which numba redid at every call site and which was most of the kernels' first compile (2026-11-28,
 # 2-core AMD EPYC: 429 -> 174 s for the six kernel families, tools/compile_times.py; benchmarks/README.md). Kept in
 # numba's IR: the helpers that take arrays and run inside the vectorised loops (_element, _residual here,
-# _sensitivity._add_node, _parameter_sensitivity._stored_state): as calls, even inlined by LLVM, they ran forward
-# flight 1.75x slower.
+# _sensitivity._add_node, _parameter_sensitivity._stored_state): _element as a call, even one LLVM inlines, ran
+# forward flight 1.75x slower (the other three kept by the same rule, not measured as calls).
 _jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 # polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
 _atan2 = _jit_inline(atan2_poly)
