@@ -434,13 +434,16 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     """A simulator's ints and float32 (an audit, 2026-11-26: 10-60x slower through the array
     path): the scalar path takes them and answers as for floats; a bool is still refused."""
     from propmap.maps import build_map
-    from propmap.rotormap import RotorMap, _plain, _three
+    from propmap.core._plain import plain_float, plain_vector3
+    from propmap.rotormap import RotorMap
 
     prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
     rm = RotorMap(build_map(prop, p, np.geomspace(3000, 9000, 4) * RPM, np.linspace(0, 15, 4),
                             np.radians(np.linspace(0, 180, 7)), air=p.air, params_label=p.label, n_check=0))
-    assert _plain(600) == 600.0 and _plain(np.float32(2.5)) == 2.5 and _plain(True) is None
-    assert _three([0, 0, 1]).dtype == np.float64 and _three(np.array([1, 2, 3], np.int32)) is not None
+    assert plain_float(600) == 600.0 and plain_float(np.float32(2.5)) == 2.5 and plain_float(True) is None
+    assert plain_float(2**63) is None and plain_float(-(2**63) + 1) == -9.223372036854776e18  # (beyond int64: none)
+    assert plain_vector3([0, 0, 1]).dtype == np.float64 and plain_vector3(np.array([1, 2, 3], np.int32)) is not None
+    assert plain_vector3([0, 0, 10**20]) is None and plain_vector3(np.array([True, False, True])) is None
     ref = rm.loads(600.0, 3.0, 1.0)
     for args in ((600, 3, 1), (np.float32(600.0), np.int64(3), 1.0)):
         got = rm.loads(*args)

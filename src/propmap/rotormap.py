@@ -18,6 +18,7 @@ import numpy as np
 
 from .core.units import RPM
 from .core._interp import snap_incidence, snap_incidence_scalar
+from .core._plain import plain_float, plain_vector3
 from .core.geometry import has_bool, refuse_masked
 from .io.inputs import short_path
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
@@ -51,36 +52,6 @@ def _cell_flags(bad: np.ndarray) -> np.ndarray:
 
 
 _SPIN = {"ccw": 1.0, "cw": -1.0}
-
-
-def _plain(x):
-    """``x`` as a Python float where it is one real number (a float, an int, a NumPy float or
-    integer scalar; not a bool), else None: the scalar fast paths take all of them (an int or
-    float32 took the array path, 10-60x slower, until 2026-11-26)."""
-    if type(x) is float:
-        return x
-    if isinstance(x, (int, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_)):
-        try:
-            return float(x)
-        except OverflowError:  # an int beyond a float's range: the array path says what is wrong
-            return None
-    return None
-
-
-def _three(value):
-    """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers
-    (such an array of floats or integers, or a tuple or list of three :func:`_plain` numbers);
-    else None."""
-    if type(value) is np.ndarray:
-        if value.shape != (3,):
-            return None
-        if value.dtype == np.float64:
-            return value
-        return value.astype(np.float64) if value.dtype.kind in "iuf" else None
-    if type(value) in (tuple, list) and len(value) == 3:
-        xs = [_plain(x) for x in value]
-        return None if any(x is None for x in xs) else np.array(xs)
-    return None
 
 
 class MapLoads(NamedTuple):
@@ -370,7 +341,7 @@ class RotorMap:
             direction is the incidence), an unknown policy, or (policy "raise") a
             query outside the grid, naming the argument and the grid's range.
         """
-        o, v, b = _plain(omega), _plain(airspeed), _plain(incidence)
+        o, v, b = plain_float(omega), plain_float(airspeed), plain_float(incidence)
         if o is not None and v is not None and b is not None:
             fast = self._loads1(o, v, b, out_of_grid)
             if fast is not None:
@@ -475,7 +446,7 @@ class RotorMap:
         wrench_vectors), without building and broadcasting arrays. None where the inputs
         are not one rotor's plain numbers, or not finite, or outside the grid under
         "raise": the general path then answers (and raises what it raises)."""
-        v, a, omega = _three(velocity), _three(axis), _plain(omega)
+        v, a, omega = plain_vector3(velocity), plain_vector3(axis), plain_float(omega)
         if v is None or a is None or omega is None or omega != omega:
             return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (

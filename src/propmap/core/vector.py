@@ -17,6 +17,7 @@ import numpy as np
 from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
+from ._plain import plain_float, plain_vector3
 from .geometry import Propeller, has_bool, refuse_masked
 from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -234,23 +235,6 @@ def _check_speed(speed) -> None:
                          f"model's range); got {worst:.6g} m/s")
 
 
-def _plain_number(c) -> bool:
-    """A real number NumPy reads as one (not a bool, not an integer beyond int64)."""
-    return (isinstance(c, (int, float, np.floating, np.integer)) and not isinstance(c, (bool, np.bool_))
-            and not (isinstance(c, int) and abs(c) >= 2**63))
-
-
-def _plain3(value):
-    """A plain sequence or 1-D array (not a subclass) of three real numbers as floats, else None."""
-    if type(value) is np.ndarray:
-        if value.shape != (3,) or value.dtype.kind not in "iuf":
-            return None
-        return [float(c) for c in value.tolist()]
-    if isinstance(value, (list, tuple)) and len(value) == 3 and all(_plain_number(c) for c in value):
-        return [float(c) for c in value]
-    return None
-
-
 def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretization, on_failure):
     """:func:`rotor_wrench` at one operating point (a controller's call: the array path's frame and
     vectors cost twice the loads' own call), or None where the inputs are not one velocity, one
@@ -259,8 +243,8 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     the arithmetic of :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
     from ._interp import point_frame, point_vectors
 
-    Vv, zv = _plain3(velocity), _plain3(axis)
-    if Vv is None or zv is None or not _plain_number(omega) or not isinstance(spin, (str, int, float)):
+    Vv, zv, om = plain_vector3(velocity), plain_vector3(axis), plain_float(omega)
+    if Vv is None or zv is None or om is None or not isinstance(spin, (str, int, float)):
         return None
     if not all(math.isfinite(c) for c in zv) or not all(abs(c) < VELOCITY_MAX for c in Vv):
         return None  # (the array path names a non-finite axis or velocity; a huge one is no airspeed)
@@ -272,7 +256,7 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     s = float(_spin_sign(spin))
     zx, zy, zz, speed, axial, beta = point_frame(*Vv, *zv)
     _check_speed(speed)
-    loads = rotor_loads(propeller, params, omega, speed, beta, air=air, discretization=discretization,
+    loads = rotor_loads(propeller, params, om, speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure)
     F_M = point_vectors(*Vv, zx, zy, zz, speed, axial, float(loads.thrust), float(loads.drag), float(loads.torque),
                         float(loads.rolling_moment), float(loads.side_force), float(loads.pitching_moment), s)

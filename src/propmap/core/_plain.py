@@ -1,0 +1,59 @@
+"""One-point inputs of the scalar fast paths (:meth:`propmap.RotorMap.loads`, ``.wrench`` and
+:func:`propmap.rotor_wrench`): a query that is one plain number, or one 3-vector of them, takes
+the compiled one-point path; anything else (an array, a bool, a masked array, a subclass) returns
+None and takes the array path, which broadcasts it or says what is wrong with it."""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["plain_float", "plain_vector3"]
+
+
+def plain_float(x) -> float | None:
+    """``x`` as a Python float where it is one real number, else None.
+
+    Parameters
+    ----------
+    x : object
+        A float, an int, a NumPy floating or integer scalar pass (an int or a float32 took the
+        array path, 10-60x slower, until 2026-11-26); a bool, a NumPy bool, an integer beyond
+        int64 (which NumPy reads as no number) and anything else give None.
+
+    Returns
+    -------
+    float or None
+    """
+    if type(x) is float:
+        return x
+    if isinstance(x, int) and abs(x) >= 2**63:  # not an int64, so no number NumPy reads: the array path says so
+        return None
+    if isinstance(x, (int, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_)):
+        return float(x)
+    return None
+
+
+def plain_vector3(value) -> np.ndarray | None:
+    """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers, else None.
+
+    Parameters
+    ----------
+    value : object
+        A NumPy array (not a subclass) of shape (3,) and a float or integer dtype, or a tuple or
+        list (not a subclass) of three :func:`plain_float` numbers.
+
+    Returns
+    -------
+    ndarray of shape (3,) or None
+        ``value`` itself where it is already such a float64 array.
+    """
+    if type(value) is np.ndarray:
+        if value.shape != (3,):
+            return None
+        if value.dtype == np.float64:
+            return value
+        return value.astype(np.float64) if value.dtype.kind in "iuf" else None
+    if type(value) in (tuple, list) and len(value) == 3:
+        xs = [plain_float(x) for x in value]
+        return None if any(x is None for x in xs) else np.array(xs)
+    return None
