@@ -110,8 +110,8 @@ def main(argv: list[str] | None = None) -> int:
 #: said once, on a terminal, when a run compiles the model's kernels: a fresh installation's first model command
 #: compiles for 36 s (loads) up to about 3 minutes (every kernel family, 174 s) on a 2-core machine (docs/cli.md,
 #: benchmarks/README.md), silent until then, which a user could take for a hang
-COMPILE_NOTICE = ("propmap: compiling the model's kernels for this machine, once (a few minutes; later runs load "
-                  "them from the cache)")
+COMPILE_NOTICE = ("propmap: compiling the model's kernels for this machine, once (under a minute to a few minutes; "
+                  "later runs load them from the cache)")
 #: the commands and options that never run the model: no listener (numba's import, 0.3 s) for them
 _NO_MODEL = ("props", "-h", "--help", "--version")
 
