@@ -69,10 +69,26 @@ def has_bool(value) -> bool:
     return isinstance(value, (bool, np.bool_))
 
 
-def _short(value) -> str:
-    """``repr(value)`` cut to one short line for an error message."""
-    r = repr(value).replace("\n", " ")
-    return r if len(r) <= 60 else r[:55] + " ..."
+def short_repr(value, n: int = 60) -> str:
+    """``repr(value)`` as one line of at most ``n`` characters, for an error message.
+
+    Parameters
+    ----------
+    value : object
+        Anything; a NumPy array or scalar is shown as its ``tolist()``, an integer of 30 digits
+        or more by its number of digits (its repr can take seconds to build).
+    n : int
+        The longest text returned, > 4.
+
+    Returns
+    -------
+    str
+        The repr, newlines as spaces, cut to its first ``n - 4`` characters and " ..." where longer.
+    """
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    r = repr(value.tolist() if isinstance(value, (np.ndarray, np.generic)) else value).replace("\n", " ")
+    return r if len(r) <= n else r[: n - 4] + " ..."
 
 
 @dataclass(frozen=True, eq=False)
@@ -133,15 +149,15 @@ class Propeller:
             raise ValueError(f"name must be a string, got {type(self.name).__name__}")
         radius = _real(self.radius)
         if radius is None or not (math.isfinite(radius) and radius > 0):
-            raise ValueError(f"radius must be finite and > 0 m, got {_short(self.radius)}")
+            raise ValueError(f"radius must be finite and > 0 m, got {short_repr(self.radius)}")
         nb = self.n_blades
         if (isinstance(nb, (bool, np.bool_)) or not isinstance(nb, numbers.Real)
                 or not (_real(nb) is not None and math.isfinite(float(nb)) and float(nb).is_integer() and nb >= 1)):
-            raise ValueError(f"n_blades must be an integer >= 1, got {_short(nb)}")
+            raise ValueError(f"n_blades must be an integer >= 1, got {short_repr(nb)}")
         if self.pitch is not None:
             pitch = _real(self.pitch)
             if pitch is None or not math.isfinite(pitch):
-                raise ValueError(f"pitch must be a finite number [m] or None, got {_short(self.pitch)}")
+                raise ValueError(f"pitch must be a finite number [m] or None, got {short_repr(self.pitch)}")
             object.__setattr__(self, "pitch", pitch)
         arrays = {}
         for key in ("r", "chord", "theta"):
@@ -154,7 +170,7 @@ class Propeller:
             except (TypeError, ValueError, OverflowError):
                 numeric = False
             if not numeric:
-                raise ValueError(f"{key} must be an array of numbers, got {_short(value)}")
+                raise ValueError(f"{key} must be an array of numbers, got {short_repr(value)}")
             if ndim != 1:  # (a (1, n) array was flattened without a word)
                 raise ValueError(f"{key} must be a 1-D array (one value per blade station), got {ndim} dimensions")
             if not np.all(np.isfinite(a)):

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.geometry import _short
+from ..core.geometry import short_repr
 from ..core._interp import snap_incidence
 from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
 from ._checks import first_length, float_array
@@ -97,7 +97,8 @@ class LoadData:
                 raise TypeError
             group[:] = list(self.group)
         except (TypeError, ValueError):
-            raise ValueError(f"LoadData.group must be {n} labels (one per point), got {_short(self.group)}") from None
+            raise ValueError(f"LoadData.group must be {n} labels (one per point), "
+                             f"got {short_repr(self.group)}") from None
         for g in group:  # (NaN labels, e.g. pandas' empty cells, never equal themselves: the rate count fell to 0)
             if isinstance(g, (bool, np.bool_)) or not isinstance(g, (str, numbers.Real)) or g != g:
                 raise ValueError(f"LoadData.group: each label must be a string or a number (not NaN), got {g!r:.40}")

@@ -38,7 +38,7 @@ import re
 import numpy as np
 
 from ..core.units import RPM
-from ..core.geometry import _real
+from ..core.geometry import _real, short_repr
 
 __all__ = ["DIMS", "LOADS", "SIDE_LOADS", "map_loads", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX",
            "check_propeller", "check_attributes", "check_dataset", "check_integer", "map_model"]
@@ -79,11 +79,6 @@ _TEXT = ("title", "propeller", "propeller_source", "section_model", "params_labe
          "model_uncertainty_axial", "model_uncertainty_off_axis")
 
 
-def _short(value, n: int = 60) -> str:
-    r = repr(value.tolist() if isinstance(value, (np.ndarray, np.generic)) else value)
-    return r if len(r) <= n else r[: n - 4] + " ..."
-
-
 def _number(attrs: dict, key: str, lo: float, hi: float, unit: str = "", *, integer: bool = False,
             lo_open: bool = False, nan_ok: bool = False):
     """attrs[key] as a float (int with ``integer``), or None when absent.
@@ -102,13 +97,13 @@ def _number(attrs: dict, key: str, lo: float, hi: float, unit: str = "", *, inte
     kind = "an integer" if integer else "a number"
     interval = f"{'(' if lo_open else '['}{lo:g}, {hi:g}]{' ' + unit if unit else ''}"
     if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
-        raise ValueError(f"attribute {key} must be {kind} in {interval}, got {_short(v)}")
+        raise ValueError(f"attribute {key} must be {kind} in {interval}, got {short_repr(v)}")
     x = float(v)
     if nan_ok and math.isnan(x):
         return x
     ok = math.isfinite(x) and (lo < x if lo_open else lo <= x) and x <= hi
     if not ok or (integer and not x.is_integer()):
-        raise ValueError(f"attribute {key} must be {kind} in {interval}, got {_short(v)}")
+        raise ValueError(f"attribute {key} must be {kind} in {interval}, got {short_repr(v)}")
     return int(x) if integer else x
 
 
@@ -119,7 +114,7 @@ def _array(attrs: dict, key: str) -> np.ndarray | None:
     v = attrs[key]
     a = np.asarray(v) if isinstance(v, (list, tuple, np.ndarray)) or isinstance(v, numbers.Real) else None
     if a is None or a.dtype.kind not in "iuf" or a.ndim > 1 or not 1 <= a.size <= MAX_STATIONS:
-        raise ValueError(f"attribute {key} must be an array of 1 to {MAX_STATIONS} numbers, got {_short(v)}")
+        raise ValueError(f"attribute {key} must be an array of 1 to {MAX_STATIONS} numbers, got {short_repr(v)}")
     return a.reshape(-1).astype(float)
 
 
@@ -163,7 +158,7 @@ def _check_axis(ds, d: str) -> None:
                          f"got [{a[0]:g}, {a[-1]:g}]")
     units = ax.attrs.get("units")
     if units is not None and units != UNITS[d]:
-        raise ValueError(f"axis {d} must be in {UNITS[d]!r}, its units attribute says {_short(units)}")
+        raise ValueError(f"axis {d} must be in {UNITS[d]!r}, its units attribute says {short_repr(units)}")
 
 
 def map_loads(ds) -> tuple[str, ...]:
@@ -203,7 +198,7 @@ def _check_variables(ds) -> np.ndarray:
             raise ValueError(f"variable {k} must hold numbers, has dtype {ds[k].dtype}")
         units = ds[k].attrs.get("units")
         if k not in FLAGS and units is not None and units != UNITS[k]:
-            raise ValueError(f"variable {k} must be in {UNITS[k]!r}, its units attribute says {_short(units)}")
+            raise ValueError(f"variable {k} must be in {UNITS[k]!r}, its units attribute says {short_repr(units)}")
     converged = ds["converged"].transpose(*DIMS).values.astype(bool)
     if not converged.any():
         raise ValueError("no node of the map converged: nothing to interpolate")
@@ -277,7 +272,7 @@ def check_attributes(attrs: dict) -> None:
                          f"{float(np.max(r)):g} m")
     for key in _TEXT:
         if key in attrs and not isinstance(attrs[key], str):
-            raise ValueError(f"attribute {key} must be text, got {_short(attrs[key])}")
+            raise ValueError(f"attribute {key} must be text, got {short_repr(attrs[key])}")
 
 
 def check_dataset(ds) -> None:
@@ -370,7 +365,7 @@ def map_model(attrs: dict):
     except ValueError as exc:
         raise ValueError(f"attribute params_json is not JSON ({exc})") from None
     if not isinstance(si, dict):
-        raise ValueError(f"attribute params_json must be a JSON object, got {_short(si)}")
+        raise ValueError(f"attribute params_json must be a JSON object, got {short_repr(si)}")
     # a map written before the radial flow's drag existed (2026-11-24) was made without it,
     # whatever the record's default is now
     si.setdefault("radial_drag", False)

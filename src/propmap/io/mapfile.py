@@ -38,8 +38,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.geometry import short_repr
 from .inputs import short_path
-from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, _short, check_dataset, check_propeller,
+from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, check_dataset, check_propeller,
                        map_model)
 
 __all__ = ["MAX_NODES", "check_dataset", "check_propeller", "map_model", "map_props", "read_dataset", "read_sidecar",
@@ -267,7 +268,7 @@ def read_dataset(path, prop: str | None = None):
                 if "prop" in ds.dims:
                     ds = _select(ds, prop, where)
                 elif prop is not None and prop != ds.attrs.get("propeller"):
-                    raise ValueError(f"{where}: a map of {_short(ds.attrs.get('propeller'))}, not of {prop!r}")
+                    raise ValueError(f"{where}: a map of {short_repr(ds.attrs.get('propeller'))}, not of {prop!r}")
                 return ds.load()
     except ValueError as exc:
         msg = str(exc)

@@ -54,7 +54,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.geometry import INCH, Propeller
+from ..core.geometry import INCH, Propeller, short_repr
 from ..core.body import BodyDrag
 from ..io.inputs import as_path, short_path, show_path
 from ..io.toml_file import load_toml
@@ -85,13 +85,6 @@ class VehicleFileError(ValueError):
     """A vehicle file is malformed; the message names the file and the entry."""
 
 
-def _short(value, n: int = 60) -> str:
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
-        return f"an integer of {len(str(abs(value)))} digits"
-    r = repr(value)
-    return r if len(r) <= n else r[: n - 4] + " ..."
-
-
 def _is_number(value) -> bool:
     return isinstance(value, numbers.Real) and not isinstance(value, bool)
 
@@ -108,32 +101,32 @@ def _number(value, what: str, unit: str, rng) -> float:
     lo, hi, lo_open = rng
     interval = f"{'>' if lo_open else '>='} {lo:g} and <= {hi:g} {unit}"
     if not _is_number(value):
-        raise VehicleFileError(f"{what} must be a number {interval}, got {_short(value)}")
+        raise VehicleFileError(f"{what} must be a number {interval}, got {short_repr(value)}")
     x = _float(value)
     if not (math.isfinite(x) and (lo < x if lo_open else lo <= x) and x <= hi):
-        raise VehicleFileError(f"{what} must be {interval}, got {_short(value)}")
+        raise VehicleFileError(f"{what} must be {interval}, got {short_repr(value)}")
     return x
 
 
 def _vec3(value, what: str) -> np.ndarray:
     if not (isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)):
-        raise VehicleFileError(f"{what} must be 3 numbers [x, y, z], got {_short(value)}")
+        raise VehicleFileError(f"{what} must be 3 numbers [x, y, z], got {short_repr(value)}")
     a = np.array([_float(v) for v in value])
     if not np.all(np.isfinite(a)):
-        raise VehicleFileError(f"{what} must be 3 finite numbers, got {_short(value)}")
+        raise VehicleFileError(f"{what} must be 3 finite numbers, got {short_repr(value)}")
     return a
 
 
 def _unknown(table: dict, allowed, where: str) -> None:
     extra = sorted(str(k) for k in table if k not in allowed)
     if extra:
-        shown = ", ".join(k if k.isidentifier() else _short(k, 40) for k in extra[:5])
+        shown = ", ".join(k if k.isidentifier() else short_repr(k, 40) for k in extra[:5])
         raise VehicleFileError(f"{where}: unknown key(s) {shown} (allowed: {', '.join(allowed)})")
 
 
 def _inertia(value, what: str) -> np.ndarray:
     """A 3 x 3 inertia tensor from a diagonal [a, b, c] or a nested 3 x 3 list [kg m^2]."""
-    shape_msg = f"{what} must be [Ixx, Iyy, Izz] or a 3 x 3 list of numbers [kg m^2], got {_short(value)}"
+    shape_msg = f"{what} must be [Ixx, Iyy, Izz] or a 3 x 3 list of numbers [kg m^2], got {short_repr(value)}"
     if isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value):
         m = np.diag([_float(v) for v in value])
     elif (isinstance(value, list) and len(value) == 3
@@ -142,18 +135,20 @@ def _inertia(value, what: str) -> np.ndarray:
     else:
         raise VehicleFileError(shape_msg)
     if not np.all(np.isfinite(m)) or np.any(np.abs(m) > INERTIA_MAX):
-        raise VehicleFileError(f"{what} must have finite elements within +-{INERTIA_MAX:g} kg m^2, got {_short(value)}")
+        raise VehicleFileError(f"{what} must have finite elements within +-{INERTIA_MAX:g} kg m^2, "
+                               f"got {short_repr(value)}")
     if not np.allclose(m, m.T, rtol=1e-9, atol=1e-15):
-        raise VehicleFileError(f"{what} must be symmetric, got {_short(value)}")
+        raise VehicleFileError(f"{what} must be symmetric, got {short_repr(value)}")
     if np.min(np.linalg.eigvalsh(m)) <= 0:
-        raise VehicleFileError(f"{what} must be positive definite (all principal moments > 0), got {_short(value)}")
+        raise VehicleFileError(f"{what} must be positive definite (all principal moments > 0), got {short_repr(value)}")
     return m
 
 
 def _body(table, name: str) -> BodyDrag:
     where = f"{name}: [body]"
     if not isinstance(table, dict):
-        raise VehicleFileError(f"{where} must be a table with drag_area and optional wash_factor, got {_short(table)}")
+        raise VehicleFileError(f"{where} must be a table with drag_area and optional wash_factor, "
+                               f"got {short_repr(table)}")
     _unknown(table, BODY_KEYS, where)
     if "drag_area" not in table:
         raise VehicleFileError(f"{where}: missing key 'drag_area'")
@@ -167,7 +162,7 @@ def _body(table, name: str) -> BodyDrag:
 def _blades(value, where: str) -> int:
     lo, hi = BLADES_RANGE
     if not (isinstance(value, int) and not isinstance(value, bool) and lo <= value <= hi):
-        raise VehicleFileError(f"{where}: blades must be an integer in [{lo}, {hi}], got {_short(value)}")
+        raise VehicleFileError(f"{where}: blades must be an integer in [{lo}, {hi}], got {short_repr(value)}")
     return value
 
 
@@ -188,7 +183,7 @@ def _rotor_params(spec, folder: Path, where: str):
 
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: params must be a parameter file or a named set (a string), "
-                               f"got {_short(spec)}")
+                               f"got {short_repr(spec)}")
     local = _local_file(spec, folder)
     try:
         return read_params(local) if local is not None else resolve_params(spec)
@@ -205,7 +200,7 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
 
     if not isinstance(spec, str) or not spec.strip():
         raise VehicleFileError(f"{where}: propeller must be a geometry file or a catalogue name (a string), "
-                               f"got {_short(spec)}")
+                               f"got {short_repr(spec)}")
     local = _local_file(spec, folder)
     if local is not None:
         from ..io.geometry_files import SIZE_HINT
@@ -340,7 +335,7 @@ def read_vehicle(path) -> Vehicle:
     cg = _vec3(data["centre_of_mass"], f"{name}: centre_of_mass") if "centre_of_mass" in data else np.zeros(3)
     if np.any(np.abs(cg) > POSITION_MAX):
         raise VehicleFileError(f"{name}: centre_of_mass must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
-                               f"m, got {_short(data['centre_of_mass'])}")
+                               f"m, got {short_repr(data['centre_of_mass'])}")
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
     rotors, props = [], {}
@@ -350,7 +345,7 @@ def read_vehicle(path) -> Vehicle:
         where = f"{name}: rotor {k}"
         if not isinstance(r, dict):
             raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
-                                   f"got {_short(r)}")
+                                   f"got {short_repr(r)}")
         for key in ("position", "axis", "spin", "propeller"):
             if key not in r:
                 raise VehicleFileError(f"{where}: missing key {key!r}")
@@ -358,18 +353,18 @@ def read_vehicle(path) -> Vehicle:
         position = _vec3(r["position"], f"{where} position")
         if np.any(np.abs(position) > POSITION_MAX):
             raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
-                                   f"m, got {_short(r['position'])} (are the positions in metres?)")
+                                   f"m, got {short_repr(r['position'])} (are the positions in metres?)")
         axis = _vec3(r["axis"], f"{where} axis")
         lo, hi = AXIS_LENGTH_RANGE
         scale = float(np.max(np.abs(axis)))
         length = scale * float(np.linalg.norm(axis / scale)) if scale > 0 else 0.0
         if not (lo <= length <= hi):
             raise VehicleFileError(f"{where}: axis must be non-zero with a length in [{lo:g}, {hi:g}] (a direction; "
-                                   f"it is normalised), got {_short(r['axis'])}")
+                                   f"it is normalised), got {short_repr(r['axis'])}")
         spin = r["spin"]
         spin = {"ccw": 1.0, "cw": -1.0}.get(spin.lower()) if isinstance(spin, str) else None
         if spin is None:
-            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {_short(r['spin'])}")
+            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {short_repr(r['spin'])}")
         blades = _blades(r["blades"], where) if "blades" in r else None
         diameter = _number(r["diameter_m"], f"{where} diameter_m", "m", DIAMETER_RANGE) if "diameter_m" in r else None
         # (one object per propeller of the file: vehicle_wrench solves a propeller's rotors together by identity)
