@@ -21,3 +21,19 @@ def _module(name: str):
 def test_the_solver_benchmarks_simd_probe_compiles_the_residual_as_the_kernel_calls_it():
     widths = _module("bench_solver").simd_widths()
     assert widths and set(widths) <= {2, 4, 8}  # doubles per vector: SSE2, AVX2, AVX-512
+
+
+def test_the_peer_benchmark_without_dynbem_says_how_to_install_it_and_exits_0(monkeypatch, capsys):
+    """bench_peers.py is run from a checkout that may lack its optional peer: one line, exit 0."""
+    import sys
+
+    import pytest
+
+    module = _module("bench_peers")
+    monkeypatch.setitem(sys.modules, "dynbem", None)  # (import dynbem raises ImportError)
+    monkeypatch.setattr(sys, "argv", ["bench_peers.py", "--points", "10"])
+    with pytest.raises(SystemExit) as stop:
+        module.main()
+    assert stop.value.code == 0
+    out = capsys.readouterr().out
+    assert out.count("\n") == 1 and "pip install dynbem" in out
