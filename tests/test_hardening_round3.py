@@ -441,9 +441,10 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     rm = RotorMap(build_map(prop, p, np.geomspace(3000, 9000, 4) * RPM, np.linspace(0, 15, 4),
                             np.radians(np.linspace(0, 180, 7)), air=p.air, params_label=p.label, n_check=0))
     assert plain_float(600) == 600.0 and plain_float(np.float32(2.5)) == 2.5 and plain_float(True) is None
-    assert plain_float(2**63) is None and plain_float(-(2**63) + 1) == -9.223372036854776e18  # (beyond int64: none)
+    assert plain_float(2**64) == 2.0**64 and plain_float(10**400) is None  # (beyond a float's range: none)
+    assert plain_float(2**63, int64=True) is None and plain_float(2**63 - 1, int64=True) == 2.0**63  # (int64 only)
     assert plain_vector3([0, 0, 1]).dtype == np.float64 and plain_vector3(np.array([1, 2, 3], np.int32)) is not None
-    assert plain_vector3([0, 0, 10**20]) is None and plain_vector3(np.array([True, False, True])) is None
+    assert plain_vector3([0, 0, 10**20], int64=True) is None and plain_vector3(np.array([True, False, True])) is None
     ref = rm.loads(600.0, 3.0, 1.0)
     for args in ((600, 3, 1), (np.float32(600.0), np.int64(3), 1.0)):
         got = rm.loads(*args)

@@ -121,3 +121,30 @@ def test_a_velocity_along_the_axis_has_zero_incidence_to_the_last_digits():
         axial = 0.0 if c > 0 else math.pi
         for b in (float(one.loads.incidence), float(arr.loads.incidence[0])):
             assert abs(b - axial) < 1e-14
+
+
+def test_rotor_loads_takes_numpy_scalars_by_the_one_point_path(monkeypatch):
+    """A float64 taken from an array (a simulator's state vector) ran the array path, 1.45x a float's
+    call, until 2026-11-28 (a review of the peer benchmark): the one-point check compared type(x) with
+    np.floating and np.integer, which no scalar's type is. The same loads either way; a bool or a 0-d
+    array still takes the array path, and its errors."""
+    from propmap.core import solver
+
+    prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
+    ref = pm.rotor_loads(prop, params, 800.0, 6.0, 0.7)
+
+    def no(*args, **kwargs):
+        raise AssertionError("the array path")
+
+    with monkeypatch.context() as m:
+        m.setattr(solver, "_as_array", no)
+        for args in ((np.float64(800.0), np.float64(6.0), np.float64(0.7)), (np.int64(800), np.int32(6), 0.7),
+                     (800, np.float32(6.0), np.float64(0.7))):
+            got = pm.rotor_loads(prop, params, *args)
+            assert float(got.thrust) == pytest.approx(float(ref.thrust), rel=1e-12, abs=0.0)
+        with pytest.raises(AssertionError, match="the array path"):
+            pm.rotor_loads(prop, params, np.array(800.0), 6.0, 0.7)
+    with pytest.raises(ValueError, match="omega"):
+        pm.rotor_loads(prop, params, np.True_, 6.0, 0.7)
+    with pytest.raises(ValueError, match="omega"):
+        pm.rotor_loads(prop, params, np.float64(-5.0), 6.0, 0.7)

@@ -1,7 +1,8 @@
 """One-point inputs of the scalar fast paths (:meth:`propmap.RotorMap.loads`, ``.wrench`` and
-:func:`propmap.rotor_wrench`): a query that is one plain number, or one 3-vector of them, takes
-the compiled one-point path; anything else (an array, a bool, a masked array, a subclass) returns
-None and takes the array path, which broadcasts it or says what is wrong with it."""
+:func:`propmap.rotor_wrench`): a query that is one real number (a Python or NumPy real scalar, not
+a bool), or one 3-vector of them (an ndarray of shape (3,), not a subclass, or a list or tuple,
+a named tuple too), takes the compiled one-point path; anything else gives None and takes the
+array path, which broadcasts it or says what is wrong with it."""
 
 from __future__ import annotations
 
@@ -10,15 +11,19 @@ import numpy as np
 __all__ = ["plain_float", "plain_vector3"]
 
 
-def plain_float(x) -> float | None:
+def plain_float(x, *, int64: bool = False) -> float | None:
     """``x`` as a Python float where it is one real number, else None.
 
     Parameters
     ----------
     x : object
         A float, an int, a NumPy floating or integer scalar pass (an int or a float32 took the
-        array path, 10-60x slower, until 2026-11-26); a bool, a NumPy bool, an integer beyond
-        int64 (which NumPy reads as no number) and anything else give None.
+        array path, 10-60x slower, until 2026-11-26); a bool, a NumPy bool, an integer beyond a
+        float's range and anything else give None.
+    int64 : bool
+        Also None for an integer beyond int64, which NumPy reads as no number (:func:`propmap.rotor_wrench`'s
+        array path then names it: "velocity must be numbers"); RotorMap's one-point calls take it as a float,
+        whose range the query then fails (the array path would call it no number).
 
     Returns
     -------
@@ -26,21 +31,26 @@ def plain_float(x) -> float | None:
     """
     if type(x) is float:
         return x
-    if isinstance(x, int) and abs(x) >= 2**63:  # not an int64, so no number NumPy reads: the array path says so
-        return None
     if isinstance(x, (int, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_)):
-        return float(x)
+        if int64 and isinstance(x, int) and abs(x) >= 2**63:
+            return None
+        try:
+            return float(x)
+        except OverflowError:  # an int beyond a float's range: the array path says what is wrong
+            return None
     return None
 
 
-def plain_vector3(value) -> np.ndarray | None:
+def plain_vector3(value, *, int64: bool = False) -> np.ndarray | None:
     """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers, else None.
 
     Parameters
     ----------
     value : object
         A NumPy array (not a subclass) of shape (3,) and a float or integer dtype, or a tuple or
-        list (not a subclass) of three :func:`plain_float` numbers.
+        list (a named tuple too) of three :func:`plain_float` numbers.
+    int64 : bool
+        As :func:`plain_float`'s, for the tuple's or list's numbers.
 
     Returns
     -------
@@ -53,7 +63,7 @@ def plain_vector3(value) -> np.ndarray | None:
         if value.dtype == np.float64:
             return value
         return value.astype(np.float64) if value.dtype.kind in "iuf" else None
-    if type(value) in (tuple, list) and len(value) == 3:
-        xs = [plain_float(x) for x in value]
+    if isinstance(value, (tuple, list)) and len(value) == 3:
+        xs = [plain_float(x, int64=int64) for x in value]
         return None if any(x is None for x in xs) else np.array(xs)
     return None

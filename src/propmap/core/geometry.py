@@ -75,8 +75,9 @@ def short_repr(value, n: int = 60) -> str:
     Parameters
     ----------
     value : object
-        Anything; a NumPy array or scalar is shown as its ``tolist()``, an integer of 30 digits
-        or more by its number of digits (its repr can take seconds to build).
+        Anything; a NumPy array or scalar is shown as its ``tolist()`` (an array's first ``n``
+        elements only; a masked array by its repr, which marks the masked ones), an integer of 30
+        digits or more by its number of digits (its repr can take seconds to build, or fail).
     n : int
         The longest text returned, > 4.
 
@@ -86,8 +87,14 @@ def short_repr(value, n: int = 60) -> str:
         The repr, newlines as spaces, cut to its first ``n - 4`` characters and " ..." where longer.
     """
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**30:
-        return f"an integer of {len(str(abs(value)))} digits"
-    r = repr(value.tolist() if isinstance(value, (np.ndarray, np.generic)) else value).replace("\n", " ")
+        if value.bit_length() < 14000:  # (str() refuses ints of more than 4300 digits: Python's limit)
+            return f"an integer of {len(str(abs(value)))} digits"
+        return f"an integer of about {int(abs(value).bit_length() * math.log10(2)) + 1} digits"
+    if isinstance(value, np.ndarray) and not isinstance(value, np.ma.MaskedArray):
+        value = value.reshape(-1)[:n].tolist() if value.size > n else value.tolist()
+    elif isinstance(value, np.generic):
+        value = value.tolist()
+    r = repr(value).replace("\n", " ")
     return r if len(r) <= n else r[: n - 4] + " ..."
 
 

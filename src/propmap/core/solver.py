@@ -201,7 +201,11 @@ def _scalar(name: str, value) -> float:
     return x
 
 
-_REAL_SCALARS = (float, int, np.floating, np.integer)
+#: the exact types that take the one-point path (a set of types, not of their abstract bases: ``type(x) in`` with
+#: np.floating and np.integer matched no NumPy scalar, so a float64 taken from an array ran the array path, 1.45x the
+#: call's cost, until 2026-11-28: a review of the peer benchmark; a bool, a subclass, an array take the array path)
+_REAL_SCALARS = frozenset((float, int, np.float64, np.float32, np.float16, np.int64, np.int32, np.int16, np.int8,
+                           np.uint64, np.uint32, np.uint16, np.uint8))
 
 #: set by supersonic_tips_allowed (per thread and task: a context variable, not the global warning filters)
 _SUPERSONIC_ALLOWED = contextvars.ContextVar("propmap_supersonic_tips_allowed", default=False)

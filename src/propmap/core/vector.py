@@ -243,7 +243,8 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     the arithmetic of :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
     from ._interp import point_frame, point_vectors
 
-    Vv, zv, om = plain_vector3(velocity), plain_vector3(axis), plain_float(omega)
+    Vv, zv = plain_vector3(velocity, int64=True), plain_vector3(axis, int64=True)
+    om = plain_float(omega, int64=True)
     if Vv is None or zv is None or om is None or not isinstance(spin, (str, int, float)):
         return None
     if not all(math.isfinite(c) for c in zv) or not all(abs(c) < VELOCITY_MAX for c in Vv):
