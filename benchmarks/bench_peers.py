@@ -14,18 +14,23 @@ calls it:
   whole NumPy arrays in, numba kernels (``--threads`` threads, 1 by default: a per-core
   comparison, dynbem being single-threaded);
 * dynbem: one ``model.compute_forces(RotorInputs(...), state)`` call per point in a Python
-  loop (its API has no batch entry point), the ``RotorInputs`` built per point.
+  loop (its API has no batch entry point), the ``RotorInputs`` built per point (its fields
+  cannot be reassigned); the quasi-static model's state is empty (``to_array()`` is []), so
+  its initial state serves every call.
 
 Cases: the forward-flight envelope of ``benchmarks/bench_solver.py`` (random rpm 3000-12000,
 V 0-25 m/s, incidence 0-90 deg; incidence is the angle between the free stream and the rotor
 axis, 0 = axial climb, 90 = edgewise), an axial set (incidence 0, V 0-25 m/s, every fifth
-point hover) and single-point calls (the first ``--single`` envelope points, one call each,
-median). Each case is timed ``--rounds`` times; the order of the libraries alternates from
-round to round (and from point to point in the single-point case). Per-point cost: median
+point hover) and single-point calls with Python floats (the first ``--single`` envelope
+points, one call each, median; each variant's calls in a row, then the variants' calls
+interleaved point by point, where each call finds the caches holding the others' data and
+code). Each batch is timed ``--rounds`` times; the order of the libraries alternates from
+round to round (and from point to point in the interleaved calls). Per-point cost: median
 over rounds of the batch time divided by its size, as process CPU time
 (``time.process_time``) and wall time (``time.perf_counter``). Ratios are dynbem / propmap:
-the median over rounds of the paired per-round ratios (batches) and the ratio of the
-medians (single points).
+the median over rounds of the paired per-round ratios (batches; so not the quotient of the
+two medians) and the ratio of the medians (single points). The garbage collector is off while
+a call is timed.
 
 Variants timed:
 
@@ -49,10 +54,10 @@ a hub moving at ``v_hub_world = V (sin b, 0, -cos b)`` in still air is propmap's
 the in-plane motion) = -F_x, torque Q = ``Q_spin`` (shaft reaction, positive opposing
 rotation, as propmap's torque).
 
-Run (pin to one core; propmap's first call compiles its kernels, 30-60 s, untimed; about 50 s
-more for the default sizes)::
+Run (on one core: ``taskset -c 1`` where there are two; propmap's first calls compile its
+kernels, 30-60 s, in the untimed warm-up; about a minute more for the default sizes)::
 
-    NUMBA_NUM_THREADS=1 taskset -c 1 .venv/bin/python benchmarks/bench_peers.py [--points 2000] [--rounds 5]
+    NUMBA_NUM_THREADS=1 taskset -c 1 .venv/bin/python benchmarks/bench_peers.py [--points 2000] [--rounds 6]
 
 Prints one JSON object. Without dynbem installed it prints how to install it and exits 0.
 """
@@ -60,6 +65,7 @@ Prints one JSON object. Without dynbem installed it prints how to install it and
 from __future__ import annotations
 
 import argparse
+import gc
 import inspect
 import json
 import math
@@ -72,17 +78,6 @@ from pathlib import Path
 import numpy as np
 
 RPM = math.pi / 30  # rad/s per rpm
-
-
-def cpu_name() -> str:
-    """The CPU model from /proc/cpuinfo (Linux), else what ``platform`` says."""
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def envelope(n: int, seed: int):
@@ -144,16 +139,20 @@ class DynbemRotor:
 
 
 def timed(f):
-    """(process CPU time, wall time) of one call of f, seconds."""
-    c0, w0 = time.process_time(), time.perf_counter()
-    f()
-    return time.process_time() - c0, time.perf_counter() - w0
+    """(process CPU time, wall time) of one call of f, seconds, with Python's garbage collector off."""
+    gc.disable()
+    try:
+        c0, w0 = time.process_time(), time.perf_counter()
+        f()
+        return time.process_time() - c0, time.perf_counter() - w0
+    finally:
+        gc.enable()
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--points", type=int, default=2000, help="points per batch (default 2000)")
-    ap.add_argument("--rounds", type=int, default=5, help="timed rounds per batch (default 5)")
+    ap.add_argument("--rounds", type=int, default=6, help="timed rounds per batch, each order alike (default 6)")
     ap.add_argument("--single", type=int, default=200, help="single-point calls timed (default 200)")
     ap.add_argument("--threads", type=int, default=1, help="propmap's numba threads (default 1)")
     ap.add_argument("--seed", type=int, default=7)
@@ -162,7 +161,8 @@ def main() -> None:
     try:
         import dynbem
     except ImportError:
-        print("dynbem is not installed; install it with `pip install dynbem` to run this comparison.")
+        print('dynbem is not installed; install it with `pip install "dynbem>=0.8,<0.9"` (or `pip install ".[bench]"` '
+              'in a checkout) to run this comparison.')
         sys.exit(0)
     try:
         from importlib.metadata import version
@@ -173,6 +173,9 @@ def main() -> None:
     import numba
 
     import propmap as pm
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from bench_solver import cpu_name
 
     numba.set_num_threads(min(args.threads, numba.config.NUMBA_NUM_THREADS))
     prop = pm.load_propeller("apce_8x6")
@@ -199,11 +202,13 @@ def main() -> None:
     runners.update({k: (lambda om, V, b, m=m: run_db(m, om, V, b)) for k, m in db_variants.items()})
     pm_keys, db_keys = list(pm_variants), list(db_variants)
 
-    # warm-up: compile (or load) propmap's kernels for both sets, array and scalar calls
+    # warm-up: compile (or load) propmap's kernels for both sets: the batches' (parallel, from
+    # solver.PARALLEL_MIN_POINTS points) and the one-point call's (serial)
     t_warm = time.perf_counter()
+    n_warm = max(args.points, 64)
     for p in pm_variants.values():
-        pm.rotor_loads(prop, p, *envelope(10, 0))
-        pm.rotor_loads(prop, p, *axial(10, 0))
+        pm.rotor_loads(prop, p, *envelope(n_warm, 0))
+        pm.rotor_loads(prop, p, *axial(n_warm, 0))
         pm.rotor_loads(prop, p, 800.0, 5.0, 1.0)
     for m in db_variants.values():
         m.batch(*envelope(10, 0))
@@ -228,20 +233,29 @@ def main() -> None:
         batches[case] = {"points": n, "rounds": args.rounds, "per_point": per,
                          "ratio_dynbem_over_propmap_median_of_paired_rounds": ratios}
 
-    # single points: one call per point, the libraries' order alternating point by point
-    om, V, b = envelope(args.single, args.seed)
+    # single points, Python floats as a simulator passes them: one call per point, (1) each variant's calls in a
+    # row ("back to back"), (2) the variants' calls interleaved point by point, the order alternating (each call
+    # then finds the caches holding the other library's data and code)
+    om, V, b = (x.tolist() for x in envelope(args.single, args.seed))
+    calls = {k: [(lambda p=p, i=i: pm.rotor_loads(prop, p, om[i], V[i], b[i])) for i in range(args.single)]
+             for k, p in pm_variants.items()}
+    calls.update({k: [(lambda m=m, i=i: m.point(om[i], V[i], b[i])) for i in range(args.single)]
+                  for k, m in db_variants.items()})
+    in_a_row = {k: [timed(c) for c in cs] for k, cs in calls.items()}
     single = {k: [] for k in runners}
     for i in range(args.single):
-        calls = {k: (lambda p=p, i=i: pm.rotor_loads(prop, p, om[i], V[i], b[i])) for k, p in pm_variants.items()}
-        calls.update({k: (lambda m=m, i=i: m.point(om[i], V[i], b[i])) for k, m in db_variants.items()})
         order = pm_keys + db_keys if i % 2 == 0 else db_keys + pm_keys
         for k in order:
-            single[k].append(timed(calls[k]))
-    single_med = {k: {"cpu_us": 1e6 * float(np.median([c for c, _ in v])),
-                      "wall_us": 1e6 * float(np.median([w for _, w in v]))} for k, v in single.items()}
-    single_ratio = {f"{kd} / {kp}": {"cpu": single_med[kd]["cpu_us"] / single_med[kp]["cpu_us"],
-                                      "wall": single_med[kd]["wall_us"] / single_med[kp]["wall_us"]}
-                    for kd in db_keys for kp in pm_keys}
+            single[k].append(timed(calls[k][i]))
+    def medians(times):
+        return {k: {"cpu_us": 1e6 * float(np.median([c for c, _ in v])),
+                    "wall_us": 1e6 * float(np.median([w for _, w in v]))} for k, v in times.items()}
+
+    def ratios(med):
+        return {f"{kd} / {kp}": {"cpu": med[kd]["cpu_us"] / med[kp]["cpu_us"],
+                                 "wall": med[kd]["wall_us"] / med[kp]["wall_us"]} for kd in db_keys for kp in pm_keys}
+
+    row_med, single_med = medians(in_a_row), medians(single)
     load_after = os.getloadavg()
 
     # check points: same problem, same sign conventions
@@ -296,8 +310,10 @@ def main() -> None:
                  "H = -F_world[0], Q = Q_spin",
         "warmup_s_untimed": round(warm_s, 1),
         "batches": batches,
-        "single_point": {"calls": args.single, "median": single_med,
-                         "ratio_dynbem_over_propmap_of_medians": single_ratio},
+        "single_point": {"calls": args.single, "inputs": "Python floats",
+                         "back_to_back": {"median": row_med, "ratio_dynbem_over_propmap_of_medians": ratios(row_med)},
+                         "interleaved": {"median": single_med,
+                                         "ratio_dynbem_over_propmap_of_medians": ratios(single_med)}},
         "check_points": check,
     }
     print(json.dumps(out, indent=2))

@@ -36,4 +36,4 @@ def test_the_peer_benchmark_without_dynbem_says_how_to_install_it_and_exits_0(mo
         module.main()
     assert stop.value.code == 0
     out = capsys.readouterr().out
-    assert out.count("\n") == 1 and "pip install dynbem" in out
+    assert out.count("\n") == 1 and "pip install \"dynbem>=0.8,<0.9\"" in out
