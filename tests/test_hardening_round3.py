@@ -452,6 +452,8 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     w = rm.wrench(np.array([3.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), 600.0, "cw")
     w2 = rm.wrench(np.array([3, 0, 0], np.float32), [0, 0, 1], 600, "cw")
     np.testing.assert_array_equal(w2.force, w.force)
+    w3 = rm.wrench(np.array([3.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), 600.0, np.int64(-1))  # a NumPy spin: fast
+    assert type(w3.loads.thrust) is float and np.array_equal(w3.force, w.force) and np.array_equal(w3.torque, w.torque)
     with pytest.raises(ValueError, match="omega"):
         rm.loads(True, 3.0, 1.0)
     with pytest.raises(ValueError, match="omega"):  # an int beyond a float's range: the array path's ValueError

@@ -63,6 +63,7 @@ def test_the_one_point_path_is_taken_and_the_odd_inputs_go_the_array_way(monkeyp
         w = pm.rotor_wrench(prop, params, np.array([6.0, 0.0, 0.0]), (0, 0, 1), 800, "cw")  # exactly edgewise
         assert w.force[0] == pytest.approx(-float(w.loads.drag)) and w.loads.incidence == pytest.approx(math.pi / 2)
         pm.rotor_wrench(prop, params, [1, 2, 3], [0.0, 1.0, 1.0], np.float64(700.0), -1, derivatives=())
+        pm.rotor_wrench(prop, params, [1, 2, 3], [0.0, 1.0, 1.0], 700.0, np.int64(-1))  # (a NumPy spin)
     for bad, match in (([10**20, 0, 0], "velocity must be numbers"), ([10**400, 0, 0], "velocity must be numbers")):
         with pytest.raises(ValueError, match=match):
             pm.rotor_wrench(prop, params, bad, [0.0, 0.0, 1.0], 800.0)

@@ -449,8 +449,8 @@ class RotorMap:
         v, a, omega = plain_vector3(velocity), plain_vector3(axis), plain_float(omega)
         if v is None or a is None or omega is None or omega != omega:
             return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
-        s = _SPIN.get(spin.lower()) if isinstance(spin, str) else (
-            float(spin) if type(spin) in (int, float) and spin in (1, -1) else None)
+        s = _SPIN.get(spin.lower()) if isinstance(spin, str) else plain_float(spin)  # (a NumPy +-1 too)
+        s = s if s in (1.0, -1.0) else None
         policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
         if s is None or policy is None:
             return None

@@ -245,7 +245,7 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
 
     Vv, zv = plain_vector3(velocity, int64=True), plain_vector3(axis, int64=True)
     om = plain_float(omega, int64=True)
-    if Vv is None or zv is None or om is None or not isinstance(spin, (str, int, float)):
+    if Vv is None or zv is None or om is None or not (isinstance(spin, str) or plain_float(spin) is not None):
         return None
     if not all(math.isfinite(c) for c in zv) or not all(abs(c) < VELOCITY_MAX for c in Vv):
         return None  # (the array path names a non-finite axis or velocity; a huge one is no airspeed)
