@@ -77,21 +77,20 @@ from pathlib import Path
 
 import numpy as np
 
-RPM = math.pi / 30  # rad/s per rpm
+sys.path.insert(0, str(Path(__file__).parent))
+from bench_solver import RPM, cpu_name, points  # noqa: E402 (the solver benchmark's envelope and CPU name)
 
 
 def envelope(n: int, seed: int):
-    """Forward-flight points as in benchmarks/bench_solver.py: omega [rad/s], V [m/s], incidence [rad]."""
-    rng = np.random.default_rng(seed)
-    return rng.uniform(3000, 12000, n) * RPM, rng.uniform(0, 25, n), np.radians(rng.uniform(0, 90, n))
+    """Forward-flight points of benchmarks/bench_solver.py: omega [rad/s], V [m/s], incidence [rad]."""
+    return points(n, 0.0, 90.0, seed)
 
 
 def axial(n: int, seed: int):
     """Axial points: incidence 0, V 0-25 m/s, every fifth point hover (V = 0)."""
-    rng = np.random.default_rng(seed)
-    om, V = rng.uniform(3000, 12000, n) * RPM, rng.uniform(0, 25, n)
+    om, V, b = points(n, 0.0, 0.0, seed)
     V[::5] = 0.0
-    return om, V, np.zeros(n)
+    return om, V, b
 
 
 def build_dynbem(dynbem, prop, paper, n_elements=None, n_psi=None):
@@ -174,8 +173,6 @@ def main() -> None:
 
     import propmap as pm
 
-    sys.path.insert(0, str(Path(__file__).parent))
-    from bench_solver import cpu_name
 
     numba.set_num_threads(min(args.threads, numba.config.NUMBA_NUM_THREADS))
     prop = pm.load_propeller("apce_8x6")

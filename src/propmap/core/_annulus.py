@@ -73,7 +73,8 @@ _FM = {"nsz", "arcp", "contract", "afn", "reassoc"}  # keeps inf/NaN semantics
 # 2-core AMD EPYC: 429 -> 174 s for the six kernel families, tools/compile_times.py; benchmarks/README.md). Kept in
 # numba's IR: the helpers that take arrays and run inside the vectorised loops (_element, _residual here,
 # _sensitivity._add_node, _parameter_sensitivity._stored_state): _element as a call, even one LLVM inlines, ran
-# forward flight 1.75x slower (the other three kept by the same rule, not measured as calls).
+# forward flight 1.75x slower, and with its eight parameters as scalars instead of the array 1.04x and 1.09x slower
+# with no shorter compile (2-core Intel Xeon, the same evening); the other three kept by the same rule, not measured.
 _jit_inline = numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 # polynomial atan2/exp: no libm calls, so the azimuth loops below compile to SIMD code
 _atan2 = _jit_inline(atan2_poly)
