@@ -29,7 +29,10 @@ Prints the numbers of docs/flight.md, "Moments: what the errors are made of":
 6. the rotor arms the moment channel implies near hover (|v| < 0.5 m/s, 100 samples a
    second, no lag): the measured roll and pitch moments regressed on the thrust differences
    of T_i = k Omega_i^2 (k fitted to the measured vertical force of the same samples), with
-   the body velocity and a constant, each way round, against the vehicle file's arms.
+   the body velocity and a constant, each way round, against the vehicle file's arms;
+7. the rigid-body constants such errors could point to, fitted leave-one-log-out to the roll
+   and pitch moments: an inertia scale per axis and the centre of mass' height (which gives
+   the in-plane forces an arm).
 """
 
 from __future__ import annotations
@@ -135,6 +138,37 @@ def main() -> None:
         print(f"   {label:<16}: {(x @ y) / (x @ x):.4f} (moment on thrust difference) to {(y @ y) / (x @ y):.4f} "
               f"(the reverse), correlation {np.corrcoef(x, y)[0, 1]:.2f}; the vehicle file's {arm:.3f}; {sh.n} "
               f"samples, k = {k:.3e} N s^2")
+
+    print("7. rigid-body constants, each log predicted with those fitted on the other three [N m]:")
+    rigid_body_constants(s, w)
+
+
+def rigid_body_constants(s, w) -> None:
+    """Item 7: the two vehicle constants that a moment error of this shape could point to,
+    fitted by least squares to the roll and pitch moments of three logs and scored on the
+    fourth. An inertia scale per axis, I_true = s_a I_file: the moment computed from the rates
+    with the file's inertia is then the model's divided by s_a (a gain 1 / s_a on the predicted
+    moment; the gyroscopic cross terms left as the file's). The centre of mass' height: moving
+    it by dz moves every force's arm, M -> M + (dz F_y, -dz F_x, 0) with F the model's total
+    aerodynamic force, so that the in-plane forces (rotor and airframe drag) make a moment that
+    grows with speed."""
+    from scipy.optimize import least_squares
+
+    Mp, Mm = w.moment[:, :2], s.moment[:, :2]
+    lever = np.stack([w.force[:, 1], -w.force[:, 0]], axis=1)
+    variants = {"inertia scales and centre-of-mass height": (lambda p: p, [1.0, 1.0, 0.0]),
+                "inertia scales": (lambda p: [*p, 0.0], [1.0, 1.0]),
+                "centre-of-mass height": (lambda p: [1.0, 1.0, p[0]], [0.0])}
+    for name, (full, start) in variants.items():
+        out, fitted = np.empty_like(Mm), []
+        for j in range(len(s.log_names)):
+            tr, te = s.log_index != j, s.log_index == j
+            q = full(least_squares(lambda p: (np.multiply(full(p)[:2], Mp[tr] + full(p)[2] * lever[tr])
+                                              - Mm[tr]).ravel(), start).x)
+            out[te] = np.multiply(q[:2], Mp[te] + q[2] * lever[te]) - Mm[te]
+            fitted.append(f"{1 / q[0]:.1f}, {1 / q[1]:.1f}, {q[2] * 1e3:+.0f} mm")
+        print(f"   {name}: {rms(out):.4f} (zero {rms(Mm):.4f}); I_xx / file's, I_yy / file's, dz per fold: "
+              f"{'; '.join(fitted)}")
 
 
 if __name__ == "__main__":
