@@ -129,7 +129,7 @@ def test_rotor_loads_takes_numpy_scalars_by_the_one_point_path(monkeypatch):
     call, until 2026-11-28 (a review of the peer benchmark): the one-point check compared type(x) with
     np.floating and np.integer, which no scalar's type is. The same loads either way; a bool or a 0-d
     array still takes the array path, and its errors."""
-    from propmap.core import solver
+    from propmap.core import _inputs
 
     prop, params = pm.load_propeller("apce_8x6"), pm.generic_params()
     ref = pm.rotor_loads(prop, params, 800.0, 6.0, 0.7)
@@ -138,7 +138,7 @@ def test_rotor_loads_takes_numpy_scalars_by_the_one_point_path(monkeypatch):
         raise AssertionError("the array path")
 
     with monkeypatch.context() as m:
-        m.setattr(solver, "_as_array", no)
+        m.setattr(_inputs, "_as_array", no)
         for args in ((np.float64(800.0), np.float64(6.0), np.float64(0.7)), (np.int64(800), np.int32(6), 0.7),
                      (800, np.float32(6.0), np.float64(0.7))):
             got = pm.rotor_loads(prop, params, *args)

@@ -146,8 +146,8 @@ G0 = 9.80665  # [m/s^2]
 TEMPERATURE_RANGE_K = (180.0, 350.0)
 PRESSURE_RANGE_PA = (1e3, 1.2e5)
 ALTITUDE_RANGE_M = (-500.0, 20000.0)
-#: the start of rotor_loads' warning of a supersonic blade tip (core/solver.py; the CLI, which warns from tip
-#: Mach 0.7 in its own terms, filters it by this text)
+#: the start of rotor_loads' warning of a supersonic blade tip (core/_inputs.warn_tip_mach; the CLI, which warns
+#: from tip Mach 0.7 in its own terms, filters it by this text)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
 
 

@@ -7,8 +7,6 @@ docs/numerics.md and are listed in docs/conventions.md.
 
 from __future__ import annotations
 
-import contextlib
-import contextvars
 import math
 import operator
 import warnings
@@ -19,12 +17,13 @@ import numpy as np
 from . import _flags, _kernel
 from ._parallel import parallel_region, serial_only
 from . import _momentum as mo
-from ._interp import snap_incidence, snap_incidence_scalar
-from .air import SUPERSONIC_TIP
+# (the inputs' ranges and the Mach warning's context are re-exported here, where the rest of the package takes them)
+from ._inputs import (AIRSPEED_MAX, COLLECTIVE_RANGE, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN,  # noqa: F401
+                      operating_points, supersonic_tips_allowed, warn_tip_mach)
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
 from .flapping import COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives
-from .geometry import Propeller, has_bool, refuse_masked
+from .geometry import Propeller
 from .loads import RotorLoads, _new_loads
 from .nodes import _lift_slope, _lift_slope_name, _prepared
 
@@ -86,20 +85,6 @@ DEFAULT_DISCRETIZATION = Discretization()
 PARALLEL_MIN_POINTS = 32
 
 
-#: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
-#: solution at OMEGA_MIN (in still air scaled by (Omega / OMEGA_MIN)^2 to 0 at Omega = 0); the solver
-#: itself, whose coefficients are referred to n^2, runs from OMEGA_MIN
-OMEGA_MIN = 0.1
-OMEGA_MAX = 1e5
-AIRSPEED_MAX = 500.0
-#: rotor_loads warns where a blade tip meets the air beyond this Mach number (an 11 in propeller at 1500-2400 "rad/s",
-#: rpm given as rad/s, reaches Mach 0.6-0.98 and 106-137 times the thrust; until 2026-11-26 only Mach 1 was warned)
-TIP_MACH_WARN = 0.8
-#: the per-point collective's range [rad] (the blade-angle offset of ``rotor_loads(collective=)``)
-COLLECTIVE_RANGE = math.radians(45.0)
-_RANGES = {"omega": (0.0, OMEGA_MAX, "rad/s"), "airspeed": (0.0, AIRSPEED_MAX, "m/s"),
-           "incidence": (0.0, math.pi, "rad"), "collective": (-COLLECTIVE_RANGE, COLLECTIVE_RANGE, "rad")}
-
 
 #: a 1-element array's 0-d view (a[0, ...])
 _ZERO_D = operator.itemgetter((0, Ellipsis))
@@ -115,8 +100,6 @@ _ROW_FIELDS = tuple(f for fields in _PACKED_FIELDS for _, f in fields)
 #: each packed output's rows (1-d views) and, for one point, their 0-d views: one C-level call per array
 _ROWS = tuple(operator.itemgetter(*(i for i, _ in fields)) for fields in _PACKED_FIELDS)
 _ROWS_0D = tuple(operator.itemgetter(*((i, 0, Ellipsis) for i, _ in fields)) for fields in _PACKED_FIELDS)
-#: one point's inputs as 1-element views of one array (omega, V, beta, collective, V_s, V_c)
-_ONE_POINT = operator.itemgetter(*(slice(i, i + 1) for i in range(6)))
 #: the per-annulus fields, None unless ``radial``
 _NO_RADIAL = dict.fromkeys(("v_i", "dT_dr", "dD_dr", "dQ_dr", "dMR_dr", "dY_dr", "dMP_dr"))
 
@@ -148,87 +131,6 @@ def _spin_up_scaled(om, V, T, D, Q, R, Y, P, vbar, b1c, b1s, rad, radial: bool):
         rad[_kernel.RAD_SWIRL] *= f[:, None]  # the swirl, a velocity (the uniform roots only serve derivatives,
         # which are refused below OMEGA_MIN; that row is not allocated for the uniform inflow)
     return (*scaled, rad)
-
-
-def _range_error(name: str, value) -> ValueError:
-    lo, hi, unit = _RANGES[name]
-    why = ""
-    if name == "omega" and isinstance(value, float) and value < 0:
-        why = " (a signed rotation rate is refused: give its magnitude, and the sense as the rotor's spin)"
-    if name == "incidence" and isinstance(value, float) and -math.pi <= value < 0:
-        why = " (the model is symmetric in the incidence: give its magnitude)"
-    return ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got {value!r}{why}")
-
-
-def _as_array(name: str, value) -> np.ndarray:
-    """``value`` as a float array, checked against ``_RANGES[name]``; strings and bools refused."""
-    lo, hi, _ = _RANGES[name]
-    try:
-        a = np.asarray(value)
-    except (ValueError, OverflowError) as exc:  # ragged nesting, ints beyond int64
-        raise ValueError(f"{name} must be a number or a rectangular array of numbers ({exc})") from None
-    refuse_masked(name, value)
-    if a.dtype.kind == "O":
-        try:
-            if any(v is None for v in a.reshape(-1)):  # (float(None) fails, but an array's None casts to NaN)
-                raise TypeError
-            a = a.astype(float)
-        except (TypeError, ValueError, OverflowError):
-            raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None
-    if a.dtype.kind not in "fiu" or has_bool(value):
-        raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
-    a = a.astype(float, copy=False)
-    if name == "incidence":  # (a new array where it snaps: the caller's is never written)
-        a = snap_incidence(a)
-    with np.errstate(invalid="ignore"):
-        bad = ~((a >= lo) & (a <= hi))  # also catches NaN
-    if bad.any():
-        raise _range_error(name, float(a.reshape(-1)[int(np.argmax(bad.reshape(-1)))]))
-    return a
-
-
-def _scalar(name: str, value) -> float:
-    """Fast path for a Python or NumPy real scalar (no array machinery)."""
-    lo, hi, _ = _RANGES[name]
-    try:
-        x = float(value)
-    except OverflowError:  # an int beyond the float range
-        raise _range_error(name, math.inf) from None
-    if name == "incidence":  # (as the array path: within INCIDENCE_SNAP of 0 or pi, on it)
-        x = snap_incidence_scalar(x, lo, hi)
-    if not lo <= x <= hi:
-        raise _range_error(name, x)
-    return x
-
-
-#: the exact types that take the one-point path (a set of types, not of their abstract bases: ``type(x) in`` with
-#: np.floating and np.integer matched no NumPy scalar, so a float64 taken from an array ran the array path, 1.45x the
-#: call's cost, until 2026-11-28: a review of the peer benchmark; a bool, a subclass, an array take the array path)
-_REAL_SCALARS = frozenset((float, int, np.float64, np.float32, np.float16, np.int64, np.int32, np.int16, np.int8,
-                           np.uint64, np.uint32, np.uint16, np.uint8))
-
-#: set by supersonic_tips_allowed (per thread and task: a context variable, not the global warning filters)
-_SUPERSONIC_ALLOWED = contextvars.ContextVar("propmap_supersonic_tips_allowed", default=False)
-
-
-@contextlib.contextmanager
-def supersonic_tips_allowed():
-    """Within the block, :func:`rotor_loads` does not warn of a supersonic blade tip.
-
-    For callers that evaluate such rates on purpose: a hover search doubling its bracket
-    (:func:`propmap.vehicle.hover_omega`), a unit check of measured data that says its own
-    (:func:`propmap.identify.data.sanity_check`), a user sweeping past Mach 1 knowingly. The
-    flag is a context variable, so other threads keep their warning.
-
-    Yields
-    ------
-    None
-    """
-    token = _SUPERSONIC_ALLOWED.set(True)
-    try:
-        yield
-    finally:
-        _SUPERSONIC_ALLOWED.reset(token)
 
 
 _UNCHECKED = object()
@@ -322,6 +224,19 @@ def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:
                       "grow as the square root of the in-plane airspeed (Gormont's delay): their derivatives across "
                       "it (incidence in axial flow, airspeed and in-plane velocity at rest) are unbounded; the values "
                       "returned are the static section's (docs/solver.md, Dynamic stall)", UserWarning, stacklevel=3)
+
+
+def _solver_error(status, shape: tuple, om, V, b, y_R) -> SolverError:
+    """The error of the first failed point of a batch: its inputs, the annulus and why
+    (``status``: the kernel's per-point codes, 0 where solved, else 1 + 4 annulus + reason)."""
+    i = int(np.argmax(status != 0))
+    j, reason = divmod(int(status[i]) - 1, 4)
+    why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
+           3: f"the swirl did not balance the annulus' angular momentum within {mo.SWIRL_MAX_ITER} root solves, "
+              "nor close in on a jump of its selected root"}[reason]
+    return SolverError(f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
+                       f"(omega={om[i]:.6g} rad/s, airspeed={V[i]:.6g} m/s, incidence={math.degrees(b[i]):.6g} deg) "
+                       f"on annulus r/R={y_R[j]:.4f}: {why}")
 
 
 def rotor_loads(
@@ -438,55 +353,9 @@ def rotor_loads(
         raise ValueError(f"on_failure must be 'raise' or 'flag', got {on_failure!r}")
     if radial is not False and radial is not True and not isinstance(radial, np.bool_):  # ('yes' was read as True)
         raise ValueError(f"radial must be True or False, got {radial!r:.60}")
-    if (type(omega) in _REAL_SCALARS and type(airspeed) in _REAL_SCALARS  # noqa: E721 (bool excluded)
-            and type(incidence) in _REAL_SCALARS and (collective is None or type(collective) in _REAL_SCALARS)):
-        shape = ()
-        w0 = _scalar("omega", omega)
-        any_slow = w0 < OMEGA_MIN
-        v0, b0 = _scalar("airspeed", airspeed), _scalar("incidence", incidence)
-        vs0, vc0 = v0 * math.sin(b0), v0 * math.cos(b0)  # Python floats: no ufunc calls on 1-element arrays
-        if abs(vs0) < 1e-12 * max(v0, 1e-300):  # exact axial flow at beta = 0, pi
-            vs0 = 0.0
-        x = np.array([w0, v0, b0, 0.0 if collective is None else _scalar("collective", collective), vs0, vc0])
-        om1, V1, b1, c1, Vs, Vc = _ONE_POINT(x)  # one-point views
-        tip = math.hypot(w0 * propeller.radius + abs(vs0), vc0)  # the blade tip's airspeed, for the Mach check
-    else:
-        arrays = [_as_array("omega", omega), _as_array("airspeed", airspeed), _as_array("incidence", incidence)]
-        if collective is not None:
-            arrays.append(_as_array("collective", collective))
-        try:
-            arrays = np.broadcast_arrays(*arrays)
-        except ValueError as exc:
-            if "broadcast" in str(exc):
-                what = "omega, airspeed, incidence and collective" if collective is not None else \
-                    "omega, airspeed and incidence"
-                raise ValueError(f"{what} must broadcast together: {exc}") from None
-            raise
-        om = arrays[0]
-        shape = om.shape
-        # copies: the result keeps omega, airspeed and incidence, and must not share the caller's memory (a
-        # later om *= 2 on the input changed r.power and r.CT; user-level audit, 2026-11-26)
-        om1 = np.array(om.reshape(-1), dtype=float)
-        V1 = np.array(arrays[1].reshape(-1), dtype=float)
-        b1 = np.array(arrays[2].reshape(-1), dtype=float)
-        c1 = (np.ascontiguousarray(arrays[3].reshape(-1), dtype=float) if collective is not None
-              else np.zeros(om1.size))
-        any_slow = bool((om1 < OMEGA_MIN).any())
-        Vs = np.ascontiguousarray(V1 * np.sin(b1))
-        Vc = np.ascontiguousarray(V1 * np.cos(b1))
-        Vs[np.abs(Vs) < 1e-12 * np.maximum(V1, 1e-300)] = 0.0  # exact axial flow at beta = 0, pi
-        tip = float(np.max(np.hypot(om1 * propeller.radius + np.abs(Vs), Vc), initial=0.0))
-    if tip > TIP_MACH_WARN * air.speed_of_sound and not _SUPERSONIC_ALLOWED.get():  # a rate in rpm, most likely
-        mach = tip / air.speed_of_sound
-        said = ("the model has no transonic or supersonic physics (its Prandtl-Glauert factor stops at Mach 0.9), "
-                "so these loads mean nothing" if mach > 1 else
-                "near the end of the model's compressibility (its Prandtl-Glauert factor stops at Mach 0.9; small "
-                "UAV propellers run below 0.7)")
-        # (the rpm hint from Mach 0.9: a racing propeller's punch-out reaches 0.8-0.9, an 11 in propeller at 2400
-        # 'rad/s' (rpm) 0.98; the Mach number to two digits, so that a simulation loop's slowly varying rate does
-        # not warn at every step)
-        hint = "; is omega given in rpm? it is in rad/s (rpm * pi / 30)" if mach > 0.9 else ""
-        warnings.warn(f"{SUPERSONIC_TIP} {mach:.2g} (> {TIP_MACH_WARN:g}): {said}{hint}", UserWarning, stacklevel=2)
+    shape, om1, V1, b1, c1, Vs, Vc, any_slow, tip = operating_points(omega, airspeed, incidence, collective,
+                                                                      propeller.radius)
+    warn_tip_mach(tip, air.speed_of_sound)
     wrt = () if derivatives is False else _derivative_inputs(derivatives, params)
     if wrt and any_slow:
         raise ValueError(f"derivatives need omega >= {OMEGA_MIN:g} rad/s (below it the blades are parked)")
@@ -519,17 +388,7 @@ def rotor_loads(
             _kernel.solve_batch(*args)
     status = counts[0]
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
-        i = int(np.argmax(status != 0))
-        code = int(status[i]) - 1
-        j, reason = divmod(code, 4)
-        why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
-               3: f"the swirl did not balance the annulus' angular momentum within {mo.SWIRL_MAX_ITER} root solves, "
-                  "nor close in on a jump of its selected root"}[reason]
-        raise SolverError(
-            f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
-            f"(omega={om1[i]:.6g} rad/s, airspeed={V1[i]:.6g} m/s, incidence={math.degrees(b1[i]):.6g} deg) "
-            f"on annulus r/R={nd.y[j] / propeller.radius:.4f}: {why}"
-        )
+        raise _solver_error(status, shape, om1, V1, b1, nd.y / propeller.radius)
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a

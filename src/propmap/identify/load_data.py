@@ -117,7 +117,7 @@ class LoadData:
 
     def tip_mach(self, propeller, air) -> float:
         """The largest Mach number at a blade tip over the points, |(Omega R + V sin beta,
-        V cos beta)| / a: the measure of the solver's TIP_MACH_WARN (core/solver.py).
+        V cos beta)| / a: the measure of the solver's TIP_MACH_WARN (core/_inputs.py).
 
         Parameters
         ----------
