@@ -151,6 +151,8 @@ def test_demo_writes_figures(capsys, tmp_path):
         (["loads", "/", "--rpm", "8000"], "'/' is a folder"),
         (["loads", "", "--rpm", "8000"], "the propeller is empty"),
         (["loads", "apce_8x6.txt", "--rpm", "8000"], "did you mean the catalogue's apce_8x6"),
+        # a bare size: every family's propeller of that size (none was suggested: a user-level audit, 2026-11-28)
+        (["loads", "8x6", "--rpm", "8000"], "did you mean apce_8x6, apcsf_8x6, apcsp_8x6?"),
         (["loads", "apce_8x6", "--rpm", "8000", "--params", "nope"], "--params"),
         (["loads", "apce_8x6"], "--rpm"),
         (["loads", "apce_8x6", "--rpm", "abc"], "abc"),
@@ -202,6 +204,12 @@ def test_a_negative_airspeed_points_to_the_descent_incidence(capsys, args, match
     "text, match",
     [
         ("rpm,airspeed\n8000,0\n", "incidence_deg"),
+        # a static stand's measurements: told how to give the points, and where measured loads are compared (a
+        # user-level audit, 2026-11-28)
+        ("rpm,thrust_N,torque_Nm\n2534,0.40343,0.008975\n", "lacks column(s) airspeed, incidence_deg (needs rpm, "
+         "airspeed, incidence_deg, any case, with or without a unit: RPM, airspeed (m/s), airspeed_kmh, incidence "
+         "(deg)); a static stand's points have airspeed 0 and incidence_deg 0: add those columns, or compare measured "
+         "loads with the model by 'propmap validate FILE --prop P --params SET'"),
         ("rpm,airspeed,incidence_deg\n8000,0,0\n8000,x,0\n", "line 3"),
         ("rpm,airspeed,incidence_deg\n8000,0,0\n8000,1\n", "line 3"),
         ("rpm,airspeed,incidence_deg\n8000,0,0\n-8000,1,0\n", "line 3: rpm"),

@@ -244,6 +244,9 @@ def test_points_with_single_point_options_is_refused(capsys, tmp_path, points):
         code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", tmp_path / "y.csv", *extra)
         assert one_line_error(code, err, extra[0]), (extra, err)
     assert not (tmp_path / "y.csv").exists()
+    # --json without --out: the --json is what is wrong (it was told "--out is required": a user-level audit)
+    code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--json")
+    assert one_line_error(code, err, "--json applies to a single point"), err
 
 
 # ---- hostile points files ----

@@ -594,7 +594,7 @@ def test_a_constant_esc_column_is_refused_with_its_cause(tmp_path):
 
 @pytest.mark.parametrize("header, match", [
     (["rpm", "thrust_N", "torque_Ncmx"], "unknown unit 'Ncmx'"),
-    (["rpm", "thrust_lbs"], "unknown unit 'lbs'"),
+    (["rpm", "thrust_stone"], "unknown unit 'stone'"),
 ])
 def test_an_unknown_unit_suffix_is_refused_not_ignored(tmp_path, header, match):
     path = _rows_csv(tmp_path / "u.csv", header, [(1000.0 * k, 1.0, 0.01)[:len(header)] for k in range(1, 8)])
@@ -609,6 +609,27 @@ def test_other_units_of_torque_and_force_are_converted(tmp_path):
     np.testing.assert_allclose(d.measured["torque"], [0.002 * k for k in range(1, 8)])
 
 
+@pytest.mark.parametrize("speed, thrust, torque, factors", [
+    ("Speed [1/min]", "Thrust (grams)", "Torque (ft-lb)", (1.0, G0 * 1e-3, 4.4482216152605 * 0.3048)),
+    ("n_rpm", "Thrust (Newtons)", "Torque (in-oz)", (1.0, 1.0, 4.4482216152605 / 16 * 0.0254)),
+    ("Speed (krpm)", "thrust_kilograms", "Torque Nm", (1e3, G0, 1.0)),
+    ("Drehzahl [U/min]", "Schub (g)", "Drehmoment (N·mm)", (1.0, G0 * 1e-3, 1e-3)),
+    ("RPM", "Thrust g", "Torque in Nm", (1.0, G0 * 1e-3, 1.0)),
+    ("Motor speed (min^-1)", "Thrust (pounds)", "Torque (lb-ft)", (1.0, 4.4482216152605, 4.4482216152605 * 0.3048)),
+])
+def test_units_written_out_and_european_spellings_are_read(tmp_path, speed, thrust, torque, factors):
+    """Unit names written out, rpm as 1/min, min^-1 or U/min, krpm, a unit after a blank and the
+    German names of a stand's columns (refused as unknown units, or not found at all, until a
+    user-level audit of 2026-11-28): each column converted to rpm, N and N m."""
+    rows = [(1.0 * k, 10.0 * k, 0.1 * k) for k in range(2, 9)]
+    header = ["rpm" if speed == "n_rpm" else speed, thrust, torque]
+    d = read_loads(_rows_csv(tmp_path / "u.csv", header, [(r[0] * (1e3 if factors[0] == 1.0 else 1.0), *r[1:])
+                                                          for r in rows]))
+    np.testing.assert_allclose(d.omega * 30 / np.pi, [1e3 * r[0] for r in rows], rtol=1e-12)
+    np.testing.assert_allclose(d.measured["thrust"], [factors[1] * r[1] for r in rows], rtol=1e-12)
+    np.testing.assert_allclose(d.measured["torque"], [factors[2] * r[2] for r in rows], rtol=1e-12)
+
+
 def test_a_header_only_export_is_a_data_error_naming_the_file(tmp_path):
     path = tmp_path / "empty.csv"
     path.write_text(",".join(COLUMNS["1585"]).replace("{u}", "gf") + "\n", encoding="utf-8-sig")
@@ -619,8 +640,23 @@ def test_a_header_only_export_is_a_data_error_naming_the_file(tmp_path):
 def test_pole_pairs_without_the_electrical_speed_is_refused(tmp_path, truth_params):
     path = tmp_path / "o.csv"
     write_steps_export(path, params=truth_params, steps=STEPS)
-    with pytest.raises(DataError, match="pole_pairs"):
-        read_loads(path, pole_pairs=7)
+    with pytest.raises(DataError, match="pole_pairs .* rpm_source='electrical'"):
+        read_loads(path, pole_pairs=7)  # (the export has an electrical column: use it)
+    # a file without one: its advice cannot be followed there (a user-level audit, 2026-11-28)
+    rows = [(1000.0 * k, 0.5 * k, 0.01 * k) for k in range(2, 9)]
+    with pytest.raises(DataError, match="no electrical speed column .* leave pole_pairs out") as err:
+        read_loads(_rows_csv(tmp_path / "p.csv", ["rpm", "thrust", "torque"], rows), pole_pairs=7)
+    assert "rpm_source" not in str(err.value)
+
+
+def test_an_electrical_speed_without_its_pole_pairs_is_told_to_give_the_count(tmp_path, truth_params):
+    """Read from the stand's electrical column already, the refusal asks for the count only (it
+    told the user to give the column the name it had: a user-level audit, 2026-11-28)."""
+    path = tmp_path / "e.csv"
+    write_steps_export(path, params=truth_params, steps=STEPS, electrical_raw=True, pole_pairs=7, optical=False)
+    with pytest.raises(DataError, match="give that count as --pole-pairs") as err:
+        sanity_check(read_loads(path), pm.load_propeller("apce_8x6"))
+    assert "name the column" not in str(err.value)
 
 
 @pytest.mark.parametrize("series", ["1520", "1585"])

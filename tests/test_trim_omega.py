@@ -75,6 +75,17 @@ def test_a_thrust_out_of_reach_is_refused_or_nan(rotor):
     with pytest.raises(TrimError, match=r"no rotation rate in \[9.84252, 3014.\d+\] rad/s .* makes thrust=300 N .*is "
                                         r"the thrust in grams\? It is in N"):
         trim_omega(prop, p, 300.0)
+    # below the range: the hint names what holds there (it blamed descent at every point, a static one too: a
+    # user-level audit, 2026-11-28)
+    for thrust in (0.0, -1.0):
+        with pytest.raises(TrimError, match=r"spans \[0.000\d+, .*in still air a turning rotor's thrust is positive: "
+                                            r"give a thrust above 0 N") as err:
+            trim_omega(prop, p, thrust)
+        assert "descent" not in str(err.value)
+    with pytest.raises(TrimError, match="in descent the flow alone makes that much"):
+        trim_omega(prop, p, 1e-4, airspeed=10.0, incidence=math.pi)
+    with pytest.raises(TrimError, match=r"the slowest rate, 9.84252 rad/s, already makes 0.0\d+ N here"):
+        trim_omega(prop, p, 1e-5, airspeed=10.0, incidence=math.pi / 2)
     r = trim_omega(prop, p, [2.0, 300.0], on_missing="nan")
     assert np.isfinite(r.omega[0]) and np.isnan(r.omega[1]) and list(r.n_solutions) == [1, 0]
     assert np.isnan(r.loads.thrust[1]) and np.isnan(r.loads.torque[1])

@@ -113,7 +113,7 @@ def _points_reader(path: Path, chunksize: int):
     dup = sorted({n for n in lower if n and lower.count(n) > 1})  # (unnamed ones: checked for values per row)
     if dup:
         raise InputError(f"{where}: duplicate column(s) {', '.join(repr(d) for d in dup)}")
-    from ..identify.stand import map_operating_columns
+    from ..identify.stand import map_operating_columns, split_header
 
     try:
         mapped = map_operating_columns(names, error=InputError)
@@ -121,8 +121,14 @@ def _points_reader(path: Path, chunksize: int):
         raise InputError(f"{where}: {exc}") from None
     missing = [c for c in INPUT_COLUMNS if c not in mapped]
     if missing:
+        # (a thrust stand's export, rpm and loads only: `fit loads` takes it as static, --points asks for the points;
+        # the measured loads against the model are `validate`'s: a user-level audit, 2026-11-28)
+        measured = "rpm" in mapped and any(split_header(n)[0] in ("thrust", "torque", "drag") for n in names)
         raise InputError(f"{where}: lacks column(s) {', '.join(missing)} (needs {', '.join(INPUT_COLUMNS)}, any case, "
-                         "with or without a unit: RPM, airspeed (m/s), airspeed_kmh, incidence (deg))")
+                         "with or without a unit: RPM, airspeed (m/s), airspeed_kmh, incidence (deg))"
+                         + ("; a static stand's points have airspeed 0 and incidence_deg 0: add those columns, or "
+                            "compare measured loads with the model by 'propmap validate FILE --prop P --params "
+                            "SET'" if measured else ""))
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", pd.errors.ParserWarning)
@@ -398,10 +404,10 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         if given:
             raise InputError(f"{', '.join(given)}: give the operating points either as options (one point) or in "
                              "--points (many), not both")
+        if as_json:  # (before --out: "--out is required" sent a --json user the wrong way, a user-level audit)
+            raise InputError("--json applies to a single point; --points writes a CSV")
         if out is None:
             raise InputError("--out is required with --points (a file, or '-' for standard output)")
-        if as_json:
-            raise InputError("--json applies to a single point; --points writes a CSV")
         inputs = [points, prop, params_spec]
         if out != "-":
             check_outputs([("--out", out)], inputs)

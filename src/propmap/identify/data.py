@@ -482,10 +482,14 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if close:
         counts = (f"{close[0]}" if len(close) == 1 else f"{close[0]}-{close[-1]}" if close[-1] - close[0] == len(
             close) - 1 else ", ".join(map(str, close)))
+        # (read from the stand's electrical column already, only the count is missing: the advice to name the column
+        # so was the name it had, a user-level audit, 2026-11-28)
+        electrical = any(n.startswith("rotation speed from") and "electrical" in n.lower() for n in data.notes)
         causes.append(f"the electrical rpm of a motor with {counts} pole pairs read as the propeller's (the loads "
-                      "cannot tell neighbouring counts apart: count the motor's magnets, half of them; then name the "
-                      "column 'Motor Electrical Speed (RPM)' and give --pole-pairs, divide it by the count, or give "
-                      "the optical speed)")
+                      "cannot tell neighbouring counts apart: count the motor's magnets, half of them; then "
+                      + ("give that count as --pole-pairs (pole_pairs), or give the optical speed)" if electrical else
+                         "name the column 'Motor Electrical Speed (RPM)' and give --pole-pairs, divide it by the "
+                         "count, or give the optical speed)"))
     if not causes and bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
         # the columns swapped (no unit slip explains the two): each near the other's model, to within a unit slip
         # of its own (a torque in N m under 'Thrust (kgf)' reads 9.8 times large)

@@ -284,8 +284,11 @@ def _rotation_speed(v: dict, speeds: list, cm, rpm_source, pole_pairs, lines, wh
              "the pole pairs (--pole-pairs)")))
     if pole_pairs and use != "rpm_electrical":
         raise DataError(f"{what}: {p}: pole_pairs (--pole-pairs) divides an electrical speed, but the rotation "
-                        f"speed is from {cm.column(use)!r} (give rpm_source='electrical', --rpm-source electrical, "
-                        "to use the electrical one)")
+                        f"speed is from {cm.column(use)!r} " + (
+                            "(give rpm_source='electrical', --rpm-source electrical, to use the electrical one)"
+                            if "rpm_electrical" in v else
+                            "and the file has no electrical speed column ('Motor Electrical Speed (RPM)'): leave "
+                            "pole_pairs out, or name the column of a raw electrical speed so"))
     rpm = v[use] / (pole_pairs if (use == "rpm_electrical" and pole_pairs) else 1)
     if use == "rpm_optical" and rpm_source is None and "rpm_electrical" in v:
         rpm = _optical_gaps(rpm, v["rpm_electrical"], cm.column("rpm_optical"), notes)

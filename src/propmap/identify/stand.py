@@ -14,10 +14,11 @@ columns; :mod:`propmap.identify.steps` turns a "steps" test into one averaged po
 Units (a quantity without a unit is SI, rpm for rotation speed):
 
 ==============  ===================================================================
-thrust, drag    N, mN, kN, kgf (kg), gf (g), lbf, ozf
+thrust, drag    N (newtons), mN, kN, kgf (kg, kilograms), gf (g, grams), lbf (lb, lbs, pounds), ozf
+                (oz, ounces)
 torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
-                (lb·in), ozf·in (oz·in, oz-in), lbf·ft (lb·ft)
-rotation speed  rpm (rev/min, r/min), rad/s, Hz (rev/s, rps)
+                (lb·in, in·lb), ozf·in (oz·in, oz-in, in·oz), lbf·ft (lb·ft, ft·lb)
+rotation speed  rpm (rev/min, r/min, 1/min, min^-1, U/min), krpm, rad/s, Hz (rev/s, rps)
 airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps)
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
@@ -25,7 +26,8 @@ air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
 1 ozf = lbf / 16; 1 in = 0.0254 m. A unit follows the name in brackets, after a comma
-(``Thrust, N``) or after an underscore (``thrust_kgf``); a statistic's column beside its
+(``Thrust, N``), after a blank (``Thrust g``, ``Thrust in g``) or after an underscore
+(``thrust_kgf``); German names are read too (``Schub``, ``Drehmoment``, ``Drehzahl``); a statistic's column beside its
 quantity (``thrust_std``, ``torque_err``, ``rpm_max``) is not read.
 """
 
@@ -51,12 +53,20 @@ _ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
-              "lb": LBF, "ozf": LBF / 16, "oz": LBF / 16},
+              "lb": LBF, "lbs": LBF, "ozf": LBF / 16, "oz": LBF / 16,
+              # the units' names written out (Thrust (grams), thrust_newtons: a user-level audit, 2026-11-28)
+              "newton": 1.0, "newtons": 1.0,
+              **{name: f for unit, f in (("gram", G0 * 1e-3), ("kilogram", G0), ("pound", LBF), ("ounce", LBF / 16))
+                 for name in (unit, unit + "s", unit + "force", unit + "sforce")}},
     "torque": {"nm": 1.0, "nmm": 1e-3, "ncm": 1e-2, "mnm": 1e-3, "kgfcm": G0 * 1e-2, "gfcm": G0 * 1e-5,
                "kgcm": G0 * 1e-2, "gcm": G0 * 1e-5, "lbfin": LBF * INCH, "lbin": LBF * INCH,
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048,
-               "inlbf": LBF * INCH, "inlb": LBF * INCH, "inozf": LBF / 16 * INCH, "inoz": LBF / 16 * INCH},
-    "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
+               "inlbf": LBF * INCH, "inlb": LBF * INCH, "inozf": LBF / 16 * INCH, "inoz": LBF / 16 * INCH,
+               "ftlbf": LBF * 0.3048, "ftlb": LBF * 0.3048,
+               **dict.fromkeys(("newtonmeter", "newtonmeters", "newtonmetre", "newtonmetres"), 1.0)},
+    # (1/min, min^-1 and U/min: the European spellings of rpm; krpm, thousands)
+    "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "1min": 1.0, "min1": 1.0, "min⁻¹": 1.0, "umin": 1.0,
+                 "krpm": 1e3, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
@@ -66,6 +76,9 @@ UNITS = {
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
     "thrust": ("thrust", "force"), "drag": ("drag", "force"), "torque": ("torque", "torque"),
+    # German stands' exports (Schub, Drehmoment, Drehzahl [U/min]: a user-level audit, 2026-11-28)
+    "schub": ("thrust", "force"), "schubkraft": ("thrust", "force"), "drehmoment": ("torque", "torque"),
+    "drehzahl": ("rpm", "rotation"),
     # the in-plane force along the in-plane airspeed, by the names wind-tunnel tests give it
     "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
     "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),
@@ -187,6 +200,11 @@ def split_header(name: str) -> tuple[str, str | None]:
         return low, None
     if "," in low and low.rsplit(",", 1)[0].strip() in _NAMES:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
         return low.rsplit(",", 1)[0].strip(), name.rsplit(",", 1)[1].strip()
+    if " " in low:  # 'Thrust g', 'Thrust in g' (a known unit after a blank: read as a column of nothing, a user audit)
+        base, unit = low.rsplit(" ", 1)
+        base = re.sub(r"\s+in$", "", base.strip())
+        if base in _NAMES and _NAMES[base][1] is not None and _token(unit) in UNITS[_NAMES[base][1]]:
+            return base, name.strip().rsplit(" ", 1)[1]
     if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
         return low.replace("_", " "), None
     if "_" in low and low.rsplit("_", 1)[0].replace("_", " ") in _ESC_NAMES and _token(

@@ -256,10 +256,16 @@ def near_names(name: str, names) -> str:
     Returns
     -------
     str
-        The tail, starting with ``"; "``.
+        The tail, starting with ``"; "``. A bare size (``8x6``) names the catalogue's
+        propellers of that size in every family (``apce_8x6``, ``apcsf_8x6``, ...; at most 6).
     """
-    found = near(name, names)
-    return f"; did you mean {', '.join(found)}?" if found else "; run 'propmap props' for the list"
+    names = list(names)
+    key = name.strip().lower()
+    # (a bare size matched no family's name by difflib's ratio: no suggestion, a user-level audit, 2026-11-28)
+    sized = [n for n in names if key and n.lower().endswith("_" + key)]
+    found = sized[:6] if sized else near(name, names)
+    more = f" ({len(sized)} in all: 'propmap props')" if len(sized) > 6 else ""
+    return f"; did you mean {', '.join(found)}?{more}" if found else "; run 'propmap props' for the list"
 
 
 @functools.lru_cache(maxsize=256)
