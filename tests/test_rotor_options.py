@@ -368,8 +368,8 @@ def _model_rotor():
 
 def test_empirical_descent_leaves_climb_and_hover_and_is_continuous(prop, generic):
     """Climb, hover and edgewise flight unchanged to the last bit; in axial descent of a model
-    rotor the empirical momentum has no multiple roots and changes the mean inflow smoothly,
-    where Glauert's per-annulus branches jump."""
+    rotor the empirical momentum has no multiple roots below the windmill brake and changes the
+    mean inflow smoothly, where Glauert's per-annulus branches jump."""
     emp = generic.replace(descent="empirical")
     om = 6000 * RPM
     pts = (np.full(3, om), np.array([0.0, 8.0, 8.0]), np.radians([0.0, 0.0, 90.0]))
@@ -379,8 +379,11 @@ def test_empirical_descent_leaves_climb_and_hover_and_is_continuous(prop, generi
     V = np.linspace(0.0, 9.0, 301)
     g = pm.rotor_loads(rotor, sec, 100.0, V, math.pi)
     e = pm.rotor_loads(rotor, sec.replace(descent="empirical"), 100.0, V, math.pi)
-    assert e.converged.all() and not e.multiple_roots.any() and g.multiple_roots.sum() > 20
     vh0 = math.sqrt(e.thrust[0] / (2 * 1.225 * math.pi * 0.36))
+    # no multiple roots through the vortex ring and the turbulent wake; in the windmill brake near 2.85 v_h one point
+    # where the blades' side folds (docs/models.md, Descent: seen by the march's grazing check since 2026-11-28)
+    assert e.converged.all() and not e.multiple_roots[V < 2.2 * vh0].any() and g.multiple_roots.sum() > 20
+    assert e.multiple_roots.sum() < g.multiple_roots.sum() / 10
     assert np.max(np.abs(np.diff(e.v_i_mean))) < 0.03 * vh0 < np.max(np.abs(np.diff(g.v_i_mean)))
     assert np.max(np.abs(np.diff(e.thrust))) < 0.015 * e.thrust[0]
 

@@ -31,7 +31,11 @@ stable root (F crosses zero downward in that direction). Concretely:
    step 2, so the root selected is that of the rule whatever the refinement (the NumPy
    reference refines with the Illinois method and selects the same roots).
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
-   march steps beyond the bracket.
+   march steps beyond the bracket, or when the parabola through three successive march
+   points (F of the march's sign at the older two) is convex with its minimum between the
+   outer two and within GRAZE |F(0)| of zero: F grazes zero there, where a pair of roots
+   between two march points can hide, which the march steps over (the selected root then
+   jumps where the pair appears: a user-level physics audit, 2026-11-28).
 
 ``solve_annuli`` runs these steps for all annuli of an operating point in lockstep (one
 residual sweep over the active annuli, then one state-machine step each), which gives
@@ -57,6 +61,9 @@ MARCH_STEPS = 3.0
 MAX_MARCH = 64
 MAX_DOUBLING = 80
 EXTRA_SCAN = 1
+#: the march flags multiple roots where the parabola through three successive march points has its minimum between
+#: them within this fraction of |F(0)| of zero (step 5 above; docs/solver.md, Flags)
+GRAZE = 0.01
 MAX_REFINE = 100
 XTOL = 1e-7
 FTOL = 1e-9
@@ -286,6 +293,8 @@ _MARCH = 1
 _DOUBLE = 2
 _SCAN = 3
 _REFINE = 4
+_PROBE_MARCH = 5  # F at a grazing parabola's minimum, then the march goes on (c holds its next trial)
+_PROBE_CROSS = 6  # F beyond a grazing sign change, then the extra scan
 
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)
@@ -377,6 +386,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
             ph = phase[j]
             refine = False
             done = False
+            again = False  # the extra scan saw a second sign change (no third point for the first step)
             if ph == _INIT:
                 if fj == 0.0:
                     v[j] = 0.0
@@ -398,21 +408,40 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                     ftol[j] = FTOL * abs(fj)
                     fa[j] = fj
                     fb[j] = fj
+                    fc[j] = fj  # (during the march: F at the march point before the previous one)
                     k[j] = 1
                     phase[j] = _MARCH
                     trial[j] = sgn[j] * h[j]
             elif ph == _MARCH:
+                # the parabola through the three newest march points (s F > 0 at the older two): convex, with its
+                # minimum between the outer points and within GRAZE |F(0)| of zero, F may graze zero there (a pair
+                # of roots between two march points, which the march steps over); t its minimum's place from the
+                # middle point in steps
+                t = 2.0  # (none)
+                if k[j] >= 2:
+                    g0, g1, g2 = sgn[j] * fc[j], sgn[j] * fa[j], sgn[j] * fj
+                    d2 = g2 - 2.0 * g1 + g0
+                    if (d2 > 0.0 and abs(g0 - g2) < 2.0 * d2
+                            and g1 - (g2 - g0) * (g2 - g0) / (8.0 * d2) <= GRAZE * ftol[j] / FTOL):
+                        t = (g0 - g2) / (2.0 * d2)
+                xv = a[j] + sgn[j] * t * h[j]  # (that minimum: a is the middle point here)
                 b[j] = trial[j]
                 fb[j] = fj
                 if fj * sgn[j] <= 0.0:
                     kb[j] = k[j]
-                    if EXTRA_SCAN > 0:
+                    if t < 1.0 and EXTRA_SCAN > 0:
+                        # a sign change where the parabola already turns back: F beyond it, mirrored
+                        # about the new point, then the extra scan
+                        phase[j] = _PROBE_CROSS
+                        trial[j] = 2.0 * b[j] - xv
+                    elif EXTRA_SCAN > 0:
                         phase[j] = _SCAN
                         cnt[j] = 1
                         trial[j] = sgn[j] * (kb[j] + 1) * h[j]
                     else:
                         refine = True
                 else:
+                    fc[j] = fa[j]
                     a[j] = b[j]
                     fa[j] = fj
                     k[j] += 1
@@ -420,8 +449,25 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                         phase[j] = _DOUBLE
                         cnt[j] = 0
                         trial[j] = 2.0 * b[j]
+                        if t < 1.0:
+                            multiple[j] = True  # (not probed: the march has ended)
+                    elif t < 1.0:  # F at the parabola's minimum, then the march's next point
+                        phase[j] = _PROBE_MARCH
+                        c[j] = sgn[j] * k[j] * h[j]
+                        trial[j] = xv
                     else:
                         trial[j] = sgn[j] * k[j] * h[j]
+            elif ph == _PROBE_MARCH:
+                if fj * sgn[j] <= 0.0:
+                    multiple[j] = True  # a pair of roots between two march points, stepped over
+                phase[j] = _MARCH
+                trial[j] = c[j]
+            elif ph == _PROBE_CROSS:
+                if fj * sgn[j] > 0.0:
+                    multiple[j] = True  # F back to its first sign beyond the sign change: more roots
+                phase[j] = _SCAN
+                cnt[j] = 1
+                trial[j] = sgn[j] * (kb[j] + 1) * h[j]
             elif ph == _DOUBLE:
                 b[j] = trial[j]
                 fb[j] = fj
@@ -440,6 +486,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
             elif ph == _SCAN:
                 if fj * sgn[j] > 0.0:
                     multiple[j] = True
+                    again = True
                     refine = True
                 else:
                     c[j] = trial[j]  # beyond the bracket, F of the sign of F(b): seeds the interpolation
@@ -491,7 +538,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                 else:
                     phase[j] = _REFINE
                     cnt[j] = 0
-                    if ph == _SCAN and not multiple[j]:
+                    if ph == _SCAN and not again:
                         trial[j] = b[j] + _chandrupatla_t(b[j], fb[j], a[j], fa[j], c[j], fc[j],
                                                           xtol[j]) * (a[j] - b[j])
                     else:  # no third point of the right sign: a secant step first
