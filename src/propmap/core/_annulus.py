@@ -31,11 +31,15 @@ stable root (F crosses zero downward in that direction). Concretely:
    step 2, so the root selected is that of the rule whatever the refinement (the NumPy
    reference refines with the Illinois method and selects the same roots).
 5. Multiple roots are flagged when F changes sign again within EXTRA_SCAN further
-   march steps beyond the bracket, or when the parabola through three successive march
-   points (F of the march's sign at the older two) is convex with its minimum between the
-   outer two and within GRAZE |F(0)| of zero: F grazes zero there, where a pair of roots
-   between two march points can hide, which the march steps over (the selected root then
-   jumps where the pair appears: a user-level physics audit, 2026-11-28).
+   march steps beyond the bracket, or where F grazes zero on the march: where the parabola
+   through three successive march points (F of the march's sign at the older two) is convex
+   with its minimum between the outer two and within GRAZE |F(0)| of zero, F is evaluated at
+   that minimum, and a sign change there (a pair of roots between two march points, which
+   the march steps over: the selected root then jumps where the pair appears, a user-level
+   physics audit, 2026-11-28) raises the flag; where the newest point has changed sign and the
+   parabola turns back before it, F is evaluated as far beyond it as the minimum lies before
+   it, and F of its first sign there raises the flag (past MAX_MARCH the parabola alone). The
+   bracket is not moved, so the root selected is the same.
 
 ``solve_annuli`` runs these steps for all annuli of an operating point in lockstep (one
 residual sweep over the active annuli, then one state-machine step each), which gives
