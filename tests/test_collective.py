@@ -447,8 +447,8 @@ def test_a_preset_rotor_descends_continuously_with_one_root_per_annulus(section,
     0.005 v_h: no annulus flagged with several inflow roots below 2.2 v_h and no thrust step above 0.6% of
     the hover thrust. Near 2.9 v_h folds of the annuli's residual give the untwisted rotor a torque step
     of about 1% of hover torque (docs/models.md); since the march's grazing check (2026-11-28) the points
-    there are flagged (from 2.34 v_h, the largest step's both sides with NACA 0012). Before, a sharper preset stall (M = 38)
-    and a tip-loss angle taken from U_P (which passes through 0 near an annulus' ideal
+    there are flagged (from 2.34 v_h, the largest step's both sides with NACA 0012). Before, a sharper
+    preset stall (M = 38) and a tip-loss angle taken from U_P (which passes through 0 near an annulus' ideal
     autorotation) gave 400-800 multiple-root points and steps of 2-3% (the annuli switching
     branch one by one)."""
     R = 0.6

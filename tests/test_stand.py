@@ -611,7 +611,7 @@ def test_other_units_of_torque_and_force_are_converted(tmp_path):
 
 @pytest.mark.parametrize("speed, thrust, torque, factors", [
     ("Speed [1/min]", "Thrust (grams)", "Torque (ft-lb)", (1.0, G0 * 1e-3, 4.4482216152605 * 0.3048)),
-    ("n_rpm", "Thrust (Newtons)", "Torque (in-oz)", (1.0, 1.0, 4.4482216152605 / 16 * 0.0254)),
+    ("rpm", "Thrust (Newtons)", "Torque (in-oz)", (1.0, 1.0, 4.4482216152605 / 16 * 0.0254)),
     ("Speed (krpm)", "thrust_kilograms", "Torque Nm", (1e3, G0, 1.0)),
     ("Drehzahl [U/min]", "Schub (g)", "Drehmoment (N·mm)", (1.0, G0 * 1e-3, 1e-3)),
     ("RPM", "Thrust g", "Torque in Nm", (1.0, G0 * 1e-3, 1.0)),
@@ -622,9 +622,9 @@ def test_units_written_out_and_european_spellings_are_read(tmp_path, speed, thru
     German names of a stand's columns (refused as unknown units, or not found at all, until a
     user-level audit of 2026-11-28): each column converted to rpm, N and N m."""
     rows = [(1.0 * k, 10.0 * k, 0.1 * k) for k in range(2, 9)]
-    header = ["rpm" if speed == "n_rpm" else speed, thrust, torque]
-    d = read_loads(_rows_csv(tmp_path / "u.csv", header, [(r[0] * (1e3 if factors[0] == 1.0 else 1.0), *r[1:])
-                                                          for r in rows]))
+    # the speed written in its column's unit: thousands of rpm in krpm, rpm otherwise
+    written = [(r[0] * 1e3 / factors[0], *r[1:]) for r in rows]
+    d = read_loads(_rows_csv(tmp_path / "u.csv", [speed, thrust, torque], written))
     np.testing.assert_allclose(d.omega * 30 / np.pi, [1e3 * r[0] for r in rows], rtol=1e-12)
     np.testing.assert_allclose(d.measured["thrust"], [factors[1] * r[1] for r in rows], rtol=1e-12)
     np.testing.assert_allclose(d.measured["torque"], [factors[2] * r[2] for r in rows], rtol=1e-12)

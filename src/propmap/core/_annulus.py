@@ -428,7 +428,6 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                     if (d2 > 0.0 and abs(g0 - g2) < 2.0 * d2
                             and g1 - (g2 - g0) * (g2 - g0) / (8.0 * d2) <= GRAZE * ftol[j] / FTOL):
                         t = (g0 - g2) / (2.0 * d2)
-                xv = a[j] + sgn[j] * t * h[j]  # (that minimum: a is the middle point here)
                 b[j] = trial[j]
                 fb[j] = fj
                 if fj * sgn[j] <= 0.0:
@@ -437,7 +436,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                         # a sign change where the parabola already turns back: F beyond it, mirrored
                         # about the new point, then the extra scan
                         phase[j] = _PROBE_CROSS
-                        trial[j] = 2.0 * b[j] - xv
+                        trial[j] = 2.0 * b[j] - (a[j] + sgn[j] * t * h[j])  # (a: the middle point)
                     elif EXTRA_SCAN > 0:
                         phase[j] = _SCAN
                         cnt[j] = 1
@@ -458,7 +457,7 @@ def solve_annuli(Om, Vs, Vc, nodes, blade, us, sect, azim, grad, naz, model, pk,
                     elif t < 1.0:  # F at the parabola's minimum, then the march's next point
                         phase[j] = _PROBE_MARCH
                         c[j] = sgn[j] * k[j] * h[j]
-                        trial[j] = xv
+                        trial[j] = b[j] + sgn[j] * (t - 1.0) * h[j]  # (b: the newest point, one step past the middle)
                     else:
                         trial[j] = sgn[j] * k[j] * h[j]
             elif ph == _PROBE_MARCH:

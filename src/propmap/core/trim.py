@@ -452,15 +452,18 @@ def trim_omega(
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
         low, top = reach[0][i], reach[1][i]
-        descent = V1[i] > 0 and math.cos(b1[i]) < 0
-        why = (f" (the rotor makes T <= {top:.6g} N up to tip Mach {hi * propeller.radius / air.speed_of_sound:.2g}:"
-               " is the thrust in grams? It is in N)" if T1[i] > top else
-               "" if T1[i] >= low else
-               " (in descent the flow alone makes that much on a slowly turning rotor)" if descent else
-               " (in still air a turning rotor's thrust is positive: give a thrust above 0 N)"
-               if T1[i] <= 0 and V1[i] == 0 else
-               f" (the slowest rate, {lo:.6g} rad/s, already makes {low:.6g} N here: give a larger thrust, or a lower "
-               "bound on the rate)")
+        if T1[i] > top:
+            why = (f" (the rotor makes T <= {top:.6g} N up to tip Mach {hi * propeller.radius / air.speed_of_sound:.2g}"
+                   ": is the thrust in grams? It is in N)")
+        elif T1[i] >= low:
+            why = ""
+        elif V1[i] > 0 and math.cos(b1[i]) < 0:
+            why = " (in descent the flow alone makes that much on a slowly turning rotor)"
+        elif T1[i] <= 0 and V1[i] == 0:
+            why = " (in still air a turning rotor's thrust is positive: give a thrust above 0 N)"
+        else:
+            why = (f" (the slowest rate, {lo:.6g} rad/s, already makes {low:.6g} N here: give a larger thrust, or a "
+                   "lower bound on the rate)")
         raise TrimError(
             f"no rotation rate in [{lo:.6g}, {hi:.6g}] rad/s ({lo / RPM:.6g}-{hi / RPM:.6g} rpm) makes "
             f"thrust={T1[i]:.6g} N at operating point {_where(i, shape)}(airspeed={V1[i]:.6g} m/s, "
