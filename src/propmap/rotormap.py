@@ -131,9 +131,8 @@ class _Buffers(threading.local):
     loads, about 1 in 200 calls)."""
 
     def __init__(self) -> None:
-        #: (loads, wrench, inside, flagged): one attribute, one lookup in the thread's dict
-        self.arrays = (np.empty((1, len(LOADS))), np.empty((1, len(LOADS) + 6)), np.empty(1, dtype=np.bool_),
-                       np.empty(1, dtype=np.bool_))
+        #: the loads, inside and flagged of core._interp.interp_point and wrench_point
+        self.res = np.empty((4, 4))
 
 
 class RotorMap:
@@ -193,17 +192,20 @@ class RotorMap:
         self.radius = float(ds.attrs["diameter_m"]) / 2
         ref = (self.omega[:, None] * self.radius) ** 2 + self.airspeed[None, :] ** 2
         table = np.stack([ds[k].values for k in LOADS], axis=-1) / ref[:, :, None, None]
-        self._table = np.ascontiguousarray(table, dtype=float)
+        tables = [table]
         #: the map holds the side force and the pitching moment (io.mapcheck.SIDE_LOADS)
         self.side_loads = len(map_loads(ds)) > len(LOADS)
         if not self.side_loads:
             _warn_side_loads_missing(ds.attrs)
         finite = np.isfinite(table).all(axis=-1)
-        self._side_table = None
         if self.side_loads:  # Y, M_P in a second 4-wide table (zeros beside), for the compiled 4-load kernels
             side = np.stack([ds[k].values for k in SIDE_LOADS], axis=-1) / ref[:, :, None, None]
             finite &= np.isfinite(side).all(axis=-1)
-            self._side_table = np.ascontiguousarray(np.concatenate([side, np.zeros_like(side)], axis=-1))
+            tables.append(np.concatenate([side, np.zeros_like(side)], axis=-1))
+        #: the loads' table and the side table in one array, shape (1 or 2, n_Omega, n_V, n_beta, 4), for the
+        #: scalar paths' one argument (core._interp.interp_point); _table and _side_table are views of it
+        self._tables = np.ascontiguousarray(np.stack(tables), dtype=float)
+        self._views()
         # a node whose loads are not finite is as unreliable as a non-converged one
         bad = ~ds["converged"].values.astype(bool) | ~finite
         for f in BAD_FLAGS:
@@ -216,21 +218,31 @@ class RotorMap:
                      float(self.incidence[0]), float(self.incidence[-1]))
         from .core import _interp
 
-        # the scalar paths' kernels and policies, looked up once
+        # the scalar paths' kernels, and their settings and axes packed per policy (core._interp.GRID_HEAD)
         self._interp_point, self._wrench_point = _interp.interp_point, _interp.wrench_point
         self._hover_speed = _interp.HOVER_SPEED  # (below it, on an airspeed axis from 0, any incidence is inside)
-        self._policy = {"raise": _interp.CLIP, "clip": _interp.CLIP, "nan": _interp.NAN}
+        self._grid = {name: np.concatenate([(self.radius, self._order, policy, strict, self.omega.size,
+                                             self.airspeed.size), self.omega, self.airspeed, self.incidence])
+                      for name, policy, strict in (("raise", _interp.CLIP, 1), ("clip", _interp.CLIP, 0),
+                                                   ("nan", _interp.NAN, 0))}
         self._buffers = _Buffers()
 
     def __getstate__(self) -> dict:
         """Pickle and copy without the per-thread buffers (a copy makes its own)."""
         state = self.__dict__.copy()
-        state.pop("_buffers", None)
+        for k in ("_buffers", "_table", "_side_table"):  # (the tables as views of _tables again on loading)
+            state.pop(k, None)
         return state
 
     def __setstate__(self, state: dict) -> None:
         self.__dict__.update(state)
+        self._views()
         self._buffers = _Buffers()
+
+    def _views(self) -> None:
+        """The loads' table and the side table (None where the map holds none) as views of ``_tables``."""
+        self._table = self._tables[0]
+        self._side_table = self._tables[1] if self._tables.shape[0] > 1 else None
 
     @classmethod
     def open(cls, path, prop: str | None = None, interpolation: str = "cubic") -> "RotorMap":
@@ -425,20 +437,14 @@ class RotorMap:
             return None
         if out_of_grid not in POLICIES:
             return None
-        out, _, in1, fl1 = self._buffers.arrays
-        self._interp_point(self.omega, self.airspeed, self.incidence, self._table, self._cellflag, self.radius, omega,
-                           airspeed, incidence, self._policy[out_of_grid], self._order, out, in1, fl1)
-        t, d, q, m = out[0].tolist()
-        y = mp = 0.0
-        if self.side_loads:
-            self._interp_point(self.omega, self.airspeed, self.incidence, self._side_table, self._cellflag,
-                               self.radius, omega, airspeed, incidence, self._policy[out_of_grid], self._order,
-                               out, in1, fl1)
-            y, mp = out[0, :2].tolist()
+        res = self._buffers.res
+        self._interp_point(self._grid[out_of_grid], self._tables, self._cellflag, omega, airspeed, incidence, res)
+        (t, d, q, m), side, (ins, *_), (fl, *_) = res.tolist()
+        y, mp = side[:2] if self.side_loads else (0.0, 0.0)
         omega = float(omega)
         if not inside and out_of_grid == "clip":
             omega = min(omega, o1)  # below the grid the loads are scaled to the query's
-        return MapLoads(t, d, q, m, omega, bool(in1[0]), bool(fl1[0]), y, mp)
+        return MapLoads(t, d, q, m, omega, ins != 0.0, fl != 0.0, y, mp)
 
     def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
         """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
@@ -451,22 +457,18 @@ class RotorMap:
             return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else plain_float(spin)  # (a NumPy +-1 too)
         s = s if s in (1.0, -1.0) else None
-        policy = self._policy.get(out_of_grid) if isinstance(out_of_grid, str) else None
-        if s is None or policy is None:
+        grid = self._grid.get(out_of_grid) if isinstance(out_of_grid, str) else None
+        if s is None or grid is None:
             return None
-        side, out, in1, fl1 = self._buffers.arrays
-        if self._wrench_point(self.omega, self.airspeed, self.incidence, self._table,
-                              self._table if self._side_table is None else self._side_table, self.side_loads,
-                              self._cellflag, self.radius, v, a, omega, s, policy, out_of_grid == "raise", self._order,
-                              out, side, in1, fl1):
+        res, vectors = self._buffers.res, np.empty((2, 3))  # (the vectors returned: a new array each call)
+        if self._wrench_point(grid, self._tables, self._cellflag, v, a, omega, s, res, vectors):
             return None
-        t, d, q, m, fx, fy, fz, mx, my, mz = out[0].tolist()
-        y, mp = side[0, :2].tolist() if self.side_loads else (0.0, 0.0)
-        inside = bool(in1[0])
+        (t, d, q, m), side, (ins, *_), (fl, *_) = res.tolist()
+        y, mp = side[:2] if self.side_loads else (0.0, 0.0)
+        inside = ins != 0.0
         if not inside and out_of_grid == "clip":
             omega = min(omega, self._box[1])  # below the grid: scaled to the query's
-        return MapWrench(np.array((fx, fy, fz)), np.array((mx, my, mz)),
-                         MapLoads(t, d, q, m, float(omega), inside, bool(fl1[0]), y, mp))
+        return MapWrench(vectors[0], vectors[1], MapLoads(t, d, q, m, float(omega), inside, fl != 0.0, y, mp))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """The map's interpolation error against the model recorded in it (:func:`check_map`).

@@ -202,10 +202,36 @@ def interp_batch(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, ord
         _one(ax0, ax1, ax2, table, cellflag, radius, q0[i], q1[i], q2[i], policy, order, out, i, inside, flagged)
 
 
+#: a map's scalar paths pass its settings and its three axes as one float array ``grid`` =
+#: (R [m], order, policy, strict, n_Omega, n_V, then the Omega, V and beta axes): one argument
+#: instead of eight, which numba's dispatcher types and unboxes one by one (19 arguments took
+#: 1.9-2.6 us of a 6 us ``RotorMap.wrench`` call; 2026-11-28, Intel Xeon, docs/simulators.md)
+GRID_HEAD = 6
+
+
+@numba.njit(forceinline=True, **_FLAGS)
+def _unpack(grid):
+    """(ax0, ax1, ax2, R, order, policy, strict) from a packed ``grid`` (views, no copy)."""
+    n0 = int(grid[4])
+    n1 = int(grid[5])
+    a = GRID_HEAD + n0
+    b = a + n1
+    return grid[GRID_HEAD:a], grid[a:b], grid[b:], grid[0], int(grid[1]), int(grid[2]), grid[3] != 0.0
+
+
 @numba.njit(**_FLAGS)
-def interp_point(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, inside, flagged):
-    """One query (scalars q0, q1, q2) into out[0, :], inside[0], flagged[0]."""
-    _one(ax0, ax1, ax2, table, cellflag, radius, q0, q1, q2, policy, order, out, 0, inside, flagged)
+def interp_point(grid, tables, cellflag, q0, q1, q2, res):
+    """One query (scalars q0, q1, q2): T, D, Q, M_R into res[0, :], and where ``tables`` holds a
+    second (side) table, Y and M_P into res[1, :2]; inside (1.0 or 0.0) into res[2, 0], flagged
+    into res[3, 0].
+
+    ``grid``: as :data:`GRID_HEAD` says; ``tables``, shape (1 or 2, n0, n1, n2, 4): the
+    loads' table and the side table (Y, M_P, 0, 0) where the map holds one; res, shape (4, >= 4).
+    """
+    ax0, ax1, ax2, radius, order, policy, _ = _unpack(grid)
+    _one(ax0, ax1, ax2, tables[0], cellflag, radius, q0, q1, q2, policy, order, res, 0, res[2], res[3])
+    if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
+        _one(ax0, ax1, ax2, tables[1], cellflag, radius, q0, q1, q2, policy, order, res, 1, res[2], res[3])
 
 
 #: an incidence within this of an end of the grid's axis (or of [0, pi]) [rad] is taken on it:
@@ -358,15 +384,14 @@ def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
 
 
 @numba.njit(**_FLAGS)
-def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, velocity, axis, omega, spin, policy,
-                 strict, order, out, side, inside, flagged):
+def wrench_point(grid, tables, cellflag, velocity, axis, omega, spin, res, vectors):
     """One rotor's force and moment vectors from the map (maps.RotorMap.wrench's scalar path).
 
     The disk frame and the vectors as core.vector.disk_frame and wrench_vectors
     (:func:`point_frame`, :func:`point_vectors`, which core.vector's one-point path calls too).
-    out[0, :] receives T, D, Q, M_R, the force (3) and the moment (3); with ``has_side`` (a map
-    with the side force and pitching moment, in ``side_table``'s first two of four columns)
-    side[0, :2] receives Y and M_P (else untouched: ``side_table`` may be any table then).
+    ``grid``, ``tables``, ``cellflag`` and ``res`` as :func:`interp_point`'s (``grid``'s
+    ``strict`` for the raising policy); ``vectors``, shape (2, 3), receives the force and the
+    moment.
 
     Returns
     -------
@@ -375,6 +400,7 @@ def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, v
         1e150 m/s, or Omega < 0; 2: outside the grid with ``strict`` (the raising policy). On 1 and 2
         nothing is written: the caller's general path answers and raises what it raises.
     """
+    ax0, ax1, ax2, radius, order, policy, strict = _unpack(grid)
     vx = velocity[0]
     vy = velocity[1]
     vz = velocity[2]
@@ -389,19 +415,19 @@ def wrench_point(ax0, ax1, ax2, table, side_table, has_side, cellflag, radius, v
     beta = hover_incidence(ax1, ax2, speed, snap_edge(beta, ax2[0], ax2[-1]))
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2
-    _one(ax0, ax1, ax2, table, cellflag, radius, omega, speed, beta, policy, order, out, 0, inside, flagged)
+    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, speed, beta, policy, order, res, 0, res[2], res[3])
     Y = 0.0
     P = 0.0
-    if has_side:  # the same query in the side table (the same inside and flagged)
-        _one(ax0, ax1, ax2, side_table, cellflag, radius, omega, speed, beta, policy, order, side, 0, inside, flagged)
-        Y = side[0, 0]
-        P = side[0, 1]
-    fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, out[0, 0], out[0, 1], out[0, 2],
-                                           out[0, 3], Y, P, spin)
-    out[0, 4] = fx
-    out[0, 5] = fy
-    out[0, 6] = fz
-    out[0, 7] = mx
-    out[0, 8] = my
-    out[0, 9] = mz
+    if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
+        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, speed, beta, policy, order, res, 1, res[2], res[3])
+        Y = res[1, 0]
+        P = res[1, 1]
+    fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, res[0, 0], res[0, 1], res[0, 2],
+                                           res[0, 3], Y, P, spin)
+    vectors[0, 0] = fx
+    vectors[0, 1] = fy
+    vectors[0, 2] = fz
+    vectors[1, 0] = mx
+    vectors[1, 1] = my
+    vectors[1, 2] = mz
     return 0

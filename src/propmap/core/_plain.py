@@ -11,6 +11,9 @@ import numpy as np
 __all__ = ["plain_float", "plain_vector3"]
 
 
+_F64 = np.dtype(np.float64)
+
+
 def plain_float(x, *, int64: bool = False) -> float | None:
     """``x`` as a Python float where it is one real number, else None.
 
@@ -60,7 +63,7 @@ def plain_vector3(value, *, int64: bool = False) -> np.ndarray | None:
     if type(value) is np.ndarray:
         if value.shape != (3,):
             return None
-        if value.dtype == np.float64:
+        if value.dtype is _F64 or value.dtype == np.float64:  # (identity first: 30 against 95 ns)
             return value
         return value.astype(np.float64) if value.dtype.kind in "iuf" else None
     if isinstance(value, (tuple, list)) and len(value) == 3:
