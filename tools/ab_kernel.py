@@ -12,6 +12,7 @@ apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set)
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] [--serial]   # ~2 min for 30 rounds
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial|hover]
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --single   # ~1 min for 30 rounds
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --map   # ~1 min for 30 rounds
 
 ``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
 raised above the batch) instead of the parallel one on one thread. ``--derivatives`` times
@@ -21,7 +22,11 @@ with the three inputs' derivatives, with the collective too and with the 8 secti
 parameters, each tree's ratio to its loads and the paired new / old of each (~2 min for 10
 rounds). ``--single`` times one scalar call (bench_everyday.py's point: 8000 rpm, 10 m/s, 45 deg,
 the paper's Table I set and the generic set), the median of 200 calls per tree and round: the
-wrapper's cost, which the kernel's spread between processes hides.
+wrapper's cost, which the kernel's spread between processes hides. ``--map`` times
+``RotorMap.loads`` and ``.wrench``'s scalar calls (1,000 random queries of Python floats and a
+velocity array per round) on an 8 x 8 x 9 map of apce_8x6, linear and cubic with the paper's
+Table I set and cubic with flapping blades (a side table), after checking that both trees
+answer the same to the bit.
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -142,8 +147,58 @@ def single_ab(trees: dict, rounds: int) -> None:
               f"{1e6 * np.median(bb - a):+.2f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
 
 
+def map_ab(trees: dict, rounds: int) -> None:
+    """The paired timing of RotorMap's scalar calls (``--map``)."""
+    import math
+
+    rng = np.random.default_rng(1)
+    n = 1000
+    queries = np.column_stack([rng.uniform(300, 1300, n), rng.uniform(0, 20, n), rng.uniform(0, 3.1, n)]).tolist()
+    axis = np.array([0.0, 0.0, 1.0])
+    vels = [np.array([v * math.sin(x), 0.0, v * math.cos(x)]) for _, v, x in queries]
+    grid = (np.linspace(300, 1300, 8), np.linspace(0, 20, 8), np.radians(np.linspace(0, 180, 9)))
+    for interp, label in (("linear", "paper"), ("cubic", "paper"), ("cubic", "flapping")):
+        maps = {}
+        for k, pm in trees.items():
+            use(pm)
+            from propmap.maps import RotorMap, build_map  # (this tree's)
+
+            params = (pm.generic_params().replace(flap_compliance=2.0) if label == "flapping"
+                      else pm.preset("gill2017-apc"))
+            maps[k] = RotorMap(build_map(pm.load_propeller("apce_8x6"), params, *grid, n_check=0), interp)
+        for (o, v, x), vel in zip(queries, vels):
+            use(trees["A"])
+            a, la = maps["A"].wrench(vel, axis, o, "ccw"), maps["A"].loads(o, v, x)
+            use(trees["B"])
+            b, lb = maps["B"].wrench(vel, axis, o, "ccw"), maps["B"].loads(o, v, x)
+            if not (np.array_equal(a.force, b.force) and np.array_equal(a.torque, b.torque)
+                    and tuple(a.loads) == tuple(b.loads) and tuple(la) == tuple(lb)):
+                raise SystemExit(f"the trees answer differently at {o, v, x}")
+
+        def run(rm):
+            t0 = time.perf_counter()
+            for o, v, x in queries:
+                rm.loads(o, v, x)
+            t1 = time.perf_counter()
+            for (o, v, x), vel in zip(queries, vels):
+                rm.wrench(vel, axis, o, "ccw")
+            return (t1 - t0) / n, (time.perf_counter() - t1) / n
+
+        t = {"A": [], "B": []}
+        for i in range(rounds + 1):
+            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+                use(trees[k])
+                t[k].append(run(maps[k]))
+        a, b = np.array(t["A"][1:]), np.array(t["B"][1:])  # (the first round warms)
+        for j, call in enumerate(("loads", "wrench")):
+            q = np.percentile(b[:, j] / a[:, j], [25, 50, 75])
+            print(f"{interp}, {label} set, {call}: A {1e6 * np.median(a[:, j]):.2f} us, B "
+                  f"{1e6 * np.median(b[:, j]):.2f} us; B / A paired median {q[1]:.3f} "
+                  f"(quartiles {q[0]:.3f}-{q[2]:.3f})")
+
+
 def main() -> None:
-    flags = ("--serial", "--derivatives", "forward", "axial", "hover", "--single")
+    flags = ("--serial", "--derivatives", "forward", "axial", "hover", "--single", "--map")
     argv = [a for a in sys.argv[1:] if a not in flags]
     if len(argv) < 2:
         raise SystemExit(__doc__)
@@ -156,6 +211,9 @@ def main() -> None:
         return
     if "--single" in sys.argv:
         single_ab(trees, rounds)
+        return
+    if "--map" in sys.argv:
+        map_ab(trees, rounds)
         return
     rng = np.random.default_rng(5)
     n = 4000
