@@ -434,7 +434,7 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     """A simulator's ints and float32 (an audit, 2026-11-26: 10-60x slower through the array
     path): the scalar path takes them and answers as for floats; a bool is still refused."""
     from propmap.maps import build_map
-    from propmap.core._plain import plain_float, plain_vector3
+    from propmap.core._plain import plain_float, plain_vector
     from propmap.rotormap import RotorMap
 
     prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
@@ -443,8 +443,9 @@ def test_map_scalar_calls_take_ints_and_float32_by_the_fast_path(tmp_path):
     assert plain_float(600) == 600.0 and plain_float(np.float32(2.5)) == 2.5 and plain_float(True) is None
     assert plain_float(2**64) == 2.0**64 and plain_float(10**400) is None  # (beyond a float's range: none)
     assert plain_float(2**63, int64=True) is None and plain_float(2**63 - 1, int64=True) == 2.0**63  # (int64 only)
-    assert plain_vector3([0, 0, 1]).dtype == np.float64 and plain_vector3(np.array([1, 2, 3], np.int32)) is not None
-    assert plain_vector3([0, 0, 10**20], int64=True) is None and plain_vector3(np.array([True, False, True])) is None
+    assert plain_vector([0, 0, 1], 3).dtype == np.float64 and plain_vector(np.array([1, 2, 3], np.int32), 3) is not None
+    assert plain_vector([0, 0, 10**20], 3, int64=True) is None
+    assert plain_vector(np.array([True, False, True]), 3) is None and plain_vector([1.0, 2.0], 3) is None
     ref = rm.loads(600.0, 3.0, 1.0)
     for args in ((600, 3, 1), (np.float32(600.0), np.int64(3), 1.0)):
         got = rm.loads(*args)

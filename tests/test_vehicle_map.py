@@ -130,3 +130,73 @@ def test_a_query_just_outside_the_grid_is_shown_against_its_ends_in_full(setup):
         rm.loads(np.nextafter(top, 2 * top), 1.0, 0.5)
     with pytest.raises(ValueError, match=r"airspeed = 13.0 is outside the map's grid \[0, 12\] m/s"):
         rm.loads(top, 13.0, 0.5)
+
+
+def test_one_step_in_one_compiled_call_equals_each_rotor_by_its_map(setup):
+    """A vehicle whose rotors share one map takes one step in one compiled call
+    (core._interp.vehicle_point): the same force, moment and flag as each rotor through its
+    map's one-rotor path (a VehicleMap of four copies of the map, which takes that path), with
+    wind, rotor inertia and the airframe, under each policy, for arrays, lists and tuples; the
+    inputs it does not take, and the ones it refuses, go to the general path's checks."""
+    import copy
+
+    veh, params, rm = setup
+    one, each = VehicleMap(veh, rm), VehicleMap(veh, [copy.copy(rm) for _ in range(4)])
+    assert one._one_map is rm and each._one_map is None
+    v, w, om = _states(60, seed=7)
+    om[:10] *= 1.5  # 750-1650 rad/s: some rotors above the grid's 1257 rad/s (clipped or NaN)
+    wind = np.random.default_rng(3).normal(0, 2, (60, 3))
+    n_flagged = 0
+    for i in range(60):
+        for policy in ("clip", "nan") if i < 10 else ("raise", "clip"):
+            args = (v[i], w[i], om[i]) if i % 3 else (v[i].tolist(), tuple(w[i]), om[i].tolist())
+            kw = dict(wind=wind[i] if i % 2 else None, out_of_grid=policy)
+            a, b = one.wrench(*args, **kw), each.wrench(*args, **kw)
+            assert a.force.shape == a.moment.shape == (1, 3) and a.flagged.shape == (1,)
+            np.testing.assert_allclose(a.force, b.force, rtol=1e-13, atol=1e-13)
+            np.testing.assert_allclose(a.moment, b.moment, rtol=1e-13, atol=1e-13)
+            assert a.flagged[0] == b.flagged[0]
+            n_flagged += bool(a.flagged[0])
+            if policy == "nan" and i < 10 and om[i].max() > rm.omega[-1]:
+                assert np.isnan(a.force).all() and a.flagged[0]
+    assert 10 <= n_flagged < 100  # (both kinds of sample: the comparison covers the flag)
+    # the result's arrays are its own: a second step leaves the first one's unchanged
+    first = one.wrench(v[20], w[20], om[20])
+    kept = first.force.copy()
+    one.wrench(v[21], w[21], om[21])
+    assert np.array_equal(first.force, kept)
+    # refused as by the general path
+    with pytest.raises(ValueError, match="velocity must be finite"):
+        one.wrench([np.nan, 0.0, 0.0], [0.0, 0.0, 0.0], om[20])
+    with pytest.raises(ValueError, match=r"omega = 1500\.0 is outside the map's grid"):
+        one.wrench(v[20], w[20], [1500.0, 900.0, 900.0, 900.0])
+    with pytest.raises(ValueError, match="omega must be >= 0"):
+        one.wrench(v[20], w[20], [-1.0, 900.0, 900.0, 900.0], out_of_grid="clip")
+    with pytest.raises(ValueError, match="out_of_grid must be one of"):
+        one.wrench(v[20], w[20], om[20], out_of_grid="extrapolate")
+    with pytest.raises(ValueError, match=r"rotor_omega must have shape \(N, 4\)"):
+        one.wrench(v[20], w[20], om[20][:3])
+
+
+def test_one_compiled_step_carries_the_side_force_and_pitching_moment(setup):
+    """With flapping blades the map holds Y and M_P (a second table): the compiled step sums them
+    as each rotor's one-rotor path does."""
+    import copy
+
+    veh = setup[0]
+    prop = veh.rotors[0].propeller
+    ds = build_map(prop, pm.generic_params().replace(flap_compliance=2.0), np.linspace(500, 1300, 4),
+                   np.linspace(0, 12, 4), np.radians(np.linspace(0, 180, 7)), n_check=0)
+    rm = RotorMap(ds)
+    assert rm.side_loads
+    one, each = VehicleMap(veh, rm), VehicleMap(veh, [copy.copy(rm) for _ in range(4)])
+    v, w, om = _states(20, seed=11)
+    for i in range(20):
+        a, b = one.wrench(v[i], w[i], om[i], out_of_grid="clip"), each.wrench(v[i], w[i], om[i], out_of_grid="clip")
+        np.testing.assert_allclose(a.force, b.force, rtol=1e-13, atol=1e-13)
+        np.testing.assert_allclose(a.moment, b.moment, rtol=1e-13, atol=1e-13)
+        assert a.flagged[0] == b.flagged[0]
+    # the side force is not negligible at these steps, so the comparison covers its sum
+    side = rm.wrench(v[0] + np.cross(w[0], one._pos[0]), one._axes[0], om[0, 0], one._spin_list[0],
+                     out_of_grid="clip").loads
+    assert abs(side.side_force) > 1e-3

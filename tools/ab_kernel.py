@@ -26,7 +26,8 @@ wrapper's cost, which the kernel's spread between processes hides. ``--map`` tim
 ``RotorMap.loads`` and ``.wrench``'s scalar calls (1,000 random queries of Python floats and a
 velocity array per round) on an 8 x 8 x 9 map of apce_8x6, linear and cubic with the paper's
 Table I set and cubic with flapping blades (a side table), after checking that both trees
-answer the same to the bit.
+answer the same to the bit, and one step of the example quadrotor from that map
+(``VehicleMap.wrench``, 1,000 random steps, checked equal to 1e-13).
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -41,6 +42,7 @@ several processes, the trees' order alternated, and report the median with the r
 import importlib
 import sys
 import time
+from pathlib import Path
 
 import numba
 import numpy as np
@@ -158,14 +160,25 @@ def map_ab(trees: dict, rounds: int) -> None:
     vels = [np.array([v * math.sin(x), 0.0, v * math.cos(x)]) for _, v, x in queries]
     grid = (np.linspace(300, 1300, 8), np.linspace(0, 20, 8), np.radians(np.linspace(0, 180, 9)))
     for interp, label in (("linear", "paper"), ("cubic", "paper"), ("cubic", "flapping")):
-        maps = {}
+        maps, vehicles = {}, {}
         for k, pm in trees.items():
             use(pm)
             from propmap.maps import RotorMap, build_map  # (this tree's)
+            from propmap.vehicle import VehicleMap, read_vehicle
 
             params = (pm.generic_params().replace(flap_compliance=2.0) if label == "flapping"
                       else pm.preset("gill2017-apc"))
             maps[k] = RotorMap(build_map(pm.load_propeller("apce_8x6"), params, *grid, n_check=0), interp)
+            vehicles[k] = VehicleMap(read_vehicle(Path(pm.__file__).parent / "data/examples/quadrotor.toml"), maps[k])
+        steps = [(vel, 0.3 * vel[::-1], [o, 0.97 * o, 1.02 * o, o]) for (o, _, _), vel in zip(queries, vels)]
+        for s in steps:
+            use(trees["A"])
+            a = vehicles["A"].wrench(*s, out_of_grid="clip")
+            use(trees["B"])
+            b = vehicles["B"].wrench(*s, out_of_grid="clip")
+            if not (np.allclose(a.force, b.force, rtol=1e-13, atol=1e-13)
+                    and np.allclose(a.moment, b.moment, rtol=1e-13, atol=1e-13) and a.flagged[0] == b.flagged[0]):
+                raise SystemExit(f"the trees' vehicle steps differ at {s}")
         for (o, v, x), vel in zip(queries, vels):
             use(trees["A"])
             a, la = maps["A"].wrench(vel, axis, o, "ccw"), maps["A"].loads(o, v, x)
@@ -175,22 +188,25 @@ def map_ab(trees: dict, rounds: int) -> None:
                     and tuple(a.loads) == tuple(b.loads) and tuple(la) == tuple(lb)):
                 raise SystemExit(f"the trees answer differently at {o, v, x}")
 
-        def run(rm):
+        def run(rm, vm):
             t0 = time.perf_counter()
             for o, v, x in queries:
                 rm.loads(o, v, x)
             t1 = time.perf_counter()
             for (o, v, x), vel in zip(queries, vels):
                 rm.wrench(vel, axis, o, "ccw")
-            return (t1 - t0) / n, (time.perf_counter() - t1) / n
+            t2 = time.perf_counter()
+            for s in steps:
+                vm.wrench(*s, out_of_grid="clip")
+            return (t1 - t0) / n, (t2 - t1) / n, (time.perf_counter() - t2) / n
 
         t = {"A": [], "B": []}
         for i in range(rounds + 1):
             for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
                 use(trees[k])
-                t[k].append(run(maps[k]))
+                t[k].append(run(maps[k], vehicles[k]))
         a, b = np.array(t["A"][1:]), np.array(t["B"][1:])  # (the first round warms)
-        for j, call in enumerate(("loads", "wrench")):
+        for j, call in enumerate(("loads", "wrench", "vehicle step")):
             q = np.percentile(b[:, j] / a[:, j], [25, 50, 75])
             print(f"{interp}, {label} set, {call}: A {1e6 * np.median(a[:, j]):.2f} us, B "
                   f"{1e6 * np.median(b[:, j]):.2f} us; B / A paired median {q[1]:.3f} "

@@ -18,7 +18,7 @@ import numpy as np
 
 from .core.units import RPM
 from .core._interp import snap_incidence, snap_incidence_scalar
-from .core._plain import plain_float, plain_vector3
+from .core._plain import plain_float, plain_vector
 from .core.geometry import has_bool, refuse_masked
 from .io.inputs import short_path
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
@@ -446,13 +446,20 @@ class RotorMap:
             omega = min(omega, o1)  # below the grid the loads are scaled to the query's
         return MapLoads(t, d, q, m, omega, ins != 0.0, fl != 0.0, y, mp)
 
+    def _packed(self, out_of_grid):
+        """(grid, tables, cellflag, res) of the compiled one-point kernels (core._interp) under the
+        policy ``out_of_grid``, ``res`` this thread's; None for an unknown policy (VehicleMap's
+        one-step path, which then takes its general path)."""
+        grid = self._grid.get(out_of_grid) if isinstance(out_of_grid, str) else None
+        return None if grid is None else (grid, self._tables, self._cellflag, self._buffers.res)
+
     def _wrench1(self, velocity, axis, omega, spin, out_of_grid):
         """:meth:`wrench` for one rotor (a simulator's call) in one compiled call
         (core._interp.wrench_point: the arithmetic of core.vector.disk_frame and
         wrench_vectors), without building and broadcasting arrays. None where the inputs
         are not one rotor's plain numbers, or not finite, or outside the grid under
         "raise": the general path then answers (and raises what it raises)."""
-        v, a, omega = plain_vector3(velocity), plain_vector3(axis), plain_float(omega)
+        v, a, omega = plain_vector(velocity, 3), plain_vector(axis, 3), plain_float(omega)
         if v is None or a is None or omega is None or omega != omega:
             return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
         s = _SPIN.get(spin.lower()) if isinstance(spin, str) else plain_float(spin)  # (a NumPy +-1 too)

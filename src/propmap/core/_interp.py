@@ -383,6 +383,30 @@ def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
             -spin * (Q * zx + M * ex) - P * lx, -spin * (Q * zy + M * ey) - P * ly, -spin * (Q * zz + M * ez) - P * lz)
 
 
+@numba.njit(forceinline=True, **_FLAGS)
+def _rotor(ax0, ax1, ax2, tables, cellflag, radius, order, policy, strict, vx, vy, vz, a0, a1, a2, omega, spin, res):
+    """One rotor's (status, Fx, Fy, Fz, Mx, My, Mz) at hub velocity (vx, vy, vz), axis (a0, a1, a2),
+    rate ``omega`` and ``spin``: :func:`wrench_point`'s arithmetic (status and ``res`` as there)."""
+    amax = max(abs(a0), abs(a1), abs(a2))
+    vmax = max(abs(vx), abs(vy), abs(vz))
+    if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
+        return 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
+    beta = hover_incidence(ax1, ax2, speed, snap_edge(beta, ax2[0], ax2[-1]))
+    if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
+        return 2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, speed, beta, policy, order, res, 0, res[2], res[3])
+    Y = 0.0
+    P = 0.0
+    if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
+        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, speed, beta, policy, order, res, 1, res[2], res[3])
+        Y = res[1, 0]
+        P = res[1, 1]
+    fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, res[0, 0], res[0, 1], res[0, 2],
+                                           res[0, 3], Y, P, spin)
+    return 0, fx, fy, fz, mx, my, mz
+
+
 @numba.njit(**_FLAGS)
 def wrench_point(grid, tables, cellflag, velocity, axis, omega, spin, res, vectors):
     """One rotor's force and moment vectors from the map (maps.RotorMap.wrench's scalar path).
@@ -398,36 +422,91 @@ def wrench_point(grid, tables, cellflag, velocity, axis, omega, spin, res, vecto
     int
         0: done; 1: a zero or non-finite axis, a velocity that is not finite or beyond
         1e150 m/s, or Omega < 0; 2: outside the grid with ``strict`` (the raising policy). On 1 and 2
-        nothing is written: the caller's general path answers and raises what it raises.
+        ``vectors`` is not written: the caller's general path answers and raises what it raises.
     """
     ax0, ax1, ax2, radius, order, policy, strict = _unpack(grid)
-    vx = velocity[0]
-    vy = velocity[1]
-    vz = velocity[2]
-    a0 = axis[0]
-    a1 = axis[1]
-    a2 = axis[2]
-    amax = max(abs(a0), abs(a1), abs(a2))
-    vmax = max(abs(vx), abs(vy), abs(vz))
-    if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
-        return 1
-    zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
-    beta = hover_incidence(ax1, ax2, speed, snap_edge(beta, ax2[0], ax2[-1]))
-    if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
-        return 2
-    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, speed, beta, policy, order, res, 0, res[2], res[3])
-    Y = 0.0
-    P = 0.0
-    if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
-        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, speed, beta, policy, order, res, 1, res[2], res[3])
-        Y = res[1, 0]
-        P = res[1, 1]
-    fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, res[0, 0], res[0, 1], res[0, 2],
-                                           res[0, 3], Y, P, spin)
+    status, fx, fy, fz, mx, my, mz = _rotor(ax0, ax1, ax2, tables, cellflag, radius, order, policy, strict,
+                                            velocity[0], velocity[1], velocity[2], axis[0], axis[1], axis[2], omega,
+                                            spin, res)
+    if status:
+        return status
     vectors[0, 0] = fx
     vectors[0, 1] = fy
     vectors[0, 2] = fz
     vectors[1, 0] = mx
     vectors[1, 1] = my
     vectors[1, 2] = mz
+    return 0
+
+
+#: a vehicle's rotors for :func:`vehicle_point`, one row each: the arm r_i [m] (3), the unit axis a_i (3), the
+#: spin s_i, and h_i = s_i J_i a_i [kg m^2] (3)
+ROTOR_COLUMNS = 10
+
+
+@numba.njit(**_FLAGS)
+def vehicle_point(grid, tables, cellflag, rotors, reach, air_velocity, angular_velocity, omega, res, out):
+    """One step of a vehicle whose rotors share one map (vehicle.mapped.VehicleMap.wrench's one-step path).
+
+    Rotor i sees V_i = v_air + w x r_i (:func:`_rotor`); F = sum_i F_i and M = sum_i (r_i x F_i +
+    M_i) - w x sum_i h_i Omega_i, summed in the rotors' order as VehicleMap's Python sums.
+    ``grid``, ``tables``, ``cellflag``, ``res`` as :func:`wrench_point`'s; ``rotors``, shape
+    (n, :data:`ROTOR_COLUMNS`); ``reach`` the longest arm [m]; ``air_velocity`` (3,) the centre
+    of mass' velocity relative to the air, ``angular_velocity`` (3,) [rad/s], ``omega`` (n,)
+    [rad/s]; ``out``, shape (2, 1, 3), receives F and M; res[3, 1] 1.0 where a rotor's query
+    is flagged (else 0.0).
+
+    Returns
+    -------
+    int
+        0: done; 1: a non-finite input, a hub velocity bound max|v_air| + max|w| reach of
+        1e150 m/s or more, or an Omega_i < 0; 2: a rotor outside the grid with ``strict``. On 1
+        and 2 ``out`` is not written: the caller's general path answers and raises what it raises.
+    """
+    ax0, ax1, ax2, radius, order, policy, strict = _unpack(grid)
+    vx = air_velocity[0]
+    vy = air_velocity[1]
+    vz = air_velocity[2]
+    wx = angular_velocity[0]
+    wy = angular_velocity[1]
+    wz = angular_velocity[2]
+    if not max(abs(vx), abs(vy), abs(vz)) + max(abs(wx), abs(wy), abs(wz)) * reach < 1e150:  # (NaN too)
+        return 1
+    F0 = 0.0
+    F1 = 0.0
+    F2 = 0.0
+    M0 = 0.0
+    M1 = 0.0
+    M2 = 0.0
+    h0 = 0.0
+    h1 = 0.0
+    h2 = 0.0
+    flagged = False
+    for i in range(rotors.shape[0]):
+        px = rotors[i, 0]
+        py = rotors[i, 1]
+        pz = rotors[i, 2]
+        om = omega[i]
+        status, fx, fy, fz, mx, my, mz = _rotor(ax0, ax1, ax2, tables, cellflag, radius, order, policy, strict,
+                                                vx + wy * pz - wz * py, vy + wz * px - wx * pz, vz + wx * py - wy * px,
+                                                rotors[i, 3], rotors[i, 4], rotors[i, 5], om, rotors[i, 6], res)
+        if status:
+            return status
+        F0 += fx
+        F1 += fy
+        F2 += fz
+        M0 += py * fz - pz * fy + mx
+        M1 += pz * fx - px * fz + my
+        M2 += px * fy - py * fx + mz
+        flagged = flagged or res[3, 0] != 0.0
+        h0 += rotors[i, 7] * om
+        h1 += rotors[i, 8] * om
+        h2 += rotors[i, 9] * om
+    out[0, 0, 0] = F0
+    out[0, 0, 1] = F1
+    out[0, 0, 2] = F2
+    out[1, 0, 0] = M0 - (wy * h2 - wz * h1)  # gyroscopic: -w x h
+    out[1, 0, 1] = M1 - (wz * h0 - wx * h2)
+    out[1, 0, 2] = M2 - (wx * h1 - wy * h0)
+    res[3, 1] = 1.0 if flagged else 0.0
     return 0

@@ -1,14 +1,15 @@
-"""One-point inputs of the scalar fast paths (:meth:`propmap.RotorMap.loads`, ``.wrench`` and
-:func:`propmap.rotor_wrench`): a query that is one real number (a Python or NumPy real scalar, not
-a bool), or one 3-vector of them (an ndarray of shape (3,), not a subclass, or a list or tuple,
-a named tuple too), takes the compiled one-point path; anything else gives None and takes the
-array path, which broadcasts it or says what is wrong with it."""
+"""One-point inputs of the scalar fast paths (:meth:`propmap.RotorMap.loads`, ``.wrench``,
+:meth:`propmap.vehicle.VehicleMap.wrench` and :func:`propmap.rotor_wrench`): a query that is one
+real number (a Python or NumPy real scalar, not a bool), or one vector of them (an ndarray of
+shape (n,), not a subclass, or a list or tuple, a named tuple too: a velocity, an axis, a
+vehicle's rotor speeds), takes the compiled one-point path; anything else gives None and takes
+the array path, which broadcasts it or says what is wrong with it."""
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plain_float", "plain_vector3"]
+__all__ = ["plain_float", "plain_vector"]
 
 
 _F64 = np.dtype(np.float64)
@@ -44,29 +45,32 @@ def plain_float(x, *, int64: bool = False) -> float | None:
     return None
 
 
-def plain_vector3(value, *, int64: bool = False) -> np.ndarray | None:
-    """``value`` as a float64 array of shape (3,) where it is one 3-vector of plain numbers, else None.
+def plain_vector(value, n: int, *, int64: bool = False) -> np.ndarray | None:
+    """``value`` as a float64 array of shape (n,) where it is one n-vector of plain numbers, else None.
 
     Parameters
     ----------
     value : object
-        A NumPy array (not a subclass) of shape (3,) and a float or integer dtype, or a tuple or
-        list (a named tuple too) of three :func:`plain_float` numbers.
+        A NumPy array (not a subclass) of shape (n,) and a float or integer dtype, or a tuple or
+        list (a named tuple too) of n :func:`plain_float` numbers.
+    n : int
+        The length.
     int64 : bool
         As :func:`plain_float`'s, for the tuple's or list's numbers.
 
     Returns
     -------
-    ndarray of shape (3,) or None
+    ndarray of shape (n,) or None
         ``value`` itself where it is already such a float64 array.
     """
     if type(value) is np.ndarray:
-        if value.shape != (3,):
+        if value.shape != (n,):
             return None
         if value.dtype is _F64 or value.dtype == np.float64:  # (identity first: 30 against 95 ns)
             return value
         return value.astype(np.float64) if value.dtype.kind in "iuf" else None
-    if isinstance(value, (tuple, list)) and len(value) == 3:
+    if isinstance(value, (tuple, list)) and len(value) == n:
         xs = [plain_float(x, int64=int64) for x in value]
         return None if any(x is None for x in xs) else np.array(xs)
     return None
+

@@ -17,7 +17,7 @@ import numpy as np
 from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
-from ._plain import plain_float, plain_vector3
+from ._plain import plain_float, plain_vector
 from .geometry import Propeller, has_bool, refuse_masked
 from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -243,7 +243,7 @@ def _one_rotor(propeller, params, velocity, axis, omega, spin, air, discretizati
     the arithmetic of :func:`disk_frame` and :func:`wrench_vectors`, tested against them."""
     from ._interp import point_frame, point_vectors
 
-    Vv, zv = plain_vector3(velocity, int64=True), plain_vector3(axis, int64=True)
+    Vv, zv = plain_vector(velocity, 3, int64=True), plain_vector(axis, 3, int64=True)
     om = plain_float(omega, int64=True)
     if Vv is None or zv is None or om is None or not (isinstance(spin, str) or plain_float(spin) is not None):
         return None

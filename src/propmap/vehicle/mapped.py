@@ -14,7 +14,9 @@ drag at the centre of mass (core/body.py) in the freestream: a map holds no indu
 velocity, so the slipstream term of a vehicle's ``wash_factor`` and the rotors' interference
 (``rotor_interference``, core/interference.py) are left out (said once, at construction).
 The maps are duck-typed (anything with RotorMap's ``wrench``), so this module imports the
-core only.
+core only. One step (a simulator's call) of a vehicle whose rotors share one RotorMap is one
+compiled call (core._interp.vehicle_point, through the map's ``_packed`` arguments); otherwise
+each rotor takes its map's one-rotor path.
 """
 
 from __future__ import annotations
@@ -24,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core._interp import vehicle_point
+from ..core._plain import plain_vector
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
 from .layout import Vehicle, rotor_geometry
@@ -104,6 +108,10 @@ class VehicleMap:
         for i, m in enumerate(maps):
             groups.setdefault(id(m), []).append(i)
         self._groups = [(maps[idx[0]], np.array(idx)) for idx in groups.values()]
+        # one map for every rotor: one step in one compiled call, the rotors as core._interp.vehicle_point's rows
+        # (ROTOR_COLUMNS: arm, axis, spin, h)
+        self._one_map = maps[0] if len(self._groups) == 1 and hasattr(maps[0], "_packed") else None
+        self._rotors = np.ascontiguousarray(np.column_stack([self._pos, self._axes, self._spins, self._h]), dtype=float)
         body = vehicle.body_drag
         self._body = body if body is not None and body.active else None
         if self._body is not None and self._body.wash_factor > 0:
@@ -122,6 +130,32 @@ class VehicleMap:
         if not hub < VELOCITY_MAX:
             raise ValueError(f"velocity, wind and angular_velocity make a rotor hub's velocity of up to {hub:.3g} m/s "
                              f"(velocity - wind + angular_velocity x arm); it must stay below {VELOCITY_MAX:g} m/s")
+
+    def _step1(self, velocity, angular_velocity, rotor_omega, wind, out_of_grid):
+        """:meth:`wrench` at one step of plain numbers (a simulator's call) in one compiled call
+        (core._interp.vehicle_point) where every rotor shares one map; None where the general
+        path must answer (other inputs, a non-finite one, a query outside the grid under
+        "raise", an unknown policy), which then raises what it raises."""
+        v, w = plain_vector(velocity, 3, int64=True), plain_vector(angular_velocity, 3, int64=True)
+        om = plain_vector(rotor_omega, self._rotors.shape[0], int64=True)
+        if v is None or w is None or om is None:
+            return None
+        if wind is not None:
+            v_wind = plain_vector(wind, 3, int64=True)
+            if v_wind is None:
+                return None
+            v = v - v_wind
+        packed = self._one_map._packed(out_of_grid)
+        if packed is None:
+            return None
+        grid, tables, cellflag, res = packed
+        out = np.empty((2, 1, 3))  # (the force and moment returned: a new array each call)
+        if vehicle_point(grid, tables, cellflag, self._rotors, self._reach, v, w, om, res, out):
+            return None
+        force = out[0]
+        if self._body is not None:
+            force = force + body_drag_force(self._body, v[None, :], np.zeros((1, 3)), self._rho)
+        return VehicleMapWrench(force=force, moment=out[1], flagged=np.array([res[3, 1] != 0.0]))
 
     def _step(self, air_v: list, w: list, om: list, out_of_grid: str):
         """One step's (force, moment, flagged), shapes (1, 3), (1, 3), (1,): the sums of
@@ -188,6 +222,10 @@ class VehicleMap:
         Threads may share a VehicleMap: a RotorMap's scalar path keeps its output buffers per
         thread.
         """
+        if self._one_map is not None:
+            fast = self._step1(velocity, angular_velocity, rotor_omega, wind, out_of_grid)
+            if fast is not None:
+                return fast
         n_rot = len(self.vehicle.rotors)
         v = _samples("velocity", velocity, 3)
         w = _samples("angular_velocity", angular_velocity, 3)
