@@ -73,4 +73,3 @@ def plain_vector(value, n: int, *, int64: bool = False) -> np.ndarray | None:
         xs = [plain_float(x, int64=int64) for x in value]
         return None if any(x is None for x in xs) else np.array(xs)
     return None
-
