@@ -13,6 +13,7 @@ apce_8x6, the APC 8x6E of the UIUC Propeller Data Site, with its calibrated set)
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --derivatives [forward|axial|hover]
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --single   # ~1 min for 30 rounds
     taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --map   # ~1 min for 30 rounds
+    taskset -c 1 .venv/bin/python tools/ab_kernel.py OLD/src NEW/src [ROUNDS] --small   # ~2 min for 30 rounds
 
 ``--serial`` times the serial kernel that small batches run (solver.PARALLEL_MIN_POINTS
 raised above the batch) instead of the parallel one on one thread. ``--derivatives`` times
@@ -27,7 +28,11 @@ wrapper's cost, which the kernel's spread between processes hides. ``--map`` tim
 velocity array per round) on an 8 x 8 x 9 map of apce_8x6, linear and cubic with the paper's
 Table I set and cubic with flapping blades (a side table), after checking that both trees
 answer the same to the bit, and one step of the example quadrotor from that map
-(``VehicleMap.wrench``, 1,000 random steps, checked equal to 1e-13).
+(``VehicleMap.wrench``, 1,000 random steps, checked equal to 1e-13). ``--small`` times the
+array path of small batches, where the inputs' checks weigh: ``rotor_loads`` with four rates
+and a scalar airspeed and incidence (a quadrotor's rotors), with three 16-point arrays, and one
+step of the example quadrotor's ``vehicle_wrench`` (the paper's Table I set; 200 calls per
+tree and round), after checking that both trees' loads are equal.
 
 e.g. OLD a clone of the previous commit (``git worktree add /tmp/old HEAD~1``, then
 ``make env`` there); also prints each tree's residual evaluations per annulus.
@@ -149,6 +154,46 @@ def single_ab(trees: dict, rounds: int) -> None:
               f"{1e6 * np.median(bb - a):+.2f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
 
 
+def small_ab(trees: dict, rounds: int) -> None:
+    """The paired timing of small batches' calls (``--small``)."""
+    rng = np.random.default_rng(3)
+    om4 = np.array([800.0, 820.0, 790.0, 810.0])
+    om16, V16, b16 = rng.uniform(300, 1300, 16), rng.uniform(0, 20, 16), rng.uniform(0, 3.1, 16)
+    step = (np.array([3.0, 0.5, -0.2]), np.array([0.1, -0.2, 0.05]), om4)
+    calls = {}
+    for k, pm in trees.items():
+        use(pm)
+        from propmap.vehicle import read_vehicle, vehicle_wrench  # (this tree's)
+
+        prop, params = pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc")
+        veh = read_vehicle(Path(pm.__file__).parent / "data/examples/quadrotor.toml")
+        calls[k] = {"rotor_loads, 4 rates": (pm.rotor_loads, (prop, params, om4, 3.0, 1.0)),
+                    "rotor_loads, three 16-point arrays": (pm.rotor_loads, (prop, params, om16, V16, b16)),
+                    "vehicle_wrench, one step": (vehicle_wrench, (veh, params) + step)}
+    for label in calls["A"]:
+        got = {}
+        for k in trees:
+            use(trees[k])
+            f, a = calls[k][label]
+            got[k] = f(*a)
+        fields = ("thrust", "drag", "torque") if label.startswith("rotor_loads") else ("force", "moment")
+        if not all(np.array_equal(getattr(got["A"], q), getattr(got["B"], q)) for q in fields):
+            raise SystemExit(f"the trees answer {label} differently")
+        t = {"A": [], "B": []}
+        for i in range(rounds):
+            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+                use(trees[k])
+                f, a = calls[k][label]
+                t0 = time.process_time()
+                for _ in range(200):
+                    f(*a)
+                t[k].append((time.process_time() - t0) / 200)
+        a, b = np.array(t["A"]), np.array(t["B"])
+        q = np.percentile(b / a, [25, 50, 75])
+        print(f"{label}: A {1e6 * np.median(a):.1f} us, B {1e6 * np.median(b):.1f} us; B - A "
+              f"{1e6 * np.median(b - a):+.1f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+
+
 def map_ab(trees: dict, rounds: int) -> None:
     """The paired timing of RotorMap's scalar calls (``--map``)."""
     import math
@@ -214,7 +259,7 @@ def map_ab(trees: dict, rounds: int) -> None:
 
 
 def main() -> None:
-    flags = ("--serial", "--derivatives", "forward", "axial", "hover", "--single", "--map")
+    flags = ("--serial", "--derivatives", "forward", "axial", "hover", "--single", "--map", "--small")
     argv = [a for a in sys.argv[1:] if a not in flags]
     if len(argv) < 2:
         raise SystemExit(__doc__)
@@ -230,6 +275,9 @@ def main() -> None:
         return
     if "--map" in sys.argv:
         map_ab(trees, rounds)
+        return
+    if "--small" in sys.argv:
+        small_ab(trees, rounds)
         return
     rng = np.random.default_rng(5)
     n = 4000
