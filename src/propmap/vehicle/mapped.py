@@ -219,8 +219,12 @@ class VehicleMap:
 
         Notes
         -----
-        Threads may share a VehicleMap: a RotorMap's scalar path keeps its output buffers per
-        thread.
+        One step of plain numbers (``velocity`` and ``angular_velocity`` of shape (3,),
+        ``rotor_omega`` of shape (n_rotors,), arrays, lists or tuples) on a vehicle whose rotors
+        share one map is one compiled call (core._interp.vehicle_point; 14-17 us against 117-121
+        us for each rotor through its map, Intel Xeon, docs/simulators.md); the same sums to
+        1e-13. Threads may share a VehicleMap: a RotorMap's scalar path keeps its output buffers
+        per thread.
         """
         if self._one_map is not None:
             fast = self._step1(velocity, angular_velocity, rotor_omega, wind, out_of_grid)
