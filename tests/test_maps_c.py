@@ -302,7 +302,8 @@ def test_tiny_velocities_and_single_precision_pi_in_c_and_python(tmp_path):
     """A review, 2026-11-27: on a map whose airspeed axis starts above 0 (clipped there), a hub
     velocity below 1e-162 m/s had its speed and e_ip underflow: the C wrench took still air's
     incidence (Fz 0.8% off Python's) and both dropped the drag from the force (-Fx / D 0 instead of
-    1). Single precision's pi (8.7e-8 rad above pi) was outside the grid in C and RotorMap.loads."""
+    1). Single precision's pi (8.7e-8 rad above pi) was outside the grid in C and RotorMap.loads; so
+    was an airspeed an ulp beyond an end of the axis."""
     prop = pm.load_propeller("apce_8x6")
     params = pm.default_params("apce_8x6")
     rm = RotorMap(build_map(prop, params, np.array([5000.0, 8000.0]) * RPM, np.array([2.0, 8.0, 15.0]),
@@ -336,6 +337,19 @@ def test_tiny_velocities_and_single_precision_pi_in_c_and_python(tmp_path):
     for L in (rm.loads(600.0, 8.0, pi32), rm.loads(600.0, 8.0, np.float32(np.pi), out_of_grid="clip"),
               rm.loads(np.array([600.0]), 8.0, np.deg2rad(np.array([180.0], dtype=np.float32)))):
         assert bool(np.all(L.inside)) and np.all(L.thrust == rm.loads(600.0, 8.0, math.pi).thrust)
+    # an airspeed an ulp beyond an end of the axis (|V| of a velocity, rounded: a mutation audit, 2026-11-28) is on
+    # it in C and in Python, under the raising policy too; a thousandth beyond is outside
+    for end, out in ((15.0, 15.0 * (1 + 1e-3)), (2.0, 2.0 * (1 - 1e-3))):
+        near = float(np.nextafter(end, out))
+        lines = "".join(f"600.0 {x!r} 1.0 2\n" for x in (near, end, out))
+        res = subprocess.run([str(tmp_path / "d")], input=lines, capture_output=True, text=True,
+                             check=True).stdout.splitlines()
+        c_near, c_end = (np.array(r.split(), dtype=float) for r in res[:2])
+        assert c_near[0] in (0, 1) and np.array_equal(c_near, c_end) and float(res[2].split()[0]) == -1
+        for L in (rm.loads(600.0, near, 1.0), rm.loads(np.array([600.0]), near, 1.0)):
+            assert bool(np.all(L.inside)) and np.all(L.thrust == rm.loads(600.0, end, 1.0).thrust)
+        with pytest.raises(ValueError, match="airspeed"):
+            rm.loads(600.0, out, 1.0)
 
 
 @pytest.mark.parametrize("dtype", ["float", "double"])

@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .core.units import RPM
-from .core._interp import snap_incidence, snap_incidence_scalar
+from .core._interp import snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
 from .core._plain import plain_float, plain_vector
 from .core.geometry import has_bool, refuse_masked
 from .io.inputs import short_path
@@ -300,7 +300,8 @@ class RotorMap:
             if np.isnan(a).any():
                 raise ValueError(f"{name} must not be NaN")
         # an incidence within INCIDENCE_SNAP of an end of the axis is on it (float32's pi)
-        q = [q[0], q[1], snap_incidence(q[2], self._box[4], self._box[5])]
+        # and an airspeed within AIRSPEED_SNAP of an end (|V| from a velocity, rounded either way)
+        q = [q[0], snap_airspeed(q[1], self._box[2], self._box[3]), snap_incidence(q[2], self._box[4], self._box[5])]
         if (q[0] < 0).any():
             raise ValueError(f"omega must be >= 0 rad/s, the rotation rate's magnitude (the sense is the spin), got "
                              f"{float(q[0][q[0] < 0].reshape(-1)[0])!r}")
@@ -430,6 +431,8 @@ class RotorMap:
         o0, o1, v0, v1, b0, b1 = self._box
         if not b0 <= incidence <= b1:  # within INCIDENCE_SNAP of an end: on it (float32's pi)
             incidence = snap_incidence_scalar(incidence, b0, b1)
+        if not v0 <= airspeed <= v1:  # within AIRSPEED_SNAP of an end: on it
+            airspeed = snap_airspeed_scalar(airspeed, v0, v1)
         inside = o0 <= omega <= o1 and v0 <= airspeed <= v1 and (
             b0 <= incidence <= b1 or (airspeed <= self._hover_speed and v0 == 0.0 and incidence == incidence))
         if not inside and (out_of_grid not in ("clip", "nan") or math.isnan(omega) or math.isnan(airspeed)

@@ -293,6 +293,62 @@ def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float
 #: :func:`snap_incidence_scalar` compiled for the kernels (one rule, one body)
 snap_edge = numba.njit(forceinline=True, **_FLAGS)(snap_incidence_scalar)
 
+#: an airspeed within this fraction of an end of the grid's airspeed axis is on it: a hub's speed |V|
+#: from its velocity rounds differently on the one-point paths (the root of the squares) and the
+#: array path (the largest component times the scaled vector's norm), by an ulp or two, and that may
+#: not decide between "inside" and "outside" (a mutation audit, 2026-11-28: of 2,000 velocities of
+#: |V| = 12 m/s, 511 were outside a 0-12 m/s map on the one-point path and 449 on the array path,
+#: NaN loads under "nan" on one and finite on the other); the C header's loads take the same rule
+AIRSPEED_SNAP = 1e-12
+
+
+def snap_airspeed_scalar(x: float, lo: float, hi: float) -> float:
+    """``lo`` or ``hi`` where the airspeed ``x`` [m/s] lies outside [lo, hi] by at most
+    AIRSPEED_SNAP of that end, else ``x`` (the one-point paths; NaN kept).
+
+    Parameters
+    ----------
+    x : float
+    lo, hi : float
+        A map's airspeed axis' ends [m/s], 0 <= lo < hi.
+
+    Returns
+    -------
+    float
+    """
+    if hi < x <= hi * (1.0 + AIRSPEED_SNAP):
+        return hi
+    if lo * (1.0 - AIRSPEED_SNAP) <= x < lo:
+        return lo
+    return x
+
+
+def snap_airspeed(a, lo: float, hi: float):
+    """:func:`snap_airspeed_scalar` for a float array (a new array where any value moves: the
+    caller's is never written; NaN kept).
+
+    Parameters
+    ----------
+    a : ndarray of float
+        Airspeeds [m/s], any shape.
+    lo, hi : float
+        The axis' ends [m/s].
+
+    Returns
+    -------
+    ndarray
+        Shape of ``a``; ``a`` itself where nothing moves.
+    """
+    high = (a > hi) & (a <= hi * (1.0 + AIRSPEED_SNAP))  # (NaN compares False: no warning)
+    low = (a < lo) & (a >= lo * (1.0 - AIRSPEED_SNAP))
+    if not (high.any() or low.any()):
+        return a
+    return np.where(high, hi, np.where(low, lo, a))
+
+
+#: :func:`snap_airspeed_scalar` compiled for the kernels
+snap_speed = numba.njit(forceinline=True, **_FLAGS)(snap_airspeed_scalar)
+
 
 #: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
 #: or underflow, and 1 / its largest component overflow under fastmath's reciprocal ("arcp")
@@ -392,14 +448,15 @@ def _rotor(ax0, ax1, ax2, tables, cellflag, radius, order, policy, strict, vx, v
     if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
         return 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
-    beta = hover_incidence(ax1, ax2, speed, snap_edge(beta, ax2[0], ax2[-1]))
-    if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= speed <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
+    q1 = snap_speed(speed, ax1[0], ax1[-1])  # (the lookup's airspeed; the vectors take |V| as computed)
+    beta = hover_incidence(ax1, ax2, q1, snap_edge(beta, ax2[0], ax2[-1]))
+    if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= q1 <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, speed, beta, policy, order, res, 0, res[2], res[3])
+    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, q1, beta, policy, order, res, 0, res[2], res[3])
     Y = 0.0
     P = 0.0
     if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
-        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, speed, beta, policy, order, res, 1, res[2], res[3])
+        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, q1, beta, policy, order, res, 1, res[2], res[3])
         Y = res[1, 0]
         P = res[1, 1]
     fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, res[0, 0], res[0, 1], res[0, 2],
