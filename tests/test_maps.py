@@ -12,17 +12,6 @@ from propmap.maps import FLAGS, RotorMap, build_map, check_map, default_axes, wr
 from .conftest import RPM
 
 
-@pytest.fixture(scope="module")
-def small_map():
-    """apce_8x6, calibrated parameters, a coarse grid (5 x 6 x 13), 300 check points."""
-    prop = pm.load_propeller("apce_8x6")
-    params = pm.default_params("apce_8x6")
-    air, label = params.air, params.label
-    ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6),
-                   np.radians(np.linspace(0, 180, 13)), air=air, params_label=label, n_check=300)
-    return prop, params, ds
-
-
 def test_map_values_equal_the_model_at_the_nodes(small_map):
     prop, params, ds = small_map
     rm = RotorMap(ds)
@@ -435,16 +424,6 @@ def test_sets_with_a_side_force_are_named_and_warned_about_by_the_exports():
     assert abs(float(r.side_force)) > 0.1 * float(r.drag)  # what the coefficients leave out
     with pytest.warns(UserWarning, match=r"\(the dynamic stall\); the rotorpy model has no term"):
         export_sim("rotorpy", prop, ds, n_points=50)
-
-
-@pytest.fixture(scope="module")
-def flapping_map():
-    """apce_8x6, the generic set with flapping blades (a side force and a pitching moment), 4 x 4 x 7."""
-    prop = pm.load_propeller("apce_8x6")
-    params = pm.generic_params().replace(flap_compliance=2.0)
-    ds = build_map(prop, params, np.linspace(5000, 8000, 4) * RPM, np.linspace(0, 12, 4),
-                   np.radians(np.linspace(0, 180, 7)), n_check=100)
-    return prop, params, ds
 
 
 def test_a_map_holds_the_side_force_and_pitching_moment_where_the_set_makes_them(flapping_map, small_map, tmp_path):

@@ -18,27 +18,6 @@ from propmap.maps import RotorMap, build_map
 from .conftest import RPM
 
 
-@pytest.fixture(scope="module")
-def small_map():
-    """apce_8x6, calibrated parameters, a coarse grid (5 x 6 x 13), 300 check points."""
-    prop = pm.load_propeller("apce_8x6")
-    params = pm.default_params("apce_8x6")
-    air, label = params.air, params.label
-    ds = build_map(prop, params, np.linspace(4000, 9000, 5) * RPM, np.linspace(0, 15, 6),
-                   np.radians(np.linspace(0, 180, 13)), air=air, params_label=label, n_check=300)
-    return prop, params, ds
-
-
-@pytest.fixture(scope="module")
-def flapping_map():
-    """apce_8x6, the generic set with flapping blades (a side force and a pitching moment), 4 x 4 x 7."""
-    prop = pm.load_propeller("apce_8x6")
-    params = pm.generic_params().replace(flap_compliance=2.0)
-    ds = build_map(prop, params, np.linspace(5000, 8000, 4) * RPM, np.linspace(0, 12, 4),
-                   np.radians(np.linspace(0, 180, 7)), n_check=100)
-    return prop, params, ds
-
-
 def _same(a, b):
     """Equal, NaN equal to NaN."""
     a, b = np.asarray(a, float), np.asarray(b, float)

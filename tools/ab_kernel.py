@@ -85,6 +85,17 @@ def use(pm) -> None:
     sys.modules.update(pm._ab_modules)
 
 
+def alternated(trees: dict, rounds: int, run) -> dict:
+    """``run(k)`` for tree k in each of ``rounds`` rounds, the trees' order alternated round by round,
+    each tree's modules in ``sys.modules`` while it runs: {"A": [results], "B": [results]}."""
+    t = {"A": [], "B": []}
+    for i in range(rounds):
+        for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
+            use(trees[k])
+            t[k].append(run(k))
+    return t
+
+
 #: the cambered fit's parameters with Reynolds terms (benchmarks/bench_derivatives.py's)
 PARAMS = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re")
 
@@ -137,17 +148,17 @@ def single_ab(trees: dict, rounds: int) -> None:
             args[k] = (pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc") if label == "paper" else
                        pm.generic_params())
             pm.rotor_loads(*args[k], om, V, b)
-        t = {"A": [], "B": []}
-        for i in range(rounds):
-            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
-                use(trees[k])
-                f, a = trees[k].rotor_loads, args[k]
-                calls = []
-                for _ in range(200):
-                    t0 = time.perf_counter()
-                    f(*a, om, V, b)
-                    calls.append(time.perf_counter() - t0)
-                t[k].append(np.median(calls))
+
+        def run(k):
+            f, a = trees[k].rotor_loads, args[k]
+            calls = []
+            for _ in range(200):
+                t0 = time.perf_counter()
+                f(*a, om, V, b)
+                calls.append(time.perf_counter() - t0)
+            return np.median(calls)
+
+        t = alternated(trees, rounds, run)
         a, bb = np.array(t["A"]), np.array(t["B"])
         q = np.percentile(bb / a, [25, 50, 75])
         print(f"one call, {label} set: A {1e6 * np.median(a):.2f} us, B {1e6 * np.median(bb):.2f} us; B - A "
@@ -179,15 +190,15 @@ def small_ab(trees: dict, rounds: int) -> None:
         fields = ("thrust", "drag", "torque") if label.startswith("rotor_loads") else ("force", "moment")
         if not all(np.array_equal(getattr(got["A"], q), getattr(got["B"], q)) for q in fields):
             raise SystemExit(f"the trees answer {label} differently")
-        t = {"A": [], "B": []}
-        for i in range(rounds):
-            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
-                use(trees[k])
-                f, a = calls[k][label]
-                t0 = time.process_time()
-                for _ in range(200):
-                    f(*a)
-                t[k].append((time.process_time() - t0) / 200)
+
+        def run(k):
+            f, a = calls[k][label]
+            t0 = time.process_time()
+            for _ in range(200):
+                f(*a)
+            return (time.process_time() - t0) / 200
+
+        t = alternated(trees, rounds, run)
         a, b = np.array(t["A"]), np.array(t["B"])
         q = np.percentile(b / a, [25, 50, 75])
         print(f"{label}: A {1e6 * np.median(a):.1f} us, B {1e6 * np.median(b):.1f} us; B - A "
@@ -245,11 +256,7 @@ def map_ab(trees: dict, rounds: int) -> None:
                 vm.wrench(*s, out_of_grid="clip")
             return (t1 - t0) / n, (t2 - t1) / n, (time.perf_counter() - t2) / n
 
-        t = {"A": [], "B": []}
-        for i in range(rounds + 1):
-            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
-                use(trees[k])
-                t[k].append(run(maps[k], vehicles[k]))
+        t = alternated(trees, rounds + 1, lambda k: run(maps[k], vehicles[k]))
         a, b = np.array(t["A"][1:]), np.array(t["B"][1:])  # (the first round warms)
         for j, call in enumerate(("loads", "wrench", "vehicle step")):
             q = np.percentile(b[:, j] / a[:, j], [25, 50, 75])
@@ -290,13 +297,12 @@ def main() -> None:
         r = pm.rotor_loads(*args[k], om, V, inc)
         print(f"{k}: {pm.__file__}; {r.n_evaluations.mean() / r.r.size:.3f} residual evaluations per annulus")
     for label, beta in (("forward flight", inc), ("axial", 0.0 * inc)):
-        t = {"A": [], "B": []}
-        for i in range(rounds):
-            for k in ("A", "B") if i % 2 == 0 else ("B", "A"):
-                use(trees[k])
-                t0 = time.process_time()
-                trees[k].rotor_loads(*args[k], om, V, beta)
-                t[k].append(time.process_time() - t0)
+        def run(k):
+            t0 = time.process_time()
+            trees[k].rotor_loads(*args[k], om, V, beta)
+            return time.process_time() - t0
+
+        t = alternated(trees, rounds, run)
         a, b = np.array(t["A"]), np.array(t["B"])
         q = np.percentile(b / a, [25, 50, 75])
         print(f"{label}: A {1e6 * np.median(a) / n:.2f}, B {1e6 * np.median(b) / n:.2f} us per point; B / A paired "
