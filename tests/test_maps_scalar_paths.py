@@ -407,3 +407,17 @@ def test_rotor_wrench_takes_a_speed_of_exactly_its_airspeed_limit():
         assert float(one.loads.airspeed) == 500.0 and np.isfinite(arr.force).all()
     with pytest.raises(ValueError, match="velocity: the rotor's airspeed .* at most 500"):
         pm.rotor_wrench(prop, params, [0.0, 0.0, np.nextafter(500.0, 600.0)], [0.0, 0.0, 1.0], 800.0)
+
+
+def test_a_map_pickled_before_its_tables_were_packed_is_built_again(flapping_map):
+    """A RotorMap pickled before 2026-11-28 (separate tables, no packed grid) loads by being built
+    again from its dataset (it failed with AttributeError '_tables'; a review)."""
+    rm = RotorMap(flapping_map[2])
+    state = rm.__getstate__()
+    for k in ("_tables", "_grid"):
+        del state[k]
+    state["_table"], state["_side_table"] = rm._table.copy(), rm._side_table.copy()  # (the old layout's fields)
+    old = RotorMap.__new__(RotorMap)
+    old.__setstate__(state)
+    assert old.side_loads and np.shares_memory(old._table, old._tables)
+    assert tuple(old.loads(600.0, 5.0, 1.0)) == tuple(rm.loads(600.0, 5.0, 1.0))

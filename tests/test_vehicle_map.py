@@ -200,3 +200,55 @@ def test_one_compiled_step_carries_the_side_force_and_pitching_moment(setup):
     side = rm.wrench(v[0] + np.cross(w[0], one._pos[0]), one._axes[0], om[0, 0], one._spin_list[0],
                      out_of_grid="clip").loads
     assert abs(side.side_force) > 1e-3
+
+
+def test_a_nan_in_any_component_is_refused_on_the_one_step_paths(setup):
+    """numba's max() drops a NaN that is not its first argument: a NaN in the y or z component of
+    the velocity, the wind or a rotor's axis passed the compiled paths' finiteness check, and
+    VehicleMap.wrench (and RotorMap.wrench for one rotor) returned NaN vectors under "clip" where
+    the array path refuses the input (a review, 2026-11-28). Each component, each path."""
+    veh, params, rm = setup
+    vm = VehicleMap(veh, rm)
+    om = np.full(4, 700.0)
+    for k in range(3):
+        bad = [0.0, 0.0, 0.0]
+        bad[k] = math.nan
+        for policy in ("clip", "nan"):
+            with pytest.raises(ValueError, match="velocity must be finite"):
+                vm.wrench(bad, [0.0, 0.0, 0.0], om, out_of_grid=policy)
+            with pytest.raises(ValueError, match="wind must be finite"):
+                vm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], om, wind=bad, out_of_grid=policy)
+            with pytest.raises(ValueError, match="angular_velocity must be finite"):
+                vm.wrench([0.0, 0.0, 0.0], bad, om, out_of_grid=policy)
+            with pytest.raises(ValueError, match="velocity must be finite"):
+                rm.wrench(bad, [0.0, 0.0, 1.0], 700.0, "ccw", out_of_grid=policy)
+            axis = [0.0, 0.0, 1.0]
+            axis[k] = math.nan
+            with pytest.raises(ValueError, match="axis must be finite"):
+                rm.wrench([1.0, 0.0, 0.0], axis, 700.0, "ccw", out_of_grid=policy)
+
+
+def test_a_map_whose_wrench_is_overridden_is_called_rotor_by_rotor(setup):
+    """The maps are duck-typed by their wrench: a RotorMap subclass (or an instance) with its own
+    wrench is called for each rotor, not bypassed by the compiled one-step path (a review,
+    2026-11-28: a subclass halving the vectors gave the unhalved sum)."""
+    import copy
+
+    veh, params, rm = setup
+
+    class Halved(RotorMap):
+        def wrench(self, *args, **kwargs):
+            w = super().wrench(*args, **kwargs)
+            return type(w)(w.force / 2, w.torque / 2, w.loads)
+
+    half = Halved(rm.dataset, rm.interpolation)
+    patched = RotorMap(rm.dataset, rm.interpolation)
+    patched.wrench = half.wrench  # (an instance's own wrench)
+    v, w, om = np.array([3.0, 0.5, -0.2]), np.array([0.1, -0.2, 0.05]), np.full(4, 700.0)
+    by_rotor = VehicleMap(veh, [copy.copy(half) for _ in range(4)]).wrench(v, w, om)  # (four maps: per rotor)
+    whole = VehicleMap(veh, rm).wrench(v, w, om)
+    assert abs(by_rotor.force[0, 2] - whole.force[0, 2]) > 0.3 * abs(whole.force[0, 2])  # (the halving shows)
+    for m in (half, patched):
+        got = VehicleMap(veh, m).wrench(v, w, om)
+        np.testing.assert_allclose(got.force, by_rotor.force, rtol=1e-13, atol=1e-13)
+        np.testing.assert_allclose(got.moment, by_rotor.moment, rtol=1e-13, atol=1e-13)

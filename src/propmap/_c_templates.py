@@ -135,8 +135,8 @@ static inline int {prefix}_loads(double omega, double airspeed, double incidence
     if (incidence > a2[{n2} - 1] && incidence <= a2[{n2} - 1] + 2.5e-7) incidence = a2[{n2} - 1];
     else if (incidence < a2[0] && incidence >= a2[0] - 2.5e-7) incidence = a2[0];
     /* an airspeed within 1e-12 of an end of the axis is on it: a hub's |V| rounds by an ulp or two */
-    if (airspeed > a1[{n1} - 1] && airspeed <= a1[{n1} - 1] * (1.0 + 1e-12)) airspeed = a1[{n1} - 1];
-    else if (airspeed < a1[0] && airspeed >= a1[0] * (1.0 - 1e-12)) airspeed = a1[0];
+    if (airspeed > a1[{n1} - 1] && airspeed <= a1[{n1} - 1] + a1[{n1} - 1] * 1e-12) airspeed = a1[{n1} - 1];
+    else if (airspeed < a1[0] && airspeed >= a1[0] - a1[0] * 1e-12) airspeed = a1[0];
     if (airspeed <= 1e-6 && a1[0] == 0.0)  /* still air (up to 1e-6 m/s): any incidence is on the incidence axis */
         incidence = incidence < a2[0] ? a2[0] : (incidence > a2[{n2} - 1] ? a2[{n2} - 1] : incidence);
     inside = a0[0] <= omega && omega <= a0[{n0} - 1] && a1[0] <= airspeed && airspeed <= a1[{n1} - 1]

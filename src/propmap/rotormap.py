@@ -235,6 +235,9 @@ class RotorMap:
         return state
 
     def __setstate__(self, state: dict) -> None:
+        if "_tables" not in state:  # pickled before 2026-11-28 (the tables apart): built again from its dataset
+            self.__init__(state["dataset"], state["interpolation"])
+            return
         self.__dict__.update(state)
         self._views()
         self._buffers = _Buffers()
@@ -451,8 +454,11 @@ class RotorMap:
 
     def _packed(self, out_of_grid):
         """(grid, tables, cellflag, res) of the compiled one-point kernels (core._interp) under the
-        policy ``out_of_grid``, ``res`` this thread's; None for an unknown policy (VehicleMap's
-        one-step path, which then takes its general path)."""
+        policy ``out_of_grid``, ``res`` this thread's; None for an unknown policy or where this
+        map's ``wrench`` is not RotorMap's own (a subclass's or an instance's: VehicleMap's
+        one-step path then calls it rotor by rotor, as it always did; a review)."""
+        if type(self).wrench is not RotorMap.wrench or "wrench" in self.__dict__:
+            return None
         grid = self._grid.get(out_of_grid) if isinstance(out_of_grid, str) else None
         return None if grid is None else (grid, self._tables, self._cellflag, self._buffers.res)
 

@@ -229,6 +229,12 @@ def interp_point(grid, tables, cellflag, q0, q1, q2, res):
     loads' table and the side table (Y, M_P, 0, 0) where the map holds one; res, shape (4, >= 4).
     """
     ax0, ax1, ax2, radius, order, policy, _ = _unpack(grid)
+    _lookup(ax0, ax1, ax2, tables, cellflag, radius, q0, q1, q2, policy, order, res)
+
+
+@numba.njit(forceinline=True, **_FLAGS)
+def _lookup(ax0, ax1, ax2, tables, cellflag, radius, q0, q1, q2, policy, order, res):
+    """One query into ``res`` from both tables (:func:`interp_point`'s layout)."""
     _one(ax0, ax1, ax2, tables[0], cellflag, radius, q0, q1, q2, policy, order, res, 0, res[2], res[3])
     if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
         _one(ax0, ax1, ax2, tables[1], cellflag, radius, q0, q1, q2, policy, order, res, 1, res[2], res[3])
@@ -244,55 +250,6 @@ def interp_point(grid, tables, cellflag, q0, q1, q2, res):
 INCIDENCE_SNAP = 2.5e-7
 
 
-def snap_incidence(a, lo=0.0, hi=np.pi):
-    """The float array ``a`` with values outside [lo, hi] by at most INCIDENCE_SNAP moved onto
-    the end (a new array where any moves: the caller's is never written; NaN kept).
-
-    Parameters
-    ----------
-    a : ndarray of float
-        Incidences [rad], any shape.
-    lo, hi : float
-        The ends [rad]: 0 and pi, or a map's incidence axis.
-
-    Returns
-    -------
-    ndarray
-        Shape of ``a``; ``a`` itself where nothing moves.
-    """
-    with np.errstate(invalid="ignore"):
-        high = (a > hi) & (a <= hi + INCIDENCE_SNAP)
-        low = (a < lo) & (a >= lo - INCIDENCE_SNAP)
-    if not (high.any() or low.any()):
-        return a
-    return np.where(high, hi, np.where(low, lo, a))
-
-
-def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float:
-    """:func:`snap_incidence` for one Python float (the one-point paths: no arrays built).
-
-    Parameters
-    ----------
-    x : float
-        Incidence [rad].
-    lo, hi : float
-        The ends [rad].
-
-    Returns
-    -------
-    float
-        ``lo`` or ``hi`` where ``x`` lies outside by at most INCIDENCE_SNAP, else ``x``.
-    """
-    if hi < x <= hi + INCIDENCE_SNAP:
-        return hi
-    if lo - INCIDENCE_SNAP <= x < lo:
-        return lo
-    return x
-
-
-#: :func:`snap_incidence_scalar` compiled for the kernels (one rule, one body)
-snap_edge = numba.njit(forceinline=True, **_FLAGS)(snap_incidence_scalar)
-
 #: an airspeed within this fraction of an end of the grid's airspeed axis is on it: a hub's speed |V|
 #: from its velocity rounds differently on the one-point paths (the root of the squares) and the
 #: array path (the largest component times the scaled vector's norm), by an ulp or two, and that may
@@ -302,52 +259,77 @@ snap_edge = numba.njit(forceinline=True, **_FLAGS)(snap_incidence_scalar)
 AIRSPEED_SNAP = 1e-12
 
 
-def snap_airspeed_scalar(x: float, lo: float, hi: float) -> float:
-    """``lo`` or ``hi`` where the airspeed ``x`` [m/s] lies outside [lo, hi] by at most
-    AIRSPEED_SNAP of that end, else ``x`` (the one-point paths; NaN kept).
-
-    Parameters
-    ----------
-    x : float
-    lo, hi : float
-        A map's airspeed axis' ends [m/s], 0 <= lo < hi.
-
-    Returns
-    -------
-    float
-    """
-    if hi < x <= hi * (1.0 + AIRSPEED_SNAP):
-        return hi
-    if lo * (1.0 - AIRSPEED_SNAP) <= x < lo:
-        return lo
-    return x
-
-
-def snap_airspeed(a, lo: float, hi: float):
-    """:func:`snap_airspeed_scalar` for a float array (a new array where any value moves: the
-    caller's is never written; NaN kept).
+def snap_ends(a, lo: float, hi: float, below: float, above: float):
+    """The float array ``a`` with values in [lo - below, lo) moved onto ``lo`` and in (hi, hi +
+    above] onto ``hi`` (a new array where any moves: the caller's is never written; NaN kept).
 
     Parameters
     ----------
     a : ndarray of float
-        Airspeeds [m/s], any shape.
+        Any shape.
     lo, hi : float
-        The axis' ends [m/s].
+        An axis' ends.
+    below, above : float
+        How far beyond each end a value is on it (>= 0).
 
     Returns
     -------
     ndarray
         Shape of ``a``; ``a`` itself where nothing moves.
     """
-    high = (a > hi) & (a <= hi * (1.0 + AIRSPEED_SNAP))  # (NaN compares False: no warning)
-    low = (a < lo) & (a >= lo * (1.0 - AIRSPEED_SNAP))
+    with np.errstate(invalid="ignore"):  # (NaN compares False)
+        high = (a > hi) & (a <= hi + above)
+        low = (a < lo) & (a >= lo - below)
     if not (high.any() or low.any()):
         return a
     return np.where(high, hi, np.where(low, lo, a))
 
 
-#: :func:`snap_airspeed_scalar` compiled for the kernels
-snap_speed = numba.njit(forceinline=True, **_FLAGS)(snap_airspeed_scalar)
+def snap_ends_scalar(x: float, lo: float, hi: float, below: float, above: float) -> float:
+    """:func:`snap_ends` for one float (the one-point paths: no arrays built; compiled for the
+    kernels as :func:`snap_edge` and :func:`snap_speed`)."""
+    if hi < x <= hi + above:
+        return hi
+    if lo - below <= x < lo:
+        return lo
+    return x
+
+
+def snap_incidence(a, lo=0.0, hi=np.pi):
+    """Incidences [rad] within INCIDENCE_SNAP beyond [lo, hi] (0 and pi, or a map's axis) on the
+    end: :func:`snap_ends` (a new array where any moves; ``a`` itself where none does)."""
+    return snap_ends(a, lo, hi, INCIDENCE_SNAP, INCIDENCE_SNAP)
+
+
+def snap_incidence_scalar(x: float, lo: float = 0.0, hi: float = np.pi) -> float:
+    """:func:`snap_incidence` for one float [rad]."""
+    return snap_ends_scalar(x, lo, hi, INCIDENCE_SNAP, INCIDENCE_SNAP)
+
+
+def snap_airspeed(a, lo: float, hi: float):
+    """Airspeeds [m/s] within AIRSPEED_SNAP (relative) beyond a map's airspeed axis [lo, hi] on
+    the end: :func:`snap_ends` (a new array where any moves; ``a`` itself where none does)."""
+    return snap_ends(a, lo, hi, lo * AIRSPEED_SNAP, hi * AIRSPEED_SNAP)
+
+
+def snap_airspeed_scalar(x: float, lo: float, hi: float) -> float:
+    """:func:`snap_airspeed` for one float [m/s]."""
+    return snap_ends_scalar(x, lo, hi, lo * AIRSPEED_SNAP, hi * AIRSPEED_SNAP)
+
+
+_snap_ends_compiled = numba.njit(forceinline=True, **_FLAGS)(snap_ends_scalar)
+
+
+@numba.njit(forceinline=True, **_FLAGS)
+def snap_edge(x, lo, hi):
+    """:func:`snap_incidence_scalar`, compiled for the kernels (one rule, one body)."""
+    return _snap_ends_compiled(x, lo, hi, INCIDENCE_SNAP, INCIDENCE_SNAP)
+
+
+@numba.njit(forceinline=True, **_FLAGS)
+def snap_speed(x, lo, hi):
+    """:func:`snap_airspeed_scalar`, compiled for the kernels."""
+    return _snap_ends_compiled(x, lo, hi, lo * AIRSPEED_SNAP, hi * AIRSPEED_SNAP)
 
 
 #: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
@@ -443,20 +425,22 @@ def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
 def _rotor(ax0, ax1, ax2, tables, cellflag, radius, order, policy, strict, vx, vy, vz, a0, a1, a2, omega, spin, res):
     """One rotor's (status, Fx, Fy, Fz, Mx, My, Mz) at hub velocity (vx, vy, vz), axis (a0, a1, a2),
     rate ``omega`` and ``spin``: :func:`wrench_point`'s arithmetic (status and ``res`` as there)."""
+    if not (np.isfinite(vx) and np.isfinite(vy) and np.isfinite(vz) and np.isfinite(a0) and np.isfinite(a1)
+            and np.isfinite(a2)):  # (one by one: numba's max drops a NaN that is not its first argument; a review)
+        return 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     amax = max(abs(a0), abs(a1), abs(a2))
     vmax = max(abs(vx), abs(vy), abs(vz))
-    if not (amax > 0.0 and amax < np.inf and vmax < 1e150 and omega >= 0.0):  # NaN fails every comparison
+    if not (amax > 0.0 and vmax < 1e150 and omega >= 0.0):  # (a NaN rate fails the comparison)
         return 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     zx, zy, zz, speed, axial, beta = point_frame(vx, vy, vz, a0, a1, a2)
     q1 = snap_speed(speed, ax1[0], ax1[-1])  # (the lookup's airspeed; the vectors take |V| as computed)
     beta = hover_incidence(ax1, ax2, q1, snap_edge(beta, ax2[0], ax2[-1]))
     if strict and not (ax0[0] <= omega <= ax0[-1] and ax1[0] <= q1 <= ax1[-1] and ax2[0] <= beta <= ax2[-1]):
         return 2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    _one(ax0, ax1, ax2, tables[0], cellflag, radius, omega, q1, beta, policy, order, res, 0, res[2], res[3])
+    _lookup(ax0, ax1, ax2, tables, cellflag, radius, omega, q1, beta, policy, order, res)
     Y = 0.0
     P = 0.0
-    if tables.shape[0] > 1:  # the same query in the side table (the same inside and flagged)
-        _one(ax0, ax1, ax2, tables[1], cellflag, radius, omega, q1, beta, policy, order, res, 1, res[2], res[3])
+    if tables.shape[0] > 1:
         Y = res[1, 0]
         P = res[1, 1]
     fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, res[0, 0], res[0, 1], res[0, 2],
@@ -527,7 +511,10 @@ def vehicle_point(grid, tables, cellflag, rotors, reach, air_velocity, angular_v
     wx = angular_velocity[0]
     wy = angular_velocity[1]
     wz = angular_velocity[2]
-    if not max(abs(vx), abs(vy), abs(vz)) + max(abs(wx), abs(wy), abs(wz)) * reach < 1e150:  # (NaN too)
+    if not (np.isfinite(vx) and np.isfinite(vy) and np.isfinite(vz) and np.isfinite(wx) and np.isfinite(wy)
+            and np.isfinite(wz)):  # (one by one: numba's max drops a NaN that is not its first argument)
+        return 1
+    if not max(abs(vx), abs(vy), abs(vz)) + max(abs(wx), abs(wy), abs(wz)) * reach < 1e150:
         return 1
     F0 = 0.0
     F1 = 0.0
