@@ -1,8 +1,11 @@
 """RotorMap's one-point paths against its array path, and core/_interp.py's edges: behaviours a
 mutation audit of the maps' paths found unpinned (2026-11-28, a helper session: 79 mutants of
 rotormap.py, core/_interp.py, core/_plain.py and core/vector.py, 31 missed by the suite of then,
-3 equivalent). Each test names the audit's mutants it kills (R: rotormap, I: _interp, P: _plain,
-V: vector)."""
+3 of them equivalent: R32, "raise" handed the NaN policy, which sees only queries inside the
+grid or in still air, which the kernel moves inside; I28, the still-air rule without its airspeed
+axis starting at 0, where a speed below the axis is outside and clipped anyway; P01, np.bool_
+dropped from plain_float's exclusion, which is neither np.integer nor np.floating). Each test
+names the audit's mutants it kills (R: rotormap, I: _interp, P: _plain, V: vector)."""
 
 import copy
 import math
