@@ -96,6 +96,15 @@ def alternated(trees: dict, rounds: int, run) -> dict:
     return t
 
 
+def report(label: str, a, b, unit: str = "us", scale: float = 1e6) -> None:
+    """Print tree A's and B's median times (``a``, ``b`` [s] per round, times ``scale`` in ``unit``), the
+    median paired difference and the median and quartiles of the paired ratio B / A."""
+    a, b = np.asarray(a), np.asarray(b)
+    q = np.percentile(b / a, [25, 50, 75])
+    print(f"{label}: A {scale * np.median(a):.2f} {unit}, B {scale * np.median(b):.2f} {unit}; B - A "
+          f"{scale * np.median(b - a):+.2f} {unit}; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+
+
 #: the cambered fit's parameters with Reynolds terms (benchmarks/bench_derivatives.py's)
 PARAMS = ("cl_alpha", "alpha_L0", "cl_max", "cd_min", "cd2", "re_exp_lift", "re_exp", "alpha_L0_re")
 
@@ -159,10 +168,7 @@ def single_ab(trees: dict, rounds: int) -> None:
             return np.median(calls)
 
         t = alternated(trees, rounds, run)
-        a, bb = np.array(t["A"]), np.array(t["B"])
-        q = np.percentile(bb / a, [25, 50, 75])
-        print(f"one call, {label} set: A {1e6 * np.median(a):.2f} us, B {1e6 * np.median(bb):.2f} us; B - A "
-              f"{1e6 * np.median(bb - a):+.2f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+        report(f"one call, {label} set", t["A"], t["B"])
 
 
 def small_ab(trees: dict, rounds: int) -> None:
@@ -199,10 +205,7 @@ def small_ab(trees: dict, rounds: int) -> None:
             return (time.process_time() - t0) / 200
 
         t = alternated(trees, rounds, run)
-        a, b = np.array(t["A"]), np.array(t["B"])
-        q = np.percentile(b / a, [25, 50, 75])
-        print(f"{label}: A {1e6 * np.median(a):.1f} us, B {1e6 * np.median(b):.1f} us; B - A "
-              f"{1e6 * np.median(b - a):+.1f} us; B / A paired median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+        report(label, t["A"], t["B"])
 
 
 def map_ab(trees: dict, rounds: int) -> None:
@@ -259,10 +262,7 @@ def map_ab(trees: dict, rounds: int) -> None:
         t = alternated(trees, rounds + 1, lambda k: run(maps[k], vehicles[k]))
         a, b = np.array(t["A"][1:]), np.array(t["B"][1:])  # (the first round warms)
         for j, call in enumerate(("loads", "wrench", "vehicle step")):
-            q = np.percentile(b[:, j] / a[:, j], [25, 50, 75])
-            print(f"{interp}, {label} set, {call}: A {1e6 * np.median(a[:, j]):.2f} us, B "
-                  f"{1e6 * np.median(b[:, j]):.2f} us; B / A paired median {q[1]:.3f} "
-                  f"(quartiles {q[0]:.3f}-{q[2]:.3f})")
+            report(f"{interp}, {label} set, {call}", a[:, j], b[:, j])
 
 
 def main() -> None:
@@ -303,10 +303,7 @@ def main() -> None:
             return time.process_time() - t0
 
         t = alternated(trees, rounds, run)
-        a, b = np.array(t["A"]), np.array(t["B"])
-        q = np.percentile(b / a, [25, 50, 75])
-        print(f"{label}: A {1e6 * np.median(a) / n:.2f}, B {1e6 * np.median(b) / n:.2f} us per point; B / A paired "
-              f"median {q[1]:.3f} (quartiles {q[0]:.3f}-{q[2]:.3f})")
+        report(label, t["A"], t["B"], "us per point", 1e6 / n)
 
 
 if __name__ == "__main__":
