@@ -424,3 +424,53 @@ def test_a_map_pickled_before_its_tables_were_packed_is_built_again(flapping_map
     old.__setstate__(state)
     assert old.side_loads and np.shares_memory(old._table, old._tables)
     assert tuple(old.loads(600.0, 5.0, 1.0)) == tuple(rm.loads(600.0, 5.0, 1.0))
+
+
+def test_read_only_and_strided_queries_compile_nothing_more(small_map):
+    """A read-only or strided float64 query is another type to numba: RotorMap.loads' array path (a
+    read-only omega, which the query checks pass on unchanged), its one-point wrench and a vehicle step
+    compiled their kernels once more for it (0.5-1.6 s in a simulator's step; a review, 2026-11-28).
+    They now get contiguous, writeable copies: no new compiled signature, the same answers, the caller's
+    arrays untouched."""
+    from pathlib import Path
+
+    import numba
+
+    from propmap.core import _interp
+    from propmap.core._plain import plain_vector
+    from propmap.vehicle import VehicleMap, read_vehicle
+
+    def signatures():
+        return {k: len(f.signatures) for k, f in vars(_interp).items()
+                if isinstance(f, numba.core.registry.CPUDispatcher)}
+
+    def frozen(a):
+        a = np.array(a, dtype=float)
+        a.flags.writeable = False
+        return a
+
+    def strided(a):
+        s = np.zeros((len(a), 2))
+        s[:, 0] = a
+        return s[:, 0]
+
+    rm = RotorMap(small_map[2])
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")  # four apce_8x6
+    vm = VehicleMap(veh, rm)
+    om, V, b = np.full(5, 700.0), np.linspace(0.0, 10.0, 5), np.full(5, 0.5)
+    vel, axis, w, rotors = np.array([3.0, -1.0, 0.5]), np.array([0.0, 0.0, 1.0]), np.array([0.1, 0.2, 0.0]), \
+        np.array([700.0, 710.0, 720.0, 730.0])
+    ref = (rm.loads(om, V, b), rm.wrench(vel, axis, 700.0), vm.wrench(vel, w, rotors))  # (compiled, or from the cache)
+    before = signatures()
+    for make in (frozen, strided):
+        got = (rm.loads(make(om), V, b), rm.wrench(make(vel), make(axis), 700.0),
+               vm.wrench(make(vel), make(w), make(rotors)))
+        np.testing.assert_array_equal(got[0].thrust, ref[0].thrust)
+        np.testing.assert_array_equal(got[1].force, ref[1].force)
+        np.testing.assert_array_equal(got[2].force, ref[2].force)
+        np.testing.assert_array_equal(got[2].moment, ref[2].moment)
+    assert signatures() == before
+    x = frozen(vel)
+    for a in (x, strided(vel)):
+        p = plain_vector(a, 3)
+        assert p is not a and p.flags.c_contiguous and p.flags.writeable and p.tolist() == vel.tolist()

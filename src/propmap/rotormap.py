@@ -369,7 +369,9 @@ class RotorMap:
         policy = _interp.NAN if out_of_grid == "nan" else _interp.CLIP
         q = self._queries(omega, airspeed, incidence, out_of_grid)
         shape = q[0].shape
-        flat = [np.ascontiguousarray(a.reshape(-1)) for a in q]
+        # contiguous and writeable (a read-only omega, which _queries passes on unchanged, compiled interp_batch once
+        # more for its type)
+        flat = [np.require(a.reshape(-1), requirements=("C", "W")) for a in q]
         n = flat[0].size
         out = np.empty((n, len(LOADS)))
         inside = np.empty(n, dtype=np.bool_)

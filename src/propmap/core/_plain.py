@@ -61,13 +61,16 @@ def plain_vector(value, n: int, *, int64: bool = False) -> np.ndarray | None:
     Returns
     -------
     ndarray of shape (n,) or None
-        ``value`` itself where it is already such a float64 array.
+        Contiguous and writeable: ``value`` itself where it is already such a float64 array,
+        else a copy (a read-only or strided array is another type to the compiled one-point
+        calls, which compiled them once more for it: 0.5-1.6 s, then cached on disk).
     """
     if type(value) is np.ndarray:
         if value.shape != (n,):
             return None
         if value.dtype is _F64 or value.dtype == np.float64:  # (identity first: 30 against 95 ns)
-            return value
+            flags = value.flags
+            return value if flags.c_contiguous and flags.writeable else value.copy()
         return value.astype(np.float64) if value.dtype.kind in "iuf" else None
     if isinstance(value, (tuple, list)) and len(value) == n:
         xs = [plain_float(x, int64=int64) for x in value]
