@@ -344,3 +344,48 @@ def test_validation_errors_refuse_an_unknown_model_or_run(apc):
     assert one == v.summary("model", ["2801rd"])
     assert one["n_points"] == sum(r.CT.size for r in v.runs if r.run_id == "2801rd")
     assert v.summary("hover_model")["ct_rmse"] != v.summary("model")["ct_rmse"]
+
+
+def test_read_only_strided_and_fortran_inputs_compile_nothing_more():
+    """numba compiles a kernel once per array type, and a read-only, strided or Fortran-ordered array
+    is another type: a user's such input (a memory-mapped log, a column of a state array) gave a
+    compile of 0.2-1.6 s in the middle of a run (rotor_loads' range check of a strided array did,
+    2026-11-28). rotor_loads, rotor_wrench and vehicle_wrench, one point and batches, with such inputs
+    add no compiled signature to any of propmap's kernels and give the same loads."""
+    import sys
+
+    import numba
+
+    from propmap.vehicle import read_vehicle, vehicle_wrench
+
+    def signatures():
+        return {f"{m}.{k}": len(f.signatures) for m in list(sys.modules) if m.startswith("propmap")
+                for k, f in vars(sys.modules[m]).items() if isinstance(f, numba.core.registry.CPUDispatcher)}
+
+    def frozen(a):
+        a = np.array(a, dtype=float)
+        a.flags.writeable = False
+        return a
+
+    def strided(a):
+        s = np.zeros(np.shape(a) + (2,))
+        s[..., 0] = a
+        return s[..., 0]
+
+    prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    om, V, b = np.full(4, 800.0), np.linspace(0.0, 10.0, 4), np.full(4, 0.7)
+    vel, axis = np.array([[3.0, 0.5, -0.2]] * 4), np.array([0.0, 0.0, 1.0])
+    w, rot = np.array([[0.1, 0.0, 0.2]] * 4), np.full((4, 4), 800.0)
+    calls = (lambda f: pm.rotor_loads(prop, params, f(om), f(V), f(b)).thrust,
+             lambda f: pm.rotor_loads(prop, params, f(om), f(V), f(b), derivatives=True).derivative("thrust", "omega"),
+             lambda f: pm.rotor_wrench(prop, params, f(vel), f(axis), f(om)).force,
+             lambda f: pm.rotor_wrench(prop, params, f(vel[0]), f(axis), 800.0).force,
+             lambda f: vehicle_wrench(veh, params, f(vel), f(w), f(rot)).force,
+             lambda f: vehicle_wrench(veh, params, f(vel[0]), f(w[0]), f(rot[0])).force)
+    ref = [c(np.array) for c in calls]
+    before = signatures()
+    for make in (frozen, strided, np.asfortranarray):
+        for c, r in zip(calls, ref):
+            np.testing.assert_allclose(c(make), r, rtol=1e-14, atol=0.0)
+    assert signatures() == before

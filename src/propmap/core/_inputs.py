@@ -105,7 +105,8 @@ def _as_array(name: str, value) -> np.ndarray:
     if a.dtype.kind not in "fiu" or has_bool(value):
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
-    flat = a.reshape(-1)
+    # (contiguous and writeable: a strided or read-only array is another type to _outside, compiled once more)
+    flat = np.require(a.reshape(-1), requirements=("C", "W"))
     first, near = _outside(flat, lo, hi, INCIDENCE_SNAP if name == "incidence" else 0.0)
     if first >= 0:  # (beyond the incidence's snap, so as given)
         raise _range_error(name, float(flat[first]))
