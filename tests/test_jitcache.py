@@ -69,10 +69,14 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     assert _sibling_imports(core / "_parameter_sensitivity.py") <= sensitivity
     assert {p.name for p in _jitcache.LINEAR_SOURCES} == sensitivity | {"_linear_sensitivity.py"}
     assert _sibling_imports(core / "_linear_sensitivity.py") <= sensitivity
+    # the maps' kernels inline the disk frame of _frame.py (which imports no sibling with compiled code)
+    assert {p.name for p in _jitcache.INTERP_SOURCES} == {"_interp.py", "_frame.py"}
+    assert _sibling_imports(core / "_interp.py") - {"_jitcache.py"} <= {"_frame.py"}
+    assert _sibling_imports(core / "_frame.py") - {"_jitcache.py"} == set()
     # the kernels' own files are served by the stamping locators, each with its sources
     assert {Path(k).name for k in _jitcache._STAMPED} == {"_kernel.py", "_annulus.py", "_flags.py", "_sensitivity.py",
                                                           "_momentum_sensitivity.py", "_parameter_sensitivity.py",
-                                                          "_linear_sensitivity.py"}
+                                                          "_linear_sensitivity.py", "_interp.py"}
     assert _jitcache.CACHE
     a, b = tmp_path / "a.py", tmp_path / "b.py"
     a.write_text("x = 1\n")

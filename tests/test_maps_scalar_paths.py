@@ -187,8 +187,9 @@ def test_a_velocity_whose_magnitude_is_the_airspeed_axis_end_is_inside_on_both_p
     """A hub speed equal to the grid's top airspeed (12 m/s) by construction: the scalar wrench
     (core._interp.point_frame, sqrt of the sum of squares) rounded |v| to 12.000000000000002 for about a
     quarter of directions and called it outside the grid (NaN vectors under "nan", inside = False under
-    "clip"), the array path (core.vector.disk_frame, scaled by the largest component) for others: the
-    audit's one bug. Since then an airspeed within AIRSPEED_SNAP of an end is on it, on every path."""
+    "clip"), the array path (core.vector.disk_frame, then scaled by the largest component) for others: the
+    audit's one bug. Since then an airspeed within AIRSPEED_SNAP of an end is on it, on every path (and
+    both paths share core/_frame.py's arithmetic)."""
     rm = RotorMap(flapping_map[2])
     top = float(rm.airspeed[-1])
     rng = np.random.default_rng(0)

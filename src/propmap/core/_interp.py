@@ -32,11 +32,12 @@ import numba
 import numpy as np
 
 from . import _jitcache  # noqa: F401 (a writable cache folder for numba before the kernels below are cached)
+from ._frame import FLAGS as _FLAGS
+from ._frame import point_frame, point_vectors
 
 CLIP = 0
 NAN = 1
 
-_FLAGS = dict(cache=True, error_model="numpy", fastmath={"nsz", "arcp", "contract", "afn", "reassoc"})
 # the helpers below are compiled once each and inlined by LLVM (forceinline), not copied into each caller's numba IR
 # (inline="always"): the three kernels' first compile 29 -> 8 s, a scalar lookup 3.91 against 3.97 us at best of six
 # processes (2026-11-28, 2-core AMD EPYC; benchmarks/README.md, "Compile time")
@@ -251,11 +252,12 @@ INCIDENCE_SNAP = 2.5e-7
 
 
 #: an airspeed within this fraction of an end of the grid's airspeed axis is on it: a hub's speed |V|
-#: from its velocity rounds differently on the one-point paths (the root of the squares) and the
-#: array path (the largest component times the scaled vector's norm), by an ulp or two, and that may
-#: not decide between "inside" and "outside" (a mutation audit, 2026-11-28: of 2,000 velocities of
-#: |V| = 12 m/s, 511 were outside a 0-12 m/s map on the one-point path and 449 on the array path,
-#: NaN loads under "nan" on one and finite on the other); the C header's loads take the same rule
+#: from its velocity rounds by an ulp or two (and, until core/_frame.py served both, differently on the
+#: one-point paths, the root of the squares, and the array path, the largest component times the scaled
+#: vector's norm), and that may not decide between "inside" and "outside" (a mutation audit, 2026-11-28:
+#: of 2,000 velocities of |V| = 12 m/s, 511 were outside a 0-12 m/s map on the one-point path and 449
+#: on the array path, NaN loads under "nan" on one and finite on the other); the C header's loads take
+#: the same rule
 AIRSPEED_SNAP = 1e-12
 
 
@@ -330,95 +332,6 @@ def snap_edge(x, lo, hi):
 def snap_speed(x, lo, hi):
     """:func:`snap_airspeed_scalar`, compiled for the kernels."""
     return _snap_ends_compiled(x, lo, hi, lo * AIRSPEED_SNAP, hi * AIRSPEED_SNAP)
-
-
-#: below this, a frame's vector is scaled by POW2 first (exact): its squares would lose digits
-#: or underflow, and 1 / its largest component overflow under fastmath's reciprocal ("arcp")
-TINY = 1e-150
-POW2 = 2.0 ** 600
-
-
-@numba.njit(forceinline=True, **_FLAGS)
-def point_frame(vx, vy, vz, a0, a1, a2):
-    """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
-    scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, the axial
-    speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0), computed as
-    atan2(|V - (V . z) z|, V . z), which keeps its digits near axial flow (the arccos of a cosine
-    rounded to 1 - 1e-16 is 1.5e-8 rad: a simulator-developer audit, 2026-11-27). A vector below
-    TINY is scaled by the power of two POW2 first, so that neither a velocity of 1e-200 m/s
-    (its squares 0) nor an axis of 1e-320 (1 / 1e-320 overflows) is lost (a physics audit and a
-    simulator-developer audit, 2026-11-27: the speed 0, and NaN loads under "clip").
-    Returns (zx, zy, zz, speed, axial, beta)."""
-    amax = max(abs(a0), abs(a1), abs(a2))
-    if amax < TINY:
-        a0 *= POW2
-        a1 *= POW2
-        a2 *= POW2
-        amax *= POW2
-    a0 /= amax
-    a1 /= amax
-    a2 /= amax
-    n = np.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
-    zx = a0 / n
-    zy = a1 / n
-    zz = a2 / n
-    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
-    if speed < TINY:
-        sx = vx * POW2
-        sy = vy * POW2
-        sz = vz * POW2
-        ns = np.sqrt(sx * sx + sy * sy + sz * sz)
-        cs = sx * zx + sy * zy + sz * zz
-        speed = ns * (1.0 / POW2)
-        axial = cs * (1.0 / POW2)
-        return zx, zy, zz, speed, axial, incidence(sx, sy, sz, zx, zy, zz, cs)
-    axial = vx * zx + vy * zy + vz * zz
-    return zx, zy, zz, speed, axial, incidence(vx, vy, vz, zx, zy, zz, axial)
-
-
-@numba.njit(forceinline=True, **_FLAGS)
-def incidence(vx, vy, vz, zx, zy, zz, axial):
-    """beta = atan2(|V - axial z|, axial) for the velocity V, the unit axis z and axial = V . z
-    (0 where V = 0; core.vector.disk_frame's arithmetic)."""
-    ix = vx - axial * zx
-    iy = vy - axial * zy
-    iz = vz - axial * zz
-    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
-    if n_ip == 0.0 and axial == 0.0:  # V = 0 (atan2(0, -0.0) would be pi)
-        return 0.0
-    return np.arctan2(n_ip, axial)
-
-
-@numba.njit(forceinline=True, **_FLAGS)
-def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
-    """One rotor's force and moment vectors from its loads, as core.vector.wrench_vectors: e_ip
-    the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed), force
-    T z - D e_ip - spin Y (z x e_ip), moment -spin (Q z + M_R e_ip) - M_P (z x e_ip), with
-    (zx, zy, zz, speed, axial) from :func:`point_frame`; a velocity below TINY scaled by POW2
-    first, as there (else e_ip's squares underflow: the drag dropped below 1e-162 m/s; a review,
-    2026-11-27). Returns (Fx, Fy, Fz, Mx, My, Mz)."""
-    if speed < TINY:  # (axial from the scaled V: a subnormal axial speed has lost its digits)
-        vx *= POW2
-        vy *= POW2
-        vz *= POW2
-        axial = vx * zx + vy * zy + vz * zz
-        speed *= POW2
-    ix = vx - axial * zx
-    iy = vy - axial * zy
-    iz = vz - axial * zz
-    n_ip = np.sqrt(ix * ix + iy * iy + iz * iz)
-    ex = 0.0
-    ey = 0.0
-    ez = 0.0
-    if n_ip > 1e-12 * max(speed, 1e-300):
-        ex = ix / n_ip
-        ey = iy / n_ip
-        ez = iz / n_ip
-    lx = zy * ez - zz * ey  # z x e_ip
-    ly = zz * ex - zx * ez
-    lz = zx * ey - zy * ex
-    return (T * zx - D * ex - spin * Y * lx, T * zy - D * ey - spin * Y * ly, T * zz - D * ez - spin * Y * lz,
-            -spin * (Q * zx + M * ex) - P * lx, -spin * (Q * zy + M * ey) - P * ly, -spin * (Q * zz + M * ez) - P * lz)
 
 
 @numba.njit(forceinline=True, **_FLAGS)

@@ -11,9 +11,11 @@ those and ``_sensitivity.py``'s, so an edit there would leave numba serving a ke
 from the old physics (module constants such as the Reynolds clamp are compiled in). The
 locators below serve the kernels' own files (``_kernel.py``, ``_annulus.py``, ``_flags.py``,
 whose reverse-flow radius compiles in ``_momentum.py``'s in-plane induction since 2026-11-25,
-``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``) and stamp
+``_sensitivity.py``, ``_momentum_sensitivity.py``, ``_linear_sensitivity.py``, and the maps'
+``_interp.py``, which inlines the disk frame of ``_frame.py``) and stamp
 each one's cache with a SHA-256 over the contents of every file it compiles in
-(:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`, :data:`LINEAR_SOURCES`), so that editing
+(:data:`KERNEL_SOURCES`, :data:`SENSITIVITY_SOURCES`, :data:`LINEAR_SOURCES`,
+:data:`INTERP_SOURCES`), so that editing
 any of them recompiles. They are registered
 ahead of numba's own locators (numba.core.caching, an internal API); if that API is not found,
 :data:`CACHE` is False and the kernels are compiled in every process instead of risking a
@@ -27,7 +29,8 @@ import hashlib
 import os
 from pathlib import Path
 
-__all__ = ["CACHE", "CACHE_FALLBACK", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSITIVITY_SOURCES", "sources_stamp"]
+__all__ = ["CACHE", "CACHE_FALLBACK", "INTERP_SOURCES", "KERNEL_SOURCES", "LINEAR_SOURCES", "SENSITIVITY_SOURCES",
+           "sources_stamp"]
 
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
@@ -39,8 +42,11 @@ SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity
                        _HERE / "_swirl_sensitivity.py", *KERNEL_SOURCES)
 #: the files whose code the compiled sensitivity kernel of the linear inflow models contains
 LINEAR_SOURCES = (_HERE / "_linear_sensitivity.py", *SENSITIVITY_SOURCES)
+#: the files whose code the maps' compiled kernels contain (the disk frame's arithmetic inlined from _frame.py)
+INTERP_SOURCES = (_HERE / "_interp.py", _HERE / "_frame.py")
 #: the cached files, each with the sources its stamp covers
 _STAMPED = {os.path.realpath(p): KERNEL_SOURCES for p in (*KERNEL_SOURCES[:2], _HERE / "_flags.py")}
+_STAMPED[os.path.realpath(INTERP_SOURCES[0])] = INTERP_SOURCES
 _STAMPED.update({os.path.realpath(p): SENSITIVITY_SOURCES for p in SENSITIVITY_SOURCES[:3]})
 _STAMPED[os.path.realpath(LINEAR_SOURCES[0])] = LINEAR_SOURCES
 

@@ -17,6 +17,7 @@ import numpy as np
 from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
+from ._frame import frames, vectors
 from ._plain import plain_float, plain_vector
 from .geometry import Propeller, has_bool, refuse_masked
 from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
@@ -521,7 +522,8 @@ def cross3(a, b):
 
 def disk_frame(velocity, axis):
     """(V, z, speed, beta): the checked velocity and unit axis (broadcast together, shape
-    S + (3,)), the speed |V| [m/s] and the incidence beta [rad] (0 where V = 0).
+    S + (3,)), the speed |V| [m/s] and the incidence beta [rad] (0 where V = 0), point by point
+    as the one-point paths (core/_frame.py: :func:`~propmap.core._frame.frames`).
 
     Raises
     ------
@@ -530,30 +532,28 @@ def disk_frame(velocity, axis):
         that do not broadcast).
     """
     V = _vectors("velocity", velocity)
-    z = _vectors("axis", axis)
-    # normalise without overflow: scale by the largest component first (|z| of [0, 1e200,
-    # 1e200] would overflow to inf and make the thrust direction 0)
-    zmax = np.max(np.abs(z), axis=-1, keepdims=True)
-    if np.any(zmax == 0):
-        raise ValueError("axis must be non-zero")
-    z = z / zmax
-    z = z / np.linalg.norm(z, axis=-1, keepdims=True)
+    a = _vectors("axis", axis)
     try:
-        V, z = np.broadcast_arrays(V, z)
+        full = np.broadcast_shapes(V.shape, a.shape)
     except ValueError:
-        raise ValueError(f"velocity (shape {V.shape}) and axis (shape {z.shape}) must broadcast together: N x 3 "
+        raise ValueError(f"velocity (shape {V.shape}) and axis (shape {a.shape}) must broadcast together: N x 3 "
                          "beside N x 3 or 3") from None
-    # V scaled by its largest component: |V| without overflow (a speed beyond float range is refused by
-    # rotor_loads as such), and a subnormal V keeps its direction
-    vmax = np.max(np.abs(V), axis=-1)
-    Vs = V / np.where(vmax > 0, vmax, 1.0)[..., None]
-    with np.errstate(over="ignore"):
-        speed = vmax * np.linalg.norm(Vs, axis=-1)
-    # beta = arccos(V . z / speed) as atan2(|V - (V . z) z|, V . z): the arccos of a cosine one or two ulp
-    # below 1 is 1.5e-8 or 2.1e-8 rad, atan2 keeps the digits near axial flow (0 where V = 0)
-    ax_s = np.einsum("...i,...i->...", Vs, z)
-    beta = np.where(speed > 0, np.arctan2(np.linalg.norm(Vs - ax_s[..., None] * z, axis=-1), ax_s), 0.0)
-    return V, z, speed, beta
+    # (broadcast_to's read-only views: np.broadcast_arrays' writeable ones warn of a future change when read)
+    V, a = (x if x.shape == full else np.broadcast_to(x, full) for x in (V, a))
+    shape = full[:-1]
+    z = np.empty(V.shape)
+    out = np.empty((3,) + shape)
+    # (one compiled pass: the NumPy expressions of before took 80-90 us of a vehicle step's 4 rotors)
+    if frames(_rows(V), _rows(a), z.reshape(-1, 3), out.reshape(3, -1)) >= 0:
+        raise ValueError("axis must be non-zero")
+    return V, z, out[0, ...], out[2, ...]  # (0-d arrays for one point, as V's other quantities)
+
+
+def _rows(a: np.ndarray) -> np.ndarray:
+    """``a`` (shape S + (3,)) as a C-contiguous, writeable (M, 3) array (the compiled loops' one type)."""
+    a = a.reshape(-1, 3)
+    flags = a.flags
+    return a if flags.c_contiguous and flags.writeable else np.array(a, order="C")
 
 
 def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin, *, side_force=0.0, pitching_moment=0.0):
@@ -561,25 +561,18 @@ def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin, *, side_for
     velocity V and unit axis z (shape S + (3,) or broadcastable) and the spin sign.
 
     force T z - D e_ip + Y e_adv, moment -spin (Q z + M_R e_ip) + M_P (e_ip x z), with e_ip
-    the in-plane unit velocity (0 where the velocity is axial or zero) and e_adv =
-    -spin (z x e_ip) the direction of the advancing side (docs/conventions.md).
+    the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed, axial
+    flow or none) and e_adv = -spin (z x e_ip) the direction of the advancing side
+    (docs/conventions.md); point by point as the one-point paths (core/_frame.py:
+    :func:`~propmap.core._frame.vectors`).
     """
     shape = np.shape(thrust)
-    z = np.broadcast_to(z, shape + (3,))
-    V = np.broadcast_to(V, shape + (3,))
-    # V scaled by its largest component first: a subnormal V's squares would underflow to e_ip = 0
-    vmax = np.max(np.abs(V), axis=-1, keepdims=True)
-    Vs = V / np.where(vmax > 0, vmax, 1.0)
-    v_ip = Vs - np.einsum("...i,...i->...", Vs, z)[..., None] * z
-    n_ip = np.linalg.norm(v_ip, axis=-1, keepdims=True)
-    e_ip = np.where(n_ip > 1e-12 * np.maximum(np.linalg.norm(Vs, axis=-1, keepdims=True), 1e-300),
-                    v_ip / np.where(n_ip > 0, n_ip, 1.0), 0.0)
-    s = np.broadcast_to(spin, shape)[..., None]
-    lateral = cross3(z, e_ip)  # z x e_ip
-    force = np.asarray(thrust)[..., None] * z - np.asarray(drag)[..., None] * e_ip
-    moment = -s * (np.asarray(torque)[..., None] * z + np.asarray(rolling_moment)[..., None] * e_ip)
-    if np.any(side_force):
-        force = force - s * np.asarray(side_force)[..., None] * lateral
-    if np.any(pitching_moment):
-        moment = moment - np.asarray(pitching_moment)[..., None] * lateral
-    return force, moment
+    loads = np.empty((6,) + shape)
+    for k, q in enumerate((thrust, drag, torque, rolling_moment, side_force, pitching_moment)):
+        loads[k] = q
+    s = np.empty(shape)
+    s[...] = spin
+    out = np.empty((2,) + shape + (3,))
+    vectors(_rows(np.broadcast_to(V, shape + (3,))), _rows(np.broadcast_to(z, shape + (3,))), loads.reshape(6, -1),
+            s.reshape(-1), out.reshape(2, -1, 3))
+    return out[0], out[1]
