@@ -149,3 +149,27 @@ def test_rotor_loads_takes_numpy_scalars_by_the_one_point_path(monkeypatch):
         pm.rotor_loads(prop, params, np.True_, 6.0, 0.7)
     with pytest.raises(ValueError, match="omega"):
         pm.rotor_loads(prop, params, np.float64(-5.0), 6.0, 0.7)
+
+
+def test_the_array_paths_frame_and_vectors_are_the_one_point_arithmetic_to_the_bit():
+    """disk_frame and wrench_vectors (the array paths of rotor_wrench, vehicle_wrench and the maps)
+    loop over core/_frame.py's one-point functions, which the one-point paths call: the same speed,
+    incidence, axis and vectors to the last bit, over speeds from 1e-200 to 1e140 m/s (a velocity from
+    1e100 m/s up scaled by 2^-600 in the loop, exactly), where NumPy's expressions of before rounded
+    differently by an ulp or two."""
+    from propmap.core._frame import point_frame, point_vectors
+    from propmap.core.vector import disk_frame, wrench_vectors
+
+    rng = np.random.default_rng(5)
+    n = 3000
+    V = rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(-200, 140, (n, 1))
+    a = rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(-5, 5, (n, 1))
+    loads = rng.normal(size=(6, n))
+    spin = rng.choice([-1.0, 1.0], n)
+    Vb, z, speed, beta = disk_frame(V, a)
+    F, M = wrench_vectors(*loads[:4], Vb, z, spin, side_force=loads[4], pitching_moment=loads[5])
+    for i in range(0, n, 7):
+        zx, zy, zz, s, axial, b = point_frame(*V[i], *a[i])
+        assert (s, b, zx, zy, zz) == (speed[i], beta[i], *z[i]), i
+        if s < 1e100:  # (the one-point path refuses larger velocities; the loop scales them)
+            assert point_vectors(*V[i], zx, zy, zz, s, axial, *loads[:, i], spin[i]) == (*F[i], *M[i]), i
