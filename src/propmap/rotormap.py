@@ -18,7 +18,7 @@ import numpy as np
 
 from .core.units import RPM
 from .core._interp import snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
-from .core._plain import plain_float, plain_vector
+from .core._plain import SPINS, plain_float, plain_vector
 from .core.geometry import has_bool, refuse_masked
 from .io.inputs import short_path
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
@@ -49,9 +49,6 @@ def _cell_flags(bad: np.ndarray) -> np.ndarray:
             acc |= np.take(padded, range(k, k + n - 1), axis=axis)
         cell = acc
     return cell
-
-
-_SPIN = {"ccw": 1.0, "cw": -1.0}
 
 
 class MapLoads(NamedTuple):
@@ -473,7 +470,7 @@ class RotorMap:
         v, a, omega = plain_vector(velocity, 3), plain_vector(axis, 3), plain_float(omega)
         if v is None or a is None or omega is None or omega != omega:
             return None  # (a velocity beyond VELOCITY_MAX: wrench_point returns 1, and the general path refuses it)
-        s = _SPIN.get(spin.lower()) if isinstance(spin, str) else plain_float(spin)  # (a NumPy +-1 too)
+        s = SPINS.get(spin.lower()) if isinstance(spin, str) else plain_float(spin)  # (a NumPy +-1 too)
         s = s if s in (1.0, -1.0) else None
         grid = self._grid.get(out_of_grid) if isinstance(out_of_grid, str) else None
         if s is None or grid is None:

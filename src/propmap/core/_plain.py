@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plain_float", "plain_vector"]
+__all__ = ["SPINS", "plain_float", "plain_vector"]
 
 
 _F64 = np.dtype(np.float64)
+#: a rotor's spin by name: +1 counter-clockwise about its axis, -1 clockwise (docs/conventions.md)
+SPINS = {"ccw": 1.0, "cw": -1.0}
 
 
 def plain_float(x, *, int64: bool = False) -> float | None:
