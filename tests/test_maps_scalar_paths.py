@@ -464,8 +464,10 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
     ref = (rm.loads(om, V, b), rm.wrench(vel, axis, 700.0), vm.wrench(vel, w, rotors))  # (compiled, or from the cache)
     before = signatures()
     for make in (frozen, strided):
-        got = (rm.loads(make(om), V, b), rm.wrench(make(vel), make(axis), 700.0),
-               vm.wrench(make(vel), make(w), make(rotors)))
+        given = [make(x) for x in (om, vel, axis, vel, w, rotors)]
+        kept = [x.copy() for x in given]
+        got = (rm.loads(given[0], V, b), rm.wrench(given[1], given[2], 700.0), vm.wrench(*given[3:]))
+        assert all(np.array_equal(x, k) for x, k in zip(given, kept))
         np.testing.assert_array_equal(got[0].thrust, ref[0].thrust)
         np.testing.assert_array_equal(got[1].force, ref[1].force)
         np.testing.assert_array_equal(got[2].force, ref[2].force)
@@ -475,3 +477,21 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
     for a in (x, strided(vel)):
         p = plain_vector(a, 3)
         assert p is not a and p.flags.c_contiguous and p.flags.writeable and p.tolist() == vel.tolist()
+
+
+def test_broadcast_queries_warn_of_nothing(small_map):
+    """A query of one array and plain numbers (broadcast against each other) gives no warning: NumPy's
+    writeable broadcast views (np.broadcast_arrays) warn of a future change (FutureWarning) when their
+    flags are read, which the contiguity check of the array path and numba do (a review, 2026-11-29: a
+    new warning from RotorMap.loads(np.array([700.0]), 5.0, 0.5)); the same for trim_omega."""
+    import warnings
+
+    prop, params, ds = small_map
+    rm = RotorMap(ds)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        one = rm.loads(np.array([700.0]), 5.0, 0.5)
+        rm.loads(np.array([[700.0], [800.0]]), np.array([0.0, 5.0, 10.0]), 0.5)
+        om = pm.trim_omega(prop, params, np.array([2.0, 3.0]), 5.0, 0.5).omega
+    assert one.thrust.shape == (1,) and one.thrust[0] == rm.loads(700.0, 5.0, 0.5).thrust
+    assert om.shape == (2,) and om[0] < om[1]

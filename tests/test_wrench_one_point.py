@@ -155,8 +155,8 @@ def test_the_array_paths_frame_and_vectors_are_the_one_point_arithmetic_to_the_b
     """disk_frame and wrench_vectors (the array paths of rotor_wrench, vehicle_wrench and the maps)
     loop over core/_frame.py's one-point functions, which the one-point paths call: the same speed,
     incidence, axis and vectors to the last bit, over speeds from 1e-200 to 1e140 m/s (a velocity from
-    1e100 m/s up scaled by 2^-600 in the loop, exactly), where NumPy's expressions of before rounded
-    differently by an ulp or two."""
+    1e100 m/s up scaled by 2^-600 in the loop, exactly) and nearly axial ones of 1e-300 m/s, where NumPy's
+    expressions of before rounded differently by an ulp or two."""
     from propmap.core._frame import point_frame, point_vectors
     from propmap.core.vector import disk_frame, wrench_vectors
 
@@ -164,11 +164,16 @@ def test_the_array_paths_frame_and_vectors_are_the_one_point_arithmetic_to_the_b
     n = 3000
     V = rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(-200, 140, (n, 1))
     a = rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(-5, 5, (n, 1))
+    # nearly axial and tiny: an in-plane part of 1e-40 to 1e-10 of speeds of 1e-300 to 1e-150 (the loop's speed
+    # from unscaled squares was 0 there, and its e_ip a full in-plane direction: a review, 2026-11-29)
+    V[:500] = a[:500] * 10.0 ** rng.uniform(-300, -150, (500, 1))
+    V[:500] += rng.normal(size=(500, 3)) * np.abs(V[:500]).max(axis=1, keepdims=True) * 10.0 ** rng.uniform(-40, -10,
+                                                                                                              (500, 1))
     loads = rng.normal(size=(6, n))
     spin = rng.choice([-1.0, 1.0], n)
     Vb, z, speed, beta = disk_frame(V, a)
     F, M = wrench_vectors(*loads[:4], Vb, z, spin, side_force=loads[4], pitching_moment=loads[5])
-    for i in range(0, n, 7):
+    for i in range(n):
         zx, zy, zz, s, axial, b = point_frame(*V[i], *a[i])
         assert (s, b, zx, zy, zz) == (speed[i], beta[i], *z[i]), i
         if s < 1e100:  # (the one-point path refuses larger velocities; the loop scales them)

@@ -19,7 +19,7 @@ import numpy as np
 from .core.units import RPM
 from .core._interp import snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
 from .core._plain import SPINS, plain_float, plain_vector
-from .core.geometry import has_bool, refuse_masked
+from .core.geometry import broadcast_readonly, has_bool, refuse_masked
 from .io.inputs import short_path
 from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
 from .io.mapfile import read_dataset
@@ -298,7 +298,7 @@ class RotorMap:
                 raise ValueError(f"{name} must be a number or an array of numbers, got {v!r:.60}")
             arrays.append(a.astype(float, copy=False))
         try:
-            q = np.broadcast_arrays(*arrays)
+            q = broadcast_readonly(*arrays)
         except ValueError:
             raise ValueError("omega, airspeed and incidence must broadcast together, got shapes "
                              f"{', '.join(str(a.shape) for a in arrays)}") from None

@@ -164,6 +164,12 @@ def vectors(V, z, loads, spin, out):
             vy *= 1.0 / POW2
             vz *= 1.0 / POW2
         speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+        if speed < TINY:  # (as point_frame: the squares scaled, else they underflow and speed is 0, which
+            # point_vectors' own scaling cannot restore: e_ip from an in-plane part of 1e-28 of the speed; a review)
+            sx = vx * POW2
+            sy = vy * POW2
+            sz = vz * POW2
+            speed = np.sqrt(sx * sx + sy * sy + sz * sz) * (1.0 / POW2)
         axial = vx * zx + vy * zy + vz * zz
         fx, fy, fz, mx, my, mz = point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, loads[0, i], loads[1, i],
                                                loads[2, i], loads[3, i], loads[4, i], loads[5, i], spin[i])

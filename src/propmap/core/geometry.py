@@ -69,6 +69,21 @@ def has_bool(value) -> bool:
     return isinstance(value, (bool, np.bool_))
 
 
+def broadcast_readonly(*arrays: np.ndarray) -> list[np.ndarray]:
+    """The arrays broadcast to one shape, as ``np.broadcast_arrays`` does, but as read-only views
+    (``np.broadcast_to``; an array already of that shape is returned as it is): NumPy's writeable
+    broadcast views warn of a future change (a FutureWarning) whenever their flags are read, which
+    numba and ``np.require`` do.
+
+    Raises
+    ------
+    ValueError
+        Shapes that do not broadcast (``np.broadcast_shapes``' message).
+    """
+    shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    return [a if a.shape == shape else np.broadcast_to(a, shape) for a in arrays]
+
+
 def short_repr(value, n: int = 60) -> str:
     """``repr(value)`` as one line of at most ``n`` characters, for an error message.
 

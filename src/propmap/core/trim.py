@@ -34,7 +34,7 @@ import numpy as np
 
 from .units import RPM
 from .airfoil import Air, SectionParams
-from .geometry import Propeller
+from .geometry import Propeller, broadcast_readonly
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads, model_air,
                      rotor_loads, supersonic_tips_allowed)
 
@@ -279,7 +279,7 @@ def trim_collective(
     T_star = _checked_thrust(thrust, thrust_tol)
     # the operating points are checked by rotor_loads; broadcast them with the thrust here
     try:
-        T_star, om, V, b = np.broadcast_arrays(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
+        T_star, om, V, b = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
     except ValueError as exc:
         raise ValueError(f"thrust, omega, airspeed and incidence must broadcast together: {exc}") from None
     shape = T_star.shape
@@ -428,7 +428,7 @@ def trim_omega(
         raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
     T_star = _checked_thrust(thrust, thrust_tol)
     try:
-        T_star, V, b, c = np.broadcast_arrays(T_star, *(np.asarray(a, float) for a in (
+        T_star, V, b, c = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (
             airspeed, incidence, 0.0 if collective is None else collective)))
     except ValueError as exc:
         raise ValueError(f"thrust, airspeed, incidence and collective must broadcast together: {exc}") from None

@@ -19,7 +19,7 @@ from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane spe
 from .derivatives import RHO, STILL_AIR
 from ._frame import frames, vectors
 from ._plain import SPINS, plain_float, plain_vector
-from .geometry import Propeller, has_bool, refuse_masked
+from .geometry import Propeller, broadcast_readonly, has_bool, refuse_masked
 from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
 __all__ = ["RotorWrench", "rotor_wrench", "still_air_slopes", "velocity_gradient", "velocity_jacobian"]
@@ -540,14 +540,14 @@ def disk_frame(velocity, axis):
     """
     V = _vectors("velocity", velocity)
     a = _vectors("axis", axis)
+    if not np.all(np.shape(velocity)) and not np.all(np.any(a != 0.0, axis=-1)):  # (no sample: the loop sees none)
+        raise ValueError("axis must be non-zero")
     try:
-        full = np.broadcast_shapes(V.shape, a.shape)
+        V, a = broadcast_readonly(V, a)
     except ValueError:
         raise ValueError(f"velocity (shape {V.shape}) and axis (shape {a.shape}) must broadcast together: N x 3 "
                          "beside N x 3 or 3") from None
-    # (broadcast_to's read-only views: np.broadcast_arrays' writeable ones warn of a future change when read)
-    V, a = (x if x.shape == full else np.broadcast_to(x, full) for x in (V, a))
-    shape = full[:-1]
+    shape = V.shape[:-1]
     z = np.empty(V.shape)
     out = np.empty((3,) + shape)
     # (one compiled pass: the NumPy expressions of before took 80-90 us of a vehicle step's 4 rotors)
