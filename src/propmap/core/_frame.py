@@ -20,7 +20,6 @@ from . import _jitcache  # noqa: F401 (a writable cache folder for numba before 
 
 #: the compile options of the frame's functions and of the maps' kernels (core/_interp.py), which inline them
 FLAGS = dict(cache=True, error_model="numpy", fastmath={"nsz", "arcp", "contract", "afn", "reassoc"})
-_FLAGS = FLAGS
 #: a speed from this up is scaled by 1 / POW2 first (exact), so that its squares do not overflow (core.vector's
 #: velocities reach VELOCITY_MAX = 1e150 m/s; a speed beyond AIRSPEED_MAX is refused after the frame, by its value)
 HUGE = 1e100
@@ -31,10 +30,11 @@ TINY = 1e-150
 POW2 = 2.0 ** 600
 
 
-@numba.njit(forceinline=True, **_FLAGS)
+@numba.njit(forceinline=True, **FLAGS)
 def point_frame(vx, vy, vz, a0, a1, a2):
-    """One point's disk frame as core.vector.disk_frame: the axis (a0, a1, a2), not zero and finite,
-    scaled by its largest component and normalised to (zx, zy, zz); the speed |V|, the axial
+    """One point's disk frame (core.vector.disk_frame loops over it: :func:`frames`): the axis (a0,
+    a1, a2), not zero and finite, scaled by its largest component and normalised to (zx, zy, zz);
+    the speed |V|, the axial
     speed V . z and the incidence beta = arccos(V . z / |V|) (0 where V = 0), computed as
     atan2(|V - (V . z) z|, V . z), which keeps its digits near axial flow (the arccos of a cosine
     rounded to 1 - 1e-16 is 1.5e-8 rad: a simulator-developer audit, 2026-11-27). A vector below
@@ -69,7 +69,7 @@ def point_frame(vx, vy, vz, a0, a1, a2):
     return zx, zy, zz, speed, axial, incidence(vx, vy, vz, zx, zy, zz, axial)
 
 
-@numba.njit(forceinline=True, **_FLAGS)
+@numba.njit(forceinline=True, **FLAGS)
 def incidence(vx, vy, vz, zx, zy, zz, axial):
     """beta = atan2(|V - axial z|, axial) for the velocity V, the unit axis z and axial = V . z
     (0 where V = 0; core.vector.disk_frame's arithmetic)."""
@@ -82,9 +82,10 @@ def incidence(vx, vy, vz, zx, zy, zz, axial):
     return np.arctan2(n_ip, axial)
 
 
-@numba.njit(forceinline=True, **_FLAGS)
+@numba.njit(forceinline=True, **FLAGS)
 def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
-    """One rotor's force and moment vectors from its loads, as core.vector.wrench_vectors: e_ip
+    """One rotor's force and moment vectors from its loads (core.vector.wrench_vectors loops over
+    it: :func:`vectors`): e_ip
     the in-plane unit velocity (0 where the in-plane speed is below 1e-12 of the speed), force
     T z - D e_ip - spin Y (z x e_ip), moment -spin (Q z + M_R e_ip) - M_P (z x e_ip), with
     (zx, zy, zz, speed, axial) from :func:`point_frame`; a velocity below TINY scaled by POW2
@@ -114,7 +115,7 @@ def point_vectors(vx, vy, vz, zx, zy, zz, speed, axial, T, D, Q, M, Y, P, spin):
             -spin * (Q * zx + M * ex) - P * lx, -spin * (Q * zy + M * ey) - P * ly, -spin * (Q * zz + M * ez) - P * lz)
 
 
-@numba.njit(**_FLAGS)
+@numba.njit(**FLAGS)
 def frames(V, a, z, out):
     """The disk frames of M points (:func:`point_frame` each): ``V``, ``a`` (M, 3) C-contiguous
     velocities [m/s] and axes (finite, checked by the caller); ``z`` (M, 3) receives the unit
@@ -150,7 +151,7 @@ def frames(V, a, z, out):
     return -1
 
 
-@numba.njit(**_FLAGS)
+@numba.njit(**FLAGS)
 def vectors(V, z, loads, spin, out):
     """The force and moment vectors of M points (:func:`point_vectors` each): ``V``, ``z`` (M, 3)
     C-contiguous velocities [m/s] and unit axes; ``loads`` (6, M) the rows T, D,
