@@ -164,6 +164,9 @@ def vectors(V, z, loads, spin, out):
             vx *= 1.0 / POW2
             vy *= 1.0 / POW2
             vz *= 1.0 / POW2
+        # (written out as in point_frame, not shared through a helper: under fastmath's contraction a helper
+        # inlined here and there rounded the speed differently by an ulp, and the loops must equal the one-point
+        # paths to the bit, tests/test_wrench_one_point.py; measured 2026-11-29)
         speed = np.sqrt(vx * vx + vy * vy + vz * vz)
         if speed < TINY:  # (as point_frame: the squares scaled, else they underflow and speed is 0, which
             # point_vectors' own scaling cannot restore: e_ip from an in-plane part of 1e-28 of the speed; a review)
