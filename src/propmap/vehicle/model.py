@@ -31,7 +31,7 @@ derivatives of the wrench (``vehicle_wrench(derivatives=...)``) in vehicle/_jaco
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -44,9 +44,10 @@ from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            RotorLoads, check_model_args, model_air, rotor_loads,
                            supersonic_tips_allowed)
-from ..core.vector import VELOCITY_INPUTS, cross3, disk_frame, wrench_vectors
+from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
+from ._kinematics import hub_moments, hub_velocities
 from .layout import Rotor, Vehicle, rotor_geometry
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
@@ -107,12 +108,12 @@ def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
                          f"got {value!r:.60}") from None
     if a.dtype.kind not in "iuf" or has_bool(value):
         raise ValueError(f"{name} must be numbers, got {value!r:.60}")
-    a = a.astype(float)
+    a = a.astype(float, order="C")  # (a copy, C-ordered: one type for the compiled kinematics, _kinematics.py)
     if a.ndim == 1:
         a = a[None, :]
     if a.ndim != 2 or (n_cols is not None and a.shape[1] != n_cols):
         raise ValueError(f"{name} must have shape (N, {n_cols}) or ({n_cols},), got {np.shape(value)}")
-    if not np.all(np.isfinite(a)):
+    if not np.isfinite(a).all():  # (the method: np.all's dispatch cost more than the test on one sample)
         raise ValueError(f"{name} must be finite")
     return a
 
@@ -208,11 +209,11 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     v = _samples("velocity", velocity, 3)
     w = _samples("angular_velocity", angular_velocity, 3)
     om = _samples("rotor_omega", rotor_omega, n_rot)
-    if np.any(om < 0):
+    if (om < 0).any():
         n, i = np.argwhere(om < 0)[0]
         raise ValueError(f"rotor_omega must be >= 0 rad/s (the rate's magnitude; the sense is the rotor's spin), got "
                          f"{om[n, i]:g} for rotor {i + 1} (sample {n + 1})")
-    if np.any(om > OMEGA_MAX):
+    if (om > OMEGA_MAX).any():
         n, i = np.argwhere(om > OMEGA_MAX)[0]
         raise ValueError(f"rotor_omega must be <= {OMEGA_MAX:g} rad/s, got {om[n, i]:g} for rotor {i + 1} (sample "
                          f"{n + 1}; rpm given for rad/s?)")
@@ -224,12 +225,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         raise ValueError(f"velocity, angular_velocity, rotor_omega, wind and rotor_acceleration must have the same "
                          f"number of samples (or one), got {[a.shape[0] for a in arrays]}")
     N = counts.pop() if counts else 1
-    v, w, wind_a = (np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
-    om = np.broadcast_to(om, (N, n_rot))
     pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
-    V_hub = (v - wind_a)[:, None, :] + cross3(w[:, None, :], pos[None, :, :])  # (N, n_rot, 3)
-    speed = np.linalg.norm(V_hub, axis=2)
-    if np.any(speed > AIRSPEED_MAX):
+    V_hub = np.empty((N, n_rot, 3))  # v - wind + w x r_i (compiled: _kinematics.py)
+    hub_velocities(v, wind_a, w, pos, V_hub)
+    frame = _hub_frames(V_hub, axes)
+    speed = frame[1]
+    if speed.size and speed.max() > AIRSPEED_MAX:
         n, i = np.argwhere(speed > AIRSPEED_MAX)[0]
         raise ValueError(f"rotor {i + 1}'s hub airspeed |v + w x r - wind| is {speed[n, i]:.4g} m/s at sample {n + 1}, "
                          f"beyond the model's {AIRSPEED_MAX:g} m/s (velocity, angular_velocity and wind in m/s and "
@@ -246,7 +247,10 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     motion = any(n in MOTION_NAMES for n in wrt)
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
-    rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub, axes, om, **solve)
+    w_rows, om_rows = w, om  # (1 or N rows, as given: the compiled sums below take them so)
+    v, w, wind_a = (a if a.shape[0] == N else np.broadcast_to(a, (N, 3)) for a in (v, w, wind_a))
+    om = om if om.shape[0] == N else np.broadcast_to(om, (N, n_rot))
+    rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub, frame, om, **solve)
     hub_jac = hub_velocity_jacobians(vehicle, batches, om) if motion else None
     if kappa > 0 and n_rot > 1:
         from ..core.interference import interference_inflow
@@ -255,13 +259,12 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
         v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
         wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
-        rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub - wake, axes, om, **solve)
-    rotor_moment += cross3(pos[None, :, :], rotor_force)
-    if np.any(h_spin):  # the gyroscopic and spin-up moments of the rotors with a known inertia (0 for the others)
-        h = om[:, :, None] * h_spin[None, :, :]  # (N, n_rot, 3)
-        rotor_moment -= cross3(w[:, None, :], h)
-        if acc is not None:
-            rotor_moment -= acc[:, :, None] * h_spin[None, :, :]  # (acc (1 or N, n_rot): broadcast)
+        V_wake = V_hub - wake
+        rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_wake, _hub_frames(V_wake, axes),
+                                                                    om, **solve)
+    # the arms' moments r_i x F_i and the gyroscopic and spin-up moments -w x (Omega_i h_i) - (dOmega_i/dt) h_i of the
+    # rotors with a known inertia (h_i 0 for the others)
+    hub_moments(pos, rotor_force, rotor_moment, w_rows, om_rows, h_spin, np.zeros((1, n_rot)) if acc is None else acc)
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
     wash = None
@@ -280,12 +283,22 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
 
 
-def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *, air, discretization, on_failure,
+def _hub_frames(V_hub: np.ndarray, axes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The disk frames (unit axes z, shape (N, n_rot, 3), speeds and incidences, shape (N, n_rot))
+    of the hubs moving at ``V_hub`` (N, n_rot, 3), finite, with the rotors' ``axes`` (n_rot, 3):
+    :func:`propmap.core.vector.disk_frame`'s arithmetic, without its checks of a user's input."""
+    a = np.empty(V_hub.shape)  # (filled: np.broadcast_to's view cost 3 us, and the compiled loop takes a copy)
+    a[...] = axes
+    return checked_frame(V_hub, a)
+
+
+def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, frame, om, *, air, discretization, on_failure,
                     derivatives=()):
     """Each rotor's force and hub moment (body axes) and loads at hub velocities ``V_hub``
-    (N, n_rot, 3): one solver call per distinct (propeller, parameter set), all its rotors'
-    samples together; and those calls as (rotor indices, their loads of shape (N, k), the disk
-    frames' in-plane velocity and axis, shape (N, k, 3)), for the Jacobians' batched algebra."""
+    (N, n_rot, 3) with the disk frames ``frame`` (:func:`_hub_frames`): one solver call per distinct
+    (propeller, parameter set), all its rotors' samples together; and those calls as (rotor
+    indices, their loads of shape (N, k), the disk frames' velocity and axis, shape (N, k, 3)),
+    for the Jacobians' batched algebra."""
     N, n_rot = om.shape
     spins = np.array([r.spin for r in vehicle.rotors])
     groups: dict[tuple[int, int], list[int]] = {}  # rotors of one propeller and set, solved in one batch
@@ -303,8 +316,7 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, axes, om, *,
         rot = vehicle.rotors[idx[0]]
         p = rot.params if rot.params is not None else params
         sel = slice(None) if len(idx) == n_rot else idx  # (every rotor, in order: views, not copies)
-        Vg = V_hub[:, sel, :]  # (N, k, 3)
-        Vd, z, speed, beta = disk_frame(Vg, np.broadcast_to(axes[sel], Vg.shape))
+        Vd, z, speed, beta = V_hub[:, sel], frame[0][:, sel], frame[1][:, sel], frame[2][:, sel]  # (N, k, 3), (N, k)
         r = rotor_loads(rot.propeller, p, om[:, sel], speed, beta, air=air, discretization=discretization,
                         on_failure=on_failure, derivatives=derivatives or False)
         F, M = wrench_vectors(r.thrust, r.drag, r.torque, r.rolling_moment, Vd, z, spins[sel],
@@ -348,14 +360,19 @@ def _same_rotor_model(a: Rotor, b: Rotor, params: SectionParams) -> bool:
 def _columns(r: RotorLoads) -> list[RotorLoads]:
     """The columns of loads of shape (N, k_rotors): each rotor's RotorLoads of shape (N,) (the
     fields to split found once, not per rotor)."""
-    names = [f.name for f in fields(r) if f.name != "r" and isinstance(getattr(r, f.name), np.ndarray)
-             and getattr(r, f.name).ndim >= 2]
+    base = vars(r)
+    names = [n for n, a in base.items() if n != "r" and type(a) is np.ndarray and a.ndim >= 2]
+    # each field's columns a[:, k] in one call (iterating over a.swapaxes(0, 1)), not one indexing per field and rotor
+    columns = zip(*(base[n].swapaxes(0, 1) for n in names))
+    jac = r.jacobian
+    jac_columns = zip(*(a.swapaxes(0, 1) for a in jac.values())) if jac is not None else None
     out = []
-    for k in range(np.shape(r.thrust)[1]):
-        kw = {n: getattr(r, n)[:, k] for n in names}
-        if r.jacobian is not None:
-            kw["jacobian"] = {key: a[:, k] for key, a in r.jacobian.items()}
-        out.append(_new_loads({**vars(r), **kw}))  # (replace() would run the dataclass's __init__ again: 7 us a rotor)
+    for values in columns:
+        fields_k = base.copy()  # (replace() would run the dataclass's __init__ again: 7 us a rotor)
+        fields_k.update(zip(names, values))
+        if jac is not None:
+            fields_k["jacobian"] = dict(zip(jac, next(jac_columns)))
+        out.append(_new_loads(fields_k))
     return out
 
 

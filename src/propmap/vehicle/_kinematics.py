@@ -1,0 +1,110 @@
+"""A multirotor's rigid-body kinematics and moment sums, compiled (numba): the hub velocities
+V_i = v - wind + w x r_i before the rotors are solved and the hub moments r_i x F_i + M_i -
+w x (Omega_i h_i) - (dOmega_i/dt) h_i after (:func:`propmap.vehicle.vehicle_wrench`; the
+vehicle's model in docs/flight.md). They were NumPy expressions on (N, n_rotors, 3) arrays,
+some 20 calls that cost a one-sample simulator step about as much as solving one of its rotors.
+
+Compiled without fastmath, in NumPy's order of operations: the same numbers to the bit as the
+expressions they replace (tests/test_vehicle_kinematics.py).
+"""
+
+from __future__ import annotations
+
+import numba
+
+from ..core import _jitcache  # noqa: F401 (a writable cache folder for numba before the functions below are cached)
+
+#: IEEE arithmetic as NumPy's elementwise operations (no contraction into fused multiply-adds)
+_FLAGS = dict(cache=True, error_model="numpy")
+
+
+@numba.njit(**_FLAGS)
+def hub_velocities(v, wind, w, arms, out):
+    """Each hub's velocity relative to the air, V[n, i] = (v[n] - wind[n]) + w[n] x r_i.
+
+    Parameters
+    ----------
+    v, wind, w : ndarray, shape (1, 3) or (N, 3)
+        The centre of mass' velocity [m/s], the wind [m/s] and the body's angular velocity
+        [rad/s], body axes; one row is every sample's.
+    arms : ndarray, shape (n_rotors, 3)
+        r_i, the hubs from the centre of mass [m].
+    out : ndarray, shape (N, n_rotors, 3)
+        Receives V.
+    """
+    for n in range(out.shape[0]):
+        j = 0 if v.shape[0] == 1 else n
+        k = 0 if wind.shape[0] == 1 else n
+        m = 0 if w.shape[0] == 1 else n
+        ux = v[j, 0] - wind[k, 0]
+        uy = v[j, 1] - wind[k, 1]
+        uz = v[j, 2] - wind[k, 2]
+        wx = w[m, 0]
+        wy = w[m, 1]
+        wz = w[m, 2]
+        for i in range(arms.shape[0]):
+            px = arms[i, 0]
+            py = arms[i, 1]
+            pz = arms[i, 2]
+            out[n, i, 0] = ux + (wy * pz - wz * py)
+            out[n, i, 1] = uy + (wz * px - wx * pz)
+            out[n, i, 2] = uz + (wx * py - wy * px)
+
+
+@numba.njit(**_FLAGS)
+def hub_moments(arms, force, moment, w, omega, h, acc):
+    """The rotors' moments about the centre of mass, in place: moment[n, i] += r_i x F[n, i] and,
+    where a rotor's inertia is known (any h_i non-zero), -= w[n] x (Omega[n, i] h_i) and -=
+    (dOmega/dt)[n, i] h_i.
+
+    Parameters
+    ----------
+    arms : ndarray, shape (n_rotors, 3)
+        r_i [m].
+    force, moment : ndarray, shape (N, n_rotors, 3)
+        Each rotor's force [N] and its moment about its hub [N m]; ``moment`` is updated.
+    w : ndarray, shape (1, 3) or (N, 3)
+        Angular velocity [rad/s].
+    omega, acc : ndarray, shape (1, n_rotors) or (N, n_rotors)
+        Omega_i [rad/s] and dOmega_i/dt [rad/s^2] (zeros where none is given); one row is every
+        sample's.
+    h : ndarray, shape (n_rotors, 3)
+        s_i J_i a_i [kg m^2] (0 for a rotor of unknown inertia). Where every h_i is 0 the
+        gyroscopic and spin-up terms are not added, as the expressions this replaced skipped them
+        (a subtraction of a signed zero can change a zero moment's sign).
+    """
+    gyro = False
+    for i in range(h.shape[0]):
+        gyro = gyro or h[i, 0] != 0.0 or h[i, 1] != 0.0 or h[i, 2] != 0.0
+    for n in range(force.shape[0]):
+        k = 0 if acc.shape[0] == 1 else n
+        j = 0 if omega.shape[0] == 1 else n
+        m = 0 if w.shape[0] == 1 else n
+        wx = w[m, 0]
+        wy = w[m, 1]
+        wz = w[m, 2]
+        for i in range(arms.shape[0]):
+            px = arms[i, 0]
+            py = arms[i, 1]
+            pz = arms[i, 2]
+            fx = force[n, i, 0]
+            fy = force[n, i, 1]
+            fz = force[n, i, 2]
+            mx = moment[n, i, 0] + (py * fz - pz * fy)
+            my = moment[n, i, 1] + (pz * fx - px * fz)
+            mz = moment[n, i, 2] + (px * fy - py * fx)
+            if gyro:
+                om = omega[j, i]
+                hx = om * h[i, 0]
+                hy = om * h[i, 1]
+                hz = om * h[i, 2]
+                mx -= wy * hz - wz * hy
+                my -= wz * hx - wx * hz
+                mz -= wx * hy - wy * hx
+                a = acc[k, i]
+                mx -= a * h[i, 0]
+                my -= a * h[i, 1]
+                mz -= a * h[i, 2]
+            moment[n, i, 0] = mx
+            moment[n, i, 1] = my
+            moment[n, i, 2] = mz
