@@ -109,10 +109,11 @@ def _row_fields(shape: tuple, out: np.ndarray, counts: np.ndarray, flags: np.nda
     (for one point 0-d views, got by three C-level getters: a third of the cost of one per field)."""
     if shape == ():
         rows = _ROWS_0D[0](out) + _ROWS_0D[1](counts) + _ROWS_0D[2](flags)
-    else:
+    elif len(shape) == 1:
         rows = _ROWS[0](out) + _ROWS[1](counts) + _ROWS[2](flags)
-        if len(shape) != 1:
-            rows = [a.reshape(shape) for a in rows]
+    else:  # (each packed array reshaped once, not each of its rows)
+        rows = (_ROWS[0](out.reshape(out.shape[:1] + shape)) + _ROWS[1](counts.reshape(counts.shape[:1] + shape))
+                + _ROWS[2](flags.reshape(flags.shape[:1] + shape)))
     return dict(zip(_ROW_FIELDS, rows))
 
 
