@@ -134,7 +134,8 @@ class _Buffers(threading.local):
     loads, about 1 in 200 calls)."""
 
     def __init__(self) -> None:
-        #: the loads, inside and flagged of core._interp.interp_point and wrench_point
+        #: the scratch of core._interp.interp_point, wrench_point and vehicle_point (the lookups' loads, inside
+        #: and flagged; the first two return their fields, vehicle_point its flag in res[3, 1])
         self.res = np.empty((4, 4))
 
 
@@ -448,14 +449,9 @@ class RotorMap:
             return None
         if out_of_grid not in POLICIES:
             return None
-        res = self._buffers.res
-        self._interp_point(self._grid[out_of_grid], self._tables, self._cellflag, omega, airspeed, incidence, res)
-        (t, d, q, m), side, (ins, *_), (fl, *_) = res.tolist()
-        y, mp = side[:2] if self.side_loads else (0.0, 0.0)
-        omega = float(omega)
-        if not inside and out_of_grid == "clip":
-            omega = min(omega, o1)  # below the grid the loads are scaled to the query's
-        return _LOADS((t, d, q, m, omega, ins != 0.0, fl != 0.0, y, mp))
+        # (the fields in MapLoads' order, Omega held at the grid's top under "clip": core._interp._fields)
+        return _LOADS(self._interp_point(self._grid[out_of_grid], self._tables, self._cellflag, omega, airspeed,
+                                         incidence, self._buffers.res))
 
     def _packed(self, out_of_grid):
         """(grid, tables, cellflag, res) of the compiled one-point kernels (core._interp) under the
@@ -481,15 +477,12 @@ class RotorMap:
         grid = self._grid.get(out_of_grid) if isinstance(out_of_grid, str) else None
         if s is None or grid is None:
             return None
-        res, vectors = self._buffers.res, np.empty((2, 3))  # (the vectors returned: a new array each call)
-        if self._wrench_point(grid, self._tables, self._cellflag, v, a, omega, s, res, vectors):
+        vectors = np.empty((2, 3))  # (the vectors returned: a new array each call)
+        status, fields = self._wrench_point(grid, self._tables, self._cellflag, v, a, omega, s, self._buffers.res,
+                                            vectors)
+        if status:
             return None
-        (t, d, q, m), side, (ins, *_), (fl, *_) = res.tolist()
-        y, mp = side[:2] if self.side_loads else (0.0, 0.0)
-        inside = ins != 0.0
-        if not inside and out_of_grid == "clip":
-            omega = min(omega, self._box[1])  # below the grid: scaled to the query's
-        return _WRENCH((vectors[0], vectors[1], _LOADS((t, d, q, m, float(omega), inside, fl != 0.0, y, mp))))
+        return _WRENCH((vectors[0], vectors[1], _LOADS(fields)))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """The map's interpolation error against the model recorded in it (:func:`check_map`).
