@@ -75,3 +75,28 @@ def test_vehicle_gyroscopic_and_spin_up_moments():
     want = base.moment - np.cross(w, om[0] @ h) - acc[0] @ h
     np.testing.assert_allclose(got.moment, want, rtol=0, atol=1e-12 * np.abs(base.moment).max())
     assert np.array_equal(got.force, base.force)
+
+
+def test_kept_geometry_follows_rotors_written_in_place():
+    """vehicle_wrench keeps each vehicle's arms, axes and inertias (vehicle.layout.cached_rotor_geometry)
+    and builds them again when a rotor's arrays or the centre of mass are written in place: the step
+    then equals a new vehicle's (not the kept geometry's)."""
+    from propmap.vehicle.layout import Vehicle, cached_rotor_geometry, rotor_geometry
+
+    veh = read_vehicle(QUAD)
+    params = pm.preset("gill2017-apc")
+    v, w, om = [2.0, 1.0, -0.5], [0.3, -0.2, 0.9], [800.0, 830.0, 790.0, 815.0]
+    first = vehicle_wrench(veh, params, v, w, om)
+    kept = cached_rotor_geometry(veh)
+    assert all(not a.flags.writeable for a in kept) and cached_rotor_geometry(veh) is kept
+    assert all(a.flags.writeable for a in rotor_geometry(veh))  # (the public function's arrays are the caller's)
+    veh.rotors[0].position[0] += 0.05
+    veh.centre_of_mass[2] = 0.01
+    moved = vehicle_wrench(veh, params, v, w, om)
+    fresh = Vehicle(mass=veh.mass, rotors=tuple(dataclasses.replace(r) for r in veh.rotors),
+                    centre_of_mass=veh.centre_of_mass.copy())
+    assert np.array_equal(moved.moment, vehicle_wrench(fresh, params, v, w, om).moment)
+    assert not np.array_equal(moved.moment, first.moment)
+    spun = dataclasses.replace(veh.rotors[1], inertia=1e-4)
+    object.__setattr__(veh, "rotors", (veh.rotors[0], spun) + veh.rotors[2:])  # (a rotor swapped: its inertia read)
+    assert cached_rotor_geometry(veh)[3][1].any()

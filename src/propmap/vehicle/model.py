@@ -48,7 +48,7 @@ from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
 from ._kinematics import hub_moments, hub_velocities
-from .layout import Rotor, Vehicle, rotor_geometry
+from .layout import Rotor, Vehicle, cached_rotor_geometry, rotor_geometry
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
@@ -225,7 +225,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         raise ValueError(f"velocity, angular_velocity, rotor_omega, wind and rotor_acceleration must have the same "
                          f"number of samples (or one), got {[a.shape[0] for a in arrays]}")
     N = counts.pop() if counts else 1
-    pos, axes, _, h_spin = rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
+    pos, axes, _, h_spin = cached_rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = np.empty((N, n_rot, 3))  # v - wind + w x r_i (compiled: _kinematics.py)
     hub_velocities(v, wind_a, w, pos, V_hub)
     frame = _hub_frames(V_hub, axes)
