@@ -39,13 +39,9 @@ def hub_velocities(v, wind, w, arms, out):
         ux = v[j, 0] - wind[k, 0]
         uy = v[j, 1] - wind[k, 1]
         uz = v[j, 2] - wind[k, 2]
-        wx = w[m, 0]
-        wy = w[m, 1]
-        wz = w[m, 2]
+        wx, wy, wz = w[m, 0], w[m, 1], w[m, 2]
         for i in range(arms.shape[0]):
-            px = arms[i, 0]
-            py = arms[i, 1]
-            pz = arms[i, 2]
+            px, py, pz = arms[i, 0], arms[i, 1], arms[i, 2]
             out[n, i, 0] = ux + (wy * pz - wz * py)
             out[n, i, 1] = uy + (wz * px - wx * pz)
             out[n, i, 2] = uz + (wx * py - wy * px)
@@ -80,16 +76,10 @@ def hub_moments(arms, force, moment, w, omega, h, acc):
         k = 0 if acc.shape[0] == 1 else n
         j = 0 if omega.shape[0] == 1 else n
         m = 0 if w.shape[0] == 1 else n
-        wx = w[m, 0]
-        wy = w[m, 1]
-        wz = w[m, 2]
+        wx, wy, wz = w[m, 0], w[m, 1], w[m, 2]
         for i in range(arms.shape[0]):
-            px = arms[i, 0]
-            py = arms[i, 1]
-            pz = arms[i, 2]
-            fx = force[n, i, 0]
-            fy = force[n, i, 1]
-            fz = force[n, i, 2]
+            px, py, pz = arms[i, 0], arms[i, 1], arms[i, 2]
+            fx, fy, fz = force[n, i, 0], force[n, i, 1], force[n, i, 2]
             mx = moment[n, i, 0] + (py * fz - pz * fy)
             my = moment[n, i, 1] + (pz * fx - px * fz)
             mz = moment[n, i, 2] + (px * fy - py * fx)
