@@ -14,7 +14,7 @@ import pytest
 import propmap as pm
 from propmap.core.vector import cross3
 from propmap.vehicle import read_vehicle, vehicle_wrench
-from propmap.vehicle._kinematics import hub_moments, hub_velocities
+from propmap.vehicle._kinematics import hub_moments, hub_velocity_loop
 
 QUAD = Path(pm.__file__).parent / "data/examples/quadrotor.toml"
 
@@ -35,7 +35,7 @@ def test_hub_velocities_equal_numpy_expression(rows):
     v, wind, w = _spread(rng, (n_v, 3)), _spread(rng, (n_wind, 3)), _spread(rng, (n_w, 3))
     arms = _spread(rng, (n_rot, 3))
     got = np.empty((N, n_rot, 3))
-    hub_velocities(v, wind, w, arms, got)
+    hub_velocity_loop(v, wind, w, arms, got)
     want = (np.broadcast_to(v, (N, 3)) - np.broadcast_to(wind, (N, 3)))[:, None, :] \
         + cross3(np.broadcast_to(w, (N, 3))[:, None, :], arms[None, :, :])
     assert got.tobytes() == want.tobytes()  # (bit for bit, signed zeros included)
@@ -100,3 +100,23 @@ def test_kept_geometry_follows_rotors_written_in_place():
     spun = dataclasses.replace(veh.rotors[1], inertia=1e-4)
     object.__setattr__(veh, "rotors", (veh.rotors[0], spun) + veh.rotors[2:])  # (a rotor swapped: its inertia read)
     assert cached_rotor_geometry(veh)[3][1].any()
+
+
+def test_hub_velocities_public_function():
+    """propmap.vehicle.hub_velocities, which the fits, the flight scores and VehicleMap's batches use:
+    (v - wind) + w x r_i as NumPy computes it, to the bit; a vector stands for every sample; read-only
+    and strided inputs accepted; wrong shapes and unmatched sample counts refused by name."""
+    from propmap.vehicle import hub_velocities
+
+    rng = np.random.default_rng(3)
+    v, w, wind, arms = _spread(rng, (9, 3)), _spread(rng, (9, 3)), _spread(rng, (3,)), _spread(rng, (4, 3))
+    want = (v - wind)[:, None, :] + np.cross(w[:, None, :], arms[None])
+    assert hub_velocities(v, w, arms, wind=wind).tobytes() == want.tobytes()
+    ro = np.broadcast_to(w[:1], (9, 3))  # (read-only, zero-strided)
+    assert np.array_equal(hub_velocities(v, ro, arms), v[:, None, :] + np.cross(w[:1, None, :], arms[None]))
+    assert hub_velocities([1, 2, 3], [0, 0, 1.0], [[0.1, 0, 0]]).tolist() == [[[1.0, 2.1, 3.0]]]
+    assert hub_velocities(np.zeros((0, 3)), np.zeros(3), arms).shape == (0, 4, 3)
+    with pytest.raises(ValueError, match=r"same number of samples \(or one\), got 2, 3 and 1"):
+        hub_velocities(np.zeros((2, 3)), np.zeros((3, 3)), arms)
+    with pytest.raises(ValueError, match=r"arms must have shape \(N, 3\) or \(3,\), got \(4, 2\)"):
+        hub_velocities(v, w, np.zeros((4, 2)))

@@ -400,11 +400,11 @@ def _flight_coverage(logs, veh, air) -> dict:
 
     from ..core.vector import disk_frame
     from ..identify.flight import flight_samples
-    from ..vehicle import rotor_geometry
+    from ..vehicle import hub_velocities, rotor_geometry
 
     s = flight_samples(logs, veh, rate_hz=1e4)
     arms, axes, _, _ = rotor_geometry(veh)
-    V_hub = s.velocity[:, None, :] + np.cross(s.angular_velocity[:, None, :], arms[None, :, :])  # (N, n_rot, 3)
+    V_hub = hub_velocities(s.velocity, s.angular_velocity, arms)  # (N, n_rot, 3)
     _, _, speed, inc = disk_frame(V_hub, axes[None, :, :])  # (the hub's airspeed and incidence, as rotor_wrench's)
     axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..vehicle import Vehicle, rotor_geometry
+from ..vehicle import Vehicle, hub_velocities, rotor_geometry
 
 if TYPE_CHECKING:  # the samples' type only: flight.py imports this module
     from .flight_samples import FlightSamples
@@ -117,7 +117,7 @@ def reference_errors(samples: FlightSamples, mass: float) -> tuple[dict, tuple]:
 
 def _hub_velocities(samples: FlightSamples, arms: np.ndarray) -> np.ndarray:
     """v + w x r_i, shape (N, n_rotors, 3): the hubs' velocities from their arms about the centre of mass."""
-    return samples.velocity[:, None, :] + np.cross(samples.angular_velocity[:, None, :], arms[None])
+    return hub_velocities(samples.velocity, samples.angular_velocity, arms)
 
 
 #: the baselines of the report: (key, label, terms)

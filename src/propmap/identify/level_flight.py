@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..vehicle import Vehicle, rotor_geometry
+from ..vehicle import Vehicle, hub_velocities, rotor_geometry
 from ..vehicle.layout import body_to_world  # (re-exported: the level-flight fit's)
 from ._checks import first_length, float_array
 from ..core.units import RPM
@@ -232,5 +232,5 @@ def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
     v_world = np.stack([data.airspeed, np.zeros(data.n), np.zeros(data.n)], -1)
     v_body = np.einsum("nji,nj->ni", R, v_world)  # R^T v
     pos = rotor_geometry(vehicle)[0]  # (n_rot, 3), about the centre of mass
-    vel = v_body[:, None, :] + np.cross(data.rates[:, None, :], pos[None, :, :])
+    vel = hub_velocities(v_body, data.rates, pos)
     return R, vel

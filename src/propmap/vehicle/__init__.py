@@ -4,6 +4,7 @@ Shared by identification (level flight, flight logs), maps and exports; imports 
 and io only.
 """
 
+from ._kinematics import hub_velocities
 from .file import VehicleFileError, read_vehicle
 from .layout import Rotor, Vehicle, rotor_geometry
 from .mapped import VehicleMap, VehicleMapWrench
@@ -11,4 +12,4 @@ from .model import VehicleWrench, hover_omega, vehicle_wrench
 from .trim import VehicleTrim, trim_vehicle
 
 __all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleTrim", "VehicleWrench", "VehicleFileError",
-           "hover_omega", "read_vehicle", "rotor_geometry", "trim_vehicle", "vehicle_wrench"]
+           "hover_omega", "hub_velocities", "read_vehicle", "rotor_geometry", "trim_vehicle", "vehicle_wrench"]

@@ -3,6 +3,8 @@ V_i = v - wind + w x r_i before the rotors are solved and the hub moments r_i x 
 w x (Omega_i h_i) - (dOmega_i/dt) h_i after (:func:`propmap.vehicle.vehicle_wrench`; the
 vehicle's model in docs/flight.md). They were NumPy expressions on (N, n_rotors, 3) arrays,
 some 20 calls that cost a one-sample simulator step about as much as solving one of its rotors.
+:func:`hub_velocities` serves every other place that needs the hubs' velocities (the flight and
+level-flight fits, the flight scores, ``propmap flight``'s coverage, VehicleMap's batches).
 
 Compiled without fastmath, in NumPy's order of operations: the same numbers to the bit as the
 expressions they replace (tests/test_vehicle_kinematics.py).
@@ -11,6 +13,7 @@ expressions they replace (tests/test_vehicle_kinematics.py).
 from __future__ import annotations
 
 import numba
+import numpy as np
 
 from ..core import _jitcache  # noqa: F401 (a writable cache folder for numba before the functions below are cached)
 
@@ -18,8 +21,52 @@ from ..core import _jitcache  # noqa: F401 (a writable cache folder for numba be
 _FLAGS = dict(cache=True, error_model="numpy")
 
 
+def hub_velocities(velocity, angular_velocity, arms, wind=None) -> np.ndarray:
+    """Each rotor hub's velocity relative to the air, V_i = v - wind + w x r_i (rigid-body kinematics).
+
+    Parameters
+    ----------
+    velocity, angular_velocity : array_like, shape (N, 3) or (3,)
+        The centre of mass' velocity [m/s] and the body's angular velocity w [rad/s], body
+        axes; one row (or a vector) stands for every sample.
+    arms : array_like, shape (n_rotors, 3)
+        The hubs from the centre of mass, r_i [m] (:func:`propmap.vehicle.rotor_geometry`).
+    wind : array_like, shape (N, 3) or (3,), optional
+        The wind [m/s], body axes; default none.
+
+    Returns
+    -------
+    ndarray, shape (N, n_rotors, 3)
+        V_i [m/s], computed as NumPy's ``(v - wind)[:, None] + np.cross(w[:, None], r)`` to the bit.
+
+    Raises
+    ------
+    ValueError
+        An input not of those shapes, or sample counts other than N and 1, naming the inputs.
+    """
+    v, w, r = _rows3("velocity", velocity), _rows3("angular_velocity", angular_velocity), _rows3("arms", arms)
+    wind_a = np.zeros((1, 3)) if wind is None else _rows3("wind", wind)
+    counts = {v.shape[0], w.shape[0], wind_a.shape[0]} - {1}
+    if len(counts) > 1:
+        raise ValueError(f"velocity, angular_velocity and wind must have the same number of samples (or one), got "
+                         f"{v.shape[0]}, {w.shape[0]} and {wind_a.shape[0]}")
+    out = np.empty((counts.pop() if counts else 1, r.shape[0], 3))
+    hub_velocity_loop(v, wind_a, w, r, out)
+    return out
+
+
+def _rows3(name: str, value) -> np.ndarray:
+    """``value`` as a C-contiguous, writeable float array of shape (M, 3) (a vector as one row): the
+    compiled loops' one type."""
+    a = np.asarray(value, dtype=float)
+    a = a[None, :] if a.ndim == 1 else a
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"{name} must have shape (N, 3) or (3,), got {np.shape(value)}")
+    return a if a.flags.c_contiguous and a.flags.writeable else np.array(a, order="C")
+
+
 @numba.njit(**_FLAGS)
-def hub_velocities(v, wind, w, arms, out):
+def hub_velocity_loop(v, wind, w, arms, out):
     """Each hub's velocity relative to the air, V[n, i] = (v[n] - wind[n]) + w[n] x r_i.
 
     Parameters

@@ -30,6 +30,7 @@ from ..core._interp import vehicle_point
 from ..core._plain import plain_vector
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
+from ._kinematics import hub_velocities
 from .layout import Vehicle, rotor_geometry
 from .model import _samples
 
@@ -249,7 +250,7 @@ class VehicleMap:
             force, moment, flagged = self._step(v1, w1, om[0].tolist(), out_of_grid)
         else:
             self._check_hub(float(np.max(np.abs(air_v))) + float(np.max(np.abs(w))) * self._reach)
-            v_hub = air_v[:, None, :] + cross3(w[:, None, :], self._pos[None, :, :])  # (N, n_rot, 3)
+            v_hub = hub_velocities(air_v, w, self._pos)  # (N, n_rot, 3)
             force = np.zeros((N, 3))
             moment = np.zeros((N, 3))
             flagged = np.zeros(N, dtype=bool)

@@ -47,7 +47,7 @@ from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEG
 from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
-from ._kinematics import hub_moments, hub_velocities
+from ._kinematics import hub_moments, hub_velocity_loop
 from .layout import Rotor, Vehicle, cached_rotor_geometry, rotor_geometry
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
@@ -227,7 +227,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     N = counts.pop() if counts else 1
     pos, axes, _, h_spin = cached_rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = np.empty((N, n_rot, 3))  # v - wind + w x r_i (compiled: _kinematics.py)
-    hub_velocities(v, wind_a, w, pos, V_hub)
+    hub_velocity_loop(v, wind_a, w, pos, V_hub)
     frame = _hub_frames(V_hub, axes)
     speed = frame[1]
     if speed.size and speed.max() > AIRSPEED_MAX:
