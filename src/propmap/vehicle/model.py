@@ -371,7 +371,7 @@ def _columns(r: RotorLoads) -> list[RotorLoads]:
         fields_k = base.copy()  # (replace() would run the dataclass's __init__ again: 7 us a rotor)
         fields_k.update(zip(names, values))
         if jac is not None:
-            fields_k["jacobian"] = dict(zip(jac, next(jac_columns)))
+            fields_k["jacobian"] = dict(zip(jac, next(jac_columns, ())))  # (an empty Jacobian: empty dicts)
         out.append(_new_loads(fields_k))
     return out
 
