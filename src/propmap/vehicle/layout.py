@@ -219,7 +219,7 @@ def cached_rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.
     what they come from changed: the rotors' positions, axes, spins and inertias and the centre of
     mass, compared by value (a Rotor's arrays can be written in place). For
     :func:`propmap.vehicle.vehicle_wrench`, whose one-sample step spent 35-45 us of 700 building them
-    (2026-11-29, Intel Xeon; the comparison costs about a fifth of that)."""
+    (2026-11-29, Intel Xeon; the comparison costs about a quarter of that)."""
     key = (vehicle.centre_of_mass.tobytes(),) + tuple((r.position.tobytes(), r.axis.tobytes(), r.spin, r.inertia)
                                                       for r in vehicle.rotors)
     kept = vehicle.__dict__.get("_rotor_geometry")
