@@ -27,6 +27,12 @@ def _spread(rng, shape):
     return x
 
 
+def _signed_units(rng, shape):
+    """-1, -0, +0 and +1 only: the sums and differences of which decide a zero's sign (a term left
+    in or out, a subtraction of 0, changes it in about a fifth of such samples)."""
+    return np.array([-1.0, -0.0, 0.0, 1.0])[rng.integers(0, 4, shape)]
+
+
 @pytest.mark.parametrize("rows", [(7, 7, 7), (7, 1, 7), (1, 7, 1), (1, 1, 7), (7, 7, 1)])
 def test_hub_velocities_equal_numpy_expression(rows):
     rng = np.random.default_rng(sum(rows))
@@ -41,21 +47,26 @@ def test_hub_velocities_equal_numpy_expression(rows):
     assert got.tobytes() == want.tobytes()  # (bit for bit, signed zeros included)
 
 
+@pytest.mark.parametrize("values", [_spread, _signed_units])
 @pytest.mark.parametrize("gyro", [True, False])
-@pytest.mark.parametrize("rows", [(6, 6, 6), (1, 6, 1), (6, 1, 6), (1, 1, 1)])
-def test_hub_moments_equal_numpy_expression(gyro, rows):
+@pytest.mark.parametrize("rows", [(6, 6, 6), (1, 6, 1), (6, 1, 6), (1, 1, 1), (6, 6, 0), (1, 1, 0)])
+def test_hub_moments_equal_numpy_expression(gyro, rows, values):
+    """(n_acc = 0: no rotor acceleration given, whose term the expressions left out.) With -1, -0, 0
+    and 1 only, a term subtracted where it was left out (0 for a rotor of unknown inertia, or no
+    acceleration) changes zeros' signs in about a fifth of the samples."""
     rng = np.random.default_rng(len(rows) + 10 * gyro + sum(rows))
-    n_w, n_om, n_acc = rows
-    N, n_rot = max(rows), 4
-    arms, force, moment = _spread(rng, (n_rot, 3)), _spread(rng, (N, n_rot, 3)), _spread(rng, (N, n_rot, 3))
-    w, om, acc = _spread(rng, (n_w, 3)), np.abs(_spread(rng, (n_om, n_rot))), _spread(rng, (n_acc, n_rot))
-    h = _spread(rng, (n_rot, 3)) if gyro else np.zeros((n_rot, 3))
+    N, n_rot = max(rows) * (1 if values is _spread else 400), 4
+    n_w, n_om, n_acc = (N if k > 1 else k for k in rows)
+    arms, force, moment = values(rng, (n_rot, 3)), values(rng, (N, n_rot, 3)), values(rng, (N, n_rot, 3))
+    w, om, acc = values(rng, (n_w, 3)), np.abs(values(rng, (n_om, n_rot))), values(rng, (n_acc, n_rot))
+    h = values(rng, (n_rot, 3)) if gyro else np.zeros((n_rot, 3))
     got = moment.copy()
     hub_moments(arms, force, got, w, om, h, acc)
     want = moment + cross3(arms[None, :, :], force)
     if gyro:  # (as vehicle_wrench computed them until 2026-11-29; without a known inertia, not subtracted)
         want -= cross3(np.broadcast_to(w, (N, 3))[:, None, :], np.broadcast_to(om, (N, n_rot))[:, :, None] * h[None])
-        want -= np.broadcast_to(acc, (N, n_rot))[:, :, None] * h[None]
+        if n_acc:
+            want -= np.broadcast_to(acc, (N, n_rot))[:, :, None] * h[None]
     assert got.tobytes() == want.tobytes()
 
 
@@ -102,6 +113,46 @@ def test_kept_geometry_follows_rotors_written_in_place():
     assert cached_rotor_geometry(veh)[3][1].any()
 
 
+@pytest.mark.parametrize("edit", ["centre_of_mass", "axis", "spin", "inertia"])
+def test_kept_geometry_follows_each_of_its_sources(edit):
+    """Each thing the kept geometry comes from, changed alone, is seen: the centre of mass and a
+    rotor's axis written in place, a rotor's spin and inertia set on the frozen object; the kept
+    arrays then equal rotor_geometry's of the changed vehicle."""
+    from propmap.vehicle.layout import cached_rotor_geometry, rotor_geometry
+
+    veh = read_vehicle(QUAD)
+    cached_rotor_geometry(veh)
+    rot = veh.rotors[2]
+    if edit == "centre_of_mass":
+        veh.centre_of_mass[0] = 0.02
+    elif edit == "axis":
+        rot.axis[:] = [0.0, 0.6, 0.8]
+    elif edit == "spin":
+        object.__setattr__(rot, "spin", -rot.spin)
+    else:
+        object.__setattr__(rot, "inertia", 2e-5)
+    for kept, fresh in zip(cached_rotor_geometry(veh), rotor_geometry(veh)):
+        assert np.array_equal(kept, fresh)
+
+
+def test_pickled_vehicle_keeps_no_geometry():
+    """A vehicle pickled or deep-copied after a step carries no kept geometry (its arrays would come
+    back writeable, another compiled type); the copy's step equals the original's."""
+    import copy
+    import pickle
+
+    from propmap.vehicle.layout import cached_rotor_geometry
+
+    veh = read_vehicle(QUAD)
+    params = pm.preset("gill2017-apc")
+    step = ([2.0, 1.0, -0.5], [0.3, -0.2, 0.9], [800.0, 830.0, 790.0, 815.0])
+    first = vehicle_wrench(veh, params, *step)
+    for other in (pickle.loads(pickle.dumps(veh)), copy.deepcopy(veh)):
+        assert "_rotor_geometry" not in vars(other)
+        assert not cached_rotor_geometry(other)[0].flags.writeable
+        assert np.array_equal(vehicle_wrench(other, params, *step).moment, first.moment)
+
+
 def test_hub_velocities_public_function():
     """propmap.vehicle.hub_velocities, which the fits, the flight scores and VehicleMap's batches use:
     (v - wind) + w x r_i as NumPy computes it, to the bit; a vector stands for every sample; read-only
@@ -120,3 +171,17 @@ def test_hub_velocities_public_function():
         hub_velocities(np.zeros((2, 3)), np.zeros((3, 3)), arms)
     with pytest.raises(ValueError, match=r"arms must have shape \(N, 3\) or \(3,\), got \(4, 2\)"):
         hub_velocities(v, w, np.zeros((4, 2)))
+
+
+def test_overflowing_hub_velocity_refused_by_name():
+    """A hub velocity that overflows (w x r = inf - inf: NaN) is refused as such, naming the rotor and
+    the sample, also beside a sample that is only too fast (a NaN speed passed the speed check and
+    reached the solver, which named the airspeed NaN; a review); a speed past 500 m/s names its value."""
+    veh = dataclasses.replace(read_vehicle(QUAD), centre_of_mass=[0.0, -1e3, -1e3])
+    params = pm.preset("gill2017-apc")
+    rates = [800.0] * 4
+    with pytest.raises(ValueError, match=r"rotor 1's hub velocity v \+ w x r - wind is not finite at sample 1"):
+        vehicle_wrench(veh, params, [[0, 0, 0], [600, 0, 0]], [[0, 1e306, 1e306], [0, 0, 0]], rates)
+    with pytest.raises(ValueError, match=r"rotor 1's hub airspeed \|v \+ w x r - wind\| is 600 m/s at sample 2, "
+                                         r"beyond the model's 500 m/s"):
+        vehicle_wrench(veh, params, [[0, 0, 0], [600, 0, 0]], [[0, 0, 0], [0, 0, 0]], rates)

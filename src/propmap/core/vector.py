@@ -552,8 +552,9 @@ def disk_frame(velocity, axis):
 
 def checked_frame(V: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(z, speed, beta) of :func:`disk_frame` for inputs its caller has checked: velocities ``V``
-    [m/s] and axes ``a``, finite float arrays of one shape S + (3,) (vehicle_wrench's hubs, whose
-    motion is checked once for all rotors).
+    [m/s] and axes ``a``, float arrays of one shape S + (3,) (vehicle_wrench's hubs, whose motion
+    is checked once for all rotors). A non-finite velocity is not refused here: its speed comes
+    out NaN or infinite, for the caller to refuse.
 
     Raises
     ------

@@ -108,13 +108,15 @@ def hub_moments(arms, force, moment, w, omega, h, acc):
         Each rotor's force [N] and its moment about its hub [N m]; ``moment`` is updated.
     w : ndarray, shape (1, 3) or (N, 3)
         Angular velocity [rad/s].
-    omega, acc : ndarray, shape (1, n_rotors) or (N, n_rotors)
-        Omega_i [rad/s] and dOmega_i/dt [rad/s^2] (zeros where none is given); one row is every
-        sample's.
+    omega : ndarray, shape (1, n_rotors) or (N, n_rotors)
+        Omega_i [rad/s]; one row is every sample's.
     h : ndarray, shape (n_rotors, 3)
         s_i J_i a_i [kg m^2] (0 for a rotor of unknown inertia). Where every h_i is 0 the
         gyroscopic and spin-up terms are not added, as the expressions this replaced skipped them
         (a subtraction of a signed zero can change a zero moment's sign).
+    acc : ndarray, shape (1, n_rotors), (N, n_rotors) or (0, n_rotors)
+        dOmega_i/dt [rad/s^2]; one row is every sample's; no rows: none given, and the spin-up
+        term not added (for the same reason).
     """
     gyro = False
     for i in range(h.shape[0]):
@@ -138,10 +140,11 @@ def hub_moments(arms, force, moment, w, omega, h, acc):
                 mx -= wy * hz - wz * hy
                 my -= wz * hx - wx * hz
                 mz -= wx * hy - wy * hx
-                a = acc[k, i]
-                mx -= a * h[i, 0]
-                my -= a * h[i, 1]
-                mz -= a * h[i, 2]
+                if acc.shape[0] > 0:
+                    a = acc[k, i]
+                    mx -= a * h[i, 0]
+                    my -= a * h[i, 1]
+                    mz -= a * h[i, 2]
             moment[n, i, 0] = mx
             moment[n, i, 1] = my
             moment[n, i, 2] = mz

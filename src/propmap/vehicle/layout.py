@@ -153,6 +153,13 @@ class Vehicle:
     name: str = ""
     source: str = ""
 
+    def __getstate__(self) -> dict:
+        """Pickle and copy without the kept rotor geometry (:func:`cached_rotor_geometry`: its arrays
+        would come back writeable, another type to the compiled kinematics; a review)."""
+        state = dict(self.__dict__)
+        state.pop("_rotor_geometry", None)
+        return state
+
     def __post_init__(self):
         for name, low in (("mass", 0.0), ("gravity", 0.0)):
             v = getattr(self, name)
@@ -218,12 +225,14 @@ def cached_rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.
     """:func:`rotor_geometry`'s arrays, read-only, kept on the vehicle and computed again only when
     what they come from changed: the rotors' positions, axes, spins and inertias and the centre of
     mass, compared by value (a Rotor's arrays can be written in place). For
-    :func:`propmap.vehicle.vehicle_wrench`, whose one-sample step spent 35-45 us of 700 building them
-    (2026-11-29, Intel Xeon; the comparison costs about a quarter of that)."""
+    :func:`propmap.vehicle.vehicle_wrench`, whose one-sample step spent about 40 us of 700 building
+    them (11 us alone, about four times that inside the step, where the solver's data fill the
+    caches; 2026-11-29, Intel Xeon; the comparison costs about a quarter of it). Not pickled
+    (Vehicle.__getstate__)."""
     key = (vehicle.centre_of_mass.tobytes(),) + tuple((r.position.tobytes(), r.axis.tobytes(), r.spin, r.inertia)
                                                       for r in vehicle.rotors)
     kept = vehicle.__dict__.get("_rotor_geometry")
-    if kept is not None and kept[0] == key:
+    if kept is not None and kept[0] == key and not kept[1][0].flags.writeable:  # (read-only as kept: not unpickled)
         return kept[1]
     geometry = rotor_geometry(vehicle)
     for a in geometry:

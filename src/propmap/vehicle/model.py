@@ -229,12 +229,14 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     V_hub = np.empty((N, n_rot, 3))  # v - wind + w x r_i (compiled: _kinematics.py)
     hub_velocity_loop(v, wind_a, w, pos, V_hub)
     frame = _hub_frames(V_hub, axes)
-    speed = frame[1]
-    if speed.size and speed.max() > AIRSPEED_MAX:
-        n, i = np.argwhere(speed > AIRSPEED_MAX)[0]
+    speed = frame[1]  # (the speed the rotors are solved at: the compiled frame's, as rotor_wrench's)
+    if speed.size and not speed.max() <= AIRSPEED_MAX:  # (NaN too: w x r or v - wind overflowing to inf - inf)
+        n, i = np.argwhere(~(speed <= AIRSPEED_MAX))[0]
         raise ValueError(f"rotor {i + 1}'s hub airspeed |v + w x r - wind| is {speed[n, i]:.4g} m/s at sample {n + 1}, "
                          f"beyond the model's {AIRSPEED_MAX:g} m/s (velocity, angular_velocity and wind in m/s and "
-                         "rad/s?)")
+                         "rad/s?)" if speed[n, i] > AIRSPEED_MAX else
+                         f"rotor {i + 1}'s hub velocity v + w x r - wind is not finite at sample {n + 1} (it "
+                         "overflows; velocity, angular_velocity and wind in m/s and rad/s?)")
     wrt = requested_derivatives(derivatives, vehicle, params)
     if wrt and kappa > 0 and n_rot > 1:
         raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
@@ -264,7 +266,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
                                                                     om, **solve)
     # the arms' moments r_i x F_i and the gyroscopic and spin-up moments -w x (Omega_i h_i) - (dOmega_i/dt) h_i of the
     # rotors with a known inertia (h_i 0 for the others)
-    hub_moments(pos, rotor_force, rotor_moment, w_rows, om_rows, h_spin, np.zeros((1, n_rot)) if acc is None else acc)
+    hub_moments(pos, rotor_force, rotor_moment, w_rows, om_rows, h_spin, np.empty((0, n_rot)) if acc is None else acc)
     body = vehicle.body_drag if body_drag is None else body_drag
     body_force = np.zeros((N, 3))
     wash = None
@@ -285,8 +287,9 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
 
 def _hub_frames(V_hub: np.ndarray, axes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The disk frames (unit axes z, shape (N, n_rot, 3), speeds and incidences, shape (N, n_rot))
-    of the hubs moving at ``V_hub`` (N, n_rot, 3), finite, with the rotors' ``axes`` (n_rot, 3):
-    :func:`propmap.core.vector.disk_frame`'s arithmetic, without its checks of a user's input."""
+    of the hubs moving at ``V_hub`` (N, n_rot, 3) with the rotors' ``axes`` (n_rot, 3):
+    :func:`propmap.core.vector.disk_frame`'s arithmetic, without its checks of a user's input (a
+    non-finite hub velocity gives a NaN or infinite speed, which vehicle_wrench refuses)."""
     a = np.empty(V_hub.shape)  # (filled: np.broadcast_to's view cost 3 us, and the compiled loop takes a copy)
     a[...] = axes
     return checked_frame(V_hub, a)
