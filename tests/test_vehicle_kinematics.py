@@ -171,6 +171,13 @@ def test_hub_velocities_public_function():
         hub_velocities(np.zeros((2, 3)), np.zeros((3, 3)), arms)
     with pytest.raises(ValueError, match=r"arms must have shape \(N, 3\) or \(3,\), got \(4, 2\)"):
         hub_velocities(v, w, np.zeros((4, 2)))
+    with pytest.raises(ValueError, match=r"wind must be finite"):
+        hub_velocities(v, w, arms, wind=[0.0, np.nan, 0.0])
+    with pytest.raises(ValueError, match=r"angular_velocity must be numbers of shape \(N, 3\) or \(3,\), got "
+                                         r"\[0.0, True, 0.0\]"):
+        hub_velocities(v, [0.0, True, 0.0], arms)
+    with pytest.raises(ValueError, match=r"velocity must be numbers"):
+        hub_velocities("fast", w, arms)
 
 
 def test_overflowing_hub_velocity_refused_by_name():

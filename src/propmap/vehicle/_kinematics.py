@@ -16,6 +16,7 @@ import numba
 import numpy as np
 
 from ..core import _jitcache  # noqa: F401 (a writable cache folder for numba before the functions below are cached)
+from ..core.geometry import has_bool, refuse_masked
 
 #: IEEE arithmetic as NumPy's elementwise operations (no contraction into fused multiply-adds)
 _FLAGS = dict(cache=True, error_model="numpy")
@@ -42,7 +43,8 @@ def hub_velocities(velocity, angular_velocity, arms, wind=None) -> np.ndarray:
     Raises
     ------
     ValueError
-        An input not of those shapes, or sample counts other than N and 1, naming the inputs.
+        An input that is not finite numbers (a bool, a string, a masked entry, NaN) or not of
+        those shapes, or sample counts other than N and 1, naming the inputs.
     """
     v, w, r = _rows3("velocity", velocity), _rows3("angular_velocity", angular_velocity), _rows3("arms", arms)
     wind_a = np.zeros((1, 3)) if wind is None else _rows3("wind", wind)
@@ -57,11 +59,21 @@ def hub_velocities(velocity, angular_velocity, arms, wind=None) -> np.ndarray:
 
 def _rows3(name: str, value) -> np.ndarray:
     """``value`` as a C-contiguous, writeable float array of shape (M, 3) (a vector as one row): the
-    compiled loops' one type."""
-    a = np.asarray(value, dtype=float)
+    compiled loops' one type. Numbers only (not bools, not masked), finite; ValueError naming
+    ``name`` otherwise."""
+    refuse_masked(name, value)
+    try:
+        a = np.asarray(value)
+    except (ValueError, OverflowError):  # (ragged nesting, ints beyond int64)
+        a = np.asarray(None)
+    if a.dtype.kind not in "iuf" or has_bool(value):
+        raise ValueError(f"{name} must be numbers of shape (N, 3) or (3,), got {value!r:.60}")
+    a = a.astype(float, copy=False)
     a = a[None, :] if a.ndim == 1 else a
     if a.ndim != 2 or a.shape[1] != 3:
         raise ValueError(f"{name} must have shape (N, 3) or (3,), got {np.shape(value)}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name} must be finite")
     return a if a.flags.c_contiguous and a.flags.writeable else np.array(a, order="C")
 
 
