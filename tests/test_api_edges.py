@@ -350,13 +350,13 @@ def test_read_only_strided_and_fortran_inputs_compile_nothing_more():
     """numba compiles a kernel once per array type, and a read-only, strided or Fortran-ordered array
     is another type: a user's such input (a memory-mapped log, a column of a state array) gave a
     compile of 0.2-1.6 s in the middle of a run (rotor_loads' range check of a strided array did,
-    2026-11-28). rotor_loads, rotor_wrench and vehicle_wrench, one point and batches, with such inputs
-    add no compiled signature to any of propmap's kernels and give the same loads."""
+    2026-11-28). rotor_loads, rotor_wrench, vehicle_wrench and hub_velocities, one point and batches, with
+    such inputs add no compiled signature to any of propmap's kernels and give the same loads."""
     import sys
 
     import numba
 
-    from propmap.vehicle import read_vehicle, vehicle_wrench
+    from propmap.vehicle import hub_velocities, read_vehicle, vehicle_wrench
 
     def signatures():
         return {f"{m}.{k}": len(f.signatures) for m in list(sys.modules) if m.startswith("propmap")
@@ -382,7 +382,10 @@ def test_read_only_strided_and_fortran_inputs_compile_nothing_more():
              lambda f: pm.rotor_wrench(prop, params, f(vel), f(axis), f(om)).force,
              lambda f: pm.rotor_wrench(prop, params, f(vel[0]), f(axis), 800.0).force,
              lambda f: vehicle_wrench(veh, params, f(vel), f(w), f(rot)).force,
-             lambda f: vehicle_wrench(veh, params, f(vel[0]), f(w[0]), f(rot[0])).force)
+             lambda f: vehicle_wrench(veh, params, f(vel[0]), f(w[0]), f(rot[0])).force,
+             # (hub_velocities, which the fits, the flight scores and VehicleMap's batches call: a mutation audit's
+             # K11, its contiguous, writeable copy removed, compiled its loop once more)
+             lambda f: hub_velocities(f(vel), f(w), f(np.array([[0.1, 0.1, 0.0], [-0.1, 0.1, 0.02]])), wind=f(axis)))
     ref = [c(np.array) for c in calls]
     before = signatures()
     for make in (frozen, strided, np.asfortranarray):
