@@ -17,6 +17,7 @@ import numba
 import numpy as np
 
 from ._interp import INCIDENCE_SNAP, snap_incidence, snap_incidence_scalar
+from ._plain import compiled_layout
 from .air import SUPERSONIC_TIP
 from .geometry import has_bool, refuse_masked
 
@@ -105,11 +106,9 @@ def _as_array(name: str, value) -> np.ndarray:
     if a.dtype.kind not in "fiu" or has_bool(value):
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
     a = a.astype(float, copy=False)
-    # (contiguous and writeable: a strided or read-only array is another type to _outside, compiled once more)
-    flat = a.reshape(-1)
-    flags = flat.flags  # (read here, not by np.require: 2 us of a small batch's call, for each input)
-    if not (flags.c_contiguous and flags.writeable):
-        flat = flat.copy()
+    # (contiguous and writeable: a strided or read-only array is another type to _outside, compiled once more;
+    # not by np.require, which cost 2 us of a small batch's call for each input)
+    flat = compiled_layout(a.reshape(-1))
     first, near = _outside(flat, lo, hi, INCIDENCE_SNAP if name == "incidence" else 0.0)
     if first >= 0:  # (beyond the incidence's snap, so as given)
         raise _range_error(name, float(flat[first]))

@@ -9,12 +9,32 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SPINS", "plain_float", "plain_vector"]
+__all__ = ["SPINS", "compiled_layout", "plain_float", "plain_vector"]
 
 
 _F64 = np.dtype(np.float64)
 #: a rotor's spin by name: +1 counter-clockwise about its axis, -1 clockwise (docs/conventions.md)
 SPINS = {"ccw": 1.0, "cw": -1.0}
+
+
+def compiled_layout(a: np.ndarray) -> np.ndarray:
+    """``a`` itself where it is C-contiguous and writeable, else a C-contiguous copy: the one array
+    layout propmap's compiled functions are compiled for (numba compiles per array type, and a
+    read-only, strided or Fortran-ordered array is another: a compile of 0.5-1.6 s in the middle
+    of a run, measured 2026-11-28). A flags check of about 50 ns for an ordinary array.
+
+    Parameters
+    ----------
+    a : ndarray
+        Any shape and dtype (the dtype is kept).
+
+    Returns
+    -------
+    ndarray
+        ``a`` or its copy, of ``a``'s shape and dtype.
+    """
+    flags = a.flags
+    return a if flags.c_contiguous and flags.writeable else np.array(a, order="C")
 
 
 def plain_float(x, *, int64: bool = False) -> float | None:
@@ -71,8 +91,7 @@ def plain_vector(value, n: int, *, int64: bool = False) -> np.ndarray | None:
         if value.shape != (n,):
             return None
         if value.dtype is _F64 or value.dtype == np.float64:  # (identity first: 30 against 95 ns)
-            flags = value.flags
-            return value if flags.c_contiguous and flags.writeable else value.copy()
+            return compiled_layout(value)
         return value.astype(np.float64) if value.dtype.kind in "iuf" else None
     if isinstance(value, (tuple, list)) and len(value) == n:
         xs = [plain_float(x, int64=int64) for x in value]

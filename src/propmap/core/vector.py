@@ -18,7 +18,7 @@ from .airfoil import RECORD_META, Air, AirfoilParams
 from .derivatives import _ODD_LOADS as _ODD  # the loads odd in the in-plane speed V sin(beta)
 from .derivatives import RHO, STILL_AIR
 from ._frame import frames, vectors
-from ._plain import SPINS, plain_float, plain_vector
+from ._plain import SPINS, compiled_layout, plain_float, plain_vector
 from .geometry import Propeller, broadcast_readonly, has_bool, refuse_masked
 from .solver import AIRSPEED_MAX, DEFAULT_DISCRETIZATION, Discretization, RotorLoads, check_model_args, rotor_loads
 
@@ -572,9 +572,7 @@ def checked_frame(V: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray,
 
 def _rows(a: np.ndarray) -> np.ndarray:
     """``a`` (shape S + (3,)) as a C-contiguous, writeable (M, 3) array (the compiled loops' one type)."""
-    a = a.reshape(-1, 3)
-    flags = a.flags
-    return a if flags.c_contiguous and flags.writeable else np.array(a, order="C")
+    return compiled_layout(a.reshape(-1, 3))
 
 
 def wrench_vectors(thrust, drag, torque, rolling_moment, V, z, spin, *, side_force=0.0, pitching_moment=0.0):
