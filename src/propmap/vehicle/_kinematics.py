@@ -45,9 +45,17 @@ def hub_velocities(velocity, angular_velocity, arms, wind=None) -> np.ndarray:
     ValueError
         An input that is not finite numbers (a bool, a string, a masked entry, NaN) or not of
         those shapes, or sample counts other than N and 1, naming the inputs.
+
+    Notes
+    -----
+    The velocity of a point of a rigid body, r_i from its centre of mass: the vehicle model of
+    docs/flight.md (each rotor solved at its hub's V_i, as :func:`propmap.vehicle.vehicle_wrench`),
+    whose steady, level case is the hub velocity of Gill & D'Andrea's level-flight fit (2017,
+    Section III).
     """
-    v, w, r = _rows3("velocity", velocity), _rows3("angular_velocity", angular_velocity), _rows3("arms", arms)
-    wind_a = np.zeros((1, 3)) if wind is None else _rows3("wind", wind)
+    v, w, r = _samples("velocity", velocity, 3), _samples("angular_velocity", angular_velocity, 3), \
+        _samples("arms", arms, 3)
+    wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
     counts = {v.shape[0], w.shape[0], wind_a.shape[0]} - {1}
     if len(counts) > 1:
         raise ValueError(f"velocity, angular_velocity and wind must have the same number of samples (or one), got "
@@ -57,24 +65,26 @@ def hub_velocities(velocity, angular_velocity, arms, wind=None) -> np.ndarray:
     return out
 
 
-def _rows3(name: str, value) -> np.ndarray:
-    """``value`` as a C-contiguous, writeable float array of shape (M, 3) (a vector as one row): the
-    compiled loops' one type. Numbers only (not bools, not masked), finite; ValueError naming
-    ``name`` otherwise."""
+def _samples(name: str, value, n_cols: int) -> np.ndarray:
+    """``value`` as a new C-contiguous float array of shape (N, n_cols), a single row promoted to
+    N = 1 (the compiled loops' one type): vehicle_wrench's, VehicleMap's and :func:`hub_velocities`'
+    inputs. Numbers only (not bools, not masked), finite; ValueError naming ``name`` otherwise."""
     refuse_masked(name, value)
     try:
         a = np.asarray(value)
-    except (ValueError, OverflowError):  # (ragged nesting, ints beyond int64)
-        a = np.asarray(None)
+    except (ValueError, OverflowError):  # ragged nesting, ints beyond int64 (NumPy's message named no argument)
+        raise ValueError(f"{name} must be a rectangular array of numbers of shape (N, {n_cols}) or ({n_cols},), "
+                         f"got {value!r:.60}") from None
     if a.dtype.kind not in "iuf" or has_bool(value):
-        raise ValueError(f"{name} must be numbers of shape (N, 3) or (3,), got {value!r:.60}")
-    a = a.astype(float, copy=False)
-    a = a[None, :] if a.ndim == 1 else a
-    if a.ndim != 2 or a.shape[1] != 3:
-        raise ValueError(f"{name} must have shape (N, 3) or (3,), got {np.shape(value)}")
-    if not np.isfinite(a).all():
+        raise ValueError(f"{name} must be numbers of shape (N, {n_cols}) or ({n_cols},), got {value!r:.60}")
+    a = a.astype(float, order="C")  # (a copy, C-ordered)
+    if a.ndim == 1:
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] != n_cols:
+        raise ValueError(f"{name} must have shape (N, {n_cols}) or ({n_cols},), got {np.shape(value)}")
+    if not np.isfinite(a).all():  # (the method: np.all's dispatch cost more than the test on one sample)
         raise ValueError(f"{name} must be finite")
-    return a if a.flags.c_contiguous and a.flags.writeable else np.array(a, order="C")
+    return a
 
 
 @numba.njit(**_FLAGS)

@@ -30,9 +30,8 @@ from ..core._interp import vehicle_point
 from ..core._plain import plain_vector
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
-from ._kinematics import hub_velocities
+from ._kinematics import _samples, hub_velocities
 from .layout import Vehicle, rotor_geometry
-from .model import _samples
 
 __all__ = ["VehicleMap", "VehicleMapWrench"]
 

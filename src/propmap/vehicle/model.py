@@ -39,7 +39,6 @@ from ..core.units import RPM
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.loads import _new_loads
-from ..core.geometry import has_bool, refuse_masked
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            RotorLoads, check_model_args, model_air, rotor_loads,
@@ -47,7 +46,7 @@ from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEG
 from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
-from ._kinematics import hub_moments, hub_velocity_loop
+from ._kinematics import _samples, hub_moments, hub_velocity_loop
 from .layout import Rotor, Vehicle, cached_rotor_geometry, rotor_geometry
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
@@ -96,26 +95,6 @@ class VehicleWrench:
     force_domega: np.ndarray | None = None
     moment_domega: np.ndarray | None = None
     jacobian: dict | None = None
-
-
-def _samples(name: str, value, n_cols: int | None) -> np.ndarray:
-    """``value`` as a float array of shape (N, n_cols) (a single row is promoted to N = 1)."""
-    refuse_masked(name, value)
-    try:
-        a = np.asarray(value)
-    except (ValueError, OverflowError):  # ragged nesting, ints beyond int64 (NumPy's message named no argument)
-        raise ValueError(f"{name} must be a rectangular array of numbers of shape (N, {n_cols}) or ({n_cols},), "
-                         f"got {value!r:.60}") from None
-    if a.dtype.kind not in "iuf" or has_bool(value):
-        raise ValueError(f"{name} must be numbers, got {value!r:.60}")
-    a = a.astype(float, order="C")  # (a copy, C-ordered: one type for the compiled kinematics, _kinematics.py)
-    if a.ndim == 1:
-        a = a[None, :]
-    if a.ndim != 2 or (n_cols is not None and a.shape[1] != n_cols):
-        raise ValueError(f"{name} must have shape (N, {n_cols}) or ({n_cols},), got {np.shape(value)}")
-    if not np.isfinite(a).all():  # (the method: np.all's dispatch cost more than the test on one sample)
-        raise ValueError(f"{name} must be finite")
-    return a
 
 
 def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_velocity, rotor_omega, *,
