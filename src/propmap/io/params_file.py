@@ -89,6 +89,7 @@ text keys (``comment``, ``source``) must be TOML strings.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 from dataclasses import fields
@@ -296,9 +297,17 @@ def read_coverage(path) -> dict | None:
         As :func:`read_params`.
     """
     path = Path(path)
+    with _reading(path) as data:
+        return coverage_from_dict(data, where=show_path(path))
+
+
+# (a context manager, not a function given the parser: the parser's warnings keep their stacklevel)
+@contextlib.contextmanager
+def _reading(path: Path):
+    """Yield the parameter file ``path`` parsed; a ValueError in the block is raised as a ParamsFileError."""
     data = load_toml(path, ParamsFileError)
     try:
-        return coverage_from_dict(data, where=show_path(path))
+        yield data
     except ValueError as exc:
         raise ParamsFileError(str(exc)) from None
 
@@ -421,11 +430,8 @@ def read_params(path) -> SectionParams:
         ``path`` not a str or os.PathLike.
     """
     path = as_path(path)
-    data = load_toml(path, ParamsFileError)
-    try:
+    with _reading(path) as data:
         return params_from_dict(data, where=show_path(path), label=str(path), fill=True)
-    except ValueError as exc:
-        raise ParamsFileError(str(exc)) from None
 
 
 def write_params(path, params: SectionParams, air: Air | None = None, *, comment: str = "", body=None,
@@ -500,12 +506,9 @@ def read_body(path) -> BodyTable | None:
         As :func:`read_params`.
     """
     path = Path(path)
-    data = load_toml(path, ParamsFileError)
-    try:
+    with _reading(path) as data:
         params_from_dict(data, where=show_path(path))
         return body_from_dict(data, where=show_path(path))
-    except ValueError as exc:
-        raise ParamsFileError(str(exc)) from None
 
 
 _SECTIONS: dict | None = None
