@@ -16,6 +16,7 @@ import pytest
 import propmap as pm
 from propmap.identify import FitOptions, LoadData, fit_loads, loads_from_catalogue
 from propmap.io.catalogue import catalogue
+from propmap.io.params_file import read_body, read_coverage
 
 
 @pytest.fixture(scope="module")
@@ -273,6 +274,9 @@ def test_default_params_refuses_a_name_that_is_none(name, error, said):
     (lambda p: pm.resolve_params(None), TypeError, r"spec must be a set's name or a parameter file's path .*NoneType"),
     (lambda p: pm.resolve_params(5), TypeError, r"spec must be .*got int"),
     (lambda p: pm.read_params(None), TypeError, r"path must be a file path \(str or os.PathLike\), got NoneType"),
+    # the parameter file's other readers named nothing (pathlib's own error; a review, 2026-11-29)
+    (lambda p: read_body(None), TypeError, r"path must be a file path \(str or os.PathLike\), got NoneType"),
+    (lambda p: read_coverage(3), TypeError, r"path must be a file path .*got int"),
     (lambda p: pm.read_geometry(None), TypeError, r"path must be a file path .*got NoneType"),
     (lambda p: pm.read_vehicle(5), TypeError, r"path must be a file path .*got int"),
     (lambda p: pm.rotor_like(None), TypeError, r"propeller must be a Propeller, got NoneType"),

@@ -295,8 +295,10 @@ def read_coverage(path) -> dict | None:
     ------
     ParamsFileError
         As :func:`read_params`.
+    TypeError
+        ``path`` not a str or os.PathLike.
     """
-    path = Path(path)
+    path = as_path(path)
     with _reading(path) as data:
         return coverage_from_dict(data, where=show_path(path))
 
@@ -491,7 +493,8 @@ def read_body(path) -> BodyTable | None:
     ----------
     path : str or Path
         A parameter file (module docstring); the whole file is checked, as
-        :func:`read_params` does (without filling missing keys or warning).
+        :func:`read_params` does, with its warnings (an angle that looks like radians), but
+        without filling missing keys.
 
     Returns
     -------
@@ -504,8 +507,10 @@ def read_body(path) -> BodyTable | None:
     ------
     ParamsFileError
         As :func:`read_params`.
+    TypeError
+        ``path`` not a str or os.PathLike.
     """
-    path = Path(path)
+    path = as_path(path)
     with _reading(path) as data:
         params_from_dict(data, where=show_path(path))
         return body_from_dict(data, where=show_path(path))
