@@ -11,14 +11,14 @@ temporary working directory holding the files the examples name:
 * ``run.csv``: a loads CSV (``rpm, airspeed, thrust, torque, group``) from the bundled UIUC
   static run and J-sweeps of that 3-blade hub (``da4022_5x3.75_3b``), converted by propmap's
   UIUC reader at the 9 in diameter (T = CT rho n^2 D^4, Q = CP rho n^2 D^5 / (2 pi), V = J n D):
-  real measurements of the blade the geometry file describes, at the scale the example reads it.
+  the measurements of the blade the geometry file describes, at the scale the example reads it
+  (their Reynolds numbers are the 5 in runs').
 * ``apce_8x6.nc``: a rotor map made by the documented command (``propmap map apce_8x6 --out
   apce_8x6.nc``) on a small grid (4 x 4 x 7 nodes), so that the test is quick.
 
-A block fails with its file and opening line in the traceback (the code is compiled under the
-name ``docs/simulators.md:150``). The examples print or evaluate expressions whose values are
-not checked; a few outcomes are (``_CHECKS``). Everything used is bundled with the package: no
-``../shared`` data is needed.
+A failing block's traceback names the markdown file and its line (``.../docs/simulators.md:286``).
+The examples print or evaluate expressions whose values are not checked; a few outcomes are
+(``_CHECKS``). Everything used is bundled with the package: no ``../shared`` data is needed.
 """
 
 from __future__ import annotations
@@ -163,7 +163,8 @@ def test_python_examples_run(doc, inputs, tmp_path, monkeypatch):
     name = doc.relative_to(REPO).as_posix()
     namespace = {"__name__": "__main__"}
     for line, code in EXAMPLES[doc]:
-        exec(compile(code, f"{name}:{line}", "exec"), namespace)  # the documentation's own code
+        # (padded so that a traceback gives the markdown file's own line numbers)
+        exec(compile("\n" * line + code, str(doc), "exec"), namespace)  # the documentation's own code
     check = _CHECKS.get(name)
     if check is not None:
         check(namespace)
