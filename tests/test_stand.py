@@ -927,7 +927,10 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
 
 @pytest.mark.parametrize("header, factor", [("Motor Speed (RPM)", 1.0), ("Rotational speed (rad/s)", 30 / np.pi),
                                             ("rotor_speed_hz", 60.0), ("Propeller speed [rpm]", 1.0),
-                                            ("RPS", 60.0), ("rev/s", 60.0)])  # (the last two refused before)
+                                            ("RPS", 60.0), ("rev/s", 60.0),  # (the last two refused before)
+                                            # (refused until 2026-11-29: hand-made stands' spreadsheets)
+                                            ("Motor RPM", 1.0), ("Prop Speed (RPM)", 1.0), ("prop_rpm", 1.0),
+                                            ("Propeller RPM", 1.0), ("rotor rpm (rad/s)", 30 / np.pi)])
 def test_the_rotation_speed_is_read_by_other_names_exports_give_it(tmp_path, header, factor):
     """Stand software and hand-made tables also name the rotation speed motor, rotor, propeller or
     rotational speed (with a unit): each is read as the rpm (converted); before, "Motor Speed

@@ -7,9 +7,9 @@ thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``
 ``Thrust (kgf)`` or ``(gf)``, ``(N)``, ``(lbf)``, ``Torque (N·m)`` (not on the 1520),
 ``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
 mark), as the stand's software writes them; the rotation speed also as ``Motor Speed (RPM)``,
-``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``, ``omega`` (rad/s without a
-unit). This module maps the
-columns; :mod:`propmap.identify.steps` turns a "steps" test into one averaged point per ESC step.
+``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``, ``Prop Speed``, ``Motor RPM``,
+``omega`` (rad/s without a unit). This module maps the columns; :mod:`propmap.identify.steps`
+turns a "steps" test into one averaged point per ESC step.
 
 Units (a quantity without a unit is SI, rpm for rotation speed):
 
@@ -86,8 +86,10 @@ _NAMES = {
     "rotor_drag": ("drag", "force"),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
     "omega": ("rpm", "rotation"), "rps": ("rpm", "rotation"), "rev/s": ("rpm", "rotation"),
-    **{f"{who}{sep}speed": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "rotational")
+    **{f"{who}{sep}speed": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "prop", "rotational")
        for sep in " _"},
+    # (Motor RPM, Prop RPM: the hand-made stands' spreadsheets; 'prop speed' too. A user-level check, 2026-11-29)
+    **{f"{who}{sep}rpm": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "prop") for sep in " _"},
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
