@@ -17,6 +17,7 @@ from propmap.core.units import RPM
 
 from propmap.identify import DataError, FitOptions, LoadData, fit_loads, read_loads
 from propmap.identify.data import sanity_check
+from propmap.identify.csvfile import PREAMBLE_MAX_LINES
 
 from stand_exports import COLUMNS, G0, THRUST_UNITS, write_steps_export
 
@@ -203,6 +204,39 @@ def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):
     path.write_text("rpm,thrust,torque\n3000,0.9,0.01\n4000,x1.6,0.02\n")  # a later bad cell: no such hint
     with pytest.raises(DataError, match=r"'x1.6' is not a number$"):
         read_loads(path)
+
+
+def test_a_preamble_above_the_header_is_skipped_with_a_note(tmp_path):
+    """A test's name, a date and the stand's settings above the header were refused as 'no
+    rotation-speed column' (a user-level check, 2026-11-29). The header is now the first line
+    below that names the columns, a note says which lines were skipped, and every message keeps
+    the file's own line numbers."""
+    rows = "3000,0.90,0.010\n4000,1.60,0.018\n5000,2.50,0.028\n6000,3.60,0.040\n7000,4.90,0.054\n8000,6.40,0.070\n"
+    path = tmp_path / "p.csv"
+    path.write_text("Test: APC 8x6E, stand 3\nDate,2026-11-29\n\nrpm,thrust,torque\n" + rows)
+    d = read_loads(path)
+    np.testing.assert_allclose(d.omega, np.arange(3000, 9000, 1000) * np.pi / 30)
+    np.testing.assert_allclose(d.measured["thrust"], [0.9, 1.6, 2.5, 3.6, 4.9, 6.4])
+    assert any("lines 1-3 above the header (line 4) not read: a preamble" in n for n in d.notes)
+    path.write_text("Test: APC 8x6E\nrpm,thrust,torque\n" + rows.replace("2.50", "x2.5"))  # line 5, as in the file
+    with pytest.raises(DataError, match=r"p.csv, line 5: column 'thrust': 'x2.5' is not a number"):
+        read_loads(path)
+    # a ';'-separated export with a decimal comma, its preamble in the same form
+    path.write_text("Prüfstand;Schub-Test 1\nDrehzahl (U/min);Schub (N);Drehmoment (N·m)\n"
+                    + rows.replace(",", ";").replace(".", ","), encoding="utf-8")
+    d = read_loads(path)
+    np.testing.assert_allclose(d.measured["torque"], [0.010, 0.018, 0.028, 0.040, 0.054, 0.070])
+    assert any("line 1 above the header (line 2)" in n for n in d.notes)
+    # no line names the columns: the first line's message, as before
+    path.write_text("Force (N),Moment (N m),RPM\n" + rows)
+    with pytest.raises(DataError, match=r"p.csv: no load column"):
+        read_loads(path)
+    # the header is looked for in the PREAMBLE_MAX_LINES lines below the first, not further
+    path.write_text("note\n" * (PREAMBLE_MAX_LINES + 1) + "rpm,thrust,torque\n" + rows)
+    with pytest.raises(DataError, match=r"no rotation-speed column"):
+        read_loads(path)
+    path.write_text("note\n" * PREAMBLE_MAX_LINES + "rpm,thrust,torque\n" + rows)
+    assert len(read_loads(path).omega) == 6
 
 
 @pytest.mark.parametrize("header, match", [
@@ -1071,7 +1105,9 @@ def test_more_ways_of_writing_a_name_and_unit_are_read(tmp_path, header, sep):
 
 
 @pytest.mark.parametrize("text, match", [
-    ("RCbenchmark Steps Test\nTime (s),ESC signal (µs),Thrust (N),Motor Optical Speed (RPM)\n0,1000,0,0\n",
+    # (a preamble of up to PREAMBLE_MAX_LINES lines is skipped since 2026-11-29: a longer one is named)
+    ("RCbenchmark Steps Test\n" + "setting\n" * PREAMBLE_MAX_LINES
+     + "Time (s),ESC signal (µs),Thrust (N),Motor Optical Speed (RPM)\n0,1000,0,0\n",
      r"found 'RCbenchmark Steps Test'; lines above the header \(a title, the test's settings\)\? remove them"),
     ("thrust (N),torque (N m)\n1.0,0.01\n", r"found 'thrust \(N\)', 'torque \(N m\)'$"),
     ("rpm,thrust,App message,\n3000,0.5,ok,\n4000,0.9,Warning: current 30 A, check ESC\n",

@@ -67,6 +67,8 @@ RANGES = {
 }
 #: the longest column name accepted [characters]
 MAX_NAME = 255
+#: lines below the first that :meth:`_Csv.after_preamble` tries as the header (a preamble's length)
+PREAMBLE_MAX_LINES = 40
 #: the most lines a CSV may have (bounds the time a 200 MiB file of tiny lines takes)
 MAX_LINES = 10_000_000
 
@@ -168,6 +170,11 @@ class _Csv:
         if n_lines > MAX_LINES:
             raise DataError(f"{what}: {self.name}: {n_lines:,} lines; a data file may have at most {MAX_LINES:,}")
         self._raw = raw
+        self._find_header()
+
+    def _find_header(self) -> None:
+        """The separator and the header: the first non-blank line of ``self._raw``."""
+        raw = self._raw
         # ',', ';' (spreadsheets in locales with a decimal comma) or a tab, from the header line
         # (and its first data row: a separator that occurs as often in both)
         lines = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=8)[:8]
@@ -193,6 +200,41 @@ class _Csv:
                                  self.header_line)
             seen[c] = j
         self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
+
+    def after_preamble(self, accepts, max_lines: int = PREAMBLE_MAX_LINES) -> _Csv | None:
+        """This file read with its header further down: the first of the next ``max_lines``
+        non-blank lines whose cells ``accepts`` (a callable of the header's cells, True where they
+        name the columns the reader needs) and which a row follows, the lines above it blanked
+        (so that every message keeps the file's own line numbers) and named in a note; None where
+        no line is accepted. For a preamble above the header (a test's name, a date, the stand's
+        settings; a user-level check of thrust-stand exports, 2026-11-29: such a file was refused
+        as having no rotation-speed column)."""
+        breaks = re.finditer(rb"\r\n|\r(?!\n)|\n", self._raw)
+        starts = [m.end() for _, m in zip(range(max_lines + 1), breaks)]
+        for k, start in enumerate(starts[:max_lines], start=2):  # k: the candidate header's line number
+            text = re.split(rb"\r\n|\r|\n", self._raw[start:start + 65536], maxsplit=2)[:2]
+            line, *after = [t.decode("utf-8", "replace") for t in text]
+            if not line.strip():
+                continue  # (a blank line, or the end of the file: not a header)
+            # (its cells checked first, so that a file with no such line is copied no time)
+            cells = next(csv.reader([line], delimiter=header_separator(line, after[0] if after else None)), [])
+            if not accepts([c.strip() for c in cells]):
+                continue
+            other = object.__new__(_Csv)
+            other.what, other.name, other.notes = self.what, self.name, list(self.notes)
+            other._raw = re.sub(rb"[^\r\n]", b"", self._raw[:start]) + self._raw[start:]  # (line breaks kept)
+            try:
+                other._find_header()
+                rows = other._rows()
+                next(rows)
+                next(rows)  # (a row under it)
+            except (DataError, StopIteration):
+                continue
+            if other.header_line == k and accepts(other.header):
+                above = "line 1" if k == 2 else f"lines 1-{k - 1}"
+                other.notes.append(f"{self.name}: {above} above the header (line {k}) not read: a preamble")
+                return other
+        return None
 
     def _windows_1252(self, raw: bytes, exc: DataError) -> bytes:
         """Text that is not UTF-8 but Windows-1252 (a spreadsheet saved on Windows: 'µs', 'N·m',

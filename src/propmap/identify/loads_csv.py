@@ -115,10 +115,18 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
     p = f.name
+
+    def columns(header):
+        return map_columns(header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
+
     try:
-        cm = map_columns(f.header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
+        cm = columns(f.header)
     except DataError as exc:
-        raise DataError(f"{what}: {p}: {exc}") from None
+        # a preamble above the header (a test's name, a date): the first line below that names the columns
+        below = f.after_preamble(lambda header: _succeeds(columns, header))
+        if below is None:
+            raise DataError(f"{what}: {p}: {exc}") from None
+        f, cm = below, columns(below.header)
     notes = [*f.notes, *cm.notes]
     power = [c for c in f.header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
              in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
@@ -349,6 +357,15 @@ PROPELLER_COLUMNS = ("propeller", "prop", "propeller name", "propeller model", "
 #: what may stand in brackets after such a name: 'Propeller (name)' names the propeller, 'Prop (in)' or 'Propeller
 #: (rpm)' is a size or a speed, not a name (a review)
 PROPELLER_COLUMN_UNITS = (None, "name", "id", "model", "type", "-")
+
+
+def _succeeds(call, *args) -> bool:
+    """Whether ``call(*args)`` returns without a DataError."""
+    try:
+        call(*args)
+    except DataError:
+        return False
+    return True
 
 
 def _propeller_column(base: str, unit: str | None) -> bool:

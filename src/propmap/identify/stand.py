@@ -360,7 +360,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 if pair else "")
         if not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
             hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
-                    "are the file's first line")
+                    "are the file's first line (a load file's header is looked for in its first 41 lines)")
         raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
     split = {name: split_header(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
