@@ -13,7 +13,10 @@ Writes benchmarks/results/everyday.json atomically and prints it.
   2,000 calls, split into the compiled kernel alone (``_kernel.solve_batch_serial`` on
   prepared arrays) and the Python wrapper around it (input checks, nodes, the result); their
   ratio (issue 20's target: the call within 1.3x of the kernel alone); one ``rotor_wrench`` call
-  at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call.
+  at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call; one
+  step of the example quadrotor with the full model (``vehicle_wrench``: four apce_8x6 rotors at
+  about that rate, 10 m/s forward, 1 m/s up, turning; since 2026-11-29), and its ratio to the
+  ``rotor_loads`` call (four rotors: about 4 if the step cost only its rotors' solves).
   Each set is timed in :data:`PROCESSES` fresh processes (``--single-call SET``, run by
   :func:`single_call_processes`): the median over processes of each figure, with the
   processes' range of the wrapper and the ratio (each figure is its own median, so the
@@ -97,7 +100,11 @@ def single_call(params, n=2000):
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((_kernel.N_COUNTS, 1), np.int64),
             np.empty((_kernel.N_FLAGS, 1), np.bool_))
     vel, axis = np.array([V * math.sin(b), 0.0, V * math.cos(b)]), np.array([0.0, 0.0, 1.0])  # the same point
-    total, kernel, wrench = [], [], []
+    # one simulator step of the example quadrotor (four apce_8x6) with the full model, flying at 10 m/s, yawing
+    veh = pm.read_vehicle("quadrotor")
+    step = (np.array([[V, 0.0, -1.0]]), np.array([[0.1, -0.2, 0.3]]), np.array([[om, 1.02 * om, 0.98 * om, om]]))
+    pm.vehicle_wrench(veh, params, *step)
+    total, kernel, wrench, vehicle = [], [], [], []
     for _ in range(n):  # interleaved, so that drift of the machine's speed hits all alike
         t = time.perf_counter()
         pm.rotor_loads(prop, params, om, V, b)
@@ -108,9 +115,14 @@ def single_call(params, n=2000):
         t = time.perf_counter()
         pm.rotor_wrench(prop, params, vel, axis, om)
         wrench.append(time.perf_counter() - t)
+        t = time.perf_counter()
+        pm.vehicle_wrench(veh, params, *step)
+        vehicle.append(time.perf_counter() - t)
     tot, ker, wr = float(np.median(total)), float(np.median(kernel)), float(np.median(wrench))
+    veh_step = float(np.median(vehicle))
     return {"rotor_loads_us_median": 1e6 * tot, "kernel_us_median": 1e6 * ker, "wrapper_us": 1e6 * (tot - ker),
-            "ratio_call_to_kernel": tot / ker, "rotor_wrench_us_median": 1e6 * wr, "ratio_wrench_to_loads": wr / tot}
+            "ratio_call_to_kernel": tot / ker, "rotor_wrench_us_median": 1e6 * wr, "ratio_wrench_to_loads": wr / tot,
+            "vehicle_step_us_median": 1e6 * veh_step, "ratio_vehicle_step_to_loads": veh_step / tot}
 
 
 def _single_params(name: str):

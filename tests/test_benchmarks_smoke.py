@@ -37,3 +37,15 @@ def test_the_peer_benchmark_without_dynbem_says_how_to_install_it_and_exits_0(mo
     assert stop.value.code == 0
     out = capsys.readouterr().out
     assert out.count("\n") == 1 and "pip install \"dynbem>=0.8,<0.9\"" in out
+
+
+def test_the_single_call_benchmark_times_each_path_it_reports():
+    """bench_everyday's one-point figures (the call, the kernel alone, rotor_wrench and, since
+    2026-11-29, one full-model step of the example quadrotor) run against the package."""
+    import propmap as pm
+
+    res = _module("bench_everyday").single_call(pm.preset("gill2017-apc"), n=3)
+    assert set(res) == {"rotor_loads_us_median", "kernel_us_median", "wrapper_us", "ratio_call_to_kernel",
+                        "rotor_wrench_us_median", "ratio_wrench_to_loads", "vehicle_step_us_median",
+                        "ratio_vehicle_step_to_loads"}
+    assert all(v > 0 for k, v in res.items() if k != "wrapper_us")
