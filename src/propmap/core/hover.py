@@ -19,12 +19,15 @@ __all__ = ["HoverModel"]
 
 
 def _finite_rates(omega) -> np.ndarray:
-    """``omega`` as a float array, refused (ValueError naming it) where not all finite numbers."""
+    """``omega`` as a float array, refused (ValueError naming it) where not all finite numbers
+    (text refused in every form: NumPy reads b"800", ["800"] and a text array as 800 rad/s)."""
     try:
-        w = np.asarray(omega, dtype=float)
+        raw = np.asarray(omega)
+        w = np.asarray(raw, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"omega must be a number or an array of numbers [rad/s], got {omega!r:.60}") from None
-    if isinstance(omega, str) or not np.all(np.isfinite(w)):
+    text = raw.dtype.kind in "SU" or (raw.dtype.kind == "O" and any(isinstance(v, (str, bytes)) for v in raw.flat))
+    if text or not np.all(np.isfinite(w)):
         raise ValueError(f"omega must be finite numbers [rad/s], got {omega!r:.60}")
     if has_bool(omega):  # (True read as 1 rad/s; from_model refuses it too)
         raise ValueError(f"omega must be numbers [rad/s], not booleans, got {omega!r:.60}")
