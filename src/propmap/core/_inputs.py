@@ -98,7 +98,9 @@ def _as_array(name: str, value) -> np.ndarray:
     refuse_masked(name, value)
     if a.dtype.kind == "O":
         try:
-            if any(v is None for v in a.reshape(-1)):  # (float(None) fails, but an array's None casts to NaN)
+            # (float(None) fails, but an array's None casts to NaN; and a text, "800", cast to 800: a mutation
+            # audit, 2026-11-29, where the list [800.0, "800"] was refused)
+            if any(v is None or isinstance(v, (str, bytes)) for v in a.reshape(-1)):
                 raise TypeError
             a = a.astype(float)
         except (TypeError, ValueError, OverflowError):
