@@ -15,7 +15,7 @@ Writes benchmarks/results/everyday.json atomically and prints it.
   ratio (issue 20's target: the call within 1.3x of the kernel alone); one ``rotor_wrench`` call
   at the same point (velocity and axis vectors), and its ratio to the ``rotor_loads`` call; one
   step of the example quadrotor with the full model (``vehicle_wrench``: four apce_8x6 rotors at
-  about that rate, 10 m/s forward, 1 m/s up, turning; since 2026-11-29), and its ratio to the
+  about that rate, 10 m/s forward, sinking at 1 m/s, turning; since 2026-11-29), and its ratio to the
   ``rotor_loads`` call (four rotors: about 4 if the step cost only its rotors' solves).
   Each set is timed in :data:`PROCESSES` fresh processes (``--single-call SET``, run by
   :func:`single_call_processes`): the median over processes of each figure, with the
@@ -100,7 +100,7 @@ def single_call(params, n=2000):
             np.empty((_kernel.N_RAD, 1, nr)), np.empty((_kernel.N_COUNTS, 1), np.int64),
             np.empty((_kernel.N_FLAGS, 1), np.bool_))
     vel, axis = np.array([V * math.sin(b), 0.0, V * math.cos(b)]), np.array([0.0, 0.0, 1.0])  # the same point
-    # one simulator step of the example quadrotor (four apce_8x6) with the full model, flying at 10 m/s, yawing
+    # one step of the example quadrotor (four apce_8x6; body z up), full model: 10 m/s, sinking, turning
     veh = pm.read_vehicle("quadrotor")
     step = (np.array([[V, 0.0, -1.0]]), np.array([[0.1, -0.2, 0.3]]), np.array([[om, 1.02 * om, 0.98 * om, om]]))
     pm.vehicle_wrench(veh, params, *step)
