@@ -104,7 +104,7 @@ def single_call(params, n=2000):
     veh = pm.read_vehicle("quadrotor")
     step = (np.array([[V, 0.0, -1.0]]), np.array([[0.1, -0.2, 0.3]]), np.array([[om, 1.02 * om, 0.98 * om, om]]))
     pm.vehicle_wrench(veh, params, *step)
-    total, kernel, wrench, vehicle = [], [], [], []
+    total, kernel, wrench = [], [], []
     for _ in range(n):  # interleaved, so that drift of the machine's speed hits all alike
         t = time.perf_counter()
         pm.rotor_loads(prop, params, om, V, b)
@@ -115,14 +115,21 @@ def single_call(params, n=2000):
         t = time.perf_counter()
         pm.rotor_wrench(prop, params, vel, axis, om)
         wrench.append(time.perf_counter() - t)
+    tot, ker, wr = float(np.median(total)), float(np.median(kernel)), float(np.median(wrench))
+    # the vehicle step in a loop of its own, with its own rotor_loads calls for the ratio: timed between the calls
+    # above, its code and data evicted theirs and raised the wrapper's figure (20-35 -> 32-60 us, 2026-11-29)
+    loads, vehicle = [], []
+    for _ in range(max(1, n // 4)):
         t = time.perf_counter()
         pm.vehicle_wrench(veh, params, *step)
         vehicle.append(time.perf_counter() - t)
-    tot, ker, wr = float(np.median(total)), float(np.median(kernel)), float(np.median(wrench))
+        t = time.perf_counter()
+        pm.rotor_loads(prop, params, om, V, b)
+        loads.append(time.perf_counter() - t)
     veh_step = float(np.median(vehicle))
     return {"rotor_loads_us_median": 1e6 * tot, "kernel_us_median": 1e6 * ker, "wrapper_us": 1e6 * (tot - ker),
             "ratio_call_to_kernel": tot / ker, "rotor_wrench_us_median": 1e6 * wr, "ratio_wrench_to_loads": wr / tot,
-            "vehicle_step_us_median": 1e6 * veh_step, "ratio_vehicle_step_to_loads": veh_step / tot}
+            "vehicle_step_us_median": 1e6 * veh_step, "ratio_vehicle_step_to_loads": veh_step / float(np.median(loads))}
 
 
 def _single_params(name: str):
