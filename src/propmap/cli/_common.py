@@ -366,9 +366,11 @@ class PropChoice:
 
 
 prop_options = [
-    click.option("--diameter-in", type=float, default=None, help="Diameter [in] for geometry files that lack it."),
+    click.option("--diameter-in", type=float, default=None, help="Diameter [in] for geometry files that lack it (a "
+                                                                  "family file beside UIUC data: from their names)."),
     click.option("--blades", type=int, default=None, help="Blade count; required for UIUC geometry files (they do not "
-                                                          "state it), checked against PE0 files."),
+                                                          "state it; beside UIUC data files named for the propeller: "
+                                                          "from their names), checked against PE0 files."),
 ]
 #: adds --diameter-in and --blades, passed as ``prop_choice`` (a PropChoice)
 with_prop_options = option_group("prop_choice", PropChoice, prop_options)

@@ -5,6 +5,7 @@ are named for another propeller, and the data's digests recorded in ``[coverage]
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -120,7 +121,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
-    prop = prop_choice.load(prop_spec)
+    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice).load(prop_spec)
     try:
         other = [s for s in sources if not looks_like_uiuc(s)]
         if not other:
@@ -155,6 +156,83 @@ def file_air(data, air, air_choice, what: str = "fit"):
     return air
 
 
+#: a UIUC data file's name: the propeller, then "static" and the run id or the run id and the nominal rpm (the run
+#: id digits then letters, 2801rd, or letters then digits, rd0989, pg0812, kt0535)
+_UIUC_RUN = re.compile(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$",
+                       re.IGNORECASE)
+#: a hub's blade count at the end of a UIUC propeller name (vol. 2's ``da4022_5x3.75_3b``)
+_HUB = re.compile(r"(.+)_([1-9])b", re.IGNORECASE)
+
+
+def _geometry_base(name: str) -> str:
+    """A geometry's propeller name without ``_geom`` and a hub's blade count, in lower case."""
+    return re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", name, flags=re.IGNORECASE).lower())
+
+
+def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> PropChoice:
+    """The blade count and diameter a UIUC geometry file lacks, from the UIUC data files named for it.
+
+    A UIUC geometry file (``r/R c/R beta``) states neither; UIUC's data files name their
+    propeller (``mi_4x2.7_static_0564rd.txt``), its size (a family geometry file,
+    ``da4052_geom.txt``, has none in its name) and, for the 3- and 4-blade hubs of vol. 2 only, the
+    blade count (``da4022_5x3.75_3b_...``; a name without it is a 2-blade propeller, UIUC's
+    convention, or the catalogue's count for a catalogue propeller, ``pl_triturbo`` 3). Where
+    every SOURCE is a UIUC-format file whose name is for the geometry's propeller (or a size of
+    its family), a --blades or --diameter-in not given is taken from them, each said in a note
+    naming the option that overrides it. Anything else (a CSV, a catalogue PROP, a PE0 file,
+    files named for several propellers or another one) leaves ``prop_choice`` as it is, and the
+    geometry reader asks for what is missing.
+
+    Parameters
+    ----------
+    sources : sequence of str
+        The SOURCE files.
+    prop_spec : str
+        --prop: a catalogue name or a geometry file.
+    prop_choice : PropChoice
+        --diameter-in and --blades as given.
+
+    Returns
+    -------
+    PropChoice
+    """
+    from ..io.catalogue import catalogue
+    from ..io.geometry_files import geometry_format, size_from_name
+    from ..io.readers import looks_like_uiuc
+
+    if prop_choice.blades is not None and prop_choice.diameter_in is not None:
+        return prop_choice
+    if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
+        return prop_choice
+    runs = [_UIUC_RUN.match(Path(s).name) for s in sources]
+    named = {m.group(1).lower() for m in runs if m}
+    if None in runs or len(named) != 1 or not all(looks_like_uiuc(s) for s in sources):
+        return prop_choice
+    named = named.pop()
+    hub = _HUB.fullmatch(named)
+    bare = hub.group(1) if hub else named
+    base = _geometry_base(re.sub(r"\.txt$", "", Path(prop_spec).name, flags=re.IGNORECASE))
+    if not (bare == base or bare.startswith(base + "_")):
+        return prop_choice
+    blades, diameter_in = prop_choice.blades, prop_choice.diameter_in
+    shown = _short(Path(sources[0]).name)
+    if blades is None:
+        entry = catalogue().get(named)
+        blades = entry.n_blades if entry is not None else int(hub.group(2)) if hub else 2
+        why = ("the catalogue's count for it" if entry is not None else "its hub suffix" if hub else
+               "UIUC's names mark only the 3- and 4-blade hubs, _3b and _4b")
+        click.echo(f"propmap: note: {blades} blades, from the UIUC data files' name ({shown}: {why}); give --blades "
+                   "if the propeller measured has another count", err=True)
+    if diameter_in is None and size_from_name(base)[0] is None:
+        D, _, unit, _ = size_from_name(bare)
+        if D is not None:
+            diameter_in = D / 25.4 if unit == "mm" else D
+            click.echo(f"propmap: note: diameter {diameter_in:.4g} in, from the UIUC data files' name ({shown}; the "
+                       "geometry file's name gives none); give --diameter-in if the propeller measured has another",
+                       err=True)
+    return replace(prop_choice, blades=blades, diameter_in=diameter_in)
+
+
 def warn_other_propeller(sources, prop) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
     fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
@@ -163,22 +241,18 @@ def warn_other_propeller(sources, prop) -> None:
     2 blades), is compared with --blades instead; a family geometry file (``da4002_geom.txt``)
     covers its family's sizes, the size a data file's name gives compared with the geometry's
     diameter (within 5%; read as io.geometry_files.size_from_name reads it)."""
-    import re
-
     from ..io.catalogue import catalogue
     from ..io.geometry_files import size_from_name
 
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
-    base = re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", prop.name, flags=re.IGNORECASE).lower())
+    base = _geometry_base(prop.name)
     for s in sources:
-        # the run id: digits then letters (2801rd) or letters then digits (rd0989, pg0812, kt0535)
-        m = re.match(r"(.+?)_(static_[0-9a-z]+|(?:[0-9]{3,4}[a-z]{2}|[a-z]{2}[0-9]{3,4})_[0-9]+)\.txt$",
-                     Path(s).name, re.IGNORECASE)
+        m = _UIUC_RUN.match(Path(s).name)
         if not (m and base):
             continue
         named = m.group(1).lower()
-        hub = re.fullmatch(r"(.+)_([1-9])b", named)
+        hub = _HUB.fullmatch(named)
         entry = catalogue().get(named)
         if hub:
             named, blades = hub.group(1), int(hub.group(2))

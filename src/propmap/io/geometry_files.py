@@ -31,7 +31,7 @@ from ..core.geometry import INCH, Propeller, rotor_like
 from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, as_path,
                      parse_number, show_path)
 
-__all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "MM_FAMILIES",
+__all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
            "NAME_DIAMETER_RANGE_IN"]
 
 
@@ -410,6 +410,34 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
     return prop
 
 
+def _format(text: str) -> str | None:
+    """``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text."""
+    head = text[:4000]
+    if "STATION" in head and "TWIST" in head:
+        return "pe0"
+    return "uiuc" if _is_uiuc_geometry(text) else None
+
+
+def geometry_format(path) -> str | None:
+    """The format of a geometry file as :func:`read_geometry` tells it, without reading the table.
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    str or None
+        ``"pe0"`` (an APC PE0 file: it states its radius and blade count), ``"uiuc"`` (a UIUC
+        ``r/R c/R beta`` table: neither), or None for a file that cannot be read as text or is
+        in neither format. Never raises.
+    """
+    try:
+        return _format(_read_text(as_path(path), GeometryFileError))
+    except (GeometryFileError, TypeError, OSError):
+        return None
+
+
 def _is_uiuc_geometry(text: str) -> bool:
     """Whether the text has a UIUC geometry header (``r/R ...``) in its first 64 kB, after any
     title, comment or ``key = value`` lines (as :func:`read_uiuc_geometry` reads it)."""
@@ -453,8 +481,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     """
     path = as_path(path)
     text = _read_text(path, GeometryFileError)
-    head = text[:4000]
-    if "STATION" in head and "TWIST" in head:
+    kind = _format(text)
+    if kind == "pe0":
         prop = _apc_pe0(path, text, name=None, source="")
         # (to the file's own precision: RADIUS is printed to 0.01 in)
         if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):
@@ -466,7 +494,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
                                     f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "
                                     "the thrust nearly in proportion)")
         return prop
-    if _is_uiuc_geometry(text):
+    if kind == "uiuc":
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
                               name=None, source="", blades_given=n_blades is not None)  # the file's own errors first
         if n_blades is None:

@@ -1,0 +1,108 @@
+"""A UIUC geometry file states neither its blade count nor, as a family file, its size; UIUC's
+data files named for it do (``geometry_from_uiuc_names``). Data: the bundled UIUC Propeller
+Data Site vol. 1 files of the APC 9x6E (Brandt & Selig, AIAA 2011-1255), copied under a name
+the catalogue does not hold, so that only the names can tell."""
+
+import json
+import shutil
+from importlib import resources
+from pathlib import Path
+
+import pytest
+
+from propmap.io.geometry_files import geometry_format
+
+from test_cli_hostile_maps import run
+
+UIUC_V1 = Path(str(resources.files("propmap") / "data" / "uiuc_v1"))
+APC_PE0 = Path(str(resources.files("propmap") / "data" / "apc_pe0"))
+
+
+def _copies(tmp_path, prop="newco_9x6", geom="newco_9x6_geom.txt"):
+    """The APC 9x6E's static run and one sweep as ``prop``'s UIUC files, its geometry as ``geom``."""
+    static = sorted(UIUC_V1.glob("apce_9x6_static_*.txt"))[0]
+    sweep = sorted(UIUC_V1.glob("apce_9x6_rd*_*.txt"))[0]
+    files = []
+    for src in (static, sweep):
+        dst = tmp_path / src.name.replace("apce_9x6", prop)
+        shutil.copyfile(src, dst)
+        files.append(dst)
+    shutil.copyfile(UIUC_V1 / "apce_9x6_geom.txt", tmp_path / geom)
+    return files, tmp_path / geom
+
+
+def _fit(capsys, tmp_path, files, geom, *options):
+    out = tmp_path / "p.toml"
+    code, _, err = run(capsys, "fit", "loads", *files, "--prop", geom, *options, "--out", out)
+    report = json.loads((tmp_path / "p.report.json").read_text()) if code == 0 else None
+    return code, err, report
+
+
+def test_the_blade_count_from_uiuc_names(tmp_path, capsys):
+    """A 2-blade propeller unless the name marks a hub: fitted without --blades, said in a note;
+    the same files fitted with --blades 2 give the same parameters, without the note."""
+    files, geom = _copies(tmp_path)
+    code, err, report = _fit(capsys, tmp_path, files, geom)
+    assert code == 0, err
+    assert "note: 2 blades, from the UIUC data files' name (newco_9x6_static_" in err
+    assert "UIUC's names mark only the 3- and 4-blade hubs" in err and "give --blades" in err
+    code2, err2, given = _fit(capsys, tmp_path, files, geom, "--blades", "2")
+    assert code2 == 0 and "from the UIUC data files' name" not in err2
+    assert report["coverage"]["n_blades"] == given["coverage"]["n_blades"] == 2
+    assert report["fitted"] == given["fitted"]
+
+
+def test_a_hub_suffix_gives_its_count(tmp_path, capsys):
+    files, geom = _copies(tmp_path, prop="newco_9x6_3b")
+    code, err, report = _fit(capsys, tmp_path, files, geom)
+    assert code == 0 and "note: 3 blades, from the UIUC data files' name" in err and "its hub suffix" in err, err
+    assert report["coverage"]["n_blades"] == 3
+    assert "named for a 3-blade hub" not in err  # (the count taken is the one the check compares with)
+
+
+def test_a_family_geometry_file_takes_the_size_from_the_data(tmp_path, capsys):
+    """``newco_geom.txt`` names no size: the data files' 9 in, said; --diameter-in overrides."""
+    files, geom = _copies(tmp_path, geom="newco_geom.txt")
+    code, err, report = _fit(capsys, tmp_path, files, geom)
+    assert code == 0, err
+    assert "note: diameter 9 in, from the UIUC data files' name" in err
+    assert report["coverage"]["diameter_m"] == pytest.approx(9 * 0.0254)
+    code, err, report = _fit(capsys, tmp_path, files, geom, "--diameter-in", "9.5")
+    assert code == 0 and "note: diameter" not in err
+    assert report["coverage"]["diameter_m"] == pytest.approx(9.5 * 0.0254)
+
+
+@pytest.mark.parametrize("case", ["another propeller", "two propellers", "not UIUC names"])
+def test_nothing_is_taken_from_names_that_do_not_say_it(tmp_path, capsys, case):
+    """Files named for another propeller or for two, or not named as UIUC names its runs: the
+    geometry reader asks for the count, as without data."""
+    files, geom = _copies(tmp_path)
+    if case == "another propeller":
+        files = [f.rename(f.with_name(f.name.replace("newco_9x6", "other_9x6"))) for f in files]
+    elif case == "two propellers":
+        files[1] = files[1].rename(files[1].with_name(files[1].name.replace("newco_9x6", "newco_9x6_3b")))
+    else:
+        files = [f.rename(f.with_name(f"run{i}.txt")) for i, f in enumerate(files)]
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert code == 2 and "does not state the blade count: give it (--blades" in err, err
+
+
+def test_a_csv_takes_nothing_from_names(tmp_path, capsys):
+    """A loads CSV names no propeller, whatever its file name."""
+    files, geom = _copies(tmp_path)
+    csv = tmp_path / "newco_9x6_static_0001rd.csv"
+    csv.write_text("rpm,thrust (N),torque (N m)\n" + "".join(f"{r},{1e-8 * r * r:.6g},{1e-10 * r * r:.6g}\n"
+                                                             for r in range(3000, 7000, 500)))
+    code, _, err = run(capsys, "fit", "loads", csv, "--prop", geom, "--out", tmp_path / "c.toml")
+    assert code == 2 and "does not state the blade count" in err, err
+
+
+def test_geometry_format(tmp_path):
+    _, geom = _copies(tmp_path)
+    assert geometry_format(geom) == "uiuc"
+    assert geometry_format(APC_PE0 / "9x6-PERF.PE0") == "pe0"  # (it states its count: nothing is taken for it)
+    (tmp_path / "x.txt").write_text("radius chord\n0.5 0.1\n")
+    assert geometry_format(tmp_path / "x.txt") is None
+    assert geometry_format(tmp_path / "missing.txt") is None
+    assert geometry_format(tmp_path) is None  # a directory
+    assert geometry_format(3) is None
