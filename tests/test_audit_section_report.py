@@ -1,5 +1,5 @@
 """A mutation audit of core/airfoil.py, identify/result.py and io/mapcheck.py (2026-11-29): each
-test kills a hand-made mutant that survived the suite, by the documented behaviour it changed
+test kills a hand-made mutant that survived the modules' own test files, by the documented behaviour it changed
 (the ranges and defaults of the section records, replace()'s label, the fit report's table, JSON
 and warnings, a map's checks)."""
 
