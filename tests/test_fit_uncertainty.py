@@ -48,6 +48,8 @@ def test_lag1_autocorrelation_of_known_series():
     assert lag1_autocorrelation(_ar1(-0.5, 4000, rng), np.zeros(4000))["n_effective"] == 4000
     with pytest.raises(ValueError, match="one entry per residual row"):
         lag1_autocorrelation(np.zeros(4), np.zeros(3))
+    with pytest.raises(ValueError, match=r"residuals must be of shape \(N,\) or \(N, k\), got shape \(4, 2, 2\)"):
+        lag1_autocorrelation(np.zeros((4, 2, 2)), np.zeros(4))  # (it blamed the groups' length)
     with pytest.raises(ValueError, match="finite"):
         lag1_autocorrelation([0.0, np.nan], [0, 0])
     assert lag1_autocorrelation([1.0, 2.0], [0, 1])["lag1"] is None  # (no group of two rows)

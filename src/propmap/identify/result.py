@@ -483,12 +483,15 @@ def lag1_autocorrelation(residuals, groups) -> dict:
     Raises
     ------
     ValueError
-        ``groups`` not of length N, or residuals not finite.
+        ``residuals`` of more than two dimensions, ``groups`` not of length N, or residuals
+        not finite.
     """
     r = np.asarray(residuals, float)
     r = r[:, None] if r.ndim == 1 else r
     g = np.asarray(groups)
-    if r.ndim != 2 or g.shape != (r.shape[0],):
+    if r.ndim != 2:
+        raise ValueError(f"residuals must be of shape (N,) or (N, k), got shape {r.shape}")
+    if g.shape != (r.shape[0],):
         raise ValueError(f"groups must have one entry per residual row ({r.shape[0]}), got shape {g.shape}")
     if not np.all(np.isfinite(r)):
         raise ValueError("residuals must be finite")
