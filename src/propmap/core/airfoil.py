@@ -403,7 +403,7 @@ class CamberedParams(RotorOptions):
     cd90 : float
         Flat-plate drag at 90 deg [-], in (0, 4] (about 2 for a plate of infinite span).
     re_ref : float
-        Reference chord Reynolds number [-], > 0.
+        Reference chord Reynolds number [-], in (0, 1e9].
     re_exp : float
         Reynolds exponent of the profile drag [-], in [-2, 1] (-0.5 laminar, -0.2
         turbulent; QPROP's REexp).
@@ -418,7 +418,7 @@ class CamberedParams(RotorOptions):
         Reynolds dependence of the zero-lift angle d alpha_L0 / d ln(Re) [rad], in
         [-5, 5] deg (negative, with alpha_L0 < 0: less effective camber at low Re).
     M : float
-        Stall-blend sharpness [1/rad], > 0.
+        Stall-blend sharpness [1/rad], in (0, 1000].
     compressibility : bool
         Prandtl-Glauert factor on the lift.
     tip_loss, hub_loss : bool
