@@ -565,6 +565,21 @@ def test_a_pe0_radius_printed_rounded_reads(shared_data):
         read_geometry(path, diameter_in=4.2)
 
 
+def test_a_pe0_last_station_exactly_half_a_digit_beyond_radius_is_the_tip(tmp_path, shared_data):
+    """A last STATION beyond RADIUS by half its last printed digit is within APC's rounding (read_apc_pe0:
+    refused only 'by more than half'): RADIUS 2.09 and STATION 2.0950 read with the radius 2.095 in
+    (refused before: 2.09 + 0.005 is 2.0949999999999998 in floating point; 592 of the 4975 radii 0.25-49.99
+    in so printed were; a mutation audit of the readers, 2026-11-29); 2.0951 stays refused."""
+    text = (shared_data / "apc_vendor_data" / "geometry_PE0" / "42x2-PERF.PE0").read_text(encoding="latin-1")
+    tip = "      2.0915      0.0001"
+    assert text.count(tip) == 1
+    p = read_apc_pe0(_write(tmp_path, "h-PERF.PE0", text.replace(tip, "      2.0950      0.0001")))
+    assert p.radius == pytest.approx(2.095 * 0.0254, rel=1e-12)
+    beyond = _write(tmp_path, "o-PERF.PE0", text.replace(tip, "      2.0951      0.0001"))
+    refused(GeometryFileError, read_apc_pe0, beyond,
+            match=r"STATION = 2.0951 in is outside \(0, 2.09\] in \(RADIUS\)")
+
+
 def test_uiuc_geometry_ranges(tmp_path):
     p = _write(tmp_path, "g_9x6_geom.txt", GEOM.replace("0.12 20", "1.5 20"))
     refused(GeometryFileError, read_uiuc_geometry, p, match=r"line 3: c/R = 1.5 is outside \[0, 1\]")

@@ -381,11 +381,11 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
         raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
     station, chord = data[:, 0], data[:, 1]
     # RADIUS is printed rounded (42x2-PERF.PE0: RADIUS 2.09 and a last STATION 2.0915 in): a station
-    # beyond it by less than half its last printed digit is the tip, and the radius is taken there
+    # beyond it by up to half its last printed digit is the tip, and the radius is taken there
     digits = r_raw.split(".")[1] if "." in r_raw and r_raw.split(".")[1].isdigit() else ""
     rounding = 0.5 * 10.0 ** -len(digits) if digits else 0.0
-    if radius_in < station[-1] <= radius_in + rounding:
-        radius_in = float(station[-1])
+    if radius_in < station[-1] <= radius_in + rounding * (1 + 1e-9):  # (at exactly half a digit too: 2.09 + 0.005
+        radius_in = float(station[-1])  # is 2.0949999999999998 in floating point)
     for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
                                     ("CHORD", chord, (0.0, radius_in))):
         bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
