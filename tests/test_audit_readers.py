@@ -1,5 +1,6 @@
 """A mutation audit of io/ulog.py, io/geometry_files.py and identify/csvfile.py (2026-11-29): each test kills a
-hand-made mutant that survived the suite, by the documented behaviour it changed."""
+hand-made mutant that survived the modules' own test files (the loads-CSV mutants a shortened set of them), by the
+documented behaviour it changed."""
 
 import math
 import warnings
