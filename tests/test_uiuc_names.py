@@ -106,3 +106,15 @@ def test_geometry_format(tmp_path):
     assert geometry_format(tmp_path / "missing.txt") is None
     assert geometry_format(tmp_path) is None  # a directory
     assert geometry_format(3) is None
+
+
+def test_an_implausible_size_from_the_names_is_not_taken(tmp_path, capsys):
+    """A size the geometry reader would refuse from its own name ([0.5, 100] in: ``newco_130x70``,
+    millimetres of a family not known to give them) is not taken from the data's names either: it
+    was, and the fit was refused as '--diameter-in must be ... in [0.5, 100] in, got 130.0', an
+    option never given (a user-level audit, 2026-11-29)."""
+    files, geom = _copies(tmp_path, prop="newco_130x70", geom="newco_geom.txt")
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert code == 2 and "--diameter-in must be" not in err, err
+    assert "gives a diameter of 130 in, outside the [0.5, 100] in taken from a name" in err
+    assert "diameter unknown" in err

@@ -197,7 +197,7 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
     PropChoice
     """
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import geometry_format, size_from_name
+    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name
     from ..io.readers import looks_like_uiuc
 
     if prop_choice.blades is not None and prop_choice.diameter_in is not None:
@@ -225,11 +225,17 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
                    "if the propeller measured has another count", err=True)
     if diameter_in is None and size_from_name(base)[0] is None:
         D, _, unit, _ = size_from_name(bare)
-        if D is not None:
-            diameter_in = D / 25.4 if unit == "mm" else D
+        d_in = None if D is None else D / 25.4 if unit == "mm" else D
+        lo, hi = NAME_DIAMETER_RANGE_IN
+        if d_in is not None and lo <= d_in <= hi:  # (as the geometry reader takes a size from its own name)
+            diameter_in = d_in
             click.echo(f"propmap: note: diameter {diameter_in:.4g} in, from the UIUC data files' name ({shown}; the "
                        "geometry file's name gives none); give --diameter-in if the propeller measured has another",
                        err=True)
+        elif d_in is not None:
+            click.echo(f"propmap: note: the UIUC data files' name ({shown}) gives a diameter of {d_in:.4g} in, "
+                       f"outside the [{lo:g}, {hi:g}] in taken from a name (a size in millimetres of a family not "
+                       "known to give them?): not taken", err=True)
     return replace(prop_choice, blades=blades, diameter_in=diameter_in)
 
 
