@@ -118,3 +118,20 @@ def test_an_implausible_size_from_the_names_is_not_taken(tmp_path, capsys):
     assert code == 2 and "--diameter-in must be" not in err, err
     assert "gives a diameter of 130 in, outside the [0.5, 100] in taken from a name" in err
     assert "diameter unknown" in err
+
+
+def test_a_family_file_of_another_pitch_is_warned_of(tmp_path, capsys):
+    """A family geometry file is one blade at one pitch: data named for another pitch of the family
+    (``newco_9x3`` with the 9x6's blade as ``newco_geom.txt``; UIUC vol. 2's ``da4052_5x2.65`` with
+    ``da4052_geom.txt``, the design at a 0.75 P/D) were fitted with the file's blade angles and only
+    the size taken from the names, without a word (da4052_5x1.58: refused as 0.285 times the torque;
+    a user-level audit, 2026-11-29). The pitch the names give is compared at 0.75 R."""
+    files, geom = _copies(tmp_path, prop="newco_9x3", geom="newco_geom.txt")
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert "is named for a P/D of 0.333" in err and "a family file is one pitch" in err, err
+    assert err.count("a family file is one pitch") == 1
+    same = tmp_path / "same"
+    same.mkdir()
+    files, geom = _copies(same, prop="newco_9x6", geom="newco_geom.txt")  # (its own pitch: nothing said)
+    code, err, _ = _fit(capsys, same, files, geom)
+    assert code == 0 and "one pitch" not in err, err

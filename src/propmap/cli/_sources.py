@@ -239,6 +239,38 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
     return replace(prop_choice, blades=blades, diameter_in=diameter_in)
 
 
+#: a family geometry file's blade angle at 0.75 R farther than this from the helix of the pitch a data file's name
+#: gives is warned of [deg] (the catalogue's measured blades lie within -5.2 to +3.6 deg of their names' helices; a
+#: DA-series design file, a 0.75 P/D helix, is 5.0-10 deg from the vol. 2 sizes' other pitches)
+PITCH_ANGLE_TOLERANCE_DEG = 4.0
+
+
+def _other_pitch(source, named: str, pitch_ratio: float, prop) -> bool:
+    """Warn (and return True) when a family geometry file's blade angle at 0.75 R is not the pitch
+    the data file's name gives (``da4052_5x2.65_...`` with ``da4052_geom.txt``, the family's design
+    at a 0.75 P/D: 17.7 deg where a 2.65 in pitch at 5 in is 12.7 deg). A family file is one
+    blade at one pitch; its size is taken from the data's names, its pitch is not."""
+    import math
+
+    import numpy as np
+
+    from ..io.catalogue import catalogue
+
+    R = prop.radius
+    geom = math.degrees(float(prop.theta_at(np.array([0.75 * R]))[0]))
+    helix = math.degrees(math.atan(pitch_ratio / (0.75 * math.pi)))
+    if abs(geom - helix) <= PITCH_ANGLE_TOLERANCE_DEG:
+        return False
+    ratio = math.pi * 0.75 * math.tan(math.radians(geom))
+    hint = (f"; the catalogue's {named!r} is that blade at the named pitch (--prop {named})" if named in catalogue()
+            else "")
+    warn(f"SOURCE: {_short(Path(source).name)} is named for a P/D of {pitch_ratio:.3g} (a helix's blade angle "
+         f"{helix:.1f} deg at 0.75 R), used with the family geometry {prop.name}, whose blade angle there is "
+         f"{geom:.1f} deg (a P/D of {ratio:.3g}): a family file is one pitch, its size but not its pitch is taken "
+         f"from the names; give the geometry of the propeller measured{hint}")
+    return True
+
+
 def warn_other_propeller(sources, prop) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
     fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
@@ -276,11 +308,13 @@ def warn_other_propeller(sources, prop) -> None:
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
-        D, _, unit, _ = size_from_name(named)  # (a family geometry file covers its sizes: the size the name gives
+        D, P, unit, _ = size_from_name(named)  # (a family geometry file covers its sizes: the size the name gives
         if D:                                   # is compared, read as the geometry reader reads a name)
             d_in = D / 25.4 if unit == "mm" else D
             if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
                 warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
                      f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "
                      "the propeller measured")
+                return
+            if P and size_from_name(base)[0] is None and _other_pitch(s, named, P / D, prop):
                 return
