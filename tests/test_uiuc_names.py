@@ -135,3 +135,14 @@ def test_a_family_file_of_another_pitch_is_warned_of(tmp_path, capsys):
     files, geom = _copies(same, prop="newco_9x6", geom="newco_geom.txt")  # (its own pitch: nothing said)
     code, err, _ = _fit(capsys, same, files, geom)
     assert code == 0 and "one pitch" not in err, err
+
+
+@pytest.mark.parametrize("name", ["newco_9x6.txt", "newco_9x6.dat", "NEWCO_9x6_geom.TXT"])
+def test_a_geometry_named_without_geom_txt_is_the_same_propeller(tmp_path, capsys, name):
+    """A geometry file named ``newco_9x6.txt`` (the reader names it by the whole file name) was
+    taken as the data's propeller for the blade count and, in the same run, warned of as 'named for
+    propeller 'newco_9x6', used with --prop 'newco_9x6.txt'' (a user-level audit, 2026-11-29)."""
+    files, geom = _copies(tmp_path, geom=name)
+    code, err, report = _fit(capsys, tmp_path, files, geom)
+    assert code == 0 and "note: 2 blades, from the UIUC data files' name" in err, err
+    assert "named for propeller" not in err, err

@@ -165,7 +165,10 @@ _HUB = re.compile(r"(.+)_([1-9])b", re.IGNORECASE)
 
 
 def _geometry_base(name: str) -> str:
-    """A geometry's propeller name without ``_geom`` and a hub's blade count, in lower case."""
+    """A geometry's propeller name without a file extension of letters (``.txt``, ``.dat``; a name's
+    ``4x2.7`` kept), ``_geom`` and a hub's blade count, in lower case. (The geometry reader names a
+    UIUC file without ``_geom.txt`` by its whole file name, ``mi_4x2.7.txt``.)"""
+    name = re.sub(r"\.[a-z]+$", "", name, flags=re.IGNORECASE)
     return re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", name, flags=re.IGNORECASE).lower())
 
 
@@ -211,7 +214,7 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
     named = named.pop()
     hub = _HUB.fullmatch(named)
     bare = hub.group(1) if hub else named
-    base = _geometry_base(re.sub(r"\.txt$", "", Path(prop_spec).name, flags=re.IGNORECASE))
+    base = _geometry_base(Path(prop_spec).name)
     if not (bare == base or bare.startswith(base + "_")):
         return prop_choice
     blades, diameter_in = prop_choice.blades, prop_choice.diameter_in
