@@ -281,7 +281,9 @@ def warn_other_propeller(sources, prop) -> None:
     geometry file shared), or a catalogue propeller's without one (``da4022_5x3.75_static_...``:
     2 blades), is compared with --blades instead; a family geometry file (``da4002_geom.txt``)
     covers its family's sizes, the size a data file's name gives compared with the geometry's
-    diameter (within 5%; read as io.geometry_files.size_from_name reads it)."""
+    diameter (within 5%; read as io.geometry_files.size_from_name reads it), and the pitch it
+    gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
+    is one pitch)."""
     from ..io.catalogue import catalogue
     from ..io.geometry_files import size_from_name
 
