@@ -116,7 +116,7 @@ def test_the_cambered_ranges_end_where_documented():
             "cl_max": (None, 4.0), "cl_min": (-4.0, None), "cd_min": (0.0, 1.0), "cd2": (0.0, 10.0),
             "cl_cdmin": (-2.0, 3.0), "cd90": (None, 4.0), "re_exp": (-2.0, 1.0), "re_exp_lift": (-1.0, 1.0),
             "re_exp_stall": (-1.0, 1.0), "stall_delay": (0.0, 20.0),
-            "alpha_L0_re": (math.radians(-5.0), math.radians(5.0))}
+            "alpha_L0_re": (math.radians(-5.0), math.radians(5.0)), "re_ref": (None, 1e9), "M": (None, 1000.0)}
     for name, (lo, hi) in ends.items():
         for end, step in ((lo, -1e-6), (hi, 1e-6)):
             if end is None:

@@ -12,7 +12,7 @@ import pytest
 
 from propmap.io.geometry_files import geometry_format
 
-from test_cli_hostile_maps import run
+from .test_cli_hostile_maps import run
 
 UIUC_V1 = Path(str(resources.files("propmap") / "data" / "uiuc_v1"))
 APC_PE0 = Path(str(resources.files("propmap") / "data" / "apc_pe0"))
@@ -89,7 +89,7 @@ def test_nothing_is_taken_from_names_that_do_not_say_it(tmp_path, capsys, case):
 
 def test_a_csv_takes_nothing_from_names(tmp_path, capsys):
     """A loads CSV names no propeller, whatever its file name."""
-    files, geom = _copies(tmp_path)
+    _, geom = _copies(tmp_path)
     csv = tmp_path / "newco_9x6_static_0001rd.csv"
     csv.write_text("rpm,thrust (N),torque (N m)\n" + "".join(f"{r},{1e-8 * r * r:.6g},{1e-10 * r * r:.6g}\n"
                                                              for r in range(3000, 7000, 500)))
@@ -128,7 +128,8 @@ def test_a_family_file_of_another_pitch_is_warned_of(tmp_path, capsys):
     a user-level audit, 2026-11-29). The pitch the names give is compared at 0.75 R."""
     files, geom = _copies(tmp_path, prop="newco_9x3", geom="newco_geom.txt")
     code, err, _ = _fit(capsys, tmp_path, files, geom)
-    assert "is named for a P/D of 0.333" in err and "a family file is one pitch" in err, err
+    assert code == 0 and "is named for a P/D of 0.333" in err and "a family file is one pitch" in err, err
+    assert "check that the geometry is the propeller measured" in err
     assert err.count("a family file is one pitch") == 1
     same = tmp_path / "same"
     same.mkdir()
@@ -143,6 +144,44 @@ def test_a_geometry_named_without_geom_txt_is_the_same_propeller(tmp_path, capsy
     taken as the data's propeller for the blade count and, in the same run, warned of as 'named for
     propeller 'newco_9x6', used with --prop 'newco_9x6.txt'' (a user-level audit, 2026-11-29)."""
     files, geom = _copies(tmp_path, geom=name)
-    code, err, report = _fit(capsys, tmp_path, files, geom)
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
     assert code == 0 and "note: 2 blades, from the UIUC data files' name" in err, err
     assert "named for propeller" not in err, err
+
+
+UIUC_V2 = Path(str(resources.files("propmap") / "data" / "uiuc_v2"))
+
+
+def test_a_catalogue_propellers_own_count_and_a_millimetre_family(tmp_path, capsys):
+    """UIUC vol. 2's Plantraco files (Deters, Ananda & Selig, AIAA 2014-2151) with a family file
+    (``pl_geom.txt``, a copy of pl_100x80's blade): the count is the catalogue's for the named
+    propeller, the diameter 100 mm from the name of a millimetre family; and pl_triturbo's own
+    files give its 3 blades, which UIUC's names do not mark."""
+    files = [tmp_path / name for name in ("pl_100x80_static_0581rd.txt", "pl_100x80_0583rd_6039.txt")]
+    for f in files:
+        shutil.copyfile(UIUC_V2 / f.name, f)
+    shutil.copyfile(UIUC_V2 / "pl_100x80_geom.txt", tmp_path / "pl_geom.txt")
+    code, err, report = _fit(capsys, tmp_path, files, tmp_path / "pl_geom.txt")
+    assert code == 0, err
+    assert "note: 2 blades, from the UIUC data files' name (pl_100x80_static_0581rd.txt: the catalogue's count" in err
+    assert "note: diameter 3.937 in = 100 mm, from the UIUC data files' name" in err
+    assert report["coverage"]["diameter_m"] == pytest.approx(0.100)
+    tri = sorted(UIUC_V2.glob("pl_triturbo_*.txt"))[:2]
+    shutil.copyfile(UIUC_V2 / "pl_triturbo_geom.txt", tmp_path / "pl_triturbo_geom.txt")
+    code, out, err = run(capsys, "validate", *tri, "--prop", tmp_path / "pl_triturbo_geom.txt", "--diameter-in", "2.52")
+    assert code == 0 and "note: 3 blades, from the UIUC data files' name" in err and "catalogue's count" in err, err
+    assert "against pl_triturbo (3 blades, D = 0.06401 m)" in out, out
+
+
+def test_validate_takes_the_same_and_a_given_count_is_kept(tmp_path, capsys):
+    """``validate SOURCE... --prop GEOM`` reads the names as ``fit loads`` does; --blades given
+    with a family file: only the diameter is taken."""
+    files, geom = _copies(tmp_path)
+    code, out, err = run(capsys, "validate", *files, "--prop", geom)
+    assert code == 0 and "note: 2 blades, from the UIUC data files' name" in err, err
+    assert "(2 blades, D = 0.2286 m)" in out, out
+    family = tmp_path / "newco_geom.txt"
+    shutil.copyfile(geom, family)
+    code, out, err = run(capsys, "validate", *files, "--prop", family, "--blades", "3")
+    assert code == 0 and "blades, from" not in err and "note: diameter 9 in, from the UIUC data files' name" in err
+    assert "(3 blades, D = 0.2286 m)" in out, out

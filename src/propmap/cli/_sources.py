@@ -172,6 +172,37 @@ def _geometry_base(name: str) -> str:
     return re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", name, flags=re.IGNORECASE).lower())
 
 
+def _uiuc_run_name(source):
+    """(named, bare, hub) of a UIUC data file's name: the propeller it is for (lower case), that
+    without a hub's blade count, and the count (None without one); None for another name."""
+    m = _UIUC_RUN.match(Path(source).name)
+    if m is None:
+        return None
+    named = m.group(1).lower()
+    hub = _HUB.fullmatch(named)
+    return named, hub.group(1) if hub else named, int(hub.group(2)) if hub else None
+
+
+def _name_sizes_in(name: str):
+    """(diameter, pitch) [in] a UIUC name gives, as the geometry reader reads one (millimetres for
+    the MM_FAMILIES); None for each that it does not give or, the diameter, outside
+    NAME_DIAMETER_RANGE_IN (a size in millimetres of a family not known to give them)."""
+    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, size_from_name
+
+    D, P, unit, _ = size_from_name(name)
+    scale = 1 / 25.4 if unit == "mm" else 1.0
+    lo, hi = NAME_DIAMETER_RANGE_IN
+    d_in = None if D is None or not lo <= D * scale <= hi else D * scale
+    return d_in, None if P is None or d_in is None else P * scale
+
+
+def _is_family_file(base: str) -> bool:
+    """Whether a geometry's propeller name gives no size (a family design file, ``da4052_geom``)."""
+    from ..io.geometry_files import size_from_name
+
+    return size_from_name(base)[0] is None
+
+
 def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> PropChoice:
     """The blade count and diameter a UIUC geometry file lacks, from the UIUC data files named for it.
 
@@ -198,6 +229,10 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
     Returns
     -------
     PropChoice
+        ``prop_choice`` with ``blades`` and ``diameter_in`` filled where the names give them (a
+        diameter only within NAME_DIAMETER_RANGE_IN, as the geometry reader takes one from its own
+        name; outside it a note says it was not taken); each value taken, and each not taken, is
+        said in a one-line note on standard error.
     """
     from ..io.catalogue import catalogue
     from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name
@@ -207,13 +242,10 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
         return prop_choice
     if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
         return prop_choice
-    runs = [_UIUC_RUN.match(Path(s).name) for s in sources]
-    named = {m.group(1).lower() for m in runs if m}
-    if None in runs or len(named) != 1 or not all(looks_like_uiuc(s) for s in sources):
+    runs = {_uiuc_run_name(s) for s in sources}
+    if None in runs or len(runs) != 1 or not all(looks_like_uiuc(s) for s in sources):
         return prop_choice
-    named = named.pop()
-    hub = _HUB.fullmatch(named)
-    bare = hub.group(1) if hub else named
+    named, bare, hub = runs.pop()
     base = _geometry_base(Path(prop_spec).name)
     if not (bare == base or bare.startswith(base + "_")):
         return prop_choice
@@ -221,22 +253,23 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
     shown = _short(Path(sources[0]).name)
     if blades is None:
         entry = catalogue().get(named)
-        blades = entry.n_blades if entry is not None else int(hub.group(2)) if hub else 2
+        blades = entry.n_blades if entry is not None else hub if hub else 2
         why = ("the catalogue's count for it" if entry is not None else "its hub suffix" if hub else
                "UIUC's names mark only the 3- and 4-blade hubs, _3b and _4b")
         click.echo(f"propmap: note: {blades} blades, from the UIUC data files' name ({shown}: {why}); give --blades "
                    "if the propeller measured has another count", err=True)
-    if diameter_in is None and size_from_name(base)[0] is None:
+    if diameter_in is None and _is_family_file(base):
+        d_in = _name_sizes_in(bare)[0]  # (as the geometry reader takes a size from its own name)
         D, _, unit, _ = size_from_name(bare)
-        d_in = None if D is None else D / 25.4 if unit == "mm" else D
-        lo, hi = NAME_DIAMETER_RANGE_IN
-        if d_in is not None and lo <= d_in <= hi:  # (as the geometry reader takes a size from its own name)
+        if d_in is not None:
             diameter_in = d_in
-            click.echo(f"propmap: note: diameter {diameter_in:.4g} in, from the UIUC data files' name ({shown}; the "
-                       "geometry file's name gives none); give --diameter-in if the propeller measured has another",
+            mm = f" = {D:g} mm" if unit == "mm" else ""
+            click.echo(f"propmap: note: diameter {diameter_in:.4g} in{mm}, from the UIUC data files' name ({shown}; "
+                       "the geometry file's name gives none); give --diameter-in if the propeller measured has another",
                        err=True)
-        elif d_in is not None:
-            click.echo(f"propmap: note: the UIUC data files' name ({shown}) gives a diameter of {d_in:.4g} in, "
+        elif D is not None:
+            lo, hi = NAME_DIAMETER_RANGE_IN
+            click.echo(f"propmap: note: the UIUC data files' name ({shown}) gives a diameter of {D:g} {unit}, "
                        f"outside the [{lo:g}, {hi:g}] in taken from a name (a size in millimetres of a family not "
                        "known to give them?): not taken", err=True)
     return replace(prop_choice, blades=blades, diameter_in=diameter_in)
@@ -244,7 +277,9 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
 
 #: a family geometry file's blade angle at 0.75 R farther than this from the helix of the pitch a data file's name
 #: gives is warned of [deg] (the catalogue's measured blades lie within -5.2 to +3.6 deg of their names' helices; a
-#: DA-series design file, a 0.75 P/D helix, is 5.0-10 deg from the vol. 2 sizes' other pitches)
+#: DA-series design file, a 0.75 P/D helix, is 5.0-10 deg from the vol. 2 sizes' other pitches: no tolerance
+#: separates them all, and 2 of the 136 sized catalogue propellers, mit_4.3x3.5 at -5.2 and mi_4x2.7 at -4.6 deg,
+#: would be warned of as family files of their own data, so the warning asks to check)
 PITCH_ANGLE_TOLERANCE_DEG = 4.0
 
 
@@ -270,7 +305,7 @@ def _other_pitch(source, named: str, pitch_ratio: float, prop) -> bool:
     warn(f"SOURCE: {_short(Path(source).name)} is named for a P/D of {pitch_ratio:.3g} (a helix's blade angle "
          f"{helix:.1f} deg at 0.75 R), used with the family geometry {prop.name}, whose blade angle there is "
          f"{geom:.1f} deg (a P/D of {ratio:.3g}): a family file is one pitch, its size but not its pitch is taken "
-         f"from the names; give the geometry of the propeller measured{hint}")
+         f"from the names; check that the geometry is the propeller measured{hint}")
     return True
 
 
@@ -285,20 +320,17 @@ def warn_other_propeller(sources, prop) -> None:
     gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
     is one pitch)."""
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import size_from_name
 
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
     base = _geometry_base(prop.name)
     for s in sources:
-        m = _UIUC_RUN.match(Path(s).name)
-        if not (m and base):
+        run = _uiuc_run_name(s)
+        if not (run and base):
             continue
-        named = m.group(1).lower()
-        hub = _HUB.fullmatch(named)
-        entry = catalogue().get(named)
-        if hub:
-            named, blades = hub.group(1), int(hub.group(2))
+        full, named, blades = run
+        entry = catalogue().get(full)
+        if blades is not None:
             if blades != prop.n_blades:
                 warn(f"SOURCE: {_short(Path(s).name)} is named for a {blades}-blade hub ('_{blades}b'), used with "
                      f"{prop.n_blades} blades: give --blades {blades} if that is the hub measured (a fitted section "
@@ -310,16 +342,17 @@ def warn_other_propeller(sources, prop) -> None:
                  "measured (the thrust scales nearly with the blade count)")
             return
         if named != base and not named.startswith(base + "_"):
-            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {m.group(1)!r}, used with --prop "
+            warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {full!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
-        D, P, unit, _ = size_from_name(named)  # (a family geometry file covers its sizes: the size the name gives
-        if D:                                   # is compared, read as the geometry reader reads a name)
-            d_in = D / 25.4 if unit == "mm" else D
+        # (a family geometry file covers its sizes: the size the name gives is compared, read as the geometry reader
+        # reads a name; one outside its range is no size: "give --diameter-in 130" would be refused)
+        d_in, p_in = _name_sizes_in(named)
+        if d_in:
             if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
                 warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
                      f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "
                      "the propeller measured")
                 return
-            if P and size_from_name(base)[0] is None and _other_pitch(s, named, P / D, prop):
+            if p_in and _is_family_file(base) and _other_pitch(s, full, p_in / d_in, prop):
                 return

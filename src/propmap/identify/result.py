@@ -483,7 +483,7 @@ def lag1_autocorrelation(residuals, groups) -> dict:
     Raises
     ------
     ValueError
-        ``residuals`` of more than two dimensions, ``groups`` not of length N, or residuals
+        ``residuals`` not of one or two dimensions, ``groups`` not of length N, or residuals
         not finite.
     """
     r = np.asarray(residuals, float)

@@ -384,8 +384,9 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
     # beyond it by up to half its last printed digit is the tip, and the radius is taken there
     digits = r_raw.split(".")[1] if "." in r_raw and r_raw.split(".")[1].isdigit() else ""
     rounding = 0.5 * 10.0 ** -len(digits) if digits else 0.0
-    if radius_in < station[-1] <= radius_in + rounding * (1 + 1e-9):  # (at exactly half a digit too: 2.09 + 0.005
-        radius_in = float(station[-1])  # is 2.0949999999999998 in floating point)
+    # (at exactly half a digit too: 2.09 + 0.005 is 2.0949999999999998 in floating point)
+    if radius_in < station[-1] <= radius_in + rounding * (1 + 1e-9):
+        radius_in = float(station[-1])
     for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
                                     ("CHORD", chord, (0.0, radius_in))):
         bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
@@ -419,7 +420,7 @@ def _format(text: str) -> str | None:
 
 
 def geometry_format(path) -> str | None:
-    """The format of a geometry file as :func:`read_geometry` tells it, without reading the table.
+    """The format of a geometry file as :func:`read_geometry` tells it, without parsing the table.
 
     Parameters
     ----------
