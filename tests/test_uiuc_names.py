@@ -185,3 +185,14 @@ def test_validate_takes_the_same_and_a_given_count_is_kept(tmp_path, capsys):
     code, out, err = run(capsys, "validate", *files, "--prop", family, "--blades", "3")
     assert code == 0 and "blades, from" not in err and "note: diameter 9 in, from the UIUC data files' name" in err
     assert "(3 blades, D = 0.2286 m)" in out, out
+
+
+def test_no_advice_to_give_a_size_the_cli_refuses(tmp_path, capsys):
+    """Data named ``newco_130x70`` (millimetres of a family not known to give them) with a family
+    file and --diameter-in 5.1: the size comparison read the name as 130 in and advised 'give
+    --diameter-in 130', which the CLI refuses (a review, 2026-11-29); a name's size outside
+    [0.5, 100] in is no size, as for the geometry reader."""
+    files, geom = _copies(tmp_path, prop="newco_130x70", geom="newco_geom.txt")
+    code, err, report = _fit(capsys, tmp_path, files, geom, "--diameter-in", "5.1", "--blades", "2")
+    assert code == 0 and "--diameter-in 130" not in err and "named for a 130 in" not in err, err
+    assert report["coverage"]["diameter_m"] == pytest.approx(5.1 * 0.0254)
