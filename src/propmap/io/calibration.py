@@ -251,7 +251,10 @@ def population(without: str | None = None) -> dict:
     Parameters
     ----------
     without : str, optional
-        A catalogue propeller: the statistics of the fold that excludes its family.
+        A catalogue propeller: the statistics of the fold that excludes its family (the fold
+        whose set :func:`generic_without` gives); for a propeller outside the calibration, the
+        full statistics (which never saw it either), as :func:`generic_without` gives the full
+        generic set.
 
     Returns
     -------
@@ -267,7 +270,9 @@ def population(without: str | None = None) -> dict:
     """
     cal = calibration()
     raw = cal["population"]
-    if without is not None:
+    # (only for a propeller in a fold: every fold excludes one outside the calibration, which got the first
+    # fold's statistics, those without the apc29ff family, beside generic_without's full set: a mutation audit)
+    if without is not None and any(without in members for _, members, _ in cal["generic_folds"]):
         for _, members, pop in cal["generic_folds"]:
             if without not in members and pop is not None:
                 raw = pop
