@@ -196,3 +196,25 @@ def test_no_advice_to_give_a_size_the_cli_refuses(tmp_path, capsys):
     code, err, report = _fit(capsys, tmp_path, files, geom, "--diameter-in", "5.1", "--blades", "2")
     assert code == 0 and "--diameter-in 130" not in err and "named for a 130 in" not in err, err
     assert report["coverage"]["diameter_m"] == pytest.approx(5.1 * 0.0254)
+
+
+def test_nr640_names_give_the_diameter_and_the_blade_angle(tmp_path, capsys):
+    """UIUC vol. 2 names its NR640 runs ``nr640_<D>_<angle>deg`` (the diameter in inches, the blade
+    set to that angle at 0.75 R; Deters, Ananda & Selig, AIAA 2014-2151). Renamed out of the
+    catalogue (zr640) with the NR640 design file (nr640_geom.txt) as a family file: the size is taken
+    from the names; data at 20 deg are warned of, the file's blade being at 15 deg there."""
+    from propmap.io.geometry_files import blade_angle_from_name, size_from_name
+
+    assert size_from_name("nr640_9_15deg_3b") == (9.0, None, "in", "nr640")
+    assert blade_angle_from_name("nr640_5_20deg_geom") == 20.0 and blade_angle_from_name("apce_10x7") is None
+    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", tmp_path / "zr640_geom.txt")  # (the design: 15.0 deg at 0.75 R)
+    for angle in ("15", "20"):
+        runs = [f for f in sorted(UIUC_V2.glob(f"nr640_5_{angle}deg_*.txt")) if "_geom" not in f.name][:2]
+        files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+        for src, dst in zip(runs, files):
+            shutil.copyfile(src, dst)
+        code, out, err = run(capsys, "validate", *files, "--prop", tmp_path / "zr640_geom.txt")
+        assert code == 0 and "note: diameter 5 in, from the UIUC data files' name" in err, err
+        assert "(2 blades, D = 0.127 m)" in out, out
+        said = "is named for a blade angle of 20 deg at 0.75 R" in err
+        assert said == (angle == "20"), err

@@ -283,11 +283,12 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
 PITCH_ANGLE_TOLERANCE_DEG = 4.0
 
 
-def _other_pitch(source, named: str, pitch_ratio: float, prop) -> bool:
+def _other_pitch(source, named: str, pitch_ratio: float | None, prop, angle_deg: float | None = None) -> bool:
     """Warn (and return True) when a family geometry file's blade angle at 0.75 R is not the pitch
     the data file's name gives (``da4052_5x2.65_...`` with ``da4052_geom.txt``, the family's design
-    at a 0.75 P/D: 17.7 deg where a 2.65 in pitch at 5 in is 12.7 deg). A family file is one
-    blade at one pitch; its size is taken from the data's names, its pitch is not."""
+    at a 0.75 P/D: 17.7 deg where a 2.65 in pitch at 5 in is 12.7 deg), or the blade angle at 0.75 R
+    it gives (``angle_deg``: ``nr640_9_20deg`` with ``nr640_geom.txt``, the design at 15 deg). A
+    family file is one blade at one pitch; its size is taken from the data's names, its pitch is not."""
     import math
 
     import numpy as np
@@ -296,16 +297,17 @@ def _other_pitch(source, named: str, pitch_ratio: float, prop) -> bool:
 
     R = prop.radius
     geom = math.degrees(float(prop.theta_at(np.array([0.75 * R]))[0]))
-    helix = math.degrees(math.atan(pitch_ratio / (0.75 * math.pi)))
-    if abs(geom - helix) <= PITCH_ANGLE_TOLERANCE_DEG:
+    target = angle_deg if angle_deg is not None else math.degrees(math.atan(pitch_ratio / (0.75 * math.pi)))
+    if abs(geom - target) <= PITCH_ANGLE_TOLERANCE_DEG:
         return False
     ratio = math.pi * 0.75 * math.tan(math.radians(geom))
     hint = (f"; the catalogue's {named!r} is that blade at the named pitch (--prop {named})" if named in catalogue()
             else "")
-    warn(f"SOURCE: {_short(Path(source).name)} is named for a P/D of {pitch_ratio:.3g} (a helix's blade angle "
-         f"{helix:.1f} deg at 0.75 R), used with the family geometry {prop.name}, whose blade angle there is "
-         f"{geom:.1f} deg (a P/D of {ratio:.3g}): a family file is one pitch, its size but not its pitch is taken "
-         f"from the names; check that the geometry is the propeller measured{hint}")
+    what = (f"a blade angle of {angle_deg:g} deg at 0.75 R" if angle_deg is not None else
+            f"a P/D of {pitch_ratio:.3g} (a helix's blade angle {target:.1f} deg at 0.75 R)")
+    warn(f"SOURCE: {_short(Path(source).name)} is named for {what}, used with the family geometry {prop.name}, "
+         f"whose blade angle there is {geom:.1f} deg (a P/D of {ratio:.3g}): a family file is one pitch, its size "
+         f"but not its pitch is taken from the names; check that the geometry is the propeller measured{hint}")
     return True
 
 
@@ -320,6 +322,7 @@ def warn_other_propeller(sources, prop) -> None:
     gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
     is one pitch)."""
     from ..io.catalogue import catalogue
+    from ..io.geometry_files import blade_angle_from_name
 
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
@@ -354,5 +357,7 @@ def warn_other_propeller(sources, prop) -> None:
                      f"{prop.diameter / 0.0254:.3g} in one ({prop.name}): give --diameter-in {d_in:g} if that is "
                      "the propeller measured")
                 return
-            if p_in and _is_family_file(base) and _other_pitch(s, full, p_in / d_in, prop):
+            angle = blade_angle_from_name(named)
+            if ((p_in or angle is not None) and _is_family_file(base)
+                    and _other_pitch(s, full, p_in and p_in / d_in, prop, angle)):
                 return

@@ -32,7 +32,7 @@ from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table,
                      parse_number, show_path)
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
-           "NAME_DIAMETER_RANGE_IN"]
+           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name"]
 
 
 class GeometryFileError(ValueError):
@@ -58,6 +58,8 @@ LAST_STATION_REFUSED = 0.7
 #: 147 catalogue propellers' files start at 0.15-0.30; a 10 in blade from 0.85 R: 20% of its thrust)
 FIRST_STATION_MAX = 0.4
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
+#: UIUC vol. 2's NR640 names: the diameter [in] and the blade angle at 0.75 R, ``nr640_9_15deg``
+_ANGLE_NAME_RE = re.compile(r"_(?P<D>\d+(?:\.\d+)?)_(?P<A>\d+(?:\.\d+)?)deg(?=_|$)", re.ASCII | re.IGNORECASE)
 
 
 def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
@@ -66,7 +68,9 @@ def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
     Parameters
     ----------
     name : str
-        A propeller's or a file's name (``apce_10x7``, ``ef_130x70_geom``, ``8x6E``).
+        A propeller's or a file's name (``apce_10x7``, ``ef_130x70_geom``, ``8x6E``), or UIUC
+        vol. 2's ``<family>_<D>_<angle>deg`` (``nr640_9_15deg``: 9 in, the blade at 15 deg at
+        0.75 R, :func:`blade_angle_from_name`), whose pitch is not written (None).
 
     Returns
     -------
@@ -76,9 +80,20 @@ def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
     """
     m = _NAME_RE.search(name)
     if not m:
-        return None, None, "in", ""
+        a = _ANGLE_NAME_RE.search(name)
+        if a is None:
+            return None, None, "in", ""
+        return float(a["D"]), None, "in", name[: a.start()].split("_")[-1]
     family = name[: m.start()].rstrip("_").split("_")[-1]
     return float(m["D"]), float(m["P"]), ("mm" if family.lower() in MM_FAMILIES else "in"), family
+
+
+def blade_angle_from_name(name: str) -> float | None:
+    """The blade angle at 0.75 R [deg] that a UIUC vol. 2 name ``<family>_<D>_<angle>deg`` gives
+    (``nr640_5_20deg``: the NR640 blades set to 20 deg; Deters, Ananda & Selig, AIAA 2014-2151),
+    None for another name."""
+    a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
+    return None if a is None else float(a["A"])
 
 
 def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int = 2,
