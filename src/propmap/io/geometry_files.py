@@ -89,9 +89,19 @@ def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
 
 
 def blade_angle_from_name(name: str) -> float | None:
-    """The blade angle at 0.75 R [deg] that a UIUC vol. 2 name ``<family>_<D>_<angle>deg`` gives
-    (``nr640_5_20deg``: the NR640 blades set to 20 deg; Deters, Ananda & Selig, AIAA 2014-2151),
-    None for another name."""
+    """The blade angle at 0.75 R that a UIUC vol. 2 name ``<family>_<D>_<angle>deg`` gives.
+
+    Parameters
+    ----------
+    name : str
+        A propeller's or a file's name (``nr640_5_20deg``: the NR640 blades set to 20 deg at
+        0.75 R; Deters, Ananda & Selig, AIAA 2014-2151).
+
+    Returns
+    -------
+    float or None
+        The angle [deg]; None for a name of another form (``apce_10x7``, ``nr640_geom``).
+    """
     a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
     return None if a is None else float(a["A"])
 
