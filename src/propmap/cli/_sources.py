@@ -121,9 +121,9 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
-    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice).load(prop_spec)
+    other = [s for s in sources if not looks_like_uiuc(s)]
+    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, all_uiuc=not other).load(prop_spec)
     try:
-        other = [s for s in sources if not looks_like_uiuc(s)]
         if not other:
             refuse_stand_options("UIUC-format data")
             warn_other_propeller(sources, prop)
@@ -183,19 +183,6 @@ def _uiuc_run_name(source):
     return named, hub.group(1) if hub else named, int(hub.group(2)) if hub else None
 
 
-def _name_sizes_in(name: str):
-    """(diameter, pitch) [in] a UIUC name gives, as the geometry reader reads one (millimetres for
-    the MM_FAMILIES); None for each that it does not give or, the diameter, outside
-    NAME_DIAMETER_RANGE_IN (a size in millimetres of a family not known to give them)."""
-    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, size_from_name
-
-    D, P, unit, _ = size_from_name(name)
-    scale = 1 / 25.4 if unit == "mm" else 1.0
-    lo, hi = NAME_DIAMETER_RANGE_IN
-    d_in = None if D is None or not lo <= D * scale <= hi else D * scale
-    return d_in, None if P is None or d_in is None else P * scale
-
-
 def _is_family_file(base: str) -> bool:
     """Whether a geometry's propeller name gives no size (a family design file, ``da4052_geom``)."""
     from ..io.geometry_files import size_from_name
@@ -203,7 +190,7 @@ def _is_family_file(base: str) -> bool:
     return size_from_name(base)[0] is None
 
 
-def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> PropChoice:
+def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_uiuc: bool) -> PropChoice:
     """The blade count and diameter a UIUC geometry file lacks, from the UIUC data files named for it.
 
     A UIUC geometry file (``r/R c/R beta``) states neither; UIUC's data files name their
@@ -225,6 +212,9 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
         --prop: a catalogue name or a geometry file.
     prop_choice : PropChoice
         --diameter-in and --blades as given.
+    all_uiuc : bool
+        Whether every SOURCE is a UIUC-format file (:func:`~propmap.io.readers.looks_like_uiuc`,
+        which the caller has asked already).
 
     Returns
     -------
@@ -235,15 +225,14 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
         said in a one-line note on standard error.
     """
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name
-    from ..io.readers import looks_like_uiuc
+    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name, size_in_inches_from_name
 
-    if prop_choice.blades is not None and prop_choice.diameter_in is not None:
+    if not all_uiuc or (prop_choice.blades is not None and prop_choice.diameter_in is not None):
         return prop_choice
     if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
         return prop_choice
     runs = {_uiuc_run_name(s) for s in sources}
-    if None in runs or len(runs) != 1 or not all(looks_like_uiuc(s) for s in sources):
+    if None in runs or len(runs) != 1:
         return prop_choice
     named, bare, hub = runs.pop()
     base = _geometry_base(Path(prop_spec).name)
@@ -259,7 +248,7 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice) -> Pro
         click.echo(f"propmap: note: {blades} blades, from the UIUC data files' name ({shown}: {why}); give --blades "
                    "if the propeller measured has another count", err=True)
     if diameter_in is None and _is_family_file(base):
-        d_in = _name_sizes_in(bare)[0]  # (as the geometry reader takes a size from its own name)
+        d_in = size_in_inches_from_name(bare)[0]  # (as the geometry reader takes a size from its own name)
         D, _, unit, _ = size_from_name(bare)
         if d_in is not None:
             diameter_in = d_in
@@ -322,7 +311,7 @@ def warn_other_propeller(sources, prop) -> None:
     gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
     is one pitch)."""
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import blade_angle_from_name
+    from ..io.geometry_files import blade_angle_from_name, size_in_inches_from_name
 
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
@@ -350,7 +339,7 @@ def warn_other_propeller(sources, prop) -> None:
             return
         # (a family geometry file covers its sizes: the size the name gives is compared, read as the geometry reader
         # reads a name; one outside its range is no size: "give --diameter-in 130" would be refused)
-        d_in, p_in = _name_sizes_in(named)
+        d_in, p_in = size_in_inches_from_name(named)
         if d_in:
             if abs(prop.diameter / 0.0254 / d_in - 1.0) > 0.05:
                 warn(f"SOURCE: {_short(Path(s).name)} is named for a {d_in:.3g} in propeller, used with a "
@@ -359,5 +348,5 @@ def warn_other_propeller(sources, prop) -> None:
                 return
             angle = blade_angle_from_name(named)
             if ((p_in or angle is not None) and _is_family_file(base)
-                    and _other_pitch(s, full, p_in and p_in / d_in, prop, angle)):
+                    and _other_pitch(s, full, None if p_in is None else p_in / d_in, prop, angle)):
                 return

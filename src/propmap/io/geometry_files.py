@@ -32,7 +32,7 @@ from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table,
                      parse_number, show_path)
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
-           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name"]
+           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "size_in_inches_from_name"]
 
 
 class GeometryFileError(ValueError):
@@ -86,6 +86,30 @@ def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
         return float(a["D"]), None, "in", name[: a.start()].split("_")[-1]
     family = name[: m.start()].rstrip("_").split("_")[-1]
     return float(m["D"]), float(m["P"]), ("mm" if family.lower() in MM_FAMILIES else "in"), family
+
+
+def size_in_inches_from_name(name: str) -> tuple[float | None, float | None]:
+    """The diameter and pitch a UIUC-style name gives, in inches, as the geometry reader takes them.
+
+    Parameters
+    ----------
+    name : str
+        A propeller's or a file's name (:func:`size_from_name`: millimetres for
+        :data:`MM_FAMILIES`, ``ef_130x70``: 5.118 in).
+
+    Returns
+    -------
+    tuple of (float or None, float or None)
+        Diameter and pitch [in]; the diameter None where the name gives none or one outside
+        :data:`NAME_DIAMETER_RANGE_IN` (a size in millimetres of a family not known to give them,
+        which the reader refuses to take from a name), the pitch None where it is not written
+        (``nr640_9_15deg``) or the diameter is None.
+    """
+    D, P, unit, _ = size_from_name(name)
+    scale = 1 / 25.4 if unit == "mm" else 1.0
+    lo, hi = NAME_DIAMETER_RANGE_IN
+    d_in = None if D is None or not lo <= D * scale <= hi else D * scale
+    return d_in, None if P is None or d_in is None else P * scale
 
 
 def blade_angle_from_name(name: str) -> float | None:
@@ -181,8 +205,8 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         if D_name is None:
             raise GeometryFileError(f"{where}: diameter unknown; {SIZE_HINT}")
         lo, hi = NAME_DIAMETER_RANGE_IN
-        diameter_in = D_name / 25.4 if unit == "mm" else D_name
-        if not (lo <= diameter_in <= hi):
+        diameter_in = size_in_inches_from_name(stem)[0]
+        if diameter_in is None:
             raise GeometryFileError(
                 f"{where}: diameter {D_name:g} {unit} from the file name is not plausible (a diameter from a name "
                 f"must be in [{lo:g}, {hi:g}] in); {SIZE_HINT}")
