@@ -1301,3 +1301,35 @@ def test_validate_labels_a_catalogue_propellers_runs_under_a_geometry_of_another
     assert main(["validate", *files, "--prop", "apce_8x6", "--params", "generic"]) == 0
     text = capsys.readouterr().out
     assert "(fitted)" not in text and "was fitted to" not in text, text
+
+
+def test_validate_holds_the_data_to_the_parameters_given_not_the_generic_set(tmp_path, capsys):
+    """With --params, the units-and-counts check compares the data with those parameters: data
+    that a fitted set predicts exactly were warned of against the generic set, and told that 'a
+    fit would absorb the difference' (a user-level audit, 2026-11-29)."""
+    from propmap.io.params_file import write_params
+
+    prop = pm.load_propeller("apce_8x6")
+    generic = pm.generic_params()
+    draggy = generic.replace(cd_min=8 * generic.cd_min)  # (torque 1.53x the generic set's in the median, thrust 0.98x)
+    rpm = np.array([4000.0, 5000.0, 6000.0, 7000.0])
+
+    def write(name, params):
+        r = pm.rotor_loads(prop, params, rpm * math.pi / 30, 0.0, 0.0)
+        (tmp_path / name).write_text("rpm,thrust,torque\n" + "".join(
+            f"{n},{float(T)!r},{float(Q)!r}\n" for n, T, Q in zip(rpm, r.thrust, r.torque)))
+        return str(tmp_path / name)
+
+    write_params(tmp_path / "draggy.toml", draggy)
+    mine = write("mine.csv", draggy)
+    assert main(["validate", mine, "--prop", "apce_8x6", "--params", str(tmp_path / "draggy.toml")]) == 0
+    assert "warning" not in capsys.readouterr().err
+    assert main(["validate", mine, "--prop", "apce_8x6"]) == 0  # (no --params: held to the generic set)
+    err = capsys.readouterr().err
+    assert "the measured torque is 1.53 times (outside 0.667-1.5x) what the generic set predicts" in err
+    assert "a fit would absorb the difference" in err
+    assert main(["validate", write("generic.csv", generic), "--prop", "apce_8x6",
+                 "--params", str(tmp_path / "draggy.toml")]) == 0
+    err = capsys.readouterr().err
+    assert "the measured torque is 0.654 times (outside 0.667-1.5x) what the model predicts" in err
+    assert "or whether the parameters are this propeller's" in err and "a fit would absorb" not in err

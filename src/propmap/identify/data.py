@@ -295,7 +295,8 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
     return [f"the measured {said} what {label} predicts for {propeller.name} in the median{catalogue}: check the "
             f"blade count, the diameter ({propeller.diameter:.4g} m) and the rpm"
             + (f" ({'; '.join(found)})" if found else "")
-            + "; a fit would absorb the difference into the section parameters"]
+            + ("; a fit would absorb the difference into the section parameters" if label == "the generic set"
+               else ", or whether the parameters are this propeller's")]
 
 
 def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None, quantities=None,
