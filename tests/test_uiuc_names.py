@@ -80,11 +80,28 @@ def test_nothing_is_taken_from_names_that_do_not_say_it(tmp_path, capsys, case):
     if case == "another propeller":
         files = [f.rename(f.with_name(f.name.replace("newco_9x6", "other_9x6"))) for f in files]
     elif case == "two propellers":
-        files[1] = files[1].rename(files[1].with_name(files[1].name.replace("newco_9x6", "newco_9x6_3b")))
+        files[1] = files[1].rename(files[1].with_name(files[1].name.replace("newco_9x6", "newco_10x6")))
     else:
         files = [f.rename(f.with_name(f"run{i}.txt")) for i, f in enumerate(files)]
     code, err, _ = _fit(capsys, tmp_path, files, geom)
     assert code == 2 and "does not state the blade count: give it (--blades" in err, err
+
+
+def test_two_hubs_of_one_blade_are_named(tmp_path, capsys):
+    """A no-suffix static run (2 blades by UIUC's names) beside _3b sweeps: without --blades it was
+    refused as a geometry lacking its count, not saying that the names disagree; with --blades 3
+    the 2-blade run was compared without a word (a user-level audit, 2026-11-29)."""
+    files, geom = _copies(tmp_path)
+    files[1] = files[1].rename(files[1].with_name(files[1].name.replace("newco_9x6", "newco_9x6_3b")))
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert code == 2 and "does not state the blade count" not in err, err
+    assert ("the UIUC data files' names give two hubs of one blade, newco_9x6_static_" in err
+            and "(no suffix: 2 blades) and newco_9x6_3b_" in err and "(_3b)" in err and "--blades" in err)
+    code, err, _ = _fit(capsys, tmp_path, files, geom, "--blades", "3")
+    assert code == 0 and "two hubs of one blade" in err and "every file is taken with 3 blades" in err, err
+    # (one hub's files alone: no word of a mix)
+    code, err, _ = _fit(capsys, tmp_path, [files[0]], geom, "--blades", "2")
+    assert code == 0 and "two hubs" not in err, err
 
 
 def test_a_csv_takes_nothing_from_names(tmp_path, capsys):

@@ -183,6 +183,28 @@ def _uiuc_run_name(source):
     return named, hub.group(1) if hub else named, int(hub.group(2)) if hub else None
 
 
+def _mixed_hubs(sources) -> str | None:
+    """Where UIUC data files named for one propeller give two blade counts (``da4022_5x3.75_static_...``,
+    2 blades by UIUC's names, and ``da4022_5x3.75_3b_...``; a name without a hub suffix is the
+    catalogue's count for a catalogue propeller, else 2): the first file of each count, said as
+    "A (no suffix: 2 blades) and B (_3b)"; else None."""
+    from ..io.catalogue import catalogue
+
+    counts = {}
+    for s in sources:
+        run = _uiuc_run_name(s)
+        if run is not None:
+            full, bare, hub = run
+            entry = catalogue().get(full)
+            n = hub or (entry.n_blades if entry is not None else 2)
+            counts.setdefault(bare, {}).setdefault(n, (s, hub))
+    for named in counts.values():
+        if len(named) > 1:
+            return " and ".join(f"{_short(Path(s).name)} ({f'_{h}b' if h else f'no suffix: {n} blades'})"
+                                for n, (s, h) in sorted(named.items()))
+    return None
+
+
 def _is_family_file(base: str) -> bool:
     """Whether a geometry's propeller name gives no size (a family design file, ``da4052_geom``)."""
     from ..io.geometry_files import size_from_name
@@ -232,6 +254,10 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
     if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
         return prop_choice
     runs = {_uiuc_run_name(s) for s in sources}
+    if prop_choice.blades is None and None not in runs and (mixed := _mixed_hubs(sources)):
+        raise InputError(f"SOURCE: the UIUC data files' names give two hubs of one blade, {mixed}: a fit or a "
+                         "comparison is of one blade count; give the runs of one hub, or --blades to take every file "
+                         "as that count")
     if None in runs or len(runs) != 1:
         return prop_choice
     named, bare, hub = runs.pop()
@@ -316,6 +342,10 @@ def warn_other_propeller(sources, prop) -> None:
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
     base = _geometry_base(prop.name)
+    if mixed := _mixed_hubs(sources):  # (a no-suffix static run beside _3b sweeps, with --blades 3, ran without a word)
+        warn(f"SOURCE: the UIUC data files' names give two hubs of one blade, {mixed}: every file is taken with "
+             f"{prop.n_blades} blades; give the runs of one hub if the others are another blade count")
+        return
     for s in sources:
         run = _uiuc_run_name(s)
         if not (run and base):
