@@ -188,6 +188,11 @@ def test_a_catalogue_propellers_own_count_and_a_millimetre_family(tmp_path, caps
     code, out, err = run(capsys, "validate", *tri, "--prop", tmp_path / "pl_triturbo_geom.txt", "--diameter-in", "2.52")
     assert code == 0 and "note: 3 blades, from the UIUC data files' name" in err and "catalogue's count" in err, err
     assert "against pl_triturbo (3 blades, D = 0.06401 m)" in out, out
+    # without --diameter-in, the catalogue's (the names give none; "diameter unknown" until 2026-11-29)
+    code, out, err = run(capsys, "validate", *tri, "--prop", tmp_path / "pl_triturbo_geom.txt")
+    assert code == 0 and "note: diameter 2.52 in = 64 mm, the catalogue's for pl_triturbo (the names give none; " \
+        "diameter 64 mm inferred from the wind tunnel's airspeed limit)" in err, err
+    assert "against pl_triturbo (3 blades, D = 0.064 m)" in out, out
 
 
 def test_validate_takes_the_same_and_a_given_count_is_kept(tmp_path, capsys):
