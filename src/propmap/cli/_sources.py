@@ -243,8 +243,15 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
     PropChoice
         ``prop_choice`` with ``blades`` and ``diameter_in`` filled where the names give them (a
         diameter only within NAME_DIAMETER_RANGE_IN, as the geometry reader takes one from its own
-        name; outside it a note says it was not taken); each value taken, and each not taken, is
-        said in a one-line note on standard error.
+        name; outside it a note says it was not taken; a catalogue propeller named without a size,
+        ``pl_triturbo``, the catalogue's); each value taken, and each not taken, is said in a
+        one-line note on standard error.
+
+    Raises
+    ------
+    InputError
+        Without --blades, files named for two hubs of one blade (``..._static_...`` and
+        ``..._3b_...``): a fit or a comparison is of one count.
     """
     from ..io.catalogue import catalogue
     from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name, size_in_inches_from_name
