@@ -248,3 +248,24 @@ def test_nr640_names_give_the_diameter_and_the_blade_angle(tmp_path, capsys):
         assert code == 0
         table = [line for line in out.splitlines() if line.startswith("all points")]
         assert table and table == [line for line in catalogued.splitlines() if line.startswith("all points")]
+
+
+def test_apc_pe0_geometry_with_uiuc_data_of_that_propeller(tmp_path, capsys):
+    """APC names its PE0 files 8x6E-PERF.PE0 where UIUC names the same propeller apce_8x6: the data
+    were warned of as 'named for another propeller' (2026-11-29); the sport 8x6 is another one. The
+    rule reproduces every pair of the catalogue's (UIUC data with APC PE0 geometry)."""
+    from propmap.cli._sources import _apc_designation
+    from propmap.io.catalogue import catalogue
+
+    pairs = {n: Path(e.geometry_file).name for n, e in catalogue().items() if e.geometry_format != "uiuc"}
+    assert len(pairs) >= 29
+    for name, pe0 in pairs.items():
+        assert _apc_designation(name) == pe0.lower().replace("-perf.pe0", ""), name
+    assert _apc_designation("apce_9x7.5") == "9x75e" and _apc_designation("mi_4x2.7") is None
+    static = sorted(UIUC_V1.glob("apce_8x6_static_*.txt"))[:1]
+    shutil.copyfile(APC_PE0 / "8x6E-PERF.PE0", tmp_path / "8x6E.PE0")  # (renamed, as a user may)
+    for geometry in (APC_PE0 / "8x6E-PERF.PE0", tmp_path / "8x6E.PE0"):
+        code, out, err = run(capsys, "validate", *static, "--prop", geometry)
+        assert code == 0 and "named for propeller" not in err, err
+    code, out, err = run(capsys, "validate", *static, "--prop", APC_PE0 / "8x6-PERF.PE0")  # (APC's sport 8x6)
+    assert code == 0 and "is named for propeller 'apce_8x6', used with --prop '8x6'" in err, err

@@ -167,11 +167,23 @@ _HUB = re.compile(r"(.+)_([1-9])b", re.IGNORECASE)
 
 
 def _geometry_base(name: str) -> str:
-    """A geometry's propeller name without a file extension of letters (``.txt``, ``.dat``; a name's
+    """A geometry's propeller name without a file extension of letters or ``.PE0`` (``.txt``, ``.dat``; a name's
     ``4x2.7`` kept), ``_geom`` and a hub's blade count, in lower case. (The geometry reader names a
     UIUC file without ``_geom.txt`` by its whole file name, ``mi_4x2.7.txt``.)"""
-    name = re.sub(r"\.[a-z]+$", "", name, flags=re.IGNORECASE)
+    name = re.sub(r"\.([a-z]+|pe0)$", "", name, flags=re.IGNORECASE)
     return re.sub(r"_[1-9]b$", "", re.sub(r"_geom$", "", name, flags=re.IGNORECASE).lower())
+
+
+#: the APC series UIUC names by a prefix and APC's PE0 files by a suffix (``apce_9x7.5`` is ``9x75E-PERF.PE0``: the
+#: catalogue's pairs, tests/test_uiuc_names.py)
+_APC_SERIES = {"apce": "e", "apcsf": "sf", "apcsp": ""}
+
+
+def _apc_designation(named: str) -> str | None:
+    """APC's name of the propeller a UIUC name gives (``apce_9x7.5`` -> ``9x75e``, lower case), for
+    the series whose names the catalogue pairs with PE0 files; None for another name."""
+    m = re.fullmatch(r"(apce|apcsf|apcsp)_(\d+(?:\.\d+)?)x(\d+(?:\.\d+)?)", named)
+    return None if m is None else f"{m[2]}x{m[3].replace('.', '')}{_APC_SERIES[m[1]]}"
 
 
 def _uiuc_run_name(source):
@@ -436,7 +448,8 @@ def warn_other_propeller(sources, prop) -> None:
                  f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
                  "measured (the thrust scales nearly with the blade count)")
             return
-        if named != base and not named.startswith(base + "_"):
+        if (named != base and not named.startswith(base + "_")
+                and _apc_designation(named) != re.sub(r"-perf$", "", base)):  # (APC's own name of a PE0 file, 8x6E)
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {full!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
             return
