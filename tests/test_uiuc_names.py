@@ -269,3 +269,31 @@ def test_apc_pe0_geometry_with_uiuc_data_of_that_propeller(tmp_path, capsys):
         assert code == 0 and "named for propeller" not in err, err
     code, out, err = run(capsys, "validate", *static, "--prop", APC_PE0 / "8x6-PERF.PE0")  # (APC's sport 8x6)
     assert code == 0 and "is named for propeller 'apce_8x6', used with --prop '8x6'" in err, err
+
+
+def test_a_measured_blade_named_for_its_setting_is_set_by_the_names_difference(tmp_path, capsys):
+    """The NR640 5 in blades are measured at their 15 deg setting (nr640_5_15deg_geom.txt, 16.6 deg
+    at 0.75 R: its own datum) and run at 20 deg too (UIUC vol. 2, Deters, Ananda & Selig, AIAA
+    2014-2151). Renamed out of the catalogue (zr640), the 20 deg runs with the 15 deg geometry: the
+    blade rotated by the names' +5 deg (they were 'named for another propeller' and refused for the
+    blade count until 2026-11-29). Blind (generic set): CT rms 2.51% of static CT rotated (the design
+    file set to 20 deg: 6.86%, the catalogue's; unrotated: 27.9%). Runs of two settings: taken as
+    the file is, and warned of."""
+    shutil.copyfile(UIUC_V2 / "nr640_5_15deg_geom.txt", tmp_path / "zr640_5_15deg_geom.txt")
+    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))]
+    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    geom = tmp_path / "zr640_5_15deg_geom.txt"
+    code, out, err = run(capsys, "validate", *files, "--prop", geom, "--params", "generic")
+    assert code == 0, err
+    assert ("note: the blade set to 20 deg at 0.75 R, from the UIUC data files' name (zr640_5_20deg_" in err
+            and "zr640_5_15deg, set to 15 deg, rotated by +5.00 deg at every station" in err)
+    assert "named for" not in err and "note: 2 blades" in err
+    (row,) = [line.split() for line in out.splitlines() if line.startswith("all points")]
+    assert row[2:4] == ["2.51%", "+1.19%"], row  # (regression values, the bundled data and the generic set)
+    static15 = tmp_path / "zr640_5_15deg_static_0650rb.txt"
+    shutil.copyfile(UIUC_V2 / "nr640_5_15deg_static_0650rb.txt", static15)
+    code, out, err = run(capsys, "validate", *files, static15, "--prop", geom, "--params", "generic", "--blades", "2")
+    assert code == 0 and "rotated" not in err, err
+    assert "is named for the blades set to 20 deg at 0.75 R, used with the geometry zr640_5_15deg as it is" in err

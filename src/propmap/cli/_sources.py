@@ -123,12 +123,14 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     refuse_copies(sources, "SOURCE", "its data would count twice")
     other = [s for s in sources if not looks_like_uiuc(s)]
     prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, all_uiuc=not other).load(prop_spec)
+    set_from_names = False
     if not other:
-        prop = blade_angle_from_uiuc_names(sources, prop_spec, prop)
+        given, prop = prop, blade_angle_from_uiuc_names(sources, prop_spec, prop)
+        set_from_names = prop is not given
     try:
         if not other:
             refuse_stand_options("UIUC-format data")
-            warn_other_propeller(sources, prop)
+            warn_other_propeller(sources, prop, angle_set=set_from_names)
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
         if len(sources) > 1:
             raise InputError(f"SOURCE: {short_path(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
@@ -219,6 +221,22 @@ def _mixed_hubs(sources) -> str | None:
     return None
 
 
+def _angle_free(name: str) -> str:
+    """A UIUC name without the blade angle an NR640-style name gives (``nr640_5_20deg`` ->
+    ``nr640_5``: the same blades, set to another angle on an adjustable hub); others as they are."""
+    from ..io.geometry_files import blade_angle_from_name
+
+    return re.sub(r"_[0-9.]+deg$", "", name, flags=re.IGNORECASE) if blade_angle_from_name(name) is not None else name
+
+
+def _same_blade(bare: str, base: str) -> bool:
+    """Whether data named ``bare`` (a hub's count stripped) are of the blade of the geometry named
+    ``base``: the same propeller, a size of its family (``da4052_5x2.65`` of ``da4052``), or the
+    same blades set to another angle (``nr640_5_20deg`` of ``nr640_5_15deg``)."""
+    return bare == base or bare.startswith(base + "_") or (
+        _angle_free(bare) != bare and _angle_free(bare) == _angle_free(base))
+
+
 def _is_family_file(base: str) -> bool:
     """Whether a geometry's propeller name gives no size (a family design file, ``da4052_geom``)."""
     from ..io.geometry_files import size_from_name
@@ -283,7 +301,7 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
         return prop_choice
     named, bare, hub = runs.pop()
     base = _geometry_base(Path(prop_spec).name)
-    if not (bare == base or bare.startswith(base + "_")):
+    if not _same_blade(bare, base):
         return prop_choice
     blades, diameter_in = prop_choice.blades, prop_choice.diameter_in
     shown = _short(Path(sources[0]).name)
@@ -320,16 +338,20 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
 
 
 def blade_angle_from_uiuc_names(sources, prop_spec, prop):
-    """A family geometry file's blade set to the angle at 0.75 R that the UIUC data files' names give.
+    """A geometry's blade set to the angle at 0.75 R that the UIUC data files' names give.
 
     UIUC vol. 2 names its NR640 runs ``nr640_<D>_<angle>deg`` (Deters, Ananda & Selig, AIAA
     2014-2151): the blades of an adjustable hub set to that angle at 0.75 R. The family file
     ``nr640_geom.txt`` is the design blade at 15 deg; the catalogue's ``nr640_5_20deg`` is that
     blade rotated by +5 deg (its ``beta_offset_deg``), and so is a family file here, where every
     SOURCE is named for one such angle: the blade angle shifted by the same amount at every
-    station, said in a note. Held out on UIUC's nr640_5_20deg (static run and lowest sweep fitted,
-    four sweeps held out): thrust rms 0.036 N unrotated, 0.011 N rotated; blind 35% against 6.9%
-    of the static CT (2026-11-29).
+    station, said in a note. A geometry named for a setting (``nr640_5_15deg_geom.txt``, the 5 in
+    blades measured at 15 deg: 16.6 deg at 0.75 R, its own datum) is rotated by the names'
+    difference (+5 deg for ``nr640_5_20deg`` runs). On UIUC's nr640_5_20deg runs, blind (generic
+    set): CT rms 35.2% of static CT with the family file as it is, 6.9% set to 20 deg; 27.9% with
+    the measured 15 deg blade as it is, 2.5% rotated. Static run and lowest sweep fitted, four
+    sweeps held out: thrust rms 0.036 N with the family file as it is, 0.011 N with either rotated
+    (2026-11-29).
 
     Parameters
     ----------
@@ -343,9 +365,9 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     Returns
     -------
     Propeller
-        ``prop`` itself, or with its blade angle theta shifted so that theta(0.75 R) is the named
-        angle (a geometry named for a size or an angle, ``nr640_5_15deg_geom.txt``, a catalogue
-        PROP and a PE0 file are taken as they are).
+        ``prop`` itself, or with its blade angle theta shifted at every station (a geometry named
+        for a size, ``da4052_5x2.65_geom.txt``, runs of several settings, a catalogue PROP and a
+        PE0 file are taken as they are).
     """
     import math
 
@@ -358,20 +380,23 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
         return prop
     base = _geometry_base(Path(prop_spec).name)
     runs = {_uiuc_run_name(s) for s in sources}
-    if not _is_family_file(base) or blade_angle_from_name(base) is not None or None in runs or len(runs) != 1:
+    if None in runs or len(runs) != 1:
         return prop
     named, bare, _ = runs.pop()
-    angle = blade_angle_from_name(bare)
-    if angle is None or not (bare == base or bare.startswith(base + "_")):
+    angle, setting = blade_angle_from_name(bare), blade_angle_from_name(base)
+    if angle is None or not _same_blade(bare, base) or (setting is None and not _is_family_file(base)):
         return prop
     geom = math.degrees(float(prop.theta_at(np.array([0.75 * prop.radius]))[0]))
-    offset = angle - geom
+    # (a geometry named for its setting is the blade as measured there, its own datum kept: set by the names'
+    # difference; a family file, the design, to the named angle)
+    offset = angle - (geom if setting is None else setting)
     if abs(offset) < 0.05:
         return prop
+    was = f"{prop.name}'s {geom:.1f} deg" if setting is None else f"{prop.name}, set to {setting:g} deg,"
     click.echo(f"propmap: note: the blade set to {angle:g} deg at 0.75 R, from the UIUC data files' name "
-               f"({_short(Path(sources[0]).name)}): {prop.name}'s {geom:.1f} deg rotated by {offset:+.2f} deg at "
-               "every station (an adjustable hub's setting, as the catalogue's NR640 blades); give a geometry of the "
-               "blade as set to take it as it is", err=True)
+               f"({_short(Path(sources[0]).name)}): {was} rotated by {offset:+.2f} deg at every station (an "
+               "adjustable hub's setting, as the catalogue's NR640 blades); give a geometry of the blade as set to "
+               "take it as it is", err=True)
     return replace(prop, theta=prop.theta + math.radians(offset))
 
 
@@ -411,7 +436,7 @@ def _other_pitch(source, named: str, pitch_ratio: float | None, prop, angle_deg:
     return True
 
 
-def warn_other_propeller(sources, prop) -> None:
+def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
     """Warn when UIUC files are named for another propeller than --prop's (``apce_10x7_...``
     fitted with ``--prop apce_10x5``): the UIUC name ``<family>_<D>x<P>`` before the run, in any
     case. A hub's blade count in the name (vol. 2's ``da4022_5x3.75_3b_...``, the 2-blade
@@ -420,7 +445,9 @@ def warn_other_propeller(sources, prop) -> None:
     covers its family's sizes, the size a data file's name gives compared with the geometry's
     diameter (within 5%; read as io.geometry_files.size_from_name reads it), and the pitch it
     gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
-    is one pitch)."""
+    is one pitch). Files named for the same blades at another setting (``nr640_5_20deg`` with
+    ``nr640_5_15deg_geom.txt``) are warned of unless ``angle_set``: the blade was set to their angle
+    (:func:`blade_angle_from_uiuc_names`)."""
     from ..io.catalogue import catalogue
     from ..io.geometry_files import blade_angle_from_name, size_in_inches_from_name
 
@@ -448,7 +475,13 @@ def warn_other_propeller(sources, prop) -> None:
                  f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
                  "measured (the thrust scales nearly with the blade count)")
             return
-        if (named != base and not named.startswith(base + "_")
+        if _angle_free(named) != named and _angle_free(named) == _angle_free(base) != base and named != base:
+            if not angle_set:  # (the same blades at another setting, with runs of several settings)
+                warn(f"SOURCE: {_short(Path(s).name)} is named for the blades set to {blade_angle_from_name(named):g} "
+                     f"deg at 0.75 R, used with the geometry {prop.name} as it is; give the runs of one setting (the "
+                     "blade is then set to it)")
+                return
+        elif (named != base and not named.startswith(base + "_")
                 and _apc_designation(named) != re.sub(r"-perf$", "", base)):  # (APC's own name of a PE0 file, 8x6E)
             warn(f"SOURCE: {_short(Path(s).name)} is named for propeller {full!r}, used with --prop "
                  f"{prop.name!r}; check that they are the same propeller")
