@@ -475,7 +475,8 @@ def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
                  f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
                  "measured (the thrust scales nearly with the blade count)")
             return
-        if _angle_free(named) != named and _angle_free(named) == _angle_free(base) != base and named != base:
+        angles = named != base and _angle_free(base) != base and _angle_free(named) != named
+        if angles and _angle_free(named) == _angle_free(base):  # (both named for a setting, of one blade)
             if not angle_set:  # (the same blades at another setting, with runs of several settings)
                 warn(f"SOURCE: {_short(Path(s).name)} is named for the blades set to {blade_angle_from_name(named):g} "
                      f"deg at 0.75 R, used with the geometry {prop.name} as it is; give the runs of one setting (the "
