@@ -297,3 +297,7 @@ def test_a_measured_blade_named_for_its_setting_is_set_by_the_names_difference(t
     code, out, err = run(capsys, "validate", *files, static15, "--prop", geom, "--params", "generic", "--blades", "2")
     assert code == 0 and "rotated" not in err, err
     assert "is named for the blades set to 20 deg at 0.75 R, used with the geometry zr640_5_15deg as it is" in err
+    assert "give the runs of one setting" in err
+    # a catalogue PROP is taken as it is: the catalogue's blade at the runs' setting is named
+    code, out, err = run(capsys, "validate", *runs, "--prop", "nr640_5_15deg")
+    assert code == 0 and "--prop nr640_5_20deg is the catalogue's blade at that setting" in err, err

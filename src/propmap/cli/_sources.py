@@ -477,10 +477,13 @@ def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
             return
         angles = named != base and _angle_free(base) != base and _angle_free(named) != named
         if angles and _angle_free(named) == _angle_free(base):  # (both named for a setting, of one blade)
-            if not angle_set:  # (the same blades at another setting, with runs of several settings)
+            if not angle_set:  # (the same blades at another setting: runs of several, or a catalogue PROP)
+                settings = {blade_angle_from_name(r[1]) for r in map(_uiuc_run_name, sources) if r is not None}
+                advice = ("give the runs of one setting (with a UIUC geometry file the blade is then set to it)"
+                          if len(settings) > 1 else f"--prop {full} is the catalogue's blade at that setting"
+                          if full in catalogue() else "give the blade's UIUC geometry file to set it to that angle")
                 warn(f"SOURCE: {_short(Path(s).name)} is named for the blades set to {blade_angle_from_name(named):g} "
-                     f"deg at 0.75 R, used with the geometry {prop.name} as it is; give the runs of one setting (the "
-                     "blade is then set to it)")
+                     f"deg at 0.75 R, used with the geometry {prop.name} as it is; {advice}")
                 return
         elif (named != base and not named.startswith(base + "_")
                 and _apc_designation(named) != re.sub(r"-perf$", "", base)):  # (APC's own name of a PE0 file, 8x6E)
