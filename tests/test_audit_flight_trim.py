@@ -440,3 +440,27 @@ def test_no_reference_mass_without_the_residual_columns(seg_rows, tmp_path):
     scipy.io.savemat(tmp_path / "r.mat", {"log": a})
     log = read_flight_log(tmp_path / "r.mat")
     assert log.reference_force is not None and log.reference_mass is None
+
+
+# --- a defect the audit found: a bool taken as a number ---------------------------------------------------------
+
+@pytest.mark.parametrize("kw, match", [(dict(rate_hz=True), r"^rate_hz must be a number in \(0, 10000\] Hz, got True"),
+                                       (dict(motor_time_constant=True),
+                                        r"^motor_time_constant must be a number in \[0, 1\] s, got True")])
+def test_flight_samples_refuses_a_bool_for_its_rate_or_motor_lag(quad, kw, match):
+    """rate_hz=True was read as 1 Hz (2 samples of a 2 s log kept) and motor_time_constant=True as a lag of 1 s,
+    without a word, where FlightSamples refuses a bool rate and trim_collective a bool grid_step."""
+    veh, H = quad
+    with pytest.raises(ValueError, match=match):
+        flight_samples([_flight(np.full(200, H))], veh, **kw)
+
+
+@pytest.mark.parametrize("trim", ["collective", "omega"])
+def test_a_bool_thrust_tolerance_is_refused(apc, trim):
+    """thrust_tol=True was a tolerance of 1 N (trim_omega returned 3.12 N for 3 N asked)."""
+    prop, p = apc
+    with pytest.raises(ValueError, match=r"^thrust_tol must be a positive number \[N\], got True"):
+        if trim == "collective":
+            trim_collective(prop, p, 3.0, 900.0, thrust_tol=True)
+        else:
+            trim_omega(prop, p, 3.0, thrust_tol=True)

@@ -127,7 +127,8 @@ def _where(i: int, shape) -> str:
 
 def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
     """The thrust wanted as a float array, and its tolerance, checked (ValueError naming each)."""
-    if not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0 and math.isfinite(thrust_tol)):
+    if isinstance(thrust_tol, bool) or not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0
+                                            and math.isfinite(thrust_tol)):  # (True was a tolerance of 1 N)
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
     T_star = np.asarray(thrust)
     if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)

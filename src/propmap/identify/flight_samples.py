@@ -331,10 +331,11 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     logs = list(logs)
     if not logs:
         raise ValueError("no flight logs given")
-    if not (isinstance(rate_hz, (int, float)) and 0 < rate_hz <= 1e4):
+    # (a bool is not a rate: rate_hz=True was read as 1 Hz, motor_time_constant=True as 1 s, a mutation audit)
+    if isinstance(rate_hz, bool) or not (isinstance(rate_hz, (int, float)) and 0 < rate_hz <= 1e4):
         raise ValueError(f"rate_hz must be a number in (0, 10000] Hz, got {rate_hz!r}")
     tau = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
-    if not (isinstance(tau, (int, float)) and 0 <= tau <= 1):
+    if isinstance(tau, bool) or not (isinstance(tau, (int, float)) and 0 <= tau <= 1):
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
     n_rot = len(vehicle.rotors)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
