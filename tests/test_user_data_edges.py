@@ -1333,3 +1333,8 @@ def test_validate_holds_the_data_to_the_parameters_given_not_the_generic_set(tmp
     err = capsys.readouterr().err
     assert "the measured torque is 0.654 times (outside 0.667-1.5x) what the model predicts" in err
     assert "or whether the parameters are this propeller's" in err and "a fit would absorb" not in err
+    # --params generic is the generic set: worded as without --params, not as a propeller's own set
+    assert main(["validate", mine, "--prop", "apce_8x6", "--params", "generic"]) == 0
+    err = capsys.readouterr().err
+    assert "the measured torque is 1.53 times (outside 0.667-1.5x) what the generic set predicts" in err, err
+    assert "a fit would absorb the difference" in err and "whether the parameters are this propeller's" not in err

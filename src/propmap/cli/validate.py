@@ -230,9 +230,10 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     from ..identify.data import DataError, sanity_check
 
     try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
-        # (against the parameters given, not the generic set: their own errors follow; a user-level audit, 2026-11-29)
-        for w in sanity_check(data, prop, params=params if params_spec is not None else None, air=air,
-                              pole_pairs=pole_pairs):
+        # (against the parameters given, not the generic set: their own errors follow; a user-level audit, 2026-11-29;
+        # --params generic is the generic set, said as such: it is no propeller's, and a fit would absorb the difference)
+        given = params_spec is not None and params_spec != "generic"
+        for w in sanity_check(data, prop, params=params if given else None, air=air, pole_pairs=pole_pairs):
             warn(w)
     except DataError as exc:
         warn(f"{exc} (the comparison below takes the file as written)")
