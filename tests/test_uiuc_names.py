@@ -301,3 +301,25 @@ def test_a_measured_blade_named_for_its_setting_is_set_by_the_names_difference(t
     # a catalogue PROP is taken as it is: the catalogue's blade at the runs' setting is named
     code, out, err = run(capsys, "validate", *runs, "--prop", "nr640_5_15deg")
     assert code == 0 and "--prop nr640_5_20deg is the catalogue's blade at that setting" in err, err
+
+
+def test_a_geometry_named_for_its_setting_without_geom(tmp_path, capsys):
+    """A geometry file named for a setting without ``_geom`` (zr640_5_15deg.txt), as a UIUC file
+    named mi_4x2.7.txt gives its size: its reader took no size from the name ('diameter unknown',
+    the setting's runs refused; a review, 2026-11-29); the blade is set as from
+    zr640_5_15deg_geom.txt, the same errors."""
+    from propmap.io.geometry_files import blade_angle_from_name, size_from_name
+
+    assert size_from_name("nr640_5_15deg.txt") == (5.0, None, "in", "nr640")
+    assert blade_angle_from_name("nr640_5_15deg.txt") == 15.0
+    shutil.copyfile(UIUC_V2 / "nr640_5_15deg_geom.txt", tmp_path / "zr640_5_15deg.txt")
+    runs = sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))
+    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    code, out, err = run(capsys, "validate", *files, "--prop", tmp_path / "zr640_5_15deg.txt", "--params", "generic")
+    assert code == 0 and "diameter unknown" not in err, err
+    assert "set to 15 deg, rotated by +5.00 deg at every station" in err and "named for" not in err, err
+    assert "(2 blades, D = 0.127 m)" in out, out
+    (row,) = [line.split() for line in out.splitlines() if line.startswith("all points")]
+    assert row[2:4] == ["2.51%", "+1.19%"], row

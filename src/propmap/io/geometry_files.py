@@ -58,8 +58,9 @@ LAST_STATION_REFUSED = 0.7
 #: 147 catalogue propellers' files start at 0.15-0.30; a 10 in blade from 0.85 R: 20% of its thrust)
 FIRST_STATION_MAX = 0.4
 _NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
-#: UIUC vol. 2's NR640 names: the diameter [in] and the blade angle at 0.75 R, ``nr640_9_15deg``
-_ANGLE_NAME_RE = re.compile(r"_(?P<D>\d+(?:\.\d+)?)_(?P<A>\d+(?:\.\d+)?)deg(?=_|$)", re.ASCII | re.IGNORECASE)
+#: UIUC vol. 2's NR640 names: the diameter [in] and the blade angle at 0.75 R, ``nr640_9_15deg`` (a file named
+#: without ``_geom``, ``nr640_5_15deg.txt``, too: its reader names it by the whole file name)
+_ANGLE_NAME_RE = re.compile(r"_(?P<D>\d+(?:\.\d+)?)_(?P<A>\d+(?:\.\d+)?)deg(?=[_.]|$)", re.ASCII | re.IGNORECASE)
 
 
 def size_from_name(name: str) -> tuple[float | None, float | None, str, str]:
