@@ -323,3 +323,18 @@ def test_a_geometry_named_for_its_setting_without_geom(tmp_path, capsys):
     assert "(2 blades, D = 0.127 m)" in out, out
     (row,) = [line.split() for line in out.splitlines() if line.startswith("all points")]
     assert row[2:4] == ["2.51%", "+1.19%"], row
+
+
+def test_a_named_angle_beyond_the_blade_angle_range_is_refused_naming_it(tmp_path, capsys):
+    """Runs named for 80 deg with the NR640 design file (32.1 deg at r/R = 0.3, 15 deg at 0.75 R):
+    the blade rotated by +65 deg passes 90 deg at the root; the error was the Propeller's bare
+    'theta must be in [-90, 90] deg at every station', naming neither the file nor the angle."""
+    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", tmp_path / "zr640_geom.txt")
+    runs = sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))
+    files = [tmp_path / f.name.replace("nr640_5_20deg", "zr640_5_80deg") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    code, out, err = run(capsys, "validate", *files, "--prop", tmp_path / "zr640_geom.txt")
+    assert code == 2 and "Traceback" not in err, err
+    assert "error: SOURCE: zr640_5_80deg_" in err and "set to 80 deg at 0.75 R: zr640 rotated by +65.00 deg" in err, err
+    assert "theta must be in [-90, 90] deg" in err.strip().splitlines()[-1], err

@@ -368,6 +368,12 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
         ``prop`` itself, or with its blade angle theta shifted at every station (a geometry named
         for a size, ``da4052_5x2.65_geom.txt``, runs of several settings, a catalogue PROP and a
         PE0 file are taken as they are).
+
+    Raises
+    ------
+    InputError
+        A named angle that puts the blade angle beyond +-90 deg at a station (``nr640_5_80deg``
+        with the design file, 32 deg at its root: 97 deg), naming the file and the angle.
     """
     import math
 
@@ -397,7 +403,12 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
                f"({_short(Path(sources[0]).name)}): {was} rotated by {offset:+.2f} deg at every station (an "
                "adjustable hub's setting, as the catalogue's NR640 blades); give a geometry of the blade as set to "
                "take it as it is", err=True)
-    return replace(prop, theta=prop.theta + math.radians(offset))
+    try:
+        return replace(prop, theta=prop.theta + math.radians(offset))
+    except ValueError as exc:  # (was the bare "theta must be in [-90, 90] deg at every station": no file, no angle)
+        raise InputError(f"SOURCE: {_short(Path(sources[0]).name)} is named for the blades set to {angle:g} deg at "
+                         f"0.75 R: {prop.name} rotated by {offset:+.2f} deg ({exc}); give a geometry of the blade as "
+                         "set") from None
 
 
 #: a family geometry file's blade angle at 0.75 R farther than this from the helix of the pitch a data file's name
