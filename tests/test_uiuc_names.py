@@ -193,6 +193,15 @@ def test_a_catalogue_propellers_own_count_and_a_millimetre_family(tmp_path, caps
     assert code == 0 and "note: diameter 2.52 in = 64 mm, the catalogue's for pl_triturbo (the names give none; " \
         "diameter 64 mm inferred from the wind tunnel's airspeed limit)" in err, err
     assert "against pl_triturbo (3 blades, D = 0.064 m)" in out, out
+    # its blades on another hub (named pl_triturbo_4b_...): the same blade's diameter ("diameter unknown" until a
+    # review, 2026-11-29), the count from the hub suffix
+    hub4 = []
+    for f in tri:
+        hub4.append(tmp_path / Path(f).name.replace("pl_triturbo_", "pl_triturbo_4b_"))
+        shutil.copyfile(f, hub4[-1])
+    code, out, err = run(capsys, "validate", *hub4, "--prop", tmp_path / "pl_triturbo_geom.txt")
+    assert code == 0 and "note: diameter 2.52 in = 64 mm, the catalogue's for pl_triturbo (the names give none" in err, err
+    assert "note: 4 blades, from the UIUC data files' name" in err and "against pl_triturbo (4 blades, D = 0.064 m)" in out
 
 
 def test_validate_takes_the_same_and_a_given_count_is_kept(tmp_path, capsys):

@@ -315,13 +315,15 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
     if diameter_in is None and _is_family_file(base):
         d_in = size_in_inches_from_name(bare)[0]  # (as the geometry reader takes a size from its own name)
         D, _, unit, _ = size_from_name(bare)
-        entry = catalogue().get(named)
+        # (its blades on another hub, pl_triturbo_4b: the same blade's diameter, a review)
+        own = named if named in catalogue() else bare
+        entry = catalogue().get(own)
         if D is None and entry is not None and entry.diameter_in:  # (a catalogue propeller whose name gives no size,
             # pl_triturbo's geometry under its own name: "diameter unknown", a user-level run, 2026-11-29)
             diameter_in = entry.diameter_in
             said = re.sub(r"\s*\(tools/[^)]*\)", "", entry.note or "")  # (the catalogue's note, its tool left out)
             click.echo(f"propmap: note: diameter {diameter_in:.4g} in = {diameter_in * 25.4:.4g} mm, the catalogue's "
-                       f"for {named} (the names give none{'; ' + said if said else ''}); give --diameter-in if the "
+                       f"for {own} (the names give none{'; ' + said if said else ''}); give --diameter-in if the "
                        "propeller measured has another", err=True)
         elif d_in is not None:
             diameter_in = d_in
