@@ -460,7 +460,23 @@ def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
     gives with the file's blade angle at 0.75 R (within PITCH_ANGLE_TOLERANCE_DEG: a family file
     is one pitch). Files named for the same blades at another setting (``nr640_5_20deg`` with
     ``nr640_5_15deg_geom.txt``) are warned of unless ``angle_set``: the blade was set to their angle
-    (:func:`blade_angle_from_uiuc_names`)."""
+    (:func:`blade_angle_from_uiuc_names`). Files of two hubs of one blade are warned of alone.
+
+    Parameters
+    ----------
+    sources : sequence of str
+        The SOURCE files, every one UIUC-format.
+    prop : Propeller
+        The propeller they are compared with or fitted to (its name, blade count, diameter and
+        blade angle at 0.75 R are checked).
+    angle_set : bool, optional
+        Whether the blade was set to the angle the files' names give (default False).
+
+    Returns
+    -------
+    None
+        At most one warning, on standard error; raises nothing.
+    """
     from ..io.catalogue import catalogue
     from ..io.geometry_files import blade_angle_from_name, size_in_inches_from_name
 
