@@ -200,8 +200,10 @@ def test_a_catalogue_propellers_own_count_and_a_millimetre_family(tmp_path, caps
         hub4.append(tmp_path / Path(f).name.replace("pl_triturbo_", "pl_triturbo_4b_"))
         shutil.copyfile(f, hub4[-1])
     code, out, err = run(capsys, "validate", *hub4, "--prop", tmp_path / "pl_triturbo_geom.txt")
-    assert code == 0 and "note: diameter 2.52 in = 64 mm, the catalogue's for pl_triturbo (the names give none" in err, err
-    assert "note: 4 blades, from the UIUC data files' name" in err and "against pl_triturbo (4 blades, D = 0.064 m)" in out
+    assert code == 0, err
+    assert "note: diameter 2.52 in = 64 mm, the catalogue's for pl_triturbo (the names give none" in err, err
+    assert "note: 4 blades, from the UIUC data files' name" in err
+    assert "against pl_triturbo (4 blades, D = 0.064 m)" in out
 
 
 def test_validate_takes_the_same_and_a_given_count_is_kept(tmp_path, capsys):
@@ -347,3 +349,30 @@ def test_a_named_angle_beyond_the_blade_angle_range_is_refused_naming_it(tmp_pat
     assert code == 2 and "Traceback" not in err, err
     assert "error: SOURCE: zr640_5_80deg_" in err and "set to 80 deg at 0.75 R: zr640 rotated by +65.00 deg" in err, err
     assert "theta must be in [-90, 90] deg" in err.strip().splitlines()[-1], err
+
+
+def test_a_fit_records_the_blade_angle_it_was_fitted_with(tmp_path, capsys):
+    """A fit of UIUC's nr640_5_20deg runs (renamed zr640) with the family file sets the blade to 20 deg
+    from their names; the parameter file records it ([coverage] theta75_deg), and running the family
+    file's 15 deg blade with it is warned of, naming the +5 deg that sets it as fitted (it ran without
+    a word, 13% less thrust: a review, 2026-11-29); with that collective, or on the catalogue's
+    nr640_5_20deg, nothing is said."""
+    from propmap.io.params_file import read_coverage
+
+    geom = tmp_path / "zr640_geom.txt"
+    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", geom)
+    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))][:3]
+    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert code == 0 and "rotated by +5.00 deg" in err, err
+    assert read_coverage(tmp_path / "p.toml")["theta75_deg"] == pytest.approx(20.0, abs=1e-9)
+    base = ["loads", geom, "--diameter-in", "5", "--blades", "2", "--params", tmp_path / "p.toml", "--rpm", "6000"]
+    code, _, err = run(capsys, *base)
+    assert code == 0 and ("zr640 runs with p.toml, fitted to the blade set at 20.0 deg at 0.75 R; this one is at "
+                          "15.0 deg there: if it is the same blade, +5.0 deg of collective (--collective-deg)") in err
+    for args in ([*base, "--collective-deg", "5"], ["loads", "nr640_5_20deg", "--params", tmp_path / "p.toml",
+                                                    "--rpm", "6000"]):
+        code, _, err = run(capsys, *args)
+        assert code == 0 and "fitted to the blade set at" not in err, err

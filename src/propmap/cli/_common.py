@@ -198,11 +198,27 @@ def set_collective_deg(params) -> float:
     return float(f"{math.degrees(params.collective):.12g}")
 
 
-def _check_fitted_propeller(propeller, label: str) -> None:
+def theta75_deg(propeller) -> float:
+    """The blade angle theta at 0.75 R [deg] (PCHIP through the stations, core.geometry)."""
+    import numpy as np
+
+    return math.degrees(float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0]))
+
+
+#: a fitted blade's angle at 0.75 R (a parameter file's [coverage] theta75_deg) farther than this from the blade run,
+#: the command's collective included, is warned of [deg]
+BLADE_ANGLE_TOLERANCE_DEG = 1.0
+
+
+def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) -> None:
     """Warn where a parameter file fitted to load data of one propeller (its [coverage]
     ``propeller``, ``diameter_m``, ``n_blades``, written since 2026-11-26) runs another one: of
     another diameter (beyond 1%) or blade count (a user-level audit: such a file ran an 8x6E,
-    a 10x7E and a 12 in three-blade propeller without a word)."""
+    a 10x7E and a 12 in three-blade propeller without a word); or, at the same size, a blade
+    whose angle at 0.75 R with ``collective_deg`` [deg] added is more than
+    BLADE_ANGLE_TOLERANCE_DEG from the fitted blade's (``theta75_deg``, since 2026-11-29: a fit of
+    UIUC's nr640_5_20deg runs, whose blade was set from their names to 20 deg, ran the family
+    file's 15 deg blade again without a word, 13% less thrust)."""
     from pathlib import Path
 
     if not label or Path(label).suffix.lower() != ".toml":
@@ -228,6 +244,13 @@ def _check_fitted_propeller(propeller, label: str) -> None:
         return
     if d is None and b is None:
         return
+    fitted, now = cov.get("theta75_deg"), theta75_deg(propeller) + collective_deg
+    if fitted is not None and propeller.same_size(d, b) and abs(now - fitted) > BLADE_ANGLE_TOLERANCE_DEG:
+        given = " with the collective given" if collective_deg else ""
+        warn(f"{propeller.name} runs with {Path(label).name}, fitted to the blade set at {fitted:.1f} deg at 0.75 R; "
+             f"this one is at {now:.1f} deg there{given}: if it is the same blade, {fitted - now:+.1f} deg of "
+             "collective (--collective-deg) sets it as fitted")
+        return
     if not propeller.same_size(d, b):
         shown = ", ".join(x for x in (f"{d:.4g} m" if d is not None else "",
                                       f"{int(round(b))} blades" if b is not None else "") if x)
@@ -238,21 +261,22 @@ def _check_fitted_propeller(propeller, label: str) -> None:
              "docs/models.md)")
 
 
-def check_section_match(propeller, label: str) -> None:
+def check_section_match(propeller, label: str, collective_deg: float = 0.0) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets. Blade angles
     negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead. A
     set calibrated on another catalogue propeller (``calibrated:NAME``), or a parameter file fitted to
-    another propeller's load data (:func:`_check_fitted_propeller`), is warned of too."""
+    another propeller's load data (:func:`_check_fitted_propeller`; ``collective_deg``, the
+    command's own added collective [deg], counted in its blade angle), is warned of too."""
     import numpy as np
 
     from ..core.geometry import rotor_like
     from ..io.param_sets import section_presets
 
-    b75 = float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0])
+    b75 = theta75_deg(propeller)
     if b75 < 0 and np.mean(propeller.theta) < 0:
-        warn(f"{propeller.name}: the blade angles are negative ({np.degrees(b75):.1f} deg at 0.75 R): a pusher's or a "
+        warn(f"{propeller.name}: the blade angles are negative ({b75:.1f} deg at 0.75 R): a pusher's or a "
              "mirrored geometry? propmap takes a propeller's blade angles positive, measured from the disk plane "
              "(thrust along the axis; the rotation sense is the rotor's spin, docs/conventions.md): with these the "
              "thrust comes out negative. Give the magnitudes")
@@ -262,7 +286,7 @@ def check_section_match(propeller, label: str) -> None:
         warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "
              f"for a symmetric-section rotor give --params section:NAME ({', '.join(section_presets())}) or a "
              "parameter file fitted to its data")
-    _check_fitted_propeller(propeller, label)
+    _check_fitted_propeller(propeller, label, collective_deg)
     owner = label[len("calibrated:"):] if label.startswith("calibrated:") else None
     if owner is not None and owner != propeller.name and not _catalogue_geometry(owner, propeller):
         warn(f"{propeller.name} runs with {label}, the set calibrated on another propeller: such a set predicts even a "

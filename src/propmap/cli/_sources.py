@@ -11,7 +11,7 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PropChoice, _short, warn
+from ._common import InputError, PropChoice, _short, theta75_deg, warn
 from ._paths import _is_file, refuse_copies
 
 
@@ -379,8 +379,6 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     """
     import math
 
-    import numpy as np
-
     from ..io.catalogue import catalogue
     from ..io.geometry_files import blade_angle_from_name, geometry_format
 
@@ -394,7 +392,7 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     angle, setting = blade_angle_from_name(bare), blade_angle_from_name(base)
     if angle is None or not _same_blade(bare, base) or (setting is None and not _is_family_file(base)):
         return prop
-    geom = math.degrees(float(prop.theta_at(np.array([0.75 * prop.radius]))[0]))
+    geom = theta75_deg(prop)
     # (a geometry named for its setting is the blade as measured there, its own datum kept: set by the names'
     # difference; a family file, the design, to the named angle)
     offset = angle - (geom if setting is None else setting)
@@ -429,12 +427,9 @@ def _other_pitch(source, named: str, pitch_ratio: float | None, prop, angle_deg:
     family file is one blade at one pitch; its size is taken from the data's names, its pitch is not."""
     import math
 
-    import numpy as np
-
     from ..io.catalogue import catalogue
 
-    R = prop.radius
-    geom = math.degrees(float(prop.theta_at(np.array([0.75 * R]))[0]))
+    geom = theta75_deg(prop)
     target = angle_deg if angle_deg is not None else math.degrees(math.atan(pitch_ratio / (0.75 * math.pi)))
     if abs(geom - target) <= PITCH_ANGLE_TOLERANCE_DEG:
         return False

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from ._common import (InputError, PathArg, _short, check_section_match, load_params, option_group,
+from ._common import (InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
                       parse_names, resolve_air, warn, with_air_options, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation, data_digest, file_air, file_digests, read_sources
@@ -139,12 +139,12 @@ def _coverage(data, prop, air) -> dict:
 
 
 def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
-    """The [coverage] keys of the propeller fitted: its name, diameter [m], blade count and the
-    chord Reynolds numbers at 0.75 R of the rates ``omega_min``..``omega_max`` [rad/s] in
-    ``air`` (:meth:`Propeller.reynolds_75`)."""
+    """The [coverage] keys of the propeller fitted: its name, diameter [m], blade count, blade
+    angle at 0.75 R [deg] and the chord Reynolds numbers at 0.75 R of the rates
+    ``omega_min``..``omega_max`` [rad/s] in ``air`` (:meth:`Propeller.reynolds_75`)."""
     re75 = prop.reynolds_75([omega_min, omega_max], air)
     return {"propeller": prop.name, "diameter_m": prop.diameter, "n_blades": int(prop.n_blades),
-            "re75_min": float(re75[0]), "re75_max": float(re75[1])}
+            "theta75_deg": theta75_deg(prop), "re75_min": float(re75[0]), "re75_max": float(re75[1])}
 
 
 def _vehicle_propeller(veh, omega_min: float, omega_max: float, air) -> dict:

@@ -434,7 +434,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
-    check_section_match(propeller, label)
+    check_section_match(propeller, label, collective_deg)
     set_deg = set_collective_deg(params)  # the parameter set's own blade-angle offset, added to the option's
     total_deg = set_deg + collective_deg
     if abs(total_deg) > COLLECTIVE_DEG_MAX:

@@ -238,7 +238,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                                      f"{' and its set' if own else ''}: a C header holds one map and one set")
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, air_choice)
-        check_section_match(propeller, label)
+        check_section_match(propeller, label, collective_deg or 0.0)
         data_label = label  # (the set whose data coverage the envelope is checked against)
         if collective_deg is not None:
             from ..core.airfoil import COLLECTIVE_MAX

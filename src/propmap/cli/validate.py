@@ -231,7 +231,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
 
     try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
         # (against the parameters given, not the generic set: their own errors follow; a user-level audit, 2026-11-29;
-        # --params generic is the generic set, said as such: it is no propeller's, and a fit would absorb the difference)
+        # --params generic is the generic set, said as such: it is no propeller's, a fit would absorb the difference)
         given = params_spec is not None and params_spec != "generic"
         for w in sanity_check(data, prop, params=params if given else None, air=air, pole_pairs=pole_pairs):
             warn(w)

@@ -21,7 +21,10 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
                  # the propeller the data are of (a load fit's; since 2026-11-26): its diameter [m] and blade count
                  "diameter_m": (0.0, 100.0), "n_blades": (1.0, 100.0),
                  # the chord Reynolds numbers at 0.75 R of the data's rates, in the fit's air (since 2026-11-26)
-                 "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9)}
+                 "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9),
+                 # the fitted blade's angle at 0.75 R [deg], the set's own collective not included (since 2026-11-29:
+                 # a blade set from UIUC names, nr640_5_20deg's +5 deg, was lost when the file ran the geometry again)
+                 "theta75_deg": (-90.0, 90.0)}
 #: the [coverage] keys whose lower end is open (a hand-edited diameter_m = 0 silenced the size check: an audit)
 COVERAGE_OPEN_LOW = ("diameter_m", "re75_min", "re75_max")
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
