@@ -385,10 +385,10 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
         return prop
     base = _geometry_base(Path(prop_spec).name)
-    runs = {_uiuc_run_name(s) for s in sources}
-    if None in runs or len(runs) != 1:
+    runs = [_uiuc_run_name(s) for s in sources]
+    if None in runs or len({r[1] for r in runs}) != 1:  # (one blade at one setting; its hubs may differ)
         return prop
-    named, bare, _ = runs.pop()
+    bare = runs[0][1]
     angle, setting = blade_angle_from_name(bare), blade_angle_from_name(base)
     if angle is None or not _same_blade(bare, base) or (setting is None and not _is_family_file(base)):
         return prop
