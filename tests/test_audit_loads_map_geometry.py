@@ -500,3 +500,17 @@ def test_a_variable_of_exactly_max_nodes_nodes_is_read(tmp_path):
             nc.createDimension(d, n)
         nc.createVariable("thrust", "f4", tuple(sizes), chunksizes=(1000, 1000, 1), zlib=True)
     assert read_dataset(path)["thrust"].size == MAX_NODES
+
+
+def test_a_propeller_refuses_masked_stations_naming_the_argument():
+    """A masked array with masked entries is refused, naming the argument: np.asarray drops the mask, and a masked
+    chord of 99 m (a fill value) was taken as a station's chord (a defect found by this audit)."""
+    from propmap.core.geometry import Propeller
+
+    good = dict(r=[0.02, 0.05, 0.1], chord=[0.02, 0.02, 0.02], theta=[0.3, 0.2, 0.1])
+    for key, value in (("chord", [0.02, 99.0, 0.02]), ("r", [0.02, 0.05, 0.1]), ("theta", [0.3, 0.2, 0.1])):
+        args = {**good, key: np.ma.masked_array(value, mask=[False, True, False])}
+        with pytest.raises(ValueError, match=rf"^{key}: a masked array with masked entries"):
+            Propeller("audit", 0.1, 2, **args)
+    p = Propeller("audit", 0.1, 2, **{**good, "chord": np.ma.masked_array(good["chord"], mask=[False] * 3)})
+    assert p.chord.tolist() == [0.02, 0.02, 0.02] and type(p.chord) is np.ndarray

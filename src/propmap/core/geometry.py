@@ -143,7 +143,8 @@ class Propeller:
     ------
     ValueError
         Naming the argument: a value of the wrong type (a bool, a string; a non-integer
-        ``n_blades``; a ``name`` that is not a string; stations not 1-D), non-finite values,
+        ``n_blades``; a ``name`` that is not a string; stations not 1-D; a masked array with
+        masked entries, whose values NumPy would use as if given), non-finite values,
         ``radius <= 0``, ``n_blades < 1``, a non-finite ``pitch``, arrays of different length
         or fewer than 2 stations, radii not strictly increasing or outside (0, radius],
         negative chord or zero chord at every station, blade angle outside [-90, 90] deg, or
@@ -184,6 +185,7 @@ class Propeller:
         arrays = {}
         for key in ("r", "chord", "theta"):
             value = getattr(self, key)
+            refuse_masked(key, value)  # (a masked chord of 99 m was read as given: a mutation audit, 2026-11-29)
             try:
                 # no bools, strings or objects read as numbers
                 numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
