@@ -376,3 +376,14 @@ def test_a_fit_records_the_blade_angle_it_was_fitted_with(tmp_path, capsys):
                                                     "--rpm", "6000"]):
         code, _, err = run(capsys, *args)
         assert code == 0 and "fitted to the blade set at" not in err, err
+
+
+def test_an_upper_case_static_run_is_labelled_by_its_run_id(tmp_path):
+    """``NR640_5_20DEG_STATIC_1197GA.TXT`` (a UIUC name in upper case) is static run 1197GA: its id
+    was the whole stem, the run labelled static_NR640_5_20DEG_STATIC_1197GA (a review, 2026-11-29)."""
+    from propmap.io.readers import read_uiuc_static
+
+    upper = tmp_path / "NR640_5_20DEG_STATIC_1197GA.TXT"
+    shutil.copyfile(UIUC_V2 / "nr640_5_20deg_static_1197ga.txt", upper)
+    assert read_uiuc_static(upper).run_id == "1197GA"
+    assert read_uiuc_static(UIUC_V2 / "nr640_5_20deg_static_1197ga.txt").run_id == "1197ga"

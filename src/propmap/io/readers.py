@@ -125,7 +125,7 @@ def read_uiuc_static(path) -> StaticRun:
     _check_column(t, 1, "CT", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     _check_column(t, 2, "CP", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     d = t.data
-    run = path.stem.split("_static_")[-1]
+    run = re.split("_static_", path.stem, flags=re.IGNORECASE)[-1]  # (an upper-case name's id was the whole stem)
     return StaticRun(run, d[:, 0], d[:, 1], d[:, 2], f"UIUC Propeller Data Site, {path.name}")
 
 
