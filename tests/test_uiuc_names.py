@@ -387,3 +387,21 @@ def test_an_upper_case_static_run_is_labelled_by_its_run_id(tmp_path):
     shutil.copyfile(UIUC_V2 / "nr640_5_20deg_static_1197ga.txt", upper)
     assert read_uiuc_static(upper).run_id == "1197GA"
     assert read_uiuc_static(UIUC_V2 / "nr640_5_20deg_static_1197ga.txt").run_id == "1197ga"
+
+
+def test_a_set_fitted_on_one_hub_run_on_another_is_told_what_hubs_measured(tmp_path, capsys):
+    """A set fitted to the 2-blade DA4022 5x3.75's UIUC data, run on its 3-blade hub's data, was
+    warned of as carrying to another propeller no better than the generic set; it predicts them to
+    2.45% of static CT, the generic set 12.77% (regression values, bundled UIUC vol. 2 data; a review,
+    2026-11-29). Now the warning gives the hubs' measured range."""
+    geom = tmp_path / "da4022_5x3.75_geom.txt"
+    shutil.copyfile(UIUC_V2 / "da4022_5x3.75_geom.txt", geom)
+    two = [UIUC_V2 / "da4022_5x3.75_static_0642rb.txt", *sorted(UIUC_V2.glob("da4022_5x3.75_064[4-7]rb_*.txt"))]
+    code, err, _ = _fit(capsys, tmp_path, two, geom)
+    assert code == 0, err
+    three = sorted(UIUC_V2.glob("da4022_5x3.75_3b_*.txt"))
+    code, out, err = run(capsys, "validate", *three, "--prop", geom, "--params", tmp_path / "p.toml")
+    assert code == 0 and "runs with p.toml, fitted to data of da4022_5x3.75 on 2 blades: if it is the same blade" in err
+    assert "do not carry to another one reliably" not in err, err
+    (row,) = [line.split() for line in out.splitlines() if line.startswith("all points")]
+    assert row[2] == "2.45%", row

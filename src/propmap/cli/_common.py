@@ -251,6 +251,15 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
              f"this one is at {now:.1f} deg there{given}: if it is the same blade, {fitted - now:+.1f} deg of "
              "collective (--collective-deg) sets it as fitted")
         return
+    if b is not None and propeller.same_size(d, None) and not propeller.same_size(None, b) and (
+            fitted is None or abs(theta75_deg(propeller) + collective_deg - fitted) <= BLADE_ANGLE_TOLERANCE_DEG):
+        # (the same blade on another hub: 'no better than the generic set' was said of it, which the hubs of UIUC
+        # vol. 2 contradict)
+        warn(f"{propeller.name} ({propeller.n_blades} blades) runs with {Path(label).name}, fitted to data of "
+             f"{cov.get('propeller', 'a propeller')} on {int(round(b))} blades: if it is the same blade on another "
+             "hub, such a set predicted UIUC's 3- and 4-blade hubs from the 2-blade one's data to 2.9-11.9% of "
+             "static CT, more blades making less thrust than the model says (docs/validation.md, Blade count)")
+        return
     if not propeller.same_size(d, b):
         shown = ", ".join(x for x in (f"{d:.4g} m" if d is not None else "",
                                       f"{int(round(b))} blades" if b is not None else "") if x)
