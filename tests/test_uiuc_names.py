@@ -371,7 +371,8 @@ def test_a_fit_records_the_blade_angle_it_was_fitted_with(tmp_path, capsys):
     base = ["loads", geom, "--diameter-in", "5", "--blades", "2", "--params", tmp_path / "p.toml", "--rpm", "6000"]
     code, _, err = run(capsys, *base)
     assert code == 0 and ("zr640 runs with p.toml, fitted to the blade set at 20.0 deg at 0.75 R; this one is at "
-                          "15.0 deg there: if it is the same blade, +5.0 deg of collective (--collective-deg)") in err
+                          "15.0 deg there: if it is the same blade, +5.0 deg of collective sets it as fitted "
+                          "(--collective-deg of loads and map)") in err
     for args in ([*base, "--collective-deg", "5"], ["loads", "nr640_5_20deg", "--params", tmp_path / "p.toml",
                                                     "--rpm", "6000"]):
         code, _, err = run(capsys, *args)

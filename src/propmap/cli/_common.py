@@ -249,7 +249,7 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
         given = " with the collective given" if collective_deg else ""
         warn(f"{propeller.name} runs with {Path(label).name}, fitted to the blade set at {fitted:.1f} deg at 0.75 R; "
              f"this one is at {now:.1f} deg there{given}: if it is the same blade, {fitted - now:+.1f} deg of "
-             "collective (--collective-deg) sets it as fitted")
+             "collective sets it as fitted (--collective-deg of loads and map)")
         return
     if b is not None and propeller.same_size(d, None) and not propeller.same_size(None, b) and (
             fitted is None or abs(theta75_deg(propeller) + collective_deg - fitted) <= BLADE_ANGLE_TOLERANCE_DEG):
