@@ -252,7 +252,7 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
              "collective sets it as fitted (--collective-deg of loads and map)")
         return
     if b is not None and propeller.same_size(d, None) and not propeller.same_size(None, b) and (
-            fitted is None or abs(theta75_deg(propeller) + collective_deg - fitted) <= BLADE_ANGLE_TOLERANCE_DEG):
+            fitted is None or abs(now - fitted) <= BLADE_ANGLE_TOLERANCE_DEG):
         # (the same blade on another hub: 'no better than the generic set' was said of it, which the hubs of UIUC
         # vol. 2 contradict)
         warn(f"{propeller.name} ({propeller.n_blades} blades) runs with {Path(label).name}, fitted to data of "

@@ -122,9 +122,13 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
     other = [s for s in sources if not looks_like_uiuc(s)]
-    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, all_uiuc=not other).load(prop_spec)
+    # (UIUC data files with a UIUC geometry file: what their names give is taken; the file's format asked once)
+    from ..io.geometry_files import geometry_format
+
+    named = not other and prop_spec not in catalogue() and geometry_format(prop_spec) == "uiuc"
+    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, uiuc_geometry=named).load(prop_spec)
     set_from_names = False
-    if not other:
+    if named:
         given, prop = prop, blade_angle_from_uiuc_names(sources, prop_spec, prop)
         set_from_names = prop is not given
     try:
@@ -244,7 +248,7 @@ def _is_family_file(base: str) -> bool:
     return size_from_name(base)[0] is None
 
 
-def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_uiuc: bool) -> PropChoice:
+def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, uiuc_geometry: bool) -> PropChoice:
     """The blade count and diameter a UIUC geometry file lacks, from the UIUC data files named for it.
 
     A UIUC geometry file (``r/R c/R beta``) states neither; UIUC's data files name their
@@ -266,9 +270,9 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
         --prop: a catalogue name or a geometry file.
     prop_choice : PropChoice
         --diameter-in and --blades as given.
-    all_uiuc : bool
-        Whether every SOURCE is a UIUC-format file (:func:`~propmap.io.readers.looks_like_uiuc`,
-        which the caller has asked already).
+    uiuc_geometry : bool
+        Whether every SOURCE is a UIUC-format file (:func:`~propmap.io.readers.looks_like_uiuc`)
+        and ``prop_spec`` a UIUC geometry file, not a catalogue name (the caller has asked both).
 
     Returns
     -------
@@ -286,11 +290,9 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, all_ui
         ``..._3b_...``): a fit or a comparison is of one count.
     """
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, geometry_format, size_from_name, size_in_inches_from_name
+    from ..io.geometry_files import NAME_DIAMETER_RANGE_IN, size_from_name, size_in_inches_from_name
 
-    if not all_uiuc or (prop_choice.blades is not None and prop_choice.diameter_in is not None):
-        return prop_choice
-    if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
+    if not uiuc_geometry or (prop_choice.blades is not None and prop_choice.diameter_in is not None):
         return prop_choice
     runs = {_uiuc_run_name(s) for s in sources}
     if prop_choice.blades is None and None not in runs and (mixed := _mixed_hubs(sources)):
@@ -360,7 +362,8 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     sources : sequence of str
         The SOURCE files, every one UIUC-format.
     prop_spec : str
-        --prop: a catalogue name or a geometry file.
+        --prop: a UIUC geometry file (the caller's check; a catalogue PROP and a PE0 file are
+        taken as they are, and not passed).
     prop : Propeller
         The propeller --prop gives.
 
@@ -368,8 +371,7 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     -------
     Propeller
         ``prop`` itself, or with its blade angle theta shifted at every station (a geometry named
-        for a size, ``da4052_5x2.65_geom.txt``, runs of several settings, a catalogue PROP and a
-        PE0 file are taken as they are).
+        for a size, ``da4052_5x2.65_geom.txt``, and runs of several settings are taken as they are).
 
     Raises
     ------
@@ -379,11 +381,8 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
     """
     import math
 
-    from ..io.catalogue import catalogue
-    from ..io.geometry_files import blade_angle_from_name, geometry_format
+    from ..io.geometry_files import blade_angle_from_name
 
-    if prop_spec in catalogue() or geometry_format(prop_spec) != "uiuc":
-        return prop
     base = _geometry_base(Path(prop_spec).name)
     runs = [_uiuc_run_name(s) for s in sources]
     if None in runs or len({r[1] for r in runs}) != 1:  # (one blade at one setting; its hubs may differ)
