@@ -199,7 +199,17 @@ def set_collective_deg(params) -> float:
 
 
 def theta75_deg(propeller) -> float:
-    """The blade angle theta at 0.75 R [deg] (PCHIP through the stations, core.geometry)."""
+    """The blade angle theta at 0.75 R [deg] (PCHIP through the stations, core.geometry).
+
+    Parameters
+    ----------
+    propeller : Propeller
+
+    Returns
+    -------
+    float
+        theta(0.75 R) [deg], from the disk plane.
+    """
     import numpy as np
 
     return math.degrees(float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0]))
