@@ -216,6 +216,12 @@ def test_flapping_blades_with_a_linear_inflow(prop, params, compliance):
     tol = 2e-5 if params.inplane_induction else 1e-5
     steps = {"omega": 1e-2, "airspeed": 1e-4, "incidence": 1e-6, "collective": 1e-6, "rho": 1e-5,
              "flap_compliance": 1e-5, slope: 1e-5}
+    if not params.swirl and params.inflow == "pitt-peters" and isinstance(params, pm.CamberedParams):
+        # (since the calibration of 2026-11-29: at 150 deg, in the vortex-ring band, the generic set's loads with
+        # Pitt-Peters inflow carry the root tolerance's noise: steps of 1e-4 m/s, 1e-6 rad and 1e-5 in cl_alpha
+        # gave differences 1.1e-5, 1.9e-5 and 1.7e-5 of the largest from the derivatives; 6.8e-7 and 2.3e-6 at
+        # 1e-3 m/s and 1e-5 rad)
+        steps = {k: (h if k == "omega" else 10 * h) for k, h in steps.items()}
     if params.swirl:
         steps = {k: 10 * h for k, h in steps.items()}
         # the swirl's stopping tolerance in the loads: at 140 deg (descent, the wake skew of a hovering disk since

@@ -33,8 +33,14 @@ def test_volume_2_names_sizes_and_hubs():
         e = cat["nr640_5_15deg" + hub]
         assert e.n_blades == n and e.geometry_file.endswith("nr640_5_15deg_geom.txt")
         assert pm.load_propeller("nr640_5_15deg" + hub).n_blades == n
-    p20 = pm.load_propeller("nr640_5_20deg")
-    assert math.degrees(np.interp(0.75 * p20.radius, p20.r, p20.theta)) == pytest.approx(20.0, abs=1e-9)
+    # the 5 in blade measured at its 15 deg setting (16.631 deg at 0.75 R in its own datum) turned by +5 deg for the
+    # 20 deg runs; the 9 in blade, not measured, is the design file (15 deg at 0.75 R) set to 20 deg
+    p15, p20 = pm.load_propeller("nr640_5_15deg"), pm.load_propeller("nr640_5_20deg")
+    np.testing.assert_allclose(p20.theta - p15.theta, math.radians(5.0), rtol=0, atol=1e-12)
+    assert p20.r == pytest.approx(p15.r, abs=0)
+    assert cat["nr640_5_20deg"].geometry_file.endswith("nr640_5_15deg_geom.txt")
+    p9 = pm.load_propeller("nr640_9_20deg")
+    assert math.degrees(np.interp(0.75 * p9.radius, p9.r, p9.theta)) == pytest.approx(20.0, abs=1e-9)
     d = pm.load_propeller("da4052_9x4.76")  # the design's chord with the helix of the named pitch
     np.testing.assert_allclose(np.tan(d.theta) * 2 * np.pi * d.r, 4.76 * 0.0254, rtol=1e-12)
     assert cat["da4052_9x4.76"].note.startswith("no measured geometry")

@@ -187,7 +187,7 @@ def test_the_command_gives_the_functions_trims(neurobem, capsys):
     assert row["power_W"] == pytest.approx(want.power, rel=1e-12) and got["params"] == "generic"
     assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "10"]) == 0
     lines = capsys.readouterr().out.splitlines()
-    assert lines[1].split()[:3] == ["V", "[m/s]", "roll"] and lines[2].split()[:3] == ["10", "0.000", "-4.124"]
+    assert lines[1].split()[:3] == ["V", "[m/s]", "roll"] and lines[2].split()[:3] == ["10", "0.000", "-4.115"]
     for args, said in ((["--airspeed", "5,x"], "--airspeed must be 1 to 200 comma-separated speeds"),
                        (["--airspeed", "5", "--climb-rate", "7"], "--climb-rate must be a speed within [-5, 5] m/s"),
                        (["--airspeed", "100"], "--airspeed 100: airspeed 100 m/s, climb_rate 0 m/s: no trim found")):

@@ -105,9 +105,10 @@ def _v2_size(prop: str, folder: Path):
       to 0.01 deg; da4052_geom.txt within 0.7 deg), and each named pitch is its own design. The
       measured DA4002 blades came out 1.8-3.4 deg above their helix at 0.75 R and with more twist
       (da4002_5x1.58: 27.7 deg at 0.3 R against 18.5): the uncertainty of these geometries;
-    * nr640_5_20deg, nr640_9_20deg: the NR640 design blade (nr640_geom.txt, 15 deg at 0.75 R) set
-      5 deg higher: the same blades are run at several angles and in 2-, 3- and 4-blade hubs, an
-      adjustable-pitch propeller.
+    * nr640_5_20deg: the 5 in blade measured at its 15 deg setting (nr640_5_15deg_geom.txt, 16.6
+      deg at 0.75 R in its own datum) turned 5 deg: the same blades are run at several angles and in
+      2-, 3- and 4-blade hubs, an adjustable-pitch propeller. nr640_9_20deg, whose blade was not
+      measured: the NR640 design blade (nr640_geom.txt, 15 deg at 0.75 R) set 5 deg higher.
     """
     base, blades = prop, 2
     m = re.fullmatch(r"(.+)_([34])b", prop)
@@ -137,11 +138,23 @@ def _v2_size(prop: str, folder: Path):
     if own.is_file():
         geom = own
     elif fam == "nr640":
-        geom = folder / f"{fam}_geom.txt"
-        target = float(re.fullmatch(r"nr640_[0-9.]+_([0-9.]+)deg", base).group(1))
-        rule["beta_offset_deg"] = round(target - _beta_at(geom), 4)
-        note = (f"no measured geometry: the NR640 design blade (nr640_geom.txt) set "
-                f"{rule['beta_offset_deg']:+.3f} deg to {target:g} deg at 0.75 R")
+        d_name, target = re.fullmatch(r"nr640_([0-9.]+)_([0-9.]+)deg", base).groups()
+        target = float(target)
+        # the same blade measured at another setting of its hub: that blade, turned by the
+        # difference between the two names' settings (its own angle datum kept)
+        measured = sorted(folder.glob(f"nr640_{d_name}_*deg_geom.txt"))
+        if measured:
+            geom = measured[0]
+            setting = float(re.fullmatch(r"nr640_[0-9.]+_([0-9.]+)deg_geom\.txt", geom.name).group(1))
+            rule["beta_offset_deg"] = round(target - setting, 4)
+            note = (f"no measured geometry at this setting: the same blade measured at {setting:g} deg "
+                    f"({geom.name}) turned {rule['beta_offset_deg']:+.3f} deg, the difference of the "
+                    f"names' settings")
+        else:
+            geom = folder / f"{fam}_geom.txt"
+            rule["beta_offset_deg"] = round(target - _beta_at(geom), 4)
+            note = (f"no measured geometry: the NR640 design blade (nr640_geom.txt) set "
+                    f"{rule['beta_offset_deg']:+.3f} deg to {target:g} deg at 0.75 R")
     else:
         geom = folder / f"{fam}_geom.txt"
         rule["helical_pitch_in"] = p_in

@@ -346,12 +346,13 @@ def blade_angle_from_uiuc_names(sources, prop_spec, prop):
 
     UIUC vol. 2 names its NR640 runs ``nr640_<D>_<angle>deg`` (Deters, Ananda & Selig, AIAA
     2014-2151): the blades of an adjustable hub set to that angle at 0.75 R. The family file
-    ``nr640_geom.txt`` is the design blade at 15 deg; the catalogue's ``nr640_5_20deg`` is that
+    ``nr640_geom.txt`` is the design blade at 15 deg; the catalogue's ``nr640_9_20deg`` is that
     blade rotated by +5 deg (its ``beta_offset_deg``), and so is a family file here, where every
     SOURCE is named for one such angle: the blade angle shifted by the same amount at every
     station, said in a note. A geometry named for a setting (``nr640_5_15deg_geom.txt``, the 5 in
     blades measured at 15 deg: 16.6 deg at 0.75 R, its own datum) is rotated by the names'
-    difference (+5 deg for ``nr640_5_20deg`` runs). On UIUC's nr640_5_20deg runs, blind (generic
+    difference (+5 deg for ``nr640_5_20deg`` runs, as the catalogue's ``nr640_5_20deg`` is since
+    2026-11-29). On UIUC's nr640_5_20deg runs, blind (generic
     set): CT rms 35.2% of static CT with the family file as it is, 6.9% set to 20 deg; 27.9% with
     the measured 15 deg blade as it is, 2.5% rotated. Static run and lowest sweep fitted, four
     sweeps held out: thrust rms 0.036 N with the family file as it is, 0.011 N with either rotated
