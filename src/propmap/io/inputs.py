@@ -269,9 +269,14 @@ def header_separator(line: str, row: str | None = None) -> str:
         The most frequent candidate of ``','``, ``';'`` (spreadsheets in locales with a decimal
         comma) and a tab; a tie of ``';'`` and ``','`` gives ``';'`` (names such as ``Thrust, N``
         hold a comma, few a semicolon), any other tie (a one-column header included) the comma.
+        Where both ``';'`` and ``','`` occur in the row as often as in the header, ``';'`` is
+        taken, however many commas there are (``Zeit, s;Drehzahl, U/min`` over ``1,5;3000,5``:
+        each name's unit and each value's decimal comma; it was split at the commas, 2026-11-29).
     """
     counts = {c: line.count(c) for c in SEPARATORS}
     both = [c for c in SEPARATORS if counts[c] and row is not None and row.count(c) == counts[c]]
+    if ";" in both and "," in both:  # (every name 'Drehzahl, U/min' and every value '3000,5': a ';' file)
+        both.remove(",")
     return max(both or SEPARATORS, key=lambda c: (counts[c], c == ";" and counts[c] > 0, c == ","))
 
 
