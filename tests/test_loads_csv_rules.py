@@ -68,3 +68,21 @@ def test_points_are_counted_as_distinct_operating_points_and_a_repeated_row_is_s
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         read_loads(_csv(tmp_path, "rpm,thrust,torque", six + [(r, 1.01e-7 * r**2, 1e-9 * r**2) for r in RPM[:2]]))
+
+
+def test_a_row_cut_short_before_a_column_it_needs_is_refused_not_taken_for_a_stopped_motor(tmp_path):
+    """A stand export's row cut short (``7,9.0`` of five fields) ended before its speed column, which
+    read as empty: a stopped motor's row, skipped with only a note (a thrust-stand export audit,
+    2026-11-29). It is an error naming the line and the column it ends before; a row that ends
+    after the columns read (a missing voltage) is read."""
+    head = "Time (s),Thrust (N),Torque (N m),Motor Electrical Speed (RPM),Voltage (V)"
+    rows = ["1,1.00,0.020,3000,12", "2,1.80,0.035,4000,12", "3,2.80,0.055,5000", "4,4.0,0.080,6000,12",
+            "5,5.4,0.11,7000,12", "6,7.1,0.14,8000,12", "8,9.0,0.18,9000,12"]
+    p = tmp_path / "stand.csv"
+    p.write_text("\n".join([head, *rows]) + "\n", encoding="utf-8")
+    data = read_loads(p)
+    assert data.n == 7 and data.omega[2] == pytest.approx(5000 * np.pi / 30)
+    p.write_text("\n".join([head, *rows[:6], "7,9.0", rows[6]]) + "\n", encoding="utf-8")
+    with pytest.raises(DataError, match=r"stand.csv, line 8: 2 fields, but the header \(line 1\) has 5: the row ends "
+                                        r"before column 'Torque \(N m\)'"):
+        read_loads(p)

@@ -12,7 +12,8 @@ without a byte-order mark
 the header line) with decimal points or, as spreadsheets in decimal-comma locales save it,
 decimal commas (``0,057``; a file with both is refused: beside decimal commas a point is a
 thousands separator), a header line then one row per point; line ends
-LF or CRLF; blank lines and rows of empty cells are skipped; double quotes as in RFC 4180
+LF or CRLF; blank lines and rows of empty cells are skipped, a row that ends before a column
+that must be read is an error (since 2026-11-29); double quotes as in RFC 4180
 (an unterminated quote is an error). Column names are stripped of spaces, at most 255
 characters, each at most once (a duplicated column is an error, never "the first wins");
 columns not listed are ignored, and so are unnamed ones that hold nothing (a trailing
@@ -300,6 +301,10 @@ class _Csv:
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
+            cut = [j for c, j in cols if j >= len(cells) and (c in stop or c not in optional)]
+            if cut:  # (a row cut short: read as a stopped motor's row and skipped until 2026-11-29, an audit)
+                raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}: the row "
+                                 f"ends before column {_short(self.header[min(cut)])}", line)
             for j in unnamed:
                 if j < len(cells) and cells[j].strip():
                     raise self.error(unnamed_value_message(j, cells[j].strip(), self.sep, bool(self.columns[j - 1])),
