@@ -400,7 +400,8 @@ def main():
         p(f"\nvol. {vv}: Spearman(measured static dlnCT/dln rpm, signed sweep error) = {rho:+.2f} (p {pv:.2g})")
     p("")
 
-    # ---- 9. paired: same planform/pitch, different section (da4002 vs da4052), and blade count
+    # ---- 9. paired: same diameter/pitch, different section and planform (da4002 constant chord vs da4052
+    # tapered, the same c/R at 0.75 R), and blade count
     p("## 9. Paired comparisons at (nearly) the same geometry and Reynolds number\n")
     p("| pair | Re75 a / b | static a / b | sweep signed a / b |")
     p("|---|---|---|---|")
