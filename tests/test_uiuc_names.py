@@ -411,3 +411,30 @@ def test_a_set_fitted_on_one_hub_run_on_another_is_told_what_hubs_measured(tmp_p
     assert "do not carry to another one reliably" not in err, err
     (row,) = [line.split() for line in out.splitlines() if line.startswith("all points")]
     assert row[2] == "2.45%", row
+
+
+def test_a_points_files_collective_column_counts_in_the_blade_angle_check(tmp_path, capsys):
+    """`loads GEOM --points P.csv` with a collective_deg column: the fitted blade's angle is checked against
+    the rows' collectives, not 0 deg (the 15 deg design blade with rows at +5 deg, which set it as the fitted
+    20 deg blade, was warned of: noticed 2026-11-29). Rows that never reach it are warned of, naming the
+    column's span and the row nearest."""
+    geom = tmp_path / "zr640_geom.txt"
+    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", geom)
+    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))][:3]
+    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    assert code == 0, err
+    base = ["loads", geom, "--diameter-in", "5", "--blades", "2", "--params", tmp_path / "p.toml"]
+    for column, said in (([5.0, 5.0], None), ([-2.0, 8.0], None), ([0.0, 2.0], "2 deg (the column spans 0 to 2 deg)")):
+        pts = tmp_path / "pts.csv"
+        pts.write_text("rpm,airspeed,incidence_deg,collective_deg\n"
+                       + "".join(f"6000,0,0,{c:g}\n" for c in column), encoding="utf-8")
+        code, _, err = run(capsys, *base, "--points", pts, "--out", tmp_path / "out.csv")
+        assert code == 0, err
+        if said is None:
+            assert "fitted to the blade set at" not in err, (column, err)
+        else:
+            assert ("fitted to the blade set at 20.0 deg at 0.75 R; this one is at 17.0 deg there with the points' "
+                    f"collective_deg column's {said}: if it is the same blade, +3.0 deg") in err, err

@@ -220,7 +220,8 @@ def theta75_deg(propeller) -> float:
 BLADE_ANGLE_TOLERANCE_DEG = 1.0
 
 
-def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) -> None:
+def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0,
+                            collective_range: tuple[float, float] | None = None) -> None:
     """Warn where a parameter file fitted to load data of one propeller (its [coverage]
     ``propeller``, ``diameter_m``, ``n_blades``, written since 2026-11-26) runs another one: of
     another diameter (beyond 1%) or blade count (a user-level audit: such a file ran an 8x6E,
@@ -228,7 +229,9 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
     whose angle at 0.75 R with ``collective_deg`` [deg] added is more than
     BLADE_ANGLE_TOLERANCE_DEG from the fitted blade's (``theta75_deg``, since 2026-11-29: a fit of
     UIUC's nr640_5_20deg runs, whose blade was set from their names to 20 deg, ran the family
-    file's 15 deg blade again without a word, 13% less thrust)."""
+    file's 15 deg blade again without a word, 13% less thrust). ``collective_range`` (lo, hi)
+    [deg]: a points file's collective column instead, which sets the blade as fitted where the
+    collective that does lies within it (its rows were checked at 0 deg until 2026-11-29)."""
     from pathlib import Path
 
     if not label or Path(label).suffix.lower() != ".toml":
@@ -254,9 +257,15 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
         return
     if d is None and b is None:
         return
-    fitted, now = cov.get("theta75_deg"), theta75_deg(propeller) + collective_deg
+    fitted = cov.get("theta75_deg")
+    if fitted is not None and collective_range is not None:  # (the row nearest the blade as fitted)
+        collective_deg = min(max(fitted - theta75_deg(propeller), collective_range[0]), collective_range[1])
+    now = theta75_deg(propeller) + collective_deg
     if fitted is not None and propeller.same_size(d, b) and abs(now - fitted) > BLADE_ANGLE_TOLERANCE_DEG:
         given = " with the collective given" if collective_deg else ""
+        if collective_range is not None:
+            given = (f" with the points' collective_deg column's {collective_deg:g} deg (the column spans "
+                     f"{collective_range[0]:g} to {collective_range[1]:g} deg)")
         warn(f"{propeller.name} runs with {Path(label).name}, fitted to the blade set at {fitted:.1f} deg at 0.75 R; "
              f"this one is at {now:.1f} deg there{given}: if it is the same blade, {fitted - now:+.1f} deg of "
              "collective sets it as fitted (--collective-deg of loads and map)")
@@ -280,14 +289,16 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0) 
              "docs/models.md)")
 
 
-def check_section_match(propeller, label: str, collective_deg: float = 0.0) -> None:
+def check_section_match(propeller, label: str, collective_deg: float = 0.0,
+                        collective_range: tuple[float, float] | None = None) -> None:
     """Warn when a rotor-like blade (core.geometry.rotor_like) runs with the generic set,
     which assumes the cambered sections of hobby propellers (on a symmetric-section rotor
     its hover thrust is far too high); the warning names the section presets. Blade angles
     negative at 0.75 R and on average (a pusher's or mirrored file) are warned of instead. A
     set calibrated on another catalogue propeller (``calibrated:NAME``), or a parameter file fitted to
     another propeller's load data (:func:`_check_fitted_propeller`; ``collective_deg``, the
-    command's own added collective [deg], counted in its blade angle), is warned of too."""
+    command's own added collective [deg], counted in its blade angle, or ``collective_range``, the
+    (lo, hi) [deg] of a points file's collective column), is warned of too."""
     import numpy as np
 
     from ..core.geometry import rotor_like
@@ -305,7 +316,7 @@ def check_section_match(propeller, label: str, collective_deg: float = 0.0) -> N
         warn(f"{propeller.name}: {why}. The generic parameters assume a hobby propeller's cambered sections; "
              f"for a symmetric-section rotor give --params section:NAME ({', '.join(section_presets())}) or a "
              "parameter file fitted to its data")
-    _check_fitted_propeller(propeller, label, collective_deg)
+    _check_fitted_propeller(propeller, label, collective_deg, collective_range)
     owner = label[len("calibrated:"):] if label.startswith("calibrated:") else None
     if owner is not None and owner != propeller.name and not _catalogue_geometry(owner, propeller):
         warn(f"{propeller.name} runs with {label}, the set calibrated on another propeller: such a set predicts even a "

@@ -339,7 +339,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     # first pass: every value checked before any work, and the extremes for the warnings
     offset = set_collective_deg(params)  # the set's collective, added to each row's
-    n, extremes, rpm_range, v_max = _scan(prop, path, offset)
+    n, extremes, rpm_range, v_max, collectives = _scan(prop, path, offset)
+    check_section_match(prop, label, collective_range=collectives)  # (the column's rows, not 0 deg)
     coverage_messages(prop, label, air, *extremes, rpm=rpm_range, airspeed=v_max)
 
     def write(fh):
@@ -414,7 +415,6 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         propeller = prop_choice.load(prop)
         params, air, label = load_params(params_spec, prop)
         air = resolve_air(air, air_choice)
-        check_section_match(propeller, label)
         n, counts = _run_points(propeller, params, air, label, points, out, progress=out != "-")
         where = "standard output" if out == "-" else out
         n_bad = counts.pop("not_converged")
@@ -498,9 +498,9 @@ SLOW_RPM = 100.0
 
 
 def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, float, float], tuple[float, float],
-                                                              float]:
-    """(points, extremes, rpm range, largest airspeed) of a points file, every value checked (InputError on the
-    first bad one)."""
+                                                              float, tuple[float, float] | None]:
+    """(points, extremes, rpm range, largest airspeed, the collective column's range [deg] or None) of a points
+    file, every value checked (InputError on the first bad one)."""
     import warnings
 
     import numpy as np
@@ -508,6 +508,7 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
     from ..identify.load_data import STATIC_AIRSPEED, radians_hint
 
     n, ext, lo, hi, v_max = 0, (0.0, 0.0, 0.0), math.inf, 0.0, 0.0
+    collectives = None
     seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
     bare = False  # the incidence under its bare name incidence_deg (taken first), no unit stated in the header
     for df, _, values in _chunks(path, CHUNK, offset_deg):
@@ -516,6 +517,10 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
         ext = tuple(max(a, b) for a, b in zip(ext, e))
         lo, hi = min(lo, float(values["rpm"].min())), max(hi, float(values["rpm"].max()))
         v_max = max(v_max, float(values["airspeed"].max()))
+        if COLLECTIVE_COLUMN in values:
+            c_lo, c_hi = float(values[COLLECTIVE_COLUMN].min()), float(values[COLLECTIVE_COLUMN].max())
+            collectives = (c_lo, c_hi) if collectives is None else (min(collectives[0], c_lo),
+                                                                     max(collectives[1], c_hi))
         n += len(df)
         inc = values["incidence_deg"][values["airspeed"] > STATIC_AIRSPEED]
         if inc.size:  # (and the one farthest from a whole degree read as radians)
@@ -529,4 +534,4 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
         warnings.warn(f"--points: {path}: rpm as low as {lo:g}, below {SLOW_RPM:g} rpm: a thousands separator read "
                       "as a decimal point ('5.000' for 5000), or rev/s? (a propeller there makes almost no thrust)",
                       stacklevel=2)
-    return n, ext, (lo, hi), v_max
+    return n, ext, (lo, hi), v_max, collectives
