@@ -57,7 +57,9 @@ LAST_STATION_REFUSED = 0.7
 #: a UIUC file whose first station lies outside this r/R is warned: the blade inside it makes no load (the
 #: 147 catalogue propellers' files start at 0.15-0.30; a 10 in blade from 0.85 R: 20% of its thrust)
 FIRST_STATION_MAX = 0.4
-_NAME_RE = re.compile(r"(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
+#: a name's size ``<D>x<P>``; D not after a digit, point or comma: ``kp_4,9x3,1`` (a decimal comma) gives no size,
+#: not 9 in (taken silently from a data file's name and the geometry file's; a mutation audit, 2026-11-29)
+_NAME_RE = re.compile(r"(?<![\d.,])(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
 #: UIUC vol. 2's NR640 names: the diameter [in] and the blade angle at 0.75 R, ``nr640_9_15deg`` (a file named
 #: without ``_geom``, ``nr640_5_15deg.txt``, too: its reader names it by the whole file name)
 _ANGLE_NAME_RE = re.compile(r"_(?P<D>\d+(?:\.\d+)?)_(?P<A>\d+(?:\.\d+)?)deg(?=[_.]|$)", re.ASCII | re.IGNORECASE)
