@@ -281,3 +281,13 @@ def test_pole_pairs_0_with_a_catalogue_name_is_refused_not_ignored(tmp_path, cap
     code, _, err = run(capsys, "fit", "loads", "apce_9x6", "--pole-pairs", "0", "--out", tmp_path / "p.toml")
     assert one_line_error(code, err, "--pole-pairs: applies to a thrust-stand CSV"), err
     assert not (tmp_path / "p.toml").exists()
+
+
+@pytest.mark.parametrize("source, said", [("APCE_8x6", "; did you mean apce_8x6?"),
+                                          ("8x6", "; did you mean apce_8x6, apcsf_8x6, apcsp_8x6?"),
+                                          ("nosuch.csv", "nor a file")])
+def test_a_fit_source_near_a_catalogue_name_is_suggested(tmp_path, capsys, source, said):
+    """`fit loads APCE_8x6` said only 'neither a catalogue propeller nor a file', where `validate` and `loads`
+    suggest apce_8x6 (the audit's report, 2026-11-29); a file name near none is said as before."""
+    code, _, err = run(capsys, "fit", "loads", source, "--out", tmp_path / "p.toml")
+    assert one_line_error(code, err, "is neither a catalogue propeller nor a file") and err.strip().endswith(said), err

@@ -116,8 +116,13 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         raise InputError(f"SOURCE: {missing[0]!r} is a catalogue propeller: give it alone (its UIUC data), or "
                          "files only (a catalogue propeller's data and files are not fitted together)")
     if missing:
+        from ..io.catalogue import near_names
+
+        # (a name near a catalogue propeller's, APCE_8x6, got no suggestion where validate's and loads' PROP did)
+        hint = near_names(missing[0], catalogue()) if len(missing[0]) <= 255 and len(sources) == 1 else ""
         raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"
-                         + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else ""))
+                         + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else "")
+                         + (hint if "did you mean" in hint else ""))
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
