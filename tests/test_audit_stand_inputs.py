@@ -209,9 +209,9 @@ STAND = ["Time (s)", "ESC signal (µs)", "Thrust (kgf)", "Torque (N·m)", "Motor
          "Motor Optical Speed (RPM)"]
 
 
-@pytest.mark.parametrize("pole_pairs", [0, 51, 7.0, -7])
+@pytest.mark.parametrize("pole_pairs", [0, 51, 7.0, -7, True])
 def test_pole_pairs_outside_one_to_fifty_are_refused_naming_the_option(pole_pairs):
-    """pole_pairs (--pole-pairs) must be an integer in [1, 50]: 0, 51 and 7.0 are refused, naming the option."""
+    """pole_pairs (--pole-pairs) must be an integer in [1, 50]: 0, 51, 7.0 and True are refused, naming the option."""
     with pytest.raises(ValueError, match=r"pole_pairs \(--pole-pairs\) must be an integer in \[1, 50\]"):
         map_columns(STAND, rpm_source="electrical", pole_pairs=pole_pairs)
 

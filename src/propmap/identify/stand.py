@@ -348,7 +348,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"{name!r} converted to {target} (x {factor:.6g})")
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
-    if pole_pairs is not None and not (isinstance(pole_pairs, int) and 1 <= pole_pairs <= 50):
+    # (True, an int to Python, divided the speed by 1: refused since 2026-11-29, an audit)
+    if pole_pairs is not None and (isinstance(pole_pairs, bool) or not (isinstance(pole_pairs, int)
+                                                                        and 1 <= pole_pairs <= 50)):
         raise error(f"pole_pairs (--pole-pairs) must be an integer in [1, 50], got {pole_pairs!r}")
     found = ", ".join(repr(n) for n in names if n.strip())
     speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
