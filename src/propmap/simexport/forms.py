@@ -122,10 +122,15 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     Raises
     ------
     ValueError
-        Unknown target.
+        Unknown target; an Omega below 0 or NaN (a magnitude), or of 0 for the multinomial,
+        whose terms divide by Omega R (NaN loads and, below 0, loads of the wrong sign before).
     """
     target = canonical_target(target)
     om, V, b = (np.asarray(x, float) for x in (omega, airspeed, incidence))
+    bad = ~(om > 0) if target == "multinomial" else ~(om >= 0)  # (NaN too; the multinomial is singular at 0)
+    if bad.any():
+        raise ValueError(f"omega must be {'>' if target == 'multinomial' else '>='} 0 rad/s for the {target} model "
+                         f"(the rotation rate's magnitude), got {float(om[bad].reshape(-1)[0])!r}")
     Vip, Vz = V * np.sin(b), V * np.cos(b)
     c = coefficients
     if target == "rotorpy":
