@@ -92,6 +92,8 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
 
     Raises
     ------
+    TypeError
+        ``paths`` a single path (a str, bytes or path-like) or not iterable: give a list.
     DataError
         A file that is neither kind, or malformed (as :func:`propmap.io.readers.read_uiuc_static`
         and :func:`~propmap.io.readers.read_uiuc_sweep`: not a readable regular file,
@@ -104,6 +106,14 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
 
     from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
+    import os
+
+    # (a single path was read one character at a time: "/: is a directory, not a file", a Path was a TypeError from
+    # inside, and a generator's file names were gone from the source: a mutation audit, 2026-11-29)
+    if isinstance(paths, (str, bytes, os.PathLike)) or not hasattr(paths, "__iter__"):
+        raise TypeError(f"paths must be a sequence of file paths, got {type(paths).__name__} {str(paths)!r:.80} "
+                        "(give a list: [path])")
+    paths = list(paths)
     _check_diameter(diameter)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:
