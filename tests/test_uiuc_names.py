@@ -354,6 +354,19 @@ def test_a_named_angle_beyond_the_blade_angle_range_is_refused_naming_it(tmp_pat
     assert "theta must be in [-90, 90] deg" in err.strip().splitlines()[-1], err
 
 
+def _fit_nr640_20deg_with_the_family_file(tmp_path, capsys):
+    """(the geometry, exit code, stderr) of `fit loads` on three of UIUC's nr640_5_20deg runs renamed zr640, with
+    the NR640 design file as a family file (the blade set to 20 deg from the names), written to tmp_path/p.toml."""
+    geom = tmp_path / "zr640_geom.txt"
+    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", geom)
+    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))][:3]
+    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
+    for src, dst in zip(runs, files):
+        shutil.copyfile(src, dst)
+    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    return geom, code, err
+
+
 def test_a_fit_records_the_blade_angle_it_was_fitted_with(tmp_path, capsys):
     """A fit of UIUC's nr640_5_20deg runs (renamed zr640) with the family file sets the blade to 20 deg
     from their names; the parameter file records it ([coverage] theta75_deg), and running the family
@@ -363,13 +376,7 @@ def test_a_fit_records_the_blade_angle_it_was_fitted_with(tmp_path, capsys):
     0.75 R in that blade's own angle datum (16.6 deg at the 15 deg setting): warned of, -1.6 deg."""
     from propmap.io.params_file import read_coverage
 
-    geom = tmp_path / "zr640_geom.txt"
-    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", geom)
-    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))][:3]
-    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
-    for src, dst in zip(runs, files):
-        shutil.copyfile(src, dst)
-    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    geom, code, err = _fit_nr640_20deg_with_the_family_file(tmp_path, capsys)
     assert code == 0 and "rotated by +5.00 deg" in err, err
     assert read_coverage(tmp_path / "p.toml")["theta75_deg"] == pytest.approx(20.0, abs=1e-9)
     base = ["loads", geom, "--diameter-in", "5", "--blades", "2", "--params", tmp_path / "p.toml", "--rpm", "6000"]
@@ -418,13 +425,7 @@ def test_a_points_files_collective_column_counts_in_the_blade_angle_check(tmp_pa
     the rows' collectives, not 0 deg (the 15 deg design blade with rows at +5 deg, which set it as the fitted
     20 deg blade, was warned of: noticed 2026-11-29). Rows that never reach it are warned of, naming the
     column's span and the row nearest."""
-    geom = tmp_path / "zr640_geom.txt"
-    shutil.copyfile(UIUC_V2 / "nr640_geom.txt", geom)
-    runs = [f for f in sorted(UIUC_V2.glob("nr640_5_20deg_*.txt"))][:3]
-    files = [tmp_path / f.name.replace("nr640", "zr640") for f in runs]
-    for src, dst in zip(runs, files):
-        shutil.copyfile(src, dst)
-    code, err, _ = _fit(capsys, tmp_path, files, geom)
+    geom, code, err = _fit_nr640_20deg_with_the_family_file(tmp_path, capsys)
     assert code == 0, err
     base = ["loads", geom, "--diameter-in", "5", "--blades", "2", "--params", tmp_path / "p.toml"]
     for column, said in (([5.0, 5.0], None), ([-2.0, 8.0], None), ([0.0, 2.0], "2 deg (the column spans 0 to 2 deg)")):
