@@ -104,9 +104,9 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
     """
     from pathlib import Path
 
-    from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
-
     import os
+
+    from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
     # (a single path was read one character at a time: "/: is a directory, not a file", a Path was a TypeError from
     # inside, and a generator's file names were gone from the source: a mutation audit, 2026-11-29)
