@@ -490,7 +490,8 @@ def hover_torque_check(params: SectionParams, vehicle: Vehicle, samples: FlightS
     -------
     dict
         ``omega_hover`` [rad/s], ``thrust_hover`` [N], ``torque_model`` and
-        ``torque_reference`` [N m], ``ratio``, ``reference_collective_deg`` (the trim),
+        ``torque_reference`` [N m], ``ratio``, ``reference_collective_deg`` (the trim: the
+        collective added to the reference set's own, as :func:`propmap.trim_collective` returns it),
         and, with measured moments, ``torque_yaw_channel`` [N m], ``k_Q`` and ``yaw_r``.
         Where no reference collective in [-20, 30] deg makes the fitted hover thrust, the
         three reference entries are replaced by ``unavailable`` (the trim's message); the yaw
