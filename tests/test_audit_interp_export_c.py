@@ -243,3 +243,20 @@ def test_the_header_finds_each_nodes_cell_and_flag_as_python_on_a_geometric_axis
     assert ref.flagged.any() and not ref.flagged.all()
     np.testing.assert_array_equal(rows[:, 0], ref.flagged.astype(float))
     np.testing.assert_allclose(rows[:, 1], ref.thrust, rtol=1e-12)
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_a_nearly_uniform_axis_is_bisected_and_the_header_equals_python(tmp_path):
+    """Steps of 1.25 then 0.75 m/s (within 25% of their mean, drifting 1.5 cells) are bisected: C = Python to 1e-12."""
+    from propmap.export_c import _inverse_step
+
+    speeds = np.concatenate([np.arange(7) * 1.25, 7.5 + np.arange(1, 7) * 0.75])
+    assert _inverse_step(speeds) == "0.0"
+    prop = pm.load_propeller("apce_8x6")
+    params = pm.default_params("apce_8x6")
+    ds = build_map(prop, params, np.array([3000.0, 6000.0]) * RPM, speeds, np.radians([0.0, 90.0, 180.0]),
+                   air=params.air, params_label=params.label, n_check=0)
+    rm = RotorMap(ds, "linear")
+    v = np.linspace(0.0, 12.0, 41)
+    rows = _run_c(tmp_path, rm, "".join(f"{4000 * RPM!r} {float(x)!r} 1.0 0\n" for x in v))
+    np.testing.assert_allclose(rows[:, 1], rm.loads(4000 * RPM, v, 1.0).thrust, rtol=1e-12)
