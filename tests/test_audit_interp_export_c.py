@@ -14,6 +14,7 @@ from propmap.export_c import c_header_text, write_c_header
 from propmap.maps import RotorMap, build_map
 
 from .conftest import RPM
+from .test_maps_c import DRIVER  # (the C driver reading points from stdin)
 
 CC = shutil.which("cc") or shutil.which("gcc")
 
@@ -119,21 +120,6 @@ def _run_c(tmp_path, rm, stdin, dtype="double"):
     return np.array([line.split() for line in out.splitlines()], dtype=float)
 
 
-DRIVER = r"""
-#include <stdio.h>
-#include "map.h"
-int main(void)
-{
-    double o, v, b, out[4];
-    int policy, status;
-    while (scanf("%lf %lf %lf %d", &o, &v, &b, &policy) == 4) {
-        out[0] = out[1] = out[2] = out[3] = -12345.0;
-        status = pm_map_loads(o, v, b, policy, out);
-        printf("%d %.17g %.17g %.17g %.17g\n", status, out[0], out[1], out[2], out[3]);
-    }
-    return 0;
-}
-"""
 
 
 @pytest.mark.skipif(CC is None, reason="no C compiler")
