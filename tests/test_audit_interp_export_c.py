@@ -120,8 +120,6 @@ def _run_c(tmp_path, rm, stdin, dtype="double"):
     return np.array([line.split() for line in out.splitlines()], dtype=float)
 
 
-
-
 @pytest.mark.skipif(CC is None, reason="no C compiler")
 @pytest.mark.parametrize("interpolation", ["linear", "cubic"])
 def test_the_c_header_on_non_uniform_axes_equals_the_python_lookup(tmp_path, tiny, interpolation):
