@@ -41,6 +41,9 @@ def test_volume_2_names_sizes_and_hubs():
     assert cat["nr640_5_20deg"].geometry_file.endswith("nr640_5_15deg_geom.txt")
     p9 = pm.load_propeller("nr640_9_20deg")
     assert math.degrees(np.interp(0.75 * p9.radius, p9.r, p9.theta)) == pytest.approx(20.0, abs=1e-9)
+    # Propeller.theta_75: the blade angle at a station of the file (0.75 R) is the file's
+    assert math.degrees(p9.theta_75()) == pytest.approx(20.0, abs=1e-9)
+    assert math.degrees(p20.theta_75()) == pytest.approx(21.631, abs=5e-4)
     d = pm.load_propeller("da4052_9x4.76")  # the design's chord with the helix of the named pitch
     np.testing.assert_allclose(np.tan(d.theta) * 2 * np.pi * d.r, 4.76 * 0.0254, rtol=1e-12)
     assert cat["da4052_9x4.76"].note.startswith("no measured geometry")

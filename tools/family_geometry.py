@@ -28,11 +28,6 @@ BUNDLED = Path(str(resources.files("propmap") / "data" / "uiuc_v2"))
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data" / "uiuc_propdb" / "v2"
 
 
-def angle_75(prop) -> float:
-    """The blade angle at 0.75 R [rad]."""
-    return float(prop.theta_at(np.array([0.75 * prop.radius]))[0])
-
-
 def main(family: str) -> None:
     geom = BUNDLED / f"{family}_geom.txt"
     geom = geom if geom.is_file() else SHARED / f"{family}_geom.txt"
@@ -44,9 +39,9 @@ def main(family: str) -> None:
         file_prop = pm.read_geometry(geom, diameter_in=e.diameter_in, n_blades=e.n_blades)
         P = e.pitch_in * 0.0254
         helix = replace(file_prop, theta=np.arctan(P / (2 * np.pi * file_prop.r)), pitch=P)
-        rotated = replace(file_prop, theta=file_prop.theta + angle_75(helix) - angle_75(file_prop))
+        rotated = replace(file_prop, theta=file_prop.theta + helix.theta_75() - file_prop.theta_75())
         data = loads_from_catalogue(e, file_prop.diameter)
-        row = [name, f"{math.degrees(angle_75(file_prop)):.1f}", f"{math.degrees(angle_75(helix)):.1f}"]
+        row = [name, f"{math.degrees(file_prop.theta_75()):.1f}", f"{math.degrees(helix.theta_75()):.1f}"]
         for prop in (file_prop, helix, rotated, pm.load_propeller(name)):
             cv = cross_validate(data, prop, generic_without(name)[0], protocols=("blind", "lowest"),
                                 population=population(without=name))

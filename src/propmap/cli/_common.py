@@ -199,7 +199,7 @@ def set_collective_deg(params) -> float:
 
 
 def theta75_deg(propeller) -> float:
-    """The blade angle theta at 0.75 R [deg] (PCHIP through the stations, core.geometry).
+    """The blade angle theta at 0.75 R [deg] (:meth:`Propeller.theta_75` in degrees).
 
     Parameters
     ----------
@@ -210,9 +210,7 @@ def theta75_deg(propeller) -> float:
     float
         theta(0.75 R) [deg], from the disk plane.
     """
-    import numpy as np
-
-    return math.degrees(float(propeller.theta_at(np.array([0.75 * propeller.radius]))[0]))
+    return math.degrees(propeller.theta_75())
 
 
 #: a fitted blade's angle at 0.75 R (a parameter file's [coverage] theta75_deg) farther than this from the blade run,
@@ -257,10 +255,10 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0,
         return
     if d is None and b is None:
         return
-    fitted = cov.get("theta75_deg")
+    fitted, blade = cov.get("theta75_deg"), theta75_deg(propeller)
     if fitted is not None and collective_range is not None:  # (the row nearest the blade as fitted)
-        collective_deg = min(max(fitted - theta75_deg(propeller), collective_range[0]), collective_range[1])
-    now = theta75_deg(propeller) + collective_deg
+        collective_deg = min(max(fitted - blade, collective_range[0]), collective_range[1])
+    now = blade + collective_deg
     if fitted is not None and propeller.same_size(d, b) and abs(now - fitted) > BLADE_ANGLE_TOLERANCE_DEG:
         given = " with the collective given" if collective_deg else ""
         if collective_range is not None:

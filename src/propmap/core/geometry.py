@@ -281,6 +281,17 @@ class Propeller:
         """
         return self._theta_spline(np.asarray(y, dtype=float))
 
+    def theta_75(self) -> float:
+        """The blade angle at 0.75 R [rad], the reference station of a propeller's pitch (the
+        DA-series and NR640 designs', UIUC vol. 2; a fitted set's [coverage] ``theta75_deg``).
+
+        Returns
+        -------
+        float
+            theta(0.75 R) [rad] (:meth:`theta_at`), from the geometry's blade-angle datum.
+        """
+        return float(self.theta_at(0.75 * self.radius))
+
     def reynolds_75(self, omega, air) -> np.ndarray:
         """The chord Reynolds number at 0.75 R in static rotation, rho (0.75 Omega R) c(0.75 R) / mu
         [-], the catalogue's measure of a propeller's Reynolds number (docs/validation.md).
@@ -400,7 +411,7 @@ def rotor_like(propeller: Propeller) -> str | None:
         raise TypeError(f"propeller must be a Propeller, got {type(propeller).__name__}")
     R = propeller.radius
     root = max(0.3 * R, propeller.r_hub)
-    b75, broot, btip = (float(propeller.theta_at(np.array([y]))[0]) for y in (0.75 * R, root, R))
+    b75, broot, btip = propeller.theta_75(), float(propeller.theta_at(root)), float(propeller.theta_at(R))
     if b75 < ROTOR_BETA75_MAX or broot - btip < ROTOR_TWIST_MAX:
         return (f"blade angle {math.degrees(b75):.1f} deg at 0.75 R and twist {math.degrees(broot - btip):.1f} deg "
                 f"from {root / R:.2f} R to the tip: a rotor's blade, not a propeller's")

@@ -301,7 +301,7 @@ class _Csv:
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
-            cut = [j for c, j in cols if j >= len(cells) and (c in stop or c not in optional)]
+            cut = [j for c, j in cols if j >= len(cells) and (c in stop or c not in optional)] if len(cells) < n else ()
             if cut:  # (a row cut short: read as a stopped motor's row and skipped until 2026-11-29, an audit)
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}: the row "
                                  f"ends before column {_short(self.header[min(cut)])}", line)
