@@ -228,7 +228,7 @@ def test_wrench_checks_the_coverage_once_per_propeller(tmp_path, shared_data):
 def test_coverage_messages_for_one_rate_and_a_range(capsys, tmp_path):
     """A fitted file's rpm span: a range partly outside it warns once with the range; one rate
     inside, or a range inside, says nothing; the extremes take the advancing tip's speed."""
-    from propmap.cli._common import coverage_messages, envelope_extremes
+    from propmap.cli._coverage import coverage_messages, envelope_extremes
     from propmap.io.params_file import set_coverage
 
     prop = pm.load_propeller("apce_8x6")

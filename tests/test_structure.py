@@ -180,6 +180,16 @@ def test_no_function_takes_20_arguments():
     assert worst[0][0] < 20, worst[:3]
 
 
+def test_no_module_past_650_lines():
+    """docs/conventions.md: a file past about 600 lines asks to be split by responsibility (the
+    CLI's shared helpers were, 2026-11-29: 654 lines -> _common, _air and _coverage). The largest
+    today: core/_annulus.py, 640 lines."""
+    sizes = sorted(((len(path.read_text(encoding="utf-8").splitlines()), name)
+                    for name, (path, _) in _modules().items()), reverse=True)
+    assert len(sizes) > 100  # every module was read
+    assert sizes[0][0] <= 650, sizes[:3]
+
+
 def test_rpm_is_converted_in_one_place():
     """Every rpm <-> rad/s conversion goes through propmap.core.units.RPM (docs/nomenclature.md):
     23 inline forms (x * pi / 30, x * 2 * pi / 60, x * 30 / pi), evaluated in different orders,

@@ -10,7 +10,9 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._common import InputError, coverage_messages, envelope_extremes, load_params, resolve_air
+from ._air import resolve_air
+from ._common import InputError, load_params
+from ._coverage import coverage_messages, envelope_extremes
 
 
 def _vehicle(path: Path):

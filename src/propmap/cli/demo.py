@@ -120,7 +120,7 @@ def demo(out_dir: Path, rpm: float):
                f"and the {generic_label} set (fitted to the catalogue without {PROP}'s family)\n")
 
     from ..core.airfoil import Air
-    from ._common import coverage_messages, envelope_extremes
+    from ._coverage import coverage_messages, envelope_extremes
 
     # the tip Mach number only: the envelope's incidence and advance ratio are the demo's point
     coverage_messages(prop, generic_label, Air(), envelope_extremes(prop, rpm, 20.0, 90.0)[0], 0.0, 0.0)

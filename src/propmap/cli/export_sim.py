@@ -8,8 +8,9 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, InputError, PathArg, check_section_match,
-                      coverage_messages, echo_json, envelope_extremes, load_params, with_prop_options)
+from ._air import resolve_air, with_air_options
+from ._common import PARAMS_HELP, InputError, PathArg, check_section_match, echo_json, load_params, with_prop_options
+from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
 

@@ -9,8 +9,10 @@ from pathlib import Path
 
 import click
 
+from ._air import resolve_air, with_air_options
+
 from ._common import (InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
-                      parse_names, resolve_air, warn, with_air_options, with_prop_options)
+                       parse_names, warn, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation, data_digest, file_air, file_digests, read_sources
 

@@ -7,7 +7,9 @@ from pathlib import Path
 
 import click
 
-from ._common import InputError, PathArg, load_params, parse_names, resolve_air, with_air_options
+from ._air import resolve_air, with_air_options
+
+from ._common import InputError, PathArg, load_params, parse_names
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
@@ -409,7 +411,7 @@ def _flight_coverage(logs, veh, air) -> dict:
     axial = speed * np.cos(inc)
     n = s.rotor_omega / (2 * math.pi)
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
-    # (the incidence of samples whose airspeed exceeds 1% of the tip speed, as _common.envelope_extremes reads it)
+    # (the incidence of samples whose airspeed exceeds 1% of the tip speed, as _coverage.envelope_extremes reads it)
     moving = speed > 0.01 * s.rotor_omega * D / 2
     return {"J_max": max(0.0, float(np.max(axial / (n * D)))),
             "incidence_deg_max": float(np.degrees(np.max(inc[moving]))) if moving.any() else 0.0,

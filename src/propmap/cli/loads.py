@@ -10,9 +10,10 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, air_label,
-                      check_point, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
+from ._air import air_label, resolve_air, with_air_options
+from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_point,
+                      check_section_match, echo_json, load_params, set_collective_deg, with_prop_options)
+from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 
 #: the numeric outputs (RotorLoads attributes), then the descent outputs, converged and flags

@@ -171,7 +171,7 @@ def _main(argv: list[str] | None) -> int:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             # the API's supersonic-tip warning (with its "rpm for rad/s?" hint): the commands take rpm and warn
-            # from tip Mach 0.7 themselves (cli._common.coverage_messages)
+            # from tip Mach 0.7 themselves (cli._coverage.coverage_messages)
             warnings.filterwarnings("ignore", message=SUPERSONIC_TIP)
             code = cli.main(args=argv, prog_name="propmap", standalone_mode=False)
         if isinstance(code, int) and code:  # click returns (not raises) an Exit's code in this mode

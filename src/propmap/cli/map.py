@@ -12,9 +12,10 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match,
-                      coverage_messages, echo_json, envelope_extremes, given, load_params, option_group, parse_names,
-                      resolve_air, set_collective_deg, with_air_options, with_prop_options)
+from ._air import resolve_air, with_air_options
+from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match, echo_json, given,
+                      load_params, option_group, parse_names, set_collective_deg, with_prop_options)
+from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_out_dir, check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
 from .map_check import TARGETS_PCT, _check, _pct, _target_misses, _where

@@ -8,9 +8,10 @@ import math
 import click
 
 from ..core.units import RPM
-from ._common import (resolve_air, with_air_options, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point,
-                      air_label, check_section_match, coverage_messages, echo_json, envelope_extremes, load_params,
-                      set_collective_deg, with_prop_options)
+from ._air import air_label, resolve_air, with_air_options
+from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
+                      load_params, set_collective_deg, with_prop_options)
+from ._coverage import coverage_messages, envelope_extremes
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
 #: the collectives searched by default [deg] (trim_collective's default bounds)

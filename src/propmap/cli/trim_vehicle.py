@@ -8,7 +8,8 @@ import math
 import click
 
 from ..core.units import RPM
-from ._common import InputError, PathArg, echo_json, with_air_options
+from ._air import with_air_options
+from ._common import InputError, PathArg, echo_json
 
 #: the most airspeeds one call trims (each about 0.1 s)
 MAX_SPEEDS = 200
@@ -68,7 +69,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
                      "pitch_deg": math.degrees(t.pitch), "rotor_rpm": [float(w) / RPM for w in t.rotor_omega],
                      "power_W": t.power})
     # the rotors' operating points beyond the data behind their sets, and a fast tip (the CLI keeps the API's
-    # tip-Mach warning to itself: _common.coverage_messages says it, from Mach 0.7)
+    # tip-Mach warning to itself: _coverage.coverage_messages says it, from Mach 0.7)
     _rotor_coverage(veh, sets, [[t.wrench.loads[i] for t in trims] for i in range(len(veh.rotors))],
                     model_air(params, air))
     if as_json:

@@ -8,8 +8,10 @@ from pathlib import Path
 
 import click
 
-from ._common import (PARAMS_HELP, InputError, PathArg, _catalogue_geometry, air_label, check_section_match,
-                      echo_json, load_params, parse_names, resolve_air, warn, with_air_options, with_prop_options)
+from ._air import air_label, resolve_air, with_air_options
+
+from ._common import (PARAMS_HELP, InputError, PathArg, _catalogue_geometry, check_section_match, echo_json,
+                       load_params, parse_names, warn, with_prop_options)
 from ._paths import _is_file, check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
 

@@ -1,0 +1,106 @@
+"""The air a command runs in: the options --rho [kg/m^3], --temperature-c [degC] with
+--pressure-pa [Pa] and --altitude-m [m], and their resolution against a parameter set's air
+(docs/cli.md, Air)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+
+import click
+
+from ._common import InputError, option_group
+
+__all__ = ["RHO_RANGE", "AirChoice", "air_label", "air_options", "resolve_air", "with_air_options"]
+
+
+#: the densities accepted on the command line [kg/m^3] (as parameter files)
+RHO_RANGE = (1e-3, 2000.0)
+
+air_options = [
+    click.option("--rho", type=float, default=None,
+                 help="Air density [kg/m^3] (default: that of the parameter set); viscosity and speed of sound stay "
+                      "the set's."),
+    click.option("--temperature-c", type=float, default=None,
+                 help="Air temperature [degC], with --pressure-pa: density, viscosity and speed of sound of dry air."),
+    click.option("--pressure-pa", type=float, default=None, help="Static air pressure [Pa], with --temperature-c."),
+    click.option("--altitude-m", type=float, default=None,
+                 help="The International Standard Atmosphere at this altitude [m] (ISO 2533)."),
+]
+
+
+@dataclass(frozen=True)
+class AirChoice:
+    """The air options of a command: --rho [kg/m^3], --temperature-c [degC] with
+    --pressure-pa [Pa], or --altitude-m [m] (:func:`resolve_air`)."""
+
+    rho: float | None = None
+    temperature_c: float | None = None
+    pressure_pa: float | None = None
+    altitude_m: float | None = None
+
+    def options_given(self) -> list[str]:
+        """The options given (not None), as typed: ``["--rho"]``."""
+        return ["--" + f.name.replace("_", "-") for f in fields(self) if getattr(self, f.name) is not None]
+
+
+#: adds --rho, --temperature-c, --pressure-pa and --altitude-m, passed as ``air_choice`` (an AirChoice)
+with_air_options = option_group("air_choice", AirChoice, air_options)
+
+
+def resolve_air(air, choice: AirChoice):
+    """The air of a command: the parameter set's ``air``, or what the air options give.
+
+    ``--rho`` replaces the density only; ``--temperature-c`` with ``--pressure-pa`` gives
+    dry air at those conditions and ``--altitude-m`` the ISA (core.air.Air). One of the
+    three ways at a time.
+
+    Parameters
+    ----------
+    air : Air
+        The parameter set's air.
+    choice : AirChoice
+        The command's air options.
+
+    Raises
+    ------
+    InputError
+        Options of two ways, a temperature without a pressure (or the reverse), a value out
+        of its range (named with the option).
+    """
+    from ..core.air import Air
+
+    rho, temperature_c = choice.rho, choice.temperature_c
+    pressure_pa, altitude_m = choice.pressure_pa, choice.altitude_m
+    ways = [w for w, given_ in (("--rho", rho is not None),
+                                ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),
+                                ("--altitude-m", altitude_m is not None)) if given_]
+    if len(ways) > 1:
+        raise InputError(f"give the air one way: {' or '.join(ways)}, not both")
+    if rho is not None:
+        if not (math.isfinite(rho) and RHO_RANGE[0] <= rho <= RHO_RANGE[1]):
+            raise InputError(f"--rho must be in [{RHO_RANGE[0]:g}, {RHO_RANGE[1]:g}] kg/m^3, got {rho!r}")
+        return Air(rho=rho, mu=air.mu, speed_of_sound=air.speed_of_sound)
+    if temperature_c is not None or pressure_pa is not None:
+        if temperature_c is None or pressure_pa is None:
+            raise InputError("--temperature-c and --pressure-pa go together (or give --rho or --altitude-m)")
+        try:
+            return Air.from_conditions(temperature_c + 273.15, pressure_pa)
+        except ValueError as exc:
+            msg = str(exc)
+            if msg.startswith("temperature"):
+                lo, hi = (v - 273.15 for v in (180.0, 350.0))
+                raise InputError(f"--temperature-c must be finite and in [{lo:g}, {hi:g}] degC, got "
+                                 f"{temperature_c!r}") from None
+            raise InputError(f"--pressure-pa {msg.split(' ', 1)[1]}") from None
+    if altitude_m is not None:
+        try:
+            return Air.isa(altitude_m)
+        except ValueError as exc:
+            raise InputError(f"--altitude-m {str(exc).split(' ', 1)[1]}") from None
+    return air
+
+
+def air_label(air) -> str:
+    """One line of the air used, for outputs."""
+    return f"rho {air.rho:.4g} kg/m^3, mu {air.mu:.4g} Pa s, speed of sound {air.speed_of_sound:.4g} m/s"
