@@ -307,3 +307,29 @@ def test_a_run_that_got_a_sigterm_says_so_even_when_it_ended_first(tmp_path):
     assert out.returncode == 0, out.stderr
     assert out.stdout.splitlines()[-1] == "code 143", out.stdout
     assert "Traceback" not in out.stderr and "Exception ignored" not in out.stderr, out.stderr
+
+
+TWO_SPELLINGS = """
+import os, sys
+from pathlib import Path
+from propmap.io.atomic import atomic_paths
+os.chdir(sys.argv[1])
+with atomic_paths([Path("a.txt"), Path(sys.argv[1]) / "b.txt"]) as (ta, tb):
+    ta.write_text("a", encoding="utf-8")
+    tb.write_text("b", encoding="utf-8")
+print(sorted(os.listdir(".")), flush=True)
+"""
+
+
+def test_a_pair_in_one_folder_named_two_ways_is_written(tmp_path):
+    """A defect found by P17's mutant: _folder_locks took one exclusive flock per folder *name*, so that a pair
+    whose folder was spelled two ways ('.' and its full path) locked the folder twice and waited on itself for
+    ever (`propmap export-sim ... --out c.json` with c.json a link to a file in the working folder hung after
+    the fit). One lock a folder; the pair is written (in a child process: the defect hangs)."""
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", TWO_SPELLINGS, str(tmp_path)], capture_output=True, text=True,
+                         timeout=60)
+    assert (out.returncode, out.stdout.strip()) == (0, "['a.txt', 'b.txt']"), out.stderr
+    assert (tmp_path / "a.txt").read_text(encoding="utf-8") == "a" and (tmp_path / "b.txt").read_text() == "b"

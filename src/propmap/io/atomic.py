@@ -259,7 +259,9 @@ def _folder_locks(folders):
     (some network mounts), goes unlocked."""
     fds = []
     try:
-        for folder in sorted(os.path.realpath(f) for f in folders):
+        # (one lock a folder, however its targets name it: `export-sim --out c.json`, a link to a file beside it,
+        # named the folder '.' for the report and by its full path for the file, and blocked on its own lock)
+        for folder in sorted({os.path.realpath(f) for f in folders}):
             try:
                 fd = os.open(folder, os.O_RDONLY)
             except OSError:  # a folder that can be written but not read: no lock
