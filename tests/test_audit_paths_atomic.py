@@ -333,3 +333,42 @@ def test_a_pair_in_one_folder_named_two_ways_is_written(tmp_path):
                          timeout=60)
     assert (out.returncode, out.stdout.strip()) == (0, "['a.txt', 'b.txt']"), out.stderr
     assert (tmp_path / "a.txt").read_text(encoding="utf-8") == "a" and (tmp_path / "b.txt").read_text() == "b"
+
+
+LANDS_AFTER_MKSTEMP = r"""
+import os, signal, sys, tempfile
+from propmap.cli.main import main
+folder, nth = sys.argv[1], int(sys.argv[2])
+real = tempfile.mkstemp
+calls = []
+def mkstemp(*args, **kwargs):  # a SIGTERM that lands once the file exists, before mkstemp has returned its name
+    fd, name = real(*args, **kwargs)
+    calls.append(name)
+    if len(calls) == nth:
+        os.kill(os.getpid(), signal.SIGTERM)
+        for _ in range(1000):  # (bytecode boundaries: where Python runs the handler)
+            pass
+    return fd, name
+tempfile.mkstemp = mkstemp
+code = main(["loads", "apce_8x6", "--points", os.path.join(folder, "p.csv"), "--out", os.path.join(folder, "o.csv")])
+print(code, len(calls), sorted(os.listdir(folder)), flush=True)
+"""
+
+
+@pytest.mark.parametrize("nth, which", [(1, "the check's probe (cli._paths._probe)"),
+                                        (2, "the output's temporary file (io.atomic.atomic_paths)")])
+def test_a_sigterm_as_a_temporary_file_is_made_leaves_none(tmp_path, nth, which):
+    """A defect found while auditing (an unrelated mutant's run failed test_cli_hostile's SIGTERM test with a
+    '.out.csv.<random>.tmp' left): a SIGTERM that landed between a temporary file's creation and the code that
+    removes it on failure learning its name left it behind (io.atomic's docstring: removed when the process is
+    stopped by SIGTERM). Both temporary files, the probe of the output's folder and the output's own, are now made
+    with SIGINT and SIGTERM held: the run stops (exit 143) and leaves nothing."""
+    import subprocess
+    import sys
+
+    (tmp_path / "p.csv").write_text("rpm,airspeed,incidence_deg\n5000,0,0\n", encoding="utf-8")
+    out = subprocess.run([sys.executable, "-c", LANDS_AFTER_MKSTEMP, str(tmp_path), str(nth)], capture_output=True,
+                         text=True, timeout=300, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == f"143 {nth} ['p.csv']", (which, out.stdout, out.stderr)
+    assert "Traceback" not in out.stderr, out.stderr

@@ -181,28 +181,31 @@ def _probe(option: str, folder: Path, name: str) -> None:
     import errno
     import tempfile
 
-    from ..io.atomic import temp_affixes
+    from ..io.atomic import signals_held, temp_affixes
 
     prefix, suffix = temp_affixes(name)
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=folder)
-    except OSError as exc:
-        if exc.errno == errno.ENAMETOOLONG:
-            try:
-                name_max = os.pathconf(folder, "PC_NAME_MAX")
-            except (OSError, ValueError):
-                name_max = 255
-            # (the limit is in bytes of the file system's encoding: a name of 127 accented characters once read as
-            # "at most 241 characters"; mkstemp adds 8 characters)
-            size = len(os.fsencode(name))
-            most = name_max - (len(os.fsencode(prefix)) + len(os.fsencode(suffix)) + 8 - size)
-            raise InputError(f"{option}: the name {_short(name)!r} ({size} bytes, {len(name)} characters) is too "
-                             f"long with the temporary file's affixes; give at most {most} bytes") from None
-        raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
-    try:
-        os.close(fd)
-    finally:
-        os.unlink(tmp)
+    # (SIGINT and SIGTERM held until the probe is gone: one that landed between its creation and its removal left
+    # it behind, a hidden .NAME.<random>.tmp)
+    with signals_held():
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=folder)
+        except OSError as exc:
+            if exc.errno == errno.ENAMETOOLONG:
+                try:
+                    name_max = os.pathconf(folder, "PC_NAME_MAX")
+                except (OSError, ValueError):
+                    name_max = 255
+                # (the limit is in bytes of the file system's encoding: a name of 127 accented characters once read as
+                # "at most 241 characters"; mkstemp adds 8 characters)
+                size = len(os.fsencode(name))
+                most = name_max - (len(os.fsencode(prefix)) + len(os.fsencode(suffix)) + 8 - size)
+                raise InputError(f"{option}: the name {_short(name)!r} ({size} bytes, {len(name)} characters) is too "
+                                 f"long with the temporary file's affixes; give at most {most} bytes") from None
+            raise InputError(f"{option}: cannot write in {folder} ({exc.strerror})") from None
+        try:
+            os.close(fd)
+        finally:
+            os.unlink(tmp)
 
 
 def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:

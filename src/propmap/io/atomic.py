@@ -236,9 +236,10 @@ def atomic_paths(paths):
         for path in paths:
             path.parent.mkdir(parents=True, exist_ok=True)
             prefix, suffix = temp_affixes(path.name)
-            fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=path.parent)
-            os.close(fd)
-            tmps.append(Path(tmp))
+            with signals_held():  # (a SIGTERM between the file's creation and its listing here left it behind)
+                fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=suffix, dir=path.parent)
+                tmps.append(Path(tmp))
+                os.close(fd)
         yield tuple(tmps)
         perms = [normal_mode(p) for p in paths]
         with _folder_locks({p.parent for p in paths}):
