@@ -360,6 +360,21 @@ def test_the_console_entry_point_exits_fast_with_complete_output_and_the_exit_co
 
 # ---- regression tests of the review of the hardening (each was mishandled) ----
 
+@pytest.fixture
+def replace_only_in(tmp_path, monkeypatch):
+    """A safety net for the tests that name a system or package file as an output: should the refusal
+    regress, io.atomic's final os.replace would put the output there (as root, a mutation audit's mutant
+    replaced /dev/null, 2026-11-29); any replace outside tmp_path fails the test instead."""
+    real = os.replace
+
+    def replace(src, dst, *args, **kwargs):
+        assert Path(os.path.abspath(dst)).is_relative_to(tmp_path), f"an output replaced {dst}"
+        return real(src, dst, *args, **kwargs)
+
+    monkeypatch.setattr(os, "replace", replace)
+
+
+@pytest.mark.usefixtures("replace_only_in")
 def test_an_existing_device_or_dangling_link_is_never_replaced(capsys, tmp_path, points):
     code, _, err = run(capsys, "loads", "apce_8x6", "--points", points, "--out", "/dev/null")
     assert one_line_error(code, err, "not a regular file") and not os.path.isfile("/dev/null")
@@ -370,6 +385,7 @@ def test_an_existing_device_or_dangling_link_is_never_replaced(capsys, tmp_path,
     assert os.path.islink(tmp_path / "dang") and not (tmp_path / "missing").exists()
 
 
+@pytest.mark.usefixtures("replace_only_in")
 def test_the_package_data_is_never_an_output(capsys, tmp_path, points):
     from importlib import resources
 
