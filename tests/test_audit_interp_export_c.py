@@ -14,6 +14,7 @@ from propmap.export_c import c_header_text, write_c_header
 from propmap.maps import RotorMap, build_map
 
 from .conftest import RPM
+from .test_maps import _synthetic_map
 from .test_maps_c import DRIVER  # (the C driver reading points from stdin)
 
 CC = shutil.which("cc") or shutil.which("gcc")
@@ -34,16 +35,8 @@ def tiny():
     """A 4 x 5 x 6 map on non-uniform axes, its loads replaced by _poly x (Omega R)^2 + V^2: (dataset, R)."""
     prop = pm.load_propeller("apce_8x6")
     params = pm.default_params("apce_8x6")
-    ds = build_map(prop, params, OMEGA, SPEED, BETA, air=params.air, params_label=params.label, n_check=0)
-    ds = ds.copy(deep=True)
-    R = ds.attrs["diameter_m"] / 2
-    O, V, B = np.meshgrid(ds["omega"].values, ds["airspeed"].values, ds["incidence"].values, indexing="ij")
-    for i, k in enumerate(("thrust", "drag", "torque", "rolling_moment")):
-        ds[k].values[...] = (i + 1) * _poly(O, V, B) * ((O * R) ** 2 + V**2)
-    ds["converged"].values[...] = True
-    for flag in ("vortex_ring", "multiple_roots"):
-        ds[flag].values[...] = False
-    return ds, R
+    return _synthetic_map(build_map(prop, params, OMEGA, SPEED, BETA, air=params.air, params_label=params.label,
+                                    n_check=0), _poly)
 
 
 def _queries(rm, n=300, seed=5):
