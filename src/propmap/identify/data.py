@@ -13,6 +13,7 @@ identify/csvfile.py.
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 import numbers
 
@@ -102,10 +103,6 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
         loads out of the ranges of :func:`read_loads` (|thrust| > 1e5 N, |torque| > 1e4
         N m, airspeed > 500 m/s). The message names the file.
     """
-    from pathlib import Path
-
-    import os
-
     from ..io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
     # (a single path was read one character at a time: "/: is a directory, not a file", a Path was a TypeError from
