@@ -239,10 +239,12 @@ def test_nr640_names_give_the_diameter_and_the_blade_angle(tmp_path, capsys):
     of until 2026-11-29), as the catalogue's nr640_9_20deg is. (The catalogue's nr640_5_20deg is the
     5 in blade measured at 15 deg, turned by the same 5 deg, since 2026-11-29: it predicts these runs
     blind to 3.87% of their rms CT, the design file 12.94%.)"""
-    from propmap.io.geometry_files import blade_angle_from_name, size_from_name
+    from propmap.io.geometry_files import blade_angle_from_name, name_without_blade_angle, size_from_name
 
     assert size_from_name("nr640_9_15deg_3b") == (9.0, None, "in", "nr640")
     assert blade_angle_from_name("nr640_5_20deg_geom") == 20.0 and blade_angle_from_name("apce_10x7") is None
+    assert [name_without_blade_angle(n) for n in ("nr640_5_20deg", "NR640_9_15.5DEG_geom", "apce_10x7", "x_5_20deg9")] \
+        == ["nr640_5", "NR640_9_geom", "apce_10x7", "x_5_20deg9"]
     shutil.copyfile(UIUC_V2 / "nr640_geom.txt", tmp_path / "zr640_geom.txt")  # (the design: 15.0 deg at 0.75 R)
     for angle in ("15", "20"):
         runs = [f for f in sorted(UIUC_V2.glob(f"nr640_5_{angle}deg_*.txt")) if "_geom" not in f.name][:2]

@@ -233,9 +233,9 @@ def _mixed_hubs(sources) -> str | None:
 def _angle_free(name: str) -> str:
     """A UIUC name without the blade angle an NR640-style name gives (``nr640_5_20deg`` ->
     ``nr640_5``: the same blades, set to another angle on an adjustable hub); others as they are."""
-    from ..io.geometry_files import blade_angle_from_name
+    from ..io.geometry_files import name_without_blade_angle
 
-    return re.sub(r"_[0-9.]+deg$", "", name, flags=re.IGNORECASE) if blade_angle_from_name(name) is not None else name
+    return name_without_blade_angle(name)
 
 
 def _same_blade(bare: str, base: str) -> bool:

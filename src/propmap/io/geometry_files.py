@@ -32,7 +32,8 @@ from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table,
                      parse_number, show_path)
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
-           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "size_in_inches_from_name"]
+           "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "name_without_blade_angle",
+           "size_in_inches_from_name"]
 
 
 class GeometryFileError(ValueError):
@@ -131,6 +132,25 @@ def blade_angle_from_name(name: str) -> float | None:
     """
     a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
     return None if a is None else float(a["A"])
+
+
+def name_without_blade_angle(name: str) -> str:
+    """A UIUC vol. 2 name without the blade angle :func:`blade_angle_from_name` reads from it.
+
+    Parameters
+    ----------
+    name : str
+        A propeller's or a file's name: ``nr640_5_20deg`` (the NR640 blades set to 20 deg at
+        0.75 R on an adjustable hub; Deters, Ananda & Selig, AIAA 2014-2151) gives ``nr640_5``,
+        the same blades at any setting.
+
+    Returns
+    -------
+    str
+        The name without ``_<angle>deg``; a name of another form as it is.
+    """
+    a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
+    return name if a is None else f"{name[: a.start()]}_{a['D']}{name[a.end():]}"
 
 
 def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int = 2,
