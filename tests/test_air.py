@@ -98,10 +98,26 @@ def test_cli_air_options(capsys, argv, rho):
     (["--temperature-c", "300", "--pressure-pa", "1e5"], "--temperature-c must be finite and in [-93.15, 76.85] degC"),
     (["--altitude-m", "1e9"], "--altitude-m must be finite and in [-500, 20000] m"),
     (["--rho", "0"], "--rho must be in [0.001, 2000] kg/m^3"),
+    (["--temperature-c", "-93.16", "--pressure-pa", "1e5"], "--temperature-c must be finite and in [-93.15, 76.85]"),
+    (["--temperature-c", "nan", "--pressure-pa", "1e5"], "--temperature-c must be finite and in [-93.15, 76.85]"),
+    (["--temperature-c", "20", "--pressure-pa", "999"], "--pressure-pa must be finite and in [1000, 120000] Pa"),
 ])
 def test_cli_air_options_refused(capsys, argv, match):
     assert main(["loads", "apce_8x6", "--rpm", "8000", *argv]) == 2
     assert match in capsys.readouterr().err
+
+
+def test_the_temperature_range_printed_is_the_range_taken():
+    """The ends of --temperature-c's range as its error prints them are taken: -93.15 degC is 180 K,
+    though -93.15 + 273.15 rounds to 179.99999999999997 (refused, with that range printed, until
+    2026-11-29, when the CLI read the range out of the library's error message)."""
+    from propmap.cli._air import AirChoice, resolve_air
+
+    air = pm.Air(rho=1.2, mu=1.8e-5, speed_of_sound=340.0)
+    cold = resolve_air(air, AirChoice(temperature_c=-93.15, pressure_pa=1e5))
+    hot = resolve_air(air, AirChoice(temperature_c=76.85, pressure_pa=1e5))
+    assert cold.rho == pytest.approx(1e5 / (287.05287 * 180.0), rel=1e-12)
+    assert hot.rho == pytest.approx(1e5 / (287.05287 * 350.0), rel=1e-12)
 
 
 @pytest.mark.parametrize("command", [

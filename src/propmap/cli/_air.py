@@ -68,7 +68,7 @@ def resolve_air(air, choice: AirChoice):
         Options of two ways, a temperature without a pressure (or the reverse), a value out
         of its range (named with the option).
     """
-    from ..core.air import Air
+    from ..core.air import ALTITUDE_RANGE_M, PRESSURE_RANGE_PA, TEMPERATURE_RANGE_K, Air
 
     rho, temperature_c = choice.rho, choice.temperature_c
     pressure_pa, altitude_m = choice.pressure_pa, choice.altitude_m
@@ -84,21 +84,22 @@ def resolve_air(air, choice: AirChoice):
     if temperature_c is not None or pressure_pa is not None:
         if temperature_c is None or pressure_pa is None:
             raise InputError("--temperature-c and --pressure-pa go together (or give --rho or --altitude-m)")
-        try:
-            return Air.from_conditions(temperature_c + 273.15, pressure_pa)
-        except ValueError as exc:
-            msg = str(exc)
-            if msg.startswith("temperature"):
-                lo, hi = (v - 273.15 for v in (180.0, 350.0))
-                raise InputError(f"--temperature-c must be finite and in [{lo:g}, {hi:g}] degC, got "
-                                 f"{temperature_c!r}") from None
-            raise InputError(f"--pressure-pa {msg.split(' ', 1)[1]}") from None
+        lo, hi = TEMPERATURE_RANGE_K
+        T = round(temperature_c + 273.15, 9) if math.isfinite(temperature_c) else math.nan  # (-93.15 degC is 180 K)
+        if not lo <= T <= hi:
+            raise InputError(f"--temperature-c must be finite and in [{lo - 273.15:g}, {hi - 273.15:g}] degC, got "
+                             f"{temperature_c!r}")
+        return Air.from_conditions(T, _check_option("--pressure-pa", pressure_pa, *PRESSURE_RANGE_PA, "Pa"))
     if altitude_m is not None:
-        try:
-            return Air.isa(altitude_m)
-        except ValueError as exc:
-            raise InputError(f"--altitude-m {str(exc).split(' ', 1)[1]}") from None
+        return Air.isa(_check_option("--altitude-m", altitude_m, *ALTITUDE_RANGE_M, "m"))
     return air
+
+
+def _check_option(option: str, value: float, lo: float, hi: float, unit: str) -> float:
+    """``value`` if finite and in [lo, hi]; else an InputError naming ``option`` and its range."""
+    if not (math.isfinite(value) and lo <= value <= hi):
+        raise InputError(f"{option} must be finite and in [{lo:g}, {hi:g}] {unit}, got {value!r}")
+    return value
 
 
 def air_label(air) -> str:
