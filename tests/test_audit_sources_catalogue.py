@@ -212,6 +212,9 @@ def test_a_bare_size_is_matched_whole():
     from propmap.io.catalogue import catalogue, near_names
 
     assert near_names("1x7", catalogue()) == "; did you mean ma_11x7?"
+    assert near_names("1x7", catalogue(), otherwise="") == "; did you mean ma_11x7?"
+    assert near_names("nosuch.csv", catalogue()) == "; run 'propmap props' for the list"
+    assert near_names("nosuch.csv", catalogue(), otherwise="") == ""
 
 
 def test_a_catalogue_entrys_citation_names_each_source():

@@ -119,10 +119,10 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         from ..io.catalogue import near_names
 
         # (a name near a catalogue propeller's, APCE_8x6, got no suggestion where validate's and loads' PROP did)
-        hint = near_names(missing[0], catalogue()) if len(missing[0]) <= 255 and len(sources) == 1 else ""
+        hint = near_names(missing[0], catalogue(), otherwise="") if len(missing[0]) <= 255 and len(sources) == 1 else ""
         raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else "")
-                         + (hint if "did you mean" in hint else ""))
+                         + hint)
     if prop_spec is None:
         raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
     refuse_copies(sources, "SOURCE", "its data would count twice")

@@ -242,7 +242,7 @@ def near(name: str, names, cutoff: float = 0.6) -> list[str]:
         name.strip(), names, n=3, cutoff=cutoff)
 
 
-def near_names(name: str, names) -> str:
+def near_names(name: str, names, otherwise: str = "; run 'propmap props' for the list") -> str:
     """'; did you mean A, B?' for the ``names`` :func:`near` ``name``, else a pointer to
     ``propmap props``: the tail of an unknown-propeller message.
 
@@ -252,11 +252,13 @@ def near_names(name: str, names) -> str:
         The unknown name.
     names : iterable of str
         The valid names.
+    otherwise : str, optional
+        The tail where no name is near (default: a pointer to ``propmap props``).
 
     Returns
     -------
     str
-        The tail, starting with ``"; "``. A bare size (``8x6``) names the catalogue's
+        The tail, starting with ``"; "``, or ``otherwise``. A bare size (``8x6``) names the catalogue's
         propellers of that size in every family (``apce_8x6``, ``apcsf_8x6``, ...; at most 6).
     """
     names = list(names)
@@ -265,7 +267,7 @@ def near_names(name: str, names) -> str:
     sized = [n for n in names if key and n.lower().endswith("_" + key)]
     found = sized[:6] if sized else near(name, names)
     more = f" ({len(sized)} in all: 'propmap props')" if len(sized) > 6 else ""
-    return f"; did you mean {', '.join(found)}?{more}" if found else "; run 'propmap props' for the list"
+    return f"; did you mean {', '.join(found)}?{more}" if found else otherwise
 
 
 @functools.lru_cache(maxsize=256)
