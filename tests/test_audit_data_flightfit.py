@@ -106,7 +106,7 @@ def test_cross_validation_pools_held_out_errors_and_jackknifes_the_folds():
     refitted on the training logs, F pooled by samples, the folds' estimates' jackknife; fewer than 2 logs refused."""
     from propmap.identify.flight import (baseline_force, cross_validate_flight, fit_baselines, flight_errors,
                                          shift_centre_of_mass)
-    from propmap.identify.result import jackknife_std_error
+    from propmap.identify.dependence import jackknife_std_error
 
     veh = pm.read_vehicle(VEHICLE)
     truth = pm.generic_params().replace(collective=math.radians(5.0))

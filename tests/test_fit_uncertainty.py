@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from propmap.cli.main import main
-from propmap.identify.result import jackknife_report, jackknife_std_error, lag1_autocorrelation
+from propmap.identify.dependence import jackknife_report, jackknife_std_error, lag1_autocorrelation
 
 
 def _apce_8x6():
@@ -201,7 +201,7 @@ def test_the_jackknife_band_is_the_chi_square_interval_of_a_std_error():
     """The 95% band of a std error from g groups: sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) /
     chi2_0.025) times it, 0.57-3.7 for 4 groups and 0.64-2.2 for 7 (docs/identification.md; the
     quantiles swapped passed the suite: a mutation audit, 2026-11-27)."""
-    from propmap.identify.result import _jackknife_band
+    from propmap.identify.dependence import _jackknife_band
 
     lo, hi = _jackknife_band(4)
     assert (lo, hi) == (pytest.approx(0.5665, abs=1e-4), pytest.approx(3.7285, abs=1e-4))

@@ -223,7 +223,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
                                    fitted_body_drag, fitted_vehicle, flight_errors, hover_torque_check,
                                    predict_flight, reference_errors, speed_band_errors)
-    from ..identify.result import jackknife_report
+    from ..identify.dependence import jackknife_report
     from ..io.params_file import BodyTable
 
     check_outputs(_flight_out_files(out), [*log_paths, vehicle, base_spec])

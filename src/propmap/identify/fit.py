@@ -39,7 +39,8 @@ from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_d
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
-from .result import FitResult, Identifiability, lag1_autocorrelation
+from .dependence import lag1_autocorrelation
+from .result import FitResult, Identifiability
 
 __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_loads", "fit_loads_joint", "param_names",
            "CAMBERED_FIT", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_RE"]

@@ -48,7 +48,8 @@ from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             reference_at_vehicle_mass, reference_errors, speed_band_errors)
 from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names
-from .result import FitResult, jackknife_std_error, lag1_autocorrelation
+from .dependence import jackknife_std_error, lag1_autocorrelation
+from .result import FitResult
 
 __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STOPPED", "predict_flight", "fit_flight",
            "fitted_body_drag", "fitted_centre_of_mass", "fitted_vehicle", "shift_centre_of_mass", "flight_errors",
@@ -411,7 +412,7 @@ def cross_validate_flight(samples: FlightSamples, vehicle: Vehicle, *, base: Sec
         weighted by samples) for the model and each baseline; each fold's ``x`` (its fitted
         parameters, as fitted: angles in rad) and ``at_bound``; ``jackknife_std_error``: the
         parameters' delete-a-log jackknife std error from the folds
-        (:func:`propmap.identify.result.jackknife_std_error`, as fitted: angles in rad), the
+        (:func:`propmap.identify.dependence.jackknife_std_error`, as fitted: angles in rad), the
         spread between flights that the fit's linearised std errors, which take the samples
         as independent, miss.
 

@@ -1,6 +1,6 @@
 """The delete-a-run jackknife of a load fit (``fit loads --jackknife``): the fit again without
 each run, the spread of the estimates as the parameters' jackknife std error
-(:func:`propmap.identify.result.jackknife_report`; docs/identification.md, A report that tells
+(:func:`propmap.identify.dependence.jackknife_report`; docs/identification.md, A report that tells
 the truth).
 """
 
@@ -13,7 +13,8 @@ import numpy as np
 from ..core.solver import SolverError
 from .fit import fit_loads
 from .load_data import STATIC_AIRSPEED, LoadData
-from .result import FitResult, jackknife_report
+from .dependence import jackknife_report
+from .result import FitResult
 
 __all__ = ["jackknife_loads", "jackknife_runs"]
 
@@ -64,7 +65,7 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
     Returns
     -------
     dict
-        :func:`propmap.identify.result.jackknife_report` with ``by = "run"``; also stored in
+        :func:`propmap.identify.dependence.jackknife_report` with ``by = "run"``; also stored in
         ``result.extra["jackknife"]``, where the report shows it.
 
     Raises

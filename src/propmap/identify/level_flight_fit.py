@@ -23,7 +23,8 @@ from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
 from .engine import _attach_jacobian, _finish, _m_effect, _objective, _params_from, _with_prior, _x0
 from .options import BODY_X0, FitOptions, _default_names
-from .result import FitResult, lag1_autocorrelation
+from .dependence import lag1_autocorrelation
+from .result import FitResult
 
 __all__ = ["body_lift", "fit_level_flight", "hover_vertical_force", "level_flight_forces"]
 
