@@ -877,6 +877,22 @@ def test_a_load_files_temperature_and_pressure_give_its_air(tmp_path, columns, c
         assert data.air_density is None, (header, data.notes)
 
 
+def test_of_two_temperature_columns_the_first_is_read_and_named(tmp_path):
+    """Two air temperature columns (a tunnel's and the ambient): the first in the header gives the
+    density, and the note names it (documented since 2026-11-29, docs/identification.md; a mutation
+    audit's survivor A8 of stop 79, which took the last)."""
+    from propmap.identify import read_loads
+
+    rows = ["rpm,airspeed,thrust (N),torque (N m),tunnel temperature (C),Pressure (Pa),ambient temperature (K)"]
+    rows += [f"{rpm},0,{(rpm / 3000) ** 2},{(rpm / 3000) ** 2 / 50},40,90000,280"
+             for rpm in (3000.0, 4000.0, 5000.0, 6000.0, 7000.0, 8000.0)]
+    f = tmp_path / "tunnel.csv"
+    f.write_text("\n".join(rows) + "\n")
+    data = read_loads(f)
+    assert data.air_density == pytest.approx(90000 / (287.05287 * 313.15), rel=1e-9)
+    assert any("from 'tunnel temperature (C)' and 'Pressure (Pa)'" in n for n in data.notes), data.notes
+
+
 @pytest.mark.parametrize("factor, unit", [(1 / 0.44704, "mph"), (1 / 0.514444, "knots")])
 def test_an_unlabelled_airspeed_in_mph_or_knots_is_said(tmp_path, factor, unit):
     """An airspeed column in mph or knots without a unit was fitted with exit 0, six parameters at
