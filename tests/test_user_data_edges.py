@@ -879,8 +879,8 @@ def test_a_load_files_temperature_and_pressure_give_its_air(tmp_path, columns, c
 
 def test_of_two_temperature_columns_the_first_is_read_and_named(tmp_path):
     """Two air temperature columns (a tunnel's and the ambient): the first in the header gives the
-    density, and the note names it (documented since 2026-11-29, docs/identification.md; a mutation
-    audit's survivor A8 of stop 79, which took the last)."""
+    density, and the note names it (documented since 2026-11-29, docs/identification.md; reading the
+    last instead survived a mutation audit of 2026-11-29)."""
     from propmap.identify import read_loads
 
     rows = ["rpm,airspeed,thrust (N),torque (N m),tunnel temperature (C),Pressure (Pa),ambient temperature (K)"]
