@@ -5,11 +5,14 @@ sampling, the least squares with its fixed and held terms, the error metrics and
 import json
 import math
 import warnings
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 import propmap as pm
+from propmap.cli import validate_all as VA
+from propmap.cli.main import main
 from propmap.core.units import RPM
 from propmap.simexport import Envelope
 from propmap.simexport import fit as F
@@ -224,10 +227,6 @@ def test_meta_records_the_fit_and_check_seeds(rotorpy_small):
 
 # ---------------------------------------------------------------- validate --all's report helpers
 
-from types import SimpleNamespace  # noqa: E402
-
-from propmap.cli import validate_all as VA  # noqa: E402
-
 
 def test_summarize_gives_median_p90_worst_and_count():
     """Mutants A1 (mean for median), A2 (95th percentile), A3 (count off by one): ten errors 1%..10% and one 40%."""
@@ -318,8 +317,6 @@ def test_run_all_refuses_an_empty_protocol_list(tmp_path):
 
 
 # ---------------------------------------------------------------- propmap validate's argument checks
-
-from propmap.cli.main import main  # noqa: E402
 
 
 def _cli(capsys, *argv):
