@@ -22,9 +22,9 @@ def lag1_autocorrelation(residuals, groups) -> dict:
     """How much consecutive residuals resemble each other: their lag-1 autocorrelation within
     each group (a log, a sweep), pooled, and the effective sample size it implies.
 
-    The linearised std errors (:class:`~propmap.identify.result.Identifiability`) treat every residual as independent.
-    Residuals of a smooth model error sampled densely (flight logs at 25 Hz, sweeps along J)
-    are not: rho = sum (r_t - m)(r_t+1 - m) / sum (r_t - m)^2, with m each group's and
+    The linearised std errors (:class:`~propmap.identify.result.Identifiability`) treat every
+    residual as independent. Residuals of a smooth model error sampled densely (flight logs at
+    25 Hz, sweeps along J) are not: rho = sum (r_t - m)(r_t+1 - m) / sum (r_t - m)^2, with m each group's and
     column's mean, numerator and denominator summed over the groups and columns. An AR(1)
     series of n samples carries the information of n (1 - rho) / (1 + rho) independent ones
     (G. E. P. Box, G. M. Jenkins and G. C. Reinsel, Time Series Analysis, 4th ed. 2008,
