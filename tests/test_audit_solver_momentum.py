@@ -390,3 +390,26 @@ def test_swirl_of_a_parked_rotor_in_a_flow_is_held_at_half_the_blade_speed(prop,
         r = pm.rotor_loads(prop, p, om, V, 0.0, discretization=DISC)
         assert float(r.thrust) == pytest.approx(T, rel=1e-6) and float(r.torque) == pytest.approx(Q, rel=1e-6)
         assert float(r.drag) == 0.0 and float(r.side_force) == 0.0
+
+
+def test_a_parked_points_failure_names_the_rate_given(prop, params, monkeypatch):
+    """A failure at a parked point (omega below OMEGA_MIN, solved at 0.1 rad/s) names the rate the
+    caller gave and says it was solved as parked blades; it named 0.1 rad/s until 2026-11-29 (the
+    clamped rate, noticed by the audit of core/solver.py)."""
+    from propmap.core import _kernel
+
+    real = _kernel.solve_batch_serial
+
+    def fail_first(*args):
+        real(*args)
+        out, counts, flags = args[-4], args[-2], args[-1]
+        counts[0, 0] = 1 + 4 * 1 + 1
+        flags[0, 0] = False
+        out[:, 0] = np.nan
+
+    monkeypatch.setattr(_kernel, "solve_batch_serial", fail_first)
+    with pytest.raises(pm.SolverError, match=r"\(omega=0\.05 rad/s, solved at 0\.1 rad/s as parked blades, "
+                                             r"airspeed=5 m/s, .*no sign change"):
+        pm.rotor_loads(prop, params, [0.05, 900.0], 5.0, 0.0, discretization=DISC)
+    with pytest.raises(pm.SolverError, match=r"\(omega=900 rad/s, airspeed=5 m/s"):
+        pm.rotor_loads(prop, params, [900.0, 0.05], 5.0, 0.0, discretization=DISC)

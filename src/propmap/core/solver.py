@@ -235,9 +235,10 @@ def _solver_error(status, shape: tuple, om, V, b, y_R) -> SolverError:
     why = {1: "no sign change of F found (no bracket)", 2: "the refinement of the bracket did not converge",
            3: f"the swirl did not balance the annulus' angular momentum within {mo.SWIRL_MAX_ITER} root solves, "
               "nor close in on a jump of its selected root"}[reason]
+    parked = f", solved at {OMEGA_MIN:g} rad/s as parked blades" if om[i] < OMEGA_MIN else ""
     return SolverError(f"inflow root solve failed at operating point {np.unravel_index(i, shape)} "
-                       f"(omega={om[i]:.6g} rad/s, airspeed={V[i]:.6g} m/s, incidence={math.degrees(b[i]):.6g} deg) "
-                       f"on annulus r/R={y_R[j]:.4f}: {why}")
+                       f"(omega={om[i]:.6g} rad/s{parked}, airspeed={V[i]:.6g} m/s, "
+                       f"incidence={math.degrees(b[i]):.6g} deg) on annulus r/R={y_R[j]:.4f}: {why}")
 
 
 def rotor_loads(
@@ -389,7 +390,7 @@ def rotor_loads(
             _kernel.solve_batch(*args)
     status = counts[0]
     if on_failure == "raise" and (status[0] != 0 if n == 1 else status.any()):  # .any() costs 0.8 us
-        raise _solver_error(status, shape, om1, V1, b1, nd.y / propeller.radius)
+        raise _solver_error(status, shape, om_in, V1, b1, nd.y / propeller.radius)  # (the rates given, not OMEGA_MIN)
     if len(shape) == 1:  # the common case: no reshaping
         def s(a):
             return a
