@@ -4,6 +4,7 @@ test files, by the documented behaviour it changed."""
 
 import re
 import warnings
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +13,8 @@ import pytest
 from propmap.core.units import RPM_MAX
 from propmap.io.readers import MeasurementFileError, looks_like_uiuc, read_uiuc_static, read_uiuc_sweep
 
-UIUC = Path(__file__).resolve().parents[2] / "shared" / "data" / "uiuc_propdb" / "v1"
+#: the UIUC vol. 1 files the package bundles (src/propmap/data/uiuc_v1; Brandt & Selig, AIAA 2011-1255)
+UIUC = Path(str(resources.files("propmap") / "data" / "uiuc_v1"))
 STATIC = "RPM    CT       CP\n2534   0.1083   0.0745\n2791   0.1071   0.0722\n"
 #: a sweep whose eta is J CT / CP to 3 digits (ratio 1)
 SWEEP_ROWS = [(0.2, 0.11, 0.07), (0.4, 0.09, 0.065), (0.6, 0.06, 0.05)]
