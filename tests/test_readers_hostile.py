@@ -747,6 +747,11 @@ def test_uiuc_columns_in_another_order_are_named(tmp_path):
     q = _write(tmp_path, "x_9x6_0002rd_4000.txt", b"J CT CP\n0.2 0.09 0.05\n0.4 0.06 0.045\n")
     csv = _write(tmp_path, "t.tsv", b"J\tCT\tCP\tRPM\tthrust (N)\n0.2\t0.09\t0.05\t4000\t3.1\n")
     assert not looks_like_uiuc(csv)  # (those columns first, then a CSV's own: a CSV, read by the CSV reader)
+    # UIUC's own orders with a CSV's columns after them: CSVs too (read as UIUC files, the thrust column dropped
+    # without a word, until 2026-11-29: a mutation audit)
+    for i, head in enumerate((b"RPM\tCT\tCP\tthrust (N)\n4000\t0.09\t0.05\t3.1\n",
+                              b"J CT CP eta RPM\n0.2 0.09 0.05 0.36 4000\n")):
+        assert not looks_like_uiuc(_write(tmp_path, f"c{i}.tsv", head))
     for path, header in ((p, "RPM  CP  CT"), (q, "J CT CP")):
         assert looks_like_uiuc(path)
         refused(DataError, lambda f, d: loads_from_uiuc_files([f], d), path, 0.2286,

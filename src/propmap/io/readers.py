@@ -266,8 +266,9 @@ def looks_like_uiuc(path) -> bool:
         words = [w.lower() for w in ln.split()]
         # (also UIUC's columns in another order, or a sweep without eta: read as UIUC, so that its reader says
         # which columns it expects, rather than the CSV reader that it found no rotation speed: a user-level audit)
-        if (words[:3] == ["rpm", "ct", "cp"] or words[:4] == ["j", "ct", "cp", "eta"]
-                or (len(words) in (3, 4) and sorted(words[:3]) in (["cp", "ct", "rpm"], ["cp", "ct", "j"])
-                    and words[3:] in ([], ["eta"]))):  # (exactly UIUC's columns: a CSV with more is a CSV)
+        # exactly UIUC's columns: a CSV with more is a CSV (``RPM CT CP thrust (N)`` was read as a UIUC static
+        # file and its thrust column dropped without a word until 2026-11-29; a mutation audit)
+        if (len(words) in (3, 4) and sorted(words[:3]) in (["cp", "ct", "rpm"], ["cp", "ct", "j"])
+                and words[3:] in ([], ["eta"])):
             return True
     return False
