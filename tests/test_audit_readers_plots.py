@@ -113,7 +113,7 @@ def test_the_eta_check_warns_beyond_10_percent_and_names_the_caller(tmp_path):
     readers.py, not the caller)."""
     _, said = _eta_warnings(_write(tmp_path, "a_8x6_r1_5000.txt", _sweep(eta_scale=1.3)))
     assert len(said) == 1 and "the eta column is 1.3 times J CT / CP in the median" in str(said[0].message)
-    assert said[0].filename == __file__
+    assert Path(said[0].filename).name == Path(__file__).name
     _, said = _eta_warnings(_write(tmp_path, "b_8x6_r1_5000.txt", _sweep(eta_scale=1.05)))
     assert said == []
 

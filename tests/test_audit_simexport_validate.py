@@ -394,7 +394,7 @@ def test_check_points_count_the_check_samples_not_the_fitted(model, monkeypatch)
         return int(np.sum(rng.uniform(0.0, 12.0, 100) <= 9.0))
 
     n_fit, n_check = count(8), count(9)
-    assert (n_fit, n_check) == (72, 74)
+    assert n_fit != n_check  # (the two seeds' draws differ, so the mutant's count is told apart)
     assert r.n_points == n_fit and r.meta["check_points"] == n_check
 
 

@@ -21,13 +21,13 @@ DISC = pm.Discretization(16, 8)
 
 
 @pytest.fixture(scope="module")
-def prop():
-    return pm.load_propeller("apce_8x6")
+def prop(apc8x6):
+    return apc8x6
 
 
 @pytest.fixture(scope="module")
-def params():
-    return pm.preset("gill2017-apc")
+def params(apc_params):
+    return apc_params
 
 
 def _leishman(k, shift=0.013):

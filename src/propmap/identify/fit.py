@@ -13,8 +13,9 @@ This module holds the load data's residuals; they, level flight's (eqs 16-18,
 identify/level_flight_fit.py; propmap.identify exports both) and the flight logs' (identify/flight.py)
 share one engine: identify/options.py (what is fitted, bounds,
 :class:`FitOptions`), identify/engine.py (prior, solve, directions, report),
-identify/continuation.py (the continuation in M) and identify/result.py
-(:class:`FitResult`, identifiability).
+identify/continuation.py (the continuation in M), identify/result.py
+(:class:`FitResult`, identifiability) and identify/dependence.py (the residuals'
+autocorrelation, the jackknife).
 """
 
 from __future__ import annotations

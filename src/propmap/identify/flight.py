@@ -10,7 +10,8 @@ is then an equation like eq 16, in three axes: the residual is the predicted aer
 force (:func:`propmap.vehicle.vehicle_wrench`) minus m a_s, and eq 18's least squares runs
 over all samples and axes. The fitting engine, its bounds, population prior,
 identifiability report and multistart are those of the loads and level-flight fits
-(identify/engine.py, continuation.py, options.py, result.py; docs/identification.md).
+(identify/engine.py, continuation.py, options.py, result.py, dependence.py;
+docs/identification.md).
 
 What is fitted: any section parameter, the rotor options (``collective``,
 ``flap_compliance``), the airframe drag (``drag_area_x``, ``drag_area_y``,

@@ -243,8 +243,8 @@ def near(name: str, names, cutoff: float = 0.6) -> list[str]:
 
 
 def near_names(name: str, names, otherwise: str = "; run 'propmap props' for the list") -> str:
-    """'; did you mean A, B?' for the ``names`` :func:`near` ``name``, else a pointer to
-    ``propmap props``: the tail of an unknown-propeller message.
+    """'; did you mean A, B?' for the ``names`` :func:`near` ``name``, else ``otherwise`` (by
+    default a pointer to ``propmap props``): the tail of an unknown-propeller message.
 
     Parameters
     ----------
