@@ -343,21 +343,26 @@ def test_solver_error_names_the_point_annulus_and_reason():
     assert "no sign change of F found" in str(so._solver_error(np.array([2]), (1,), om, V, b, y_R))
 
 
-def test_a_failure_at_a_later_point_of_a_batch_raises(prop, params, monkeypatch):
-    """Mutant S29 (only the first point's status read): a batch whose second point fails raises
-    SolverError naming that point, and with on_failure='flag' returns it unconverged."""
+def _fail_point(monkeypatch, point: int, status: int) -> None:
+    """The serial kernel made to report a failure (``status``: 1 + 4 annulus + reason) at ``point`` of a batch."""
     from propmap.core import _kernel
 
     real = _kernel.solve_batch_serial
 
-    def fail_second(*args):
+    def failing(*args):
         real(*args)
         out, counts, flags = args[-4], args[-2], args[-1]
-        counts[0, 1] = 1 + 4 * 2 + 2
-        flags[0, 1] = False
-        out[:, 1] = np.nan
+        counts[0, point] = status
+        flags[0, point] = False
+        out[:, point] = np.nan
 
-    monkeypatch.setattr(_kernel, "solve_batch_serial", fail_second)
+    monkeypatch.setattr(_kernel, "solve_batch_serial", failing)
+
+
+def test_a_failure_at_a_later_point_of_a_batch_raises(prop, params, monkeypatch):
+    """Mutant S29 (only the first point's status read): a batch whose second point fails raises
+    SolverError naming that point, and with on_failure='flag' returns it unconverged."""
+    _fail_point(monkeypatch, 1, 1 + 4 * 2 + 2)
     with pytest.raises(pm.SolverError, match=r"operating point \((np\.int64\()?1\)?,\) .*omega=900 rad/s.*refinement"):
         pm.rotor_loads(prop, params, [800.0, 900.0], 0.0, 0.0, discretization=DISC)
     r = pm.rotor_loads(prop, params, [800.0, 900.0], 0.0, 0.0, discretization=DISC, on_failure="flag")
@@ -396,18 +401,7 @@ def test_a_parked_points_failure_names_the_rate_given(prop, params, monkeypatch)
     """A failure at a parked point (omega below OMEGA_MIN, solved at 0.1 rad/s) names the rate the
     caller gave and says it was solved as parked blades; it named 0.1 rad/s until 2026-11-29 (the
     clamped rate, noticed by the audit of core/solver.py)."""
-    from propmap.core import _kernel
-
-    real = _kernel.solve_batch_serial
-
-    def fail_first(*args):
-        real(*args)
-        out, counts, flags = args[-4], args[-2], args[-1]
-        counts[0, 0] = 1 + 4 * 1 + 1
-        flags[0, 0] = False
-        out[:, 0] = np.nan
-
-    monkeypatch.setattr(_kernel, "solve_batch_serial", fail_first)
+    _fail_point(monkeypatch, 0, 1 + 4 * 1 + 1)
     with pytest.raises(pm.SolverError, match=r"\(omega=0\.05 rad/s, solved at 0\.1 rad/s as parked blades, "
                                              r"airspeed=5 m/s, .*no sign change"):
         pm.rotor_loads(prop, params, [0.05, 900.0], 5.0, 0.0, discretization=DISC)
