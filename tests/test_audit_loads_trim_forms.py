@@ -14,6 +14,7 @@ import pytest
 import propmap as pm
 from propmap.cli.main import main
 from propmap.core.units import RPM
+from propmap.simexport import forms
 
 
 def _loads(capsys, *argv):
@@ -134,8 +135,6 @@ def test_an_output_named_like_an_input_column_in_another_case_gets_model_appende
 
 # ---------------------------------------------------------------- simexport.forms
 
-
-from propmap.simexport import forms  # noqa: E402
 
 OM = np.array([600.0, 900.0, 1200.0])  # [rad/s]
 V, BETA = 10.0, math.radians(60.0)
