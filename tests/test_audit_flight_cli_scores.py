@@ -265,7 +265,7 @@ def test_two_hovers_at_one_commanded_speed_are_not_one_flight(tmp_path):
     from propmap.io.flightlog import read_flight_log
 
     _refuse_same_flight([read_flight_log(_hover_log(tmp_path / "h1.csv", 80, 0.0)),
-                         read_flight_log(_hover_log(tmp_path / "h2.csv", 50, 30.0))])
+                         read_flight_log(_hover_log(tmp_path / "h2.csv", 50, 30.0))])  # (no InputError raised)
 
 
 def test_same_times_other_motor_speeds_are_two_flights(tmp_path, short_logs):
@@ -278,5 +278,7 @@ def test_same_times_other_motor_speeds_are_two_flights(tmp_path, short_logs):
     b = read_flight_log(short_logs[1])
     b = dataclasses.replace(b, t=a.t.copy())
     _refuse_same_flight([a, b])
-    with pytest.raises(Exception, match="hold the same flight"):
+    from propmap.cli._common import InputError
+
+    with pytest.raises(InputError, match="hold the same flight"):
         _refuse_same_flight([a, dataclasses.replace(b, rotor_omega=a.rotor_omega.copy())])
