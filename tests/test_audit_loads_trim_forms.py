@@ -411,3 +411,18 @@ def test_a_collective_column_that_sets_the_blade_as_fitted_is_not_warned_of(tmp_
     assert "fitted to the blade set at" not in err and "wrote 2 points" in err
     code, _, err = _loads(capsys, "--params", str(f), "--rpm", "6000")  # (the check is live: 0 deg is 5 deg off)
     assert code == 0 and f"fitted to the blade set at {fitted:.1f} deg at 0.75 R" in err
+
+
+def test_trim_warns_of_a_set_fitted_to_the_blade_at_another_angle(tmp_path, capsys, apc8x6):
+    """Mutant T24: trim's section/fitted-propeller check dropped (a set fitted to this blade 5 deg up unsaid)."""
+    from propmap.cli._common import theta75_deg
+    from propmap.io.params_file import write_params
+
+    fitted = theta75_deg(apc8x6) + 5.0
+    f = tmp_path / "fitted.toml"
+    write_params(f, pm.default_params("apce_8x6"))
+    f.write_text(f.read_text() + f"\n[coverage]\ndiameter_m = {apc8x6.diameter!r}\nn_blades = 2\n"
+                 f"theta75_deg = {fitted!r}\n")
+    code, _, err = _trim(capsys, "--rpm", "6000", "--thrust", "2", "--params", str(f))
+    assert code == 0, err
+    assert f"fitted to the blade set at {fitted:.1f} deg at 0.75 R" in err
