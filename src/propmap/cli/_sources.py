@@ -230,20 +230,14 @@ def _mixed_hubs(sources) -> str | None:
     return None
 
 
-def _angle_free(name: str) -> str:
-    """A UIUC name without the blade angle an NR640-style name gives (``nr640_5_20deg`` ->
-    ``nr640_5``: the same blades, set to another angle on an adjustable hub); others as they are."""
-    from ..io.geometry_files import name_without_blade_angle
-
-    return name_without_blade_angle(name)
-
-
 def _same_blade(bare: str, base: str) -> bool:
     """Whether data named ``bare`` (a hub's count stripped) are of the blade of the geometry named
     ``base``: the same propeller, a size of its family (``da4052_5x2.65`` of ``da4052``), or the
     same blades set to another angle (``nr640_5_20deg`` of ``nr640_5_15deg``)."""
-    return bare == base or bare.startswith(base + "_") or (
-        _angle_free(bare) != bare and _angle_free(bare) == _angle_free(base))
+    from ..io.geometry_files import name_without_blade_angle
+
+    free = name_without_blade_angle(bare)
+    return bare == base or bare.startswith(base + "_") or (free != bare and free == name_without_blade_angle(base))
 
 
 def _is_family_file(base: str) -> bool:
@@ -478,7 +472,7 @@ def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
         At most one warning, on standard error; raises nothing.
     """
     from ..io.catalogue import catalogue
-    from ..io.geometry_files import blade_angle_from_name, size_in_inches_from_name
+    from ..io.geometry_files import blade_angle_from_name, name_without_blade_angle, size_in_inches_from_name
 
     # (a hub's blade count stripped as from the data's names: a _3b catalogue propeller's own files were "named for
     # another propeller")
@@ -504,8 +498,9 @@ def warn_other_propeller(sources, prop, angle_set: bool = False) -> None:
                  f"propeller, used with {prop.n_blades} blades: give --blades {entry.n_blades} if that is the hub "
                  "measured (the thrust scales nearly with the blade count)")
             return
-        angles = named != base and _angle_free(base) != base and _angle_free(named) != named
-        if angles and _angle_free(named) == _angle_free(base):  # (both named for a setting, of one blade)
+        named_free, base_free = name_without_blade_angle(named), name_without_blade_angle(base)
+        angles = named != base and base_free != base and named_free != named
+        if angles and named_free == base_free:  # (both named for a setting, of one blade)
             if not angle_set:  # (the same blades at another setting: runs of several, or a catalogue PROP)
                 settings = {blade_angle_from_name(r[1]) for r in map(_uiuc_run_name, sources) if r is not None}
                 advice = ("give the runs of one setting (with a UIUC geometry file the blade is then set to it)"

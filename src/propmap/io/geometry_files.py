@@ -130,7 +130,7 @@ def blade_angle_from_name(name: str) -> float | None:
     float or None
         The angle [deg]; None for a name of another form (``apce_10x7``, ``nr640_geom``).
     """
-    a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
+    a = _angle_match(name)
     return None if a is None else float(a["A"])
 
 
@@ -149,8 +149,13 @@ def name_without_blade_angle(name: str) -> str:
     str
         The name without ``_<angle>deg``; a name of another form as it is.
     """
-    a = None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
+    a = _angle_match(name)
     return name if a is None else f"{name[: a.start()]}_{a['D']}{name[a.end():]}"
+
+
+def _angle_match(name: str):
+    """The ``_<D>_<angle>deg`` of an NR640-style name, None where the name gives a size ``<D>x<P>``."""
+    return None if _NAME_RE.search(name) else _ANGLE_NAME_RE.search(name)
 
 
 def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int = 2,
