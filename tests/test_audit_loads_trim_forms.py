@@ -394,9 +394,9 @@ def test_the_airspeed_beyond_a_sets_coverage_is_the_files_largest(tmp_path, caps
     assert f"airspeed up to 10 m/s: the data behind {f} reach 3 m/s" in err
 
 
-def test_a_collective_column_that_sets_the_blade_as_fitted_is_not_warned_of(tmp_path, capsys, apc8x6):
-    """Mutant L39: a points file's collective column not passed to the fitted-blade check (its rows checked at
-    0 deg: a set fitted to this blade 5 deg up, run with collectives 0 to 5 deg, warned of)."""
+def _set_fitted_5_deg_up(tmp_path, apc8x6):
+    """apce_8x6's set in a file whose [coverage] says it was fitted to this blade set 5 deg up at 0.75 R:
+    (the file, that angle [deg])."""
     from propmap.cli._common import theta75_deg
     from propmap.io.params_file import write_params
 
@@ -405,6 +405,13 @@ def test_a_collective_column_that_sets_the_blade_as_fitted_is_not_warned_of(tmp_
     write_params(f, pm.default_params("apce_8x6"))
     f.write_text(f.read_text() + f"\n[coverage]\ndiameter_m = {apc8x6.diameter!r}\nn_blades = 2\n"
                  f"theta75_deg = {fitted!r}\n")
+    return f, fitted
+
+
+def test_a_collective_column_that_sets_the_blade_as_fitted_is_not_warned_of(tmp_path, capsys, apc8x6):
+    """Mutant L39: a points file's collective column not passed to the fitted-blade check (its rows checked at
+    0 deg: a set fitted to this blade 5 deg up, run with collectives 0 to 5 deg, warned of)."""
+    f, fitted = _set_fitted_5_deg_up(tmp_path, apc8x6)
     p = _points(tmp_path, "rpm,airspeed,incidence_deg,collective_deg\n6000,0,0,0\n6000,0,0,5\n")
     code, _, err = _loads(capsys, "--params", str(f), "--points", str(p), "--out", str(tmp_path / "o.csv"))
     assert code == 0, err
@@ -415,14 +422,7 @@ def test_a_collective_column_that_sets_the_blade_as_fitted_is_not_warned_of(tmp_
 
 def test_trim_warns_of_a_set_fitted_to_the_blade_at_another_angle(tmp_path, capsys, apc8x6):
     """Mutant T24: trim's section/fitted-propeller check dropped (a set fitted to this blade 5 deg up unsaid)."""
-    from propmap.cli._common import theta75_deg
-    from propmap.io.params_file import write_params
-
-    fitted = theta75_deg(apc8x6) + 5.0
-    f = tmp_path / "fitted.toml"
-    write_params(f, pm.default_params("apce_8x6"))
-    f.write_text(f.read_text() + f"\n[coverage]\ndiameter_m = {apc8x6.diameter!r}\nn_blades = 2\n"
-                 f"theta75_deg = {fitted!r}\n")
+    f, fitted = _set_fitted_5_deg_up(tmp_path, apc8x6)
     code, _, err = _trim(capsys, "--rpm", "6000", "--thrust", "2", "--params", str(f))
     assert code == 0, err
     assert f"fitted to the blade set at {fitted:.1f} deg at 0.75 R" in err
