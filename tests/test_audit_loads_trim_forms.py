@@ -10,17 +10,15 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from cli_helpers import run
 
 import propmap as pm
-from propmap.cli.main import main
 from propmap.core.units import RPM
 from propmap.simexport import forms
 
 
 def _loads(capsys, *argv):
-    code = main(["loads", "apce_8x6", *argv])
-    out, err = capsys.readouterr()
-    return code, out, err
+    return run(capsys, "loads", "apce_8x6", *argv)
 
 
 def _points(tmp_path, text, name="p.csv"):
@@ -275,9 +273,7 @@ def test_one_slow_row_among_fast_ones_is_warned_of(tmp_path, capsys):
 
 
 def _trim(capsys, *argv):
-    code = main(["trim", "apce_8x6", *argv])
-    out, err = capsys.readouterr()
-    return code, out, err
+    return run(capsys, "trim", "apce_8x6", *argv)
 
 
 @pytest.mark.parametrize("argv, message", [

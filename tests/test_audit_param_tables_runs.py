@@ -5,10 +5,10 @@ behaviour it changed."""
 from __future__ import annotations
 
 import pytest
+from cli_helpers import run
 
 from propmap.io.param_sets import named_sets, resolve_params, section_preset, section_presets
 from propmap.io.params_file import ParamsFileError
-
 
 # ------------------------------------------------------------------ io/param_sets.py
 
@@ -282,22 +282,14 @@ def test_holdout_comparison_pools_only_the_held_out_runs_once(apce_validation):
 # ------------------------------------------------------------------ cli/export_sim.py
 
 
-def _cli(capsys, *argv):
-    from propmap.cli.main import main
-
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 def test_export_sim_json_on_stdout_the_files_on_stderr(capsys, tmp_path):
     """Kills ES4 (--points 20, the documented lower end, refused), ES5 (an upper-case .SDF refused), ES11 (the
     catalogue's citation left out) and ES14 (the 'wrote' line on stdout, after the JSON)."""
     import json
 
     out = tmp_path / "motor.SDF"
-    code, stdout, err = _cli(capsys, "export-sim", "apce_8x6", "--target", "gz-sim", "--out", str(out),
-                             "--points", "20", "--json")
+    code, stdout, err = run(capsys, "export-sim", "apce_8x6", "--target", "gz-sim", "--out", str(out),
+                            "--points", "20", "--json")
     assert code == 0, err
     rep = json.loads(stdout)  # (stdout the JSON alone)
     assert rep["target"] == "gz-sim" and rep["check_points"] == 20
@@ -315,8 +307,8 @@ def test_export_sim_json_on_stdout_the_files_on_stderr(capsys, tmp_path):
 def test_export_sim_envelope_forms_refused_with_one_line(capsys, tmp_path, envelope, match):
     """Kills ES1 (three numbers read as LOW:HIGH's failure to parse, not as the wrong form) and ES2 (a name given twice,
     cli.md, taken as its last range)."""
-    code, _, err = _cli(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out",
-                        str(tmp_path / "c.json"), "--points", "20", "--envelope", envelope)
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out",
+                       str(tmp_path / "c.json"), "--points", "20", "--envelope", envelope)
     assert code == 2 and err.count("\n") == 1 and match in err, err
     assert list(tmp_path.iterdir()) == []
 
@@ -333,8 +325,8 @@ def test_export_sim_envelope_names_any_case_and_the_hyphen():
 
 def test_export_sim_says_an_incidence_range_ending_at_pi_looks_like_radians(capsys, tmp_path):
     """Kills ES3 (the radians note of cli.md dropped for --envelope incidence_deg=)."""
-    code, _, err = _cli(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out",
-                        str(tmp_path / "c.json"), "--points", "20", "--envelope", "incidence_deg=0:3.14")
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out",
+                       str(tmp_path / "c.json"), "--points", "20", "--envelope", "incidence_deg=0:3.14")
     assert code == 0, err
     assert "--envelope incidence_deg: the incidences end at 3.14 deg: radians?" in err
 
@@ -342,8 +334,8 @@ def test_export_sim_says_an_incidence_range_ending_at_pi_looks_like_radians(caps
 def test_export_sim_refuses_an_out_named_like_a_report(capsys, tmp_path):
     """Kills ES6 (--out x.report.json, cli.md: refused since it wrote over another export's report)."""
     out = tmp_path / "x.report.json"
-    code, _, err = _cli(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out", str(out),
-                        "--points", "20")
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "multinomial", "--out", str(out),
+                       "--points", "20")
     assert code == 2 and err.count("\n") == 1, err
     assert "a name ending in .report.json is an export's report" in err
     assert list(tmp_path.iterdir()) == []
@@ -364,9 +356,9 @@ def test_export_sim_refuses_a_vehicle_hovering_beyond_tip_mach_0_8(capsys, tmp_p
     assert "mass = 0.772" in text
     (tmp_path / "heavy.toml").write_text(text.replace("mass = 0.772", "mass = 50.0", 1))
     out = tmp_path / "h.sdf"
-    code, _, err = _cli(capsys, "export-sim", str(tmp_path / "neurobem_5.1x4.8_geom.txt"), "--blades", "3",
-                        "--target", "gz-sim", "--out", str(out), "--vehicle", str(tmp_path / "heavy.toml"),
-                        "--envelope", "rpm=1000:900000", "--points", "20")
+    code, _, err = run(capsys, "export-sim", str(tmp_path / "neurobem_5.1x4.8_geom.txt"), "--blades", "3",
+                       "--target", "gz-sim", "--out", str(out), "--vehicle", str(tmp_path / "heavy.toml"),
+                       "--envelope", "rpm=1000:900000", "--points", "20")
     assert code == 2, err
     assert re.fullmatch(r"propmap: error: --vehicle: it hovers at \d+ rpm, a blade tip Mach number of 1\.\d+ "
                         r"\(> 0\.8, beyond the model's physics\): is its mass \(50 kg\) in kg, and are its rotors "

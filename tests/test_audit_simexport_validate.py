@@ -9,10 +9,10 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from cli_helpers import run
 
 import propmap as pm
 from propmap.cli import validate_all as VA
-from propmap.cli.main import main
 from propmap.core.units import RPM
 from propmap.simexport import Envelope
 from propmap.simexport import fit as F
@@ -319,12 +319,6 @@ def test_run_all_refuses_an_empty_protocol_list(tmp_path):
 # ---------------------------------------------------------------- propmap validate's argument checks
 
 
-def _cli(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 @pytest.fixture
 def no_catalogue_run(monkeypatch):
     """validate --all's catalogue run replaced by a recorder: a check that lets a bad call through fails at once."""
@@ -340,33 +334,33 @@ def no_catalogue_run(monkeypatch):
 ])
 def test_validate_all_refuses_options_of_a_single_prop(capsys, tmp_path, no_catalogue_run, argv, match):
     """Mutants V4, V5, V6 (each check of --all's options dropped): refused with exit 2, the catalogue not run."""
-    code, _, err = _cli(capsys, "validate", *[a.format(tmp=tmp_path) for a in argv])
+    code, _, err = run(capsys, "validate", *[a.format(tmp=tmp_path) for a in argv])
     assert code == 2 and match in err and no_catalogue_run == []
 
 
 def test_validate_all_reaches_the_catalogue_run_with_its_options(capsys, no_catalogue_run):
     """The recorder above is reached by a good call (so the refusals above are the checks', not the stub's)."""
-    code, _, err = _cli(capsys, "validate", "--all", "--protocols", "static", "--props", "apce_8x6")
+    code, _, err = run(capsys, "validate", "--all", "--protocols", "static", "--props", "apce_8x6")
     assert code == 0, err
     assert no_catalogue_run == [(["static"], ["apce_8x6"], None, False)]
 
 
 def test_validate_prop_refuses_pole_pairs(capsys):
     """Mutant V3 (--pole-pairs dropped from the SOURCE-only options): a catalogue PROP takes no --pole-pairs."""
-    code, _, err = _cli(capsys, "validate", "apce_8x6", "--pole-pairs", "7")
+    code, _, err = run(capsys, "validate", "apce_8x6", "--pole-pairs", "7")
     assert code == 2 and "--pole-pairs applies to SOURCE files (give --prop with them)" in err
 
 
 def test_validate_figure_refuses_a_format_it_cannot_write(capsys, tmp_path):
     """Mutant V7 (.txt let through as a figure format): refused by its suffix before the validation runs."""
-    code, _, err = _cli(capsys, "validate", "apce_8x6", "--figure", tmp_path / "f.txt")
+    code, _, err = run(capsys, "validate", "apce_8x6", "--figure", tmp_path / "f.txt")
     assert code == 2 and "give a .png, .pdf or .svg file name (the format follows it)" in err
     assert not (tmp_path / "f.txt").exists()
 
 
 def test_validate_prop_refuses_out_dir(capsys, tmp_path):
     """Mutant V8 (--out-dir dropped from the --all-only options): a single PROP writes no folder, so it is refused."""
-    code, _, err = _cli(capsys, "validate", "apce_8x6", "--out-dir", tmp_path / "o")
+    code, _, err = run(capsys, "validate", "apce_8x6", "--out-dir", tmp_path / "o")
     assert code == 2 and "--out-dir applies to --all" in err and not (tmp_path / "o").exists()
 
 
@@ -401,7 +395,7 @@ def test_check_points_count_the_check_samples_not_the_fitted(model, monkeypatch)
 def test_validate_a_misspelt_prop_gives_suggestions(capsys):
     """Mutant V18 (the misspelt-name check skipped): a name that is neither a catalogue propeller nor a file is
     answered with the catalogue's nearest names."""
-    code, _, err = _cli(capsys, "validate", "apce_8x66")
+    code, _, err = run(capsys, "validate", "apce_8x66")
     assert code == 2
     assert "PROP: unknown propeller 'apce_8x66'; did you mean apce_8x6" in err and "SOURCE files with --prop" in err
 

@@ -6,15 +6,10 @@ import math
 import re
 
 import pytest
+from cli_helpers import run
 
 import propmap as pm
 from propmap.cli.main import main
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_props_json(capsys):

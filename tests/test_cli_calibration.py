@@ -11,19 +11,13 @@ from importlib import resources
 
 import numpy as np
 import pytest
+from cli_helpers import run
 
 import propmap as pm
-from propmap.cli.main import main
 from propmap.io.calibration import (calibrated, calibration, generic_params, generic_without, params_from_si,
                                     params_to_si)
 
 DATA = resources.files("propmap") / "data"
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def _uiuc_files(tmp_path, extra_header=False):

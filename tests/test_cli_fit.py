@@ -4,6 +4,7 @@ import json
 from importlib import resources
 
 import pytest
+from cli_helpers import run
 
 import propmap as pm
 from propmap.cli.main import main
@@ -11,12 +12,6 @@ from propmap.cli.main import main
 EXAMPLES = resources.files("propmap") / "data" / "examples"
 VEHICLE = str(EXAMPLES / "quadrotor.toml")
 FLIGHT = str(EXAMPLES / "level_flight_synthetic.csv")
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_fit_level_flight_writes_params_report_and_figure(capsys, tmp_path):

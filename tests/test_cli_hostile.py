@@ -6,31 +6,19 @@ import csv
 import io
 import json
 import os
-from pathlib import Path
 import signal
 import stat
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import pytest
+from cli_helpers import one_line_error, run
 
 from propmap.cli.main import main
 
 POINTS = "rpm,airspeed,incidence_deg\n8000,0,0\n8000,10,90\n"
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def one_line_error(code, err, match=""):
-    """Exit 2, one stderr line starting 'propmap: error:' that contains ``match``."""
-    lines = err.strip().splitlines()
-    errors = [line for line in lines if line.startswith("propmap: error:")]
-    return code == 2 and len(errors) == 1 and match in errors[0] and "Traceback" not in err
 
 
 @pytest.fixture

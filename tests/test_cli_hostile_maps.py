@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_helpers import one_line_error, run
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -27,18 +28,6 @@ from propmap.io.inputs import short_path
 TINY = ["--rpm", "3000:9000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5", "--check-points", "0"]
 EXAMPLES = Path(str(resources.files("propmap") / "data" / "examples"))
 UIUC = Path(str(resources.files("propmap") / "data" / "uiuc_v1"))
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def one_line_error(code, err, match=""):
-    """Exit 2, one stderr line starting 'propmap: error:' that contains ``match``."""
-    errors = [line for line in err.strip().splitlines() if line.startswith("propmap: error:")]
-    return code == 2 and len(errors) == 1 and match in errors[0] and "Traceback" not in err
 
 
 def files(folder: Path) -> dict:

@@ -10,19 +10,13 @@ import sys
 
 import numpy as np
 import pytest
+from cli_helpers import run
 
 import propmap as pm
-from propmap.cli.main import main
 from propmap.io.mapfile import map_props
 from propmap.maps import RotorMap
 
 SMALL = ["--rpm", "3000:9000:5", "--airspeed", "0:15:4", "--incidence-deg", "0:180:7", "--check-points", "60"]
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_map_netcdf_with_sidecar_check_and_plot(capsys, tmp_path):
