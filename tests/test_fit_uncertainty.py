@@ -199,14 +199,18 @@ def test_flight_residual_runs_end_where_samples_were_left_out():
 
 def test_the_jackknife_band_is_the_chi_square_interval_of_a_std_error():
     """The 95% band of a std error from g groups: sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) /
-    chi2_0.025) times it, 0.57-3.7 for 4 groups and 0.64-2.2 for 7 (docs/identification.md; the
-    quantiles swapped passed the suite: a mutation audit, 2026-11-27)."""
-    from propmap.identify.dependence import _jackknife_band
+    chi2_0.025) times it, 0.57-3.7 for 4 groups and 0.64-2.2 for 7, in the report's dict and its
+    text (docs/identification.md; the quantiles swapped passed the suite: a mutation audit,
+    2026-11-27)."""
+    from propmap.identify import FitOptions, fit_loads
 
-    lo, hi = _jackknife_band(4)
-    assert (lo, hi) == (pytest.approx(0.5665, abs=1e-4), pytest.approx(3.7285, abs=1e-4))
-    lo, hi = _jackknife_band(7)
-    assert (lo, hi) == (pytest.approx(0.6444, abs=1e-4), pytest.approx(2.2021, abs=1e-4))
+    data, prop = _apce_8x6()
+    res = fit_loads(data, prop, options=FitOptions(names=("cl_alpha", "alpha_L0")))
+    for g, band in ((4, (0.5665, 3.7285)), (7, (0.6444, 2.2021))):
+        folds = [{"cl_alpha": res.x[0] + 0.01 * k, "alpha_L0": res.x[1]} for k in range(g)]
+        res.extra["jackknife"] = rep = jackknife_report(res, folds, "run", [f"r{k}" for k in range(g)])
+        assert rep["band"] == [pytest.approx(band[0], abs=1e-4), pytest.approx(band[1], abs=1e-4)]
+        assert f"95%: about {band[0]:.2g}-{band[1]:.2g} times it" in res.report_text()
 
 
 def test_the_population_prior_without_a_propeller_is_the_fold_without_its_family():

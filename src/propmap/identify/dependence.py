@@ -134,8 +134,10 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
         ``by``, ``groups``, ``std_error`` and ``ci95`` (estimate +- Student's t with g - 1
         degrees of freedom times it) per parameter, keyed and in units as the report's (an
         angle's as ``alpha_L0_deg``, in deg: :func:`~propmap.identify.options.report_name`), and
-        ``ratio`` to the linearised std error (None where that is not finite), ``at_bound``
-        (group -> parameters at a bound in the fit without it, where any). The report
+        ``ratio`` to the linearised std error (None where that is not finite), ``band`` (the
+        95% band of the std error itself as multiples of it, from g - 1 degrees of freedom:
+        sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) / chi2_0.025)), ``at_bound`` (group ->
+        parameters at a bound in the fit without it, where any). The report
         (``FitResult.report_text``, ``to_dict``) shows it where ``result.extra["jackknife"]``
         holds it.
 
@@ -161,13 +163,6 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
                      for n, x, s in zip(result.names, result.x, se)},
             "ratio": {report_name(n): (float(s / v) if np.isfinite(v) and v > 0 else None)
                       for n, s, v in zip(result.names, se, lin)},
+            "band": [math.sqrt((g - 1) / stats.chi2.ppf(0.975, g - 1)),
+                     math.sqrt((g - 1) / stats.chi2.ppf(0.025, g - 1))],
             "at_bound": {str(g): [report_name(n) for n in b] for g, b in zip(groups, at_bound or ()) if b}}
-
-
-def _jackknife_band(g: int) -> tuple[float, float]:
-    """The 95% band of a standard deviation estimated with g - 1 degrees of freedom, as
-    multiples of it: sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) / chi2_0.025)."""
-    from scipy import stats
-
-    d = g - 1
-    return math.sqrt(d / stats.chi2.ppf(0.975, d)), math.sqrt(d / stats.chi2.ppf(0.025, d))

@@ -10,7 +10,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core.airfoil import Air, SectionParams
-from .dependence import _jackknife_band
 from .options import AIRFRAME_BOUNDS, CAMBERED_SCALE, FLAP_START, ROTOR_BOUNDS, _is_angle, report_name, report_value
 
 __all__ = ["FitResult", "Identifiability", "POOR_REL_STD"]
@@ -280,7 +279,7 @@ class FitResult:
         if jk:
             g = len(jk["groups"])
             ratios = [v for v in jk["ratio"].values() if v is not None]
-            band_lo, band_hi = _jackknife_band(g)
+            band_lo, band_hi = jk["band"]
             lines.append(f"jackknife: the std error from the {g} fits leaving one {jk['by']} out (the spread between "
                          f"{jk['by']}s; {g} {jk['by']}s make it itself uncertain, 95%: about "
                          f"{band_lo:.2g}-{band_hi:.2g} times it)"
