@@ -448,6 +448,22 @@ def demo_run(tmp_path_factory):
     return code, buf.getvalue(), out_dir, rec
 
 
+def test_demo_writes_figures_and_a_fitted_file_with_its_coverage(demo_run):
+    """`propmap demo` writes its table and figures, prints the paper's Table I model beside the hover model,
+    and its fitted file records what the fitted data covered, as fit loads' files do (it had no [coverage]:
+    used at J = 1.85, where the data reach 0.97, it said nothing). (Moved from tests/test_cli.py, which ran
+    the demo a second time.)"""
+    from propmap.io.params_file import read_coverage
+
+    code, out, out_dir, _ = demo_run
+    assert code == 0
+    for name in ("envelope.csv", "envelope.png", "validation.png"):
+        assert (out_dir / name).is_file()
+    assert "Table I" in out and "hover" in out
+    cov = read_coverage(out_dir / "fitted_params.toml")
+    assert cov["J_max"] == pytest.approx(0.974, abs=1e-3) and (cov["rpm_min"], cov["rpm_max"]) == (2534.0, 6713.0)
+
+
 def test_demo_envelope_rows_print_the_hover_error_in_n_and_percent_of_t_hover(demo_run):
     """Mutants D10 (the % of T, not of T_hover), D11 (the error T - T_hover), D12 (no 10 m/s rows), D17 (the default
     rpm 6000), D23 (the T_hover said the first row's thrust)."""

@@ -117,20 +117,6 @@ def test_validate_json_and_figure(capsys, tmp_path):
     assert len(d["sweeps"]) == 8
 
 
-def test_demo_writes_figures(capsys, tmp_path):
-    code, out, _ = run(capsys, "demo", "--out-dir", str(tmp_path / "d"))
-    assert code == 0
-    for name in ("envelope.csv", "envelope.png", "validation.png"):
-        assert (tmp_path / "d" / name).is_file()
-    assert "Table I" in out and "hover" in out
-    # its fitted file records what the fitted data covered, as fit loads' files do (it had no [coverage]:
-    # used at J = 1.85, where the data reach 0.97, it said nothing)
-    from propmap.io.params_file import read_coverage
-
-    cov = read_coverage(tmp_path / "d" / "fitted_params.toml")
-    assert cov["J_max"] == pytest.approx(0.974, abs=1e-3) and (cov["rpm_min"], cov["rpm_max"]) == (2534.0, 6713.0)
-
-
 @pytest.mark.parametrize(
     "argv, match",
     [
