@@ -110,7 +110,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         stand's pitot); an incidence column without a unit that looks like radians.
     """
     from .stand import map_columns, split_header
-    from .steps import ESC_TOL, esc_form, stand_points
+    from .steps import ESC_TOL, esc_form
 
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
@@ -195,20 +195,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                                     or (group is None and n <= 40
                                         and np.all(np.abs(np.diff(v["esc"])) >= 5 * ESC_TOL[form]))))
     if averaged:
-        esc, time = v.pop("esc"), v.pop("time", None)
         f.check_ranges({"rpm": v["rpm"]}, lines, RANGES)
-        if n and np.all(np.isnan(v["rpm"])):
-            raise DataError(f"{what}: {p}: no rotation speed in any row")
-        _one_signal(esc, v, group, form, cm.column("esc"), f"{what}: {p}")
-        v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
-        if not group.size:
-            raise DataError(f"{what}: {p}: no ESC step reaches a steady rotation speed (within 2% over the second "
-                            "half of the step)")
-        notes.append((f"each of the {n} rows is an ESC step (an export already averaged" if group.size == n else
-                      f"{n} rows averaged into {group.size} ESC steps ({dropped} settling, ramp or unsteady rows "
-                      "dropped")
-                     + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
-                     + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
+        v, group = _average_steps(v, group, form, cm.column("esc"), f"{what}: {p}", notes)
         lines = np.zeros(group.size, dtype=np.int64)
         n = group.size
     else:
@@ -221,20 +209,47 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                          "'Throttle (%)' for that)")
     # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
     if "thrust" in v and n:
-        t = v["thrust"]
-        big = _significant(t)
-        static = big & (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(n)) >= 0)
-        if static.any() and np.all(t[static] < 0):
-            v["thrust"] = -t
-            notes.append(f"thrust negated: {cm.column('thrust')!r} is negative at every static point "
-                         f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
-                         "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
-                         "direction the propeller pulls, opposite to its slipstream")
+        v["thrust"] = _thrust_sign(v, cm.column("thrust"), notes)
     if "torque" in v and n:
         v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
     named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
     f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES,
                    written={q: cm.columns[q][:2] for q in cm.columns})
+    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
+    _check_points(v, keys, cm, min_points, averaged, what, p)
+    if group is None:
+        group = np.full(n, "all", dtype=object)
+    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
+                    group, f"{path}", collective, tuple(notes), air_density)
+
+
+def _average_steps(v: dict, group, form: str, column: str, where: str, notes: list):
+    """(v, group) of a stand's "steps" test: one point per ESC step, its settling rows dropped
+    (:func:`propmap.identify.steps.stand_points`), each step a group, with a note; DataError
+    where no row has a speed, the signal never steps or no step settles."""
+    from .steps import stand_points
+
+    n = v["rpm"].size
+    esc, time = v.pop("esc"), v.pop("time", None)
+    if n and np.all(np.isnan(v["rpm"])):
+        raise DataError(f"{where}: no rotation speed in any row")
+    _one_signal(esc, v, group, form, column, where)
+    v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
+    if not group.size:
+        raise DataError(f"{where}: no ESC step reaches a steady rotation speed (within 2% over the second "
+                        "half of the step)")
+    notes.append((f"each of the {n} rows is an ESC step (an export already averaged" if group.size == n else
+                  f"{n} rows averaged into {group.size} ESC steps ({dropped} settling, ramp or unsteady rows "
+                  "dropped")
+                 + (f"; {len(unsteady)} step(s) never steady, left out: {', '.join(unsteady)}" if unsteady else "")
+                 + f"); each step is a group (e.g. --holdout {group[min(2, group.size - 1)]})")
+    return v, group
+
+
+def _check_points(v: dict, keys: list, cm, min_points: int, averaged: bool, what: str, p: str) -> None:
+    """Enough distinct operating points (read_loads' min_points), and the warnings of a table
+    pasted twice, a static stand's pitot and an incidence that looks like radians."""
+    n = v["rpm"].size
     if n < min_points:
         steps = " (one per ESC step: its rows averaged)" if averaged else ""
         raise DataError(f"{what}: {p} has {n} points{steps}; " + (
@@ -244,12 +259,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         warnings.warn(f"{p}: {cm.column('airspeed')!r} reads {np.min(v['airspeed']):.2g}-"
                       f"{np.max(v['airspeed']):.2g} m/s at every point: a static stand's pitot offset or noise? Every "
                       f"point is read as moving (static up to {STATIC_AIRSPEED:g} m/s), which changes what a fit "
-                      "frees; zero or drop the column for a static test", stacklevel=2)
+                      "frees; zero or drop the column for a static test", stacklevel=3)
     if "incidence_deg" in cm.columns and cm.columns["incidence_deg"][2] is None:  # a unit given is believed
         hint = radians_hint(v["incidence_deg"], v["airspeed"], cm.column("incidence_deg"))
         if hint:
-            warnings.warn(f"{p}: {hint}", stacklevel=2)
-    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
+            warnings.warn(f"{p}: {hint}", stacklevel=3)
     ops = np.column_stack([v["rpm"], v["airspeed"], v["incidence_deg"], v.get("collective_deg", np.zeros(n))])
     # (rows were counted, not operating points: 3 points written twice were fitted, and a table pasted twice fitted
     # without a word with every standard error shrunk by sqrt(2): a user-level audit, 2026-11-28)
@@ -264,11 +278,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if repeated:
         warnings.warn(f"{p}: {repeated} row(s) repeat another row to every digit (operating point and loads): a table "
                       "pasted twice? Each row counts as a measurement, and a repeated one shrinks the fit's standard "
-                      "errors as if it were another", stacklevel=2)
-    if group is None:
-        group = np.full(n, "all", dtype=object)
-    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}", collective, tuple(notes), air_density)
+                      "errors as if it were another", stacklevel=3)
 
 
 def _rotation_speed(v: dict, speeds: list, cm, rpm_source, pole_pairs, lines, what: str, p: str,
@@ -469,6 +479,22 @@ def _optical_gaps(optical: np.ndarray, electrical: np.ndarray, column: str, note
                  f"dropout): those rows take the electrical speed, within {abs(ratio - 1.0):.1%} of the optical one "
                  "elsewhere (median)")
     return np.where(gap, electrical, optical)
+
+
+def _thrust_sign(v: dict, column: str, notes: list) -> np.ndarray:
+    """The thrust as the propeller's: negated where it is negative at every static point (the
+    sign of a pusher mount or of a stand mounted the other way round), else as written
+    (read_loads' sign rules)."""
+    t = v["thrust"]
+    big = _significant(t)
+    static = big & (v["airspeed"] <= STATIC_AIRSPEED) & (v.get("collective_deg", np.zeros(t.size)) >= 0)
+    if static.any() and np.all(t[static] < 0):
+        notes.append(f"thrust negated: {column!r} is negative at every static point "
+                     f"({int(static.sum())}; {int(np.sum(t[big] < 0))} of {int(big.sum())} points negative): a "
+                     "pusher mount or a stand mounted the other way round; propmap's thrust is positive in the "
+                     "direction the propeller pulls, opposite to its slipstream")
+        return -t
+    return t
 
 
 def _torque_sign(v: dict, what: str, p: str, column: str, notes: list) -> np.ndarray:
