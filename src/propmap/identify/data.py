@@ -306,6 +306,43 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
                else ", or whether the parameters are this propeller's")]
 
 
+def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
+    """sanity_check's in-plane force: its sign against the model's at incidence (the DataError to raise
+    once the thrust and torque are checked, or None; a warning where most points disagree but it is
+    not fitted) and a drag in axial flow (an incidence the file does not give?), warned of in
+    ``warnings_``."""
+    if "drag" not in data.measured:
+        return None
+    refused = None
+    # the sign convention of the in-plane force (a fit of the other sign is nonsense)
+    D = at_rpm.drag
+    sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
+    opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
+    said = (f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
+            f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane airspeed (against "
+            "the disk's in-plane motion, docs/conventions.md); negate the column if the file uses the other "
+            "convention")
+    if "drag" in checked and sure.sum() >= 3 and opposite >= DRAG_SIGN_REFUSED * sure.sum():
+        # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit;
+        # raised after the thrust and torque checks, whose unit slips are said first)
+        refused = DataError(f"load data: {data.source}: {said} (a normal force of a body-fixed balance, or a "
+                            "sweep through negative angles given as magnitudes, has it on one side)")
+    elif sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
+        warnings_.append(said)
+    # an in-plane force without an in-plane airspeed: an incidence the file does not give?
+    Dm = data.measured["drag"]
+    axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)
+    scale = (np.abs(data.measured["thrust"]) if "thrust" in data.measured
+             else np.full(data.n, np.nanmax(np.abs(Dm), initial=0)))
+    large = axial & (np.abs(Dm) > 0.05 * np.nan_to_num(scale))
+    if large.sum() >= 3 and large.sum() >= 0.5 * axial.sum():
+        of = "thrust" if "thrust" in data.measured else "largest drag"
+        warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
+                         "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
+                         "incidence missing (an 'incidence_deg' column)?")
+    return refused
+
+
 def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = None, quantities=None,
                  pole_pairs: int | None = None) -> list[str]:
     """Refuse load data that cannot be this propeller's in these units; warn of risks.
@@ -403,33 +440,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     def plausible(rat, lo=1 / SANITY_FACTOR, hi=SANITY_FACTOR):
         return all(lo <= v <= hi for v in rat.values())
 
-    drag_refused = None
-    if "drag" in data.measured:  # the sign convention of the in-plane force (a fit of the other sign is nonsense)
-        D = at_rpm.drag
-        sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
-        opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
-        said = (f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
-                f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane airspeed (against "
-                "the disk's in-plane motion, docs/conventions.md); negate the column if the file uses the other "
-                "convention")
-        if "drag" in checked and sure.sum() >= 3 and opposite >= DRAG_SIGN_REFUSED * sure.sum():
-            # (fitted anyway it put alpha_L0, cd_min and the compliance at their bounds, exit 0: a user-level audit;
-            # raised after the thrust and torque checks, whose unit slips are said first)
-            drag_refused = DataError(f"load data: {data.source}: {said} (a normal force of a body-fixed balance, or a "
-                                     "sweep through negative angles given as magnitudes, has it on one side)")
-        elif sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
-            warnings_.append(said)
-    if "drag" in data.measured:  # an in-plane force without an in-plane airspeed: an incidence the file does not give?
-        Dm = data.measured["drag"]
-        axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)
-        scale = (np.abs(data.measured["thrust"]) if "thrust" in data.measured
-                 else np.full(data.n, np.nanmax(np.abs(Dm), initial=0)))
-        large = axial & (np.abs(Dm) > 0.05 * np.nan_to_num(scale))
-        if large.sum() >= 3 and large.sum() >= 0.5 * axial.sum():
-            of = "thrust" if "thrust" in data.measured else "largest drag"
-            warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
-                             "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
-                             "incidence missing (an 'incidence_deg' column)?")
+    drag_refused = _drag_checks(data, at_rpm, checked, warnings_)
     vrs = np.isin(at_rpm.state_name, ("vortex ring", "turbulent wake")) & np.asarray(at_rpm.converged, bool)
     if vrs.sum() >= max(2, 0.1 * data.n):  # (a descent audit: such data were fitted and scored without a word)
         groups = list(dict.fromkeys(str(g) for g in data.group[vrs]))
@@ -461,32 +472,30 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
               if plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
     if speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
+
+    def near(omega):  # the loads at these rates within a unit slip's 1.6x of the model's
+        misses = [abs(math.log(max(abs(v), 1e-300))) for v in ratios(omega).values()]
+        return max(misses, default=math.inf) < math.log(1.6)
+
     # a rate in rpm read as rad/s (an omega column holding rpm): 9.55 times too fast, said before the pole pairs
-    rpm_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * RPM).values()),
-                   default=math.inf)
-    if rpm_miss < math.log(1.6):
+    if near(data.omega * RPM):
         causes.append("a rotation rate in rpm read as rad/s (an 'omega' column holding rpm: name it rpm)")
     # and the reverse, an rpm column holding rad/s (9.55 times slow: blamed on an airspeed in km/h, a wind-tunnel data
     # audit, 2026-11-27)
-    rads_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / RPM).values()),
-                    default=math.inf)
-    if rads_miss < math.log(1.6):
+    if near(data.omega / RPM):
         causes.insert(0, "a rotation rate in rad/s read as rpm (an rpm column holding rad/s: name it omega or "
                       "'speed (rad/s)')")
-    hz_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 60).values()), default=math.inf)
-    if hz_miss < math.log(1.6):
+    if near(data.omega * 60):
         causes.append("a rotation rate in rev/s (Hz) read as rpm (name its unit, e.g. 'rotation speed (Hz)')")
     # rates in thousands: 1.975 for 1975 rpm (a thousands separator read as a decimal point, or krpm; the message
     # blamed the diameter: a fuzzing audit, 2026-11-27)
-    k_miss = max((abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega * 1000).values()), default=math.inf)
-    if k_miss < math.log(1.6):
+    if near(data.omega * 1000):
         causes.append("rotation rates in thousands read as rpm (1.975 for 1975: a thousands separator read as a "
                       "decimal point, or krpm; write the rpm in full)")
     # the electrical speed of a motor with pp pole pairs: every pp that brings the loads as close as a unit slip (the
     # model's own error spans neighbouring counts, whose thrusts differ by (8/7)^2 = 1.31: the best one alone named 8
     # for a 7-pole-pair motor, and its advice, --pole-pairs on a plain rpm column, was refused: a user-level audit)
-    close = [pp for pp in range(2, 15)
-             if max(abs(math.log(max(abs(v), 1e-300))) for v in ratios(data.omega / pp).values()) < math.log(1.6)]
+    close = [pp for pp in range(2, 15) if near(data.omega / pp)]
     if close:
         counts = (f"{close[0]}" if len(close) == 1 else f"{close[0]}-{close[-1]}" if close[-1] - close[0] == len(
             close) - 1 else ", ".join(map(str, close)))
