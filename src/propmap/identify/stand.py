@@ -353,29 +353,56 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                                                                         and 1 <= pole_pairs <= 50)):
         raise error(f"pole_pairs (--pole-pairs) must be an integer in [1, 50], got {pole_pairs!r}")
     found = ", ".join(repr(n) for n in names if n.strip())
-    speeds = [q for q in ROTATION_COLUMNS if q in cm.columns]
-    if not speeds:
-        pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
-        hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
-                "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
-                "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
-                if pair else "")
-        if not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
-            hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
-                    "are the file's first line (a load file's header is looked for in its first 41 lines)")
-        raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
+    if not any(q in cm.columns for q in ROTATION_COLUMNS):
+        _refuse_no_speed(names, cm, found, error)
     split = {name: split_header(name) for name in names if name.strip()}
     # a column whose unit is neither a speed's nor an angle's (V (V), a current, a power) is not one of them
     bases = {name: b for name, (b, u) in split.items()
              if u is None or _token(u) in UNITS["speed"] or _token(u) in UNITS["angle"]}
     stems = {name: _name_stems(name) for name in bases}
     if not any(q in cm.columns for q in ("thrust", "torque", "drag")):
-        coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
-        if coeff:
-            raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
-                        "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
-                        "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
-        raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+        _refuse_no_load(bases, found, error)
+    _refuse_wind_axes_and_rates(cm, split, bases, stems, error)
+    _refuse_unread_flow(cm, split, bases, stems, error)
+    if "collective_deg" not in cm.columns:
+        _refuse_pitch_like(names, error)
+    if "thrust" not in cm.columns:
+        _note_unread_force(cm, split)
+    if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
+        raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
+                    f"found {found}")
+    return cm
+
+
+def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
+    """map_columns without a rotation-speed column: refused, saying where it looks like a
+    two-rotor export (columns for rotors A and B) or like lines above the header."""
+    pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
+    hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
+            "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
+            "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
+            if pair else "")
+    if not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
+        hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
+                "are the file's first line (a load file's header is looked for in its first 41 lines)")
+    raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
+
+
+def _refuse_no_load(bases: dict, found: str, error) -> None:
+    """map_columns without a thrust, torque or drag column: refused, naming coefficient columns
+    (CT, CP) where they stand instead."""
+    coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
+    if coeff:
+        raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
+                    "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
+                    "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
+    raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+
+
+def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
+    """map_columns' wind-axis lift (refused where the points move, or as a static stand's thrust
+    under another name) and a climb or descent rate column (refused unless the airspeed and
+    the incidence are read; then a note)."""
     # a tunnel's wind-axis lift and drag are not the rotor's thrust and in-plane force (lift = T sin i + H cos i,
     # drag = H sin i - T cos i at incidence i, the lift positive towards the rotor axis' side)
     lift = [n for n, (b, _) in split.items()
@@ -399,6 +426,12 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                     "(its magnitude, in its unit: 'airspeed (mph)' is read as such) with 'incidence_deg' 0 (climb) "
                     "or 180 (descent): write those columns, or remove it; left unread, its points would be taken as "
                     "static or in the airspeed's direction")
+
+
+def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
+    """map_columns' airspeed, advance ratio or flow angle under a name propmap does not read
+    (refused: every point would be taken as static or axial), or under an ambiguous name (a
+    note)."""
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
@@ -434,21 +467,18 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
                             + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
-    if "collective_deg" not in cm.columns:
-        _refuse_pitch_like(names, error)
-    if "thrust" not in cm.columns:  # (a force under a name propmap does not read: 'Force (N)' was left out unsaid,
-        # and a torque-only fit ran: a user-level audit)
-        forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
-                  and _token(u) in ("n", "mn", "kn", "kgf", "gf", "lbf", "ozf")]
-        if forces:
-            cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
-                            "force) with its unit to fit it; without a thrust column "
-                            + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
-                               + " is fitted" if {"drag", "torque"} & set(cm.columns) else "nothing is fitted"))
-    if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
-        raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "
-                    f"found {found}")
-    return cm
+
+
+def _note_unread_force(cm: ColumnMap, split: dict) -> None:
+    """map_columns without a thrust column: a force column under another name ('Force (N)') is
+    named in a note (it was left out unsaid and a torque-only fit ran: a user-level audit)."""
+    forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
+              and _token(u) in ("n", "mn", "kn", "kgf", "gf", "lbf", "ozf")]
+    if forces:
+        cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
+                        "force) with its unit to fit it; without a thrust column "
+                        + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
+                           + " is fitted" if {"drag", "torque"} & set(cm.columns) else "nothing is fitted"))
 
 
 #: the operating-point quantities of a points file (``propmap loads --points``)
