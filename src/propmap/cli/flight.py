@@ -235,23 +235,9 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     _check_rotor_sets(veh, [base_label] * len(veh.rotors))
     air = resolve_air(air, air_choice)
     refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")
-    names = [Path(p).name for p in log_paths]  # (a log's name, FlightLog.name, is its file name)
-    if len(set(names)) != len(names):
-        twin = next(n for n in names if names.count(n) > 1)
-        where = ", ".join(str(p) for p, n in zip(log_paths, names) if n == twin)
-        raise InputError(f"LOG: two logs are named {twin!r} ({where}): the logs are told apart by their file name "
-                         "(--holdout, the report's per-log rows); link or copy one under another name")
+    names = _log_names(log_paths)
     veh = _one_set(veh, "fit flight fits one set for every rotor")
-    held = parse_names("--holdout", holdout, what="log") or ()
-    unknown = [h for h in held if Path(h).name not in names]
-    if unknown:
-        raise InputError(f"--holdout: {unknown[0]!r} is not one of the LOGs ({', '.join(names)})")
-    held = {Path(h).name for h in held}
-    if len(held) == len(names):
-        raise InputError("--holdout: every LOG is held out; keep at least one to fit")
-    if cross_validate and len(names) - len(held) < 2:
-        raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
-                         f"got {len(names) - len(held)}")
+    held = _held_logs(holdout, names, cross_validate)
     logs = _logs(log_paths, _motor_map(motor_map), len(veh.rotors))  # (the names' checks before the reads)
     _refuse_same_flight(logs)
     samples = _samples(logs, veh, rate_hz)
@@ -263,23 +249,12 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    from ..identify.flight import AIRFRAME_NAMES, SAMPLES_PER_PARAMETER, default_flight_names
+    from ..identify.flight import AIRFRAME_NAMES, default_flight_names
 
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
     n_names = len(opts.names) if opts.names else len(default_flight_names(base))
-    if train.n <= SAMPLES_PER_PARAMETER * n_names:
-        total = sum(lg.n for lg in logs if lg.name not in held)
-        raise InputError(f"--rate-hz {rate_hz:g}: {train.n} training sample(s) at that rate cannot identify {n_names} "
-                         + (f"parameters; raise --rate-hz (the training logs hold {total} samples)" if train.n < total
-                            else f"parameters: the training logs hold only {total} samples"))
-    if cross_validate:  # (each fold leaves a training log out: its smallest, checked before any fit, a review)
-        per_log = np.bincount(np.asarray(train.log_index), minlength=len(names))
-        fold = train.n - int(per_log.max())
-        if fold <= SAMPLES_PER_PARAMETER * n_names:
-            raise InputError(f"--cross-validate at --rate-hz {rate_hz:g}: a fold keeps {fold} training sample(s), "
-                             f"which cannot identify {n_names} parameters (more than {SAMPLES_PER_PARAMETER} per "
-                             "parameter); raise --rate-hz")
+    _check_training_samples(train, logs, held, n_names, rate_hz, cross_validate)
     res = _run_fit(fit_flight, train, veh, base=base, air=air, options=opts, moments=moments)
     body = fitted_body_drag(res)
     veh_in = veh
@@ -318,43 +293,13 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                                       [f["log"] for f in cv["folds"]],
                                                       [f["at_bound"] for f in cv["folds"]])
     res.extra["flight_report"] = report
-    # each log's samples' own rate (1 / their median step; a log left with one sample has none)
-    rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
-                    for t in (samples.t[samples.log_index == k] for k in range(len(logs))) if t.size > 1}) or [
-                        samples.rate_hz]
-    rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
-    text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
-            f"{train.n} ({', '.join(n for n in names if n not in held)})", _table(rows)]
-    if samples.reference_force is not None:
-        text.append(NEUROBEM_REFERENCE)
-    if reference_masses:
-        text.append(_reference_mass_note(reference_masses, veh.mass))
-    bands = report["training"]["speed_bands"]
-    text.append("training F by speed band: " + ", ".join(
-        f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
-        + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
+    text = _report_lines(samples, len(logs), names, held, train.n, rows, report, reference_masses, veh.mass)
     ht = report["hover_torque"]
     if ht and "unavailable" in ht:
         from dataclasses import replace
 
-        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
-                    f"{ht['torque_model']:.4f} N m; the check against the generic reference set is unavailable: it "
-                    f"cannot make that thrust ({ht['unavailable']})")
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
-    elif ht:
-        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
-                    f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
-                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
-    if ht and "yaw_r" in ht:
-        text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
-                    f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
-                                             if abs(ht["yaw_r"]) < 0.5 else ""))
-    if cross_validate:
-        cv = report["cross_validation"]
-        text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "
-                    + ", ".join(f"{k} {v:.3f}" for k, v in cv["pooled"].items()))
-        text.append(_table([(f"held out {f['log']}", f["model"]) for f in cv["folds"]]))
 
     def figures(png):
         from ..identify.flight import BASELINES
@@ -387,6 +332,99 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
                    body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
+
+
+def _report_lines(samples, n_logs: int, names, held, n_train: int, rows, report: dict, reference_masses,
+                  mass: float) -> list[str]:
+    """fit flight's printed report: the samples and logs fitted, the error table (``rows``), the
+    logs' own references, the training error by speed band, the hover torque against the
+    thrust-stand-calibrated generic set, and leave-one-log-out where it ran."""
+    import numpy as np
+
+    # each log's samples' own rate (1 / their median step; a log left with one sample has none)
+    rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
+                    for t in (samples.t[samples.log_index == k] for k in range(n_logs)) if t.size > 1}) or [
+                        samples.rate_hz]
+    rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
+    text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
+            f"{n_train} ({', '.join(n for n in names if n not in held)})", _table(rows)]
+    if samples.reference_force is not None:
+        text.append(NEUROBEM_REFERENCE)
+    if reference_masses:
+        text.append(_reference_mass_note(reference_masses, mass))
+    bands = report["training"]["speed_bands"]
+    text.append("training F by speed band: " + ", ".join(
+        f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
+        + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
+    ht = report["hover_torque"]
+    if ht and "unavailable" in ht:
+        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
+                    f"{ht['torque_model']:.4f} N m; the check against the generic reference set is unavailable: it "
+                    f"cannot make that thrust ({ht['unavailable']})")
+    elif ht:
+        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
+                    f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
+                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
+    if ht and "yaw_r" in ht:
+        text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
+                    f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
+                                             if abs(ht["yaw_r"]) < 0.5 else ""))
+    if "cross_validation" in report:
+        cv = report["cross_validation"]
+        text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "
+                    + ", ".join(f"{k} {v:.3f}" for k, v in cv["pooled"].items()))
+        text.append(_table([(f"held out {f['log']}", f["model"]) for f in cv["folds"]]))
+    return text
+
+
+def _log_names(log_paths) -> list[str]:
+    """The logs' names, their file names (a log's name, FlightLog.name, is its file name): two
+    logs of one name are refused, since --holdout and the report's rows tell them apart by it."""
+    names = [Path(p).name for p in log_paths]
+    if len(set(names)) != len(names):
+        twin = next(n for n in names if names.count(n) > 1)
+        where = ", ".join(str(p) for p, n in zip(log_paths, names) if n == twin)
+        raise InputError(f"LOG: two logs are named {twin!r} ({where}): the logs are told apart by their file name "
+                         "(--holdout, the report's per-log rows); link or copy one under another name")
+    return names
+
+
+def _held_logs(holdout, names: list[str], cross_validate: bool) -> set[str]:
+    """--holdout's logs by name: each one of the LOGs, at least one log left to fit (two with
+    --cross-validate, which leaves each training log out in turn)."""
+    held = parse_names("--holdout", holdout, what="log") or ()
+    unknown = [h for h in held if Path(h).name not in names]
+    if unknown:
+        raise InputError(f"--holdout: {unknown[0]!r} is not one of the LOGs ({', '.join(names)})")
+    held = {Path(h).name for h in held}
+    if len(held) == len(names):
+        raise InputError("--holdout: every LOG is held out; keep at least one to fit")
+    if cross_validate and len(names) - len(held) < 2:
+        raise InputError(f"--cross-validate leaves each training log out in turn: it needs at least 2 training logs, "
+                         f"got {len(names) - len(held)}")
+    return held
+
+
+def _check_training_samples(train, logs, held, n_names: int, rate_hz: float, cross_validate: bool) -> None:
+    """More than SAMPLES_PER_PARAMETER training samples per fitted parameter at --rate-hz, in the
+    whole fit and, with --cross-validate, in the fold that leaves out the largest training log
+    (checked before any fit, a review)."""
+    import numpy as np
+
+    from ..identify.flight import SAMPLES_PER_PARAMETER
+
+    if train.n <= SAMPLES_PER_PARAMETER * n_names:
+        total = sum(lg.n for lg in logs if lg.name not in held)
+        raise InputError(f"--rate-hz {rate_hz:g}: {train.n} training sample(s) at that rate cannot identify {n_names} "
+                         + (f"parameters; raise --rate-hz (the training logs hold {total} samples)" if train.n < total
+                            else f"parameters: the training logs hold only {total} samples"))
+    if cross_validate:
+        per_log = np.bincount(np.asarray(train.log_index), minlength=len(logs))
+        fold = train.n - int(per_log.max())
+        if fold <= SAMPLES_PER_PARAMETER * n_names:
+            raise InputError(f"--cross-validate at --rate-hz {rate_hz:g}: a fold keeps {fold} training sample(s), "
+                             f"which cannot identify {n_names} parameters (more than {SAMPLES_PER_PARAMETER} per "
+                             "parameter); raise --rate-hz")
 
 
 def _flight_coverage(logs, veh, air) -> dict:
