@@ -343,7 +343,6 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     import numpy as np
 
     from ..identify import fit_loads
-    from ..validation import holdout_comparison
 
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
@@ -427,54 +426,10 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         from ..identify.jackknife import jackknife_loads
 
         _run_fit(jackknife_loads, res, train, prop, base=base, air=air, quantities=qty, options=options)
-    extra = ""
     if entry is not None:
-        from ..plots import plot_load_fit
-
-        if held:
-            cmp = holdout_comparison(entry, prop, res.params, base, held, air=air)
-            res.extra["holdout"] = {k: cmp[k] for k in ("holdout", "fitted", "baseline", "hover_model")}
-            extra = (f"held-out ({', '.join(held)}) CT rmse: fitted {cmp['fitted']['ct_rmse']:.4f}, "
-                     f"{base_label} {cmp['baseline']['ct_rmse']:.4f}, hover model {cmp['hover_model']['ct_rmse']:.4f}; "
-                     f"CP rmse: fitted {cmp['fitted']['cp_rmse']:.4f}, {base_label} {cmp['baseline']['cp_rmse']:.4f}, "
-                     f"hover model {cmp['hover_model']['cp_rmse']:.4f} (coefficients [-], absolute)")
-            vf, vb = cmp["validation_fitted"], cmp["validation_baseline"]
-        else:
-            from ..validation import validate
-
-            vf, vb = validate(entry, prop, res.params, air=air), validate(entry, prop, base, air=air)
-        def figure(png):
-            plot_load_fit(vf.runs, vb.runs, set(held), png, baseline_label=base_label,
-                          title=f"{label}: load fit vs measured\nData: {entry.citation}")
+        extra, figure = _catalogue_holdout(res, entry, prop, base, base_label, held, air, label)
     else:
-        from ..core.solver import rotor_loads
-        from ..plots import plot_load_parity
-
-        model = {}
-        for name, p in (("fitted", res.params), (base_label, base)):
-            r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
-                            collective=data.collective)
-            model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
-        held_mask = np.isin(data.group, held)
-        if held:
-            units = {"thrust": "N", "drag": "N", "torque": "N m"}
-            res.extra["holdout"] = {
-                "holdout": list(held),
-                **{name: {f"{k}_rmse": float(np.sqrt(np.mean((m[k] - data.measured[k])[held_mask] ** 2)))
-                          for k in data.measured} for name, m in model.items()}}
-            extra = "held-out rmse: " + "; ".join(
-                f"{name}: " + ", ".join(f"{k} {v:.4g} {units[k.removesuffix('_rmse')]}" for k, v in
-                                        res.extra["holdout"][name].items())
-                for name in model)
-            fitted, blind = res.extra["holdout"]["fitted"], res.extra["holdout"][base_label]
-            top = {k: float(np.nanmax(np.abs(data.measured[k]), initial=0.0)) for k in data.measured}
-            worse = held_out_worse(fitted, blind, top, res.extra.get("quantities", list(data.measured)))
-            if worse:  # (said: a fit that predicts its held-out groups worse than its unfitted base learned the others)
-                said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
-                warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
-                     f"({said}): what it learned from the fitted groups does not carry to these")
-        def figure(png):
-            plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
+        extra, figure = _file_holdout(res, data, prop, base, base_label, held, air, label)
     files = file_digests(sources)  # (each file read once for both digests)
     coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources, files),
                 "files_sha256": files,
@@ -487,3 +442,67 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
                           f"{air.rho:.4g} kg/m^3" + (f"\nData: {cited}" if cited else ""),
                    data_warnings=data_warnings)
+
+
+def _catalogue_holdout(res, entry, prop, base, base_label: str, held, air, label: str):
+    """fit loads of a catalogue propeller: (the held-out runs' CT and CP rmse line, fitted
+    against the base set and the hover model, or ""; the figure's writer, the fit against the
+    catalogue's runs), the comparison stored in ``res.extra["holdout"]``."""
+    from ..plots import plot_load_fit
+    from ..validation import holdout_comparison, validate
+
+    extra = ""
+    if held:
+        cmp = holdout_comparison(entry, prop, res.params, base, held, air=air)
+        res.extra["holdout"] = {k: cmp[k] for k in ("holdout", "fitted", "baseline", "hover_model")}
+        extra = (f"held-out ({', '.join(held)}) CT rmse: fitted {cmp['fitted']['ct_rmse']:.4f}, "
+                 f"{base_label} {cmp['baseline']['ct_rmse']:.4f}, hover model {cmp['hover_model']['ct_rmse']:.4f}; "
+                 f"CP rmse: fitted {cmp['fitted']['cp_rmse']:.4f}, {base_label} {cmp['baseline']['cp_rmse']:.4f}, "
+                 f"hover model {cmp['hover_model']['cp_rmse']:.4f} (coefficients [-], absolute)")
+        vf, vb = cmp["validation_fitted"], cmp["validation_baseline"]
+    else:
+        vf, vb = validate(entry, prop, res.params, air=air), validate(entry, prop, base, air=air)
+
+    def figure(png):
+        plot_load_fit(vf.runs, vb.runs, set(held), png, baseline_label=base_label,
+                      title=f"{label}: load fit vs measured\nData: {entry.citation}")
+    return extra, figure
+
+
+def _file_holdout(res, data, prop, base, base_label: str, held, air, label: str):
+    """fit loads of a file's data: (the held-out groups' rmse line, fitted and base set, or "";
+    the parity figure's writer), the rmse stored in ``res.extra["holdout"]``, a warning where the
+    fitted set predicts the held-out groups 25% or more worse than the base set."""
+    import numpy as np
+
+    from ..core.solver import rotor_loads
+    from ..plots import plot_load_parity
+
+    extra = ""
+    model = {}
+    for name, p in (("fitted", res.params), (base_label, base)):
+        r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
+                        collective=data.collective)
+        model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+    held_mask = np.isin(data.group, held)
+    if held:
+        units = {"thrust": "N", "drag": "N", "torque": "N m"}
+        res.extra["holdout"] = {
+            "holdout": list(held),
+            **{name: {f"{k}_rmse": float(np.sqrt(np.mean((m[k] - data.measured[k])[held_mask] ** 2)))
+                      for k in data.measured} for name, m in model.items()}}
+        extra = "held-out rmse: " + "; ".join(
+            f"{name}: " + ", ".join(f"{k} {v:.4g} {units[k.removesuffix('_rmse')]}" for k, v in
+                                    res.extra["holdout"][name].items())
+            for name in model)
+        fitted, blind = res.extra["holdout"]["fitted"], res.extra["holdout"][base_label]
+        top = {k: float(np.nanmax(np.abs(data.measured[k]), initial=0.0)) for k in data.measured}
+        worse = held_out_worse(fitted, blind, top, res.extra.get("quantities", list(data.measured)))
+        if worse:  # (said: a fit that predicts its held-out groups worse than its unfitted base learned the others)
+            said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
+            warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
+                 f"({said}): what it learned from the fitted groups does not carry to these")
+
+    def figure(png):
+        plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
+    return extra, figure
