@@ -95,7 +95,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     import warnings
     from dataclasses import replace
 
-    from ..simexport import ALIASES, check_rotorpy_vehicle, export_sim, report_path, write_export
+    from ..simexport import ALIASES, export_sim, report_path, write_export
 
     if target == "gill2019":
         warnings.warn("--target gill2019 is now called multinomial: its term set is propmap's, not the list of "
@@ -123,72 +123,10 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                          "the hover rpm, which --hover-rpm gives; only rotorpy's export writes the vehicle itself): "
                          "give one of them")
     if vehicle is not None:
-        from ._vehicle import _fitted_vehicle
-        from ..vehicle import hover_omega
-
-        veh, fitted = _fitted_vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (c_D)
-        if fitted:
-            airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
-        if target == "rotorpy":
-            try:
-                check_rotorpy_vehicle(veh)
-            except ValueError as exc:
-                raise InputError(f"--vehicle: {exc}") from None
-        def shown(p, rotor=True):  # (a name alone does not tell two readings of one geometry file apart)
-            same = rotor and propeller.same_size(p.diameter, p.n_blades, rtol=5e-5)
-            return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades{', another chord or blade angle' * same})"
-
-        names = sorted({shown(r.propeller) for r in veh.rotors if not r.propeller.same_geometry(propeller)})
-        # (the other targets take the rpm without the vehicle: a vehicle with nothing to do is refused above)
-        instead = "give --hover-rpm" if target == "rotorpy" else "give --hover-rpm instead of --vehicle"
-        if names and hover_rpm is None:
-            # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
-            raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}, so it "
-                             f"cannot pin {propeller.name}'s hover rpm: export the vehicle's propeller, or "
-                             f"{instead}")
-        if names:
-            warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}: the export "
-                          f"gives {propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
-                          stacklevel=1)
-        # (a rotor's own set equal to PARAMS but for its air is PARAMS: every rotor is solved in one air)
-        own = [k + 1 for k, r in enumerate(veh.rotors)
-               if r.params is not None and replace(r.params, air=params.air) != params]
-        if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
-            raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
-                             f"{label}, so the vehicle's hover is not {propeller.name}'s with it: {instead}, "
-                             "or a vehicle without the rotors' params")
-        if own:
-            warnings.warn(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set: the export "
-                          f"gives {label}'s coefficients on every rotor, at --hover-rpm", UserWarning, stacklevel=1)
-        if hover_rpm is None:
-            hover_from = "--vehicle (its hover rpm)"
-            from ..core.solver import SolverError
-
-            try:
-                hover_rpm = hover_omega(veh, params, air=air) / RPM
-            except (ValueError, SolverError) as exc:
-                raise InputError(f"--vehicle: its hover rpm: {exc}") from None
-            from ..core.solver import TIP_MACH_WARN
-
-            mach = hover_rpm * RPM * max(r.propeller.radius for r in veh.rotors) / air.speed_of_sound
-            if mach > TIP_MACH_WARN:  # (the envelope's error said "widen --envelope", which wrote coefficients
-                # pinned at tip Mach 4.3 for a mass in grams: a vehicle-designer audit, 2026-11-28)
-                raise InputError(f"--vehicle: it hovers at {hover_rpm:.0f} rpm, a blade tip Mach number of "
-                                 f"{mach:.3g} (> {TIP_MACH_WARN:g}, beyond the model's physics): is its mass "
-                                 f"({veh.mass:g} kg) in kg, and are its rotors the ones it flies?")
-    if vehicle is not None and target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
-        import numpy as np
-
-        from ..vehicle import vehicle_wrench
-
-        down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
-                                     np.full(len(veh.rotors), hover_rpm * RPM), air=air).body_force[0, 2])
-        if down > 5e-4 * veh.weight:  # (a zero vertical drag area makes none: "pushes it down by 0 N", an audit)
-            warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
-                          f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
-                          f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of "
-                          "the freestream only) leave out: there the exported vehicle's thrust at that rpm exceeds "
-                          "its weight by as much", UserWarning, stacklevel=1)
+        veh, hover_rpm, hover_from, airframe = _export_vehicle(vehicle, params_spec, propeller, params, label, air,
+                                                               target, hover_rpm)
+        if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
+            _warn_wash_drag(veh, params, hover_rpm, air)
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)
@@ -230,3 +168,87 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         for line in error_lines(res):
             click.echo(line[1:])  # the empty comment's space
     click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
+
+
+def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, target: str, hover_rpm):
+    """export-sim's --vehicle: (the vehicle, its hover rpm, where that came from, the airframe's
+    label). Its hover pins the export's hover rpm unless --hover-rpm gives it; refused where its
+    rotors carry another propeller or their own parameter sets without --hover-rpm (their hover is
+    not PROP's with PARAMS), where rotorpy cannot write it, or where it hovers beyond tip Mach
+    TIP_MACH_WARN; warned of where --hover-rpm stands in for such a hover."""
+    import warnings
+    from dataclasses import replace
+
+    from ..core.solver import TIP_MACH_WARN, SolverError
+    from ..simexport import check_rotorpy_vehicle
+    from ..vehicle import hover_omega
+    from ._vehicle import _fitted_vehicle
+
+    hover_from, airframe = "--hover-rpm", ""
+    veh, fitted = _fitted_vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (c_D)
+    if fitted:
+        airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
+    if target == "rotorpy":
+        try:
+            check_rotorpy_vehicle(veh)
+        except ValueError as exc:
+            raise InputError(f"--vehicle: {exc}") from None
+
+    def shown(p, rotor=True):  # (a name alone does not tell two readings of one geometry file apart)
+        same = rotor and propeller.same_size(p.diameter, p.n_blades, rtol=5e-5)
+        return f"{p.name} ({p.diameter:.4g} m, {p.n_blades} blades{', another chord or blade angle' * same})"
+
+    names = sorted({shown(r.propeller) for r in veh.rotors if not r.propeller.same_geometry(propeller)})
+    # (the other targets take the rpm without the vehicle: a vehicle with nothing to do is refused above)
+    instead = "give --hover-rpm" if target == "rotorpy" else "give --hover-rpm instead of --vehicle"
+    if names and hover_rpm is None:
+        # (the vehicle's hover with PROP's parameter set on its own propellers is neither's hover)
+        raise InputError(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}, so it "
+                         f"cannot pin {propeller.name}'s hover rpm: export the vehicle's propeller, or "
+                         f"{instead}")
+    if names:
+        warnings.warn(f"--vehicle: its rotors carry {', '.join(names)}, not {shown(propeller, False)}: the export "
+                      f"gives {propeller.name}'s coefficients on the vehicle's layout, at --hover-rpm", UserWarning,
+                      stacklevel=1)
+    # (a rotor's own set equal to PARAMS but for its air is PARAMS: every rotor is solved in one air)
+    own = [k + 1 for k, r in enumerate(veh.rotors)
+           if r.params is not None and replace(r.params, air=params.air) != params]
+    if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
+        raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
+                         f"{label}, so the vehicle's hover is not {propeller.name}'s with it: {instead}, "
+                         "or a vehicle without the rotors' params")
+    if own:
+        warnings.warn(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set: the export "
+                      f"gives {label}'s coefficients on every rotor, at --hover-rpm", UserWarning, stacklevel=1)
+    if hover_rpm is None:
+        hover_from = "--vehicle (its hover rpm)"
+        try:
+            hover_rpm = hover_omega(veh, params, air=air) / RPM
+        except (ValueError, SolverError) as exc:
+            raise InputError(f"--vehicle: its hover rpm: {exc}") from None
+        mach = hover_rpm * RPM * max(r.propeller.radius for r in veh.rotors) / air.speed_of_sound
+        if mach > TIP_MACH_WARN:  # (the envelope's error said "widen --envelope", which wrote coefficients
+            # pinned at tip Mach 4.3 for a mass in grams: a vehicle-designer audit, 2026-11-28)
+            raise InputError(f"--vehicle: it hovers at {hover_rpm:.0f} rpm, a blade tip Mach number of "
+                             f"{mach:.3g} (> {TIP_MACH_WARN:g}, beyond the model's physics): is its mass "
+                             f"({veh.mass:g} kg) in kg, and are its rotors the ones it flies?")
+    return veh, hover_rpm, hover_from, airframe
+
+
+def _warn_wash_drag(veh, params, hover_rpm: float, air) -> None:
+    """rotorpy's export of a vehicle whose airframe drag in the rotors' slipstream (wash_factor > 0)
+    pushes it down at the hover rpm: warned of, since RotorPy's quad_params leave it out."""
+    import warnings
+
+    import numpy as np
+
+    from ..vehicle import vehicle_wrench
+
+    down = -float(vehicle_wrench(veh, params, np.zeros(3), np.zeros(3),
+                                 np.full(len(veh.rotors), hover_rpm * RPM), air=air).body_force[0, 2])
+    if down > 5e-4 * veh.weight:  # (a zero vertical drag area makes none: "pushes it down by 0 N", an audit)
+        warnings.warn(f"--vehicle: its airframe's drag in the rotors' slipstream (wash_factor "
+                      f"{veh.body_drag.wash_factor:g}) pushes it down by {down:.3g} N at the hover rpm "
+                      f"({100 * down / veh.weight:.1f}% of its weight), which RotorPy's quad_params (drag of "
+                      "the freestream only) leave out: there the exported vehicle's thrust at that rpm exceeds "
+                      "its weight by as much", UserWarning, stacklevel=1)
