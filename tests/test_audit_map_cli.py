@@ -37,7 +37,7 @@ def checked_map(tmp_path_factory):
     """apce_8x6 on a 5 x 3 x 5 grid with 40 stored check points: the map file."""
     out = tmp_path_factory.mktemp("map") / "m.nc"
     code = main(["map", "apce_8x6", "--rpm", "3000:9000:5", "--airspeed", "0:15:3", "--incidence-deg",
-                             "0:180:5", "--check-points", "40", "--out", str(out)])
+                 "0:180:5", "--check-points", "40", "--out", str(out)])
     assert code == 0
     return out
 
