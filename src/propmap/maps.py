@@ -232,14 +232,10 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     import dask.array as da
-    import xarray as xr
 
     check_model_args(propeller, params, air, discretization)
     # the side force and the pitching moment where the set makes them (RotorOptions.side_load_sources)
     loads = LOADS + (SIDE_LOADS if params.side_load_sources() else ())
-
-    from .io.calibration import params_to_si
-
     om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
     V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
     b = _check_axis("incidence", incidence, 0.0, math.pi, "rad", snap=True)
@@ -257,9 +253,27 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     O3, V3, B3 = (da.from_array(a, chunks=chunks) for a in (O3, V3, B3))
     parts = da.map_blocks(_solve_block, propeller, params, air, discretization, loads, O3, V3, B3, new_axis=0,
                           chunks=((len(loads) + len(FLAGS),), O3.chunks[0]), dtype=float)
+    result = np.asarray(_compute(parts, scheduler, progress)).reshape((len(loads) + len(FLAGS),) + shape)
+    ds = _dataset(result, loads, om, V, b, propeller, params, air, discretization, params_label, citation)
+    # what a map file may hold, checked whether or not the map is checked against the model (with n_check = 0 a
+    # map past the loads' limits was written, and `map --check` then refused the file `map` had just written)
+    try:
+        check_dataset(ds)
+    except ValueError as exc:
+        raise ValueError(f"the solved map cannot be recorded: {exc} (narrow its rpm or airspeed axis: --rpm, "
+                         "--airspeed)") from None
+    if n_check:
+        ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
+                                  discretization=discretization))
+    return ds
+
+
+def _compute(parts, scheduler, progress: bool):
+    """build_map's solve of the grid's chunks: one at a time in this process (the model call is
+    parallel over the cores already, and two concurrent numba parallel regions would compete for
+    them), or on a dask.distributed cluster (a Client, or an address whose client is closed
+    after), with a progress bar where asked."""
     if scheduler is None:
-        # one chunk at a time: the model call is parallel over the cores already, and two
-        # concurrent numba parallel regions in one process would compete for them
         if progress:
             from dask.callbacks import Callback
             from tqdm import tqdm
@@ -298,7 +312,17 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         finally:
             if own:
                 client.close()
-    result = np.asarray(result).reshape((len(loads) + len(FLAGS),) + shape)
+    return result
+
+
+def _dataset(result, loads, om, V, b, propeller, params, air, discretization, params_label, citation):
+    """build_map's dataset from the solved grid ``result`` (loads and flags x rpm x airspeed x
+    incidence): the loads, power, CT and CP, the flags, the coordinates in the file's units and
+    the attributes that record the model, its inputs and its measured uncertainty."""
+    import xarray as xr
+
+    from .io.calibration import params_to_si
+
     dims = ("rpm", "airspeed", "incidence_deg")
     n = om[:, None, None] / (2 * math.pi)
     data = {k: (dims, result[i], {"units": UNITS[k], "long_name": LONG_NAMES[k]}) for i, k in enumerate(loads)}
@@ -337,15 +361,4 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     unc = model_uncertainty(params_label or getattr(params, "label", ""))
     attrs["model_uncertainty_axial"] = unc["axial"]
     attrs["model_uncertainty_off_axis"] = unc["off_axis"]
-    ds = xr.Dataset(data, coords=coords, attrs=attrs)
-    # what a map file may hold, checked whether or not the map is checked against the model (with n_check = 0 a
-    # map past the loads' limits was written, and `map --check` then refused the file `map` had just written)
-    try:
-        check_dataset(ds)
-    except ValueError as exc:
-        raise ValueError(f"the solved map cannot be recorded: {exc} (narrow its rpm or airspeed axis: --rpm, "
-                         "--airspeed)") from None
-    if n_check:
-        ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
-                                  discretization=discretization))
-    return ds
+    return xr.Dataset(data, coords=coords, attrs=attrs)
