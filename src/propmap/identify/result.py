@@ -230,113 +230,147 @@ class FitResult:
         str
             Lines; angles in degrees, marked ``[deg]``, the other parameters as fitted (SI).
         """
-        idf = self.identifiability
-        data_only = idf.std_error_data is not None
-        jk = self.extra.get("jackknife")
-        lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"
-                 + (f"{'data only':>12}" if data_only else "") + (f"{'jackknife':>12}" if jk else "")]
-        for k, n in enumerate(self.names):
-            deg = _is_angle(n)
-            f = math.degrees if deg else float
-            lo, hi = idf.ci95[k]
-            flag = " (at bound)" if n in self.at_bound else ""
-            held = np.isnan(idf.std_error[k])  # held at its bound: no linearised uncertainty
-            extra = (f"{'-' if np.isnan(idf.std_error_data[k]) else format(f(idf.std_error_data[k]), '.3g'):>12}"
-                     if data_only else "")
-            sd = "-" if held else format(f(idf.std_error[k]), ".3g")
-            cut = idf.ci95_cut[k] if idf.ci95_cut is not None else (False, False)
-            interval = "-" if held else f"[{f(lo):.4g}{'*' if cut[0] else ''}, {f(hi):.4g}{'*' if cut[1] else ''}]"
-            if jk:
-                extra += f"{format(jk['std_error'][report_name(n)], '.3g'):>12}"
-            lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(self.x[k]):>10.4g}{sd:>10}{interval:>24}{extra}{flag}")
-        if idf.ci95_cut is not None and idf.ci95_cut[~np.isnan(idf.std_error)].any():
-            lines.append("*: the interval ends at the parameter's bound, which it reaches (the interval the data "
-                         "give goes past it)")
-        dirs = self.extra.get("directions")
-        if dirs:
-            lines.append(f"std err and interval: data and population prior together along the {dirs['count']} free "
-                         "directions (the prior's pull included, as an average over the catalogue's propellers) and "
-                         "the population's spread along the held ones (the "
-                         "data determine the directions, not a parameter alone: their own figures are the "
-                         "directions', below)")
-        elif data_only:
-            lines.append("std err and interval: data and population prior together (the prior's pull on the estimate "
-                         "included, as an average over the catalogue's propellers: one far from the base set is "
-                         "pulled more; compare --no-prior); 'data only': the data's alone")
-        auto = self.extra.get("residual_autocorrelation")
-        if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
-            flight = self.extra.get("kind") == "flight"
-            several = not flight or len(self.extra.get("logs", ())) > 1
-            hint = ({"flight": "; the leave-one-log-out jackknife (fit flight --cross-validate) measures the spread "
-                               "between logs",
-                     "loads": "; the jackknife of the runs (fit loads --jackknife) measures the spread between runs"}
-                    .get(self.extra.get("kind"), "") if several else "")
-            said = (f"the jackknife below measures the spread between {jk['by']}s" if jk else
-                    f"the uncertainty is likely larger{hint}")
-            lines.append(f"std err and interval assume independent residuals; consecutive residuals within each "
-                         f"{'log' if flight else 'run'} correlate at {auto['lag1']:.2f} (lag 1: the information "
-                         f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): {said}")
+        return "\n".join(_parameter_lines(self) + _dependence_lines(self) + _directions_lines(self)
+                         + _fit_lines(self, max_residuals))
+
+
+def _parameter_lines(res) -> list[str]:
+    """report_text's table of the estimates (std error, 95% interval, the data's own and the
+    jackknife's std error where there are) and what the std errors include."""
+    idf = res.identifiability
+    data_only = idf.std_error_data is not None
+    jk = res.extra.get("jackknife")
+    dirs = res.extra.get("directions")
+    lines = [f"{'parameter':<19}{'estimate':>10}{'std err':>10}{'95% interval':>24}"
+             + (f"{'data only':>12}" if data_only else "") + (f"{'jackknife':>12}" if jk else "")]
+    for k, n in enumerate(res.names):
+        deg = _is_angle(n)
+        f = math.degrees if deg else float
+        lo, hi = idf.ci95[k]
+        flag = " (at bound)" if n in res.at_bound else ""
+        held = np.isnan(idf.std_error[k])  # held at its bound: no linearised uncertainty
+        extra = (f"{'-' if np.isnan(idf.std_error_data[k]) else format(f(idf.std_error_data[k]), '.3g'):>12}"
+                 if data_only else "")
+        sd = "-" if held else format(f(idf.std_error[k]), ".3g")
+        cut = idf.ci95_cut[k] if idf.ci95_cut is not None else (False, False)
+        interval = "-" if held else f"[{f(lo):.4g}{'*' if cut[0] else ''}, {f(hi):.4g}{'*' if cut[1] else ''}]"
         if jk:
-            g = len(jk["groups"])
-            ratios = [v for v in jk["ratio"].values() if v is not None]
-            band_lo, band_hi = jk["band"]
-            lines.append(f"jackknife: the std error from the {g} fits leaving one {jk['by']} out (the spread between "
-                         f"{jk['by']}s; {g} {jk['by']}s make it itself uncertain, 95%: about "
-                         f"{band_lo:.2g}-{band_hi:.2g} times it)"
-                         + (f"; {min(ratios):.2g}-{max(ratios):.2g} times the linearised std err" if ratios else "")
-                         + "".join(f"; without {g}: {', '.join(b)} at a bound (its spread understated)"
-                                   for g, b in jk.get("at_bound", {}).items()))
-        if dirs:
-            lines.append(f"free: {dirs['count']} directions of the {len(self.names)} parameters, those the data "
-                         "determine best against the population prior\n  (the others held at the base set); "
-                         "coefficient +- std error (data only) in prior standard deviations,\n  and the parameter "
-                         "changes per unit (the four largest against each parameter's population spread):")
-            for i, (cf, sd, sdd, load) in enumerate(zip(dirs["coefficients"], dirs["std_error"],
-                                                        dirs["std_error_data_only"], dirs["loadings"])):
-                big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
-                unit = dirs["units"]
-                terms = ", ".join(f"{self.names[j]} {load[j]:+.3g}{' deg' if dirs['names'][j] in unit else ''}"
-                                  for j in big)
-                sd, sdd = ("inf" if v is None else f"{v:.3f}" for v in (sd, sdd))  # (None: not determined)
-                lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd} ({sdd}): {terms}")
-            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {dirs['count']} free directions "
-                         f"(effective number; the other {len(self.names) - dirs['count']} held at the base set)")
-        elif idf.effective_parameters is not None:
-            lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(self.names)} parameters' "
-                         "directions (effective number; the prior holds the others near the base set)")
-        if sum(not np.isnan(v) for v in idf.std_error) > 1:
-            free = [k for k in range(len(self.names)) if not np.isnan(idf.std_error[k])]  # (held at a bound: none)
-            said = " (data and prior together)" if data_only or dirs else ""
-            lines.append(f"correlation{said}: " + "; ".join(
-                f"{self.names[i]}-{self.names[j]} {idf.correlation[i, j]:+.2f}"
-                for a, i in enumerate(free) for j in free[a + 1:]))
-        label = ("the free directions' Jacobian" if dirs else "scaled Jacobian (data and prior rows, as fitted)"
-                 if data_only else "scaled Jacobian")
-        lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
-        level = self.extra.get("kind") in ("level_flight", "flight")
-        unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
-        r = self.residuals
-        order = np.argsort(-np.abs(r))[:max_residuals]
-        shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
-        labels = self.extra.get("residual_labels")  # (load fits: each residual's quantity, group and point)
-        lines.append(f"residuals{unit}{shown}: " + ", ".join(
-            f"#{i} {r[i]:+.3g}" + (f" ({labels[i]})" if labels is not None and i < len(labels) else "")
-            for i in order))
-        u = " N" if level else " [-]"
-        lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {self.nfev} evaluations "
-                     f"({self.n_model_points} rotor points) in {self.elapsed_s:.2f} s; {len(self.starts)} start(s)")
-        eff = self.extra.get("M_effect")
-        if eff:
-            lines.append(f"stall-blend smoothing: fitted with M = {eff['M_fit']:g}; the same parameters give rms "
-                         f"residual {eff['rms_residual_at_M_fit']:.4g} at M = {eff['M_fit']:g} and "
-                         f"{eff['rms_residual_at_M_base']:.4g} at M = {eff['M_base']:g} (the base value)")
-        cont = self.extra.get("M_continuation")
-        if cont:
-            lines.append(f"continuation in M: fitted at M = {cont['M_first']:g} (rms residual "
-                         f"{cont['rms_residual_first']:.4g}{u}), then at M = {cont['M_final']:g} from there")
-        lines.extend(f"WARNING: {w}" for w in self.warnings)
-        lines.extend(f"WARNING: {w}" for w in idf.warnings)
-        return "\n".join(lines)
+            extra += f"{format(jk['std_error'][report_name(n)], '.3g'):>12}"
+        lines.append(f"{n + (' [deg]' if deg else ''):<19}{f(res.x[k]):>10.4g}{sd:>10}{interval:>24}{extra}{flag}")
+    if idf.ci95_cut is not None and idf.ci95_cut[~np.isnan(idf.std_error)].any():
+        lines.append("*: the interval ends at the parameter's bound, which it reaches (the interval the data "
+                     "give goes past it)")
+    if dirs:
+        lines.append(f"std err and interval: data and population prior together along the {dirs['count']} free "
+                     "directions (the prior's pull included, as an average over the catalogue's propellers) and "
+                     "the population's spread along the held ones (the "
+                     "data determine the directions, not a parameter alone: their own figures are the "
+                     "directions', below)")
+    elif data_only:
+        lines.append("std err and interval: data and population prior together (the prior's pull on the estimate "
+                     "included, as an average over the catalogue's propellers: one far from the base set is "
+                     "pulled more; compare --no-prior); 'data only': the data's alone")
+    return lines
+
+
+def _dependence_lines(res) -> list[str]:
+    """report_text's lines on what the std errors miss: the residuals' lag-1
+    autocorrelation where it is large, and the jackknife's spread between groups."""
+    jk = res.extra.get("jackknife")
+    lines = []
+    auto = res.extra.get("residual_autocorrelation")
+    if auto and auto["lag1"] is not None and auto["lag1"] > AUTOCORRELATION_SAID:
+        flight = res.extra.get("kind") == "flight"
+        several = not flight or len(res.extra.get("logs", ())) > 1
+        hint = ({"flight": "; the leave-one-log-out jackknife (fit flight --cross-validate) measures the spread "
+                           "between logs",
+                 "loads": "; the jackknife of the runs (fit loads --jackknife) measures the spread between runs"}
+                .get(res.extra.get("kind"), "") if several else "")
+        said = (f"the jackknife below measures the spread between {jk['by']}s" if jk else
+                f"the uncertainty is likely larger{hint}")
+        lines.append(f"std err and interval assume independent residuals; consecutive residuals within each "
+                     f"{'log' if flight else 'run'} correlate at {auto['lag1']:.2f} (lag 1: the information "
+                     f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): {said}")
+    if jk:
+        g = len(jk["groups"])
+        ratios = [v for v in jk["ratio"].values() if v is not None]
+        band_lo, band_hi = jk["band"]
+        lines.append(f"jackknife: the std error from the {g} fits leaving one {jk['by']} out (the spread between "
+                     f"{jk['by']}s; {g} {jk['by']}s make it itself uncertain, 95%: about "
+                     f"{band_lo:.2g}-{band_hi:.2g} times it)"
+                     + (f"; {min(ratios):.2g}-{max(ratios):.2g} times the linearised std err" if ratios else "")
+                     + "".join(f"; without {g}: {', '.join(b)} at a bound (its spread understated)"
+                               for g, b in jk.get("at_bound", {}).items()))
+    return lines
+
+
+def _directions_lines(res) -> list[str]:
+    """report_text's free parameter directions (fit loads --directions) with their loadings,
+    or the effective number of parameters the data determine."""
+    idf = res.identifiability
+    dirs = res.extra.get("directions")
+    lines = []
+    if dirs:
+        lines.append(f"free: {dirs['count']} directions of the {len(res.names)} parameters, those the data "
+                     "determine best against the population prior\n  (the others held at the base set); "
+                     "coefficient +- std error (data only) in prior standard deviations,\n  and the parameter "
+                     "changes per unit (the four largest against each parameter's population spread):")
+        for i, (cf, sd, sdd, load) in enumerate(zip(dirs["coefficients"], dirs["std_error"],
+                                                    dirs["std_error_data_only"], dirs["loadings"])):
+            big = sorted(range(len(load)), key=lambda j: -abs(load[j]) / dirs["prior_std"][j])[:4]
+            unit = dirs["units"]
+            terms = ", ".join(f"{res.names[j]} {load[j]:+.3g}{' deg' if dirs['names'][j] in unit else ''}"
+                              for j in big)
+            sd, sdd = ("inf" if v is None else f"{v:.3f}" for v in (sd, sdd))  # (None: not determined)
+            lines.append(f"  direction_{i + 1} {cf:+.3f} +- {sd} ({sdd}): {terms}")
+        lines.append(f"the data determine {idf.effective_parameters:.1f} of the {dirs['count']} free directions "
+                     f"(effective number; the other {len(res.names) - dirs['count']} held at the base set)")
+    elif idf.effective_parameters is not None:
+        lines.append(f"the data determine {idf.effective_parameters:.1f} of the {len(res.names)} parameters' "
+                     "directions (effective number; the prior holds the others near the base set)")
+    return lines
+
+
+def _fit_lines(res, max_residuals: int) -> list[str]:
+    """report_text's correlations, singular values, largest residuals, cost, the stall blend's
+    continuation and the warnings."""
+    idf = res.identifiability
+    data_only = idf.std_error_data is not None
+    dirs = res.extra.get("directions")
+    lines = []
+    if sum(not np.isnan(v) for v in idf.std_error) > 1:
+        free = [k for k in range(len(res.names)) if not np.isnan(idf.std_error[k])]  # (held at a bound: none)
+        said = " (data and prior together)" if data_only or dirs else ""
+        lines.append(f"correlation{said}: " + "; ".join(
+            f"{res.names[i]}-{res.names[j]} {idf.correlation[i, j]:+.2f}"
+            for a, i in enumerate(free) for j in free[a + 1:]))
+    label = ("the free directions' Jacobian" if dirs else "scaled Jacobian (data and prior rows, as fitted)"
+             if data_only else "scaled Jacobian")
+    lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
+    level = res.extra.get("kind") in ("level_flight", "flight")
+    unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
+    r = res.residuals
+    order = np.argsort(-np.abs(r))[:max_residuals]
+    shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
+    labels = res.extra.get("residual_labels")  # (load fits: each residual's quantity, group and point)
+    lines.append(f"residuals{unit}{shown}: " + ", ".join(
+        f"#{i} {r[i]:+.3g}" + (f" ({labels[i]})" if labels is not None and i < len(labels) else "")
+        for i in order))
+    u = " N" if level else " [-]"
+    lines.append(f"rms residual {np.sqrt(np.mean(r ** 2)):.4g}{u}; {res.nfev} evaluations "
+                 f"({res.n_model_points} rotor points) in {res.elapsed_s:.2f} s; {len(res.starts)} start(s)")
+    eff = res.extra.get("M_effect")
+    if eff:
+        lines.append(f"stall-blend smoothing: fitted with M = {eff['M_fit']:g}; the same parameters give rms "
+                     f"residual {eff['rms_residual_at_M_fit']:.4g} at M = {eff['M_fit']:g} and "
+                     f"{eff['rms_residual_at_M_base']:.4g} at M = {eff['M_base']:g} (the base value)")
+    cont = res.extra.get("M_continuation")
+    if cont:
+        lines.append(f"continuation in M: fitted at M = {cont['M_first']:g} (rms residual "
+                     f"{cont['rms_residual_first']:.4g}{u}), then at M = {cont['M_final']:g} from there")
+    lines.extend(f"WARNING: {w}" for w in res.warnings)
+    lines.extend(f"WARNING: {w}" for w in idf.warnings)
+    return lines
 
 
 def _scale_of(name: str) -> float:
