@@ -220,7 +220,7 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
     """``validate SOURCE... --prop P``: a parameter set against the user's own load files."""
     from ..core.solver import SolverError
     from ..validation import load_errors
-    from ._sources import data_digest, file_air, file_digests, read_sources
+    from ._sources import file_air, read_sources
 
     params, air, label = load_params(params_spec, prop_spec, option="--params")
     air = resolve_air(air, air_choice)
@@ -245,9 +245,23 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         raise InputError(f"SOURCE: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    # which groups the parameter file's fit saw or held out (its [coverage] table), where it was fitted to this data
-    from ..io.params_file import set_coverage
+    in_fit, every = _in_fit(label, params_spec, sources, data, prop, what)
+    if as_json:
+        echo_json({**e, "in_fit": in_fit, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
+                   "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
+                   "speed_of_sound": air.speed_of_sound})
+        return
+    _print_errors(e, in_fit, every, what, prop, label, air)
 
+
+def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[dict, list[str]]:
+    """validate's in-sample labels: (group -> "fitted" or "held out" for the groups the parameter
+    file's fit saw, by its [coverage] table and the files' contents, or the catalogue's calibration
+    did; the data's groups in order)."""
+    from ..io.params_file import set_coverage
+    from ._sources import data_digest, file_digests
+
+    # which groups the parameter file's fit saw or held out (its [coverage] table), where it was fitted to this data
     cov = (set_coverage(label) or {}) if params_spec is not None else {}
     in_fit = {}
     seen = set(cov.get("held_out", ())) | set(cov.get("groups", ()))
@@ -281,11 +295,12 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         # (by content: another day's file of the same name once read as this fit's data; a file written before
         # 2026-11-26 has the name and the files' joint digest only)
         in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in every if g in seen}
-    if as_json:
-        echo_json({**e, "in_fit": in_fit, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
-                   "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
-                   "speed_of_sound": air.speed_of_sound})
-        return
+    return in_fit, every
+
+
+def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, label: str, air) -> None:
+    """validate's table of the coefficients' errors (all points, by group, by state), with the
+    groups' in-sample labels and the rms errors in SI."""
     keys = list(e["overall"])
     click.echo(f"{what} ({e['n_points']} points) against {prop.name} ({prop.n_blades} blades, D = "
                f"{prop.diameter:.4g} m), params {label}; air {air_label(air)}")
