@@ -427,9 +427,9 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
 
         _run_fit(jackknife_loads, res, train, prop, base=base, air=air, quantities=qty, options=options)
     if entry is not None:
-        extra, figure = _catalogue_holdout(res, entry, prop, base, base_label, held, air, label)
+        extra, figure = _catalogue_comparison(res, entry, prop, base, base_label, held, air, label)
     else:
-        extra, figure = _file_holdout(res, data, prop, base, base_label, held, air, label)
+        extra, figure = _file_comparison(res, data, prop, base, base_label, held, air, label)
     files = file_digests(sources)  # (each file read once for both digests)
     coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources, files),
                 "files_sha256": files,
@@ -444,7 +444,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                    data_warnings=data_warnings)
 
 
-def _catalogue_holdout(res, entry, prop, base, base_label: str, held, air, label: str):
+def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, label: str):
     """fit loads of a catalogue propeller: (the held-out runs' CT and CP rmse line, fitted
     against the base set and the hover model, or ""; the figure's writer, the fit against the
     catalogue's runs), the comparison stored in ``res.extra["holdout"]``."""
@@ -469,7 +469,7 @@ def _catalogue_holdout(res, entry, prop, base, base_label: str, held, air, label
     return extra, figure
 
 
-def _file_holdout(res, data, prop, base, base_label: str, held, air, label: str):
+def _file_comparison(res, data, prop, base, base_label: str, held, air, label: str):
     """fit loads of a file's data: (the held-out groups' rmse line, fitted and base set, or "";
     the parity figure's writer), the rmse stored in ``res.extra["holdout"]``, a warning where the
     fitted set predicts the held-out groups 25% or more worse than the base set."""

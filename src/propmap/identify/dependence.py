@@ -134,8 +134,8 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
         ``by``, ``groups``, ``std_error`` and ``ci95`` (estimate +- Student's t with g - 1
         degrees of freedom times it) per parameter, keyed and in units as the report's (an
         angle's as ``alpha_L0_deg``, in deg: :func:`~propmap.identify.options.report_name`), and
-        ``ratio`` to the linearised std error (None where that is not finite), ``band`` (the
-        95% band of the std error itself as multiples of it, from g - 1 degrees of freedom:
+        ``ratio`` to the linearised std error (None where that is not finite), ``band`` ([low,
+        high]: the 95% band of the std error itself as multiples of it, g - 1 degrees of freedom:
         sqrt((g - 1) / chi2_0.975) to sqrt((g - 1) / chi2_0.025)), ``at_bound`` (group ->
         parameters at a bound in the fit without it, where any). The report
         (``FitResult.report_text``, ``to_dict``) shows it where ``result.extra["jackknife"]``
