@@ -277,3 +277,26 @@ def test_section_parameters_are_not_fitted_for_rotors_that_carry_their_own_sets(
         fit_flight(s, own, options=FitOptions(names=("collective", "drag_area_x"), prior=False), discretization=COARSE)
     res = fit_flight(s, own, options=FitOptions(names=("drag_area_x",), prior=False), discretization=COARSE)
     assert res.names == ("drag_area_x",)
+
+
+def test_a_unit_slip_search_at_rates_the_model_cannot_solve_still_names_the_slip(monkeypatch):
+    """The unit-slip search of sanity_check tries the data's rates divided by 2-14 pole pairs; where the model
+    gives no finite load at such a rate (on_failure="flag": NaN), that count is skipped. Until 2026-11-29 the
+    pole-pair search raised ValueError (max() of an empty sequence) there instead of refusing the data with its
+    factor (found by a review of the refactor that shared the five searches' test). Loads 10x the generic
+    set's, the solver made to fail below 2500 rpm."""
+    import propmap.core.solver as solver
+
+    prop = pm.load_propeller("apce_8x6")
+    data = _loads(prop, [3000, 4000, 5000, 6000, 7000, 8000], f_thrust=10.0, f_torque=10.0)
+    real = solver.rotor_loads
+
+    def failing_below_2500_rpm(prop, params, omega, *args, **kwargs):
+        r = real(prop, params, omega, *args, **kwargs)
+        if np.max(omega) < 2500 * math.pi / 30:
+            r = replace(r, thrust=np.full_like(r.thrust, np.nan), torque=np.full_like(r.torque, np.nan))
+        return r
+
+    monkeypatch.setattr(solver, "rotor_loads", failing_below_2500_rpm)
+    with pytest.raises(DataError, match=r"the measured thrust 10 times; torque 10 times what the model predicts"):
+        sanity_check(data, prop)
