@@ -4,6 +4,7 @@ names the hand-made mutant it kills (the audit's report lists those the earlier 
 
 import dataclasses
 import hashlib
+from collections import deque
 import math
 from pathlib import Path
 
@@ -47,6 +48,17 @@ def test_a_bool_among_ints_is_refused_not_read_as_one():
     a rotation rate of 1 rad/s)."""
     with pytest.raises(ValueError, match=r"LoadData\.omega must be numbers, got \[500, True, 700\]"):
         _load_data(omega=[500, True, 700])
+
+
+def test_a_bool_in_a_deque_is_refused():
+    """A bool in a sequence other than a list, tuple or array (a collections.deque, which NumPy unpacks
+    like a list) was read as 1.0 until 2026-11-29 (has_bool looked into lists, tuples and arrays only;
+    found by this audit): a point at 1 rad/s. The same for rotor_loads, whose inputs share the rule."""
+    with pytest.raises(ValueError, match=r"LoadData\.omega must be numbers, got deque\(\[500\.0, True, 700\.0\]\)"):
+        _load_data(omega=deque([500.0, True, 700.0]))
+    with pytest.raises(ValueError, match="omega must be a number or an array of numbers, got deque"):
+        pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.generic_params(), deque([800.0, True]), 0.0, 0.0)
+    assert _load_data(omega=deque([500.0, 600.0, 700.0])).omega.tolist() == [500.0, 600.0, 700.0]
 
 
 def test_an_int_beyond_the_float_range_is_refused_as_not_numbers():

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import numbers
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -52,20 +53,27 @@ def refuse_masked(name: str, value) -> None:
                          "the points to compute, e.g. its .compressed()")
 
 
+def _sequence(value) -> bool:
+    """A sequence NumPy unpacks into an array's elements: a list, a tuple or any other
+    ``collections.abc.Sequence`` (a deque, a range), not a string."""
+    return isinstance(value, (list, tuple)) or (isinstance(value, Sequence) and not isinstance(value, (str, bytes)))
+
+
 def has_bool(value) -> bool:
-    """Whether a (nested) list or tuple, or an object array, holds a bool or a boolean array
-    (NumPy would read it as 0 or 1, so that ``[800.0, True]`` became a rotation rate of 1
-    rad/s): the array inputs refuse it. A list is scanned by the types of its items (20 ms for
-    10^6 floats), descending only into the lists, tuples and arrays among them."""
+    """Whether a (nested) list, tuple or other sequence, or an object array, holds a bool or a
+    boolean array (NumPy would read it as 0 or 1, so that ``[800.0, True]`` became a rotation
+    rate of 1 rad/s): the array inputs refuse it. A list is scanned by the types of its items
+    (20 ms for 10^6 floats), descending only into the sequences and arrays among them. (A
+    ``collections.deque`` was not looked into until 2026-11-29: a mutation audit.)"""
     if isinstance(value, np.ndarray):
         return value.dtype.kind == "b" or (value.dtype.kind == "O" and any(has_bool(v) for v in value.flat))
-    if isinstance(value, (list, tuple)):
+    if _sequence(value):
         types = set(map(type, value))
         if bool in types or np.bool_ in types:
             return True
         if all(t in (float, int, np.float64, np.int64) for t in types):  # the common case: plain numbers
             return False
-        return any(has_bool(v) for v in value if isinstance(v, (list, tuple, np.ndarray)))
+        return any(has_bool(v) for v in value if _sequence(v) or isinstance(v, np.ndarray))
     return isinstance(value, (bool, np.bool_))
 
 
