@@ -293,7 +293,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                                       [f["log"] for f in cv["folds"]],
                                                       [f["at_bound"] for f in cv["folds"]])
     res.extra["flight_report"] = report
-    text = _report_lines(samples, len(logs), names, held, train.n, rows, report, reference_masses, veh.mass)
+    text = _report_lines(samples, names, held, train.n, rows, report, reference_masses, veh.mass)
     ht = report["hover_torque"]
     if ht and "unavailable" in ht:
         from dataclasses import replace
@@ -334,8 +334,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 
 
-def _report_lines(samples, n_logs: int, names, held, n_train: int, rows, report: dict, reference_masses,
-                  mass: float) -> list[str]:
+def _report_lines(samples, names, held, n_train: int, rows, report: dict, reference_masses, mass: float) -> list[str]:
     """fit flight's printed report: the samples and logs fitted, the error table (``rows``), the
     logs' own references, the training error by speed band, the hover torque against the
     thrust-stand-calibrated generic set, and leave-one-log-out where it ran."""
@@ -343,7 +342,7 @@ def _report_lines(samples, n_logs: int, names, held, n_train: int, rows, report:
 
     # each log's samples' own rate (1 / their median step; a log left with one sample has none)
     rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
-                    for t in (samples.t[samples.log_index == k] for k in range(n_logs)) if t.size > 1}) or [
+                    for t in (samples.t[samples.log_index == k] for k in range(len(names))) if t.size > 1}) or [
                         samples.rate_hz]
     rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
     text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
