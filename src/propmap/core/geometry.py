@@ -67,6 +67,8 @@ def has_bool(value) -> bool:
     ``collections.deque`` was not looked into until 2026-11-29: a mutation audit.)"""
     if isinstance(value, np.ndarray):
         return value.dtype.kind == "b" or (value.dtype.kind == "O" and any(has_bool(v) for v in value.flat))
+    if isinstance(value, (float, int, np.generic)):  # a number (or bool), before the sequence test (an ABC's, slower)
+        return isinstance(value, (bool, np.bool_))
     if _sequence(value):
         types = set(map(type, value))
         if bool in types or np.bool_ in types:
@@ -74,7 +76,7 @@ def has_bool(value) -> bool:
         if all(t in (float, int, np.float64, np.int64) for t in types):  # the common case: plain numbers
             return False
         return any(has_bool(v) for v in value if _sequence(v) or isinstance(v, np.ndarray))
-    return isinstance(value, (bool, np.bool_))
+    return False
 
 
 def broadcast_readonly(*arrays: np.ndarray) -> list[np.ndarray]:
