@@ -250,6 +250,42 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
     base = base or generic_params()
     air = model_air(base, air, name="base")
+    names = _flight_names(samples, vehicle, base, options)
+    if moments and samples.moment is None:
+        raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
+    body0 = body or vehicle.body_drag or BodyDrag()
+    model = _FlightModel(samples, vehicle, base, names, body0, air, moments, discretization,
+                         implicit=options.jacobian == "implicit")
+    x0 = _x0(names, options, base, _start_values(vehicle, base, names, body0))
+    make_residual, prior = _with_prior(model.make_residual, names, base, options, scale=vehicle.weight)
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit flight",
+                                                                    x0)
+    # (_m_effect: what a smoother --M cost, as loads and level flight say)
+    extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
+             "centre_of_mass": None, "rotor_interference": None, "moments_fitted": bool(moments),
+             "moment_arm_m": model.arm, "discretization": [discretization.n_radial, discretization.n_azimuth],
+             "body_drag": None, **extra, **_m_effect(model.make_residual, best, base, options)}
+    if prior:
+        extra["prior"] = prior
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
+                     air, extra)
+    # the airframe's terms as reported: an effect that ended at its absence is 0, not the optimiser's 1e-14 (which
+    # reached the parameter file's [body] while the report said 0: a structural review)
+    fitted_body = _body_from(result.x, names, body0)
+    result.extra.update(
+        centre_of_mass=model.centre_of_mass(result.x),
+        rotor_interference=model.vehicle_at(result.x).rotor_interference,
+        body_drag={"drag_area": list(fitted_body.drag_area), "wash_factor": fitted_body.wash_factor})
+    # the force residuals' dependence from sample to sample within each log (the std errors assume none), in runs of
+    # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(
+        result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
+    return result
+
+
+def _flight_names(samples: FlightSamples, vehicle: Vehicle, base: SectionParams, options: FitOptions) -> list[str]:
+    """The fitted names (``options.names`` checked, or the default), refused where the samples are
+    too few for them or where a rotor's own parameter set would not see the section's."""
     _check_lift_model(base, options)
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
@@ -263,96 +299,92 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         raise ValueError(f"rotor(s) {', '.join(map(str, own))} of the vehicle carry their own parameter sets, which "
                          "the fitted section parameters would not reach: fit_flight fits one set for every rotor "
                          "(build the vehicle without the rotors' params)")
-    body0 = body or vehicle.body_drag or BodyDrag()
+    return names
+
+
+def _start_values(vehicle: Vehicle, base: SectionParams, names, body0: BodyDrag) -> dict:
+    """Where each fitted name starts: the airframe's and the vehicle's values, then the base's."""
     # airframe terms start small but non-zero, so that every column of the Jacobian is alive
     start = {"drag_area_x": max(body0.drag_area[0], 1e-3), "drag_area_y": max(body0.drag_area[1], 1e-3),
-             "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0}
-    if moments and samples.moment is None:
-        raise ValueError("moments: the samples have no measured moment (the vehicle file needs its inertia)")
-    start.update(cg_x=float(vehicle.centre_of_mass[0]), cg_y=float(vehicle.centre_of_mass[1]),
-                 rotor_interference=vehicle.rotor_interference or 1.0)
+             "drag_area_z": max(body0.drag_area[2], 1e-3), "wash_factor": body0.wash_factor or 1.0,
+             "cg_x": float(vehicle.centre_of_mass[0]), "cg_y": float(vehicle.centre_of_mass[1]),
+             "rotor_interference": vehicle.rotor_interference or 1.0}
     # every section parameter starts at the base's (the paper's model too: --base is the start, as documented)
     start.update({n: getattr(base, n) for n in names if n not in start and n != "flap_compliance" and hasattr(base, n)})
-    x0 = _x0(names, options, base, start)
-    measured = samples.force
-    arm = _mean_arm(vehicle)
-    cg_idx = [names.index(n) if n in names else None for n in CG_NAMES]
-    x0_cg = [float(c) for c in vehicle.centre_of_mass[:2]]
-    k_int = names.index("rotor_interference") if "rotor_interference" in names else None
+    return start
 
-    def vehicle_at(x) -> Vehicle:
-        veh = shift_centre_of_mass(vehicle, [c0 if k is None else x[k] for k, c0 in zip(cg_idx, x0_cg)])
-        return veh if k_int is None else replace(veh, rotor_interference=float(x[k_int]))
 
-    section = [n for n in names if n not in AIRFRAME_NAMES]
-    implicit = (options.jacobian == "implicit" and k_int is None and vehicle.rotor_interference == 0
-                and differentiable(base, section) and not any(r.params is not None for r in vehicle.rotors))
+class _FlightModel:
+    """The flight fit's model of the samples: the vehicle at a parameter vector (its centre of
+    mass and rotor interference), and the residual (force, then moment / arm, errors) with, where
+    the implicit derivatives reach every name, its Jacobian from the same model call."""
 
-    def make_residual(opts):
-        def errors(w):  # the force (and moment) errors of a prediction
-            r = (w.force - measured).ravel()
-            if moments:
-                r = np.concatenate([r, ((w.moment - samples.moment) / arm).ravel()])
-            return r
+    def __init__(self, samples: FlightSamples, vehicle: Vehicle, base: SectionParams, names, body0: BodyDrag,
+                 air: Air, moments: bool, discretization: Discretization, *, implicit: bool):
+        self.samples, self.vehicle, self.base, self.names = samples, vehicle, base, names
+        self.body0, self.air, self.moments, self.discretization = body0, air, moments, discretization
+        self.arm = _mean_arm(vehicle)
+        self.cg_idx = [names.index(n) if n in names else None for n in CG_NAMES]
+        self.x0_cg = [float(c) for c in vehicle.centre_of_mass[:2]]
+        self.k_int = names.index("rotor_interference") if "rotor_interference" in names else None
+        section = [n for n in names if n not in AIRFRAME_NAMES]
+        self.implicit = (implicit and self.k_int is None and vehicle.rotor_interference == 0
+                         and differentiable(base, section) and not any(r.params is not None for r in vehicle.rotors))
+
+    def centre_of_mass(self, x) -> list[float]:
+        """The centre of mass in the rotor plane at ``x`` [m]: the fitted offsets, else the vehicle's."""
+        return [c0 if k is None else float(x[k]) for k, c0 in zip(self.cg_idx, self.x0_cg)]
+
+    def vehicle_at(self, x) -> Vehicle:
+        """The vehicle with the centre of mass and the rotor interference at ``x``."""
+        veh = shift_centre_of_mass(self.vehicle, self.centre_of_mass(x))
+        return veh if self.k_int is None else replace(veh, rotor_interference=float(x[self.k_int]))
+
+    def errors(self, w: VehicleWrench) -> np.ndarray:
+        """The force (and moment / arm) errors of a prediction, flattened [N]."""
+        r = (w.force - self.samples.force).ravel()
+        if self.moments:
+            r = np.concatenate([r, ((w.moment - self.samples.moment) / self.arm).ravel()])
+        return r
+
+    def make_residual(self, opts):
+        """The residual at the parameter vector (the engine's ``make_residual``)."""
+        names = self.names
 
         def residual(x, opts=opts):
-            p = _params_from(x, names, base, opts)
-            b = _body_from(x, names, body0)
-            return errors(predict_flight(samples, vehicle_at(x), p, body=b, air=air, discretization=discretization))
+            p = _params_from(x, names, self.base, opts)
+            w = predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, names, self.body0), air=self.air,
+                               discretization=self.discretization)
+            return self.errors(w)
 
-        def with_jacobian(x):
-            """The residual and its Jacobian from one model call: vehicle_wrench's implicit
-            derivatives for the section and airframe terms and, through the hub velocities'
-            and the arms' chain rule, the centre of mass ("centre_of_mass")."""
-            x = np.asarray(x, float)
-            wrt = [n for n in names if n not in CG_NAMES]
-            if any(n in CG_NAMES for n in names):
-                wrt.append("centre_of_mass")
-            p = _params_from(x, names, base, opts)
-            w = predict_flight(samples, vehicle_at(x), p, body=_body_from(x, names, body0), air=air,
-                               discretization=discretization, derivatives=wrt)
-            r = errors(w)
-            cols = []
-            for n in names:
-                if n in CG_NAMES:
-                    k = CG_NAMES.index(n)
-                    force, moment = (w.jacobian[(key, "centre_of_mass")][:, :, k] for key in ("force", "moment"))
-                else:
-                    force, moment = w.jacobian[("force", n)], w.jacobian[("moment", n)]
-                c = force.ravel()
-                if moments:
-                    c = np.concatenate([c, (moment / arm).ravel()])
-                cols.append(c)
-            return r, np.column_stack(cols)
-
-        if implicit:
-            _attach_jacobian(residual, with_jacobian)
+        if self.implicit:
+            _attach_jacobian(residual, lambda x: self._with_jacobian(x, opts))
         return residual
 
-    make_data = make_residual
-    make_residual, prior = _with_prior(make_data, names, base, options, scale=vehicle.weight)
-    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options, "fit flight",
-                                                                    x0)
-    extra = {"kind": "flight", "n_samples": samples.n, "logs": list(samples.log_names), "rate_hz": samples.rate_hz,
-             "centre_of_mass": None, "rotor_interference": None, "moments_fitted": bool(moments), "moment_arm_m": arm,
-             "discretization": [discretization.n_radial, discretization.n_azimuth], "body_drag": None, **extra,
-             **_m_effect(make_data, best, base, options)}  # (what a smoother --M cost: loads and level flight said)
-    if prior:
-        extra["prior"] = prior
-    result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * samples.n * len(vehicle.rotors),
-                     air, extra)
-    # the airframe's terms as reported: an effect that ended at its absence is 0, not the optimiser's 1e-14 (which
-    # reached the parameter file's [body] while the report said 0: a structural review)
-    fitted_body = _body_from(result.x, names, body0)
-    result.extra.update(
-        centre_of_mass=[c0 if k is None else float(result.x[k]) for k, c0 in zip(cg_idx, x0_cg)],
-        rotor_interference=vehicle_at(result.x).rotor_interference,
-        body_drag={"drag_area": list(fitted_body.drag_area), "wash_factor": fitted_body.wash_factor})
-    # the force residuals' dependence from sample to sample within each log (the std errors assume none), in runs of
-    # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
-    result.extra["residual_autocorrelation"] = lag1_autocorrelation(
-        result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
-    return result
+    def _with_jacobian(self, x, opts):
+        """The residual and its Jacobian from one model call: vehicle_wrench's implicit
+        derivatives for the section and airframe terms and, through the hub velocities'
+        and the arms' chain rule, the centre of mass ("centre_of_mass")."""
+        x = np.asarray(x, float)
+        names = self.names
+        wrt = [n for n in names if n not in CG_NAMES]
+        if any(n in CG_NAMES for n in names):
+            wrt.append("centre_of_mass")
+        p = _params_from(x, names, self.base, opts)
+        w = predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, names, self.body0), air=self.air,
+                           discretization=self.discretization, derivatives=wrt)
+        cols = []
+        for n in names:
+            if n in CG_NAMES:
+                k = CG_NAMES.index(n)
+                force, moment = (w.jacobian[(key, "centre_of_mass")][:, :, k] for key in ("force", "moment"))
+            else:
+                force, moment = w.jacobian[("force", n)], w.jacobian[("moment", n)]
+            c = force.ravel()
+            if self.moments:
+                c = np.concatenate([c, (moment / self.arm).ravel()])
+            cols.append(c)
+        return self.errors(w), np.column_stack(cols)
 
 
 def _consecutive_runs(samples: FlightSamples) -> np.ndarray:
