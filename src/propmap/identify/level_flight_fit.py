@@ -170,6 +170,36 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
 
     base = base or preset("gill2017-apc")
     air = model_air(base, air, name="base")
+    names = _level_flight_names(data, vehicle, base, options)
+    make_data = _level_flight_residual(data, vehicle, names, base, air)
+    make_residual, prior = _with_prior(make_data, names, base, options, scale=vehicle.weight)
+    x0 = _x0(names, options, base) if start is None else np.asarray(start, float)
+    without = None
+    no_body = replace(options, body_lift=False, progress=False, names=names[:-3])
+    if options.body_lift:
+        # the model without body lift first; the full fit starts from its optimum with
+        # zero body lift (BODY_X0), so that it can only improve on it (nested models)
+        without = fit_level_flight(data, vehicle, base=base, air=air, options=no_body,
+                                   start=None if start is None else x0[:-3])
+        x0 = np.concatenate([without.x, BODY_X0])
+    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
+                                                                    "fit level-flight", x0)
+    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight, **extra,
+             **_m_effect(make_data, best, base, options)}
+    if prior:
+        extra["prior"] = prior
+    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
+                     nfev * data.n * len(vehicle.rotors), air, extra)
+    # the residuals' dependence from condition to condition, in the data's order (the std errors assume none; load and
+    # flight fits report it since 2026-11-27, this fit did not: a structural review)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(result.residuals[:data.n], np.zeros(data.n))
+    if options.body_lift:
+        return _select_body_lift(result, best, without, data, vehicle, base, air, no_body, (nfev, elapsed))
+    return result
+
+
+def _level_flight_names(data: LevelFlightData, vehicle: Vehicle, base: SectionParams, options: FitOptions):
+    """The fitted names (the body-lift terms last), refused where the data cannot identify them."""
     names = _default_names(base, options)
     if options.body_lift:
         if vehicle.body_area <= 0:
@@ -180,6 +210,12 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     n_rot = len(vehicle.rotors)
     if data.omega.shape[1] != n_rot:
         raise ValueError(f"data.omega has {data.omega.shape[1]} rotor columns; the vehicle has {n_rot} rotors")
+    return names
+
+
+def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base: SectionParams, air: Air):
+    """The engine's ``make_residual`` of eq 17: the vertical force balance per condition [N], with
+    the implicit Jacobian where the section's derivatives reach every name."""
 
     def make_residual(opts):
         def errors(f, x, p):  # the vertical force balance (eq 16) of the model's forces f
@@ -222,64 +258,49 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
             _attach_jacobian(residual, with_jacobian)
         return residual
 
-    make_data = make_residual
-    make_residual, prior = _with_prior(make_residual, names, base, options, scale=vehicle.weight)
-    x0 = _x0(names, options, base) if start is None else np.asarray(start, float)
-    without = None
-    no_body = replace(options, body_lift=False, progress=False, names=names[:-3])
-    if options.body_lift:
-        # the model without body lift first; the full fit starts from its optimum with
-        # zero body lift (BODY_X0), so that it can only improve on it (nested models)
-        without = fit_level_flight(data, vehicle, base=base, air=air, options=no_body,
-                                   start=None if start is None else x0[:-3])
-        x0 = np.concatenate([without.x, BODY_X0])
-    best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
-                                                                    "fit level-flight", x0)
-    extra = {"kind": "level_flight", "n_conditions": data.n, "weight_N": vehicle.weight, **extra,
-             **_m_effect(make_data, best, base, options)}
-    if prior:
-        extra["prior"] = prior
-    result = _finish(names, base, options, best, log, nfev, elapsed, warns,
-                     nfev * data.n * n_rot, air, extra)
-    # the residuals' dependence from condition to condition, in the data's order (the std errors assume none; load and
-    # flight fits report it since 2026-11-27, this fit did not: a structural review)
-    result.extra["residual_autocorrelation"] = lag1_autocorrelation(result.residuals[:data.n], np.zeros(data.n))
-    if options.body_lift:
-        M_used = result.params.M
-        L = body_lift(best.x[-3:], data, vehicle, M_used, air)
-        # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
-        # fitting noise would? (the paper's Sec. III-A check, made quantitative)
-        rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
-        if rss1 < (1 - 1e-6) * rss0:
-            # the full fit reached a better optimum of the section parameters than the fit without body lift
-            # (a local minimum of that one): the fit without it again from there, so that the test compares
-            # the body terms, not two optima of the section
-            again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
-            spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
-            # (the fit's own objective decides: with the population prior it is more than the data's residual)
-            better = _objective(again) < _objective(without)
-            without = replace(again if better else without, **spent)
-            rss0 = float(without.residuals @ without.residuals)
-        dof1 = data.n - len(names)
-        # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
-        # not run again from it; no evidence for body lift then)
-        F = max((rss0 - rss1) / 3, 0.0) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
-        from scipy import stats
+    return make_residual
 
-        p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")
-        matters = bool(p_value < 0.05)
-        verdict = {
-            "max_abs_N": float(np.max(np.abs(L))), "max_abs_over_weight": float(np.max(np.abs(L)) / vehicle.weight),
-            "rms_residual_with": float(np.sqrt(rss1 / data.n)), "rms_residual_without": float(np.sqrt(rss0 / data.n)),
-            "F": float(F), "p_value": p_value, "matters": matters,
-            "body_terms": {"cl1_body": float(best.x[-3]), "cl2_body": float(best.x[-2]),
-                           "alpha0_body_deg": math.degrees(best.x[-1])},
-        }
-        if not matters:
-            # the F-test selects the model without body lift: report and write that one
-            return replace(without, extra={**without.extra, "body_lift": {**verdict, "selected": "without"}},
-                           nfev=without.nfev + nfev, elapsed_s=without.elapsed_s + elapsed)
-        result.extra["body_lift"] = {**verdict, "selected": "with"}
+
+def _select_body_lift(result: FitResult, best, without: FitResult, data: LevelFlightData, vehicle: Vehicle,
+                      base: SectionParams, air: Air, no_body: FitOptions, spent: tuple[float, float]) -> FitResult:
+    """The paper's Sec. III-A check, made quantitative: a nested-model F-test of the three body-lift
+    terms; the fit with them (``result``) when they matter (p < 0.05), else the fit without them,
+    each with the verdict in ``extra["body_lift"]``. ``spent``: the full fit's (nfev, elapsed_s)."""
+    nfev, elapsed = spent
+    L = body_lift(best.x[-3:], data, vehicle, result.params.M, air)
+    # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
+    # fitting noise would? (the paper's Sec. III-A check, made quantitative)
+    rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
+    if rss1 < (1 - 1e-6) * rss0:
+        # the full fit reached a better optimum of the section parameters than the fit without body lift
+        # (a local minimum of that one): the fit without it again from there, so that the test compares
+        # the body terms, not two optima of the section
+        again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
+        spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
+        # (the fit's own objective decides: with the population prior it is more than the data's residual)
+        better = _objective(again) < _objective(without)
+        without = replace(again if better else without, **spent)
+        rss0 = float(without.residuals @ without.residuals)
+    dof1 = data.n - len(result.names)
+    # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
+    # not run again from it; no evidence for body lift then)
+    F = max((rss0 - rss1) / 3, 0.0) / (rss1 / dof1) if rss1 > 0 and dof1 > 0 else math.inf
+    from scipy import stats
+
+    p_value = float(stats.f.sf(F, 3, dof1)) if dof1 > 0 else float("nan")
+    matters = bool(p_value < 0.05)
+    verdict = {
+        "max_abs_N": float(np.max(np.abs(L))), "max_abs_over_weight": float(np.max(np.abs(L)) / vehicle.weight),
+        "rms_residual_with": float(np.sqrt(rss1 / data.n)), "rms_residual_without": float(np.sqrt(rss0 / data.n)),
+        "F": float(F), "p_value": p_value, "matters": matters,
+        "body_terms": {"cl1_body": float(best.x[-3]), "cl2_body": float(best.x[-2]),
+                       "alpha0_body_deg": math.degrees(best.x[-1])},
+    }
+    if not matters:
+        # the F-test selects the model without body lift: report and write that one
+        return replace(without, extra={**without.extra, "body_lift": {**verdict, "selected": "without"}},
+                       nfev=without.nfev + nfev, elapsed_s=without.elapsed_s + elapsed)
+    result.extra["body_lift"] = {**verdict, "selected": "with"}
     return result
 
 
