@@ -172,6 +172,66 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
             raise InputError(f"--check takes a map file only; {', '.join(extra)} {verb} not apply")
         return _check(check_file, check_points, as_json, parse_names("--props", only, what="propeller name"),
                       max_error_pct)
+    only = _check_options(ctx, prop, out, fmt, c_header, check_points, all_props, only, max_error_pct, plot)
+    inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
+    check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
+    veh = None
+    if c_header.vehicle is not None:
+        from ._vehicle import _fitted_vehicle
+
+        veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
+
+    import numpy as np
+
+    from ..maps import build_map, write_map
+
+    if all_props:
+        names, props = _catalogue(only)
+        # one grid for all: the default axes of the median diameter
+        median = props[int(np.argsort([p.diameter for p in props])[len(props) // 2])]
+        rpm, V, inc = _axes(median, axes, len(names))
+    else:
+        propeller = prop_choice.load(prop)
+        if veh is not None:  # refused before the build, not after it
+            _check_vehicle_rotors(veh, propeller)
+        params, air, label = load_params(params_spec, prop)
+        air = resolve_air(air, air_choice)
+        check_section_match(propeller, label, collective_deg or 0.0)
+        data_label = label  # (the set whose data coverage the envelope is checked against)
+        if collective_deg is not None:
+            params, label = _with_collective(params, label, collective_deg)
+        rpm, V, inc = _axes(propeller, axes)
+        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs) if plot.plot_dir is not None else []
+    t0 = time.perf_counter()
+    with _scheduler(scheduler) as client:
+        if all_props:
+            air_of = (lambda a: resolve_air(a, air_choice))
+            air_of(load_params("generic")[1])  # options checked before any work
+            with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client, air_of) as ds:
+                files = write_map(ds, out, fmt)
+        else:
+            # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
+            # after every input check, the scheduler's included (an error is the only line)
+            coverage_messages(propeller, data_label, air, *envelope_extremes(
+                propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
+                rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]))
+            ds = build_map(propeller, params, rpm * RPM, V, np.radians(inc), air=air, params_label=label,
+                           citation=catalogue_citation(prop), scheduler=client, progress=True, n_check=check_points)
+    elapsed = time.perf_counter() - t0
+    if not all_props:  # (the build time is reported, not stored: a map built twice is the same file, a review)
+        if fmt == "c":
+            files = _write_c_header(ds, out, c_header, veh)
+        else:
+            files = write_map(ds, out, fmt)
+        files += _plots(ds, plots)
+    _report(ds, files, elapsed, as_json, c_header.c_interpolation if fmt == "c" else None)
+
+
+def _check_options(ctx, prop, out, fmt, c_header: CHeaderChoice, check_points, all_props, only, max_error_pct,
+                   plot: PlotChoice):
+    """The refusals of a map build's options, before any input is read: which options go
+    together, --out's name for the format and the C prefix it makes. Returns ``--props`` read
+    (a tuple of names, or None)."""
     if max_error_pct is not None:
         raise InputError("--max-error-pct applies to --check")
     if all_props and prop:
@@ -208,90 +268,54 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     if out.suffix.lower() != FORMATS[fmt]:
         hint = f"--format {fmt}" if given(ctx, "fmt") else "or choose --format"
         raise InputError(f"--out: {out}: a {fmt} map is named *{FORMATS[fmt]} ({hint})")
-    inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
-    check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
-    veh = None
-    if c_header.vehicle is not None:
-        from ._vehicle import _fitted_vehicle
+    return only
 
-        veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
 
-    import numpy as np
+def _check_vehicle_rotors(veh, propeller) -> None:
+    """--vehicle with --format c: every rotor must carry the map's propeller (its geometry, not its
+    name: a geometry file read with other blades) and no parameter set of its own."""
+    for k, r in enumerate(veh.rotors):
+        if not r.propeller.same_geometry(propeller) or r.params is not None:
+            other = ("" if r.propeller.same_geometry(propeller) else ", another chord or blade angle" if
+                     propeller.same_size(r.propeller.diameter, r.propeller.n_blades, rtol=5e-5) else "")
+            own = " with its own parameters" if r.params is not None else ""
+            raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} "
+                             f"m, {r.propeller.n_blades} blades{other}){own}, not the map's "
+                             f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades)"
+                             f"{' and its set' if own else ''}: a C header holds one map and one set")
 
-    from ..maps import build_map, write_map
 
-    if all_props:
-        names, props = _catalogue(only)
-        # one grid for all: the default axes of the median diameter
-        median = props[int(np.argsort([p.diameter for p in props])[len(props) // 2])]
-        rpm, V, inc = _axes(median, axes, len(names))
-    else:
-        propeller = prop_choice.load(prop)
-        if veh is not None:  # refused before the build, not after it
-            for k, r in enumerate(veh.rotors):  # (the geometry, not the name: a geometry file read with other blades)
-                if not r.propeller.same_geometry(propeller) or r.params is not None:
-                    other = ("" if r.propeller.same_geometry(propeller) else ", another chord or blade angle" if
-                             propeller.same_size(r.propeller.diameter, r.propeller.n_blades, rtol=5e-5) else "")
-                    own = " with its own parameters" if r.params is not None else ""
-                    raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} "
-                                     f"m, {r.propeller.n_blades} blades{other}){own}, not the map's "
-                                     f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades)"
-                                     f"{' and its set' if own else ''}: a C header holds one map and one set")
-        params, air, label = load_params(params_spec, prop)
-        air = resolve_air(air, air_choice)
-        check_section_match(propeller, label, collective_deg or 0.0)
-        data_label = label  # (the set whose data coverage the envelope is checked against)
-        if collective_deg is not None:
-            from ..core.airfoil import COLLECTIVE_MAX
+def _with_collective(params, label: str, collective_deg: float):
+    """The parameter set with --collective-deg added to its own collective, checked against
+    [-30, 30] deg in sum, and its label saying so."""
+    from ..core.airfoil import COLLECTIVE_MAX
 
-            # (12 digits: 30 deg is degrees(COLLECTIVE_MAX) = 29.999999999999996, and must pass)
-            set_deg = set_collective_deg(params)
-            total = float(f"{set_deg + collective_deg:.12g}")
-            limit = float(f"{math.degrees(COLLECTIVE_MAX):.12g}")
-            if not (math.isfinite(collective_deg) and abs(total) <= limit):
-                raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus "
-                                 f"{collective_deg:g} deg must be within [-{limit:g}, {limit:g}] deg, got {total:.6g}")
-            params = params.replace(collective=math.radians(total))
-            label = f"{label} + collective {collective_deg:g} deg"
-        rpm, V, inc = _axes(propeller, axes)
-        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs) if plot.plot_dir is not None else []
-    t0 = time.perf_counter()
-    with _scheduler(scheduler) as client:
-        if all_props:
-            air_of = (lambda a: resolve_air(a, air_choice))
-            air_of(load_params("generic")[1])  # options checked before any work
-            with _catalogue_maps(out, names, props, rpm, V, inc, check_points, client, air_of) as ds:
-                files = write_map(ds, out, fmt)
-        else:
-            # the grid beyond the data behind the parameters (a fitted file's [coverage], a catalogue set's),
-            # after every input check, the scheduler's included (an error is the only line)
-            coverage_messages(propeller, data_label, air, *envelope_extremes(
-                propeller, rpm[:, None, None], V[None, :, None], inc[None, None, :]),
-                rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]))
-            ds = build_map(propeller, params, rpm * RPM, V, np.radians(inc), air=air, params_label=label,
-                           citation=catalogue_citation(prop), scheduler=client, progress=True, n_check=check_points)
-    elapsed = time.perf_counter() - t0
-    if not all_props:  # (the build time is reported, not stored: a map built twice is the same file, a review)
-        if fmt == "c":
-            from ..export_c import c_header_text
-            from ..io.mapfile import write_with_sidecar
-            from ..maps import RotorMap
+    # (12 digits: 30 deg is degrees(COLLECTIVE_MAX) = 29.999999999999996, and must pass)
+    set_deg = set_collective_deg(params)
+    total = float(f"{set_deg + collective_deg:.12g}")
+    limit = float(f"{math.degrees(COLLECTIVE_MAX):.12g}")
+    if not (math.isfinite(collective_deg) and abs(total) <= limit):
+        raise InputError(f"--collective-deg: the parameter set's collective {set_deg:g} deg plus "
+                         f"{collective_deg:g} deg must be within [-{limit:g}, {limit:g}] deg, got {total:.6g}")
+    return params.replace(collective=math.radians(total)), f"{label} + collective {collective_deg:g} deg"
 
-            try:
-                text = c_header_text(RotorMap(ds, c_header.c_interpolation), out, dtype=c_header.c_type,
-                                     name=c_header.c_name, vehicle=veh)
-            except ValueError as exc:
-                raise InputError(f"{'--vehicle' if veh is not None else '--format c'}: {exc}") from None
-            from ..export_c import c_prefix
 
-            # the sidecar describes the header: its interpolation, table type and identifiers' prefix
-            ds.attrs.update(c_interpolation=c_header.c_interpolation, c_type=c_header.c_type,
-                            c_prefix=c_prefix(out, c_header.c_name))
-            files = write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text, encoding="utf-8"))
-        else:
-            files = write_map(ds, out, fmt)
-        files += _plots(ds, plots)
-    _report(ds, files, elapsed, as_json, c_header.c_interpolation if fmt == "c" else None)
+def _write_c_header(ds, out: Path, c_header: CHeaderChoice, veh):
+    """Write the C99 header of the map (with the vehicle's body wrench when --vehicle is given)
+    and its sidecar; returns the files written."""
+    from ..export_c import c_header_text, c_prefix
+    from ..io.mapfile import write_with_sidecar
+    from ..maps import RotorMap
+
+    try:
+        text = c_header_text(RotorMap(ds, c_header.c_interpolation), out, dtype=c_header.c_type,
+                             name=c_header.c_name, vehicle=veh)
+    except ValueError as exc:
+        raise InputError(f"{'--vehicle' if veh is not None else '--format c'}: {exc}") from None
+    # the sidecar describes the header: its interpolation, table type and identifiers' prefix
+    ds.attrs.update(c_interpolation=c_header.c_interpolation, c_type=c_header.c_type,
+                    c_prefix=c_prefix(out, c_header.c_name))
+    return write_with_sidecar(ds, out, lambda tmp: tmp.write_text(text, encoding="utf-8"))
 
 
 def _axes(propeller, axes: MapAxes, n_props: int = 1):
