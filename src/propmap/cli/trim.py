@@ -48,51 +48,18 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
     thrust is returned (below stall, and in still air or climb, the only one); the output
     states the branch and how many solutions the search saw.
     """
-    from ..core.solver import SolverError
-    from ..core.trim import (TrimError, default_omega_bounds, torque_change_at_constant_thrust, trim_collective,
-                             trim_omega)
+    from ..core.trim import default_omega_bounds
 
     solve_rpm = rpm is None
-    check_point(RPM_MIN if solve_rpm else rpm, airspeed, incidence_deg)  # (no --rpm: the rate is solved below)
-    if not math.isfinite(thrust) or abs(thrust) > 1e5:
-        raise InputError(f"--thrust must be finite and in [-1e5, 1e5] N, got {thrust!r}")
-    if solve_rpm and range_deg is not None:
-        raise InputError("--range-deg: the collective is trimmed only at a given --rpm; without --rpm the rpm is "
-                         "trimmed (search range: --rpm-range)")
-    if not solve_rpm and rpm_range is not None:
-        raise InputError("--rpm-range: with --rpm the collective is trimmed (search range: --range-deg); leave "
-                         "--rpm out to trim the rpm")
-    lo, hi = range_deg if range_deg is not None else RANGE_DEG
-    if not (-COLLECTIVE_DEG_MAX <= lo < hi <= COLLECTIVE_DEG_MAX):
-        raise InputError(f"--range-deg must be two angles LOW < HIGH within [-{COLLECTIVE_DEG_MAX:g}, "
-                         f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
-    if rpm_range is not None and not (0 < rpm_range[0] < rpm_range[1] <= RPM_MAX):
-        raise InputError(f"--rpm-range must be two rates LOW < HIGH within (0, {RPM_MAX:.0f}] rpm, got "
-                         f"{rpm_range[0]!r} {rpm_range[1]!r}")
+    lo, hi = _check_options(thrust, rpm, airspeed, incidence_deg, range_deg, rpm_range)
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
     beta = math.radians(incidence_deg)
     bounds = (math.radians(lo), math.radians(hi))
-    try:
-        if solve_rpm:
-            res = trim_omega(propeller, params, thrust, airspeed, beta, air=air,
-                             bounds=None if rpm_range is None else (rpm_range[0] * RPM, rpm_range[1] * RPM))
-            omega, added = float(res.omega), 0.0
-        else:
-            omega = rpm * RPM
-            res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
-            added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
-        dcq = None
-        if hover_reference:
-            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
-                                                       collective=math.radians(added), air=air, bounds=bounds)
-            dcq = float(d)
-    except TrimError as exc:
-        raise InputError(f"--thrust: {exc}") from None
-    except SolverError as exc:
-        raise click.ClickException(str(exc)) from None
+    res, omega, added, dcq = _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds,
+                                   hover_reference)
     rpm = omega / RPM if solve_rpm else rpm
     coverage_messages(propeller, label, air, *envelope_extremes(propeller, rpm, airspeed, incidence_deg), rpm=rpm,
                       airspeed=airspeed)
@@ -111,30 +78,89 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
         echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
                    "diameter_m": propeller.diameter, "params": label, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "thrust_target": thrust, **searched,
-                   "air": {"rho": air.rho, "mu": air.mu,
-                                                           "speed_of_sound": air.speed_of_sound},
+                   "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {**{k: u for k, u in UNITS.items() if k in out}, "collective_deg": "deg",
                              "rpm": "rpm"}})
         return
+    _echo_text(propeller, label, air, out, searched, airspeed, incidence_deg, omega)
+
+
+def _check_options(thrust, rpm, airspeed, incidence_deg, range_deg, rpm_range) -> tuple[float, float]:
+    """The refusals of the trim's options, before any input is read; returns --range-deg's
+    (LOW, HIGH) [deg], the default where it is not given."""
+    solve_rpm = rpm is None
+    check_point(RPM_MIN if solve_rpm else rpm, airspeed, incidence_deg)  # (no --rpm: the rate is solved below)
+    if not math.isfinite(thrust) or abs(thrust) > 1e5:
+        raise InputError(f"--thrust must be finite and in [-1e5, 1e5] N, got {thrust!r}")
+    if solve_rpm and range_deg is not None:
+        raise InputError("--range-deg: the collective is trimmed only at a given --rpm; without --rpm the rpm is "
+                         "trimmed (search range: --rpm-range)")
+    if not solve_rpm and rpm_range is not None:
+        raise InputError("--rpm-range: with --rpm the collective is trimmed (search range: --range-deg); leave "
+                         "--rpm out to trim the rpm")
+    lo, hi = range_deg if range_deg is not None else RANGE_DEG
+    if not (-COLLECTIVE_DEG_MAX <= lo < hi <= COLLECTIVE_DEG_MAX):
+        raise InputError(f"--range-deg must be two angles LOW < HIGH within [-{COLLECTIVE_DEG_MAX:g}, "
+                         f"{COLLECTIVE_DEG_MAX:g}] deg, got {lo!r} {hi!r}")
+    if rpm_range is not None and not (0 < rpm_range[0] < rpm_range[1] <= RPM_MAX):
+        raise InputError(f"--rpm-range must be two rates LOW < HIGH within (0, {RPM_MAX:.0f}] rpm, got "
+                         f"{rpm_range[0]!r} {rpm_range[1]!r}")
+    return lo, hi
+
+
+def _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds, hover_reference):
+    """The trim: the rpm (no --rpm) or the collective that makes the thrust, and with
+    --hover-reference the torque change at constant thrust. Returns (result, omega [rad/s],
+    the collective added [deg], dCQ or None); an unreachable thrust is an InputError."""
+    from ..core.solver import SolverError
+    from ..core.trim import TrimError, torque_change_at_constant_thrust, trim_collective, trim_omega
+
+    solve_rpm = rpm is None
+    try:
+        if solve_rpm:
+            res = trim_omega(propeller, params, thrust, airspeed, beta, air=air,
+                             bounds=None if rpm_range is None else (rpm_range[0] * RPM, rpm_range[1] * RPM))
+            omega, added = float(res.omega), 0.0
+        else:
+            omega = rpm * RPM
+            res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
+            added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
+        dcq = None
+        if hover_reference:
+            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
+                                                       collective=math.radians(added), air=air, bounds=bounds)
+            dcq = float(d)
+    except TrimError as exc:
+        raise InputError(f"--thrust: {exc}") from None
+    except SolverError as exc:
+        raise click.ClickException(str(exc)) from None
+    return res, omega, added, dcq
+
+
+def _echo_text(propeller, label, air, out: dict, searched: dict, airspeed, incidence_deg, omega) -> None:
+    """The trim's text output, from its JSON fields ``out`` and the searched range."""
+    rpm, set_deg, added = out["rpm"], out["params_collective_deg"], out["added_collective_deg"]
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg "
                f"(params {label})")
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
-    if solve_rpm:
+    if out["solved_for"] == "rpm":
         a, b = searched["rpm_range"]
         click.echo(f"  {rpm:.1f} rpm ({omega:.4g} rad/s) makes T = {out['thrust']:.4f} N at collective "
-                   f"{set_deg:g} deg ({res.branch}; {out['solutions_seen']} solution(s) seen in [{a:.6g}, {b:.6g}] "
+                   f"{set_deg:g} deg ({out['branch']}; {out['solutions_seen']} solution(s) seen in [{a:.6g}, {b:.6g}] "
                    "rpm)")
     else:
         click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
                    + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
-                   + f"({res.branch}; {out['solutions_seen']} solution(s) seen in [{lo:g}, {hi:g}] deg added)")
+                   + f"({out['branch']}; {out['solutions_seen']} solution(s) seen in "
+                   f"[{searched['range_deg'][0]:g}, {searched['range_deg'][1]:g}] deg added)")
     click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
     click.echo(f"  drag D = {out['drag']:.4f} N  rolling moment M_R = {out['rolling_moment']:.5f} N m"
                + (f"  side force Y = {out['side_force']:.4f} N  pitching moment M_P = {out['pitching_moment']:.5f} N m"
                   if "side_force" in out else ""))
-    if dcq is not None:
-        click.echo(f"  dCQ at constant thrust (minus hover at the same T and rpm) = {dcq:.5f}")
+    if out["dCQ_constant_thrust"] is not None:
+        click.echo("  dCQ at constant thrust (minus hover at the same T and rpm) = "
+                   f"{out['dCQ_constant_thrust']:.5f}")
     ratios = (f" (v_i/v_h = {out['v_i_over_v_h']:.3f}, lambda2 = V_descent/v_h = "
               f"{round(out['lambda2'], 3) + 0.0:.3f})" if out["v_i_over_v_h"] is not None and out["lambda2"] is not None
               else "")  # (as loads says them; no "-0.000")
