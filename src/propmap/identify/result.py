@@ -234,7 +234,7 @@ class FitResult:
                          + _fit_lines(self, max_residuals))
 
 
-def _parameter_lines(res) -> list[str]:
+def _parameter_lines(res: FitResult) -> list[str]:
     """report_text's table of the estimates (std error, 95% interval, the data's own and the
     jackknife's std error where there are) and what the std errors include."""
     idf = res.identifiability
@@ -273,7 +273,7 @@ def _parameter_lines(res) -> list[str]:
     return lines
 
 
-def _dependence_lines(res) -> list[str]:
+def _dependence_lines(res: FitResult) -> list[str]:
     """report_text's lines on what the std errors miss: the residuals' lag-1
     autocorrelation where it is large, and the jackknife's spread between groups."""
     jk = res.extra.get("jackknife")
@@ -304,7 +304,7 @@ def _dependence_lines(res) -> list[str]:
     return lines
 
 
-def _directions_lines(res) -> list[str]:
+def _directions_lines(res: FitResult) -> list[str]:
     """report_text's free parameter directions (fit loads --directions) with their loadings,
     or the effective number of parameters the data determine."""
     idf = res.identifiability
@@ -331,7 +331,7 @@ def _directions_lines(res) -> list[str]:
     return lines
 
 
-def _fit_lines(res, max_residuals: int) -> list[str]:
+def _fit_lines(res: FitResult, max_residuals: int) -> list[str]:
     """report_text's correlations, singular values, largest residuals, cost, the stall blend's
     continuation and the warnings."""
     idf = res.identifiability
