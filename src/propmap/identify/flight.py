@@ -283,7 +283,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     return result
 
 
-def _flight_names(samples: FlightSamples, vehicle: Vehicle, base: SectionParams, options: FitOptions) -> list[str]:
+def _flight_names(samples: FlightSamples, vehicle: Vehicle, base: SectionParams,
+                  options: FitOptions) -> tuple[str, ...]:
     """The fitted names (``options.names`` checked, or the default), refused where the samples are
     too few for them or where a rotor's own parameter set would not see the section's."""
     _check_lift_model(base, options)

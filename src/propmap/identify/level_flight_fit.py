@@ -198,7 +198,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     return result
 
 
-def _level_flight_names(data: LevelFlightData, vehicle: Vehicle, base: SectionParams, options: FitOptions):
+def _level_flight_names(data: LevelFlightData, vehicle: Vehicle, base: SectionParams,
+                        options: FitOptions) -> tuple[str, ...]:
     """The fitted names (the body-lift terms last), refused where the data cannot identify them."""
     names = _default_names(base, options)
     if options.body_lift:
