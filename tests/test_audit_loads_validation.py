@@ -250,3 +250,53 @@ def test_cross_validate_fits_under_the_population_given(uiuc):
     assert cv["blind"]["rms_ct"] == pytest.approx(0.09518, abs=1e-4)
     for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp"):
         assert cv["static"][k] == pytest.approx(cv["blind"][k], abs=1e-4), k
+
+
+# --- a load not measured at a point (LoadData's NaN) ---------------------------------------------------------------
+
+def test_holdout_loads_leaves_a_load_not_measured_out_of_its_figure(made, apc8x6, apc_params):
+    """A defect the audit found (2026-11-29): a NaN in ``measured`` ("not measured at that point",
+    LoadData's convention, which load_errors follows) made holdout_loads' rms NaN. Exact data from
+    the set that made them, one held-out in-plane force not measured: every figure is ~0; measured
+    at no held-out point: None; static torque not measured: no normalisation, refused."""
+    om, V, b, r = made
+    drag = r.drag.copy()
+    drag[5] = np.nan
+    data = LoadData(om, V, b, {"thrust": r.thrust, "drag": drag, "torque": r.torque}, np.array(["a"] * 8))
+    e = holdout_loads(data, apc8x6, apc_params, [np.arange(8) < 4], names=("cd",))
+    assert e["n_points"] == 4
+    for k in ("rms_thrust", "rms_drag", "rms_torque"):
+        assert e[k] is not None and 0.0 <= e[k] < 1e-9, (k, e[k])
+    unmeasured = LoadData(om, V, b, {"thrust": r.thrust, "drag": np.where(np.arange(8) < 4, r.drag, np.nan),
+                                     "torque": r.torque}, np.array(["a"] * 8))
+    assert holdout_loads(unmeasured, apc8x6, apc_params, [np.arange(8) < 4], names=("cd",))["rms_drag"] is None
+    no_static_torque = LoadData(om, V, b, {"thrust": r.thrust, "drag": r.drag,
+                                           "torque": np.where(V == 0, np.nan, r.torque)}, np.array(["a"] * 8))
+    with pytest.raises(ValueError, match="static points with thrust and torque measured"):
+        holdout_loads(no_static_torque, apc8x6, apc_params, [np.arange(8) < 4], names=("cd",))
+
+
+def test_cross_validate_leaves_a_load_not_measured_out_as_coefficient_errors_does(uiuc):
+    """The same defect in cross_validate: one sweep torque not measured gave rms_cp NaN, where
+    coefficient_errors (which the blind protocol equals, docs/validation.md) leaves it out. A load
+    measured at no point (a thrust-only stand) gives None; one measured but at no static point
+    cannot be normalised and is refused."""
+    prop, data = uiuc["grcp_10x8"]
+    g = generic_params()
+    Q = data.measured["torque"].copy()
+    Q[np.flatnonzero(data.airspeed > 0)[0]] = np.nan
+    one = LoadData(data.omega, data.airspeed, data.incidence, {"thrust": data.measured["thrust"], "torque": Q},
+                   data.group)
+    cv = cross_validate(one, prop, g, protocols=("blind",), discretization=COARSE)["blind"]
+    ce = coefficient_errors(one, prop, g, mask=one.airspeed > 0, discretization=COARSE)
+    assert cv["n_points"] == ce["n_points"] == int(np.sum(data.airspeed > 0))
+    for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp"):
+        assert cv[k] is not None and math.isfinite(cv[k]) and cv[k] == pytest.approx(ce[k], rel=1e-12), k
+    thrust_only = LoadData(data.omega, data.airspeed, data.incidence, {"thrust": data.measured["thrust"]}, data.group)
+    ce = coefficient_errors(thrust_only, prop, g, mask=data.airspeed > 0, discretization=COARSE)
+    assert ce["rms_cp"] is None and ce["bias_cp"] is None and ce["rms_ct"] > 0.01
+    sweeps_only = LoadData(data.omega, data.airspeed, data.incidence,
+                           {"thrust": data.measured["thrust"], "torque": np.where(data.airspeed == 0, np.nan, Q)},
+                           data.group)
+    with pytest.raises(ValueError, match="no static point \\(airspeed 0\\) has torque measured"):
+        cross_validate(sweeps_only, prop, g, protocols=("blind",), discretization=COARSE)

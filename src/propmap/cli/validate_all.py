@@ -228,8 +228,8 @@ def run_incidence_fits() -> dict:
         return gill2019_incidence_fits()
 
 
-def _pct(x: float) -> str:
-    return f"{100 * x:5.1f}%"
+def _pct(x: float | None) -> str:
+    return "   n/a" if x is None else f"{100 * x:5.1f}%"  # (None: the load measured at no point scored)
 
 
 def print_report(cat: dict, cases: dict, incidence: dict | None = None) -> None:

@@ -36,6 +36,29 @@ def _coefficients(data, propeller: Propeller, air: Air):
     return CT, CP
 
 
+def _static_mean(C, static, what: str) -> float:
+    """The mean measured coefficient ``what`` of the static points where it was measured (NaN:
+    not measured there, LoadData's convention); NaN where it was measured at no point at all
+    (its errors are then None), an error where it was measured but at no static point."""
+    known = np.isfinite(C)
+    if not known.any():
+        return math.nan
+    if not np.any(known & static):
+        raise ValueError(f"no static point (airspeed 0) has {what} measured, to normalise its errors by")
+    return float(np.mean(C[known & static]))
+
+
+def _scores(dct, dcp) -> dict:
+    """rms and bias of the CT and CP errors over the points where each was measured (None where
+    none was)."""
+    out = {}
+    for q, e in (("ct", dct), ("cp", dcp)):
+        e = e[np.isfinite(e)]
+        out[f"rms_{q}"] = float(np.sqrt(np.mean(e**2))) if e.size else None
+        out[f"bias_{q}"] = float(np.mean(e)) if e.size else None
+    return {k: out[k] for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp")}
+
+
 def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air | None = None, mask=None,
                        discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """rms |dCT| / static CT and rms |dCP| / static CP of ``params`` on load data.
@@ -62,12 +85,14 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     -------
     dict
         ``rms_ct``, ``rms_cp`` [-], ``bias_ct``, ``bias_cp`` [-] (mean signed error over
-        the same normalisation), ``n_points``.
+        the same normalisation), ``n_points``. A load not measured at a point (NaN in
+        ``data.measured``) is left out of its figures; one measured at no point (torque of a
+        thrust-only stand) gives None.
 
     Raises
     ------
     ValueError
-        No static points, or the mask selects none.
+        No static points, a load measured but at no static point, or the mask selects none.
     SolverError
         From the model.
     """
@@ -76,16 +101,13 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     static = data.airspeed == 0
     if not static.any():
         raise ValueError("coefficient_errors needs static points (airspeed 0) to normalise by")
-    CT0, CP0 = float(np.nanmean(CT[static])), float(np.nanmean(CP[static]))
+    CT0, CP0 = _static_mean(CT, static, "thrust"), _static_mean(CP, static, "torque")
     m = np.ones(data.n, bool) if mask is None else np.asarray(mask, bool)
     if not m.any():
         raise ValueError("the mask selects no point")
     r = rotor_loads(propeller, params, data.omega[m], data.airspeed[m], data.incidence[m], air=air,
                     discretization=discretization)
-    dct = (r.CT - CT[m]) / CT0
-    dcp = (r.CP - CP[m]) / CP0
-    return {"rms_ct": float(np.sqrt(np.nanmean(dct**2))), "rms_cp": float(np.sqrt(np.nanmean(dcp**2))),
-            "bias_ct": float(np.nanmean(dct)), "bias_cp": float(np.nanmean(dcp)), "n_points": int(m.sum())}
+    return {**_scores((r.CT - CT[m]) / CT0, (r.CP - CP[m]) / CP0), "n_points": int(m.sum())}
 
 
 def rpm_groups(data) -> list[list[str]]:
@@ -164,12 +186,15 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     Returns
     -------
     dict
-        protocol -> ``{"rms_ct", "rms_cp", "bias_ct", "bias_cp", "n_points", "n_fits"}``.
+        protocol -> ``{"rms_ct", "rms_cp", "bias_ct", "bias_cp", "n_points", "n_fits"}``,
+        the errors as :func:`coefficient_errors` pools them (a load not measured at a point
+        left out; None for one measured at no point).
 
     Raises
     ------
     ValueError
-        An unknown protocol, no static points or fewer than two sweeps.
+        An unknown protocol, no static points, a load measured but at no static point, or
+        fewer than two sweeps.
     SolverError
         From the model.
     """
@@ -183,7 +208,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     if not static.any() or len(rpm_groups(data)) < 2:
         raise ValueError("cross_validate needs static points and sweeps at two rotation rates at least")
     CT, CP = _coefficients(data, propeller, air)
-    CT0, CP0 = float(np.mean(CT[static])), float(np.mean(CP[static]))
+    CT0, CP0 = _static_mean(CT, static, "thrust"), _static_mean(CP, static, "torque")
     out = {}
     for protocol in protocols:
         dct, dcp = [], []
@@ -197,8 +222,6 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
                             discretization=discretization)
             dct.append((r.CT - CT[test]) / CT0)
             dcp.append((r.CP - CP[test]) / CP0)
-        dct, dcp = np.concatenate(dct), np.concatenate(dcp)
-        out[protocol] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "rms_cp": float(np.sqrt(np.mean(dcp**2))),
-                         "bias_ct": float(np.mean(dct)), "bias_cp": float(np.mean(dcp)), "n_points": int(dct.size),
+        out[protocol] = {**_scores(np.concatenate(dct), np.concatenate(dcp)), "n_points": int(sum(map(len, dct))),
                          "n_fits": sum(t is not None for t, _ in splits)}
     return out

@@ -44,12 +44,15 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     dict
         ``rms_thrust`` and ``rms_drag`` (of the mean measured static thrust), ``rms_torque``
         (of the static torque), pooled over the folds' held-out points; ``flap_compliance``,
-        each fold's fitted value [rad/(N m)]; ``n_points``.
+        each fold's fitted value [rad/(N m)]; ``n_points``, the held-out points. A load not
+        measured at a point (NaN in ``data.measured``) is left out of its figure; one measured
+        at no held-out point gives None.
 
     Raises
     ------
     ValueError
-        A quantity not measured, no static point, an empty fold, or as ``fit_loads``.
+        A quantity not measured, no static point (with thrust and torque measured), an
+        empty fold, or as ``fit_loads``.
     SolverError
         From the model.
     """
@@ -61,7 +64,10 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     if missing or not static.any():
         raise ValueError(f"holdout_loads needs thrust, drag and torque and static points; missing "
                          f"{', '.join(missing) or 'static points'}")
-    T0, Q0 = float(np.mean(data.measured["thrust"][static])), float(np.mean(data.measured["torque"][static]))
+    T0, Q0 = (data.measured[k][static] for k in ("thrust", "torque"))
+    if not (np.isfinite(T0).any() and np.isfinite(Q0).any()):
+        raise ValueError("holdout_loads needs static points with thrust and torque measured, to normalise by")
+    T0, Q0 = float(np.mean(T0[np.isfinite(T0)])), float(np.mean(Q0[np.isfinite(Q0)]))  # (NaN: not measured there)
     err = {"thrust": [], "drag": [], "torque": []}
     compliance = []
     for train in folds:
@@ -75,7 +81,11 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
                         collective=None if data.collective is None else data.collective[~train])
         for k, scale in (("thrust", T0), ("drag", T0), ("torque", Q0)):
             err[k].append((getattr(r, k) - data.measured[k][~train]) / scale)
-    out = {f"rms_{k}": float(np.sqrt(np.mean(np.concatenate(v) ** 2))) for k, v in err.items()}
+    out = {}
+    for k, v in err.items():
+        e = np.concatenate(v)
+        e = e[np.isfinite(e)]  # (a load not measured at a point, LoadData's NaN, is left out: it gave a NaN rms)
+        out[f"rms_{k}"] = float(np.sqrt(np.mean(e**2))) if e.size else None
     return {**out, "flap_compliance": compliance, "n_points": int(sum(len(v) for v in err["thrust"]))}
 
 
