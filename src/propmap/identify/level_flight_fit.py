@@ -269,18 +269,17 @@ def _select_body_lift(result: FitResult, best, without: FitResult, data: LevelFl
     each with the verdict in ``extra["body_lift"]``. ``spent``: the full fit's (nfev, elapsed_s)."""
     nfev, elapsed = spent
     L = body_lift(best.x[-3:], data, vehicle, result.params.M, air)
-    # nested-model F-test: do the 3 body-lift parameters reduce the residual more than
-    # fitting noise would? (the paper's Sec. III-A check, made quantitative)
+    # do the 3 body-lift parameters reduce the residual more than fitting noise would?
     rss1, rss0 = float(result.residuals @ result.residuals), float(without.residuals @ without.residuals)
     if rss1 < (1 - 1e-6) * rss0:
         # the full fit reached a better optimum of the section parameters than the fit without body lift
         # (a local minimum of that one): the fit without it again from there, so that the test compares
         # the body terms, not two optima of the section
         again = fit_level_flight(data, vehicle, base=base, air=air, options=no_body, start=best.x[:-3])
-        spent = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
+        totals = {"nfev": again.nfev + without.nfev, "elapsed_s": again.elapsed_s + without.elapsed_s}
         # (the fit's own objective decides: with the population prior it is more than the data's residual)
         better = _objective(again) < _objective(without)
-        without = replace(again if better else without, **spent)
+        without = replace(again if better else without, **totals)
         rss0 = float(without.residuals @ without.residuals)
     dof1 = data.n - len(result.names)
     # (F >= 0: after that second fit the model without body lift can end a little below the full fit, which was
