@@ -300,3 +300,8 @@ def test_cross_validate_leaves_a_load_not_measured_out_as_coefficient_errors_doe
                            data.group)
     with pytest.raises(ValueError, match="no static point \\(airspeed 0\\) has torque measured"):
         cross_validate(sweeps_only, prop, g, protocols=("blind",), discretization=COARSE)
+    zero_static = LoadData(data.omega, data.airspeed, data.incidence,
+                           {"thrust": np.where(data.airspeed == 0, 0.0, data.measured["thrust"]), "torque": Q},
+                           data.group)
+    with pytest.raises(ValueError, match="the mean static thrust coefficient is 0"):
+        coefficient_errors(zero_static, prop, g, mask=data.airspeed > 0, discretization=COARSE)

@@ -39,13 +39,17 @@ def _coefficients(data, propeller: Propeller, air: Air):
 def _static_mean(C, static, what: str) -> float:
     """The mean measured coefficient ``what`` of the static points where it was measured (NaN:
     not measured there, LoadData's convention); NaN where it was measured at no point at all
-    (its errors are then None), an error where it was measured but at no static point."""
+    (its errors are then None), an error where it was measured but at no static point or its
+    mean there is 0."""
     known = np.isfinite(C)
     if not known.any():
         return math.nan
     if not np.any(known & static):
         raise ValueError(f"no static point (airspeed 0) has {what} measured, to normalise its errors by")
-    return float(np.mean(C[known & static]))
+    value = float(np.mean(C[known & static]))
+    if value == 0.0:  # (its errors would all be inf, and then left out as not measured)
+        raise ValueError(f"the mean static {what} coefficient is 0: no normalisation of its errors")
+    return value
 
 
 def _scores(dct, dcp) -> dict:
@@ -92,7 +96,8 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     Raises
     ------
     ValueError
-        No static points, a load measured but at no static point, or the mask selects none.
+        No static points, a load measured but at no static point (or of mean 0 there), or the
+        mask selects none.
     SolverError
         From the model.
     """
