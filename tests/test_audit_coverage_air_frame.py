@@ -148,6 +148,18 @@ def test_a_calibrated_sets_reynolds_span_is_in_its_own_air(capsys, apc8x6):
     assert re < span[0] / 1.05
 
 
+def test_a_hand_written_reynolds_span_without_rates_is_checked(capsys, tmp_path, apc8x6):
+    """A [coverage] table with re75_min and re75_max but no rpm keys: its Reynolds span is checked (it was
+    not: the check ran only beside the rates', an audit, 2026-11-29); 6000 rpm on the 8x6 at sea level is a
+    Reynolds number of about 4.5e4 at 0.75 R, beyond a span of 1e5-2e5."""
+    re = float(apc8x6.reynolds_75(6000 * RPM, AIR))
+    assert 3e4 < re < 6e4
+    label = _fitted(tmp_path, re75_min=1e5, re75_max=2e5)
+    lines = _warnings(capsys, apc8x6, label, rpm=6000.0)
+    assert len(lines) == 1 and "Reynolds number at 0.75 R" in lines[0] and "span 1e+05-2e+05" in lines[0], lines
+    assert _warnings(capsys, apc8x6, _fitted(tmp_path, re75_min=0.9 * re, re75_max=1.1 * re), rpm=6000.0) == []
+
+
 # ---------------------------------------------------------------- cli/_air.py
 
 SET_AIR = pm.Air(rho=1.2, mu=1.7e-5, speed_of_sound=330.0)
@@ -158,6 +170,8 @@ SET_AIR = pm.Air(rho=1.2, mu=1.7e-5, speed_of_sound=330.0)
     (["--pressure-pa", "1e5", "--rho", "1.1"],
      "give the air one way: --rho or --temperature-c/--pressure-pa, not both"),
     (["--rho", "2500"], "--rho must be in [0.001, 2000] kg/m^3, got 2500.0"),
+    (["--rho", "1.1", "--altitude-m", "100", "--temperature-c", "10"],  # (three ways were "not both")
+     "give the air one way: --rho or --temperature-c/--pressure-pa or --altitude-m, not all three"),
 ])
 def test_the_air_options_refusals_say_what_was_given(capsys, argv, message):
     """Mutants A2 (the ways joined by 'and'), A14 (--pressure-pa alone not counted as a way: beside --rho, taken

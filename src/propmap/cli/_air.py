@@ -76,7 +76,7 @@ def resolve_air(air, choice: AirChoice):
                                 ("--temperature-c/--pressure-pa", temperature_c is not None or pressure_pa is not None),
                                 ("--altitude-m", altitude_m is not None)) if given_]
     if len(ways) > 1:
-        raise InputError(f"give the air one way: {' or '.join(ways)}, not both")
+        raise InputError(f"give the air one way: {' or '.join(ways)}, not {'both' if len(ways) == 2 else 'all three'}")
     if rho is not None:
         if not (math.isfinite(rho) and RHO_RANGE[0] <= rho <= RHO_RANGE[1]):
             raise InputError(f"--rho must be in [{RHO_RANGE[0]:g}, {RHO_RANGE[1]:g}] kg/m^3, got {rho!r}")

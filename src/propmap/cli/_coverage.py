@@ -103,9 +103,11 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     if (airspeed is not None and "airspeed_max" in cov and airspeed > 1.01 * cov["airspeed_max"] + 0.1
             and not (beyond_J or beyond_incidence)):
         warn(f"airspeed up to {airspeed:.3g} m/s: the data behind {label} reach {cov['airspeed_max']:.3g} m/s")
-    if rpm is not None and ("rpm_min" in cov or "rpm_max" in cov):
+    if rpm is not None:
         lo, hi = (rpm, rpm) if not hasattr(rpm, "__len__") else (min(rpm), max(rpm))
-        low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)  # (a hand-written table may give one)
+        # (a hand-written table may give one of the rates, or none: its Reynolds span is checked all the same; it
+        # was not without the rates, an audit, 2026-11-29)
+        low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)
         if lo < low * (1 - 1e-6) or hi > high * (1 + 1e-6):
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
             span = (f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) and low > 0 else
