@@ -47,6 +47,16 @@ def _cambered_by_hand(p, air, c, y, theta, UT, UP, U2mean, delay=None):
     return U * (CL * UT - CD * UP), U * (CL * UP + CD * UT), cdp
 
 
+def _edgewise(prop, p, om, V):
+    """The solved loads at an edgewise point (radial rows kept) and its annuli's radii y, chords c, the half
+    circle's 16 azimuth nodes psi and the blade's UT, UP there (UP the solved v_i)."""
+    r = pm.rotor_loads(prop, p, om, V, math.pi / 2, radial=True)
+    y = _nodes(prop, 48, 16, p.air, p).y
+    psi = -0.5 * math.pi + (np.arange(16) + 0.5) * math.pi / 16
+    UT = om * y[:, None] + V * np.sin(psi)[None, :]
+    return r, y, prop.chord_at(y), psi, UT, np.broadcast_to(r.v_i[:, None], UT.shape)
+
+
 @pytest.mark.parametrize("gamma", [0.0, 1.5])
 def test_dynamic_stall_thrust_density_is_gormonts_delay_written_out(apc8x6, gamma):
     """Mutants M8 (Gormont's falling-blade delay + d / 2 instead of - d / 2) and M30 (the delay's bound DELAY_MAX
@@ -58,12 +68,8 @@ def test_dynamic_stall_thrust_density_is_gormonts_delay_written_out(apc8x6, gamm
     p = CAM_ALL.replace(inplane_induction=False, radial_drag=False, dynamic_stall=gamma)
     air = p.air
     om, V = 5000 * RPM, 16.0
-    r = pm.rotor_loads(apc8x6, p, om, V, math.pi / 2, radial=True)
-    y = _nodes(apc8x6, 48, 16, air, p).y
-    c = apc8x6.chord_at(y)[:, None]
-    psi = -0.5 * math.pi + (np.arange(16) + 0.5) * math.pi / 16
-    UT = om * y[:, None] + V * np.sin(psi)[None, :]
-    UP = np.broadcast_to(r.v_i[:, None], UT.shape)
+    r, y, c, psi, UT, UP = _edgewise(apc8x6, p, om, V)
+    c = c[:, None]
     d = np.minimum(gamma * np.sqrt(c * om / 2) * np.sqrt(np.abs(UP * V * np.cos(psi))) / np.hypot(UT, UP) ** 1.5,
                    math.radians(20.0))
     qT, _, _ = _cambered_by_hand(p, air, c, y[:, None], apc8x6.theta_at(y)[:, None], UT, UP,
@@ -124,13 +130,7 @@ def test_cambered_edgewise_loads_use_the_azimuth_mean_square_speed_and_the_radia
     p = CAM_ALL.replace(inplane_induction=False, radial_drag=True)
     air = p.air
     om, V = 8000 * RPM, 15.0
-    r = pm.rotor_loads(apc8x6, p, om, V, math.pi / 2, radial=True)
-    nd = _nodes(apc8x6, 48, 16, air, p)
-    y = nd.y
-    c = apc8x6.chord_at(y)
-    psi = -0.5 * math.pi + (np.arange(16) + 0.5) * math.pi / 16
-    UT = om * y[:, None] + V * np.sin(psi)[None, :]
-    UP = np.broadcast_to(r.v_i[:, None], UT.shape)
+    r, y, c, psi, UT, UP = _edgewise(apc8x6, p, om, V)
     qT, qH, cdp = _cambered_by_hand(p, air, c[:, None], y[:, None], apc8x6.theta_at(y)[:, None], UT, UP,
                                     ((om * y) ** 2 + 0.5 * V**2)[:, None])
     cfac = apc8x6.n_blades * 0.5 * air.rho * c
@@ -148,12 +148,8 @@ def test_gill_edgewise_drag_with_the_radial_flows_profile_drag_written_out(apc8x
     p = apc_params.replace(radial_drag=True)
     air = p.air
     om, V = 7000 * RPM, 12.0
-    r = pm.rotor_loads(apc8x6, p, om, V, math.pi / 2, radial=True)
-    y = _nodes(apc8x6, 48, 16, air, p).y
-    c = apc8x6.chord_at(y)[:, None]
-    psi = -0.5 * math.pi + (np.arange(16) + 0.5) * math.pi / 16
-    UT = om * y[:, None] + V * np.sin(psi)[None, :]
-    UP = np.broadcast_to(r.v_i[:, None], UT.shape)
+    r, y, c, psi, UT, UP = _edgewise(apc8x6, p, om, V)
+    c = c[:, None]
     _, qH = _gill_by_hand(p, air, c, apc8x6.theta_at(y)[:, None], UT, UP)
     U = np.hypot(UT, UP)
     cdp = 2.0 * 1.02 * p.cp_blasius / np.sqrt(air.rho * U * c / air.mu) + p.cd0
