@@ -151,7 +151,7 @@ def test_a_calibrated_sets_reynolds_span_is_in_its_own_air(capsys, apc8x6):
 def test_a_hand_written_reynolds_span_without_rates_is_checked(capsys, tmp_path, apc8x6):
     """A [coverage] table with re75_min and re75_max but no rpm keys: its Reynolds span is checked (it was
     not: the check ran only beside the rates', an audit, 2026-11-29); 6000 rpm on the 8x6 at sea level is a
-    Reynolds number of about 4.5e4 at 0.75 R, beyond a span of 1e5-2e5."""
+    Reynolds number of 4.77e4 at 0.75 R, beyond a span of 1e5-2e5."""
     re = float(apc8x6.reynolds_75(6000 * RPM, AIR))
     assert 3e4 < re < 6e4
     label = _fitted(tmp_path, re75_min=1e5, re75_max=2e5)

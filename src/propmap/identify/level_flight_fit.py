@@ -263,7 +263,7 @@ def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base:
 
 
 def _select_body_lift(result: FitResult, best, without: FitResult, data: LevelFlightData, vehicle: Vehicle,
-                      base: SectionParams, air: Air, no_body: FitOptions, spent: tuple[float, float]) -> FitResult:
+                      base: SectionParams, air: Air, no_body: FitOptions, spent: tuple[int, float]) -> FitResult:
     """The paper's Sec. III-A check, made quantitative: a nested-model F-test of the three body-lift
     terms; the fit with them (``result``) when they matter (p < 0.05), else the fit without them,
     each with the verdict in ``extra["body_lift"]``. ``spent``: the full fit's (nfev, elapsed_s)."""

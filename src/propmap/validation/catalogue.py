@@ -55,12 +55,15 @@ def _static_mean(C, static, what: str) -> float:
 def _scores(dct, dcp) -> dict:
     """rms and bias of the CT and CP errors over the points where each was measured (None where
     none was)."""
-    out = {}
-    for q, e in (("ct", dct), ("cp", dcp)):
-        e = e[np.isfinite(e)]
-        out[f"rms_{q}"] = float(np.sqrt(np.mean(e**2))) if e.size else None
-        out[f"bias_{q}"] = float(np.mean(e)) if e.size else None
-    return {k: out[k] for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp")}
+    ct, cp = dct[np.isfinite(dct)], dcp[np.isfinite(dcp)]
+
+    def rms(e):
+        return float(np.sqrt(np.mean(e**2))) if e.size else None
+
+    def bias(e):
+        return float(np.mean(e)) if e.size else None
+
+    return {"rms_ct": rms(ct), "rms_cp": rms(cp), "bias_ct": bias(ct), "bias_cp": bias(cp)}
 
 
 def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air: Air | None = None, mask=None,

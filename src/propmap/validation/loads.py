@@ -64,10 +64,11 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     if missing or not static.any():
         raise ValueError(f"holdout_loads needs thrust, drag and torque and static points; missing "
                          f"{', '.join(missing) or 'static points'}")
-    T0, Q0 = (data.measured[k][static] for k in ("thrust", "torque"))
-    if not (np.isfinite(T0).any() and np.isfinite(Q0).any()):
+    # the static loads where measured (NaN: not measured at that point)
+    T_static, Q_static = (data.measured[k][static & np.isfinite(data.measured[k])] for k in ("thrust", "torque"))
+    if not (T_static.size and Q_static.size):
         raise ValueError("holdout_loads needs static points with thrust and torque measured, to normalise by")
-    T0, Q0 = float(np.mean(T0[np.isfinite(T0)])), float(np.mean(Q0[np.isfinite(Q0)]))  # (NaN: not measured there)
+    T0, Q0 = float(np.mean(T_static)), float(np.mean(Q_static))
     err = {"thrust": [], "drag": [], "torque": []}
     compliance = []
     for train in folds:
