@@ -368,7 +368,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
                          f"{', '.join(data.measured)})")
     if entry is None:
-        from ..identify.data import DataError, sanity_check
+        from ..identify.data import DataError
+        from ..identify.sanity import sanity_check
 
         try:
             for w in sanity_check(data, prop, air=air, quantities=qty, pole_pairs=pole_pairs):

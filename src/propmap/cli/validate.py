@@ -229,7 +229,8 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         click.echo(f"propmap: note: {note}", err=True)
     check_section_match(prop, label)
     air = file_air(data, air, air_choice, what="comparison")
-    from ..identify.data import DataError, sanity_check
+    from ..identify.data import DataError
+    from ..identify.sanity import sanity_check
 
     try:  # a unit slip looks like a bad model: said, and the comparison goes on (a fit refuses it)
         # (against the parameters given, not the generic set: their own errors follow; a user-level audit, 2026-11-29;
