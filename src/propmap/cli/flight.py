@@ -220,9 +220,8 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     """
     import numpy as np
 
-    from ..identify.flight import (baseline_force, cross_validate_flight, fit_baselines, fit_flight,
-                                   fitted_body_drag, fitted_vehicle, flight_errors, hover_torque_check,
-                                   predict_flight, reference_errors, speed_band_errors)
+    from ..identify.flight import (AIRFRAME_NAMES, cross_validate_flight, default_flight_names, fit_baselines,
+                                   fit_flight, fitted_body_drag, fitted_vehicle, hover_torque_check, predict_flight)
     from ..identify.dependence import jackknife_report
     from ..io.params_file import BodyTable
 
@@ -249,8 +248,6 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     train = samples.select(~np.isin(samples.log_index, held_idx))
     if moments and veh.inertia is None:
         raise InputError("--moments: the vehicle file gives no inertia, so the logs' moments cannot be measured")
-    from ..identify.flight import AIRFRAME_NAMES, default_flight_names
-
     opts = _options(fit_choice, base=base, base_label=base_label,
                     extra_names=AIRFRAME_NAMES)
     n_names = len(opts.names) if opts.names else len(default_flight_names(base))
@@ -261,27 +258,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     veh = fitted_vehicle(veh, res)
     pred = predict_flight(samples, veh, res.params, body=body, air=air)
     baselines = fit_baselines(train, veh)
-    rows, report = [], {"training": {}, "held_out": {}}
-    reference_masses = set()  # the masses the logs' own predictions were made for, where not the vehicle's
-
-    def score(label, mask, key, store):
-        sub = samples.select(mask)
-        e = {"model": flight_errors(pred.force[mask], sub, pred.moment[mask])}
-        rows.append((f"{label}: propmap", e["model"]))
-        for k, bl in baselines.items():
-            e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
-            rows.append((f"{label}: {bl['label']}", e[k]))
-        refs, masses = reference_errors(sub, veh.mass)
-        e.update(refs)
-        rows.extend((f"{label}: {name}", errs) for name, errs in _reference_rows(refs, veh.mass, "log's own"))
-        reference_masses.update(masses)
-        e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
-        store[key] = e
-
-    score("training", ~np.isin(samples.log_index, held_idx), "all", report)
-    report["training"] = report.pop("all")
-    for k in held_idx:
-        score(f"held out {names[k]}", samples.log_index == k, names[k], report["held_out"])
+    rows, report, reference_masses = _scores(samples, names, held_idx, pred, baselines, veh)
     report["baselines"] = baselines
     report["hover_torque"] = hover_torque_check(res.params, veh, train, air=air)
     report["body_drag"] = res.extra.get("body_drag")
@@ -300,9 +277,54 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
 
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
+    coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
+                "groups": [n for n in names if n not in held], "held_out": sorted(held)}
+    _write_outputs(res, out, base_label, as_json, "\n".join(text),
+                   figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
+                   figure_suffixes=(".png", ".speed.png"), coverage=coverage,
+                   body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
+                                  veh.rotor_interference if "rotor_interference" in res.names else None))
+
+
+def _scores(samples, names, held_idx, pred, baselines, veh):
+    """fit flight's errors of the model, the baselines and the logs' own references on the
+    training samples and on each held-out log: (the table's rows, the report's "training" and
+    "held_out" entries, the masses the logs' own predictions were made for where not the
+    vehicle's)."""
+    import numpy as np
+
+    from ..identify.flight import baseline_force, flight_errors, reference_errors, speed_band_errors
+
+    rows, reference_masses = [], set()
+
+    def score(label, mask):
+        sub = samples.select(mask)
+        e = {"model": flight_errors(pred.force[mask], sub, pred.moment[mask])}
+        rows.append((f"{label}: propmap", e["model"]))
+        for k, bl in baselines.items():
+            e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
+            rows.append((f"{label}: {bl['label']}", e[k]))
+        refs, masses = reference_errors(sub, veh.mass)
+        e.update(refs)
+        rows.extend((f"{label}: {name}", errs) for name, errs in _reference_rows(refs, veh.mass, "log's own"))
+        reference_masses.update(masses)
+        e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
+        return e
+
+    report = {"training": score("training", ~np.isin(samples.log_index, held_idx)),
+              "held_out": {names[k]: score(f"held out {names[k]}", samples.log_index == k) for k in held_idx}}
+    return rows, report, reference_masses
+
+
+def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
+    """fit flight's figures, drawn once the outputs are written: measured against predicted body
+    force over time (with the last baseline and the logs' own prediction), and the paper's Fig. 6
+    (thrust, drag, torque and vertical-force error against speed, the hover model beside)."""
 
     def figures(png):
-        from ..identify.flight import BASELINES
+        import numpy as np
+
+        from ..identify.flight import BASELINES, baseline_force
         from ..plots import plot_flight_speed, plot_flight_timeseries
 
         t = {n: samples.t[samples.log_index == k] for k, n in enumerate(names)}
@@ -317,7 +339,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_timeseries(t, meas, model, png, other=other,
                                title=f"fit flight: measured m a vs predicted body force ({shown}); "
                                      f"held out: {', '.join(sorted(held)) or 'none'}")
-        hover = _hover_loads(res.params, veh, samples, air)
+        hover = _hover_loads(params, veh, samples, air)
         loads = {"thrust": sum(lo.thrust for lo in pred.loads), "drag": sum(lo.drag for lo in pred.loads),
                  "torque": sum(np.abs(lo.torque) for lo in pred.loads)}
         vertical = {"BET+BEMT (fitted)": pred.force[:, 2] - samples.force[:, 2],
@@ -326,12 +348,7 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         plot_flight_speed(samples.speed, loads, hover, vertical, stem.with_name(stem.name + ".speed.png"),
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
-    coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
-                "groups": [n for n in names if n not in held], "held_out": sorted(held)}
-    _write_outputs(res, out, base_label, as_json, "\n".join(text), figure=figures,
-                   figure_suffixes=(".png", ".speed.png"), coverage=coverage,
-                   body=BodyTable(body, veh.centre_of_mass if {"cg_x", "cg_y"} & set(res.names) else None,
-                                  veh.rotor_interference if "rotor_interference" in res.names else None))
+    return figures
 
 
 def _report_lines(samples, names, held, n_train: int, rows, report: dict, reference_masses, mass: float) -> list[str]:
