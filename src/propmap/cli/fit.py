@@ -347,19 +347,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
     air = resolve_air(air, air_choice)
-    import warnings
-
-    with warnings.catch_warnings(record=True) as caught:  # (said now, before the fit, and kept for the reports)
-        warnings.simplefilter("always")
-        data, prop, entry, label = read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
-    data_warnings = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, UserWarning)))
-    for w in caught:  # (a library's own warnings go the usual way, under the command's filters)
-        if not issubclass(w.category, UserWarning):
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    for note in data.notes:
-        click.echo(f"propmap: note: {note}", err=True)
-    for w in data_warnings:
-        warn(w)
+    data, prop, entry, label, data_warnings = _read_loads_sources(sources, prop_spec, prop_choice, air, rpm_source,
+                                                                  pole_pairs)
     air = file_air(data, air, air_choice)
     check_section_match(prop, base_label)
     qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
@@ -368,60 +357,15 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
                          f"{', '.join(data.measured)})")
     if entry is None:
-        from ..identify.data import DataError
-        from ..identify.sanity import sanity_check
-
-        try:
-            for w in sanity_check(data, prop, air=air, quantities=qty, pole_pairs=pole_pairs):
-                warn(w)
-                data_warnings.append(w)
-        except DataError as exc:
-            if not skip_sanity_check:
-                raise InputError(f"SOURCE: {exc} (--skip-sanity-check fits it anyway)") from None
-            warn(str(exc))
-            data_warnings.append(str(exc))
-    held = parse_names("--holdout", holdout, what="run") or ()
-    population = None
-    if entry is not None and held:
-        # judging held-out runs of a catalogue propeller: the generic set and the prior must
-        # come from the catalogue without the propeller's family, which never saw them
-        from ..io.calibration import generic_without
-        from ..io.calibration import population as population_without
-
-        population = population_without(without=entry.name)
-        if base_spec is None:
-            base, base_label = generic_without(entry.name)
-    groups = set(data.group)
-    unknown = [h for h in held if h not in groups]
-    if unknown:
-        raise InputError(f"--holdout: unknown run(s) {', '.join(unknown)}; available: {', '.join(sorted(groups))}")
-    if entry is not None and any(h.startswith("static") for h in held):
-        raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
-    if held and groups <= set(held):
-        raise InputError(f"--holdout: every run of SOURCE is held out ({', '.join(sorted(groups))}); keep at least one "
-                         "to fit")
+        data_warnings += _sanity_warnings(data, prop, air, qty, pole_pairs, skip_sanity_check)
+    held, population, base, base_label = _held_runs(holdout, data, entry, base_spec, base, base_label)
     train = data.subset(~np.isin(data.group, held))
-    if directions:  # (options that would make them ignored are refused, not warned about)
-        from ..core.airfoil import CamberedParams
-
-        if not isinstance(base, CamberedParams):
-            raise InputError(f"--directions applies to the cambered model; --base {base_label} is the paper's model")
-        if fit_choice.no_prior:
-            raise InputError("--directions frees the parameter directions the data know better than the population "
-                             "prior; with --no-prior there is none: give one of them")
-        if fit_choice.fit_params:
-            raise InputError("--directions frees directions of the default parameters; --fit-params chooses the "
-                             "parameters instead: give one of them")
+    if directions:
+        _check_directions(base, base_label, fit_choice)
     options = replace(_options(fit_choice, base, base_label),
                       population=population, directions=directions)
-    if jackknife:  # (refused before the fit)
-        from ..identify.jackknife import jackknife_runs
-
-        runs = jackknife_runs(train)
-        if len(runs) < 3:
-            raise InputError(f"--jackknife leaves each fitted run out in turn (the sweeps where static runs are "
-                             f"fitted too) and needs at least 3; SOURCE has {len(runs)} "
-                             f"({', '.join(map(str, runs)) or 'none'})")
+    if jackknife:
+        _check_jackknife(train)
     res = _run_fit(fit_loads, train, prop, base=base, air=air, quantities=qty, options=options)
     if jackknife:
         from ..identify.jackknife import jackknife_loads
@@ -443,6 +387,97 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                    header=f"{prop.name}: {prop.n_blades} blades, D = {prop.diameter:.4g} m; air rho "
                           f"{air.rho:.4g} kg/m^3" + (f"\nData: {cited}" if cited else ""),
                    data_warnings=data_warnings)
+
+
+def _read_loads_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs):
+    """fit loads' reading of SOURCE: (data, propeller, catalogue entry or None, label, the data's
+    warnings). The reader's notes and warnings are said now, before the fit, and the warnings kept
+    for the reports; a library's own warnings go the usual way, under the command's filters."""
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        data, prop, entry, label = read_sources(sources, prop_spec, prop_choice, air, rpm_source, pole_pairs)
+    data_warnings = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, UserWarning)))
+    for w in caught:
+        if not issubclass(w.category, UserWarning):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    for note in data.notes:
+        click.echo(f"propmap: note: {note}", err=True)
+    for w in data_warnings:
+        warn(w)
+    return data, prop, entry, label, data_warnings
+
+
+def _sanity_warnings(data, prop, air, qty, pole_pairs, skip_sanity_check: bool) -> list[str]:
+    """The sanity check of a user's load data (identify/sanity.py), each warning said as it comes
+    and returned for the reports; a refusal is an InputError, or with --skip-sanity-check a
+    warning."""
+    from ..identify.data import DataError
+    from ..identify.sanity import sanity_check
+
+    said = []
+    try:
+        for w in sanity_check(data, prop, air=air, quantities=qty, pole_pairs=pole_pairs):
+            warn(w)
+            said.append(w)
+    except DataError as exc:
+        if not skip_sanity_check:
+            raise InputError(f"SOURCE: {exc} (--skip-sanity-check fits it anyway)") from None
+        warn(str(exc))
+        said.append(str(exc))
+    return said
+
+
+def _held_runs(holdout, data, entry, base_spec, base, base_label: str):
+    """--holdout's runs, checked against the data's: (the held-out runs, the population prior
+    and the base set and its label to fit with). Judging held-out runs of a catalogue propeller,
+    the generic set and the prior come from the catalogue without the propeller's family, which
+    never saw them."""
+    held = parse_names("--holdout", holdout, what="run") or ()
+    population = None
+    if entry is not None and held:
+        from ..io.calibration import generic_without
+        from ..io.calibration import population as population_without
+
+        population = population_without(without=entry.name)
+        if base_spec is None:
+            base, base_label = generic_without(entry.name)
+    groups = set(data.group)
+    unknown = [h for h in held if h not in groups]
+    if unknown:
+        raise InputError(f"--holdout: unknown run(s) {', '.join(unknown)}; available: {', '.join(sorted(groups))}")
+    if entry is not None and any(h.startswith("static") for h in held):
+        raise InputError("--holdout: the static run calibrates the hover model and cannot be held out")
+    if held and groups <= set(held):
+        raise InputError(f"--holdout: every run of SOURCE is held out ({', '.join(sorted(groups))}); keep at least one "
+                         "to fit")
+    return held, population, base, base_label
+
+
+def _check_directions(base, base_label: str, fit_choice) -> None:
+    """Refuse the options that would make --directions ignored (refused, not warned about)."""
+    from ..core.airfoil import CamberedParams
+
+    if not isinstance(base, CamberedParams):
+        raise InputError(f"--directions applies to the cambered model; --base {base_label} is the paper's model")
+    if fit_choice.no_prior:
+        raise InputError("--directions frees the parameter directions the data know better than the population "
+                         "prior; with --no-prior there is none: give one of them")
+    if fit_choice.fit_params:
+        raise InputError("--directions frees directions of the default parameters; --fit-params chooses the "
+                         "parameters instead: give one of them")
+
+
+def _check_jackknife(train) -> None:
+    """Refuse --jackknife before the fit where the training data have fewer than 3 runs to leave out."""
+    from ..identify.jackknife import jackknife_runs
+
+    runs = jackknife_runs(train)
+    if len(runs) < 3:
+        raise InputError(f"--jackknife leaves each fitted run out in turn (the sweeps where static runs are "
+                         f"fitted too) and needs at least 3; SOURCE has {len(runs)} "
+                         f"({', '.join(map(str, runs)) or 'none'})")
 
 
 def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, label: str):
