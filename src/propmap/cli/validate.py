@@ -86,23 +86,7 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
             if value is not None:
                 raise InputError(f"{option} applies to SOURCE files with a geometry file as --prop")
     if all_props:
-        if sources:
-            raise InputError("give PROP (or SOURCE files) or --all, not both")
-        if params_spec is not None:
-            raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
-        air_given = air_choice.options_given()
-        if air_given:
-            raise InputError(f"{air_given[0]} applies to a single PROP; --all compares coefficients in the air the "
-                             "sets were fitted in")
-        from .validate_all import OUTPUT_FILES, run_all
-
-        if figure is not None:
-            raise InputError("--figure applies to a single PROP; --all writes its figures into --out-dir")
-        protocols = parse_names("--protocols", protocols, valid=PROTOCOLS, what="protocol") or PROTOCOLS
-        only = parse_names("--props", only, what="propeller name") or ()
-        if out_dir is not None:
-            check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
-        run_all(list(protocols), list(only), out_dir, as_json)
+        _validate_all(sources, params_spec, air_choice, figure, protocols, only, out_dir, as_json)
         return
     if not sources:
         raise InputError("give PROP (a catalogue propeller), SOURCE files with --prop, or --all")
@@ -115,6 +99,35 @@ def validate(sources, all_props, prop_spec, prop_choice, params_spec, rpm_source
             raise InputError("--figure applies to a catalogue PROP")
         _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, pole_pairs, as_json, air_choice)
         return
+    _validate_catalogue(prop, params_spec, air_choice, figure, as_json)
+
+
+def _validate_all(sources, params_spec, air_choice, figure, protocols, only, out_dir, as_json) -> None:
+    """validate --all: its option checks, then every calibration protocol over the catalogue and
+    the published cases (validate_all.run_all)."""
+    if sources:
+        raise InputError("give PROP (or SOURCE files) or --all, not both")
+    if params_spec is not None:
+        raise InputError("--params applies to a single PROP; --all uses the shipped generic sets")
+    air_given = air_choice.options_given()
+    if air_given:
+        raise InputError(f"{air_given[0]} applies to a single PROP; --all compares coefficients in the air the "
+                         "sets were fitted in")
+    from .validate_all import OUTPUT_FILES, run_all
+
+    if figure is not None:
+        raise InputError("--figure applies to a single PROP; --all writes its figures into --out-dir")
+    protocols = parse_names("--protocols", protocols, valid=PROTOCOLS, what="protocol") or PROTOCOLS
+    only = parse_names("--props", only, what="propeller name") or ()
+    if out_dir is not None:
+        check_out_dir("--out-dir", out_dir, OUTPUT_FILES)
+    run_all(list(protocols), list(only), out_dir, as_json)
+
+
+def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> None:
+    """validate PROP: the model and the hover model against a catalogue propeller's UIUC static
+    and J-sweep data, printed (or as JSON), with the figure where --figure names one, and what
+    of the data the set was fitted to."""
     if figure is not None:
         if figure.suffix.lower() not in (".png", ".pdf", ".svg"):
             raise InputError(f"--figure: {figure}: give a .png, .pdf or .svg file name (the format follows it)")
