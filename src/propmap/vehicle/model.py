@@ -185,46 +185,17 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         _warn_rotor_air(vehicle, air)
     n_rot = len(vehicle.rotors)
     kappa = vehicle.rotor_interference  # (in [0, 3]: Vehicle checks it)
-    v = _samples("velocity", velocity, 3)
-    w = _samples("angular_velocity", angular_velocity, 3)
-    om = _samples("rotor_omega", rotor_omega, n_rot)
-    if (om < 0).any():
-        n, i = np.argwhere(om < 0)[0]
-        raise ValueError(f"rotor_omega must be >= 0 rad/s (the rate's magnitude; the sense is the rotor's spin), got "
-                         f"{om[n, i]:g} for rotor {i + 1} (sample {n + 1})")
-    if (om > OMEGA_MAX).any():
-        n, i = np.argwhere(om > OMEGA_MAX)[0]
-        raise ValueError(f"rotor_omega must be <= {OMEGA_MAX:g} rad/s, got {om[n, i]:g} for rotor {i + 1} (sample "
-                         f"{n + 1}; rpm given for rad/s?)")
-    wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
-    acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
-    arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
-    counts = {a.shape[0] for a in arrays} - {1}
-    if len(counts) > 1:
-        raise ValueError(f"velocity, angular_velocity, rotor_omega, wind and rotor_acceleration must have the same "
-                         f"number of samples (or one), got {[a.shape[0] for a in arrays]}")
-    N = counts.pop() if counts else 1
+    v, w, om, wind_a, acc, N = _checked_samples(velocity, angular_velocity, rotor_omega, wind, rotor_acceleration,
+                                                n_rot)
     pos, axes, _, h_spin = cached_rotor_geometry(vehicle)  # arms about the centre of mass, unit axes, s_i J_i a_i
     V_hub = np.empty((N, n_rot, 3))  # v - wind + w x r_i (compiled: _kinematics.py)
     hub_velocity_loop(v, wind_a, w, pos, V_hub)
     frame = _hub_frames(V_hub, axes)
     speed = frame[1]  # (the speed the rotors are solved at: the compiled frame's, as rotor_wrench's)
-    if speed.size and not speed.max() <= AIRSPEED_MAX:  # (NaN too: w x r or v - wind overflowing to inf - inf)
-        n, i = np.argwhere(~(speed <= AIRSPEED_MAX))[0]
-        raise ValueError(f"rotor {i + 1}'s hub airspeed |v + w x r - wind| is {speed[n, i]:.4g} m/s at sample {n + 1}, "
-                         f"beyond the model's {AIRSPEED_MAX:g} m/s (velocity, angular_velocity and wind in m/s and "
-                         "rad/s?)" if speed[n, i] > AIRSPEED_MAX else
-                         f"rotor {i + 1}'s hub velocity v + w x r - wind is not finite at sample {n + 1} (it "
-                         "overflows; velocity, angular_velocity and wind in m/s and rad/s?)")
+    _check_hub_speed(speed)
     wrt = requested_derivatives(derivatives, vehicle, params)
-    if wrt and kappa > 0 and n_rot > 1:
-        raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
-                         "their speeds); set the vehicle's rotor_interference to 0")
-    if wrt and np.any(om < OMEGA_MIN):
-        n, i = np.argwhere(om < OMEGA_MIN)[0]
-        raise ValueError(f"derivatives need every rotor_omega >= {OMEGA_MIN:g} rad/s (below it a rotor's blades are "
-                         f"parked and its loads are not differentiated), got {om[n, i]:g} for rotor {i + 1} (sample "
-                         f"{n + 1})")
+    if wrt:
+        _check_derivative_points(kappa, om)
     motion = any(n in MOTION_NAMES for n in wrt)
     rotor_wrt = tuple(n for n in wrt if n not in BODY_DRAG_NAMES + MOTION_NAMES) + (VELOCITY_INPUTS if motion else ())
     solve = dict(air=air, discretization=discretization, on_failure=on_failure, derivatives=rotor_wrt)
@@ -233,14 +204,8 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     om = om if om.shape[0] == N else np.broadcast_to(om, (N, n_rot))
     rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_hub, frame, om, **solve)
     hub_jac = hub_velocity_jacobians(vehicle, batches, om) if motion else None
-    if kappa > 0 and n_rot > 1:
-        from ..core.interference import interference_inflow
-
-        radii = np.array([r.propeller.radius for r in vehicle.rotors])
-        v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
-        v_i = np.where(np.isfinite(v_i), v_i, 0.0)  # a failed point (on_failure="flag") induces nothing
-        wake = interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
-        V_wake = V_hub - wake
+    if kappa > 0 and n_rot > 1:  # (solved again in the other rotors' wakes)
+        V_wake = V_hub - _wake_inflow(vehicle, loads, pos, axes, V_hub, kappa)
         rotor_force, rotor_moment, loads, batches = _rotor_wrenches(vehicle, params, V_wake, _hub_frames(V_wake, axes),
                                                                     om, **solve)
     # the arms' moments r_i x F_i and the gyroscopic and spin-up moments -w x (Omega_i h_i) - (dOmega_i/dt) h_i of the
@@ -262,6 +227,70 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
     return VehicleWrench(force=rotor_force.sum(axis=1) + body_force, moment=rotor_moment.sum(axis=1),
                          rotor_force=rotor_force, rotor_moment=rotor_moment, body_force=body_force,
                          loads=tuple(loads), force_domega=dF, moment_domega=dM, jacobian=jac)
+
+
+def _checked_samples(velocity, angular_velocity, rotor_omega, wind, rotor_acceleration, n_rot: int):
+    """vehicle_wrench's sample arrays, checked: (v, w, rotor_omega, wind, rotor_acceleration or None,
+    N), each with 1 or N rows as given; ValueError for a rate out of [0, OMEGA_MAX] or row counts
+    that differ."""
+    v = _samples("velocity", velocity, 3)
+    w = _samples("angular_velocity", angular_velocity, 3)
+    om = _samples("rotor_omega", rotor_omega, n_rot)
+    if (om < 0).any():
+        n, i = np.argwhere(om < 0)[0]
+        raise ValueError(f"rotor_omega must be >= 0 rad/s (the rate's magnitude; the sense is the rotor's spin), got "
+                         f"{om[n, i]:g} for rotor {i + 1} (sample {n + 1})")
+    if (om > OMEGA_MAX).any():
+        n, i = np.argwhere(om > OMEGA_MAX)[0]
+        raise ValueError(f"rotor_omega must be <= {OMEGA_MAX:g} rad/s, got {om[n, i]:g} for rotor {i + 1} (sample "
+                         f"{n + 1}; rpm given for rad/s?)")
+    wind_a = np.zeros((1, 3)) if wind is None else _samples("wind", wind, 3)
+    acc = None if rotor_acceleration is None else _samples("rotor_acceleration", rotor_acceleration, n_rot)
+    arrays = [v, w, om, wind_a] + ([] if acc is None else [acc])
+    counts = {a.shape[0] for a in arrays} - {1}
+    if len(counts) > 1:
+        raise ValueError(f"velocity, angular_velocity, rotor_omega, wind and rotor_acceleration must have the same "
+                         f"number of samples (or one), got {[a.shape[0] for a in arrays]}")
+    N = counts.pop() if counts else 1
+    return v, w, om, wind_a, acc, N
+
+
+def _check_hub_speed(speed: np.ndarray) -> None:
+    """Refuse hub airspeeds (N, n_rot) beyond AIRSPEED_MAX or not finite (w x r or v - wind
+    overflowing to inf - inf), naming the rotor and the sample."""
+    if speed.size and not speed.max() <= AIRSPEED_MAX:  # (NaN too)
+        n, i = np.argwhere(~(speed <= AIRSPEED_MAX))[0]
+        raise ValueError(f"rotor {i + 1}'s hub airspeed |v + w x r - wind| is {speed[n, i]:.4g} m/s at sample {n + 1}, "
+                         f"beyond the model's {AIRSPEED_MAX:g} m/s (velocity, angular_velocity and wind in m/s and "
+                         "rad/s?)" if speed[n, i] > AIRSPEED_MAX else
+                         f"rotor {i + 1}'s hub velocity v + w x r - wind is not finite at sample {n + 1} (it "
+                         "overflows; velocity, angular_velocity and wind in m/s and rad/s?)")
+
+
+def _check_derivative_points(kappa: float, om: np.ndarray) -> None:
+    """Refuse derivatives with rotor interference (the wakes couple the rotors' speeds) or at a
+    parked rotor (below OMEGA_MIN its loads are not differentiated)."""
+    if kappa > 0 and om.shape[1] > 1:
+        raise ValueError("derivatives are not implemented with rotor_interference > 0 (the rotors' wakes couple "
+                         "their speeds); set the vehicle's rotor_interference to 0")
+    if np.any(om < OMEGA_MIN):
+        n, i = np.argwhere(om < OMEGA_MIN)[0]
+        raise ValueError(f"derivatives need every rotor_omega >= {OMEGA_MIN:g} rad/s (below it a rotor's blades are "
+                         f"parked and its loads are not differentiated), got {om[n, i]:g} for rotor {i + 1} (sample "
+                         f"{n + 1})")
+
+
+def _wake_inflow(vehicle: Vehicle, loads, pos: np.ndarray, axes: np.ndarray, V_hub: np.ndarray,
+                 kappa: float) -> np.ndarray:
+    """The velocity (N, n_rot, 3) the other rotors' wakes induce at each hub, from the rotors'
+    mean inflow in ``loads`` (core/interference.py); a failed point (on_failure="flag") induces
+    nothing."""
+    from ..core.interference import interference_inflow
+
+    radii = np.array([r.propeller.radius for r in vehicle.rotors])
+    v_i = np.stack([ld.v_i_mean for ld in loads], axis=1)
+    v_i = np.where(np.isfinite(v_i), v_i, 0.0)
+    return interference_inflow(pos, axes, radii, V_hub, v_i, kappa)
 
 
 def _hub_frames(V_hub: np.ndarray, axes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
