@@ -42,16 +42,16 @@ def test_forward_flight_balances_the_weight_nose_down(neurobem):
     """At 10 m/s the model's force balances the weight and its moment vanishes; the vehicle
     pitches nose down (the rotors' thrust tilted forward against their in-plane drag); the
     symmetric vehicle does not roll; the flight's velocity in body axes has the airspeed's size.
-    Regression values (generic set, 2026-11-28): pitch -4.12 deg, power 72.1 W against 87.2 W in
-    hover (translational lift)."""
+    Regression values (generic set, the calibration of 2026-11-29): pitch -4.11 deg, power 72.0 W
+    against 87.2 W in hover (translational lift)."""
     vehicle, params = neurobem
     trim = pm.trim_vehicle(vehicle, params, 10.0)
     force, moment = _balance(vehicle, trim)
     assert np.max(np.abs(force)) < TRIM_TOL and np.max(np.abs(moment)) < TRIM_TOL
     assert np.linalg.norm(trim.velocity) == pytest.approx(10.0, rel=1e-12)
     assert trim.roll == pytest.approx(0.0, abs=1e-6)
-    assert math.degrees(trim.pitch) == pytest.approx(-4.12, abs=0.02)
-    assert trim.power == pytest.approx(72.1, abs=0.2)
+    assert math.degrees(trim.pitch) == pytest.approx(-4.11, abs=0.02)
+    assert trim.power == pytest.approx(72.0, abs=0.2)
     assert trim.power < pm.trim_vehicle(vehicle, params, 0.0).power
     # a rotor pair mirrored left-right turns at one speed (rotors 1 and 3: back, 2 and 4: front)
     assert trim.rotor_omega[0] == pytest.approx(trim.rotor_omega[2], rel=1e-6)
