@@ -109,30 +109,15 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         pasted twice); an airspeed column reading 0.3-1.5 m/s at every point (a static
         stand's pitot); an incidence column without a unit that looks like radians.
     """
-    from .stand import map_columns, split_header
-    from .steps import ESC_TOL, esc_form
+    from .stand import split_header
 
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
     p = f.name
 
-    def columns(header):
-        return map_columns(header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
-
-    try:
-        cm = columns(f.header)
-    except DataError as exc:
-        # a preamble above the header (a test's name, a date): the first line below that names the columns
-        below = f.after_preamble(lambda header: _succeeds(columns, header))
-        if below is None:
-            raise DataError(f"{what}: {p}: {exc}") from None
-        f, cm = below, columns(below.header)
+    f, cm = _header_columns(f, rpm_source, pole_pairs, what, p)
     notes = [*f.notes, *cm.notes]
-    power = [c for c in f.header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
-             in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
-    if power and "torque" not in cm.columns:
-        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
-                     "fit uses the torque too)")
+    _power_note(f.header, cm, notes)
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
     # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
     ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
@@ -154,20 +139,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                                (low.get("group", "group"), *(c.lower() for c in named)),
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
                                gaps={low[q] for q in keys} if sampled else ())
-    for c in ratio:
-        if np.nanmax(np.abs(raw[c.lower()]), initial=0.0) > 1e-3:  # (an axial sweep's J read as static: the thrust
-            # 11-23% off, a wind-tunnel data audit, 2026-11-27)
-            raise DataError(f"{what}: {p}: column {c!r} looks like an advance ratio, which propmap reads only as "
-                            "'airspeed' [m/s] (V = J n D; mu n D for mu): convert it, or remove it; left unread, "
-                            "every point would be taken as static (airspeed 0)")
-    for c in named:
-        props = sorted({t.casefold(): t for t in texts[c.lower()] if t}.values())  # (APC 10x7 and apc 10x7 are one)
-        if len(props) > 1:
-            raise DataError(f"{what}: {p}: column {c!r} names {len(props)} propellers ({', '.join(props[:4])}"
-                            f"{' ...' if len(props) > 4 else ''}): propmap fits one propeller's loads; write each "
-                            "propeller's rows to a file of its own")
-        if props:
-            notes.append(f"column {c!r} names {props[0]} on every row (the geometry is the one given to the fit)")
+    _check_unread_columns(raw, texts, ratio, named, what, p, notes)
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
     v, _ = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
@@ -183,6 +155,79 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a "steps" test: one averaged point per ESC step
     group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
              else None)
+    v, group, lines, n, averaged = _steps_or_points(f, cm, v, group, lines, what, p, notes)
+    # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
+    if "thrust" in v and n:
+        v["thrust"] = _thrust_sign(v, cm.column("thrust"), notes)
+    if "torque" in v and n:
+        v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
+    named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
+    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES,
+                   written={q: cm.columns[q][:2] for q in cm.columns})
+    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
+    _check_points(v, keys, cm, min_points, averaged, what, p)
+    if group is None:
+        group = np.full(n, "all", dtype=object)
+    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
+                    group, f"{path}", collective, tuple(notes), air_density)
+
+
+def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):
+    """(the file, its column map): the header's columns mapped to propmap's quantities, or, where
+    a preamble stands above the header (a test's name, a date), those of the first line below
+    that names the columns; DataError naming the file where no line does."""
+    from .stand import map_columns
+
+    def columns(header):
+        return map_columns(header, rpm_source=rpm_source, pole_pairs=pole_pairs, error=DataError)
+
+    try:
+        cm = columns(f.header)
+    except DataError as exc:
+        below = f.after_preamble(lambda header: _succeeds(columns, header))
+        if below is None:
+            raise DataError(f"{what}: {p}: {exc}") from None
+        f, cm = below, columns(below.header)
+    return f, cm
+
+
+def _power_note(header, cm, notes: list) -> None:
+    """A note that a power column is not read where no torque column is (Q = P / Omega)."""
+    power = [c for c in header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
+             in ("power", "shaft power", "mechanical power", "power w", "shaft power w", "mechanical power w")]
+    if power and "torque" not in cm.columns:
+        notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
+                     "fit uses the torque too)")
+
+
+def _check_unread_columns(raw: dict, texts: dict, ratio: list, named: list, what: str, p: str, notes: list) -> None:
+    """Refuse an advance-ratio column (J or mu) that is not 0 everywhere (left unread, every point
+    would be static) and a propeller column that names more than one propeller; note the one it
+    names."""
+    for c in ratio:
+        if np.nanmax(np.abs(raw[c.lower()]), initial=0.0) > 1e-3:  # (an axial sweep's J read as static: the thrust
+            # 11-23% off, a wind-tunnel data audit, 2026-11-27)
+            raise DataError(f"{what}: {p}: column {c!r} looks like an advance ratio, which propmap reads only as "
+                            "'airspeed' [m/s] (V = J n D; mu n D for mu): convert it, or remove it; left unread, "
+                            "every point would be taken as static (airspeed 0)")
+    for c in named:
+        props = sorted({t.casefold(): t for t in texts[c.lower()] if t}.values())  # (APC 10x7 and apc 10x7 are one)
+        if len(props) > 1:
+            raise DataError(f"{what}: {p}: column {c!r} names {len(props)} propellers ({', '.join(props[:4])}"
+                            f"{' ...' if len(props) > 4 else ''}): propmap fits one propeller's loads; write each "
+                            "propeller's rows to a file of its own")
+        if props:
+            notes.append(f"column {c!r} names {props[0]} on every row (the geometry is the one given to the fit)")
+
+
+def _steps_or_points(f, cm, v: dict, group, lines: np.ndarray, what: str, p: str, notes: list):
+    """(v, group, lines, n, averaged): a stand's "steps" test (an ESC signal column whose rows
+    repeat a step, or at most 40 rows each a step of its own) averaged to one point per step
+    (:func:`_average_steps`), else each row a point (the ESC and time columns dropped, with a
+    note where a long log has a time column but no ESC signal column)."""
+    from .steps import ESC_TOL, esc_form
+
+    n = lines.size
     form = None
     if "esc" in v:
         form, note = esc_form(cm.column("esc"), cm.columns["esc"][2], v["esc"])
@@ -207,20 +252,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
             notes.append(f"each of the {n} rows is a point: the file has a time column ({cm.column('time')!r}) but no "
                          "ESC signal column, by which a stand's steps test is averaged (name it 'ESC signal (µs)' or "
                          "'Throttle (%)' for that)")
-    # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
-    if "thrust" in v and n:
-        v["thrust"] = _thrust_sign(v, cm.column("thrust"), notes)
-    if "torque" in v and n:
-        v["torque"] = _torque_sign(v, what, p, cm.column("torque"), notes)
-    named = {("rpm" if k == "rpm" else k): a for k, a in v.items()}
-    f.check_ranges(named, lines if lines.any() else np.zeros(n, dtype=np.int64), RANGES,
-                   written={q: cm.columns[q][:2] for q in cm.columns})
-    collective = np.radians(v["collective_deg"]) if "collective_deg" in v else None
-    _check_points(v, keys, cm, min_points, averaged, what, p)
-    if group is None:
-        group = np.full(n, "all", dtype=object)
-    return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}", collective, tuple(notes), air_density)
+    return v, group, lines, n, averaged
 
 
 def _average_steps(v: dict, group, form: str, column: str, where: str, notes: list):
