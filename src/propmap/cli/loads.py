@@ -401,28 +401,8 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     the descent ratio lambda2 = -V cos(incidence) / v_h and the rotor's working state.
     """
     if points is not None:
-        given = [o for o, v in (("--rpm", rpm), ("--airspeed", airspeed), ("--incidence-deg", incidence_deg),
-                                ("--collective-deg", collective_deg)) if v is not None]
-        if given:
-            raise InputError(f"{', '.join(given)}: give the operating points either as options (one point) or in "
-                             "--points (many), not both")
-        if as_json:  # (before --out: "--out is required" sent a --json user the wrong way, a user-level audit)
-            raise InputError("--json applies to a single point; --points writes a CSV")
-        if out is None:
-            raise InputError("--out is required with --points (a file, or '-' for standard output)")
-        inputs = [points, prop, params_spec]
-        if out != "-":
-            check_outputs([("--out", out)], inputs)
-        propeller = prop_choice.load(prop)
-        params, air, label = load_params(params_spec, prop)
-        air = resolve_air(air, air_choice)
-        n, counts = _run_points(propeller, params, air, label, points, out, progress=out != "-")
-        where = "standard output" if out == "-" else out
-        n_bad = counts.pop("not_converged")
-        flagged = ", ".join(f"{c} {name}" for name, c in counts.items() if c)  # (the vortex ring's rows unsaid before)
-        click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label})"
-                   + (f"; {n_bad} did not converge (see flags)" if n_bad else "")
-                   + (f"; flagged: {flagged} (column flags, docs/cli.md)" if flagged else ""), err=True)
+        _points_command(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json,
+                        prop_choice, air_choice)
         return
     if out is not None:
         raise InputError("--out applies to --points; a single point is printed")
@@ -462,6 +442,43 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {k: u for k, u in UNITS.items() if k in result}})
         return
+    _echo_point(propeller, params, air, label, r, result, ratio, rpm, airspeed, incidence_deg, collective_deg, set_deg)
+
+
+def _points_command(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice,
+                    air_choice) -> None:
+    """loads --points: the operating points of a CSV solved and written as CSV (a file, or '-' for
+    standard output), with a line on standard error of how many were written, did not converge
+    or were flagged."""
+    given = [o for o, v in (("--rpm", rpm), ("--airspeed", airspeed), ("--incidence-deg", incidence_deg),
+                            ("--collective-deg", collective_deg)) if v is not None]
+    if given:
+        raise InputError(f"{', '.join(given)}: give the operating points either as options (one point) or in "
+                         "--points (many), not both")
+    if as_json:  # (before --out: "--out is required" sent a --json user the wrong way, a user-level audit)
+        raise InputError("--json applies to a single point; --points writes a CSV")
+    if out is None:
+        raise InputError("--out is required with --points (a file, or '-' for standard output)")
+    inputs = [points, prop, params_spec]
+    if out != "-":
+        check_outputs([("--out", out)], inputs)
+    propeller = prop_choice.load(prop)
+    params, air, label = load_params(params_spec, prop)
+    air = resolve_air(air, air_choice)
+    n, counts = _run_points(propeller, params, air, label, points, out, progress=out != "-")
+    where = "standard output" if out == "-" else out
+    n_bad = counts.pop("not_converged")
+    flagged = ", ".join(f"{c} {name}" for name, c in counts.items() if c)  # (the vortex ring's rows unsaid before)
+    click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label})"
+               + (f"; {n_bad} did not converge (see flags)" if n_bad else "")
+               + (f"; flagged: {flagged} (column flags, docs/cli.md)" if flagged else ""), err=True)
+
+
+def _echo_point(propeller, params, air, label: str, r, result: dict, ratio: dict, rpm, airspeed, incidence_deg,
+                collective_deg, set_deg) -> None:
+    """loads' printed report of one operating point: the point, the loads, the coefficients, the
+    working state in descent and the flags with their meanings."""
+    total_deg = set_deg + collective_deg
     click.echo(f"{propeller.name} at {rpm:g} rpm, V = {airspeed:g} m/s, incidence {incidence_deg:g} deg"
                + (f", collective {total_deg:g} deg" if total_deg else "")
                + (f" ({set_deg:g} of the parameter set + {collective_deg:g})" if set_deg and collective_deg else "")
