@@ -298,7 +298,7 @@ def test_cross_validate_leaves_a_load_not_measured_out_as_coefficient_errors_doe
     sweeps_only = LoadData(data.omega, data.airspeed, data.incidence,
                            {"thrust": data.measured["thrust"], "torque": np.where(data.airspeed == 0, np.nan, Q)},
                            data.group)
-    with pytest.raises(ValueError, match="no static point \\(airspeed 0\\) has torque measured"):
+    with pytest.raises(ValueError, match="no static point \\(airspeed up to 0.3 m/s\\) has torque measured"):
         cross_validate(sweeps_only, prop, g, protocols=("blind",), discretization=COARSE)
     zero_static = LoadData(data.omega, data.airspeed, data.incidence,
                            {"thrust": np.where(data.airspeed == 0, 0.0, data.measured["thrust"]), "torque": Q},

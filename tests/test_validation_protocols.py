@@ -12,7 +12,7 @@ import propmap as pm
 from propmap.identify import loads_from_catalogue
 from propmap.identify.load_data import LoadData
 from propmap.io.calibration import generic_params
-from propmap.validation import coefficient_errors, cross_validate, rpm_groups
+from propmap.validation import coefficient_errors, cross_validate, holdout_loads, rpm_groups
 from propmap.validation.catalogue import _splits
 
 
@@ -87,3 +87,31 @@ def test_one_rotation_rate_is_refused(apce):
     one = data.subset((data.airspeed == 0) | np.isin(data.group, rpm_groups(data)[0]))
     with pytest.raises(ValueError, match="two rotation rates"):
         cross_validate(one, prop, generic_params(), protocols=("blind",))
+
+
+def test_a_stands_pitot_noise_at_rest_is_static_as_in_load_errors(apce, apc_params):
+    """A static run logged at 0.2 m/s (a stand's pitot noise; up to STATIC_AIRSPEED = 0.3 m/s is
+    static for load_errors, the fits and the reader's sign rule) is the static run of the catalogue
+    metric too: the blind errors, the splits and holdout_loads' normalisation are those of the same
+    run at 0 m/s (these refused such data as having no static point, or split them as a sweep)."""
+    prop, data = apce
+    g = generic_params()
+    static = data.airspeed == 0
+    noisy = LoadData(data.omega, np.where(static, 0.2, data.airspeed), data.incidence, data.measured, data.group)
+    before = cross_validate(data, prop, g, protocols=("blind",))["blind"]
+    after = cross_validate(noisy, prop, g, protocols=("blind",))["blind"]
+    assert after["n_points"] == before["n_points"] == int((~static).sum())
+    for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp"):
+        assert after[k] == pytest.approx(before[k], rel=1e-12), k
+    assert rpm_groups(noisy) == rpm_groups(data)
+    for (t0, h0), (t1, h1) in zip(_splits(data, "lowest"), _splits(noisy, "lowest")):
+        assert np.array_equal(t0, t1) and np.array_equal(h0, h1)
+    # holdout_loads (loads at incidence): its scale is the mean measured static thrust and torque
+    om = np.array([5000, 7000, 6000, 6000, 6000, 6000.0]) * 2 * math.pi / 60
+    V, b = np.array([0.2, 0.2, 4, 8, 5, 8.0]), np.radians([0, 0, 30, 90, 45, 60.0])
+    r = pm.rotor_loads(prop, apc_params, om, V, b)
+    off = np.array([0, 0, 0, 0, 0.1, -0.1])
+    loads = LoadData(om, V, b, {"thrust": r.thrust + off, "drag": r.drag, "torque": r.torque},
+                     np.array(["s", "s", "a", "a", "a", "a"]))
+    e = holdout_loads(loads, prop, apc_params, [off == 0], names=("cd",))
+    assert e["rms_thrust"] == pytest.approx(0.1 / float(r.thrust[:2].mean()), rel=1e-6)

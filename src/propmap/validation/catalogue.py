@@ -11,6 +11,7 @@ import numpy as np
 from ..core.airfoil import Air, SectionParams
 from ..core.geometry import Propeller
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, rotor_loads
+from ..identify.load_data import STATIC_AIRSPEED
 
 __all__ = ["PROTOCOLS", "PROTOCOL_TEXT", "coefficient_errors", "cross_validate", "rpm_groups"]
 
@@ -45,7 +46,8 @@ def _static_mean(C, static, what: str) -> float:
     if not known.any():
         return math.nan
     if not np.any(known & static):
-        raise ValueError(f"no static point (airspeed 0) has {what} measured, to normalise its errors by")
+        raise ValueError(f"no static point (airspeed up to {STATIC_AIRSPEED:g} m/s) has {what} measured, to "
+                         "normalise its errors by")
     value = float(np.mean(C[known & static]))
     if value == 0.0:  # (its errors would all be inf, and then left out as not measured)
         raise ValueError(f"the mean static {what} coefficient is 0: no normalisation of its errors")
@@ -70,7 +72,8 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
                        discretization: Discretization = DEFAULT_DISCRETIZATION) -> dict:
     """rms |dCT| / static CT and rms |dCP| / static CP of ``params`` on load data.
 
-    The normalisation is the mean measured CT and CP of the static points (airspeed 0)
+    The normalisation is the mean measured CT and CP of the static points (airspeed up to
+    0.3 m/s, ``STATIC_AIRSPEED``: a stand's pitot noise, as in load_errors and the fits)
     of ``data`` (all of them, also when ``mask`` selects other points), so that errors of
     propellers of any size and pitch compare.
 
@@ -106,9 +109,10 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     """
     air = model_air(params, air)
     CT, CP = _coefficients(data, propeller, air)
-    static = data.airspeed == 0
+    static = data.airspeed <= STATIC_AIRSPEED
     if not static.any():
-        raise ValueError("coefficient_errors needs static points (airspeed 0) to normalise by")
+        raise ValueError(f"coefficient_errors needs static points (airspeed up to {STATIC_AIRSPEED:g} m/s) to "
+                         "normalise by")
     CT0, CP0 = _static_mean(CT, static, "thrust"), _static_mean(CP, static, "torque")
     m = np.ones(data.n, bool) if mask is None else np.asarray(mask, bool)
     if not m.any():
@@ -126,14 +130,15 @@ def rpm_groups(data) -> list[list[str]]:
     Parameters
     ----------
     data : LoadData
-        Load data; a group whose points are all static (airspeed 0) is not a sweep.
+        Load data; a group whose points are all static (airspeed up to 0.3 m/s) is not a
+        sweep.
 
     Returns
     -------
     list of list of str
         The sweeps' group names, one list per rotation rate.
     """
-    static = data.airspeed == 0
+    static = data.airspeed <= STATIC_AIRSPEED
     sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
     rate = {g: float(np.mean(data.omega[data.group == g])) for g in sweeps}
     groups: list[list[str]] = []
@@ -147,7 +152,7 @@ def rpm_groups(data) -> list[list[str]]:
 
 def _splits(data, protocol: str):
     """(train mask, test mask) pairs of a protocol (every test mask holds sweep points only)."""
-    static = data.airspeed == 0
+    static = data.airspeed <= STATIC_AIRSPEED
     groups = rpm_groups(data)
     if protocol == "loso":
         return [(data.group != g, data.group == g) for grp in groups for g in grp]
@@ -174,7 +179,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     Parameters
     ----------
     data : LoadData
-        Static points (airspeed 0) and axial sweeps at two rotation rates at least, with
+        Static points (airspeed up to 0.3 m/s) and axial sweeps at two rotation rates at least, with
         thrust and torque; ``group`` labels the runs.
     propeller : Propeller
     generic : SectionParams
@@ -212,7 +217,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     bad = [p for p in protocols if p not in PROTOCOLS]
     if bad:
         raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
-    static = data.airspeed == 0
+    static = data.airspeed <= STATIC_AIRSPEED
     if not static.any() or len(rpm_groups(data)) < 2:
         raise ValueError("cross_validate needs static points and sweeps at two rotation rates at least")
     CT, CP = _coefficients(data, propeller, air)

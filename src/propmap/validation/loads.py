@@ -27,7 +27,8 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     Parameters
     ----------
     data : LoadData
-        With ``thrust``, ``drag`` and ``torque`` measured, and static points (airspeed 0).
+        With ``thrust``, ``drag`` and ``torque`` measured, and static points (airspeed up
+        to 0.3 m/s).
     propeller : Propeller
     base : AirfoilParams or CamberedParams
     folds : sequence of array_like of bool
@@ -58,9 +59,11 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     """
     from ..identify import FitOptions, fit_loads
 
+    from ..identify.load_data import STATIC_AIRSPEED
+
     air = model_air(base, air, name="base")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
-    static = data.airspeed == 0
+    static = data.airspeed <= STATIC_AIRSPEED
     if missing or not static.any():
         raise ValueError(f"holdout_loads needs thrust, drag and torque and static points; missing "
                          f"{', '.join(missing) or 'static points'}")
