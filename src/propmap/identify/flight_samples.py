@@ -337,72 +337,15 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     tau = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
     if isinstance(tau, bool) or not (isinstance(tau, (int, float)) and 0 <= tau <= 1):
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
-    n_rot = len(vehicle.rotors)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)
     layout = _layout_moments(vehicle, hover) if vehicle.inertia is not None else None
     for k, log in enumerate(logs):
-        if not isinstance(log, FlightLog):
-            raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
-        if log.n_motors != n_rot:
-            layout = ("; the NeuroBEM layout carries 4 motors, a vehicle of more rotors needs a PX4 ULog"
-                      if log.format == "neurobem" and n_rot > 4 else "")
-            raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
-                             f"vehicle file lists its rotors in the log's motor order{layout})")
-        step = max(1, int(round(log.rate_hz / rate_hz)))
-        rates.append(log.rate_hz / step)
-        wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
-            log.angular_velocity, log.t, axis=0)
-        # the 99th percentile of each motor's speed: one telemetry spike does not refuse a log
-        om99 = np.percentile(log.rotor_omega, 99, axis=0) if log.n else np.zeros(n_rot)
-        tip = om99 * radii
-        if np.any(tip > MAX_TIP_MACH * SPEED_OF_SOUND):
-            i = int(np.argmax(tip))
-            cause = ("are the log's motor speeds in rpm? A CSV or .mat log's are read in rad/s" if log.format != "ulog"
-                     else "check the ESC rpm or the motor map (docs/cli.md) and the vehicle's rotors")
-            raise ValueError(f"{log.name}: motor {i + 1} runs at {om99[i]:.0f} rad/s (99th percentile), a tip speed "
-                             f"of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: {cause} "
-                             "(docs/flight.md)")
-        reference = _ground_reference(log, hover)
-        sl = slice(None, None, step)
-        om_full, omdot_full = _lagged(log, tau)
-        om = om_full[sl]
-        # a stopped rotor: the logged speed (the lagged one decays for a few time constants after a stop) or the lag's
-        logged = log.rotor_omega[sl]
-        stopped = ~(np.all(om >= OMEGA_STOPPED, axis=1) & np.all(logged >= OMEGA_STOPPED, axis=1))
-        ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
-                                       stopped, reference)
-        keep = ~(stopped | ground)
-        if not keep.any() and stopped.all():  # name the motor and the likely cause (a fuzzing audit: 0-1 speeds)
-            low = np.max(logged, axis=0) < OMEGA_STOPPED
-            which = (f"motor(s) {', '.join(str(i + 1) for i in np.flatnonzero(low))} below {OMEGA_STOPPED:g} rad/s "
-                     "in every sample" if low.any() else "some rotor stopped in every sample")
-            raise ValueError(f"{log.name}: no samples left: {which} (largest logged speed {float(logged.max()):.3g} "
-                             "rad/s): motor speeds normalised to 0-1, a throttle, or a motor not logged?")
-        left_out[log.name] = (int(stopped.sum()), int(ground.sum()))
-        notes += _motor_spread(log, logged[keep], vehicle)
-        _check_hover(log, logged[keep], vehicle, hover)
-        if stopped.any():
-            notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
-                         "rad/s, logged or through the motor lag) left out")
-        if ground.any():
-            notes.append(f"{log.name}: {int(ground.sum())} sample(s) on the ground left out (standing still, the "
-                         f"accelerometer reading g, the rotors below {GROUND_FRACTION:g} of the hover speed: the "
-                         "ground's reaction, which no rotor model makes)")
-        w = log.angular_velocity[sl][keep]
-        if vehicle.inertia is not None:
-            inertia = vehicle.inertia
-            moment = wdot[sl][keep] @ inertia.T + np.cross(w, w @ inertia.T)
-            notes += _layout_note(log, logged[keep], moment, layout, log.rate_hz / step)
-        else:
-            moment = None
-        acc = omdot_full[sl][keep] if omdot_full is not None else np.zeros((keep.sum(), n_rot))
-        parts.append(dict(log_index=np.full(keep.sum(), k), t=log.t[sl][keep], velocity=log.velocity[sl][keep],
-                          angular_velocity=w, rotor_omega=om[keep], rotor_acceleration=acc,
-                          force=vehicle.mass * log.specific_force[sl][keep], moment=moment,
-                          reference_force=None if log.reference_force is None else log.reference_force[sl][keep],
-                          reference_moment=None if log.reference_moment is None else log.reference_moment[sl][keep]))
+        part, rate, said, left_out[log.name] = _log_part(k, log, vehicle, rate_hz, tau, radii, hover, layout)
+        parts.append(part)
+        rates.append(rate)
+        notes += said
     out = {}
     for key in parts[0]:
         vals = [p[key] for p in parts]
@@ -416,6 +359,74 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     return FlightSamples(log_names=tuple(log.name for log in logs), rate_hz=float(np.median(rates)),
                          notes=tuple(notes), reference_mass=tuple(math.nan if log.reference_mass is None else
                                                                   float(log.reference_mass) for log in logs), **out)
+
+
+def _log_part(k: int, log, vehicle, rate_hz: float, tau: float, radii: np.ndarray, hover, layout):
+    """One log's samples for flight_samples: (the FlightSamples fields of its samples kept, its
+    sampling rate taken [Hz], its notes, (samples with a stopped rotor, samples on the ground)
+    left out); ValueError for a log that is not a FlightLog, has another motor count than the
+    vehicle's rotors, tips beyond MAX_TIP_MACH or no sample with every rotor turning."""
+    n_rot = len(vehicle.rotors)
+    if not isinstance(log, FlightLog):
+        raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
+    if log.n_motors != n_rot:
+        more = ("; the NeuroBEM layout carries 4 motors, a vehicle of more rotors needs a PX4 ULog"
+                if log.format == "neurobem" and n_rot > 4 else "")
+        raise ValueError(f"{log.name}: {log.n_motors} motor speeds but the vehicle has {n_rot} rotors (the "
+                         f"vehicle file lists its rotors in the log's motor order{more})")
+    step = max(1, int(round(log.rate_hz / rate_hz)))
+    notes = []
+    wdot = log.angular_acceleration if log.angular_acceleration is not None else np.gradient(
+        log.angular_velocity, log.t, axis=0)
+    # the 99th percentile of each motor's speed: one telemetry spike does not refuse a log
+    om99 = np.percentile(log.rotor_omega, 99, axis=0) if log.n else np.zeros(n_rot)
+    tip = om99 * radii
+    if np.any(tip > MAX_TIP_MACH * SPEED_OF_SOUND):
+        i = int(np.argmax(tip))
+        cause = ("are the log's motor speeds in rpm? A CSV or .mat log's are read in rad/s" if log.format != "ulog"
+                 else "check the ESC rpm or the motor map (docs/cli.md) and the vehicle's rotors")
+        raise ValueError(f"{log.name}: motor {i + 1} runs at {om99[i]:.0f} rad/s (99th percentile), a tip speed "
+                         f"of Mach {tip[i] / SPEED_OF_SOUND:.2f} on its {radii[i]:g} m rotor: {cause} "
+                         "(docs/flight.md)")
+    reference = _ground_reference(log, hover)
+    sl = slice(None, None, step)
+    om_full, omdot_full = _lagged(log, tau)
+    om = om_full[sl]
+    # a stopped rotor: the logged speed (the lagged one decays for a few time constants after a stop) or the lag's
+    logged = log.rotor_omega[sl]
+    stopped = ~(np.all(om >= OMEGA_STOPPED, axis=1) & np.all(logged >= OMEGA_STOPPED, axis=1))
+    ground = ~stopped & _on_ground(logged, log.specific_force[sl], log.velocity[sl], log.angular_velocity[sl],
+                                   stopped, reference)
+    keep = ~(stopped | ground)
+    if not keep.any() and stopped.all():  # name the motor and the likely cause (a fuzzing audit: 0-1 speeds)
+        low = np.max(logged, axis=0) < OMEGA_STOPPED
+        which = (f"motor(s) {', '.join(str(i + 1) for i in np.flatnonzero(low))} below {OMEGA_STOPPED:g} rad/s "
+                 "in every sample" if low.any() else "some rotor stopped in every sample")
+        raise ValueError(f"{log.name}: no samples left: {which} (largest logged speed {float(logged.max()):.3g} "
+                         "rad/s): motor speeds normalised to 0-1, a throttle, or a motor not logged?")
+    notes += _motor_spread(log, logged[keep], vehicle)
+    _check_hover(log, logged[keep], vehicle, hover)
+    if stopped.any():
+        notes.append(f"{log.name}: {int(stopped.sum())} sample(s) with a stopped rotor (Omega < {OMEGA_STOPPED:g} "
+                     "rad/s, logged or through the motor lag) left out")
+    if ground.any():
+        notes.append(f"{log.name}: {int(ground.sum())} sample(s) on the ground left out (standing still, the "
+                     f"accelerometer reading g, the rotors below {GROUND_FRACTION:g} of the hover speed: the "
+                     "ground's reaction, which no rotor model makes)")
+    w = log.angular_velocity[sl][keep]
+    if vehicle.inertia is not None:
+        inertia = vehicle.inertia
+        moment = wdot[sl][keep] @ inertia.T + np.cross(w, w @ inertia.T)
+        notes += _layout_note(log, logged[keep], moment, layout, log.rate_hz / step)
+    else:
+        moment = None
+    acc = omdot_full[sl][keep] if omdot_full is not None else np.zeros((keep.sum(), n_rot))
+    part = dict(log_index=np.full(keep.sum(), k), t=log.t[sl][keep], velocity=log.velocity[sl][keep],
+                      angular_velocity=w, rotor_omega=om[keep], rotor_acceleration=acc,
+                      force=vehicle.mass * log.specific_force[sl][keep], moment=moment,
+                      reference_force=None if log.reference_force is None else log.reference_force[sl][keep],
+                      reference_moment=None if log.reference_moment is None else log.reference_moment[sl][keep])
+    return part, log.rate_hz / step, notes, (int(stopped.sum()), int(ground.sum()))
 
 
 def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover) -> np.ndarray:
