@@ -172,16 +172,7 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         x = min(candidates, key=lambda c: c[0])[1]
     fun = exact(x)
     J = analytic(x) if analytic is not None else _jacobian(smooth, x, lb, ub)
-    stopped = not done and nm.nfev >= max_fev and nm.fun < r2.cost
-    if stopped:
-        # with noisy data Nelder-Mead's 1e-12 tolerance is not reached in max_fev evaluations;
-        # it has converged for every purpose when its simplex is within NM_STAT_TOL of the
-        # parameters' standard errors (the data's scatter, not the optimiser, sets the error)
-        spread = np.ptp(nm.final_simplex[0], axis=0) * scale
-        s2 = float(fun @ fun) / max(fun.size - len(names), 1)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            std = np.sqrt(np.clip(np.diag(s2 * np.linalg.pinv(J.T @ J)), 0, None))
-        stopped = not np.all(spread <= NM_STAT_TOL * std)
+    stopped = not done and nm.nfev >= max_fev and nm.fun < r2.cost and _simplex_wider_than_errors(nm, scale, fun, J)
     how = (f"Gauss-Newton with the exact M = {base_M:g} Jacobian" if done else f"Nelder-Mead at M = {base_M:g}")
     result = optimize.OptimizeResult(
         x=x, fun=fun, jac=J, cost=0.5 * float(fun @ fun), nfev_limit=max_fev,
@@ -189,6 +180,19 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         message=("Nelder-Mead stopped at its evaluation limit" if stopped else
                  f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then {how}"))
     return result, count["n"] + len(names) * 2 + 1
+
+
+def _simplex_wider_than_errors(nm, scale: np.ndarray, fun: np.ndarray, J: np.ndarray) -> bool:
+    """Whether Nelder-Mead, stopped at its evaluation limit, has not converged for any purpose:
+    with noisy data its 1e-12 tolerance is not reached in max_fev evaluations, and it has
+    converged for every purpose when its simplex is within NM_STAT_TOL of the parameters'
+    standard errors (the data's scatter, not the optimiser, sets the error), from the residual
+    ``fun`` and the Jacobian ``J`` at the optimum."""
+    spread = np.ptp(nm.final_simplex[0], axis=0) * scale
+    s2 = float(fun @ fun) / max(fun.size - J.shape[1], 1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        std = np.sqrt(np.clip(np.diag(s2 * np.linalg.pinv(J.T @ J)), 0, None))
+    return not np.all(spread <= NM_STAT_TOL * std)
 
 
 def _fit_with_continuation(make_residual, names, base, options, label, x0):
