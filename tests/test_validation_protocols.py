@@ -14,6 +14,7 @@ from propmap.identify.load_data import LoadData
 from propmap.io.calibration import generic_params
 from propmap.validation import coefficient_errors, cross_validate, holdout_loads, rpm_groups
 from propmap.validation.catalogue import _splits
+from propmap.cli.validate_all import _reference_errors
 
 
 def _synthetic(rpms):
@@ -104,7 +105,9 @@ def test_a_stands_pitot_noise_at_rest_is_static_as_in_load_errors(apce, apc_para
     for k in ("rms_ct", "rms_cp", "bias_ct", "bias_cp"):
         assert after[k] == pytest.approx(before[k], rel=1e-12), k
     assert rpm_groups(noisy) == rpm_groups(data)
-    for (t0, h0), (t1, h1) in zip(_splits(data, "lowest"), _splits(noisy, "lowest")):
+    before_splits, after_splits = _splits(data, "lowest"), _splits(noisy, "lowest")
+    assert len(after_splits) == len(before_splits) == 1
+    for (t0, h0), (t1, h1) in zip(before_splits, after_splits):
         assert np.array_equal(t0, t1) and np.array_equal(h0, h1)
     # holdout_loads (loads at incidence): its scale is the mean measured static thrust and torque
     om = np.array([5000, 7000, 6000, 6000, 6000, 6000.0]) * 2 * math.pi / 60
@@ -115,3 +118,18 @@ def test_a_stands_pitot_noise_at_rest_is_static_as_in_load_errors(apce, apc_para
                      np.array(["s", "s", "a", "a", "a", "a"]))
     e = holdout_loads(loads, prop, apc_params, [off == 0], names=("cd",))
     assert e["rms_thrust"] == pytest.approx(0.1 / float(r.thrust[:2].mean()), rel=1e-6)
+
+
+def test_validate_alls_no_fit_references_take_a_noisy_static_run_as_static(apce):
+    """validate --all's no-fit references (the paper's Table I and the hover model, scored on the sweeps) take
+    the static run logged at 0.2 m/s as static, as cross_validate does: the same figures as at 0 m/s (the
+    static points were scored as sweeps, and the hover model's reference was NaN)."""
+    prop, data = apce
+    air = generic_params().air
+    noisy = LoadData(data.omega, np.where(data.airspeed == 0, 0.2, data.airspeed), data.incidence, data.measured,
+                     data.group)
+    before, after = _reference_errors(data, prop, air), _reference_errors(noisy, prop, air)
+    assert after["paper_table_i"]["n_points"] == before["paper_table_i"]["n_points"] == 115
+    for ref in ("paper_table_i", "hover_model"):
+        for k in ("rms_ct", "rms_cp"):
+            assert after[ref][k] == pytest.approx(before[ref][k], rel=1e-12), (ref, k)

@@ -58,7 +58,6 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         From the model.
     """
     from ..identify import FitOptions, fit_loads
-
     from ..identify.load_data import STATIC_AIRSPEED
 
     air = model_air(base, air, name="base")
