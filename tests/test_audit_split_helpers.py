@@ -109,6 +109,22 @@ def test_trim_text_gives_the_trimmed_rate_in_rad_s_and_a_tiny_climb_ratio_withou
     assert code == 0 and "lambda2 = V_descent/v_h = 0.000)" in out and "-0.000" not in out, out
 
 
+def test_trim_hover_reference_searches_the_given_collective_range(capsys):
+    """Mutant T9 (the hover reference trimmed over the default -20..30 deg, not --range-deg): 0.1 N at 6000 rpm
+    needs about -24 deg, edgewise at 5 m/s and in hover; with --range-deg -45 0 both trims find it, and dCQ is CQ
+    minus the hover's CQ at that thrust and rpm (trimmed here by trim itself)."""
+    argv = ["trim", "apce_8x6", "--thrust", "0.1", "--rpm", "6000", "--range-deg", "-45", "0", "--json"]
+    code, out, err = run(capsys, *argv, "--airspeed", "5", "--incidence-deg", "90", "--hover-reference")
+    assert code == 0, err
+    j = json.loads(out)
+    code, out, err = run(capsys, *argv)
+    assert code == 0, err
+    hover = json.loads(out)
+    assert hover["collective_deg"] < -20 and j["collective_deg"] < -20
+    assert j["dCQ_constant_thrust"] == pytest.approx(j["CQ"] - hover["CQ"], rel=1e-5, abs=1e-9)
+    assert j["dCQ_constant_thrust"] == pytest.approx(2.8e-4, rel=0.05)  # (regression value, 2026-11-30)
+
+
 # ---------------------------------------------------------------- identify/level_flight_fit.py
 
 
@@ -204,22 +220,6 @@ def test_map_c_header_sidecar_records_the_given_c_name(tmp_path, capsys):
     attrs = json.loads((tmp_path / "t.h.json").read_text())
     assert (attrs["c_prefix"], attrs["c_interpolation"], attrs["c_type"]) == ("rotor_a", "linear", "float")
     assert "rotor_a_" in out.read_text() and "pm_t_" not in out.read_text()
-
-
-def test_trim_hover_reference_searches_the_given_collective_range(capsys):
-    """Mutant T9 (the hover reference trimmed over the default -20..30 deg, not --range-deg): 0.1 N at 6000 rpm
-    needs about -24 deg, edgewise at 5 m/s and in hover; with --range-deg -45 0 both trims find it, and dCQ is CQ
-    minus the hover's CQ at that thrust and rpm (trimmed here by trim itself)."""
-    argv = ["trim", "apce_8x6", "--thrust", "0.1", "--rpm", "6000", "--range-deg", "-45", "0", "--json"]
-    code, out, err = run(capsys, *argv, "--airspeed", "5", "--incidence-deg", "90", "--hover-reference")
-    assert code == 0, err
-    j = json.loads(out)
-    code, out, err = run(capsys, *argv)
-    assert code == 0, err
-    hover = json.loads(out)
-    assert hover["collective_deg"] < -20 and j["collective_deg"] < -20
-    assert j["dCQ_constant_thrust"] == pytest.approx(j["CQ"] - hover["CQ"], rel=1e-5, abs=1e-9)
-    assert j["dCQ_constant_thrust"] == pytest.approx(2.8e-4, rel=0.05)  # (regression value, 2026-11-30)
 
 
 def test_map_takes_a_million_check_points(tmp_path, capsys, monkeypatch):

@@ -365,7 +365,8 @@ def _log_part(k: int, log, vehicle, rate_hz: float, tau: float, radii: np.ndarra
     """One log's samples for flight_samples: (the FlightSamples fields of its samples kept, its
     sampling rate taken [Hz], its notes, (samples with a stopped rotor, samples on the ground)
     left out); ValueError for a log that is not a FlightLog, has another motor count than the
-    vehicle's rotors, tips beyond MAX_TIP_MACH or no sample with every rotor turning."""
+    vehicle's rotors, tips beyond MAX_TIP_MACH, no sample with every rotor turning, or rotor
+    speeds far from the vehicle's hover speed (:func:`_check_hover`)."""
     n_rot = len(vehicle.rotors)
     if not isinstance(log, FlightLog):
         raise ValueError(f"logs must be FlightLog records (io.flightlog.read_flight_log), got {type(log).__name__}")
@@ -422,10 +423,10 @@ def _log_part(k: int, log, vehicle, rate_hz: float, tau: float, radii: np.ndarra
         moment = None
     acc = omdot_full[sl][keep] if omdot_full is not None else np.zeros((keep.sum(), n_rot))
     part = dict(log_index=np.full(keep.sum(), k), t=log.t[sl][keep], velocity=log.velocity[sl][keep],
-                      angular_velocity=w, rotor_omega=om[keep], rotor_acceleration=acc,
-                      force=vehicle.mass * log.specific_force[sl][keep], moment=moment,
-                      reference_force=None if log.reference_force is None else log.reference_force[sl][keep],
-                      reference_moment=None if log.reference_moment is None else log.reference_moment[sl][keep])
+                angular_velocity=w, rotor_omega=om[keep], rotor_acceleration=acc,
+                force=vehicle.mass * log.specific_force[sl][keep], moment=moment,
+                reference_force=None if log.reference_force is None else log.reference_force[sl][keep],
+                reference_moment=None if log.reference_moment is None else log.reference_moment[sl][keep])
     return part, log.rate_hz / step, notes, (int(stopped.sum()), int(ground.sum()))
 
 

@@ -1,8 +1,10 @@
 """The sanity check of load data against the model (:func:`sanity_check`): the refusals of
 data that cannot be this propeller's in these units, with the likely cause (a unit slip of the
 thrust, torque, airspeed or rotation rate, an electrical rpm, swapped columns, a diameter far
-off), and the warnings of risks (low Reynolds numbers, the vortex-ring state, a moderate
-mismatch, a drag of the other sign). Importable from identify/data.py too.
+off; a measured load that is 0 at every point; a fitted drag of the other sign), and the
+warnings of risks (a tip Mach number above 0.7, low Reynolds numbers, the vortex-ring state, a
+moderate mismatch, a drag of the other sign or a drag in axial flow, an airspeed in another
+unit). Importable from identify/data.py too.
 """
 
 from __future__ import annotations
@@ -407,7 +409,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     ------
     DataError
         The data are off by more than :data:`SANITY_FACTOR` (the message gives the factor and
-        the likely cause).
+        the likely cause), or a checked load beyond it is 0 at every point (not measured?), or
+        a fitted drag has the other sign than the model's at :data:`DRAG_SIGN_REFUSED` of the
+        points at incidence.
     """
     from ..io.calibration import generic_params
 
