@@ -46,6 +46,7 @@ several processes, the trees' order alternated, and report the median with the r
 """
 
 import importlib
+import os
 import sys
 import time
 from pathlib import Path
@@ -57,6 +58,7 @@ import numpy as np
 def load(src: str, serial: bool = False):
     """propmap imported from ``src``, its solver modules loaded before the next tree replaces them
     (``serial``: small-batch threshold raised, so that every batch runs the serial kernel)."""
+    src = os.path.abspath(src)  # (a relative path was refused: the module's file is absolute; a docs audit)
     for m in [m for m in sys.modules if m == "propmap" or m.startswith("propmap.")]:
         del sys.modules[m]
     sys.path.insert(0, src)
