@@ -218,35 +218,7 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         or the output functions do not assign (or assign beyond ``n_motors``, or change during the
         log), too short an overlap of the topics.
     """
-    try:
-        import pyulog.core
-        from pyulog import ULog
-    except ImportError:  # pragma: no cover (a declared dependency)
-        raise error("reading ULog files needs the package pyulog (pip install pyulog)") from None
-    pyulog.core.print = _pyulog_print  # (its module-level name: pyulog's notices into the list below)
-    said = []
-    _PARSING.notices = notices = []
-    source = _FileBytes(raw)
-    try:
-        ulog = ULog(source)
-    except MemoryError:  # (the input too large for the memory, not a damaged file: the CLI says so)
-        raise
-    except Exception as exc:  # pyulog raises many types for a corrupt file
-        raise error(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
-    finally:
-        _PARSING.notices = None
-    lines = [x.strip() for x in notices if x.strip()]
-    first = (f"pyulog: {lines[0][:100]}" + (f" and {len(lines) - 1} more notice(s)" if len(lines) > 1 else "")
-             if lines else "")
-    if ulog.file_corruption:
-        said.append(f"{name}: a damaged ULog file ({first or 'pyulog found corrupt data'}); what pyulog skipped is "
-                    "missing from the log")
-        name = f"{name} (a damaged file)"  # (a topic lost to the damage is named missing: said so)
-    elif lines:
-        said.append(f"{name}: {first}")
-    if source.cut and not ulog.file_corruption:
-        said.append(f"{name}: the file ends inside a message (cut short: power lost, a full card, a partial copy?); "
-                    "the log is read up to its last whole message")
+    ulog, name, said = _parsed(raw, name, error)
     acc_topic = "vehicle_acceleration" if _has(ulog, "vehicle_acceleration") else "sensor_combined"
     if not _has(ulog, acc_topic):
         found = ", ".join(sorted({d.name for d in ulog.data_list}))[:200]
@@ -283,7 +255,54 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
                     f"{min_samples}")
-    t, acc = t[keep], acc[keep]
+    return _resampled(t[keep], acc[keep], (tw, rates, deriv), (tq, q), (tv, vel), (tm, rpm), order), said
+
+
+def _parsed(raw: bytes, name: str, error):
+    """(the ULog, the file's name as shown, what was said): the file's bytes parsed by pyulog
+    (its notices said, not printed to the console), a damaged or cut file said of, one pyulog
+    cannot read refused."""
+    try:
+        import pyulog.core
+        from pyulog import ULog
+    except ImportError:  # pragma: no cover (a declared dependency)
+        raise error("reading ULog files needs the package pyulog (pip install pyulog)") from None
+    pyulog.core.print = _pyulog_print  # (its module-level name: pyulog's notices into the list below)
+    said = []
+    _PARSING.notices = notices = []
+    source = _FileBytes(raw)
+    try:
+        ulog = ULog(source)
+    except MemoryError:  # (the input too large for the memory, not a damaged file: the CLI says so)
+        raise
+    except Exception as exc:  # pyulog raises many types for a corrupt file
+        raise error(f"{name}: not a readable ULog file ({type(exc).__name__}: {str(exc)[:120]})") from None
+    finally:
+        _PARSING.notices = None
+    lines = [x.strip() for x in notices if x.strip()]
+    first = (f"pyulog: {lines[0][:100]}" + (f" and {len(lines) - 1} more notice(s)" if len(lines) > 1 else "")
+             if lines else "")
+    if ulog.file_corruption:
+        said.append(f"{name}: a damaged ULog file ({first or 'pyulog found corrupt data'}); what pyulog skipped is "
+                    "missing from the log")
+        name = f"{name} (a damaged file)"  # (a topic lost to the damage is named missing: said so)
+    elif lines:
+        said.append(f"{name}: {first}")
+    if source.cut and not ulog.file_corruption:
+        said.append(f"{name}: the file ends inside a message (cut short: power lost, a full card, a partial copy?); "
+                    "the log is read up to its last whole message")
+    return ulog, name, said
+
+
+def _resampled(t, acc, rates, attitude, velocity, motors, order) -> dict:
+    """The FlightLog fields: every topic ((timestamps, values) pairs; the angular rates with
+    their derivative or None) interpolated to the acceleration's timestamps ``t`` [s], the
+    attitude normalised and every vector turned from PX4's FRD body and NED world into propmap's
+    FLU body frame (module docstring), the motor speeds from rpm to rad/s."""
+    tw, w_frd, deriv = rates
+    tq, q = attitude
+    tv, vel = velocity
+    tm, rpm = motors
 
     def at(tt, a):
         return np.column_stack([np.interp(t, tt, a[:, k]) for k in range(a.shape[1])])
@@ -291,14 +310,14 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
     q_i = at(tq, q)
     q_i /= np.linalg.norm(q_i, axis=1, keepdims=True)
     v_body = _rotate_ned_to_body(q_i, at(tv, vel)) * _FRD_TO_FLU
-    w = at(tw, rates) * _FRD_TO_FLU
+    w = at(tw, w_frd) * _FRD_TO_FLU
     # attitude as (x, y, z, w) of FLU body -> ENU-like z-up world: FRD->NED conjugated by the flips
     quat = np.column_stack([q_i[:, 1], -q_i[:, 2], -q_i[:, 3], q_i[:, 0]])
     omega = at(tm, rpm) * RPM
     return dict(t=t - t[0], angular_velocity=w,
                 angular_acceleration=None if deriv is None else at(tw, deriv) * _FRD_TO_FLU,
                 specific_force=acc * _FRD_TO_FLU, velocity=v_body, attitude=quat, rotor_omega=omega,
-                rotor_acceleration=None, motor_order=order), said
+                rotor_acceleration=None, motor_order=order)
 
 
 def _valid_velocity(ulog, name: str, said: list, tv, vel, error):
