@@ -164,7 +164,8 @@ def test_flight_samples_refuses_a_rate_above_10_khz_and_a_motor_lag_over_a_secon
 
 
 def test_decimation_rounds_the_step_and_the_rate_is_the_median_of_the_logs(quad):
-    """rate_hz: 'every k-th sample of a log, k = round(log rate / rate_hz)': 100 Hz at 30 Hz asked is k = 3 (not 4), 34
+    """rate_hz: 'every k-th sample of a log, k = round(log rate / rate_hz)': 100 Hz at 30 Hz asked is k = 3 (not 4, the
+    ceiling; 3 truncated too: tests/test_audit_split_helpers_2.py tells rounding from truncation at 35 Hz), 34
     of 100 samples at 33.33 Hz; the samples' rate is 'the median over the logs': with a 20 Hz log (k = 1) beside it,
     (33.33 + 20) / 2. Without a prediction in the logs, reference_mass is NaN per log."""
     veh, H = quad
