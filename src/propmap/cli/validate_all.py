@@ -48,10 +48,9 @@ def _reference_errors(data, prop, air):
     import numpy as np
 
     from ..core.airfoil import preset
-    from ..identify.load_data import STATIC_AIRSPEED
     from ..validation.catalogue import _coefficients, coefficient_errors
 
-    static = data.airspeed <= STATIC_AIRSPEED  # (as coefficient_errors and cross_validate take them)
+    static = data.static  # (as coefficient_errors and cross_validate take them)
     paper = coefficient_errors(data, prop, preset("gill2017-apc"), air=air, mask=~static)
     CT, CP = _coefficients(data, prop, air)
     CT0, CP0 = CT[static].mean(), CP[static].mean()

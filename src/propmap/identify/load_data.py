@@ -115,6 +115,13 @@ class LoadData:
         """Number of points N."""
         return self.omega.size
 
+    @property
+    def static(self) -> np.ndarray:
+        """Which points are static, shape (N,) of bool: an airspeed of at most
+        :data:`STATIC_AIRSPEED` (0.3 m/s: a stand's pitot noise), as the fits, the readers'
+        sign rules and the validation metrics take them."""
+        return self.airspeed <= STATIC_AIRSPEED
+
     def tip_mach(self, propeller, air) -> float:
         """The largest Mach number at a blade tip over the points, |(Omega R + V sin beta,
         V cos beta)| / a: the measure of the solver's TIP_MACH_WARN (core/_inputs.py).

@@ -17,7 +17,7 @@ from ..core.units import RPM
 from ..core.airfoil import Air
 from .csvfile import DataError
 from .stand import G0, LBF
-from .load_data import STATIC_AIRSPEED, LoadData, data_air, radians_hint
+from .load_data import LoadData, data_air, radians_hint
 
 __all__ = ["sanity_check", "SANITY_FACTOR", "SANITY_WARN", "RE75_FLOOR", "DRAG_SIGN_REFUSED"]
 
@@ -64,7 +64,7 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     best, where that is less than half the misfit of m/s (rms of (model - measured) over the
     largest measured thrust, at 3 moving points or more, the model scaled to the data's static
     thrust where the data have static points) and the misfit in m/s exceeds 0.1; else None."""
-    moving = data.airspeed > STATIC_AIRSPEED
+    moving = ~data.static
     if "thrust" not in data.measured or "thrust" not in checked or moving.sum() < 3:
         return None
     measured = data.measured["thrust"][moving]
@@ -74,7 +74,7 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
 
     # the model at the data's static level (the measured static thrust over the model's, in the median): a propeller
     # the generic set under-predicts was told its m/s airspeed matched better in knots (a user-level audit)
-    static = (data.airspeed <= STATIC_AIRSPEED) & np.isfinite(data.measured["thrust"]) & (np.abs(at_rpm.thrust) > 0)
+    static = data.static & np.isfinite(data.measured["thrust"]) & (np.abs(at_rpm.thrust) > 0)
     level = float(np.median(data.measured["thrust"][static] / at_rpm.thrust[static])) if static.any() else 1.0
     level = level if math.isfinite(level) and level > 0 else 1.0
 

@@ -109,7 +109,7 @@ def coefficient_errors(data, propeller: Propeller, params: SectionParams, *, air
     """
     air = model_air(params, air)
     CT, CP = _coefficients(data, propeller, air)
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     if not static.any():
         raise ValueError(f"coefficient_errors needs static points (airspeed up to {STATIC_AIRSPEED:g} m/s) to "
                          "normalise by")
@@ -138,7 +138,7 @@ def rpm_groups(data) -> list[list[str]]:
     list of list of str
         The sweeps' group names, one list per rotation rate.
     """
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     sweeps = [g for g in dict.fromkeys(data.group) if not np.all(static[data.group == g])]
     rate = {g: float(np.mean(data.omega[data.group == g])) for g in sweeps}
     groups: list[list[str]] = []
@@ -152,7 +152,7 @@ def rpm_groups(data) -> list[list[str]]:
 
 def _splits(data, protocol: str):
     """(train mask, test mask) pairs of a protocol (every test mask holds sweep points only)."""
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     groups = rpm_groups(data)
     if protocol == "loso":
         return [(data.group != g, data.group == g) for grp in groups for g in grp]
@@ -217,7 +217,7 @@ def cross_validate(data, propeller: Propeller, generic: SectionParams, *, protoc
     bad = [p for p in protocols if p not in PROTOCOLS]
     if bad:
         raise ValueError(f"unknown protocol(s) {', '.join(bad)}; valid: {', '.join(PROTOCOLS)}")
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     if not static.any() or len(rpm_groups(data)) < 2:
         raise ValueError("cross_validate needs static points and sweeps at two rotation rates at least")
     CT, CP = _coefficients(data, propeller, air)

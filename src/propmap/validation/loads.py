@@ -58,11 +58,10 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         From the model.
     """
     from ..identify import FitOptions, fit_loads
-    from ..identify.load_data import STATIC_AIRSPEED
 
     air = model_air(base, air, name="base")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     if missing or not static.any():
         raise ValueError(f"holdout_loads needs thrust, drag and torque and static points; missing "
                          f"{', '.join(missing) or 'static points'}")
@@ -148,7 +147,7 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     D = propeller.diameter
     scale = {"thrust": air.rho * n**2 * D**4, "drag": air.rho * n**2 * D**4, "torque": air.rho * n**2 * D**5}
     model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
-    static = data.airspeed <= STATIC_AIRSPEED
+    static = data.static
     coeff = {k: data.measured[k] / scale[k] for k in keys}
     inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
     reference = {}
