@@ -19,7 +19,8 @@ ROOT = Path(propmap.__file__).parent
 KNOWN_CYCLES = []
 #: layers: a module may import its own layer and those below it
 LAYERS = {"core": 0, "io": 1, "cli": 3, "__main__": 3}
-LEAVES = {"vehicle": {"identify", "maps", "rotormap", "export_c", "simexport", "validation", "cases", "plots"}}
+LEAVES = {"vehicle": {"identify", "maps", "rotormap", "mapresults", "export_c", "simexport", "validation", "cases",
+                       "plots"}}
 
 
 def _modules() -> dict[str, tuple[Path, bool]]:
