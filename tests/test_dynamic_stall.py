@@ -236,7 +236,7 @@ def test_loads_against_an_independent_full_circle(apce8x6, rpm, mu, incidence_de
            s3[:, None])
     qT, qH, cdpU = element(UT, UP, *geo, *pk[:6], pk[6] + shift / s2[:, None], pk[7])
     w, cf = nd.w, nd.cfac
-    radial = pk[PK_RADIAL_DRAG] * cdpU * Vb * cp  # the radial flow's drag u_R = V_b cos psi (_annulus.annulus_loads)
+    radial = pk[PK_RADIAL_DRAG] * cdpU * Vb * cp  # the radial drag, u_R = V_b cos psi (_annulus_loads.annulus_loads)
     full = {"thrust": np.sum(w * cf * qT.mean(1)), "torque": np.sum(w * y * cf * qH.mean(1)),
             "rolling_moment": np.sum(w * y * cf * (qT * sp).mean(1)),
             "pitching_moment": np.sum(w * y * cf * (-qT * cp).mean(1)),

@@ -52,7 +52,8 @@ def test_sibling_imports_sees_both_import_forms(tmp_path):
 
 def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     names = {p.name for p in _jitcache.KERNEL_SOURCES}
-    assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_momentum.py", "_fastmath.py", "_flags.py"}
+    assert names == {"_kernel.py", "_annulus.py", "_physics.py", "_momentum.py", "_fastmath.py", "_flags.py",
+                     "_annulus_loads.py"}
     sensitivity = names | {"_sensitivity.py", "_momentum_sensitivity.py", "_parameter_sensitivity.py",
                            "_delayed_sensitivity.py", "_tangents.py", "_swirl_sensitivity.py"}
     assert {p.name for p in _jitcache.SENSITIVITY_SOURCES} == sensitivity
@@ -60,6 +61,7 @@ def test_the_stamp_covers_every_module_the_kernel_compiles_in(tmp_path):
     core = SRC / "core"
     assert _sibling_imports(core / "_kernel.py") | {"_kernel.py"} <= names
     assert _sibling_imports(core / "_annulus.py") <= names
+    assert _sibling_imports(core / "_annulus_loads.py") <= names
     assert _sibling_imports(core / "_flags.py") <= names
     assert _sibling_imports(core / "_sensitivity.py") <= sensitivity
     assert _sibling_imports(core / "_momentum_sensitivity.py") <= names

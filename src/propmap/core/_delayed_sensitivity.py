@@ -6,7 +6,7 @@ With ``RotorOptions.dynamic_stall`` (the cambered section, the uniform inflow, i
 flow) every half-circle node and its mirror node pass through the delayed element
 (_physics.make_delayed_cambered_element): the pair's mean loads give T, D, Q, M_R as the static
 element's do, and half their difference the side force Y and the pitching moment M_P
-(_annulus.annulus_loads: dY/dy = (cfac / naz) sum sg cos psi (kr C_D,p,h U sin psi - qH,h),
+(_annulus_loads.annulus_loads: dY/dy = (cfac / naz) sum sg cos psi (kr C_D,p,h U sin psi - qH,h),
 dM_P/dy = -(y cfac / naz) sum sg cos psi qT,h, sg the sign of U_P V_b, kr the radial drag's
 factor times V_b). Beyond U_T, U_P, the blade angle and the section constants, the delay
 d = kd sqrt(|U_P V_b cos psi|) / U^1.5 depends on the annulus' kd = gamma sqrt(c Omega / 2)

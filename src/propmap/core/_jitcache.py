@@ -1,7 +1,8 @@
 """The compiled kernels' disk cache, keyed on every module each kernel compiles in.
 
 numba stamps a cached function with a hash of the file that defines it only. The solver
-kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py``) inlines functions from
+kernel (``_kernel.py``, with the annuli's root solve of ``_annulus.py`` and their loads of
+``_annulus_loads.py``) inlines functions from
 ``_physics.py``, ``_momentum.py`` and ``_fastmath.py`` and calls those of ``_flags.py``, and the sensitivity
 kernel (``_sensitivity.py``, calling the momentum side's partials of
 ``_momentum_sensitivity.py`` and inlining the elements' partials of ``_tangents.py`` and the
@@ -35,7 +36,7 @@ __all__ = ["CACHE", "CACHE_FALLBACK", "INTERP_SOURCES", "KERNEL_SOURCES", "LINEA
 _HERE = Path(__file__).resolve().parent
 #: the files whose code the compiled solver kernel contains
 KERNEL_SOURCES = (_HERE / "_kernel.py", _HERE / "_annulus.py", _HERE / "_physics.py", _HERE / "_momentum.py",
-                  _HERE / "_fastmath.py", _HERE / "_flags.py")
+                  _HERE / "_fastmath.py", _HERE / "_flags.py", _HERE / "_annulus_loads.py")
 #: the files whose code the compiled sensitivity kernel contains
 SENSITIVITY_SOURCES = (_HERE / "_sensitivity.py", _HERE / "_momentum_sensitivity.py",
                        _HERE / "_parameter_sensitivity.py", _HERE / "_delayed_sensitivity.py", _HERE / "_tangents.py",

@@ -11,7 +11,8 @@ import numba
 import numpy as np
 
 from ._annulus import (_FM, CAMBERED, NO_SWIRL_BALANCE, OK, _cambered_annulus, _inflow_gradients, _skew_inflow_ratio,
-                       _swirl_step, _swirl_target, annulus_loads, delay_factor, solve_annuli)
+                       _swirl_step, _swirl_target, delay_factor, solve_annuli)
+from ._annulus_loads import annulus_loads
 from ._flags import point_flags
 from ._jitcache import CACHE  # before the decorators: installs the cache locators
 from ._physics import NODE_CFAC, NODE_CTH, NODE_CY2, NODE_SC, NODE_STH, NODE_TH, NODE_W, NODE_Y

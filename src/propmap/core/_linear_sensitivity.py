@@ -14,7 +14,7 @@ annulus' mean inflow v solves
 (eq 11 with the linear inflow at every azimuth node; with RotorOptions.inplane_induction the
 blades' in-plane airspeed is V sin(beta) + u_x(v, V sin beta, V cos beta), the skewed wake's
 in-plane induction at the annulus' mean inflow v, as in the kernel). Its loads L(v, x, g) (T, D, Q, M_R, the
-side force Y and the pitching moment M_P, _annulus.annulus_loads) change with an input or a
+side force Y and the pitching moment M_P, _annulus_loads.annulus_loads) change with an input or a
 section parameter x as (the implicit function theorem on each annulus' converged root, as
 core/_sensitivity.py does for the uniform inflow; A. Ning, "Using blade element momentum
 methods with gradient-based design optimization", Structural and Multidisciplinary
@@ -42,7 +42,7 @@ inflow's), weighted by each variable's chain (:func:`_input_partials`). Those in
 parameters and the density's Reynolds constant start from the constants stepped by the caller
 (one-sided, as for the uniform inflow): for the cambered section the element's derivative along
 that change, one evaluation per node (:func:`_direction_partials`), for the paper's the
-annulus' loads at the stepped constants less the base (_annulus.annulus_loads: the blade's
+annulus' loads at the stepped constants less the base (_annulus_loads.annulus_loads: the blade's
 sums). The momentum side's are _momentum_sensitivity's (analytic but at the empirical descent
 model's switch; its loss factor's partial in u is that in Omega divided by -y). The gradients'
 own partials k_mu, k_lambda are central differences of _momentum.inflow_gradients (step 1e-6),
@@ -56,7 +56,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, _skew_inflow_ratio, annulus_loads
+from ._annulus import _FM, CAMBERED, GILL_SINCOS, _inflow_gradients, _skew_inflow_ratio
+from ._annulus_loads import annulus_loads
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_derivatives, _rest_slope
 from ._physics import PK_INPLANE, PK_RADIAL_DRAG
@@ -106,7 +107,7 @@ def _k_partials(mu, lam, inflow):
 
 @numba.njit(cache=CACHE, error_model="numpy", fastmath=_FM)  # called, not inlined: compiled once, not 20 times
 def _loads(v, y, Om, us, Vs, Vc, th, sec, cfac, azim, gx, gy, naz, model, pk):
-    """The annulus' six load densities over the nodes of ``azim`` (_annulus.annulus_loads, with
+    """The annulus' six load densities over the nodes of ``azim`` (_annulus_loads.annulus_loads, with
     the swirl ``us``)."""
     return annulus_loads(v, y, Om, us, Vs, Vc, (th, np.sin(th), np.cos(th)), sec, cfac, azim, gx, gy, naz, model, pk,
                          False)

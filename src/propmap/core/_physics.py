@@ -54,7 +54,7 @@ CAMBERED = 2
 #   cambered: alpha_L0, cd90, cd_min, cd2, cl_cdmin, M, stall angle above and below
 #             the zero-lift line (cl_max / cl_alpha, cl_min / cl_alpha)
 # and, for both, at PK_RADIAL_DRAG the factor on the radial flow's drag (1: RotorOptions.radial_drag,
-# 0: off), which only the loads read (_annulus.annulus_loads), not the element, and at PK_INPLANE
+# 0: off), which only the loads read (_annulus_loads.annulus_loads), not the element, and at PK_INPLANE
 # the factor on the skewed wake's in-plane induced velocity (1: RotorOptions.inplane_induction, 0: off;
 # :func:`inplane_induction`), which the residual and the loads add to the blades' in-plane airspeed
 PK_RADIAL_DRAG = 8
@@ -296,7 +296,7 @@ def make_delayed_cambered_element(atan2, exp_sat, halves=False):
 def make_profile_drag(atan2, stall_blend):
     """Return the profile (attached-flow) drag coefficient of either element, using the given
     arctangent and stall blend (:func:`make_stall_blend`): the part of C_D that the radial flow's drag scales
-    (airfoil.RotorOptions.radial_drag; _annulus.annulus_loads)."""
+    (airfoil.RotorOptions.radial_drag; _annulus_loads.annulus_loads)."""
 
     def profile_cd(UT, UP, theta, s0, s1, s2, s3, model, pk):
         """The element's friction and profile drag coefficient, without the pressure drag of stall.

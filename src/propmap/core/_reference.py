@@ -172,7 +172,7 @@ def _solve_u(om, Vs, Vc, nodes, p, air, u):
         qT, qH, cdpU = elem(UT, (Vc2 + v)[:, :, None], Vb)
     axial = (np.asarray(Vs) == 0)[:, None]
     dT = cfac * qT.mean(axis=2)
-    with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus.annulus_loads)
+    with np.errstate(invalid="ignore", divide="ignore"):  # the radial flow's drag (_annulus_loads.annulus_loads)
         radial = pk[PK_RADIAL_DRAG] * cdpU * Vb * cospsi**2
     dD = np.where(axial, 0.0, cfac * (qH * sinpsi + radial).mean(axis=2))
     dQ = nodes.y[None, :] * cfac * qH.mean(axis=2)

@@ -68,7 +68,7 @@ node's, with the half circle's mean sin(psi) (0) and mean sin(psi)^2 as the weig
 that D and M_R change with V sin beta there and with nothing else.
 
 The radial flow's drag (airfoil.RotorOptions.radial_drag, pk[PK_RADIAL_DRAG] = 1) adds
-V sin(beta) times the node sums of C_D,p U cos^2 psi to D (_annulus.annulus_loads; C_D,p the
+V sin(beta) times the node sums of C_D,p U cos^2 psi to D (_annulus_loads.annulus_loads; C_D,p the
 profile drag). It depends on the inputs through U_T, U_P, the blade angle and the section
 constants, as the element does, so the element's partials carry C_D,p U's as a third value
 (and the section parameters' passes the element's own, _physics.make_element's ``profile``);
