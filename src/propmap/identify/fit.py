@@ -90,7 +90,7 @@ def _unit_notes(data: LoadData, propeller, keys, air: Air) -> list[str]:
     STATIC_CQ_RANGE, or is negative: a quantity in other units than N and N m (the fit divides each
     quantity by its own RMS, so such a quantity fits without an error and is, in effect, left out)
     or of the other sign."""
-    static = (data.airspeed <= STATIC_AIRSPEED) & (data.omega >= OMEGA_MIN)
+    static = data.static & (data.omega >= OMEGA_MIN)
     notes = []
     if not static.any():
         return notes
@@ -149,8 +149,8 @@ def _data_kind(data: LoadData) -> str:
     STATIC_RPM_SPAN in rpm), "few_rates" (moving points at < MIN_RATES_FOR_RE
     rotation rates, :func:`_sweep_rates`, and no static run spanning STATIC_RPM_SPAN, within a
     relative 1e-6 so that a unit's rounding does not decide) or "rates"."""
-    moving = data.airspeed > STATIC_AIRSPEED
-    static = data.omega[~moving]
+    moving = ~data.static
+    static = data.omega[data.static]
     spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN * (1.0 - 1e-6)
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
@@ -179,7 +179,7 @@ def _sweep_rates(data: LoadData) -> int:
     finer than 3% count by the span they cover (all 147 catalogue propellers count as with the
     neighbouring points compared, the rule before 2026-11-26). Points at most STATIC_AIRSPEED
     are static."""
-    moving = data.airspeed > STATIC_AIRSPEED
+    moving = ~data.static
     if not moving.any():
         return 0
     w, g = data.omega[moving], data.group[moving]
@@ -404,7 +404,7 @@ def _traced_residuals(result: FitResult, data: LoadData, keys) -> FitResult:
     passed without a word)."""
     rows = _fitted_rows(data, keys)
     r = np.asarray(result.residuals, float)[:sum(int(m.sum()) for m in rows.values())]
-    moving = (data.airspeed > STATIC_AIRSPEED) & bool(np.any(data.incidence > 0))  # (axial data: no angle said)
+    moving = ~data.static & bool(np.any(data.incidence > 0))  # (axial data: no angle said)
     labels = [f"{k}, {data.group[j]}, {data.omega[j] / RPM:.0f} rpm, {data.airspeed[j]:.3g} m/s"
               + (f" at {math.degrees(data.incidence[j]):.3g} deg" if moving[j] else "")
               for k in keys for j in np.flatnonzero(rows[k])]

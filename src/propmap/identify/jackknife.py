@@ -12,7 +12,7 @@ import numpy as np
 
 from ..core.solver import SolverError
 from .fit import fit_loads
-from .load_data import STATIC_AIRSPEED, LoadData
+from .load_data import LoadData
 from .dependence import jackknife_report
 from .result import FitResult
 
@@ -22,8 +22,8 @@ __all__ = ["jackknife_loads", "jackknife_runs"]
 def jackknife_runs(data: LoadData) -> list:
     """The runs a load fit's jackknife leaves out.
 
-    Every run (``data.group``), or only the sweeps (runs with an airspeed above
-    STATIC_AIRSPEED) where static runs are in the data too: the static run is not one of a
+    Every run (``data.group``), or only the sweeps (runs with a point that is not
+    ``data.static``) where static runs are in the data too: the static run is not one of a
     kind with them (it alone holds J = 0), and a fit without it is another estimator, not the
     same one on less data (a sweep jackknife of apce_8x6 gives cd_min 0.0033, one leaving the
     static run out too 0.0068, 2026-11-27).
@@ -39,7 +39,8 @@ def jackknife_runs(data: LoadData) -> list:
     """
     group = np.asarray(data.group)
     runs = list(dict.fromkeys(group.tolist()))
-    moving = [r for r in runs if np.any(data.airspeed[group == r] > STATIC_AIRSPEED)]
+    static = data.static
+    moving = [r for r in runs if not np.all(static[group == r])]
     return moving if moving and len(moving) < len(runs) else runs
 
 
