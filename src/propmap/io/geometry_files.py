@@ -1,7 +1,9 @@
 """Readers for propeller geometry files (io/readers.py has the measurement files).
 
 * UIUC Propeller Data Site (Brandt & Selig, AIAA 2011-1255) geometry ``r/R c/R beta``.
-* APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915).
+* APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915): io/pe0.py's
+  reader, re-exported here; :func:`read_geometry` chooses between the two by the file's text.
+  The checks of the stations that both share are io/blade_stations.py's.
 
 Every reader raises :class:`GeometryFileError` (a ValueError) with a one-line message naming
 the file, the line where known and, for a value out of range, the valid range: UIUC r/R in
@@ -28,16 +30,14 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller, rotor_like
-from .inputs import (_check_column, _check_number, _clip, _line_of, _read_table, _read_text, as_path,
-                     parse_number, show_path)
+from .blade_stations import (FIRST_STATION_MAX, LAST_STATION_MIN, LAST_STATION_REFUSED, GeometryFileError,
+                             _refuse_short_blade, _warn_partial_blade)
+from .inputs import _check_column, _check_number, _clip, _read_table, _read_text, as_path, show_path
+from .pe0 import _apc_pe0, read_apc_pe0
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
            "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "name_without_blade_angle",
-           "size_in_inches_from_name"]
-
-
-class GeometryFileError(ValueError):
-    """A geometry file is malformed; the message names the file and the problem."""
+           "size_in_inches_from_name", "FIRST_STATION_MAX", "LAST_STATION_MIN", "LAST_STATION_REFUSED"]
 
 
 #: what a diameter-less geometry file needs (a vehicle file says it in its own key: vehicle/file.py)
@@ -50,14 +50,6 @@ NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
 #: the largest c/R of a UIUC file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
 #: APC's 66 PE0 files in the shared data: 0.161-0.235): a chord in inches gave 3.4x the thrust, c/D half
 CHORD_MAX_PLAUSIBLE = (0.12, 0.6)
-#: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)
-LAST_STATION_MIN = 0.9
-#: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of
-#: the thrust, would be the end polynomials' guess (a blade measured to 0.49 R made 7 times its thrust)
-LAST_STATION_REFUSED = 0.7
-#: a UIUC file whose first station lies outside this r/R is warned: the blade inside it makes no load (the
-#: 147 catalogue propellers' files start at 0.15-0.30; a 10 in blade from 0.85 R: 20% of its thrust)
-FIRST_STATION_MAX = 0.4
 #: a name's size ``<D>x<P>``; D not after a digit, point or comma: ``kp_4,9x3,1`` (a decimal comma) gives no size,
 #: not 9 in (taken silently from a data file's name and the geometry file's; a mutation audit, 2026-11-29)
 _NAME_RE = re.compile(r"(?<![\d.,])(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
@@ -293,28 +285,6 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     return prop
 
 
-def _refuse_short_blade(where: str, r_over_R) -> None:
-    """Refuse stations that stop inside LAST_STATION_REFUSED (UIUC and PE0 files alike)."""
-    if len(r_over_R) >= 2 and r_over_R[-1] < LAST_STATION_REFUSED:
-        raise GeometryFileError(f"{where}: the stations stop at r/R = {r_over_R[-1]:.4g}: the outer blade, which makes "
-                                f"most of the thrust, is not given (at least r/R = {LAST_STATION_REFUSED:g} is needed; "
-                                "is the r/R column radii in another unit?)")
-
-
-def _warn_partial_blade(where: str, r_over_R) -> None:
-    """Warn of stations that stop inside LAST_STATION_MIN or start outside FIRST_STATION_MAX (UIUC
-    and PE0 files alike; a PE0 file was not checked: a blade cut at 0.59 R made 20% more thrust
-    without a word, a user-level audit)."""
-    if r_over_R[-1] < LAST_STATION_MIN:
-        warnings.warn(f"{where}: the stations stop at r/R = {r_over_R[-1]:.4g}: the blade from there to the tip is "
-                      "extrapolated from the last stations (chord and blade angle); give stations to r/R = 1",
-                      UserWarning, stacklevel=4)
-    if r_over_R[0] > FIRST_STATION_MAX:
-        warnings.warn(f"{where}: the stations start at r/R = {r_over_R[0]:.4g}: the blade inside it makes no load "
-                      "(the loads integrate from the first station; the catalogue's files start at 0.15-0.30); give "
-                      "stations from the hub", UserWarning, stacklevel=4)
-
-
 #: the coefficient of variation of r tan(beta) over 0.3-1 R below which radian-valued blade
 #: angles make a propeller's near-constant pitch (the 108 catalogue propellers: <= 0.185;
 #: an untwisted rotor: 0.32)
@@ -334,160 +304,6 @@ def _looks_like_radians(r_over_R, beta) -> bool:
 
 
 #: the ranges of a PE0 file's RADIUS [in] and BLADES
-_PE0_RADIUS_IN = (0.25, 50.0)
-_PE0_MAX_BLADES = 100
-
-
-def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propeller:
-    """Read an APC PE0 geometry file (STATION [in], CHORD [in], ..., TWIST [deg]).
-
-    The blade angle is APC's TWIST column (LE-TE datum); RADIUS and BLADES come from
-    the file's summary lines.
-
-    Parameters
-    ----------
-    path : str or Path
-    name, source : str, optional
-
-    Returns
-    -------
-    Propeller
-
-    Raises
-    ------
-    GeometryFileError
-        Not a readable regular file (or over 16 MiB), no station table, a malformed or
-        non-finite table value (naming the line and column), no RADIUS or BLADES line, a
-        RADIUS that is not a number in [0.25, 50] in, BLADES not an integer in [1, 100],
-        TWIST outside [-90, 90] deg, or invalid geometry (stations not increasing or
-        beyond RADIUS (by more than half its last printed digit: APC prints RADIUS rounded, and
-        a last STATION within that is taken as the radius), negative chord).
-    """
-    text = _read_text(path, GeometryFileError)
-    return _apc_pe0(Path(path), text, name=name, source=source)
-
-
-#: the columns of a PE0 station row (STATION, CHORD, ..., TWIST)
-PE0_COLUMNS = 13
-
-
-def _pe0_table_continues(lines, end: int, where: str) -> None:
-    """Refuse a station table that a damaged row (blank, short, decimal commas) cut short: a
-    station row of PE0_COLUMNS numbers after the line ``end`` that ended it, before the file's next
-    header-like line (an input fuzzing audit, 2026-11-27: the rows after a blank line near the
-    tip were dropped and the tip extrapolated without a word)."""
-    for k in range(end + 1, len(lines) + 1):
-        parts = lines[k - 1].split()
-        if any(re.match(r"[A-Za-z]", x) for x in parts):
-            return  # the next section
-        try:
-            vals = [parse_number(x) for x in parts]
-        except ValueError:
-            continue
-        if len(vals) >= PE0_COLUMNS:
-            raise GeometryFileError(f"{where}, line {end}: the station table breaks off here (a blank, short or "
-                                    f"malformed row) and goes on at line {k}: repair line {end}")
-
-
-def _pe0_summary(text: str, key: str, where: str) -> tuple[str, int]:
-    m = re.search(rf"{key}:[ \t]*(\S*)", text)
-    if not m:
-        raise GeometryFileError(f"{where}: {key} line missing (RADIUS and BLADES are needed)")
-    return m.group(1), _line_of(text, m.start())
-
-
-def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
-    where = show_path(path)
-    rows, row_lines, header = [], [], []
-    in_table = False
-    lines = io.StringIO(text, newline=None).readlines()
-    end = None  # the line that ended the station table
-    for k, ln in enumerate(lines, start=1):
-        parts = ln.split()
-        if "STATION" in parts and "TWIST" in parts:
-            in_table, header = True, parts
-            continue
-        if not in_table:
-            continue
-        vals = []
-        bad = None
-        for x in parts:
-            try:
-                vals.append(parse_number(x))
-            except ValueError:
-                bad = x
-                break
-        if bad is not None:
-            if len(parts) >= PE0_COLUMNS and vals:  # a station row (it starts with a number) with a bad value
-                raise GeometryFileError(f"{where}, line {k}: non-numeric value {_clip(bad, 40)} in the station table")
-            if rows:
-                end = k
-                break
-            continue  # the units line under the header
-        if len(vals) >= PE0_COLUMNS:
-            for j, v in enumerate(vals):
-                if not math.isfinite(v):
-                    col = header[j][:20] if j < len(header) else "?"
-                    raise GeometryFileError(f"{where}, line {k}: column {j + 1} ({col}) is {_clip(parts[j], 40)}, "
-                                            "not a finite number")
-            rows.append(vals[:PE0_COLUMNS])
-            row_lines.append(k)
-        elif rows:
-            end = k
-            break
-    if not rows:
-        raise GeometryFileError(f"{where}: no STATION/CHORD/.../TWIST table found")
-    if end is not None:
-        _pe0_table_continues(lines, end, where)
-    r_raw, r_line = _pe0_summary(text, "RADIUS", where)
-    b_raw, b_line = _pe0_summary(text, "BLADES", where)
-    try:
-        radius_in = parse_number(r_raw)
-    except ValueError:
-        raise GeometryFileError(f"{where}, line {r_line}: RADIUS {_clip(r_raw, 40)} is not a number") from None
-    lo, hi = _PE0_RADIUS_IN
-    if not (math.isfinite(radius_in) and lo <= radius_in <= hi):
-        raise GeometryFileError(f"{where}, line {r_line}: RADIUS {_clip(r_raw, 40)} in is outside [{lo:g}, {hi:g}] in")
-    if not (b_raw.isascii() and b_raw.isdigit() and len(b_raw) <= 3 and 1 <= int(b_raw) <= _PE0_MAX_BLADES):
-        raise GeometryFileError(f"{where}, line {b_line}: BLADES {_clip(b_raw, 40)} is not an integer in "
-                                f"[1, {_PE0_MAX_BLADES}]")
-    data = np.array(rows)
-    twist = data[:, 7]
-    if np.any(np.abs(twist) > 90):
-        i = int(np.argmax(np.abs(twist) > 90))
-        raise GeometryFileError(f"{where}, line {row_lines[i]}: TWIST = {twist[i]:g} deg is outside [-90, 90] deg")
-    station, chord = data[:, 0], data[:, 1]
-    # RADIUS is printed rounded (42x2-PERF.PE0: RADIUS 2.09 and a last STATION 2.0915 in): a station
-    # beyond it by up to half its last printed digit is the tip, and the radius is taken there
-    digits = r_raw.split(".")[1] if "." in r_raw and r_raw.split(".")[1].isdigit() else ""
-    rounding = 0.5 * 10.0 ** -len(digits) if digits else 0.0
-    # (at exactly half a digit too: 2.09 + 0.005 is 2.0949999999999998 in floating point)
-    if radius_in < station[-1] <= radius_in + rounding * (1 + 1e-9):
-        radius_in = float(station[-1])
-    for label, values, (lo, hi) in (("STATION", station, (0.0, radius_in * (1 + 1e-9))),
-                                    ("CHORD", chord, (0.0, radius_in))):
-        bad = ~((values >= lo) & (values <= hi)) | ((values == 0) & (label == "STATION"))
-        if bad.any():
-            i = int(np.argmax(bad))
-            raise GeometryFileError(f"{where}, line {row_lines[i]}: {label} = {values[i]:g} in is outside "
-                                    f"{'(0' if label == 'STATION' else '[0'}, {radius_in:g}] in (RADIUS)")
-    if np.any(np.diff(station) <= 0):
-        i = int(np.argmax(np.diff(station) <= 0)) + 1
-        raise GeometryFileError(f"{where}, line {row_lines[i]}: STATION = {station[i]:g} in does not increase "
-                                f"(previous {station[i - 1]:g} in)")
-    R = radius_in * INCH
-    pitch = float(np.median(data[:, 2])) * INCH  # QUOTED pitch column [in]
-    _refuse_short_blade(where, station / radius_in)
-    try:
-        prop = Propeller(name=name or path.name.replace("-PERF.PE0", ""), radius=R, n_blades=int(b_raw),
-                         r=data[:, 0] * INCH, chord=data[:, 1] * INCH, theta=np.radians(twist),
-                         pitch=pitch, source=source or f"APC Propellers PE0 geometry file {path.name}")
-    except ValueError as exc:
-        raise GeometryFileError(f"{where}: {exc}") from None
-    _warn_partial_blade(where, station / radius_in)
-    return prop
-
-
 def _format(text: str) -> str | None:
     """``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text."""
     head = text[:4000]
