@@ -235,6 +235,24 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     """The N x 41 array of a NeuroBEM CSV (columns by its header, else by position) and each row's
     line in the file (1-based, for messages)."""
     text = decode_input_text(raw, p, FlightLogError)
+    lines, first = _csv_lines(text, name)
+    skip, order = _csv_columns(lines, first, name)
+    numbered, a = _csv_numbers(lines, skip, name)
+    if a.shape[1] <= max(order) or (skip == first and a.shape[1] != len(NEUROBEM_COLUMNS)):
+        # without a header the columns are the layout's by position: another count (an index column) shifts them
+        raise FlightLogError(f"{name}: {a.shape[1]} columns; the NeuroBEM layout has {len(NEUROBEM_COLUMNS)} "
+                             f"(or a header naming them)")
+    out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)
+    for k, j in enumerate(order):
+        if j >= 0:
+            out[:, k] = a[:, j]
+    return out, [n for n, _ in numbered]
+
+
+def _csv_lines(text: str, name: str) -> tuple[list[str], int]:
+    """The CSV's lines, a header written as a comment uncommented and a trailing comma on every line
+    taken off, and the index of its first line that is not blank or a comment (the header, or the
+    first data row)."""
     lines = text.splitlines()
     # a header written as a comment ('# t,ang acc x,...': numpy.savetxt's header) is the header (skipped as a comment,
     # the columns were read by position without a word: a review)
@@ -257,6 +275,13 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
         # (a spreadsheet's trailing comma on every line, the header's too or not: it was refused as a 42nd column)
         lines = lines[:first] + [line.rstrip()[:-1] if line.rstrip().endswith(",") and not line.lstrip().startswith("#")
                                  else line for line in lines[first:]]
+    return lines, first
+
+
+def _csv_columns(lines: list[str], first: int, name: str) -> tuple[int, list[int]]:
+    """Where the data rows start (the index of the first line after a header) and the CSV column of
+    each of the layout's columns (-1: absent): by the header's names, else by position; a header of
+    another separator, without the layout's columns, with a fifth motor or a column twice refused."""
     head = [c.strip().strip('"').lower() for c in lines[first].split(",")]
     skip = first
     order = list(range(len(NEUROBEM_COLUMNS)))
@@ -288,6 +313,12 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
         if dup:
             raise FlightLogError(f"{name}: column(s) {', '.join(dup)} appear twice in the header") from None
         order = [head.index(c) if c in head else -1 for c in NEUROBEM_COLUMNS]
+    return skip, order
+
+
+def _csv_numbers(lines: list[str], skip: int, name: str) -> tuple[list[tuple[int, str]], np.ndarray]:
+    """The data lines from index ``skip`` on (with their 1-based line numbers) and their numbers;
+    a row of another column count or a cell that is not numeric refused, naming its line."""
     # the data lines with their numbers in the file (1-based), so that an error names the file's line
     numbered = [(k + 1, line) for k, line in enumerate(lines) if k >= skip and line.strip()
                 and not line.lstrip().startswith("#")]
@@ -307,15 +338,7 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
             raise FlightLogError(f"{name}: line {numbered[int(row.group(1))][0]}: not numeric "
                                  f"({msg.replace(row.group(0), '').rstrip('.')})") from None
         raise FlightLogError(f"{name}: not a numeric CSV after line {skip} ({msg})") from None
-    if a.shape[1] <= max(order) or (skip == first and a.shape[1] != len(NEUROBEM_COLUMNS)):
-        # without a header the columns are the layout's by position: another count (an index column) shifts them
-        raise FlightLogError(f"{name}: {a.shape[1]} columns; the NeuroBEM layout has {len(NEUROBEM_COLUMNS)} "
-                             f"(or a header naming them)")
-    out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)
-    for k, j in enumerate(order):
-        if j >= 0:
-            out[:, k] = a[:, j]
-    return out, [n for n, _ in numbered]
+    return numbered, a
 
 
 def _neurobem(a: np.ndarray, p: Path, name: str, lines=None) -> FlightLog:
