@@ -92,22 +92,11 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     squares to the full model over the envelope, each within its physical sign, and each
     load's error against the full model is reported (docs/simulators.md).
     """
-    import warnings
     from dataclasses import replace
 
-    from ..simexport import ALIASES, export_sim, report_path, write_export
+    from ..simexport import export_sim, report_path, write_export
 
-    if target == "gill2019":
-        warnings.warn("--target gill2019 is now called multinomial: its term set is propmap's, not the list of "
-                      "Gill & D'Andrea 2019", UserWarning, stacklevel=1)
-    target = ALIASES.get(target, target)
-    if out.suffix.lower() != SUFFIX[target]:
-        raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
-    if out.name.lower().endswith(".report.json"):  # (it wrote over another export's report; write_export says so too)
-        raise InputError(f"--out: {out}: a name ending in .report.json is an export's report (written beside its "
-                         "coefficient file); name the coefficient file otherwise")
-    if not 20 <= n_points <= 1_000_000:
-        raise InputError(f"--points must be in [20, 1000000], got {n_points}")
+    target = _checked_target(target, out, n_points)
     check_outputs([("--out", out), ("--out (report)", report_path(out))],
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
@@ -151,6 +140,34 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         res.meta["citation"] = cited
     files = write_export(res, out, vehicle=veh if target == "rotorpy" else None,
                          vehicle_label=str(vehicle) if vehicle is not None else "", airframe_label=airframe)
+    _echo_export(res, target, f"{propeller.name} ({label})", cited, as_json)
+    click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
+
+
+def _checked_target(target: str, out, n_points: int) -> str:
+    """The export's target by its current name (``gill2019`` warned of as ``multinomial``), refusing an
+    ``--out`` not named for it or named as a report, and a ``--points`` out of [20, 1000000]."""
+    import warnings
+
+    from ..simexport import ALIASES
+
+    if target == "gill2019":
+        warnings.warn("--target gill2019 is now called multinomial: its term set is propmap's, not the list of "
+                      "Gill & D'Andrea 2019", UserWarning, stacklevel=1)
+    target = ALIASES.get(target, target)
+    if out.suffix.lower() != SUFFIX[target]:
+        raise InputError(f"--out: {out}: the {target} file is named *{SUFFIX[target]}")
+    if out.name.lower().endswith(".report.json"):  # (it wrote over another export's report; write_export says so too)
+        raise InputError(f"--out: {out}: a name ending in .report.json is an export's report (written beside its "
+                         "coefficient file); name the coefficient file otherwise")
+    if not 20 <= n_points <= 1_000_000:
+        raise InputError(f"--points must be in [20, 1000000], got {n_points}")
+    return target
+
+
+def _echo_export(res, target: str, what: str, cited: str | None, as_json: bool) -> None:
+    """The export's coefficients and errors against the full model, as JSON or text (``what``: the
+    propeller and its parameter set)."""
     if as_json:
         echo_json({"target": target, "coefficients": res.coefficients, "fixed_at_zero": res.fixed,
                    "citation": res.meta.get("citation"),
@@ -159,15 +176,13 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                    "errors": {k: ({kk: vv for kk, vv in v.items() if not (isinstance(vv, float) and math.isnan(vv))}
                                   if isinstance(v, dict) else v) for k, v in res.errors.items()}})
     else:
-        click.echo(f"{target} coefficients of {propeller.name} ({label}):"
-                   + (f"\n  (data: {cited})" if cited else ""))
+        click.echo(f"{target} coefficients of {what}:" + (f"\n  (data: {cited})" if cited else ""))
         for k, v in res.coefficients.items():
             click.echo(f"  {k} = {v}")
         from ..simexport import error_lines
 
         for line in error_lines(res):
             click.echo(line[1:])  # the empty comment's space
-    click.echo("wrote " + ", ".join(str(f) for f in files), err=True)
 
 
 def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, target: str, hover_rpm):
