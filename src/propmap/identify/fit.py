@@ -150,7 +150,7 @@ def _data_kind(data: LoadData) -> str:
     rotation rates, :func:`_sweep_rates`, and no static run spanning STATIC_RPM_SPAN, within a
     relative 1e-6 so that a unit's rounding does not decide) or "rates"."""
     moving = ~data.static
-    static = data.omega[data.static]
+    static = data.omega[~moving]
     spans = static.size > 1 and float(static.max() / static.min()) >= STATIC_RPM_SPAN * (1.0 - 1e-6)
     if not moving.any():
         swept = data.collective is not None and np.ptp(data.collective) > 0
