@@ -413,6 +413,17 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         corr[np.ix_(keep, keep)] = sub.correlation
         return Identifiability(names, std, ci, corr, sub.singular_values, sub.poorly_determined, sub.warnings,
                                warning_kinds=sub.warning_kinds)
+    std, ci, corr, sig, s2 = _covariance(x, jac, residuals, dof_rows, meat)
+    poor, notes = _identifiability_notes(names, x, std, corr, sig, s2 == 0.0 and meat is None)
+    return Identifiability(tuple(names), std, ci, corr, sig, tuple(poor), tuple(t for _, _, t in notes),
+                           warning_kinds=tuple((k, s) for k, s, _ in notes))
+
+
+def _covariance(x, jac, residuals, dof_rows, meat):
+    """Std errors, 95% intervals (Student's t) and correlations of the parameters ``x`` from ``jac``
+    (:func:`_identifiability`'s arguments), with the singular values of J diag(max(|x|, 0.1)) and
+    the residual variance s^2 (1 with ``meat``); a parameter in a numerically free direction has an
+    infinite std error and no correlation."""
     N, p = jac.shape
     dof = max((N if dof_rows is None else dof_rows) - p, 1)
     s2 = float(residuals @ residuals) / dof
@@ -448,9 +459,17 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     corr[free, :] = 0.0
     corr[:, free] = 0.0
     np.fill_diagonal(corr, 1.0)
-    sv = sig  # (of J diag(max(|x|, 0.1)), above)
+    return std, ci, corr, sig, s2
+
+
+def _identifiability_notes(names, x, std, corr, sv, exact: bool):
+    """The poorly determined parameters and the notes (kind, parameters, text) of
+    :class:`Identifiability`: an exact fit (``exact``: residual 0 without a sandwich), a parameter
+    not determined or poorly determined (std error over POOR_REL_STD of its estimate or natural
+    scale), a pair correlated beyond 0.95, a nearly singular Jacobian."""
+    p = len(names)
     poor, notes = [], []  # notes: (kind, parameters, text), Identifiability.warning_kinds
-    if s2 == 0.0 and meat is None:
+    if exact:
         notes.append(("exact", (), "the fit reproduces the data exactly (residual 0: noise-free data?): the std "
                       "errors and intervals are 0 and say nothing of how well the data determine the parameters; "
                       "the correlations below do"))
@@ -476,8 +495,7 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
     if sv.size and sv[-1] < 1e-6 * sv[0]:
         notes.append(("singular", (), "the Jacobian is nearly singular: some direction in parameter space is not "
                       "identifiable"))
-    return Identifiability(tuple(names), std, ci, corr, sv, tuple(poor), tuple(t for _, _, t in notes),
-                           warning_kinds=tuple((k, s) for k, s, _ in notes))
+    return poor, notes
 
 
 def _effective_parameters(jac_data, jac_all) -> float:
