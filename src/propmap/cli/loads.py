@@ -69,14 +69,31 @@ def _points_reader(path: Path, chunksize: int):
         Unreadable, not a regular file, too large, not text, a header over 64 KiB,
         duplicate, empty or over-long column names, or lacking the columns.
     """
-    import csv
     import warnings
 
     import pandas as pd
 
+    where = f"--points: {path}"
+    first, sep = _points_header(path, where)
+    names, mapped = _points_columns(first, sep, where)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", pd.errors.ParserWarning)
+            reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
+                                 skip_blank_lines=False, header=0, index_col=False, chunksize=chunksize,
+                                 names=[n or f"(unnamed {j})" for j, n in enumerate(names)])  # (pandas: unique)
+    except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
+            ValueError) as exc:
+        raise _parse_error(path, exc, sep, len(names)) from None
+    return reader, names, sep, mapped
+
+
+def _points_header(path: Path, where: str) -> tuple[str, str]:
+    """The points file's first line (decoded, without a UTF-8 BOM) and its separator; refuses a file
+    that cannot be read, is not a regular file, too large, has NUL bytes (UTF-16), a header over
+    MAX_HEADER_BYTES or a first line that is not UTF-8 (``where``: the option and file, for messages)."""
     from ..io.inputs import header_separator
 
-    where = f"--points: {path}"
     try:
         st = path.stat()
         regular = path.is_file()
@@ -104,6 +121,15 @@ def _points_reader(path: Path, chunksize: int):
                          "UTF-8 CSV") from None
     sep = header_separator(first, next((r.decode("utf-8-sig", "replace") for r in re.split(rb"\r\n|\r|\n", head)[1:9]
                                         if r.strip()), None))
+    return first, sep
+
+
+def _points_columns(first: str, sep: str, where: str) -> tuple[list[str], dict]:
+    """The header's column names and the operating columns they map to
+    (:func:`propmap.identify.stand.map_operating_columns`); refuses an empty header, an over-long,
+    duplicate or missing column (naming what a stand's export of measured loads needs instead)."""
+    import csv
+
     names = [h.strip() for h in next(csv.reader([first], delimiter=sep), [])]
     if not any(names):
         raise InputError(f"{where}: the first line is empty; it must name the columns")
@@ -130,16 +156,7 @@ def _points_reader(path: Path, chunksize: int):
                          + ("; a static stand's points have airspeed 0 and incidence_deg 0: add those columns, or "
                             "compare measured loads with the model by 'propmap validate FILE --prop P --params "
                             "SET'" if measured else ""))
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", pd.errors.ParserWarning)
-            reader = pd.read_csv(path, sep=sep, encoding="utf-8-sig", dtype=str, keep_default_na=False,
-                                 skip_blank_lines=False, header=0, index_col=False, chunksize=chunksize,
-                                 names=[n or f"(unnamed {j})" for j, n in enumerate(names)])  # (pandas: unique)
-    except (pd.errors.ParserError, pd.errors.ParserWarning, pd.errors.EmptyDataError, UnicodeDecodeError,
-            ValueError) as exc:
-        raise _parse_error(path, exc, sep, len(names)) from None
-    return reader, names, sep, mapped
+    return names, mapped
 
 
 def _long_row(path: Path, sep: str, width: int) -> str:
