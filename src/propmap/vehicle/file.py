@@ -311,18 +311,7 @@ def read_vehicle(path) -> Vehicle:
     """
     given, path = path, vehicle_path(path)
     name = show_path(path)
-    try:
-        data = load_toml(path, VehicleFileError)
-    except VehicleFileError as exc:
-        if os.path.lexists(path) or not _bare(given):
-            raise
-        examples = [n[:-5] for n in _example_vehicles()]
-        if path.suffix:  # (a file name: the bundled example of that stem is named without .toml, docs/flight.md)
-            if path.suffix.lower() == ".toml" and path.stem in examples:
-                raise VehicleFileError(f"{exc} here (the bundled example vehicle of that name is given without "
-                                       f".toml: {path.stem})") from None
-            raise
-        raise VehicleFileError(f"{exc} (nor a bundled example vehicle: {', '.join(examples)})") from None
+    data = _vehicle_table(given, path)
     for key in ("mass", "rotors"):
         if key not in data:
             raise VehicleFileError(f"{name}: missing key {key!r}")
@@ -342,40 +331,7 @@ def read_vehicle(path) -> Vehicle:
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
     for k, r in enumerate(data["rotors"], start=1):
-        where = f"{name}: rotor {k}"
-        if not isinstance(r, dict):
-            raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
-                                   f"got {short_repr(r)}")
-        for key in ("position", "axis", "spin", "propeller"):
-            if key not in r:
-                raise VehicleFileError(f"{where}: missing key {key!r}")
-        _unknown(r, ROTOR_KEYS, where)
-        position = _vec3(r["position"], f"{where} position")
-        if np.any(np.abs(position) > POSITION_MAX):
-            raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
-                                   f"m, got {short_repr(r['position'])} (are the positions in metres?)")
-        axis = _vec3(r["axis"], f"{where} axis")
-        lo, hi = AXIS_LENGTH_RANGE
-        scale = float(np.max(np.abs(axis)))
-        length = scale * float(np.linalg.norm(axis / scale)) if scale > 0 else 0.0
-        if not (lo <= length <= hi):
-            raise VehicleFileError(f"{where}: axis must be non-zero with a length in [{lo:g}, {hi:g}] (a direction; "
-                                   f"it is normalised), got {short_repr(r['axis'])}")
-        spin = r["spin"]
-        spin = {"ccw": 1.0, "cw": -1.0}.get(spin.lower()) if isinstance(spin, str) else None
-        if spin is None:
-            raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {short_repr(r['spin'])}")
-        blades = _blades(r["blades"], where) if "blades" in r else None
-        diameter = _number(r["diameter_m"], f"{where} diameter_m", "m", DIAMETER_RANGE) if "diameter_m" in r else None
-        # (one object per propeller of the file: vehicle_wrench solves a propeller's rotors together by identity)
-        spec = (repr(r["propeller"]), diameter, blades)
-        if spec not in props:
-            props[spec] = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH,
-                                     blades)
-        prop = props[spec]
-        params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
-        j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
-        rotors.append(Rotor(position, axis, spin, prop, params=params, inertia=j_r))  # (Rotor normalises the axis)
+        rotors.append(_rotor(r, f"{name}: rotor {k}", path, props))
     text = {k: str(data[k]) for k in ("name", "source") if isinstance(data.get(k), str)}
     if all(r.axis[2] < 0 for r in rotors):  # (every axis [0, 0, -1], a z-down frame's habit: wrench scored it, a fit
         # wrote a file: a flight-log audit, 2026-11-27; a horizontal axis, a fixed wing's or a tilt-rotor's, is read)
@@ -385,6 +341,62 @@ def read_vehicle(path) -> Vehicle:
     _warn_implausible(name, rotors, mass, inertia, cg, kappa)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
                    centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
+
+
+def _vehicle_table(given, path: Path) -> dict:
+    """The vehicle file's TOML table; where the file cannot be read and ``given`` was a bare name, the
+    message says so and names the bundled example vehicles (or that an example is named without
+    .toml)."""
+    try:
+        return load_toml(path, VehicleFileError)
+    except VehicleFileError as exc:
+        if os.path.lexists(path) or not _bare(given):
+            raise
+        examples = [n[:-5] for n in _example_vehicles()]
+        if path.suffix:  # (a file name: the bundled example of that stem is named without .toml, docs/flight.md)
+            if path.suffix.lower() == ".toml" and path.stem in examples:
+                raise VehicleFileError(f"{exc} here (the bundled example vehicle of that name is given without "
+                                       f".toml: {path.stem})") from None
+            raise
+        raise VehicleFileError(f"{exc} (nor a bundled example vehicle: {', '.join(examples)})") from None
+
+
+def _rotor(r, where: str, path: Path, props: dict) -> Rotor:
+    """One ``[[rotors]]`` table as a :class:`Rotor` (``where``: the file and rotor, for messages); its
+    propeller read once per (propeller, diameter, blades) of the file, kept in ``props``."""
+    if not isinstance(r, dict):
+        raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
+                               f"got {short_repr(r)}")
+    for key in ("position", "axis", "spin", "propeller"):
+        if key not in r:
+            raise VehicleFileError(f"{where}: missing key {key!r}")
+    _unknown(r, ROTOR_KEYS, where)
+    position = _vec3(r["position"], f"{where} position")
+    if np.any(np.abs(position) > POSITION_MAX):
+        raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
+                               f"m, got {short_repr(r['position'])} (are the positions in metres?)")
+    axis = _vec3(r["axis"], f"{where} axis")
+    lo, hi = AXIS_LENGTH_RANGE
+    scale = float(np.max(np.abs(axis)))
+    length = scale * float(np.linalg.norm(axis / scale)) if scale > 0 else 0.0
+    if not (lo <= length <= hi):
+        raise VehicleFileError(f"{where}: axis must be non-zero with a length in [{lo:g}, {hi:g}] (a direction; "
+                               f"it is normalised), got {short_repr(r['axis'])}")
+    spin = r["spin"]
+    spin = {"ccw": 1.0, "cw": -1.0}.get(spin.lower()) if isinstance(spin, str) else None
+    if spin is None:
+        raise VehicleFileError(f"{where}: spin must be 'cw' or 'ccw', got {short_repr(r['spin'])}")
+    blades = _blades(r["blades"], where) if "blades" in r else None
+    diameter = _number(r["diameter_m"], f"{where} diameter_m", "m", DIAMETER_RANGE) if "diameter_m" in r else None
+    # (one object per propeller of the file: vehicle_wrench solves a propeller's rotors together by identity)
+    spec = (repr(r["propeller"]), diameter, blades)
+    if spec not in props:
+        props[spec] = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH,
+                                 blades)
+    prop = props[spec]
+    params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
+    j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
+    return Rotor(position, axis, spin, prop, params=params, inertia=j_r)  # (Rotor normalises the axis)
 
 
 #: a rotor farther from the centre of mass than this many of its radii is warned about (a multirotor's arms are
