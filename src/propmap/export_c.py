@@ -315,17 +315,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     fmt_tab = ".9g" if dtype == "float" else ".17g"
     table = rm._table.astype(np.float32 if dtype == "float" else np.float64)
     n0, n1, n2 = rm.omega.size, rm.airspeed.size, rm.incidence.size
-    cubic = rm.interpolation == "cubic"
-    slopes = ""
-    if cubic:  # each axis's per-cell slope coefficients (_slopes), as static tables
-        slopes = "".join(
-            f"static const double {prefix}_slope{k}[{8 * max(ax.size - 1, 1)}] = {{\n"
-            + _numbers(_slopes(ax).reshape(-1), ".17g", 8) + "\n};\n"
-            for k, ax in enumerate((rm.omega, rm.airspeed, rm.incidence)))
-    template = (TEMPLATE.replace("{decl}", CUBIC_DECL if cubic else LINEAR_DECL)
-                .replace("{body}", CUBIC_BODY if cubic else LINEAR_BODY)
-                .replace("{weights_fn}", (slopes.replace("{", "{{").replace("}", "}}") + CUBIC_WEIGHTS)
-                         if cubic else ""))
+    template = _template(rm, prefix)
     check = f"check_{rm.interpolation}_"
     # the include guard carries a hash of the content: two different maps given the same
     # prefix then fail to compile (redefinitions) instead of one being skipped silently
@@ -334,16 +324,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         rm.omega, rm.airspeed, rm.incidence, table, rm._cellflag)) + rm.interpolation.encode()
         + block.encode()).hexdigest()[:12]
     guard = f"{prefix.upper()}_H_{digest.upper()}"
-    unc = ""
-    if "model_uncertainty_axial" in a:  # the model's own error against measurements, beside the table's
-        words = (f"The model against measurements: axial: {a['model_uncertainty_axial']}. "
-                 f"Off-axis: {a['model_uncertainty_off_axis']}.")
-        unc = "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
-    if rm.side_loads:  # (said in the header itself, not only in the warning at its build)
-        words = ("This map's model makes a side force Y and a pitching moment M_P as well (blade flapping, a linear "
-                 "inflow or the dynamic stall): the functions below leave them out, so the wrench differs from "
-                 "propmap.rotor_wrench and RotorMap.wrench by them.")
-        unc += "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
+    unc = _caveats(a, rm.side_loads)
     text = template.format(
         name=path.stem, propeller=_comment(a.get("propeller", "")), version=_comment(a.get("propmap_version", "")),
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
@@ -366,3 +347,35 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         end = f"#endif /* {guard} */"
         text = text.replace(end, block.lstrip("\n") + "\n" + end)
     return text
+
+
+def _template(rm, prefix: str) -> str:
+    """The header's template for ``rm``'s interpolation: the cubic's per-cell slope tables of each
+    axis (_slopes) and weights, or the linear's declarations and body."""
+    cubic = rm.interpolation == "cubic"
+    slopes = ""
+    if cubic:  # each axis's per-cell slope coefficients (_slopes), as static tables
+        slopes = "".join(
+            f"static const double {prefix}_slope{k}[{8 * max(ax.size - 1, 1)}] = {{\n"
+            + _numbers(_slopes(ax).reshape(-1), ".17g", 8) + "\n};\n"
+            for k, ax in enumerate((rm.omega, rm.airspeed, rm.incidence)))
+    return (TEMPLATE.replace("{decl}", CUBIC_DECL if cubic else LINEAR_DECL)
+            .replace("{body}", CUBIC_BODY if cubic else LINEAR_BODY)
+            .replace("{weights_fn}", (slopes.replace("{", "{{").replace("}", "}}") + CUBIC_WEIGHTS)
+                     if cubic else ""))
+
+
+def _caveats(attrs: dict, side_loads: bool) -> str:
+    """The header comment's lines on the model's own error against measurements (where the map's
+    ``attrs`` record it) and on the side force and pitching moment that the functions leave out."""
+    unc = ""
+    if "model_uncertainty_axial" in attrs:  # the model's own error against measurements, beside the table's
+        words = (f"The model against measurements: axial: {attrs['model_uncertainty_axial']}. "
+                 f"Off-axis: {attrs['model_uncertainty_off_axis']}.")
+        unc = "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
+    if side_loads:  # (said in the header itself, not only in the warning at its build)
+        words = ("This map's model makes a side force Y and a pitching moment M_P as well (blade flapping, a linear "
+                 "inflow or the dynamic stall): the functions below leave them out, so the wrench differs from "
+                 "propmap.rotor_wrench and RotorMap.wrench by them.")
+        unc += "".join(f" * {line}\n" for line in textwrap.wrap(_comment(words), 90))
+    return unc
