@@ -200,8 +200,10 @@ def read_uiuc_geometry(path, *, diameter_in: float | None = None, n_blades: int 
     return _uiuc_geometry(Path(path), text, diameter_in=diameter_in, n_blades=n_blades, name=name, source=source)
 
 
-def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source, blades_given=True) -> Propeller:
-    where = show_path(path)
+def _uiuc_table(path: Path, text: str, where: str) -> np.ndarray:
+    """The r/R c/R beta table of a UIUC geometry file, each column in its range and r/R strictly
+    increasing (refused naming the line); other lines of the form ``key: value`` warned of as not
+    read."""
     table = _read_table(path, text, ["r/R", "c/R", "beta"], GeometryFileError)
     _check_column(table, 0, "r/R (station radius / tip radius)", 0.0, 1.0, path, GeometryFileError, lo_open=True)
     _check_column(table, 1, "c/R", 0.0, 1.0, path, GeometryFileError)
@@ -217,9 +219,16 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         shown = ", ".join(f"{k} = {v} (line {line})" for k, (v, line) in list(table.meta.items())[:4])
         warnings.warn(f"{where}: {shown} not read: a UIUC geometry file is its r/R c/R beta table (the diameter from "
                       "the file name or diameter_in, the blade count from n_blades: --diameter-in, --blades)",
-                      UserWarning, stacklevel=3)
-    stem = re.sub(r"_geom\.txt$", "", path.name, flags=re.IGNORECASE)
-    D_name, P_name, unit, family = size_from_name(stem)
+                      UserWarning, stacklevel=4)
+    return data
+
+
+def _uiuc_diameter(stem: str, diameter_in, where: str) -> tuple[float, str]:
+    """The diameter [in] of a UIUC geometry file named ``stem``: ``diameter_in`` where given (checked,
+    warned of where it differs from the name's by more than 5%), else the name's (refused where the
+    name gives none or an implausible one; a millimetre family's warned of); and the note of a
+    diameter read in millimetres for the propeller's source ("" otherwise)."""
+    D_name, _, unit, family = size_from_name(stem)
     note = ""
     if diameter_in is None:
         if D_name is None:
@@ -234,7 +243,7 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
             note = (f"diameter {D_name:g} mm = {diameter_in:.4g} in from the file name (UIUC family "
                     f"{family!r} gives sizes in millimetres)")
             warnings.warn(f"{where}: {note}; if that is wrong, {SIZE_HINT}", UserWarning,
-                          stacklevel=3)
+                          stacklevel=4)
     else:
         _check_number(diameter_in, "diameter_in", GeometryFileError, where)
         try:
@@ -246,15 +255,29 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
         named = None if D_name is None else (D_name / 25.4 if unit == "mm" else D_name)
         if named is not None and named > 0 and abs(float(diameter_in) / named - 1.0) > 0.05:  # (130 mm is sold as 5 in)
             warnings.warn(f"{where}: diameter {float(diameter_in):g} in as given, not the {D_name:g} {unit} of the "
-                          "file name", UserWarning, stacklevel=3)
+                          "file name", UserWarning, stacklevel=4)
+    return diameter_in, note
+
+
+def _warn_blade_count(file_name: str, n_blades: int, blades_given: bool, where: str) -> None:
+    """Warn where the file name gives a blade count other than ``n_blades`` (given by the user)."""
     # a blade count in the name: a UIUC hub's "_3b", or a third size figure ("6x4.5x3", as HQProp names its
     # tri-blades); a user-level audit ran such files with --blades 2 unwarned
-    bare = re.sub(r"(_geom)?(\.[a-z0-9]+)?$", "", path.name, flags=re.IGNORECASE)
+    bare = re.sub(r"(_geom)?(\.[a-z0-9]+)?$", "", file_name, flags=re.IGNORECASE)
     count = re.search(r"_([1-9])b(?:_|$)", bare, re.IGNORECASE) or re.search(
         r"\d(?:\.\d+)?x\d+(?:\.\d+)?x([1-9])(?:_|$)", bare, re.IGNORECASE)
     if count and blades_given and int(count.group(1)) != n_blades:
         warnings.warn(f"{where}: {n_blades} blades (n_blades, --blades), not the {count.group(1)} of the file name",
-                      UserWarning, stacklevel=3)
+                      UserWarning, stacklevel=4)
+
+
+def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source, blades_given=True) -> Propeller:
+    where = show_path(path)
+    data = _uiuc_table(path, text, where)
+    stem = re.sub(r"_geom\.txt$", "", path.name, flags=re.IGNORECASE)
+    _, P_name, unit, _ = size_from_name(stem)
+    diameter_in, note = _uiuc_diameter(stem, diameter_in, where)
+    _warn_blade_count(path.name, n_blades, blades_given, where)
     pitch_in = None
     if P_name is not None:
         pitch_in = P_name / 25.4 if unit == "mm" else P_name
