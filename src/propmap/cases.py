@@ -486,76 +486,93 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
     SolverError
         From the model.
     """
-    from .io.catalogue import load_propeller
-
     if case != "gill2019" and any(callable(p) for p in param_sets.values()):
         raise ValueError(f"case {case!r} takes parameter sets, not callables (only gill2019 takes a callable)")
     if case == "apc10x7e":
-        prop = load_propeller("apce_10x7")
-        ct, cq = np.array(_rows("apc10x7E_mccrink_gregory2017_CT_vs_J.csv")), np.array(
-            _rows("apc10x7E_mccrink_gregory2017_CQ_vs_J.csv"))
-        J = ct[:, 0]
-        CQm = np.interp(J, cq[:, 0], cq[:, 1])
-        n = 9200 / 60
-        pred, metrics = {}, {}
-        for label, p in param_sets.items():
-            r = rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air, radial=False)
-            CT, CQ = r.CT, r.CQ
-            pred[label] = {"CT": CT, "CQ": CQ}
-            dct, dcq = (CT - ct[:, 1]) / ct[0, 1], (CQ - CQm) / CQm[0]
-            metrics[label] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
-                              "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
-        pred["hover model"] = {"CT": np.full(J.size, ct[0, 1]), "CQ": np.full(J.size, CQm[0])}
-        dct, dcq = (ct[0, 1] - ct[:, 1]) / ct[0, 1], (CQm[0] - CQm) / CQm[0]
-        metrics["hover model"] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
-                                  "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
-        return CaseResult(case, "J", J, {"CT": ct[:, 1], "CQ": CQm}, pred, CITATIONS[case],
-                          "9200 rpm; hover model: the measured coefficients at the lowest J", metrics)
+        return _apc10x7e(param_sets, air)
     if case == "dji9443":
-        prop = dji9443_propeller()
-        n = 5400 / 60
-        pred, metrics = {}, {}
-        for label, p in param_sets.items():
-            r = rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air, radial=False)
-            CT, CQ = r.CT, r.CQ
-            pred[label] = {"CT": np.atleast_1d(CT), "CQ": np.atleast_1d(CQ)}
-            metrics[label] = {"CT": float(CT), "rel_err_ct": float(CT / 0.072 - 1)}
-        return CaseResult(case, "rpm", np.array([5400.0]), {"CT": np.array([0.072])}, pred, CITATIONS[case],
-                          "hover; measured CT 0.072 (standard deviation 0.0018)", metrics)
+        return _dji9443(param_sets, air)
     if case == "beaver":
-        # Sinnige et al. (2019) measured the force with an external balance in WIND axes:
-        # CT_w = (T cos a - H sin a) / (rho n^2 D^4), H the in-plane (drag) force; their test
-        # conditions: rho = 1.198 kg/m^3, n = 188.3 Hz (J = 0.896), V = 40 m/s, and the
-        # nominal -0.2 deg is the true 0 (setup misalignment): a = nominal + 0.2 deg.
-        prop = beaver_propeller()
-        d = np.array(_rows("sinnige2019_CT_vs_incidence_J0.9.csv"))
-        inc = d[:, 0]
-        n = BEAVER_N
-        tunnel = Air(rho=BEAVER_RHO, mu=air.mu, speed_of_sound=air.speed_of_sound)
-        pred, metrics = {}, {}
-        CT0m = float(d[0, 1])
-        ratio_m = {a: float(np.interp(a + inc[0], inc, d[:, 1]) / CT0m) for a in (10.0, 20.0)}
-        true = inc - inc[0]
-        for label, p in param_sets.items():
-            CTw, r = _beaver_ctw(prop, p, tunnel, np.concatenate([[0.0, 10.0, 20.0], true]))
-            pred[label] = {"CT": CTw[3:], "CT_shaft": r.CT[3:]}
-            metrics[label] = {"CT0": float(CTw[0]), "rel_err_ct0": float(CTw[0] / CT0m - 1),
-                              **{f"ratio_{a:g}": float(CTw[k + 1] / CTw[0]) for k, a in enumerate((10.0, 20.0))},
-                              **{f"ratio_err_{a:g}": float(CTw[k + 1] / CTw[0] - ratio_m[a])
-                                 for k, a in enumerate((10.0, 20.0))},
-                              **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0])
-                                 for k, a in enumerate((10.0, 20.0))},
-                              **{f"H_over_T_{a:g}": float(r.drag[k + 1] / r.thrust[k + 1])
-                                 for k, a in enumerate((10.0, 20.0))}}
-            metrics[label].update(_beaver_matched(prop, p, tunnel, CT0m, ratio_m))
-        metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
-        first = next(iter(param_sets.values()))
-        h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)
-        pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=tunnel)) * np.cos(np.radians(true))}
-        return CaseResult(case, "incidence_deg", inc, {"CT": d[:, 1]}, pred, CITATIONS[case],
-                          f"wind-axis CT (T cos a - H sin a), J = 0.896, V = 40 m/s, rho = {BEAVER_RHO} kg/m^3 "
-                          f"({n * 60:.0f} rpm); hover model calibrated on the {next(iter(param_sets))} model at V = 0",
-                          metrics)
+        return _beaver(param_sets, air)
     if case == "gill2019":
         return _gill2019(param_sets, air)
     raise ValueError(f"unknown case {case!r}; valid: {', '.join(CASES)}")
+
+
+def _apc10x7e(param_sets: dict, air: Air) -> CaseResult:
+    """The APC 10x7E's CT and CQ against J at 9200 rpm (McCrink & Gregory 2017), each set's and the
+    hover model's rms and largest error in units of the first point's (:func:`run_case`)."""
+    from .io.catalogue import load_propeller
+
+    prop = load_propeller("apce_10x7")
+    ct, cq = np.array(_rows("apc10x7E_mccrink_gregory2017_CT_vs_J.csv")), np.array(
+        _rows("apc10x7E_mccrink_gregory2017_CQ_vs_J.csv"))
+    J = ct[:, 0]
+    CQm = np.interp(J, cq[:, 0], cq[:, 1])
+    n = 9200 / 60
+    pred, metrics = {}, {}
+    for label, p in param_sets.items():
+        r = rotor_loads(prop, p, 2 * math.pi * n, J * n * prop.diameter, 0.0, air=air, radial=False)
+        CT, CQ = r.CT, r.CQ
+        pred[label] = {"CT": CT, "CQ": CQ}
+        dct, dcq = (CT - ct[:, 1]) / ct[0, 1], (CQ - CQm) / CQm[0]
+        metrics[label] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
+                          "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
+    pred["hover model"] = {"CT": np.full(J.size, ct[0, 1]), "CQ": np.full(J.size, CQm[0])}
+    dct, dcq = (ct[0, 1] - ct[:, 1]) / ct[0, 1], (CQm[0] - CQm) / CQm[0]
+    metrics["hover model"] = {"rms_ct": float(np.sqrt(np.mean(dct**2))), "max_ct": float(np.max(np.abs(dct))),
+                              "rms_cq": float(np.sqrt(np.mean(dcq**2))), "max_cq": float(np.max(np.abs(dcq)))}
+    return CaseResult("apc10x7e", "J", J, {"CT": ct[:, 1], "CQ": CQm}, pred, CITATIONS["apc10x7e"],
+                      "9200 rpm; hover model: the measured coefficients at the lowest J", metrics)
+
+
+def _dji9443(param_sets: dict, air: Air) -> CaseResult:
+    """The DJI 9443's hover CT at 5400 rpm against the measured 0.072 (:func:`run_case`)."""
+    prop = dji9443_propeller()
+    n = 5400 / 60
+    pred, metrics = {}, {}
+    for label, p in param_sets.items():
+        r = rotor_loads(prop, p, 2 * math.pi * n, 0.0, 0.0, air=air, radial=False)
+        CT, CQ = r.CT, r.CQ
+        pred[label] = {"CT": np.atleast_1d(CT), "CQ": np.atleast_1d(CQ)}
+        metrics[label] = {"CT": float(CT), "rel_err_ct": float(CT / 0.072 - 1)}
+    return CaseResult("dji9443", "rpm", np.array([5400.0]), {"CT": np.array([0.072])}, pred, CITATIONS["dji9443"],
+                      "hover; measured CT 0.072 (standard deviation 0.0018)", metrics)
+
+
+def _beaver(param_sets: dict, air: Air) -> CaseResult:
+    """The Beaver propeller's wind-axis CT against incidence at J = 0.896 (Sinnige et al. 2019), each
+    set's CT_w(0) and its ratios at 10 and 20 deg, also with CT_w(0) matched (:func:`run_case`)."""
+    # Sinnige et al. (2019) measured the force with an external balance in WIND axes:
+    # CT_w = (T cos a - H sin a) / (rho n^2 D^4), H the in-plane (drag) force; their test
+    # conditions: rho = 1.198 kg/m^3, n = 188.3 Hz (J = 0.896), V = 40 m/s, and the
+    # nominal -0.2 deg is the true 0 (setup misalignment): a = nominal + 0.2 deg.
+    prop = beaver_propeller()
+    d = np.array(_rows("sinnige2019_CT_vs_incidence_J0.9.csv"))
+    inc = d[:, 0]
+    n = BEAVER_N
+    tunnel = Air(rho=BEAVER_RHO, mu=air.mu, speed_of_sound=air.speed_of_sound)
+    pred, metrics = {}, {}
+    CT0m = float(d[0, 1])
+    ratio_m = {a: float(np.interp(a + inc[0], inc, d[:, 1]) / CT0m) for a in (10.0, 20.0)}
+    true = inc - inc[0]
+    for label, p in param_sets.items():
+        CTw, r = _beaver_ctw(prop, p, tunnel, np.concatenate([[0.0, 10.0, 20.0], true]))
+        pred[label] = {"CT": CTw[3:], "CT_shaft": r.CT[3:]}
+        metrics[label] = {"CT0": float(CTw[0]), "rel_err_ct0": float(CTw[0] / CT0m - 1),
+                          **{f"ratio_{a:g}": float(CTw[k + 1] / CTw[0]) for k, a in enumerate((10.0, 20.0))},
+                          **{f"ratio_err_{a:g}": float(CTw[k + 1] / CTw[0] - ratio_m[a])
+                             for k, a in enumerate((10.0, 20.0))},
+                          **{f"shaft_ratio_{a:g}": float(r.CT[k + 1] / r.CT[0])
+                             for k, a in enumerate((10.0, 20.0))},
+                          **{f"H_over_T_{a:g}": float(r.drag[k + 1] / r.thrust[k + 1])
+                             for k, a in enumerate((10.0, 20.0))}}
+        metrics[label].update(_beaver_matched(prop, p, tunnel, CT0m, ratio_m))
+    metrics["measured"] = {"CT0": CT0m, **{f"ratio_{a:g}": r for a, r in ratio_m.items()}}
+    first = next(iter(param_sets.values()))
+    h = HoverModel.from_model(prop, first, 2 * math.pi * n, air=tunnel)
+    pred["hover model"] = {"CT": np.full(inc.size, h.CT(prop.diameter, air=tunnel)) * np.cos(np.radians(true))}
+    return CaseResult("beaver", "incidence_deg", inc, {"CT": d[:, 1]}, pred, CITATIONS["beaver"],
+                      f"wind-axis CT (T cos a - H sin a), J = 0.896, V = 40 m/s, rho = {BEAVER_RHO} kg/m^3 "
+                      f"({n * 60:.0f} rpm); hover model calibrated on the {next(iter(param_sets))} model at V = 0",
+                      metrics)
