@@ -419,14 +419,7 @@ def trim_omega(
     air = model_air(params, air)
     if on_missing not in ("raise", "nan"):
         raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
-    if bounds is None:
-        bounds = default_omega_bounds(propeller, air)
-    try:
-        lo, hi = (float(b) for b in bounds)
-    except (TypeError, ValueError):
-        raise ValueError(f"bounds must be two rotation rates [rad/s], got {bounds!r}") from None
-    if not (0 < lo < hi <= OMEGA_MAX):
-        raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
+    lo, hi = _omega_bounds(bounds, propeller, air)
     T_star = _checked_thrust(thrust, thrust_tol)
     try:
         T_star, V, b, c = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (
@@ -452,24 +445,8 @@ def trim_omega(
                         f"deg; scipy status {exc.status})") from None
     if missing.any() and on_missing == "raise":
         i = int(np.argmax(missing))
-        low, top = reach[0][i], reach[1][i]
-        if T1[i] > top:
-            why = (f" (the rotor makes T <= {top:.6g} N up to tip Mach {hi * propeller.radius / air.speed_of_sound:.2g}"
-                   ": is the thrust in grams? It is in N)")
-        elif T1[i] >= low:
-            why = ""
-        elif V1[i] > 0 and math.cos(b1[i]) < 0:
-            why = " (in descent the flow alone makes that much on a slowly turning rotor)"
-        elif T1[i] <= 0 and V1[i] == 0:
-            why = " (in still air a turning rotor's thrust is positive: give a thrust above 0 N)"
-        else:
-            why = (f" (the slowest rate, {lo:.6g} rad/s, already makes {low:.6g} N here: give a larger thrust, or a "
-                   "lower bound on the rate)")
-        raise TrimError(
-            f"no rotation rate in [{lo:.6g}, {hi:.6g}] rad/s ({lo / RPM:.6g}-{hi / RPM:.6g} rpm) makes "
-            f"thrust={T1[i]:.6g} N at operating point {_where(i, shape)}(airspeed={V1[i]:.6g} m/s, "
-            f"incidence={math.degrees(b1[i]):.6g} deg, collective={math.degrees(c1[i]):.6g} deg): the thrust there "
-            f"spans [{low:.6g}, {top:.6g}] N{why}")
+        raise _no_rate(i, shape, (lo, hi), (T1[i], V1[i], b1[i], c1[i]), (reach[0][i], reach[1][i]),
+                       hi * propeller.radius / air.speed_of_sound)
     ok = ~missing
     loads = rotor_loads(propeller, params, np.where(ok, x, lo).reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=None if collective is None else c1.reshape(shape), **kw)
@@ -478,6 +455,45 @@ def trim_omega(
         for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean", "omega"):
             np.asarray(getattr(loads, f))[bad] = np.nan
     return OmegaTrimResult(omega=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
+
+
+def _omega_bounds(bounds, propeller: Propeller, air: Air) -> tuple[float, float]:
+    """:func:`trim_omega`'s ``bounds`` as (low, high) [rad/s], the default where None; refused
+    unless 0 < low < high <= OMEGA_MAX."""
+    if bounds is None:
+        bounds = default_omega_bounds(propeller, air)
+    try:
+        lo, hi = (float(b) for b in bounds)
+    except (TypeError, ValueError):
+        raise ValueError(f"bounds must be two rotation rates [rad/s], got {bounds!r}") from None
+    if not (0 < lo < hi <= OMEGA_MAX):
+        raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
+    return lo, hi
+
+
+def _no_rate(i: int, shape, bounds, point, reach, top_mach: float) -> TrimError:
+    """The error of :func:`trim_omega` where no rate in ``bounds`` makes the thrust at point ``i``
+    (``point``: its thrust, airspeed, incidence and collective; ``reach``: the thrust the bounds
+    reach there; ``top_mach``: the upper bound's tip Mach number), with the likely cause."""
+    lo, hi = bounds
+    T, V, b, c = point
+    low, top = reach
+    if T > top:
+        why = f" (the rotor makes T <= {top:.6g} N up to tip Mach {top_mach:.2g}: is the thrust in grams? It is in N)"
+    elif T >= low:
+        why = ""
+    elif V > 0 and math.cos(b) < 0:
+        why = " (in descent the flow alone makes that much on a slowly turning rotor)"
+    elif T <= 0 and V == 0:
+        why = " (in still air a turning rotor's thrust is positive: give a thrust above 0 N)"
+    else:
+        why = (f" (the slowest rate, {lo:.6g} rad/s, already makes {low:.6g} N here: give a larger thrust, or a "
+               "lower bound on the rate)")
+    return TrimError(
+        f"no rotation rate in [{lo:.6g}, {hi:.6g}] rad/s ({lo / RPM:.6g}-{hi / RPM:.6g} rpm) makes "
+        f"thrust={T:.6g} N at operating point {_where(i, shape)}(airspeed={V:.6g} m/s, "
+        f"incidence={math.degrees(b):.6g} deg, collective={math.degrees(c):.6g} deg): the thrust there "
+        f"spans [{low:.6g}, {top:.6g}] N{why}")
 
 
 def torque_change_at_constant_thrust(
