@@ -326,7 +326,6 @@ def _looks_like_radians(r_over_R, beta) -> bool:
     return bool(np.std(q) < RADIANS_PITCH_CV * np.mean(q))
 
 
-#: the ranges of a PE0 file's RADIUS [in] and BLADES
 def _format(text: str) -> str | None:
     """``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text."""
     head = text[:4000]

@@ -22,6 +22,7 @@ from .inputs import _clip, _line_of, _read_text, parse_number, show_path
 
 __all__ = ["PE0_COLUMNS", "read_apc_pe0"]
 
+#: the ranges of a PE0 file's RADIUS [in] and BLADES
 _PE0_RADIUS_IN = (0.25, 50.0)
 _PE0_MAX_BLADES = 100
 
