@@ -21,7 +21,7 @@ _element_cambered_dh = _jit_inline(make_delayed_cambered_element(_atan2, _exp_sa
 @numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, pk, axial, kd=0.0):
     """dT/dy, dD/dy, dQ/dy, dM_R/dy, dY/dy, dM_P/dy [N/m, N/m, N, N, N/m, N] at mean inflow v
-    (eqs 5-7, azimuth-averaged; linear inflow, ``bl``, ``sec`` and ``azim`` as ``_residual``);
+    (eqs 5-7, azimuth-averaged; linear inflow, ``bl``, ``sec`` and ``azim`` as ``_annulus._residual``);
     ``u`` the annulus' swirl [m/s].
 
     dM_R/dy is the rolling moment density: the thrust density's first azimuthal moment,
@@ -37,8 +37,8 @@ def annulus_loads(v, y, Om, u, Vs, Vc, bl, sec, cfac, azim, gx, gy, naz, model, 
     _physics.make_profile_drag) adds its components along the airspeed, cos psi, to dD/dy and
     toward the advancing side, sin psi, to dY/dy; it passes through the shaft. With
     ``pk[PK_INPLANE]`` = 1 the blades' in-plane airspeed, and so u_R, includes the skewed
-    wake's in-plane induced velocity at v, as in ``_residual``. ``kd`` > 0 (:func:`delay_factor`,
-    uniform inflow): each node and its mirror node through the delayed element, as ``_residual``.
+    wake's in-plane induced velocity at v, as in ``_annulus._residual``. ``kd`` > 0 (``_annulus.delay_factor``,
+    uniform inflow): each node and its mirror node through the delayed element, as ``_annulus._residual``.
     """
     th, sth, cth = bl
     s0, s1, s2, s3 = sec
