@@ -30,9 +30,14 @@ def _data_files() -> list[str]:
     for path in PACKAGE.rglob("*"):
         rel = path.relative_to(PACKAGE)
         if (path.is_file() and path.suffix not in (".py", ".pyc", ".nbi", ".nbc")
-                and "__pycache__" not in rel.parts):
+                and "__pycache__" not in rel.parts and not _stray(path.name)):
             out.append(rel.as_posix())
     return sorted(out)
+
+
+def _stray(name: str) -> bool:
+    """A file no checkout tracks: hidden (.DS_Store), an editor's backup or swap file."""
+    return name.startswith(".") or name.endswith(("~", ".swp", ".bak", ".orig"))
 
 
 def _named(rel: str, patterns: list[str]) -> bool:
@@ -58,3 +63,4 @@ def test_the_matching_is_by_directory():
     assert not _named("data/uiuc_v1/sub/a.txt", ["data/uiuc_v1/*.txt"])
     assert not _named("data/new/a.csv", ["data/*.csv"])
     assert not _named("data/a.csv", ["data/examples/*.csv"])
+    assert _stray(".DS_Store") and _stray("catalogue.json~") and not _stray("calibration.json")
