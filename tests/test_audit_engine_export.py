@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from propmap.identify import FitOptions
-from propmap.identify.engine import _bounds, _jacobian, _solve, _x0
+from propmap.identify.engine import _x0
+from propmap.identify.optimizer import _bounds, _jacobian, _solve
 from propmap.identify.options import FLAP_START
 from propmap.io.calibration import generic_params
 

@@ -1,6 +1,6 @@
 """The fitting engine's own numerics: its finite-difference Jacobian and its multistart rule.
 
-Every fit whose residual has no implicit derivatives (identify/engine._solve without
+Every fit whose residual has no implicit derivatives (identify/optimizer._solve without
 ``residual.jacobian``) steps with ``_jacobian``: central differences of step
 1e-4 max(|x|, 0.1), one-sided at a bound. And a multistart fit whose two best optima reach
 the same cost with parameters 5% apart warns that the data do not determine them. No test
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from propmap.identify import FitOptions
-from propmap.identify.engine import _bounds, _jacobian, _solve
+from propmap.identify.optimizer import _bounds, _jacobian, _solve
 
 
 def _recording(f):

@@ -13,7 +13,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams
-from .engine import _bounds, _jacobian, _solve
+from .optimizer import _bounds, _jacobian, _solve
 
 __all__ = ["NM_STAT_TOL", "M_SMOOTH", "GN_STEP_TOL", "GN_MAX_ITER", "GN_TRY_EVERY"]
 

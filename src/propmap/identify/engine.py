@@ -1,42 +1,29 @@
 """The one fitting engine that every data kind uses (loads, level flight, flight logs):
 bounds, the population prior, multistart least squares, fits along the data's leading
-directions and the report (docs/identification.md); the continuation in the stall-blend
-sharpness M is identify/continuation.py's.
+directions and the report (docs/identification.md); the least squares themselves are
+identify/optimizer.py's, the continuation in the stall-blend sharpness M
+identify/continuation.py's.
 
 A data kind brings its residual, a function of the parameter vector (with
 ``with_jacobian`` for the implicit Jacobian, :func:`_attach_jacobian`), and calls
-:func:`_solve` or :func:`propmap.identify.continuation._fit_with_continuation` (the
-continuation in the stall-blend sharpness M, identify/continuation.py), then :func:`_finish`.
+:func:`propmap.identify.optimizer._solve` or
+:func:`propmap.identify.continuation._fit_with_continuation` (the continuation in the
+stall-blend sharpness M), then :func:`_finish`.
 """
 
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import fields, replace
 
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import ABSENT_AT_ZERO, ALL_BOUNDS, BODY_X0, FLAP_START, FitOptions, _is_angle, report_name
-from .result import FitResult, Identifiability, _effective_parameters, _identifiability, _scale_of
+from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_START, FitOptions, _is_angle, report_name
+from .optimizer import DIFFERENT_X_RTOL, SAME_COST_RTOL, SCREEN_NFEV, _bounds, _jacobian, _solve
+from .result import FitResult, Identifiability, _effective_parameters, _identifiability
 
 __all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
-
-
-SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
-SAME_COST_RTOL = 0.01  # multistart optima within 1% in cost ...
-DIFFERENT_X_RTOL = 0.05  # ... but 5% apart in a parameter: the data do not determine it
-
-
-def _bounds(names, options: FitOptions):
-    table = {**ALL_BOUNDS, **(options.bounds or {})}
-    unknown = [n for n in names if n not in table]
-    if unknown:
-        raise ValueError(f"cannot fit {', '.join(unknown)}: valid names are {', '.join(table)}")
-    lb = np.array([table[n][0] for n in names], float)
-    ub = np.array([table[n][1] for n in names], float)
-    return lb, ub
 
 
 def _x0(names, options: FitOptions, base: SectionParams, overrides=None) -> np.ndarray:
@@ -74,23 +61,6 @@ def _m_effect(make_data_residual, best, base: SectionParams, options: FitOptions
         "rms_residual_at_M_base": float(np.sqrt(np.mean(r_base**2)))}}
 
 
-def _jacobian(residual, x, lb, ub):
-    """Central-difference Jacobian at x (one-sided at a bound), step 1e-4 max(|x_k|, 0.1).
-
-    The floor 0.1 matters: a purely relative step (SciPy's ``diff_step``) is 1e-14 at
-    the paper's start c_d = 0, far below the root solve's tolerance, and gives a
-    derivative that is pure round-off.
-    """
-    cols = []
-    for k in range(x.size):
-        h = 1e-4 * max(abs(x[k]), 0.1)
-        hi, lo = x.copy(), x.copy()
-        hi[k] = min(x[k] + h, ub[k])
-        lo[k] = max(x[k] - h, lb[k])
-        cols.append((residual(hi) - residual(lo)) / (hi[k] - lo[k]))
-    return np.column_stack(cols)
-
-
 def _params_from(x, names, base: SectionParams, options: FitOptions) -> SectionParams:
     """The section record with the fitted values of its own fields (other names, such as the
     body-lift or airframe terms, are the caller's)."""
@@ -110,91 +80,6 @@ def _attach_jacobian(residual, with_jacobian):
     evaluated last), rejected steps included: the derivatives cost a fraction of the solve."""
     residual.jacobian = lambda x: with_jacobian(x)[1]
     residual.with_jacobian = with_jacobian
-
-
-def _solve(residual, names, options: FitOptions, label: str, x0):
-    """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins.
-
-    Returns (best, log, nfev, elapsed, warnings): ``warnings`` names multistart optima
-    that reach the same cost with different parameters.
-    """
-    from tqdm import tqdm
-
-    lb, ub = _bounds(names, options)
-    x0 = np.clip(np.asarray(x0, float), lb, ub)
-    starts = [x0]
-    if options.multistart > 0:
-        m = max(0, math.ceil(math.log2(options.multistart)))  # Sobol' points come in powers of 2
-        from scipy.stats import qmc
-
-        sob = qmc.Sobol(len(names), scramble=True, seed=options.seed).random_base2(m)[: options.multistart]
-        starts += list(lb + sob * (ub - lb))
-    counter = {"n": 0}
-    # disable=None: off unless a terminal
-    bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)
-
-    both = getattr(residual, "with_jacobian", None)
-    last = {}  # the Jacobian of the last residual evaluated, and where
-
-    def fun(x):
-        counter["n"] += 1
-        bar.update(1)
-        if both is None:
-            return residual(x)
-        # the implicit derivatives come with the residual from one model call: least_squares asks
-        # for the Jacobian where it last evaluated the residual (after an accepted step), so most
-        # calls need it, and the derivatives cost less than a second call (benchmarks/README.md)
-        r, J = both(np.array(x, float))
-        last["x"], last["J"] = np.array(x, float), J
-        return r
-
-    analytic = getattr(residual, "jacobian", None)
-
-    def jac(x):
-        x = np.array(x, float)
-        if both is not None and "x" in last and np.array_equal(last["x"], x):
-            return last["J"]
-        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
-            counter["n"] += 1
-            bar.update(1)
-            return analytic(x)
-        return _jacobian(fun, x, lb, ub)
-
-    def run(x_start, max_nfev):
-        from scipy import optimize
-
-        r = optimize.least_squares(fun, x_start, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
-                                   max_nfev=max_nfev, xtol=1e-10, ftol=1e-10, gtol=1e-10)
-        log.append({"x0": np.array(x_start), "x": r.x.copy(), "cost": float(r.cost), "nfev": int(r.nfev),
-                    "status": int(r.status), "stage": "polish" if max_nfev == options.max_nfev else "screen"})
-        bar.set_postfix(best_cost=f"{min(e['cost'] for e in log):.3g}")
-        return r
-
-    log = []
-    warns = []
-    t0 = time.perf_counter()
-    try:
-        if len(starts) == 1:
-            best = run(starts[0], options.max_nfev)
-        else:
-            # global stage: short runs from every start, then polish the two best to convergence
-            screened = sorted((run(s, SCREEN_NFEV) for s in starts), key=lambda r: r.cost)
-            polished = sorted((run(r.x, options.max_nfev) for r in screened[:2]), key=lambda r: r.cost)
-            best = polished[0]
-            other = polished[1]
-            # same cost: within 1%, or both at round-off level (a perfect fit)
-            if other.cost <= best.cost * (1 + SAME_COST_RTOL) + 1e-12 * best.fun.size:
-                span = np.maximum(np.abs(best.x), [max(_scale_of(n), 1e-12) for n in names])
-                differ = [n for n, a, b, sc in zip(names, best.x, other.x, span) if abs(a - b) > DIFFERENT_X_RTOL * sc]
-                if differ:
-                    warns.append(f"two multistart optima reach the same residual (costs {best.cost:.4g} and "
-                                 f"{other.cost:.4g}) with different {', '.join(differ)}: the data do not "
-                                 "determine them")
-        # best.jac is _jacobian at best.x: least_squares evaluates jac after every
-        # accepted step and returns it unchanged for the default linear loss
-    finally:
-        bar.close()
-    return best, log, counter["n"], time.perf_counter() - t0, warns
 
 
 def _cut_at_bounds(idf, lb: np.ndarray, ub: np.ndarray):
