@@ -486,13 +486,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         if not (isinstance(pair, (tuple, list)) and len(pair) == 2):
             raise TypeError(f"datasets[{k}] must be a (LoadData, Propeller) pair, got {type(pair).__name__}")
         _check_fit_args(*pair, base, air, options, where=f"datasets[{k}]: ")
-    try:
-        w = np.ones(len(datasets)) if weights is None else np.asarray(weights, dtype=float)
-    except (TypeError, ValueError):
-        w = np.array([np.nan])
-    if w.shape != (len(datasets),) or not np.all(np.isfinite(w) & (w > 0)):
-        raise ValueError(f"weights must be {len(datasets)} positive finite numbers (one per dataset), got "
-                         f"{weights!r:.80}")
+    w = _joint_weights(weights, len(datasets))
     names = _default_names(base, options)
     rows = sum(int(m.sum()) for data, _ in datasets for m in _fitted_rows(data, _load_keys(data, None)).values())
     if rows <= len(names):
@@ -532,21 +526,39 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
                      nfev * sum(d.n for d, _ in datasets), air,
                      {"kind": "loads_joint", **extra, **({"prior": prior} if prior else {}),
                       **_m_effect(make_data, best, base, options)})
+    result.extra["per_propeller"], r, keys = _per_propeller(best.fun, datasets, w, airs)
+    result.extra["residual_autocorrelation"] = lag1_autocorrelation(r, keys) if r.size else None
+    return result
+
+
+def _joint_weights(weights, n: int) -> np.ndarray:
+    """:func:`fit_loads_joint`'s ``weights`` as an array of ``n`` (ones where None), refused unless
+    ``n`` positive finite numbers."""
+    try:
+        w = np.ones(n) if weights is None else np.asarray(weights, dtype=float)
+    except (TypeError, ValueError):
+        w = np.array([np.nan])
+    if w.shape != (n,) or not np.all(np.isfinite(w) & (w > 0)):
+        raise ValueError(f"weights must be {n} positive finite numbers (one per dataset), got {weights!r:.80}")
+    return w
+
+
+def _per_propeller(fun, datasets, w, airs) -> tuple[list[dict], np.ndarray, np.ndarray]:
+    """Each propeller's share of a joint fit's residuals ``fun`` (unweighted: its rms as its own
+    fit's), its points and the air it was solved at; and the residuals with their run keys in each
+    quantity's runs in the data's order, as fit_loads's (_traced_residuals), for the lag-1
+    autocorrelation."""
     per, k, runs, run_keys = [], 0, [], []
     for i, ((data, prop), wk) in enumerate(zip(datasets, w)):
         keys = _load_keys(data, None)
         rows = _fitted_rows(data, keys)  # (the in-plane force at in-plane points only)
         m = sum(int(v.sum()) for v in rows.values())
-        r = best.fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
+        r = fun[k:k + m] * (math.sqrt(data.n) / math.sqrt(wk))
         per.append({"propeller": prop.name, "n_points": data.n, "rms_residual": float(np.sqrt(np.mean(r ** 2))),
                     "rho": airs[len(per)].rho})
         k += m
-        # each quantity's runs in the data's order, as fit_loads's (_traced_residuals)
         key = np.array([f"{i}\x00{q}\x00{data.group[j]}" for q in keys for j in np.flatnonzero(rows[q])])
         order = np.argsort(key, kind="stable")
         runs.append(r[order])
         run_keys.append(key[order])
-    result.extra["per_propeller"] = per
-    r = np.concatenate(runs)
-    result.extra["residual_autocorrelation"] = lag1_autocorrelation(r, np.concatenate(run_keys)) if r.size else None
-    return result
+    return per, np.concatenate(runs), np.concatenate(run_keys)
