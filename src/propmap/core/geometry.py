@@ -123,6 +123,52 @@ def short_repr(value, n: int = 60) -> str:
     return r if len(r) <= n else r[: n - 4] + " ..."
 
 
+def _station_values(key: str, value) -> np.ndarray:
+    """A :class:`Propeller` station field (``r``, ``chord`` or ``theta``) as a read-only 1-D float
+    array; refused unless a 1-D array of finite numbers (no bools, strings, objects or masks)."""
+    refuse_masked(key, value)  # (a masked chord of 99 m was read as given: a mutation audit, 2026-11-29)
+    try:
+        # no bools, strings or objects read as numbers
+        numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
+        ndim = np.ndim(value)
+        a = np.array(value, dtype=float, copy=True).reshape(-1)
+    except (TypeError, ValueError, OverflowError):
+        numeric = False
+    if not numeric:
+        raise ValueError(f"{key} must be an array of numbers, got {short_repr(value)}")
+    if ndim != 1:  # (a (1, n) array was flattened without a word)
+        raise ValueError(f"{key} must be a 1-D array (one value per blade station), got {ndim} dimensions")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{key} must be finite at every blade station")
+    a.setflags(write=False)
+    return a
+
+
+def _check_stations(r: np.ndarray, chord: np.ndarray, theta: np.ndarray, radius: float) -> None:
+    """Refuse stations of unequal lengths, fewer than 2, not strictly increasing or outside
+    (0, radius], a negative chord or none > 0, or a blade angle beyond 90 deg."""
+    if not (len(r) == len(chord) == len(theta)):
+        raise ValueError(
+            f"r, chord and theta must have equal lengths, got {len(r)}, {len(chord)}, {len(theta)}"
+        )
+    if len(r) < 2:
+        raise ValueError(f"at least 2 blade stations are needed, got {len(r)}")
+    if np.any(np.diff(r) <= 0):
+        i = int(np.argmax(np.diff(r) <= 0))
+        raise ValueError(
+            f"r must be strictly increasing; station {i + 1} ({r[i + 1]:.6g} m) "
+            f"does not exceed station {i} ({r[i]:.6g} m)"
+        )
+    if r[0] <= 0 or r[-1] > radius * (1 + 1e-9):
+        raise ValueError(f"r must lie in (0, radius={radius:.6g}] m, got [{r[0]:.6g}, {r[-1]:.6g}]")
+    if np.any(chord < 0):
+        raise ValueError("chord must be >= 0 m at every station")
+    if not np.any(chord > 0):
+        raise ValueError("chord must be > 0 m at some station: a blade of zero chord everywhere has no loads")
+    if np.any(np.abs(theta) > math.pi / 2 + 1e-12):
+        raise ValueError("theta must be in [-90, 90] deg at every station")
+
+
 @dataclass(frozen=True, eq=False)
 class Propeller:
     """A fixed-pitch propeller.
@@ -192,46 +238,9 @@ class Propeller:
             if pitch is None or not math.isfinite(pitch):
                 raise ValueError(f"pitch must be a finite number [m] or None, got {short_repr(self.pitch)}")
             object.__setattr__(self, "pitch", pitch)
-        arrays = {}
-        for key in ("r", "chord", "theta"):
-            value = getattr(self, key)
-            refuse_masked(key, value)  # (a masked chord of 99 m was read as given: a mutation audit, 2026-11-29)
-            try:
-                # no bools, strings or objects read as numbers
-                numeric = np.asarray(value).dtype.kind in "iuf" and not has_bool(value)
-                ndim = np.ndim(value)
-                a = np.array(value, dtype=float, copy=True).reshape(-1)
-            except (TypeError, ValueError, OverflowError):
-                numeric = False
-            if not numeric:
-                raise ValueError(f"{key} must be an array of numbers, got {short_repr(value)}")
-            if ndim != 1:  # (a (1, n) array was flattened without a word)
-                raise ValueError(f"{key} must be a 1-D array (one value per blade station), got {ndim} dimensions")
-            if not np.all(np.isfinite(a)):
-                raise ValueError(f"{key} must be finite at every blade station")
-            a.setflags(write=False)
-            arrays[key] = a
+        arrays = {key: _station_values(key, getattr(self, key)) for key in ("r", "chord", "theta")}
         r, chord, theta = arrays["r"], arrays["chord"], arrays["theta"]
-        if not (len(r) == len(chord) == len(theta)):
-            raise ValueError(
-                f"r, chord and theta must have equal lengths, got {len(r)}, {len(chord)}, {len(theta)}"
-            )
-        if len(r) < 2:
-            raise ValueError(f"at least 2 blade stations are needed, got {len(r)}")
-        if np.any(np.diff(r) <= 0):
-            i = int(np.argmax(np.diff(r) <= 0))
-            raise ValueError(
-                f"r must be strictly increasing; station {i + 1} ({r[i + 1]:.6g} m) "
-                f"does not exceed station {i} ({r[i]:.6g} m)"
-            )
-        if r[0] <= 0 or r[-1] > radius * (1 + 1e-9):
-            raise ValueError(f"r must lie in (0, radius={radius:.6g}] m, got [{r[0]:.6g}, {r[-1]:.6g}]")
-        if np.any(chord < 0):
-            raise ValueError("chord must be >= 0 m at every station")
-        if not np.any(chord > 0):
-            raise ValueError("chord must be > 0 m at some station: a blade of zero chord everywhere has no loads")
-        if np.any(np.abs(theta) > math.pi / 2 + 1e-12):
-            raise ValueError("theta must be in [-90, 90] deg at every station")
+        _check_stations(r, chord, theta, radius)
         object.__setattr__(self, "radius", radius)
         object.__setattr__(self, "n_blades", int(nb))
         for key, a in arrays.items():
