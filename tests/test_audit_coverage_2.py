@@ -440,10 +440,10 @@ def test_a_map_of_two_propellers_whose_per_prop_json_is_not_json_is_refused(tiny
 
 
 def test_c_header_of_a_map_without_its_geometry_record_checks_the_vehicle_by_size(tiny_map, tmp_path):
-    """export_c.py (_check_vehicle: a map whose attributes do not give map_model's geometry, as a map written before
+    """export_c.py (_vehicle_block: a map whose attributes do not give map_model's geometry, as a map written before
     the geometry record: the rotors then compared by diameter and blade count). Mutants: 'except ValueError' made
     'except KeyError' (map_model's 'missing attribute' escapes for the right vehicle too); the size refusal made
-    'if False:' (a 10x7 quad given the 8x6 map's table)."""
+    'if False:' (a 9x6 quad given the 8x6 map's table)."""
     old = tiny_map.copy()
     del old.attrs["geometry_r_m"]
     quad = pm.read_vehicle(EXAMPLES.joinpath("quadrotor.toml"))
