@@ -115,39 +115,65 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
                   for n, v, lo, t in zip(names, best.x, lb, tol)])
     params = _params_from(x, names, base, options)
     idf = _identifiability(names, best.x, jac, residuals, held=at_bound)
-    free = np.array([n not in at_bound for n in names], dtype=bool)
     if "prior" in extra:
-        # the estimate's error over the population and the noise (_shrinkage_meat): the fit
-        # weighed the prior rows J_p by w = sigma_d * scale (the population's residual level;
-        # scale the vehicle's weight for level-flight and flight-log fits) whatever this fit's
-        # residual variance s2 is
-        w = extra["prior"]["sigma_data"] * extra["prior"]["scale"]
-        s2 = float(residuals @ residuals) / max(residuals.size - len(names) + len(at_bound), 1)
-        post = _identifiability(names, best.x, best.jac, residuals, dof_rows=residuals.size, held=at_bound,
-                                meat=_shrinkage_meat(jac, best.jac[-k:], s2, w))
-        held = [n for n in idf.poorly_determined if n in extra["prior"]["names"]]
-        # one line for what the prior holds; the data's own word on parameters it does not
-        # cover and on the pairs they determine only together (the correlations of the data
-        # alone among the parameters they determine: the estimate's, with the prior's pull,
-        # said "the data constrain mainly a combination" of pairs the data do not, a review);
-        # the fit's own rows' singular values (the report's line says so)
-        determined = ("poorly_determined", "not_determined")
-        own = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
-               if kind[0] in determined and kind[1][0] not in extra["prior"]["names"]]
-        pairs = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
-                 if kind[0] == "correlated" and not any(n in idf.poorly_determined for n in kind[1])]
-        rest = [(w, kind) for w, kind in zip(post.warnings, post.warning_kinds)
-                if kind[0] not in determined and kind[0] != "correlated"]
-        said = own + pairs + rest + (
-            [(f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
-              "of its natural scale): the population prior weighs on them too (the data-only std errors in the "
-              "report)", ("prior_holds", tuple(held)))] if held else [])
-        idf = replace(post, poorly_determined=idf.poorly_determined, warnings=tuple(w for w, _ in said),
-                      warning_kinds=tuple(kind for _, kind in said), std_error_data=idf.std_error,
-                      effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
+        idf = _prior_report(idf, names, best, residuals, jac, at_bound, extra["prior"])
     idf = _cut_at_bounds(idf, lb, ub)
-    warns = list(warns)
-    for n, v, lo, hi in zip(names, best.x, lb, ub):
+    warns = [*warns, *_bound_warnings(names, best.x, lb, ub, at_bound)]
+    hit = int(best.status) == 0
+    if hit:
+        limit = getattr(best, "nfev_limit", options.max_nfev)
+        # (first: the warnings after it are of a fit that did not end; a user-level audit found it fourth, behind
+        # the data's heuristics, and hidden in the report)
+        warns.insert(0, f"the fit stopped at its evaluation limit ({limit}) before converging: its parameters are "
+                        "where it stopped, not an optimum")
+    cost = 0.5 * float(residuals @ residuals)
+    return FitResult(params, air, names, x, residuals, cost, nfev, n_points, elapsed,
+                     bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
+
+
+def _prior_report(idf, names, best, residuals, jac, at_bound, prior) -> Identifiability:
+    """The identifiability report of a fit under the population prior (``prior``: its record,
+    ``extra["prior"]``): the sandwich error of the estimate over the population and the noise,
+    with the data's own word on what they determine (std errors of the data alone in
+    ``std_error_data``) and one line for what the prior holds."""
+    k = len(prior["names"])
+    free = np.array([n not in at_bound for n in names], dtype=bool)
+    # the estimate's error over the population and the noise (_shrinkage_meat): the fit
+    # weighed the prior rows J_p by w = sigma_d * scale (the population's residual level;
+    # scale the vehicle's weight for level-flight and flight-log fits) whatever this fit's
+    # residual variance s2 is
+    w = prior["sigma_data"] * prior["scale"]
+    s2 = float(residuals @ residuals) / max(residuals.size - len(names) + len(at_bound), 1)
+    post = _identifiability(names, best.x, best.jac, residuals, dof_rows=residuals.size, held=at_bound,
+                            meat=_shrinkage_meat(jac, best.jac[-k:], s2, w))
+    held = [n for n in idf.poorly_determined if n in prior["names"]]
+    # one line for what the prior holds; the data's own word on parameters it does not
+    # cover and on the pairs they determine only together (the correlations of the data
+    # alone among the parameters they determine: the estimate's, with the prior's pull,
+    # said "the data constrain mainly a combination" of pairs the data do not, a review);
+    # the fit's own rows' singular values (the report's line says so)
+    determined = ("poorly_determined", "not_determined")
+    own = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
+           if kind[0] in determined and kind[1][0] not in prior["names"]]
+    pairs = [(w, kind) for w, kind in zip(idf.warnings, idf.warning_kinds)
+             if kind[0] == "correlated" and not any(n in idf.poorly_determined for n in kind[1])]
+    rest = [(w, kind) for w, kind in zip(post.warnings, post.warning_kinds)
+            if kind[0] not in determined and kind[0] != "correlated"]
+    said = own + pairs + rest + (
+        [(f"the data alone determine {', '.join(held)} poorly (a data-only std error over 10% of the value or "
+          "of its natural scale): the population prior weighs on them too (the data-only std errors in the "
+          "report)", ("prior_holds", tuple(held)))] if held else [])
+    idf = replace(post, poorly_determined=idf.poorly_determined, warnings=tuple(w for w, _ in said),
+                  warning_kinds=tuple(kind for _, kind in said), std_error_data=idf.std_error,
+                  effective_parameters=_effective_parameters(jac[:, free], best.jac[:, free]))
+    return idf
+
+
+def _bound_warnings(names, x, lb, ub, at_bound) -> list[str]:
+    """One warning for each parameter ended at a bound: held at 0 where an effect's absence is its
+    lower bound, the flapping's saturation at its upper bound, else the data pulling it beyond."""
+    warns = []
+    for n, v, lo, hi in zip(names, x, lb, ub):
         if n in at_bound:
             side, b = ("lower", lo) if abs(v - lo) <= abs(v - hi) else ("upper", hi)
             shown = f"{math.degrees(b):.4g} deg" if _is_angle(n) else f"{b:.4g}"
@@ -160,16 +186,7 @@ def _finish(names, base, options, best, log, nfev, elapsed, warns, n_points, air
             else:
                 warns.append(f"{n} ended at its {side} bound {shown}: the data pull it beyond the allowed range, so "
                              "its value is the bound's (held there); suspect the data, the geometry or the model")
-    hit = int(best.status) == 0
-    if hit:
-        limit = getattr(best, "nfev_limit", options.max_nfev)
-        # (first: the warnings after it are of a fit that did not end; a user-level audit found it fourth, behind
-        # the data's heuristics, and hidden in the report)
-        warns.insert(0, f"the fit stopped at its evaluation limit ({limit}) before converging: its parameters are "
-                        "where it stopped, not an optimum")
-    cost = 0.5 * float(residuals @ residuals)
-    return FitResult(params, air, names, x, residuals, cost, nfev, n_points, elapsed,
-                     bool(best.success), str(best.message), log, idf, at_bound, hit, tuple(warns), extra)
+    return warns
 
 
 def _prior_stats(names, base, options):
