@@ -223,12 +223,13 @@ def _uiuc_table(path: Path, text: str, where: str) -> np.ndarray:
     return data
 
 
-def _uiuc_diameter(stem: str, diameter_in, where: str) -> tuple[float, str]:
-    """The diameter [in] of a UIUC geometry file named ``stem``: ``diameter_in`` where given (checked,
-    warned of where it differs from the name's by more than 5%), else the name's (refused where the
-    name gives none or an implausible one; a millimetre family's warned of); and the note of a
-    diameter read in millimetres for the propeller's source ("" otherwise)."""
-    D_name, _, unit, family = size_from_name(stem)
+def _uiuc_diameter(stem: str, size, diameter_in, where: str) -> tuple[float, str]:
+    """The diameter [in] of a UIUC geometry file named ``stem`` (``size``: its
+    :func:`size_from_name`): ``diameter_in`` where given (checked, warned of where it differs from
+    the name's by more than 5%), else the name's (refused where the name gives none or an
+    implausible one; a millimetre family's warned of); and the note of a diameter read in
+    millimetres for the propeller's source ("" otherwise)."""
+    D_name, _, unit, family = size
     note = ""
     if diameter_in is None:
         if D_name is None:
@@ -275,8 +276,9 @@ def _uiuc_geometry(path: Path, text: str, *, diameter_in, n_blades, name, source
     where = show_path(path)
     data = _uiuc_table(path, text, where)
     stem = re.sub(r"_geom\.txt$", "", path.name, flags=re.IGNORECASE)
-    _, P_name, unit, _ = size_from_name(stem)
-    diameter_in, note = _uiuc_diameter(stem, diameter_in, where)
+    size = size_from_name(stem)
+    _, P_name, unit, _ = size
+    diameter_in, note = _uiuc_diameter(stem, size, diameter_in, where)
     _warn_blade_count(path.name, n_blades, blades_given, where)
     pitch_in = None
     if P_name is not None:
