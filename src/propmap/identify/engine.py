@@ -20,10 +20,10 @@ import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
 from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_START, FitOptions, _is_angle, report_name
-from .optimizer import DIFFERENT_X_RTOL, SAME_COST_RTOL, SCREEN_NFEV, _bounds, _jacobian, _solve
+from .optimizer import _bounds, _jacobian, _solve
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability
 
-__all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
+__all__ = []  # (the multistart constants are identify/optimizer.py's)
 
 
 def _x0(names, options: FitOptions, base: SectionParams, overrides=None) -> np.ndarray:

@@ -255,7 +255,7 @@ class FitOptions:
     lift_model : {"sigmoid", "sincos"}
     multistart : int
         Extra starts from a scrambled Sobol sequence inside the bounds (0: x0 only). With
-        starts, every start gets a short screening run (SCREEN_NFEV evaluations) and the
+        starts, every start gets a short screening run (optimizer.SCREEN_NFEV evaluations) and the
         two best are polished to convergence.
     body_lift : bool
         Level flight only: append the body-lift term of Sec. III-A (needs the vehicle's
