@@ -119,12 +119,17 @@ def resolve_params(spec: str) -> SectionParams:
     if spec.startswith(SECTION_PREFIX):
         return section_preset(spec[len(SECTION_PREFIX):])
     if spec.startswith("calibrated:"):
-        c = calibrated(spec.split(":", 1)[1])
+        name = spec.split(":", 1)[1]
+        c = calibrated(name)
         if c is None:
+            from .calibration import calibration
             from .catalogue import catalogue, near_names
 
-            raise KeyError(f"unknown parameters {spec!r}: {spec.split(':', 1)[1]!r} has no calibrated set"
-                           f"{near_names(spec.split(':', 1)[1], catalogue())}")
+            if name in catalogue():  # (it was offered as its own near name, a user-level audit, 2026-11-30)
+                raise KeyError(f"unknown parameters {spec!r}: the catalogue's {name!r} has no calibrated set (its "
+                               f"measurements, static runs only, do not calibrate one); its default set is {GENERIC!r}")
+            raise KeyError(f"unknown parameters {spec!r}: {name!r} has no calibrated set"
+                           f"{near_names(name, calibration()['propellers'])}")
         return c.params
     # a file; /dev/null, a folder, a FIFO too: the file reader names what it is (is_file raises on a name too long,
     # which the command line says as such; lexists would call it no file)
