@@ -535,9 +535,10 @@ def test_demo_fits_hold_out_both_6000_rpm_sweeps_with_a_prior_that_never_saw_the
     assert rec["coverage"][0][3] == envelope_extremes(prop, 8000.0, 20.0, 90.0)[0]
 
 
-@pytest.mark.parametrize("rpm", ["1", "954929"])
-def test_demo_takes_rpm_from_1_to_rpm_max_inclusive(capsys, tmp_path, monkeypatch, rpm):
-    """Mutant D1: --rpm 1 (RPM_MIN itself) refused; the folder check stands in for the rest of the demo."""
+@pytest.mark.parametrize("rpm", ["10", "954929"])
+def test_demo_takes_rpm_from_10_to_rpm_max_inclusive(capsys, tmp_path, monkeypatch, rpm):
+    """Mutant D1: --rpm at its lowest (10 since 2026-11-30, DEMO_RPM_MIN; 1, RPM_MIN, before) refused; the
+    folder check stands in for the rest of the demo."""
     import propmap.cli.demo as demo
     from propmap.cli._common import InputError
     from propmap.cli.main import main

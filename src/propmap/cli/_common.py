@@ -361,6 +361,36 @@ def check_point(rpm: float, airspeed: float, incidence_deg: float, where: str = 
                          f"got {incidence_deg!r}{why}")
 
 
+def fixed(x: float, decimals: int) -> str:
+    """``x`` with ``decimals`` decimals, or in scientific notation (4 significant digits) where
+    that would show a nonzero value with fewer than two (a 45 mm propeller's power at 3000 rpm
+    printed "0.00 W", its trimmed 5e-5 N "0.0001 N", a user-level audit, 2026-11-30); an exact
+    0 stays "0.000..."."""
+    if x != 0.0 and abs(x) < 10.0 ** (1 - decimals):
+        return f"{x:.3e}"
+    return f"{x:.{decimals}f}"
+
+
+class Command(click.Command):
+    """A click command that refuses an option given twice (click keeps the last value silently:
+    ``--rpm 5000 --rpm 6000`` ran at 6000 rpm, a user-level audit, 2026-11-30); options that
+    take several values (``multiple``), counters and the eager ``--help`` excepted. Every
+    propmap command is one (tests/test_cli_options.py)."""
+
+    def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
+        if ctx.resilient_parsing:  # (shell completion)
+            return super().parse_args(ctx, args)
+        _, _, order = self.make_parser(ctx).parse_args(args=list(args))
+        seen = set()
+        for param in order:
+            if not isinstance(param, click.Option) or param.multiple or param.count or not param.expose_value:
+                continue
+            if param.name in seen:
+                raise click.UsageError(f"{'/'.join(param.opts)} given more than once (it takes one value)", ctx=ctx)
+            seen.add(param.name)
+        return super().parse_args(ctx, args)
+
+
 def echo_json(obj) -> None:
     """Print ``obj`` as JSON; NaN or inf anywhere is a bug, so it raises instead."""
     click.echo(json.dumps(obj, indent=2, allow_nan=False))

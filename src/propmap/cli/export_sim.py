@@ -9,7 +9,8 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import PARAMS_HELP, InputError, PathArg, check_section_match, echo_json, load_params, with_prop_options
+from ._common import (PARAMS_HELP, Command, InputError, PathArg, check_section_match, echo_json, load_params,
+                      with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
@@ -61,7 +62,7 @@ def parse_envelope(text: str | None, propeller):
         raise InputError(f"--envelope: {exc}") from None
 
 
-@click.command("export-sim")
+@click.command("export-sim", cls=Command)
 @click.argument("prop")
 @click.option("--target", type=click.Choice(CHOICES), required=True,
               help="rotorpy (quad_params keys; a whole quad_params with --vehicle), gazebo-classic (PX4-SITL "

@@ -11,7 +11,7 @@ import click
 
 from ._air import resolve_air, with_air_options
 
-from ._common import (InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
+from ._common import (Command, InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
                        parse_names, warn, with_prop_options)
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import catalogue_citation, data_digest, file_air, file_digests, read_sources
@@ -216,7 +216,7 @@ def fit() -> None:
     """Identify section parameters from flight data or load measurements (paper Sec. III)."""
 
 
-@fit.command("level-flight")
+@fit.command("level-flight", cls=Command)
 @click.argument("data", type=PathArg())
 @click.option("--vehicle", type=PathArg(text=True), required=True, help="Vehicle TOML.")
 @click.option("--body-lift", is_flag=True,
@@ -304,7 +304,7 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
             and fitted[q + "_rmse"] - base[q + "_rmse"] > 0.02 * largest[q]]
 
 
-@fit.command("loads")
+@fit.command("loads", cls=Command)
 @click.argument("sources", metavar="SOURCE...", nargs=-1, required=True)
 @click.option("--holdout", default=None, help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
                                               "to hold out (default: none).")

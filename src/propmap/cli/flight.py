@@ -9,7 +9,7 @@ import click
 
 from ._air import resolve_air, with_air_options
 
-from ._common import InputError, PathArg, load_params, parse_names
+from ._common import Command, InputError, PathArg, load_params, parse_names
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
@@ -195,7 +195,7 @@ def _flight_out_files(out: Path) -> list:
     return _out_files(out) + [("--out (report/figure beside it)", stem.with_name(stem.name + ".speed.png"))]
 
 
-@click.command("flight")
+@click.command("flight", cls=Command)
 @click.argument("log_paths", metavar="LOG...", nargs=-1, required=True, type=PathArg())
 @click.option("--vehicle", type=PathArg(text=True), required=True,
               help="Vehicle TOML, its rotors in the logs' motor order.")
@@ -489,7 +489,7 @@ def _hover_loads(params, veh, samples, air):
     return {"thrust": T, "drag": np.zeros(samples.n), "torque": Q}
 
 
-@click.command("wrench")
+@click.command("wrench", cls=Command)
 @click.argument("log_path", metavar="LOG", type=PathArg())
 @click.option("--vehicle", type=PathArg(text=True), required=True,
               help="Vehicle TOML, its rotors in the log's motor order.")

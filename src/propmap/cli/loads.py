@@ -11,8 +11,9 @@ import click
 
 from ..core.units import RPM
 from ._air import air_label, resolve_air, with_air_options
-from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_point,
-                      check_section_match, echo_json, load_params, set_collective_deg, with_prop_options)
+from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg,
+                      check_point, check_section_match, echo_json, fixed, load_params, set_collective_deg,
+                      with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 
@@ -390,7 +391,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     return n, bad
 
 
-@click.command("loads")
+@click.command("loads", cls=Command)
 @click.argument("prop")
 @click.option("--rpm", type=float, help=f"Rotation rate [rpm], in [{RPM_MIN:g}, {RPM_MAX:.0f}].")
 @click.option("--airspeed", type=float, default=None, help="Airspeed V [m/s], in [0, 500] (default 0).")
@@ -501,13 +502,13 @@ def _echo_point(propeller, params, air, label: str, r, result: dict, ratio: dict
                + (f" ({set_deg:g} of the parameter set + {collective_deg:g})" if set_deg and collective_deg else "")
                + f" (params {label})")
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
-    click.echo(f"  thrust T = {result['thrust']:.4f} N    drag D = {result['drag']:.4f} N")
-    click.echo(f"  torque Q = {result['torque']:.5f} N m  power P = {result['power']:.2f} W")
-    click.echo(f"  rolling moment M_R = {result['rolling_moment']:.5f} N m")
+    click.echo(f"  thrust T = {fixed(result['thrust'], 4)} N    drag D = {fixed(result['drag'], 4)} N")
+    click.echo(f"  torque Q = {fixed(result['torque'], 5)} N m  power P = {fixed(result['power'], 2)} W")
+    click.echo(f"  rolling moment M_R = {fixed(result['rolling_moment'], 5)} N m")
     if "side_force" in result:
-        click.echo(f"  side force Y = {result['side_force']:.4f} N  pitching moment M_P = "
-                   f"{result['pitching_moment']:.5f} N m  ({', '.join(params.side_load_sources())})")
-    click.echo(f"  CT = {result['CT']:.4f}  CQ = {result['CQ']:.5f}  CP = {result['CP']:.4f}")
+        click.echo(f"  side force Y = {fixed(result['side_force'], 4)} N  pitching moment M_P = "
+                   f"{fixed(result['pitching_moment'], 5)} N m  ({', '.join(params.side_load_sources())})")
+    click.echo(f"  CT = {fixed(result['CT'], 4)}  CQ = {fixed(result['CQ'], 5)}  CP = {fixed(result['CP'], 4)}")
     if ratio["v_i_over_v_h"] is not None:
         click.echo(f"  state: {result['state']}  (v_i/v_h = {ratio['v_i_over_v_h']:.3f}, "
                    f"lambda2 = V_descent/v_h = {round(ratio['lambda2'], 3) + 0.0:.3f})")  # no "-0.000"

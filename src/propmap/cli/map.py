@@ -13,8 +13,8 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
-from ._common import (warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match, echo_json, given,
-                      load_params, option_group, parse_names, set_collective_deg, with_prop_options)
+from ._common import (Command, warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match, echo_json,
+                      given, load_params, option_group, parse_names, set_collective_deg, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_out_dir, check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
@@ -120,7 +120,7 @@ with_c_options = option_group("c_header", CHeaderChoice, c_options)
 with_plot_options = option_group("plot", PlotChoice, plot_options)
 
 
-@click.command("map")
+@click.command("map", cls=Command)
 @click.argument("prop", required=False)
 @with_axis_options
 @click.option("--params", "params_spec", default=None, help=PARAMS_HELP)

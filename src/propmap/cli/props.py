@@ -6,10 +6,10 @@ import click
 
 from ..io.calibration import calibrated
 from ..io.catalogue import catalogue
-from ._common import echo_json
+from ._common import Command, echo_json
 
 
-@click.command("props")
+@click.command("props", cls=Command)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
 def props(as_json: bool) -> None:
     """List the bundled propellers, their measurements and calibration.

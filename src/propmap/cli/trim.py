@@ -9,8 +9,8 @@ import click
 
 from ..core.units import RPM
 from ._air import air_label, resolve_air, with_air_options
-from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, check_point, check_section_match, echo_json,
-                      load_params, set_collective_deg, with_prop_options)
+from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, check_point, check_section_match, echo_json,
+                      fixed, load_params, set_collective_deg, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
@@ -18,7 +18,7 @@ from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, n
 RANGE_DEG = (-20.0, 30.0)
 
 
-@click.command("trim")
+@click.command("trim", cls=Command)
 @click.argument("prop")
 @click.option("--thrust", type=float, required=True, help="Thrust to make [N].")
 @click.option("--rpm", type=float, default=None,
@@ -146,21 +146,23 @@ def _echo_text(propeller, label, air, out: dict, searched: dict, airspeed, incid
     click.echo(f"  {propeller.n_blades} blades, D = {propeller.diameter:.4g} m; air: {air_label(air)}")
     if out["solved_for"] == "rpm":
         a, b = searched["rpm_range"]
-        click.echo(f"  {rpm:.1f} rpm ({omega:.4g} rad/s) makes T = {out['thrust']:.4f} N at collective "
+        click.echo(f"  {rpm:.1f} rpm ({omega:.4g} rad/s) makes T = {fixed(out['thrust'], 4)} N at collective "
                    f"{set_deg:g} deg ({out['branch']}; {out['solutions_seen']} solution(s) seen in [{a:.6g}, {b:.6g}] "
                    "rpm)")
     else:
-        click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {out['thrust']:.4f} N "
+        click.echo(f"  collective {out['collective_deg']:.4f} deg makes T = {fixed(out['thrust'], 4)} N "
                    + (f"(the set's {set_deg:g} deg + {added:.4f} deg) " if set_deg else "")
                    + f"({out['branch']}; {out['solutions_seen']} solution(s) seen in "
                    f"[{searched['range_deg'][0]:g}, {searched['range_deg'][1]:g}] deg added)")
-    click.echo(f"  torque Q = {out['torque']:.5f} N m  power P = {out['power']:.2f} W  CQ = {out['CQ']:.5f}")
-    click.echo(f"  drag D = {out['drag']:.4f} N  rolling moment M_R = {out['rolling_moment']:.5f} N m"
-               + (f"  side force Y = {out['side_force']:.4f} N  pitching moment M_P = {out['pitching_moment']:.5f} N m"
+    click.echo(f"  torque Q = {fixed(out['torque'], 5)} N m  power P = {fixed(out['power'], 2)} W  "
+               f"CQ = {fixed(out['CQ'], 5)}")
+    click.echo(f"  drag D = {fixed(out['drag'], 4)} N  rolling moment M_R = {fixed(out['rolling_moment'], 5)} N m"
+               + (f"  side force Y = {fixed(out['side_force'], 4)} N  pitching moment M_P = "
+                  f"{fixed(out['pitching_moment'], 5)} N m"
                   if "side_force" in out else ""))
     if out["dCQ_constant_thrust"] is not None:
         click.echo("  dCQ at constant thrust (minus hover at the same T and rpm) = "
-                   f"{out['dCQ_constant_thrust']:.5f}")
+                   f"{fixed(out['dCQ_constant_thrust'], 5)}")
     ratios = (f" (v_i/v_h = {out['v_i_over_v_h']:.3f}, lambda2 = V_descent/v_h = "
               f"{round(out['lambda2'], 3) + 0.0:.3f})" if out["v_i_over_v_h"] is not None and out["lambda2"] is not None
               else "")  # (as loads says them; no "-0.000")

@@ -9,7 +9,7 @@ import click
 
 from ..core.units import RPM
 from ._air import with_air_options
-from ._common import InputError, PathArg, echo_json
+from ._common import Command, InputError, PathArg, echo_json
 
 #: the most airspeeds one call trims (each about 0.1 s)
 MAX_SPEEDS = 200
@@ -27,7 +27,7 @@ def _speeds(text: str) -> list:
     return out
 
 
-@click.command("trim-vehicle")
+@click.command("trim-vehicle", cls=Command)
 @click.option("--vehicle", type=PathArg(text=True), required=True,
               help="Vehicle TOML, or a bundled example's name (quadrotor, neurobem_quadrotor).")
 @click.option("--airspeed", "airspeed", default="0", show_default=True,

@@ -10,7 +10,7 @@ import click
 
 from ._air import air_label, resolve_air, with_air_options
 
-from ._common import (PARAMS_HELP, InputError, PathArg, _catalogue_geometry, check_section_match, echo_json,
+from ._common import (Command, PARAMS_HELP, InputError, PathArg, _catalogue_geometry, check_section_match, echo_json,
                        load_params, parse_names, warn, with_prop_options)
 from ._paths import _is_file, check_out_dir, check_outputs
 from .validate_all import PROTOCOLS
@@ -31,7 +31,7 @@ def print_table(v) -> None:
     click.echo(f"model bias: CT {m['ct_bias']:+.4f}, CP {m['cp_bias']:+.4f}. Data: {v.citation}")
 
 
-@click.command("validate")
+@click.command("validate", cls=Command)
 @click.argument("sources", metavar="[PROP | SOURCE...]", nargs=-1)
 @click.option("--all", "all_props", is_flag=True,
               help="Cross-validate every catalogue propeller with measurements (about 1 minute on 2 cores).")
