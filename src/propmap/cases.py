@@ -28,6 +28,7 @@ from importlib import resources
 
 import numpy as np
 
+from .core._numbers import real
 from .core.units import RPM
 from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
@@ -359,8 +360,10 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
         From the model.
     """
     air = model_air(p, air, name="p")
-    if isinstance(omega, (bool, np.bool_)) or not isinstance(omega, (int, float)) or not 1.0 <= omega <= 1e5:
+    om = real(omega)  # (NumPy numbers too, core._numbers)
+    if om is None or not 1.0 <= om <= 1e5:
         raise ValueError(f"omega must be a rotation rate in [1, 100000] rad/s, got {omega!r:.60}")
+    omega = om
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
     R = prop.radius

@@ -9,10 +9,9 @@ Sutherland's law.
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import dataclass
 
-import numpy as np
+from ._numbers import real
 
 __all__ = ["Air"]
 
@@ -24,12 +23,9 @@ def _check_finite(name: str, value: float, *, low: float | None = None,
     Only real numbers are accepted: a bool or a string (``True``, ``"5.3"``) is an error,
     not silently converted.
     """
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+    x = real(value)
+    if x is None:
         raise ValueError(f"{name} must be a number, got {value!r}")
-    try:
-        x = float(value)
-    except (TypeError, ValueError, OverflowError):
-        raise ValueError(f"{name} must be a finite number, got {value!r}") from None
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {x!r}")
     if low is not None and (x < low or (low_open and x == low)):
@@ -152,9 +148,9 @@ SUPERSONIC_TIP = "a blade tip meets the air at Mach"
 
 
 def _check_range(name: str, value, lo: float, hi: float, unit: str) -> float:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+    x = real(value)
+    if x is None:
         raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
-    x = float(value)
     if not (math.isfinite(x) and lo <= x <= hi):
         raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
     return x

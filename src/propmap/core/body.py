@@ -23,10 +23,11 @@ slipstream's. The combination is propmap's; its value was measured on real fligh
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import dataclass
 
 import numpy as np
+
+from ._numbers import real
 
 __all__ = ["BodyDrag", "body_drag_force"]
 
@@ -36,9 +37,9 @@ WASH_FACTOR_MAX = 3.0  # [-]
 
 
 def _number(name: str, value, lo: float, hi: float) -> float:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+    x = real(value)
+    if x is None:
         raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}], got {value!r:.60}")
-    x = float(value)
     if not (math.isfinite(x) and lo <= x <= hi):
         raise ValueError(f"{name} must be a finite number in [{lo:g}, {hi:g}], got {value!r:.60}")
     return x

@@ -15,21 +15,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numbers import real as _real
 from ._pchip import Pchip
 
 __all__ = ["Propeller", "rotor_like"]
 
 INCH = 0.0254  # [m]
-
-
-def _real(value) -> float | None:
-    """``float(value)`` for a real number (not a bool, a string or an int too large), else None."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        return None
-    try:
-        return float(value)
-    except (OverflowError, TypeError, ValueError):
-        return None
 
 
 def refuse_masked(name: str, value) -> None:

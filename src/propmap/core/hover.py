@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numbers import real
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller, has_bool
 from .solver import DEFAULT_DISCRETIZATION, Discretization, check_air, check_model_args, rotor_loads
@@ -65,12 +66,17 @@ class HoverModel:
     def __post_init__(self) -> None:
         for name in ("k_T", "k_Q"):
             v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            x = real(v)
+            if x is None or not math.isfinite(x):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")
+            object.__setattr__(self, name, x)
         for name in ("rho", "diameter"):
             v = getattr(self, name)
-            if v is not None and (isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 < v < math.inf):
-                raise ValueError(f"{name} must be a positive finite number or None, got {v!r}")
+            if v is not None:
+                x = real(v)
+                if x is None or not 0 < x < math.inf:
+                    raise ValueError(f"{name} must be a positive finite number or None, got {v!r}")
+                object.__setattr__(self, name, x)
 
     @classmethod
     def from_model(cls, propeller: Propeller, params: AirfoilParams, omega: float, *,
@@ -107,13 +113,14 @@ class HoverModel:
         """
         air = getattr(params, "air", None) if air is None else air  # checked below
         check_model_args(propeller, params, air, discretization)
-        if isinstance(omega, (bool, np.bool_)) or np.ndim(omega) != 0 or np.asarray(omega).dtype.kind not in "iuf":
+        om = real(omega)  # (a float: np.float32's k_T = T / Omega^2 was a float32, then refused)
+        if om is None:
             raise ValueError(f"omega must be one rotation rate [rad/s] (a number), got {omega!r:.60}")
-        if not float(omega) >= 1.0:
+        if not om >= 1.0:
             raise ValueError(f"omega must be at least 1 rad/s to calibrate a hover model "
-                             f"(k_T = T / Omega^2), got {float(omega)!r}")
-        r = rotor_loads(propeller, params, omega, 0.0, 0.0, air=air, discretization=discretization)
-        return cls(float(r.thrust) / omega**2, float(r.torque) / omega**2, rho=float(air.rho),
+                             f"(k_T = T / Omega^2), got {om!r}")
+        r = rotor_loads(propeller, params, om, 0.0, 0.0, air=air, discretization=discretization)
+        return cls(float(r.thrust) / om**2, float(r.torque) / om**2, rho=float(air.rho),
                    diameter=float(propeller.diameter))
 
     @classmethod
@@ -145,9 +152,13 @@ class HoverModel:
         """
         air = Air() if air is None else air
         check_air(air)
+        checked = []
         for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            x = real(v)
+            if x is None or not math.isfinite(x):
                 raise ValueError(f"{name} must be a finite number, got {v!r}")
+            checked.append(x)
+        CT, CP, diameter = checked
         if not 0 < diameter <= 1e3:
             raise ValueError(f"diameter must be in (0, 1000] m, got {diameter!r}")
         if not (abs(CT) <= 1e3 and abs(CP) <= 1e3):
@@ -200,8 +211,10 @@ class HoverModel:
         if d is None:
             raise ValueError("diameter is needed: this model records none (build it with from_model or "
                              "from_coefficients, or give it)")
-        if isinstance(d, bool) or not isinstance(d, (int, float)) or not 0 < d < math.inf:
+        x = real(d)
+        if x is None or not 0 < x < math.inf:
             raise ValueError(f"diameter must be a positive finite number [m], got {d!r}")
+        d = x
         rho = (self.rho if self.rho is not None else Air().rho) if air is None else air.rho
         return float(d), float(rho)
 

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._numbers import real
 from .units import RPM
 from .airfoil import Air, SectionParams
 from .geometry import Propeller, broadcast_readonly
@@ -127,8 +128,8 @@ def _where(i: int, shape) -> str:
 
 def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
     """The thrust wanted as a float array, and its tolerance, checked (ValueError naming each)."""
-    if isinstance(thrust_tol, bool) or not (isinstance(thrust_tol, (int, float)) and thrust_tol > 0
-                                            and math.isfinite(thrust_tol)):  # (True was a tolerance of 1 N)
+    tol = real(thrust_tol)  # (True was a tolerance of 1 N)
+    if tol is None or not (tol > 0 and math.isfinite(tol)):
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
     T_star = np.asarray(thrust)
     if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
@@ -155,7 +156,8 @@ THRUST_RTOL = 1e-6
 def _effective_tol(T1: np.ndarray, thrust_tol: float) -> float:
     """``thrust_tol``, or THRUST_RTOL of the smallest nonzero |T*| where that is smaller."""
     nonzero = np.abs(T1[T1 != 0.0])
-    return min(thrust_tol, THRUST_RTOL * float(nonzero.min())) if nonzero.size else thrust_tol
+    tol = float(thrust_tol)  # (checked by _checked_thrust: a NumPy scalar or 0-d array too)
+    return min(tol, THRUST_RTOL * float(nonzero.min())) if nonzero.size else tol
 
 
 def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: float = 0.0, xrtol: float = 0.0):
@@ -285,10 +287,11 @@ def trim_collective(
     lo, hi = _check_bounds(bounds)
     if grid_step is None:  # (a narrow --range-deg once met 'grid_step must be in (0, 0.0349] rad')
         grid_step = min(GRID_STEP, hi - lo)
-    if not (isinstance(grid_step, (int, float)) and not isinstance(grid_step, bool)
-            and (hi - lo) / GRID_NODES_MAX <= grid_step <= hi - lo):
+    step = real(grid_step)  # (np.float32(0.05) was refused as out of [8.7e-05, 0.87] rad)
+    if step is None or not (hi - lo) / GRID_NODES_MAX <= step <= hi - lo:
         raise ValueError(f"grid_step must be in [{(hi - lo) / GRID_NODES_MAX:.6g}, {hi - lo:.6g}] rad (the bounds' "
                          f"width over 1 to {GRID_NODES_MAX:,} steps), got {grid_step!r}")
+    grid_step = step
     T_star = _checked_thrust(thrust, thrust_tol)
     # the operating points are checked by rotor_loads; broadcast them with the thrust here
     try:

@@ -10,6 +10,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..core._numbers import real
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
 from ._checks import first_length, float_array
@@ -332,11 +333,14 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     if not logs:
         raise ValueError("no flight logs given")
     # (a bool is not a rate: rate_hz=True was read as 1 Hz, motor_time_constant=True as 1 s, a mutation audit)
-    if isinstance(rate_hz, bool) or not (isinstance(rate_hz, (int, float)) and 0 < rate_hz <= 1e4):
+    rate = real(rate_hz)  # (NumPy numbers too, core._numbers)
+    if rate is None or not 0 < rate <= 1e4:
         raise ValueError(f"rate_hz must be a number in (0, 10000] Hz, got {rate_hz!r}")
+    rate_hz = rate
     tau = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
-    if isinstance(tau, bool) or not (isinstance(tau, (int, float)) and 0 <= tau <= 1):
+    if real(tau) is None or not 0 <= real(tau) <= 1:
         raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
+    tau = real(tau)
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)

@@ -23,6 +23,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core._numbers import real
+
 __all__ = ["MAX_FILE_BYTES", "MAX_SMALL_FILE_BYTES", "show_path", "short_path", "read_input_bytes", "decode_input_text",
            "parse_number", "header_separator", "SEPARATORS"]
 
@@ -410,7 +412,7 @@ def _check_column(table: _Table, j: int, label: str, lo: float, hi: float, path,
 
 
 def _check_number(value, label: str, error, where: str, *, integer: bool = False) -> None:
-    ok = (isinstance(value, numbers.Integral) if integer else isinstance(value, numbers.Real))
+    ok = isinstance(value, numbers.Integral) if integer else real(value) is not None  # (a 0-d array too)
     if isinstance(value, (bool, np.bool_)) or not ok:
         kind = "an integer" if integer else "a number"
         raise error(f"{where}: {label} must be {kind}, got {value!r}"[:300])

@@ -6,11 +6,11 @@ Body frame: x forward, y left, z up. The wrench of this vehicle is in vehicle/mo
 
 from __future__ import annotations
 
-import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core._numbers import real
 from ..core.airfoil import SectionParams
 from ..core.body import BodyDrag
 from ..core.geometry import Propeller, has_bool
@@ -82,8 +82,8 @@ class Rotor:
 
 
 def _is_number(x) -> bool:
-    """A real number, not a bool."""
-    return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
+    """A real number, not a bool (a NumPy scalar or 0-d array of one too: core._numbers.real)."""
+    return real(x) is not None
 
 
 def _vector3(name: str, value) -> np.ndarray:
@@ -165,11 +165,13 @@ class Vehicle:
             v = getattr(self, name)
             if not (_is_number(v) and low < v < np.inf):
                 raise ValueError(f"Vehicle.{name} must be a finite number > 0, got {v!r:.40}")
+            object.__setattr__(self, name, real(v))
         for name, (lo, hi) in (("body_area", (0.0, np.inf)), ("motor_time_constant", (0.0, np.inf)),
                                ("rotor_interference", (0.0, 3.0))):
             v = getattr(self, name)
             if not (_is_number(v) and lo <= v <= hi and np.isfinite(v)):
                 raise ValueError(f"Vehicle.{name} must be a finite number in [{lo:g}, {hi:g}], got {v!r:.40}")
+            object.__setattr__(self, name, real(v))
         rotors = tuple(self.rotors) if isinstance(self.rotors, (list, tuple)) else None
         if not rotors or not all(isinstance(r, Rotor) for r in rotors):
             raise ValueError(f"Vehicle.rotors must be a non-empty sequence of Rotor, got {self.rotors!r:.60}")

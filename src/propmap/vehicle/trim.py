@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core._numbers import real
 from ..core.airfoil import Air, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
@@ -213,10 +214,7 @@ def _nearest_trim(balance, x, lo, hi):
 
 def _number(name: str, value, lo: float, hi: float, shown: str | None = None) -> float:
     """``value`` as a float in [lo, hi], else ValueError naming ``name`` and the range."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        v = math.nan
-    if isinstance(value, (bool, np.bool_)) or not (math.isfinite(v) and lo <= v <= hi):
+    v = real(value)  # (float() read the text "5" as 5 m/s, a user-level audit, 2026-11-30)
+    if v is None or not (math.isfinite(v) and lo <= v <= hi):
         raise ValueError(f"{name} must be a number in {shown or f'[{lo:g}, {hi:g}]'} m/s, got {value!r:.60}")
     return v
