@@ -28,6 +28,7 @@ import numpy as np
 
 from ..core._interp import vehicle_point
 from ..core._plain import plain_vector
+from ..core.air import _check_finite
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
 from ._kinematics import _samples, hub_velocities
@@ -73,8 +74,10 @@ class VehicleMap:
     Raises
     ------
     ValueError
-        ``vehicle`` not a Vehicle, a number of maps other than 1 or the number of rotors, or a
-        map of another diameter (by more than 1%) or blade count than its rotor's propeller.
+        ``vehicle`` not a Vehicle, ``maps`` neither a RotorMap nor a sequence of them, a
+        number of maps other than 1 or the number of rotors, a map of another diameter (by
+        more than 1%) or blade count than its rotor's propeller, or ``rho`` not a positive
+        finite number.
 
     Warns
     -----
@@ -86,7 +89,10 @@ class VehicleMap:
         if not isinstance(vehicle, Vehicle):
             raise ValueError(f"vehicle must be a Vehicle, got {type(vehicle).__name__}")
         n = len(vehicle.rotors)
-        maps = [maps] * n if hasattr(maps, "wrench") else list(maps)
+        try:
+            maps = [maps] * n if hasattr(maps, "wrench") else list(maps)
+        except TypeError:  # (None met "'NoneType' object is not iterable", a user-level audit, 2026-11-30)
+            raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {type(maps).__name__}") from None
         if len(maps) != n or not all(hasattr(m, "wrench") for m in maps):
             raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
         for i, (m, r) in enumerate(zip(maps, vehicle.rotors)):
@@ -121,7 +127,9 @@ class VehicleMap:
             warnings.warn(f"the rotors' interference (factor {vehicle.rotor_interference:g}) is left out: a map "
                           "holds no induced velocity; each rotor is evaluated in the freestream", UserWarning,
                           stacklevel=2)
-        self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else float(rho)
+        # (any rho was taken: -1 reversed the airframe drag, NaN made every force NaN, a user-level audit, 2026-11-30)
+        self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else _check_finite("rho", rho, low=0.0,
+                                                                                           low_open=True)
 
     @staticmethod
     def _check_hub(hub: float) -> None:
@@ -248,7 +256,8 @@ class VehicleMap:
             self._check_hub(max(map(abs, v1)) + max(map(abs, w1)) * self._reach)
             force, moment, flagged = self._step(v1, w1, om[0].tolist(), out_of_grid)
         else:
-            self._check_hub(float(np.max(np.abs(air_v))) + float(np.max(np.abs(w))) * self._reach)
+            self._check_hub(float(np.max(np.abs(air_v), initial=0.0)) + float(np.max(np.abs(w), initial=0.0))
+                            * self._reach)  # (initial: no samples, shape (0, 3), as vehicle_wrench gives)
             v_hub = hub_velocities(air_v, w, self._pos)  # (N, n_rot, 3)
             force = np.zeros((N, 3))
             moment = np.zeros((N, 3))
