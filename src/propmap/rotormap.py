@@ -331,7 +331,9 @@ class RotorMap:
             _interp.interp_batch(self.omega, self.airspeed, self.incidence, self._side_table, self._cellflag,
                                  self.radius, *flat, policy, self._order, side, inside, flagged)
         # under "clip" the loads hold at the top row above the grid, at the query's Omega below it (scaled)
-        om = np.minimum(q[0], self.omega[-1]) if out_of_grid == "clip" else q[0]
+        # (a copy: q[0] may be the caller's array, which the result shared and, writeable, let write: a user-level
+        # audit, 2026-11-30)
+        om = np.minimum(q[0], self.omega[-1]) if out_of_grid == "clip" else q[0].copy()
         return MapLoads(*(out[:, k].reshape(shape) for k in range(len(LOADS))), omega=om,
                         inside=inside.reshape(shape), flagged=flagged.reshape(shape),
                         side_force=side[:, 0].reshape(shape), pitching_moment=side[:, 1].reshape(shape))
