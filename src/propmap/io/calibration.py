@@ -27,8 +27,10 @@ from __future__ import annotations
 
 import functools
 import json
+from collections.abc import Mapping
 from dataclasses import dataclass
 from importlib import resources
+from types import MappingProxyType
 
 from ..core.airfoil import RECORD_META, Air, AirfoilParams, CamberedParams, SectionParams
 
@@ -172,13 +174,15 @@ def _entry(name: str, d: dict, source: str) -> Calibration:
 
 
 @functools.lru_cache(maxsize=1)
-def calibration() -> dict:
+def calibration() -> Mapping:
     """The shipped calibration: ``{"generic": Calibration, "propellers": {name: Calibration}, ...}``.
 
     Returns
     -------
-    dict
-        Read once per process (cached) from the package's calibration file.
+    Mapping
+        Read once per process (cached) from the package's calibration file, read-only (it and
+        its ``propellers`` and ``population`` are ``types.MappingProxyType``; ``generic_folds``
+        a tuple), as every caller in the process shares it.
 
     Raises
     ------
@@ -186,16 +190,21 @@ def calibration() -> dict:
         The packaged file is malformed (an installation problem).
     """
     raw = _raw()
-    return {
+
+    def frozen(pop):
+        return None if pop is None else MappingProxyType(pop)
+
+    return MappingProxyType({
         "generic": _entry(GENERIC, raw["generic"], raw["generic"]["source"]),
-        "generic_folds": [(_entry(d.get("label", f"generic fold {k}"), d, raw["generic"]["source"]),
-                           frozenset(d["propellers"]), d.get("population"))
-                          for k, d in enumerate(raw.get("generic_folds", []))],
-        "population": raw.get("population"),
-        "propellers": {n: _entry(f"calibrated:{n}", d, raw["propeller_source"]) for n, d in raw["propellers"].items()},
+        "generic_folds": tuple((_entry(d.get("label", f"generic fold {k}"), d, raw["generic"]["source"]),
+                                frozenset(d["propellers"]), frozen(d.get("population")))
+                               for k, d in enumerate(raw.get("generic_folds", []))),
+        "population": frozen(raw.get("population")),
+        "propellers": MappingProxyType({n: _entry(f"calibrated:{n}", d, raw["propeller_source"])
+                                        for n, d in raw["propellers"].items()}),
         "citation": raw["citation"],
         "created_by": raw["created_by"],
-    }
+    })
 
 
 def generic_params() -> SectionParams:

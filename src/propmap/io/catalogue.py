@@ -168,7 +168,6 @@ class CatalogueEntry:
         return [_data_path(f) for f in (*self.static_files, *self.sweep_files)]
 
 
-@functools.lru_cache(maxsize=1)
 def catalogue() -> dict[str, CatalogueEntry]:
     """All bundled propellers, by name (147 entries: vol. 1, 79 UIUC geometries and 29 APC PE0;
     vol. 2, 39).
@@ -176,9 +175,17 @@ def catalogue() -> dict[str, CatalogueEntry]:
     Returns
     -------
     dict of str to CatalogueEntry
-        Read once per process (cached); the data: UIUC Propeller Data Site vol. 1 and 2 and
-        APC's PE0 geometry (each entry's ``citation``).
+        A new dict each call (the entries are frozen): the file is read once per process; the
+        data: UIUC Propeller Data Site vol. 1 and 2 and APC's PE0 geometry (each entry's
+        ``citation``).
     """
+    # (the cached dict itself was returned: catalogue().pop("apce_10x7") made load_propeller("apce_10x7") an
+    # unknown propeller for the rest of the process, a user-level audit, 2026-11-30)
+    return dict(_catalogue())
+
+
+@functools.lru_cache(maxsize=1)
+def _catalogue() -> dict[str, CatalogueEntry]:
     raw = json.loads(_data_path("catalogue.json").read_text())
     return {
         e["name"]: CatalogueEntry(e["name"], e["family"], e["diameter_in"], e["pitch_in"], e["n_blades"],
