@@ -20,7 +20,7 @@ import numbers
 import numpy as np
 
 from ..core.airfoil import Air
-from ..io.catalogue import CatalogueEntry
+from ..io.catalogue import CatalogueEntry, get_entry
 from ..io.inputs import show_path
 from .csvfile import DataError, RANGES
 from .level_flight import LevelFlightData, body_to_world, read_level_flight, rotor_kinematics
@@ -47,8 +47,9 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
 
     Parameters
     ----------
-    entry : CatalogueEntry
-        Its bundled UIUC static runs and J-sweeps (:func:`propmap.io.catalogue.get_entry`).
+    entry : CatalogueEntry or str
+        Its bundled UIUC static runs and J-sweeps (:func:`propmap.io.catalogue.get_entry`), or
+        the propeller's name in the catalogue (``"apce_8x6"``).
     diameter : float
         Propeller diameter [m] (the coefficients' reference length), in (0, 10].
     air : Air
@@ -67,7 +68,18 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
         The entry has no bundled measurements; a ``diameter`` outside (0, 10] m; or
         converted loads out of the ranges of :func:`read_loads` (|thrust| > 1e5 N, |torque|
         > 1e4 N m, airspeed outside [0, 500] m/s), the message naming the run's file.
+    KeyError
+        A name that is not a catalogue propeller's (the message offers near names).
+    TypeError
+        ``entry`` neither a CatalogueEntry nor a string, ``air`` not an :class:`Air`.
     """
+    if isinstance(entry, str):  # (a name met an AttributeError, a user-level audit, 2026-11-30)
+        entry = get_entry(entry)
+    if not isinstance(entry, CatalogueEntry):
+        raise TypeError(f"entry must be a CatalogueEntry (propmap.io.catalogue.get_entry) or a catalogue propeller's "
+                        f"name, got {type(entry).__name__}")
+    if not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
     _check_diameter(diameter)
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")

@@ -49,12 +49,26 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
 
     Raises
     ------
+    TypeError
+        ``vehicle`` not a Vehicle (a name included: read it with :func:`propmap.read_vehicle`),
+        ``params`` not a parameter set.
     ValueError
-        If no rotor speed in ``omega_bounds`` balances the weight at some condition.
+        ``airspeed`` and ``pitch_deg`` not numbers that broadcast to one shape (N,) (a single
+        condition may be given as two numbers), or no rotor speed in ``omega_bounds`` balances
+        the weight at some condition.
     """
+    if not isinstance(vehicle, Vehicle):  # (a name met an AttributeError, a user-level audit, 2026-11-30)
+        raise TypeError(f"vehicle must be a propmap Vehicle (propmap.read_vehicle), got {type(vehicle).__name__}")
     air = model_air(params, air)
-    V = np.asarray(airspeed, float)
-    pitch = np.radians(np.asarray(pitch_deg, float))
+    try:  # (two numbers met an IndexError)
+        given = [np.atleast_1d(np.asarray(x, float)) for x in (airspeed, pitch_deg)]
+        if max(a.ndim for a in given) > 1:
+            raise ValueError
+        V, pitch_deg = (np.array(a) for a in np.broadcast_arrays(*given))
+    except (TypeError, ValueError):
+        raise ValueError(f"airspeed and pitch_deg must be numbers of one shape (N,) (or one a single number), got "
+                         f"shapes {np.shape(airspeed)} and {np.shape(pitch_deg)}") from None
+    pitch = np.radians(pitch_deg)
     n_rot = len(vehicle.rotors)
     omega = np.empty(V.size)
     for j in range(V.size):

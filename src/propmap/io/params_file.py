@@ -391,13 +391,22 @@ def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
         ``alpha_L0_deg``, ``alpha_L0_re_deg`` in degrees), and ``rho``, ``mu``,
         ``speed_of_sound``. ``params_from_dict`` gives back the record with its angles
         equal to within the degree-radian round trip (relative 2e-16).
+
+    Raises
+    ------
+    TypeError
+        ``params`` not a parameter set or ``air`` not an :class:`Air`.
     """
+    if not isinstance(params, (AirfoilParams, CamberedParams)):
+        raise TypeError(f"params must be AirfoilParams or CamberedParams, got {type(params).__name__}")
+    air = params.air if air is None else air
+    if not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
     data = {"section_model": params.section_model}
     keys = _file_keys(params.section_model)
     for key, name in keys.items():
         value = getattr(params, name)
         data[key] = math.degrees(value) if key in DEG_KEYS else value
-    air = params.air if air is None else air
     data.update({k: getattr(air, k) for k in AIR_KEYS})
     return data
 
@@ -464,7 +473,16 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
     ------
     OSError
         The file cannot be written.
+    TypeError
+        ``params`` not a parameter set, ``air`` not an :class:`Air`, ``body`` not a
+        ``BodyTable`` (:func:`read_body`'s), ``coverage`` not a dict (each named; they met
+        AttributeErrors, a user-level audit, 2026-11-30).
     """
+    if body is not None and not isinstance(body, BodyTable):
+        raise TypeError(f"body must be a BodyTable (propmap.io.params_file.read_body) or None, got "
+                        f"{type(body).__name__}")
+    if coverage is not None and not isinstance(coverage, dict):
+        raise TypeError(f"coverage must be a dict or None, got {type(coverage).__name__}")
     data = params_to_dict(params, air)
     if comment:
         data["comment"] = comment

@@ -1,0 +1,170 @@
+"""Defects found by a user-level audit of the Python API (2026-11-30): a VehicleMap's density,
+shared or aliased results (the catalogue, the calibration, a map's omega), NumPy scalars and 0-d
+arrays refused where numbers are taken, text taken as a number, and obscure exceptions where a
+wrong argument deserved a message naming it."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.identify import loads_from_catalogue, simulate_level_flight
+from propmap.io.calibration import calibration
+from propmap.io.catalogue import get_entry
+from propmap.maps import RotorMap
+from propmap.vehicle import VehicleMap, read_vehicle
+
+
+@pytest.fixture(scope="module")
+def quad(small_map):
+    _, params, ds = small_map
+    veh = dataclasses.replace(read_vehicle("quadrotor"), body_drag=pm.BodyDrag((0.01, 0.01, 0.02)))
+    return veh, params, RotorMap(ds)
+
+
+@pytest.mark.parametrize("rho, match", [(-1.0, r"rho must be in \(0.0, inf\), got -1.0"),
+                                        (0.0, r"rho must be in \(0.0, inf\), got 0.0"),
+                                        (math.nan, "rho must be finite"), (math.inf, "rho must be finite"),
+                                        (True, "rho must be a number, got True"),
+                                        ("1.2", "rho must be a number, got '1.2'")])
+def test_a_vehicle_maps_density_is_checked(quad, rho, match):
+    """-1 reversed the airframe drag, NaN made every force NaN, text was read as a number."""
+    veh, _, m = quad
+    with pytest.raises(ValueError, match=match):
+        VehicleMap(veh, m, rho=rho)
+
+
+def test_a_vehicle_maps_density_as_a_numpy_number_is_the_same_air(quad):
+    veh, _, m = quad
+    args = ([8.0, 0.0, 0.0], [0.0, 0.0, 0.0], [800.0] * 4)
+    ref = VehicleMap(veh, m, rho=1.25).wrench(*args).force
+    for rho in (np.float64(1.25), np.float32(1.25), np.array(1.25)):  # (1.25 is exact in float32)
+        np.testing.assert_array_equal(VehicleMap(veh, m, rho=rho).wrench(*args).force, ref)
+    # the airframe's drag is the one term rho scales here: doubling it doubles the difference to no airframe
+    bare = VehicleMap(dataclasses.replace(veh, body_drag=None), m).wrench(*args).force
+    twice = VehicleMap(veh, m, rho=2.5).wrench(*args).force
+    np.testing.assert_allclose(twice - bare, 2 * (ref - bare), rtol=1e-12)
+    assert (ref - bare)[0, 0] < 0  # drag opposes the flight along +x
+
+
+def test_a_vehicle_map_without_maps_or_samples(quad):
+    veh, _, m = quad
+    with pytest.raises(ValueError, match=r"maps must be one RotorMap or one per rotor \(4\), got NoneType"):
+        VehicleMap(veh, None)
+    w = VehicleMap(veh, m).wrench(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros((0, 4)))
+    assert w.force.shape == w.moment.shape == (0, 3) and w.flagged.shape == (0,)  # as vehicle_wrench's
+
+
+def test_a_maps_result_does_not_share_the_callers_omega(quad):
+    """Changing the caller's omega changed the result's (and its power); writing the result's
+    wrote the caller's."""
+    _, _, m = quad
+    om = np.array([800.0, 900.0])
+    ml = m.loads(om, 5.0, 1.0)
+    power = ml.power.copy()
+    om[:] = 1000.0
+    np.testing.assert_array_equal(ml.omega, [800.0, 900.0])
+    np.testing.assert_array_equal(ml.power, power)
+    assert not np.shares_memory(ml.omega, om)
+
+
+def test_the_catalogue_and_the_calibration_cannot_be_changed_through_their_results():
+    """catalogue().pop('apce_10x7') made load_propeller('apce_10x7') unknown for the whole process."""
+    c = pm.catalogue()
+    c.pop("apce_10x7")
+    assert "apce_10x7" in pm.catalogue() and pm.load_propeller("apce_10x7").name == "apce_10x7"
+    cal = calibration()
+    for mapping, key in ((cal, "generic"), (cal["propellers"], "apce_8x6"), (cal["population"], "names")):
+        with pytest.raises(TypeError):
+            mapping[key] = None
+    assert isinstance(cal["generic_folds"], tuple)
+    assert pm.default_params("apce_8x6").label == "calibrated:apce_8x6"
+
+
+@pytest.mark.parametrize("omega", [np.float32(800.0), np.int64(800), np.array(800.0)])
+def test_a_hover_model_takes_numpy_numbers(apc8x6, apc_params, omega):
+    """np.float32 was refused with 'k_T must be a finite number', a value the user never gave."""
+    ref = pm.HoverModel.from_model(apc8x6, apc_params, 800.0)
+    h = pm.HoverModel.from_model(apc8x6, apc_params, omega)
+    assert h == ref and type(h.k_T) is float
+    assert pm.HoverModel(k_T=np.float32(1e-5), k_Q=np.int64(0), diameter=np.array(0.2)).diameter == 0.2
+    c = pm.HoverModel.from_coefficients(np.float32(0.125), np.float32(0.0625), np.float32(0.25))
+    assert c == pm.HoverModel.from_coefficients(0.125, 0.0625, 0.25)
+
+
+def test_the_trims_take_numpy_tolerances_and_refuse_text(apc8x6, apc_params):
+    """np.float32(0.05) was refused as out of [8.7e-05, 0.87] rad; trim_vehicle read '5' as 5 m/s."""
+    ref = pm.trim_collective(apc8x6, apc_params, 2.0, 800.0, grid_step=0.0625)
+    r = pm.trim_collective(apc8x6, apc_params, 2.0, 800.0, grid_step=np.float32(0.0625), thrust_tol=np.float32(1e-6))
+    assert float(r.collective) == pytest.approx(float(ref.collective), abs=1e-9)
+    assert pm.trim_omega(apc8x6, apc_params, 2.0, thrust_tol=np.array(1e-6)).loads.thrust == pytest.approx(2.0,
+                                                                                                         abs=1e-6)
+    veh = read_vehicle("quadrotor")
+    for kw, name in (({"airspeed": "5"}, "airspeed"), ({"airspeed": 5.0, "climb_rate": "1"}, "climb_rate")):
+        with pytest.raises(ValueError, match=f"^{name} must be a number in"):
+            pm.trim_vehicle(veh, apc_params, **kw)
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: pm.Air(rho=np.array(1.2)), None),
+    (lambda: pm.BodyDrag(np.array([0.01, 0.01, 0.02]), wash_factor=np.array(0.5)), None),
+    (lambda: pm.Discretization(np.array(48), np.int64(16)), None),
+    (lambda: pm.Air(rho=np.array([1.2, 1.3])), "rho must be a number"),
+    (lambda: pm.Air(rho=np.array("1.2")), "rho must be a number"),
+])
+def test_zero_d_arrays_are_numbers_and_arrays_of_several_are_not(make, match):
+    if match is None:
+        make()
+    else:
+        with pytest.raises(ValueError, match=match):
+            make()
+
+
+def test_a_propeller_radius_may_be_a_zero_d_array(apc8x6, shared_data):
+    """It was refused with 'radius must be finite and > 0 m, got 0.1' (the value was in range); so
+    were a vehicle's mass and a geometry file's diameter_in."""
+    p = dataclasses.replace(apc8x6, radius=np.array(apc8x6.radius))
+    assert type(p.radius) is float and p.radius == apc8x6.radius
+    veh = dataclasses.replace(read_vehicle("quadrotor"), mass=np.array(0.8), gravity=np.float32(9.75))
+    assert type(veh.mass) is float and veh.mass == 0.8 and veh.gravity == float(np.float32(9.75))
+    with pytest.warns(UserWarning, match="diameter 8 in as given"):
+        g = pm.read_geometry(shared_data / "uiuc_propdb" / "v1" / "apc29ff_9x5_geom.txt", diameter_in=np.array(8.0),
+                             n_blades=2)
+    assert g.radius == pytest.approx(4 * 0.0254, rel=1e-15)
+
+
+def test_write_params_names_a_wrong_argument(tmp_path, apc_params):
+    """An AttributeError each, until 2026-11-30; nothing is written."""
+    path = tmp_path / "p.toml"
+    for kw, match in (({"params": {}}, "^params must be AirfoilParams or CamberedParams, got dict"),
+                      ({"air": 1.2}, "^air must be a propmap.Air, got float"),
+                      ({"body": 5}, "^body must be a BodyTable"), ({"coverage": [1]}, "^coverage must be a dict")):
+        args = {"params": apc_params, **kw}
+        with pytest.raises(TypeError, match=match):
+            pm.write_params(path, **args)
+    assert not path.exists()
+
+
+def test_the_synthetic_data_helpers_take_names_and_numbers(apc_params):
+    """loads_from_catalogue('apce_8x6', ...) and simulate_level_flight('quadrotor', ...) met
+    AttributeErrors, two numbers an IndexError."""
+    by_name = loads_from_catalogue("apce_8x6", 0.2032)
+    by_entry = loads_from_catalogue(get_entry("apce_8x6"), 0.2032)
+    np.testing.assert_array_equal(by_name.measured["thrust"], by_entry.measured["thrust"])
+    with pytest.raises(KeyError, match="did you mean apce_8x6"):
+        loads_from_catalogue("apce_8x6x", 0.2032)
+    with pytest.raises(TypeError, match="entry must be a CatalogueEntry"):
+        loads_from_catalogue(5, 0.2032)
+    veh = read_vehicle("quadrotor")
+    with pytest.raises(TypeError, match="^vehicle must be a propmap Vehicle"):
+        simulate_level_flight("quadrotor", apc_params, 5.0, -3.0)
+    one = simulate_level_flight(veh, apc_params, 5.0, -3.0)
+    two = simulate_level_flight(veh, apc_params, [5.0, 5.0], -3.0)
+    assert one.omega.shape == (1, 4) and two.omega.shape == (2, 4)
+    np.testing.assert_array_equal(two.omega[1], one.omega[0])
+    with pytest.raises(ValueError, match=r"got shapes \(2,\) and \(3,\)"):
+        simulate_level_flight(veh, apc_params, [5.0, 6.0], [1.0, 2.0, 3.0])
