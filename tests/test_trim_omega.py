@@ -160,3 +160,14 @@ def test_trim_reaches_a_small_thrust_to_its_relative_tolerance():
     c = trim_collective(prop, p, [2e-5, 2.1e-5], 300 * math.pi / 30)
     assert c.loads.thrust == pytest.approx([2e-5, 2.1e-5], rel=1e-6)
     assert np.degrees(c.collective[1] - c.collective[0]) > 0.3
+
+
+def test_each_point_of_a_trim_has_its_own_thrust_tolerance():
+    """A first version took one tolerance for the batch from its smallest thrust: the 2 N point's
+    rate moved by 3.65e-6 rad/s with a 1e-3 N point beside it, and 5e-324 N made it 0 (a review)."""
+    prop = pm.load_propeller("apce_8x6")
+    p = pm.resolve_params("generic")
+    alone = trim_omega(prop, p, [2.0])
+    beside = trim_omega(prop, p, [1e-3, 2.0, 5e-324], on_missing="nan")
+    assert beside.omega[1] == alone.omega[0]
+    assert beside.loads.thrust[0] == pytest.approx(1e-3, rel=1e-6)

@@ -128,7 +128,7 @@ def _where(i: int, shape) -> str:
 
 def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
     """The thrust wanted as a float array, and its tolerance, checked (ValueError naming each)."""
-    tol = real(thrust_tol)  # (True was a tolerance of 1 N)
+    tol = 1.0 if thrust_tol is None else real(thrust_tol)  # (True was a tolerance of 1 N)
     if tol is None or not (tol > 0 and math.isfinite(tol)):
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
     T_star = np.asarray(thrust)
@@ -148,19 +148,25 @@ class _RefineFailed(Exception):
         self.index, self.status = index, status
 
 
-#: the thrust tolerance is at most this fraction of the smallest nonzero |thrust| asked: the absolute
-#: default, 1e-6 N, was 2% of the 5e-5 N of a 45 mm propeller at 465 rpm (a user-level audit, 2026-11-30)
+#: the default thrust tolerance: THRUST_TOL [N], or THRUST_RTOL of the thrust asked where that is smaller, point by
+#: point (the absolute 1e-6 N alone was 2% of the 5e-5 N of a 45 mm propeller at 465 rpm, a user-level audit,
+#: 2026-11-30); a thrust_tol given is used as it is
+THRUST_TOL = 1e-6
 THRUST_RTOL = 1e-6
+#: the smallest tolerance: a thrust of 5e-324 N would make 1e-6 of it 0 (then the variable's tolerance stops)
+THRUST_TOL_FLOOR = 1e-300
 
 
-def _effective_tol(T1: np.ndarray, thrust_tol: float) -> float:
-    """``thrust_tol``, or THRUST_RTOL of the smallest nonzero |T*| where that is smaller."""
-    nonzero = np.abs(T1[T1 != 0.0])
-    tol = float(thrust_tol)  # (checked by _checked_thrust: a NumPy scalar or 0-d array too)
-    return min(tol, THRUST_RTOL * float(nonzero.min())) if nonzero.size else tol
+def _tolerances(T1: np.ndarray, thrust_tol) -> np.ndarray:
+    """Each point's thrust tolerance [N]: ``thrust_tol`` where given (checked by _checked_thrust), else
+    THRUST_TOL or THRUST_RTOL |T*|, the smaller (THRUST_TOL where T* = 0)."""
+    if thrust_tol is not None:
+        return np.full(T1.shape, real(thrust_tol))
+    tol = np.where(T1 != 0.0, np.minimum(THRUST_TOL, THRUST_RTOL * np.abs(T1)), THRUST_TOL)
+    return np.maximum(tol, THRUST_TOL_FLOOR)
 
 
-def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: float = 0.0, xrtol: float = 0.0):
+def _first_crossing(thrust_at, grid, T1, columns, thrust_tol, *, xatol: float = 0.0, xrtol: float = 0.0):
     """The first upward crossing of T* = ``T1`` along ``grid`` for every point (the rule of the
     module docstring, for the collective or the rotation rate alike).
 
@@ -169,12 +175,14 @@ def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: f
     Returns ``(x, n_solutions, missing, reach)``: the solution (NaN where missing), the
     crossings seen, where none is, and (lowest thrust, highest thrust, the variable where it is
     highest, whether that peak lies inside the grid) per point for messages. Raises
-    _RefineFailed (its point's index and SciPy's status) where the refinement fails.
+    _RefineFailed (its point's index and SciPy's status) where the refinement fails. The
+    refinements solve the thrust difference in units of each point's tolerance (:func:`_tolerances`),
+    so that one SciPy tolerance holds each point to its own.
     """
     from scipy.optimize import elementwise
 
     n, m = T1.size, grid.size
-    thrust_tol = _effective_tol(T1, thrust_tol)
+    tol = _tolerances(T1, thrust_tol)
     Tg = thrust_at(grid[None, :], *(c[:, None] for c in columns)) - T1[:, None]  # (n, m)
     up = (Tg[:, :-1] <= 0) & (Tg[:, 1:] > 0)  # upward crossings
     down = (Tg[:, :-1] > 0) & (Tg[:, 1:] <= 0)
@@ -194,13 +202,13 @@ def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: f
     if inner.any():
         idx, kk = np.flatnonzero(inner), k_top[inner]
 
-        def minus(x, T_, *cols):
-            return T_ - thrust_at(x, *cols)
+        def minus(x, T_, tol_, *cols):
+            return (T_ - thrust_at(x, *cols)) / tol_
 
         peak = elementwise.find_minimum(minus, (grid[kk - 1], grid[kk], grid[kk + 1]),
-                                        args=(T1[idx], *(c[idx] for c in columns)),
-                                        tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=0.1 * thrust_tol, frtol=0.0))
-        top[idx], at_top[idx] = T1[idx] - peak.f_x, peak.x
+                                        args=(T1[idx], tol[idx], *(c[idx] for c in columns)),
+                                        tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=0.1, frtol=0.0))
+        top[idx], at_top[idx] = T1[idx] - peak.f_x * tol[idx], peak.x
         reached = peak.f_x <= 0
         hit = idx[reached]
         missing[hit] = False
@@ -211,11 +219,11 @@ def _first_crossing(thrust_at, grid, T1, columns, thrust_tol: float, *, xatol: f
     x[on_node] = grid[np.argmax(exact[on_node], axis=1)]
     todo = ~on_node & ~missing
     if todo.any():
-        def f(x_, T_, *cols):
-            return thrust_at(x_, *cols) - T_
+        def f(x_, T_, tol_, *cols):
+            return (thrust_at(x_, *cols) - T_) / tol_
 
-        res = elementwise.find_root(f, (xl[todo], xr[todo]), args=(T1[todo], *(c[todo] for c in columns)),
-                                    tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=thrust_tol, frtol=0.0))
+        res = elementwise.find_root(f, (xl[todo], xr[todo]), args=(T1[todo], tol[todo], *(c[todo] for c in columns)),
+                                    tolerances=dict(xatol=xatol, xrtol=xrtol, fatol=1.0, frtol=0.0))
         if not np.all(res.success):
             k = int(np.argmax(~res.success))
             raise _RefineFailed(int(np.flatnonzero(todo)[k]), int(res.status[k]))
@@ -235,7 +243,7 @@ def trim_collective(
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     bounds=(-math.radians(20.0), math.radians(30.0)),
     grid_step: float | None = None,
-    thrust_tol: float = 1e-6,
+    thrust_tol: float | None = None,
     on_missing: str = "raise",
 ) -> TrimResult:
     """The collective (blade-angle offset) at which the rotor makes ``thrust``.
@@ -257,9 +265,10 @@ def trim_collective(
     grid_step : float, optional
         Spacing of the bracketing grid [rad], in [bounds width / 10,000, bounds width];
         default 2.5 deg, or the bounds' width where that is narrower.
-    thrust_tol : float
-        Absolute tolerance on T [N] (default 1e-6 N), at most :data:`THRUST_RTOL` (1e-6) of the
-        smallest nonzero |thrust| asked; the collective is also converged to 1e-10 rad.
+    thrust_tol : float, optional
+        Absolute tolerance on T [N], > 0. Default: 1e-6 N, or 1e-6 of |thrust| where that is
+        smaller, point by point (:data:`THRUST_TOL`, :data:`THRUST_RTOL`). The collective is
+        also converged to 1e-10 rad.
     on_missing : {"raise", "nan"}
         Where no collective in ``bounds`` makes the thrust: raise TrimError (default), or
         return NaN collective and loads there (``n_solutions`` 0 tells them).
@@ -368,7 +377,7 @@ def trim_omega(
     air: Air | None = None,
     discretization: Discretization = DEFAULT_DISCRETIZATION,
     bounds=None,
-    thrust_tol: float = 1e-6,
+    thrust_tol: float | None = None,
     on_missing: str = "raise",
 ) -> OmegaTrimResult:
     """The rotation rate at which the rotor makes ``thrust`` (a fixed-pitch rotor's trim:
@@ -403,9 +412,10 @@ def trim_omega(
         The rates searched [rad/s], 0 < low < high <= 1e5; default the rates of a tip speed
         of OMEGA_TIP_SPEED_MIN (1 m/s) to OMEGA_TIP_MACH_MAX (0.9) of the air's speed of
         sound.
-    thrust_tol : float
-        Absolute tolerance on T [N] (default 1e-6 N), at most :data:`THRUST_RTOL` (1e-6) of the
-        smallest nonzero |thrust| asked; Omega is also converged to 1e-12 of itself.
+    thrust_tol : float, optional
+        Absolute tolerance on T [N], > 0. Default: 1e-6 N, or 1e-6 of |thrust| where that is
+        smaller, point by point (:data:`THRUST_TOL`, :data:`THRUST_RTOL`). Omega is also
+        converged to 1e-12 of itself.
     on_missing : {"raise", "nan"}
         Where no rate in ``bounds`` makes the thrust: raise TrimError (default), or return
         NaN rate and loads there (``n_solutions`` 0 tells them).
