@@ -82,6 +82,15 @@ def test_the_catalogue_and_the_calibration_cannot_be_changed_through_their_resul
         with pytest.raises(TypeError):
             mapping[key] = None
     assert isinstance(cal["generic_folds"], tuple)
+    with pytest.raises(TypeError):  # (the population's lists were the cached file's: a review)
+        cal["population"]["covariance"][0][0] = 123.0
+    with pytest.raises(AttributeError):
+        cal["population"]["names"].append("x")
+    from propmap.io.calibration import coverage, population
+
+    coverage("generic")["J_max"] = 99.0
+    assert coverage("generic")["J_max"] != 99.0
+    assert population()["covariance"][0, 0] != 123.0
     assert pm.default_params("apce_8x6").label == "calibrated:apce_8x6"
 
 
@@ -94,6 +103,8 @@ def test_a_hover_model_takes_numpy_numbers(apc8x6, apc_params, omega):
     assert pm.HoverModel(k_T=np.float32(1e-5), k_Q=np.int64(0), diameter=np.array(0.2)).diameter == 0.2
     c = pm.HoverModel.from_coefficients(np.float32(0.125), np.float32(0.0625), np.float32(0.25))
     assert c == pm.HoverModel.from_coefficients(0.125, 0.0625, 0.25)
+    with pytest.raises(ValueError, match="k_T must be a finite number"):  # (a NumPy integer, but a time)
+        pm.HoverModel(k_T=np.timedelta64(3), k_Q=0.0)
 
 
 def test_the_trims_take_numpy_tolerances_and_refuse_text(apc8x6, apc_params):
@@ -152,7 +163,7 @@ def test_write_params_names_a_wrong_argument(tmp_path, apc_params):
 def test_the_synthetic_data_helpers_take_names_and_numbers(apc_params):
     """loads_from_catalogue('apce_8x6', ...) and simulate_level_flight('quadrotor', ...) met
     AttributeErrors, two numbers an IndexError."""
-    by_name = loads_from_catalogue("apce_8x6", 0.2032)
+    by_name = loads_from_catalogue("apce_8x6", np.array(0.2032))
     by_entry = loads_from_catalogue(get_entry("apce_8x6"), 0.2032)
     np.testing.assert_array_equal(by_name.measured["thrust"], by_entry.measured["thrust"])
     with pytest.raises(KeyError, match="did you mean apce_8x6"):

@@ -15,12 +15,14 @@ import numpy as np
 
 def real(value) -> float | None:
     """``float(value)`` for a real number, a NumPy integer or float scalar or a 0-d array of
-    one; None for anything else (a bool, a string, an int too large for a float, an array of
-    several values)."""
+    one; None for anything else (a bool, a string, a time (``np.timedelta64``), an int too
+    large for a float, an array of several values)."""
     if isinstance(value, np.ndarray):
         if value.ndim != 0 or value.dtype.kind not in "iuf":
             return None
         value = value[()]
+    if isinstance(value, np.generic) and value.dtype.kind not in "iuf":  # (np.timedelta64 is a NumPy integer)
+        return None
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
     try:

@@ -15,10 +15,10 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-import numbers
 
 import numpy as np
 
+from ..core._numbers import real
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry, get_entry
 from ..io.inputs import show_path
@@ -33,10 +33,12 @@ __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "rea
            "RE75_FLOOR", "DRAG_SIGN_REFUSED"]
 
 
-def _check_diameter(diameter) -> None:
-    """Raise DataError unless ``diameter`` is a number in (0, 10] m."""
-    if isinstance(diameter, bool) or not isinstance(diameter, numbers.Real) or not 0 < diameter <= 10:
+def _check_diameter(diameter) -> float:
+    """``diameter`` as a float; DataError unless it is a number in (0, 10] m (core._numbers.real)."""
+    d = real(diameter)
+    if d is None or not 0 < d <= 10:
         raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r:.60}")
+    return d
 
 
 def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = Air()) -> LoadData:
@@ -80,7 +82,7 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
                         f"name, got {type(entry).__name__}")
     if not isinstance(air, Air):
         raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
-    _check_diameter(diameter)
+    diameter = _check_diameter(diameter)
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")
 
@@ -123,7 +125,7 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
         raise TypeError(f"paths must be a sequence of file paths, got {type(paths).__name__} {str(paths)!r:.80} "
                         "(give a list: [path])")
     paths = list(paths)
-    _check_diameter(diameter)
+    diameter = _check_diameter(diameter)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:
         p = Path(p)

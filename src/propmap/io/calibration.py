@@ -90,7 +90,8 @@ def coverage(label: str) -> dict | None:
     """
     raw = _raw()
     if label == GENERIC or label.startswith("generic without") or label.startswith("generic fold"):
-        return raw["generic"].get("coverage")
+        cov = raw["generic"].get("coverage")
+        return None if cov is None else dict(cov)  # (a copy: the cached file's own dict was returned, a review)
     if label.startswith("calibrated:"):
         name = label.split(":", 1)[1]
         entry = raw["propellers"].get(name)
@@ -173,6 +174,11 @@ def _entry(name: str, d: dict, source: str) -> Calibration:
     return Calibration(params, Air(), name, float(d["rms_ct"]), float(d["rms_cp"]), int(d["n_points"]), source)
 
 
+def _tuples(value):
+    """``value`` with every list in it a tuple (nested), for the read-only calibration."""
+    return tuple(_tuples(v) for v in value) if isinstance(value, (list, tuple)) else value
+
+
 @functools.lru_cache(maxsize=1)
 def calibration() -> Mapping:
     """The shipped calibration: ``{"generic": Calibration, "propellers": {name: Calibration}, ...}``.
@@ -181,8 +187,8 @@ def calibration() -> Mapping:
     -------
     Mapping
         Read once per process (cached) from the package's calibration file, read-only (it and
-        its ``propellers`` and ``population`` are ``types.MappingProxyType``; ``generic_folds``
-        a tuple), as every caller in the process shares it.
+        its ``propellers`` and ``population`` are ``types.MappingProxyType``, the population's
+        lists and ``generic_folds`` tuples), as every caller in the process shares it.
 
     Raises
     ------
@@ -191,8 +197,8 @@ def calibration() -> Mapping:
     """
     raw = _raw()
 
-    def frozen(pop):
-        return None if pop is None else MappingProxyType(pop)
+    def frozen(pop):  # (its lists as tuples too: population()'s covariance was writable through it, a review)
+        return None if pop is None else MappingProxyType({k: _tuples(v) for k, v in pop.items()})
 
     return MappingProxyType({
         "generic": _entry(GENERIC, raw["generic"], raw["generic"]["source"]),
