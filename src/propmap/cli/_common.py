@@ -374,19 +374,22 @@ def fixed(x: float, decimals: int) -> str:
 class Command(click.Command):
     """A click command that refuses an option given twice (click keeps the last value silently:
     ``--rpm 5000 --rpm 6000`` ran at 6000 rpm, a user-level audit, 2026-11-30); options that
-    take several values (``multiple``), counters and the eager ``--help`` excepted. Every
-    propmap command is one (tests/test_cli_options.py)."""
+    take several values (``multiple``) and counters excepted, and not where ``--help`` is given
+    (the help is printed). Every propmap command is one (tests/test_cli_options.py)."""
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
         if ctx.resilient_parsing:  # (shell completion)
             return super().parse_args(ctx, args)
         _, _, order = self.make_parser(ctx).parse_args(args=list(args))
+        if any(isinstance(p, click.Option) and p.is_eager and not p.expose_value for p in order):
+            return super().parse_args(ctx, args)  # --help: the help, whatever else is given
         seen = set()
         for param in order:
             if not isinstance(param, click.Option) or param.multiple or param.count or not param.expose_value:
                 continue
             if param.name in seen:
-                raise click.UsageError(f"{'/'.join(param.opts)} given more than once (it takes one value)", ctx=ctx)
+                what = "one value" if param.nargs == 1 else f"one set of {param.nargs} values"
+                raise click.UsageError(f"{'/'.join(param.opts)} given more than once (it takes {what})", ctx=ctx)
             seen.add(param.name)
         return super().parse_args(ctx, args)
 
