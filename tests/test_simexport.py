@@ -173,6 +173,7 @@ def test_export_sim_cli_writes_the_file_and_report(capsys, tmp_path):
     assert code == 0, err
     d = json.loads(out)
     assert set(d["errors"]["thrust"]) >= {"rms", "max"} and len(d["coefficients"]["CT"]) == 6
+    assert d == json.loads((tmp_path / "g.report.json").read_text())  # (since 2026-11-30: the report as written)
     assert np.isfinite(json.loads((tmp_path / "g.json").read_text())["CQ"]).all()
     # a coefficient file named like a report wrote over g.json's report (g.report.json) and left a
     # g.report.report.json beside it (a user-level audit, 2026-11-27): refused, nothing written
@@ -201,3 +202,18 @@ def test_a_label_cannot_inject_into_the_written_file(tmp_path, model, target, na
     assert set(coefficients) >= ({"k_eta", "k_m"} if target == "rotorpy" else {"motorConstant", "momentConstant"})
     if target != "rotorpy":
         assert coefficients["motorConstant"] == pytest.approx(res.coefficients["motorConstant"])
+
+
+def test_export_sim_json_where_every_check_point_is_flagged(capsys, tmp_path):
+    """In the vortex ring every check point is flagged: the unflagged errors are NaN, null in the
+    report; --json failed with 'Out of range float values are not JSON compliant: nan', exit 2,
+    after writing both files (an output audit, 2026-11-30)."""
+    out = tmp_path / "vr.sdf"
+    code = main(["export-sim", "apce_8x6", "--target", "gz-sim", "--envelope",
+                 "rpm=7000:9000,airspeed=5:7,incidence_deg=160:180", "--out", str(out), "--points", "200", "--json"])
+    text, err = capsys.readouterr()
+    assert code == 0, err
+    d = json.loads(text)
+    assert d["errors"]["points_flagged"] == d["check_points"]
+    assert d["errors"]["thrust"]["rms"] is None and d["errors"]["thrust"]["rms_flagged"] > 0
+    assert d == json.loads((tmp_path / "vr.report.json").read_text())
