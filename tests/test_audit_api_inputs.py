@@ -59,6 +59,21 @@ def test_a_vehicle_map_without_maps_or_samples(quad):
     assert w.force.shape == w.moment.shape == (0, 3) and w.flagged.shape == (0,)  # as vehicle_wrench's
 
 
+def test_a_vehicle_map_keeps_the_vehicle_it_was_built_with(quad):
+    """A rotor tilted in place afterwards: the VehicleMap kept the old geometry's forces while its
+    .vehicle showed the tilt (a concurrency audit, 2026-11-30). Now .vehicle is its own snapshot."""
+    veh, _, m = quad
+    veh = dataclasses.replace(veh, rotors=tuple(dataclasses.replace(r) for r in veh.rotors))  # (the fixture's own)
+    vm = VehicleMap(veh, m)
+    args = ([2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [700.0] * 4)
+    before = vm.wrench(*args).force
+    veh.rotors[0].axis[:] = [0.5, 0.0, math.sqrt(0.75)]
+    np.testing.assert_array_equal(vm.vehicle.rotors[0].axis, [0.0, 0.0, 1.0])
+    np.testing.assert_array_equal(vm.wrench(*args).force, before)
+    tilted = VehicleMap(veh, m).wrench(*args).force
+    assert tilted[0, 0] - before[0, 0] > 1.0  # the tilted rotor's thrust, half of it along +x
+
+
 def test_a_maps_result_does_not_share_the_callers_omega(quad):
     """Changing the caller's omega changed the result's (and its power); writing the result's
     wrote the caller's."""

@@ -22,7 +22,7 @@ each rotor takes its map's one-rotor path.
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -63,6 +63,11 @@ class VehicleMap:
     Parameters
     ----------
     vehicle : Vehicle
+        Taken as it is now: the VehicleMap keeps a copy of its rotors' arrays (``.vehicle``), so
+        a rotor position or axis written in place afterwards changes nothing here (build another
+        VehicleMap; :func:`propmap.vehicle_wrench` reads the vehicle at every call). Until
+        2026-11-30 it kept the caller's vehicle but the geometry of its construction, so that
+        ``.vehicle`` showed a tilted rotor the forces did not have (a concurrency audit).
     maps : RotorMap or sequence of RotorMap
         One map for every rotor, or one per rotor in the vehicle's order, each built for that
         rotor's propeller (its diameter and blade count are checked) and parameter set (not
@@ -102,6 +107,8 @@ class VehicleMap:
                                  f"{b} blades), its propeller {r.propeller.name} is {r.propeller.diameter:.4g} m with "
                                  f"{r.propeller.n_blades} blades: build the map for the vehicle's propeller "
                                  "(propmap map PROP, PROP the rotor's propeller, one map per propeller)")
+        # a snapshot: each Rotor and the centre of mass re-made, their arrays copied (layout._vector3)
+        vehicle = replace(vehicle, rotors=tuple(replace(r) for r in vehicle.rotors))
         self.vehicle = vehicle
         self.maps = maps
         self._pos, self._axes, self._spins, self._h = rotor_geometry(vehicle)
