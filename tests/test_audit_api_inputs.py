@@ -194,3 +194,22 @@ def test_the_synthetic_data_helpers_take_names_and_numbers(apc_params):
     np.testing.assert_array_equal(two.omega[1], one.omega[0])
     with pytest.raises(ValueError, match=r"got shapes \(2,\) and \(3,\)"):
         simulate_level_flight(veh, apc_params, [5.0, 6.0], [1.0, 2.0, 3.0])
+
+
+def test_flapping_beyond_small_angles_is_warned_of(apc8x6):
+    """A stopped rotor in a flow has no flap damping: with 50 rad/(N m) at 50 m/s edgewise the
+    blades flapped 4.25 rad and the side force was 4.25 times the thrust, unflagged (an
+    edge-of-range audit, 2026-11-30). Forward flight at speed stays below the limit, silently."""
+    import warnings
+
+    from propmap.core.flapping import FLAP_ANGLE_WARN
+
+    s = pm.default_params("apce_8x6").replace(flap_compliance=50.0)
+    with pytest.warns(UserWarning, match=r"^flapping: 1 point\(s\) flap by more than 0.25 rad \(largest 4.25 rad"):
+        r = pm.rotor_loads(apc8x6, s, 0.0, 50.0, math.pi / 2)
+    assert float(r.flap_1s) > FLAP_ANGLE_WARN
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = pm.rotor_loads(apc8x6, s.replace(flap_compliance=2.0), 800.0, np.linspace(0.0, 20.0, 21),
+                           math.radians(80.0))
+    assert 0.05 < np.hypot(r.flap_1c, r.flap_1s).max() < FLAP_ANGLE_WARN

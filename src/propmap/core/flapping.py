@@ -46,10 +46,16 @@ from typing import NamedTuple
 import numpy as np
 
 __all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "rigid_compliance_derivatives",
-           "COMPLIANCE"]
+           "warn_large_flapping", "COMPLIANCE", "FLAP_ANGLE_WARN"]
 
 #: the name of the flap compliance 1 / K_beta among the derivatives' inputs
 COMPLIANCE = "flap_compliance"
+#: the flapping angle [rad] beyond which the small-angle model is warned of (14 deg: sin and cos then
+#: 1% and 3% from their small-angle forms). A stopped or slow rotor's flap damping, which grows as
+#: Omega^2, no longer holds the blades: with 50 rad/(N m) a stopped apce_8x6 at 50 m/s edgewise flapped
+#: 4.25 rad, its side force 4.25 times its thrust (an edge-of-range audit, 2026-11-30); in forward
+#: flight at 800 rad/s and 10-20 m/s the angles stay below 0.13 rad.
+FLAP_ANGLE_WARN = 0.25
 
 
 class FlapResult(NamedTuple):
@@ -126,6 +132,37 @@ def flapping(thrust, drag, side_force, rolling_moment, pitching_moment, damping,
     half = 0.5 * n_blades * K
     return FlapResult(drag=np.asarray(drag) - T * b1c, side_force=np.asarray(side_force) - T * b1s,
                       rolling_moment=half * b1s, pitching_moment=-half * b1c, beta_1c=b1c, beta_1s=b1s)
+
+
+def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3) -> None:
+    """Warn where a flapping angle exceeds :data:`FLAP_ANGLE_WARN`: the first-harmonic model is
+    linear in the angles (the thrust tilted by them, module docstring), so there the in-plane
+    loads D and Y and the hub moments grow without the bound a real blade's would have.
+
+    Parameters
+    ----------
+    beta_1c, beta_1s : ndarray
+        Flapping angles [rad] (:func:`flapping`), any common shape.
+    compliance : float
+        1 / K_beta [rad/(N m)], for the message.
+    stacklevel : int
+        As :func:`warnings.warn` (3: the caller of the function that calls this one).
+
+    Warns
+    -----
+    UserWarning
+        Naming how many points and the largest angle.
+    """
+    import warnings
+
+    big = np.hypot(np.asarray(beta_1c), np.asarray(beta_1s))
+    n = int(np.count_nonzero(big > FLAP_ANGLE_WARN))
+    if n:
+        warnings.warn(f"flapping: {n} point(s) flap by more than {FLAP_ANGLE_WARN:g} rad (largest "
+                      f"{float(np.max(big)):.3g} rad, flap_compliance {compliance:g} rad/(N m)): the first-harmonic "
+                      "flapping is a small-angle model, so their drag, side force and hub moments there are beyond "
+                      "it (a stopped or slow rotor's flap damping, which grows as Omega^2, no longer holds the "
+                      "blades; docs/models.md, Blade flapping)", UserWarning, stacklevel=stacklevel)
 
 
 def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance: float, n_blades: int, *, omega,
