@@ -54,7 +54,7 @@ COMPLIANCE = "flap_compliance"
 #: 1% and 3% from their small-angle forms). A stopped or slow rotor's flap damping, which grows as
 #: Omega^2, no longer holds the blades: with 50 rad/(N m) a stopped apce_8x6 at 50 m/s edgewise flapped
 #: 4.25 rad, its side force 4.25 times its thrust (an edge-of-range audit, 2026-11-30); in forward
-#: flight at 800 rad/s and 10-20 m/s the angles stay below 0.13 rad.
+#: flight with 2 rad/(N m) at 800 rad/s, 0-20 m/s and 80 deg its largest is 0.11 rad.
 FLAP_ANGLE_WARN = 0.25
 
 
