@@ -50,7 +50,10 @@ def test_a_catalogue_name_beside_files_is_refused_without_prop(tmp_path, capsys,
     sources = ["apce_10x7", static] if first else [static, "apce_10x7"]
     code, _, err = run(capsys, "fit", "loads", *sources, "--out", tmp_path / "p.toml")
     assert one_line_error(code, err, "'apce_10x7' is a catalogue propeller: give it alone"), err
+    assert "the propeller as --prop apce_10x7" in err  # (the way to give it with files: a user audit, 2026-11-30)
     assert not (tmp_path / "p.toml").exists()
+    code, _, err = run(capsys, "validate", static)  # the files alone: where the propeller goes
+    assert one_line_error(code, err, "needs the propeller, as --prop NAME or --prop GEOMETRY_FILE"), err
 
 
 def test_a_csv_named_as_a_uiuc_run_takes_nothing_from_its_name(tmp_path, capsys):

@@ -114,7 +114,8 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     missing = [s for s in sources if not _is_file(s)]
     if missing and missing[0] in catalogue():
         raise InputError(f"SOURCE: {missing[0]!r} is a catalogue propeller: give it alone (its UIUC data), or "
-                         "files only (a catalogue propeller's data and files are not fitted together)")
+                         f"files only, the propeller as --prop {missing[0]} (a catalogue propeller's data and files "
+                         "are not taken together)")
     if missing:
         from ..io.catalogue import near_names
 
@@ -124,7 +125,8 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else "")
                          + hint)
     if prop_spec is None:
-        raise InputError("--prop: a file SOURCE needs the propeller (catalogue name or geometry file)")
+        raise InputError("--prop: a file SOURCE needs the propeller, as --prop NAME or --prop GEOMETRY_FILE (a "
+                         "catalogue name or geometry file; one among the SOURCEs is read as data)")
     refuse_copies(sources, "SOURCE", "its data would count twice")
     other = [s for s in sources if not looks_like_uiuc(s)]
     # (UIUC data files with a UIUC geometry file: what their names give is taken; the file's format asked once)
