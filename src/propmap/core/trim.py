@@ -126,10 +126,11 @@ def _where(i: int, shape) -> str:
     return f"{tuple(int(k) for k in np.unravel_index(i, shape))} " if shape else ""
 
 
-def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
-    """The thrust wanted as a float array, and its tolerance, checked (ValueError naming each)."""
-    tol = 1.0 if thrust_tol is None else real(thrust_tol)  # (True was a tolerance of 1 N)
-    if tol is None or not (tol > 0 and math.isfinite(tol)):
+def _checked_thrust(thrust, thrust_tol) -> tuple[np.ndarray, float | None]:
+    """The thrust wanted as a float array and its tolerance as a float (None: the default),
+    checked (ValueError naming each)."""
+    tol = None if thrust_tol is None else real(thrust_tol)  # (True was a tolerance of 1 N)
+    if thrust_tol is not None and (tol is None or not (tol > 0 and math.isfinite(tol))):
         raise ValueError(f"thrust_tol must be a positive number [N], got {thrust_tol!r}")
     T_star = np.asarray(thrust)
     if T_star.dtype.kind not in "iuf":  # (a string '4' read as 4 N, True as 1 N)
@@ -137,7 +138,7 @@ def _checked_thrust(thrust, thrust_tol) -> np.ndarray:
     T_star = T_star.astype(float)
     if not np.all(np.isfinite(T_star)):
         raise ValueError("thrust must be finite [N]")
-    return T_star
+    return T_star, tol
 
 
 class _RefineFailed(Exception):
@@ -157,11 +158,11 @@ THRUST_RTOL = 1e-6
 THRUST_TOL_FLOOR = 1e-300
 
 
-def _tolerances(T1: np.ndarray, thrust_tol) -> np.ndarray:
-    """Each point's thrust tolerance [N]: ``thrust_tol`` where given (checked by _checked_thrust), else
+def _tolerances(T1: np.ndarray, thrust_tol: float | None) -> np.ndarray:
+    """Each point's thrust tolerance [N]: ``thrust_tol`` where given (a float, _checked_thrust's), else
     THRUST_TOL or THRUST_RTOL |T*|, the smaller (THRUST_TOL where T* = 0)."""
     if thrust_tol is not None:
-        return np.full(T1.shape, real(thrust_tol))
+        return np.full(T1.shape, thrust_tol)
     tol = np.where(T1 != 0.0, np.minimum(THRUST_TOL, THRUST_RTOL * np.abs(T1)), THRUST_TOL)
     return np.maximum(tol, THRUST_TOL_FLOOR)
 
@@ -301,7 +302,7 @@ def trim_collective(
         raise ValueError(f"grid_step must be in [{(hi - lo) / GRID_NODES_MAX:.6g}, {hi - lo:.6g}] rad (the bounds' "
                          f"width over 1 to {GRID_NODES_MAX:,} steps), got {grid_step!r}")
     grid_step = step
-    T_star = _checked_thrust(thrust, thrust_tol)
+    T_star, thrust_tol = _checked_thrust(thrust, thrust_tol)
     # the operating points are checked by rotor_loads; broadcast them with the thrust here
     try:
         T_star, om, V, b = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
@@ -445,7 +446,7 @@ def trim_omega(
     if on_missing not in ("raise", "nan"):
         raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
     lo, hi = _omega_bounds(bounds, propeller, air)
-    T_star = _checked_thrust(thrust, thrust_tol)
+    T_star, thrust_tol = _checked_thrust(thrust, thrust_tol)
     try:
         T_star, V, b, c = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (
             airspeed, incidence, 0.0 if collective is None else collective)))

@@ -337,10 +337,10 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     if rate is None or not 0 < rate <= 1e4:
         raise ValueError(f"rate_hz must be a number in (0, 10000] Hz, got {rate_hz!r}")
     rate_hz = rate
-    tau = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
-    if real(tau) is None or not 0 <= real(tau) <= 1:
-        raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {tau!r}")
-    tau = real(tau)
+    given = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
+    tau = real(given)
+    if tau is None or not 0 <= tau <= 1:
+        raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {given!r}")
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)
