@@ -26,11 +26,12 @@ def quad(small_map):
     return veh, params, RotorMap(ds)
 
 
-@pytest.mark.parametrize("rho, match", [(-1.0, r"rho must be in \(0.0, inf\), got -1.0"),
-                                        (0.0, r"rho must be in \(0.0, inf\), got 0.0"),
-                                        (math.nan, "rho must be finite"), (math.inf, "rho must be finite"),
-                                        (True, "rho must be a number, got True"),
-                                        ("1.2", "rho must be a number, got '1.2'")])
+@pytest.mark.parametrize("rho, match", [(-1.0, r"rho must be a finite number in \(0, inf\) kg/m\^3, got -1.0"),
+                                        (0.0, r"rho must be a finite number in \(0, inf\) kg/m\^3, got 0.0"),
+                                        (math.nan, r"rho must be a finite number in \(0, inf\) kg/m\^3, got nan"),
+                                        (math.inf, "got inf"),
+                                        (True, r"rho must be a finite number in \(0, inf\) kg/m\^3, got True"),
+                                        ("1.2", r"rho must be a finite number in \(0, inf\) kg/m\^3, got '1.2'")])
 def test_a_vehicle_maps_density_is_checked(quad, rho, match):
     """-1 reversed the airframe drag, NaN made every force NaN, text was read as a number."""
     veh, _, m = quad
@@ -131,7 +132,7 @@ def test_the_trims_take_numpy_tolerances_and_refuse_text(apc8x6, apc_params):
                                                                                                          abs=1e-6)
     veh = read_vehicle("quadrotor")
     for kw, name in (({"airspeed": "5"}, "airspeed"), ({"airspeed": 5.0, "climb_rate": "1"}, "climb_rate")):
-        with pytest.raises(ValueError, match=f"^{name} must be a number in"):
+        with pytest.raises(ValueError, match=f"^{name} must be a finite number in"):
             pm.trim_vehicle(veh, apc_params, **kw)
 
 
@@ -139,8 +140,8 @@ def test_the_trims_take_numpy_tolerances_and_refuse_text(apc8x6, apc_params):
     (lambda: pm.Air(rho=np.array(1.2)), None),
     (lambda: pm.BodyDrag(np.array([0.01, 0.01, 0.02]), wash_factor=np.array(0.5)), None),
     (lambda: pm.Discretization(np.array(48), np.int64(16)), None),
-    (lambda: pm.Air(rho=np.array([1.2, 1.3])), "rho must be a number"),
-    (lambda: pm.Air(rho=np.array("1.2")), "rho must be a number"),
+    (lambda: pm.Air(rho=np.array([1.2, 1.3])), r"rho must be a finite number in \(0, inf\) kg/m\^3, got array"),
+    (lambda: pm.Air(rho=np.array("1.2")), "rho must be a finite number in"),
 ])
 def test_zero_d_arrays_are_numbers_and_arrays_of_several_are_not(make, match):
     if match is None:
@@ -213,3 +214,51 @@ def test_flapping_beyond_small_angles_is_warned_of(apc8x6):
         r = pm.rotor_loads(apc8x6, s.replace(flap_compliance=2.0), 800.0, np.linspace(0.0, 20.0, 21),
                            math.radians(80.0))
     assert 0.05 < np.hypot(r.flap_1c, r.flap_1s).max() < FLAP_ANGLE_WARN
+
+
+# --- one range check for the model's scalar inputs (core._numbers.checked, 2026-11-30) ---------------------------
+
+@pytest.mark.parametrize("value, kw, message", [
+    (-1, dict(low=0.0, low_open=True, unit="kg/m^3"), "rho must be a finite number in (0, inf) kg/m^3, got -1"),
+    (0.0, dict(low=0.0, low_open=True), "rho must be a finite number in (0, inf), got 0.0"),
+    (5.0, dict(low=0.0, high=5.0, high_open=True), "rho must be a finite number in [0, 5), got 5.0"),
+    (2.0, dict(high=1.0, unit="s"), "rho must be a finite number in (-inf, 1] s, got 2.0"),
+    (math.nan, {}, "rho must be a finite number, got nan"),
+    (True, dict(low=0.0, high=1.0), "rho must be a finite number in [0, 1], got True"),
+    ("0.5", dict(low=0.0, high=1.0), "rho must be a finite number in [0, 1], got '0.5'"),
+    (math.radians(31), dict(low=-math.radians(30), high=math.radians(30), unit="rad"),
+     "rho must be a finite number in [-0.5235987755982988, 0.5235987755982988] rad, got 0.5410520681182421"),
+])
+def test_the_range_check_names_the_argument_the_exact_range_and_the_unit(value, kw, message):
+    """A bound that ':g' would round (30 deg in rad) is shown in full: a value just above it must not
+    read as inside the range printed."""
+    from propmap.core._numbers import checked
+
+    with pytest.raises(ValueError) as info:
+        checked("rho", value, **kw)
+    assert str(info.value) == message
+
+
+def test_the_range_check_returns_a_float_and_takes_the_closed_ends_and_numpy_numbers():
+    from propmap.core._numbers import checked
+    from propmap.identify.data import DataError
+
+    assert checked("x", np.float32(0.5), 0.0, 1.0) == 0.5 and type(checked("x", np.int64(1), 0.0, 1.0)) is float
+    assert checked("x", 0.0, 0.0, 1.0) == 0.0 and checked("x", 1.0, 0.0, 1.0) == 1.0
+    with pytest.raises(DataError, match=r"^diameter must be a finite number in \(0, 10\] m, got 0$"):
+        checked("diameter", 0, 0.0, 10.0, low_open=True, unit="m", error=DataError)
+
+
+@pytest.mark.parametrize("make, message", [
+    (lambda: pm.Air(mu=-1.0), "mu must be a finite number in (0, inf) Pa s, got -1.0"),
+    (lambda: pm.Air.isa(30000.0), "altitude must be a finite number in [-500, 20000] m, got 30000.0"),
+    (lambda: pm.BodyDrag((0.1, 0.1, 11.0)), "drag_area[2] must be a finite number in [0, 10] m^2, got 11.0"),
+    (lambda: pm.CamberedParams(flap_compliance=-1.0),
+     "flap_compliance must be a finite number in [0, 1000] rad/(N m), got -1.0"),
+])
+def test_the_records_name_their_ranges_with_units(make, message):
+    """Air's and the section records' messages named no range for a value that was not a number and
+    no unit at all (\"rho must be a number, got True\"); one checker now words them all alike."""
+    with pytest.raises(ValueError) as info:
+        make()
+    assert str(info.value) == message

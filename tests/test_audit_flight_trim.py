@@ -154,8 +154,10 @@ def test_hand_built_samples_refuse_a_negative_log_index_and_a_bad_rate(change, m
         _samples(**change)
 
 
-@pytest.mark.parametrize("kw, match", [(dict(rate_hz=2e4), r"^rate_hz must be a number in \(0, 10000\] Hz, got 20000"),
-                                       (dict(motor_time_constant=2.0), r"^motor_time_constant must be a number in "
+@pytest.mark.parametrize("kw, match", [(dict(rate_hz=2e4), r"^rate_hz must be a finite number in \(0, 10000\] Hz, "
+                                                                r"got 20000"),
+                                       (dict(motor_time_constant=2.0), r"^motor_time_constant must be a finite "
+                                                                       r"number in "
                                                                        r"\[0, 1\] s, got 2\.0")])
 def test_flight_samples_refuses_a_rate_above_10_khz_and_a_motor_lag_over_a_second(quad, kw, match):
     veh, H = quad
@@ -445,9 +447,10 @@ def test_no_reference_mass_without_the_residual_columns(seg_rows, tmp_path):
 
 # --- a defect the audit found: a bool taken as a number ---------------------------------------------------------
 
-@pytest.mark.parametrize("kw, match", [(dict(rate_hz=True), r"^rate_hz must be a number in \(0, 10000\] Hz, got True"),
+@pytest.mark.parametrize("kw, match", [(dict(rate_hz=True), r"^rate_hz must be a finite number in \(0, 10000\] Hz, "
+                                                                 r"got True"),
                                        (dict(motor_time_constant=True),
-                                        r"^motor_time_constant must be a number in \[0, 1\] s, got True")])
+                                        r"^motor_time_constant must be a finite number in \[0, 1\] s, got True")])
 def test_flight_samples_refuses_a_bool_for_its_rate_or_motor_lag(quad, kw, match):
     """rate_hz=True was read as 1 Hz (2 samples of a 2 s log kept) and motor_time_constant=True as a lag of 1 s,
     without a word, where FlightSamples refuses a bool rate and trim_collective a bool grid_step."""

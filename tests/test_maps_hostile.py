@@ -103,7 +103,8 @@ def test_edited_map_is_refused_naming_what(tiny, name):
 MODEL_EDITS = {
     "params_json not JSON": ({"params_json": "{"}, "attribute params_json is not JSON"),
     "params_json a list": ({"params_json": "[1, 2]"}, "attribute params_json must be a JSON object"),
-    "cl_alpha 1e9": ({"params_json": '{"section_model": "cambered", "cl_alpha": 1e9}'}, "cl_alpha must be in"),
+    "cl_alpha 1e9": ({"params_json": '{"section_model": "cambered", "cl_alpha": 1e9}'},
+                     "cl_alpha must be a finite number in"),
     "unknown model": ({"params_json": '{"section_model": "nope"}'}, "section_model must be one of"),
     "geometry chord negative": ({"geometry_chord_m": -np.ones(35)}, "the recorded propeller or parameters are invalid"),
     "no params": ({"params_json": None}, "the map does not record the model that made it (lacks params_json)"),

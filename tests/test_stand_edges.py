@@ -110,7 +110,7 @@ def test_options_a_catalogue_source_would_ignore_are_refused(tmp_path):
 
 
 @pytest.mark.parametrize("body, match", [
-    ('section_model = "cambered"\ncl_alpha = -5\n', "cl_alpha must be in"),
+    ('section_model = "cambered"\ncl_alpha = -5\n', "cl_alpha must be a finite number in"),
     ('section_model = "cambered"\ncomment = 5\n', "comment must be text"),
     ('section_model = "cambered"\nspeed_of_sound = 1\n', r"speed_of_sound must be a finite number in \[100, 10000\]"),
 ])

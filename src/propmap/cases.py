@@ -28,7 +28,7 @@ from importlib import resources
 
 import numpy as np
 
-from .core._numbers import real
+from .core._numbers import checked
 from .core.units import RPM
 from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
@@ -360,10 +360,7 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
         From the model.
     """
     air = model_air(p, air, name="p")
-    om = real(omega)  # (NumPy numbers too, core._numbers)
-    if om is None or not 1.0 <= om <= 1e5:
-        raise ValueError(f"omega must be a rotation rate in [1, 100000] rad/s, got {omega!r:.60}")
-    omega = om
+    omega = checked("omega", omega, 1.0, 1e5, unit="rad/s")  # (NumPy numbers too, core._numbers)
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
     adv, inc = np.concatenate([[0.0], adv.ravel()]), np.concatenate([[0.0], inc.ravel()])
     R = prop.radius

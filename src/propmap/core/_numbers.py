@@ -8,6 +8,7 @@ some of them with a message that quoted a value in range: a user-level audit, 20
 
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
@@ -29,3 +30,31 @@ def real(value) -> float | None:
         return float(value)
     except (OverflowError, TypeError, ValueError):
         return None
+
+
+def _shown(x: float) -> str:
+    """``x`` as ``:g`` shows it where that is exact (1e+04, 0.1), else its full repr (a bound of 30 deg in rad)."""
+    text = f"{x:g}"
+    return text if float(text) == x else repr(float(x))
+
+
+def checked(name: str, value, low: float | None = None, high: float | None = None, *, low_open: bool = False,
+            high_open: bool = False, unit: str = "", error: type[Exception] = ValueError) -> float:
+    """``value`` as a float where it is a finite real number (:func:`real`) within the range;
+    else ``error`` naming ``name``, the range with its ``unit`` and the value given.
+
+    The one range check of the model's scalar inputs and records (Air, BodyDrag, the section
+    records, trims, load data, flight samples): ``checked("rho", -1, 0, low_open=True,
+    unit="kg/m^3")`` raises "rho must be a finite number in (0, inf) kg/m^3, got -1".
+    """
+    x = real(value)
+    if (x is None or not math.isfinite(x) or (low is not None and (x < low or (low_open and x == low)))
+            or (high is not None and (x > high or (high_open and x == high)))):
+        if low is None and high is None:
+            where = "a finite number"
+        else:
+            lo = "(-inf" if low is None else ("(" if low_open else "[") + _shown(low)
+            hi = "inf)" if high is None else _shown(high) + (")" if high_open else "]")
+            where = f"a finite number in {lo}, {hi}"
+        raise error(f"{name} must be {where}{' ' + unit if unit else ''}, got {value!r:.60}")
+    return x

@@ -1,6 +1,5 @@
 """Air properties: :class:`Air` (density, viscosity, speed of sound; footnote 2 of Gill &
-D'Andrea 2017 by default, or from temperature and pressure, or the standard atmosphere),
-and the range check of a real number that the section records share.
+D'Andrea 2017 by default, or from temperature and pressure, or the standard atmosphere).
 
 Constants of dry air: U.S. Standard Atmosphere, 1976; ISO 2533:1975. Viscosity:
 Sutherland's law.
@@ -11,31 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ._numbers import real
+from ._numbers import checked
 
 __all__ = ["Air"]
-
-
-def _check_finite(name: str, value: float, *, low: float | None = None,
-                  high: float | None = None, low_open: bool = False) -> float:
-    """Return ``float(value)`` or raise ValueError naming ``name`` and the valid range.
-
-    Only real numbers are accepted: a bool or a string (``True``, ``"5.3"``) is an error,
-    not silently converted.
-    """
-    x = real(value)
-    if x is None:
-        raise ValueError(f"{name} must be a number, got {value!r}")
-    if not math.isfinite(x):
-        raise ValueError(f"{name} must be finite, got {x!r}")
-    if low is not None and (x < low or (low_open and x == low)):
-        bracket = "(" if low_open else "["
-        hi = "inf)" if high is None else f"{high}]"
-        raise ValueError(f"{name} must be in {bracket}{low}, {hi}, got {x!r}")
-    if high is not None and x > high:
-        lo = "(-inf" if low is None else ("(" if low_open else "[") + f"{low}"
-        raise ValueError(f"{name} must be in {lo}, {high}], got {x!r}")
-    return x
 
 
 @dataclass(frozen=True)
@@ -63,8 +40,8 @@ class Air:
     speed_of_sound: float = 340.3
 
     def __post_init__(self) -> None:
-        for name in ("rho", "mu", "speed_of_sound"):
-            object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0, low_open=True))
+        for name, unit in (("rho", "kg/m^3"), ("mu", "Pa s"), ("speed_of_sound", "m/s")):
+            object.__setattr__(self, name, checked(name, getattr(self, name), 0.0, low_open=True, unit=unit))
 
     @classmethod
     def from_conditions(cls, temperature: float, pressure: float) -> "Air":
@@ -92,8 +69,8 @@ class Air:
         ValueError
             Naming the value out of its range.
         """
-        T = _check_range("temperature", temperature, *TEMPERATURE_RANGE_K, "K")
-        p = _check_range("pressure", pressure, *PRESSURE_RANGE_PA, "Pa")
+        T = checked("temperature", temperature, *TEMPERATURE_RANGE_K, unit="K")
+        p = checked("pressure", pressure, *PRESSURE_RANGE_PA, unit="Pa")
         return cls(rho=p / (R_AIR * T), mu=SUTHERLAND_C1 * T**1.5 / (T + SUTHERLAND_S),
                    speed_of_sound=math.sqrt(GAMMA_AIR * R_AIR * T))
 
@@ -122,7 +99,7 @@ class Air:
         ValueError
             ``altitude`` out of its range or not a number.
         """
-        h = _check_range("altitude", altitude, *ALTITUDE_RANGE_M, "m")
+        h = checked("altitude", altitude, *ALTITUDE_RANGE_M, unit="m")
         if h <= 11000.0:
             T = 288.15 - 0.0065 * h
             p = 101325.0 * (T / 288.15) ** (G0 / (0.0065 * R_AIR))
@@ -147,10 +124,3 @@ ALTITUDE_RANGE_M = (-500.0, 20000.0)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
 
 
-def _check_range(name: str, value, lo: float, hi: float, unit: str) -> float:
-    x = real(value)
-    if x is None:
-        raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
-    if not (math.isfinite(x) and lo <= x <= hi):
-        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}, got {value!r:.60}")
-    return x

@@ -34,7 +34,8 @@ from typing import Self
 
 import numpy as np
 
-from .air import Air, _check_finite
+from ._numbers import checked
+from .air import Air
 
 __all__ = [
     "RotorOptions",
@@ -188,11 +189,12 @@ class RotorOptions:
         if self.descent not in DESCENT_MODELS:
             raise ValueError(f"descent must be one of {', '.join(DESCENT_MODELS)}, got {self.descent!r}")
         object.__setattr__(self, "flap_compliance",
-                           _check_finite("flap_compliance", self.flap_compliance, low=0.0, high=FLAP_COMPLIANCE_MAX))
-        object.__setattr__(self, "collective", _check_finite("collective", self.collective, low=-COLLECTIVE_MAX,
-                                                             high=COLLECTIVE_MAX))
-        object.__setattr__(self, "dynamic_stall", _check_finite("dynamic_stall", self.dynamic_stall, low=0.0,
-                                                                high=DYNAMIC_STALL_MAX))
+                           checked("flap_compliance", self.flap_compliance, 0.0, FLAP_COMPLIANCE_MAX,
+                                   unit="rad/(N m)"))
+        object.__setattr__(self, "collective", checked("collective", self.collective, -COLLECTIVE_MAX,
+                                                       COLLECTIVE_MAX, unit="rad"))
+        object.__setattr__(self, "dynamic_stall", checked("dynamic_stall", self.dynamic_stall, 0.0,
+                                                          DYNAMIC_STALL_MAX))
         if self.dynamic_stall > 0.0:
             if not isinstance(self, CamberedParams):
                 raise ValueError("dynamic_stall applies to the cambered section model (CamberedParams); the paper's "
@@ -325,9 +327,9 @@ class AirfoilParams(RotorOptions):
         _check_flags(self)
         self._check_rotor_options()
         for name in ("cl1", "cl2", "cd", "cd0", "cp_blasius"):
-            object.__setattr__(self, name, _check_finite(name, getattr(self, name), low=0.0))
-        object.__setattr__(self, "M", _check_finite("M", self.M, low=0.0, low_open=True))
-        a0 = _check_finite("alpha0", self.alpha0)
+            object.__setattr__(self, name, checked(name, getattr(self, name), low=0.0))
+        object.__setattr__(self, "M", checked("M", self.M, low=0.0, low_open=True))
+        a0 = checked("alpha0", self.alpha0, unit="rad")
         if not 0.0 < a0 < math.pi / 2:
             raise ValueError(f"alpha0 must be in (0, pi/2) rad, got {a0!r}")
         object.__setattr__(self, "alpha0", a0)
@@ -488,7 +490,7 @@ class CamberedParams(RotorOptions):
         _check_flags(self)
         self._check_rotor_options()
         for name, (lo, hi) in self.RANGES.items():
-            x = _check_finite(name, getattr(self, name), low=lo, high=hi, low_open=name in self._OPEN_LOW)
+            x = checked(name, getattr(self, name), low=lo, high=hi, low_open=name in self._OPEN_LOW)
             object.__setattr__(self, name, x)
         if self.cl_min == 0.0:
             raise ValueError("cl_min must be in [-4, 0), got 0.0")

@@ -22,27 +22,17 @@ slipstream's. The combination is propmap's; its value was measured on real fligh
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ._numbers import real
+from ._numbers import checked
 
 __all__ = ["BodyDrag", "body_drag_force"]
 
 #: valid ranges
 DRAG_AREA_MAX = 10.0  # [m^2], each axis
 WASH_FACTOR_MAX = 3.0  # [-]
-
-
-def _number(name: str, value, lo: float, hi: float) -> float:
-    x = real(value)
-    if x is None:
-        raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}], got {value!r:.60}")
-    if not (math.isfinite(x) and lo <= x <= hi):
-        raise ValueError(f"{name} must be a finite number in [{lo:g}, {hi:g}], got {value!r:.60}")
-    return x
 
 
 @dataclass(frozen=True)
@@ -71,9 +61,9 @@ class BodyDrag:
         a = self.drag_area
         if isinstance(a, (str, bytes)) or not hasattr(a, "__len__") or len(a) != 3:
             raise ValueError(f"drag_area must be 3 numbers [m^2] (x, y, z), got {a!r:.60}")
-        object.__setattr__(self, "drag_area", tuple(_number(f"drag_area[{k}]", v, 0.0, DRAG_AREA_MAX)
+        object.__setattr__(self, "drag_area", tuple(checked(f"drag_area[{k}]", v, 0.0, DRAG_AREA_MAX, unit="m^2")
                                                     for k, v in enumerate(a)))
-        object.__setattr__(self, "wash_factor", _number("wash_factor", self.wash_factor, 0.0, WASH_FACTOR_MAX))
+        object.__setattr__(self, "wash_factor", checked("wash_factor", self.wash_factor, 0.0, WASH_FACTOR_MAX))
 
     @property
     def active(self) -> bool:

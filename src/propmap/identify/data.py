@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core._numbers import real
+from ..core._numbers import checked
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry, get_entry
 from ..io.inputs import show_path
@@ -31,14 +31,6 @@ from .sanity import DRAG_SIGN_REFUSED, RE75_FLOOR, SANITY_FACTOR, SANITY_WARN, s
 __all__ = ["DataError", "LevelFlightData", "LoadData", "read_level_flight", "read_loads", "loads_from_catalogue",
            "loads_from_uiuc_files", "body_to_world", "rotor_kinematics", "sanity_check", "SANITY_FACTOR", "SANITY_WARN",
            "RE75_FLOOR", "DRAG_SIGN_REFUSED"]
-
-
-def _check_diameter(diameter) -> float:
-    """``diameter`` as a float; DataError unless it is a number in (0, 10] m (core._numbers.real)."""
-    d = real(diameter)
-    if d is None or not 0 < d <= 10:
-        raise DataError(f"diameter must be a finite number in (0, 10] m, got {diameter!r:.60}")
-    return d
 
 
 def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = Air()) -> LoadData:
@@ -82,7 +74,7 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
                         f"name, got {type(entry).__name__}")
     if not isinstance(air, Air):
         raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
-    diameter = _check_diameter(diameter)
+    diameter = checked("diameter", diameter, 0.0, 10.0, low_open=True, unit="m", error=DataError)
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")
 
@@ -125,7 +117,7 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
         raise TypeError(f"paths must be a sequence of file paths, got {type(paths).__name__} {str(paths)!r:.80} "
                         "(give a list: [path])")
     paths = list(paths)
-    diameter = _check_diameter(diameter)
+    diameter = checked("diameter", diameter, 0.0, 10.0, low_open=True, unit="m", error=DataError)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:
         p = Path(p)

@@ -10,7 +10,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core._numbers import real
+from ..core._numbers import checked
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
 from ._checks import first_length, float_array
@@ -333,14 +333,9 @@ def flight_samples(logs, vehicle: Vehicle, *, rate_hz: float = 25.0,
     if not logs:
         raise ValueError("no flight logs given")
     # (a bool is not a rate: rate_hz=True was read as 1 Hz, motor_time_constant=True as 1 s, a mutation audit)
-    rate = real(rate_hz)  # (NumPy numbers too, core._numbers)
-    if rate is None or not 0 < rate <= 1e4:
-        raise ValueError(f"rate_hz must be a number in (0, 10000] Hz, got {rate_hz!r}")
-    rate_hz = rate
+    rate_hz = checked("rate_hz", rate_hz, 0.0, 1e4, low_open=True, unit="Hz")  # (NumPy numbers too)
     given = vehicle.motor_time_constant if motor_time_constant is None else motor_time_constant
-    tau = real(given)
-    if tau is None or not 0 <= tau <= 1:
-        raise ValueError(f"motor_time_constant must be a number in [0, 1] s, got {given!r}")
+    tau = checked("motor_time_constant", given, 0.0, 1.0, unit="s")
     radii = np.array([r.propeller.radius for r in vehicle.rotors])
     parts, rates, notes, left_out = [], [], [], {}
     hover = _hover_speed(vehicle)

@@ -145,7 +145,8 @@ def body_from_dict(data: dict, *, where: str = "parameters") -> BodyTable | None
         return None
     table = data[BODY_TABLE]
     if not isinstance(table, dict):
-        raise ValueError(f"{where}: [body] must be a table with drag_area and wash_factor, got {short_repr(table)}")
+        raise ValueError(f"{where}: [body] must be a table with drag_area (wash_factor optional), "
+                         f"got {short_repr(table)}")
     allowed = ("drag_area", "wash_factor", "centre_of_mass", "rotor_interference", "comment")
     extra = sorted(str(k) for k in table if k not in allowed)
     if extra:

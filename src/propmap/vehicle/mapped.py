@@ -28,7 +28,7 @@ import numpy as np
 
 from ..core._interp import vehicle_point
 from ..core._plain import plain_vector
-from ..core.air import _check_finite
+from ..core._numbers import checked
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
 from ._kinematics import _samples, hub_velocities
@@ -135,8 +135,8 @@ class VehicleMap:
                           "holds no induced velocity; each rotor is evaluated in the freestream", UserWarning,
                           stacklevel=2)
         # (any rho was taken: -1 reversed the airframe drag, NaN made every force NaN, a user-level audit, 2026-11-30)
-        self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else _check_finite("rho", rho, low=0.0,
-                                                                                           low_open=True)
+        self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else checked("rho", rho, 0.0, low_open=True,
+                                                                                     unit="kg/m^3")
 
     @staticmethod
     def _check_hub(hub: float) -> None:

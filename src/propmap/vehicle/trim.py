@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core._numbers import real
+from ..core._numbers import checked
 from ..core.airfoil import Air, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
@@ -142,8 +142,8 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
 
     if not isinstance(vehicle, Vehicle):
         raise TypeError(f"vehicle must be a propmap Vehicle (read_vehicle), got {type(vehicle).__name__}")
-    V = _number("airspeed", airspeed, 0.0, 100.0)
-    Vc = _number("climb_rate", climb_rate, -V, V, f"[-airspeed, airspeed] = [{-V if V else 0.0:g}, {V:g}]")
+    V = checked("airspeed", airspeed, 0.0, 100.0, unit="m/s")  # (the text "5" was 5 m/s, a user-level audit)
+    Vc = checked("climb_rate", climb_rate, -V if V else 0.0, V, unit="m/s (|climb_rate| <= airspeed)")
     Vh = math.sqrt(max(V * V - Vc * Vc, 0.0))
     n = len(vehicle.rotors)
     om_h = hover_omega(vehicle, params, air=air, discretization=discretization)
@@ -210,11 +210,3 @@ def _nearest_trim(balance, x, lo, hi):
                    constraints={"type": "eq", "fun": balance}, bounds=list(zip(lo, hi)),
                    options={"ftol": 1e-14, "maxiter": 50})
     return res.x if res.success and np.all(np.isfinite(res.x)) else None
-
-
-def _number(name: str, value, lo: float, hi: float, shown: str | None = None) -> float:
-    """``value`` as a float in [lo, hi], else ValueError naming ``name`` and the range."""
-    v = real(value)  # (float() read the text "5" as 5 m/s, a user-level audit, 2026-11-30)
-    if v is None or not (math.isfinite(v) and lo <= v <= hi):
-        raise ValueError(f"{name} must be a number in {shown or f'[{lo:g}, {hi:g}]'} m/s, got {value!r:.60}")
-    return v
