@@ -50,12 +50,12 @@ that names every key taken from the generic set)::
 
     inflow = "uniform"        # or "drees", "pitt-peters" (linear inflow models)
     descent = "glauert"       # or "empirical" (measured inflow in the vortex-ring state)
-    flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades; 0 = rigid
+    flap_compliance = 0.0     # 1 / K_beta [rad/(N m)] of flapping blades, in [0, 1000]; 0 = rigid
     collective_deg = 0.0      # blade-angle offset [deg], in [-30, 30]
     swirl = false             # the annuli's swirl (tangential induced velocity; not in the paper)
     radial_drag = false       # the radial flow's drag in edgewise flow (in-plane force; not in the paper)
     inplane_induction = false # the skewed wake's in-plane induced velocity (edgewise flow; not in the paper)
-    dynamic_stall = 0.0       # Gormont's gamma of the cambered model's dynamic stall (about 1.5; 0 = off,
+    dynamic_stall = 0.0       # Gormont's gamma of the cambered model's dynamic stall, in [0, 5] (about 1.5; 0 = off,
                               # also where the key is absent; not in the paper)
 
 A cambered file may start from a named section instead of the ``CamberedParams`` defaults:
@@ -69,11 +69,12 @@ file's other keys override it. ``--params section:naca0015`` names the preset al
 
     [body]
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
-    wash_factor = 1.0                   # slipstream factor, in [0, 3] (core/body.py)
+    wash_factor = 1.0                   # optional (default 0), slipstream factor, in [0, 3] (core/body.py)
     centre_of_mass = [0.002, -0.001, 0.0]   # [m], each in [-1, 1]: the fitted centre of mass in
                                             # the vehicle file's frame (optional)
     rotor_interference = 1.0            # optional, in [0, 3]: the fitted factor on the inflow the
                                         # rotors' wakes induce at each other (core/interference.py)
+    comment = "..."                     # optional free text
 
 Every number must be a TOML integer or float (a quoted ``"5.3"`` or a ``true`` is refused,
 never converted), finite, and within its range: the cambered keys as ``CamberedParams``
