@@ -31,14 +31,15 @@ def test_every_command_refuses_an_option_given_twice():
 
 
 ONE = "given more than once (it takes one value)"
+FLAG = "given more than once (it is a flag: give it once)"
 
 
 @pytest.mark.parametrize("argv, message", [
     (("loads", "apce_8x6", "--rpm", "5000", "--rpm", "6000"), f"--rpm {ONE}"),
     (("loads", "apce_8x6", "--rpm=5000", "--airspeed", "3", "--rpm", "6000"), f"--rpm {ONE}"),
-    (("loads", "apce_8x6", "--rpm", "5000", "--json", "--json"), f"--json {ONE}"),
+    (("loads", "apce_8x6", "--rpm", "5000", "--json", "--json"), f"--json {FLAG}"),
     (("trim", "apce_8x6", "--thrust", "2", "--thrust", "3"), f"--thrust {ONE}"),
-    (("props", "--json", "--json"), f"--json {ONE}"),
+    (("props", "--json", "--json"), f"--json {FLAG}"),
     (("trim", "apce_8x6", "--thrust", "2", "--rpm", "6000", "--range-deg", "-5", "5", "--range-deg", "-3", "3"),
      "--range-deg given more than once (it takes one set of 2 values)"),
 ])
@@ -68,6 +69,20 @@ def test_options_that_take_several_values_may_repeat():
     for argv in (["--rpm", "5", "--help"], ["--rpm", "5", "--rpm", "6", "--help"]):  # the help, as asked
         r = CliRunner().invoke(toy, argv)
         assert r.exit_code == 0 and "--rpm" in r.output and "more than once" not in r.output
+
+
+def test_an_on_off_flag_given_twice_names_both_spellings():
+    """`--x --no-x` is one option given twice; the message names both of its spellings (a toy
+    command: no propmap command has an on/off pair today)."""
+    from click.testing import CliRunner
+
+    @click.command(cls=Command)
+    @click.option("--tip-loss/--no-tip-loss", default=True)
+    def toy(tip_loss):
+        click.echo(f"{tip_loss}")
+
+    r = CliRunner().invoke(toy, ["--tip-loss", "--no-tip-loss"])
+    assert r.exit_code == 2 and f"--tip-loss/--no-tip-loss {FLAG}" in r.output
 
 
 @pytest.mark.parametrize("x, decimals, text", [

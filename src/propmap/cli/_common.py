@@ -388,8 +388,10 @@ class Command(click.Command):
             if not isinstance(param, click.Option) or param.multiple or param.count or not param.expose_value:
                 continue
             if param.name in seen:
-                what = "one value" if param.nargs == 1 else f"one set of {param.nargs} values"
-                raise click.UsageError(f"{'/'.join(param.opts)} given more than once (it takes {what})", ctx=ctx)
+                what = ("it is a flag: give it once" if param.is_flag else
+                        "it takes one value" if param.nargs == 1 else f"it takes one set of {param.nargs} values")
+                names = "/".join(param.opts + param.secondary_opts)  # (--tip-loss and --no-tip-loss are one option)
+                raise click.UsageError(f"{names} given more than once ({what})", ctx=ctx)
             seen.add(param.name)
         return super().parse_args(ctx, args)
 
