@@ -224,6 +224,7 @@ def test_flapping_beyond_small_angles_is_warned_of(apc8x6):
     (5.0, dict(low=0.0, high=5.0, high_open=True), "rho must be a finite number in [0, 5), got 5.0"),
     (2.0, dict(high=1.0, unit="s"), "rho must be a finite number in (-inf, 1] s, got 2.0"),
     (math.nan, {}, "rho must be a finite number, got nan"),
+    (math.inf, dict(unit="rad"), "rho must be a finite number [rad], got inf"),
     (True, dict(low=0.0, high=1.0), "rho must be a finite number in [0, 1], got True"),
     ("0.5", dict(low=0.0, high=1.0), "rho must be a finite number in [0, 1], got '0.5'"),
     (math.radians(31), dict(low=-math.radians(30), high=math.radians(30), unit="rad"),

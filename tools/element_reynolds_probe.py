@@ -5,9 +5,10 @@ propmap's cambered section takes its Reynolds and Mach corrections (the lift slo
 drag's Reynolds exponents, the zero-lift shift, Prandtl-Glauert) once per annulus, at the
 azimuth mean of the section's speed, U^2 = (Omega y)^2 + (V sin beta)^2 / 2 + (V cos beta)^2
 (docs/models.md). In edgewise flow the advancing blade meets the air faster than that and the
-retreating blade slower: with the section's speed of each element, U^2 = U_T^2 + (V cos
-beta)^2 (the induced inflow left out as in the annulus' value), the advancing side gets the
-higher lift slope and the lower drag coefficient that its Reynolds number gives. In axial flow
+retreating blade slower: with the section's speed of each element, U^2 = (Omega y + V sin(beta)
+sin(psi))^2 + (V cos beta)^2, whose azimuth mean is the annulus' value (the induced velocities,
+normal and in-plane, left out of both), the advancing side gets the higher lift slope and the
+lower drag coefficient that its Reynolds number gives. In axial flow
 U_T is the same at every azimuth, so nothing axial changes. Expected from the drag's share in
 the H-force (its in-plane part is largest where U_T is, on the advancing side): a smaller
 H-force; measured here.
@@ -40,10 +41,11 @@ _element, _profile_cd = reference.element, reference.profile_cd
 _state: dict = {}
 
 
-def _constants(UT):
-    """The four section constants at each node: U^2 = U_T^2 + V_c^2, as the annulus' value but per node."""
+def _constants():
+    """The four section constants at each node: U^2 = (Omega y + V_s sin psi)^2 + V_c^2, whose azimuth mean
+    is the annulus' U^2 (the induced velocities left out of both)."""
     st = _state
-    U2 = UT * UT + st["Vc"] ** 2
+    U2 = (st["wy"] + st["Vs"] * st["sinpsi"]) ** 2 + st["Vc"] ** 2
     cam = st["cam"]
     return cambered_annulus(U2, st["sc"], st["cy2"], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0, cam[5],
                             cam[6], cam[7])
@@ -51,13 +53,13 @@ def _constants(UT):
 
 def element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk):
     if _state.get("on") and model == CAMBERED:
-        s0, s1, s2, s3 = _constants(UT)
+        s0, s1, s2, s3 = _constants()
     return _element(UT, UP, theta, sin_th, cos_th, s0, s1, s2, s3, model, pk)
 
 
 def profile_cd(UT, UP, theta, s0, s1, s2, s3, model, pk):
     if _state.get("on") and model == CAMBERED:
-        s0, s1, s2, s3 = _constants(UT)
+        s0, s1, s2, s3 = _constants()
     return _profile_cd(UT, UP, theta, s0, s1, s2, s3, model, pk)
 
 
@@ -72,7 +74,8 @@ def loads(prop, p, omega, V, incidence, per_element):
     omega = np.full(V.shape, float(omega))
     Vc = V * np.cos(incidence)
     _state.update(on=per_element, Vc=Vc[:, None, None], sc=nd.sc[None, :, None], cy2=nd.cy2[None, :, None],
-                  cam=_cambered_args(p, air))
+                  cam=_cambered_args(p, air), wy=omega[:, None, None] * nd.y[None, :, None],
+                  Vs=(V * np.sin(incidence))[:, None, None], sinpsi=nd.sinpsi[None, None, : nd.sinpsi.size // 2])
     T, D, Q, _, converged = reference.solve_reference(omega, V * np.sin(incidence), Vc, nd, p, air)
     if not converged.all():
         raise RuntimeError("the reference solver did not converge")
@@ -96,10 +99,10 @@ def main() -> None:
             row.append((k4 / T[0], T[-2] / T[0] - 1, Q[-2] / Q[0] - 1))
             axial.append((T[-1], Q[-1]))
         meas = (c["k4"] / c["CT_static"], c["k2"] * 0.04 / c["CT_static"], c["k7"] * 0.04 / c["CQ_static"])
-        cells = [f"{lab} {m:.3f} / {r0:.3f} -> {r1:.3f}"
+        cells = [f"{lab} {r0 / m:.2f} -> {r1 / m:.2f} ({m:.3f} measured)"
                  for lab, m, r0, r1 in zip(("H", "dT", "dQ"), meas, row[0], row[1])]
         moved = max(abs(axial[1][k] / axial[0][k] - 1) for k in range(2))
-        print(f"  {name:13s} measured / per annulus -> per element: " + "; ".join(cells)
+        print(f"  {name:13s} ratio to measured, per annulus -> per element: " + "; ".join(cells)
               + f"; axial (J-like 0.1) moved {moved:.1e}")
     veh = pm.read_vehicle(pm.__path__[0] + "/data/examples/neurobem_quadrotor.toml")
     prop, p = veh.rotors[0].propeller, pm.generic_params()

@@ -56,5 +56,6 @@ def checked(name: str, value, low: float | None = None, high: float | None = Non
             lo = "(-inf" if low is None else ("(" if low_open else "[") + _shown(low)
             hi = "inf)" if high is None else _shown(high) + (")" if high_open else "]")
             where = f"a finite number in {lo}, {hi}"
-        raise error(f"{name} must be {where}{' ' + unit if unit else ''}, got {value!r:.60}")
+        unit = "" if not unit else f" [{unit}]" if low is None and high is None else f" {unit}"
+        raise error(f"{name} must be {where}{unit}, got {value!r:.60}")
     return x
