@@ -124,7 +124,7 @@ def demo(out_dir: Path, rpm: float):
     click.echo(f"propmap demo: {PROP} (APC 8x6 Thin Electric; {prop.source})")
     click.echo(f"models: the paper's eqs 3-4 with Table I (Gill & D'Andrea, IEEE CCTA 2017; {PAPER}); the cambered "
                "section with Prandtl tip loss "
-               f"and the {generic_label} set (fitted to the catalogue without {PROP}'s family)\n")
+               f"and the set '{generic_label}' (the generic set fitted to the catalogue without {PROP}'s family)\n")
 
     from ..core.airfoil import Air
     from ._coverage import coverage_messages, envelope_extremes
