@@ -3,7 +3,9 @@ any integer or float type, or a 0-d array of one (``np.float32(800.0)``, ``np.ar
 ``np.int64(2)``). Bools, strings and other objects are not numbers here (``True`` was once a
 tolerance of 1 N; ``"5"`` a thrust of 5 N). The scalar checks of the model's inputs and
 records take their values through :func:`real` (``np.float32`` and 0-d arrays were refused by
-some of them with a message that quoted a value in range: a user-level audit, 2026-11-30).
+some of them with a message that quoted a value in range: a user-level audit, 2026-11-30),
+and :func:`checked` is the range check most of them share (one wording: the name, the range
+with its unit, the value given).
 """
 
 from __future__ import annotations

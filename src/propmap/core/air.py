@@ -122,5 +122,3 @@ ALTITUDE_RANGE_M = (-500.0, 20000.0)
 #: the start of rotor_loads' warning of a supersonic blade tip (core/_inputs.warn_tip_mach; the CLI, which warns
 #: from tip Mach 0.7 in its own terms, filters it by this text)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
-
-
