@@ -217,3 +217,18 @@ def test_export_sim_json_where_every_check_point_is_flagged(capsys, tmp_path):
     assert d["errors"]["points_flagged"] == d["check_points"]
     assert d["errors"]["thrust"]["rms"] is None and d["errors"]["thrust"]["rms_flagged"] > 0
     assert d == json.loads((tmp_path / "vr.report.json").read_text())
+
+
+@pytest.mark.parametrize("target", ["rotorpy", "gazebo-classic", "gz-sim"])
+def test_predict_broadcasts_every_load_to_the_inputs_shape(target):
+    """A docstring-contract audit (2026-11-30): rotorpy's Q and M_R and the Gazebo forms' T and Q took
+    omega's shape alone, so one rate with three airspeeds gave loads of shapes (3,) and ()."""
+    c = dict(k_eta=1e-5, k_h=1e-3, k_z=1e-4, k_d=1e-4, k_m=1e-7, motorConstant=1e-5, rotorDragCoefficient=1e-4,
+             momentConstant=0.01, rollingMomentCoefficient=1e-6)
+    loads = predict(target, c, 600.0, np.array([1.0, 2.0, 3.0]), 0.5)
+    assert [np.shape(x) for x in loads] == [(3,)] * 4
+    one = predict(target, c, 600.0, 2.0, 0.5)
+    assert [np.shape(x) for x in one] == [()] * 4
+    assert all(float(a[1]) == float(b) for a, b in zip(loads, one))
+    with pytest.raises(ValueError):
+        predict(target, c, np.ones(2), np.ones(3), 0.5)

@@ -123,10 +123,14 @@ def predict(target: str, coefficients: dict, omega, airspeed, incidence):
     ------
     ValueError
         Unknown target; an Omega below 0 or NaN (a magnitude), or of 0 for the multinomial,
-        whose terms divide by Omega R (NaN loads and, below 0, loads of the wrong sign before).
+        whose terms divide by Omega R (NaN loads and, below 0, loads of the wrong sign before);
+        inputs whose shapes do not broadcast.
+    KeyError
+        ``coefficients`` without a term of the target's model.
     """
     target = canonical_target(target)
-    om, V, b = (np.asarray(x, float) for x in (omega, airspeed, incidence))
+    # (broadcast first: Q and M_R of rotorpy, T and Q of the Gazebo forms took omega's shape alone)
+    om, V, b = np.broadcast_arrays(*(np.asarray(x, float) for x in (omega, airspeed, incidence)))
     bad = ~(om > 0) if target == "multinomial" else ~(om >= 0)  # (NaN too; the multinomial is singular at 0)
     if bad.any():
         raise ValueError(f"omega must be {'>' if target == 'multinomial' else '>='} 0 rad/s for the {target} model "
