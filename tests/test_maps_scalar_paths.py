@@ -495,3 +495,16 @@ def test_broadcast_queries_warn_of_nothing(small_map):
         om = pm.trim_omega(prop, params, np.array([2.0, 3.0]), 5.0, 0.5).omega
     assert one.thrust.shape == (1,) and one.thrust[0] == rm.loads(700.0, 5.0, 0.5).thrust
     assert om.shape == (2,) and om[0] < om[1]
+
+
+def test_the_scalar_path_returns_python_numbers_and_a_zero_d_query_arrays(small_map):
+    """What MapLoads' docstring says (a docstring-contract audit, 2026-11-30, found it promising arrays
+    for every query): one point of floats gets Python floats and bools, a 0-d array query 0-d arrays."""
+    rm = RotorMap(small_map[2])
+    o0, o1, v0, v1, b0, b1 = rm._box
+    q = (0.5 * (o0 + o1), 0.5 * (v0 + v1), 0.5 * (b0 + b1))
+    one = rm.loads(*q)
+    assert type(one.thrust) is float and type(one.torque) is float and type(one.inside) is bool
+    arr = rm.loads(*(np.array(x) for x in q))
+    assert isinstance(arr.thrust, np.ndarray) and arr.thrust.shape == () and arr.inside.shape == ()
+    assert float(arr.thrust) == one.thrust and bool(arr.inside) is one.inside

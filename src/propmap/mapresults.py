@@ -12,7 +12,9 @@ __all__ = ["MapLoads", "MapWrench"]
 
 
 class MapLoads(NamedTuple):
-    """Loads interpolated in a map; arrays of the broadcast shape S of the queries.
+    """Loads interpolated in a map; arrays of the broadcast shape S of the queries, or, for one
+    point of real numbers (the scalar path, ``RotorMap.loads(600.0, 5.0, 1.0)``), Python floats
+    and bools (``inside`` a bool, not an array: a 0-d array query gets 0-d arrays).
 
     Attributes
     ----------
