@@ -33,7 +33,7 @@ from .core.units import RPM
 from .core.airfoil import COLLECTIVE_MAX, Air, SectionParams
 from .core.geometry import Propeller
 from .core.hover import HoverModel
-from .core.solver import model_air, rotor_loads
+from .core.solver import check_model_args, model_air, rotor_loads
 
 __all__ = ["CaseResult", "CASES", "run_case", "beaver_propeller", "dji9443_propeller", "gill2019_coefficients",
            "multinomial_fit"]
@@ -359,6 +359,7 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     SolverError
         From the model.
     """
+    check_model_args(prop, p)  # (a propeller of None met "'NoneType' object has no attribute 'radius'")
     air = model_air(p, air, name="p")
     omega = checked("omega", omega, 1.0, 1e5, unit="rad/s")  # (NumPy numbers too, core._numbers)
     adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))

@@ -215,6 +215,8 @@ class HoverModel:
         if x is None or not 0 < x < math.inf:
             raise ValueError(f"diameter must be a positive finite number [m], got {d!r}")
         d = x
+        if air is not None and not isinstance(air, Air):  # (air=1.2 met "'float' object has no attribute 'rho'")
+            raise TypeError(f"air must be a propmap.Air (Air(rho=...)), got {type(air).__name__}")
         rho = (self.rho if self.rho is not None else Air().rho) if air is None else air.rho
         return float(d), float(rho)
 
@@ -237,6 +239,8 @@ class HoverModel:
         ------
         ValueError
             No diameter given and none recorded, or one that is not a positive finite number.
+        TypeError
+            ``air`` not an :class:`Air`.
         """
         d, rho = self._conditions(diameter, air)
         return self.k_T * (2 * math.pi) ** 2 / (rho * d**4)

@@ -100,7 +100,8 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
     Raises
     ------
     TypeError
-        ``paths`` a single path (a str, bytes or path-like) or not iterable: give a list.
+        ``paths`` a single path (a str, bytes or path-like) or not iterable: give a list;
+        ``air`` not an :class:`Air`.
     DataError
         A file that is neither kind, or malformed (as :func:`propmap.io.readers.read_uiuc_static`
         and :func:`~propmap.io.readers.read_uiuc_sweep`: not a readable regular file,
@@ -117,6 +118,8 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
         raise TypeError(f"paths must be a sequence of file paths, got {type(paths).__name__} {str(paths)!r:.80} "
                         "(give a list: [path])")
     paths = list(paths)
+    if not isinstance(air, Air):  # (air=1.2 met "'float' object has no attribute 'rho'"; as loads_from_catalogue)
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
     diameter = checked("diameter", diameter, 0.0, 10.0, low_open=True, unit="m", error=DataError)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..vehicle import Vehicle, hub_velocities, rotor_geometry
-from ..vehicle.layout import body_to_world  # (re-exported: the level-flight fit's)
+from ..vehicle.layout import body_to_world, check_vehicle  # (body_to_world re-exported: the level-flight fit's)
 from ._checks import first_length, float_array
 from ..core.units import RPM
 from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv, _short
@@ -135,7 +135,10 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
         value, a value out of range (rpm outside (0, 954929], airspeed outside [0, 500] m/s, |pitch| or |roll|
         >= 90 deg, |p|, |q|, |r| > 100 rad/s), fewer than ``min_conditions`` rows, or all
         rows identical; the message names the file, the line and the column.
+    TypeError
+        ``vehicle`` not a :class:`propmap.Vehicle`.
     """
+    check_vehicle(vehicle)  # (None met an AttributeError after the file was read)
     what = "level-flight data"
     f = _Csv(path, what)
     p = f.name
@@ -210,6 +213,14 @@ def level_flight_warnings(data: LevelFlightData, vehicle: Vehicle) -> list[str]:
     return out
 
 
+def check_level_flight(data, vehicle) -> None:
+    """TypeError unless ``data`` is :class:`LevelFlightData` (:func:`read_level_flight`) and ``vehicle`` a
+    :class:`propmap.Vehicle` (a wrong object met an AttributeError inside: a docstring-contract audit)."""
+    if not isinstance(data, LevelFlightData):
+        raise TypeError(f"data must be LevelFlightData (propmap.identify.read_level_flight), got {type(data).__name__}")
+    check_vehicle(vehicle)
+
+
 def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
     """Body-frame hub velocities of every rotor: V_i = R^T V_vehicle + omega x r_i (Sec. III).
 
@@ -227,7 +238,13 @@ def rotor_kinematics(data: LevelFlightData, vehicle: Vehicle):
         Body-to-world rotations.
     velocity : ndarray, shape (N, n_rotors, 3)
         Hub velocity relative to still air, body frame [m/s].
+
+    Raises
+    ------
+    TypeError
+        ``data`` not :class:`LevelFlightData` or ``vehicle`` not a :class:`propmap.Vehicle`.
     """
+    check_level_flight(data, vehicle)
     R = body_to_world(data.pitch, data.roll)
     v_world = np.stack([data.airspeed, np.zeros(data.n), np.zeros(data.n)], -1)
     v_body = np.einsum("nji,nj->ni", R, v_world)  # R^T v

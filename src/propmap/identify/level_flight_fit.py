@@ -21,6 +21,7 @@ from ..core.vector import rotor_wrench
 from ..vehicle import Vehicle, rotor_geometry
 from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
+from .level_flight import check_level_flight
 from .engine import _attach_jacobian, _finish, _m_effect, _objective, _params_from, _with_prior, _x0
 from .options import BODY_X0, FitOptions, _default_names
 from .dependence import lag1_autocorrelation
@@ -64,6 +65,8 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
         name, Omega below 0.1 rad/s).
     SolverError
         From the rotor model.
+    TypeError
+        ``params``, ``data``, ``vehicle`` or ``air`` of the wrong type.
     """
     air = model_air(params, air)
     R, vel = rotor_kinematics(data, vehicle)
@@ -165,9 +168,14 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         vehicle's, an unknown parameter name, or body lift requested without body_area.
     SolverError
         From the rotor model.
+    TypeError
+        ``data``, ``vehicle``, ``base``, ``air`` or ``options`` of the wrong type.
     """
     from ..core.airfoil import preset
 
+    check_level_flight(data, vehicle)
+    if not isinstance(options, FitOptions):  # (None met "'NoneType' object has no attribute 'names'")
+        raise TypeError(f"options must be a propmap.identify.FitOptions, got {type(options).__name__}")
     base = base or preset("gill2017-apc")
     air = model_air(base, air, name="base")
     names = _level_flight_names(data, vehicle, base, options)

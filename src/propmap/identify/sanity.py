@@ -412,11 +412,16 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         the likely cause), or a checked load beyond it is 0 at every point (not measured?), or
         a fitted drag has the other sign than the model's at :data:`DRAG_SIGN_REFUSED` of the
         points at incidence.
+    TypeError
+        ``propeller``, ``params`` or ``air`` of the wrong type (a set's name included).
     """
+    from ..core.solver import check_model_args
     from ..io.calibration import generic_params
 
     label = "the model" if params else "the generic set"
     params = params or generic_params()
+    # (params="generic" met "'str' object has no attribute 'air'", a docstring-contract audit)
+    check_model_args(propeller, params, **({} if air is None else {"air": air}))
     air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
     checked = tuple(data.measured) if quantities is None else tuple(quantities)
     model = _ModelAt(data, propeller, params, air, checked)

@@ -16,6 +16,7 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, model_air, sup
 from .data import LevelFlightData
 from .level_flight_fit import level_flight_forces
 from ..vehicle import Vehicle
+from ..vehicle.layout import check_vehicle
 
 __all__ = ["simulate_level_flight"]
 
@@ -57,8 +58,7 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
         condition may be given as two numbers), or no rotor speed in ``omega_bounds`` balances
         the weight at some condition.
     """
-    if not isinstance(vehicle, Vehicle):  # (a name met an AttributeError, a user-level audit, 2026-11-30)
-        raise TypeError(f"vehicle must be a propmap Vehicle (propmap.read_vehicle), got {type(vehicle).__name__}")
+    check_vehicle(vehicle)  # (a name met an AttributeError, a user-level audit, 2026-11-30)
     air = model_air(params, air)
     try:  # (two numbers met an IndexError)
         given = [np.atleast_1d(np.asarray(x, float)) for x in (airspeed, pitch_deg)]

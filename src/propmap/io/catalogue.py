@@ -316,7 +316,7 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
 
     Parameters
     ----------
-    spec : str
+    spec : str or os.PathLike
         A catalogue name (``propmap props``) or the path of a geometry file.
     diameter_in, n_blades
         For a geometry file, as :func:`propmap.io.geometry_files.read_geometry`; a
@@ -334,6 +334,8 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         unknown name), with close catalogue names suggested.
     GeometryFileError
         The file is malformed.
+    TypeError
+        ``spec`` neither a str nor an os.PathLike.
 
     Warns
     -----
@@ -341,6 +343,12 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         As the geometry readers (e.g. stations stopping short of the tip); a catalogue name
         that is also a file in the working folder (the catalogue's propeller is used).
     """
+    import os
+
+    if isinstance(spec, os.PathLike):  # (a pathlib.Path met "'PosixPath' object has no attribute 'strip'")
+        return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
+    if not isinstance(spec, str):
+        raise TypeError(f"the propeller must be a catalogue name or a geometry file's path, got {type(spec).__name__}")
     if spec in catalogue():
         if Path(spec).is_file():
             import warnings

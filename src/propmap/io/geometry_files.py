@@ -403,6 +403,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     if kind == "pe0":
         prop = _apc_pe0(path, text, name=None, source="")
         # (to the file's own precision: RADIUS is printed to 0.01 in)
+        if diameter_in is not None:  # (the text "10" met a bare "must be real number, not str")
+            _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))
         if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):
             raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives its "
                                     f"own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in applies to "

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..core.units import RPM
 from .. import __version__
+from ..vehicle.layout import check_vehicle
 from .fit import LOADS, SimExport
 from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS
 
@@ -206,7 +207,10 @@ def check_rotorpy_vehicle(vehicle) -> None:
         Not 4 rotors (RotorPy's Multirotor inverts a 4 x n control allocation matrix: a
         quadrotor's), no inertia tensor in the vehicle file, or a rotor whose axis is not
         body +z (RotorPy assumes every rotor thrusts along +z).
+    TypeError
+        ``vehicle`` not a :class:`propmap.Vehicle`.
     """
+    check_vehicle(vehicle)  # (None met an AttributeError, a docstring-contract audit)
     if len(vehicle.rotors) != 4:
         raise ValueError(f"the vehicle has {len(vehicle.rotors)} rotors: RotorPy's Multirotor (3.0) inverts a 4 x n "
                          "control allocation matrix, so its quad_params must describe 4 rotors (gz-sim and "
@@ -282,9 +286,13 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     ValueError
         ``vehicle`` with another target, or one RotorPy cannot represent; a ``path`` named
         ``*.report.json`` (an export's report: it would replace another export's).
+    TypeError
+        ``vehicle`` given and not a :class:`propmap.Vehicle`.
     OSError
         The files cannot be written.
     """
+    if vehicle is not None:
+        check_vehicle(vehicle)
     path = Path(path)
     if path.name.lower().endswith(".report.json"):
         raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "

@@ -196,6 +196,13 @@ class Vehicle:
         return self.mass * self.gravity
 
 
+def check_vehicle(vehicle, name: str = "vehicle") -> None:
+    """TypeError naming ``name`` unless ``vehicle`` is a :class:`Vehicle` (the entry points that take
+    one call it first: a wrong object met an AttributeError deep inside, a docstring-contract audit)."""
+    if not isinstance(vehicle, Vehicle):
+        raise TypeError(f"{name} must be a propmap Vehicle (propmap.read_vehicle), got {type(vehicle).__name__}")
+
+
 def rotor_geometry(vehicle: Vehicle) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The rotors' arms, unit axes, spins and angular momentum per unit speed.
 

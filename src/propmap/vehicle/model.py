@@ -47,7 +47,7 @@ from ..core.vector import VELOCITY_INPUTS, checked_frame, wrench_vectors
 from ._jacobians import (BODY_DRAG_NAMES, MOTION_NAMES, hub_velocity_jacobians, load_derivatives, motion_derivatives,
                         requested_derivatives)
 from ._kinematics import _samples, hub_moments, hub_velocity_loop
-from .layout import Rotor, Vehicle, cached_rotor_geometry, rotor_geometry
+from .layout import Rotor, Vehicle, cached_rotor_geometry, check_vehicle, rotor_geometry
 
 __all__ = ["Rotor", "Vehicle", "VehicleWrench", "hover_omega", "rotor_geometry", "vehicle_wrench"]
 
@@ -174,8 +174,7 @@ def vehicle_wrench(vehicle: Vehicle, params: SectionParams, velocity, angular_ve
         Without ``air``: a rotor whose own parameter set carries other air than ``params``
         (every rotor is solved in one air, ``params``'s).
     """
-    if not isinstance(vehicle, Vehicle):
-        raise TypeError(f"vehicle must be a propmap Vehicle (propmap.read_vehicle), got {type(vehicle).__name__}")
+    check_vehicle(vehicle)
     check_model_args(vehicle.rotors[0].propeller, params, **({} if air is None else {"air": air}),
                      discretization=discretization)
     if body_drag is not None and not isinstance(body_drag, BodyDrag):
@@ -419,6 +418,9 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
         more than the solver's 1e5 rad/s or less than 0.1 rad/s.
     SolverError
         A static solve fails (as :func:`propmap.rotor_loads`).
+    TypeError
+        ``vehicle`` not a :class:`Vehicle`, ``params`` not a parameter set, ``air`` not an
+        :class:`Air`.
 
     Warns
     -----
@@ -428,6 +430,7 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
     """
     from scipy.optimize import brentq
 
+    check_vehicle(vehicle)
     air = model_air(params, air)
     up = np.array([float(r.axis[2]) / float(np.linalg.norm(r.axis)) for r in vehicle.rotors])  # a_i . e_z, a_i unit
     if not np.any(up > 0):

@@ -36,7 +36,7 @@ from ..core.airfoil import Air, SectionParams
 from ..core.air import SUPERSONIC_TIP
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            model_air, supersonic_tips_allowed)
-from .layout import Vehicle, body_to_world
+from .layout import Vehicle, body_to_world, check_vehicle
 from .model import VehicleWrench, hover_omega, vehicle_wrench
 
 __all__ = ["VehicleTrim", "trim_vehicle"]
@@ -140,8 +140,7 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     """
     from scipy.optimize import least_squares
 
-    if not isinstance(vehicle, Vehicle):
-        raise TypeError(f"vehicle must be a propmap Vehicle (read_vehicle), got {type(vehicle).__name__}")
+    check_vehicle(vehicle)
     V = checked("airspeed", airspeed, 0.0, 100.0, unit="m/s")  # (the text "5" was 5 m/s, a user-level audit)
     Vc = checked("climb_rate", climb_rate, -V if V else 0.0, V, unit="m/s (|climb_rate| <= airspeed)")
     Vh = math.sqrt(max(V * V - Vc * Vc, 0.0))
