@@ -9,7 +9,7 @@ second, the vehicle file's 33 ms motor lag), from the generic set; rows with
 ``flap_compliance`` start it at FLAP_START (1 rad/(N m)), and T and U switch the generic
 lift's Reynolds terms off (re_exp_lift = alpha_L0_re = 0).
 
-    .venv/bin/python tools/flight_design_table.py [--differences] [ROW ...]    # all rows: about 5 min on 2 cores
+    .venv/bin/python tools/flight_design_table.py [--differences] [ROW ...]    # all rows: about 5-7 min on 2 cores
 
 Prints per row the pooled held-out F [N], the four logs' F and the fitted compliance per fold.
 Rows C and WP (Pitt-Peters inflow) run only when named: a linear inflow's loads cost 2.4x the
