@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._numbers import real
+from ._numbers import checked, real
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller, has_bool
 from .solver import DEFAULT_DISCRETIZATION, Discretization, check_air, check_model_args, rotor_loads
@@ -65,11 +65,7 @@ class HoverModel:
 
     def __post_init__(self) -> None:
         for name in ("k_T", "k_Q"):
-            v = getattr(self, name)
-            x = real(v)
-            if x is None or not math.isfinite(x):
-                raise ValueError(f"{name} must be a finite number, got {v!r}")
-            object.__setattr__(self, name, x)
+            object.__setattr__(self, name, checked(name, getattr(self, name)))
         for name in ("rho", "diameter"):
             v = getattr(self, name)
             if v is not None:
@@ -152,13 +148,7 @@ class HoverModel:
         """
         air = Air() if air is None else air
         check_air(air)
-        checked = []
-        for name, v in (("CT", CT), ("CP", CP), ("diameter", diameter)):
-            x = real(v)
-            if x is None or not math.isfinite(x):
-                raise ValueError(f"{name} must be a finite number, got {v!r}")
-            checked.append(x)
-        CT, CP, diameter = checked
+        CT, CP, diameter = checked("CT", CT), checked("CP", CP), checked("diameter", diameter)
         if not 0 < diameter <= 1e3:
             raise ValueError(f"diameter must be in (0, 1000] m, got {diameter!r}")
         if not (abs(CT) <= 1e3 and abs(CP) <= 1e3):
