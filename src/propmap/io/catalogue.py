@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import functools
 import json
+import os
 from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
@@ -181,7 +182,7 @@ def catalogue() -> dict[str, CatalogueEntry]:
     """
     # (the cached dict itself was returned: catalogue().pop("apce_10x7") made load_propeller("apce_10x7") an
     # unknown propeller for the rest of the process, a user-level audit, 2026-11-30)
-    return dict(_catalogue())
+    return dict(_catalogue())  # (the module's own lookups read _catalogue(), without the copy)
 
 
 @functools.lru_cache(maxsize=1)
@@ -218,7 +219,7 @@ def get_entry(name: str) -> CatalogueEntry:
     """
     if not isinstance(name, str):
         raise TypeError(f"name must be a catalogue propeller's name (str), got {type(name).__name__}")
-    cat = catalogue()
+    cat = _catalogue()
     if name not in cat:
         raise KeyError(f"unknown propeller {name!r}{near_names(name, cat)}")
     return cat[name]
@@ -343,13 +344,11 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
         As the geometry readers (e.g. stations stopping short of the tip); a catalogue name
         that is also a file in the working folder (the catalogue's propeller is used).
     """
-    import os
-
     if isinstance(spec, os.PathLike):  # (a pathlib.Path met "'PosixPath' object has no attribute 'strip'")
         return read_geometry(spec, diameter_in=diameter_in, n_blades=n_blades)
     if not isinstance(spec, str):
         raise TypeError(f"the propeller must be a catalogue name or a geometry file's path, got {type(spec).__name__}")
-    if spec in catalogue():
+    if spec in _catalogue():
         if Path(spec).is_file():
             import warnings
 
@@ -369,7 +368,7 @@ def resolve_propeller(spec: str, *, diameter_in: float | None = None, n_blades: 
     if len(path.parts) > 1 or path.suffix.lower() in (".txt", ".pe0", ".dat", ".csv"):  # a path: no file there
         import difflib
 
-        near = difflib.get_close_matches(path.name.split(".")[0].replace("-PERF", ""), catalogue(), n=3)
+        near = difflib.get_close_matches(path.name.split(".")[0].replace("-PERF", ""), _catalogue(), n=3)
         hint = f"; did you mean the catalogue's {', '.join(near)}?" if near else ""
         raise KeyError(f"no file {shown}, and no catalogue propeller of that name{hint}")
     get_entry(spec)  # raises KeyError with suggestions
