@@ -13,8 +13,8 @@ import propmap as pm
 from propmap.core.airfoil import sigmoid_blend
 from propmap.identify.dependence import jackknife_report, jackknife_std_error, lag1_autocorrelation
 from propmap.identify.result import FitResult, _identifiability
-from propmap.io.mapcheck import (DIMS, FLAGS, LOADS, check_attributes, check_dataset, check_integer,
-                                 check_propeller, map_model)
+from propmap.core._numbers import integer as check_integer
+from propmap.io.mapcheck import DIMS, FLAGS, LOADS, check_attributes, check_dataset, check_propeller, map_model
 
 # ---------------------------------------------------------------- core/airfoil.py
 

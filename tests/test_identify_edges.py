@@ -49,7 +49,7 @@ def test_the_python_fits_use_the_density_the_data_logged():
 
 
 @pytest.mark.parametrize("kw, said", [
-    (dict(max_nfev=2.5), r"max_nfev must be an integer in \[1, 10,000,000\], got 2.5"),
+    (dict(max_nfev=2.5), r"max_nfev must be an integer in \[1, 10000000\], got 2.5"),
     (dict(max_nfev=0), r"max_nfev must be an integer in \[1,"),
     (dict(multistart=-1), r"multistart must be an integer in \[0, 256\], got -1"),
     (dict(multistart=1.5), r"multistart must be an integer"),

@@ -23,10 +23,11 @@ import numpy as np
 
 from . import __version__
 from .core._interp import snap_incidence
+from .core._numbers import SEED_MAX, integer
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
 from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
-from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset, check_integer,
+from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset,
                           check_propeller)
 from .io.mapfile import read_sidecar, write_map, write_sidecar
 from .io.provenance import source_digest
@@ -239,9 +240,9 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
     V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
     b = _check_axis("incidence", incidence, 0.0, math.pi, "rad", snap=True)
-    chunk_points = check_integer("chunk_points", chunk_points, 1, MAX_NODES)
-    n_check = check_integer("n_check", n_check, 0, CHECK_POINTS_MAX)
-    seed = check_integer("seed", seed, 0, 2**63 - 1)
+    chunk_points = integer("chunk_points", chunk_points, 1, MAX_NODES)
+    n_check = integer("n_check", n_check, 0, CHECK_POINTS_MAX)
+    seed = integer("seed", seed, 0, SEED_MAX)
     nodes = om.size * V.size * b.size
     if nodes > MAX_NODES:
         raise ValueError(f"the grid omega x airspeed x incidence has {om.size} x {V.size} x {b.size} = {nodes:,} "

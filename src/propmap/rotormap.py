@@ -16,10 +16,11 @@ import numpy as np
 
 from .core.units import RPM
 from .core._interp import snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
+from .core._numbers import SEED_MAX, integer
 from .core._plain import SPINS, plain_float, plain_vector
 from .core.geometry import broadcast_readonly, has_bool, refuse_masked
 from .io.inputs import short_path
-from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_integer, map_loads, map_model
+from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, map_loads, map_model
 from .io.mapfile import read_dataset
 from .mapresults import MapLoads, MapWrench
 
@@ -495,8 +496,8 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     """
     from .core.solver import rotor_loads  # here: evaluating a map needs neither the solver nor SciPy
 
-    n_check = check_integer("n_check", n_check, 1, CHECK_POINTS_MAX)
-    seed = check_integer("seed", seed, 0, 2**63 - 1)
+    n_check = integer("n_check", n_check, 1, CHECK_POINTS_MAX)
+    seed = integer("seed", seed, 0, SEED_MAX)
     check_dataset(ds)
     if None in (propeller, params, air, discretization):
         model = map_model(ds.attrs)

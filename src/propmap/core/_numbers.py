@@ -5,7 +5,8 @@ tolerance of 1 N; ``"5"`` a thrust of 5 N). The scalar checks of the model's inp
 records take their values through :func:`real` (``np.float32`` and 0-d arrays were refused by
 some of them with a message that quoted a value in range: a user-level audit, 2026-11-30),
 and :func:`checked` is the range check most of them share (one wording: the name, the range
-with its unit, the value given).
+with its unit, the value given); :func:`integer` is its counterpart for counts, seeds and
+limits.
 """
 
 from __future__ import annotations
@@ -14,6 +15,9 @@ import math
 import numbers
 
 import numpy as np
+
+#: the largest seed accepted (a NumPy int64)
+SEED_MAX = 2**63 - 1
 
 
 def real(value) -> float | None:
@@ -61,3 +65,28 @@ def checked(name: str, value, low: float | None = None, high: float | None = Non
         unit = "" if not unit else f" [{unit}]" if low is None and high is None else f" {unit}"
         raise error(f"{name} must be {where}{unit}, got {value!r:.60}")
     return x
+
+
+def integer(name: str, value, low: int, high: int | None = None, *, whole_float: bool = True,
+            error: type[Exception] = ValueError) -> int:
+    """``value`` as an int in [low, high] (``high`` None: no upper bound); else ``error`` naming
+    ``name``, the range and the value given.
+
+    The one check of the integer arguments (counts, seeds, evaluation limits, pole pairs,
+    blade counts): a Python or NumPy integer, or a 0-d array of one, and, with ``whole_float``,
+    an integral float too (2000.0, ``np.float64(48.0)``); never a bool or a string.
+    ``integer("seed", -1, 0, 2**63 - 1)`` raises "seed must be an integer in [0,
+    9223372036854775807], got -1".
+    """
+    x = real(value)
+    n = None
+    if x is not None and math.isfinite(x) and x.is_integer():
+        if isinstance(value, (numbers.Integral, np.integer)) or (isinstance(value, np.ndarray)
+                                                                 and value.dtype.kind in "iu"):
+            n = int(value)  # (exact: float(2**63 - 1) rounds up past the bound)
+        elif whole_float:
+            n = int(x)
+    if n is None or n < low or (high is not None and n > high):
+        where = f"in [{low}, {high}]" if high is not None else f">= {low}"
+        raise error(f"{name} must be an integer {where}, got {value!r:.60}")
+    return n

@@ -9,13 +9,12 @@ overshoot creates a negative chord between stations.
 from __future__ import annotations
 
 import math
-import numbers
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._numbers import real as _real
+from ._numbers import integer, real as _real
 from ._pchip import Pchip
 
 __all__ = ["Propeller", "rotor_like"]
@@ -220,10 +219,7 @@ class Propeller:
         radius = _real(self.radius)
         if radius is None or not (math.isfinite(radius) and radius > 0):
             raise ValueError(f"radius must be finite and > 0 m, got {short_repr(self.radius)}")
-        nb = self.n_blades
-        if (isinstance(nb, (bool, np.bool_)) or not isinstance(nb, numbers.Real)
-                or not (_real(nb) is not None and math.isfinite(float(nb)) and float(nb).is_integer() and nb >= 1)):
-            raise ValueError(f"n_blades must be an integer >= 1, got {short_repr(nb)}")
+        nb = integer("n_blades", self.n_blades, 1)
         if self.pitch is not None:
             pitch = _real(self.pitch)
             if pitch is None or not math.isfinite(pitch):
@@ -233,7 +229,7 @@ class Propeller:
         r, chord, theta = arrays["r"], arrays["chord"], arrays["theta"]
         _check_stations(r, chord, theta, radius)
         object.__setattr__(self, "radius", radius)
-        object.__setattr__(self, "n_blades", int(nb))
+        object.__setattr__(self, "n_blades", nb)
         for key, a in arrays.items():
             object.__setattr__(self, key, a)
         object.__setattr__(self, "_chord_spline", Pchip(r, chord))

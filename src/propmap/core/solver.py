@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _flags, _kernel
+from ._numbers import integer
 from ._parallel import parallel_region, serial_only
 from . import _momentum as mo
 # (the inputs' ranges and the Mach warning's context are re-exported here, where the rest of the package takes them)
@@ -71,15 +72,9 @@ class Discretization:
     n_azimuth: int = 16
 
     def __post_init__(self) -> None:
-        from .geometry import _real
-
         for name, hi in (("n_radial", 10000), ("n_azimuth", 1000)):
-            v = getattr(self, name)
-            x = _real(v)
-            if x is None or not (math.isfinite(x) and x.is_integer() and 2 <= x <= hi):
-                raise ValueError(f"{name} must be an integer in [2, {hi}], got {v!r:.60}")
             # (a whole float such as 48.0 kept as it was failed inside NumPy's Gauss-Legendre nodes)
-            object.__setattr__(self, name, int(x))
+            object.__setattr__(self, name, integer(name, getattr(self, name), 2, hi))
 
 
 DEFAULT_DISCRETIZATION = Discretization()

@@ -12,6 +12,7 @@ import numpy as np
 from ..vehicle import Vehicle, hub_velocities, rotor_geometry
 from ..vehicle.layout import body_to_world, check_vehicle  # (body_to_world re-exported: the level-flight fit's)
 from ._checks import first_length, float_array
+from ..core._numbers import integer
 from ..core.units import RPM
 from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv, _short
 
@@ -120,6 +121,7 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
     vehicle : Vehicle
         Gives the rotor count n.
     min_conditions : int
+        The fewest rows accepted, >= 1 (6 for a fit).
 
     Returns
     -------
@@ -135,10 +137,13 @@ def read_level_flight(path, vehicle: Vehicle, *, min_conditions: int = 6) -> Lev
         value, a value out of range (rpm outside (0, 954929], airspeed outside [0, 500] m/s, |pitch| or |roll|
         >= 90 deg, |p|, |q|, |r| > 100 rad/s), fewer than ``min_conditions`` rows, or all
         rows identical; the message names the file, the line and the column.
+    ValueError
+        ``min_conditions`` not an integer >= 1 (before the file is read).
     TypeError
         ``vehicle`` not a :class:`propmap.Vehicle`.
     """
     check_vehicle(vehicle)  # (None met an AttributeError after the file was read)
+    min_conditions = integer("min_conditions", min_conditions, 1)
     what = "level-flight data"
     f = _Csv(path, what)
     p = f.name

@@ -15,6 +15,7 @@ import warnings
 
 import numpy as np
 
+from ..core._numbers import integer
 from ..core.units import RPM
 from .csvfile import RANGES, DataError, _Csv
 from .loads_air import _air_density, _conditions_density
@@ -101,6 +102,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         values other than 0 where no airspeed is read (an advance ratio), a steps log whose ESC
         signal stays within one tolerance while the speed varies; the message names the file,
         the line and the column.
+    ValueError
+        ``min_points`` not an integer >= 1 (before the file is read).
 
     Warns
     -----
@@ -111,6 +114,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     """
     from .stand import split_header
 
+    min_points = integer("min_points", min_points, 1)
     what = "load data"
     f = _Csv(path, what, windows_1252=True)
     p = f.name

@@ -9,6 +9,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
+from ..core._numbers import SEED_MAX, integer
 from ..core.airfoil import LIFT_MODELS, CamberedParams, SectionParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
@@ -319,10 +320,8 @@ class FitOptions:
         if d is not None and (isinstance(d, bool) or not isinstance(d, (int, np.integer)) or d < 0):
             raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")
         # (max_nfev=2.5 ran SciPy's least_squares without end; multistart=-1 counted as 0, 1.5 failed inside)
-        for name, lo, hi in (("max_nfev", 1, 10**7), ("multistart", 0, 256), ("seed", 0, 2**63 - 1)):
-            v = getattr(self, name)
-            if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) or not lo <= v <= hi:
-                raise ValueError(f"{name} must be an integer in [{lo}, {hi:,}], got {v!r:.40}")
+        for name, lo, hi in (("max_nfev", 1, 10**7), ("multistart", 0, 256), ("seed", 0, SEED_MAX)):
+            integer(name, getattr(self, name), lo, hi, whole_float=False)
         if self.bounds is not None:
             _check_bounds(self.bounds)
         need = ("names", "covariance", "sigma_data")  # (an empty dict was the shipped prior without a word)

@@ -37,6 +37,7 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from ..core._numbers import integer
 from ..core.units import RPM
 
 __all__ = ["ColumnMap", "map_columns", "map_operating_columns", "split_header", "UNITS", "ROTATION_COLUMNS",
@@ -349,9 +350,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
     # (True, an int to Python, divided the speed by 1: refused since 2026-11-29, an audit)
-    if pole_pairs is not None and (isinstance(pole_pairs, bool) or not (isinstance(pole_pairs, int)
-                                                                        and 1 <= pole_pairs <= 50)):
-        raise error(f"pole_pairs (--pole-pairs) must be an integer in [1, 50], got {pole_pairs!r}")
+    if pole_pairs is not None:
+        integer("pole_pairs (--pole-pairs)", pole_pairs, 1, 50, whole_float=False, error=error)
     found = ", ".join(repr(n) for n in names if n.strip())
     if not any(q in cm.columns for q in ROTATION_COLUMNS):
         _refuse_no_speed(names, cm, found, error)

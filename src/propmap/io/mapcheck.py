@@ -38,10 +38,10 @@ import re
 import numpy as np
 
 from ..core.units import RPM
-from ..core.geometry import _real, short_repr
+from ..core.geometry import short_repr
 
 __all__ = ["DIMS", "LOADS", "SIDE_LOADS", "map_loads", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX",
-           "check_propeller", "check_attributes", "check_dataset", "check_integer", "map_model"]
+           "check_propeller", "check_attributes", "check_dataset", "map_model"]
 
 
 DIMS = ("rpm", "airspeed", "incidence_deg")
@@ -388,30 +388,3 @@ def map_model(attrs: dict):
     air = Air(rho=float(attrs["rho_kg_m3"]), mu=float(attrs["mu_Pa_s"]),
               speed_of_sound=float(attrs["speed_of_sound_m_s"]))
     return prop, params, air, Discretization(int(attrs["n_radial"]), int(attrs["n_azimuth"]))
-
-
-def check_integer(name: str, value, lo: int, hi: int) -> int:
-    """``value`` as an int in [lo, hi] (an integral float such as 2000.0 too, never a bool).
-
-    Parameters
-    ----------
-    name : str
-        The argument's name, for the message.
-    value : int or float
-        The value given.
-    lo, hi : int
-        The valid range, inclusive.
-
-    Returns
-    -------
-    int
-
-    Raises
-    ------
-    ValueError
-        Naming ``name`` and the range.
-    """
-    x = _real(value)
-    if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
-        raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
-    return int(value)

@@ -20,6 +20,7 @@ import numpy as np
 
 from ..core.units import RPM
 from .. import __version__
+from ..core._numbers import SEED_MAX, integer
 from ..core.airfoil import Air
 from ..core.geometry import _real
 from ..core.solver import check_model_args, rotor_loads
@@ -326,14 +327,19 @@ def check_seed(seed: int) -> int:
     Parameters
     ----------
     seed : int
-        The fit points' seed, >= 0.
+        The fit points' seed, in [0, 2**63 - 2] (the check points' seed is a NumPy int64 too).
 
     Returns
     -------
     int
         The check points' seed.
+
+    Raises
+    ------
+    ValueError
+        ``seed`` not an integer in that range (-1 gave 0, another seed's points).
     """
-    return seed + 1
+    return integer("seed", seed, 0, SEED_MAX - 1) + 1
 
 
 def _rel(a: float, b: float) -> float:
@@ -441,10 +447,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         warnings.warn(f"this parameter set gives a side force and a pitching moment ({side}); the "
                       f"{target} model has no term fitted to them (RotorPy's k_flap is written 0), so they are left "
                       "out and their error is not reported", UserWarning, stacklevel=2)
-    for name, value, lo, hi in (("n_points", n_points, 20, 1_000_000), ("seed", seed, 0, 2**63 - 1)):
-        x = _real(value)
-        if x is None or not (math.isfinite(x) and x.is_integer() and lo <= x <= hi):
-            raise ValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r:.60}")
+    n_points = integer("n_points", n_points, 20, 1_000_000)
+    seed = integer("seed", seed, 0, SEED_MAX - 1)
     if envelope is None:
         envelope = default_envelope(propeller)
     elif not isinstance(envelope, Envelope):

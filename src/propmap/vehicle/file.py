@@ -54,6 +54,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core._numbers import integer
 from ..core.geometry import INCH, Propeller, short_repr
 from ..core.body import BodyDrag
 from ..io.inputs import as_path, short_path, show_path
@@ -160,10 +161,7 @@ def _body(table, name: str) -> BodyDrag:
 
 
 def _blades(value, where: str) -> int:
-    lo, hi = BLADES_RANGE
-    if not (isinstance(value, int) and not isinstance(value, bool) and lo <= value <= hi):
-        raise VehicleFileError(f"{where}: blades must be an integer in [{lo}, {hi}], got {short_repr(value)}")
-    return value
+    return integer(f"{where}: blades", value, *BLADES_RANGE, whole_float=False, error=VehicleFileError)
 
 
 def _local_file(spec: str, folder: Path) -> Path | None:
