@@ -33,10 +33,11 @@ def quad():
 
 
 def test_vehicle_map_refuses_what_is_not_a_vehicle_and_more_maps_than_rotors(quad):
-    """A non-Vehicle is refused by name (not an AttributeError from inside; V01); five maps for four
-    rotors are refused, not the fifth silently dropped by zip (V02)."""
+    """A non-Vehicle is refused by name with the TypeError of every entry point that takes a vehicle
+    (not an AttributeError from inside; V01); five maps for four rotors are refused, not the fifth
+    silently dropped by zip (V02)."""
     veh, rm = quad
-    with pytest.raises(ValueError, match="vehicle must be a Vehicle, got dict"):
+    with pytest.raises(TypeError, match=r"vehicle must be a propmap Vehicle \(propmap.read_vehicle\), got dict"):
         VehicleMap({"rotors": veh.rotors}, rm)
     with pytest.raises(ValueError, match=r"maps must be one RotorMap or one per rotor \(4\), got 5"):
         VehicleMap(veh, [rm] * 5)

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .core.units import RPM
+from .io.inputs import as_path
 from ._c_templates import CUBIC_BODY, CUBIC_DECL, CUBIC_WEIGHTS, LINEAR_BODY, LINEAR_DECL, TEMPLATE, VEHICLE
 
 __all__ = ["c_header_text", "c_prefix", "write_c_header"]
@@ -144,7 +145,7 @@ def c_prefix(path, name: str | None = None) -> str:
         raise ValueError(f"the C name prefix must be a string, got {name!r:.60}")
     if name == "":
         raise ValueError("the C name prefix is empty")
-    prefix = name or "pm_" + re.sub(r"\W", "_", Path(path).stem).lower()
+    prefix = name or "pm_" + re.sub(r"\W", "_", as_path(path).stem).lower()
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", prefix):
         raise ValueError(f"the C name prefix must be a C identifier (ASCII letters, digits, underscores), "
                          f"got {prefix!r:.80}")
@@ -184,7 +185,7 @@ def write_c_header(rotor_map, path, *, dtype: str = "float", name: str | None = 
     text = c_header_text(rotor_map, path, dtype=dtype, name=name, vehicle=vehicle)
     with atomic_write(path) as fh:
         fh.write(text)
-    return Path(path)
+    return as_path(path)
 
 
 def _comment(text) -> str:
@@ -307,7 +308,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
                       UserWarning, stacklevel=2)
     if dtype not in ("float", "double"):
         raise ValueError(f"dtype must be 'float' or 'double', got {dtype!r}")
-    path = Path(path)
+    path = as_path(path)
     prefix = c_prefix(path, name)
     rm = rotor_map
     a = rm.attrs

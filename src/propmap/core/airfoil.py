@@ -527,7 +527,11 @@ def preset(name: str) -> AirfoilParams:
     ------
     KeyError
         If ``name`` is not a preset; the message lists the valid names.
+    TypeError
+        ``name`` not a str (a list met "unhashable type").
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a preset's name (str; valid: {', '.join(PRESETS)}), got {type(name).__name__}")
     try:
         return PRESETS[name].replace(label=name)
     except KeyError:

@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from .flightlog_checks import GAP_STEPS, MIN_SAMPLES, FlightLogError, check_log
-from .inputs import MAX_FILE_BYTES, decode_input_text, header_separator, read_input_bytes, show_path
+from .inputs import MAX_FILE_BYTES, as_path, decode_input_text, header_separator, read_input_bytes, show_path
 from .ulog import read_ulog
 
 __all__ = ["FlightLog", "FlightLogError", "read_flight_log", "NEUROBEM_COLUMNS", "FORMATS"]
@@ -155,6 +155,8 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
 
     Raises
     ------
+    TypeError
+        ``path`` not a str or os.PathLike.
     FlightLogError
         Not a readable regular file (size limit 200 MiB), an unknown format, a malformed
         file, a missing topic or column (named, with those found), fewer than 2 samples,
@@ -167,7 +169,7 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         acceleration (accelerations in g, gravity removed, a z-down frame), rates that are
         57 times or the negative of the attitude's change (deg/s, another frame).
     """
-    p = Path(path)
+    p = as_path(path)
     name = show_path(p)
     fmt = format
     if p.is_dir():

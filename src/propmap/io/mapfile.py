@@ -39,7 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import short_repr
-from .inputs import short_path
+from .inputs import as_path, short_path
 from .mapcheck import (DERIVED, DIMS, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, check_dataset, check_propeller,
                        map_model)
 
@@ -320,7 +320,7 @@ def sidecar_path(path) -> Path:
     Path
         The same folder, the file name with ``.json`` appended (``m.nc.json``).
     """
-    path = Path(path)
+    path = as_path(path)
     return path.with_name(path.name + ".json")
 
 
@@ -400,7 +400,7 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
     """
     from .atomic import atomic_paths, file_sha256
 
-    path = Path(path)
+    path = as_path(path)
     if path.is_symlink() and path.exists():  # (written through, io.atomic: its sidecar beside the file it points to,
         path = Path(os.path.realpath(path))  # not beside the link, where opening the file found none: a review)
     side = sidecar_path(path)
@@ -514,7 +514,7 @@ def write_sidecar(ds, path) -> Path:
     """
     from .atomic import atomic_write
 
-    path = Path(path)
+    path = as_path(path)
     with atomic_write(path) as fh:
         fh.write(_sidecar_text(ds, None))
     return path

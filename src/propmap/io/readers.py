@@ -20,14 +20,13 @@ import os
 import re
 import stat
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
 from ..core.units import RPM_MAX  # the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
 from .geometry_files import MM_FAMILIES, GeometryFileError, read_apc_pe0, read_geometry, read_uiuc_geometry
 from .inputs import (MAX_FILE_BYTES, MAX_SMALL_FILE_BYTES, _check_column, _clip, _read_table, _read_text,
-                     decode_input_text, parse_number, read_input_bytes, show_path)
+                     as_path, decode_input_text, parse_number, read_input_bytes, show_path)
 
 
 __all__ = [
@@ -118,8 +117,10 @@ def read_uiuc_static(path) -> StaticRun:
         Not a readable regular file (or over 16 MiB), missing columns, non-numeric or
         non-finite values, RPM outside (0, 954929], CT or CP outside [-10, 10]; the
         message names the file and the line.
+    TypeError
+        ``path`` not a str or os.PathLike.
     """
-    path = Path(path)
+    path = as_path(path)
     t = _read_table(path, _read_text(path, MeasurementFileError), ["RPM", "CT", "CP"], MeasurementFileError)
     _check_column(t, 0, "RPM", 0.0, RPM_MAX, path, MeasurementFileError, lo_open=True)
     _check_column(t, 1, "CT", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
@@ -150,6 +151,8 @@ def read_uiuc_sweep(path) -> Sweep:
         Not a readable regular file (or over 16 MiB), bad columns, non-numeric or
         non-finite values, J outside [0, 20], CT or CP outside [-10, 10], or no rpm in
         (0, 954929] in the file or at the end of its name.
+    TypeError
+        ``path`` not a str or os.PathLike.
 
     Warns
     -----
@@ -157,7 +160,7 @@ def read_uiuc_sweep(path) -> Sweep:
         The eta column departs from J CT / CP by more than 10% in the median (ETA_MISMATCH):
         CT and CP swapped, or the columns out of order.
     """
-    path = Path(path)
+    path = as_path(path)
     where = show_path(path)
     text = _read_text(path, MeasurementFileError)
     t = _read_table(path, text, ["J", "CT", "CP", "eta"], MeasurementFileError)

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..core.units import RPM
 from .. import __version__
+from ..io.inputs import as_path
 from ..vehicle.layout import check_vehicle
 from .fit import LOADS, SimExport
 from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS
@@ -31,7 +32,7 @@ def report_path(path) -> Path:
     -------
     Path
     """
-    path = Path(path)
+    path = as_path(path)
     return path.with_name(path.stem + ".report.json")
 
 
@@ -293,7 +294,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     """
     if vehicle is not None:
         check_vehicle(vehicle)
-    path = Path(path)
+    path = as_path(path)
     if path.name.lower().endswith(".report.json"):
         raise ValueError(f"path: {path.name}: a name ending in .report.json is an export's report (written beside its "
                          "coefficient file); name the coefficient file otherwise")

@@ -32,7 +32,7 @@ from ..core._numbers import checked
 from ..core.body import body_drag_force
 from ..core.vector import VELOCITY_MAX, cross3
 from ._kinematics import _samples, hub_velocities
-from .layout import Vehicle, rotor_geometry
+from .layout import Vehicle, check_vehicle, rotor_geometry
 
 __all__ = ["VehicleMap", "VehicleMapWrench"]
 
@@ -78,8 +78,10 @@ class VehicleMap:
 
     Raises
     ------
+    TypeError
+        ``vehicle`` not a :class:`propmap.Vehicle`.
     ValueError
-        ``vehicle`` not a Vehicle, ``maps`` neither a RotorMap nor a sequence of them, a
+        ``maps`` neither a RotorMap nor a sequence of them, a
         number of maps other than 1 or the number of rotors, a map of another diameter (by
         more than 1%) or blade count than its rotor's propeller, or ``rho`` not a positive
         finite number.
@@ -91,8 +93,7 @@ class VehicleMap:
     """
 
     def __init__(self, vehicle: Vehicle, maps, *, rho: float | None = None) -> None:
-        if not isinstance(vehicle, Vehicle):
-            raise ValueError(f"vehicle must be a Vehicle, got {type(vehicle).__name__}")
+        check_vehicle(vehicle)  # (a TypeError, as at every entry point that takes a vehicle; it was a ValueError)
         n = len(vehicle.rotors)
         try:
             maps = [maps] * n if hasattr(maps, "wrench") else list(maps)
