@@ -412,7 +412,8 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
         Random operating points in the envelope (seeded), >= 20: as many to fit and, others,
         to measure the errors on.
     seed : int
-        The fitted points' seed; the check points' is :func:`check_seed` (``seed`` + 1).
+        The fitted points' seed, in [0, 2**63 - 2]; the check points' is :func:`check_seed`
+        (``seed`` + 1).
     params_label : str
         Recorded in the result.
 
@@ -424,7 +425,7 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
     ------
     ValueError
         Unknown target; ``n_points`` not an integer in [20, 1,000,000]; ``seed`` not an
-        integer >= 0; ``envelope`` not an Envelope; fewer than 10 converged points; an
+        integer in [0, 2**63 - 2]; ``envelope`` not an Envelope; fewer than 10 converged points; an
         envelope where gazebo-classic's thrust fade is 0 at every point (|V_z| >= 25 m/s),
         or terms it cannot separate (:data:`MAX_CONDITION`).
     TypeError
