@@ -27,6 +27,8 @@ from propmap.io.atomic import file_sha256
 from propmap.io.blade_stations import GeometryFileError
 from propmap.io.pe0 import read_apc_pe0
 
+from .test_audit_readers import _pe0, _quiet
+
 
 def test_the_value_in_the_message_is_clipped_to_60_characters():
     with pytest.raises(ValueError) as e:
@@ -48,57 +50,29 @@ def test_the_sha256_covers_every_byte_of_a_file_over_one_block(tmp_path):
     assert file_sha256(path) == hashlib.sha256(data).hexdigest()
 
 
-def _pe0(tmp_path, stations=None, radius="5.00", twist0=35.0, pitch_tip=None):
-    """A PE0 file of RADIUS ``radius`` in: STATION ``stations`` [in] (default 0.2 ... 1.0 R in
-    steps of 0.1 R), CHORD 0.15 R, QUOTED pitch 5.0, 5.1, ... in (the last ``pitch_tip`` if
-    given), TWIST ``twist0`` - 3 k deg."""
-    R = float(radius)
-    stations = [R * (0.2 + 0.1 * k) for k in range(9)] if stations is None else stations
-    pitch = [5.0 + 0.1 * k for k in range(len(stations))]
-    if pitch_tip is not None:
-        pitch[-1] = pitch_tip
-    rows = [[s, 0.15 * R, pitch[k], 5.2, 5.1, 0.3, 0.15, twist0 - 3.0 * k, 0.1, 0.05, 0.2, 0.1, 0.05]
-            for k, s in enumerate(stations)]
-    text = ("demo\n\n      STATION     CHORD       PITCH       PITCH        PITCH       SWEEP    THICKNESS      TWIST"
-            "      MAX-THICK  CROSS-SECTION ZHIGH       CGY          CGZ\n"
-            "       (IN)       (IN)       (QUOTED)    (LE-TE)     (PRATHER)      (IN)     RATIO         (DEG)       "
-            "(IN)      (IN**2)      (IN)         (IN)         (IN)\n\n"
-            + "".join("  ".join(f"{v:10.4f}" for v in row) + "\n" for row in rows)
-            + f"\n\n RADIUS:  {radius}    PROPELLER RADIUS (IN)\n\n BLADES:  2       NUMBER OF BLADES\n")
-    path = tmp_path / "t10x5-PERF.PE0"
-    path.write_text(text)
-    return path
-
-
-def _read_quietly(path):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return read_apc_pe0(path)
-
-
 def test_a_pe0_twist_of_exactly_90_deg_is_accepted(tmp_path):
     """TWIST in [-90, 90] deg, a closed range: 90 itself is read."""
-    prop = _read_quietly(_pe0(tmp_path, twist0=90.0))
+    prop = _quiet(read_apc_pe0, _pe0(tmp_path, twist0=90.0))
     assert np.degrees(prop.theta[0]) == pytest.approx(90.0, rel=1e-12)
 
 
 def test_a_repeated_pe0_station_is_refused_naming_its_line(tmp_path):
     """Stations must increase: a station equal to the one before (line 7) is refused naming its line,
     not later by Propeller in metres without a line."""
-    path = _pe0(tmp_path, [1.0, 1.0, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0])
+    path = _pe0(tmp_path, stations=[1.0, 1.0, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0])
     with pytest.raises(GeometryFileError, match=r"line 7: STATION = 1 in does not increase \(previous 1 in\)"):
         read_apc_pe0(path)
 
 
 def test_the_pe0_pitch_is_the_quoted_columns_median_not_its_mean(tmp_path):
     """One outlying QUOTED pitch (the tip's 5.8 in made 9.8 in) leaves the median, 5.4 in, as the pitch."""
-    prop = _read_quietly(_pe0(tmp_path, pitch_tip=9.8))
+    prop = _quiet(read_apc_pe0, _pe0(tmp_path, pitch_tip=9.8))
     assert prop.pitch == pytest.approx(5.4 * 0.0254, rel=1e-12)
 
 
 def test_a_pe0_blade_ending_at_068_r_is_refused(tmp_path):
     """Stations that stop inside r/R = 0.7 are refused (RADIUS 5 in, the last station 3.4 in)."""
-    path = _pe0(tmp_path, [5 * (0.2 + 0.06 * k) for k in range(9)])
+    path = _pe0(tmp_path, stations=[5 * (0.2 + 0.06 * k) for k in range(9)])
     with pytest.raises(GeometryFileError, match=r"the stations stop at r/R = 0\.68: .*at least r/R = 0\.7 is needed"):
         read_apc_pe0(path)
 
@@ -106,26 +80,26 @@ def test_a_pe0_blade_ending_at_068_r_is_refused(tmp_path):
 def test_a_two_station_blade_ending_at_04_r_is_refused(tmp_path):
     """Two stations (the fewest a blade takes) that stop at r/R = 0.4 are refused like more would be."""
     with pytest.raises(GeometryFileError, match=r"the stations stop at r/R = 0\.4: the outer blade"):
-        read_apc_pe0(_pe0(tmp_path, [1.0, 2.0]))
+        read_apc_pe0(_pe0(tmp_path, stations=[1.0, 2.0]))
 
 
 def test_a_blade_ending_at_088_r_is_warned_of(tmp_path):
     """Stations that stop inside r/R = 0.9 (here 0.88) are read with a warning of the extrapolated tip."""
     with pytest.warns(UserWarning, match=r"the stations stop at r/R = 0\.88: the blade from there to the tip"):
-        read_apc_pe0(_pe0(tmp_path, [1.0, 2.0, 3.0, 4.0, 4.4]))
+        read_apc_pe0(_pe0(tmp_path, stations=[1.0, 2.0, 3.0, 4.0, 4.4]))
 
 
 def test_a_blade_ending_at_exactly_09_r_is_not_warned_of(tmp_path):
     """Only stations stopping inside r/R = 0.9 are warned of: a last station at 0.9 R (4.5 of 5 in) is not."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        read_apc_pe0(_pe0(tmp_path, [1.0, 2.0, 3.0, 4.0, 4.5]))
+        read_apc_pe0(_pe0(tmp_path, stations=[1.0, 2.0, 3.0, 4.0, 4.5]))
     assert not [w for w in caught if "stations stop" in str(w.message)]
 
 
 def test_the_first_station_warning_points_at_the_callers_line(tmp_path):
     """The warning of a blade starting outside r/R = 0.4 is attributed to the code that called read_apc_pe0."""
-    path = _pe0(tmp_path, [2.5, 3.0, 4.0, 5.0])
+    path = _pe0(tmp_path, stations=[2.5, 3.0, 4.0, 5.0])
     with pytest.warns(UserWarning, match=r"the stations start at r/R = 0\.5") as record:
         read_apc_pe0(path)
     assert [w.filename for w in record if "stations start" in str(w.message)] == [__file__]

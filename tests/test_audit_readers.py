@@ -407,14 +407,20 @@ def test_a_uiuc_header_in_capitals_is_recognised(tmp_path):
     assert prop.n_blades == 3 and prop.diameter == pytest.approx(0.254, rel=1e-12)
 
 
-def _pe0(tmp_path, radius="5.00", last=None):
-    """A PE0 file (t10x5-PERF.PE0) of 9 station rows of 13 columns (STATION, CHORD, PITCH (QUOTED), ...,
-    TWIST the 8th) from 0.2 to 1 R, 2 blades; ``last`` the last station instead."""
+def _pe0(tmp_path, radius="5.00", last=None, *, stations=None, twist0=35.0, pitch_tip=None):
+    """A PE0 file (t10x5-PERF.PE0) of 13 columns (STATION, CHORD, PITCH (QUOTED), ..., TWIST the 8th),
+    2 blades: STATION ``stations`` [in] (default 9 rows from 0.2 to 1 R; ``last`` the last station
+    instead), CHORD 0.15 R, QUOTED pitch 5.0, 5.1, ... in (``pitch_tip`` the last), TWIST ``twist0``
+    - 3 k deg."""
     R = float(radius)
-    rows = [[R * (0.2 + 0.1 * k), 0.15 * R, 5.0 + 0.1 * k, 5.2, 5.1, 0.3, 0.15, 35.0 - 3.0 * k, 0.1, 0.05, 0.2,
-             0.1, 0.05] for k in range(9)]
+    stations = [R * (0.2 + 0.1 * k) for k in range(9)] if stations is None else list(stations)
     if last is not None:
-        rows[-1][0] = last
+        stations[-1] = last
+    pitch = [5.0 + 0.1 * k for k in range(len(stations))]
+    if pitch_tip is not None:
+        pitch[-1] = pitch_tip
+    rows = [[s, 0.15 * R, pitch[k], 5.2, 5.1, 0.3, 0.15, twist0 - 3.0 * k, 0.1, 0.05, 0.2, 0.1, 0.05]
+            for k, s in enumerate(stations)]
     text = ("demo\n\n      STATION     CHORD       PITCH       PITCH        PITCH       SWEEP    THICKNESS      TWIST"
             "      MAX-THICK  CROSS-SECTION ZHIGH       CGY          CGZ\n"
             "       (IN)       (IN)       (QUOTED)    (LE-TE)     (PRATHER)      (IN)     RATIO         (DEG)       "
