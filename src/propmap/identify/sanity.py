@@ -124,7 +124,7 @@ def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, wh
         if b >= 1:
             rat = ratios(data.omega, r=loads_at(data.omega, prop=replace(propeller, n_blades=b)), where=where)
             if miss(rat) < math.log(1.15):
-                found.append(f"{b} blades would give {shown(rat)}")
+                found.append(f"{b} blade{'s' if b > 1 else ''} would give {shown(rat)}")
     if pole_pairs:
         alt = {pp: ratios(data.omega * pole_pairs / pp, where=where) for pp in range(1, 15) if pp != pole_pairs}
         pp = min(alt, key=lambda k: miss(alt[k]))
