@@ -60,3 +60,16 @@ def test_read_loads_and_read_level_flight_refuse_a_bad_minimum_before_reading(tm
     veh = pm.read_vehicle(EXAMPLES / "quadrotor.toml")
     with pytest.raises(ValueError, match=r"^min_conditions must be an integer >= 1, got "):
         read_level_flight(missing, veh, min_conditions=bad)
+
+
+def test_fit_options_store_the_checked_int_and_huge_ints_are_exact():
+    """A 0-d array passed FitOptions' check and was stored as it was: the fit then failed in NumPy's
+    seeding ("array(3) cannot be used to seed") and hash(options) raised (the session's review)."""
+    o = FitOptions(seed=np.array(3), multistart=np.array(1), max_nfev=np.int64(50))
+    assert (o.seed, o.multistart, o.max_nfev) == (3, 1, 50)
+    assert all(type(v) is int for v in (o.seed, o.multistart, o.max_nfev)) and isinstance(hash(o), int)
+    assert integer("min_points", 10**400, 1) == 10**400  # (beyond a float: checked as an int)
+    for bad in (np.array(True), np.array(3.0)):
+        with pytest.raises(ValueError, match="seed must be an integer"):
+            FitOptions(seed=bad)
+

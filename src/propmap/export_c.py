@@ -287,7 +287,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         propeller or its own parameter set.
     TypeError
         ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
-        ``RotorMap(ds)``).
+        ``RotorMap(ds)``); ``path`` not a str or os.PathLike.
 
     Warns
     -----

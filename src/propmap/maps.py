@@ -205,7 +205,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         Random off-grid points at which the full model checks the interpolation
         (:func:`check_map`); 0 skips the check.
     seed : int
-        Seed of the check points.
+        Seed of the check points, in [0, 2**63 - 1].
 
     Returns
     -------

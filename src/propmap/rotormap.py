@@ -438,7 +438,7 @@ class RotorMap:
         n_check : int
             Number of random off-grid points, in [1, 1,000,000].
         seed : int
-            Seed of the points (NumPy's ``default_rng``), >= 0.
+            Seed of the points (NumPy's ``default_rng``), in [0, 2**63 - 1].
 
         Returns
         -------
@@ -473,7 +473,7 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     n_check : int
         Number of points, in [1, 1,000,000].
     seed : int
-        >= 0.
+        In [0, 2**63 - 1].
     propeller, params, air, discretization
         The model; default: the one recorded in the map.
 

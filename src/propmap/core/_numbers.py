@@ -78,13 +78,15 @@ def integer(name: str, value, low: int, high: int | None = None, *, whole_float:
     ``integer("seed", -1, 0, 2**63 - 1)`` raises "seed must be an integer in [0,
     9223372036854775807], got -1".
     """
-    x = real(value)
     n = None
-    if x is not None and math.isfinite(x) and x.is_integer():
-        if isinstance(value, (numbers.Integral, np.integer)) or (isinstance(value, np.ndarray)
-                                                                 and value.dtype.kind in "iu"):
-            n = int(value)  # (exact: float(2**63 - 1) rounds up past the bound)
-        elif whole_float:
+    if isinstance(value, (bool, np.bool_)):
+        pass
+    elif isinstance(value, (numbers.Integral, np.integer)) or (isinstance(value, np.ndarray) and value.ndim == 0
+                                                               and value.dtype.kind in "iu"):
+        n = int(value)  # (exact: float(2**63 - 1) rounds up past the bound, 10**400 overflows a float)
+    elif whole_float:
+        x = real(value)
+        if x is not None and math.isfinite(x) and x.is_integer():
             n = int(x)
     if n is None or n < low or (high is not None and n > high):
         where = f"in [{low}, {high}]" if high is not None else f">= {low}"

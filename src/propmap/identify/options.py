@@ -263,8 +263,9 @@ class FitOptions:
         ``body_area``). The model without body lift is fitted first and the full fit
         starts from its optimum with zero body lift, so the residual can only shrink.
     max_nfev : int
-        Residual evaluations allowed per start.
+        Residual evaluations allowed per start, in [1, 10000000].
     seed : int
+        Seed of the multistart's starts, in [0, 2**63 - 1].
     progress : bool
         Show a tqdm progress bar (on a terminal).
     discretization : Discretization
@@ -321,7 +322,8 @@ class FitOptions:
             raise ValueError(f"directions must be None or an integer >= 0, got {d!r:.40}")
         # (max_nfev=2.5 ran SciPy's least_squares without end; multistart=-1 counted as 0, 1.5 failed inside)
         for name, lo, hi in (("max_nfev", 1, 10**7), ("multistart", 0, 256), ("seed", 0, SEED_MAX)):
-            integer(name, getattr(self, name), lo, hi, whole_float=False)
+            # (stored as the int: a 0-d array passed the check and then failed in NumPy's seeding or in hash())
+            object.__setattr__(self, name, integer(name, getattr(self, name), lo, hi, whole_float=False))
         if self.bounds is not None:
             _check_bounds(self.bounds)
         need = ("names", "covariance", "sigma_data")  # (an empty dict was the shipped prior without a word)

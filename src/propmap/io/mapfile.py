@@ -509,6 +509,8 @@ def write_sidecar(ds, path) -> Path:
 
     Raises
     ------
+    TypeError
+        ``path`` not a str or os.PathLike.
     OSError
         The file cannot be written.
     """

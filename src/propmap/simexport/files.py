@@ -288,7 +288,7 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
         ``vehicle`` with another target, or one RotorPy cannot represent; a ``path`` named
         ``*.report.json`` (an export's report: it would replace another export's).
     TypeError
-        ``vehicle`` given and not a :class:`propmap.Vehicle`.
+        ``vehicle`` given and not a :class:`propmap.Vehicle`; ``path`` not a str or os.PathLike.
     OSError
         The files cannot be written.
     """
