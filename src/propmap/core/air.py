@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from ._numbers import checked
 
-__all__ = ["Air"]
+__all__ = ["Air", "check_air"]
 
 
 @dataclass(frozen=True)
@@ -122,3 +122,20 @@ ALTITUDE_RANGE_M = (-500.0, 20000.0)
 #: the start of rotor_loads' warning of a supersonic blade tip (core/_inputs.warn_tip_mach; the CLI, which warns
 #: from tip Mach 0.7 in its own terms, filters it by this text)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
+
+
+def check_air(air) -> None:
+    """Refuse an ``air`` that is not an :class:`Air` (the one check of every entry point that
+    takes one: the solver, the hover model, the load readers, the parameter files).
+
+    Parameters
+    ----------
+    air : object
+
+    Raises
+    ------
+    TypeError
+        ``air`` not an :class:`Air` (the message names its type).
+    """
+    if not isinstance(air, Air):
+        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")

@@ -12,9 +12,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._numbers import checked, real
+from .air import check_air
 from .airfoil import Air, AirfoilParams
 from .geometry import Propeller, has_bool
-from .solver import DEFAULT_DISCRETIZATION, Discretization, check_air, check_model_args, rotor_loads
+from .solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
 
 __all__ = ["HoverModel"]
 
@@ -205,8 +206,8 @@ class HoverModel:
         if x is None or not 0 < x < math.inf:
             raise ValueError(f"diameter must be a positive finite number [m], got {d!r}")
         d = x
-        if air is not None and not isinstance(air, Air):  # (air=1.2 met "'float' object has no attribute 'rho'")
-            raise TypeError(f"air must be a propmap.Air (Air(rho=...)), got {type(air).__name__}")
+        if air is not None:  # (air=1.2 met "'float' object has no attribute 'rho'")
+            check_air(air)
         rho = (self.rho if self.rho is not None else Air().rho) if air is None else air.rho
         return float(d), float(rho)
 

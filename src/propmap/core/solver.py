@@ -21,6 +21,7 @@ from . import _momentum as mo
 # (the inputs' ranges and the Mach warning's context are re-exported here, where the rest of the package takes them)
 from ._inputs import (AIRSPEED_MAX, COLLECTIVE_RANGE, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN,  # noqa: F401
                       operating_points, supersonic_tips_allowed, warn_tip_mach)
+from .air import check_air
 from .airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from .derivatives import DERIVATIVE_LOADS, FLAPPING_LOADS, STILL_AIR, _derivative_inputs, _jacobian, differentiable
 from .flapping import (COMPLIANCE, flap_damping, flapping, flapping_derivatives, rigid_compliance_derivatives,
@@ -189,22 +190,6 @@ def model_air(params, air=None, *, name: str = "params") -> Air:
     air = params.air if air is None else air
     check_air(air)
     return air
-
-
-def check_air(air) -> None:
-    """Refuse an ``air`` that is not an :class:`Air`.
-
-    Parameters
-    ----------
-    air : object
-
-    Raises
-    ------
-    TypeError
-        ``air`` not an :class:`Air` (the message names its type).
-    """
-    if not isinstance(air, Air):
-        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
 
 
 def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:

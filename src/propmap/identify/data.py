@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core._numbers import checked
+from ..core.air import check_air
 from ..core.airfoil import Air
 from ..io.catalogue import CatalogueEntry, get_entry
 from ..io.inputs import show_path
@@ -72,8 +73,7 @@ def loads_from_catalogue(entry: CatalogueEntry, diameter: float, *, air: Air = A
     if not isinstance(entry, CatalogueEntry):
         raise TypeError(f"entry must be a CatalogueEntry (propmap.io.catalogue.get_entry) or a catalogue propeller's "
                         f"name, got {type(entry).__name__}")
-    if not isinstance(air, Air):
-        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    check_air(air)
     diameter = checked("diameter", diameter, 0.0, 10.0, low_open=True, unit="m", error=DataError)
     return _loads_from_runs(entry.static_runs(), entry.sweeps(), diameter, air, entry.name,
                             f"{entry.name}: {entry.citation}")
@@ -118,8 +118,7 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
         raise TypeError(f"paths must be a sequence of file paths, got {type(paths).__name__} {str(paths)!r:.80} "
                         "(give a list: [path])")
     paths = list(paths)
-    if not isinstance(air, Air):  # (air=1.2 met "'float' object has no attribute 'rho'"; as loads_from_catalogue)
-        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    check_air(air)  # (air=1.2 met "'float' object has no attribute 'rho'"; as loads_from_catalogue)
     diameter = checked("diameter", diameter, 0.0, 10.0, low_open=True, unit="m", error=DataError)
     statics, sweeps, static_files, sweep_files = [], [], [], []
     for p in paths:

@@ -403,12 +403,12 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     if kind == "pe0":
         prop = _apc_pe0(path, text, name=None, source="")
         # (to the file's own precision: RADIUS is printed to 0.01 in)
-        if diameter_in is not None:  # (the text "10" met a bare "must be real number, not str")
-            _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))
-        if diameter_in is not None and not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):
-            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives its "
-                                    f"own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in applies to "
-                                    "UIUC files")
+        if diameter_in is not None:
+            _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
+            if not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):  # bare "must be real number")
+                raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives "
+                                        f"its own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in "
+                                        "applies to UIUC files")
         if n_blades is not None and n_blades != prop.n_blades:
             raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the PE0 file states BLADES: "
                                     f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "

@@ -98,6 +98,7 @@ from pathlib import Path
 
 import tomli_w
 
+from ..core.air import check_air
 from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_META, Air, AirfoilParams,
                              CamberedParams, SectionParams)
 from .atomic import atomic_write
@@ -401,8 +402,7 @@ def params_to_dict(params: SectionParams, air: Air | None = None) -> dict:
     if not isinstance(params, (AirfoilParams, CamberedParams)):
         raise TypeError(f"params must be AirfoilParams or CamberedParams, got {type(params).__name__}")
     air = params.air if air is None else air
-    if not isinstance(air, Air):
-        raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+    check_air(air)
     data = {"section_model": params.section_model}
     keys = _file_keys(params.section_model)
     for key, name in keys.items():
