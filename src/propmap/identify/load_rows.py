@@ -3,10 +3,10 @@
 zero offset noted, an optical speed probe's gaps filled from the electrical speed, and the
 sign rules that turn the thrust and the torque columns into the propeller's.
 
-Each function takes the columns read so far (``v``, name -> float array, SI units, rpm for
-the rotation speed) and appends what it did to ``notes`` (one line each, shown by ``propmap
-fit loads``); a file no rule can read raises :class:`DataError` naming the file and the
-column.
+The row and sign rules take the columns read so far (``v``, name -> float array, SI units,
+rpm for the rotation speed) and append what they did to ``notes`` (one line each, the load
+data's notes, which ``propmap fit loads`` prints); a file they cannot read raises
+:class:`DataError` naming the file and the column.
 """
 
 from __future__ import annotations
