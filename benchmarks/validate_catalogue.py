@@ -1,6 +1,7 @@
 """Validation over the catalogue: the numbers of docs/validation.md, with their run time.
 
-Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 1 minute on 2 cores: 57 s, 2026-11-23)
+Run:  .venv/bin/python benchmarks/validate_catalogue.py   (about 2 minutes on 2 cores: 128 s of
+      `propmap validate --all` on the 2-core AMD EPYC, 2026-11-30)
 
 Same as ``propmap validate --all --out-dir benchmarks/results/validation``: held-out errors
 of every calibration protocol for the 143 catalogue propellers with sweeps (UIUC Propeller

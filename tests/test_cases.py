@@ -113,7 +113,7 @@ def test_gill2019_published_h_force_has_no_lambda_term():
 
 def test_gill2019_h_slope_is_short_of_the_wind_tunnel():
     # the in-plane force of each propeller's own set (fitted to its UIUC axial data) rises with
-    # the advance ratio at 0.47-0.74 of the rate the wind tunnel shows, 0.40-0.60 without the skewed
+    # the advance ratio at 0.47-0.73 of the rate the wind tunnel shows, 0.40-0.60 without the skewed
     # wake's in-plane induction and 0.36-0.51 without the radial flow's drag either (issue 14's 0.39-0.57
     # on the raw data); flapping blades raise it further
     m = run_case("gill2019", {"own": pm.default_params,

@@ -276,7 +276,7 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0,
         # vol. 2 contradict)
         warn(f"{propeller.name} ({propeller.n_blades} blades) runs with {Path(label).name}, fitted to data of "
              f"{cov.get('propeller', 'a propeller')} on {int(round(b))} blades: if it is the same blade on another "
-             "hub, such a set predicted UIUC's 3- and 4-blade hubs from the 2-blade one's data to 2.9-11.9% of "
+             "hub, such a set predicted UIUC's 3- and 4-blade hubs from the 2-blade one's data to 1.8-11.0% of "
              "static CT, more blades making less thrust than the model says (docs/validation.md, Blade count)")
         return
     if not propeller.same_size(d, b):

@@ -35,7 +35,7 @@ OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind
             "logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts held-out body force to "
             "0.298 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
             "airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with their own sets "
-            "the in-plane force rises with the advance ratio at 0.47-0.74 of the measured rate, and the edgewise "
+            "the in-plane force rises with the advance ratio at 0.47-0.73 of the measured rate, and the edgewise "
             "thrust of the three APC electric ones by 4-9% where the measured rises by 15-19% at mu = 0.2); "
             "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
 
