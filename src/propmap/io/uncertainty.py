@@ -30,7 +30,7 @@ AXIAL_VALIDATION = {
 #: what is known off-axis, in words (docs/validation.md, docs/flight.md)
 OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind the shipped sets are axial. "
             "propmap's off-axis checks are the Beaver propeller at 0-20 deg (Sinnige et al. 2019: the generic "
-            "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 62-82% of "
+            "set's rise of the wind-axis thrust with incidence is about a fifth of the measured one, and 61-82% of "
             "it with the zero-incidence thrust matched by one collective offset), the NeuroBEM quadrotor's flight "
             "logs (Bauersfeld et al. 2021: the vehicle model with a fitted airframe predicts held-out body force to "
             "0.298 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
