@@ -9,7 +9,8 @@ The figures are rms |dCT| / static CT (and |dCP| / static CP) over each propelle
 sweeps: median / 90th percentile / worst over the 143 catalogue propellers of UIUC vol. 1
 (Brandt & Selig, AIAA 2011-1255) and vol. 2 (Deters, Ananda & Selig, AIAA 2014-2151), with
 defaults derived without each propeller's family (leave-one-family-out). Measured
-2026-11-24 (the calibration with the stall blend M = 12) by ``propmap validate --all``;
+2026-11-24 (the calibration with the stall blend M = 12) by ``propmap validate --all``, and
+the same figures again on 2026-11-29 and 2026-11-30 (the calibration of 2026-11-29);
 tests/test_uncertainty.py holds them to docs/validation.md.
 """
 
