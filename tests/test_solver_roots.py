@@ -73,9 +73,12 @@ def test_selected_root_is_the_first_sign_change_of_a_dense_scan(apc8x6, apc_para
     assert not np.any(r.multiple_roots & ~multi_scan)
     assert r.multiple_roots.any()
     # climb to edgewise: every point with several roots on the scan is flagged (measured 2
-    # of 2); in descent the flag sees only folds within one march step (measured 4 of 12)
+    # of 2); in descent the flag sees only folds within one march step (measured 6 of 12,
+    # 2026-11-30; a regression value, 4 of 12 before the grazing check of 2026-11-28)
     ascent = B <= math.pi / 2 + 1e-9
     assert np.all(r.multiple_roots[multi_scan & ascent]) and np.any(multi_scan & ascent)
+    descent = multi_scan & ~ascent
+    assert np.count_nonzero(descent) == 12 and np.count_nonzero(r.multiple_roots[descent]) >= 6
 
 
 def test_stall_fold_in_hover_picks_the_lower_root(apc8x6, apc_params):
