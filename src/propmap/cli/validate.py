@@ -34,7 +34,7 @@ def print_table(v) -> None:
 @click.command("validate", cls=Command)
 @click.argument("sources", metavar="[PROP | SOURCE...]", nargs=-1)
 @click.option("--all", "all_props", is_flag=True,
-              help="Cross-validate every catalogue propeller with measurements (about 1 minute on 2 cores).")
+              help="Cross-validate every catalogue propeller with measurements (about 2 minutes on 2 cores).")
 @click.option("--prop", "prop_spec", default=None,
               help="The propeller (catalogue name or geometry file) of SOURCE files.")
 @with_prop_options
