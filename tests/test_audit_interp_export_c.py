@@ -102,10 +102,11 @@ def test_the_headers_opening_comment_states_the_grid_in_rpm_and_degrees(tiny, in
     assert " x 6 incidence\n * (20-180 deg);" in part.replace(" x 5 incidence", " x 6 incidence")
 
 
-def _run_c(tmp_path, rm, stdin, dtype="double"):
-    """The header's loads, compiled with the system compiler, at each line of stdin (o v b policy)."""
+def _run_c(tmp_path, rm, stdin, dtype="double", driver=DRIVER):
+    """The header's loads (or what ``driver`` prints), compiled with the system compiler, at each line of
+    stdin (o v b policy for the loads' driver)."""
     write_c_header(rm, tmp_path / "map.h", dtype=dtype)
-    (tmp_path / "driver.c").write_text(DRIVER)
+    (tmp_path / "driver.c").write_text(driver)
     exe = tmp_path / "driver"
     subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
                     str(tmp_path / "driver.c"), "-lm"], check=True, capture_output=True, text=True)
@@ -202,9 +203,9 @@ def test_the_headers_edge_rules_are_pythons_just_beyond_the_snap_and_at_the_hove
     assert rows[0, 0] == 2 and np.isnan(rows[0, 1]) and not rm.loads(o, 1e-6, 0.0, out_of_grid="nan").inside
 
 
-@pytest.mark.skipif(CC is None, reason="no C compiler")
-def test_the_header_finds_each_nodes_cell_and_flag_as_python_on_a_geometric_axis(tmp_path):
-    """At every node of a geometric rpm axis (cells found by arithmetic) the header's status is Python's flag."""
+def geometric_map_flagged_at(k: int) -> RotorMap:
+    """apce_8x6's linear map on a geometric rpm axis (6 nodes, 2000-9000 rpm; 3 airspeeds, 3 incidences)
+    with every flag cleared but vortex_ring on rpm node k: a cell's flag spans its neighbours' nodes."""
     prop = pm.load_propeller("apce_8x6")
     params = pm.default_params("apce_8x6")
     ds = build_map(prop, params, np.geomspace(2000, 9000, 6) * RPM, [0.0, 5.0, 10.0], np.radians([0.0, 90.0, 180.0]),
@@ -212,8 +213,14 @@ def test_the_header_finds_each_nodes_cell_and_flag_as_python_on_a_geometric_axis
     ds["converged"].values[...] = True
     for flag in ("vortex_ring", "multiple_roots"):
         ds[flag].values[...] = False
-    ds["vortex_ring"].values[5] = True  # the top rpm row: cells 3 and 4 flagged, 0-2 not
-    rm = RotorMap(ds, "linear")
+    ds["vortex_ring"].values[k] = True
+    return RotorMap(ds, "linear")
+
+
+@pytest.mark.skipif(CC is None, reason="no C compiler")
+def test_the_header_finds_each_nodes_cell_and_flag_as_python_on_a_geometric_axis(tmp_path):
+    """At every node of a geometric rpm axis (cells found by arithmetic) the header's status is Python's flag."""
+    rm = geometric_map_flagged_at(5)  # the top rpm row: cells 3 and 4 flagged, 0-2 not
     O, V, B = (a.ravel() for a in np.meshgrid(rm.omega, rm.airspeed, rm.incidence, indexing="ij"))
     rows = _run_c(tmp_path, rm, "".join(f"{float(o)!r} {float(v)!r} {float(b)!r} 0\n" for o, v, b in zip(O, V, B)))
     ref = rm.loads(O, V, B)

@@ -10,31 +10,19 @@ agreement with finite differences."""
 
 import math
 import shutil
-import subprocess
 
 import numpy as np
 import pytest
 
 import propmap as pm
 from propmap.cli import validate_all as VA
-from propmap.export_c import write_c_header
 from propmap.maps import RotorMap, build_map
 
 from .conftest import RPM
-from .test_maps_c import DRIVER as LOADS_DRIVER
+from .test_audit_interp_export_c import _run_c, geometric_map_flagged_at
 from .test_maps_c import WRENCH_DRIVER
 
 CC = shutil.which("cc") or shutil.which("gcc") or shutil.which("clang")
-
-
-def _compile_run(tmp_path, rm, driver, stdin):
-    write_c_header(rm, tmp_path / "map.h", dtype="double")
-    (tmp_path / "d.c").write_text(driver)
-    exe = tmp_path / "d"
-    subprocess.run([CC, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-o", str(exe),
-                    str(tmp_path / "d.c"), "-lm"], check=True, capture_output=True, text=True)
-    out = subprocess.run([str(exe)], input=stdin, capture_output=True, text=True, check=True).stdout
-    return np.array([line.split() for line in out.splitlines()], dtype=float)
 
 
 @pytest.fixture(scope="module")
@@ -73,7 +61,7 @@ def test_c_wrench_refuses_a_velocity_beyond_1e150_and_a_bad_axis_at_rest(tmp_pat
     lines = ["1e200 0 0 0 0 1 600 1 0", "0 0 -1e150 0 0 1 600 1 0",  # C8
              "0 0 0 inf 0 1 600 1 0", "0 0 0 nan 0 1 600 1 0", "0 0 0 0 0 -inf 600 1 0",  # C14
              "0 0 2 0 0 1 600 1 0"]  # a good one: the driver works
-    rows = _compile_run(tmp_path, small_map, WRENCH_DRIVER, "\n".join(lines) + "\n")
+    rows = _run_c(tmp_path, small_map, driver=WRENCH_DRIVER, stdin="\n".join(lines) + "\n")
     assert rows[:5, 0].tolist() == [-1] * 5 and np.all(rows[:5, 1:] == -12345.0)
     assert rows[5, 0] >= 0 and rows[5, 3] > 0
 
@@ -83,15 +71,7 @@ def test_c_locate_steps_back_where_the_arithmetic_rounds_up_to_the_next_node(tmp
     """Kills C1 (the locate's 'lo--' correction dropped): on a geometric rpm axis, omega a few ulp below
     node 4 can give -log(x/ax0) * inv_h == 4.0 exactly; the point is in cell 3 (Python's), which a flag on
     node 2 marks while cell 4 stays unflagged (a cell's flag spans its neighbours' nodes)."""
-    prop = pm.load_propeller("apce_8x6")
-    params = pm.default_params("apce_8x6")
-    ds = build_map(prop, params, np.geomspace(2000, 9000, 6) * RPM, [0.0, 5.0, 10.0], np.radians([0.0, 90.0, 180.0]),
-                   air=params.air, params_label=params.label, n_check=0).copy(deep=True)
-    ds["converged"].values[...] = True
-    for flag in ("vortex_ring", "multiple_roots"):
-        ds[flag].values[...] = False
-    ds["vortex_ring"].values[2] = True  # cells 0-3 flagged, cell 4 not
-    rm = RotorMap(ds, "linear")
+    rm = geometric_map_flagged_at(2)  # cells 0-3 flagged, cell 4 not
     xs = []
     for k in range(1, 6):
         x = float(rm.omega[k])
@@ -99,7 +79,7 @@ def test_c_locate_steps_back_where_the_arithmetic_rounds_up_to_the_next_node(tmp
             x = float(np.nextafter(x, 0.0))
             xs.append(x)
     xs = np.array(xs)
-    rows = _compile_run(tmp_path, rm, LOADS_DRIVER, "".join(f"{float(x)!r} 5.0 1.0 0\n" for x in xs))
+    rows = _run_c(tmp_path, rm, "".join(f"{float(x)!r} 5.0 1.0 0\n" for x in xs))
     ref = rm.loads(xs, np.full(xs.size, 5.0), np.full(xs.size, 1.0))
     assert ref.flagged.any() and not ref.flagged.all()
     np.testing.assert_array_equal(rows[:, 0], ref.flagged.astype(float))
