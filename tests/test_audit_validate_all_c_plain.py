@@ -39,7 +39,7 @@ def small_map():
 
 def test_ccw_is_plus_one_and_its_reaction_torque_opposes_the_axis():
     """Kills P1 (SPINS' ccw/cw values swapped): "ccw" is spin +1 (docs/conventions.md), and the moment
-    passed to the airframe is -spin Q z, so a ccw rotor in hover gives a torque along -z (Q > 0)."""
+    passed to the airframe is -spin Q z, so a ccw rotor in axial climb gives a torque along -z (Q > 0)."""
     prop, params = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
     ccw = pm.rotor_wrench(prop, params, [0.0, 0.0, 2.0], [0.0, 0.0, 1.0], 6000 * RPM, "ccw")
     plus = pm.rotor_wrench(prop, params, [0.0, 0.0, 2.0], [0.0, 0.0, 1.0], 6000 * RPM, 1)
