@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 from importlib import resources
 from pathlib import Path
@@ -199,12 +200,25 @@ def test_fit_flight_holds_out_a_log_and_records_the_training_coverage(tmp_path, 
     text = (tmp_path / "p.report.txt").read_text()
     assert "60 samples at 10 Hz from 2 log(s); fitted on 30 (a.csv)" in text
     assert "training F by speed band: 0-3 m/s " in text and ", 3-6 m/s " in text and ", 9- m/s " in text
+    # the bands of every score: propmap and the three baselines, on the training samples and the held-out log
+    table = text[text.index("F [N] by speed band (samples in brackets):"):].splitlines()
+    assert table[1].split() == ["0-3", "m/s", "3-6", "m/s", "6-9", "m/s", "9-", "m/s"]
+    labels = [f"{w}: {m}" for w in ("training", "held out b.csv") for m in (
+        "propmap", "T = k Omega^2", "k Omega^2 + linear rotor drag c Omega v_ip",
+        "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)")]
+    for label, line in zip(labels, table[2:10], strict=True):  # 30 samples each, all below 3 m/s
+        assert line.startswith(label + " ") and line.split()[-8:-6][1] == "(30)" and line.endswith("n/a (0)"), line
+    report = json.loads((tmp_path / "p.report.json").read_text())["flight_report"]
+    for where in (report["training"], report["held_out"]["b.csv"]):
+        assert sum(b["n"] for b in where["speed_bands"]) == 30
+        assert set(where["speed_bands_baselines"]) == {"k_omega2", "rotor_drag", "rotorpy"}
     import re
 
     lines = text.splitlines()
     head = next(k for k, ln in enumerate(lines) if ln.rstrip().endswith("[N]; [N m]") or ln.rstrip().endswith("[N]"))
     end = lines[head].rfind(" F") + 2  # where the pooled F column ends
-    rows = [ln for ln in lines[head + 1:] if ln.startswith(("training: ", "held out b.csv: "))]
+    bands = lines.index("F [N] by speed band (samples in brackets):")  # (its rows are the band table's)
+    rows = [ln for ln in lines[head + 1:bands] if ln.startswith(("training: ", "held out b.csv: "))]
     assert any(len(ln.split(": ", 1)[0]) + len(ln.split(": ", 1)[1].split("  ")[0]) > 44 for ln in rows)
     for ln in rows:  # every row's F under the header's F, however long its label
         assert re.fullmatch(r"\d+\.\d{3}", ln[end - 7:end].strip()), (ln, end)

@@ -301,8 +301,11 @@ def _scores(samples, names, held_idx, pred, baselines, veh):
         sub = samples.select(mask)
         e = {"model": flight_errors(pred.force[mask], sub, pred.moment[mask])}
         rows.append((f"{label}: propmap", e["model"]))
+        e["speed_bands_baselines"] = {}
         for k, bl in baselines.items():
-            e[k] = flight_errors(baseline_force(bl, sub, veh), sub)
+            force = baseline_force(bl, sub, veh)
+            e[k] = flight_errors(force, sub)
+            e["speed_bands_baselines"][k] = speed_band_errors(force, sub)
             rows.append((f"{label}: {bl['label']}", e[k]))
         refs, masses = reference_errors(sub, veh.mass)
         e.update(refs)
@@ -353,8 +356,9 @@ def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
 
 def _report_lines(samples, names, held, n_train: int, rows, report: dict, reference_masses, mass: float) -> list[str]:
     """fit flight's printed report: the samples and logs fitted, the error table (``rows``), the
-    logs' own references, the training error by speed band, the hover torque against the
-    thrust-stand-calibrated generic set, and leave-one-log-out where it ran."""
+    logs' own references, the errors by speed band (training and held out, the baselines beside),
+    the hover torque against the thrust-stand-calibrated generic set, and leave-one-log-out where
+    it ran."""
     import numpy as np
 
     # each log's samples' own rate (1 / their median step; a log left with one sample has none)
@@ -370,8 +374,8 @@ def _report_lines(samples, names, held, n_train: int, rows, report: dict, refere
         text.append(_reference_mass_note(reference_masses, mass))
     bands = report["training"]["speed_bands"]
     text.append("training F by speed band: " + ", ".join(
-        f"{b['band_m_s'][0]:g}-{'' if b['band_m_s'][1] is None else format(b['band_m_s'][1], 'g')} m/s "
-        + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
+        f"{_band_name(b)} " + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
+    text.append(_band_table(report))
     ht = report["hover_torque"]
     if ht and "unavailable" in ht:
         text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
@@ -391,6 +395,33 @@ def _report_lines(samples, names, held, n_train: int, rows, report: dict, refere
                     + ", ".join(f"{k} {v:.3f}" for k, v in cv["pooled"].items()))
         text.append(_table([(f"held out {f['log']}", f["model"]) for f in cv["folds"]]))
     return text
+
+
+def _band_name(band: dict) -> str:
+    """A speed band's name: '0-3 m/s', '9- m/s' for the open one."""
+    lo, hi = band["band_m_s"]
+    return f"{lo:g}-{'' if hi is None else format(hi, 'g')} m/s"
+
+
+def _band_table(report: dict) -> str:
+    """F [N] by speed band (the samples in brackets) of propmap and each baseline, on the training
+    samples and on each held-out log (issue 14's report: every score by speed band, next to the
+    baselines)."""
+    labels = {k: b["label"] for k, b in report.get("baselines", {}).items()}
+    rows = []
+    for where, e in [("training", report["training"]), *((f"held out {n}", e) for n, e in report["held_out"].items())]:
+        rows.append((f"{where}: propmap", e["speed_bands"]))
+        rows.extend((f"{where}: {labels.get(k, k)}", b) for k, b in e.get("speed_bands_baselines", {}).items())
+    width = max([44] + [len(label) + 1 for label, _ in rows])
+
+    def cell(b):
+        return ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})"
+
+    col = [max(len(_band_name(b)), *(len(cell(r[k])) for _, r in rows)) + 2 for k, b in enumerate(rows[0][1])]
+    lines = ["F [N] by speed band (samples in brackets):",
+             f"{'':<{width}}" + "".join(f"{_band_name(b):>{c}}" for b, c in zip(rows[0][1], col))]
+    lines += [f"{label:<{width}}" + "".join(f"{cell(b):>{c}}" for b, c in zip(r, col)) for label, r in rows]
+    return "\n".join(lines)
 
 
 def _log_names(log_paths) -> list[str]:
