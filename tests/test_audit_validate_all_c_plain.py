@@ -1,10 +1,12 @@
 """A mutation audit of core/_plain.py, core/units.py, core/_annulus_loads.py, _c_templates.py and
-cli/validate_all.py (2026-11-30; helper, 51 mutants, 21 surviving the suite): each test kills a mutant
-that changed what a user sees. Re-checked by hand: the C header's velocity check and the ccw/cw swap
-fail their tests with the mutant applied. Equivalent or harmless survivors: RPM = pi / 30 (the same
-double as 2 pi / 60), np.bool_ dropped from _plain's exclusion (it is no int, np.integer or np.floating),
-validate --all's default filter of one sweep (no catalogue entry has exactly one), its worker count
-not capped at the propellers (idle workers), and the rotor_options label (no CLI path sets it).
+cli/validate_all.py (2026-11-30; helper, 51 mutants, of which its report lists 18 and counts 21 as
+surviving the suite): each test kills a mutant that changed what a user sees. Re-checked by hand:
+the C header's velocity check and the ccw/cw swap fail their tests with the mutant applied.
+Equivalent or harmless survivors: RPM = pi / 30 (the same double as 2 pi / 60), np.bool_ dropped
+from _plain's exclusion (it is no int, np.integer or np.floating), validate --all's default filter
+of one sweep (no catalogue entry has exactly one), its worker count not capped at the propellers
+(idle workers). Left: the rotor_options label of run_catalogue's rows (an API caller's; no CLI
+path sets it). The old TARGETS' values survived too; TARGETS is now issue 15's, tested below.
 core/_annulus_loads' 8 mutants were all killed, 5 of them only through the analytic derivatives'
 agreement with finite differences."""
 
