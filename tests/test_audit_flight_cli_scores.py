@@ -199,19 +199,22 @@ def test_fit_flight_holds_out_a_log_and_records_the_training_coverage(tmp_path, 
     assert code == 0, cap.err
     text = (tmp_path / "p.report.txt").read_text()
     assert "60 samples at 10 Hz from 2 log(s); fitted on 30 (a.csv)" in text
-    assert "training F by speed band: 0-3 m/s " in text and ", 3-6 m/s " in text and ", 9- m/s " in text
-    # the bands of every score: propmap and the three baselines, on the training samples and the held-out log
+    # the bands of propmap and the three baselines, on the training samples and the held-out log: every sample
+    # is below 3 m/s, so each row's 0-3 m/s F is that score's pooled F
     table = text[text.index("F [N] by speed band (samples in brackets):"):].splitlines()
-    assert table[1].split() == ["0-3", "m/s", "3-6", "m/s", "6-9", "m/s", "9-", "m/s"]
-    labels = [f"{w}: {m}" for w in ("training", "held out b.csv") for m in (
-        "propmap", "T = k Omega^2", "k Omega^2 + linear rotor drag c Omega v_ip",
-        "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)")]
-    for label, line in zip(labels, table[2:10], strict=True):  # 30 samples each, all below 3 m/s
-        assert line.startswith(label + " ") and line.split()[-8:-6][1] == "(30)" and line.endswith("n/a (0)"), line
+    assert table[1].split() == ["0-3", "m/s", "3-6", "m/s", "6-9", "m/s", ">9", "m/s"]
     report = json.loads((tmp_path / "p.report.json").read_text())["flight_report"]
+    keys = ("model", "k_omega2", "rotor_drag", "rotorpy")
+    labels = ("propmap", "T = k Omega^2", "k Omega^2 + linear rotor drag c Omega v_ip",
+              "k Omega^2 - k_z Omega v_z + c Omega v_ip (RotorPy's terms)")
+    scored = (("training", report["training"]), ("held out b.csv", report["held_out"]["b.csv"]))
+    rows = [(f"{w}: {label}", where, key) for w, where in scored for key, label in zip(keys, labels)]
+    for (label, where, key), line in zip(rows, table[2:10], strict=True):
+        assert line.startswith(label + " ") and line.endswith("n/a (0)  n/a (0)  n/a (0)"), line
+        assert line.split()[-8:-6] == [f"{where[key]['F']:.3f}", "(30)"], (line, where[key]["F"])
     for where in (report["training"], report["held_out"]["b.csv"]):
-        assert sum(b["n"] for b in where["speed_bands"]) == 30
-        assert set(where["speed_bands_baselines"]) == {"k_omega2", "rotor_drag", "rotorpy"}
+        bands = [where["speed_bands"], *where["speed_bands_baselines"].values()]
+        assert [b[0]["F"] for b in bands] == pytest.approx([where[k]["F"] for k in keys], rel=1e-12)
     import re
 
     lines = text.splitlines()

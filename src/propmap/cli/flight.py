@@ -372,9 +372,6 @@ def _report_lines(samples, names, held, n_train: int, rows, report: dict, refere
         text.append(NEUROBEM_REFERENCE)
     if reference_masses:
         text.append(_reference_mass_note(reference_masses, mass))
-    bands = report["training"]["speed_bands"]
-    text.append("training F by speed band: " + ", ".join(
-        f"{_band_name(b)} " + ("n/a" if b["F"] is None else f"{b['F']:.3f} N") + f" ({b['n']})" for b in bands))
     text.append(_band_table(report))
     ht = report["hover_torque"]
     if ht and "unavailable" in ht:
@@ -398,15 +395,16 @@ def _report_lines(samples, names, held, n_train: int, rows, report: dict, refere
 
 
 def _band_name(band: dict) -> str:
-    """A speed band's name: '0-3 m/s', '9- m/s' for the open one."""
+    """A speed band's name: '0-3 m/s', '>9 m/s' for the open one."""
     lo, hi = band["band_m_s"]
-    return f"{lo:g}-{'' if hi is None else format(hi, 'g')} m/s"
+    return f">{lo:g} m/s" if hi is None else f"{lo:g}-{hi:g} m/s"
 
 
 def _band_table(report: dict) -> str:
     """F [N] by speed band (the samples in brackets) of propmap and each baseline, on the training
-    samples and on each held-out log (issue 14's report: every score by speed band, next to the
-    baselines)."""
+    samples and on each held-out log (issue 14's report: the errors by speed band next to the
+    baselines'; the leave-one-log-out folds of --cross-validate and the logs' own predictions are
+    scored in the error tables, not by band)."""
     labels = {k: b["label"] for k, b in report.get("baselines", {}).items()}
     rows = []
     for where, e in [("training", report["training"]), *((f"held out {n}", e) for n, e in report["held_out"].items())]:

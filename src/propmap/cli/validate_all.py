@@ -25,30 +25,58 @@ TARGETS = {("vol. 1", "lowest", "median"): 0.04, ("vol. 1", "lowest", "worst"): 
 TARGETS_SOURCE = "issue 15 (docs/validation.md): leave-one-family-out rms |dCT| / static CT, per volume"
 
 
+#: the targets' protocols as docs/validation.md names them
+TARGET_PROTOCOL_NAMES = {"lowest": "static + lowest", "loso": "leave one sweep out", "blind": "blind"}
+
+
 def target_status(cat: dict) -> list[dict]:
     """Issue 15's targets against a catalogue run's per-volume CT errors.
 
     Parameters
     ----------
     cat : dict
-        :func:`run_catalogue`'s result (its ``"by_volume"`` summaries).
+        :func:`run_catalogue`'s result: its ``"by_volume"`` summaries and, where present,
+        ``"catalogue_size"`` (the propellers of each volume that the protocols can score).
 
     Returns
     -------
     list of dict
         One per target of :data:`TARGETS` whose volume and protocol the run scored:
         ``volume``, ``protocol``, ``statistic``, ``target`` and ``value`` (fractions of the
-        static CT) and ``met`` (value <= target); a target outside the run is left out.
+        static CT; None where the statistic is not a finite number), ``n_propellers`` (those
+        scored) and ``of`` (the volume's, None where ``cat`` does not say), and ``met``:
+        value <= target, or None where the value is None or the run scored only some of the
+        volume's propellers (``--props``: a target is of the whole volume). A target outside
+        the run is left out.
     """
+    import math
+
     out = []
     for (volume, protocol, statistic), target in TARGETS.items():
         s = cat.get("by_volume", {}).get(volume, {}).get(protocol)
         if s is None:
             continue
         value = s["ct"][statistic]
+        value = float(value) if value is not None and math.isfinite(value) else None
+        n, of = s["ct"].get("n_propellers"), cat.get("catalogue_size", {}).get(volume)
+        whole = of is None or n == of
         out.append({"volume": volume, "protocol": protocol, "statistic": statistic, "target": target,
-                    "value": value, "met": value is not None and value <= target})
+                    "value": value, "n_propellers": n, "of": of,
+                    "met": value <= target if value is not None and whole else None})
     return out
+
+
+def _target_line(t: dict) -> str:
+    """One target of :func:`target_status` as the report prints it."""
+    shown = "n/a" if t["value"] is None else f"{100 * t['value']:.1f}%"
+    if t["met"] is not None:
+        verdict = "met" if t["met"] else "not met"
+    elif t["value"] is None:
+        verdict = "not judged: no value"
+    else:
+        verdict = f"not judged: {t['n_propellers']} of the volume's {t['of']} propellers run"
+    return (f"  {t['volume']} {TARGET_PROTOCOL_NAMES.get(t['protocol'], t['protocol']):<20} {t['statistic']:<7} "
+            f"{shown:>6} against <= {100 * t['target']:g}%: {verdict}")
 
 
 def summarize(values) -> dict:
@@ -147,7 +175,10 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None, rotor
     -------
     dict
         ``propellers``: one row per propeller (its errors per protocol, the generic set
-        used, the references); ``summary``: :func:`summarize` of each, CT and CP.
+        used, the references); ``summary``: :func:`summarize` of each, CT and CP;
+        ``by_volume`` and ``by_family``: the same per group; ``catalogue_size``: the
+        propellers of each volume the protocols can score (a run of some of them is told
+        apart by its counts).
 
     Raises
     ------
@@ -163,7 +194,8 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None, rotor
     from ..io.catalogue import catalogue
 
     cat = catalogue()
-    names = only or sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2)
+    scorable = sorted(n for n, e in cat.items() if e.static_files and len(e.sweep_files) >= 2)
+    names = only or scorable
     unknown = [n for n in names if n not in cat]
     if unknown:
         raise InputError(f"--props: unknown propeller(s) {', '.join(unknown)}")
@@ -207,7 +239,9 @@ def run_catalogue(protocols, only, progress=True, jobs: int | None = None, rotor
             "by_volume": {f"vol. {v}": _summaries([r for r in rows if r["volume"] == v], keys)
                           for v in sorted({r["volume"] for r in rows})},
             "by_family": {f: _summaries([r for r in rows if r["family"] == f], keys)
-                          for f in sorted({r["family"] for r in rows})}}
+                          for f in sorted({r["family"] for r in rows})},
+            "catalogue_size": {f"vol. {v}": sum(cat[n].volume == v for n in scorable)
+                               for v in sorted({cat[n].volume for n in scorable})}}
 
 
 def _summaries(rows, keys) -> dict:
@@ -293,8 +327,7 @@ def print_report(cat: dict, cases: dict, incidence: dict | None = None) -> None:
     if status:
         click.echo(f"\ntargets, {TARGETS_SOURCE}:")
         for t in status:
-            click.echo(f"  {t['volume']} {t['protocol']:<7} {t['statistic']:<7} {_pct(t['value']).strip():>6} against "
-                       f"<= {100 * t['target']:g}%: {'met' if t['met'] else 'not met'}")
+            click.echo(_target_line(t))
     click.echo("\npublished cases (digitized curves and published fits; data/CITATION.md):")
     for c, res in cases.items():
         click.echo(f"  {c}: {res.notes}. Data: {res.citation}")
