@@ -10,31 +10,10 @@ import click
 from ._air import resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
+from ._flight_report import NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
-
-
-#: said under a table with the "log's own" rows: what those columns are, and whose
-NEUROBEM_REFERENCE = ("log's own: the prediction in the log's columns, NeuroBEM's BEM + neural network (L. Bauersfeld, "
-                      "E. Kaufmann, P. Foehn, S. Sun and D. Scaramuzza, \"NeuroBEM: Hybrid Aerodynamic Quadrotor "
-                      "Model\", Robotics: Science and Systems 2021)")
-
-
-def _reference_rows(refs: dict, mass: float, own: str) -> list:
-    """Table rows of the logs' own prediction (identify.flight.reference_errors' dict), labelled
-    ``own`` as logged and at the vehicle's ``mass`` [kg]."""
-    labels = {"reference": f"{own} (NeuroBEM BEM+NN)", "reference_at_vehicle_mass": f"{own}, at {mass:g} kg"}
-    return [(labels[k], e) for k, e in refs.items()]
-
-
-def _reference_mass_note(masses, mass: float) -> str:
-    """The line under a table with a "log's own, at <mass> kg" row: why that row is there."""
-    made = " and ".join(f"{m:.4g}" for m in sorted(masses))
-    return (f"log's own, at {mass:g} kg: the log's prediction was made for {made} kg (its force plus its residual "
-            f"columns is that mass times the specific force), where the vehicle file says {mass:g} kg and the "
-            f"measured force is {mass:g} kg times the specific force: this row scales its force by {mass:g} / {made}, "
-            "scoring it in acceleration as propmap's; the row above scores it as logged (docs/flight.md)")
 
 
 MOTOR_MAP_HELP = ("PX4 ULog: the motor speed [rpm] = A + B * actuator_outputs output, given as A,B (the ESC's "
@@ -165,30 +144,6 @@ def _write_columns(fh, cols: dict, exact=("t",)) -> None:
                      for row, nanrow in zip(table.tolist(), nan.tolist()))
 
 
-def _table(rows: list[tuple[str, dict]]) -> str:
-    """Rows of force (and moment) errors as text; a column widens for numbers longer than its 7
-    characters, so that they never run together."""
-    width = max([44] + [len(label) + 1 for label, _ in rows])  # labels whole: held-out log names are long
-    moments = any("M" in r for _, r in rows)
-    forces = ("Fx", "Fy", "Fz", "F")
-    keys = forces + (("Mx", "My", "Mz", "M") if moments else ())
-
-    def cell(k, v):
-        return f"{v:.3f}" if k in forces else f"{v:.4f}"
-
-    col = {k: max([7] + [len(cell(k, r[k])) + 1 for _, r in rows if k in r]) for k in keys}
-    head = f"{'':<{width}}" + "".join(f"{k:>{col[k]}}" for k in forces)
-    if moments:
-        head += "   " + "".join(f"{k:>{col[k]}}" for k in keys[4:])
-    lines = [head + ("   [N]; [N m]" if moments else "   [N]")]
-    for label, r in rows:
-        line = f"{label:<{width}}" + "".join(f"{cell(k, r[k]):>{col[k]}}" for k in forces)
-        if moments and "M" in r:
-            line += "   " + "".join(f"{cell(k, r[k]):>{col[k]}}" for k in keys[4:])
-        lines.append(line)
-    return "\n".join(lines)
-
-
 def _flight_out_files(out: Path) -> list:
     """fit._out_files and the speed figure beside them."""
     stem = Path(out).with_suffix("")
@@ -286,39 +241,6 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                   veh.rotor_interference if "rotor_interference" in res.names else None))
 
 
-def _scores(samples, names, held_idx, pred, baselines, veh):
-    """fit flight's errors of the model, the baselines and the logs' own references on the
-    training samples and on each held-out log: (the table's rows, the report's "training" and
-    "held_out" entries, the masses the logs' own predictions were made for where not the
-    vehicle's)."""
-    import numpy as np
-
-    from ..identify.flight import baseline_force, flight_errors, reference_errors, speed_band_errors
-
-    rows, reference_masses = [], set()
-
-    def score(label, mask):
-        sub = samples.select(mask)
-        e = {"model": flight_errors(pred.force[mask], sub, pred.moment[mask])}
-        rows.append((f"{label}: propmap", e["model"]))
-        e["speed_bands_baselines"] = {}
-        for k, bl in baselines.items():
-            force = baseline_force(bl, sub, veh)
-            e[k] = flight_errors(force, sub)
-            e["speed_bands_baselines"][k] = speed_band_errors(force, sub)
-            rows.append((f"{label}: {bl['label']}", e[k]))
-        refs, masses = reference_errors(sub, veh.mass)
-        e.update(refs)
-        rows.extend((f"{label}: {name}", errs) for name, errs in _reference_rows(refs, veh.mass, "log's own"))
-        reference_masses.update(masses)
-        e["speed_bands"] = speed_band_errors(pred.force[mask], sub)
-        return e
-
-    report = {"training": score("training", ~np.isin(samples.log_index, held_idx)),
-              "held_out": {names[k]: score(f"held out {names[k]}", samples.log_index == k) for k in held_idx}}
-    return rows, report, reference_masses
-
-
 def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
     """fit flight's figures, drawn once the outputs are written: measured against predicted body
     force over time (with the last baseline and the logs' own prediction), and the paper's Fig. 6
@@ -352,74 +274,6 @@ def _figures(samples, names, held, pred, baselines, veh, params, air, vehicle):
                           title="as Fig. 6 of Gill & D'Andrea (2017), from flight samples binned by speed")
 
     return figures
-
-
-def _report_lines(samples, names, held, n_train: int, rows, report: dict, reference_masses, mass: float) -> list[str]:
-    """fit flight's printed report: the samples and logs fitted, the error table (``rows``), the
-    logs' own references, the errors by speed band (training and held out, the baselines beside),
-    the hover torque against the thrust-stand-calibrated generic set, and leave-one-log-out where
-    it ran."""
-    import numpy as np
-
-    # each log's samples' own rate (1 / their median step; a log left with one sample has none)
-    rates = sorted({round(1.0 / float(np.median(np.diff(t))), 4)
-                    for t in (samples.t[samples.log_index == k] for k in range(len(names))) if t.size > 1}) or [
-                        samples.rate_hz]
-    rate = f"{rates[0]:.4g}" if len(rates) == 1 else f"{rates[0]:.4g}-{rates[-1]:.4g}"
-    text = [f"{samples.n} samples at {rate} Hz from {len(names)} log(s); fitted on "
-            f"{n_train} ({', '.join(n for n in names if n not in held)})", _table(rows)]
-    if samples.reference_force is not None:
-        text.append(NEUROBEM_REFERENCE)
-    if reference_masses:
-        text.append(_reference_mass_note(reference_masses, mass))
-    text.append(_band_table(report))
-    ht = report["hover_torque"]
-    if ht and "unavailable" in ht:
-        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
-                    f"{ht['torque_model']:.4f} N m; the check against the generic reference set is unavailable: it "
-                    f"cannot make that thrust ({ht['unavailable']})")
-    elif ht:
-        text.append(f"hover torque at {ht['omega_hover']:.0f} rad/s, T = {ht['thrust_hover']:.3f} N: fitted "
-                    f"{ht['torque_model']:.4f} N m, the thrust-stand-calibrated generic set at the same thrust "
-                    f"{ht['torque_reference']:.4f} N m (ratio {ht['ratio']:.2f}; target 0.75-1.25)")
-    if ht and "yaw_r" in ht:
-        text.append(f"  yaw channel: k_Q Omega^2 = {ht['torque_yaw_channel']:.4f} N m, correlation r = "
-                    f"{ht['yaw_r']:.2f}" + (" (|r| < 0.5: the regression is attenuated and says nothing)"
-                                             if abs(ht["yaw_r"]) < 0.5 else ""))
-    if "cross_validation" in report:
-        cv = report["cross_validation"]
-        text.append("leave-one-log-out (each log predicted by a fit to the others), pooled F [N]: "
-                    + ", ".join(f"{k} {v:.3f}" for k, v in cv["pooled"].items()))
-        text.append(_table([(f"held out {f['log']}", f["model"]) for f in cv["folds"]]))
-    return text
-
-
-def _band_name(band: dict) -> str:
-    """A speed band's name: '0-3 m/s', '>9 m/s' for the open one."""
-    lo, hi = band["band_m_s"]
-    return f">{lo:g} m/s" if hi is None else f"{lo:g}-{hi:g} m/s"
-
-
-def _band_table(report: dict) -> str:
-    """F [N] by speed band (the samples in brackets) of propmap and each baseline, on the training
-    samples and on each held-out log (issue 14's report: the errors by speed band next to the
-    baselines'; the leave-one-log-out folds of --cross-validate and the logs' own predictions are
-    scored in the error tables, not by band)."""
-    labels = {k: b["label"] for k, b in report.get("baselines", {}).items()}
-    rows = []
-    for where, e in [("training", report["training"]), *((f"held out {n}", e) for n, e in report["held_out"].items())]:
-        rows.append((f"{where}: propmap", e["speed_bands"]))
-        rows.extend((f"{where}: {labels.get(k, k)}", b) for k, b in e.get("speed_bands_baselines", {}).items())
-    width = max([44] + [len(label) + 1 for label, _ in rows])
-
-    def cell(b):
-        return ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})"
-
-    col = [max(len(_band_name(b)), *(len(cell(r[k])) for _, r in rows)) + 2 for k, b in enumerate(rows[0][1])]
-    lines = ["F [N] by speed band (samples in brackets):",
-             f"{'':<{width}}" + "".join(f"{_band_name(b):>{c}}" for b, c in zip(rows[0][1], col))]
-    lines += [f"{label:<{width}}" + "".join(f"{cell(b):>{c}}" for b, c in zip(r, col)) for label, r in rows]
-    return "\n".join(lines)
 
 
 def _log_names(log_paths) -> list[str]:
