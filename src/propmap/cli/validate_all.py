@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import click
@@ -49,8 +50,6 @@ def target_status(cat: dict) -> list[dict]:
         volume's propellers (``--props``: a target is of the whole volume). A target outside
         the run is left out.
     """
-    import math
-
     out = []
     for (volume, protocol, statistic), target in TARGETS.items():
         s = cat.get("by_volume", {}).get(volume, {}).get(protocol)

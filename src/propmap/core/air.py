@@ -131,6 +131,8 @@ def check_air(air) -> None:
     Parameters
     ----------
     air : object
+        The air an entry point was given (density [kg/m^3], viscosity [Pa s] and speed of
+        sound [m/s] travel in an :class:`Air`).
 
     Raises
     ------
