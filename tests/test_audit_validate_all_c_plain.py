@@ -5,8 +5,9 @@ the C header's velocity check and the ccw/cw swap fail their tests with the muta
 Equivalent or harmless survivors: RPM = pi / 30 (the same double as 2 pi / 60), np.bool_ dropped
 from _plain's exclusion (it is no int, np.integer or np.floating), validate --all's default filter
 of one sweep (no catalogue entry has exactly one), its worker count not capped at the propellers
-(idle workers). Left: the rotor_options label of run_catalogue's rows (an API caller's; no CLI
-path sets it). The old TARGETS' values survived too; TARGETS is now issue 15's, tested below.
+(idle workers). The last survivor, the rotor_options label of run_catalogue's rows (an API caller's; no
+CLI path sets it), is killed since (2026-11-30, later). The old TARGETS' values survived too;
+TARGETS is now issue 15's, tested below.
 core/_annulus_loads' 8 mutants were all killed, 5 of them only through the analytic derivatives'
 agreement with finite differences."""
 
@@ -115,6 +116,21 @@ def test_a_propeller_without_sweeps_is_refused_before_it_runs(monkeypatch):
     monkeypatch.setattr(VA, "_one_propeller", ran)
     with pytest.raises(VA.InputError, match=r"--props: cfnq_45p1 lack\(s\) a static run and sweeps at two rotation"):
         VA.run_catalogue(["static"], ["cfnq_45p1"], progress=False, jobs=1)
+
+
+def test_rotor_options_reach_every_generic_set_and_its_label():
+    """Kills the audit's last survivor (the label of a run with rotor options left as the plain set's) and
+    the options not given to the generic set: ``run_catalogue(rotor_options={"swirl": True})`` labels the
+    row and predicts with swirl, which takes thrust (the wake's angular momentum): gwsdd_2.5x0.8's blind
+    over-prediction falls (regression values 2026-11-30: bias 18.1% -> 14.5% of static CT)."""
+    only = ["gwsdd_2.5x0.8"]
+    plain = VA.run_catalogue(["blind"], only, progress=False, jobs=1)["propellers"][0]
+    swirl = VA.run_catalogue(["blind"], only, progress=False, jobs=1, rotor_options={"swirl": True})["propellers"][0]
+    assert plain["generic_used"] == "generic without gwsdd"
+    assert swirl["generic_used"] == "generic without gwsdd with swirl = True"
+    assert swirl["blind"]["bias_ct"] < plain["blind"]["bias_ct"] - 0.02
+    assert plain["blind"]["bias_ct"] == pytest.approx(0.181, abs=0.01)
+    assert swirl["blind"]["bias_ct"] == pytest.approx(0.145, abs=0.01)
 
 
 def test_hover_model_reference_is_the_static_mean_judged_on_the_sweeps():
