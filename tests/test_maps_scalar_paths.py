@@ -455,6 +455,12 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
         s[:, 0] = a
         return s[:, 0]
 
+    def unaligned(a):  # (a packed binary record's: numba types it as aligned; plain_vector copies it)
+        u = np.zeros(8 * len(a) + 1, dtype=np.uint8)[1:].view(np.float64)
+        u[:] = a
+        assert not u.flags.aligned and u.flags.c_contiguous and u.flags.writeable
+        return u
+
     rm = RotorMap(small_map[2])
     veh = read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")  # four apce_8x6
     vm = VehicleMap(veh, rm)
@@ -463,7 +469,7 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
         np.array([700.0, 710.0, 720.0, 730.0])
     ref = (rm.loads(om, V, b), rm.wrench(vel, axis, 700.0), vm.wrench(vel, w, rotors))  # (compiled, or from the cache)
     before = signatures()
-    for make in (frozen, strided):
+    for make in (frozen, strided, unaligned):
         given = [make(x) for x in (om, vel, axis, vel, w, rotors)]
         kept = [x.copy() for x in given]
         got = (rm.loads(given[0], V, b), rm.wrench(given[1], given[2], 700.0), vm.wrench(*given[3:]))
@@ -474,9 +480,9 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
         np.testing.assert_array_equal(got[2].moment, ref[2].moment)
     assert signatures() == before
     x = frozen(vel)
-    for a in (x, strided(vel)):
+    for a in (x, strided(vel), unaligned(vel)):
         p = plain_vector(a, 3)
-        assert p is not a and p.flags.c_contiguous and p.flags.writeable and p.tolist() == vel.tolist()
+        assert p is not a and p.flags.carray and p.tolist() == vel.tolist()
 
 
 def test_broadcast_queries_warn_of_nothing(small_map):

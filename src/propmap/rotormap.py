@@ -66,10 +66,10 @@ def _warn_side_loads_missing(attrs: dict) -> None:
                       "them; build it again to have them", UserWarning, stacklevel=3)
 
 
-#: the one-point paths' results from a tuple of their fields (NamedTuple._make, which checks the count: 0.3 us
-#: against the constructor's 0.6 us of a 5-9 us call; 2026-11-29)
-_LOADS = MapLoads._make
-_WRENCH = MapWrench._make
+#: the one-point paths' results from a tuple of their fields: ``_NEW(MapLoads, fields)``, tuple.__new__ as
+#: NamedTuple._make calls it, without _make's count check (the compiled kernels return a fixed count; 0.7 against
+#: 1.1 us for a wrench's two results, against the constructor's 0.6 us for one, of a 4-9 us call; 2026-11-30)
+_NEW = tuple.__new__
 
 
 class _Buffers(threading.local):
@@ -396,8 +396,8 @@ class RotorMap:
         if out_of_grid not in POLICIES:
             return None
         # (the fields in MapLoads' order, Omega held at the grid's top under "clip": core._interp._fields)
-        return _LOADS(self._interp_point(self._grid[out_of_grid], self._tables, self._cellflag, omega, airspeed,
-                                         incidence, self._buffers.res))
+        return _NEW(MapLoads, self._interp_point(self._grid[out_of_grid], self._tables, self._cellflag, omega,
+                                                airspeed, incidence, self._buffers.res))
 
     def _packed(self, out_of_grid):
         """(grid, tables, cellflag, res) of the compiled one-point kernels (core._interp) under the
@@ -428,7 +428,7 @@ class RotorMap:
                                             vectors)
         if status:
             return None
-        return _WRENCH((vectors[0], vectors[1], _LOADS(fields)))
+        return _NEW(MapWrench, (vectors[0], vectors[1], _NEW(MapLoads, fields)))
 
     def check(self, n_check: int = 2000, *, seed: int = 0) -> dict:
         """The map's interpolation error against the model recorded in it (:func:`check_map`).
