@@ -383,8 +383,10 @@ def test_plain_numbers_and_vectors_are_the_documented_ones():
     assert plain_vector(np.array([1, 2, 3], dtype=np.int8), 3).dtype == np.float64
     for bad in (np.array([True, False, True]), [1.0, 2.0], [1.0, 2.0, 3.0, 4.0], (1.0, True, 2.0),
                 np.ma.masked_array([1.0, 2.0, 3.0]), np.array([[1.0, 2.0, 3.0]]), np.array(["1", "2", "3"]),
-                [1.0, 2.0, 10**400]):
+                [1.0, 2.0, 10**400], [True, False, True], (True, 1, 2)):
         assert plain_vector(bad, 3) is None, bad
+    assert plain_vector([1.0, 2.0, 3.0], 3).dtype == np.float64 and plain_vector((0.5, 1, 2.0), 3).tolist() == [
+        0.5, 1.0, 2.0]  # (Python floats only go straight to an array; anything else number by number)
 
 
 def test_the_maps_one_point_calls_refuse_what_the_array_path_refuses(small_map):
