@@ -457,7 +457,7 @@ def test_read_only_and_strided_queries_compile_nothing_more(small_map):
         s[:, 0] = a
         return s[:, 0]
 
-    def unaligned(a):  # (a packed binary record's: numba types it as aligned; plain_vector copies it)
+    def unaligned(a):  # (a packed binary record's: numba types it as aligned, so only `p is not a` below sees it)
         u = np.zeros(8 * len(a) + 1, dtype=np.uint8)[1:].view(np.float64)
         u[:] = a
         assert not u.flags.aligned and u.flags.c_contiguous and u.flags.writeable
