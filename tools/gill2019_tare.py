@@ -1,0 +1,53 @@
+"""Issue 14: could the wind tunnel's larger H-force be the drag of the rig around the propeller?
+
+A measurement, not a model of propmap. Gill & D'Andrea (Drones 3(4):77, 2019, Appendix A) publish,
+for four catalogue propellers, the in-plane force of their oblique-flow tests as C_FH = k4 mu
+(normalised by (rho/2) pi R^2 (Omega R)^2; case ``gill2019``, docs/validation.md). propmap's
+in-plane force, each propeller's own calibrated set fitted the same way (``multinomial_fit``'s
+``k4_mu_only``, 6000 rpm, the case's grid of total advance ratios 0.04-0.24 at incidences 0-90
+deg), rises at 0.55-0.70 of the published slope. If the balance also measured a drag that the
+tests did not tare away (the motor's, the mount's: D = (rho/2) C_D A V^2 along the wind), its
+in-plane part D sin(incidence) is, in their normalisation, (C_D A / (pi R^2)) J mu with J the total
+advance ratio; fitted as k4 mu over the same grid it adds (C_D A / (pi R^2)) <J>, <J> the
+mu^2-weighted mean of J over the grid. This prints the drag area C_D A that would make up each
+propeller's missing slope.
+
+    .venv/bin/python tools/gill2019_tare.py     # seconds
+
+A rig's drag is the same for every propeller tested on it; the paper's description of its rig is
+not in this repository, so the result bounds the explanation, it does not decide it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+import propmap as pm
+from propmap.cases import (GILL2019_ADVANCE, GILL2019_INCIDENCE_DEG, GILL2019_RPM, gill2019_coefficients,
+                           multinomial_fit)
+
+
+def main() -> None:
+    adv, inc = np.meshgrid(GILL2019_ADVANCE, np.radians(GILL2019_INCIDENCE_DEG))
+    adv, inc = adv.ravel(), inc.ravel()
+    mu = adv * np.sin(inc)
+    mean_adv = float(np.sum(mu**2 * adv) / np.sum(mu**2))
+    print(f"the grid's mu^2-weighted mean total advance ratio <J> = {mean_adv:.4f}")
+    omega = GILL2019_RPM * math.pi / 30
+    for name, c in gill2019_coefficients().items():
+        prop, params = pm.load_propeller(name), pm.default_params(name)
+        fit = multinomial_fit(prop, params, omega)
+        measured = c["k4"] / c["CT_static"]
+        model = fit["k4_mu_only"] / fit["CT_static"]
+        missing_k4 = (measured - model) * c["CT_static"]  # in the published normalisation
+        area = math.pi * prop.radius**2
+        drag_area = missing_k4 * area / mean_adv
+        print(f"{name:13s} D {2 * prop.radius * 1000:.0f} mm: H slope / CT_static measured {measured:.3f}, "
+              f"propmap {model:.3f} (ratio {model / measured:.2f}); missing k4 {missing_k4:.5f}, "
+              f"as a rig drag C_D A = {drag_area * 1e4:.1f} cm^2 ({drag_area / area * 100:.1f}% of the disk)")
+
+
+if __name__ == "__main__":
+    main()
