@@ -10,7 +10,11 @@ tests did not tare away (the motor's, the mount's: D = (rho/2) C_D A V^2 along t
 in-plane part D sin(incidence) is, in their normalisation, (C_D A / (pi R^2)) J mu with J the total
 advance ratio; fitted as k4 mu over the same grid it adds (C_D A / (pi R^2)) <J>, <J> the
 mu^2-weighted mean of J over the grid. This prints the drag area C_D A that would make up each
-propeller's missing slope.
+propeller's missing slope. Then a check in axial flow, where the same drag would take
+(C_D A / (pi R^2)) lambda_c^2 off the published thrust: the published C_FT at lambda_c = 0.2 as a
+fraction of its static value, the same with that drag added back, and propmap's (its loads at
+J = 0.2 in axial climb over its static thrust; each set calibrated on UIUC's axial data, another
+rig).
 
     .venv/bin/python tools/gill2019_tare.py     # seconds
 
@@ -47,6 +51,12 @@ def main() -> None:
         print(f"{name:13s} D {2 * prop.radius * 1000:.0f} mm: H slope / CT_static measured {measured:.3f}, "
               f"propmap {model:.3f} (ratio {model / measured:.2f}); missing k4 {missing_k4:.5f}, "
               f"as a rig drag C_D A = {drag_area * 1e4:.1f} cm^2 ({drag_area / area * 100:.1f}% of the disk)")
+        lam = 0.2
+        published = (c["CT_static"] + c["k1"] * lam + c["k3"] * lam**2) / c["CT_static"]
+        added_back = published + drag_area / area * lam**2 / c["CT_static"]
+        r = pm.rotor_loads(prop, params, omega, np.array([0.0, lam * omega * prop.radius]), 0.0)
+        print(f"{'':13s} axial thrust at lambda_c = {lam}: published {published:.3f} of static, with that drag "
+              f"added back {added_back:.3f}; propmap {float(r.thrust[1] / r.thrust[0]):.3f}")
 
 
 if __name__ == "__main__":
