@@ -7,14 +7,14 @@ in-plane force, each propeller's own calibrated set fitted the same way (``multi
 ``k4_mu_only``, 6000 rpm, the case's grid of total advance ratios 0.04-0.24 at incidences 0-90
 deg), rises at 0.55-0.70 of the published slope. If the balance also measured a drag that the
 tests did not tare away (the motor's, the mount's: D = (rho/2) C_D A V^2 along the wind), its
-in-plane part D sin(incidence) is, in their normalisation, (C_D A / (pi R^2)) J mu with J the total
-advance ratio; fitted as k4 mu over the same grid it adds (C_D A / (pi R^2)) <J>, <J> the
-mu^2-weighted mean of J over the grid. This prints the drag area C_D A that would make up each
+in-plane part D sin(incidence) is, in their normalisation, (C_D A / (pi R^2)) a mu with a = V / (Omega R)
+the total advance ratio; fitted as k4 mu over the same grid it adds (C_D A / (pi R^2)) <a>, <a> the
+mu^2-weighted mean of a over the grid. This prints the drag area C_D A that would make up each
 propeller's missing slope. Then a check in axial flow, where the same drag would take
 (C_D A / (pi R^2)) lambda_c^2 off the published thrust: the published C_FT at lambda_c = 0.2 as a
 fraction of its static value, the same with that drag added back, and propmap's (its loads at
-J = 0.2 in axial climb over its static thrust; each set calibrated on UIUC's axial data, another
-rig).
+V = 0.2 Omega R in axial climb over its static thrust; each set calibrated on UIUC's axial data,
+another rig).
 
     .venv/bin/python tools/gill2019_tare.py     # seconds
 
@@ -38,7 +38,7 @@ def main() -> None:
     adv, inc = adv.ravel(), inc.ravel()
     mu = adv * np.sin(inc)
     mean_adv = float(np.sum(mu**2 * adv) / np.sum(mu**2))
-    print(f"the grid's mu^2-weighted mean total advance ratio <J> = {mean_adv:.4f}")
+    print(f"the grid's mu^2-weighted mean total advance ratio <V / (Omega R)> = {mean_adv:.4f}")
     omega = GILL2019_RPM * math.pi / 30
     for name, c in gill2019_coefficients().items():
         prop, params = pm.load_propeller(name), pm.default_params(name)
