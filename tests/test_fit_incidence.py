@@ -67,6 +67,24 @@ def test_default_fit_recovers_a_known_flap_compliance_and_section(apc8x6):
     assert rigid.params.flap_compliance == 0.0 and rigid.cost > 1e4 * max(r.cost, 1e-20)
 
 
+def test_a_compliance_beyond_a_propellers_is_warned_of(apc8x6):
+    """Above options.FLAP_ARTICULATED (5 rad/(N m)) a fitted compliance is a nearly articulated blade's, more
+    than centrifugal stiffening lets a propeller's blade flap: warned of, naming the rig's own drag as a
+    force of that form and a blades-off run to subtract (synthetic data, propmap's own; at 2 no warning)."""
+    from propmap.identify.options import FLAP_ARTICULATED
+
+    assert FLAP_ARTICULATED == 5.0
+    for k, warned in ((8.0, True), (2.0, False)):
+        d = synthetic(apc8x6, generic_params().replace(flap_compliance=k), incidence_deg=(0.0, 45.0, 90.0))
+        r = fit_loads(d, apc8x6, base=generic_params(), air=AIR, options=FitOptions(prior=False))
+        assert r.params.flap_compliance == pytest.approx(k, rel=1e-2)
+        said = [w for w in r.warnings if "nearly articulated" in w]
+        assert len(said) == int(warned), r.warnings
+        if warned:
+            assert said[0].startswith("flap_compliance: 8 rad/(N m)") and "the rig's own drag" in said[0]
+            assert "blades-off run" in said[0]
+
+
 def test_without_the_in_plane_force_the_defaults_are_unchanged(apc8x6):
     d = synthetic(apc8x6, generic_params(), incidence_deg=(0.0, 45.0))
     r = fit_loads(d, apc8x6, base=generic_params(), air=AIR, quantities=("thrust", "torque"))

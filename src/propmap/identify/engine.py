@@ -410,6 +410,25 @@ def _objective(result: FitResult) -> float:
     return result.cost + result.extra.get("prior", {}).get("cost", 0.0)
 
 
+def _flap_articulated(result: FitResult) -> FitResult:
+    """A warning where the fitted flap compliance exceeds options.FLAP_ARTICULATED: the flapping then
+    stands in for an in-plane force that a propeller's blades cannot make by flapping, which may be
+    the rig's own drag (docs/validation.md, gill2019: the tunnel's extra in-plane force on two
+    8 in propellers is what about 28 cm^2 of untared drag would give)."""
+    from .options import FLAP_ARTICULATED
+
+    if "flap_compliance" not in result.names:
+        return result
+    k = float(result.x[result.names.index("flap_compliance")])
+    if not k > FLAP_ARTICULATED:
+        return result
+    said = (f"flap_compliance: {k:.3g} rad/(N m) is a nearly articulated blade's (a stiff plastic blade's is about "
+            "0.1, and centrifugal stiffening caps it near 1): the flapping stands in for an in-plane force the blades "
+            "cannot make so; if the measured force includes the rig's own drag (the motor's, the mount's), subtract "
+            "a blades-off run at the same airspeeds and incidences first (docs/identification.md)")
+    return replace(result, warnings=(*result.warnings, said))
+
+
 def _flap_saturation(result: FitResult, residual, options: FitOptions) -> FitResult:
     """The flap compliance's upper 95% limit from the profile likelihood where the linearised
     one is too narrow.

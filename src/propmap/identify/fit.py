@@ -35,8 +35,8 @@ from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, different
 from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
-from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_saturation,
-                     _m_effect, _params_from, _prior_stats, _with_prior, _x0)
+from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
+                     _flap_saturation, _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
@@ -379,7 +379,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     result = _finish(names, base, options, best, log, nfev, elapsed, warns, nfev * data.n, air, extra)
     result = _traced_residuals(result, data, keys)
     if inplane:
-        result = _flap_saturation(result, make_residual(options), options)
+        result = _flap_articulated(_flap_saturation(result, make_residual(options), options))
     return result if k_dirs == 0 else _directions_report(result, options)
 
 

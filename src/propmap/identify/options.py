@@ -16,7 +16,7 @@ from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
            "CAMBERED_FIT_RE", "CAMBERED_FIT_STATIC", "CAMBERED_FIT_COLLECTIVE", "MIN_RATES_FOR_RE",
            "RATE_STEP", "STATIC_RPM_SPAN", "BODY_BOUNDS", "ROTOR_BOUNDS", "AIRFRAME_BOUNDS", "ANGLES", "INPLANE_FIT",
-           "FLAP_START", "ABSENT_AT_ZERO"]
+           "FLAP_START", "FLAP_ARTICULATED", "ABSENT_AT_ZERO"]
 
 
 #: the paper's initial guess (c_l1, c_l2, c_d, alpha_0) = (2 pi, 2, 0, 0.47)
@@ -62,6 +62,11 @@ INPLANE_FIT = ("flap_compliance",)
 #: force and pitching moment are linear) and the flapping responds near 1 / D_beta, 0.3-4 rad/(N m)
 #: for 8-10 in propellers at 4000-8000 rpm (the flight fit starts there too)
 FLAP_START = 1.0
+#: a fitted equivalent compliance above this [rad/(N m)] is a nearly articulated blade's, not a propeller's: warned
+#: of (a stiff plastic blade's is about 0.1 by a beam estimate, and a cantilevered blade's centrifugal stiffening
+#: caps the equivalent compliance near 1 at 8000 rpm; docs/validation.md). Gill & D'Andrea's oblique-flow fits
+#: give 25-50 (APC 8x6E), 4.3-6.1 (8x8E), 1.7-3.1 (10x7E), 0.7-1.3 (10x4.7SF; docs/identification.md)
+FLAP_ARTICULATED = 5.0
 #: sweeps at this many distinct rotation rates (or more) let the fit estimate the
 #: Reynolds terms (CAMBERED_FIT_RE); fewer keep them at the base values
 MIN_RATES_FOR_RE = 3
