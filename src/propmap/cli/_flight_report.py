@@ -27,10 +27,16 @@ def _reference_mass_note(masses, mass: float) -> str:
             "scoring it in acceleration as propmap's; the row above scores it as logged (docs/flight.md)")
 
 
+def _label_width(rows) -> int:
+    """The label column's width of a table of (label, ...) rows: 44, or wider for a longer label (held-out
+    log names are long), so that labels stay whole."""
+    return max([44] + [len(label) + 1 for label, _ in rows])
+
+
 def _table(rows: list[tuple[str, dict]]) -> str:
     """Rows of force (and moment) errors as text; a column widens for numbers longer than its 7
     characters, so that they never run together."""
-    width = max([44] + [len(label) + 1 for label, _ in rows])  # labels whole: held-out log names are long
+    width = _label_width(rows)
     moments = any("M" in r for _, r in rows)
     forces = ("Fx", "Fy", "Fz", "F")
     keys = forces + (("Mx", "My", "Mz", "M") if moments else ())
@@ -140,7 +146,7 @@ def _band_table(report: dict) -> str:
     for where, e in [("training", report["training"]), *((f"held out {n}", e) for n, e in report["held_out"].items())]:
         rows.append((f"{where}: propmap", e["speed_bands"]))
         rows.extend((f"{where}: {labels.get(k, k)}", b) for k, b in e.get("speed_bands_baselines", {}).items())
-    width = max([44] + [len(label) + 1 for label, _ in rows])
+    width = _label_width(rows)
 
     def cell(b):
         return ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})"

@@ -24,8 +24,6 @@ TARGETS = {("vol. 1", "lowest", "median"): 0.04, ("vol. 1", "lowest", "worst"): 
            ("vol. 2", "lowest", "median"): 0.04, ("vol. 2", "lowest", "worst"): 0.10,
            ("vol. 2", "loso", "median"): 0.03, ("vol. 2", "blind", "median"): 0.08}
 TARGETS_SOURCE = "issue 15 (docs/validation.md): leave-one-family-out rms |dCT| / static CT, per volume"
-
-
 #: the targets' protocols as docs/validation.md names them
 TARGET_PROTOCOL_NAMES = {"lowest": "static + lowest", "loso": "leave one sweep out", "blind": "blind"}
 

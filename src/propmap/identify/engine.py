@@ -19,7 +19,7 @@ from dataclasses import fields, replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_START, FitOptions, _is_angle, report_name
+from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_ARTICULATED, FLAP_START, FitOptions, _is_angle, report_name
 from .optimizer import _bounds, _jacobian, _solve
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability
 
@@ -415,8 +415,6 @@ def _flap_articulated(result: FitResult) -> FitResult:
     stands in for an in-plane force that a propeller's blades cannot make by flapping, which may be
     the rig's own drag (docs/validation.md, gill2019: the tunnel's extra in-plane force on two
     8 in propellers is what about 28 cm^2 of untared drag would give)."""
-    from .options import FLAP_ARTICULATED
-
     if "flap_compliance" not in result.names:
         return result
     k = float(result.x[result.names.index("flap_compliance")])
