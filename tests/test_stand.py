@@ -18,6 +18,7 @@ from propmap.core.units import RPM
 from propmap.identify import DataError, FitOptions, LoadData, fit_loads, read_loads
 from propmap.identify.data import sanity_check
 from propmap.identify.csvfile import PREAMBLE_MAX_LINES
+from propmap.identify.stand import map_operating_columns
 
 from stand_exports import COLUMNS, G0, THRUST_UNITS, write_steps_export
 
@@ -972,6 +973,30 @@ def test_the_rotation_speed_is_read_by_other_names_exports_give_it(tmp_path, hea
     rows = [(5000.0 / factor * k, 1.0 + 0.1 * k, 0.02) for k in range(1, 8)]
     d = read_loads(_rows_csv(tmp_path / "s.csv", [header, "thrust", "torque"], rows))
     np.testing.assert_allclose(d.omega, [5000.0 * k * np.pi / 30 for k in range(1, 8)], rtol=1e-5)  # 6 digits
+
+
+@pytest.mark.parametrize("header, factor", [("n (rev/s)", 60.0), ("n [1/s]", 60.0), ("N (1/min)", 1.0),
+                                            ("n_rpm", 1.0), ("n (U/min)", 1.0), ("Drehzahl (1/s)", 60.0)])
+def test_the_rotational_frequency_n_is_read_with_its_unit(tmp_path, header, factor):
+    """n, the symbol of a rotational frequency (ISO 80000-3, revolutions per time), is read as the
+    rotation speed where a rotation unit follows it; its 1/s is a revolution per second (x 60 to
+    rpm), not a radian per second (x 9.55). Refused until 2026-11-30: no rotation-speed column."""
+    rows = [(5000.0 / factor * k, 1.0 + 0.1 * k, 0.02) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "n.csv", [header, "thrust", "torque"], rows))
+    np.testing.assert_allclose(d.omega, [5000.0 * k * np.pi / 30 for k in range(1, 8)], rtol=1e-5)  # 6 digits
+    # a points file (propmap loads --points) reads it the same way
+    assert map_operating_columns([header, "airspeed"])["rpm"] == (header, factor)
+
+
+def test_a_bare_n_is_not_read_as_the_rotation_speed(tmp_path):
+    """A bare 'n' is as often a count (a sample or step number) as a speed: beside an rpm column it
+    is not read (not 'two columns give rpm'), and alone it is refused, saying which unit to give."""
+    rows = [(k, 5000.0 * k, 1.0 + 0.1 * k, 0.02) for k in range(1, 8)]
+    d = read_loads(_rows_csv(tmp_path / "count.csv", ["n", "rpm", "thrust", "torque"], rows))
+    np.testing.assert_allclose(d.omega, [5000.0 * k * np.pi / 30 for k in range(1, 8)], rtol=1e-5)
+    with pytest.raises(DataError, match=r"column 'n' is read as the rotation speed only with a rotation unit: "
+                                        r"'n \(rev/s\)'"):
+        read_loads(_rows_csv(tmp_path / "bare.csv", ["n", "thrust", "torque"], [r[1:] for r in rows]))
 
 
 @pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force",

@@ -8,7 +8,8 @@ thrust stands (Series 1520, 1580, 1585, 1780: ``Time (s)``, ``ESC signal (µs)``
 ``Motor Electrical Speed (RPM)``, ``Motor Optical Speed (RPM)``, ...; UTF-8 with a byte-order
 mark), as the stand's software writes them; the rotation speed also as ``Motor Speed (RPM)``,
 ``rotor_speed_hz``, ``Rotational speed (rad/s)``, ``propeller speed``, ``Prop Speed``, ``Motor RPM``,
-``omega`` (rad/s without a unit). This module maps the columns; :mod:`propmap.identify.steps`
+``omega`` (rad/s without a unit), ``n (rev/s)`` or ``n (1/min)`` (the symbol of a rotational frequency, read
+only with its unit; its ``1/s`` is a revolution per second). This module maps the columns; :mod:`propmap.identify.steps`
 turns a "steps" test into one averaged point per ESC step.
 
 Units (a quantity without a unit is SI, rpm for rotation speed):
@@ -80,6 +81,9 @@ _NAMES = {
     # German stands' exports (Schub, Drehmoment, Drehzahl [U/min]: a user-level audit, 2026-11-28)
     "schub": ("thrust", "force"), "schubkraft": ("thrust", "force"), "drehmoment": ("torque", "torque"),
     "drehzahl": ("rpm", "rotation"),
+    # the symbol of a rotational frequency (ISO 80000-3:2019: n, revolutions per time), read only with a
+    # rotation unit, 'n (rev/s)', 'n [1/min]', 'n_rps' (a bare 'n' is as often a count: _UNIT_ONLY)
+    "n": ("rpm", "rotation"),
     # the in-plane force along the in-plane airspeed, by the names wind-tunnel tests give it
     "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
     "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),
@@ -103,6 +107,12 @@ _NAMES = {
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
     "density": ("air_density", "density"), "rho": ("air_density", "density"),
 }
+#: names read only where a rotation unit follows them; a bare one (a count, a sample number) is not read
+_UNIT_ONLY = frozenset(("n",))
+#: per name, rotation units beyond UNITS["rotation"]: 1/s of a rotational frequency n is a revolution per second (ISO
+#: 80000-3:2019; German stands write Drehzahl in 1/s too), of an angular speed it would be rad/s
+_PER_SECOND = {tok: 60.0 for tok in ("1s", "s1", "s⁻¹")}
+_NAME_UNITS = {"n": _PER_SECOND, "drehzahl": _PER_SECOND}
 #: the names of an ESC signal (a pulse width or a throttle), which take an ESC unit after an underscore (esc_us, pwm_us)
 _ESC_NAMES = frozenset(k for k, (q, _) in _NAMES.items() if q == "esc")
 #: suffixes of a column that gives a statistic of a quantity, not the quantity (thrust_std): not read
@@ -164,12 +174,21 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
     if unit is None:  # (a bare 'RPS' or 'rev/s' names its unit: it was not found as a speed, an audit, 2026-11-27)
         return UNITS["rotation"]["rads"] if base == "omega" else (60.0 if base in ("rps", "rev/s") else 1.0)
     tok = _token(unit)
+    if tok in _NAME_UNITS.get(base, {}):
+        return _NAME_UNITS[base][tok]
     if kind == "rotation" and tok in UNITS["speed"]:
         raise error(f"column {name!r} is in {unit}, a linear speed, not a rotation speed (rpm, rad/s or Hz): name an "
                     "airspeed 'airspeed' (with its unit, e.g. 'airspeed (m/s)')")
     if tok not in UNITS[kind]:
         raise error(f"column {name!r}: unknown unit {unit!r} for {quantity} (known: {', '.join(UNITS[kind])})")
     return UNITS[kind][tok]
+
+
+def _unit_missing(base: str, unit: str | None) -> bool:
+    """Whether ``base`` is a name read only with a rotation unit (:data:`_UNIT_ONLY`: ``n``) and
+    ``unit`` is none (a bare ``n``, a count) or not a rotation unit: such a column is not read."""
+    return base in _UNIT_ONLY and (unit is None or not (_token(unit) in UNITS["rotation"]
+                                                        or _token(unit) in _NAME_UNITS.get(base, {})))
 
 
 def _token(unit: str) -> str:
@@ -328,7 +347,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         if not name.strip():
             continue
         base, unit = split_header(name)
-        if base not in _NAMES:
+        if base not in _NAMES or _unit_missing(base, unit):
             continue
         quantity, kind = _NAMES[base]
         factor = _factor(name, base, unit, error)
@@ -382,7 +401,11 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
             "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
             "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
             if pair else "")
-    if not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
+    bare_n = [n for n in names if split_header(n)[0] in _UNIT_ONLY]
+    if bare_n:  # ('n' is read as a rotational frequency only with its unit: a count is written so too)
+        hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: 'n (rev/s)', "
+                "'n (1/min)' or 'n_rpm'")
+    elif not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
         hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
                 "are the file's first line (a load file's header is looked for in its first 41 lines)")
     raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
@@ -536,7 +559,7 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
         if not name.strip() or name.strip().lower() in OPERATING:
             continue
         base, unit = split_header(name)
-        quantity = _NAMES.get(base, (None, None))[0]
+        quantity = None if _unit_missing(base, unit) else _NAMES.get(base, (None, None))[0]
         if quantity not in OPERATING or quantity in bare:
             continue
         factor = _factor(name, base, unit, error)
