@@ -277,8 +277,8 @@ class _Csv:
                 msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
-    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=(), gaps=()) -> tuple[
-            dict, dict, np.ndarray]:
+    def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=(), gaps=(),
+             percent=()) -> tuple[dict, dict, np.ndarray]:
         """(numbers by column, text by column, line of each row) for the named columns; an
         empty cell of a column in ``optional`` is NaN instead of an error, and so is every
         empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty or 0:
@@ -287,7 +287,10 @@ class _Csv:
         ``n/a``, ``-``, ``-nan(ind)``, ...; :func:`missing_mark`) is NaN too: a sensor's dropout in
         a sampled log, which the caller drops, or an optional column's missing reading (a stand's
         optical speed ``NaN`` in every row was refused while the same column left empty was read:
-        a thrust-stand export audit, 2026-11-27)."""
+        a thrust-stand export audit, 2026-11-27). A cell of a column in ``percent`` may end in ``%``
+        (``50%``, ``62.5 %``: a motor maker's table of throttle settings): read without it, and the
+        column is added to ``self.percent_cells``."""
+        self.percent_cells: set[str] = set()
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -319,8 +322,11 @@ class _Csv:
                 if not cell:
                     raise self.error(f"column {_short(self.header[j])} is empty (missing value)", line)
                 number = cell
+                if c in percent and cell.endswith("%") and cell[:-1].strip():
+                    number = cell[:-1].strip()
+                    self.percent_cells.add(c)
                 if self.sep != ",":
-                    number = self._decimal_comma(c, cell, line, marks)
+                    number = self._decimal_comma(c, number, line, marks)
                 try:
                     x = parse_number(number)
                 except ValueError:

@@ -41,8 +41,9 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     rotation speed, whose load cells may then be empty too) skipped, a rotation speed that is
     negative in every running row taken as its magnitude, and a stand's reaction torque
     (negative) turned to the propeller's; an ESC signal as a pulse width [us] or a throttle
-    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.steps.esc_form`);
-    every decision is in ``LoadData.notes``. Format and valid ranges in the module docstring.
+    in percent or as a fraction, by its unit or its values (:func:`propmap.identify.steps.esc_form`;
+    cells ending in ``%``, ``50%``, a throttle in percent); every decision is in ``LoadData.notes``.
+    Format and valid ranges in the module docstring.
 
     Signs, decided after the ESC steps are averaged, on the points whose value is larger
     than 2% of the column's largest magnitude (those below are noise about zero), each
@@ -144,7 +145,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     raw, texts, lines = f.read([low[q] for q in quantities] + [c.lower() for c in ratio],
                                (low.get("group", "group"), *(c.lower() for c in named)),
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
-                               gaps={low[q] for q in keys} if sampled else ())
+                               gaps={low[q] for q in keys} if sampled else (),
+                               percent={low["esc"]} if "esc" in low else ())
+    if "esc" in low and low["esc"] in f.percent_cells:
+        cm.columns["esc"] = _esc_in_percent(cm.columns["esc"], notes)
     _check_unread_columns(raw, texts, ratio, named, what, p, notes)
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
@@ -195,6 +199,17 @@ def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):
             raise DataError(f"{what}: {p}: {exc}") from None
         f, cm = below, columns(below.header)
     return f, cm
+
+
+def _esc_in_percent(column: tuple, notes: list) -> tuple:
+    """The ESC column's (name, factor, unit) where its cells end in '%' (a motor maker's table:
+    ``Throttle`` over ``50%``, refused as not a number until 2026-11-30): the unit '%' where the
+    header gives none, so that the signal is read as a throttle in percent, with a note."""
+    name, factor, unit = column
+    if unit is None:
+        notes.append(f"{name!r}: its values end in %: read as a throttle in percent")
+        return name, factor, "%"
+    return column
 
 
 def _power_note(header, cm, notes: list) -> None:
