@@ -297,3 +297,16 @@ def test_a_fit_source_near_a_catalogue_name_is_suggested(tmp_path, capsys, sourc
     suggest apce_8x6 (the audit's report, 2026-11-29); a file name near none is said as before."""
     code, _, err = run(capsys, "fit", "loads", source, "--out", tmp_path / "p.toml")
     assert one_line_error(code, err, "is neither a catalogue propeller nor a file") and err.strip().endswith(said), err
+
+
+@pytest.mark.parametrize("command", ["fit", "validate"])
+def test_a_folder_as_source_is_refused_naming_its_files(tmp_path, capsys, command):
+    """A UIUC download's folder given as SOURCE was 'neither a catalogue propeller nor a file': now
+    the message says it is a folder and how to give its files (2026-11-30)."""
+    folder = tmp_path / "uiuc"
+    folder.mkdir()
+    args = ["fit", "loads", folder, "--prop", "apce_8x6", "--out", tmp_path / "p.toml"] if command == "fit" else \
+        ["validate", folder, "--prop", "apce_8x6"]
+    code, _, err = run(capsys, *args)
+    assert one_line_error(code, err, f"is a folder: give its files, e.g. {folder / '*.txt'}"), err
+    assert not (tmp_path / "p.toml").exists()

@@ -121,6 +121,10 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
 
         # (a name near a catalogue propeller's, APCE_8x6, got no suggestion where validate's and loads' PROP did)
         hint = near_names(missing[0], catalogue(), otherwise="") if len(missing[0]) <= 255 and len(sources) == 1 else ""
+        if len(missing[0]) <= 255 and Path(missing[0]).is_dir():  # (a UIUC download's folder: an audit, 2026-11-30)
+            raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is a folder: give its files, e.g. "
+                             f"{short_path(Path(missing[0]) / '*.txt')} (a UIUC download's static and wind-tunnel "
+                             "files, with the geometry file as --prop)")
         raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else "")
                          + hint)
