@@ -53,6 +53,9 @@ _UNIT_SLIPS = [
                  "thrust column")),
 ]
 
+#: the factors of _UNIT_SLIPS that read an unlabelled thrust column as N (kgf, gf, lbf)
+_READ_AS_N = (9.80665, 9.80665e-3, 4.4482216152605)
+
 
 #: airspeed units an unlabelled airspeed column may be in, as m/s per unit (mph and knots read as m/s fitted with
 #: exit 0 and six parameters at their bounds; identification audit, 2026-11-26)
@@ -285,11 +288,17 @@ def _vortex_ring_warning(data: LoadData, at_rpm) -> list[str]:
             "errors by state)"]
 
 
-def _rate_causes(data: LoadData, model: _ModelAt) -> tuple[list[str], list[str]]:
+def _rate_causes(data: LoadData, model: _ModelAt, n_blades: int) -> tuple[list[str], list[str]]:
     """The rotation-rate slips that bring the loads within 1.6x of the model's: (a rate in rad/s
     read as rpm, said first of all causes; the others: rpm read as rad/s, rev/s read as rpm,
-    rates in thousands, an electrical rpm and its pole-pair counts)."""
+    rates in thousands, an optical tachometer counting every one of the ``n_blades`` blades, an
+    electrical rpm and its pole-pair counts)."""
     first, causes = [], []
+    # an optical or laser tachometer that counts each blade passing (2 per revolution on a 2-blade propeller: told of
+    # pole pairs and of a lbf thrust only, a thrust-stand export audit, 2026-11-30)
+    if n_blades >= 2 and model.near(data.omega / n_blades):
+        causes.append(f"an optical tachometer counting every blade read as the rpm ({n_blades} pulses per revolution: "
+                      f"set it to {n_blades} blades, or divide the rpm column by {n_blades})")
     # a rate in rpm read as rad/s (an omega column holding rpm): 9.55 times too fast, said before the pole pairs
     if model.near(data.omega * RPM):
         causes.append("a rotation rate in rpm read as rad/s (an 'omega' column holding rpm: name it rpm)")
@@ -341,11 +350,16 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
         return DataError(f"load data: {data.source}: the measured {' and '.join(absent)} is 0 at every point: not "
                          f"measured? leave it out of the fit (--quantities {','.join(fit) or 'thrust'}, or "
                          "quantities= in the API)")
+    # a slip of a quantity the data lack is no cause ('torque in lbf in' of a thrust-only file), nor an unlabelled
+    # thrust read as N where the header gave its unit ('Thrust (g)', converted: a thrust-stand export audit, 2026-11-30)
+    declared = any(" converted to N (x " in note for note in data.notes)
     causes = [why for fT, fQ, why in _UNIT_SLIPS
-              if _plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
+              if not (fT != 1.0 and "thrust" not in ratio) and not (fQ != 1.0 and "torque" not in ratio)
+              and not (declared and fT in _READ_AS_N)
+              and _plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
     if speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
-    first, rates = _rate_causes(data, model)
+    first, rates = _rate_causes(data, model, propeller.n_blades)
     causes = first + causes + rates
     if not causes and bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
         # the columns swapped (no unit slip explains the two)
