@@ -298,6 +298,8 @@ class _Csv:
         lines = array.array("q")
         # a ';'- or tab-separated file: where a decimal comma and a point were first seen, (line, column)
         marks = [None, None]
+        # per column of a ';'- or tab-separated file: where a cell like 1.059 and one like 951 were first seen
+        grouped: dict = {}
         rows = self._rows()
         next(rows)  # the header
         unnamed = unnamed_columns(self.columns)
@@ -326,6 +328,7 @@ class _Csv:
                     number = cell[:-1].strip()
                     self.percent_cells.add(c)
                 if self.sep != ",":
+                    self._thousands(c, number, line, grouped)
                     number = self._decimal_comma(c, number, line, marks)
                 try:
                     x = parse_number(number)
@@ -344,6 +347,23 @@ class _Csv:
             lines.append(line)
         return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
                 np.frombuffer(lines, dtype=np.int64).copy())
+
+    def _thousands(self, column: str, cell: str, line: int, grouped: dict) -> None:
+        """Refuse a ';'- or tab-separated file's column that holds both a cell like ``1.059`` (one to
+        three digits, a point, three digits) and a whole number of three digits (``951``): the
+        point is a thousands separator there (951, 1059), which read as a decimal point made
+        points 1000 times too small that were fitted (a thrust-stand export audit, 2026-11-30).
+        ``grouped`` holds, per column, where each kind was first seen."""
+        kind = 0 if re.fullmatch(r"[+-]?\d{1,3}\.\d{3}", cell) else 1 if re.fullmatch(r"[+-]?\d{3}", cell) else None
+        if kind is None:
+            return
+        seen = grouped.setdefault(column, [None, None])
+        seen[kind] = seen[kind] or (line, cell)
+        if seen[0] and seen[1]:
+            (l0, c0), (l1, c1) = seen
+            raise self.error(f"column {_short(self.header[self.index[column]])}: {c0} (line {l0}) beside {c1} (line "
+                             f"{l1}): a point as a thousands separator ({c0.replace('.', '')})? save the numbers "
+                             "without one", line)
 
     def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
         """A ';'- or tab-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).

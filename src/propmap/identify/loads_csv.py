@@ -157,6 +157,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if sampled:
         v, lines, texts, keys = _skip_dropouts(v, lines, texts, keys, cm, what, p, notes)
     n = lines.size
+    if "airspeed" in v:
+        v["airspeed"] = _pitot_noise(v["airspeed"], cm.column("airspeed"), notes)
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
     air_density = _air_density(v.pop("air_density", None), cm.column("air_density"), what, p, notes)
@@ -210,6 +212,19 @@ def _esc_in_percent(column: tuple, notes: list) -> tuple:
         notes.append(f"{name!r}: its values end in %: read as a throttle in percent")
         return name, factor, "%"
     return column
+
+
+def _pitot_noise(airspeed: np.ndarray, name: str, notes: list) -> np.ndarray:
+    """The airspeed with negative values down to -STATIC_AIRSPEED, a static stand's pitot noise
+    about zero, read as 0, with a note (a Series 1780 export reading -0.2 to +0.4 m/s at rest was
+    refused as a descent given as a negative airspeed: a thrust-stand export audit, 2026-11-30);
+    below -STATIC_AIRSPEED they stay, for the range check to refuse."""
+    noise = (airspeed < 0.0) & (airspeed >= -STATIC_AIRSPEED)
+    if not noise.any() or np.any(airspeed < -STATIC_AIRSPEED):
+        return airspeed
+    notes.append(f"{name!r}: {int(noise.sum())} value(s) from {airspeed[noise].min():.3g} to 0 m/s (a static "
+                 f"stand's pitot noise about zero, within {STATIC_AIRSPEED:g} m/s) read as 0")
+    return np.where(noise, 0.0, airspeed)
 
 
 def _power_note(header, cm, notes: list) -> None:

@@ -19,7 +19,8 @@ thrust, drag    N (newtons), mN, kN, kgf (kg, kilograms), gf (g, grams), lbf (lb
                 (oz, ounces)
 torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
                 (lb·in, in·lb), ozf·in (oz·in, oz-in, in·oz), lbf·ft (lb·ft, ft·lb)
-rotation speed  rpm (rev/min, r/min, 1/min, min^-1, U/min), krpm, rad/s, Hz (rev/s, rps)
+rotation speed  rpm (rev/min, r/min, 1/min, min^-1, U/min, tr/min, giri/min, obr/min), krpm, rad/s, Hz (rev/s,
+                rps)
 airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps)
 angle           deg (degrees, °), rad
 air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
@@ -28,8 +29,10 @@ air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
 1 ozf = lbf / 16; 1 in = 0.0254 m. A unit follows the name in brackets, after a comma
 (``Thrust, N``), after a blank (``Thrust g``, ``Thrust in g``) or after an underscore
-(``thrust_kgf``); German names are read too (``Schub``, ``Drehmoment``, ``Drehzahl``); a statistic's column beside its
-quantity (``thrust_std``, ``torque_err``, ``rpm_max``) is not read.
+(``thrust_kgf``); German, Spanish, French and Italian names are read too (``Schub``, ``Drehmoment``,
+``Drehzahl``; ``Empuje``, ``Par`` (with a torque's unit), ``Velocidad``; ``Poussée``, ``Couple``, ``Régime``;
+``Spinta``, ``Coppia``, ``Giri``), and ``Static thrust``, ``Thrust avg`` where no ``thrust`` is; a
+statistic's column beside its quantity (``thrust_std``, ``torque_err``, ``rpm_max``) is not read.
 """
 
 from __future__ import annotations
@@ -52,6 +55,11 @@ _ESC_UNITS = {"us": "us", "microseconds": "us", "microsecond": "us", "%": "pct",
 #: other names of the ESC signal, read where no 'ESC signal' or 'throttle' column is ('PWM (µs)' was left unread and
 #: every raw sample of a steps test fitted as a point: a thrust-stand export audit, 2026-11-27)
 _ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc pulse width", "throttle signal")
+#: other names of the thrust, read where no 'thrust' column is (beside one, with a note that they are not read)
+_THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust", "mean thrust", "thrust avg",
+                   "thrust average", "thrust mean")
+#: the names that give way to their quantity's own name (PWM beside ESC signal, Thrust avg beside Thrust)
+_ALIASES = frozenset((*_ESC_ALIASES, *_THRUST_ALIASES))
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
@@ -67,7 +75,9 @@ UNITS = {
                "ftlbf": LBF * 0.3048, "ftlb": LBF * 0.3048,
                **dict.fromkeys(("newtonmeter", "newtonmeters", "newtonmetre", "newtonmetres"), 1.0)},
     # (1/min, min^-1 and U/min: the European spellings of rpm; krpm, thousands)
+    # (tr/min, giri/min, obr/min: the French, Italian and Slavic spellings; a thrust-stand export audit, 2026-11-30)
     "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "1min": 1.0, "min1": 1.0, "min⁻¹": 1.0, "umin": 1.0,
+                 "trmin": 1.0, "girimin": 1.0, "obrmin": 1.0,
                  "krpm": 1e3, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
     "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
               "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
@@ -81,6 +91,13 @@ _NAMES = {
     # German stands' exports (Schub, Drehmoment, Drehzahl [U/min]: a user-level audit, 2026-11-28)
     "schub": ("thrust", "force"), "schubkraft": ("thrust", "force"), "drehmoment": ("torque", "torque"),
     "drehzahl": ("rpm", "rotation"),
+    # other languages' and spreadsheets' names (Empuje, Poussée, Spinta; Couple, Coppia, Par; Régime, Giri,
+    # Velocidad; Static thrust, Avg. thrust: read as nothing, a gram thrust left unsaid: an export audit, 2026-11-30)
+    **dict.fromkeys(("empuje", "poussée", "poussee", "spinta"), ("thrust", "force")),
+    **dict.fromkeys(_THRUST_ALIASES, ("thrust", "force")),
+    **dict.fromkeys(("couple", "coppia", "par", "par motor"), ("torque", "torque")),
+    **dict.fromkeys(("régime", "regime", "giri", "velocidad", "vitesse", "vitesse de rotation", "velocidad de rotación",
+                     "velocidad de rotacion", "velocidad de giro", "velocità di rotazione"), ("rpm", "rotation")),
     # the symbol of a rotational frequency (ISO 80000-3:2019: n, revolutions per time), read only with a
     # rotation unit, 'n (rev/s)', 'n [1/min]', 'n_rps' (a bare 'n' is as often a count: _UNIT_ONLY)
     "n": ("rpm", "rotation"),
@@ -107,8 +124,9 @@ _NAMES = {
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
     "density": ("air_density", "density"), "rho": ("air_density", "density"),
 }
-#: names read only where a rotation unit follows them; a bare one (a count, a sample number) is not read
-_UNIT_ONLY = frozenset(("n",))
+#: names read only where a unit of their quantity follows them; a bare one is not read (n: a count, a sample number;
+#: par: a pair, a parameter)
+_UNIT_ONLY = frozenset(("n", "par"))
 #: per name, rotation units beyond UNITS["rotation"]: 1/s of a rotational frequency n is a revolution per second (ISO
 #: 80000-3:2019; German stands write Drehzahl in 1/s too), of an angular speed it would be rad/s
 _PER_SECOND = {tok: 60.0 for tok in ("1s", "s1", "s⁻¹")}
@@ -150,6 +168,10 @@ _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", 
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
 _NOT_AIRSPEED = re.compile(r"\b(tip|blade|slipstream|induced|exit|wake|jet|outlet|downwash|propwash|rotor)\b")
+#: the force units' tokens, for naming a force column that is not read
+_FORCE_TOKENS = frozenset(UNITS["force"])
+#: an acceleration's or a vibration's column, whose unit g is no gram (AccX (g), Vibration (g), a_z [g])
+_ACCELERATION_LIKE = re.compile(r"^(acc|a[ _]?[xyz]\b)|accel|vibration|\bvib\b|\bimu\b|g[ -]?force|\bgyro")
 #: the rotation-speed columns, in the order of preference when several are present
 ROTATION_COLUMNS = ("rpm", "rpm_optical", "rpm_electrical")
 #: what each quantity is looked for as, for messages
@@ -185,9 +207,10 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
 
 
 def _unit_missing(base: str, unit: str | None) -> bool:
-    """Whether ``base`` is a name read only with a rotation unit (:data:`_UNIT_ONLY`: ``n``) and
-    ``unit`` is none (a bare ``n``, a count) or not a rotation unit: such a column is not read."""
-    return base in _UNIT_ONLY and (unit is None or not (_token(unit) in UNITS["rotation"]
+    """Whether ``base`` is a name read only with a unit of its quantity (:data:`_UNIT_ONLY`: ``n``
+    with a rotation unit, ``par`` with a torque's) and ``unit`` is none (a bare ``n``, a count) or
+    not such a unit: such a column is not read."""
+    return base in _UNIT_ONLY and (unit is None or not (_token(unit) in UNITS[_NAMES[base][1]]
                                                         or _token(unit) in _NAME_UNITS.get(base, {})))
 
 
@@ -353,13 +376,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         factor = _factor(name, base, unit, error)
         if quantity in cm.columns:
             first = cm.columns[quantity][0]
-            if quantity != "esc" or (base in _ESC_ALIASES) == (split_header(first)[0] in _ESC_ALIASES):
+            if (base in _ALIASES) == (split_header(first)[0] in _ALIASES):
                 raise error(f"columns {first!r} and {name!r} both give {quantity}: keep one")
-            # an alias (PWM) gives way to the signal's own name (ESC signal, throttle)
-            alias, signal = (name, first) if base in _ESC_ALIASES else (first, name)
-            cm.notes.append(f"column {alias!r} is not read: the ESC signal is read from {signal!r}")
+            # an alias (PWM, Thrust avg) gives way to the quantity's own name (ESC signal, throttle; Thrust)
+            alias, signal = (name, first) if base in _ALIASES else (first, name)
+            what = "the ESC signal" if quantity == "esc" else f"the {quantity}"
+            cm.notes.append(f"column {alias!r} is not read: {what} is read from {signal!r}")
             if alias == name:
                 continue
+            cm.notes[:] = [note for note in cm.notes if not note.startswith(f"{alias!r} converted")]
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
             # (rates are read in rpm, angles in deg; the note named the unit's token, 'from nmm': a docs audit)
@@ -395,17 +420,26 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
 
 def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
     """map_columns without a rotation-speed column: refused, saying where it looks like a
-    two-rotor export (columns for rotors A and B) or like lines above the header."""
+    two-rotor export (columns for rotors A and B), where a column is in a rotation unit under a
+    name not read (``Velocita (rpm)``), where a bare ``n`` stands, or like lines above the header."""
     pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
-    hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
-            "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
-            "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)"
-            if pair else "")
     bare_n = [n for n in names if split_header(n)[0] in _UNIT_ONLY]
-    if bare_n:  # ('n' is read as a rotational frequency only with its unit: a count is written so too)
+    # a column in a rotation unit under a name propmap does not read ('Velocidad (rpm)' was told of lines above the
+    # header: a thrust-stand export audit, 2026-11-30)
+    in_rpm = [n for n in names
+              if n.strip() and (u := split_header(n)[1]) is not None and _token(u) in UNITS["rotation"]]
+    hint = ""
+    if pair:
+        hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
+                "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
+                "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)")
+    elif in_rpm:
+        hint = (f"; column {in_rpm[0]!r} is in a rotation speed's unit but its name is not read: name it 'rpm' (or "
+                f"'Motor speed ({split_header(in_rpm[0])[1]})')")
+    elif bare_n:  # ('n' is read as a rotational frequency only with its unit: a count is written so too)
         hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: 'n (rev/s)', "
                 "'n (1/min)' or 'n_rpm'")
-    elif not pair and not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
+    elif not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
         hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
                 "are the file's first line (a load file's header is looked for in its first 41 lines)")
     raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
@@ -495,8 +529,12 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
 def _note_unread_force(cm: ColumnMap, split: dict) -> None:
     """map_columns without a thrust column: a force column under another name ('Force (N)') is
     named in a note (it was left out unsaid and a torque-only fit ran: a user-level audit)."""
-    forces = [n for n, (b, u) in split.items() if b not in _NAMES and u is not None  # (not g or kg: AccX (g))
-              and _token(u) in ("n", "mn", "kn", "kgf", "gf", "lbf", "ozf")]
+    # any force unit (a gram thrust under 'Weight (g)', 'Thrust avg (g)' was left unsaid: a thrust-stand export
+    # audit, 2026-11-30), but not an accelerometer's or a vibration's g (AccX (g), Vibration (g))
+    # (a unit after an underscore too, weight_g, load_kgf; not _n there: sample_n is a count)
+    forces = [n for n, (b, u) in split.items() if b not in _NAMES and not _ACCELERATION_LIKE.search(b)
+              and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in _FORCE_TOKENS
+              and (u is not None or not b.endswith("_n"))]
     if forces:
         cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
                         "force) with its unit to fit it; without a thrust column "

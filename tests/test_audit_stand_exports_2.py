@@ -1,0 +1,145 @@
+"""Thrust-stand exports, motor makers' tables and lab spreadsheets as a user-level audit wrote
+them (2026-11-30): each test reproduces what the audit found and fails on the code before it."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.identify import DataError, read_loads
+from propmap.identify.sanity import sanity_check
+from propmap.identify.stand import map_columns
+
+G0 = 9.80665
+
+
+def _rotor(rpm):
+    """apce_10x7's static thrust [N] and torque [N m] with the generic set at ``rpm``."""
+    r = pm.rotor_loads(pm.load_propeller("apce_10x7"), pm.generic_params(), np.asarray(rpm) * np.pi / 30, 0.0, 0.0)
+    return r.thrust, r.torque
+
+
+@pytest.mark.parametrize("name", ["Static thrust (g)", "Weight (g)", "load_g", "Force (kg)", "Pull (oz)",
+                                  "weight_kgf"])
+def test_a_force_in_grams_under_another_name_is_named_not_dropped(name):
+    """A gram (or kg, oz) force under a name not read was left out without a word and a torque-only
+    fit ran (only N, kgf, gf, lbf, ozf were named); 'Static thrust' is now read as the thrust."""
+    cm = map_columns(["RPM", name, "Torque (N·m)"])
+    if name.startswith("Static thrust"):
+        assert cm.column("thrust") == name and cm.columns["thrust"][1] == pytest.approx(G0 * 1e-3)
+    else:
+        assert cm.column("thrust") is None
+        assert any(n.startswith(f"column {name!r} (a force) is not read") and "only the torque is fitted" in n
+                   for n in cm.notes), cm.notes
+
+
+@pytest.mark.parametrize("name", ["AccX (g)", "Vibration (g)", "a_z (g)", "Accel Y [g]", "acc_x_g", "sample_n"])
+def test_an_accelerometers_g_is_no_gram(name):
+    """An accelerometer's or a vibration sensor's g is an acceleration, not a gram, and a count's _n
+    no newton: not noted as a force."""
+    assert not [n for n in map_columns(["rpm", "torque", name]).notes if "(a force)" in n]
+
+
+@pytest.mark.parametrize("header, thrust, torque", [
+    (["Velocidad (rpm)", "Empuje (g)", "Par (N·m)"], G0 * 1e-3, 1.0),
+    (["Régime (tr/min)", "Poussée (g)", "Couple (N.m)"], G0 * 1e-3, 1.0),
+    (["Giri (giri/min)", "Spinta (kg)", "Coppia (Nm)"], G0, 1.0)])
+def test_spanish_french_and_italian_headers_are_read(tmp_path, header, thrust, torque):
+    """Spanish, French and Italian spreadsheets' names and units (Empuje, Poussée, Spinta; Par,
+    Couple, Coppia; Velocidad, Régime, Giri; tr/min, giri/min) read as the thrust, torque and rpm:
+    they were told of 'lines above the header'."""
+    rpm = np.arange(4000.0, 9001.0, 1000.0)
+    T, Q = _rotor(rpm)
+    path = tmp_path / "es.csv"
+    path.write_text(",".join(header) + "\n" + "".join(f"{a:.0f},{t / thrust:.6g},{q / torque:.6g}\n"
+                                                      for a, t, q in zip(rpm, T, Q)), encoding="utf-8")
+    d = read_loads(path)
+    np.testing.assert_allclose(d.omega, rpm * np.pi / 30)
+    np.testing.assert_allclose(d.measured["thrust"], T, rtol=1e-5)
+    np.testing.assert_allclose(d.measured["torque"], Q, rtol=1e-5)
+
+
+def test_a_bare_par_is_not_a_torque():
+    """'Par' is read as a torque only with a torque's unit (a bare one may be a pair or a parameter)."""
+    assert map_columns(["rpm", "thrust", "par"]).column("torque") is None
+    assert map_columns(["rpm", "thrust", "Par (N m)"]).column("torque") == "Par (N m)"
+
+
+def test_an_averaged_thrust_gives_way_to_the_thrust():
+    """'Thrust avg (g)' is read where it is the only thrust; beside 'Thrust (g)' it gives way, with a
+    note and without a stale conversion note, in either order."""
+    assert map_columns(["RPM", "Thrust avg (g)"]).column("thrust") == "Thrust avg (g)"
+    for names in (["RPM", "Thrust (g)", "Thrust avg (g)"], ["RPM", "Thrust avg (g)", "Thrust (g)"]):
+        cm = map_columns(names)
+        assert cm.column("thrust") == "Thrust (g)"
+        assert "column 'Thrust avg (g)' is not read: the thrust is read from 'Thrust (g)'" in cm.notes
+        assert not [n for n in cm.notes if n.startswith("'Thrust avg (g)' converted")], cm.notes
+    with pytest.raises(ValueError, match="both give thrust"):
+        map_columns(["RPM", "Thrust avg (g)", "Static thrust (g)"])
+
+
+def test_a_column_in_rpm_under_another_name_is_named_in_the_error():
+    """With no rotation-speed column read, a column whose unit is a rotation speed's is named (it
+    was 'lines above the header?', wrong for a header on line 1)."""
+    with pytest.raises(ValueError, match=r"column 'Obroty \(obr/min\)' is in a rotation speed's unit but its name "
+                                         r"is not read: name it 'rpm'"):
+        map_columns(["Obroty (obr/min)", "thrust"])
+
+
+def test_a_static_stands_pitot_noise_below_zero_reads_as_zero(tmp_path):
+    """A static export's airspeed reading -0.2 to +0.3 m/s (a pitot's noise about zero) was refused
+    as 'a descent given as a negative airspeed'; it reads as 0 with a note, and -0.5 m/s is still
+    refused."""
+    rpm = np.arange(4000.0, 9001.0, 1000.0)
+    T, _ = _rotor(rpm)
+    V = [-0.05, 0.1, -0.2, 0.3, 0.02, 0.0]
+    path = tmp_path / "pitot.csv"
+    path.write_text("rpm,Airspeed (m/s),thrust\n" + "".join(f"{a:.0f},{v:g},{t:.6g}\n" for a, v, t in zip(rpm, V, T)))
+    d = read_loads(path)
+    np.testing.assert_array_equal(d.airspeed, [0.0, 0.1, 0.0, 0.3, 0.02, 0.0])
+    assert "'Airspeed (m/s)': 2 value(s) from -0.2 to 0 m/s (a static stand's pitot noise about zero, within " \
+           "0.3 m/s) read as 0" in d.notes
+    path.write_text(path.read_text().replace(",-0.2,", ",-0.5,"))
+    with pytest.raises(DataError, match=r"airspeed must be in \[0, 500\] m/s"):
+        read_loads(path)
+
+
+def test_a_point_as_a_thousands_separator_is_refused(tmp_path):
+    """In a ';' file a column of 951 and 1.059 (grams) holds a thousands separator; read as decimal
+    points it gave points a thousand times small that were fitted. Decimal commas and a column of
+    decimals alone still read."""
+    bad = tmp_path / "de.csv"
+    bad.write_text("Drehzahl [U/min];Schub [g];Drehmoment [Nmm]\n5000;451;79\n6000;651;110\n7502;951;169\n"
+                   "8009;1.059;188\n9000;1.340;240\n9499;1.514;267\n")
+    with pytest.raises(DataError, match=r"line 5: column 'Schub \[g\]': 1.059 \(line 5\) beside 451 \(line 2\): a "
+                                        r"point as a thousands separator \(1059\)\?"):
+        read_loads(bad)
+    ok = tmp_path / "ok.csv"
+    ok.write_text("Drehzahl [U/min];Schub [N];Drehmoment [Nm]\n5000;4,51;0,079\n6000;6,51;0,110\n7502;9,51;0,169\n"
+                  "8009;10,59;0,188\n9000;13,40;0,240\n9499;15,14;0,267\n")
+    assert read_loads(ok).measured["thrust"][3] == pytest.approx(10.59)
+    points = tmp_path / "points.csv"
+    text = bad.read_text()
+    for grams in ("451", "651", "951"):
+        text = text.replace(f";{grams};", f";0.{grams};")
+    points.write_text(text)
+    assert read_loads(points).measured["thrust"][3] == pytest.approx(1.059 * G0 * 1e-3)
+
+
+@pytest.mark.parametrize("torque", [False, True])
+def test_an_rpm_counted_per_blade_is_named_as_the_likely_cause(torque):
+    """A tachometer counting both blades doubles the rpm; a thrust-only file was told 'thrust in lbf
+    read as N ... or thrust in lbf and torque in lbf in' (a torque it lacks, a unit its header
+    gave): now the per-blade count is named first, and no torque slip for a file without torque."""
+    rpm = np.arange(2500.0, 7600.0, 500.0)
+    T, Q = _rotor(rpm)
+    measured = {"thrust": T, **({"torque": Q} if torque else {})}
+    notes = ("'Thrust (g)' converted to N (x 0.00980665)",)
+    data = pm.identify.LoadData(2 * rpm * np.pi / 30, np.zeros(rpm.size), np.zeros(rpm.size), measured,
+                                np.full(rpm.size, "all", dtype=object), "tacho.csv", None, notes)
+    with pytest.raises(DataError) as exc:
+        sanity_check(data, pm.load_propeller("apce_10x7"))
+    msg = str(exc.value)
+    assert "likely an optical tachometer counting every blade read as the rpm (2 pulses per revolution" in msg, msg
+    assert "lbf" not in msg and ("torque" in msg) == torque, msg
