@@ -143,3 +143,24 @@ def test_an_rpm_counted_per_blade_is_named_as_the_likely_cause(torque):
     msg = str(exc.value)
     assert "likely an optical tachometer counting every blade read as the rpm (2 pulses per revolution" in msg, msg
     assert "lbf" not in msg and ("torque" in msg) == torque, msg
+
+
+@pytest.mark.parametrize("temperatures, read", [((35.0, 45.0, 55.0, 65.0, 75.0, 85.0), False),  # a motor heating
+                                                ((60.0,) * 6, False),  # above 50 degC
+                                                ((21.0, 22.0, 22.5, 23.0, 23.5, 24.0), True)])  # a lab's air
+def test_a_motors_temperature_is_not_taken_for_the_airs(tmp_path, temperatures, read):
+    """A 'Temperature (°C)' column beside 'Pressure (hPa)' that rises 35 -> 85 degC with the motor
+    was taken as the air's (1.06 kg/m^3: every point 14% off, with only a note); a median above
+    50 degC or a span over 20 K is not the air's: the columns are not read, with a note."""
+    rpm = np.arange(4000.0, 9001.0, 1000.0)
+    T, Q = _rotor(rpm)
+    path = tmp_path / "stand.csv"
+    path.write_text("RPM,Thrust (N),Torque (N m),Temperature (°C),Pressure (hPa)\n" + "".join(
+        f"{a:.0f},{t:.6g},{q:.6g},{c:g},1013\n" for a, t, q, c in zip(rpm, T, Q, temperatures)), encoding="utf-8")
+    d = read_loads(path)
+    if read:
+        assert d.air_density == pytest.approx(101300 / (287.05 * (np.median(temperatures) + 273.15)), rel=1e-3)
+    else:
+        assert d.air_density is None
+        assert any("not the air's (above 50 degC or spanning over 20 K; a motor's or an ESC's temperature?)" in n
+                   for n in d.notes), d.notes

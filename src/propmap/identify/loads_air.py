@@ -51,6 +51,10 @@ _T_UNITS = {"c": _C, "°c": _C, "ºc": _C, "degc": _C, "deg c": _C, "celsius": _
 _P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "mb": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
             "psia": 6894.757293168, "inhg": 3386.389, "in hg": 3386.389, "mmhg": 133.322387415, "torr": 133.322368421,
             "atm": 101325.0}
+#: a temperature column is not the air's above this median [K] (50 degC) or where its rows span more than AIR_T_SPAN [K]
+#: (a motor's or an ESC's, heating through a test)
+AIR_T_MAX = 323.15
+AIR_T_SPAN = 20.0
 #: the air densities a temperature and a pressure column are believed to give without a warning [kg/m^3]
 #: (sea level at -20 to 45 degC; 3,000 m; beyond them a column is more likely another quantity)
 PLAUSIBLE_DENSITY = (0.85, 1.4)
@@ -122,6 +126,14 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
             notes.append(f"{c!r}: a unit propmap does not know" + skip)
             return None
         vals[kind] = med * table[unit][0] + table[unit][1] if kind == "T" else med * table[unit]
+        if kind == "T" and (vals["T"] > AIR_T_MAX or table[unit][0] * float(np.ptp(x)) > AIR_T_SPAN):
+            # (a motor's temperature rising 35 -> 85 degC under a bare 'Temperature' gave 1.06 kg/m^3 and every
+            # point 14% off: a thrust-stand export audit, 2026-11-30)
+            notes.append(f"{c!r} is {vals['T'] - 273.15:.3g} degC in the median and spans "
+                         f"{table[unit][0] * float(np.ptp(x)):.3g} K over the rows: not the air's (above "
+                         f"{AIR_T_MAX - 273.15:g} degC or spanning over {AIR_T_SPAN:g} K; a motor's or an ESC's "
+                         "temperature?)" + skip)
+            return None
     try:  # (the air of --temperature-c/--pressure-pa: its gas constant and its ranges of T and p)
         rho = Air.from_conditions(vals["T"], vals["p"]).rho
     except ValueError as exc:
