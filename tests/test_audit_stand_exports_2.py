@@ -164,3 +164,16 @@ def test_a_motors_temperature_is_not_taken_for_the_airs(tmp_path, temperatures, 
         assert d.air_density is None
         assert any("not the air's (above 50 degC or spanning over 20 K; a motor's or an ESC's temperature?)" in n
                    for n in d.notes), d.notes
+
+
+@pytest.mark.parametrize("names", [["ESC (µs)", "Throttle (%)", "rpm", "thrust"],
+                                   ["Throttle (%)", "ESC signal (µs)", "rpm", "thrust"]])
+def test_a_throttle_beside_an_esc_signal_gives_way(names):
+    """An export with both a pulse width and a throttle column was refused ('both give esc: keep
+    one'); the pulse width is read, the throttle named as not read (PWM still gives way to both)."""
+    cm = map_columns(names)
+    assert cm.column("esc").startswith("ESC")
+    assert f"column 'Throttle (%)' is not read: the ESC signal is read from {cm.column('esc')!r}" in cm.notes
+    assert map_columns(["Throttle (%)", "PWM (us)", "rpm", "thrust"]).column("esc") == "Throttle (%)"
+    with pytest.raises(ValueError, match="both give esc"):
+        map_columns(["ESC (us)", "ESC signal (us)", "rpm", "thrust"])

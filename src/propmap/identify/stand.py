@@ -58,8 +58,10 @@ _ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc
 #: other names of the thrust, read where no 'thrust' column is (beside one, with a note that they are not read)
 _THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust", "mean thrust", "thrust avg",
                    "thrust average", "thrust mean")
-#: the names that give way to their quantity's own name (PWM beside ESC signal, Thrust avg beside Thrust)
-_ALIASES = frozenset((*_ESC_ALIASES, *_THRUST_ALIASES))
+#: the rank of a name that gives way to another of its quantity (0: the quantity's own; PWM gives way to a throttle,
+#: both to an ESC signal; Thrust avg to Thrust); two of one rank are refused ('ESC (µs)' beside 'Throttle (%)' was:
+#: a thrust-stand export audit, 2026-11-30)
+_RANK = {**dict.fromkeys(_ESC_ALIASES, 2), **dict.fromkeys(_THRUST_ALIASES, 1), "throttle": 1}
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
@@ -376,10 +378,11 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         factor = _factor(name, base, unit, error)
         if quantity in cm.columns:
             first = cm.columns[quantity][0]
-            if (base in _ALIASES) == (split_header(first)[0] in _ALIASES):
+            rank, rank_first = _RANK.get(base, 0), _RANK.get(split_header(first)[0], 0)
+            if rank == rank_first:
                 raise error(f"columns {first!r} and {name!r} both give {quantity}: keep one")
             # an alias (PWM, Thrust avg) gives way to the quantity's own name (ESC signal, throttle; Thrust)
-            alias, signal = (name, first) if base in _ALIASES else (first, name)
+            alias, signal = (name, first) if rank > rank_first else (first, name)
             what = "the ESC signal" if quantity == "esc" else f"the {quantity}"
             cm.notes.append(f"column {alias!r} is not read: {what} is read from {signal!r}")
             if alias == name:
