@@ -177,3 +177,16 @@ def test_a_throttle_beside_an_esc_signal_gives_way(names):
     assert map_columns(["Throttle (%)", "PWM (us)", "rpm", "thrust"]).column("esc") == "Throttle (%)"
     with pytest.raises(ValueError, match="both give esc"):
         map_columns(["ESC (us)", "ESC signal (us)", "rpm", "thrust"])
+
+
+def test_a_wrapped_quoted_heading_does_not_hide_the_separator(tmp_path):
+    """A spreadsheet's heading wrapped over two lines in its quotes ("Drehzahl<newline>[U/min]") in a
+    ';' file: the separator was looked for in the first line alone, the file read with ',' and
+    refused ('a closing quote must be followed by a comma'); it reads as the one-line heading does."""
+    rows = "5000;4,51;0,079\n6000;6,51;0,110\n7502;9,51;0,169\n8009;10,59;0,188\n9000;13,40;0,240\n"
+    wrapped, plain = tmp_path / "wrapped.csv", tmp_path / "plain.csv"
+    wrapped.write_text('"Drehzahl\n[U/min]";"Schub\n[N]";"Drehmoment\n[Nm]"\n' + rows)
+    plain.write_text("Drehzahl [U/min];Schub [N];Drehmoment [Nm]\n" + rows)
+    a, b = read_loads(wrapped, min_points=1), read_loads(plain, min_points=1)
+    np.testing.assert_array_equal(a.omega, b.omega)
+    np.testing.assert_array_equal(a.measured["thrust"], b.measured["thrust"])

@@ -179,7 +179,15 @@ class _Csv:
         # ',', ';' (spreadsheets in locales with a decimal comma) or a tab, from the header line
         # (and its first data row: a separator that occurs as often in both)
         lines = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=8)[:8]
-        head, *rows = [r.decode("utf-8", "replace") for r in lines if r.strip()][:2] or [""]
+        # a quoted name over two lines ("Drehzahl<newline>[U/min]", a spreadsheet's wrapped heading) is one line here
+        # (its first line alone gave no ';' and the file was read with ',': an export audit, 2026-11-30)
+        joined: list[bytes] = []
+        for r in lines:
+            if joined and joined[-1].count(b'"') % 2:
+                joined[-1] += b"\n" + r
+            else:
+                joined.append(r)
+        head, *rows = [r.decode("utf-8", "replace") for r in joined if r.strip()][:2] or [""]
         self.sep = header_separator(head, rows[0] if rows else None)
         self.header_line = 0
         self.columns: list[str] = []
