@@ -190,3 +190,15 @@ def test_a_wrapped_quoted_heading_does_not_hide_the_separator(tmp_path):
     a, b = read_loads(wrapped, min_points=1), read_loads(plain, min_points=1)
     np.testing.assert_array_equal(a.omega, b.omega)
     np.testing.assert_array_equal(a.measured["thrust"], b.measured["thrust"])
+
+
+def test_an_extra_field_says_what_likely_made_it(tmp_path):
+    """A row with more fields than the header said only so; it now names an unquoted comma in a
+    cell's text (a stand's 'App message') or decimal commas as the likely causes."""
+    path = tmp_path / "app.csv"
+    path.write_text("Time (s),ESC signal (µs),Thrust (N),Motor Optical Speed (RPM),App message\n1,1200,1.0,3000,\n"
+                    "2,1300,1.5,4000,Warning: high temp, check motor\n", encoding="utf-8")
+    with pytest.raises(DataError, match=r"line 3: 6 fields, but the header \(line 1\) has 5: a comma inside a cell's "
+                                        r"text \(the last column's, 'App message'\?\) that is not quoted, or decimal "
+                                        r"commas in a comma-separated file"):
+        read_loads(path)

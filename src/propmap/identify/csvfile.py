@@ -313,7 +313,11 @@ class _Csv:
         unnamed = unnamed_columns(self.columns)
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
-                raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}", line)
+                mark = {";": "semicolon", "\t": "tab"}.get(self.sep, "comma")
+                # (an unquoted comma in a stand export's last text cell, 'App message': an export audit, 2026-11-30)
+                why = (f": a {mark} inside a cell's text (the last column's, {_short(self.header[-1])}?) that is not "
+                       "quoted" + (", or decimal commas in a comma-separated file" if mark == "comma" else ""))
+                raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}{why}", line)
             cut = [j for c, j in cols if j >= len(cells) and (c in stop or c not in optional)] if len(cells) < n else ()
             if cut:  # (a row cut short: read as a stopped motor's row and skipped until 2026-11-29, an audit)
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}: the row "
