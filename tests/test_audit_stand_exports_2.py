@@ -202,3 +202,9 @@ def test_an_extra_field_says_what_likely_made_it(tmp_path):
                                         r"text \(the last column's, 'App message'\?\) that is not quoted, or decimal "
                                         r"commas in a comma-separated file"):
         read_loads(path)
+
+
+@pytest.mark.parametrize("unit, factor", [("kgf·m", G0), ("kg·m", G0), ("gf·m", G0 * 1e-3), ("g·m", G0 * 1e-3)])
+def test_a_torque_in_kgf_m_or_g_m_is_read(unit, factor):
+    """Torque in kgf·m or gf·m (motor makers' tables) was refused as an unknown unit."""
+    assert map_columns(["rpm", f"Torque ({unit})"]).columns["torque"][1] == pytest.approx(factor)

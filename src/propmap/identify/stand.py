@@ -17,8 +17,8 @@ Units (a quantity without a unit is SI, rpm for rotation speed):
 ==============  ===================================================================
 thrust, drag    N (newtons), mN, kN, kgf (kg, kilograms), gf (g, grams), lbf (lb, lbs, pounds), ozf
                 (oz, ounces)
-torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·cm (kg·cm), gf·cm (g·cm), lbf·in
-                (lb·in, in·lb), ozf·in (oz·in, oz-in, in·oz), lbf·ft (lb·ft, ft·lb)
+torque          N·m (Nm, N.m, N m), N·mm (Nmm), N·cm, mN·m, kgf·m (kg·m), kgf·cm (kg·cm), gf·m (g·m), gf·cm
+                (g·cm), lbf·in (lb·in, in·lb), ozf·in (oz·in, oz-in, in·oz), lbf·ft (lb·ft, ft·lb)
 rotation speed  rpm (rev/min, r/min, 1/min, min^-1, U/min, tr/min, giri/min, obr/min), krpm, rad/s, Hz (rev/s,
                 rps)
 airspeed        m/s (mps), km/h (kmh, kph), mph, kn (kt, kts, knots), ft/s (fps)
@@ -75,6 +75,8 @@ UNITS = {
                "ozfin": LBF / 16 * INCH, "ozin": LBF / 16 * INCH, "lbfft": LBF * 0.3048, "lbft": LBF * 0.3048,
                "inlbf": LBF * INCH, "inlb": LBF * INCH, "inozf": LBF / 16 * INCH, "inoz": LBF / 16 * INCH,
                "ftlbf": LBF * 0.3048, "ftlb": LBF * 0.3048,
+               # (kgf·m and gf·m: a motor maker's tables; refused as unknown, an export audit, 2026-11-30)
+               "kgfm": G0, "kgm": G0, "gfm": G0 * 1e-3, "gm": G0 * 1e-3,
                **dict.fromkeys(("newtonmeter", "newtonmeters", "newtonmetre", "newtonmetres"), 1.0)},
     # (1/min, min^-1 and U/min: the European spellings of rpm; krpm, thousands)
     # (tr/min, giri/min, obr/min: the French, Italian and Slavic spellings; a thrust-stand export audit, 2026-11-30)
