@@ -29,10 +29,12 @@ air density     kg/m³ (kg/m^3, g/L), g/cm³, lb/ft³
 1 kgf = 9.80665 N (the standard gravity, by definition); 1 lbf = 4.4482216152605 N;
 1 ozf = lbf / 16; 1 in = 0.0254 m. A unit follows the name in brackets, after a comma
 (``Thrust, N``), after a blank (``Thrust g``, ``Thrust in g``) or after an underscore
-(``thrust_kgf``); German, Spanish, French and Italian names are read too (``Schub``, ``Drehmoment``,
-``Drehzahl``; ``Empuje``, ``Par`` (with a torque's unit), ``Velocidad``; ``Poussée``, ``Couple``, ``Régime``;
-``Spinta``, ``Coppia``, ``Giri``), and ``Static thrust``, ``Thrust avg`` where no ``thrust`` is; a
-statistic's column beside its quantity (``thrust_std``, ``torque_err``, ``rpm_max``) is not read.
+(``thrust_kgf``); German names are read too (``Schub``, ``Drehmoment``, ``Drehzahl``), and Spanish,
+French and Italian ones where a unit of their quantity follows them (``Empuje (g)``, ``Par (N m)``,
+``Velocidad (rpm)``; ``Poussée``, ``Couple``, ``Régime``, ``Vitesse``; ``Spinta``, ``Coppia``, ``Giri``:
+a bare ``Vitesse`` may be an airspeed), as is ``n``; ``Static thrust``, ``Thrust avg`` where no
+``thrust`` is; a statistic's column beside its quantity (``thrust_std``, ``torque_err``, ``rpm_max``)
+is not read.
 """
 
 from __future__ import annotations
@@ -95,16 +97,9 @@ _NAMES = {
     # German stands' exports (Schub, Drehmoment, Drehzahl [U/min]: a user-level audit, 2026-11-28)
     "schub": ("thrust", "force"), "schubkraft": ("thrust", "force"), "drehmoment": ("torque", "torque"),
     "drehzahl": ("rpm", "rotation"),
-    # other languages' and spreadsheets' names (Empuje, Poussée, Spinta; Couple, Coppia, Par; Régime, Giri,
-    # Velocidad; Static thrust, Avg. thrust: read as nothing, a gram thrust left unsaid: an export audit, 2026-11-30)
-    **dict.fromkeys(("empuje", "poussée", "poussee", "spinta"), ("thrust", "force")),
+    # a spreadsheet's Static thrust, Avg. thrust (read as nothing, a gram thrust left unsaid: an export audit,
+    # 2026-11-30); they give way to a 'thrust' column (_RANK)
     **dict.fromkeys(_THRUST_ALIASES, ("thrust", "force")),
-    **dict.fromkeys(("couple", "coppia", "par", "par motor"), ("torque", "torque")),
-    **dict.fromkeys(("régime", "regime", "giri", "velocidad", "vitesse", "vitesse de rotation", "velocidad de rotación",
-                     "velocidad de rotacion", "velocidad de giro", "velocità di rotazione"), ("rpm", "rotation")),
-    # the symbol of a rotational frequency (ISO 80000-3:2019: n, revolutions per time), read only with a
-    # rotation unit, 'n (rev/s)', 'n [1/min]', 'n_rps' (a bare 'n' is as often a count: _UNIT_ONLY)
-    "n": ("rpm", "rotation"),
     # the in-plane force along the in-plane airspeed, by the names wind-tunnel tests give it
     "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
     "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),
@@ -128,9 +123,21 @@ _NAMES = {
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
     "density": ("air_density", "density"), "rho": ("air_density", "density"),
 }
-#: names read only where a unit of their quantity follows them; a bare one is not read (n: a count, a sample number;
-#: par: a pair, a parameter)
-_UNIT_ONLY = frozenset(("n", "par"))
+#: names read only where a unit of their quantity follows them ('n (rev/s)', 'Empuje (g)', 'Velocidad (rpm)'); a bare
+#: one, or one in another quantity's unit, is not read, as a name propmap does not know: n is as often a count, par a
+#: pair, vitesse and velocidad an airspeed, and an underscore after one ('vitesse_vent', 'couple_moteur') no unit (a
+#: review of the export audit's names, 2026-11-30)
+_UNIT_ONLY_NAMES = {
+    # the symbol of a rotational frequency (ISO 80000-3:2019: n, revolutions per time)
+    "n": ("rpm", "rotation"),
+    # Spanish, French and Italian stands' and spreadsheets' names (an export audit, 2026-11-30)
+    **dict.fromkeys(("empuje", "poussée", "poussee", "spinta"), ("thrust", "force")),
+    **dict.fromkeys(("couple", "coppia", "par", "par motor"), ("torque", "torque")),
+    **dict.fromkeys(("régime", "regime", "giri", "velocidad", "vitesse", "vitesse de rotation", "velocidad de rotación",
+                     "velocidad de rotacion", "velocidad de giro", "velocità di rotazione"), ("rpm", "rotation")),
+}
+#: every name whose unit split_header reads
+_PARSED = {**_NAMES, **_UNIT_ONLY_NAMES}
 #: per name, rotation units beyond UNITS["rotation"]: 1/s of a rotational frequency n is a revolution per second (ISO
 #: 80000-3:2019; German stands write Drehzahl in 1/s too), of an angular speed it would be rad/s
 _PER_SECOND = {tok: 60.0 for tok in ("1s", "s1", "s⁻¹")}
@@ -191,7 +198,7 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
     recognised quantity name is ``base`` (in _NAMES) and unit ``unit`` (None: the quantity's SI,
     except ``omega``, the field's symbol of a rotation rate in rad/s, and ``rps`` or ``rev/s``,
     revolutions per second)."""
-    quantity, kind = _NAMES[base]
+    quantity, kind = _PARSED[base]
     if kind is None:
         return 1.0
     if unit is None and kind == "angle" and base != quantity:  # 'incidence': degrees or radians? (1.0 is either)
@@ -211,11 +218,18 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
 
 
 def _unit_missing(base: str, unit: str | None) -> bool:
-    """Whether ``base`` is a name read only with a unit of its quantity (:data:`_UNIT_ONLY`: ``n``
-    with a rotation unit, ``par`` with a torque's) and ``unit`` is none (a bare ``n``, a count) or
-    not such a unit: such a column is not read."""
-    return base in _UNIT_ONLY and (unit is None or not (_token(unit) in UNITS[_NAMES[base][1]]
-                                                        or _token(unit) in _NAME_UNITS.get(base, {})))
+    """Whether ``base`` is a name read only with a unit of its quantity (:data:`_UNIT_ONLY_NAMES`:
+    ``n`` with a rotation unit, ``par`` with a torque's) and ``unit`` is none (a bare ``n``, a
+    count) or not such a unit: such a column is not read."""
+    return base in _UNIT_ONLY_NAMES and (unit is None or not (
+        _token(unit) in UNITS[_UNIT_ONLY_NAMES[base][1]] or _token(unit) in _NAME_UNITS.get(base, {})))
+
+
+def _entry(base: str, unit: str | None):
+    """(quantity, kind) of a column that split_header gave ``base`` and ``unit``; None: not read."""
+    if base in _NAMES:
+        return _NAMES[base]
+    return None if base not in _UNIT_ONLY_NAMES or _unit_missing(base, unit) else _UNIT_ONLY_NAMES[base]
 
 
 def _token(unit: str) -> str:
@@ -245,14 +259,14 @@ def split_header(name: str) -> tuple[str, str | None]:
     if m:
         return m.group(1).strip().lower(), m.group(2).strip()
     low = name.lower()
-    if low in _NAMES:
+    if low in _PARSED:
         return low, None
-    if "," in low and low.rsplit(",", 1)[0].strip() in _NAMES:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
+    if "," in low and low.rsplit(",", 1)[0].strip() in _PARSED:  # 'Thrust, N', 'Torque, N*m' (a unit after a comma)
         return low.rsplit(",", 1)[0].strip(), name.rsplit(",", 1)[1].strip()
     if " " in low:  # 'Thrust g', 'Thrust in g' (a known unit after a blank: read as a column of nothing, a user audit)
         base, unit = low.rsplit(" ", 1)
         base = re.sub(r"\s+in$", "", base.strip())
-        if base in _NAMES and _NAMES[base][1] is not None and _token(unit) in UNITS[_NAMES[base][1]]:
+        if base in _PARSED and _PARSED[base][1] is not None and _token(unit) in UNITS[_PARSED[base][1]]:
             return base, name.strip().rsplit(" ", 1)[1]
     if low.replace("_", " ") in _NAMES:  # wind_speed, air_speed
         return low.replace("_", " "), None
@@ -261,16 +275,16 @@ def split_header(name: str) -> tuple[str, str | None]:
         return low.rsplit("_", 1)[0].replace("_", " "), low.rsplit("_", 1)[1]  # throttle_pct, esc_us, esc_signal_us
     if "_" in low:
         base, unit = low.rsplit("_", 1)
-        if base not in _NAMES and base.replace("_", " ") in _NAMES:  # wind_speed_mps
+        if base not in _PARSED and base.replace("_", " ") in _PARSED:  # wind_speed_mps
             base = base.replace("_", " ")
-        if base in _NAMES:
-            kind = _NAMES[base][1]
+        if base in _PARSED:
+            kind = _PARSED[base][1]
             if kind is not None and _token(unit) in UNITS[kind]:
                 return base, unit
         # e.g. speed_rad_s, wind_speed_m_s: the unit itself holds an underscore (a known name's blanks as underscores)
-        for k in sorted(_NAMES, key=len, reverse=True):
+        for k in sorted(_PARSED, key=len, reverse=True):
             stem = k.replace(" ", "_") + "_"
-            if low.startswith(stem) and _NAMES[k][1] is not None and _token(low[len(stem):]) in UNITS[_NAMES[k][1]]:
+            if low.startswith(stem) and _PARSED[k][1] is not None and _token(low[len(stem):]) in UNITS[_PARSED[k][1]]:
                 return k, low[len(stem):]
         # a statistic of a quantity beside it (thrust_std, torque_err): not read (it was refused as an unknown unit)
         if base in _NAMES and unit in _STATISTICS:
@@ -354,7 +368,9 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     ------
     error
         A recognised quantity in an unknown unit (naming the column and the known units),
-        two columns for one quantity, no rotation-speed column or no load column (listing
+        two columns for one quantity of one rank (an alias, ``PWM``, ``Thrust avg``, or a
+        ``throttle`` beside an ESC signal, gives way to the quantity's own name, with a note:
+        :data:`_RANK`), no rotation-speed column or no load column (listing
         the columns found and what was looked for; naming coefficient columns such as CT, CP
         where they stand instead), a column that looks like an airspeed, advance ratio or flow
         angle (``velocity``, ``V_inf``, ``advance ratio``, ``alpha``, ``AoA``, ...; one in a unit
@@ -374,9 +390,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         if not name.strip():
             continue
         base, unit = split_header(name)
-        if base not in _NAMES or _unit_missing(base, unit):
+        entry = _entry(base, unit)
+        if entry is None:
             continue
-        quantity, kind = _NAMES[base]
+        quantity, kind = entry
         factor = _factor(name, base, unit, error)
         if quantity in cm.columns:
             first = cm.columns[quantity][0]
@@ -428,7 +445,8 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
     two-rotor export (columns for rotors A and B), where a column is in a rotation unit under a
     name not read (``Velocita (rpm)``), where a bare ``n`` stands, or like lines above the header."""
     pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
-    bare_n = [n for n in names if split_header(n)[0] in _UNIT_ONLY]
+    # a bare name read as the rotation speed only with a rotation unit ('n': a count is written so too)
+    bare_n = [n for n in names if (b := split_header(n))[1] is None and _UNIT_ONLY_NAMES.get(b[0], ("",))[0] == "rpm"]
     # a column in a rotation unit under a name propmap does not read ('Velocidad (rpm)' was told of lines above the
     # header: a thrust-stand export audit, 2026-11-30)
     in_rpm = [n for n in names
@@ -441,9 +459,10 @@ def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
     elif in_rpm:
         hint = (f"; column {in_rpm[0]!r} is in a rotation speed's unit but its name is not read: name it 'rpm' (or "
                 f"'Motor speed ({split_header(in_rpm[0])[1]})')")
-    elif bare_n:  # ('n' is read as a rotational frequency only with its unit: a count is written so too)
-        hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: 'n (rev/s)', "
-                "'n (1/min)' or 'n_rpm'")
+    elif bare_n:
+        x = bare_n[0].strip()
+        hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: '{x} (rev/s)', "
+                f"'{x} (1/min)' or '{x}_rpm'")
     elif not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
         hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
                 "are the file's first line (a load file's header is looked for in its first 41 lines)")
@@ -602,7 +621,7 @@ def map_operating_columns(names, *, error=ValueError) -> dict:
         if not name.strip() or name.strip().lower() in OPERATING:
             continue
         base, unit = split_header(name)
-        quantity = None if _unit_missing(base, unit) else _NAMES.get(base, (None, None))[0]
+        quantity = (_entry(base, unit) or (None, None))[0]
         if quantity not in OPERATING or quantity in bare:
             continue
         factor = _factor(name, base, unit, error)
