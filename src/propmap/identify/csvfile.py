@@ -147,6 +147,10 @@ def _zero_or_empty(cell: str) -> bool:
         return False
 
 
+#: the names of the separators other than ',' (for messages)
+SEPARATOR_NAMES = {";": "semicolon", "\t": "tab"}
+
+
 class _Csv:
     """A parsed CSV: the header's columns, and numbers or text of the columns asked for.
 
@@ -181,10 +185,11 @@ class _Csv:
         lines = re.split(rb"\r\n|\r|\n", raw.lstrip(b"\xef\xbb\xbf\r\n "), maxsplit=8)[:8]
         # a quoted name over two lines ("Drehzahl<newline>[U/min]", a spreadsheet's wrapped heading) is one line here
         # (its first line alone gave no ';' and the file was read with ',': an export audit, 2026-11-30)
+        # (the header line only: an inch mark in a data row, 'APC 10x7"', joined two rows: a review, 2026-11-30)
         joined: list[bytes] = []
         for r in lines:
-            if joined and joined[-1].count(b'"') % 2:
-                joined[-1] += b"\n" + r
+            if len(joined) == 1 and joined[0].count(b'"') % 2:
+                joined[0] += b"\n" + r
             else:
                 joined.append(r)
         head, *rows = [r.decode("utf-8", "replace") for r in joined if r.strip()][:2] or [""]
@@ -281,7 +286,7 @@ class _Csv:
             elif "unexpected end of data" in msg:
                 msg = "unterminated quote: a quoted field is never closed"
             elif "expected after" in msg:
-                mark = {";": "semicolon", "\t": "tab"}.get(getattr(self, "sep", ","), "comma")
+                mark = SEPARATOR_NAMES.get(getattr(self, "sep", ","), "comma")
                 msg = f"a closing quote must be followed by a {mark} or the end of the line"
             raise self.error(msg, last + 1) from None
 
@@ -306,17 +311,20 @@ class _Csv:
         lines = array.array("q")
         # a ';'- or tab-separated file: where a decimal comma and a point were first seen, (line, column)
         marks = [None, None]
-        # per column of a ';'- or tab-separated file: where a cell like 1.059 and one like 951 were first seen
+        # per column of a ';'- or tab-separated file: its cells like 1.059 and like 951 (_thousands)
         grouped: dict = {}
         rows = self._rows()
         next(rows)  # the header
         unnamed = unnamed_columns(self.columns)
+        read_at = {j for _, j in cols}
         for line, cells in rows:
             if len(cells) > n and any(c.strip() for c in cells[n:]):
-                mark = {";": "semicolon", "\t": "tab"}.get(self.sep, "comma")
-                # (an unquoted comma in a stand export's last text cell, 'App message': an export audit, 2026-11-30)
-                why = (f": a {mark} inside a cell's text (the last column's, {_short(self.header[-1])}?) that is not "
-                       "quoted" + (", or decimal commas in a comma-separated file" if mark == "comma" else ""))
+                mark = SEPARATOR_NAMES.get(self.sep, "comma")
+                # (an unquoted comma in a stand export's last text cell, 'App message': an export audit, 2026-11-30;
+                # the last column named only where it is not read as a number, a review)
+                last = "" if n - 1 in read_at else f" (the last column's, {_short(self.header[-1])}?)"
+                why = (f": a {mark} inside a cell's text{last} that is not quoted"
+                       + (", or decimal commas in a comma-separated file" if mark == "comma" else ""))
                 raise self.error(f"{len(cells)} fields, but the header (line {self.header_line}) has {n}{why}", line)
             cut = [j for c, j in cols if j >= len(cells) and (c in stop or c not in optional)] if len(cells) < n else ()
             if cut:  # (a row cut short: read as a stopped motor's row and skipped until 2026-11-29, an audit)
@@ -357,25 +365,39 @@ class _Csv:
                 j = self.index[c]
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
+        self._refuse_thousands(grouped)
         return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
                 np.frombuffer(lines, dtype=np.int64).copy())
 
-    def _thousands(self, column: str, cell: str, line: int, grouped: dict) -> None:
-        """Refuse a ';'- or tab-separated file's column that holds both a cell like ``1.059`` (one to
-        three digits, a point, three digits) and a whole number of three digits (``951``): the
-        point is a thousands separator there (951, 1059), which read as a decimal point made
-        points 1000 times too small that were fitted (a thrust-stand export audit, 2026-11-30).
-        ``grouped`` holds, per column, where each kind was first seen."""
-        kind = 0 if re.fullmatch(r"[+-]?\d{1,3}\.\d{3}", cell) else 1 if re.fullmatch(r"[+-]?\d{3}", cell) else None
-        if kind is None:
-            return
-        seen = grouped.setdefault(column, [None, None])
-        seen[kind] = seen[kind] or (line, cell)
-        if seen[0] and seen[1]:
-            (l0, c0), (l1, c1) = seen
-            raise self.error(f"column {_short(self.header[self.index[column]])}: {c0} (line {l0}) beside {c1} (line "
-                             f"{l1}): a point as a thousands separator ({c0.replace('.', '')})? save the numbers "
-                             "without one", line)
+    @staticmethod
+    def _thousands(column: str, cell: str, line: int, grouped: dict) -> None:
+        """Note, for :meth:`_refuse_thousands`, a ';'- or tab-separated file's cell: the largest
+        like ``1.059`` (a digit 1-9, up to two more, a point, three digits), the smallest whole
+        number of three digits (``951``), and whether any other decimal (``0.125``, ``16.5``)
+        stands in the column; ``grouped`` holds them per column."""
+        seen = grouped.setdefault(column, {"grouped": None, "whole": None, "decimal": False})
+        if re.fullmatch(r"[+-]?[1-9]\d{0,2}\.\d{3}", cell):
+            if seen["grouped"] is None or float(cell) > float(seen["grouped"][1]):
+                seen["grouped"] = (line, cell)
+        elif re.fullmatch(r"[+-]?[1-9]\d{2}", cell):
+            if seen["whole"] is None or float(cell) < float(seen["whole"][1]):
+                seen["whole"] = (line, cell)
+        elif "." in cell:
+            seen["decimal"] = True
+
+    def _refuse_thousands(self, grouped: dict) -> None:
+        """Refuse a column whose cells like ``1.059`` are all more than 100 times smaller than its
+        whole numbers of three digits (``951``), where no other decimal stands: there the point is
+        a thousands separator (951, 1059), which read as a decimal point made points 1000 times too
+        small that were fitted (a thrust-stand export audit, 2026-11-30); a column of decimals
+        beside whole numbers of their size (16.667 beside 100, 98.125 beside 215) is read."""
+        for column, seen in grouped.items():
+            if seen["grouped"] and seen["whole"] and not seen["decimal"] and (
+                    100 * abs(float(seen["grouped"][1])) < abs(float(seen["whole"][1]))):
+                (lg, cg), (lw, cw) = seen["grouped"], seen["whole"]
+                raise self.error(f"column {_short(self.header[self.index[column]])}: {cg} (line {lg}) beside {cw} "
+                                 f"(line {lw}): a point as a thousands separator ({cg.replace('.', '')})? save the "
+                                 "numbers without one", lg)
 
     def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
         """A ';'- or tab-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).
