@@ -51,10 +51,10 @@ _T_UNITS = {"c": _C, "°c": _C, "ºc": _C, "degc": _C, "deg c": _C, "celsius": _
 _P_UNITS = {"pa": 1.0, "hpa": 100.0, "mbar": 100.0, "mb": 100.0, "kpa": 1000.0, "bar": 1e5, "psi": 6894.757293168,
             "psia": 6894.757293168, "inhg": 3386.389, "in hg": 3386.389, "mmhg": 133.322387415, "torr": 133.322368421,
             "atm": 101325.0}
-#: a temperature column is not the air's above this median [K] (50 degC) or where its rows span more than AIR_T_SPAN [K]
-#: (a motor's or an ESC's, heating through a test)
+#: a temperature column is not the air's above this median [K] (50 degC) or where its rows' 5th to 95th percentiles lie
+#: more than AIR_T_SPAN [K] apart (a motor's or an ESC's, heating through a test; a tunnel's air warms less)
 AIR_T_MAX = 323.15
-AIR_T_SPAN = 20.0
+AIR_T_SPAN = 30.0
 #: the air densities a temperature and a pressure column are believed to give without a warning [kg/m^3]
 #: (sea level at -20 to 45 degC; 3,000 m; beyond them a column is more likely another quantity)
 PLAUSIBLE_DENSITY = (0.85, 1.4)
@@ -77,76 +77,103 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
     p), with a note; None where it has not both, where a unit cannot be told (not in the header
     and not unambiguous from the values: T 200-350 K or -40 to 31 degC; p 5e4-1.1e5 Pa, 500-1100
     hPa, 50-110 kPa), or where the density would lie outside AIR_DENSITY_RANGE: then a note says
-    the columns are not read (never a refusal: the air options still serve). A density outside
-    PLAUSIBLE_DENSITY is used and said to be checked."""
-    found = {}
+    the columns are not read (never a refusal: the air options still serve). A temperature
+    column above AIR_T_MAX or spanning more than AIR_T_SPAN is not the air's (a motor's): the
+    next temperature column is tried. A density outside PLAUSIBLE_DENSITY is used and said to
+    be checked."""
+    found: dict = {"T": [], "p": []}
     for c in f.header:
         name, unit = _split_unit(c)
         kind = "T" if name in _T_NAMES else "p" if name in _P_NAMES else None
-        if kind and kind not in found:
-            found[kind] = (c, unit, name)
-    if len(found) < 2:
-        if found:
-            (c, _, _), = found.values()
+        if kind:
+            found[kind].append((c, unit, name))
+    if not (found["T"] and found["p"]):
+        if found["T"] or found["p"]:
+            c = (found["T"] or found["p"])[0][0]
             notes.append(f"{c!r} is not read without the other of temperature and pressure (or a density column): "
                          "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
                          "--rho say otherwise")
         return None
-    skip = (f"; {found['T'][0]!r} and {found['p'][0]!r} are not read (give the air with --temperature-c/--pressure-pa, "
-            "--rho or a density column)")
+    columns = [c for c, _, _ in found["T"]] + [found["p"][0][0]]
     try:
-        raw, _, _ = f.read([found["T"][0].lower(), found["p"][0].lower()],
-                           optional={found["T"][0].lower(), found["p"][0].lower()})
+        raw, _, _ = f.read([c.lower() for c in columns], optional={c.lower() for c in columns})
     except DataError:  # (a column of text: not the air's state)
-        notes.append("a temperature or pressure column is not numeric" + skip)
+        notes.append("a temperature or pressure column is not numeric; "
+                     + _skipped(found["T"][0][0], found["p"][0][0]))
         return None
-    vals = {}
-    for kind, (c, unit, name) in found.items():
-        x = raw[c.lower()]
-        x = x[np.isfinite(x)]
-        if not x.size:
-            notes.append(f"{c!r} is empty in every row" + skip)
-            return None
-        med = float(np.median(x))
-        table = _T_UNITS if kind == "T" else _P_UNITS
-        if unit is None and name in _UNIT_NEEDED:
-            notes.append(f"{c!r} has no unit in its name (a dynamic pressure?)" + skip)
-            return None
-        if unit is None:  # (only where the values leave one reading: 32-60 may be degF as well as degC)
-            spans = ((("k", 200, 350), ("c", -40, 31)) if kind == "T" else
-                     (("pa", 5e4, 1.1e5), ("hpa", 500, 1100), ("kpa", 50, 110)))
-            unit = next((u for u, lo, hi in spans if lo <= med <= hi), None)
-            if unit is None:
-                notes.append(f"{c!r} has no unit in its name and its values ({med:g} in the median) do not tell it"
-                             + skip)
-                return None
-            notes.append(f"{c!r} read in {dict(k='K', c='degC', pa='Pa', hpa='hPa', kpa='kPa')[unit]} (its values; "
-                         "no unit in the header)")
-        if unit not in table:
-            notes.append(f"{c!r}: a unit propmap does not know" + skip)
-            return None
-        vals[kind] = med * table[unit][0] + table[unit][1] if kind == "T" else med * table[unit]
-        if kind == "T" and (vals["T"] > AIR_T_MAX or table[unit][0] * float(np.ptp(x)) > AIR_T_SPAN):
-            # (a motor's temperature rising 35 -> 85 degC under a bare 'Temperature' gave 1.06 kg/m^3 and every
-            # point 14% off: a thrust-stand export audit, 2026-11-30)
-            notes.append(f"{c!r} is {vals['T'] - 273.15:.3g} degC in the median and spans "
-                         f"{table[unit][0] * float(np.ptp(x)):.3g} K over the rows: not the air's (above "
-                         f"{AIR_T_MAX - 273.15:g} degC or spanning over {AIR_T_SPAN:g} K; a motor's or an ESC's "
-                         "temperature?)" + skip)
-            return None
+    pressure = _state(found["p"][0], raw, "p", notes, found["T"][0][0])
+    if pressure is None:
+        return None
+    for candidate in found["T"]:
+        temperature = _state(candidate, raw, "T", notes, found["p"][0][0])
+        if temperature is not None:
+            break
+    else:
+        return None
+    T_col, p_col = candidate[0], found["p"][0][0]
     try:  # (the air of --temperature-c/--pressure-pa: its gas constant and its ranges of T and p)
-        rho = Air.from_conditions(vals["T"], vals["p"]).rho
+        rho = Air.from_conditions(temperature, pressure).rho
     except ValueError as exc:
-        notes.append(f"they give {exc}" + skip)
+        notes.append(f"they give {exc}; " + _skipped(T_col, p_col))
         return None
     lo, hi = AIR_DENSITY_RANGE
     if not lo <= rho <= hi:
-        notes.append(f"they would give an air density of {rho:.4g} kg/m^3 (T {vals['T']:.5g} K, p {vals['p']:.6g} Pa)"
-                     + skip)
+        notes.append(f"they would give an air density of {rho:.4g} kg/m^3 (T {temperature:.5g} K, p {pressure:.6g} "
+                     "Pa); " + _skipped(T_col, p_col))
         return None
     check = ("" if PLAUSIBLE_DENSITY[0] <= rho <= PLAUSIBLE_DENSITY[1] else
              f"; outside the {PLAUSIBLE_DENSITY[0]:g}-{PLAUSIBLE_DENSITY[1]:g} kg/m^3 of air near the ground: check "
              "that these columns are the air's temperature and static pressure")
-    notes.append(f"air density {rho:.4g} kg/m^3 from {found['T'][0]!r} and {found['p'][0]!r} (medians, T "
-                 f"{vals['T']:.5g} K, p {vals['p']:.6g} Pa, rho = p / ({R_AIR:g} T)){check}")
+    notes.append(f"air density {rho:.4g} kg/m^3 from {T_col!r} and {p_col!r} (medians, T {temperature:.5g} K, p "
+                 f"{pressure:.6g} Pa, rho = p / ({R_AIR:g} T)){check}")
     return rho
+
+
+def _skipped(T_col: str, p_col: str) -> str:
+    """The tail of a note saying that a temperature and a pressure column are not read."""
+    return (f"{T_col!r} and {p_col!r} are not read (give the air with --temperature-c/--pressure-pa, --rho or a "
+            "density column)")
+
+
+def _state(column: tuple, raw: dict, kind: str, notes: list, other: str) -> float | None:
+    """The median of a temperature [K] (``kind`` "T") or pressure [Pa] ("p") column ``column`` =
+    (name as written, unit or None, name), from the values ``raw`` read; None, with a note, where
+    it cannot be told (empty, no unit and values that do not tell it, an unknown unit) or a
+    temperature is not the air's (above AIR_T_MAX in the median, or its rows' 5th to 95th
+    percentiles more than AIR_T_SPAN apart: a motor's or an ESC's, heating through a test; a
+    motor's rising 35 -> 85 degC gave 1.06 kg/m^3 and every point 14% off: a thrust-stand export
+    audit, 2026-11-30). ``other``: the other kind's column, for the note."""
+    c, unit, name = column
+    skip = "; " + (_skipped(c, other) if kind == "T" else _skipped(other, c))
+    x = raw[c.lower()]
+    x = x[np.isfinite(x)]
+    if not x.size:
+        notes.append(f"{c!r} is empty in every row" + skip)
+        return None
+    med = float(np.median(x))
+    table = _T_UNITS if kind == "T" else _P_UNITS
+    if unit is None and name in _UNIT_NEEDED:
+        notes.append(f"{c!r} has no unit in its name (a dynamic pressure?)" + skip)
+        return None
+    if unit is None:  # (only where the values leave one reading: 32-60 may be degF as well as degC)
+        spans = ((("k", 200, 350), ("c", -40, 31)) if kind == "T" else
+                 (("pa", 5e4, 1.1e5), ("hpa", 500, 1100), ("kpa", 50, 110)))
+        unit = next((u for u, lo, hi in spans if lo <= med <= hi), None)
+        if unit is None:
+            notes.append(f"{c!r} has no unit in its name and its values ({med:g} in the median) do not tell it" + skip)
+            return None
+        notes.append(f"{c!r} read in {dict(k='K', c='degC', pa='Pa', hpa='hPa', kpa='kPa')[unit]} (its values; no "
+                     "unit in the header)")
+    if unit not in table:
+        notes.append(f"{c!r}: a unit propmap does not know" + skip)
+        return None
+    if kind == "p":
+        return med * table[unit]
+    scale, offset = table[unit]
+    span = scale * float(np.percentile(x, 95) - np.percentile(x, 5))
+    if med * scale + offset > AIR_T_MAX or span > AIR_T_SPAN:
+        notes.append(f"{c!r} is {med * scale + offset - 273.15:.3g} degC in the median and spans {span:.3g} K over "
+                     f"the rows (5th to 95th percentile): not the air's (above {AIR_T_MAX - 273.15:g} degC or spanning "
+                     f"over {AIR_T_SPAN:g} K; a motor's or an ESC's temperature?)" + skip)
+        return None
+    return med * scale + offset
