@@ -308,5 +308,6 @@ def test_a_folder_as_source_is_refused_naming_its_files(tmp_path, capsys, monkey
     args = ["fit", "loads", "uiuc", "--prop", "apce_8x6", "--out", "p.toml"] if command == "fit" else \
         ["validate", "uiuc", "--prop", "apce_8x6"]
     code, _, err = run(capsys, *args)
-    assert one_line_error(code, err, "SOURCE: 'uiuc' is a folder: give its files, e.g. uiuc/*.txt"), err
+    assert one_line_error(code, err, "SOURCE: 'uiuc' is a folder: give the files in it, e.g. uiuc/*.txt (UIUC-format "
+                                     "files) or uiuc/*.csv"), err
     assert not (tmp_path / "p.toml").exists()

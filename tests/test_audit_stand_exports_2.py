@@ -101,7 +101,7 @@ def test_a_static_stands_pitot_noise_below_zero_reads_as_zero(tmp_path):
     assert "'Airspeed (m/s)': 2 value(s) from -0.2 to 0 m/s (a static stand's pitot noise about zero, within " \
            "0.3 m/s) read as 0" in d.notes
     path.write_text(path.read_text().replace(",-0.2,", ",-0.5,"))
-    with pytest.raises(DataError, match=r"airspeed must be in \[0, 500\] m/s"):
+    with pytest.raises(DataError, match=r"line 4: airspeed must be in \[0, 500\] m/s, got -0.5"):
         read_loads(path)
 
 
@@ -112,9 +112,16 @@ def test_a_point_as_a_thousands_separator_is_refused(tmp_path):
     bad = tmp_path / "de.csv"
     bad.write_text("Drehzahl [U/min];Schub [g];Drehmoment [Nmm]\n5000;451;79\n6000;651;110\n7502;951;169\n"
                    "8009;1.059;188\n9000;1.340;240\n9499;1.514;267\n")
-    with pytest.raises(DataError, match=r"line 5: column 'Schub \[g\]': 1.059 \(line 5\) beside 451 \(line 2\): a "
-                                        r"point as a thousands separator \(1059\)\?"):
+    with pytest.raises(DataError, match=r"line 7: column 'Schub \[g\]': 1.514 \(line 7\) beside 451 \(line 2\): a "
+                                        r"point as a thousands separator \(1514\)\?"):
         read_loads(bad)
+    # decimals beside whole numbers of their size are decimals (a tab file's throttle, a gram thrust)
+    for header, cells in (("Throttle\tRPM\tThrust (N)", ("16.667", "33.333", "50", "66.667", "83.333", "100")),
+                          ("RPM\tThrust (g)", ("98.125", "215", "300.5", "420", "560", "720"))):
+        tsv = tmp_path / "ok.tsv"
+        tsv.write_text(header + "\n" + "".join(f"{c}\t{3000 + 1000 * k}\t{1 + k}\n" if header.startswith("Thr") else
+                                               f"{3000 + 1000 * k}\t{c}\n" for k, c in enumerate(cells)))
+        assert read_loads(tsv).n == 6
     ok = tmp_path / "ok.csv"
     ok.write_text("Drehzahl [U/min];Schub [N];Drehmoment [Nm]\n5000;4,51;0,079\n6000;6,51;0,110\n7502;9,51;0,169\n"
                   "8009;10,59;0,188\n9000;13,40;0,240\n9499;15,14;0,267\n")
@@ -135,23 +142,43 @@ def test_an_rpm_counted_per_blade_is_named_as_the_likely_cause(torque):
     rpm = np.arange(2500.0, 7600.0, 500.0)
     T, Q = _rotor(rpm)
     measured = {"thrust": T, **({"torque": Q} if torque else {})}
-    notes = ("'Thrust (g)' converted to N (x 0.00980665)",)
     data = pm.identify.LoadData(2 * rpm * np.pi / 30, np.zeros(rpm.size), np.zeros(rpm.size), measured,
-                                np.full(rpm.size, "all", dtype=object), "tacho.csv", None, notes)
+                                np.full(rpm.size, "all", dtype=object), "tacho.csv", converted={"thrust": G0 * 1e-3})
     with pytest.raises(DataError) as exc:
         sanity_check(data, pm.load_propeller("apce_10x7"))
     msg = str(exc.value)
     assert "likely an optical tachometer counting every blade read as the rpm (2 pulses per revolution" in msg, msg
     assert "lbf" not in msg and ("torque" in msg) == torque, msg
+    # an unlabelled thrust: its lbf slip is a cause, but not one with a torque the file lacks
+    with pytest.raises(DataError) as exc:
+        sanity_check(pm.identify.LoadData(data.omega, data.airspeed, data.incidence, {"thrust": T}, data.group),
+                     pm.load_propeller("apce_10x7"))
+    assert "thrust in lbf read as N" in str(exc.value) and "torque" not in str(exc.value), str(exc.value)
+
+
+def test_a_converted_drag_does_not_hide_an_unlabelled_thrusts_slip(tmp_path):
+    """The sanity check took any force conversion for the thrust's: an unlabelled thrust in kgf
+    beside 'drag (g)' lost its cause ('check the units'); now the thrust's own conversion counts."""
+    rpm = np.arange(3000.0, 8001.0, 1000.0)
+    T, _ = _rotor(rpm)
+    path = tmp_path / "kd.csv"
+    path.write_text("rpm,thrust,drag (g)\n" + "".join(f"{a:.0f},{t / G0:.6g},0\n" for a, t in zip(rpm, T)))
+    d = read_loads(path)
+    assert d.converted == {"drag": pytest.approx(G0 * 1e-3)}
+    with pytest.raises(DataError, match=r"likely thrust in kgf read as N"):
+        sanity_check(d, pm.load_propeller("apce_10x7"), quantities=("thrust",))
 
 
 @pytest.mark.parametrize("temperatures, read", [((35.0, 45.0, 55.0, 65.0, 75.0, 85.0), False),  # a motor heating
                                                 ((60.0,) * 6, False),  # above 50 degC
-                                                ((21.0, 22.0, 22.5, 23.0, 23.5, 24.0), True)])  # a lab's air
+                                                ((5.0, 15.0, 25.0, 35.0, 45.0, 55.0), False),  # spanning 50 K
+                                                ((21.0, 22.0, 22.5, 23.0, 23.5, 24.0), True),  # a lab's air
+                                                ((20.0, 25.0, 30.0, 35.0, 40.0, 45.0), True)])  # a warming tunnel
 def test_a_motors_temperature_is_not_taken_for_the_airs(tmp_path, temperatures, read):
     """A 'Temperature (°C)' column beside 'Pressure (hPa)' that rises 35 -> 85 degC with the motor
     was taken as the air's (1.06 kg/m^3: every point 14% off, with only a note); a median above
-    50 degC or a span over 20 K is not the air's: the columns are not read, with a note."""
+    50 degC or a 5th-95th percentile span over 30 K is not the air's: the columns are not read,
+    with a note, unless an air temperature column follows, which is then read."""
     rpm = np.arange(4000.0, 9001.0, 1000.0)
     T, Q = _rotor(rpm)
     path = tmp_path / "stand.csv"
@@ -160,10 +187,13 @@ def test_a_motors_temperature_is_not_taken_for_the_airs(tmp_path, temperatures, 
     d = read_loads(path)
     if read:
         assert d.air_density == pytest.approx(101300 / (287.05 * (np.median(temperatures) + 273.15)), rel=1e-3)
-    else:
-        assert d.air_density is None
-        assert any("not the air's (above 50 degC or spanning over 20 K; a motor's or an ESC's temperature?)" in n
-                   for n in d.notes), d.notes
+        return
+    assert d.air_density is None
+    assert any("not the air's (above 50 degC or spanning over 30 K; a motor's or an ESC's temperature?)" in n
+               for n in d.notes), d.notes
+    path.write_text("RPM,Thrust (N),Temperature (°C),Pressure (hPa),Air temperature (°C)\n" + "".join(
+        f"{a:.0f},{t:.6g},{c:g},1013,21\n" for a, t, c in zip(rpm, T, temperatures)), encoding="utf-8")
+    assert read_loads(path).air_density == pytest.approx(101300 / (287.05 * 294.15), rel=1e-3)
 
 
 @pytest.mark.parametrize("names", [["ESC (µs)", "Throttle (%)", "rpm", "thrust"],

@@ -1024,6 +1024,10 @@ def test_a_bare_n_is_not_read_as_the_rotation_speed(tmp_path):
     with pytest.raises(DataError, match=r"column 'n' is read as the rotation speed only with a rotation unit: "
                                         r"'n \(rev/s\)'"):
         read_loads(_rows_csv(tmp_path / "bare.csv", ["n", "thrust", "torque"], [r[1:] for r in rows]))
+    # nor in a points file; and 'n' in a linear speed's unit is no rotation speed: an unread airspeed, refused
+    assert "rpm" not in map_operating_columns(["n", "airspeed"])
+    with pytest.raises(DataError, match=r"'n \(m/s\)'"):
+        read_loads(_rows_csv(tmp_path / "v.csv", ["rpm", "thrust", "n (m/s)"], [r[1:3] + (r[0],) for r in rows]))
 
 
 @pytest.mark.parametrize("header", ["H force (N)", "h_force_gf", "In-plane force [N]", "normal_force",

@@ -119,12 +119,12 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     if missing:
         from ..io.catalogue import near_names
 
+        if len(missing[0]) <= 255 and Path(missing[0]).is_dir():  # (a UIUC download's folder: an audit, 2026-11-30)
+            folder = Path(missing[0])
+            raise InputError(f"SOURCE: {short_path(folder, quote=True)} is a folder: give the files in it, e.g. "
+                             f"{short_path(folder / '*.txt')} (UIUC-format files) or {short_path(folder / '*.csv')}")
         # (a name near a catalogue propeller's, APCE_8x6, got no suggestion where validate's and loads' PROP did)
         hint = near_names(missing[0], catalogue(), otherwise="") if len(missing[0]) <= 255 and len(sources) == 1 else ""
-        if len(missing[0]) <= 255 and Path(missing[0]).is_dir():  # (a UIUC download's folder: an audit, 2026-11-30)
-            raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is a folder: give its files, e.g. "
-                             f"{short_path(Path(missing[0]) / '*.txt')} (a UIUC download's static and wind-tunnel "
-                             "files, with the geometry file as --prop)")
         raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"
                          + (f" (a name of {len(missing[0])} characters)" if len(missing[0]) > 255 else "")
                          + hint)

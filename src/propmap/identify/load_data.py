@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -40,6 +40,11 @@ class LoadData:
     air_density : float or None
         The air density the file logged [kg/m^3] (the median of a density column), > 0; None:
         not logged. ``fit loads`` fits at it where no air option is given.
+    converted : dict
+        The factor each load column was multiplied by to SI, from the unit its header gave
+        (quantity -> factor, e.g. ``{"thrust": 0.00980665}`` for ``Thrust (g)``; a column read
+        as written is absent), for the sanity check's causes (a unit slip of an unlabelled
+        column is no cause of a converted one).
 
     Raises
     ------
@@ -48,7 +53,8 @@ class LoadData:
         ``omega``), a non-finite value (in ``measured`` NaN marks a load not measured at a
         point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
-        thrust, drag, torque, an ``air_density`` that is not a finite number > 0; the message
+        thrust, drag, torque, an ``air_density`` that is not a finite number > 0, a ``converted``
+        that is not a dict of those quantities to finite factors > 0; the message
         names the field; ``omega`` above 1e5 rad/s, a ``collective`` beyond +-pi/4 rad (degrees?),
         a ``group`` label that is not a string or a number (or is NaN). (The readers check the
         signs and the ranges of the loads themselves.)
@@ -63,6 +69,7 @@ class LoadData:
     collective: np.ndarray | None = None
     notes: tuple = ()
     air_density: float | None = None
+    converted: dict = field(default_factory=dict)
 
     def __post_init__(self):
         n = first_length("LoadData", "omega", self.omega)
@@ -78,6 +85,11 @@ class LoadData:
                     or not (math.isfinite(rho) and rho > 0)):
                 raise ValueError(f"LoadData.air_density must be a finite number > 0 kg/m^3 or None, got {rho!r:.40}")
             object.__setattr__(self, "air_density", float(rho))
+        if not isinstance(self.converted, dict) or any(
+                k not in LOAD_KEYS or isinstance(f, (bool, np.bool_)) or not isinstance(f, numbers.Real)
+                or not (math.isfinite(f) and f > 0) for k, f in self.converted.items()):
+            raise ValueError(f"LoadData.converted must be a dict of {', '.join(LOAD_KEYS)} to finite factors > 0, "
+                             f"got {short_repr(self.converted)}")
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
         fields_["incidence"] = snap_incidence(fields_["incidence"])  # (float32's pi: 8.7e-8 rad above pi)
@@ -151,12 +163,14 @@ class LoadData:
         Returns
         -------
         LoadData
-            Every per-point array cut to those points; source, notes and air density kept.
+            Every per-point array cut to those points; source, notes, air density and the
+            conversions kept.
         """
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
-                        None if self.collective is None else self.collective[mask], self.notes, self.air_density)
+                        None if self.collective is None else self.collective[mask], self.notes, self.air_density,
+                        dict(self.converted))
 
 
 def data_air(data: LoadData, air, base_air):

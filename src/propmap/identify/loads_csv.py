@@ -181,7 +181,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     if group is None:
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
-                    group, f"{path}", collective, tuple(notes), air_density)
+                    group, f"{path}", collective, tuple(notes), air_density,
+                    {k: cm.columns[k][1] for k in keys if cm.columns[k][1] != 1.0})
 
 
 def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):
@@ -218,9 +219,9 @@ def _pitot_noise(airspeed: np.ndarray, name: str, notes: list) -> np.ndarray:
     """The airspeed with negative values down to -STATIC_AIRSPEED, a static stand's pitot noise
     about zero, read as 0, with a note (a Series 1780 export reading -0.2 to +0.4 m/s at rest was
     refused as a descent given as a negative airspeed: a thrust-stand export audit, 2026-11-30);
-    below -STATIC_AIRSPEED they stay, for the range check to refuse."""
+    below -STATIC_AIRSPEED they stay, for the range check to refuse, naming them."""
     noise = (airspeed < 0.0) & (airspeed >= -STATIC_AIRSPEED)
-    if not noise.any() or np.any(airspeed < -STATIC_AIRSPEED):
+    if not noise.any():
         return airspeed
     notes.append(f"{name!r}: {int(noise.sum())} value(s) from {airspeed[noise].min():.3g} to 0 m/s (a static "
                  f"stand's pitot noise about zero, within {STATIC_AIRSPEED:g} m/s) read as 0")

@@ -115,8 +115,7 @@ def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, wh
 
     found = []
     # (only where the thrust column was declared in the unit: a 'Thrust (N)' 2.2 times off was told of lbf under kgf)
-    declared = {u: any(f"converted to N (x {f:.6g})" in n and "thrust" in n.lower() for n in data.notes)
-                for u, f in (("kgf", G0), ("lbf", LBF))}
+    declared = {u: math.isclose(data.converted.get("thrust", 1.0), f) for u, f in (("kgf", G0), ("lbf", LBF))}
     for factor, why, unit in ((LBF / G0, "a thrust in lbf under a kgf name (name its unit lbf)", "kgf"),
                               (G0 / LBF, "a thrust in kgf under an lbf name (name its unit kgf)", "lbf")):
         if "thrust" in ratio and declared[unit]:
@@ -352,7 +351,7 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
                          "quantities= in the API)")
     # a slip of a quantity the data lack is no cause ('torque in lbf in' of a thrust-only file), nor an unlabelled
     # thrust read as N where the header gave its unit ('Thrust (g)', converted: a thrust-stand export audit, 2026-11-30)
-    declared = any(" converted to N (x " in note for note in data.notes)
+    declared = "thrust" in data.converted
     causes = [why for fT, fQ, why in _UNIT_SLIPS
               if not (fT != 1.0 and "thrust" not in ratio) and not (fQ != 1.0 and "torque" not in ratio)
               and not (declared and fT in _READ_AS_N)
@@ -386,9 +385,11 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     The measured thrust and torque are compared with the model's at the measured operating
     points (the generic set by default: hobby-propeller sections, accurate to about 10% blind,
     docs/validation.md): a median ratio beyond 1/3 to 3, or a thrust or torque of the other
-    sign, is refused with the likely cause (thrust in kgf, gf or lbf read as N, torque in
-    N mm, the electrical rpm of a motor with pole pairs, a reaction torque, a pusher's
-    thrust in data the reader left as written); so is a fitted in-plane force (drag) of the
+    sign, is refused with the likely cause (thrust in kgf, gf or lbf read as N where the
+    header gave no unit, ``LoadData.converted``; torque in N mm; an optical tachometer counting
+    every blade; the electrical rpm of a motor with pole pairs; a reaction torque; a pusher's
+    thrust in data the reader left as written; no slip of a quantity the data lack); so is a
+    fitted in-plane force (drag) of the
     other sign than the model's at DRAG_SIGN_REFUSED of the points at incidence.
 
     Parameters
