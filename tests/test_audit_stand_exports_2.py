@@ -238,3 +238,27 @@ def test_an_extra_field_says_what_likely_made_it(tmp_path):
 def test_a_torque_in_kgf_m_or_g_m_is_read(unit, factor):
     """Torque in kgf·m or gf·m (motor makers' tables) was refused as an unknown unit."""
     assert map_columns(["rpm", f"Torque ({unit})"]).columns["torque"][1] == pytest.approx(factor)
+
+
+def test_other_languages_names_need_their_quantitys_unit():
+    """The review's cases: a French 'Vitesse (m/s)' beside an airspeed, 'vitesse_vent' or
+    'couple_moteur' (no unit) were refused once these names were read unconditionally, and a
+    bare 'Velocidad' (often the airspeed) was taken for the rpm; they read as before: not read."""
+    cm = map_columns(["rpm", "thrust", "Vitesse (m/s)", "airspeed (m/s)", "vitesse_vent", "couple_moteur",
+                      "regime_moteur"])
+    assert set(cm.columns) == {"rpm", "thrust", "airspeed"}
+    with pytest.raises(ValueError, match=r"column 'Velocidad' is read as the rotation speed only with a rotation "
+                                         r"unit"):
+        map_columns(["Velocidad", "thrust"])
+    assert any(n.startswith("column 'N (N)' (a force) is not read") for n in map_columns(["rpm", "torque",
+                                                                                          "N (N)"]).notes)
+
+
+def test_an_inch_mark_in_a_data_row_does_not_join_rows(tmp_path):
+    """Only the header line takes a wrapped quoted heading: an inch mark in the first data row
+    (APC 10x7") joined two rows and the separator was guessed wrong (a review, 2026-11-30)."""
+    path = tmp_path / "inch.csv"
+    path.write_text('Propeller, Typ;Drehzahl, U/min;Schub, N\n' + "".join(
+        f'APC 10x7";{3000 + 1000 * k};{1 + k},0\n' for k in range(6)))
+    d = read_loads(path)
+    np.testing.assert_allclose(d.omega * 30 / np.pi, [3000.0 + 1000 * k for k in range(6)])
