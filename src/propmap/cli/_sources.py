@@ -136,6 +136,9 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
     # (UIUC data files with a UIUC geometry file: what their names give is taken; the file's format asked once)
     from ..io.geometry_files import geometry_format
 
+    if other and len(sources) > 1:  # (said before the geometry's missing blade count: a UIUC file audit, 2026-11-30)
+        raise InputError(f"SOURCE: {short_path(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
+                         "(J CT CP eta) file; several files must all be, or give one CSV at a time")
     named = not other and prop_spec not in catalogue() and geometry_format(prop_spec) == "uiuc"
     prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, uiuc_geometry=named).load(prop_spec)
     set_from_names = False
@@ -147,9 +150,6 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
             refuse_stand_options("UIUC-format data")
             warn_other_propeller(sources, prop, angle_set=set_from_names)
             return loads_from_uiuc_files(sources, prop.diameter, air=air), prop, None, "UIUC files"
-        if len(sources) > 1:
-            raise InputError(f"SOURCE: {short_path(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
-                             "(J CT CP eta) file; several files must all be, or give one CSV at a time")
         data = read_loads(sources[0], min_points=min_points, rpm_source=rpm_source, pole_pairs=pole_pairs)
         return data, prop, None, Path(sources[0]).name
     except DataError as exc:
@@ -304,7 +304,14 @@ def geometry_from_uiuc_names(sources, prop_spec, prop_choice: PropChoice, uiuc_g
         raise InputError(f"SOURCE: the UIUC data files' names give two hubs of one blade, {mixed}: a fit or a "
                          "comparison is of one blade count; give the runs of one hub, or --blades to take every file "
                          "as that count")
-    if None in runs or len(runs) != 1:
+    if None in runs:
+        if prop_choice.blades is None:  # (the geometry reader's 'does not state the blade count' came without a
+            # word of why: a UIUC file audit, 2026-11-30)
+            odd = next(Path(s).name for s in sources if _uiuc_run_name(s) is None)
+            click.echo(f"propmap: note: the blade count is not taken from the UIUC data files' names: {_short(odd)} "
+                       "is not named as UIUC's are (NAME_static_RUNID.txt, NAME_RUNID_RPM.txt)", err=True)
+        return prop_choice
+    if len(runs) != 1:
         return prop_choice
     named, bare, hub = runs.pop()
     base = _geometry_base(Path(prop_spec).name)

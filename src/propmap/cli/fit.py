@@ -444,6 +444,7 @@ def _held_runs(holdout, data, entry, base_spec, base, base_label: str):
         if base_spec is None:
             base, base_label = generic_without(entry.name)
     groups = set(data.group)
+    held = tuple(_run_of(h, groups) for h in held)
     unknown = [h for h in held if h not in groups]
     if unknown:
         raise InputError(f"--holdout: unknown run(s) {', '.join(unknown)}; available: {', '.join(sorted(groups))}")
@@ -453,6 +454,19 @@ def _held_runs(holdout, data, entry, base_spec, base, base_label: str):
         raise InputError(f"--holdout: every run of SOURCE is held out ({', '.join(sorted(groups))}); keep at least one "
                          "to fit")
     return held, population, base, base_label
+
+
+def _run_of(name: str, groups: set) -> str:
+    """The run of ``groups`` that --holdout's ``name`` means: itself, else the one run equal to it
+    in any case or as a static run's id (``0702rd`` for files named ``..._0702RD_...``; ``0350rd``
+    for ``static_0350rd``: both refused until 2026-11-30, a UIUC file audit); else ``name``."""
+    if name in groups:
+        return name
+    for want in (name.casefold(), f"static_{name}".casefold()):
+        found = [g for g in groups if str(g).casefold() == want]
+        if len(found) == 1:
+            return found[0]
+    return name
 
 
 def _check_directions(base, base_label: str, fit_choice) -> None:

@@ -335,8 +335,15 @@ class _Table:
     meta: dict  # key -> (raw value, line)
 
 
+#: other spellings of a table column's name in a header (UIUC-like files written by other tools: 'eff' for eta,
+#: 'beta(deg)' for beta; refused as another header until 2026-11-30, a UIUC file audit)
+TABLE_ALIASES = {"eta": ("eff", "efficiency", "η"),
+                 "beta": ("beta(deg)", "beta[deg]", "beta_deg", "beta(°)", "beta[°]", "beta°")}
+
+
 def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
-    """Numeric rows of a whitespace table whose header starts with ``expected``.
+    """Numeric rows of a whitespace table whose header starts with ``expected`` (a name or one
+    of its :data:`TABLE_ALIASES`, in any case).
 
     Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
     ``RPM average = 4042``) are metadata, lines starting with ``#`` comments; any other line
@@ -345,7 +352,7 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     """
     name = show_path(path)
     meta: dict[str, tuple[str, int]] = {}
-    want = [e.lower() for e in expected]
+    want = [{e.lower(), *TABLE_ALIASES.get(e.lower(), ())} for e in expected]
     start = None
     first = ""
     lines = io.StringIO(text, newline=None)
@@ -360,7 +367,8 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
         if m:
             meta[m[0]] = (m[1], k)
             continue
-        if [h.lower() for h in ln.split()[: len(expected)]] == want:
+        head = [h.lower() for h in ln.split()[: len(expected)]]
+        if len(head) == len(want) and all(h in w for h, w in zip(head, want)):
             start, width = k, len(ln.split())
             break
     if start is None:

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..core.units import RPM_MAX  # the largest rotation rate in a measurement file [rpm]: the solver's 1e5 rad/s
 from .geometry_files import MM_FAMILIES, GeometryFileError, read_apc_pe0, read_geometry, read_uiuc_geometry
-from .inputs import (MAX_FILE_BYTES, MAX_SMALL_FILE_BYTES, _check_column, _clip, _read_table, _read_text,
+from .inputs import (MAX_FILE_BYTES, MAX_SMALL_FILE_BYTES, TABLE_ALIASES, _check_column, _clip, _read_table, _read_text,
                      as_path, decode_input_text, parse_number, read_input_bytes, show_path)
 
 
@@ -273,6 +273,6 @@ def looks_like_uiuc(path) -> bool:
         # exactly UIUC's columns: a CSV with more is a CSV (``RPM CT CP thrust (N)`` was read as a UIUC static
         # file and its thrust column dropped without a word until 2026-11-29; a mutation audit)
         if (len(words) in (3, 4) and sorted(words[:3]) in (["cp", "ct", "rpm"], ["cp", "ct", "j"])
-                and words[3:] in ([], ["eta"])):
+                and (not words[3:] or words[3] in ("eta", *TABLE_ALIASES["eta"]))):
             return True
     return False
