@@ -77,3 +77,12 @@ def test_holdout_takes_a_runs_id_in_any_case_and_a_static_runs_bare_id(tmp_path,
     code, err, report = _fit(capsys, tmp_path, files, geom, "--blades", "2", "--holdout", given)
     assert code == 0, err
     assert report["holdout"]["holdout"] == [held]
+
+
+def test_a_size_without_its_decimal_point_is_suggested(tmp_path, capsys):
+    """A geometry named 'xx_125x75_geom.txt' (12.5 x 7.5 in with the point dropped) was refused
+    as a 125 in diameter, saying only to give one; the message now suggests --diameter-in 12.5."""
+    _, geom = _copies(tmp_path, geom="ancf_125x75_geom.txt")
+    code, _, err = run(capsys, "loads", geom, "--blades", "2", "--rpm", "5000")
+    assert one_line_error(code, err, "diameter 125 in from the file name is not plausible"), err
+    assert "a name may drop the decimal point (125 for 12.5 in: --diameter-in 12.5?)" in err, err

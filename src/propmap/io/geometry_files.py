@@ -237,9 +237,13 @@ def _uiuc_diameter(stem: str, size, diameter_in, where: str) -> tuple[float, str
         lo, hi = NAME_DIAMETER_RANGE_IN
         diameter_in = size_in_inches_from_name(stem)[0]
         if diameter_in is None:
+            # (a name without its decimal point, 125x75 for 12.5 x 7.5 in: a UIUC file audit, 2026-11-30)
+            dropped = (f"; a name may drop the decimal point ({D_name:g} for {D_name / 10:g} in: --diameter-in "
+                       f"{D_name / 10:g}?)" if unit == "in" and float(D_name).is_integer() and lo <= D_name / 10 <= hi
+                       else "")
             raise GeometryFileError(
                 f"{where}: diameter {D_name:g} {unit} from the file name is not plausible (a diameter from a name "
-                f"must be in [{lo:g}, {hi:g}] in); {SIZE_HINT}")
+                f"must be in [{lo:g}, {hi:g}] in){dropped}; {SIZE_HINT}")
         if unit == "mm":
             note = (f"diameter {D_name:g} mm = {diameter_in:.4g} in from the file name (UIUC family "
                     f"{family!r} gives sizes in millimetres)")
