@@ -61,7 +61,7 @@ def test_load_csv_air_columns_of_text_or_empty_are_noted_and_not_read(tmp_path):
     d = read_loads(_loads_csv(tmp_path, "rpm,thrust,temperature (C),pressure (Pa)",
                               [(r, 1e-7 * r * r, "warm", 101325) for r in RPM]))
     skip = "; 'temperature (C)' and 'pressure (Pa)' are not read (give the air with --temperature-c/--pressure-pa"
-    assert d.notes == ("a temperature or pressure column is not numeric" + skip
+    assert d.notes == ("'temperature (C)' is not numeric" + skip  # (naming the column since 2026-11-30)
                        + ", --rho or a density column)",)
     assert d.air_density is None
     np.testing.assert_allclose(d.measured["thrust"], 1e-7 * RPM ** 2)
@@ -255,7 +255,7 @@ def test_validate_files_says_the_readers_notes(capsys, tmp_path):
                      [(w, f"{t:.6f}", f"{q:.7f}", "warm", 101325) for w, t, q in zip(RPM, r.thrust, r.torque)])
     code, out, err = run(capsys, "validate", src, "--prop", "apce_8x6")
     assert code == 0, err
-    assert ("propmap: note: a temperature or pressure column is not numeric; 'temperature (C)' and 'pressure (Pa)' "
+    assert ("propmap: note: 'temperature (C)' is not numeric; 'temperature (C)' and 'pressure (Pa)' "
             "are not read") in err
     assert re.search(r"all points\s+0\.00%\s+[+-]0\.00%\s+0\.00%\s+6\s+0\.00%", out), out
 

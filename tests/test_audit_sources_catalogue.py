@@ -309,5 +309,5 @@ def test_a_folder_as_source_is_refused_naming_its_files(tmp_path, capsys, monkey
         ["validate", "uiuc", "--prop", "apce_8x6"]
     code, _, err = run(capsys, *args)
     assert one_line_error(code, err, "SOURCE: 'uiuc' is a folder: give the files in it, e.g. uiuc/*.txt (UIUC-format "
-                                     "files) or uiuc/*.csv"), err
+                                     "files), or one CSV in it"), err
     assert not (tmp_path / "p.toml").exists()

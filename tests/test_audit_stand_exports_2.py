@@ -112,7 +112,7 @@ def test_a_point_as_a_thousands_separator_is_refused(tmp_path):
     bad = tmp_path / "de.csv"
     bad.write_text("Drehzahl [U/min];Schub [g];Drehmoment [Nmm]\n5000;451;79\n6000;651;110\n7502;951;169\n"
                    "8009;1.059;188\n9000;1.340;240\n9499;1.514;267\n")
-    with pytest.raises(DataError, match=r"line 7: column 'Schub \[g\]': 1.514 \(line 7\) beside 451 \(line 2\): a "
+    with pytest.raises(DataError, match=r"line 7: column 'Schub \[g\]': 1.514 \(line 7\) beside 951 \(line 4\): a "
                                         r"point as a thousands separator \(1514\)\?"):
         read_loads(bad)
     # decimals beside whole numbers of their size are decimals (a tab file's throttle, a gram thrust)
@@ -262,3 +262,50 @@ def test_an_inch_mark_in_a_data_row_does_not_join_rows(tmp_path):
         f'APC 10x7";{3000 + 1000 * k};{1 + k},0\n' for k in range(6)))
     d = read_loads(path)
     np.testing.assert_allclose(d.omega * 30 / np.pi, [3000.0 + 1000 * k for k in range(6)])
+
+
+def test_the_review_cases_of_the_second_round(tmp_path):
+    """A second review's cases (2026-11-30): an unknown unit under another language's name is
+    refused as before (it was dropped without a word); the thousands rule takes the column's
+    largest whole number (120 ... 760 beside 1.050, 1.400 was read 1000 times small) and keeps
+    a column with other decimals (0.5 beside 1.250 and 350 grams); a text temperature column after
+    a good one does not hide it; subset keeps the conversions; a run id equal in any case to two
+    runs is not guessed; the extra-field message names no last column that is read as a number."""
+    with pytest.raises(ValueError, match=r"column 'Empuje \(gr\)': unknown unit 'gr' for thrust"):
+        map_columns(["rpm", "Empuje (gr)", "Par (N·m)"])
+    sweep = tmp_path / "sweep.csv"
+    sweep.write_text("Drehzahl;Schub [g]\n3000;120\n4000;250\n5000;480\n6000;760\n7000;1.050\n8000;1.400\n")
+    with pytest.raises(DataError, match=r"1.400 \(line 7\) beside 760 \(line 5\): a point as a thousands separator"):
+        read_loads(sweep)
+    grams = tmp_path / "grams.csv"
+    grams.write_text("Drehzahl;Schub [g]\n1000;0.5\n2000;1.250\n6000;350\n8000;720\n")
+    assert read_loads(grams, min_points=1).measured["thrust"][1] == pytest.approx(1.25 * G0 * 1e-3)
+    rpm = np.arange(4000.0, 9001.0, 1000.0)
+    T, _ = _rotor(rpm)
+    air = tmp_path / "air.csv"
+    air.write_text("RPM,Thrust (N),Temperature (°C),Pressure (hPa),Ambient temperature\n" + "".join(
+        f"{a:.0f},{t:.6g},21,1013,warm\n" for a, t in zip(rpm, T)), encoding="utf-8")
+    d = read_loads(air)
+    assert d.air_density == pytest.approx(101300 / (287.05 * 294.15), rel=1e-3)
+    assert d.subset(np.arange(d.n) < 3).converted == d.converted
+    g = read_loads(grams, min_points=1)
+    assert g.subset(np.arange(g.n) < 2).converted == g.converted == {"thrust": pytest.approx(G0 * 1e-3)}
+    from propmap.cli.fit import _run_of
+    assert _run_of("0702Rd", {"0702rd", "0702RD"}) == "0702Rd" and _run_of("0702rd", {"0702RD"}) == "0702RD"
+    extra = tmp_path / "extra.csv"
+    extra.write_text("rpm,Thrust (N),Torque (N.m)\n3000,1,33,0,027\n")
+    with pytest.raises(DataError, match=r"5 fields, but the header \(line 1\) has 3: a comma inside a cell's text "
+                                        r"that is not quoted, or decimal commas"):
+        read_loads(extra, min_points=1)
+
+
+def test_one_spike_does_not_make_a_temperature_a_motors(tmp_path):
+    """The span is the 5th to 95th percentile's: one spike among 21 rows (a sensor's glitch) leaves
+    the air's temperature read; max - min would have passed it over."""
+    rpm = np.linspace(4000.0, 9000.0, 21)
+    T, _ = _rotor(rpm)
+    temperatures = [22.0] * 20 + [90.0]
+    path = tmp_path / "spike.csv"
+    path.write_text("RPM,Thrust (N),Temperature (°C),Pressure (hPa)\n" + "".join(
+        f"{a:.0f},{t:.6g},{c:g},1013\n" for a, t, c in zip(rpm, T, temperatures)), encoding="utf-8")
+    assert read_loads(path).air_density == pytest.approx(101300 / (287.05 * 295.15), rel=1e-3)

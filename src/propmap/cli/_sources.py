@@ -122,7 +122,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         if len(missing[0]) <= 255 and Path(missing[0]).is_dir():  # (a UIUC download's folder: an audit, 2026-11-30)
             folder = Path(missing[0])
             raise InputError(f"SOURCE: {short_path(folder, quote=True)} is a folder: give the files in it, e.g. "
-                             f"{short_path(folder / '*.txt')} (UIUC-format files) or {short_path(folder / '*.csv')}")
+                             f"{short_path(folder / '*.txt')} (UIUC-format files), or one CSV in it")
         # (a name near a catalogue propeller's, APCE_8x6, got no suggestion where validate's and loads' PROP did)
         hint = near_names(missing[0], catalogue(), otherwise="") if len(missing[0]) <= 255 and len(sources) == 1 else ""
         raise InputError(f"SOURCE: {short_path(missing[0], quote=True)} is neither a catalogue propeller nor a file"

@@ -372,7 +372,7 @@ class _Csv:
     @staticmethod
     def _thousands(column: str, cell: str, line: int, grouped: dict) -> None:
         """Note, for :meth:`_refuse_thousands`, a ';'- or tab-separated file's cell: the largest
-        like ``1.059`` (a digit 1-9, up to two more, a point, three digits), the smallest whole
+        like ``1.059`` (a digit 1-9, up to two more, a point, three digits), the largest whole
         number of three digits (``951``), and whether any other decimal (``0.125``, ``16.5``)
         stands in the column; ``grouped`` holds them per column."""
         seen = grouped.setdefault(column, {"grouped": None, "whole": None, "decimal": False})
@@ -380,14 +380,14 @@ class _Csv:
             if seen["grouped"] is None or float(cell) > float(seen["grouped"][1]):
                 seen["grouped"] = (line, cell)
         elif re.fullmatch(r"[+-]?[1-9]\d{2}", cell):
-            if seen["whole"] is None or float(cell) < float(seen["whole"][1]):
+            if seen["whole"] is None or float(cell) > float(seen["whole"][1]):
                 seen["whole"] = (line, cell)
         elif "." in cell:
             seen["decimal"] = True
 
     def _refuse_thousands(self, grouped: dict) -> None:
         """Refuse a column whose cells like ``1.059`` are all more than 100 times smaller than its
-        whole numbers of three digits (``951``), where no other decimal stands: there the point is
+        largest whole number of three digits (``951``), where no other decimal stands: there the point is
         a thousands separator (951, 1059), which read as a decimal point made points 1000 times too
         small that were fitted (a thrust-stand export audit, 2026-11-30); a column of decimals
         beside whole numbers of their size (16.667 beside 100, 98.125 beside 215) is read."""

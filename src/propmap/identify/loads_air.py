@@ -78,9 +78,10 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
     and not unambiguous from the values: T 200-350 K or -40 to 31 degC; p 5e4-1.1e5 Pa, 500-1100
     hPa, 50-110 kPa), or where the density would lie outside AIR_DENSITY_RANGE: then a note says
     the columns are not read (never a refusal: the air options still serve). A temperature
-    column above AIR_T_MAX or spanning more than AIR_T_SPAN is not the air's (a motor's): the
-    next temperature column is tried. A density outside PLAUSIBLE_DENSITY is used and said to
-    be checked."""
+    column that cannot be read as the air's (not numeric, empty, its unit not told or not known,
+    or above AIR_T_MAX or spanning more than AIR_T_SPAN: a motor's) gives way to the next
+    temperature column, a note saying so. A density outside PLAUSIBLE_DENSITY is used and said
+    to be checked."""
     found: dict = {"T": [], "p": []}
     for c in f.header:
         name, unit = _split_unit(c)
@@ -94,23 +95,19 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
                          "the fit's air is the parameter set's unless --altitude-m, --temperature-c/--pressure-pa or "
                          "--rho say otherwise")
         return None
-    columns = [c for c, _, _ in found["T"]] + [found["p"][0][0]]
-    try:
-        raw, _, _ = f.read([c.lower() for c in columns], optional={c.lower() for c in columns})
-    except DataError:  # (a column of text: not the air's state)
-        notes.append("a temperature or pressure column is not numeric; "
-                     + _skipped(found["T"][0][0], found["p"][0][0]))
-        return None
-    pressure = _state(found["p"][0], raw, "p", notes, found["T"][0][0])
+    p_col = found["p"][0][0]
+    pressure = _state(found["p"][0], f, "p", notes, _skipped(found["T"][0][0], p_col))
     if pressure is None:
         return None
-    for candidate in found["T"]:
-        temperature = _state(candidate, raw, "T", notes, found["p"][0][0])
+    for k, candidate in enumerate(found["T"]):  # (each read alone: a text column after a good one hid it, a review)
+        last = k == len(found["T"]) - 1
+        tail = _skipped(candidate[0], p_col) if last else "the next temperature column is tried"
+        temperature = _state(candidate, f, "T", notes, tail)
         if temperature is not None:
             break
     else:
         return None
-    T_col, p_col = candidate[0], found["p"][0][0]
+    T_col = candidate[0]
     try:  # (the air of --temperature-c/--pressure-pa: its gas constant and its ranges of T and p)
         rho = Air.from_conditions(temperature, pressure).rho
     except ValueError as exc:
@@ -135,16 +132,21 @@ def _skipped(T_col: str, p_col: str) -> str:
             "density column)")
 
 
-def _state(column: tuple, raw: dict, kind: str, notes: list, other: str) -> float | None:
+def _state(column: tuple, f, kind: str, notes: list, tail: str) -> float | None:
     """The median of a temperature [K] (``kind`` "T") or pressure [Pa] ("p") column ``column`` =
-    (name as written, unit or None, name), from the values ``raw`` read; None, with a note, where
-    it cannot be told (empty, no unit and values that do not tell it, an unknown unit) or a
-    temperature is not the air's (above AIR_T_MAX in the median, or its rows' 5th to 95th
-    percentiles more than AIR_T_SPAN apart: a motor's or an ESC's, heating through a test; a
-    motor's rising 35 -> 85 degC gave 1.06 kg/m^3 and every point 14% off: a thrust-stand export
-    audit, 2026-11-30). ``other``: the other kind's column, for the note."""
+    (name as written, unit or None, name) of the file ``f``; None, with a note ending in
+    ``tail`` (what follows), where it cannot be told (not numeric, empty, no unit and values that
+    do not tell it, an unknown unit) or a temperature is not the air's (above AIR_T_MAX in the
+    median, or its rows' 5th to 95th percentiles more than AIR_T_SPAN apart: a motor's or an
+    ESC's, heating through a test; a motor's rising 35 -> 85 degC gave 1.06 kg/m^3 and every
+    point 14% off: a thrust-stand export audit, 2026-11-30)."""
     c, unit, name = column
-    skip = "; " + (_skipped(c, other) if kind == "T" else _skipped(other, c))
+    skip = "; " + tail
+    try:
+        raw, _, _ = f.read([c.lower()], optional={c.lower()})
+    except DataError:  # (a column of text: not the air's state)
+        notes.append(f"{c!r} is not numeric" + skip)
+        return None
     x = raw[c.lower()]
     x = x[np.isfinite(x)]
     if not x.size:

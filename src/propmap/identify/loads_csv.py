@@ -81,6 +81,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     Returns
     -------
     LoadData
+        The points in SI, with ``notes`` (every decision), ``air_density`` (the file's, or
+        None) and ``converted`` (the factor each load column's unit was converted by).
 
     Raises
     ------

@@ -386,7 +386,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     points (the generic set by default: hobby-propeller sections, accurate to about 10% blind,
     docs/validation.md): a median ratio beyond 1/3 to 3, or a thrust or torque of the other
     sign, is refused with the likely cause (thrust in kgf, gf or lbf read as N where the
-    header gave no unit, ``LoadData.converted``; torque in N mm; an optical tachometer counting
+    header gave no unit or N, none converted in ``LoadData.converted``; torque in N mm; an optical tachometer counting
     every blade; the electrical rpm of a motor with pole pairs; a reaction torque; a pusher's
     thrust in data the reader left as written; no slip of a quantity the data lack); so is a
     fitted in-plane force (drag) of the

@@ -220,9 +220,18 @@ def _factor(name: str, base: str, unit: str | None, error) -> float:
 def _unit_missing(base: str, unit: str | None) -> bool:
     """Whether ``base`` is a name read only with a unit of its quantity (:data:`_UNIT_ONLY_NAMES`:
     ``n`` with a rotation unit, ``par`` with a torque's) and ``unit`` is none (a bare ``n``, a
-    count) or not such a unit: such a column is not read."""
-    return base in _UNIT_ONLY_NAMES and (unit is None or not (
-        _token(unit) in UNITS[_UNIT_ONLY_NAMES[base][1]] or _token(unit) in _NAME_UNITS.get(base, {})))
+    count), for ``n`` any other unit (``N (N)``, a normal force), for the others a speed's, an
+    angle's or a density's (``Vitesse (m/s)``, an airspeed): such a column is not read. Another
+    unit (``Empuje (gr)``) is the name's, refused as unknown by :func:`_factor` (it was dropped
+    without a word: a review, 2026-11-30)."""
+    if base not in _UNIT_ONLY_NAMES:
+        return False
+    if unit is None:
+        return True
+    tok = _token(unit)
+    if tok in UNITS[_UNIT_ONLY_NAMES[base][1]] or tok in _NAME_UNITS.get(base, {}):
+        return False
+    return base == "n" or any(tok in UNITS[kind] for kind in ("speed", "angle", "density"))
 
 
 def _entry(base: str, unit: str | None):

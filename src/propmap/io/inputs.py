@@ -337,7 +337,7 @@ class _Table:
 
 #: other spellings of a table column's name in a header (UIUC-like files written by other tools: 'eff' for eta,
 #: 'beta(deg)' for beta; refused as another header until 2026-11-30, a UIUC file audit)
-TABLE_ALIASES = {"eta": ("eff", "efficiency", "η"),
+TABLE_ALIASES = {"eta": ("eff", "efficiency"),
                  "beta": ("beta(deg)", "beta[deg]", "beta_deg", "beta(°)", "beta[°]", "beta°")}
 
 

@@ -239,7 +239,8 @@ def _check_efficiency(d, where: str) -> None:
 
 def looks_like_uiuc(path) -> bool:
     """Whether ``path`` is a UIUC-format static (``RPM CT CP``) or wind-tunnel (``J CT CP eta``) file:
-    a header of exactly those columns (in any order; ``eta`` may be missing) within its first 50 lines.
+    a header of exactly those columns (in any order; ``eta``, or ``eff`` or ``efficiency`` for it, may be
+    missing) within its first 50 lines.
 
     Reads at most the first 64 KiB of a regular file (never a device or a pipe).
 
