@@ -195,7 +195,7 @@ LOOKED_FOR = {
 
 def _factor(name: str, base: str, unit: str | None, error) -> float:
     """The factor to SI (rpm for a rotation speed, deg for an angle) of column ``name``, whose
-    recognised quantity name is ``base`` (in _NAMES) and unit ``unit`` (None: the quantity's SI,
+    recognised quantity name is ``base`` (in _PARSED) and unit ``unit`` (None: the quantity's SI,
     except ``omega``, the field's symbol of a rotation rate in rad/s, and ``rps`` or ``rev/s``,
     revolutions per second)."""
     quantity, kind = _PARSED[base]
