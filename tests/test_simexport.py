@@ -6,6 +6,7 @@ import ast
 import json
 import math
 from pathlib import Path
+import re
 import warnings
 import xml.etree.ElementTree as ET
 
@@ -232,3 +233,28 @@ def test_predict_broadcasts_every_load_to_the_inputs_shape(target):
     assert all(float(a[1]) == float(b) for a, b in zip(loads, one))
     with pytest.raises(ValueError):
         predict(target, c, np.ones(2), np.ones(3), 0.5)
+
+
+@pytest.mark.parametrize("mass, gravity, said", [
+    (6.0, 9.81, r"it hovers at 14\d\d\d rpm, where the written rotor_speed_max \(14100 rpm, the envelope's top\) "
+                r"leaves 0\.\d% of thrust above hover: RotorPy saturates there"),
+    (1.0, 9.0, r"its gravity is 9 m/s\^2, RotorPy's Multirotor takes 9\.81: at the hover rpm pinned for 9 its thrust "
+               r"in RotorPy is 8\.3% below its weight")])
+def test_rotorpy_export_warns_of_a_hover_at_the_speed_limit_and_another_gravity(capsys, tmp_path, mass, gravity,
+                                                                                said):
+    """A 6 kg quadrotor of APC 8x6E was pinned at 14,086 rpm beside a written rotor_speed_max of
+    14,100 (0.2% of thrust to climb with), and a file's g = 9.0 at a hover that sinks in RotorPy
+    (g = 9.81), both without a word (a simulator-user audit, 2026-11-30); a 1 kg one at 9.81 is
+    not warned of either."""
+    path = Path(_vehicle_toml(tmp_path / "v.toml", 4))
+    plain = path.read_text()
+    path.write_text(plain.replace("mass = 1.0", f"mass = {mass}\ngravity = {gravity}"))
+    code = main(["export-sim", "apce_8x6", "--target", "rotorpy", "--out", str(tmp_path / "v.py"),
+                 "--vehicle", str(path), "--points", "300"])
+    err = capsys.readouterr().err
+    assert code == 0 and re.search("propmap: warning: --vehicle: " + said, err), err
+    path.write_text(plain)
+    assert main(["export-sim", "apce_8x6", "--target", "rotorpy", "--out", str(tmp_path / "w.py"),
+                 "--vehicle", str(path), "--points", "300"]) == 0
+    err = capsys.readouterr().err
+    assert "rotor_speed_max (" not in err and "RotorPy's Multirotor takes" not in err, err

@@ -116,6 +116,8 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                                                                target, hover_rpm)
         if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
             _warn_wash_drag(veh, params, hover_rpm, air)
+        if target == "rotorpy":
+            _warn_rotorpy_limits(veh, hover_rpm, env.rpm[1])
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)
@@ -245,6 +247,34 @@ def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, ta
                              f"{mach:.3g} (> {TIP_MACH_WARN:g}, beyond the model's physics): is its mass "
                              f"({veh.mass:g} kg) in kg, and are its rotors the ones it flies?")
     return veh, hover_rpm, hover_from, airframe
+
+
+#: RotorPy's Multirotor's gravity [m/s^2] (its dynamics take g = 9.81, whatever the vehicle file says)
+ROTORPY_G = 9.81
+#: the thrust margin above hover at the written rotor_speed_max below which rotorpy's export warns
+ROTORPY_MARGIN = 0.3
+
+
+def _warn_rotorpy_limits(veh, hover_rpm: float, rpm_max: float) -> None:
+    """rotorpy's export of a vehicle that hovers near the written rotor_speed_max (the envelope's
+    top: a thrust margin (rpm_max / hover)^2 - 1 below ROTORPY_MARGIN, where RotorPy saturates
+    on any climb), or whose file's gravity is not RotorPy's ROTORPY_G (hover pinned at the
+    file's g sinks or climbs there): warned of (a simulator-user audit, 2026-11-30: a 6 kg
+    vehicle pinned at 14,086 rpm against a rotor_speed_max of 14,100, and g = 9.0 sinking by 6.5%
+    of its weight, both without a word)."""
+    import warnings
+
+    margin = (rpm_max / hover_rpm) ** 2 - 1.0
+    if margin < ROTORPY_MARGIN:
+        warnings.warn(f"--vehicle: it hovers at {hover_rpm:.0f} rpm, where the written rotor_speed_max "
+                      f"({rpm_max:.0f} rpm, the envelope's top) leaves {100 * margin:.1f}% of thrust above hover: "
+                      "RotorPy saturates there on any climb; widen --envelope rpm=LOW:HIGH to your motors' top and "
+                      "set rotor_speed_max to it", UserWarning, stacklevel=1)
+    off = veh.gravity / ROTORPY_G - 1.0
+    if abs(off) > 2e-3:
+        warnings.warn(f"--vehicle: its gravity is {veh.gravity:g} m/s^2, RotorPy's Multirotor takes {ROTORPY_G:g}: at "
+                      f"the hover rpm pinned for {veh.gravity:g} its thrust in RotorPy is {100 * abs(off):.1f}% "
+                      f"{'below' if off < 0 else 'above'} its weight", UserWarning, stacklevel=1)
 
 
 def _warn_wash_drag(veh, params, hover_rpm: float, air) -> None:
