@@ -245,6 +245,8 @@ def test_cli_fit_flight_then_wrench_with_the_written_file(tmp_path, capsys, shar
     held = fr["held_out"][SEGMENTS[1]]
     # the fitted model beats T = k Omega^2 on the held-out log
     assert held["model"]["F"] < held["k_omega2"]["F"]
+    # the slow figure-8, held out, stays inside what the training log flew: no extrapolation said
+    assert not [w for w in report["warnings"] if w.startswith("held-out log ")], report["warnings"]
     for suffix in (".report.json", ".report.txt", ".png", ".speed.png"):
         assert (tmp_path / ("p" + suffix)).is_file()
     assert "p.png, p.speed.png" in cap.err.splitlines()[-1]  # every file written is named
@@ -505,3 +507,20 @@ def test_the_motor_lag_is_the_first_order_response_to_the_interpolated_speed():
     t5[50] = t5[49]
     held, _ = _lagged(SimpleNamespace(t=t5, rotor_omega=swing[:100], n=100, rotor_acceleration=None), tau)
     assert np.all(np.isfinite(held)) and held[50, 0] == held[49, 0]
+
+
+def test_a_held_out_log_faster_than_the_training_logs_is_said(shared_data):
+    """fit flight holding out the race track (11.3 m/s) against the slow figure-8 (3.5 m/s) scored it
+    without a word where `wrench` with the written file warned of the same log (a flight-log audit,
+    2026-11-30); a log inside the training logs' range is not warned of."""
+    from propmap.cli.flight import _flight_coverage, _held_beyond
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    slow, race = (read_flight_log(shared_data / "neurobem_flights" / s) for s in
+                  ("bemnn20210223104803seg2.mat", "bemnn20210218171908seg2.mat"))
+    cov = _flight_coverage([slow], veh, pm.Air())
+    said = _held_beyond([slow, race], {race.name}, cov, veh, pm.Air())
+    assert len(said) == 1 and said[0].startswith(f"held-out log {race.name} reaches ") and "rpm (theirs " in said[0]
+    assert "extrapolate the fit" in said[0]
+    assert _held_beyond([slow, race], {slow.name}, _flight_coverage([race], veh, pm.Air()), veh, pm.Air()) == []

@@ -234,6 +234,11 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                                     "cannot make the fitted set's hover thrust",))
     coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
                 "groups": [n for n in names if n not in held], "held_out": sorted(held)}
+    beyond = _held_beyond(logs, held, coverage, veh, res.air)
+    if beyond:
+        from dataclasses import replace
+
+        res = replace(res, warnings=res.warnings + tuple(beyond))
     _write_outputs(res, out, base_label, as_json, "\n".join(text),
                    figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
@@ -354,6 +359,28 @@ def _flight_coverage(logs, veh, air) -> dict:
             "incidence_deg_max": float(np.degrees(np.max(inc[moving]))) if moving.any() else 0.0,
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed)),
             **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}
+
+
+def _held_beyond(logs, held, coverage: dict, veh, air) -> list[str]:
+    """A warning per held-out log whose rotors go beyond what the training logs covered (the
+    written file's [coverage]: airspeed, advance ratio, rpm), as `wrench --params` on that log
+    warns: its scores extrapolate the fit (said of none until 2026-11-30, where `wrench` with the
+    written file warned of the same log: a flight-log audit)."""
+    out = []
+    for lg in logs:
+        if lg.name not in held:
+            continue
+        c = _flight_coverage([lg], veh, air)
+        over = [f"{c['airspeed_max']:.3g} m/s at a hub (the training logs' {coverage['airspeed_max']:.3g})"
+                if c["airspeed_max"] > 1.05 * coverage["airspeed_max"] else "",
+                f"J {c['J_max']:.2g} (theirs {coverage['J_max']:.2g})" if c["J_max"] > 1.05 * coverage["J_max"] else "",
+                f"{c['rpm_min']:.0f}-{c['rpm_max']:.0f} rpm (theirs {coverage['rpm_min']:.0f}-"
+                f"{coverage['rpm_max']:.0f})" if (c["rpm_max"] > 1.02 * coverage["rpm_max"]
+                                                  or c["rpm_min"] < coverage["rpm_min"] / 1.02) else ""]
+        if any(over):
+            out.append(f"held-out log {lg.name} reaches {', '.join(o for o in over if o)}: its scores extrapolate "
+                       "the fit beyond the flights it saw")
+    return out
 
 
 def _hover_loads(params, veh, samples, air):
