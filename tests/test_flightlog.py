@@ -208,6 +208,24 @@ def test_malformed_mat_logs(tmp_path, seg, mutate, match):
         read_flight_log(_bad_mat(tmp_path, mutate(arr)))
 
 
+def test_the_29_measured_columns_alone_are_read(tmp_path, seg):
+    """The dataset's 29 measured columns without NeuroBEM's prediction and residuals, as an
+    N x 29 .mat or a headerless CSV, were refused ('must be an N x 41 numeric array'; a
+    flight-log audit, 2026-11-30): read as the 41-column log's first 29, with no prediction to
+    score; 30 columns stay refused."""
+    arr = next(v for k, v in scipy.io.loadmat(seg).items() if not k.startswith("__"))[:400].copy()
+    whole = read_flight_log(_bad_mat(tmp_path, arr, "whole.mat"))
+    assert whole.reference_force is not None
+    np.savetxt(tmp_path / "m29.csv", arr[:, :29], delimiter=",", fmt="%.17g")
+    for log in (read_flight_log(_bad_mat(tmp_path, arr[:, :29], "m29.mat")), read_flight_log(tmp_path / "m29.csv")):
+        assert log.n == whole.n and log.reference_force is None and log.reference_moment is None
+        for field in ("t", "angular_velocity", "attitude", "specific_force", "velocity", "rotor_omega"):
+            np.testing.assert_array_equal(getattr(log, field), getattr(whole, field))
+    np.savetxt(tmp_path / "m30.csv", arr[:, :30], delimiter=",", fmt="%.17g")
+    with pytest.raises(FlightLogError, match=r"30 columns; the NeuroBEM layout has 41 \(29 without the prediction"):
+        read_flight_log(tmp_path / "m30.csv")
+
+
 @pytest.mark.parametrize("content, name, match", [
     (b"not a mat file at all", "x.mat", "not a readable MATLAB"),
     (b"t,ang acc x\n1,2\n", "x.csv", "header lacks the NeuroBEM column"),

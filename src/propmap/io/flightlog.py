@@ -11,8 +11,9 @@ log lists its rotors in that order (rotor k of the file is motor k of the log).
   angular velocity [rad/s], quaternion (x, y, z, w), specific force (linear acceleration
   including gravity) [m/s^2], velocity [m/s], all in the body frame; position [m]; four
   motor speeds [rad/s] and their derivatives [rad/s^2]; battery voltage; NeuroBEM's
-  predicted body force [N] and moment [N m]; residuals. A CSV may have a header line with
-  those names, or none. Motor order: back-right, front-right, back-left, front-left.
+  predicted body force [N] and moment [N m]; residuals (the first 29 columns alone, N x 29,
+  are read too: no prediction to score beside). A CSV may have a header line with those
+  names, or none. Motor order: back-right, front-right, back-left, front-left.
 * **PX4 ULog** (read with pyulog; io/ulog.py): accelerations, rates, attitude, velocity and
   motor speeds from their topics, interpolated to the timestamps of the acceleration topic
   over the time they all cover and turned from PX4's forward-right-down body frame into
@@ -47,6 +48,10 @@ NEUROBEM_COLUMNS = (
     "residual_fx", "residual_fy", "residual_fz", "residual_tx", "residual_ty", "residual_tz",
 )
 FORMATS = ("neurobem", "ulog")
+#: the layout's measured columns (time to the battery voltage), which an array or a headerless CSV may hold alone
+#: (N x 29: the dataset without NeuroBEM's prediction and residuals; refused until 2026-11-30, a flight-log audit)
+N_MEASURED = 29
+MEASURED_WIDTHS = (N_MEASURED, len(NEUROBEM_COLUMNS))
 #: columns of the layout propmap does not use (the position, the battery voltage): a header may leave them out and
 #: a sample may hold NaN there (motion capture losing the vehicle for 3 samples refused the log: a flight-log audit,
 #: 2026-11-27)
@@ -163,10 +168,10 @@ def read_flight_log(path, *, format: str | None = None, motor_map: tuple[float, 
         time not strictly increasing or sampled below MIN_RATE_HZ (10 Hz: a time in ms or us),
         non-finite values (named as such), motor speeds outside [0, 1e5]
         rad/s, accelerations beyond 2000 m/s^2, rates beyond 200 rad/s or speeds beyond
-        500 m/s (likely a unit mistake), a CSV without a header that does not have the 41
-        columns of the NeuroBEM layout; an attitude quaternion not of unit norm, an
-        accelerometer whose mean upward reading is not g plus the log's mean vertical
-        acceleration (accelerations in g, gravity removed, a z-down frame), rates that are
+        500 m/s (likely a unit mistake), a CSV without a header (or a .mat array) that does not
+        have the 41 columns of the NeuroBEM layout or its first 29, the measured ones; an
+        attitude quaternion not of unit norm, an accelerometer whose mean upward reading is not g
+        plus the log's mean vertical acceleration (accelerations in g, gravity removed, a z-down frame), rates that are
         57 times or the negative of the attitude's change (deg/s, another frame).
     """
     p = as_path(path)
@@ -224,13 +229,16 @@ def _mat_array(raw: bytes, name: str) -> np.ndarray:
                              + (f"; not read: {', '.join(other)[:200]} (save it as a full double array)" if other
                                 else ""))
     (key, a), = arrays.items()
-    if a.ndim != 2 or a.shape[1] != len(NEUROBEM_COLUMNS) or a.dtype.kind not in "iuf":
+    if a.ndim != 2 or a.shape[1] not in MEASURED_WIDTHS or a.dtype.kind not in "iuf":
         raise FlightLogError(f"{name}: variable {key!r} must be an N x {len(NEUROBEM_COLUMNS)} numeric array "
-                             f"(the NeuroBEM layout), got shape {a.shape} of {a.dtype}")
+                             f"(the NeuroBEM layout; N x {N_MEASURED}: its measured columns alone), got shape "
+                             f"{a.shape} of {a.dtype}")
     if a.dtype.kind != "f":  # (int16 time truncated to whole seconds was refused as 'time does not increase')
         raise FlightLogError(f"{name}: variable {key!r} holds {a.dtype} values; a flight log's are floating-point "
                              "(its time in seconds, its rates in rad/s): save it as double")
-    return a.astype(float)
+    out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)  # (N x 29: no prediction, NaN there)
+    out[:, :a.shape[1]] = a
+    return out
 
 
 def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
@@ -240,10 +248,12 @@ def _csv_array(raw: bytes, p: Path, name: str) -> tuple[np.ndarray, list[int]]:
     lines, first = _csv_lines(text, name)
     skip, order = _csv_columns(lines, first, name)
     numbered, a = _csv_numbers(lines, skip, name)
-    if a.shape[1] <= max(order) or (skip == first and a.shape[1] != len(NEUROBEM_COLUMNS)):
+    if skip == first:  # (no header: by position, the 29 measured columns alone or all 41)
+        order = list(range(a.shape[1]))
+    if a.shape[1] <= max(order) or (skip == first and a.shape[1] not in MEASURED_WIDTHS):
         # without a header the columns are the layout's by position: another count (an index column) shifts them
         raise FlightLogError(f"{name}: {a.shape[1]} columns; the NeuroBEM layout has {len(NEUROBEM_COLUMNS)} "
-                             f"(or a header naming them)")
+                             f"({N_MEASURED} without the prediction and its residuals, or a header naming them)")
     out = np.full((a.shape[0], len(NEUROBEM_COLUMNS)), np.nan)
     for k, j in enumerate(order):
         if j >= 0:
