@@ -355,3 +355,21 @@ def test_export_sim_names_a_vehicle_mass_in_grams_and_an_unused_vehicle(own_vehi
     assert capsys.readouterr().err.rstrip().endswith("or give --hover-rpm")
     assert main([*base, "--vehicle", str(vehicle), "--points", "300"]) == 0  # (the vehicle alone pins the hover)
     assert out.exists()
+
+
+def test_trim_vehicle_refuses_a_supersonic_hover_asking_for_the_mass_in_kg(tmp_path, capsys):
+    """The NeuroBEM quadrotor with its mass in grams (772) trimmed at a supersonic tip speed and
+    printed it, exit 0, with a tip-Mach warning only (a flight-log audit, 2026-11-30): refused,
+    asking whether the mass is in kg; the file as shipped trims as before (12,246 rpm)."""
+    src = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    grams = tmp_path / "grams.toml"
+    for f in src.parent.glob("neurobem_*_geom.txt"):  # (the rotors' geometry, named relative to the file)
+        shutil.copy(f, tmp_path / f.name)
+    grams.write_text(src.read_text().replace("mass = 0.772", "mass = 772", 1))
+    code = main(["trim-vehicle", "--vehicle", str(grams)])
+    err = capsys.readouterr().err
+    assert code == 2 and re.search(r"propmap: error: --airspeed 0: the rotors turn at up to \d+ rpm, a blade tip "
+                                   r"Mach number of [\d.]+ \(supersonic, beyond the model's physics\): is the "
+                                   r"vehicle's mass \(772 kg\) in kg", err), err
+    assert main(["trim-vehicle", "--vehicle", str(src)]) == 0
+    assert "12246.2" in capsys.readouterr().out

@@ -64,6 +64,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
             raise InputError(f"--airspeed {V:g}: {exc}") from None
         except SolverError as exc:
             raise click.ClickException(str(exc)) from None
+        _refuse_supersonic(veh, t, V, model_air(params, air))
         trims.append(t)
         rows.append({"airspeed": V, "climb_rate": climb_rate, "roll_deg": math.degrees(t.roll),
                      "pitch_deg": math.degrees(t.pitch), "rotor_rpm": [float(w) / RPM for w in t.rotor_omega],
@@ -86,3 +87,16 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     for r in rows:
         click.echo(f"{r['airspeed']:>8g}{round(r['roll_deg'], 3) + 0.0:>12.3f}{round(r['pitch_deg'], 3) + 0.0:>13.3f}"
                    + "".join(f"{w:>16.1f}" for w in r["rotor_rpm"]) + f"{r['power_W']:>11.2f}")
+
+
+def _refuse_supersonic(veh, trim, V: float, air) -> None:
+    """Refuse a trim whose blade tips turn faster than sound (beyond the model's physics): the
+    vehicle's mass in grams, or rotors not the ones it flies (a 600 g quadrotor written as 600
+    trimmed at 166,135 rpm and 1.8 MW with a tip-Mach warning only, exit 0: a flight-log audit,
+    2026-11-30; `wrench` and `export-sim` refuse it)."""
+    mach = max(float(w) * r.propeller.radius for w, r in zip(trim.rotor_omega, veh.rotors)) / air.speed_of_sound
+    if mach > 1.0:
+        rpm = max(float(w) for w in trim.rotor_omega) / RPM
+        raise InputError(f"--airspeed {V:g}: the rotors turn at up to {rpm:.0f} rpm, a blade tip Mach number of "
+                         f"{mach:.3g} (supersonic, beyond the model's physics): is the vehicle's mass ({veh.mass:g} "
+                         "kg) in kg, and are its rotors the ones it flies?")
