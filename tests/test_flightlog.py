@@ -742,3 +742,22 @@ def test_the_mass_a_logs_own_prediction_was_made_for(shared_data, tmp_path):
         assert other.reference_force is not None and other.reference_mass is None
         assert reference_at_vehicle_mass(flight_samples([other], veh), veh.mass) is None
     assert reference_at_vehicle_mass(dataclasses.replace(s, reference_mass=()), veh.mass) is None
+
+
+@pytest.mark.parametrize("scaled, said", [
+    ((4, 7), r"the logged angular acceleration is 0\.017\d* times the logged rates' change \(within 0\.3-3 expected\): "
+             r"are the rates in deg/s \(the ratio near 1/57\.3\)\?"),
+    ((1, 7), r"agrees with the rates read in deg/s: are they in deg/s\? A log's rates are read in rad/s")])
+def test_rates_in_deg_per_s_on_a_slow_log_are_named(tmp_path, shared_data, scaled, said):
+    """On the slow figure-8 (3.5 m/s) the rates' own deg/s check does not judge (its rates are
+    small), and rates in deg/s were told 'zeros or another quantity?' (the angular acceleration
+    left in rad/s^2) or 'is the velocity in the body frame?' (both in degrees): now deg/s is named
+    (a flight-log audit, 2026-11-30)."""
+    import pandas as pd
+
+    a = next(v for k, v in scipy.io.loadmat(shared_data / "neurobem_flights" / SEGMENTS[2]).items()
+             if not k.startswith("__")).copy()
+    a[:, scaled[0]:scaled[1]] *= 180 / np.pi
+    pd.DataFrame(a, columns=NEUROBEM_COLUMNS).to_csv(tmp_path / "deg.csv", index=False)
+    with pytest.raises(FlightLogError, match=said):
+        read_flight_log(tmp_path / "deg.csv")

@@ -236,8 +236,12 @@ def _check_angular_acceleration(log: FlightLog, name: str) -> None:
     b1 = ld / dd
     if ld > 0 and (ll / ld >= lo and b1 <= hi):  # ([b1, b2] meets [lo, hi]: b1 <= b2 where they correlate)
         return
-    why = ("in deg/s^2?" if 20 <= b1 <= 150 else "zeros or another quantity?" if abs(b1) < lo else
-           "another frame or sign?" if b1 < 0 else "another unit or column?")
+    # (1/57.3: the rates in deg/s, the acceleration in rad/s^2; on a slow log the rates' own check does not judge,
+    # and this said "zeros or another quantity?": a flight-log audit, 2026-11-30)
+    why = ("in deg/s^2?" if 20 <= b1 <= 150 else
+           "are the rates in deg/s (the ratio near 1/57.3)?" if 1 / 150 <= b1 <= 1 / 20 else
+           "zeros or another quantity?" if abs(b1) < lo else "another frame or sign?" if b1 < 0 else
+           "another unit or column?")
     raise FlightLogError(f"{name}: the logged angular acceleration is {b1:.3g} times the logged rates' change "
                          f"(within {lo:g}-{hi:g} expected): {why} It is read in rad/s^2, body axes (the measured "
                          "moment is I dw/dt + w x I w)")
@@ -295,8 +299,17 @@ def _check_kinematics(log: FlightLog, turn, name: str) -> None:
         size = float(np.sqrt(np.mean(_window_means(log.t, accel, k) ** 2)))
         if miss <= max(KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
             return
-        worst = worst or (miss, size, window)
-    miss, size, window = worst
+        worst = worst or (miss, size, window, k)
+    miss, size, window, k = worst
+    # (rates in deg/s make w x v 57 times large: said as a velocity in the world frame, a flight-log audit, 2026-11-30)
+    degrees = accel - np.cross(np.radians(log.angular_velocity), log.velocity)
+    change = (log.velocity[k:] - log.velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
+    if float(np.sqrt(np.mean((change - _window_means(log.t, degrees, k)) ** 2))) <= max(
+            KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
+        raise FlightLogError(f"{name}: the logged velocity's change (in the body frame) misses what the accelerometer "
+                             f"and the rates make of it (dv/dt = a_s + R^T g - w x v) by {miss:.3g} m/s^2 rms over "
+                             f"{window:g} s, and agrees with the rates read in deg/s: are they in deg/s? A log's rates "
+                             "are read in rad/s")
     raise FlightLogError(f"{name}: the logged velocity's change (in the body frame) misses what the accelerometer "
                          f"and the rates make of it (dv/dt = a_s + R^T g - w x v) by {miss:.3g} m/s^2 rms over "
                          f"{window:g} s, where the acceleration is {size:.3g} m/s^2 rms: is the velocity in the body "
