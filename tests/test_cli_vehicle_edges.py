@@ -373,3 +373,14 @@ def test_trim_vehicle_refuses_a_supersonic_hover_asking_for_the_mass_in_kg(tmp_p
                                    r"vehicle's mass \(772 kg\) in kg", err), err
     assert main(["trim-vehicle", "--vehicle", str(src)]) == 0
     assert "12246.2" in capsys.readouterr().out
+
+
+def test_a_vehicle_file_with_weight_for_mass_names_the_unknown_key(tmp_path, capsys):
+    """'weight = 0.772' in place of 'mass' was told only "missing key 'mass'": the unknown key is
+    named first, with the allowed ones (a flight-log audit, 2026-11-30)."""
+    src = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    path = tmp_path / "w.toml"
+    path.write_text(src.read_text().replace("mass = 0.772", "weight = 0.772", 1))
+    code = main(["trim-vehicle", "--vehicle", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and "unknown key(s) weight (allowed: mass, " in err, err
