@@ -67,6 +67,11 @@ def test_written_coefficients_reproduce_their_stated_error(tmp_path, model, targ
     assert report["envelope"]["hover_rpm"] == pytest.approx(math.sqrt(4000 * 9000))
     if target == "rotorpy":
         assert coefficients["k_flap"] == 0.0 and report["errors"]["rolling_moment"]["max"] > 0.5  # not representable
+    if target == "multinomial":  # (its signs and source in the file itself since 2026-11-30: a simulator-user audit)
+        written = json.loads(files[0].read_text())
+        assert written["propeller"] == "apce_8x6" and written["params"] == label
+        assert written["conventions"]["H"].startswith("in the disk plane, positive against the in-plane motion")
+        assert written["conventions"]["beta"].endswith("0 axial climb, 90 deg edgewise, 180 deg axial descent")
     if target in ("gazebo-classic", "gz-sim"):  # the rolling moment is representable: a small error
         assert report["errors"]["rolling_moment"]["rms"] < 0.1
 

@@ -252,6 +252,20 @@ def _gazebo_text(res: SimExport, head: str) -> str:
     return "\n".join(lines) + "\n"
 
 
+#: the multinomial file's sign conventions (docs/conventions.md), written into it
+MULTINOMIAL_CONVENTIONS = {
+    "beta": "the angle between the rotor axis (thrust direction) and the hub's velocity through the air: 0 axial "
+            "climb, 90 deg edgewise, 180 deg axial descent",
+    "lambda_c": "positive in climb (the air comes from ahead of the disk along the axis)",
+    "T": "along the rotor axis, positive in the thrust direction",
+    "H": "in the disk plane, positive against the in-plane motion (force T z - H e_ip, e_ip the in-plane velocity's "
+         "direction)",
+    "Q": "about the axis, positive opposing the rotation (what the motor supplies)",
+    "M_R": "about e_ip, positive with more thrust on the advancing side; moment vector -spin (Q z + M_R e_ip), "
+           "spin +1 for a rotation about +z",
+}
+
+
 def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
                  airframe_label: str = "") -> list[Path]:
     """Write the coefficients in the target's own format (atomically), and a JSON report
@@ -310,9 +324,12 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
     elif res.target in ("gazebo-classic", "gz-sim"):
         text = _gazebo_text(res, head)
     else:
+        # (the signs and the source were in the report and the docs only: a simulator-user audit, 2026-11-30)
         text = json.dumps({"model": "multinomial in mu = V sin(beta)/(Omega R), lambda_c = V cos(beta)/(Omega R)",
                            "terms_even": list(EVEN_TERMS), "terms_odd": list(ODD_TERMS),
                            "normalisation": "T, H = rho pi R^2 (Omega R)^2 C; Q, M_R = rho pi R^3 (Omega R)^2 C",
+                           "conventions": MULTINOMIAL_CONVENTIONS,
+                           "propeller": res.meta.get("propeller"), "params": res.meta.get("params"),
                            **res.coefficients, "fixed_at_zero": res.fixed}, indent=2) + "\n"
     from ..io.atomic import atomic_paths, file_sha256
     from ..io.mapfile import _json_safe
