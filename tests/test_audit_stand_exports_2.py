@@ -309,3 +309,33 @@ def test_one_spike_does_not_make_a_temperature_a_motors(tmp_path):
     path.write_text("RPM,Thrust (N),Temperature (°C),Pressure (hPa)\n" + "".join(
         f"{a:.0f},{t:.6g},{c:g},1013\n" for a, t, c in zip(rpm, T, temperatures)), encoding="utf-8")
     assert read_loads(path).air_density == pytest.approx(101300 / (287.05 * 295.15), rel=1e-3)
+
+
+def test_a_run_column_is_read_as_the_groups(tmp_path):
+    """A tunnel file's run labels under 'Run' were read as nothing (every point one group 'all',
+    --holdout of a run refused): read as the groups where no 'group' column is, and beside one
+    not read, with a note (a wind-tunnel data audit, 2026-11-30)."""
+    rows = [(5000.0 + 1000 * (k // 3), 2.0 * k, 60.0, 1.0 + 0.1 * k, f"r{k // 3}") for k in range(9)]
+    path = tmp_path / "runs.csv"
+    path.write_text("rpm,airspeed,incidence_deg,thrust,Run\n" + "".join(",".join(map(str, r)) + "\n" for r in rows))
+    assert list(read_loads(path).group) == [f"r{k // 3}" for k in range(9)]
+    cm = map_columns(["rpm", "thrust", "Run", "group"])
+    assert cm.column("group") == "group"
+    assert "column 'Run' is not read: the run labels are read from 'group'" in cm.notes
+
+
+def test_a_drag_of_the_other_sign_at_half_the_points_is_warned_of():
+    """A sweep through negative angles given as magnitudes puts about half its in-plane forces on
+    the other side: fitted without a word (warned of from 80%); warned of from 25% (a wind-tunnel
+    data audit, 2026-11-30), and not where the signs agree."""
+    prop = pm.load_propeller("apce_10x7")
+    omega = np.full(12, 6000 * np.pi / 30)
+    V, inc = np.full(12, 10.0), np.radians(np.linspace(30, 90, 12))
+    r = pm.rotor_loads(prop, pm.generic_params(), omega, V, inc)
+    flipped = np.where(np.arange(12) % 2 == 0, -1.0, 1.0) * r.drag
+    for drag, warned in ((flipped, True), (r.drag, False)):
+        data = pm.identify.LoadData(omega, V, inc, {"thrust": r.thrust, "drag": drag}, np.full(12, "a", dtype=object))
+        said = [w for w in sanity_check(data, prop) if "the measured drag has the other sign" in w]
+        assert bool(said) == warned, said
+        if warned:
+            assert "at 6 of 12 points at incidence" in said[0] and "given as magnitudes" in said[0]

@@ -145,7 +145,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # 2026-11-27: the thrust 44-64% off, exit 0)
     named = [c for c in f.header if _propeller_column(*split_header(c))]
     raw, texts, lines = f.read([low[q] for q in quantities] + [c.lower() for c in ratio],
-                               (low.get("group", "group"), *(c.lower() for c in named)),
+                               ((cm.column("group") or "group").lower(), *(c.lower() for c in named)),
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
                                gaps={low[q] for q in keys} if sampled else (),
                                percent={low["esc"]} if "esc" in low else ())

@@ -93,8 +93,12 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
 
 
 #: the share of the points at incidence where a measured in-plane force of the other sign than the model's is refused
-#: (from 0.8 of them it is warned of)
+#: (from DRAG_SIGN_WARNED of them it is warned of)
 DRAG_SIGN_REFUSED = 0.95
+#: the share from which a measured in-plane force of the other sign is warned of (0.8 until 2026-11-30, when a sweep
+#: through negative angles given as magnitudes, about half of its points of the other sign, was fitted without a word,
+#: alpha_L0 at its bound: a wind-tunnel data audit)
+DRAG_SIGN_WARNED = 0.25
 
 
 def _other_counts(ratio: dict, data, propeller, ratios, loads_at, pole_pairs, where) -> list[str]:
@@ -182,8 +186,10 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
         # raised after the thrust and torque checks, whose unit slips are said first)
         refused = DataError(f"load data: {data.source}: {said} (a normal force of a body-fixed balance, or a "
                             "sweep through negative angles given as magnitudes, has it on one side)")
-    elif sure.sum() >= 3 and opposite >= 0.8 * sure.sum():
-        warnings_.append(said)
+    elif sure.sum() >= 3 and opposite >= DRAG_SIGN_WARNED * sure.sum():
+        warnings_.append(said + ("" if opposite >= 0.8 * sure.sum() else
+                                 " (at part of the points: a sweep through negative angles given as magnitudes, or a "
+                                 "body-fixed balance's normal force whose sign follows the angle's?)"))
     # an in-plane force without an in-plane airspeed: an incidence the file does not give?
     Dm = data.measured["drag"]
     axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)

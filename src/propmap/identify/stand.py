@@ -63,7 +63,10 @@ _THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust
 #: the rank of a name that gives way to another of its quantity (0: the quantity's own; PWM gives way to a throttle,
 #: both to an ESC signal; Thrust avg to Thrust); two of one rank are refused ('ESC (µs)' beside 'Throttle (%)' was:
 #: a thrust-stand export audit, 2026-11-30)
-_RANK = {**dict.fromkeys(_ESC_ALIASES, 2), **dict.fromkeys(_THRUST_ALIASES, 1), "throttle": 1}
+#: other names of a file's run labels, read where no 'group' column is
+_GROUP_ALIASES = ("run", "run id", "run_id", "run name", "test id", "test_id", "series")
+_RANK = {**dict.fromkeys(_ESC_ALIASES, 2), **dict.fromkeys(_THRUST_ALIASES, 1), "throttle": 1,
+         **dict.fromkeys(_GROUP_ALIASES, 1)}
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
     "force": {"n": 1.0, "mn": 1e-3, "kn": 1e3, "kgf": G0, "kg": G0, "gf": G0 * 1e-3, "g": G0 * 1e-3, "lbf": LBF,
@@ -119,6 +122,9 @@ _NAMES = {
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
     **{name: ("esc", None) for name in _ESC_ALIASES},
     "time": ("time", None), "time_s": ("time", None), "group": ("group", None),
+    # a tunnel's run labels under another name (a 'Run' column was read as nothing, and --holdout found one group
+    # 'all': a wind-tunnel data audit, 2026-11-30)
+    **dict.fromkeys(_GROUP_ALIASES, ("group", None)),
     # the air density a stand or tunnel logs (its median is the fit's air where no air option is given)
     "air density": ("air_density", "density"), "air_density": ("air_density", "density"),
     "density": ("air_density", "density"), "rho": ("air_density", "density"),
@@ -411,8 +417,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
                 raise error(f"columns {first!r} and {name!r} both give {quantity}: keep one")
             # an alias (PWM, Thrust avg) gives way to the quantity's own name (ESC signal, throttle; Thrust)
             alias, signal = (name, first) if rank > rank_first else (first, name)
-            what = "the ESC signal" if quantity == "esc" else f"the {quantity}"
-            cm.notes.append(f"column {alias!r} is not read: {what} is read from {signal!r}")
+            what = {"esc": "the ESC signal is", "group": "the run labels are"}.get(quantity, f"the {quantity} is")
+            cm.notes.append(f"column {alias!r} is not read: {what} read from {signal!r}")
             if alias == name:
                 continue
             cm.notes[:] = [note for note in cm.notes if not note.startswith(f"{alias!r} converted")]
