@@ -339,3 +339,27 @@ def test_a_drag_of_the_other_sign_at_half_the_points_is_warned_of():
         assert bool(said) == warned, said
         if warned:
             assert "at 6 of 12 points at incidence" in said[0] and "given as magnitudes" in said[0]
+
+
+@pytest.mark.parametrize("axes", ["rotor", "wind thrust and lift", "wind drag"])
+def test_loads_in_wind_axes_are_named_as_such(axes):
+    """A tunnel's force along the flow under 'thrust' with its lift under 'normal force', or its
+    drag along the flow under 'drag', were fitted with exit 0 (parameters at their bounds), said
+    only as a thrust ratio or a drag sign (a wind-tunnel data audit, 2026-11-30): a warning names
+    wind axes and the conversion; loads in the rotor's axes get none."""
+    prop = pm.load_propeller("apce_10x7")
+    omega = np.full(16, 6000 * np.pi / 30)
+    V, inc = np.tile([6.0, 12.0], 8), np.radians(np.repeat(np.linspace(20, 160, 8), 2))
+    r = pm.rotor_loads(prop, pm.generic_params(), omega, V, inc)
+    along, lift = r.thrust * np.cos(inc) - r.drag * np.sin(inc), r.thrust * np.sin(inc) + r.drag * np.cos(inc)
+    T, D = {"rotor": (r.thrust, r.drag), "wind thrust and lift": (along, lift), "wind drag": (r.thrust, -along)}[axes]
+    data = pm.identify.LoadData(omega, V, inc, {"thrust": T, "drag": D}, np.full(16, "a", dtype=object))
+    if axes == "wind thrust and lift":  # (beyond 90 deg the force along the flow turns negative: refused, said first)
+        with pytest.raises(DataError, match=r"likely loads in wind axes, not the rotor's \(thrust = L sin i - D_w"):
+            sanity_check(data, prop)
+        data = data.subset(inc < np.radians(95))  # (a tunnel's 20-90 deg: warned of)
+    said = [w for w in sanity_check(data, prop) if "are the loads in wind axes?" in w]
+    assert bool(said) == (axes != "rotor"), said
+    if said:
+        assert "thrust = L sin i - D_w cos i, in-plane force = L cos i + D_w sin i" in said[0]
+        assert ("the tunnel's drag along the flow" in said[0]) == (axes == "wind drag")

@@ -165,6 +165,45 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
                else ", or whether the parameters are this propeller's")]
 
 
+#: the misfit of the rotor-axis reading (rms over the points at incidence, in units of the measured thrust's rms)
+#: above which a wind-axis reading of the loads is looked for, and the share of it that reading must reach
+WIND_AXES_MISFIT = (0.2, 0.5)
+
+
+def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
+    """Warn where the thrust and in-plane force read as wind-axis loads match the model much
+    better than as rotor-axis ones: a tunnel's force along the flow, T cos i - D sin i, under
+    'thrust' with its lift, T sin i + D cos i, under 'normal force', or its drag, -(T cos i -
+    D sin i), under 'drag' (both fitted with exit 0, parameters at their bounds, the first said
+    only as a thrust 0.46 times the model's: a wind-tunnel data audit, 2026-11-30). Judged on
+    the points at an incidence of 12-168 deg, 3 or more."""
+    if not {"thrust", "drag"} <= set(data.measured):
+        return
+    s, c = np.sin(data.incidence), np.cos(data.incidence)
+    Tm, Dm, T, D = data.measured["thrust"], data.measured["drag"], at_rpm.thrust, at_rpm.drag
+    on = (s > 0.2) & np.isfinite(Tm) & np.isfinite(Dm) & np.isfinite(T) & np.isfinite(D)
+    scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
+    if not scale > 0:
+        return
+
+    def misfit(thrust, drag) -> float:
+        return float(np.sqrt(np.mean((Tm[on] - thrust[on]) ** 2 + (Dm[on] - drag[on]) ** 2))) / scale
+
+    along, lift = T * c - D * s, T * s + D * c  # (the model's force along the flow and across it)
+    rotor = misfit(T, D)
+    wind = {"'thrust' the force along the flow (T cos i - D sin i) and the in-plane column its lift (T sin i + "
+            "D cos i)": misfit(along, lift),
+            "the in-plane column the tunnel's drag along the flow (D sin i - T cos i)": misfit(T, -along)}
+    said, best = min(wind.items(), key=lambda kv: kv[1])
+    lo, share = WIND_AXES_MISFIT
+    if rotor > lo and best < share * rotor:
+        warnings_.append(f"the thrust and in-plane force miss the model by {rotor:.2g} of the thrust (rms at "
+                         f"{int(on.sum())} points at incidence) read in the rotor's axes, {best:.2g} read in wind "
+                         f"axes, {said}: are the loads in wind axes? propmap reads them in the rotor's: thrust = "
+                         "L sin i - D_w cos i, in-plane force = L cos i + D_w sin i (L the lift, D_w the drag along "
+                         "the flow, i the incidence)")
+
+
 def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     """sanity_check's in-plane force: its sign against the model's at incidence (the DataError to raise
     once the thrust and torque are checked, or None; a warning where most points disagree but it is
@@ -190,6 +229,7 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
         warnings_.append(said + ("" if opposite >= 0.8 * sure.sum() else
                                  " (at part of the points: a sweep through negative angles given as magnitudes, or a "
                                  "body-fixed balance's normal force whose sign follows the angle's?)"))
+    _wind_axes(data, at_rpm, warnings_)
     # an in-plane force without an in-plane airspeed: an incidence the file does not give?
     Dm = data.measured["drag"]
     axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)
@@ -346,8 +386,10 @@ def _swapped_columns(data: LoadData, at_rpm) -> bool:
                                       for m, other in ((data.measured["thrust"], Q), (data.measured["torque"], T))))
 
 
-def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, speed_slip) -> DataError:
-    """sanity_check's refusal of load data beyond SANITY_FACTOR of the model, with its likely cause."""
+def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, speed_slip,
+             wind: bool = False) -> DataError:
+    """sanity_check's refusal of load data beyond SANITY_FACTOR of the model, with its likely cause
+    (``wind``: the loads read in wind axes match the model, :func:`_wind_axes`: said first)."""
     bad = {k: v for k, v in ratio.items() if not (1 / SANITY_FACTOR <= v <= SANITY_FACTOR)}
     absent = [k for k in bad if not np.any(np.nan_to_num(data.measured[k]))]
     if absent:  # a column of zeros (a sensor the stand lacks): said before the 13 solves of the unit-slip search
@@ -365,6 +407,9 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
     if speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
     first, rates = _rate_causes(data, model, propeller.n_blades)
+    if wind:
+        first.insert(0, "loads in wind axes, not the rotor's (thrust = L sin i - D_w cos i, in-plane force = L cos i + "
+                        "D_w sin i: L the lift, D_w the drag along the flow, i the incidence)")
     causes = first + causes + rates
     if not causes and bad.get("thrust", 1.0) < 1 / SANITY_FACTOR and bad.get("torque", 1.0) > SANITY_FACTOR:
         # the columns swapped (no unit slip explains the two)
@@ -426,8 +471,11 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         catalogue's propellers, docs/identification.md); a tip Mach number above 0.7 in the
         data; a measured in-plane force (drag) of the other sign than the model's at most
         points at incidence (propmap's D points along the in-plane airspeed, against the
-        disk's in-plane motion: docs/conventions.md); a measured drag above 5% of the thrust
-        at most points without an in-plane airspeed (an incidence the file does not give).
+        disk's in-plane motion: docs/conventions.md) at DRAG_SIGN_WARNED of the points or more;
+        a measured drag above 5% of the thrust at most points without an in-plane airspeed (an
+        incidence the file does not give); a thrust and drag that match the model far better
+        read in wind axes (:func:`_wind_axes`; said first among the causes where the data are
+        refused).
 
     Raises
     ------
@@ -458,8 +506,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     speed_slip = (None if radians_hint(np.degrees(data.incidence), data.airspeed)
                   else _airspeed_slip(data, at_rpm, model.loads_at, checked))
     ratio = model.ratios(data.omega, r=at_rpm)
-    if not _plausible(ratio):
-        raise _refusal(data, propeller, ratio, at_rpm, model, speed_slip)
+    if not _plausible(ratio):  # (wind-axis loads said first where they fit: the rpm's slips were named, a test)
+        wind = any("are the loads in wind axes?" in w for w in warnings_)
+        raise _refusal(data, propeller, ratio, at_rpm, model, speed_slip, wind)
     if drag_refused is not None:
         raise drag_refused
     warnings_ += _moderate_mismatch(data, propeller, at_rpm, model.ratios, model.loads_at, pole_pairs, label)
