@@ -384,3 +384,16 @@ def test_a_vehicle_file_with_weight_for_mass_names_the_unknown_key(tmp_path, cap
     code = main(["trim-vehicle", "--vehicle", str(path)])
     err = capsys.readouterr().err
     assert code == 2 and "unknown key(s) weight (allowed: mass, " in err, err
+
+
+def test_a_rotor_table_with_location_for_position_names_the_unknown_key(tmp_path, capsys):
+    """A [[rotors]] table with 'location' in place of 'position' was told only "missing key
+    'position'": the unknown key is named (a review, 2026-11-30)."""
+    src = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
+    for f in src.parent.glob("neurobem_*_geom.txt"):
+        shutil.copy(f, tmp_path / f.name)
+    path = tmp_path / "loc.toml"
+    path.write_text(src.read_text().replace("position =", "location =", 1))
+    code = main(["trim-vehicle", "--vehicle", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and "rotor 1: unknown key(s) location (allowed: " in err, err

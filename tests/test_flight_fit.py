@@ -524,3 +524,36 @@ def test_a_held_out_log_faster_than_the_training_logs_is_said(shared_data):
     assert len(said) == 1 and said[0].startswith(f"held-out log {race.name} reaches ") and "rpm (theirs " in said[0]
     assert "extrapolate the fit" in said[0]
     assert _held_beyond([slow, race], {slow.name}, _flight_coverage([race], veh, pm.Air()), veh, pm.Air()) == []
+
+
+def test_held_beyond_says_each_quantity_beyond_the_training_logs(shared_data):
+    """Each clause of the held-out warning alone (airspeed, advance ratio, the rpm's low end), at
+    wrench's margins, and none within them (a review, 2026-11-30: the clauses were untested)."""
+    from propmap.cli.flight import _flight_coverage, _held_beyond
+    from propmap.io.flightlog import read_flight_log
+
+    veh = pm.read_vehicle(VEHICLE)
+    slow = read_flight_log(shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat")
+    own = _flight_coverage([slow], veh, pm.Air())
+    wide = {**own, "airspeed_max": 2 * own["airspeed_max"], "J_max": own["J_max"] + 0.1,
+            "rpm_min": 0.5 * own["rpm_min"], "rpm_max": 2 * own["rpm_max"]}
+    assert _held_beyond([slow], {slow.name}, wide, veh, pm.Air()) == []
+    assert _held_beyond([slow], {slow.name}, {**wide, "J_max": own["J_max"] - 0.004}, veh, pm.Air()) == []
+    for key, value, said in (("airspeed_max", 0.5 * own["airspeed_max"], " m/s at a hub (the training logs' "),
+                             ("J_max", own["J_max"] - 0.01, "J "), ("rpm_min", 1.1 * own["rpm_min"], " rpm (theirs ")):
+        out = _held_beyond([slow], {slow.name}, {**wide, key: value}, veh, pm.Air())
+        assert len(out) == 1 and said in out[0] and out[0].count("(the training logs'") + out[0].count("(theirs") == 1
+
+
+def test_cli_fit_flight_warns_of_a_faster_held_out_log(tmp_path, capsys, shared_data):
+    """fit flight with the race track held out from the figure-8 (6.5 m/s) warns of it in its
+    report (the call itself, a review, 2026-11-30: only its absence was tested)."""
+    logs = [str(shared_data / "neurobem_flights" / s) for s in ("bemnn20210218170320seg2.mat",
+                                                               "bemnn20210218171908seg2.mat")]
+    code = main(["fit", "flight", *logs, "--vehicle", str(VEHICLE), "--out", str(tmp_path / "p.toml"),
+                 "--rate-hz", "1", "--holdout", "bemnn20210218171908seg2.mat", "--fit-params", "collective",
+                 "--json"])
+    cap = capsys.readouterr()
+    assert code == 0, cap.err
+    warned = [w for w in json.loads(cap.out)["warnings"] if w.startswith("held-out log bemnn20210218171908seg2.mat")]
+    assert len(warned) == 1 and "extrapolate the fit" in warned[0], warned

@@ -221,6 +221,10 @@ def test_the_29_measured_columns_alone_are_read(tmp_path, seg):
         assert log.n == whole.n and log.reference_force is None and log.reference_moment is None
         for field in ("t", "angular_velocity", "attitude", "specific_force", "velocity", "rotor_omega"):
             np.testing.assert_array_equal(getattr(log, field), getattr(whole, field))
+    # pandas' to_csv of an unnamed frame heads it with the column numbers 0-28 (a review, 2026-11-30)
+    np.savetxt(tmp_path / "p29.csv", arr[:, :29], delimiter=",", fmt="%.17g", comments="",
+               header=",".join(str(k) for k in range(29)))
+    np.testing.assert_array_equal(read_flight_log(tmp_path / "p29.csv").rotor_omega, whole.rotor_omega)
     np.savetxt(tmp_path / "m30.csv", arr[:, :30], delimiter=",", fmt="%.17g")
     with pytest.raises(FlightLogError, match=r"30 columns; the NeuroBEM layout has 41 \(29 without the prediction"):
         read_flight_log(tmp_path / "m30.csv")

@@ -325,8 +325,13 @@ def _api_cases(prop, tiny):
                                  ValueError, "spin of shape"),
         # (it named omega, airspeed and incidence, which the caller never gave: a simulator-user audit, 2026-11-30)
         "RotorMap.wrench omega shape": (lambda: RotorMap(tiny).wrench(np.zeros((3, 3)), [0, 0, 1.0], [733.0, 800.0]),
-                                        ValueError, r"omega \(shape \(2,\)\) must broadcast with velocity's samples "
-                                                    r"\(shape \(3,\): velocity of shape \(3, 3\)\)"),
+                                        ValueError, r"omega \(shape \(2,\)\) must broadcast with the samples of "
+                                                    r"velocity and axis \(shape \(3,\): velocity \(3, 3\), axis "
+                                                    r"\(3,\)\)"),
+        # (a ragged omega still said as such, not NumPy's own message: a review, 2026-11-30)
+        "RotorMap.wrench ragged omega": (lambda: RotorMap(tiny).wrench(np.zeros((2, 3)), [0, 0, 1.0],
+                                                                       [[800.0], [800.0, 900.0]]),
+                                         ValueError, "omega must be a number or a rectangular array"),
         "c_prefix fp": (lambda: c_prefix("m.h", "fp"), ValueError, "FP_NAN"),
         "c_prefix 5": (lambda: c_prefix("m.h", 5), ValueError, "the C name prefix must be a string"),
         "write_c_header dtype": (lambda: write_c_header(RotorMap(tiny), "/nonexistent/m.h", dtype="half"), ValueError,

@@ -243,6 +243,8 @@ def test_predict_broadcasts_every_load_to_the_inputs_shape(target):
 @pytest.mark.parametrize("mass, gravity, said", [
     (6.0, 9.81, r"it hovers at 14\d\d\d rpm, where the written rotor_speed_max \(14100 rpm, the envelope's top\) "
                 r"leaves 0\.\d% of thrust above hover: RotorPy saturates there"),
+    (5.0, 9.81, r"it hovers at 129\d\d rpm, where the written rotor_speed_max \(14100 rpm, the envelope's top\) "
+                r"leaves 18\.\d% of thrust above hover"),
     (1.0, 9.0, r"its gravity is 9 m/s\^2, RotorPy's Multirotor takes 9\.81: at the hover rpm pinned for 9 its thrust "
                r"in RotorPy is 8\.3% below its weight")])
 def test_rotorpy_export_warns_of_a_hover_at_the_speed_limit_and_another_gravity(capsys, tmp_path, mass, gravity,
@@ -263,3 +265,21 @@ def test_rotorpy_export_warns_of_a_hover_at_the_speed_limit_and_another_gravity(
                  "--vehicle", str(path), "--points", "300"]) == 0
     err = capsys.readouterr().err
     assert "rotor_speed_max (" not in err and "RotorPy's Multirotor takes" not in err, err
+
+
+def test_rotorpy_export_is_quiet_for_a_margin_above_30pct_and_earths_standard_gravity(capsys, tmp_path):
+    """4 kg (47% above hover at 14,100 rpm) and g = 9.80665 m/s^2 (0.03% from RotorPy's 9.81) are
+    not warned of; with --hover-rpm the margin is said of the pinned rpm and the gravity not at
+    all, the rpm being the user's (a review, 2026-11-30)."""
+    path = Path(_vehicle_toml(tmp_path / "v.toml", 4))
+    path.write_text(path.read_text().replace("mass = 1.0", "mass = 4.0\ngravity = 9.80665"))
+    assert main(["export-sim", "apce_8x6", "--target", "rotorpy", "--out", str(tmp_path / "v.py"),
+                 "--vehicle", str(path), "--points", "300"]) == 0
+    err = capsys.readouterr().err
+    assert "rotor_speed_max (" not in err and "RotorPy's Multirotor takes" not in err, err
+    path.write_text(path.read_text().replace("gravity = 9.80665", "gravity = 9.0"))
+    assert main(["export-sim", "apce_8x6", "--target", "rotorpy", "--out", str(tmp_path / "w.py"),
+                 "--vehicle", str(path), "--points", "300", "--hover-rpm", "13500"]) == 0
+    err = capsys.readouterr().err
+    assert "--vehicle: its hover pinned by --hover-rpm is at 13500 rpm, where the written rotor_speed_max" in err
+    assert "RotorPy's Multirotor takes" not in err, err

@@ -373,11 +373,15 @@ class RotorMap:
             raise ValueError(f"velocity: a component of {big:.6g} m/s; a hub velocity must be below {VELOCITY_MAX:g} "
                              "m/s (its force and moment vectors would overflow)")
         s = _spin_sign(spin)
-        try:  # (said of omega, airspeed and incidence, which the caller never gave: a simulator-user audit, 2026-11-30)
-            np.broadcast_shapes(speed.shape, np.shape(omega))
+        try:  # (a ragged omega: loads names it)
+            omega_shape = np.shape(omega)
         except ValueError:
-            raise ValueError(f"omega (shape {np.shape(omega)}) must broadcast with velocity's samples (shape "
-                             f"{speed.shape}: velocity of shape {speed.shape + (3,)})") from None
+            omega_shape = None
+        try:  # (said of omega, airspeed and incidence, which the caller never gave: a simulator-user audit, 2026-11-30)
+            np.broadcast_shapes(speed.shape, omega_shape or ())
+        except ValueError:
+            raise ValueError(f"omega (shape {omega_shape}) must broadcast with the samples of velocity and axis "
+                             f"(shape {speed.shape}: velocity {np.shape(velocity)}, axis {np.shape(axis)})") from None
         ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
         _check_spin(s, np.shape(ml.thrust))
         force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s,

@@ -46,6 +46,18 @@ def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float,
             float(np.max(incidences)) if incidences.size else 0.0)
 
 
+#: how far beyond a [coverage] table a run must go to be warned of: J by its printed 0.01, the rates by 1e-6 relative
+#: (a file's 6999.999999999999 rpm from rad/s), the airspeed by 1% and 0.1 m/s (airspeed_beyond)
+J_SLACK = 0.005
+RATE_SLACK = 1e-6
+
+
+def airspeed_beyond(airspeed: float, airspeed_max: float) -> bool:
+    """Whether ``airspeed`` [m/s] goes beyond a [coverage] table's ``airspeed_max`` by more than
+    1% and 0.1 m/s (what :func:`coverage_messages` warns of)."""
+    return airspeed > 1.01 * airspeed_max + 0.1
+
+
 def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, airspeed=None) -> None:
     """One warning line per risk of a model run beyond its data (docs/cli.md, Warnings).
 
@@ -88,7 +100,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     # each key is optional (a hand-written [coverage] table may give some of them)
     # beyond the data by more than rounding: J by its printed 0.01 (cos 90 deg is 6e-17, not 0), the rates by 1e-6
     # relative (the file's 6999.999999999999 rpm from rad/s)
-    beyond_J = "J_max" in cov and J > cov["J_max"] + 0.005
+    beyond_J = "J_max" in cov and J > cov["J_max"] + J_SLACK
     if beyond_J:
         warn(f"advance ratio up to {J:.2f}: the data behind {label} reach J = {cov['J_max']:.2f}")
     beyond_incidence = "incidence_deg_max" in cov and incidence_deg > cov["incidence_deg_max"] + 1e-6
@@ -100,7 +112,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
              + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
                 f"gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
     # (said where neither line above is: a flight fit's edgewise speed shows in no advance ratio)
-    if (airspeed is not None and "airspeed_max" in cov and airspeed > 1.01 * cov["airspeed_max"] + 0.1
+    if (airspeed is not None and "airspeed_max" in cov and airspeed_beyond(airspeed, cov["airspeed_max"])
             and not (beyond_J or beyond_incidence)):
         warn(f"airspeed up to {airspeed:.3g} m/s: the data behind {label} reach {cov['airspeed_max']:.3g} m/s")
     if rpm is not None:
@@ -108,7 +120,7 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
         # (a hand-written table may give one of the rates, or none: its Reynolds span is checked all the same; it
         # was not without the rates, an audit, 2026-11-29)
         low, high = cov.get("rpm_min", 0.0), cov.get("rpm_max", math.inf)
-        if lo < low * (1 - 1e-6) or hi > high * (1 + 1e-6):
+        if lo < low * (1 - RATE_SLACK) or hi > high * (1 + RATE_SLACK):
             shown = f"{lo:g}" if lo == hi else f"{lo:.0f}-{hi:.0f}"
             span = (f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) and low > 0 else
                     f"up to {high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up")

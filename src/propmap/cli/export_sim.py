@@ -116,13 +116,13 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                                                                target, hover_rpm)
         if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
             _warn_wash_drag(veh, params, hover_rpm, air)
-        if target == "rotorpy":
-            _warn_rotorpy_limits(veh, hover_rpm, env.rpm[1])
     if hover_rpm is not None:
         try:
             env = replace(env, hover_rpm=hover_rpm)
         except ValueError as exc:
             raise InputError(f"{hover_from}: {exc}; widen --envelope rpm=LOW:HIGH") from None
+    if veh is not None and target == "rotorpy":  # (after the envelope's check: a hover beyond it is refused alone)
+        _warn_rotorpy_limits(veh, hover_rpm, env.rpm[1], hover_from)
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
     except ValueError as exc:
@@ -255,23 +255,26 @@ ROTORPY_G = 9.81
 ROTORPY_MARGIN = 0.3
 
 
-def _warn_rotorpy_limits(veh, hover_rpm: float, rpm_max: float) -> None:
+def _warn_rotorpy_limits(veh, hover_rpm: float, rpm_max: float, hover_from: str) -> None:
     """rotorpy's export of a vehicle that hovers near the written rotor_speed_max (the envelope's
     top: a thrust margin (rpm_max / hover)^2 - 1 below ROTORPY_MARGIN, where RotorPy saturates
     on any climb), or whose file's gravity is not RotorPy's ROTORPY_G (hover pinned at the
     file's g sinks or climbs there): warned of (a simulator-user audit, 2026-11-30: a 6 kg
-    vehicle pinned at 14,086 rpm against a rotor_speed_max of 14,100, and g = 9.0 sinking by 6.5%
-    of its weight, both without a word)."""
+    vehicle pinned at 14,086 rpm against a rotor_speed_max of 14,100, and at g = 9.0 a thrust
+    8.3% below the weight, both without a word). ``hover_from``: where the hover rpm came from
+    (the vehicle's, or --hover-rpm's: then the gravity is not said, the rpm being the user's)."""
     import warnings
 
+    own = hover_from.startswith("--vehicle")
+    pinned = "it hovers" if own else "its hover pinned by --hover-rpm is"
     margin = (rpm_max / hover_rpm) ** 2 - 1.0
     if margin < ROTORPY_MARGIN:
-        warnings.warn(f"--vehicle: it hovers at {hover_rpm:.0f} rpm, where the written rotor_speed_max "
+        warnings.warn(f"--vehicle: {pinned} at {hover_rpm:.0f} rpm, where the written rotor_speed_max "
                       f"({rpm_max:.0f} rpm, the envelope's top) leaves {100 * margin:.1f}% of thrust above hover: "
                       "RotorPy saturates there on any climb; widen --envelope rpm=LOW:HIGH to your motors' top and "
                       "set rotor_speed_max to it", UserWarning, stacklevel=1)
     off = veh.gravity / ROTORPY_G - 1.0
-    if abs(off) > 2e-3:
+    if own and abs(off) > 2e-3:  # (with --hover-rpm the rpm is the user's, not the file's gravity's)
         warnings.warn(f"--vehicle: its gravity is {veh.gravity:g} m/s^2, RotorPy's Multirotor takes {ROTORPY_G:g}: at "
                       f"the hover rpm pinned for {veh.gravity:g} its thrust in RotorPy is {100 * abs(off):.1f}% "
                       f"{'below' if off < 0 else 'above'} its weight", UserWarning, stacklevel=1)

@@ -10,6 +10,7 @@ import click
 from ._air import resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
+from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond
 from ._flight_report import NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
@@ -226,19 +227,15 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
                                                       [f["at_bound"] for f in cv["folds"]])
     res.extra["flight_report"] = report
     text = _report_lines(samples, names, held, train.n, rows, report, reference_masses, veh.mass)
+    from dataclasses import replace
+
     ht = report["hover_torque"]
     if ht and "unavailable" in ht:
-        from dataclasses import replace
-
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
     coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
                 "groups": [n for n in names if n not in held], "held_out": sorted(held)}
-    beyond = _held_beyond(logs, held, coverage, veh, res.air)
-    if beyond:
-        from dataclasses import replace
-
-        res = replace(res, warnings=res.warnings + tuple(beyond))
+    res = replace(res, warnings=res.warnings + tuple(_held_beyond(logs, held, coverage, veh, res.air)))
     _write_outputs(res, out, base_label, as_json, "\n".join(text),
                    figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
                    figure_suffixes=(".png", ".speed.png"), coverage=coverage,
@@ -363,20 +360,23 @@ def _flight_coverage(logs, veh, air) -> dict:
 
 def _held_beyond(logs, held, coverage: dict, veh, air) -> list[str]:
     """A warning per held-out log whose rotors go beyond what the training logs covered (the
-    written file's [coverage]: airspeed, advance ratio, rpm), as `wrench --params` on that log
-    warns: its scores extrapolate the fit (said of none until 2026-11-30, where `wrench` with the
-    written file warned of the same log: a flight-log audit)."""
+    written file's [coverage]: airspeed, advance ratio, rpm), by `wrench --params`' margins
+    (cli/_coverage: J_SLACK, RATE_SLACK, airspeed_beyond): its scores extrapolate the fit (said
+    of none until 2026-11-30, where `wrench` with the written file warned of the same log: a
+    flight-log audit)."""
     out = []
     for lg in logs:
         if lg.name not in held:
             continue
         c = _flight_coverage([lg], veh, air)
+        # (wrench's margins, cli/_coverage: a review found 5% and 2% here, and no floor near 0 m/s)
         over = [f"{c['airspeed_max']:.3g} m/s at a hub (the training logs' {coverage['airspeed_max']:.3g})"
-                if c["airspeed_max"] > 1.05 * coverage["airspeed_max"] else "",
-                f"J {c['J_max']:.2g} (theirs {coverage['J_max']:.2g})" if c["J_max"] > 1.05 * coverage["J_max"] else "",
+                if airspeed_beyond(c["airspeed_max"], coverage["airspeed_max"]) else "",
+                f"J {c['J_max']:.2g} (theirs {coverage['J_max']:.2g})" if c["J_max"] > coverage["J_max"] + J_SLACK
+                else "",
                 f"{c['rpm_min']:.0f}-{c['rpm_max']:.0f} rpm (theirs {coverage['rpm_min']:.0f}-"
-                f"{coverage['rpm_max']:.0f})" if (c["rpm_max"] > 1.02 * coverage["rpm_max"]
-                                                  or c["rpm_min"] < coverage["rpm_min"] / 1.02) else ""]
+                f"{coverage['rpm_max']:.0f})" if (c["rpm_max"] > coverage["rpm_max"] * (1 + RATE_SLACK)
+                                                  or c["rpm_min"] < coverage["rpm_min"] * (1 - RATE_SLACK)) else ""]
         if any(over):
             out.append(f"held-out log {lg.name} reaches {', '.join(o for o in over if o)}: its scores extrapolate "
                        "the fit beyond the flights it saw")

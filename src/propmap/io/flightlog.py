@@ -299,9 +299,11 @@ def _csv_columns(lines: list[str], first: int, name: str) -> tuple[int, list[int
     order = list(range(len(NEUROBEM_COLUMNS)))
     try:
         numbers = [float(c) for c in head]
-        if len(numbers) == len(NEUROBEM_COLUMNS) and numbers in (list(range(41)), list(range(1, 42))):
-            skip = first + 1  # (a header of column numbers, pandas' to_csv of an unnamed frame: it was read as
-            # data and refused for its 'quaternion' [7, 8, 9, 10]: a flight-log fuzzing audit)
+        width = len(numbers)
+        if width in MEASURED_WIDTHS and numbers in (list(range(width)), list(range(1, width + 1))):
+            # (a header of column numbers, pandas' to_csv of an unnamed frame: it was read as data and refused for
+            # its 'quaternion' [7, 8, 9, 10]: a flight-log fuzzing audit; 29 of them too since 2026-11-30)
+            skip, order = first + 1, list(range(width))
     except ValueError:  # a header line: map the columns by name
         skip = first + 1
         missing = [c for c in NEUROBEM_COLUMNS[:29] if c not in head and c not in UNUSED_COLUMNS]

@@ -311,6 +311,7 @@ def read_vehicle(path) -> Vehicle:
     name = show_path(path)
     data = _vehicle_table(given, path)
     _unknown(data, VEHICLE_KEYS, name)  # (first: 'weight = 0.772' was told only "missing key 'mass'", an audit)
+    # (the rotors' tables likewise, _rotor)
     for key in ("mass", "rotors"):
         if key not in data:
             raise VehicleFileError(f"{name}: missing key {key!r}")
@@ -365,10 +366,10 @@ def _rotor(r, where: str, path: Path, props: dict) -> Rotor:
     if not isinstance(r, dict):
         raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
                                f"got {short_repr(r)}")
+    _unknown(r, ROTOR_KEYS, where)  # (first: 'location' was told only "missing key 'position'", a review)
     for key in ("position", "axis", "spin", "propeller"):
         if key not in r:
             raise VehicleFileError(f"{where}: missing key {key!r}")
-    _unknown(r, ROTOR_KEYS, where)
     position = _vec3(r["position"], f"{where} position")
     if np.any(np.abs(position) > POSITION_MAX):
         raise VehicleFileError(f"{where} position must have components in [-{POSITION_MAX:g}, {POSITION_MAX:g}] "
