@@ -64,7 +64,7 @@ def test_a_rotation_speed_in_a_linear_speed_unit_is_said_to_be_one():
         map_columns(["Speed (m/s)", "Thrust (N)"])
 
 
-@pytest.mark.parametrize("name", ["Incidence angle (deg)", "Shaft angle (deg)", "beta (deg)", "Pitch angle (rad)"])
+@pytest.mark.parametrize("name", ["Disk angle (deg)", "Shaft angle (deg)", "beta (deg)", "Pitch angle (rad)"])
 def test_an_angle_beside_an_airspeed_is_refused_by_its_unit(tmp_path, name):
     path = tmp_path / "t.csv"
     _tunnel_csv(path, ["rpm", "airspeed (m/s)", name, "thrust (N)", "drag (N)", "torque (N m)"])

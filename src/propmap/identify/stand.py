@@ -117,6 +117,8 @@ _NAMES = {
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
+    # (refused as a flow angle to be renamed, though they name the incidence: a wind-tunnel data audit, 2026-11-30)
+    "incidence angle": ("incidence_deg", "angle"), "angle of incidence": ("incidence_deg", "angle"),
     "collective": ("collective_deg", "angle"), "collective_deg": ("collective_deg", "angle"),
     # a pulse width [us] or a throttle [%, or a fraction]: its unit is read by esc_form
     "esc signal": ("esc", None), "esc": ("esc", None), "esc_us": ("esc", None), "throttle": ("esc", None),
@@ -159,9 +161,8 @@ _AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "f
                   "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
                   "flow velocity", "true airspeed")
 _ADVANCE_LIKE = ("advance ratio", "advance_ratio")
-_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "incidence angle",
-               "angle of incidence", "flow angle", "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft",
-               "alpha tpp")
+_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "flow angle",
+               "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft", "alpha tpp")
 #: a climb or descent rate, which propmap reads as the airspeed with incidence 0 or 180 deg: refused unless both the
 #: airspeed and the incidence are read (left unread, an axial sweep was fitted as static, or a descent as a climb: a
 #: wind-tunnel data audit, 2026-11-27); not a bare 'w' (a power in watts)
