@@ -365,7 +365,8 @@ def test_loads_in_wind_axes_are_named_as_such(axes):
         assert ("the tunnel's drag along the flow" in said[0]) == (axes == "wind drag")
 
 
-@pytest.mark.parametrize("name, factor", [("Incidence angle (deg)", 1.0), ("Angle of incidence (rad)", 180 / np.pi)])
+@pytest.mark.parametrize("name, factor", [("Incidence angle (deg)", 1.0), ("Angle of incidence (rad)", 180 / np.pi),
+                                          ("incidence_angle_deg", 1.0)])
 def test_the_incidence_by_its_longer_names_is_read(name, factor):
     """'Incidence angle' and 'Angle of incidence' name propmap's incidence (the angle between the
     axis and the flow), with their unit: they were refused as a flow angle to be renamed (a
@@ -373,4 +374,4 @@ def test_the_incidence_by_its_longer_names_is_read(name, factor):
     cm = map_columns(["rpm", "airspeed (m/s)", name, "thrust (N)"])
     assert cm.columns["incidence_deg"][:2] == (name, pytest.approx(factor))
     with pytest.raises(ValueError, match="gives no unit"):
-        map_columns(["rpm", "airspeed (m/s)", name.split(" (")[0], "thrust (N)"])
+        map_columns(["rpm", "airspeed (m/s)", name.split(" (")[0].replace("_deg", ""), "thrust (N)"])

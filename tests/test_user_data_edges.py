@@ -31,7 +31,7 @@ def test_an_airspeed_under_another_name_with_an_underscore_unit_is_refused(name)
         map_columns(["rpm", name, "thrust_kgf", "Torque (N m)"])
 
 
-@pytest.mark.parametrize("name", ["alpha_deg", "aoa_deg", "disk_angle_deg", "AoA_rad", "incidence_angle_deg",
+@pytest.mark.parametrize("name", ["alpha_deg", "aoa_deg", "disk_angle_deg", "AoA_rad", "flow_angle_deg",
                                   "angle_deg", "tilt_deg", "yaw_deg", "beta_deg", "pitch_deg", "beta_rad"])
 def test_a_flow_angle_under_another_name_with_an_underscore_unit_is_refused(name):
     with pytest.raises(ValueError, match=f"column '{name}' looks like a flow angle"):
