@@ -96,13 +96,14 @@ def _conditions_density(f, what: str, p: str, notes: list) -> float | None:
                          "--rho say otherwise")
         return None
     p_col = found["p"][0][0]
-    pressure = _state(found["p"][0], f, "p", notes, _skipped(found["T"][0][0], p_col))
+    values = _air_columns(f, [c for c, _, _ in found["T"]] + [p_col])
+    pressure = _state(found["p"][0], values, "p", notes, _skipped(found["T"][0][0], p_col))
     if pressure is None:
         return None
-    for k, candidate in enumerate(found["T"]):  # (each read alone: a text column after a good one hid it, a review)
+    for k, candidate in enumerate(found["T"]):
         last = k == len(found["T"]) - 1
         tail = _skipped(candidate[0], p_col) if last else "the next temperature column is tried"
-        temperature = _state(candidate, f, "T", notes, tail)
+        temperature = _state(candidate, values, "T", notes, tail)
         if temperature is not None:
             break
     else:
@@ -132,22 +133,37 @@ def _skipped(T_col: str, p_col: str) -> str:
             "density column)")
 
 
-def _state(column: tuple, f, kind: str, notes: list, tail: str) -> float | None:
+def _air_columns(f, columns: list) -> dict:
+    """The values of the air's candidate ``columns`` of the file ``f`` (lower-case name -> array,
+    or None for a column that is not numeric): one parse of the file for all, column by column
+    only where one is text (which hid the others when read together: a review, 2026-11-30)."""
+    names = [c.lower() for c in columns]
+    try:
+        return f.read(names, optional=set(names))[0]
+    except DataError:
+        out = {}
+        for c in names:
+            try:
+                out[c] = f.read([c], optional={c})[0][c]
+            except DataError:  # (a column of text: not the air's state)
+                out[c] = None
+        return out
+
+
+def _state(column: tuple, values: dict, kind: str, notes: list, tail: str) -> float | None:
     """The median of a temperature [K] (``kind`` "T") or pressure [Pa] ("p") column ``column`` =
-    (name as written, unit or None, name) of the file ``f``; None, with a note ending in
-    ``tail`` (what follows), where it cannot be told (not numeric, empty, no unit and values that
-    do not tell it, an unknown unit) or a temperature is not the air's (above AIR_T_MAX in the
-    median, or its rows' 5th to 95th percentiles more than AIR_T_SPAN apart: a motor's or an
-    ESC's, heating through a test; a motor's rising 35 -> 85 degC gave 1.06 kg/m^3 and every
-    point 14% off: a thrust-stand export audit, 2026-11-30)."""
+    (name as written, unit or None, name), its values from ``values`` (:func:`_air_columns`);
+    None, with a note ending in ``tail`` (what follows), where it cannot be told (not numeric,
+    empty, no unit and values that do not tell it, an unknown unit) or a temperature is not the
+    air's (above AIR_T_MAX in the median, or its rows' 5th to 95th percentiles more than
+    AIR_T_SPAN apart: a motor's or an ESC's, heating through a test; a motor's rising 35 -> 85
+    degC gave 1.06 kg/m^3 and every point 14% off: a thrust-stand export audit, 2026-11-30)."""
     c, unit, name = column
     skip = "; " + tail
-    try:
-        raw, _, _ = f.read([c.lower()], optional={c.lower()})
-    except DataError:  # (a column of text: not the air's state)
+    x = values[c.lower()]
+    if x is None:
         notes.append(f"{c!r} is not numeric" + skip)
         return None
-    x = raw[c.lower()]
     x = x[np.isfinite(x)]
     if not x.size:
         notes.append(f"{c!r} is empty in every row" + skip)

@@ -186,8 +186,6 @@ _COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", 
 #: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
 #: propeller); a unit 'kN' is a force (kilonewton), not knots
 _NOT_AIRSPEED = re.compile(r"\b(tip|blade|slipstream|induced|exit|wake|jet|outlet|downwash|propwash|rotor)\b")
-#: the force units' tokens, for naming a force column that is not read
-_FORCE_TOKENS = frozenset(UNITS["force"])
 #: an acceleration's or a vibration's column, whose unit g is no gram (AccX (g), Vibration (g), a_z [g])
 _ACCELERATION_LIKE = re.compile(r"^(acc|a[ _]?[xyz]\b)|accel|vibration|\bvib\b|\bimu\b|g[ -]?force|\bgyro")
 #: the rotation-speed columns, in the order of preference when several are present
@@ -573,7 +571,7 @@ def _note_unread_force(cm: ColumnMap, split: dict) -> None:
     # audit, 2026-11-30), but not an accelerometer's or a vibration's g (AccX (g), Vibration (g))
     # (a unit after an underscore too, weight_g, load_kgf; not _n there: sample_n is a count)
     forces = [n for n, (b, u) in split.items() if b not in _NAMES and not _ACCELERATION_LIKE.search(b)
-              and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in _FORCE_TOKENS
+              and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in UNITS["force"]
               and (u is not None or not b.endswith("_n"))]
     if forces:
         cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
