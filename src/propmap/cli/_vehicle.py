@@ -64,15 +64,31 @@ def _fitted_vehicle(path: Path, params_spec):
 def _vehicle_sets(veh, vehicle, params_spec, air_choice):
     """(vehicle, params, air, label, sets) of a command given a vehicle file and --params: with
     --params one set for every rotor (the rotors' own sets dropped, said), else the vehicle's
-    rotor sets (one label for all where they are one, each its own otherwise) and 'generic' for
-    a rotor without one (``sets``: each rotor's label); each rotor's propeller and set checked as
+    rotor sets (one label for all where they are one, each its own otherwise) and, for a rotor
+    without one, its propeller's default as `loads` takes it: a catalogue propeller's calibrated
+    set, else 'generic' (``sets``: each rotor's label); each rotor's propeller and set checked as
     `loads` checks them."""
+    from dataclasses import replace
+
+    from ..io.calibration import default_params
+    from ..io.catalogue import catalogue
     from ..io.inputs import show_path
     from ..vehicle.file import rotor_file_specs
 
-    own = rotor_file_specs(vehicle) if params_spec is None else ()
+    own = ()
+    if params_spec is None:
+        # (a rotor without a set of its own took the generic set where `loads`, `map` and `export-sim`
+        # take its catalogue propeller's calibrated one: the example quadrotor's apce_8x6 rotors hovered
+        # at 5187 rpm in trim-vehicle and at 5387 rpm in export-sim --vehicle, an audit of stop 90)
+        names = rotor_file_specs(vehicle, "propeller")
+        own = tuple(o if o is not None or n not in catalogue() else default_params(n).label
+                    for o, n in zip(rotor_file_specs(vehicle), names))
+        own = tuple(None if o == "generic" else o for o in own)
     spec = params_spec if params_spec is not None else (
         own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
+    if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set)
+        veh = replace(veh, rotors=[r if r.params is not None or o is None else replace(r, params=default_params(n))
+                                   for r, o, n in zip(veh.rotors, own, names)])
     params, air, label = load_params("generic" if spec is None else spec, option="--params")
     sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
     if len(set(sets)) > 1:

@@ -405,7 +405,7 @@ def _hover_loads(params, veh, samples, air):
               help="Vehicle TOML, its rotors in the log's motor order.")
 @click.option("--params", "params_spec", default=None,
               help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
-                   "else 'generic'.")
+                   "else each rotor's catalogue propeller's calibrated set, else 'generic'.")
 @click.option("--out", type=PathArg(file=True), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
 @click.option("--motor-map", "motor_map", default=None, metavar="A,B", help=MOTOR_MAP_HELP)
