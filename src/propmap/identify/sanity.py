@@ -204,6 +204,48 @@ def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
                          "the flow, i the incidence)")
 
 
+#: the misfit of the thrust (and in-plane force) at the file's incidence, in units of the measured thrust's rms, above
+#: which the mirrored incidence 180 deg - i is tried, and the share of it that the mirror must reach to be said
+MIRROR_MISFIT = (0.2, 0.5)
+
+
+def _mirrored_incidence(data: LoadData, at_rpm, loads_at, warnings_: list) -> None:
+    """Warn where the loads at incidence match the model much better at 180 deg minus the file's
+    incidence: a disk angle of attack alpha_d written as 90 - alpha_d, or a tilt measured from
+    the other side (validated at 38% thrust error without a word: a wind-tunnel data audit,
+    2026-11-30). Judged on the points at an incidence of 12-168 deg and 10 deg or more from
+    edgewise (at 90 deg the two readings are one), 3 or more, from the thrust and, where
+    measured, the in-plane force."""
+    if "thrust" not in data.measured:
+        return
+    s, c = np.sin(data.incidence), np.cos(data.incidence)
+    Tm, T = data.measured["thrust"], at_rpm.thrust
+    Dm = data.measured.get("drag")
+    on = (s > 0.2) & (np.abs(c) > np.sin(np.radians(10.0))) & np.isfinite(Tm) & np.isfinite(T)
+    if Dm is not None:
+        on &= np.isfinite(Dm) & np.isfinite(at_rpm.drag)
+    scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
+    if not scale > 0:
+        return
+    mirror = loads_at(data.omega, incidence=np.pi - data.incidence)
+
+    def misfit(thrust, drag) -> float:
+        sq = (Tm[on] - thrust) ** 2 + (0.0 if Dm is None else (Dm[on] - drag) ** 2)
+        return float(np.sqrt(np.mean(sq))) / scale
+
+    read = misfit(T[on], at_rpm.drag[on])
+    mirrored = misfit(mirror.thrust[on], mirror.drag[on])
+    lo, share = MIRROR_MISFIT
+    if read > lo and np.isfinite(mirrored) and mirrored < share * read:
+        of = "thrust and in-plane force miss" if Dm is not None else "thrust misses"
+        warnings_.append(f"at {int(on.sum())} points at incidence the {of} the model by {read:.2g} of the thrust "
+                         f"(rms) at the file's incidence and by {mirrored:.2g} at 180 deg minus it: is the "
+                         "incidence a disk angle of attack, or a tilt measured from the other side? propmap's "
+                         "incidence is the angle between the airspeed and the rotor axis (0 climb, 90 edgewise, "
+                         "180 axial descent); a disk angle of attack alpha_d (0 edgewise, positive with the disk "
+                         "tilted back against the airspeed) is incidence_deg = 90 + alpha_d")
+
+
 def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     """sanity_check's in-plane force: its sign against the model's at incidence (the DataError to raise
     once the thrust and torque are checked, or None; a warning where most points disagree but it is
@@ -258,14 +300,16 @@ class _ModelAt:
     def __init__(self, data: LoadData, propeller, params, air: Air, checked: tuple):
         self.data, self.propeller, self.params, self.air, self.checked = data, propeller, params, air, checked
 
-    def loads_at(self, omega, airspeed=None, prop=None):
-        """rotor_loads at the data's incidence and collective (failures flagged, any tip speed)."""
+    def loads_at(self, omega, airspeed=None, prop=None, incidence=None):
+        """rotor_loads at the data's incidence (or ``incidence``, one per point) and collective
+        (failures flagged, any tip speed)."""
         from ..core.solver import rotor_loads, supersonic_tips_allowed
 
         data = self.data
         with supersonic_tips_allowed():
             return rotor_loads(self.propeller if prop is None else prop, self.params, omega,
-                               data.airspeed if airspeed is None else airspeed, data.incidence, air=self.air,
+                               data.airspeed if airspeed is None else airspeed,
+                               data.incidence if incidence is None else incidence, air=self.air,
                                on_failure="flag", collective=data.collective)
 
     def ratios(self, omega, r=None, where=True) -> dict:
@@ -475,7 +519,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         a measured drag above 5% of the thrust at most points without an in-plane airspeed (an
         incidence the file does not give); a thrust and drag that match the model far better
         read in wind axes (:func:`_wind_axes`; said first among the causes where the data are
-        refused).
+        refused); a thrust (and drag) that match the model far better at 180 deg minus the
+        incidence (:func:`_mirrored_incidence`: a disk angle of attack read the other way round).
 
     Raises
     ------
@@ -500,6 +545,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     warnings_ = _run_warnings(data, propeller, air)
     at_rpm = model.loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
     drag_refused = _drag_checks(data, at_rpm, checked, warnings_)
+    _mirrored_incidence(data, at_rpm, model.loads_at, warnings_)
     warnings_ += _vortex_ring_warning(data, at_rpm)
     # (incidences that look like radians, which the reader warns of, make the thrust at airspeed misfit too: the
     # airspeed's unit was blamed as a second cause, km/h, a user-level audit)
