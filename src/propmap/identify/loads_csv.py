@@ -127,6 +127,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     f, cm = _header_columns(f, rpm_source, pole_pairs, what, p)
     notes = [*f.notes, *cm.notes]
     _power_note(f.header, cm, notes)
+    _side_loads_note(f.header, notes)
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
     # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
     ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
@@ -237,6 +238,26 @@ def _power_note(header, cm, notes: list) -> None:
     if power and "torque" not in cm.columns:
         notes.append(f"{power[0]!r} is not read: propmap fits a torque column, Q = P / Omega (give it so, and the "
                      "fit uses the torque too)")
+
+
+#: the loads a wind-tunnel balance gives besides the thrust, in-plane force and torque, which propmap predicts (with
+#: flapping or a linear inflow, docs/models.md) but does not fit or validate
+_SIDE_LOADS = ("side force", "sideforce", "lateral force", "y force", "pitching moment", "pitch moment",
+               "yawing moment", "yaw moment", "rolling moment", "roll moment", "hub moment", "hub pitching moment",
+               "hub rolling moment")
+
+
+def _side_loads_note(header, notes: list) -> None:
+    """A note naming a side force or hub moment column, which is not read (a wind-tunnel file's
+    'side force (N)' and 'pitching moment (N m)' were left out without a word: a wind-tunnel
+    data audit, 2026-11-30)."""
+    side = [c for c in header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
+            .removesuffix(" n").removesuffix(" nm").strip() in _SIDE_LOADS]
+    if side:
+        notes.append(f"{', '.join(repr(c) for c in side)} {'is' if len(side) == 1 else 'are'} not read: propmap "
+                     "fits and validates the thrust, the in-plane force (drag, along the in-plane airspeed) and "
+                     "the torque; the side force and the hub moments it predicts (rotor_loads' side_force, "
+                     "rolling_moment, pitching_moment) are not compared with measurements")
 
 
 def _check_unread_columns(raw: dict, texts: dict, ratio: list, named: list, what: str, p: str, notes: list) -> None:
