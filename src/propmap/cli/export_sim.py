@@ -105,6 +105,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     check_section_match(propeller, label)
     env = parse_envelope(envelope, propeller)
     veh, hover_from, airframe = None, "--hover-rpm", ""
+    rpm_given = hover_rpm is not None  # (else the vehicle's hover pins it)
     if vehicle is not None and hover_rpm is not None and target != "rotorpy":
         # (cli.md: an option with nothing to do is refused; gz-sim's export pinned 7000 rpm and dropped the vehicle,
         # whose hover is 5140 rpm, without a word: a vehicle-designer audit, 2026-11-28)
@@ -122,7 +123,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
         except ValueError as exc:
             raise InputError(f"{hover_from}: {exc}; widen --envelope rpm=LOW:HIGH") from None
     if veh is not None and target == "rotorpy":  # (after the envelope's check: a hover beyond it is refused alone)
-        _warn_rotorpy_limits(veh, hover_rpm, env.rpm[1], hover_from)
+        _warn_rotorpy_limits(veh, hover_rpm, env.rpm[1], own=not rpm_given)
     try:
         res = export_sim(target, propeller, params, air=air, envelope=env, n_points=n_points, params_label=label)
     except ValueError as exc:
@@ -255,17 +256,16 @@ ROTORPY_G = 9.81
 ROTORPY_MARGIN = 0.3
 
 
-def _warn_rotorpy_limits(veh, hover_rpm: float, rpm_max: float, hover_from: str) -> None:
+def _warn_rotorpy_limits(veh, hover_rpm: float, rpm_max: float, own: bool) -> None:
     """rotorpy's export of a vehicle that hovers near the written rotor_speed_max (the envelope's
     top: a thrust margin (rpm_max / hover)^2 - 1 below ROTORPY_MARGIN, where RotorPy saturates
     on any climb), or whose file's gravity is not RotorPy's ROTORPY_G (hover pinned at the
     file's g sinks or climbs there): warned of (a simulator-user audit, 2026-11-30: a 6 kg
     vehicle pinned at 14,086 rpm against a rotor_speed_max of 14,100, and at g = 9.0 a thrust
-    8.3% below the weight, both without a word). ``hover_from``: where the hover rpm came from
-    (the vehicle's, or --hover-rpm's: then the gravity is not said, the rpm being the user's)."""
+    8.3% below the weight, both without a word). ``own``: whether the hover rpm is the vehicle's
+    (else --hover-rpm's: then the gravity is not said, the rpm being the user's)."""
     import warnings
 
-    own = hover_from.startswith("--vehicle")
     pinned = "it hovers" if own else "its hover pinned by --hover-rpm is"
     margin = (rpm_max / hover_rpm) ** 2 - 1.0
     if margin < ROTORPY_MARGIN:
