@@ -151,7 +151,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                                gaps={low[q] for q in keys} if sampled else (),
                                percent={low["esc"]} if "esc" in low else ())
     if "esc" in low and low["esc"] in f.percent_cells:
-        cm.columns["esc"] = _esc_in_percent(cm.columns["esc"], notes)
+        cm.columns["esc"] = _esc_in_percent(cm.columns["esc"], raw[low["esc"]], notes)
     _check_unread_columns(raw, texts, ratio, named, what, p, notes)
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
@@ -207,13 +207,16 @@ def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):
     return f, cm
 
 
-def _esc_in_percent(column: tuple, notes: list) -> tuple:
+def _esc_in_percent(column: tuple, values: np.ndarray, notes: list) -> tuple:
     """The ESC column's (name, factor, unit) where its cells end in '%' (a motor maker's table:
     ``Throttle`` over ``50%``, refused as not a number until 2026-11-30): the unit '%' where the
-    header gives none, so that the signal is read as a throttle in percent, with a note."""
+    header gives none, so that the signal is read as a throttle in percent, with a note (not
+    where the values stay within 1, which esc_form reads as a fraction and says so: both notes,
+    percent then fraction, were given for 0.3%-0.8%)."""
     name, factor, unit = column
     if unit is None:
-        notes.append(f"{name!r}: its values end in %: read as a throttle in percent")
+        if np.nanmax(np.abs(values), initial=0.0) > 1.0:
+            notes.append(f"{name!r}: its values end in %: read as a throttle in percent")
         return name, factor, "%"
     return column
 
