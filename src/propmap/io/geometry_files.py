@@ -370,6 +370,17 @@ def _is_uiuc_geometry(text: str) -> bool:
     return False
 
 
+def _same_diameter(given: float, own: float) -> bool:
+    """Whether a diameter given beside a PE0 file is the file's own [in]: equal to 1e-3, or the
+    file's rounded to the given's decimals (as its float prints) within 2% (``--diameter-in 4.2`` beside a PE0 of
+    4.183 in was refused: an audit of stop 90)."""
+    if math.isclose(given, own, rel_tol=1e-3):
+        return True
+    text = repr(float(given))
+    decimals = len(text.split(".")[1]) if "." in text and "e" not in text else 0
+    return decimals <= 3 and math.isclose(round(own, decimals), given, rel_tol=1e-9) and abs(given / own - 1) < 0.02
+
+
 def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
     """Read a geometry file, choosing the reader by content (PE0 or UIUC ``r/R c/R beta``).
 
@@ -378,7 +389,9 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     path : str or Path
     diameter_in : float, optional
         For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
-        a different ``diameter_in`` is refused.
+        a different ``diameter_in`` is refused, except the file's diameter rounded to the
+        given's 1 to 3 decimals, within 2% (a nominal 4.2 in for a PE0 radius of 2.09 in,
+        4.18 in; not 4, which is 4.0), and the file's diameter is used.
     n_blades : int, optional
         Blade count: required for a UIUC file (which does not state it); a PE0 file states
         its BLADES, and a different ``n_blades`` is refused.
@@ -409,7 +422,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         # (to the file's own precision: RADIUS is printed to 0.01 in)
         if diameter_in is not None:
             _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
-            if not math.isclose(diameter_in, prop.diameter / 0.0254, rel_tol=1e-3):  # bare "must be real number")
+            if not _same_diameter(diameter_in, prop.diameter / 0.0254):  # bare "must be real number")
                 raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives "
                                         f"its own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in "
                                         "applies to UIUC files")
