@@ -560,9 +560,11 @@ def test_a_pe0_radius_printed_rounded_reads(shared_data):
         assert p.radius == pytest.approx(2.0915 * 0.0254, rel=1e-12) and p.r[-1] == pytest.approx(p.radius)
     path = shared_data / "apc_vendor_data" / "geometry_PE0" / "42x2-PERF.PE0"
     assert read_geometry(path, diameter_in=4.183).radius == pytest.approx(2.0915 * 0.0254)  # to 1e-3
-    with pytest.raises(GeometryFileError, match=r"diameter_in = 4.2 in, but a PE0 file gives its own radius "
+    # (the nominal 4.2 in, the file's 4.183 to one decimal, is taken since 2026-11-30: the file's radius is used)
+    assert read_geometry(path, diameter_in=4.2).radius == pytest.approx(2.0915 * 0.0254)
+    with pytest.raises(GeometryFileError, match=r"diameter_in = 4.3 in, but a PE0 file gives its own radius "
                                                 r"\(diameter 4.183 in\)"):
-        read_geometry(path, diameter_in=4.2)
+        read_geometry(path, diameter_in=4.3)
 
 
 def test_a_pe0_last_station_exactly_half_a_digit_beyond_radius_is_the_tip(tmp_path, shared_data):
