@@ -16,7 +16,7 @@ import numpy as np
 from ..core.units import RPM
 from ..core.airfoil import Air
 from .csvfile import DataError
-from .stand import G0, LBF
+from .headers import G0, LBF
 from .load_data import LoadData, data_air, radians_hint
 
 __all__ = ["sanity_check", "SANITY_FACTOR", "SANITY_WARN", "RE75_FLOOR", "DRAG_SIGN_REFUSED"]

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .stand import _ESC_UNITS, _token
+from .headers import _ESC_UNITS, _token
 
 __all__ = ["esc_form", "stand_points", "ESC_TOL", "CONDITION_TOL"]
 

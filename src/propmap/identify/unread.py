@@ -1,0 +1,190 @@
+"""The columns of a load file that propmap does not read, checked: a quantity it needs under a
+name it does not know (an airspeed, advance ratio, flow angle, climb rate or blade pitch that,
+left unread, would make every point static, axial or at collective 0) is refused, naming the
+column and what to write; one that may mean something else, a force under another name, gets a
+note; no rotation-speed or load column is refused with what was looked for
+(:func:`propmap.identify.stand.map_columns` calls these)."""
+
+from __future__ import annotations
+
+import re
+
+from .headers import _NAMES, _UNIT_ONLY_NAMES, LOOKED_FOR, UNITS, ColumnMap, _loose, _name_stems, _token, split_header
+
+#: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
+#: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
+_AIRSPEED_LIKE = ("velocity", "v_inf", "vinf", "u_inf", "uinf", "freestream", "free stream", "freestream velocity",
+                  "free stream velocity", "freestream speed", "tunnel speed", "wind velocity", "flow speed",
+                  "flow velocity", "true airspeed")
+_ADVANCE_LIKE = ("advance ratio", "advance_ratio")
+_ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle", "disc angle", "flow angle",
+               "alpha p", "alpha s", "alpha d", "alpha disk", "alpha shaft", "alpha tpp")
+#: a climb or descent rate, which propmap reads as the airspeed with incidence 0 or 180 deg: refused unless both the
+#: airspeed and the incidence are read (left unread, an axial sweep was fitted as static, or a descent as a climb: a
+#: wind-tunnel data audit, 2026-11-27); not a bare 'w' (a power in watts)
+_AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "descent rate", "descent speed",
+                    "rate of climb", "rate of descent", "sink rate", "vertical speed", "vertical velocity",
+                    "axial velocity", "axial speed", "axial flow speed")
+#: a blade pitch setting under another name than collective_deg (its points were fitted at collective 0: an input
+#: fuzzing audit, 2026-11-27)
+_PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective pitch", "pitch setting",
+               "blade pitch angle", "blade setting", "blade setting angle", "pitch_angle", "blade_angle", "blade_pitch")
+#: names that may mean either (V a voltage or a velocity, J a joule or an advance ratio, mu a viscosity, a stand's
+#: tilt): a note; an angle's is refused beside an airspeed (the points move: an unread angle leaves them axial, a
+#: wind-tunnel data audit, 2026-11-27), and a J's or mu's where its values are not all 0 and no airspeed is read
+#: (loads_csv.read_loads: an axial sweep's J was read as static, the thrust 11-23% off)
+_AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
+              "tilt": "incidence_deg", "tilt angle": "incidence_deg", "disk tilt": "incidence_deg",
+              "disc tilt": "incidence_deg", "rotor tilt": "incidence_deg", "shaft tilt": "incidence_deg",
+              "inclination": "incidence_deg",
+              "yaw": "incidence_deg", "yaw angle": "incidence_deg"}
+_COEFFICIENT_NAMES = ("ct", "cp", "cq", "c_t", "c_p", "c_q", "kt", "kq", "k_t", "k_q")
+#: speeds in a load file that are not the airspeed (a blade's, the slipstream's: derived or measured behind the
+#: propeller); a unit 'kN' is a force (kilonewton), not knots
+_NOT_AIRSPEED = re.compile(r"\b(tip|blade|slipstream|induced|exit|wake|jet|outlet|downwash|propwash|rotor)\b")
+#: an acceleration's or a vibration's column, whose unit g is no gram (AccX (g), Vibration (g), a_z [g])
+_ACCELERATION_LIKE = re.compile(r"^(acc|a[ _]?[xyz]\b)|accel|vibration|\bvib\b|\bimu\b|g[ -]?force|\bgyro")
+
+
+def _refuse_no_speed(names, cm: ColumnMap, found: str, error) -> None:
+    """map_columns without a rotation-speed column: refused, saying where it looks like a
+    two-rotor export (columns for rotors A and B), where a column is in a rotation unit under a
+    name not read (``Velocita (rpm)``), where a bare ``n`` stands, or like lines above the header."""
+    pair = [n for n in names if re.search(r"\b(speed|thrust|torque)\b.*\s[AB](\s*\(.*\))?\s*$", n, re.I)]
+    # a bare name read as the rotation speed only with a rotation unit ('n': a count is written so too)
+    bare_n = [n for n in names if (b := split_header(n))[1] is None and _UNIT_ONLY_NAMES.get(b[0], ("",))[0] == "rpm"]
+    # a column in a rotation unit under a name propmap does not read ('Velocidad (rpm)' was told of lines above the
+    # header: a thrust-stand export audit, 2026-11-30)
+    in_rpm = [n for n in names
+              if n.strip() and (u := split_header(n)[1]) is not None and _token(u) in UNITS["rotation"]]
+    hint = ""
+    if pair:
+        hint = ("; this looks like a two-rotor export (a coaxial or dual stand, columns for rotors A and B): propmap "
+                "fits one isolated rotor, so write one rotor's columns to a file of their own without the A/B "
+                "suffix (in a coaxial pair each rotor also works in the other's flow, which propmap leaves out)")
+    elif in_rpm:
+        hint = (f"; column {in_rpm[0]!r} is in a rotation speed's unit but its name is not read: name it 'rpm' (or "
+                f"'Motor speed ({split_header(in_rpm[0])[1]})')")
+    elif bare_n:
+        x = bare_n[0].strip()
+        hint = (f"; column {bare_n[0]!r} is read as the rotation speed only with a rotation unit: '{x} (rev/s)', "
+                f"'{x} (1/min)' or '{x}_rpm'")
+    elif not cm.columns:  # no name read at all: 'RCbenchmark Steps Test' above the header
+        hint = ("; lines above the header (a title, the test's settings)? remove them, so that the column names "
+                "are the file's first line (a load file's header is looked for in its first 41 lines)")
+    raise error(f"no rotation-speed column: looked for {LOOKED_FOR['rpm']}; found {found}{hint}")
+
+
+def _refuse_no_load(bases: dict, found: str, error) -> None:
+    """map_columns without a thrust, torque or drag column: refused, naming coefficient columns
+    (CT, CP) where they stand instead."""
+    coeff = [n for n, b in bases.items() if b in _loose(_COEFFICIENT_NAMES)]
+    if coeff:
+        raise error(f"no load column, but coefficient column(s) {', '.join(map(repr, coeff))}: a CSV gives the "
+                    "loads in SI (thrust = CT rho n^2 D^4, torque = CP rho n^2 D^5 / (2 pi), airspeed = J n D); "
+                    "UIUC-format files (RPM CT CP static runs, J CT CP eta sweeps) are read as they are")
+    raise error(f"no load column: looked for {LOOKED_FOR['loads']}; found {found}")
+
+
+def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
+    """map_columns' wind-axis lift (refused where the points move, or as a static stand's thrust
+    under another name) and a climb or descent rate column (refused unless the airspeed and
+    the incidence are read; then a note)."""
+    # a tunnel's wind-axis lift and drag are not the rotor's thrust and in-plane force (lift = T sin i + H cos i,
+    # drag = H sin i - T cos i at incidence i, the lift positive towards the rotor axis' side)
+    lift = [n for n, (b, _) in split.items()
+            if re.fullmatch(r"(wind[ _])?lift([ _]force)?([ _](n|mn|kn|kgf|kg|gf|g|lbf|lbs|lb|ozf|oz))?", b)]
+    moving = "airspeed" in cm.columns or "incidence_deg" in cm.columns or any(
+        stems[n] & _loose(_AIRSPEED_LIKE + _ADVANCE_LIKE + _ANGLE_LIKE) for n in stems)
+    if lift and moving:
+        raise error(f"column {lift[0]!r}: propmap reads the loads in the rotor's axes (thrust along the axis, 'drag' "
+                    "the in-plane force); a wind tunnel's lift L and drag D convert with the incidence i as thrust = "
+                    "L sin(i) - D cos(i), in-plane force = L cos(i) + D sin(i) (the lift positive towards the rotor "
+                    "axis' side): write those columns instead")
+    if lift and "thrust" not in cm.columns:
+        raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
+                    "(with its unit) to fit it")
+    rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)]
+    if rate and "airspeed" in cm.columns and "incidence_deg" in cm.columns:
+        cm.notes.append(f"column {rate[0]!r} (a climb or descent rate) is not read: the airspeed and the incidence "
+                        "give the flow")
+    elif rate:
+        raise error(f"column {rate[0]!r} looks like a climb or descent rate, which propmap reads only as 'airspeed' "
+                    "(its magnitude, in its unit: 'airspeed (mph)' is read as such) with 'incidence_deg' 0 (climb) "
+                    "or 180 (descent): write those columns, or remove it; left unread, its points would be taken as "
+                    "static or in the airspeed's direction")
+
+
+def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, error) -> None:
+    """map_columns' airspeed, advance ratio or flow angle under a name propmap does not read
+    (refused: every point would be taken as static or axial), or under an ambiguous name (a
+    note)."""
+    # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
+    for quantity, similar, what, read_as, default in (
+            ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
+             "'airspeed' [m/s] (an advance ratio as airspeed = J n D)", "static (airspeed 0)"),
+            ("incidence_deg", _ANGLE_LIKE, "a flow angle",
+             "'incidence_deg', the angle between the airspeed and the rotor axis (0 axial climb, 90 edgewise, 180 "
+             "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
+        if quantity in cm.columns:
+            continue
+        similar = _loose(similar)
+        like = [n for n in bases if stems[n] & similar]
+        # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
+        # points move (Shaft angle (deg) beside an airspeed): its name may be anything
+        kind = "speed" if quantity == "airspeed" else "angle"
+        if quantity == "airspeed" or "airspeed" in cm.columns:
+            like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
+                     and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
+        if kind == "angle" and "airspeed" in cm.columns:  # an angle's unit after an underscore (tilt_deg, beta_rad)
+            like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
+                     and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
+                     and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
+        if like:
+            joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
+            raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
+                        f"converted, or remove it; left unread, every point would be taken as {default}{joule}")
+        maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
+        if maybe and quantity == "incidence_deg" and "airspeed" in cm.columns:
+            raise error(f"column {maybe[0]!r} looks like {what} beside the airspeed, which propmap reads only as "
+                        f"{read_as}: rename it, converted, or remove it; left unread, every point would be taken "
+                        f"as {default}")
+        if maybe:
+            ratio = bases[maybe[0]] in ("j", "mu")  # (an advance ratio is no airspeed: it converts, V = J n D)
+            cm.notes.append(f"column {maybe[0]!r} is not read; if it is "
+                            + ("an advance ratio, give the airspeed instead (V = J n D; mu n D for mu)" if ratio else
+                               f"{what}, name it {read_as}") + f" (every point is taken as {default})")
+
+
+def _note_unread_force(cm: ColumnMap, split: dict) -> None:
+    """map_columns without a thrust column: a force column under another name ('Force (N)') is
+    named in a note (it was left out unsaid and a torque-only fit ran: a user-level audit)."""
+    # any force unit (a gram thrust under 'Weight (g)', 'Thrust avg (g)' was left unsaid: a thrust-stand export
+    # audit, 2026-11-30), but not an accelerometer's or a vibration's g (AccX (g), Vibration (g))
+    # (a unit after an underscore too, weight_g, load_kgf; not _n there: sample_n is a count)
+    forces = [n for n, (b, u) in split.items() if b not in _NAMES and not _ACCELERATION_LIKE.search(b)
+              and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in UNITS["force"]
+              and (u is not None or not b.endswith("_n"))]
+    if forces:
+        cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
+                        "force) with its unit to fit it; without a thrust column "
+                        + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
+                           + " is fitted" if {"drag", "torque"} & set(cm.columns) else "nothing is fitted"))
+
+
+def _refuse_pitch_like(names, error) -> None:
+    """Refuse a blade pitch setting under another name than collective_deg, in degrees, radians or
+    no unit (``Pitch (deg)``, ``pitch``, ``blade_angle_deg``): left unread, every point was taken at
+    collective 0 (an input fuzzing audit, 2026-11-27); a pitch in inches is not one."""
+    for name in names:
+        if not name.strip():
+            continue
+        b, u = split_header(name)
+        if b in _NAMES or not (u is None or _token(u) in UNITS["angle"]):
+            continue
+        if (_name_stems(name) | {b}) & _loose(_PITCH_LIKE):
+            raise error(f"column {name!r} looks like a blade pitch setting, which propmap reads only as "
+                        "'collective_deg' (the angle added to the geometry's blade angles at every station, "
+                        "[deg]; a tunnel sting's pitch, the flow's angle to the rotor axis, is 'incidence_deg'): "
+                        "rename it, converted, or remove it; left unread, every point would be taken at the "
+                        "geometry's blade angles (collective 0)")
