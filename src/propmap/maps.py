@@ -230,6 +230,15 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         an rpm axis for a large propeller; io.mapcheck.check_dataset).
     TypeError
         A model argument of the wrong type (:func:`propmap.core.solver.check_model_args`).
+
+    Warns
+    -----
+    CoverageWarning
+        The grid beyond the data behind the parameter set (``params_label``, else
+        ``params.label``): its rpm axis past the rates a calibrated set or a fitted file was
+        fitted at, its advance ratio, incidence or airspeed past theirs, its Reynolds numbers
+        (another air or propeller) past theirs by 5% (:func:`propmap.io.coverage.coverage_warnings`,
+        as the `map` command says them).
     """
     air = getattr(params, "air", None) if air is None else air  # checked below
     import dask.array as da
@@ -248,6 +257,7 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         raise ValueError(f"the grid omega x airspeed x incidence has {om.size} x {V.size} x {b.size} = {nodes:,} "
                          f"nodes; at most {MAX_NODES:,}")
     check_propeller(propeller)
+    _warn_coverage(propeller, params, air, params_label, om, V, b)
     shape = (om.size, V.size, b.size)
     O3, V3, B3 = (a.reshape(-1) for a in np.meshgrid(om, V, b, indexing="ij"))
     chunks = int(chunk_points)
@@ -267,6 +277,23 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
         ds.attrs.update(check_map(ds, n_check, seed=seed, propeller=propeller, params=params, air=air,
                                   discretization=discretization))
     return ds
+
+
+def _warn_coverage(propeller, params, air, params_label: str, om, V, b) -> None:
+    """build_map's warnings of a grid beyond the data behind its parameter set (the rpm axis past
+    the rates a calibrated set was fitted at, an advance ratio, incidence or airspeed past a
+    fitted file's), as the `map` command says them: a map built in Python over 3000-15000 rpm
+    with apce_8x6's calibrated set (its data 2534-6713 rpm) was built without a word (an audit
+    of stop 90). The tip Mach number is the solver's to warn of."""
+    import warnings
+
+    from .io.coverage import CoverageWarning, coverage_warnings, envelope_extremes
+
+    rpm = om / RPM
+    extremes = envelope_extremes(propeller, rpm[:, None, None], V[None, :, None], np.degrees(b)[None, None, :])
+    for line in coverage_warnings(propeller, params_label or getattr(params, "label", ""), air, *extremes,
+                                  rpm=(float(rpm[0]), float(rpm[-1])), airspeed=float(V[-1]), tip_mach=False):
+        warnings.warn(line, CoverageWarning, stacklevel=3)
 
 
 def _compute(parts, scheduler, progress: bool):
