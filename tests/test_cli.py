@@ -96,8 +96,10 @@ def test_loads_points_csv(capsys, tmp_path):
 
 def test_loads_points_with_semicolons_and_decimal_commas(capsys, tmp_path):
     """A points file saved by a spreadsheet in a decimal-comma locale gives the loads of the
-    same points written with decimal points."""
-    loads = {}
+    same points written with decimal points, and the same output file: its operating columns
+    echoed with decimal points (since 2026-11-30: '5,5' was echoed as quoted text beside the
+    loads' numbers in the comma-separated output)."""
+    loads, rows = {}, {}
     for name, text in (("en", "rpm,airspeed,incidence_deg\n8000,5.5,10\n6000,0,0.5\n"),
                        ("de", "rpm;airspeed;incidence_deg\r\n8000;5,5;10\r\n6000;0;0,5\r\n")):
         src, dst = tmp_path / f"{name}.csv", tmp_path / f"{name}_out.csv"
@@ -105,7 +107,9 @@ def test_loads_points_with_semicolons_and_decimal_commas(capsys, tmp_path):
         code, _, err = run(capsys, "loads", "apce_8x6", "--points", str(src), "--out", str(dst))
         assert code == 0, err
         loads[name] = [(float(r["thrust"]), float(r["drag"])) for r in csv.DictReader(dst.open())]
+        rows[name] = dst.read_text().splitlines()
     assert loads["de"] == loads["en"] and loads["en"][0][1] > 0
+    assert rows["de"] == rows["en"] and rows["de"][1].startswith("8000,5.5,10,")
 
 
 def test_validate_json_and_figure(capsys, tmp_path):

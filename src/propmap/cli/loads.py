@@ -234,6 +234,9 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                     text = df[name].str.strip()
                     if sep != ",":
                         text = _decimal_commas(path, c, text, lines, marks)
+                        # (echoed as read: the output is comma-separated with decimal points, and its '2,5' was
+                        # quoted text beside the loads' numbers, an audit of stop 90)
+                        df[name] = text
                     v = pd.to_numeric(text, errors="coerce").to_numpy(float) * mapped[c][1]  # (rpm, m/s, deg)
                     lo, hi = limits[c]
                     bad = ~((v >= lo) & (v <= hi))
