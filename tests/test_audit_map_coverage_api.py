@@ -47,3 +47,9 @@ def test_the_map_command_says_each_line_once(tmp_path, capsys):
     assert code == 0
     err = capsys.readouterr().err
     assert err.count("the data behind calibrated:apce_8x6 span 2534-6713 rpm") == 1, err
+
+
+def test_a_long_label_is_no_file_name():
+    """A params_label past 255 characters (no file) raised 'File name too long' from the coverage
+    lookup (a review): it is a label without known data."""
+    assert _built([3000.0, 15000.0], [0.0, 1.0], params_label="x" * 300) == []

@@ -65,6 +65,7 @@ def test_a_vehicle_of_two_catalogue_propellers_takes_each_ones_calibrated_set(tm
     assert re.search(r"params the vehicle's rotor sets: calibrated:apce_8x6, calibrated:apce_8x4\)", r.stdout)
     t = _trim(veh_file)
     assert "calibrated:apce_8x6" in t["params"] and "calibrated:apce_8x4" in t["params"]
+    assert t["rotor_params"] == ["calibrated:apce_8x6"] * 2 + ["calibrated:apce_8x4"] * 2  # (each rotor's)
     # each rotor's thrust at the trim is that of its own calibrated set at its rpm
     veh = pm.read_vehicle(veh_file)
     for k, rpm in enumerate(t["trims"][0]["rotor_rpm"]):

@@ -74,7 +74,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     _rotor_coverage(veh, sets, [[t.wrench.loads[i] for t in trims] for i in range(len(veh.rotors))],
                     model_air(params, air))
     if as_json:
-        echo_json({"vehicle": str(vehicle), "params": label, "mass_kg": veh.mass,
+        echo_json({"vehicle": str(vehicle), "params": label, "rotor_params": list(sets), "mass_kg": veh.mass,
                    "rho_kg_m3": model_air(params, air).rho, "trims": rows,
                    "units": {"airspeed": "m/s", "climb_rate": "m/s", "roll_deg": "deg", "pitch_deg": "deg",
                              "rotor_rpm": "rpm", "power_W": "W"}})

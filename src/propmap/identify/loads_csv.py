@@ -127,7 +127,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     f, cm = _header_columns(f, rpm_source, pole_pairs, what, p)
     notes = [*f.notes, *cm.notes]
     _power_note(f.header, cm, notes)
-    _side_loads_note(f.header, notes)
+    _side_loads_note(f.header, cm, notes)
     speeds = [q for q in ("rpm", "rpm_optical", "rpm_electrical") if q in cm.columns]
     # a bare J or mu where no airspeed is read: an advance ratio unless 0 everywhere (or a viscosity's ~1e-5 Pa s)
     ratio = [c for c in f.header if c.strip().lower() in ("j", "mu")] if "airspeed" not in cm.columns else []
@@ -250,17 +250,34 @@ _SIDE_LOADS = ("side force", "sideforce", "lateral force", "y force", "pitching 
                "hub rolling moment")
 
 
-def _side_loads_note(header, notes: list) -> None:
+def _side_load_name(column: str) -> str | None:
+    """The side force's or hub moment's name (of :data:`_SIDE_LOADS`) that ``column`` is, with or
+    without a unit in brackets, after a comma, a blank or an underscore ('Side force, N',
+    'side_force_lbf', 'rolling_moment_N_m'); None for any other column."""
+    from .headers import UNITS, _token
+
+    text = column.strip().lower().split("(")[0].split("[")[0].split(",")[0].replace("_", " ").strip()
+    units = {**UNITS["force"], **UNITS["torque"]}
+    for name in _SIDE_LOADS:
+        if text == name or (text.startswith(name + " ") and _token(text[len(name):]) in units):
+            return name
+    return None
+
+
+def _side_loads_note(header, cm, notes: list) -> None:
     """A note naming a side force or hub moment column, which is not read (a wind-tunnel file's
     'side force (N)' and 'pitching moment (N m)' were left out without a word: a wind-tunnel
-    data audit, 2026-11-30)."""
-    side = [c for c in header if c.strip().lower().split("(")[0].split("[")[0].strip().replace("_", " ")
-            .removesuffix(" n").removesuffix(" nm").strip() in _SIDE_LOADS]
+    data audit, 2026-11-30); beside no torque column, that a balance's moment about the rotor
+    axis is the torque."""
+    side = [c for c in header if _side_load_name(c)]
     if side:
+        moment = "torque" not in cm.columns and any("moment" in _side_load_name(c) for c in side)
         notes.append(f"{', '.join(repr(c) for c in side)} {'is' if len(side) == 1 else 'are'} not read: propmap "
                      "fits and validates the thrust, the in-plane force (drag, along the in-plane airspeed) and "
                      "the torque; the side force and the hub moments it predicts (rotor_loads' side_force, "
-                     "rolling_moment, pitching_moment) are not compared with measurements")
+                     "rolling_moment, pitching_moment) are not compared with measurements"
+                     + ("; a balance's moment about the rotor axis is the torque: name that column 'torque'"
+                        if moment else ""))
 
 
 def _check_unread_columns(raw: dict, texts: dict, ratio: list, named: list, what: str, p: str, notes: list) -> None:

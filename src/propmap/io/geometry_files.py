@@ -372,12 +372,13 @@ def _is_uiuc_geometry(text: str) -> bool:
 
 def _same_diameter(given: float, own: float) -> bool:
     """Whether a diameter given beside a PE0 file is the file's own [in]: equal to 1e-3, or the
-    file's rounded to the given's decimals (as its float prints) within 2% (``--diameter-in 4.2`` beside a PE0 of
+    file's rounded to the given's decimals (none for a whole number) within 2% (``--diameter-in 4.2`` beside a PE0 of
     4.183 in was refused: an audit of stop 90)."""
     if math.isclose(given, own, rel_tol=1e-3):
         return True
     text = repr(float(given))
-    decimals = len(text.split(".")[1]) if "." in text and "e" not in text else 0
+    # (a whole number, 10 for a PE0 of 10.08 in, has none: a review)
+    decimals = 0 if float(given).is_integer() else len(text.split(".")[1]) if "e" not in text else 99
     return decimals <= 3 and math.isclose(round(own, decimals), given, rel_tol=1e-9) and abs(given / own - 1) < 0.02
 
 
@@ -390,8 +391,9 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     diameter_in : float, optional
         For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
         a different ``diameter_in`` is refused, except the file's diameter rounded to the
-        given's 1 to 3 decimals, within 2% (a nominal 4.2 in for a PE0 radius of 2.09 in,
-        4.18 in; not 4, which is 4.0), and the file's diameter is used.
+        given's 0 to 3 decimals, within 2% (a nominal 4.2 in for a PE0 radius of 2.09 in,
+        4.18 in, or 10 for 10.08 in; not 4 for 4.18 in, 4.4% off), and the file's diameter is
+        used.
     n_blades : int, optional
         Blade count: required for a UIUC file (which does not state it); a PE0 file states
         its BLADES, and a different ``n_blades`` is refused.
@@ -424,8 +426,9 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
             _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
             if not _same_diameter(diameter_in, prop.diameter / 0.0254):  # bare "must be real number")
                 raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives "
-                                        f"its own radius (diameter {prop.diameter / 0.0254:.8g} in); diameter_in "
-                                        "applies to UIUC files")
+                                        f"its own radius (diameter {prop.diameter / 0.0254:.8g} in): leave the "
+                                        "option out (it applies to UIUC files), or give that diameter, to fewer "
+                                        "decimals if you like (within 2%)")
         if n_blades is not None and n_blades != prop.n_blades:
             raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the PE0 file states BLADES: "
                                     f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "

@@ -93,6 +93,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
+import os
 from dataclasses import fields
 from pathlib import Path
 
@@ -339,7 +340,7 @@ def set_coverage(label: str) -> dict | None:
     """
     from .calibration import coverage
 
-    if label and Path(label).is_file():
+    if label and os.path.isfile(label):  # (Path.is_file raised on a label past 255 characters: a review)
         st = Path(label).stat()  # (by content's stamp: a command reads it for several checks, once)
         found = _file_coverage(str(Path(label).resolve()), st.st_mtime_ns, st.st_size)
         return None if found is None else dict(found)
