@@ -555,7 +555,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     said = len(warnings_)
     _mirrored_incidence(data, at_rpm, model.loads_at, warnings_)
     mirror = len(warnings_) > said
-    warnings_ += _vortex_ring_warning(data, at_rpm)
+    if not mirror:  # (the working states of a mirrored file are judged at the wrong incidence: a review)
+        warnings_ += _vortex_ring_warning(data, at_rpm)
     # (incidences that look like radians, which the reader warns of, make the thrust at airspeed misfit too: the
     # airspeed's unit was blamed as a second cause, km/h, a user-level audit; so did a mirrored incidence, a review)
     speed_slip = (None if mirror or radians_hint(np.degrees(data.incidence), data.airspeed)
