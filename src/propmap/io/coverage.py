@@ -18,7 +18,7 @@ class CoverageWarning(UserWarning):
 
 
 def envelope_extremes(prop, rpm, airspeed, incidence_deg) -> tuple[float, float, float]:
-    """The extremes of operating points that :func:`coverage_messages` checks.
+    """The extremes of operating points that :func:`coverage_warnings` checks.
 
     The advancing tip meets the air at sqrt((Omega R + V sin b)^2 + (V cos b)^2), not
     sqrt((Omega R)^2 + V^2): 20 m/s edgewise at Omega R = 100 m/s is 120 m/s, not 102.
@@ -113,7 +113,7 @@ def coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     mach = tip_speed / air.speed_of_sound
     if tip_mach and mach > 0.7:
         out.append(f"tip Mach number up to {mach:.2f} (> 0.7): compressibility beyond Prandtl-Glauert "
-             "is not modelled")
+                   "is not modelled")
     cov = set_coverage(label)
     if cov is None:
         return out
@@ -129,8 +129,8 @@ def coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
         descent = ("; beyond 90 deg the rotor descends, beyond the climb data: the momentum of rotors in descent, "
                    "docs/models.md" if incidence_deg > 90 else "")
         out.append(f"incidence up to {incidence_deg:g} deg: {label} was fitted to "
-             + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver and "
-                f"gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
+                   + ("axial data only; off-axis loads rest on the BET/BEMT physics (docs/validation.md: the Beaver "
+                      f"and gill2019 cases){descent}" if axial else f"data up to {cov['incidence_deg_max']:g} deg"))
     # (said where neither line above is: a flight fit's edgewise speed shows in no advance ratio)
     if (airspeed is not None and "airspeed_max" in cov and airspeed_beyond(airspeed, cov["airspeed_max"])
             and not (beyond_J or beyond_incidence)):
@@ -145,7 +145,7 @@ def coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
             span = (f"{low:.0f}-{high:.0f} rpm" if math.isfinite(high) and low > 0 else
                     f"up to {high:.0f} rpm" if math.isfinite(high) else f"from {low:.0f} rpm up")
             out.append(f"{shown} rpm: the data behind {label} span {span} (Reynolds numbers beyond them are "
-                 "extrapolated)")
+                       "extrapolated)")
         else:  # (the rates within the data's: in other air or on another propeller the Reynolds number need not be)
             out += _reynolds_warning(prop, label, air, cov, (lo, hi))
     return out
