@@ -42,3 +42,20 @@ def test_the_rule():
     assert _same_diameter(10, 10.08) and _same_diameter(10.0, 10.08) and not _same_diameter(4, 4.183)
     assert not _same_diameter(4.17, 4.183) and not _same_diameter(4.3, 4.183)
     assert _same_diameter(10.2, 10.25) and not _same_diameter(10.3, 10.25)
+
+
+def test_a_vehicle_rotors_diameter_beside_a_pe0_file_is_said_in_its_own_key(tmp_path):
+    """A vehicle rotor's diameter_m beside a PE0 file other than the file's: the refusal says
+    diameter_m in metres (it said diameter_in in inches, the CLI's option: a review)."""
+    geo = tmp_path / "p10.PE0"
+    geo.write_text(PE0.read_text())
+    example = Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml"
+    veh = tmp_path / "v.toml"
+    veh.write_text(example.read_text().replace('propeller = "apce_8x6"', 'propeller = "p10.PE0"\ndiameter_m = 0.3'))
+    from propmap.vehicle import VehicleFileError
+
+    with pytest.raises(VehicleFileError, match=r"p10\.PE0: diameter_m = 0\.3 m, but a PE0 file gives its own "
+                                                  r"radius \(diameter 0\.254 m\): leave diameter_m out"):
+        pm.read_vehicle(veh)
+    veh.write_text(example.read_text().replace('propeller = "apce_8x6"', 'propeller = "p10.PE0"\ndiameter_m = 0.254'))
+    assert pm.read_vehicle(veh).rotors[0].propeller.diameter == pytest.approx(0.254)

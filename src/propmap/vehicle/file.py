@@ -50,6 +50,7 @@ import difflib
 import math
 import numbers
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -210,6 +211,12 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                                               "<family>_<D>x<P>_geom.txt: D in inches, in mm for the ef, kpf, pl and "
                                               "vp families)").replace("give it (--blades, n_blades)",
                                                                       "give the rotor's blades")
+            # (a PE0 file's refusal of a size, said in the CLI's inches and option: a rotor's key is diameter_m)
+            msg = re.sub(r"diameter_in = ([-+0-9.e]+) in", lambda m: f"diameter_m = {float(m[1]) * 0.0254:.6g} m", msg)
+            msg = re.sub(r"\(diameter ([-+0-9.e]+) in\)", lambda m: f"(diameter {float(m[1]) * 0.0254:.6g} m)", msg)
+            msg = msg.replace("leave the option out (it applies to UIUC files), or give that diameter, to fewer "
+                              "decimals if you like (within 2%)", "leave diameter_m out (it is for UIUC geometry "
+                              "files)")
             raise VehicleFileError(f"{where}: propeller: {msg}") from None
     if spec in catalogue():
         if diameter_in is not None or n_blades is not None:
