@@ -156,3 +156,11 @@ def _band_table(report: dict) -> str:
              f"{'':<{width}}" + "".join(f"{_band_name(b):>{c}}" for b, c in zip(rows[0][1], col))]
     lines += [f"{label:<{width}}" + "".join(f"{cell(b):>{c}}" for b, c in zip(r, col)) for label, r in rows]
     return "\n".join(lines)
+
+
+def band_line(bands: list) -> str:
+    """One line of propmap's pooled force error F [N] by speed band (the samples in brackets;
+    `wrench`'s, as `fit flight`'s table gives it per log: how the error grows with speed on a
+    log faster than the training ones)."""
+    return "F [N] by speed band: " + ", ".join(
+        f"{_band_name(b)} " + ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})" for b in bands)

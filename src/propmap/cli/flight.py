@@ -11,7 +11,8 @@ from ._air import resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
 from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond
-from ._flight_report import NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table
+from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
+                             band_line)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
 from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
@@ -420,6 +421,7 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     """
     from ..io.atomic import atomic_write
     from ..identify.flight import flight_errors, reference_errors
+    from ..identify.flight_scores import speed_band_errors
 
     if str(out) == "-":
         raise InputError("--out: '-' (standard output) is not taken here: wrench prints its error table there; give "
@@ -456,18 +458,20 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     with atomic_write(out, "w", newline="") as fh:
         _write_columns(fh, cols)
     err = flight_errors(w.force, samples, w.moment)
+    bands = speed_band_errors(w.force, samples)  # (how the error grows with speed, as fit flight's report gives it)
     refs, masses = reference_errors(samples, veh.mass)
     rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
     if as_json:
         import json
 
-        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "samples": samples.n,
-                               "left_out": log.n - samples.n}, indent=2))
+        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "speed_bands": bands,
+                               "samples": samples.n, "left_out": log.n - samples.n}, indent=2))
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
                    f"ground), params {label}, rho {air.rho:g} kg/m^3")
         click.echo(_table(rows))
+        click.echo(f"propmap's {band_line(bands)}")
         if samples.reference_force is not None:
             click.echo(NEUROBEM_REFERENCE)
         if masses:
