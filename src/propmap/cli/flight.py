@@ -458,7 +458,10 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     with atomic_write(out, "w", newline="") as fh:
         _write_columns(fh, cols)
     err = flight_errors(w.force, samples, w.moment)
-    bands = speed_band_errors(w.force, samples)  # (how the error grows with speed, as fit flight's report gives it)
+    # (how the error grows with speed, in fit flight's 3 m/s bands through the log's fastest sample: its open band
+    # above 9 m/s would lump a faster flight's 9-18 m/s together)
+    top = float(samples.speed.max()) if samples.n else 0.0
+    bands = speed_band_errors(w.force, samples, tuple((3.0 * k, 3.0 * k + 3.0) for k in range(int(top // 3) + 1)))
     refs, masses = reference_errors(samples, veh.mass)
     rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
     if as_json:

@@ -191,8 +191,8 @@ def baseline_force(baseline: dict, samples: FlightSamples, vehicle: Vehicle) -> 
     return X @ np.asarray(baseline["coefficients"])
 
 
-def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
-    """Pooled force error F [N] in each of :data:`SPEED_BANDS` (None where a band is empty).
+def speed_band_errors(predicted_force, samples: FlightSamples, bands=SPEED_BANDS) -> list:
+    """Pooled force error F [N] in each speed band (None where a band is empty).
 
     Parameters
     ----------
@@ -201,6 +201,9 @@ def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
     samples : FlightSamples
         Its speed ``|v|`` [m/s] puts each sample in a band (lower bound included, upper
         excluded).
+    bands : sequence of (float, float)
+        The bands [m/s], in order (default :data:`SPEED_BANDS`, issue 14's; ``math.inf`` for
+        an open one).
 
     Returns
     -------
@@ -211,7 +214,7 @@ def speed_band_errors(predicted_force, samples: FlightSamples) -> list:
     """
     sp = samples.speed
     rows = []
-    for lo, hi in SPEED_BANDS:
+    for lo, hi in bands:
         m = (sp >= lo) & (sp < hi)
         rows.append({"band_m_s": [lo, None if math.isinf(hi) else hi], "n": int(m.sum()),
                      "F": flight_errors(np.asarray(predicted_force)[m], samples.select(m))["F"] if m.any() else None})
