@@ -136,6 +136,11 @@ def _band_name(band: dict) -> str:
     return f">{lo:g} m/s" if hi is None else f"{lo:g}-{hi:g} m/s"
 
 
+def _band_cell(band: dict) -> str:
+    """A speed band's F [N] and its samples in brackets ('n/a' where it has none)."""
+    return ("n/a" if band["F"] is None else f"{band['F']:.3f}") + f" ({band['n']})"
+
+
 def _band_table(report: dict) -> str:
     """F [N] by speed band (the samples in brackets) of propmap and each baseline, on the training
     samples and on each held-out log (issue 14's report: the errors by speed band next to the
@@ -147,10 +152,7 @@ def _band_table(report: dict) -> str:
         rows.append((f"{where}: propmap", e["speed_bands"]))
         rows.extend((f"{where}: {labels.get(k, k)}", b) for k, b in e.get("speed_bands_baselines", {}).items())
     width = _label_width(rows)
-
-    def cell(b):
-        return ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})"
-
+    cell = _band_cell
     col = [max(len(_band_name(b)), *(len(cell(r[k])) for _, r in rows)) + 2 for k, b in enumerate(rows[0][1])]
     lines = ["F [N] by speed band (samples in brackets):",
              f"{'':<{width}}" + "".join(f"{_band_name(b):>{c}}" for b, c in zip(rows[0][1], col))]
@@ -162,5 +164,4 @@ def band_line(bands: list) -> str:
     """One line of propmap's pooled force error F [N] by speed band (the samples in brackets;
     `wrench`'s, as `fit flight`'s table gives it per log: how the error grows with speed on a
     log faster than the training ones)."""
-    return "F [N] by speed band: " + ", ".join(
-        f"{_band_name(b)} " + ("n/a" if b["F"] is None else f"{b['F']:.3f}") + f" ({b['n']})" for b in bands)
+    return "F [N] by speed band: " + ", ".join(f"{_band_name(b)} {_band_cell(b)}" for b in bands)

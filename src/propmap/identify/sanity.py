@@ -53,8 +53,8 @@ _UNIT_SLIPS = [
                  "thrust column")),
 ]
 
-#: the factors of _UNIT_SLIPS that read an unlabelled thrust column as N (kgf, gf, lbf)
-_READ_AS_N = (9.80665, 9.80665e-3, 4.4482216152605)
+#: the factors of _UNIT_SLIPS that read an unlabelled thrust column as N (kgf, gf, lbf: its first three)
+_READ_AS_N = tuple(fT for fT, _, _ in _UNIT_SLIPS[:3])
 
 
 #: airspeed units an unlabelled airspeed column may be in, as m/s per unit (mph and knots read as m/s fitted with
@@ -170,6 +170,27 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
 WIND_AXES_MISFIT = (0.2, 0.5)
 
 
+def _incidence_misfit(data: LoadData, at_rpm, on):
+    """(points, misfit) of the checks of loads at incidence (:func:`_wind_axes`,
+    :func:`_mirrored_incidence`): the points of ``on`` where the measured and the model's thrust
+    (and in-plane force, where measured) are finite, and ``misfit(thrust, drag)``, the rms of a
+    reading's thrust and drag (model arrays over all points) less the measured ones there, in
+    units of the measured thrust's rms; None where fewer than 3 points or no thrust remain."""
+    Tm, Dm = data.measured["thrust"], data.measured.get("drag")
+    on = on & np.isfinite(Tm) & np.isfinite(at_rpm.thrust)
+    if Dm is not None:
+        on &= np.isfinite(Dm) & np.isfinite(at_rpm.drag)
+    scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
+    if not scale > 0:
+        return None
+
+    def misfit(thrust, drag) -> float:
+        sq = (Tm[on] - thrust[on]) ** 2 + (0.0 if Dm is None else (Dm[on] - drag[on]) ** 2)
+        return float(np.sqrt(np.mean(sq))) / scale
+
+    return on, misfit
+
+
 def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
     """Warn where the thrust and in-plane force read as wind-axis loads match the model much
     better than as rotor-axis ones: a tunnel's force along the flow, T cos i - D sin i, under
@@ -180,15 +201,11 @@ def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
     if not {"thrust", "drag"} <= set(data.measured):
         return
     s, c = np.sin(data.incidence), np.cos(data.incidence)
-    Tm, Dm, T, D = data.measured["thrust"], data.measured["drag"], at_rpm.thrust, at_rpm.drag
-    on = (s > 0.2) & np.isfinite(Tm) & np.isfinite(Dm) & np.isfinite(T) & np.isfinite(D)
-    scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
-    if not scale > 0:
+    judged = _incidence_misfit(data, at_rpm, s > 0.2)
+    if judged is None:
         return
-
-    def misfit(thrust, drag) -> float:
-        return float(np.sqrt(np.mean((Tm[on] - thrust[on]) ** 2 + (Dm[on] - drag[on]) ** 2))) / scale
-
+    on, misfit = judged
+    T, D = at_rpm.thrust, at_rpm.drag
     along, lift = T * c - D * s, T * s + D * c  # (the model's force along the flow and across it)
     rotor = misfit(T, D)
     wind = {"'thrust' the force along the flow (T cos i - D sin i) and the in-plane column its lift (T sin i + "
@@ -219,27 +236,18 @@ def _mirrored_incidence(data: LoadData, at_rpm, loads_at, warnings_: list) -> No
     if "thrust" not in data.measured:
         return
     s, c = np.sin(data.incidence), np.cos(data.incidence)
-    Tm, T = data.measured["thrust"], at_rpm.thrust
-    Dm = data.measured.get("drag")
-    on = (s > 0.2) & (np.abs(c) > np.sin(np.radians(10.0))) & np.isfinite(Tm) & np.isfinite(T)
-    if Dm is not None:
-        on &= np.isfinite(Dm) & np.isfinite(at_rpm.drag)
-    scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
-    if not scale > 0:
+    judged = _incidence_misfit(data, at_rpm, (s > 0.2) & (np.abs(c) > np.sin(np.radians(10.0))))
+    if judged is None:
         return
-
-    def misfit(thrust, drag) -> float:
-        sq = (Tm[on] - thrust) ** 2 + (0.0 if Dm is None else (Dm[on] - drag) ** 2)
-        return float(np.sqrt(np.mean(sq))) / scale
-
+    on, misfit = judged
     lo, share = MIRROR_MISFIT
-    read = misfit(T[on], at_rpm.drag[on])
+    read = misfit(at_rpm.thrust, at_rpm.drag)
     if not read > lo:  # (the file fits: no mirror solved, which cost 0.3 s per 5,000 points, a review)
         return
     mirror = loads_at(data.omega, incidence=np.pi - data.incidence)
-    mirrored = misfit(mirror.thrust[on], mirror.drag[on])
+    mirrored = misfit(mirror.thrust, mirror.drag)
     if np.isfinite(mirrored) and mirrored < share * read:
-        of = "thrust and in-plane force miss" if Dm is not None else "thrust misses"
+        of = "thrust and in-plane force miss" if "drag" in data.measured else "thrust misses"
         warnings_.append(f"at {int(on.sum())} points at incidence the {of} the model by {read:.2g} of the thrust "
                          f"(rms) at the file's incidence and by {mirrored:.2g} at 180 deg minus it: is the "
                          "incidence a disk angle of attack, or a tilt measured from the other side? propmap's "

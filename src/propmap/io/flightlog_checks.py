@@ -299,11 +299,10 @@ def _check_kinematics(log: FlightLog, turn, name: str) -> None:
         size = float(np.sqrt(np.mean(_window_means(log.t, accel, k) ** 2)))
         if miss <= max(KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
             return
-        worst = worst or (miss, size, window, k)
-    miss, size, window, k = worst
+        worst = worst or (miss, size, window, k, change)
+    miss, size, window, k, change = worst
     # (rates in deg/s make w x v 57 times large: said as a velocity in the world frame, a flight-log audit, 2026-11-30)
     degrees = accel - np.cross(np.radians(log.angular_velocity), log.velocity)
-    change = (log.velocity[k:] - log.velocity[:-k]) / (log.t[k:] - log.t[:-k])[:, None]
     if float(np.sqrt(np.mean((change - _window_means(log.t, degrees, k)) ** 2))) <= max(
             KINEMATIC_TOLERANCE, KINEMATIC_RATIO * size):
         raise FlightLogError(f"{name}: the logged velocity's change (in the body frame) misses what the accelerometer "
