@@ -79,8 +79,16 @@ def test_a_vehicle_of_two_catalogue_propellers_takes_each_ones_calibrated_set(tm
     assert g["trims"][0]["rotor_rpm"] != pytest.approx(t["trims"][0]["rotor_rpm"], rel=1e-3)
 
 
-def test_a_rotor_not_in_the_catalogue_keeps_the_generic_set():
-    """The NeuroBEM quadrotor's lumped blade is no catalogue propeller: the generic set, as before."""
-    t = _trim("neurobem_quadrotor")
+def test_a_rotor_not_in_the_catalogue_keeps_the_generic_set(tmp_path):
+    """The NeuroBEM quadrotor's lumped blade is no catalogue propeller: without the vehicle file's own
+    set (its top-level params, the example's since 2026-11-30: tests/test_vehicle_params.py), the
+    generic set, as before."""
+    examples = EXAMPLE.parent
+    (tmp_path / "neurobem_5.1x4.8_geom.txt").write_bytes((examples / "neurobem_5.1x4.8_geom.txt").read_bytes())
+    text = (examples / "neurobem_quadrotor.toml").read_text()
+    line = 'params = "neurobem_quadrotor.params.toml"\n'
+    assert text.count(line) == 1
+    (tmp_path / "v.toml").write_text(text.replace(line, ""))
+    t = _trim(tmp_path / "v.toml")
     assert t["params"] == "generic"
     assert t["trims"][0]["rotor_rpm"][0] == pytest.approx(1282.4 / RPM, abs=0.5)  # docs/flight.md's hover

@@ -26,7 +26,7 @@ def run(shared_data, tmp_path_factory):
         buf = io.StringIO()
         with contextlib.redirect_stdout(buf):
             code = main(["wrench", str(shared_data / "neurobem_flights" / log), "--vehicle", "neurobem_quadrotor",
-                         "--out", str(out / "w.csv"), *extra])
+                         "--params", "generic", "--out", str(out / "w.csv"), *extra])
         assert code == 0
         return buf.getvalue(), out / "w.csv"
     return go

@@ -23,13 +23,16 @@ from propmap.vehicle import VehicleFileError, hover_omega
 
 EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
 VEHICLE = EXAMPLES / "neurobem_quadrotor.toml"
+OWN_PARAMS = "neurobem_quadrotor.params.toml"  # (the vehicle file's own set, its top-level params)
 GEOMETRY = "neurobem_5.1x4.8_geom.txt"
 
 
 @pytest.fixture()
 def own_vehicle(tmp_path):
-    """The NeuroBEM vehicle beside a copy of its geometry file (the file the audit overwrote)."""
+    """The NeuroBEM vehicle beside a copy of its geometry file (the file the audit overwrote) and of
+    its own parameter file."""
     shutil.copy(EXAMPLES / GEOMETRY, tmp_path / GEOMETRY)
+    shutil.copy(EXAMPLES / OWN_PARAMS, tmp_path / OWN_PARAMS)
     shutil.copy(VEHICLE, tmp_path / "v.toml")
     return tmp_path / "v.toml", tmp_path / GEOMETRY
 
@@ -61,11 +64,12 @@ def test_exports_refuse_to_write_over_the_vehicles_propeller_file(own_vehicle, c
 
 def test_a_flight_fits_airframe_drag_reaches_rotorpys_quad_params(tmp_path, capsys):
     """export-sim --vehicle --params FIT.toml: the fit's [body] drag areas are RotorPy's c_D, as
-    `wrench` takes them (they were the vehicle file's, 0 here, without a word)."""
+    `wrench` takes them (they were the vehicle file's, 0 here, without a word); without --params,
+    those of the vehicle file's own set (its top-level params, since 2026-11-30)."""
     fit = tmp_path / "fit.toml"
     write_params(fit, pm.generic_params(), body=BodyTable(BodyDrag((0.05, 0.02, 0.0), 1.0), None, None))
     out = {}
-    for name, params in (("file", []), ("fit", ["--params", str(fit)])):
+    for name, params in (("file", ["--params", "generic"]), ("fit", ["--params", str(fit)]), ("own", [])):
         assert main(["export-sim", str(EXAMPLES / GEOMETRY), "--blades", "3",
                      "--target", "rotorpy", "--vehicle", str(VEHICLE), *params,
                      "--out", str(tmp_path / f"{name}.py")]) == 0
@@ -79,6 +83,9 @@ def test_a_flight_fits_airframe_drag_reaches_rotorpys_quad_params(tmp_path, caps
     assert out["file"]["c_Dx"] != out["fit"]["c_Dx"]
     assert "drag areas of the [body] table of fit.toml" in (tmp_path / "fit.py").read_text()
     assert "drag areas of the vehicle file" in (tmp_path / "file.py").read_text()
+    own = pm.read_params(pm.vehicle_params_file("neurobem_quadrotor"))
+    assert out["own"]["c_Dx"] == pytest.approx(0.5 * own.air.rho * 0.020243491948124387, rel=1e-9)
+    assert "drag areas of the [body] table of neurobem_quadrotor.params.toml" in (tmp_path / "own.py").read_text()
 
 
 def test_a_flight_fits_airframe_drag_reaches_the_c_vehicle_export(tmp_path, capsys):
@@ -189,8 +196,9 @@ def test_an_angle_column_without_its_unit_is_refused(tmp_path, capsys):
 
 
 def _vehicle_text(rotor_lines: dict, body: str = "") -> str:
-    """The NeuroBEM vehicle file with extra lines in the rotors numbered in ``rotor_lines``."""
-    text = VEHICLE.read_text()
+    """The NeuroBEM vehicle file with extra lines in the rotors numbered in ``rotor_lines`` (and
+    without its own parameter set, whose [body] table a ``body`` given would meet)."""
+    text = VEHICLE.read_text().replace(f'params = "{OWN_PARAMS}"\n', "")
     parts = text.split("[[rotors]]")
     for k, extra in rotor_lines.items():
         parts[k] = parts[k].rstrip("\n") + "\n" + extra + "\n\n"
@@ -204,6 +212,7 @@ def test_heterogeneous_vehicle_exports_say_what_they_leave_out(tmp_path, capsys)
     the build); the airframe's drag in the slipstream left the C function and RotorPy's model
     without a word (+39% of the weight at hover)."""
     shutil.copy(EXAMPLES / GEOMETRY, tmp_path / GEOMETRY)
+    shutil.copy(EXAMPLES / OWN_PARAMS, tmp_path / OWN_PARAMS)
     own = tmp_path / "own.toml"
     own.write_text(_vehicle_text({2: 'params = "section:naca0015"'}))
     args = ["export-sim", str(tmp_path / GEOMETRY), "--blades", "3", "--target", "rotorpy", "--vehicle", str(own)]
@@ -363,7 +372,7 @@ def test_trim_vehicle_refuses_a_supersonic_hover_asking_for_the_mass_in_kg(tmp_p
     asking whether the mass is in kg; the file as shipped trims as before (12,246 rpm)."""
     src = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
     grams = tmp_path / "grams.toml"
-    for f in src.parent.glob("neurobem_*_geom.txt"):  # (the rotors' geometry, named relative to the file)
+    for f in [*src.parent.glob("neurobem_*_geom.txt"), src.parent / OWN_PARAMS]:  # (named relative to the file)
         shutil.copy(f, tmp_path / f.name)
     grams.write_text(src.read_text().replace("mass = 0.772", "mass = 772", 1))
     code = main(["trim-vehicle", "--vehicle", str(grams)])
@@ -371,7 +380,7 @@ def test_trim_vehicle_refuses_a_supersonic_hover_asking_for_the_mass_in_kg(tmp_p
     assert code == 2 and re.search(r"propmap: error: --airspeed 0: the rotors turn at up to \d+ rpm, a blade tip "
                                    r"Mach number of [\d.]+ \(supersonic, beyond the model's physics\): is the "
                                    r"vehicle's mass \(772 kg\) in kg", err), err
-    assert main(["trim-vehicle", "--vehicle", str(src)]) == 0
+    assert main(["trim-vehicle", "--vehicle", str(src), "--params", "generic"]) == 0
     assert "12246.2" in capsys.readouterr().out
 
 
@@ -390,7 +399,7 @@ def test_a_rotor_table_with_location_for_position_names_the_unknown_key(tmp_path
     """A [[rotors]] table with 'location' in place of 'position' was told only "missing key
     'position'": the unknown key is named (a review, 2026-11-30)."""
     src = Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml"
-    for f in src.parent.glob("neurobem_*_geom.txt"):
+    for f in [*src.parent.glob("neurobem_*_geom.txt"), src.parent / OWN_PARAMS]:
         shutil.copy(f, tmp_path / f.name)
     path = tmp_path / "loc.toml"
     path.write_text(src.read_text().replace("position =", "location =", 1))

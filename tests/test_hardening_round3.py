@@ -332,7 +332,8 @@ def test_params_reach_every_rotor_and_the_fit_writes_no_centre_of_mass_it_did_no
     them, with a warning (they were silently ignored: the fit ended singular, wrench printed
     --params' name beside the rotors' loads). A fit that did not free the centre of mass writes
     none, so that the vehicle file's stays (a zero one replaced it)."""
-    text = VEHICLE.read_text()
+    # (without the vehicle's own set: the rotors')
+    text = VEHICLE.read_text().replace('params = "neurobem_quadrotor.params.toml"\n', "")
     veh_file = tmp_path / "own.toml"
     veh_file.write_text(text.replace('blades = 3', 'blades = 3\nparams = "generic"'))
     shutil.copyfile(VEHICLE.parent / "neurobem_5.1x4.8_geom.txt", tmp_path / "neurobem_5.1x4.8_geom.txt")
@@ -538,7 +539,7 @@ def test_a_vehicle_whose_axes_point_down_is_refused_and_one_way_spins_warned(tmp
     rotors of one spin too."""
     from propmap.vehicle import VehicleFileError
 
-    text = VEHICLE.read_text()
+    text = VEHICLE.read_text().replace('params = "neurobem_quadrotor.params.toml"\n', "")
     geometry = Path(VEHICLE).parent
     down = tmp_path / "down.toml"
     down.write_text(re.sub(r"axis = \[[^\]]*\]", "axis = [0.0, 0.0, -1.0]", text).replace(

@@ -131,7 +131,7 @@ def test_inflow_helper_shapes_and_zero_factor():
 def test_vehicle_file_key_and_range(tmp_path, neurobem, generic):
     text = NEUROBEM.read_text()
     p = tmp_path / "v.toml"
-    for name in ("neurobem_5.1x4.8_geom.txt",):
+    for name in ("neurobem_5.1x4.8_geom.txt", "neurobem_quadrotor.params.toml"):
         (tmp_path / name).write_text((NEUROBEM.parent / name).read_text())
     p.write_text("rotor_interference = 1.5\n" + text)
     assert read_vehicle(p).rotor_interference == 1.5

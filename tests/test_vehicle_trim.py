@@ -69,7 +69,7 @@ def test_canted_rotors_set_the_attitude_at_rest(tmp_path, axis, roll_deg, pitch_
     straight up; canted forward, pitched nose up by 10 deg (docs/nomenclature.md's signs)."""
     text = (Path(pm.__file__).parent / "data" / "examples" / "neurobem_quadrotor.toml").read_text()
     assert text.count("axis = [0.0, 0.0, 1.0]") == 4
-    for f in ("neurobem_5.1x4.8_geom.txt",):
+    for f in ("neurobem_5.1x4.8_geom.txt", "neurobem_quadrotor.params.toml"):
         (tmp_path / f).write_bytes((Path(pm.__file__).parent / "data" / "examples" / f).read_bytes())
     (tmp_path / "v.toml").write_text(text.replace("axis = [0.0, 0.0, 1.0]", f"axis = {axis}"))
     trim = pm.trim_vehicle(pm.read_vehicle(tmp_path / "v.toml"), pm.generic_params(), 0.0)
@@ -178,14 +178,16 @@ def test_the_command_gives_the_functions_trims(neurobem, capsys):
     from propmap.cli.main import main
 
     vehicle, params = neurobem
-    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "0,10", "--json"]) == 0
+    # (the generic set: the vehicle file's own set, its default since 2026-11-30, is tested in test_vehicle_params)
+    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "0,10", "--json", "--params",
+                 "generic"]) == 0
     got = json.loads(capsys.readouterr().out)
     want = pm.trim_vehicle(vehicle, params, 10.0)
     row = got["trims"][1]
     assert row["pitch_deg"] == pytest.approx(math.degrees(want.pitch), abs=1e-9)
     np.testing.assert_allclose(row["rotor_rpm"], want.rotor_omega * 30 / math.pi, rtol=1e-12)
     assert row["power_W"] == pytest.approx(want.power, rel=1e-12) and got["params"] == "generic"
-    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "10"]) == 0
+    assert main(["trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "10", "--params", "generic"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert lines[1].split()[:3] == ["V", "[m/s]", "roll"] and lines[2].split()[:3] == ["10", "0.000", "-4.115"]
     for args, said in ((["--airspeed", "5,x"], "--airspeed must be 1 to 200 comma-separated speeds"),

@@ -63,17 +63,18 @@ _PACKAGE = os.path.realpath(Path(__file__).resolve().parents[1])
 
 
 def vehicle_inputs(vehicle) -> list:
-    """The files a vehicle TOML names (its rotors' geometry and parameter files: ``[[rotors]]
-    propeller`` and ``params`` entries that are files, as the vehicle reader resolves them,
-    :func:`propmap.vehicle.file.rotor_file_specs`): inputs of any command given the vehicle,
-    never to be written over. Best effort: the vehicle reader reports a malformed file; None
-    or an unreadable file gives []."""
-    from ..vehicle.file import VehicleFileError, rotor_file_specs
+    """The files a vehicle TOML names (its own parameter file, its top-level ``params``, and its
+    rotors' geometry and parameter files: ``[[rotors]] propeller`` and ``params`` entries that
+    are files, as the vehicle reader resolves them, :func:`propmap.vehicle.file.rotor_file_specs`):
+    inputs of any command given the vehicle, never to be written over. Best effort: the vehicle
+    reader reports a malformed file; None or an unreadable file gives []."""
+    from ..vehicle.file import VehicleFileError, rotor_file_specs, vehicle_params_file
 
     if vehicle is None:
         return []
     try:
-        specs = [s for key in ("propeller", "params") for s in rotor_file_specs(vehicle, key)]
+        specs = [vehicle_params_file(vehicle), *(s for key in ("propeller", "params")
+                                                 for s in rotor_file_specs(vehicle, key))]
     except VehicleFileError:
         return []
     return [Path(s) for s in specs if s is not None and os.path.lexists(s)]

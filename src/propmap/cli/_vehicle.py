@@ -34,17 +34,32 @@ def _check_rotor_sets(veh, labels) -> None:
         check_section_match(next(r.propeller for r in veh.rotors if r.propeller.name == prop), label)
 
 
+def _default_spec(path, params_spec):
+    """``params_spec``, or where it is None the vehicle file's own parameter set (its top-level
+    ``params``: vehicle.file), the default of --params in the commands that model the vehicle."""
+    from ..vehicle.file import VehicleFileError, vehicle_params_file
+
+    if params_spec is not None:
+        return params_spec
+    try:
+        return vehicle_params_file(path)
+    except VehicleFileError as exc:  # (read_vehicle says the same of the file first, where a command reads it)
+        raise InputError(f"--vehicle: {exc}") from None
+
+
 def _fitted_vehicle(path: Path, params_spec):
-    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` is a parameter
-    file with the ``[body]`` table a flight fit writes (the airframe drag, the centre of mass,
-    the rotors' wake interference), the vehicle with those in place of the file's, and whether
-    it had one (what `wrench`, `export-sim --vehicle` and the C vehicle export all model)."""
+    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` (None: the vehicle
+    file's own ``params``) is a parameter file with the ``[body]`` table a flight fit writes (the
+    airframe drag, the centre of mass, the rotors' wake interference), the vehicle with those in
+    place of the file's, and whether it had one (what `wrench`, `export-sim --vehicle` and the C
+    vehicle export all model)."""
     from dataclasses import replace
 
     from ..identify.flight import shift_centre_of_mass
     from ..io.params_file import ParamsFileError, read_body
 
     veh = _vehicle(path)
+    params_spec = _default_spec(path, params_spec)
     if params_spec is None or not Path(params_spec).is_file():
         return veh, False
     try:
@@ -65,9 +80,10 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
     """(vehicle, params, air, label, sets) of a command given a vehicle file and --params: with
     --params one set for every rotor (the rotors' own sets dropped, said), else the vehicle's
     rotor sets (one label for all where they are one, each its own otherwise) and, for a rotor
-    without one, its propeller's default as `loads` takes it: a catalogue propeller's calibrated
-    set, else 'generic' (``sets``: each rotor's label); each rotor's propeller and set checked as
-    `loads` checks them."""
+    without one, the vehicle file's own set (its top-level ``params``), else its propeller's
+    default as `loads` takes it: a catalogue propeller's calibrated set, else 'generic'
+    (``sets``: each rotor's label); each rotor's propeller and set checked as `loads` checks
+    them."""
     from dataclasses import replace
 
     from ..io.calibration import default_params
@@ -81,13 +97,17 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
         # take its catalogue propeller's calibrated one: the example quadrotor's apce_8x6 rotors hovered
         # at 5187 rpm in trim-vehicle and at 5387 rpm in export-sim --vehicle, an audit of stop 90)
         names = rotor_file_specs(vehicle, "propeller")
-        own = tuple(o if o is not None or n not in catalogue() else default_params(n).label
+        mine = _default_spec(vehicle, None)  # (the vehicle's own set before a catalogue propeller's)
+        own = tuple(o if o is not None else mine if mine is not None else
+                    default_params(n).label if n in catalogue() else None
                     for o, n in zip(rotor_file_specs(vehicle), names))
         own = tuple(None if o == "generic" else o for o in own)
     spec = params_spec if params_spec is not None else (
         own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
-    if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set)
-        veh = replace(veh, rotors=[r if r.params is not None or o is None else replace(r, params=default_params(n))
+    if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set, or the vehicle's)
+        mine_set = load_params(mine, option="--vehicle (its params)")[0] if mine is not None else None
+        veh = replace(veh, rotors=[r if r.params is not None or o is None else
+                                   replace(r, params=mine_set if mine_set is not None else default_params(n))
                                    for r, o, n in zip(veh.rotors, own, names)])
     params, air, label = load_params("generic" if spec is None else spec, option="--params")
     sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)

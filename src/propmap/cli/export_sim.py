@@ -100,6 +100,10 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     check_outputs([("--out", out), ("--out (report)", report_path(out))],
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
+    if vehicle is not None:  # (the vehicle file's own set, its top-level params, where --params is not given)
+        from ._vehicle import _default_spec
+
+        params_spec = _default_spec(vehicle, params_spec)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)

@@ -400,13 +400,32 @@ def _hover_loads(params, veh, samples, air):
     return {"thrust": T, "drag": np.zeros(samples.n), "torque": Q}
 
 
+def _fitted_to(sets, log_name: str) -> bool:
+    """Whether the one parameter file in ``sets`` (the rotors' set labels) was fitted to a log of
+    the name ``log_name``: a flight fit's ``[coverage]`` lists its logs by name in ``groups``,
+    its held-out ones in ``held_out`` too (a name, not the content: fit flight records no digest)."""
+    import os
+
+    from ..io.params_file import ParamsFileError, read_coverage
+
+    if len(sets) != 1 or not os.path.isfile(label := next(iter(sets))):
+        return False
+    try:
+        cov = read_coverage(label) or {}
+    except ParamsFileError:
+        return False
+    return (cov.get("data") == "flight logs" and log_name in cov.get("groups", ())
+            and log_name not in cov.get("held_out", ()))
+
+
 @click.command("wrench", cls=Command)
 @click.argument("log_path", metavar="LOG", type=PathArg())
 @click.option("--vehicle", type=PathArg(text=True), required=True,
               help="Vehicle TOML, its rotors in the log's motor order.")
 @click.option("--params", "params_spec", default=None,
               help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
-                   "else each rotor's catalogue propeller's calibrated set, else 'generic'.")
+                   "else the vehicle file's own params, else each rotor's catalogue propeller's calibrated set, else "
+                   "'generic'.")
 @click.option("--out", type=PathArg(file=True), required=True, help="CSV to write.")
 @click.option("--json", "as_json", is_flag=True, help="Print the error table as JSON.")
 @click.option("--motor-map", "motor_map", default=None, metavar="A,B", help=MOTOR_MAP_HELP)
@@ -464,15 +483,19 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     bands = speed_band_errors(w.force, samples, tuple((3.0 * k, 3.0 * k + 3.0) for k in range(int(top // 3) + 1)))
     refs, masses = reference_errors(samples, veh.mass)
     rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
+    in_fit = _fitted_to(set(sets), log.name)
     if as_json:
         import json
 
         click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "speed_bands": bands,
-                               "samples": samples.n, "left_out": log.n - samples.n}, indent=2))
+                               "samples": samples.n, "left_out": log.n - samples.n, "in_fit": in_fit}, indent=2))
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
                    f"ground), params {label}, rho {air.rho:g} kg/m^3")
+        if in_fit:
+            click.echo(f"{log.name} is one of the logs the parameter set was fitted to (its [coverage] groups): "
+                       "these errors are in-sample, not a prediction")
         click.echo(_table(rows))
         click.echo(f"propmap's {band_line(bands)}")
         if samples.reference_force is not None:

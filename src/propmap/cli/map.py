@@ -177,8 +177,9 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
     veh = None
     if c_header.vehicle is not None:
-        from ._vehicle import _fitted_vehicle
+        from ._vehicle import _default_spec, _fitted_vehicle
 
+        params_spec = _default_spec(c_header.vehicle, params_spec)  # (the vehicle's own set, without --params)
         veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
 
     import numpy as np

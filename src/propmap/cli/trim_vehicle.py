@@ -36,7 +36,8 @@ def _speeds(text: str) -> list:
               help="Vertical part of the speed [m/s], up positive, |climb rate| <= each airspeed.")
 @click.option("--params", "params_spec", default=None,
               help="Parameter set (a file, e.g. from fit flight, or a named set); default: the vehicle's rotor sets, "
-                   "else each rotor's catalogue propeller's calibrated set, else 'generic'.")
+                   "else the vehicle file's own params, else each rotor's catalogue propeller's calibrated set, else "
+                   "'generic'.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @with_air_options
 def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, air_choice):

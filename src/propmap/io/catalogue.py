@@ -37,8 +37,9 @@ def _data_path(rel: str) -> Path:
 def example_files() -> tuple[str, ...]:
     """The names of the example files bundled with propmap (``data/examples``): the example
     vehicles (``quadrotor.toml``; ``neurobem_quadrotor.toml``, the NeuroBEM quadrotor of Bauersfeld
-    et al., RSS 2021, with its lumped blade ``neurobem_5.1x4.8_geom.txt``) and synthetic
-    level-flight data (``level_flight_synthetic.csv``); their sources in data/CITATION.md.
+    et al., RSS 2021, with its lumped blade ``neurobem_5.1x4.8_geom.txt`` and its own parameter set
+    ``neurobem_quadrotor.params.toml``, fitted to its flight logs) and synthetic level-flight data
+    (``level_flight_synthetic.csv``); their sources in data/CITATION.md.
 
     Returns
     -------

@@ -5,11 +5,12 @@ and io only.
 """
 
 from ._kinematics import hub_velocities
-from .file import VehicleFileError, read_vehicle
+from .file import VehicleFileError, read_vehicle, vehicle_params_file
 from .layout import Rotor, Vehicle, rotor_geometry
 from .mapped import VehicleMap, VehicleMapWrench
 from .model import VehicleWrench, hover_omega, vehicle_wrench
 from .trim import VehicleTrim, trim_vehicle
 
 __all__ = ["Rotor", "Vehicle", "VehicleMap", "VehicleMapWrench", "VehicleTrim", "VehicleWrench", "VehicleFileError",
-           "hover_omega", "hub_velocities", "read_vehicle", "rotor_geometry", "trim_vehicle", "vehicle_wrench"]
+           "hover_omega", "hub_velocities", "read_vehicle", "rotor_geometry", "trim_vehicle", "vehicle_params_file",
+           "vehicle_wrench"]

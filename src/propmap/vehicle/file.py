@@ -13,6 +13,9 @@ Format (body frame: x forward, y left, z up; SI units)::
                                          # motor speeds to the rotors' (flight logs only)
     rotor_interference = 1.0             # optional, in [0, 3]: factor on the inflow each rotor's
                                          # wake induces at the others (core/interference.py; default 0)
+    params = "my_fit.toml"               # optional: the vehicle's own parameter set (a file, relative
+                                         # to the vehicle file, e.g. a `fit flight` output, or a named
+                                         # set): what the vehicle commands take without --params (below)
 
     [body]                # optional airframe drag (core/body.py)
     drag_area = [0.004, 0.004, 0.008]   # (C_D A) along body x, y, z [m^2], each in [0, 10]
@@ -42,6 +45,15 @@ directory), an absolute path as it is; if no file (or folder) of that name exist
 the value must be a catalogue name (a named parameter set). A geometry file is read with
 :func:`propmap.io.geometry_files.read_geometry` (a UIUC file takes its diameter from a
 ``<family>_<D>x<P>`` name unless ``diameter_m`` is given).
+
+The top-level ``params`` is the vehicle's calibration, as a catalogue propeller's calibrated set is
+the propeller's: the commands that model the vehicle (``wrench``, ``trim-vehicle``, ``export-sim
+--vehicle``, ``map --format c --vehicle``) take it where ``--params`` is not given, its section set
+for every rotor without a ``params`` of its own and, where it is a flight fit's file, its ``[body]``
+table (airframe drag, centre of mass, wake interference) in place of the vehicle file's, as they
+take a ``--params`` file. The fits (``fit flight``, ``fit level-flight``) fit their own set from
+``--base`` and do not use it. :func:`read_vehicle` checks it (a readable parameter file or a named
+set) but does not apply it: from Python, pass it to the model (:func:`vehicle_params_file`).
 """
 
 from __future__ import annotations
@@ -62,7 +74,7 @@ from ..io.inputs import as_path, short_path, show_path
 from ..io.toml_file import load_toml
 from .layout import Rotor, Vehicle
 
-__all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
+__all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs", "vehicle_params_file"]
 
 #: valid ranges (low, high, low open) of the vehicle's numbers
 MASS_RANGE = (0.0, 1e4, True)  # [kg]
@@ -78,7 +90,7 @@ TEXT_KEYS = ("name", "comment", "source")
 MOTOR_TAU_RANGE = (0.0, 1.0, False)  # [s]
 INTERFERENCE_RANGE = (0.0, 3.0, False)  # [-]
 VEHICLE_KEYS = ("mass", "gravity", "body_area", "inertia", "centre_of_mass", "motor_time_constant",
-                "rotor_interference", "body", "rotors", *TEXT_KEYS)
+                "rotor_interference", "params", "body", "rotors", *TEXT_KEYS)
 BODY_KEYS = ("drag_area", "wash_factor", *TEXT_KEYS)
 ROTOR_KEYS = ("position", "axis", "spin", "propeller", "blades", "diameter_m", "params", "inertia", *TEXT_KEYS)
 
@@ -176,7 +188,8 @@ def _local_file(spec: str, folder: Path) -> Path | None:
 
 
 def _rotor_params(spec, folder: Path, where: str):
-    """A rotor's own parameter set: a file relative to ``folder`` (or absolute), else a named set."""
+    """A rotor's (or the vehicle's) own parameter set: a file relative to ``folder`` (or absolute),
+    else a named set."""
     from ..io.param_sets import resolve_params
     from ..io.params_file import ParamsFileError, read_params
 
@@ -188,7 +201,22 @@ def _rotor_params(spec, folder: Path, where: str):
         return read_params(local) if local is not None else resolve_params(spec)
     except (ParamsFileError, KeyError, ValueError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+        if local is None:  # (a file not found: where it was looked for, as a propeller's message says it)
+            msg += f" ({short_path(folder / spec, 300)}: a relative path is taken from the vehicle file's folder)"
         raise VehicleFileError(f"{where}: params: {msg}") from None
+
+
+def _own_params(spec, folder: Path, name: str, has_body: bool) -> None:
+    """Check the vehicle's own parameter set (its top-level ``params``): readable, and not a file
+    with a ``[body]`` table beside the vehicle file's own ``[body]`` (one would replace the other)."""
+    from ..io.params_file import read_body
+
+    _rotor_params(spec, folder, name)
+    local = _local_file(spec, folder)
+    if has_body and local is not None and read_body(local) is not None:
+        raise VehicleFileError(f"{name}: [body] and params: {short_path(spec, quote=True)} has a [body] table of its "
+                               "own (a flight fit's airframe), which the vehicle commands would take in place of the "
+                               "file's: give one of them")
 
 
 def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
@@ -230,10 +258,14 @@ def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
                            f"path is taken from the vehicle file's folder) nor a catalogue name{hint}")
 
 
+#: how a bundled example parameter file's name ends (an example vehicle's own set), which is not a vehicle
+EXAMPLE_PARAMS_SUFFIX = ".params.toml"
+
+
 def _example_vehicles() -> tuple[str, ...]:
     from ..io.catalogue import example_files
 
-    return tuple(n for n in example_files() if n.endswith(".toml"))
+    return tuple(n for n in example_files() if n.endswith(".toml") and not n.endswith(EXAMPLE_PARAMS_SUFFIX))
 
 
 def _bare(path) -> bool:
@@ -271,7 +303,7 @@ def vehicle_path(path) -> Path:
             found = example_file(given.name)
         except ValueError:
             return given
-        if found.suffix == ".toml":
+        if found.name in _example_vehicles():  # (not an example vehicle's parameter file)
             return found
     return given
 
@@ -300,8 +332,9 @@ def read_vehicle(path) -> Vehicle:
         gravity, body area, inertia, drag area, position, blade count, diameter or rotor
         inertia out of range, an inertia that is not symmetric positive definite, an axis
         of zero, non-finite or overflowing length, a bad spin, a propeller that is neither a
-        readable geometry file nor a catalogue name, or a rotor ``params`` that is neither a
-        readable parameter file nor a named set, or every rotor axis pointing down (z < 0 in
+        readable geometry file nor a catalogue name, or a ``params`` (the vehicle's or a rotor's)
+        that is neither a readable parameter file nor a named set, a ``[body]`` table beside a
+        ``params`` file that has one, or every rotor axis pointing down (z < 0 in
         the body frame x forward, y left, z up: a z-down frame's axes); the message names the
         file, the rotor and the key.
 
@@ -333,6 +366,8 @@ def read_vehicle(path) -> Vehicle:
                                f"m, got {short_repr(data['centre_of_mass'])}")
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
+    if "params" in data:  # (checked, not applied: the vehicle commands' default of --params, module docstring)
+        _own_params(data["params"], path.parent, name, "body" in data)
     rotors, props = [], {}
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -531,3 +566,37 @@ def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
         local = _local_file(spec, path.parent)
         out.append(spec if local is None else str(local))
     return tuple(out)
+
+
+def vehicle_params_file(path) -> str | None:
+    """The vehicle file's own parameter set (its top-level ``params``, module docstring), as the
+    vehicle commands take it where ``--params`` is not given.
+
+    Parameters
+    ----------
+    path : str or Path
+        A vehicle file, or a bundled example vehicle's name (:func:`vehicle_path`); read it with
+        :func:`read_vehicle` for the full check.
+
+    Returns
+    -------
+    str or None
+        The parameter file's path (relative to the vehicle's folder, where it exists there) or
+        the named set; None where the vehicle names none.
+
+    Raises
+    ------
+    VehicleFileError
+        The file cannot be read as TOML.
+
+    Examples
+    --------
+    >>> import propmap as pm
+    >>> params = pm.read_params(pm.vehicle_params_file("neurobem_quadrotor"))   # its flight fit's set
+    """
+    path = vehicle_path(path)
+    spec = load_toml(path, VehicleFileError).get("params")
+    if not isinstance(spec, str) or not spec.strip():
+        return None
+    local = _local_file(spec, path.parent)
+    return spec if local is None else str(local)
