@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 import propmap as pm
-from propmap.io.params_file import read_body
+from propmap.io.params_file import read_body, read_coverage
 from propmap.vehicle import VehicleFileError
 
 from .cli_helpers import one_line_error, run
@@ -91,12 +91,41 @@ def test_wrench_takes_the_vehicles_set_and_its_airframe_and_says_a_training_log_
         f"propmap ({d['params']})"]["F"]
 
 
-def test_a_set_fitted_without_the_log_says_nothing_of_in_sample(tmp_path, capsys, shared_data):
+def test_a_log_is_told_in_sample_by_its_content_where_the_set_has_digests(tmp_path, capsys, shared_data):
+    """A flight fit's [coverage] lists its training logs' digests (files_sha256, since 2026-11-30):
+    a log of a training log's name but other content (PX4 names its logs HH_MM_SS.ulg, day after
+    day) is no training log, and a renamed copy of one is; a file without digests is read by name."""
+    slow = shared_data / "neurobem_flights" / SLOW
+    digest = read_coverage(EXAMPLES / OWN)["files_sha256"]
+    assert len(digest) == 4
+
+    def said(log, fit):
+        code, out, err = run(capsys, "wrench", log, "--vehicle", "neurobem_quadrotor", "--params", fit, "--out",
+                             tmp_path / "w.csv")
+        assert code == 0, err
+        return [ln for ln in out.splitlines() if "in-sample" in ln]
+
     fit = tmp_path / "p.toml"
-    pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [SLOW], "held_out": [SLOW]})
-    code, out, _ = run(capsys, "wrench", shared_data / "neurobem_flights" / SLOW, "--vehicle", "neurobem_quadrotor",
-                       "--params", fit, "--out", tmp_path / "w.csv")
-    assert code == 0 and "in-sample" not in out
+    for held, want in ((False, ["by its content"]), (True, [])):
+        pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [] if held else [SLOW],
+                                                            "held_out": [SLOW] if held else [],
+                                                            "files_sha256": digest[2:3] if not held else digest[:2]})
+        got = said(slow, fit)
+        assert len(got) == len(want) and all(w in g for w, g in zip(want, got))
+    # the same content under another name: in-sample; another log under a training log's name: not
+    pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [SLOW],
+                                                        "files_sha256": digest})
+    shutil.copy(slow, tmp_path / "renamed.mat")
+    assert said(tmp_path / "renamed.mat", fit)
+    shutil.copy(shared_data / "neurobem_flights" / LOGS[0], tmp_path / SLOW)
+    pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [SLOW],
+                                                        "files_sha256": [digest[2]]})
+    assert not said(tmp_path / SLOW, fit)
+    # without digests, by name (a file written before 2026-11-30); held out: never
+    pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [SLOW]})
+    assert "by its name" in said(tmp_path / SLOW, fit)[0]
+    pm.write_params(fit, pm.generic_params(), coverage={"data": "flight logs", "groups": [], "held_out": [SLOW]})
+    assert not said(slow, fit)
 
 
 def test_a_rotors_own_set_is_kept_beside_the_vehicles(tmp_path, capsys):
@@ -164,3 +193,4 @@ def test_the_shipped_set_is_what_its_command_fits(tmp_path, capsys, shared_data)
     fresh_body, shipped_body = read_body(tmp_path / "p.toml").drag, read_body(EXAMPLES / OWN).drag
     assert fresh_body.drag_area == pytest.approx(shipped_body.drag_area, rel=1e-6)
     assert fresh_body.wash_factor == pytest.approx(shipped_body.wash_factor, rel=1e-6)
+    assert read_coverage(tmp_path / "p.toml")["files_sha256"] == read_coverage(EXAMPLES / OWN)["files_sha256"]

@@ -234,8 +234,13 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if ht and "unavailable" in ht:
         res = replace(res, warnings=res.warnings + ("the hover torque check is unavailable: the generic reference set "
                                                     "cannot make the fitted set's hover thrust",))
+    from ._sources import file_digests
+
+    # (the training logs' digests: wrench tells one of them by its content, not by a name that PX4's HH_MM_SS.ulg
+    # repeats from day to day)
     coverage = {**_flight_coverage([lg for lg in logs if lg.name not in held], veh, res.air), "data": "flight logs",
-                "groups": [n for n in names if n not in held], "held_out": sorted(held)}
+                "groups": [n for n in names if n not in held], "held_out": sorted(held),
+                "files_sha256": file_digests([p for p, n in zip(log_paths, names) if n not in held])}
     res = replace(res, warnings=res.warnings + tuple(_held_beyond(logs, held, coverage, veh, res.air)))
     _write_outputs(res, out, base_label, as_json, "\n".join(text),
                    figure=_figures(samples, names, held, pred, baselines, veh, res.params, air, vehicle),
@@ -400,22 +405,27 @@ def _hover_loads(params, veh, samples, air):
     return {"thrust": T, "drag": np.zeros(samples.n), "torque": Q}
 
 
-def _fitted_to(sets, log_name: str) -> bool:
-    """Whether the one parameter file in ``sets`` (the rotors' set labels) was fitted to a log of
-    the name ``log_name``: a flight fit's ``[coverage]`` lists its logs by name in ``groups``,
-    its held-out ones in ``held_out`` too (a name, not the content: fit flight records no digest)."""
+def _fitted_to(sets, log_path, log_name: str) -> str:
+    """How the one parameter file in ``sets`` (the rotors' set labels) was fitted to the log at
+    ``log_path``: "by its content" where a flight fit's ``[coverage]`` lists the log's digest among
+    its training logs' (``files_sha256``, since 2026-11-30), "by its name" where a file without
+    digests lists ``log_name`` among them (``groups``: the held-out ones are not there), else ""."""
     import os
 
+    from ..io.atomic import file_sha256
     from ..io.params_file import ParamsFileError, read_coverage
 
     if len(sets) != 1 or not os.path.isfile(label := next(iter(sets))):
-        return False
+        return ""
     try:
         cov = read_coverage(label) or {}
     except ParamsFileError:
-        return False
-    return (cov.get("data") == "flight logs" and log_name in cov.get("groups", ())
-            and log_name not in cov.get("held_out", ()))
+        return ""
+    if cov.get("data") != "flight logs":
+        return ""
+    if cov.get("files_sha256"):
+        return "by its content" if file_sha256(Path(log_path)) in cov["files_sha256"] else ""
+    return "by its name" if log_name in cov.get("groups", ()) and log_name not in cov.get("held_out", ()) else ""
 
 
 @click.command("wrench", cls=Command)
@@ -483,18 +493,19 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     bands = speed_band_errors(w.force, samples, tuple((3.0 * k, 3.0 * k + 3.0) for k in range(int(top // 3) + 1)))
     refs, masses = reference_errors(samples, veh.mass)
     rows = [(f"propmap ({label})", err)] + _reference_rows(refs, veh.mass, "log's own prediction")
-    in_fit = _fitted_to(set(sets), log.name)
+    in_fit = _fitted_to(set(sets), log_path, log.name)
     if as_json:
         import json
 
         click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "speed_bands": bands,
-                               "samples": samples.n, "left_out": log.n - samples.n, "in_fit": in_fit}, indent=2))
+                               "samples": samples.n, "left_out": log.n - samples.n, "in_fit": bool(in_fit)},
+                              indent=2))
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
                    f"ground), params {label}, rho {air.rho:g} kg/m^3")
         if in_fit:
-            click.echo(f"{log.name} is one of the logs the parameter set was fitted to (its [coverage] groups): "
+            click.echo(f"{log.name} is one of the logs the parameter set was fitted to ({in_fit}, its [coverage]): "
                        "these errors are in-sample, not a prediction")
         click.echo(_table(rows))
         click.echo(f"propmap's {band_line(bands)}")

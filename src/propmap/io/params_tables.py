@@ -29,7 +29,8 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
 COVERAGE_OPEN_LOW = ("diameter_m", "re75_min", "re75_max")
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
 #: saw and held out, so that `propmap validate` can say which of its rows are in-sample; each data file's SHA-256
-#: (files_sha256, since 2026-11-26), so that it can say so for a part of them too
+#: (files_sha256, since 2026-11-26; a flight fit's training logs' since 2026-11-30, which `wrench` reads), so that
+#: it can say so for a part of them too
 COVERAGE_TEXT_KEYS = ("data", "data_sha256", "groups", "held_out", "propeller", "files_sha256")
 #: the [coverage] text keys that hold one text (the others a list of texts)
 COVERAGE_SINGLE_TEXTS = ("data", "data_sha256", "propeller")
