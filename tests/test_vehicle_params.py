@@ -10,10 +10,12 @@ import math
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import propmap as pm
-from propmap.io.params_file import read_body, read_coverage
+from propmap.core.body import BodyDrag
+from propmap.io.params_file import BodyTable, read_body, read_coverage
 from propmap.vehicle import VehicleFileError
 
 from .cli_helpers import one_line_error, run
@@ -129,13 +131,25 @@ def test_a_log_is_told_in_sample_by_its_content_where_the_set_has_digests(tmp_pa
 
 
 def test_a_rotors_own_set_is_kept_beside_the_vehicles(tmp_path, capsys):
+    """Rotor 1 names the generic set, the others take the vehicle's: the trim is the function's of
+    that vehicle (read_vehicle_with_params: the vehicle's airframe and set) at the vehicle set's air
+    (a review found the generic set's 1.225 kg/m^3 there, and a test that checked the labels only)."""
     text = (EXAMPLES / "neurobem_quadrotor.toml").read_text()
     geom = 'propeller = "neurobem_5.1x4.8_geom.txt"'
     path = _copy(tmp_path, text.replace(geom, geom + '\nparams = "generic"', 1))
-    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--json")
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--json", "--airspeed", "0,8")
     assert code == 0, err
-    sets = json.loads(out)["rotor_params"]
-    assert sets[0] == "generic" and all(s.endswith(OWN) for s in sets[1:])
+    d = json.loads(out)
+    assert d["rotor_params"][0] == "generic" and all(s.endswith(OWN) for s in d["rotor_params"][1:])
+    veh, own = pm.read_vehicle_with_params(path)
+    assert veh.rotors[0].params is not None and all(r.params is None for r in veh.rotors[1:])
+    assert d["rho_kg_m3"] == own.air.rho == 1.204
+    for row, speed in zip(d["trims"], (0.0, 8.0)):
+        with pytest.warns(UserWarning, match=r"rotor 1 has its own parameter set in other air \(rho 1.225"):
+            want = pm.trim_vehicle(veh, own, speed)
+        assert row["rotor_rpm"] == pytest.approx(list(want.rotor_omega * 30 / math.pi), rel=1e-9)
+        assert row["pitch_deg"] == pytest.approx(math.degrees(want.pitch), abs=1e-9)
+    assert d["trims"][0]["rotor_rpm"][0] != pytest.approx(d["trims"][0]["rotor_rpm"][2], rel=1e-3)
 
 
 def test_the_vehicle_file_checks_its_own_set(tmp_path):
@@ -146,12 +160,26 @@ def test_the_vehicle_file_checks_its_own_set(tmp_path):
         pm.read_vehicle(_copy(tmp_path, params=False))
     with pytest.raises(VehicleFileError, match="params must be a parameter file or a named set"):
         pm.read_vehicle(_copy(tmp_path, text.replace(LINE, "params = 3\n")))
-    # a named set is taken
+    # a named set is taken; one that does not exist is no file looked for
     assert pm.read_vehicle(_copy(tmp_path, text.replace(LINE, 'params = "generic"\n'))).mass == 0.772
+    with pytest.raises(VehicleFileError, match="calibrated:nosuch") as info:
+        pm.read_vehicle(_copy(tmp_path, text.replace(LINE, 'params = "calibrated:nosuch"\n')))
+    assert "relative path" not in str(info.value)
     # beside the file's own [body]: the set's [body] table would replace it without a word
-    with pytest.raises(VehicleFileError, match=r"\[body\] and params: 'neurobem_quadrotor.params.toml' has a "
-                                               r"\[body\] table of its own"):
+    with pytest.raises(VehicleFileError, match=r": \[body\] and params: 'neurobem_quadrotor.params.toml''s \[body\] "
+                                               r"table gives it too"):
         pm.read_vehicle(_copy(tmp_path, text + "\n[body]\ndrag_area = [0.01, 0.01, 0.02]\n"))
+    # so for a centre of mass or a rotor interference the set's table gives (a review: replaced without a word)
+    fit = tmp_path / "fit.toml"
+    pm.write_params(fit, pm.generic_params(), body=BodyTable(BodyDrag((0.02, 0.02, 0.0), 1.0), np.zeros(3), 0.0))
+    mine = text.replace(LINE, 'params = "fit.toml"\nrotor_interference = 2.0\ncentre_of_mass = [-0.02, 0.0, 0.0]\n')
+    with pytest.raises(VehicleFileError, match=r": centre_of_mass, rotor_interference and params: 'fit.toml''s "
+                                               r"\[body\] table gives them too"):
+        pm.read_vehicle(_copy(tmp_path, mine))
+    pm.write_params(fit, pm.generic_params(), body=BodyTable(BodyDrag((0.02, 0.02, 0.0), 1.0), None, None))
+    veh, _ = pm.read_vehicle_with_params(_copy(tmp_path, mine))  # (the table without them: the file's stay)
+    assert veh.rotor_interference == 2.0 and list(veh.centre_of_mass) == [-0.02, 0.0, 0.0]
+    assert veh.body_drag.drag_area == (0.02, 0.02, 0.0)
 
 
 def test_the_vehicles_set_is_an_input_no_output_may_overwrite(tmp_path, capsys, shared_data):
@@ -194,3 +222,35 @@ def test_the_shipped_set_is_what_its_command_fits(tmp_path, capsys, shared_data)
     assert fresh_body.drag_area == pytest.approx(shipped_body.drag_area, rel=1e-6)
     assert fresh_body.wash_factor == pytest.approx(shipped_body.wash_factor, rel=1e-6)
     assert read_coverage(tmp_path / "p.toml")["files_sha256"] == read_coverage(EXAMPLES / OWN)["files_sha256"]
+
+
+def test_export_sim_takes_the_vehicles_set_for_its_own_propeller_only(tmp_path, capsys):
+    """export-sim PROP --vehicle: the vehicle's own set is its rotors', so it is --params' default
+    where PROP is their propeller, and PROP's own default otherwise (a review found apce_8x6
+    exported with the NeuroBEM rotors' flight fit, and its warning of a set fitted to another
+    propeller)."""
+    own = ["export-sim", EXAMPLES / "neurobem_5.1x4.8_geom.txt", "--blades", "3", "--target", "rotorpy",
+           "--vehicle", "neurobem_quadrotor", "--json"]
+    code, out, err = run(capsys, *own, "--out", tmp_path / "a.py")
+    assert code == 0, err
+    d = json.loads(out)
+    assert d["params"].endswith(OWN) and d["envelope"]["hover_rpm"] == pytest.approx(10651.57, abs=0.01)
+    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", "neurobem_quadrotor",
+                         "--hover-rpm", "6000", "--json", "--out", tmp_path / "b.py")
+    assert code == 0, err
+    assert json.loads(out)["params"] == "calibrated:apce_8x6" and "fitted to data of neurobem" not in err
+
+
+def test_the_c_vehicle_export_takes_the_vehicles_set_and_airframe(tmp_path, capsys):
+    grid = ["--rpm", "8000:20000:3", "--airspeed", "0:10:3", "--incidence-deg", "0:180:5", "--check-points", "0"]
+    base = ["map", EXAMPLES / "neurobem_5.1x4.8_geom.txt", "--blades", "3", "--format", "c", "--vehicle",
+            "neurobem_quadrotor", *grid]
+    cd = {}
+    for name, extra in (("own", []), ("generic", ["--params", "generic"])):
+        code, _, err = run(capsys, *base, *extra, "--out", tmp_path / f"{name}.h")
+        assert code == 0, err
+        line = next(r for r in (tmp_path / f"{name}.h").read_text().splitlines() if "_body_cd[3]" in r)
+        cd[name] = [float(x) for x in line.split("{")[1].split("}")[0].split(",")]
+    # the fit's drag area along x times rho / 2 at the set's air (1.204 kg/m^3); none without the set
+    assert cd["own"][0] == pytest.approx(0.5 * 1.204 * 0.020243491948124387, rel=1e-9) and cd["generic"][0] == 0.0
+    assert OWN in (tmp_path / "own.h").read_text() and OWN not in (tmp_path / "generic.h").read_text()

@@ -68,7 +68,8 @@ def vehicle_inputs(vehicle) -> list:
     are files, as the vehicle reader resolves them, :func:`propmap.vehicle.file.rotor_file_specs`):
     inputs of any command given the vehicle, never to be written over. Best effort: the vehicle
     reader reports a malformed file; None or an unreadable file gives []."""
-    from ..vehicle.file import VehicleFileError, rotor_file_specs, vehicle_params_file
+    from ..vehicle.file import VehicleFileError, rotor_file_specs
+    from ..vehicle.own_set import vehicle_params_file
 
     if vehicle is None:
         return []

@@ -37,7 +37,8 @@ def _check_rotor_sets(veh, labels) -> None:
 def _default_spec(path, params_spec):
     """``params_spec``, or where it is None the vehicle file's own parameter set (its top-level
     ``params``: vehicle.file), the default of --params in the commands that model the vehicle."""
-    from ..vehicle.file import VehicleFileError, vehicle_params_file
+    from ..vehicle.file import VehicleFileError
+    from ..vehicle.own_set import vehicle_params_file
 
     if params_spec is not None:
         return params_spec
@@ -47,19 +48,28 @@ def _default_spec(path, params_spec):
         raise InputError(f"--vehicle: {exc}") from None
 
 
-def _fitted_vehicle(path: Path, params_spec):
-    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` (None: the vehicle
-    file's own ``params``) is a parameter file with the ``[body]`` table a flight fit writes (the
-    airframe drag, the centre of mass, the rotors' wake interference), the vehicle with those in
-    place of the file's, and whether it had one (what `wrench`, `export-sim --vehicle` and the C
-    vehicle export all model)."""
-    from dataclasses import replace
+def _own_spec_for(path, propeller):
+    """The vehicle file's own parameter set where ``propeller`` (export-sim's PROP) is every rotor's
+    geometry, else None: export-sim's default of --params with --vehicle (the vehicle's set is its
+    rotors', not another propeller's; a review found apce_8x6 exported with the NeuroBEM rotors' fit)."""
+    spec = _default_spec(path, None)
+    if spec is None or not all(r.propeller.same_geometry(propeller) for r in _vehicle(path).rotors):
+        return None
+    return spec
 
-    from ..identify.flight import shift_centre_of_mass
+
+def _fitted_vehicle(path: Path, params_spec, own: bool = True):
+    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` (None, with ``own``:
+    the vehicle file's own ``params``) is a parameter file with the ``[body]`` table a flight fit
+    writes (the airframe drag, the centre of mass, the rotors' wake interference), the vehicle with
+    those in place of the file's, and whether it had one (what `wrench`, `export-sim --vehicle` and
+    the C vehicle export all model)."""
     from ..io.params_file import ParamsFileError, read_body
+    from ..vehicle.own_set import with_body_table
 
     veh = _vehicle(path)
-    params_spec = _default_spec(path, params_spec)
+    if own:
+        params_spec = _default_spec(path, params_spec)
     if params_spec is None or not Path(params_spec).is_file():
         return veh, False
     try:
@@ -68,12 +78,7 @@ def _fitted_vehicle(path: Path, params_spec):
         raise InputError(f"--params: {exc}") from None
     if table is None:
         return veh, False
-    veh = replace(veh, body_drag=table.drag)
-    if table.centre_of_mass is not None:
-        veh = shift_centre_of_mass(veh, table.centre_of_mass)
-    if table.rotor_interference is not None:
-        veh = replace(veh, rotor_interference=table.rotor_interference)
-    return veh, True
+    return with_body_table(veh, table), True
 
 
 def _vehicle_sets(veh, vehicle, params_spec, air_choice):
@@ -91,7 +96,7 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
     from ..io.inputs import show_path
     from ..vehicle.file import rotor_file_specs
 
-    own = ()
+    own, mine_set = (), None
     if params_spec is None:
         # (a rotor without a set of its own took the generic set where `loads`, `map` and `export-sim`
         # take its catalogue propeller's calibrated one: the example quadrotor's apce_8x6 rotors hovered
@@ -102,14 +107,16 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
                     default_params(n).label if n in catalogue() else None
                     for o, n in zip(rotor_file_specs(vehicle), names))
         own = tuple(None if o == "generic" else o for o in own)
+        mine_set = load_params(mine, option="--vehicle (its params)")[0] if mine is not None else None
     spec = params_spec if params_spec is not None else (
         own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
     if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set, or the vehicle's)
-        mine_set = load_params(mine, option="--vehicle (its params)")[0] if mine is not None else None
         veh = replace(veh, rotors=[r if r.params is not None or o is None else
                                    replace(r, params=mine_set if mine_set is not None else default_params(n))
                                    for r, o, n in zip(veh.rotors, own, names)])
     params, air, label = load_params("generic" if spec is None else spec, option="--params")
+    if spec is None and mine_set is not None:  # (mixed: the vehicle's own set, fitted at its air, gives the air)
+        air = mine_set.air
     sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
     if len(set(sets)) > 1:
         label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))

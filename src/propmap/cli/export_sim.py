@@ -80,7 +80,8 @@ def parse_envelope(text: str | None, propeller):
               help="Vehicle TOML: its hover rpm pins the fit; with --target rotorpy a whole quad_params is written.")
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")
-@click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--params", "params_spec", default=None,
+              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the vehicle file's own params.")
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
@@ -100,10 +101,10 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     check_outputs([("--out", out), ("--out (report)", report_path(out))],
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
-    if vehicle is not None:  # (the vehicle file's own set, its top-level params, where --params is not given)
-        from ._vehicle import _default_spec
+    if vehicle is not None and params_spec is None:  # (the vehicle file's own set, where PROP is its rotors')
+        from ._vehicle import _own_spec_for
 
-        params_spec = _default_spec(vehicle, params_spec)
+        params_spec = _own_spec_for(vehicle, propeller)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
@@ -204,7 +205,8 @@ def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, ta
     from ._vehicle import _fitted_vehicle
 
     hover_from, airframe = "--hover-rpm", ""
-    veh, fitted = _fitted_vehicle(vehicle, params_spec)  # a flight fit's [body] table: its airframe drag (c_D)
+    # a flight fit's [body] table: its airframe drag (c_D); the vehicle's own set was resolved by the caller
+    veh, fitted = _fitted_vehicle(vehicle, params_spec, own=False)
     if fitted:
         airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
     if target == "rotorpy":

@@ -123,7 +123,8 @@ with_plot_options = option_group("plot", PlotChoice, plot_options)
 @click.command("map", cls=Command)
 @click.argument("prop", required=False)
 @with_axis_options
-@click.option("--params", "params_spec", default=None, help=PARAMS_HELP)
+@click.option("--params", "params_spec", default=None,
+              help=PARAMS_HELP + " With --vehicle: the vehicle file's own params, where it names them.")
 @click.option("--collective-deg", type=float, default=None,
               help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
                    "(the sum within [-30, 30]); stored with the map's parameters.")

@@ -43,6 +43,7 @@ from ..core.airfoil import Air, CamberedParams, SectionParams
 from ..core.body import BodyDrag
 from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
+from ..vehicle.layout import shift_centre_of_mass  # (this module's name since before it moved to the vehicle)
 from .continuation import _fit_with_continuation
 from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
@@ -134,26 +135,6 @@ def predict_flight(samples: FlightSamples, vehicle: Vehicle, params: SectionPara
     return vehicle_wrench(vehicle, params, samples.velocity, samples.angular_velocity, samples.rotor_omega,
                           rotor_acceleration=samples.rotor_acceleration, body_drag=body, air=air,
                           discretization=discretization, derivatives=derivatives)
-
-
-def shift_centre_of_mass(vehicle: Vehicle, cg) -> Vehicle:
-    """The vehicle with its centre of mass moved.
-
-    Parameters
-    ----------
-    vehicle : Vehicle
-    cg : array_like, shape (3,) or (2,)
-        The centre of mass from the origin of the vehicle file's rotor positions, body axes
-        [m]; with two values its z stays the vehicle's.
-
-    Returns
-    -------
-    Vehicle
-        A copy; every rotor's arm (``position - centre_of_mass``) moves with it.
-    """
-    c = np.array(vehicle.centre_of_mass, float)
-    c[: len(cg)] = cg
-    return replace(vehicle, centre_of_mass=c)
 
 
 def fitted_centre_of_mass(result: FitResult) -> np.ndarray:

@@ -47,13 +47,15 @@ the value must be a catalogue name (a named parameter set). A geometry file is r
 ``<family>_<D>x<P>`` name unless ``diameter_m`` is given).
 
 The top-level ``params`` is the vehicle's calibration, as a catalogue propeller's calibrated set is
-the propeller's: the commands that model the vehicle (``wrench``, ``trim-vehicle``, ``export-sim
---vehicle``, ``map --format c --vehicle``) take it where ``--params`` is not given, its section set
-for every rotor without a ``params`` of its own and, where it is a flight fit's file, its ``[body]``
-table (airframe drag, centre of mass, wake interference) in place of the vehicle file's, as they
-take a ``--params`` file. The fits (``fit flight``, ``fit level-flight``) fit their own set from
+the propeller's: the commands that model the vehicle (``wrench``, ``trim-vehicle``, ``map --format
+c --vehicle``, and ``export-sim --vehicle`` where its PROP is the rotors' propeller) take it where
+``--params`` is not given, its section set for every rotor without a ``params`` of its own and,
+where it is a flight fit's file, its ``[body]`` table (airframe drag, centre of mass, wake
+interference) in place of the vehicle file's, as they take a ``--params`` file (a vehicle file
+that gives what that table gives too is refused). The fits (``fit flight``, ``fit level-flight``) fit their own set from
 ``--base`` and do not use it. :func:`read_vehicle` checks it (a readable parameter file or a named
-set) but does not apply it: from Python, pass it to the model (:func:`vehicle_params_file`).
+set) but does not apply it; :func:`propmap.vehicle.own_set.read_vehicle_with_params` applies it as
+the commands do.
 """
 
 from __future__ import annotations
@@ -74,7 +76,7 @@ from ..io.inputs import as_path, short_path, show_path
 from ..io.toml_file import load_toml
 from .layout import Rotor, Vehicle
 
-__all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs", "vehicle_params_file"]
+__all__ = ["VehicleFileError", "read_vehicle", "rotor_file_specs"]
 
 #: valid ranges (low, high, low open) of the vehicle's numbers
 MASS_RANGE = (0.0, 1e4, True)  # [kg]
@@ -201,22 +203,29 @@ def _rotor_params(spec, folder: Path, where: str):
         return read_params(local) if local is not None else resolve_params(spec)
     except (ParamsFileError, KeyError, ValueError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
-        if local is None:  # (a file not found: where it was looked for, as a propeller's message says it)
+        if local is None and ":" not in spec:  # (a file not found, not a named set: where it was looked for)
             msg += f" ({short_path(folder / spec, 300)}: a relative path is taken from the vehicle file's folder)"
         raise VehicleFileError(f"{where}: params: {msg}") from None
 
 
-def _own_params(spec, folder: Path, name: str, has_body: bool) -> None:
+def _own_params(spec, folder: Path, name: str, data: dict) -> None:
     """Check the vehicle's own parameter set (its top-level ``params``): readable, and not a file
-    with a ``[body]`` table beside the vehicle file's own ``[body]`` (one would replace the other)."""
+    whose ``[body]`` table gives what the vehicle file ``data`` gives too (the airframe's drag, a
+    centre of mass, the rotor interference: the set's would replace the file's without a word)."""
     from ..io.params_file import read_body
 
     _rotor_params(spec, folder, name)
     local = _local_file(spec, folder)
-    if has_body and local is not None and read_body(local) is not None:
-        raise VehicleFileError(f"{name}: [body] and params: {short_path(spec, quote=True)} has a [body] table of its "
-                               "own (a flight fit's airframe), which the vehicle commands would take in place of the "
-                               "file's: give one of them")
+    table = read_body(local) if local is not None else None
+    if table is None:
+        return
+    both = [key for key, theirs in (("[body]", table.drag), ("centre_of_mass", table.centre_of_mass),
+                                    ("rotor_interference", table.rotor_interference))
+            if theirs is not None and key.strip("[]") in data]
+    if both:
+        raise VehicleFileError(f"{name}: {', '.join(both)} and params: {short_path(spec, quote=True)}'s [body] table "
+                               f"gives {'it' if len(both) == 1 else 'them'} too (a flight fit's airframe), which the "
+                               "vehicle commands would take in place of the file's: give one of them")
 
 
 def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
@@ -334,7 +343,8 @@ def read_vehicle(path) -> Vehicle:
         of zero, non-finite or overflowing length, a bad spin, a propeller that is neither a
         readable geometry file nor a catalogue name, or a ``params`` (the vehicle's or a rotor's)
         that is neither a readable parameter file nor a named set, a ``[body]`` table beside a
-        ``params`` file that has one, or every rotor axis pointing down (z < 0 in
+        ``params`` file that has one (or a ``centre_of_mass`` or ``rotor_interference`` beside
+        one that gives it), or every rotor axis pointing down (z < 0 in
         the body frame x forward, y left, z up: a z-down frame's axes); the message names the
         file, the rotor and the key.
 
@@ -367,7 +377,7 @@ def read_vehicle(path) -> Vehicle:
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
     if "params" in data:  # (checked, not applied: the vehicle commands' default of --params, module docstring)
-        _own_params(data["params"], path.parent, name, "body" in data)
+        _own_params(data["params"], path.parent, name, data)
     rotors, props = [], {}
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -567,36 +577,3 @@ def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
         out.append(spec if local is None else str(local))
     return tuple(out)
 
-
-def vehicle_params_file(path) -> str | None:
-    """The vehicle file's own parameter set (its top-level ``params``, module docstring), as the
-    vehicle commands take it where ``--params`` is not given.
-
-    Parameters
-    ----------
-    path : str or Path
-        A vehicle file, or a bundled example vehicle's name (:func:`vehicle_path`); read it with
-        :func:`read_vehicle` for the full check.
-
-    Returns
-    -------
-    str or None
-        The parameter file's path (relative to the vehicle's folder, where it exists there) or
-        the named set; None where the vehicle names none.
-
-    Raises
-    ------
-    VehicleFileError
-        The file cannot be read as TOML.
-
-    Examples
-    --------
-    >>> import propmap as pm
-    >>> params = pm.read_params(pm.vehicle_params_file("neurobem_quadrotor"))   # its flight fit's set
-    """
-    path = vehicle_path(path)
-    spec = load_toml(path, VehicleFileError).get("params")
-    if not isinstance(spec, str) or not spec.strip():
-        return None
-    local = _local_file(spec, path.parent)
-    return spec if local is None else str(local)

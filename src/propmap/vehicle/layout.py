@@ -6,7 +6,7 @@ Body frame: x forward, y left, z up. The wrench of this vehicle is in vehicle/mo
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -15,7 +15,7 @@ from ..core.airfoil import SectionParams
 from ..core.body import BodyDrag
 from ..core.geometry import Propeller, has_bool
 
-__all__ = ["Rotor", "Vehicle", "body_to_world", "rotor_geometry"]
+__all__ = ["Rotor", "Vehicle", "body_to_world", "rotor_geometry", "shift_centre_of_mass"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -276,3 +276,23 @@ def body_to_world(pitch, roll) -> np.ndarray:
     Ry = np.stack([np.stack([cp, z, sp], -1), np.stack([z, o, z], -1), np.stack([-sp, z, cp], -1)], -2)
     Rx = np.stack([np.stack([o, z, z], -1), np.stack([z, cr, -sr], -1), np.stack([z, sr, cr], -1)], -2)
     return Ry @ Rx
+
+
+def shift_centre_of_mass(vehicle: Vehicle, cg) -> Vehicle:
+    """The vehicle with its centre of mass moved.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    cg : array_like, shape (3,) or (2,)
+        The centre of mass from the origin of the vehicle file's rotor positions, body axes
+        [m]; with two values its z stays the vehicle's.
+
+    Returns
+    -------
+    Vehicle
+        A copy; every rotor's arm (``position - centre_of_mass``) moves with it.
+    """
+    c = np.array(vehicle.centre_of_mass, float)
+    c[: len(cg)] = cg
+    return replace(vehicle, centre_of_mass=c)
