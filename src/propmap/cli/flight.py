@@ -505,8 +505,8 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
                    f"ground), params {label}, rho {air.rho:g} kg/m^3")
         if in_fit:
-            click.echo(f"{log.name} is one of the logs the parameter set was fitted to ({in_fit}, its [coverage]): "
-                       "these errors are in-sample, not a prediction")
+            click.echo(f"{log.name} is one of the logs the parameter set was fitted to ({in_fit} in the set's "
+                       "[coverage]): these errors are in-sample, not a prediction")
         click.echo(_table(rows))
         click.echo(f"propmap's {band_line(bands)}")
         if samples.reference_force is not None:

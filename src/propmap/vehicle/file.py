@@ -567,13 +567,14 @@ def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
     """
     path = vehicle_path(path)
     rotors = load_toml(path, VehicleFileError).get("rotors")
-    out = []
-    for r in rotors if isinstance(rotors, list) else ():
-        spec = r.get(key) if isinstance(r, dict) else None
-        if not isinstance(spec, str) or not spec.strip():
-            out.append(None)
-            continue
-        local = _local_file(spec, path.parent)
-        out.append(spec if local is None else str(local))
-    return tuple(out)
+    return tuple(_resolved_spec(r.get(key) if isinstance(r, dict) else None, path.parent)
+                 for r in (rotors if isinstance(rotors, list) else ()))
 
+
+def _resolved_spec(spec, folder: Path) -> str | None:
+    """A ``propeller`` or ``params`` entry as the reader resolves it: the file's path (relative to
+    ``folder``, where it exists there) or the name; None where it is no text."""
+    if not isinstance(spec, str) or not spec.strip():
+        return None
+    local = _local_file(spec, folder)
+    return spec if local is None else str(local)

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..io.toml_file import load_toml
-from .file import VehicleFileError, _local_file, _rotor_params, read_vehicle, vehicle_path
+from .file import VehicleFileError, _local_file, _resolved_spec, _rotor_params, read_vehicle, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
 
 __all__ = ["read_vehicle_with_params", "vehicle_params_file", "with_body_table"]
@@ -37,11 +37,7 @@ def vehicle_params_file(path) -> str | None:
         The file cannot be read as TOML.
     """
     path = vehicle_path(path)
-    spec = load_toml(path, VehicleFileError).get("params")
-    if not isinstance(spec, str) or not spec.strip():
-        return None
-    local = _local_file(spec, path.parent)
-    return spec if local is None else str(local)
+    return _resolved_spec(load_toml(path, VehicleFileError).get("params"), path.parent)
 
 
 def with_body_table(vehicle: Vehicle, table) -> Vehicle:
