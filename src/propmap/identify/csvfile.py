@@ -112,8 +112,11 @@ def _interval(rng) -> str:
 _ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
 
 
-#: cells that mark a missing value (no units-row hint for them)
-MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--")
+#: cells that mark a missing value (no units-row hint for them); '#N/A' and a formula's error ('#VALUE!', '#DIV/0!')
+#: are a spreadsheet's (a stand log's dropout so written was refused where 'n/a' was read: a thrust-stand data audit,
+#: 2026-11-30)
+MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--", "#n/a", "#na", "#value!", "#div/0!", "#num!",
+                 "#ref!", "#null!", "#name?")
 #: the not-a-number forms C runtimes print (glibc '-nan', MSVC '-nan(ind)', '1.#QNAN', '1.#IND')
 _C_NAN = re.compile(r"nan(\([a-z0-9_]*\))?|1\.#(qnan|snan|ind)0*", re.ASCII)
 
@@ -149,6 +152,10 @@ def _zero_or_empty(cell: str) -> bool:
 
 #: the names of the separators other than ',' (for messages)
 SEPARATOR_NAMES = {";": "semicolon", "\t": "tab"}
+#: a summary row's label in a column not read ('Average' under 'Point' in a spreadsheet's last row was read as a
+#: measured point and fitted: a thrust-stand data audit, 2026-11-30)
+SUMMARY_LABELS = frozenset(("average", "avg", "avg.", "mean", "total", "sum", "median", "std", "stdev", "std dev",
+                            "standard deviation", "averages", "totals"))
 
 
 class _Csv:
@@ -334,6 +341,11 @@ class _Csv:
                 if j < len(cells) and cells[j].strip():
                     raise self.error(unnamed_value_message(j, cells[j].strip(), self.sep, bool(self.columns[j - 1])),
                                      line)
+            label = next((j for j, c in enumerate(cells) if j not in read_at
+                          and c.strip().lower().rstrip(":") in SUMMARY_LABELS), None)
+            if label is not None:
+                raise self.error(f"column {_short(self.header[label])} is {_short(cells[label].strip())}: a summary "
+                                 "row (of the rows above)? remove it: every row is read as a measured point", line)
             stopped = bool(stop) and all(_zero_or_empty(cells[self.index[c]] if self.index[c] < len(cells) else "")
                                          for c in stop)
             for c, j in cols:
@@ -343,6 +355,9 @@ class _Csv:
                     continue
                 if not cell:
                     raise self.error(f"column {_short(self.header[j])} is empty (missing value)", line)
+                if missing_mark(cell):  # ('#N/A' was told only "is not a number": a thrust-stand data audit)
+                    raise self.error(f"column {_short(self.header[j])} is {_short(cell)}, a missing value: a point "
+                                     "needs every column read; remove the row or give the value", line)
                 number = cell
                 if c in percent and cell.endswith("%") and cell[:-1].strip():
                     number = cell[:-1].strip()
@@ -366,38 +381,57 @@ class _Csv:
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
         self._refuse_thousands(grouped)
-        return ({c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}, texts,
-                np.frombuffer(lines, dtype=np.int64).copy())
+        out = {c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}
+        self._refuse_mean_row(out, lines)
+        return out, texts, np.frombuffer(lines, dtype=np.int64).copy()
+
+    def _refuse_mean_row(self, nums: dict, lines) -> None:
+        """Refuse a last row that is the mean of the rows above in every column read (to 0.1%, a
+        spreadsheet's rounding), where 4 or more rows stand above it and 2 or more columns vary: a
+        summary row without a label (read as a measured point and fitted: a thrust-stand data audit,
+        2026-11-30). A measured point does not fall on the mean of thrust and torque as well as of
+        the rotation rate (they grow as its square)."""
+        cols = [v for v in nums.values() if len(v) >= 5 and np.isfinite(v).all()]
+        if len(cols) < 2 or len(cols) < len(nums):
+            return
+        varying = [v for v in cols if np.ptp(v[:-1]) > 1e-9 * np.max(np.abs(v[:-1]))]
+        if len(varying) >= 2 and all(abs(v[-1] - v[:-1].mean()) <= 1e-3 * abs(v[:-1].mean()) for v in cols):
+            raise self.error(f"the last row is the mean of the {len(lines) - 1} rows above it in every column read: a "
+                             "summary row (an average)? remove it: every row is read as a measured point", lines[-1])
 
     @staticmethod
     def _thousands(column: str, cell: str, line: int, grouped: dict) -> None:
         """Note, for :meth:`_refuse_thousands`, a ';'- or tab-separated file's cell: the largest
-        like ``1.059`` (a digit 1-9, up to two more, a point, three digits), the largest whole
-        number of three digits (``951``), and whether any other decimal (``0.125``, ``16.5``)
-        stands in the column; ``grouped`` holds them per column."""
+        like ``1.059`` or ``1,059`` (a digit 1-9, up to two more, a point or a comma, three
+        digits), the largest whole number of three digits (``951``), and whether any other
+        decimal (``0.125``, ``16,5``) stands in the column; ``grouped`` holds them per column (a
+        web table's ``1,056`` beside ``802`` in grams was read as a decimal comma, 1.056 g, and
+        fitted: a thrust-stand data audit, 2026-11-30)."""
         seen = grouped.setdefault(column, {"grouped": None, "whole": None, "decimal": False})
-        if re.fullmatch(r"[+-]?[1-9]\d{0,2}\.\d{3}", cell):
-            if seen["grouped"] is None or float(cell) > float(seen["grouped"][1]):
+        if re.fullmatch(r"[+-]?[1-9]\d{0,2}[.,]\d{3}", cell):
+            if seen["grouped"] is None or float(cell.replace(",", ".")) > float(seen["grouped"][1].replace(",", ".")):
                 seen["grouped"] = (line, cell)
         elif re.fullmatch(r"[+-]?[1-9]\d{2}", cell):
             if seen["whole"] is None or float(cell) > float(seen["whole"][1]):
                 seen["whole"] = (line, cell)
-        elif "." in cell:
+        elif "." in cell or "," in cell:
             seen["decimal"] = True
 
     def _refuse_thousands(self, grouped: dict) -> None:
-        """Refuse a column whose cells like ``1.059`` are all more than 100 times smaller than its
+        """Refuse a column whose cells like ``1.059`` (``1,059``) are all more than 100 times smaller than its
         largest whole number of three digits (``951``), where no other decimal stands: there the point is
         a thousands separator (951, 1059), which read as a decimal point made points 1000 times too
         small that were fitted (a thrust-stand export audit, 2026-11-30); a column of decimals
         beside whole numbers of their size (16.667 beside 100, 98.125 beside 215) is read."""
         for column, seen in grouped.items():
             if seen["grouped"] and seen["whole"] and not seen["decimal"] and (
-                    100 * abs(float(seen["grouped"][1])) < abs(float(seen["whole"][1]))):
+                    100 * abs(float(seen["grouped"][1].replace(",", "."))) < abs(float(seen["whole"][1]))):
                 (lg, cg), (lw, cw) = seen["grouped"], seen["whole"]
+                mark = "a comma" if "," in cg else "a point"
+                whole = cg.replace(".", "").replace(",", "")
                 raise self.error(f"column {_short(self.header[self.index[column]])}: {cg} (line {lg}) beside {cw} "
-                                 f"(line {lw}): a point as a thousands separator ({cg.replace('.', '')})? save the "
-                                 "numbers without one", lg)
+                                 f"(line {lw}): {mark} as a thousands separator ({whole})? save the numbers without "
+                                 "one", lg)
 
     def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
         """A ';'- or tab-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).

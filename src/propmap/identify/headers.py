@@ -72,6 +72,9 @@ _NAMES = {
     "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
     "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),
     "normal force": ("drag", "force"), "normal_force": ("drag", "force"), "rotor drag": ("drag", "force"),
+    # (Hforce (N), in plane force, drag force (N) were left unread beside a thrust, the in-plane force never fitted: a
+    # wind-tunnel data audit, 2026-11-30)
+    "hforce": ("drag", "force"), "in plane force": ("drag", "force"), "drag force": ("drag", "force"),
     "rotor_drag": ("drag", "force"),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
     "omega": ("rpm", "rotation"), "rps": ("rpm", "rotation"), "rev/s": ("rpm", "rotation"),

@@ -66,7 +66,10 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     """The unit of _AIRSPEED_SLIPS in which the moving points' measured thrust matches the model
     best, where that is less than half the misfit of m/s (rms of (model - measured) over the
     largest measured thrust, at 3 moving points or more, the model scaled to the data's static
-    thrust where the data have static points) and the misfit in m/s exceeds 0.1; else None."""
+    thrust where the data have static points) and the misfit in m/s exceeds 0.1; else None. In
+    a file whose every point is at incidence 0, "descent" where the airspeed read in m/s as an
+    axial descent's matches best (descent data without an incidence column were told of an
+    airspeed in km/h: a wind-tunnel data audit, 2026-11-30)."""
     moving = ~data.static
     if "thrust" not in data.measured or "thrust" not in checked or moving.sum() < 3:
         return None
@@ -88,6 +91,8 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     if not base > 0.1:
         return None
     found = {unit: misfit(loads_at(data.omega, data.airspeed * f)) for f, unit in _AIRSPEED_SLIPS}
+    if not np.any(data.incidence):
+        found["descent"] = misfit(loads_at(data.omega, data.airspeed, incidence=np.full(data.n, np.pi)))
     unit = min(found, key=found.get)
     return unit if found[unit] < 0.5 * base else None
 
@@ -170,22 +175,30 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
 WIND_AXES_MISFIT = (0.2, 0.5)
 
 
-def _incidence_misfit(data: LoadData, at_rpm, on):
+def _incidence_misfit(data: LoadData, at_rpm, on, torque: bool = False):
     """(points, misfit) of the checks of loads at incidence (:func:`_wind_axes`,
     :func:`_mirrored_incidence`): the points of ``on`` where the measured and the model's thrust
-    (and in-plane force, where measured) are finite, and ``misfit(thrust, drag)``, the rms of a
-    reading's thrust and drag (model arrays over all points) less the measured ones there, in
-    units of the measured thrust's rms; None where fewer than 3 points or no thrust remain."""
+    (and in-plane force, and with ``torque`` the torque, where measured) are finite, and
+    ``misfit(thrust, drag, torque=None)``, the rms of a reading's thrust and drag (model arrays
+    over all points) less the measured ones there, in units of the measured thrust's rms, with
+    the torque's error in units of the measured torque's rms added where given; None where fewer
+    than 3 points or no thrust remain."""
     Tm, Dm = data.measured["thrust"], data.measured.get("drag")
+    Qm = data.measured.get("torque") if torque else None
     on = on & np.isfinite(Tm) & np.isfinite(at_rpm.thrust)
     if Dm is not None:
         on &= np.isfinite(Dm) & np.isfinite(at_rpm.drag)
+    if Qm is not None:
+        on &= np.isfinite(Qm) & np.isfinite(at_rpm.torque)
     scale = float(np.sqrt(np.mean(Tm[on] ** 2))) if on.sum() >= 3 else 0.0
+    q_scale = float(np.sqrt(np.mean(Qm[on] ** 2))) if Qm is not None and on.sum() >= 3 else 0.0
     if not scale > 0:
         return None
 
-    def misfit(thrust, drag) -> float:
+    def misfit(thrust, drag, torque_=None) -> float:
         sq = (Tm[on] - thrust[on]) ** 2 + (0.0 if Dm is None else (Dm[on] - drag[on]) ** 2)
+        if Qm is not None and torque_ is not None and q_scale > 0:
+            sq = sq + ((Qm[on] - torque_[on]) * (scale / q_scale)) ** 2
         return float(np.sqrt(np.mean(sq))) / scale
 
     return on, misfit
@@ -221,8 +234,9 @@ def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
                          "the flow, i the incidence)")
 
 
-#: the misfit of the thrust (and in-plane force) at the file's incidence, in units of the measured thrust's rms, above
-#: which the mirrored incidence 180 deg - i is tried, and the share of it that the mirror must reach to be said
+#: the misfit of the thrust (and in-plane force, and torque) at the file's incidence, in units of the measured loads'
+#: rms, above which the mirrored incidence 180 deg - i is tried, and the share of it that the mirror must reach to be
+#: said
 MIRROR_MISFIT = (0.2, 0.5)
 
 
@@ -230,31 +244,52 @@ def _mirrored_incidence(data: LoadData, at_rpm, loads_at, warnings_: list) -> No
     """Warn where the loads at incidence match the model much better at 180 deg minus the file's
     incidence: a disk angle of attack alpha_d written as 90 - alpha_d, or a tilt measured from
     the other side (validated at 38% thrust error without a word: a wind-tunnel data audit,
-    2026-11-30). Judged on the points at an incidence of 12-168 deg and 10 deg or more from
-    edgewise (at 90 deg the two readings are one), 3 or more, from the thrust and, where
-    measured, the in-plane force."""
+    2026-11-30); and where a file whose every point is at incidence 0 matches it much better in
+    axial descent (a descent rate read as a climb's airspeed, blamed on an airspeed in km/h: a
+    wind-tunnel data audit, 2026-11-30, later that day). Judged on the points with an airspeed
+    (above STATIC_AIRSPEED) at 10 deg or more from edgewise (at 90 deg the two readings are
+    one), 3 or more, from the thrust and, where measured, the in-plane force and the torque (a
+    0-180 deg sweep read the other way round missed by 0.15 of the thrust, below the limit, and
+    80% in torque: the same audit)."""
+    from .load_data import STATIC_AIRSPEED
+
     if "thrust" not in data.measured:
         return
-    s, c = np.sin(data.incidence), np.cos(data.incidence)
-    judged = _incidence_misfit(data, at_rpm, (s > 0.2) & (np.abs(c) > np.sin(np.radians(10.0))))
+    c = np.cos(data.incidence)
+    judged = _incidence_misfit(data, at_rpm, (data.airspeed > STATIC_AIRSPEED) & (np.abs(c) > np.sin(np.radians(10.0))),
+                               torque=True)
     if judged is None:
         return
     on, misfit = judged
     lo, share = MIRROR_MISFIT
-    read = misfit(at_rpm.thrust, at_rpm.drag)
-    if not read > lo:  # (the file fits: no mirror solved, which cost 0.3 s per 5,000 points, a review)
+    # judged with the torque and without it (a slow flyer's torque, off in the model, hid its mirror: the forces alone
+    # tell it; a 0-180 deg sweep's forces missed by 0.15 where its torque missed by 80%: with the torque)
+    read = {k: misfit(at_rpm.thrust, at_rpm.drag, at_rpm.torque if k else None) for k in (True, False)}
+    if not max(read.values()) > lo:  # (the file fits: no mirror solved, which cost 0.3 s per 5,000 points, a review)
         return
     mirror = loads_at(data.omega, incidence=np.pi - data.incidence)
-    mirrored = misfit(mirror.thrust, mirror.drag)
-    if np.isfinite(mirrored) and mirrored < share * read:
-        of = "thrust and in-plane force miss" if "drag" in data.measured else "thrust misses"
-        warnings_.append(f"at {int(on.sum())} points at incidence the {of} the model by {read:.2g} of the thrust "
-                         f"(rms) at the file's incidence and by {mirrored:.2g} at 180 deg minus it: is the "
-                         "incidence a disk angle of attack, or a tilt measured from the other side? propmap's "
-                         "incidence is the angle between the airspeed and the rotor axis (0 climb, 90 edgewise, "
-                         "180 axial descent); a disk angle of attack alpha_d (0 edgewise, positive with the disk "
-                         "tilted back against the airspeed) is incidence_deg = 90 + alpha_d; if so, write "
-                         "incidence_deg as 180 minus the file's value")
+    mirrored = {k: misfit(mirror.thrust, mirror.drag, mirror.torque if k else None) for k in (True, False)}
+    told = [k for k in (True, False) if read[k] > lo and np.isfinite(mirrored[k]) and mirrored[k] < share * read[k]]
+    if not told:
+        return
+    read, mirrored = read[told[0]], mirrored[told[0]]
+    said = [q for q in ("thrust", "in-plane force", "torque")
+            if {"in-plane force": "drag"}.get(q, q) in data.measured and (told[0] or q != "torque")]
+    of = (", ".join(said[:-1]) + " and " + said[-1] if len(said) > 1 else said[0]) + (" miss" if len(said) > 1
+                                                                                       else " misses")
+    if not np.any(data.incidence):
+        warnings_.append(f"at {int(on.sum())} points at airspeed the {of} the model by {read:.2g} (rms, in units "
+                         f"of the measured loads) in axial climb, as the file reads them without an incidence, and "
+                         f"by {mirrored:.2g} in axial descent: are these descent data (a descent rate as the "
+                         "airspeed)? write incidence_deg 180 for descending points (0 for climbing ones)")
+        return
+    warnings_.append(f"at {int(on.sum())} points at incidence the {of} the model by {read:.2g} (rms, in units "
+                     f"of the measured loads) at the file's incidence and by {mirrored:.2g} at 180 deg minus it: is "
+                     "the incidence a disk angle of attack, or a tilt measured from the other side? propmap's "
+                     "incidence is the angle between the airspeed and the rotor axis (0 climb, 90 edgewise, 180 axial "
+                     "descent); a disk angle of attack alpha_d (0 edgewise, positive with the disk tilted back "
+                     "against the airspeed) is incidence_deg = 90 + alpha_d; if so, write incidence_deg as 180 minus "
+                     "the file's value")
 
 
 def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
@@ -460,7 +495,10 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
               if not (fT != 1.0 and "thrust" not in ratio) and not (fQ != 1.0 and "torque" not in ratio)
               and not (declared and fT in _READ_AS_N)
               and _plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
-    if speed_slip:
+    if speed_slip == "descent":
+        causes.append("descent data read as climb (no incidence column: write incidence_deg 180 for descending "
+                      "points)")
+    elif speed_slip:
         causes.append(f"an airspeed in {speed_slip} read as m/s (name its unit, e.g. 'airspeed ({speed_slip})')")
     first, rates = _rate_causes(data, model, propeller.n_blades)
     if mirror:  # (a mirrored file at 15-45 deg was refused as 'an airspeed in km/h read as m/s': a review)
@@ -576,6 +614,11 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     if drag_refused is not None:
         raise drag_refused
     warnings_ += _moderate_mismatch(data, propeller, at_rpm, model.ratios, model.loads_at, pole_pairs, label)
+    if speed_slip == "descent":
+        return warnings_ + ["the measured thrust at airspeed matches the model far better in axial descent "
+                            "(incidence 180 deg) than in climb, as the file reads it without an incidence: are these "
+                            "descent data (a descent rate as the airspeed)? write an 'incidence_deg' column, 180 for "
+                            "descending points and 0 for climbing ones"]
     return warnings_ + ([f"the measured thrust at airspeed matches the model far better with the airspeed read as "
                          f"{speed_slip} (is the airspeed column in {speed_slip}? name its unit, e.g. "
                          f"'airspeed ({speed_slip})'; it is read in m/s)"] if speed_slip else [])

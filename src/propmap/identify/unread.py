@@ -24,7 +24,14 @@ _ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle
 #: wind-tunnel data audit, 2026-11-27); not a bare 'w' (a power in watts)
 _AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "descent rate", "descent speed",
                     "rate of climb", "rate of descent", "sink rate", "vertical speed", "vertical velocity",
-                    "axial velocity", "axial speed", "axial flow speed")
+                    "axial velocity", "axial speed", "axial flow speed",
+                    # (Vd, V_d, descent velocity and descent_velocity_m_s were left unread, every point static: a
+                    # wind-tunnel data audit, 2026-11-30)
+                    "vd", "v d", "v descent", "v climb", "descent velocity", "climb velocity", "descending velocity",
+                    "climbing velocity")
+#: a velocity's symbols, an airspeed where a speed's unit follows after an underscore (V_mps, U_ms, V_kmh were left
+#: unread, every point static: a wind-tunnel data audit, 2026-11-30); '_ms' is a millisecond after other names
+_VELOCITY_SYMBOLS = ("v", "u", "v0", "u0", "vel", "v tunnel", "u tunnel", "v air", "v wind", "v freestream")
 #: a blade pitch setting under another name than collective_deg (its points were fitted at collective 0: an input
 #: fuzzing audit, 2026-11-27)
 _PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective pitch", "pitch setting",
@@ -136,6 +143,9 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
         if quantity == "airspeed" or "airspeed" in cm.columns:
             like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
                      and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
+        if kind == "speed":  # a velocity's symbol with a speed's unit after an underscore (V_mps, U_ms)
+            like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and n not in like
+                     and _speed_stem(b) in _loose(_VELOCITY_SYMBOLS)]
         if kind == "angle" and "airspeed" in cm.columns:  # an angle's unit after an underscore (tilt_deg, beta_rad)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
@@ -156,16 +166,33 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
                                f"{what}, name it {read_as}") + f" (every point is taken as {default})")
 
 
+def _speed_stem(base: str) -> str | None:
+    """The name ``base`` less a speed's unit after an underscore (``v_mps`` -> ``v``, ``u_m_s`` ->
+    ``u``), blanks for underscores; None without one."""
+    parts = base.split("_")
+    for k in (2, 1):
+        if len(parts) > k and _token("_".join(parts[-k:])) in UNITS["speed"]:
+            return " ".join(parts[:-k])
+    return None
+
+
 def _note_unread_force(cm: ColumnMap, split: dict) -> None:
-    """map_columns without a thrust column: a force column under another name ('Force (N)') is
-    named in a note (it was left out unsaid and a torque-only fit ran: a user-level audit)."""
+    """map_columns without a thrust or an in-plane force column: a force column under another name
+    ('Force (N)') is named in a note (without a thrust it was left out unsaid and a torque-only fit
+    ran: a user-level audit; beside a thrust, an in-plane force 'N (N)', 'H (N)' or 'Fx (N)' was
+    left out unsaid and never fitted: a wind-tunnel data audit, 2026-11-30)."""
     # any force unit (a gram thrust under 'Weight (g)', 'Thrust avg (g)' was left unsaid: a thrust-stand export
     # audit, 2026-11-30), but not an accelerometer's or a vibration's g (AccX (g), Vibration (g))
     # (a unit after an underscore too, weight_g, load_kgf; not _n there: sample_n is a count)
     forces = [n for n, (b, u) in split.items() if b not in _NAMES and not _ACCELERATION_LIKE.search(b)
               and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in UNITS["force"]
               and (u is not None or not b.endswith("_n"))]
-    if forces:
+    if forces and "thrust" in cm.columns:
+        cm.notes.append(f"column(s) {', '.join(map(repr, forces[:3]))} (a force) not read: if one is the in-plane "
+                        "force (an H-force, a normal force), name it 'drag' with its unit to fit it (the force across "
+                        "the rotor axis, along the in-plane airspeed: docs/conventions.md); only the thrust"
+                        + (" and the torque are" if "torque" in cm.columns else " is") + " fitted")
+    elif forces:
         cm.notes.append(f"column {forces[0]!r} (a force) is not read: name it 'thrust' (or 'drag', the in-plane "
                         "force) with its unit to fit it; without a thrust column "
                         + ("only the " + " and ".join(q for q in ("drag", "torque") if q in cm.columns)
