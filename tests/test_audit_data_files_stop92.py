@@ -206,3 +206,29 @@ def test_a_spreadsheets_missing_value_marks_are_read_as_missing(tmp_path):
     with pytest.raises(ValueError, match=r"line 4: column 'thrust \(N\)' is '#N/A', a missing value: a point needs "
                                          r"every column read; remove the row or give the value"):
         read_loads(_write(tmp_path, text))
+
+
+def test_a_speed_column_in_its_unit_is_told_to_be_named_airspeed_with_it(tmp_path):
+    """'V (m/s)' was told to be renamed 'converted', though it is in m/s already."""
+    T, _, _ = _loads(range(4000, 10000, 1000), 5.0, 0)
+    text = "rpm,V (m/s),thrust (N)\n" + "".join(f"{r},5,{t:.5g}\n" for r, t in zip(range(4000, 10000, 1000), T))
+    with pytest.raises(ValueError, match=r"column 'V \(m/s\)' looks like an airspeed .*: name it 'airspeed \(m/s\)' "
+                                         r"\(its unit is read\), or remove it"):
+        read_loads(_write(tmp_path, text))
+
+
+def test_a_fit_says_its_flapping_warning_once(tmp_path, capsys):
+    """A fit that frees the flapping warned of large flapping at five trial compliances (the same
+    warning with other numbers five times): the last alone."""
+    from propmap.cli.main import main
+
+    inc = np.tile([0, 30, 60, 90], 4)
+    rpm = np.repeat([5000, 5000, 7000, 7000], 4)
+    V = np.repeat([4.0, 8.0, 4.0, 8.0], 4)
+    T, D, Q = _loads(rpm, V, inc)
+    text = "rpm,airspeed,incidence_deg,thrust,drag,torque\n" + "".join(
+        f"{r},{v},{i},{t:.5g},{d * 1000 / 9.80665:.4g},{q:.5g}\n" for r, v, i, t, d, q in zip(rpm, V, inc, T, D, Q))
+    code = main(["fit", "loads", str(_write(tmp_path, text)), "--prop", PROP, "--out", str(tmp_path / "p.toml")])
+    err = capsys.readouterr().err
+    assert code == 0, err
+    assert err.count("propmap: warning: flapping: ") == 1, err

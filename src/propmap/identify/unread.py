@@ -152,8 +152,13 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
                      and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
         if like:
             joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
-            raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: rename it, "
-                        f"converted, or remove it; left unread, every point would be taken as {default}{joule}")
+            unit = split[like[0]][1] if like[0] in split else None
+            if kind == "speed" and unit is not None and _token(unit) in UNITS[kind]:
+                todo = f"name it 'airspeed ({unit})' (its unit is read)"  # ('converted' misled for m/s: an audit)
+            else:
+                todo = "rename it, converted"
+            raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: {todo}, or "
+                        f"remove it; left unread, every point would be taken as {default}{joule}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
         if maybe and quantity == "incidence_deg" and "airspeed" in cm.columns:
             raise error(f"column {maybe[0]!r} looks like {what} beside the airspeed, which propmap reads only as "
