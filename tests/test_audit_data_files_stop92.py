@@ -232,3 +232,29 @@ def test_a_fit_says_its_flapping_warning_once(tmp_path, capsys):
     err = capsys.readouterr().err
     assert code == 0, err
     assert err.count("propmap: warning: flapping: ") == 1, err
+
+
+def _tunnel_log(tmp_path, airspeed_of, name="log.csv"):
+    """A stand log through a tunnel's speeds: 12 ESC steps of 30 samples at 10 Hz, each at a speed
+    (0, 4, 8 m/s) and rpm, the airspeed column as ``airspeed_of(k, V)`` gives it per sample."""
+    rows, t, k = [], 0.0, 0
+    for esc, rpm in zip(range(1200, 2000, 200), (4000, 5500, 7000, 8500)):
+        for V in (0.0, 4.0, 8.0):
+            T, _, Q = _loads([rpm], V, 0)
+            for _ in range(30):
+                rows.append(f"{t:.1f},{esc},{T[0]:.5g},{Q[0]:.5g},{rpm},{airspeed_of(k, V):.3f}")
+                t, k = t + 0.1, k + 1
+            esc += 1
+    head = "Time (s),ESC signal (µs),Thrust (N),Torque (N·m),Motor Optical Speed (RPM),Airspeed (m/s)\n"
+    return _write(tmp_path, head + "\n".join(rows) + "\n", name)
+
+
+def test_a_sampled_logs_rare_pitot_spike_below_zero_is_noise(tmp_path):
+    """One sample of -0.31 m/s at rest in a tunnel log refused the whole log as a descent given as a
+    negative airspeed; a descent so given (every sample of its steps at -3 m/s) still is."""
+    rng = np.random.default_rng(0)
+    noisy = _tunnel_log(tmp_path, lambda k, V: V + 0.12 * rng.standard_normal() if k != 40 else -0.31)
+    data = read_loads(noisy)
+    assert np.all(data.airspeed >= 0) and any("within 1 m/s) read as 0" in n for n in data.notes)
+    with pytest.raises(ValueError, match="a descent given as a negative airspeed"):
+        read_loads(_tunnel_log(tmp_path, lambda k, V: -V, "descent.csv"))
