@@ -298,7 +298,7 @@ class _Csv:
             raise self.error(msg, last + 1) from None
 
     def read(self, numeric: list[str], text: tuple[str, ...] = (), optional=(), stop=(), gaps=(),
-             percent=()) -> tuple[dict, dict, np.ndarray]:
+             percent=(), mean_row: bool = False) -> tuple[dict, dict, np.ndarray]:
         """(numbers by column, text by column, line of each row) for the named columns; an
         empty cell of a column in ``optional`` is NaN instead of an error, and so is every
         empty cell of a row whose ``stop`` columns (a subset of ``optional``) are all empty or 0:
@@ -309,7 +309,9 @@ class _Csv:
         optical speed ``NaN`` in every row was refused while the same column left empty was read:
         a thrust-stand export audit, 2026-11-27). A cell of a column in ``percent`` may end in ``%``
         (``50%``, ``62.5 %``: a motor maker's table of throttle settings): read without it, and the
-        column is added to ``self.percent_cells``."""
+        column is added to ``self.percent_cells``. With ``mean_row``, a last row that is the mean of
+        the rows above is refused (:meth:`_refuse_mean_row`: load data, whose loads grow as the
+        rotation rate's square; a points file's design point at the centre of its grid is none)."""
         self.percent_cells: set[str] = set()
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
@@ -382,7 +384,8 @@ class _Csv:
             lines.append(line)
         self._refuse_thousands(grouped)
         out = {c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}
-        self._refuse_mean_row(out, lines)
+        if mean_row:
+            self._refuse_mean_row(out, lines)
         return out, texts, np.frombuffer(lines, dtype=np.int64).copy()
 
     def _refuse_mean_row(self, nums: dict, lines) -> None:
