@@ -116,7 +116,7 @@ _ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
 #: are a spreadsheet's (a stand log's dropout so written was refused where 'n/a' was read: a thrust-stand data audit,
 #: 2026-11-30)
 MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--", "#n/a", "#na", "#value!", "#div/0!", "#num!",
-                 "#ref!", "#null!", "#name?")
+                 "#ref!", "#null!", "#name?", "#spill!", "#calc!")
 #: the not-a-number forms C runtimes print (glibc '-nan', MSVC '-nan(ind)', '1.#QNAN', '1.#IND')
 _C_NAN = re.compile(r"nan(\([a-z0-9_]*\))?|1\.#(qnan|snan|ind)0*", re.ASCII)
 
@@ -136,7 +136,8 @@ def missing_mark(cell: str) -> bool:
         ``-nan``, MSVC ``-nan(ind)``, ``1.#QNAN``, ``1.#IND``), in any case and sign.
     """
     low = cell.strip().lower().lstrip("+-")
-    return low in ("", *MISSING_MARKS) or _C_NAN.fullmatch(low) is not None
+    # (LibreOffice's formula errors, Err:502: a review)
+    return low in ("", *MISSING_MARKS) or _C_NAN.fullmatch(low) is not None or re.fullmatch(r"err:\d+", low) is not None
 
 
 def _zero_or_empty(cell: str) -> bool:
@@ -311,7 +312,9 @@ class _Csv:
         (``50%``, ``62.5 %``: a motor maker's table of throttle settings): read without it, and the
         column is added to ``self.percent_cells``. With ``mean_row``, a last row that is the mean of
         the rows above is refused (:meth:`_refuse_mean_row`: load data, whose loads grow as the
-        rotation rate's square; a points file's design point at the centre of its grid is none)."""
+        rotation rate's square; a points file's design point at the centre of its grid is none). A
+        last row labelled as a summary in a column not read is refused
+        (:meth:`_refuse_summary_label`)."""
         self.percent_cells: set[str] = set()
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
@@ -324,6 +327,7 @@ class _Csv:
         grouped: dict = {}
         rows = self._rows()
         next(rows)  # the header
+        first_cells = last_cells = last_line = None
         unnamed = unnamed_columns(self.columns)
         read_at = {j for _, j in cols}
         for line, cells in rows:
@@ -343,11 +347,8 @@ class _Csv:
                 if j < len(cells) and cells[j].strip():
                     raise self.error(unnamed_value_message(j, cells[j].strip(), self.sep, bool(self.columns[j - 1])),
                                      line)
-            label = next((j for j, c in enumerate(cells) if j not in read_at
-                          and c.strip().lower().rstrip(":") in SUMMARY_LABELS), None)
-            if label is not None:
-                raise self.error(f"column {_short(self.header[label])} is {_short(cells[label].strip())}: a summary "
-                                 "row (of the rows above)? remove it: every row is read as a measured point", line)
+            first_cells = cells if first_cells is None else first_cells
+            last_cells, last_line = cells, line
             stopped = bool(stop) and all(_zero_or_empty(cells[self.index[c]] if self.index[c] < len(cells) else "")
                                          for c in stop)
             for c, j in cols:
@@ -357,9 +358,6 @@ class _Csv:
                     continue
                 if not cell:
                     raise self.error(f"column {_short(self.header[j])} is empty (missing value)", line)
-                if missing_mark(cell):  # ('#N/A' was told only "is not a number": a thrust-stand data audit)
-                    raise self.error(f"column {_short(self.header[j])} is {_short(cell)}, a missing value: a point "
-                                     "needs every column read; remove the row or give the value", line)
                 number = cell
                 if c in percent and cell.endswith("%") and cell[:-1].strip():
                     number = cell[:-1].strip()
@@ -370,6 +368,10 @@ class _Csv:
                 try:
                     x = parse_number(number)
                 except ValueError:
+                    if missing_mark(cell):  # ('#N/A' was told only "is not a number": a thrust-stand data audit)
+                        raise self.error(f"column {_short(self.header[j])} is {_short(cell)}, a missing value: a "
+                                         "point needs every column read; remove the row or give the value",
+                                         line) from None
                     unit_like = re.search(r"[a-zA-Z%]", cell) and not missing_mark(cell)
                     hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
                             "'thrust (N)', and remove the row)" if not len(lines) and unit_like else "")
@@ -383,21 +385,37 @@ class _Csv:
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
         self._refuse_thousands(grouped)
+        self._refuse_summary_label(first_cells, last_cells, last_line, read_at | {self.index[c] for c in texts})
         out = {c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}
         if mean_row:
             self._refuse_mean_row(out, lines)
         return out, texts, np.frombuffer(lines, dtype=np.int64).copy()
 
+    def _refuse_summary_label(self, first, last, line, read: set) -> None:
+        """Refuse a last row labelled as a summary (``Average``, ``Mean``, ``Total``: SUMMARY_LABELS)
+        in a column not read whose first row is not so labelled too (a column of 'mean' on every
+        row says what each row is: a review) (read as a measured point and fitted: a thrust-stand
+        data audit, 2026-11-30)."""
+        if last is None or last is first:
+            return
+        for j, cell in enumerate(last):
+            low = cell.strip().lower().rstrip(":")
+            if j not in read and low in SUMMARY_LABELS and (j >= len(first) or first[j].strip().lower().rstrip(":")
+                                                              != low):
+                raise self.error(f"column {_short(self.header[j])} is {_short(cell.strip())}: a summary row (of the "
+                                 "rows above)? remove it: every row is read as a measured point", line)
+
     def _refuse_mean_row(self, nums: dict, lines) -> None:
         """Refuse a last row that is the mean of the rows above in every column read (to 0.1%, a
-        spreadsheet's rounding), where 4 or more rows stand above it and 2 or more columns vary: a
-        summary row without a label (read as a measured point and fitted: a thrust-stand data audit,
-        2026-11-30). A measured point does not fall on the mean of thrust and torque as well as of
-        the rotation rate (they grow as its square)."""
+        spreadsheet's rounding), where 4 or more rows stand above it and 2 or more columns vary by a
+        tenth of their size: a summary row without a label (read as a measured point and fitted: a
+        thrust-stand data audit, 2026-11-30). A measured point does not fall on the mean of thrust
+        and torque as well as of the rotation rate (they grow as its square)."""
         cols = [v for v in nums.values() if len(v) >= 5 and np.isfinite(v).all()]
         if len(cols) < 2 or len(cols) < len(nums):
             return
-        varying = [v for v in cols if np.ptp(v[:-1]) > 1e-9 * np.max(np.abs(v[:-1]))]
+        # (varying by a tenth of their size: a repeatability table at one setting, 0.3% in rpm, was refused: a review)
+        varying = [v for v in cols if np.ptp(v[:-1]) > 0.1 * np.max(np.abs(v[:-1]))]
         if len(varying) >= 2 and all(abs(v[-1] - v[:-1].mean()) <= 1e-3 * abs(v[:-1].mean()) for v in cols):
             raise self.error(f"the last row is the mean of the {len(lines) - 1} rows above it in every column read: a "
                              "summary row (an average)? remove it: every row is read as a measured point", lines[-1])

@@ -25,12 +25,17 @@ _ESC_ALIASES = ("pwm", "esc pwm", "pwm signal", "motor pwm", "pulse width", "esc
 #: other names of the thrust, read where no 'thrust' column is (beside one, with a note that they are not read)
 _THRUST_ALIASES = ("static thrust", "average thrust", "avg thrust", "avg. thrust", "mean thrust", "thrust avg",
                    "thrust average", "thrust mean")
+#: the torque's likewise (Mean torque (N*mm), Torque avg were dropped without a word beside a thrust: a review,
+#: 2026-11-30)
+_TORQUE_ALIASES = ("average torque", "avg torque", "avg. torque", "mean torque", "torque avg", "torque average",
+                   "torque mean")
 #: the rank of a name that gives way to another of its quantity (0: the quantity's own; PWM gives way to a throttle,
 #: both to an ESC signal; Thrust avg to Thrust); two of one rank are refused ('ESC (µs)' beside 'Throttle (%)' was:
 #: a thrust-stand export audit, 2026-11-30)
 #: other names of a file's run labels, read where no 'group' column is
 _GROUP_ALIASES = ("run", "run id", "run_id", "run name", "test id", "test_id", "series")
-_RANK = {**dict.fromkeys(_ESC_ALIASES, 2), **dict.fromkeys(_THRUST_ALIASES, 1), "throttle": 1,
+_RANK = {**dict.fromkeys(_ESC_ALIASES, 2), **dict.fromkeys(_THRUST_ALIASES, 1), **dict.fromkeys(_TORQUE_ALIASES, 1),
+         "throttle": 1,
          **dict.fromkeys(_GROUP_ALIASES, 1)}
 #: quantity -> {unit token (lower case, separators removed) -> factor to SI}
 UNITS = {
@@ -53,7 +58,9 @@ UNITS = {
     "rotation": {"rpm": 1.0, "revmin": 1.0, "rmin": 1.0, "1min": 1.0, "min1": 1.0, "min⁻¹": 1.0, "umin": 1.0,
                  "trmin": 1.0, "girimin": 1.0, "obrmin": 1.0,
                  "krpm": 1e3, "rads": 1 / RPM, "hz": 60.0, "revs": 60.0, "rps": 60.0},
-    "speed": {"ms": 1.0, "mps": 1.0, "kmh": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704, "kn": 1852 / 3600,
+    # (m s-1, m.s-1, km h^-1: SI's negative powers, left unread with every point static: a review, 2026-11-30)
+    "speed": {"ms": 1.0, "mps": 1.0, "ms1": 1.0, "kmh": 1 / 3.6, "kmh1": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704,
+              "kn": 1852 / 3600,
               "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
@@ -67,7 +74,7 @@ _NAMES = {
     "drehzahl": ("rpm", "rotation"),
     # a spreadsheet's Static thrust, Avg. thrust (read as nothing, a gram thrust left unsaid: an export audit,
     # 2026-11-30); they give way to a 'thrust' column (_RANK)
-    **dict.fromkeys(_THRUST_ALIASES, ("thrust", "force")),
+    **dict.fromkeys(_THRUST_ALIASES, ("thrust", "force")), **dict.fromkeys(_TORQUE_ALIASES, ("torque", "torque")),
     # the in-plane force along the in-plane airspeed, by the names wind-tunnel tests give it
     "h force": ("drag", "force"), "h_force": ("drag", "force"), "h-force": ("drag", "force"),
     "in-plane force": ("drag", "force"), "inplane force": ("drag", "force"), "in_plane_force": ("drag", "force"),

@@ -97,6 +97,8 @@ def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:
     return unit if found[unit] < 0.5 * base else None
 
 
+#: the factor beyond which (or below whose inverse) a measured in-plane force against the model's is warned of as a unit
+DRAG_SIZE_WARN = 5.0
 #: the share of the points at incidence where a measured in-plane force of the other sign than the model's is refused
 #: (from DRAG_SIGN_WARNED of them it is warned of)
 DRAG_SIGN_REFUSED = 0.95
@@ -279,8 +281,8 @@ def _mirrored_incidence(data: LoadData, at_rpm, loads_at, warnings_: list) -> No
                                                                                        else " misses")
     if not np.any(data.incidence):
         warnings_.append(f"at {int(on.sum())} points at airspeed the {of} the model by {read:.2g} (rms, in units "
-                         f"of the measured loads) in axial climb, as the file reads them without an incidence, and "
-                         f"by {mirrored:.2g} in axial descent: are these descent data (a descent rate as the "
+                         f"of the measured loads) in axial climb, where the file has every point (at incidence 0), "
+                         f"and by {mirrored:.2g} in axial descent: are these descent data (a descent rate as the "
                          "airspeed)? write incidence_deg 180 for descending points (0 for climbing ones)")
         return
     warnings_.append(f"at {int(on.sum())} points at incidence the {of} the model by {read:.2g} (rms, in units "
@@ -317,6 +319,14 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
         warnings_.append(said + ("" if opposite >= 0.8 * sure.sum() else
                                  " (at part of the points: a sweep through negative angles given as magnitudes, or a "
                                  "body-fixed balance's normal force whose sign follows the angle's?)"))
+    # its size: an in-plane force in gf under a bare 'drag' header, read as N, was 102 times the model's and fitted,
+    # the flapping at its bound, with no word on the unit (a review, 2026-11-30); the model's in-plane force is within
+    # 0.5-2x of tunnels' (docs/validation.md), so only DRAG_SIZE_WARN beyond that is said
+    size = float(np.median(np.abs(data.measured["drag"][sure]) / np.abs(D[sure]))) if sure.sum() >= 3 else 1.0
+    if "drag" not in data.converted and not (1 / DRAG_SIZE_WARN <= size <= DRAG_SIZE_WARN):
+        warnings_.append(f"the measured in-plane force (drag) is {size:.3g} times the model's in the median at "
+                         f"{int(sure.sum())} points at incidence: is its unit given? it is read in N (a header "
+                         "'drag (gf)', 'drag_kgf' or 'Drag (lbf)' converts it)")
     _wind_axes(data, at_rpm, warnings_)
     # an in-plane force without an in-plane airspeed: an incidence the file does not give?
     Dm = data.measured["drag"]
@@ -616,8 +626,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     warnings_ += _moderate_mismatch(data, propeller, at_rpm, model.ratios, model.loads_at, pole_pairs, label)
     if speed_slip == "descent":
         return warnings_ + ["the measured thrust at airspeed matches the model far better in axial descent "
-                            "(incidence 180 deg) than in climb, as the file reads it without an incidence: are these "
-                            "descent data (a descent rate as the airspeed)? write an 'incidence_deg' column, 180 for "
+                            "(incidence 180 deg) than in climb, where the file has every point (at incidence 0): are "
+                            "these descent data (a descent rate as the airspeed)? write incidence_deg 180 for "
                             "descending points and 0 for climbing ones"]
     return warnings_ + ([f"the measured thrust at airspeed matches the model far better with the airspeed read as "
                          f"{speed_slip} (is the airspeed column in {speed_slip}? name its unit, e.g. "

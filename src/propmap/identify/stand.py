@@ -146,7 +146,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     _refuse_unread_flow(cm, split, bases, stems, error)
     if "collective_deg" not in cm.columns:
         _refuse_pitch_like(names, error)
-    if "thrust" not in cm.columns or "drag" not in cm.columns:
+    if "thrust" not in cm.columns or ("drag" not in cm.columns and "airspeed" in cm.columns):
         _note_unread_force(cm, split)
     if rpm_source is not None and f"rpm_{rpm_source}" not in cm.columns:
         raise error(f"rpm_source {rpm_source!r}: the file has no Motor {rpm_source.title()} Speed column; "

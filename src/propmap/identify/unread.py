@@ -25,10 +25,13 @@ _ANGLE_LIKE = ("alpha", "aoa", "angle of attack", "angle_of_attack", "disk angle
 _AXIAL_RATE_LIKE = ("vz", "v z", "vc", "v c", "climb rate", "climb speed", "descent rate", "descent speed",
                     "rate of climb", "rate of descent", "sink rate", "vertical speed", "vertical velocity",
                     "axial velocity", "axial speed", "axial flow speed",
-                    # (Vd, V_d, descent velocity and descent_velocity_m_s were left unread, every point static: a
-                    # wind-tunnel data audit, 2026-11-30)
-                    "vd", "v d", "v descent", "v climb", "descent velocity", "climb velocity", "descending velocity",
+                    # (descent velocity and descent_velocity_m_s were left unread, every point static: a wind-tunnel
+                    # data audit, 2026-11-30)
+                    "v descent", "v climb", "descent velocity", "climb velocity", "descending velocity",
                     "climbing velocity")
+#: a descent velocity's symbols, one only with a speed's unit (Vd (m/s), V_d_mps; a bare vd is a motor controller's
+#: d-axis voltage beside vq, id, iq: a review)
+_DESCENT_SYMBOLS = ("vd", "v d")
 #: a velocity's symbols, an airspeed where a speed's unit follows after an underscore (V_mps, U_ms, V_kmh were left
 #: unread, every point static: a wind-tunnel data audit, 2026-11-30); '_ms' is a millisecond after other names
 _VELOCITY_SYMBOLS = ("v", "u", "v0", "u0", "vel", "v tunnel", "u tunnel", "v air", "v wind", "v freestream")
@@ -40,7 +43,8 @@ _PITCH_LIKE = ("pitch", "pitch angle", "blade pitch", "blade angle", "collective
 #: tilt): a note; an angle's is refused beside an airspeed (the points move: an unread angle leaves them axial, a
 #: wind-tunnel data audit, 2026-11-27), and a J's or mu's where its values are not all 0 and no airspeed is read
 #: (loads_csv.read_loads: an axial sweep's J was read as static, the thrust 11-23% off)
-_AMBIGUOUS = {"v": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed", "angle": "incidence_deg",
+_AMBIGUOUS = {"v": "airspeed", "vd": "airspeed", "j": "airspeed", "mu": "airspeed", "tas": "airspeed",
+              "angle": "incidence_deg",
               "tilt": "incidence_deg", "tilt angle": "incidence_deg", "disk tilt": "incidence_deg",
               "disc tilt": "incidence_deg", "rotor tilt": "incidence_deg", "shaft tilt": "incidence_deg",
               "inclination": "incidence_deg",
@@ -111,7 +115,10 @@ def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: 
     if lift and "thrust" not in cm.columns:
         raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
                     "(with its unit) to fit it")
-    rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)]
+    rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)
+            or (split[n][0].replace("_", " ") in _DESCENT_SYMBOLS and split[n][1] is not None
+                and _token(split[n][1]) in UNITS["speed"])
+            or (split[n][1] is None and _speed_stem(split[n][0]) in _DESCENT_SYMBOLS)]
     if rate and "airspeed" in cm.columns and "incidence_deg" in cm.columns:
         cm.notes.append(f"column {rate[0]!r} (a climb or descent rate) is not read: the airspeed and the incidence "
                         "give the flow")
@@ -153,8 +160,12 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
         if like:
             joule = " (an energy in joules: give its unit, 'energy (J)')" if like[0].strip().lower() == "j" else ""
             unit = split[like[0]][1] if like[0] in split else None
+            suffix = like[0].strip()[len(_speed_stem(split[like[0]][0]) or ""):].lstrip("_ ") if (
+                unit is None and like[0] in split and _speed_stem(split[like[0]][0]) is not None) else ""
             if kind == "speed" and unit is not None and _token(unit) in UNITS[kind]:
                 todo = f"name it 'airspeed ({unit})' (its unit is read)"  # ('converted' misled for m/s: an audit)
+            elif kind == "speed" and suffix:  # (V_mps: likewise, a review)
+                todo = f"name it 'airspeed_{suffix}' (its unit is read)"
             else:
                 todo = "rename it, converted"
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: {todo}, or "
@@ -192,6 +203,9 @@ def _note_unread_force(cm: ColumnMap, split: dict) -> None:
     forces = [n for n, (b, u) in split.items() if b not in _NAMES and not _ACCELERATION_LIKE.search(b)
               and (_token(u) if u is not None else b.rsplit("_", 1)[-1] if "_" in b else "") in UNITS["force"]
               and (u is not None or not b.endswith("_n"))]
+    # (beside a thrust: where an airspeed is read, the in-plane force's sole place, and not a thrust's or a tare's own
+    # column: a static stand's 'Load Cell Left (kgf)', 'Tare weight (g)', 'Thrust std (N)' were told of, a review)
+    forces = [n for n in forces if "thrust" not in cm.columns or not re.search(r"thrust|tare", split[n][0])]
     if forces and "thrust" in cm.columns:
         cm.notes.append(f"column(s) {', '.join(map(repr, forces[:3]))} (a force) not read: if one is the in-plane "
                         "force (an H-force, a normal force), name it 'drag' with its unit to fit it (the force across "
