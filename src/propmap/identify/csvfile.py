@@ -117,6 +117,7 @@ _ROTOR_RE = re.compile(r"rpm_([1-9][0-9]{0,5})", re.ASCII)
 #: 2026-11-30)
 MISSING_MARKS = ("n/a", "na", "nan", "none", "null", "-", "--", "#n/a", "#na", "#value!", "#div/0!", "#num!",
                  "#ref!", "#null!", "#name?", "#spill!", "#calc!")
+_MISSING = frozenset(("", *MISSING_MARKS))
 #: the not-a-number forms C runtimes print (glibc '-nan', MSVC '-nan(ind)', '1.#QNAN', '1.#IND')
 _C_NAN = re.compile(r"nan(\([a-z0-9_]*\))?|1\.#(qnan|snan|ind)0*", re.ASCII)
 
@@ -132,12 +133,15 @@ def missing_mark(cell: str) -> bool:
     Returns
     -------
     bool
-        True for an empty cell, one of MISSING_MARKS or a C runtime's not-a-number (glibc
-        ``-nan``, MSVC ``-nan(ind)``, ``1.#QNAN``, ``1.#IND``), in any case and sign.
+        True for an empty cell, one of MISSING_MARKS, LibreOffice's ``Err:502`` or a C runtime's
+        not-a-number (glibc ``-nan``, MSVC ``-nan(ind)``, ``1.#QNAN``, ``1.#IND``), in any case and
+        sign.
     """
     low = cell.strip().lower().lstrip("+-")
-    # (LibreOffice's formula errors, Err:502: a review)
-    return low in ("", *MISSING_MARKS) or _C_NAN.fullmatch(low) is not None or re.fullmatch(r"err:\d+", low) is not None
+    # (LibreOffice's formula errors, Err:502: a review; called on every cell of a sampled log's loads, so the
+    # common cell, a number, leaves at the first test)
+    return (low in _MISSING or _C_NAN.fullmatch(low) is not None
+            or (low.startswith("err:") and low[4:].isdigit()))
 
 
 def _zero_or_empty(cell: str) -> bool:
