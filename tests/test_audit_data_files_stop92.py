@@ -332,3 +332,19 @@ def test_a_mean_torque_column_is_read_as_the_torque(tmp_path):
     text = "rpm,thrust (N),Mean torque (N*mm)\n" + "".join(
         f"{r},{t:.5g},{q * 1000:.5g}\n" for r, t, q in zip(range(4000, 10000, 1000), T, Q))
     assert read_loads(_write(tmp_path, text)).measured["torque"] == pytest.approx(Q, rel=1e-4)
+
+
+def test_an_angle_in_the_wrong_unit_or_a_negative_airspeed_gets_a_hint(capsys):
+    """rotor_loads(incidence=180.0) and airspeed=-5 were told the range alone, and `loads
+    --incidence-deg 3.14` was taken as 3.14 deg without a word (a wind-tunnel data audit)."""
+    from propmap.cli.main import main
+
+    prop, g = pm.load_propeller(PROP), pm.generic_params()
+    with pytest.raises(ValueError, match=r"got 180.0 \(in degrees\? 180 deg is 3.14159 rad"):
+        pm.rotor_loads(prop, g, 800.0, 5.0, 180.0)
+    with pytest.raises(ValueError, match=r"got -5.0 \(a descent given as a negative airspeed\? give its magnitude "
+                                         r"with incidence pi"):
+        pm.rotor_loads(prop, g, 800.0, -5.0, 0.0)
+    for value, told in (("3.14", True), ("1.5708", True), ("1.5", False), ("30", False)):
+        assert main(["loads", PROP, "--rpm", "6000", "--airspeed", "5", "--incidence-deg", value]) == 0
+        assert ("--incidence-deg " + value + ": in radians?" in capsys.readouterr().err) is told, value

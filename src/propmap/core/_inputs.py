@@ -46,6 +46,12 @@ def _range_error(name: str, value) -> ValueError:
         why = " (a signed rotation rate is refused: give its magnitude, and the sense as the rotor's spin)"
     if name == "incidence" and isinstance(value, float) and -math.pi <= value < 0:
         why = " (the model is symmetric in the incidence: give its magnitude)"
+    # (180.0 and -5.0 were told the range alone: a wind-tunnel data audit, 2026-11-30)
+    if name == "incidence" and isinstance(value, float) and math.pi < value <= 180.0:
+        why = f" (in degrees? {value:g} deg is {math.radians(value):.6g} rad: the incidence is in radians)"
+    if name == "airspeed" and isinstance(value, float) and value < 0:
+        why = (" (a descent given as a negative airspeed? give its magnitude with incidence pi: the incidence is "
+               "the angle between the airspeed and the rotor axis, pi for axial descent)")
     return ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got {value!r}{why}")
 
 
