@@ -348,3 +348,15 @@ def test_an_angle_in_the_wrong_unit_or_a_negative_airspeed_gets_a_hint(capsys):
     for value, told in (("3.14", True), ("1.5708", True), ("1.5", False), ("30", False)):
         assert main(["loads", PROP, "--rpm", "6000", "--airspeed", "5", "--incidence-deg", value]) == 0
         assert ("--incidence-deg " + value + ": in radians?" in capsys.readouterr().err) is told, value
+
+
+def test_the_vortex_ring_warning_of_a_file_without_groups_names_none(tmp_path):
+    """A file without a group column is one group, 'all': the warning said '(groups all)' and 'hold
+    them out', which --holdout all refuses."""
+    V = np.arange(0.0, 11.0, 1.0)
+    T, _, Q = _loads(np.full(V.size, 6000.0), V, 180.0)
+    text = "rpm,airspeed (m/s),incidence_deg,thrust (N),torque (N m)\n" + "".join(
+        f"6000,{v},180,{t:.5g},{q:.5g}\n" for v, t, q in zip(V, T, Q))
+    (w,) = [x for x in sanity_check(read_loads(_write(tmp_path, text)), pm.load_propeller(PROP))
+            if "vortex-ring" in x]
+    assert "(groups" not in w and "a 'group' column lets --holdout hold them out" in w

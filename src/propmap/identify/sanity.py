@@ -426,11 +426,14 @@ def _vortex_ring_warning(data: LoadData, at_rpm) -> list[str]:
     if vrs.sum() < max(2, 0.1 * data.n):
         return []
     groups = list(dict.fromkeys(str(g) for g in data.group[vrs]))
+    # (a file without groups is one group, 'all', which --holdout refuses: 'hold them out' misled, a data audit)
+    one = len(set(str(g) for g in data.group)) == 1
+    where = "" if one else f" (groups {', '.join(groups[:4])}{' ...' if len(groups) > 4 else ''})"
+    todo = ("leave them out of a fit (a 'group' column lets --holdout hold them out)" if one else
+            "hold them out or leave them out of a fit")
     return [f"{int(vrs.sum())} of {data.n} points lie in the vortex-ring or turbulent-wake state by the "
-            f"model (groups {', '.join(groups[:4])}{' ...' if len(groups) > 4 else ''}), where momentum "
-            "theory is not predictive (docs/models.md): a fit's section parameters would absorb their "
-            "errors at every other point; hold them out or leave them out of a fit (validate lists the "
-            "errors by state)"]
+            f"model{where}, where momentum theory is not predictive (docs/models.md): a fit's section parameters "
+            f"would absorb their errors at every other point; {todo} (validate lists the errors by state)"]
 
 
 def _rate_causes(data: LoadData, model: _ModelAt, n_blades: int) -> tuple[list[str], list[str]]:
