@@ -464,8 +464,10 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         a measured drag above 5% of the thrust at most points without an in-plane airspeed (an
         incidence the file does not give); a thrust and drag that match the model far better
         read in wind axes (:func:`_wind_axes`; said first among the causes where the data are
-        refused); a thrust (and drag) that match the model far better at 180 deg minus the
-        incidence (:func:`_mirrored_incidence`: a disk angle of attack read the other way round).
+        refused); loads that match the model far better at 180 deg minus the incidence, or, in
+        a 0-90 deg file, at 90 deg minus it, or in axial descent where every point is at incidence
+        0 (identify/incidence_checks.py: a disk angle of attack read the other way round, an angle
+        to the disk plane, descent data read as climb).
 
     Raises
     ------
