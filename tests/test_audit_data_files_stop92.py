@@ -380,3 +380,18 @@ def test_an_angle_from_the_disk_plane_is_warned_of(tmp_path):
         prop, data = pm.load_propeller(name), gill2019_loads(name)
         for params in (None, pm.resolve_params(f"calibrated:{name}")):
             assert not [w for w in sanity_check(data, prop, params=params) if "deg minus it" in w]
+
+
+def test_a_rate_in_rev_s_is_not_blamed_on_the_airspeed(tmp_path):
+    """An 'rpm' column in rev/s was refused as 'likely an airspeed in km/h ... or a rotation rate in
+    rev/s', though its static points, which no airspeed moves, were off as much: the rate alone."""
+    from propmap.identify import DataError
+
+    rpm = np.repeat([5000.0, 7000.0], 4)
+    V = np.tile([0.0, 4.0, 8.0, 12.0], 2)
+    T, _, Q = _loads(rpm, V, 0)
+    text = "rpm,airspeed,thrust,torque\n" + "".join(
+        f"{r / 60:.5g},{v},{t:.5g},{q:.5g}\n" for r, v, t, q in zip(rpm, V, T, Q))
+    with pytest.raises(DataError) as info:
+        sanity_check(read_loads(_write(tmp_path, text)), pm.load_propeller(PROP))
+    assert "a rotation rate in rev/s" in str(info.value) and "km/h" not in str(info.value)

@@ -368,6 +368,17 @@ def _swapped_columns(data: LoadData, at_rpm) -> bool:
                                       for m, other in ((data.measured["thrust"], Q), (data.measured["torque"], T))))
 
 
+def _static_off(data: LoadData, at_rpm) -> bool:
+    """Whether the data's static points (two or more) miss the model's thrust beyond SANITY_FACTOR
+    in the median: then no airspeed's unit is the cause (a rotation rate in rev/s read as rpm was
+    told 'an airspeed in km/h' first: a wind-tunnel data audit, 2026-11-30)."""
+    if "thrust" not in data.measured:
+        return False
+    T, Tm = at_rpm.thrust, data.measured["thrust"]
+    st = data.static & np.isfinite(T) & np.isfinite(Tm) & (np.abs(T) > 0)
+    return st.sum() >= 2 and not _plausible({"thrust": float(np.median(Tm[st] / T[st]))})
+
+
 def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, speed_slip,
              wind: bool = False, mirror: bool = False) -> DataError:
     """sanity_check's refusal of load data beyond SANITY_FACTOR of the model, with its likely cause
@@ -387,6 +398,8 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
               if not (fT != 1.0 and "thrust" not in ratio) and not (fQ != 1.0 and "torque" not in ratio)
               and not (declared and fT in _READ_AS_N)
               and _plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
+    if speed_slip and _static_off(data, at_rpm):
+        speed_slip = None  # (the static points, which no airspeed moves, are off too: _static_off)
     if speed_slip == "descent":
         causes.append("descent data read as climb (no incidence column: write incidence_deg 180 for descending "
                       "points)")
