@@ -110,6 +110,12 @@ def warn(message: str) -> None:
     click.echo(f"propmap: warning: {message}", err=True)
 
 
+def radians_like(value_deg: float) -> bool:
+    """Whether an incidence given in degrees is pi / 2 or pi to 2-5 digits (1.57, 3.14, 3.1416:
+    radians typed into a degrees option); a whole number of degrees is believed."""
+    return value_deg != round(value_deg) and any(abs(value_deg - k * math.pi / 2) < 0.005 for k in (1, 2))
+
+
 def load_prop(spec: str, diameter_in: float | None, blades: int | None):
     """The Propeller named by PROP (catalogue name or geometry file), with the file options.
 

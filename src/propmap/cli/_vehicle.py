@@ -96,7 +96,7 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
     from ..io.inputs import show_path
     from ..vehicle.file import rotor_file_specs
 
-    own, mine_set = (), None
+    own, mine, mine_loaded = (), None, None
     if params_spec is None:
         # (a rotor without a set of its own took the generic set where `loads`, `map` and `export-sim`
         # take its catalogue propeller's calibrated one: the example quadrotor's apce_8x6 rotors hovered
@@ -107,14 +107,17 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
                     default_params(n).label if n in catalogue() else None
                     for o, n in zip(rotor_file_specs(vehicle), names))
         own = tuple(None if o == "generic" else o for o in own)
-        mine_set = load_params(mine, option="--vehicle (its params)")[0] if mine is not None else None
+        mine_loaded = load_params(mine, option="--vehicle (its params)") if mine is not None else None
+    mine_set = mine_loaded[0] if mine_loaded else None
     spec = params_spec if params_spec is not None else (
         own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
     if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set, or the vehicle's)
         veh = replace(veh, rotors=[r if r.params is not None or o is None else
                                    replace(r, params=mine_set if mine_set is not None else default_params(n))
                                    for r, o, n in zip(veh.rotors, own, names)])
-    params, air, label = load_params("generic" if spec is None else spec, option="--params")
+    # (the vehicle's own set, where it is every rotor's, loaded once)
+    params, air, label = (mine_loaded if mine_loaded and spec == mine else
+                          load_params("generic" if spec is None else spec, option="--params"))
     if spec is None and mine_set is not None:  # (mixed: the vehicle's own set, fitted at its air, gives the air)
         air = mine_set.air
     sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)

@@ -409,18 +409,12 @@ def _fitted_to(sets, log_path, log_name: str) -> str:
     """How the one parameter file in ``sets`` (the rotors' set labels) was fitted to the log at
     ``log_path``: "by its content" where a flight fit's ``[coverage]`` lists the log's digest among
     its training logs' (``files_sha256``, since 2026-11-30), "by its name" where a file without
-    digests lists ``log_name`` among them (``groups``: the held-out ones are not there), else ""."""
-    import os
-
+    digests lists ``log_name`` among them (``groups``: the held-out ones are not there), else ""
+    (the set's coverage as the coverage warnings read it, once: :func:`set_coverage`)."""
     from ..io.atomic import file_sha256
-    from ..io.params_file import ParamsFileError, read_coverage
+    from ..io.params_file import set_coverage
 
-    if len(sets) != 1 or not os.path.isfile(label := next(iter(sets))):
-        return ""
-    try:
-        cov = read_coverage(label) or {}
-    except ParamsFileError:
-        return ""
+    cov = (set_coverage(next(iter(sets))) or {}) if len(sets) == 1 else {}
     if cov.get("data") != "flight logs":
         return ""
     if cov.get("files_sha256"):

@@ -12,8 +12,8 @@ import click
 from ..core.units import RPM
 from ._air import air_label, resolve_air, with_air_options
 from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg,
-                      check_point, check_section_match, echo_json, fixed, load_params, set_collective_deg, warn,
-                      with_prop_options)
+                      check_point, check_section_match, echo_json, fixed, load_params, radians_like, set_collective_deg,
+                      warn, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 
@@ -432,7 +432,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     airspeed = 0.0 if airspeed is None else airspeed
     incidence_deg = 0.0 if incidence_deg is None else incidence_deg
     check_point(rpm, airspeed, incidence_deg)
-    if airspeed > 0 and _looks_like_radians(incidence_deg):  # (3.14 was taken as 3.14 deg unsaid: a data audit)
+    if airspeed > 0 and radians_like(incidence_deg):  # (3.14 was taken as 3.14 deg unsaid: a data audit)
         warn(f"--incidence-deg {incidence_deg:g}: in radians? ({incidence_deg:g} rad is "
              f"{math.degrees(incidence_deg):.4g} deg; the option is in degrees)")
     collective_deg = check_collective(collective_deg)
@@ -467,18 +467,6 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
                    "units": {k: u for k, u in UNITS.items() if k in result}})
         return
     _echo_point(propeller, params, air, label, r, result, ratio, rpm, airspeed, incidence_deg, collective_deg, set_deg)
-
-
-def _looks_like_radians(incidence_deg: float) -> bool:
-    """Whether one incidence in degrees looks like radians: within (0, 3.15], not a whole degree,
-    and as radians within 0.035 deg of a whole degree (1.5708) or within 0.002 rad of a multiple of
-    15 deg (3.14, 1.57, 0.785: pi and its fractions to two or three decimals)."""
-    x = float(incidence_deg)
-    if not 0.0 < x <= 3.15 or abs(x - round(x)) < 1e-9:
-        return False
-    deg = math.degrees(x)
-    step = math.pi / 12
-    return abs(deg - round(deg)) <= 0.035 or abs(x - step * round(x / step)) <= 0.002
 
 
 def _points_command(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, points, out, as_json, prop_choice,

@@ -14,7 +14,8 @@ import click
 from ..core.units import RPM
 from ._air import resolve_air, with_air_options
 from ._common import (Command, warn, PARAMS_HELP, RPM_MAX, RPM_MIN, InputError, PathArg, check_section_match, echo_json,
-                      given, load_params, option_group, parse_names, set_collective_deg, with_prop_options)
+                      given, load_params, option_group, parse_names, radians_like, set_collective_deg,
+                      with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_out_dir, check_outputs, vehicle_inputs
 from ._sources import catalogue_citation
@@ -54,8 +55,8 @@ def parse_axis(option: str, text: str, lo: float, hi: float, unit: str):
 
 def radians_note(option: str, stop: float) -> None:
     """Warn where an incidence range in degrees ends at pi / 2 or pi to 2-5 digits (1.57, 3.14,
-    3.1416: radians typed into a degrees option); a whole number of degrees is believed."""
-    if stop != round(stop) and any(abs(stop - k * math.pi / 2) < 0.005 for k in (1, 2)):
+    3.1416: radians typed into a degrees option, :func:`radians_like`)."""
+    if radians_like(stop):
         warn(f"{option}: the incidences end at {stop:g} deg: radians? ({stop:g} rad = {math.degrees(stop):.4g} deg; "
              "the option takes degrees)")
 
