@@ -352,14 +352,20 @@ def _average_steps(v: dict, group, form: str, column: str, where: str, notes: li
     """(v, group) of a stand's "steps" test: one point per ESC step, its settling rows dropped
     (:func:`propmap.identify.steps.stand_points`), each step a group, with a note; DataError
     where no row has a speed, the signal never steps or no step settles."""
-    from .steps import stand_points
+    from .steps import CONDITION_TOL, ESC_TOL, NOISE_K, condition_tolerances, stand_points
 
     n = v["rpm"].size
     esc, time = v.pop("esc"), v.pop("time", None)
     if n and np.all(np.isnan(v["rpm"])):
         raise DataError(f"{where}: no rotation speed in any row")
     _one_signal(esc, v, group, form, column, where)
-    v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form)
+    cond_tol, noisy = condition_tolerances({q: v[q] for q in CONDITION_TOL if q in v}, esc, group, ESC_TOL[form])
+    unit = {"airspeed": "m/s", "incidence_deg": "deg", "collective_deg": "deg"}
+    for q, sigma in noisy.items():
+        notes.append(f"{q} is noisy ({sigma:.2g} {unit[q]} rms from row to row, a pitot's or a sensor's): a new step "
+                     f"starts where it moves by more than {cond_tol[q]:.2g} {unit[q]} ({NOISE_K:g} times its noise) "
+                     f"instead of {CONDITION_TOL[q]:g}, so levels closer than that are one step")
+    v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form, cond_tol=cond_tol)
     if not group.size:
         raise DataError(f"{where}: no ESC step reaches a steady rotation speed (within 2% over the second "
                         "half of the step)")

@@ -14,7 +14,7 @@ import numpy as np
 
 from .headers import _ESC_UNITS, _token
 
-__all__ = ["esc_form", "stand_points", "ESC_TOL", "CONDITION_TOL"]
+__all__ = ["esc_form", "stand_points", "condition_tolerances", "ESC_TOL", "CONDITION_TOL", "NOISE_K"]
 
 #: a new step starts where the ESC signal moves more than this from the step's first row [us]
 #: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
@@ -24,6 +24,16 @@ ESC_TOL_US = 2.0
 #: throttle in percent or as a fraction (2 us of the 1000 us span: 0.2% or 0.002)
 ESC_TOL = {"us": ESC_TOL_US, "pct": 0.2, "fraction": 0.002}
 CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
+#: a sampled log's noisy condition column (a tunnel's pitot: about 0.2 m/s rms at a few m/s,
+#: where its dynamic pressure is a few pascals) splits steps only where it moves more than
+#: this many times its rms noise: at 5, one row in about 2,500 of pure noise starts a step
+NOISE_K = 5.0
+#: a sampled log: its ESC signal holds a level for at least this many rows (the hold of its
+#: median row, so that the one-row steps of a ramp between holds do not count)
+_SAMPLED_HOLD = 10
+#: noise is what moves a column by at most this share of its range or of its typical value
+#: (larger sample-to-sample changes are the levels of a table, not noise)
+_NOISE_SHARE = 0.1
 
 
 def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | None]:
@@ -72,31 +82,123 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
                   "to say otherwise)")
 
 
-def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US) -> np.ndarray:
-    """Row index where each step starts (ESC signal within ``tol`` of the step's first row,
-    CONDITION_TOL, one label); :func:`_merge_steps` joins the pieces of a jittering one."""
+def condition_tolerances(conditions: dict, esc: np.ndarray, labels=None,
+                         tol: float = ESC_TOL_US) -> tuple[dict, dict]:
+    """Each operating condition's step tolerance in a stand log, widened where the column is noisy.
+
+    CONDITION_TOL, or ``NOISE_K`` times the column's rms noise where that is larger: a tunnel's
+    pitot read at 0.2 m/s rms noise split 12 steps of a log into 62 points with the fixed
+    0.3 m/s (a data audit, 2026-11-30; 14 at 0.1 m/s rms). The noise is estimated from the
+    second differences of the rows within each ESC level (a hold of one signal and label), and
+    only in a sampled log (half its rows in holds of 10 rows or more; an export of averaged
+    steps has one row per step), where the column moves at most rows and turns back at half of
+    its moves or more (noise: 2 in 3; a table's levels stay put or run one way) and where the
+    noise is at most a tenth of the column's range or of its median size. So levels of a noisy
+    column closer than the widened tolerance are one step.
+
+    Parameters
+    ----------
+    conditions : dict
+        quantity (a key of CONDITION_TOL) -> ndarray, shape (N,), rows in file order.
+    esc : ndarray, shape (N,)
+        The ESC signal.
+    labels : sequence of str, shape (N,), optional
+        A run label per row.
+    tol : float
+        The ESC signal's tolerance (ESC_TOL of its form).
+
+    Returns
+    -------
+    (dict, dict)
+        quantity -> tolerance (in the column's unit), and quantity -> rms noise for the
+        columns whose tolerance was widened (empty where none was).
+    """
+    holds = _step_starts(esc, {}, labels, tol)  # the ESC signal's levels alone
+    bounds = list(zip(holds, [*holds[1:], esc.size]))
+    sizes = [b - a for a, b in bounds]
+    out, noisy = dict(CONDITION_TOL), {}
+    if not sizes or float(np.median(np.repeat(sizes, sizes))) < _SAMPLED_HOLD:  # (the hold of the median row)
+        return {q: out[q] for q in conditions}, noisy
+    for q, a in conditions.items():
+        a = np.asarray(a, float)
+        # within each hold, of finite nonzero rows (a pitot clipped at 0 at rest is not noise)
+        rows = [x[np.isfinite(x) & (x != 0)] for x in (a[i:j] for i, j in bounds)]
+        d1 = [np.diff(x) for x in rows if x.size >= 3]
+        if not d1 or sum(d.size for d in d1) < 10:
+            continue
+        moves = np.concatenate([d[d != 0] for d in d1])
+        turns = np.concatenate([np.sign(d[d != 0])[1:] != np.sign(d[d != 0])[:-1] for d in d1])
+        # noise moves nearly every row and turns back 2 times in 3; a table's levels stay put or run one way
+        if moves.size < 0.5 * sum(d.size for d in d1) or not turns.size or turns.mean() < 0.5:
+            continue
+        d2 = np.concatenate([np.diff(x, 2) for x in rows if x.size >= 3])
+        sigma = float(1.4826 * np.median(np.abs(d2)) / np.sqrt(6.0))
+        scale = max(float(np.nanmax(a) - np.nanmin(a)), float(np.median(np.abs(np.concatenate(rows)))))
+        if NOISE_K * sigma > CONDITION_TOL[q] and sigma <= _NOISE_SHARE * scale:
+            out[q], noisy[q] = NOISE_K * sigma, sigma
+    return {q: out[q] for q in conditions}, noisy
+
+
+def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL_US,
+                 cond_tol: dict | None = None) -> np.ndarray:
+    """Row index where each step starts (ESC signal within ``tol`` of the step's first row, the
+    conditions within ``cond_tol`` (default CONDITION_TOL) of the step's first row, one label;
+    then, inside each such step, a column whose tolerance was widened for its noise within it of
+    the mean of the step's rows so far: :func:`_noisy_starts`); :func:`_merge_steps` joins the
+    pieces of a jittering one."""
+    cond_tol = cond_tol or CONDITION_TOL
+    noisy = {q for q in conditions if cond_tol[q] > CONDITION_TOL[q]}
     starts = [0]
     ref = 0
-    cond = [(np.asarray(a, float), CONDITION_TOL[q]) for q, a in conditions.items()]
+    cond = [(np.asarray(a, float), cond_tol[q]) for q, a in conditions.items() if q not in noisy]
     for i in range(1, esc.size):
         if (abs(esc[i] - esc[ref]) > tol or any(abs(a[i] - a[ref]) > c_tol for a, c_tol in cond)
                 or (labels is not None and labels[i] != labels[ref])):
             starts.append(i)
             ref = i
-    return np.array(starts)
+    if not noisy:
+        return np.array(starts)
+    columns = [(np.asarray(conditions[q], float), cond_tol[q]) for q in noisy]
+    return np.array([k for a, b in zip(starts, [*starts[1:], esc.size]) for k in _noisy_starts(columns, a, b)])
 
 
-def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: float) -> list:
+def _noisy_starts(columns: list, first: int, stop: int) -> list:
+    """Step starts in rows [first, stop) by noisy columns ((values, tolerance) pairs): a row
+    more than the tolerance from the mean of its step's finite rows before it starts a step.
+    Searched in windows of rows that grow fourfold, in whole-array operations."""
+    starts, ref, width = [first], first, 16
+    while ref < stop - 1:
+        end = min(stop, ref + 1 + width)
+        moved = np.zeros(end - ref - 1, bool)
+        for a, c_tol in columns:
+            seg = a[ref:end]
+            finite = np.isfinite(seg)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                mean = np.cumsum(np.where(finite, seg, 0.0))[:-1] / np.cumsum(finite)[:-1]
+                moved |= np.abs(seg[1:] - mean) > c_tol  # (NaN compares False: a missing cell moves nothing)
+        hit = np.flatnonzero(moved)
+        if hit.size:
+            ref += 1 + int(hit[0])
+            starts.append(ref)
+            width = 16
+        elif end == stop:
+            break
+        else:
+            width *= 4
+    return starts
+
+
+def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: float, cond_tol: dict) -> list:
     """Neighbouring steps (row ranges [a, b)) joined where their medians agree within ``2 tol``
     (the ESC signal: two pieces of one step whose readback jitters by +-tol) and within
-    CONDITION_TOL (the operating conditions) and their label is one: a +-2 us jitter split 16
+    ``cond_tol`` (the operating conditions) and their label is one: a +-2 us jitter split 16
     steps into 104 (a thrust-stand export audit, 2026-11-27; 16 again since). So signal levels
     closer than 2 tol (4 us, 0.4%, 0.004) are one step."""
     merged = [steps[0]] if steps else []
     for a, b in steps[1:]:
         pa, pb = merged[-1]
         if ((labels is None or labels[a] == labels[pa]) and abs(np.median(esc[a:b]) - np.median(esc[pa:pb])) <= 2 * tol
-                and all(abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= CONDITION_TOL[q]
+                and all(abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= cond_tol[q]
                         for q, x in conditions.items())):
             merged[-1] = (pa, b)
         else:
@@ -104,7 +206,17 @@ def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: fl
     return merged
 
 
-def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels) -> set:
+def _one_condition(x: np.ndarray, steps: list, tol: float, fixed: float) -> bool:
+    """Whether the rows of ``steps`` (a ramp and the steps around it) are at one condition: their
+    values within ``tol`` of each other, or, for a column whose tolerance was widened for its noise
+    (``tol`` above its ``fixed`` one), each step's median within ``tol`` of the first's."""
+    if tol <= fixed:
+        return bool(np.ptp(x[steps[0][0]:steps[-1][1]]) <= tol)
+    first = np.median(x[steps[0][0]:steps[0][1]])
+    return all(abs(np.median(x[a:b]) - first) <= tol for a, b in steps[1:])
+
+
+def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dict) -> set:
     """The indexes of the steps that are the signal ramping from one step to the next: a run of
     steps of one or two rows between two steps of five rows or more, at their operating
     condition and label, whose signals lie between the two's (each ramp row was a "step" of its
@@ -125,9 +237,9 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels) -> set:
         before, after = j - 1, end  # the long steps around the run [j, end)
         if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
             lo, hi = sorted((level[before], level[after]))
-            first = steps[before][0]
             same = ((labels is None or len({labels[steps[i][0]] for i in range(before, after + 1)}) == 1)
-                    and all(np.ptp(x[first:steps[after][1]]) <= CONDITION_TOL[q] for q, x in conditions.items()))
+                    and all(_one_condition(x, steps[before:after + 1], cond_tol[q], CONDITION_TOL[q])
+                            for q, x in conditions.items()))
             if same and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
                 out.update(range(j, end))
         j = end
@@ -135,11 +247,11 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels) -> set:
 
 
 def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, settle: float = 0.5,
-                 steady: float = 0.02, labels=None, form: str = "us"):
+                 steady: float = 0.02, labels=None, form: str = "us", cond_tol: dict | None = None):
     """One averaged point per ESC step of a thrust-stand "steps" test.
 
     Consecutive rows with one ESC signal (within ESC_TOL[form] of the step's first row) and one
-    operating condition (airspeed, incidence, collective within CONDITION_TOL; the same
+    operating condition (airspeed, incidence, collective within ``cond_tol``; the same
     ``labels``) form a step; neighbouring steps whose signals' medians agree within twice its
     tolerance (a jittering readback) and whose conditions agree within theirs are one. Of each
     step the first ``settle``
@@ -165,6 +277,9 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
     form : {"us", "pct", "fraction"}
         The ESC signal's form (:func:`esc_form`): its tolerance and the labels' unit
         (``step<k>_<esc>us``, ``step<k>_<esc>pct``, ``step<k>_<esc>``).
+    cond_tol : dict, optional
+        quantity -> tolerance of the operating conditions; default
+        :func:`condition_tolerances` (CONDITION_TOL, widened for a noisy column of a sampled log).
 
     Returns
     -------
@@ -174,9 +289,12 @@ def stand_points(values: dict, esc: np.ndarray, time: np.ndarray | None, *, sett
         the steps dropped as unsteady.
     """
     conditions = {q: np.asarray(values[q], float) for q in CONDITION_TOL if q in values}
-    starts = _step_starts(esc, conditions, labels, ESC_TOL[form])
-    steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form])
-    ramp = _ramps(steps, esc, conditions, labels)
+    if cond_tol is None:
+        cond_tol = condition_tolerances(conditions, esc, labels, ESC_TOL[form])[0]
+    starts = _step_starts(esc, conditions, labels, ESC_TOL[form], cond_tol)
+    steps = _merge_steps(list(zip(starts, [*starts[1:], esc.size])), esc, conditions, labels, ESC_TOL[form],
+                         cond_tol)
+    ramp = _ramps(steps, esc, conditions, labels, cond_tol)
     out = {k: [] for k in values}
     groups, dropped, unsteady = [], 0, []
     k = 0

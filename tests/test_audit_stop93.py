@@ -1,0 +1,76 @@
+"""Load files read the wrong way, found at stop 93 (2026-12-01) among what stop 92 left alone. Each
+test fails on the code before its fix; the guards say so. Data: loads made by propmap's model for
+the catalogue's APC 8x6E (UIUC geometry) with its calibrated set, so that the right reading matches
+the model to the noise."""
+
+import math
+
+import numpy as np
+import pytest
+
+import propmap as pm
+from propmap.identify import read_loads
+from propmap.identify.steps import CONDITION_TOL, condition_tolerances
+
+PROP = "apce_8x6"
+
+
+def _tunnel_log(path, sigma, seed=0):
+    """A stand log through a tunnel's speeds, its pitot read with ``sigma`` m/s rms of noise (clipped
+    at 0 at rest, as a pitot's reading is): 4 ESC steps x 3 airspeeds (0, 4, 8 m/s), 30 rows each."""
+    rng = np.random.default_rng(seed)
+    p, prop = pm.resolve_params(f"calibrated:{PROP}"), pm.load_propeller(PROP)
+    rows, t = [], 0.0
+    for esc, rpm in zip(range(1200, 2000, 200), (4000, 5500, 7000, 8500)):
+        for V in (0.0, 4.0, 8.0):
+            r = pm.rotor_loads(prop, p, rpm * math.pi / 30, V, 0.0)
+            for _ in range(30):
+                a = max(V + sigma * rng.standard_normal(), 0.0)
+                rows.append(f"{t:.1f},{esc},{float(r.thrust):.5g},{float(r.torque):.5g},{rpm},{a:.3f}")
+                t += 0.1
+    head = "Time (s),ESC signal (µs),Thrust (N),Torque (N·m),Motor Optical Speed (RPM),Airspeed (m/s)\n"
+    path.write_text(head + "\n".join(rows) + "\n", encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("sigma", [0.1, 0.2, 0.4])
+def test_a_noisy_pitot_does_not_split_a_tunnel_steps(tmp_path, sigma):
+    """A pitot's noise of 0.2 m/s rms (its dynamic pressure is a few pascals at 4 m/s) split the 12
+    steps of a tunnel log into 62 points (14 at 0.1 m/s, 160 at 0.4), each fragment a point; the
+    tolerance now grows with the column's noise (5 times it), and a note says so."""
+    data = read_loads(_tunnel_log(tmp_path / "log.csv", sigma))
+    assert data.n == 12, data.notes
+    assert np.allclose(np.sort(data.airspeed), np.repeat([0.0, 4.0, 8.0], 4), atol=0.25)
+    assert any(n.startswith("airspeed is noisy (") for n in data.notes), data.notes
+
+
+def test_a_noisy_pitot_at_one_speed_keeps_the_ramps_between_steps_out(tmp_path):
+    """One airspeed (5 m/s, 0.3 m/s rms) through 14 ESC steps with a 4-row ramp between each: 176
+    points before (every noisy row a step, the ramps' rows too); 14 now, the ramps dropped."""
+    rng = np.random.default_rng(3)
+    p, prop = pm.resolve_params(f"calibrated:{PROP}"), pm.load_propeller(PROP)
+    rows, t = [], 0.0
+    for k, (esc, rpm) in enumerate(zip(range(1200, 1900, 50), range(3000, 10000, 500))):
+        ramp = [(esc - 50 + 10 * j, rpm - 500 + 100 * j, 0.0, 0.0) for j in range(1, 5)] if k else []
+        r = pm.rotor_loads(prop, p, rpm * math.pi / 30, 5.0, 0.0)
+        for e, n, T, Q in ramp + [(esc, rpm, float(r.thrust), float(r.torque))] * 20:
+            rows.append(f"{t:.1f},{e},{n},{T:.5g},{Q:.5g},{5 + 0.3 * rng.standard_normal():.3f}")
+            t += 0.1
+    path = tmp_path / "ramps.csv"
+    path.write_text("Time (s),ESC signal (µs),rpm,Thrust (N),Torque (N·m),Airspeed (m/s)\n" + "\n".join(rows) + "\n",
+                    encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == 14 and np.allclose(data.omega * 30 / math.pi, range(3000, 10000, 500))
+    assert np.allclose(data.airspeed, 5.0, atol=0.25)
+
+
+def test_a_quiet_pitot_and_a_tables_levels_keep_the_fixed_tolerance():
+    """Guards (pass before the fix too): noise of 0.03 m/s rms is below the fixed 0.3 m/s over 5,
+    and the levels of a table (one row each, or a tunnel's short steps at one signal) are not noise."""
+    rng = np.random.default_rng(1)
+    quiet = np.repeat([0.0, 4.0, 8.0], 30) + 0.03 * rng.standard_normal(90)
+    assert condition_tolerances({"airspeed": quiet}, np.full(90, 1500.0))[1] == {}
+    for levels in (np.tile([0.0, 5.0, 10.0], 10), np.repeat(np.arange(0.0, 22.0, 2.0), 2),
+                   np.arange(0.0, 20.0, 0.5)):
+        tol, noisy = condition_tolerances({"airspeed": levels}, np.full(levels.size, 1500.0))
+        assert noisy == {} and tol == {"airspeed": CONDITION_TOL["airspeed"]}, levels
