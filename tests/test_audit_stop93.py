@@ -74,3 +74,54 @@ def test_a_quiet_pitot_and_a_tables_levels_keep_the_fixed_tolerance():
                    np.arange(0.0, 20.0, 0.5)):
         tol, noisy = condition_tolerances({"airspeed": levels}, np.full(levels.size, 1500.0))
         assert noisy == {} and tol == {"airspeed": CONDITION_TOL["airspeed"]}, levels
+
+
+def _stand_table(units_row, header="rpm,thrust,torque", scale=(1.0, 1.0)):
+    """The APC 8x6E's static loads at 3000-8000 rpm under ``header`` and a row of units."""
+    rpm = np.arange(3000.0, 9000.0, 1000.0)
+    T, _, Q = _loads(rpm)
+    rows = "".join(f"{r:.0f},{t * scale[0]:.6g},{q * scale[1]:.6g}\n" for r, t, q in zip(rpm, T, Q))
+    return f"{header}\n{units_row}\n{rows}", T, Q
+
+
+def _loads(rpm):
+    p = pm.resolve_params(f"calibrated:{PROP}")
+    r = pm.rotor_loads(pm.load_propeller(PROP), p, np.asarray(rpm) * math.pi / 30, 0.0, 0.0)
+    return r.thrust, r.drag, r.torque
+
+
+@pytest.mark.parametrize("units, scale", [("RPM,N,N·m", (1.0, 1.0)), ("[rev/min],[g],[N·mm]", (1000 / 9.80665, 1000.0)),
+                                          ("(1/min), (kgf) , (kgf·cm)", (1 / 9.80665, 100 / 9.80665))])
+def test_a_row_of_units_under_the_header_gives_the_columns_units(tmp_path, units, scale):
+    """A data logger's row of units under the header (a thrust-stand data audit, 2026-11-30) was
+    refused as 'not a number'; it is read as the columns' units, converted, with a note."""
+    text, T, Q = _stand_table(units, scale=scale)
+    path = tmp_path / "u.csv"
+    path.write_text(text, encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.measured["thrust"], T, rtol=1e-5) and np.allclose(data.measured["torque"], Q, rtol=1e-5)
+    assert any("line 2 read as the columns' units (" in n for n in data.notes), data.notes
+
+
+def test_a_units_row_repeating_the_names_units_is_skipped_and_a_contradicting_one_refused(tmp_path):
+    text, T, _ = _stand_table("rpm,N,N m", header="Speed (rpm),Thrust (N),Torque (N·m)")
+    path = tmp_path / "u.csv"
+    path.write_text(text, encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.measured["thrust"], T, rtol=1e-5)
+    assert any("line 2 repeats the units the columns' names give" in n for n in data.notes), data.notes
+    path.write_text(text.replace("rpm,N,N m", "rpm,kgf,N m"), encoding="utf-8")
+    with pytest.raises(ValueError, match=r"line 2: the row of units under the header gives 'kgf' for column "
+                                         r"'Thrust \(N\)', whose name gives another unit"):
+        read_loads(path)
+
+
+def test_a_first_row_of_text_and_numbers_is_no_units_row(tmp_path):
+    """Guard (passes before too): a label column's text beside numbers is a data row."""
+    text, T, _ = _stand_table("", header="prop,rpm,thrust (N),torque (N m)")
+    lines = text.split("\n")
+    body = "\n".join(["prop,rpm,thrust (N),torque (N m)"] + [f"APC 8x6E,{ln}" for ln in lines[2:] if ln]) + "\n"
+    path = tmp_path / "t.csv"
+    path.write_text(body, encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == 6 and not any("units" in n for n in data.notes)

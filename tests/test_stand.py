@@ -224,9 +224,18 @@ def test_a_throttle_unit_it_does_not_know_falls_back_to_the_values(tmp_path, hea
         assert any("unit 'PWM' not known" in n and "percent" in n for n in data.notes), data.notes
 
 
-def test_a_row_of_units_under_the_header_is_named_as_such(tmp_path):
+def test_a_row_of_units_under_the_header_is_read_as_the_units(tmp_path):
+    """A data logger's row of units under the header was refused ("'RPM' is not a number (a row of
+    units under the header? ...)", until 2026-12-01); it is now read as the columns' units, with a
+    note. A row with one cell is no units row: its cell is still named as one."""
     path = tmp_path / "u.csv"
-    path.write_text("rpm,thrust,torque\nRPM,N,N m\n3000,0.9,0.01\n4000,1.6,0.02\n")
+    rows = "".join(f"{r},{r * r * 1e-7:.5g},{r * r * 2e-9:.5g}\n" for r in range(3000, 9000, 1000))
+    path.write_text("rpm,thrust,torque\nRPM,N,N m\n" + rows)
+    data = read_loads(path)
+    assert data.n == 6 and data.measured["thrust"][0] == pytest.approx(0.9)
+    assert any("line 2 read as the columns' units ('rpm (RPM)', 'thrust (N)', 'torque (N m)')" in n
+               for n in data.notes), data.notes
+    path.write_text("rpm,thrust,torque\nRPM,,\n" + rows)
     with pytest.raises(DataError, match=r"line 2: column 'rpm': 'RPM' is not a number \(a row of units"):
         read_loads(path)
     path.write_text("rpm,thrust,torque\n3000,0.9,0.01\n4000,x1.6,0.02\n")  # a later bad cell: no such hint

@@ -206,15 +206,22 @@ class _Csv:
                 joined.append(r)
         head, *rows = [r.decode("utf-8", "replace") for r in joined if r.strip()][:2] or [""]
         self.sep = header_separator(head, rows[0] if rows else None)
-        self.header_line = 0
+        self.header_line = self.units_line = 0
         self.columns: list[str] = []
-        for line, cells in self._rows():
+        rows = self._rows()
+        for line, cells in rows:
             self.header_line = line
             self.header = [c.strip() for c in cells]  # as written, for messages and unit parsing
             self.columns = [c.lower() for c in self.header]  # names match in any case
             break
         if not self.header_line:
             raise self.error("empty file (no header line)")
+        try:
+            under = next(rows)
+        except (StopIteration, DataError):  # (no row under it, or one that does not parse: the reader says so)
+            under = None
+        if under is not None:
+            self._units_row(*under)
         seen: dict[str, int] = {}
         for j, c in enumerate(self.columns, start=1):
             if len(c) > MAX_NAME:
@@ -226,6 +233,27 @@ class _Csv:
                                  self.header_line)
             seen[c] = j
         self.index = {c: j - 1 for c, j in seen.items() if c}  # named column -> 0-based index
+
+    def _units_row(self, line: int, cells: list[str]) -> None:
+        """The row under the header read as the columns' units where it is one
+        (:func:`propmap.identify.headers.units_row`): merged into the header's names, with a note,
+        and skipped by :meth:`read`; a unit that contradicts a name's own is refused."""
+        from .headers import units_row
+
+        merged = units_row(self.header, cells)
+        if merged is None:
+            return
+        header, conflicts = merged
+        if conflicts:
+            j, name, unit = conflicts[0]
+            raise self.error(f"the row of units under the header gives {_short(unit)} for column {_short(name)}, "
+                             "whose name gives another unit: write one", line)
+        self.units_line = line
+        self.notes.append(f"{self.name}: line {line} read as the columns' units (" + ", ".join(
+            _short(h) for h, old in zip(header, self.header) if h != old) + ")" if header != self.header else
+            f"{self.name}: line {line} repeats the units the columns' names give: not read as data")
+        self.header = header
+        self.columns = [c.lower() for c in header]
 
     def after_preamble(self, accepts, max_lines: int = PREAMBLE_MAX_LINES) -> _Csv | None:
         """This file read with its header further down: the first of the next ``max_lines``
@@ -331,6 +359,8 @@ class _Csv:
         grouped: dict = {}
         rows = self._rows()
         next(rows)  # the header
+        if self.units_line:
+            next(rows)  # its units, merged into it
         first_cells = last_cells = last_line = None
         unnamed = unnamed_columns(self.columns)
         read_at = {j for _, j in cols}

@@ -196,6 +196,61 @@ def _token(unit: str) -> str:
     return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("â", "").replace("µ", "u").replace("μ", "u"))
 
 
+#: units of a stand's other channels, which a row of units under the header gives beside UNITS' ones (tokens)
+_OTHER_UNITS = frozenset(("s", "ms", "us", "min", "h", "v", "mv", "a", "ma", "w", "kw", "%", "pct", "c", "°c", "degc",
+                          "k", "pa", "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1"))
+
+
+def units_row(header: list[str], cells: list[str]) -> tuple[list[str], list[tuple[int, str, str]]] | None:
+    """A row of units under a header merged into it ('rpm' over 'rev/min' -> 'rpm (rev/min)'), or None.
+
+    The row is one of units where no cell is a number, at least two cells are given, each under a
+    named column and none longer than 16 characters, and more than half of them are units propmap
+    knows (UNITS', or a stand's other channels': s, V, A, W, %, °C, Pa, ...). A cell in
+    brackets, ``[N]``, is read without them; ``-`` and ``1`` (no unit) count as units and add
+    none. A column whose name carries a unit keeps it (a data logger's export, which writes both:
+    a thrust-stand data audit, 2026-11-30, found such a row
+    refused as "not a number").
+
+    Parameters
+    ----------
+    header : list of str
+        The header's cells, as written.
+    cells : list of str
+        The row under it.
+
+    Returns
+    -------
+    (list of str, list of (int, str, str)) or None
+        The header with the row's units in brackets, and the columns (index, name, the row's
+        unit) whose name gives another unit than the row (the caller refuses those); None where
+        the row is no units row.
+    """
+    given = [(j, c.strip()) for j, c in enumerate(cells) if c.strip()]
+    if len(given) < 2 or any(len(c) > 16 or j >= len(header) or not header[j].strip() for j, c in given):
+        return None
+    for _, c in given:
+        try:
+            float(c.replace(",", "."))
+            return None
+        except ValueError:
+            pass
+    bare = [(j, re.sub(r"^[(\[](.*)[)\]]$", r"\1", c).strip()) for j, c in given]
+    known = {t for kind in UNITS.values() for t in kind} | _OTHER_UNITS
+    if 2 * sum(_token(u) in known for _, u in bare) <= len(bare):
+        return None
+    out, conflicts = list(header), []
+    for j, unit in bare:
+        if _token(unit) in ("", "1"):
+            continue
+        own = split_header(out[j])[1]
+        if own is None:
+            out[j] = f"{out[j].strip()} ({unit})"
+        elif _token(own) != _token(unit):
+            conflicts.append((j, out[j], unit))
+    return out, conflicts
+
+
 def split_header(name: str) -> tuple[str, str | None]:
     """The quantity and the unit of a column name: ``Thrust (kgf)``, ``thrust [N]``,
     ``Thrust, N``, ``thrust_kgf``; a trailing ``_<unit>`` counts only when the unit is a known one.
