@@ -125,3 +125,52 @@ def test_a_first_row_of_text_and_numbers_is_no_units_row(tmp_path):
     path.write_text(body, encoding="utf-8")
     data = read_loads(path)
     assert data.n == 6 and not any("units" in n for n in data.notes)
+
+
+def _table(rows, sep=",", head="rpm,thrust (g),torque (N m)"):
+    return head.replace(",", sep) + "\n" + "".join(sep.join(r) + "\n" for r in rows)
+
+
+def _static_rows():
+    rpm = np.arange(3000.0, 9000.0, 1000.0)
+    T, _, Q = _loads(rpm)
+    return rpm, T * 1000 / 9.80665, Q
+
+
+def test_quoted_thousands_in_a_comma_separated_file_are_read(tmp_path):
+    """A spreadsheet's comma-separated save of numbers formatted with thousands separators quotes
+    them, "3,000"; refused as 'not a number' until 2026-12-01, now read, with a note. A quoted
+    decimal comma, "0,5", is still refused, and told so."""
+    rpm, T_g, Q = _static_rows()
+    rows = [(f'"{r:,.0f}"', f'"{t:,.1f}"', f"{q:.5f}") for r, t, q in zip(rpm, T_g, Q)]
+    path = tmp_path / "q.csv"
+    path.write_text(_table(rows), encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.omega * 30 / math.pi, rpm)
+    assert np.allclose(data.measured["thrust"], np.round(T_g, 1) * 9.80665e-3, rtol=1e-9)
+    assert any("commas read as thousands separators (line 2: 3,000 read as 3000)" in n for n in data.notes)
+    rows[2] = (rows[2][0], '"0,5"', rows[2][2])
+    path.write_text(_table(rows), encoding="utf-8")
+    with pytest.raises(ValueError, match=r"'0,5' is not a number \(a decimal comma\? a comma-separated file"):
+        read_loads(path)
+
+
+def test_points_grouping_thousands_beside_decimal_commas_are_read(tmp_path):
+    """A German spreadsheet's ';' file with its rpm as 3.000 and its loads with decimal commas was
+    refused ("decimal commas and points in one file"); beside decimal commas such a point is a
+    thousands separator, and is read as one, with a note (1.234,5 too). A point that groups no
+    thousands beside decimal commas is still refused."""
+    rpm, T_g, Q = _static_rows()
+    rows = [(f"{r:,.0f}".replace(",", "."), f"{t:.1f}".replace(".", ","), f"{q:.5f}".replace(".", ","))
+            for r, t, q in zip(rpm, T_g, Q)]
+    rows[-1] = ("8.000,0", *rows[-1][1:])
+    path = tmp_path / "de.csv"
+    path.write_text(_table(rows, ";"), encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.omega * 30 / math.pi, rpm)
+    assert any("points read as thousands separators beside the file's decimal commas (column 'rpm', line 2: 3.000 "
+               "read as 3000)" in n for n in data.notes), data.notes
+    rows[0] = ("3000.5", *rows[0][1:])
+    path.write_text(_table(rows, ";"), encoding="utf-8")
+    with pytest.raises(ValueError, match="decimal commas .* and points .* in one file"):
+        read_loads(path)

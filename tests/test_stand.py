@@ -977,20 +977,21 @@ def test_an_export_resaved_with_semicolons_and_decimal_commas_reads_the_same(tmp
     np.testing.assert_array_equal(b.omega, a.omega)
     for k in a.measured:
         np.testing.assert_array_equal(b.measured[k], a.measured[k])
-    # a cell with both marks is not guessed at
+    # beside decimal commas a point before groups of three digits is a thousands separator (1.234,5 and 7.000 read
+    # as 1234.5 and 7000 since 2026-12-01, with a note; refused before): here the ESC signal
     lines = resaved.read_text(encoding="utf-8-sig").splitlines()
     cells = lines[5].split(";")
-    cells[0] = "1.234,5"
-    lines[5] = ";".join(cells)
-    resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
-    with pytest.raises(DataError, match="line 6.*is not a number"):
-        read_loads(resaved)
-    # a point beside decimal commas is a thousands separator (7.000 meaning 7000): refused
-    cells[0] = "7.000"
-    lines[5] = ";".join(cells)
-    resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
-    with pytest.raises(DataError, match=r"decimal commas \(line 2, .*points \(line 6"):
-        read_loads(resaved)
+    esc = float(cells[1])
+    for cell, value in ((f"{esc / 1000:.3f},0".replace(".", ",").replace(",", ".", 1), esc), ("7.5", None)):
+        cells[1] = cell
+        lines[5] = ";".join(cells)
+        resaved.write_text("\n".join(lines) + "\n", encoding="utf-8-sig")
+        if value is None:  # any other point beside decimal commas: refused
+            with pytest.raises(DataError, match=r"decimal commas \(line 2, .*points \(line 6"):
+                read_loads(resaved)
+        else:
+            c = read_loads(resaved)
+            assert c.n == a.n and any("points read as thousands separators" in n for n in c.notes), c.notes
     # old Mac line ends (CR only): the separator is still read from the first line
     resaved.write_text("\r".join(text.replace(",", ";").replace(".", ",").splitlines()) + "\r", encoding="utf-8-sig")
     np.testing.assert_array_equal(read_loads(resaved).measured["thrust"], a.measured["thrust"])

@@ -342,12 +342,16 @@ class _Csv:
         optical speed ``NaN`` in every row was refused while the same column left empty was read:
         a thrust-stand export audit, 2026-11-27). A cell of a column in ``percent`` may end in ``%``
         (``50%``, ``62.5 %``: a motor maker's table of throttle settings): read without it, and the
-        column is added to ``self.percent_cells``. With ``mean_row``, a last row that is the mean of
+        column is added to ``self.percent_cells``. A comma-separated file's quoted cell that groups
+        thousands with commas (``"3,000"``, ``"1,234.5"``) and, beside decimal commas, a ';'- or
+        tab-separated file's point before groups of three digits (``3.000``, ``1.234,5``) are read
+        as thousands separators, with a note in ``self.read_notes``. With ``mean_row``, a last row that is the mean of
         the rows above is refused (:meth:`_refuse_mean_row`: load data, whose loads grow as the
         rotation rate's square; a points file's design point at the centre of its grid is none). A
         last row labelled as a summary in a column not read is refused
         (:meth:`_refuse_summary_label`)."""
         self.percent_cells: set[str] = set()
+        self.read_notes: list[str] = []  # (what reading the cells decided: thousands separators)
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -355,6 +359,11 @@ class _Csv:
         lines = array.array("q")
         # a ';'- or tab-separated file: where a decimal comma and a point were first seen, (line, column)
         marks = [None, None]
+        # a ';'- or tab-separated file's cells like 3.000 (a point before groups of three digits), (column, row, line,
+        # cell): read as decimals, or as thousands where the file has decimal commas (_decimal_comma)
+        pending: list = []
+        # a comma-separated file's columns whose (quoted) cells group thousands with commas, "3,000": (line, cell)
+        commas: dict = {}
         # per column of a ';'- or tab-separated file: its cells like 1.059 and like 951 (_thousands)
         grouped: dict = {}
         rows = self._rows()
@@ -398,7 +407,10 @@ class _Csv:
                     self.percent_cells.add(c)
                 if self.sep != ",":
                     self._thousands(c, number, line, grouped)
-                    number = self._decimal_comma(c, number, line, marks)
+                    number = self._decimal_comma(c, number, line, marks, pending, len(nums[c]))
+                elif "," in number and re.fullmatch(r"[+-]?[1-9]\d{0,2}(,\d{3})+(\.\d+)?", number):
+                    commas.setdefault(c, (line, number))  # ("3,000" quoted: refused as not a number until 2026-12-01)
+                    number = number.replace(",", "")
                 try:
                     x = parse_number(number)
                 except ValueError:
@@ -408,7 +420,9 @@ class _Csv:
                                          line) from None
                     unit_like = re.search(r"[a-zA-Z%]", cell) and not missing_mark(cell)
                     hint = (" (a row of units under the header? write each unit in its column's name instead, e.g. "
-                            "'thrust (N)', and remove the row)" if not len(lines) and unit_like else "")
+                            "'thrust (N)', and remove the row)" if not len(lines) and unit_like else
+                            " (a decimal comma? a comma-separated file needs decimal points, or ';' between its cells)"
+                            if self.sep == "," and re.fullmatch(r"[+-]?\d*,\d+", cell) else "")
                     raise self.error(f"column {_short(self.header[j])}: {_short(cell)} is not a number{hint}",
                                      line) from None
                 if not math.isfinite(x):
@@ -418,7 +432,17 @@ class _Csv:
                 j = self.index[c]
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
-        self._refuse_thousands(grouped)
+        if marks[0] and pending:  # beside decimal commas a point groups thousands: 3.000 is 3000
+            for c, row, _, cell in pending:
+                nums[c][row] = float(cell.replace(".", "").replace(",", "."))
+            self.read_notes.append(f"{self.name}: points read as thousands separators beside the file's decimal commas "
+                                   f"(column {_short(self.header[self.index[pending[0][0]]])}, line {pending[0][2]}: "
+                                   f"{pending[0][3]} read as {pending[0][3].replace('.', '').replace(',', '.')})")
+        for c, (line, cell) in commas.items():
+            self.read_notes.append(f"{self.name}: column {_short(self.header[self.index[c]])}: commas read as "
+                                   f"thousands separators (line {line}: {cell} read as {cell.replace(',', '')})")
+        self._refuse_thousands({c: seen for c, seen in grouped.items()
+                                if not (marks[0] and seen["grouped"] and "." in seen["grouped"][1])})
         self._refuse_summary_label(first_cells, last_cells, last_line, read_at | {self.index[c] for c in texts})
         out = {c: np.frombuffer(v, dtype=float).copy() for c, v in nums.items()}
         if mean_row:
@@ -488,15 +512,24 @@ class _Csv:
                                  f"(line {lw}): {mark} as a thousands separator ({whole})? save the numbers without "
                                  "one", lg)
 
-    def _decimal_comma(self, column: str, cell: str, line: int, marks: list) -> str:
+    def _decimal_comma(self, column: str, cell: str, line: int, marks: list, pending: list, row: int) -> str:
         """A ';'- or tab-separated file's cell with its decimal comma as a point (``0,057`` -> ``0.057``).
 
-        ``marks`` holds where a decimal comma and a point were first seen, (line, column): a file
-        with both is refused, since beside decimal commas a point is a thousands separator
-        (``7.000`` meaning 7000), which no reading can tell from a decimal point."""
+        ``marks`` holds where a decimal comma and a point were first seen, (line, column). A point
+        before groups of three digits is a thousands separator where a decimal comma follows
+        (``1.234,5``), and is left for the caller where none does (``3.000``: read as 3000 where
+        the file has decimal commas and as 3.0 where it has none; refused until 2026-12-01); both
+        are appended to ``pending`` as (column, row, line, cell), for the caller's note. Any other point beside
+        decimal commas is refused: there a point is a thousands separator (``7.5``?), which no
+        reading can make of it."""
         if cell.count(",") == 1 and "." not in cell:
             marks[0] = marks[0] or (line, column)
             cell = cell.replace(",", ".")
+        elif re.fullmatch(r"[+-]?[1-9]\d{0,2}(\.\d{3})+(,\d+)?", cell):
+            pending.append((column, row, line, cell))
+            if "," in cell:
+                marks[0] = marks[0] or (line, column)
+                cell = cell.replace(".", "").replace(",", ".")
         elif "." in cell and "," not in cell:
             marks[1] = marks[1] or (line, column)
         if marks[0] and marks[1]:

@@ -150,6 +150,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
                                optional={*optional, *(c.lower() for c in ratio)}, stop={low[q] for q in speeds},
                                gaps={low[q] for q in keys} if sampled else (),
                                percent={low["esc"]} if "esc" in low else (), mean_row=True)
+    notes += f.read_notes
     if "esc" in low and low["esc"] in f.percent_cells:
         cm.columns["esc"] = _esc_in_percent(cm.columns["esc"], raw[low["esc"]], notes)
     _check_unread_columns(raw, texts, ratio, named, what, p, notes)
