@@ -174,3 +174,33 @@ def test_points_grouping_thousands_beside_decimal_commas_are_read(tmp_path):
     path.write_text(_table(rows, ";"), encoding="utf-8")
     with pytest.raises(ValueError, match="decimal commas .* and points .* in one file"):
         read_loads(path)
+
+
+def test_a_flight_fits_trial_points_do_not_warn_of_flapping_its_optimum_does_once():
+    """The flight fit, too, silences the model's FlappingWarning at its trial parameter sets and
+    says it once at its optimum (a synthetic log of the example quadrotor, four APC 8x6E, at 100-160
+    rad/s and up to 15 m/s in the disk planes, so that its blades flap beyond 0.25 rad)."""
+    import warnings
+    from pathlib import Path
+
+    from propmap.core.solver import Discretization
+    from propmap.identify import FitOptions
+    from propmap.identify.flight import FlightSamples, fit_flight, predict_flight
+
+    veh = pm.read_vehicle(Path(pm.__file__).parent / "data" / "examples" / "quadrotor.toml")
+    rng, n, coarse = np.random.default_rng(3), 30, Discretization(12, 8)
+    s = FlightSamples(log_names=("synthetic",), log_index=np.zeros(n, int), t=np.arange(n) * 0.1,
+                      velocity=rng.uniform(-15, 15, (n, 3)) * [1, 1, 0.1], angular_velocity=np.zeros((n, 3)),
+                      rotor_omega=rng.uniform(100, 160, (n, 4)), rotor_acceleration=np.zeros((n, 4)),
+                      force=np.zeros((n, 3)), moment=None, reference_force=None, reference_moment=None, rate_hz=10.0)
+    truth = pm.generic_params().replace(flap_compliance=40.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", pm.FlappingWarning)
+        s = s.__class__(**{**s.__dict__, "force": predict_flight(s, veh, truth, discretization=coarse).force})
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = fit_flight(s, veh, base=pm.generic_params().replace(flap_compliance=5.0),
+                         options=FitOptions(names=("flap_compliance",), prior=False), discretization=coarse)
+    said = [str(w.message) for w in caught if issubclass(w.category, pm.FlappingWarning)]
+    assert res.params.flap_compliance == pytest.approx(40.0, rel=1e-4)
+    assert len(said) == 1 and "flap_compliance 40 rad/(N m)" in said[0], said

@@ -5,7 +5,6 @@ from __future__ import annotations
 import atexit
 import contextlib
 import os
-import re
 import signal
 import sys
 import threading
@@ -225,21 +224,14 @@ def _main(argv: list[str] | None) -> int:
             signal.signal(signal.SIGTERM, previous)
         seen = set()
         ours = [w for w in caught if issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR)]
-        # a warning a fit's trial points repeat with other numbers (the flapping's angle at each trial compliance, said
-        # five times: a wind-tunnel data audit, 2026-11-30): its last, at the fit's end, alone
-        last = next((str(w.message) for w in reversed(ours) if _ITERATED.match(str(w.message))), None)
         for w in ours:
-            if str(w.message) in seen or (_ITERATED.match(str(w.message)) and str(w.message) != last):
+            if str(w.message) in seen:
                 continue
             seen.add(str(w.message))
             click.echo(f"propmap: warning: {_one_line(w.message)}", err=True)
         for line in said:
             click.echo(line, err=True)
     return 0
-
-
-#: the warnings a fit's trial points repeat with other numbers, by their start (core/flapping.warn_large_flapping's)
-_ITERATED = re.compile(r"flapping: \d+ point\(s\) flap by more than ")
 
 
 def run() -> None:

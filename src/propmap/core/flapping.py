@@ -46,7 +46,7 @@ from typing import NamedTuple
 import numpy as np
 
 __all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "rigid_compliance_derivatives",
-           "warn_large_flapping", "COMPLIANCE", "FLAP_ANGLE_WARN"]
+           "warn_large_flapping", "FlappingWarning", "COMPLIANCE", "FLAP_ANGLE_WARN"]
 
 #: the name of the flap compliance 1 / K_beta among the derivatives' inputs
 COMPLIANCE = "flap_compliance"
@@ -134,6 +134,14 @@ def flapping(thrust, drag, side_force, rolling_moment, pitching_moment, damping,
                       rolling_moment=half * b1s, pitching_moment=-half * b1c, beta_1c=b1c, beta_1s=b1s)
 
 
+class FlappingWarning(UserWarning):
+    """Blades that flap beyond the first-harmonic flapping's small-angle range (:func:`warn_large_flapping`).
+
+    Its own category, so that a fit, which tries hundreds of parameter sets, can silence it at
+    its trial points and say it once at its optimum (:func:`propmap.identify.engine._trial_points`).
+    """
+
+
 def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3) -> None:
     """Warn where a flapping angle exceeds :data:`FLAP_ANGLE_WARN`: the first-harmonic model is
     linear in the angles (the thrust tilted by them, module docstring), so there the in-plane
@@ -150,8 +158,8 @@ def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3
 
     Warns
     -----
-    UserWarning
-        Naming how many points and the largest angle.
+    FlappingWarning
+        A UserWarning naming how many points and the largest angle.
     """
     import warnings
 
@@ -162,7 +170,7 @@ def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3
                       f"{float(np.max(big)):.3g} rad, flap_compliance {compliance:g} rad/(N m)): the first-harmonic "
                       "flapping is a small-angle model, so their drag, side force and hub moments there are beyond "
                       "it (a stopped or slow rotor's flap damping, which grows as Omega^2, no longer holds the "
-                      "blades; docs/models.md, Blade flapping)", UserWarning, stacklevel=stacklevel)
+                      "blades; docs/models.md, Blade flapping)", FlappingWarning, stacklevel=stacklevel)
 
 
 def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance: float, n_blades: int, *, omega,

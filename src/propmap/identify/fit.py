@@ -36,7 +36,7 @@ from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
-                     _flap_saturation, _m_effect, _params_from, _prior_stats, _with_prior, _x0)
+                     _flap_saturation, _m_effect, _params_from, _prior_stats, _trial_points, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
@@ -236,9 +236,10 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
     fitted = {k: (rows[k], data.measured[k][rows[k]], norm[k][rows[k]] * scales[k]) for k in keys}
 
     def make(opts):
-        def loads(x, derivatives=False):
+        def loads(x, derivatives=False, trial=True):
             p = _params_from(x, names, base, opts)
-            with supersonic_tips_allowed() if quiet else contextlib.nullcontext():
+            with (supersonic_tips_allowed() if quiet else contextlib.nullcontext(),
+                  _trial_points() if trial else contextlib.nullcontext()):
                 return rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
                                    discretization=opts.discretization, collective=data.collective,
                                    derivatives=names if derivatives else False)
@@ -258,6 +259,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
         if (opts.jacobian == "implicit" and differentiable(base, names)
                 and np.all(data.omega >= OMEGA_MIN)):
             _attach_jacobian(residual, with_jacobian)  # (a parked point, below OMEGA_MIN, has no derivatives)
+        residual.at_optimum = lambda x: loads(x, trial=False)  # (the model's warnings, silenced at trial points)
         return residual
 
     return make, scales
@@ -319,6 +321,9 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     UserWarning
         Once, where the data's blade tips pass Mach 0.8 (the solver's TIP_MACH_WARN; its own
         warning is held during the fit's evaluations).
+    FlappingWarning
+        Once, where the fitted set's blades flap beyond the small-angle range at the data's
+        points (the model's own warning, silenced at the fit's trial parameter sets).
 
     Notes
     -----
@@ -380,6 +385,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     result = _traced_residuals(result, data, keys)
     if inplane:
         result = _flap_articulated(_flap_saturation(result, make_residual(options), options))
+    make_data(options).at_optimum(result.x)
     return result if k_dirs == 0 else _directions_report(result, options)
 
 

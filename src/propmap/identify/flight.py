@@ -34,6 +34,7 @@ identify/flight_scores.py; their names are re-exported here.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from dataclasses import replace
 
@@ -45,7 +46,7 @@ from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from ..vehicle.layout import shift_centre_of_mass  # (this module's name since before it moved to the vehicle)
 from .continuation import _fit_with_continuation
-from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
+from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _trial_points, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             reference_at_vehicle_mass, reference_errors, speed_band_errors)
@@ -226,6 +227,12 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         ``lift_model`` other than the sigmoid with a cambered base.
     SolverError
         From the rotor model.
+
+    Warns
+    -----
+    FlappingWarning
+        Once, where the fitted set's blades flap beyond the small-angle range at the samples
+        (the model's own warning, silenced at the fit's trial parameter sets).
     """
     from ..io.calibration import generic_params
 
@@ -261,6 +268,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(
         result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
+    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: silenced at trial points)
+        model.predict(result.x, options, trial=False)
     return result
 
 
@@ -331,17 +340,21 @@ class _FlightModel:
 
     def make_residual(self, opts):
         """The residual at the parameter vector (the engine's ``make_residual``)."""
-        names = self.names
 
         def residual(x, opts=opts):
-            p = _params_from(x, names, self.base, opts)
-            w = predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, names, self.body0), air=self.air,
-                               discretization=self.discretization)
-            return self.errors(w)
+            return self.errors(self.predict(x, opts))
 
         if self.implicit:
             _attach_jacobian(residual, lambda x: self._with_jacobian(x, opts))
         return residual
+
+    def predict(self, x, opts, derivatives=False, trial: bool = True):
+        """The vehicle's wrench at the parameter vector, the model's warnings silenced at a
+        trial point (engine._trial_points) and said at the optimum (``trial=False``)."""
+        p = _params_from(x, self.names, self.base, opts)
+        with _trial_points() if trial else contextlib.nullcontext():
+            return predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, self.names, self.body0),
+                                  air=self.air, discretization=self.discretization, derivatives=derivatives)
 
     def _with_jacobian(self, x, opts):
         """The residual and its Jacobian from one model call: vehicle_wrench's implicit
@@ -352,9 +365,7 @@ class _FlightModel:
         wrt = [n for n in names if n not in CG_NAMES]
         if any(n in CG_NAMES for n in names):
             wrt.append("centre_of_mass")
-        p = _params_from(x, names, self.base, opts)
-        w = predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, names, self.body0), air=self.air,
-                           discretization=self.discretization, derivatives=wrt)
+        w = self.predict(x, opts, derivatives=wrt)
         cols = []
         for n in names:
             if n in CG_NAMES:
