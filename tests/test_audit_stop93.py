@@ -204,3 +204,23 @@ def test_a_flight_fits_trial_points_do_not_warn_of_flapping_its_optimum_does_onc
     said = [str(w.message) for w in caught if issubclass(w.category, pm.FlappingWarning)]
     assert res.params.flap_compliance == pytest.approx(40.0, rel=1e-4)
     assert len(said) == 1 and "flap_compliance 40 rad/(N m)" in said[0], said
+
+
+@pytest.mark.parametrize("fT, fQ, said", [
+    (9.80665, 0.0980665, "thrust in kgf and torque in kgf cm read as N and N m"),
+    (9.80665e-3, 9.80665e-5, "thrust in gf and torque in gf cm read as N and N m"),
+    (9.80665e-3, 1e-3, "thrust in gf and torque in N mm read as N and N m"),
+    (0.27801385095378125, 0.00706155181, "thrust in ozf and torque in ozf in read as N and N m")])
+def test_a_makers_pair_of_units_unlabelled_is_named_as_the_pair(tmp_path, fT, fQ, said):
+    """Thrust and torque in a maker's pair of units, both columns unlabelled (read as N and N m): kgf
+    with kgf cm was refused as "the thrust and torque columns swapped", gf with gf cm as "a diameter
+    far off" (a thrust-stand data audit, 2026-11-30); each pair is now named."""
+    from propmap.identify.sanity import sanity_check
+
+    rpm = np.arange(3000.0, 9000.0, 1000.0)
+    T, _, Q = _loads(rpm)
+    path = tmp_path / "pair.csv"
+    path.write_text("rpm,thrust,torque\n" + "".join(f"{r:.0f},{t / fT:.6g},{q / fQ:.6g}\n"
+                                                    for r, t, q in zip(rpm, T, Q)), encoding="utf-8")
+    with pytest.raises(ValueError, match=f"likely {said}"):
+        sanity_check(read_loads(path), pm.load_propeller(PROP))

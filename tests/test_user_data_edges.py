@@ -427,7 +427,9 @@ def test_validate_compares_a_few_or_repeated_points_and_says_a_unit_slip(tmp_pat
         for rpm, t, q in zip((5000, 6000, 7000), r.thrust, r.torque)) + "\n")
     assert main(["validate", str(grams), "--prop", "apce_8x6"]) == 0
     captured = capsys.readouterr()
-    assert "check the units" in captured.err and "the comparison below takes the file as written" in captured.err
+    # (the pair named since 2026-12-01; "check the units" before)
+    assert ("likely thrust in gf and torque in N mm read as N and N m" in captured.err
+            and "the comparison below takes the file as written" in captured.err)
 
 
 def test_load_errors_leave_out_unconverged_points_and_score_the_in_plane_force_at_incidence(monkeypatch):

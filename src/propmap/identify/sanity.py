@@ -40,6 +40,15 @@ _UNIT_SLIPS = [
     (1 / 4.4482216152605, 1.0, "thrust in N declared as lbf"),
     (1e-3, 1.0, "thrust in gf declared as kgf (g as kg)"),
     (4.4482216152605, 0.112984829, "thrust in lbf and torque in lbf in read as N and N m"),
+    # (a maker's pairs of units, both unlabelled: kgf with kgf cm was told "the columns swapped", gf with gf cm "a
+    # diameter far off": a thrust-stand data audit, 2026-11-30)
+    (9.80665, 0.0980665, "thrust in kgf and torque in kgf cm read as N and N m"),
+    (9.80665e-3, 9.80665e-5, "thrust in gf and torque in gf cm read as N and N m"),
+    (9.80665, 9.80665, "thrust in kgf and torque in kgf m read as N and N m"),
+    (9.80665e-3, 1e-3, "thrust in gf and torque in N mm read as N and N m"),
+    (9.80665, 1e-3, "thrust in kgf and torque in N mm read as N and N m"),
+    (9.80665e-3, 0.01, "thrust in gf and torque in N cm read as N and N m"),
+    (0.27801385095378125, 0.00706155181, "thrust in ozf and torque in ozf in read as N and N m"),
     (1.0, 1e3, "torque in N m declared as N mm"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.01, "torque in N cm read as N m (name the column 'torque (N cm)')"),
