@@ -53,10 +53,10 @@ def test_a_comma_as_a_thousands_separator_is_refused_in_tab_and_semicolon_files(
 
 @pytest.mark.parametrize("column, said", [
     ("V_mps", "looks like an airspeed"), ("U_ms", "looks like an airspeed"), ("V_kmh", "looks like an airspeed"),
-    ("Vd_mps", "looks like a climb or descent rate"), ("V_descent_mps", "looks like a climb or descent rate"),
-    ("descent_velocity_m_s", "looks like a climb or descent rate"), ("Vd (m/s)", "looks like a climb or descent rate"),
-    ("Vd_mps", "looks like a climb or descent rate"), ("descent velocity", "looks like a climb or descent rate"),
+    ("Vd_mps", "looks like a climb or descent rate"), ("Vd (m/s)", "looks like a climb or descent rate"),
     ("V (m s-1)", "looks like an airspeed")])
+# (V_descent_mps, descent_velocity_m_s and descent velocity are read as an axial descent's rate since 2026-12-01:
+# tests/test_audit_stop93.py)
 def test_a_speed_under_an_underscore_unit_or_a_descent_symbol_is_refused(tmp_path, column, said):
     """Left unread, every point was taken as static (validate exit 0, 22 descent points scored as
     static)."""

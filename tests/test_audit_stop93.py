@@ -249,3 +249,48 @@ def test_slow_descent_data_without_an_incidence_column_are_warned_of(tmp_path, m
     path.write_text("rpm,airspeed (m/s),thrust (N),torque (N m)\n" + "".join(rows), encoding="utf-8")
     said = sanity_check(read_loads(path), prop)
     assert any("matches the model far better in axial descent" in w for w in said), said
+
+
+@pytest.mark.parametrize("column, sign", [("Descent rate (m/s)", 1.0), ("descent_velocity_m_s", 1.0),
+                                          ("V_descent_mps", 1.0), ("sink rate (km/h)", 1.0),
+                                          ("Rate of climb (m/s)", -1.0)])
+def test_an_axial_descent_or_climb_rate_column_is_read_as_the_flow(tmp_path, column, sign):
+    """Rotors in descent are measured against a descent rate; such a column was refused, to be
+    rewritten as an airspeed and an incidence. A descent rate (positive descending) or a climb rate
+    (positive climbing) is now read: its magnitude the airspeed, incidence 180 deg descending and 0
+    climbing, with a note. The loads made by the model at those points validate to 0."""
+    import warnings
+
+    p, prop = pm.resolve_params(f"calibrated:{PROP}"), pm.load_propeller(PROP)
+    kmh = 3.6 if "km/h" in column else 1.0
+    rows, truth = [], []
+    for rpm in (4000, 6000):
+        for down in (-2.0, 0.0, 1.0, 3.0, 5.0):  # descending positive
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                r = pm.rotor_loads(prop, p, rpm * math.pi / 30, abs(down), math.pi if down > 0 else 0.0)
+            rows.append(f"{rpm},{sign * down * kmh:g},{float(r.thrust):.6g},{float(r.torque):.6g}\n")
+            truth.append((abs(down), 180.0 if down > 0 else 0.0, float(r.thrust)))
+    path = tmp_path / "descent.csv"
+    path.write_text(f"rpm,{column},thrust (N),torque (N m)\n" + "".join(rows), encoding="utf-8")
+    data = read_loads(path)
+    V, inc, T = np.array(truth).T
+    assert np.allclose(data.airspeed, V, atol=1e-9) and np.allclose(np.degrees(data.incidence), inc)
+    assert np.allclose(data.measured["thrust"], T, rtol=1e-5)
+    assert any(f"{column!r} read as the airspeed in axial flow: 6 point(s) descending" in n for n in data.notes)
+
+
+def test_a_rate_beside_the_airspeed_and_the_incidence_is_not_read_and_vz_is_still_refused(tmp_path):
+    """Guards: with the airspeed and the incidence the flow is theirs (a note); Vz, V_c and a vertical
+    speed, whose sign convention a name does not say, are still refused."""
+    T, _, Q = _loads(np.array([4000.0, 5000.0, 6000.0, 7000.0, 8000.0, 9000.0]))
+    body = "".join(f"{r},0,0,0,{t:.5g},{q:.5g}\n" for r, t, q in zip(range(4000, 10000, 1000), T, Q))
+    path = tmp_path / "both.csv"
+    path.write_text("rpm,airspeed,incidence_deg,descent rate,thrust,torque\n" + body, encoding="utf-8")
+    assert any("(a descent rate) is not read: the airspeed and the incidence give the flow" in n
+               for n in read_loads(path).notes)
+    for name in ("Vz", "V_c", "vertical speed"):
+        path.write_text(f"rpm,{name},thrust,torque\n" + "".join(
+            f"{r},0,{t:.5g},{q:.5g}\n" for r, t, q in zip(range(4000, 10000, 1000), T, Q)), encoding="utf-8")
+        with pytest.raises(ValueError, match="looks like a climb or descent rate"):
+            read_loads(path)

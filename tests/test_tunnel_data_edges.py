@@ -190,7 +190,8 @@ def test_reynolds_numbers_beyond_the_datas_are_said_in_other_air(capsys):
     ("rpm,Vz,thrust,torque", r"column 'Vz' looks like a climb or descent rate, which propmap reads only as "
                              r"'airspeed' \(its magnitude, in its unit: 'airspeed \(mph\)' is read as such\) with "
                              r"'incidence_deg' 0 \(climb\) or 180"),
-    ("rpm,airspeed,descent_rate,thrust,torque", r"column 'descent_rate' looks like a climb or descent rate"),
+    ("rpm,airspeed,descent_rate,thrust,torque", r"columns 'descent_rate' \(a descent rate\) and 'airspeed' both give "
+                                                r"the flow"),
     ("rpm,V_c,thrust,torque", r"column 'V_c' looks like a climb or descent rate"),
     ("rpm,airspeed,flow angle,thrust,torque", r"column 'flow angle' looks like a flow angle"),
     ("rpm,airspeed,alpha_p,thrust,torque", r"column 'alpha_p' looks like a flow angle"),

@@ -66,6 +66,12 @@ UNITS = {
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
                 "lbft³": 16.018463373960138},
 }
+#: an axial descent rate's names (positive descending) and a climb rate's (positive climbing)
+DESCENT_RATE_NAMES = ("descent rate", "descent speed", "rate of descent", "sink rate", "descent velocity",
+                      "descending velocity", "v descent")
+CLIMB_RATE_NAMES = ("climb rate", "climb speed", "rate of climb", "climb velocity", "climbing velocity", "v climb")
+#: the quantities of those (loads_csv._axial_rate reads either as the airspeed and the incidence)
+AXIAL_RATES = ("descent_rate", "climb_rate")
 #: the names each quantity is recognised by (lower case, without unit); value: (quantity, kind)
 _NAMES = {
     "thrust": ("thrust", "force"), "drag": ("drag", "force"), "torque": ("torque", "torque"),
@@ -91,6 +97,11 @@ _NAMES = {
     **{f"{who}{sep}rpm": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "prop") for sep in " _"},
     "motor optical speed": ("rpm_optical", "rotation"), "motor electrical speed": ("rpm_electrical", "rotation"),
     "airspeed": ("airspeed", "speed"), "air speed": ("airspeed", "speed"), "wind speed": ("airspeed", "speed"),
+    # an axial descent's or climb's rate, read as the airspeed with incidence 180 or 0 deg by its sign (refused until
+    # 2026-12-01, to be written as those two columns: rotors in descent are measured so); not Vz, V_c or a vertical
+    # speed, whose sign convention a name does not say
+    **dict.fromkeys(DESCENT_RATE_NAMES, ("descent_rate", "speed")),
+    **dict.fromkeys(CLIMB_RATE_NAMES, ("climb_rate", "speed")),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
     # (refused as a flow angle to be renamed, though they name the incidence: a wind-tunnel data audit, 2026-11-30)
     "incidence angle": ("incidence_deg", "angle"), "angle of incidence": ("incidence_deg", "angle"),

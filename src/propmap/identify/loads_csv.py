@@ -19,6 +19,7 @@ import numpy as np
 from ..core._numbers import integer
 from ..core.units import RPM
 from .csvfile import RANGES, DataError, _Csv
+from .headers import AXIAL_RATES
 from .loads_air import _air_density, _conditions_density
 from .load_data import LOAD_KEYS, STATIC_AIRSPEED, LoadData, radians_hint
 from .load_rows import _optical_gaps, _skip_dropouts, _skip_stopped, _thrust_sign, _torque_sign
@@ -135,8 +136,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         raise DataError(f"{what}: {p} has incidence_deg but lacks column airspeed" + (
             f" (is {ratio[0]!r} an advance ratio? give the airspeed, V = J n D; mu n D for mu)" if ratio else ""))
     keys = [k for k in LOAD_KEYS if k in cm.columns]
-    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time", "air_density")
-                             if q in cm.columns), *keys]
+    quantities = [*speeds, *(q for q in ("airspeed", "incidence_deg", "collective_deg", "esc", "time", "air_density",
+                                         *AXIAL_RATES) if q in cm.columns), *keys]
     low = {q: cm.column(q).lower() for q in quantities}
     optional = {low[q] for q in speeds} | {low[q] for q in ("time", "air_density") if q in low}
     # a sampled log (a stand export, a time column): a load cell empty or NaN in a row is a sensor's dropout, that
@@ -163,6 +164,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     n = lines.size
     if "airspeed" in v:
         v["airspeed"] = _pitot_noise(v["airspeed"], cm.column("airspeed"), notes, sampled)
+    _axial_rate(v, cm, notes)
     for c in ("airspeed", "incidence_deg"):
         v.setdefault(c, np.zeros(n))  # a static thrust stand
     air_density = _air_density(v.pop("air_density", None), cm.column("air_density"), what, p, notes)
@@ -347,6 +349,20 @@ def _steps_or_points(f, cm, v: dict, group, lines: np.ndarray, what: str, p: str
                          "ESC signal column, by which a stand's steps test is averaged (name it 'ESC signal (µs)' or "
                          "'Throttle (%)' for that)")
     return v, group, lines, n, averaged
+
+
+def _axial_rate(v: dict, cm, notes: list) -> None:
+    """A descent or climb rate column (headers.DESCENT_RATE_NAMES, CLIMB_RATE_NAMES) read as the
+    flow: its magnitude the airspeed, in axial descent (incidence 180 deg) where the rotor descends
+    and in axial climb (0 deg) where it climbs, with a note (since 2026-12-01: such a column was
+    refused, to be written as an airspeed and an incidence)."""
+    for q, sign in zip(AXIAL_RATES, (1.0, -1.0)):
+        if q in v:
+            down = sign * v.pop(q)  # positive descending
+            v["airspeed"], v["incidence_deg"] = np.abs(down), np.where(down > 0, 180.0, 0.0)
+            n_down = int(np.count_nonzero(down > 0))
+            notes.append(f"{cm.column(q)!r} read as the airspeed in axial flow: {n_down} point(s) descending "
+                         f"(incidence 180 deg), {down.size - n_down} climbing or static (0 deg)")
 
 
 def _average_steps(v: dict, group, form: str, column: str, where: str, notes: list):

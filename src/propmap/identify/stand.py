@@ -73,7 +73,8 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
     ColumnMap
         ``columns``: each recognised quantity (``thrust``, ``drag``, ``torque``, ``rpm``,
         ``rpm_optical``, ``rpm_electrical``, ``airspeed``, ``incidence_deg``,
-        ``collective_deg``, ``esc``, ``time``, ``group``, ``air_density``; the columns it does not recognise
+        ``collective_deg``, ``descent_rate``, ``climb_rate``, ``esc``, ``time``, ``group``,
+        ``air_density``; the columns it does not recognise
         left out) -> (column name as written, factor to N, N m, rpm, m/s or deg, unit as
         written or None); ``notes``: the units converted. ``pole_pairs`` is only checked
         here: the caller divides the speed (:func:`propmap.identify.read_loads`).
@@ -91,8 +92,10 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         that is neither a speed's nor an angle's is not) where no ``airspeed`` or
         ``incidence_deg`` column is recognised (the points would be read as static or axial; a
         name that may mean something else, ``V``, ``J``, ``mu``, ``angle``, ``tilt``, ``yaw``,
-        gets a note instead, except an angle's beside an airspeed), a climb or descent rate
-        (``Vz``, ``V_c``, ``descent_rate``) unless both the airspeed and the incidence are read,
+        gets a note instead, except an angle's beside an airspeed), a vertical speed whose sign a
+        name does not say (``Vz``, ``V_c``) unless both the airspeed and the incidence are read, a
+        named descent or climb rate (``descent_rate``, ``rate of climb``: read, as ``descent_rate``
+        or ``climb_rate``) beside only one of them,
         any column it does not read whose unit is a speed's (``Flight
         speed (m/s)``) where no airspeed is, or an angle's (``Shaft angle (deg)``) where an
         airspeed is read and no incidence, a wind tunnel's ``lift`` column (the loads are read in

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import re
 
-from .headers import _NAMES, _UNIT_ONLY_NAMES, LOOKED_FOR, UNITS, ColumnMap, _loose, _name_stems, _token, split_header
+from .headers import (_NAMES, _UNIT_ONLY_NAMES, AXIAL_RATES, LOOKED_FOR, UNITS, ColumnMap, _loose, _name_stems, _token,
+                      split_header)
 
 #: names that are not read but mean an airspeed, an advance ratio, a flow angle or load coefficients (a file
 #: with them and without 'airspeed' / 'incidence_deg' / loads is refused, naming them: map_columns)
@@ -115,10 +116,25 @@ def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: 
     if lift and "thrust" not in cm.columns:
         raise error(f"column {lift[0]!r}: a static stand's lift is the propeller's thrust: name the column 'thrust' "
                     "(with its unit) to fit it")
-    rate = [n for n in bases if stems[n] & _loose(_AXIAL_RATE_LIKE)
-            or (split[n][0].replace("_", " ") in _DESCENT_SYMBOLS and split[n][1] is not None
-                and _token(split[n][1]) in UNITS["speed"])
-            or (split[n][1] is None and _speed_stem(split[n][0]) in _DESCENT_SYMBOLS)]
+    read = {c[0] for c in cm.columns.values()}
+    given = [q for q in AXIAL_RATES if q in cm.columns]
+    if given:  # a descent or climb rate read as the flow (loads_csv._axial_rate)
+        name = cm.columns[given[0]][0]
+        if len(given) == 2:
+            raise error(f"columns {name!r} and {cm.columns[given[1]][0]!r} both give the axial flow (a descent and a "
+                        "climb rate): keep one")
+        if "airspeed" in cm.columns and "incidence_deg" in cm.columns:
+            cm.columns.pop(given[0])
+            cm.notes.append(f"column {name!r} (a {given[0].replace('_', ' ')}) is not read: the airspeed and the "
+                            "incidence give the flow")
+        elif "airspeed" in cm.columns or "incidence_deg" in cm.columns:
+            other = cm.column("airspeed") or cm.column("incidence_deg")
+            raise error(f"columns {name!r} (a {given[0].replace('_', ' ')}) and {other!r} both give the flow: keep "
+                        "the rate alone (axial flow), or give 'airspeed' with 'incidence_deg' (0 climb, 180 descent)")
+    rate = [n for n in bases if n not in read and stems[n] & _loose(_AXIAL_RATE_LIKE)
+            or n not in read and (split[n][0].replace("_", " ") in _DESCENT_SYMBOLS and split[n][1] is not None
+                                  and _token(split[n][1]) in UNITS["speed"])
+            or n not in read and (split[n][1] is None and _speed_stem(split[n][0]) in _DESCENT_SYMBOLS)]
     if rate and "airspeed" in cm.columns and "incidence_deg" in cm.columns:
         cm.notes.append(f"column {rate[0]!r} (a climb or descent rate) is not read: the airspeed and the incidence "
                         "give the flow")
@@ -134,26 +150,27 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
     (refused: every point would be taken as static or axial), or under an ambiguous name (a
     note)."""
     # a wind-tunnel file's airspeed or angle under a name propmap does not read would leave every point static
+    flow = any(q in cm.columns for q in ("airspeed", *AXIAL_RATES))  # (a descent or climb rate gives an airspeed)
     for quantity, similar, what, read_as, default in (
             ("airspeed", _AIRSPEED_LIKE + _ADVANCE_LIKE, "an airspeed or advance ratio",
              "'airspeed' [m/s] (an advance ratio as airspeed = J n D)", "static (airspeed 0)"),
             ("incidence_deg", _ANGLE_LIKE, "a flow angle",
              "'incidence_deg', the angle between the airspeed and the rotor axis (0 axial climb, 90 edgewise, 180 "
              "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
-        if quantity in cm.columns:
+        if quantity in cm.columns or (quantity == "airspeed" and flow):
             continue
         similar = _loose(similar)
         like = [n for n in bases if stems[n] & similar]
         # any column propmap does not read whose unit is a speed's (Flight speed (m/s)), or an angle's where the
         # points move (Shaft angle (deg) beside an airspeed): its name may be anything
         kind = "speed" if quantity == "airspeed" else "angle"
-        if quantity == "airspeed" or "airspeed" in cm.columns:
+        if quantity == "airspeed" or flow:
             like += [n for n, (b, u) in split.items() if b not in _NAMES and u is not None and _token(u) in UNITS[kind]
                      and not (kind == "speed" and ("N" in u or _NOT_AIRSPEED.search(b)))]
         if kind == "speed":  # a velocity's symbol with a speed's unit after an underscore (V_mps, U_ms)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and n not in like
                      and _speed_stem(b) in _loose(_VELOCITY_SYMBOLS)]
-        if kind == "angle" and "airspeed" in cm.columns:  # an angle's unit after an underscore (tilt_deg, beta_rad)
+        if kind == "angle" and flow:  # an angle's unit after an underscore (tilt_deg, beta_rad)
             like += [n for n, (b, u) in split.items() if u is None and b not in _NAMES and "_" in b
                      and _token(b.rsplit("_", 1)[1]) in UNITS["angle"] and n not in like
                      and not re.search(r"temp", b)]  # (temp_deg, motor_temp_degrees: a temperature)
@@ -171,7 +188,7 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
             raise error(f"column {like[0]!r} looks like {what}, which propmap reads only as {read_as}: {todo}, or "
                         f"remove it; left unread, every point would be taken as {default}{joule}")
         maybe = [n for n, b in bases.items() if _AMBIGUOUS.get(b) == quantity]  # (no underscores in its keys)
-        if maybe and quantity == "incidence_deg" and "airspeed" in cm.columns:
+        if maybe and quantity == "incidence_deg" and flow:
             raise error(f"column {maybe[0]!r} looks like {what} beside the airspeed, which propmap reads only as "
                         f"{read_as}: rename it, converted, or remove it; left unread, every point would be taken "
                         f"as {default}")
