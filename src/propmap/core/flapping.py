@@ -41,12 +41,14 @@ blow-back of the disk away from the in-plane motion (Johnson 1980, Sec. 5.2).
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 from typing import NamedTuple
 
 import numpy as np
 
 __all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "rigid_compliance_derivatives",
-           "warn_large_flapping", "FlappingWarning", "COMPLIANCE", "FLAP_ANGLE_WARN"]
+           "warn_large_flapping", "FlappingWarning", "flapping_warning_held", "COMPLIANCE", "FLAP_ANGLE_WARN"]
 
 #: the name of the flap compliance 1 / K_beta among the derivatives' inputs
 COMPLIANCE = "flap_compliance"
@@ -137,9 +139,34 @@ def flapping(thrust, drag, side_force, rolling_moment, pitching_moment, damping,
 class FlappingWarning(UserWarning):
     """Blades that flap beyond the first-harmonic flapping's small-angle range (:func:`warn_large_flapping`).
 
-    Its own category, so that a fit, which tries hundreds of parameter sets, can silence it at
-    its trial points and say it once at its optimum (:func:`propmap.identify.engine._trial_points`).
+    A category of its own, for a user's warning filters; a search held by
+    :func:`flapping_warning_held` does not raise it at its trial points.
     """
+
+
+#: set by flapping_warning_held (per thread and task: a context variable, not the global warning filters)
+_FLAPPING_HELD = contextvars.ContextVar("propmap_flapping_warning_held", default=False)
+
+
+@contextlib.contextmanager
+def flapping_warning_held():
+    """Within the block, :func:`propmap.rotor_loads` does not warn of large flapping.
+
+    For callers that try many parameter sets or rates on their way to one answer, and then say
+    the warning once at the answer: a fit's trial points (a load fit that freed the flapping
+    warned 21 times with other numbers, a wind-tunnel data audit, 2026-11-30), a trim's search
+    (``propmap trim`` four times, a mutation audit, 2026-12-01). A context variable, as
+    :func:`propmap.core.solver.supersonic_tips_allowed`: other threads keep their warning.
+
+    Yields
+    ------
+    None
+    """
+    token = _FLAPPING_HELD.set(True)
+    try:
+        yield
+    finally:
+        _FLAPPING_HELD.reset(token)
 
 
 def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3) -> None:
@@ -163,6 +190,8 @@ def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3
     """
     import warnings
 
+    if _FLAPPING_HELD.get():
+        return
     big = np.hypot(np.asarray(beta_1c), np.asarray(beta_1s))
     n = int(np.count_nonzero(big > FLAP_ANGLE_WARN))
     if n:

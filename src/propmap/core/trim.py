@@ -35,6 +35,7 @@ import numpy as np
 from ._numbers import real
 from .units import RPM
 from .airfoil import Air, SectionParams
+from .flapping import flapping_warning_held
 from .geometry import Propeller, broadcast_readonly
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads, model_air,
                      rotor_loads, supersonic_tips_allowed)
@@ -290,6 +291,12 @@ def trim_collective(
         inside the bounds, the collective of the peak, refined (the set stalls beyond it).
     propmap.SolverError
         The inflow solve failed at some collective (the message names where).
+
+    Warns
+    -----
+    FlappingWarning
+        The solution's blades flap beyond the small-angle range (as :func:`propmap.rotor_loads`;
+        the search itself does not warn).
     """
     air = model_air(params, air)
     if on_missing not in ("raise", "nan"):
@@ -319,7 +326,9 @@ def trim_collective(
         return rotor_loads(propeller, params, om_, V_, b_, collective=c, **kw).thrust
 
     try:
-        x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (om1, V1, b1), thrust_tol, xatol=1e-10)
+        with flapping_warning_held():  # (the search's trial collectives: the answer's loads below say it)
+            x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (om1, V1, b1), thrust_tol,
+                                                             xatol=1e-10)
     except _RefineFailed as exc:
         i = exc.index
         raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
@@ -441,6 +450,9 @@ def trim_omega(
     UserWarning
         The solution's blade tips meet the air beyond Mach 0.8 (as :func:`propmap.rotor_loads`;
         the search itself does not warn).
+    FlappingWarning
+        The solution's blades flap beyond the small-angle range (as :func:`propmap.rotor_loads`;
+        the search itself does not warn).
     """
     air = model_air(params, air)
     if on_missing not in ("raise", "nan"):
@@ -461,7 +473,8 @@ def trim_omega(
         return rotor_loads(propeller, params, om, V_, b_, collective=c_, **kw).thrust
 
     try:
-        with supersonic_tips_allowed():  # the grid's top reaches Mach 0.9 on purpose: the answer is checked below
+        # the grid's top reaches Mach 0.9 on purpose, and its trial rates may flap: the answer's loads say both below
+        with supersonic_tips_allowed(), flapping_warning_held():
             x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (V1, b1, c1), thrust_tol,
                                                              xrtol=1e-12)
     except _RefineFailed as exc:

@@ -14,31 +14,16 @@ stall-blend sharpness M), then :func:`_finish`.
 from __future__ import annotations
 
 import math
-import warnings
-from contextlib import contextmanager
 from dataclasses import fields, replace
 
 import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
-from ..core.flapping import FlappingWarning
 from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_ARTICULATED, FLAP_START, FitOptions, _is_angle, report_name
 from .optimizer import _bounds, _jacobian, _solve
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability
 
 __all__ = []  # (the multistart constants are identify/optimizer.py's)
-
-
-@contextmanager
-def _trial_points():
-    """The model's warnings about its own range at a parameter set (:class:`FlappingWarning`)
-    silenced while a fit tries parameter sets: a fit that freed the flapping warned of large
-    flapping at each trial compliance, 21 times with other numbers (a wind-tunnel data audit,
-    2026-11-30; the command line then printed the last only, which could be a profile refit's).
-    The data kind's fit says them once at its optimum, after this block."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", FlappingWarning)
-        yield
 
 
 def _x0(names, options: FitOptions, base: SectionParams, overrides=None) -> np.ndarray:

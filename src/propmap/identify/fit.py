@@ -30,13 +30,14 @@ import numpy as np
 from ..core.units import RPM
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
 from ..core.air import SUPERSONIC_TIP
+from ..core.flapping import flapping_warning_held
 from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
                            supersonic_tips_allowed)
 from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
-                     _flap_saturation, _m_effect, _params_from, _prior_stats, _trial_points, _with_prior, _x0)
+                     _flap_saturation, _m_effect, _params_from, _prior_stats, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
@@ -239,7 +240,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
         def loads(x, derivatives=False, trial=True):
             p = _params_from(x, names, base, opts)
             with (supersonic_tips_allowed() if quiet else contextlib.nullcontext(),
-                  _trial_points() if trial else contextlib.nullcontext()):
+                  flapping_warning_held() if trial else contextlib.nullcontext()):
                 return rotor_loads(propeller, p, data.omega, data.airspeed, data.incidence, air=air,
                                    discretization=opts.discretization, collective=data.collective,
                                    derivatives=names if derivatives else False)

@@ -42,11 +42,12 @@ import numpy as np
 
 from ..core.airfoil import Air, CamberedParams, SectionParams
 from ..core.body import BodyDrag
+from ..core.flapping import flapping_warning_held
 from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from ..vehicle.layout import shift_centre_of_mass  # (this module's name since before it moved to the vehicle)
 from .continuation import _fit_with_continuation
-from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _trial_points, _with_prior, _x0
+from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             reference_at_vehicle_mass, reference_errors, speed_band_errors)
@@ -350,9 +351,9 @@ class _FlightModel:
 
     def predict(self, x, opts, derivatives=False, trial: bool = True):
         """The vehicle's wrench at the parameter vector, the model's warnings silenced at a
-        trial point (engine._trial_points) and said at the optimum (``trial=False``)."""
+        trial point (core.flapping.flapping_warning_held) and said at the optimum (``trial=False``)."""
         p = _params_from(x, self.names, self.base, opts)
-        with _trial_points() if trial else contextlib.nullcontext():
+        with flapping_warning_held() if trial else contextlib.nullcontext():
             return predict_flight(self.samples, self.vehicle_at(x), p, body=_body_from(x, self.names, self.body0),
                                   air=self.air, discretization=self.discretization, derivatives=derivatives)
 

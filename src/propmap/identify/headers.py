@@ -212,6 +212,14 @@ _OTHER_UNITS = frozenset(("s", "ms", "us", "min", "h", "v", "mv", "a", "ma", "w"
                           "k", "pa", "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1"))
 
 
+def _same_unit(a: str, b: str) -> bool:
+    """Whether two units as written are one (``rpm`` and ``rev/min``, ``g`` and ``gf``: the same
+    factor in one of UNITS' quantities), or are spelt alike."""
+    ta, tb = _token(a), _token(b)
+    return ta == tb or any(ta in kind and tb in kind and math.isclose(kind[ta], kind[tb], rel_tol=1e-12)
+                           for kind in UNITS.values())
+
+
 def units_row(header: list[str], cells: list[str]) -> tuple[list[str], list[tuple[int, str, str]]] | None:
     """A row of units under a header merged into it ('rpm' over 'rev/min' -> 'rpm (rev/min)'), or None.
 
@@ -219,7 +227,8 @@ def units_row(header: list[str], cells: list[str]) -> tuple[list[str], list[tupl
     named column and none longer than 16 characters, and more than half of them are units propmap
     knows (UNITS', or a stand's other channels': s, V, A, W, %, °C, Pa, ...). A cell in
     brackets, ``[N]``, is read without them; ``-`` and ``1`` (no unit) count as units and add
-    none. A column whose name carries a unit keeps it (a data logger's export, which writes both:
+    none. A column whose name carries a unit keeps it where the row's is the same unit, spelt
+    either way (``rpm`` over ``rev/min``; a data logger's export, which writes both:
     a thrust-stand data audit, 2026-11-30, found such a row
     refused as "not a number").
 
@@ -242,14 +251,15 @@ def units_row(header: list[str], cells: list[str]) -> tuple[list[str], list[tupl
         return None
     for _, c in given:
         try:
-            float(c.replace(",", "."))
-            return None
+            if c != "1":  # (a 1 is a dimensionless column's unit here: the others decide)
+                float(c.replace(",", "."))
+                return None
         except ValueError:
             pass
     bare = [(j, re.sub(r"^[(\[](.*)[)\]]$", r"\1", c).strip()) for j, c in given]
     known = {t for kind in UNITS.values() for t in kind} | _OTHER_UNITS
-    if 2 * sum(_token(u) in known for _, u in bare) <= len(bare):
-        return None
+    if 2 * sum(_token(u) in known for _, u in bare) <= len(bare) or all(_token(u) in ("", "1") for _, u in bare):
+        return None  # (a row of '-' alone is missing data, not units)
     out, conflicts = list(header), []
     for j, unit in bare:
         if _token(unit) in ("", "1"):
@@ -257,7 +267,7 @@ def units_row(header: list[str], cells: list[str]) -> tuple[list[str], list[tupl
         own = split_header(out[j])[1]
         if own is None:
             out[j] = f"{out[j].strip()} ({unit})"
-        elif _token(own) != _token(unit):
+        elif not _same_unit(own, unit):
             conflicts.append((j, out[j], unit))
     return out, conflicts
 

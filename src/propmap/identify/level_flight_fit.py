@@ -15,6 +15,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..core.airfoil import Air, SectionParams, sigmoid_blend
+from ..core.flapping import flapping_warning_held
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, differentiable, model_air
 from ..core.vector import rotor_wrench
@@ -187,8 +188,9 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     if options.body_lift:
         # the model without body lift first; the full fit starts from its optimum with
         # zero body lift (BODY_X0), so that it can only improve on it (nested models)
-        without = fit_level_flight(data, vehicle, base=base, air=air, options=no_body,
-                                   start=None if start is None else x0[:-3])
+        with flapping_warning_held():  # (the nested model's optimum is a trial point of this fit)
+            without = fit_level_flight(data, vehicle, base=base, air=air, options=no_body,
+                                       start=None if start is None else x0[:-3])
         x0 = np.concatenate([without.x, BODY_X0])
     best, log, nfev, elapsed, warns, extra = _fit_with_continuation(make_residual, names, base, options,
                                                                     "fit level-flight", x0)
@@ -202,7 +204,9 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     # flight fits report it since 2026-11-27, this fit did not: a structural review)
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(result.residuals[:data.n], np.zeros(data.n))
     if options.body_lift:
-        return _select_body_lift(result, best, without, data, vehicle, base, air, no_body, (nfev, elapsed))
+        result = _select_body_lift(result, best, without, data, vehicle, base, air, no_body, (nfev, elapsed))
+    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: held at trial points)
+        level_flight_forces(result.params, data, vehicle, air=air, discretization=options.discretization)
     return result
 
 
@@ -235,7 +239,9 @@ def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base:
 
         def residual(x, opts=opts):
             p = _params_from(x, names, base, opts)
-            return errors(level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization), x, p)
+            with flapping_warning_held():  # (a trial point's: said once at the fit's optimum)
+                return errors(level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization), x,
+                              p)
 
         def with_jacobian(x):
             """The residual and its Jacobian from one model call: the rotors' columns from the
@@ -244,8 +250,9 @@ def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base:
             x = np.asarray(x, float)
             p = _params_from(x, names, base, opts)
             section = names[:-3] if opts.body_lift else names
-            f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
-                                    derivatives=section)
+            with flapping_warning_held():
+                f = level_flight_forces(p, data, vehicle, air=air, discretization=opts.discretization,
+                                        derivatives=section)
             r = errors(f, x, p)
             cols = [f["vertical_jacobian"]]
             if opts.body_lift:

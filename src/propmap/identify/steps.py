@@ -26,7 +26,9 @@ ESC_TOL = {"us": ESC_TOL_US, "pct": 0.2, "fraction": 0.002}
 CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
 #: a sampled log's noisy condition column (a tunnel's pitot: about 0.2 m/s rms at a few m/s,
 #: where its dynamic pressure is a few pascals) splits steps only where it moves more than
-#: this many times its rms noise: at 5, one row in about 2,500 of pure noise starts a step
+#: this many times its rms noise, measured from the mean of the step's rows so far: at 5 a row of
+#: pure noise starts a step with a chance of 1 in 2,500 against the step's first row alone (the
+#: second row), of 1 in 1.7 million against the mean of many
 NOISE_K = 5.0
 #: a sampled log: its ESC signal holds a level for at least this many rows (the hold of its
 #: median row, so that the one-row steps of a ramp between holds do not count)
@@ -89,10 +91,12 @@ def condition_tolerances(conditions: dict, esc: np.ndarray, labels=None,
     CONDITION_TOL, or ``NOISE_K`` times the column's rms noise where that is larger: a tunnel's
     pitot read at 0.2 m/s rms noise split 12 steps of a log into 62 points with the fixed
     0.3 m/s (a data audit, 2026-11-30; 14 at 0.1 m/s rms). The noise is estimated from the
-    second differences of the rows within each ESC level (a hold of one signal and label), and
+    second differences of the rows within each ESC level (a hold of one signal and label, the
+    pieces of a readback jittering by +-2 us joined: such jitter hid a noisy pitot, a mutation
+    audit, 2026-12-01), and
     only in a sampled log (half its rows in holds of 10 rows or more; an export of averaged
-    steps has one row per step), where the column moves at most rows and turns back at half of
-    its moves or more (noise: 2 in 3; a table's levels stay put or run one way) and where the
+    steps has one row per step), where the column changes at half its rows or more and turns
+    back at half of its changes or more (noise: 2 in 3; a table's levels stay put or run one way) and where the
     noise is at most a tenth of the column's range or of its median size. So levels of a noisy
     column closer than the widened tolerance are one step.
 
@@ -113,8 +117,8 @@ def condition_tolerances(conditions: dict, esc: np.ndarray, labels=None,
         quantity -> tolerance (in the column's unit), and quantity -> rms noise for the
         columns whose tolerance was widened (empty where none was).
     """
-    holds = _step_starts(esc, {}, labels, tol)  # the ESC signal's levels alone
-    bounds = list(zip(holds, [*holds[1:], esc.size]))
+    holds = _step_starts(esc, {}, labels, tol)  # the ESC signal's levels alone, a jittering readback's pieces joined
+    bounds = _merge_steps(list(zip(holds, [*holds[1:], esc.size])), esc, {}, labels, tol, {})
     sizes = [b - a for a, b in bounds]
     out, noisy = dict(CONDITION_TOL), {}
     if not sizes or float(np.median(np.repeat(sizes, sizes))) < _SAMPLED_HOLD:  # (the hold of the median row)

@@ -34,6 +34,7 @@ import numpy as np
 from ..core._numbers import checked
 from ..core.airfoil import Air, SectionParams
 from ..core.air import SUPERSONIC_TIP
+from ..core.flapping import flapping_warning_held
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            model_air, supersonic_tips_allowed)
 from .layout import Vehicle, body_to_world, check_vehicle
@@ -126,6 +127,9 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         A trim whose advancing blade tips meet the air beyond Mach 0.8, or with a rotor in the
         vortex-ring state (descent: momentum theory is not predictive there, docs/models.md);
         :func:`hover_omega`'s warnings.
+    FlappingWarning
+        Once, where the trim's blades flap beyond the small-angle range (not at the search's
+        trial points).
 
     Notes
     -----
@@ -164,17 +168,20 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     x0 = np.concatenate([[0.0, 0.0], np.ones(n)])
     lo = np.concatenate([[-TILT_MAX, -TILT_MAX], np.full(n, OMEGA_MIN / om_h)])
     hi = np.concatenate([[TILT_MAX, TILT_MAX], np.full(n, OMEGA_MAX / om_h)])
-    with supersonic_tips_allowed():  # (the search may try fast rotors on its way; the trim is checked below)
+    # (the search may try fast or flapping rotors on its way; the trim is checked below, and its wrench says the rest)
+    with supersonic_tips_allowed(), flapping_warning_held():
         x = least_squares(lambda x: balance(x)[0], x0, bounds=(lo, hi), method="trf",
                           x_scale=np.concatenate([[0.1, 0.1], np.ones(n)]), xtol=1e-14, ftol=1e-14, gtol=1e-14,
                           max_nfev=200).x
-        r, v_b, w = balance(x)  # (the trim's wrench, kept)
+        r = balance(x)[0]
         if n > 4 and np.max(np.abs(r)) <= TRIM_TOL:  # more unknowns than equations: the nearest trim, if it balances
             y = _nearest_trim(lambda x: balance(x)[0], x, lo, hi)
             if y is not None:
-                ry, vy, wy = balance(y)
+                ry = balance(y)[0]
                 if np.all(np.isfinite(ry)) and np.max(np.abs(ry)) <= TRIM_TOL:
-                    x, r, v_b, w = y, ry, vy, wy
+                    x = y
+    with supersonic_tips_allowed():
+        r, v_b, w = balance(x)  # (the trim's wrench, kept: its flapping warned of once)
     if not np.all(np.isfinite(r)) or np.max(np.abs(r)) > TRIM_TOL:
         raise ValueError(f"airspeed {V:g} m/s, climb_rate {Vc:g} m/s: no trim found from the hover (the force "
                          "balance reached "
