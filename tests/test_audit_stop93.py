@@ -294,3 +294,22 @@ def test_a_rate_beside_the_airspeed_and_the_incidence_is_not_read_and_vz_is_stil
             f"{r},0,{t:.5g},{q:.5g}\n" for r, t, q in zip(range(4000, 10000, 1000), T, Q)), encoding="utf-8")
         with pytest.raises(ValueError, match="looks like a climb or descent rate"):
             read_loads(path)
+
+
+def test_quoted_decimal_commas_with_three_decimals_read_as_thousands_are_named_when_refused(tmp_path):
+    """A quoted decimal comma with three decimals, "1,734", reads as thousands (in a comma-separated
+    file no other reading tells it from 1734); the thrust then is a thousand times the model's, and
+    the refusal said only "check the units": it names the decimal commas now."""
+    from propmap.identify.sanity import sanity_check
+
+    rpm = np.arange(5000.0, 11000.0, 1000.0)
+    T, _, Q = _loads(rpm)
+    assert np.all((T >= 1.0) & (T < 10.0))  # (each "d,ddd": the form read as thousands)
+    path = tmp_path / "dec.csv"
+    path.write_text("rpm,thrust (N),torque (N m)\n" + "".join(
+        f'{r:.0f},"{t:.3f}",{q:.5f}\n'.replace(f'"{t:.3f}"', '"' + f"{t:.3f}".replace(".", ",") + '"')
+        for r, t, q in zip(rpm, T, Q)), encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.measured["thrust"], np.round(T, 3) * 1000)
+    with pytest.raises(ValueError, match="likely decimal commas read as thousands separators"):
+        sanity_check(data, pm.load_propeller(PROP))
