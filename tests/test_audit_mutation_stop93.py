@@ -237,3 +237,117 @@ def test_a_vehicle_trim_says_its_own_flapping_not_its_searchs():
         vehicle_wrench(veh, p, t.velocity, np.zeros(3), t.rotor_omega)
         again = [str(w.message) for w in caught if issubclass(w.category, pm.FlappingWarning)][len(said):]
     assert said == again
+
+
+# ---- a review of the change (helper, 2026-12-01): its defects, each test failing on the code before its fix
+
+def _sampled(path, head, rows):
+    path.write_text(head + "\n" + "\n".join(rows) + "\n", encoding="utf-8")
+    return path
+
+
+def test_a_descent_rate_at_rest_within_its_noise_is_static(tmp_path):
+    """8 ESC steps of 40 rows, the descent rate at 0 or 3 m/s with 0.1 m/s rms of noise: its sign
+    at rest flipped the incidence from row to row (0 / 180 deg) and the 8 steps were read as 83."""
+    rng = np.random.default_rng(0)
+    p, prop = pm.resolve_params("calibrated:apce_8x6"), pm.load_propeller("apce_8x6")
+    rows, t = [], 0.0
+    for k, rpm in enumerate(range(4000, 8000, 500)):
+        down = 3.0 * (k % 2)
+        r = pm.rotor_loads(prop, p, rpm * math.pi / 30, down, math.pi if down else 0.0)
+        for _ in range(40):
+            rows.append(f"{t:.1f},{1200 + 100 * k},{rpm},{float(r.thrust):.5g},{float(r.torque):.5g},"
+                        f"{down + 0.1 * rng.standard_normal():.3f}")
+            t += 0.1
+    data = read_loads(_sampled(tmp_path / "d.csv", "Time (s),ESC signal (µs),rpm,Thrust (N),Torque (N·m),"
+                               "Descent rate (m/s)", rows))
+    assert data.n == 8
+    assert np.allclose(np.degrees(data.incidence), [0, 180] * 4) and np.allclose(data.airspeed, [0, 3] * 4, atol=0.1)
+
+
+@pytest.mark.parametrize("step", [1.0, 0.5])
+def test_a_noisy_tunnel_sweep_at_one_throttle_keeps_its_levels(tmp_path, step):
+    """One ESC hold, 8 airspeed levels ``step`` m/s apart, 60 rows each, 0.25 m/s rms of pitot noise:
+    each row judged against 5 sigma alone merged them into 5 (1 m/s) or 2 (0.5 m/s) points; a level
+    held over 8 rows is now told from noise."""
+    rng = np.random.default_rng(0)
+    p, prop = pm.resolve_params("calibrated:apce_8x6"), pm.load_propeller("apce_8x6")
+    rows, t, levels = [], 0.0, 3.0 + step * np.arange(8)
+    for V in levels:
+        r = pm.rotor_loads(prop, p, 6000 * math.pi / 30, float(V), 0.0)
+        for _ in range(60):
+            rows.append(f"{t:.1f},1500,6000,{float(r.thrust):.5g},{float(r.torque):.5g},"
+                        f"{V + 0.25 * rng.standard_normal():.3f}")
+            t += 0.1
+    data = read_loads(_sampled(tmp_path / "s.csv", "Time (s),ESC signal (µs),rpm,Thrust (N),Torque (N·m),"
+                               "Airspeed (m/s)", rows), min_points=1)
+    assert data.n == 8 and np.allclose(data.airspeed, levels, atol=0.15)
+
+
+def test_a_units_row_that_spells_a_columns_unit_otherwise_is_read(tmp_path):
+    """'sec' under 'Time (s)', '°C' under 'Temp (C)': the same units spelt otherwise were refused as
+    contradicting the names; they are read. Another unit under a column propmap does not read ('mV'
+    under 'Voltage (V)') is a note, not a refusal (under a read one it still is: test_audit_stop93)."""
+    rows = "".join(f"{k * 0.1:.1f},{r},{r * r * 1e-7:.5g},{r * r * 2e-9:.5g},25,11.1\n"
+                   for k, r in enumerate(range(3000, 9000, 1000)))
+    path = tmp_path / "u.csv"
+    path.write_text("Time (s),rpm,thrust,torque,Temp (C),Voltage (V)\nsec,RPM,N,N m,°C,mV\n" + rows, encoding="utf-8")
+    data = read_loads(path)
+    assert data.n == 6 and any("gives 'mV' for column 'Voltage (V)'" in n for n in data.notes), data.notes
+    assert not any("'sec'" in n or "'°C'" in n for n in data.notes), data.notes
+
+
+def test_a_level_flight_files_units_row_is_not_merged_into_its_exact_names(tmp_path):
+    """A level-flight file's names are exact (airspeed, pitch_deg, rpm_1..): a units row merged into
+    them read as 'lacks column(s) airspeed, pitch_deg'; it is refused naming the row, as before."""
+    from propmap.identify.level_flight import read_level_flight
+
+    path = tmp_path / "lf.csv"
+    path.write_text("airspeed,pitch_deg,rpm_1,rpm_2,rpm_3,rpm_4\nm/s,deg,rpm,rpm,rpm,rpm\n"
+                    "2,-3,5200,5200,5200,5200\n4,-6,5300,5300,5300,5300\n", encoding="utf-8")
+    with pytest.raises(ValueError, match="a row of units under the header"):
+        read_level_flight(path, pm.read_vehicle("quadrotor"))
+
+
+@pytest.mark.parametrize("column, factor", [("V_descent (m/s)", 1.0), ("Sink rate (ft/min)", 0.00508),
+                                            ("Rate of descent [fpm]", 0.00508)])
+def test_more_names_and_units_of_a_descent_rate_are_read(tmp_path, column, factor):
+    """V_descent (m/s) was refused as an airspeed to rename, and ft/min (a vertical speed's unit) as
+    unknown."""
+    values = np.array([0, 4, 0, 6, 0, 8]) / factor
+    rows = "".join(f"{r},{v:g},{r * r * 1e-7:.5g},{r * r * 2e-9:.5g}\n"
+                   for r, v in zip(range(3000, 9000, 1000), values))
+    path = tmp_path / "r.csv"
+    path.write_text(f"rpm,{column},thrust,torque\n" + rows, encoding="utf-8")
+    data = read_loads(path)
+    assert np.allclose(data.airspeed, values * factor)
+    assert np.allclose(np.degrees(data.incidence), [0, 180] * 3)
+
+
+def test_loads_points_warns_of_flapping_once_for_the_whole_file(tmp_path, capsys, monkeypatch):
+    """`propmap loads --points` solves a file in chunks (20,000 rows): each chunk said its own flapping
+    warning with its own count once the CLI's special case went; one warning counts the file's."""
+    import propmap.cli.loads as cli_loads
+    from propmap.cli.main import main
+
+    monkeypatch.setattr(cli_loads, "CHUNK", 100)
+    rng = np.random.default_rng(0)
+    pts = tmp_path / "pts.csv"
+    pts.write_text("rpm,airspeed,incidence_deg\n" + "".join(f"{a:.1f},{b:.2f},90\n" for a, b in zip(
+        rng.uniform(800, 2000, 300), rng.uniform(10, 20, 300))), encoding="utf-8")
+    params = tmp_path / "flap.toml"
+    p = pm.resolve_params("calibrated:apce_8x6").replace(flap_compliance=50.0)
+    pm.write_params(params, p)
+    assert main(["loads", "apce_8x6", "--params", str(params), "--points", str(pts), "--out",
+                 str(tmp_path / "out.csv")]) == 0
+    err = capsys.readouterr().err
+    import warnings
+
+    from propmap.core.flapping import large_flapping
+
+    rpm, V, _ = np.loadtxt(pts, delimiter=",", skiprows=1).T
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = pm.rotor_loads(pm.load_propeller("apce_8x6"), p, rpm * math.pi / 30, V, math.pi / 2)
+    n = large_flapping(r.flap_1c, r.flap_1s)[0]
+    assert n > 100 and err.count("warning: flapping: ") == 1 and f"flapping: {n} point(s)" in err, err

@@ -277,7 +277,7 @@ def test_an_axial_descent_or_climb_rate_column_is_read_as_the_flow(tmp_path, col
     V, inc, T = np.array(truth).T
     assert np.allclose(data.airspeed, V, atol=1e-9) and np.allclose(np.degrees(data.incidence), inc)
     assert np.allclose(data.measured["thrust"], T, rtol=1e-5)
-    assert any(f"{column!r} read as the airspeed in axial flow: 6 point(s) descending" in n for n in data.notes)
+    assert any(f"{column!r} read as the airspeed in axial flow: 6 row(s) descending" in n for n in data.notes)
 
 
 def test_a_rate_beside_the_airspeed_and_the_incidence_is_not_read_and_vz_is_still_refused(tmp_path):

@@ -259,10 +259,11 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
 
 
 def _decimal_commas(path: Path, column: str, text, lines, marks: list):
-    """A ';'-separated points file's cells with decimal commas as points (identify/csvfile.py's
-    rule: a file with decimal commas and points is refused, a point beside decimal commas being
-    a thousands separator). ``marks``: where a decimal comma and a point were first seen so far,
-    (line, column)."""
+    """A ';'-separated points file's cells with decimal commas as points; a file with decimal
+    commas and points is refused, a point beside decimal commas being a thousands separator (load
+    files read 3.000 and 1.234,5 as thousands there since 2026-12-01, identify/csvfile.py; a points
+    file does not). ``marks``: where a decimal comma and a point were first seen so far, (line,
+    column)."""
     import numpy as np
 
     comma = (text.str.count(",") == 1) & ~text.str.contains(".", regex=False)
@@ -309,14 +310,16 @@ def numeric_keys(params) -> tuple[str, ...]:
     return NUMERIC_KEYS[:4] + SIDE_KEYS + NUMERIC_KEYS[4:] if params.side_load_sources() else NUMERIC_KEYS
 
 
-def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg=None):
+def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg=None, flapping=None):
     """Loads at every point (arrays of rpm, airspeed [m/s], incidence [deg], and optionally
     the collective [deg]).
 
     Per-annulus outputs are not kept (``radial=False``). Returns a DataFrame of the
     outputs, one row per input row: thrust, drag, torque, rolling_moment (side_force,
     pitching_moment where the set makes them: :func:`numeric_keys`), power, CT, CQ, CP,
-    v_i_over_v_h, lambda2, state, converged ("true"/"false"), flags.
+    v_i_over_v_h, lambda2, state, converged ("true"/"false"), flags. ``flapping``: a list to
+    which (the points flapping beyond FLAP_ANGLE_WARN, the largest angle) is appended, for a
+    caller that solves chunks and warns once.
     """
     import numpy as np
     import pandas as pd
@@ -331,6 +334,10 @@ def solve_points(prop, params, air, rpm, airspeed, incidence_deg, collective_deg
         res[k] = v
     res["converged"] = np.where(r.converged, "true", "false")
     res["flags"] = _flag_strings(r)
+    if flapping is not None:
+        from ..core.flapping import large_flapping
+
+        flapping.append(large_flapping(r.flap_1c, r.flap_1s))
     return res
 
 
@@ -355,8 +362,11 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     temporary file renamed at the end, or to standard output). Returns (points, the number
     of points carrying each flag of FLAG_MEANINGS, in its order).
     """
+    import warnings
+
     from tqdm import tqdm
 
+    from ..core.flapping import FlappingWarning, flapping_message, flapping_warning_held
     from ..io.atomic import atomic_write
 
     # first pass: every value checked before any work, and the extremes for the warnings
@@ -367,13 +377,15 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
 
     def write(fh):
         counts = dict.fromkeys(FLAG_MEANINGS, 0)
+        flapping = []  # (each chunk's large flapping: one warning for the file, not one per chunk, a review)
         with tqdm(total=n, unit="pt", disable=True if (not progress or n <= CHUNK) else None, leave=False) as bar:
             for k, (df, _, values) in enumerate(_chunks(path, CHUNK, offset)):  # the input cells are written as read
                 rows = values.get(COLLECTIVE_COLUMN)
                 # with a collective column the solver gets the sum (the set's offset + the row's), the one limit
-                res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
-                                   values["rpm"], values["airspeed"], values["incidence_deg"],
-                                   None if rows is None else rows + offset)
+                with flapping_warning_held():
+                    res = solve_points(prop, params if rows is None else params.replace(collective=0.0), air,
+                                       values["rpm"], values["airspeed"], values["incidence_deg"],
+                                       None if rows is None else rows + offset, flapping)
                 flags = list(res.columns).index("flags")  # (by place: it may be renamed below)
                 res.columns = _output_names(df.columns, res.columns)
                 df = df.reset_index(drop=True)
@@ -385,6 +397,10 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                     for name in filter(None, names.split(";")):
                         counts[name] += int(count)
                 bar.update(len(df))
+        big = sum(c for c, _ in flapping)
+        if big:
+            warnings.warn(flapping_message(big, max(a for _, a in flapping), params.flap_compliance), FlappingWarning,
+                          stacklevel=2)
         return counts
 
     if str(out) == "-":

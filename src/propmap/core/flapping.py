@@ -48,7 +48,8 @@ from typing import NamedTuple
 import numpy as np
 
 __all__ = ["FlapResult", "flap_damping", "flapping", "flapping_derivatives", "rigid_compliance_derivatives",
-           "warn_large_flapping", "FlappingWarning", "flapping_warning_held", "COMPLIANCE", "FLAP_ANGLE_WARN"]
+           "warn_large_flapping", "FlappingWarning", "flapping_warning_held", "large_flapping",
+           "flapping_message", "COMPLIANCE", "FLAP_ANGLE_WARN"]
 
 #: the name of the flap compliance 1 / K_beta among the derivatives' inputs
 COMPLIANCE = "flap_compliance"
@@ -192,14 +193,53 @@ def warn_large_flapping(beta_1c, beta_1s, compliance: float, stacklevel: int = 3
 
     if _FLAPPING_HELD.get():
         return
-    big = np.hypot(np.asarray(beta_1c), np.asarray(beta_1s))
-    n = int(np.count_nonzero(big > FLAP_ANGLE_WARN))
+    n, largest = large_flapping(beta_1c, beta_1s)
     if n:
-        warnings.warn(f"flapping: {n} point(s) flap by more than {FLAP_ANGLE_WARN:g} rad (largest "
-                      f"{float(np.max(big)):.3g} rad, flap_compliance {compliance:g} rad/(N m)): the first-harmonic "
-                      "flapping is a small-angle model, so their drag, side force and hub moments there are beyond "
-                      "it (a stopped or slow rotor's flap damping, which grows as Omega^2, no longer holds the "
-                      "blades; docs/models.md, Blade flapping)", FlappingWarning, stacklevel=stacklevel)
+        warnings.warn(flapping_message(n, largest, compliance), FlappingWarning, stacklevel=stacklevel)
+
+
+def large_flapping(beta_1c, beta_1s) -> tuple[int, float]:
+    """How many points flap beyond FLAP_ANGLE_WARN, and the largest angle.
+
+    For :func:`warn_large_flapping` and a caller that sums them over chunks of points
+    (``propmap loads --points``).
+
+    Parameters
+    ----------
+    beta_1c, beta_1s : array_like
+        Flapping angles [rad], any common shape.
+
+    Returns
+    -------
+    (int, float)
+        The count of points whose flapping magnitude exceeds FLAP_ANGLE_WARN, and the largest
+        magnitude [rad] (0 and 0.0 where there are no points).
+    """
+    big = np.hypot(np.asarray(beta_1c, float), np.asarray(beta_1s, float))
+    return int(np.count_nonzero(big > FLAP_ANGLE_WARN)), float(np.max(big, initial=0.0))
+
+
+def flapping_message(n: int, largest: float, compliance: float) -> str:
+    """The text of a :class:`FlappingWarning`.
+
+    Parameters
+    ----------
+    n : int
+        Points flapping beyond FLAP_ANGLE_WARN.
+    largest : float
+        The largest flapping magnitude [rad].
+    compliance : float
+        The blades' flap compliance [rad/(N m)].
+
+    Returns
+    -------
+    str
+        The message, one line.
+    """
+    return (f"flapping: {n} point(s) flap by more than {FLAP_ANGLE_WARN:g} rad (largest {largest:.3g} rad, "
+            f"flap_compliance {compliance:g} rad/(N m)): the first-harmonic flapping is a small-angle model, so their "
+            "drag, side force and hub moments there are beyond it (a stopped or slow rotor's flap damping, which "
+            "grows as Omega^2, no longer holds the blades; docs/models.md, Blade flapping)")
 
 
 def flapping_derivatives(jac: dict, thrust, rolling_moment, damping, compliance: float, n_blades: int, *, omega,

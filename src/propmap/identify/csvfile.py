@@ -163,6 +163,11 @@ SUMMARY_LABELS = frozenset(("average", "avg", "avg.", "mean", "total", "sum", "m
                             "standard deviation", "averages", "totals"))
 
 
+def _ungrouped(cell: str) -> str:
+    """A cell whose points group thousands beside a decimal comma as a decimal number: 1.234,5 -> 1234.5."""
+    return cell.replace(".", "").replace(",", ".")
+
+
 class _Csv:
     """A parsed CSV: the header's columns, and numbers or text of the columns asked for.
 
@@ -170,8 +175,10 @@ class _Csv:
     costs 8 bytes a value; every message names the file, the line and the column.
     """
 
-    def __init__(self, path, what: str, *, windows_1252: bool = False):
-        self.what, self.name = what, show_path(path)
+    def __init__(self, path, what: str, *, windows_1252: bool = False, spreadsheet: bool = False):
+        # (spreadsheet: a row of units under the header and thousands separators are read, in load data; a
+        # level-flight file's names are exact, and a units row merged into them hid its columns: a review, 2026-12-01)
+        self.what, self.name, self.spreadsheet = what, show_path(path), spreadsheet
         self.notes: list[str] = []  # (what reading the bytes decided, for the reader's notes)
         try:
             raw = read_input_bytes(path, DataError, limit=MAX_FILE_BYTES)
@@ -220,7 +227,7 @@ class _Csv:
             under = next(rows)
         except (StopIteration, DataError):  # (no row under it, or one that does not parse: the reader says so)
             under = None
-        if under is not None:
+        if under is not None and self.spreadsheet:
             self._units_row(*under)
         seen: dict[str, int] = {}
         for j, c in enumerate(self.columns, start=1):
@@ -238,16 +245,18 @@ class _Csv:
         """The row under the header read as the columns' units where it is one
         (:func:`propmap.identify.headers.units_row`): merged into the header's names, with a note,
         and skipped by :meth:`read`; a unit that contradicts a name's own is refused."""
-        from .headers import units_row
+        from .headers import READ_NAMES, split_header, units_row
 
         merged = units_row(self.header, cells)
         if merged is None:
             return
         header, conflicts = merged
-        if conflicts:
-            j, name, unit = conflicts[0]
-            raise self.error(f"the row of units under the header gives {_short(unit)} for column {_short(name)}, "
-                             "whose name gives another unit: write one", line)
+        for j, name, unit in conflicts:
+            if split_header(name)[0] in READ_NAMES:
+                raise self.error(f"the row of units under the header gives {_short(unit)} for column {_short(name)}, "
+                                 "whose name gives another unit: write one", line)
+            self.notes.append(f"{self.name}: line {line} gives {_short(unit)} for column {_short(name)}, whose name "
+                              "gives another unit (a column propmap does not read: left as named)")
         self.units_line = line
         self.notes.append(f"{self.name}: line {line} read as the columns' units (" + ", ".join(
             _short(h) for h, old in zip(header, self.header) if h != old) + ")" if header != self.header else
@@ -276,6 +285,7 @@ class _Csv:
                 continue
             other = object.__new__(_Csv)
             other.what, other.name, other.notes = self.what, self.name, list(self.notes)
+            other.spreadsheet = self.spreadsheet
             other._raw = re.sub(rb"[^\r\n]", b"", self._raw[:start]) + self._raw[start:]  # (line breaks kept)
             try:
                 other._find_header()
@@ -408,7 +418,7 @@ class _Csv:
                 if self.sep != ",":
                     self._thousands(c, number, line, grouped)
                     number = self._decimal_comma(c, number, line, marks, pending, len(nums[c]))
-                elif "," in number and re.fullmatch(r"[+-]?[1-9]\d{0,2}(,\d{3})+(\.\d+)?", number):
+                elif self.spreadsheet and "," in number and re.fullmatch(r"[+-]?[1-9]\d{0,2}(,\d{3})+(\.\d+)?", number):
                     commas.setdefault(c, (line, number))  # ("3,000" quoted: refused as not a number until 2026-12-01)
                     number = number.replace(",", "")
                 try:
@@ -432,12 +442,17 @@ class _Csv:
                 j = self.index[c]
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
+        if marks[0] and pending and not self.spreadsheet:  # (a level-flight file: refused, as before 2026-12-01)
+            (lc, cc), (_, cp, lp, _) = marks[0], pending[0]
+            raise self.error(f"decimal commas (line {lc}, column {_short(cc)}) and points (line {lp}, column "
+                             f"{_short(cp)}) in one file; beside decimal commas a point is a thousands separator: "
+                             "save the numbers without one", lp)
         if marks[0] and pending:  # beside decimal commas a point groups thousands: 3.000 is 3000
             for c, row, _, cell in pending:
-                nums[c][row] = float(cell.replace(".", "").replace(",", "."))
+                nums[c][row] = float(_ungrouped(cell))
             self.read_notes.append(f"{self.name}: points read as thousands separators beside the file's decimal commas "
                                    f"(column {_short(self.header[self.index[pending[0][0]]])}, line {pending[0][2]}: "
-                                   f"{pending[0][3]} read as {pending[0][3].replace('.', '').replace(',', '.')})")
+                                   f"{pending[0][3]} read as {_ungrouped(pending[0][3])})")
         for c, (line, cell) in commas.items():
             self.read_notes.append(f"{self.name}: column {_short(self.header[self.index[c]])}: commas read as "
                                    f"thousands separators (line {line}: {cell} read as {cell.replace(',', '')})")
@@ -529,7 +544,7 @@ class _Csv:
             pending.append((column, row, line, cell))
             if "," in cell:
                 marks[0] = marks[0] or (line, column)
-                cell = cell.replace(".", "").replace(",", ".")
+                cell = _ungrouped(cell)
         elif "." in cell and "," not in cell:
             marks[1] = marks[1] or (line, column)
         if marks[0] and marks[1]:

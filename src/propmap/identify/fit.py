@@ -386,7 +386,8 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     result = _traced_residuals(result, data, keys)
     if inplane:
         result = _flap_articulated(_flap_saturation(result, make_residual(options), options))
-    make_data(options).at_optimum(result.x)
+    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: held at trial points)
+        make_data(options).at_optimum(result.x)
     return result if k_dirs == 0 else _directions_report(result, options)
 
 

@@ -61,7 +61,9 @@ UNITS = {
     # (m s-1, m.s-1, km h^-1: SI's negative powers, left unread with every point static: a review, 2026-11-30)
     "speed": {"ms": 1.0, "mps": 1.0, "ms1": 1.0, "kmh": 1 / 3.6, "kmh1": 1 / 3.6, "kph": 1 / 3.6, "mph": 0.44704,
               "kn": 1852 / 3600,
-              "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048},
+              "kt": 1852 / 3600, "kts": 1852 / 3600, "knots": 1852 / 3600, "fts": 0.3048, "fps": 0.3048,
+              # (a vertical speed's unit: Sink rate (ft/min) was refused as an unknown unit, a review, 2026-12-01)
+              "ftmin": 0.00508, "fpm": 0.00508},
     "angle": {"deg": 1.0, "degrees": 1.0, "°": 1.0, "rad": 180.0 / math.pi},
     "density": {"kgm3": 1.0, "kgm³": 1.0, "gl": 1.0, "gcm3": 1e3, "gcm³": 1e3, "lbft3": 16.018463373960138,
                 "lbft³": 16.018463373960138},
@@ -100,8 +102,9 @@ _NAMES = {
     # an axial descent's or climb's rate, read as the airspeed with incidence 180 or 0 deg by its sign (refused until
     # 2026-12-01, to be written as those two columns: rotors in descent are measured so); not Vz, V_c or a vertical
     # speed, whose sign convention a name does not say
-    **dict.fromkeys(DESCENT_RATE_NAMES, ("descent_rate", "speed")),
-    **dict.fromkeys(CLIMB_RATE_NAMES, ("climb_rate", "speed")),
+    **dict.fromkeys((*DESCENT_RATE_NAMES, *(n.replace(" ", "_") for n in DESCENT_RATE_NAMES)),
+                    ("descent_rate", "speed")),
+    **dict.fromkeys((*CLIMB_RATE_NAMES, *(n.replace(" ", "_") for n in CLIMB_RATE_NAMES)), ("climb_rate", "speed")),
     "incidence": ("incidence_deg", "angle"), "incidence_deg": ("incidence_deg", "angle"),
     # (refused as a flow angle to be renamed, though they name the incidence: a wind-tunnel data audit, 2026-11-30)
     "incidence angle": ("incidence_deg", "angle"), "angle of incidence": ("incidence_deg", "angle"),
@@ -132,6 +135,8 @@ _UNIT_ONLY_NAMES = {
 }
 #: every name whose unit split_header reads
 _PARSED = {**_NAMES, **_UNIT_ONLY_NAMES}
+#: the names of the quantities a load file's reader takes (a units row's conflict with one is refused)
+READ_NAMES = frozenset(_PARSED)
 #: per name, rotation units beyond UNITS["rotation"]: 1/s of a rotational frequency n is a revolution per second (ISO
 #: 80000-3:2019; German stands write Drehzahl in 1/s too), of an angular speed it would be rad/s
 _PER_SECOND = {tok: 60.0 for tok in ("1s", "s1", "s⁻¹")}
@@ -209,13 +214,20 @@ def _token(unit: str) -> str:
 
 #: units of a stand's other channels, which a row of units under the header gives beside UNITS' ones (tokens)
 _OTHER_UNITS = frozenset(("s", "ms", "us", "min", "h", "v", "mv", "a", "ma", "w", "kw", "%", "pct", "c", "°c", "degc",
-                          "k", "pa", "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1"))
+                          "k", "pa", "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1",
+                          "sec", "secs", "amp", "amps", "volt", "volts", "watt", "watts"))
+
+
+#: other channels' units spelt out or with a degree sign, as their tokens in _OTHER_UNITS ('sec' under 'Time (s)' and
+#: '°C' under 'Temp (C)' were refused as other units: a review, 2026-12-01)
+_SPELT = {"sec": "s", "secs": "s", "second": "s", "seconds": "s", "°c": "c", "degc": "c", "amp": "a", "amps": "a",
+          "ampere": "a", "amperes": "a", "volt": "v", "volts": "v", "watt": "w", "watts": "w"}
 
 
 def _same_unit(a: str, b: str) -> bool:
     """Whether two units as written are one (``rpm`` and ``rev/min``, ``g`` and ``gf``: the same
-    factor in one of UNITS' quantities), or are spelt alike."""
-    ta, tb = _token(a), _token(b)
+    factor in one of UNITS' quantities; ``s`` and ``sec``, ``C`` and ``°C``), or are spelt alike."""
+    ta, tb = (_SPELT.get(t, t) for t in (_token(a), _token(b)))
     return ta == tb or any(ta in kind and tb in kind and math.isclose(kind[ta], kind[tb], rel_tol=1e-12)
                            for kind in UNITS.values())
 

@@ -122,7 +122,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
 
     min_points = integer("min_points", min_points, 1)
     what = "load data"
-    f = _Csv(path, what, windows_1252=True)
+    f = _Csv(path, what, windows_1252=True, spreadsheet=True)
     p = f.name
 
     f, cm = _header_columns(f, rpm_source, pole_pairs, what, p)
@@ -354,15 +354,19 @@ def _steps_or_points(f, cm, v: dict, group, lines: np.ndarray, what: str, p: str
 def _axial_rate(v: dict, cm, notes: list) -> None:
     """A descent or climb rate column (headers.DESCENT_RATE_NAMES, CLIMB_RATE_NAMES) read as the
     flow: its magnitude the airspeed, in axial descent (incidence 180 deg) where the rotor descends
-    and in axial climb (0 deg) where it climbs, with a note (since 2026-12-01: such a column was
-    refused, to be written as an airspeed and an incidence)."""
+    and in axial climb (0 deg) where it climbs, at rest within STATIC_AIRSPEED, with a note (since
+    2026-12-01: such a column was refused, to be written as an airspeed and an incidence)."""
     for q, sign in zip(AXIAL_RATES, (1.0, -1.0)):
         if q in v:
             down = sign * v.pop(q)  # positive descending
+            # (a rate within a static stand's pitot noise is rest: its sign flipped the incidence from row to row, and
+            # a sampled log's 8 steps were read as 83, a review, 2026-12-01)
+            down = np.where(np.abs(down) <= STATIC_AIRSPEED, 0.0, down)
             v["airspeed"], v["incidence_deg"] = np.abs(down), np.where(down > 0, 180.0, 0.0)
-            n_down = int(np.count_nonzero(down > 0))
-            notes.append(f"{cm.column(q)!r} read as the airspeed in axial flow: {n_down} point(s) descending "
-                         f"(incidence 180 deg), {down.size - n_down} climbing or static (0 deg)")
+            n_down, n_up = int(np.count_nonzero(down > 0)), int(np.count_nonzero(down < 0))
+            notes.append(f"{cm.column(q)!r} read as the airspeed in axial flow: {n_down} row(s) descending "
+                         f"(incidence 180 deg), {n_up} climbing (0 deg), {down.size - n_down - n_up} at rest (within "
+                         f"{STATIC_AIRSPEED:g} m/s)")
 
 
 def _average_steps(v: dict, group, form: str, column: str, where: str, notes: list):

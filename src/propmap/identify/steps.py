@@ -30,6 +30,8 @@ CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
 #: pure noise starts a step with a chance of 1 in 2,500 against the step's first row alone (the
 #: second row), of 1 in 1.7 million against the mean of many
 NOISE_K = 5.0
+#: rows whose mean tells a noisy column's new level from its noise (_noisy_starts)
+NOISY_ROWS = 8
 #: a sampled log: its ESC signal holds a level for at least this many rows (the hold of its
 #: median row, so that the one-row steps of a ramp between holds do not count)
 _SAMPLED_HOLD = 10
@@ -162,25 +164,40 @@ def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL
             ref = i
     if not noisy:
         return np.array(starts)
-    columns = [(np.asarray(conditions[q], float), cond_tol[q]) for q in noisy]
+    columns = [(np.asarray(conditions[q], float), cond_tol[q], CONDITION_TOL[q]) for q in noisy]
     return np.array([k for a, b in zip(starts, [*starts[1:], esc.size]) for k in _noisy_starts(columns, a, b)])
 
 
 def _noisy_starts(columns: list, first: int, stop: int) -> list:
-    """Step starts in rows [first, stop) by noisy columns ((values, tolerance) pairs): a row
-    more than the tolerance from the mean of its step's finite rows before it starts a step.
-    Searched in windows of rows that grow fourfold, in whole-array operations."""
+    """Step starts in rows [first, stop) by noisy columns ((values, widened tolerance, fixed
+    tolerance) triples): a row starts a step where the mean of it and the next rows (NOISY_ROWS
+    in all, fewer at the end) lies further from the mean of the step's rows before it than the
+    widened tolerance over the root of their count (at least the fixed one), and the row itself
+    lies nearer that new mean than the step's. A level held over 8 rows is so told from noise at
+    5 sigma / sqrt 8 (a tunnel sweep at one throttle in 1 m/s levels with 0.25 m/s rms of noise
+    was read as 5 points, 0.5 m/s levels as 2, while each row was judged alone: a review,
+    2026-12-01), and a step starts at the row where the level changes. Searched in windows of
+    rows that grow fourfold, in whole-array operations."""
     starts, ref, width = [first], first, 16
     while ref < stop - 1:
-        end = min(stop, ref + 1 + width)
-        moved = np.zeros(end - ref - 1, bool)
-        for a, c_tol in columns:
-            seg = a[ref:end]
+        end = min(stop, ref + 1 + width)  # candidates ref+1 .. end-1
+        hi = min(stop, end + NOISY_ROWS - 1)
+        start = np.zeros(end - ref - 1, bool)
+        for a, c_tol, fixed in columns:
+            seg = a[ref:hi]
             finite = np.isfinite(seg)
+            x = np.where(finite, seg, 0.0)
+            s1, n1 = np.concatenate([[0.0], np.cumsum(x)]), np.concatenate([[0], np.cumsum(finite)])
+            k = np.arange(1, end - ref)  # candidate rows, relative to ref
+            top = np.minimum(k + NOISY_ROWS, seg.size)
             with np.errstate(invalid="ignore", divide="ignore"):
-                mean = np.cumsum(np.where(finite, seg, 0.0))[:-1] / np.cumsum(finite)[:-1]
-                moved |= np.abs(seg[1:] - mean) > c_tol  # (NaN compares False: a missing cell moves nothing)
-        hit = np.flatnonzero(moved)
+                before = s1[k] / n1[k]
+                count = n1[top] - n1[k]
+                after = (s1[top] - s1[k]) / count
+                shift = np.abs(after - before) > np.maximum(fixed, c_tol / np.sqrt(np.maximum(count, 1)))
+                nearer = np.abs(seg[k] - after) < np.abs(seg[k] - before)  # (NaN compares False: no start)
+            start |= shift & nearer
+        hit = np.flatnonzero(start)
         if hit.size:
             ref += 1 + int(hit[0])
             starts.append(ref)
@@ -197,13 +214,22 @@ def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: fl
     (the ESC signal: two pieces of one step whose readback jitters by +-tol) and within
     ``cond_tol`` (the operating conditions) and their label is one: a +-2 us jitter split 16
     steps into 104 (a thrust-stand export audit, 2026-11-27; 16 again since). So signal levels
-    closer than 2 tol (4 us, 0.4%, 0.004) are one step."""
+    closer than 2 tol (4 us, 0.4%, 0.004) are one step. For a column whose tolerance was widened
+    for its noise the medians' own noise counts: within the widened tolerance times
+    sqrt(1/n_a + 1/n_b) for pieces of n_a and n_b rows (at least the fixed one), so that a row of
+    noise joins its step and two held levels 1 m/s apart stay two."""
     merged = [steps[0]] if steps else []
+
+    def within(q, x, a, b, pa, pb):
+        t = cond_tol[q]
+        if t > CONDITION_TOL[q]:
+            t = max(CONDITION_TOL[q], t * float(np.sqrt(1.0 / (b - a) + 1.0 / (pb - pa))))
+        return abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= t
+
     for a, b in steps[1:]:
         pa, pb = merged[-1]
         if ((labels is None or labels[a] == labels[pa]) and abs(np.median(esc[a:b]) - np.median(esc[pa:pb])) <= 2 * tol
-                and all(abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= cond_tol[q]
-                        for q, x in conditions.items())):
+                and all(within(q, x, a, b, pa, pb) for q, x in conditions.items())):
             merged[-1] = (pa, b)
         else:
             merged.append((a, b))

@@ -131,10 +131,11 @@ def _refuse_wind_axes_and_rates(cm: ColumnMap, split: dict, bases: dict, stems: 
             other = cm.column("airspeed") or cm.column("incidence_deg")
             raise error(f"columns {name!r} (a {given[0].replace('_', ' ')}) and {other!r} both give the flow: keep "
                         "the rate alone (axial flow), or give 'airspeed' with 'incidence_deg' (0 climb, 180 descent)")
-    rate = [n for n in bases if n not in read and stems[n] & _loose(_AXIAL_RATE_LIKE)
-            or n not in read and (split[n][0].replace("_", " ") in _DESCENT_SYMBOLS and split[n][1] is not None
-                                  and _token(split[n][1]) in UNITS["speed"])
-            or n not in read and (split[n][1] is None and _speed_stem(split[n][0]) in _DESCENT_SYMBOLS)]
+    rate = [n for n in bases if n not in read and (
+        stems[n] & _loose(_AXIAL_RATE_LIKE)
+        or (split[n][0].replace("_", " ") in _DESCENT_SYMBOLS and split[n][1] is not None
+            and _token(split[n][1]) in UNITS["speed"])
+        or (split[n][1] is None and _speed_stem(split[n][0]) in _DESCENT_SYMBOLS))]
     if rate and "airspeed" in cm.columns and "incidence_deg" in cm.columns:
         cm.notes.append(f"column {rate[0]!r} (a climb or descent rate) is not read: the airspeed and the incidence "
                         "give the flow")
