@@ -351,3 +351,16 @@ def test_loads_points_warns_of_flapping_once_for_the_whole_file(tmp_path, capsys
         r = pm.rotor_loads(pm.load_propeller("apce_8x6"), p, rpm * math.pi / 30, V, math.pi / 2)
     n = large_flapping(r.flap_1c, r.flap_1s)[0]
     assert n > 100 and err.count("warning: flapping: ") == 1 and f"flapping: {n} point(s)" in err, err
+
+
+def test_an_unread_flow_angle_beside_a_descent_rate_is_told_the_rates_incidence(tmp_path):
+    """A flow angle column beside a descent rate is refused (the rate gives axial flow only); the
+    message said the points would be 'in axial flow (incidence 0)', where descending ones are at 180."""
+    path = tmp_path / "a.csv"
+    path.write_text("rpm,Descent rate (m/s),flow angle (deg),thrust,torque\n" + "".join(
+        f"{r},{v},{a},{t},{q}\n" for r, v, a, t, q in zip((5000, 5000, 6000, 6000, 7000, 7000), (0, 2, 0, 3, 0, 4),
+                                                          (0, 30) * 3, (2.6, 2.7, 3.7, 3.8, 5.0, 5.1),
+                                                          (0.03,) * 6)), encoding="utf-8")
+    with pytest.raises(ValueError, match=r"column 'flow angle \(deg\)' looks like a flow angle.*incidence 0 or 180 "
+                                         r"deg by the rate's sign\)$"):
+        read_loads(path)

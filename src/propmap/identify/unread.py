@@ -157,7 +157,10 @@ def _refuse_unread_flow(cm: ColumnMap, split: dict, bases: dict, stems: dict, er
              "'airspeed' [m/s] (an advance ratio as airspeed = J n D)", "static (airspeed 0)"),
             ("incidence_deg", _ANGLE_LIKE, "a flow angle",
              "'incidence_deg', the angle between the airspeed and the rotor axis (0 axial climb, 90 edgewise, 180 "
-             "axial descent; a blade pitch setting as 'collective_deg')", "in axial flow (incidence 0)")):
+             "axial descent; a blade pitch setting as 'collective_deg')",
+             # (a descent or climb rate sets 0 or 180 deg by its sign: 'incidence 0' misled there, a review, 2026-12-01)
+             "in axial flow (incidence 0 or 180 deg by the rate's sign)" if any(q in cm.columns for q in AXIAL_RATES)
+             else "in axial flow (incidence 0)")):
         if quantity in cm.columns or (quantity == "airspeed" and flow):
             continue
         similar = _loose(similar)
