@@ -364,3 +364,16 @@ def test_an_unread_flow_angle_beside_a_descent_rate_is_told_the_rates_incidence(
     with pytest.raises(ValueError, match=r"column 'flow angle \(deg\)' looks like a flow angle.*incidence 0 or 180 "
                                          r"deg by the rate's sign\)$"):
         read_loads(path)
+
+
+def test_a_level_flight_files_point_beside_decimal_commas_is_refused_naming_its_column(tmp_path):
+    """The final reread: a level-flight file (not read as a spreadsheet's) with 5.200 beside 2,5 was
+    refused naming 'column 0' (the row index) for the point; it names the column."""
+    from propmap.identify.level_flight import read_level_flight
+
+    path = tmp_path / "lf.csv"
+    path.write_text("airspeed;pitch_deg;rpm_1;rpm_2;rpm_3;rpm_4\n2,5;-3;5.200;5200;5200;5200\n"
+                    "4;-6;5300;5300;5300;5300\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=r"decimal commas \(line 2, column 'airspeed'\) and points \(line 2, column "
+                                         r"'rpm_1'\)"):
+        read_level_flight(path, pm.read_vehicle("quadrotor"))

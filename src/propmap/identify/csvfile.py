@@ -163,6 +163,11 @@ SUMMARY_LABELS = frozenset(("average", "avg", "avg.", "mean", "total", "sum", "m
                             "standard deviation", "averages", "totals"))
 
 
+#: the note's words for a comma-separated file's quoted cells read with commas as thousands separators (the load
+#: check names it as a cause where the loads are a thousand times the model's: identify/sanity.py)
+COMMA_THOUSANDS = "commas read as thousands separators"
+
+
 def _ungrouped(cell: str) -> str:
     """A cell whose points group thousands beside a decimal comma as a decimal number: 1.234,5 -> 1234.5."""
     return cell.replace(".", "").replace(",", ".")
@@ -442,20 +447,7 @@ class _Csv:
                 j = self.index[c]
                 texts[c].append(cells[j].strip() if j < len(cells) else "")
             lines.append(line)
-        if marks[0] and pending and not self.spreadsheet:  # (a level-flight file: refused, as before 2026-12-01)
-            (lc, cc), (_, cp, lp, _) = marks[0], pending[0]
-            raise self.error(f"decimal commas (line {lc}, column {_short(cc)}) and points (line {lp}, column "
-                             f"{_short(cp)}) in one file; beside decimal commas a point is a thousands separator: "
-                             "save the numbers without one", lp)
-        if marks[0] and pending:  # beside decimal commas a point groups thousands: 3.000 is 3000
-            for c, row, _, cell in pending:
-                nums[c][row] = float(_ungrouped(cell))
-            self.read_notes.append(f"{self.name}: points read as thousands separators beside the file's decimal commas "
-                                   f"(column {_short(self.header[self.index[pending[0][0]]])}, line {pending[0][2]}: "
-                                   f"{pending[0][3]} read as {_ungrouped(pending[0][3])})")
-        for c, (line, cell) in commas.items():
-            self.read_notes.append(f"{self.name}: column {_short(self.header[self.index[c]])}: commas read as "
-                                   f"thousands separators (line {line}: {cell} read as {cell.replace(',', '')})")
+        self._thousands_read(nums, marks, pending, commas)
         self._refuse_thousands({c: seen for c, seen in grouped.items()
                                 if not (marks[0] and seen["grouped"] and "." in seen["grouped"][1])})
         self._refuse_summary_label(first_cells, last_cells, last_line, read_at | {self.index[c] for c in texts})
@@ -548,11 +540,33 @@ class _Csv:
         elif "." in cell and "," not in cell:
             marks[1] = marks[1] or (line, column)
         if marks[0] and marks[1]:
-            (lc, cc), (lp, cp) = marks
-            raise self.error(f"decimal commas (line {lc}, column {_short(cc)}) and points (line {lp}, column "
-                             f"{_short(cp)}) in one file; beside decimal commas a point is a thousands separator: "
-                             "save the numbers without one", line)
+            raise self._mixed_marks(marks[0], marks[1], line)
         return cell
+
+    def _mixed_marks(self, comma: tuple, point: tuple, line: int) -> DataError:
+        """The refusal of a file with decimal commas and points, each (line, column) where first seen."""
+        return self.error(f"decimal commas (line {comma[0]}, column {_short(comma[1])}) and points (line {point[0]}, "
+                          f"column {_short(point[1])}) in one file; beside decimal commas a point is a thousands "
+                          "separator: save the numbers without one", line)
+
+    def _thousands_read(self, nums: dict, marks: list, pending: list, commas: dict) -> None:
+        """:meth:`read`'s thousands separators, once every row is read: beside decimal commas the
+        ``pending`` cells of a ';'- or tab-separated file (3.000, 1.234,5) re-read as thousands in
+        ``nums`` (refused in a file that is not a spreadsheet's, a level-flight file's), and a note
+        for them and for each comma-separated column whose quoted cells grouped thousands with
+        commas (``commas``: column -> (line, cell))."""
+        if marks[0] and pending and not self.spreadsheet:  # (a level-flight file: refused, as before 2026-12-01)
+            raise self._mixed_marks(marks[0], (pending[0][2], pending[0][0]), pending[0][2])
+        if marks[0] and pending:  # beside decimal commas a point groups thousands: 3.000 is 3000
+            for c, row, _, cell in pending:
+                nums[c][row] = float(_ungrouped(cell))
+            c, _, line, cell = pending[0]
+            self.read_notes.append(f"{self.name}: points read as thousands separators beside the file's decimal commas "
+                                   f"(column {_short(self.header[self.index[c]])}, line {line}: {cell} read as "
+                                   f"{_ungrouped(cell)})")
+        for c, (line, cell) in commas.items():
+            self.read_notes.append(f"{self.name}: column {_short(self.header[self.index[c]])}: {COMMA_THOUSANDS} "
+                                   f"(line {line}: {cell} read as {cell.replace(',', '')})")
 
     def check_ranges(self, values: dict, lines: np.ndarray, ranges: dict, written: dict | None = None) -> None:
         """Refuse the first value outside its column's range, naming the line and the range;

@@ -212,16 +212,14 @@ def _token(unit: str) -> str:
     return re.sub(r"[\s·⋅*./_\-^]", "", unit.lower().replace("â", "").replace("µ", "u").replace("μ", "u"))
 
 
-#: units of a stand's other channels, which a row of units under the header gives beside UNITS' ones (tokens)
-_OTHER_UNITS = frozenset(("s", "ms", "us", "min", "h", "v", "mv", "a", "ma", "w", "kw", "%", "pct", "c", "°c", "degc",
-                          "k", "pa", "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1",
-                          "sec", "secs", "amp", "amps", "volt", "volts", "watt", "watts"))
-
-
 #: other channels' units spelt out or with a degree sign, as their tokens in _OTHER_UNITS ('sec' under 'Time (s)' and
 #: '°C' under 'Temp (C)' were refused as other units: a review, 2026-12-01)
 _SPELT = {"sec": "s", "secs": "s", "second": "s", "seconds": "s", "°c": "c", "degc": "c", "amp": "a", "amps": "a",
           "ampere": "a", "amperes": "a", "volt": "v", "volts": "v", "watt": "w", "watts": "w"}
+#: units of a stand's other channels, which a row of units under the header gives beside UNITS' ones (tokens; those
+#: _SPELT spells out too)
+_OTHER_UNITS = frozenset(("s", "ms", "us", "min", "h", "v", "mv", "a", "ma", "w", "kw", "%", "pct", "c", "k", "pa",
+                          "hpa", "kpa", "bar", "mbar", "hz", "khz", "j", "wh", "mah", "ohm", "gw", "", "1", *_SPELT))
 
 
 def _same_unit(a: str, b: str) -> bool:

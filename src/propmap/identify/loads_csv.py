@@ -373,7 +373,7 @@ def _average_steps(v: dict, group, form: str, column: str, where: str, notes: li
     """(v, group) of a stand's "steps" test: one point per ESC step, its settling rows dropped
     (:func:`propmap.identify.steps.stand_points`), each step a group, with a note; DataError
     where no row has a speed, the signal never steps or no step settles."""
-    from .steps import CONDITION_TOL, ESC_TOL, NOISE_K, condition_tolerances, stand_points
+    from .steps import CONDITION_TOL, ESC_TOL, NOISE_K, NOISY_ROWS, condition_tolerances, stand_points
 
     n = v["rpm"].size
     esc, time = v.pop("esc"), v.pop("time", None)
@@ -381,11 +381,13 @@ def _average_steps(v: dict, group, form: str, column: str, where: str, notes: li
         raise DataError(f"{where}: no rotation speed in any row")
     _one_signal(esc, v, group, form, column, where)
     cond_tol, noisy = condition_tolerances({q: v[q] for q in CONDITION_TOL if q in v}, esc, group, ESC_TOL[form])
-    unit = {"airspeed": "m/s", "incidence_deg": "deg", "collective_deg": "deg"}
     for q, sigma in noisy.items():
-        notes.append(f"{q} is noisy ({sigma:.2g} {unit[q]} rms from row to row, a pitot's or a sensor's): a new step "
-                     f"starts where it moves by more than {cond_tol[q]:.2g} {unit[q]} ({NOISE_K:g} times its noise) "
-                     f"instead of {CONDITION_TOL[q]:g}, so levels closer than that are one step")
+        unit = RANGES[q][4]  # (its unit as read: m/s, deg)
+        shift = max(CONDITION_TOL[q], cond_tol[q] / NOISY_ROWS ** 0.5)
+        notes.append(f"{q} is noisy ({sigma:.2g} {unit} rms from row to row, a pitot's or a sensor's): a new step "
+                     f"starts where the mean of {NOISY_ROWS} rows moves by more than {shift:.2g} {unit} ({NOISE_K:g} "
+                     f"times its noise over sqrt({NOISY_ROWS})) instead of where one row moves by "
+                     f"{CONDITION_TOL[q]:g}, so levels closer than that are one step")
     v, group, dropped, unsteady = stand_points(v, esc, time, labels=group, form=form, cond_tol=cond_tol)
     if not group.size:
         raise DataError(f"{where}: no ESC step reaches a steady rotation speed (within 2% over the second "

@@ -14,7 +14,7 @@ import numpy as np
 
 from .headers import _ESC_UNITS, _token
 
-__all__ = ["esc_form", "stand_points", "condition_tolerances", "ESC_TOL", "CONDITION_TOL", "NOISE_K"]
+__all__ = ["esc_form", "stand_points", "condition_tolerances", "ESC_TOL", "CONDITION_TOL", "NOISE_K", "NOISY_ROWS"]
 
 #: a new step starts where the ESC signal moves more than this from the step's first row [us]
 #: (a measured pulse width jitters by about 1 us), or an operating condition moves more than
@@ -25,10 +25,11 @@ ESC_TOL_US = 2.0
 ESC_TOL = {"us": ESC_TOL_US, "pct": 0.2, "fraction": 0.002}
 CONDITION_TOL = {"airspeed": 0.3, "incidence_deg": 0.5, "collective_deg": 0.25}
 #: a sampled log's noisy condition column (a tunnel's pitot: about 0.2 m/s rms at a few m/s,
-#: where its dynamic pressure is a few pascals) splits steps only where it moves more than
-#: this many times its rms noise, measured from the mean of the step's rows so far: at 5 a row of
-#: pure noise starts a step with a chance of 1 in 2,500 against the step's first row alone (the
-#: second row), of 1 in 1.7 million against the mean of many
+#: where its dynamic pressure is a few pascals) splits steps only where the mean of NOISY_ROWS
+#: rows moves more than this many times its rms noise over sqrt(NOISY_ROWS) from the step's mean
+#: (_noisy_starts): on pure noise 6.6e-4 starts per row, 96% of them in a step's first 8 rows,
+#: whose mean is itself noisy, and which _merge_steps joins back (measured 2026-12-01: 2,000 runs
+#: of 200 rows, 0.2 rms, tolerance 1.0)
 NOISE_K = 5.0
 #: rows whose mean tells a noisy column's new level from its noise (_noisy_starts)
 NOISY_ROWS = 8
@@ -86,6 +87,11 @@ def esc_form(name: str, unit: str | None, esc: np.ndarray) -> tuple[str, str | N
                   "to say otherwise)")
 
 
+def _widened(q: str, cond_tol: dict) -> bool:
+    """Whether quantity ``q``'s tolerance was widened for its noise (:func:`condition_tolerances`)."""
+    return cond_tol[q] > CONDITION_TOL[q]
+
+
 def condition_tolerances(conditions: dict, esc: np.ndarray, labels=None,
                          tol: float = ESC_TOL_US) -> tuple[dict, dict]:
     """Each operating condition's step tolerance in a stand log, widened where the column is noisy.
@@ -95,12 +101,11 @@ def condition_tolerances(conditions: dict, esc: np.ndarray, labels=None,
     0.3 m/s (a data audit, 2026-11-30; 14 at 0.1 m/s rms). The noise is estimated from the
     second differences of the rows within each ESC level (a hold of one signal and label, the
     pieces of a readback jittering by +-2 us joined: such jitter hid a noisy pitot, a mutation
-    audit, 2026-12-01), and
-    only in a sampled log (half its rows in holds of 10 rows or more; an export of averaged
-    steps has one row per step), where the column changes at half its rows or more and turns
-    back at half of its changes or more (noise: 2 in 3; a table's levels stay put or run one way) and where the
-    noise is at most a tenth of the column's range or of its median size. So levels of a noisy
-    column closer than the widened tolerance are one step.
+    audit, 2026-12-01), and only in a sampled log (half its rows in holds of 10 rows or more; an
+    export of averaged steps has one row per step), where the column changes at half its rows or
+    more and turns back at half of its changes or more (noise: 2 in 3; a table's levels stay put
+    or run one way) and where the noise is at most a tenth of the column's range or of its median
+    size. :func:`_noisy_starts` then judges a new level on the mean of NOISY_ROWS rows.
 
     Parameters
     ----------
@@ -153,7 +158,7 @@ def _step_starts(esc: np.ndarray, conditions: dict, labels, tol: float = ESC_TOL
     the mean of the step's rows so far: :func:`_noisy_starts`); :func:`_merge_steps` joins the
     pieces of a jittering one."""
     cond_tol = cond_tol or CONDITION_TOL
-    noisy = {q for q in conditions if cond_tol[q] > CONDITION_TOL[q]}
+    noisy = {q for q in conditions if _widened(q, cond_tol)}
     starts = [0]
     ref = 0
     cond = [(np.asarray(a, float), cond_tol[q]) for q, a in conditions.items() if q not in noisy]
@@ -222,7 +227,7 @@ def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: fl
 
     def within(q, x, a, b, pa, pb):
         t = cond_tol[q]
-        if t > CONDITION_TOL[q]:
+        if _widened(q, cond_tol):
             t = max(CONDITION_TOL[q], t * float(np.sqrt(1.0 / (b - a) + 1.0 / (pb - pa))))
         return abs(np.median(x[a:b]) - np.median(x[pa:pb])) <= t
 
@@ -236,11 +241,12 @@ def _merge_steps(steps: list, esc: np.ndarray, conditions: dict, labels, tol: fl
     return merged
 
 
-def _one_condition(x: np.ndarray, steps: list, tol: float, fixed: float) -> bool:
+def _one_condition(x: np.ndarray, steps: list, q: str, cond_tol: dict) -> bool:
     """Whether the rows of ``steps`` (a ramp and the steps around it) are at one condition: their
-    values within ``tol`` of each other, or, for a column whose tolerance was widened for its noise
-    (``tol`` above its ``fixed`` one), each step's median within ``tol`` of the first's."""
-    if tol <= fixed:
+    values of quantity ``q`` within its tolerance of each other, or, for a column whose tolerance
+    was widened for its noise, each step's median within it of the first's."""
+    tol = cond_tol[q]
+    if not _widened(q, cond_tol):
         return bool(np.ptp(x[steps[0][0]:steps[-1][1]]) <= tol)
     first = np.median(x[steps[0][0]:steps[0][1]])
     return all(abs(np.median(x[a:b]) - first) <= tol for a, b in steps[1:])
@@ -268,8 +274,7 @@ def _ramps(steps: list, esc: np.ndarray, conditions: dict, labels, cond_tol: dic
         if before >= 0 and after < len(steps) and size[before] >= 5 and size[after] >= 5:
             lo, hi = sorted((level[before], level[after]))
             same = ((labels is None or len({labels[steps[i][0]] for i in range(before, after + 1)}) == 1)
-                    and all(_one_condition(x, steps[before:after + 1], cond_tol[q], CONDITION_TOL[q])
-                            for q, x in conditions.items()))
+                    and all(_one_condition(x, steps[before:after + 1], q, cond_tol) for q, x in conditions.items()))
             if same and lo < hi and all(lo < level[i] < hi for i in range(j, end)):
                 out.update(range(j, end))
         j = end
