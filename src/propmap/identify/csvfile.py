@@ -163,8 +163,7 @@ SUMMARY_LABELS = frozenset(("average", "avg", "avg.", "mean", "total", "sum", "m
                             "standard deviation", "averages", "totals"))
 
 
-#: the note's words for a comma-separated file's quoted cells read with commas as thousands separators (the load
-#: check names it as a cause where the loads are a thousand times the model's: identify/sanity.py)
+#: the note's words for a comma-separated file's quoted cells read with commas as thousands separators
 COMMA_THOUSANDS = "commas read as thousands separators"
 
 
@@ -360,13 +359,15 @@ class _Csv:
         column is added to ``self.percent_cells``. A comma-separated file's quoted cell that groups
         thousands with commas (``"3,000"``, ``"1,234.5"``) and, beside decimal commas, a ';'- or
         tab-separated file's point before groups of three digits (``3.000``, ``1.234,5``) are read
-        as thousands separators, with a note in ``self.read_notes``. With ``mean_row``, a last row that is the mean of
-        the rows above is refused (:meth:`_refuse_mean_row`: load data, whose loads grow as the
+        as thousands separators, with a note in ``self.read_notes``; the columns of the former, a
+        quoted "1,100" being 1.1 or 1100, are ``self.comma_thousands``. With ``mean_row``, a last
+        row that is the mean of the rows above is refused (:meth:`_refuse_mean_row`: load data, whose loads grow as the
         rotation rate's square; a points file's design point at the centre of its grid is none). A
         last row labelled as a summary in a column not read is refused
         (:meth:`_refuse_summary_label`)."""
         self.percent_cells: set[str] = set()
         self.read_notes: list[str] = []  # (what reading the cells decided: thousands separators)
+        self.comma_thousands: set[str] = set()
         n = len(self.columns)
         cols = [(c, self.index[c]) for c in numeric]
         nums = {c: array.array("d") for c in numeric}
@@ -564,6 +565,7 @@ class _Csv:
             self.read_notes.append(f"{self.name}: points read as thousands separators beside the file's decimal commas "
                                    f"(column {_short(self.header[self.index[c]])}, line {line}: {cell} read as "
                                    f"{_ungrouped(cell)})")
+        self.comma_thousands = set(commas)
         for c, (line, cell) in commas.items():
             self.read_notes.append(f"{self.name}: column {_short(self.header[self.index[c]])}: {COMMA_THOUSANDS} "
                                    f"(line {line}: {cell} read as {cell.replace(',', '')})")

@@ -45,6 +45,10 @@ class LoadData:
         (quantity -> factor, e.g. ``{"thrust": 0.00980665}`` for ``Thrust (g)``; a column read
         as written is absent), for the sanity check's causes (a unit slip of an unlabelled
         column is no cause of a converted one).
+    comma_thousands : tuple of str
+        The loads (thrust, drag, torque) of whose cells the reader took commas as thousands
+        separators (a comma-separated file's quoted ``"1,100"``: 1100, or a decimal comma's
+        1.1?), for the sanity check's causes; default none.
 
     Raises
     ------
@@ -54,7 +58,8 @@ class LoadData:
         point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
         thrust, drag, torque, an ``air_density`` that is not a finite number > 0, a ``converted``
-        that is not a dict of those quantities to finite factors > 0; the message
+        that is not a dict of those quantities to finite factors > 0, a ``comma_thousands`` that is
+        not a tuple of them; the message
         names the field; ``omega`` above 1e5 rad/s, a ``collective`` beyond +-pi/4 rad (degrees?),
         a ``group`` label that is not a string or a number (or is NaN). (The readers check the
         signs and the ranges of the loads themselves.)
@@ -70,6 +75,7 @@ class LoadData:
     notes: tuple = ()
     air_density: float | None = None
     converted: dict = field(default_factory=dict)
+    comma_thousands: tuple = ()
 
     def __post_init__(self):
         n = first_length("LoadData", "omega", self.omega)
@@ -90,6 +96,9 @@ class LoadData:
                 or not (math.isfinite(f) and f > 0) for k, f in self.converted.items()):
             raise ValueError(f"LoadData.converted must be a dict of {', '.join(LOAD_KEYS)} to finite factors > 0, "
                              f"got {short_repr(self.converted)}")
+        if not isinstance(self.comma_thousands, tuple) or any(k not in LOAD_KEYS for k in self.comma_thousands):
+            raise ValueError(f"LoadData.comma_thousands must be a tuple of {', '.join(LOAD_KEYS)}, "
+                             f"got {short_repr(self.comma_thousands)}")
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
         fields_["incidence"] = snap_incidence(fields_["incidence"])  # (float32's pi: 8.7e-8 rad above pi)
@@ -163,14 +172,14 @@ class LoadData:
         Returns
         -------
         LoadData
-            Every per-point array cut to those points; source, notes, air density and the
-            conversions kept.
+            Every per-point array cut to those points; source, notes, air density, the
+            conversions and ``comma_thousands`` kept.
         """
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
                         None if self.collective is None else self.collective[mask], self.notes, self.air_density,
-                        dict(self.converted))
+                        dict(self.converted), self.comma_thousands)
 
 
 def data_air(data: LoadData, air, base_air):

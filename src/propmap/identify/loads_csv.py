@@ -188,7 +188,8 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
         group = np.full(n, "all", dtype=object)
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes), air_density,
-                    {k: cm.columns[k][1] for k in keys if cm.columns[k][1] != 1.0})
+                    {k: cm.columns[k][1] for k in keys if cm.columns[k][1] != 1.0},
+                    tuple(k for k in keys if low[k] in f.comma_thousands))
 
 
 def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):

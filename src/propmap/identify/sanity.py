@@ -15,7 +15,7 @@ import numpy as np
 
 from ..core.units import RPM
 from ..core.airfoil import Air
-from .csvfile import COMMA_THOUSANDS, DataError
+from .csvfile import DataError
 from .headers import G0, LBF
 from .incidence_checks import MIRROR_MISFIT, WIND_AXES_MISFIT, _mirrored_incidence, _wind_axes  # noqa: F401
 from .load_data import LoadData, data_air, radians_hint
@@ -438,8 +438,8 @@ def _refusal(data: LoadData, propeller, ratio: dict, at_rpm, model: _ModelAt, sp
               if not (fT != 1.0 and "thrust" not in ratio) and not (fQ != 1.0 and "torque" not in ratio)
               and not (declared and fT in _READ_AS_N)
               and _plausible({k: v * (fT if k == "thrust" else fQ) for k, v in ratio.items()}, 0.6, 1.6)]
-    if any(COMMA_THOUSANDS in n for n in data.notes) and any(
-            _plausible({k: v * 1e-3}) for k, v in ratio.items()):  # ("1,100" in quotes: 1.1 or 1100?)
+    if any(k in data.comma_thousands and _plausible({k: v * 1e-3})
+           for k, v in ratio.items()):  # ("1,100" in quotes: 1.1 or 1100?)
         causes.insert(0, "decimal commas read as thousands separators (a quoted '1,100' in a comma-separated file "
                          "is read as 1100, as the note says: write 1.100, or separate the cells with ';')")
     if speed_slip and _static_off(data, at_rpm):
