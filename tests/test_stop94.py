@@ -76,3 +76,41 @@ def test_comma_thousands_refuses_what_is_not_a_tuple_of_loads(bad):
     with pytest.raises(ValueError, match="LoadData.comma_thousands must be a tuple of thrust, drag, torque"):
         LoadData(np.array([500.0]), np.zeros(1), np.zeros(1), {"thrust": np.ones(1)}, np.array(["a"], dtype=object),
                  comma_thousands=bad)
+
+
+def test_the_empirical_descent_curve_is_continuous_where_it_meets_hover():
+    """Beyond v = 1e8 d (d = -V_c, the descent ratio k below 1e-8) the curve was Glauert's |V_c + v|,
+    which differs from it by 1.2 d: a jump of 1.2e-8 of v at the boundary, and the slope of the
+    climb there. Now the curve's first order, v - 2 C1 d, continuous to round-off."""
+    from propmap.core._momentum import EMPIRICAL_C1, EMPIRICAL_HOVER_RATIO, axial_mass_flow
+
+    v = 3.0
+    for Vs in (0.0, 1.0):
+        inside, beyond = (axial_mass_flow(v, -v / (EMPIRICAL_HOVER_RATIO * f), Vs) for f in (1 + 1e-9, 1 - 1e-9))
+        assert abs(inside - beyond) < 1e-14 * v
+    d = 1e-12
+    assert axial_mass_flow(v, -d, 0.0) == pytest.approx(v - 2 * EMPIRICAL_C1 * d, rel=1e-15, abs=0)
+
+
+@pytest.mark.parametrize("spec", ["generic", f"calibrated:{PROP}"])
+def test_a_descent_of_a_nanometre_per_second_has_the_descent_slope(spec):
+    """dT/dV and dQ/dV at 1e-9 m/s of axial descent were Glauert's (the climb's slope mirrored:
+    dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s, dQ/dV of the other sign; an API audit,
+    2026-12-01), unflagged; now the empirical curve's at every descent rate."""
+    r = pm.rotor_loads(pm.load_propeller(PROP), pm.resolve_params(spec), 800.0, [0.0, 1e-12, 1e-9, 1e-7, 1e-6], np.pi,
+                       derivatives=True)
+    for q in ("thrust", "torque"):
+        d = r.derivative(q, "airspeed")
+        assert np.allclose(d, d[0], rtol=1e-4, atol=0), (q, d)
+    assert not np.any(r.multiple_roots)
+
+
+def test_a_vehicle_sinking_at_a_nanometre_per_second_has_the_descent_sides_heave_damping():
+    """The NeuroBEM quadrotor at 1000 rad/s (generic set): dF_z/dv_z on the descent side is +0.024
+    N s/m at v_z = -1e-6 m/s; at -1e-9 it was -0.243, the climb side's."""
+    veh, _ = pm.read_vehicle_with_params("neurobem_quadrotor")
+    dz = [pm.vehicle_wrench(veh, pm.generic_params(), [0, 0, vz], [0, 0, 0], [1000.0] * 4,
+                            derivatives=("velocity",)).jacobian[("force", "velocity")][0, 2, 2]
+          for vz in (-1e-6, -1e-9, 1e-6)]
+    assert dz[0] > 0 > dz[2]
+    assert dz[1] == pytest.approx(dz[0], rel=1e-4)

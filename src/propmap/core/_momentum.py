@@ -77,7 +77,10 @@ EMPIRICAL_C1 = 1.125 - EMPIRICAL_SHIFT
 EMPIRICAL_C2 = -1.372
 EMPIRICAL_C3 = 1.718
 EMPIRICAL_C4 = -0.655
-#: v / (-V_c) above which the curve is taken at hover (Glauert's form; k < 1e-8)
+#: v / (-V_c) above which the curve is taken at its first order in k = -V_c / v_h (k < 1e-8): v_h^2 / v =
+#: v / f(k)^2 = v - 2 EMPIRICAL_C1 d + O(d^2 / v), d = -V_c, exact to round-off there; it was Glauert's |V_c + v|
+#: until 2026-12-01, whose slope in V_c (1, not 2 EMPIRICAL_C1) gave the derivatives of a descent of 1e-9 m/s the
+#: climb's slope mirrored (dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s: an API audit)
 EMPIRICAL_HOVER_RATIO = 1e8
 #: Newton steps of the curve's inversion (converged to round-off from k = min(d/v, 2) in tests)
 EMPIRICAL_NEWTON = 8
@@ -120,13 +123,17 @@ def make_axial_mass_flow(root):
         """
         d = -Vc
         glauert = abs(Vc + v)
-        if d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
-            # beyond EMPIRICAL_HOVER_RATIO the curve is at hover (k < 1e-8, where it differs from
-            # Glauert's by O(k)); the Newton solve would clip k there and lose the thrust
+        if d <= 0.0 or v <= 0.5 * d:
             return glauert
-        vh = d / root(v / d)
+        if v > EMPIRICAL_HOVER_RATIO * d:
+            # the curve at its first order in k < 1e-8 (EMPIRICAL_HOVER_RATIO), where the Newton solve
+            # would clip k and lose the thrust
+            w = v - 2.0 * EMPIRICAL_C1 * d
+        else:
+            vh = d / root(v / d)
+            w = vh * vh / v
         s = Vs / v
-        return glauert + (vh * vh / v - glauert) * np.exp(-s * s)
+        return glauert + (w - glauert) * np.exp(-s * s)
 
     return axial_mass_flow
 

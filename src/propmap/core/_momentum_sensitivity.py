@@ -52,8 +52,8 @@ def _rest_slope(m_vs, m_vc, v, sb, cb, emp):
     """d(F_loss dT_BEMT/dy)/dV from rest (V = 0) along the ray (V sin beta, V cos beta) = V (sb, cb),
     one-sided (V >= 0), from the analytic partials ``m_vs``, ``m_vc`` at V = 0 (Glauert's there:
     :func:`_momentum_partials`): their chain rule m_vs sb + m_vc cb, but on a descending ray (cb < 0)
-    with the empirical descent curve (``emp``) and v > 0, which it switches on at once (for
-    v <= EMPIRICAL_HOVER_RATIO d, d = -V cos beta): there the mass-flow velocity is v_h^2 / v =
+    with the empirical descent curve (``emp``) and v > 0, which it switches on at once (for any
+    d = -V cos beta > 0; beyond EMPIRICAL_HOVER_RATIO at its first order): there the mass-flow velocity is v_h^2 / v =
     v / f(k)^2 with k = d / v_h -> d / v, so dw/dd = -2 f'(0) = -2 EMPIRICAL_C1 (the curve's
     slope at hover, _momentum.axial_mass_flow; the in-plane fade exp(-(V sb / v)^2) is flat at
     V = 0) instead of Glauert's -1, and m_vc, linear in dw/dV cos beta, scales by 2 EMPIRICAL_C1."""
@@ -83,19 +83,24 @@ def _mass_flow_partials(v, Vc, Vs, emp):
     sg = 1.0 if UP >= 0.0 else -1.0
     g = abs(UP)
     d = -Vc
-    if not emp or d <= 0.0 or v <= 0.5 * d or v > EMPIRICAL_HOVER_RATIO * d:
+    if not emp or d <= 0.0 or v <= 0.5 * d:
         return g, sg, sg, 0.0
-    r = v / d
-    k = _empirical_k(r)
-    fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
-    dk_dr = k / (fp - r)
-    vh = d / k
-    # d(v_h)/dv and d(v_h)/dVc (d = -Vc, r = v / d)
-    dvh_v = -d / (k * k) * dk_dr / d
-    dvh_vc = -(1.0 / k - d / (k * k) * dk_dr * (-v / (d * d)))
-    A = vh * vh / v
-    dA_v = 2.0 * vh * dvh_v / v - A / v
-    dA_vc = 2.0 * vh * dvh_vc / v
+    if v > EMPIRICAL_HOVER_RATIO * d:  # the curve's first order in k (_momentum.axial_mass_flow)
+        A = v - 2.0 * EMPIRICAL_C1 * d
+        dA_v = 1.0
+        dA_vc = 2.0 * EMPIRICAL_C1
+    else:
+        r = v / d
+        k = _empirical_k(r)
+        fp = EMPIRICAL_C1 + k * (2.0 * EMPIRICAL_C2 + k * (3.0 * EMPIRICAL_C3 + 4.0 * EMPIRICAL_C4 * k))
+        dk_dr = k / (fp - r)
+        vh = d / k
+        # d(v_h)/dv and d(v_h)/dVc (d = -Vc, r = v / d)
+        dvh_v = -d / (k * k) * dk_dr / d
+        dvh_vc = -(1.0 / k - d / (k * k) * dk_dr * (-v / (d * d)))
+        A = vh * vh / v
+        dA_v = 2.0 * vh * dvh_v / v - A / v
+        dA_vc = 2.0 * vh * dvh_vc / v
     q = Vs / v
     E = np.exp(-q * q)
     dE_v = E * 2.0 * q * q / v
