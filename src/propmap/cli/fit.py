@@ -230,19 +230,18 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     """Fit to steady level-flight conditions (eqs 16-18): DATA.csv with airspeed, pitch_deg, rpm_1..rpm_n."""
     import numpy as np
 
-    from ..identify import (DataError, VehicleFileError, fit_level_flight, level_flight_forces, read_level_flight,
-                            read_vehicle)
+    from ..identify import DataError, fit_level_flight, level_flight_forces, read_level_flight
     from ..identify.level_flight import level_flight_warnings
     from ..identify.level_flight_fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
 
+    from ._vehicle import _one_set, _vehicle
+
     check_outputs(_out_files(out), [data, vehicle, base_spec])
-    try:
-        veh = read_vehicle(vehicle)
-    except VehicleFileError as exc:
-        raise InputError(f"--vehicle: {exc}") from None
+    veh = _vehicle(vehicle)
     # the vehicle's propellers may be geometry files (relative to the vehicle file): inputs too
     check_outputs(_out_files(out), vehicle_inputs(vehicle))
+    veh = _one_set(veh, "fit level-flight fits one set for every rotor")
     try:
         d = read_level_flight(data, veh)
     except DataError as exc:

@@ -18,8 +18,8 @@ from ..core.airfoil import Air, SectionParams, sigmoid_blend
 from ..core.flapping import flapping_warning_held
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, differentiable, model_air
-from ..core.vector import rotor_wrench
-from ..vehicle import Vehicle, rotor_geometry
+from ..core.body import BodyDrag
+from ..vehicle import Vehicle, rotor_geometry, vehicle_wrench
 from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
 from .level_flight import check_level_flight
@@ -35,9 +35,14 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
                         discretization: Discretization = DEFAULT_DISCRETIZATION, derivatives=()) -> dict:
     """Rotor loads of every rotor at every condition and the net vertical force (eq 16).
 
-    Uses the vector form (:func:`rotor_wrench`) on V_i = V_vehicle + omega x r_i; for rotor
-    axes along body z, no rates and no roll this is exactly eq 16,
-    sum_i T_i sin(beta_i) + D_i cos(beta_i).
+    Uses the vehicle model (:func:`propmap.vehicle_wrench`: each hub at V_i = V_vehicle +
+    omega x r_i, the vector form of :func:`propmap.core.vector.rotor_wrench`, a rotor's own
+    parameter set where it has one, the vehicle's ``rotor_interference``) without the
+    airframe drag: eq 16 balances the rotors' force, the body lift being the fit's own term.
+    For rotor axes along body z, no rates and no roll this is exactly eq 16,
+    sum_i T_i sin(beta_i) + D_i cos(beta_i). (Until 2026-12-01 each rotor's loads were solved
+    with ``params`` alone and without the interference: a structural review found a vehicle
+    with ``rotor_interference = 1`` 0.5% off and a rotor's own set ignored, without a word.)
 
     Parameters
     ----------
@@ -62,8 +67,9 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     Raises
     ------
     ValueError
-        ``derivatives`` that :func:`propmap.rotor_loads` refuses (an unknown or node-changing
-        name, Omega below 0.1 rad/s).
+        ``derivatives`` that :func:`propmap.vehicle_wrench` refuses (an unknown or
+        node-changing name, Omega below 0.1 rad/s, a vehicle with rotor interference, a
+        section parameter where a rotor has its own set).
     SolverError
         From the rotor model.
     TypeError
@@ -71,32 +77,18 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     """
     air = model_air(params, air)
     R, vel = rotor_kinematics(data, vehicle)
-    n_rot = len(vehicle.rotors)
-    T = np.empty((data.n, n_rot))
-    D = np.empty_like(T)
-    Q = np.empty_like(T)
-    vertical = np.zeros(data.n)
     names = tuple(derivatives or ())
-    dvert = np.zeros((data.n, len(names)))
-    groups: dict[int, list[int]] = {}
-    for i, rotor in enumerate(vehicle.rotors):
-        groups.setdefault(id(rotor.propeller), []).append(i)
-    for idx in groups.values():
-        prop = vehicle.rotors[idx[0]].propeller
-        axes = np.stack([vehicle.rotors[i].axis for i in idx])
-        spins = np.array([vehicle.rotors[i].spin for i in idx])
-        w = rotor_wrench(prop, params, vel[:, idx, :], np.broadcast_to(axes, (data.n, len(idx), 3)),
-                         data.omega[:, idx], np.broadcast_to(spins, (data.n, len(idx))), air=air,
-                         discretization=discretization, derivatives=names)
-        T[:, idx], D[:, idx], Q[:, idx] = w.loads.thrust, w.loads.drag, w.loads.torque
-        vertical += np.einsum("nj,nkj->n", R[:, 2, :], w.force)
-        for c, n in enumerate(names):
-            dvert[:, c] += np.einsum("nj,nkj->n", R[:, 2, :], w.jacobian[("force", n)])
+    # the body velocity R^T V_world, V_world along world x: V times R's first row
+    w = vehicle_wrench(vehicle, params, data.airspeed[:, None] * R[:, 0, :], data.rates, data.omega,
+                       body_drag=BodyDrag(), air=air, discretization=discretization, derivatives=names or False)
+    up = R[:, 2, :]  # the world vertical in body axes
     beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, rotor_geometry(vehicle)[1])  # unit axes
                              / np.maximum(np.linalg.norm(vel, axis=-1), 1e-300), -1, 1))
-    out = {"thrust": T, "drag": D, "torque": Q, "vertical": vertical, "beta": beta}
+    out = {**{k: np.stack([getattr(ld, k) for ld in w.loads], axis=1) for k in ("thrust", "drag", "torque")},
+           "vertical": np.einsum("nj,nj->n", up, w.force), "beta": beta}
     if names:
-        out["vertical_jacobian"] = dvert
+        out["vertical_jacobian"] = np.stack([np.einsum("nj,nj->n", up, w.jacobian[("force", n)]) for n in names],
+                                            axis=1)
     return out
 
 
@@ -166,7 +158,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     ------
     ValueError
         Fewer conditions than parameters + 1, a rotor count in ``data.omega`` other than the
-        vehicle's, an unknown parameter name, or body lift requested without body_area.
+        vehicle's, a rotor with its own parameter set (one set is fitted for every rotor), an
+        unknown parameter name, or body lift requested without body_area.
     SolverError
         From the rotor model.
     TypeError
@@ -223,6 +216,11 @@ def _level_flight_names(data: LevelFlightData, vehicle: Vehicle, base: SectionPa
     n_rot = len(vehicle.rotors)
     if data.omega.shape[1] != n_rot:
         raise ValueError(f"data.omega has {data.omega.shape[1]} rotor columns; the vehicle has {n_rot} rotors")
+    own = [k + 1 for k, r in enumerate(vehicle.rotors) if r.params is not None]
+    if own:  # (fit_flight's refusal; until 2026-12-01 the rotors' own sets were silently replaced by the fitted one)
+        raise ValueError(f"rotor(s) {', '.join(map(str, own))} of the vehicle carry their own parameter sets, which "
+                         "the fitted section parameters would not reach: fit_level_flight fits one set for every "
+                         "rotor (build the vehicle without the rotors' params)")
     return names
 
 
@@ -270,7 +268,7 @@ def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base:
             return r, np.hstack(cols)
 
         section_names = names[:-3] if opts.body_lift else names
-        if opts.jacobian == "implicit" and differentiable(base, section_names):
+        if opts.jacobian == "implicit" and differentiable(base, section_names) and vehicle.rotor_interference == 0:
             _attach_jacobian(residual, with_jacobian)
         return residual
 
