@@ -175,12 +175,13 @@ def test_the_tip_speed_warned_of_adds_the_in_plane_airspeed_on_both_paths():
             pm.rotor_loads(rotor.propeller, pm.generic_params(), omega, 40.0, 0.0)
 
 
-def test_mach_0_98_is_near_the_end_of_compressibility_not_meaningless():
+def test_mach_0_98_is_past_the_end_of_compressibility_not_meaningless():
     """An 11 in propeller at 2400 'rad/s' (rpm): tip Mach 0.98-0.99 (default air), subsonic: the warning
-    says the model is near the end of its compressibility and hints at rpm, not that the loads mean
-    nothing (I21); past Mach 1 (2600 'rad/s') it says they mean nothing."""
+    says the model is past the end of its compressibility (its Prandtl-Glauert factor held at Mach
+    0.9; "near the end" until 2026-12-01) and hints at rpm, not that the loads mean nothing (I21);
+    past Mach 1 (2600 'rad/s') it says they mean nothing."""
     prop, params = pm.load_propeller("apce_11x10"), pm.default_params("apce_11x10")
-    with pytest.warns(UserWarning, match=r"at Mach 0\.9[89] \(> 0\.8\): near the end .*is omega given in rpm"):
+    with pytest.warns(UserWarning, match=r"at Mach 0\.9[89] \(> 0\.8\): past the end .*is omega given in rpm"):
         pm.rotor_loads(prop, params, 2400.0, 0.0, 0.0)
     with pytest.warns(UserWarning, match=r"at Mach 1\.1 \(> 0\.8\): .*these loads mean nothing; is omega given"):
         pm.rotor_loads(prop, params, 2600.0, 0.0, 0.0)

@@ -195,3 +195,71 @@ def test_fit_level_flight_says_the_rotors_own_sets_are_not_used(tmp_path, capsys
                        "--out", tmp_path / "p.toml")
     assert code == 0, err
     assert "rotor(s) 1, 2, 3, 4 are not used: fit level-flight fits one set for every rotor" in err
+
+
+def test_the_tip_mach_warnings_are_a_category_of_their_own():
+    """The tip-Mach warnings were UserWarnings told by their text (the command line filtered them so);
+    a TipMachWarning now, exported for users' filters, from rotor_loads, the vehicle's hover and
+    trim; between Mach 0.9 and 1 the warning says the model is past the end of its compressibility
+    (it said "near the end", an API audit)."""
+    import warnings
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.generic_params()
+    assert issubclass(pm.TipMachWarning, UserWarning)
+    for mach, said in ((0.85, "near the end"), (0.95, "past the end"), (1.2, "mean nothing")):
+        with pytest.warns(pm.TipMachWarning, match=said):
+            pm.rotor_loads(prop, p, mach * p.air.speed_of_sound / prop.radius, 0.0, 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", category=pm.TipMachWarning)  # (a simulation loop's filter)
+        pm.rotor_loads(prop, p, 0.95 * p.air.speed_of_sound / prop.radius, 0.0, 0.0)
+    from dataclasses import replace
+
+    veh = replace(pm.read_vehicle("quadrotor"), mass=40.0)  # (on 8 in propellers it hovers past Mach 0.8)
+    with pytest.warns(pm.TipMachWarning, match="in this hover"):
+        pm.hover_omega(veh, p)
+
+
+@pytest.mark.parametrize("kw, match", [
+    ({"samples": "x"}, "samples must be a FlightSamples"), ({"vehicle": "quadrotor"}, "vehicle must be a"),
+    ({"base": "generic"}, r"base must be AirfoilParams or CamberedParams \(a set's name"),
+    ({"body": (0.01, 0.01, 0.0)}, "body must be a propmap.BodyDrag"),
+    ({"options": None}, "options must be a propmap.identify.FitOptions")])
+def test_fit_flight_names_an_argument_of_the_wrong_type(kw, match):
+    """fit_flight met such arguments inside ("'str' object has no attribute 'n'", "'NoneType' object
+    has no attribute 'lift_model'": a structural review), where fit_loads and fit_level_flight name
+    them."""
+    from propmap.identify.flight import FlightSamples, fit_flight
+
+    n = 40
+    s = FlightSamples(log_names=("x",), log_index=np.zeros(n, int), t=np.arange(n) * 0.1, velocity=np.zeros((n, 3)),
+                      angular_velocity=np.zeros((n, 3)), rotor_omega=np.full((n, 4), 1000.0),
+                      rotor_acceleration=np.zeros((n, 4)), force=np.zeros((n, 3)), moment=None, reference_force=None,
+                      reference_moment=None, rate_hz=10.0)
+    args = {"samples": s, "vehicle": pm.read_vehicle("neurobem_quadrotor"), **kw}
+    with pytest.raises(TypeError, match=match):
+        fit_flight(args.pop("samples"), args.pop("vehicle"), **args)
+
+
+def test_where_the_rotation_rate_came_from_is_data_not_a_note(tmp_path):
+    """The load check found a stand's electrical speed in a note's words ("rotation speed from
+    ..." with "electrical" in it); it is LoadData.speed_source now, and the pole-pair advice
+    follows it."""
+    from stand_exports import write_steps_export
+
+    steps = tuple(range(1100, 2001, 60))
+    path = tmp_path / "e.csv"
+    write_steps_export(path, params=pm.default_params(PROP), steps=steps, electrical_raw=True, pole_pairs=7,
+                       optical=False)
+    data = read_loads(path)
+    assert data.speed_source == "electrical" and data.subset(data.omega > 0).speed_source == "electrical"
+    write_steps_export(tmp_path / "o.csv", params=pm.default_params(PROP), steps=steps)
+    assert read_loads(tmp_path / "o.csv").speed_source == "optical"
+    with pytest.raises(ValueError, match="give that count as --pole-pairs"):
+        sanity_check(data, pm.load_propeller(PROP))
+    bare = LoadData(data.omega, data.airspeed, data.incidence, data.measured, data.group, "x.csv",
+                    speed_source="electrical")  # (no notes)
+    with pytest.raises(ValueError, match="give that count as --pole-pairs"):
+        sanity_check(bare, pm.load_propeller(PROP))
+    with pytest.raises(ValueError, match="LoadData.speed_source must be one of rpm, optical, electrical"):
+        LoadData(data.omega, data.airspeed, data.incidence, data.measured, data.group, speed_source="eRPM")

@@ -12,7 +12,7 @@ import warnings
 
 import click
 
-from ..core.air import SUPERSONIC_TIP
+from ..core.air import TipMachWarning
 from ..io.coverage import CoverageWarning
 from .. import __version__
 from .demo import demo
@@ -173,7 +173,7 @@ def _main(argv: list[str] | None) -> int:
             warnings.simplefilter("always")
             # the API's supersonic-tip warning (with its "rpm for rad/s?" hint): the commands take rpm and warn
             # from tip Mach 0.7 themselves (cli._coverage.coverage_messages)
-            warnings.filterwarnings("ignore", message=SUPERSONIC_TIP)
+            warnings.filterwarnings("ignore", category=TipMachWarning)
             # the API's warnings of a run beyond its set's data (build_map's): the commands say them as theirs
             warnings.filterwarnings("ignore", category=CoverageWarning)
             code = cli.main(args=argv, prog_name="propmap", standalone_mode=False)

@@ -18,7 +18,7 @@ import numpy as np
 
 from ._interp import INCIDENCE_SNAP, snap_incidence, snap_incidence_scalar
 from ._plain import compiled_layout
-from .air import SUPERSONIC_TIP
+from .air import SUPERSONIC_TIP, TipMachWarning
 from .geometry import has_bool, refuse_masked
 
 #: the rotation rates [rad/s]: [0, OMEGA_MAX]; below OMEGA_MIN the blades are parked: the loads are the
@@ -258,8 +258,9 @@ def operating_points(omega, airspeed, incidence, collective, radius: float) -> O
 
 
 def warn_tip_mach(tip_speed: float, speed_of_sound: float) -> None:
-    """Warn (UserWarning, attributed to rotor_loads' caller) where a blade tip meets the air
-    beyond :data:`TIP_MACH_WARN`, unless :func:`supersonic_tips_allowed` is in force.
+    """Warn (:class:`propmap.core.air.TipMachWarning`, attributed to rotor_loads' caller) where a
+    blade tip meets the air beyond :data:`TIP_MACH_WARN`, unless :func:`supersonic_tips_allowed`
+    is in force.
 
     Parameters
     ----------
@@ -273,10 +274,12 @@ def warn_tip_mach(tip_speed: float, speed_of_sound: float) -> None:
     mach = tip_speed / speed_of_sound  # a rate in rpm, most likely
     said = ("the model has no transonic or supersonic physics (its Prandtl-Glauert factor stops at Mach 0.9), "
             "so these loads mean nothing" if mach > 1 else
+            "past the end of the model's compressibility (its Prandtl-Glauert factor is held at its Mach 0.9 "
+            "value; small UAV propellers run below 0.7)" if mach > 0.9 else
             "near the end of the model's compressibility (its Prandtl-Glauert factor stops at Mach 0.9; small "
-            "UAV propellers run below 0.7)")
+            "UAV propellers run below 0.7)")  # (past 0.9 it said "near": an API audit, 2026-12-01)
     # (the rpm hint from Mach 0.9: a racing propeller's punch-out reaches 0.8-0.9, an 11 in propeller at 2400
     # 'rad/s' (rpm) 0.98; the Mach number to two digits, so that a simulation loop's slowly varying rate does
     # not warn at every step)
     hint = "; is omega given in rpm? it is in rad/s (rpm * pi / 30)" if mach > 0.9 else ""
-    warnings.warn(f"{SUPERSONIC_TIP} {mach:.2g} (> {TIP_MACH_WARN:g}): {said}{hint}", UserWarning, stacklevel=3)
+    warnings.warn(f"{SUPERSONIC_TIP} {mach:.2g} (> {TIP_MACH_WARN:g}): {said}{hint}", TipMachWarning, stacklevel=3)

@@ -119,9 +119,20 @@ G0 = 9.80665  # [m/s^2]
 TEMPERATURE_RANGE_K = (180.0, 350.0)
 PRESSURE_RANGE_PA = (1e3, 1.2e5)
 ALTITUDE_RANGE_M = (-500.0, 20000.0)
-#: the start of rotor_loads' warning of a supersonic blade tip (core/_inputs.warn_tip_mach; the CLI, which warns
-#: from tip Mach 0.7 in its own terms, filters it by this text)
+#: the start of the warnings of a blade tip near or past the speed of sound (:class:`TipMachWarning`)
 SUPERSONIC_TIP = "a blade tip meets the air at Mach"
+
+
+class TipMachWarning(UserWarning):
+    """A blade tip that meets the air beyond Mach 0.8 (``core._inputs.TIP_MACH_WARN``), where the
+    model's compressibility ends (its Prandtl-Glauert factor is held at Mach 0.9): said by
+    :func:`propmap.rotor_loads`, the load fit, the vehicle's hover and trim.
+
+    A category of its own, for a user's warning filters (a simulation loop that has checked
+    its rates; the command line, which warns from tip Mach 0.7 in its own terms, filters it
+    so); :func:`propmap.core.solver.supersonic_tips_allowed` holds it in a search. Its text
+    starts with :data:`SUPERSONIC_TIP`. (A UserWarning told by its text until 2026-12-01.)
+    """
 
 
 def check_air(air) -> None:

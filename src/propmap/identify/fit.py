@@ -29,7 +29,7 @@ import numpy as np
 
 from ..core.units import RPM
 from ..core.airfoil import Air, AirfoilParams, CamberedParams, SectionParams
-from ..core.air import SUPERSONIC_TIP
+from ..core.air import SUPERSONIC_TIP, TipMachWarning
 from ..core.flapping import flapping_warning_held
 from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
                            supersonic_tips_allowed)
@@ -232,7 +232,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
         warnings.warn(f"{SUPERSONIC_TIP} {tip:.2g} (> {TIP_MACH_WARN:g}) in {data.source or 'the data'}: near or "
                       "past the end of the model's compressibility (its Prandtl-Glauert factor stops at Mach 0.9); "
                       "said once for the fit" + ("; is the rotation speed given in rpm where rad/s is meant?"
-                                                 if tip > 1 else ""), UserWarning, stacklevel=3)
+                                                 if tip > 1 else ""), TipMachWarning, stacklevel=3)
     # each quantity's fitted rows, measured value and divisor, once (not at every residual evaluation)
     fitted = {k: (rows[k], data.measured[k][rows[k]], norm[k][rows[k]] * scales[k]) for k in keys}
 

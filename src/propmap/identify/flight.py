@@ -228,6 +228,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
         ``lift_model`` other than the sigmoid with a cambered base.
     SolverError
         From the rotor model.
+    TypeError
+        ``samples``, ``vehicle``, ``base``, ``air``, ``body`` or ``options`` of the wrong type.
 
     Warns
     -----
@@ -237,6 +239,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     """
     from ..io.calibration import generic_params
 
+    _check_flight_args(samples, vehicle, base, body, options)
     base = base or generic_params()
     air = model_air(base, air, name="base")
     names = _flight_names(samples, vehicle, base, options)
@@ -272,6 +275,25 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: silenced at trial points)
         model.predict(result.x, options, trial=False)
     return result
+
+
+def _check_flight_args(samples, vehicle, base, body, options) -> None:
+    """TypeErrors naming an argument of the wrong type (fit_loads' and fit_level_flight's checks:
+    ``samples="x"`` met "'str' object has no attribute 'n'", ``options=None`` "'NoneType' object
+    has no attribute 'lift_model'": a structural review, 2026-12-01)."""
+    from ..vehicle.layout import check_vehicle
+
+    if not isinstance(samples, FlightSamples):
+        raise TypeError(f"samples must be a FlightSamples (propmap.identify.flight_samples), got "
+                        f"{type(samples).__name__}")
+    check_vehicle(vehicle)
+    if base is not None and not isinstance(base, SectionParams):
+        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(base, str) else ""
+        raise TypeError(f"base must be AirfoilParams or CamberedParams{hint}, got {type(base).__name__}")
+    if body is not None and not isinstance(body, BodyDrag):
+        raise TypeError(f"body must be a propmap.BodyDrag, got {type(body).__name__}")
+    if not isinstance(options, FitOptions):
+        raise TypeError(f"options must be a propmap.identify.FitOptions, got {type(options).__name__}")
 
 
 def _flight_names(samples: FlightSamples, vehicle: Vehicle, base: SectionParams,

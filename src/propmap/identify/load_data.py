@@ -16,6 +16,9 @@ from ..core._interp import snap_incidence
 from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
 from ._checks import first_length, float_array
 
+#: where a rotation rate can come from (LoadData.speed_source)
+SPEED_SOURCES = ("rpm", "optical", "electrical")
+
 
 @dataclass(frozen=True)
 class LoadData:
@@ -49,6 +52,10 @@ class LoadData:
         The loads (thrust, drag, torque) of whose cells the reader took commas as thousands
         separators (a comma-separated file's quoted ``"1,100"``: 1100, or a decimal comma's
         1.1?), for the sanity check's causes; default none.
+    speed_source : {"rpm", "optical", "electrical"}
+        The column the rotation rate was read from: a rotation-speed column, or a thrust stand's
+        optical or electrical speed (:func:`propmap.identify.read_loads`' ``rpm_source``), for
+        the sanity check's causes; default "rpm".
 
     Raises
     ------
@@ -59,7 +66,7 @@ class LoadData:
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
         thrust, drag, torque, an ``air_density`` that is not a finite number > 0, a ``converted``
         that is not a dict of those quantities to finite factors > 0, a ``comma_thousands`` that is
-        not a tuple of them; the message
+        not a tuple of them, a ``speed_source`` not among its three; the message
         names the field; ``omega`` above 1e5 rad/s, a ``collective`` beyond +-pi/4 rad (degrees?),
         a ``group`` label that is not a string or a number (or is NaN). (The readers check the
         signs and the ranges of the loads themselves.)
@@ -76,6 +83,7 @@ class LoadData:
     air_density: float | None = None
     converted: dict = field(default_factory=dict)
     comma_thousands: tuple = ()
+    speed_source: str = "rpm"
 
     def __post_init__(self):
         n = first_length("LoadData", "omega", self.omega)
@@ -99,6 +107,9 @@ class LoadData:
         if not isinstance(self.comma_thousands, tuple) or any(k not in LOAD_KEYS for k in self.comma_thousands):
             raise ValueError(f"LoadData.comma_thousands must be a tuple of {', '.join(LOAD_KEYS)}, "
                              f"got {short_repr(self.comma_thousands)}")
+        if self.speed_source not in SPEED_SOURCES:
+            raise ValueError(f"LoadData.speed_source must be one of {', '.join(SPEED_SOURCES)}, "
+                             f"got {short_repr(self.speed_source)}")
         if np.any(fields_["airspeed"] < 0):
             raise ValueError("LoadData.airspeed must be >= 0 m/s (a descent is an incidence above 90 deg)")
         fields_["incidence"] = snap_incidence(fields_["incidence"])  # (float32's pi: 8.7e-8 rad above pi)
@@ -173,13 +184,13 @@ class LoadData:
         -------
         LoadData
             Every per-point array cut to those points; source, notes, air density, the
-            conversions and ``comma_thousands`` kept.
+            conversions, ``comma_thousands`` and ``speed_source`` kept.
         """
         mask = np.asarray(mask, bool)
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
                         None if self.collective is None else self.collective[mask], self.notes, self.air_density,
-                        dict(self.converted), self.comma_thousands)
+                        dict(self.converted), self.comma_thousands, self.speed_source)
 
 
 def data_air(data: LoadData, air, base_air):

@@ -157,7 +157,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     _check_unread_columns(raw, texts, ratio, named, what, p, notes)
     v = {q: raw[low[q]] * cm.columns[q][1] for q in quantities}
     group_col = cm.column("group")
-    v, _ = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
+    v, speed_column = _rotation_speed(v, speeds, cm, rpm_source, pole_pairs, lines, what, p, notes)
     v, lines, texts = _skip_stopped(v, lines, texts, notes)
     if sampled:
         v, lines, texts, keys = _skip_dropouts(v, lines, texts, keys, cm, what, p, notes)
@@ -189,7 +189,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     return LoadData(v["rpm"] * RPM, v["airspeed"], np.radians(v["incidence_deg"]), {k: v[k] for k in keys},
                     group, f"{path}", collective, tuple(notes), air_density,
                     {k: cm.columns[k][1] for k in keys if cm.columns[k][1] != 1.0},
-                    tuple(k for k in keys if low[k] in f.comma_thousands))
+                    tuple(k for k in keys if low[k] in f.comma_thousands), speed_column.removeprefix("rpm_"))
 
 
 def _header_columns(f, rpm_source, pole_pairs, what: str, p: str):

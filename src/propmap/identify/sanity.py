@@ -390,7 +390,7 @@ def _rate_causes(data: LoadData, model: _ModelAt, n_blades: int) -> tuple[list[s
             close) - 1 else ", ".join(map(str, close)))
         # (read from the stand's electrical column already, only the count is missing: the advice to name the column
         # so was the name it had, a user-level audit, 2026-11-28)
-        electrical = any(n.startswith("rotation speed from") and "electrical" in n.lower() for n in data.notes)
+        electrical = data.speed_source == "electrical"
         causes.append(f"the electrical rpm of a motor with {counts} pole pairs read as the propeller's (the loads "
                       "cannot tell neighbouring counts apart: count the motor's magnets, half of them; then "
                       + ("give that count as --pole-pairs (pole_pairs), or give the optical speed)" if electrical else

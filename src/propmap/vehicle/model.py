@@ -39,7 +39,7 @@ from ..core.units import RPM
 from ..core.airfoil import Air, SectionParams
 from ..core.body import BodyDrag, body_drag_force
 from ..core.loads import _new_loads
-from ..core.air import SUPERSONIC_TIP
+from ..core.air import SUPERSONIC_TIP, TipMachWarning
 from ..core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            RotorLoads, check_model_args, model_air, rotor_loads,
                            supersonic_tips_allowed)
@@ -468,5 +468,5 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
 
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this hover (Omega {omega:.4g} rad/s, {omega / RPM:.0f} "
                       f"rpm): is the vehicle's mass {vehicle.mass:g} kg in kg, and its rotors the ones it flies?",
-                      UserWarning, stacklevel=2)
+                      TipMachWarning, stacklevel=2)
     return omega

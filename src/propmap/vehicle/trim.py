@@ -33,7 +33,7 @@ import numpy as np
 
 from ..core._numbers import checked
 from ..core.airfoil import Air, SectionParams
-from ..core.air import SUPERSONIC_TIP
+from ..core.air import SUPERSONIC_TIP, TipMachWarning
 from ..core.flapping import flapping_warning_held
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            model_air, supersonic_tips_allowed)
@@ -200,7 +200,7 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
                       UserWarning, stacklevel=2)
     if mach > TIP_MACH_WARN:
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
-                      "rad/s): these loads mean little", UserWarning, stacklevel=2)
+                      "rad/s): these loads mean little", TipMachWarning, stacklevel=2)
     return VehicleTrim(V, Vc, float(x[0]), float(x[1]), omega, v_b, power, w)
 
 
