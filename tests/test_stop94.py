@@ -128,7 +128,8 @@ def test_the_level_flight_forces_are_the_vehicle_models():
     interference: with rotor_interference = 1 the example quadrotor's vertical force at 10 m/s,
     -10 deg was 14.135 N against the vehicle model's 14.064 N, and a rotor's own set (half the
     lift slope) was ignored (14.135 against 13.453 N), without a word (a structural review,
-    helper). Now it is the vehicle model's, the airframe drag left out (eq 16)."""
+    helper); the airframe's drag ([body]) was left out too, its downwash at wash_factor 1 12-16%
+    of the weight (a vehicle-model audit, helper). Now it is the vehicle model's."""
     from dataclasses import replace
 
     from propmap.identify import LevelFlightData, level_flight_forces
@@ -140,13 +141,15 @@ def test_the_level_flight_forces_are_the_vehicle_models():
     R = body_to_world(d.pitch, d.roll)
     own = replace(quad.rotors[0], params=p.replace(cl_alpha=0.5 * p.cl_alpha))
     for veh in (replace(quad, rotor_interference=1.0), replace(quad, rotors=(own, *quad.rotors[1:])),
-                replace(quad, body_drag=pm.BodyDrag((0.01, 0.03, 0.05)))):
-        w = pm.vehicle_wrench(veh, p, d.airspeed[:, None] * R[:, 0, :], d.rates, d.omega, body_drag=pm.BodyDrag())
+                replace(quad, body_drag=pm.BodyDrag((0.01, 0.03, 0.05), 1.0))):
+        w = pm.vehicle_wrench(veh, p, d.airspeed[:, None] * R[:, 0, :], d.rates, d.omega)
         f = level_flight_forces(p, d, veh)
         assert np.allclose(f["vertical"], np.einsum("nj,nj->n", R[:, 2, :], w.force), rtol=1e-12, atol=0)
         assert np.array_equal(f["thrust"][:, 0], w.loads[0].thrust)
     plain = level_flight_forces(p, d, quad)["vertical"]
     assert level_flight_forces(p, d, replace(quad, rotor_interference=1.0))["vertical"][2] < plain[2] - 0.05
+    washed = level_flight_forces(p, d, replace(quad, body_drag=pm.BodyDrag((0.01, 0.03, 0.05), 1.0)))["vertical"]
+    assert np.all(washed < 0.9 * plain)  # (the downwash on the airframe: 10% of the vertical force and more)
 
 
 def test_a_level_flight_fit_refuses_rotors_with_their_own_sets():
@@ -162,10 +165,12 @@ def test_a_level_flight_fit_refuses_rotors_with_their_own_sets():
         fit_level_flight(data, veh)
 
 
-def test_a_level_flight_fit_with_rotor_interference_recovers_its_truth():
-    """Level flight trimmed with the wakes' interference (rotor_interference = 1; the trim ignored
-    it before) is fitted with it, the Jacobian by differences (vehicle_wrench's implicit one does
-    not reach the coupled wakes): from 2% off, the truth back to 1e-6. (From the paper's x0 this
+@pytest.mark.parametrize("change", [{"rotor_interference": 1.0}, {"body_drag": pm.BodyDrag((0.01, 0.03, 0.05), 1.0)}])
+def test_a_level_flight_fit_with_rotor_interference_recovers_its_truth(change):
+    """Level flight trimmed with the wakes' interference (rotor_interference = 1) or an airframe in
+    the slipstream (the trim ignored both before) is fitted with it, with interference the
+    Jacobian by differences (vehicle_wrench's implicit one does not reach the coupled wakes):
+    from 2% off, the truth back to 1e-6. (From the paper's x0 this
     case ends in a local minimum, cost 9e-6 N^2, which FitOptions(multistart=4) escapes: 587
     model calls, measured 2026-12-01.)"""
     from dataclasses import replace
@@ -173,10 +178,15 @@ def test_a_level_flight_fit_with_rotor_interference_recovers_its_truth():
     from propmap.identify import FitOptions, fit_level_flight, simulate_level_flight
 
     quad, true, V = _level_flight_case()
-    veh = replace(quad, rotor_interference=1.0)
+    veh = replace(quad, **change)
     data = simulate_level_flight(veh, true, V, -2.5 * V)
     ratio = data.omega[1:] / simulate_level_flight(quad, true, V[1:], -2.5 * V[1:]).omega  # (the trim without it)
     assert np.all(ratio > 1 + 1e-6) and ratio.max() > 1.001
+    from propmap.identify.level_flight import body_to_world
+
+    R = body_to_world(data.pitch, data.roll)
+    w = pm.vehicle_wrench(veh, true, data.airspeed[:, None] * R[:, 0, :], data.rates, data.omega)
+    assert np.allclose(np.einsum("nj,nj->n", R[:, 2, :], w.force), veh.weight, rtol=1e-9)  # (the vehicle model's trim)
     x = np.array([true.cl1, true.cl2, true.cd, true.alpha0])
     r = fit_level_flight(data, veh, options=FitOptions(M=30.0), start=1.02 * x)
     assert np.allclose(r.x, x, rtol=1e-6)
@@ -263,3 +273,52 @@ def test_where_the_rotation_rate_came_from_is_data_not_a_note(tmp_path):
         sanity_check(bare, pm.load_propeller(PROP))
     with pytest.raises(ValueError, match="LoadData.speed_source must be one of rpm, optical, electrical"):
         LoadData(data.omega, data.airspeed, data.incidence, data.measured, data.group, speed_source="eRPM")
+
+
+def test_a_vehicle_map_refuses_a_rotor_map_of_another_blade_or_set():
+    """VehicleMap checked a rotor's map by its diameter and blade count only: an apce_8x4 rotor took
+    an apce_8x6 map (17% more hover thrust) and a rotor with its own set the map's (4% of the
+    thrust at hover), without a word (a vehicle-model audit, helper); the C header refused both.
+    Now refused against the model the map records; the rotor's own set in a map of its own is
+    taken, and agrees with the vehicle model."""
+    import warnings
+    from dataclasses import replace
+
+    from propmap.maps import build_map
+    from propmap.rotormap import RotorMap
+
+    quad, p = pm.read_vehicle("quadrotor"), pm.default_params(PROP)
+    axes = (np.linspace(400.0, 800.0, 9), np.linspace(0.0, 6.0, 7), np.radians(np.linspace(0.0, 180.0, 13)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        shared = RotorMap(build_map(quad.rotors[0].propeller, p, *axes, n_check=0))
+        half = p.replace(cl_alpha=0.5 * p.cl_alpha)
+        own = RotorMap(build_map(quad.rotors[0].propeller, half, *axes, n_check=0))
+    veh = replace(quad, rotors=(quad.rotors[0], replace(quad.rotors[1], params=half), *quad.rotors[2:]))
+    with pytest.raises(ValueError, match="rotor 2 has its own parameter set"):
+        pm.VehicleMap(veh, shared)
+    vm = pm.VehicleMap(veh, [shared, own, shared, shared])
+    w, ref = vm.wrench([1.0, 0.5, -0.2], [0.1, 0.0, 0.2], [600.0, 620.0, 580.0, 610.0]), pm.vehicle_wrench(
+        veh, p, [1.0, 0.5, -0.2], [0.1, 0.0, 0.2], [600.0, 620.0, 580.0, 610.0])
+    assert np.allclose(w.force, ref.force[0], atol=1e-3 * veh.weight, rtol=0)
+    other = replace(quad, rotors=tuple(replace(r, propeller=pm.load_propeller("apce_8x4")) for r in quad.rotors))
+    with pytest.raises(ValueError, match="rotor 1's map is of apce_8x6 .* with 2 blades, another chord or blade angle"):
+        pm.VehicleMap(other, shared)
+
+
+def test_rotorpys_export_says_it_leaves_the_rotors_interference_out(tmp_path, capsys):
+    """export-sim --target rotorpy --vehicle with rotor_interference > 0: the file has no term for it
+    and nothing said so, where VehicleMap and the C header warn (a vehicle-model audit)."""
+    from cli_helpers import run
+
+    veh = tmp_path / "q.toml"
+    veh.write_text(pm.example_file("quadrotor.toml").read_text().replace("mass = 0.8\n",
+                                                                       "mass = 0.8\nrotor_interference = 1.0\n"))
+    assert pm.read_vehicle(veh).rotor_interference == 1.0
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", veh, "--out",
+                       tmp_path / "q.py")
+    assert code == 0, err
+    assert "its rotors' interference (factor 1) has no RotorPy term" in err
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", "quadrotor", "--out",
+                       tmp_path / "p.py")
+    assert code == 0 and "interference" not in err

@@ -266,7 +266,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
                 **_vehicle_propeller(veh, float(np.min(d.omega)), float(np.max(d.omega)), air),
                 "data": Path(data).name, "files_sha256": file_digests([data])}
     coverage["data_sha256"] = data_digest([data], coverage["files_sha256"])
-    extra = (f"vertical-force error rms (rotors only): model {rms_model:.4f} N, "
+    extra = (f"vertical-force error rms (without the body lift): model {rms_model:.4f} N, "
              f"hover model {np.sqrt(np.mean((hover - veh.weight) ** 2)):.4f} N (weight {veh.weight:.3f} N)")
     if body_lift:
         bl = res.extra["body_lift"]

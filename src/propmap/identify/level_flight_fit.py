@@ -18,7 +18,6 @@ from ..core.airfoil import Air, SectionParams, sigmoid_blend
 from ..core.flapping import flapping_warning_held
 from ..core.hover import HoverModel
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization, differentiable, model_air
-from ..core.body import BodyDrag
 from ..vehicle import Vehicle, rotor_geometry, vehicle_wrench
 from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
@@ -37,12 +36,15 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
 
     Uses the vehicle model (:func:`propmap.vehicle_wrench`: each hub at V_i = V_vehicle +
     omega x r_i, the vector form of :func:`propmap.core.vector.rotor_wrench`, a rotor's own
-    parameter set where it has one, the vehicle's ``rotor_interference``) without the
-    airframe drag: eq 16 balances the rotors' force, the body lift being the fit's own term.
-    For rotor axes along body z, no rates and no roll this is exactly eq 16,
-    sum_i T_i sin(beta_i) + D_i cos(beta_i). (Until 2026-12-01 each rotor's loads were solved
-    with ``params`` alone and without the interference: a structural review found a vehicle
-    with ``rotor_interference = 1`` 0.5% off and a rotor's own set ignored, without a word.)
+    parameter set where it has one, the vehicle's ``rotor_interference`` and airframe drag,
+    ``body_drag``, in the rotors' slipstream too); the body lift of Sec. III-A is the fit's
+    own term. For rotor axes along body z, no rates, no roll and no airframe drag this is
+    exactly eq 16, sum_i T_i sin(beta_i) + D_i cos(beta_i). (Until 2026-12-01 each rotor's
+    loads were solved with ``params`` alone, without the interference or the airframe: a
+    structural review found a vehicle with ``rotor_interference = 1`` 0.5% off and a rotor's
+    own set ignored, a vehicle-model audit a [body] table with ``wash_factor`` 1 whose
+    downwash on the airframe, 12-16% of the weight, the fit and ``simulate_level_flight``
+    left out, without a word.)
 
     Parameters
     ----------
@@ -60,7 +62,8 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     Returns
     -------
     dict with ``thrust``, ``drag``, ``torque`` (shape (N, n_rotors)) [N, N, N m],
-    ``vertical`` (shape (N,)) [N] and ``beta`` (shape (N, n_rotors)) [rad]; with
+    ``vertical`` (shape (N,), the rotors' and the airframe's) [N] and ``beta`` (shape
+    (N, n_rotors)) [rad]; with
     ``derivatives`` (section parameters' names) also ``vertical_jacobian``, shape (N, len(names)):
     d vertical / d p by the implicit function theorem (rotor_wrench's derivatives).
 
@@ -79,8 +82,8 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     R, vel = rotor_kinematics(data, vehicle)
     names = tuple(derivatives or ())
     # the body velocity R^T V_world, V_world along world x: V times R's first row
-    w = vehicle_wrench(vehicle, params, data.airspeed[:, None] * R[:, 0, :], data.rates, data.omega,
-                       body_drag=BodyDrag(), air=air, discretization=discretization, derivatives=names or False)
+    w = vehicle_wrench(vehicle, params, data.airspeed[:, None] * R[:, 0, :], data.rates, data.omega, air=air,
+                       discretization=discretization, derivatives=names or False)
     up = R[:, 2, :]  # the world vertical in body axes
     beta = np.arccos(np.clip(np.einsum("nkj,kj->nk", vel, rotor_geometry(vehicle)[1])  # unit axes
                              / np.maximum(np.linalg.norm(vel, axis=-1), 1e-300), -1, 1))

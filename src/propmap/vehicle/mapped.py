@@ -37,6 +37,34 @@ from .layout import Vehicle, check_vehicle, rotor_geometry
 __all__ = ["VehicleMap", "VehicleMapWrench"]
 
 
+def _check_rotor_map(i: int, m, rotor) -> None:
+    """Refuse rotor ``i``'s map ``m`` where it was built for another blade geometry or, for a rotor
+    with its own set, another set than the rotor's (the models the map records: the C header's
+    checks, export_c; until 2026-12-01 only the diameter and blade count were checked, and an
+    apce_8x4 rotor took an apce_8x6 map, 17% more hover thrust, a rotor's own set the map's,
+    4% of the thrust: a vehicle-model audit); a map without that record by its size."""
+    from ..io.mapcheck import map_model
+
+    try:
+        recorded = map_model(m.attrs)
+    except ValueError:  # (a map written before its model was recorded, or a duck-typed one)
+        recorded = None
+    d, b = float(m.attrs.get("diameter_m", np.nan)), m.attrs.get("n_blades")
+    p = rotor.propeller
+    same = (p.same_geometry(recorded[0]) if recorded is not None else bool(np.isfinite(d)) and p.same_size(d, b))
+    if not same:
+        other = (", another chord or blade angle" if recorded is not None
+                 and recorded[0].same_size(p.diameter, p.n_blades, rtol=5e-5) else "")
+        raise ValueError(f"maps: rotor {i + 1}'s map is of {m.attrs.get('propeller', '?')} ({d:.4g} m, {b} blades), "
+                         f"its propeller {p.name} is {p.diameter:.4g} m with {p.n_blades} blades{other}: build the "
+                         "map for the vehicle's propeller (propmap map PROP, PROP the rotor's propeller, one map per "
+                         "propeller)")
+    if recorded is not None and rotor.params is not None and rotor.params.replace(air=recorded[1].air) != recorded[1]:
+        raise ValueError(f"maps: rotor {i + 1} has its own parameter set ({rotor.params.label or 'unlabelled'}), its "
+                         f"map another ({m.attrs.get('params_label') or 'unlabelled'}): build that rotor's map with "
+                         "its set (one map per rotor)")
+
+
 @dataclass(frozen=True)
 class VehicleMapWrench:
     """Force and moment on a vehicle from its rotors' maps, body axes, at N samples.
@@ -70,8 +98,10 @@ class VehicleMap:
         ``.vehicle`` showed a tilted rotor the forces did not have (a concurrency audit).
     maps : RotorMap or sequence of RotorMap
         One map for every rotor, or one per rotor in the vehicle's order, each built for that
-        rotor's propeller (its diameter and blade count are checked) and parameter set (not
-        checked).
+        rotor's propeller and, for a rotor with its own parameter set (``Rotor.params``), with
+        that set: checked against the model the map records (its blade geometry and set:
+        :func:`propmap.io.mapcheck.map_model`), or, for a map without that record, its diameter
+        and blade count.
     rho : float, optional
         Air density for the airframe drag [kg/m^3]; default the first map's
         (``attrs["rho_kg_m3"]``).
@@ -82,9 +112,10 @@ class VehicleMap:
         ``vehicle`` not a :class:`propmap.Vehicle`.
     ValueError
         ``maps`` neither a RotorMap nor a sequence of them, a
-        number of maps other than 1 or the number of rotors, a map of another diameter (by
-        more than 1%) or blade count than its rotor's propeller, or ``rho`` not a positive
-        finite number.
+        number of maps other than 1 or the number of rotors, a map of another blade geometry
+        than its rotor's propeller (without the record: another diameter, by more than 1%, or
+        blade count), a map of another parameter set than its rotor's own, or ``rho`` not a
+        positive finite number.
 
     Warns
     -----
@@ -102,12 +133,7 @@ class VehicleMap:
         if len(maps) != n or not all(hasattr(m, "wrench") for m in maps):
             raise ValueError(f"maps must be one RotorMap or one per rotor ({n}), got {len(maps)}")
         for i, (m, r) in enumerate(zip(maps, vehicle.rotors)):
-            d, b = float(m.attrs.get("diameter_m", np.nan)), m.attrs.get("n_blades")
-            if not np.isfinite(d) or not r.propeller.same_size(d, b):
-                raise ValueError(f"maps: rotor {i + 1}'s map is of {m.attrs.get('propeller', '?')} ({d:.4g} m, "
-                                 f"{b} blades), its propeller {r.propeller.name} is {r.propeller.diameter:.4g} m with "
-                                 f"{r.propeller.n_blades} blades: build the map for the vehicle's propeller "
-                                 "(propmap map PROP, PROP the rotor's propeller, one map per propeller)")
+            _check_rotor_map(i, m, r)
         # a snapshot: each Rotor and the centre of mass re-made, their arrays copied (layout._vector3)
         vehicle = replace(vehicle, rotors=tuple(replace(r) for r in vehicle.rotors))
         self.vehicle = vehicle
