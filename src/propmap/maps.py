@@ -26,7 +26,8 @@ from .core._interp import snap_incidence
 from .core._numbers import SEED_MAX, integer
 from .core.airfoil import Air, SectionParams
 from .core.geometry import Propeller
-from .core.solver import DEFAULT_DISCRETIZATION, Discretization, check_model_args, rotor_loads
+from .core.solver import (AIRSPEED_MAX, DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, Discretization,
+                          check_model_args, rotor_loads)
 from .io.mapcheck import (CHECK_POINTS_MAX, FLAGS, LOADS, MAX_NODES, SIDE_LOADS, UNITS, check_dataset,
                           check_propeller)
 from .io.mapfile import read_sidecar, write_map, write_sidecar
@@ -246,8 +247,8 @@ def build_map(propeller: Propeller, params: SectionParams, omega, airspeed, inci
     check_model_args(propeller, params, air, discretization)
     # the side force and the pitching moment where the set makes them (RotorOptions.side_load_sources)
     loads = LOADS + (SIDE_LOADS if params.side_load_sources() else ())
-    om = _check_axis("omega", omega, 0.1, 1e5, "rad/s")
-    V = _check_axis("airspeed", airspeed, 0.0, 500.0, "m/s")
+    om = _check_axis("omega", omega, OMEGA_MIN, OMEGA_MAX, "rad/s")
+    V = _check_axis("airspeed", airspeed, 0.0, AIRSPEED_MAX, "m/s")
     b = _check_axis("incidence", incidence, 0.0, math.pi, "rad", snap=True)
     chunk_points = integer("chunk_points", chunk_points, 1, MAX_NODES)
     n_check = integer("n_check", n_check, 0, CHECK_POINTS_MAX)

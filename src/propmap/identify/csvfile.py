@@ -46,6 +46,7 @@ import numpy as np
 
 from ..io.inputs import (MAX_FILE_BYTES, decode_input_text, header_separator, parse_number, read_input_bytes,
                          show_path)
+from ..core.solver import AIRSPEED_MAX, COLLECTIVE_RANGE
 from ..core.units import RPM_MAX
 
 __all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
@@ -54,9 +55,9 @@ __all__ = ["DataError", "RANGES", "MAX_NAME", "MAX_LINES"]
 #: valid ranges of the CSV columns: (low, high, low open, high open, unit)
 RANGES = {
     "rpm": (0.0, RPM_MAX, True, False, "rpm"),
-    "airspeed": (0.0, 500.0, False, False, "m/s"),
+    "airspeed": (0.0, AIRSPEED_MAX, False, False, "m/s"),
     "incidence_deg": (0.0, 180.0, False, False, "deg"),
-    "collective_deg": (-45.0, 45.0, False, False, "deg"),
+    "collective_deg": (-math.degrees(COLLECTIVE_RANGE), math.degrees(COLLECTIVE_RANGE), False, False, "deg"),
     "thrust": (-1e5, 1e5, False, False, "N"),
     "drag": (-1e5, 1e5, False, False, "N"),
     "torque": (-1e4, 1e4, False, False, "N m"),

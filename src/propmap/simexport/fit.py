@@ -18,12 +18,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.units import RPM
+from ..core.units import RPM, RPM_MAX
 from .. import __version__
 from ..core._numbers import SEED_MAX, integer
 from ..core.airfoil import Air
 from ..core.geometry import _real
-from ..core.solver import check_model_args, rotor_loads
+from ..core.solver import AIRSPEED_MAX, check_model_args, rotor_loads
 from ..io.provenance import source_digest
 from ..io.uncertainty import model_uncertainty
 from .forms import EVEN_TERMS, GAZEBO_AXIAL_SPEED, ODD_TERMS, TARGETS, canonical_target, predict
@@ -85,7 +85,8 @@ class Envelope:
     hover_rpm: float | None = None
 
     def __post_init__(self) -> None:
-        for name, (a, b) in (("rpm", (1.0, 954929.0)), ("airspeed", (0.0, 500.0)), ("incidence_deg", (0.0, 180.0))):
+        for name, (a, b) in (("rpm", (1.0, RPM_MAX)), ("airspeed", (0.0, AIRSPEED_MAX)),
+                             ("incidence_deg", (0.0, 180.0))):
             value = getattr(self, name)
             pair = tuple(value) if isinstance(value, (tuple, list, np.ndarray)) else None
             if pair is None or len(pair) != 2 or any(_real(v) is None for v in pair):
