@@ -68,8 +68,6 @@ __all__ = ["FlightSamples", "flight_samples", "default_flight_names", "OMEGA_STO
 FLIGHT_FIT = ("collective", "cl_alpha", "alpha_L0_re", "drag_area_x", "drag_area_y", "wash_factor")
 AIRFRAME_NAMES = tuple(AIRFRAME_BOUNDS)
 CG_NAMES = ("cg_x", "cg_y")
-#: bounds of the centre-of-mass offset [m]
-CG_BOUND = 0.05
 #: the solver's nodes for flight fits: against 48 x 16 nodes, forces within 0.2% of the
 #: rotor thrust (docs/flight.md), far inside the flight data's model error
 FLIGHT_DISCRETIZATION = Discretization(24, 8)

@@ -11,6 +11,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core._numbers import checked
+from ..core.air import G0
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
 from ._checks import first_length, float_array
@@ -435,7 +436,7 @@ def _on_ground(omega, specific_force, velocity, angular_velocity, stopped, hover
     speed is below GROUND_FRACTION of ``hover`` [rad/s] (:func:`_ground_reference`; where that
     is 0, the running samples' median rms speed): rotors idling or spooling up, which cannot
     carry half the weight."""
-    g = 9.80665
+    g = G0
     rms = np.sqrt(np.mean(omega**2, axis=1))
     running = ~stopped
     if not running.any():
@@ -459,7 +460,7 @@ def _log_hover(log: FlightLog) -> float:
     sq = np.sum(log.rotor_omega[running] ** 2, axis=1)
     fast = sq >= np.percentile(sq, 75)
     k = float(np.median(np.linalg.norm(log.specific_force[running][fast], axis=1) / sq[fast]))
-    return math.sqrt(9.80665 / (log.n_motors * k)) if k > 0 else 0.0
+    return math.sqrt(G0 / (log.n_motors * k)) if k > 0 else 0.0
 
 
 def _ground_reference(log: FlightLog, hover: float) -> float:

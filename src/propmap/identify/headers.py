@@ -9,12 +9,12 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from ..core.air import G0
 from ..core.units import RPM
 
 __all__ = ["ColumnMap", "split_header", "UNITS", "ROTATION_COLUMNS", "OPERATING", "LOOKED_FOR", "G0", "LBF",
            "INCH"]
 
-G0 = 9.80665
 LBF = 4.4482216152605
 INCH = 0.0254
 #: an ESC signal's units: a pulse width or a throttle in percent (identify/steps.esc_form)

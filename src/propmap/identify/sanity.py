@@ -16,7 +16,7 @@ import numpy as np
 from ..core.units import RPM
 from ..core.airfoil import Air
 from .csvfile import DataError
-from .headers import G0, LBF
+from .headers import G0, INCH, LBF, UNITS
 from .incidence_checks import MIRROR_MISFIT, WIND_AXES_MISFIT, _mirrored_incidence, _wind_axes  # noqa: F401
 from .load_data import LoadData, data_air, radians_hint
 
@@ -31,30 +31,31 @@ RE75_FLOOR = 2000.0
 #: beyond these factors (inside SANITY_FACTOR) a median load ratio to the model is warned of: the generic set's
 #: ratios to the catalogue's own data lie beyond them for 7 of its 147 propellers (2026-11-26)
 SANITY_WARN = {"thrust": 1.4, "torque": 1.5}
+GF, OZF = G0 * 1e-3, LBF / 16  # [N]
 #: unit slips of load data: (factor on the measured thrust, on the measured torque, cause)
 _UNIT_SLIPS = [
-    (9.80665, 1.0, "thrust in kgf read as N (name the column thrust_kgf or 'Thrust (kgf)')"),
-    (9.80665e-3, 1.0, "thrust in gf read as N (name the column thrust_gf or 'Thrust (gf)')"),
-    (4.4482216152605, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
-    (1 / 9.80665, 1.0, "thrust in N declared as kgf"),
-    (1 / 4.4482216152605, 1.0, "thrust in N declared as lbf"),
+    (G0, 1.0, "thrust in kgf read as N (name the column thrust_kgf or 'Thrust (kgf)')"),
+    (GF, 1.0, "thrust in gf read as N (name the column thrust_gf or 'Thrust (gf)')"),
+    (LBF, 1.0, "thrust in lbf read as N (name the column thrust_lbf)"),
+    (1 / G0, 1.0, "thrust in N declared as kgf"),
+    (1 / LBF, 1.0, "thrust in N declared as lbf"),
     (1e-3, 1.0, "thrust in gf declared as kgf (g as kg)"),
-    (4.4482216152605, 0.112984829, "thrust in lbf and torque in lbf in read as N and N m"),
+    (LBF, LBF * INCH, "thrust in lbf and torque in lbf in read as N and N m"),
     # (a maker's pairs of units, both unlabelled: kgf with kgf cm was told "the columns swapped", gf with gf cm "a
     # diameter far off": a thrust-stand data audit, 2026-11-30)
-    (9.80665, 0.0980665, "thrust in kgf and torque in kgf cm read as N and N m"),
-    (9.80665e-3, 9.80665e-5, "thrust in gf and torque in gf cm read as N and N m"),
-    (9.80665, 9.80665, "thrust in kgf and torque in kgf m read as N and N m"),
-    (9.80665e-3, 1e-3, "thrust in gf and torque in N mm read as N and N m"),
-    (9.80665, 1e-3, "thrust in kgf and torque in N mm read as N and N m"),
-    (9.80665e-3, 0.01, "thrust in gf and torque in N cm read as N and N m"),
-    (0.27801385095378125, 0.00706155181, "thrust in ozf and torque in ozf in read as N and N m"),
+    (G0, G0 * 1e-2, "thrust in kgf and torque in kgf cm read as N and N m"),
+    (GF, GF * 1e-2, "thrust in gf and torque in gf cm read as N and N m"),
+    (G0, G0, "thrust in kgf and torque in kgf m read as N and N m"),
+    (GF, 1e-3, "thrust in gf and torque in N mm read as N and N m"),
+    (G0, 1e-3, "thrust in kgf and torque in N mm read as N and N m"),
+    (GF, 0.01, "thrust in gf and torque in N cm read as N and N m"),
+    (OZF, OZF * INCH, "thrust in ozf and torque in ozf in read as N and N m"),
     (1.0, 1e3, "torque in N m declared as N mm"),
     (1.0, 1e-3, "torque in N mm read as N m (name the column torque_Nmm)"),
     (1.0, 0.01, "torque in N cm read as N m (name the column 'torque (N cm)')"),
-    (1.0, 0.0980665, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
-    (1.0, 0.112984829, "torque in lbf in read as N m (name the column 'torque (lbf in)')"),
-    (1.0, 0.00706155181, "torque in ozf in read as N m (name the column 'torque (oz in)')"),
+    (1.0, G0 * 1e-2, "torque in kgf cm read as N m (name the column torque_kgfcm)"),
+    (1.0, LBF * INCH, "torque in lbf in read as N m (name the column 'torque (lbf in)')"),
+    (1.0, OZF * INCH, "torque in ozf in read as N m (name the column 'torque (oz in)')"),
     (1.0, -1.0, ("a torque of the opposite sign (a CSV's reader turns it only in a run it can orient: a static "
                  "point, or positive thrust where the propeller is nearest to static; a UIUC file's CP is read as "
                  "written): negate the torque column")),
@@ -69,7 +70,8 @@ _READ_AS_N = tuple(fT for fT, _, _ in _UNIT_SLIPS[:3])
 
 #: airspeed units an unlabelled airspeed column may be in, as m/s per unit (mph and knots read as m/s fitted with
 #: exit 0 and six parameters at their bounds; identification audit, 2026-11-26)
-_AIRSPEED_SLIPS = ((0.44704, "mph"), (0.514444, "knots"), (1 / 3.6, "km/h"), (0.3048, "ft/s"))
+_AIRSPEED_SLIPS = tuple((UNITS["speed"][key], unit) for key, unit in (("mph", "mph"), ("knots", "knots"),
+                                                                      ("kmh", "km/h"), ("fts", "ft/s")))
 
 
 def _airspeed_slip(data: LoadData, at_rpm, loads_at, checked) -> str | None:

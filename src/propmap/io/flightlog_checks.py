@@ -18,6 +18,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..core.air import G0
+
 if TYPE_CHECKING:
     from .flightlog import FlightLog
 
@@ -41,7 +43,7 @@ GAP_STEPS = 20
 RATE_MAX = 200.0  # [rad/s]
 SPEED_MAX = 500.0  # [m/s]
 MIN_SAMPLES = 2
-G = 9.80665  # [m/s^2]
+G = G0  # [m/s^2]
 #: the attitude quaternion's norm may differ from 1 by this (a logged one is normalised to about 1e-3)
 QUAT_TOLERANCE = 0.05
 #: the accelerometer's time-mean upward reading must lie within this fraction of g (plus three standard errors of
