@@ -89,7 +89,8 @@ def test_loads_points_csv(capsys, tmp_path):
     assert "vortex_ring" in rows[2]["flags"].split(";")  # axial descent at 5 m/s, 6000 rpm: k = 0.92
     flagged = {f: sum(f in r["flags"].split(";") for r in rows) for f in ("vortex_ring", "reverse_flow")}
     assert flagged["vortex_ring"] == 1
-    assert (f"wrote 3 points to {dst} (params calibrated:apce_8x6); flagged: 1 vortex_ring"
+    assert (f"wrote 3 points to {dst} (params calibrated:apce_8x6; air rho 1.225 kg/m^3, mu 1.983e-05 Pa s, speed of "
+            "sound 340.3 m/s); flagged: 1 vortex_ring"
             + (f", {flagged['reverse_flow']} reverse_flow" if flagged["reverse_flow"] else "")
             + " (column flags, docs/cli.md)") in err, err
 

@@ -322,3 +322,112 @@ def test_rotorpys_export_says_it_leaves_the_rotors_interference_out(tmp_path, ca
     code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", "quadrotor", "--out",
                        tmp_path / "p.py")
     assert code == 0 and "interference" not in err
+
+
+def _rotor_sets_vehicle(tmp_path, rotors=(1, 2, 3, 4), rho=1.0):
+    """The example quadrotor with ``rotors`` on apce_8x6's calibrated set written with air of rho
+    ``rho`` (as a set fitted in other air), the others without a set of their own."""
+    from propmap.io.params_file import write_params
+
+    write_params(tmp_path / "thin.toml", pm.default_params(PROP).replace(air=pm.Air(rho=rho)))
+    blocks = pm.example_file("quadrotor.toml").read_text().split("[[rotors]]")
+    text = blocks[0] + "".join("[[rotors]]" + (b.replace('propeller = "apce_8x6"\n', 'propeller = "apce_8x6"\n'
+                                                         'params = "thin.toml"\n') if k + 1 in rotors else b)
+                               for k, b in enumerate(blocks[1:]))
+    (tmp_path / "q.toml").write_text(text)
+    return tmp_path / "q.toml"
+
+
+def test_rotor_sets_in_other_air_are_said_by_the_api_and_the_commands(tmp_path, capsys):
+    """A vehicle whose rotors' own sets carry other air (rho 1.0, fitted there) than the one they are
+    solved in: hover_omega and trim-vehicle took 1.225 without a word (two such rotors made 25%
+    more thrust than in their own air; an air-consistency audit, helper); both say it now."""
+    from cli_helpers import run
+
+    path = _rotor_sets_vehicle(tmp_path, rotors=(1, 2))
+    with pytest.warns(UserWarning, match=r"rotor 1 has its own parameter set in other air \(rho 1 kg/m\^3, and 1 more"):
+        pm.hover_omega(pm.read_vehicle(path), pm.default_params(PROP))
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0")
+    assert code == 0, err
+    assert "rotor(s) 1, 2 carry parameter sets in other air (rho 1 kg/m^3): every rotor is solved in one air" in err
+    assert "air: rho 1.225 kg/m^3" in out
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0", "--rho", "1.1")
+    assert code == 0 and "other air" not in err and "air: rho 1.1 kg/m^3" in out
+
+
+def test_export_sim_takes_the_rotors_one_set_as_trim_vehicle_does(tmp_path, capsys):
+    """Every rotor on one set of its own (fitted at rho 1.0): export-sim --vehicle took PROP's default
+    set at 1.225 and pinned the hover 9.9% below trim-vehicle's; it takes the rotors' set now, and
+    its file names the air."""
+    import json
+
+    from cli_helpers import run
+
+    path = _rotor_sets_vehicle(tmp_path)
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0", "--json")
+    assert code == 0, err
+    hover = json.loads(out)["trims"][0]["rotor_rpm"][0]
+    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", path, "--json",
+                         "--out", tmp_path / "q.py")
+    assert code == 0, err
+    report = json.loads(out)
+    assert report["envelope"]["hover_rpm"] == pytest.approx(hover, rel=1e-6) and report["rho"] == 1.0
+    assert "in air of rho 1 kg/m^3" in (tmp_path / "q.py").read_text()
+
+
+def test_export_sim_keeps_the_vehicles_airframe_for_another_propeller(tmp_path, capsys):
+    """export-sim apce_8x6 --vehicle neurobem_quadrotor --hover-rpm: the vehicle's own set's [body]
+    (its airframe) was dropped with the set, c_D 0; the airframe is the vehicle's whatever propeller
+    is exported (an air-consistency audit)."""
+    from cli_helpers import run
+
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", "neurobem_quadrotor",
+                       "--hover-rpm", "8000", "--out", tmp_path / "n.py")
+    assert code == 0, err
+    ns: dict = {}
+    exec((tmp_path / "n.py").read_text(), ns)
+    assert ns["quad_params"]["c_Dx"] > 0.005 and ns["quad_params"]["c_Dz"] == 0.0
+
+
+def test_the_outputs_name_the_air_they_were_made_in(tmp_path, capsys):
+    """validate PROP, wrench's text and the C header named the set and not the air (cli.md said every
+    output echoes it); they give density, viscosity and speed of sound now."""
+    import json
+
+    from cli_helpers import run
+
+    code, out, err = run(capsys, "validate", "apce_8x6", "--rho", "1.1")
+    assert code == 0 and "air rho 1.1 kg/m^3, mu 1.983e-05 Pa s, speed of sound 340.3 m/s" in out, err
+    code, out, err = run(capsys, "validate", "apce_8x6", "--altitude-m", "1000", "--json")
+    assert code == 0 and json.loads(out)["air"]["rho"] == pytest.approx(1.1116, abs=1e-4)
+    code, _, err = run(capsys, "map", "apce_8x6", "--format", "c", "--rpm", "3000:9000:4", "--airspeed", "0:10:3",
+                       "--incidence-deg", "0:180:5", "--check-points", "0", "--rho", "1.1", "--out", tmp_path / "m.h")
+    assert code == 0, err
+    assert "air rho 1.1 kg/m^3, mu 1.983e-05 Pa s" in (tmp_path / "m.h").read_text()
+
+
+def test_a_vehicle_map_says_when_its_maps_or_a_rotors_set_are_in_other_air():
+    """Maps built in different air, or a rotor's own set in other air than its map, were taken
+    without a word (a hover yaw moment of -0.018 N m from maps at 1.225 and 1.0; an air-consistency
+    audit); each is said now."""
+    import warnings
+    from dataclasses import replace
+
+    from propmap.maps import build_map
+    from propmap.rotormap import RotorMap
+
+    quad, p = pm.read_vehicle("quadrotor"), pm.default_params(PROP)
+    axes = (np.linspace(400.0, 800.0, 5), np.linspace(0.0, 6.0, 4), np.radians(np.linspace(0.0, 180.0, 7)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sea, thin = (RotorMap(build_map(quad.rotors[0].propeller, p, *axes, n_check=0, air=pm.Air(rho=rho)))
+                     for rho in (1.225, 1.0))
+    with pytest.warns(UserWarning, match=r"maps: built in different air \(rho 1.225, 1 kg/m\^3\)"):
+        pm.VehicleMap(quad, [sea, thin, sea, thin])
+    veh = replace(quad, rotors=tuple(replace(r, params=p.replace(air=pm.Air(rho=1.0))) for r in quad.rotors))
+    with pytest.warns(UserWarning, match=r"rotor 1 has its own parameter set in other air \(rho 1 kg/m\^3\) than "
+                                         r"its map \(rho 1.225 kg/m\^3\), and 3 more"):
+        pm.VehicleMap(veh, sea)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pm.VehicleMap(veh, thin)  # (the rotors' own air: nothing to say)

@@ -11,7 +11,7 @@ import click
 
 from ._common import InputError, option_group
 
-__all__ = ["RHO_RANGE", "AirChoice", "air_label", "air_options", "resolve_air", "with_air_options"]
+__all__ = ["RHO_RANGE", "AirChoice", "air_label", "air_options", "air_record", "resolve_air", "with_air_options"]
 
 
 #: the densities accepted on the command line [kg/m^3] (as parameter files)
@@ -105,3 +105,8 @@ def _check_option(option: str, value: float, lo: float, hi: float, unit: str) ->
 def air_label(air) -> str:
     """One line of the air used, for outputs."""
     return f"rho {air.rho:.4g} kg/m^3, mu {air.mu:.4g} Pa s, speed of sound {air.speed_of_sound:.4g} m/s"
+
+
+def air_record(air) -> dict:
+    """The air used, SI, for the --json outputs: rho [kg/m^3], mu [Pa s], speed_of_sound [m/s]."""
+    return {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound}

@@ -11,7 +11,7 @@ import click
 
 from ..core.units import RPM
 from ._air import resolve_air
-from ._common import InputError, load_params
+from ._common import InputError, load_params, warn
 from ._coverage import coverage_messages, envelope_extremes
 
 
@@ -49,12 +49,20 @@ def _default_spec(path, params_spec):
 
 
 def _own_spec_for(path, propeller):
-    """The vehicle file's own parameter set where ``propeller`` (export-sim's PROP) is every rotor's
-    geometry, else None: export-sim's default of --params with --vehicle (the vehicle's set is its
-    rotors', not another propeller's; a review found apce_8x6 exported with the NeuroBEM rotors' fit)."""
+    """The vehicle file's own parameter set, or else its rotors' one set (each rotor's ``params``,
+    all the same), where ``propeller`` (export-sim's PROP) is every rotor's geometry, else None:
+    export-sim's default of --params with --vehicle (the vehicle's set is its rotors', not another
+    propeller's; a review found apce_8x6 exported with the NeuroBEM rotors' fit)."""
+    from ..vehicle.file import rotor_file_specs
+
     spec = _default_spec(path, None)
-    if spec is None or not all(r.propeller.same_geometry(propeller) for r in _vehicle(path).rotors):
+    if not all(r.propeller.same_geometry(propeller) for r in _vehicle(path).rotors):
         return None
+    specs = set(rotor_file_specs(path))
+    if spec is None and len(specs) == 1 and None not in specs:
+        # (the rotors' one set, as trim-vehicle takes it: the export took PROP's default and hovered 9.9% slower
+        # than trim-vehicle where the rotors' set was fitted at rho 1.0, an air-consistency audit, 2026-12-01)
+        spec = specs.pop()
     return spec
 
 
@@ -127,7 +135,23 @@ def _vehicle_sets(veh, vehicle, params_spec, air_choice):
     air = resolve_air(air, air_choice)
     if params_spec is not None:
         veh = _one_set(veh, "--params gives every rotor's set")
+    _warn_rotor_air(veh, air, air_choice)
     return veh, params, air, label, sets
+
+
+def _warn_rotor_air(veh, air, air_choice) -> None:
+    """Without an air option: a warning where a rotor's own parameter set carries other air than
+    the one every rotor is solved in (the command's; dropped without a word until 2026-12-01: a
+    vehicle's two rotors on a set at rho 1.0 made 25% more thrust than in their own air, an
+    air-consistency audit), as vehicle_wrench warns in the API."""
+    if air_choice.options_given():
+        return
+    other = sorted({r.params.air.rho for r in veh.rotors if r.params is not None and r.params.air != air})
+    if other:
+        rotors = [str(k + 1) for k, r in enumerate(veh.rotors) if r.params is not None and r.params.air != air]
+        warn(f"--vehicle: rotor(s) {', '.join(rotors)} carry parameter sets in other air (rho "
+             f"{', '.join(f'{r:.4g}' for r in other)} kg/m^3): every rotor is solved in one air, rho {air.rho:.4g} "
+             "kg/m^3; give --rho (or --altitude-m, --temperature-c with --pressure-pa) to choose it")
 
 
 def _one_set(veh, why: str):

@@ -120,6 +120,9 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     if vehicle is not None:
         veh, hover_rpm, hover_from, airframe = _export_vehicle(vehicle, params_spec, propeller, params, label, air,
                                                                target, hover_rpm)
+        from ._vehicle import _warn_rotor_air
+
+        _warn_rotor_air(veh, air, air_choice)
         if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
             _warn_wash_drag(veh, params, hover_rpm, air)
         if target == "rotorpy" and veh.rotor_interference > 0:  # (said by VehicleMap and the C header, not here
@@ -208,13 +211,16 @@ def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, ta
     from ..core.solver import TIP_MACH_WARN, SolverError
     from ..simexport import check_rotorpy_vehicle
     from ..vehicle import hover_omega
-    from ._vehicle import _fitted_vehicle
+    from ._vehicle import _default_spec, _fitted_vehicle
 
     hover_from, airframe = "--hover-rpm", ""
-    # a flight fit's [body] table: its airframe drag (c_D); the vehicle's own set was resolved by the caller
-    veh, fitted = _fitted_vehicle(vehicle, params_spec, own=False)
+    # a flight fit's [body] table: its airframe drag (c_D); the vehicle's own set was resolved by the caller. Without
+    # --params and with another PROP than the rotors', the vehicle's own set's [body] all the same: the airframe is the
+    # vehicle's, whatever propeller is exported (its drag was written 0: an air-consistency audit, 2026-12-01)
+    body_spec = params_spec if params_spec is not None else _default_spec(vehicle, None)
+    veh, fitted = _fitted_vehicle(vehicle, body_spec, own=False)
     if fitted:
-        airframe = f"the [body] table of {Path(params_spec).name} (a flight fit)"
+        airframe = f"the [body] table of {Path(body_spec).name} (a flight fit)"
     if target == "rotorpy":
         try:
             check_rotorpy_vehicle(veh)

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ._air import resolve_air, with_air_options
+from ._air import air_label, air_record, resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
 from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond
@@ -491,13 +491,14 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     if as_json:
         import json
 
-        click.echo(json.dumps({"params": label, "rho": air.rho, "errors": dict(rows), "speed_bands": bands,
+        click.echo(json.dumps({"params": label, "rho": air.rho, "air": air_record(air), "errors": dict(rows),
+                               "speed_bands": bands,
                                "samples": samples.n, "left_out": log.n - samples.n, "in_fit": bool(in_fit)},
                               indent=2))
     else:
         left = log.n - samples.n
         click.echo(f"{samples.n} samples of {log.name} ({left} left out: a rotor stopped or the vehicle on the "
-                   f"ground), params {label}, rho {air.rho:g} kg/m^3")
+                   f"ground), params {label}; air {air_label(air)}")
         if in_fit:
             click.echo(f"{log.name} is one of the logs the parameter set was fitted to ({in_fit} in the set's "
                        "[coverage]): these errors are in-sample, not a prediction")

@@ -10,7 +10,7 @@ from pathlib import Path
 import click
 
 from ..core.units import RPM
-from ._air import air_label, resolve_air, with_air_options
+from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (AIRSPEED_MAX, NEGATIVE_INCIDENCE, PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg,
                       check_point, check_section_match, echo_json, fixed, load_params, radians_like, set_collective_deg,
                       warn, with_prop_options)
@@ -478,7 +478,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
         echo_json({**result, "propeller": propeller.name, "n_blades": propeller.n_blades,
                    "diameter_m": propeller.diameter, "params": label, "rpm": rpm, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "collective_deg": total_deg, "params_collective_deg": set_deg,
-                   "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
+                   "air": air_record(air),
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {k: u for k, u in UNITS.items() if k in result}})
         return
@@ -509,7 +509,7 @@ def _points_command(prop, rpm, airspeed, incidence_deg, collective_deg, params_s
     where = "standard output" if out == "-" else out
     n_bad = counts.pop("not_converged")
     flagged = ", ".join(f"{c} {name}" for name, c in counts.items() if c)  # (the vortex ring's rows unsaid before)
-    click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label})"
+    click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label}; air {air_label(air)})"
                + (f"; {n_bad} did not converge (see flags)" if n_bad else "")
                + (f"; flagged: {flagged} (column flags, docs/cli.md)" if flagged else ""), err=True)
 

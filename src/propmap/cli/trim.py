@@ -8,7 +8,7 @@ import math
 import click
 
 from ..core.units import RPM
-from ._air import air_label, resolve_air, with_air_options
+from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, check_point, check_section_match, echo_json,
                       fixed, load_params, set_collective_deg, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
@@ -78,7 +78,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
         echo_json({**out, "propeller": propeller.name, "n_blades": propeller.n_blades,
                    "diameter_m": propeller.diameter, "params": label, "airspeed": airspeed,
                    "incidence_deg": incidence_deg, "thrust_target": thrust, **searched,
-                   "air": {"rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound},
+                   "air": air_record(air),
                    "flag_meanings": {f: FLAG_MEANINGS[f] for f in r.flags()},
                    "units": {**{k: u for k, u in UNITS.items() if k in out}, "collective_deg": "deg",
                              "rpm": "rpm"}})

@@ -8,7 +8,7 @@ import math
 import click
 
 from ..core.units import RPM
-from ._air import with_air_options
+from ._air import air_label, air_record, with_air_options
 from ._common import Command, InputError, PathArg, echo_json
 
 #: the most airspeeds one call trims (each about 0.1 s)
@@ -76,13 +76,13 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
                     model_air(params, air))
     if as_json:
         echo_json({"vehicle": str(vehicle), "params": label, "rotor_params": list(sets), "mass_kg": veh.mass,
-                   "rho_kg_m3": model_air(params, air).rho, "trims": rows,
+                   "rho_kg_m3": model_air(params, air).rho, "air": air_record(model_air(params, air)), "trims": rows,
                    "units": {"airspeed": "m/s", "climb_rate": "m/s", "roll_deg": "deg", "pitch_deg": "deg",
                              "rotor_rpm": "rpm", "power_W": "W"}})
         return
     n = len(veh.rotors)
     click.echo(f"{veh.name or vehicle}: {veh.mass:g} kg, {n} rotors (params {label}); steady flight, climb rate "
-               f"{climb_rate:g} m/s")
+               f"{climb_rate:g} m/s; air: {air_label(model_air(params, air))}")
     click.echo(f"{'V [m/s]':>8}{'roll [deg]':>12}{'pitch [deg]':>13}" + "".join(f"{f'rotor {k + 1} [rpm]':>16}"
                                                                             for k in range(n)) + f"{'power [W]':>11}")
     for r in rows:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ._air import air_label, resolve_air, with_air_options
+from ._air import air_label, air_record, resolve_air, with_air_options
 
 from ._common import (Command, PARAMS_HELP, InputError, PathArg, _catalogue_geometry, check_section_match, echo_json,
                        load_params, parse_names, warn, with_prop_options)
@@ -156,9 +156,10 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
         fig = plot_validation(v, figure, title=f"{prop}, params {label}: model vs measured\nData: {entry.citation}")
     in_fit = _catalogue_in_fit(entry, label, params_spec, v.runs)
     if as_json:
-        echo_json({**v.to_dict(), "params_label": label, "in_fit": in_fit, "figure": None if fig is None else str(fig)})
+        echo_json({**v.to_dict(), "params_label": label, "air": air_record(air), "in_fit": in_fit,
+                   "figure": None if fig is None else str(fig)})
     else:
-        click.echo(f"{prop}, params {label}")
+        click.echo(f"{prop}, params {label}; air {air_label(air)}")
         print_table(v)
         if in_fit:  # (the default calibrated set's residual once read as a prediction: a validation audit)
             fitted = [r for r, how in in_fit.items() if how == "fitted"]

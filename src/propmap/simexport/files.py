@@ -127,6 +127,16 @@ def rotorpy_directions(spins) -> list[int]:
     return out
 
 
+def _air_words(meta: dict) -> str:
+    """The air an export was fitted in, for its file's head (the coefficients scale with the density:
+    the file named its set only, whose own air another was used instead of with --rho, an
+    air-consistency audit, 2026-12-01)."""
+    if "rho" not in meta:
+        return ""
+    return (f" in air of rho {meta['rho']:.6g} kg/m^3" + (f", mu {meta['mu']:.4g} Pa s" if "mu" in meta else "")
+            + (f", speed of sound {meta['speed_of_sound']:.4g} m/s" if "speed_of_sound" in meta else ""))
+
+
 def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str, airframe_label: str = "") -> str:
     c = res.coefficients
     rotor = [f"    'k_eta': {c['k_eta']!r},  # thrust coefficient N/(rad/s)**2",
@@ -314,7 +324,8 @@ def write_export(res: SimExport, path, *, vehicle=None, vehicle_label: str = "",
                          "coefficient file); name the coefficient file otherwise")
     head = _text(f"propmap {__version__} (source sha256 {res.meta.get('propmap_source_sha256', 'not recorded')}): "
                  f"{res.target} coefficients of {res.meta.get('propeller')} ({res.meta.get('params')}), fitted to the "
-                 "full model" + (f"; data: {res.meta['citation']}" if res.meta.get("citation") else ""))
+                 "full model" + _air_words(res.meta) + (f"; data: {res.meta['citation']}" if res.meta.get("citation")
+                                                        else ""))
     if vehicle is not None:
         if res.target != "rotorpy":
             raise ValueError(f"vehicle: a vehicle block is written for the rotorpy target only, not {res.target}")

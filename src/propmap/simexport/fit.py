@@ -478,5 +478,6 @@ def export_sim(target: str, propeller, params, *, air: Air | None = None, envelo
             "section_model": params.section_model, "propmap_version": __version__,
             "propmap_source_sha256": source_digest(), "model": "Gill & D'Andrea 2017 BET/BEMT (propmap)",
             "seed": int(seed),
-            "check_seed": check_seed(int(seed)), "check_points": int(check["omega"].size), "rho": float(air.rho)}
+            "check_seed": check_seed(int(seed)), "check_points": int(check["omega"].size), "rho": float(air.rho),
+            "mu": float(air.mu), "speed_of_sound": float(air.speed_of_sound)}
     return SimExport(target, coefficients, errors, envelope, int(s["omega"].size), meta, fixed, held)

@@ -424,14 +424,20 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
 
     Warns
     -----
-    UserWarning
+    TipMachWarning
         A hover whose blade tips meet the air beyond Mach 0.8 (the solver's TIP_MACH_WARN: a
         mass in grams, 1200 for 1.2 kg, hovered at tip Mach 3.7 without a word).
+    UserWarning
+        Without ``air``: a rotor whose own parameter set carries other air than ``params``
+        (every rotor is solved in one air, ``params``'s), as :func:`vehicle_wrench`.
     """
     from scipy.optimize import brentq
 
     check_vehicle(vehicle)
+    given = air is not None
     air = model_air(params, air)
+    if not given:  # (as vehicle_wrench: a rotor's set in other air was dropped without a word, an air audit)
+        _warn_rotor_air(vehicle, air)
     up = np.array([float(r.axis[2]) / float(np.linalg.norm(r.axis)) for r in vehicle.rotors])  # a_i . e_z, a_i unit
     if not np.any(up > 0):
         raise ValueError("no rotor's axis has an upward component: the vehicle cannot hover")
