@@ -317,9 +317,10 @@ def test_correlated_residuals_are_said_above_0_2_with_the_right_hint():
     auto = {"lag1": 0.3, "n_effective": 50.0, "n": 100}
     loads = _fit(extra={"kind": "loads", "residual_autocorrelation": auto}).report_text()
     assert ("consecutive residuals within each run correlate at 0.30 (lag 1: the information of about 50 "
-            "independent samples of 100): the uncertainty is likely larger; the jackknife of the runs") in loads
+            "independent residuals of 100): the uncertainty is likely larger; the jackknife of the runs") in loads
     one_log = _fit(extra={"kind": "flight", "logs": ["a"], "residual_autocorrelation": auto}).report_text()
     assert "within each log correlate at 0.30" in one_log and "the uncertainty is likely larger\n" in one_log + "\n"
+    assert "50 independent samples (3 force errors each) of 100" in one_log
     two = _fit(extra={"kind": "flight", "logs": ["a", "b"], "residual_autocorrelation": auto}).report_text()
     assert "leave-one-log-out jackknife" in two
     low = _fit(extra={"kind": "loads", "residual_autocorrelation": {**auto, "lag1": 0.19}}).report_text()

@@ -431,3 +431,51 @@ def test_a_vehicle_map_says_when_its_maps_or_a_rotors_set_are_in_other_air():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         pm.VehicleMap(veh, thin)  # (the rotors' own air: nothing to say)
+
+
+def test_held_out_in_plane_force_is_scored_where_the_fit_scores_it(tmp_path, capsys):
+    """The in-plane force is fitted and validated only where the rotor has an in-plane airspeed (a
+    tunnel's normal force at axial points is its noise); holdout_loads and fit loads --holdout
+    scored it at every held-out point, the axial ones' errors too (a fit-statistics audit,
+    helper): here a 0.05 N normal force on two held-out axial points, 0.02 N offsets on two at
+    incidence, score 0.02 N, not 0.038 N."""
+    import json
+
+    from cli_helpers import run
+    from propmap.validation import holdout_loads
+
+    prop, p = pm.load_propeller(PROP), pm.default_params(PROP)
+    om = np.array([5000, 7000, 5000, 7000, 6000, 6000, 6000, 6000, 5500, 6500]) * math.pi / 30
+    V = np.array([0, 0, 4, 6, 5, 5, 5, 8, 3, 7.0])
+    b = np.radians([0, 0, 30, 60, 0, 0, 45, 90, 20, 75.0])
+    r = pm.rotor_loads(prop, p, om, V, b)
+    noise = np.array([0, 0, 0, 0, 0.05, -0.05, 0.02, -0.02, 0, 0])
+    group = np.array(["s", "s", "a", "a", "h", "h", "h", "h", "a", "a"], dtype=object)
+    data = LoadData(om, V, b, {"thrust": r.thrust, "drag": r.drag + noise, "torque": r.torque}, group)
+    assert list(data.inplane) == [False, False, True, True, False, False, True, True, True, True]
+    e = holdout_loads(data, prop, p, [group != "h"], names=("cd_min",))
+    T0 = float(r.thrust[:2].mean())
+    assert e["rms_drag"] == pytest.approx(0.02 / T0, rel=1e-5)
+    rows = "".join(f"{g},{o * 30 / math.pi:.6f},{v},{math.degrees(i):.6f},{t:.8g},{d:.8g},{q:.8g}\n"
+                   for g, o, v, i, t, d, q in zip(group, om, V, b, r.thrust, r.drag + noise, r.torque))
+    (tmp_path / "d.csv").write_text("group,rpm,airspeed,incidence_deg,thrust,drag,torque\n" + rows)
+    code, _, err = run(capsys, "fit", "loads", tmp_path / "d.csv", "--prop", PROP, "--base", f"calibrated:{PROP}",
+                       "--holdout", "h", "--skip-sanity-check", "--out", tmp_path / "p.toml")
+    assert code == 0, err
+    held = json.loads((tmp_path / "p.report.json").read_text())["holdout"]
+    assert held[f"calibrated:{PROP}"]["drag_rmse"] == pytest.approx(0.02, rel=1e-5)
+
+
+def test_the_jackknifes_interval_is_cut_at_the_bounds(tmp_path, capsys):
+    """Every interval of a fit report is cut at its parameter's bounds, the jackknife's was not:
+    da4052_5x2.65's cl_alpha read [7.33, 9.68] past its bound of 9 (a fit-statistics audit)."""
+    import json
+
+    from cli_helpers import run
+
+    code, out, err = run(capsys, "fit", "loads", "da4052_5x2.65", "--jackknife", "--json", "--out", tmp_path / "p.toml")
+    assert code == 0, err
+    jk = json.loads(out)["jackknife"]
+    assert jk["ci95"]["cl_alpha"][1] == 9.0 and jk["ci95_cut_at_bound"]["cl_alpha"] == [False, True]
+    assert jk["ci95"]["cl_alpha"][0] == pytest.approx(7.329, abs=0.01)  # (regression value, 2026-12-01)
+    assert not any(any(v) for k, v in jk["ci95_cut_at_bound"].items() if k != "cl_alpha")

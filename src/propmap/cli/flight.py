@@ -223,9 +223,11 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
         cv = _run_fit(cross_validate_flight, train, veh_in, base=base, air=air, options=opts, moments=moments)
         report["cross_validation"] = cv
         if set(cv["folds"][0]["x"]) == set(res.names):  # (the report's jackknife column: the spread between logs)
+            from ..identify.optimizer import _bounds
+
             res.extra["jackknife"] = jackknife_report(res, [f["x"] for f in cv["folds"]], "log",
                                                       [f["log"] for f in cv["folds"]],
-                                                      [f["at_bound"] for f in cv["folds"]])
+                                                      [f["at_bound"] for f in cv["folds"]], _bounds(res.names, opts))
     res.extra["flight_report"] = report
     text = _report_lines(samples, names, held, train.n, rows, report, reference_masses, veh.mass)
     from dataclasses import replace

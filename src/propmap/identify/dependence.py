@@ -110,7 +110,7 @@ def jackknife_std_error(estimates) -> np.ndarray:
     return np.sqrt((g - 1) / g * np.sum((e - e.mean(axis=0)) ** 2, axis=0))
 
 
-def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) -> dict:
+def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None, bounds=None) -> dict:
     """The delete-a-group jackknife of a fit (:func:`jackknife_std_error`), for its report.
 
     Parameters
@@ -127,12 +127,16 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
     at_bound : sequence of sequence of str, optional
         Per fold, its parameters that ended at a bound (their value there is the bound's, so
         the spread understates theirs): said in the report.
+    bounds : (ndarray, ndarray), optional
+        The fit's lower and upper bounds of ``result.names`` (as fitted, angles in rad): the
+        intervals cut at them, as every interval of the report is (``ci95_cut_at_bound``).
 
     Returns
     -------
     dict
         ``by``, ``groups``, ``std_error`` and ``ci95`` (estimate +- Student's t with g - 1
-        degrees of freedom times it) per parameter, keyed and in units as the report's (an
+        degrees of freedom times it, cut at ``bounds``; ``ci95_cut_at_bound``: per parameter whether
+        its low and high ends are cut) per parameter, keyed and in units as the report's (an
         angle's as ``alpha_L0_deg``, in deg: :func:`~propmap.identify.options.report_name`), and
         ``ratio`` to the linearised std error (None where that is not finite), ``band`` ([low,
         high]: the 95% band of the std error itself as multiples of it, g - 1 degrees of freedom:
@@ -157,10 +161,18 @@ def jackknife_report(result: FitResult, fold_x, by: str, groups, at_bound=None) 
     t = float(stats.t.ppf(0.975, g - 1))
 
     lin = result.identifiability.std_error
+    lo, hi = result.x - t * se, result.x + t * se
+    cut_lo = cut_hi = np.zeros(len(se), bool)
+    if bounds is not None:  # (every interval of the report is cut at the bounds; this one was not until 2026-12-01:
+        # cl_alpha's [7.33, 9.68] past its bound of 9, a fit-statistics audit)
+        lb, ub = (np.asarray(b, float) for b in bounds)
+        cut_lo, cut_hi = lo < lb, hi > ub
+        lo, hi = np.maximum(lo, lb), np.minimum(hi, ub)
     return {"by": by, "groups": [str(x) for x in groups],
             "std_error": {report_name(n): report_value(n, s) for n, s in zip(result.names, se)},
-            "ci95": {report_name(n): [report_value(n, x - t * s), report_value(n, x + t * s)]
-                     for n, x, s in zip(result.names, result.x, se)},
+            "ci95": {report_name(n): [report_value(n, a), report_value(n, b)]
+                     for n, a, b in zip(result.names, lo, hi)},
+            "ci95_cut_at_bound": {report_name(n): [bool(a), bool(b)] for n, a, b in zip(result.names, cut_lo, cut_hi)},
             "ratio": {report_name(n): (float(s / v) if np.isfinite(v) and v > 0 else None)
                       for n, s, v in zip(result.names, se, lin)},
             "band": [math.sqrt((g - 1) / stats.chi2.ppf(0.975, g - 1)),

@@ -55,8 +55,7 @@ def _fitted_rows(data: LoadData, keys) -> dict:
     which as a residual scaled by its own rms came out near 1 at every such point and swamped
     the fit's uncertainty report, a user-level audit, 2026-11-26; as ``validate`` scores it;
     data without such points do not fit it, :func:`_load_keys`)."""
-    inplane = data.airspeed * np.abs(np.sin(data.incidence)) > STATIC_AIRSPEED
-    return {k: inplane if k == "drag" else np.ones(data.n, bool) for k in keys}
+    return {k: data.inplane if k == "drag" else np.ones(data.n, bool) for k in keys}
 
 
 def _load_norms(data: LoadData, propeller, keys, air: Air):

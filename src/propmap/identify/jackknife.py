@@ -77,6 +77,7 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
     SolverError
         From the rotor model.
     """
+    from .optimizer import _bounds
     from .options import FitOptions
 
     runs = jackknife_runs(data)
@@ -98,5 +99,6 @@ def jackknife_loads(result: FitResult, data: LoadData, prop, *, base=None, air=N
             raise type(exc)(f"the jackknife's fit without run {run} fails: {exc}") from None
         folds.append({n: float(v) for n, v in zip(f.names, f.x)})
         bound.append(f.at_bound)
-    result.extra["jackknife"] = report = jackknife_report(result, folds, "run", runs, bound)
+    result.extra["jackknife"] = report = jackknife_report(result, folds, "run", runs, bound,
+                                                          _bounds(result.names, options))
     return report

@@ -154,6 +154,15 @@ class LoadData:
         sign rules and the validation metrics take them."""
         return self.airspeed <= STATIC_AIRSPEED
 
+    @property
+    def inplane(self) -> np.ndarray:
+        """Which points have an in-plane airspeed V |sin(incidence)| above
+        :data:`STATIC_AIRSPEED`, shape (N,) of bool: where the in-plane force is fitted and
+        scored (elsewhere model and measurement should both be zero: a tunnel's normal force
+        at axial points is its noise), by the fits, ``validate``, ``fit loads --holdout`` and
+        :func:`propmap.validation.holdout_loads` alike."""
+        return self.airspeed * np.abs(np.sin(self.incidence)) > STATIC_AIRSPEED
+
     def tip_mach(self, propeller, air) -> float:
         """The largest Mach number at a blade tip over the points, |(Omega R + V sin beta,
         V cos beta)| / a: the measure of the solver's TIP_MACH_WARN (core/_inputs.py).

@@ -288,9 +288,13 @@ def _dependence_lines(res: FitResult) -> list[str]:
                 .get(res.extra.get("kind"), "") if several else "")
         said = (f"the jackknife below measures the spread between {jk['by']}s" if jk else
                 f"the uncertainty is likely larger{hint}")
+        # (n counts residuals in a load fit, each point's thrust and torque, and samples of 3 force errors in a flight
+        # fit: "samples" said both until 2026-12-01, a fit-statistics audit)
+        unit = {"flight": "samples (3 force errors each)", "level_flight": "conditions"}.get(res.extra.get("kind"),
+                                                                                           "residuals")
         lines.append(f"std err and interval assume independent residuals; consecutive residuals within each "
                      f"{'log' if flight else 'run'} correlate at {auto['lag1']:.2f} (lag 1: the information "
-                     f"of about {auto['n_effective']:.0f} independent samples of {auto['n']}): {said}")
+                     f"of about {auto['n_effective']:.0f} independent {unit} of {auto['n']}): {said}")
     if jk:
         g = len(jk["groups"])
         ratios = [v for v in jk["ratio"].values() if v is not None]
