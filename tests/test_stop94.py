@@ -95,7 +95,7 @@ def test_the_empirical_descent_curve_is_continuous_where_it_meets_hover():
 @pytest.mark.parametrize("spec", ["generic", f"calibrated:{PROP}"])
 def test_a_descent_of_a_nanometre_per_second_has_the_descent_slope(spec):
     """dT/dV and dQ/dV at 1e-9 m/s of axial descent were Glauert's (the climb's slope mirrored:
-    dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s, dQ/dV of the other sign; an API audit,
+    dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s with the generic set, dQ/dV of the other sign; an API audit,
     2026-12-01), unflagged; now the empirical curve's at every descent rate."""
     r = pm.rotor_loads(pm.load_propeller(PROP), pm.resolve_params(spec), 800.0, [0.0, 1e-12, 1e-9, 1e-7, 1e-6], np.pi,
                        derivatives=True)
@@ -232,7 +232,6 @@ def test_the_tip_mach_warnings_are_a_category_of_their_own():
 
 @pytest.mark.parametrize("kw, match", [
     ({"samples": "x"}, "samples must be a FlightSamples"), ({"vehicle": "quadrotor"}, "vehicle must be a"),
-    ({"base": "generic"}, r"base must be AirfoilParams or CamberedParams \(a set's name"),
     ({"body": (0.01, 0.01, 0.0)}, "body must be a propmap.BodyDrag"),
     ({"options": None}, "options must be a propmap.identify.FitOptions")])
 def test_fit_flight_names_an_argument_of_the_wrong_type(kw, match):
@@ -277,7 +276,7 @@ def test_where_the_rotation_rate_came_from_is_data_not_a_note(tmp_path):
 
 def test_a_vehicle_map_refuses_a_rotor_map_of_another_blade_or_set():
     """VehicleMap checked a rotor's map by its diameter and blade count only: an apce_8x4 rotor took
-    an apce_8x6 map (17% more hover thrust) and a rotor with its own set the map's (4% of the
+    an apce_8x6 map (21% more hover thrust) and a rotor with its own set the map's (4% of the
     thrust at hover), without a word (a vehicle-model audit, helper); the C header refused both.
     Now refused against the model the map records; the rotor's own set in a map of its own is
     taken, and agrees with the vehicle model."""
@@ -452,10 +451,10 @@ def test_held_out_in_plane_force_is_scored_where_the_fit_scores_it(tmp_path, cap
     noise = np.array([0, 0, 0, 0, 0.05, -0.05, 0.02, -0.02, 0, 0])
     group = np.array(["s", "s", "a", "a", "h", "h", "h", "h", "a", "a"], dtype=object)
     data = LoadData(om, V, b, {"thrust": r.thrust, "drag": r.drag + noise, "torque": r.torque}, group)
-    assert list(data.inplane) == [False, False, True, True, False, False, True, True, True, True]
     e = holdout_loads(data, prop, p, [group != "h"], names=("cd_min",))
     T0 = float(r.thrust[:2].mean())
     assert e["rms_drag"] == pytest.approx(0.02 / T0, rel=1e-5)
+    assert list(data.inplane) == [False, False, True, True, False, False, True, True, True, True]
     rows = "".join(f"{g},{o * 30 / math.pi:.6f},{v},{math.degrees(i):.6f},{t:.8g},{d:.8g},{q:.8g}\n"
                    for g, o, v, i, t, d, q in zip(group, om, V, b, r.thrust, r.drag + noise, r.torque))
     (tmp_path / "d.csv").write_text("group,rpm,airspeed,incidence_deg,thrust,drag,torque\n" + rows)
@@ -479,3 +478,37 @@ def test_the_jackknifes_interval_is_cut_at_the_bounds(tmp_path, capsys):
     assert jk["ci95"]["cl_alpha"][1] == 9.0 and jk["ci95_cut_at_bound"]["cl_alpha"] == [False, True]
     assert jk["ci95"]["cl_alpha"][0] == pytest.approx(7.329, abs=0.01)  # (regression value, 2026-12-01)
     assert not any(any(v) for k, v in jk["ci95_cut_at_bound"].items() if k != "cl_alpha")
+
+
+def test_a_rotors_sets_airframe_is_not_the_exports_and_trim_vehicle_says_other_air_once(tmp_path, capsys):
+    """The rotors' one set as export-sim's default gave the export that set's [body] table, which
+    trim-vehicle and wrench never take (a rotor's set is no airframe): the hover pinned 3.5% above
+    trim-vehicle's (a review); with --params the rotors' air is not said; trim_vehicle said the
+    rotors' other air twice."""
+    import json
+    import warnings
+
+    from cli_helpers import run
+    from propmap.core.body import BodyDrag
+    from propmap.io.params_file import BodyTable, write_params
+
+    path = _rotor_sets_vehicle(tmp_path)
+    write_params(tmp_path / "thin.toml", pm.default_params(PROP).replace(air=pm.Air(rho=1.0)),
+                 body=BodyTable(BodyDrag((0.02, 0.02, 0.03), 1.0), None, None))
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0", "--json")
+    assert code == 0, err
+    hover = json.loads(out)["trims"][0]["rotor_rpm"][0]
+    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", path, "--json",
+                         "--out", tmp_path / "q.py")
+    assert code == 0, err
+    assert json.loads(out)["envelope"]["hover_rpm"] == pytest.approx(hover, rel=1e-6)
+    ns: dict = {}
+    exec((tmp_path / "q.py").read_text(), ns)
+    assert ns["quad_params"]["c_Dz"] == 0.0
+    code, _, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", path, "--params",
+                       f"calibrated:{PROP}", "--out", tmp_path / "c.py")
+    assert code == 0 and "other air" not in err, err
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        pm.trim_vehicle(pm.read_vehicle(path), pm.default_params(PROP), 0.0)
+    assert sum("other air" in str(w.message) for w in said) == 1

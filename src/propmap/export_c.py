@@ -330,9 +330,7 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
         name=path.stem, propeller=_comment(a.get("propeller", "")), version=_comment(a.get("propmap_version", "")),
         source=_comment(a.get("propmap_source_sha256", "") or "not recorded"), model=_comment(a.get("model", "")),
         uncertainty=unc,
-        params_label=_comment((a.get("params_label", "") or a.get("section_model", "")) + (
-            f"; air rho {a['rho_kg_m3']:.6g} kg/m^3, mu {a.get('mu_Pa_s', float('nan')):.4g} Pa s, speed of sound "
-            f"{a.get('speed_of_sound_m_s', float('nan')):.4g} m/s" if "rho_kg_m3" in a else "")),
+        params_label=_comment((a.get("params_label", "") or a.get("section_model", "")) + _air_words(a)),
         citation=_comment(a.get("citation", "") or "-"), n0=n0, n1=n1, n2=n2, rpm0=rm.omega[0] / RPM,
         rpm1=rm.omega[-1] / RPM, v0=rm.airspeed[0], v1=rm.airspeed[-1], b0=np.degrees(rm.incidence[0]),
         b1=np.degrees(rm.incidence[-1]), ctype=dtype, eT=_pct(a.get(check + "thrust_max")),
@@ -366,6 +364,17 @@ def _template(rm, prefix: str) -> str:
             .replace("{body}", CUBIC_BODY if cubic else LINEAR_BODY)
             .replace("{weights_fn}", (slopes.replace("{", "{{").replace("}", "}}") + CUBIC_WEIGHTS)
                      if cubic else ""))
+
+
+def _air_words(a: dict) -> str:
+    """The map's air for the header's opening comment (rho, and mu and the speed of sound where
+    recorded): the loads scale with the density (the comment named the set only until
+    2026-12-01, an air-consistency audit)."""
+    if "rho_kg_m3" not in a:
+        return ""
+    return (f"; air rho {float(a['rho_kg_m3']):.6g} kg/m^3"
+            + (f", mu {float(a['mu_Pa_s']):.4g} Pa s" if "mu_Pa_s" in a else "")
+            + (f", speed of sound {float(a['speed_of_sound_m_s']):.4g} m/s" if "speed_of_sound_m_s" in a else ""))
 
 
 def _caveats(attrs: dict, side_loads: bool) -> str:

@@ -81,7 +81,8 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")
 @click.option("--params", "params_spec", default=None,
-              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the vehicle file's own params.")
+              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the vehicle file's own params, "
+                                 "else its rotors' one set where every rotor names the same.")
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
@@ -101,6 +102,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     check_outputs([("--out", out), ("--out (report)", report_path(out))],
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
+    given_spec = params_spec  # (--params as given: its [body] table, else the vehicle file's own set's)
     if vehicle is not None and params_spec is None:  # (the vehicle file's own set, where PROP is its rotors')
         from ._vehicle import _own_spec_for
 
@@ -118,11 +120,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                          "the hover rpm, which --hover-rpm gives; only rotorpy's export writes the vehicle itself): "
                          "give one of them")
     if vehicle is not None:
-        veh, hover_rpm, hover_from, airframe = _export_vehicle(vehicle, params_spec, propeller, params, label, air,
+        veh, hover_rpm, hover_from, airframe = _export_vehicle(vehicle, given_spec, propeller, params, label, air,
                                                                target, hover_rpm)
-        from ._vehicle import _warn_rotor_air
+        if given_spec is None and hover_from != "--hover-rpm":  # (the rotors' own sets pin the hover)
+            from ._vehicle import _warn_rotor_air
 
-        _warn_rotor_air(veh, air, air_choice)
+            _warn_rotor_air(veh, air, air_choice)
         if target == "rotorpy" and veh.body_drag is not None and veh.body_drag.wash_factor > 0:
             _warn_wash_drag(veh, params, hover_rpm, air)
         if target == "rotorpy" and veh.rotor_interference > 0:  # (said by VehicleMap and the C header, not here
@@ -201,10 +204,13 @@ def _echo_export(res, target: str, what: str, cited: str | None, report: Path | 
 
 def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, target: str, hover_rpm):
     """export-sim's --vehicle: (the vehicle, its hover rpm, where that came from, the airframe's
-    label). Its hover pins the export's hover rpm unless --hover-rpm gives it; refused where its
-    rotors carry another propeller or their own parameter sets without --hover-rpm (their hover is
-    not PROP's with PARAMS), where rotorpy cannot write it, or where it hovers beyond tip Mach
-    TIP_MACH_WARN; warned of where --hover-rpm stands in for such a hover."""
+    label); ``params_spec`` --params as given (None: the vehicle file's own set gives the
+    airframe's ``[body]`` table, not a rotor's set, as trim-vehicle and wrench take it). Its
+    hover pins the export's hover rpm unless --hover-rpm gives it; refused where its rotors
+    carry another propeller or their own parameter sets (other than PARAMS) without
+    --hover-rpm (their hover is not PROP's with PARAMS), where rotorpy cannot write it, or
+    where it hovers beyond tip Mach TIP_MACH_WARN; warned of where --hover-rpm stands in for
+    such a hover."""
     import warnings
     from dataclasses import replace
 
@@ -214,9 +220,9 @@ def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, ta
     from ._vehicle import _default_spec, _fitted_vehicle
 
     hover_from, airframe = "--hover-rpm", ""
-    # a flight fit's [body] table: its airframe drag (c_D); the vehicle's own set was resolved by the caller. Without
-    # --params and with another PROP than the rotors', the vehicle's own set's [body] all the same: the airframe is the
-    # vehicle's, whatever propeller is exported (its drag was written 0: an air-consistency audit, 2026-12-01)
+    # a flight fit's [body] table: its airframe drag (c_D), from --params, else from the vehicle file's own set (its
+    # top-level params), whatever propeller is exported: the airframe is the vehicle's (with another PROP its drag
+    # was written 0: an air-consistency audit, 2026-12-01), not a rotor's set's (a review)
     body_spec = params_spec if params_spec is not None else _default_spec(vehicle, None)
     veh, fitted = _fitted_vehicle(vehicle, body_spec, own=False)
     if fitted:

@@ -80,7 +80,7 @@ EMPIRICAL_C4 = -0.655
 #: v / (-V_c) above which the curve is taken at its first order in k = -V_c / v_h (k < 1e-8): v_h^2 / v =
 #: v / f(k)^2 = v - 2 EMPIRICAL_C1 d + O(d^2 / v), d = -V_c, exact to round-off there; it was Glauert's |V_c + v|
 #: until 2026-12-01, whose slope in V_c (1, not 2 EMPIRICAL_C1) gave the derivatives of a descent of 1e-9 m/s the
-#: climb's slope mirrored (dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s: an API audit)
+#: climb's slope mirrored (apce_8x6, generic set: dT/dV 0.0402 against 0.0062 at rest and at 1e-6 m/s: an API audit)
 EMPIRICAL_HOVER_RATIO = 1e8
 #: Newton steps of the curve's inversion (converged to round-off from k = min(d/v, 2) in tests)
 EMPIRICAL_NEWTON = 8

@@ -276,7 +276,8 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
 
 
 def _check_flight_args(samples, vehicle, base, body, options) -> None:
-    """TypeErrors naming an argument of the wrong type (fit_loads' and fit_level_flight's checks:
+    """TypeErrors naming ``samples``, ``vehicle``, ``body`` or ``options`` of the wrong type (as
+    fit_loads and fit_level_flight check theirs:
     ``samples="x"`` met "'str' object has no attribute 'n'", ``options=None`` "'NoneType' object
     has no attribute 'lift_model'": a structural review, 2026-12-01)."""
     from ..vehicle.layout import check_vehicle
@@ -284,10 +285,7 @@ def _check_flight_args(samples, vehicle, base, body, options) -> None:
     if not isinstance(samples, FlightSamples):
         raise TypeError(f"samples must be a FlightSamples (propmap.identify.flight_samples), got "
                         f"{type(samples).__name__}")
-    check_vehicle(vehicle)
-    if base is not None and not isinstance(base, SectionParams):
-        hint = " (a set's name: resolve it with propmap.resolve_params)" if isinstance(base, str) else ""
-        raise TypeError(f"base must be AirfoilParams or CamberedParams{hint}, got {type(base).__name__}")
+    check_vehicle(vehicle)  # (``base`` and ``air``: model_air's checks)
     if body is not None and not isinstance(body, BodyDrag):
         raise TypeError(f"body must be a propmap.BodyDrag, got {type(body).__name__}")
     if not isinstance(options, FitOptions):

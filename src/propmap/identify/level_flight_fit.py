@@ -65,7 +65,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     ``vertical`` (shape (N,), the rotors' and the airframe's) [N] and ``beta`` (shape
     (N, n_rotors)) [rad]; with
     ``derivatives`` (section parameters' names) also ``vertical_jacobian``, shape (N, len(names)):
-    d vertical / d p by the implicit function theorem (rotor_wrench's derivatives).
+    d vertical / d p by the implicit function theorem (vehicle_wrench's derivatives).
 
     Raises
     ------

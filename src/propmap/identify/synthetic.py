@@ -46,7 +46,9 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
     LevelFlightData
         ``airspeed`` [m/s] and ``pitch`` [rad] as given, ``roll`` and ``rates`` zero, and
         ``omega`` [rad/s], shape (N, n_rotors): at each condition every rotor at the one
-        speed whose net vertical force (eq 16) equals the vehicle's weight [N].
+        speed whose net vertical force (eq 16, the vehicle model's:
+        :func:`~propmap.identify.level_flight_fit.level_flight_forces`, with the vehicle's
+        rotor interference, airframe drag and rotors' own sets) equals the vehicle's weight [N].
 
     Raises
     ------

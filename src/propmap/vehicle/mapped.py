@@ -41,7 +41,7 @@ def _check_rotor_map(i: int, m, rotor) -> None:
     """Refuse rotor ``i``'s map ``m`` where it was built for another blade geometry or, for a rotor
     with its own set, another set than the rotor's (the models the map records: the C header's
     checks, export_c; until 2026-12-01 only the diameter and blade count were checked, and an
-    apce_8x4 rotor took an apce_8x6 map, 17% more hover thrust, a rotor's own set the map's,
+    apce_8x4 rotor took an apce_8x6 map, 21% more hover thrust, a rotor's own set the map's,
     4% of the thrust: a vehicle-model audit); a map without that record by its size."""
     from ..io.mapcheck import map_model
 
@@ -71,10 +71,11 @@ def _warn_map_air(maps, vehicle: Vehicle) -> None:
     1.225 and 1.0 made a yaw moment of -0.018 N m in hover, an air-consistency audit; each map is
     evaluated in its own air, as vehicle_wrench solves every rotor in one)."""
     rho = [float(m.attrs.get("rho_kg_m3", np.nan)) for m in maps]
-    if len({r for r in rho if np.isfinite(r)}) > 1:
-        warnings.warn(f"maps: built in different air (rho {', '.join(f'{r:.4g}' for r in dict.fromkeys(rho))} "
-                      "kg/m^3): each rotor is evaluated in its map's, the airframe's drag in the first map's",
-                      UserWarning, stacklevel=3)
+    known = list(dict.fromkeys(r for r in rho if np.isfinite(r)))
+    if len(known) > 1:
+        warnings.warn(f"maps: built in different air (rho {', '.join(f'{r:.4g}' for r in known)} kg/m^3): each rotor "
+                      "is evaluated in its map's, the airframe's drag in the first map's (or rho=)", UserWarning,
+                      stacklevel=3)
     other = [(k + 1, r.params.air.rho, rho[k]) for k, r in enumerate(vehicle.rotors)
              if r.params is not None and np.isfinite(rho[k]) and not np.isclose(r.params.air.rho, rho[k], rtol=1e-9)]
     if other:

@@ -38,7 +38,7 @@ from ..core.flapping import flapping_warning_held
 from ..core.solver import (DEFAULT_DISCRETIZATION, OMEGA_MAX, OMEGA_MIN, TIP_MACH_WARN, Discretization,
                            model_air, supersonic_tips_allowed)
 from .layout import Vehicle, body_to_world, check_vehicle
-from .model import VehicleWrench, hover_omega, vehicle_wrench
+from .model import VehicleWrench, _warn_rotor_air, hover_omega, vehicle_wrench
 
 __all__ = ["VehicleTrim", "trim_vehicle"]
 
@@ -149,6 +149,9 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     Vc = checked("climb_rate", climb_rate, -V if V else 0.0, V, unit="m/s (|climb_rate| <= airspeed)")
     Vh = math.sqrt(max(V * V - Vc * Vc, 0.0))
     n = len(vehicle.rotors)
+    if air is None:  # (resolved once: hover_omega and vehicle_wrench each said the rotors' other air, twice)
+        air = model_air(params, None)
+        _warn_rotor_air(vehicle, air)
     om_h = hover_omega(vehicle, params, air=air, discretization=discretization)
     weight = vehicle.weight
     arm = max(float(np.linalg.norm(r.position - vehicle.centre_of_mass)) for r in vehicle.rotors) or 1.0
@@ -192,7 +195,7 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     omega = x[2:] * om_h
     power = float(sum(float(ld.power[0]) for ld in w.loads))
     tip = max(om * rot.propeller.radius + V for om, rot in zip(omega, vehicle.rotors))  # (the advancing tip's)
-    mach = tip / model_air(params, air).speed_of_sound
+    mach = tip / air.speed_of_sound
     ring = [k + 1 for k, ld in enumerate(w.loads) if bool(np.asarray(ld.vortex_ring).reshape(-1)[0])]
     if ring:
         warnings.warn(f"rotor(s) {', '.join(map(str, ring))} trim in the vortex-ring state (climb_rate {Vc:g} m/s): "
