@@ -234,7 +234,6 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     from ..identify.level_flight import level_flight_warnings
     from ..identify.level_flight_fit import hover_vertical_force
     from ..plots import plot_level_flight_fit
-
     from ._vehicle import _one_set, _vehicle
 
     check_outputs(_out_files(out), [data, vehicle, base_spec])
