@@ -337,6 +337,21 @@ def _rotor_sets_vehicle(tmp_path, rotors=(1, 2, 3, 4), rho=1.0):
     return tmp_path / "q.toml"
 
 
+def _trim_and_export(capsys, vehicle, out):
+    """(trim-vehicle's hover rpm of ``vehicle``, export-sim's rotorpy report of it written to ``out``)."""
+    import json
+
+    from cli_helpers import run
+
+    code, text, err = run(capsys, "trim-vehicle", "--vehicle", vehicle, "--airspeed", "0", "--json")
+    assert code == 0, err
+    hover = json.loads(text)["trims"][0]["rotor_rpm"][0]
+    code, text, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", vehicle, "--json",
+                          "--out", out)
+    assert code == 0, err
+    return hover, json.loads(text)
+
+
 def test_rotor_sets_in_other_air_are_said_by_the_api_and_the_commands(tmp_path, capsys):
     """A vehicle whose rotors' own sets carry other air (rho 1.0, fitted there) than the one they are
     solved in: hover_omega and trim-vehicle took 1.225 without a word (two such rotors made 25%
@@ -358,18 +373,7 @@ def test_export_sim_takes_the_rotors_one_set_as_trim_vehicle_does(tmp_path, caps
     """Every rotor on one set of its own (fitted at rho 1.0): export-sim --vehicle took PROP's default
     set at 1.225 and pinned the hover 9.9% below trim-vehicle's; it takes the rotors' set now, and
     its file names the air."""
-    import json
-
-    from cli_helpers import run
-
-    path = _rotor_sets_vehicle(tmp_path)
-    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0", "--json")
-    assert code == 0, err
-    hover = json.loads(out)["trims"][0]["rotor_rpm"][0]
-    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", path, "--json",
-                         "--out", tmp_path / "q.py")
-    assert code == 0, err
-    report = json.loads(out)
+    hover, report = _trim_and_export(capsys, _rotor_sets_vehicle(tmp_path), tmp_path / "q.py")
     assert report["envelope"]["hover_rpm"] == pytest.approx(hover, rel=1e-6) and report["rho"] == 1.0
     assert "in air of rho 1 kg/m^3" in (tmp_path / "q.py").read_text()
 
@@ -485,7 +489,6 @@ def test_a_rotors_sets_airframe_is_not_the_exports_and_trim_vehicle_says_other_a
     trim-vehicle and wrench never take (a rotor's set is no airframe): the hover pinned 3.5% above
     trim-vehicle's (a review); with --params the rotors' air is not said; trim_vehicle said the
     rotors' other air twice."""
-    import json
     import warnings
 
     from cli_helpers import run
@@ -495,13 +498,8 @@ def test_a_rotors_sets_airframe_is_not_the_exports_and_trim_vehicle_says_other_a
     path = _rotor_sets_vehicle(tmp_path)
     write_params(tmp_path / "thin.toml", pm.default_params(PROP).replace(air=pm.Air(rho=1.0)),
                  body=BodyTable(BodyDrag((0.02, 0.02, 0.03), 1.0), None, None))
-    code, out, err = run(capsys, "trim-vehicle", "--vehicle", path, "--airspeed", "0", "--json")
-    assert code == 0, err
-    hover = json.loads(out)["trims"][0]["rotor_rpm"][0]
-    code, out, err = run(capsys, "export-sim", "apce_8x6", "--target", "rotorpy", "--vehicle", path, "--json",
-                         "--out", tmp_path / "q.py")
-    assert code == 0, err
-    assert json.loads(out)["envelope"]["hover_rpm"] == pytest.approx(hover, rel=1e-6)
+    hover, report = _trim_and_export(capsys, path, tmp_path / "q.py")
+    assert report["envelope"]["hover_rpm"] == pytest.approx(hover, rel=1e-6)
     ns: dict = {}
     exec((tmp_path / "q.py").read_text(), ns)
     assert ns["quad_params"]["c_Dz"] == 0.0
