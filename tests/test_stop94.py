@@ -128,8 +128,8 @@ def test_the_level_flight_forces_are_the_vehicle_models():
     interference: with rotor_interference = 1 the example quadrotor's vertical force at 10 m/s,
     -10 deg was 14.135 N against the vehicle model's 14.064 N, and a rotor's own set (half the
     lift slope) was ignored (14.135 against 13.453 N), without a word (a structural review,
-    helper); the airframe's drag ([body]) was left out too, its downwash at wash_factor 1 12-16%
-    of the weight (a vehicle-model audit, helper). Now it is the vehicle model's."""
+    helper); the airframe's drag ([body]) was left out too, its downwash at wash_factor 1 13-19%
+    of the weight at 0-10 m/s (a vehicle-model audit, helper). Now it is the vehicle model's."""
     from dataclasses import replace
 
     from propmap.identify import LevelFlightData, level_flight_forces

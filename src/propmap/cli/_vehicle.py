@@ -144,14 +144,14 @@ def _warn_rotor_air(veh, air, air_choice) -> None:
     the one every rotor is solved in (the command's; dropped without a word until 2026-12-01: a
     vehicle's two rotors on a set at rho 1.0 made 25% more thrust than in their own air, an
     air-consistency audit), as vehicle_wrench warns in the API."""
-    if air_choice.options_given():
-        return
-    other = sorted({r.params.air.rho for r in veh.rotors if r.params is not None and r.params.air != air})
+    from ..vehicle.model import rotors_in_other_air
+
+    other = [] if air_choice.options_given() else rotors_in_other_air(veh, air)
     if other:
-        rotors = [str(k + 1) for k, r in enumerate(veh.rotors) if r.params is not None and r.params.air != air]
-        warn(f"--vehicle: rotor(s) {', '.join(rotors)} carry parameter sets in other air (rho "
-             f"{', '.join(f'{r:.4g}' for r in other)} kg/m^3): every rotor is solved in one air, rho {air.rho:.4g} "
-             "kg/m^3; give --rho (or --altitude-m, --temperature-c with --pressure-pa) to choose it")
+        warn(f"--vehicle: rotor(s) {', '.join(str(k) for k, _ in other)} carry parameter sets in other air (rho "
+             f"{', '.join(f'{r:.4g}' for r in sorted({rho for _, rho in other}))} kg/m^3): every rotor is solved in "
+             f"one air, rho {air.rho:.4g} kg/m^3; give --rho (or --altitude-m, --temperature-c with --pressure-pa) "
+             "to choose it")
 
 
 def _one_set(veh, why: str):

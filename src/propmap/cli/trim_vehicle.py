@@ -46,7 +46,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
 
     Roll is right side down positive, pitch nose up positive; the rotors in the file's order.
     """
-    from ..core.solver import SolverError, model_air
+    from ..core.solver import SolverError
     from ..vehicle import trim_vehicle
     from ._vehicle import _fitted_vehicle, _rotor_coverage, _vehicle_sets
 
@@ -56,7 +56,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
         raise InputError(f"--climb-rate must be a speed within [{-slow if slow else 0.0:g}, {slow:g}] m/s (at most "
                          f"the slowest --airspeed), got {climb_rate!r}")
     veh, _ = _fitted_vehicle(vehicle, params_spec)  # (a flight fit's [body] table: its airframe, as wrench takes it)
-    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)
+    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)  # (air: the command's Air)
     rows, trims = [], []
     for V in speeds:
         try:
@@ -65,7 +65,7 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
             raise InputError(f"--airspeed {V:g}: {exc}") from None
         except SolverError as exc:
             raise click.ClickException(str(exc)) from None
-        _refuse_supersonic(veh, t, V, model_air(params, air))
+        _refuse_supersonic(veh, t, V, air)
         trims.append(t)
         rows.append({"airspeed": V, "climb_rate": climb_rate, "roll_deg": math.degrees(t.roll),
                      "pitch_deg": math.degrees(t.pitch), "rotor_rpm": [float(w) / RPM for w in t.rotor_omega],
@@ -73,16 +73,16 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     # the rotors' operating points beyond the data behind their sets, and a fast tip (the CLI keeps the API's
     # tip-Mach warning to itself: _coverage.coverage_messages says it, from Mach 0.7)
     _rotor_coverage(veh, sets, [[t.wrench.loads[i] for t in trims] for i in range(len(veh.rotors))],
-                    model_air(params, air))
+                    air)
     if as_json:
         echo_json({"vehicle": str(vehicle), "params": label, "rotor_params": list(sets), "mass_kg": veh.mass,
-                   "rho_kg_m3": model_air(params, air).rho, "air": air_record(model_air(params, air)), "trims": rows,
+                   "rho_kg_m3": air.rho, "air": air_record(air), "trims": rows,
                    "units": {"airspeed": "m/s", "climb_rate": "m/s", "roll_deg": "deg", "pitch_deg": "deg",
                              "rotor_rpm": "rpm", "power_W": "W"}})
         return
     n = len(veh.rotors)
     click.echo(f"{veh.name or vehicle}: {veh.mass:g} kg, {n} rotors (params {label}); steady flight, climb rate "
-               f"{climb_rate:g} m/s; air: {air_label(model_air(params, air))}")
+               f"{climb_rate:g} m/s; air: {air_label(air)}")
     click.echo(f"{'V [m/s]':>8}{'roll [deg]':>12}{'pitch [deg]':>13}" + "".join(f"{f'rotor {k + 1} [rpm]':>16}"
                                                                             for k in range(n)) + f"{'power [W]':>11}")
     for r in rows:

@@ -43,7 +43,7 @@ def level_flight_forces(params: SectionParams, data: LevelFlightData, vehicle: V
     loads were solved with ``params`` alone, without the interference or the airframe: a
     structural review found a vehicle with ``rotor_interference = 1`` 0.5% off and a rotor's
     own set ignored, a vehicle-model audit a [body] table with ``wash_factor`` 1 whose
-    downwash on the airframe, 12-16% of the weight, the fit and ``simulate_level_flight``
+    downwash on the airframe, 13-19% of the weight at 0-10 m/s, the fit and ``simulate_level_flight``
     left out, without a word.)
 
     Parameters

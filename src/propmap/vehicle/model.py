@@ -339,12 +339,36 @@ def _rotor_wrenches(vehicle: Vehicle, params: SectionParams, V_hub, frame, om, *
     return rotor_force, rotor_moment, loads, batches
 
 
+def rotors_in_other_air(vehicle: Vehicle, air: Air) -> list[tuple[int, float]]:
+    """The rotors whose own parameter set carries another air than the one every rotor is solved
+    in (said by :func:`vehicle_wrench`, :func:`hover_omega`, ``trim_vehicle`` and the vehicle
+    commands).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    air : Air
+        The air every rotor is solved in.
+
+    Returns
+    -------
+    list of (int, float)
+        Per such rotor, its number from 1 and its set's density [kg/m^3], in rotor order.
+
+    Raises
+    ------
+    AttributeError
+        ``vehicle`` without rotors (not a :class:`Vehicle`; the callers check it).
+    """
+    return [(k + 1, r.params.air.rho) for k, r in enumerate(vehicle.rotors)
+            if r.params is not None and getattr(r.params, "air", air) != air]
+
+
 def _warn_rotor_air(vehicle: Vehicle, air: Air) -> None:
     """Warn where a rotor's own parameter set carries another air than the one every rotor is
     solved in, the parameter set's where no air is given (it was dropped silently: a rotor's set
     at rho 1.0 made 25% more thrust than in its own air, a user-level audit)."""
-    other = [(k + 1, r.params.air.rho) for k, r in enumerate(vehicle.rotors)
-             if r.params is not None and getattr(r.params, "air", air) != air]
+    other = rotors_in_other_air(vehicle, air)
     if other:
         import warnings
 
