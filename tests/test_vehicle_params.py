@@ -143,7 +143,8 @@ def test_a_rotors_own_set_is_kept_beside_the_vehicles(tmp_path, capsys):
     d = json.loads(out)
     assert d["rotor_params"][0] == "generic" and all(s.endswith(OWN) for s in d["rotor_params"][1:])
     veh, own = pm.read_vehicle_with_params(path)
-    assert veh.rotors[0].params is not None and all(r.params is None for r in veh.rotors[1:])
+    # (each rotor carries its set, as the command resolves them: resolve_vehicle)
+    assert veh.rotors[0].params == pm.generic_params() and all(r.params == own for r in veh.rotors[1:])
     assert d["rho_kg_m3"] == own.air.rho == 1.204
     for row, speed in zip(d["trims"], (0.0, 8.0)):
         with pytest.warns(UserWarning, match=r"rotor 1 has its own parameter set in other air \(rho 1.225"):

@@ -28,7 +28,7 @@ _EXPORTS = {
     "RotorMap": "maps", "build_map": "maps", "BodyDrag": "core.body", "Vehicle": "vehicle", "Rotor": "vehicle",
     "read_vehicle": "vehicle", "vehicle_wrench": "vehicle", "hover_omega": "vehicle", "VehicleWrench": "vehicle",
     "VehicleMap": "vehicle", "trim_vehicle": "vehicle", "VehicleTrim": "vehicle", "vehicle_params_file": "vehicle",
-    "read_vehicle_with_params": "vehicle",
+    "read_vehicle_with_params": "vehicle", "resolve_vehicle": "vehicle", "ResolvedVehicle": "vehicle",
     "trim_collective": "core.trim", "TrimResult": "core.trim", "TrimError": "core.trim", "trim_omega": "core.trim",
     "OmegaTrimResult": "core.trim",
     "torque_change_at_constant_thrust": "core.trim", "section_preset": "io.param_sets",

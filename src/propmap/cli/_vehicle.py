@@ -72,71 +72,45 @@ def _fitted_vehicle(path: Path, params_spec, own: bool = True):
     writes (the airframe drag, the centre of mass, the rotors' wake interference), the vehicle with
     those in place of the file's, and whether it had one (what `wrench`, `export-sim --vehicle` and
     the C vehicle export all model)."""
-    from ..io.params_file import ParamsFileError, read_body
-    from ..vehicle.own_set import with_body_table
+    from ..io.params_file import ParamsFileError
+    from ..vehicle.own_set import with_set_body
 
     veh = _vehicle(path)
     if own:
         params_spec = _default_spec(path, params_spec)
-    if params_spec is None or not Path(params_spec).is_file():
-        return veh, False
     try:
-        table = read_body(params_spec)
+        veh, body_from = with_set_body(veh, params_spec)
     except ParamsFileError as exc:
         raise InputError(f"--params: {exc}") from None
-    if table is None:
-        return veh, False
-    return with_body_table(veh, table), True
+    return veh, body_from is not None
 
 
-def _vehicle_sets(veh, vehicle, params_spec, air_choice):
-    """(vehicle, params, air, label, sets) of a command given a vehicle file and --params: with
-    --params one set for every rotor (the rotors' own sets dropped, said), else the vehicle's
-    rotor sets (one label for all where they are one, each its own otherwise) and, for a rotor
-    without one, the vehicle file's own set (its top-level ``params``), else its propeller's
-    default as `loads` takes it: a catalogue propeller's calibrated set, else 'generic'
-    (``sets``: each rotor's label); each rotor's propeller and set checked as `loads` checks
-    them."""
-    from dataclasses import replace
+def _vehicle_sets(vehicle, params_spec, air_choice):
+    """(vehicle, params, air, label, sets) of a command given a vehicle file and --params, as
+    :func:`propmap.vehicle.own_set.resolve_vehicle` resolves them (the API's rule): with --params
+    one set for every rotor (the rotors' own sets dropped, said) and its ``[body]`` table, else the
+    rotors' own sets, the vehicle file's own set (its top-level ``params``, with its ``[body]``
+    table), a catalogue propeller's calibrated set, the generic set (``sets``: each rotor's
+    label); each rotor's propeller and set checked as `loads` checks them, the air the command's
+    options give."""
+    from ..vehicle.file import VehicleFileError
+    from ..vehicle.own_set import resolve_vehicle
 
-    from ..io.calibration import default_params
-    from ..io.catalogue import catalogue
-    from ..io.inputs import show_path
-    from ..vehicle.file import rotor_file_specs
-
-    own, mine, mine_loaded = (), None, None
-    if params_spec is None:
-        # (a rotor without a set of its own took the generic set where `loads`, `map` and `export-sim`
-        # take its catalogue propeller's calibrated one: the example quadrotor's apce_8x6 rotors hovered
-        # at 5187 rpm in trim-vehicle and at 5387 rpm in export-sim --vehicle, an audit of stop 90)
-        names = rotor_file_specs(vehicle, "propeller")
-        mine = _default_spec(vehicle, None)  # (the vehicle's own set before a catalogue propeller's)
-        own = tuple(o if o is not None else mine if mine is not None else
-                    default_params(n).label if n in catalogue() else None
-                    for o, n in zip(rotor_file_specs(vehicle), names))
-        own = tuple(None if o == "generic" else o for o in own)
-        mine_loaded = load_params(mine, option="--vehicle (its params)") if mine is not None else None
-    mine_set = mine_loaded[0] if mine_loaded else None
-    spec = params_spec if params_spec is not None else (
-        own[0] if own and own[0] is not None and len(set(own)) == 1 else None)
-    if spec is None and any(own):  # (mixed: each catalogue rotor carries its own calibrated set, or the vehicle's)
-        veh = replace(veh, rotors=[r if r.params is not None or o is None else
-                                   replace(r, params=mine_set if mine_set is not None else default_params(n))
-                                   for r, o, n in zip(veh.rotors, own, names)])
-    # (the vehicle's own set, where it is every rotor's, loaded once)
-    params, air, label = (mine_loaded if mine_loaded and spec == mine else
-                          load_params("generic" if spec is None else spec, option="--params"))
-    if spec is None and mine_set is not None:  # (mixed: the vehicle's own set, fitted at its air, gives the air)
-        air = mine_set.air
-    sets = [o or "generic" for o in own] if spec is None and any(own) else [label] * len(veh.rotors)
-    if len(set(sets)) > 1:
-        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
-    _check_rotor_sets(veh, sets)
-    air = resolve_air(air, air_choice)
-    if params_spec is not None:
-        veh = _one_set(veh, "--params gives every rotor's set")
-    _warn_rotor_air(veh, air, air_choice)
-    return veh, params, air, label, sets
+    try:
+        r = resolve_vehicle(vehicle, params_spec)  # (the vehicle file read first: its errors before --params's)
+    except VehicleFileError as exc:
+        raise InputError(f"--vehicle: {exc}") from None
+    except (KeyError, ValueError, TypeError, OSError) as exc:  # --params's set or its [body] table
+        if params_spec is not None:
+            load_params(params_spec)  # (its message, as every command's)
+        raise InputError(f"--params: {exc}") from None
+    _check_rotor_sets(r.vehicle, r.sets)
+    air = resolve_air(r.air, air_choice)
+    if r.dropped:
+        click.echo(f"propmap: warning: the vehicle file's parameter sets of rotor(s) "
+                   f"{', '.join(map(str, r.dropped))} are not used: --params gives every rotor's set", err=True)
+    _warn_rotor_air(r.vehicle, air, air_choice)
+    return r.vehicle, r.params, air, r.label, list(r.sets)
 
 
 def _warn_rotor_air(veh, air, air_choice) -> None:

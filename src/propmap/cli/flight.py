@@ -14,7 +14,7 @@ from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
                              band_line)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
-from ._vehicle import _check_rotor_sets, _fitted_vehicle, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
+from ._vehicle import _check_rotor_sets, _one_set, _rotor_coverage, _vehicle, _vehicle_sets
 from .fit import _options, _out_files, _run_fit, _vehicle_propeller, _write_outputs, with_fit_options
 
 
@@ -454,9 +454,9 @@ def wrench_command(log_path, vehicle, params_spec, out, as_json, motor_map, air_
     if Path(out).suffix.lower() != ".csv":  # (as map, export-sim and fit hold their outputs to their format)
         raise InputError(f"--out: {out}: wrench writes a CSV, named *.csv")
     check_outputs([("--out", out)], [log_path, vehicle, params_spec])
-    veh, _ = _fitted_vehicle(vehicle, params_spec)  # with a fit's [body] table: its airframe drag, centre of mass
     check_outputs([("--out", out)], vehicle_inputs(vehicle))
-    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)
+    # (with a fit's [body] table: its airframe drag, centre of mass)
+    veh, params, air, label, sets = _vehicle_sets(vehicle, params_spec, air_choice)
     body = veh.body_drag
     (log,) = _logs([log_path], _motor_map(motor_map), len(veh.rotors))
     samples = _samples([log], veh, 1e4)  # every sample

@@ -48,15 +48,15 @@ def trim_vehicle_command(vehicle, airspeed, climb_rate, params_spec, as_json, ai
     """
     from ..core.solver import SolverError
     from ..vehicle import trim_vehicle
-    from ._vehicle import _fitted_vehicle, _rotor_coverage, _vehicle_sets
+    from ._vehicle import _rotor_coverage, _vehicle_sets
 
     speeds = _speeds(airspeed)
     if not math.isfinite(climb_rate) or abs(climb_rate) > min(speeds):
         slow = min(speeds)
         raise InputError(f"--climb-rate must be a speed within [{-slow if slow else 0.0:g}, {slow:g}] m/s (at most "
                          f"the slowest --airspeed), got {climb_rate!r}")
-    veh, _ = _fitted_vehicle(vehicle, params_spec)  # (a flight fit's [body] table: its airframe, as wrench takes it)
-    veh, params, air, label, sets = _vehicle_sets(veh, vehicle, params_spec, air_choice)  # (air: the command's Air)
+    # (a flight fit's [body] table: its airframe, as wrench takes it; air: the command's Air)
+    veh, params, air, label, sets = _vehicle_sets(vehicle, params_spec, air_choice)
     rows, trims = [], []
     for V in speeds:
         try:

@@ -54,8 +54,8 @@ where it is a flight fit's file, its ``[body]`` table (airframe drag, centre of 
 interference) in place of the vehicle file's, as they take a ``--params`` file (a vehicle file
 that gives what that table gives too is refused). The fits (``fit flight``, ``fit level-flight``) fit their own set from
 ``--base`` and do not use it. :func:`read_vehicle` checks it (a readable parameter file or a named
-set) but does not apply it; :func:`propmap.vehicle.own_set.read_vehicle_with_params` applies it as
-the commands do.
+set) but does not apply it; :func:`propmap.vehicle.own_set.resolve_vehicle` applies it as the
+commands do (they call it).
 """
 
 from __future__ import annotations
@@ -357,6 +357,12 @@ def read_vehicle(path) -> Vehicle:
         INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?), four or more rotors of
         parallel axes (within 10 deg) all spinning one way.
     """
+    return _read_vehicle(path)[0]
+
+
+def _read_vehicle(path) -> tuple[Vehicle, dict, Path]:
+    """(vehicle, the file's TOML table, the file): :func:`read_vehicle` with what it read, so that
+    :func:`propmap.vehicle.own_set.resolve_vehicle` takes the entries from the same reading."""
     given, path = path, vehicle_path(path)
     name = show_path(path)
     data = _vehicle_table(given, path)
@@ -391,7 +397,7 @@ def read_vehicle(path) -> Vehicle:
                                "z-down frame's (FRD, PX4's) axis [0, 0, -1] is [0, 0, 1] here")
     _warn_implausible(name, rotors, mass, inertia, cg, kappa)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
-                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text)
+                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text), data, path
 
 
 def _vehicle_table(given, path: Path) -> dict:
@@ -472,14 +478,14 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
             far = True
             warnings.warn(f"{name}: rotor {k}'s hub lies {arm:.4g} m from the centre of mass, "
                           f"{arm / r.propeller.radius:.3g} of its radii: are the positions in metres?", UserWarning,
-                          stacklevel=3)
+                          stacklevel=4)
             break
     for k in range(len(rotors)):
         for j in range(k + 1, len(rotors)):
             if np.array_equal(rotors[k].position, rotors[j].position):
                 warnings.warn(f"{name}: rotors {k + 1} and {j + 1} have the same position "
                               f"{rotors[k].position.tolist()} m (a coaxial pair lies apart along its axis)",
-                              UserWarning, stacklevel=3)
+                              UserWarning, stacklevel=4)
     _warn_overlap(name, rotors, interference)
     axes = np.array([r.axis for r in rotors])
     parallel = bool(np.all(axes @ axes[0] > math.cos(math.radians(10.0))))
@@ -487,7 +493,7 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
         # not a helicopter's tail rotor or a tricopter's tilting one, which balance yaw by thrust)
         warnings.warn(f"{name}: every rotor spins {'ccw' if rotors[0].spin > 0 else 'cw'}: their torques cannot "
                       "balance in yaw (a multirotor's alternate, cw and ccw); is a spin mistyped?", UserWarning,
-                      stacklevel=3)
+                      stacklevel=4)
     reach = max(arms)
     if inertia is not None and reach > 0 and not far:  # (beside arms in other units, the inertia's ratio says nothing)
         ratio = float(np.max(np.linalg.eigvalsh(inertia))) / (mass * reach**2)
@@ -495,7 +501,7 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
         if not lo <= ratio <= hi:
             warnings.warn(f"{name}: the inertia's largest principal moment is {ratio:.3g} times the mass times the "
                           f"largest arm squared ({mass:g} kg x ({reach:.4g} m)^2), where a multirotor's is "
-                          "0.2-0.6: is the mass in kg and the inertia in kg m^2?", UserWarning, stacklevel=3)
+                          "0.2-0.6: is the mass in kg and the inertia in kg m^2?", UserWarning, stacklevel=4)
 
 
 #: rotors whose axes lie within this angle of parallel (or antiparallel) are checked for overlapping disks (the
@@ -531,7 +537,7 @@ def _warn_overlap(name: str, rotors, interference: float) -> None:
     if strike:
         warnings.warn(f"{name}: the disks of rotors {'; '.join(strike)} overlap in one plane, closer than the sum of "
                       "their radii, so their blades would strike: is a diameter or a position in another unit?",
-                      UserWarning, stacklevel=4)
+                      UserWarning, stacklevel=5)
     if stacked:
         how = ("rotor_interference models such pairs outside its accuracy (their disks cut each other's wake wall: "
                "docs/models.md)" if interference else
@@ -540,7 +546,7 @@ def _warn_overlap(name: str, rotors, interference: float) -> None:
                       f"pair): {how}, so the downstream rotor's loss in the other's wake is missing or rough, and "
                       "the hover power comes out low (momentum theory puts a coaxial pair's induced power 26-41% "
                       "above that of two isolated rotors: J. G. Leishman, Principles of Helicopter Aerodynamics, "
-                      "2nd ed., 2006, Ch. 2)", UserWarning, stacklevel=4)
+                      "2nd ed., 2006, Ch. 2)", UserWarning, stacklevel=5)
 
 
 def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
@@ -566,8 +572,13 @@ def rotor_file_specs(path, key: str = "params") -> tuple[str | None, ...]:
         The file cannot be read as TOML.
     """
     path = vehicle_path(path)
-    rotors = load_toml(path, VehicleFileError).get("rotors")
-    return tuple(_resolved_spec(r.get(key) if isinstance(r, dict) else None, path.parent)
+    return _entry_specs(load_toml(path, VehicleFileError), path.parent, key)
+
+
+def _entry_specs(data: dict, folder: Path, key: str) -> tuple[str | None, ...]:
+    """:func:`rotor_file_specs` of a vehicle file's table ``data`` (its folder ``folder``)."""
+    rotors = data.get("rotors")
+    return tuple(_resolved_spec(r.get(key) if isinstance(r, dict) else None, folder)
                  for r in (rotors if isinstance(rotors, list) else ()))
 
 

@@ -1,18 +1,24 @@
-"""A vehicle file's own parameter set (its top-level ``params``, vehicle/file.py): where it is, and
-the vehicle with it applied as the vehicle commands apply it (``wrench``, ``trim-vehicle``,
-``export-sim --vehicle``, ``map --format c --vehicle``): its section set for the rotors and, where
-it is a flight fit's file, its ``[body]`` table (airframe drag, centre of mass, rotor
-interference) in place of the vehicle file's."""
+"""A vehicle file with its parameter sets, resolved as the vehicle commands resolve them
+(``wrench``, ``trim-vehicle``, ``export-sim --vehicle``, ``map --format c --vehicle``) and the API
+(:func:`resolve_vehicle`, :func:`read_vehicle_with_params`): the vehicle's own set (its top-level
+``params``), where it is a flight fit's file its ``[body]`` table (airframe drag, centre of mass,
+rotor interference) in place of the vehicle file's, and each rotor's set (its own, else the
+vehicle's, else its catalogue propeller's calibrated set, else the generic set). One rule for the
+commands and the library: until 2026-12-01 it lived in the command line alone, and
+``read_vehicle_with_params("quadrotor")`` gave no set where the commands took apce_8x6's
+calibrated one (a review of stop 94)."""
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from pathlib import Path
 
 from ..io.toml_file import load_toml
-from .file import VehicleFileError, _local_file, _resolved_spec, _rotor_params, read_vehicle, vehicle_path
+from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, _rotor_params, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
 
-__all__ = ["read_vehicle_with_params", "vehicle_params_file", "with_body_table"]
+__all__ = ["ResolvedVehicle", "read_vehicle_with_params", "resolve_vehicle", "vehicle_params_file",
+           "with_body_table", "with_set_body"]
 
 
 def vehicle_params_file(path) -> str | None:
@@ -67,8 +73,153 @@ def with_body_table(vehicle: Vehicle, table) -> Vehicle:
     return vehicle
 
 
+@dataclass(frozen=True)
+class ResolvedVehicle:
+    """A vehicle with its parameter sets, as :func:`resolve_vehicle` resolves them.
+
+    Attributes
+    ----------
+    vehicle : Vehicle
+        The vehicle file's, with the ``[body]`` table of the set's file in place of its airframe
+        (:func:`with_body_table`, where the set is a file with one) and, where the rotors' sets
+        differ, each rotor without a set of its own given its set (the vehicle's, else its
+        catalogue propeller's calibrated one); with a given ``params``, no rotor keeps its own.
+    params : SectionParams
+        The set for every rotor without one of its own (pass it to :func:`propmap.vehicle_wrench`,
+        :func:`propmap.trim_vehicle` or :func:`propmap.hover_omega`).
+    label : str
+        The set's name or file; where the rotors' sets differ, "the vehicle's rotor sets: "
+        followed by them.
+    sets : tuple of str
+        Each rotor's set label, in the file's order.
+    air : Air
+        The air the set was fitted in, where the rotors are solved by default (``params.air``).
+    body_from : str or None
+        The parameter file whose ``[body]`` table replaced the vehicle file's airframe; None: none did.
+    dropped : tuple of int
+        The rotors (1-based) whose own sets a given ``params`` replaced.
+    """
+
+    vehicle: Vehicle
+    params: object
+    label: str
+    sets: tuple
+    air: object
+    body_from: str | None = None
+    dropped: tuple = ()
+
+
+def resolve_vehicle(path, params=None) -> ResolvedVehicle:
+    """A vehicle file with its parameter sets, resolved as the vehicle commands resolve them.
+
+    Without ``params``: each rotor takes its own set (its ``params`` entry), else the vehicle's
+    own set (the file's top-level ``params``), else its catalogue propeller's calibrated set
+    (:func:`propmap.default_params`), else the generic set; the vehicle's own set, where it is a
+    flight fit's file, gives its ``[body]`` table. Where every rotor's set is one, that set is
+    ``params``; where they differ, each rotor carries its own (``vehicle``) and ``params`` is the
+    vehicle's own set (its air the rotors') or, without one, the generic set. With ``params`` (as
+    ``--params``): that set for every rotor (the rotors' own sets dropped: ``dropped``) and, where
+    it is a file with a ``[body]`` table, its airframe.
+
+    Parameters
+    ----------
+    path : str or Path
+        A vehicle file, or a bundled example vehicle's name (``"quadrotor"``,
+        ``"neurobem_quadrotor"``: :func:`propmap.vehicle.file.vehicle_path`).
+    params : str or Path, optional
+        A named set or a parameter file (:func:`propmap.resolve_params`; a relative path is taken
+        from the working directory, as ``--params`` is).
+
+    Returns
+    -------
+    ResolvedVehicle
+
+    Raises
+    ------
+    VehicleFileError
+        As :func:`propmap.read_vehicle`.
+    KeyError, ValueError, TypeError, OSError
+        ``params`` as :func:`propmap.resolve_params` raises them (an unknown set, a malformed
+        file); :class:`propmap.io.params_file.ParamsFileError` for a malformed ``[body]`` table.
+
+    Notes
+    -----
+    The same resolution as ``propmap trim-vehicle`` and ``propmap wrench`` (tests/test_stop95.py
+    compares them); the commands add their warnings (a rotor's set calibrated on another
+    propeller, rotors' sets in other air than the command's) and their air options.
+    """
+    from ..io.calibration import default_params
+    from ..io.catalogue import catalogue
+    from ..io.inputs import show_path
+    from ..io.param_sets import resolve_params
+    vehicle, data, path = _read_vehicle(path)
+    folder = path.parent
+    mine = _resolved_spec(data.get("params"), folder)  # (the vehicle's own set: checked by _read_vehicle)
+    # (mine: a path from the vehicle's folder, or a name)
+    vehicle, body_from = with_set_body(vehicle, params if params is not None else mine)
+    n = len(vehicle.rotors)
+    if params is not None:
+        given = resolve_params(params)
+        label = str(params)
+        dropped = tuple(k + 1 for k, r in enumerate(vehicle.rotors) if r.params is not None)
+        if dropped:
+            vehicle = replace(vehicle, rotors=tuple(replace(r, params=None) for r in vehicle.rotors))
+        return ResolvedVehicle(vehicle, given, label, (label,) * n, given.air, body_from, dropped)
+    names = _entry_specs(data, folder, "propeller")
+    own = tuple(o if o is not None else mine if mine is not None else
+                default_params(p).label if p in catalogue() else None
+                for o, p in zip(_entry_specs(data, folder, "params"), names))
+    own = tuple(None if o == "generic" else o for o in own)
+    mine_set = _rotor_params(mine, folder, show_path(path)) if mine is not None else None
+    spec = own[0] if own and own[0] is not None and len(set(own)) == 1 else None
+    mixed = spec is None and any(own)
+    if mixed:  # (each catalogue rotor carries its own calibrated set, or the vehicle's)
+        vehicle = replace(vehicle, rotors=tuple(
+            r if r.params is not None or o is None else
+            replace(r, params=mine_set if mine_set is not None else default_params(p))
+            for r, o, p in zip(vehicle.rotors, own, names)))
+    label = "generic" if spec is None else spec  # (a rotor's file: its path from the vehicle's folder)
+    # (mixed: every rotor carries its set where the vehicle has one, whose air is the vehicle's; the generic set for
+    # the rotors without any otherwise)
+    params = mine_set if mine_set is not None and (spec == mine or mixed) else resolve_params(label)
+    sets = tuple(o or "generic" for o in own) if mixed else (label,) * n
+    if len(set(sets)) > 1:
+        label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
+    return ResolvedVehicle(vehicle, params, label, sets, params.air, body_from)
+
+
+def with_set_body(vehicle: Vehicle, spec) -> tuple[Vehicle, str | None]:
+    """The vehicle with the ``[body]`` table of the parameter file ``spec`` in place of its airframe.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    spec : str, Path or None
+        A parameter file (a flight fit's writes the table), a named set or None (no table: the
+        vehicle as it is).
+
+    Returns
+    -------
+    vehicle : Vehicle
+        :func:`with_body_table`'s.
+    body_from : str or None
+        The file whose table replaced the airframe; None where none did.
+
+    Raises
+    ------
+    propmap.io.params_file.ParamsFileError
+        A malformed ``[body]`` table.
+    """
+    from ..io.params_file import read_body
+
+    if spec is None or not Path(spec).is_file():
+        return vehicle, None
+    table = read_body(spec)
+    return with_body_table(vehicle, table), (None if table is None else str(spec))
+
+
 def read_vehicle_with_params(path):
-    """A vehicle file and its own parameter set, applied as the vehicle commands apply it.
+    """A vehicle file and its parameter set, resolved as the vehicle commands resolve them.
 
     Parameters
     ----------
@@ -81,10 +232,13 @@ def read_vehicle_with_params(path):
     vehicle : Vehicle
         :func:`propmap.read_vehicle`'s, with the set's ``[body]`` table in place of the file's
         airframe where the set is a file that has one (:func:`with_body_table`).
-    params : SectionParams or None
-        The set (None where the file names none): pass it to :func:`propmap.vehicle_wrench`,
-        :func:`propmap.trim_vehicle` or :func:`propmap.hover_omega` for the rotors without a set
-        of their own, with its air (``params.air``), as the commands do.
+    params : SectionParams
+        The set for the rotors without one of its own (the vehicle's own set, else its rotors'
+        one set, else the generic set; :func:`resolve_vehicle`, whose record says more): pass it
+        to :func:`propmap.vehicle_wrench`, :func:`propmap.trim_vehicle` or
+        :func:`propmap.hover_omega`, with its air (``params.air``), as the commands do. (Until
+        2026-12-01 None where the file names no set of its own, where the commands took the
+        rotors' catalogue propeller's calibrated set.)
 
     Raises
     ------
@@ -97,13 +251,5 @@ def read_vehicle_with_params(path):
     >>> veh, own = pm.read_vehicle_with_params("neurobem_quadrotor")
     >>> trim = pm.trim_vehicle(veh, own, 10.0)   # what `propmap trim-vehicle --vehicle neurobem_quadrotor` gives
     """
-    from ..io.params_file import read_body
-
-    vehicle = read_vehicle(path)
-    spec = vehicle_params_file(path)
-    if spec is None:
-        return vehicle, None
-    folder = vehicle_path(path).parent
-    params = _rotor_params(spec, folder, str(path))
-    local = _local_file(spec, folder)
-    return (with_body_table(vehicle, read_body(local)) if local is not None else vehicle), params
+    resolved = resolve_vehicle(path)
+    return resolved.vehicle, resolved.params

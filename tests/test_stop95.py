@@ -1,0 +1,81 @@
+"""What stop 94 left alone, fixed at stop 95 (2026-12-01). Each test fails on the code before its
+fix; the guards say so. Data: the bundled example vehicles (the NeuroBEM quadrotor's layout and
+flight fit, docs/flight.md; the example quadrotor on the catalogue's APC 8x6E)."""
+
+import json
+import math
+import shutil
+from pathlib import Path
+
+import pytest
+
+import propmap as pm
+import propmap.io.toml_file as toml_file
+import propmap.vehicle.file as vehicle_file
+from propmap.vehicle.own_set import with_set_body
+
+from .cli_helpers import run
+
+EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
+
+
+def test_the_api_resolves_a_catalogue_rotor_s_set_as_the_commands_do(capsys):
+    """read_vehicle_with_params("quadrotor") gave no set (the example names none of its own), where
+    trim-vehicle and wrench take the rotors' catalogue propeller's calibrated set: a user who took
+    the generic set instead hovered at 5187 rpm against the commands' 5387 (measured)."""
+    veh, params = pm.read_vehicle_with_params("quadrotor")
+    assert params is not None and params.label == "calibrated:apce_8x6"
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", "quadrotor", "--json", "--airspeed", "0,10")
+    assert code == 0, err
+    d = json.loads(out)
+    assert d["params"] == params.label and d["rotor_params"] == [params.label] * 4
+    for row, speed in zip(d["trims"], (0.0, 10.0)):
+        want = pm.trim_vehicle(veh, params, speed)
+        assert row["rotor_rpm"] == pytest.approx(list(want.rotor_omega * 30 / math.pi), rel=1e-9)
+    assert d["trims"][0]["rotor_rpm"][0] == pytest.approx(5386.76, abs=0.01)  # (regression value, 2026-12-01)
+
+
+def test_resolve_vehicle_with_a_given_set_drops_the_rotors_own_sets(tmp_path):
+    """With ``params`` (as --params) every rotor takes that set; the rotors whose own sets it
+    replaced are named (the command's warning), and the vehicle's own flight fit's airframe is
+    not applied (the given set is a name, not a file with a [body] table)."""
+    text = (EXAMPLES / "neurobem_quadrotor.toml").read_text()
+    geom = 'propeller = "neurobem_5.1x4.8_geom.txt"'
+    for name in ("neurobem_quadrotor.params.toml", "neurobem_5.1x4.8_geom.txt"):
+        shutil.copy(EXAMPLES / name, tmp_path / name)
+    path = tmp_path / "v.toml"
+    path.write_text(text.replace(geom, geom + '\nparams = "generic"', 1), encoding="utf-8")
+    mixed = pm.resolve_vehicle(path)
+    assert mixed.sets[0] == "generic" and len(set(mixed.sets)) == 2 and mixed.body_from is not None
+    assert mixed.vehicle.body_drag is not None and mixed.air.rho == 1.204  # (the vehicle's set's air)
+    given = pm.resolve_vehicle(path, "gill2017-apc")
+    assert given.dropped == (1,) and all(r.params is None for r in given.vehicle.rotors)
+    assert given.label == "gill2017-apc" and given.sets == ("gill2017-apc",) * 4 and given.body_from is None
+    assert given.vehicle.body_drag == pm.read_vehicle(path).body_drag
+
+
+def test_resolve_vehicle_reads_the_vehicle_file_once(monkeypatch):
+    """The vehicle commands parsed the vehicle file 4-8 times each (a helper's count, stop 94):
+    read_vehicle_with_params read it twice; the resolution reads it once."""
+    calls = []
+    real = toml_file.load_toml
+
+    def counted(path, *args, **kwargs):
+        calls.append(Path(path).name)
+        return real(path, *args, **kwargs)
+
+    monkeypatch.setattr(vehicle_file, "load_toml", counted)
+    monkeypatch.setattr(toml_file, "load_toml", counted)
+    import propmap.vehicle.own_set as own_set
+
+    monkeypatch.setattr(own_set, "load_toml", counted)
+    pm.read_vehicle_with_params("neurobem_quadrotor")
+    assert calls.count("neurobem_quadrotor.toml") == 1
+
+
+def test_with_set_body_leaves_a_named_set_s_vehicle_as_it_is():
+    """Guard (passes before too, as the CLI's copy): a named set has no [body] table."""
+    veh = pm.read_vehicle("neurobem_quadrotor")
+    assert with_set_body(veh, "generic") == (veh, None) and with_set_body(veh, None) == (veh, None)
+    fitted, source = with_set_body(veh, EXAMPLES / "neurobem_quadrotor.params.toml")
+    assert source.endswith("neurobem_quadrotor.params.toml") and fitted.body_drag != veh.body_drag
