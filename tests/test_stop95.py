@@ -79,3 +79,19 @@ def test_with_set_body_leaves_a_named_set_s_vehicle_as_it_is():
     assert with_set_body(veh, "generic") == (veh, None) and with_set_body(veh, None) == (veh, None)
     fitted, source = with_set_body(veh, EXAMPLES / "neurobem_quadrotor.params.toml")
     assert source.endswith("neurobem_quadrotor.params.toml") and fitted.body_drag != veh.body_drag
+
+
+def test_a_vehicle_s_named_files_come_from_one_reading(monkeypatch):
+    """The commands' inputs that no output may overwrite (cli/_paths.vehicle_inputs) are the
+    files the vehicle names, read from one parsing of it (three before: its own set, then the
+    rotors' propellers and sets)."""
+    from propmap.cli._paths import vehicle_inputs
+    import propmap.vehicle.own_set as own_set
+
+    calls = []
+    real = toml_file.load_toml
+    monkeypatch.setattr(own_set, "load_toml", lambda p, *a, **k: calls.append(Path(p).name) or real(p, *a, **k))
+    monkeypatch.setattr(vehicle_file, "load_toml", lambda p, *a, **k: calls.append(Path(p).name) or real(p, *a, **k))
+    files = vehicle_inputs("neurobem_quadrotor")
+    assert calls == ["neurobem_quadrotor.toml"]
+    assert [f.name for f in files] == ["neurobem_quadrotor.params.toml"] + ["neurobem_5.1x4.8_geom.txt"] * 4

@@ -68,17 +68,15 @@ def vehicle_inputs(vehicle) -> list:
     are files, as the vehicle reader resolves them, :func:`propmap.vehicle.file.rotor_file_specs`):
     inputs of any command given the vehicle, never to be written over. Best effort: the vehicle
     reader reports a malformed file; None or an unreadable file gives []."""
-    from ..vehicle.file import VehicleFileError, rotor_file_specs
-    from ..vehicle.own_set import vehicle_params_file
+    from ..vehicle.file import VehicleFileError
+    from ..vehicle.own_set import vehicle_files
 
     if vehicle is None:
         return []
     try:
-        specs = [vehicle_params_file(vehicle), *(s for key in ("propeller", "params")
-                                                 for s in rotor_file_specs(vehicle, key))]
+        return vehicle_files(vehicle)
     except VehicleFileError:
         return []
-    return [Path(s) for s in specs if s is not None and os.path.lexists(s)]
 
 
 def check_outputs(outputs, inputs) -> None:

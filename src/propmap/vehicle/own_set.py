@@ -17,7 +17,7 @@ from ..io.toml_file import load_toml
 from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, _rotor_params, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
 
-__all__ = ["ResolvedVehicle", "read_vehicle_with_params", "resolve_vehicle", "vehicle_params_file",
+__all__ = ["ResolvedVehicle", "read_vehicle_with_params", "resolve_vehicle", "vehicle_files", "vehicle_params_file",
            "with_body_table", "with_set_body"]
 
 
@@ -44,6 +44,37 @@ def vehicle_params_file(path) -> str | None:
     """
     path = vehicle_path(path)
     return _resolved_spec(load_toml(path, VehicleFileError).get("params"), path.parent)
+
+
+def vehicle_files(path) -> list[Path]:
+    """The files a vehicle file names: its own parameter file (its top-level ``params``) and its
+    rotors' geometry and parameter files (``[[rotors]] propeller`` and ``params`` entries that are
+    files, as :func:`propmap.read_vehicle` resolves them), from one reading of the file; the
+    inputs of a command given the vehicle, which it must not write over.
+
+    Parameters
+    ----------
+    path : str or Path
+        A vehicle file, or a bundled example vehicle's name.
+
+    Returns
+    -------
+    list of Path
+        The entries that exist as files or folders, in the file's order (the vehicle's set, the
+        rotors' propellers, the rotors' sets).
+
+    Raises
+    ------
+    VehicleFileError
+        The file cannot be read as TOML.
+    """
+    import os
+
+    path = vehicle_path(path)
+    data = load_toml(path, VehicleFileError)
+    specs = [_resolved_spec(data.get("params"), path.parent),
+             *(s for key in ("propeller", "params") for s in _entry_specs(data, path.parent, key))]
+    return [Path(s) for s in specs if s is not None and os.path.lexists(s)]
 
 
 def with_body_table(vehicle: Vehicle, table) -> Vehicle:
