@@ -95,3 +95,15 @@ def test_a_vehicle_s_named_files_come_from_one_reading(monkeypatch):
     files = vehicle_inputs("neurobem_quadrotor")
     assert calls == ["neurobem_quadrotor.toml"]
     assert [f.name for f in files] == ["neurobem_quadrotor.params.toml"] + ["neurobem_5.1x4.8_geom.txt"] * 4
+
+
+@pytest.mark.parametrize("args, match", [
+    ((10**400, 0.0, 0.0), r"omega must be finite and in \[0, 100000\] rad/s; got an integer of 401 digits, beyond"),
+    ((800.0, -10**400, 0.0), r"airspeed must be finite and in \[0, 500\] m/s; got an integer of 401 digits"),
+    (([800.0, 10**400], 0.0, 0.0), r"omega must be finite and in \[0, 100000\] rad/s; got an integer beyond any float"),
+])
+def test_an_integer_beyond_any_float_is_said_so(args, match):
+    """rotor_loads(prop, p, 10**400, ...) said "got inf" of a finite integer, and in a list said
+    that it was not a number (an API audit, stop 94)."""
+    with pytest.raises(ValueError, match=match):
+        pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.generic_params(), *args)

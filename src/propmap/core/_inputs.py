@@ -109,7 +109,11 @@ def _as_array(name: str, value) -> np.ndarray:
             if any(v is None or isinstance(v, (str, bytes)) for v in a.reshape(-1)):
                 raise TypeError
             a = a.astype(float)
-        except (TypeError, ValueError, OverflowError):
+        except OverflowError:  # (an int beyond the float range is a number: it was told it was none)
+            lo, hi, unit = _RANGES[name]
+            raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer beyond any "
+                             "float") from None
+        except (TypeError, ValueError):
             raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None
     if a.dtype.kind not in "fiu" or has_bool(value):
         raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}")
@@ -130,8 +134,10 @@ def _scalar(name: str, value) -> float:
     lo, hi, _ = _RANGES[name]
     try:
         x = float(value)
-    except OverflowError:  # an int beyond the float range
-        raise _range_error(name, math.inf) from None
+    except OverflowError:  # an int beyond the float range (said as such: 10**400 was told "got inf", an API audit)
+        lo, hi, unit = _RANGES[name]
+        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer of "
+                         f"{len(str(abs(int(value))))} digits, beyond any float") from None
     if name == "incidence":  # (as the array path: within INCIDENCE_SNAP of 0 or pi, on it)
         x = snap_incidence_scalar(x, lo, hi)
     if not lo <= x <= hi:
