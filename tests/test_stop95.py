@@ -107,3 +107,21 @@ def test_an_integer_beyond_any_float_is_said_so(args, match):
     that it was not a number (an API audit, stop 94)."""
     with pytest.raises(ValueError, match=match):
         pm.rotor_loads(pm.load_propeller("apce_8x6"), pm.generic_params(), *args)
+
+
+def test_the_air_in_words_is_one_text_for_commands_and_exports():
+    """The commands' line, the C header's head and the simulator exports' head wrote the air with
+    three formatters (export_c._air_words, simexport.files._air_words, cli/_air.air_label); one
+    now, core.air.air_words. Regression values of the text (2026-12-01)."""
+    from propmap.cli._air import air_label
+    from propmap.core.air import air_words
+    from propmap.export_c import _air_words as c_words
+    from propmap.simexport.files import _air_words as sim_words
+
+    air = pm.Air(rho=1.204, mu=1.81e-5, speed_of_sound=343.2)
+    assert air_label(air) == "rho 1.204 kg/m^3, mu 1.81e-05 Pa s, speed of sound 343.2 m/s"
+    assert c_words({"rho_kg_m3": 1.2041, "mu_Pa_s": 1.81e-5}) == "; air rho 1.2041 kg/m^3, mu 1.81e-05 Pa s"
+    assert (sim_words({"rho": 1.2041, "speed_of_sound": 343.2})
+            == " in air of rho 1.2041 kg/m^3, speed of sound 343.2 m/s")
+    assert c_words({}) == sim_words({}) == ""
+    assert air_words(1.2041, rho_digits=4) == "rho 1.204 kg/m^3"

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .core.air import air_words
 from .core.units import RPM
 from .io.inputs import as_path
 from ._c_templates import CUBIC_BODY, CUBIC_DECL, CUBIC_WEIGHTS, LINEAR_BODY, LINEAR_DECL, TEMPLATE, VEHICLE
@@ -372,9 +373,7 @@ def _air_words(a: dict) -> str:
     2026-12-01, an air-consistency audit)."""
     if "rho_kg_m3" not in a:
         return ""
-    return (f"; air rho {float(a['rho_kg_m3']):.6g} kg/m^3"
-            + (f", mu {float(a['mu_Pa_s']):.4g} Pa s" if "mu_Pa_s" in a else "")
-            + (f", speed of sound {float(a['speed_of_sound_m_s']):.4g} m/s" if "speed_of_sound_m_s" in a else ""))
+    return "; air " + air_words(a["rho_kg_m3"], a.get("mu_Pa_s"), a.get("speed_of_sound_m_s"))
 
 
 def _caveats(attrs: dict, side_loads: bool) -> str:

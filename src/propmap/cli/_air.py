@@ -104,7 +104,9 @@ def _check_option(option: str, value: float, lo: float, hi: float, unit: str) ->
 
 def air_label(air) -> str:
     """One line of the air used, for outputs."""
-    return f"rho {air.rho:.4g} kg/m^3, mu {air.mu:.4g} Pa s, speed of sound {air.speed_of_sound:.4g} m/s"
+    from ..core.air import air_words
+
+    return air_words(air.rho, air.mu, air.speed_of_sound, rho_digits=4)
 
 
 def air_record(air) -> dict:

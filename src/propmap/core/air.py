@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from ._numbers import checked
 
-__all__ = ["Air", "check_air"]
+__all__ = ["Air", "air_words", "check_air"]
 
 
 @dataclass(frozen=True)
@@ -152,3 +152,31 @@ def check_air(air) -> None:
     """
     if not isinstance(air, Air):
         raise TypeError(f"air must be a propmap.Air, got {type(air).__name__}")
+
+
+def air_words(rho: float, mu: float | None = None, speed_of_sound: float | None = None, rho_digits: int = 6) -> str:
+    """The air in words, for the outputs that name it: ``rho 1.225 kg/m^3, mu 1.983e-05 Pa s,
+    speed of sound 340.3 m/s`` (mu and the speed of sound where given).
+
+    Parameters
+    ----------
+    rho : float
+        Density [kg/m^3].
+    mu : float, optional
+        Dynamic viscosity [Pa s]; None leaves it out (a file written before it was recorded).
+    speed_of_sound : float, optional
+        [m/s]; None leaves it out.
+    rho_digits : int, optional
+        Significant digits of rho (4 in the commands' lines, 6 in the exports' heads).
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    ValueError
+        A value that is not a number (formatting it).
+    """
+    return (f"rho {float(rho):.{rho_digits}g} kg/m^3" + (f", mu {float(mu):.4g} Pa s" if mu is not None else "")
+            + (f", speed of sound {float(speed_of_sound):.4g} m/s" if speed_of_sound is not None else ""))

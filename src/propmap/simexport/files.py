@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.air import air_words
 from ..core.units import RPM
 from .. import __version__
 from ..io.inputs import as_path
@@ -133,8 +134,7 @@ def _air_words(meta: dict) -> str:
     air-consistency audit, 2026-12-01)."""
     if "rho" not in meta:
         return ""
-    return (f" in air of rho {meta['rho']:.6g} kg/m^3" + (f", mu {meta['mu']:.4g} Pa s" if "mu" in meta else "")
-            + (f", speed of sound {meta['speed_of_sound']:.4g} m/s" if "speed_of_sound" in meta else ""))
+    return " in air of " + air_words(meta["rho"], meta.get("mu"), meta.get("speed_of_sound"))
 
 
 def _rotorpy_text(res: SimExport, head: str, vehicle, vehicle_label: str, airframe_label: str = "") -> str:
