@@ -125,3 +125,31 @@ def test_the_air_in_words_is_one_text_for_commands_and_exports():
             == " in air of rho 1.2041 kg/m^3, speed of sound 343.2 m/s")
     assert c_words({}) == sim_words({}) == ""
     assert air_words(1.2041, rho_digits=4) == "rho 1.204 kg/m^3"
+
+
+def test_the_flight_fits_jackknife_interval_is_cut_at_the_bounds(tmp_path, capsys, shared_data, monkeypatch):
+    """`fit flight --cross-validate` passes the bounds to the jackknife (its interval cut there, as
+    every interval of the report), a path no test reached (stop 94's mutation audit: only a 400 s
+    cross-validation did). The folds' collectives are pulled +-10 deg apart so that the interval
+    (t of 1 degree of freedom, 12.7) spans past +-15 deg: cut at the bounds, and said so."""
+    import propmap.identify.flight as flight
+
+    real = flight.cross_validate_flight
+
+    def spread(*args, **kwargs):
+        cv = real(*args, **kwargs)
+        for f, sign in zip(cv["folds"], (-1.0, 1.0)):
+            f["x"] = {**f["x"], "collective": f["x"]["collective"] + sign * math.radians(10.0)}
+        return cv
+
+    monkeypatch.setattr(flight, "cross_validate_flight", spread)
+    segments = ("bemnn20210218170320seg2.mat", "bemnn20210218171908seg2.mat", "bemnn20210223104803seg2.mat")
+    logs = [str(shared_data / "neurobem_flights" / s) for s in segments]
+    from propmap.cli.main import main
+
+    code = main(["fit", "flight", *logs, "--vehicle", "neurobem_quadrotor", "--out", str(tmp_path / "p.toml"),
+                 "--rate-hz", "1", "--holdout", segments[2], "--cross-validate", "--fit-params", "collective"])
+    assert code == 0, capsys.readouterr().err
+    jk = json.loads((tmp_path / "p.report.json").read_text())["jackknife"]
+    assert jk["ci95"]["collective_deg"] == pytest.approx([-15.0, 15.0], abs=1e-9)
+    assert jk["ci95_cut_at_bound"]["collective_deg"] == [True, True]
