@@ -132,10 +132,12 @@ def loads_from_uiuc_files(paths, diameter: float, *, air: Air = Air()) -> LoadDa
                     sweeps.append(read_uiuc_sweep(p))
                     sweep_files.append(show_path(p))
                 except MeasurementFileError as sweep_exc:
-                    if "expected columns" in str(sweep_exc) and "expected columns" not in str(static_exc):
+                    # (decided on the errors' found_header, which is set only where a file lacks the reader's
+                    # header, not on their messages' text: a file or folder named "expected columns" was misread)
+                    if sweep_exc.found_header is not None and static_exc.found_header is None:
                         raise static_exc from None
-                    if "expected columns" in str(sweep_exc):
-                        found = str(sweep_exc).partition("found header ")[2]
+                    if sweep_exc.found_header is not None:
+                        found = sweep_exc.found_header
                         raise DataError(f"{show_path(p)}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) "
                                         "file" + (f": its header is {found}; UIUC's columns come in that order, "
                                                   "a wind-tunnel run with its eta column" if found else "")) from None

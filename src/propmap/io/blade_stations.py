@@ -10,7 +10,16 @@ __all__ = ["FIRST_STATION_MAX", "GeometryFileError", "LAST_STATION_MIN", "LAST_S
 
 
 class GeometryFileError(ValueError):
-    """A geometry file is malformed; the message names the file and the problem."""
+    """A geometry file is malformed; the message names the file and the problem.
+
+    Attributes
+    ----------
+    found_header : str or None
+        Where a UIUC geometry file has no ``r/R c/R beta`` header: its first non-blank line,
+        clipped as the message gives it; None for every other problem.
+    """
+
+    found_header: str | None = None
 
 
 #: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)

@@ -348,7 +348,8 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     Lines before the header and ``key = value`` lines anywhere (e.g. UIUC's
     ``RPM average = 4042``) are metadata, lines starting with ``#`` comments; any other line
     that is not numeric, or has more fields than the header, is an error naming the file and
-    the line. Every value must be a finite number.
+    the line. Every value must be a finite number. Where no line is that header, the error
+    raised carries the file's first non-blank line as its ``found_header`` attribute.
     """
     name = show_path(path)
     meta: dict[str, tuple[str, int]] = {}
@@ -374,7 +375,9 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     if start is None:
         if not first:
             raise error(f"{name}: empty file")
-        raise error(f"{name}: expected columns {' '.join(expected)}, found header {_clip(first)}")
+        exc = error(f"{name}: expected columns {' '.join(expected)}, found header {_clip(first)}")
+        exc.found_header = _clip(first)  # (structured: a caller decides on it, not on the message's text)
+        raise exc
     rows, where = [], []
     n = len(expected)
     for k, ln in enumerate(lines, start=start + 1):

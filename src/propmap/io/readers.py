@@ -52,7 +52,18 @@ __all__ = [
 
 
 class MeasurementFileError(ValueError):
-    """A measurement file is malformed; the message names the file and the problem."""
+    """A measurement file is malformed; the message names the file and the problem.
+
+    Attributes
+    ----------
+    found_header : str or None
+        Where the file has no header of the reader's columns (the message's "expected
+        columns ..., found header ..."): its first non-blank line, clipped as the message
+        gives it; None for every other problem. Callers decide on it, not on the message
+        (identify/data.py tells a static file from a sweep by it).
+    """
+
+    found_header: str | None = None
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,102 @@
+"""Decisions made on an exception's or a warning's structure, not on its message text.
+
+Each of these was decided by reading a message (``"expected columns" in str(exc)``, ...) until
+2026-12-01: a file or folder whose name held those words was misread, and a change of wording
+would have changed behaviour without a test noticing. Each test pins the structured
+information, that the user-visible message is what it was, and (where it can) that the decision
+survives a reworded message.
+"""
+
+import pickle
+
+import pytest
+
+import propmap.io.readers as readers
+from propmap.identify import DataError, loads_from_uiuc_files
+from propmap.io.geometry_files import GeometryFileError, read_uiuc_geometry
+from propmap.io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
+
+STATIC = "RPM CT CP\n3000 0.11 0.05\n4000 0.11 0.05\n"
+SWEEP = "J CT CP eta\n0.2 0.09 0.05 0.36\n0.4 0.06 0.045 0.53\n"
+
+
+def _write(folder, name, text):
+    folder.mkdir(parents=True, exist_ok=True)
+    p = folder / name
+    p.write_text(text)
+    return p
+
+
+# ---- 1. a UIUC file's kind: MeasurementFileError.found_header -------------------------------------------------
+
+
+def test_a_missing_header_is_the_errors_found_header_and_the_message_is_unchanged(tmp_path):
+    p = _write(tmp_path, "x_9x6_static_r1.txt", SWEEP)
+    with pytest.raises(MeasurementFileError) as info:
+        read_uiuc_static(p)
+    assert info.value.found_header == "'J CT CP eta'"
+    assert str(info.value) == f"{p}: expected columns RPM CT CP, found header 'J CT CP eta'"
+    q = _write(tmp_path, "x_9x6_r1_4000.txt", STATIC)
+    with pytest.raises(MeasurementFileError) as info:
+        read_uiuc_sweep(q)
+    assert info.value.found_header == "'RPM CT CP'"
+    assert str(info.value) == f"{q}: expected columns J CT CP eta, found header 'RPM CT CP'"
+    g = _write(tmp_path, "geom.txt", "r/R c/R\n0.2 0.1\n0.5 0.1\n")
+    with pytest.raises(GeometryFileError) as info:
+        read_uiuc_geometry(g)
+    assert info.value.found_header == "'r/R c/R'"
+    assert str(info.value) == f"{g}: expected columns r/R c/R beta, found header 'r/R c/R'"
+    back = pickle.loads(pickle.dumps(info.value))  # (kept across processes: validate-all's workers)
+    assert back.found_header == "'r/R c/R'" and str(back) == str(info.value)
+
+
+@pytest.mark.parametrize("text", ["", "RPM CT CP\n3000 x 0.05\n", "RPM CT CP\n", "RPM CT CP\n3000 0.11 11\n"])
+def test_every_other_problem_has_no_found_header(tmp_path, text):
+    p = _write(tmp_path, "x_9x6_static_r1.txt", text)
+    with pytest.raises(MeasurementFileError) as info:
+        read_uiuc_static(p)
+    assert info.value.found_header is None
+    assert MeasurementFileError("anything").found_header is None
+
+
+@pytest.mark.parametrize("name, text, said", [
+    ("x_9x6_static_r1.txt", "RPM CT CP\n3000 zz 0.05\n", "line 2: non-numeric value 'zz' in column CT"),
+    ("x_9x6_r1_4000.txt", "J CT CP eta\n0.2 zz 0.05 0.36\n", "line 2: non-numeric value 'zz' in column CT"),
+])
+def test_a_folder_named_like_the_message_does_not_change_the_files_kind(tmp_path, name, text, said):
+    """A static (or sweep) file with a bad value, in a folder whose name holds "expected columns" and
+    "found header ": read by the message's text, both errors looked like a missing header and the
+    file was called neither kind, its header the folder's name."""
+    p = _write(tmp_path / "expected columns, found header here", name, text)
+    with pytest.raises(DataError) as info:
+        loads_from_uiuc_files([p], 0.2286)
+    assert str(info.value) == f"{p}, {said}"
+
+
+def test_the_kind_is_decided_on_found_header_whatever_the_messages_say(tmp_path, monkeypatch):
+    """The readers' messages reworded: the decision (and so which message is shown) is the same."""
+    p = _write(tmp_path, "x.txt", "anything\n")
+
+    def failing(header, message):
+        def read(path):
+            exc = MeasurementFileError(message)
+            exc.found_header = header
+            raise exc
+        return read
+
+    # the static reader failed on a value, the sweep reader on the header: the static reader's error
+    monkeypatch.setattr(readers, "read_uiuc_static", failing(None, "static: a value is wrong"))
+    monkeypatch.setattr(readers, "read_uiuc_sweep", failing("'RPM CT CP'", "sweep: no such columns"))
+    with pytest.raises(DataError, match="^static: a value is wrong$"):
+        loads_from_uiuc_files([p], 0.2286)
+    # both failed on the header: neither kind, naming the header found
+    monkeypatch.setattr(readers, "read_uiuc_static", failing("'a b c'", "static: no such columns"))
+    monkeypatch.setattr(readers, "read_uiuc_sweep", failing("'a b c'", "sweep: no such columns"))
+    with pytest.raises(DataError) as info:
+        loads_from_uiuc_files([p], 0.2286)
+    assert str(info.value) == (f"{p}: not a UIUC static (RPM CT CP) or wind-tunnel (J CT CP eta) file: its header is "
+                               "'a b c'; UIUC's columns come in that order, a wind-tunnel run with its eta column")
+    # the sweep reader failed on a value (a file of its header): its error, whatever the wording
+    monkeypatch.setattr(readers, "read_uiuc_sweep", failing(None, "sweep: expected columns, found header 'x'"))
+    with pytest.raises(DataError, match="^sweep: expected columns, found header 'x'$"):
+        loads_from_uiuc_files([p], 0.2286)
