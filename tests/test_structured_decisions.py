@@ -12,7 +12,8 @@ import pickle
 import pytest
 
 import propmap.io.readers as readers
-from propmap.identify import DataError, loads_from_uiuc_files
+from propmap.identify import DataError, loads_from_uiuc_files, read_loads
+from propmap.io.inputs import decode_input_text
 from propmap.io.geometry_files import GeometryFileError, read_uiuc_geometry
 from propmap.io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
 
@@ -100,3 +101,47 @@ def test_the_kind_is_decided_on_found_header_whatever_the_messages_say(tmp_path,
     monkeypatch.setattr(readers, "read_uiuc_sweep", failing(None, "sweep: expected columns, found header 'x'"))
     with pytest.raises(DataError, match="^sweep: expected columns, found header 'x'$"):
         loads_from_uiuc_files([p], 0.2286)
+
+
+# ---- 2. the CSV reader's Windows-1252 fallback: DataError.not_utf8 --------------------------------------------
+
+LOADS = "rpm,thrust (N),torque (N m)\n" + "".join(f"{r},{r * 1e-4:.3f},{r * 1e-6:.5f}\n"
+                                                  for r in range(3000, 9000, 500))
+
+
+def test_bytes_that_are_not_utf8_are_the_errors_not_utf8_and_the_message_is_unchanged(tmp_path):
+    raw = b"a,b\n1,caf\xe9\n"
+    with pytest.raises(DataError) as info:
+        decode_input_text(raw, "f.csv", DataError)
+    assert info.value.not_utf8 is True
+    assert str(info.value) == "f.csv, line 2: byte 0xe9 (byte 6 of the line) is not UTF-8; save the file as UTF-8"
+    for other, said in ((b"\xff\xfea\x00", "f.csv: UTF-16 text; save it as UTF-8"),
+                        (b"\xff\xfe\x00\x00a\x00\x00\x00", "f.csv: UTF-32 text; save it as UTF-8"),
+                        (b"a\x00b", "f.csv, line 1: NUL byte: a binary file, not text")):
+        with pytest.raises(DataError) as info:
+            decode_input_text(other, "f.csv", DataError)
+        assert info.value.not_utf8 is False and str(info.value) == said
+    assert DataError("anything").not_utf8 is False
+
+
+def test_windows_1252_is_still_read_with_its_note(tmp_path):
+    p = _write(tmp_path, "w.csv", "")
+    p.write_bytes(LOADS.replace("torque (N m)", "torque (N\u00b7m)").encode("cp1252"))
+    d = read_loads(p)
+    assert f"{p} is not UTF-8: read as Windows-1252 (a spreadsheet's save on Windows)" in d.notes
+
+
+@pytest.mark.parametrize("encode, said", [
+    (lambda t: t.encode("utf-16"), ": UTF-16 text; save it as UTF-8"),
+    (lambda t: t.encode().replace(b"3000", b"30\x0000"), ", line 2: NUL byte: a binary file, not text"),
+])
+def test_a_folder_named_like_the_message_does_not_read_the_file_as_windows_1252(tmp_path, encode, said):
+    """UTF-16 text or a NUL byte in a folder named '... is not UTF-8 ...': read by the message's text, the
+    fallback took the file for Windows-1252 and said it had no rotation-speed column (found 'ÿþr\\x00p...'), or
+    that '30\\x0000' was not a number."""
+    folder = tmp_path / "this file is not UTF-8"
+    p = _write(folder, "l.csv", "")
+    p.write_bytes(encode(LOADS))
+    with pytest.raises(DataError) as info:
+        read_loads(p)
+    assert str(info.value) == f"load data: {p}{said}"

@@ -76,7 +76,17 @@ MAX_LINES = 10_000_000
 
 
 class DataError(ValueError):
-    """Bad identification data; the message names the problem."""
+    """Bad identification data; the message names the problem.
+
+    Attributes
+    ----------
+    not_utf8 : bool
+        True where the file's bytes are not UTF-8 (and not UTF-16, UTF-32 or binary:
+        :func:`propmap.io.inputs.decode_input_text` sets it); False for every other problem.
+        The CSV reader's Windows-1252 fallback decides on it, not on the message.
+    """
+
+    not_utf8: bool = False
 
 
 def unnamed_columns(names) -> list[int]:
@@ -309,8 +319,10 @@ class _Csv:
         """Text that is not UTF-8 but Windows-1252 (a spreadsheet saved on Windows: 'µs', 'N·m',
         '°C' as single bytes), re-encoded as UTF-8 with a note; else ``exc`` raised (a user-level
         audit: a stand export re-saved by Excel was refused). Not a file with a UTF-8 byte-order
-        mark or a UTF-8 multi-byte sequence: UTF-8 with a stray byte stays refused, naming it."""
-        if ("is not UTF-8" not in str(exc) or raw.startswith(b"\xef\xbb\xbf")
+        mark or a UTF-8 multi-byte sequence: UTF-8 with a stray byte stays refused, naming it. Decided
+        on ``exc.not_utf8``, not the message (a file named '... is not UTF-8 ...' in UTF-16 was read
+        as Windows-1252 until 2026-12-01)."""
+        if (not exc.not_utf8 or raw.startswith(b"\xef\xbb\xbf")
                 or re.search(rb"[\xc2-\xf4][\x80-\xbf]", raw)):
             raise exc
         try:

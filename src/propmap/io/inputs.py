@@ -218,7 +218,8 @@ def decode_input_text(raw: bytes, path, error: type[ValueError], *, latin1: bool
     ------
     error
         UTF-16 or UTF-32 text, bytes that are not UTF-8 (without ``latin1``; the message
-        gives the line and the byte), or NUL bytes (a binary file).
+        gives the line and the byte, and the error's attribute ``not_utf8`` is True, for a
+        caller that falls back to another encoding), or NUL bytes (a binary file).
     """
     name = show_path(path)
     if raw.startswith((codecs.BOM_UTF32_LE, codecs.BOM_UTF32_BE)):
@@ -238,8 +239,10 @@ def decode_input_text(raw: bytes, path, error: type[ValueError], *, latin1: bool
         at = exc.start + skip
         line = _line_of(raw, at)
         col = at - max(raw.rfind(b"\n", 0, at), raw.rfind(b"\r", 0, at))
-        raise error(f"{name}, line {line}: byte 0x{raw[at]:02x} (byte {col} of the line) is not UTF-8; "
-                    "save the file as UTF-8") from None
+        refused = error(f"{name}, line {line}: byte 0x{raw[at]:02x} (byte {col} of the line) is not UTF-8; "
+                        "save the file as UTF-8")
+        refused.not_utf8 = True  # (structured: a caller's fallback to another encoding decides on it, not the text)
+        raise refused from None
 
 
 def _line_of(text, pos: int) -> int:
