@@ -7,12 +7,17 @@ information, that the user-visible message is what it was, and (where it can) th
 survives a reworded message.
 """
 
+import dataclasses
 import pickle
 
+import numpy as np
 import pytest
+
+import propmap as pm
 
 import propmap.io.readers as readers
 from propmap.identify import DataError, loads_from_uiuc_files, read_loads
+from propmap.identify.result import FitResult, _identifiability
 from propmap.io.inputs import decode_input_text
 from propmap.io.geometry_files import GeometryFileError, read_uiuc_geometry
 from propmap.io.readers import MeasurementFileError, read_uiuc_static, read_uiuc_sweep
@@ -145,3 +150,52 @@ def test_a_folder_named_like_the_message_does_not_read_the_file_as_windows_1252(
     with pytest.raises(DataError) as info:
         read_loads(p)
     assert str(info.value) == f"load data: {p}{said}"
+
+
+# ---- 3. the fit commands' report on standard output: written without the warnings, not filtered by text ------
+
+
+def _fit(warnings=(), idf_warnings=()):
+    """A FitResult of a synthetic fit (as tests/test_audit_section_report.py's), with these warnings."""
+    names, x = ("cl_alpha", "alpha_L0", "cd_min"), np.array([5.5, -0.06, 0.02])
+    rng = np.random.default_rng(7)
+    jac, residuals = rng.standard_normal((12, 3)), 1e-3 * rng.standard_normal(12)
+    idf = _identifiability(names, x, jac, residuals)
+    idf = dataclasses.replace(idf, warnings=tuple(idf_warnings), warning_kinds=())
+    return FitResult(params=pm.CamberedParams(), air=pm.Air(), names=names, x=x, residuals=residuals,
+                     cost=0.5 * float(residuals @ residuals), nfev=10, n_model_points=100, elapsed_s=0.5,
+                     success=True, message="ok", starts=[], identifiability=idf, warnings=tuple(warnings))
+
+
+def _outputs(tmp_path, capsys, res, **kw):
+    from propmap.cli.fit import _write_outputs
+
+    capsys.readouterr()
+    _write_outputs(res, tmp_path / "p.toml", "generic", False, **kw)
+    return capsys.readouterr(), (tmp_path / "p.report.txt").read_text()
+
+
+def test_the_printed_report_is_report_txt_without_the_warnings(tmp_path, capsys):
+    """As before for ordinary warnings: report.txt has every line, standard output all but the fit's
+    warnings and the data's (said on standard error), the identifiability's kept."""
+    res = _fit(warnings=("fit warning a", "fit warning b"), idf_warnings=("poorly determined: cd_min",))
+    (out, err), text = _outputs(tmp_path, capsys, res, header="a header", extra_text="extra 1\nextra 2",
+                                data_warnings=["a data warning"])
+    lines = text.splitlines()
+    assert lines[0] == "a header" and "extra 1" in lines and lines[-1] == "DATA WARNING: a data warning"
+    assert {"WARNING: fit warning a", "WARNING: fit warning b", "WARNING: poorly determined: cd_min"} <= set(lines)
+    gone = {"WARNING: fit warning a", "WARNING: fit warning b", "DATA WARNING: a data warning"}
+    assert out == "\n".join(line for line in lines if line not in gone) + "\n"  # (the old filter's output)
+    assert "propmap: warning: fit warning a\npropmap: warning: fit warning b\n" in err
+
+
+def test_a_line_that_reads_like_a_warning_is_printed_and_a_two_line_warning_is_not(tmp_path, capsys):
+    """Filtered by the lines' text, an identifiability warning that read as a fit warning and an extra line
+    that read 'WARNING: <a fit warning>' were dropped from standard output, and a fit warning over two
+    lines printed its second line there."""
+    res = _fit(warnings=("same words", "first line\nsecond line"), idf_warnings=("same words",))
+    (out, err), text = _outputs(tmp_path, capsys, res, extra_text="WARNING: same words")
+    assert text.count("WARNING: same words") == 3  # the fit's, the identifiability's, the extra line
+    assert out.count("WARNING: same words") == 2  # the identifiability's and the extra line
+    assert "second line" in text and "second line" not in out
+    assert "propmap: warning: same words\n" in err and "propmap: warning: first line\nsecond line\n" in err

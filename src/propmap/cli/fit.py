@@ -180,17 +180,19 @@ def _write_outputs(result, out: Path, base_label: str, as_json: bool, extra_text
     with atomic_write(stem.with_name(stem.name + ".report.json")) as fh:
         json.dump(report, fh, indent=2, default=float)
     said = [f"DATA WARNING: {w}" for w in data_warnings]
-    text = ((header + "\n" if header else "") + result.report_text() + ("\n" + extra_text if extra_text else "")
-            + "".join("\n" + line for line in said))
+    head, tail = (header + "\n" if header else ""), ("\n" + extra_text if extra_text else "")
+    text = head + result.report_text() + tail + "".join("\n" + line for line in said)
     with atomic_write(stem.with_name(stem.name + ".report.txt")) as fh:
         fh.write(text + "\n")
     if figure is not None:  # last: a stopped run leaves no figure without its parameters
         figure(stem.with_name(stem.name + ".png"))
     # the fit's warnings go to standard error, once (the first MAX_WARNINGS, and how many more): the report on
-    # standard output leaves them all out (report.txt keeps them)
-    echoed = {f"WARNING: {w}" for w in result.warnings} | set(said)
-    click.echo(json.dumps(report, indent=2, default=float) if as_json else
-               "\n".join(line for line in text.splitlines() if line not in echoed))
+    # standard output leaves them all out (report.txt keeps them), and the data's, said as they arose. It is the
+    # report of the result without its warnings, not report.txt's lines less those whose text matched a warning's
+    # (which dropped an identifiability warning or another line that read the same, and kept the second line of a
+    # warning written over two; until 2026-12-01)
+    shown = head + replace(result, warnings=()).report_text() + tail
+    click.echo(json.dumps(report, indent=2, default=float) if as_json else "\n".join(shown.splitlines()))
     for w in result.warnings[:MAX_WARNINGS]:
         click.echo(f"propmap: warning: {w}", err=True)
     if len(result.warnings) > MAX_WARNINGS:
