@@ -199,3 +199,61 @@ def test_a_line_that_reads_like_a_warning_is_printed_and_a_two_line_warning_is_n
     assert out.count("WARNING: same words") == 2  # the identifiability's and the extra line
     assert "second line" in text and "second line" not in out
     assert "propmap: warning: same words\n" in err and "propmap: warning: first line\nsecond line\n" in err
+
+
+# ---- 4. sanity_check names wind axes first in a refusal on _wind_axes' answer, not on the warnings' text -------
+
+
+def _wind_data(scale=1.0, wind=True):
+    """Loads of an APC 10x7 at 20-160 deg: a tunnel's force along the flow under 'thrust' and its lift
+    under 'drag' (``wind``), or the rotor's own loads times ``scale``."""
+    prop = pm.load_propeller("apce_10x7")
+    omega = np.full(16, 6000 * np.pi / 30)
+    V, inc = np.tile([6.0, 12.0], 8), np.radians(np.repeat(np.linspace(20, 160, 8), 2))
+    r = pm.rotor_loads(prop, pm.generic_params(), omega, V, inc)
+    along, lift = r.thrust * np.cos(inc) - r.drag * np.sin(inc), r.thrust * np.sin(inc) + r.drag * np.cos(inc)
+    T, D = (along, lift) if wind else (scale * r.thrust, scale * r.drag)
+    return prop, pm.identify.LoadData(omega, V, inc, {"thrust": T, "drag": D}, np.full(16, "a", dtype=object))
+
+
+WIND_FIRST = "likely loads in wind axes, not the rotor's (thrust = L sin i - D_w"
+
+
+def test_wind_axes_are_named_first_whatever_the_warning_says(monkeypatch):
+    import propmap.identify.sanity as sanity
+
+    prop, data = _wind_data()
+    with pytest.raises(DataError, match=WIND_FIRST.replace("(", r"\(")):  # (as before)
+        sanity.sanity_check(data, prop)
+    real = sanity._wind_axes
+
+    def reworded(data, at_rpm, warnings_):
+        n = len(warnings_)
+        said = real(data, at_rpm, warnings_)
+        if len(warnings_) > n:
+            warnings_[-1] = "reworded: the loads look like a tunnel's"
+        return said
+
+    monkeypatch.setattr(sanity, "_wind_axes", reworded)
+    with pytest.raises(DataError) as info:
+        sanity.sanity_check(data, prop)
+    assert WIND_FIRST in str(info.value)  # (read by the warnings' text: not said)
+
+
+def test_words_of_the_wind_warning_in_another_warning_do_not_name_wind_axes(monkeypatch):
+    import propmap.identify.sanity as sanity
+
+    prop, data = _wind_data(scale=20.0, wind=False)
+    with pytest.raises(DataError) as info:
+        sanity.sanity_check(data, prop)
+    plain = str(info.value)
+    assert WIND_FIRST not in plain
+
+    def quoting(data, at_rpm, warnings_):
+        warnings_.append("a run named 'are the loads in wind axes?'")  # (not the wind-axes warning)
+        return False
+
+    monkeypatch.setattr(sanity, "_wind_axes", quoting)
+    with pytest.raises(DataError) as info:
+        sanity.sanity_check(data, prop)
+    assert str(info.value) == plain  # (read by the warnings' text: wind axes named first)

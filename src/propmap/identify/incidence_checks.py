@@ -47,19 +47,20 @@ def _incidence_misfit(data: LoadData, at_rpm, on, torque: bool = False):
     return on, misfit
 
 
-def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
+def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> bool:
     """Warn where the thrust and in-plane force read as wind-axis loads match the model much
     better than as rotor-axis ones: a tunnel's force along the flow, T cos i - D sin i, under
     'thrust' with its lift, T sin i + D cos i, under 'normal force', or its drag, -(T cos i -
     D sin i), under 'drag' (both fitted with exit 0, parameters at their bounds, the first said
     only as a thrust 0.46 times the model's: a wind-tunnel data audit, 2026-11-30). Judged on
-    the points at an incidence of 12-168 deg, 3 or more."""
+    the points at an incidence of 12-168 deg, 3 or more. Returns whether it warned (sanity_check
+    names the wind axes first in a refusal on it, not on the warnings' text)."""
     if not {"thrust", "drag"} <= set(data.measured):
-        return
+        return False
     s, c = np.sin(data.incidence), np.cos(data.incidence)
     judged = _incidence_misfit(data, at_rpm, s > 0.2)
     if judged is None:
-        return
+        return False
     on, misfit = judged
     T, D = at_rpm.thrust, at_rpm.drag
     along, lift = T * c - D * s, T * s + D * c  # (the model's force along the flow and across it)
@@ -75,6 +76,8 @@ def _wind_axes(data: LoadData, at_rpm, warnings_: list) -> None:
                          f"axes, {said}: are the loads in wind axes? propmap reads them in the rotor's: thrust = "
                          "L sin i - D_w cos i, in-plane force = L cos i + D_w sin i (L the lift, D_w the drag along "
                          "the flow, i the incidence)")
+        return True
+    return False
 
 
 #: the misfit of the thrust (and in-plane force, and torque) at the file's incidence, in units of the measured loads'

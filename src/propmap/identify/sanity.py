@@ -219,9 +219,10 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     """sanity_check's in-plane force: its sign against the model's at incidence (the DataError to raise
     once the thrust and torque are checked, or None; a warning where most points disagree but it is
     not fitted) and a drag in axial flow (an incidence the file does not give?), warned of in
-    ``warnings_``."""
+    ``warnings_``. Returns (that DataError or None, whether the loads were warned of as wind-axis
+    ones: :func:`_wind_axes`)."""
     if "drag" not in data.measured:
-        return None
+        return None, False
     refused = None
     # the sign convention of the in-plane force (a fit of the other sign is nonsense)
     D = at_rpm.drag
@@ -248,7 +249,7 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
         warnings_.append(f"the measured in-plane force (drag) is {size:.3g} times the model's in the median at "
                          f"{int(sure.sum())} points at incidence: is its unit given? it is read in N (a header "
                          "'drag (gf)', 'drag_kgf' or 'Drag (lbf)' converts it)")
-    _wind_axes(data, at_rpm, warnings_)
+    wind = _wind_axes(data, at_rpm, warnings_)
     # an in-plane force without an in-plane airspeed: an incidence the file does not give?
     Dm = data.measured["drag"]
     axial = ~(data.airspeed * np.abs(np.sin(data.incidence)) > 1e-12 * data.airspeed) & np.isfinite(Dm)
@@ -260,7 +261,7 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
         warnings_.append(f"the measured drag exceeds 5% of the {of} at {int(large.sum())} of {int(axial.sum())} "
                          "points in axial flow (no in-plane airspeed), where the in-plane force is 0: is the "
                          "incidence missing (an 'incidence_deg' column)?")
-    return refused
+    return refused, wind
 
 
 def _plausible(rat: dict, lo: float = 1 / SANITY_FACTOR, hi: float = SANITY_FACTOR) -> bool:
@@ -550,7 +551,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     model = _ModelAt(data, propeller, params, air, checked)
     warnings_ = _run_warnings(data, propeller, air)
     at_rpm = model.loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
-    drag_refused = _drag_checks(data, at_rpm, checked, warnings_)
+    drag_refused, wind = _drag_checks(data, at_rpm, checked, warnings_)
     said = len(warnings_)
     _mirrored_incidence(data, at_rpm, model.loads_at, warnings_)
     mirror = len(warnings_) > said
@@ -561,8 +562,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     speed_slip = (None if mirror or radians_hint(np.degrees(data.incidence), data.airspeed)
                   else _airspeed_slip(data, at_rpm, model.loads_at, checked))
     ratio = model.ratios(data.omega, r=at_rpm)
-    if not _plausible(ratio):  # (wind-axis loads said first where they fit: the rpm's slips were named, a test)
-        wind = any("are the loads in wind axes?" in w for w in warnings_)
+    if not _plausible(ratio):  # (wind-axis loads said first where they fit: the rpm's slips were named, a test;
+        # decided on _wind_axes' answer, not on the warnings' text, until 2026-12-01)
         raise _refusal(data, propeller, ratio, at_rpm, model, speed_slip, wind, mirror)
     if drag_refused is not None:
         raise drag_refused
