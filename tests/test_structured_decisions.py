@@ -257,3 +257,17 @@ def test_words_of_the_wind_warning_in_another_warning_do_not_name_wind_axes(monk
     with pytest.raises(DataError) as info:
         sanity.sanity_check(data, prop)
     assert str(info.value) == plain  # (read by the warnings' text: wind axes named first)
+
+
+# ---- 5. map_columns drops the note of a column that gives way by the column, not by the note's text ------------
+
+
+@pytest.mark.parametrize("names", [["rpm", "Thrust avg (kgf)", "Thrust (lbf)", "torque (N m)"],
+                                   ["rpm", "Thrust (lbf)", "Thrust avg (kgf)", "torque (N m)"]])
+def test_the_conversion_note_of_a_column_that_gives_way_is_dropped(names):
+    from propmap.identify.stand import map_columns
+
+    cm = map_columns(names)
+    assert cm.columns["thrust"][0] == "Thrust (lbf)"
+    assert sorted(cm.notes) == ["'Thrust (lbf)' converted to N (x 4.44822)",
+                                "column 'Thrust avg (kgf)' is not read: the thrust is read from 'Thrust (lbf)'"]

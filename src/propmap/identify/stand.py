@@ -103,6 +103,7 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
         an unknown ``rpm_source``, or a ``pole_pairs`` outside [1, 50].
     """
     cm = ColumnMap()
+    converted: dict[str, str] = {}  # a column's note that its unit is converted, dropped where the column gives way
     for name in names:
         if not name.strip():
             continue
@@ -123,13 +124,15 @@ def map_columns(names, *, rpm_source: str | None = None, pole_pairs: int | None 
             cm.notes.append(f"column {alias!r} is not read: {what} read from {signal!r}")
             if alias == name:
                 continue
-            cm.notes[:] = [note for note in cm.notes if not note.startswith(f"{alias!r} converted")]
+            if alias in converted:  # (found by the column, not by the note's text, since 2026-12-01)
+                cm.notes.remove(converted.pop(alias))
         cm.columns[quantity] = (name, factor, unit)
         if unit is not None and factor != 1.0:
             # (rates are read in rpm, angles in deg; the note named the unit's token, 'from nmm': a docs audit)
             target = {"rotation": "rpm", "angle": "deg", "force": "N", "torque": "N m", "speed": "m/s",
                       "density": "kg/m^3"}.get(kind, "SI")
-            cm.notes.append(f"{name!r} converted to {target} (x {factor:.6g})")
+            converted[name] = f"{name!r} converted to {target} (x {factor:.6g})"
+            cm.notes.append(converted[name])
     if rpm_source not in (None, "optical", "electrical"):
         raise error(f"rpm_source must be 'optical' or 'electrical', got {rpm_source!r}")
     # (True, an int to Python, divided the speed by 1: refused since 2026-11-29, an audit)
