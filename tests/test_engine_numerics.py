@@ -110,3 +110,43 @@ def test_optima_of_different_cost_are_not_warned_of():
     assert polished[0][0] == pytest.approx(3.0, abs=1e-6) and polished[1][0] == pytest.approx(7.0, abs=0.1)
     assert 1.02 < polished[1][1] / polished[0][1] < 1.1  # the branch is exercised: two optima, 6% apart
     assert best.x[0] == pytest.approx(3.0, abs=1e-6) and warns == []
+
+
+def _model(own: bool):
+    """_smooth as a model that records its calls; with its exact Jacobian (``jacobian`` and
+    ``with_jacobian``, as engine._attach_jacobian gives) where ``own``."""
+    residual, seen = _recording(_smooth)
+    if own:
+        def with_jacobian(x):
+            seen.append(np.array(x, float))
+            return _smooth(x), _exact(x)
+
+        residual.jacobian = lambda x: with_jacobian(x)[1]
+        residual.with_jacobian = with_jacobian
+    return residual, seen
+
+
+@pytest.mark.parametrize("own", [True, False])
+def test_counted_residual_counts_each_model_call(own):
+    # the rule of every fit's nfev: a residual 1 call, the model's own Jacobian or residual with it 1,
+    # a differenced Jacobian 2 per parameter; ``n`` equals the calls the model saw
+    from propmap.identify.optimizer import CountedResidual
+
+    lb, ub = np.array([-1.0, -5.0]), np.array([1.0, 5.0])
+    x = np.array([0.3, -2.0])
+    residual, seen = _model(own)
+    ticks = []
+    model = CountedResidual(residual, lb, ub, on_call=ticks.append)
+    assert model.paired == own
+    np.testing.assert_array_equal(model(x), _smooth(x))
+    assert model.n == 1
+    J = model.jacobian(x)
+    assert model.n == (2 if own else 1 + 2 * x.size)
+    np.testing.assert_allclose(J, _exact(x), rtol=0, atol=0 if own else 1e-8)
+    before = model.n
+    r, J = model.with_jacobian(x)
+    assert model.n - before == (1 if own else 1 + 2 * x.size)
+    np.testing.assert_array_equal(r, _smooth(x))
+    assert model.n == len(seen) == sum(ticks)
+    if not own:  # the differences' steps stay within the bounds
+        assert np.all(np.array(seen) >= lb) and np.all(np.array(seen) <= ub)

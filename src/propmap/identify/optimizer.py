@@ -1,5 +1,6 @@
 """The fitting engine's bounded least squares (identify/engine.py): each parameter's bounds, the
-central-difference Jacobian where a residual brings no implicit one, and SciPy's trust-region
+central-difference Jacobian where a residual brings no implicit one, the residual with its model
+calls counted (:class:`CountedResidual`, every fit's), and SciPy's trust-region
 reflective least squares from the start and ``FitOptions.multistart`` scrambled Sobol' starts,
 screened and the two best polished (docs/identification.md).
 """
@@ -14,7 +15,7 @@ import numpy as np
 from .options import ALL_BOUNDS, FitOptions
 from .result import _scale_of
 
-__all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL"]
+__all__ = ["SCREEN_NFEV", "SAME_COST_RTOL", "DIFFERENT_X_RTOL", "CountedResidual"]
 
 
 SCREEN_NFEV = 12  # residual evaluations per start in the multistart screening stage
@@ -49,6 +50,69 @@ def _jacobian(residual, x, lb, ub):
     return np.column_stack(cols)
 
 
+class CountedResidual:
+    """A fit's residual with its model calls counted, and its Jacobian: the model's own where it
+    has one, else central differences within the bounds (:func:`_jacobian`).
+
+    The counting rule of every fit's reported evaluations (``FitResult.nfev``): a residual is
+    one model call, the model's own Jacobian (``residual.jacobian``: the implicit derivatives,
+    one solve with derivatives) one, the residual with that Jacobian (``residual.with_jacobian``)
+    one, and a differenced Jacobian two per parameter (its residuals, counted as they are made).
+
+    Parameters
+    ----------
+    residual : callable
+        x -> residual vector, with ``jacobian`` and ``with_jacobian`` where the model brings its
+        implicit derivatives (engine._attach_jacobian).
+    lb, ub : ndarray, shape (n,)
+        The parameters' bounds, which the differences' steps stay within.
+    on_call : callable, optional
+        Called with the number of each count's model calls (a progress bar's ``update``).
+
+    Attributes
+    ----------
+    n : int
+        The model calls counted so far.
+    paired : bool
+        Whether the residual and its own Jacobian come from one model call (``with_jacobian``).
+    """
+
+    def __init__(self, residual, lb, ub, on_call=None):
+        self.residual, self.lb, self.ub, self.n = residual, lb, ub, 0
+        self._own = getattr(residual, "jacobian", None)
+        self._pair = getattr(residual, "with_jacobian", None)
+        self.paired = self._pair is not None
+        self._on_call = on_call
+
+    def _count(self, calls: int) -> None:
+        self.n += calls
+        if self._on_call is not None:
+            self._on_call(calls)
+
+    def __call__(self, x):
+        """The residual at x: one model call."""
+        self._count(1)
+        return self.residual(x)
+
+    def jacobian(self, x):
+        """The Jacobian at x: the model's own (one model call), else central differences of
+        the residual (two model calls per parameter)."""
+        x = np.array(x, float)
+        if self._own is not None:
+            self._count(1)
+            return self._own(x)
+        return _jacobian(self, x, self.lb, self.ub)
+
+    def with_jacobian(self, x):
+        """(residual, Jacobian) at x: one model call where the model brings both
+        (``paired``), else the residual's and :meth:`jacobian`'s."""
+        x = np.array(x, float)
+        if self._pair is not None:
+            self._count(1)
+            return self._pair(x)
+        return self(x), self.jacobian(x)
+
+
 def _solve(residual, names, options: FitOptions, label: str, x0):
     """Bounded least squares from x0 and ``options.multistart`` Sobol starts; best cost wins.
 
@@ -59,36 +123,27 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
 
     lb, ub = _bounds(names, options)
     starts = _starts(x0, lb, ub, options)
-    counter = {"n": 0}
     # disable=None: off unless a terminal
     bar = tqdm(desc=label, unit="eval", disable=None if options.progress else True, leave=False)
-
-    both = getattr(residual, "with_jacobian", None)
+    model = CountedResidual(residual, lb, ub, on_call=bar.update)
     last = {}  # the Jacobian of the last residual evaluated, and where
 
     def fun(x):
-        counter["n"] += 1
-        bar.update(1)
-        if both is None:
-            return residual(x)
+        if not model.paired:
+            return model(x)
         # the implicit derivatives come with the residual from one model call: least_squares asks
         # for the Jacobian where it last evaluated the residual (after an accepted step), so most
         # calls need it, and the derivatives cost less than a second call (benchmarks/README.md)
-        r, J = both(np.array(x, float))
-        last["x"], last["J"] = np.array(x, float), J
+        x = np.array(x, float)
+        r, last["J"] = model.with_jacobian(x)
+        last["x"] = x
         return r
-
-    analytic = getattr(residual, "jacobian", None)
 
     def jac(x):
         x = np.array(x, float)
-        if both is not None and "x" in last and np.array_equal(last["x"], x):
+        if "x" in last and np.array_equal(last["x"], x):  # (that Jacobian, free: counted with its residual)
             return last["J"]
-        if analytic is not None:  # the implicit derivatives (one solve with derivatives)
-            counter["n"] += 1
-            bar.update(1)
-            return analytic(x)
-        return _jacobian(fun, x, lb, ub)
+        return model.jacobian(x)
 
     def run(x_start, max_nfev):
         from scipy import optimize
@@ -116,7 +171,7 @@ def _solve(residual, names, options: FitOptions, label: str, x0):
         # accepted step and returns it unchanged for the default linear loss
     finally:
         bar.close()
-    return best, log, counter["n"], time.perf_counter() - t0, warns
+    return best, log, model.n, time.perf_counter() - t0, warns
 
 
 def _starts(x0, lb: np.ndarray, ub: np.ndarray, options: FitOptions) -> list:
