@@ -20,7 +20,7 @@ import numpy as np
 
 from ..core.airfoil import AirfoilParams, CamberedParams, SectionParams
 from .options import ABSENT_AT_ZERO, BODY_X0, FLAP_ARTICULATED, FLAP_START, FitOptions, _is_angle, report_name
-from .optimizer import _bounds, _jacobian, _solve
+from .optimizer import CountedResidual, _bounds, _solve
 from .result import FitResult, Identifiability, _effective_parameters, _identifiability
 
 __all__ = []  # (the multistart constants are identify/optimizer.py's)
@@ -267,15 +267,10 @@ def _fit_along_directions(make_data, names, base, options, k):
     _, mu, chol, pop = _prior_stats(names, base, options)  # (on every name: _direction_count)
     weight = float(pop["sigma_data"])
     lb, ub = _bounds(names, options)
-    data = make_data(options)
-    count = {"n": 0}
-
-    def data_jac(x):
-        count["n"] += 1
-        if hasattr(data, "with_jacobian"):
-            return data.with_jacobian(x)
-        count["n"] += 2 * len(x)
-        return data(x), _jacobian(data, x, lb, ub)
+    data = CountedResidual(make_data(options), lb, ub)
+    # (residual, Jacobian) at x: 1 model call, 1 + 2 n where differenced (a data residual has with_jacobian or no
+    # derivatives: engine._attach_jacobian)
+    data_jac = data.with_jacobian
 
     t0 = time.perf_counter()
     jac0 = data_jac(mu)[1]
@@ -295,7 +290,7 @@ def _fit_along_directions(make_data, names, base, options, k):
     def x_of(c):
         return np.clip(mu + B @ c, lb, ub)
 
-    last = {}
+    last = {}  # the last residual's c and its residual and Jacobian: reused where least_squares asks at that c
 
     def fun(c):  # the residual with its Jacobian from one model call (least_squares asks for both at each x)
         last["c"], (last["r"], last["J"]) = np.array(c, float), data_jac(x_of(c))
@@ -319,7 +314,7 @@ def _fit_along_directions(make_data, names, base, options, k):
              "directions": {"count": k, "c": sol.x, "loadings": B, "eigenvalues": lam, "base": mu,
                             "jac_c": J @ B, "prior_std": np.sqrt(np.sum(chol**2, axis=1)), "held": every[:, k:]}}
     log = [{"x0": mu, "x": x, "cost": 0.5 * float(r @ r), "nfev": int(sol.nfev)}]
-    return best, log, count["n"], elapsed, warns, extra
+    return best, log, data.n, elapsed, warns, extra
 
 
 def _shrinkage_meat(jac_data, prior_rows, s2: float, w: float) -> np.ndarray:
