@@ -13,7 +13,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..core.airfoil import AirfoilParams
-from .optimizer import _bounds, _jacobian, _solve
+from .optimizer import CountedResidual, _bounds, _solve
 
 __all__ = ["NM_STAT_TOL", "M_SMOOTH", "GN_STEP_TOL", "GN_MAX_ITER", "GN_TRY_EVERY"]
 
@@ -96,30 +96,19 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
     identifiability report) and the number of residual evaluations spent.
     """
     lb, ub = _bounds(names, options)
-    exact = make_residual(replace(options, M=base_M))
-    smooth = make_residual(replace(options, M=M_SMOOTH))
-    count = {"n": 0}
+    # the exact residual at the base M, the smooth model's Jacobian; the model calls of both count
+    exact = CountedResidual(make_residual(replace(options, M=base_M)), lb, ub)
+    smooth = CountedResidual(make_residual(replace(options, M=M_SMOOTH)), lb, ub)
 
-    def f(x):
-        count["n"] += 1
-        return exact(x)
-
-    analytic = getattr(smooth, "jacobian", None)
-
-    def jac(x):
-        if analytic is not None:
-            count["n"] += 1
-            return analytic(np.array(x, float))
-        count["n"] += 2 * len(x)
-        return _jacobian(smooth, np.array(x, float), lb, ub)
+    def calls():
+        return exact.n + smooth.n
 
     from scipy import optimize  # imported where used: `propmap wrench` and `loads` start without it
 
-    r2 = optimize.least_squares(f, x_smooth, jac=jac, bounds=(lb, ub), method="trf", x_scale="jac",
+    r2 = optimize.least_squares(exact, x_smooth, jac=smooth.jacobian, bounds=(lb, ub), method="trf", x_scale="jac",
                                 max_nfev=options.max_nfev, xtol=1e-12, ftol=1e-12, gtol=1e-12)
     # only where the residual and its exact Jacobian come from one model call (the implicit
     # derivatives); a Jacobian with differenced columns would straddle the jumps
-    exact_pair = getattr(exact, "with_jacobian", None)
     newton = {"x": None, "cost": math.inf, "calls": 0, "every": GN_TRY_EVERY, "spent": 0, "done": None}
 
     def try_newton(x, best_other):
@@ -127,10 +116,9 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         and any earlier try's, its point is the optimum (newton["done"]); each try that does
         not makes Nelder-Mead take 1.5 times as many model calls before the next (noisy data:
         the optimum may lie at a jump, where no try converges)."""
-        def evaluate(z):
-            count["n"] += 1
+        def evaluate(z):  # (a model call in calls() as every other, and in newton["spent"]: the tries' share of nfev)
             newton["spent"] += 1
-            return exact_pair(np.array(z, float))
+            return exact.with_jacobian(z)
 
         xg, cg, ok = _gauss_newton(evaluate, np.clip(np.asarray(x, float), lb, ub), lb, ub)
         if ok and cg <= best_other and cg <= newton["cost"]:
@@ -139,10 +127,10 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
             newton["x"], newton["cost"] = xg, cg
         if not ok:
             newton["every"] = int(1.5 * newton["every"])
-        newton["calls"] = count["n"]
+        newton["calls"] = calls()
         return newton["done"] is not None
 
-    done = exact_pair is not None and try_newton(r2.x, r2.cost)
+    done = exact.paired and try_newton(r2.x, r2.cost)
     scale = np.maximum(np.abs(r2.x), 0.1)
     z0 = r2.x / scale
     simplex = np.vstack([z0, z0 + 0.02 * np.eye(z0.size)])
@@ -150,7 +138,7 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
     max_fev = 200 * len(names)
 
     def callback(intermediate_result):
-        if exact_pair is None or count["n"] - newton["calls"] < newton["every"]:
+        if not exact.paired or calls() - newton["calls"] < newton["every"]:
             return
         if try_newton(intermediate_result.x * scale, intermediate_result.fun):
             raise StopIteration
@@ -158,7 +146,7 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
     if done:
         nm = optimize.OptimizeResult(x=z0, fun=math.inf, nfev=0, final_simplex=(simplex, None))
     else:
-        nm = optimize.minimize(lambda z: 0.5 * float(np.sum(f(z * scale) ** 2)), z0, method="Nelder-Mead",
+        nm = optimize.minimize(lambda z: 0.5 * float(np.sum(exact(z * scale) ** 2)), z0, method="Nelder-Mead",
                                bounds=list(zip(lb / scale, ub / scale)), callback=callback,
                                options={"xatol": 1e-12, "fatol": 1e-30, "maxfev": max_fev, "adaptive": True,
                                         "initial_simplex": simplex})
@@ -170,8 +158,8 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         if newton["x"] is not None:
             candidates.append((newton["cost"], newton["x"]))
         x = min(candidates, key=lambda c: c[0])[1]
-    fun = exact(x)
-    J = analytic(x) if analytic is not None else _jacobian(smooth, x, lb, ub)
+    spent = calls()
+    fun, J = exact(x), smooth.jacobian(x)
     stopped = not done and nm.nfev >= max_fev and nm.fun < r2.cost and _simplex_wider_than_errors(nm, scale, fun, J)
     how = (f"Gauss-Newton with the exact M = {base_M:g} Jacobian" if done else f"Nelder-Mead at M = {base_M:g}")
     result = optimize.OptimizeResult(
@@ -179,7 +167,9 @@ def _polish_at_base_M(make_residual, names, options, base_M, x_smooth, label):
         status=0 if stopped else 2, success=not stopped, nfev=r2.nfev + nm.nfev + newton["spent"],
         message=("Nelder-Mead stopped at its evaluation limit" if stopped else
                  f"converged: least squares with the M = {M_SMOOTH:g} Jacobian, then {how}"))
-    return result, count["n"] + len(names) * 2 + 1
+    # the optimum's residual and Jacobian count 2 n + 1 model calls whichever Jacobian the smooth model has (as
+    # before CountedResidual: the counts reported unchanged)
+    return result, spent + len(names) * 2 + 1
 
 
 def _simplex_wider_than_errors(nm, scale: np.ndarray, fun: np.ndarray, J: np.ndarray) -> bool:
