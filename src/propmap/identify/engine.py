@@ -82,6 +82,15 @@ def _attach_jacobian(residual, with_jacobian):
     residual.with_jacobian = with_jacobian
 
 
+def _warn_at_optimum(result: FitResult, make_data, options: FitOptions) -> None:
+    """The model's warnings at a fit's optimum, said once: every data kind's residual holds them
+    at its trial points (core.flapping.flapping_warning_held) and evaluates the model at the
+    optimum unheld with ``residual.at_optimum(x)``; only flapping blades (``flap_compliance`` >
+    0) have them. ``make_data``: the data kind's ``make_residual`` (without the prior)."""
+    if getattr(result.params, "flap_compliance", 0.0) > 0:
+        make_data(options).at_optimum(result.x)
+
+
 def _cut_at_bounds(idf, lb: np.ndarray, ub: np.ndarray):
     """``idf`` with its 95% intervals, shape (p, 2), cut at the parameters' bounds (a linearised
     interval reaches past them: cd_min below 0, a compliance below 0) and the cut ends marked

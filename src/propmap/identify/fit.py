@@ -37,7 +37,7 @@ from .data import LoadData
 from .load_data import STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
-                     _flap_saturation, _m_effect, _params_from, _prior_stats, _with_prior, _x0)
+                     _flap_saturation, _m_effect, _params_from, _prior_stats, _warn_at_optimum, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
                       param_names)
@@ -259,7 +259,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
         if (opts.jacobian == "implicit" and differentiable(base, names)
                 and np.all(data.omega >= OMEGA_MIN)):
             _attach_jacobian(residual, with_jacobian)  # (a parked point, below OMEGA_MIN, has no derivatives)
-        residual.at_optimum = lambda x: loads(x, trial=False)  # (the model's warnings, silenced at trial points)
+        residual.at_optimum = lambda x: loads(x, trial=False)  # (engine._warn_at_optimum: the model's warnings)
         return residual
 
     return make, scales
@@ -385,8 +385,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
     result = _traced_residuals(result, data, keys)
     if inplane:
         result = _flap_articulated(_flap_saturation(result, make_residual(options), options))
-    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: held at trial points)
-        make_data(options).at_optimum(result.x)
+    _warn_at_optimum(result, make_data, options)
     return result if k_dirs == 0 else _directions_report(result, options)
 
 

@@ -47,7 +47,7 @@ from ..core.solver import Discretization, differentiable, model_air, rotor_loads
 from ..vehicle import Vehicle, VehicleWrench, vehicle_wrench
 from ..vehicle.layout import shift_centre_of_mass  # (this module's name since before it moved to the vehicle)
 from .continuation import _fit_with_continuation
-from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _with_prior, _x0
+from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _warn_at_optimum, _with_prior, _x0
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             reference_at_vehicle_mass, reference_errors, speed_band_errors)
@@ -270,8 +270,7 @@ def fit_flight(samples: FlightSamples, vehicle: Vehicle, *, base: SectionParams 
     # consecutive samples: samples left out (a stopped rotor, the ground) end a run (a review)
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(
         result.residuals[:3 * samples.n].reshape(samples.n, 3), _consecutive_runs(samples))
-    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: silenced at trial points)
-        model.predict(result.x, options, trial=False)
+    _warn_at_optimum(result, model.make_residual, options)
     return result
 
 
@@ -365,6 +364,7 @@ class _FlightModel:
 
         if self.implicit:
             _attach_jacobian(residual, lambda x: self._with_jacobian(x, opts))
+        residual.at_optimum = lambda x: self.predict(x, opts, trial=False)  # (engine._warn_at_optimum)
         return residual
 
     def predict(self, x, opts, derivatives=False, trial: bool = True):

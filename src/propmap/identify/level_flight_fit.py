@@ -22,7 +22,8 @@ from ..vehicle import Vehicle, rotor_geometry, vehicle_wrench
 from .continuation import _fit_with_continuation
 from .data import LevelFlightData, body_to_world, rotor_kinematics
 from .level_flight import check_level_flight
-from .engine import _attach_jacobian, _finish, _m_effect, _objective, _params_from, _with_prior, _x0
+from .engine import (_attach_jacobian, _finish, _m_effect, _objective, _params_from, _warn_at_optimum, _with_prior,
+                     _x0)
 from .options import BODY_X0, FitOptions, _default_names
 from .dependence import lag1_autocorrelation
 from .result import FitResult
@@ -201,8 +202,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     result.extra["residual_autocorrelation"] = lag1_autocorrelation(result.residuals[:data.n], np.zeros(data.n))
     if options.body_lift:
         result = _select_body_lift(result, best, without, data, vehicle, base, air, no_body, (nfev, elapsed))
-    if getattr(result.params, "flap_compliance", 0.0) > 0:  # (the model's warnings, once: held at trial points)
-        level_flight_forces(result.params, data, vehicle, air=air, discretization=options.discretization)
+    _warn_at_optimum(result, make_data, options)
     return result
 
 
@@ -273,6 +273,10 @@ def _level_flight_residual(data: LevelFlightData, vehicle: Vehicle, names, base:
         section_names = names[:-3] if opts.body_lift else names
         if opts.jacobian == "implicit" and differentiable(base, section_names) and vehicle.rotor_interference == 0:
             _attach_jacobian(residual, with_jacobian)
+        # the model's warnings at the optimum (engine._warn_at_optimum); x may be the selected fit's without body lift,
+        # names[:-3]'s values (the body-lift terms, last, are no section field)
+        residual.at_optimum = lambda x: level_flight_forces(_params_from(x, names, base, opts), data, vehicle, air=air,
+                                                            discretization=opts.discretization)
         return residual
 
     return make_residual
