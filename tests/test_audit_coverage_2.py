@@ -274,8 +274,9 @@ def test_validate_files_with_a_torque_of_zeros_warns_then_refuses_naming_the_sou
 
 
 def test_trim_vehicle_params_file_that_is_not_toml_is_refused_naming_params(capsys, tmp_path):
-    """cli/_vehicle.py (_fitted_vehicle: read_body's ParamsFileError). Mutant: 'except ParamsFileError' made 'except
-    KeyError' (the parser's error then reaches the generic handler: its message without '--params: ')."""
+    """cli/_vehicle.py (_vehicle_sets since 2026-12-01, _fitted_vehicle before: the parameter file's
+    ParamsFileError named as --params's). Mutant: the exceptions caught there narrowed to KeyError (the parser's error
+    then reaches the generic handler: its message without '--params: ')."""
     bad = tmp_path / "bad.toml"
     bad.write_text("this is = = not toml\n")
     code, out, err = run(capsys, "trim-vehicle", "--vehicle", EXAMPLES.joinpath("quadrotor.toml"),

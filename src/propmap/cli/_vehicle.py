@@ -101,8 +101,9 @@ def _vehicle_sets(vehicle, params_spec, air_choice):
     except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
     except (KeyError, ValueError, TypeError, OSError) as exc:  # --params's set or its [body] table
-        if params_spec is not None:
-            load_params(params_spec)  # (its message, as every command's)
+        if params_spec is None:  # (the vehicle's own set: _read_vehicle checked it, so not met today; a review)
+            raise InputError(f"--vehicle (its params): {exc}") from None
+        load_params(params_spec)  # (its message, as every command's)
         raise InputError(f"--params: {exc}") from None
     _check_rotor_sets(r.vehicle, r.sets)
     air = resolve_air(r.air, air_choice)

@@ -111,7 +111,7 @@ def _as_array(name: str, value) -> np.ndarray:
             a = a.astype(float)
         except OverflowError:  # (an int beyond the float range is a number: it was told it was none)
             lo, hi, unit = _RANGES[name]
-            raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer beyond any "
+            raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got a number beyond any "
                              "float") from None
         except (TypeError, ValueError):
             raise ValueError(f"{name} must be a number or an array of numbers, got {value!r:.60}") from None
@@ -136,8 +136,9 @@ def _scalar(name: str, value) -> float:
         x = float(value)
     except OverflowError:  # an int beyond the float range (said as such: 10**400 was told "got inf", an API audit)
         lo, hi, unit = _RANGES[name]
-        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer of "
-                         f"{len(str(abs(int(value))))} digits, beyond any float") from None
+        digits = int(abs(int(value)).bit_length() * math.log10(2)) + 1  # (not str(): Python refuses 4300 digits)
+        raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer of about "
+                         f"{digits} digits, beyond any float") from None
     if name == "incidence":  # (as the array path: within INCIDENCE_SNAP of 0 or pi, on it)
         x = snap_incidence_scalar(x, lo, hi)
     if not lo <= x <= hi:

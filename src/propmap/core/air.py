@@ -175,8 +175,8 @@ def air_words(rho: float, mu: float | None = None, speed_of_sound: float | None 
 
     Raises
     ------
-    ValueError
-        A value that is not a number (formatting it).
+    ValueError, TypeError
+        A value that is not a number (``float`` of it).
     """
     return (f"rho {float(rho):.{rho_digits}g} kg/m^3" + (f", mu {float(mu):.4g} Pa s" if mu is not None else "")
             + (f", speed of sound {float(speed_of_sound):.4g} m/s" if speed_of_sound is not None else ""))

@@ -10,6 +10,7 @@ calibrated one (a review of stop 94)."""
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -116,8 +117,9 @@ class ResolvedVehicle:
         differ, each rotor without a set of its own given its set (the vehicle's, else its
         catalogue propeller's calibrated one); with a given ``params``, no rotor keeps its own.
     params : SectionParams
-        The set for every rotor without one of its own (pass it to :func:`propmap.vehicle_wrench`,
-        :func:`propmap.trim_vehicle` or :func:`propmap.hover_omega`).
+        The set for every rotor without one of its own, whose air the rotors are solved in (pass
+        it to :func:`propmap.vehicle_wrench`, :func:`propmap.trim_vehicle` or
+        :func:`propmap.hover_omega`).
     label : str
         The set's name or file; where the rotors' sets differ, "the vehicle's rotor sets: "
         followed by them.
@@ -146,20 +148,24 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     Without ``params``: each rotor takes its own set (its ``params`` entry), else the vehicle's
     own set (the file's top-level ``params``), else its catalogue propeller's calibrated set
     (:func:`propmap.default_params`), else the generic set; the vehicle's own set, where it is a
-    flight fit's file, gives its ``[body]`` table. Where every rotor's set is one, that set is
-    ``params``; where they differ, each rotor carries its own (``vehicle``) and ``params`` is the
-    vehicle's own set (its air the rotors') or, without one, the generic set. With ``params`` (as
-    ``--params``): that set for every rotor (the rotors' own sets dropped: ``dropped``) and, where
-    it is a file with a ``[body]`` table, its airframe.
+    flight fit's file, gives its ``[body]`` table (even where every rotor names a set of its
+    own). Where every rotor's set is one, that set is ``params`` (so a set every rotor names
+    comes before the vehicle's); where they differ, the rotors carry theirs (``vehicle``: each
+    rotor with a set of its own, the vehicle's or a calibrated one) and ``params`` is the
+    vehicle's own set, whose air the rotors are solved in, or without one the generic set, which
+    the rotors without any set take. With ``params`` (as ``--params``): that set for every rotor
+    (the rotors' own sets dropped: ``dropped``) and, where it is a file with a ``[body]`` table,
+    its airframe.
 
     Parameters
     ----------
     path : str or Path
         A vehicle file, or a bundled example vehicle's name (``"quadrotor"``,
         ``"neurobem_quadrotor"``: :func:`propmap.vehicle.file.vehicle_path`).
-    params : str or Path, optional
+    params : str, Path or SectionParams, optional
         A named set or a parameter file (:func:`propmap.resolve_params`; a relative path is taken
-        from the working directory, as ``--params`` is).
+        from the working directory, as ``--params`` is), or a section parameter set (its
+        ``label`` the record's; no ``[body]`` table).
 
     Returns
     -------
@@ -169,29 +175,38 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     ------
     VehicleFileError
         As :func:`propmap.read_vehicle`.
-    KeyError, ValueError, TypeError, OSError
+    TypeError
+        ``params`` of another type.
+    KeyError, ValueError, OSError
         ``params`` as :func:`propmap.resolve_params` raises them (an unknown set, a malformed
         file); :class:`propmap.io.params_file.ParamsFileError` for a malformed ``[body]`` table.
 
     Notes
     -----
-    The same resolution as ``propmap trim-vehicle`` and ``propmap wrench`` (tests/test_stop95.py
-    compares them); the commands add their warnings (a rotor's set calibrated on another
+    The resolution of ``propmap trim-vehicle`` and ``propmap wrench``, which call it
+    (tests/test_stop95.py compares the example quadrotor's trim and each case's sets with the
+    command's); the commands add their warnings (a rotor's set calibrated on another
     propeller, rotors' sets in other air than the command's) and their air options.
     """
     from ..io.calibration import default_params
     from ..io.catalogue import catalogue
     from ..io.inputs import show_path
     from ..io.param_sets import resolve_params
+    from ..core.airfoil import AirfoilParams, CamberedParams
+
+    given_set = isinstance(params, (AirfoilParams, CamberedParams))
+    if not (params is None or given_set or isinstance(params, (str, os.PathLike))):
+        raise TypeError(f"params must be a named set, a parameter file or a section parameter set, got "
+                        f"{type(params).__name__}")
     vehicle, data, path = _read_vehicle(path)
     folder = path.parent
     mine = _resolved_spec(data.get("params"), folder)  # (the vehicle's own set: checked by _read_vehicle)
-    # (mine: a path from the vehicle's folder, or a name)
-    vehicle, body_from = with_set_body(vehicle, params if params is not None else mine)
+    # (mine: its path from the working directory where it is a file beside the vehicle, else a name)
+    vehicle, body_from = with_set_body(vehicle, None if given_set else params if params is not None else mine)
     n = len(vehicle.rotors)
     if params is not None:
-        given = resolve_params(params)
-        label = str(params)
+        given = params if given_set else resolve_params(params)
+        label = (params.label or "the given set") if given_set else str(params)
         dropped = tuple(k + 1 for k, r in enumerate(vehicle.rotors) if r.params is not None)
         if dropped:
             vehicle = replace(vehicle, rotors=tuple(replace(r, params=None) for r in vehicle.rotors))
@@ -201,7 +216,9 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
                 default_params(p).label if p in catalogue() else None
                 for o, p in zip(_entry_specs(data, folder, "params"), names))
     own = tuple(None if o == "generic" else o for o in own)
-    mine_set = _rotor_params(mine, folder, show_path(path)) if mine is not None else None
+    # (the file's entry, from the vehicle's folder as _read_vehicle checked it: ``mine`` taken from there once more
+    # read another file where the vehicle was given with a folder, a review)
+    mine_set = _rotor_params(data["params"], folder, show_path(path)) if mine is not None else None
     spec = own[0] if own and own[0] is not None and len(set(own)) == 1 else None
     mixed = spec is None and any(own)
     if mixed:  # (each catalogue rotor carries its own calibrated set, or the vehicle's)
@@ -264,8 +281,9 @@ def read_vehicle_with_params(path):
         :func:`propmap.read_vehicle`'s, with the set's ``[body]`` table in place of the file's
         airframe where the set is a file that has one (:func:`with_body_table`).
     params : SectionParams
-        The set for the rotors without one of its own (the vehicle's own set, else its rotors'
-        one set, else the generic set; :func:`resolve_vehicle`, whose record says more): pass it
+        The set for the rotors without one of their own (the rotors' one set where every rotor's
+        is one, else the vehicle's own set, else the generic set; :func:`resolve_vehicle`, whose
+        record says more): pass it
         to :func:`propmap.vehicle_wrench`, :func:`propmap.trim_vehicle` or
         :func:`propmap.hover_omega`, with its air (``params.air``), as the commands do. (Until
         2026-12-01 None where the file names no set of its own, where the commands took the
