@@ -242,3 +242,21 @@ def test_trim_vehicle_reads_the_vehicle_file_once(monkeypatch, capsys):
     code, _, err = run(capsys, "trim-vehicle", "--vehicle", "neurobem_quadrotor", "--airspeed", "0")
     assert code == 0, err
     assert calls.count("neurobem_quadrotor.toml") == 1
+
+
+@pytest.mark.parametrize("rows, said", [
+    ('6000,0,0\n"12,000",5,90\n', "got '12,000' (a thousands separator? write 12000: a points file is read without"),
+    ("rpm,m/s,deg\n6000,0,0\n", "line 2: rpm must be a finite number in [1, 954929], got 'rpm' (a units row? give "
+                                "each unit in its column's name"),
+    ("6000,0,0\n7000,x,90\n", "line 3: airspeed must be a finite number in [0, 500], got 'x'"),  # (no cause guessed)
+])
+def test_a_points_cell_that_is_no_number_names_its_likely_cause(tmp_path, capsys, rows, said):
+    """`loads --points` refuses thousands separators and a units row (the load files read both:
+    two CSV front ends, stop 94's noticed-and-left); its refusal now says which, where it is one."""
+    path = tmp_path / "p.csv"
+    path.write_text("rpm,airspeed (m/s),incidence_deg\n" + rows, encoding="utf-8")
+    code, out, err = run(capsys, "loads", "apce_8x6", "--points", path, "--out", tmp_path / "o.csv")
+    assert code == 2 and said in err and err.count("\n") == 1, err
+    assert not (tmp_path / "o.csv").exists()
+    if "x" in rows:
+        assert err.rstrip().endswith("got 'x'")

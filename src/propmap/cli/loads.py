@@ -89,6 +89,22 @@ def _points_reader(path: Path, chunksize: int):
     return reader, names, sep, mapped
 
 
+#: a number written with thousands separators ('12,000', '1,234.5'), which a points file does not read
+_GROUPED = re.compile(r"[+-]?\d{1,3}(,\d{3})+(\.\d*)?")
+
+
+def _cell_hint(cell: str, sep: str, first: bool) -> str:
+    """The likely cause of a points cell that is not a number: thousands separators in a
+    comma-separated file ('12,000', quoted), or, in the first row (``first``), a units row under
+    the header ('m/s', 'deg'; the load files read both, the points file neither: stop 94's
+    noticed-and-left)."""
+    if sep == "," and _GROUPED.fullmatch(cell):
+        return f" (a thousands separator? write {cell.replace(',', '')}: a points file is read without grouping)"
+    if first and cell and not any(ch.isdigit() for ch in cell):
+        return " (a units row? give each unit in its column's name, e.g. 'airspeed (m/s)', 'incidence (deg)')"
+    return ""
+
+
 def _points_header(path: Path, where: str) -> tuple[str, str]:
     """The points file's first line (decoded, without a UTF-8 BOM) and its separator; refuses a file
     that cannot be read, is not a regular file, too large, has NUL bytes (UTF-16), a header over
@@ -245,7 +261,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                         why = (NEGATIVE_INCIDENCE if c == "incidence_deg" and -180 <= v[i] < 0 else
                                f" (the parameter set's collective {offset_deg:g} deg is added to it, the sum within "
                                f"[-{COLLECTIVE_DEG_MAX:g}, {COLLECTIVE_DEG_MAX:g}])"
-                               if c == COLLECTIVE_COLUMN and offset_deg else "")
+                               if c == COLLECTIVE_COLUMN and offset_deg else
+                               _cell_hint(str(text.iloc[i]), sep, first=rows == 0 and i == 0))
                         raise InputError(f"--points: {path}, line {lines[i]}: {c} must be a finite number in "
                                          f"[{lo:g}, {hi:g}], got {str(df[name].iloc[i])[:40]!r}{why}")
                     values[c] = v
