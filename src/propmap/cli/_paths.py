@@ -65,7 +65,7 @@ _PACKAGE = os.path.realpath(Path(__file__).resolve().parents[1])
 def vehicle_inputs(vehicle) -> list:
     """The files a vehicle TOML names (its own parameter file, its top-level ``params``, and its
     rotors' geometry and parameter files: ``[[rotors]] propeller`` and ``params`` entries that
-    are files, as the vehicle reader resolves them, :func:`propmap.vehicle.file.rotor_file_specs`):
+    are files, as the vehicle reader resolves them, :func:`propmap.vehicle.own_set.vehicle_files`):
     inputs of any command given the vehicle, never to be written over. Best effort: the vehicle
     reader reports a malformed file; None or an unreadable file gives []."""
     from ..vehicle.file import VehicleFileError

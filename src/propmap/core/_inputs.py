@@ -131,11 +131,10 @@ def _as_array(name: str, value) -> np.ndarray:
 
 def _scalar(name: str, value) -> float:
     """Fast path for a Python or NumPy real scalar (no array machinery)."""
-    lo, hi, _ = _RANGES[name]
+    lo, hi, unit = _RANGES[name]
     try:
         x = float(value)
     except OverflowError:  # an int beyond the float range (said as such: 10**400 was told "got inf", an API audit)
-        lo, hi, unit = _RANGES[name]
         digits = int(abs(int(value)).bit_length() * math.log10(2)) + 1  # (not str(): Python refuses 4300 digits)
         raise ValueError(f"{name} must be finite and in [{lo:g}, {hi:g}] {unit}; got an integer of about "
                          f"{digits} digits, beyond any float") from None

@@ -69,8 +69,6 @@ def vehicle_files(path) -> list[Path]:
     VehicleFileError
         The file cannot be read as TOML.
     """
-    import os
-
     path = vehicle_path(path)
     data = load_toml(path, VehicleFileError)
     specs = [_resolved_spec(data.get("params"), path.parent),
