@@ -214,8 +214,8 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
                 default_params(p).label if p in catalogue() else None
                 for o, p in zip(_entry_specs(data, folder, "params"), names))
     own = tuple(None if o == "generic" else o for o in own)
-    # (the file's entry, from the vehicle's folder as _read_vehicle checked it: ``mine`` taken from there once more
-    # read another file where the vehicle was given with a folder, a review)
+    # (the file's entry, read from the vehicle's folder as _read_vehicle checked it; ``mine``, already a path from the
+    # working directory, read from that folder once more took another file where the vehicle's path had one: a review)
     mine_set = _rotor_params(data["params"], folder, show_path(path)) if mine is not None else None
     spec = own[0] if own and own[0] is not None and len(set(own)) == 1 else None
     mixed = spec is None and any(own)
@@ -281,9 +281,8 @@ def read_vehicle_with_params(path):
     params : SectionParams
         The set for the rotors without one of their own (the rotors' one set where every rotor's
         is one, else the vehicle's own set, else the generic set; :func:`resolve_vehicle`, whose
-        record says more): pass it
-        to :func:`propmap.vehicle_wrench`, :func:`propmap.trim_vehicle` or
-        :func:`propmap.hover_omega`, with its air (``params.air``), as the commands do. (Until
+        record says more): pass it to :func:`propmap.vehicle_wrench`, :func:`propmap.trim_vehicle`
+        or :func:`propmap.hover_omega`, with its air (``params.air``), as the commands do. (Until
         2026-12-01 None where the file names no set of its own, where the commands took the
         rotors' catalogue propeller's calibrated set.)
 
