@@ -103,7 +103,7 @@ def with_body_table(vehicle: Vehicle, table) -> Vehicle:
     return vehicle
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # (compared by identity: a Vehicle's arrays have no one truth value, an audit)
 class ResolvedVehicle:
     """A vehicle with its parameter sets, as :func:`resolve_vehicle` resolves them.
 
