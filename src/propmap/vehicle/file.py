@@ -208,17 +208,18 @@ def _rotor_params(spec, folder: Path, where: str):
         raise VehicleFileError(f"{where}: params: {msg}") from None
 
 
-def _own_params(spec, folder: Path, name: str, data: dict) -> None:
+def _own_params(spec, folder: Path, name: str, data: dict):
     """Check the vehicle's own parameter set (its top-level ``params``): readable, and not a file
     whose ``[body]`` table gives what the vehicle file ``data`` gives too (the airframe's drag, a
-    centre of mass, the rotor interference: the set's would replace the file's without a word)."""
+    centre of mass, the rotor interference: the set's would replace the file's without a word).
+    Returns (the set, its file's ``[body]`` table or None), which resolve_vehicle applies."""
     from ..io.params_file import read_body
 
-    _rotor_params(spec, folder, name)
+    own = _rotor_params(spec, folder, name)
     local = _local_file(spec, folder)
     table = read_body(local) if local is not None else None
     if table is None:
-        return
+        return own, None
     both = [key for key, theirs in (("[body]", table.drag), ("centre_of_mass", table.centre_of_mass),
                                     ("rotor_interference", table.rotor_interference))
             if theirs is not None and key.strip("[]") in data]
@@ -226,6 +227,7 @@ def _own_params(spec, folder: Path, name: str, data: dict) -> None:
         raise VehicleFileError(f"{name}: {', '.join(both)} and params: {short_path(spec, quote=True)}'s [body] table "
                                f"gives {'it' if len(both) == 1 else 'them'} too (a flight fit's airframe), which the "
                                "vehicle commands would take in place of the file's: give one of them")
+    return own, table
 
 
 def _propeller(spec, folder: Path, where: str, diameter_in: float | None = None,
@@ -360,9 +362,11 @@ def read_vehicle(path) -> Vehicle:
     return _read_vehicle(path)[0]
 
 
-def _read_vehicle(path) -> tuple[Vehicle, dict, Path]:
-    """(vehicle, the file's TOML table, the file): :func:`read_vehicle` with what it read, so that
-    :func:`propmap.vehicle.own_set.resolve_vehicle` takes the entries from the same reading."""
+def _read_vehicle(path) -> tuple[Vehicle, dict, Path, tuple | None]:
+    """(vehicle, the file's TOML table, the file, (its own set, that set's [body] table or None) or
+    None where it names none): :func:`read_vehicle` with what it read, so that
+    :func:`propmap.vehicle.own_set.resolve_vehicle` takes the entries and the set from the same
+    reading (it read the set's file twice more until 2026-12-01)."""
     given, path = path, vehicle_path(path)
     name = show_path(path)
     data = _vehicle_table(given, path)
@@ -382,8 +386,9 @@ def _read_vehicle(path) -> tuple[Vehicle, dict, Path]:
                                f"m, got {short_repr(data['centre_of_mass'])}")
     tau = _number(data.get("motor_time_constant", 0.0), f"{name}: motor_time_constant", "s", MOTOR_TAU_RANGE)
     kappa = _number(data.get("rotor_interference", 0.0), f"{name}: rotor_interference", "", INTERFERENCE_RANGE)
+    own = None
     if "params" in data:  # (checked, not applied: the vehicle commands' default of --params, module docstring)
-        _own_params(data["params"], path.parent, name, data)
+        own = _own_params(data["params"], path.parent, name, data)
     rotors, props = [], {}
     if not isinstance(data["rotors"], list) or not data["rotors"]:
         raise VehicleFileError(f"{name}: 'rotors' must be a non-empty array of tables ([[rotors]])")
@@ -397,7 +402,7 @@ def _read_vehicle(path) -> tuple[Vehicle, dict, Path]:
                                "z-down frame's (FRD, PX4's) axis [0, 0, -1] is [0, 0, 1] here")
     _warn_implausible(name, rotors, mass, inertia, cg, kappa)
     return Vehicle(mass=mass, rotors=tuple(rotors), gravity=gravity, body_area=area, inertia=inertia, body_drag=body,
-                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text), data, path
+                   centre_of_mass=cg, motor_time_constant=tau, rotor_interference=kappa, **text), data, path, own
 
 
 def _vehicle_table(given, path: Path) -> dict:

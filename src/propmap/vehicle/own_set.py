@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..io.toml_file import load_toml
-from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, _rotor_params, vehicle_path
+from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
 
 __all__ = ["ResolvedVehicle", "read_vehicle_with_params", "resolve_vehicle", "vehicle_files", "vehicle_params_file",
@@ -196,11 +196,16 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     if not (params is None or given_set or isinstance(params, (str, os.PathLike))):
         raise TypeError(f"params must be a named set, a parameter file or a section parameter set, got "
                         f"{type(params).__name__}")
-    vehicle, data, path = _read_vehicle(path)
+    vehicle, data, path, own_read = _read_vehicle(path)
     folder = path.parent
-    mine = _resolved_spec(data.get("params"), folder)  # (the vehicle's own set: checked by _read_vehicle)
-    # (mine: its path from the working directory where it is a file beside the vehicle, else a name)
-    vehicle, body_from = with_set_body(vehicle, None if given_set else params if params is not None else mine)
+    # the vehicle's own set as _read_vehicle read and checked it (its entry as a path from the working directory
+    # where it is a file beside the vehicle, else a name), with its file's [body] table
+    mine = _resolved_spec(data.get("params"), folder)
+    mine_set, mine_table = own_read if own_read is not None else (None, None)
+    if params is None:
+        vehicle, body_from = with_body_table(vehicle, mine_table), (None if mine_table is None else mine)
+    else:
+        vehicle, body_from = with_set_body(vehicle, None if given_set else params)
     n = len(vehicle.rotors)
     if params is not None:
         given = params if given_set else resolve_params(params)
@@ -214,9 +219,6 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
                 default_params(p).label if p in catalogue() else None
                 for o, p in zip(_entry_specs(data, folder, "params"), names))
     own = tuple(None if o == "generic" else o for o in own)
-    # (the file's entry, read from the vehicle's folder as _read_vehicle checked it; ``mine``, already a path from the
-    # working directory, read from that folder once more took another file where the vehicle's path had one: a review)
-    mine_set = _rotor_params(data["params"], folder, show_path(path)) if mine is not None else None
     spec = own[0] if own and own[0] is not None and len(set(own)) == 1 else None
     mixed = spec is None and any(own)
     if mixed:  # (each catalogue rotor carries its own calibrated set, or the vehicle's)
