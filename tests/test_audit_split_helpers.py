@@ -1,8 +1,9 @@
 """A mutation audit of the helpers split out of four long functions (2026-11-30): identify/flight.py
 (_flight_names, _start_values, _FlightModel), identify/level_flight_fit.py (_level_flight_names,
-_level_flight_residual, _select_body_lift), cli/map.py (_check_options, _check_vehicle_rotors, _with_collective,
-_write_c_header) and cli/trim.py (_check_options, _trim, _echo_text). Each test kills a hand-made mutant that
-survived the modules' own test files, by the documented behaviour it changed."""
+_level_flight_residual, _select_body_lift), cli/map.py (_check_options, _check_vehicle_rotors
+(_one_map_vehicle since stop 96), _with_collective, _write_c_header) and cli/trim.py
+(_check_options, _trim, _echo_text). Each test kills a hand-made mutant that survived the
+modules' own test files, by the documented behaviour it changed."""
 
 import json
 import math
@@ -191,14 +192,15 @@ def _quad_with(tmp_path, rotor, old, new):
 
 
 def test_map_refuses_a_vehicle_rotor_with_its_own_set_before_the_build_naming_it(tmp_path, capsys):
-    """Mutants M6 (a rotor's own parameter set let through _check_vehicle_rotors: refused only after the build, by
+    """Mutants M6 (a rotor's own parameter set let through
+    _check_vehicle_rotors, now _one_map_vehicle: refused only after the build, by
     the header's writer, in other words) and M7 (the rotor numbered from 0): rotor 3 of the quadrotor with the
     generic set of its own is refused before any map is built, as rotor 3, and nothing is written."""
     veh = _quad_with(tmp_path, 3, 'propeller = "apce_8x6"', 'propeller = "apce_8x6"\nparams = "generic"')
     code, _, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID, "--out", tmp_path / "m.h")
-    assert one_line_error(code, err, "--vehicle: rotor 3 carries apce_8x6 (0.2032 m, 2 blades) with its own "
-                                     "parameters, not the map's apce_8x6 (0.2032 m, 2 blades) and its set: a C "
-                                     "header holds one map and one set"), err
+    assert one_line_error(code, err, "--vehicle: rotor 3 carries its own parameter set (generic), not the map's, "
+                                     "calibrated:apce_8x6: a C header holds one map and one set (give --params the "
+                                     "rotors' set, or a vehicle without the rotors' params)"), err
     assert not (tmp_path / "m.h").exists()
 
 

@@ -49,21 +49,22 @@ def _default_spec(path, params_spec):
 
 
 def _own_spec_for(path, propeller):
-    """The vehicle file's own parameter set, or else its rotors' one set (each rotor's ``params``,
-    all the same), where ``propeller`` (export-sim's PROP) is every rotor's geometry, else None:
-    export-sim's default of --params with --vehicle (the vehicle's set is its rotors', not another
-    propeller's; a review found apce_8x6 exported with the NeuroBEM rotors' fit)."""
+    """The set a one-propeller export of the vehicle takes without --params (export-sim --vehicle, map
+    --format c --vehicle), where ``propeller`` (PROP) is every rotor's geometry: the one set the vehicle
+    names for every rotor, as :func:`propmap.resolve_vehicle` orders them (each rotor's own set, else the
+    vehicle file's own); None (PROP's default) where it names none, or not one for all, or a rotor carries
+    another propeller. (The vehicle's set is its rotors', not another propeller's: a review found apce_8x6
+    exported with the NeuroBEM rotors' fit. Until 2026-12-01 the vehicle's own set came first here, and
+    export-sim refused a vehicle whose rotors all name another set, which trim-vehicle hovers with: stop
+    96. The rotors' one set: the export took PROP's default and hovered 9.9% slower than trim-vehicle
+    where the rotors' set was fitted at rho 1.0, an air-consistency audit, 2026-12-01.)"""
     from ..vehicle.file import rotor_file_specs
 
-    spec = _default_spec(path, None)
+    mine = _default_spec(path, None)
     if not all(r.propeller.same_geometry(propeller) for r in _vehicle(path).rotors):
         return None
-    specs = set(rotor_file_specs(path))
-    if spec is None and len(specs) == 1 and None not in specs:
-        # (the rotors' one set, as trim-vehicle takes it: the export took PROP's default and hovered 9.9% slower
-        # than trim-vehicle where the rotors' set was fitted at rho 1.0, an air-consistency audit, 2026-12-01)
-        spec = specs.pop()
-    return spec
+    specs = {s if s is not None else mine for s in rotor_file_specs(path)}
+    return specs.pop() if len(specs) == 1 else None
 
 
 def _fitted_vehicle(path: Path, params_spec, own: bool = True):

@@ -81,8 +81,8 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")
 @click.option("--params", "params_spec", default=None,
-              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the vehicle file's own params, "
-                                 "else its rotors' one set where every rotor names the same.")
+              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the one set the vehicle names "
+                                 "for every rotor (the rotors' own params, else the vehicle file's).")
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options
@@ -103,7 +103,7 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
     given_spec = params_spec  # (--params as given: its [body] table, else the vehicle file's own set's)
-    if vehicle is not None and params_spec is None:  # (the vehicle file's own set, where PROP is its rotors')
+    if vehicle is not None and params_spec is None:  # (the set the vehicle names for every rotor, where PROP is theirs)
         from ._vehicle import _own_spec_for
 
         params_spec = _own_spec_for(vehicle, propeller)

@@ -125,7 +125,8 @@ with_plot_options = option_group("plot", PlotChoice, plot_options)
 @click.argument("prop", required=False)
 @with_axis_options
 @click.option("--params", "params_spec", default=None,
-              help=PARAMS_HELP + " With --vehicle: the vehicle file's own params, where it names them.")
+              help=PARAMS_HELP + " With --vehicle: the one set the vehicle names for every rotor (the rotors' own "
+                                 "params, else the vehicle file's), where it names one.")
 @click.option("--collective-deg", type=float, default=None,
               help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
                    "(the sum within [-30, 30]); stored with the map's parameters.")
@@ -181,8 +182,10 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     if c_header.vehicle is not None:
         from ._vehicle import _default_spec, _fitted_vehicle
 
-        params_spec = _default_spec(c_header.vehicle, params_spec)  # (the vehicle's own set, without --params)
-        veh, _ = _fitted_vehicle(c_header.vehicle, params_spec)  # a flight fit's [body] table: its airframe drag
+        # a flight fit's [body] table (its airframe drag): from --params, else from the vehicle file's own set, not
+        # from a rotor's set (as export-sim --vehicle takes it)
+        body_spec = params_spec if params_spec is not None else _default_spec(c_header.vehicle, None)
+        veh, _ = _fitted_vehicle(c_header.vehicle, body_spec, own=False)
 
     import numpy as np
 
@@ -195,9 +198,13 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         rpm, V, inc = _axes(median, axes, len(names))
     else:
         propeller = prop_choice.load(prop)
-        if veh is not None:  # refused before the build, not after it
-            _check_vehicle_rotors(veh, propeller)
+        if veh is not None and params_spec is None:  # (the set the vehicle names for every rotor, as export-sim's)
+            from ._vehicle import _own_spec_for
+
+            params_spec = _own_spec_for(c_header.vehicle, propeller)
         params, air, label = load_params(params_spec, prop)
+        if veh is not None:  # refused before the build, not after it
+            veh = _one_map_vehicle(veh, propeller, params, label)
         air = resolve_air(air, air_choice)
         check_section_match(propeller, label, collective_deg or 0.0)
         data_label = label  # (the set whose data coverage the envelope is checked against)
@@ -274,18 +281,29 @@ def _check_options(ctx, prop, out, fmt, c_header: CHeaderChoice, check_points, a
     return only
 
 
-def _check_vehicle_rotors(veh, propeller) -> None:
-    """--vehicle with --format c: every rotor must carry the map's propeller (its geometry, not its
-    name: a geometry file read with other blades) and no parameter set of its own."""
+def _one_map_vehicle(veh, propeller, params, label: str):
+    """--vehicle with --format c: the vehicle whose body wrench the header adds, every rotor on the
+    map's propeller (its geometry, not its name: a geometry file read with other blades) and set; a
+    rotor's own set that is the map's (but for its air: every rotor is solved in the map's) is
+    taken off the rotor, another is refused. (Until 2026-12-01 a rotor's own set was refused even
+    where it was the map's: a vehicle whose rotors all name ``generic`` had no header, with or
+    without ``--params generic``, stop 96.)"""
+    from dataclasses import replace
+
     for k, r in enumerate(veh.rotors):
-        if not r.propeller.same_geometry(propeller) or r.params is not None:
-            other = ("" if r.propeller.same_geometry(propeller) else ", another chord or blade angle" if
+        if not r.propeller.same_geometry(propeller):
+            other = (", another chord or blade angle" if
                      propeller.same_size(r.propeller.diameter, r.propeller.n_blades, rtol=5e-5) else "")
-            own = " with its own parameters" if r.params is not None else ""
             raise InputError(f"--vehicle: rotor {k + 1} carries {r.propeller.name} ({r.propeller.diameter:.4g} "
-                             f"m, {r.propeller.n_blades} blades{other}){own}, not the map's "
-                             f"{propeller.name} ({propeller.diameter:.4g} m, {propeller.n_blades} blades)"
-                             f"{' and its set' if own else ''}: a C header holds one map and one set")
+                             f"m, {r.propeller.n_blades} blades{other}), not the map's {propeller.name} "
+                             f"({propeller.diameter:.4g} m, {propeller.n_blades} blades): a C header holds one map "
+                             "and one set")
+        if r.params is not None and replace(r.params, air=params.air) != params:
+            theirs = f" ({r.params.label})" if r.params.label else ""
+            raise InputError(f"--vehicle: rotor {k + 1} carries its own parameter set{theirs}, not the map's, "
+                             f"{label}: a C header holds one map and one set (give --params the rotors' set, or a "
+                             "vehicle without the rotors' params)")
+    return replace(veh, rotors=tuple(replace(r, params=None) for r in veh.rotors))
 
 
 def _with_collective(params, label: str, collective_deg: float):

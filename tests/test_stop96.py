@@ -1,0 +1,92 @@
+"""What stop 95 left alone, fixed at stop 96 (2026-12-01). Each test fails on the code before its
+fix; the guards say so. Data: the bundled example vehicles (the example quadrotor on the
+catalogue's APC 8x6E, APC PE0 geometry; the NeuroBEM quadrotor's flight fit, docs/flight.md)."""
+
+import json
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+import propmap as pm
+
+from .cli_helpers import run
+
+EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
+FIT = EXAMPLES / "neurobem_quadrotor.params.toml"  # (a flight fit: a [body] table, rho 1.204)
+GRID = ["--rpm", "2000:12000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:4", "--check-points", "0"]
+
+
+def _quad(tmp_path, top="", rotor_params=None):
+    """The example quadrotor (four catalogue apce_8x6) with a top-level entry and each rotor's
+    ``params`` (None: none)."""
+    head, *rotors = (EXAMPLES / "quadrotor.toml").read_text().split("[[rotors]]")
+    extra = [""] * 4 if rotor_params is None else [f'params = "{p}"' if p else "" for p in rotor_params]
+    text = head + top + "\n" + "".join("[[rotors]]" + r.rstrip("\n") + "\n" + e + "\n" for r, e in zip(rotors, extra))
+    shutil.copy(FIT, tmp_path / "fit.toml")
+    (tmp_path / "v.toml").write_text(text, encoding="utf-8")
+    return tmp_path / "v.toml"
+
+
+def _header_set(path):
+    """The parameter set a C header names ("Parameters: NAME; air ...") and its airframe's drag row."""
+    text = path.read_text()
+    return (re.search(r"Parameters: ([^;]+);", text).group(1),
+            re.search(r"_body_cd\[3\] = \{([^}]*)\}", text).group(1))
+
+
+@pytest.mark.parametrize("given", [None, "generic"])
+def test_a_c_header_takes_a_vehicle_whose_rotors_all_name_the_map_s_set(tmp_path, capsys, given):
+    """`map --format c --vehicle` refused every rotor with a set of its own, even the map's own set:
+    a vehicle whose rotors all name `generic` had no header, with or without `--params generic`
+    (stop 96). Now the set every rotor names is the map's default, as in export-sim and
+    trim-vehicle, and a rotor's set that is the map's is taken."""
+    veh = _quad(tmp_path, rotor_params=["generic"] * 4)
+    args = [] if given is None else ["--params", given]
+    code, out, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID, *args,
+                         "--out", tmp_path / "m.h")
+    assert code == 0, err
+    label, cd = _header_set(tmp_path / "m.h")
+    assert label == "generic" and cd == "0, 0, 0"  # (the example quadrotor has no airframe drag table)
+
+
+def test_a_c_header_refuses_a_rotor_set_other_than_the_map_s_naming_both(tmp_path, capsys):
+    """A rotor whose own set is not the map's is refused before the build, saying both sets."""
+    veh = _quad(tmp_path, rotor_params=["generic"] * 4)
+    code, out, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID,
+                         "--params", "gill2017-apc", "--out", tmp_path / "m.h")
+    assert code == 2 and err.count("\n") == 1
+    assert err == ("propmap: error: --vehicle: rotor 1 carries its own parameter set (generic), not the map's, "
+                   "gill2017-apc: a C header holds one map and one set (give --params the rotors' set, or a vehicle "
+                   "without the rotors' params)\n")
+    assert not (tmp_path / "m.h").exists()
+
+
+def test_the_exports_take_the_rotors_one_set_before_the_vehicle_s_as_trim_vehicle_does(tmp_path, capsys):
+    """A vehicle with its own set (a NeuroBEM flight fit) whose rotors all name gill2017-apc:
+    trim-vehicle hovers on gill2017-apc (the set every rotor names comes first,
+    propmap.resolve_vehicle), but export-sim --vehicle took the vehicle's own set and then refused
+    the rotors' sets as not its own, and the C header refused them too (stop 96). Now both take the
+    rotors' set, with the vehicle's own set's [body] table (the airframe's drag); the export's hover
+    is trim-vehicle's."""
+    veh = _quad(tmp_path, top='params = "fit.toml"', rotor_params=["gill2017-apc"] * 4)
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", veh, "--json", "--airspeed", "0")
+    assert code == 0, err
+    trim = json.loads(out)
+    assert trim["params"] == "gill2017-apc"
+    hover_rpm = trim["trims"][0]["rotor_rpm"][0]
+    code, out, err = run(capsys, "export-sim", "apce_8x6", "--vehicle", veh, "--target", "rotorpy",
+                         "--out", tmp_path / "q.py", "--json")
+    assert code == 0, err
+    report = json.loads((tmp_path / "q.report.json").read_text())
+    assert report["params"] == "gill2017-apc"
+    assert report["errors"]["hover"]["rpm"] == pytest.approx(hover_rpm, rel=1e-6)
+    code, out, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID,
+                         "--out", tmp_path / "m.h")
+    assert code == 0, err
+    label, cd = _header_set(tmp_path / "m.h")
+    body = pm.read_vehicle_with_params(veh)[0].body_drag  # (the flight fit's airframe, from the vehicle's own set)
+    assert label == "gill2017-apc" and body is not None
+    assert [float(x) for x in cd.split(",")] == pytest.approx(
+        [1.225 * a / 2 for a in body.drag_area], rel=1e-12)
