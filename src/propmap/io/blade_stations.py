@@ -22,6 +22,9 @@ class GeometryFileError(ValueError):
     found_header: str | None = None
 
 
+#: the largest c/R of a UIUC file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
+#: APC's 66 PE0 files in the shared data: 0.161-0.235): a chord in inches gave 3.4x the thrust, c/D half
+CHORD_MAX_PLAUSIBLE = (0.12, 0.6)
 #: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)
 LAST_STATION_MIN = 0.9
 #: a UIUC file whose last station lies inside this r/R is refused: the outer blade, which makes most of

@@ -30,8 +30,8 @@ from pathlib import Path
 import numpy as np
 
 from ..core.geometry import INCH, Propeller, rotor_like
-from .blade_stations import (FIRST_STATION_MAX, LAST_STATION_MIN, LAST_STATION_REFUSED, GeometryFileError,
-                             _refuse_short_blade, _warn_partial_blade)
+from .blade_stations import (CHORD_MAX_PLAUSIBLE, FIRST_STATION_MAX, LAST_STATION_MIN, LAST_STATION_REFUSED,
+                             GeometryFileError, _refuse_short_blade, _warn_partial_blade)
 from .inputs import _check_column, _check_number, _clip, _read_table, _read_text, as_path, show_path
 from .pe0 import _apc_pe0, read_apc_pe0
 
@@ -47,9 +47,6 @@ SIZE_HINT = ("give the diameter (--diameter-in; read_geometry's diameter_in) or 
 MM_FAMILIES = frozenset({"ef", "kpf", "pl", "vp"})
 #: plausible diameters derived from a file name [in]
 NAME_DIAMETER_RANGE_IN = (0.5, 100.0)
-#: the largest c/R of a UIUC file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
-#: APC's 66 PE0 files in the shared data: 0.161-0.235): a chord in inches gave 3.4x the thrust, c/D half
-CHORD_MAX_PLAUSIBLE = (0.12, 0.6)
 #: a name's size ``<D>x<P>``; D not after a digit, point or comma: ``kp_4,9x3,1`` (a decimal comma) gives no size,
 #: not 9 in (taken silently from a data file's name and the geometry file's; a mutation audit, 2026-11-29)
 _NAME_RE = re.compile(r"(?<![\d.,])(?P<D>\d+(?:\.\d+)?)x(?P<P>\d+(?:\.\d+)?)", re.ASCII | re.IGNORECASE)
