@@ -1,5 +1,6 @@
-"""The checks of a blade's stations that both geometry readers share (UIUC ``r/R c/R beta`` files,
-io/geometry_files.py, and APC PE0 files, io/pe0.py), and the error they raise.
+"""The checks of a blade's stations that the geometry readers share (UIUC ``r/R c/R beta`` files,
+io/geometry_files.py, APC PE0 files, io/pe0.py, and QPROP propeller files, io/qprop_file.py), and
+the error they raise.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ class GeometryFileError(ValueError):
     found_header: str | None = None
 
 
-#: the largest c/R of a UIUC file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
+#: the largest c/R of a UIUC or QPROP file outside this range is warned (the catalogue's 147 propellers: 0.153-0.390;
 #: APC's 66 PE0 files in the shared data: 0.161-0.235): a chord in inches gave 3.4x the thrust, c/D half
 CHORD_MAX_PLAUSIBLE = (0.12, 0.6)
 #: a UIUC file whose last station lies inside this r/R is extrapolated to the tip (warned)

@@ -2,8 +2,11 @@
 
 * UIUC Propeller Data Site (Brandt & Selig, AIAA 2011-1255) geometry ``r/R c/R beta``.
 * APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915): io/pe0.py's
-  reader, re-exported here; :func:`read_geometry` chooses between the two by the file's text.
-  The checks of the stations that both share are io/blade_stations.py's.
+  reader, re-exported here.
+* QPROP propeller files (M. Drela, QPROP 1.22, 2007): io/qprop_file.py's reader.
+
+:func:`read_geometry` chooses among the three by the file's text. The checks of the stations
+that they share are io/blade_stations.py's.
 
 Every reader raises :class:`GeometryFileError` (a ValueError) with a one-line message naming
 the file, the line where known and, for a value out of range, the valid range: UIUC r/R in
@@ -34,6 +37,8 @@ from .blade_stations import (CHORD_MAX_PLAUSIBLE, FIRST_STATION_MAX, LAST_STATIO
                              GeometryFileError, _refuse_short_blade, _warn_partial_blade)
 from .inputs import _check_column, _check_number, _clip, _read_table, _read_text, as_path, show_path
 from .pe0 import _apc_pe0, read_apc_pe0
+from .qprop_file import _geometry as _qprop_geometry
+from .qprop_file import _is_qprop
 
 __all__ = ["GeometryFileError", "read_uiuc_geometry", "read_apc_pe0", "read_geometry", "geometry_format", "MM_FAMILIES",
            "NAME_DIAMETER_RANGE_IN", "blade_angle_from_name", "name_without_blade_angle",
@@ -330,7 +335,14 @@ def _looks_like_radians(r_over_R, beta) -> bool:
 
 
 def _format(text: str) -> str | None:
-    """``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text."""
+    """``"qprop"``, ``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text.
+
+    QPROP first: its signature (a name line, then a line of one or two numbers, the blade count
+    first, and one starting with a number, no ``r/R`` header line; io/qprop_file.py) is narrower than
+    PE0's words, which a QPROP comment line may hold; a PE0 file's second line is text, and a UIUC
+    file has its header."""
+    if _is_qprop(text):
+        return "qprop"
     head = text[:4000]
     if "STATION" in head and "TWIST" in head:
         return "pe0"
@@ -347,9 +359,10 @@ def geometry_format(path) -> str | None:
     Returns
     -------
     str or None
-        ``"pe0"`` (an APC PE0 file: it states its radius and blade count), ``"uiuc"`` (a UIUC
-        ``r/R c/R beta`` table: neither), or None for a file that cannot be read as text or is
-        in neither format. Never raises.
+        ``"pe0"`` (an APC PE0 file: it states its radius and blade count), ``"qprop"`` (a
+        QPROP propeller file: both too), ``"uiuc"`` (a UIUC ``r/R c/R beta`` table: neither),
+        or None for a file that cannot be read as text or is in none of these formats. Never
+        raises.
     """
     try:
         return _format(_read_text(as_path(path), GeometryFileError))
@@ -379,21 +392,39 @@ def _same_diameter(given: float, own: float) -> bool:
     return decimals <= 3 and math.isclose(round(own, decimals), given, rel_tol=1e-9) and abs(given / own - 1) < 0.02
 
 
+def _own_size(path: Path, prop: Propeller, diameter_in, n_blades, kind: str, states: str) -> Propeller:
+    """``prop``, read from a file that states its own size (PE0, QPROP): a ``diameter_in`` or
+    ``n_blades`` given beside it is refused unless it is the file's own (the diameter to the
+    given's precision, :func:`_same_diameter`); ``states`` says where the file gives its blade count."""
+    if diameter_in is not None:
+        _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
+        if not _same_diameter(diameter_in, prop.diameter / 0.0254):  # bare "must be real number")
+            raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a {kind} file gives "
+                                    f"its own radius (diameter {prop.diameter / 0.0254:.8g} in): leave the "
+                                    "option out (it applies to UIUC files), or give that diameter, to fewer "
+                                    "decimals if you like (within 2%)")
+    if n_blades is not None and n_blades != prop.n_blades:
+        raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the {kind} file states {states}"
+                                f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "
+                                "the thrust nearly in proportion)")
+    return prop
+
+
 def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | None = None) -> Propeller:
-    """Read a geometry file, choosing the reader by content (PE0 or UIUC ``r/R c/R beta``).
+    """Read a geometry file, choosing the reader by content (PE0, QPROP or UIUC ``r/R c/R beta``).
 
     Parameters
     ----------
     path : str or Path
     diameter_in : float, optional
-        For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS, and
-        a different ``diameter_in`` is refused, except the file's diameter rounded to the
-        given's 0 to 3 decimals, within 2% (a nominal 4.2 in for a PE0 radius of 2.09 in,
-        4.18 in, or 10 for 10.08 in; not 4 for 4.18 in, 4.4% off), and the file's diameter is
-        used.
+        For a UIUC file (see :func:`read_uiuc_geometry`); a PE0 file gives its RADIUS and a
+        QPROP file its R (or its last station's radius), and a different ``diameter_in`` is
+        refused, except the file's diameter rounded to the given's 0 to 3 decimals, within
+        2% (a nominal 4.2 in for a PE0 radius of 2.09 in, 4.18 in, or 10 for 10.08 in; not 4
+        for 4.18 in, 4.4% off), and the file's diameter is used.
     n_blades : int, optional
         Blade count: required for a UIUC file (which does not state it); a PE0 file states
-        its BLADES, and a different ``n_blades`` is refused.
+        its BLADES and a QPROP file its Nblades, and a different ``n_blades`` is refused.
 
     Returns
     -------
@@ -405,32 +436,23 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         ``path`` not a str or os.PathLike.
     GeometryFileError
         As the chosen reader; also if the file is not a readable regular file or the format
-        is not recognised, a UIUC file without ``n_blades``, or a PE0 file with a
+        is not recognised, a UIUC file without ``n_blades``, or a PE0 or QPROP file with a
         ``diameter_in`` or ``n_blades`` other than its own.
 
     Warns
     -----
     UserWarning
-        As :func:`read_uiuc_geometry`.
+        As :func:`read_uiuc_geometry` or :func:`propmap.io.qprop_file.read_qprop_geometry`.
     """
     path = as_path(path)
     text = _read_text(path, GeometryFileError)
     kind = _format(text)
-    if kind == "pe0":
-        prop = _apc_pe0(path, text, name=None, source="")
-        # (to the file's own precision: RADIUS is printed to 0.01 in)
-        if diameter_in is not None:
-            _check_number(diameter_in, "diameter_in", GeometryFileError, show_path(path))  # (the text "10" met a
-            if not _same_diameter(diameter_in, prop.diameter / 0.0254):  # bare "must be real number")
-                raise GeometryFileError(f"{show_path(path)}: diameter_in = {diameter_in:.8g} in, but a PE0 file gives "
-                                        f"its own radius (diameter {prop.diameter / 0.0254:.8g} in): leave the "
-                                        "option out (it applies to UIUC files), or give that diameter, to fewer "
-                                        "decimals if you like (within 2%)")
-        if n_blades is not None and n_blades != prop.n_blades:
-            raise GeometryFileError(f"{show_path(path)}: n_blades = {n_blades}, but the PE0 file states BLADES: "
-                                    f"{prop.n_blades}; the blade count applies to UIUC files (a wrong count scales "
-                                    "the thrust nearly in proportion)")
-        return prop
+    if kind == "pe0":  # (the diameter to the file's own precision: RADIUS is printed to 0.01 in)
+        return _own_size(path, _apc_pe0(path, text, name=None, source=""), diameter_in, n_blades, "PE0",
+                         "BLADES: ")
+    if kind == "qprop":
+        return _own_size(path, _qprop_geometry(path, text, name=None, source=""), diameter_in, n_blades, "QPROP",
+                         "Nblades (its second data line): ")
     if kind == "uiuc":
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
                               name=None, source="", blades_given=n_blades is not None)  # the file's own errors first
@@ -443,6 +465,7 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
     hint = ("; its columns are separated by commas or semicolons: a UIUC file's are separated by blanks or tabs"
             if re.match(r"r/r\s*[,;]", first, re.I) else
             "; a UIUC file's table starts with its header line 'r/R c/R beta' (radius / R, chord / R, blade angle in "
-            "degrees), then one station per line")
-    raise GeometryFileError(f"{show_path(path)}: unrecognised geometry format (expected UIUC 'r/R c/R beta' or an "
-                            f"APC PE0 file){hint}")
+            "degrees), then one station per line; a QPROP file starts with the propeller's name, then a line with "
+            "its blade count")
+    raise GeometryFileError(f"{show_path(path)}: unrecognised geometry format (expected UIUC 'r/R c/R beta', an "
+                            f"APC PE0 file or a QPROP propeller file){hint}")
