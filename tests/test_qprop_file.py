@@ -14,6 +14,7 @@ import pytest
 import propmap as pm
 from propmap.core.units import RPM
 from propmap.io.geometry_files import GeometryFileError, geometry_format, read_geometry
+from propmap.io.param_sets import named_sets, resolve_params
 from propmap.io.qprop_file import read_qprop_geometry, read_qprop_params
 
 from .cli_helpers import one_line_error, run
@@ -107,8 +108,10 @@ def test_the_section_lines_as_a_cambered_set(tmp_path):
     same = propfile(tmp_path / "same.prop", cd="0.028 0.050 0.050 0.5")
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        r = read_qprop_params(same, label="mine")
-    assert r.label == "mine" and r.cd2 == 0.05
+        r = resolve_params(f"qprop:{same}")
+    assert r.label == f"qprop:{same}" and r.cd2 == 0.05 and "qprop:<QPROP propeller file>" in named_sets()
+    with pytest.raises(GeometryFileError, match="no such file"):
+        resolve_params(f"qprop:{tmp_path / 'missing.prop'}")
     # line 5 without CLCD0: QPROP leaves it undefined; the geometry does not need it, the set does
     bare = propfile(tmp_path / "bare.prop", cd="0.028 0.050 0.020")
     assert read_geometry(bare).n_blades == 2
@@ -210,6 +213,9 @@ def test_cli_loads_runs_a_qprop_file(capsys, tmp_path):
     d = json.loads(out)
     assert d["thrust"] > 0 and d["n_blades"] == 2 and d["diameter_m"] == pytest.approx(0.254) and d["params"] == \
         "generic"
+    code, out, err = run(capsys, "loads", f, "--rpm", "5000", "--json", "--params", f"qprop:{f}")
+    assert code == 0, err
+    assert json.loads(out)["params"] == f"qprop:{f}" and "CD2l = 0.02 differ" in err
     code, _, err = run(capsys, "loads", f, "--rpm", "5000", "--blades", "3")
     assert one_line_error(code, err, "the QPROP file states Nblades"), err
     bad = propfile(tmp_path / "bad.prop", blades="2 0.1")

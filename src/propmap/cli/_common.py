@@ -158,7 +158,8 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
 
 PARAMS_HELP = ("Parameter set: a parameter TOML file, 'generic' (cambered, fitted to the whole catalogue), "
                "'calibrated:NAME' (a catalogue propeller's own fit), 'section:NAME' (a symmetric rotor "
-               "section: naca0012|naca0015|naca0018) or the paper's Table I "
+               "section: naca0012|naca0015|naca0018), 'qprop:FILE' (a QPROP propeller file's section aero "
+               "lines) or the paper's Table I "
                "(gill2017-soft|gill2017-stiff|gill2017-apc). Default: PROP's calibrated set if it has one, "
                "else 'generic'.")
 

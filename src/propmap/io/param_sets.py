@@ -4,7 +4,8 @@ The paper's Table I sets (``gill2017-soft``, ``gill2017-stiff``, ``gill2017-apc`
 catalogue's cambered ``generic`` set and each propeller's ``calibrated:<name>`` set
 (io/calibration.py, fitted to the bundled UIUC measurements), the symmetric section presets
 ``section:<name>`` (data/sections/presets.toml; Sheldahl & Klimas, Sandia SAND80-2114, 1981),
-or a parameter file's path (io/params_file.py reads and writes the files).
+the section aero lines of a QPROP propeller file, ``qprop:<file>`` (io/qprop_file.py), or a
+parameter file's path (io/params_file.py reads and writes the files).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from pathlib import Path
 
 from ..core.airfoil import PRESETS, CamberedParams, SectionParams
 from .params_file import SECTION_PREFIX, _section_tables, params_from_dict, read_params
+from .qprop_file import QPROP_PREFIX, read_qprop_params
 
 __all__ = ["named_sets", "resolve_params", "section_preset", "section_presets"]
 
@@ -25,7 +27,8 @@ def named_sets() -> tuple[str, ...]:
     -------
     tuple of str
     """
-    return (*PRESETS, "generic", "calibrated:<catalogue name>", *(SECTION_PREFIX + k for k in _section_tables()))
+    return (*PRESETS, "generic", "calibrated:<catalogue name>", *(SECTION_PREFIX + k for k in _section_tables()),
+            QPROP_PREFIX + "<QPROP propeller file>")
 
 
 def section_presets() -> dict[str, str]:
@@ -75,8 +78,10 @@ def resolve_params(spec: str) -> SectionParams:
 
     Named sets: the paper's Table I (``gill2017-soft``, ``gill2017-stiff``,
     ``gill2017-apc``), the catalogue-fitted ``generic`` cambered set,
-    ``calibrated:<name>``, a catalogue propeller's own calibrated set, and
-    ``section:<name>``, a symmetric section preset (:func:`section_preset`).
+    ``calibrated:<name>``, a catalogue propeller's own calibrated set,
+    ``section:<name>``, a symmetric section preset (:func:`section_preset`), and
+    ``qprop:<file>``, the section aero lines of a QPROP propeller file
+    (:func:`propmap.io.qprop_file.read_qprop_params`, labelled with the whole spec).
 
     Parameters
     ----------
@@ -96,6 +101,9 @@ def resolve_params(spec: str) -> SectionParams:
         ``spec`` neither a string nor a path.
     ParamsFileError
         Malformed file.
+    GeometryFileError
+        ``qprop:<file>``: a malformed QPROP file, or one whose section values lie outside the
+        cambered set's ranges.
 
     Notes
     -----
@@ -118,6 +126,8 @@ def resolve_params(spec: str) -> SectionParams:
         return generic_params()
     if spec.startswith(SECTION_PREFIX):
         return section_preset(spec[len(SECTION_PREFIX):])
+    if spec.startswith(QPROP_PREFIX):
+        return read_qprop_params(spec[len(QPROP_PREFIX):], label=spec)
     if spec.startswith("calibrated:"):
         name = spec.split(":", 1)[1]
         c = calibrated(name)
