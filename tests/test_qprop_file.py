@@ -221,3 +221,15 @@ def test_cli_loads_runs_a_qprop_file(capsys, tmp_path):
     bad = propfile(tmp_path / "bad.prop", blades="2 0.1")
     code, _, err = run(capsys, "loads", bad, "--rpm", "5000")
     assert one_line_error(code, err, "bad.prop, line 4: R = 0.1 m is inside the last station"), err
+
+
+def test_a_vehicle_rotor_names_a_qprop_file(tmp_path):
+    """A vehicle file's rotor ``propeller`` entry reads a QPROP file beside it as its geometry."""
+    propfile(tmp_path / "t.prop")
+    text = pm.example_file("quadrotor.toml").read_text()
+    assert text.count('propeller = "apce_8x6"') == 4
+    veh = tmp_path / "v.toml"
+    veh.write_text(text.replace('propeller = "apce_8x6"', 'propeller = "t.prop"').replace("0.106", "0.2"))
+    rotors = pm.read_vehicle(veh).rotors
+    assert len(rotors) == 4 and all(r.propeller.radius == 0.127 and r.propeller.n_blades == 2 for r in rotors)
+    assert rotors[0].propeller.same_geometry(read_geometry(tmp_path / "t.prop"))
