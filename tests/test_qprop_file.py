@@ -144,6 +144,7 @@ def _message(path) -> str:
     (dict(cd="0.028 nan 0.020 0.5"), 9, "CD2u = 'nan' is not a finite number"),
     (dict(cd="0.028 0.050"), 9, "2 numbers where QPROP's data line 5 reads CD0 CD2u CD2l [CLCD0]"),
     (dict(fac="0.0254 , 0.0254 1.0"), 12, "an empty field where Cfac belongs"),
+    (dict(fac="  ! Rfac Cfac Bfac\n 0.0254 0.0254 1.0"), 12, "no values before the '!', where QPROP's data line 7"),
     (dict(fac="1 0.0254 1", blades="2"), None,
      "diameter 2R = 9.5 m (374 in, from the last station's r (line 23)) is outside [0.5, 100] in: are Rfac and Radd"),
     (dict(fac="1 0.0254 1"), 4, "R = 0.127 m is inside the last station (r = 4.75 m, line 23): R must be >= it"),

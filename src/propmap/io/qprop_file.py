@@ -122,6 +122,10 @@ def _number(where: str, k: int, tok: str, label: str) -> float:
 def _numbers(where: str, k: int, s: str, labels, need: int, what: str) -> tuple[float, ...]:
     """The values of a data line: the first ``len(labels)`` fields (more are ignored, as QPROP ignores
     them), at least ``need`` of them, each a finite number."""
+    if not s.strip():  # (a line blank up to its '!': an indented note)
+        raise GeometryFileError(f"{where}, line {k}: no values before the '!', where {what} reads "
+                                f"{' '.join(labels[:need])}: QPROP takes a line for a comment only with '#' or '!' "
+                                "in its first column")
     vals = []
     for j, f in enumerate(_fields(s)[: len(labels)]):
         if f is None:
