@@ -1,5 +1,5 @@
 """QPROP propeller files (io/qprop_file.py): the format as QPROP 1.22 reads it (M. Drela, QPROP,
-version 1.22, 2007, qprop.f and io.f), read as blade geometry through read_geometry and --prop, and
+version 1.22, qprop.f and io.f), read as blade geometry through read_geometry and --prop, and
 their section aero lines as a cambered set (qprop:FILE). Every file here is written by the test."""
 
 from __future__ import annotations

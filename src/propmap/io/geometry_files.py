@@ -3,7 +3,7 @@
 * UIUC Propeller Data Site (Brandt & Selig, AIAA 2011-1255) geometry ``r/R c/R beta``.
 * APC Propellers PE0 geometry files (APC "Technical Information", v2022-0915): io/pe0.py's
   reader, re-exported here.
-* QPROP propeller files (M. Drela, QPROP 1.22, 2007): io/qprop_file.py's reader.
+* QPROP propeller files (M. Drela, QPROP 1.22, GPL source qprop.f): io/qprop_file.py's reader.
 
 :func:`read_geometry` chooses among the three by the file's text. The checks of the stations
 that they share are io/blade_stations.py's.

@@ -3,7 +3,7 @@
 format, and :func:`read_qprop_params`, the file's section aero line as a cambered parameter set
 (``--params qprop:FILE``).
 
-The format, as QPROP 1.22 reads it (M. Drela, QPROP, version 1.22, 2007, source file qprop.f,
+The format, as QPROP 1.22 reads it (M. Drela, QPROP, version 1.22, source file qprop.f,
 and its line reader io.f; M. Drela, "QPROP Formulation", MIT, 2006), in the order of the file's
 data lines:
 
@@ -51,7 +51,7 @@ from .inputs import _clip, _read_text, show_path
 __all__ = ["QPROP_CITATION", "QPROP_PREFIX", "read_qprop_geometry", "read_qprop_params"]
 
 #: where the format and the section model come from
-QPROP_CITATION = ('M. Drela, QPROP (version 1.22, 2007), source file qprop.f; M. Drela, "QPROP Formulation", '
+QPROP_CITATION = ('M. Drela, QPROP (version 1.22), source file qprop.f; M. Drela, "QPROP Formulation", '
                   'MIT, 2006')
 #: the prefix of a parameter set read from a QPROP file's section aero lines (``--params qprop:FILE``)
 QPROP_PREFIX = "qprop:"
