@@ -337,10 +337,10 @@ def _looks_like_radians(r_over_R, beta) -> bool:
 def _format(text: str) -> str | None:
     """``"qprop"``, ``"pe0"``, ``"uiuc"`` or None: the reader :func:`read_geometry` chooses for the text.
 
-    QPROP first: its signature (a name line, then a line of one or two numbers, the blade count
-    first, and one starting with a number, no ``r/R`` header line; io/qprop_file.py) is narrower than
-    PE0's words, which a QPROP comment line may hold; a PE0 file's second line is text, and a UIUC
-    file has its header."""
+    QPROP first: its signature (a name line, then data lines starting with numbers as QPROP's lines
+    2-8 do, not a table's rows of as many numbers each, no ``r/R`` header line; io/qprop_file.py's
+    ``_is_qprop``) is narrower than PE0's words, which a QPROP comment line may hold; a PE0 file's
+    second line is text, and a UIUC file has its header."""
     if _is_qprop(text):
         return "qprop"
     head = text[:4000]

@@ -168,18 +168,24 @@ def _leading_numbers(s: str) -> list[float]:
 
 
 def _is_qprop(text: str) -> bool:
-    """Whether the text reads as a QPROP propeller file's beginning, by QPROP's comment rules: a name line
-    that is not all numbers, a line starting with one or two numbers (Nblades [R], the first in
-    [1, 100]; a table's row has three, and r/R < 1) and a line starting with a number (CL0); and no
-    line of a UIUC file's ``r/R`` header."""
+    """Whether the text reads as a QPROP propeller file's beginning, by QPROP's comment rules: after a
+    name line (any text, a number too: QPROP's FREAD takes it whole), data lines that start with numbers
+    in a QPROP file's pattern, not a table's. The lines 2-8 either give all that QPROP requires (1 2 2 3
+    2 3 3 numbers at least, and two on line 3, 4 or 6: then a blade count out of range, or values
+    beyond Nblades and R on line 2, which QPROP ignores, are the reader's to name), or line 2 starts
+    with one or two numbers, the first in [1, 100] (Nblades [R]), and line 3 with a number. Refused:
+    a line of a UIUC file's ``r/R`` header, and lines 2-8 that each start with as many numbers (a
+    table's rows, 2 or more columns: a QPROP file's lines 3, 4 and 6 have two, lines 5, 7 and 8
+    three)."""
     lines = _data_lines(text[:65536])
     if len(lines) < 3 or any((ln.split() or [""])[0].lower() == "r/r" for _, ln in lines):
         return False
-    name = [f for f in _fields(lines[0][1]) if f is not None]
-    if not name or all(_NUMBER_RE.fullmatch(f) for f in name):
+    counts = [len(_leading_numbers(s)) for _, s in lines[1:8]]
+    if not (counts[0] and counts[1]) or (len(counts) >= 3 and len(set(counts)) == 1):
         return False
-    blades = _leading_numbers(lines[1][1])
-    return 1 <= len(blades) <= 2 and 1 <= blades[0] <= 100 and bool(_leading_numbers(lines[2][1]))
+    full = (len(counts) == len(_HEADER) and all(n >= need for n, (_, need) in zip(counts, _HEADER))
+            and 2 in (counts[1], counts[2], counts[4]))
+    return full or (counts[0] <= 2 and 1 <= _leading_numbers(lines[1][1])[0] <= 100)
 
 
 def _scaled(f: _Propfile) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
