@@ -6,9 +6,15 @@ multirotor propellers named by size, "1045"; QMIL's input file, which starts as 
 
 from __future__ import annotations
 
+import warnings
+
+import numpy as np
 import pytest
 
 from propmap.io.geometry_files import GeometryFileError, geometry_format, read_geometry
+from propmap.io.qprop_file import read_qprop_geometry, read_qprop_params
+
+from .cli_helpers import one_line_error, run
 
 STATIONS = [(0.02, 0.020, 30.0), (0.05, 0.025, 22.0), (0.08, 0.022, 16.0), (0.11, 0.016, 12.0), (0.125, 0.010, 11.0)]
 AERO = "0.4 6.0 -0.5 1.3 0.012 0.03 0.03 0.5 100000 -0.5"
@@ -66,3 +72,54 @@ def test_tables_are_still_no_qprop_files(tmp_path):
         f = tmp_path / name
         f.write_text(text + "\n")
         assert geometry_format(f) is None, name
+
+
+def test_values_beyond_column_128_are_warned(tmp_path):
+    """QPROP reads a line into a 128-character buffer (CHARACTER*128 LINE): a station row written to
+    ten decimals in 13 columns has CD2l cut at column 128 and loses the values after it. propmap reads them all
+    and says so, naming the line and the value."""
+    long = [f"{r:.10f}  {c:.10f}  {b:.10f}  " + "  ".join(f"{float(x):.10f}" for x in AERO.split())
+            for r, c, b in STATIONS]
+    assert all(len(s) > 128 for s in long)
+    f = write(tmp_path / "long.prop", rows=long)
+    with pytest.warns(UserWarning, match=r"long.prop, line 14: .*past column 128 .*first 128 characters.*cuts CD2l"):
+        p = read_qprop_geometry(f)
+    np.testing.assert_allclose(p.r, [s[0] for s in STATIONS])
+    with warnings.catch_warnings():  # a file within 128 columns: no such warning
+        warnings.simplefilter("error")
+        read_qprop_geometry(write(tmp_path / "short.prop", rows=[f"{r:g} {c:g} {b:g} {AERO}" for r, c, b in
+                                                                  STATIONS]))
+
+
+def test_a_number_beyond_the_float_range_is_named_so(tmp_path):
+    msg = _error(write(tmp_path / "big.prop", cd="0.012 1e400 0.03 0.5"))
+    assert "line 7: CD2u = '1e400'" in msg and "is not a finite number" in msg, msg
+
+
+def test_an_indented_hash_line_says_the_comment_must_start_the_line(tmp_path):
+    f = write(tmp_path / "ind.prop")
+    f.write_text(f.read_text().replace("#  r  chord  beta", "   #  r  chord  beta"))
+    msg = _error(f)
+    assert "ind.prop, line 13: " in msg and "first column" in msg, msg
+
+
+def test_a_qmil_input_file_is_named_as_such(tmp_path):
+    """QMIL's input file starts as a propfile does (name, Nblades, the section lines), then gives
+    XIdes, CLdes and one-value lines (hub radius, tip radius, ...): its error says what it is."""
+    f = tmp_path / "qmil.txt"
+    f.write_text("temp prop\n\n2 !Nblades\n\n0.0 6.2832 ! CL0 CL_A\n-0.8 1.2 ! CLmin CLmax\n\n"
+                 "0.01 0.008 0.006 0.4 ! CD0 CD2u CD2l CLCD0\n150000 -0.5 ! Reref REexp\n\n"
+                 "0.0 0.5 1.0 ! XIdes\n0.6 0.5 0.4 ! CLdes\n\n0.15 ! hub radius(m)\n1.0 ! tip radius (m)\n"
+                 "10 ! speed (m/s)\n2000 ! rpm\n\n30 ! Thrust(N)\n0 ! Power(W)\n\n0 0 ! Ldes KQdes\n")
+    msg = _error(f)
+    assert "qmil.txt, line 14: " in msg and "QMIL" in msg, msg
+
+
+def test_params_from_a_file_of_another_format_say_which(tmp_path, capsys):
+    uiuc = tmp_path / "x_geom.txt"
+    uiuc.write_text("r/R c/R beta\n" + "".join(f"{r / 0.127:.4f} {c / 0.127:.4f} {b:g}\n" for r, c, b in STATIONS))
+    with pytest.raises(GeometryFileError, match=r"x_geom.txt: .*UIUC geometry file.*not a QPROP propeller file"):
+        read_qprop_params(uiuc)
+    code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", "--params", f"qprop:{uiuc}")
+    assert one_line_error(code, err, "not a QPROP propeller file"), err
+

@@ -21,7 +21,8 @@ data lines:
 A line whose first character is ``#`` or ``!`` is a comment, and so is the rest of any line
 after a ``!``; blank lines are skipped. Values are separated by blanks, tabs or commas; a
 line's values beyond those QPROP reads are ignored, as QPROP ignores them. Fortran's ``1.5d0``
-is a number.
+is a number. QPROP reads a line's first 128 characters only (CHARACTER*128): values past
+column 128, which propmap reads, are warned of.
 
 Every refusal is a :class:`GeometryFileError` with a one-line message naming the file, the line
 and the valid range: at least 2 stations, radii > 0 m and increasing, chords > 0 m (>= 0 at
@@ -115,17 +116,25 @@ def _number(where: str, k: int, tok: str, label: str) -> float:
         x = float(tok.replace("d", "e").replace("D", "e"))
         if math.isfinite(x):
             return x
-    what = "a finite number" if tok.lower().lstrip("+-") in ("nan", "inf", "infinity") else "a number"
+    if _NUMBER_RE.fullmatch(tok):  # (1e400: a number beyond a float's range; QPROP's REAL too)
+        what = "a finite number (beyond the floating-point range)"
+    else:
+        what = "a finite number" if tok.lower().lstrip("+-") in ("nan", "inf", "infinity") else "a number"
     raise GeometryFileError(f"{where}, line {k}: {label} = {_clip(tok, 40)} is not {what}")
 
 
-def _numbers(where: str, k: int, s: str, labels, need: int, what: str) -> tuple[float, ...]:
+def _numbers(where: str, k: int, s: str, labels, need: int, what: str, hint: str = "") -> tuple[float, ...]:
     """The values of a data line: the first ``len(labels)`` fields (more are ignored, as QPROP ignores
-    them), at least ``need`` of them, each a finite number."""
+    them), at least ``need`` of them, each a finite number; ``hint`` ends the message of a line with
+    fewer than ``need``."""
     if not s.strip():  # (a line blank up to its '!': an indented note)
         raise GeometryFileError(f"{where}, line {k}: no values before the '!', where {what} reads "
                                 f"{' '.join(labels[:need])}: QPROP takes a line for a comment only with '#' or '!' "
                                 "in its first column")
+    if s.lstrip(" \t").startswith("#"):  # (QPROP's GETFLT fails on the '#' too)
+        raise GeometryFileError(f"{where}, line {k}: a '#' after blanks, where {what} reads "
+                                f"{' '.join(labels[:need])}: QPROP takes a line for a comment only with '#' or '!' "
+                                "in its first column, and reads this one as data")
     vals = []
     for j, f in enumerate(_fields(s)[: len(labels)]):
         if f is None:
@@ -136,16 +145,22 @@ def _numbers(where: str, k: int, s: str, labels, need: int, what: str) -> tuple[
     if len(vals) < need:
         optional = f" [{' '.join(labels[need:])}]" if need < len(labels) else ""
         raise GeometryFileError(f"{where}, line {k}: {len(vals)} number{'s' * (len(vals) != 1)} where {what} reads "
-                                f"{' '.join(labels[:need])}{optional} (at least {need})")
+                                f"{' '.join(labels[:need])}{optional} (at least {need}){hint}")
     return tuple(vals)
 
 
 def _parse(path: Path, text: str) -> _Propfile:
-    """A QPROP file's name line, data lines 2-8 and station rows, each value a finite number."""
+    """A QPROP file's name line, data lines 2-8 and station rows, each value a finite number; a file of
+    another geometry format (a UIUC table, an APC PE0 file) is refused as such, and data lines whose
+    values run past column 128, which QPROP does not read, are warned of."""
     where = show_path(path)
     lines = _data_lines(text)
     if not lines:
         raise GeometryFileError(f"{where}: no data lines: a QPROP propeller file starts with the propeller's name")
+    other = None if _is_qprop(text) else _other_format(lines)
+    if other:
+        raise GeometryFileError(f"{where}: {other}, not a QPROP propeller file (the propeller's name, then "
+                                "Nblades [R], CL0 CL_a, ...): give it as the geometry (PROP, --prop), not qprop:FILE")
     header = []
     for i, (labels, need) in enumerate(_HEADER):
         if i + 1 >= len(lines):
@@ -153,8 +168,52 @@ def _parse(path: Path, text: str) -> _Propfile:
                                     f"{' '.join(labels)} next (its data line {i + 2} of 8 before the stations)")
         k, s = lines[i + 1]
         header.append((k, _numbers(where, k, s, labels, need, f"QPROP's data line {i + 2}")))
-    rows = tuple((k, _numbers(where, k, s, _STATION, 3, "a station row")) for k, s in lines[len(_HEADER) + 1:])
+    rows = tuple((k, _numbers(where, k, s, _STATION, 3, "a station row", _QMIL_HINT if j == 0 else ""))
+                 for j, (k, s) in enumerate(lines[len(_HEADER) + 1:]))
+    _warn_past_column_128(where, lines[1:])
     return _Propfile(where=where, name=lines[0][1].strip()[:80], header=tuple(header), rows=rows)
+
+
+#: said where the first station row has too few values (QMIL's input file reads as a propfile up to there)
+_QMIL_HINT = ("; a QMIL input file (XIdes and CLdes where QPROP reads Rfac Cfac Bfac and Radd Cadd Badd, then "
+              "one value a line: hub radius, tip radius, ...) is no QPROP propeller file: give the propfile QMIL "
+              "writes")
+#: the characters of a line QPROP 1.22 reads (io.f's RREAD into qprop.f's CHARACTER*128 LINE)
+QPROP_LINE_CHARS = 128
+
+
+def _other_format(lines) -> str | None:
+    """What a text that is no QPROP file reads as, by the data lines: a UIUC geometry table (its
+    ``r/R`` header line) or an APC PE0 file (its STATION and TWIST words); None for neither."""
+    for k, ln in lines:
+        if (ln.split() or [""])[0].lower() == "r/r":
+            return f"a UIUC geometry file (its 'r/R c/R beta' header, line {k})"
+    words = " ".join(ln for _, ln in lines[:60])
+    if "STATION" in words and "TWIST" in words:
+        return "an APC PE0 file (its STATION and TWIST columns)"
+    return None
+
+
+def _warn_past_column_128(where: str, lines) -> None:
+    """Warn of the first data line whose values QPROP does not read whole: it reads a line's first 128
+    characters (the rest of a longer line is lost to it, a value there dropped or cut), where propmap
+    reads the whole line."""
+    cut = []
+    for i, (k, s) in enumerate(lines):
+        labels = _HEADER[i][0] if i < len(_HEADER) else _STATION
+        if len(s.rstrip()) <= QPROP_LINE_CHARS:
+            continue
+        seen, whole = _fields(s[:QPROP_LINE_CHARS]), _fields(s)[:len(labels)]
+        lost = next((j for j, f in enumerate(whole) if j >= len(seen) or seen[j] != f), None)
+        if lost is not None:
+            cut.append((k, labels[lost]))
+    if cut:
+        k, label = cut[0]
+        more = f" (and {len(cut) - 1} more line{'s' * (len(cut) > 2)})" if len(cut) > 1 else ""
+        warnings.warn(f"{where}, line {k}: its values run past column {QPROP_LINE_CHARS}{more}; QPROP 1.22 reads the "
+                      f"first {QPROP_LINE_CHARS} characters of a line, and so drops or cuts {label} and the values "
+                      "after it, which propmap reads: QPROP's own results for this file are not of these values",
+                      UserWarning, stacklevel=4)
 
 
 def _leading_numbers(s: str) -> list[float]:
@@ -299,14 +358,16 @@ def read_qprop_geometry(path, *, name: str | None = None, source: str = "") -> P
         [1, 100], a negative R, an R inside the last station or one that puts the last
         station inside 0.7 R, scaled radii not > 0 and increasing, a scaled chord <= 0 (< 0 at the last
         station), a scaled blade angle outside [-90, 90] deg, or a diameter outside
-        [0.5, 100] in; each message names the file and the line.
+        [0.5, 100] in, or a UIUC table or APC PE0 file given for a QPROP file; each
+        message names the file and the line.
 
     Warns
     -----
     UserWarning
         The largest chord lies outside [0.12, 0.6] R (a wrong Cfac; below it, not for a
-        helicopter-style rotor's slender blades), or the stations stop inside 0.9 R or start
-        outside 0.4 R (as for the other geometry files).
+        helicopter-style rotor's slender blades), the stations stop inside 0.9 R or start
+        outside 0.4 R (as for the other geometry files), or a line's values run past column
+        128, which QPROP does not read.
     """
     text = _read_text(path, GeometryFileError)
     return _geometry(Path(path), text, name=name, source=source)
@@ -371,8 +432,9 @@ def read_qprop_params(path, *, label: str | None = None, air: Air | None = None)
     Warns
     -----
     UserWarning
-        CD2l differs from CD2u (below CLCD0 the drag is then not QPROP's), or the station
-        rows give values of their own (those at 0.75 R are taken).
+        CD2l differs from CD2u (below CLCD0 the drag is then not QPROP's), the station
+        rows give values of their own (those at 0.75 R are taken), or values run past
+        column 128.
     """
     path = Path(path)
     f = _parse(path, _read_text(path, GeometryFileError))
