@@ -123,3 +123,18 @@ def test_params_from_a_file_of_another_format_say_which(tmp_path, capsys):
     code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", "--params", f"qprop:{uiuc}")
     assert one_line_error(code, err, "not a QPROP propeller file"), err
 
+
+def test_a_reref_that_varies_along_the_blade_is_said_not_to_be_qprops_own(tmp_path):
+    """QPROP 1.22's TQCALC calls CDFUN with the array REREF where the station's REREF(I) belongs, so
+    every station's drag is scaled with the first computed station's REref: a REref varying along
+    the blade (a propfile writer that gives each station its Reynolds number) is not QPROP's own."""
+    rows = [f"{r:g} {c:g} {b:g} 0.4 6.0 -0.5 1.3 0.012 0.03 0.03 0.5 {60000 + 20000 * i} -0.5"
+            for i, (r, c, b) in enumerate(STATIONS)]
+    with pytest.warns(UserWarning, match=r"0.75 R are taken; QPROP 1.22 itself applies one REref at every station"):
+        q = read_qprop_params(write(tmp_path / "re.prop", rows=rows))
+    assert q.cl_alpha == 6.0
+    same = [f"{r:g} {c:g} {b:g} 0.4 6.0 -0.5 1.3 0.012 0.03 0.03 0.5 100000 -0.5" for r, c, b in STATIONS]
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        read_qprop_params(write(tmp_path / "same.prop", rows=same))
+    assert got and not any("applies one REref" in str(w.message) for w in got)

@@ -16,7 +16,8 @@ data lines:
    angle beta are r Rfac + Radd [m], c Cfac + Cadd [m], beta Bfac + Badd [deg];
 9. and on: one station per line, ``r c beta`` and optionally, in order, the station's own
    ``CL0 CL_a CLmin CLmax CD0 CD2u CD2l CLCD0 REref REexp``, which replace the lines 3-6
-   values there.
+   values there (but for REref: QPROP 1.22's tqcalc.f passes CDFUN the array REREF where
+   REREF(I) belongs, so every station's drag takes the first computed station's REref).
 
 A line whose first character is ``#`` or ``!`` is a comment, and so is the rest of any line
 after a ``!``; blank lines are skipped. Values are separated by blanks, tabs or commas; a
@@ -28,7 +29,9 @@ Every refusal is a :class:`GeometryFileError` with a one-line message naming the
 and the valid range: at least 2 stations, radii > 0 m and increasing, chords > 0 m (>= 0 at
 the last station, as QPROP takes them), blade angles in [-90, 90] deg (after the scaling),
 a whole number of blades in [1, 100], R >= the last station's radius, a diameter in
-[0.5, 100] in, every value a finite number.
+[0.5, 100] in, every value a finite number. QPROP itself takes a first station at r = 0 and a
+blade count that is not whole (refused here), and stops at more than 81 stations (its IRDIM;
+read here).
 """
 
 from __future__ import annotations
@@ -405,8 +408,10 @@ def read_qprop_params(path, *, label: str | None = None, air: Air | None = None)
     work on. Where the station rows give their own values, or these vary along the blade,
     their values at 0.75 R (linear in r) are taken. The rest is the cambered model's own
     (:class:`CamberedParams` defaults): its stall blend to a flat plate in place of QPROP's
-    clipped lift with an added drag, no drag rise above QPROP's critical Mach number 0.7,
-    Prandtl-Glauert on the lift and Prandtl's tip loss as in QPROP.
+    post-stall lift CLmax cos(alpha - CL0/CL_a) with its added drag (tqcalc.f, cdfun.f), no drag
+    rise above QPROP's critical Mach number 0.7 (10 (M - 0.7)^3 there), Prandtl-Glauert on
+    the lift as in QPROP (which holds M^2 at 0.9, propmap M at 0.9), and Prandtl's tip loss
+    factor with sin phi where QPROP's modified one (gvcalc.f) has tan phi.
 
     Parameters
     ----------
@@ -433,8 +438,8 @@ def read_qprop_params(path, *, label: str | None = None, air: Air | None = None)
     -----
     UserWarning
         CD2l differs from CD2u (below CLCD0 the drag is then not QPROP's), the station
-        rows give values of their own (those at 0.75 R are taken), or values run past
-        column 128.
+        rows give values of their own (those at 0.75 R are taken; a REref that varies is
+        not QPROP 1.22's own either), or values run past column 128.
     """
     path = Path(path)
     f = _parse(path, _read_text(path, GeometryFileError))
@@ -445,8 +450,10 @@ def read_qprop_params(path, *, label: str | None = None, air: Air | None = None)
     where = {a: f"{f.where}, {rows} (the stations' {a} at 0.75 R)" if a in own else f"{f.where}, line {lines[a]}"
              for a in AERO}
     if own:
+        reref = ("; QPROP 1.22 itself applies one REref at every station, its innermost computed station's (tqcalc.f "
+                 "passes CDFUN the array REREF, whose first element it reads)" if np.ptp(table["REref"]) > 0 else "")
         warnings.warn(f"{f.where}: the station rows give their own {', '.join(own)} ({rows}): a propmap parameter "
-                      "set is one section, and their values at 0.75 R are taken", UserWarning, stacklevel=2)
+                      f"set is one section, and their values at 0.75 R are taken{reref}", UserWarning, stacklevel=2)
     if at["CD2l"] != at["CD2u"]:
         warnings.warn(f"{f.where}: CD2u = {at['CD2u']:g} and CD2l = {at['CD2l']:g} differ: propmap's drag polar has "
                       "one curvature, cd2 = CD2u (above CLCD0, where a thrusting propeller's sections work); below "
