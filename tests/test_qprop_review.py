@@ -138,3 +138,9 @@ def test_a_reref_that_varies_along_the_blade_is_said_not_to_be_qprops_own(tmp_pa
         warnings.simplefilter("always")
         read_qprop_params(write(tmp_path / "same.prop", rows=same))
     assert got and not any("applies one REref" in str(w.message) for w in got)
+
+
+def test_qprop_without_a_file_says_so(capsys):
+    """``qprop:`` with no file read Path(""), the working directory: "--params: .: is a directory"."""
+    code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", "--params", "qprop:")
+    assert one_line_error(code, err, "'qprop:' names no file: give qprop:FILE"), err

@@ -14,6 +14,7 @@ import os
 from pathlib import Path
 
 from ..core.airfoil import PRESETS, CamberedParams, SectionParams
+from .blade_stations import GeometryFileError
 from .params_file import SECTION_PREFIX, _section_tables, params_from_dict, read_params
 from .qprop_file import QPROP_PREFIX, read_qprop_params
 
@@ -127,6 +128,8 @@ def resolve_params(spec: str) -> SectionParams:
     if spec.startswith(SECTION_PREFIX):
         return section_preset(spec[len(SECTION_PREFIX):])
     if spec.startswith(QPROP_PREFIX):
+        if not spec[len(QPROP_PREFIX):].strip():  # (Path("") is the working directory)
+            raise GeometryFileError(f"{spec!r} names no file: give qprop:FILE, a QPROP propeller file")
         return read_qprop_params(spec[len(QPROP_PREFIX):], label=spec)
     if spec.startswith("calibrated:"):
         name = spec.split(":", 1)[1]
