@@ -144,3 +144,14 @@ def test_qprop_without_a_file_says_so(capsys):
     """``qprop:`` with no file read Path(""), the working directory: "--params: .: is a directory"."""
     code, _, err = run(capsys, "loads", "apce_8x6", "--rpm", "5000", "--params", "qprop:")
     assert one_line_error(code, err, "'qprop:' names no file: give qprop:FILE"), err
+
+
+def test_a_three_value_drag_line_names_the_older_layout(tmp_path):
+    """Propfile writers in public code still write line 5 as ``CD0 CD2 CLCD0`` (three values):
+    QPROP 1.22 reads them as CD0 CD2u CD2l and leaves CLCD0 unset. The set's refusal says so."""
+    f = write(tmp_path / "old.prop", cd="0.028 0.050 0.5")
+    assert read_geometry(f).n_blades == 2
+    with pytest.raises(GeometryFileError, match=r"old.prop, line 7: .*without CLCD0.*CD0 CD2 CLCD0.*CD2l"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            read_qprop_params(f)

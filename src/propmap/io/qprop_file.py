@@ -391,7 +391,8 @@ def _station_aero(f: _Propfile) -> tuple[dict, dict, list[str]]:
         if "CLCD0" not in station:
             raise GeometryFileError(f"{f.where}, line {line['CLCD0']}: CD0 CD2u CD2l without CLCD0, which QPROP "
                                     f"leaves undefined (the station of line {k} does not give its own): add the lift "
-                                    "coefficient of minimum drag to the line")
+                                    "coefficient of minimum drag to the line (written CD0 CD2 CLCD0, an older "
+                                    "layout, its third value is CD2l to QPROP 1.22)")
         for a in AERO:
             table[a].append(station[a])
     return {a: np.array(v) for a, v in table.items()}, line, [a for a in AERO if a in own]
