@@ -206,7 +206,11 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
         map records (``Propeller.same_geometry``; the name is not compared), or, for a map
         without that record, another diameter (beyond 1%) or blade count, as
         :class:`propmap.vehicle.VehicleMap` (a header holds one map); a rotor with its own
-        parameter set.
+        parameter set other than the one the map records (but for its air: the map's is used),
+        or with any set of its own for a map without that record. (Until 2026-12-01 any rotor
+        with a set of its own, as :func:`propmap.read_vehicle_with_params` gives the rotors that
+        all name ``generic``, was refused with a generic map, which VehicleMap and ``map --format c
+        --vehicle`` take: stop 96.)
     """
     import warnings
 
@@ -214,10 +218,10 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
 
     name = rm.attrs.get("propeller", "")
     d, b = float(rm.attrs.get("diameter_m", np.nan)), rm.attrs.get("n_blades")
-    try:
-        recorded = map_model(rm.attrs)[0]  # (the map's blade geometry: its stations, chords and blade angles)
+    try:  # (the map's blade geometry, its stations, chords and blade angles, and its set)
+        recorded, recorded_set = map_model(rm.attrs)[:2]
     except ValueError:
-        recorded = None
+        recorded = recorded_set = None
     for k, r in enumerate(vehicle.rotors):
         p = r.propeller
         if recorded is not None and not p.same_geometry(recorded):
@@ -230,8 +234,11 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
             raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades), not the "
                              f"map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
                              "Python, with one map per rotor)")
-        if r.params is not None:
+        if r.params is not None and (recorded_set is None or r.params.replace(air=recorded_set.air) != recorded_set):
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
+    from .vehicle.mapped import _warn_map_air
+
+    _warn_map_air([rm] * len(vehicle.rotors), vehicle)  # (a rotor's set in other air than the map's, as VehicleMap)
     if vehicle.body_drag is not None and vehicle.body_drag.wash_factor > 0:
         warnings.warn(f"the airframe's drag in the rotors' slipstream (wash_factor {vehicle.body_drag.wash_factor:g}) "
                       "is left out of the C vehicle function, which has the freestream's drag only: a map holds no "
@@ -285,7 +292,8 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     ------
     ValueError
         Unknown ``dtype``, a bad prefix (:func:`c_prefix`), or a vehicle rotor with another
-        propeller or its own parameter set.
+        propeller or its own parameter set other than the map's (but for its air; any set of its
+        own for a map that does not record its set), as :class:`propmap.VehicleMap`.
     TypeError
         ``rotor_map`` not a :class:`propmap.RotorMap` (a map Dataset: wrap it,
         ``RotorMap(ds)``); ``path`` not a str or os.PathLike.
@@ -294,7 +302,9 @@ def c_header_text(rotor_map, path, *, dtype: str = "float", name: str | None = N
     -----
     UserWarning
         A map that holds the side force and the pitching moment (``RotorMap.side_loads``):
-        the header's functions give T, D, Q and M_R and leave them out.
+        the header's functions give T, D, Q and M_R and leave them out; a vehicle rotor whose
+        own set (the map's) carries other air than the map's (the map's is used), as
+        :class:`propmap.VehicleMap` warns.
     """
     from .maps import RotorMap
 
