@@ -34,56 +34,48 @@ def _check_rotor_sets(veh, labels) -> None:
         check_section_match(next(r.propeller for r in veh.rotors if r.propeller.name == prop), label)
 
 
-def _default_spec(path, params_spec):
-    """``params_spec``, or where it is None the vehicle file's own parameter set (its top-level
-    ``params``: vehicle.file), the default of --params in the commands that model the vehicle."""
+def _export_reading(path, params_spec):
+    """(reading, vehicle, body_from) of --vehicle in a one-propeller export (``export-sim
+    --vehicle``, ``map --format c --vehicle``), from one parse of the file (six until 2026-12-01,
+    where trim-vehicle parsed it once: an audit, stop 96): the reading
+    (:func:`propmap.vehicle.own_set._reading`), the vehicle with the ``[body]`` table a flight fit
+    writes (the airframe drag, the centre of mass, the rotors' wake interference) of ``params_spec``
+    (--params, where it is a file with one) or without it of the vehicle file's own set, as
+    :func:`propmap.resolve_vehicle` takes it, whatever propeller is exported (the airframe is the
+    vehicle's, not a rotor set's), and the file whose table it is (None: none); the rotors keep
+    the sets the file gives them."""
+    from ..io.params_file import ParamsFileError
     from ..vehicle.file import VehicleFileError
-    from ..vehicle.own_set import vehicle_params_file
+    from ..vehicle.own_set import _reading, with_body_table, with_set_body
 
-    if params_spec is not None:
-        return params_spec
     try:
-        return vehicle_params_file(path)
-    except VehicleFileError as exc:  # (read_vehicle says the same of the file first, where a command reads it)
+        reading = _reading(path)
+    except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
+    if params_spec is None:
+        table = reading.mine_table
+        return reading, with_body_table(reading.vehicle, table), (None if table is None else reading.mine)
+    try:
+        veh, body_from = with_set_body(reading.vehicle, params_spec)
+    except ParamsFileError as exc:
+        raise InputError(f"--params: {exc}") from None
+    return reading, veh, body_from
 
 
-def _own_spec_for(path, propeller):
+def _own_spec_for(reading, propeller):
     """The set a one-propeller export of the vehicle takes without --params (export-sim --vehicle, map
     --format c --vehicle), where ``propeller`` (PROP) is every rotor's geometry: the one set the vehicle
     names for every rotor, as :func:`propmap.resolve_vehicle` orders them (each rotor's own set, else the
     vehicle file's own); None (PROP's default) where it names none, or not one for all, or a rotor carries
-    another propeller. (The vehicle's set is its rotors', not another propeller's: a review found apce_8x6
-    exported with the NeuroBEM rotors' fit. Until 2026-12-01 the vehicle's own set came first here, and
-    export-sim refused a vehicle whose rotors all name another set, which trim-vehicle hovers with: stop
-    96. The rotors' one set: the export took PROP's default and hovered 9.9% slower than trim-vehicle
-    where the rotors' set was fitted at rho 1.0, an air-consistency audit, 2026-12-01.)"""
-    from ..vehicle.file import rotor_file_specs
+    another propeller (:func:`propmap.vehicle.own_set._one_propeller_set`). (The vehicle's set is its
+    rotors', not another propeller's: a review found apce_8x6 exported with the NeuroBEM rotors' fit.
+    Until 2026-12-01 the vehicle's own set came first here, and export-sim refused a vehicle whose rotors
+    all name another set, which trim-vehicle hovers with: stop 96. The rotors' one set: the export took
+    PROP's default and hovered 9.9% slower than trim-vehicle where the rotors' set was fitted at rho 1.0,
+    an air-consistency audit, 2026-12-01.)"""
+    from ..vehicle.own_set import _one_propeller_set
 
-    mine = _default_spec(path, None)
-    if not all(r.propeller.same_geometry(propeller) for r in _vehicle(path).rotors):
-        return None
-    specs = {s if s is not None else mine for s in rotor_file_specs(path)}
-    return specs.pop() if len(specs) == 1 else None
-
-
-def _fitted_vehicle(path: Path, params_spec, own: bool = True):
-    """(vehicle, fitted): the vehicle file's vehicle and, where ``params_spec`` (None, with ``own``:
-    the vehicle file's own ``params``) is a parameter file with the ``[body]`` table a flight fit
-    writes (the airframe drag, the centre of mass, the rotors' wake interference), the vehicle with
-    those in place of the file's, and whether it had one (what `wrench`, `export-sim --vehicle` and
-    the C vehicle export all model)."""
-    from ..io.params_file import ParamsFileError
-    from ..vehicle.own_set import with_set_body
-
-    veh = _vehicle(path)
-    if own:
-        params_spec = _default_spec(path, params_spec)
-    try:
-        veh, body_from = with_set_body(veh, params_spec)
-    except ParamsFileError as exc:
-        raise InputError(f"--params: {exc}") from None
-    return veh, body_from is not None
+    return _one_propeller_set(reading, propeller)
 
 
 def _vehicle_sets(vehicle, params_spec, air_choice):

@@ -103,10 +103,13 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                   [params_spec, prop, vehicle, *vehicle_inputs(vehicle)])
     propeller = prop_choice.load(prop)
     given_spec = params_spec  # (--params as given: its [body] table, else the vehicle file's own set's)
-    if vehicle is not None and params_spec is None:  # (the set the vehicle names for every rotor, where PROP is theirs)
-        from ._vehicle import _own_spec_for
+    read = None
+    if vehicle is not None:  # (one parse of the file; the vehicle's set for every rotor, where PROP is theirs)
+        from ._vehicle import _export_reading, _own_spec_for
 
-        params_spec = _own_spec_for(vehicle, propeller)
+        read = _export_reading(vehicle, params_spec)
+        if params_spec is None:
+            params_spec = _own_spec_for(read[0], propeller)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)
@@ -120,8 +123,8 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
                          "the hover rpm, which --hover-rpm gives; only rotorpy's export writes the vehicle itself): "
                          "give one of them")
     if vehicle is not None:
-        veh, hover_rpm, hover_from, airframe = _export_vehicle(vehicle, given_spec, propeller, params, label, air,
-                                                               target, hover_rpm)
+        veh, hover_rpm, hover_from, airframe = _export_vehicle(read[1:], propeller, params, label, air, target,
+                                                               hover_rpm)
         if given_spec is None and hover_from != "--hover-rpm":  # (the rotors' own sets pin the hover)
             from ._vehicle import _warn_rotor_air
 
@@ -202,10 +205,11 @@ def _echo_export(res, target: str, what: str, cited: str | None, report: Path | 
             click.echo(line[1:])  # the empty comment's space
 
 
-def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, target: str, hover_rpm):
+def _export_vehicle(read, propeller, params, label: str, air, target: str, hover_rpm):
     """export-sim's --vehicle: (the vehicle, its hover rpm, where that came from, the airframe's
-    label); ``params_spec`` --params as given (None: the vehicle file's own set gives the
-    airframe's ``[body]`` table, not a rotor's set, as trim-vehicle and wrench take it). Its
+    label); ``read`` (the vehicle, the file of its ``[body]`` table or None) as
+    :func:`propmap.cli._vehicle._export_reading` gives them (the airframe of --params, else of the
+    vehicle file's own set, not a rotor's set, as trim-vehicle and wrench take it). Its
     hover pins the export's hover rpm unless --hover-rpm gives it; refused where its rotors
     carry another propeller or their own parameter sets (other than PARAMS) without
     --hover-rpm (their hover is not PROP's with PARAMS), where rotorpy cannot write it, or
@@ -217,16 +221,14 @@ def _export_vehicle(vehicle, params_spec, propeller, params, label: str, air, ta
     from ..core.solver import TIP_MACH_WARN, SolverError
     from ..simexport import check_rotorpy_vehicle
     from ..vehicle import hover_omega
-    from ._vehicle import _default_spec, _fitted_vehicle
 
     hover_from, airframe = "--hover-rpm", ""
     # a flight fit's [body] table: its airframe drag (c_D), from --params, else from the vehicle file's own set (its
     # top-level params), whatever propeller is exported: the airframe is the vehicle's (with another PROP its drag
     # was written 0: an air-consistency audit, 2026-12-01), not a rotor's set's (a review)
-    body_spec = params_spec if params_spec is not None else _default_spec(vehicle, None)
-    veh, fitted = _fitted_vehicle(vehicle, body_spec, own=False)
-    if fitted:
-        airframe = f"the [body] table of {Path(body_spec).name} (a flight fit)"
+    veh, body_from = read
+    if body_from is not None:
+        airframe = f"the [body] table of {Path(body_from).name} (a flight fit)"
     if target == "rotorpy":
         try:
             check_rotorpy_vehicle(veh)

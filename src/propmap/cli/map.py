@@ -178,14 +178,13 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     only = _check_options(ctx, prop, out, fmt, c_header, check_points, all_props, only, max_error_pct, plot)
     inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
     check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
-    veh = None
+    veh = reading = None
     if c_header.vehicle is not None:
-        from ._vehicle import _default_spec, _fitted_vehicle
+        from ._vehicle import _export_reading
 
-        # a flight fit's [body] table (its airframe drag): from --params, else from the vehicle file's own set, not
-        # from a rotor's set (as export-sim --vehicle takes it)
-        body_spec = params_spec if params_spec is not None else _default_spec(c_header.vehicle, None)
-        veh, _ = _fitted_vehicle(c_header.vehicle, body_spec, own=False)
+        # (one parse of the file) a flight fit's [body] table (its airframe drag): from --params, else from the
+        # vehicle file's own set, not from a rotor's set (as export-sim --vehicle takes it)
+        reading, veh, _ = _export_reading(c_header.vehicle, params_spec)
 
     import numpy as np
 
@@ -198,10 +197,10 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         rpm, V, inc = _axes(median, axes, len(names))
     else:
         propeller = prop_choice.load(prop)
-        if veh is not None and params_spec is None:  # (the set the vehicle names for every rotor, as export-sim's)
+        if veh is not None and params_spec is None:  # (the vehicle's set for every rotor, as export-sim's)
             from ._vehicle import _own_spec_for
 
-            params_spec = _own_spec_for(c_header.vehicle, propeller)
+            params_spec = _own_spec_for(reading, propeller)
         params, air, label = load_params(params_spec, prop)
         if veh is not None:  # refused before the build, not after it
             veh = _one_map_vehicle(veh, propeller, params, label)

@@ -187,7 +187,6 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     propeller, rotors' sets in other air than the command's) and their air options.
     """
     from ..io.calibration import default_params
-    from ..io.catalogue import catalogue
     from ..io.inputs import show_path
     from ..io.param_sets import resolve_params
     from ..core.airfoil import AirfoilParams, CamberedParams
@@ -196,12 +195,8 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     if not (params is None or given_set or isinstance(params, (str, os.PathLike))):
         raise TypeError(f"params must be a named set, a parameter file or a section parameter set, got "
                         f"{type(params).__name__}")
-    vehicle, data, path, own_read = _read_vehicle(path)
-    folder = path.parent
-    # the vehicle's own set as _read_vehicle read and checked it (its entry as a path from the working directory
-    # where it is a file beside the vehicle, else a name), with its file's [body] table
-    mine = _resolved_spec(data.get("params"), folder)
-    mine_set, mine_table = own_read if own_read is not None else (None, None)
+    reading = _reading(path)
+    vehicle, mine, mine_set, mine_table = reading.vehicle, reading.mine, reading.mine_set, reading.mine_table
     if params is None:
         vehicle, body_from = with_body_table(vehicle, mine_table), (None if mine_table is None else mine)
     else:
@@ -214,11 +209,7 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
         if dropped:
             vehicle = replace(vehicle, rotors=tuple(replace(r, params=None) for r in vehicle.rotors))
         return ResolvedVehicle(vehicle, given, label, (label,) * n, given.air, body_from, dropped)
-    names = _entry_specs(data, folder, "propeller")
-    own = tuple(o if o is not None else mine if mine is not None else
-                default_params(p).label if p in catalogue() else None
-                for o, p in zip(_entry_specs(data, folder, "params"), names))
-    own = tuple(None if o == "generic" else o for o in own)
+    names, own = reading.propellers, _rotor_sets(reading)
     spec = own[0] if own and own[0] is not None and len(set(own)) == 1 else None
     mixed = spec is None and any(own)
     if mixed:  # (each catalogue rotor carries its own calibrated set, or the vehicle's)
@@ -234,6 +225,58 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     if len(set(sets)) > 1:
         label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
     return ResolvedVehicle(vehicle, params, label, sets, params.air, body_from)
+
+
+@dataclass(frozen=True, eq=False)
+class _Reading:
+    """One reading of a vehicle file (:func:`_reading`): the vehicle as :func:`propmap.read_vehicle`
+    reads it, the file, the vehicle's own set's entry (a path from the working directory where it
+    is a file beside the vehicle, else a name; None: none), that set and its file's ``[body]``
+    table as the reader read and checked them, and each rotor's ``propeller`` and ``params``
+    entries (resolved alike)."""
+
+    vehicle: Vehicle
+    path: Path
+    mine: str | None
+    mine_set: object
+    mine_table: object
+    propellers: tuple
+    own: tuple
+
+
+def _reading(path) -> _Reading:
+    """:class:`_Reading` of the vehicle file ``path`` (one parse of it: resolve_vehicle's, and the
+    one-propeller exports', which parsed it six times until 2026-12-01, stop 96)."""
+    vehicle, data, path, own_read = _read_vehicle(path)
+    folder = path.parent
+    mine_set, mine_table = own_read if own_read is not None else (None, None)
+    return _Reading(vehicle, path, _resolved_spec(data.get("params"), folder), mine_set, mine_table,
+                    _entry_specs(data, folder, "propeller"), _entry_specs(data, folder, "params"))
+
+
+def _rotor_sets(reading: _Reading) -> tuple:
+    """Each rotor's set by the rule (:func:`resolve_vehicle`): its own entry, else the vehicle's own
+    set's, else its catalogue propeller's calibrated set's label, else None (the generic set; a
+    rotor that names ``generic`` is None too)."""
+    from ..io.calibration import default_params
+    from ..io.catalogue import catalogue
+
+    own = tuple(o if o is not None else reading.mine if reading.mine is not None else
+                default_params(p).label if p in catalogue() else None
+                for o, p in zip(reading.own, reading.propellers))
+    return tuple(None if o == "generic" else o for o in own)
+
+
+def _one_propeller_set(reading: _Reading, propeller) -> str | None:
+    """The set a one-propeller export of the vehicle takes without a given set (``export-sim
+    --vehicle``, ``map --format c --vehicle``), where ``propeller`` is every rotor's geometry: the
+    one set the vehicle names for every rotor (each rotor's own entry, else the vehicle's own set's);
+    None (the export's own default) where it names none, or not one for all, or a rotor carries
+    another propeller."""
+    if not all(r.propeller.same_geometry(propeller) for r in reading.vehicle.rotors):
+        return None
+    specs = {s if s is not None else reading.mine for s in reading.own}
+    return specs.pop() if len(specs) == 1 else None
 
 
 def with_set_body(vehicle: Vehicle, spec) -> tuple[Vehicle, str | None]:
