@@ -64,15 +64,18 @@ def _export_reading(path, params_spec):
 
 def _own_spec_for(reading, propeller):
     """The set a one-propeller export of the vehicle takes without --params (export-sim --vehicle, map
-    --format c --vehicle), where ``propeller`` (PROP) is every rotor's geometry: the one set the vehicle
-    names for every rotor, as :func:`propmap.resolve_vehicle` orders them (each rotor's own set, else the
-    vehicle file's own); None (PROP's default) where it names none, or not one for all, or a rotor carries
-    another propeller (:func:`propmap.vehicle.own_set._one_propeller_set`). (The vehicle's set is its
-    rotors', not another propeller's: a review found apce_8x6 exported with the NeuroBEM rotors' fit.
-    Until 2026-12-01 the vehicle's own set came first here, and export-sim refused a vehicle whose rotors
-    all name another set, which trim-vehicle hovers with: stop 96. The rotors' one set: the export took
-    PROP's default and hovered 9.9% slower than trim-vehicle where the rotors' set was fitted at rho 1.0,
-    an air-consistency audit, 2026-12-01.)"""
+    --format c --vehicle), where ``propeller`` (PROP) is every rotor's geometry: the set
+    :func:`propmap.resolve_vehicle`'s rule gives every rotor (each rotor's own set, else the vehicle
+    file's own, else its catalogue propeller's calibrated set, else 'generic'), else, where the rotors'
+    sets differ, the vehicle file's own set; None (PROP's default) where neither is one, or a rotor
+    carries another propeller (:func:`propmap.vehicle.own_set._one_propeller_set`). (The vehicle's set
+    is its rotors', not another propeller's: a review found apce_8x6 exported with the NeuroBEM rotors'
+    fit. Until 2026-12-01 the vehicle's own set came first here, and export-sim refused a vehicle whose
+    rotors all name another set, which trim-vehicle hovers with; then a vehicle of mixed sets took
+    PROP's default, a set none of its rotors takes, and rotors of a catalogue propeller exported from
+    its geometry file the generic set: stop 96. The rotors' one set: the export took PROP's default and
+    hovered 9.9% slower than trim-vehicle where the rotors' set was fitted at rho 1.0, an
+    air-consistency audit, 2026-12-01.)"""
     from ..vehicle.own_set import _one_propeller_set
 
     return _one_propeller_set(reading, propeller)

@@ -81,8 +81,9 @@ def parse_envelope(text: str | None, propeller):
 @click.option("--points", "n_points", type=int, default=4000, show_default=True,
               help="Random operating points in the envelope.")
 @click.option("--params", "params_spec", default=None,
-              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the one set the vehicle names "
-                                 "for every rotor (the rotors' own params, else the vehicle file's).")
+              help=PARAMS_HELP + " With --vehicle, where PROP is its rotors' propeller: the set the vehicle gives "
+                                 "every rotor (the rotors' own params, else the vehicle file's, else their catalogue "
+                                 "propeller's calibrated set), else the vehicle file's own params.")
 @click.option("--json", "as_json", is_flag=True, help="Print the report as JSON.")
 @with_prop_options
 @with_air_options

@@ -125,8 +125,9 @@ with_plot_options = option_group("plot", PlotChoice, plot_options)
 @click.argument("prop", required=False)
 @with_axis_options
 @click.option("--params", "params_spec", default=None,
-              help=PARAMS_HELP + " With --vehicle: the one set the vehicle names for every rotor (the rotors' own "
-                                 "params, else the vehicle file's), where it names one.")
+              help=PARAMS_HELP + " With --vehicle: the set the vehicle gives every rotor (the rotors' own params, "
+                                 "else the vehicle file's, else their catalogue propeller's calibrated set), else the "
+                                 "vehicle file's own params.")
 @click.option("--collective-deg", type=float, default=None,
               help="Collective of a variable-pitch rotor: a blade-angle offset [deg] added to the parameter set's "
                    "(the sum within [-30, 30]); stored with the map's parameters.")

@@ -270,13 +270,18 @@ def _rotor_sets(reading: _Reading) -> tuple:
 def _one_propeller_set(reading: _Reading, propeller) -> str | None:
     """The set a one-propeller export of the vehicle takes without a given set (``export-sim
     --vehicle``, ``map --format c --vehicle``), where ``propeller`` is every rotor's geometry: the
-    one set the vehicle names for every rotor (each rotor's own entry, else the vehicle's own set's);
-    None (the export's own default) where it names none, or not one for all, or a rotor carries
-    another propeller."""
+    set the rule gives every rotor (:func:`_rotor_sets`; ``"generic"`` where that is the generic
+    set), else, where the rotors' sets differ, the vehicle's own set (which the rotors without one
+    take); None (the export's own default) where neither is one, or a rotor carries another
+    propeller. (Until 2026-12-01 the exports took a set only where the vehicle named one for
+    every rotor: a vehicle of mixed sets was exported on calibrated:apce_8x6 at rho 1.225 where
+    its rotors without a set take its own flight fit at rho 1.204, and the catalogue apce_8x6's
+    rotors exported from its geometry file on the generic set, hovering at 5187.09 rpm where
+    trim-vehicle hovers them at 5386.76 on their calibrated set: an audit, stop 96.)"""
     if not all(r.propeller.same_geometry(propeller) for r in reading.vehicle.rotors):
         return None
-    specs = {s if s is not None else reading.mine for s in reading.own}
-    return specs.pop() if len(specs) == 1 else None
+    sets = {s or "generic" for s in _rotor_sets(reading)}
+    return sets.pop() if len(sets) == 1 else reading.mine
 
 
 def with_set_body(vehicle: Vehicle, spec) -> tuple[Vehicle, str | None]:
