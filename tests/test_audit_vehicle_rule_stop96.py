@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
+import propmap.io.params_file as params_file
 import propmap.io.toml_file as toml_file
 import propmap.vehicle.file as vehicle_file
 import propmap.vehicle.own_set as own_set
@@ -120,9 +121,19 @@ def _count_parses(monkeypatch):
         calls.append(Path(path).name)
         return real(path, *args, **kwargs)
 
-    for module in (toml_file, vehicle_file, own_set):
+    for module in (toml_file, vehicle_file, own_set, params_file):
         monkeypatch.setattr(module, "load_toml", counted)
     return calls
+
+
+def test_a_set_every_rotor_names_is_read_once(tmp_path, monkeypatch):
+    """Rotors all naming fit.toml: resolve_vehicle parsed it 5 times (once a rotor, then again), trim-vehicle 6."""
+    veh = _quad(tmp_path, rotor_params=["fit.toml"] * 4)
+    calls = _count_parses(monkeypatch)
+    r = pm.resolve_vehicle(veh)
+    assert calls.count("fit.toml") == 1, calls
+    assert r.params == pm.read_params(tmp_path / "fit.toml") and r.air.rho == 1.204
+    assert all(rotor.params is r.params for rotor in r.vehicle.rotors)  # (one object, as the rotors' propeller)
 
 
 @pytest.mark.parametrize("command", ["export-sim", "map"])

@@ -425,7 +425,7 @@ def _vehicle_table(given, path: Path) -> dict:
 
 def _rotor(r, where: str, path: Path, props: dict) -> Rotor:
     """One ``[[rotors]]`` table as a :class:`Rotor` (``where``: the file and rotor, for messages); its
-    propeller read once per (propeller, diameter, blades) of the file, kept in ``props``."""
+    propeller read once per (propeller, diameter, blades) of the file, its set per entry, in ``props``."""
     if not isinstance(r, dict):
         raise VehicleFileError(f"{where} must be a table ([[rotors]] with position, axis, spin, propeller), "
                                f"got {short_repr(r)}")
@@ -456,7 +456,10 @@ def _rotor(r, where: str, path: Path, props: dict) -> Rotor:
         props[spec] = _propeller(r["propeller"], path.parent, where, None if diameter is None else diameter / INCH,
                                  blades)
     prop = props[spec]
-    params = _rotor_params(r["params"], path.parent, where) if "params" in r else None
+    key = ("params", repr(r.get("params")))  # (a set the rotors share read once, as their propeller: stop 96)
+    if "params" in r and key not in props:
+        props[key] = _rotor_params(r["params"], path.parent, where)
+    params = props[key] if "params" in r else None
     j_r = _number(r["inertia"], f"{where} inertia", "kg m^2", ROTOR_INERTIA_RANGE) if "inertia" in r else None
     return Rotor(position, axis, spin, prop, params=params, inertia=j_r)  # (Rotor normalises the axis)
 

@@ -220,7 +220,11 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
     label = "generic" if spec is None else spec  # (a rotor's file: its path from the vehicle's folder)
     # (mixed: every rotor carries its set where the vehicle has one, whose air is the vehicle's; the generic set for
     # the rotors without any otherwise)
-    params = mine_set if mine_set is not None and (spec == mine or mixed) else resolve_params(label)
+    if mine_set is not None and (spec == mine or mixed):
+        params = mine_set
+    else:  # (a set every rotor names: as the reader read it, its file not read again; a named set otherwise)
+        params = next((r.params for r in vehicle.rotors if r.params is not None), None) if spec is not None else None
+        params = params if params is not None else resolve_params(label)
     sets = tuple(o or "generic" for o in own) if mixed else (label,) * n
     if len(set(sets)) > 1:
         label = "the vehicle's rotor sets: " + ", ".join(dict.fromkeys(show_path(s) for s in sets))
