@@ -199,8 +199,8 @@ def test_map_refuses_a_vehicle_rotor_with_its_own_set_before_the_build_naming_it
     veh = _quad_with(tmp_path, 3, 'propeller = "apce_8x6"', 'propeller = "apce_8x6"\nparams = "generic"')
     code, _, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID, "--out", tmp_path / "m.h")
     assert one_line_error(code, err, "--vehicle: rotor 3 carries its own parameter set (generic), not the map's, "
-                                     "calibrated:apce_8x6: a C header holds one map and one set (give --params the "
-                                     "rotors' set, or a vehicle without the rotors' params)"), err
+                                     "calibrated:apce_8x6: a C header holds one map and one set (give --params, the "
+                                     "set of every rotor)"), err
     assert not (tmp_path / "m.h").exists()
 
 

@@ -1,6 +1,6 @@
 """An audit of the one rule for a vehicle's parameter sets (propmap.resolve_vehicle) against every
 entry point that takes a vehicle, stop 96 (2026-12-01). Each test failed on the code before its
-fix (commit 02b6f16), but the guards; the xfail is a design question left open. Data: the example
+fix (commit 02b6f16), but the guards; the last one settled a design question the audit left open. Data: the example
 quadrotor (four catalogue apce_8x6) with added entries, and the NeuroBEM flight fit as a parameter
 file (its [body] table, rho 1.204)."""
 
@@ -154,11 +154,10 @@ def test_the_one_propeller_exports_read_the_vehicle_file_as_often_as_wrench(tmp_
         assert re.search(r"Parameters: ([^;]+);", header).group(1) == str(tmp_path / "fit.toml")
 
 
-@pytest.mark.xfail(strict=True, reason="a design question, left open at stop 96: with --params the vehicle commands "
-                   "drop the rotors' own sets (warned), the one-propeller exports refuse them (tests/test_stop96.py "
-                   "asserts the C header's refusal)")
 def test_a_given_set_replaces_the_rotors_own_sets_in_every_vehicle_command(tmp_path, capsys):
-    """Rotors all on generic, --params gill2017-apc: trim-vehicle hovers at 5272.55 rpm, export-sim exits 2."""
+    """Rotors all on generic, --params gill2017-apc: trim-vehicle hovers at 5272.55 rpm, export-sim exited 2 (a
+    design question the audit left open; settled at stop 96: --params gives every rotor's set in the exports too,
+    the rotors' own dropped and said)."""
     veh = _quad(tmp_path, rotor_params=["generic"] * 4)
     code, out, err = run(capsys, "trim-vehicle", "--vehicle", veh, "--params", "gill2017-apc", "--json")
     assert code == 0 and "are not used: --params gives every rotor's set" in err, err
@@ -167,4 +166,9 @@ def test_a_given_set_replaces_the_rotors_own_sets_in_every_vehicle_command(tmp_p
     code, out, err = run(capsys, "export-sim", "apce_8x6", "--vehicle", veh, "--params", "gill2017-apc", "--target",
                          "gz-sim", "--points", "200", "--out", tmp_path / "g.sdf")
     assert code == 0, err
+    assert "rotor(s) 1, 2, 3, 4 are not used: --params gives every rotor's set" in err, err
     assert _report(tmp_path / "g.sdf")["errors"]["hover"]["rpm"] == pytest.approx(hover, rel=1e-9)
+    code, out, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, "--params", "gill2017-apc",
+                         *GRID, "--out", tmp_path / "m.h")
+    assert code == 0 and "are not used: --params gives every rotor's set" in err, err
+    assert re.search(r"Parameters: ([^;]+);", (tmp_path / "m.h").read_text()).group(1) == "gill2017-apc"

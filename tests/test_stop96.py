@@ -52,14 +52,16 @@ def test_a_c_header_takes_a_vehicle_whose_rotors_all_name_the_map_s_set(tmp_path
 
 
 def test_a_c_header_refuses_a_rotor_set_other_than_the_map_s_naming_both(tmp_path, capsys):
-    """A rotor whose own set is not the map's is refused before the build, saying both sets."""
-    veh = _quad(tmp_path, rotor_params=["generic"] * 4)
+    """Without --params, a rotor whose own set is not the map's is refused before the build, saying
+    both sets and that --params gives one set for every rotor (which drops the rotors' own sets,
+    said, as trim-vehicle and wrench drop them: tests/test_audit_vehicle_rule_stop96.py)."""
+    veh = _quad(tmp_path, rotor_params=["generic", "gill2017-apc", "gill2017-apc", "gill2017-apc"])
     code, out, err = run(capsys, "map", "apce_8x6", "--format", "c", "--vehicle", veh, *GRID,
-                         "--params", "gill2017-apc", "--out", tmp_path / "m.h")
+                         "--out", tmp_path / "m.h")
     assert code == 2 and err.count("\n") == 1
     assert err == ("propmap: error: --vehicle: rotor 1 carries its own parameter set (generic), not the map's, "
-                   "gill2017-apc: a C header holds one map and one set (give --params the rotors' set, or a vehicle "
-                   "without the rotors' params)\n")
+                   "calibrated:apce_8x6: a C header holds one map and one set (give --params, the set of every "
+                   "rotor)\n")
     assert not (tmp_path / "m.h").exists()
 
 

@@ -43,7 +43,8 @@ def _export_reading(path, params_spec):
     (--params, where it is a file with one) or without it of the vehicle file's own set, as
     :func:`propmap.resolve_vehicle` takes it, whatever propeller is exported (the airframe is the
     vehicle's, not a rotor set's), and the file whose table it is (None: none); the rotors keep
-    the sets the file gives them."""
+    the sets the file gives them, but with --params, which gives every rotor's set (the rotors'
+    own dropped, said in a warning, as :func:`_vehicle_sets` drops them)."""
     from ..io.params_file import ParamsFileError
     from ..vehicle.file import VehicleFileError
     from ..vehicle.own_set import _reading, with_body_table, with_set_body
@@ -59,7 +60,9 @@ def _export_reading(path, params_spec):
         veh, body_from = with_set_body(reading.vehicle, params_spec)
     except ParamsFileError as exc:
         raise InputError(f"--params: {exc}") from None
-    return reading, veh, body_from
+    # (--params gives every rotor's set, the rotors' own dropped and said, as trim-vehicle and wrench take it: until
+    # stop 96 the exports refused them, export-sim unless --hover-rpm, where trim-vehicle hovered with --params)
+    return reading, _one_set(veh, "--params gives every rotor's set"), body_from
 
 
 def _own_spec_for(reading, propeller):

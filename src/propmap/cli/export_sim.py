@@ -257,8 +257,8 @@ def _export_vehicle(read, propeller, params, label: str, air, target: str, hover
            if r.params is not None and replace(r.params, air=params.air) != params]
     if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
         raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
-                         f"{label}, so the vehicle's hover is not {propeller.name}'s with it: {instead}, "
-                         "or a vehicle without the rotors' params")
+                         f"{label}, so the vehicle's hover is not {propeller.name}'s with it: give --params "
+                         f"(the set of every rotor), or {instead.removeprefix('give ')}")
     if own:
         warnings.warn(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set: the export "
                       f"gives {label}'s coefficients on every rotor, at --hover-rpm", UserWarning, stacklevel=1)

@@ -301,8 +301,8 @@ def _one_map_vehicle(veh, propeller, params, label: str):
         if r.params is not None and replace(r.params, air=params.air) != params:
             theirs = f" ({r.params.label})" if r.params.label else ""
             raise InputError(f"--vehicle: rotor {k + 1} carries its own parameter set{theirs}, not the map's, "
-                             f"{label}: a C header holds one map and one set (give --params the rotors' set, or a "
-                             "vehicle without the rotors' params)")
+                             f"{label}: a C header holds one map and one set (give --params, the set of every "
+                             "rotor)")
     return replace(veh, rotors=tuple(replace(r, params=None) for r in veh.rotors))
 
 
