@@ -7,6 +7,7 @@ import re
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import propmap as pm
@@ -92,3 +93,26 @@ def test_the_exports_take_the_rotors_one_set_before_the_vehicle_s_as_trim_vehicl
     assert label == "gill2017-apc" and body is not None
     assert [float(x) for x in cd.split(",")] == pytest.approx(
         [1.225 * a / 2 for a in body.drag_area], rel=1e-12)
+
+
+def test_a_rotor_naming_a_written_copy_of_the_map_s_set_is_that_set(tmp_path):
+    """A set written to a parameter file and read back differs from the set in memory by the
+    degrees' rounding of its angles (1 ulp in alpha_L0 for the generic set): compared exactly, a
+    vehicle whose rotors name the written file was refused a map built with the set in memory,
+    by VehicleMap and the C header (an audit, stop 96). Now the comparison is to 1e-12; another
+    set is still refused."""
+    from propmap.export_c import c_header_text
+    from propmap.maps import build_map
+
+    g = pm.resolve_params("generic")
+    pm.write_params(tmp_path / "g.toml", g)
+    assert pm.resolve_params(str(tmp_path / "g.toml")).alpha_L0 != g.alpha_L0  # (the rounding this is about)
+    veh = _quad(tmp_path, rotor_params=[str(tmp_path / "g.toml")] * 4)
+    ds = build_map(pm.load_propeller("apce_8x6"), g, [300.0, 600.0, 900.0], [0.0, 5.0], [0.0, 1.5], n_check=0)
+    vehicle = pm.read_vehicle(veh)
+    vm = pm.VehicleMap(vehicle, pm.RotorMap(ds))
+    assert np.all(np.isfinite(vm.wrench([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [600.0] * 4).force))
+    assert "vehicle_wrench" in c_header_text(pm.RotorMap(ds), tmp_path / "m.h", vehicle=vehicle)
+    other = _quad(tmp_path, rotor_params=["gill2017-apc"] * 4)
+    with pytest.raises(ValueError, match="rotor 1 has its own parameter set"):
+        pm.VehicleMap(pm.read_vehicle(other), pm.RotorMap(ds))

@@ -234,7 +234,7 @@ def _vehicle_block(vehicle, rm, prefix: str) -> str:
             raise ValueError(f"rotor {k + 1} carries {p.name} ({p.diameter:.4g} m, {p.n_blades} blades), not the "
                              f"map's {name} ({d:.4g} m, {b} blades): a C header holds one map (use VehicleMap in "
                              "Python, with one map per rotor)")
-        if r.params is not None and (recorded_set is None or r.params.replace(air=recorded_set.air) != recorded_set):
+        if r.params is not None and (recorded_set is None or not recorded_set.same_section(r.params)):
             raise ValueError(f"rotor {k + 1} has its own parameter set: a C header holds one map")
     from .vehicle.mapped import _warn_map_air
 

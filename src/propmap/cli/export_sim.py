@@ -217,7 +217,6 @@ def _export_vehicle(read, propeller, params, label: str, air, target: str, hover
     where it hovers beyond tip Mach TIP_MACH_WARN; warned of where --hover-rpm stands in for
     such a hover."""
     import warnings
-    from dataclasses import replace
 
     from ..core.solver import TIP_MACH_WARN, SolverError
     from ..simexport import check_rotorpy_vehicle
@@ -254,7 +253,7 @@ def _export_vehicle(read, propeller, params, label: str, air, target: str, hover
                       stacklevel=1)
     # (a rotor's own set equal to PARAMS but for its air is PARAMS: every rotor is solved in one air)
     own = [k + 1 for k, r in enumerate(veh.rotors)
-           if r.params is not None and replace(r.params, air=params.air) != params]
+           if r.params is not None and not params.same_section(r.params)]
     if own and hover_rpm is None:  # (its hover is that of the rotors' own sets, which the export has not)
         raise InputError(f"--vehicle: rotor(s) {', '.join(map(str, own))} carry their own parameter set, not "
                          f"{label}, so the vehicle's hover is not {propeller.name}'s with it: give --params "

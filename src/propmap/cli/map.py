@@ -298,7 +298,7 @@ def _one_map_vehicle(veh, propeller, params, label: str):
                              f"m, {r.propeller.n_blades} blades{other}), not the map's {propeller.name} "
                              f"({propeller.diameter:.4g} m, {propeller.n_blades} blades): a C header holds one map "
                              "and one set")
-        if r.params is not None and replace(r.params, air=params.air) != params:
+        if r.params is not None and not params.same_section(r.params):
             theirs = f" ({r.params.label})" if r.params.label else ""
             raise InputError(f"--vehicle: rotor {k + 1} carries its own parameter set{theirs}, not the map's, "
                              f"{label}: a C header holds one map and one set (give --params, the set of every "

@@ -242,6 +242,29 @@ class RotorOptions:
         ``air`` and ``label``, :data:`RECORD_META`)."""
         return {k: v for k, v in asdict(self).items() if k not in RECORD_META}
 
+    def same_section(self, other) -> bool:
+        """Whether ``other`` is this set but for its air and label: the same model and every
+        section and rotor field equal, numbers to 1e-12 relative (a set written to a parameter
+        file and read back differs in its angles by the degrees' rounding, 1 ulp: compared
+        exactly, a vehicle rotor naming the file was refused a map built with the set in memory,
+        an audit of stop 96).
+
+        Parameters
+        ----------
+        other : object
+            Any object; a set of another model, or no set, is not the same.
+
+        Returns
+        -------
+        bool
+        """
+        if type(other) is not type(self):
+            return False
+        mine, theirs = self.as_dict(), other.as_dict()
+        return all(a == b if not (isinstance(a, float) and isinstance(b, float)) else
+                   math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-300) for a, b in
+                   ((mine[k], theirs[k]) for k in mine))
+
 
 @dataclass(frozen=True)
 class AirfoilParams(RotorOptions):

@@ -59,7 +59,7 @@ def _check_rotor_map(i: int, m, rotor) -> None:
                          f"its propeller {p.name} is {p.diameter:.4g} m with {p.n_blades} blades{other}: build the "
                          "map for the vehicle's propeller (propmap map PROP, PROP the rotor's propeller, one map per "
                          "propeller)")
-    if recorded is not None and rotor.params is not None and rotor.params.replace(air=recorded[1].air) != recorded[1]:
+    if recorded is not None and rotor.params is not None and not recorded[1].same_section(rotor.params):
         raise ValueError(f"maps: rotor {i + 1} has its own parameter set ({rotor.params.label or 'unlabelled'}), its "
                          f"map another ({m.attrs.get('params_label') or 'unlabelled'}): build that rotor's map with "
                          "its set (one map per rotor)")
