@@ -1,6 +1,10 @@
-"""The command line as the tests call it: one in-process run and its one-line error check."""
+"""The command line as the tests call it: one in-process run and its one-line error check; the
+example quadrotor with parameter-set entries, as the vehicle commands' tests build it."""
 
 from __future__ import annotations
+
+import shutil
+from pathlib import Path
 
 from propmap.cli.main import main
 
@@ -19,3 +23,18 @@ def one_line_error(code, err, match=""):
     """Exit 2, one stderr line starting 'propmap: error:' that contains ``match``, no traceback."""
     errors = [line for line in err.strip().splitlines() if line.startswith("propmap: error:")]
     return code == 2 and len(errors) == 1 and match in errors[0] and "Traceback" not in err
+
+
+def example_quad(tmp_path, top="", rotor_params=None):
+    """The bundled example quadrotor (four catalogue apce_8x6) written to ``tmp_path / "v.toml"``
+    with a top-level entry ``top`` and each rotor's ``params`` (None: none), beside a copy of the
+    NeuroBEM flight fit as ``fit.toml`` (a [body] table, rho 1.204) for ``top`` or a rotor to name."""
+    import propmap as pm
+
+    examples = Path(pm.__file__).parent / "data" / "examples"
+    head, *rotors = (examples / "quadrotor.toml").read_text().split("[[rotors]]")
+    extra = [""] * 4 if rotor_params is None else [f'params = "{p}"' if p else "" for p in rotor_params]
+    text = head + top + "\n" + "".join("[[rotors]]" + r.rstrip("\n") + "\n" + e + "\n" for r, e in zip(rotors, extra))
+    shutil.copy(examples / "neurobem_quadrotor.params.toml", tmp_path / "fit.toml")
+    (tmp_path / "v.toml").write_text(text, encoding="utf-8")
+    return tmp_path / "v.toml"

@@ -4,30 +4,16 @@ catalogue's APC 8x6E, APC PE0 geometry; the NeuroBEM quadrotor's flight fit, doc
 
 import json
 import re
-import shutil
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import propmap as pm
 
+from .cli_helpers import example_quad as _quad
 from .cli_helpers import run
 
-EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
-FIT = EXAMPLES / "neurobem_quadrotor.params.toml"  # (a flight fit: a [body] table, rho 1.204)
 GRID = ["--rpm", "2000:12000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:4", "--check-points", "0"]
-
-
-def _quad(tmp_path, top="", rotor_params=None):
-    """The example quadrotor (four catalogue apce_8x6) with a top-level entry and each rotor's
-    ``params`` (None: none)."""
-    head, *rotors = (EXAMPLES / "quadrotor.toml").read_text().split("[[rotors]]")
-    extra = [""] * 4 if rotor_params is None else [f'params = "{p}"' if p else "" for p in rotor_params]
-    text = head + top + "\n" + "".join("[[rotors]]" + r.rstrip("\n") + "\n" + e + "\n" for r, e in zip(rotors, extra))
-    shutil.copy(FIT, tmp_path / "fit.toml")
-    (tmp_path / "v.toml").write_text(text, encoding="utf-8")
-    return tmp_path / "v.toml"
 
 
 def _header_set(path):
