@@ -17,8 +17,11 @@ import numpy as np
 import pytest
 
 import propmap as pm
+from propmap.io.geometry_files import GeometryFileError, geometry_format, read_geometry
+from propmap.io.qprop_file import read_qprop_geometry, read_qprop_params
 
 from .cli_helpers import one_line_error, run
+from .test_qprop_file import FIRST_ROW, STATIONS, propfile
 
 EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
 FIT = EXAMPLES / "neurobem_quadrotor.params.toml"  # (a flight fit: a [body] table, rho 1.204)
@@ -137,3 +140,105 @@ def test_export_sim_of_a_vehicle_with_another_propeller_takes_props_own_default(
     assert code == 0, err
     assert json.loads(out)["params"] == "calibrated:apce_8x6"
     assert "rotor(s) 1, 2, 3, 4 carry their own parameter set" in err and "apce_8x4" in err, err
+
+
+# --- QPROP files (io/qprop_file.py, io/param_sets.py)
+
+def _plain(tmp_path):
+    return read_geometry(propfile(tmp_path / "plain.prop"))
+
+
+def test_fortran_D_exponents_and_trailing_empty_fields_read_as_the_plain_file(tmp_path):
+    """Fortran's 1.27D-1 (upper case, as Fortran writes it; mutants: the regex or the conversion
+    without D) and station rows ending in empty fields ("commas at the end dropped"; mutant: kept,
+    an empty field where CL0 belongs)."""
+    plain = _plain(tmp_path)
+    upper = read_geometry(propfile(tmp_path / "D.prop", blades="2 1.27D-1", fac="2.54D-2 2.54D-2 1D0"))
+    assert upper.same_geometry(plain) and upper.radius == 0.127
+    commas = read_geometry(propfile(tmp_path / "c.prop", rows=[f" {r:g},{c:g},{b:g},," for r, c, b in STATIONS]))
+    assert commas.same_geometry(plain)
+    blank = read_geometry(propfile(tmp_path / "b.prop", rows=[f" {r:g} {c:g} {b:g} ," for r, c, b in STATIONS]))
+    assert blank.same_geometry(plain)
+
+
+def test_a_value_cut_at_column_128_is_warned(tmp_path):
+    """A value that straddles column 128 is read cut by QPROP (0.45 of 0.456789): warned, naming it
+    (mutant: only values wholly past the column were)."""
+    row = " 1 0.8 35"
+    row += " " * (124 - len(row)) + "0.456789"  # (columns 125-132)
+    rows = [row, *(f" {r:g}  {c:g}  {b:g}" for r, c, b in STATIONS[1:])]
+    with pytest.warns(UserWarning, match=rf"cut.prop, line {FIRST_ROW}: its values run past column 128.*cuts CL0"):
+        p = read_qprop_geometry(propfile(tmp_path / "cut.prop", rows=rows))
+    assert p.same_geometry(_plain(tmp_path))
+
+
+@pytest.mark.parametrize("change, line, match", [
+    (dict(blades="2 -0.1"), 4, "R = -0.1 m is negative"),
+    (dict(blades="2 0.1206"), 4, "R = 0.1206 m is inside the last station (r = 0.12065 m, line 23)"),
+    (dict(rows=[" 1 0.8 35", " 2 1.0 -95", " 4.75 0.45 13"]), FIRST_ROW + 1,
+     "beta = -95 gives -95 deg (scaled by line 12's factors and line 13's offsets), outside [-90, 90] deg"),
+    (dict(blades="2 1.905", fac="0.381 0.381 1.0"), None,
+     "the diameter 2R = 3.81 m (150 in, from line 4's R) is outside [0.5, 100] in"),
+])
+def test_the_readers_refusals_name_their_line(tmp_path, change, line, match):
+    """Mutants: R < -1 for R < 0 (said "inside the last station"), R's tolerance 1e-9 -> 1e-3 and
+    beta > 90 for |beta| > 90 (Propeller's own error, no line), the diameter's range on R (150 in read)."""
+    with pytest.raises(GeometryFileError) as info:
+        read_geometry(propfile(tmp_path / "bad.prop", **change))
+    msg = str(info.value)
+    assert match in msg and "\n" not in msg, msg
+    if line is not None:
+        assert f"bad.prop, line {line}: " in msg, msg
+
+
+def test_a_blade_angle_of_90_degrees_is_in_range(tmp_path):
+    """[-90, 90] deg is closed (mutant: >= 90 refused)."""
+    rows = [" 1 0.8 90", " 1.5 0.95 30", " 2 1.05 25.5", " 4.75 0.45 13"]
+    p = read_geometry(propfile(tmp_path / "b90.prop", rows=rows))
+    assert p.theta[0] == pytest.approx(math.pi / 2, rel=1e-15)
+
+
+def test_a_wrong_chord_factor_and_a_short_blade_are_warned(tmp_path):
+    """read_qprop_geometry's Warns: the largest chord outside [0.12, 0.6] R (Cfac 0.1016 for 0.0254:
+    0.88 R) and stations that stop inside 0.9 R (R = 0.15 m, last station 0.12065 m; mutants: each
+    warning dropped)."""
+    with pytest.warns(UserWarning, match=r"ch.prop: the largest chord is 0.88 R.*Cfac and Cadd \(lines 12, 13\)"):
+        read_geometry(propfile(tmp_path / "ch.prop", fac="0.0254 0.1016 1.0"))
+    with pytest.warns(UserWarning, match=r"short.prop: the stations stop at r/R = 0.8043"):
+        p = read_geometry(propfile(tmp_path / "short.prop", blades="2 0.15"))
+    assert p.radius == 0.15
+
+
+def test_the_sets_range_refusals_name_their_line(tmp_path):
+    """CL_a = 0 (an open bound; mutant: closed, then -CL0/CL_a divided by zero) and -CL0/CL_a outside
+    [-20, 10] deg (mutant: unchecked, CamberedParams' error without the line)."""
+    for name, line6, match in (("a0", " 0.50  0    ", "line 6: CL_a = 0 is outside (0, 20], the range of "
+                                                    "propmap's cl_alpha"),
+                               ("cl0", " 2.5  5.8   ", "line 6: CL0 = 2.5 with CL_a = 5.8 gives a zero-lift angle "
+                                                     "-CL0/CL_a of -24.7 deg, outside [-20, 10] deg")):
+        f = propfile(tmp_path / f"{name}.prop", cd="0.028 0.050 0.050 0.5")
+        f.write_text(f.read_text().replace(" 0.50  5.8   ", line6))
+        with pytest.raises(GeometryFileError) as info:
+            read_qprop_params(f)
+        assert f"{name}.prop, {match}" in str(info.value), str(info.value)
+
+
+def test_a_qprop_sets_label_is_the_whole_spec(tmp_path):
+    """qprop:FILE is labelled with the spec as given, not the path as Path spells it (mutant: the
+    reader's default label, which drops the doubled slash)."""
+    propfile(tmp_path / "t.prop", cd="0.028 0.050 0.050 0.5")
+    spec = f"qprop:{tmp_path}//t.prop"
+    assert pm.resolve_params(spec).label == spec
+
+
+def test_ragged_tables_under_a_title_are_no_qprop_files(tmp_path):
+    """A millimetre table under a title whose fourth row has four numbers, or two, is neither a QPROP
+    file's header (no two-value line 3, 4 or 6) nor its line 2 (three numbers, not Nblades [R])
+    (mutants: the two-value line not required; a line 2 of three numbers taken)."""
+    rows = [f"{25.4 * r:g} {25.4 * c:g} {b:g}" for r, c, b in STATIONS]
+    for name, k, row in (("four.txt", 3, rows[3] + " 7"), ("two.txt", 3, " ".join(rows[3].split()[:2]))):
+        f = tmp_path / name
+        f.write_text("Test 10x6 in mm\n" + "\n".join(rows[:k] + [row] + rows[k + 1:]) + "\n")
+        assert geometry_format(f) is None, name
+        with pytest.raises(GeometryFileError, match="unrecognised geometry format"):
+            read_geometry(f)
