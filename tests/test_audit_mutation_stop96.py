@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import math
-import shutil
 import warnings
 from pathlib import Path
 
@@ -20,26 +19,13 @@ import propmap as pm
 from propmap.io.geometry_files import GeometryFileError, geometry_format, read_geometry
 from propmap.io.qprop_file import read_qprop_geometry, read_qprop_params
 
+from .cli_helpers import example_quad as _quad
 from .cli_helpers import one_line_error, run
 from .test_qprop_file import FIRST_ROW, STATIONS, propfile
 
 EXAMPLES = Path(pm.__file__).parent / "data" / "examples"
 FIT = EXAMPLES / "neurobem_quadrotor.params.toml"  # (a flight fit: a [body] table, rho 1.204)
 GRID = ["--rpm", "2000:12000:4", "--airspeed", "0:10:3", "--incidence-deg", "0:180:4", "--check-points", "0"]
-
-
-def _quad(tmp_path, top="", rotor_params=None, first_propeller=None):
-    """The example quadrotor with a top-level entry, each rotor's ``params`` (None: none) and, where
-    given, another propeller on rotor 1."""
-    head, *rotors = (EXAMPLES / "quadrotor.toml").read_text().split("[[rotors]]")
-    if first_propeller is not None:
-        assert 'propeller = "apce_8x6"' in rotors[0]
-        rotors[0] = rotors[0].replace('propeller = "apce_8x6"', f'propeller = "{first_propeller}"')
-    extra = [""] * 4 if rotor_params is None else [f'params = "{p}"' if p else "" for p in rotor_params]
-    text = head + top + "\n" + "".join("[[rotors]]" + r.rstrip("\n") + "\n" + e + "\n" for r, e in zip(rotors, extra))
-    shutil.copy(FIT, tmp_path / "fit.toml")
-    (tmp_path / "v.toml").write_text(text, encoding="utf-8")
-    return tmp_path / "v.toml"
 
 
 # --- SectionParams.same_section (core/airfoil.py)
