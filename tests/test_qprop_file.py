@@ -160,6 +160,19 @@ def test_a_malformed_file_is_one_error_naming_its_line(tmp_path, change, line, m
         assert f"bad.prop, line {line}: " in msg, msg
 
 
+def test_a_ragged_table_taken_for_a_qprop_file_is_told_why(tmp_path):
+    """A millimetre table of stations under a title, without its header line and with one row of
+    two numbers, reads as a QPROP file (lines 2-8 in its pattern, not a table's equal rows: the
+    mutation audit of stop 96): its refusal says it was read as one, and what a table needs."""
+    table = tmp_path / "mm.txt"
+    table.write_text("My blade, mm\n25.4 12.1 30\n40 14\n55 13.5 22\n70 12 18\n85 10 15\n101.6 8 13\n"
+                     "110 6 12\n120 4 11\n")
+    msg = _message(table)
+    assert msg.endswith("line 2: Nblades = 25.4 is not a whole number in [1, 100] (read as a QPROP propeller "
+                        "file, whose data line 2 gives the blade count; a table of stations is read with its header "
+                        "line, r/R c/R beta)"), msg
+
+
 def test_a_file_that_ends_early_and_a_tip_chord_of_zero(tmp_path):
     short = tmp_path / "short.prop"
     short.write_text("My prop\n2\n0.5 5.8\n-0.4 1.2\n")

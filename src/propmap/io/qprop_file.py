@@ -256,7 +256,9 @@ def _scaled(f: _Propfile) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     where, rows = f.where, f.rows
     (k_n, (blades, *rest)), k_fac, k_add = f.header[0], f.header[5][0], f.header[6][0]
     if blades != round(blades) or not 1 <= blades <= 100:
-        raise GeometryFileError(f"{where}, line {k_n}: Nblades = {blades:g} is not a whole number in [1, 100]")
+        raise GeometryFileError(f"{where}, line {k_n}: Nblades = {blades:g} is not a whole number in [1, 100] (read "
+                                "as a QPROP propeller file, whose data line 2 gives the blade count; a table of "
+                                "stations is read with its header line, r/R c/R beta)")
     radius = rest[0] if rest else 0.0
     if radius < 0:
         raise GeometryFileError(f"{where}, line {k_n}: R = {radius:g} m is negative: give the tip radius in metres, "
