@@ -102,3 +102,38 @@ def test_a_rotor_naming_a_written_copy_of_the_map_s_set_is_that_set(tmp_path):
     other = _quad(tmp_path, rotor_params=["gill2017-apc"] * 4)
     with pytest.raises(ValueError, match="rotor 1 has its own parameter set"):
         pm.VehicleMap(pm.read_vehicle(other), pm.RotorMap(ds))
+
+
+def test_a_qprop_set_is_an_input_no_output_may_overwrite(tmp_path, capsys):
+    """`loads --params qprop:q.csv --out q.csv` wrote its table over the QPROP file it read the set
+    from (stop 96, found on reading the change): qprop:FILE's FILE is an input like any other."""
+    from .test_qprop_file import propfile
+
+    q = propfile(tmp_path / "q.csv")
+    before = q.read_text()
+    (tmp_path / "pts.csv").write_text("rpm,airspeed,incidence_deg\n5000,0,0\n")
+    code, out, err = run(capsys, "loads", "apce_8x6", "--params", f"qprop:{q}", "--points", tmp_path / "pts.csv",
+                         "--out", q)
+    assert code == 2 and "--out: " in err and "refusing to overwrite an input" in err, err
+    assert q.read_text() == before
+
+
+def test_a_vehicle_rotor_s_qprop_set_is_read_from_the_vehicle_s_folder(tmp_path, capsys, monkeypatch):
+    """A rotor's `params = "qprop:FILE"` was read from the working folder, where every other file a
+    vehicle names is read from the vehicle file's (stop 96): run from elsewhere, the vehicle was
+    refused ("no such file"). Now it is the vehicle's folder's, and an input of the commands."""
+    from propmap.vehicle.own_set import vehicle_files
+
+    from .test_qprop_file import propfile
+
+    folder = tmp_path / "a"
+    folder.mkdir()
+    propfile(folder / "p.qprop")
+    veh = _quad(folder, rotor_params=["qprop:p.qprop"] * 4)
+    monkeypatch.chdir(tmp_path)
+    r = pm.resolve_vehicle(veh)
+    assert r.params.label == f"qprop:{folder / 'p.qprop'}" and r.params.cl_alpha == 5.8
+    assert folder / "p.qprop" in vehicle_files(veh)
+    code, out, err = run(capsys, "trim-vehicle", "--vehicle", veh, "--json", "--airspeed", "0")
+    assert code == 0, err
+    assert json.loads(out)["params"] == f"qprop:{folder / 'p.qprop'}"

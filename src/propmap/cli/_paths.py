@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from ..io.qprop_file import QPROP_PREFIX
 from ._common import _SEPARATORS, InputError, _short
 
 __all__ = ["check_out_dir", "check_outputs", "refuse_copies", "vehicle_inputs"]
@@ -88,7 +89,8 @@ def check_outputs(outputs, inputs) -> None:
         (option, path) of every file a command will write, including files written beside
         ``--out`` (reports, figures) or inside ``--out-dir``.
     inputs : iterable of str or Path
-        Every file the command reads (missing ones are ignored).
+        Every file the command reads (missing ones are ignored; ``qprop:FILE``, a parameter
+        set read from a QPROP file, is FILE).
 
     Raises
     ------
@@ -103,6 +105,8 @@ def check_outputs(outputs, inputs) -> None:
     """
     from ..io.inputs import short_path
 
+    # (a --params qprop:FILE reads FILE: until stop 96 `loads --params qprop:q.csv --out q.csv` wrote over it)
+    inputs = [str(p)[len(QPROP_PREFIX):] if isinstance(p, str) and p.startswith(QPROP_PREFIX) else p for p in inputs]
     ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
     seen: dict[str, str] = {}
     for option, path in outputs:

@@ -229,6 +229,16 @@ def _leading_numbers(s: str) -> list[float]:
     return out
 
 
+def _qprop_from(spec: str, folder: Path) -> str:
+    """``spec`` with the file of a ``qprop:FILE`` set taken from ``folder`` where it exists there, as a
+    vehicle file's other entries are (until stop 96 from the working folder); any other spec as it is."""
+    rest = spec[len(QPROP_PREFIX):] if spec.startswith(QPROP_PREFIX) else ""
+    try:
+        return QPROP_PREFIX + str(folder / rest) if rest.strip() and (folder / rest).is_file() else spec
+    except (OSError, ValueError):  # (a name the system refuses: the reader says so)
+        return spec
+
+
 def _is_qprop(text: str) -> bool:
     """Whether the text reads as a QPROP propeller file's beginning, by QPROP's comment rules: after a
     name line (any text, a number too: QPROP's FREAD takes it whole), data lines that start with numbers

@@ -73,6 +73,7 @@ from ..core._numbers import integer
 from ..core.geometry import INCH, Propeller, short_repr
 from ..core.body import BodyDrag
 from ..io.inputs import as_path, short_path, show_path
+from ..io.qprop_file import _qprop_from
 from ..io.toml_file import load_toml
 from .layout import Rotor, Vehicle
 
@@ -200,7 +201,7 @@ def _rotor_params(spec, folder: Path, where: str):
                                f"got {short_repr(spec)}")
     local = _local_file(spec, folder)
     try:
-        return read_params(local) if local is not None else resolve_params(spec)
+        return read_params(local) if local is not None else resolve_params(_qprop_from(spec, folder))
     except (ParamsFileError, KeyError, ValueError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         if local is None and ":" not in spec:  # (a file not found, not a named set: where it was looked for)
@@ -596,4 +597,4 @@ def _resolved_spec(spec, folder: Path) -> str | None:
     if not isinstance(spec, str) or not spec.strip():
         return None
     local = _local_file(spec, folder)
-    return spec if local is None else str(local)
+    return _qprop_from(spec, folder) if local is None else str(local)

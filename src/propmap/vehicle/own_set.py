@@ -14,6 +14,7 @@ import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from ..io.qprop_file import QPROP_PREFIX
 from ..io.toml_file import load_toml
 from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
@@ -62,7 +63,7 @@ def vehicle_files(path) -> list[Path]:
     -------
     list of Path
         The entries that exist as files or folders, in the file's order (the vehicle's set, the
-        rotors' propellers, the rotors' sets).
+        rotors' propellers, the rotors' sets; a ``qprop:FILE`` set's FILE).
 
     Raises
     ------
@@ -73,7 +74,8 @@ def vehicle_files(path) -> list[Path]:
     data = load_toml(path, VehicleFileError)
     specs = [_resolved_spec(data.get("params"), path.parent),
              *(s for key in ("propeller", "params") for s in _entry_specs(data, path.parent, key))]
-    return [Path(s) for s in specs if s is not None and os.path.lexists(s)]
+    specs = [s.removeprefix(QPROP_PREFIX) for s in specs if s is not None]  # (qprop:FILE reads FILE)
+    return [Path(s) for s in specs if os.path.lexists(s)]
 
 
 def with_body_table(vehicle: Vehicle, table) -> Vehicle:
