@@ -36,7 +36,7 @@ from ..core.geometry import INCH, Propeller, rotor_like
 from .blade_stations import (CHORD_MAX_PLAUSIBLE, FIRST_STATION_MAX, LAST_STATION_MIN, LAST_STATION_REFUSED,
                              GeometryFileError, _refuse_short_blade, _warn_partial_blade)
 from .inputs import _check_column, _check_number, _clip, _read_table, _read_text, as_path, show_path
-from .pe0 import _apc_pe0, read_apc_pe0
+from .pe0 import _apc_pe0, _is_pe0, read_apc_pe0
 from .qprop_file import _geometry as _qprop_geometry
 from .qprop_file import _is_qprop
 
@@ -343,8 +343,7 @@ def _format(text: str) -> str | None:
     second line is text, and a UIUC file has its header."""
     if _is_qprop(text):
         return "qprop"
-    head = text[:4000]
-    if "STATION" in head and "TWIST" in head:
+    if _is_pe0(text):
         return "pe0"
     return "uiuc" if _is_uiuc_geometry(text) else None
 
@@ -451,7 +450,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         return _own_size(path, _apc_pe0(path, text, name=None, source=""), diameter_in, n_blades, "PE0",
                          "BLADES: ")
     if kind == "qprop":
-        return _own_size(path, _qprop_geometry(path, text, name=None, source=""), diameter_in, n_blades, "QPROP",
+        return _own_size(path, _qprop_geometry(path, text, name=None, source="", detected=True), diameter_in, n_blades,
+                         "QPROP",
                          "Nblades (its second data line): ")
     if kind == "uiuc":
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,

@@ -56,6 +56,13 @@ def read_apc_pe0(path, *, name: str | None = None, source: str = "") -> Propelle
     return _apc_pe0(Path(path), text, name=name, source=source)
 
 
+def _is_pe0(text: str) -> bool:
+    """Whether the text reads as an APC PE0 file: the words STATION and TWIST (its table's columns)
+    in its first 4000 characters, the signature :func:`propmap.io.read_geometry` dispatches on."""
+    head = text[:4000]
+    return "STATION" in head and "TWIST" in head
+
+
 #: the columns of a PE0 station row (STATION, CHORD, ..., TWIST)
 PE0_COLUMNS = 13
 

@@ -51,6 +51,7 @@ from ..core.geometry import INCH, Propeller, rotor_like
 from .blade_stations import (CHORD_MAX_PLAUSIBLE, LAST_STATION_REFUSED, GeometryFileError,
                              _warn_partial_blade)
 from .inputs import _clip, _read_text, show_path
+from .pe0 import _is_pe0
 
 __all__ = ["QPROP_CITATION", "QPROP_PREFIX", "read_qprop_geometry", "read_qprop_params"]
 
@@ -114,12 +115,16 @@ def _fields(s: str) -> list[str | None]:
     return out
 
 
+def _float(tok: str) -> float:
+    """A field that matches :data:`_NUMBER_RE` as a float (Fortran's ``d`` exponent an ``e``)."""
+    return float(tok.replace("d", "e").replace("D", "e"))
+
+
 def _number(where: str, k: int, tok: str, label: str) -> float:
-    if _NUMBER_RE.fullmatch(tok):
-        x = float(tok.replace("d", "e").replace("D", "e"))
-        if math.isfinite(x):
-            return x
-    if _NUMBER_RE.fullmatch(tok):  # (1e400: a number beyond a float's range; QPROP's REAL too)
+    number = _NUMBER_RE.fullmatch(tok) is not None
+    if number and math.isfinite(x := _float(tok)):
+        return x
+    if number:  # (1e400: a number beyond a float's range; QPROP's REAL too)
         what = "a finite number (beyond the floating-point range)"
     else:
         what = "a finite number" if tok.lower().lstrip("+-") in ("nan", "inf", "infinity") else "a number"
@@ -152,15 +157,16 @@ def _numbers(where: str, k: int, s: str, labels, need: int, what: str, hint: str
     return tuple(vals)
 
 
-def _parse(path: Path, text: str) -> _Propfile:
+def _parse(path: Path, text: str, detected: bool = False) -> _Propfile:
     """A QPROP file's name line, data lines 2-8 and station rows, each value a finite number; a file of
-    another geometry format (a UIUC table, an APC PE0 file) is refused as such, and data lines whose
-    values run past column 128, which QPROP does not read, are warned of."""
+    another geometry format (a UIUC table, an APC PE0 file) is refused as such (not looked for where
+    ``detected``: read_geometry took the text for a QPROP file), and data lines whose values run past
+    column 128, which QPROP does not read, are warned of."""
     where = show_path(path)
     lines = _data_lines(text)
     if not lines:
         raise GeometryFileError(f"{where}: no data lines: a QPROP propeller file starts with the propeller's name")
-    other = None if _is_qprop(text) else _other_format(lines)
+    other = None if detected or _is_qprop(text) else _other_format(text, lines)
     if other:
         raise GeometryFileError(f"{where}: {other}, not a QPROP propeller file (the propeller's name, then "
                                 "Nblades [R], CL0 CL_a, ...): give it as the geometry (PROP, --prop), not qprop:FILE")
@@ -185,14 +191,19 @@ _QMIL_HINT = ("; a QMIL input file (XIdes and CLdes where QPROP reads Rfac Cfac 
 QPROP_LINE_CHARS = 128
 
 
-def _other_format(lines) -> str | None:
-    """What a text that is no QPROP file reads as, by the data lines: a UIUC geometry table (its
-    ``r/R`` header line) or an APC PE0 file (its STATION and TWIST words); None for neither."""
-    for k, ln in lines:
-        if (ln.split() or [""])[0].lower() == "r/r":
-            return f"a UIUC geometry file (its 'r/R c/R beta' header, line {k})"
-    words = " ".join(ln for _, ln in lines[:60])
-    if "STATION" in words and "TWIST" in words:
+def _uiuc_header(lines) -> int | None:
+    """The line number of the first data line that is a UIUC geometry table's ``r/R ...`` header; None."""
+    return next((k for k, ln in lines if (ln.split() or [""])[0].lower() == "r/r"), None)
+
+
+def _other_format(text: str, lines) -> str | None:
+    """What a text that is no QPROP file reads as: a UIUC geometry table (its ``r/R`` header line, of
+    the data ``lines``) or an APC PE0 file (read_geometry's signature, :func:`propmap.io.pe0._is_pe0`);
+    None for neither."""
+    k = _uiuc_header(lines)
+    if k is not None:
+        return f"a UIUC geometry file (its 'r/R c/R beta' header, line {k})"
+    if _is_pe0(text):
         return "an APC PE0 file (its STATION and TWIST columns)"
     return None
 
@@ -225,7 +236,7 @@ def _leading_numbers(s: str) -> list[float]:
     for f in _fields(s):
         if f is None or not _NUMBER_RE.fullmatch(f):
             break
-        out.append(float(f.replace("d", "e").replace("D", "e")))
+        out.append(_float(f))
     return out
 
 
@@ -250,7 +261,7 @@ def _is_qprop(text: str) -> bool:
     table's rows, 2 or more columns: a QPROP file's lines 3, 4 and 6 have two, lines 5, 7 and 8
     three)."""
     lines = _data_lines(text[:65536])
-    if len(lines) < 3 or any((ln.split() or [""])[0].lower() == "r/r" for _, ln in lines):
+    if len(lines) < 3 or _uiuc_header(lines) is not None:
         return False
     counts = [len(_leading_numbers(s)) for _, s in lines[1:8]]
     if not (counts[0] and counts[1]) or (len(counts) >= 3 and len(set(counts)) == 1):
@@ -321,8 +332,8 @@ def _scaled(f: _Propfile) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     return r, c, beta, radius
 
 
-def _geometry(path: Path, text: str, *, name: str | None, source: str) -> Propeller:
-    f = _parse(path, text)
+def _geometry(path: Path, text: str, *, name: str | None, source: str, detected: bool = False) -> Propeller:
+    f = _parse(path, text, detected)
     r, c, beta, radius = _scaled(f)
     shown = f" ({_clip(f.name, 80)})" if f.name else ""
     try:
