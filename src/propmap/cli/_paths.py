@@ -7,7 +7,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..io.qprop_file import QPROP_PREFIX
+from ..io.qprop_file import _spec_file
 from ._common import _SEPARATORS, InputError, _short
 
 __all__ = ["check_out_dir", "check_outputs", "refuse_copies", "vehicle_inputs"]
@@ -105,8 +105,7 @@ def check_outputs(outputs, inputs) -> None:
     """
     from ..io.inputs import short_path
 
-    # (a --params qprop:FILE reads FILE: until stop 96 `loads --params qprop:q.csv --out q.csv` wrote over it)
-    inputs = [str(p)[len(QPROP_PREFIX):] if isinstance(p, str) and p.startswith(QPROP_PREFIX) else p for p in inputs]
+    inputs = [_spec_file(p) for p in inputs]  # (a --params qprop:FILE reads FILE)
     ins = [Path(p) for p in inputs if p is not None and str(p) != "" and _is_file(p)]
     seen: dict[str, str] = {}
     for option, path in outputs:

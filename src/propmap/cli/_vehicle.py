@@ -47,15 +47,14 @@ def _export_reading(path, params_spec):
     own dropped, said in a warning, as :func:`_vehicle_sets` drops them)."""
     from ..io.params_file import ParamsFileError
     from ..vehicle.file import VehicleFileError
-    from ..vehicle.own_set import _reading, with_body_table, with_set_body
+    from ..vehicle.own_set import _reading, with_set_body
 
     try:
         reading = _reading(path)
     except VehicleFileError as exc:
         raise InputError(f"--vehicle: {exc}") from None
     if params_spec is None:
-        table = reading.mine_table
-        return reading, with_body_table(reading.vehicle, table), (None if table is None else reading.mine)
+        return reading, *reading.with_own_body()
     try:
         veh, body_from = with_set_body(reading.vehicle, params_spec)
     except ParamsFileError as exc:
@@ -63,25 +62,6 @@ def _export_reading(path, params_spec):
     # (--params gives every rotor's set, the rotors' own dropped and said, as trim-vehicle and wrench take it: until
     # stop 96 the exports refused them, export-sim unless --hover-rpm, where trim-vehicle hovered with --params)
     return reading, _one_set(veh, "--params gives every rotor's set"), body_from
-
-
-def _own_spec_for(reading, propeller):
-    """The set a one-propeller export of the vehicle takes without --params (export-sim --vehicle, map
-    --format c --vehicle), where ``propeller`` (PROP) is every rotor's geometry: the set
-    :func:`propmap.resolve_vehicle`'s rule gives every rotor (each rotor's own set, else the vehicle
-    file's own, else its catalogue propeller's calibrated set, else 'generic'), else, where the rotors'
-    sets differ, the vehicle file's own set; None (PROP's default) where neither is one, or a rotor
-    carries another propeller (:func:`propmap.vehicle.own_set._one_propeller_set`). (The vehicle's set
-    is its rotors', not another propeller's: a review found apce_8x6 exported with the NeuroBEM rotors'
-    fit. Until 2026-12-01 the vehicle's own set came first here, and export-sim refused a vehicle whose
-    rotors all name another set, which trim-vehicle hovers with; then a vehicle of mixed sets took
-    PROP's default, a set none of its rotors takes, and rotors of a catalogue propeller exported from
-    its geometry file the generic set: stop 96. The rotors' one set: the export took PROP's default and
-    hovered 9.9% slower than trim-vehicle where the rotors' set was fitted at rho 1.0, an
-    air-consistency audit, 2026-12-01.)"""
-    from ..vehicle.own_set import _one_propeller_set
-
-    return _one_propeller_set(reading, propeller)
 
 
 def _vehicle_sets(vehicle, params_spec, air_choice):

@@ -106,11 +106,12 @@ def export_sim_command(prop, target, out, envelope, hover_rpm, vehicle, n_points
     given_spec = params_spec  # (--params as given: its [body] table, else the vehicle file's own set's)
     read = None
     if vehicle is not None:  # (one parse of the file; the vehicle's set for every rotor, where PROP is theirs)
-        from ._vehicle import _export_reading, _own_spec_for
+        from ..vehicle.own_set import _one_propeller_set
+        from ._vehicle import _export_reading
 
         read = _export_reading(vehicle, params_spec)
         if params_spec is None:
-            params_spec = _own_spec_for(read[0], propeller)
+            params_spec = _one_propeller_set(read[0], propeller)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
     check_section_match(propeller, label)

@@ -199,9 +199,9 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
     else:
         propeller = prop_choice.load(prop)
         if veh is not None and params_spec is None:  # (the vehicle's set for every rotor, as export-sim's)
-            from ._vehicle import _own_spec_for
+            from ..vehicle.own_set import _one_propeller_set
 
-            params_spec = _own_spec_for(reading, propeller)
+            params_spec = _one_propeller_set(reading, propeller)
         params, air, label = load_params(params_spec, prop)
         if veh is not None:  # refused before the build, not after it
             veh = _one_map_vehicle(veh, propeller, params, label)

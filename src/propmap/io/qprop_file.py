@@ -240,6 +240,13 @@ def _leading_numbers(s: str) -> list[float]:
     return out
 
 
+def _spec_file(spec):
+    """The file a parameter spec reads: FILE of ``qprop:FILE``; any other spec (a path, a named set,
+    None) as it is. An input no output may overwrite (until stop 96 ``loads --params qprop:q.csv
+    --out q.csv`` wrote over it)."""
+    return spec[len(QPROP_PREFIX):] if isinstance(spec, str) and spec.startswith(QPROP_PREFIX) else spec
+
+
 def _qprop_from(spec: str, folder: Path) -> str:
     """``spec`` with the file of a ``qprop:FILE`` set taken from ``folder`` where it exists there, as a
     vehicle file's other entries are (until stop 96 from the working folder); any other spec as it is."""

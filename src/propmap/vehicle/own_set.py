@@ -14,7 +14,7 @@ import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..io.qprop_file import QPROP_PREFIX
+from ..io.qprop_file import _spec_file
 from ..io.toml_file import load_toml
 from .file import VehicleFileError, _entry_specs, _read_vehicle, _resolved_spec, vehicle_path
 from .layout import Vehicle, shift_centre_of_mass
@@ -74,7 +74,7 @@ def vehicle_files(path) -> list[Path]:
     data = load_toml(path, VehicleFileError)
     specs = [_resolved_spec(data.get("params"), path.parent),
              *(s for key in ("propeller", "params") for s in _entry_specs(data, path.parent, key))]
-    specs = [s.removeprefix(QPROP_PREFIX) for s in specs if s is not None]  # (qprop:FILE reads FILE)
+    specs = [_spec_file(s) for s in specs if s is not None]  # (qprop:FILE reads FILE)
     return [Path(s) for s in specs if os.path.lexists(s)]
 
 
@@ -198,9 +198,9 @@ def resolve_vehicle(path, params=None) -> ResolvedVehicle:
         raise TypeError(f"params must be a named set, a parameter file or a section parameter set, got "
                         f"{type(params).__name__}")
     reading = _reading(path)
-    vehicle, mine, mine_set, mine_table = reading.vehicle, reading.mine, reading.mine_set, reading.mine_table
+    vehicle, mine, mine_set = reading.vehicle, reading.mine, reading.mine_set
     if params is None:
-        vehicle, body_from = with_body_table(vehicle, mine_table), (None if mine_table is None else mine)
+        vehicle, body_from = reading.with_own_body()
     else:
         vehicle, body_from = with_set_body(vehicle, None if given_set else params)
     n = len(vehicle.rotors)
@@ -249,6 +249,12 @@ class _Reading:
     propellers: tuple
     own: tuple
 
+    def with_own_body(self) -> tuple[Vehicle, str | None]:
+        """(the vehicle with its own set's ``[body]`` table in place of its airframe, that set's file
+        or None where it has no table): what every resolution without a given set models."""
+        table = self.mine_table
+        return with_body_table(self.vehicle, table), (None if table is None else self.mine)
+
 
 def _reading(path) -> _Reading:
     """:class:`_Reading` of the vehicle file ``path`` (one parse of it: resolve_vehicle's, and the
@@ -279,11 +285,16 @@ def _one_propeller_set(reading: _Reading, propeller) -> str | None:
     set the rule gives every rotor (:func:`_rotor_sets`; ``"generic"`` where that is the generic
     set), else, where the rotors' sets differ, the vehicle's own set (which the rotors without one
     take); None (the export's own default) where neither is one, or a rotor carries another
-    propeller. (Until 2026-12-01 the exports took a set only where the vehicle named one for
-    every rotor: a vehicle of mixed sets was exported on calibrated:apce_8x6 at rho 1.225 where
-    its rotors without a set take its own flight fit at rho 1.204, and the catalogue apce_8x6's
-    rotors exported from its geometry file on the generic set, hovering at 5187.09 rpm where
-    trim-vehicle hovers them at 5386.76 on their calibrated set: an audit, stop 96.)"""
+    propeller. (The vehicle's set is its rotors', not another propeller's: a review found apce_8x6
+    exported with the NeuroBEM rotors' fit. Until 2026-12-01 the vehicle's own set came first,
+    and export-sim refused a vehicle whose rotors all name another set, which trim-vehicle hovers
+    with; where the rotors' set was fitted at rho 1.0 the export took PROP's default and hovered
+    9.9% slower than trim-vehicle, an air-consistency audit. Until 2026-12-01 the exports took a
+    set only where the vehicle named one for every rotor: a vehicle of mixed sets was exported
+    on calibrated:apce_8x6 at rho 1.225 where its rotors without a set take its own flight fit at
+    rho 1.204, and the catalogue apce_8x6's rotors exported from its geometry file on the generic
+    set, hovering at 5187.09 rpm where trim-vehicle hovers them at 5386.76 on their calibrated
+    set: an audit, stop 96.)"""
     if not all(r.propeller.same_geometry(propeller) for r in reading.vehicle.rotors):
         return None
     sets = {s or "generic" for s in _rotor_sets(reading)}
