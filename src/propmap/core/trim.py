@@ -127,6 +127,24 @@ def _where(i: int, shape) -> str:
     return f"{tuple(int(k) for k in np.unravel_index(i, shape))} " if shape else ""
 
 
+def _check_on_missing(on_missing) -> None:
+    """Refuse an ``on_missing`` other than 'raise' or 'nan' (both searches' argument)."""
+    if on_missing not in ("raise", "nan"):
+        raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
+
+
+#: the loads both searches set to NaN where nothing in the bounds makes the thrust
+_MISSING_FIELDS = ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean")
+
+
+def _nan_where_missing(loads, ok: np.ndarray, shape, fields=_MISSING_FIELDS) -> None:
+    """Set ``fields`` of ``loads`` to NaN, in place, at the points where ``ok`` (flat) is False."""
+    if not ok.all():
+        bad = ~ok.reshape(shape)
+        for f in fields:
+            np.asarray(getattr(loads, f))[bad] = np.nan
+
+
 def _checked_thrust(thrust, thrust_tol) -> tuple[np.ndarray, float | None]:
     """The thrust wanted as a float array and its tolerance as a float (None: the default),
     checked (ValueError naming each)."""
@@ -299,8 +317,7 @@ def trim_collective(
         the search itself does not warn).
     """
     air = model_air(params, air)
-    if on_missing not in ("raise", "nan"):
-        raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
+    _check_on_missing(on_missing)
     lo, hi = _check_bounds(bounds)
     if grid_step is None:  # (a narrow --range-deg once met 'grid_step must be in (0, 0.0349] rad')
         grid_step = min(GRID_STEP, hi - lo)
@@ -349,10 +366,7 @@ def trim_collective(
     ok = ~missing
     loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=np.where(ok, x, 0.0).reshape(shape), **kw)
-    if not ok.all():  # NaN loads where no collective makes the thrust
-        bad = ~ok.reshape(shape)
-        for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean"):
-            np.asarray(getattr(loads, f))[bad] = np.nan
+    _nan_where_missing(loads, ok, shape)  # NaN loads where no collective makes the thrust
     return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
 
 
@@ -455,8 +469,7 @@ def trim_omega(
         the search itself does not warn).
     """
     air = model_air(params, air)
-    if on_missing not in ("raise", "nan"):
-        raise ValueError(f"on_missing must be 'raise' or 'nan', got {on_missing!r}")
+    _check_on_missing(on_missing)
     lo, hi = _omega_bounds(bounds, propeller, air)
     T_star, thrust_tol = _checked_thrust(thrust, thrust_tol)
     try:
@@ -489,10 +502,7 @@ def trim_omega(
     ok = ~missing
     loads = rotor_loads(propeller, params, np.where(ok, x, lo).reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=None if collective is None else c1.reshape(shape), **kw)
-    if not ok.all():  # NaN loads where no rate makes the thrust
-        bad = ~ok.reshape(shape)
-        for f in ("thrust", "drag", "torque", "rolling_moment", "side_force", "pitching_moment", "v_i_mean", "omega"):
-            np.asarray(getattr(loads, f))[bad] = np.nan
+    _nan_where_missing(loads, ok, shape, _MISSING_FIELDS + ("omega",))  # NaN loads where no rate makes the thrust
     return OmegaTrimResult(omega=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
 
 
