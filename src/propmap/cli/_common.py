@@ -8,6 +8,7 @@ need them, so that ``propmap --help`` and ``propmap props`` start quickly.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import os
@@ -140,20 +141,28 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
         raise InputError(f"--blades must be an integer in [1, 20], got {blades!r}")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        try:
+        with _spec_errors("PROP", spec):
             prop = resolve_propeller(spec, diameter_in=diameter_in, n_blades=blades)
-        except KeyError as exc:
-            raise InputError(f"PROP: {exc.args[0]}") from None
-        except ValueError as exc:
-            raise InputError(f"PROP: {exc}") from None
-        except OSError as exc:
-            from ..io.inputs import short_path
-
-            raise InputError(f"PROP: {short_path(spec)}: {exc.strerror or exc}") from None
     for w in caught:
         if issubclass(w.category, UserWarning):
             warn(str(w.message))
     return prop
+
+
+@contextlib.contextmanager
+def _spec_errors(option: str, spec: str):
+    """Raise the KeyError, ValueError or OSError of resolving ``spec`` (a propeller's or a parameter
+    set's) in the block as a one-line InputError starting with ``option`` (an OSError's naming the file)."""
+    try:
+        yield
+    except KeyError as exc:
+        raise InputError(f"{option}: {exc.args[0]}") from None
+    except ValueError as exc:
+        raise InputError(f"{option}: {exc}") from None
+    except OSError as exc:
+        from ..io.inputs import short_path
+
+        raise InputError(f"{option}: {short_path(spec)}: {exc.strerror or exc}") from None
 
 
 PARAMS_HELP = ("Parameter set: a parameter TOML file, 'generic' (cambered, fitted to the whole catalogue), "
@@ -186,17 +195,9 @@ def load_params(spec: str | None, prop_spec: str | None = None, option: str = "-
         # (a geometry file's propeller: the generic set, not a near name's warning)
         p = default_params(prop_spec) if prop_spec in catalogue() else generic_params()
         return p, p.air, p.label
-    try:
+    with _spec_errors(option, spec):
         params = resolve_params(spec)
         air = params.air
-    except KeyError as exc:
-        raise InputError(f"{option}: {exc.args[0]}") from None
-    except ValueError as exc:
-        raise InputError(f"{option}: {exc}") from None
-    except OSError as exc:
-        from ..io.inputs import short_path
-
-        raise InputError(f"{option}: {short_path(spec)}: {exc.strerror or exc}") from None
     return params, air, spec
 
 
