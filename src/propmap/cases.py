@@ -11,9 +11,9 @@ digitization (FLOWUnsteady, MIT) are in data/CITATION.md:
   V = 40 m/s (Sinnige et al., J. Aircraft 2019): the only digitized incidence data.
 * ``gill2019``: four catalogue propellers (APC 8x6E, 8x8E, 10x7E, 10x4.7SF) in oblique flow,
   as the published coefficients of a multinomial model fitted to the wind-tunnel data (Gill &
-  D'Andrea, Drones 2019, Appendix A; data/published): the slope of the in-plane H-force
-  against propmap's loads fitted the same way, and the rise of thrust and torque with edgewise
-  speed against propmap's own.
+  D'Andrea, Drones 2019, Appendix A; data/published): the slopes of the in-plane H-force and of
+  the rolling and pitching moments against propmap's loads fitted the same way, and the rise of
+  thrust and torque with edgewise speed against propmap's own.
 
 :func:`gill2019_loads` turns those published fits into load data (thrust, in-plane force,
 torque) for fitting tests (tools/incidence_fit.py, docs/identification.md).
@@ -202,9 +202,10 @@ def gill2019_coefficients() -> dict[str, dict[str, float]]:
     Returns
     -------
     dict
-        name -> ``CT_static``, ``k1`` ... ``k5``, ``CQ_static``, ``k6`` ... ``k8``
-        (Gill & D'Andrea 2019, Appendix A; normalised by (rho/2) pi R^2 (Omega R)^2, the
-        moments times R).
+        name -> ``CT_static``, ``k1`` ... ``k5``, ``CQ_static``, ``k6`` ... ``k8``, ``k9``,
+        ``k10`` (rolling moment) and ``k11``, ``k12`` (pitching moment) (Gill & D'Andrea 2019,
+        Appendix A, eqs 95 and 99-102; normalised by (rho/2) pi R^2 (Omega R)^2, the moments
+        times R; the pitching moment's sign convention is not in the transcription, GILL2019_FILE).
     """
     text = (resources.files("propmap") / "data" / "published" / GILL2019_FILE).read_text(encoding="utf-8")
     rows = list(csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#")))
@@ -326,8 +327,10 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     (GILL2019_INCIDENCE_DEG, 0: axial climb, 90: edgewise) plus the static point, in their
     normalisation ((rho/2) pi R^2 (Omega R)^2, moments times R; mu = V sin(incidence) /
     (Omega R), lambda_c = V cos(incidence) / (Omega R)), fitted by least squares with
-    C_FT = CT_static + k1 lambda_c + k2 mu^2 + k3 lambda_c^2, C_FH = k4 mu + k5 lambda_c mu and
-    C_MQ = CQ_static + k6 lambda_c + k7 mu^2 + k8 lambda_c^2.
+    C_FT = CT_static + k1 lambda_c + k2 mu^2 + k3 lambda_c^2, C_FH = k4 mu + k5 lambda_c mu,
+    C_MQ = CQ_static + k6 lambda_c + k7 mu^2 + k8 lambda_c^2, and the rolling and pitching
+    moments (``rolling_moment``, ``pitching_moment``: docs/conventions.md) C_MR = k9 mu + k10
+    lambda_c mu and C_MP = k11 mu + k12 lambda_c mu (the paper's eqs 101 and 102).
 
     Parameters
     ----------
@@ -348,7 +351,10 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
         (|k5| 1.4e-9 to 5.3e-8 against k4 0.025-0.055, GILL2019_FILE), as if fitted with
         k5 = 0 (a free least-squares k5 of measured data would hardly be that small), so that
         their k4 is the H-force's mean slope over the data's lambda_c; this one is the mean over
-        this function's grid, which need not weight lambda_c as the authors' test points did.
+        this function's grid, which need not weight lambda_c as the authors' test points did;
+        ``k9`` ... ``k12``, and ``k9_mu_only``, ``k11_mu_only``: the moments fitted in the published
+        fits' form too (their k10 lambda_c mu and k12 lambda_c mu are below 1e-5 of k9 mu and
+        k11 mu over lambda_c <= 0.24).
 
     Raises
     ------
@@ -373,20 +379,26 @@ def multinomial_fit(prop: Propeller, p: SectionParams, omega: float, *, air: Air
     h = np.linalg.lstsq(np.column_stack([mu, lam * mu]), r.drag / q, rcond=None)[0]
     k4_mu_only = np.linalg.lstsq(mu[:, None], r.drag / q, rcond=None)[0][0]
     torque = np.linalg.lstsq(np.column_stack([one, lam, mu**2, lam**2]), r.torque / (q * R), rcond=None)[0]
-    names = ("CT_static", "k1", "k2", "k3", "k4", "k5", "CQ_static", "k6", "k7", "k8", "k4_mu_only")
-    return dict(zip(names, map(float, (*thrust, *h, *torque, k4_mu_only))))
+    moments = [np.linalg.lstsq(np.column_stack([mu, lam * mu]), m / (q * R), rcond=None)[0]
+               for m in (r.rolling_moment, r.pitching_moment)]
+    mu_only = [np.linalg.lstsq(mu[:, None], m / (q * R), rcond=None)[0][0]
+               for m in (r.rolling_moment, r.pitching_moment)]
+    names = ("CT_static", "k1", "k2", "k3", "k4", "k5", "CQ_static", "k6", "k7", "k8", "k4_mu_only", "k9", "k10",
+             "k11", "k12", "k9_mu_only", "k11_mu_only")
+    return dict(zip(names, map(float, (*thrust, *h, *torque, k4_mu_only, *moments[0], *moments[1], *mu_only))))
 
 
 #: the in-plane advance ratio at which the gill2019 case compares the edgewise rise of thrust and torque
 GILL2019_MU_RISE = 0.2
 #: the quantities the gill2019 case compares, each dimensionless and free of the normalisation
-GILL2019_QUANTITIES = ("H_slope", "H_slope_mu_only", "thrust_rise", "torque_rise")
+GILL2019_QUANTITIES = ("H_slope", "H_slope_mu_only", "thrust_rise", "torque_rise", "MR_slope", "MP_slope")
 
 
 def _gill2019_published(c: dict) -> dict[str, float]:
     mu2 = GILL2019_MU_RISE**2
     return {"H_slope": c["k4"] / c["CT_static"], "H_slope_mu_only": c["k4"] / c["CT_static"],
-            "thrust_rise": c["k2"] * mu2 / c["CT_static"], "torque_rise": c["k7"] * mu2 / c["CQ_static"]}
+            "thrust_rise": c["k2"] * mu2 / c["CT_static"], "torque_rise": c["k7"] * mu2 / c["CQ_static"],
+            "MR_slope": c["k9"] / c["CT_static"], "MP_slope": c["k11"] / c["CT_static"]}
 
 
 def _gill2019_model(prop: Propeller, p: SectionParams, omega: float, air: Air) -> dict[str, float]:
@@ -395,17 +407,26 @@ def _gill2019_model(prop: Propeller, p: SectionParams, omega: float, air: Air) -
                     np.array([0.0, math.pi / 2]), air=air, radial=False)
     return {"H_slope": f["k4"] / f["CT_static"], "H_slope_mu_only": f["k4_mu_only"] / f["CT_static"],
             "thrust_rise": float(r.thrust[1] / r.thrust[0] - 1),
-            "torque_rise": float(r.torque[1] / r.torque[0] - 1)}
+            "torque_rise": float(r.torque[1] / r.torque[0] - 1),
+            "MR_slope": f["k9_mu_only"] / f["CT_static"],
+            "MP_slope": f["k11_mu_only"] / f["CT_static"] + 0.0}  # (+ 0.0: a rigid rotor's -0.0 from lstsq is 0)
 
 
-def _gill2019_errors(prop: Propeller, p: SectionParams, data, air: Air) -> dict[str, np.ndarray]:
-    """propmap's loads less the published fits' on their grid (:func:`gill2019_loads`' points),
-    thrust and in-plane force in units of the published static thrust, torque of the static torque."""
+def _gill2019_errors(prop: Propeller, p: SectionParams, data, c: dict, air: Air) -> dict[str, np.ndarray]:
+    """propmap's loads less the published fits' (``c``) on their grid (:func:`gill2019_loads`' points),
+    thrust and in-plane force in units of the published static thrust, torque of the static torque,
+    the rolling and pitching moments of the static thrust times R."""
     r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, radial=False)
     static = data.airspeed == 0
     T0, Q0 = np.mean(data.measured["thrust"][static]), np.mean(data.measured["torque"][static])
+    R = prop.radius
+    tip_speed = data.omega * R
+    mu, lam = data.airspeed * np.sin(data.incidence) / tip_speed, data.airspeed * np.cos(data.incidence) / tip_speed
+    qR = 0.5 * air.rho * math.pi * R**2 * (data.omega * R) ** 2 * R
     return {"thrust": (r.thrust - data.measured["thrust"]) / T0, "drag": (r.drag - data.measured["drag"]) / T0,
-            "torque": (r.torque - data.measured["torque"]) / Q0}
+            "torque": (r.torque - data.measured["torque"]) / Q0,
+            "rolling_moment": (r.rolling_moment - qR * (c["k9"] * mu + c["k10"] * lam * mu)) / (T0 * R),
+            "pitching_moment": (r.pitching_moment - qR * (c["k11"] * mu + c["k12"] * lam * mu)) / (T0 * R)}
 
 
 def _gill2019(param_sets: dict, air: Air) -> CaseResult:
@@ -427,8 +448,9 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
             ratio = pred[label][q] / measured[q]
             m.update({f"{q}_ratio_{n}": float(x) for n, x in zip(names, ratio)})
             m[f"{q}_ratio_min"], m[f"{q}_ratio_max"] = float(np.min(ratio)), float(np.max(ratio))
-        errors = [_gill2019_errors(props[n], params[n], grids[n], air) for n in names]
-        for q in ("thrust", "drag", "torque"):  # rms over each propeller's grid, then over all four pooled
+        errors = [_gill2019_errors(props[n], params[n], grids[n], published[n], air) for n in names]
+        # rms over each propeller's grid, then over all four pooled
+        for q in ("thrust", "drag", "torque", "rolling_moment", "pitching_moment"):
             m.update({f"rms_{q}_{n}": float(np.sqrt(np.mean(e[q] ** 2))) for n, e in zip(names, errors)})
             m[f"rms_{q}"] = float(np.sqrt(np.mean(np.concatenate([e[q] for e in errors]) ** 2)))
         metrics[label] = m
@@ -439,9 +461,12 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
                       f"(their k5 lambda_c mu is below 1e-6 of k4 mu); "
                       f"thrust_rise, torque_rise: T / T_static - 1 and Q / Q_static - 1 edgewise at mu = "
                       f"{GILL2019_MU_RISE:g} (published: k2 mu^2 / CT_static, k7 mu^2 / CQ_static); "
-                      f"rms_thrust, rms_drag, rms_torque: propmap's loads less the published fits' on their grid "
-                      f"(the static point, advance ratios to 0.24 at 0-90 deg), of the static thrust or torque, per "
-                      f"propeller and pooled; {GILL2019_RPM:.0f} rpm", metrics)
+                      f"MR_slope, MP_slope: the rolling and pitching moments' k9 and k11 / CT_static, fitted as "
+                      f"H_slope_mu_only (M_P positive nose-up; the published sign convention is not stated); "
+                      f"rms_thrust, rms_drag, rms_torque, rms_rolling_moment, rms_pitching_moment: propmap's loads "
+                      f"less the published fits' on their grid (the static point, advance ratios to 0.24 at 0-90 "
+                      f"deg), of the static thrust or torque (moments: static thrust times R), per propeller and "
+                      f"pooled; {GILL2019_RPM:.0f} rpm", metrics)
 
 
 def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
@@ -471,12 +496,16 @@ def run_case(case: str, param_sets: dict, *, air: Air = Air()) -> CaseResult:
         :func:`_beaver_matched`). ``air`` sets the viscosity and speed of sound (the density
         is the test's). gill2019: per propeller and quantity (GILL2019_QUANTITIES: the
         H-force slope k4 / CT_static from :func:`multinomial_fit`, with k5 free and with k5 = 0
-        (``H_slope_mu_only``, the published fits' form; the published k4 in both), and the edgewise rise of
-        thrust and torque at mu = GILL2019_MU_RISE) the ratio of propmap's value to the
-        published one, ``<quantity>_ratio_<name>``, and their ``_min`` and ``_max``; and the rms
-        of propmap's loads less the published fits' over their grid (:func:`gill2019_loads` at
+        (``H_slope_mu_only``, the published fits' form; the published k4 in both), the edgewise rise of
+        thrust and torque at mu = GILL2019_MU_RISE, and the rolling and pitching moments' slopes
+        k9 / CT_static and k11 / CT_static, ``MR_slope`` and ``MP_slope``, in the published
+        fits' form) the ratio of propmap's value to the published one,
+        ``<quantity>_ratio_<name>``, and their ``_min`` and ``_max``; and the rms of propmap's
+        loads less the published fits' over their grid (:func:`gill2019_loads` at
         GILL2019_RPM), thrust and in-plane force of the static thrust, torque of the static
-        torque, ``rms_<thrust|drag|torque>_<name>`` and pooled over the four, ``rms_<...>``;
+        torque, the moments of the static thrust times R,
+        ``rms_<thrust|drag|torque|rolling_moment|pitching_moment>_<name>`` and pooled over the
+        four, ``rms_<...>``;
         ``measured`` and ``predicted`` hold the values per propeller (``x`` indexes the
         propellers, in the file's order).
 
