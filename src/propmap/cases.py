@@ -213,10 +213,11 @@ def gill2019_coefficients() -> dict[str, dict[str, float]]:
     return {r[0]: {k: float(v) for k, v in zip(head[2:], r[2:])} for r in rows[1:]}
 
 
-def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
+def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air(), rolling_moment: bool = False):
     """Loads of a gill2019 propeller from its published multinomial model, as load data.
 
-    Thrust, in-plane force and torque at the static point and on the grid of total advance
+    Thrust, in-plane force and torque (and with ``rolling_moment`` the hub's rolling moment,
+    C_MR = k9 mu + k10 lambda_c mu) at the static point and on the grid of total advance
     ratio (GILL2019_ADVANCE, within the 0.24 the fits cover) and incidence
     (GILL2019_INCIDENCE_DEG) at each rotation rate, dimensional with (rho/2) pi R^2
     (Omega R)^2 (R with the moments). They stand in for the wind-tunnel data behind the
@@ -231,12 +232,15 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
         Rotation rates [rpm], at least one, each in [100, 50000].
     air : Air
         The density that makes the coefficients dimensional.
+    rolling_moment : bool
+        Include the rolling moment (propmap's sign: the published k9 is positive, the advancing
+        side carrying more thrust).
 
     Returns
     -------
     LoadData
-        ``thrust``, ``drag``, ``torque``; ``group`` ``"inc<deg>"``, the static points in
-        ``"inc00"`` with the axial ones.
+        ``thrust``, ``drag``, ``torque`` (and ``rolling_moment``); ``group`` ``"inc<deg>"``, the
+        static points in ``"inc00"`` with the axial ones.
 
     Raises
     ------
@@ -262,6 +266,8 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air()):
     measured = {"thrust": q * (c["CT_static"] + c["k1"] * lam + c["k2"] * mu**2 + c["k3"] * lam**2),
                 "drag": q * (c["k4"] * mu + c["k5"] * lam * mu),
                 "torque": q * R * (c["CQ_static"] + c["k6"] * lam + c["k7"] * mu**2 + c["k8"] * lam**2)}
+    if rolling_moment:
+        measured["rolling_moment"] = q * R * (c["k9"] * mu + c["k10"] * lam * mu)
     group = np.array([f"inc{round(math.degrees(b)):02d}" for b in inc])
     return LoadData(omega, adv * omega * R, inc, measured, group,
                     f"{name}: Gill & D'Andrea 2019 (Drones 3(4):77), Appendix A multinomial model")

@@ -200,7 +200,7 @@ def plot_load_parity(data, model: dict, held_mask, path, *, title: str = "") -> 
     plt = _pyplot()
     keys = list(data.measured)
     fig, axes = plt.subplots(1, len(keys), figsize=(4.5 * len(keys), 4), constrained_layout=True, squeeze=False)
-    units = {"thrust": "N", "drag": "N", "torque": "N m"}
+    units = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
     for ax, k in zip(axes[0], keys):
         meas = data.measured[k]
         for label, m in model.items():

@@ -294,7 +294,7 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
     largest : dict
         ``{q: largest measured |value|}`` [N, N m].
     quantities : iterable of str
-        The fitted quantities (``thrust``, ``drag``, ``torque``).
+        The fitted quantities (``thrust``, ``drag``, ``torque``, ``rolling_moment``).
 
     Returns
     -------
@@ -310,8 +310,8 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 @click.argument("sources", metavar="SOURCE...", nargs=-1, required=True)
 @click.option("--holdout", default=None, help="Comma-separated run ids (catalogue, UIUC files) or group labels (CSV) "
                                               "to hold out (default: none).")
-@click.option("--quantities", default=None, help="Comma-separated subset of thrust,drag,torque to fit (default: all "
-                                                 "measured).")
+@click.option("--quantities", default=None, help="Comma-separated subset of thrust,drag,torque,rolling_moment to fit "
+                                                 "(default: all measured).")
 @click.option("--prop", "prop_spec", default=None, help="Propeller (catalogue name or geometry file) of file SOURCEs.")
 @with_prop_options
 @click.option("--base", "base_spec", default=None,
@@ -337,7 +337,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     """Fit to load measurements of one propeller.
 
     SOURCE: a catalogue propeller (its bundled UIUC data); or, with --prop, one CSV with
-    rpm and any of thrust, drag, torque, with or without units in the names (thrust_kgf,
+    rpm and any of thrust, drag, torque (and, beside a torque, the hub's rolling moment), with
+    or without units in the names (thrust_kgf,
     Thrust (gf), torque_Nmm; airspeed, incidence_deg and collective_deg optional: a static
     thrust stand, or a rotor's hover collective sweep; optional group), an RCbenchmark /
     Tyto thrust-stand export as written, or UIUC-format static and wind-tunnel files.
@@ -345,6 +346,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
     import numpy as np
 
     from ..identify import fit_loads
+    from ..identify.load_data import LOAD_KEYS
 
     check_outputs(_out_files(out), [*sources, prop_spec, base_spec])
     base, air, base_label = load_params("generic" if base_spec is None else base_spec, option="--base")
@@ -353,7 +355,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
                                                                   pole_pairs)
     air = file_air(data, air, air_choice)
     check_section_match(prop, base_label)
-    qty = parse_names("--quantities", quantities, valid=("thrust", "drag", "torque"), what="quantity")
+    qty = parse_names("--quantities", quantities, valid=LOAD_KEYS, what="quantity")
     missing = [q for q in (qty or ()) if q not in data.measured]
     if missing:
         raise InputError(f"--quantities: {missing[0]!r} is not measured in SOURCE (measured: "
@@ -528,6 +530,7 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
     import numpy as np
 
     from ..core.solver import rotor_loads
+    from ..identify.load_data import INPLANE_KEYS
     from ..plots import plot_load_parity
 
     extra = ""
@@ -535,13 +538,13 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
     for name, p in (("fitted", res.params), (base_label, base)):
         r = rotor_loads(prop, p, data.omega, data.airspeed, data.incidence, air=air, on_failure="flag",
                         collective=data.collective)
-        model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+        model[name] = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque, "rolling_moment": r.rolling_moment}
     held_mask = np.isin(data.group, held)
     if held:
-        units = {"thrust": "N", "drag": "N", "torque": "N m"}
+        units = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
         # (the in-plane force where the rotor has an in-plane airspeed, as the fit and validate take it: its axial rows'
         # zero errors were counted until 2026-12-01, a fit-statistics audit)
-        rows = {k: held_mask & np.isfinite(data.measured[k]) & (data.inplane if k == "drag" else True)
+        rows = {k: held_mask & np.isfinite(data.measured[k]) & (data.inplane if k in INPLANE_KEYS else True)
                 for k in data.measured}
         res.extra["holdout"] = {
             "holdout": list(held),

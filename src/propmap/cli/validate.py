@@ -321,20 +321,22 @@ def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, labe
                f"{prop.diameter:.4g} m), params {label}; air {air_label(air)}")
     click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
                + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
-               + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else ""))
+               + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else "")
+               + ("; the rolling moment likewise" if "rolling_moment" in keys else ""))
     one = every[0] if len(every) == 1 and every[0] in in_fit else None  # (one group: the all-points row is it)
     rows = ([("all points" + (f" ({in_fit[one]})" if one else ""), e["overall"])]
             + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row) for g, row in e["groups"].items()]
             + [(f"state: {s}", row) for s, row in e["states"].items()])
     width = min(max(len(name) for name, _ in rows) + 2, 60)
-    click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>13}{'bias':>10}{'max':>10}{'n':>6}" for k in keys))
+    wide = {k: max(13, len(k) + 6) for k in keys}  # (a blank ahead of 'rolling_moment rms' too)
+    click.echo(f"{'':<{width}}" + "".join(f"{k + ' rms':>{wide[k]}}{'bias':>10}{'max':>10}{'n':>6}" for k in keys))
 
     def pct(v, w, sign=""):  # (a blank ahead of every number: 121.63% does not run into the next column)
         return f"{'-':>{w}}" if v is None else " " + f"{100 * v:>{sign}{w - 2}.2f}%"
 
     for name, row in rows:
         click.echo(f"{name[:width - 1]:<{width}}" + "".join(
-            pct(row[k]["rms"], 13) + pct(row[k]["bias"], 10, "+") + pct(row[k]["max"], 10) + f"{row[k]['n']:>6}"
+            pct(row[k]["rms"], wide[k]) + pct(row[k]["bias"], 10, "+") + pct(row[k]["max"], 10) + f"{row[k]['n']:>6}"
             for k in keys))
     part = bool(in_fit) and set(in_fit) != set(every)
     if in_fit and (part or len(set(in_fit.values())) > 1):
@@ -344,7 +346,8 @@ def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, labe
         click.echo(f"{label} was fitted to {'part of ' if part else ''}this data: "
                    + (f"{', '.join(fitted)} in-sample (the fit's residual), " if fitted else "")
                    + "held out: " + (", ".join(sorted(g for g, v in in_fit.items() if v == "held out")) or "none"))
-    si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k == 'torque' else 'N'}" for k in keys
+    si = ", ".join(f"{k} {e['overall'][k]['rms_si']:.4g} {'N m' if k in ('torque', 'rolling_moment') else 'N'}"
+                   for k in keys
                    if e["overall"][k]["rms_si"] is not None)
     click.echo(f"rms errors in SI: {si}" + (f"; the solver did not converge on {e['n_points'] - e['converged']} "
                                             "points, left out" if e["converged"] < e["n_points"] else ""))

@@ -61,6 +61,7 @@ RANGES = {
     "thrust": (-1e5, 1e5, False, False, "N"),
     "drag": (-1e5, 1e5, False, False, "N"),
     "torque": (-1e4, 1e4, False, False, "N m"),
+    "rolling_moment": (-1e4, 1e4, False, False, "N m"),
     "pitch_deg": (-90.0, 90.0, True, True, "deg"),
     "roll_deg": (-90.0, 90.0, True, True, "deg"),
     "p": (-100.0, 100.0, False, False, "rad/s"),

@@ -34,7 +34,7 @@ from ..core.flapping import flapping_warning_held
 from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
                            supersonic_tips_allowed)
 from .data import LoadData
-from .load_data import STATIC_AIRSPEED, data_air
+from .load_data import INPLANE_KEYS, STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
                      _flap_saturation, _m_effect, _params_from, _prior_stats, _warn_at_optimum, _with_prior, _x0)
@@ -49,18 +49,19 @@ __all__ = ["FitOptions", "FitResult", "Identifiability", "X0_PAPER", "fit_loads"
 
 
 def _fitted_rows(data: LoadData, keys) -> dict:
-    """Each quantity's points in the fit: every point, but the in-plane force ``drag`` only
-    where the rotor has an in-plane airspeed above STATIC_AIRSPEED (elsewhere model and
-    measurement should both be zero: a tunnel's normal force at axial points is its noise,
-    which as a residual scaled by its own rms came out near 1 at every such point and swamped
-    the fit's uncertainty report, a user-level audit, 2026-11-26; as ``validate`` scores it;
-    data without such points do not fit it, :func:`_load_keys`)."""
-    return {k: data.inplane if k == "drag" else np.ones(data.n, bool) for k in keys}
+    """Each quantity's points in the fit: every point, but the in-plane force ``drag`` and the
+    rolling moment (INPLANE_KEYS) only where the rotor has an in-plane airspeed above
+    STATIC_AIRSPEED (elsewhere model and measurement should both be zero: a tunnel's normal
+    force at axial points is its noise, which as a residual scaled by its own rms came out near
+    1 at every such point and swamped the fit's uncertainty report, a user-level audit,
+    2026-11-26; as ``validate`` scores them; data without such points do not fit them,
+    :func:`_load_keys`)."""
+    return {k: data.inplane if k in INPLANE_KEYS else np.ones(data.n, bool) for k in keys}
 
 
 def _load_norms(data: LoadData, propeller, keys, air: Air):
     n = data.omega / (2 * math.pi)
-    norm = {k: air.rho * n**2 * propeller.diameter ** (5 if k == "torque" else 4) for k in keys}
+    norm = {k: air.rho * n**2 * propeller.diameter ** (5 if k in MOMENT_KEYS else 4) for k in keys}
     rows = _fitted_rows(data, keys)
     scales = {k: float(np.sqrt(np.mean((data.measured[k][rows[k]] / norm[k][rows[k]]) ** 2))) for k in keys}
     for k, s in scales.items():
@@ -134,13 +135,20 @@ def _load_keys(data: LoadData, quantities) -> list:
     for k in keys:
         if k not in data.measured:
             raise ValueError(f"quantity {k!r} is not measured; measured: {', '.join(data.measured)}")
-    if "drag" in keys and not _fitted_rows(data, ["drag"])["drag"].any():
-        if quantities is not None or len(keys) == 1:
-            raise ValueError(f"the in-plane force (drag) cannot be fitted: no point has an in-plane airspeed above "
-                             f"{STATIC_AIRSPEED:g} m/s (below it model and measurement are near 0; is the incidence "
-                             "missing?)")
-        keys.remove("drag")  # (its measurement there is noise: sanity_check says so where it is large)
+    if any(k in INPLANE_KEYS for k in keys) and not data.inplane.any():
+        for k in [k for k in keys if k in INPLANE_KEYS]:
+            if quantities is not None or len(keys) == 1:
+                raise ValueError(f"the {_INPLANE_WORDS[k]} cannot be fitted: no point has an in-plane airspeed above "
+                                 f"{STATIC_AIRSPEED:g} m/s (below it model and measurement are near 0; is the "
+                                 "incidence missing?)")
+            keys.remove(k)  # (its measurement there is noise: sanity_check says so where it is large)
     return keys
+
+
+#: the loads in units of a moment (normalised by rho n^2 D^5, as CQ)
+MOMENT_KEYS = ("torque", "rolling_moment")
+#: the in-plane loads (INPLANE_KEYS) in words, for messages
+_INPLANE_WORDS = {"drag": "in-plane force (drag)", "rolling_moment": "rolling moment (rolling_moment)"}
 
 
 def _data_kind(data: LoadData) -> str:
@@ -160,13 +168,12 @@ def _data_kind(data: LoadData) -> str:
 
 
 def _measures_inplane_force(data: LoadData, keys) -> bool:
-    """Whether the fitted quantities include the in-plane force D measured where the rotor
-    has an in-plane speed (V sin beta > 0): what identifies the flapping (INPLANE_FIT)."""
-    if "drag" not in keys:
-        return False
+    """Whether the fitted quantities include the in-plane force D or the hub's rolling moment
+    (INPLANE_KEYS) measured where the rotor has an in-plane speed (V sin beta > 0): what
+    identifies the flapping (INPLANE_FIT)."""
     in_plane = data.airspeed * np.abs(np.sin(data.incidence))  # (axial below 1e-12 V, as the solver: sin(pi) ~ 1e-16)
-    edgewise = (in_plane > 1e-12 * data.airspeed) & np.isfinite(data.measured["drag"])
-    return bool(edgewise.any())
+    edgewise = in_plane > 1e-12 * data.airspeed
+    return any(bool(np.any(edgewise & np.isfinite(data.measured[k]))) for k in keys if k in INPLANE_KEYS)
 
 
 def _sweep_rates(data: LoadData) -> int:
@@ -245,7 +252,7 @@ def _load_residual(data: LoadData, propeller, keys, air: Air, names, base, weigh
                                    derivatives=names if derivatives else False)
 
         def errors(r):
-            model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+            model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque, "rolling_moment": r.rolling_moment}
             return weight * np.concatenate([(model[k][m] - meas) / div for k, (m, meas, div) in fitted.items()])
 
         def residual(x, opts=opts):
@@ -271,7 +278,9 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
 
     Residuals are compared in coefficient form so that every rpm weighs alike: for each
     fitted quantity k, (model_k - measured_k) / (rho n^2 D^m_k) / RMS(measured coefficient),
-    m = 4 for thrust and drag (CT), 5 for torque (CQ); the residuals of all k are stacked.
+    m = 4 for thrust and drag (CT), 5 for torque (CQ) and the rolling moment; the residuals of
+    all k are stacked, the in-plane force's and the rolling moment's at the points with an
+    in-plane airspeed (``LoadData.inplane``).
 
     Parameters
     ----------
@@ -292,9 +301,10 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         CAMBERED_FIT_STATIC for a static run without it), and under the prior, by default,
         only the data's leading directions for a static run or sweeps at one rotation rate
         (``FitOptions.directions``; identify/directions.py). Where the fitted quantities
-        include the in-plane force ``drag`` measured at points with an in-plane speed, the
-        cambered model's default also frees the flapping (INPLANE_FIT, outside the prior, so
-        every name is fitted; docs/identification.md, Load data at incidence).
+        include the in-plane force ``drag`` or the rolling moment measured at points with an
+        in-plane speed, the cambered model's default also frees the flapping (INPLANE_FIT,
+        outside the prior, so every name is fitted; docs/identification.md, Load data at
+        incidence).
 
     Returns
     -------
@@ -371,11 +381,15 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
             warns = [f"the optimum along the data's leading directions left the allowed range ({shown}): all "
                      f"{len(names)} parameters fitted under the prior instead", *warns]
     if inplane:
-        notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure the in-plane force at incidence "
+        what = " and ".join(w for k, w in (("drag", "the in-plane force"), ("rolling_moment", "the rolling moment"))
+                            if k in keys)
+        notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure {what} at incidence "
                      "(docs/identification.md)")
-    if "drag" in data.measured and "drag" not in keys and quantities is None:
-        notes.append(f"the measured drag is not fitted: no point has an in-plane airspeed above {STATIC_AIRSPEED:g} "
-                     "m/s (below it model and measurement are near 0, the measurement a balance's noise)")
+    for k in INPLANE_KEYS:
+        if k in data.measured and k not in keys and quantities is None:
+            notes.append(f"the measured {'drag' if k == 'drag' else 'rolling moment'} is not fitted: no point has an "
+                         f"in-plane airspeed above {STATIC_AIRSPEED:g} m/s (below it model and measurement are near 0, "
+                         "the measurement a balance's noise)")
     warns = [*_unit_notes(data, propeller, keys, air), *notes, *warns]
     extra = {"kind": "loads", "n_points": data.n, "quantities": keys, "coefficient_scales": scales, **extra,
              **_m_effect(make_data, best, base, options)}

@@ -91,6 +91,10 @@ _NAMES = {
     # wind-tunnel data audit, 2026-11-30)
     "hforce": ("drag", "force"), "in plane force": ("drag", "force"), "drag force": ("drag", "force"),
     "rotor_drag": ("drag", "force"),
+    # the hub's rolling moment about the in-plane airspeed, in propmap's sign (positive where the advancing side
+    # carries more thrust, docs/conventions.md; noted as not read until 2026-12-01)
+    **dict.fromkeys(("rolling moment", "rolling_moment", "roll moment", "roll_moment", "hub rolling moment",
+                     "hub_rolling_moment"), ("rolling_moment", "torque")),
     "rpm": ("rpm", "rotation"), "speed": ("rpm", "rotation"), "rotation speed": ("rpm", "rotation"),
     "omega": ("rpm", "rotation"), "rps": ("rpm", "rotation"), "rev/s": ("rpm", "rotation"),
     **{f"{who}{sep}speed": ("rpm", "rotation") for who in ("motor", "rotor", "propeller", "prop", "rotational")

@@ -30,7 +30,9 @@ class LoadData:
         Operating points [rad/s, m/s, rad]; an incidence within 2.5e-7 rad of 0 or pi is
         stored as it (single precision's pi).
     measured : dict[str, ndarray]
-        Any non-empty subset of ``thrust`` [N], ``drag`` [N], ``torque`` [N m], each shape (N,).
+        Any non-empty subset of ``thrust`` [N], ``drag`` [N], ``torque`` [N m] and
+        ``rolling_moment`` [N m] (the hub's moment about the in-plane airspeed, positive where the
+        advancing side carries more thrust: docs/conventions.md; since 2026-12-01), each shape (N,).
     group : ndarray of str, shape (N,)
         Run label of each point (for hold-out).
     source : str
@@ -64,9 +66,9 @@ class LoadData:
         ``omega``), a non-finite value (in ``measured`` NaN marks a load not measured at a
         point; an infinity is refused), ``omega`` <= 0 rad/s, ``airspeed`` < 0 m/s,
         ``incidence`` outside [0, pi] rad, an empty ``measured`` or a key of it other than
-        thrust, drag, torque, an ``air_density`` that is not a finite number > 0, a ``converted``
-        that is not a dict of those quantities to finite factors > 0, a ``comma_thousands`` that is
-        not a tuple of them, a ``speed_source`` not among its three; the message
+        thrust, drag, torque, rolling_moment, an ``air_density`` that is not a finite number
+        > 0, a ``converted`` that is not a dict of those quantities to finite factors > 0, a
+        ``comma_thousands`` that is not a tuple of them, a ``speed_source`` not among its three; the message
         names the field; ``omega`` above 1e5 rad/s, a ``collective`` beyond +-pi/4 rad (degrees?),
         a ``group`` label that is not a string or a number (or is NaN). (The readers check the
         signs and the ranges of the loads themselves.)
@@ -116,7 +118,8 @@ class LoadData:
         if np.any((fields_["incidence"] < 0) | (fields_["incidence"] > np.pi)):
             raise ValueError("LoadData.incidence must be in [0, pi] rad (radians, not degrees)")
         if not isinstance(self.measured, dict) or not self.measured:
-            raise ValueError("LoadData.measured must be a non-empty dict of thrust, drag or torque arrays")
+            raise ValueError("LoadData.measured must be a non-empty dict of thrust, drag, torque or rolling_moment "
+                             "arrays")
         bad = [k for k in self.measured if k not in LOAD_KEYS]
         if bad:
             raise ValueError(f"LoadData.measured: unknown quantity {bad[0]!r} (valid: {', '.join(LOAD_KEYS)})")
@@ -157,10 +160,10 @@ class LoadData:
     @property
     def inplane(self) -> np.ndarray:
         """Which points have an in-plane airspeed V |sin(incidence)| above
-        :data:`STATIC_AIRSPEED`, shape (N,) of bool: where the in-plane force is fitted and
-        scored (elsewhere model and measurement should both be zero: a tunnel's normal force
-        at axial points is its noise), by the fits, ``validate``, ``fit loads --holdout`` and
-        :func:`propmap.validation.holdout_loads` alike."""
+        :data:`STATIC_AIRSPEED`, shape (N,) of bool: where the in-plane force and the rolling
+        moment (INPLANE_KEYS) are fitted and scored (elsewhere model and measurement should both
+        be zero: a tunnel's normal force at axial points is its noise), by the fits,
+        ``validate``, ``fit loads --holdout`` and :func:`propmap.validation.holdout_loads` alike."""
         return self.airspeed * np.abs(np.sin(self.incidence)) > STATIC_AIRSPEED
 
     def tip_mach(self, propeller, air) -> float:
@@ -234,7 +237,10 @@ def data_air(data: LoadData, air, base_air):
             "another)")
 
 
-LOAD_KEYS = ("thrust", "drag", "torque")
+LOAD_KEYS = ("thrust", "drag", "torque", "rolling_moment")
+#: the loads that are zero in axial flow (by symmetry), fitted and scored only where the rotor has an in-plane
+#: airspeed (LoadData.inplane): the in-plane force and the hub's rolling moment
+INPLANE_KEYS = ("drag", "rolling_moment")
 #: a point at an airspeed up to this [m/s] is static: for the thrust's sign rule of a CSV
 #: (loads_csv.read_loads) and for which parameters a fit frees (fit._data_kind: a stand's pitot
 #: noise does not make its static run a sweep)

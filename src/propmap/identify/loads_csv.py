@@ -126,6 +126,7 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     p = f.name
 
     f, cm = _header_columns(f, rpm_source, pole_pairs, what, p)
+    _rolling_moment_without_torque(cm)
     notes = [*f.notes, *cm.notes]
     _power_note(f.header, cm, notes)
     _side_loads_note(f.header, cm, notes)
@@ -260,11 +261,11 @@ def _power_note(header, cm, notes: list) -> None:
                      "fit uses the torque too)")
 
 
-#: the loads a wind-tunnel balance gives besides the thrust, in-plane force and torque, which propmap predicts (with
-#: flapping or a linear inflow, docs/models.md) but does not fit or validate
+#: the loads a wind-tunnel balance gives besides the thrust, in-plane force, torque and rolling moment, which propmap
+#: predicts (with flapping or a linear inflow, docs/models.md) but does not fit or validate (the rolling moment is read
+#: since 2026-12-01)
 _SIDE_LOADS = ("side force", "sideforce", "lateral force", "y force", "pitching moment", "pitch moment",
-               "yawing moment", "yaw moment", "rolling moment", "roll moment", "hub moment", "hub pitching moment",
-               "hub rolling moment")
+               "yawing moment", "yaw moment", "hub moment", "hub pitching moment")
 
 
 def _side_load_name(column: str) -> str | None:
@@ -281,6 +282,20 @@ def _side_load_name(column: str) -> str | None:
     return None
 
 
+def _rolling_moment_without_torque(cm) -> None:
+    """A rolling-moment column is not read where no torque column is, with a note: a balance's
+    rolling moment about its own x axis, along the shaft, is the propeller's torque (a wind-tunnel
+    data audit's file, 2026-11-30, had 'rolling moment (N m)' and no torque); beside a torque
+    column it is the hub's rolling moment about the in-plane airspeed (since 2026-12-01)."""
+    if "rolling_moment" not in cm.columns or "torque" in cm.columns:
+        return
+    name = cm.columns.pop("rolling_moment")[0]
+    cm.notes[:] = [n for n in cm.notes if not n.startswith(f"{name!r} converted")]
+    cm.notes.append(f"{name!r} is not read: beside no torque column a balance's rolling moment may be its moment "
+                    "about the rotor axis, the torque: name that column 'torque' (with a torque column too, propmap "
+                    "reads it as the hub's rolling moment about the in-plane airspeed, docs/identification.md)")
+
+
 def _side_loads_note(header, cm, notes: list) -> None:
     """A note naming a side force or hub moment column, which is not read (a wind-tunnel file's
     'side force (N)' and 'pitching moment (N m)' were left out without a word: a wind-tunnel
@@ -290,9 +305,9 @@ def _side_loads_note(header, cm, notes: list) -> None:
     if side:
         moment = "torque" not in cm.columns and any("moment" in _side_load_name(c) for c in side)
         notes.append(f"{', '.join(repr(c) for c in side)} {'is' if len(side) == 1 else 'are'} not read: propmap "
-                     "fits and validates the thrust, the in-plane force (drag, along the in-plane airspeed) and "
-                     "the torque; the side force and the hub moments it predicts (rotor_loads' side_force, "
-                     "rolling_moment, pitching_moment) are not compared with measurements"
+                     "fits and validates the thrust, the in-plane force (drag, along the in-plane airspeed), the "
+                     "torque and the rolling moment; the side force and the pitching moment it predicts "
+                     "(rotor_loads' side_force, pitching_moment) are not compared with measurements"
                      + ("; a balance's moment about the rotor axis is the torque: name that column 'torque'"
                         if moment else ""))
 

@@ -264,6 +264,35 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     return refused, wind
 
 
+def _rolling_moment_checks(data: LoadData, at_rpm, checked, warnings_: list):
+    """sanity_check's hub rolling moment: its sign against the model's at incidence, as the drag's
+    (:func:`_drag_checks`: the DataError to raise where it is fitted and DRAG_SIGN_REFUSED of the
+    points disagree, else a warning from DRAG_SIGN_WARNED of them), and its size (beyond
+    DRAG_SIZE_WARN times the model's in the median: a unit not given?). Returns that DataError or
+    None."""
+    if "rolling_moment" not in data.measured:
+        return None
+    M, Mm = at_rpm.rolling_moment, data.measured["rolling_moment"]
+    sure = np.isfinite(M) & np.isfinite(Mm) & (np.abs(M) > 0.1 * np.nanmax(np.abs(M), initial=0)) & data.inplane
+    if sure.sum() < 3:
+        return None
+    opposite = int(np.sum(np.sign(Mm[sure]) == -np.sign(M[sure])))
+    said = (f"the measured rolling moment has the other sign than the model's at {opposite} of {int(sure.sum())} "
+            "points at incidence: propmap's rolling moment is positive where the advancing side carries more thrust "
+            "(for a rotor turning counter-clockwise about its thrust axis and moving along +x, a moment about -x; "
+            "docs/conventions.md); negate the column if the file uses the other convention")
+    if "rolling_moment" in checked and opposite >= DRAG_SIGN_REFUSED * sure.sum():
+        return DataError(f"load data: {data.source}: {said}")
+    if opposite >= DRAG_SIGN_WARNED * sure.sum():
+        warnings_.append(said)
+    size = float(np.median(np.abs(Mm[sure]) / np.abs(M[sure])))
+    if "rolling_moment" not in data.converted and not (1 / DRAG_SIZE_WARN <= size <= DRAG_SIZE_WARN):
+        warnings_.append(f"the measured rolling moment is {size:.3g} times the model's in the median at "
+                         f"{int(sure.sum())} points at incidence: is its unit given? it is read in N m (a header "
+                         "'rolling moment (N mm)' or 'rolling_moment_Nmm' converts it)")
+    return None
+
+
 def _plausible(rat: dict, lo: float = 1 / SANITY_FACTOR, hi: float = SANITY_FACTOR) -> bool:
     """Whether every median load ratio of ``rat`` lies in [lo, hi]."""
     return all(lo <= v <= hi for v in rat.values())
@@ -489,7 +518,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     header gave no unit or N, none converted in ``LoadData.converted``; torque in N mm; an optical tachometer counting
     every blade; the electrical rpm of a motor with pole pairs; a reaction torque; a pusher's
     thrust in data the reader left as written; no slip of a quantity the data lack); so is a
-    fitted in-plane force (drag) of the
+    fitted in-plane force (drag) or rolling moment of the
     other sign than the model's at DRAG_SIGN_REFUSED of the points at incidence.
 
     Parameters
@@ -522,7 +551,9 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         points at incidence (propmap's D points along the in-plane airspeed, against the
         disk's in-plane motion: docs/conventions.md) at DRAG_SIGN_WARNED of the points or more;
         a measured drag above 5% of the thrust at most points without an in-plane airspeed (an
-        incidence the file does not give); a thrust and drag that match the model far better
+        incidence the file does not give); a measured rolling moment of the other sign than the
+        model's at DRAG_SIGN_WARNED of the points at incidence or more, or beyond DRAG_SIZE_WARN
+        times its size (a unit not given); a thrust and drag that match the model far better
         read in wind axes (:func:`_wind_axes`; said first among the causes where the data are
         refused); loads that match the model far better at 180 deg minus the incidence, or, in
         a 0-90 deg file, at 90 deg minus it, or in axial descent where every point is at incidence
@@ -534,8 +565,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     DataError
         The data are off by more than :data:`SANITY_FACTOR` (the message gives the factor and
         the likely cause), or a checked load beyond it is 0 at every point (not measured?), or
-        a fitted drag has the other sign than the model's at :data:`DRAG_SIGN_REFUSED` of the
-        points at incidence.
+        a fitted drag or rolling moment has the other sign than the model's at
+        :data:`DRAG_SIGN_REFUSED` of the points at incidence.
     TypeError
         ``propeller``, ``params`` or ``air`` of the wrong type (a set's name included).
     """
@@ -552,6 +583,7 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
     warnings_ = _run_warnings(data, propeller, air)
     at_rpm = model.loads_at(data.omega)  # (the drag's sign and the ratios at the measured rpm)
     drag_refused, wind = _drag_checks(data, at_rpm, checked, warnings_)
+    drag_refused = drag_refused or _rolling_moment_checks(data, at_rpm, checked, warnings_)
     said = len(warnings_)
     _mirrored_incidence(data, at_rpm, model.loads_at, warnings_)
     mirror = len(warnings_) > said

@@ -44,8 +44,9 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     -------
     dict
         ``rms_thrust`` and ``rms_drag`` (of the mean measured static thrust), ``rms_torque``
-        (of the static torque), pooled over the folds' held-out points (the in-plane force
-        where the rotor has an in-plane airspeed, ``LoadData.inplane``); ``flap_compliance``,
+        (of the static torque) and, where measured, ``rms_rolling_moment`` (of the static
+        thrust times R), pooled over the folds' held-out points (the in-plane force and the
+        rolling moment where the rotor has an in-plane airspeed, ``LoadData.inplane``); ``flap_compliance``,
         each fold's fitted value [rad/(N m)]; ``n_points``, the held-out points. A load not
         measured at a point (NaN in ``data.measured``) is left out of its figure; one measured
         at no held-out point gives None.
@@ -59,6 +60,7 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         From the model.
     """
     from ..identify import FitOptions, fit_loads
+    from ..identify.load_data import INPLANE_KEYS
 
     air = model_air(base, air, name="base")
     missing = [k for k in ("thrust", "drag", "torque") if k not in data.measured]
@@ -71,7 +73,8 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     if not (T_static.size and Q_static.size):
         raise ValueError("holdout_loads needs static points with thrust and torque measured, to normalise by")
     T0, Q0 = float(np.mean(T_static)), float(np.mean(Q_static))
-    err = {"thrust": [], "drag": [], "torque": []}
+    err = {k: [] for k in ("thrust", "drag", "torque", "rolling_moment") if k != "rolling_moment" or k in data.measured}
+    scales = {"thrust": T0, "drag": T0, "torque": Q0, "rolling_moment": T0 * propeller.radius}
     compliance = []
     for train in folds:
         train = np.asarray(train, bool)
@@ -83,11 +86,11 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air,
                         collective=None if data.collective is None else data.collective[~train])
         inplane = data.inplane[~train]
-        for k, scale in (("thrust", T0), ("drag", T0), ("torque", Q0)):
-            e = (getattr(r, k) - data.measured[k][~train]) / scale
+        for k in err:
+            e = (getattr(r, k) - data.measured[k][~train]) / scales[k]
             # the in-plane force where the rotor has an in-plane airspeed, as the fit and load_errors take it (its
             # axial rows' zero errors were counted until 2026-12-01: 0.0079 for 0.0087, a fit-statistics audit)
-            err[k].append(e[inplane] if k == "drag" else e)
+            err[k].append(e[inplane] if k in INPLANE_KEYS else e)
     out = {}
     for k, v in err.items():
         e = np.concatenate(v)
@@ -101,19 +104,21 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     """A parameter set against load measurements, in coefficient form, overall and per group.
 
     Each measured load is compared as a coefficient, so that every rate weighs alike: thrust
-    and in-plane force as F / (rho n^2 D^4), torque as Q / (rho n^2 D^5); the errors are in
-    units of a reference coefficient: the mean measured static thrust coefficient for thrust
-    and in-plane force and the static torque coefficient for torque (the points at an airspeed
+    and in-plane force as F / (rho n^2 D^4), torque and rolling moment as M / (rho n^2 D^5);
+    the errors are in units of a reference coefficient: the mean measured static thrust
+    coefficient for thrust and in-plane force, half of it for the rolling moment (the static
+    thrust times R), and the static torque coefficient for torque (the points at an airspeed
     up to 0.3 m/s), as the catalogue's metric (docs/validation.md), or, without static points,
-    the rms of the measured coefficient. The in-plane force is scored where the rotor has an
-    in-plane airspeed above 0.3 m/s (elsewhere model and measurement should both be zero; all
-    points where none has one); points where the solver did not converge are left out (counted).
+    the rms of the measured coefficient. The in-plane force and the rolling moment are scored
+    where the rotor has an in-plane airspeed above 0.3 m/s (elsewhere model and measurement
+    should both be zero; all points where none has one); points where the solver did not
+    converge are left out (counted).
 
     Parameters
     ----------
     data : LoadData
         From :func:`propmap.identify.read_loads` or the UIUC readers; any of thrust, drag
-        (the in-plane force), torque measured.
+        (the in-plane force), torque, rolling moment measured.
     propeller : Propeller
     params : AirfoilParams or CamberedParams
     air : Air, optional
@@ -140,29 +145,32 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     SolverError
         From the model.
     """
-    from ..identify.load_data import data_air
+    from ..identify.load_data import INPLANE_KEYS, LOAD_KEYS, data_air
 
     air = data_air(data, air, params.air)[0]  # (the density the data logged, where no air is given)
-    keys = [k for k in ("thrust", "drag", "torque") if k in data.measured]
+    keys = [k for k in LOAD_KEYS if k in data.measured]
     if not keys:
-        raise ValueError("no load measured (thrust, drag or torque)")
+        raise ValueError("no load measured (thrust, drag, torque or rolling_moment)")
     r = rotor_loads(propeller, params, data.omega, data.airspeed, data.incidence, air=air,
                     discretization=discretization, collective=data.collective, on_failure="flag")
     n = data.omega / (2 * math.pi)
     D = propeller.diameter
-    scale = {"thrust": air.rho * n**2 * D**4, "drag": air.rho * n**2 * D**4, "torque": air.rho * n**2 * D**5}
-    model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque}
+    scale = {"thrust": air.rho * n**2 * D**4, "drag": air.rho * n**2 * D**4, "torque": air.rho * n**2 * D**5,
+             "rolling_moment": air.rho * n**2 * D**5}
+    model = {"thrust": r.thrust, "drag": r.drag, "torque": r.torque, "rolling_moment": r.rolling_moment}
     static = data.static
     coeff = {k: data.measured[k] / scale[k] for k in keys}
     inplane = data.inplane
     reference = {}
     for k in keys:
-        own = "thrust" if k in ("thrust", "drag") and "thrust" in coeff else k
+        own = "thrust" if k in ("thrust", *INPLANE_KEYS) and "thrust" in coeff else k
         known = np.isfinite(coeff[own])  # (NaN: not measured at that point)
-        if own == "drag" and inplane.any():  # (a drag without a thrust: its static mean is 0, once 'mean static CQ')
+        if own in INPLANE_KEYS and inplane.any():  # (without a thrust: its static mean is 0, once 'mean static CQ')
             known &= inplane
-        if own != "drag" and np.any(static & known):
+        if own not in INPLANE_KEYS and np.any(static & known):
             value, what = float(np.mean(coeff[own][static & known])), f"mean static {'CT' if own == 'thrust' else 'CQ'}"
+            if k == "rolling_moment":  # (a moment: of the static thrust times R)
+                value, what = value / 2, "mean static CT / 2 (the static thrust times R)"
         else:
             value, what = float(np.sqrt(np.mean(coeff[own][known] ** 2))), f"rms measured {own} coefficient"
         if not (math.isfinite(value) and value != 0.0):
@@ -171,7 +179,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
 
     ok = np.asarray(r.converged, bool) & np.all([np.isfinite(model[k]) for k in keys], axis=0)
     # a load not measured at a point (NaN in LoadData.measured) is left out of its errors (it gave NaN rms)
-    where = {k: (ok & inplane if k == "drag" and inplane.any() else ok) & np.isfinite(data.measured[k]) for k in keys}
+    where = {k: (ok & inplane if k in INPLANE_KEYS and inplane.any() else ok) & np.isfinite(data.measured[k])
+             for k in keys}
 
     def summary(mask) -> dict:
         out = {}
