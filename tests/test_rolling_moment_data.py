@@ -138,10 +138,15 @@ def test_load_errors_and_holdout_loads_score_the_rolling_moment(tunnel):
         float(np.sqrt(np.mean(coef**2))) / e["reference"]["rolling_moment"][1], rel=1e-9)
     # the calibrated set's rigid blades roll more than the tunnel's: the bias is positive
     assert e["overall"]["rolling_moment"]["bias"] > 0
-    held = holdout_loads(data, prop, generic_without("apce_10x7")[0],
-                         [np.round(np.degrees(data.incidence)) != 45], population=population(without="apce_10x7"),
+    fold = [np.round(np.degrees(data.incidence)) != 45]
+    held = holdout_loads(data, prop, generic_without("apce_10x7")[0], fold, population=population(without="apce_10x7"),
                          air=AIR)
     assert held["rms_rolling_moment"] is not None and held["rms_rolling_moment"] < 0.05
+    # the forces alone fitted (quantities=), the rolling moment still scored: its held-out error several times larger
+    forces = holdout_loads(data, prop, generic_without("apce_10x7")[0], fold,
+                           population=population(without="apce_10x7"), air=AIR, quantities=("thrust", "drag", "torque"))
+    assert forces["rms_rolling_moment"] > 3 * held["rms_rolling_moment"]
+    assert forces["flap_compliance"][0] > 2 * held["flap_compliance"][0]
     assert "rms_rolling_moment" not in holdout_loads(
         gill2019_loads("apce_10x7", (5000.0, 7000.0), air=AIR), prop, generic_without("apce_10x7")[0],
         [np.round(np.degrees(data.incidence)) != 45], population=population(without="apce_10x7"), air=AIR)

@@ -276,15 +276,20 @@ def gill2019_loads(name: str, rpm=(5000.0, 7000.0), *, air: Air = Air(), rolling
 #: the fits :func:`gill2019_incidence_fits` compares: the section alone (identify.options.CAMBERED_FIT, a
 #: rigid rotor) and the defaults
 GILL2019_FITS = ("section alone (rigid)", "default (section + flapping)")
+#: the fit of :func:`gill2019_incidence_fits` with the rolling moment fitted too
+GILL2019_FIT_MR = "default, with the rolling moment"
 
 
-def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -> dict:
+def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0), *, rolling_moment: bool = False) -> dict:
     """Fits to the gill2019 propellers' loads at incidence (:func:`gill2019_loads`), held out.
 
     Each propeller's loads are fitted from the generic set without its family and under that
     fold's prior (as validation does), once with the section's five level parameters alone
     and once with the defaults, which also free the flapping (identify.options.INPLANE_FIT),
-    and predicted where they were held out (:func:`propmap.validation.holdout_loads`).
+    and predicted where they were held out (:func:`propmap.validation.holdout_loads`). With
+    ``rolling_moment`` the loads include the published rolling moment: those two fit the
+    thrust, in-plane force and torque and are scored on the rolling moment too, and a third,
+    GILL2019_FIT_MR, fits all four (docs/identification.md, Load data at incidence).
 
     Parameters
     ----------
@@ -293,11 +298,14 @@ def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -
         advance ratios 0.16-0.24 predicted from those up to 0.12.
     rpm : sequence of float
         As :func:`gill2019_loads`.
+    rolling_moment : bool
+        Score (and in a third fit, fit) the rolling moment as well.
 
     Returns
     -------
     dict
-        propeller -> fit label (GILL2019_FITS) -> :func:`~propmap.validation.holdout_loads`'s dict.
+        propeller -> fit label (GILL2019_FITS, and GILL2019_FIT_MR with ``rolling_moment``) ->
+        :func:`~propmap.validation.holdout_loads`'s dict.
 
     Raises
     ------
@@ -314,15 +322,19 @@ def gill2019_incidence_fits(protocol: str = "incidence", rpm=(5000.0, 7000.0)) -
     air = Air(rho=1.225)
     out = {}
     for name in gill2019_coefficients():
-        prop, data = load_propeller(name), gill2019_loads(name, rpm, air=air)
+        prop, data = load_propeller(name), gill2019_loads(name, rpm, air=air, rolling_moment=rolling_moment)
         inc = np.round(np.degrees(data.incidence)).astype(int)
         if protocol == "speed":
             folds = [data.airspeed / (data.omega * prop.radius) < 0.14]
         else:
             folds = [inc != held for held in sorted(set(inc[inc > 0]))]
         base, pop = generic_without(name)[0], population(without=name)
-        out[name] = {label: holdout_loads(data, prop, base, folds, names=names, population=pop, air=air)
+        forces = ("thrust", "drag", "torque") if rolling_moment else None
+        out[name] = {label: holdout_loads(data, prop, base, folds, names=names, population=pop, air=air,
+                                          quantities=forces)
                      for label, names in zip(GILL2019_FITS, (CAMBERED_FIT, None))}
+        if rolling_moment:
+            out[name][GILL2019_FIT_MR] = holdout_loads(data, prop, base, folds, population=pop, air=air)
     return out
 
 

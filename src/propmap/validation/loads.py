@@ -17,7 +17,7 @@ __all__ = ["holdout_loads", "load_errors"]
 
 
 def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, names=None, population: dict | None = None,
-                  air: Air | None = None) -> dict:
+                  air: Air | None = None, quantities=None) -> dict:
     """Held-out errors of fits to load data with thrust, in-plane force and torque.
 
     Each fold's training points are fitted with :func:`propmap.identify.fit_loads` (from
@@ -39,6 +39,9 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         The prior's statistics (io.calibration.population).
     air : Air, optional
         Default: ``base.air``.
+    quantities : tuple of str, optional
+        The quantities fitted (as :func:`propmap.identify.fit_loads`; default: every measured
+        one); every measured one is scored.
 
     Returns
     -------
@@ -80,7 +83,7 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
         train = np.asarray(train, bool)
         if train.all() or not train.any():
             raise ValueError("every fold needs training and held-out points")
-        p = fit_loads(data.subset(train), propeller, base=base, air=air,
+        p = fit_loads(data.subset(train), propeller, base=base, air=air, quantities=quantities,
                       options=FitOptions(population=population, names=names)).params
         compliance.append(float(p.flap_compliance))
         r = rotor_loads(propeller, p, data.omega[~train], data.airspeed[~train], data.incidence[~train], air=air,
