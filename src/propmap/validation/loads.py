@@ -112,7 +112,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
     coefficient for thrust and in-plane force, half of it for the rolling moment (the static
     thrust times R), and the static torque coefficient for torque (the points at an airspeed
     up to 0.3 m/s), as the catalogue's metric (docs/validation.md), or, without static points,
-    the rms of the measured coefficient. The in-plane force and the rolling moment are scored
+    the rms of the measured coefficient (the thrust's for the in-plane force, and half of it for
+    the rolling moment, where a thrust is measured). The in-plane force and the rolling moment are scored
     where the rotor has an in-plane airspeed above 0.3 m/s (elsewhere model and measurement
     should both be zero; all points where none has one); points where the solver did not
     converge are left out (counted).
@@ -176,6 +177,8 @@ def load_errors(data, propeller: Propeller, params: SectionParams, *, air: Air |
                 value, what = value / 2, "mean static CT / 2 (the static thrust times R)"
         else:
             value, what = float(np.sqrt(np.mean(coeff[own][known] ** 2))), f"rms measured {own} coefficient"
+            if k == "rolling_moment" and own == "thrust":  # (the thrust times R here too: it was times D)
+                value, what = value / 2, "rms measured thrust coefficient / 2 (the thrust times R)"
         if not (math.isfinite(value) and value != 0.0):
             raise ValueError(f"the {what} is {value:g}: no reference for the {k} errors")
         reference[k] = (what, value)

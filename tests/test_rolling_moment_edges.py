@@ -1,0 +1,35 @@
+"""Edge cases of the hub's rolling moment as load data, found in review (2026-12-01)."""
+
+from __future__ import annotations
+
+import pytest
+
+import propmap as pm
+from propmap.cases import gill2019_loads
+from propmap.validation import load_errors
+
+AIR = pm.Air(rho=1.225)
+
+
+def test_the_rolling_moments_reference_is_the_thrust_times_r_without_static_points_too():
+    # with static points the rolling moment is scored of the mean static CT / 2 (the static thrust times R); without
+    # them it was scored of the rms thrust coefficient itself, not halved (the thrust times D): the same file less its
+    # two static points scored it 0.0185 for 0.0324, where the thrust's went 0.049 to 0.057 (a review, 2026-12-01)
+    prop, p = pm.load_propeller("apce_10x7"), pm.default_params("apce_10x7")
+    data = gill2019_loads("apce_10x7", (5000.0, 7000.0), air=AIR, rolling_moment=True)
+    moving = data.subset(~data.static)
+    e = load_errors(moving, prop, p, air=AIR)
+    what, value = e["reference"]["rolling_moment"]
+    assert e["reference"]["thrust"][0] == "rms measured thrust coefficient"
+    assert value == pytest.approx(e["reference"]["thrust"][1] / 2, rel=1e-12)
+    assert what == "rms measured thrust coefficient / 2 (the thrust times R)"
+    # so the two scores of the rolling moment move as the thrust's do (by the ratio of their references)
+    full = load_errors(data, prop, p, air=AIR)
+    step = e["reference"]["thrust"][1] / full["reference"]["thrust"][1]
+    ratio = e["overall"]["rolling_moment"]["rms"] / full["overall"]["rolling_moment"]["rms"]
+    assert 0.7 < ratio * step < 1.4
+    # without a thrust the rolling moment is scored of its own rms coefficient, as the in-plane force is
+    alone = pm.identify.LoadData(moving.omega, moving.airspeed, moving.incidence,
+                                 {"rolling_moment": moving.measured["rolling_moment"]}, moving.group)
+    assert load_errors(alone, prop, p, air=AIR)["reference"]["rolling_moment"][0] == (
+        "rms measured rolling_moment coefficient")
