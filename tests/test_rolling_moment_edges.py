@@ -33,3 +33,32 @@ def test_the_rolling_moments_reference_is_the_thrust_times_r_without_static_poin
                                  {"rolling_moment": moving.measured["rolling_moment"]}, moving.group)
     assert load_errors(alone, prop, p, air=AIR)["reference"]["rolling_moment"][0] == (
         "rms measured rolling_moment coefficient")
+
+
+def test_validate_says_where_the_rolling_moment_is_scored_without_an_in_plane_force_too(tmp_path, capsys):
+    # a file with thrust, torque and the rolling moment but no in-plane force: the reference line ended in '; the
+    # rolling moment likewise', after nothing it could be like (a review, 2026-12-01)
+    import math
+
+    from propmap.cli.main import main
+
+    data = gill2019_loads("apce_10x7", (5000.0,), air=AIR, rolling_moment=True)
+    rows = ["rpm,airspeed (m/s),incidence_deg,thrust (N),torque (N m),rolling moment (N m)"]
+    rows += [f"{data.omega[i] * 30 / math.pi:.1f},{data.airspeed[i]:.5f},{math.degrees(data.incidence[i]):.1f},"
+             f"{data.measured['thrust'][i]:.6f},{data.measured['torque'][i]:.7f},"
+             f"{data.measured['rolling_moment'][i]:.8f}" for i in range(data.n)]
+    f = tmp_path / "no_drag.csv"
+    f.write_text("\n".join(rows) + "\n")
+    assert main(["validate", str(f), "--prop", "apce_10x7"]) == 0
+    text = capsys.readouterr().out
+    assert "likewise" not in text
+    assert "(the static thrust times R) = 0.05" in text
+    assert "; the rolling moment where the rotor has an in-plane airspeed\n" in text
+    # with the in-plane force as well, both named in one clause
+    rows[0] = rows[0].replace("torque (N m)", "normal force (N),torque (N m)")
+    rows[1:] = [",".join([*r.split(",")[:4], f"{data.measured['drag'][i]:.6f}", *r.split(",")[4:]])
+                for i, r in enumerate(rows[1:])]
+    f.write_text("\n".join(rows) + "\n")
+    assert main(["validate", str(f), "--prop", "apce_10x7"]) == 0
+    assert ("; the in-plane force and the rolling moment where the rotor has an in-plane airspeed\n"
+            in capsys.readouterr().out)

@@ -313,6 +313,14 @@ def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[di
     return in_fit, every
 
 
+def _inplane_words(keys) -> str:
+    """The tail of the reference line naming the loads scored only where the rotor has an
+    in-plane airspeed ('; the rolling moment likewise' once followed nothing where no in-plane
+    force was measured, a review, 2026-12-01)."""
+    which = [w for k, w in (("drag", "the in-plane force"), ("rolling_moment", "the rolling moment")) if k in keys]
+    return f"; {' and '.join(which)} where the rotor has an in-plane airspeed" if which else ""
+
+
 def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, label: str, air) -> None:
     """validate's table of the coefficients' errors (all points, by group, by state), with the
     groups' in-sample labels and the rms errors in SI."""
@@ -321,8 +329,7 @@ def _print_errors(e: dict, in_fit: dict, every: list[str], what: str, prop, labe
                f"{prop.diameter:.4g} m), params {label}; air {air_label(air)}")
     click.echo("errors of the coefficients, model - measured (max: the largest magnitude), in % of the reference: "
                + "; ".join(f"{k}: {w} = {v:.4g}" for k, (w, v) in e["reference"].items())
-               + ("; the in-plane force where the rotor has an in-plane airspeed" if "drag" in keys else "")
-               + ("; the rolling moment likewise" if "rolling_moment" in keys else ""))
+               + _inplane_words(keys))
     one = every[0] if len(every) == 1 and every[0] in in_fit else None  # (one group: the all-points row is it)
     rows = ([("all points" + (f" ({in_fit[one]})" if one else ""), e["overall"])]
             + [(g + (f" ({in_fit[g]})" if g in in_fit else ""), row) for g, row in e["groups"].items()]
