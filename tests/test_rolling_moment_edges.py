@@ -62,3 +62,29 @@ def test_validate_says_where_the_rolling_moment_is_scored_without_an_in_plane_fo
     assert main(["validate", str(f), "--prop", "apce_10x7"]) == 0
     assert ("; the in-plane force and the rolling moment where the rotor has an in-plane airspeed\n"
             in capsys.readouterr().out)
+
+
+def test_a_flapping_sets_small_rolling_moment_is_not_taken_for_a_unit_slip():
+    # the rolling moment's size check compared the measured moment with the model's own: against a set whose blades
+    # flap (a compliance of 10 rad/(N m); the default fit to thrust, in-plane force and torque gives 2-50 on these
+    # propellers, docs/validation.md) the tunnel's moments in N m were 103 times the model's and 'is its unit
+    # given?' was asked of a file in the right unit (a review, 2026-12-01); now the size is judged against rigid
+    # blades', which roll 1.0-1.8 times the tunnel's
+    from propmap.identify import LoadData, sanity_check
+
+    prop = pm.load_propeller("apce_10x7")
+    data = gill2019_loads("apce_10x7", (5000.0, 7000.0), air=AIR, rolling_moment=True)
+    flapping = pm.default_params("apce_10x7").replace(flap_compliance=10.0)
+    said = sanity_check(data, prop, params=flapping, air=AIR)
+    assert not any("rolling moment" in w for w in said)
+    # a real slip (N mm read as N m) is still said, against rigid blades
+    milli = LoadData(data.omega, data.airspeed, data.incidence,
+                     {**data.measured, "rolling_moment": 1e3 * data.measured["rolling_moment"]}, data.group)
+    said = sanity_check(milli, prop, params=flapping, air=AIR)
+    assert any("the measured rolling moment is" in w and "times the model's without flapping (rigid blades)" in w
+               and "is its unit given?" in w for w in said)
+    # and the sign is still the flapping model's own (its rolling moment keeps the rigid one's sign)
+    flipped = LoadData(data.omega, data.airspeed, data.incidence,
+                       {**data.measured, "rolling_moment": -data.measured["rolling_moment"]}, data.group)
+    with pytest.raises(pm.identify.DataError, match="the measured rolling moment has the other sign"):
+        sanity_check(flipped, prop, params=flapping, air=AIR)
