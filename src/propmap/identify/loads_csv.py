@@ -34,7 +34,10 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     :mod:`propmap.identify.stand`); ``airspeed`` [m/s] and ``incidence_deg`` (both default 0:
     a static thrust stand); optional ``collective_deg`` (blade-angle offset of a
     variable-pitch rotor, in [-45, 45] deg: a hover collective sweep is a valid data set)
-    and ``group`` (run label); optional ``air density`` [kg/m^3] (``Air Density (kg/m³)``, ``rho``;
+    and ``group`` (run label); beside a torque, an optional hub rolling moment [N m]
+    (``rolling moment``, ``roll moment``, ``hub rolling moment``, with a torque's unit; propmap's
+    sign, docs/conventions.md; beside no torque it is not read, with a note: a balance's rolling
+    moment about its shaft is the torque); optional ``air density`` [kg/m^3] (``Air Density (kg/m³)``, ``rho``;
     its median is ``LoadData.air_density``). The exports of RCbenchmark / Tyto thrust stands (Series
     1520, 1580, 1585, 1780) are read as written: the optical or electrical motor speed (the
     choice stated), a "steps" test averaged to one point per ESC step (its settling rows

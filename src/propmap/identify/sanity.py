@@ -562,7 +562,8 @@ def sanity_check(data: LoadData, propeller, *, params=None, air: Air | None = No
         a measured drag above 5% of the thrust at most points without an in-plane airspeed (an
         incidence the file does not give); a measured rolling moment of the other sign than the
         model's at DRAG_SIGN_WARNED of the points at incidence or more, or beyond DRAG_SIZE_WARN
-        times its size (a unit not given); a thrust and drag that match the model far better
+        times its size (a unit not given; the size of the set's rigid blades' moment where the
+        set flaps, which passes little of it to the hub); a thrust and drag that match the model far better
         read in wind axes (:func:`_wind_axes`; said first among the causes where the data are
         refused); loads that match the model far better at 180 deg minus the incidence, or, in
         a 0-90 deg file, at 90 deg minus it, or in axial descent where every point is at incidence
