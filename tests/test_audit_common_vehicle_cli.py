@@ -150,7 +150,7 @@ def test_a_long_unknown_name_is_cut_to_80_characters(capsys, tmp_path):
     code, _, err = run(capsys, "fit", "loads", "apce_8x6", "--out", tmp_path / "p.toml", "--quantities",
                        "thrust," + "q" * 100)
     assert code == 2
-    assert err == f"propmap: error: --quantities: unknown {'q' * 77}...; valid: thrust, drag, torque\n"
+    assert err == f"propmap: error: --quantities: unknown {'q' * 77}...; valid: thrust, drag, torque, rolling_moment\n"
     assert list(tmp_path.iterdir()) == []
 
 

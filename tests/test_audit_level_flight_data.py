@@ -257,7 +257,8 @@ def test_L14_rotor_columns_are_ordered_by_number_past_rpm_9(tmp_path, quad):
 
 def test_D6_a_measured_quantity_other_than_thrust_drag_torque_is_refused():
     """D6 (any key accepted): 'lift' is not a load the fits know; refused naming it and the valid."""
-    with pytest.raises(ValueError, match=r"LoadData.measured: unknown quantity 'lift' \(valid: thrust, drag, torque\)"):
+    with pytest.raises(ValueError, match=r"LoadData.measured: unknown quantity 'lift' \(valid: thrust, drag, torque, "
+                                         r"rolling_moment\)"):
         _ld(measured={"thrust": np.ones(3), "lift": np.ones(3)})
 
 
