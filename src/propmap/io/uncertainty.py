@@ -37,8 +37,9 @@ OFF_AXIS = ("not validated at incidence for this propeller: the UIUC data behind
             "0.298 N rms, docs/flight.md, but the logs do not separate the rotors' in-plane force from the "
             "airframe's) and four catalogue propellers in oblique flow (Gill & D'Andrea 2019: with their own sets "
             "the in-plane force rises with the advance ratio at 0.47-0.73 of the measured rate, and the edgewise "
-            "thrust of the three APC electric ones by 4-9% where the measured rises by 15-19% at mu = 0.2); "
-            "off-axis loads rest on the BET/BEMT physics (docs/validation.md)")
+            "thrust of the three APC electric ones by 4-9% where the measured rises by 15-19% at mu = 0.2, and "
+            "their rigid blades' rolling moment at 1.17-1.77 times the measured one); off-axis loads rest on the "
+            "BET/BEMT physics (docs/validation.md)")
 
 
 def _pct(t) -> str:
