@@ -60,6 +60,10 @@ def test_the_rolling_moment_pins_the_flapping_that_the_in_plane_force_alone_over
     assert without.extra["quantities"] == ["thrust", "drag", "torque"]
     assert both.extra["quantities"] == ["thrust", "drag", "torque", "rolling_moment"]
     assert any("the in-plane force and the rolling moment at incidence" in w for w in both.warnings)
+    assert not any("a rolling-moment column pins it" in w for w in both.warnings)
+    # fitted to the forces alone, the note says the compliance is an equivalent one that the rolling moment would pin
+    assert any("without the hub's rolling moment it is an equivalent compliance" in w
+               and w.endswith("a rolling-moment column pins it") for w in without.warnings)
     h0, m0 = _slopes(prop, without.params)
     h1, m1 = _slopes(prop, both.params)
     measured_h, measured_m = 0.034 / 0.029, 0.029 / 0.029  # (k4 and k9 over CT_static, published)

@@ -384,7 +384,11 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         what = " and ".join(w for k, w in (("drag", "the in-plane force"), ("rolling_moment", "the rolling moment"))
                             if k in keys)
         notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure {what} at incidence "
-                     "(docs/identification.md)")
+                     "(docs/identification.md)" + (
+                         "; without the hub's rolling moment it is an equivalent compliance that may carry an in-plane "
+                         "force of another cause (on four APC propellers in a wind tunnel it came out 0.8-50 rad/(N m) "
+                         "so, 0.4-1.5 with their rolling moments fitted too): a rolling-moment column pins it"
+                         if "rolling_moment" not in keys else ""))
     for k in INPLANE_KEYS:
         if k in data.measured and k not in keys and quantities is None:
             notes.append(f"the measured {'drag' if k == 'drag' else 'rolling moment'} is not fitted: no point has an "
