@@ -317,7 +317,9 @@ def _inplane_words(keys) -> str:
     """The tail of the reference line naming the loads scored only where the rotor has an
     in-plane airspeed ('; the rolling moment likewise' once followed nothing where no in-plane
     force was measured, a review, 2026-12-01)."""
-    which = [w for k, w in (("drag", "the in-plane force"), ("rolling_moment", "the rolling moment")) if k in keys]
+    from ..identify.load_data import INPLANE_WORDS
+
+    which = [w for k, w in INPLANE_WORDS.items() if k in keys]
     return f"; {' and '.join(which)} where the rotor has an in-plane airspeed" if which else ""
 
 

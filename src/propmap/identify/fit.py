@@ -34,7 +34,7 @@ from ..core.flapping import flapping_warning_held
 from ..core.solver import (OMEGA_MIN, TIP_MACH_WARN, check_model_args, differentiable, rotor_loads,
                            supersonic_tips_allowed)
 from .data import LoadData
-from .load_data import INPLANE_KEYS, STATIC_AIRSPEED, data_air
+from .load_data import INPLANE_KEYS, INPLANE_WORDS, STATIC_AIRSPEED, data_air
 from .continuation import _fit_with_continuation
 from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_directions, _flap_articulated,
                      _flap_saturation, _m_effect, _params_from, _prior_stats, _warn_at_optimum, _with_prior, _x0)
@@ -381,8 +381,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
             warns = [f"the optimum along the data's leading directions left the allowed range ({shown}): all "
                      f"{len(names)} parameters fitted under the prior instead", *warns]
     if inplane:
-        what = " and ".join(w for k, w in (("drag", "the in-plane force"), ("rolling_moment", "the rolling moment"))
-                            if k in keys)
+        what = " and ".join(w for k, w in INPLANE_WORDS.items() if k in keys)
         notes.append(f"{', '.join(INPLANE_FIT)} fitted too: the data measure {what} at incidence "
                      "(docs/identification.md)" + (
                          "; without the hub's rolling moment it is an equivalent compliance that may carry an in-plane "

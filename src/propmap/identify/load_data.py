@@ -241,6 +241,8 @@ LOAD_KEYS = ("thrust", "drag", "torque", "rolling_moment")
 #: the loads that are zero in axial flow (by symmetry), fitted and scored only where the rotor has an in-plane
 #: airspeed (LoadData.inplane): the in-plane force and the hub's rolling moment
 INPLANE_KEYS = ("drag", "rolling_moment")
+#: those loads in words, for messages
+INPLANE_WORDS = {"drag": "the in-plane force", "rolling_moment": "the rolling moment"}
 #: a point at an airspeed up to this [m/s] is static: for the thrust's sign rule of a CSV
 #: (loads_csv.read_loads) and for which parameters a fit frees (fit._data_kind: a stand's pitot
 #: noise does not make its static run a sweep)
