@@ -443,7 +443,7 @@ def _gill2019_errors(prop: Propeller, p: SectionParams, data, c: dict, air: Air)
     qR = 0.5 * air.rho * math.pi * R**2 * (data.omega * R) ** 2 * R
     return {"thrust": (r.thrust - data.measured["thrust"]) / T0, "drag": (r.drag - data.measured["drag"]) / T0,
             "torque": (r.torque - data.measured["torque"]) / Q0,
-            "rolling_moment": (r.rolling_moment - qR * (c["k9"] * mu + c["k10"] * lam * mu)) / (T0 * R),
+            "rolling_moment": (r.rolling_moment - data.measured["rolling_moment"]) / (T0 * R),
             "pitching_moment": (r.pitching_moment - qR * (c["k11"] * mu + c["k12"] * lam * mu)) / (T0 * R)}
 
 
@@ -455,7 +455,7 @@ def _gill2019(param_sets: dict, air: Air) -> CaseResult:
     measured = {q: np.array([_gill2019_published(published[n])[q] for n in names]) for q in GILL2019_QUANTITIES}
     omega = GILL2019_RPM * RPM
     props = {n: load_propeller(n) for n in names}
-    grids = {n: gill2019_loads(n, (GILL2019_RPM,), air=air) for n in names}
+    grids = {n: gill2019_loads(n, (GILL2019_RPM,), air=air, rolling_moment=True) for n in names}
     pred, metrics = {}, {}
     for label, sets in param_sets.items():
         params = {n: sets(n) if callable(sets) else sets for n in names}
