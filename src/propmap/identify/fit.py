@@ -138,7 +138,7 @@ def _load_keys(data: LoadData, quantities) -> list:
     if any(k in INPLANE_KEYS for k in keys) and not data.inplane.any():
         for k in [k for k in keys if k in INPLANE_KEYS]:
             if quantities is not None or len(keys) == 1:
-                raise ValueError(f"the {_INPLANE_WORDS[k]} cannot be fitted: no point has an in-plane airspeed above "
+                raise ValueError(f"{INPLANE_WORDS[k]} ({k}) cannot be fitted: no point has an in-plane airspeed above "
                                  f"{STATIC_AIRSPEED:g} m/s (below it model and measurement are near 0; is the "
                                  "incidence missing?)")
             keys.remove(k)  # (its measurement there is noise: sanity_check says so where it is large)
@@ -147,8 +147,6 @@ def _load_keys(data: LoadData, quantities) -> list:
 
 #: the loads in units of a moment (normalised by rho n^2 D^5, as CQ)
 MOMENT_KEYS = ("torque", "rolling_moment")
-#: the in-plane loads (INPLANE_KEYS) in words, for messages
-_INPLANE_WORDS = {"drag": "in-plane force (drag)", "rolling_moment": "rolling moment (rolling_moment)"}
 
 
 def _data_kind(data: LoadData) -> str:

@@ -215,6 +215,12 @@ def _moderate_mismatch(data, propeller, at_rpm, ratios, loads_at, pole_pairs, la
                else ", or whether the parameters are this propeller's")]
 
 
+def _sure(model: np.ndarray, measured: np.ndarray) -> np.ndarray:
+    """The points where a load's sign and size can be judged: both finite and the model's
+    magnitude above a tenth of its largest (those below are noise about zero)."""
+    return np.isfinite(model) & np.isfinite(measured) & (np.abs(model) > 0.1 * np.nanmax(np.abs(model), initial=0))
+
+
 def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     """sanity_check's in-plane force: its sign against the model's at incidence (the DataError to raise
     once the thrust and torque are checked, or None; a warning where most points disagree but it is
@@ -226,7 +232,7 @@ def _drag_checks(data: LoadData, at_rpm, checked, warnings_: list):
     refused = None
     # the sign convention of the in-plane force (a fit of the other sign is nonsense)
     D = at_rpm.drag
-    sure = np.isfinite(D) & np.isfinite(data.measured["drag"]) & (np.abs(D) > 0.1 * np.nanmax(np.abs(D), initial=0))
+    sure = _sure(D, data.measured["drag"])
     opposite = int(np.sum(np.sign(data.measured["drag"][sure]) == -np.sign(D[sure])))
     said = (f"the measured drag has the other sign than the model's in-plane force at {opposite} of "
             f"{int(sure.sum())} points at incidence: propmap's drag points along the in-plane airspeed (against "
@@ -269,14 +275,14 @@ def _rolling_moment_checks(data: LoadData, at_rpm, checked, warnings_: list, rig
     (:func:`_drag_checks`: the DataError to raise where it is fitted and DRAG_SIGN_REFUSED of the
     points disagree, else a warning from DRAG_SIGN_WARNED of them), and its size (beyond
     DRAG_SIZE_WARN times the model's in the median: a unit not given?), against ``rigid``, the
-    model's loads without flapping, where the model flaps (a flapping set's rolling moment is a
-    tenth to a hundredth of rigid blades' and of a tunnel's, docs/validation.md: a file in the
+    model's loads without flapping, where the model flaps (a set flapping at 3-10 rad/(N m) passes
+    0.01-0.38 of a tunnel's rolling moment to the hub, docs/validation.md: a file in the
     right unit was asked 'is its unit given?' at 103 times a compliance of 10's, a review,
     2026-12-01). Returns that DataError or None."""
     if "rolling_moment" not in data.measured:
         return None
     M, Mm = at_rpm.rolling_moment, data.measured["rolling_moment"]
-    sure = np.isfinite(M) & np.isfinite(Mm) & (np.abs(M) > 0.1 * np.nanmax(np.abs(M), initial=0)) & data.inplane
+    sure = _sure(M, Mm) & data.inplane
     if sure.sum() < 3:
         return None
     opposite = int(np.sum(np.sign(Mm[sure]) == -np.sign(M[sure])))
@@ -290,7 +296,7 @@ def _rolling_moment_checks(data: LoadData, at_rpm, checked, warnings_: list, rig
         warnings_.append(said)
     if rigid is not None:  # (the size against rigid blades', where the model's flapping takes the moment away)
         M = rigid.rolling_moment
-        sure = np.isfinite(M) & np.isfinite(Mm) & (np.abs(M) > 0.1 * np.nanmax(np.abs(M), initial=0)) & data.inplane
+        sure = _sure(M, Mm) & data.inplane
         if sure.sum() < 3:
             return None
     size = float(np.median(np.abs(Mm[sure]) / np.abs(M[sure])))

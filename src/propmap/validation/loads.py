@@ -76,7 +76,8 @@ def holdout_loads(data, propeller: Propeller, base: SectionParams, folds, *, nam
     if not (T_static.size and Q_static.size):
         raise ValueError("holdout_loads needs static points with thrust and torque measured, to normalise by")
     T0, Q0 = float(np.mean(T_static)), float(np.mean(Q_static))
-    err = {k: [] for k in ("thrust", "drag", "torque", "rolling_moment") if k != "rolling_moment" or k in data.measured}
+    err = {k: [] for k in ("thrust", "drag", "torque", *(("rolling_moment",) if "rolling_moment" in data.measured
+                                                        else ()))}
     scales = {"thrust": T0, "drag": T0, "torque": Q0, "rolling_moment": T0 * propeller.radius}
     compliance = []
     for train in folds:
