@@ -1,0 +1,72 @@
+"""Stop 98: a ``fit loads --quantities`` subset is scored on the measured quantities it leaves
+unfitted, over every point, and warned of where the fitted set predicts them 25% or more worse
+than its base set (UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255; the APC
+10x7E's oblique-flow loads of Gill & D'Andrea, Drones 3(4):77, 2019, case ``gill2019``)."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+
+import pytest
+
+import propmap as pm
+from propmap.cases import gill2019_loads
+from propmap.cli.main import main
+
+WARNED = re.compile(r"propmap: warning: the fitted set predicts the unfitted ([a-z_, ]+) 25% or more worse than "
+                    r"generic does over every point that measures them \((.*)\): fitted to ([a-z_, ]+) alone")
+
+
+def _rmse(said: str, quantity: str) -> tuple[float, float]:
+    """The fitted and the base set's rmse of ``quantity`` in a warning's brackets."""
+    m = re.search(quantity + r" rmse (\S+) against (\S+)", said)
+    return float(m[1]), float(m[2])
+
+
+def test_a_catalogue_fit_to_the_thrust_alone_says_what_it_does_to_the_torque(tmp_path, capsys):
+    out = tmp_path / "t.toml"
+    assert main(["fit", "loads", "apce_10x7", "--out", str(out), "--quantities", "thrust"]) == 0
+    said = WARNED.findall(capsys.readouterr().err)
+    assert [(s[0], s[2]) for s in said] == [("torque", "thrust")]
+    fitted, base = _rmse(said[0][1], "torque")
+    report = json.loads(out.with_suffix(".report.json").read_text())["unfitted"]
+    assert report["quantities"] == ["torque"]
+    assert report["fitted"]["torque_rmse"] == pytest.approx(fitted, rel=1e-3)
+    assert report["generic"]["torque_rmse"] == pytest.approx(base, rel=1e-3)
+    # (measured 2026-12-01, regression values: CP rmse 0.0084 against the generic set's 0.0026)
+    assert fitted == pytest.approx(0.0084, rel=0.1) and base == pytest.approx(0.0026, rel=0.1)
+    # every quantity fitted: nothing unfitted to say or report
+    both = tmp_path / "b.toml"
+    assert main(["fit", "loads", "apce_10x7", "--out", str(both)]) == 0
+    assert not WARNED.findall(capsys.readouterr().err)
+    assert "unfitted" not in json.loads(both.with_suffix(".report.json").read_text())
+
+
+@pytest.fixture(scope="module")
+def tunnel_csv(tmp_path_factory):
+    data = gill2019_loads("apce_10x7", (5000.0, 7000.0), air=pm.Air(rho=1.225), rolling_moment=True)
+    rows = ["rpm,airspeed (m/s),incidence_deg,thrust (N),normal force (N),torque (N m),rolling moment (N m),group"]
+    for i in range(data.n):
+        rows.append(f"{data.omega[i] * 30 / math.pi:.1f},{data.airspeed[i]:.5f},{math.degrees(data.incidence[i]):.1f},"
+                    f"{data.measured['thrust'][i]:.6f},{data.measured['drag'][i]:.6f},"
+                    f"{data.measured['torque'][i]:.7f},{data.measured['rolling_moment'][i]:.8f},{data.group[i]}")
+    f = tmp_path_factory.mktemp("tunnel") / "tunnel.csv"
+    f.write_text("\n".join(rows) + "\n")
+    return f
+
+
+def test_a_fit_to_the_rolling_moment_alone_says_what_it_does_to_the_thrust(tunnel_csv, tmp_path, capsys):
+    out = tmp_path / "r.toml"
+    assert main(["fit", "loads", str(tunnel_csv), "--prop", "apce_10x7", "--out", str(out),
+                 "--quantities", "rolling_moment"]) == 0
+    said = WARNED.findall(capsys.readouterr().err)
+    assert [(s[0], s[2]) for s in said] == [("thrust, torque", "rolling_moment")]  # (the in-plane force: not 25% worse)
+    # (measured 2026-12-01, regression values: thrust 0.90 N rms against the generic set's 0.34 N, torque 0.0150
+    # against 0.0095 N m)
+    assert _rmse(said[0][1], "thrust") == pytest.approx((0.90, 0.34), rel=0.1)
+    assert _rmse(said[0][1], "torque") == pytest.approx((0.0150, 0.0095), rel=0.1)
+    report = json.loads(out.with_suffix(".report.json").read_text())["unfitted"]
+    assert report["quantities"] == ["thrust", "drag", "torque"]
+    assert set(report["fitted"]) == {"thrust_rmse", "drag_rmse", "torque_rmse"}
