@@ -14,7 +14,10 @@ propeller's missing slope. Then a check in axial flow, where the same drag would
 (C_D A / (pi R^2)) lambda_c^2 off the published thrust: the published C_FT at lambda_c = 0.2 as a
 fraction of its static value, the same with that drag added back, and propmap's (its loads at
 V = 0.2 Omega R in axial climb over its static thrust; each set calibrated on UIUC's axial data,
-another rig).
+another rig). Last, the shaft: a rig's drag does not load the motor, a rotor force that tilts the
+resultant back does, by its work H V. Edgewise at mu = 0.2, in units of the static power, the
+published torque rise (k7 mu^2 / CQ_static) less propmap's, beside the published in-plane force's
+work (k4 mu^2 / CQ_static) less propmap's (H V / (Q_static Omega)).
 
     .venv/bin/python tools/gill2019_tare.py     # seconds
 
@@ -57,6 +60,12 @@ def main() -> None:
         r = pm.rotor_loads(prop, params, omega, np.array([0.0, lam * omega * prop.radius]), 0.0)
         print(f"{'':13s} axial thrust at lambda_c = {lam}: published {published:.3f} of static, with that drag "
               f"added back {added_back:.3f}; propmap {float(r.thrust[1] / r.thrust[0]):.3f}")
+        mu = 0.2
+        e = pm.rotor_loads(prop, params, omega, np.array([0.0, mu * omega * prop.radius]), np.array([0.0, math.pi / 2]))
+        torque_gap = c["k7"] * mu**2 / c["CQ_static"] - float(e.torque[1] / e.torque[0] - 1)
+        work_gap = c["k4"] * mu**2 / c["CQ_static"] - float(e.drag[1] * mu * prop.radius / e.torque[0])
+        print(f"{'':13s} edgewise at mu = {mu}, of the static power: the torque rise propmap misses {torque_gap:.3f}, "
+              f"the missing in-plane force's work {work_gap:.3f}")
 
 
 if __name__ == "__main__":
