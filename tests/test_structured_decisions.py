@@ -221,6 +221,7 @@ WIND_FIRST = "likely loads in wind axes, not the rotor's (thrust = L sin i - D_w
 
 def test_wind_axes_are_named_first_whatever_the_warning_says(monkeypatch):
     import propmap.identify.sanity as sanity
+    import propmap.identify.sanity_inplane as sanity_inplane
 
     prop, data = _wind_data()
     with pytest.raises(DataError, match=WIND_FIRST.replace("(", r"\(")):  # (as before)
@@ -234,7 +235,8 @@ def test_wind_axes_are_named_first_whatever_the_warning_says(monkeypatch):
             warnings_[-1] = "reworded: the loads look like a tunnel's"
         return said
 
-    monkeypatch.setattr(sanity, "_wind_axes", reworded)
+    # (_drag_checks, which calls _wind_axes, is identify/sanity_inplane.py's since the split of sanity.py)
+    monkeypatch.setattr(sanity_inplane, "_wind_axes", reworded)
     with pytest.raises(DataError) as info:
         sanity.sanity_check(data, prop)
     assert WIND_FIRST in str(info.value)  # (read by the warnings' text: not said)
@@ -242,6 +244,7 @@ def test_wind_axes_are_named_first_whatever_the_warning_says(monkeypatch):
 
 def test_words_of_the_wind_warning_in_another_warning_do_not_name_wind_axes(monkeypatch):
     import propmap.identify.sanity as sanity
+    import propmap.identify.sanity_inplane as sanity_inplane
 
     prop, data = _wind_data(scale=20.0, wind=False)
     with pytest.raises(DataError) as info:
@@ -253,7 +256,8 @@ def test_words_of_the_wind_warning_in_another_warning_do_not_name_wind_axes(monk
         warnings_.append("a run named 'are the loads in wind axes?'")  # (not the wind-axes warning)
         return False
 
-    monkeypatch.setattr(sanity, "_wind_axes", quoting)
+    # (_drag_checks, which calls _wind_axes, is identify/sanity_inplane.py's since the split of sanity.py)
+    monkeypatch.setattr(sanity_inplane, "_wind_axes", quoting)
     with pytest.raises(DataError) as info:
         sanity.sanity_check(data, prop)
     assert str(info.value) == plain  # (read by the warnings' text: wind axes named first)
