@@ -108,7 +108,7 @@ def test_map_axis_with_text_bounds_is_refused_naming_the_option(capsys, tmp_path
 
 
 def test_loads_points_file_over_the_size_limit_is_refused_before_reading(capsys, tmp_path):
-    """cli/loads.py (_points_header; a sparse file of 2 GiB + 1 byte: no disk used). Mutant: the size refusal deleted
+    """cli/_points.py (_points_header; a sparse file of 2 GiB + 1 byte: no disk used). Mutant: the size refusal deleted
     (the file is then read: its zeros refused as NUL bytes, another message)."""
     f = tmp_path / "big.csv"
     with open(f, "wb") as fh:
@@ -119,7 +119,7 @@ def test_loads_points_file_over_the_size_limit_is_refused_before_reading(capsys,
 
 
 def test_loads_points_header_line_over_64_kib_is_refused(capsys, tmp_path):
-    """cli/loads.py (_points_header). Mutant: the refusal made 'if False:' (the 70000-byte line is then refused as 'a
+    """cli/_points.py (_points_header). Mutant: the refusal made 'if False:' (the 70000-byte line is then refused as 'a
     column name of 65533 characters', not as a header line too long)."""
     f = tmp_path / "pts.csv"
     f.write_text("rpm," + "x" * 70000)
