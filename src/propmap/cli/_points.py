@@ -199,7 +199,7 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
     import pandas as pd
 
     reader, names, sep, mapped = _points_reader(path, chunksize)
-    from ..identify.csvfile import unnamed_columns, unnamed_value_message
+    from ..identify.cells import unnamed_columns, unnamed_value_message
 
     cols = {c: mapped[c][0] for c in INPUT_COLUMNS + (COLLECTIVE_COLUMN,) if c in mapped}
     unnamed = unnamed_columns(names)

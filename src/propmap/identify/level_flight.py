@@ -14,7 +14,8 @@ from ..vehicle.layout import body_to_world, check_vehicle  # (body_to_world re-e
 from ._checks import first_length, float_array
 from ..core._numbers import integer
 from ..core.units import RPM
-from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv, _short
+from .cells import _short
+from .csvfile import _ROTOR_RE, RANGES, DataError, _Csv
 
 __all__ = ["LevelFlightData", "read_level_flight", "body_to_world", "rotor_kinematics"]
 
