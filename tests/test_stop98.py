@@ -35,6 +35,8 @@ def test_a_catalogue_fit_to_the_thrust_alone_says_what_it_does_to_the_torque(tmp
     assert report["quantities"] == ["torque"]
     assert report["fitted"]["torque_rmse"] == pytest.approx(fitted, rel=1e-3)
     assert report["generic"]["torque_rmse"] == pytest.approx(base, rel=1e-3)
+    assert (f"not fitted, rmse over every point: fitted: torque {report['fitted']['torque_rmse']:.4g} (CP); generic: "
+            f"torque {report['generic']['torque_rmse']:.4g} (CP)") in out.with_suffix(".report.txt").read_text()
     # (measured 2026-12-01, regression values: CP rmse 0.0084 against the generic set's 0.0026)
     assert fitted == pytest.approx(0.0084, rel=0.1) and base == pytest.approx(0.0026, rel=0.1)
     # every quantity fitted: nothing unfitted to say or report
@@ -42,6 +44,7 @@ def test_a_catalogue_fit_to_the_thrust_alone_says_what_it_does_to_the_torque(tmp
     assert main(["fit", "loads", "apce_10x7", "--out", str(both)]) == 0
     assert not WARNED.findall(capsys.readouterr().err)
     assert "unfitted" not in json.loads(both.with_suffix(".report.json").read_text())
+    assert "not fitted" not in both.with_suffix(".report.txt").read_text()
 
 
 @pytest.fixture(scope="module")

@@ -311,17 +311,18 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 _LOAD_UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
 
 
-def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base_label: str, units: dict) -> None:
+def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base_label: str, units: dict) -> str:
     """Where ``--quantities`` left measured quantities unfitted: their rmse over every point, fitted
-    and base set, in ``res.extra["unfitted"]``, and a warning for those the fitted set predicts 25%
-    or more worse than the base set (:func:`held_out_worse`'s margins). A set fitted to the rolling
+    and base set, in ``res.extra["unfitted"]`` and in the line returned for the report ("" where
+    every measured quantity was fitted), and a warning for those the fitted set predicts 25% or more
+    worse than the base set (:func:`held_out_worse`'s margins). A set fitted to the rolling
     moment alone predicted apce_10x7's tunnel thrust at 0.71 N rms against the generic set's 0.145 N
     (2026-12-01), and the catalogue's apce_10x7 fitted to its thrust alone its CP at 0.0084 rms,
     both without a word."""
     chosen = res.extra.get("quantities", list(measured))
     unfitted = [k for k in measured if k not in chosen]
     if not unfitted:
-        return
+        return ""
     res.extra["unfitted"] = {"quantities": unfitted, **{name: {f"{k}_rmse": rms[f"{k}_rmse"] for k in unfitted}
                                                         for name, rms in (("fitted", fitted), (base_label, base))}}
     worse = held_out_worse(fitted, base, largest, unfitted)
@@ -331,6 +332,10 @@ def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base
         warn(f"the fitted set predicts the unfitted {', '.join(worse)} 25% or more worse than {base_label} does over "
              f"every point that measures them ({said}): fitted to {', '.join(chosen)} alone, it does not carry to "
              "them; fit them too (--quantities) or use the set for those quantities only")
+    return "not fitted, rmse over every point: " + "; ".join(
+        f"{name}: " + ", ".join(f"{k} " + ("-" if rms[f"{k}_rmse"] is None else f"{rms[f'{k}_rmse']:.4g}{units[k]}")
+                                for k in unfitted)
+        for name, rms in (("fitted", fitted), (base_label, base)))
 
 
 @fit.command("loads", cls=Command)
@@ -549,7 +554,9 @@ def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, la
                                                                                vb.summary("model"))]
     largest = {"thrust": max(float(np.max(np.abs(r.CT))) for r in vf.runs),
                "torque": max(float(np.max(np.abs(r.CP))) for r in vf.runs)}
-    _unfitted_worse(res, *rmse, largest, ("thrust", "torque"), base_label, {"thrust": " (in CT)", "torque": " (in CP)"})
+    unfitted = _unfitted_worse(res, *rmse, largest, ("thrust", "torque"), base_label,
+                               {"thrust": " (CT)", "torque": " (CP)"})
+    extra = "\n".join(line for line in (extra, unfitted) if line)
 
     def figure(png):
         plot_load_fit(vf.runs, vb.runs, set(held), png, baseline_label=base_label,
@@ -586,8 +593,8 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
 
     top = {k: float(np.nanmax(np.abs(data.measured[k]), initial=0.0)) for k in data.measured}
     every = rmse(np.ones(data.n, bool))
-    _unfitted_worse(res, every["fitted"], every[base_label], top, data.measured, base_label,
-                    {k: " " + u for k, u in _LOAD_UNITS.items()})
+    unfitted = _unfitted_worse(res, every["fitted"], every[base_label], top, data.measured, base_label,
+                               {k: " " + u for k, u in _LOAD_UNITS.items()})
     if held:
         res.extra["holdout"] = {"holdout": list(held), **rmse(held_mask)}
         extra = "held-out rmse: " + "; ".join(
@@ -601,6 +608,7 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
             said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
             warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
                  f"({said}): what it learned from the fitted groups does not carry to these")
+    extra = "\n".join(line for line in (extra, unfitted) if line)
 
     def figure(png):
         plot_load_parity(data, model, held_mask, png, title=f"load fit of {label} ({prop.name})")
