@@ -316,7 +316,7 @@ def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base
     and base set, in ``res.extra["unfitted"]`` and in the line returned for the report ("" where
     every measured quantity was fitted), and a warning for those the fitted set predicts 25% or more
     worse than the base set (:func:`held_out_worse`'s margins). A set fitted to the rolling
-    moment alone predicted apce_10x7's tunnel thrust at 0.71 N rms against the generic set's 0.145 N
+    moment alone predicted apce_10x7's tunnel thrust at 0.90 N rms against the generic set's 0.34 N
     (2026-12-01), and the catalogue's apce_10x7 fitted to its thrust alone its CP at 0.0084 rms,
     both without a word."""
     chosen = res.extra.get("quantities", list(measured))
