@@ -73,3 +73,22 @@ def test_a_fit_to_the_rolling_moment_alone_says_what_it_does_to_the_thrust(tunne
     report = json.loads(out.with_suffix(".report.json").read_text())["unfitted"]
     assert report["quantities"] == ["thrust", "drag", "torque"]
     assert set(report["fitted"]) == {"thrust_rmse", "drag_rmse", "torque_rmse"}
+
+
+def test_the_unfitted_in_plane_force_is_scored_where_the_rotor_has_an_in_plane_airspeed(tunnel_csv, tmp_path):
+    """The unfitted in-plane force's rmse over the points with an in-plane airspeed (LoadData.inplane), as the fit,
+    validate and --holdout judge it: not over the axial points' zeros, which would pull it down."""
+    import numpy as np
+
+    from propmap.identify import read_loads
+    from propmap.io.calibration import generic_params
+
+    out = tmp_path / "r.toml"
+    assert main(["fit", "loads", str(tunnel_csv), "--prop", "apce_10x7", "--out", str(out),
+                 "--quantities", "rolling_moment"]) == 0
+    report = json.loads(out.with_suffix(".report.json").read_text())["unfitted"]
+    data, prop, base = read_loads(tunnel_csv), pm.load_propeller("apce_10x7"), generic_params()
+    r = pm.rotor_loads(prop, base, data.omega, data.airspeed, data.incidence, air=base.air)
+    assert 0 < data.inplane.sum() < data.n  # (the axial points are in the file too)
+    err = (r.drag - data.measured["drag"])[data.inplane]
+    assert report["generic"]["drag_rmse"] == pytest.approx(float(np.sqrt(np.mean(err**2))), rel=1e-6)
