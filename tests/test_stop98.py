@@ -47,17 +47,24 @@ def test_a_catalogue_fit_to_the_thrust_alone_says_what_it_does_to_the_torque(tmp
     assert "not fitted" not in both.with_suffix(".report.txt").read_text()
 
 
-@pytest.fixture(scope="module")
-def tunnel_csv(tmp_path_factory):
+def _tunnel_csv(path, axial_only: bool = False):
+    """The APC 10x7E's published tunnel loads at 5000 and 7000 rpm as a CSV (``axial_only``: the 0 deg incidence's
+    points alone, where the normal force is measured but no point has an in-plane airspeed)."""
     data = gill2019_loads("apce_10x7", (5000.0, 7000.0), air=pm.Air(rho=1.225), rolling_moment=True)
     rows = ["rpm,airspeed (m/s),incidence_deg,thrust (N),normal force (N),torque (N m),rolling moment (N m),group"]
     for i in range(data.n):
+        if axial_only and data.group[i] != "inc00":
+            continue
         rows.append(f"{data.omega[i] * 30 / math.pi:.1f},{data.airspeed[i]:.5f},{math.degrees(data.incidence[i]):.1f},"
                     f"{data.measured['thrust'][i]:.6f},{data.measured['drag'][i]:.6f},"
                     f"{data.measured['torque'][i]:.7f},{data.measured['rolling_moment'][i]:.8f},{data.group[i]}")
-    f = tmp_path_factory.mktemp("tunnel") / "tunnel.csv"
-    f.write_text("\n".join(rows) + "\n")
-    return f
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+@pytest.fixture(scope="module")
+def tunnel_csv(tmp_path_factory):
+    return _tunnel_csv(tmp_path_factory.mktemp("tunnel") / "tunnel.csv")
 
 
 def test_a_fit_to_the_rolling_moment_alone_says_what_it_does_to_the_thrust(tunnel_csv, tmp_path, capsys):
@@ -92,3 +99,20 @@ def test_the_unfitted_in_plane_force_is_scored_where_the_rotor_has_an_in_plane_a
     assert 0 < data.inplane.sum() < data.n  # (the axial points are in the file too)
     err = (r.drag - data.measured["drag"])[data.inplane]
     assert report["generic"]["drag_rmse"] == pytest.approx(float(np.sqrt(np.mean(err**2))), rel=1e-6)
+
+
+def test_a_measured_quantity_no_point_judges_is_not_reported_unfitted(tmp_path, capsys):
+    """A normal force measured in axial flow only is not fitted (no point has an in-plane airspeed: the fit's note
+    says so) and has no point to be scored on: it is not listed as unfitted with no rmse ('drag -'), a line that
+    came without --quantities too (until 2026-12-01, a review)."""
+    csv = _tunnel_csv(tmp_path / "axial.csv", axial_only=True)
+    out = tmp_path / "a.toml"
+    assert main(["fit", "loads", str(csv), "--prop", "apce_10x7", "--out", str(out)]) == 0
+    assert "unfitted" not in json.loads(out.with_suffix(".report.json").read_text())
+    assert "not fitted, rmse" not in out.with_suffix(".report.txt").read_text()
+    capsys.readouterr()
+    assert main(["fit", "loads", str(csv), "--prop", "apce_10x7", "--out", str(out), "--quantities", "thrust"]) == 0
+    said = WARNED.findall(capsys.readouterr().err)
+    assert [(s[0], s[2]) for s in said] == [("torque", "thrust")]
+    assert json.loads(out.with_suffix(".report.json").read_text())["unfitted"]["quantities"] == ["torque"]
+    assert "not fitted, rmse over every point: fitted: torque " in out.with_suffix(".report.txt").read_text()
