@@ -7,7 +7,7 @@ once. The circulatory lift of a thin aerofoil whose angle varies harmonically at
 is attenuated and lagged by Theodorsen's function C(k) = H1(k) / (H1(k) + i H0(k)), H the Hankel
 functions of the second kind and k = omega b / U the reduced frequency (b = c / 2). For the n-th
 harmonic of a rotating section omega = n Omega, U = Omega r, so k_n = n c / (2 r): 0.05-0.15 for
-the 1/rev over most of these propellers' blades, |C| 0.85-0.93 with 8-12 deg of lag. That should
+the 1/rev over most of these propellers' blades, |C| 0.92-0.80 with 8-14 deg of lag. That should
 lower the rolling moment (which propmap makes 1.17-1.77 times the published one on the gill2019
 case's propellers, docs/validation.md) and turn part of it into a pitching moment (propmap's is 0,
 the published 11-58% of the rolling moment). This probe measures how much, and what it does to
