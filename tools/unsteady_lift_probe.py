@@ -6,8 +6,9 @@ Question. In edgewise flow a rigid blade section's angle of attack varies once p
 once. The circulatory lift of a thin aerofoil whose angle varies harmonically at frequency omega
 is attenuated and lagged by Theodorsen's function C(k) = H1(k) / (H1(k) + i H0(k)), H the Hankel
 functions of the second kind and k = omega b / U the reduced frequency (b = c / 2). For the n-th
-harmonic of a rotating section omega = n Omega, U = Omega r, so k_n = n c / (2 r): 0.05-0.15 for
-the 1/rev over most of these propellers' blades, |C| 0.92-0.80 with 8-14 deg of lag. That should
+harmonic of a rotating section omega = n Omega, U = Omega r, so k_n = n c / (2 r): for the
+1/rev 0.09-0.13 at 0.75 R on these propellers (0.29-0.35 at 0.3 R; printed), |C| 0.92 / 0.85 / 0.80
+at k = 0.05 / 0.1 / 0.15 with 8 / 12 / 14 deg of lag (printed). That should
 lower the rolling moment (which propmap makes 1.17-1.77 times the published one on the gill2019
 case's propellers, docs/validation.md) and turn part of it into a pitching moment (propmap's is 0,
 the published 11-58% of the rolling moment). This probe measures how much, and what it does to
@@ -226,7 +227,11 @@ def main():
     runs = [(n, pm.default_params(n), "calibrated") for n in coeffs] + [(GENERIC_ON, pm.generic_params(), "generic")]
     for name, p, label in runs:
         cells, meas, side, bound = run(name, p, coeffs, checks)
-        print(f"{name} ({label})")
+        prop = pm.load_propeller(name)
+        r = np.linspace(0.3, 1.0, 71) * prop.radius  # (the blade from 0.3 R: inboard the chord over r grows)
+        k1 = prop.chord_at(r) / (2.0 * r)
+        print(f"{name} ({label}); the 1/rev's k = c / 2r over 0.3-1 R: {k1.min():.3f}-{k1.max():.3f}, "
+              f"{float(prop.chord_at(0.75 * prop.radius)) / (1.5 * prop.radius):.3f} at 0.75 R")
         for col, cell, m in zip(cols, cells, meas):
             print(f"    {col:19s} {cell:40s} published {m:+.3f}")
         print(f"    side force / thrust at mu = 0.2 (unsteady): {side:+.4f}")
