@@ -116,3 +116,21 @@ def test_a_measured_quantity_no_point_judges_is_not_reported_unfitted(tmp_path, 
     assert [(s[0], s[2]) for s in said] == [("torque", "thrust")]
     assert json.loads(out.with_suffix(".report.json").read_text())["unfitted"]["quantities"] == ["torque"]
     assert "not fitted, rmse over every point: fitted: torque " in out.with_suffix(".report.txt").read_text()
+
+
+def test_with_runs_held_out_the_unfitted_quantity_is_scored_over_every_run(tmp_path, capsys):
+    """--holdout and --quantities together: the unfitted CP's rmse is over all the catalogue's runs, the held-out
+    ones too (what validate gives the written set), not over the fitted runs alone."""
+    from propmap.io.catalogue import get_entry
+    from propmap.validation import validate
+
+    out = tmp_path / "h.toml"
+    assert main(["fit", "loads", "apce_10x7", "--out", str(out), "--quantities", "thrust", "--holdout", "pg0815"]) == 0
+    capsys.readouterr()
+    report = json.loads(out.with_suffix(".report.json").read_text())["unfitted"]
+    prop, entry = pm.load_propeller("apce_10x7"), get_entry("apce_10x7")
+    every = validate(entry, prop, pm.read_params(out)).summary("model")
+    assert report["fitted"]["torque_rmse"] == pytest.approx(every["cp_rmse"], rel=1e-6)
+    training = validate(entry, prop, pm.read_params(out)).summary(
+        "model", [r.run_id for r in validate(entry, prop, pm.generic_params()).runs if r.run_id != "pg0815"])
+    assert abs(training["cp_rmse"] - every["cp_rmse"]) > 1e-4  # (the two differ: the test tells them apart)

@@ -309,6 +309,8 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 
 #: the units of each load quantity's rmse in fit loads' lines
 _LOAD_UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
+#: where the in-plane loads are judged, said beside an rmse over every point
+_INPLANE_NOTE = "; the in-plane loads where the rotor has an in-plane airspeed"
 
 
 def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base_label: str, units: dict) -> str:
@@ -319,6 +321,8 @@ def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base
     margins). A set fitted to the rolling moment alone predicted apce_10x7's tunnel thrust at
     0.90 N rms against the generic set's 0.34 N (2026-12-01), and the catalogue's apce_10x7
     fitted to its thrust alone its CP at 0.0084 rms, both without a word."""
+    from ..identify.load_data import INPLANE_KEYS
+
     chosen = res.extra.get("quantities", list(measured))
     # (a quantity no point judges, the in-plane force measured in axial flow only, is not the subset's: the fit
     # leaves it out and its note says why; it was listed with no rmse, 'drag -', without --quantities too, until
@@ -329,16 +333,17 @@ def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base
     res.extra["unfitted"] = {"quantities": unfitted, **{name: {f"{k}_rmse": rms[f"{k}_rmse"] for k in unfitted}
                                                         for name, rms in (("fitted", fitted), (base_label, base))}}
     worse = held_out_worse(fitted, base, largest, unfitted)
+    where = {name: _INPLANE_NOTE if any(k in INPLANE_KEYS for k in which) else ""
+             for name, which in (("line", unfitted), ("warning", worse))}
     if worse:
         said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {base[k + '_rmse']:.4g}{units[k]}"
                          for k in worse)
         warn(f"the fitted set predicts the unfitted {', '.join(worse)} 25% or more worse than {base_label} does over "
-             f"every point that measures them ({said}): fitted to {', '.join(chosen)} alone, it does not carry to "
-             "them; fit them too (--quantities) or use the set for those quantities only")
-    return "not fitted, rmse over every point: " + "; ".join(
-        f"{name}: " + ", ".join(f"{k} " + ("-" if rms[f"{k}_rmse"] is None else f"{rms[f'{k}_rmse']:.4g}{units[k]}")
-                                for k in unfitted)
-        for name, rms in (("fitted", fitted), (base_label, base)))
+             f"every point that measures them ({said}{where['warning']}): fitted to {', '.join(chosen)} alone, it "
+             "does not carry to them; fit them too (--quantities) or use the set for those quantities only")
+    head = "not fitted, rmse over every point" + (f" ({where['line'].removeprefix('; ')})" if where["line"] else "")
+    return head + ": " + "; ".join(f"{name}: " + ", ".join(f"{k} {rms[f'{k}_rmse']:.4g}{units[k]}" for k in unfitted)
+                                   for name, rms in (("fitted", fitted), (base_label, base)))
 
 
 @fit.command("loads", cls=Command)
