@@ -114,10 +114,12 @@ def grid():
             np.concatenate([[0.0], inc.ravel(), [math.pi / 2]]))
 
 
-def probe_loads(prop, p, omega, V, inc, v, transfer):
+def probe_loads(prop, p, omega, V, inc, v, transfer, modify=None):
     """(T, H, Q, M_R, M_P, Y) [N, N, N m, N m, N m, N] of the elements at the annuli's inflow v (n, nr), on
     N_PSI azimuth nodes; ``transfer`` None: quasi-steady, else a function of the reduced frequency n k (per
-    annulus) whose complex value multiplies alpha's harmonics n in HARMONICS (theodorsen: C(n k))."""
+    annulus) whose complex value multiplies alpha's harmonics n in HARMONICS (theodorsen: C(n k)).
+    ``modify(U_T, U_P, u_R, theta, g) -> (theta, g)``, optional: another change of each element's blade angle
+    or stall-angle factor g (u_R = V_b cos psi, the radial velocity along the blade; tools/yawed_stall_probe.py)."""
     air = p.air
     nd = _nodes(prop, DEFAULT_DISCRETIZATION.n_radial, DEFAULT_DISCRETIZATION.n_azimuth, air, p)
     model, pk = _model_constants(p)
@@ -133,7 +135,7 @@ def probe_loads(prop, p, omega, V, inc, v, transfer):
                                cam[5], cam[6], cam[7])
     else:
         sec = (nd.sc[None, :] + 0 * Vs, 0 * y * Vs, 0 * y * Vs, 0 * y * Vs)
-    sec = tuple(np.broadcast_to(s, v.shape)[..., None] for s in sec)
+    a, cdf, g, dal0 = (np.broadcast_to(s, v.shape)[..., None] for s in sec)
     Vb = Vs + pk[PK_INPLANE] * np.where(axial, 0.0, inplane_induction_numpy(v, Vs, Vc))
     UT = omega * y[..., None] + Vb[..., None] * sinpsi
     UP = np.broadcast_to((Vc + v)[..., None], UT.shape)
@@ -145,8 +147,10 @@ def probe_loads(prop, p, omega, V, inc, v, transfer):
         for n in HARMONICS:
             A[..., n] *= transfer(n * k)[None, :]
         theta = theta + np.fft.irfft(A, n=N_PSI, axis=-1) - alpha
-    qT, qH = element(UT, UP, theta, np.sin(theta), np.cos(theta), *sec, model, pk)
-    cdpU = profile_cd(UT, UP, theta, *sec, model, pk) * np.sqrt(UT**2 + UP**2)
+    if modify is not None:
+        theta, g = modify(UT, UP, Vb[..., None] * cospsi, theta, g)
+    qT, qH = element(UT, UP, theta, np.sin(theta), np.cos(theta), a, cdf, g, dal0, model, pk)
+    cdpU = profile_cd(UT, UP, theta, a, cdf, g, dal0, model, pk) * np.sqrt(UT**2 + UP**2)
     kr = pk[PK_RADIAL_DRAG] * Vb[..., None]  # the radial flow's drag, u_R = V_b cos psi (_annulus_loads)
     cfac, w = nd.cfac[None, :], nd.w
     dT = cfac * qT.mean(-1)

@@ -72,13 +72,11 @@ import numpy as np
 import propmap as pm
 from propmap.cases import BEAVER_N, beaver_propeller
 from propmap.cases_gill2019 import GILL2019_ADVANCE, GILL2019_INCIDENCE_DEG, GILL2019_RPM, gill2019_coefficients
-from propmap.core._momentum import inplane_induction_numpy
-from propmap.core._physics import CAMBERED, PK_INPLANE, PK_RADIAL_DRAG, cambered_annulus, element, profile_cd
-from propmap.core.nodes import _cambered_args, _nodes
+from propmap.core._physics import CAMBERED
 from propmap.core.polar import _model_constants
-from propmap.core.solver import DEFAULT_DISCRETIZATION
+from unsteady_lift_probe import N_PSI  # (tools/, the script's folder: its full-circle elements)
+from unsteady_lift_probe import probe_loads as full_circle
 
-N_PSI = 64  # full-circle azimuth nodes (as tools/unsteady_lift_probe.py)
 LAMBDA_MAX = math.radians(60.0)  # cap on the yaw angle: stall angles at most 1 / cos(60 deg) = 2 times
 CAPS_SENSITIVITY = (45.0, 75.0)  # [deg]
 MU_RISE = (0.05, 0.1, 0.2)  # edgewise points of the thrust rise (the last also the torque's)
@@ -87,40 +85,17 @@ GENERIC_ON = "apce_8x6"
 
 def probe_loads(prop, p, omega, V, inc, v, lam_max):
     """(T, H, Q, M_R, M_P) [N, N, N m, N m, N m] of the elements at the annuli's inflow v (n, nr) on N_PSI azimuth
-    nodes (tools/unsteady_lift_probe.probe_loads' integration), the stall-angle factor g of each element times
+    nodes (tools/unsteady_lift_probe.probe_loads), the stall-angle factor g of each element times
     min(1 / cos(Lambda), 1 / cos(lam_max)) (lam_max [rad]; None: quasi-steady, the solver's element)."""
-    nd = _nodes(prop, DEFAULT_DISCRETIZATION.n_radial, DEFAULT_DISCRETIZATION.n_azimuth, p.air, p)
-    model, pk = _model_constants(p)
-    if model != CAMBERED:
+    if _model_constants(p)[0] != CAMBERED:
         raise ValueError("the yawed stall acts on the cambered section's stall angles only")
-    psi = (np.arange(N_PSI) + 0.5) * 2 * np.pi / N_PSI
-    sinpsi, cospsi = np.sin(psi)[None, None, :], np.cos(psi)[None, None, :]
-    Vs, Vc = (V * np.sin(inc))[:, None], (V * np.cos(inc))[:, None]
-    axial = Vs == 0
-    y = nd.y[None, :]
-    cam = _cambered_args(p, p.air)
-    U2 = (omega * y) ** 2 + 0.5 * Vs**2 + Vc**2
-    sec = cambered_annulus(U2, nd.sc[None, :], nd.cy2[None, :], cam[4], cam[0], cam[1], cam[2], cam[3] != 0.0,
-                           cam[5], cam[6], cam[7])
-    a, cdf, g, dal0 = (np.broadcast_to(s, v.shape)[..., None] for s in sec)
-    Vb = Vs + pk[PK_INPLANE] * np.where(axial, 0.0, inplane_induction_numpy(v, Vs, Vc))
-    UT = omega * y[..., None] + Vb[..., None] * sinpsi
-    UP = np.broadcast_to((Vc + v)[..., None], UT.shape)
-    uR = Vb[..., None] * cospsi  # the radial velocity along the blade (the radial drag's)
-    theta = np.broadcast_to(nd.theta[None, :, None], UT.shape)
-    if lam_max is not None:  # 1 / cos(Lambda) = sqrt(1 + (u_R / U_T)^2), Lambda = atan(|u_R| / |U_T|), capped
+
+    def yawed(UT, UP, uR, theta, g):
+        """1 / cos(Lambda) = sqrt(1 + (u_R / U_T)^2), Lambda = atan(|u_R| / |U_T|), capped at lam_max."""
         inv_cos = np.sqrt(1.0 + (uR / np.maximum(np.abs(UT), 1e-300)) ** 2)
-        g = g * np.minimum(inv_cos, 1.0 / math.cos(lam_max))
-    qT, qH = element(UT, UP, theta, np.sin(theta), np.cos(theta), a, cdf, g, dal0, model, pk)
-    cdpU = profile_cd(UT, UP, theta, a, cdf, g, dal0, model, pk) * np.sqrt(UT**2 + UP**2)
-    kr = pk[PK_RADIAL_DRAG] * Vb[..., None]  # the radial flow's drag (_annulus_loads)
-    cfac, w = nd.cfac[None, :], nd.w
-    dT = cfac * qT.mean(-1)
-    dH = np.where(axial, 0.0, cfac * (qH * sinpsi + kr * cdpU * cospsi**2).mean(-1))
-    dQ = y * cfac * qH.mean(-1)
-    dMR = y * cfac * (qT * sinpsi).mean(-1)
-    dMP = -y * cfac * (qT * cospsi).mean(-1)
-    return tuple(d @ w for d in (dT, dH, dQ, dMR, dMP))
+        return theta, g * np.minimum(inv_cos, 1.0 / math.cos(lam_max))
+
+    return full_circle(prop, p, omega, V, inc, v, None, None if lam_max is None else yawed)[:5]
 
 
 def solve(prop, p, omega, V, inc):
