@@ -134,3 +134,38 @@ def test_with_runs_held_out_the_unfitted_quantity_is_scored_over_every_run(tmp_p
     training = validate(entry, prop, pm.read_params(out)).summary(
         "model", [r.run_id for r in validate(entry, prop, pm.generic_params()).runs if r.run_id != "pg0815"])
     assert abs(training["cp_rmse"] - every["cp_rmse"]) > 1e-4  # (the two differ: the test tells them apart)
+
+
+def test_a_failed_solve_is_left_out_of_both_sets_rmse_and_said(tunnel_csv, monkeypatch, capsys):
+    """A point where the model's solve fails (flagged, NaN loads) made the held-out and unfitted rmse NaN and skipped
+    their warnings without a word; it is now left out of both sets' rmse, and said."""
+    import dataclasses
+
+    import numpy as np
+
+    from propmap.cli import fit as cli_fit
+    from propmap.core import solver
+    from propmap.identify import fit_loads, read_loads
+
+    data, prop = read_loads(tunnel_csv), pm.load_propeller("apce_10x7")
+    base, air = pm.generic_params(), pm.Air(rho=1.225)
+    res = fit_loads(data, prop, base=base, air=air, quantities=("rolling_moment",))
+    original = solver.rotor_loads
+
+    def failing_at_row_8(*args, **kwargs):
+        r = original(*args, **kwargs)
+        nan = np.arange(r.thrust.size) == 7
+        return dataclasses.replace(r, **{k: np.where(nan, np.nan, getattr(r, k)) for k in ("thrust", "torque")})
+
+    monkeypatch.setattr(solver, "rotor_loads", failing_at_row_8)
+    extra, _ = cli_fit._file_comparison(res, data, prop, base, "generic", [], air, "tunnel")
+    err = capsys.readouterr().err
+    assert "the model's solve failed at 1 point(s) of the data (the first: row 8 of the points read)" in err
+    said = WARNED.findall(err)
+    assert [s[0] for s in said] == ["thrust, torque"]  # (warned: the NaN no longer hides them)
+    unfitted = res.extra["unfitted"]
+    keep = np.arange(data.n) != 7
+    expected = float(np.sqrt(np.mean((original(prop, res.params, data.omega, data.airspeed, data.incidence, air=air,
+                                                on_failure="flag").thrust - data.measured["thrust"])[keep] ** 2)))
+    assert unfitted["fitted"]["thrust_rmse"] == pytest.approx(expected, rel=1e-9)
+    assert np.isfinite(unfitted["generic"]["thrust_rmse"]) and "nan" not in extra

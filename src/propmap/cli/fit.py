@@ -592,6 +592,14 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
     # (the in-plane loads where the rotor has an in-plane airspeed, as the fit and validate take them: the in-plane
     # force's axial rows' zero errors were counted until 2026-12-01, a fit-statistics audit)
     judged = {k: np.isfinite(data.measured[k]) & (data.inplane if k in INPLANE_KEYS else True) for k in data.measured}
+    # (a point where either set's solve failed, flagged NaN, is left out of both sets' rmse, and said: it made the
+    # rmse NaN and skipped the warnings without a word until 2026-12-01, a review)
+    solved = {k: np.isfinite(model["fitted"][k]) & np.isfinite(model[base_label][k]) for k in data.measured}
+    failed = sorted({int(i) for k in data.measured for i in np.flatnonzero(judged[k] & ~solved[k])})
+    if failed:
+        warn(f"the model's solve failed at {len(failed)} point(s) of the data (the first: row {failed[0] + 1} of the "
+             "points read), flagged: left out of the fitted and the base set's rmse")
+    judged = {k: judged[k] & solved[k] for k in data.measured}
 
     def rmse(where) -> dict:
         """Each set's rmse of each measured quantity over the points ``where`` (None: no such point)."""
