@@ -540,8 +540,9 @@ def _check_jackknife(train) -> None:
 
 def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, label: str):
     """fit loads of a catalogue propeller: (the held-out runs' CT and CP rmse line, fitted
-    against the base set and the hover model, or ""; the figure's writer, the fit against the
-    catalogue's runs), the comparison stored in ``res.extra["holdout"]``."""
+    against the base set and the hover model, and the unfitted quantity's (:func:`_unfitted_worse`),
+    or ""; the figure's writer, the fit against the catalogue's runs), the comparison stored in
+    ``res.extra["holdout"]``."""
     import numpy as np
 
     from ..plots import plot_load_fit
@@ -573,9 +574,11 @@ def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, la
 
 
 def _file_comparison(res, data, prop, base, base_label: str, held, air, label: str):
-    """fit loads of a file's data: (the held-out groups' rmse line, fitted and base set, or "";
-    the parity figure's writer), the rmse stored in ``res.extra["holdout"]``, a warning where the
-    fitted set predicts the held-out groups 25% or more worse than the base set."""
+    """fit loads of a file's data: (the held-out groups' rmse line and the unfitted quantities' (a
+    ``--quantities`` subset: :func:`_unfitted_worse`), fitted and base set, or ""; the parity figure's
+    writer), the rmse stored in ``res.extra["holdout"]``, a warning where the fitted set predicts the
+    held-out groups 25% or more worse than the base set; points where either set's solve failed are
+    left out of both rmse, with a warning."""
     import numpy as np
 
     from ..core.solver import rotor_loads
