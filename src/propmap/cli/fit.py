@@ -309,8 +309,6 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
 
 #: the units of each load quantity's rmse in fit loads' lines
 _LOAD_UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
-#: where the in-plane loads are judged, said beside an rmse over every point
-_INPLANE_NOTE = "; the in-plane loads where the rotor has an in-plane airspeed"
 
 
 def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base_label: str, units: dict) -> str:
@@ -332,16 +330,19 @@ def _unfitted_worse(res, fitted: dict, base: dict, largest: dict, measured, base
         return ""
     res.extra["unfitted"] = {"quantities": unfitted, **{name: {f"{k}_rmse": rms[f"{k}_rmse"] for k in unfitted}
                                                         for name, rms in (("fitted", fitted), (base_label, base))}}
+    def where(which) -> str:
+        """Where the in-plane loads are judged, said where ``which`` names one."""
+        return "the in-plane loads where the rotor has an in-plane airspeed" if set(which) & set(INPLANE_KEYS) else ""
+
     worse = held_out_worse(fitted, base, largest, unfitted)
-    where = {name: _INPLANE_NOTE if any(k in INPLANE_KEYS for k in which) else ""
-             for name, which in (("line", unfitted), ("warning", worse))}
     if worse:
         said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {base[k + '_rmse']:.4g}{units[k]}"
                          for k in worse)
         warn(f"the fitted set predicts the unfitted {', '.join(worse)} 25% or more worse than {base_label} does over "
-             f"every point that measures them ({said}{where['warning']}): fitted to {', '.join(chosen)} alone, it "
-             "does not carry to them; fit them too (--quantities) or use the set for those quantities only")
-    head = "not fitted, rmse over every point" + (f" ({where['line'].removeprefix('; ')})" if where["line"] else "")
+             f"every point that measures them ({'; '.join(filter(None, (said, where(worse))))}): fitted to "
+             f"{', '.join(chosen)} alone, it does not carry to them; fit them too (--quantities) or use the set for "
+             "those quantities only")
+    head = "not fitted, rmse over every point" + (f" ({where(unfitted)})" if where(unfitted) else "")
     return head + ": " + "; ".join(f"{name}: " + ", ".join(f"{k} {rms[f'{k}_rmse']:.4g}{units[k]}" for k in unfitted)
                                    for name, rms in (("fitted", fitted), (base_label, base)))
 

@@ -450,9 +450,8 @@ def read_geometry(path, *, diameter_in: float | None = None, n_blades: int | Non
         return _own_size(path, _apc_pe0(path, text, name=None, source=""), diameter_in, n_blades, "PE0",
                          "BLADES: ")
     if kind == "qprop":
-        return _own_size(path, _qprop_geometry(path, text, name=None, source="", detected=True), diameter_in, n_blades,
-                         "QPROP",
-                         "Nblades (its second data line): ")
+        return _own_size(path, _qprop_geometry(path, text, name=None, source="", detected=True), diameter_in,
+                         n_blades, "QPROP", "Nblades (its second data line): ")
     if kind == "uiuc":
         prop = _uiuc_geometry(path, text, diameter_in=diameter_in, n_blades=2 if n_blades is None else n_blades,
                               name=None, source="", blades_given=n_blades is not None)  # the file's own errors first
