@@ -1013,7 +1013,7 @@ def test_a_held_out_group_predicted_worse_than_by_the_base_set_is_said(tmp_path,
              zip(d.omega, d.airspeed, d.measured["thrust"], d.measured["torque"], d.group)]
     f = tmp_path / "runs.csv"
     f.write_text("\n".join(rows) + "\n")
-    from propmap.cli.fit import held_out_worse
+    from propmap.cli._load_comparison import held_out_worse
 
     # the rule: 25% and 2% of the largest value worse, on a fitted quantity (the review found 40 of 338
     # leave-one-group-out fits warned without the 2% floor, many under 1-2% of the load)
