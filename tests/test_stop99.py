@@ -1,7 +1,8 @@
 """Stop 99: a catalogue propeller's ``fit loads --holdout`` warns where the fitted set predicts
 the held-out runs 25% or more worse than its base set, as a file's held-out groups are warned of,
 and its JSON keys the base set by its label (UIUC Propeller Data Site vol. 1, Brandt & Selig,
-AIAA 2011-1255)."""
+AIAA 2011-1255); and the defects a user-level audit found in ``trim``, ``trim-vehicle`` and
+``map --check``."""
 
 from __future__ import annotations
 
@@ -66,3 +67,89 @@ def test_a_subset_fit_is_judged_on_its_fitted_quantity_held_out(tmp_path, capsys
     err = capsys.readouterr().err
     assert not [s for s in WARNED.findall(err) if "CP" in s[2]]
     assert "predicts the unfitted torque 25% or more worse" in err
+
+
+# ---- a user-level audit of trim, trim-vehicle and map --check (helper, 2026-12-01) ----
+
+def test_trim_returns_a_collective_where_the_thrust_falls_through_the_target_when_no_rising_one_is_in_range(capsys):
+    """apce_8x6's calibrated set at 5000 rpm in hover is past its stall at collectives of 5-30 deg (fitted at 0 deg:
+    docs/models.md, The calibrated sets do not pin the response to the collective): its thrust falls from 1.65 N to
+    1.47 N there. 1.6 N was refused as one 'no collective in [5, 30] deg makes', while the message's own span held
+    it; the lowest collective that makes it is returned now, its branch said."""
+    import math
+
+    import propmap as pm
+    from propmap.core.trim import FALLING_BRANCH, trim_collective
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    omega = 5000 * math.pi / 30
+    res = trim_collective(prop, p, 1.6, omega, bounds=(math.radians(5), math.radians(30)))
+    assert bool(res.falling) and int(res.n_solutions) == 1
+    c = float(res.collective)
+    assert float(res.loads.thrust) == pytest.approx(1.6, abs=1e-6)
+    # the thrust falls with the collective there: a little more makes less
+    assert float(pm.rotor_loads(prop, p, omega, 0.0, 0.0, collective=c + 0.01).thrust) < 1.6
+    # (regression value, 2026-12-01: 6.9495 deg)
+    assert math.degrees(c) == pytest.approx(6.9495, abs=2e-3)
+    # with the default range the rising branch below the stall is there, and returned as before
+    rising = trim_collective(prop, p, 1.6, omega)
+    assert not bool(rising.falling) and float(rising.collective) < 0
+    # a thrust the range does not reach at all is still refused
+    with pytest.raises(pm.TrimError, match=r"no collective in \[5, 30\] deg makes thrust=1.7 N"):
+        trim_collective(prop, p, 1.7, omega, bounds=(math.radians(5), math.radians(30)))
+    assert main(["trim", "apce_8x6", "--thrust", "1.6", "--rpm", "5000", "--range-deg", "5", "30", "--json"]) == 0
+    out = capsys.readouterr()
+    report = json.loads(out.out)
+    assert report["branch"] == FALLING_BRANCH and report["added_collective_deg"] == pytest.approx(math.degrees(c))
+    assert "the range holds no collective at which the thrust rises through 1.6 N" in out.err
+
+
+def test_a_hover_reference_that_cannot_be_trimmed_is_said_as_such(capsys):
+    """At 8 m/s and 120 deg apce_8x6 makes 2 N at 5385 rpm, but hover at that rate stalls at 1.97 N: the error was
+    said as --thrust's, of a point at 0 m/s the user did not ask for."""
+    assert main(["trim", "apce_8x6", "--thrust", "2", "--airspeed", "8", "--incidence-deg", "120"]) == 0
+    capsys.readouterr()
+    assert main(["trim", "apce_8x6", "--thrust", "2", "--airspeed", "8", "--incidence-deg", "120",
+                 "--hover-reference"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("propmap: error: --hover-reference: the hover at the same rpm and thrust, the reference of "
+                          "dCQ, cannot be trimmed: no collective in [-20, 30] deg makes thrust=2 N")
+    assert "--thrust" not in err
+
+
+@pytest.mark.parametrize("text", ["5,,10", "5,", ",5"])
+def test_trim_vehicle_refuses_a_stray_comma_in_its_airspeeds(capsys, text):
+    assert main(["trim-vehicle", "--vehicle", "quadrotor", "--airspeed", text]) == 2
+    assert f"--airspeed: an empty speed in {text!r} (a stray comma?)" in capsys.readouterr().err
+
+
+def test_trim_asks_whether_an_incidence_is_in_radians(capsys):
+    assert main(["trim", "apce_8x6", "--thrust", "2", "--rpm", "6000", "--airspeed", "10", "--incidence-deg",
+                 "3.14"]) == 0
+    assert "--incidence-deg 3.14: in radians? (3.14 rad is 179.9 deg; the option is in degrees)" in \
+        capsys.readouterr().err
+
+
+@pytest.mark.parametrize("name, factor", [("power", 2.0), ("CT", 1.01), ("CP", 0.99)])
+def test_map_check_refuses_a_stored_power_or_coefficient_its_loads_do_not_give(tmp_path, capsys, name, factor):
+    """A reader of the netCDF file uses power, CT and CP as stored, while the check compared the interpolated loads
+    alone with the model: a map with its power doubled passed it (exit 0)."""
+    import numpy as np
+    import xarray as xr
+
+    import propmap as pm
+    from propmap.maps import build_map, write_map
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    ds = build_map(prop, p, np.linspace(3000, 9000, 4) * np.pi / 30, np.linspace(0, 10, 3),
+                   np.radians(np.linspace(0, 180, 5)), air=p.air, params_label=p.label, n_check=20)
+    good, bad = tmp_path / "good.nc", tmp_path / "bad.nc"
+    write_map(ds, good, sidecar=False)
+    # (a 4 x 3 x 5 grid: its interpolation error passes only a loose threshold)
+    assert main(["map", "--check", str(good), "--check-points", "20", "--max-error-pct", "100"]) == 0
+    edited = xr.open_dataset(good).load()
+    edited[name] = edited[name] * factor
+    edited.to_netcdf(bad)
+    capsys.readouterr()
+    assert main(["map", "--check", str(bad), "--check-points", "20", "--max-error-pct", "100"]) == 2
+    assert f"variable {name} disagrees with the map's loads at a converged node" in capsys.readouterr().err

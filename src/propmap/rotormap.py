@@ -20,7 +20,7 @@ from .core._numbers import SEED_MAX, integer
 from .core._plain import SPINS, plain_float, plain_vector
 from .core.geometry import broadcast_readonly, has_bool, refuse_masked
 from .io.inputs import short_path
-from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, map_loads, map_model
+from .io.mapcheck import CHECK_POINTS_MAX, LOADS, SIDE_LOADS, check_dataset, check_derived, map_loads, map_model
 from .io.mapfile import read_dataset
 from .mapresults import MapLoads, MapWrench
 
@@ -501,13 +501,15 @@ def check_map(ds, n_check: int = 2000, *, seed: int = 0, propeller=None, params=
     ------
     ValueError
         ``n_check`` or ``seed`` out of range; a map that does not record its model (when
-        one is not given) or is malformed (io.mapcheck.check_dataset).
+        one is not given), is malformed (io.mapcheck.check_dataset) or stores a power, CT or
+        CP its loads do not give (io.mapcheck.check_derived).
     """
     from .core.solver import rotor_loads  # here: evaluating a map needs neither the solver nor SciPy
 
     n_check = integer("n_check", n_check, 1, CHECK_POINTS_MAX)
     seed = integer("seed", seed, 0, SEED_MAX)
     check_dataset(ds)
+    check_derived(ds)  # (the stored power, CT, CP: a reader of the file uses them; the interpolation does not)
     if None in (propeller, params, air, discretization):
         model = map_model(ds.attrs)
         prop = propeller or model[0]

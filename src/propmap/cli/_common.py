@@ -117,6 +117,15 @@ def radians_like(value_deg: float) -> bool:
     return value_deg != round(value_deg) and any(abs(value_deg - k * math.pi / 2) < 0.005 for k in (1, 2))
 
 
+def warn_incidence_radians(incidence_deg: float, airspeed: float) -> None:
+    """A warning where ``--incidence-deg`` of a point with an airspeed looks like radians
+    (:func:`radians_like`): 3.14 was taken as 3.14 deg unsaid (a data audit); ``loads`` and,
+    since 2026-12-01, ``trim`` say it."""
+    if airspeed > 0 and radians_like(incidence_deg):
+        warn(f"--incidence-deg {incidence_deg:g}: in radians? ({incidence_deg:g} rad is "
+             f"{math.degrees(incidence_deg):.4g} deg; the option is in degrees)")
+
+
 def load_prop(spec: str, diameter_in: float | None, blades: int | None):
     """The Propeller named by PROP (catalogue name or geometry file), with the file options.
 

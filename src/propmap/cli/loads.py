@@ -11,7 +11,7 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg, check_point, check_section_match,
-                      echo_json, fixed, load_params, radians_like, set_collective_deg, warn, with_prop_options)
+                      echo_json, fixed, load_params, set_collective_deg, warn_incidence_radians, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 # (the --points file's reader, cli/_points.py; its constants re-exported here, where they were)
@@ -214,9 +214,7 @@ def loads(prop, rpm, airspeed, incidence_deg, collective_deg, params_spec, point
     airspeed = 0.0 if airspeed is None else airspeed
     incidence_deg = 0.0 if incidence_deg is None else incidence_deg
     check_point(rpm, airspeed, incidence_deg)
-    if airspeed > 0 and radians_like(incidence_deg):  # (3.14 was taken as 3.14 deg unsaid: a data audit)
-        warn(f"--incidence-deg {incidence_deg:g}: in radians? ({incidence_deg:g} rad is "
-             f"{math.degrees(incidence_deg):.4g} deg; the option is in degrees)")
+    warn_incidence_radians(incidence_deg, airspeed)
     collective_deg = check_collective(collective_deg)
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)

@@ -10,7 +10,7 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, check_point, check_section_match, echo_json,
-                      fixed, load_params, set_collective_deg, with_prop_options)
+                      fixed, load_params, set_collective_deg, warn, warn_incidence_radians, with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from .loads import COLLECTIVE_DEG_MAX, FLAG_MEANINGS, UNITS, _descent_outputs, numeric_keys
 
@@ -52,6 +52,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
 
     solve_rpm = rpm is None
     lo, hi = _check_options(thrust, rpm, airspeed, incidence_deg, range_deg, rpm_range)
+    warn_incidence_radians(incidence_deg, airspeed)
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
@@ -68,7 +69,7 @@ def trim_command(prop, thrust, rpm, airspeed, incidence_deg, range_deg, rpm_rang
     set_deg = set_collective_deg(params)
     out = {"solved_for": "rpm" if solve_rpm else "collective", "rpm": rpm,
            "collective_deg": set_deg + added, "params_collective_deg": set_deg, "added_collective_deg": added,
-           "branch": res.branch,
+           "branch": _branch(res),
            "solutions_seen": int(res.n_solutions), **{k: float(getattr(r, k)) for k in numeric_keys(params)},
            "dCQ_constant_thrust": dcq, "v_i_over_v_h": _finite(d["v_i_over_v_h"]), "lambda2": _finite(d["lambda2"]),
            "state": str(d["state"]), "flags": r.flags()}
@@ -126,16 +127,40 @@ def _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds
             omega = rpm * RPM
             res = trim_collective(propeller, params, thrust, omega, airspeed, beta, air=air, bounds=bounds)
             added = math.degrees(float(res.collective))  # (on top of the set's own collective, within --range-deg)
-        dcq = None
-        if hover_reference:
-            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
-                                                       collective=math.radians(added), air=air, bounds=bounds)
-            dcq = float(d)
     except TrimError as exc:
         raise InputError(f"--thrust: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
+    if _falls(res):
+        warn(f"the range holds no collective at which the thrust rises through {thrust:g} N: the one returned makes it "
+             "where the thrust falls as the collective rises (the set is stalled there; docs/models.md, Collective "
+             "pitch as an input, and trim)")
+    dcq = None
+    if hover_reference:
+        # (its own failure said as the hover reference's: it was said as --thrust's, of a point at 0 m/s the user did
+        # not ask for, and the trim found was lost; a user-level audit, 2026-12-01)
+        try:
+            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
+                                                       collective=math.radians(added), air=air, bounds=bounds)
+        except TrimError as exc:
+            raise InputError(f"--hover-reference: the hover at the same rpm and thrust, the reference of dCQ, cannot "
+                             f"be trimmed: {exc}") from None
+        except SolverError as exc:
+            raise click.ClickException(f"--hover-reference: {exc}") from None
+        dcq = float(d)
     return res, omega, added, dcq
+
+
+def _falls(res) -> bool:
+    """Whether ``res``, a trim's result at one point, is a collective trim's falling branch."""
+    return getattr(res, "falling", None) is not None and bool(res.falling)
+
+
+def _branch(res) -> str:
+    """The branch of ``res`` (a trim's result at one point) in words."""
+    from ..core.trim import FALLING_BRANCH
+
+    return FALLING_BRANCH if _falls(res) else res.branch
 
 
 def _echo_text(propeller, label, air, out: dict, searched: dict, airspeed, incidence_deg, omega) -> None:

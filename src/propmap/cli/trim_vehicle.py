@@ -16,9 +16,13 @@ MAX_SPEEDS = 200
 
 
 def _speeds(text: str) -> list:
-    """--airspeed's comma-separated speeds [m/s]."""
+    """--airspeed's comma-separated speeds [m/s]; an empty item (a stray comma) is refused, as
+    every comma list's is (docs/cli.md; it was dropped until 2026-12-01, a user-level audit)."""
+    items = [v.strip() for v in str(text).split(",")]
+    if "" in items:
+        raise InputError(f"--airspeed: an empty speed in {str(text)[:60]!r} (a stray comma?)")
     try:
-        out = [float(v) for v in str(text).split(",") if v.strip()]
+        out = [float(v) for v in items]
     except ValueError:
         out = []
     if not out or len(out) > MAX_SPEEDS or not all(math.isfinite(v) and 0.0 <= v <= 100.0 for v in out):

@@ -17,7 +17,11 @@ thrust peaks inside the bounds (a stalling set), the peak between the highest no
 neighbours is refined first (:func:`scipy.optimize.elementwise.find_minimum`): where it
 reaches T*, the crossing below it is returned. For a rotor below stall this is the only
 solution; ``n_solutions`` counts the crossings the grid saw (two about a refined peak), so
-that a second (stalled) branch is reported, not hidden.
+that a second (stalled) branch is reported, not hidden. Where the bounds hold no upward
+crossing but the thrust falls through T* (a set stalled across the bounds: the thrust falls as
+the collective rises), the first downward crossing is the lowest collective that makes T*, and
+it is returned, marked in ``TrimResult.falling`` (until 2026-12-01 such a thrust was refused as
+one no collective makes: a user-level audit). :func:`trim_omega` keeps the rising branch only.
 
 :func:`torque_change_at_constant_thrust` gives the descent literature's dCQ: the torque
 coefficient at an operating point minus the one in hover at the same thrust and rotation
@@ -49,6 +53,9 @@ GRID_STEP = math.radians(2.5)
 GRID_NODES_MAX = 10_000
 #: the branch :func:`trim_collective` returns, in words (reported with every result)
 BRANCH = "lowest collective that makes the thrust (the first upward crossing on the grid)"
+#: the branch :func:`trim_collective` returns where the bounds hold no upward crossing, in words
+FALLING_BRANCH = ("lowest collective that makes the thrust, where it falls as the collective rises (no rising "
+                  "crossing in the range: the set stalled there)")
 #: the branch :func:`trim_omega` returns, in words
 OMEGA_BRANCH = "lowest rotation rate that makes the thrust (the first upward crossing on the grid)"
 #: nodes of trim_omega's bracketing grid, spaced geometrically across its bounds
@@ -79,12 +86,17 @@ class TrimResult:
         solution in the bounds; more: a stalled branch as well, not the one returned).
     branch : str
         Which solution is returned, in words (:data:`BRANCH`).
+    falling : ndarray of bool, optional
+        True where the bounds hold no upward crossing and the solution returned is the first
+        downward one: the thrust falls as the collective rises there (a stalled branch;
+        :data:`FALLING_BRANCH`). None: False everywhere.
     """
 
     collective: np.ndarray
     loads: RotorLoads
     n_solutions: np.ndarray
     branch: str = BRANCH
+    falling: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -186,15 +198,18 @@ def _tolerances(T1: np.ndarray, thrust_tol: float | None) -> np.ndarray:
     return np.maximum(tol, THRUST_TOL_FLOOR)
 
 
-def _first_crossing(thrust_at, grid, T1, columns, thrust_tol, *, xatol: float = 0.0, xrtol: float = 0.0):
+def _first_crossing(thrust_at, grid, T1, columns, thrust_tol, *, xatol: float = 0.0, xrtol: float = 0.0,
+                    falling: bool = False):
     """The first upward crossing of T* = ``T1`` along ``grid`` for every point (the rule of the
-    module docstring, for the collective or the rotation rate alike).
+    module docstring, for the collective or the rotation rate alike); with ``falling``, where
+    there is none, the first downward one.
 
     ``thrust_at(x, *cols)`` is the thrust [N] at the variable's values ``x`` (shape (k,) or
     (k, m)) for the points whose ``columns`` (each shape (n,), the other inputs) are ``cols``.
-    Returns ``(x, n_solutions, missing, reach)``: the solution (NaN where missing), the
-    crossings seen, where none is, and (lowest thrust, highest thrust, the variable where it is
-    highest, whether that peak lies inside the grid) per point for messages. Raises
+    Returns ``(x, n_solutions, missing, reach, fell)``: the solution (NaN where missing), the
+    crossings seen, where none is, (lowest thrust, highest thrust, the variable where it is
+    highest, whether that peak lies inside the grid) per point for messages, and where the
+    solution is a downward crossing (``falling``). Raises
     _RefineFailed (its point's index and SciPy's status) where the refinement fails. The
     refinements solve the thrust difference in units of each point's tolerance (:func:`_tolerances`),
     so that one SciPy tolerance holds each point to its own.
@@ -209,8 +224,9 @@ def _first_crossing(thrust_at, grid, T1, columns, thrust_tol, *, xatol: float = 
     exact = Tg == 0
     # (a node that makes the thrust exactly is a solution: a parked rotor's 0 N at every collective counted 0)
     n_solutions = np.maximum(up.sum(axis=1) + down.sum(axis=1), exact.any(axis=1))
-    missing = ~up.any(axis=1) & ~exact.any(axis=1)
-    j = np.where(up.any(axis=1), np.argmax(up, axis=1), 0)
+    fell = falling & ~up.any(axis=1) & ~exact.any(axis=1) & down.any(axis=1)
+    missing = ~up.any(axis=1) & ~exact.any(axis=1) & ~fell
+    j = np.where(up.any(axis=1), np.argmax(up, axis=1), np.where(fell, np.argmax(down, axis=1), 0))
     xl, xr = grid[j], grid[j + 1]
     on_node = exact.any(axis=1) & ~up.any(axis=1)
     # a thrust the grid misses only near the peak of T(x) (a stalling set): the peak between the grid's neighbours of
@@ -248,7 +264,7 @@ def _first_crossing(thrust_at, grid, T1, columns, thrust_tol, *, xatol: float = 
             k = int(np.argmax(~res.success))
             raise _RefineFailed(int(np.flatnonzero(todo)[k]), int(res.status[k]))
         x[todo] = res.x
-    return x, n_solutions, missing, reach
+    return x, n_solutions, missing, reach, fell
 
 
 def trim_collective(
@@ -344,8 +360,8 @@ def trim_collective(
 
     try:
         with flapping_warning_held():  # (the search's trial collectives: the answer's loads below say it)
-            x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (om1, V1, b1), thrust_tol,
-                                                             xatol=1e-10)
+            x, n_solutions, missing, reach, fell = _first_crossing(thrust_at, grid, T1, (om1, V1, b1), thrust_tol,
+                                                                   xatol=1e-10, falling=True)
     except _RefineFailed as exc:
         i = exc.index
         raise TrimError(f"the collective refinement did not converge at operating point {_where(i, shape)}"
@@ -367,7 +383,8 @@ def trim_collective(
     loads = rotor_loads(propeller, params, om1.reshape(shape), V1.reshape(shape), b1.reshape(shape),
                         collective=np.where(ok, x, 0.0).reshape(shape), **kw)
     _nan_where_missing(loads, ok, shape)  # NaN loads where no collective makes the thrust
-    return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape))
+    return TrimResult(collective=x.reshape(shape), loads=loads, n_solutions=n_solutions.reshape(shape),
+                      falling=fell.reshape(shape))
 
 
 def default_omega_bounds(propeller: Propeller, air: Air) -> tuple[float, float]:
@@ -488,8 +505,8 @@ def trim_omega(
     try:
         # the grid's top reaches Mach 0.9 on purpose, and its trial rates may flap: the answer's loads say both below
         with supersonic_tips_allowed(), flapping_warning_held():
-            x, n_solutions, missing, reach = _first_crossing(thrust_at, grid, T1, (V1, b1, c1), thrust_tol,
-                                                             xrtol=1e-12)
+            x, n_solutions, missing, reach, _ = _first_crossing(thrust_at, grid, T1, (V1, b1, c1), thrust_tol,
+                                                                xrtol=1e-12)
     except _RefineFailed as exc:
         i = exc.index
         raise TrimError(f"the rotation-rate refinement did not converge at operating point {_where(i, shape)}"

@@ -41,7 +41,7 @@ from ..core.units import RPM
 from ..core.geometry import short_repr
 
 __all__ = ["DIMS", "LOADS", "SIDE_LOADS", "map_loads", "DERIVED", "FLAGS", "UNITS", "MAX_NODES", "CHECK_POINTS_MAX",
-           "check_propeller", "check_attributes", "check_dataset", "map_model"]
+           "check_propeller", "check_attributes", "check_dataset", "check_derived", "map_model"]
 
 
 DIMS = ("rpm", "airspeed", "incidence_deg")
@@ -218,6 +218,58 @@ def _check_variables(ds) -> np.ndarray:
             raise ValueError(f"variable {k} must lie within +-{LOAD_LIMITS[k]:g} {UNITS[k]}, got {v[i]:.6g} "
                              f"({node}; {int(big.sum())} such nodes)")
     return converged
+
+
+#: how far a stored derived variable (power, CT, CP) may lie from the value of the map's own loads, relative (a map
+#: holds float64; float32 would round to 6e-8)
+DERIVED_RTOL = 1e-6
+
+
+def check_derived(ds) -> None:
+    """The derived variables a map holds agree with its loads at its converged nodes: power with
+    torque x omega, CT and CP with T / (rho n^2 D^4) and P / (rho n^3 D^5) where the map records
+    its air density (build_map writes them so).
+
+    A reader of the file uses them as they are, while the interpolation reads the loads alone;
+    ``map --check`` (:func:`propmap.rotormap.check_map`) runs this, and a map with its power
+    doubled passed it until 2026-12-01 (a user-level audit).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        One propeller's map, valid as :func:`check_dataset` says.
+
+    Raises
+    ------
+    ValueError
+        A derived variable more than DERIVED_RTOL (relative) off at some converged node: the
+        message names it, the node and the number of such nodes.
+    """
+    converged = ds["converged"].transpose(*DIMS).values.astype(bool)
+    omega = (ds["rpm"].values.astype(float) * RPM)[:, None, None]
+    torque = ds["torque"].transpose(*DIMS).values.astype(float)
+    expected = {"power": torque * omega}
+    rho, diameter = ds.attrs.get("rho_kg_m3"), float(np.ravel(ds.attrs["diameter_m"])[0])
+    if rho is not None:
+        n = omega / (2 * math.pi)
+        rho = float(np.ravel(rho)[0])
+        expected["CT"] = ds["thrust"].transpose(*DIMS).values.astype(float) / (rho * n**2 * diameter**4)
+        expected["CP"] = expected["power"] / (rho * n**3 * diameter**5)
+    for k, want in expected.items():
+        if k not in ds:
+            continue
+        have = ds[k].transpose(*DIMS).values.astype(float)
+        with np.errstate(invalid="ignore"):
+            off = converged & ~(np.abs(have - want) <= DERIVED_RTOL * np.abs(want) + 1e-12 * np.nanmax(np.abs(want)))
+        if off.any():
+            i = np.unravel_index(int(np.argmax(off)), off.shape)
+            node = ", ".join(f"{d} {float(ds[d].values[j]):g}" for d, j in zip(DIMS, i))
+            raise ValueError(f"variable {k} disagrees with the map's loads at a converged node ({node}: {have[i]:.6g} "
+                             f"where {LONG_DERIVED[k]} gives {want[i]:.6g}; {int(off.sum())} such nodes)")
+
+
+#: each derived variable's definition, in the words of its error
+LONG_DERIVED = {"power": "torque x omega", "CT": "T / (rho n^2 D^4)", "CP": "P / (rho n^3 D^5)"}
 
 
 def _check_coordinates(ds) -> None:
