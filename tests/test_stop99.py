@@ -153,3 +153,121 @@ def test_map_check_refuses_a_stored_power_or_coefficient_its_loads_do_not_give(t
     capsys.readouterr()
     assert main(["map", "--check", str(bad), "--check-points", "20", "--max-error-pct", "100"]) == 2
     assert f"variable {name} disagrees with the map's loads at a converged node" in capsys.readouterr().err
+
+
+# ---- an audit of the public Python API (helper, 2026-12-01) ----
+
+@pytest.fixture(scope="module")
+def apc():
+    import propmap as pm
+
+    return pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+
+
+@pytest.mark.parametrize("args, kw, match", [
+    ((4.0, "800"), {}, "omega must be a number or an array of numbers, got '800'"),
+    ((4.0, 800.0, "5"), {}, "airspeed must be a number or an array of numbers, got '5'"),
+    ((4.0, 800.0, 5.0, True), {}, "incidence must be a number or an array of numbers, got True"),
+    ((4.0, None), {}, "omega must be a number or an array of numbers, got None"),
+    ((4.0, 800.0), {"bounds": ("-0.3", "0.5")}, r"bounds must be two numbers \[rad\], got \('-0.3', '0.5'\)"),
+])
+def test_trim_collective_refuses_a_text_or_bool_as_a_number(apc, args, kw, match):
+    """'800' ran as 800 rad/s and True as an incidence of 1 rad (np.asarray(a, float)), and None was told 'got nan'."""
+    from propmap.core.trim import trim_collective
+
+    with pytest.raises(ValueError, match=match):
+        trim_collective(*apc, *args, **kw)
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(airspeed="5"), "airspeed must be a number or an array of numbers, got '5'"),
+    (dict(collective="0.1"), "collective must be a number or an array of numbers, got '0.1'"),
+    (dict(collective=True), "collective must be a number or an array of numbers, got True"),
+    (dict(bounds=("1", "900")), r"bounds must be two rotation rates \[rad/s\]"),
+])
+def test_trim_omega_refuses_a_text_or_bool_as_a_number(apc, kw, match):
+    from propmap.core.trim import trim_omega
+
+    with pytest.raises(ValueError, match=match):
+        trim_omega(*apc, 4.0, **kw)
+
+
+@pytest.mark.parametrize("kw, error, match", [
+    (dict(comment=123), TypeError, "comment must be a str, got int"),
+    (dict(coverage={"rpm_min": -5.0}), ValueError, r"coverage.rpm_min must be a finite number in \[0, 1e\+07\]"),
+    (dict(coverage={"n_blades": 2.5}), ValueError, "n_blades must be a whole number"),
+    (dict(coverage={"groups": "abc"}), ValueError, "groups must be a list of texts, got 'abc'"),
+    (dict(coverage={"foo": 1.0}), ValueError, r"unknown key\(s\) foo"),
+    (dict(coverage={"rpm_min": True}), ValueError, "rpm_min must be a number, got True"),
+])
+def test_write_params_refuses_what_read_params_would_refuse(apc, tmp_path, kw, error, match):
+    """A comment of 123 and a coverage rpm_min of -5 were written, and read_params refused the files; groups 'abc'
+    was written as ['a', 'b', 'c'] and an unknown key dropped, without a word."""
+    import propmap as pm
+
+    path = tmp_path / "p.toml"
+    with pytest.raises(error, match=match):
+        pm.write_params(path, apc[1], **kw)
+    assert not path.exists()
+    with pytest.raises(TypeError, match="path must be a file path"):
+        pm.write_params(5, apc[1])
+    # what the fits write is read back as written
+    pm.write_params(path, apc[1], coverage={"rpm_min": 1974.9999999999998, "rpm_max": 6000, "n_blades": 2,
+                                            "groups": ("a", "b"), "data": "x.csv"})
+    assert pm.read_params(path) == apc[1]
+    from propmap.io.params_file import read_coverage
+
+    assert read_coverage(path) == {"rpm_min": 1975.0, "rpm_max": 6000.0, "n_blades": 2, "groups": ("a", "b"),
+                                   "data": "x.csv"}
+
+
+@pytest.mark.parametrize("airspeed", [1e-310, 5e-324, 1e-200])
+def test_the_dynamic_stalls_derivatives_stay_finite_at_a_vanishing_in_plane_airspeed(apc, airspeed):
+    """1/V_b overflowed at subnormal in-plane airspeeds and every derivative came out NaN without a word: below
+    DELAY_VB_FLOOR the derivatives take the delay as none, as at V_b = 0, with the cusp's warning."""
+    import warnings
+
+    import numpy as np
+
+    import propmap as pm
+
+    prop, params = apc
+    p = params.replace(dynamic_stall=1.5)
+    at_rest = pm.rotor_loads(prop, p, 800.0, 0.0, 1.0, derivatives=True)
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        r = pm.rotor_loads(prop, p, 800.0, airspeed, 1.0, derivatives=True)
+    assert any("dynamic_stall" in str(w.message) for w in said)
+    for q in ("thrust", "drag", "torque", "rolling_moment"):
+        for wrt in ("omega", "airspeed", "incidence"):
+            assert r.derivative(q, wrt) == pytest.approx(at_rest.derivative(q, wrt), rel=1e-9, abs=1e-12)
+    w = pm.rotor_wrench(prop, p, [airspeed, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=True)
+    assert all(np.isfinite(v).all() for v in w.jacobian.values())
+
+
+def test_small_api_mendings(apc):
+    """rotor_wrench takes an array of derivative names as rotor_loads does (its truth value was asked); a derivative
+    asked with a list gets the documented ValueError (it met 'unhashable type'); pi + 1e-6, an arccos's rounding, is
+    not asked whether it is in degrees; hover_omega searches up to the solver's limit (it stopped at 51,200 rad/s)."""
+    import numpy as np
+
+    import propmap as pm
+
+    prop, params = apc
+    w = pm.rotor_wrench(prop, params, [3.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0,
+                        derivatives=np.array(["omega", "velocity"]))
+    assert set(w.jacobian) == {(f, x) for f in ("force", "torque") for x in ("omega", "velocity")}
+    assert pm.rotor_wrench(prop, params, [3.0, 0.0, 0.0], [0.0, 0.0, 1.0], 800.0, derivatives=np.array([])) \
+        .jacobian is None
+    r = pm.rotor_loads(prop, params, 800.0, 3.0, 1.0, derivatives=True)
+    with pytest.raises(ValueError, match=r"wrt must be the name of one input or parameter \(a str\), got \['omega'\]"):
+        r.derivative("thrust", ["omega"])
+    with pytest.raises(ValueError, match=r"1e-06 rad beyond pi, as rounding leaves it: clip it to pi") as info:
+        pm.rotor_loads(prop, params, 800.0, 5.0, np.pi + 1e-6)
+    assert "degrees" not in str(info.value)
+    with pytest.warns(pm.TipMachWarning):
+        thrust = float(pm.rotor_loads(prop, params, 75000.0, 0.0, 0.0).thrust)
+    veh = pm.Vehicle(mass=thrust / 9.80665, rotors=[pm.Rotor([0, 0, 0], [0, 0, 1], "ccw", prop)])
+    with pytest.warns(pm.TipMachWarning):
+        omega = pm.hover_omega(veh, params)
+    assert omega == pytest.approx(75000.0, rel=1e-3) and omega > 51200.0  # (the weight's g aside)

@@ -48,6 +48,11 @@ H_UT, H_UP, H_U2, H_TH, H_E, H_UTS, H_C0 = 5, 8, 11, 14, 17, 20, 23
 N_EX = 24
 
 
+#: the blades' in-plane airspeed V_b [m/s] below which the derivatives take the dynamic stall's delay as none, as at
+#: V_b = 0 (the cusp of Gormont's delay, docs/solver.md): its partials divide by V_b, and 1e-310 m/s overflowed them
+#: to NaN without a word (an API audit, 2026-12-01); below it the delay changes the loads by about sqrt(V_b)
+DELAY_VB_FLOOR = 1e-150
+
 @numba.njit(error_model="numpy", fastmath=_FM, forceinline=True)
 def delayed_node(ea, UT, UP, th, sth, cth, sec, dsec, con, kd, vb, sk, ck, sg):
     """One node of the delayed element (node and mirror node) with its partials: returns the

@@ -49,6 +49,10 @@ def _range_error(name: str, value) -> ValueError:
     # (180.0 and -5.0 were told the range alone: a wind-tunnel data audit, 2026-11-30)
     if name == "incidence" and isinstance(value, float) and math.pi < value <= 180.0:
         why = f" (in degrees? {value:g} deg is {math.radians(value):.6g} rad: the incidence is in radians)"
+    # (pi + 1e-6, an arccos's rounding, was asked whether it was in degrees: an API audit, 2026-12-01)
+    if name == "incidence" and isinstance(value, float) and math.pi < value < math.pi * (1 + 1e-3):
+        why = (f" ({value - math.pi:.3g} rad beyond pi, as rounding leaves it: clip it to pi; within "
+               f"{INCIDENCE_SNAP:g} rad it is taken as pi)")
     if name == "airspeed" and isinstance(value, float) and value < 0:
         why = (" (a descent given as a negative airspeed? give its magnitude with incidence pi: the incidence is "
                "the angle between the airspeed and the rotor axis, pi for axial descent)")

@@ -87,8 +87,8 @@ import numba
 import numpy as np
 
 from ._annulus import _FM, CAMBERED, GILL_SINCOS, _atan2, _cambered_annulus, _element_gill_p, _exp_sat, delay_factor
-from ._delayed_sensitivity import (N_EX, add_fixed_root_halves, add_input_halves, delay_partials, delayed_node,
-                                   delayed_rows)
+from ._delayed_sensitivity import (DELAY_VB_FLOOR, N_EX, add_fixed_root_halves, add_input_halves, delay_partials,
+                                   delayed_node, delayed_rows)
 from ._jitcache import CACHE
 from ._momentum_sensitivity import _momentum_derivatives, _rest_slope
 from ._parameter_sensitivity import (N_DSTATE, N_STATE, _cambered_direction, _cambered_state, _parameter_partials,
@@ -405,8 +405,9 @@ def _point(i, Om, V, b, coll, roots, ok, nodes, azim, model, pk, cam, emp, n_in,
         # and u_x's partials in V sin beta, in V cos beta and in v; the Reynolds constants and the momentum side keep
         # V sin beta
         vb, uxs, uxc, uxv = _inplane_partials(kin, vj, vs, vc)
-        # the dynamic stall's factor and the sign of its nodes' pitch rate (as _annulus._residual: none at V_b = 0)
-        kd = delay_factor(pk, om, yj, cy2[j]) if dyn and vb != 0.0 else 0.0
+        # the dynamic stall's factor and the sign of its nodes' pitch rate (as _annulus._residual: none at V_b = 0, nor
+        # below DELAY_VB_FLOOR, where its partials would overflow)
+        kd = delay_factor(pk, om, yj, cy2[j]) if dyn and abs(vb) > DELAY_VB_FLOOR else 0.0
         sg = 1.0 if UP * vb >= 0.0 else -1.0
         # the element and its partials in U_T (-d/du as well, with swirl), U_P (d/dv), the blade angle and the
         # constants' direction, from one evaluation per node

@@ -191,6 +191,8 @@ class RotorLoads:
         """
         if self.jacobian is None:
             raise ValueError("these loads have no derivatives: call rotor_loads(..., derivatives=True)")
+        if not isinstance(wrt, str):  # (a list met a bare 'unhashable type': an API audit, 2026-12-01)
+            raise ValueError(f"wrt must be the name of one input or parameter (a str), got {wrt!r:.60}")
         if quantity == "power":  # P = Q Omega: an MPC's energy cost
             dQ = self.derivative("torque", wrt)
             return np.asarray(self.omega * dQ + (self.torque if wrt == "omega" else 0.0))  # (0-d as the others)

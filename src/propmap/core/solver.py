@@ -198,8 +198,11 @@ def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:
     airspeed, so the loads' slopes across it (the incidence in axial flow, the airspeed from
     rest, the in-plane velocity's at rest) are unbounded; the kernel returns the static
     section's there (docs/solver.md, Dynamic stall)."""
+    from ._delayed_sensitivity import DELAY_VB_FLOOR
+
     none = np.zeros(V.shape, bool)
-    axial = (Vs == 0.0) & (V > 0.0) if "incidence" in wrt else none
+    # (an in-plane airspeed below DELAY_VB_FLOOR is none to the derivatives, core/_sensitivity.py)
+    axial = (np.abs(Vs) <= DELAY_VB_FLOOR) & (V > 0.0) if "incidence" in wrt else none
     # from rest: along a ray with an in-plane part (airspeed), or the in-plane slopes (STILL_AIR)
     rest = (V == 0.0) & ((np.abs(np.sin(b)) > 1e-12) if "airspeed" in wrt else none) | (
         (V == 0.0) if STILL_AIR in wrt else none)

@@ -40,6 +40,7 @@ from ._numbers import real
 from .units import RPM
 from .airfoil import Air, SectionParams
 from .flapping import flapping_warning_held
+from ._inputs import _as_array
 from .geometry import Propeller, broadcast_readonly
 from .solver import (COLLECTIVE_RANGE, DEFAULT_DISCRETIZATION, OMEGA_MAX, Discretization, RotorLoads, model_air,
                      rotor_loads, supersonic_tips_allowed)
@@ -124,13 +125,22 @@ class OmegaTrimResult:
 
 
 def _check_bounds(bounds) -> tuple[float, float]:
-    try:
-        lo, hi = (float(b) for b in bounds)
-    except (TypeError, ValueError):
-        raise ValueError(f"bounds must be two numbers [rad], got {bounds!r}") from None
+    lo, hi = _two_reals(bounds, "bounds must be two numbers [rad]")
     if not (-COLLECTIVE_RANGE <= lo < hi <= COLLECTIVE_RANGE):
         raise ValueError(f"bounds must satisfy -{COLLECTIVE_RANGE:.6g} <= low < high <= {COLLECTIVE_RANGE:.6g} rad, "
                          f"got ({lo!r}, {hi!r})")
+    return lo, hi
+
+
+def _two_reals(bounds, what: str) -> tuple[float, float]:
+    """``bounds`` as two floats, each a real number (:func:`real`: a text or a bool is none; float() read
+    ("-0.3", "0.5") as numbers, an API audit, 2026-12-01); else ValueError(``what``, got ...)."""
+    try:
+        lo, hi = (real(b) for b in bounds)
+    except (TypeError, ValueError):
+        lo = hi = None
+    if lo is None or hi is None:
+        raise ValueError(f"{what}, got {bounds!r:.80}")
     return lo, hi
 
 
@@ -343,9 +353,12 @@ def trim_collective(
                          f"width over 1 to {GRID_NODES_MAX:,} steps), got {grid_step!r}")
     grid_step = step
     T_star, thrust_tol = _checked_thrust(thrust, thrust_tol)
-    # the operating points are checked by rotor_loads; broadcast them with the thrust here
+    # the operating points checked as rotor_loads checks them (np.asarray(a, float) read the text '800' as 800 and
+    # True as 1 rad: an API audit, 2026-12-01), and broadcast with the thrust
+    points = tuple(_as_array(name, a) for name, a in (("omega", omega), ("airspeed", airspeed),
+                                                      ("incidence", incidence)))
     try:
-        T_star, om, V, b = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (omega, airspeed, incidence)))
+        T_star, om, V, b = broadcast_readonly(T_star, *points)
     except ValueError as exc:
         raise ValueError(f"thrust, omega, airspeed and incidence must broadcast together: {exc}") from None
     shape = T_star.shape
@@ -489,9 +502,10 @@ def trim_omega(
     _check_on_missing(on_missing)
     lo, hi = _omega_bounds(bounds, propeller, air)
     T_star, thrust_tol = _checked_thrust(thrust, thrust_tol)
+    points = tuple(_as_array(name, a) for name, a in (("airspeed", airspeed), ("incidence", incidence),
+                                                      ("collective", 0.0 if collective is None else collective)))
     try:
-        T_star, V, b, c = broadcast_readonly(T_star, *(np.asarray(a, float) for a in (
-            airspeed, incidence, 0.0 if collective is None else collective)))
+        T_star, V, b, c = broadcast_readonly(T_star, *points)
     except ValueError as exc:
         raise ValueError(f"thrust, airspeed, incidence and collective must broadcast together: {exc}") from None
     shape = T_star.shape
@@ -528,10 +542,7 @@ def _omega_bounds(bounds, propeller: Propeller, air: Air) -> tuple[float, float]
     unless 0 < low < high <= OMEGA_MAX."""
     if bounds is None:
         bounds = default_omega_bounds(propeller, air)
-    try:
-        lo, hi = (float(b) for b in bounds)
-    except (TypeError, ValueError):
-        raise ValueError(f"bounds must be two rotation rates [rad/s], got {bounds!r}") from None
+    lo, hi = _two_reals(bounds, "bounds must be two rotation rates [rad/s]")
     if not (0 < lo < hi <= OMEGA_MAX):
         raise ValueError(f"bounds must satisfy 0 < low < high <= {OMEGA_MAX:g} rad/s, got ({lo!r}, {hi!r})")
     return lo, hi

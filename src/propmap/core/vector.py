@@ -176,6 +176,8 @@ def rotor_wrench(propeller: Propeller, params: AirfoilParams, velocity, axis, om
     check_model_args(propeller, params, air, discretization)
     if isinstance(derivatives, np.bool_):
         derivatives = bool(derivatives)
+    if isinstance(derivatives, np.ndarray) and derivatives.ndim == 1:  # (names as rotor_loads takes them: its
+        derivatives = derivatives.tolist()  # truth value was asked and failed, an API audit, 2026-12-01)
     if derivatives is True:  # the operating point's inputs, as rotor_loads(derivatives=True)
         derivatives = ("omega", "velocity")
     if derivatives is None or derivatives is False or (isinstance(derivatives, (tuple, list)) and not derivatives):

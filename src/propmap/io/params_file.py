@@ -99,6 +99,7 @@ from pathlib import Path
 
 import tomli_w
 
+from ..core._numbers import real
 from ..core.air import check_air
 from ..core.airfoil import (DESCENT_MODELS, INFLOW_MODELS, LIFT_MODELS, RECORD_META, Air, AirfoilParams,
                              CamberedParams, SectionParams)
@@ -480,6 +481,9 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         ``BodyTable`` (:func:`read_body`'s), ``coverage`` not a dict (each named; they met
         AttributeErrors, a user-level audit, 2026-11-30).
     """
+    path = as_path(path)  # (a path of 5 met a bare 'lstat' TypeError: an API audit, 2026-12-01)
+    if not isinstance(comment, str):  # (123 was written, and read_params refused the file it made)
+        raise TypeError(f"comment must be a str, got {type(comment).__name__}")
     if body is not None and not isinstance(body, BodyTable):
         raise TypeError(f"body must be a BodyTable (propmap.io.params_file.read_body) or None, got "
                         f"{type(body).__name__}")
@@ -496,14 +500,31 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
         if body.rotor_interference is not None:
             data[BODY_TABLE]["rotor_interference"] = float(body.rotor_interference)
     if coverage:
-        # (to 12 digits, for every producer: 1975 rpm, not the 1974.9999999999998 of rad/s and back)
-        data[COVERAGE_TABLE] = {**{k: (int(v) if k == "n_blades" and float(v).is_integer()
-                                       else float(f"{float(v):.12g}"))
-                                   for k, v in coverage.items() if k in COVERAGE_KEYS},
-                                **{k: (str(v) if k in COVERAGE_SINGLE_TEXTS else [str(x) for x in v])
-                                   for k, v in coverage.items() if k in COVERAGE_TEXT_KEYS}}
+        data[COVERAGE_TABLE] = _coverage_table(coverage)
     with atomic_write(path, "wb") as fh:
         tomli_w.dump(data, fh)
+
+
+def _coverage_table(coverage: dict) -> dict:
+    """``write_params``' ``coverage`` as the file's ``[coverage]`` table, checked as
+    :func:`read_params` reads it (params_tables.coverage_from_dict): an unknown key, a number
+    out of range, a text list given as one text are refused here, naming the key (they were
+    dropped, written so that the file could not be read back, or split into characters until
+    2026-12-01: an API audit). Numbers are written to 12 digits, for every producer: 1975 rpm,
+    not the 1974.9999999999998 of rad/s and back."""
+    table = {}
+    for k, v in coverage.items():
+        if k in COVERAGE_TEXT_KEYS and k not in COVERAGE_SINGLE_TEXTS:
+            if isinstance(v, (str, bytes)) or not hasattr(v, "__iter__"):
+                raise ValueError(f"coverage: {k} must be a list of texts, got {v!r:.60}")
+            table[k] = list(v)
+        elif k in COVERAGE_KEYS and real(v) is not None:
+            x = real(v)
+            table[k] = int(x) if k == "n_blades" and x.is_integer() else float(f"{x:.12g}")
+        else:
+            table[k] = v  # (the reader's check below names what is wrong with it)
+    coverage_from_dict({COVERAGE_TABLE: table}, where="coverage")
+    return table
 
 
 def read_body(path) -> BodyTable | None:

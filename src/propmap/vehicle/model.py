@@ -480,12 +480,11 @@ def hover_omega(vehicle: Vehicle, params: SectionParams, *, air: Air | None = No
         return solved[om]
 
     hi = 100.0
-    while lift(hi) < 0:
-        hi *= 2
-        if hi > 1e5:
-            raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than {hi / 2:.4g} rad/s of its "
-                             "rotors (the solver's limit is 1e5): "
-                             "check its mass and propellers")
+    while lift(hi) < 0:  # (doubled up to the solver's limit itself: it stopped at 51,200 rad/s, an API audit)
+        if hi >= OMEGA_MAX:
+            raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N needs more than {OMEGA_MAX:.4g} rad/s of "
+                             "its rotors (the solver's limit): check its mass and propellers")
+        hi = min(2 * hi, OMEGA_MAX)
     lo = 0.1 if hi == 100.0 else hi / 2
     if lift(lo) >= 0:  # (brentq's own message named no input: a user-level audit, 2026-11-28)
         raise ValueError(f"the vehicle's weight {vehicle.weight:.4g} N is carried below {lo:g} rad/s of its rotors, "
