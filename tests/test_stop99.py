@@ -271,3 +271,117 @@ def test_small_api_mendings(apc):
     with pytest.warns(pm.TipMachWarning):
         omega = pm.hover_omega(veh, params)
     assert omega == pytest.approx(75000.0, rel=1e-3) and omega > 51200.0  # (the weight's g aside)
+
+
+# ---- an audit of the fit commands (helper, 2026-12-01) ----
+
+GROUPED = """group,rpm,thrust,torque
+{a},2000,0.5657,0.01255
+a,3000,1.3430,0.02664
+a,4000,2.4253,0.04700
+a,5000,3.9364,0.07327
+b,2500,0.9082,0.01926
+b,3500,1.8457,0.03664
+b,4500,3.1300,0.05946
+c,6000,5.6429,0.10610
+"""
+
+
+def test_fit_loads_holdout_keeps_the_six_point_minimum_and_names_the_groups(tmp_path, capsys):
+    """Holding out a and c left group b's 3 points, and fitted them with exit 0 (a file of 4 points is refused)."""
+    src = tmp_path / "g.csv"
+    src.write_text(GROUPED.format(a="a"))
+    for held, left, n in (("a,c", "b", 3), ("a", "b, c", 4)):
+        assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--holdout", held,
+                     "--out", str(tmp_path / "p.toml")]) == 2
+        assert (f"--holdout: the runs left to fit ({left}) hold {n} distinct operating point(s); a fit needs at "
+                "least 6") in capsys.readouterr().err
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--holdout", "c", "--out",
+                 str(tmp_path / "p.toml")]) == 0
+    assert "held-out (c) rmse: fitted: thrust_rmse" in capsys.readouterr().out  # (the groups named, as a catalogue's)
+
+
+def test_an_empty_group_cell_is_refused(tmp_path, capsys):
+    src = tmp_path / "g.csv"
+    src.write_text(GROUPED.format(a=""))
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--out", str(tmp_path / "p.toml")]) == 2
+    assert "column 'group' is empty at line 2 (1 row(s))" in capsys.readouterr().err
+
+
+STATIC = """RPM,Thrust (gf),Torque (N·mm)
+2000,57.98,12.550
+2500,92.61,19.264
+3000,136.95,26.644
+3500,188.21,36.638
+4000,247.31,46.995
+4500,319.17,59.463
+5000,401.40,73.273
+5500,487.94,88.641
+6000,575.42,106.099
+6500,676.07,125.213
+"""
+
+
+def test_the_flapping_is_not_fitted_to_axial_data(tmp_path, capsys):
+    """Its start, 1 rad/(N m), was written as fitted (interval [-inf, inf]), flapping the set's blades at incidence."""
+    src = tmp_path / "s.csv"
+    src.write_text(STATIC, encoding="utf-8")
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--fit-params", "flap_compliance",
+                 "--out", str(tmp_path / "p.toml")]) == 2
+    assert "flap_compliance cannot be fitted to these data: no point has an in-plane airspeed" in \
+        capsys.readouterr().err
+    assert not (tmp_path / "p.toml").exists()
+
+
+COLLECTIVES = "rpm,collective_deg,thrust,torque\n" + "".join(
+    f"{rpm},{c},{t},{q}\n" for rpm, rows in (
+        (4000, ((-4, 2.07594, 0.035252), (-2, 2.28249, 0.041298), (0, 2.43832, 0.047588), (2, 2.53083, 0.053967),
+                (4, 2.55360, 0.060395), (6, 2.51151, 0.067008))),
+        (6000, ((-4, 4.97294, 0.079468), (-2, 5.39463, 0.092535), (0, 5.68289, 0.105664), (2, 5.81280, 0.118620),
+                (4, 5.77980, 0.131572), (6, 5.61040, 0.145165)))) for c, t, q in rows)
+
+
+def test_a_collective_sweeps_fit_is_not_warned_of_inside_its_collectives(tmp_path, capsys):
+    """The [coverage] table keeps the sweep's collectives (-4 to +6 deg): a run at +6 deg was told the blade was set
+    6 deg off as fitted; beyond them it still is."""
+    from propmap.io.params_file import read_coverage
+
+    src, out = tmp_path / "c.csv", tmp_path / "p.toml"
+    src.write_text(COLLECTIVES)
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--out", str(out)]) == 0
+    cov = read_coverage(out)
+    assert (cov["collective_deg_min"], cov["collective_deg_max"]) == (-4.0, 6.0)
+    capsys.readouterr()
+    for c, warned in (("6", False), ("-4", False), ("0", False), ("10", True), ("-8", True)):
+        assert main(["loads", "apce_10x7", "--params", str(out), "--rpm", "6000", "--collective-deg", c]) == 0
+        assert ("fitted to the blade set at" in capsys.readouterr().err) == warned, c
+
+
+def test_the_demos_parameter_file_says_what_it_was_fitted_to(tmp_path, capsys):
+    """It lacked the data, groups and held-out runs that fit loads writes, so validate could not label its runs."""
+    from propmap.io.params_file import read_coverage
+
+    assert main(["demo", "--out-dir", str(tmp_path / "d")]) == 0
+    cov = read_coverage(tmp_path / "d" / "fitted_params.toml")
+    assert cov["data"] == "apce_8x6" and cov["held_out"] == ("2801rd", "2802rd")
+    assert "static_2797rd" in cov["groups"] and "2801rd" not in cov["groups"]
+    capsys.readouterr()
+    assert main(["validate", "apce_8x6", "--params", str(tmp_path / "d" / "fitted_params.toml")]) == 0
+    assert "in-sample (the fit's residual, not a prediction); held out: 2801rd, 2802rd" in capsys.readouterr().out
+
+
+def test_fit_flight_keeps_the_base_files_airframe(tmp_path, capsys, shared_data):
+    """A --base file's [body] drag was dropped: its z drag area of 0.03 m^2, not fitted by default, was written 0
+    (NeuroBEM flight logs, Bauersfeld et al., RSS 2021)."""
+    import propmap as pm
+    from propmap.io.params_file import read_body
+    from propmap.io.params_tables import BodyTable
+
+    log = shared_data / "neurobem_flights" / "bemnn20210223104803seg2.mat"
+    base = tmp_path / "b.toml"
+    pm.write_params(base, pm.generic_params(), body=BodyTable(pm.BodyDrag([0.01, 0.01, 0.03]), None, None))
+    out = tmp_path / "f.toml"
+    assert main(["fit", "flight", str(log), "--vehicle", "neurobem_quadrotor", "--rate-hz", "2", "--base", str(base),
+                 "--out", str(out)]) == 0
+    assert "its [body] table (airframe drag" in capsys.readouterr().err
+    assert read_body(out).drag.drag_area[2] == pytest.approx(0.03)

@@ -275,20 +275,28 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0,
     if d is None and b is None:
         return
     fitted, blade = cov.get("theta75_deg"), theta75_deg(propeller)
-    if fitted is not None and collective_range is not None:  # (the row nearest the blade as fitted)
-        collective_deg = min(max(fitted - blade, collective_range[0]), collective_range[1])
+    # a collective sweep's data set the blade at fitted + [low, high] (0 to 0 without one; a collective inside its
+    # span was warned of as another blade until 2026-12-01, a user-level audit)
+    span = (cov.get("collective_deg_min", 0.0), cov.get("collective_deg_max", 0.0))
+    if fitted is not None and collective_range is not None:  # (the row nearest the blades as fitted)
+        lo, hi = fitted + span[0] - blade, fitted + span[1] - blade  # (the collectives that set them so)
+        collective_deg = min(max(lo, collective_range[0]), collective_range[1])
+        if collective_deg > hi:
+            collective_deg = max(hi, collective_range[0])
     now = blade + collective_deg
-    if fitted is not None and propeller.same_size(d, b) and abs(now - fitted) > BLADE_ANGLE_TOLERANCE_DEG:
+    nearest = None if fitted is None else min(max(now, fitted + span[0]), fitted + span[1])  # (fitted, no sweep)
+    if fitted is not None and propeller.same_size(d, b) and abs(now - nearest) > BLADE_ANGLE_TOLERANCE_DEG:
         given = " with the collective given" if collective_deg else ""
         if collective_range is not None:
             given = (f" with the points' collective_deg column's {collective_deg:g} deg (the column spans "
                      f"{collective_range[0]:g} to {collective_range[1]:g} deg)")
-        warn(f"{propeller.name} runs with {Path(label).name}, fitted to the blade set at {fitted:.1f} deg at 0.75 R; "
-             f"this one is at {now:.1f} deg there{given}: if it is the same blade, {fitted - now:+.1f} deg of "
+        at = f"{fitted:.1f} deg" if span == (0.0, 0.0) else f"{fitted + span[0]:.1f} to {fitted + span[1]:.1f} deg"
+        warn(f"{propeller.name} runs with {Path(label).name}, fitted to the blade set at {at} at 0.75 R; "
+             f"this one is at {now:.1f} deg there{given}: if it is the same blade, {nearest - now:+.1f} deg of "
              "collective sets it as fitted (--collective-deg of loads and map)")
         return
     if b is not None and propeller.same_size(d, None) and not propeller.same_size(None, b) and (
-            fitted is None or abs(now - fitted) <= BLADE_ANGLE_TOLERANCE_DEG):
+            fitted is None or abs(now - nearest) <= BLADE_ANGLE_TOLERANCE_DEG):
         # (the same blade on another hub: 'no better than the generic set' was said of it, which the hubs of UIUC
         # vol. 2 contradict)
         warn(f"{propeller.name} ({propeller.n_blades} blades) runs with {Path(label).name}, fitted to data of "

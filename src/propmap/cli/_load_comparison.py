@@ -169,7 +169,7 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
                                {k: " " + u for k, u in _LOAD_UNITS.items()})
     if held:
         res.extra["holdout"] = {"holdout": list(held), **rmse(held_mask)}
-        extra = "held-out rmse: " + "; ".join(
+        extra = f"held-out ({', '.join(held)}) rmse: " + "; ".join(
             f"{name}: " + ", ".join(f"{k} " + ("- (no held-out point)" if v is None else
                                                  f"{v:.4g} {_LOAD_UNITS[k.removesuffix('_rmse')]}")
                                     for k, v in res.extra["holdout"][name].items())

@@ -14,6 +14,10 @@ import click
 from ._common import InputError, PropChoice, _short, theta75_deg, warn
 from ._paths import _is_file, refuse_copies
 
+#: the fewest distinct operating points a load fit takes (read_sources' min_points; with fit loads --holdout, of the
+#: runs left to fit)
+MIN_FIT_POINTS = 6
+
 
 def catalogue_citation(spec, *, geometry_only: bool = False) -> str:
     """The citation of the catalogue propeller a PROP/--prop argument names ("" for a file or
@@ -80,7 +84,7 @@ def data_digest(sources, files=None) -> str:
 
 
 def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=None, pole_pairs=None,
-                  min_points: int = 6):
+                  min_points: int = MIN_FIT_POINTS):
     """(data, propeller, catalogue entry or None, label) from the SOURCE arguments (a CSV of at
     least ``min_points`` points: 6 to fit, 1 to compare).
 

@@ -66,11 +66,11 @@ def fit_demo(prop, generic, out_dir: Path):
     # base and prior from the catalogue without PROP's family: nothing of the held-out data leaks
     cambered = fit_loads(train, prop, base=generic, options=FitOptions(population=population(without=PROP)))
     paper = fit_loads(train, prop, base=preset(PAPER), options=FitOptions())
-    from .fit import _coverage
+    from .fit import fitted_coverage
 
-    # with the fitted data's [coverage], as `fit loads` writes it: later uses warn beyond it
+    # with the fitted data's [coverage], as `fit loads` writes it: later uses warn beyond it, validate labels its runs
     write_params(out_dir / "fitted_params.toml", cambered.params, cambered.air,
-                 coverage=_coverage(train, prop, cambered.air),
+                 coverage=fitted_coverage(train, prop, cambered.air, (PROP,), PROP, HOLDOUT),
                  comment=f"propmap {__version__} demo: cambered model fitted to UIUC {PROP}, sweeps "
                          f"{', '.join(HOLDOUT)} held out; source sha256 {source_digest()}")
     cmp_c = holdout_comparison(entry, prop, cambered.params, generic, HOLDOUT)

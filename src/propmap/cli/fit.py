@@ -14,7 +14,7 @@ from ._common import (Command, InputError, PathArg, _short, theta75_deg, check_s
                        parse_names, warn, with_prop_options)
 from ._load_comparison import _catalogue_comparison, _file_comparison
 from ._paths import check_outputs, vehicle_inputs
-from ._sources import catalogue_citation, data_digest, file_air, file_digests, read_sources
+from ._sources import MIN_FIT_POINTS, catalogue_citation, data_digest, file_air, file_digests, read_sources
 
 #: the fit warnings printed (the report has them all)
 MAX_WARNINGS = 3
@@ -127,8 +127,9 @@ def _out_files(out: Path) -> list:
 
 def _coverage(data, prop, air) -> dict:
     """What load data cover, for the written file's [coverage] table: their advance ratios,
-    incidences, rates and airspeeds, the propeller they are of, and their chord Reynolds numbers
-    at 0.75 R in the fit's air (what a run in other air or on another size is checked against)."""
+    incidences, rates and airspeeds, the propeller they are of, their chord Reynolds numbers at
+    0.75 R in the fit's air (what a run in other air or on another size is checked against), and
+    a collective sweep's range of collectives."""
     import numpy as np
 
     n = data.omega / (2 * math.pi)
@@ -137,7 +138,20 @@ def _coverage(data, prop, air) -> dict:
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
             "airspeed_max": float(np.max(data.airspeed)),
-            **_propeller_keys(prop, float(data.omega.min()), float(data.omega.max()), air)}
+            **_propeller_keys(prop, float(data.omega.min()), float(data.omega.max()), air),
+            **({} if data.collective is None else {"collective_deg_min": float(np.degrees(np.min(data.collective))),
+                                                   "collective_deg_max": float(np.degrees(np.max(data.collective)))})}
+
+
+def fitted_coverage(train, prop, air, sources, label: str, held) -> dict:
+    """A load fit's [coverage] table (:func:`_coverage`), with the data fitted (``label``, by
+    content: the SHA-256 of ``sources``, each file's) and the runs or groups it saw and held out,
+    so that ``validate`` can say which of its rows are in-sample: ``fit loads`` and ``demo`` write
+    it (the demo's file lacked the last until 2026-12-01, a user-level audit)."""
+    files = file_digests(sources)  # (each file read once for both digests)
+    return {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources, files),
+            "files_sha256": files, "groups": [str(g) for g in dict.fromkeys(train.group)],
+            "held_out": [str(h) for h in held]}
 
 
 def _propeller_keys(prop, omega_min: float, omega_max: float, air) -> dict:
@@ -354,11 +368,7 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         extra, figure = _catalogue_comparison(res, entry, prop, base, base_label, held, air, label)
     else:
         extra, figure = _file_comparison(res, data, prop, base, base_label, held, air, label)
-    files = file_digests(sources)  # (each file read once for both digests)
-    coverage = {**_coverage(train, prop, air), "data": label, "data_sha256": data_digest(sources, files),
-                "files_sha256": files,
-                "groups": [str(g) for g in dict.fromkeys(train.group)],
-                "held_out": [str(h) for h in held]}  # (which rows of `validate` are in-sample: this data, by content)
+    coverage = fitted_coverage(train, prop, air, sources, label, held)
     cited = entry.citation if entry is not None else catalogue_citation(prop_spec, geometry_only=True)
     if cited:  # (the catalogue's data, or the catalogue geometry under a user's data: cited in the reports)
         res.extra["data_citation"] = cited
@@ -432,6 +442,16 @@ def _held_runs(holdout, data, entry, base_spec, base, base_label: str):
     if held and groups <= set(held):
         raise InputError(f"--holdout: every run of SOURCE is held out ({', '.join(sorted(groups))}); keep at least one "
                          "to fit")
+    if held:  # (the readers' minimum, for the runs left to fit: 3 points were fitted, a user-level audit, 2026-12-01)
+        import numpy as np
+
+        kept = ~np.isin(data.group, held)
+        points = np.column_stack([a[kept] for a in (data.omega, data.airspeed, data.incidence,
+                                                    data.collective if data.collective is not None else data.omega)])
+        distinct = int(np.unique(points, axis=0).shape[0])
+        if distinct < MIN_FIT_POINTS:
+            raise InputError(f"--holdout: the runs left to fit ({', '.join(sorted(groups - set(held)))}) hold "
+                             f"{distinct} distinct operating point(s); a fit needs at least {MIN_FIT_POINTS}")
     return held, population, base, base_label
 
 

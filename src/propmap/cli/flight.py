@@ -188,6 +188,16 @@ def fit_flight_command(log_paths, vehicle, holdout, base_spec, rate_hz, moments,
     if not (math.isfinite(rate_hz) and 0 < rate_hz <= 1e4):
         raise InputError(f"--rate-hz must be in (0, 10000] Hz, got {rate_hz!r}")
     base, air, base_label = load_params(base_spec, option="--base")
+    # (a --base file's [body] table is the airframe to start from and hold where not fitted, as --params' is in wrench;
+    # it was dropped without a word, its z drag written as 0: a user-level audit, 2026-12-01)
+    from ..io.inputs import short_path
+    from ..vehicle.own_set import with_set_body
+
+    veh, body_from = with_set_body(veh, base_spec)
+    if body_from:
+        click.echo(f"propmap: note: --base {short_path(body_from)}: its [body] table (airframe drag, and the centre of "
+                   "mass and rotor interference where it gives them) replaces the vehicle's airframe, the start of "
+                   "the airframe terms fitted and the value of those not", err=True)
     _check_rotor_sets(veh, [base_label] * len(veh.rotors))
     air = resolve_air(air, air_choice)
     refuse_copies(log_paths, "LOG", "its samples would count twice (and a held-out log would train its own fit)")

@@ -177,6 +177,11 @@ def read_loads(path, *, min_points: int = 6, rpm_source: str | None = None, pole
     # a "steps" test: one averaged point per ESC step
     group = (np.array(texts[group_col.lower()], dtype=object) if group_col and group_col.lower() in texts
              else None)
+    if group is not None and n:  # (an empty cell was a group named '', which --holdout could not name: an audit)
+        empty = np.flatnonzero(np.array([not str(g).strip() for g in group]))
+        if empty.size:
+            raise DataError(f"{what}: {p}: column {group_col!r} is empty at line {int(lines[empty[0]])} ({empty.size} "
+                            "row(s)): give every row its group label, or drop the column")
     v, group, lines, n, averaged = _steps_or_points(f, cm, v, group, lines, what, p, notes)
     # the sign rules (docstring, docs/identification.md): the stand's sign turned to the propeller's
     if "thrust" in v and n:

@@ -24,7 +24,10 @@ COVERAGE_KEYS = {"J_max": (0.0, 100.0), "incidence_deg_max": (0.0, 180.0), "rpm_
                  "re75_min": (0.0, 1e9), "re75_max": (0.0, 1e9),
                  # the fitted blade's angle at 0.75 R [deg], the set's own collective not included (since 2026-11-29:
                  # a blade set from UIUC names, nr640_5_20deg's +5 deg, was lost when the file ran the geometry again)
-                 "theta75_deg": (-90.0, 90.0)}
+                 "theta75_deg": (-90.0, 90.0),
+                 # the data's collective column's range [deg], added to the blade (a collective sweep's; since
+                 # 2026-12-01: its fit warned of a collective inside it as another blade angle, a user-level audit)
+                 "collective_deg_min": (-45.0, 45.0), "collective_deg_max": (-45.0, 45.0)}
 #: the [coverage] keys whose lower end is open (a hand-edited diameter_m = 0 silenced the size check: an audit)
 COVERAGE_OPEN_LOW = ("diameter_m", "re75_min", "re75_max")
 #: the [coverage] table's text: the data fitted (a label) and the groups (runs, a CSV's group labels, logs) the fit
@@ -109,7 +112,7 @@ def coverage_from_dict(data: dict, *, where: str = "parameters") -> dict | None:
                              + f" of at most {COVERAGE_TEXT_MAX} characters, got {short_repr(v)}")
         text[k] = v if k in COVERAGE_SINGLE_TEXTS else tuple(v)
     table = {k: v for k, v in table.items() if k not in COVERAGE_TEXT_KEYS}
-    for lo, hi in (("rpm_min", "rpm_max"), ("re75_min", "re75_max")):
+    for lo, hi in (("rpm_min", "rpm_max"), ("re75_min", "re75_max"), ("collective_deg_min", "collective_deg_max")):
         if lo in table and hi in table and table[lo] > table[hi]:
             raise ValueError(f"{where}: [{COVERAGE_TABLE}] {lo} {table[lo]:g} exceeds {hi} {table[hi]:g}")
     return {**{k: (int(v) if k == "n_blades" else float(v)) for k, v in table.items()}, **text}
