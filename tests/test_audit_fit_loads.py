@@ -370,7 +370,8 @@ def test_the_written_reports_keep_every_warning_and_the_terminal_the_first_three
 def test_the_held_out_rmse_of_a_csv_is_over_the_held_out_group(tmp_path):
     """Mutants B23 (the held-out rmse taken over the fitted points) and B33 (the file's coverage without
     its held-out runs): with run b of a stand CSV held out, the base set's thrust and torque rmse in the
-    report are its errors at b's three points [N, N m], and the file records a fitted, b held out."""
+    report are its errors at b's three points [N, N m], and the file records a fitted, b held out (a holds six:
+    a fit needs six distinct points, held-out runs aside, since 2026-12-01)."""
     import json
 
     from click.testing import CliRunner
@@ -379,8 +380,8 @@ def test_the_held_out_rmse_of_a_csv_is_over_the_held_out_group(tmp_path):
     from propmap.io.calibration import generic_params
 
     out = tmp_path / "p.toml"
-    res = CliRunner().invoke(cli, ["fit", "loads", str(_csv(tmp_path)), "--prop", PROP, "--holdout", "b",
-                                   "--out", str(out)])
+    res = CliRunner().invoke(cli, ["fit", "loads", str(_csv(tmp_path, ("a",) * 6 + ("b",) * 3)), "--prop", PROP,
+                                   "--holdout", "b", "--out", str(out)])
     assert res.exit_code == 0, res.output
     report = json.loads((tmp_path / "p.report.json").read_text())
     held = report["extra"]["holdout"] if "extra" in report else report["holdout"]
@@ -388,11 +389,11 @@ def test_the_held_out_rmse_of_a_csv_is_over_the_held_out_group(tmp_path):
     from propmap.io.params_file import read_coverage
 
     cov = read_coverage(out)
-    assert list(cov["groups"]) == ["a"] and list(cov["held_out"]) == ["b"] and cov["rpm_max"] == pytest.approx(5000.0)
-    prop, data = _data(np.linspace(3000.0, 8000.0, 6))
-    r = pm.rotor_loads(prop, generic_params(), data.omega[3:], data.airspeed[3:], 0.0)
+    assert list(cov["groups"]) == ["a"] and list(cov["held_out"]) == ["b"] and cov["rpm_max"] == pytest.approx(6125.0)
+    prop, data = _data(np.linspace(3000.0, 8000.0, 9))
+    r = pm.rotor_loads(prop, generic_params(), data.omega[6:], data.airspeed[6:], 0.0)
     for k, model in (("thrust", r.thrust), ("torque", r.torque)):
-        rmse = float(np.sqrt(np.mean((model - data.measured[k][3:]) ** 2)))
+        rmse = float(np.sqrt(np.mean((model - data.measured[k][6:]) ** 2)))
         assert held["generic"][f"{k}_rmse"] == pytest.approx(rmse, rel=1e-3, abs=1e-6)
         assert rmse > 1e-3 * float(np.max(np.abs(data.measured[k])))  # (the two sets differ there)
 
