@@ -385,3 +385,79 @@ def test_fit_flight_keeps_the_base_files_airframe(tmp_path, capsys, shared_data)
                  "--out", str(out)]) == 0
     assert "its [body] table (airframe drag" in capsys.readouterr().err
     assert read_body(out).drag.drag_area[2] == pytest.approx(0.03)
+
+
+# ---- an audit of the file readers (helper, 2026-12-01) ----
+
+def _copy(shared_data, rel: str, tmp_path, edit) -> str:
+    """``rel`` of ../shared/data copied into ``tmp_path`` under its own name, its lines passed through ``edit``."""
+    src = shared_data / rel
+    out = tmp_path / src.name
+    out.write_text("\n".join(edit(src.read_text().splitlines())) + "\n")
+    return str(out)
+
+
+def test_rows_of_numbers_above_a_uiuc_header_are_refused(shared_data, tmp_path, capsys):
+    """Nine hub stations above the header were skipped as a title (35% less thrust), a sweep's first rows too
+    (UIUC Propeller Data Site vol. 1, Brandt & Selig, AIAA 2011-1255)."""
+    geom = _copy(shared_data, "uiuc_propdb/v1/apce_10x7_geom.txt", tmp_path, lambda ls: [*ls[1:10], ls[0], *ls[10:]])
+    assert main(["loads", geom, "--blades", "2", "--rpm", "5000"]) == 2
+    assert "line 1: a row of numbers above the header line 10 (r/R c/R beta): the header comes first" in \
+        capsys.readouterr().err
+
+
+def test_a_zero_chord_inside_the_blade_is_refused_the_tips_is_not(shared_data, tmp_path, capsys):
+    def zero(at):
+        def edit(lines):
+            k = at % len(lines)
+            parts = lines[k].split()
+            return [*lines[:k], f"{parts[0]} 0.0 {parts[2]}", *lines[k + 1:]]
+        return edit
+
+    inside = _copy(shared_data, "uiuc_propdb/v1/apce_10x7_geom.txt", tmp_path, zero(9))
+    assert main(["loads", inside, "--blades", "2", "--rpm", "5000"]) == 2
+    assert "a chord must be > 0 (>= 0 at the last station, the tip)" in capsys.readouterr().err
+    (tmp_path / "tip").mkdir()
+    tip = _copy(shared_data, "uiuc_propdb/v1/apce_10x7_geom.txt", tmp_path / "tip", zero(-1))
+    assert main(["loads", tip, "--blades", "2", "--rpm", "5000"]) == 0
+
+
+def test_a_pe0_row_of_fourteen_values_is_refused(tmp_path, capsys):
+    """A blank inside a CHORD value shifted TWIST to the thickness ratio's column without a word (APC Propellers'
+    PE0 geometry, v2022-0915)."""
+    from propmap.io.catalogue import _data_path
+
+    src = next(_data_path("apc_pe0").glob("8x6E*.PE0"))
+    lines = src.read_text(errors="replace").splitlines()
+    k = next(i for i, ln in enumerate(lines) if len(ln.split()) == 13 and ln.split()[0][0].isdigit()) + 3
+    parts = lines[k].split()
+    lines[k] = " ".join([parts[0], parts[1][:3], parts[1][3:], *parts[2:]])
+    out = tmp_path / src.name
+    out.write_text("\n".join(lines) + "\n")
+    assert main(["loads", str(out), "--rpm", "5000"]) == 2
+    assert f"line {k + 1}: 14 values where the station table has 13 (a value split by a blank?)" in \
+        capsys.readouterr().err
+
+
+def test_a_sweep_whose_j_falls_is_warned_of(shared_data, tmp_path):
+    from propmap.io.readers import read_uiuc_sweep
+
+    sweep = _copy(shared_data, "uiuc_propdb/v1/apce_10x7_pg0813_5018.txt", tmp_path,
+                  lambda ls: [ls[0], ls[2], ls[1], *ls[3:]])
+    with pytest.warns(UserWarning, match=r"line 3: J falls from .* \(1 such row\(s\)\): .* sort them by J"):
+        read_uiuc_sweep(sweep)
+
+
+def test_a_ulog_cut_by_a_topic_that_stops_says_so_and_a_nan_attitude_is_named(tmp_path, capsys):
+    """ESC telemetry lost after 1 of 4 s cut the log to its first second without a word; a NaN attitude quaternion
+    was said as a NaN velocity (the velocity is turned into body axes with it)."""
+    from .ulog_writer import hover_ulog
+
+    short, bad = tmp_path / "short.ulg", tmp_path / "nan.ulg"
+    hover_ulog(short, n=400, esc_stop=100)
+    hover_ulog(bad, n=400, nan_attitude_at=200)
+    assert main(["wrench", str(short), "--vehicle", "neurobem_quadrotor", "--out", str(tmp_path / "o.csv")]) == 0
+    assert ("300 of 400 vehicle_acceleration samples (3.99 s) lie outside the time every topic covers and are left "
+            "out (esc_status ends at 0.99 s") in capsys.readouterr().err
+    assert main(["wrench", str(bad), "--vehicle", "neurobem_quadrotor", "--out", str(tmp_path / "p.csv")]) == 2
+    assert "sample 201: attitude [nan, nan, nan, nan] is not finite" in capsys.readouterr().err

@@ -84,7 +84,7 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
                n_motors: int = 4, rpm_scale: float = 1.0, n_outputs: int | None = None, q_flip: bool = False,
                nan_derivative_at: int | None = None, outputs: list | None = None, params: dict | None = None,
                changed: list | None = None, second_outputs: list | None = None, velocity_valid=None,
-               esc_empty: bool = False) -> dict:
+               esc_empty: bool = False, esc_stop: int | None = None, nan_attitude_at: int | None = None) -> dict:
     """A ULog of a slow forward flight: constant attitude (yawed 30 deg, pitched 5 deg), north
     velocity 2 m/s, a small roll rate, motors at ``rpm`` (esc_status, or actuator_outputs
     with output = rpm / 10 when ``with_esc`` is False, ``n_outputs`` outputs logged, default
@@ -96,7 +96,9 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
     instance (multi_id 1) with these values, each + 0.01 on every other sample (motors that
     vary; the first instance's do not). ``velocity_valid``: per sample, the estimator's v_xy_valid
     and v_z_valid flags (logged then; an invalid sample's velocity 0). ``esc_empty``: esc_status
-    declared (its format and subscription) without a message. Returns the truth in propmap's frame."""
+    declared (its format and subscription) without a message. ``esc_stop``: esc_status's messages
+    after the first ``esc_stop`` lost (telemetry that stops in flight). ``nan_attitude_at``: that
+    sample's attitude quaternion NaN. Returns the truth in propmap's frame."""
     t = (np.arange(n) / rate_hz * 1e6).astype(np.uint64) + np.uint64(1_000_000)
     yaw, pitch = np.radians(30.0), np.radians(5.0)
     # FRD -> NED: yaw about z (down), then pitch about y
@@ -111,7 +113,8 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
                                        0.0, 0.0) for i, ti in enumerate(t)]),
         "vehicle_attitude": ([("uint64_t", "timestamp"), ("float[4]", "q")],
                              [(int(ti) + (int(5e5 / rate_hz) if q_flip else 0),
-                               *(tuple(-qk for qk in q) if q_flip and i % 2 else q)) for i, ti in enumerate(t)]),
+                               *((math.nan,) * 4 if i == nan_attitude_at else
+                                 tuple(-qk for qk in q) if q_flip and i % 2 else q)) for i, ti in enumerate(t)]),
         "vehicle_local_position": ([("uint64_t", "timestamp"), ("float", "vx"), ("float", "vy"), ("float", "vz")],
                                    [(int(ti), 2.0, 0.0, 0.0) for ti in t]),
     }
@@ -129,7 +132,7 @@ def hover_ulog(path, *, n: int = 200, rate_hz: float = 100.0, rpm: float = 12000
                 esc += [int(ti), int(rpm * rpm_scale) if k < n_motors else 0, 16.0]
             rows.append((int(ti), n_motors, *esc))
         topics["esc_status"] = ([("uint64_t", "timestamp"), ("uint8_t", "esc_count"), ("esc_report[8]", "esc")],
-                                [] if esc_empty else rows)
+                                [] if esc_empty else rows[:esc_stop])
     else:
         n_out = n_motors if n_outputs is None else n_outputs
         if outputs is None:

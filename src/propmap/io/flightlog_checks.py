@@ -119,7 +119,10 @@ def check_log(log: FlightLog, name: str) -> None:
                              f"{units}a log's time is read in seconds, and a flight "
                              f"log sampled below {MIN_RATE_HZ:g} Hz does not resolve the vehicle's motion (its "
                              "angular acceleration is differentiated from the rates)")
-    checks = [("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
+    # (the attitude first: a ULog's velocity is turned into body axes with it, and a NaN quaternion was said as a NaN
+    # velocity, a file audit, 2026-12-01)
+    checks = [("attitude", log.attitude, math.inf, ""),
+              ("angular_velocity", log.angular_velocity, RATE_MAX, "rad/s"),
               ("specific_force", log.specific_force, ACC_MAX, "m/s^2"),
               ("velocity", log.velocity, SPEED_MAX, "m/s"),
               ("rotor_omega", log.rotor_omega, OMEGA_MAX, "rad/s")]

@@ -211,6 +211,11 @@ def _uiuc_table(path: Path, text: str, where: str) -> np.ndarray:
     _check_column(table, 1, "c/R", 0.0, 1.0, path, GeometryFileError)
     _check_column(table, 2, "beta", -90.0, 90.0, path, GeometryFileError, unit="deg")
     data = table.data
+    zero = np.flatnonzero(data[:-1, 1] <= 0.0)
+    if zero.size:  # (as a QPROP file's rule: a chord of 0 inside the blade cut its thrust 8% unsaid, a file audit)
+        i = int(zero[0])
+        raise GeometryFileError(f"{where}, line {int(table.lines[i])}: c/R = {data[i, 1]:g} at r/R = {data[i, 0]:g}: "
+                                "a chord must be > 0 (>= 0 at the last station, the tip)")
     step = np.diff(data[:, 0])
     if np.any(step <= 0):  # (in the file's terms: Propeller would say it in metres, counting from 0)
         i = int(np.argmax(step <= 0)) + 1

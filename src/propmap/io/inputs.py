@@ -361,6 +361,7 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     first = ""
     lines = io.StringIO(text, newline=None)
     k = 0
+    numeric_above = 0  # (the first line of numbers above the header, 0: none)
     for k, ln in enumerate(lines, start=1):
         ln = ln.rstrip("\n")
         if not ln or ln.isspace():
@@ -375,6 +376,13 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
         if len(head) == len(want) and all(h in w for h, w in zip(head, want)):
             start, width = k, len(ln.split())
             break
+        if not numeric_above and _all_numbers(ln.split(), len(expected)):
+            numeric_above = k
+    if start is not None and numeric_above:
+        # (rows above the header were skipped as a title: a geometry's nine hub stations lost, 35% less thrust, and a
+        # sweep's five points, without a word; a UIUC file audit, 2026-12-01)
+        raise error(f"{name}, line {numeric_above}: a row of numbers above the header line {start} "
+                    f"({' '.join(expected)}): the header comes first, then every row")
     if start is None:
         if not first:
             raise error(f"{name}: empty file")
@@ -412,6 +420,18 @@ def _read_table(path: Path, text: str, expected: list[str], error) -> _Table:
     if not rows:
         raise error(f"{name}: no data rows")
     return _Table(np.array(rows, dtype=float), np.array(where), meta)
+
+
+def _all_numbers(parts: list, n: int) -> bool:
+    """Whether ``parts`` holds at least ``n`` fields, each a number (:func:`parse_number`)."""
+    if len(parts) < n:
+        return False
+    try:
+        for x in parts:
+            parse_number(x)
+    except ValueError:
+        return False
+    return True
 
 
 def _check_column(table: _Table, j: int, label: str, lo: float, hi: float, path, error, *,

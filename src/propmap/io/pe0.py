@@ -122,13 +122,17 @@ def _pe0_table(lines, where: str) -> tuple[list, list, int | None]:
                 end = k
                 break
             continue  # the units line under the header
-        if len(vals) >= PE0_COLUMNS:
+        if len(vals) > PE0_COLUMNS:  # (a value split by a blank shifted TWIST to the thickness ratio without a word:
+            # a file audit, 2026-12-01; every PE0 file of the catalogue and ../shared has 13 values a row)
+            raise GeometryFileError(f"{where}, line {k}: {len(vals)} values where the station table has "
+                                    f"{PE0_COLUMNS} (a value split by a blank?)")
+        if len(vals) == PE0_COLUMNS:
             for j, v in enumerate(vals):
                 if not math.isfinite(v):
                     col = header[j][:20] if j < len(header) else "?"
                     raise GeometryFileError(f"{where}, line {k}: column {j + 1} ({col}) is {_clip(parts[j], 40)}, "
                                             "not a finite number")
-            rows.append(vals[:PE0_COLUMNS])
+            rows.append(vals)
             row_lines.append(k)
         elif rows:
             end = k
@@ -183,6 +187,10 @@ def _apc_pe0(path: Path, text: str, *, name, source) -> Propeller:
             i = int(np.argmax(bad))
             raise GeometryFileError(f"{where}, line {row_lines[i]}: {label} = {values[i]:g} in is outside "
                                     f"{'(0' if label == 'STATION' else '[0'}, {radius_in:g}] in (RADIUS)")
+    if np.any(chord[:-1] <= 0):  # (as a QPROP file's rule: a 0 chord inside the blade was read unsaid, a file audit)
+        i = int(np.argmax(chord[:-1] <= 0))
+        raise GeometryFileError(f"{where}, line {row_lines[i]}: CHORD = {chord[i]:g} in at STATION {station[i]:g} in: "
+                                "a chord must be > 0 (>= 0 at the last station, the tip)")
     if np.any(np.diff(station) <= 0):
         i = int(np.argmax(np.diff(station) <= 0)) + 1
         raise GeometryFileError(f"{where}, line {row_lines[i]}: STATION = {station[i]:g} in does not increase "

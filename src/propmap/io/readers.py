@@ -179,6 +179,15 @@ def read_uiuc_sweep(path) -> Sweep:
     _check_column(t, 1, "CT", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     _check_column(t, 2, "CP", -COEFFICIENT_MAX, COEFFICIENT_MAX, path, MeasurementFileError)
     d = t.data
+    back = np.flatnonzero(np.diff(d[:, 0]) < 0)
+    if back.size:  # (every UIUC sweep's J rises; shuffled rows changed a fit's residual correlation, which runs
+        # along the rows, 0.77 -> 0.31, and so its uncertainty, unsaid: a file audit, 2026-12-01)
+        import warnings
+
+        k = int(back[0])
+        warnings.warn(f"{where}, line {int(t.lines[k + 1])}: J falls from {d[k, 0]:g} to {d[k + 1, 0]:g} ({back.size} "
+                      "such row(s)): a sweep's rows are taken in the order measured, J rising (a fit's residual "
+                      "correlation runs along them); sort them by J", stacklevel=2)
     parts = path.stem.split("_")
     item = next(((k, v) for k, v in t.meta.items() if _is_rpm_key(k)), None)
     if item is None:

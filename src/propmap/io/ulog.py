@@ -50,6 +50,9 @@ GAP_S = 1.0
 #: exactly 10 Hz) is warned of (older PX4 releases' default logging profile records esc_status at 4 Hz): interpolated
 #: to the accelerations' timestamps, it misses what changes faster
 SLOW_TOPIC_HZ = 10.0
+#: a log whose topics' common time leaves out more than this fraction of its accelerations says so (a topic that starts
+#: late or ends early: the ESC telemetry lost in flight)
+SPAN_NOTE_FRACTION = 0.05
 
 
 def _out_of_order(t: np.ndarray) -> np.ndarray:
@@ -252,6 +255,19 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
                       (motor_topic, tm)):
         _check_steps(topic, tt, lo, hi, name, gap_steps, said)
     keep = (t >= lo) & (t <= hi)
+    left = int(np.count_nonzero(~keep))
+    if left and t[-1] > t[0] and (lo - t[0]) + (t[-1] - hi) > SPAN_NOTE_FRACTION * (t[-1] - t[0]):
+        # (an ESC telemetry that stopped after a quarter of the log cut it to that quarter without a word: a file
+        # audit, 2026-12-01)
+        ends = {acc_topic: (t[0], t[-1]), "vehicle_angular_velocity": (tw[0], tw[-1]),
+                "vehicle_attitude": (tq[0], tq[-1]), "vehicle_local_position": (tv[0], tv[-1]),
+                motor_topic: (tm[0], tm[-1])}
+        late = [k for k, (a, _) in ends.items() if a == lo and lo > t[0]]
+        early = [k for k, (_, b) in ends.items() if b == hi and hi < t[-1]]
+        why = "; ".join([*(f"{k} starts at {lo - t[0]:.3g} s" for k in late),
+                         *(f"{k} ends at {hi - t[0]:.3g} s" for k in early)])
+        said.append(f"{name}: {left} of {t.size} {acc_topic} samples ({t[-1] - t[0]:.3g} s) lie outside the time "
+                    f"every topic covers and are left out ({why}; times from the log's first {acc_topic} sample)")
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
                     f"{min_samples}")
