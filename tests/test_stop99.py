@@ -457,7 +457,136 @@ def test_a_ulog_cut_by_a_topic_that_stops_says_so_and_a_nan_attitude_is_named(tm
     hover_ulog(short, n=400, esc_stop=100)
     hover_ulog(bad, n=400, nan_attitude_at=200)
     assert main(["wrench", str(short), "--vehicle", "neurobem_quadrotor", "--out", str(tmp_path / "o.csv")]) == 0
-    assert ("300 of 400 vehicle_acceleration samples (3.99 s) lie outside the time every topic covers and are left "
-            "out (esc_status ends at 0.99 s") in capsys.readouterr().err
+    assert ("300 of the log's 400 vehicle_acceleration samples (over 3.99 s) lie outside the time every topic covers "
+            "and are left out (esc_status ends at 0.99 s") in capsys.readouterr().err
     assert main(["wrench", str(bad), "--vehicle", "neurobem_quadrotor", "--out", str(tmp_path / "p.csv")]) == 2
     assert "sample 201: attitude [nan, nan, nan, nan] is not finite" in capsys.readouterr().err
+
+
+
+# ---- a review of the session's change (helper, 2026-12-01): its findings and the mutants that survived ----
+
+def _stand(tmp_path, rows) -> str:
+    """A static stand's CSV of apce_8x6's calibrated loads at (group, rpm) ``rows``."""
+    import math
+
+    import propmap as pm
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    rpm = [r for _, r in rows]
+    r = pm.rotor_loads(prop, p, [x * math.pi / 30 for x in rpm], 0.0, 0.0)
+    path = tmp_path / "stand.csv"
+    path.write_text("group,rpm,thrust,torque\n" + "".join(
+        f"{g},{x:.1f},{t:.6f},{q:.7f}\n" for (g, x), t, q in zip(rows, r.thrust, r.torque)))
+    return str(path)
+
+
+@pytest.mark.parametrize("rows, distinct", [
+    ([("a", 3000 + 500 * k) for k in range(5)] + [("b", 6000), ("b", 7000)], 5),  # five left: refused
+    ([("a", 3000 + 500 * (k % 3)) for k in range(6)] + [("b", 6000), ("b", 7000), ("b", 8000)], 3),  # rows repeated
+])
+def test_holdout_counts_the_distinct_points_left(tmp_path, capsys, rows, distinct):
+    assert main(["fit", "loads", _stand(tmp_path, rows), "--prop", "apce_8x6", "--holdout", "b",
+                 "--out", str(tmp_path / "p.toml")]) == 2
+    assert f"(a) hold {distinct} distinct operating point(s); a fit needs at least 6" in capsys.readouterr().err
+
+
+def test_a_jackknife_fold_without_the_run_at_incidence_keeps_the_flapping(tmp_path, capsys):
+    """Refusing the flapping for data without an in-plane airspeed broke the jackknife, whose folds keep the full
+    fit's names: the fold without the one run at incidence failed. Only --fit-params asks it of such data."""
+    import math
+
+    import numpy as np
+
+    import propmap as pm
+
+    prop, p = pm.load_propeller("apce_10x7"), pm.default_params("apce_10x7")
+    rows = []
+    for g, V, inc in (("s", 0.0, 0.0), ("a", 5.0, 0.0), ("b", 10.0, 0.0), ("e", 5.0, 90.0)):
+        rpm = np.linspace(3000.0, 6000.0, 7)
+        r = pm.rotor_loads(prop, p, rpm * math.pi / 30, V, math.radians(inc))
+        rows += [f"{g},{x:.1f},{V},{inc},{t:.7f},{d:.7f},{q:.8f}\n"
+                 for x, t, d, q in zip(rpm, r.thrust, r.drag, r.torque)]
+    src = tmp_path / "d.csv"
+    src.write_text("group,rpm,airspeed,incidence_deg,thrust,normal force,torque\n" + "".join(rows))
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--jackknife", "--out",
+                 str(tmp_path / "p.toml")]) == 0
+    assert "jackknife: the std error from the 3 fits leaving one run out" in capsys.readouterr().out  # (a, b, e)
+
+
+def test_a_hover_reference_on_the_stalled_branch_is_said(capsys):
+    """The trim's own falling branch was warned of, its hover reference's not."""
+    assert main(["trim", "apce_8x6", "--thrust", "1.55", "--rpm", "5000", "--airspeed", "5", "--incidence-deg", "150",
+                 "--range-deg", "5", "30", "--hover-reference"]) == 0
+    assert "--hover-reference: hover at 5000 rpm makes 1.55 N only where the thrust falls" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("factor", [1 + 1e-5, 1 - 1e-5])
+def test_map_check_holds_the_derived_values_to_a_millionth(tmp_path, capsys, factor):
+    import numpy as np
+    import xarray as xr
+
+    import propmap as pm
+    from propmap.maps import build_map, write_map
+
+    prop, p = pm.load_propeller("apce_8x6"), pm.default_params("apce_8x6")
+    ds = build_map(prop, p, np.linspace(3000, 9000, 4) * np.pi / 30, np.linspace(0, 10, 3),
+                   np.radians(np.linspace(0, 180, 5)), air=p.air, params_label=p.label, n_check=5)
+    good, bad = tmp_path / "good.nc", tmp_path / "bad.nc"
+    write_map(ds, good, sidecar=False)
+    edited = xr.open_dataset(good).load()
+    edited["CT"] = edited["CT"] * factor
+    edited.to_netcdf(bad)
+    assert main(["map", "--check", str(bad), "--check-points", "5", "--max-error-pct", "100"]) == 2
+    assert "variable CT disagrees" in capsys.readouterr().err
+
+
+def test_the_collective_said_is_the_one_that_sets_the_blade_as_fitted(tmp_path, capsys):
+    src, out = tmp_path / "c.csv", tmp_path / "p.toml"
+    src.write_text(COLLECTIVES)
+    assert main(["fit", "loads", str(src), "--prop", "apce_10x7", "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["loads", "apce_10x7", "--params", str(out), "--rpm", "6000", "--collective-deg", "10"]) == 0
+    assert "-4.0 deg of collective sets it as fitted" in capsys.readouterr().err  # (to the sweep's +6 deg)
+
+
+def test_a_pe0_zero_chord_inside_the_blade_is_refused(tmp_path, capsys):
+    from propmap.io.catalogue import _data_path
+
+    src = next(_data_path("apc_pe0").glob("8x6E*.PE0"))
+    lines = src.read_text(errors="replace").splitlines()
+    k = next(i for i, ln in enumerate(lines) if len(ln.split()) == 13 and ln.split()[0][0].isdigit()) + 3
+    parts = lines[k].split()
+    lines[k] = " ".join([parts[0], "0.0000", *parts[2:]])
+    out = tmp_path / src.name
+    out.write_text("\n".join(lines) + "\n")
+    assert main(["loads", str(out), "--rpm", "5000"]) == 2
+    assert f"line {k + 1}: CHORD = 0 in at STATION" in capsys.readouterr().err
+
+
+def test_coverage_is_written_so_that_it_reads_back(tmp_path):
+    """A J_max beyond the table's 100 (a row at 40 rpm and 20 m/s: 118) failed the fit at its end; a Path and group
+    labels that are numbers are written as their text, as before the write-time check."""
+    from pathlib import Path
+
+    import propmap as pm
+    from propmap.cli._coverage import j_max
+    from propmap.io.params_file import read_coverage
+
+    assert j_max(20.0, 40 / 60, 0.254) == 100.0 and j_max([5.0, -3.0], [50.0, 50.0], 0.254) == pytest.approx(
+        5.0 / (50 * 0.254)) and j_max(-3.0, 50.0, 0.254) == 0.0 and j_max(3.0, 0.0, 0.254) == 100.0
+    path = tmp_path / "p.toml"
+    pm.write_params(path, pm.generic_params(), coverage={"data": Path("x.csv"), "groups": [1, 2], "J_max": 100.0})
+    assert read_coverage(path) == {"data": "x.csv", "groups": ("1", "2"), "J_max": 100.0}
+
+
+def test_the_dynamic_stall_cusp_is_warned_of_below_the_floor_too(apc):
+    import warnings
+
+    import propmap as pm
+
+    prop, params = apc
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        pm.rotor_loads(prop, params.replace(dynamic_stall=1.5), 800.0, 1e-200, 1.0, derivatives=("airspeed",))
+    assert any("dynamic_stall: 1 point(s) have no in-plane airspeed" in str(w.message) for w in said)

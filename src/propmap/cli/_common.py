@@ -279,10 +279,8 @@ def _check_fitted_propeller(propeller, label: str, collective_deg: float = 0.0,
     # span was warned of as another blade until 2026-12-01, a user-level audit)
     span = (cov.get("collective_deg_min", 0.0), cov.get("collective_deg_max", 0.0))
     if fitted is not None and collective_range is not None:  # (the row nearest the blades as fitted)
-        lo, hi = fitted + span[0] - blade, fitted + span[1] - blade  # (the collectives that set them so)
-        collective_deg = min(max(lo, collective_range[0]), collective_range[1])
-        if collective_deg > hi:
-            collective_deg = max(hi, collective_range[0])
+        # (of the column's range, the collective nearest those that set them so, fitted - blade + span)
+        collective_deg = min(max(fitted + span[0] - blade, collective_range[0]), collective_range[1])
     now = blade + collective_deg
     nearest = None if fitted is None else min(max(now, fitted + span[0]), fitted + span[1])  # (fitted, no sweep)
     if fitted is not None and propeller.same_size(d, b) and abs(now - nearest) > BLADE_ANGLE_TOLERANCE_DEG:

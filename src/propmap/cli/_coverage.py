@@ -7,7 +7,7 @@ from __future__ import annotations
 from ..io.coverage import J_SLACK, RATE_SLACK, airspeed_beyond, coverage_warnings, envelope_extremes
 from ._common import warn
 
-__all__ = ["coverage_messages", "envelope_extremes", "airspeed_beyond", "J_SLACK", "RATE_SLACK"]
+__all__ = ["coverage_messages", "envelope_extremes", "airspeed_beyond", "J_SLACK", "RATE_SLACK", "j_max"]
 
 
 def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, airspeed=None) -> None:
@@ -30,3 +30,18 @@ def coverage_messages(prop, label, air, tip_speed, J, incidence_deg, rpm=None, a
     """
     for line in coverage_warnings(prop, label, air, tip_speed, J, incidence_deg, rpm=rpm, airspeed=airspeed):
         warn(line)
+
+
+def j_max(axial_speed, n, diameter) -> float:
+    """A fit's [coverage] ``J_max``: the largest climb advance ratio V cos(beta) / (n D) of its
+    data (arrays that broadcast; [m/s], [rev/s], [m]), 0 for data all in descent, and at most the
+    table's bound (io/params_tables.COVERAGE_KEYS: a row at 40 rpm and 20 m/s gave 118, and the
+    file a fit wrote could not be read back; a review, 2026-12-01)."""
+    import numpy as np
+
+    from ..io.params_tables import COVERAGE_KEYS
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        J = np.asarray(axial_speed) / (np.asarray(n) * np.asarray(diameter))
+    top = COVERAGE_KEYS["J_max"][1]
+    return min(max(0.0, float(np.nanmax(J, initial=0.0))), top)

@@ -12,6 +12,7 @@ import click
 from ._air import resolve_air, with_air_options
 from ._common import (Command, InputError, PathArg, _short, theta75_deg, check_section_match, load_params, option_group,
                        parse_names, warn, with_prop_options)
+from ._coverage import j_max
 from ._load_comparison import _catalogue_comparison, _file_comparison
 from ._paths import check_outputs, vehicle_inputs
 from ._sources import MIN_FIT_POINTS, catalogue_citation, data_digest, file_air, file_digests, read_sources
@@ -134,7 +135,7 @@ def _coverage(data, prop, air) -> dict:
 
     n = data.omega / (2 * math.pi)
     # (the largest climb advance ratio; 0 for data all in descent, whose V cos(incidence) is negative)
-    return {"J_max": max(0.0, float(np.max(data.airspeed * np.cos(data.incidence) / (n * prop.diameter)))),
+    return {"J_max": j_max(data.airspeed * np.cos(data.incidence), n, prop.diameter),
             "incidence_deg_max": float(np.degrees(np.max(data.incidence))),
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
             "airspeed_max": float(np.max(data.airspeed)),
@@ -274,7 +275,7 @@ def level_flight(data, vehicle, body_lift, base_spec, out, as_json, fit_choice, 
     V_axial = d.airspeed[:, None] * np.cos(forces["beta"])
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
     moving = d.airspeed > 0.3  # (a hover row's incidence names no flow)
-    coverage = {"J_max": max(0.0, float(np.max(V_axial / (n * D)))),
+    coverage = {"J_max": j_max(V_axial, n, D),
                 "incidence_deg_max": float(np.degrees(np.max(forces["beta"][moving]))) if moving.any() else 0.0,
                 "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60),
                 "airspeed_max": float(np.max(d.airspeed)),
@@ -353,6 +354,13 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         data_warnings += _sanity_warnings(data, prop, air, qty, pole_pairs, skip_sanity_check)
     held, population, base, base_label = _held_runs(holdout, data, entry, base_spec, base, base_label)
     train = data.subset(~np.isin(data.group, held))
+    if "flap_compliance" in (parse_names("--fit-params", fit_choice.fit_params) or ()) and not train.inplane.any():
+        # (asked of axial data, the compliance stayed at its start, 1 rad/(N m), written as fitted and flapping the
+        # set's blades wherever it ran at incidence: a user-level audit, 2026-12-01; a jackknife's fold without the
+        # run at incidence keeps it as the full fit frees it)
+        raise InputError("--fit-params: flap_compliance cannot be fitted to these data: no point has an in-plane "
+                         "airspeed (V |sin beta| above 0.3 m/s), where the blades flap; in axial flow no load "
+                         "depends on it")
     if directions:
         _check_directions(base, base_label, fit_choice)
     options = replace(_options(fit_choice, base, base_label),

@@ -10,7 +10,7 @@ import click
 from ._air import air_label, air_record, resolve_air, with_air_options
 
 from ._common import Command, InputError, PathArg, load_params, parse_names
-from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond
+from ._coverage import J_SLACK, RATE_SLACK, airspeed_beyond, j_max
 from ._flight_report import (NEUROBEM_REFERENCE, _reference_mass_note, _reference_rows, _report_lines, _scores, _table,
                              band_line)
 from ._paths import check_outputs, refuse_copies, vehicle_inputs
@@ -370,7 +370,7 @@ def _flight_coverage(logs, veh, air) -> dict:
     D = np.array([r.propeller.diameter for r in veh.rotors])[None, :]
     # (the incidence of samples whose airspeed exceeds 1% of the tip speed, as _coverage.envelope_extremes reads it)
     moving = speed > 0.01 * s.rotor_omega * D / 2
-    return {"J_max": max(0.0, float(np.max(axial / (n * D)))),
+    return {"J_max": j_max(axial, n, D),
             "incidence_deg_max": float(np.degrees(np.max(inc[moving]))) if moving.any() else 0.0,
             "rpm_min": float(np.min(n) * 60), "rpm_max": float(np.max(n) * 60), "airspeed_max": float(np.max(speed)),
             **_vehicle_propeller(veh, float(np.min(s.rotor_omega)), float(np.max(s.rotor_omega)), air)}

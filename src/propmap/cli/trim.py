@@ -140,14 +140,17 @@ def _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds
         # (its own failure said as the hover reference's: it was said as --thrust's, of a point at 0 m/s the user did
         # not ask for, and the trim found was lost; a user-level audit, 2026-12-01)
         try:
-            d, _, _ = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
-                                                       collective=math.radians(added), air=air, bounds=bounds)
+            d, _, hover = torque_change_at_constant_thrust(propeller, params, omega, airspeed, beta,
+                                                           collective=math.radians(added), air=air, bounds=bounds)
         except TrimError as exc:
             raise InputError(f"--hover-reference: the hover at the same rpm and thrust, the reference of dCQ, cannot "
                              f"be trimmed: {exc}") from None
         except SolverError as exc:
             raise click.ClickException(f"--hover-reference: {exc}") from None
         dcq = float(d)
+        if _falls(hover):  # (said, as the trim's own: a review, 2026-12-01)
+            warn(f"--hover-reference: hover at {omega / RPM:.6g} rpm makes {thrust:g} N only where the thrust falls as "
+                 "the collective rises (the set stalled there): dCQ is taken against that stalled hover")
     return res, omega, added, dcq
 
 

@@ -20,7 +20,8 @@ def _speeds(text: str) -> list:
     every comma list's is (docs/cli.md; it was dropped until 2026-12-01, a user-level audit)."""
     items = [v.strip() for v in str(text).split(",")]
     if "" in items:
-        raise InputError(f"--airspeed: an empty speed in {str(text)[:60]!r} (a stray comma?)")
+        raise InputError(f"--airspeed: an empty speed in {str(text)[:60]!r}" + (" (a stray comma?)" if "," in str(text)
+                                                                                else ": give 1 or more speeds"))
     try:
         out = [float(v) for v in items]
     except ValueError:

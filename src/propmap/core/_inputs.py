@@ -50,7 +50,7 @@ def _range_error(name: str, value) -> ValueError:
     if name == "incidence" and isinstance(value, float) and math.pi < value <= 180.0:
         why = f" (in degrees? {value:g} deg is {math.radians(value):.6g} rad: the incidence is in radians)"
     # (pi + 1e-6, an arccos's rounding, was asked whether it was in degrees: an API audit, 2026-12-01)
-    if name == "incidence" and isinstance(value, float) and math.pi < value < math.pi * (1 + 1e-3):
+    if name == "incidence" and isinstance(value, float) and math.pi < value < math.pi + 1e-5:
         why = (f" ({value - math.pi:.3g} rad beyond pi, as rounding leaves it: clip it to pi; within "
                f"{INCIDENCE_SNAP:g} rad it is taken as pi)")
     if name == "airspeed" and isinstance(value, float) and value < 0:

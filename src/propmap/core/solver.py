@@ -204,8 +204,8 @@ def _warn_dynamic_stall_cusp(V, Vs, b, wrt) -> None:
     # (an in-plane airspeed below DELAY_VB_FLOOR is none to the derivatives, core/_sensitivity.py)
     axial = (np.abs(Vs) <= DELAY_VB_FLOOR) & (V > 0.0) if "incidence" in wrt else none
     # from rest: along a ray with an in-plane part (airspeed), or the in-plane slopes (STILL_AIR)
-    rest = (V == 0.0) & ((np.abs(np.sin(b)) > 1e-12) if "airspeed" in wrt else none) | (
-        (V == 0.0) if STILL_AIR in wrt else none)
+    rest = (V <= DELAY_VB_FLOOR) & ((np.abs(np.sin(b)) > 1e-12) if "airspeed" in wrt else none) | (
+        (V <= DELAY_VB_FLOOR) if STILL_AIR in wrt else none)
     n = int(np.count_nonzero(axial | rest))
     if n:
         warnings.warn(f"dynamic_stall: {n} point(s) have no in-plane airspeed (axial flow or rest), where the loads "

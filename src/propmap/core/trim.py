@@ -604,7 +604,9 @@ def torque_change_at_constant_thrust(
     Returns
     -------
     (dCQ, loads, hover) : (ndarray, RotorLoads, TrimResult)
-        dCQ of the broadcast shape, the loads at the operating point and the hover trim.
+        dCQ of the broadcast shape, the loads at the operating point and the hover trim (its
+        ``falling`` set where hover makes the thrust only where it falls as the collective
+        rises, the stalled branch: :func:`trim_collective`'s rule).
 
     Raises
     ------

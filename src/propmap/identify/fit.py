@@ -351,11 +351,6 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
         names = (*names, *(n for n in INPLANE_FIT if n not in names))
         if base.flap_compliance == 0.0:  # rigid blades: the loads are quadratic in the compliance, flat there
             base = base.replace(flap_compliance=FLAP_START)
-    if "flap_compliance" in names and not data.inplane.any():
-        # (fitted to axial data, the compliance stayed at its start, 1 rad/(N m), written as fitted and flapping the
-        # set's blades wherever it was used at incidence: a user-level audit, 2026-12-01)
-        raise ValueError("flap_compliance cannot be fitted to these data: no point has an in-plane airspeed (V |sin "
-                         "beta| above 0.3 m/s), where the blades flap; in axial flow no load depends on it")
     k_dirs = _direction_count(options, base, data, kind, names)
     free = len(names) if k_dirs == 0 else (k_dirs or 1)  # (a fit along directions frees k_dirs, at least 1)
     if sum(int(m.sum()) for m in _fitted_rows(data, keys).values()) <= free:

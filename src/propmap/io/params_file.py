@@ -479,7 +479,11 @@ def write_params(path, params: SectionParams, air: Air | None = None, *, comment
     TypeError
         ``params`` not a parameter set, ``air`` not an :class:`Air`, ``body`` not a
         ``BodyTable`` (:func:`read_body`'s), ``coverage`` not a dict (each named; they met
-        AttributeErrors, a user-level audit, 2026-11-30).
+        AttributeErrors, a user-level audit, 2026-11-30), ``comment`` not a str, ``path``
+        not a path.
+    ValueError
+        A ``coverage`` that :func:`read_params` would refuse (an unknown key, a value out of
+        its range, a list of texts given as one text), named; nothing is written.
     """
     path = as_path(path)  # (a path of 5 met a bare 'lstat' TypeError: an API audit, 2026-12-01)
     if not isinstance(comment, str):  # (123 was written, and read_params refused the file it made)
@@ -517,7 +521,9 @@ def _coverage_table(coverage: dict) -> dict:
         if k in COVERAGE_TEXT_KEYS and k not in COVERAGE_SINGLE_TEXTS:
             if isinstance(v, (str, bytes)) or not hasattr(v, "__iter__"):
                 raise ValueError(f"coverage: {k} must be a list of texts, got {v!r:.60}")
-            table[k] = list(v)
+            table[k] = [str(x) for x in v]  # (a group label of 1, a Path: their text, as before)
+        elif k in COVERAGE_SINGLE_TEXTS and isinstance(v, (str, os.PathLike)):
+            table[k] = str(v)
         elif k in COVERAGE_KEYS and real(v) is not None:
             x = real(v)
             table[k] = int(x) if k == "n_blades" and x.is_integer() else float(f"{x:.12g}")

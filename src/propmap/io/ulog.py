@@ -266,8 +266,9 @@ def read_ulog(raw: bytes, name: str, motor_map, n_motors: int | None = None, *, 
         early = [k for k, (_, b) in ends.items() if b == hi and hi < t[-1]]
         why = "; ".join([*(f"{k} starts at {lo - t[0]:.3g} s" for k in late),
                          *(f"{k} ends at {hi - t[0]:.3g} s" for k in early)])
-        said.append(f"{name}: {left} of {t.size} {acc_topic} samples ({t[-1] - t[0]:.3g} s) lie outside the time "
-                    f"every topic covers and are left out ({why}; times from the log's first {acc_topic} sample)")
+        said.append(f"{name}: {left} of the log's {t.size} {acc_topic} samples (over {t[-1] - t[0]:.3g} s) lie outside "
+                    f"the time every topic covers and are left out ({why}; times from the log's first {acc_topic} "
+                    "sample)")
     if keep.sum() < min_samples:
         raise error(f"{name}: the topics overlap on {keep.sum()} sample(s) of {acc_topic}; need at least "
                     f"{min_samples}")
