@@ -354,7 +354,8 @@ def loads(sources, holdout, quantities, prop_spec, prop_choice, base_spec, rpm_s
         data_warnings += _sanity_warnings(data, prop, air, qty, pole_pairs, skip_sanity_check)
     held, population, base, base_label = _held_runs(holdout, data, entry, base_spec, base, base_label)
     train = data.subset(~np.isin(data.group, held))
-    if "flap_compliance" in (parse_names("--fit-params", fit_choice.fit_params) or ()) and not train.inplane.any():
+    asked = parse_names("--fit-params", fit_choice.fit_params, what="parameter name") or ()
+    if "flap_compliance" in asked and not train.inplane.any():
         # (asked of axial data, the compliance stayed at its start, 1 rad/(N m), written as fitted and flapping the
         # set's blades wherever it ran at incidence: a user-level audit, 2026-12-01; a jackknife's fold without the
         # run at incidence keeps it as the full fit frees it)
