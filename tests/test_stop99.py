@@ -590,3 +590,14 @@ def test_the_dynamic_stall_cusp_is_warned_of_below_the_floor_too(apc):
         warnings.simplefilter("always")
         pm.rotor_loads(prop, params.replace(dynamic_stall=1.5), 800.0, 1e-200, 1.0, derivatives=("airspeed",))
     assert any("dynamic_stall: 1 point(s) have no in-plane airspeed" in str(w.message) for w in said)
+
+
+def test_a_points_files_empty_rows_are_said_and_its_warnings_come_first(tmp_path, capsys):
+    """Rows of empty cells (',,,', a spreadsheet's cleared row) were skipped without a word, so the output's rows were
+    no longer the input's; the file's own warnings came after the closing line (a points-file audit, helper)."""
+    src = tmp_path / "p.csv"
+    src.write_text("rpm,airspeed,incidence_deg,x\n50,0,0,1\n,,,\n,,,\n6000,0,0,2\n")
+    assert main(["loads", "apce_8x6", "--points", str(src), "--out", str(tmp_path / "o.csv")]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert "2 empty row(s) skipped (blank, or every cell empty; the first at line 3): the output has no row" in err[1]
+    assert "rpm as low as 50, below 100 rpm" in err[0] and err[-1].startswith("wrote 2 points to")

@@ -183,7 +183,7 @@ def _parse_error(path: Path, exc: Exception, sep: str, width: int) -> InputError
     return InputError(f"--points: {path}: cannot parse ({str(exc).splitlines()[0][:200]})")
 
 
-def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
+def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0, skipped: list | None = None):
     """Chunks of the points CSV: the cells as text, and rpm, airspeed, incidence_deg (and
     collective_deg where the file has it) as checked floats.
 
@@ -216,6 +216,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0):
                 line += len(df)
                 blank = (df == "").all(axis=1).to_numpy()
                 if blank.any():
+                    if skipped is not None:  # (the caller says them: a row of empty cells, ',,,', left no output row)
+                        skipped.extend(int(k) for k in lines[blank])
                     df, lines = df[~blank], lines[~blank]
                 if len(df) == 0:
                     continue

@@ -11,7 +11,8 @@ import click
 from ..core.units import RPM
 from ._air import air_label, air_record, resolve_air, with_air_options
 from ._common import (PARAMS_HELP, RPM_MAX, RPM_MIN, Command, InputError, PathArg, check_point, check_section_match,
-                      echo_json, fixed, load_params, set_collective_deg, warn_incidence_radians, with_prop_options)
+                      echo_json, fixed, load_params, set_collective_deg, warn, warn_incidence_radians,
+                      with_prop_options)
 from ._coverage import coverage_messages, envelope_extremes
 from ._paths import check_outputs
 # (the --points file's reader, cli/_points.py; its constants re-exported here, where they were)
@@ -323,8 +324,6 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
                                                               float, tuple[float, float] | None]:
     """(points, extremes, rpm range, largest airspeed, the collective column's range [deg] or None) of a points
     file, every value checked (InputError on the first bad one)."""
-    import warnings
-
     import numpy as np
 
     from ..identify.load_data import STATIC_AIRSPEED, radians_hint
@@ -333,7 +332,8 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
     collectives = None
     seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
     bare = False  # the incidence under its bare name incidence_deg (taken first), no unit stated in the header
-    for df, _, values in _chunks(path, CHUNK, offset_deg):
+    skipped = []  # the lines of empty rows (blank, or cells all empty: a spreadsheet's cleared row)
+    for df, _, values in _chunks(path, CHUNK, offset_deg, skipped):
         bare = any(str(c).strip().lower() == "incidence_deg" for c in df.columns)
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
         ext = tuple(max(a, b) for a, b in zip(ext, e))
@@ -350,10 +350,13 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
             seen += [inc.max(), *inc[np.abs(inc - np.round(inc)) > 1e-6][:1], inc[int(np.argmax(far))]]
     # a unit stated in the header is believed (incidence (deg), Incidence (°)); the bare incidence_deg is checked
     hint = radians_hint(seen, np.full(len(seen), np.inf)) if bare else None
+    # (said at once, before the work and its closing line: they came after it, a points-file audit, 2026-12-01)
     if hint:
-        warnings.warn(f"--points: {path}: {hint}", stacklevel=2)
+        warn(f"--points: {path}: {hint}")
     if lo < SLOW_RPM:  # (a ';' file's 5.000 for 5000 read as 5 rpm, an input fuzzing audit: Re of about 40)
-        warnings.warn(f"--points: {path}: rpm as low as {lo:g}, below {SLOW_RPM:g} rpm: a thousands separator read "
-                      "as a decimal point ('5.000' for 5000), or rev/s? (a propeller there makes almost no thrust)",
-                      stacklevel=2)
+        warn(f"--points: {path}: rpm as low as {lo:g}, below {SLOW_RPM:g} rpm: a thousands separator read as a "
+             "decimal point ('5.000' for 5000), or rev/s? (a propeller there makes almost no thrust)")
+    if skipped:  # (rows of empty cells, ',,,', were dropped without a word, the output's rows then not the input's)
+        warn(f"--points: {path}: {len(skipped)} empty row(s) skipped (blank, or every cell empty; the first at line "
+             f"{skipped[0]}): the output has no row for them")
     return n, ext, (lo, hi), v_max, collectives
