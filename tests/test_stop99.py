@@ -601,3 +601,73 @@ def test_a_points_files_empty_rows_are_said_and_its_warnings_come_first(tmp_path
     err = capsys.readouterr().err.splitlines()
     assert "2 empty row(s) skipped (blank, or every cell empty; the first at line 3): the output has no row" in err[1]
     assert "rpm as low as 50, below 100 rpm" in err[0] and err[-1].startswith("wrote 2 points to")
+
+
+# ---- an audit of vehicle files (helper, 2026-12-01) ----
+
+QUAD = """mass = 0.8
+{extra}
+[[rotors]]
+position = [0.106, 0.106, 0.0]
+axis = [0.0, 0.0, {z1}]
+spin = "ccw"
+propeller = "apce_8x6"
+{rotor1}
+[[rotors]]
+position = [0.106, -0.106, 0.0]
+axis = [0.0, 0.0, 1.0]
+spin = "{spin2}"
+propeller = "apce_8x6"
+[[rotors]]
+position = [-0.106, -0.106, 0.0]
+axis = [0.0, 0.0, 1.0]
+spin = "ccw"
+propeller = "apce_8x6"
+[[rotors]]
+position = [-0.106, 0.106, 0.0]
+axis = [0.0, 0.0, 1.0]
+spin = "cw"
+propeller = "apce_8x6"
+"""
+
+
+def _quad(tmp_path, z1="1.0", rotor1="", spin2="cw", extra="") -> str:
+    path = tmp_path / "v.toml"
+    path.write_text(QUAD.format(z1=z1, rotor1=rotor1, spin2=spin2, extra=extra))
+    return str(path)
+
+
+def test_a_rotor_pointing_down_among_others_up_is_warned_of(tmp_path):
+    """Accepted without a word, and a level-flight fit ran on it (cl1 14.9 against 5.38: helper)."""
+    from propmap.vehicle import read_vehicle
+
+    with pytest.warns(UserWarning, match=r"rotor\(s\) 1 point down \(axis z < 0\) where the others point up"):
+        read_vehicle(_quad(tmp_path, z1="-1.0"))
+
+
+def test_a_rotor_inertia_in_other_units_is_warned_of(tmp_path):
+    """94 (a 9.4e-6 kg m^2 rotor in g cm^2) made 26,500 N m of gyroscopic pitch on a 0.8 kg quad, unsaid."""
+    import warnings
+
+    from propmap.vehicle import read_vehicle
+
+    with pytest.warns(UserWarning, match=r"rotor\(s\) 1 have an inertia above the vehicle's mass at the blade tip"):
+        read_vehicle(_quad(tmp_path, rotor1="inertia = 94.0"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_vehicle(_quad(tmp_path, rotor1="inertia = 9.4e-6"))
+
+
+def test_a_trim_that_stops_rotors_says_so(tmp_path, capsys):
+    """Spins ccw, ccw, ccw, cw: the only balance stops rotors 1 and 3 (printed as 1 rpm, the search's bound)."""
+    assert main(["trim-vehicle", "--vehicle", _quad(tmp_path, spin2="ccw")]) == 0
+    assert "rotor(s) 1, 3 stopped in this trim (at the search's lowest rate, 0.1 rad/s)" in capsys.readouterr().err
+    assert main(["trim-vehicle", "--vehicle", _quad(tmp_path)]) == 0
+    assert "stopped in this trim" not in capsys.readouterr().err
+
+
+def test_a_negative_drag_area_is_said_without_numpys_repr(tmp_path):
+    from propmap.vehicle import VehicleFileError, read_vehicle
+
+    with pytest.raises(VehicleFileError, match=r"drag_area\[2\] must be a finite number in \[0, 10\] m\^2, got -0.01$"):
+        read_vehicle(_quad(tmp_path, extra="[body]\ndrag_area = [0.01, 0.01, -0.01]"))

@@ -171,7 +171,7 @@ def _body(table, name: str) -> BodyDrag:
         raise VehicleFileError(f"{where}: missing key 'drag_area'")
     area = _vec3(table["drag_area"], f"{where} drag_area")
     try:
-        return BodyDrag(drag_area=tuple(area), wash_factor=table.get("wash_factor", 0.0))
+        return BodyDrag(drag_area=tuple(float(a) for a in area), wash_factor=table.get("wash_factor", 0.0))
     except ValueError as exc:
         raise VehicleFileError(f"{where}: {exc}") from None
 
@@ -503,6 +503,15 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
         warnings.warn(f"{name}: every rotor spins {'ccw' if rotors[0].spin > 0 else 'cw'}: their torques cannot "
                       "balance in yaw (a multirotor's alternate, cw and ccw); is a spin mistyped?", UserWarning,
                       stacklevel=4)
+    units = np.array([a / np.linalg.norm(a) for a in axes])
+    down = [k + 1 for k, a in enumerate(units) if a[2] < -math.cos(math.radians(80.0))]
+    if down and np.any(units[:, 2] > math.cos(math.radians(80.0))):  # (accepted unsaid, and fitted: an audit)
+        warnings.warn(f"{name}: rotor(s) {', '.join(map(str, down))} point down (axis z < 0) where the others point "
+                      "up: a sign slipped (the axis is the thrust's direction, body z up)?", UserWarning, stacklevel=4)
+    heavy = [k + 1 for k, r in enumerate(rotors) if r.inertia and r.inertia > mass * r.propeller.radius**2]
+    if heavy:  # (94 for the 9.4e-6 kg m^2 of a rotor in g cm^2: 26,500 N m of gyroscopic pitch, unsaid: an audit)
+        warnings.warn(f"{name}: rotor(s) {', '.join(map(str, heavy))} have an inertia above the vehicle's mass at the "
+                      "blade tip (m R^2), which no rotor has: is it in kg m^2?", UserWarning, stacklevel=4)
     reach = max(arms)
     if inertia is not None and reach > 0 and not far:  # (beside arms in other units, the inertia's ratio says nothing)
         ratio = float(np.max(np.linalg.eigvalsh(inertia))) / (mass * reach**2)

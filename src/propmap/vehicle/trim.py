@@ -201,6 +201,11 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         warnings.warn(f"rotor(s) {', '.join(map(str, ring))} trim in the vortex-ring state (climb_rate {Vc:g} m/s): "
                       "momentum theory is not predictive there (docs/models.md), so this trim is rough",
                       UserWarning, stacklevel=2)
+    parked = [k + 1 for k, om in enumerate(omega) if om <= 1.01 * OMEGA_MIN]  # (at the search's lower bound)
+    if parked:  # (two of a ccw, ccw, ccw, cw quad's rotors stopped, balancing yaw, printed as 1 rpm unsaid: an audit)
+        warnings.warn(f"rotor(s) {', '.join(map(str, parked))} stopped in this trim (at the search's lowest rate, "
+                      f"{OMEGA_MIN:g} rad/s): the others alone balance it; do the spins balance in yaw?", UserWarning,
+                      stacklevel=2)
     if mach > TIP_MACH_WARN:
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
                       "rad/s): these loads mean little", TipMachWarning, stacklevel=2)
