@@ -596,11 +596,15 @@ def test_a_points_files_empty_rows_are_said_and_its_warnings_come_first(tmp_path
     """Rows of empty cells (',,,', a spreadsheet's cleared row) were skipped without a word, so the output's rows were
     no longer the input's; the file's own warnings came after the closing line (a points-file audit, helper)."""
     src = tmp_path / "p.csv"
-    src.write_text("rpm,airspeed,incidence_deg,x\n50,0,0,1\n,,,\n,,,\n6000,0,0,2\n")
+    src.write_text("rpm,airspeed,incidence_deg,x\n50,0,0,1\n,,,\n\n6000,0,0,2\n\n,,,\n")
     assert main(["loads", "apce_8x6", "--points", str(src), "--out", str(tmp_path / "o.csv")]) == 0
     err = capsys.readouterr().err.splitlines()
-    assert "2 empty row(s) skipped (blank, or every cell empty; the first at line 3): the output has no row" in err[1]
+    assert ("2 empty row(s) skipped among the data (blank, or every cell empty; the first at line 3): the output has "
+            "no row for them") in err[1]  # (not the two after the last data row, a file's end: a review)
     assert "rpm as low as 50, below 100 rpm" in err[0] and err[-1].startswith("wrote 2 points to")
+    src.write_text("rpm,airspeed,incidence_deg\n5000,0,0\n6000,0,0\n\n,,\n")
+    assert main(["loads", "apce_8x6", "--points", str(src), "--out", str(tmp_path / "o.csv")]) == 0
+    assert "empty row" not in capsys.readouterr().err
 
 
 # ---- an audit of vehicle files (helper, 2026-12-01) ----
@@ -641,8 +645,22 @@ def test_a_rotor_pointing_down_among_others_up_is_warned_of(tmp_path):
     """Accepted without a word, and a level-flight fit ran on it (cl1 14.9 against 5.38: helper)."""
     from propmap.vehicle import read_vehicle
 
-    with pytest.warns(UserWarning, match=r"rotor\(s\) 1 point down \(axis z < 0\) where the others point up"):
+    import warnings
+
+    with pytest.warns(UserWarning, match=r"rotor\(s\) 1 point down \(within 45 deg of -z\) while rotor\(s\) 2, 3, 4 "
+                                         "point up"):
         read_vehicle(_quad(tmp_path, z1="-1.0"))
+    # not a pusher's downthrust (12 deg), nor a rotor down among horizontal ones (no rotor points up)
+    pusher = _quad(tmp_path).replace("[[rotors]]", '[[rotors]]\nposition = [-0.2, 0.0, 0.0]\naxis = [1.0, 0.0, -0.2126]'
+                                     '\nspin = "ccw"\npropeller = "apce_8x6"\n[[rotors]]', 1)
+    sideways = QUAD.format(z1="-1.0", rotor1="", spin2="cw", extra="").replace("[0.0, 0.0, 1.0]", "[1.0, 0.0, 0.0]")
+    for text in (open(pusher).read(), sideways):
+        path = tmp_path / "w.toml"
+        path.write_text(text)
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
+            read_vehicle(str(path))
+        assert not [w for w in said if "point down" in str(w.message)]
 
 
 def test_a_rotor_inertia_in_other_units_is_warned_of(tmp_path):
@@ -653,15 +671,20 @@ def test_a_rotor_inertia_in_other_units_is_warned_of(tmp_path):
 
     with pytest.warns(UserWarning, match=r"rotor\(s\) 1 have an inertia above the vehicle's mass at the blade tip"):
         read_vehicle(_quad(tmp_path, rotor1="inertia = 94.0"))
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        read_vehicle(_quad(tmp_path, rotor1="inertia = 9.4e-6"))
+    mr2 = 0.8 * read_vehicle(_quad(tmp_path)).rotors[0].propeller.radius ** 2  # (0.0083 kg m^2: m R^2)
+    with pytest.warns(UserWarning, match="inertia above the vehicle's mass at the blade tip"):
+        read_vehicle(_quad(tmp_path, rotor1=f"inertia = {1.2 * mr2}"))
+    for fine in (9.4e-6, 0.8 * mr2):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            read_vehicle(_quad(tmp_path, rotor1=f"inertia = {fine}"))
 
 
 def test_a_trim_that_stops_rotors_says_so(tmp_path, capsys):
     """Spins ccw, ccw, ccw, cw: the only balance stops rotors 1 and 3 (printed as 1 rpm, the search's bound)."""
-    assert main(["trim-vehicle", "--vehicle", _quad(tmp_path, spin2="ccw")]) == 0
-    assert "rotor(s) 1, 3 stopped in this trim (at the search's lowest rate, 0.1 rad/s)" in capsys.readouterr().err
+    assert main(["trim-vehicle", "--vehicle", _quad(tmp_path, spin2="ccw"), "--airspeed", "5"]) == 0
+    # (at 5 m/s rotor 3 turns at 36 rpm, rotor 1 at 194, the hover rate 5387 rpm: a review)
+    assert "rotor(s) 1, 3 (nearly) stopped in this trim, below 5% of the hover rate" in capsys.readouterr().err
     assert main(["trim-vehicle", "--vehicle", _quad(tmp_path)]) == 0
     assert "stopped in this trim" not in capsys.readouterr().err
 

@@ -219,6 +219,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0, skipped: list |
                     if skipped is not None:  # (the caller says them: a row of empty cells, ',,,', left no output row)
                         skipped.extend(int(k) for k in lines[blank])
                     df, lines = df[~blank], lines[~blank]
+                if skipped is not None and len(df):  # (the last data line: empty rows after it shift no output row)
+                    skipped.append(-int(lines[-1]))
                 if len(df) == 0:
                     continue
                 for j in unnamed:

@@ -358,7 +358,8 @@ def read_vehicle(path) -> Vehicle:
         rotor more than ARM_RADII_MAX of its radii from the centre of mass (positions in mm?),
         two rotors at one position, an inertia whose largest principal moment lies outside
         INERTIA_ARM_RANGE times mass x (largest arm)^2 (g cm^2?), four or more rotors of
-        parallel axes (within 10 deg) all spinning one way.
+        parallel axes (within 10 deg) all spinning one way; rotors pointing down (within 45
+        deg of -z) beside rotors pointing up; a rotor inertia above mass x R^2 (g cm^2?).
     """
     return _read_vehicle(path)[0]
 
@@ -475,9 +476,10 @@ INERTIA_ARM_RANGE = (1e-3, 10.0)
 
 
 def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference: float = 0.0) -> None:
-    """Warn about a layout in other units than the file's (ARM_RADII_MAX, INERTIA_ARM_RANGE),
-    rotors at one position, and rotors whose disks overlap (_warn_overlap): read as given, they make
-    every moment, or the hover's power, wrong without an error."""
+    """Warn about a layout in other units than the file's (ARM_RADII_MAX, INERTIA_ARM_RANGE, a
+    rotor inertia above m R^2), rotors at one position, rotors pointing down beside others up, and
+    rotors whose disks overlap (_warn_overlap): read as given, they make every moment, or the
+    hover's power, wrong without an error."""
     import warnings
 
     arms = [float(np.linalg.norm(r.position - cg)) for r in rotors]
@@ -504,10 +506,12 @@ def _warn_implausible(name: str, rotors, mass: float, inertia, cg, interference:
                       "balance in yaw (a multirotor's alternate, cw and ccw); is a spin mistyped?", UserWarning,
                       stacklevel=4)
     units = np.array([a / np.linalg.norm(a) for a in axes])
-    down = [k + 1 for k, a in enumerate(units) if a[2] < -math.cos(math.radians(80.0))]
-    if down and np.any(units[:, 2] > math.cos(math.radians(80.0))):  # (accepted unsaid, and fitted: an audit)
-        warnings.warn(f"{name}: rotor(s) {', '.join(map(str, down))} point down (axis z < 0) where the others point "
-                      "up: a sign slipped (the axis is the thrust's direction, body z up)?", UserWarning, stacklevel=4)
+    down = [k + 1 for k, a in enumerate(units) if a[2] < -math.cos(math.radians(45.0))]
+    up = [k + 1 for k, a in enumerate(units) if a[2] > math.cos(math.radians(45.0))]
+    if down and up:  # (one such rotor was accepted unsaid, and fitted: an audit; a pusher's downthrust is not it)
+        warnings.warn(f"{name}: rotor(s) {', '.join(map(str, down))} point down (within 45 deg of -z) while rotor(s) "
+                      f"{', '.join(map(str, up))} point up: a sign slipped (the axis is the thrust's direction, body z "
+                      "up)?", UserWarning, stacklevel=4)
     heavy = [k + 1 for k, r in enumerate(rotors) if r.inertia and r.inertia > mass * r.propeller.radius**2]
     if heavy:  # (94 for the 9.4e-6 kg m^2 of a rotor in g cm^2: 26,500 N m of gyroscopic pitch, unsaid: an audit)
         warnings.warn(f"{name}: rotor(s) {', '.join(map(str, heavy))} have an inertia above the vehicle's mass at the "

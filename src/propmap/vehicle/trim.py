@@ -83,6 +83,9 @@ class VehicleTrim:
     wrench: VehicleWrench
 
 
+#: a trimmed rotor below this fraction of the hover rate is warned of as (nearly) stopped
+STOPPED_FRACTION = 0.05
+
 def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb_rate: float = 0.0, *,
                  air: Air | None = None, discretization: Discretization = DEFAULT_DISCRETIZATION) -> VehicleTrim:
     """Attitude and rotor speeds of steady straight flight (module docstring).
@@ -124,8 +127,9 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
     Warns
     -----
     UserWarning
-        A trim whose advancing blade tips meet the air beyond Mach 0.8, or with a rotor in the
-        vortex-ring state (descent: momentum theory is not predictive there, docs/models.md);
+        A trim whose advancing blade tips meet the air beyond Mach 0.8, with a rotor in the
+        vortex-ring state (descent: momentum theory is not predictive there, docs/models.md), or
+        with a rotor below STOPPED_FRACTION of the hover rate (spins that do not balance in yaw);
         :func:`hover_omega`'s warnings.
     FlappingWarning
         Once, where the trim's blades flap beyond the small-angle range (not at the search's
@@ -201,11 +205,11 @@ def trim_vehicle(vehicle: Vehicle, params: SectionParams, airspeed: float, climb
         warnings.warn(f"rotor(s) {', '.join(map(str, ring))} trim in the vortex-ring state (climb_rate {Vc:g} m/s): "
                       "momentum theory is not predictive there (docs/models.md), so this trim is rough",
                       UserWarning, stacklevel=2)
-    parked = [k + 1 for k, om in enumerate(omega) if om <= 1.01 * OMEGA_MIN]  # (at the search's lower bound)
+    parked = [k + 1 for k, om in enumerate(omega) if om < STOPPED_FRACTION * om_h]
     if parked:  # (two of a ccw, ccw, ccw, cw quad's rotors stopped, balancing yaw, printed as 1 rpm unsaid: an audit)
-        warnings.warn(f"rotor(s) {', '.join(map(str, parked))} stopped in this trim (at the search's lowest rate, "
-                      f"{OMEGA_MIN:g} rad/s): the others alone balance it; do the spins balance in yaw?", UserWarning,
-                      stacklevel=2)
+        warnings.warn(f"rotor(s) {', '.join(map(str, parked))} (nearly) stopped in this trim, below "
+                      f"{STOPPED_FRACTION:.0%} of the hover rate: the others alone balance it; do the spins balance "
+                      "in yaw?", UserWarning, stacklevel=2)
     if mach > TIP_MACH_WARN:
         warnings.warn(f"{SUPERSONIC_TIP} {mach:.3g} in this trim (airspeed {V:g} m/s, rotors up to {max(omega):.4g} "
                       "rad/s): these loads mean little", TipMachWarning, stacklevel=2)
