@@ -188,7 +188,8 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0, skipped: list |
     collective_deg where the file has it) as checked floats.
 
     Yields (DataFrame of the text as read, first line number, dict of the three float
-    arrays); blank lines are dropped. ``offset_deg``: the parameter set's collective [deg], added
+    arrays); blank lines and rows of empty cells are dropped, and ``skipped`` (a list) receives the
+    lines of those that lie before a data row. ``offset_deg``: the parameter set's collective [deg], added
     to each row's, the sum within [-COLLECTIVE_DEG_MAX, COLLECTIVE_DEG_MAX]. Raises InputError
     naming the line of the first bad value (line numbers count blank lines; a quoted field
     spanning lines shifts them) or the parse error.
@@ -207,6 +208,7 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0, skipped: list |
               COLLECTIVE_COLUMN: (-COLLECTIVE_DEG_MAX - offset_deg, COLLECTIVE_DEG_MAX - offset_deg)}
     line = 2
     rows = 0
+    pending = []  # empty rows not yet followed by a data row (a file's trailing blank lines never are)
     marks = [None, None]  # a ';' file: where a decimal comma and a point were first seen, (line, column)
     try:
         with warnings.catch_warnings():
@@ -216,11 +218,13 @@ def _chunks(path: Path, chunksize: int, offset_deg: float = 0.0, skipped: list |
                 line += len(df)
                 blank = (df == "").all(axis=1).to_numpy()
                 if blank.any():
-                    if skipped is not None:  # (the caller says them: a row of empty cells, ',,,', left no output row)
-                        skipped.extend(int(k) for k in lines[blank])
+                    pending.extend(int(k) for k in lines[blank])
                     df, lines = df[~blank], lines[~blank]
-                if skipped is not None and len(df):  # (the last data line: empty rows after it shift no output row)
-                    skipped.append(-int(lines[-1]))
+                if len(df) and pending:  # (an empty row before a data row leaves no output row: the caller says so)
+                    last = int(lines[-1])
+                    if skipped is not None:
+                        skipped.extend(k for k in pending if k < last)
+                    pending = [k for k in pending if k > last]
                 if len(df) == 0:
                     continue
                 for j in unnamed:

@@ -332,8 +332,7 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
     collectives = None
     seen = []  # each chunk's largest incidence at airspeed and one that is not a whole degree: the radians check
     bare = False  # the incidence under its bare name incidence_deg (taken first), no unit stated in the header
-    skipped = []  # the lines of empty rows (blank, or cells all empty: a spreadsheet's cleared row), and each chunk's
-    # last data line, negated
+    skipped = []  # the lines of empty rows among the data (blank, or cells all empty: a spreadsheet's cleared row)
     for df, _, values in _chunks(path, CHUNK, offset_deg, skipped):
         bare = any(str(c).strip().lower() == "incidence_deg" for c in df.columns)
         e = envelope_extremes(prop, *(values[c] for c in INPUT_COLUMNS))  # the collective does not change them
@@ -358,10 +357,8 @@ def _scan(prop, path: Path, offset_deg: float = 0.0) -> tuple[int, tuple[float, 
         warn(f"--points: {path}: rpm as low as {lo:g}, below {SLOW_RPM:g} rpm: a thousands separator read as a "
              "decimal point ('5.000' for 5000), or rev/s? (a propeller there makes almost no thrust)")
     # (rows of empty cells, ',,,', were dropped without a word, the output's rows then not the input's; those after the
-    # last data row, a file's trailing blank lines, shift none: a review)
-    end = -min(skipped, default=0)
-    inner = [k for k in skipped if 0 < k < end]
-    if inner:
-        warn(f"--points: {path}: {len(inner)} empty row(s) skipped among the data (blank, or every cell empty; the "
-             f"first at line {inner[0]}): the output has no row for them")
+    # last data row, a file's trailing blank lines, shift none and are not said: a review)
+    if skipped:
+        warn(f"--points: {path}: {len(skipped)} empty row(s) skipped among the data (blank, or every cell empty; the "
+             f"first at line {skipped[0]}): the output has no row for them")
     return n, ext, (lo, hi), v_max, collectives
