@@ -36,6 +36,13 @@ def held_out_worse(fitted: dict, base: dict, largest: dict, quantities) -> list[
             if f is not None and b is not None and f > 1.25 * b and f - b > 0.02 * largest[q]]
 
 
+def _warn_held_out(held, base_label: str, said: str, what: str) -> None:
+    """The warning of held-out ``what`` (runs, groups) that the fitted set predicts 25% or more worse
+    than the base set (:func:`held_out_worse`; ``said``: their rmse, fitted against base)."""
+    warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does ({said}): "
+         f"what it learned from the fitted {what} does not carry to these")
+
+
 #: the units of each load quantity's rmse in fit loads' lines
 _LOAD_UNITS = {"thrust": "N", "drag": "N", "torque": "N m", "rolling_moment": "N m"}
 
@@ -112,8 +119,7 @@ def _catalogue_comparison(res, entry, prop, base, base_label: str, held, air, la
         if worse:
             said = "; ".join(f"{coefficient[q].upper()} rmse {fit[coefficient[q] + '_rmse']:.4f} against "
                              f"{blind[coefficient[q] + '_rmse']:.4f}" for q in worse)
-            warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
-                 f"({said}): what it learned from the fitted runs does not carry to these")
+            _warn_held_out(held, base_label, said, "runs")
     rmse = [{"thrust_rmse": s["ct_rmse"], "torque_rmse": s["cp_rmse"]} for s in (vf.summary("model"),
                                                                                vb.summary("model"))]
     unfitted = _unfitted_worse(res, *rmse, largest, ("thrust", "torque"), base_label,
@@ -178,8 +184,7 @@ def _file_comparison(res, data, prop, base, base_label: str, held, air, label: s
         worse = held_out_worse(fitted, blind, top, res.extra.get("quantities", list(data.measured)))
         if worse:  # (said: a fit that predicts its held-out groups worse than its unfitted base learned the others)
             said = "; ".join(f"{k} rmse {fitted[k + '_rmse']:.4g} against {blind[k + '_rmse']:.4g}" for k in worse)
-            warn(f"the fitted set predicts the held-out {', '.join(held)} 25% or more worse than {base_label} does "
-                 f"({said}): what it learned from the fitted groups does not carry to these")
+            _warn_held_out(held, base_label, said, "groups")
     extra = "\n".join(line for line in (extra, unfitted) if line)
 
     def figure(png):
