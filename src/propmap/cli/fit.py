@@ -455,8 +455,8 @@ def _held_runs(holdout, data, entry, base_spec, base, base_label: str):
         import numpy as np
 
         kept = ~np.isin(data.group, held)
-        points = np.column_stack([a[kept] for a in (data.omega, data.airspeed, data.incidence,
-                                                    data.collective if data.collective is not None else data.omega)])
+        columns = (data.omega, data.airspeed, data.incidence) + (() if data.collective is None else (data.collective,))
+        points = np.column_stack([a[kept] for a in columns])
         distinct = int(np.unique(points, axis=0).shape[0])
         if distinct < MIN_FIT_POINTS:
             raise InputError(f"--holdout: the runs left to fit ({', '.join(sorted(groups - set(held)))}) hold "
