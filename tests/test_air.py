@@ -147,3 +147,11 @@ def test_isa_density_scales_the_thrust_of_the_model():
     assert high / low == pytest.approx(pm.Air.isa(3000.0).rho / pm.Air.isa(0.0).rho, rel=0.04)
     assert math.isfinite(high)
     assert np.isfinite(low)
+
+
+def test_isa_is_continuous_at_the_tropopause():
+    # the isothermal layer starts from the troposphere's own pressure at 11 km (22632.04 Pa), not
+    # the standard's tabulated 22632.06 Pa, which made a step of 8.8e-7 in rho (stop 100)
+    below, above = pm.Air.isa(11000.0), pm.Air.isa(np.nextafter(11000.0, 2e4))
+    assert above.rho == pytest.approx(below.rho, rel=1e-12)
+    assert below.rho == pytest.approx(0.36392, rel=2e-4)

@@ -80,9 +80,11 @@ class Air:
 
         Troposphere (h <= 11 km): T = 288.15 K - 0.0065 K/m h, p = 101325 Pa (T / 288.15
         K)^5.255877; the isothermal layer above it to 20 km: T = 216.65 K,
-        p = 22632.06 Pa exp(-g0 (h - 11000 m) / (R T)) (ISO 2533:1975; U.S. Standard
-        Atmosphere, 1976); then :meth:`from_conditions`. Sea level: rho 1.2250 kg/m^3, mu
-        1.789e-5 Pa s, speed of sound 340.29 m/s.
+        p = p11 exp(-g0 (h - 11000 m) / (R T)) (ISO 2533:1975; U.S. Standard
+        Atmosphere, 1976), with p11 the troposphere's law at 11 km (22632.04 Pa; the standard
+        tabulates 22632.06 Pa, which would put a step of 9e-7 in rho at 11 km); then
+        :meth:`from_conditions`. Sea level: rho 1.2250 kg/m^3, mu 1.789e-5 Pa s, speed of
+        sound 340.29 m/s.
 
         Parameters
         ----------
@@ -100,12 +102,10 @@ class Air:
             ``altitude`` out of its range or not a number.
         """
         h = checked("altitude", altitude, *ALTITUDE_RANGE_M, unit="m")
-        if h <= 11000.0:
-            T = 288.15 - 0.0065 * h
-            p = 101325.0 * (T / 288.15) ** (G0 / (0.0065 * R_AIR))
-        else:
-            T = 216.65
-            p = 22632.06 * math.exp(-G0 * (h - 11000.0) / (R_AIR * T))
+        T = 288.15 - 0.0065 * min(h, 11000.0)  # (216.65 K at and above 11 km)
+        p = 101325.0 * (T / 288.15) ** (G0 / (0.0065 * R_AIR))
+        if h > 11000.0:
+            p *= math.exp(-G0 * (h - 11000.0) / (R_AIR * T))
         return cls.from_conditions(T, p)
 
 
