@@ -211,7 +211,8 @@ class RotorLoads:
     @property
     def state_name(self) -> np.ndarray:
         """The working state's name at every point (array of str, shape S)."""
-        return np.asarray(STATES, dtype=object)[np.asarray(self.state)]
+        # (np.asarray again: indexing with a 0-d index returns the bare str, not the documented array)
+        return np.asarray(np.asarray(STATES, dtype=object)[np.asarray(self.state)], dtype=object)
 
     @property
     def v_i_over_v_h(self) -> np.ndarray:
@@ -232,7 +233,7 @@ class RotorLoads:
     @property
     def power(self) -> np.ndarray:
         """P = Q Omega [W], shape S."""
-        return self.torque * self.omega
+        return np.asarray(self.torque * self.omega)  # (0-d arrays multiply to a NumPy scalar)
 
     @property
     def _n(self) -> np.ndarray:
