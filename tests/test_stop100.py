@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import propmap as pm
+from propmap.cli.main import main
 
 
 @pytest.fixture(scope="module")
@@ -23,3 +24,15 @@ def test_a_scalar_call_gives_0d_arrays_for_power_and_state_name(apce_8x6):
     assert float(r.power) == pytest.approx(float(r.torque) * 600.0, rel=1e-15)
     many = pm.rotor_loads(apce_8x6, pm.generic_params(), [600.0, 700.0], 5.0, 0.3)
     assert many.state_name.shape == (2,) and many.power.shape == (2,)
+
+
+def test_points_closing_line_names_the_flags_column_as_written(tmp_path, capsys):
+    # an input column named flags makes the output's flags_model: the closing line pointed the
+    # user at the input's column
+    pts = tmp_path / "pts.csv"
+    pts.write_text("rpm,airspeed,incidence_deg,flags\n5000,3,180,mine\n5000,5,0,x\n")
+    out = tmp_path / "out.csv"
+    assert main(["loads", "apce_8x6", "--points", str(pts), "--out", str(out)]) == 0
+    assert "flagged: 1 vortex_ring (column flags_model, docs/cli.md)" in capsys.readouterr().err
+    header = out.read_text().splitlines()[0].split(",")
+    assert header[3] == "flags" and header[-1] == "flags_model"

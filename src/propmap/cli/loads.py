@@ -122,12 +122,13 @@ def _output_names(inputs, outputs) -> list[str]:
     return names
 
 
-def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, dict]:
+def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) -> tuple[int, dict, str]:
     """Validate the whole points file, then solve and write it chunk by chunk.
 
     Memory stays bounded by the chunk size whatever the file's length (the output goes to a
     temporary file renamed at the end, or to standard output). Returns (points, the number
-    of points carrying each flag of FLAG_MEANINGS, in its order).
+    of points carrying each flag of FLAG_MEANINGS, in its order, the name of the output's flags
+    column: ``flags``, or ``flags_model`` where an input column took ``flags``).
     """
     import warnings
 
@@ -142,6 +143,8 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
     check_section_match(prop, label, collective_range=collectives)  # (the column's rows, not 0 deg)
     coverage_messages(prop, label, air, *extremes, rpm=rpm_range, airspeed=v_max)
 
+    column = ["flags"]  # (the output's name of it, set by the first chunk)
+
     def write(fh):
         counts = dict.fromkeys(FLAG_MEANINGS, 0)
         flapping = []  # (each chunk's large flapping: one warning for the file, not one per chunk, a review)
@@ -155,6 +158,7 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
                                        None if rows is None else rows + offset, flapping)
                 flags = list(res.columns).index("flags")  # (by place: it may be renamed below)
                 res.columns = _output_names(df.columns, res.columns)
+                column[0] = res.columns[flags]
                 df = df.reset_index(drop=True)
                 for c in res.columns:
                     a = res[c].to_numpy()
@@ -171,10 +175,10 @@ def _run_points(prop, params, air, label: str, path: Path, out, progress: bool) 
         return counts
 
     if str(out) == "-":
-        return n, write(sys.stdout)
+        return n, write(sys.stdout), column[0]
     with atomic_write(out, "w", newline="") as fh:
         bad = write(fh)
-    return n, bad
+    return n, bad, column[0]
 
 
 @click.command("loads", cls=Command)
@@ -270,13 +274,13 @@ def _points_command(prop, rpm, airspeed, incidence_deg, collective_deg, params_s
     propeller = prop_choice.load(prop)
     params, air, label = load_params(params_spec, prop)
     air = resolve_air(air, air_choice)
-    n, counts = _run_points(propeller, params, air, label, points, out, progress=out != "-")
+    n, counts, column = _run_points(propeller, params, air, label, points, out, progress=out != "-")
     where = "standard output" if out == "-" else out
     n_bad = counts.pop("not_converged")
     flagged = ", ".join(f"{c} {name}" for name, c in counts.items() if c)  # (the vortex ring's rows unsaid before)
     click.echo(f"wrote {n} point{'s' if n != 1 else ''} to {where} (params {label}; air {air_label(air)})"
-               + (f"; {n_bad} did not converge (see flags)" if n_bad else "")
-               + (f"; flagged: {flagged} (column flags, docs/cli.md)" if flagged else ""), err=True)
+               + (f"; {n_bad} did not converge (see {column})" if n_bad else "")
+               + (f"; flagged: {flagged} (column {column}, docs/cli.md)" if flagged else ""), err=True)
 
 
 def _echo_point(propeller, params, air, label: str, r, result: dict, ratio: dict, rpm, airspeed, incidence_deg,
