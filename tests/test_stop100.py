@@ -36,3 +36,25 @@ def test_points_closing_line_names_the_flags_column_as_written(tmp_path, capsys)
     assert "flagged: 1 vortex_ring (column flags_model, docs/cli.md)" in capsys.readouterr().err
     header = out.read_text().splitlines()[0].split(",")
     assert header[3] == "flags" and header[-1] == "flags_model"
+
+
+def test_validate_does_not_call_the_generic_set_in_sample_on_a_propeller_it_never_saw(capsys):
+    # the CFNQ propellers have one static run and no sweeps: the generic set's calibration (the
+    # propellers with both) never saw them, but validate said "in-sample (the fit's residual)"
+    from propmap.io.calibration import calibration
+
+    assert "cfnq_45p1" not in calibration()["propellers"] and "apce_8x6" in calibration()["propellers"]
+    assert main(["validate", "cfnq_45p1"]) == 0
+    out = capsys.readouterr().out
+    assert "in-sample" not in out and "generic was not fitted to cfnq_45p1's runs" in out
+    assert main(["validate", "cfnq_45p1", "--json"]) == 0
+    assert '"in_fit": {}' in capsys.readouterr().out
+    assert main(["validate", "apce_8x6", "--params", "generic"]) == 0
+    assert "generic was fitted to these runs (with the whole catalogue's): in-sample" in capsys.readouterr().out
+
+
+def test_validate_files_of_a_propeller_the_generic_set_never_saw_are_not_in_sample(capsys, shared_data):
+    f = shared_data / "uiuc_propdb" / "v2" / "cfnq_45p1_static_1322rd.txt"
+    assert main(["validate", str(f), "--prop", "cfnq_45p1"]) == 0
+    out = capsys.readouterr().out
+    assert "(fitted)" not in out and "in-sample" not in out

@@ -169,6 +169,9 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
             click.echo(f"{label} was fitted to {which}{whole}: in-sample (the fit's residual, not a prediction)"
                        + (f"; held out: {', '.join(held)}" if held else "")
                        + ("; `propmap validate --all` gives held-out errors" if not held else ""))
+        elif label == "generic":
+            click.echo(f"generic was not fitted to {prop}'s runs (its calibration took the propellers with a static run "
+                       "and sweeps): a blind prediction")
         if fig is not None:
             click.echo(f"figure: {fig}")
 
@@ -176,11 +179,11 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
 def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
     """{run label: "fitted" or "held out"} of a catalogue propeller's runs (labelled as `fit
     loads` groups them: ``static_2797rd``, ``2798rd``) that the parameter set was fitted to:
-    every run for its own calibrated set and for the generic set (fitted to the whole
-    catalogue), the [coverage] groups of a fit of the catalogue name or of its bundled files
-    ({} for any other set)."""
+    every run for its own calibrated set and for the generic set where it was fitted to them
+    (:func:`_fitted_by`), the [coverage] groups of a fit of the catalogue name or of its bundled
+    files ({} for any other set)."""
     ids = [f"static_{r.run_id}" if r.kind == "static" else r.run_id for r in runs]
-    if label in (f"calibrated:{entry.name}", "generic"):
+    if _fitted_by(label, entry.name):
         return {g: "fitted" for g in ids}
     from ..io.params_file import set_coverage
 
@@ -191,6 +194,16 @@ def _catalogue_in_fit(entry, label: str, params_spec, runs) -> dict:
         return {}
     held, fitted = set(cov.get("held_out", ())), set(cov.get("groups", ()))
     return {g: ("held out" if g in held else "fitted") for g in ids if g in held | fitted}
+
+
+def _fitted_by(label: str, name: str) -> bool:
+    """Whether the shipped set ``label`` was fitted to catalogue propeller ``name``'s runs: its own
+    calibrated set, or the generic set where ``name`` is among the propellers it was fitted to (the
+    calibrated ones, those with a static run and sweeps: the CFNQ propellers' one static run each
+    was called in-sample, a validate audit, stop 100)."""
+    from ..io.calibration import calibration
+
+    return label == f"calibrated:{name}" or (label == "generic" and name in calibration()["propellers"])
 
 
 def _bundled_digests(name: str) -> set:
@@ -304,7 +317,7 @@ def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[di
     elif own and cov.get("data") == owner:  # (a fit of the catalogue name: its runs are the bundled files)
         in_fit = {g: ("held out" if f in cov.get("held_out", ()) else "fitted")
                   for g, f in _run_pairs(own, prop, seen, every).items()}
-    elif own and label in (f"calibrated:{owner}", "generic"):  # (the calibration saw every run of these data)
+    elif own and _fitted_by(label, owner):  # (the calibration saw every run of these data)
         in_fit = {g: "fitted" for g in _run_pairs(own, prop, set(every), every)}
     elif cov.get("data") == what and cov.get("data_sha256") in (None, data_digest(sources, files)):
         # (by content: another day's file of the same name once read as this fit's data; a file written before
