@@ -58,3 +58,12 @@ def test_validate_files_of_a_propeller_the_generic_set_never_saw_are_not_in_samp
     assert main(["validate", str(f), "--prop", "cfnq_45p1"]) == 0
     out = capsys.readouterr().out
     assert "(fitted)" not in out and "in-sample" not in out
+
+
+def test_validate_in_other_air_does_not_call_the_errors_the_fits_residual(capsys):
+    # --altitude-m 3000 moves apce_8x6's CT rmse 0.0030 -> 0.0042: not the fit's residual
+    assert main(["validate", "apce_8x6", "--altitude-m", "3000"]) == 0
+    out = capsys.readouterr().out
+    assert "in-sample" not in out and "neither the fit's residual nor a prediction" in out
+    assert main(["validate", "apce_8x6", "--rho", "1.225"]) == 0  # the set's own air: its residual
+    assert "in-sample (the fit's residual, not a prediction)" in capsys.readouterr().out
