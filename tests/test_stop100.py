@@ -67,3 +67,40 @@ def test_validate_in_other_air_does_not_call_the_errors_the_fits_residual(capsys
     assert "in-sample" not in out and "neither the fit's residual nor a prediction" in out
     assert main(["validate", "apce_8x6", "--rho", "1.225"]) == 0  # the set's own air: its residual
     assert "in-sample (the fit's residual, not a prediction)" in capsys.readouterr().out
+
+
+def test_cross_validation_figure_cites_apc_geometry_and_labels_ticks_plainly(tmp_path, monkeypatch):
+    # the title cited the UIUC volumes only (29 propellers take APC's PE0 geometry), and a few
+    # propellers' 2-9% errors ran the default's minor labels 2x10^0 3x10^0 ... into each other
+    import propmap.plots as plots
+
+    seen = {}
+    real = plots._save
+
+    def keep(fig, path):
+        fig.canvas.draw()
+        seen["title"] = fig._suptitle.get_text()
+        ax = fig.axes[0]
+        seen["labels"] = [t.get_text() for t in ax.get_xticklabels() + ax.get_xticklabels(minor=True) if t.get_text()]
+        return real(fig, path)
+
+    monkeypatch.setattr(plots, "_save", keep)
+    rows = [{"blind": {"rms_ct": v, "rms_cp": 2 * v}} for v in (0.02, 0.035, 0.09)]
+    plots.plot_cv_summary({"summary": {"blind": {}}, "propellers": rows}, tmp_path / "cv.png")
+    assert "APC Propellers PE0 geometry" in seen["title"] and "AIAA 2014-2151" in seen["title"]
+    assert seen["labels"] and not any("10^" in s or "times" in s or "×" in s for s in seen["labels"])
+
+
+def test_validate_files_cites_the_catalogues_own_files_and_gives_the_air_record(capsys, shared_data):
+    import json
+
+    files = sorted(str(f) for f in (shared_data / "uiuc_propdb" / "v1").glob("apce_8x6_*.txt"))
+    assert len(files) >= 2
+    assert main(["validate", *files, "--prop", "apce_8x6"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1] == (
+        "Data: geometry: APC Propellers PE0 geometry (v2022-0915); measurements: UIUC Propeller Data Site vol. 1, "
+        "Brandt & Selig, AIAA 2011-1255")
+    assert main(["validate", *files, "--prop", "apce_8x6", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert "Brandt & Selig" in d["citation"]
+    assert d["air"] == {"rho": 1.225, "mu": 1.983e-05, "speed_of_sound": 340.3} and d["rho"] == 1.225

@@ -176,8 +176,8 @@ def _validate_catalogue(prop: str, params_spec, air_choice, figure, as_json) -> 
                            + (f"; held out: {', '.join(held)}" if held else "")
                            + ("; `propmap validate --all` gives held-out errors" if not held else ""))
         elif label == "generic":
-            click.echo(f"generic was not fitted to {prop}'s runs (its calibration took the propellers with a static run "
-                       "and sweeps): a blind prediction")
+            click.echo(f"generic was not fitted to {prop}'s runs (its calibration took the propellers with a static "
+                       "run and sweeps): a blind prediction")
         if fig is not None:
             click.echo(f"figure: {fig}")
 
@@ -279,19 +279,26 @@ def _validate_files(sources, prop_spec, prop_choice, params_spec, rpm_source, po
         raise InputError(f"SOURCE: {exc}") from None
     except SolverError as exc:
         raise click.ClickException(str(exc)) from None
-    in_fit, every = _in_fit(label, params_spec, sources, data, prop, what)
-    if as_json:
+    in_fit, every, owner = _in_fit(label, params_spec, sources, data, prop, what)
+    from ..io.catalogue import catalogue
+
+    # (the catalogue's own UIUC files were shown without their source, which validate PROP cites: an audit, stop 100)
+    citation = catalogue()[owner].citation if owner else None
+    if as_json:  # (air: the record of loads, trim and validate PROP; the flat rho, mu, speed_of_sound kept as before)
         echo_json({**e, "in_fit": in_fit, "params_label": label, "propeller": prop.name, "diameter_m": prop.diameter,
-                   "n_blades": prop.n_blades, "data": [str(s) for s in sources], "rho": air.rho, "mu": air.mu,
-                   "speed_of_sound": air.speed_of_sound})
+                   "n_blades": prop.n_blades, "data": [str(s) for s in sources], "citation": citation,
+                   "air": air_record(air), "rho": air.rho, "mu": air.mu, "speed_of_sound": air.speed_of_sound})
         return
     _print_errors(e, in_fit, every, what, prop, label, air)
+    if citation:
+        click.echo(f"Data: {citation}")
 
 
-def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[dict, list[str]]:
+def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[dict, list[str], str | None]:
     """validate's in-sample labels: (group -> "fitted" or "held out" for the groups the parameter
     file's fit saw, by its [coverage] table and the files' contents, or the catalogue's calibration
-    did; the data's groups in order)."""
+    did; the data's groups in order; the catalogue propeller whose bundled UIUC files these are,
+    with its geometry, or None)."""
     from ..io.params_file import set_coverage
     from ._sources import data_digest, file_digests
 
@@ -329,7 +336,7 @@ def _in_fit(label: str, params_spec, sources, data, prop, what: str) -> tuple[di
         # (by content: another day's file of the same name once read as this fit's data; a file written before
         # 2026-11-26 has the name and the files' joint digest only)
         in_fit = {g: ("held out" if g in cov.get("held_out", ()) else "fitted") for g in every if g in seen}
-    return in_fit, every
+    return in_fit, every, (owner if own else None)
 
 
 def _inplane_words(keys) -> str:
