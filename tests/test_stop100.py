@@ -104,3 +104,39 @@ def test_validate_files_cites_the_catalogues_own_files_and_gives_the_air_record(
     d = json.loads(capsys.readouterr().out)
     assert "Brandt & Selig" in d["citation"]
     assert d["air"] == {"rho": 1.225, "mu": 1.983e-05, "speed_of_sound": 340.3} and d["rho"] == 1.225
+
+
+def test_run_case_refuses_no_parameter_set_for_every_case():
+    # beaver's raised a bare StopIteration from next(iter({}.values()))
+    from propmap.cases import CASES, run_case
+
+    for case in CASES:
+        with pytest.raises(ValueError, match="param_sets: give at least one parameter set"):
+            run_case(case, {})
+    with pytest.raises(ValueError, match="unknown case 'nope'"):
+        run_case("nope", {})
+
+
+def test_published_cases_name_their_metrics_normalisation():
+    from propmap.cases import run_case
+
+    g = pm.generic_params()
+    assert "of CT and CQ at the lowest J (fractions)" in run_case("apc10x7e", {"g": g}).notes
+    assert "rel_err_ct: CT / 0.072 - 1" in run_case("dji9443", {"g": g}).notes
+
+
+def test_validate_all_prints_the_fractions_within_and_the_signed_median_per_volume(capsys):
+    # docs/validation.md's "within 3 / 5 / 10%" columns and median signed CT errors were not
+    # in --all's output, which the page says reproduces it
+    from propmap.cli import validate_all as VA
+
+    rows = [{"propeller": f"p{k}", "volume": 1, "family": "f", "blind": {"rms_ct": e, "rms_cp": e, "bias_ct": b}}
+            for k, (e, b) in enumerate(((0.02, -0.01), (0.04, 0.03), (0.08, 0.05), (0.2, -0.2)))]
+    s = VA._summaries(rows, ["blind"])["blind"]
+    assert s["ct_within"] == {"3%": 0.25, "5%": 0.5, "10%": 0.75}
+    assert s["ct_signed_median"] == pytest.approx(0.01)
+    assert s["ct"] == VA.summarize([0.02, 0.04, 0.08, 0.2])
+    VA._print_within({"vol. 1": {"blind": s}}, ["blind"])
+    out = capsys.readouterr().out.splitlines()
+    assert out == ["  vol. 1     within 3/5/10% of static CT: blind 25/50/75%",
+                   "  vol. 1     median signed CT error (model - measured, of static CT): blind +1.0%"]
