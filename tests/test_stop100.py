@@ -140,3 +140,21 @@ def test_validate_all_prints_the_fractions_within_and_the_signed_median_per_volu
     out = capsys.readouterr().out.splitlines()
     assert out == ["  vol. 1     within 3/5/10% of static CT: blind 25/50/75%",
                    "  vol. 1     median signed CT error (model - measured, of static CT): blind +1.0%"]
+
+
+def test_validate_and_fit_name_the_prop_option_and_the_file_options_as_given(tmp_path, capsys, shared_data):
+    # the geometry of validate SOURCE... and fit loads is --prop, not PROP; a PE0 file's own blade
+    # count and diameter were said as the readers' n_blades and diameter_in
+    data = tmp_path / "l1.csv"
+    data.write_text("rpm,airspeed,thrust_N,torque_Nm\n" + "".join(
+        f"{rpm},0,{0.5e-7 * rpm**2:.4g},{1e-9 * rpm**2:.4g}\n" for rpm in range(3000, 9000, 1000)))
+    pe0 = shared_data / "apc_vendor_data" / "geometry_PE0" / "10x10-PERF.PE0"
+    for cmd in (["validate", str(data)], ["fit", "loads", str(data), "--out", str(tmp_path / "p.toml")]):
+        assert main([*cmd, "--prop", "nope"]) == 2
+        assert "error: --prop: unknown propeller 'nope'" in capsys.readouterr().err
+        assert main([*cmd, "--prop", str(pe0), "--blades", "3"]) == 2
+        assert "10x10-PERF.PE0: --blades 3, but the PE0 file states BLADES: 2" in capsys.readouterr().err
+        assert main([*cmd, "--prop", str(pe0), "--diameter-in", "9"]) == 2
+        assert "10x10-PERF.PE0: --diameter-in 9 in, but a PE0 file gives its own radius" in capsys.readouterr().err
+    assert main(["loads", "nope", "--rpm", "5000"]) == 2  # PROP stays PROP where it is the argument
+    assert "error: PROP: unknown propeller 'nope'" in capsys.readouterr().err

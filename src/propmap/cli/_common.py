@@ -126,14 +126,18 @@ def warn_incidence_radians(incidence_deg: float, airspeed: float) -> None:
              f"{math.degrees(incidence_deg):.4g} deg; the option is in degrees)")
 
 
-def load_prop(spec: str, diameter_in: float | None, blades: int | None):
+def load_prop(spec: str, diameter_in: float | None, blades: int | None, option: str = "PROP"):
     """The Propeller named by PROP (catalogue name or geometry file), with the file options.
+
+    ``option`` names the argument that gave ``spec`` in the errors: ``PROP``, or ``--prop`` where
+    the command's geometry is an option (``fit loads``, ``validate SOURCE...``).
 
     Raises
     ------
     InputError
         Unknown name, malformed file, or --diameter-in/--blades given for a catalogue
-        propeller (whose geometry fixes them) or outside their ranges.
+        propeller (whose geometry fixes them) or outside their ranges, or unlike what a PE0 or
+        QPROP file states (in the options' names, not the readers' n_blades and diameter_in).
     """
     import warnings
 
@@ -150,8 +154,12 @@ def load_prop(spec: str, diameter_in: float | None, blades: int | None):
         raise InputError(f"--blades must be an integer in [1, 20], got {blades!r}")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        with _spec_errors("PROP", spec):
-            prop = resolve_propeller(spec, diameter_in=diameter_in, n_blades=blades)
+        try:
+            with _spec_errors(option, spec):
+                prop = resolve_propeller(spec, diameter_in=diameter_in, n_blades=blades)
+        except InputError as exc:  # (the options named as the user gave them: an audit, stop 100)
+            raise InputError(str(exc).replace(": n_blades = ", ": --blades ")
+                             .replace(": diameter_in = ", ": --diameter-in ")) from None
     for w in caught:
         if issubclass(w.category, UserWarning):
             warn(str(w.message))
@@ -472,9 +480,9 @@ class PropChoice:
     diameter_in: float | None = None
     blades: int | None = None
 
-    def load(self, spec: str):
-        """The Propeller named by ``spec`` with these options (:func:`load_prop`)."""
-        return load_prop(spec, self.diameter_in, self.blades)
+    def load(self, spec: str, option: str = "PROP"):
+        """The Propeller named by ``spec`` (given as ``option``) with these options (:func:`load_prop`)."""
+        return load_prop(spec, self.diameter_in, self.blades, option)
 
 
 prop_options = [

@@ -144,7 +144,7 @@ def read_sources(sources, prop_spec, prop_choice: PropChoice, air, rpm_source=No
         raise InputError(f"SOURCE: {short_path(other[0])} is not a UIUC-format static (RPM CT CP) or wind-tunnel "
                          "(J CT CP eta) file; several files must all be, or give one CSV at a time")
     named = not other and prop_spec not in catalogue() and geometry_format(prop_spec) == "uiuc"
-    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, uiuc_geometry=named).load(prop_spec)
+    prop = geometry_from_uiuc_names(sources, prop_spec, prop_choice, uiuc_geometry=named).load(prop_spec, "--prop")
     set_from_names = False
     if named:
         given, prop = prop, blade_angle_from_uiuc_names(sources, prop_spec, prop)
