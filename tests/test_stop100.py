@@ -158,3 +158,30 @@ def test_validate_and_fit_name_the_prop_option_and_the_file_options_as_given(tmp
         assert "10x10-PERF.PE0: --diameter-in 9 in, but a PE0 file gives its own radius" in capsys.readouterr().err
     assert main(["loads", "nope", "--rpm", "5000"]) == 2  # PROP stays PROP where it is the argument
     assert "error: PROP: unknown propeller 'nope'" in capsys.readouterr().err
+
+
+GRID = ["--rpm", "3000:4000:2", "--airspeed", "0:5:2", "--incidence-deg", "0:90:2", "--check-points", "0"]
+
+
+def test_map_refuses_a_linked_outs_sidecar_that_is_an_input(tmp_path, capsys):
+    # --out out.h -> real.h writes through the link, its sidecar beside the target (real.h.json):
+    # that sidecar was never checked and overwrote the parameter file of that name
+    params = tmp_path / "real.h.json"
+    pm.write_params(params, pm.generic_params())
+    before = params.read_bytes()
+    (tmp_path / "real.h").write_text("old\n")
+    (tmp_path / "out.h").symlink_to(tmp_path / "real.h")
+    assert main(["map", "apce_8x6", "--params", str(params), *GRID, "--format", "c",
+                 "--out", str(tmp_path / "out.h")]) == 2
+    err = capsys.readouterr().err
+    assert "--out (sidecar): " in err and "refusing to overwrite an input" in err
+    assert params.read_bytes() == before and (tmp_path / "real.h").read_text() == "old\n"
+
+
+def test_map_refuses_a_plot_folder_that_is_another_output_before_any_work(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(["map", "apce_8x6", *GRID, "--out", "q.nc", "--plot", "q.nc"]) == 2
+    assert "--plot: q.nc is also the file of --out; give outputs different names" in capsys.readouterr().err
+    assert main(["map", "apce_8x6", *GRID, "--format", "csv", "--out", "q3.csv", "--plot", "q3.csv.json"]) == 2
+    assert "--plot: q3.csv.json is also the file of --out (sidecar)" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []  # nothing built, nothing written

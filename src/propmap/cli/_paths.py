@@ -211,12 +211,18 @@ def _probe(option: str, folder: Path, name: str) -> None:
             os.unlink(tmp)
 
 
-def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
-    """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``."""
+def check_out_dir(option: str, out_dir: Path, names, inputs=(), others=()) -> list[Path]:
+    """:func:`check_outputs` for the files ``names`` a command writes inside ``out_dir``, with
+    ``others``, (option, path) of the command's other outputs: the folder may not be one of them
+    (``map --out q.nc --plot q.nc`` built the map, wrote it, then failed on the folder: an audit,
+    stop 100), nor a file in it one of them."""
     from ..io.inputs import short_path
 
     if out_dir is None or str(out_dir) == "":
         raise InputError(f"{option}: the path is empty")
+    for other, path in others:
+        if path is not None and os.path.realpath(out_dir) == os.path.realpath(path):
+            raise InputError(f"{option}: {out_dir} is also the file of {other}; give outputs different names")
     try:
         exists = out_dir.exists()
     except OSError as exc:  # a name too long for the system, a loop of links
@@ -224,5 +230,5 @@ def check_out_dir(option: str, out_dir: Path, names, inputs=()) -> list[Path]:
     if exists and not out_dir.is_dir():
         raise InputError(f"{option}: {out_dir} exists and is not a folder")
     paths = [out_dir / n for n in names]
-    check_outputs([(option, p) for p in paths], inputs)
+    check_outputs([*others, *[(option, p) for p in paths]], inputs)
     return paths

@@ -178,7 +178,10 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
                       max_error_pct)
     only = _check_options(ctx, prop, out, fmt, c_header, check_points, all_props, only, max_error_pct, plot)
     inputs = [params_spec, prop, c_header.vehicle, *vehicle_inputs(c_header.vehicle)]
-    check_outputs([("--out", out), ("--out (sidecar)", out.with_name(out.name + ".json"))], inputs)
+    from ..io.mapfile import sidecar_path, written_path
+
+    outputs = [("--out", out), ("--out (sidecar)", sidecar_path(written_path(out)))]
+    check_outputs(outputs, inputs)
     veh = reading = None
     if c_header.vehicle is not None:
         from ._vehicle import _export_reading
@@ -211,7 +214,7 @@ def map_command(prop, axes, params_spec, collective_deg, out, fmt, c_header, che
         if collective_deg is not None:
             params, label = _with_collective(params, label, collective_deg)
         rpm, V, inc = _axes(propeller, axes)
-        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs) if plot.plot_dir is not None else []
+        plots = _plot_files(plot.plot_dir, rpm, plot.plot_rpm, inputs, outputs) if plot.plot_dir is not None else []
     t0 = time.perf_counter()
     with _scheduler(scheduler) as client:
         if all_props:
@@ -442,8 +445,9 @@ def _catalogue_maps(out: Path, names, props, rpm, V, inc, check_points, client, 
                 combined.close()
 
 
-def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs) -> list:
-    """(node rpm, figure path) of each contour map, checked as outputs before any work.
+def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs, outputs=()) -> list:
+    """(node rpm, figure path) of each contour map, checked as outputs before any work, beside the
+    command's ``outputs`` ((option, path): the map and its sidecar).
 
     Raises
     ------
@@ -473,7 +477,7 @@ def _plot_files(plot_dir: Path, rpm, plot_rpm: str | None, inputs) -> list:
             if abs(node - r) > 1e-9 * node:
                 warn(f"--plot-rpm {part.strip():.40}: drawn at the nearest node of the rpm axis, {node:.0f} rpm (maps "
                      "are drawn at nodes; give --rpm with that value as a node to draw it)")
-    paths = check_out_dir("--plot", plot_dir, [f"map_contours_{n:.0f}rpm.png" for n in nodes], inputs)
+    paths = check_out_dir("--plot", plot_dir, [f"map_contours_{n:.0f}rpm.png" for n in nodes], inputs, outputs)
     return list(zip(nodes, paths))
 
 

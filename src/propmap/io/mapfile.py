@@ -324,6 +324,27 @@ def sidecar_path(path) -> Path:
     return path.with_name(path.name + ".json")
 
 
+def written_path(path) -> Path:
+    """Where :func:`write_with_sidecar` writes the map file ``path``: the file a symbolic link to
+    an existing file points to (written through, io.atomic), else ``path``; its sidecar is
+    :func:`sidecar_path` of this, beside the file, not beside the link, where opening the file
+    found none (a review). A command checks that sidecar, not one beside the link (a
+    link's sidecar overwrote an input file of that name beside its target: an audit, stop 100).
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    Path
+    """
+    path = as_path(path)
+    if path.is_symlink() and path.exists():
+        return Path(os.path.realpath(path))
+    return path
+
+
 def _json_safe(value):
     """``value`` with every non-finite float replaced by None (JSON null): strict JSON."""
     if isinstance(value, dict):
@@ -400,9 +421,7 @@ def write_with_sidecar(ds, path, write) -> list[Path]:
     """
     from .atomic import atomic_paths, file_sha256
 
-    path = as_path(path)
-    if path.is_symlink() and path.exists():  # (written through, io.atomic: its sidecar beside the file it points to,
-        path = Path(os.path.realpath(path))  # not beside the link, where opening the file found none: a review)
+    path = written_path(path)
     side = sidecar_path(path)
     with atomic_paths([path, side]) as (tmp, tmp_side):
         write(tmp)
