@@ -116,8 +116,14 @@ def test_edited_model_of_a_map_is_refused_by_check(tiny, name):
     change, match = MODEL_EDITS[name]
     attrs = {**tiny.attrs, **change}
     attrs = {k: v for k, v in attrs.items() if v is not None}
-    rm = RotorMap(tiny.assign_attrs(attrs) if "params_json" in attrs else tiny.drop_attrs(deep=False)
-                  .assign_attrs(attrs))
+    edited = tiny.assign_attrs(attrs) if "params_json" in attrs else tiny.drop_attrs(deep=False).assign_attrs(attrs)
+    if "params_json" in change and change["params_json"] is not None:
+        # a record the parameter files' ranges refuse: refused on opening since stop 100 (docs/simulators.md says
+        # so; a VehicleMap took an unreadable record as none and so another propeller's map)
+        with pytest.raises(ValueError, match=re.escape(match)):
+            RotorMap(edited)
+        return
+    rm = RotorMap(edited)
     with pytest.raises(ValueError, match=re.escape(match)):
         rm.check(5)
 

@@ -185,3 +185,33 @@ def test_map_refuses_a_plot_folder_that_is_another_output_before_any_work(tmp_pa
     assert main(["map", "apce_8x6", *GRID, "--format", "csv", "--out", "q3.csv", "--plot", "q3.csv.json"]) == 2
     assert "--plot: q3.csv.json is also the file of --out (sidecar)" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []  # nothing built, nothing written
+
+
+def test_a_map_whose_parameter_record_is_unreadable_does_not_open(small_map, tmp_path):
+    # RotorMap.open took params_json = "{" (docs/simulators.md: held to the parameter files'
+    # ranges on opening); a VehicleMap then read it as a map without a record and took it for
+    # another propeller of the same size (apce_8x8 rotors: 20.81 N against the model's 22.18 N)
+    from propmap.maps import RotorMap
+
+    _, _, ds = small_map
+    for record, match in (("{", "attribute params_json is not JSON"),
+                          ('{"section_model": "cambered", "cl_alpha": 1e9}', "cl_alpha must be a finite number in")):
+        with pytest.raises(ValueError, match=match):
+            RotorMap(ds.assign_attrs(params_json=record))
+        path = tmp_path / "m.nc"
+        ds.assign_attrs(params_json=record).to_netcdf(path)
+        with pytest.raises(ValueError, match="m.nc: .*" + match):
+            RotorMap.open(path)
+    RotorMap(ds)  # the intact record opens
+
+
+def test_a_vehicle_map_without_a_recorded_density_asks_for_rho(small_map):
+    from propmap.maps import RotorMap
+    from propmap.vehicle import VehicleMap, read_vehicle
+
+    _, _, ds = small_map
+    bare = RotorMap(ds.drop_attrs(deep=False).assign_attrs({k: v for k, v in ds.attrs.items() if k != "rho_kg_m3"}))
+    veh = read_vehicle("quadrotor")
+    with pytest.raises(ValueError, match=r"rho: the first map records no density .*give rho="):
+        VehicleMap(veh, bare)
+    assert VehicleMap(veh, bare, rho=1.2).wrench([0.0, 0, 0], [0.0, 0, 0], [900.0] * 4).force.reshape(-1)[2] > 0

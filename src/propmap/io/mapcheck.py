@@ -364,7 +364,41 @@ def check_dataset(ds) -> None:
         _check_axis(ds, d)
     _check_coordinates(ds)
     check_attributes(ds.attrs)
+    if "params_json" in ds.attrs:  # (RotorMap.open took any record, so a VehicleMap took another propeller's
+        _recorded_params(ds.attrs)  # map as one without it: an audit, stop 100)
     _check_variables(ds)
+
+
+def _recorded_params(attrs: dict):
+    """The section set of a map's ``params_json`` (SI, angles in rad), held to the ranges of a
+    parameter file (io.params_file, angles in degrees there) with the map's air where it records
+    it; a ValueError naming ``params_json`` where the record is not JSON, not an object or out
+    of range (:func:`check_dataset` calls it on every map that has the attribute)."""
+    from .calibration import params_from_si
+    from .params_file import DEG_KEYS, params_from_dict
+
+    try:
+        si = json.loads(attrs["params_json"])
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"attribute params_json is not JSON ({exc})") from None
+    if not isinstance(si, dict):
+        raise ValueError(f"attribute params_json must be a JSON object, got {short_repr(si)}")
+    # a map written before the radial flow's drag existed (2026-11-24) was made without it,
+    # whatever the record's default is now
+    si.setdefault("radial_drag", False)
+    si.setdefault("inplane_induction", False)  # (2026-11-25) likewise
+    # the ranges of a parameter file (angles in degrees there), then the exact SI record
+    form = {({v: k for k, v in DEG_KEYS.items()}.get(k, k)): (math.degrees(v) if k in DEG_KEYS.values()
+                                                             and isinstance(v, numbers.Real) else v)
+            for k, v in si.items()}
+    form.update({k: attrs[a] for k, a in (("rho", "rho_kg_m3"), ("mu", "mu_Pa_s"),
+                                          ("speed_of_sound", "speed_of_sound_m_s")) if a in attrs})
+    form = {k: (v.item() if isinstance(v, np.generic) else v) for k, v in form.items()}
+    params_from_dict(form, where="attribute params_json")
+    try:
+        return params_from_si(si)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"the recorded parameters are invalid ({exc})") from None
 
 
 def map_model(attrs: dict):
@@ -403,8 +437,6 @@ def map_model(attrs: dict):
     from ..core.airfoil import Air
     from ..core.geometry import Propeller
     from ..core.solver import Discretization
-    from .calibration import params_from_si
-    from .params_file import DEG_KEYS, params_from_dict
 
     need = ("propeller", "diameter_m", "n_blades", "geometry_r_m", "geometry_chord_m", "geometry_theta_rad",
             "params_json", "rho_kg_m3", "mu_Pa_s", "speed_of_sound_m_s", "n_radial", "n_azimuth")
@@ -412,25 +444,8 @@ def map_model(attrs: dict):
     if missing:
         raise ValueError(f"the map does not record the model that made it (lacks {', '.join(missing)})")
     check_attributes(attrs)
+    params = _recorded_params(attrs)
     try:
-        si = json.loads(attrs["params_json"])
-    except ValueError as exc:
-        raise ValueError(f"attribute params_json is not JSON ({exc})") from None
-    if not isinstance(si, dict):
-        raise ValueError(f"attribute params_json must be a JSON object, got {short_repr(si)}")
-    # a map written before the radial flow's drag existed (2026-11-24) was made without it,
-    # whatever the record's default is now
-    si.setdefault("radial_drag", False)
-    si.setdefault("inplane_induction", False)  # (2026-11-25) likewise
-    # the ranges of a parameter file (angles in degrees there), then the exact SI record
-    form = {({v: k for k, v in DEG_KEYS.items()}.get(k, k)): (math.degrees(v) if k in DEG_KEYS.values()
-                                                             and isinstance(v, numbers.Real) else v)
-            for k, v in si.items()}
-    form.update(rho=attrs["rho_kg_m3"], mu=attrs["mu_Pa_s"], speed_of_sound=attrs["speed_of_sound_m_s"])
-    form = {k: (v.item() if isinstance(v, np.generic) else v) for k, v in form.items()}
-    params_from_dict(form, where="attribute params_json")
-    try:
-        params = params_from_si(si)
         prop = Propeller(name=attrs["propeller"], radius=float(attrs["diameter_m"]) / 2,
                          n_blades=int(attrs["n_blades"]), r=_array(attrs, "geometry_r_m"),
                          chord=_array(attrs, "geometry_chord_m"), theta=_array(attrs, "geometry_theta_rad"),

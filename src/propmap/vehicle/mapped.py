@@ -135,7 +135,7 @@ class VehicleMap:
         number of maps other than 1 or the number of rotors, a map of another blade geometry
         than its rotor's propeller (without the record: another diameter, by more than 1%, or
         blade count), a map of another parameter set than its rotor's own, or ``rho`` not a
-        positive finite number.
+        positive finite number, or not given where the first map records no density.
 
     Warns
     -----
@@ -185,6 +185,9 @@ class VehicleMap:
                           "holds no induced velocity; each rotor is evaluated in the freestream", UserWarning,
                           stacklevel=2)
         # (any rho was taken: -1 reversed the airframe drag, NaN made every force NaN, a user-level audit, 2026-11-30)
+        if rho is None and "rho_kg_m3" not in maps[0].attrs:  # (a bare KeyError: an audit, stop 100)
+            raise ValueError("rho: the first map records no density (attribute rho_kg_m3, a map of another program): "
+                             "give rho= [kg/m^3] for the airframe drag")
         self._rho = float(maps[0].attrs["rho_kg_m3"]) if rho is None else checked("rho", rho, 0.0, low_open=True,
                                                                                      unit="kg/m^3")
 
