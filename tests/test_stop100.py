@@ -215,3 +215,22 @@ def test_a_vehicle_map_without_a_recorded_density_asks_for_rho(small_map):
     with pytest.raises(ValueError, match=r"rho: the first map records no density .*give rho="):
         VehicleMap(veh, bare)
     assert VehicleMap(veh, bare, rho=1.2).wrench([0.0, 0, 0], [0.0, 0, 0], [900.0] * 4).force.reshape(-1)[2] > 0
+
+
+def test_a_dask_clusters_progress_bar_stays_off_stdout(capsys, monkeypatch):
+    # distributed's text bar wrote to stdout: `map --scheduler ... --json` was no JSON
+    import sys
+
+    from distributed import Client, LocalCluster
+
+    from propmap.maps import build_map
+
+    prop = pm.load_propeller("apce_8x6")
+    axes = (np.array([400.0, 700.0]), np.array([0.0, 10.0]), np.radians([0.0, 60.0]))
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \
+            Client(cluster) as client:
+        capsys.readouterr()
+        monkeypatch.setattr(sys.stderr, "isatty", lambda: True)  # (a terminal: the bar is drawn, on stderr)
+        build_map(prop, pm.CamberedParams(), *axes, n_check=0, chunk_points=4, scheduler=client, progress=True)
+        out, err = capsys.readouterr()
+    assert out == "" and "Completed" in err

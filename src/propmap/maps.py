@@ -18,6 +18,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 
 import numpy as np
 
@@ -333,10 +334,13 @@ def _compute(parts, scheduler, progress: bool):
         client = scheduler_client(scheduler) if own else scheduler
         try:
             future = client.compute(parts)
-            if progress:
+            if progress and sys.stderr.isatty():  # (as the local bar: on a terminal's stderr only; distributed's
+                import contextlib  # text bar writes to stdout, which broke map --json's output: an audit, stop 100)
+
                 from distributed import progress as dist_progress
 
-                dist_progress(future)
+                with contextlib.redirect_stdout(sys.stderr):
+                    dist_progress(future)
             result = future.result()
         finally:
             if own:
