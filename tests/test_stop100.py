@@ -234,3 +234,40 @@ def test_a_dask_clusters_progress_bar_stays_off_stdout(capsys, monkeypatch):
         build_map(prop, pm.CamberedParams(), *axes, n_check=0, chunk_points=4, scheduler=client, progress=True)
         out, err = capsys.readouterr()
     assert out == "" and "Completed" in err
+
+
+def test_sighup_stops_a_run_like_sigterm_and_leaves_no_temporary_file(tmp_path):
+    # a closed terminal's SIGHUP killed the run without a word and left map --all's parts folder
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    src = tmp_path / "many.csv"
+    src.write_text("rpm,airspeed,incidence_deg\n" + "8000,10,45\n" * 400_000)
+    proc = subprocess.Popen([sys.executable, "-m", "propmap", "loads", "apce_8x6", "--points", str(src),
+                             "--out", str(tmp_path / "out.csv")], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        if any(p.name.startswith(".out.csv.") for p in tmp_path.iterdir()):
+            break
+        time.sleep(0.05)
+    assert proc.poll() is None, "the run ended before it could be stopped"
+    proc.send_signal(signal.SIGHUP)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 128 + signal.SIGHUP, err
+    assert b"Traceback" not in err
+    assert [p.name for p in tmp_path.iterdir()] == ["many.csv"]
+
+
+def test_an_ignored_sighup_stays_ignored(capsys):
+    # under nohup SIGHUP is ignored: the CLI must not install its handler over that
+    import signal
+
+    before = signal.signal(signal.SIGHUP, signal.SIG_IGN)
+    try:
+        assert main(["props"]) == 0
+        assert signal.getsignal(signal.SIGHUP) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGHUP, before)
+    capsys.readouterr()

@@ -91,7 +91,7 @@ def main(argv: list[str] | None = None) -> int:
     ``propmap: error: ...`` on stderr, never a traceback. propmap's own warnings are printed
     as ``propmap: warning: ...`` lines; other libraries' warnings (NumPy's and SciPy's
     numerical RuntimeWarnings, deprecation notices) are not printed (the results carry their
-    own flags). SIGTERM stops the run like an
+    own flags). SIGTERM, and SIGHUP where it is not ignored (``nohup``), stop the run like an
     exception, so that no temporary output file is left behind (one that arrives while C
     code calls back into Python, as numba's compiler does, is delivered again after it).
     On a terminal a run that compiles the model's kernels (a fresh installation's first) says
@@ -162,10 +162,16 @@ _RECORDING = ("map", "export-sim", "fit", "demo")
 
 
 def _main(argv: list[str] | None) -> int:
+    previous = {}
+    # SIGHUP (a closed terminal, a dropped ssh session) as SIGTERM where it is not ignored (nohup): it killed a run
+    # without a word and left map --all's parts folder behind (an audit, stop 100)
+    stops = [signal.SIGTERM] + [s for s in (getattr(signal, "SIGHUP", None),)
+                                if s is not None and signal.getsignal(s) is signal.SIG_DFL]
     try:
-        previous = signal.signal(signal.SIGTERM, _on_sigterm)
+        for s in stops:
+            previous[s] = signal.signal(s, _on_sigterm)
     except ValueError:  # not the main thread
-        previous = None
+        pass
     caught: list = []
     said: list[str] = []  # the error line, printed after the warnings (the last line is the error)
     try:
@@ -220,8 +226,8 @@ def _main(argv: list[str] | None) -> int:
         for timer in _redelivery:
             timer.cancel()
         _redelivery.clear()
-        if previous is not None:
-            signal.signal(signal.SIGTERM, previous)
+        for s, handler in previous.items():
+            signal.signal(s, handler)
         seen = set()
         ours = [w for w in caught if issubclass(w.category, UserWarning) and str(w.filename).startswith(_PACKAGE_DIR)]
         for w in ours:

@@ -25,8 +25,8 @@ __all__ = ["atomic_path", "atomic_paths", "atomic_write", "file_sha256", "normal
 
 @contextlib.contextmanager
 def signals_held():
-    """Hold SIGINT and SIGTERM while the block runs, then deliver the first that arrived to the
-    handlers of before (the CLI's turn them into KeyboardInterrupt and SystemExit).
+    """Hold SIGINT, SIGTERM and SIGHUP while the block runs, then deliver the first that arrived to
+    the handlers of before (the CLI's turn them into KeyboardInterrupt and SystemExit).
 
     For a library call that must not be interrupted by a Python exception: netCDF's HDF5
     writer holds a lock, and an exception raised inside ``Dataset.to_netcdf`` by a signal
@@ -53,7 +53,7 @@ def signals_held():
 
     before = {}
     try:
-        for s in (signal.SIGINT, signal.SIGTERM):
+        for s in (getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, n)):
             if signal.getsignal(s) is not None:  # (None: a handler not installed from Python, which cannot be put back)
                 before[s] = signal.signal(s, hold)
         yield
