@@ -271,3 +271,53 @@ def test_an_ignored_sighup_stays_ignored(capsys):
     finally:
         signal.signal(signal.SIGHUP, before)
     capsys.readouterr()
+
+
+@pytest.mark.parametrize("raised", [RuntimeError("NetCDF: HDF error"), PermissionError(13, "Permission denied")])
+def test_a_full_disk_under_a_netcdf_write_is_said_as_such(small_map, tmp_path, monkeypatch, raised):
+    # netCDF-C says a full disk as RuntimeError("NetCDF: HDF error") (an "internal error" with the file
+    # clean-up's traceback) or, creating the file, as EACCES ("Permission denied")
+    import errno
+    import shutil
+    from collections import namedtuple
+
+    import xarray as xr
+
+    from propmap.io.mapfile import to_netcdf_here
+
+    _, _, ds = small_map
+
+    def fail(self, *args, **kwargs):
+        raise raised
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", fail)
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(shutil, "disk_usage", lambda p: usage(40960, 40960, 0))
+    with pytest.raises(OSError) as info:
+        to_netcdf_here(ds, tmp_path / "m.nc")
+    assert info.value.errno == errno.ENOSPC and info.value.filename == str(tmp_path)
+    monkeypatch.setattr(shutil, "disk_usage", lambda p: usage(2**40, 0, 2**40))  # space left: not a full disk
+    with pytest.raises(OSError) as info:
+        to_netcdf_here(ds, tmp_path / "m.nc")
+    if isinstance(raised, PermissionError):
+        assert info.value is raised
+    else:
+        assert info.value.errno == errno.EIO and "the netCDF library could not write the map (NetCDF: HDF error)" \
+            in str(info.value)
+
+
+def test_a_full_disk_under_map_is_one_line_exit_2(tmp_path, monkeypatch, capsys):
+    import shutil
+    from collections import namedtuple
+
+    import xarray as xr
+
+    def fail(self, *args, **kwargs):
+        raise RuntimeError("NetCDF: HDF error")
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", fail)
+    monkeypatch.setattr(shutil, "disk_usage", lambda p: namedtuple("u", "total used free")(1, 1, 0))
+    assert main(["map", "apce_8x6", *GRID, "--out", str(tmp_path / "m.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.splitlines()[-1] == f"propmap: error: No space left on device: {tmp_path}"
+    assert list(tmp_path.iterdir()) == []

@@ -33,6 +33,7 @@ import json
 import math
 import os
 import stat
+import sys
 import threading
 from pathlib import Path
 
@@ -148,10 +149,46 @@ def to_netcdf_here(ds, path, **kwargs) -> None:
 
     Raises
     ------
+    OSError
+        The netCDF/HDF5 library's write failed (its bare ``RuntimeError: NetCDF: HDF error``,
+        once an "internal error" with a traceback from the file's clean-up, or a
+        ``PermissionError`` on creating the file): ENOSPC naming the folder where it has less
+        free space than the map's size plus 1 MiB (a full disk: an audit, stop 100), else the
+        PermissionError as raised, or EIO with the library's words.
     Exception
-        Whatever xarray and the netCDF/HDF5 libraries raise.
+        Whatever else xarray and the netCDF/HDF5 libraries raise.
     """
-    ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
+    failure = None
+    hook = sys.unraisablehook
+
+    def quiet(unraisable):  # (the failed file's clean-up, xarray's file manager closing it, fails the same way:
+        # its traceback was printed as "Exception ignored in ... CachingFileManager.__del__")
+        if not (unraisable.exc_type is RuntimeError
+                and "CachingFileManager" in getattr(unraisable.object, "__qualname__", "")):
+            hook(unraisable)
+
+    sys.unraisablehook = quiet
+    try:
+        ds.to_netcdf(path, engine="netcdf4", compute=False, **kwargs).compute(scheduler="synchronous")
+    except (RuntimeError, PermissionError) as exc:  # (netCDF-C says a full disk as EACCES when it creates the file)
+        failure = exc
+    finally:
+        sys.unraisablehook = hook
+    if failure is None:
+        return
+    import errno
+    import shutil
+
+    folder = Path(path).parent
+    try:
+        free = shutil.disk_usage(folder).free
+    except OSError:
+        free = None
+    if free is not None and free < ds.nbytes + 2**20:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(folder)) from None
+    if isinstance(failure, PermissionError):
+        raise failure
+    raise OSError(errno.EIO, f"the netCDF library could not write the map ({failure})", str(path)) from None
 
 
 def _probe(path, where: str, size: int) -> None:
