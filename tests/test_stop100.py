@@ -321,3 +321,23 @@ def test_a_full_disk_under_map_is_one_line_exit_2(tmp_path, monkeypatch, capsys)
     err = capsys.readouterr().err
     assert err.splitlines()[-1] == f"propmap: error: No space left on device: {tmp_path}"
     assert list(tmp_path.iterdir()) == []
+
+
+def test_out_of_grid_errors_of_map_wrenches_name_the_callers_arguments_and_the_rotor(small_map):
+    # "omega = 5000.0 is outside the map's grid": not rotor_omega, no rotor; "airspeed = ...": no argument
+    from propmap.maps import RotorMap
+    from propmap.vehicle import VehicleMap, read_vehicle
+
+    _, _, ds = small_map  # rpm 4000-9000 (419-942 rad/s), airspeed 0-15 m/s
+    m = RotorMap(ds)
+    vm = VehicleMap(read_vehicle("quadrotor"), m)
+    one = [800.0, 800.0, 5000.0, 800.0]
+    for v, om in (([0.0, 0, 0], one), (np.zeros((2, 3)), [one] * 2)):  # one step; a batch
+        with pytest.raises(ValueError, match=r"^rotor_omega: rotor 3's omega = 5000.0 is outside the map's grid"):
+            vm.wrench(v, [0.0, 0, 0], om)
+    for w in ([0.0, 0, 400], [[0.0, 0, 400]] * 2):
+        with pytest.raises(ValueError, match=r"^velocity, angular_velocity and wind give rotor \d's hub airspeed = "):
+            vm.wrench([0.0, 0, 0], w, [800.0] * 4)
+    for v in ([30.0, 0, 0], [[30.0, 0, 0]]):
+        with pytest.raises(ValueError, match=r"^velocity and axis give the hub's airspeed = 30.0 is outside"):
+            m.wrench(v, [0.0, 0, 1], 800.0)

@@ -15,7 +15,7 @@ import threading
 import numpy as np
 
 from .core.units import RPM
-from .core._interp import snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
+from .core._interp import HUB_WORDS, snap_airspeed, snap_airspeed_scalar, snap_incidence, snap_incidence_scalar
 from .core._numbers import SEED_MAX, integer
 from .core._plain import SPINS, plain_float, plain_vector
 from .core.geometry import broadcast_readonly, has_bool, refuse_masked
@@ -382,7 +382,13 @@ class RotorMap:
         except ValueError:
             raise ValueError(f"omega (shape {omega_shape}) must broadcast with the samples of velocity and axis "
                              f"(shape {speed.shape}: velocity {np.shape(velocity)}, axis {np.shape(axis)})") from None
-        ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
+        try:
+            ml = self.loads(omega, speed, beta, out_of_grid=out_of_grid)
+        except ValueError as exc:  # (the airspeed and incidence are no arguments here: named by what gives them)
+            text = str(exc)
+            if text.startswith(("airspeed = ", "incidence = ")):
+                raise ValueError(HUB_WORDS + text) from None
+            raise
         _check_spin(s, np.shape(ml.thrust))
         force, moment = wrench_vectors(ml.thrust, ml.drag, ml.torque, ml.rolling_moment, V, z, s,
                                        side_force=ml.side_force, pitching_moment=ml.pitching_moment)

@@ -99,6 +99,9 @@ def _cubic_weights(ax, x):
             h10 * a3 + h11 * b3)
 
 
+#: how RotorMap.wrench names the hub's airspeed and incidence outside the grid, quantities the caller
+#: gives as velocity and axis (VehicleMap names the rotor and its own arguments in their place)
+HUB_WORDS = "velocity and axis give the hub's "
 #: an airspeed up to this [m/s] is still air for a map whose airspeed axis starts at 0: any incidence is on its
 #: incidence axis (the loads at 1e-6 m/s differ from hover's by far less than the interpolation's error)
 HOVER_SPEED = 1e-6

@@ -396,7 +396,8 @@ def _json_safe(value):
 def map_metadata(ds) -> dict:
     """A map's metadata as its sidecar holds it (strict JSON values): its attributes (propeller,
     parameter set, air, model, measured error), ``dims`` (axis sizes), ``axes`` (each axis'
-    first and last value, SI units) and ``variables`` (each variable's unit).
+    first and last value in its own unit: ``rpm`` [rpm], ``airspeed`` [m/s], ``incidence_deg``
+    [deg]) and ``variables`` (each variable's unit).
 
     Parameters
     ----------

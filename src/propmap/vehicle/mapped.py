@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core._interp import vehicle_point
+from ..core._interp import HUB_WORDS, vehicle_point
 from ..core._plain import plain_vector
 from ..core._numbers import checked
 from ..core.body import body_drag_force
@@ -225,6 +225,19 @@ class VehicleMap:
             force = force + body_drag_force(self._body, v[None, :], np.zeros((1, 3)), self._rho)
         return VehicleMapWrench(force=force, moment=out[1], flagged=np.array([res[3, 1] != 0.0]))
 
+    @staticmethod
+    def _rotor_error(k: int, exc: ValueError) -> ValueError:
+        """A rotor map's error in the caller's terms: ``omega`` is rotor ``k``'s entry of
+        ``rotor_omega``, and the hub's airspeed and incidence come from ``velocity``,
+        ``angular_velocity`` and ``wind`` (said as the map's own quantities, no rotor named,
+        until stop 100: an audit)."""
+        text = str(exc)
+        if text.startswith("omega"):
+            return ValueError(f"rotor_omega: rotor {k}'s {text}")
+        if text.startswith(HUB_WORDS):
+            return ValueError(f"velocity, angular_velocity and wind give rotor {k}'s hub {text[len(HUB_WORDS):]}")
+        return exc
+
     def _step(self, air_v: list, w: list, om: list, out_of_grid: str):
         """One step's (force, moment, flagged), shapes (1, 3), (1, 3), (1,): the sums of
         :meth:`wrench` in Python floats, each rotor by RotorMap.wrench's one-rotor path."""
@@ -237,7 +250,10 @@ class VehicleMap:
         for i, m in enumerate(self.maps):
             px, py, pz = self._pos_list[i]
             v_hub = np.array((vx + wy * pz - wz * py, vy + wz * px - wx * pz, vz + wx * py - wy * px))
-            res = m.wrench(v_hub, self._axes[i], float(om[i]), self._spin_list[i], out_of_grid=out_of_grid)
+            try:
+                res = m.wrench(v_hub, self._axes[i], float(om[i]), self._spin_list[i], out_of_grid=out_of_grid)
+            except ValueError as exc:
+                raise self._rotor_error(i + 1, exc) from None
             fx, fy, fz = res.force.tolist()
             mx, my, mz = res.torque.tolist()
             F[0] += fx
@@ -323,8 +339,16 @@ class VehicleMap:
             moment = np.zeros((N, 3))
             flagged = np.zeros(N, dtype=bool)
             for m, idx in self._groups:
-                res = m.wrench(v_hub[:, idx, :], self._axes[idx], om[:, idx], self._spins[idx],
-                               out_of_grid=out_of_grid)
+                try:
+                    res = m.wrench(v_hub[:, idx, :], self._axes[idx], om[:, idx], self._spins[idx],
+                                   out_of_grid=out_of_grid)
+                except ValueError as exc:  # (the rotor named: its map asked alone)
+                    for j in idx:
+                        try:
+                            m.wrench(v_hub[:, j, :], self._axes[j], om[:, j], self._spins[j], out_of_grid=out_of_grid)
+                        except ValueError as one:
+                            raise self._rotor_error(int(j) + 1, one) from None
+                    raise exc
                 force += res.force.sum(axis=1)
                 moment += (cross3(self._pos[idx][None, :, :], res.force) + res.torque).sum(axis=1)
                 flagged |= np.asarray(res.loads.flagged).any(axis=1)
