@@ -341,3 +341,33 @@ def test_out_of_grid_errors_of_map_wrenches_name_the_callers_arguments_and_the_r
     for v in ([30.0, 0, 0], [[30.0, 0, 0]]):
         with pytest.raises(ValueError, match=r"^velocity and axis give the hub's airspeed = 30.0 is outside"):
             m.wrench(v, [0.0, 0, 1], 800.0)
+
+
+def test_subset_and_select_refuse_integer_indices():
+    # LoadData.subset(np.argsort(-omega)) kept 139 of 140 points in their order (the index 0 read
+    # as False): integer indices are refused, naming the mask
+    from propmap.identify import loads_from_catalogue
+    from propmap.io.catalogue import get_entry
+
+    d = loads_from_catalogue(get_entry("apce_8x6"), pm.load_propeller("apce_8x6").diameter)
+    n = d.omega.size
+    with pytest.raises(ValueError, match=r"LoadData.subset: mask must be an array of booleans of shape"):
+        d.subset(np.argsort(-d.omega))
+    with pytest.raises(ValueError, match=r"LoadData.subset: mask must have shape"):
+        d.subset(np.ones(n - 1, bool))
+    keep = d.omega > np.median(d.omega)
+    assert d.subset(keep).omega.size == int(keep.sum())
+    assert d.subset(list(keep)).omega.size == int(keep.sum())
+
+
+def test_flight_samples_select_refuses_integer_indices():
+    from propmap.identify import FlightSamples
+
+    n = 5
+    s = FlightSamples(log_names=("a",), log_index=np.zeros(n, int), t=np.arange(n) * 0.1,
+                      velocity=np.zeros((n, 3)), angular_velocity=np.zeros((n, 3)), rotor_omega=np.full((n, 4), 900.0),
+                      rotor_acceleration=np.zeros((n, 4)), force=np.zeros((n, 3)), moment=None, reference_force=None,
+                      reference_moment=None, rate_hz=10.0)
+    with pytest.raises(ValueError, match=r"FlightSamples.select: mask must be an array of booleans of shape \(5,\)"):
+        s.select([4, 0, 1])
+    assert s.select(np.arange(n) > 1).t.tolist() == pytest.approx([0.2, 0.3, 0.4])

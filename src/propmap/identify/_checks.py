@@ -62,3 +62,35 @@ def first_length(owner: str, name: str, value) -> int:
     if len(shape) != 1:
         raise ValueError(f"{owner}.{name} must have shape (N,), got {shape}")
     return shape[0]
+
+
+def boolean_mask(owner: str, mask, n: int) -> np.ndarray:
+    """``mask`` as a boolean array of shape (n,), for ``owner``'s selection of rows.
+
+    Parameters
+    ----------
+    owner : str
+        The method, for the message (``LoadData.subset``).
+    mask : array_like of bool, shape (n,)
+    n : int
+        The number of rows.
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+
+    Raises
+    ------
+    ValueError
+        ``mask`` not booleans (integer indices were read as truth values: the row of index 0
+        dropped, the order ignored, without a word, an identification-API audit, stop 100), or
+        not of shape (n,).
+    """
+    a = np.asarray(mask)
+    if a.dtype != bool:
+        raise ValueError(f"{owner}: mask must be an array of booleans of shape ({n},), one per row, got dtype "
+                         f"{a.dtype} (for indices, give a boolean array such as np.isin(np.arange({n}), indices); "
+                         "rows keep their order)")
+    if a.shape != (n,):
+        raise ValueError(f"{owner}: mask must have shape ({n},), one boolean per row, got {a.shape}")
+    return a

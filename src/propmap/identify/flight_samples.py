@@ -14,7 +14,7 @@ from ..core._numbers import checked
 from ..core.air import G0
 from ..io.flightlog import FlightLog
 from ..vehicle import Vehicle
-from ._checks import first_length, float_array
+from ._checks import boolean_mask, first_length, float_array
 
 __all__ = ["OMEGA_STOPPED", "GROUND_FRACTION", "GROUND_SPEED", "GROUND_RATE", "FlightSamples", "flight_samples"]
 
@@ -263,8 +263,13 @@ class FlightSamples:
         -------
         FlightSamples
             Every per-sample array cut to the samples kept (the rest as they are).
+
+        Raises
+        ------
+        ValueError
+            ``mask`` not booleans (integer indices are refused) or not of shape (N,).
         """
-        m = np.asarray(mask, bool)
+        m = boolean_mask("FlightSamples.select", mask, self.t.shape[0])
         kw = {}
         for name in ("log_index", "t", "velocity", "angular_velocity", "rotor_omega", "rotor_acceleration", "force",
                      "moment", "reference_force", "reference_moment"):

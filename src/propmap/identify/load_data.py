@@ -14,7 +14,7 @@ import numpy as np
 from ..core.geometry import short_repr
 from ..core._interp import snap_incidence
 from ..core.solver import COLLECTIVE_RANGE, OMEGA_MAX
-from ._checks import first_length, float_array
+from ._checks import boolean_mask, first_length, float_array
 
 #: where a rotation rate can come from (LoadData.speed_source)
 SPEED_SOURCES = ("rpm", "optical", "electrical")
@@ -195,10 +195,15 @@ class LoadData:
         Returns
         -------
         LoadData
-            Every per-point array cut to those points; source, notes, air density, the
-            conversions, ``comma_thousands`` and ``speed_source`` kept.
+            Every per-point array cut to those points, in their order; source, notes, air
+            density, the conversions, ``comma_thousands`` and ``speed_source`` kept.
+
+        Raises
+        ------
+        ValueError
+            ``mask`` not booleans (integer indices are refused) or not of shape (N,).
         """
-        mask = np.asarray(mask, bool)
+        mask = boolean_mask("LoadData.subset", mask, self.omega.shape[0])
         return LoadData(self.omega[mask], self.airspeed[mask], self.incidence[mask],
                         {k: v[mask] for k, v in self.measured.items()}, self.group[mask], self.source,
                         None if self.collective is None else self.collective[mask], self.notes, self.air_density,
