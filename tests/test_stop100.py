@@ -361,7 +361,7 @@ def test_subset_and_select_refuse_integer_indices():
 
 
 def test_flight_samples_select_refuses_integer_indices():
-    from propmap.identify import FlightSamples
+    from propmap.identify.flight_samples import FlightSamples
 
     n = 5
     s = FlightSamples(log_names=("a",), log_index=np.zeros(n, int), t=np.arange(n) * 0.1,
