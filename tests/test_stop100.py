@@ -371,3 +371,21 @@ def test_flight_samples_select_refuses_integer_indices():
     with pytest.raises(ValueError, match=r"FlightSamples.select: mask must be an array of booleans of shape \(5,\)"):
         s.select([4, 0, 1])
     assert s.select(np.arange(n) > 1).t.tolist() == pytest.approx([0.2, 0.3, 0.4])
+
+
+def test_loads_from_uiuc_files_refuses_a_file_given_twice(shared_data, tmp_path):
+    # a file listed twice counted its points twice (33 -> 50 points), its standard errors 0.75-0.85x
+    import shutil
+
+    from propmap.identify import DataError, loads_from_uiuc_files
+
+    files = sorted((shared_data / "uiuc_propdb" / "v1").glob("apce_8x6_*.txt"))[:2]
+    D = pm.load_propeller("apce_8x6").diameter
+    n = loads_from_uiuc_files(files, D).omega.size
+    with pytest.raises(DataError, match=r"paths: .* is the same file as .*: its points would count twice"):
+        loads_from_uiuc_files([*files, files[0]], D)
+    copy = tmp_path / files[1].name
+    shutil.copyfile(files[1], copy)
+    with pytest.raises(DataError, match=r"is a copy of"):
+        loads_from_uiuc_files([*files, copy], D)
+    assert loads_from_uiuc_files(files, D).omega.size == n

@@ -15,30 +15,20 @@ __all__ = ["check_out_dir", "check_outputs", "refuse_copies", "vehicle_inputs"]
 
 def refuse_copies(paths, option: str, consequence: str) -> None:
     """Refuse a file given twice under two names: the same file (a symbolic or a hard link) or a
-    byte-identical copy (SHA-256; only files that share a size are read), as ``option: X is the
-    same file as Y: <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
-    import hashlib
+    byte-identical copy (io.inputs.first_copy), as ``option: X is the same file as Y:
+    <consequence>``; a path that cannot be read, as ``option: X: no such file``."""
+    from ..io.inputs import first_copy, short_path
 
-    from ..io.inputs import short_path
-
-    stats = []
     for p in paths:
         try:
-            stats.append((p, os.stat(p)))
+            os.stat(p)
         except OSError as exc:  # (named as the option's, as its reader would)
             why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or str(exc)).lower()
             raise InputError(f"{option}: {short_path(p)}: {why}") from None
-    sizes = [st.st_size for _, st in stats]
-    seen: dict = {}
-    for p, st in stats:
-        keys = [((st.st_dev, st.st_ino), "the same file as")]
-        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
-            with open(p, "rb") as fh:
-                keys.append((hashlib.file_digest(fh, "sha256").hexdigest(), "a copy of"))
-        for key, what in keys:
-            if key in seen:
-                raise InputError(f"{option}: {short_path(p)} is {what} {short_path(seen[key])}: {consequence}")
-            seen[key] = p
+    copy = first_copy(paths)
+    if copy is not None:
+        p, what, earlier = copy
+        raise InputError(f"{option}: {short_path(p)} is {what} {short_path(earlier)}: {consequence}")
 
 
 def _same_file(a: Path, b: Path) -> bool:

@@ -450,3 +450,40 @@ def _check_number(value, label: str, error, where: str, *, integer: bool = False
     if isinstance(value, (bool, np.bool_)) or not ok:
         kind = "an integer" if integer else "a number"
         raise error(f"{where}: {label} must be {kind}, got {value!r}"[:300])
+
+
+def first_copy(paths):
+    """The first of ``paths`` that is a file given before it under another name: the same file (a
+    symbolic or a hard link, the same name again) or a byte-identical copy (SHA-256; only files
+    that share a size are read).
+
+    Parameters
+    ----------
+    paths : sequence of str or Path
+
+    Returns
+    -------
+    tuple of (Path, str, Path) or None
+        (the path, "the same file as" or "a copy of", the earlier path); None where every file
+        is given once.
+
+    Raises
+    ------
+    OSError
+        A path that cannot be stat'ed or read (missing, unreadable).
+    """
+    import hashlib
+
+    stats = [(Path(p), os.stat(p)) for p in paths]
+    sizes = [st.st_size for _, st in stats]
+    seen: dict = {}
+    for p, st in stats:
+        keys = [((st.st_dev, st.st_ino), "the same file as")]
+        if sizes.count(st.st_size) > 1:  # (only files of one size can be copies: the others are not read twice)
+            with open(p, "rb") as fh:
+                keys.append((hashlib.file_digest(fh, "sha256").hexdigest(), "a copy of"))
+        for key, what in keys:
+            if key in seen:
+                return p, what, seen[key]
+            seen[key] = p
+    return None
