@@ -389,3 +389,34 @@ def test_loads_from_uiuc_files_refuses_a_file_given_twice(shared_data, tmp_path)
     with pytest.raises(DataError, match=r"is a copy of"):
         loads_from_uiuc_files([*files, copy], D)
     assert loads_from_uiuc_files(files, D).omega.size == n
+
+
+def test_identification_arguments_are_checked_in_their_own_terms():
+    # report_text(max_residuals=-1) printed "the -1 largest"; fit_level_flight(start=[5, 2]) met a
+    # broadcasting error and start=[100, ...] was clipped unsaid; simulate_level_flight's pitch of
+    # -100 deg was said as LevelFlightData.pitch in radians, omega_bounds (-100, 3000) as omega
+    from propmap.identify import FitOptions, fit_level_flight, fit_loads, loads_from_catalogue, simulate_level_flight
+
+    veh = pm.read_vehicle("quadrotor")
+    true = pm.resolve_params("gill2017-apc").replace(M=30.0)
+    for kw, match in (({"pitch_deg": [-100.0]}, r"pitch_deg must be finite and in \(-90, 90\) deg, got -100.0"),
+                      ({"omega_bounds": (-100.0, 3000.0)}, r"omega_bounds must be \(low, high\) with 0 < low < high"),
+                      ({"omega_bounds": (200.0, 3000.0, 1.0)}, r"omega_bounds must be two numbers"),
+                      ({"airspeed": [-1.0]}, r"airspeed must be finite and >= 0 m/s, got -1.0")):
+        with pytest.raises(ValueError, match=match):
+            simulate_level_flight(veh, true, **{"airspeed": [5.0], "pitch_deg": [-10.0], **kw})
+    lf = simulate_level_flight(veh, true, np.linspace(2, 12, 8), -2.5 * np.linspace(2, 12, 8))
+    for start, match in (([5.0, 2.0], r"start must have 4 values, one per fitted parameter \(cl1, cl2, cd, alpha0\)"),
+                         ([100.0, 2.0, 1.0, 0.4], r"start: cl1 = 100.0 is outside its bounds \[0.5, 15\]"),
+                         ([np.nan, 2.0, 1.0, 0.4], r"start: cl1 = nan is outside"),
+                         ("abcd", r"start must be numbers")):
+        with pytest.raises(ValueError, match=match):
+            fit_level_flight(lf, veh, base=true, options=FitOptions(max_nfev=5), start=start)
+    prop = pm.load_propeller("apce_10x7")
+    d = loads_from_catalogue("apce_10x7", prop.diameter)
+    r = fit_loads(d.subset(np.isin(d.group, ["static_pg0811", "pg0812"])), prop,
+                  options=FitOptions(names=("cl_alpha", "cd_min"), prior=False))
+    for m in (-1, True, None, 2.5):
+        with pytest.raises(ValueError, match=r"max_residuals must be an integer >= 0"):
+            r.report_text(max_residuals=m)
+    assert "largest" in r.report_text(max_residuals=3)

@@ -163,7 +163,8 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     ValueError
         Fewer conditions than parameters + 1, a rotor count in ``data.omega`` other than the
         vehicle's, a rotor with its own parameter set (one set is fitted for every rotor), an
-        unknown parameter name, or body lift requested without body_area.
+        unknown parameter name, body lift requested without body_area, or a ``start`` of
+        another length than the fitted names, not finite or outside their bounds.
     SolverError
         From the rotor model.
     TypeError
@@ -179,7 +180,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     names = _level_flight_names(data, vehicle, base, options)
     make_data = _level_flight_residual(data, vehicle, names, base, air)
     make_residual, prior = _with_prior(make_data, names, base, options, scale=vehicle.weight)
-    x0 = _x0(names, options, base) if start is None else np.asarray(start, float)
+    x0 = _x0(names, options, base) if start is None else _checked_start(start, names, options)
     without = None
     no_body = replace(options, body_lift=False, progress=False, names=names[:-3])
     if options.body_lift:
@@ -204,6 +205,27 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
         result = _select_body_lift(result, best, without, data, vehicle, base, air, no_body, (nfev, elapsed))
     _warn_at_optimum(result, make_data, options)
     return result
+
+
+def _checked_start(start, names, options: FitOptions) -> np.ndarray:
+    """``start`` as one finite number per fitted name, within its bounds (a wrong length met a
+    broadcasting error, NaN "Initial guess is outside of provided bounds", a start beyond a bound
+    was clipped without a word: an API audit, stop 100)."""
+    from .optimizer import _bounds
+
+    try:
+        x = np.asarray(start, float)
+    except (TypeError, ValueError):
+        raise ValueError(f"start must be numbers, one per fitted parameter ({', '.join(names)}), got "
+                         f"{start!r:.60}") from None
+    if x.shape != (len(names),):
+        raise ValueError(f"start must have {len(names)} values, one per fitted parameter ({', '.join(names)}), got "
+                         f"shape {x.shape}")
+    lb, ub = _bounds(names, options)
+    for n, v, lo, hi in zip(names, x, lb, ub):
+        if not (math.isfinite(v) and lo <= v <= hi):
+            raise ValueError(f"start: {n} = {float(v)!r} is outside its bounds [{lo:g}, {hi:g}] (or not finite)")
+    return x
 
 
 def _level_flight_names(data: LevelFlightData, vehicle: Vehicle, base: SectionParams,

@@ -223,13 +223,22 @@ class FitResult:
         ----------
         max_residuals : int, optional
             At most this many residuals are listed (the largest in magnitude), with their
-            count; the JSON report (:meth:`to_dict`) has them all.
+            count, in [0, inf); the JSON report (:meth:`to_dict`) has them all.
 
         Returns
         -------
         str
             Lines; angles in degrees, marked ``[deg]``, the other parameters as fitted (SI).
+
+        Raises
+        ------
+        ValueError
+            ``max_residuals`` not an integer >= 0 (-1 printed "the -1 largest" and listed all
+            but one, True "the True largest": an API audit, stop 100).
         """
+        from ..core._numbers import integer
+
+        max_residuals = integer("max_residuals", max_residuals, 0)
         return "\n".join(_parameter_lines(self) + _dependence_lines(self) + _directions_lines(self)
                          + _fit_lines(self, max_residuals))
 

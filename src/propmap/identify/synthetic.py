@@ -57,8 +57,9 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
         ``params`` not a parameter set.
     ValueError
         ``airspeed`` and ``pitch_deg`` not numbers that broadcast to one shape (N,) (a single
-        condition may be given as two numbers), or no rotor speed in ``omega_bounds`` balances
-        the weight at some condition.
+        condition may be given as two numbers), an airspeed < 0 m/s, a pitch outside (-90, 90)
+        deg, ``omega_bounds`` not two numbers with 0 < low < high, or no rotor speed in
+        ``omega_bounds`` balances the weight at some condition.
     """
     check_vehicle(vehicle)  # (a name met an AttributeError, a user-level audit, 2026-11-30)
     air = model_air(params, air)
@@ -70,6 +71,20 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
     except (TypeError, ValueError):
         raise ValueError(f"airspeed and pitch_deg must be numbers of one shape (N,) (or one a single number), got "
                          f"shapes {np.shape(airspeed)} and {np.shape(pitch_deg)}") from None
+    # (said in their own terms: a pitch of -100 deg was "LevelFlightData.pitch ... (radians, not degrees)", omega bounds
+    # of (-100, 3000) "LevelFlightData.omega must be > 0", three of them "too many values to unpack": an API audit,
+    # stop 100)
+    if not np.all(np.isfinite(V)) or np.any(V < 0):
+        raise ValueError(f"airspeed must be finite and >= 0 m/s, got {float(V[~(np.isfinite(V) & (V >= 0))][0])!r}")
+    if not np.all(np.abs(pitch_deg) < 90.0):
+        bad = float(pitch_deg[~(np.abs(pitch_deg) < 90.0)][0])
+        raise ValueError(f"pitch_deg must be finite and in (-90, 90) deg, got {bad!r}")
+    try:
+        lo, hi = (float(b) for b in omega_bounds)
+    except (TypeError, ValueError):
+        raise ValueError(f"omega_bounds must be two numbers (low, high) [rad/s], got {omega_bounds!r:.60}") from None
+    if not (math.isfinite(lo) and math.isfinite(hi) and 0.0 < lo < hi):
+        raise ValueError(f"omega_bounds must be (low, high) with 0 < low < high [rad/s], got {omega_bounds!r:.60}")
     pitch = np.radians(pitch_deg)
     n_rot = len(vehicle.rotors)
     omega = np.empty(V.size)
@@ -79,7 +94,6 @@ def simulate_level_flight(vehicle: Vehicle, params: AirfoilParams, airspeed, pit
             with supersonic_tips_allowed():  # (the bracket's top, 3000 rad/s, is no rate of the user's: it warned)
                 forces = level_flight_forces(params, d, vehicle, air=air, discretization=discretization)
             return float(forces["vertical"][0] - vehicle.weight)
-        lo, hi = omega_bounds
         if f(lo) * f(hi) > 0:
             raise ValueError(f"no rotor speed in {omega_bounds} rad/s trims condition {j} "
                              f"(V={V[j]:g} m/s, pitch={math.degrees(pitch[j]):g} deg)")
