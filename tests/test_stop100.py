@@ -420,3 +420,30 @@ def test_identification_arguments_are_checked_in_their_own_terms():
         with pytest.raises(ValueError, match=r"max_residuals must be an integer >= 0"):
             r.report_text(max_residuals=m)
     assert "largest" in r.report_text(max_residuals=3)
+
+
+def test_fit_options_refuse_a_population_and_fields_the_fit_cannot_use():
+    # met inside the fit as KeyError('source'), SciPy's "not finite", a LinAlgError, an IndexError;
+    # a negative sigma_data was taken; a switch or the label freed with bounds failed inside
+    from propmap.identify import FitOptions
+    from propmap.io.calibration import population
+
+    pop = population()
+    bad_cov = np.array(pop["covariance"], float)
+    bad_cov[0, 0] = -1.0
+    for change, match in (({"source": None}, r"population must be None or a dict with names, covariance, sigma_data, "
+                                              "source"),
+                          ({"sigma_data": float("nan")}, r"population\['sigma_data'\] must be a finite number > 0"),
+                          ({"sigma_data": -0.05}, r"population\['sigma_data'\] must be a finite number > 0, got -0.05"),
+                          ({"covariance": bad_cov}, r"population\['covariance'\] must be positive definite"),
+                          ({"covariance": bad_cov[:3, :3]}, r"shape \(8, 8\) for its 8 names, got shape \(3, 3\)"),
+                          ({"names": ["cl_alpha"] * 8}, r"population\['names'\] must be parameter names \(str\), "
+                                                         "each once")):
+        given = {k: v for k, v in {**pop, **change}.items() if v is not None}
+        with pytest.raises(ValueError, match=match):
+            FitOptions(population=given)
+    FitOptions(population=dict(pop))  # the shipped prior passes
+    for field in ("label", "air", "inflow", "swirl", "compressibility"):
+        with pytest.raises(ValueError, match=rf"bounds: unknown parameter '{field}'"):
+            FitOptions(names=("cl_alpha", field), bounds={field: (0.0, 1.0)})
+    FitOptions(names=("cl_alpha", "re_ref"), bounds={"re_ref": (1e4, 1e6)})  # a number of the set's passes

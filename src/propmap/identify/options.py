@@ -159,9 +159,57 @@ def _check_bounds(bounds) -> None:
             raise ValueError(f"bounds[{name!r}] must be two numbers (low, high), got {b!r:.60}") from None
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
             raise ValueError(f"bounds[{name!r}] must be finite with low < high, got ({lo!r}, {hi!r})")
-        if name not in known and not any(name == f.name for f in fields(CamberedParams)):
+        if name not in known and name not in _NUMBER_FIELDS:
             raise ValueError(f"bounds: unknown parameter {name!r}; fitted parameters are "
-                             f"{', '.join(sorted(known))} (and the cambered set's other fields)")
+                             f"{', '.join(sorted(known))} (and the cambered set's other numbers: "
+                             f"{', '.join(sorted(set(_NUMBER_FIELDS) - set(known)))})")
+
+
+#: the cambered set's fields that are numbers (a fit can free them given bounds): its label, air, inflow model and
+#: switches were taken as names too and failed inside the fit ("could not convert string to float: 'generic'";
+#: a switch fitted as 0.9999999999: an API audit, stop 100)
+_NUMBER_FIELDS = tuple(f.name for f in fields(CamberedParams) if f.type in ("float", float))
+
+
+def check_population(population) -> None:
+    """Refuse a prior's statistics (``FitOptions.population``) that the fit could not use: not a
+    dict of ``names`` (str, each once), ``covariance`` (finite, symmetric, positive definite, one
+    row per name), ``sigma_data`` (a finite number > 0) and ``source`` (text). Each was met
+    inside the fit as a KeyError, SciPy's "not finite", a LinAlgError or an IndexError, and a
+    negative sigma_data was taken (an API audit, stop 100).
+
+    Raises
+    ------
+    ValueError
+        Naming the key and what it must be.
+    """
+    need = ("names", "covariance", "sigma_data", "source")  # (an empty dict was the shipped prior without a word)
+    if not (isinstance(population, dict) and all(k in population for k in need)):
+        raise ValueError(f"population must be None or a dict with {', '.join(need)} (io.calibration.population), "
+                         f"got {population!r:.60}")
+    names = population["names"]
+    if isinstance(names, str) or not all(isinstance(n, str) for n in names) or len(set(names)) != len(names) \
+            or not names:
+        raise ValueError(f"population['names'] must be parameter names (str), each once, got {names!r:.60}")
+    try:
+        cov = np.asarray(population["covariance"], float)
+    except (TypeError, ValueError):
+        raise ValueError("population['covariance'] must be a square array of numbers") from None
+    k = len(names)
+    if cov.shape != (k, k) or not np.all(np.isfinite(cov)) or not np.allclose(cov, cov.T, rtol=1e-9, atol=0.0):
+        raise ValueError(f"population['covariance'] must be finite and symmetric, shape ({k}, {k}) for its {k} names, "
+                         f"got shape {cov.shape}")
+    try:
+        np.linalg.cholesky(cov)
+    except np.linalg.LinAlgError:
+        raise ValueError("population['covariance'] must be positive definite (a variance <= 0, or rows that depend "
+                         "on each other)") from None
+    sigma = population["sigma_data"]
+    if isinstance(sigma, bool) or not isinstance(sigma, (int, float, np.integer, np.floating)) \
+            or not (math.isfinite(sigma) and sigma > 0):
+        raise ValueError(f"population['sigma_data'] must be a finite number > 0, got {sigma!r:.40}")
+    if not isinstance(population["source"], str):
+        raise ValueError(f"population['source'] must be text, got {population['source']!r:.40}")
 
 
 def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) -> tuple[str, ...]:
@@ -186,7 +234,7 @@ def _check_names(names, base: SectionParams, options: "FitOptions", extra=()) ->
         raise ValueError(f"cannot fit {', '.join(twice)} twice: give each parameter once")
     if isinstance(base, CamberedParams):
         valid = (*CAMBERED_BOUNDS,
-                 *(k for k in (options.bounds or {}) if hasattr(base, k) and k not in CAMBERED_BOUNDS))
+                 *(k for k in (options.bounds or {}) if k in _NUMBER_FIELDS and k not in CAMBERED_BOUNDS))
         model = "the cambered model"
     else:  # all four under either lift model (with sin-cos lift the report says cl1 and alpha0 do not enter)
         valid, model = tuple(BOUNDS), "the paper's model"
@@ -298,7 +346,9 @@ class FitOptions:
         A ``lift_model``, ``jacobian`` or ``directions`` outside the values above;
         ``max_nfev`` not an integer in [1, 1e7], ``multistart`` not one in [0, 256], ``seed``
         not one >= 0; ``bounds`` not name -> (low, high) with finite low < high and a name
-        the fits know; ``x0`` not four finite numbers.
+        the fits know (a fitted parameter, or a number of the cambered set: not its label,
+        air, inflow model or switches); ``x0`` not four finite numbers; a ``population``
+        the prior cannot use (:func:`check_population`).
     """
 
     x0: tuple = X0_PAPER
@@ -331,11 +381,8 @@ class FitOptions:
             object.__setattr__(self, name, integer(name, getattr(self, name), lo, hi, whole_float=False))
         if self.bounds is not None:
             _check_bounds(self.bounds)
-        need = ("names", "covariance", "sigma_data")  # (an empty dict was the shipped prior without a word)
-        if self.population is not None and not (isinstance(self.population, dict)
-                                                and all(k in self.population for k in need)):
-            raise ValueError(f"population must be None or a dict with {', '.join(need)} (io.calibration.population), "
-                             f"got {self.population!r:.60}")
+        if self.population is not None:
+            check_population(self.population)
         try:
             x0 = tuple(float(v) for v in self.x0)
         except (TypeError, ValueError):
