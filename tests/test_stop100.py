@@ -447,3 +447,43 @@ def test_fit_options_refuse_a_population_and_fields_the_fit_cannot_use():
         with pytest.raises(ValueError, match=rf"bounds: unknown parameter '{field}'"):
             FitOptions(names=("cl_alpha", field), bounds={field: (0.0, 1.0)})
     FitOptions(names=("cl_alpha", "re_ref"), bounds={"re_ref": (1e4, 1e6)})  # a number of the set's passes
+
+
+def test_fits_refuse_options_they_would_ignore():
+    # body_lift in fit_loads and fit_flight, directions in the vehicle fits, x0 and the paper's
+    # bounds with a cambered base: each gave the default fit without a word
+    from propmap.identify import FitOptions, fit_level_flight, fit_loads, loads_from_catalogue, simulate_level_flight
+
+    prop = pm.load_propeller("apce_10x7")
+    d = loads_from_catalogue("apce_10x7", prop.diameter)
+    d = d.subset(np.isin(d.group, ["static_pg0811", "pg0812", "pg0814", "pg0816"]))
+    for options, match in ((FitOptions(body_lift=True), r"body_lift applies to fit_level_flight .*, not fit_loads"),
+                           (FitOptions(x0=(3.0, 1.0, 0.5, 0.2)), r"x0 is the start of the paper's model"),
+                           (FitOptions(bounds={"cl1": (8.0, 12.0)}), r"bounds on cl1: not parameters of the cambered "
+                                                                      "set")):
+        with pytest.raises(ValueError, match=match):
+            fit_loads(d, prop, options=options)
+    with pytest.raises(ValueError, match=r"bounds on cl_alpha: not parameters of the paper's model"):
+        fit_loads(d, prop, base=pm.preset("gill2017-apc"), options=FitOptions(bounds={"cl_alpha": (4.0, 8.0)}))
+    veh = pm.read_vehicle("quadrotor")
+    true = pm.resolve_params("gill2017-apc").replace(M=30.0)
+    lf = simulate_level_flight(veh, true, np.linspace(2, 12, 8), -2.5 * np.linspace(2, 12, 8))
+    with pytest.raises(ValueError, match=r"directions applies to fit_loads .*, not fit_level_flight"):
+        fit_level_flight(lf, veh, base=true, options=FitOptions(directions=1))
+
+
+def test_fit_flight_refuses_body_lift_and_directions():
+    from propmap.identify import FitOptions
+    from propmap.identify.flight import fit_flight
+    from propmap.identify.flight_samples import FlightSamples
+
+    n = 5
+    s = FlightSamples(log_names=("a",), log_index=np.zeros(n, int), t=np.arange(n) * 0.1,
+                      velocity=np.zeros((n, 3)), angular_velocity=np.zeros((n, 3)), rotor_omega=np.full((n, 4), 900.0),
+                      rotor_acceleration=np.zeros((n, 4)), force=np.zeros((n, 3)), moment=None, reference_force=None,
+                      reference_moment=None, rate_hz=10.0)
+    veh = pm.read_vehicle("quadrotor")
+    with pytest.raises(ValueError, match=r"body_lift applies to fit_level_flight .*, not fit_flight"):
+        fit_flight(s, veh, options=FitOptions(body_lift=True))
+    with pytest.raises(ValueError, match=r"directions applies to fit_loads .*, not fit_flight"):
+        fit_flight(s, veh, options=FitOptions(directions=2))

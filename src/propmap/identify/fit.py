@@ -40,7 +40,7 @@ from .engine import (_attach_jacobian, _directions_report, _finish, _fit_along_d
                      _flap_saturation, _m_effect, _params_from, _prior_stats, _warn_at_optimum, _with_prior, _x0)
 from .options import (CAMBERED_FIT, CAMBERED_FIT_RE, CAMBERED_FIT_STATIC, FLAP_START, INPLANE_FIT,
                       MIN_RATES_FOR_RE, RATE_STEP, STATIC_RPM_SPAN, X0_PAPER, FitOptions, _default_names, _is_angle,
-                      param_names)
+                      param_names, refuse_unused_options)
 from .dependence import lag1_autocorrelation
 from .result import FitResult, Identifiability
 
@@ -342,6 +342,7 @@ def fit_loads(data: LoadData, propeller, *, base: SectionParams | None = None, a
 
     base = base or generic_params()
     _check_fit_args(data, propeller, base, air, options)
+    refuse_unused_options(options, "fit_loads", directions=True)
     air, air_note = data_air(data, air, base.air)
     kind = _data_kind(data)
     names = _default_names(base, options, kind)
@@ -507,6 +508,7 @@ def fit_loads_joint(datasets, *, base: SectionParams | None = None, air: Air | N
         if not (isinstance(pair, (tuple, list)) and len(pair) == 2):
             raise TypeError(f"datasets[{k}] must be a (LoadData, Propeller) pair, got {type(pair).__name__}")
         _check_fit_args(*pair, base, air, options, where=f"datasets[{k}]: ")
+    refuse_unused_options(options, "fit_loads_joint")
     w = _joint_weights(weights, len(datasets))
     names = _default_names(base, options)
     rows = sum(int(m.sum()) for data, _ in datasets for m in _fitted_rows(data, _load_keys(data, None)).values())

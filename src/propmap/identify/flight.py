@@ -51,7 +51,7 @@ from .engine import _attach_jacobian, _finish, _m_effect, _params_from, _warn_at
 from .flight_samples import OMEGA_STOPPED, FlightSamples, flight_samples
 from .flight_scores import (BASELINES, SPEED_BANDS, baseline_force, fit_baselines, flight_errors,
                             reference_at_vehicle_mass, reference_errors, speed_band_errors)
-from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names
+from .options import AIRFRAME_BOUNDS, FitOptions, _check_lift_model, _check_names, refuse_unused_options
 from .dependence import jackknife_std_error, lag1_autocorrelation
 from .result import FitResult
 
@@ -296,6 +296,7 @@ def _flight_names(samples: FlightSamples, vehicle: Vehicle, base: SectionParams,
     """The fitted names (``options.names`` checked, or the default), refused where the samples are
     too few for them or where a rotor's own parameter set would not see the section's."""
     _check_lift_model(base, options)
+    refuse_unused_options(options, "fit_flight")
     if options.names is not None:
         names = _check_names(options.names, base, options, extra=AIRFRAME_NAMES)
     else:

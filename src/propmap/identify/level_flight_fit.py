@@ -24,7 +24,7 @@ from .data import LevelFlightData, body_to_world, rotor_kinematics
 from .level_flight import check_level_flight
 from .engine import (_attach_jacobian, _finish, _m_effect, _objective, _params_from, _warn_at_optimum, _with_prior,
                      _x0)
-from .options import BODY_X0, FitOptions, _default_names
+from .options import BODY_X0, FitOptions, _default_names, refuse_unused_options
 from .dependence import lag1_autocorrelation
 from .result import FitResult
 
@@ -175,6 +175,7 @@ def fit_level_flight(data: LevelFlightData, vehicle: Vehicle, *, base: SectionPa
     check_level_flight(data, vehicle)
     if not isinstance(options, FitOptions):  # (None met "'NoneType' object has no attribute 'names'")
         raise TypeError(f"options must be a propmap.identify.FitOptions, got {type(options).__name__}")
+    refuse_unused_options(options, "fit_level_flight", body_lift=True)
     base = base or preset("gill2017-apc")
     air = model_air(base, air, name="base")
     names = _level_flight_names(data, vehicle, base, options)

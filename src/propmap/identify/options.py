@@ -10,7 +10,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from ..core._numbers import SEED_MAX, integer
-from ..core.airfoil import LIFT_MODELS, CamberedParams, SectionParams
+from ..core.airfoil import LIFT_MODELS, AirfoilParams, CamberedParams, SectionParams
 from ..core.solver import DEFAULT_DISCRETIZATION, Discretization
 
 __all__ = ["FitOptions", "param_names", "X0_PAPER", "BOUNDS", "CAMBERED_BOUNDS", "CAMBERED_SCALE", "CAMBERED_FIT",
@@ -137,10 +137,43 @@ def _default_names(base: SectionParams, options: "FitOptions", data_kind: str = 
 
 
 def _check_lift_model(base: SectionParams, options: "FitOptions") -> None:
-    """Refuse ``options.lift_model`` "sincos" with a cambered base (ignored without a word)."""
-    if isinstance(base, CamberedParams) and options.lift_model != "sigmoid":
+    """Refuse the options of the other section model than the base's, which were ignored without
+    a word: ``lift_model`` "sincos", an ``x0`` (the paper's start) or bounds on the paper's names
+    with a cambered base; bounds on the cambered set's names with the paper's (an API audit,
+    stop 100, for all but the first)."""
+    cambered = isinstance(base, CamberedParams)
+    if cambered and options.lift_model != "sigmoid":
         raise ValueError(f"lift_model={options.lift_model!r} applies to the paper's model (AirfoilParams), not the "
                          "cambered set given as the base")
+    if cambered and tuple(options.x0) != X0_PAPER:
+        raise ValueError("x0 is the start of the paper's model (cl1, cl2, cd, alpha0); a fit of the cambered set "
+                         "starts from the base set: give its values in base (base.replace(...))")
+    # (the other model's own names: a field both models have, such as M or the rotor options, is no other's)
+    other = (set(BOUNDS) - set(CAMBERED_BOUNDS) if cambered
+             else set(_NUMBER_FIELDS) - {f.name for f in fields(AirfoilParams)} - set(ROTOR_BOUNDS))
+    unused = sorted(set(options.bounds or {}) & other)
+    if unused:
+        model = "the cambered set" if cambered else "the paper's model"
+        raise ValueError(f"bounds on {', '.join(unused)}: not parameters of {model} given as the base (they would "
+                         "be ignored)")
+
+
+def refuse_unused_options(options: "FitOptions", fit: str, *, body_lift: bool = False,
+                          directions: bool = False) -> None:
+    """Refuse ``options.body_lift`` and ``options.directions`` in a fit that does not use them
+    (``body_lift``, ``directions``: True where ``fit`` does), each ignored without a word until
+    stop 100 (an API audit).
+
+    Raises
+    ------
+    ValueError
+        Naming the option, ``fit`` and the fit that takes it.
+    """
+    if options.body_lift and not body_lift:
+        raise ValueError(f"body_lift applies to fit_level_flight (the airframe's lift in level flight), not {fit}")
+    if options.directions is not None and not directions:
+        raise ValueError(f"directions applies to fit_loads (the prior's directions for static runs and sweeps), "
+                         f"not {fit}")
 
 
 def _check_bounds(bounds) -> None:
