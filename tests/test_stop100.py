@@ -487,3 +487,20 @@ def test_fit_flight_refuses_body_lift_and_directions():
         fit_flight(s, veh, options=FitOptions(body_lift=True))
     with pytest.raises(ValueError, match=r"directions applies to fit_loads .*, not fit_flight"):
         fit_flight(s, veh, options=FitOptions(directions=2))
+
+
+def test_torque_change_is_zero_in_hover_and_continuous_where_the_hover_thrust_peaks(apce_8x6):
+    # apce_8x6's calibrated set at 1338.58 rad/s peaks near -1.1 deg in hover: its 0 deg lies on the
+    # falling side, and the lowest hover collective making the thrust (-2.17 deg) gave dCQ = 1.2e-3
+    # (10% of CQ) in hover itself and at 1e-3 m/s of descent
+    C = pm.default_params("apce_8x6")
+    V = np.array([0.0, 1e-3, 0.01, 6.0])
+    d, loads, hover = pm.torque_change_at_constant_thrust(apce_8x6, C, 1338.58, V, np.pi)
+    cq = float(loads.CQ[0])
+    assert abs(float(d[0])) < 1e-9 * cq and abs(float(d[1])) < 1e-4 * cq and abs(float(d[2])) < 1e-3 * cq
+    assert abs(float(hover.collective[0])) < 1e-9 and abs(np.degrees(float(hover.collective[1]))) < 0.01
+    assert float(d[3]) < 0  # (descent feeds the rotor power: the torque at constant thrust falls)
+    for om in (1300.0, 1500.0, 2000.0):  # hover at its own collective: dCQ = 0 (was 1.1e-3 to 2.1e-3)
+        assert abs(float(pm.torque_change_at_constant_thrust(apce_8x6, C, om, 0.0, 0.0)[0])) < 1e-9 * cq
+    d, _, _ = pm.torque_change_at_constant_thrust(apce_8x6, C, 1100.0, np.array([0.0, 3.0, 6.0, 12.0]), np.pi)
+    assert np.all(np.diff(d) < 0)  # falls with the descent rate (rose to +1.2e-3 before)

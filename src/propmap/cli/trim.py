@@ -149,8 +149,9 @@ def _trim(propeller, params, air, thrust, rpm, airspeed, beta, rpm_range, bounds
             raise click.ClickException(f"--hover-reference: {exc}") from None
         dcq = float(d)
         if _falls(hover):  # (said, as the trim's own: a review, 2026-12-01)
-            warn(f"--hover-reference: hover at {omega / RPM:.6g} rpm makes {thrust:g} N only where the thrust falls as "
-                 "the collective rises (the set stalled there): dCQ is taken against that stalled hover")
+            warn(f"--hover-reference: hover at {omega / RPM:.6g} rpm makes {thrust:g} N, nearest the operating "
+                 "collective, where the thrust falls as the collective rises (the set stalled there): dCQ is taken "
+                 "against that stalled hover")
     return res, omega, added, dcq
 
 

@@ -37,7 +37,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._crossing import (_MISSING_FIELDS, THRUST_RTOL, THRUST_TOL, _check_on_missing,  # noqa: F401 (re-exported)
-                        _checked_thrust, _first_crossing, _nan_where_missing, _RefineFailed, _two_reals, _where)
+                        _checked_thrust, _first_crossing, _nan_where_missing, _RefineFailed, _tolerances, _two_reals,
+                        _where)
 from ._numbers import real
 from .units import RPM
 from .airfoil import Air, SectionParams
@@ -463,7 +464,12 @@ def torque_change_at_constant_thrust(
     (dCQ, loads, hover) : (ndarray, RotorLoads, TrimResult)
         dCQ of the broadcast shape, the loads at the operating point and the hover trim (its
         ``falling`` set where hover makes the thrust only where it falls as the collective
-        rises, the stalled branch: :func:`trim_collective`'s rule).
+        rises, the stalled branch: :func:`trim_collective`'s rule). Where hover makes the
+        thrust at more than one collective in ``bounds`` (a set that stalls: the thrust peaks
+        and falls with the collective), the hover reference is the one nearest the operating
+        point's ``collective`` (:data:`NEAREST_BRANCH`, ``hover.branch``): continuous with
+        the operating point from hover, where dCQ = 0 (until 2026-12-01 the lowest, on
+        another branch: dCQ 10% of CQ in hover).
 
     Raises
     ------
@@ -479,4 +485,71 @@ def torque_change_at_constant_thrust(
         raise ValueError("omega must be > 0 rad/s: the torque coefficient of a stopped rotor is undefined")
     hover = trim_collective(propeller, params, loads.thrust, loads.omega, 0.0, 0.0, air=air,
                             discretization=discretization, bounds=bounds)
+    hover = _hover_nearest(propeller, params, loads, 0.0 if collective is None else collective, hover, air,
+                           discretization, bounds)
     return loads.CQ - hover.loads.CQ, loads, hover
+
+
+#: the hover reference of :func:`torque_change_at_constant_thrust` where hover makes the thrust at more than one
+#: collective
+NEAREST_BRANCH = ("the collective nearest the operating point's that makes the thrust in hover (continuous with the "
+                  "operating point from hover)")
+#: the first step out from the operating collective in search of the nearest hover crossing [rad], doubled
+#: NEAREST_LEVELS times at most (0.25 deg to 64 deg: beyond any bounds)
+NEAREST_STEP = math.radians(0.25)
+NEAREST_LEVELS = 9
+
+
+def _hover_nearest(propeller, params, loads, collective, hover: TrimResult, air, discretization, bounds) -> TrimResult:
+    """The hover trim nearest the operating point's ``collective``: the crossing of the hover
+    thrust with the operating thrust found by steps out from it (NEAREST_STEP, doubling, within
+    ``bounds``) on either side and refined; ``hover`` (the lowest crossing) where none is found.
+    At 1338.58 rad/s apce_8x6's calibrated set peaks near -1.1 deg in hover, so from its 0 deg
+    (the falling branch) the lowest crossing, -2.17 deg, made dCQ 1.2e-3 (10% of CQ) in hover
+    itself, where it is 0, and at 1e-3 m/s of descent (a physics audit, stop 100)."""
+    from scipy.optimize import elementwise
+
+    shape = np.shape(hover.collective)
+    lo, hi = _check_bounds(bounds)
+    T, om = np.asarray(loads.thrust, float).reshape(-1), np.asarray(loads.omega, float).reshape(-1)
+    c0 = np.clip(np.broadcast_to(np.asarray(collective, float), shape).reshape(-1), lo, hi)
+    tol = _tolerances(T, None)
+
+    def f(c, om_, T_, tol_):  # the hover thrust's excess over the operating point's, in units of its tolerance
+        return (rotor_loads(propeller, params, om_, 0.0, 0.0, collective=c, air=air,
+                            discretization=discretization).thrust - T_) / tol_
+
+    n = T.size
+    x = np.array(hover.collective, float).reshape(-1)
+    fell = np.zeros(n, bool) if hover.falling is None else np.array(hover.falling, bool).reshape(-1)
+    with flapping_warning_held():
+        f0 = f(c0, om, T, tol)
+        # each side's nearest bracket [inner, outer] of a sign change, found by steps doubling out from c0
+        brackets = {}
+        for sgn in (-1.0, 1.0):
+            a, b, found, inner = np.empty(n), np.empty(n), f0 == 0, c0
+            for k in range(NEAREST_LEVELS):
+                outer = np.clip(c0 + sgn * NEAREST_STEP * 2.0**k, lo, hi)
+                new = ~found & (np.sign(f(outer, om, T, tol)) != np.sign(f0))
+                a[new], b[new], found = inner[new], outer[new], found | new
+                inner = outer
+                if found.all():
+                    break
+            brackets[sgn] = (np.minimum(a, b), np.maximum(a, b), found & (f0 != 0))
+        best = np.where(f0 == 0, 0.0, np.inf)
+        x[f0 == 0] = c0[f0 == 0]
+        for left, right, ok in brackets.values():
+            if not ok.any():
+                continue
+            res = elementwise.find_root(f, (left[ok], right[ok]), args=(om[ok], T[ok], tol[ok]),
+                                        tolerances=dict(xatol=1e-10, xrtol=0.0, fatol=1.0, frtol=0.0))
+            idx = np.flatnonzero(ok)[res.success]
+            root = res.x[res.success]
+            nearer = np.abs(root - c0[idx]) < best[idx]
+            idx, root = idx[nearer], root[nearer]
+            x[idx], best[idx] = root, np.abs(root - c0[idx])
+            fell[idx] = f(left[idx], om[idx], T[idx], tol[idx]) > 0  # (the thrust falls through T* there)
+    hover_loads = rotor_loads(propeller, params, om.reshape(shape), 0.0, 0.0, collective=x.reshape(shape), air=air,
+                              discretization=discretization)
+    return TrimResult(collective=x.reshape(shape), loads=hover_loads, n_solutions=hover.n_solutions,
+                      branch=NEAREST_BRANCH, falling=fell.reshape(shape))
