@@ -504,3 +504,10 @@ def test_torque_change_is_zero_in_hover_and_continuous_where_the_hover_thrust_pe
         assert abs(float(pm.torque_change_at_constant_thrust(apce_8x6, C, om, 0.0, 0.0)[0])) < 1e-9 * cq
     d, _, _ = pm.torque_change_at_constant_thrust(apce_8x6, C, 1100.0, np.array([0.0, 3.0, 6.0, 12.0]), np.pi)
     assert np.all(np.diff(d) < 0)  # falls with the descent rate (rose to +1.2e-3 before)
+
+
+def test_trim_omega_in_climb_counts_three_rates_for_a_small_negative_thrust(apce_8x6):
+    # docs said the climb's solution is unique: at 15 m/s a windmilling -0.54 N is made at three rates (regression
+    # values of 2026-12-01: the rates 18.0, 257.1 and 349.3 rad/s, the lowest returned)
+    t = pm.trim_omega(apce_8x6, pm.default_params("apce_8x6"), -0.54, 15.0, 0.0)
+    assert int(t.n_solutions) == 3 and float(t.omega) == pytest.approx(18.02, abs=0.05)

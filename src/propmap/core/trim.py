@@ -300,10 +300,14 @@ def trim_omega(
     tabulated on OMEGA_GRID_NODES rates spaced geometrically across ``bounds``, the first
     upward crossing of T* is bracketed and refined by Chandrupatla's method, and a peak
     between the grid's nodes is refined where the grid misses T* (module docstring). In
-    still air and in climb the thrust rises with Omega from a windmilling rotor's (negative
-    in climb) and the solution is unique; in descent the flow alone makes thrust on a slowly
-    turning rotor, so a thrust below that has no solution on the rising branch and the
-    vortex-ring state can add crossings (``n_solutions`` counts them).
+    still air the thrust rises with Omega and the solution is unique; in climb it rises from
+    a windmilling rotor's negative thrust too, but not always monotonically: a small negative
+    thrust may be made at three rates (apce_8x6's calibrated set at 15 m/s of axial climb
+    makes -0.54 N at 18.0, 257.1 and 349.3 rad/s), and the lowest is returned, counted in
+    ``n_solutions`` (said "unique" until 2026-12-01: a physics audit); in descent the flow
+    alone makes thrust on a slowly turning rotor, so a thrust below that has no solution on
+    the rising branch and the vortex-ring state can add crossings (``n_solutions`` counts
+    them).
 
     Parameters
     ----------
