@@ -328,10 +328,11 @@ def test_joint_fit_weights_propellers_alike(apc8x6):
     opts = FitOptions(names=CAMBERED_FIT, prior=False)
     r = fit_loads_joint([(big, apc8x6), (small, apc8x6)], base=base, options=opts)
     assert [p["n_points"] for p in r.extra["per_propeller"]] == [48, 24]
-    # the stacked residuals are each propeller's fit_loads residuals scaled by 1/sqrt(n)
+    # the stacked residuals are each propeller's fit_loads residuals scaled by sqrt(w N / (W n)), 1/sqrt(n) but for a
+    # common factor (N = 72 points, W = 2: the data together count as their points, since stop 100)
     for k, (data, lo, hi) in enumerate(((big, 0, 96), (small, 96, 144))):
         own = fit_loads(data, apc8x6, base=r.params, options=FitOptions(names=CAMBERED_FIT, prior=False, max_nfev=1))
-        unscaled = r.residuals[lo:hi] * np.sqrt(data.n)
+        unscaled = r.residuals[lo:hi] / np.sqrt(72 / (2 * data.n))
         np.testing.assert_allclose(unscaled, own.residuals, rtol=1e-6, atol=1e-9)
         assert np.sqrt(np.mean(unscaled**2)) == pytest.approx(r.extra["per_propeller"][k]["rms_residual"], rel=1e-9)
     # the compromise lies between the two truths

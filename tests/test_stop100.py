@@ -511,3 +511,35 @@ def test_trim_omega_in_climb_counts_three_rates_for_a_small_negative_thrust(apce
     # values of 2026-12-01: the rates 18.0, 257.1 and 349.3 rad/s, the lowest returned)
     t = pm.trim_omega(apce_8x6, pm.default_params("apce_8x6"), -0.54, 15.0, 0.0)
     assert int(t.n_solutions) == 3 and float(t.omega) == pytest.approx(18.02, abs=0.05)
+
+
+def test_a_joint_fit_of_one_data_set_is_fit_loads_whatever_its_weight():
+    # the data were weighted sqrt(w / n) against an unscaled prior: by default the prior was n times
+    # as strong as in fit_loads (cl_alpha 7.033 +- 0.472 against 7.228 +- 0.169 on 66 points)
+    from propmap.identify import FitOptions, fit_loads, fit_loads_joint, loads_from_catalogue
+
+    prop = pm.load_propeller("apce_10x7")
+    d = loads_from_catalogue("apce_10x7", prop.diameter)
+    d = d.subset(np.isin(d.group, ["static_pg0811", "pg0812", "pg0814", "pg0816"]))
+    o = FitOptions(names=("cl_alpha", "alpha_L0", "cd_min", "cd2"))  # the prior on (default)
+    a = fit_loads(d, prop, options=o)
+    for w in (None, [10.0], [1e160]):
+        b = fit_loads_joint([(d, prop)], weights=w, options=o)
+        np.testing.assert_allclose(b.x, a.x, rtol=1e-6)
+        np.testing.assert_allclose(b.identifiability.std_error, a.identifiability.std_error, rtol=1e-6)
+
+
+def test_a_joint_fit_warns_of_a_propeller_it_does_not_describe():
+    # a propeller's thrust at a tenth: fit_loads warned of its rms residual of 0.338, the joint fit
+    # said nothing (its weighted headline 0.042)
+    from dataclasses import replace
+
+    from propmap.identify import FitOptions, fit_loads_joint, loads_from_catalogue
+
+    prop = pm.load_propeller("apce_10x7")
+    d = loads_from_catalogue("apce_10x7", prop.diameter)
+    d = d.subset(np.isin(d.group, ["static_pg0811", "pg0812", "pg0814", "pg0816"]))
+    bad = replace(d, measured={**d.measured, "thrust": np.where(d.static, 1.0, 0.1) * d.measured["thrust"]})
+    r = fit_loads_joint([(bad, prop)], options=FitOptions(names=("cl_alpha", "alpha_L0", "cd_min", "cd2")))
+    assert any(w.startswith("apce_10x7: the fit leaves an rms residual of 0.3") for w in r.warnings)
+    assert "weighted by sqrt(w N / (W n))" in r.report_text()

@@ -361,7 +361,10 @@ def _fit_lines(res: FitResult, max_residuals: int) -> list[str]:
              if data_only else "scaled Jacobian")
     lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
     level = res.extra.get("kind") in ("level_flight", "flight")
-    unit = " [N]" if level else " [-] (coefficient error / RMS of the measured coefficient)"
+    joint = res.extra.get("kind") == "loads_joint"
+    unit = (" [N]" if level else " [-] (coefficient error / RMS of the measured coefficient, each propeller's "
+            "weighted by sqrt(w N / (W n)); each one's own rms: per_propeller)" if joint
+            else " [-] (coefficient error / RMS of the measured coefficient)")
     r = res.residuals
     order = np.argsort(-np.abs(r))[:max_residuals]
     shown = "" if r.size <= max_residuals else f" (the {max_residuals} largest of {r.size}; all in the JSON report)"
