@@ -543,3 +543,23 @@ def test_a_joint_fit_warns_of_a_propeller_it_does_not_describe():
     r = fit_loads_joint([(bad, prop)], options=FitOptions(names=("cl_alpha", "alpha_L0", "cd_min", "cd2")))
     assert any(w.startswith("apce_10x7: the fit leaves an rms residual of 0.3") for w in r.warnings)
     assert "weighted by sqrt(w N / (W n))" in r.report_text()
+
+
+def test_undetermined_parameters_are_said_with_their_free_combination_and_no_correlation():
+    # five static points at one rpm determine 2 of 3 directions: each parameter was said "no residual
+    # changes with it" (each does; one combination is free) and the correlations printed +0.00
+    from propmap.identify import FitOptions, LoadData, fit_loads
+
+    prop = pm.load_propeller("apce_10x7")
+    true = pm.generic_params().replace(cl_alpha=6.0)
+    w = np.full(5, 600.0)
+    r = pm.rotor_loads(prop, true, w, np.zeros(5), np.zeros(5))
+    rng = np.random.default_rng(0)
+    d = LoadData(w, np.zeros(5), np.zeros(5), {"thrust": r.thrust * (1 + 0.01 * rng.standard_normal(5)),
+                                              "torque": r.torque * (1 + 0.01 * rng.standard_normal(5))}, ["a"] * 5)
+    res = fit_loads(d, prop, options=FitOptions(prior=False, names=("cl_alpha", "alpha_L0", "cd_min")))
+    assert not np.any(np.isfinite(res.identifiability.std_error))
+    assert ("cl_alpha is not determined by the data: its std error is not finite (the data leave a combination of it "
+            "with alpha_L0, cd_min free: no residual changes along it at the optimum)") in res.identifiability.warnings
+    text = res.report_text()
+    assert "correlation: none (cl_alpha, alpha_L0, cd_min not determined)" in text and "+0.00;" not in text

@@ -351,12 +351,18 @@ def _fit_lines(res: FitResult, max_residuals: int) -> list[str]:
     data_only = idf.std_error_data is not None
     dirs = res.extra.get("directions")
     lines = []
-    if sum(not np.isnan(v) for v in idf.std_error) > 1:
-        free = [k for k in range(len(res.names)) if not np.isnan(idf.std_error[k])]  # (held at a bound: none)
+    # (held at a bound, NaN, or not determined, inf: no correlation; the latter's were printed as +0.00, an API audit,
+    # stop 100)
+    free = [k for k in range(len(res.names)) if np.isfinite(idf.std_error[k])]
+    undetermined = [res.names[k] for k in range(len(res.names)) if np.isinf(idf.std_error[k])]
+    if len(free) > 1:
         said = " (data and prior together)" if data_only or dirs else ""
         lines.append(f"correlation{said}: " + "; ".join(
             f"{res.names[i]}-{res.names[j]} {idf.correlation[i, j]:+.2f}"
-            for a, i in enumerate(free) for j in free[a + 1:]))
+            for a, i in enumerate(free) for j in free[a + 1:])
+            + (f" ({', '.join(undetermined)} not determined: none)" if undetermined else ""))
+    elif undetermined:
+        lines.append(f"correlation: none ({', '.join(undetermined)} not determined)")
     label = ("the free directions' Jacobian" if dirs else "scaled Jacobian (data and prior rows, as fitted)"
              if data_only else "scaled Jacobian")
     lines.append(f"{label} singular values: " + ", ".join(f"{s:.3g}" for s in idf.singular_values))
@@ -430,7 +436,8 @@ def _identifiability(names, x, jac, residuals, dof_rows: int | None = None, held
         return Identifiability(names, std, ci, corr, sub.singular_values, sub.poorly_determined, sub.warnings,
                                warning_kinds=sub.warning_kinds)
     std, ci, corr, sig, s2 = _covariance(x, jac, residuals, dof_rows, meat)
-    poor, notes = _identifiability_notes(names, x, std, corr, sig, s2 == 0.0 and meat is None)
+    partners = _free_partners(names, x, jac) if not np.all(np.isfinite(std)) else None
+    poor, notes = _identifiability_notes(names, x, std, corr, sig, s2 == 0.0 and meat is None, partners)
     return Identifiability(tuple(names), std, ci, corr, sig, tuple(poor), tuple(t for _, _, t in notes),
                            warning_kinds=tuple((k, s) for k, s, _ in notes))
 
@@ -448,9 +455,7 @@ def _covariance(x, jac, residuals, dof_rows, meat):
     # gets a large variance (a pseudo-inverse with a cut-off would report it as perfectly known);
     # a direction numerically free (its singular value within p max(N, p) epsilons of the largest)
     # is infinite for every parameter with a share of at least 1e-3 in it
-    d = np.maximum(np.abs(np.asarray(x, float)), 0.1)
-    _, sig, Vt = np.linalg.svd(jac * d, full_matrices=False)
-    null = sig <= (sig[0] if sig.size else 0.0) * p * max(N, p) * np.finfo(float).eps
+    d, sig, Vt, null = _null_directions(x, jac)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_sig2 = np.where(null, 0.0, 1.0 / sig**2)
         shape = np.outer(d, d) * ((Vt.T * inv_sig2) @ Vt)  # the covariance per unit residual variance
@@ -478,7 +483,26 @@ def _covariance(x, jac, residuals, dof_rows, meat):
     return std, ci, corr, sig, s2
 
 
-def _identifiability_notes(names, x, std, corr, sv, exact: bool):
+def _null_directions(x, jac):
+    """(D, singular values, V^T, which are numerically free) of J D, D = diag(max(|x|, 0.1)): a
+    direction is free where its singular value is within p max(N, p) epsilons of the largest
+    (:func:`_covariance`)."""
+    N, p = jac.shape
+    d = np.maximum(np.abs(np.asarray(x, float)), 0.1)
+    _, sig, Vt = np.linalg.svd(jac * d, full_matrices=False)
+    return d, sig, Vt, sig <= (sig[0] if sig.size else 0.0) * p * max(N, p) * np.finfo(float).eps
+
+
+def _free_partners(names, x, jac) -> dict:
+    """Each parameter's partners in the free directions of the Jacobian (those with a share of at
+    least 1e-3 in a direction it has one in): what the data leave free with it."""
+    _, _, Vt, null = _null_directions(x, jac)
+    share = np.abs(Vt[null]) >= 1e-3
+    return {n: [m for j, m in enumerate(names) if j != k and np.any(share[:, k] & share[:, j])]
+            for k, n in enumerate(names)}
+
+
+def _identifiability_notes(names, x, std, corr, sv, exact: bool, partners=None):
     """The poorly determined parameters and the notes (kind, parameters, text) of
     :class:`Identifiability`: an exact fit (``exact``: residual 0 without a sandwich), a parameter
     not determined or poorly determined (std error over POOR_REL_STD of its estimate or natural
@@ -492,8 +516,14 @@ def _identifiability_notes(names, x, std, corr, sv, exact: bool):
     for k, n in enumerate(names):
         if not np.isfinite(std[k]):
             poor.append(n)
+            with_ = (partners or {}).get(n)
+            # (where it shares a free direction with others, the data leave their combination free, not it alone: said
+            # "no residual changes with it" of three parameters each of which moves the residuals, an API audit, stop
+            # 100)
+            why = (f"the data leave a combination of it with {', '.join(with_)} free: no residual changes along it at "
+                   "the optimum" if with_ else "no residual changes with it at the optimum")
             notes.append(("not_determined", (n,), f"{n} is not determined by the data: its std error is not "
-                          "finite (no residual changes with it at the optimum)"))
+                          f"finite ({why})"))
             continue
         rel = std[k] / max(abs(x[k]), _scale_of(n), 1e-12)
         if rel > POOR_REL_STD:
