@@ -168,7 +168,10 @@ def test_the_umask_is_read_without_changing_it():
         assert calls == []
 
 
-def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP])
+def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path, signum):
+    """SIGTERM, and SIGHUP as it (a closed terminal: it killed the run without a word and left
+    map --all's parts folder until stop 100), stop the run: exit 128 + n, no temporary file."""
     src = tmp_path / "many.csv"
     src.write_text("rpm,airspeed,incidence_deg\n" + "8000,10,45\n" * 400_000)
     dst = tmp_path / "out.csv"
@@ -181,9 +184,9 @@ def test_sigterm_during_a_long_run_leaves_no_temporary_file(tmp_path):
             break
         time.sleep(0.05)
     assert proc.poll() is None, "the run ended before it could be stopped"
-    proc.send_signal(signal.SIGTERM)
+    proc.send_signal(signum)
     _, err = proc.communicate(timeout=60)
-    assert proc.returncode == 128 + signal.SIGTERM, err
+    assert proc.returncode == 128 + signum, err
     assert b"Traceback" not in err
     assert [p.name for p in tmp_path.iterdir()] == ["many.csv"]
 
