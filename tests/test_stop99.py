@@ -518,7 +518,9 @@ def test_a_hover_reference_on_the_stalled_branch_is_said(capsys):
     """The trim's own falling branch was warned of, its hover reference's not."""
     assert main(["trim", "apce_8x6", "--thrust", "1.55", "--rpm", "5000", "--airspeed", "5", "--incidence-deg", "150",
                  "--range-deg", "5", "30", "--hover-reference"]) == 0
-    assert "--hover-reference: hover at 5000 rpm makes 1.55 N only where the thrust falls" in capsys.readouterr().err
+    # (since stop 100 the hover reference is the collective nearest the operating one: said as such)
+    assert ("--hover-reference: hover at 5000 rpm makes 1.55 N, nearest the operating collective, where the thrust "
+            "falls") in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("factor", [1 + 1e-5, 1 - 1e-5])
